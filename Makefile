@@ -1,0 +1,113 @@
+# libgeneric - one build for the library, the tools, the tests and the benchmarks.
+# make                 library (build/lib), tools (build/bin), tests (build/tests)
+# make test            install missing packages, build, run the test suite
+# make test SANITIZE=1 the same built with -fsanitize=address,undefined (in build/san)
+# make demo            install missing packages, build, run the default demo
+# make bench           benchmarks (print figures; never fail on time)
+# make install PREFIX=/usr/local DESTDIR=
+
+PREFIX  ?= /usr/local
+DESTDIR ?=
+VERSION := 0.1.0
+SOVER   := 0
+
+ifeq ($(SANITIZE),1)
+BUILD   ?= build/san
+SANFLAGS := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+OPT     ?= -O1
+else
+BUILD   ?= build
+SANFLAGS :=
+OPT     ?= -O2
+endif
+
+CC      ?= cc
+CXX     ?= c++
+WARN    := -Wall -Wextra -Werror
+CPPFLAGS += -Iinclude -Ilib -I. -D_GNU_SOURCE -MMD -MP
+CFLAGS  += -std=c11 $(OPT) -g -fPIC -fopenmp $(WARN) $(SANFLAGS)
+CXXFLAGS += -std=c++17 $(OPT) -g -fPIC $(WARN) $(SANFLAGS) $(shell pkg-config --cflags OpenImageIO 2>/dev/null)
+DEPLIBS := $(shell pkg-config --libs OpenImageIO 2>/dev/null) -lstdc++ -fopenmp -ldl -lpthread -lm
+LDFLAGS += $(SANFLAGS)
+
+LIB_SRC := $(wildcard lib/*.c lib/probe/*.c colormodels/*.c materials/*.c materials/*/*.c textures/*.c)
+LIB_CXX := $(wildcard lib/*.cpp)
+LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/obj/%.o) $(LIB_CXX:%.cpp=$(BUILD)/obj/%.o)
+LIBA    := $(BUILD)/lib/libgeneric.a
+LIBSO   := $(BUILD)/lib/libgeneric.so.$(SOVER)
+
+TOOLS   := $(notdir $(patsubst %/,%,$(dir $(wildcard examples/*/main.c))))
+TOOL_BIN := $(TOOLS:%=$(BUILD)/bin/%)
+TEST_SRC := $(wildcard tests/test_*.c)
+TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
+BENCH_SRC := $(wildcard bench/bench_*.c)
+BENCH_BIN := $(BENCH_SRC:bench/%.c=$(BUILD)/bench/%)
+TESTLIBS := $(shell pkg-config --libs cmocka 2>/dev/null)
+
+.PHONY: all lib tools tests test demo bench install clean deps
+all: lib tools tests
+
+lib: $(LIBA) $(LIBSO)
+tools: $(TOOL_BIN)
+tests: $(TEST_BIN)
+
+deps:
+	@scripts/deps.sh
+
+$(BUILD)/obj/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
+
+$(BUILD)/obj/%.o: %.cpp
+	@mkdir -p $(dir $@)
+	$(CXX) $(CPPFLAGS) $(CXXFLAGS) -c $< -o $@
+
+$(LIBA): $(LIB_OBJ)
+	@mkdir -p $(dir $@)
+	rm -f $@
+	ar rcs $@ $^
+
+$(LIBSO): $(LIB_OBJ)
+	@mkdir -p $(dir $@)
+	$(CC) -shared -Wl,-soname,libgeneric.so.$(SOVER) -o $@ $^ $(LDFLAGS) $(DEPLIBS)
+	ln -sf libgeneric.so.$(SOVER) $(BUILD)/lib/libgeneric.so
+
+# Tools and tests link the static library so they run from the build tree without LD_LIBRARY_PATH;
+# -rdynamic lets plug-ins resolve the library's symbols from the executable.
+.SECONDEXPANSION:
+$(BUILD)/bin/%: $$(patsubst %.c,$(BUILD)/obj/%.o,$$(wildcard examples/%/*.c)) $(LIBA)
+	@mkdir -p $(dir $@)
+	$(CC) -rdynamic -o $@ $(filter %.o,$^) -Wl,--whole-archive $(LIBA) -Wl,--no-whole-archive $(LDFLAGS) $(EXTRA_LIBS_$*) $(DEPLIBS)
+
+$(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(LIBA)
+	@mkdir -p $(dir $@)
+	$(CC) -rdynamic -o $@ $< -Wl,--whole-archive $(LIBA) -Wl,--no-whole-archive $(LDFLAGS) $(TESTLIBS) $(DEPLIBS)
+
+$(BUILD)/bench/%: $(BUILD)/obj/bench/%.o $(LIBA)
+	@mkdir -p $(dir $@)
+	$(CC) -o $@ $< $(LIBA) $(LDFLAGS) $(DEPLIBS)
+
+test: deps
+	@$(MAKE) --no-print-directory all
+	@scripts/run_tests.sh $(BUILD)
+
+demo: deps
+	@$(MAKE) --no-print-directory all
+	@scripts/demo.sh $(BUILD)
+
+bench: deps
+	@$(MAKE) --no-print-directory all $(BENCH_BIN)
+	@for b in $(BENCH_BIN); do echo "== $$b"; $$b || exit 1; done
+
+install: lib
+	install -d $(DESTDIR)$(PREFIX)/include/generic $(DESTDIR)$(PREFIX)/lib/pkgconfig
+	install -m 644 include/generic/*.h $(DESTDIR)$(PREFIX)/include/generic/
+	install -m 644 $(LIBA) $(DESTDIR)$(PREFIX)/lib/
+	install -m 755 $(LIBSO) $(DESTDIR)$(PREFIX)/lib/
+	ln -sf libgeneric.so.$(SOVER) $(DESTDIR)$(PREFIX)/lib/libgeneric.so
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' generic.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/generic.pc
+
+clean:
+	rm -rf build
+
+-include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)

@@ -1,0 +1,222 @@
+/* color.h - the generic colour interface.
+ *
+ * A colour model (GColorModel) is chosen at run time by name ("rgb", "spectrum9", "spectrum",
+ * "bispectral", or one a plug-in registers) and configured once (e.g. the spectrum's step in nm).
+ * Its behaviour is a versioned const vtable (GColorModelClass); the instance carries the chosen
+ * configuration and the model's private tables.
+ *
+ * Storage scheme. A GColor is a small handle: the model, a kind, and a pointer to the model's
+ * `capacity` floats. The handle never owns heap memory by itself:
+ *   - on the per-ray path, values live in a per-thread GScratch arena (gcolor_scratch) or in caller
+ *     storage (gcolor_wrap); a mark/release pair around each sample returns the arena to where it was,
+ *     so colour arithmetic never calls malloc;
+ *   - long-lived values (a material's parameters) are made with gcolor_alloc and freed with gcolor_free.
+ * Every operation writes into an `out` colour that already has storage; `out` may alias an operand.
+ *
+ * Kinds. In every model a value is a vector of samples (a light spectrum, or a plain reflectance that
+ * multiplies sample by sample). The bispectral model also has re-radiation matrices (GCOLOR_MATRIX,
+ * out x in) for fluorescent reflectances; see colormodels/bispectral.c and README for how every
+ * operation is defined on them.
+ *
+ * Roles. Converting from or to RGB needs to know whether a value is a reflectance (seen under D65) or a
+ * light (its own spectrum); the role argument says which. Sample values themselves are role free.
+ *
+ * The nm exchange format (GSpectrumNM) samples 380..780 nm at 1 nm; every model converts to and from
+ * it, so any model can be converted to any other. */
+#ifndef GENERIC_COLOR_H
+#define GENERIC_COLOR_H
+
+#include <stddef.h>
+#include "error.h"
+#include "memory.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Version of the colour model vtable; a class with another version is refused. */
+#define GCOLOR_ABI_VERSION 1
+
+/** The nm exchange grid: 380..780 nm at 1 nm. */
+#define GNM_MIN 380
+#define GNM_MAX 780
+#define GNM_COUNT (GNM_MAX - GNM_MIN + 1)
+
+/** A spectrum sampled at every nm from GNM_MIN to GNM_MAX. */
+typedef struct GSpectrumNM {
+    float v[GNM_COUNT];
+} GSpectrumNM;
+
+/** What a colour value holds. */
+typedef enum GColorKind {
+    GCOLOR_VECTOR = 0, /**< samples: a light, or a reflectance applied sample by sample */
+    GCOLOR_MATRIX = 1  /**< a re-radiation matrix (bispectral model only) */
+} GColorKind;
+
+/** How to read a value when converting from or to RGB/XYZ. */
+typedef enum GColorRole {
+    GCOLOR_REFLECTANCE = 0, /**< a reflectance: seen under D65 normalised to Y = 1 */
+    GCOLOR_LIGHT = 1        /**< a light: its spectrum as it is; equal energy E has Y = 1 */
+} GColorRole;
+
+typedef struct GColorModel GColorModel;
+typedef struct GColorModelClass GColorModelClass;
+
+/** A colour value: a handle to `model->capacity` floats in caller, arena or heap storage. */
+typedef struct GColor {
+    const GColorModel *model;
+    float *v;
+    int kind; /**< a GColorKind */
+} GColor;
+
+/** Options for creating a model; zero fields take the model's defaults. */
+typedef struct GColorModelOptions {
+    double step_nm; /**< sample spacing (spectrum: 5 by default; bispectral: 10) */
+    double min_nm;  /**< first sample (default 380) */
+    double max_nm;  /**< last sample (default 780) */
+} GColorModelOptions;
+
+/** A re-radiation matrix on its own grid, used to bring measured data into any model.
+ * data[o * n_in + i] is the share of light at excitation in_min + i*in_step re-radiated at
+ * emission out_min + o*out_step (per excitation bin); the diagonal is the plain reflectance. */
+typedef struct GReradiation {
+    double in_min, in_step;
+    int n_in;
+    double out_min, out_step;
+    int n_out;
+    const float *data;
+} GReradiation;
+
+/** A colour model instance: its class, its configuration and its sizes. */
+struct GColorModel {
+    const GColorModelClass *cls;
+    int nvalues;        /**< floats in a vector value */
+    int capacity;       /**< floats any value of this model may need */
+    int nsamples;       /**< spectral samples (0 for non-spectral models) */
+    double lambda_min;  /**< wavelength of sample 0 in nm (spectral models) */
+    double lambda_step; /**< spacing of samples in nm (spectral models) */
+    void *priv;         /**< the model's own tables */
+};
+
+/** The vtable of a colour model. Required: init, black, add, mul, scale, div, pow, brightness, to_nm,
+ * from_nm. Optional (NULL = go through the nm spectrum): fini, to_xyz, from_rgb, from_reradiation.
+ * Operations get valid operands of this model (the dispatch checks models); `out` may alias them. */
+struct GColorModelClass {
+    int abi_version;         /**< GCOLOR_ABI_VERSION */
+    const char *name;        /**< type keyword, e.g. "spectrum" */
+    const char *description; /**< one line for listings */
+    /** Fills nvalues, capacity, the grid and priv from the options; reports bad options. */
+    int (*init)(GColorModel *self, const GColorModelOptions *opt, GError *err);
+    /** Frees priv. */
+    void (*fini)(GColorModel *self);
+    void (*black)(const GColorModel *m, GColor *out);
+    int (*add)(const GColorModel *m, GColor *out, const GColor *a, const GColor *b);
+    /** Reflection: a applied to b (a reflectance or matrix, b a light or reflectance). */
+    int (*mul)(const GColorModel *m, GColor *out, const GColor *a, const GColor *b);
+    int (*scale)(const GColorModel *m, GColor *out, const GColor *a, double s);
+    /** Relative refraction index a / b, sample by sample. */
+    int (*div)(const GColorModel *m, GColor *out, const GColor *a, const GColor *b);
+    /** a to the power e, sample by sample (absorption: transmittance^distance). */
+    int (*pow)(const GColorModel *m, GColor *out, const GColor *a, double e);
+    /** Luminance-weighted magnitude: 0 exactly for black, constant c gives c. */
+    double (*brightness)(const GColorModel *m, const GColor *a);
+    int (*to_nm)(const GColorModel *m, const GColor *a, GColorRole role, GSpectrumNM *out);
+    int (*from_nm)(const GColorModel *m, const GSpectrumNM *in, GColorRole role, GColor *out);
+    int (*to_xyz)(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3]);
+    int (*from_rgb)(const GColorModel *m, const double rgb[3], GColorRole role, GColor *out);
+    int (*from_reradiation)(const GColorModel *m, const GReradiation *r, GColor *out, GError *err);
+};
+
+/* ---- models ---- */
+
+/** Creates a model by registered name with options (NULL = defaults). */
+int gcolormodel_create(const char *name, const GColorModelOptions *opt, GColorModel **out, GError *err);
+/** Creates a model from a class directly (used by plug-ins and tests). */
+int gcolormodel_create_class(const GColorModelClass *cls, const GColorModelOptions *opt, GColorModel **out,
+                             GError *err);
+/** Frees a model; NULL is a no-op. Colours of the model must not be used afterwards. */
+void gcolormodel_destroy(GColorModel *m);
+/** The model's type keyword. */
+const char *gcolormodel_name(const GColorModel *m);
+/** Registers the built-in models (idempotent; called by the registry on first use). */
+void gcolormodels_register_builtin(void);
+
+/* ---- storage ---- */
+
+/** Points c at caller storage of at least m->capacity floats and sets it to black. */
+void gcolor_wrap(GColor *c, const GColorModel *m, float *storage);
+/** Gives c storage from the arena and sets it to black; G_ERR_NOMEM when the arena cannot grow. */
+int gcolor_scratch(GColor *c, const GColorModel *m, GScratch *s);
+/** Gives c heap storage (for long-lived values) and sets it to black. */
+int gcolor_alloc(GColor *c, const GColorModel *m);
+/** Frees storage from gcolor_alloc and clears the handle; a cleared handle is a no-op. */
+void gcolor_free(GColor *c);
+/** Copies the value of src into dst (same model). */
+int gcolor_copy(GColor *dst, const GColor *src);
+
+/* ---- the generic operations (status: G_OK, or G_ERR_MISMATCH for colours of different models) ---- */
+
+/** Sets c to black (a zero vector). */
+void gcolor_black(GColor *c);
+/** out = a + b */
+int gcolor_add(GColor *out, const GColor *a, const GColor *b);
+/** out = a * b: reflection of b by a. */
+int gcolor_mul(GColor *out, const GColor *a, const GColor *b);
+/** out = a * s */
+int gcolor_scale(GColor *out, const GColor *a, double s);
+/** out = a / b: relative refraction index (zero divisors give zero). */
+int gcolor_div(GColor *out, const GColor *a, const GColor *b);
+/** out = a ^ e, sample by sample (absorption). */
+int gcolor_pow(GColor *out, const GColor *a, double e);
+/** Brightness: 0 if and only if c is black; a constant value c gives c. */
+double gcolor_brightness(const GColor *c);
+/** out += a * s (a common compound of add and scale). */
+int gcolor_add_scaled(GColor *out, const GColor *a, double s);
+/** 1 when every sample is finite, 0 otherwise. */
+int gcolor_is_finite(const GColor *c);
+
+/* ---- conversions ---- */
+
+/** To the nm exchange spectrum. */
+int gcolor_to_nm(const GColor *c, GColorRole role, GSpectrumNM *out);
+/** From the nm exchange spectrum (checks for NaN). */
+int gcolor_from_nm(GColor *c, const GSpectrumNM *in, GColorRole role);
+/** To CIE 1931 XYZ. */
+int gcolor_to_xyz(const GColor *c, GColorRole role, double xyz[3]);
+/** To linear sRGB (Rec.709 primaries, D65 white). */
+int gcolor_to_rgb(const GColor *c, GColorRole role, double rgb[3]);
+/** From linear sRGB; G_ERR_INVALID for NaN or infinite input. */
+int gcolor_from_rgb(GColor *c, const double rgb[3], GColorRole role);
+/** From a re-radiation matrix: a matrix in the bispectral model; in the other models the response to an
+ * equal-energy light (the matrix's effect folded into a plain reflectance). */
+int gcolor_from_reradiation(GColor *c, const GReradiation *r, GError *err);
+/** Converts a value of one model into another (through a direct formula or the nm spectrum). */
+int gcolor_convert(GColor *dst, const GColor *src, GColorRole role);
+
+/* ---- colorimetry helpers (lib/cie.c) ---- */
+
+/** Linear sRGB -> XYZ (D65). */
+void gcie_rgb_to_xyz(const double rgb[3], double xyz[3]);
+/** XYZ -> linear sRGB (D65). */
+void gcie_xyz_to_rgb(const double xyz[3], double rgb[3]);
+/** XYZ of an nm spectrum read as a role (light: E has Y = 1; reflectance: under D65 with Y = 1). */
+void gcie_nm_to_xyz(const GSpectrumNM *s, GColorRole role, double xyz[3]);
+/** Spectrum for a linear sRGB colour: a smooth reflectance from the spectral primary basis
+ * (times D65 normalised to Y = 1 for lights), so that gcie_nm_to_xyz gives back the colour. */
+void gcie_rgb_to_nm(const double rgb[3], GColorRole role, GSpectrumNM *out);
+/** CIE 1931 2-degree colour matching functions at a wavelength in nm (linear between table values, 0 outside). */
+void gcie_cmf(double nm, double xyz[3]);
+/** Relative spectral power of a CIE illuminant ("D65", "A", "E") at nm, normalised so the illuminant has
+ * Y = 1 as a light; negative when the name is unknown. */
+double gcie_illuminant(const char *name, double nm);
+/** Fills an nm spectrum with a named illuminant (Y = 1); G_ERR_NOTFOUND for unknown names. */
+int gcie_illuminant_nm(const char *name, GSpectrumNM *out);
+/** Planck blackbody at temperature K, normalised to Y = 1. */
+void gcie_blackbody_nm(double kelvin, GSpectrumNM *out);
+/** Luminance weight of an nm sample: ybar / sum(ybar), so the weights sum to 1. */
+double gcie_luminance_weight(int nm_index);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

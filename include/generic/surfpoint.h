@@ -1,0 +1,72 @@
+/* surfpoint.h - GSurfPoint: the geometry of one surface point, handed to every material method.
+ *
+ * The renderer fills the geometric fields once per hit (gsurfpoint_init, then the fields); materials
+ * and texture nodes read them and cache what they compute for the point: the shading normal (which a
+ * material such as a bump node may change) and the generator values of texture nodes, so a sequence of
+ * material calls on the same point evaluates each generator once. */
+#ifndef GENERIC_SURFPOINT_H
+#define GENERIC_SURFPOINT_H
+
+#include "vec.h"
+#include "color.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct GMaterial GMaterial;
+
+/** Number of texture-node cache slots per surface point. */
+#define GSURF_CACHE_SLOTS 16
+
+/** One cached generator result, keyed by the object that computed it. */
+typedef struct GSurfCacheSlot {
+    const void *key;
+    double value;
+    GVec3 gradient;
+} GSurfCacheSlot;
+
+/** Everything a material needs to know about the point it is evaluated at. */
+typedef struct GSurfPoint {
+    GVec3 point;            /**< hit point in world space */
+    GVec3 object_point;     /**< hit point in the object's own space (for solid textures) */
+    GVec3 geometric_normal; /**< unit normal, on the side the incident ray came from */
+    GVec3 dpdu, dpdv;       /**< surface tangents along u and v (world space, not normalised) */
+    double u, v;            /**< surface parameters for 2D textures */
+    int surface;            /**< index of the object's surface (e.g. the face of a box) */
+    int entering;           /**< 1 when the incident ray comes from the object's outside */
+    double t;               /**< distance the ray travelled in the current medium to reach the point */
+    double footprint;       /**< width of the pixel's footprint at the point, world units (0 = unknown) */
+    double uv_footprint;    /**< the footprint in (u,v) units, for mip-mapping (0 = unknown) */
+    const GMaterial *material; /**< the surface's material (the root of its texture tree) */
+    const GMaterial *from;     /**< the medium the incident ray travels in (NULL = vacuum, index 1) */
+    const GMaterial *to;       /**< the medium on the other side of the surface */
+    const GColorModel *model;  /**< colour model of the computation */
+    GScratch *scratch;         /**< per-thread arena for temporaries */
+    /* cached values (private: use the functions below) */
+    unsigned cached_flags;
+    GVec3 cached_normal;
+    double cached_rel_index;
+    int ncache;
+    GSurfCacheSlot cache[GSURF_CACHE_SLOTS];
+} GSurfPoint;
+
+/** Clears a surface point (all fields zero, caches empty) and sets its model and arena. */
+void gsurfpoint_init(GSurfPoint *sp, const GColorModel *model, GScratch *scratch);
+/** Forgets every cached value (call after changing geometric fields of an initialised point). */
+void gsurfpoint_invalidate(GSurfPoint *sp);
+/** Shading normal: the material's normal() computed once and cached (geometric normal without a material). */
+GVec3 gsurfpoint_normal(GSurfPoint *sp);
+/** Overrides the cached shading normal. */
+void gsurfpoint_set_normal(GSurfPoint *sp, GVec3 n);
+/** Scalar relative refraction index n(from) / n(to) (luminance-weighted), computed once and cached. */
+double gsurfpoint_relative_index(GSurfPoint *sp);
+/** Looks up a value cached under key; 1 when found (value and gradient copied out, either may be NULL). */
+int gsurfpoint_cache_get(const GSurfPoint *sp, const void *key, double *value, GVec3 *gradient);
+/** Caches a value under key (the oldest slot is reused when all are taken). */
+void gsurfpoint_cache_put(GSurfPoint *sp, const void *key, double value, GVec3 gradient);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

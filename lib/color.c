@@ -1,0 +1,278 @@
+/* color.c - colour model creation, value storage, and dispatch of the generic colour operations. */
+#include "generic/color.h"
+#include "generic/registry.h"
+
+#include <math.h>
+#include <string.h>
+
+int gcolormodel_create_class(const GColorModelClass *cls, const GColorModelOptions *opt, GColorModel **out,
+                             GError *err)
+{
+    *out = NULL;
+    if (!cls)
+        return gerror_set(err, G_ERR_INVALID, "no colour model class given");
+    if (cls->abi_version != GCOLOR_ABI_VERSION)
+        return gerror_set(err, G_ERR_VERSION, "colour model '%s' has interface version %d, the library has %d",
+                          cls->name ? cls->name : "?", cls->abi_version, GCOLOR_ABI_VERSION);
+    if (!cls->init || !cls->black || !cls->add || !cls->mul || !cls->scale || !cls->div || !cls->pow ||
+        !cls->brightness || !cls->to_nm || !cls->from_nm)
+        return gerror_set(err, G_ERR_INVALID, "colour model '%s' lacks a required operation", cls->name);
+    GColorModelOptions none = {0, 0, 0};
+    if (!opt)
+        opt = &none;
+    if (!isfinite(opt->step_nm) || !isfinite(opt->min_nm) || !isfinite(opt->max_nm) || opt->step_nm < 0)
+        return gerror_set(err, G_ERR_INVALID, "colour model '%s': options must be finite and non-negative", cls->name);
+    GColorModel *m = gmem_calloc(1, sizeof *m);
+    if (!m)
+        return gerror_set(err, G_ERR_NOMEM, "out of memory creating colour model '%s'", cls->name);
+    m->cls = cls;
+    int rc = cls->init(m, opt, err);
+    if (rc == G_OK && (m->nvalues <= 0 || m->capacity < m->nvalues))
+        rc = gerror_set(err, G_ERR_INVALID, "colour model '%s' reported invalid sizes", cls->name);
+    if (rc != G_OK) {
+        if (cls->fini)
+            cls->fini(m);
+        gmem_free(m);
+        return rc;
+    }
+    *out = m;
+    return G_OK;
+}
+
+int gcolormodel_create(const char *name, const GColorModelOptions *opt, GColorModel **out, GError *err)
+{
+    *out = NULL;
+    const GTypeInfo *t = gregistry_find(GKIND_COLORMODEL, name ? name : "");
+    if (!t) {
+        char names[256];
+        gregistry_names(GKIND_COLORMODEL, names, sizeof names);
+        return gerror_set(err, G_ERR_NOTFOUND, "unknown colour model '%s' (known: %s)", name ? name : "", names);
+    }
+    return gcolormodel_create_class(t->vtable, opt, out, err);
+}
+
+void gcolormodel_destroy(GColorModel *m)
+{
+    if (!m)
+        return;
+    if (m->cls->fini)
+        m->cls->fini(m);
+    gmem_free(m);
+}
+
+const char *gcolormodel_name(const GColorModel *m) { return m ? m->cls->name : "(none)"; }
+
+/* ---- storage ---- */
+
+void gcolor_wrap(GColor *c, const GColorModel *m, float *storage)
+{
+    c->model = m;
+    c->v = storage;
+    m->cls->black(m, c);
+}
+
+int gcolor_scratch(GColor *c, const GColorModel *m, GScratch *s)
+{
+    float *v = gscratch_alloc(s, (size_t)m->capacity * sizeof(float));
+    if (!v) {
+        c->model = NULL;
+        c->v = NULL;
+        return G_ERR_NOMEM;
+    }
+    gcolor_wrap(c, m, v);
+    return G_OK;
+}
+
+int gcolor_alloc(GColor *c, const GColorModel *m)
+{
+    float *v = gmem_calloc((size_t)m->capacity, sizeof(float));
+    if (!v) {
+        c->model = NULL;
+        c->v = NULL;
+        return G_ERR_NOMEM;
+    }
+    gcolor_wrap(c, m, v);
+    return G_OK;
+}
+
+void gcolor_free(GColor *c)
+{
+    if (!c)
+        return;
+    gmem_free(c->v);
+    c->v = NULL;
+    c->model = NULL;
+}
+
+static size_t value_floats(const GColor *c)
+{
+    return (size_t)(c->kind == GCOLOR_MATRIX ? c->model->capacity : c->model->nvalues);
+}
+
+int gcolor_copy(GColor *dst, const GColor *src)
+{
+    if (!dst->model || dst->model != src->model)
+        return G_ERR_MISMATCH;
+    if (dst->v != src->v)
+        memcpy(dst->v, src->v, value_floats(src) * sizeof(float));
+    dst->kind = src->kind;
+    return G_OK;
+}
+
+/* ---- operations ---- */
+
+void gcolor_black(GColor *c) { c->model->cls->black(c->model, c); }
+
+int gcolor_add(GColor *out, const GColor *a, const GColor *b)
+{
+    if (a->model != b->model || out->model != a->model)
+        return G_ERR_MISMATCH;
+    return a->model->cls->add(a->model, out, a, b);
+}
+
+int gcolor_mul(GColor *out, const GColor *a, const GColor *b)
+{
+    if (a->model != b->model || out->model != a->model)
+        return G_ERR_MISMATCH;
+    return a->model->cls->mul(a->model, out, a, b);
+}
+
+int gcolor_scale(GColor *out, const GColor *a, double s)
+{
+    if (out->model != a->model)
+        return G_ERR_MISMATCH;
+    return a->model->cls->scale(a->model, out, a, s);
+}
+
+int gcolor_div(GColor *out, const GColor *a, const GColor *b)
+{
+    if (a->model != b->model || out->model != a->model)
+        return G_ERR_MISMATCH;
+    return a->model->cls->div(a->model, out, a, b);
+}
+
+int gcolor_pow(GColor *out, const GColor *a, double e)
+{
+    if (out->model != a->model)
+        return G_ERR_MISMATCH;
+    return a->model->cls->pow(a->model, out, a, e);
+}
+
+double gcolor_brightness(const GColor *c) { return c->model->cls->brightness(c->model, c); }
+
+int gcolor_add_scaled(GColor *out, const GColor *a, double s)
+{
+    if (out->model != a->model)
+        return G_ERR_MISMATCH;
+    const GColorModel *m = a->model;
+    if (out->kind == GCOLOR_VECTOR && a->kind == GCOLOR_VECTOR) {
+        for (int i = 0; i < m->nvalues; i++)
+            out->v[i] += (float)(a->v[i] * s);
+        return G_OK;
+    }
+    /* matrices: go through the model's own operations on a copy */
+    float tmpv[4096];
+    if ((size_t)m->capacity > sizeof tmpv / sizeof tmpv[0])
+        return G_ERR_UNSUPPORTED;
+    GColor tmp = {m, tmpv, GCOLOR_VECTOR};
+    int rc = m->cls->scale(m, &tmp, a, s);
+    return rc ? rc : m->cls->add(m, out, out, &tmp);
+}
+
+int gcolor_is_finite(const GColor *c)
+{
+    size_t n = value_floats(c);
+    for (size_t i = 0; i < n; i++)
+        if (!isfinite(c->v[i]))
+            return 0;
+    return 1;
+}
+
+/* ---- conversions ---- */
+
+int gcolor_to_nm(const GColor *c, GColorRole role, GSpectrumNM *out)
+{
+    return c->model->cls->to_nm(c->model, c, role, out);
+}
+
+int gcolor_from_nm(GColor *c, const GSpectrumNM *in, GColorRole role)
+{
+    for (int i = 0; i < GNM_COUNT; i++)
+        if (!isfinite(in->v[i]))
+            return G_ERR_INVALID;
+    return c->model->cls->from_nm(c->model, in, role, c);
+}
+
+int gcolor_to_xyz(const GColor *c, GColorRole role, double xyz[3])
+{
+    if (c->model->cls->to_xyz)
+        return c->model->cls->to_xyz(c->model, c, role, xyz);
+    GSpectrumNM s;
+    int rc = gcolor_to_nm(c, role, &s);
+    if (rc == G_OK)
+        gcie_nm_to_xyz(&s, role, xyz);
+    return rc;
+}
+
+int gcolor_to_rgb(const GColor *c, GColorRole role, double rgb[3])
+{
+    double xyz[3];
+    int rc = gcolor_to_xyz(c, role, xyz);
+    if (rc == G_OK)
+        gcie_xyz_to_rgb(xyz, rgb);
+    return rc;
+}
+
+int gcolor_from_rgb(GColor *c, const double rgb[3], GColorRole role)
+{
+    if (!isfinite(rgb[0]) || !isfinite(rgb[1]) || !isfinite(rgb[2]))
+        return G_ERR_INVALID;
+    if (c->model->cls->from_rgb)
+        return c->model->cls->from_rgb(c->model, rgb, role, c);
+    GSpectrumNM s;
+    gcie_rgb_to_nm(rgb, role, &s);
+    return c->model->cls->from_nm(c->model, &s, role, c);
+}
+
+int gcolor_from_reradiation(GColor *c, const GReradiation *r, GError *err)
+{
+    if (!r || !r->data || r->n_in <= 0 || r->n_out <= 0 || !(r->in_step > 0) || !(r->out_step > 0))
+        return gerror_set(err, G_ERR_INVALID, "re-radiation matrix has an empty or invalid grid");
+    for (long i = 0; i < (long)r->n_in * r->n_out; i++)
+        if (!isfinite(r->data[i]))
+            return gerror_set(err, G_ERR_INVALID, "re-radiation matrix holds a non-finite value");
+    if (c->model->cls->from_reradiation)
+        return c->model->cls->from_reradiation(c->model, r, c, err);
+    /* Fold: the response to an equal-energy light over the exchange range, read as a reflectance. */
+    GSpectrumNM s;
+    for (int i = 0; i < GNM_COUNT; i++) {
+        double nm = GNM_MIN + i;
+        double f = (nm - r->out_min) / r->out_step;
+        int o = (int)floor(f);
+        double t = f - o, v = 0.0;
+        for (int k = 0; k < 2; k++) {
+            int row = o + k;
+            double w = k ? t : 1.0 - t;
+            if (row < 0 || row >= r->n_out || w == 0.0)
+                continue;
+            double sum = 0.0;
+            for (int j = 0; j < r->n_in; j++) {
+                double in_nm = r->in_min + j * r->in_step;
+                if (in_nm >= GNM_MIN - 1e-9 && in_nm <= GNM_MAX + 1e-9)
+                    sum += r->data[(long)row * r->n_in + j];
+            }
+            v += w * sum;
+        }
+        s.v[i] = (float)v;
+    }
+    return c->model->cls->from_nm(c->model, &s, GCOLOR_REFLECTANCE, c);
+}
+
+int gcolor_convert(GColor *dst, const GColor *src, GColorRole role)
+{
+    if (dst->model == src->model)
+        return gcolor_copy(dst, src);
+    GSpectrumNM s;
+    int rc = gcolor_to_nm(src, role, &s);
+    return rc ? rc : gcolor_from_nm(dst, &s, role);
+}

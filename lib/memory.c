@@ -1,0 +1,147 @@
+/* memory.c - allocator hook and the scratch arena. */
+#include "generic/memory.h"
+
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void *libc_alloc(size_t n, void *u) { (void)u; return malloc(n); }
+static void *libc_realloc(void *p, size_t n, void *u) { (void)u; return realloc(p, n); }
+static void libc_free(void *p, void *u) { (void)u; free(p); }
+
+static GAllocator current = {libc_alloc, libc_realloc, libc_free, NULL};
+
+void gmem_set_allocator(const GAllocator *a)
+{
+    if (a)
+        current = *a;
+    else
+        current = (GAllocator){libc_alloc, libc_realloc, libc_free, NULL};
+}
+
+void *gmem_alloc(size_t size) { return size ? current.alloc(size, current.user) : NULL; }
+
+void *gmem_calloc(size_t n, size_t size)
+{
+    if (n == 0 || size == 0 || n > SIZE_MAX / size)
+        return NULL;
+    void *p = gmem_alloc(n * size);
+    if (p)
+        memset(p, 0, n * size);
+    return p;
+}
+
+void *gmem_realloc(void *ptr, size_t size) { return current.realloc(ptr, size, current.user); }
+
+void gmem_free(void *ptr)
+{
+    if (ptr)
+        current.free(ptr, current.user);
+}
+
+char *gmem_strdup(const char *s)
+{
+    if (!s)
+        return NULL;
+    size_t n = strlen(s) + 1;
+    char *d = gmem_alloc(n);
+    if (d)
+        memcpy(d, s, n);
+    return d;
+}
+
+/* ---- scratch arena: a list of blocks; allocation bumps within the current block ---- */
+
+typedef struct Block {
+    struct Block *next;
+    size_t size, used;
+    unsigned char *data;
+} Block;
+
+struct GScratch {
+    Block *first, *cur;
+    size_t block_size;
+};
+
+enum { ALIGN = 32 };
+
+static Block *block_new(size_t size)
+{
+    Block *b = gmem_alloc(sizeof *b + size + ALIGN);
+    if (!b)
+        return NULL;
+    b->next = NULL;
+    b->size = size;
+    b->used = 0;
+    uintptr_t p = (uintptr_t)(b + 1);
+    b->data = (unsigned char *)((p + ALIGN - 1) & ~(uintptr_t)(ALIGN - 1));
+    return b;
+}
+
+GScratch *gscratch_create(size_t bytes)
+{
+    GScratch *s = gmem_alloc(sizeof *s);
+    if (!s)
+        return NULL;
+    s->block_size = bytes ? bytes : 256 * 1024;
+    s->first = s->cur = block_new(s->block_size);
+    if (!s->first) {
+        gmem_free(s);
+        return NULL;
+    }
+    return s;
+}
+
+void gscratch_destroy(GScratch *s)
+{
+    if (!s)
+        return;
+    for (Block *b = s->first; b;) {
+        Block *n = b->next;
+        gmem_free(b);
+        b = n;
+    }
+    gmem_free(s);
+}
+
+void *gscratch_alloc(GScratch *s, size_t bytes)
+{
+    bytes = (bytes + ALIGN - 1) & ~(size_t)(ALIGN - 1);
+    for (;;) {
+        Block *b = s->cur;
+        if (b->size - b->used >= bytes) {
+            void *p = b->data + b->used;
+            b->used += bytes;
+            return p;
+        }
+        if (b->next) { /* reuse a block kept from earlier growth */
+            s->cur = b->next;
+            s->cur->used = 0;
+            continue;
+        }
+        size_t size = bytes > s->block_size ? bytes : s->block_size;
+        Block *nb = block_new(size);
+        if (!nb)
+            return NULL;
+        b->next = nb;
+        s->cur = nb;
+    }
+}
+
+GScratchMark gscratch_mark(const GScratch *s)
+{
+    GScratchMark m = {s->cur, s->cur->used};
+    return m;
+}
+
+void gscratch_release(GScratch *s, GScratchMark mark)
+{
+    s->cur = mark.block;
+    s->cur->used = mark.used;
+}
+
+void gscratch_reset(GScratch *s)
+{
+    s->cur = s->first;
+    s->cur->used = 0;
+}

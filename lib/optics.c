@@ -1,0 +1,40 @@
+/* optics.c - geometric optics shared by material implementations: the ideal-direction check, Snell
+ * refraction and the unpolarised Fresnel reflectance. */
+#include "generic/material.h"
+
+#include <math.h>
+
+int gmaterial_is_mirror_pair(GVec3 in, GVec3 n, GVec3 out)
+{
+    GVec3 ideal = gvec3_sub(gvec3_scale(n, 2.0 * gvec3_dot(in, n)), in);
+    double li = gvec3_length(ideal), lo = gvec3_length(out);
+    if (li == 0.0 || lo == 0.0)
+        return 0;
+    return gvec3_dot(ideal, out) / (li * lo) > 1.0 - 1e-6;
+}
+
+int goptics_refract(GVec3 view, GVec3 n, double eta, GVec3 *dir)
+{
+    double cos_i = -gvec3_dot(view, n);
+    double sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+    if (sin2_t > 1.0)
+        return 0;
+    double cos_t = sqrt(1.0 - sin2_t);
+    *dir = gvec3_normalize(gvec3_add(gvec3_scale(view, eta), gvec3_scale(n, eta * cos_i - cos_t)));
+    return 1;
+}
+
+double goptics_fresnel(double cos_i, double eta)
+{
+    cos_i = fabs(cos_i);
+    if (cos_i > 1.0)
+        cos_i = 1.0;
+    double sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+    if (sin2_t >= 1.0)
+        return 1.0;
+    double cos_t = sqrt(1.0 - sin2_t);
+    /* eta = n1 / n2 */
+    double rs = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
+    double rp = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
+    return 0.5 * (rs * rs + rp * rp);
+}

@@ -1,0 +1,85 @@
+/* surfpoint.c - the surface point's caches. */
+#include "generic/surfpoint.h"
+#include "generic/material.h"
+
+#include <string.h>
+
+enum { HAVE_NORMAL = 1u, HAVE_REL_INDEX = 2u };
+
+void gsurfpoint_init(GSurfPoint *sp, const GColorModel *model, GScratch *scratch)
+{
+    memset(sp, 0, sizeof *sp);
+    sp->model = model;
+    sp->scratch = scratch;
+    sp->entering = 1;
+}
+
+void gsurfpoint_invalidate(GSurfPoint *sp)
+{
+    sp->cached_flags = 0;
+    sp->ncache = 0;
+}
+
+GVec3 gsurfpoint_normal(GSurfPoint *sp)
+{
+    if (!(sp->cached_flags & HAVE_NORMAL)) {
+        GVec3 n = sp->geometric_normal;
+        if (sp->material && gmaterial_normal(sp->material, sp, &n) != G_OK)
+            n = sp->geometric_normal;
+        sp->cached_normal = n;
+        sp->cached_flags |= HAVE_NORMAL;
+    }
+    return sp->cached_normal;
+}
+
+void gsurfpoint_set_normal(GSurfPoint *sp, GVec3 n)
+{
+    sp->cached_normal = n;
+    sp->cached_flags |= HAVE_NORMAL;
+}
+
+double gsurfpoint_relative_index(GSurfPoint *sp)
+{
+    if (!(sp->cached_flags & HAVE_REL_INDEX)) {
+        double r = 1.0;
+        if (sp->model && sp->scratch) {
+            GScratchMark mark = gscratch_mark(sp->scratch);
+            GColor a, b;
+            if (gcolor_scratch(&a, sp->model, sp->scratch) == G_OK &&
+                gcolor_scratch(&b, sp->model, sp->scratch) == G_OK &&
+                gmaterial_refraction_index(sp->from, sp, &a) == G_OK &&
+                gmaterial_refraction_index(sp->to, sp, &b) == G_OK) {
+                double nb = gcolor_brightness(&b);
+                if (nb > 0.0)
+                    r = gcolor_brightness(&a) / nb;
+            }
+            gscratch_release(sp->scratch, mark);
+        }
+        sp->cached_rel_index = r;
+        sp->cached_flags |= HAVE_REL_INDEX;
+    }
+    return sp->cached_rel_index;
+}
+
+int gsurfpoint_cache_get(const GSurfPoint *sp, const void *key, double *value, GVec3 *gradient)
+{
+    int n = sp->ncache < GSURF_CACHE_SLOTS ? sp->ncache : GSURF_CACHE_SLOTS;
+    for (int i = 0; i < n; i++)
+        if (sp->cache[i].key == key) {
+            if (value)
+                *value = sp->cache[i].value;
+            if (gradient)
+                *gradient = sp->cache[i].gradient;
+            return 1;
+        }
+    return 0;
+}
+
+void gsurfpoint_cache_put(GSurfPoint *sp, const void *key, double value, GVec3 gradient)
+{
+    int slot = sp->ncache % GSURF_CACHE_SLOTS;
+    sp->cache[slot].key = key;
+    sp->cache[slot].value = value;
+    sp->cache[slot].gradient = gradient;
+    sp->ncache++;
+}

@@ -1,0 +1,14 @@
+#!/bin/sh
+# Installs the Debian packages libgeneric needs; does nothing when they are all present.
+set -e
+PKGS="build-essential pkg-config libopenimageio-dev openimageio-tools libcmocka-dev libembree-dev colord-data gnuplot-nox clang libclang-rt-14-dev valgrind"
+missing=""
+for p in $PKGS; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
+done
+[ -z "$missing" ] && exit 0
+echo "deps: installing$missing" >&2
+SUDO=""
+[ "$(id -u)" -ne 0 ] && SUDO="sudo"
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq $missing >/dev/null
