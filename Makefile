@@ -75,7 +75,7 @@ $(LIBSO): $(LIB_OBJ)
 # Tools and tests link the static library so they run from the build tree without LD_LIBRARY_PATH;
 # -rdynamic lets plug-ins resolve the library's symbols from the executable.
 .SECONDEXPANSION:
-$(BUILD)/bin/%: $$(patsubst %.c,$(BUILD)/obj/%.o,$$(wildcard examples/%/*.c)) $(LIBA)
+$(BUILD)/bin/%: $$(addsuffix .o,$$(addprefix $(BUILD)/obj/,$$(basename $$(wildcard examples/$$*/*.c)))) $(LIBA)
 	@mkdir -p $(dir $@)
 	$(CC) -rdynamic -o $@ $(filter %.o,$^) -Wl,--whole-archive $(LIBA) -Wl,--no-whole-archive $(LDFLAGS) $(EXTRA_LIBS_$*) $(DEPLIBS)
 

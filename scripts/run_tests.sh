@@ -1,5 +1,6 @@
 #!/bin/sh
-# Runs every test program in BUILD/tests (default build) and prints one summary line.
+# Runs every test program in BUILD/tests (default build) and the script tests in tests/scripts/,
+# then prints one summary line "N passed, N failed".
 # Test programs find the shared data and the source tree through GENERIC_SOURCE_DIR.
 BUILD=${1:-build}
 GENERIC_SOURCE_DIR=$(pwd)
@@ -7,19 +8,28 @@ GENERIC_BUILD_DIR=$(cd "$BUILD" && pwd)
 export GENERIC_SOURCE_DIR GENERIC_BUILD_DIR
 pass=0
 fail=0
-failed=""
-for t in "$BUILD"/tests/test_*; do
-    [ -x "$t" ] || continue
-    name=$(basename "$t")
-    if "$t" > "$BUILD/tests/$name.log" 2>&1; then
+run() { # name, log, command...
+    name=$1
+    log=$2
+    shift 2
+    if "$@" > "$log" 2>&1; then
         pass=$((pass + 1))
-        echo "PASS $name ($(grep -c '^\[       OK \]' "$BUILD/tests/$name.log") cases)"
+        cases=$(grep -c '^\[       OK \]' "$log")
+        echo "PASS $name${cases:+ ($cases cases)}"
     else
         fail=$((fail + 1))
-        failed="$failed $name"
         echo "FAIL $name"
-        cat "$BUILD/tests/$name.log"
+        cat "$log"
     fi
+}
+for t in "$BUILD"/tests/test_*; do
+    case "$t" in *.log | *.d | *.o) continue ;; esac
+    [ -x "$t" ] || continue
+    run "$(basename "$t")" "$t.log" "$t"
+done
+for s in tests/scripts/*.sh; do
+    [ -x "$s" ] || continue
+    run "$(basename "$s")" "$BUILD/tests/$(basename "$s").log" "$s" "$BUILD"
 done
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

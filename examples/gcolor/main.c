@@ -1,0 +1,103 @@
+/* gcolor - a colour report: a few colours converted into every registered colour model and back,
+ * printed as linear sRGB and CIE XYZ. Built only on the public API. */
+#include <generic/color.h>
+#include <generic/registry.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void usage(FILE *f)
+{
+    fprintf(f,
+            "usage: gcolor [--models LIST] [--rgb R,G,B]...\n"
+            "Prints sample colours in every colour model (or the comma-separated LIST): the value the model\n"
+            "stores, its brightness, and its conversion back to linear sRGB and CIE 1931 XYZ.\n"
+            "  --rgb R,G,B   add a reflectance in linear sRGB to the report (repeatable)\n"
+            "  --models LIST only these models, e.g. rgb,spectrum\n"
+            "  -h, --help    this text\n");
+}
+
+typedef struct Sample {
+    const char *name;
+    double rgb[3];
+    GColorRole role;
+} Sample;
+
+static void report_model(const char *model_name, const Sample *samples, int n)
+{
+    GError err;
+    GColorModel *m = NULL;
+    if (gcolormodel_create(model_name, NULL, &m, &err) != G_OK) {
+        fprintf(stderr, "gcolor: %s\n", err.message);
+        return;
+    }
+    printf("\n== %s (%d values per colour)\n", model_name, m->nvalues);
+    GColor c;
+    if (gcolor_alloc(&c, m) != G_OK) {
+        fprintf(stderr, "gcolor: out of memory\n");
+        gcolormodel_destroy(m);
+        return;
+    }
+    for (int i = 0; i < n; i++) {
+        double rgb[3], xyz[3];
+        gcolor_from_rgb(&c, samples[i].rgb, samples[i].role);
+        gcolor_to_rgb(&c, samples[i].role, rgb);
+        gcolor_to_xyz(&c, samples[i].role, xyz);
+        printf("  %-18s brightness %.4f  -> sRGB %.4f %.4f %.4f  XYZ %.4f %.4f %.4f\n", samples[i].name,
+               gcolor_brightness(&c), rgb[0], rgb[1], rgb[2], xyz[0], xyz[1], xyz[2]);
+    }
+    gcolor_free(&c);
+    gcolormodel_destroy(m);
+}
+
+int main(int argc, char **argv)
+{
+    Sample samples[32] = {
+        {"white light", {1, 1, 1}, GCOLOR_LIGHT},
+        {"grey 18%", {0.18, 0.18, 0.18}, GCOLOR_REFLECTANCE},
+        {"red", {0.8, 0.1, 0.1}, GCOLOR_REFLECTANCE},
+        {"green", {0.1, 0.7, 0.15}, GCOLOR_REFLECTANCE},
+        {"blue", {0.05, 0.1, 0.75}, GCOLOR_REFLECTANCE},
+        {"skin", {0.61, 0.42, 0.33}, GCOLOR_REFLECTANCE},
+    };
+    int n = 6;
+    const char *models = NULL;
+    static char names[32][48];
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "-h") || !strcmp(argv[i], "--help")) {
+            usage(stdout);
+            return 0;
+        } else if (!strcmp(argv[i], "--models") && i + 1 < argc) {
+            models = argv[++i];
+        } else if (!strcmp(argv[i], "--rgb") && i + 1 < argc && n < 32) {
+            Sample *s = &samples[n];
+            char tail;
+            if (sscanf(argv[++i], "%lf,%lf,%lf%c", &s->rgb[0], &s->rgb[1], &s->rgb[2], &tail) != 3) {
+                fprintf(stderr, "gcolor: --rgb expects R,G,B, got '%s'\n", argv[i]);
+                return 2;
+            }
+            snprintf(names[n], sizeof names[n], "rgb %s", argv[i]);
+            s->name = names[n];
+            s->role = GCOLOR_REFLECTANCE;
+            n++;
+        } else {
+            fprintf(stderr, "gcolor: unknown argument '%s'\n", argv[i]);
+            usage(stderr);
+            return 2;
+        }
+    }
+    printf("Colour report: reflectances are seen under D65 (Y = 1); lights are their own spectrum.\n");
+    if (models) {
+        char buf[256];
+        snprintf(buf, sizeof buf, "%s", models);
+        for (char *tok = strtok(buf, ","); tok; tok = strtok(NULL, ","))
+            report_model(tok, samples, n);
+    } else {
+        const GTypeInfo *types[32];
+        int k = gregistry_list(GKIND_COLORMODEL, types, 32);
+        for (int i = 0; i < k && i < 32; i++)
+            report_model(types[i]->name, samples, n);
+    }
+    return 0;
+}
