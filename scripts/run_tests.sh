@@ -15,7 +15,7 @@ run() { # name, log, command...
     if "$@" > "$log" 2>&1; then
         pass=$((pass + 1))
         cases=$(grep -c '^\[       OK \]' "$log")
-        echo "PASS $name${cases:+ ($cases cases)}"
+        if [ "$cases" -gt 0 ]; then echo "PASS $name ($cases cases)"; else echo "PASS $name"; fi
     else
         fail=$((fail + 1))
         echo "FAIL $name"
