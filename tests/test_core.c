@@ -1,0 +1,187 @@
+/* test_core.c - error records, the allocator hook, the scratch arena and the type registry. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <generic/color.h>
+#include <generic/registry.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- an allocator that counts calls and fails the n-th one ---- */
+static long n_allocs, fail_at = -1;
+static void *count_alloc(size_t n, void *u)
+{
+    (void)u;
+    if (fail_at >= 0 && n_allocs++ == fail_at)
+        return NULL;
+    return malloc(n);
+}
+static void *count_realloc(void *p, size_t n, void *u)
+{
+    (void)u;
+    if (fail_at >= 0 && n_allocs++ == fail_at)
+        return NULL;
+    return realloc(p, n);
+}
+static void count_free(void *p, void *u) { (void)u; free(p); }
+static const GAllocator counting = {count_alloc, count_realloc, count_free, NULL};
+
+static void test_error_record(void **state)
+{
+    (void)state;
+    GError e;
+    assert_int_equal(gerror_set(&e, G_ERR_PARSE, "a.txt:%d:%d: expected %s", 3, 7, "number"), G_ERR_PARSE);
+    assert_int_equal(e.code, G_ERR_PARSE);
+    assert_string_equal(e.message, "a.txt:3:7: expected number");
+    gerror_clear(&e);
+    assert_int_equal(e.code, G_OK);
+    assert_string_equal(e.message, "");
+    assert_int_equal(gerror_set(NULL, G_ERR_IO, "ignored"), G_ERR_IO);
+    assert_string_equal(gstatus_string(G_ERR_MISMATCH), "colours of different models or kinds");
+}
+
+static void test_scratch_mark_release(void **state)
+{
+    (void)state;
+    GScratch *s = gscratch_create(1024);
+    assert_non_null(s);
+    char *a = gscratch_alloc(s, 100);
+    assert_non_null(a);
+    assert_int_equal((uintptr_t)a % 32, 0);
+    GScratchMark m = gscratch_mark(s);
+    char *b = gscratch_alloc(s, 10);
+    char *c = gscratch_alloc(s, 5000); /* larger than a block: grows */
+    assert_non_null(b);
+    assert_non_null(c);
+    memset(c, 1, 5000);
+    gscratch_release(s, m);
+    char *b2 = gscratch_alloc(s, 10);
+    assert_ptr_equal(b, b2); /* released space is handed out again */
+    gscratch_reset(s);
+    assert_ptr_equal(gscratch_alloc(s, 1), a);
+    gscratch_destroy(s);
+    gscratch_destroy(NULL);
+}
+
+static void test_scratch_reuses_blocks(void **state)
+{
+    (void)state;
+    GScratch *s = gscratch_create(256);
+    gmem_set_allocator(&counting);
+    n_allocs = 0;
+    fail_at = 1000000;
+    for (int round = 0; round < 100; round++) {
+        GScratchMark m = gscratch_mark(s);
+        for (int i = 0; i < 20; i++)
+            assert_non_null(gscratch_alloc(s, 200));
+        gscratch_release(s, m);
+    }
+    long grown = n_allocs;
+    gmem_set_allocator(NULL);
+    fail_at = -1;
+    assert_true(grown <= 20); /* blocks grow in the first round only */
+    gscratch_destroy(s);
+}
+
+static void test_registry(void **state)
+{
+    (void)state;
+    assert_non_null(gregistry_find(GKIND_COLORMODEL, "rgb"));
+    assert_null(gregistry_find(GKIND_COLORMODEL, "no-such-model"));
+    assert_null(gregistry_find(GKIND_COUNT, "rgb"));
+    static const int dummy = 1;
+    GTypeInfo t = {GKIND_GENERATOR, "test-core-dummy", &dummy, NULL, "a test entry"};
+    GError e;
+    assert_int_equal(gregistry_add(&t, &e), G_OK);
+    assert_int_equal(gregistry_add(&t, &e), G_ERR_EXISTS);
+    assert_non_null(strstr(e.message, "test-core-dummy"));
+    const GTypeInfo *f = gregistry_find(GKIND_GENERATOR, "test-core-dummy");
+    assert_non_null(f);
+    assert_ptr_equal(f->vtable, &dummy);
+    char names[512];
+    gregistry_names(GKIND_COLORMODEL, names, sizeof names);
+    assert_non_null(strstr(names, "rgb"));
+    assert_string_equal(gkind_name(GKIND_MATERIAL), "material");
+    GTypeInfo bad = {GKIND_COUNT, "x", NULL, NULL, NULL};
+    assert_int_equal(gregistry_add(&bad, &e), G_ERR_INVALID);
+}
+
+static void test_unknown_model_lists_known(void **state)
+{
+    (void)state;
+    GColorModel *m = (GColorModel *)1;
+    GError e;
+    assert_int_equal(gcolormodel_create("cmyk", NULL, &m, &e), G_ERR_NOTFOUND);
+    assert_null(m);
+    assert_non_null(strstr(e.message, "cmyk"));
+    assert_non_null(strstr(e.message, "rgb"));
+}
+
+
+static int never_init(GColorModel *self, const GColorModelOptions *opt, GError *err)
+{
+    (void)self;
+    (void)opt;
+    return gerror_set(err, G_ERR_INVALID, "must not be called");
+}
+
+static void test_model_version_refused(void **state)
+{
+    (void)state;
+    GColorModelClass cls = {.abi_version = GCOLOR_ABI_VERSION + 1, .name = "future", .init = never_init};
+    GColorModel *m = NULL;
+    GError e;
+    assert_int_equal(gcolormodel_create_class(&cls, NULL, &m, &e), G_ERR_VERSION);
+    assert_null(m);
+    char want[128];
+    snprintf(want, sizeof want, "version %d, the library has %d", GCOLOR_ABI_VERSION + 1, GCOLOR_ABI_VERSION);
+    assert_non_null(strstr(e.message, want));
+    cls.abi_version = GCOLOR_ABI_VERSION; /* right version but no operations */
+    assert_int_equal(gcolormodel_create_class(&cls, NULL, &m, &e), G_ERR_INVALID);
+}
+
+/* Every allocation failure while creating a model and colours must give G_ERR_NOMEM, never a crash. */
+static void test_out_of_memory(void **state)
+{
+    (void)state;
+    gregistry_find(GKIND_COLORMODEL, "rgb"); /* registry built before counting */
+    for (long k = 0; k < 8; k++) {
+        gmem_set_allocator(&counting);
+        n_allocs = 0;
+        fail_at = k;
+        GError e;
+        GColorModel *m = NULL;
+        int rc = gcolormodel_create("rgb", NULL, &m, &e);
+        GColor c = {0};
+        int rc2 = rc == G_OK ? gcolor_alloc(&c, m) : G_ERR_NOMEM;
+        GScratch *s = gscratch_create(0);
+        gmem_set_allocator(NULL);
+        fail_at = -1;
+        assert_true(rc == G_OK || rc == G_ERR_NOMEM);
+        assert_true(rc2 == G_OK || rc2 == G_ERR_NOMEM);
+        if (rc2 == G_ERR_NOMEM)
+            assert_null(c.v);
+        gcolor_free(&c);
+        gcolormodel_destroy(m);
+        gscratch_destroy(s);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_error_record),
+        cmocka_unit_test(test_scratch_mark_release),
+        cmocka_unit_test(test_scratch_reuses_blocks),
+        cmocka_unit_test(test_registry),
+        cmocka_unit_test(test_unknown_model_lists_known),
+        cmocka_unit_test(test_model_version_refused),
+        cmocka_unit_test(test_out_of_memory),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
