@@ -48,10 +48,13 @@ double gsurfpoint_relative_index(GSurfPoint *sp)
             if (gcolor_scratch(&a, sp->model, sp->scratch) == G_OK &&
                 gcolor_scratch(&b, sp->model, sp->scratch) == G_OK &&
                 gmaterial_refraction_index(sp->from, sp, &a) == G_OK &&
-                gmaterial_refraction_index(sp->to, sp, &b) == G_OK) {
-                double nb = gcolor_brightness(&b);
-                if (nb > 0.0)
-                    r = gcolor_brightness(&a) / nb;
+                gmaterial_refraction_index(sp->to, sp, &b) == G_OK &&
+                gcolor_div(&a, &a, &b) == G_OK) {
+                /* the brightness of the ratio, as a renderer computes the rel_index it hands to
+                 * refraction(): reflection and refraction then see the same eta */
+                double ratio = gcolor_brightness(&a);
+                if (ratio > 0.0)
+                    r = ratio;
             }
             gscratch_release(sp->scratch, mark);
         }
@@ -77,9 +80,17 @@ int gsurfpoint_cache_get(const GSurfPoint *sp, const void *key, double *value, G
 
 void gsurfpoint_cache_put(GSurfPoint *sp, const void *key, double value, GVec3 gradient)
 {
+    int n = sp->ncache < GSURF_CACHE_SLOTS ? sp->ncache : GSURF_CACHE_SLOTS;
+    for (int i = 0; i < n; i++)
+        if (sp->cache[i].key == key) { /* a key has one slot: replace its value */
+            sp->cache[i].value = value;
+            sp->cache[i].gradient = gradient;
+            return;
+        }
     int slot = sp->ncache % GSURF_CACHE_SLOTS;
     sp->cache[slot].key = key;
     sp->cache[slot].value = value;
     sp->cache[slot].gradient = gradient;
-    sp->ncache++;
+    /* after the slots are full, keep ncache in [GSURF_CACHE_SLOTS, 2 * GSURF_CACHE_SLOTS) so it never overflows */
+    sp->ncache = sp->ncache + 1 >= 2 * GSURF_CACHE_SLOTS ? GSURF_CACHE_SLOTS : sp->ncache + 1;
 }

@@ -49,6 +49,10 @@ typedef struct GSurfPoint {
     double cached_rel_index;
     int ncache;
     GSurfCacheSlot cache[GSURF_CACHE_SLOTS];
+    /* appended fields */
+    GVec3 object_dpdu, object_dpdv; /**< tangents along u and v in object space, for the derivatives of solid
+                                         textures (zero = unknown: dpdu/dpdv are used, exact when the object's
+                                         transform to world space is a translation) */
 } GSurfPoint;
 
 /** Clears a surface point (all fields zero, caches empty) and sets its model and arena. */

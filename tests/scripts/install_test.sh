@@ -30,6 +30,9 @@ int main(void)
 C
 export PKG_CONFIG_SYSROOT_DIR="$stage"
 export PKG_CONFIG_PATH="$stage/usr/lib/pkgconfig"
-cc "$stage/x.c" -o "$stage/x" $(pkg-config --cflags --libs generic)
+# a library built with sanitizers needs their run-time in the program too
+san=""
+nm -A "$BUILD/lib/libgeneric.a" 2>/dev/null | grep -q __asan_ && san="-fsanitize=address,undefined"
+cc $san "$stage/x.c" -o "$stage/x" $(pkg-config --cflags --libs generic)
 out=$(LD_LIBRARY_PATH="$stage/usr/lib" "$stage/x")
 echo "installed library: D65 white XYZ = $out"

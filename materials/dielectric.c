@@ -1,0 +1,261 @@
+/* dielectric.c - a smooth dielectric interface: dispersion formulas, unpolarised Fresnel reflection and
+ * refraction, total internal reflection, Beer-Lambert absorption inside. */
+#include "generic/materials.h"
+#include "materials_builtin.h"
+#include "params.h"
+
+#include <math.h>
+
+typedef struct Dielectric {
+    GMaterial base;
+    GDispersion disp;
+    GColor index;         /* n(lambda) in the material's model */
+    GColor transmittance; /* exp(-a): what one unit of length lets through */
+    GColor tint;
+    int absorbs, tinted;
+} Dielectric;
+
+/* ---- dispersion formulas ---- */
+
+GDispersion gdispersion_constant(double n)
+{
+    GDispersion d = {GDISPERSION_CONSTANT, {n, 0, 0, 0, 0, 0}};
+    return d;
+}
+
+GDispersion gdispersion_cauchy(double a, double b, double c)
+{
+    GDispersion d = {GDISPERSION_CAUCHY, {a, b, c, 0, 0, 0}};
+    return d;
+}
+
+GDispersion gdispersion_sellmeier(const double b[3], const double c[3])
+{
+    GDispersion d = {GDISPERSION_SELLMEIER, {b[0], b[1], b[2], c[0], c[1], c[2]}};
+    return d;
+}
+
+double gdispersion_index(const GDispersion *d, double nm)
+{
+    double l = nm * 1e-3, l2 = l * l;
+    switch (d->kind) {
+    case GDISPERSION_CONSTANT:
+        return d->c[0];
+    case GDISPERSION_CAUCHY:
+        return d->c[0] + d->c[1] / l2 + d->c[2] / (l2 * l2);
+    case GDISPERSION_SELLMEIER: {
+        double n2 = 1.0;
+        for (int i = 0; i < 3; i++)
+            n2 += d->c[i] * l2 / (l2 - d->c[3 + i]);
+        return n2 > 0.0 ? sqrt(n2) : NAN;
+    }
+    }
+    return NAN;
+}
+
+int gdispersion_check(const GDispersion *d, GError *err)
+{
+    static const char *const names[3][6] = {
+        {"n", "", "", "", "", ""},
+        {"A", "B", "C", "", "", ""},
+        {"B1", "B2", "B3", "C1", "C2", "C3"},
+    };
+    static const int counts[3] = {1, 3, 6};
+    static const char *const kinds[3] = {"constant", "Cauchy", "Sellmeier"};
+    if (!d || (unsigned)d->kind > GDISPERSION_SELLMEIER)
+        return gerror_set(err, G_ERR_INVALID, "dielectric: unknown dispersion formula %d", d ? (int)d->kind : -1);
+    for (int i = 0; i < counts[d->kind]; i++)
+        if (!isfinite(d->c[i]))
+            return gerror_set(err, G_ERR_INVALID, "dielectric: %s coefficient %s is %g (must be finite)",
+                              kinds[d->kind], names[d->kind][i], d->c[i]);
+    for (int nm = GNM_MIN; nm <= GNM_MAX; nm++) {
+        double n = gdispersion_index(d, nm);
+        if (!isfinite(n) || n <= 0.0)
+            return gerror_set(err, G_ERR_INVALID,
+                              "dielectric: the %s formula gives the index %g at %d nm (must be finite and > 0)",
+                              kinds[d->kind], n, nm);
+    }
+    return G_OK;
+}
+
+/* The index as a colour: the nm spectrum for spectral models, n at 610/550/465 nm for the others. */
+static int index_color(const GDispersion *d, GColor *out)
+{
+    if (out->model->nsamples > 0) {
+        GSpectrumNM s;
+        for (int i = 0; i < GNM_COUNT; i++)
+            s.v[i] = (float)gdispersion_index(d, GNM_MIN + i);
+        return gcolor_from_nm(out, &s, GCOLOR_REFLECTANCE);
+    }
+    double rgb[3] = {gdispersion_index(d, 610.0), gdispersion_index(d, 550.0), gdispersion_index(d, 465.0)};
+    return gcolor_from_rgb(out, rgb, GCOLOR_REFLECTANCE);
+}
+
+/* ---- the material ---- */
+
+static void dielectric_destroy(GMaterial *self)
+{
+    Dielectric *d = (Dielectric *)self;
+    gcolor_free(&d->index);
+    gcolor_free(&d->transmittance);
+    gcolor_free(&d->tint);
+    gmem_free(d);
+}
+
+static double eta_of(GSurfPoint *sp, const GColor *rel_index)
+{
+    if (!rel_index)
+        return gsurfpoint_relative_index(sp);
+    double eta = gcolor_brightness(rel_index);
+    return eta > 0.0 ? eta : 1.0;
+}
+
+static int dielectric_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
+                                 GColor *result)
+{
+    const Dielectric *d = (const Dielectric *)self;
+    GVec3 n = gsurfpoint_normal(sp);
+    double cos_o = gvec3_dot(out, n);
+    if (cos_o <= 0.0 || !gmaterial_is_mirror_pair(in, n, out)) {
+        gcolor_black(result);
+        return G_OK;
+    }
+    double f = goptics_fresnel(cos_o, gsurfpoint_relative_index(sp));
+    int rc = gcolor_scale(result, illum, f);
+    if (rc == G_OK && d->tinted)
+        rc = gcolor_mul(result, &d->tint, result);
+    return rc;
+}
+
+static int dielectric_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
+                                 const GColor *rel_index, GVec3 out, GColor *result)
+{
+    (void)self;
+    GVec3 n = gsurfpoint_normal(sp), t;
+    double cos_o = gvec3_dot(out, n);
+    double eta = eta_of(sp, rel_index);
+    if (cos_o <= 0.0 || !goptics_refract(gvec3_neg(out), n, eta, &t) ||
+        gvec3_dot(t, in) <= (1.0 - 1e-6) * gvec3_length(in)) {
+        gcolor_black(result);
+        return G_OK;
+    }
+    return gcolor_scale(result, illum, 1.0 - goptics_fresnel(cos_o, eta));
+}
+
+static int dielectric_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
+{
+    (void)sp;
+    return gcolor_copy(result, &((const Dielectric *)self)->index);
+}
+
+static int dielectric_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
+{
+    (void)self;
+    *dir = gvec3_reflect(view, gsurfpoint_normal(sp));
+    return 1;
+}
+
+static int dielectric_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
+                                     GVec3 *dir)
+{
+    (void)self;
+    return goptics_refract(view, gsurfpoint_normal(sp), eta_of(sp, rel_index), dir);
+}
+
+static int dielectric_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
+                                 GColor *result)
+{
+    const Dielectric *d = (const Dielectric *)self;
+    if (!(length >= 0.0))
+        return G_ERR_INVALID;
+    if (!d->absorbs || length == 0.0)
+        return gcolor_copy(result, illum);
+    if (result->v != illum->v) {
+        int rc = gcolor_pow(result, &d->transmittance, length);
+        return rc ? rc : gcolor_mul(result, result, illum);
+    }
+    /* result aliases illum: T^length needs a temporary */
+    const GColorModel *m = self->model;
+    if (sp && sp->scratch) {
+        GColor t;
+        GScratchMark mark = gscratch_mark(sp->scratch);
+        int rc = gcolor_scratch(&t, m, sp->scratch);
+        if (rc == G_OK)
+            rc = gcolor_pow(&t, &d->transmittance, length);
+        if (rc == G_OK)
+            rc = gcolor_mul(result, &t, illum);
+        gscratch_release(sp->scratch, mark);
+        return rc;
+    }
+    /* no arena: a light is a vector, and pow and mul act sample by sample on vectors */
+    if (illum->model != m)
+        return G_ERR_MISMATCH;
+    if (illum->kind != GCOLOR_VECTOR)
+        return G_ERR_UNSUPPORTED;
+    for (int i = 0; i < m->nvalues; i++)
+        result->v[i] *= powf(d->transmittance.v[i], (float)length);
+    return G_OK;
+}
+
+static int dielectric_opaque(const GMaterial *self, GSurfPoint *sp)
+{
+    (void)self;
+    (void)sp;
+    return 0;
+}
+
+const GMaterialClass gmaterial_dielectric = {
+    .abi_version = GMATERIAL_ABI_VERSION,
+    .name = "dielectric",
+    .description = "smooth dielectric: Fresnel reflection and refraction, dispersion, Beer-Lambert absorption",
+    .destroy = dielectric_destroy,
+    .reflection = dielectric_reflection,
+    .refraction = dielectric_refraction,
+    .refraction_index = dielectric_refraction_index,
+    .reflection_dir = dielectric_reflection_dir,
+    .refraction_dir = dielectric_refraction_dir,
+    .absorption = dielectric_absorption,
+    .opaque = dielectric_opaque,
+};
+
+int gdielectric_create(const GColorModel *model, const GDielectricParams *params, GMaterial **out, GError *err)
+{
+    *out = NULL;
+    if (!model || !params)
+        return gerror_set(err, G_ERR_INVALID, "dielectric: no colour model or parameters given");
+    int rc = gdispersion_check(&params->index, err);
+    if (rc != G_OK)
+        return rc;
+    Dielectric *d = gmem_calloc(1, sizeof *d);
+    if (!d)
+        return gerror_set(err, G_ERR_NOMEM, "dielectric: out of memory");
+    d->disp = params->index;
+    rc = gmaterial_init(&d->base, &gmaterial_dielectric, model, err);
+    if (rc == G_OK && gcolor_alloc(&d->index, model) != G_OK)
+        rc = gerror_set(err, G_ERR_NOMEM, "dielectric: out of memory");
+    if (rc == G_OK && (rc = index_color(&d->disp, &d->index)) != G_OK)
+        rc = gerror_set(err, rc, "dielectric: cannot express the index in model '%s'", gcolormodel_name(model));
+    if (rc == G_OK && params->absorption) {
+        rc = gmatparam_color(model, params->absorption, GCOLOR_REFLECTANCE, 0.0, "dielectric", "absorption",
+                             &d->transmittance, err);
+        if (rc == G_OK) {
+            if (d->transmittance.kind != GCOLOR_VECTOR)
+                rc = gerror_set(err, G_ERR_INVALID, "dielectric: absorption must be a plain colour, not a matrix");
+            else {
+                d->absorbs = gcolor_brightness(&d->transmittance) > 0.0;
+                for (int i = 0; i < model->nvalues; i++)
+                    d->transmittance.v[i] = expf(-d->transmittance.v[i]);
+            }
+        }
+    }
+    if (rc == G_OK && params->tint) {
+        rc = gmatparam_color(model, params->tint, GCOLOR_REFLECTANCE, 1.0, "dielectric", "tint", &d->tint, err);
+        d->tinted = rc == G_OK;
+    }
+    if (rc != G_OK) {
+        dielectric_destroy(&d->base);
+        return rc;
+    }
+    *out = &d->base;
+    return G_OK;
+}

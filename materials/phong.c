@@ -1,0 +1,151 @@
+/* phong.c - energy-normalised Phong: f_r = kd / pi + ks (n + 2) / (2 pi) cos^n(alpha), with an optional
+ * ideal reflection ray of reflectance `mirror`. */
+#include "generic/materials.h"
+#include "materials_builtin.h"
+#include "params.h"
+
+#include <math.h>
+
+typedef struct Phong {
+    GMaterial base;
+    GColor kd, ks, mirror;
+    GColor albedo; /* kd + ks + mirror, for ambient() */
+    double n;
+    double lobe_norm; /* (n + 2) / (2 pi) */
+    int has_ks, has_mirror;
+} Phong;
+
+static void phong_destroy(GMaterial *self)
+{
+    Phong *p = (Phong *)self;
+    gcolor_free(&p->kd);
+    gcolor_free(&p->ks);
+    gcolor_free(&p->mirror);
+    gcolor_free(&p->albedo);
+    gmem_free(p);
+}
+
+static int phong_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
+                            GColor *result)
+{
+    const Phong *p = (const Phong *)self;
+    GVec3 n;
+    double cos_in = gmat_cos_in(sp, in, out, &n);
+    if (cos_in <= 0.0) {
+        gcolor_black(result);
+        return G_OK;
+    }
+    if (p->has_mirror && gmaterial_is_mirror_pair(in, n, out))
+        return gcolor_mul(result, &p->mirror, illum);
+    double cos_alpha = 2.0 * cos_in * gvec3_dot(n, out) - gvec3_dot(in, out);
+    double lobe = 0.0;
+    if (p->has_ks && cos_alpha > 0.0)
+        lobe = p->lobe_norm * pow(cos_alpha > 1.0 ? 1.0 : cos_alpha, p->n);
+    if (lobe <= 0.0) {
+        int rc = gcolor_mul(result, &p->kd, illum);
+        return rc ? rc : gcolor_scale(result, result, cos_in / M_PI);
+    }
+    /* f_r as a reflectance on the arena, then applied to illum */
+    if (!sp->scratch)
+        return G_ERR_INVALID;
+    GScratchMark mark = gscratch_mark(sp->scratch);
+    GColor f;
+    int rc = gcolor_scratch(&f, self->model, sp->scratch);
+    if (rc == G_OK)
+        rc = gcolor_scale(&f, &p->kd, 1.0 / M_PI);
+    if (rc == G_OK)
+        rc = gcolor_add_scaled(&f, &p->ks, lobe);
+    if (rc == G_OK)
+        rc = gcolor_mul(result, &f, illum);
+    if (rc == G_OK)
+        rc = gcolor_scale(result, result, cos_in);
+    gscratch_release(sp->scratch, mark);
+    return rc;
+}
+
+static int phong_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
+{
+    if (!((const Phong *)self)->has_mirror)
+        return 0;
+    *dir = gvec3_reflect(view, gsurfpoint_normal(sp));
+    return 1;
+}
+
+static int phong_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
+{
+    (void)sp;
+    return gcolor_mul(result, &((const Phong *)self)->albedo, illum);
+}
+
+static int phong_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
+{
+    (void)sp;
+    return gcolor_copy(result, &((const Phong *)self)->kd);
+}
+
+const GMaterialClass gmaterial_phong = {
+    .abi_version = GMATERIAL_ABI_VERSION,
+    .name = "phong",
+    .description = "energy-normalised Phong (kd, ks, exponent) with an optional mirror ray",
+    .destroy = phong_destroy,
+    .reflection = phong_reflection,
+    .reflection_dir = phong_reflection_dir,
+    .ambient = phong_ambient,
+    .diffuse = phong_diffuse,
+};
+
+/* A parameter colour, or black when it is not given. */
+static int param_or_black(const GColorModel *m, const GColor *src, const char *name, GColor *dst, GError *err)
+{
+    if (src)
+        return gmatparam_color(m, src, GCOLOR_REFLECTANCE, 1.0, "phong", name, dst, err);
+    if (gcolor_alloc(dst, m) != G_OK)
+        return gerror_set(err, G_ERR_NOMEM, "phong: out of memory for %s", name);
+    return G_OK;
+}
+
+int gphong_create(const GColorModel *model, const GPhongParams *params, GMaterial **out, GError *err)
+{
+    *out = NULL;
+    if (!model || !params)
+        return gerror_set(err, G_ERR_INVALID, "phong: no colour model or parameters given");
+    if (!isfinite(params->exponent) || params->exponent < 0.0)
+        return gerror_set(err, G_ERR_INVALID, "phong: exponent is %g (must be finite and >= 0)", params->exponent);
+    Phong *p = gmem_calloc(1, sizeof *p);
+    if (!p)
+        return gerror_set(err, G_ERR_NOMEM, "phong: out of memory");
+    int rc = gmaterial_init(&p->base, &gmaterial_phong, model, err);
+    if (rc == G_OK)
+        rc = param_or_black(model, params->kd, "kd", &p->kd, err);
+    if (rc == G_OK)
+        rc = param_or_black(model, params->ks, "ks", &p->ks, err);
+    if (rc == G_OK)
+        rc = param_or_black(model, params->mirror, "mirror", &p->mirror, err);
+    if (rc == G_OK && gcolor_alloc(&p->albedo, model) != G_OK)
+        rc = gerror_set(err, G_ERR_NOMEM, "phong: out of memory");
+    if (rc == G_OK) {
+        rc = gcolor_add(&p->albedo, &p->kd, &p->ks);
+        if (rc == G_OK)
+            rc = gcolor_add(&p->albedo, &p->albedo, &p->mirror);
+        if (rc != G_OK)
+            rc = gerror_set(err, rc, "phong: cannot add kd, ks and mirror (%s)", gstatus_string(rc));
+    }
+    if (rc == G_OK) {
+        int at;
+        double mx = gmatparam_max(&p->albedo, &at);
+        if (mx > 1.0 + 1e-4)
+            rc = gerror_set(err, G_ERR_INVALID,
+                            "phong: kd + ks + mirror is %g at sample %d; it must not exceed 1 (energy conservation)",
+                            mx, at);
+    }
+    if (rc != G_OK) {
+        phong_destroy(&p->base);
+        return rc;
+    }
+    p->n = params->exponent;
+    p->lobe_norm = (p->n + 2.0) / (2.0 * M_PI);
+    p->has_ks = gcolor_brightness(&p->ks) > 0.0;
+    p->has_mirror = gcolor_brightness(&p->mirror) > 0.0;
+    *out = &p->base;
+    return G_OK;
+}

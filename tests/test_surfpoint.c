@@ -1,0 +1,197 @@
+/* test_surfpoint.c - the surface point's caches: the shading normal computed once, the generator cache
+ * slots, and the cached relative refraction index. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+
+#include "generic/color.h"
+#include "generic/material.h"
+#include "generic/materials.h"
+#include "generic/surfpoint.h"
+
+static int normal_calls;
+
+/* A test material whose normal is tilted and counts its calls. */
+static int counting_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
+{
+    (void)self;
+    normal_calls++;
+    *n = gvec3_normalize(gvec3_add(sp->geometric_normal, gvec3(0.1, 0, 0)));
+    return G_OK;
+}
+
+static void plain_destroy(GMaterial *self) { gmem_free(self); }
+
+static const GMaterialClass counting_class = {
+    .abi_version = GMATERIAL_ABI_VERSION,
+    .name = "counting",
+    .description = "test material counting normal() calls",
+    .destroy = plain_destroy,
+    .normal = counting_normal,
+};
+
+static int failing_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
+{
+    (void)self;
+    (void)sp;
+    normal_calls++;
+    *n = gvec3(1, 2, 3);
+    return G_ERR_INVALID;
+}
+
+static const GMaterialClass failing_class = {
+    .abi_version = GMATERIAL_ABI_VERSION,
+    .name = "failing",
+    .description = "test material whose normal() fails",
+    .destroy = plain_destroy,
+    .normal = failing_normal,
+};
+
+static GMaterial *new_test_material(const GMaterialClass *cls)
+{
+    GMaterial *m = gmem_calloc(1, sizeof *m);
+    assert_non_null(m);
+    GError err;
+    assert_int_equal(gmaterial_init(m, cls, NULL, &err), G_OK);
+    return m;
+}
+
+static void test_normal_cached(void **state)
+{
+    (void)state;
+    GSurfPoint sp;
+    gsurfpoint_init(&sp, NULL, NULL);
+    sp.geometric_normal = gvec3(0, 0, 1);
+    /* no material: the geometric normal */
+    GVec3 n = gsurfpoint_normal(&sp);
+    assert_true(n.x == 0 && n.y == 0 && n.z == 1);
+
+    GMaterial *m = new_test_material(&counting_class);
+    gsurfpoint_init(&sp, NULL, NULL);
+    sp.geometric_normal = gvec3(0, 0, 1);
+    sp.material = m;
+    normal_calls = 0;
+    n = gsurfpoint_normal(&sp);
+    for (int i = 0; i < 10; i++) {
+        GVec3 again = gsurfpoint_normal(&sp);
+        assert_true(again.x == n.x && again.y == n.y && again.z == n.z);
+    }
+    assert_int_equal(normal_calls, 1);
+    assert_true(fabs(n.x - 0.1 / sqrt(1.01)) < 1e-12);
+    /* invalidate: computed again, once */
+    gsurfpoint_invalidate(&sp);
+    gsurfpoint_normal(&sp);
+    gsurfpoint_normal(&sp);
+    assert_int_equal(normal_calls, 2);
+    /* an explicit normal replaces the cached one without calling the material */
+    gsurfpoint_set_normal(&sp, gvec3(0, 1, 0));
+    n = gsurfpoint_normal(&sp);
+    assert_true(n.y == 1 && normal_calls == 2);
+    gmaterial_unref(m);
+
+    /* a failing normal() falls back to the geometric normal, still computed once */
+    m = new_test_material(&failing_class);
+    gsurfpoint_init(&sp, NULL, NULL);
+    sp.geometric_normal = gvec3(0, 1, 0);
+    sp.material = m;
+    normal_calls = 0;
+    n = gsurfpoint_normal(&sp);
+    gsurfpoint_normal(&sp);
+    assert_true(n.x == 0 && n.y == 1 && n.z == 0);
+    assert_int_equal(normal_calls, 1);
+    gmaterial_unref(m);
+}
+
+static void test_cache_slots(void **state)
+{
+    (void)state;
+    GSurfPoint sp;
+    gsurfpoint_init(&sp, NULL, NULL);
+    int keys[3 * GSURF_CACHE_SLOTS];
+    double v;
+    GVec3 g;
+    assert_int_equal(gsurfpoint_cache_get(&sp, &keys[0], &v, &g), 0);
+    for (int i = 0; i < 3; i++)
+        gsurfpoint_cache_put(&sp, &keys[i], 10.0 + i, gvec3(i, -i, 2 * i));
+    for (int i = 2; i >= 0; i--) {
+        assert_int_equal(gsurfpoint_cache_get(&sp, &keys[i], &v, &g), 1);
+        assert_true(v == 10.0 + i && g.x == i && g.y == -i && g.z == 2 * i);
+    }
+    assert_int_equal(gsurfpoint_cache_get(&sp, &keys[3], NULL, NULL), 0);
+    assert_int_equal(gsurfpoint_cache_get(&sp, &keys[1], NULL, NULL), 1); /* NULL outputs are allowed */
+    /* putting a key again replaces its value */
+    gsurfpoint_cache_put(&sp, &keys[1], 99.0, gvec3(9, 9, 9));
+    assert_int_equal(gsurfpoint_cache_get(&sp, &keys[1], &v, &g), 1);
+    assert_true(v == 99.0 && g.x == 9);
+    assert_int_equal(gsurfpoint_cache_get(&sp, &keys[0], &v, NULL), 1);
+    assert_true(v == 10.0);
+    /* more keys than slots: the oldest are reused, the newest GSURF_CACHE_SLOTS are all found */
+    for (int i = 3; i < 3 * GSURF_CACHE_SLOTS; i++)
+        gsurfpoint_cache_put(&sp, &keys[i], 10.0 + i, gvec3(0, 0, 0));
+    for (int i = 0; i < 3 * GSURF_CACHE_SLOTS; i++) {
+        int found = gsurfpoint_cache_get(&sp, &keys[i], &v, NULL);
+        assert_int_equal(found, i >= 2 * GSURF_CACHE_SLOTS);
+        if (found)
+            assert_true(v == 10.0 + i);
+    }
+    /* invalidate forgets everything */
+    gsurfpoint_invalidate(&sp);
+    for (int i = 0; i < 3 * GSURF_CACHE_SLOTS; i++)
+        assert_int_equal(gsurfpoint_cache_get(&sp, &keys[i], NULL, NULL), 0);
+}
+
+static void relative_index_case(const char *model_name)
+{
+    GError err;
+    GColorModel *model;
+    if (gcolormodel_create(model_name, NULL, &model, &err) != G_OK) {
+        print_message("colour model '%s' not available: %s\n", model_name, err.message);
+        skip();
+    }
+    GScratch *s = gscratch_create(0);
+    assert_non_null(s);
+    GMaterial *glass, *water;
+    GDielectricParams p = {gdispersion_constant(1.5), NULL, NULL};
+    assert_int_equal(gdielectric_create(model, &p, &glass, &err), G_OK);
+    p.index = gdispersion_constant(1.33);
+    assert_int_equal(gdielectric_create(model, &p, &water, &err), G_OK);
+    GSurfPoint sp;
+    gsurfpoint_init(&sp, model, s);
+    sp.from = NULL; /* vacuum / air */
+    sp.to = glass;
+    double r = gsurfpoint_relative_index(&sp);
+    print_message("%s: air -> glass 1.5: relative index %.9f\n", model_name, r);
+    assert_true(fabs(r - 1.0 / 1.5) < 1e-7);
+    /* cached: changing the media without invalidating keeps the value */
+    sp.to = water;
+    assert_true(gsurfpoint_relative_index(&sp) == r);
+    gsurfpoint_invalidate(&sp);
+    assert_true(fabs(gsurfpoint_relative_index(&sp) - 1.0 / 1.33) < 1e-7);
+    sp.from = glass;
+    gsurfpoint_invalidate(&sp);
+    assert_true(fabs(gsurfpoint_relative_index(&sp) - 1.5 / 1.33) < 1e-6);
+    sp.to = NULL;
+    gsurfpoint_invalidate(&sp);
+    assert_true(fabs(gsurfpoint_relative_index(&sp) - 1.5) < 1e-6);
+    gmaterial_unref(glass);
+    gmaterial_unref(water);
+    gscratch_destroy(s);
+    gcolormodel_destroy(model);
+}
+
+static void test_relative_index(void **state) { relative_index_case(*state); }
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_normal_cached),
+        cmocka_unit_test(test_cache_slots),
+        {"test_relative_index (rgb)", test_relative_index, NULL, NULL, (void *)"rgb"},
+        {"test_relative_index (spectrum)", test_relative_index, NULL, NULL, (void *)"spectrum"},
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
