@@ -171,7 +171,7 @@ int gcolor_add_scaled(GColor *out, const GColor *a, double s)
         return G_OK;
     }
     /* matrices: go through the model's own operations on a copy */
-    float tmpv[4096];
+    float tmpv[128 * 128]; /* the largest matrix a built-in model allows */
     if ((size_t)m->capacity > sizeof tmpv / sizeof tmpv[0])
         return G_ERR_UNSUPPORTED;
     GColor tmp = {m, tmpv, GCOLOR_VECTOR};
@@ -272,6 +272,12 @@ int gcolor_convert(GColor *dst, const GColor *src, GColorRole role)
 {
     if (dst->model == src->model)
         return gcolor_copy(dst, src);
+    if (src->model->nsamples == 0 && src->kind == GCOLOR_VECTOR) {
+        /* a tristimulus model: its exact colour, then the target's own (exact) from_rgb */
+        double rgb[3];
+        int rc = gcolor_to_rgb(src, role, rgb);
+        return rc ? rc : gcolor_from_rgb(dst, rgb, role);
+    }
     GSpectrumNM s;
     int rc = gcolor_to_nm(src, role, &s);
     return rc ? rc : gcolor_from_nm(dst, &s, role);
