@@ -111,3 +111,47 @@ clean:
 	rm -rf build
 
 -include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)
+
+# ---- gtrace (examples/gtrace): Embree for the tracer, its test programs, and the POV-Ray comparison ----
+EXTRA_LIBS_gtrace := -lembree3
+$(BUILD)/tests/test_gtrace: TESTLIBS += -lembree3
+$(BUILD)/tests/test_gtrace_%: TESTLIBS += -lembree3
+.SECONDARY: $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard examples/gtrace/*.c))
+.PHONY: bench-pov
+bench-pov: $(BUILD)/bin/gtrace
+	@bench/pov/bench.sh $(BUILD)
+bench: bench-pov
+# (end of gtrace)
+
+# ---- run-time plug-in modules (examples/plugins/, tests/plugins/) ----
+# Each examples/plugins/*.c is one module, built as its own .so into $(BUILD)/plugins/ against the public
+# headers as `make install` installs them (copied to $(BUILD)/plugins/include), never against the source tree.
+# Modules are not linked with libgeneric: the program that loads them provides the library's symbols.
+# tests/plugins/bad_module.c is built three ways (wrong interface version, failing init, no entry point)
+# for tests/test_plugin.c.
+PLUGIN_SRC := $(wildcard examples/plugins/*.c)
+PLUGIN_INC := $(BUILD)/plugins/include
+PLUGIN_HDR := $(patsubst include/generic/%,$(PLUGIN_INC)/generic/%,$(wildcard include/generic/*.h))
+PLUGIN_SO  := $(PLUGIN_SRC:examples/plugins/%.c=$(BUILD)/plugins/%.so) \
+              $(BUILD)/plugins/bad_abi.so $(BUILD)/plugins/failing_init.so $(BUILD)/plugins/no_init.so
+PLUGIN_CFLAGS := -std=c11 -D_GNU_SOURCE $(OPT) -g -fPIC -shared $(WARN) $(SANFLAGS) -I$(PLUGIN_INC)
+
+.PHONY: plugins
+all: plugins
+plugins: $(PLUGIN_SO)
+
+$(PLUGIN_INC)/generic/%.h: include/generic/%.h
+	@mkdir -p $(dir $@)
+	install -m 644 $< $@
+
+$(BUILD)/plugins/%.so: examples/plugins/%.c $(PLUGIN_HDR)
+	$(CC) $(PLUGIN_CFLAGS) -o $@ $< -lm
+
+$(BUILD)/plugins/bad_abi.so: tests/plugins/bad_module.c $(PLUGIN_HDR)
+	$(CC) $(PLUGIN_CFLAGS) -DBAD_ABI -o $@ $<
+
+$(BUILD)/plugins/failing_init.so: tests/plugins/bad_module.c $(PLUGIN_HDR)
+	$(CC) $(PLUGIN_CFLAGS) -DFAIL_INIT -o $@ $<
+
+$(BUILD)/plugins/no_init.so: tests/plugins/bad_module.c $(PLUGIN_HDR)
+	$(CC) $(PLUGIN_CFLAGS) -DNO_INIT -o $@ $<

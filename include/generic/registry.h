@@ -37,6 +37,10 @@ typedef struct GTypeInfo {
     const void *vtable;  /**< e.g. a GColorModelClass or GMaterialClass */
     GParseFn parse;      /**< NULL when the type cannot be read from text */
     const char *summary; /**< one line for listings and error messages */
+    /** Releases an object the parse routine made (when the library that owns it is destroyed). NULL takes the
+     * kind's default: material and node: gmaterial_unref; colormodel: gcolormodel_destroy; color:
+     * gcolorspec_destroy (reader.h); generator: its class's release (texture.h); other kinds: gmem_free. */
+    void (*destroy)(void *object);
 } GTypeInfo;
 
 /** Registers a type (the struct is copied, the strings and vtable must outlive the registry);

@@ -1,0 +1,38 @@
+/* gmat.h - the parts of the gmat material inspector (examples/gmat/). */
+#ifndef GMAT_H
+#define GMAT_H
+
+#include <generic/material.h>
+#include <generic/reader.h>
+
+/** Everything a subcommand needs: the loaded file, the material and a surface point facing +z. */
+typedef struct GmatContext {
+    GLibrary *lib;
+    const GColorModel *model;
+    GMaterial *material;
+    const char *material_name;
+    GScratch *scratch;
+    GColor white;  /**< the unit white light: rgb 1 1 1 as a light (D65, Y = 1) */
+    GColor result; /**< storage for one evaluation */
+} GmatContext;
+
+/** A direction from polar angles in degrees about +z (theta from the normal, phi from +x). */
+GVec3 gmat_direction(double theta_deg, double phi_deg);
+/** Light reflected towards out for the unit white light arriving from in (into ctx->result). */
+int gmat_reflect(GmatContext *ctx, GVec3 in, GVec3 out);
+/** The ideal specular part for light from in: its direction and reflected colour (into ctx->result); 0 when the
+ * material has no ideal reflection ray. */
+int gmat_specular(GmatContext *ctx, GVec3 in, GVec3 *dir);
+/** Directional-hemispherical reflectance for light from in, integrated over an n x 2n grid (midpoints in
+ * sin^2(theta) and phi, exact for a Lambertian surface) plus the ideal specular part: the reflected colour goes
+ * to `total` (storage of the model) and the luminance fractions to *y_total and *y_specular. */
+int gmat_albedo(GmatContext *ctx, GVec3 in, int n, GColor *total, double *y_total, double *y_specular);
+/** Prints a colour as linear sRGB and XYZ (read as a light), with its spectrum when spectrum != 0. */
+void gmat_print_color(const char *label, const GColor *c, int spectrum);
+/** Writes the polar plot of the BRDF in the plane of incidence of light from theta_in degrees. */
+int gmat_plot(GmatContext *ctx, double theta_in, int size, const char *path, GError *err);
+
+/** `gmat laser FILE MATERIAL ...` (laser.c): the laser experiment of Wilkie et al.; returns the exit status. */
+int gmat_laser(int argc, char **argv);
+
+#endif

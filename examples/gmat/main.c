@@ -1,0 +1,301 @@
+/* gmat - a material inspector built only on libgeneric's public API.
+ *
+ *   gmat eval   FILE MATERIAL --in THETA[,PHI] --out THETA[,PHI] [--spectrum]
+ *   gmat albedo FILE MATERIAL --in THETA [--samples N]
+ *   gmat plot   FILE MATERIAL --in THETA -o PLOT.png [--size PIXELS]
+ *   gmat list   FILE
+ * common options: --colormodel NAME [--step NM], --plugin MODULE.so (repeatable), --help */
+#include "gmat.h"
+
+#include <generic/plugin.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char convention[] =
+    "Convention: the surface is the xy plane with its normal along +z, seen from outside. Angles are in\n"
+    "degrees: THETA from the normal (0..90), PHI the azimuth from +x. The light is unit white light: rgb 1 1 1\n"
+    "as a light, i.e. CIE D65 with luminance Y = 1, arriving from the --in direction with irradiance 1 on a\n"
+    "plane perpendicular to it (so cos(THETA_in) on the surface). Printed colours are the reflected radiance\n"
+    "towards --out, f_r * cos(THETA_in) for a non-specular direction; when --out is the ideal mirror direction\n"
+    "of a material with a specular ray, the value is that ray's reflectance times the light (the radiance the\n"
+    "ray carries). Colours are linear sRGB (Rec.709, D65) and CIE 1931 XYZ, read as light.\n";
+
+static const char common[] = "Common options:\n"
+                             "  --colormodel NAME   compute in this colour model instead of the file's\n"
+                             "  --step NM           sample spacing for --colormodel (spectral models)\n"
+                             "  --plugin FILE.so    load a module before reading (repeatable)\n"
+                             "  --help              this text\n";
+
+static void usage_main(FILE *f)
+{
+    fprintf(f, "usage: gmat COMMAND FILE MATERIAL [options]\n\n"
+               "Commands:\n"
+               "  eval    reflected colour for one pair of directions\n"
+               "  albedo  directional-hemispherical reflectance (numeric integration)\n"
+               "  plot    polar plot of the reflection in the plane of incidence (PNG)\n"
+               "  list    the materials a file defines\n\n"
+               "`gmat COMMAND --help` describes each command.\n\n%s\n%s",
+            convention, common);
+}
+
+static void usage(const char *cmd, FILE *f)
+{
+    if (strcmp(cmd, "eval") == 0)
+        fprintf(f, "usage: gmat eval FILE MATERIAL --in THETA[,PHI] --out THETA[,PHI] [--spectrum] [options]\n\n"
+                   "Prints the light MATERIAL (a name defined in FILE) reflects towards --out.\n"
+                   "  --spectrum          also print the spectrum of the result\n\n%s\n%s",
+                convention, common);
+    else if (strcmp(cmd, "albedo") == 0)
+        fprintf(f, "usage: gmat albedo FILE MATERIAL --in THETA[,PHI] [--samples N] [options]\n\n"
+                   "Directional-hemispherical reflectance: the fraction of the light from --in reflected into\n"
+                   "the hemisphere, integrated numerically over N x 2N directions (midpoints in sin^2(theta)\n"
+                   "and phi, exact for Lambertian surfaces; default N = 256) plus the ideal specular ray.\n"
+                   "Printed as the luminance fraction and as the reflected colour.\n"
+                   "  --samples N         grid resolution (8..4096)\n\n%s\n%s",
+                convention, common);
+    else if (strcmp(cmd, "plot") == 0)
+        fprintf(f, "usage: gmat plot FILE MATERIAL --in THETA -o PLOT.png [--size PIXELS] [options]\n\n"
+                   "Writes a polar plot of the light reflected in the plane of incidence: the lobe's radius is\n"
+                   "the reflected luminance (largest = full radius, rings at 25%% steps), its colour the\n"
+                   "reflected colour normalised to full brightness. The light comes from the left (white\n"
+                   "line); an ideal specular ray is a line whose length is its reflectance.\n"
+                   "  -o FILE             output image (any format OpenImageIO writes; PNG is 8-bit sRGB)\n"
+                   "  --size PIXELS       width (64..8192, default 512; height is 3/4 of it)\n\n%s\n%s",
+                convention, common);
+    else if (strcmp(cmd, "list") == 0)
+        fprintf(f, "usage: gmat list FILE [options]\n\nLists the materials FILE defines, with their types.\n\n%s",
+                common);
+    else
+        usage_main(f);
+}
+
+static int fail(const char *cmd, const char *fmt, const char *arg)
+{
+    fprintf(stderr, "gmat%s%s: ", cmd ? " " : "", cmd ? cmd : "");
+    fprintf(stderr, fmt, arg);
+    fprintf(stderr, "\n(see gmat %s--help)\n", cmd ? cmd : "");
+    return 2;
+}
+
+static int number(const char *s, double lo, double hi, double *out)
+{
+    char *end;
+    double v = strtod(s, &end);
+    if (end == s || *end || !isfinite(v) || v < lo || v > hi)
+        return -1;
+    *out = v;
+    return 0;
+}
+
+/* THETA or THETA,PHI in degrees. */
+static int angles(const char *s, double tmax, double *theta, double *phi)
+{
+    char buf[64];
+    snprintf(buf, sizeof buf, "%s", s);
+    char *comma = strchr(buf, ',');
+    *phi = 0.0;
+    if (comma) {
+        *comma = '\0';
+        if (number(comma + 1, -360.0, 360.0, phi))
+            return -1;
+    }
+    return number(buf, 0.0, tmax, theta);
+}
+
+typedef struct Args {
+    const char *cmd, *file, *material, *colormodel, *output;
+    double step, in_t, in_p, out_t, out_p;
+    int have_in, have_out, spectrum, samples, size;
+} Args;
+
+static int parse_args(int argc, char **argv, Args *a)
+{
+    const char *cmd = a->cmd;
+    int pos = 0;
+    for (int i = 2; i < argc; i++) {
+        const char *o = argv[i];
+        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (strcmp(o, "--help") == 0 || strcmp(o, "-h") == 0) {
+            usage(cmd, stdout);
+            exit(0);
+        } else if (strcmp(o, "--spectrum") == 0) {
+            a->spectrum = 1;
+        } else if (o[0] == '-' && o[1] && !v) {
+            return fail(cmd, "option %s needs a value", o);
+        } else if (strcmp(o, "--in") == 0) {
+            if (angles(v, 89.9, &a->in_t, &a->in_p))
+                return fail(cmd, "--in: '%s' is not THETA[,PHI] with 0 <= THETA < 90 degrees", v);
+            a->have_in = 1, i++;
+        } else if (strcmp(o, "--out") == 0) {
+            if (angles(v, 90.0, &a->out_t, &a->out_p))
+                return fail(cmd, "--out: '%s' is not THETA[,PHI] with 0 <= THETA <= 90 degrees", v);
+            a->have_out = 1, i++;
+        } else if (strcmp(o, "--colormodel") == 0) {
+            a->colormodel = v, i++;
+        } else if (strcmp(o, "--step") == 0) {
+            if (number(v, 0.1, 400.0, &a->step))
+                return fail(cmd, "--step: '%s' is not a spacing in nm (0.1..400)", v);
+            i++;
+        } else if (strcmp(o, "--plugin") == 0) {
+            GError err;
+            if (gplugin_load(v, &err) != G_OK) {
+                fprintf(stderr, "gmat: %s\n", err.message);
+                return 1;
+            }
+            i++;
+        } else if (strcmp(o, "--samples") == 0) {
+            double n;
+            if (number(v, 8, 4096, &n) || n != floor(n))
+                return fail(cmd, "--samples: '%s' is not a whole number in 8..4096", v);
+            a->samples = (int)n, i++;
+        } else if (strcmp(o, "--size") == 0) {
+            double n;
+            if (number(v, 64, 8192, &n) || n != floor(n))
+                return fail(cmd, "--size: '%s' is not a whole number in 64..8192", v);
+            a->size = (int)n, i++;
+        } else if (strcmp(o, "-o") == 0 || strcmp(o, "--output") == 0) {
+            a->output = v, i++;
+        } else if (o[0] == '-' && o[1]) {
+            return fail(cmd, "unknown option %s", o);
+        } else if (pos == 0) {
+            a->file = o, pos++;
+        } else if (pos == 1 && strcmp(cmd, "list") != 0) {
+            a->material = o, pos++;
+        } else {
+            return fail(cmd, "unexpected argument '%s'", o);
+        }
+    }
+    if (!a->file)
+        return fail(cmd, "%s", "no FILE given");
+    if (strcmp(cmd, "list") == 0)
+        return 0;
+    if (!a->material)
+        return fail(cmd, "%s", "no MATERIAL given");
+    if (!a->have_in)
+        return fail(cmd, "%s", "--in THETA is required");
+    if (strcmp(cmd, "eval") == 0 && !a->have_out)
+        return fail(cmd, "%s", "--out THETA[,PHI] is required");
+    if (strcmp(cmd, "plot") == 0 && !a->output)
+        return fail(cmd, "%s", "-o PLOT.png is required");
+    return 0;
+}
+
+static int list(GLibrary *lib)
+{
+    printf("colour model: %s\n", gcolormodel_name(glibrary_colormodel(lib)));
+    for (int k = GKIND_MATERIAL; k <= GKIND_NODE; k++)
+        for (int i = 0; i < glibrary_count(lib, (GKind)k); i++) {
+            const char *name;
+            const GTypeInfo *t;
+            glibrary_entry(lib, (GKind)k, i, &name, &t);
+            printf("%-10s %-24s %s%s%s\n", gkind_name((GKind)k), name ? name : "(anonymous)", t->name,
+                   t->summary ? " - " : "", t->summary ? t->summary : "");
+        }
+    return 0;
+}
+
+static int run(const Args *a, GmatContext *ctx)
+{
+    if (strcmp(a->cmd, "eval") == 0) {
+        GVec3 in = gmat_direction(a->in_t, a->in_p), out = gmat_direction(a->out_t, a->out_p);
+        int rc = gmat_reflect(ctx, in, out);
+        if (rc != G_OK) {
+            fprintf(stderr, "gmat eval: the material failed (%s)\n", gstatus_string(rc));
+            return 1;
+        }
+        printf("material %s (%s), colour model %s\n", ctx->material_name, gmaterial_name(ctx->material),
+               gcolormodel_name(ctx->model));
+        printf("in  theta %g phi %g, out theta %g phi %g\n", a->in_t, a->in_p, a->out_t, a->out_p);
+        gmat_print_color("reflected", &ctx->result, a->spectrum);
+        return 0;
+    }
+    if (strcmp(a->cmd, "albedo") == 0) {
+        GColor total = {0};
+        if (gcolor_alloc(&total, ctx->model) != G_OK)
+            return 1;
+        double y = 0, ys = 0;
+        int rc = gmat_albedo(ctx, gmat_direction(a->in_t, a->in_p), a->samples ? a->samples : 256, &total, &y, &ys);
+        if (rc == G_OK) {
+            printf("material %s (%s), colour model %s, in theta %g phi %g\n", ctx->material_name,
+                   gmaterial_name(ctx->material), gcolormodel_name(ctx->model), a->in_t, a->in_p);
+            printf("albedo Y     %.6f\n", y);
+            printf("specular Y   %.6f\n", ys);
+            gmat_print_color("albedo", &total, a->spectrum);
+        } else {
+            fprintf(stderr, "gmat albedo: the material failed (%s)\n", gstatus_string(rc));
+        }
+        gcolor_free(&total);
+        return rc == G_OK ? 0 : 1;
+    }
+    GError err;
+    if (gmat_plot(ctx, a->in_t, a->size ? a->size : 512, a->output, &err) != G_OK) {
+        fprintf(stderr, "gmat plot: %s\n", err.message);
+        return 1;
+    }
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "help") == 0) {
+        usage_main(argc < 2 ? stderr : stdout);
+        return argc < 2 ? 2 : 0;
+    }
+    if (strcmp(argv[1], "laser") == 0) /* laser.c parses its own options */
+        return gmat_laser(argc, argv);
+    if (strcmp(argv[1], "swatch") == 0) { extern int gmat_swatch(int argc, char **argv); return gmat_swatch(argc, argv); }
+    Args a = {.cmd = argv[1]};
+    if (strcmp(a.cmd, "eval") && strcmp(a.cmd, "albedo") && strcmp(a.cmd, "plot") && strcmp(a.cmd, "list"))
+        return fail(NULL, "unknown command '%s' (expected eval, albedo, plot or list)", a.cmd);
+    int rc = parse_args(argc, argv, &a);
+    if (rc != 0)
+        return rc;
+    GColorModelOptions mo = {.step_nm = a.step};
+    GReaderOptions opt = {.colormodel = a.colormodel, .colormodel_options = &mo};
+    GmatContext ctx = {0};
+    GError err;
+    if (greader_load_file(a.file, &opt, &ctx.lib, &err) != G_OK) {
+        fprintf(stderr, "gmat: %s\n", err.message);
+        return 1;
+    }
+    ctx.model = glibrary_colormodel(ctx.lib);
+    if (strcmp(a.cmd, "list") == 0) {
+        rc = list(ctx.lib);
+        glibrary_destroy(ctx.lib);
+        return rc;
+    }
+    ctx.material_name = a.material;
+    ctx.material = glibrary_material(ctx.lib, a.material);
+    if (!ctx.material) {
+        char names[1024] = "";
+        size_t used = 0;
+        for (int k = GKIND_MATERIAL; k <= GKIND_NODE; k++)
+            for (int i = 0; i < glibrary_count(ctx.lib, (GKind)k) && used + 1 < sizeof names; i++) {
+                const char *n;
+                glibrary_entry(ctx.lib, (GKind)k, i, &n, NULL);
+                if (n)
+                    used += (size_t)snprintf(names + used, sizeof names - used, "%s%s", used ? ", " : "", n);
+            }
+        fprintf(stderr, "gmat: %s defines no material named '%s' (it defines: %s)\n", a.file, a.material,
+                used ? names : "none");
+        glibrary_destroy(ctx.lib);
+        return 1;
+    }
+    double one[3] = {1, 1, 1};
+    ctx.scratch = gscratch_create(0);
+    if (!ctx.scratch || gcolor_alloc(&ctx.white, ctx.model) != G_OK || gcolor_alloc(&ctx.result, ctx.model) != G_OK ||
+        gcolor_from_rgb(&ctx.white, one, GCOLOR_LIGHT) != G_OK) {
+        fprintf(stderr, "gmat: out of memory\n");
+        rc = 1;
+    } else {
+        rc = run(&a, &ctx);
+    }
+    gcolor_free(&ctx.white);
+    gcolor_free(&ctx.result);
+    gscratch_destroy(ctx.scratch);
+    glibrary_destroy(ctx.lib);
+    return rc;
+}

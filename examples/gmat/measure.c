@@ -1,0 +1,118 @@
+/* measure.c - gmat's measurements: one reflection, the ideal specular ray, the directional-hemispherical
+ * reflectance by numeric integration, and printing colours. */
+#include "gmat.h"
+
+#include <math.h>
+#include <stdio.h>
+
+GVec3 gmat_direction(double theta_deg, double phi_deg)
+{
+    double t = theta_deg * M_PI / 180.0, p = phi_deg * M_PI / 180.0;
+    return gvec3(sin(t) * cos(p), sin(t) * sin(p), cos(t));
+}
+
+/* A fresh surface point at the origin of the xy plane, normal +z, seen from outside. */
+static void point(GmatContext *ctx, GSurfPoint *sp)
+{
+    gsurfpoint_init(sp, ctx->model, ctx->scratch);
+    sp->geometric_normal = gvec3(0, 0, 1);
+    sp->dpdu = gvec3(1, 0, 0);
+    sp->dpdv = gvec3(0, 1, 0);
+    sp->u = sp->v = 0.5;
+    sp->entering = 1;
+    sp->material = ctx->material;
+    sp->to = ctx->material;
+}
+
+int gmat_reflect(GmatContext *ctx, GVec3 in, GVec3 out)
+{
+    GSurfPoint sp;
+    point(ctx, &sp);
+    GScratchMark mark = gscratch_mark(ctx->scratch);
+    int rc = gmaterial_reflection(ctx->material, &sp, in, &ctx->white, out, &ctx->result);
+    gscratch_release(ctx->scratch, mark);
+    return rc;
+}
+
+int gmat_specular(GmatContext *ctx, GVec3 in, GVec3 *dir)
+{
+    GSurfPoint sp;
+    point(ctx, &sp);
+    if (gmaterial_reflection_dir(ctx->material, &sp, gvec3_neg(in), dir) != 1)
+        return 0;
+    if (dir->z <= 0.0)
+        return 0;
+    GScratchMark mark = gscratch_mark(ctx->scratch);
+    int rc = gmaterial_reflection(ctx->material, &sp, in, &ctx->white, *dir, &ctx->result);
+    gscratch_release(ctx->scratch, mark);
+    return rc == G_OK ? 1 : rc;
+}
+
+int gmat_albedo(GmatContext *ctx, GVec3 in, int n, GColor *total, double *y_total, double *y_specular)
+{
+    /* rho = 1/cos(theta_in) * integral of reflection(in, out) cos(theta_out) d(omega); with
+     * u = sin^2(theta_out): cos(theta) d(omega) = 1/2 du dphi over [0,1] x [0, 2 pi]. */
+    gcolor_black(total);
+    double cin = in.z, xyz[3];
+    double w = 0.5 * (1.0 / n) * (2.0 * M_PI / (2 * n)) / cin;
+    /* colours hold floats: sum each ring of directions on its own, then the rings, to keep rounding small */
+    GColor ring = {0};
+    if (gcolor_alloc(&ring, ctx->model) != G_OK)
+        return G_ERR_NOMEM;
+    int rc = G_OK;
+    for (int i = 0; i < n && rc == G_OK; i++) {
+        double u = (i + 0.5) / n, st = sqrt(u), ct = sqrt(1.0 - u);
+        gcolor_black(&ring);
+        for (int j = 0; j < 2 * n && rc == G_OK; j++) {
+            double p = (j + 0.5) * 2.0 * M_PI / (2 * n);
+            rc = gmat_reflect(ctx, in, gvec3(st * cos(p), st * sin(p), ct));
+            if (rc == G_OK)
+                rc = gcolor_add_scaled(&ring, &ctx->result, w);
+        }
+        if (rc == G_OK)
+            rc = gcolor_add(total, total, &ring);
+    }
+    gcolor_free(&ring);
+    if (rc != G_OK)
+        return rc;
+    *y_specular = 0.0;
+    GVec3 dir;
+    int spec = gmat_specular(ctx, in, &dir);
+    if (spec < 0)
+        return spec;
+    if (spec == 1) { /* the aligned case returns the specular reflectance times the light: no cosines */
+        gcolor_to_xyz(&ctx->result, GCOLOR_LIGHT, xyz);
+        *y_specular = xyz[1];
+        int rc = gcolor_add(total, total, &ctx->result);
+        if (rc != G_OK)
+            return rc;
+    }
+    gcolor_to_xyz(total, GCOLOR_LIGHT, xyz);
+    *y_total = xyz[1];
+    return G_OK;
+}
+
+void gmat_print_color(const char *label, const GColor *c, int spectrum)
+{
+    double xyz[3], rgb[3];
+    gcolor_to_xyz(c, GCOLOR_LIGHT, xyz);
+    gcie_xyz_to_rgb(xyz, rgb);
+    printf("%s linear sRGB  %.6f %.6f %.6f\n", label, rgb[0], rgb[1], rgb[2]);
+    printf("%s XYZ          %.6f %.6f %.6f\n", label, xyz[0], xyz[1], xyz[2]);
+    if (!spectrum)
+        return;
+    GSpectrumNM s;
+    if (gcolor_to_nm(c, GCOLOR_LIGHT, &s) != G_OK) {
+        printf("%s spectrum     (not available in model %s)\n", label, gcolormodel_name(c->model));
+        return;
+    }
+    const GColorModel *m = c->model;
+    int native = m->nsamples > 0 && m->lambda_step >= 1.0;
+    double start = native ? m->lambda_min : GNM_MIN, step = native ? m->lambda_step : 10.0;
+    printf("%s spectrum     (nm, value per nm%s)\n", label, native ? ", the model's samples" : ", every 10 nm");
+    for (double nm = start; nm <= GNM_MAX + 1e-9; nm += step) {
+        int i = (int)lround(nm) - GNM_MIN;
+        if (i >= 0 && i < GNM_COUNT)
+            printf("  %6.1f %.6g\n", nm, s.v[i]);
+    }
+}

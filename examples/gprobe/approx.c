@@ -1,0 +1,262 @@
+/* approx.c - `gprobe approx` (lights as text-format entries), `gprobe irradiance` and `gprobe convert`. */
+#include "gprobe.h"
+
+#include <generic/memory.h>
+
+#include <math.h>
+#include <string.h>
+
+static void approx_usage(FILE *f)
+{
+    fprintf(f,
+            "usage: gprobe approx --probe FILE --technique T -n N -o LIGHTS.txt [--fit-normals N]\n"
+            "Approximates the probe by N directional lights and writes them as text-format entries\n"
+            "    light directional { direction DX DY DZ irradiance rgb R G B }\n"
+            "(gtrace's directional light: `direction` is the way the light travels, i.e. from the light\n"
+            "towards the scene, and the colour is the irradiance on a surface facing the light, in linear\n"
+            "Rec.709 RGB as the probe's pixels). Lights that carry no energy are left out. The file's\n"
+            "header states the technique and the irradiance error of the lights.\n"
+            "%s"
+            "  --technique T     mediancut (N a power of two), adaptive, kmeans or irradiance\n"
+            "  -n N              number of lights (1..4096)\n"
+            "  -o FILE           output text file (written whole or not at all)\n"
+            "  --fit-normals N   normals the irradiance optimisation fits (default 2000)\n"
+            "  -h, --help        this text\n",
+            probe_args_help);
+}
+
+int cmd_approx(int argc, char **argv)
+{
+    ProbeArgs pa = {0};
+    const char *out = NULL, *tech = NULL, *v;
+    int n = 0, fit = 0;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        int r = probe_args_parse(&pa, argc, argv, &i);
+        if (r < 0)
+            return 2;
+        if (r > 0)
+            continue;
+        if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
+            approx_usage(stdout);
+            return 0;
+        }
+        if (!(v = option_value(argc, argv, &i)))
+            return 2;
+        if (strcmp(a, "--technique") == 0 || strcmp(a, "-t") == 0)
+            tech = v;
+        else if (strcmp(a, "-n") == 0 || strcmp(a, "--lights") == 0) {
+            if (parse_int(a, v, 1, 4096, &n) != 0)
+                return 2;
+        } else if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0)
+            out = v;
+        else if (strcmp(a, "--fit-normals") == 0) {
+            if (parse_int(a, v, 2, 1000000, &fit) != 0)
+                return 2;
+        } else {
+            fprintf(stderr, "gprobe approx: unknown option '%s' (gprobe approx --help lists them)\n", a);
+            return 2;
+        }
+    }
+    if (!tech || n <= 0 || !out) {
+        fprintf(stderr, "gprobe approx: --technique, -n and -o are required (gprobe approx --help)\n");
+        return 2;
+    }
+    GError err;
+    GProbeTechnique t;
+    if (gprobe_technique_parse(tech, &t, &err) != G_OK) {
+        fprintf(stderr, "gprobe: %s\n", err.message);
+        return 2;
+    }
+    if (t == GPROBE_MEDIANCUT && (n & (n - 1)) != 0) {
+        fprintf(stderr, "gprobe: median cut makes a power of two of lights, not %d (use adaptive for any count)\n", n);
+        return 2;
+    }
+    GProbe *p = probe_args_load(&pa);
+    if (!p)
+        return 1;
+    int status = 1;
+    const int m = 20000;
+    GProbeLight *lights = gmem_calloc((size_t)n, sizeof *lights);
+    GVec3 *normals = gmem_calloc(m, sizeof *normals);
+    double *truth = gmem_calloc((size_t)m * 3, sizeof(double)), *approx = gmem_calloc((size_t)m * 3, sizeof(double));
+    if (!lights || !normals || !truth || !approx) {
+        fprintf(stderr, "gprobe: out of memory\n");
+        goto done;
+    }
+    GProbeOptions opt = {0};
+    opt.fit_normals = fit;
+    if (!pa.quiet)
+        opt.progress = progress_print;
+    double t0 = now_seconds();
+    if (gprobe_approximate(p, t, n, &opt, lights, &err) != G_OK) {
+        fprintf(stderr, "\ngprobe: %s\n", err.message);
+        goto done;
+    }
+    double dt = now_seconds() - t0;
+    gprobe_fibonacci(m, normals);
+    if (gprobe_irradiance(p, normals, m, truth, &err) != G_OK) {
+        fprintf(stderr, "gprobe: %s\n", err.message);
+        goto done;
+    }
+    gprobe_lights_irradiance(lights, n, normals, m, approx);
+    GProbeErrors e;
+    gprobe_compare(truth, approx, m, &e);
+    int kept = 0;
+    for (int i = 0; i < n; i++)
+        kept += lights[i].rgb[0] > 0.0 || lights[i].rgb[1] > 0.0 || lights[i].rgb[2] > 0.0;
+
+    TextOut to;
+    if (text_open(&to, out) != 0)
+        goto done;
+    fprintf(to.f,
+            "# %d directional lights approximating the light probe %s (%dx%d)\n"
+            "# technique %s; irradiance error at %d normals: mean %.3f%%, max %.3f%% of the true irradiance,\n"
+            "# mean %.4f%% of the largest irradiance.\n"
+            "# Probe frame: z is up (the probe's zenith%s). `direction` is the way the light travels;\n"
+            "# the colour is the irradiance on a surface facing the light (linear Rec.709 RGB).\n",
+            kept, pa.path, gprobe_width(p), gprobe_height(p), tech, m, e.mean_rel, e.max_rel, e.mean_norm,
+            pa.rotate ? ", after --rotate" : "");
+    if (kept < n)
+        fprintf(to.f, "# %d of the %d lights carry no energy and are left out.\n", n - kept, n);
+    for (int i = 0; i < n; i++) {
+        const GProbeLight *l = &lights[i];
+        if (!(l->rgb[0] > 0.0 || l->rgb[1] > 0.0 || l->rgb[2] > 0.0))
+            continue;
+        fprintf(to.f, "light directional { direction %.9g %.9g %.9g irradiance rgb %.9g %.9g %.9g }\n", -l->dir.x,
+                -l->dir.y, -l->dir.z, l->rgb[0], l->rgb[1], l->rgb[2]);
+    }
+    if (text_close(&to, 1) != 0)
+        goto done;
+    if (!pa.quiet)
+        fprintf(stderr, "%sgprobe: %s: %d lights (%s) in %.2f s; irradiance error mean %.3f%%, max %.3f%%\n",
+                opt.progress ? "\r" : "", out, kept, tech, dt, e.mean_rel, e.max_rel);
+    status = 0;
+done:
+    gmem_free(lights);
+    gmem_free(normals);
+    gmem_free(truth);
+    gmem_free(approx);
+    gprobe_destroy(p);
+    return status;
+}
+
+int cmd_irradiance(int argc, char **argv)
+{
+    ProbeArgs pa = {0};
+    double n[3];
+    int have = 0;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i], *v;
+        int r = probe_args_parse(&pa, argc, argv, &i);
+        if (r < 0)
+            return 2;
+        if (r > 0)
+            continue;
+        if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
+            printf("usage: gprobe irradiance --probe FILE --normal X,Y,Z\n"
+                   "Prints the ground-truth irradiance R G B (every pixel of the probe summed, the paper's Eq. 4)\n"
+                   "on a surface with the given normal (normalised; z is up).\n%s"
+                   "  --normal X,Y,Z    the surface normal\n"
+                   "  -h, --help        this text\n",
+                   probe_args_help);
+            return 0;
+        }
+        if (strcmp(a, "--normal") == 0) {
+            if (!(v = option_value(argc, argv, &i)) || parse_vec3(a, v, n) != 0)
+                return 2;
+            have = 1;
+        } else {
+            fprintf(stderr, "gprobe irradiance: unknown option '%s' (gprobe irradiance --help lists them)\n", a);
+            return 2;
+        }
+    }
+    if (!have) {
+        fprintf(stderr, "gprobe irradiance: --normal X,Y,Z is required\n");
+        return 2;
+    }
+    GVec3 nv = gvec3(n[0], n[1], n[2]);
+    if (!(gvec3_length(nv) > 0.0)) {
+        fprintf(stderr, "gprobe irradiance: the normal must not be zero\n");
+        return 2;
+    }
+    nv = gvec3_normalize(nv);
+    GProbe *p = probe_args_load(&pa);
+    if (!p)
+        return 1;
+    double E[3];
+    GError err;
+    int rc = gprobe_irradiance(p, &nv, 1, E, &err);
+    if (rc == G_OK)
+        printf("%.9g %.9g %.9g\n", E[0], E[1], E[2]);
+    else
+        fprintf(stderr, "gprobe: %s\n", err.message);
+    gprobe_destroy(p);
+    return rc == G_OK ? 0 : 1;
+}
+
+int cmd_convert(int argc, char **argv)
+{
+    ProbeArgs pa = {0};
+    const char *out = NULL;
+    GProbeFormat to = GPROBE_LATLONG;
+    int size = 0;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i], *v;
+        int r = probe_args_parse(&pa, argc, argv, &i);
+        if (r < 0)
+            return 2;
+        if (r > 0)
+            continue;
+        if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
+            printf("usage: gprobe convert --probe FILE [--to latlong|angular] [--size N] -o OUT\n"
+                   "Writes the probe (after --rotate) as a latitude-longitude image or an angular map; the output's\n"
+                   "extension picks the format (.exr/.hdr linear float; .png/.jpg sRGB encoded, clamped).\n%s"
+                   "  --to F            latlong (default) or angular\n"
+                   "  --size N          angular map size in pixels (default: the probe's height)\n"
+                   "  -o OUT            output image\n"
+                   "  -h, --help        this text\n",
+                   probe_args_help);
+            return 0;
+        }
+        if (!(v = option_value(argc, argv, &i)))
+            return 2;
+        if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0)
+            out = v;
+        else if (strcmp(a, "--to") == 0) {
+            if (strcmp(v, "latlong") == 0)
+                to = GPROBE_LATLONG;
+            else if (strcmp(v, "angular") == 0)
+                to = GPROBE_ANGULAR;
+            else {
+                fprintf(stderr, "gprobe convert: --to expects latlong or angular, got '%s'\n", v);
+                return 2;
+            }
+        } else if (strcmp(a, "--size") == 0) {
+            if (parse_int(a, v, 2, 32768, &size) != 0)
+                return 2;
+        } else {
+            fprintf(stderr, "gprobe convert: unknown option '%s' (gprobe convert --help lists them)\n", a);
+            return 2;
+        }
+    }
+    if (!out) {
+        fprintf(stderr, "gprobe convert: -o OUT is required\n");
+        return 2;
+    }
+    GProbe *p = probe_args_load(&pa);
+    if (!p)
+        return 1;
+    GError err;
+    GImage img;
+    int rc = to == GPROBE_ANGULAR ? gprobe_to_angular(p, size ? size : gprobe_height(p), &img, &err)
+                                  : gprobe_to_image(p, &img, &err);
+    if (rc == G_OK) {
+        rc = gimage_write(out, &img, NULL, &err);
+        gimage_free(&img);
+    }
+    if (rc != G_OK)
+        fprintf(stderr, "gprobe: %s\n", err.message);
+    gprobe_destroy(p);
+    return rc == G_OK ? 0 : 1;
+}

@@ -1,0 +1,60 @@
+/* gprobe.h - the gprobe tool's shared pieces: options common to every command, probe loading, output. */
+#ifndef GPROBE_TOOL_H
+#define GPROBE_TOOL_H
+
+#include <generic/probe.h>
+
+#include <stdio.h>
+
+/** Options every command that reads a probe understands. */
+typedef struct ProbeArgs {
+    const char *path;    /* --probe */
+    GProbeFormat format; /* --format */
+    double rot[3];       /* --rotate X,Y,Z in degrees */
+    int rotate;          /* --rotate given */
+    int quiet;           /* -q */
+} ProbeArgs;
+
+/** Handles --probe, --format, --rotate and -q at argv[*i] (consuming the value); 1 when handled, 0 when the
+ * option is not one of them, -1 on a bad value (message printed). */
+int probe_args_parse(ProbeArgs *a, int argc, char **argv, int *i);
+/** The help lines for those options. */
+extern const char probe_args_help[];
+/** Loads (and rotates) the probe; prints the error or the clamping warning. NULL on failure. */
+GProbe *probe_args_load(const ProbeArgs *a);
+
+/** Parses a whole number in [lo, hi] for option opt; -1 with a message when it is not one. */
+int parse_int(const char *opt, const char *s, long lo, long hi, int *out);
+/** Parses "x,y,z"; -1 with a message when malformed. */
+int parse_vec3(const char *opt, const char *s, double v[3]);
+/** Fetches the value of option argv[*i]; NULL with a message when missing. */
+const char *option_value(int argc, char **argv, int *i);
+
+/** Seconds on a monotonic clock. */
+double now_seconds(void);
+
+/** A text file written to a temporary next to `path` and renamed into place by text_close. */
+typedef struct TextOut {
+    FILE *f;
+    char *path, *tmp;
+} TextOut;
+/** Opens the temporary; -1 with a message on failure. */
+int text_open(TextOut *t, const char *path);
+/** Closes and renames (ok != 0) or removes (ok == 0) the temporary; -1 with a message when the write failed. */
+int text_close(TextOut *t, int ok);
+
+/** Progress reporter for the library's callback: a percentage on stderr when it is a terminal. */
+void progress_print(void *user, const char *stage, double fraction);
+
+/* the commands: each returns the process exit status */
+int cmd_eval(int argc, char **argv);
+int cmd_approx(int argc, char **argv);
+int cmd_irradiance(int argc, char **argv);
+int cmd_convert(int argc, char **argv);
+
+/** Draws the Fig. 6 plot of a CSV written by eval into png with gnuplot; -1 with a message on failure. */
+int plot_errors(const char *csv, const char *png, const char *title);
+/** 0 when a gnuplot executable is on PATH, -1 with a clear message when not. */
+int plot_check_gnuplot(void);
+
+#endif

@@ -1,0 +1,227 @@
+/* gprobe - turns an HDR light probe into N directional lights and evaluates how well each technique does
+ * (after Madsen & Laursen, "A Comparison of Techniques for Approximating Full Image-Based Lighting").
+ * main.c: the command dispatch and the pieces every command shares. */
+#include "gprobe.h"
+
+#include <generic/memory.h>
+
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+static void usage(FILE *f)
+{
+    fprintf(f,
+            "usage: gprobe COMMAND [options]     (gprobe COMMAND --help for its options)\n"
+            "Approximates an HDR light probe by N directional lights and compares the techniques by the\n"
+            "irradiance they give, as in Madsen & Laursen's evaluation (their Fig. 6).\n"
+            "commands:\n"
+            "  eval        error of every technique and light count against the ground truth: table, CSV, plot\n"
+            "  approx      write the lights of one technique as text-format entries (gtrace reads them)\n"
+            "  irradiance  print the ground-truth irradiance (RGB) for one normal\n"
+            "  convert     write the probe as a lat-long or angular map (after --rotate)\n"
+            "Directions: z is up; a probe's lat-long row 0 is the zenith and phi grows to the right from +x\n"
+            "towards +y (see include/generic/probe.h).\n");
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "--help") == 0) {
+        usage(argc < 2 ? stderr : stdout);
+        return argc < 2 ? 2 : 0;
+    }
+    const char *cmd = argv[1];
+    if (strcmp(cmd, "eval") == 0)
+        return cmd_eval(argc - 1, argv + 1);
+    if (strcmp(cmd, "approx") == 0)
+        return cmd_approx(argc - 1, argv + 1);
+    if (strcmp(cmd, "irradiance") == 0)
+        return cmd_irradiance(argc - 1, argv + 1);
+    if (strcmp(cmd, "convert") == 0)
+        return cmd_convert(argc - 1, argv + 1);
+    fprintf(stderr, "gprobe: unknown command '%s' (expected eval, approx, irradiance or convert)\n", cmd);
+    return 2;
+}
+
+/* ---- shared pieces ---- */
+
+const char probe_args_help[] =
+    "  --probe FILE      the light probe (EXR, HDR, PFM, TIFF, ...: anything OpenImageIO reads)\n"
+    "  --format F        auto (default: 2:1 is lat-long, square is an angular map), latlong, angular\n"
+    "  --rotate X,Y,Z    turn the environment by these angles in degrees about x, then y, then z\n"
+    "                    (e.g. --rotate -90,0,0 makes the probe's zenith +y for a y-up scene)\n"
+    "  -q, --quiet       no progress and no warnings\n";
+
+double now_seconds(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+const char *option_value(int argc, char **argv, int *i)
+{
+    if (*i + 1 >= argc) {
+        fprintf(stderr, "gprobe: %s needs a value\n", argv[*i]);
+        return NULL;
+    }
+    return argv[++*i];
+}
+
+int parse_int(const char *opt, const char *s, long lo, long hi, int *out)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(s, &end, 10);
+    if (errno || end == s || *end || v < lo || v > hi) {
+        fprintf(stderr, "gprobe: %s expects a whole number in [%ld, %ld], got '%s'\n", opt, lo, hi, s);
+        return -1;
+    }
+    *out = (int)v;
+    return 0;
+}
+
+int parse_vec3(const char *opt, const char *s, double v[3])
+{
+    const char *p = s;
+    for (int k = 0; k < 3; k++) {
+        char *end;
+        errno = 0;
+        v[k] = strtod(p, &end);
+        if (errno || end == p || !isfinite(v[k]) || (k < 2 && *end != ',') || (k == 2 && *end)) {
+            fprintf(stderr, "gprobe: %s expects three numbers X,Y,Z, got '%s'\n", opt, s);
+            return -1;
+        }
+        p = end + 1;
+    }
+    return 0;
+}
+
+int probe_args_parse(ProbeArgs *a, int argc, char **argv, int *i)
+{
+    const char *o = argv[*i], *v;
+    if (strcmp(o, "-q") == 0 || strcmp(o, "--quiet") == 0) {
+        a->quiet = 1;
+        return 1;
+    }
+    if (strcmp(o, "--probe") == 0) {
+        if (!(v = option_value(argc, argv, i)))
+            return -1;
+        a->path = v;
+        return 1;
+    }
+    if (strcmp(o, "--format") == 0) {
+        if (!(v = option_value(argc, argv, i)))
+            return -1;
+        if (strcmp(v, "auto") == 0)
+            a->format = GPROBE_AUTO;
+        else if (strcmp(v, "latlong") == 0)
+            a->format = GPROBE_LATLONG;
+        else if (strcmp(v, "angular") == 0)
+            a->format = GPROBE_ANGULAR;
+        else {
+            fprintf(stderr, "gprobe: --format expects auto, latlong or angular, got '%s'\n", v);
+            return -1;
+        }
+        return 1;
+    }
+    if (strcmp(o, "--rotate") == 0) {
+        if (!(v = option_value(argc, argv, i)) || parse_vec3("--rotate", v, a->rot) != 0)
+            return -1;
+        a->rotate = 1;
+        return 1;
+    }
+    return 0;
+}
+
+GProbe *probe_args_load(const ProbeArgs *a)
+{
+    if (!a->path) {
+        fprintf(stderr, "gprobe: no probe given (--probe FILE)\n");
+        return NULL;
+    }
+    GError err;
+    GProbe *p = NULL;
+    if (gprobe_load(a->path, a->format, 0, &p, &err) != G_OK) {
+        fprintf(stderr, "gprobe: %s\n", err.message);
+        return NULL;
+    }
+    if (gprobe_clamped_count(p) > 0 && !a->quiet)
+        fprintf(stderr, "gprobe: warning: %s: %ld pixels had negative, NaN or infinite values, set to 0\n", a->path,
+                gprobe_clamped_count(p));
+    if (a->rotate) {
+        double R[9];
+        gprobe_rotation_xyz(a->rot[0], a->rot[1], a->rot[2], R);
+        GProbe *r = NULL;
+        if (gprobe_rotate(p, R, &r, &err) != G_OK) {
+            fprintf(stderr, "gprobe: %s\n", err.message);
+            gprobe_destroy(p);
+            return NULL;
+        }
+        gprobe_destroy(p);
+        p = r;
+    }
+    return p;
+}
+
+int text_open(TextOut *t, const char *path)
+{
+    memset(t, 0, sizeof *t);
+    size_t n = strlen(path);
+    t->path = gmem_strdup(path);
+    t->tmp = gmem_alloc(n + 16);
+    if (!t->path || !t->tmp) {
+        gmem_free(t->path);
+        gmem_free(t->tmp);
+        fprintf(stderr, "gprobe: out of memory\n");
+        return -1;
+    }
+    snprintf(t->tmp, n + 16, "%s.tmpXXXXXX", path);
+    int fd = mkstemp(t->tmp);
+    if (fd < 0 || !(t->f = fdopen(fd, "w"))) {
+        fprintf(stderr, "gprobe: cannot write %s: %s\n", path, strerror(errno));
+        if (fd >= 0) {
+            close(fd);
+            unlink(t->tmp);
+        }
+        gmem_free(t->path);
+        gmem_free(t->tmp);
+        return -1;
+    }
+    mode_t mask = umask(0); /* single-threaded here: read the umask for the final file's mode */
+    umask(mask);
+    fchmod(fd, 0666 & ~mask);
+    return 0;
+}
+
+int text_close(TextOut *t, int ok)
+{
+    int rc = 0;
+    if (ferror(t->f))
+        ok = 0, rc = -1;
+    if (fclose(t->f) != 0)
+        ok = 0, rc = -1;
+    if (ok && rename(t->tmp, t->path) != 0)
+        ok = 0, rc = -1;
+    if (rc != 0)
+        fprintf(stderr, "gprobe: cannot write %s: %s\n", t->path, strerror(errno));
+    if (!ok)
+        unlink(t->tmp);
+    gmem_free(t->path);
+    gmem_free(t->tmp);
+    return rc;
+}
+
+void progress_print(void *user, const char *stage, double fraction)
+{
+    (void)user;
+    static int tty = -1;
+    if (tty < 0)
+        tty = isatty(2);
+    if (tty)
+        fprintf(stderr, "\r  %s %3.0f%%", stage, 100.0 * fraction);
+}

@@ -1,0 +1,194 @@
+/* plot.c - the Fig. 6 plot of `gprobe eval`: error against the number of lights, drawn by gnuplot. */
+#include "gprobe.h"
+
+#include <generic/memory.h>
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+int plot_check_gnuplot(void)
+{
+    const char *path = getenv("PATH");
+    char buf[4096];
+    for (const char *p = path ? path : "/usr/bin:/bin"; *p;) {
+        const char *e = strchr(p, ':');
+        size_t n = e ? (size_t)(e - p) : strlen(p);
+        snprintf(buf, sizeof buf, "%.*s/gnuplot", (int)n, n ? p : ".");
+        if (access(buf, X_OK) == 0)
+            return 0;
+        p += n + (e ? 1 : 0);
+    }
+    fprintf(stderr, "gprobe: --plot needs gnuplot, which is not installed (Debian: apt-get install gnuplot-nox)\n");
+    return -1;
+}
+
+typedef struct Series {
+    char name[32];
+    int n;
+    double x[64], y[64][4];
+} Series;
+
+/* Writes s single-quoted for gnuplot ('' escapes a quote). */
+static void put_quoted(FILE *f, const char *s)
+{
+    fputc('\'', f);
+    for (; *s; s++) {
+        if (*s == '\'')
+            fputc('\'', f);
+        if (*s != '\n')
+            fputc(*s, f);
+    }
+    fputc('\'', f);
+}
+
+static int read_csv(const char *csv, Series *series, int *nseries, double sh9[4], int *have_sh9)
+{
+    FILE *f = fopen(csv, "r");
+    if (!f) {
+        fprintf(stderr, "gprobe: cannot read %s: %s\n", csv, strerror(errno));
+        return -1;
+    }
+    char line[512];
+    *nseries = 0;
+    *have_sh9 = 0;
+    while (fgets(line, sizeof line, f)) {
+        char name[32];
+        int count;
+        double v[5];
+        if (sscanf(line, "%31[^,],%d,%lf,%lf,%lf,%lf,%lf", name, &count, &v[0], &v[1], &v[2], &v[3], &v[4]) != 7)
+            continue; /* the header */
+        if (strcmp(name, "sh9") == 0) {
+            memcpy(sh9, v, 4 * sizeof(double));
+            *have_sh9 = 1;
+            continue;
+        }
+        int k = 0;
+        while (k < *nseries && strcmp(series[k].name, name) != 0)
+            k++;
+        if (k == *nseries) {
+            if (k == 8)
+                continue;
+            snprintf(series[k].name, sizeof series[k].name, "%s", name);
+            series[k].n = 0;
+            (*nseries)++;
+        }
+        Series *s = &series[k];
+        if (s->n < 64) {
+            s->x[s->n] = count;
+            memcpy(s->y[s->n], v, 4 * sizeof(double));
+            s->n++;
+        }
+    }
+    fclose(f);
+    return 0;
+}
+
+int plot_errors(const char *csv, const char *png, const char *title)
+{
+    static const char *const colours[8] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b",
+                                           "#e377c2", "#17becf"};
+    Series series[8];
+    int ns, have_sh9;
+    double sh9[4];
+    if (read_csv(csv, series, &ns, sh9, &have_sh9) != 0)
+        return -1;
+    if (ns == 0 && !have_sh9) {
+        fprintf(stderr, "gprobe: nothing to plot\n");
+        return -1;
+    }
+    double xmin = 1e9, xmax = 0.0;
+    for (int k = 0; k < ns; k++)
+        for (int i = 0; i < series[k].n; i++) {
+            xmin = series[k].x[i] < xmin ? series[k].x[i] : xmin;
+            xmax = series[k].x[i] > xmax ? series[k].x[i] : xmax;
+        }
+    if (xmax <= 0.0)
+        xmin = 1.0, xmax = 128.0;
+
+    size_t n = strlen(png);
+    char *tmp = gmem_alloc(n + 16);
+    if (!tmp)
+        return -1;
+    snprintf(tmp, n + 16, "%s.tmpXXXXXX", png);
+    int fd = mkstemp(tmp);
+    if (fd < 0) {
+        fprintf(stderr, "gprobe: cannot write %s: %s\n", png, strerror(errno));
+        gmem_free(tmp);
+        return -1;
+    }
+    mode_t mask = umask(0);
+    umask(mask);
+    fchmod(fd, 0666 & ~mask);
+    close(fd);
+    FILE *g = popen("gnuplot", "w");
+    if (!g) {
+        fprintf(stderr, "gprobe: cannot run gnuplot: %s\n", strerror(errno));
+        unlink(tmp);
+        gmem_free(tmp);
+        return -1;
+    }
+    fprintf(g, "set terminal pngcairo size 1400,600 font 'Sans,11'\nset output ");
+    put_quoted(g, tmp);
+    fputc('\n', g);
+    for (int k = 0; k < ns; k++) {
+        fprintf(g, "$%s << EOD\n", series[k].name);
+        for (int i = 0; i < series[k].n; i++)
+            fprintf(g, "%g %g %g %g %g\n", series[k].x[i], series[k].y[i][0], series[k].y[i][1], series[k].y[i][2],
+                    series[k].y[i][3]);
+        fprintf(g, "EOD\n");
+    }
+    fprintf(g, "set multiplot layout 1,2 title ");
+    put_quoted(g, title);
+    fprintf(g, " font 'Sans,13'\n"
+               "set logscale xy\nset grid xtics ytics mytics\nset key bottom left box opaque\n"
+               "set xrange [%g:%g]\nset xtics (",
+            xmin / 1.25, xmax * 1.25);
+    for (double x = 1; x <= xmax * 1.01; x *= 2)
+        if (x >= xmin * 0.99)
+            fprintf(g, "%s%g", x > xmin * 1.01 ? "," : "", x);
+    fprintf(g, ")\nset xlabel 'number of directional lights'\nset ylabel 'irradiance error (%%)'\n");
+    for (int panel = 0; panel < 2; panel++) {
+        fprintf(g, "set title '%s'\nplot ", panel == 0 ? "relative to the true irradiance (the paper''s Fig. 6 measure)"
+                                                       : "normalised by the largest irradiance");
+        int first = 1;
+        for (int k = 0; k < ns; k++) {
+            const char *c = colours[k % 8];
+            fprintf(g, "%s$%s using 1:%d with linespoints lw 2 pt 7 lc rgb '%s' title '%s mean', "
+                       "$%s using 1:%d with linespoints lw 2 dt 2 pt 6 lc rgb '%s' title '%s max'",
+                    first ? "" : ", ", series[k].name, 2 + 2 * panel, c, series[k].name, series[k].name, 3 + 2 * panel,
+                    c, series[k].name);
+            first = 0;
+        }
+        if (have_sh9) {
+            double mean = sh9[2 * panel], max = sh9[2 * panel + 1];
+            if (mean > 0.0)
+                fprintf(g, "%s%g with lines lw 2 lc rgb 'gray40' title 'SH9 mean (9 coefficients)', "
+                           "%g with lines lw 2 dt 2 lc rgb 'gray40' title 'SH9 max'",
+                        first ? "" : ", ", mean, max);
+        }
+        fputc('\n', g);
+    }
+    fprintf(g, "unset multiplot\nset output\n");
+    int st = pclose(g);
+    int ok = st != -1 && WIFEXITED(st) && WEXITSTATUS(st) == 0;
+    FILE *chk = ok ? fopen(tmp, "rb") : NULL;
+    if (chk) {
+        fseek(chk, 0, SEEK_END);
+        ok = ftell(chk) > 0;
+        fclose(chk);
+    } else {
+        ok = 0;
+    }
+    if (ok && rename(tmp, png) != 0)
+        ok = 0;
+    if (!ok) {
+        fprintf(stderr, "gprobe: gnuplot failed to draw %s\n", png);
+        unlink(tmp);
+    }
+    gmem_free(tmp);
+    return ok ? 0 : -1;
+}

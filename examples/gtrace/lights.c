@@ -1,0 +1,246 @@
+/* lights.c - the light sources' shade routine (the paper's GPointLight::shade, generalised).
+ *
+ * For each light sample: the direction `in` to the light, the light's colour at the point (intensity / d^2,
+ * irradiance, or radiance times the sample's solid angle), the material's reflection of it towards the
+ * viewer, then visibility. The reflection is computed first with the unshadowed light so a material that
+ * reflects nothing from this direction (mirrors, clear glass) costs no shadow ray.
+ *
+ * Shadows: a shadow ray that reaches the light unobstructed leaves the reflected light to the absorption
+ * of the medium over the distance (as in Fig. 4). When something is in the way, the shadow ray walks the
+ * hits in order: an opaque surface blocks the light; at a non-opaque one the light is passed through the
+ * material's refraction() for the ideal refraction pair of the shadow-ray direction (Fresnel transmission,
+ * coloured glass filters), media absorb over the lengths travelled inside them, and the ray continues
+ * straight (no caustics; total internal reflection blocks). The material then reflects the light that got
+ * through. Directional lights are not absorbed by the media (their distance is infinite). */
+#include "gtrace.h"
+
+#include <math.h>
+
+#define SHADOW_MAX_HITS 64
+#define AREA_MAX_SAMPLES 256
+
+/* Light arriving at sp from `dir` over `dist` after the surfaces in between (G_OK, *visible = 0 when blocked). */
+static int transmit(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 dir, double dist,
+                    GColor *light, int *visible)
+{
+    const Scene *s = c->scene;
+    *visible = 0;
+    Media walk;
+    if (gvec3_dot(dir, facing) >= 0.0)
+        walk = *media;
+    else /* the light is behind the surface: the path starts on the other side */
+        media_cross(media, sp->material, sp->entering, &walk);
+    Ray seg = {offset_origin(sp->point, facing, dir), dir, 0.0, dist * (1.0 - 1e-7), 0.0, 0.0};
+    GScratchMark mark = gscratch_mark(c->scratch);
+    GColor tmp, ri, nf, nt;
+    int rc = G_OK;
+    if ((rc = gcolor_scratch(&tmp, s->model, c->scratch)) < 0 || (rc = gcolor_scratch(&ri, s->model, c->scratch)) < 0 ||
+        (rc = gcolor_scratch(&nf, s->model, c->scratch)) < 0 || (rc = gcolor_scratch(&nt, s->model, c->scratch)) < 0)
+        goto done;
+    double left = dist;
+    GVec3 target = isfinite(dist) ? gvec3_madd(sp->point, dir, dist) : sp->point;
+    for (int k = 0; k < SHADOW_MAX_HITS; k++) {
+        Hit h;
+        c->rays++;
+        if (!accel_intersect(s, &seg, &h))
+            break;
+        GSurfPoint hp;
+        GVec3 hf;
+        surfpoint_fill(c, &seg, &h, &walk, &hp, &hf);
+        if (gmaterial_opaque(hp.material, &hp))
+            goto done;
+        if (hp.from && (rc = gmaterial_absorption(hp.from, &hp, light, h.t, &tmp)) < 0)
+            goto done;
+        if (hp.from && (rc = gcolor_copy(light, &tmp)) < 0)
+            goto done;
+        if ((rc = gmaterial_refraction_index(hp.from, &hp, &nf)) < 0 ||
+            (rc = gmaterial_refraction_index(hp.to, &hp, &nt)) < 0 || (rc = gcolor_div(&ri, &nf, &nt)) < 0)
+            goto done;
+        GVec3 tdir;
+        int valid = gmaterial_refraction_dir(hp.material, &hp, dir, &ri, &tdir);
+        if (valid <= 0) {
+            rc = valid;
+            goto done;
+        }
+        if ((rc = gmaterial_refraction(hp.material, &hp, tdir, light, &ri, gvec3_neg(dir), &tmp)) < 0 ||
+            (rc = gcolor_copy(light, &tmp)) < 0)
+            goto done;
+        if (gcolor_brightness(light) <= 0.0)
+            goto done;
+        Media next;
+        media_cross(&walk, hp.material, hp.entering, &next);
+        walk = next;
+        seg.o = offset_origin(hp.point, hf, dir);
+        if (isfinite(dist)) {
+            left = gvec3_dot(gvec3_sub(target, seg.o), dir);
+            if (!(left > 0.0))
+                break;
+            seg.tmax = left * (1.0 - 1e-7);
+        }
+    }
+    const GMaterial *last = media_top(&walk);
+    if (last && isfinite(left) && left > 0.0) {
+        if ((rc = gmaterial_absorption(last, sp, light, left, &tmp)) < 0 || (rc = gcolor_copy(light, &tmp)) < 0)
+            goto done;
+    }
+    *visible = 1;
+done:
+    gscratch_release(c->scratch, mark);
+    return rc;
+}
+
+/* Adds the light of one sample: color * scale is the light's colour at the point (before shadows). */
+static int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 in, double dist,
+                        const GColor *color, double scale, GVec3 out_dir, LightTmp *t, GColor *result)
+{
+    const Scene *s = c->scene;
+    GColor *illum = &t->illum, *refl = &t->refl, *tmp = &t->tmp;
+    int rc;
+    if ((rc = gcolor_scale(illum, color, scale)) < 0 ||
+        (rc = gmaterial_reflection(sp->material, sp, in, illum, out_dir, refl)) < 0)
+        return rc;
+    if (gcolor_brightness(refl) == 0.0)
+        return G_OK; /* nothing reflected from here: no shadow ray */
+    Ray sr = {offset_origin(sp->point, facing, in), in, 0.0, dist * (1.0 - 1e-7), 0.0, 0.0};
+    c->rays++;
+    if (!accel_occluded(s, &sr)) {
+        const GMaterial *medium = gvec3_dot(in, facing) >= 0.0 ? sp->from : sp->to;
+        if (medium && isfinite(dist)) {
+            if ((rc = gmaterial_absorption(medium, sp, refl, dist, tmp)) < 0 || (rc = gcolor_copy(refl, tmp)) < 0)
+                return rc;
+        }
+        return gcolor_add(result, result, refl);
+    }
+    int visible;
+    if ((rc = transmit(c, sp, facing, media, in, dist, illum, &visible)) < 0 || !visible)
+        return rc;
+    if ((rc = gmaterial_reflection(sp->material, sp, in, illum, out_dir, refl)) < 0)
+        return rc;
+    return gcolor_add(result, result, refl);
+}
+
+static double smoothstep(double a, double b, double x)
+{
+    if (b <= a)
+        return x >= b ? 1.0 : 0.0;
+    double t = fmin(1.0, fmax(0.0, (x - a) / (b - a)));
+    return t * t * (3.0 - 2.0 * t);
+}
+
+static void shuffle(Rng *rng, int *perm, int n)
+{
+    for (int i = 0; i < n; i++)
+        perm[i] = i;
+    for (int i = n - 1; i > 0; i--) {
+        int j = (int)(rng_next(rng) * (i + 1));
+        int t = perm[i];
+        perm[i] = perm[j];
+        perm[j] = t;
+    }
+}
+
+int light_temps(TraceCtx *c, LightTmp *t)
+{
+    int rc;
+    if ((rc = gcolor_scratch(&t->illum, c->scene->model, c->scratch)) < 0 ||
+        (rc = gcolor_scratch(&t->refl, c->scene->model, c->scratch)) < 0 ||
+        (rc = gcolor_scratch(&t->tmp, c->scene->model, c->scratch)) < 0)
+        return rc;
+    return G_OK;
+}
+
+int light_shade(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 out_dir,
+                int opaque, LightTmp *t, GColor *result)
+{
+    GVec3 p = sp->point;
+    switch (l->kind) {
+    case LIGHT_POINT:
+    case LIGHT_SPOT: {
+        GVec3 L = gvec3_sub(l->position, p);
+        double d = gvec3_length(L);
+        if (d <= 0.0)
+            return G_OK;
+        GVec3 in = gvec3_scale(L, 1.0 / d);
+        if (opaque && gvec3_dot(in, facing) <= 0.0)
+            return G_OK;
+        double f = 1.0;
+        if (l->kind == LIGHT_SPOT)
+            f = smoothstep(l->cos_outer, l->cos_inner, -gvec3_dot(in, l->direction));
+        if (f <= 0.0)
+            return G_OK;
+        return sample_light(c, sp, facing, media, in, d, &l->color, f / (d * d), out_dir, t, result);
+    }
+    case LIGHT_DIRECTIONAL: {
+        GVec3 in = gvec3_neg(l->direction);
+        if (opaque && gvec3_dot(in, facing) <= 0.0)
+            return G_OK;
+        return sample_light(c, sp, facing, media, in, INFINITY, &l->color, 1.0, out_dir, t, result);
+    }
+    case LIGHT_SPHERE: {
+        GVec3 axis = gvec3_sub(l->position, p);
+        double dc = gvec3_length(axis);
+        if (dc <= l->radius)
+            return G_OK;
+        axis = gvec3_scale(axis, 1.0 / dc);
+        double sin_max = l->radius / dc, cos_max = sqrt(fmax(0.0, 1.0 - sin_max * sin_max));
+        if (opaque && gvec3_dot(axis, facing) < -sin_max)
+            return G_OK; /* the whole cap is below the surface */
+        double omega = 2.0 * M_PI * (1.0 - cos_max);
+        int n = l->samples < 1 ? 1 : l->samples > AREA_MAX_SAMPLES ? AREA_MAX_SAMPLES : l->samples;
+        int perm[AREA_MAX_SAMPLES];
+        shuffle(&c->rng, perm, n);
+        GVec3 t1, t2;
+        frame_from_normal(axis, &t1, &t2);
+        for (int i = 0; i < n; i++) {
+            double u1, u2;
+            pixel_sample(&c->rng, i, n, perm, &u1, &u2);
+            if (n == 1)
+                u1 = rng_next(&c->rng), u2 = rng_next(&c->rng);
+            double ct = 1.0 - u1 * (1.0 - cos_max), st = sqrt(fmax(0.0, 1.0 - ct * ct)), ph = 2.0 * M_PI * u2;
+            GVec3 in = gvec3_add(gvec3_scale(axis, ct), gvec3_add(gvec3_scale(t1, st * cos(ph)), gvec3_scale(t2, st * sin(ph))));
+            if (opaque && gvec3_dot(in, facing) <= 0.0)
+                continue;
+            /* distance to the near side of the sphere along in */
+            double b = dc * ct, disc = b * b - (dc * dc - l->radius * l->radius);
+            double d = b - sqrt(fmax(0.0, disc));
+            int rc = sample_light(c, sp, facing, media, in, d, &l->color, omega / n, out_dir, t, result);
+            if (rc < 0)
+                return rc;
+        }
+        return G_OK;
+    }
+    case LIGHT_RECT: {
+        GVec3 nl = gvec3_cross(l->edge1, l->edge2);
+        double area = gvec3_length(nl);
+        if (area <= 0.0)
+            return G_OK;
+        nl = gvec3_scale(nl, 1.0 / area);
+        int n = l->samples < 1 ? 1 : l->samples > AREA_MAX_SAMPLES ? AREA_MAX_SAMPLES : l->samples;
+        int perm[AREA_MAX_SAMPLES];
+        shuffle(&c->rng, perm, n);
+        for (int i = 0; i < n; i++) {
+            double u1, u2;
+            pixel_sample(&c->rng, i, n, perm, &u1, &u2);
+            if (n == 1)
+                u1 = rng_next(&c->rng), u2 = rng_next(&c->rng);
+            GVec3 y = gvec3_add(l->position, gvec3_add(gvec3_scale(l->edge1, u1), gvec3_scale(l->edge2, u2)));
+            GVec3 w = gvec3_sub(y, p);
+            double d = gvec3_length(w);
+            if (d <= 0.0)
+                continue;
+            GVec3 in = gvec3_scale(w, 1.0 / d);
+            double cos_l = -gvec3_dot(in, nl);
+            if (cos_l <= 0.0 || (opaque && gvec3_dot(in, facing) <= 0.0))
+                continue;
+            int rc = sample_light(c, sp, facing, media, in, d, &l->color, area * cos_l / (d * d * n), out_dir, t, result);
+            if (rc < 0)
+                return rc;
+        }
+        return G_OK;
+    }
+    case LIGHT_AMBIENT:
+    case LIGHT_BACKGROUND:
+        break;
+    }
+    return G_OK;
+}

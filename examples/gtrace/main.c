@@ -1,0 +1,191 @@
+/* gtrace - a Whitted ray tracer written only against the generic colour and material interfaces.
+ * main.c: the command line, loading, rendering, writing, and the summary line. */
+#include "gtrace.h"
+
+#include <generic/registry.h>
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void usage(FILE *f)
+{
+    char models[256];
+    gregistry_names(GKIND_COLORMODEL, models, sizeof models);
+    fprintf(f,
+            "usage: gtrace SCENE -o OUT [--width W] [--height H] [--spp N] [--depth D] [--colormodel M]\n"
+            "              [--threads N] [--cutoff W] [--exposure STOPS] [-q]\n"
+            "Renders a scene file (the library's text format with camera, object and light entries) with a\n"
+            "Whitted ray tracer that uses colours and materials only through the generic interfaces.\n"
+            "  -o OUT            output image; the extension picks the format: .exr linear float,\n"
+            "                    .png/.jpg display-encoded (sRGB) after the exposure, clamped\n"
+            "  --width W         image width (default: the camera's; height follows its aspect)\n"
+            "  --height H        image height (default: the camera's)\n"
+            "  --spp N           samples per pixel, stratified and jittered (default: the camera's)\n"
+            "  --depth D         reflection/refraction recursion depth (default: the camera's)\n"
+            "  --colormodel M    compute in colour model M instead of the scene's (%s)\n"
+            "  --cutoff W        do not trace rays whose weight in the pixel is below W (default: the\n"
+            "                    camera's, 1e-3; 0 traces every ray to the depth limit)\n"
+            "  --threads N       render threads (default: all processors)\n"
+            "  --exposure STOPS  exposure for .png/.jpg output (default: the camera's)\n"
+            "  -q                no progress bar and no summary line\n"
+            "  -h, --help        this text\n",
+            models);
+}
+
+static int parse_int(const char *opt, const char *s, long lo, long hi, int *out)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(s, &end, 10);
+    if (errno || end == s || *end || v < lo || v > hi) {
+        fprintf(stderr, "gtrace: %s expects a whole number in [%ld, %ld], got '%s'\n", opt, lo, hi, s);
+        return -1;
+    }
+    *out = (int)v;
+    return 0;
+}
+
+typedef struct Options {
+    const char *scene, *out, *colormodel;
+    int width, height, spp, depth, threads, quiet;
+    int have_exposure, have_cutoff;
+    double exposure, cutoff;
+} Options;
+
+static int parse_args(int argc, char **argv, Options *o)
+{
+    memset(o, 0, sizeof *o);
+    o->width = o->height = o->spp = o->depth = -1;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
+            usage(stdout);
+            return 1;
+        }
+        if (strcmp(a, "-q") == 0 || strcmp(a, "--quiet") == 0) {
+            o->quiet = 1;
+            continue;
+        }
+        if (a[0] == '-' && a[1]) {
+            if (i + 1 >= argc) {
+                fprintf(stderr, "gtrace: %s needs a value\n", a);
+                return -1;
+            }
+            const char *v = argv[++i];
+            int rc = 0;
+            if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0)
+                o->out = v;
+            else if (strcmp(a, "--width") == 0)
+                rc = parse_int(a, v, 1, 65536, &o->width);
+            else if (strcmp(a, "--height") == 0)
+                rc = parse_int(a, v, 1, 65536, &o->height);
+            else if (strcmp(a, "--spp") == 0)
+                rc = parse_int(a, v, 1, 65536, &o->spp);
+            else if (strcmp(a, "--depth") == 0)
+                rc = parse_int(a, v, 0, 1000, &o->depth);
+            else if (strcmp(a, "--threads") == 0)
+                rc = parse_int(a, v, 1, 1024, &o->threads);
+            else if (strcmp(a, "--colormodel") == 0)
+                o->colormodel = v;
+            else if (strcmp(a, "--exposure") == 0) {
+                char *end;
+                o->exposure = strtod(v, &end);
+                o->have_exposure = 1;
+                if (end == v || *end || !(o->exposure >= -30.0 && o->exposure <= 30.0)) {
+                    fprintf(stderr, "gtrace: --exposure expects a number in [-30, 30], got '%s'\n", v);
+                    rc = -1;
+                }
+            } else if (strcmp(a, "--cutoff") == 0) {
+                char *end;
+                o->cutoff = strtod(v, &end);
+                o->have_cutoff = 1;
+                if (end == v || *end || !(o->cutoff >= 0.0 && o->cutoff <= 1.0)) {
+                    fprintf(stderr, "gtrace: --cutoff expects a number in [0, 1], got '%s'\n", v);
+                    rc = -1;
+                }
+            } else {
+                fprintf(stderr, "gtrace: unknown option '%s' (see gtrace --help)\n", a);
+                return -1;
+            }
+            if (rc)
+                return -1;
+            continue;
+        }
+        if (o->scene) {
+            fprintf(stderr, "gtrace: more than one scene file given ('%s' and '%s')\n", o->scene, a);
+            return -1;
+        }
+        o->scene = a;
+    }
+    if (!o->scene || !o->out) {
+        fprintf(stderr, "gtrace: %s\n", !o->scene ? "no scene file given" : "no output file given (-o OUT)");
+        usage(stderr);
+        return -1;
+    }
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    Options o;
+    int a = parse_args(argc, argv, &o);
+    if (a != 0)
+        return a > 0 ? 0 : 2;
+    GError err;
+    gerror_clear(&err);
+    Scene *scene = NULL;
+    if (scene_load(o.scene, o.colormodel, &scene, &err) < 0) {
+        fprintf(stderr, "gtrace: %s\n", err.message);
+        return 1;
+    }
+    const Camera *cam = &scene->camera;
+    RenderSettings rs = {.width = cam->width, .height = cam->height, .spp = cam->spp, .depth = cam->depth,
+                         .threads = o.threads, .quiet = o.quiet, .cutoff = o.have_cutoff ? o.cutoff : cam->cutoff};
+    if (o.width > 0 && o.height > 0) {
+        rs.width = o.width;
+        rs.height = o.height;
+    } else if (o.width > 0) {
+        rs.width = o.width;
+        rs.height = (int)((double)o.width * cam->height / cam->width + 0.5);
+    } else if (o.height > 0) {
+        rs.height = o.height;
+        rs.width = (int)((double)o.height * cam->width / cam->height + 0.5);
+    }
+    if (rs.width < 1)
+        rs.width = 1;
+    if (rs.height < 1)
+        rs.height = 1;
+    if (o.spp > 0)
+        rs.spp = o.spp;
+    if (o.depth >= 0)
+        rs.depth = o.depth;
+    double exposure = o.have_exposure ? o.exposure : cam->exposure;
+
+    Framebuffer fb = {0};
+    RenderStats st;
+    int rc = accel_build(scene, &err);
+    if (rc == G_OK)
+        rc = render_image(scene, &rs, &fb, &st, &err);
+    if (rc == G_OK)
+        rc = output_write(o.out, &fb, exposure, &err);
+    if (rc != G_OK) {
+        fprintf(stderr, "gtrace: %s\n", err.message);
+        framebuffer_free(&fb);
+        scene_destroy(scene);
+        return 1;
+    }
+    if (st.nonfinite)
+        fprintf(stderr, "gtrace: warning: %llu samples were NaN or infinite and were replaced by black\n",
+                (unsigned long long)st.nonfinite);
+    if (!o.quiet)
+        printf("gtrace: %s %dx%d, %d spp, depth %d, %s, %d threads: %.2f s, %.2f M rays, %.2f M rays/s, "
+               "%llu non-finite\n",
+               o.out, rs.width, rs.height, rs.spp, rs.depth, gcolormodel_name(scene->model), st.threads, st.seconds,
+               st.rays * 1e-6, st.seconds > 0 ? st.rays * 1e-6 / st.seconds : 0.0,
+               (unsigned long long)st.nonfinite);
+    framebuffer_free(&fb);
+    scene_destroy(scene);
+    return 0;
+}

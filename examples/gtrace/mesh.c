@@ -1,0 +1,334 @@
+/* mesh.c - triangle meshes from Wavefront OBJ files (v, vt, vn, f; polygons become fans; negative indices
+ * count from the end; usemtl and g start a new surface index) and the surface at a triangle hit. */
+#include "gtrace.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct DArr {
+    double *data;
+    int n, cap; /* in doubles */
+} DArr;
+
+typedef struct IArr {
+    int *data;
+    int n, cap;
+} IArr;
+
+static int dpush(DArr *a, double x)
+{
+    if (a->n == a->cap) {
+        int cap = a->cap ? a->cap * 2 : 256;
+        double *nv = gmem_realloc(a->data, (size_t)cap * sizeof *nv);
+        if (!nv)
+            return G_ERR_NOMEM;
+        a->data = nv;
+        a->cap = cap;
+    }
+    a->data[a->n++] = x;
+    return G_OK;
+}
+
+static int ipush(IArr *a, int x)
+{
+    if (a->n == a->cap) {
+        int cap = a->cap ? a->cap * 2 : 256;
+        int *nv = gmem_realloc(a->data, (size_t)cap * sizeof *nv);
+        if (!nv)
+            return G_ERR_NOMEM;
+        a->data = nv;
+        a->cap = cap;
+    }
+    a->data[a->n++] = x;
+    return G_OK;
+}
+
+void mesh_free(Mesh *m)
+{
+    if (!m)
+        return;
+    gmem_free(m->pos);
+    gmem_free(m->uv);
+    gmem_free(m->normal);
+    gmem_free(m->tri);
+    gmem_free(m->tri_uv);
+    gmem_free(m->tri_normal);
+    gmem_free(m->tri_surface);
+    gmem_free(m);
+}
+
+/* Resolves a 1-based or negative OBJ index against count; -1 for absent, -2 for out of range. */
+static int resolve(long idx, int count)
+{
+    if (idx > 0 && idx <= count)
+        return (int)idx - 1;
+    if (idx < 0 && -idx <= count)
+        return count + (int)idx;
+    return -2;
+}
+
+typedef struct Loader {
+    const char *path;
+    int line;
+    DArr pos, uv, nrm;
+    IArr tri, tuv, tn, tsurf;
+    int surface, used_surface;
+    GError *err;
+} Loader;
+
+static int obj_error(Loader *L, int col, const char *msg)
+{
+    return gerror_set(L->err, G_ERR_PARSE, "%s:%d:%d: %s", L->path, L->line, col, msg);
+}
+
+static int read_numbers(Loader *L, char *s, const char *line, double *out, int min, int max)
+{
+    int n = 0;
+    for (;;) {
+        while (*s == ' ' || *s == '\t')
+            s++;
+        if (!*s || *s == '\n' || *s == '\r' || *s == '#')
+            break;
+        char *end;
+        errno = 0;
+        double x = strtod(s, &end);
+        if (end == s || !isfinite(x))
+            return obj_error(L, (int)(s - line) + 1, "expected a number");
+        if (n < max)
+            out[n] = x;
+        n++;
+        s = end;
+    }
+    if (n < min)
+        return obj_error(L, (int)(s - line) + 1, "too few numbers");
+    return n;
+}
+
+static int read_face(Loader *L, char *s, const char *line)
+{
+    int vi[3], ti[3], ni[3], k = 0;
+    int nv = L->pos.n / 3, nt = L->uv.n / 2, nn = L->nrm.n / 3;
+    for (;;) {
+        while (*s == ' ' || *s == '\t')
+            s++;
+        if (!*s || *s == '\n' || *s == '\r' || *s == '#')
+            break;
+        int col = (int)(s - line) + 1;
+        char *end;
+        long a = strtol(s, &end, 10), b = 0, c = 0;
+        if (end == s)
+            return obj_error(L, col, "expected a vertex index");
+        s = end;
+        if (*s == '/') {
+            s++;
+            if (*s != '/') {
+                b = strtol(s, &end, 10);
+                if (end == s)
+                    return obj_error(L, (int)(s - line) + 1, "expected a texture coordinate index");
+                s = end;
+            }
+            if (*s == '/') {
+                s++;
+                c = strtol(s, &end, 10);
+                if (end == s)
+                    return obj_error(L, (int)(s - line) + 1, "expected a normal index");
+                s = end;
+            }
+        }
+        int v = resolve(a, nv), t = b ? resolve(b, nt) : -1, n = c ? resolve(c, nn) : -1;
+        if (v < 0 || t == -2 || n == -2)
+            return obj_error(L, col, "index out of range");
+        if (k < 2) {
+            vi[k] = v;
+            ti[k] = t;
+            ni[k] = n;
+        } else {
+            vi[2] = v;
+            ti[2] = t;
+            ni[2] = n;
+            for (int j = 0; j < 3; j++) {
+                if (ipush(&L->tri, vi[j]) || ipush(&L->tuv, ti[j]) || ipush(&L->tn, ni[j]))
+                    return gerror_set(L->err, G_ERR_NOMEM, "%s: out of memory", L->path);
+            }
+            if (ipush(&L->tsurf, L->surface))
+                return gerror_set(L->err, G_ERR_NOMEM, "%s: out of memory", L->path);
+            L->used_surface = 1;
+            vi[1] = vi[2];
+            ti[1] = ti[2];
+            ni[1] = ni[2];
+        }
+        k++;
+    }
+    if (k < 3)
+        return obj_error(L, (int)(s - line) + 1, "a face needs at least 3 vertices");
+    return G_OK;
+}
+
+static int parse_line(Loader *L, char *line)
+{
+    char *s = line;
+    while (*s == ' ' || *s == '\t')
+        s++;
+    double x[3];
+    if (s[0] == 'v' && (s[1] == ' ' || s[1] == '\t')) {
+        int n = read_numbers(L, s + 2, line, x, 3, 4);
+        if (n < 0)
+            return n;
+        return dpush(&L->pos, x[0]) || dpush(&L->pos, x[1]) || dpush(&L->pos, x[2]) ? G_ERR_NOMEM : G_OK;
+    }
+    if (s[0] == 'v' && s[1] == 't' && (s[2] == ' ' || s[2] == '\t')) {
+        int n = read_numbers(L, s + 3, line, x, 2, 3);
+        if (n < 0)
+            return n;
+        return dpush(&L->uv, x[0]) || dpush(&L->uv, x[1]) ? G_ERR_NOMEM : G_OK;
+    }
+    if (s[0] == 'v' && s[1] == 'n' && (s[2] == ' ' || s[2] == '\t')) {
+        int n = read_numbers(L, s + 3, line, x, 3, 3);
+        if (n < 0)
+            return n;
+        return dpush(&L->nrm, x[0]) || dpush(&L->nrm, x[1]) || dpush(&L->nrm, x[2]) ? G_ERR_NOMEM : G_OK;
+    }
+    if (s[0] == 'f' && (s[1] == ' ' || s[1] == '\t'))
+        return read_face(L, s + 2, line);
+    if ((strncmp(s, "usemtl", 6) == 0 || (s[0] == 'g' && (s[1] == ' ' || s[1] == '\t'))) && L->used_surface) {
+        L->surface++;
+        L->used_surface = 0;
+    }
+    return G_OK; /* comments, o, s, mtllib and other statements are ignored */
+}
+
+int object_mesh_load(Object *o, const char *path, GError *err)
+{
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return gerror_set(err, G_ERR_IO, "%s: cannot open: %s", path, strerror(errno));
+    Loader L = {.path = path, .err = err};
+    char buf[4096];
+    int rc = G_OK;
+    while (rc == G_OK && fgets(buf, sizeof buf, f)) {
+        L.line++;
+        if (!strchr(buf, '\n') && !feof(f)) {
+            rc = obj_error(&L, (int)sizeof buf, "line too long");
+            break;
+        }
+        rc = parse_line(&L, buf);
+        if (rc == G_ERR_NOMEM)
+            gerror_set(err, rc, "%s: out of memory", path);
+    }
+    if (rc == G_OK && ferror(f))
+        rc = gerror_set(err, G_ERR_IO, "%s: read error", path);
+    fclose(f);
+    if (rc == G_OK && L.tsurf.n == 0)
+        rc = gerror_set(err, G_ERR_PARSE, "%s: no faces", path);
+    Mesh *m = NULL;
+    if (rc == G_OK) {
+        m = gmem_calloc(1, sizeof *m);
+        if (!m)
+            rc = gerror_set(err, G_ERR_NOMEM, "%s: out of memory", path);
+    }
+    if (rc == G_OK) {
+        m->nverts = L.pos.n / 3;
+        m->nuvs = L.uv.n / 2;
+        m->nnormals = L.nrm.n / 3;
+        m->ntris = L.tsurf.n;
+        m->pos = L.pos.data;
+        m->uv = L.uv.data;
+        m->normal = L.nrm.data;
+        m->tri_uv = L.tuv.data;
+        m->tri_normal = L.tn.data;
+        m->tri_surface = L.tsurf.data;
+        m->tri = gmem_alloc((size_t)L.tri.n * sizeof *m->tri);
+        if (!m->tri) {
+            L.tri.n = 0;
+            rc = gerror_set(err, G_ERR_NOMEM, "%s: out of memory", path);
+        }
+        for (int i = 0; i < L.tri.n; i++)
+            m->tri[i] = (unsigned)L.tri.data[i];
+        gmem_free(L.tri.data);
+        if (rc != G_OK) {
+            mesh_free(m);
+            return rc;
+        }
+        mesh_free(o->mesh);
+        o->mesh = m;
+        return G_OK;
+    }
+    gmem_free(L.pos.data);
+    gmem_free(L.uv.data);
+    gmem_free(L.nrm.data);
+    gmem_free(L.tri.data);
+    gmem_free(L.tuv.data);
+    gmem_free(L.tn.data);
+    gmem_free(L.tsurf.data);
+    return rc;
+}
+
+static GVec3 vget(const double *a, int i) { return gvec3(a[3 * i], a[3 * i + 1], a[3 * i + 2]); }
+
+void mesh_hit_geom(const Object *o, const Ray *r, const Hit *h, HitGeom *g)
+{
+    const Mesh *m = o->mesh;
+    unsigned k = h->prim;
+    (void)r;
+    const unsigned *t = m->tri + 3 * k;
+    double b1 = h->bu, b2 = h->bv, b0 = 1.0 - b1 - b2;
+    GVec3 p0 = vget(m->pos, (int)t[0]), p1 = vget(m->pos, (int)t[1]), p2 = vget(m->pos, (int)t[2]);
+    GVec3 e1 = gvec3_sub(p1, p0), e2 = gvec3_sub(p2, p0);
+    GVec3 op = gvec3_add(gvec3_add(gvec3_scale(p0, b0), gvec3_scale(p1, b1)), gvec3_scale(p2, b2));
+    GVec3 n = gvec3_normalize(gvec3_cross(e1, e2));
+    GVec3 ns = n;
+    const int *tn = m->tri_normal + 3 * k;
+    if (tn[0] >= 0 && tn[1] >= 0 && tn[2] >= 0) {
+        GVec3 s = gvec3_add(gvec3_add(gvec3_scale(vget(m->normal, tn[0]), b0), gvec3_scale(vget(m->normal, tn[1]), b1)),
+                            gvec3_scale(vget(m->normal, tn[2]), b2));
+        if (gvec3_length(s) > 0.0)
+            ns = gvec3_normalize(s);
+    }
+    const int *tu = m->tri_uv + 3 * k;
+    double u = b1, v = b2;
+    GVec3 dpdu, dpdv;
+    int have_uv = tu[0] >= 0 && tu[1] >= 0 && tu[2] >= 0;
+    double du1 = 0, dv1 = 0, du2 = 0, dv2 = 0, det = 0;
+    if (have_uv) {
+        const double *a = m->uv + 2 * tu[0], *b = m->uv + 2 * tu[1], *c = m->uv + 2 * tu[2];
+        u = b0 * a[0] + b1 * b[0] + b2 * c[0];
+        v = b0 * a[1] + b1 * b[1] + b2 * c[1];
+        du1 = b[0] - a[0];
+        dv1 = b[1] - a[1];
+        du2 = c[0] - a[0];
+        dv2 = c[1] - a[1];
+        det = du1 * dv2 - dv1 * du2;
+    }
+    if (have_uv && fabs(det) > 1e-12) {
+        double id = 1.0 / det;
+        dpdu = gvec3_scale(gvec3_sub(gvec3_scale(e1, dv2), gvec3_scale(e2, dv1)), id);
+        dpdv = gvec3_scale(gvec3_sub(gvec3_scale(e2, du1), gvec3_scale(e1, du2)), id);
+    } else if (!have_uv) {
+        dpdu = e1; /* (u,v) are the barycentrics */
+        dpdv = e2;
+    } else {
+        frame_from_normal(n, &dpdu, &dpdv);
+    }
+    g->op = op;
+    g->u = u;
+    g->v = v;
+    g->surface = m->tri_surface[k];
+    g->odpdu = dpdu;
+    g->odpdv = dpdv;
+    if (o->has_xf) {
+        g->p = xform_point(&o->xf, op);
+        g->n_out = gvec3_normalize(xform_normal(&o->xf, n));
+        g->n_smooth = gvec3_normalize(xform_normal(&o->xf, ns));
+        g->dpdu = xform_vector(&o->xf, dpdu);
+        g->dpdv = xform_vector(&o->xf, dpdv);
+    } else {
+        g->p = op;
+        g->n_out = n;
+        g->n_smooth = ns;
+        g->dpdu = dpdu;
+        g->dpdv = dpdv;
+    }
+}

@@ -1,0 +1,26 @@
+/* output.c - writes the framebuffer through the library's image shim (generic/image.h), which picks the
+ * encoding by extension and writes a temporary file that is renamed only when complete. Float formats
+ * (.exr, .hdr, .pfm) get the linear values as rendered; 8-bit formats get the exposure, then the shim's
+ * display encoding with clamping. */
+#include "gtrace.h"
+
+#include <generic/image.h>
+
+#include <string.h>
+#include <strings.h>
+
+static int is_float_format(const char *path)
+{
+    const char *dot = strrchr(path, '.');
+    const char *slash = strrchr(path, '/');
+    if (!dot || (slash && dot < slash))
+        return 0;
+    return strcasecmp(dot, ".exr") == 0 || strcasecmp(dot, ".hdr") == 0 || strcasecmp(dot, ".pfm") == 0;
+}
+
+int output_write(const char *path, const Framebuffer *fb, double exposure, GError *err)
+{
+    GImage img = {.width = fb->width, .height = fb->height, .channels = 3, .pixels = fb->pixels};
+    GImageWriteOptions opt = {.exposure = is_float_format(path) ? 0.0 : exposure};
+    return gimage_write(path, &img, &opt, err);
+}

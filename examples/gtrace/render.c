@@ -1,0 +1,171 @@
+/* render.c - the render loop: 16x16 tiles shared among OpenMP threads with a dynamic schedule, one
+ * scratch arena per thread (marked and released per sample), a generator seeded per pixel so the image
+ * does not depend on the thread count. Samples that come back NaN or infinite are counted and dropped
+ * (they never reach a pixel); pixels leave the colour model through its XYZ conversion (as a light)
+ * and become linear sRGB. */
+#include "gtrace.h"
+
+#include <math.h>
+#include <omp.h>
+#include <string.h>
+
+#define TILE 16
+
+typedef struct Job {
+    const Scene *scene;
+    const Camera *cam;
+    Framebuffer *fb;
+    int spp, depth, ntx;
+    Media media0;
+} Job;
+
+static int render_pixel(TraceCtx *c, const Job *job, int x, int y, int *perm, uint64_t *nonfinite)
+{
+    const Scene *s = job->scene;
+    GScratchMark mark = gscratch_mark(c->scratch);
+    GColor acc, sample;
+    int rc = gcolor_scratch(&acc, s->model, c->scratch);
+    if (rc == G_OK)
+        rc = gcolor_scratch(&sample, s->model, c->scratch);
+    if (rc != G_OK)
+        goto done;
+    rng_seed(&c->rng, (uint64_t)y * (uint64_t)job->fb->width + (uint64_t)x, 0x9e3779b97f4a7c15ULL);
+    int n = job->spp;
+    int k = (int)lround(sqrt((double)n));
+    if (n > 1 && k * k != n) {
+        for (int i = 0; i < n; i++)
+            perm[i] = i;
+        for (int i = n - 1; i > 0; i--) {
+            int j = (int)(rng_next(&c->rng) * (i + 1));
+            int t = perm[i];
+            perm[i] = perm[j];
+            perm[j] = t;
+        }
+    }
+    for (int i = 0; i < n; i++) {
+        double sx, sy;
+        pixel_sample(&c->rng, i, n, perm, &sx, &sy);
+        Ray r;
+        camera_ray(job->cam, x + sx, y + sy, &r);
+        GScratchMark m2 = gscratch_mark(c->scratch);
+        c->weight = 1.0;
+        rc = trace_ray(c, &r, &job->media0, 0, &sample);
+        gscratch_release(c->scratch, m2);
+        if (rc < 0)
+            goto done;
+        if (!gcolor_is_finite(&sample)) {
+            (*nonfinite)++;
+            continue;
+        }
+        if ((rc = gcolor_add(&acc, &acc, &sample)) < 0)
+            goto done;
+    }
+    if ((rc = gcolor_scale(&acc, &acc, 1.0 / n)) < 0)
+        goto done;
+    double xyz[3], lin[3];
+    if ((rc = gcolor_to_xyz(&acc, GCOLOR_LIGHT, xyz)) < 0)
+        goto done;
+    gcie_xyz_to_rgb(xyz, lin);
+    float *px = job->fb->pixels + 3 * ((size_t)y * (size_t)job->fb->width + (size_t)x);
+    for (int ch = 0; ch < 3; ch++) {
+        if (!isfinite(lin[ch]) || fabs(lin[ch]) > 3.0e38) {
+            (*nonfinite)++;
+            lin[0] = lin[1] = lin[2] = 0.0;
+            break;
+        }
+    }
+    for (int ch = 0; ch < 3; ch++)
+        px[ch] = (float)lin[ch];
+done:
+    gscratch_release(c->scratch, mark);
+    return rc < 0 ? rc : G_OK;
+}
+
+void framebuffer_free(Framebuffer *fb)
+{
+    if (!fb)
+        return;
+    gmem_free(fb->pixels);
+    fb->pixels = NULL;
+}
+
+int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, RenderStats *st, GError *err)
+{
+    memset(st, 0, sizeof *st);
+    fb->pixels = NULL;
+    if (rs->width < 1 || rs->height < 1 || rs->width > 65536 || rs->height > 65536)
+        return gerror_set(err, G_ERR_INVALID, "image size %dx%d is out of range (1..65536)", rs->width, rs->height);
+    if (rs->spp < 1 || rs->spp > 65536)
+        return gerror_set(err, G_ERR_INVALID, "samples per pixel %d out of range (1..65536)", rs->spp);
+    if (rs->depth < 0 || rs->depth > 1000)
+        return gerror_set(err, G_ERR_INVALID, "depth %d out of range (0..1000)", rs->depth);
+    if (!(rs->cutoff >= 0.0 && rs->cutoff <= 1.0))
+        return gerror_set(err, G_ERR_INVALID, "cutoff %g out of range [0, 1]", rs->cutoff);
+    Camera cam = s->camera;
+    camera_setup(&cam, rs->width, rs->height);
+    fb->width = rs->width;
+    fb->height = rs->height;
+    fb->pixels = gmem_calloc((size_t)rs->width * (size_t)rs->height * 3, sizeof(float));
+    if (!fb->pixels)
+        return gerror_set(err, G_ERR_NOMEM, "out of memory for a %dx%d image", rs->width, rs->height);
+    Job job = {.scene = s, .cam = &cam, .fb = fb, .spp = rs->spp, .depth = rs->depth};
+    job.ntx = (rs->width + TILE - 1) / TILE;
+    int nty = (rs->height + TILE - 1) / TILE, ntiles = job.ntx * nty;
+    if (s->medium) {
+        job.media0.m[0] = s->medium;
+        job.media0.n = 1;
+    }
+    int nthreads = rs->threads > 0 ? rs->threads : omp_get_max_threads();
+    int status = G_OK;
+    uint64_t rays = 0, nonfinite = 0;
+    Progress prog;
+    progress_start(&prog, ntiles, rs->quiet);
+    double t0 = now_seconds();
+#pragma omp parallel num_threads(nthreads) reduction(+ : rays, nonfinite)
+    {
+        TraceCtx ctx = {.scene = s, .max_depth = rs->depth, .cutoff = rs->cutoff};
+        ctx.scratch = gscratch_create(0);
+        int *perm = gmem_alloc((size_t)rs->spp * sizeof(int));
+        int ok = ctx.scratch && perm && gcolor_alloc(&ctx.unit, s->model) == G_OK &&
+                 gmaterial_refraction_index(NULL, NULL, &ctx.unit) == G_OK;
+        if (!ok) {
+#pragma omp atomic write
+            status = G_ERR_NOMEM;
+        }
+#pragma omp for schedule(dynamic, 1)
+        for (int tile = 0; tile < ntiles; tile++) {
+            int st_now;
+#pragma omp atomic read
+            st_now = status;
+            if (st_now != G_OK)
+                continue;
+            int x0 = (tile % job.ntx) * TILE, y0 = (tile / job.ntx) * TILE;
+            int x1 = x0 + TILE < rs->width ? x0 + TILE : rs->width;
+            int y1 = y0 + TILE < rs->height ? y0 + TILE : rs->height;
+            int rc = G_OK;
+            for (int y = y0; y < y1 && rc == G_OK; y++)
+                for (int x = x0; x < x1 && rc == G_OK; x++)
+                    rc = render_pixel(&ctx, &job, x, y, perm, &nonfinite);
+            if (rc != G_OK) {
+#pragma omp atomic write
+                status = rc;
+            }
+#pragma omp critical(gtrace_progress)
+            progress_add(&prog, 1);
+        }
+        rays += ctx.rays;
+        gcolor_free(&ctx.unit);
+        gmem_free(perm);
+        gscratch_destroy(ctx.scratch);
+    }
+    progress_finish(&prog);
+    st->seconds = now_seconds() - t0;
+    st->rays = rays;
+    st->nonfinite = nonfinite;
+    st->threads = nthreads;
+    if (status != G_OK) {
+        framebuffer_free(fb);
+        return gerror_set(err, status, "rendering failed: %s", gstatus_string(status));
+    }
+    return G_OK;
+}

@@ -1,0 +1,188 @@
+/* scene.c - the scene: colour model, objects with their materials and transforms, lights, camera,
+ * background and ambient light. */
+#include "gtrace.h"
+
+#include <math.h>
+#include <string.h>
+
+int scene_create(const GColorModel *model, Scene **out, GError *err)
+{
+    *out = NULL;
+    Scene *s = gmem_calloc(1, sizeof *s);
+    if (!s)
+        return gerror_set(err, G_ERR_NOMEM, "out of memory creating the scene");
+    s->model = model;
+    camera_defaults(&s->camera);
+    if (gcolor_alloc(&s->background, model) != G_OK || gcolor_alloc(&s->ambient, model) != G_OK) {
+        scene_destroy(s);
+        return gerror_set(err, G_ERR_NOMEM, "out of memory creating the scene");
+    }
+    *out = s;
+    return G_OK;
+}
+
+void scene_destroy(Scene *s)
+{
+    if (!s)
+        return;
+    accel_release(s);
+    if (!s->lib) {
+        for (int i = 0; i < s->nobjects; i++)
+            object_free(s->objects[i]);
+        for (int i = 0; i < s->nlights; i++)
+            light_free(s->lights[i]);
+    }
+    gmem_free(s->objects);
+    gmem_free(s->lights);
+    gcolor_free(&s->background);
+    gcolor_free(&s->ambient);
+    gmaterial_unref(s->medium);
+    glibrary_destroy(s->lib);
+    gcolormodel_destroy(s->owned_model);
+    gmem_free(s);
+}
+
+static int grow_array(void ***items, int *cap, int n)
+{
+    if (n < *cap)
+        return G_OK;
+    int nc = *cap ? *cap * 2 : 16;
+    void **ni = gmem_realloc(*items, (size_t)nc * sizeof *ni);
+    if (!ni)
+        return G_ERR_NOMEM;
+    *items = ni;
+    *cap = nc;
+    return G_OK;
+}
+
+int scene_add_object(Scene *s, Object *o, GError *err)
+{
+    if (!o)
+        return gerror_set(err, G_ERR_NOMEM, "out of memory");
+    if (grow_array((void ***)&s->objects, &s->cap_objects, s->nobjects) != G_OK) {
+        if (!s->lib)
+            object_free(o);
+        return gerror_set(err, G_ERR_NOMEM, "out of memory adding an object");
+    }
+    s->objects[s->nobjects++] = o;
+    return G_OK;
+}
+
+int scene_add_light(Scene *s, Light *l, GError *err)
+{
+    if (!l)
+        return gerror_set(err, G_ERR_NOMEM, "out of memory");
+    if (grow_array((void ***)&s->lights, &s->cap_lights, s->nlights) != G_OK) {
+        if (!s->lib)
+            light_free(l);
+        return gerror_set(err, G_ERR_NOMEM, "out of memory adding a light");
+    }
+    s->lights[s->nlights++] = l;
+    return G_OK;
+}
+
+Object *object_new(ShapeKind kind, GMaterial *material)
+{
+    Object *o = gmem_calloc(1, sizeof *o);
+    if (!o)
+        return NULL;
+    o->kind = kind;
+    o->material = gmaterial_ref(material);
+    xform_identity(&o->xf);
+    return o;
+}
+
+void object_free(Object *o)
+{
+    if (!o)
+        return;
+    gmaterial_unref(o->material);
+    mesh_free(o->mesh);
+    gmem_free(o);
+}
+
+Light *light_new(const GColorModel *model, LightKind kind)
+{
+    Light *l = gmem_calloc(1, sizeof *l);
+    if (!l)
+        return NULL;
+    if (gcolor_alloc(&l->color, model) != G_OK) {
+        gmem_free(l);
+        return NULL;
+    }
+    l->kind = kind;
+    l->direction = gvec3(0, -1, 0);
+    l->cos_inner = cos(20.0 * M_PI / 180.0);
+    l->cos_outer = cos(30.0 * M_PI / 180.0);
+    l->samples = 16;
+    return l;
+}
+
+void light_free(Light *l)
+{
+    if (!l)
+        return;
+    gcolor_free(&l->color);
+    gmem_free(l);
+}
+
+static int finite3(GVec3 v) { return isfinite(v.x) && isfinite(v.y) && isfinite(v.z); }
+
+int object_sphere(Object *o, GVec3 center, double radius, GError *err)
+{
+    if (!finite3(center) || !(radius > 0.0) || !isfinite(radius))
+        return gerror_set(err, G_ERR_INVALID, "sphere: the radius must be positive and finite");
+    o->kind = SHAPE_SPHERE;
+    o->center = center;
+    o->radius = radius;
+    return G_OK;
+}
+
+int object_plane(Object *o, GVec3 point, GVec3 normal, GError *err)
+{
+    if (!finite3(point) || !finite3(normal) || gvec3_length(normal) == 0.0)
+        return gerror_set(err, G_ERR_INVALID, "plane: the normal must be a finite non-zero vector");
+    o->kind = SHAPE_PLANE;
+    o->center = point;
+    o->normal = gvec3_normalize(normal);
+    frame_from_normal(o->normal, &o->t1, &o->t2);
+    return G_OK;
+}
+
+int object_box(Object *o, GVec3 lo, GVec3 hi, GError *err)
+{
+    if (!finite3(lo) || !finite3(hi) || !(hi.x > lo.x && hi.y > lo.y && hi.z > lo.z))
+        return gerror_set(err, G_ERR_INVALID, "box: the second corner must be above the first in x, y and z");
+    o->kind = SHAPE_BOX;
+    o->lo = lo;
+    o->hi = hi;
+    return G_OK;
+}
+
+int object_disc(Object *o, GVec3 center, GVec3 normal, double radius, GError *err)
+{
+    if (!finite3(center) || !finite3(normal) || gvec3_length(normal) == 0.0 || !(radius > 0.0) || !isfinite(radius))
+        return gerror_set(err, G_ERR_INVALID, "disc: needs a non-zero normal and a positive radius");
+    o->kind = SHAPE_DISC;
+    o->center = center;
+    o->normal = gvec3_normalize(normal);
+    o->radius = radius;
+    frame_from_normal(o->normal, &o->t1, &o->t2);
+    return G_OK;
+}
+
+int object_cylinder(Object *o, GVec3 base, GVec3 top, double radius, int open, GError *err)
+{
+    GVec3 axis = gvec3_sub(top, base);
+    double h = gvec3_length(axis);
+    if (!finite3(base) || !finite3(top) || !(h > 0.0) || !(radius > 0.0) || !isfinite(radius))
+        return gerror_set(err, G_ERR_INVALID, "cylinder: needs distinct end points and a positive radius");
+    o->kind = SHAPE_CYLINDER;
+    o->center = base;
+    o->normal = gvec3_scale(axis, 1.0 / h);
+    o->height = h;
+    o->radius = radius;
+    o->open = open;
+    frame_from_normal(o->normal, &o->t1, &o->t2);
+    return G_OK;
+}

@@ -1,0 +1,194 @@
+/* shade.c - the paper's Fig. 4: trace a ray to its closest hit, fill the surface point, and shade it:
+ * emission, ambient, every light (light_shade), the ideal reflection traced recursively, the ideal
+ * refraction with the relative index of the media on both sides (total internal reflection is the
+ * material's refraction_dir saying "not valid"), and the absorption of the medium the ray travelled in.
+ *
+ * Adaptive depth (Hall and Greenberg 1983): before a reflected or refracted ray is traced, the material is
+ * asked what it would pass on of an illumination of 1 in every sample; the brightness of that, times the
+ * weight of the path so far, is the most the ray can contribute to its pixel per unit of radiance, and
+ * rays below the cutoff are not traced (the glass sphere's internal reflections die out after a few
+ * bounces instead of branching to the depth limit).
+ * Colours only through gcolor_*, materials only through gmaterial_*; temporaries live on the thread's
+ * scratch arena and are released before returning. */
+#include "gtrace.h"
+
+#include <math.h>
+
+GVec3 offset_origin(GVec3 p, GVec3 n, GVec3 dir)
+{
+    double scale = 1.0 + fmax(fabs(p.x), fmax(fabs(p.y), fabs(p.z)));
+    double eps = 2e-5 * scale;
+    return gvec3_madd(p, n, gvec3_dot(dir, n) >= 0.0 ? eps : -eps);
+}
+
+const GMaterial *media_top(const Media *m) { return m->n > 0 ? m->m[m->n - 1] : NULL; }
+
+/* The medium outside `mat` as seen from the stack: the entry below its top-most occurrence. */
+static const GMaterial *media_outside(const Media *m, const GMaterial *mat)
+{
+    for (int i = m->n - 1; i >= 0; i--)
+        if (m->m[i] == mat)
+            return i > 0 ? m->m[i - 1] : NULL;
+    return media_top(m);
+}
+
+/* The stack after crossing the surface of `mat` (entering pushes it, leaving removes it). */
+void media_cross(const Media *in, const GMaterial *mat, int entering, Media *out)
+{
+    *out = *in;
+    if (entering) {
+        if (out->n < MEDIA_MAX)
+            out->m[out->n++] = mat;
+        return;
+    }
+    for (int i = out->n - 1; i >= 0; i--)
+        if (out->m[i] == mat) {
+            for (int j = i; j + 1 < out->n; j++)
+                out->m[j] = out->m[j + 1];
+            out->n--;
+            return;
+        }
+}
+
+void surfpoint_fill(TraceCtx *c, const Ray *r, const Hit *h, const Media *media, GSurfPoint *sp, GVec3 *facing)
+{
+    HitGeom g;
+    if (h->obj->kind == SHAPE_MESH)
+        mesh_hit_geom(h->obj, r, h, &g);
+    else
+        shape_hit_geom(h->obj, r, h, &g);
+    gsurfpoint_init(sp, c->scene->model, c->scratch);
+    sp->point = g.p;
+    sp->object_point = g.op;
+    double dn = gvec3_dot(r->d, g.n_out);
+    sp->entering = dn < 0.0;
+    /* the geometry's normal on the incident side (interpolated for meshes with normals) */
+    GVec3 ns = sp->entering ? g.n_smooth : gvec3_neg(g.n_smooth);
+    sp->geometric_normal = ns;
+    *facing = sp->entering ? g.n_out : gvec3_neg(g.n_out);
+    sp->dpdu = g.dpdu;
+    sp->dpdv = g.dpdv;
+    sp->object_dpdu = g.odpdu;
+    sp->object_dpdv = g.odpdv;
+    sp->u = g.u;
+    sp->v = g.v;
+    sp->surface = g.surface;
+    sp->t = h->t;
+    /* ray cone: width at the hit, widened by the slant of the surface */
+    double w = r->cone_width + r->cone_spread * h->t;
+    double cosv = fmax(fabs(dn), 0.01);
+    sp->footprint = w / sqrt(cosv);
+    double area = gvec3_length(gvec3_cross(g.dpdu, g.dpdv));
+    sp->uv_footprint = area > 0.0 ? sp->footprint / sqrt(area) : 0.0;
+    sp->material = h->obj->material;
+    if (sp->entering) {
+        sp->from = media_top(media);
+        sp->to = sp->material;
+    } else {
+        sp->from = sp->material;
+        sp->to = media_outside(media, sp->material);
+    }
+}
+
+#define CHECK(expr)                                                                                                    \
+    do {                                                                                                               \
+        int rc_ = (expr);                                                                                              \
+        if (rc_ < 0) {                                                                                                 \
+            rc = rc_;                                                                                                  \
+            goto done;                                                                                                 \
+        }                                                                                                              \
+    } while (0)
+
+static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const Media *media, int depth, GColor *out)
+{
+    const Scene *s = c->scene;
+    const GMaterial *m = sp->material;
+    GScratchMark mark = gscratch_mark(c->scratch);
+    GVec3 view = r->d, to_viewer = gvec3_neg(r->d);
+    GColor tmp, illum;
+    int rc = G_OK;
+    CHECK(gcolor_scratch(&tmp, s->model, c->scratch));
+    CHECK(gcolor_scratch(&illum, s->model, c->scratch));
+
+    CHECK(gmaterial_emission(m, sp, to_viewer, out));
+    if (s->have_ambient) {
+        CHECK(gmaterial_ambient(m, sp, &s->ambient, &tmp));
+        CHECK(gcolor_add(out, out, &tmp));
+    }
+    int opaque = gmaterial_opaque(m, sp);
+    if (s->nlights > 0) {
+        LightTmp lt;
+        CHECK(light_temps(c, &lt));
+        for (int i = 0; i < s->nlights; i++)
+            CHECK(light_shade(c, s->lights[i], sp, facing, media, to_viewer, opaque, &lt, out));
+    }
+
+    if (depth < c->max_depth) {
+        double width = r->cone_width + r->cone_spread * sp->t;
+        GVec3 dir;
+        int valid;
+        CHECK(valid = gmaterial_reflection_dir(m, sp, view, &dir));
+        if (valid) {
+            CHECK(gmaterial_reflection(m, sp, dir, &c->unit, to_viewer, &tmp));
+            double w = c->weight * gcolor_brightness(&tmp);
+            if (w > 0.0 && w >= c->cutoff) {
+                Ray rr = {offset_origin(sp->point, facing, dir), dir, 0.0, INFINITY, width, r->cone_spread};
+                double saved = c->weight;
+                c->weight = w;
+                rc = trace_ray(c, &rr, media, depth + 1, &illum);
+                c->weight = saved;
+                CHECK(rc);
+                CHECK(gmaterial_reflection(m, sp, dir, &illum, to_viewer, &tmp));
+                CHECK(gcolor_add(out, out, &tmp));
+            }
+        }
+        if (!opaque) {
+            GColor n_from, n_to, ri;
+            CHECK(gcolor_scratch(&n_from, s->model, c->scratch));
+            CHECK(gcolor_scratch(&n_to, s->model, c->scratch));
+            CHECK(gcolor_scratch(&ri, s->model, c->scratch));
+            CHECK(gmaterial_refraction_index(sp->from, sp, &n_from));
+            CHECK(gmaterial_refraction_index(sp->to, sp, &n_to));
+            CHECK(gcolor_div(&ri, &n_from, &n_to));
+            CHECK(valid = gmaterial_refraction_dir(m, sp, view, &ri, &dir));
+            if (valid) { /* not valid: total internal reflection */
+                CHECK(gmaterial_refraction(m, sp, dir, &c->unit, &ri, to_viewer, &tmp));
+                double w = c->weight * gcolor_brightness(&tmp);
+                if (w > 0.0 && w >= c->cutoff) {
+                    Media next;
+                    media_cross(media, m, sp->entering, &next);
+                    Ray tr = {offset_origin(sp->point, facing, dir), dir, 0.0, INFINITY, width, r->cone_spread};
+                    double saved = c->weight;
+                    c->weight = w;
+                    rc = trace_ray(c, &tr, &next, depth + 1, &illum);
+                    c->weight = saved;
+                    CHECK(rc);
+                    CHECK(gmaterial_refraction(m, sp, dir, &illum, &ri, to_viewer, &tmp));
+                    CHECK(gcolor_add(out, out, &tmp));
+                }
+            }
+        }
+    }
+    /* absorption until the light reaches the viewer */
+    if (sp->from) {
+        CHECK(gmaterial_absorption(sp->from, sp, out, sp->t, &tmp));
+        CHECK(gcolor_copy(out, &tmp));
+    }
+done:
+    gscratch_release(c->scratch, mark);
+    if (rc < 0 && c->status == G_OK)
+        c->status = rc;
+    return rc;
+}
+
+int trace_ray(TraceCtx *c, const Ray *r, const Media *media, int depth, GColor *out)
+{
+    Hit h;
+    c->rays++;
+    if (!accel_intersect(c->scene, r, &h))
+        return gcolor_copy(out, &c->scene->background);
+    GSurfPoint sp;
+    GVec3 facing;
+    surfpoint_fill(c, r, &h, media, &sp, &facing);
+    return shade(c, r, &sp, facing, media, depth, out);
+}

@@ -1,0 +1,352 @@
+/* shapes.c - the analytic shapes in their own space: intersection in double precision, bounds, and the
+ * surface at a hit ((u,v), tangents with dpdu x dpdv along the outward normal, surface index).
+ *
+ * Surface indices: box faces 0..5 = -x, +x, -y, +y, -z, +z; cylinder 0 side, 1 base cap, 2 top cap;
+ * every other shape 0. (u,v): sphere longitude/latitude in [0,1] (v = 1 at the +y pole); plane: distance
+ * along its frame; box faces, disc and caps: [0,1] across; cylinder side: angle and height in [0,1]. */
+#include "gtrace.h"
+
+#include <math.h>
+
+static int solve_quadratic(double a, double b, double c, double *t0, double *t1)
+{
+    /* a t^2 + 2 b t + c = 0, roots in ascending order, computed without cancellation */
+    double disc = b * b - a * c;
+    if (disc < 0.0 || a == 0.0)
+        return 0;
+    double q = -(b + copysign(sqrt(disc), b));
+    double r0 = q / a, r1 = q != 0.0 ? c / q : r0;
+    *t0 = fmin(r0, r1);
+    *t1 = fmax(r0, r1);
+    return 1;
+}
+
+static int pick(double t0, double t1, double tmin, double tmax, double *t)
+{
+    if (t0 > tmin && t0 < tmax) {
+        *t = t0;
+        return 1;
+    }
+    if (t1 > tmin && t1 < tmax) {
+        *t = t1;
+        return 1;
+    }
+    return 0;
+}
+
+static int hit_sphere(const Object *o, GVec3 ro, GVec3 rd, double tmin, double tmax, double *t)
+{
+    GVec3 oc = gvec3_sub(ro, o->center);
+    double t0, t1;
+    if (!solve_quadratic(gvec3_dot(rd, rd), gvec3_dot(oc, rd), gvec3_dot(oc, oc) - o->radius * o->radius, &t0, &t1))
+        return 0;
+    return pick(t0, t1, tmin, tmax, t);
+}
+
+static int hit_plane(const Object *o, GVec3 ro, GVec3 rd, double tmin, double tmax, double *t)
+{
+    double dn = gvec3_dot(rd, o->normal);
+    if (dn == 0.0)
+        return 0;
+    double th = gvec3_dot(gvec3_sub(o->center, ro), o->normal) / dn;
+    if (!(th > tmin && th < tmax))
+        return 0;
+    GVec3 d = gvec3_sub(gvec3_madd(ro, rd, th), o->center);
+    if (fabs(gvec3_dot(d, o->t1)) > SHAPE_PLANE_EXTENT || fabs(gvec3_dot(d, o->t2)) > SHAPE_PLANE_EXTENT)
+        return 0;
+    *t = th;
+    return 1;
+}
+
+static int hit_disc_at(GVec3 c, GVec3 n, double r, GVec3 ro, GVec3 rd, double tmin, double tmax, double *t)
+{
+    double dn = gvec3_dot(rd, n);
+    if (dn == 0.0)
+        return 0;
+    double th = gvec3_dot(gvec3_sub(c, ro), n) / dn;
+    if (!(th > tmin && th < tmax))
+        return 0;
+    GVec3 d = gvec3_sub(gvec3_madd(ro, rd, th), c);
+    if (gvec3_dot(d, d) > r * r)
+        return 0;
+    *t = th;
+    return 1;
+}
+
+static int hit_box(const Object *o, GVec3 ro, GVec3 rd, double tmin, double tmax, double *t, int *surface)
+{
+    const double rov[3] = {ro.x, ro.y, ro.z}, rdv[3] = {rd.x, rd.y, rd.z};
+    const double lo[3] = {o->lo.x, o->lo.y, o->lo.z}, hi[3] = {o->hi.x, o->hi.y, o->hi.z};
+    double tn = -INFINITY, tf = INFINITY;
+    int fn = -1, ff = -1;
+    for (int a = 0; a < 3; a++) {
+        if (rdv[a] == 0.0) {
+            if (rov[a] < lo[a] || rov[a] > hi[a])
+                return 0;
+            continue;
+        }
+        double inv = 1.0 / rdv[a];
+        double ta = (lo[a] - rov[a]) * inv, tb = (hi[a] - rov[a]) * inv;
+        int fa = 2 * a, fb = 2 * a + 1;
+        if (ta > tb) {
+            double s = ta;
+            ta = tb;
+            tb = s;
+            fa = 2 * a + 1;
+            fb = 2 * a;
+        }
+        if (ta > tn) {
+            tn = ta;
+            fn = fa;
+        }
+        if (tb < tf) {
+            tf = tb;
+            ff = fb;
+        }
+    }
+    if (tn > tf)
+        return 0;
+    if (tn > tmin && tn < tmax && fn >= 0) {
+        *t = tn;
+        *surface = fn;
+        return 1;
+    }
+    if (tf > tmin && tf < tmax && ff >= 0) {
+        *t = tf;
+        *surface = ff;
+        return 1;
+    }
+    return 0;
+}
+
+static int hit_cylinder(const Object *o, GVec3 ro, GVec3 rd, double tmin, double tmax, double *t, int *surface)
+{
+    GVec3 oc = gvec3_sub(ro, o->center);
+    /* local coordinates: x along t1, y along t2, z along the axis */
+    double ox = gvec3_dot(oc, o->t1), oy = gvec3_dot(oc, o->t2), oz = gvec3_dot(oc, o->normal);
+    double dx = gvec3_dot(rd, o->t1), dy = gvec3_dot(rd, o->t2), dz = gvec3_dot(rd, o->normal);
+    int found = 0;
+    double best = tmax, t0, t1;
+    if (solve_quadratic(dx * dx + dy * dy, ox * dx + oy * dy, ox * ox + oy * oy - o->radius * o->radius, &t0, &t1)) {
+        const double cand[2] = {t0, t1};
+        for (int i = 0; i < 2; i++) {
+            double z = oz + dz * cand[i];
+            if (cand[i] > tmin && cand[i] < best && z >= 0.0 && z <= o->height) {
+                best = cand[i];
+                *surface = 0;
+                found = 1;
+                break;
+            }
+        }
+    }
+    if (!o->open) {
+        double tc;
+        if (hit_disc_at(o->center, o->normal, o->radius, ro, rd, tmin, best, &tc)) {
+            best = tc;
+            *surface = 1;
+            found = 1;
+        }
+        if (hit_disc_at(gvec3_madd(o->center, o->normal, o->height), o->normal, o->radius, ro, rd, tmin, best, &tc)) {
+            best = tc;
+            *surface = 2;
+            found = 1;
+        }
+    }
+    if (found)
+        *t = best;
+    return found;
+}
+
+int shape_intersect(const Object *o, GVec3 ro, GVec3 rd, double tmin, double tmax, double *t, int *surface)
+{
+    *surface = 0;
+    switch (o->kind) {
+    case SHAPE_SPHERE:
+        return hit_sphere(o, ro, rd, tmin, tmax, t);
+    case SHAPE_PLANE:
+        return hit_plane(o, ro, rd, tmin, tmax, t);
+    case SHAPE_BOX:
+        return hit_box(o, ro, rd, tmin, tmax, t, surface);
+    case SHAPE_DISC:
+        return hit_disc_at(o->center, o->normal, o->radius, ro, rd, tmin, tmax, t);
+    case SHAPE_CYLINDER:
+        return hit_cylinder(o, ro, rd, tmin, tmax, t, surface);
+    case SHAPE_MESH:
+        break;
+    }
+    return 0;
+}
+
+static void bounds_grow(GVec3 *lo, GVec3 *hi, GVec3 p)
+{
+    *lo = gvec3(fmin(lo->x, p.x), fmin(lo->y, p.y), fmin(lo->z, p.z));
+    *hi = gvec3(fmax(hi->x, p.x), fmax(hi->y, p.y), fmax(hi->z, p.z));
+}
+
+/* bounds of a disc of radius r around c in the plane spanned by a, b */
+static void disc_bounds(GVec3 c, GVec3 a, GVec3 b, double r, GVec3 *lo, GVec3 *hi)
+{
+    for (int i = 0; i < 4; i++) {
+        double sa = (i & 1) ? r : -r, sb = (i & 2) ? r : -r;
+        bounds_grow(lo, hi, gvec3_madd(gvec3_madd(c, a, sa), b, sb));
+    }
+}
+
+void shape_bounds(const Object *o, GVec3 *lo, GVec3 *hi)
+{
+    *lo = gvec3(INFINITY, INFINITY, INFINITY);
+    *hi = gvec3(-INFINITY, -INFINITY, -INFINITY);
+    switch (o->kind) {
+    case SHAPE_SPHERE: {
+        GVec3 r = gvec3(o->radius, o->radius, o->radius);
+        *lo = gvec3_sub(o->center, r);
+        *hi = gvec3_add(o->center, r);
+        break;
+    }
+    case SHAPE_PLANE:
+        disc_bounds(o->center, o->t1, o->t2, SHAPE_PLANE_EXTENT, lo, hi);
+        break;
+    case SHAPE_BOX:
+        *lo = o->lo;
+        *hi = o->hi;
+        break;
+    case SHAPE_DISC:
+        disc_bounds(o->center, o->t1, o->t2, o->radius, lo, hi);
+        break;
+    case SHAPE_CYLINDER:
+        disc_bounds(o->center, o->t1, o->t2, o->radius, lo, hi);
+        disc_bounds(gvec3_madd(o->center, o->normal, o->height), o->t1, o->t2, o->radius, lo, hi);
+        break;
+    case SHAPE_MESH:
+        for (int i = 0; i < o->mesh->nverts; i++)
+            bounds_grow(lo, hi, gvec3(o->mesh->pos[3 * i], o->mesh->pos[3 * i + 1], o->mesh->pos[3 * i + 2]));
+        break;
+    }
+}
+
+static double wrap01(double x) { return x - floor(x); }
+
+/* Surface in object space: point (refined onto the shape), outward normal, tangents, (u,v). */
+static void local_geom(const Object *o, int surface, GVec3 *p, GVec3 *n, GVec3 *dpdu, GVec3 *dpdv, double *u,
+                       double *v)
+{
+    switch (o->kind) {
+    case SHAPE_SPHERE: {
+        GVec3 l = gvec3_normalize(gvec3_sub(*p, o->center));
+        *p = gvec3_madd(o->center, l, o->radius);
+        *n = l;
+        double cy = fmax(-1.0, fmin(1.0, l.y)), theta = acos(cy), st = sin(theta);
+        double phi = atan2(-l.z, l.x);
+        *u = wrap01(phi / (2.0 * M_PI));
+        *v = 1.0 - theta / M_PI;
+        double r = o->radius;
+        if (st < 1e-9) { /* at a pole: any tangent frame */
+            frame_from_normal(l, dpdu, dpdv);
+            *dpdu = gvec3_scale(*dpdu, 2.0 * M_PI * r);
+            *dpdv = gvec3_scale(*dpdv, M_PI * r);
+        } else {
+            double cp = l.x / st, sp = -l.z / st;
+            *dpdu = gvec3(-2.0 * M_PI * r * st * sp, 0.0, -2.0 * M_PI * r * st * cp);
+            *dpdv = gvec3(-M_PI * r * cy * cp, M_PI * r * st, M_PI * r * cy * sp);
+        }
+        break;
+    }
+    case SHAPE_PLANE: {
+        GVec3 d = gvec3_sub(*p, o->center);
+        *p = gvec3_madd(*p, o->normal, -gvec3_dot(d, o->normal));
+        *n = o->normal;
+        *u = gvec3_dot(d, o->t1);
+        *v = gvec3_dot(d, o->t2);
+        *dpdu = o->t1;
+        *dpdv = o->t2;
+        break;
+    }
+    case SHAPE_DISC: {
+        GVec3 d = gvec3_sub(*p, o->center);
+        *p = gvec3_madd(*p, o->normal, -gvec3_dot(d, o->normal));
+        *n = o->normal;
+        double w = 2.0 * o->radius;
+        *u = 0.5 + gvec3_dot(d, o->t1) / w;
+        *v = 0.5 + gvec3_dot(d, o->t2) / w;
+        *dpdu = gvec3_scale(o->t1, w);
+        *dpdv = gvec3_scale(o->t2, w);
+        break;
+    }
+    case SHAPE_BOX: {
+        GVec3 s = gvec3_sub(o->hi, o->lo), q = *p;
+        int axis = surface / 2, positive = surface & 1;
+        double face = positive ? (&o->hi.x)[axis] : (&o->lo.x)[axis];
+        (&q.x)[axis] = face;
+        *p = q;
+        *n = gvec3(0, 0, 0);
+        (&n->x)[axis] = positive ? 1.0 : -1.0;
+        double fx = (q.x - o->lo.x) / s.x, fy = (q.y - o->lo.y) / s.y, fz = (q.z - o->lo.z) / s.z;
+        switch (surface) {
+        case 0: *u = fz; *v = fy; *dpdu = gvec3(0, 0, s.z); *dpdv = gvec3(0, s.y, 0); break;
+        case 1: *u = 1 - fz; *v = fy; *dpdu = gvec3(0, 0, -s.z); *dpdv = gvec3(0, s.y, 0); break;
+        case 2: *u = fx; *v = fz; *dpdu = gvec3(s.x, 0, 0); *dpdv = gvec3(0, 0, s.z); break;
+        case 3: *u = fx; *v = 1 - fz; *dpdu = gvec3(s.x, 0, 0); *dpdv = gvec3(0, 0, -s.z); break;
+        case 4: *u = 1 - fx; *v = fy; *dpdu = gvec3(-s.x, 0, 0); *dpdv = gvec3(0, s.y, 0); break;
+        default: *u = fx; *v = fy; *dpdu = gvec3(s.x, 0, 0); *dpdv = gvec3(0, s.y, 0); break;
+        }
+        break;
+    }
+    case SHAPE_CYLINDER: {
+        GVec3 d = gvec3_sub(*p, o->center);
+        double x = gvec3_dot(d, o->t1), y = gvec3_dot(d, o->t2), z = gvec3_dot(d, o->normal);
+        double r = o->radius, w = 2.0 * r;
+        if (surface == 0) {
+            double l = hypot(x, y);
+            if (l > 0.0) {
+                x *= r / l;
+                y *= r / l;
+            }
+            *p = gvec3_madd(gvec3_madd(gvec3_madd(o->center, o->t1, x), o->t2, y), o->normal, z);
+            *n = gvec3_normalize(gvec3_add(gvec3_scale(o->t1, x), gvec3_scale(o->t2, y)));
+            *u = wrap01(atan2(y, x) / (2.0 * M_PI));
+            *v = o->height > 0.0 ? z / o->height : 0.0;
+            *dpdu = gvec3_scale(gvec3_sub(gvec3_scale(o->t2, x), gvec3_scale(o->t1, y)), 2.0 * M_PI);
+            *dpdv = gvec3_scale(o->normal, o->height);
+        } else {
+            double zc = surface == 2 ? o->height : 0.0;
+            *p = gvec3_madd(gvec3_madd(gvec3_madd(o->center, o->t1, x), o->t2, y), o->normal, zc);
+            double sgn = surface == 2 ? 1.0 : -1.0;
+            *n = gvec3_scale(o->normal, sgn);
+            *u = 0.5 + sgn * x / w;
+            *v = 0.5 + y / w;
+            *dpdu = gvec3_scale(o->t1, sgn * w);
+            *dpdv = gvec3_scale(o->t2, w);
+        }
+        break;
+    }
+    case SHAPE_MESH:
+        break;
+    }
+}
+
+void shape_hit_geom(const Object *o, const Ray *r, const Hit *h, HitGeom *g)
+{
+    GVec3 pw = gvec3_madd(r->o, r->d, h->t);
+    GVec3 op = o->has_xf ? xform_inv_point(&o->xf, pw) : pw;
+    GVec3 n = gvec3(0, 0, 1), dpdu = gvec3(1, 0, 0), dpdv = gvec3(0, 1, 0);
+    double u = 0.0, v = 0.0;
+    local_geom(o, h->surface, &op, &n, &dpdu, &dpdv, &u, &v);
+    g->op = op;
+    g->surface = h->surface;
+    g->u = u;
+    g->v = v;
+    g->odpdu = dpdu;
+    g->odpdv = dpdv;
+    if (o->has_xf) {
+        g->p = xform_point(&o->xf, op);
+        g->n_out = gvec3_normalize(xform_normal(&o->xf, n));
+        g->dpdu = xform_vector(&o->xf, dpdu);
+        g->dpdv = xform_vector(&o->xf, dpdv);
+    } else {
+        g->p = op;
+        g->n_out = n;
+        g->dpdu = dpdu;
+        g->dpdv = dpdv;
+    }
+    g->n_smooth = g->n_out;
+}

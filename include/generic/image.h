@@ -1,0 +1,82 @@
+/* image.h - reading and writing images (the library's one OpenImageIO shim, lib/image.cpp).
+ *
+ * Pixels in memory are always linear float values, stored row by row from the top row down and left to
+ * right, channels interleaved: pixel (x, y) channel c is pixels[(y * width + x) * channels + c].
+ *
+ * Reading accepts every format OpenImageIO reads (EXR, HDR, PFM, TIFF, PNG, JPEG, ...). The result has
+ * 3 channels (RGB) or 4 (RGBA): grey images are expanded to RGB, files with an alpha channel keep it as
+ * channel 3 unless GIMAGE_READ_RGB is given, extra channels are dropped. Integer files whose colour
+ * space is sRGB (what OpenImageIO reports for 8-bit PNG and JPEG, and what gimage_write stores) are
+ * decoded to linear values unless GIMAGE_READ_RAW is given; float files are taken as linear. Alpha is
+ * never decoded. Alpha is passed through as the file stores it, without (un)premultiplying: straight for
+ * 8-bit formats (PNG, TIFF, ...), premultiplied by the usual convention of EXR.
+ *
+ * Writing picks the encoding from the file name's extension:
+ *   .exr .hdr .pfm                      linear float (EXR: 32-bit float, exact);
+ *   anything else (.png .jpg .jpeg .tif .tiff .bmp .tga ...)
+ *                                       8 bits per channel, sRGB encoded after the exposure, clamped
+ *                                       to [0, 1] (alpha is clamped, not encoded).
+ * A write goes to a temporary file in the destination's directory which is renamed over the destination
+ * only when it is complete: a failed write leaves no partial file behind and keeps an existing file.
+ *
+ * Errors return a negative status (error.h) and put OpenImageIO's own message into the GError. All
+ * functions are thread safe for distinct images. */
+#ifndef GENERIC_IMAGE_H
+#define GENERIC_IMAGE_H
+
+#include "error.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** A float image; see the top of this file for the layout. */
+typedef struct GImage {
+    int width;
+    int height;
+    int channels;  /**< 1..4 for writing; gimage_read gives 3 or 4 */
+    float *pixels; /**< width * height * channels floats, from gmem_alloc; owned by the image */
+} GImage;
+
+/** Flags for gimage_read (combine with |). */
+enum {
+    GIMAGE_READ_RAW = 1 << 0,  /**< keep the file's values: no sRGB decoding of integer files */
+    GIMAGE_READ_RGB = 1 << 1,  /**< always 3 channels: drop alpha */
+    GIMAGE_READ_RGBA = 1 << 2  /**< always 4 channels: alpha 1 where the file has none */
+};
+
+/** Options for gimage_write; NULL or a zeroed struct means exposure 0. */
+typedef struct GImageWriteOptions {
+    double exposure; /**< in stops: colour channels are multiplied by 2^exposure before encoding (all formats) */
+} GImageWriteOptions;
+
+/** Allocates a black image of the given size (channels 1..4); G_ERR_INVALID for bad sizes,
+ * G_ERR_NOMEM when the allocation fails. */
+int gimage_create(GImage *img, int width, int height, int channels, GError *err);
+
+/** Frees the pixels and zeroes the struct; NULL, or an image already freed, is a no-op. */
+void gimage_free(GImage *img);
+
+/** Reads the first subimage of a file into img (which is overwritten, not freed first). flags: GIMAGE_READ_*.
+ * G_ERR_IO when the file cannot be opened or decoded (the message names the file and gives OpenImageIO's
+ * reason), G_ERR_NOMEM when out of memory. On failure img is zeroed. */
+int gimage_read(const char *path, unsigned flags, GImage *img, GError *err);
+
+/** Reads only the size and channel count of a file (channels as the file has them, 1..n). */
+int gimage_info(const char *path, int *width, int *height, int *channels, GError *err);
+
+/** Writes img to path, encoding chosen by the extension (see the top of this file); the file appears
+ * complete or not at all. G_ERR_INVALID for a bad image, G_ERR_IO when the format is unknown or the
+ * write fails. */
+int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *opt, GError *err);
+
+/** The sRGB transfer function (IEC 61966-2-1): linear value in [0, 1] to its encoded value. */
+double gimage_srgb_encode(double linear);
+
+/** The inverse of gimage_srgb_encode. */
+double gimage_srgb_decode(double encoded);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

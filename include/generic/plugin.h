@@ -1,0 +1,80 @@
+/* plugin.h - run-time modules: a shared object that registers colour models, colour literal types, materials,
+ * texture nodes or generators (any GKind) while it loads.
+ *
+ * A module exports exactly two symbols (see examples/plugins/ for a complete one):
+ *
+ *     #include <generic/plugin.h>
+ *     GENERIC_MODULE_EXPORT const int generic_module_abi = GMODULE_ABI_VERSION;
+ *     GENERIC_MODULE_EXPORT int generic_module_init(GModuleApi *api, GError *err)
+ *     {
+ *         static const GTypeInfo mine = {GKIND_MATERIAL, "oren_nayar", &my_class, my_parse, "rough diffuse", NULL};
+ *         return api->add_type(api, &mine, err);
+ *     }
+ *
+ * The loader (gplugin_load, or a `plugin "file.so"` statement in a text file) opens the module with
+ * dlopen(RTLD_NOW | RTLD_LOCAL), refuses a module whose generic_module_abi differs from the library's
+ * GMODULE_ABI_VERSION (the message states both), and calls generic_module_init. Types added through
+ * api->add_type are collected and registered together when init returns 0; if init fails, or one of the names is
+ * taken already, none is registered and the module is closed again. Registration is only possible during init.
+ *
+ * A module is built against the installed headers only and is not linked with libgeneric: the library's
+ * functions are resolved from the program that loads it (programs link libgeneric.so, or the static library
+ * with -rdynamic). A loaded module stays loaded for the life of the process (its types stay registered); loading
+ * the same file again does nothing. */
+#ifndef GENERIC_PLUGIN_H
+#define GENERIC_PLUGIN_H
+
+#include "error.h"
+#include "registry.h"
+#include "color.h"
+#include "material.h"
+#include "reader.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Version of the module interface: GModuleApi, GTypeInfo, GParseFn, the reader API and the vtables of every
+ * kind. Raised whenever any of them changes incompatibly. */
+#define GMODULE_ABI_VERSION 1
+
+/** Name of the exported `const int` holding the module's GMODULE_ABI_VERSION. */
+#define GMODULE_ABI_SYMBOL "generic_module_abi"
+/** Name of the exported GModuleInitFn. */
+#define GMODULE_INIT_SYMBOL "generic_module_init"
+
+/** Marks the two symbols a module exports (visible even when the module is built with -fvisibility=hidden). */
+#if defined(__GNUC__)
+#define GENERIC_MODULE_EXPORT __attribute__((visibility("default")))
+#else
+#define GENERIC_MODULE_EXPORT
+#endif
+
+typedef struct GModuleApi GModuleApi;
+
+/** What the loader hands to generic_module_init. */
+struct GModuleApi {
+    int abi_version;          /**< the library's GMODULE_ABI_VERSION */
+    int color_abi_version;    /**< the library's GCOLOR_ABI_VERSION */
+    int material_abi_version; /**< the library's GMATERIAL_ABI_VERSION */
+    const char *path;         /**< the module's file */
+    /** Adds a type (copied; its strings, vtable and functions must live in the module). Only valid during
+     * generic_module_init; the types are registered when init succeeds. */
+    int (*add_type)(GModuleApi *api, const GTypeInfo *info, GError *err);
+    void *priv; /**< the loader's */
+};
+
+/** The module's entry point: registers its types through api->add_type; 0 on success. */
+typedef int (*GModuleInitFn)(GModuleApi *api, GError *err);
+
+/** Loads a module: G_ERR_IO with the dlerror() text when it cannot be opened or lacks a symbol, G_ERR_VERSION
+ * when it was built for another GMODULE_ABI_VERSION, the init's status when that fails, G_ERR_EXISTS when it
+ * registers a name taken already. Loading the same file twice is a no-op. Thread safe. */
+int gplugin_load(const char *path, GError *err);
+/** Number of modules loaded so far. */
+int gplugin_count(void);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

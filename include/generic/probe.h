@@ -1,0 +1,215 @@
+/* probe.h - HDR light probes and their approximation by directional lights (lib/probe/).
+ *
+ * After Madsen & Laursen, "A Comparison of Techniques for Approximating Full Image-Based Lighting"
+ * (../shared/papers/). Probe pixels are linear RGB radiance; everything here works per RGB channel.
+ *
+ * Direction convention (the one used by every function here, by gprobe and by the lights it writes):
+ *   z is up (the zenith). A direction is a unit vector from the probe's centre towards where the light
+ *   comes from:   omega(theta, phi) = (sin theta cos phi, sin theta sin phi, cos theta),
+ *   theta in [0, pi] measured from +z, phi in [0, 2 pi) measured from +x towards +y (the paper's sec. 3.1).
+ * Latitude-longitude images (width = 2 * height): pixel (u, v), row v = 0 at the top, is centred on
+ *   theta = pi (v + 0.5) / H and phi = 2 pi (u + 0.5) / W. Row 0 touches the zenith, the middle of the image
+ *   is the horizon, column 0 starts at phi = 0 (+x) and phi grows to the right.
+ * Angular maps (Debevec's "light probe" form, a D x D image): the disc's centre looks along -x (the
+ *   direction at the middle of the lat-long image), up in the image is +z and right is -y, and a point at
+ *   distance r from the centre (in units of the disc's radius) lies at the angle pi r from -x, so the rim is
+ *   +x. Pixels outside the disc are ignored. Lat-long and angular images of one probe thus show the scene
+ *   the same way round.
+ *
+ * Irradiance. Pixel (u, v) with radiance P is a small source of weight
+ *   Q(u, v) = 2 pi^2 P(u, v) sin(theta_v) / (W H)          (the paper's Eq. 4, at the pixel centre),
+ * the irradiance it gives a surface facing it; the ground truth for a normal n is
+ *   E(n) = sum over pixels of Q(u, v) max(0, n . omega(u, v)).
+ * A directional light (GProbeLight) is described the same way: `rgb` is the irradiance on a surface facing
+ * it, so it adds rgb * max(0, n . dir) to E(n) (the paper's Eq. 5 with L_i A = rgb).
+ *
+ * Thread safety: a GProbe is read-only after creation and may be shared between threads; the functions
+ * use OpenMP threads internally where it pays. */
+#ifndef GENERIC_PROBE_H
+#define GENERIC_PROBE_H
+
+#include "error.h"
+#include "image.h"
+#include "vec.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** A light probe held as a latitude-longitude image of linear RGB radiance (opaque). */
+typedef struct GProbe GProbe;
+
+/** How an image file maps to directions. */
+typedef enum GProbeFormat {
+    GPROBE_AUTO = 0,    /**< 2:1 images are lat-long, square ones angular maps; anything else is refused */
+    GPROBE_LATLONG = 1, /**< latitude-longitude, width = 2 * height */
+    GPROBE_ANGULAR = 2  /**< Debevec's angular map, square */
+} GProbeFormat;
+
+/* ---- creation ---- */
+
+/** Creates a lat-long probe from `rgb` (width * height * 3 floats, rows from the zenith down; NULL gives a
+ * black probe). width must be 2 * height, height >= 2. Negative, NaN and infinite values are set to 0
+ * (see gprobe_clamped_count). */
+int gprobe_create(int width, int height, const float *rgb, GProbe **out, GError *err);
+
+/** Loads a probe from any image OpenImageIO reads (EXR, HDR, PFM, TIFF, ...). `format` says how to read it
+ * (GPROBE_AUTO decides by the aspect ratio); an angular map is resampled to a lat-long probe of `height`
+ * rows (0: half the map's size). Clear errors for unreadable files and for images of the wrong shape. */
+int gprobe_load(const char *path, GProbeFormat format, int height, GProbe **out, GError *err);
+
+/** Makes a lat-long probe of `height` rows (0: half the map's size) from an angular map (RGB or RGBA). */
+int gprobe_from_angular(const GImage *map, int height, GProbe **out, GError *err);
+
+/** Frees a probe; NULL is a no-op. */
+void gprobe_destroy(GProbe *p);
+
+/* ---- access ---- */
+
+/** Width of the lat-long image (2 * height). */
+int gprobe_width(const GProbe *p);
+/** Height of the lat-long image. */
+int gprobe_height(const GProbe *p);
+/** The radiance P, 3 floats per pixel, rows from the zenith down. */
+const float *gprobe_pixels(const GProbe *p);
+/** The pixel weights Q (see the top of this file), 3 floats per pixel. */
+const float *gprobe_weights(const GProbe *p);
+/** Number of pixels that had a negative, NaN or infinite value set to 0 when the probe was made. */
+long gprobe_clamped_count(const GProbe *p);
+
+/** Direction of a point of the lat-long image in pixel units (u + 0.5, v + 0.5 is the centre of pixel u, v). */
+GVec3 gprobe_direction(const GProbe *p, double x, double y);
+/** Position of a direction in the lat-long image in pixel units (the inverse of gprobe_direction);
+ * dir need not be normalised. */
+void gprobe_position(const GProbe *p, GVec3 dir, double *x, double *y);
+/** Radiance arriving from a direction, bilinear between pixel centres (dir need not be normalised). */
+void gprobe_radiance(const GProbe *p, GVec3 dir, float rgb[3]);
+/** Integrated power: the sum of P times each pixel's exact solid angle (per channel). */
+void gprobe_power(const GProbe *p, double rgb[3]);
+
+/* ---- conversion and rotation ---- */
+
+/** Renders the probe as a D x D angular map (RGB; black outside the disc), supersampled per pixel. */
+int gprobe_to_angular(const GProbe *p, int size, GImage *out, GError *err);
+/** The probe as a lat-long RGB image (a copy of the pixels). */
+int gprobe_to_image(const GProbe *p, GImage *out, GError *err);
+/** Writes the probe to a file in the given form (GPROBE_AUTO: lat-long); angular maps are H x H. */
+int gprobe_save(const GProbe *p, const char *path, GProbeFormat format, GError *err);
+/** A new probe showing the environment turned by the rotation matrix R (row-major, 3x3): radiance that came
+ * from direction d now comes from R d. Resampled bilinearly (supersampled) except for turns about z by whole
+ * pixels, which are exact. */
+int gprobe_rotate(const GProbe *p, const double R[9], GProbe **out, GError *err);
+/** Fills R with the rotation by the given angles in degrees about x, then y, then z (R = Rz Ry Rx). */
+void gprobe_rotation_xyz(double x_deg, double y_deg, double z_deg, double R[9]);
+
+/* ---- irradiance ---- */
+
+/** Fills normals[0..m-1] with unit vectors spread evenly over the sphere (a Fibonacci lattice). */
+void gprobe_fibonacci(int m, GVec3 *normals);
+
+/** Ground-truth irradiance E (3 doubles per normal) at m normals: the full sum over pixels (Eq. 4), exact
+ * up to rounding. Each row of the probe is a circle of directions; the visible arc for a normal is found in
+ * closed form and summed with per-row prefix sums, so the cost is O(W H + m H) instead of O(m W H). */
+int gprobe_irradiance(const GProbe *p, const GVec3 *normals, int m, double *E, GError *err);
+
+/** The same sum pixel by pixel (O(m W H)); a reference for tests and benchmarks. */
+int gprobe_irradiance_direct(const GProbe *p, const GVec3 *normals, int m, double *E, GError *err);
+
+/** A directional light: direction towards it (unit) and the irradiance it gives a surface facing it. */
+typedef struct GProbeLight {
+    GVec3 dir;
+    double rgb[3];
+} GProbeLight;
+
+/** Irradiance E (3 doubles per normal) that n lights give at m normals. */
+void gprobe_lights_irradiance(const GProbeLight *lights, int n, const GVec3 *normals, int m, double *E);
+
+/** Approximation errors against the ground truth, in percent. For each channel the mean and the maximum
+ * over the normals are taken, then averaged over R, G, B (the paper's Fig. 6 measure). */
+typedef struct GProbeErrors {
+    double mean_rel;  /**< |E' - E| / E per normal and channel (the paper's measure) */
+    double max_rel;
+    double mean_norm; /**< |E' - E| / max over normals of E (normalised by the largest irradiance) */
+    double max_norm;
+} GProbeErrors;
+
+/** Compares approximate irradiances with the ground truth at m normals (3 doubles each). Normals whose
+ * true irradiance is below 1e-6 of the channel's maximum are left out of the relative measure. */
+void gprobe_compare(const double *truth, const double *approx, int m, GProbeErrors *out);
+
+/* ---- approximation techniques ---- */
+
+/** The techniques, one file each in lib/probe/. */
+typedef enum GProbeTechnique {
+    GPROBE_MEDIANCUT = 0, /**< Debevec's median cut: 2^k lights */
+    GPROBE_ADAPTIVE,      /**< adaptive median cut: any count */
+    GPROBE_KMEANS,        /**< LightGen-style energy-weighted k-means */
+    GPROBE_IRRADIANCE,    /**< irradiance optimisation (Madsen et al. 2003) */
+    GPROBE_TECHNIQUE_COUNT
+} GProbeTechnique;
+
+/** Keyword of a technique: "mediancut", "adaptive", "kmeans", "irradiance". */
+const char *gprobe_technique_name(GProbeTechnique t);
+/** Technique for a keyword; G_ERR_NOTFOUND (message lists the names) for unknown ones. */
+int gprobe_technique_parse(const char *name, GProbeTechnique *t, GError *err);
+
+/** Progress report: stage name and completed fraction 0..1; called from the calling thread. */
+typedef void (*GProbeProgress)(void *user, const char *stage, double fraction);
+
+/** Options for the techniques; a zeroed struct (or NULL) takes every default. */
+typedef struct GProbeOptions {
+    int fit_normals;     /**< irradiance: normals the fit uses (0: 2000) */
+    int max_iterations;  /**< irradiance: Levenberg-Marquardt iterations (0: 400); kmeans: Lloyd rounds (0: 60) */
+    GProbeProgress progress;
+    void *user;
+} GProbeOptions;
+
+/** What the irradiance optimisation did (optional output of gprobe_irradiance_fit). The objective is the
+ * sum over fit normals and channels of ((E' - E) / E)^2. */
+typedef struct GProbeFitReport {
+    double initial;     /**< objective of the initial lights (adaptive median cut, colours as cut) */
+    double projected;   /**< after the first non-negative least-squares fit of the colours */
+    double final;       /**< at the end */
+    int iterations;     /**< Levenberg-Marquardt iterations run */
+    int accepted;       /**< steps that lowered the objective */
+    int active;         /**< lights with non-zero colour at the end */
+    int converged;      /**< 1 when the iteration stopped by its convergence test, 0 at the iteration limit */
+} GProbeFitReport;
+
+/** Approximates the probe by n directional lights with a technique (median cut needs n a power of 2).
+ * lights must hold n entries; lights without energy get rgb = 0 and still fill a slot. */
+int gprobe_approximate(const GProbe *p, GProbeTechnique t, int n, const GProbeOptions *opt, GProbeLight *lights,
+                       GError *err);
+
+/** Median cut (Debevec 2005): n = 2^k regions split along their longest side (width weighted by
+ * sin theta) where the energy (luminance of Q) halves; a light at each region's energy centroid with the
+ * region's summed Q. */
+int gprobe_median_cut(const GProbe *p, int n, GProbeLight *lights, GError *err);
+/** Adaptive median cut: the same splits, one region at a time, always the one with the largest
+ * energy-weighted angular spread, until there are n regions. */
+int gprobe_adaptive_median_cut(const GProbe *p, int n, GProbeLight *lights, GError *err);
+/** LightGen-style clustering: spherical k-means of the pixel directions weighted by energy, seeded
+ * deterministically (k-means++ from a fixed seed); each light carries its cluster's summed Q. */
+int gprobe_kmeans(const GProbe *p, int n, const GProbeOptions *opt, GProbeLight *lights, GError *err);
+/** Irradiance optimisation: n lights fitted to the ground-truth irradiance at fit normals (see
+ * lib/probe/optimize.c for the method); report may be NULL. */
+int gprobe_irradiance_fit(const GProbe *p, int n, const GProbeOptions *opt, GProbeLight *lights,
+                          GProbeFitReport *report, GError *err);
+
+/* ---- spherical harmonics reference ---- */
+
+/** Nine spherical-harmonic coefficients of the radiance per channel (Ramamoorthi & Hanrahan 2001), in the
+ * order (l, m) = (0,0) (1,-1) (1,0) (1,1) (2,-2) (2,-1) (2,0) (2,1) (2,2). */
+typedef struct GProbeSH9 {
+    double c[9][3];
+} GProbeSH9;
+
+/** Projects the probe's radiance onto the nine harmonics (sums of Q times the basis). */
+void gprobe_sh9_project(const GProbe *p, GProbeSH9 *sh);
+/** Irradiance the nine coefficients give at m normals (3 doubles each). */
+void gprobe_sh9_irradiance(const GProbeSH9 *sh, const GVec3 *normals, int m, double *E);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,36 @@
+/* lexer.h - tokenizer of the text format (private to lib/; the token types are public in reader.h). */
+#ifndef GENERIC_LIB_LEXER_H
+#define GENERIC_LIB_LEXER_H
+
+#include <stddef.h>
+#include "generic/error.h"
+#include "generic/reader.h"
+
+/** Longest token text, including the terminating NUL. */
+#define GLEX_TEXT_MAX 4096
+
+/** A token with its own text storage. */
+typedef struct GLexToken {
+    GToken tok;
+    char text[GLEX_TEXT_MAX];
+} GLexToken;
+
+/** Scanner state over a text that outlives it. */
+typedef struct GLexer {
+    const char *name; /**< file name used in messages */
+    const char *src;
+    size_t len, pos;
+    int line, col;
+} GLexer;
+
+/** Starts scanning text of len bytes; name is used in messages. */
+void glexer_init(GLexer *lx, const char *name, const char *text, size_t len);
+/** Scans the next token into out (tok.text points into out->text); on a lexical error fills err with
+ * "name:line:col: message" and returns G_ERR_PARSE. At the end returns GTOK_EOF tokens forever. */
+int glexer_next(GLexer *lx, GLexToken *out, GError *err);
+/** strtod in the C locale, whatever the program's LC_NUMERIC (files always use '.' as decimal point). */
+double glex_strtod(const char *s, char **end);
+/** A short printable description of a token for messages ("'abc'", "number 1.5", "end of file"). */
+void glexer_describe(const GToken *tok, char *buf, size_t size);
+
+#endif

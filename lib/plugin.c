@@ -1,0 +1,151 @@
+/* plugin.c - loads run-time modules with dlopen and registers the types they add while they initialise. */
+#include "generic/plugin.h"
+#include "generic/memory.h"
+
+#include <dlfcn.h>
+#include <pthread.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAX_TYPES 256
+
+typedef struct Module {
+    struct Module *next;
+    char *real; /* canonical path */
+    void *handle;
+} Module;
+
+typedef struct Pending {
+    GTypeInfo types[MAX_TYPES];
+    int count;
+    int open; /* add_type is allowed */
+} Pending;
+
+static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
+static Module *modules;
+static int nmodules;
+
+static int add_type(GModuleApi *api, const GTypeInfo *info, GError *err)
+{
+    Pending *p = api ? api->priv : NULL;
+    if (!p || !p->open)
+        return gerror_set(err, G_ERR_INVALID, "types can only be registered while a module initialises");
+    if (!info || !info->name || !info->name[0] || (unsigned)info->kind >= GKIND_COUNT)
+        return gerror_set(err, G_ERR_INVALID, "module '%s' registers an invalid type", api->path);
+    if (p->count == MAX_TYPES)
+        return gerror_set(err, G_ERR_INVALID, "module '%s' registers more than %d types", api->path, MAX_TYPES);
+    for (int i = 0; i < p->count; i++)
+        if (p->types[i].kind == info->kind && strcmp(p->types[i].name, info->name) == 0)
+            return gerror_set(err, G_ERR_EXISTS, "module '%s' registers %s type '%s' twice", api->path,
+                              gkind_name(info->kind), info->name);
+    p->types[p->count++] = *info;
+    return G_OK;
+}
+
+static int already_loaded(const char *real)
+{
+    for (Module *m = modules; m; m = m->next)
+        if (strcmp(m->real, real) == 0)
+            return 1;
+    return 0;
+}
+
+/* Runs the module's init and commits its types; the caller holds the lock. */
+static int init_module(void *h, const char *path, GError *err)
+{
+    dlerror();
+    const int *abi = dlsym(h, GMODULE_ABI_SYMBOL);
+    const char *e = dlerror();
+    if (e || !abi)
+        return gerror_set(err, G_ERR_IO, "module '%s' is not a libgeneric module: %s", path,
+                          e ? e : "symbol " GMODULE_ABI_SYMBOL " is NULL");
+    if (*abi != GMODULE_ABI_VERSION)
+        return gerror_set(err, G_ERR_VERSION,
+                          "module '%s' was built for module interface version %d, this library has version %d", path,
+                          *abi, GMODULE_ABI_VERSION);
+    GModuleInitFn init;
+    *(void **)&init = dlsym(h, GMODULE_INIT_SYMBOL);
+    e = dlerror();
+    if (e || !init)
+        return gerror_set(err, G_ERR_IO, "module '%s' has no entry point: %s", path,
+                          e ? e : "symbol " GMODULE_INIT_SYMBOL " is NULL");
+    Pending *p = gmem_calloc(1, sizeof *p);
+    if (!p)
+        return gerror_set(err, G_ERR_NOMEM, "out of memory loading module '%s'", path);
+    GModuleApi api = {GMODULE_ABI_VERSION, GCOLOR_ABI_VERSION, GMATERIAL_ABI_VERSION, path, add_type, p};
+    p->open = 1;
+    GError ierr;
+    gerror_clear(&ierr);
+    int rc = init(&api, &ierr);
+    p->open = 0;
+    if (rc != G_OK) {
+        gerror_set(err, rc < 0 ? rc : G_ERR_INVALID, "module '%s' failed to initialise: %s", path,
+                   ierr.message[0] ? ierr.message : gstatus_string(rc));
+        gmem_free(p);
+        return rc < 0 ? rc : G_ERR_INVALID;
+    }
+    for (int i = 0; i < p->count; i++)
+        if (gregistry_find(p->types[i].kind, p->types[i].name)) {
+            rc = gerror_set(err, G_ERR_EXISTS, "module '%s': %s type '%s' is already registered", path,
+                            gkind_name(p->types[i].kind), p->types[i].name);
+            gmem_free(p);
+            return rc;
+        }
+    for (int i = 0; i < p->count && rc == G_OK; i++)
+        rc = gregistry_add(&p->types[i], err);
+    gmem_free(p);
+    /* a failure here leaves earlier types registered: the caller then keeps the module open */
+    return rc == G_OK ? G_OK : 1;
+}
+
+int gplugin_load(const char *path, GError *err)
+{
+    if (!path || !path[0])
+        return gerror_set(err, G_ERR_INVALID, "no module path given");
+    char *real = realpath(path, NULL);
+    if (!real)
+        return gerror_set(err, G_ERR_IO, "cannot load module '%s': file not found", path);
+    pthread_mutex_lock(&lock);
+    int rc = G_OK;
+    Module *m = NULL;
+    if (already_loaded(real))
+        goto done;
+    void *h = dlopen(real, RTLD_NOW | RTLD_LOCAL);
+    if (!h) {
+        const char *e = dlerror();
+        rc = gerror_set(err, G_ERR_IO, "cannot load module '%s': %s", path, e ? e : "unknown dlopen error");
+        goto done;
+    }
+    rc = init_module(h, path, err);
+    if (rc < 0) {
+        dlclose(h);
+        goto done;
+    }
+    m = gmem_calloc(1, sizeof *m);
+    if (m)
+        m->real = gmem_strdup(real);
+    if (!m || !m->real) { /* the module stays open (its types may be registered) but is not remembered */
+        gmem_free(m);
+        rc = gerror_set(err, G_ERR_NOMEM, "out of memory loading module '%s'", path);
+        goto done;
+    }
+    if (rc > 0) { /* partly registered: keep it open, report */
+        rc = G_ERR_EXISTS;
+    }
+    m->handle = h;
+    m->next = modules;
+    modules = m;
+    nmodules++;
+done:
+    pthread_mutex_unlock(&lock);
+    free(real);
+    return rc;
+}
+
+int gplugin_count(void)
+{
+    pthread_mutex_lock(&lock);
+    int n = nmodules;
+    pthread_mutex_unlock(&lock);
+    return n;
+}

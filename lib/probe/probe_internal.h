@@ -1,0 +1,82 @@
+/* probe_internal.h - the probe's private layout and helpers shared by the files of lib/probe/. */
+#ifndef GENERIC_PROBE_INTERNAL_H
+#define GENERIC_PROBE_INTERNAL_H
+
+#include <stddef.h>
+
+#include "generic/probe.h"
+
+/** Rec. 709 luminance weights: the "energy" of a pixel for the radiance-space techniques. */
+#define GPROBE_LUM_R 0.2126
+#define GPROBE_LUM_G 0.7152
+#define GPROBE_LUM_B 0.0722
+
+struct GProbe {
+    int w, h;
+    float *rgb;         /* radiance P, 3 per pixel */
+    float *q;           /* weights Q, 3 per pixel */
+    double *sat;        /* summed-area table, (h + 1) x (w + 1) entries of 4: luminance of Q and its
+                           products with the pixel direction's x, y, z */
+    double *cos_phi, *sin_phi;     /* per column, at pixel centres */
+    double *cos_theta, *sin_theta; /* per row, at pixel centres */
+    long clamped;
+};
+
+/** Energy (luminance) of a weight triple. */
+static inline double probe_lum(const float *q)
+{
+    return GPROBE_LUM_R * q[0] + GPROBE_LUM_G * q[1] + GPROBE_LUM_B * q[2];
+}
+
+/** Direction of the centre of pixel (u, v), exactly as the irradiance sums use it. */
+static inline GVec3 probe_pixel_dir(const GProbe *p, int u, int v)
+{
+    double s = p->sin_theta[v];
+    return gvec3(s * p->cos_phi[u], s * p->sin_phi[u], p->cos_theta[v]);
+}
+
+/** Sums of the SAT over the pixel rectangle [u0, u1) x [v0, v1): out[0] energy, out[1..3] energy * dir. */
+void probe_sat_sum(const GProbe *p, int u0, int v0, int u1, int v1, double out[4]);
+
+/** A rectangle of the lat-long image and its energy statistics (median cut and its adaptive form). */
+typedef struct ProbeRegion {
+    int u0, v0, u1, v1;   /* [u0, u1) x [v0, v1) */
+    double sum[4];        /* energy and energy-weighted direction sums */
+} ProbeRegion;
+
+/** Fills r's sums from the SAT. */
+void probe_region_init(const GProbe *p, ProbeRegion *r, int u0, int v0, int u1, int v1);
+/** Splits r in two along its longest side (width weighted by sin theta) where its energy halves;
+ * returns 0 when r is a single pixel (then a is r and b is empty). */
+int probe_region_split(const GProbe *p, const ProbeRegion *r, ProbeRegion *a, ProbeRegion *b);
+/** Energy-weighted angular spread: sum of E (1 - |mean direction|), the priority of adaptive median cut. */
+double probe_region_spread(const ProbeRegion *r);
+/** Lights for n regions: direction at the energy centroid, colour the region's summed Q (one pass). */
+void probe_regions_to_lights(const GProbe *p, const ProbeRegion *regions, int n, GProbeLight *lights);
+
+/** Reports progress when a callback is set. */
+static inline void probe_progress(const GProbeOptions *opt, const char *stage, double f)
+{
+    if (opt && opt->progress)
+        opt->progress(opt->user, stage, f);
+}
+
+#endif
+
+/* ---- dense linear algebra for the irradiance fit (linalg.c) ---- */
+
+/** C = X^T Y for column-major X (m x p) and Y (m x q), C row-major with row stride ldc (C[x * ldc + y]).
+ * With symmetric != 0, Y must be X and q = p; the full symmetric C is filled. Threads for large sizes. */
+void probe_gemm_tn(const double *X, int p, const double *Y, int q, int m, double *C, int ldc, int symmetric);
+
+/** Cholesky factorisation in place of the n x n symmetric positive definite row-major matrix a (lower
+ * triangle used); returns 0 on success, -1 when a is not positive definite. */
+int probe_cholesky(double *a, int n);
+/** Solves L L^T x = b in place for a factor from probe_cholesky. */
+void probe_cholesky_solve(const double *l, int n, double *b);
+/** Non-negative least squares from the normal equations: minimises x^T G x - 2 h^T x over x >= 0 (Lawson &
+ * Hanson's active-set method), warm-started from the feasible x it is given. G is n x n row-major.
+ * work holds n * n + 3 n doubles and n ints (as doubles' worth of space: pass probe_nnls_work_size(n)). */
+void probe_nnls(int n, const double *G, const double *h, double *x, double *work);
+/** Doubles of scratch probe_nnls needs. */
+static inline size_t probe_nnls_work_size(int n) { return (size_t)n * n + 4 * (size_t)n; }

@@ -1,0 +1,462 @@
+/* reader.c - loading text files: includes and plugin statements, tokens, positions and errors, the nesting stack,
+ * and the top-level statements (include, plugin, colormodel, KIND [NAME] VALUE). */
+#include "reader_internal.h"
+#include "generic/memory.h"
+#include "generic/plugin.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+
+/* ---- errors ---- */
+
+static int verror_at(GReader *r, GError *err, int code, int line, int col, const char *fmt, va_list ap)
+{
+    char msg[sizeof err->message];
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    r->located = 1;
+    return gerror_set(err, code, "%s:%d:%d: %s", r->src ? r->src->name : "?", line, col, msg);
+}
+
+int greader_error_at(GReader *r, GError *err, int code, int line, int col, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    int rc = verror_at(r, err, code, line, col, fmt, ap);
+    va_end(ap);
+    return rc;
+}
+
+int greader_error(GReader *r, GError *err, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    int rc = verror_at(r, err, G_ERR_PARSE, r->cur.tok.line, r->cur.tok.col, fmt, ap);
+    va_end(ap);
+    return rc;
+}
+
+int greader_locate(GReader *r, GError *err)
+{
+    if (!err)
+        return G_ERR_PARSE;
+    int code = err->code < 0 ? err->code : G_ERR_PARSE;
+    if (r->located)
+        return code;
+    char msg[sizeof err->message];
+    snprintf(msg, sizeof msg, "%s", err->message[0] ? err->message : gstatus_string(code));
+    return greader_error_at(r, err, code, r->cur.tok.line, r->cur.tok.col, "%s", msg);
+}
+
+void greader_position(GReader *r, int *line, int *col)
+{
+    if (line)
+        *line = r->cur.tok.line;
+    if (col)
+        *col = r->cur.tok.col;
+}
+
+const char *greader_dir(GReader *r) { return r->src ? r->src->dir : "."; }
+const char *greader_file(GReader *r) { return r->src ? r->src->name : "?"; }
+GLibrary *greader_library(GReader *r) { return r->lib; }
+
+/* ---- tokens ---- */
+
+static int fill(GReader *r, GError *err)
+{
+    if (r->have_ahead)
+        return G_OK;
+    int rc = glexer_next(&r->src->lx, &r->ahead, err);
+    if (rc != G_OK) {
+        r->located = 1;
+        return rc;
+    }
+    r->have_ahead = 1;
+    return G_OK;
+}
+
+int greader_peek(GReader *r, GToken *tok, GError *err)
+{
+    int rc = fill(r, err);
+    if (rc == G_OK && tok)
+        *tok = r->ahead.tok;
+    return rc;
+}
+
+int greader_next(GReader *r, GToken *tok, GError *err)
+{
+    int rc = fill(r, err);
+    if (rc != G_OK)
+        return rc;
+    r->cur.tok = r->ahead.tok;
+    memcpy(r->cur.text, r->ahead.text, strlen(r->ahead.text) + 1);
+    r->cur.tok.text = r->cur.text;
+    r->have_ahead = 0;
+    if (tok)
+        *tok = r->cur.tok;
+    return G_OK;
+}
+
+/* ---- the nesting stack ---- */
+
+int greader_depth(const GReader *r) { return r->nframes + r->include_depth; }
+
+int greader_push_frame(GReader *r, int is_block, const GTypeInfo *type, int line, int col, GError *err)
+{
+    if (greader_depth(r) + 1 > r->opt.max_depth)
+        return greader_error_at(r, err, G_ERR_PARSE, line, col,
+                                "nesting deeper than %d levels (entries, blocks and includes)", r->opt.max_depth);
+    if (r->nframes == r->capframes) {
+        int cap = r->capframes ? r->capframes * 2 : 16;
+        GReaderFrame *f = gmem_realloc(r->frames, (size_t)cap * sizeof *f);
+        if (!f)
+            return greader_error_at(r, err, G_ERR_NOMEM, line, col, "out of memory");
+        r->frames = f;
+        r->capframes = cap;
+    }
+    GReaderFrame *f = &r->frames[r->nframes++];
+    memset(f, 0, sizeof *f);
+    f->is_block = is_block;
+    f->type = type;
+    f->open_line = line;
+    f->open_col = col;
+    return G_OK;
+}
+
+void greader_pop_frames(GReader *r, int n)
+{
+    while (r->nframes > n) {
+        GReaderFrame *f = &r->frames[--r->nframes];
+        for (int i = 0; i < f->nkeys; i++)
+            gmem_free(f->keys[i]);
+        gmem_free(f->keys);
+    }
+}
+
+/* ---- statements ---- */
+
+static int parse_statements(GReader *r, GError *err);
+
+static int do_include(GReader *r, GError *err)
+{
+    GToken t;
+    int rc = greader_peek(r, &t, err);
+    if (rc == G_OK && t.type != GTOK_STRING)
+        return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "expected a quoted file name after 'include'");
+    char *path = NULL;
+    if (rc == G_OK)
+        rc = greader_path(r, &path, err);
+    if (rc != G_OK)
+        return rc;
+    if (r->include_depth + r->nframes + 1 > r->opt.max_depth) {
+        gmem_free(path);
+        return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col,
+                                "nesting deeper than %d levels (entries, blocks and includes)", r->opt.max_depth);
+    }
+    char *real = realpath(path, NULL);
+    if (real) {
+        for (GReaderSource *s = r->src; s; s = s->parent) {
+            if (!s->real || strcmp(s->real, real) != 0)
+                continue;
+            char chain[400] = "";
+            size_t used = 0;
+            /* the chain from the file that is included again down to here */
+            GReaderSource *stack[64];
+            int n = 0;
+            for (GReaderSource *q = r->src; q && n < 64; q = q->parent) {
+                stack[n++] = q;
+                if (q == s)
+                    break;
+            }
+            for (int i = n - 1; i >= 0 && used < sizeof chain; i--)
+                used += (size_t)snprintf(chain + used, sizeof chain - used, "%s -> ", stack[i]->name);
+            free(real);
+            rc = greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "include cycle: %s%s", chain, path);
+            gmem_free(path);
+            return rc;
+        }
+        for (int i = 0; i < r->nincluded; i++)
+            if (strcmp(r->included[i], real) == 0) { /* read once: a second include is a no-op */
+                free(real);
+                gmem_free(path);
+                return G_OK;
+            }
+        free(real);
+    }
+    GToken kw = r->cur.tok;
+    rc = greader_open_source(r, path, err);
+    if (rc != G_OK) {
+        char msg[sizeof err->message];
+        snprintf(msg, sizeof msg, "%s", err->message);
+        return greader_error_at(r, err, rc, kw.line, kw.col, "cannot include: %s", msg);
+    }
+    r->include_depth++;
+    rc = parse_statements(r, err);
+    r->include_depth--;
+    if (rc == G_OK && r->src->real) {
+        if (r->nincluded == r->capincluded) {
+            int cap = r->capincluded ? r->capincluded * 2 : 8;
+            char **n = gmem_realloc(r->included, (size_t)cap * sizeof *n);
+            if (n)
+                r->included = n, r->capincluded = cap;
+        }
+        char *copy = r->nincluded < r->capincluded ? gmem_strdup(r->src->real) : NULL;
+        if (copy)
+            r->included[r->nincluded++] = copy;
+        else
+            rc = greader_error_at(r, err, G_ERR_NOMEM, kw.line, kw.col, "out of memory");
+    }
+    greader_pop_source(r);
+    return rc;
+}
+
+static int do_plugin(GReader *r, GError *err)
+{
+    GToken t;
+    int rc = greader_peek(r, &t, err);
+    if (rc == G_OK && t.type != GTOK_STRING)
+        return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "expected a quoted module path after 'plugin'");
+    if (rc == G_OK && r->opt.no_plugins)
+        return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "plugin statements are disabled for this file");
+    char *path = NULL;
+    if (rc == G_OK)
+        rc = greader_path(r, &path, err);
+    if (rc == G_OK) {
+        rc = gplugin_load(path, err);
+        if (rc != G_OK)
+            rc = greader_locate(r, err);
+    }
+    gmem_free(path);
+    return rc;
+}
+
+static int do_colormodel(GReader *r, int override, GError *err)
+{
+    GToken t;
+    int rc = greader_next(r, &t, err);
+    if (rc != G_OK)
+        return rc;
+    const GTypeInfo *type = t.type == GTOK_IDENT ? gregistry_find(GKIND_COLORMODEL, t.text) : NULL;
+    if (!type) {
+        char names[512], found[96];
+        gregistry_names(GKIND_COLORMODEL, names, sizeof names);
+        glexer_describe(&t, found, sizeof found);
+        return greader_error_at(r, err, G_ERR_NOTFOUND, t.line, t.col,
+                                "unknown colour model %s (registered colour models: %s)", found, names);
+    }
+    GColorModel *m = NULL;
+    rc = greader_colormodel_entry(r, type, &m, err);
+    if (rc != G_OK)
+        return rc;
+    if (override) {
+        gcolormodel_destroy(m); /* the caller chose the model */
+        return G_OK;
+    }
+    if (r->model_fixed) {
+        const char *now = gcolormodel_name(glibrary_model_or_null(r->lib));
+        gcolormodel_destroy(m);
+        return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col,
+                                "colormodel must come before the first colour (colours were already read in '%s')",
+                                now);
+    }
+    glibrary_set_model(r->lib, m, NULL);
+    return G_OK;
+}
+
+static int do_entry(GReader *r, GKind kind, GError *err)
+{
+    GToken t;
+    int rc = greader_peek(r, &t, err);
+    if (rc != G_OK)
+        return rc;
+    const char *kn = gkind_name(kind);
+    if (t.type != GTOK_IDENT) {
+        char found[96];
+        glexer_describe(&t, found, sizeof found);
+        return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "expected a %s type or a name after '%s', found %s",
+                                kn, kn, found);
+    }
+    const GTypeInfo *type = NULL;
+    void *obj = NULL;
+    int owned = 0;
+    if (greader_find_type(kind, t.text)) { /* anonymous: KIND TYPE parameters */
+        rc = greader_value(r, kind, 0, &obj, &type, &owned, err);
+        return rc ? rc : glibrary_put(r->lib, type, NULL, obj, owned, 1, err);
+    }
+    char *name = gmem_strdup(t.text);
+    if (!name)
+        return greader_error_at(r, err, G_ERR_NOMEM, t.line, t.col, "out of memory");
+    rc = greader_next(r, NULL, err);
+    GToken v;
+    if (rc == G_OK)
+        rc = greader_peek(r, &v, err);
+    if (rc == G_OK && glibrary_find(r->lib, kind, name)) {
+        rc = greader_error_at(r, err, G_ERR_EXISTS, t.line, t.col, "%s '%s' is already defined", kn, name);
+    } else if (rc == G_OK && v.type != GTOK_IDENT) { /* most likely a misspelt type keyword */
+        char names[512];
+        gregistry_names(kind, names, sizeof names);
+        if (kind == GKIND_MATERIAL || kind == GKIND_NODE) {
+            size_t n = strlen(names);
+            gregistry_names(kind == GKIND_MATERIAL ? GKIND_NODE : GKIND_MATERIAL, names + n + 2,
+                            sizeof names - n - 2);
+            if (names[n + 2])
+                names[n] = ',', names[n + 1] = ' ';
+        }
+        rc = greader_error_at(r, err, G_ERR_NOTFOUND, t.line, t.col, "unknown %s type '%s' (registered: %s)", kn,
+                              name, names[0] ? names : "none");
+    } else if (rc == G_OK) {
+        rc = greader_value(r, kind, 0, &obj, &type, &owned, err);
+        if (rc == G_OK) {
+            rc = glibrary_put(r->lib, type, name, obj, owned, 1, err);
+            if (rc != G_OK)
+                rc = greader_error_at(r, err, rc, t.line, t.col, "%s '%s' could not be defined", kn, name);
+        }
+    }
+    gmem_free(name);
+    return rc;
+}
+
+static const char statement_list[] = "include, plugin, colormodel, color, material, node, generator, object, light, "
+                                     "camera";
+
+static int parse_statements(GReader *r, GError *err)
+{
+    for (;;) {
+        GToken t;
+        int rc = greader_peek(r, &t, err);
+        if (rc != G_OK)
+            return rc;
+        if (t.type == GTOK_EOF)
+            return G_OK;
+        char found[96];
+        glexer_describe(&t, found, sizeof found);
+        if (t.type != GTOK_IDENT)
+            return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "expected a statement (%s), found %s",
+                                    statement_list, found);
+        greader_next(r, &t, err);
+        if (strcmp(t.text, "include") == 0) {
+            rc = do_include(r, err);
+        } else if (strcmp(t.text, "plugin") == 0) {
+            rc = do_plugin(r, err);
+        } else if (strcmp(t.text, "colormodel") == 0) {
+            rc = do_colormodel(r, r->opt.model != NULL, err);
+        } else {
+            int kind = -1;
+            for (int k = GKIND_COLOR; k < GKIND_COUNT && kind < 0; k++)
+                if (strcmp(t.text, gkind_name((GKind)k)) == 0)
+                    kind = k;
+            if (kind < 0)
+                return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "unknown statement %s (expected %s)",
+                                        found, statement_list);
+            rc = do_entry(r, (GKind)kind, err);
+        }
+        if (rc != G_OK)
+            return rc;
+    }
+}
+
+/* ---- loading ---- */
+
+static void reader_init(GReader *r, GLibrary *lib, const GReaderOptions *opt)
+{
+    memset(r, 0, sizeof *r);
+    r->lib = lib;
+    if (opt)
+        r->opt = *opt;
+    if (r->opt.max_depth <= 0)
+        r->opt.max_depth = GREADER_DEFAULT_MAX_DEPTH;
+    if (r->opt.max_file_size == 0)
+        r->opt.max_file_size = GREADER_DEFAULT_MAX_FILE_SIZE;
+    r->cur.tok.line = r->cur.tok.col = 1;
+    r->cur.tok.text = r->cur.text;
+}
+
+static void reader_fini(GReader *r)
+{
+    greader_pop_frames(r, 0);
+    gmem_free(r->frames);
+    for (int i = 0; i < r->nincluded; i++)
+        gmem_free(r->included[i]);
+    gmem_free(r->included);
+    greader_pop_all_sources(r);
+}
+
+/* Reads a source into lib; `override` makes the file's colormodel statement advisory. */
+static int run(GLibrary *lib, const GReaderOptions *opt, const char *path, const char *text, const char *name,
+               GError *err)
+{
+    GReader r;
+    reader_init(&r, lib, opt);
+    r.opt.model = glibrary_model_or_null(lib); /* a model chosen before the file overrides its statement */
+    int rc;
+    if (path) {
+        char *copy = gmem_strdup(path);
+        rc = copy ? greader_open_source(&r, copy, err) : gerror_set(err, G_ERR_NOMEM, "out of memory");
+    } else {
+        GReaderSource *s = gmem_calloc(1, sizeof *s);
+        rc = s && (s->name = gmem_strdup(name ? name : "<string>")) && (s->dir = gmem_strdup("."))
+                 ? greader_push_source(&r, s, text, strlen(text))
+                 : (greader_free_source(s), gerror_set(err, G_ERR_NOMEM, "out of memory"));
+    }
+    if (rc == G_OK)
+        rc = parse_statements(&r, err);
+    reader_fini(&r);
+    return rc;
+}
+
+static int load(const char *path, const char *text, const char *name, const GReaderOptions *opt, GLibrary **out,
+                GError *err)
+{
+    GError local;
+    gerror_clear(&local);
+    *out = NULL;
+    GLibrary *lib = NULL;
+    int rc = glibrary_create(opt ? opt->model : NULL, &lib, &local);
+    if (rc == G_OK && opt && !opt->model && opt->colormodel) {
+        GColorModel *m = NULL;
+        rc = gcolormodel_create(opt->colormodel, opt->colormodel_options, &m, &local);
+        if (rc == G_OK)
+            glibrary_set_model(lib, m, NULL);
+    }
+    if (rc == G_OK)
+        rc = run(lib, opt, path, text, name, &local);
+    if (rc == G_OK && !glibrary_colormodel(lib))
+        rc = gerror_set(&local, G_ERR_NOMEM, "out of memory creating the colour model");
+    if (rc != G_OK) {
+        glibrary_destroy(lib);
+        if (err)
+            *err = local;
+        return rc;
+    }
+    *out = lib;
+    gerror_clear(err);
+    return G_OK;
+}
+
+int greader_load_file(const char *path, const GReaderOptions *opt, GLibrary **out, GError *err)
+{
+    if (!out || !path)
+        return gerror_set(err, G_ERR_INVALID, "no file given");
+    return load(path, NULL, NULL, opt, out, err);
+}
+
+int greader_load_string(const char *text, const char *name, const GReaderOptions *opt, GLibrary **out, GError *err)
+{
+    if (!out || !text)
+        return gerror_set(err, G_ERR_INVALID, "no text given");
+    return load(NULL, text, name, opt, out, err);
+}
+
+int glibrary_load_file(GLibrary *lib, const char *path, const GReaderOptions *opt, GError *err)
+{
+    if (!lib || !path)
+        return gerror_set(err, G_ERR_INVALID, "no library or file given");
+    GError local;
+    gerror_clear(&local);
+    int rc = run(lib, opt, path, NULL, NULL, &local);
+    if (err)
+        *err = local;
+    return rc;
+}

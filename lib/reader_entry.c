@@ -1,0 +1,204 @@
+/* reader_entry.c - entries: calling parse routines, nested values and references, colour model entries. */
+#include "reader_internal.h"
+#include "generic/memory.h"
+
+#include <stdio.h>
+#include <string.h>
+
+const GTypeInfo *greader_find_type(GKind kind, const char *name)
+{
+    const GTypeInfo *t = gregistry_find(kind, name);
+    if (!t && kind == GKIND_MATERIAL)
+        t = gregistry_find(GKIND_NODE, name);
+    else if (!t && kind == GKIND_NODE)
+        t = gregistry_find(GKIND_MATERIAL, name);
+    return t;
+}
+
+/* "lambert, phong, ..." for a kind (materials also list node types). */
+static void type_names(GKind kind, char *buf, size_t size)
+{
+    gregistry_names(kind, buf, size);
+    if (kind != GKIND_MATERIAL && kind != GKIND_NODE)
+        return;
+    size_t n = strlen(buf);
+    if (n + 3 >= size)
+        return;
+    gregistry_names(kind == GKIND_MATERIAL ? GKIND_NODE : GKIND_MATERIAL, buf + n + 2, size - n - 2);
+    if (buf[n + 2] && n)
+        buf[n] = ',', buf[n + 1] = ' ';
+    else if (buf[n + 2])
+        memmove(buf, buf + n + 2, strlen(buf + n + 2) + 1);
+}
+
+int greader_invoke(GReader *r, const GTypeInfo *type, int line, int col, void **object, GError *err)
+{
+    *object = NULL;
+    int base = r->nframes;
+    int rc = greader_push_frame(r, 0, type, line, col, err);
+    if (rc != G_OK)
+        return rc;
+    if (!type->parse) {
+        greader_pop_frames(r, base);
+        return greader_error_at(r, err, G_ERR_UNSUPPORTED, line, col, "%s type '%s' cannot be read from text",
+                                gkind_name(type->kind), type->name);
+    }
+    void *obj = NULL;
+    rc = type->parse(r, type->vtable, &obj, err);
+    if (rc > 0)
+        rc = G_ERR_PARSE;
+    if (rc == G_OK && !obj)
+        rc = greader_error_at(r, err, G_ERR_INVALID, line, col, "%s %s made no object", gkind_name(type->kind),
+                              type->name);
+    if (rc == G_OK && r->frames[base].state == 1) { /* the routine left its block open */
+        GToken t;
+        rc = greader_peek(r, &t, err);
+        if (rc == G_OK) {
+            char found[96];
+            glexer_describe(&t, found, sizeof found);
+            rc = greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "%s %s: expected '}', found %s",
+                                  gkind_name(type->kind), type->name, found);
+        }
+        gtype_release(type, obj);
+    }
+    if (rc != G_OK) { /* a failing routine has freed what it made */
+        greader_locate(r, err);
+        greader_pop_frames(r, base);
+        return rc;
+    }
+    greader_pop_frames(r, base);
+    *object = obj;
+    return G_OK;
+}
+
+int greader_value(GReader *r, GKind kind, int add, void **object, const GTypeInfo **type, int *owned, GError *err)
+{
+    *object = NULL;
+    if (owned)
+        *owned = 0;
+    GToken t;
+    int rc = greader_peek(r, &t, err);
+    if (rc != G_OK)
+        return rc;
+    const char *kn = gkind_name(kind);
+    char found[96];
+    glexer_describe(&t, found, sizeof found);
+    if (t.type != GTOK_IDENT)
+        return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "expected a %s (a type or a defined name), found %s",
+                                kn, found);
+    const GTypeInfo *ty = greader_find_type(kind, t.text);
+    if (ty) {
+        greader_next(r, NULL, err);
+        void *obj = NULL;
+        rc = greader_invoke(r, ty, t.line, t.col, &obj, err);
+        if (rc == G_OK && add) {
+            rc = glibrary_put(r->lib, ty, NULL, obj, 1, 0, err);
+            if (rc != G_OK)
+                rc = greader_locate(r, err);
+        }
+        if (rc != G_OK)
+            return rc;
+        *object = obj;
+        if (type)
+            *type = ty;
+        if (owned)
+            *owned = !add;
+        return G_OK;
+    }
+    void *obj = glibrary_find(r->lib, kind, t.text);
+    if (obj) {
+        greader_next(r, NULL, err);
+        *object = obj;
+        if (type)
+            *type = glibrary_find_type(r->lib, kind, t.text);
+        return G_OK;
+    }
+    for (int k = 0; k < GKIND_COUNT; k++)
+        if (glibrary_find(r->lib, (GKind)k, t.text))
+            return greader_error_at(r, err, G_ERR_NOTFOUND, t.line, t.col, "'%s' is a %s, not a %s", t.text,
+                                    gkind_name((GKind)k), kn);
+    char types[512], names[512];
+    type_names(kind, types, sizeof types);
+    glibrary_names(r->lib, kind, names, sizeof names);
+    return greader_error_at(r, err, G_ERR_NOTFOUND, t.line, t.col,
+                            "unknown %s '%s': neither a %s type (%s) nor a defined %s (defined: %s)", kn, t.text, kn,
+                            types[0] ? types : "none registered", kn, names);
+}
+
+int greader_object(GReader *r, GKind kind, void **object, const GTypeInfo **type, GError *err)
+{
+    if ((unsigned)kind >= GKIND_COUNT || kind == GKIND_COLORMODEL)
+        return greader_error(r, err, "objects of kind %s cannot be nested", gkind_name(kind));
+    return greader_value(r, kind, 1, object, type, NULL, err);
+}
+
+int greader_material(GReader *r, GMaterial **out, GError *err)
+{
+    void *obj = NULL;
+    const GTypeInfo *t = NULL;
+    int rc = greader_object(r, GKIND_MATERIAL, &obj, &t, err);
+    *out = rc == G_OK ? obj : NULL;
+    return rc;
+}
+
+void *greader_lookup(GReader *r, GKind kind, const char *name) { return glibrary_find(r->lib, kind, name); }
+
+int greader_define(GReader *r, const GTypeInfo *type, const char *name, void *object, GError *err)
+{
+    int rc = glibrary_put(r->lib, type, name, object, 1, name != NULL, err);
+    return rc ? greader_locate(r, err) : G_OK;
+}
+
+const GColorModel *greader_colormodel(GReader *r)
+{
+    r->model_fixed = 1;
+    return glibrary_colormodel(r->lib);
+}
+
+/* ---- colour model entries: `colormodel TYPE { step 5 min 380 max 780 }` ---- */
+
+static int colormodel_options(GReader *r, GColorModelOptions *o, GError *err)
+{
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        if (strcmp(key, "step") == 0)
+            rc = greader_number_in(r, 0.01, 400.0, &o->step_nm, err);
+        else if (strcmp(key, "min") == 0)
+            rc = greader_number_in(r, 100.0, 2000.0, &o->min_nm, err);
+        else if (strcmp(key, "max") == 0)
+            rc = greader_number_in(r, 100.0, 2000.0, &o->max_nm, err);
+        else
+            rc = greader_unknown_param(r, "step, min, max", err);
+        if (rc < 0)
+            return rc;
+    }
+    return rc;
+}
+
+int greader_colormodel_entry(GReader *r, const GTypeInfo *type, GColorModel **out, GError *err)
+{
+    *out = NULL;
+    if (type->parse) {
+        void *obj = NULL;
+        int rc = greader_invoke(r, type, r->cur.tok.line, r->cur.tok.col, &obj, err);
+        *out = obj;
+        return rc;
+    }
+    int line = r->cur.tok.line, col = r->cur.tok.col;
+    int base = r->nframes;
+    int rc = greader_push_frame(r, 0, type, line, col, err);
+    GColorModelOptions o = {0, 0, 0};
+    if (rc == G_OK)
+        rc = colormodel_options(r, &o, err);
+    if (rc == G_OK) {
+        rc = gcolormodel_create_class(type->vtable, &o, out, err);
+        if (rc != G_OK) {
+            char msg[sizeof err->message];
+            snprintf(msg, sizeof msg, "%s", err ? err->message : "");
+            rc = greader_error_at(r, err, rc, line, col, "%s", msg);
+        }
+    }
+    greader_pop_frames(r, base);
+    return rc;
+}

@@ -1,0 +1,253 @@
+/* reader_library.c - GLibrary: the objects a text file defines, looked up by kind and name, freed at once. */
+#include "reader_internal.h"
+#include "generic/memory.h"
+#include "generic/texture.h"
+
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+typedef struct Entry {
+    const GTypeInfo *type;
+    char *name;  /* NULL for anonymous entries */
+    void *object;
+    int owned;   /* released with the library (aliases are not) */
+    int toplevel;
+} Entry;
+
+struct GLibrary {
+    GColorModel *owned_model;
+    const GColorModel *model;
+    Entry *entries;
+    int count, cap;
+    int *slots; /* open addressing over named entries: index + 1, 0 = empty */
+    int nslots, nnamed;
+};
+
+/* Materials and texture nodes share one namespace. */
+static int space(GKind kind) { return kind == GKIND_NODE ? GKIND_MATERIAL : (int)kind; }
+
+static uint32_t hash(int sp, const char *name)
+{
+    uint32_t h = 2166136261u ^ (uint32_t)sp;
+    for (const unsigned char *p = (const unsigned char *)name; *p; p++)
+        h = (h ^ *p) * 16777619u;
+    return h;
+}
+
+static int find_index(const GLibrary *lib, GKind kind, const char *name)
+{
+    if (!lib || !name || !lib->nslots)
+        return -1;
+    int sp = space(kind);
+    for (uint32_t i = hash(sp, name) & (uint32_t)(lib->nslots - 1);; i = (i + 1) & (uint32_t)(lib->nslots - 1)) {
+        int s = lib->slots[i];
+        if (!s)
+            return -1;
+        const Entry *e = &lib->entries[s - 1];
+        if (space(e->type->kind) == sp && strcmp(e->name, name) == 0)
+            return s - 1;
+    }
+}
+
+static void insert_slot(int *slots, int nslots, const Entry *e, int index)
+{
+    uint32_t i = hash(space(e->type->kind), e->name) & (uint32_t)(nslots - 1);
+    while (slots[i])
+        i = (i + 1) & (uint32_t)(nslots - 1);
+    slots[i] = index + 1;
+}
+
+static int grow_slots(GLibrary *lib)
+{
+    int n = lib->nslots ? lib->nslots * 2 : 64;
+    int *s = gmem_calloc((size_t)n, sizeof *s);
+    if (!s)
+        return G_ERR_NOMEM;
+    for (int i = 0; i < lib->count; i++)
+        if (lib->entries[i].name)
+            insert_slot(s, n, &lib->entries[i], i);
+    gmem_free(lib->slots);
+    lib->slots = s;
+    lib->nslots = n;
+    return G_OK;
+}
+
+void gtype_release(const GTypeInfo *type, void *object)
+{
+    if (!object)
+        return;
+    if (type && type->destroy) {
+        type->destroy(object);
+        return;
+    }
+    switch (type ? type->kind : GKIND_COUNT) {
+    case GKIND_MATERIAL:
+    case GKIND_NODE: gmaterial_unref(object); break;
+    case GKIND_COLORMODEL: gcolormodel_destroy(object); break;
+    case GKIND_COLOR: gcolorspec_destroy(object); break;
+    case GKIND_GENERATOR: ggenerator_unref(object); break;
+    default: gmem_free(object); break;
+    }
+}
+
+int glibrary_create(const GColorModel *model, GLibrary **out, GError *err)
+{
+    *out = NULL;
+    GLibrary *lib = gmem_calloc(1, sizeof *lib);
+    if (!lib)
+        return gerror_set(err, G_ERR_NOMEM, "out of memory creating a library");
+    lib->model = model;
+    *out = lib;
+    return G_OK;
+}
+
+void glibrary_destroy(GLibrary *lib)
+{
+    if (!lib)
+        return;
+    for (int i = lib->count - 1; i >= 0; i--) {
+        Entry *e = &lib->entries[i];
+        if (e->owned)
+            gtype_release(e->type, e->object);
+        gmem_free(e->name);
+    }
+    gmem_free(lib->entries);
+    gmem_free(lib->slots);
+    gcolormodel_destroy(lib->owned_model);
+    gmem_free(lib);
+}
+
+void glibrary_set_model(GLibrary *lib, GColorModel *owned, const GColorModel *borrowed)
+{
+    gcolormodel_destroy(lib->owned_model);
+    lib->owned_model = owned;
+    lib->model = owned ? owned : borrowed;
+}
+
+const GColorModel *glibrary_model_or_null(const GLibrary *lib) { return lib->model; }
+
+const GColorModel *glibrary_colormodel(const GLibrary *lib)
+{
+    if (!lib)
+        return NULL;
+    if (!lib->model) { /* an empty library made without a model: the default is created on first use */
+        GColorModel *m = NULL;
+        if (gcolormodel_create("rgb", NULL, &m, NULL) == G_OK)
+            glibrary_set_model((GLibrary *)lib, m, NULL);
+    }
+    return lib->model;
+}
+
+int glibrary_put(GLibrary *lib, const GTypeInfo *type, const char *name, void *object, int owned, int toplevel,
+                 GError *err)
+{
+    int rc = G_OK;
+    char *copy = NULL;
+    if (!lib || !type || !object) {
+        rc = gerror_set(err, G_ERR_INVALID, "nothing to add to the library");
+    } else if (name && find_index(lib, type->kind, name) >= 0) {
+        rc = gerror_set(err, G_ERR_EXISTS, "%s '%s' is already defined", gkind_name(type->kind), name);
+    } else if (name && !(copy = gmem_strdup(name))) {
+        rc = gerror_set(err, G_ERR_NOMEM, "out of memory");
+    } else if (lib->count == lib->cap) {
+        int cap = lib->cap ? lib->cap * 2 : 32;
+        Entry *n = gmem_realloc(lib->entries, (size_t)cap * sizeof *n);
+        if (!n)
+            rc = gerror_set(err, G_ERR_NOMEM, "out of memory");
+        else
+            lib->entries = n, lib->cap = cap;
+    }
+    if (rc == G_OK && name && (lib->nnamed + 1) * 2 > lib->nslots && grow_slots(lib) != G_OK)
+        rc = gerror_set(err, G_ERR_NOMEM, "out of memory");
+    if (rc != G_OK) {
+        gmem_free(copy);
+        if (owned)
+            gtype_release(type, object);
+        return rc;
+    }
+    Entry *e = &lib->entries[lib->count];
+    e->type = type;
+    e->name = copy;
+    e->object = object;
+    e->owned = owned;
+    e->toplevel = toplevel;
+    if (copy) {
+        insert_slot(lib->slots, lib->nslots, e, lib->count);
+        lib->nnamed++;
+    }
+    lib->count++;
+    return G_OK;
+}
+
+int glibrary_add(GLibrary *lib, const GTypeInfo *type, const char *name, void *object, GError *err)
+{
+    return glibrary_put(lib, type, name, object, 1, 1, err);
+}
+
+void *glibrary_find(const GLibrary *lib, GKind kind, const char *name)
+{
+    int i = find_index(lib, kind, name);
+    return i >= 0 ? lib->entries[i].object : NULL;
+}
+
+const GTypeInfo *glibrary_find_type(const GLibrary *lib, GKind kind, const char *name)
+{
+    int i = find_index(lib, kind, name);
+    return i >= 0 ? lib->entries[i].type : NULL;
+}
+
+GMaterial *glibrary_material(const GLibrary *lib, const char *name)
+{
+    return glibrary_find(lib, GKIND_MATERIAL, name);
+}
+
+int glibrary_color(const GLibrary *lib, const char *name, GColorRole role, GColor *out, GError *err)
+{
+    const GColorSpec *s = glibrary_find(lib, GKIND_COLOR, name);
+    if (!s)
+        return gerror_set(err, G_ERR_NOTFOUND, "no colour named '%s'", name ? name : "");
+    return gcolorspec_to_color(s, role, out, err);
+}
+
+int glibrary_count(const GLibrary *lib, GKind kind)
+{
+    int n = 0;
+    for (int i = 0; lib && i < lib->count; i++)
+        n += lib->entries[i].toplevel && lib->entries[i].type->kind == kind;
+    return n;
+}
+
+void *glibrary_entry(const GLibrary *lib, GKind kind, int index, const char **name, const GTypeInfo **type)
+{
+    for (int i = 0, n = 0; lib && i < lib->count; i++) {
+        const Entry *e = &lib->entries[i];
+        if (!e->toplevel || e->type->kind != kind)
+            continue;
+        if (n++ == index) {
+            if (name)
+                *name = e->name;
+            if (type)
+                *type = e->type;
+            return e->object;
+        }
+    }
+    return NULL;
+}
+
+void glibrary_names(const GLibrary *lib, GKind kind, char *buf, size_t size)
+{
+    size_t used = 0;
+    buf[0] = '\0';
+    for (int i = 0; lib && i < lib->count && used + 1 < size; i++) {
+        const Entry *e = &lib->entries[i];
+        if (!e->name || space(e->type->kind) != space(kind))
+            continue;
+        int w = snprintf(buf + used, size - used, "%s%s", used ? ", " : "", e->name);
+        if (w < 0)
+            break;
+        used += (size_t)w;
+    }
+    if (!used)
+        snprintf(buf, size, "none");
+}

@@ -1,0 +1,174 @@
+// texture_oiio.cpp - OpenImageIO's TextureSystem behind a C interface: reference-counted texture systems
+// (one per scene, or the shared default), opening files, and filtered lookups with per-thread state.
+#include "texture_oiio.h"
+#include "generic/memory.h"
+
+#include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/texture.h>
+
+#include <cctype>
+#include <mutex>
+#include <new>
+#include <string>
+
+using namespace OIIO;
+
+#if defined(__SANITIZE_ADDRESS__)
+// OpenImageIO 2.4's TextureSystem::destroy deletes its implementation through the base class with a sized
+// delete of the wrong size: a mismatch inside that library, harmless with the C library's allocator, which
+// AddressSanitizer would otherwise report (and abort on) in every program that frees a texture system.
+// Weak, so a program may define its own options.
+extern "C" __attribute__((weak)) const char *__asan_default_options() { return "new_delete_type_mismatch=0"; }
+#endif
+
+struct GTextureSystem {
+    TextureSystem *ts;
+    int refs;
+};
+
+namespace {
+std::mutex refs_lock; // guards every refcount and the default system (not on the lookup path)
+GTextureSystem *default_system = nullptr;
+
+GTextureSystem *make(GError *err)
+{
+    void *mem = gmem_alloc(sizeof(GTextureSystem));
+    if (!mem) {
+        gerror_set(err, G_ERR_NOMEM, "texture system: out of memory");
+        return nullptr;
+    }
+    TextureSystem *ts = nullptr;
+    try {
+        ts = TextureSystem::create(false);
+    } catch (...) {
+        ts = nullptr;
+    }
+    if (!ts) {
+        gmem_free(mem);
+        gerror_set(err, G_ERR_NOMEM, "texture system: OpenImageIO could not create one");
+        return nullptr;
+    }
+    ts->attribute("automip", 1);     // MIP levels for files that have none (PNG, JPEG, ...)
+    ts->attribute("gray_to_rgb", 1); // grey files answer 3-channel lookups
+    ts->attribute("max_memory_MB", 512.0f);
+    return new (mem) GTextureSystem{ts, 1};
+}
+
+void release(GTextureSystem *s)
+{
+    TextureSystem::destroy(s->ts);
+    s->~GTextureSystem();
+    gmem_free(s);
+}
+
+TextureOpt::Wrap wrap_of(GTexWrap w)
+{
+    switch (w) {
+    case GTEX_WRAP_CLAMP: return TextureOpt::WrapClamp;
+    case GTEX_WRAP_BLACK: return TextureOpt::WrapBlack;
+    case GTEX_WRAP_MIRROR: return TextureOpt::WrapMirror;
+    default: return TextureOpt::WrapPeriodic;
+    }
+}
+
+bool says_linear(std::string cs)
+{
+    for (auto &c : cs)
+        c = (char)std::tolower((unsigned char)c);
+    return cs.find("linear") != std::string::npos || cs == "scene_linear" || cs == "raw";
+}
+} // namespace
+
+extern "C" {
+
+int gtexsys_create(GTextureSystem **out, GError *err)
+{
+    *out = make(err);
+    return *out ? G_OK : err ? err->code : G_ERR_NOMEM;
+}
+
+GTextureSystem *gtexsys_ref(GTextureSystem *ts)
+{
+    if (ts) {
+        std::lock_guard<std::mutex> g(refs_lock);
+        ts->refs++;
+    }
+    return ts;
+}
+
+void gtexsys_unref(GTextureSystem *ts)
+{
+    if (!ts)
+        return;
+    {
+        std::lock_guard<std::mutex> g(refs_lock);
+        if (--ts->refs > 0)
+            return;
+        if (ts == default_system)
+            default_system = nullptr;
+    }
+    release(ts);
+}
+
+GTextureSystem *gtexsys_default(GError *err)
+{
+    std::lock_guard<std::mutex> g(refs_lock);
+    if (default_system) {
+        default_system->refs++;
+        return default_system;
+    }
+    default_system = make(err);
+    return default_system;
+}
+
+int gtexsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *channels, int *srgb, GError *err)
+{
+    *file = nullptr;
+    if (!ts || !path || !path[0])
+        return gerror_set(err, G_ERR_INVALID, "image: no file name given");
+    try {
+        ustring name(path);
+        TextureSystem::Perthread *pt = ts->ts->get_perthread_info();
+        TextureSystem::TextureHandle *h = ts->ts->get_texture_handle(name, pt);
+        if (!Filesystem::exists(path))
+            return gerror_set(err, G_ERR_IO, "image '%s': no such file", path);
+        ImageSpec spec;
+        if (!h || !ts->ts->good(h) || !ts->ts->get_imagespec(h, pt, 0, spec)) {
+            std::string why = ts->ts->geterror();
+            return gerror_set(err, G_ERR_IO, "image '%s' cannot be read: %s", path,
+                              why.empty() ? "not an image OpenImageIO can decode" : why.c_str());
+        }
+        *channels = spec.nchannels;
+        bool is_float = spec.format.basetype == TypeDesc::FLOAT || spec.format.basetype == TypeDesc::HALF ||
+                        spec.format.basetype == TypeDesc::DOUBLE;
+        *srgb = !is_float && !says_linear(spec.get_string_attribute("oiio:ColorSpace"));
+        *file = reinterpret_cast<GTexFile *>(h);
+        return G_OK;
+    } catch (const std::exception &e) {
+        return gerror_set(err, G_ERR_IO, "image '%s': %s", path, e.what());
+    } catch (...) {
+        return gerror_set(err, G_ERR_IO, "image '%s': OpenImageIO failed", path);
+    }
+}
+
+int gtexsys_lookup(GTextureSystem *ts, GTexFile *file, GTexWrap swrap, GTexWrap twrap, double s, double t,
+                   double width, double blur, float rgb[3])
+{
+    TextureOpt opt;
+    opt.swrap = wrap_of(swrap);
+    opt.twrap = wrap_of(twrap);
+    opt.mipmode = TextureOpt::MipModeTrilinear;
+    opt.interpmode = TextureOpt::InterpBilinear;
+    opt.sblur = opt.tblur = (float)blur;
+    float w = (float)width;
+    TextureSystem::Perthread *pt = ts->ts->get_perthread_info();
+    if (!ts->ts->texture(reinterpret_cast<TextureSystem::TextureHandle *>(file), pt, opt, (float)s, (float)t, w, 0.0f,
+                         0.0f, w, 3, rgb)) {
+        ts->ts->geterror();
+        rgb[0] = rgb[1] = rgb[2] = 0.0f;
+        return G_ERR_IO;
+    }
+    return G_OK;
+}
+
+} // extern "C"

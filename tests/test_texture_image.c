@@ -1,0 +1,291 @@
+/* test_texture_image.c - the image node: exact texels at a tiny footprint, MIP level selection against
+ * box-filtered averages as the footprint grows, wrap modes, orientation, sRGB decoding, colour images in
+ * a spectral model, and files that do not exist or are corrupt. Images are written as PGM/PPM files
+ * into a temporary directory. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <generic/materials.h>
+
+#include "texture_fixtures.h"
+
+#include <stdio.h>
+#include <unistd.h>
+
+typedef struct Fix {
+    char dir[64];
+    char checker1[128], checker16[128], halves[128], grey[128], red[128], corrupt[128], missing[128];
+    GColorModel *rgb;
+    GScratch *scratch;
+    GTextureSystem *ts;
+    GMaterial *white;
+    GColor c;
+} Fix;
+
+enum { N = 256 };
+
+/* Writes an 8-bit grey PGM of N x N pixels with value(x, y) (y = 0 the top row). */
+static int write_pgm(const char *path, int (*value)(int x, int y))
+{
+    FILE *f = fopen(path, "wb");
+    if (!f)
+        return -1;
+    fprintf(f, "P5\n%d %d\n255\n", N, N);
+    for (int y = 0; y < N; y++)
+        for (int x = 0; x < N; x++)
+            fputc(value(x, y), f);
+    return fclose(f);
+}
+
+static int pixel_checker(int x, int y) { return ((x + y) & 1) ? 255 : 0; }
+static int cell_checker(int x, int y) { return (((x / 16) + (y / 16)) & 1) ? 255 : 0; }
+static int top_white(int x, int y) { (void)x; return y < N / 2 ? 255 : 0; }
+static int mid_grey(int x, int y) { (void)x; (void)y; return 128; }
+
+static int setup(void **state)
+{
+    Fix *f = calloc(1, sizeof *f);
+    GError err;
+    snprintf(f->dir, sizeof f->dir, "/tmp/gtexXXXXXX");
+    if (!mkdtemp(f->dir))
+        return -1;
+    snprintf(f->checker1, sizeof f->checker1, "%s/checker1.pgm", f->dir);
+    snprintf(f->checker16, sizeof f->checker16, "%s/checker16.pgm", f->dir);
+    snprintf(f->halves, sizeof f->halves, "%s/halves.pgm", f->dir);
+    snprintf(f->grey, sizeof f->grey, "%s/grey.pgm", f->dir);
+    snprintf(f->red, sizeof f->red, "%s/red.ppm", f->dir);
+    snprintf(f->corrupt, sizeof f->corrupt, "%s/corrupt.png", f->dir);
+    snprintf(f->missing, sizeof f->missing, "%s/missing.png", f->dir);
+    if (write_pgm(f->checker1, pixel_checker) || write_pgm(f->checker16, cell_checker) ||
+        write_pgm(f->halves, top_white) || write_pgm(f->grey, mid_grey))
+        return -1;
+    FILE *fp = fopen(f->red, "wb");
+    fprintf(fp, "P6\n2 2\n255\n");
+    for (int i = 0; i < 4; i++)
+        fputc(255, fp), fputc(0, fp), fputc(0, fp);
+    fclose(fp);
+    fp = fopen(f->corrupt, "wb");
+    fprintf(fp, "\x89PNG\r\n\x1a\nthis is not really a png file at all");
+    fclose(fp);
+    if (gcolormodel_create("rgb", NULL, &f->rgb, &err) || gtexsys_create(&f->ts, &err))
+        return -1;
+    f->scratch = gscratch_create(0);
+    GColor one;
+    gcolor_alloc(&one, f->rgb);
+    gcolor_from_rgb(&one, (double[3]){1, 1, 1}, GCOLOR_REFLECTANCE);
+    if (glambert_create(f->rgb, &one, &f->white, &err))
+        return -1;
+    gcolor_free(&one);
+    gcolor_alloc(&f->c, f->rgb);
+    *state = f;
+    return 0;
+}
+
+static int teardown(void **state)
+{
+    Fix *f = *state;
+    const char *files[] = {f->checker1, f->checker16, f->halves, f->grey, f->red, f->corrupt};
+    for (int i = 0; i < 6; i++)
+        unlink(files[i]);
+    rmdir(f->dir);
+    gmaterial_unref(f->white);
+    gtexsys_unref(f->ts);
+    gcolor_free(&f->c);
+    gscratch_destroy(f->scratch);
+    gcolormodel_destroy(f->rgb);
+    free(f);
+    return 0;
+}
+
+static GMaterial *image(Fix *f, const char *path, GTexWrap wrap, GTexColorSpace cs)
+{
+    GImageNodeOptions o = {.texsys = f->ts, .swrap = wrap, .twrap = wrap, .colorspace = cs};
+    GMaterial *m;
+    GError err;
+    int rc = gnode_image_create(f->white, path, &o, &m, &err);
+    if (rc != G_OK)
+        print_error("%s\n", err.message);
+    assert_int_equal(rc, G_OK);
+    return m;
+}
+
+/* The red channel the node gives at (u, v) with a footprint in texels. */
+static double lookup(Fix *f, const GMaterial *m, double u, double v, double texels)
+{
+    GSurfPoint sp;
+    plane_point(&sp, f->rgb, f->scratch, u, v);
+    sp.uv_footprint = texels / N;
+    assert_int_equal(gmaterial_diffuse(m, &sp, &f->c), G_OK);
+    return color_r(&f->c);
+}
+
+/* The 16-texel checker's value averaged over a box of w texels centred at texel coordinates (x, y),
+ * by counting sub-texel samples (the reference for the MIP-mapped lookups). */
+static double box_average(double x, double y, double w)
+{
+    const int k = 64;
+    double sum = 0;
+    for (int i = 0; i < k; i++)
+        for (int j = 0; j < k; j++) {
+            double sx = x - w / 2 + w * (i + 0.5) / k, sy = y - w / 2 + w * (j + 0.5) / k;
+            int cx = (int)floor(sx / 16), cy = (int)floor(sy / 16);
+            sum += ((cx + cy) & 1) ? 1.0 : 0.0;
+        }
+    return sum / (k * k);
+}
+
+static void test_exact_texels(void **state)
+{
+    Fix *f = *state;
+    GMaterial *m = image(f, f->checker1, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
+    /* texel centres at a quarter-texel footprint: the texel itself */
+    for (int x = 0; x < 8; x++)
+        for (int y = 0; y < 8; y++) {
+            double u = (x + 0.5) / N, v = 1.0 - (y + 0.5) / N;
+            assert_float_equal(lookup(f, m, u, v, 0.25), ((x + y) & 1) ? 1.0 : 0.0, 1e-3);
+        }
+    gmaterial_unref(m);
+}
+
+static void test_mip_level_follows_footprint(void **state)
+{
+    Fix *f = *state;
+    GMaterial *m = image(f, f->checker1, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
+    /* one-texel checker: sharp at 1/4 texel, grey once the footprint covers 2 texels, and the distance from
+     * grey shrinks as the footprint grows (the lookup blends towards coarser levels) */
+    double u = 10.5 / N, v = 1.0 - 20.5 / N; /* texel (10, 20): black */
+    double prev = 1.0;
+    const double widths[] = {0.25, 1.0, 1.2, 1.5, 1.8, 2.0, 4.0, 16.0};
+    for (int i = 0; i < 8; i++) {
+        double d = fabs(lookup(f, m, u, v, widths[i]) - 0.5);
+        print_message("pixel checker, footprint %5.2f texels: |value - 0.5| = %.4f\n", widths[i], d);
+        assert_true(d <= prev + 1e-6);
+        prev = d;
+    }
+    assert_float_equal(lookup(f, m, u, v, 0.25), 0.0, 1e-3);
+    assert_float_equal(lookup(f, m, u, v, 2.0), 0.5, 0.01);
+    assert_float_equal(lookup(f, m, u, v, 16.0), 0.5, 0.01);
+    gmaterial_unref(m);
+
+    /* 16-texel cells: compared with the box average over the footprint */
+    m = image(f, f->checker16, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
+    const double pts[][2] = {{24, 8}, {40, 40}, {16, 24}, {100, 3}};
+    const double fw[] = {0.5, 2, 4, 8, 32, 64, 128};
+    double worst = 0;
+    for (int p = 0; p < 4; p++)
+        for (int i = 0; i < 7; i++) {
+            double x = pts[p][0], y = pts[p][1];
+            double got = lookup(f, m, x / N, 1.0 - y / N, fw[i]), want = box_average(x, y, fw[i]);
+            worst = fmax(worst, fabs(got - want));
+            assert_float_equal(got, want, 0.2);
+        }
+    print_message("16-texel checker: largest |lookup - box average| over footprints 0.5..128: %.3f\n", worst);
+    /* at a cell centre a footprint up to the cell keeps the cell's value, and 4 cells wide gives grey */
+    assert_float_equal(lookup(f, m, 24.0 / N, 1.0 - 8.0 / N, 8.0), 1.0, 0.02);
+    assert_float_equal(lookup(f, m, 24.0 / N, 1.0 - 8.0 / N, 64.0), 0.5, 0.02);
+    gmaterial_unref(m);
+}
+
+static void test_wrap_and_orientation(void **state)
+{
+    Fix *f = *state;
+    GMaterial *m = image(f, f->halves, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
+    /* the top half of the file is white: v up */
+    assert_float_equal(lookup(f, m, 0.3, 0.75, 0.0), 1.0, 1e-3);
+    assert_float_equal(lookup(f, m, 0.3, 0.25, 0.0), 0.0, 1e-3);
+    /* periodic: one period up */
+    assert_float_equal(lookup(f, m, 1.3, 1.25, 0.0), 0.0, 1e-3);
+    assert_float_equal(lookup(f, m, -0.7, -0.25, 0.0), 1.0, 1e-3);
+    gmaterial_unref(m);
+    m = image(f, f->halves, GTEX_WRAP_CLAMP, GTEX_COLORSPACE_LINEAR);
+    assert_float_equal(lookup(f, m, 0.3, 1.5, 0.0), 1.0, 1e-3); /* the top row continues */
+    assert_float_equal(lookup(f, m, 0.3, -3.0, 0.0), 0.0, 1e-3);
+    gmaterial_unref(m);
+    m = image(f, f->halves, GTEX_WRAP_BLACK, GTEX_COLORSPACE_LINEAR);
+    assert_float_equal(lookup(f, m, 0.3, 1.5, 0.0), 0.0, 1e-3);
+    assert_float_equal(lookup(f, m, 0.3, 0.75, 0.0), 1.0, 1e-3);
+    gmaterial_unref(m);
+    m = image(f, f->halves, GTEX_WRAP_MIRROR, GTEX_COLORSPACE_LINEAR);
+    assert_float_equal(lookup(f, m, 0.3, 1.25, 0.0), 1.0, 1e-3); /* mirrored: 1.25 reads 0.75 */
+    gmaterial_unref(m);
+}
+
+static void test_color_spaces(void **state)
+{
+    Fix *f = *state;
+    GMaterial *lin = image(f, f->grey, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
+    GMaterial *srgb = image(f, f->grey, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_SRGB);
+    double e = 128.0 / 255.0;
+    assert_float_equal(lookup(f, lin, 0.5, 0.5, 0.0), e, 1e-4);
+    assert_float_equal(lookup(f, srgb, 0.5, 0.5, 0.0), pow((e + 0.055) / 1.055, 2.4), 1e-4);
+    gmaterial_unref(lin);
+    gmaterial_unref(srgb);
+
+    /* a red image over a grey child in a spectral model: the texel colour is converted into the model */
+    GColorModel *spec;
+    GError err;
+    assert_int_equal(gcolormodel_create("spectrum", NULL, &spec, &err), G_OK);
+    GColor one, c;
+    gcolor_alloc(&one, spec);
+    gcolor_alloc(&c, spec);
+    gcolor_from_rgb(&one, (double[3]){0.8, 0.8, 0.8}, GCOLOR_REFLECTANCE);
+    GMaterial *w, *m;
+    assert_int_equal(glambert_create(spec, &one, &w, &err), G_OK);
+    GImageNodeOptions o = {.texsys = f->ts, .colorspace = GTEX_COLORSPACE_LINEAR};
+    assert_int_equal(gnode_image_create(w, f->red, &o, &m, &err), G_OK);
+    GSurfPoint sp;
+    plane_point(&sp, spec, f->scratch, 0.5, 0.5);
+    assert_int_equal(gmaterial_diffuse(m, &sp, &c), G_OK);
+    double rgb[3];
+    gcolor_to_rgb(&c, GCOLOR_REFLECTANCE, rgb);
+    assert_float_equal(rgb[0], 0.8, 0.02);
+    assert_float_equal(rgb[1], 0.0, 0.02);
+    assert_float_equal(rgb[2], 0.0, 0.02);
+    gmaterial_unref(m);
+    gmaterial_unref(w);
+    gcolor_free(&one);
+    gcolor_free(&c);
+    gcolormodel_destroy(spec);
+}
+
+static void test_bad_files(void **state)
+{
+    Fix *f = *state;
+    GError err;
+    GMaterial *m = (GMaterial *)1;
+    GImageNodeOptions o = {.texsys = f->ts};
+    assert_int_equal(gnode_image_create(f->white, f->missing, &o, &m, &err), G_ERR_IO);
+    assert_null(m);
+    assert_non_null(strstr(err.message, f->missing));
+    assert_non_null(strstr(err.message, "no such file"));
+    assert_int_equal(gnode_image_create(f->white, f->corrupt, &o, &m, &err), G_ERR_IO);
+    assert_null(m);
+    assert_non_null(strstr(err.message, f->corrupt));
+    assert_non_null(strstr(err.message, "cannot be read"));
+    print_message("corrupt file: %s\n", err.message);
+    assert_int_equal(gnode_image_create(f->white, "", &o, &m, &err), G_ERR_INVALID);
+    o.blur = -1;
+    assert_int_equal(gnode_image_create(f->white, f->grey, &o, &m, &err), G_ERR_INVALID);
+    assert_non_null(strstr(err.message, "blur"));
+    /* the default texture system is made on demand and goes with its last image node */
+    assert_int_equal(gnode_image_create(f->white, f->grey, NULL, &m, &err), G_OK);
+    GTextureSystem *d = gtexsys_default(&err);
+    assert_non_null(d);
+    gtexsys_unref(d);
+    gmaterial_unref(m);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_exact_texels),
+        cmocka_unit_test(test_mip_level_follows_footprint),
+        cmocka_unit_test(test_wrap_and_orientation),
+        cmocka_unit_test(test_color_spaces),
+        cmocka_unit_test(test_bad_files),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}

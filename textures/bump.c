@@ -1,0 +1,156 @@
+/* bump.c - the bump node: Blinn's (1978) perturbation of the normal by the gradient of a height field
+ * along the surface tangents; every other method is the child's. */
+#include "node_common.h"
+#include "textures_builtin.h"
+
+#include <math.h>
+
+typedef struct Bump {
+    GMaterial base;
+    GMaterial *child;
+    GGenerator *height;
+    double strength;
+} Bump;
+
+static void bump_destroy(GMaterial *self)
+{
+    Bump *b = (Bump *)self;
+    gmaterial_unref(b->child);
+    ggenerator_unref(b->height);
+    gmem_free(b);
+}
+
+/* Two unit tangents with t1 x t2 = m. */
+static void frame(GVec3 m, GVec3 *t1, GVec3 *t2)
+{
+    GVec3 a = fabs(m.x) < 0.9 ? gvec3(1, 0, 0) : gvec3(0, 1, 0);
+    *t1 = gvec3_normalize(gvec3_cross(a, m));
+    *t2 = gvec3_cross(m, *t1);
+}
+
+static int bump_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
+{
+    const Bump *b = (const Bump *)self;
+    int rc = gmaterial_normal(b->child, sp, n);
+    if (rc != G_OK || b->strength == 0.0)
+        return rc;
+    double hu, hv;
+    rc = ggenerator_surface_derivatives(b->height, sp, &hu, &hv);
+    if (rc != G_OK)
+        return rc;
+    double side = sp->entering ? 1.0 : -1.0;
+    GVec3 m = gvec3_scale(*n, side); /* the outside's normal: bumps rise towards the outside */
+    GVec3 pu = sp->dpdu, pv = sp->dpdv;
+    GVec3 cross = gvec3_cross(pu, pv);
+    double area = gvec3_length(cross);
+    double scale = fmax(gvec3_dot(pu, pu), gvec3_dot(pv, pv));
+    if (!(area > 1e-12 * scale) || !isfinite(area)) {
+        frame(m, &pu, &pv);
+        cross = m;
+        area = 1.0;
+    }
+    double tau = gvec3_dot(m, cross) < 0.0 ? -1.0 : 1.0;
+    GVec3 d = gvec3_add(gvec3_scale(gvec3_cross(m, pv), hu), gvec3_scale(gvec3_cross(pu, m), hv));
+    GVec3 np = gvec3_madd(gvec3_scale(m, area), d, tau * b->strength);
+    double len = gvec3_length(np);
+    if (!(len > 0.0) || !isfinite(len))
+        return G_OK; /* a degenerate perturbation keeps the child's normal */
+    *n = gvec3_scale(np, side / len);
+    return G_OK;
+}
+
+static int bump_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
+                           GColor *result)
+{
+    return gmaterial_reflection(((const Bump *)self)->child, sp, in, illum, out, result);
+}
+
+static int bump_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
+                           const GColor *rel_index, GVec3 out, GColor *result)
+{
+    return gmaterial_refraction(((const Bump *)self)->child, sp, in, illum, rel_index, out, result);
+}
+
+static int bump_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
+{
+    return gmaterial_refraction_index(((const Bump *)self)->child, sp, result);
+}
+
+static int bump_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
+{
+    return gmaterial_reflection_dir(((const Bump *)self)->child, sp, view, dir);
+}
+
+static int bump_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
+                               GVec3 *dir)
+{
+    return gmaterial_refraction_dir(((const Bump *)self)->child, sp, view, rel_index, dir);
+}
+
+static int bump_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result)
+{
+    return gmaterial_emission(((const Bump *)self)->child, sp, out, result);
+}
+
+static int bump_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
+{
+    return gmaterial_ambient(((const Bump *)self)->child, sp, illum, result);
+}
+
+static int bump_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
+                           GColor *result)
+{
+    return gmaterial_absorption(((const Bump *)self)->child, sp, illum, length, result);
+}
+
+static int bump_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
+{
+    return gmaterial_diffuse(((const Bump *)self)->child, sp, result);
+}
+
+static int bump_opaque(const GMaterial *self, GSurfPoint *sp)
+{
+    return gmaterial_opaque(((const Bump *)self)->child, sp);
+}
+
+const GMaterialClass gnode_bump_class = {
+    .abi_version = GMATERIAL_ABI_VERSION,
+    .name = "bump",
+    .description = "normal perturbed by the gradient of a height field (Blinn)",
+    .destroy = bump_destroy,
+    .reflection = bump_reflection,
+    .refraction = bump_refraction,
+    .refraction_index = bump_refraction_index,
+    .reflection_dir = bump_reflection_dir,
+    .refraction_dir = bump_refraction_dir,
+    .emission = bump_emission,
+    .ambient = bump_ambient,
+    .absorption = bump_absorption,
+    .normal = bump_normal,
+    .diffuse = bump_diffuse,
+    .opaque = bump_opaque,
+};
+
+int gnode_bump_create(GMaterial *child, GGenerator *height, double strength, GMaterial **out, GError *err)
+{
+    *out = NULL;
+    const GColorModel *model;
+    int rc = gtexnode_check("bump", &child, 1, height, 1, &model, err);
+    if (rc != G_OK)
+        return rc;
+    if (!isfinite(strength))
+        return gerror_set(err, G_ERR_INVALID, "bump: strength must be finite, got %g", strength);
+    Bump *b = gmem_calloc(1, sizeof *b);
+    if (!b)
+        return gerror_set(err, G_ERR_NOMEM, "bump: out of memory");
+    rc = gmaterial_init(&b->base, &gnode_bump_class, model, err);
+    if (rc != G_OK) {
+        gmem_free(b);
+        return rc;
+    }
+    b->child = gmaterial_ref(child);
+    b->height = ggenerator_ref(height);
+    b->strength = strength;
+    *out = &b->base;
+    return G_OK;
+}

@@ -1,0 +1,76 @@
+/* checker.c - the checker generator in (u, v) or in object space, box-filtered over the footprint. */
+#include "generic/textures.h"
+#include "textures_builtin.h"
+
+#include <math.h>
+
+typedef struct Checker {
+    GGenerator base;
+    int dims;
+    double frequency;
+} Checker;
+
+static void checker_destroy(GGenerator *self) { gmem_free(self); }
+
+/* Integral of the square wave that is 0 on [0, 1) and 1 on [1, 2), repeating. */
+static double wave_integral(double x)
+{
+    double h = floor(0.5 * x);
+    return h + fmax(0.0, x - 2.0 * h - 1.0);
+}
+
+/* The square wave averaged over [x - w/2, x + w/2] (w in cells); the wave itself when w is negligible. */
+static double filtered(double x, double w)
+{
+    if (w > 1e3)
+        return 0.5;
+    if (w > 1e-9)
+        return (wave_integral(x + 0.5 * w) - wave_integral(x - 0.5 * w)) / w;
+    return fmod(fabs(floor(x)), 2.0);
+}
+
+/* Probability that the xor of two independent bits is 1. */
+static double xor2(double a, double b) { return a + b - 2.0 * a * b; }
+
+static double checker_value(const GGenerator *self, GSurfPoint *sp)
+{
+    const Checker *c = (const Checker *)self;
+    double f = c->frequency;
+    if (c->dims == 2) {
+        double w = sp->uv_footprint * f;
+        return xor2(filtered(sp->u * f, w), filtered(sp->v * f, w));
+    }
+    double w = sp->footprint * f;
+    GVec3 p = sp->object_point;
+    return xor2(xor2(filtered(p.x * f, w), filtered(p.y * f, w)), filtered(p.z * f, w));
+}
+
+const GGeneratorClass ggen_checker_class = {
+    .abi_version = GGENERATOR_ABI_VERSION,
+    .name = "checker",
+    .description = "checkerboard 0/1 in (u, v) (dims 2) or object space (dims 3), box-filtered",
+    .destroy = checker_destroy,
+    .value = checker_value,
+};
+
+int ggen_checker_create(int dims, double frequency, GGenerator **out, GError *err)
+{
+    *out = NULL;
+    if (dims != 2 && dims != 3)
+        return gerror_set(err, G_ERR_INVALID, "checker: dims must be 2 or 3, got %d", dims);
+    if (!(frequency > 0.0) || !isfinite(frequency))
+        return gerror_set(err, G_ERR_INVALID, "checker: frequency must be positive and finite, got %g", frequency);
+    Checker *c = gmem_calloc(1, sizeof *c);
+    if (!c)
+        return gerror_set(err, G_ERR_NOMEM, "checker: out of memory");
+    int rc = ggenerator_init(&c->base, &ggen_checker_class,
+                             dims == 2 ? GGENERATOR_SPACE_UV : GGENERATOR_SPACE_OBJECT, err);
+    if (rc != G_OK) {
+        gmem_free(c);
+        return rc;
+    }
+    c->dims = dims;
+    c->frequency = frequency;
+    *out = &c->base;
+    return G_OK;
+}

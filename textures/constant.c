@@ -1,0 +1,53 @@
+/* constant.c - the constant generator. */
+#include "generic/textures.h"
+#include "textures_builtin.h"
+
+#include <math.h>
+
+typedef struct Constant {
+    GGenerator base;
+    double value;
+} Constant;
+
+static void constant_destroy(GGenerator *self) { gmem_free(self); }
+
+static double constant_value(const GGenerator *self, GSurfPoint *sp)
+{
+    (void)sp;
+    return ((const Constant *)self)->value;
+}
+
+static int constant_gradient(const GGenerator *self, GSurfPoint *sp, GVec3 *grad)
+{
+    (void)self;
+    (void)sp;
+    *grad = gvec3(0, 0, 0);
+    return G_OK;
+}
+
+const GGeneratorClass ggen_constant_class = {
+    .abi_version = GGENERATOR_ABI_VERSION,
+    .name = "constant",
+    .description = "the same value everywhere",
+    .destroy = constant_destroy,
+    .value = constant_value,
+    .gradient = constant_gradient,
+};
+
+int ggen_constant_create(double value, GGenerator **out, GError *err)
+{
+    *out = NULL;
+    if (!isfinite(value))
+        return gerror_set(err, G_ERR_INVALID, "constant: value must be finite, got %g", value);
+    Constant *c = gmem_calloc(1, sizeof *c);
+    if (!c)
+        return gerror_set(err, G_ERR_NOMEM, "constant: out of memory");
+    int rc = ggenerator_init(&c->base, &ggen_constant_class, GGENERATOR_SPACE_NONE, err);
+    if (rc != G_OK) {
+        gmem_free(c);
+        return rc;
+    }
+    c->value = value;
+    *out = &c->base;
+    return G_OK;
+}

@@ -1,0 +1,220 @@
+/* image.c - the image node: the child's light-carrying colour results times the colour of an image at
+ * (u, v), looked up through OpenImageIO's TextureSystem (lib/texture_oiio.cpp) with trilinear MIP-mapping
+ * over the surface point's footprint. */
+#include "node_common.h"
+#include "textures_builtin.h"
+#include "texture_oiio.h"
+
+#include <math.h>
+#include <string.h>
+
+typedef struct Image {
+    GMaterial base;
+    GMaterial *child;
+    GTextureSystem *ts;
+    GTexFile *file;
+    int srgb;
+    GTexWrap swrap, twrap;
+    double blur;
+    GColor basis[3]; /* the colours of the linear primaries in the child's model */
+    char *path;
+} Image;
+
+static void image_destroy(GMaterial *self)
+{
+    Image *im = (Image *)self;
+    gmaterial_unref(im->child);
+    for (int i = 0; i < 3; i++)
+        gcolor_free(&im->basis[i]);
+    gtexsys_unref(im->ts);
+    gmem_free(im->path);
+    gmem_free(im);
+}
+
+static double srgb_decode(double v)
+{
+    return v <= 0.04045 ? v / 12.92 : pow((v + 0.055) / 1.055, 2.4);
+}
+
+/* The linear texel colour at the point, looked up once per point (cached under the node). */
+static void texel(const Image *im, GSurfPoint *sp, double rgb[3])
+{
+    GVec3 c;
+    if (gsurfpoint_cache_get(sp, im, NULL, &c)) {
+        rgb[0] = c.x;
+        rgb[1] = c.y;
+        rgb[2] = c.z;
+        return;
+    }
+    float v[3];
+    gtexsys_lookup(im->ts, im->file, im->swrap, im->twrap, sp->u, 1.0 - sp->v, sp->uv_footprint, im->blur, v);
+    for (int i = 0; i < 3; i++)
+        rgb[i] = im->srgb ? srgb_decode(v[i]) : v[i];
+    gsurfpoint_cache_put(sp, im, 1.0, gvec3(rgb[0], rgb[1], rgb[2]));
+}
+
+/* result = texel * result. */
+static int apply(const GMaterial *self, GSurfPoint *sp, GColor *result)
+{
+    const Image *im = (const Image *)self;
+    double rgb[3];
+    texel(im, sp, rgb);
+    GTexTemps t;
+    gtextemps_init(&t);
+    GColor c;
+    int rc = gtextemps_color(&t, sp, result->model, 0, &c);
+    if (rc == G_OK) {
+        if (result->model == im->base.model) {
+            rc = gcolor_scale(&c, &im->basis[0], rgb[0]);
+            if (rc == G_OK)
+                rc = gcolor_add_scaled(&c, &im->basis[1], rgb[1]);
+            if (rc == G_OK)
+                rc = gcolor_add_scaled(&c, &im->basis[2], rgb[2]);
+        } else {
+            rc = gcolor_from_rgb(&c, rgb, GCOLOR_REFLECTANCE);
+        }
+    }
+    if (rc == G_OK)
+        rc = gcolor_mul(result, &c, result);
+    gtextemps_release(&t);
+    return rc;
+}
+
+#define CHILD(self) (((const Image *)(self))->child)
+
+static int image_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
+                            GColor *result)
+{
+    int rc = gmaterial_reflection(CHILD(self), sp, in, illum, out, result);
+    return rc != G_OK ? rc : apply(self, sp, result);
+}
+
+static int image_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
+                            const GColor *rel_index, GVec3 out, GColor *result)
+{
+    int rc = gmaterial_refraction(CHILD(self), sp, in, illum, rel_index, out, result);
+    return rc != G_OK ? rc : apply(self, sp, result);
+}
+
+static int image_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result)
+{
+    int rc = gmaterial_emission(CHILD(self), sp, out, result);
+    return rc != G_OK ? rc : apply(self, sp, result);
+}
+
+static int image_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
+{
+    int rc = gmaterial_ambient(CHILD(self), sp, illum, result);
+    return rc != G_OK ? rc : apply(self, sp, result);
+}
+
+static int image_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
+{
+    int rc = gmaterial_diffuse(CHILD(self), sp, result);
+    return rc != G_OK ? rc : apply(self, sp, result);
+}
+
+static int image_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
+{
+    return gmaterial_refraction_index(CHILD(self), sp, result);
+}
+
+static int image_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
+{
+    return gmaterial_reflection_dir(CHILD(self), sp, view, dir);
+}
+
+static int image_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
+                                GVec3 *dir)
+{
+    return gmaterial_refraction_dir(CHILD(self), sp, view, rel_index, dir);
+}
+
+static int image_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
+                            GColor *result)
+{
+    return gmaterial_absorption(CHILD(self), sp, illum, length, result);
+}
+
+static int image_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
+{
+    return gmaterial_normal(CHILD(self), sp, n);
+}
+
+static int image_opaque(const GMaterial *self, GSurfPoint *sp) { return gmaterial_opaque(CHILD(self), sp); }
+
+const GMaterialClass gnode_image_class = {
+    .abi_version = GMATERIAL_ABI_VERSION,
+    .name = "image",
+    .description = "the child's reflected and emitted light times an image's colour at (u, v)",
+    .destroy = image_destroy,
+    .reflection = image_reflection,
+    .refraction = image_refraction,
+    .refraction_index = image_refraction_index,
+    .reflection_dir = image_reflection_dir,
+    .refraction_dir = image_refraction_dir,
+    .emission = image_emission,
+    .ambient = image_ambient,
+    .absorption = image_absorption,
+    .normal = image_normal,
+    .diffuse = image_diffuse,
+    .opaque = image_opaque,
+};
+
+int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptions *opt, GMaterial **out,
+                       GError *err)
+{
+    *out = NULL;
+    GImageNodeOptions o;
+    memset(&o, 0, sizeof o);
+    if (opt)
+        o = *opt;
+    const GColorModel *model;
+    int rc = gtexnode_check("image", &child, 1, NULL, 0, &model, err);
+    if (rc != G_OK)
+        return rc;
+    if (!path || !path[0])
+        return gerror_set(err, G_ERR_INVALID, "image: no file name given");
+    if ((unsigned)o.swrap > GTEX_WRAP_MIRROR || (unsigned)o.twrap > GTEX_WRAP_MIRROR ||
+        (unsigned)o.colorspace > GTEX_COLORSPACE_LINEAR)
+        return gerror_set(err, G_ERR_INVALID, "image '%s': unknown wrap mode or colour space", path);
+    if (!(o.blur >= 0.0) || !isfinite(o.blur))
+        return gerror_set(err, G_ERR_INVALID, "image '%s': blur must be >= 0, got %g", path, o.blur);
+    Image *im = gmem_calloc(1, sizeof *im);
+    if (!im)
+        return gerror_set(err, G_ERR_NOMEM, "image: out of memory");
+    rc = gmaterial_init(&im->base, &gnode_image_class, model, err);
+    if (rc != G_OK) {
+        gmem_free(im);
+        return rc;
+    }
+    im->child = gmaterial_ref(child);
+    im->swrap = o.swrap;
+    im->twrap = o.twrap;
+    im->blur = o.blur;
+    im->path = gmem_strdup(path);
+    im->ts = o.texsys ? gtexsys_ref(o.texsys) : gtexsys_default(err);
+    if (!im->path)
+        rc = gerror_set(err, G_ERR_NOMEM, "image: out of memory");
+    else if (!im->ts)
+        rc = err && err->code ? err->code : G_ERR_NOMEM;
+    int channels = 0, srgb = 0;
+    if (rc == G_OK)
+        rc = gtexsys_open(im->ts, path, &im->file, &channels, &srgb, err);
+    im->srgb = o.colorspace == GTEX_COLORSPACE_SRGB || (o.colorspace == GTEX_COLORSPACE_AUTO && srgb);
+    for (int i = 0; i < 3 && rc == G_OK; i++) {
+        double e[3] = {i == 0, i == 1, i == 2};
+        rc = gcolor_alloc(&im->basis[i], model);
+        if (rc != G_OK)
+            rc = gerror_set(err, G_ERR_NOMEM, "image: out of memory");
+        else if ((rc = gcolor_from_rgb(&im->basis[i], e, GCOLOR_REFLECTANCE)) != G_OK)
+            rc = gerror_set(err, rc, "image '%s': the colour model '%s' cannot take RGB colours", path,
+                            gcolormodel_name(model));
+    }
+    if (rc != G_OK) {
+        image_destroy(&im->base);
+        return rc;
+    }
+    *out = &im->base;
+    return G_OK;
+}

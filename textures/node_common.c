@@ -1,0 +1,266 @@
+/* node_common.c - weighted blends of children for every material method, shared by the interpolate,
+ * spline and select nodes, and the small helpers of all nodes. */
+#include "node_common.h"
+
+#include <math.h>
+
+int gtextemps_color(GTexTemps *t, GSurfPoint *sp, const GColorModel *m, int index, GColor *c)
+{
+    float *v;
+    if (sp && sp->scratch) {
+        if (!t->scratch) {
+            t->scratch = sp->scratch;
+            t->mark = gscratch_mark(sp->scratch);
+        }
+        v = gscratch_alloc(sp->scratch, (size_t)m->capacity * sizeof(float));
+        if (!v)
+            return G_ERR_NOMEM;
+    } else {
+        if (m->capacity > GTEX_STACK_FLOATS || index < 0 || index > 1)
+            return G_ERR_NOMEM;
+        v = t->stack[index];
+    }
+    c->model = m;
+    c->v = v;
+    c->kind = GCOLOR_VECTOR;
+    return G_OK;
+}
+
+void gtextemps_release(GTexTemps *t)
+{
+    if (t->scratch)
+        gscratch_release(t->scratch, t->mark);
+    t->scratch = NULL;
+}
+
+int gtexnode_scales_method(GNodeMethod m)
+{
+    return m == GNODE_REFLECTION || m == GNODE_REFRACTION || m == GNODE_EMISSION || m == GNODE_AMBIENT ||
+           m == GNODE_DIFFUSE;
+}
+
+int gtexnode_check(const char *node, GMaterial *const *children, int n, const GGenerator *gen, int gen_needed,
+                   const GColorModel **model, GError *err)
+{
+    if (!children || n <= 0)
+        return gerror_set(err, G_ERR_INVALID, "%s: no children given", node);
+    for (int i = 0; i < n; i++)
+        if (!children[i])
+            return gerror_set(err, G_ERR_INVALID, "%s: child %d is missing", node, i + 1);
+    if (gen_needed && !gen)
+        return gerror_set(err, G_ERR_INVALID, "%s: no generator given", node);
+    const GColorModel *m = children[0]->model;
+    for (int i = 1; i < n; i++)
+        if (children[i]->model != m)
+            return gerror_set(err, G_ERR_MISMATCH, "%s: child %d computes in colour model '%s', child 1 in '%s'",
+                              node, i + 1, gcolormodel_name(children[i]->model), gcolormodel_name(m));
+    *model = m;
+    return G_OK;
+}
+
+void gtexblend_pair(GTexBlend *b, const GMaterial *a, const GMaterial *c, double t)
+{
+    if (!(t > 0.0)) { /* also NaN */
+        b->n = 1;
+        b->m[0] = a;
+        b->w[0] = 1.0;
+    } else if (t >= 1.0) {
+        b->n = 1;
+        b->m[0] = c;
+        b->w[0] = 1.0;
+    } else {
+        b->n = 2;
+        b->m[0] = a;
+        b->w[0] = 1.0 - t;
+        b->m[1] = c;
+        b->w[1] = t;
+    }
+}
+
+/* ---- colour methods: the children's results summed with their weights into the result (through an
+ * accumulator when the result is also an input colour) ---- */
+
+typedef struct ColorCall {
+    int method; /* a GNodeMethod */
+    GVec3 in, out;
+    const GColor *illum, *rel_index;
+    double length;
+} ColorCall;
+
+static int call_color(const GMaterial *m, GSurfPoint *sp, const ColorCall *c, GColor *r)
+{
+    switch (c->method) {
+    case GNODE_REFLECTION: return gmaterial_reflection(m, sp, c->in, c->illum, c->out, r);
+    case GNODE_REFRACTION: return gmaterial_refraction(m, sp, c->in, c->illum, c->rel_index, c->out, r);
+    case GNODE_REFRACTION_INDEX: return gmaterial_refraction_index(m, sp, r);
+    case GNODE_EMISSION: return gmaterial_emission(m, sp, c->out, r);
+    case GNODE_AMBIENT: return gmaterial_ambient(m, sp, c->illum, r);
+    case GNODE_ABSORPTION: return gmaterial_absorption(m, sp, c->illum, c->length, r);
+    default: return gmaterial_diffuse(m, sp, r);
+    }
+}
+
+static int blend_color(const GTexBlend *b, GSurfPoint *sp, const ColorCall *c, GColor *result)
+{
+    if (b->n == 1)
+        return call_color(b->m[0], sp, c, result);
+    /* the first child goes straight into the result unless the result is also an input */
+    int alias = (c->illum && c->illum->v == result->v) || (c->rel_index && c->rel_index->v == result->v);
+    GTexTemps t;
+    gtextemps_init(&t);
+    GColor acc, tmp;
+    int rc = G_OK;
+    if (alias)
+        rc = gtextemps_color(&t, sp, result->model, 0, &acc);
+    else
+        acc = *result;
+    if (rc == G_OK)
+        rc = gtextemps_color(&t, sp, result->model, 1, &tmp);
+    int first = 1;
+    for (int i = 0; i < b->n && rc == G_OK; i++) {
+        if (b->w[i] == 0.0)
+            continue;
+        if (first) {
+            rc = call_color(b->m[i], sp, c, &acc);
+            if (rc == G_OK && b->w[i] != 1.0)
+                rc = gcolor_scale(&acc, &acc, b->w[i]);
+            first = 0;
+        } else {
+            rc = call_color(b->m[i], sp, c, &tmp);
+            if (rc == G_OK)
+                rc = gcolor_add_scaled(&acc, &tmp, b->w[i]);
+        }
+    }
+    if (rc == G_OK && alias)
+        rc = gcolor_copy(result, &acc);
+    else if (rc == G_OK)
+        result->kind = acc.kind;
+    gtextemps_release(&t);
+    return rc;
+}
+
+int gtexblend_reflection(const GTexBlend *b, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
+                         GColor *result)
+{
+    ColorCall c = {.method = GNODE_REFLECTION, .in = in, .out = out, .illum = illum};
+    return blend_color(b, sp, &c, result);
+}
+
+int gtexblend_refraction(const GTexBlend *b, GSurfPoint *sp, GVec3 in, const GColor *illum, const GColor *rel_index,
+                         GVec3 out, GColor *result)
+{
+    ColorCall c = {.method = GNODE_REFRACTION, .in = in, .out = out, .illum = illum, .rel_index = rel_index};
+    return blend_color(b, sp, &c, result);
+}
+
+int gtexblend_refraction_index(const GTexBlend *b, GSurfPoint *sp, GColor *result)
+{
+    ColorCall c = {.method = GNODE_REFRACTION_INDEX};
+    return blend_color(b, sp, &c, result);
+}
+
+int gtexblend_emission(const GTexBlend *b, GSurfPoint *sp, GVec3 out, GColor *result)
+{
+    ColorCall c = {.method = GNODE_EMISSION, .out = out};
+    return blend_color(b, sp, &c, result);
+}
+
+int gtexblend_ambient(const GTexBlend *b, GSurfPoint *sp, const GColor *illum, GColor *result)
+{
+    ColorCall c = {.method = GNODE_AMBIENT, .illum = illum};
+    return blend_color(b, sp, &c, result);
+}
+
+int gtexblend_absorption(const GTexBlend *b, GSurfPoint *sp, const GColor *illum, double length, GColor *result)
+{
+    ColorCall c = {.method = GNODE_ABSORPTION, .illum = illum, .length = length};
+    return blend_color(b, sp, &c, result);
+}
+
+int gtexblend_diffuse(const GTexBlend *b, GSurfPoint *sp, GColor *result)
+{
+    ColorCall c = {.method = GNODE_DIFFUSE};
+    return blend_color(b, sp, &c, result);
+}
+
+/* ---- vectors: the weighted sum of the valid children's vectors, normalised; with one valid child its own
+ * vector; when the sum vanishes (opposite vectors) the valid child of largest weight ---- */
+
+typedef struct DirCall {
+    int method; /* GNODE_REFLECTION_DIR, GNODE_REFRACTION_DIR or GNODE_NORMAL */
+    GVec3 view;
+    const GColor *rel_index;
+} DirCall;
+
+static int call_dir(const GMaterial *m, GSurfPoint *sp, const DirCall *c, GVec3 *d)
+{
+    switch (c->method) {
+    case GNODE_REFLECTION_DIR: return gmaterial_reflection_dir(m, sp, c->view, d);
+    case GNODE_REFRACTION_DIR: return gmaterial_refraction_dir(m, sp, c->view, c->rel_index, d);
+    default: {
+        int rc = gmaterial_normal(m, sp, d);
+        return rc < 0 ? rc : 1;
+    }
+    }
+}
+
+static int blend_dir(const GTexBlend *b, GSurfPoint *sp, const DirCall *c, GVec3 *dir)
+{
+    if (b->n == 1)
+        return call_dir(b->m[0], sp, c, dir);
+    GVec3 sum = gvec3(0, 0, 0), best = sum;
+    double best_w = -INFINITY;
+    int valid = 0;
+    for (int i = 0; i < b->n; i++) {
+        if (b->w[i] == 0.0)
+            continue;
+        GVec3 d;
+        int rc = call_dir(b->m[i], sp, c, &d);
+        if (rc < 0)
+            return rc;
+        if (rc == 0)
+            continue;
+        valid++;
+        sum = gvec3_madd(sum, d, b->w[i]);
+        if (b->w[i] > best_w) {
+            best_w = b->w[i];
+            best = d;
+        }
+    }
+    if (valid == 0)
+        return 0;
+    if (valid == 1) {
+        *dir = best;
+        return 1;
+    }
+    double len = gvec3_length(sum);
+    *dir = len > 1e-12 ? gvec3_scale(sum, 1.0 / len) : best;
+    return 1;
+}
+
+int gtexblend_reflection_dir(const GTexBlend *b, GSurfPoint *sp, GVec3 view, GVec3 *dir)
+{
+    DirCall c = {.method = GNODE_REFLECTION_DIR, .view = view};
+    return blend_dir(b, sp, &c, dir);
+}
+
+int gtexblend_refraction_dir(const GTexBlend *b, GSurfPoint *sp, GVec3 view, const GColor *rel_index, GVec3 *dir)
+{
+    DirCall c = {.method = GNODE_REFRACTION_DIR, .view = view, .rel_index = rel_index};
+    return blend_dir(b, sp, &c, dir);
+}
+
+int gtexblend_normal(const GTexBlend *b, GSurfPoint *sp, GVec3 *n)
+{
+    DirCall c = {.method = GNODE_NORMAL};
+    int rc = blend_dir(b, sp, &c, n);
+    return rc < 0 ? rc : G_OK;
+}
+
+int gtexblend_opaque(const GTexBlend *b, GSurfPoint *sp)
+{
+    for (int i = 0; i < b->n; i++)
+        if (b->w[i] != 0.0 && !gmaterial_opaque(b->m[i], sp))
+            return 0;
+    return 1;
+}

@@ -1,0 +1,149 @@
+/* noise.c - improved gradient noise (Perlin 2002: quintic fade, twelve edge gradients) with an analytic
+ * gradient, and its fractal sums. The lattice hash is an integer mix seeded per generator instead of a
+ * fixed permutation table, so every seed gives a different, deterministic noise. */
+#include "noise.h"
+
+#include <math.h>
+#include <stdint.h>
+
+static uint32_t mix(uint32_t h)
+{
+    h ^= h >> 16;
+    h *= 0x85ebca6bu;
+    h ^= h >> 13;
+    h *= 0xc2b2ae35u;
+    h ^= h >> 16;
+    return h;
+}
+
+/* The twelve edge directions of the cube, padded to sixteen as in Perlin's paper. */
+static const signed char grads[16][3] = {
+    {1, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0}, {1, 0, 1},  {-1, 0, 1}, {1, 0, -1}, {-1, 0, -1},
+    {0, 1, 1}, {0, -1, 1}, {0, 1, -1}, {0, -1, -1}, {1, 1, 0},  {-1, 1, 0}, {0, -1, 1}, {0, -1, -1},
+};
+
+static double fade(double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
+static double dfade(double t) { return 30.0 * t * t * (t * (t - 2.0) + 1.0); }
+static double lerp(double t, double a, double b) { return a + t * (b - a); }
+
+double gtexnoise_signed(unsigned seed, GVec3 p, GVec3 *grad)
+{
+    double fx = floor(p.x), fy = floor(p.y), fz = floor(p.z);
+    int32_t ix = (int32_t)(int64_t)fx, iy = (int32_t)(int64_t)fy, iz = (int32_t)(int64_t)fz;
+    double x = p.x - fx, y = p.y - fy, z = p.z - fz;
+    uint32_t hs = mix(seed * 0x9e3779b9u + 0x7f4a7c15u);
+    double n[8], g[8][3];
+    for (int c = 0; c < 8; c++) {
+        int dx = c & 1, dy = (c >> 1) & 1, dz = (c >> 2) & 1;
+        uint32_t h = mix(hs ^ (uint32_t)(ix + dx) * 0x27d4eb2du);
+        h = mix(h ^ (uint32_t)(iy + dy) * 0x165667b1u);
+        h = mix(h ^ (uint32_t)(iz + dz) * 0xd3a2646cu);
+        const signed char *v = grads[h & 15];
+        g[c][0] = v[0];
+        g[c][1] = v[1];
+        g[c][2] = v[2];
+        n[c] = v[0] * (x - dx) + v[1] * (y - dy) + v[2] * (z - dz);
+    }
+    double u = fade(x), v = fade(y), w = fade(z);
+    double x00 = lerp(u, n[0], n[1]), x10 = lerp(u, n[2], n[3]);
+    double x01 = lerp(u, n[4], n[5]), x11 = lerp(u, n[6], n[7]);
+    double y0 = lerp(v, x00, x10), y1 = lerp(v, x01, x11);
+    double value = lerp(w, y0, y1);
+    if (grad) {
+        double du = dfade(x), dv = dfade(y), dw = dfade(z);
+        /* derivative of the blend weights ... */
+        double ddx = du * lerp(w, lerp(v, n[1] - n[0], n[3] - n[2]), lerp(v, n[5] - n[4], n[7] - n[6]));
+        double ddy = dv * lerp(w, x10 - x00, x11 - x01);
+        double ddz = dw * (y1 - y0);
+        /* ... plus the blended gradients of the corner planes */
+        double gs[3];
+        for (int k = 0; k < 3; k++) {
+            double a = lerp(u, g[0][k], g[1][k]), b = lerp(u, g[2][k], g[3][k]);
+            double c = lerp(u, g[4][k], g[5][k]), d = lerp(u, g[6][k], g[7][k]);
+            gs[k] = lerp(w, lerp(v, a, b), lerp(v, c, d));
+        }
+        *grad = gvec3(ddx + gs[0], ddy + gs[1], ddz + gs[2]);
+    }
+    return value;
+}
+
+double gnoise_perlin3(unsigned seed, double x, double y, double z, GVec3 *grad)
+{
+    double n = gtexnoise_signed(seed, gvec3(x, y, z), grad);
+    if (grad)
+        *grad = gvec3_scale(*grad, 0.5);
+    return 0.5 + 0.5 * n;
+}
+
+double gtexnoise_fbm(const GNoiseParams *p, GVec3 x, GVec3 *grad)
+{
+    double sum = 0.0, norm = 0.0, amp = 1.0, f = p->frequency;
+    GVec3 g = gvec3(0, 0, 0), go;
+    for (int i = 0; i < p->octaves; i++) {
+        sum += amp * gtexnoise_signed(p->seed + (unsigned)i, gvec3_scale(x, f), grad ? &go : NULL);
+        if (grad)
+            g = gvec3_madd(g, go, amp * f);
+        norm += amp;
+        amp *= p->gain;
+        f *= p->lacunarity;
+    }
+    if (grad)
+        *grad = norm > 0.0 ? gvec3_scale(g, 1.0 / norm) : g;
+    return norm > 0.0 ? sum / norm : 0.0;
+}
+
+double gtexnoise_turbulence(const GNoiseParams *p, GVec3 x, GVec3 *grad)
+{
+    double sum = 0.0, norm = 0.0, amp = 1.0, f = p->frequency;
+    GVec3 g = gvec3(0, 0, 0), go;
+    for (int i = 0; i < p->octaves; i++) {
+        double n = gtexnoise_signed(p->seed + (unsigned)i, gvec3_scale(x, f), grad ? &go : NULL);
+        sum += amp * fabs(n);
+        if (grad)
+            g = gvec3_madd(g, go, (n < 0.0 ? -amp : amp) * f);
+        norm += amp;
+        amp *= p->gain;
+        f *= p->lacunarity;
+    }
+    double t = norm > 0.0 ? sum / norm : 0.0;
+    if (grad)
+        *grad = t > 1.0 || norm <= 0.0 ? gvec3(0, 0, 0) : gvec3_scale(g, 1.0 / norm);
+    return t > 1.0 ? 1.0 : t;
+}
+
+int gtexnoise_params(const char *name, const GNoiseParams *in, GNoiseParams *out, GError *err)
+{
+    GNoiseParams d = {GGENERATOR_SPACE_OBJECT, 1.0, 0u, 4, 2.0, 0.5};
+    if (in) {
+        if ((unsigned)in->space > GGENERATOR_SPACE_WORLD)
+            return gerror_set(err, G_ERR_INVALID, "%s: unknown space %d", name, (int)in->space);
+        if (in->space != GGENERATOR_SPACE_NONE)
+            d.space = in->space;
+        if (!isfinite(in->frequency) || in->frequency < 0.0 || !isfinite(in->lacunarity) || in->lacunarity < 0.0 ||
+            !isfinite(in->gain) || in->gain < 0.0)
+            return gerror_set(err, G_ERR_INVALID, "%s: frequency, lacunarity and gain must be finite and positive",
+                              name);
+        if (in->octaves < 0 || in->octaves > 16)
+            return gerror_set(err, G_ERR_INVALID, "%s: octaves must be within 1..16, got %d", name, in->octaves);
+        if (in->frequency > 0.0)
+            d.frequency = in->frequency;
+        if (in->lacunarity > 0.0)
+            d.lacunarity = in->lacunarity;
+        if (in->gain > 0.0)
+            d.gain = in->gain;
+        if (in->octaves > 0)
+            d.octaves = in->octaves;
+        d.seed = in->seed;
+    }
+    *out = d;
+    return G_OK;
+}
+
+GVec3 gtexnoise_coords(const GGenerator *g, const GSurfPoint *sp)
+{
+    switch (g->space) {
+    case GGENERATOR_SPACE_UV: return gvec3(sp->u, sp->v, 0.0);
+    case GGENERATOR_SPACE_WORLD: return sp->point;
+    default: return sp->object_point;
+    }
+}

@@ -1,0 +1,199 @@
+/* transform.c - the transform node: the subtree is evaluated on a copy of the surface point whose (u, v)
+ * and object-space point (with their tangents and footprints) are moved, which moves its patterns. */
+#include "node_common.h"
+#include "textures_builtin.h"
+
+#include <math.h>
+
+typedef struct Transform {
+    GMaterial base;
+    GMaterial *child;
+    int has_uv, has_xyz;
+    GAffine2 uv;      /* moves the pattern */
+    GAffine2 uv_inv;  /* applied to the coordinates */
+    double uv_area;   /* sqrt |det uv_inv|: footprint factor */
+    GAffine3 xyz_inv; /* applied to the object point */
+    double xyz_len;   /* cbrt |det xyz_inv| */
+} Transform;
+
+static void transform_destroy(GMaterial *self)
+{
+    Transform *t = (Transform *)self;
+    gmaterial_unref(t->child);
+    gmem_free(t);
+}
+
+static int is_zero(GVec3 a) { return a.x == 0.0 && a.y == 0.0 && a.z == 0.0; }
+
+/* Fills q with the moved copy of sp. Unless `for_normal`, the shading normal (and, where refraction needs
+ * it, the relative index) is first computed on the original point, so the copy carries the values of the
+ * untransformed tree instead of recomputing them from the root at moved coordinates. */
+static void move(const Transform *t, GSurfPoint *sp, GSurfPoint *q, int for_normal, int need_index)
+{
+    if (!for_normal) {
+        gsurfpoint_normal(sp);
+        if (need_index && (sp->from || sp->to))
+            gsurfpoint_relative_index(sp);
+    }
+    *q = *sp;
+    q->ncache = 0;
+    if (t->has_uv) {
+        const double *m = t->uv.m;
+        gaffine2_apply(&t->uv_inv, sp->u, sp->v, &q->u, &q->v);
+        q->dpdu = gvec3_add(gvec3_scale(sp->dpdu, m[0]), gvec3_scale(sp->dpdv, m[3]));
+        q->dpdv = gvec3_add(gvec3_scale(sp->dpdu, m[1]), gvec3_scale(sp->dpdv, m[4]));
+        q->uv_footprint = sp->uv_footprint * t->uv_area;
+    }
+    if (t->has_xyz) {
+        int have = !is_zero(sp->object_dpdu) || !is_zero(sp->object_dpdv);
+        q->object_point = gaffine3_apply(&t->xyz_inv, sp->object_point);
+        q->object_dpdu = gaffine3_apply_dir(&t->xyz_inv, have ? sp->object_dpdu : sp->dpdu);
+        q->object_dpdv = gaffine3_apply_dir(&t->xyz_inv, have ? sp->object_dpdv : sp->dpdv);
+        q->footprint = sp->footprint * t->xyz_len;
+    }
+}
+
+#define CHILD(self) (((const Transform *)(self))->child)
+#define T(self) ((const Transform *)(self))
+
+static int transform_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
+                                GColor *result)
+{
+    GSurfPoint q;
+    move(T(self), sp, &q, 0, 1);
+    return gmaterial_reflection(CHILD(self), &q, in, illum, out, result);
+}
+
+static int transform_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
+                                const GColor *rel_index, GVec3 out, GColor *result)
+{
+    GSurfPoint q;
+    move(T(self), sp, &q, 0, 1);
+    return gmaterial_refraction(CHILD(self), &q, in, illum, rel_index, out, result);
+}
+
+static int transform_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
+{
+    if (!sp)
+        return gmaterial_refraction_index(CHILD(self), NULL, result);
+    GSurfPoint q;
+    move(T(self), sp, &q, 0, 0);
+    return gmaterial_refraction_index(CHILD(self), &q, result);
+}
+
+static int transform_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
+{
+    GSurfPoint q;
+    move(T(self), sp, &q, 0, 0);
+    return gmaterial_reflection_dir(CHILD(self), &q, view, dir);
+}
+
+static int transform_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
+                                    GVec3 *dir)
+{
+    GSurfPoint q;
+    move(T(self), sp, &q, 0, 1);
+    return gmaterial_refraction_dir(CHILD(self), &q, view, rel_index, dir);
+}
+
+static int transform_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result)
+{
+    GSurfPoint q;
+    move(T(self), sp, &q, 0, 0);
+    return gmaterial_emission(CHILD(self), &q, out, result);
+}
+
+static int transform_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
+{
+    GSurfPoint q;
+    move(T(self), sp, &q, 0, 0);
+    return gmaterial_ambient(CHILD(self), &q, illum, result);
+}
+
+static int transform_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
+                                GColor *result)
+{
+    if (!sp)
+        return gmaterial_absorption(CHILD(self), NULL, illum, length, result);
+    GSurfPoint q;
+    move(T(self), sp, &q, 0, 0);
+    return gmaterial_absorption(CHILD(self), &q, illum, length, result);
+}
+
+static int transform_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
+{
+    GSurfPoint q;
+    move(T(self), sp, &q, 1, 0);
+    return gmaterial_normal(CHILD(self), &q, n);
+}
+
+static int transform_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
+{
+    GSurfPoint q;
+    move(T(self), sp, &q, 0, 0);
+    return gmaterial_diffuse(CHILD(self), &q, result);
+}
+
+static int transform_opaque(const GMaterial *self, GSurfPoint *sp)
+{
+    GSurfPoint q;
+    move(T(self), sp, &q, 0, 0);
+    return gmaterial_opaque(CHILD(self), &q);
+}
+
+const GMaterialClass gnode_transform_class = {
+    .abi_version = GMATERIAL_ABI_VERSION,
+    .name = "transform",
+    .description = "moves the (u, v) and object-space patterns of its subtree",
+    .destroy = transform_destroy,
+    .reflection = transform_reflection,
+    .refraction = transform_refraction,
+    .refraction_index = transform_refraction_index,
+    .reflection_dir = transform_reflection_dir,
+    .refraction_dir = transform_refraction_dir,
+    .emission = transform_emission,
+    .ambient = transform_ambient,
+    .absorption = transform_absorption,
+    .normal = transform_normal,
+    .diffuse = transform_diffuse,
+    .opaque = transform_opaque,
+};
+
+int gnode_transform_create(GMaterial *child, const GAffine2 *uv, const GAffine3 *xyz, GMaterial **out,
+                           GError *err)
+{
+    *out = NULL;
+    const GColorModel *model;
+    int rc = gtexnode_check("transform", &child, 1, NULL, 0, &model, err);
+    if (rc != G_OK)
+        return rc;
+    Transform *t = gmem_calloc(1, sizeof *t);
+    if (!t)
+        return gerror_set(err, G_ERR_NOMEM, "transform: out of memory");
+    if (uv) {
+        t->has_uv = 1;
+        t->uv = *uv;
+        if (gaffine2_invert(uv, &t->uv_inv, NULL) != G_OK)
+            rc = gerror_set(err, G_ERR_INVALID, "transform: the (u, v) transform is singular or not finite");
+        const double *m = t->uv_inv.m;
+        t->uv_area = sqrt(fabs(m[0] * m[4] - m[1] * m[3]));
+    }
+    if (rc == G_OK && xyz) {
+        t->has_xyz = 1;
+        if (gaffine3_invert(xyz, &t->xyz_inv, NULL) != G_OK)
+            rc = gerror_set(err, G_ERR_INVALID, "transform: the 3D transform is singular or not finite");
+        const double *m = t->xyz_inv.m;
+        double det = m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) +
+                     m[2] * (m[4] * m[9] - m[5] * m[8]);
+        t->xyz_len = cbrt(fabs(det));
+    }
+    if (rc == G_OK)
+        rc = gmaterial_init(&t->base, &gnode_transform_class, model, err);
+    if (rc != G_OK) {
+        gmem_free(t);
+        return rc;
+    }
+    t->child = gmaterial_ref(child);
+    *out = &t->base;
+    return G_OK;
+}
