@@ -1,5 +1,5 @@
-/* node_common.c - weighted blends of children for every material method, shared by the interpolate,
- * spline and select nodes, and the small helpers of all nodes. */
+/* node_common.c - weighted blends of children for every material method, shared by the interpolate
+ * and spline nodes, and the small utilities of all nodes. */
 #include "node_common.h"
 
 #include <math.h>

@@ -1,4 +1,4 @@
-/* node_common.h - helpers shared by the texture nodes (textures/node_common.c): weighted blends of
+/* node_common.h - code shared by the texture nodes (textures/node_common.c): weighted blends of
  * children for every material method, temporaries, and constructor checks. Internal to the library. */
 #ifndef GENERIC_TEXTURES_NODE_COMMON_H
 #define GENERIC_TEXTURES_NODE_COMMON_H

@@ -1,4 +1,4 @@
-/* parse_common.h - helpers of the texture parse routines (textures/parse_common.c). Internal. */
+/* parse_common.h - pieces shared by the texture parse routines (textures/parse_common.c). Internal. */
 #ifndef GENERIC_TEXTURES_PARSE_COMMON_H
 #define GENERIC_TEXTURES_PARSE_COMMON_H
 

@@ -1,4 +1,4 @@
-/* texture.h - the texture generator interface (GGenerator) and its evaluation helpers.
+/* texture.h - the texture generator interface (GGenerator) and its evaluation functions.
  *
  * A texture tree is a tree of materials: its leaves are ordinary materials and its inner nodes
  * (interpolate, select, spline, bump, scale, image, transform; include/generic/textures.h) implement
