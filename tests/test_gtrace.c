@@ -475,6 +475,39 @@ static void test_nonfinite_never_reaches_pixels(void **state)
     scene_destroy(s);
 }
 
+/* ---- a material that fails stops the render: an error, and no image ---- */
+
+static int failing_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
+                              GColor *result)
+{
+    (void)self, (void)sp, (void)in, (void)illum, (void)out, (void)result;
+    return G_ERR_INVALID;
+}
+
+static const GMaterialClass failing_class = {
+    .abi_version = GMATERIAL_ABI_VERSION, .name = "failing", .description = "fails", .destroy = nan_destroy,
+    .reflection = failing_reflection,
+};
+
+static void test_material_error_stops_render(void **state)
+{
+    (void)state;
+    Scene *s = new_scene("rgb", gvec3(0, 0, 4), gvec3(0, 0, 0), 40.0);
+    GMaterial *m = gmem_calloc(1, sizeof *m);
+    GError err;
+    assert_int_equal(gmaterial_init(m, &failing_class, s->model, &err), G_OK);
+    add_sphere(s, m, gvec3(0, 0, 0), 1.0);
+    add_light(s, LIGHT_POINT, 10.0)->position = gvec3(0, 3, 3);
+    assert_int_equal(accel_build(s, &err), G_OK);
+    RenderSettings rs = {.width = 16, .height = 16, .spp = 1, .depth = 2, .threads = 2, .quiet = 1};
+    Framebuffer fb = {0};
+    RenderStats st;
+    assert_int_equal(render_image(s, &rs, &fb, &st, &err), G_ERR_INVALID);
+    assert_null(fb.pixels);
+    print_message("%s\n", err.message);
+    scene_destroy(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -487,6 +520,7 @@ int main(void)
         cmocka_unit_test(test_grey_world_models),
         cmocka_unit_test(test_depth_limit),
         cmocka_unit_test(test_nonfinite_never_reaches_pixels),
+        cmocka_unit_test(test_material_error_stops_render),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

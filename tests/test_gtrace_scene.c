@@ -8,6 +8,7 @@
 #include <generic/image.h>
 
 #include <ctype.h>
+#include <dirent.h>
 #include <unistd.h>
 
 /* Intersects one ray with a scene holding the given objects and fills the surface point. */
@@ -430,17 +431,31 @@ static void test_sources_are_model_free(void **state)
     const char *root = getenv("GENERIC_SOURCE_DIR");
     if (!root)
         root = ".";
-    const char *files[] = {"accel.c", "camera.c", "gtrace.h", "lights.c", "main.c", "mesh.c", "output.c",
-                           "parse.c", "progress.c", "render.c", "scene.c", "shade.c", "shapes.c", "transform.c"};
+    /* every .c and .h of the tracer */
+    char dirpath[1024];
+    snprintf(dirpath, sizeof dirpath, "%s/examples/gtrace", root);
+    DIR *dir = opendir(dirpath);
+    if (!dir)
+        fail_msg("cannot open %s", dirpath);
+    char files[64][256];
+    int nfiles = 0;
+    struct dirent *de;
+    while ((de = readdir(dir)) && nfiles < 64) {
+        size_t l = strlen(de->d_name);
+        if (l > 2 && l < 250 && de->d_name[l - 2] == '.' && (de->d_name[l - 1] == 'c' || de->d_name[l - 1] == 'h'))
+            snprintf(files[nfiles++], sizeof files[0], "%s", de->d_name);
+    }
+    closedir(dir);
+    assert_true(nfiles >= 13);
     /* allowed spellings: the XYZ -> display conversion and the name of the display encoding */
     const char *allowed[] = {"gcie_xyz_to_rgb", "sRGB"};
     /* colour model names, the rgb conversions, sample access, the nm exchange and the models' sizes */
     const char *forbidden[] = {"rgb", "spectrum", "spectral", ".v[", "->v[", "_nm", "nsamples",
                                "nvalues", "capacity", "lambda", "gcolor_wrap", "cls->"};
     int checked = 0;
-    for (size_t f = 0; f < sizeof files / sizeof *files; f++) {
-        char path[1024];
-        snprintf(path, sizeof path, "%s/examples/gtrace/%s", root, files[f]);
+    for (int f = 0; f < nfiles; f++) {
+        char path[2048];
+        snprintf(path, sizeof path, "%.1023s/%.255s", dirpath, files[f]);
         FILE *fp = fopen(path, "r");
         if (!fp)
             fail_msg("cannot read %s", path);
@@ -472,8 +487,82 @@ static void test_sources_are_model_free(void **state)
         }
         fclose(fp);
     }
-    print_message("%d lines of the tracer checked\n", checked);
+    print_message("%d lines in %d files of the tracer checked\n", checked, nfiles);
     assert_true(checked > 1000);
+}
+
+/* ---- allocation failures: loading and rendering fail cleanly at every allocation ---- */
+
+static long alloc_budget; /* allocations still allowed; every one after that fails */
+
+static int take_budget(void)
+{
+    long left;
+#pragma omp atomic capture
+    left = alloc_budget--;
+    return left > 0;
+}
+
+static void *budget_alloc(size_t size, void *user)
+{
+    (void)user;
+    return take_budget() ? malloc(size) : NULL;
+}
+
+static void *budget_realloc(void *ptr, size_t size, void *user)
+{
+    (void)user;
+    return take_budget() ? realloc(ptr, size) : NULL;
+}
+
+static void budget_free(void *ptr, void *user)
+{
+    (void)user;
+    free(ptr);
+}
+
+static void test_allocation_failures(void **state)
+{
+    (void)state;
+    GError err;
+    assert_int_equal(gtrace_register_types(&err), G_OK);
+    char *path = write_temp("alloc.scene",
+                            "material g lambert { reflectance rgb 0.5 0.5 0.5 }\n"
+                            "material glass dielectric { index 1.5 }\n"
+                            "camera pinhole { from <0, 1, 4> at <0, 0.5, 0> width 8 height 6 spp 2 depth 3 }\n"
+                            "object plane { material g }\n"
+                            "object sphere { center <0, 0.5, 0> radius 0.5 material glass }\n"
+                            "light sphere { center <1, 3, 1> radius 0.2 radiance rgb 5 5 5 samples 4 }\n"
+                            "light ambient { color rgb 0.1 0.1 0.1 }\n");
+    GAllocator a = {budget_alloc, budget_realloc, budget_free, NULL};
+    int failures = 0, k;
+    for (k = 0; k < 5000; k++) {
+        alloc_budget = k;
+        gmem_set_allocator(&a);
+        Scene *s = NULL;
+        Framebuffer fb = {0};
+        RenderStats st;
+        int rc = scene_load(path, NULL, &s, &err);
+        if (rc == G_OK)
+            rc = accel_build(s, &err);
+        if (rc == G_OK) {
+            RenderSettings rs = {.width = 8, .height = 6, .spp = 2, .depth = 3, .threads = 2, .quiet = 1};
+            rc = render_image(s, &rs, &fb, &st, &err);
+            if (rc != G_OK)
+                assert_null(fb.pixels); /* a failed render keeps no image */
+        }
+        framebuffer_free(&fb);
+        scene_destroy(s);
+        gmem_set_allocator(NULL);
+        if (rc == G_OK)
+            break;
+        assert_true(rc < 0);
+        failures++;
+    }
+    print_message("loading and rendering failed cleanly at each of the first %d allocations, then succeeded\n",
+                  failures);
+    assert_true(k < 5000 && failures > 10);
+    unlink(path);
 }
 
 int main(void)
@@ -483,7 +572,7 @@ int main(void)
         cmocka_unit_test(test_box_faces),            cmocka_unit_test(test_cylinder_disc_plane),
         cmocka_unit_test(test_obj_mesh),             cmocka_unit_test(test_scene_file),
         cmocka_unit_test(test_scene_errors),         cmocka_unit_test(test_output_roundtrip),
-        cmocka_unit_test(test_sources_are_model_free),
+        cmocka_unit_test(test_sources_are_model_free), cmocka_unit_test(test_allocation_failures),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -54,6 +54,7 @@ for m in rgb spectrum9 spectrum bispectral; do
     best "gt_$m" "$GT" "$DIR/scene.scene" -o "$TMP/gt_$m.png" --threads 2 --colormodel $m
 done
 best gt_rgb_1 "$GT" "$DIR/scene.scene" -o "$TMP/gt_rgb_1.png" --threads 1 --colormodel rgb
+best gt_start "$GT" --help
 
 printf "%-18s %8s %8s %9s %9s %9s %8s\n" "" "wall s" "cpu s" "render s" "M rays" "M rays/s" "peak MB"
 for m in rgb spectrum9 spectrum bispectral; do
@@ -80,3 +81,13 @@ echo "colour models / rgb (render time): spectrum9 $(ratio "$(render_s gt_spectr
 (target <= 2), spectrum $(ratio "$(render_s gt_spectrum)" "$(render_s gt_rgb)") (target <= 6), \
 bispectral $(ratio "$(render_s gt_bispectral)" "$(render_s gt_rgb)")"
 echo "speed-up from 1 to 2 threads (render time): $(ratio "$(render_s gt_rgb_1)" "$(render_s gt_rgb)") (target >= 1.8)"
+# CPU time is steadier than wall time on a shared machine: the same ratios from the processes' CPU seconds,
+# gtrace's start-up (loading OpenImageIO's shared libraries, measured with --help) taken out
+start=$(cpu gt_start)
+net() { awk -v a="$(cpu "$1")" -v s="$start" 'BEGIN { printf "%.3f", a - s }'; }
+echo "CPU seconds: start-up $start; net of it rgb $(net gt_rgb), spectrum9 $(net gt_spectrum9), spectrum \
+$(net gt_spectrum), bispectral $(net gt_bispectral); ratios to rgb $(ratio "$(net gt_spectrum9)" "$(net gt_rgb)"), \
+$(ratio "$(net gt_spectrum)" "$(net gt_rgb)"), $(ratio "$(net gt_bispectral)" "$(net gt_rgb)")"
+if command -v povray > /dev/null; then
+    echo "CPU seconds, whole process: gtrace rgb $(cpu gt_rgb), POV-Ray $(cpu pov): ratio $(ratio "$(cpu gt_rgb)" "$(cpu pov)")"
+fi

@@ -49,16 +49,33 @@ void camera_ray(const Camera *c, double x, double y, Ray *r)
     r->cone_spread = c->spread / len;
 }
 
-void pixel_sample(Rng *rng, int i, int n, const int *perm, double *sx, double *sy)
+int strata_grid(int n)
+{
+    int k = (int)lround(sqrt((double)n));
+    return n > 1 && k * k == n ? k : 0;
+}
+
+void strata_shuffle(Rng *rng, int n, int *perm)
+{
+    for (int i = 0; i < n; i++)
+        perm[i] = i;
+    for (int i = n - 1; i > 0; i--) {
+        int j = (int)(rng_next(rng) * (i + 1));
+        int t = perm[i];
+        perm[i] = perm[j];
+        perm[j] = t;
+    }
+}
+
+void pixel_sample(Rng *rng, int i, int n, int grid, const int *perm, double *sx, double *sy)
 {
     if (n <= 1) {
         *sx = *sy = 0.5;
         return;
     }
-    int k = (int)lround(sqrt((double)n));
-    if (k * k == n) {
-        *sx = ((i % k) + rng_next(rng)) / k;
-        *sy = ((i / k) + rng_next(rng)) / k;
+    if (grid) {
+        *sx = ((i % grid) + rng_next(rng)) / grid;
+        *sy = ((i / grid) + rng_next(rng)) / grid;
         return;
     }
     *sx = (i + rng_next(rng)) / n;

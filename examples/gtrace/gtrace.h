@@ -250,6 +250,7 @@ typedef struct TraceCtx {
     GColor unit;    /**< 1 in every sample (the vacuum's refraction index): probes a branch's weight */
     uint64_t rays;  /**< rays cast through Embree */
     int status;     /**< first error (G_OK while fine) */
+    const char *culprit; /**< type of the material whose call failed first (NULL: none or not a material) */
 } TraceCtx;
 
 /** The media a ray travels through: bottom = the camera's medium, top = the current one. */
@@ -287,9 +288,13 @@ GVec3 offset_origin(GVec3 p, GVec3 n, GVec3 dir);
 void camera_setup(Camera *c, int width, int height);
 /** The primary ray through image position (x, y) in pixels (y down from the top). */
 void camera_ray(const Camera *c, double x, double y, Ray *r);
-/** Sample position i of n in the unit square for a pixel: a jittered grid when n is a square, otherwise
- * N-rooks (stratified in x and y, randomly paired); n = 1 gives the pixel centre. */
-void pixel_sample(Rng *rng, int i, int n, const int *perm, double *sx, double *sy);
+/** The side of the jittered grid for n samples when n is a square above 1, else 0. */
+int strata_grid(int n);
+/** A random permutation of 0..n-1 (pairs the x and y strata of N-rooks sampling). */
+void strata_shuffle(Rng *rng, int n, int *perm);
+/** Sample position i of n in the unit square: a jittered grid when grid = strata_grid(n) is not 0,
+ * otherwise N-rooks (stratified in x and in y, paired by perm); n = 1 gives the centre. */
+void pixel_sample(Rng *rng, int i, int n, int grid, const int *perm, double *sx, double *sy);
 
 typedef struct RenderSettings {
     int width, height, spp, depth, threads, quiet;

@@ -127,18 +127,6 @@ static double smoothstep(double a, double b, double x)
     return t * t * (3.0 - 2.0 * t);
 }
 
-static void shuffle(Rng *rng, int *perm, int n)
-{
-    for (int i = 0; i < n; i++)
-        perm[i] = i;
-    for (int i = n - 1; i > 0; i--) {
-        int j = (int)(rng_next(rng) * (i + 1));
-        int t = perm[i];
-        perm[i] = perm[j];
-        perm[j] = t;
-    }
-}
-
 int light_temps(TraceCtx *c, LightTmp *t)
 {
     int rc;
@@ -187,13 +175,14 @@ int light_shade(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const
             return G_OK; /* the whole cap is below the surface */
         double omega = 2.0 * M_PI * (1.0 - cos_max);
         int n = l->samples < 1 ? 1 : l->samples > AREA_MAX_SAMPLES ? AREA_MAX_SAMPLES : l->samples;
-        int perm[AREA_MAX_SAMPLES];
-        shuffle(&c->rng, perm, n);
+        int perm[AREA_MAX_SAMPLES], grid = strata_grid(n);
+        if (!grid && n > 1)
+            strata_shuffle(&c->rng, n, perm);
         GVec3 t1, t2;
         frame_from_normal(axis, &t1, &t2);
         for (int i = 0; i < n; i++) {
             double u1, u2;
-            pixel_sample(&c->rng, i, n, perm, &u1, &u2);
+            pixel_sample(&c->rng, i, n, grid, perm, &u1, &u2);
             if (n == 1)
                 u1 = rng_next(&c->rng), u2 = rng_next(&c->rng);
             double ct = 1.0 - u1 * (1.0 - cos_max), st = sqrt(fmax(0.0, 1.0 - ct * ct)), ph = 2.0 * M_PI * u2;
@@ -216,11 +205,12 @@ int light_shade(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const
             return G_OK;
         nl = gvec3_scale(nl, 1.0 / area);
         int n = l->samples < 1 ? 1 : l->samples > AREA_MAX_SAMPLES ? AREA_MAX_SAMPLES : l->samples;
-        int perm[AREA_MAX_SAMPLES];
-        shuffle(&c->rng, perm, n);
+        int perm[AREA_MAX_SAMPLES], grid = strata_grid(n);
+        if (!grid && n > 1)
+            strata_shuffle(&c->rng, n, perm);
         for (int i = 0; i < n; i++) {
             double u1, u2;
-            pixel_sample(&c->rng, i, n, perm, &u1, &u2);
+            pixel_sample(&c->rng, i, n, grid, perm, &u1, &u2);
             if (n == 1)
                 u1 = rng_next(&c->rng), u2 = rng_next(&c->rng);
             GVec3 y = gvec3_add(l->position, gvec3_add(gvec3_scale(l->edge1, u1), gvec3_scale(l->edge2, u2)));

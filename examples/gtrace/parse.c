@@ -380,13 +380,19 @@ int scene_from_library(GLibrary *lib, const char *name, Scene **out, GError *err
         void *o = glibrary_entry(lib, GKIND_OBJECT, i, NULL, &t);
         if (t && t->parse == parse_object)
             rc = scene_add_object(s, o, err);
+        else
+            rc = gerror_set(err, G_ERR_UNSUPPORTED, "%s: object type '%s' is not one gtrace renders", name,
+                            t ? t->name : "?");
     }
     n = glibrary_count(lib, GKIND_LIGHT);
     for (int i = 0; i < n && rc == G_OK; i++) {
         const GTypeInfo *t;
         Light *l = glibrary_entry(lib, GKIND_LIGHT, i, NULL, &t);
-        if (!t || t->parse != parse_light)
-            continue;
+        if (!t || t->parse != parse_light) {
+            rc = gerror_set(err, G_ERR_UNSUPPORTED, "%s: light type '%s' is not one gtrace renders", name,
+                            t ? t->name : "?");
+            break;
+        }
         if (l->kind == LIGHT_AMBIENT) {
             rc = gcolor_add(&s->ambient, &s->ambient, &l->color);
             s->have_ambient = 1;
@@ -408,6 +414,9 @@ int scene_from_library(GLibrary *lib, const char *name, Scene **out, GError *err
             s->camera = *c;
             s->have_camera = 1;
             s->medium = gmaterial_ref(c->medium);
+        } else {
+            rc = gerror_set(err, G_ERR_UNSUPPORTED, "%s: camera type '%s' is not one gtrace renders", name,
+                            t ? t->name : "?");
         }
     }
     if (rc < 0) {

@@ -30,21 +30,12 @@ static int render_pixel(TraceCtx *c, const Job *job, int x, int y, int *perm, ui
     if (rc != G_OK)
         goto done;
     rng_seed(&c->rng, (uint64_t)y * (uint64_t)job->fb->width + (uint64_t)x, 0x9e3779b97f4a7c15ULL);
-    int n = job->spp;
-    int k = (int)lround(sqrt((double)n));
-    if (n > 1 && k * k != n) {
-        for (int i = 0; i < n; i++)
-            perm[i] = i;
-        for (int i = n - 1; i > 0; i--) {
-            int j = (int)(rng_next(&c->rng) * (i + 1));
-            int t = perm[i];
-            perm[i] = perm[j];
-            perm[j] = t;
-        }
-    }
+    int n = job->spp, grid = strata_grid(n);
+    if (n > 1 && !grid)
+        strata_shuffle(&c->rng, n, perm);
     for (int i = 0; i < n; i++) {
         double sx, sy;
-        pixel_sample(&c->rng, i, n, perm, &sx, &sy);
+        pixel_sample(&c->rng, i, n, grid, perm, &sx, &sy);
         Ray r;
         camera_ray(job->cam, x + sx, y + sy, &r);
         GScratchMark m2 = gscratch_mark(c->scratch);
@@ -117,6 +108,7 @@ int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, Rend
     }
     int nthreads = rs->threads > 0 ? rs->threads : omp_get_max_threads();
     int status = G_OK;
+    const char *culprit = NULL;
     uint64_t rays = 0, nonfinite = 0;
     Progress prog;
     progress_start(&prog, ntiles, rs->quiet);
@@ -129,16 +121,16 @@ int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, Rend
         int ok = ctx.scratch && perm && gcolor_alloc(&ctx.unit, s->model) == G_OK &&
                  gmaterial_refraction_index(NULL, NULL, &ctx.unit) == G_OK;
         if (!ok) {
-#pragma omp atomic write
+#pragma omp critical(gtrace_status)
             status = G_ERR_NOMEM;
         }
 #pragma omp for schedule(dynamic, 1)
         for (int tile = 0; tile < ntiles; tile++) {
             int st_now;
-#pragma omp atomic read
+#pragma omp critical(gtrace_status)
             st_now = status;
             if (st_now != G_OK)
-                continue;
+                continue; /* a thread failed: finish quickly */
             int x0 = (tile % job.ntx) * TILE, y0 = (tile / job.ntx) * TILE;
             int x1 = x0 + TILE < rs->width ? x0 + TILE : rs->width;
             int y1 = y0 + TILE < rs->height ? y0 + TILE : rs->height;
@@ -147,8 +139,13 @@ int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, Rend
                 for (int x = x0; x < x1 && rc == G_OK; x++)
                     rc = render_pixel(&ctx, &job, x, y, perm, &nonfinite);
             if (rc != G_OK) {
-#pragma omp atomic write
-                status = rc;
+#pragma omp critical(gtrace_status)
+                {
+                    if (status == G_OK) {
+                        status = rc;
+                        culprit = ctx.culprit;
+                    }
+                }
             }
 #pragma omp critical(gtrace_progress)
             progress_add(&prog, 1);
@@ -165,6 +162,8 @@ int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, Rend
     st->threads = nthreads;
     if (status != G_OK) {
         framebuffer_free(fb);
+        if (culprit)
+            return gerror_set(err, status, "rendering failed in a '%s' material: %s", culprit, gstatus_string(status));
         return gerror_set(err, status, "rendering failed: %s", gstatus_string(status));
     }
     return G_OK;

@@ -106,9 +106,8 @@ static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const 
     GScratchMark mark = gscratch_mark(c->scratch);
     GVec3 view = r->d, to_viewer = gvec3_neg(r->d);
     GColor tmp, illum;
-    int rc = G_OK;
+    int rc = G_OK, have_illum = 0; /* illum: only when a reflected or refracted ray is traced */
     CHECK(gcolor_scratch(&tmp, s->model, c->scratch));
-    CHECK(gcolor_scratch(&illum, s->model, c->scratch));
 
     CHECK(gmaterial_emission(m, sp, to_viewer, out));
     if (s->have_ambient) {
@@ -132,6 +131,8 @@ static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const 
             CHECK(gmaterial_reflection(m, sp, dir, &c->unit, to_viewer, &tmp));
             double w = c->weight * gcolor_brightness(&tmp);
             if (w > 0.0 && w >= c->cutoff) {
+                if (!have_illum++)
+                    CHECK(gcolor_scratch(&illum, s->model, c->scratch));
                 Ray rr = {offset_origin(sp->point, facing, dir), dir, 0.0, INFINITY, width, r->cone_spread};
                 double saved = c->weight;
                 c->weight = w;
@@ -155,6 +156,8 @@ static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const 
                 CHECK(gmaterial_refraction(m, sp, dir, &c->unit, &ri, to_viewer, &tmp));
                 double w = c->weight * gcolor_brightness(&tmp);
                 if (w > 0.0 && w >= c->cutoff) {
+                    if (!have_illum++)
+                        CHECK(gcolor_scratch(&illum, s->model, c->scratch));
                     Media next;
                     media_cross(media, m, sp->entering, &next);
                     Ray tr = {offset_origin(sp->point, facing, dir), dir, 0.0, INFINITY, width, r->cone_spread};
@@ -176,8 +179,10 @@ static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const 
     }
 done:
     gscratch_release(c->scratch, mark);
-    if (rc < 0 && c->status == G_OK)
+    if (rc < 0 && c->status == G_OK) {
         c->status = rc;
+        c->culprit = gmaterial_name(m);
+    }
     return rc;
 }
 
