@@ -26,7 +26,7 @@ static GProbe *probe_from(int h, void (*f)(GVec3, float *))
     float *px = malloc(sizeof(float) * 3 * w * h);
     for (int v = 0; v < h; v++)
         for (int u = 0; u < w; u++) {
-            double th = M_PI * (v + 0.5) / h, ph = 2.0 * M_PI * (u + 0.5) / w;
+            double th = M_PI * (v + 0.5) / h, ph = M_PI - 2.0 * M_PI * (u + 0.5) / w; /* probe.h's convention */
             f(gvec3(sin(th) * cos(ph), sin(th) * sin(ph), cos(th)), px + 3 * (v * w + u));
         }
     GProbe *p = NULL;
@@ -152,12 +152,15 @@ static void test_direction_convention(void **state)
     const int w = gprobe_width(p), h = gprobe_height(p);
     GVec3 d = gprobe_direction(p, 0.0, 0.0); /* top edge: the zenith */
     assert_float_equal(d.z, 1.0, 1e-12);
-    d = gprobe_direction(p, 0.0, h / 2.0); /* left edge on the horizon: +x */
-    assert_float_equal(d.x, 1.0, 1e-12);
+    d = gprobe_direction(p, 0.0, h / 2.0); /* left edge on the horizon: -x */
+    assert_float_equal(d.x, -1.0, 1e-12);
     d = gprobe_direction(p, w / 4.0, h / 2.0); /* a quarter to the right: +y */
     assert_float_equal(d.y, 1.0, 1e-12);
-    d = gprobe_direction(p, w / 2.0, h / 2.0); /* the middle: -x */
-    assert_float_equal(d.x, -1.0, 1e-12);
+    d = gprobe_direction(p, w / 2.0, h / 2.0); /* the middle: +x */
+    assert_float_equal(d.x, 1.0, 1e-12);
+    d = gprobe_direction(p, 0.75 * w, h / 2.0); /* three quarters: -y, the right hand of a viewer facing +x */
+    assert_float_equal(d.y, -1.0, 1e-12);
+    assert_float_equal(gvec3_dot(gvec3_cross(gvec3(1, 0, 0), gvec3(0, 0, 1)), d), 1.0, 1e-12);
     d = gprobe_direction(p, 3.0, h); /* bottom edge: the nadir */
     assert_float_equal(d.z, -1.0, 1e-12);
     double x, y;
@@ -228,12 +231,12 @@ static void test_latlong_angular_round_trip(void **state)
     GProbe *p = probe_from(64, linear_field);
     GImage map;
     assert_int_equal(gprobe_to_angular(p, 256, &map, NULL), G_OK);
-    /* orientation: centre -x, top +z, right -y, left +y */
+    /* orientation: centre +x, top +z, right -y, left +y (as the lat-long image: not mirrored) */
     const float *c = map.pixels + 3 * (128 * 256 + 128);
-    assert_float_equal(c[0], 0.0, 0.02);
+    assert_float_equal(c[0], 2.0, 0.02);
     assert_float_equal(c[1], 1.0, 0.02);
     assert_float_equal(c[2], 1.0, 0.02);
-    c = map.pixels + 3 * (64 * 256 + 128); /* halfway up: 90 degrees from -x towards +z */
+    c = map.pixels + 3 * (64 * 256 + 128); /* halfway up: 90 degrees from +x towards +z */
     assert_float_equal(c[2], 2.0, 0.02);
     c = map.pixels + 3 * (128 * 256 + 192); /* halfway right: -y */
     assert_float_equal(c[1], 0.0, 0.02);
@@ -281,12 +284,13 @@ static void test_rotation(void **state)
     GProbe *p = random_probe(32, 3u), *r = NULL;
     const int w = gprobe_width(p), h = gprobe_height(p);
     double R[9];
-    /* a turn about z by a whole number of pixels is an exact column shift */
+    /* a turn about z by a whole number of pixels is an exact column shift (phi falls to the right, so a
+       positive turn moves the image left) */
     gprobe_rotation_xyz(0.0, 0.0, 360.0 * 5 / w, R);
     assert_int_equal(gprobe_rotate(p, R, &r, NULL), G_OK);
     for (int v = 0; v < h; v++)
         for (int u = 0; u < w; u++)
-            assert_memory_equal(gprobe_pixels(r) + 3 * (v * w + (u + 5) % w), gprobe_pixels(p) + 3 * (v * w + u),
+            assert_memory_equal(gprobe_pixels(r) + 3 * (v * w + (u + w - 5) % w), gprobe_pixels(p) + 3 * (v * w + u),
                                 3 * sizeof(float));
     gprobe_destroy(r);
     /* a general rotation: the irradiance at R n after equals the irradiance at n before */
@@ -386,6 +390,61 @@ static void test_fibonacci_is_even(void **state)
     free(n);
 }
 
+/* An allocator that fails from the k-th allocation on (thread safe: the irradiance sum allocates in threads). */
+static long fail_at, calls;
+static void *oom_alloc(size_t n, void *u)
+{
+    (void)u;
+    long c = __atomic_fetch_add(&calls, 1, __ATOMIC_SEQ_CST);
+    return c >= fail_at ? NULL : malloc(n);
+}
+static void *oom_realloc(void *p, size_t n, void *u)
+{
+    (void)u;
+    long c = __atomic_fetch_add(&calls, 1, __ATOMIC_SEQ_CST);
+    return c >= fail_at ? NULL : realloc(p, n);
+}
+static void oom_free(void *p, void *u) { (void)u; free(p); }
+
+/* Every allocation failure is reported as G_ERR_NOMEM and leaks nothing (the sanitizer build checks). */
+static void test_out_of_memory(void **state)
+{
+    (void)state;
+    float px[16 * 8 * 3];
+    for (int i = 0; i < 16 * 8 * 3; i++)
+        px[i] = (float)(i % 7);
+    GAllocator a = {oom_alloc, oom_realloc, oom_free, NULL};
+    const GProbeTechnique ts[] = {GPROBE_MEDIANCUT, GPROBE_ADAPTIVE, GPROBE_KMEANS, GPROBE_IRRADIANCE};
+    for (int t = -1; t < 4; t++) {
+        int succeeded = 0;
+        for (fail_at = 0; fail_at < 200 && !succeeded; fail_at++) {
+            calls = 0;
+            gmem_set_allocator(&a);
+            GProbe *p = NULL;
+            GError err;
+            int rc = gprobe_create(16, 8, px, &p, &err);
+            if (rc == G_OK && t >= 0) {
+                GProbeLight l[4];
+                GProbeOptions opt = {0};
+                opt.fit_normals = 50;
+                rc = gprobe_approximate(p, ts[t], 4, &opt, l, &err);
+            } else if (rc == G_OK) {
+                GVec3 n[10];
+                double E[30];
+                gprobe_fibonacci(10, n);
+                rc = gprobe_irradiance(p, n, 10, E, &err);
+            }
+            gprobe_destroy(p);
+            gmem_set_allocator(NULL);
+            if (rc == G_OK)
+                succeeded = 1;
+            else
+                assert_int_equal(rc, G_ERR_NOMEM);
+        }
+        assert_true(succeeded);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -400,6 +459,7 @@ int main(void)
         cmocka_unit_test(test_save_and_load),
         cmocka_unit_test(test_compare_measures),
         cmocka_unit_test(test_fibonacci_is_even),
+        cmocka_unit_test(test_out_of_memory),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -288,6 +288,28 @@ static void test_irradiance_beats_its_start(void **state)
         skip();
 }
 
+/* Every light ends up carrying colour: on uffizi with 48 lights fitted at 400 normals, two lights lose all
+ * colour in the first fit; they are moved where the model is too dark and the fit continues. */
+static void test_irradiance_uses_every_light(void **state)
+{
+    (void)state;
+    char buf[1024];
+    const char *path = shared_probe("uffizi.hdr", buf, sizeof buf);
+    if (!path)
+        skip();
+    GProbe *p = NULL;
+    assert_int_equal(gprobe_load(path, GPROBE_AUTO, 0, &p, NULL), G_OK);
+    GProbeLight l[48];
+    GProbeFitReport rep;
+    GProbeOptions opt = {0};
+    opt.fit_normals = 400;
+    assert_int_equal(gprobe_irradiance_fit(p, 48, &opt, l, &rep, NULL), G_OK);
+    assert_int_equal(rep.active, 48);
+    assert_true(rep.converged);
+    assert_true(rep.final < rep.projected);
+    gprobe_destroy(p);
+}
+
 /* Ramamoorthi & Hanrahan's nine coefficients: mean error within 2% of the largest irradiance. */
 static void test_sh9_accuracy_on_shared_probes(void **state)
 {
@@ -333,6 +355,7 @@ int main(void)
         cmocka_unit_test(test_kmeans_is_deterministic),
         cmocka_unit_test(test_technique_names),
         cmocka_unit_test(test_irradiance_beats_its_start),
+        cmocka_unit_test(test_irradiance_uses_every_light),
         cmocka_unit_test(test_sh9_accuracy_on_shared_probes),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

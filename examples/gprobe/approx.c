@@ -109,14 +109,19 @@ int cmd_approx(int argc, char **argv)
     TextOut to;
     if (text_open(&to, out) != 0)
         goto done;
+    double R[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    if (pa.rotate)
+        gprobe_rotation_xyz(pa.rot[0], pa.rot[1], pa.rot[2], R);
+    for (int k = 0; k < 9; k++)
+        R[k] = fabs(R[k]) < 1e-12 ? 0.0 : R[k];
     fprintf(to.f,
             "# %d directional lights approximating the light probe %s (%dx%d)\n"
             "# technique %s; irradiance error at %d normals: mean %.3f%%, max %.3f%% of the true irradiance,\n"
             "# mean %.4f%% of the largest irradiance.\n"
-            "# Probe frame: z is up (the probe's zenith%s). `direction` is the way the light travels;\n"
+            "# The probe's zenith is (%.6g, %.6g, %.6g)%s. `direction` is the way the light travels;\n"
             "# the colour is the irradiance on a surface facing the light (linear Rec.709 RGB).\n",
-            kept, pa.path, gprobe_width(p), gprobe_height(p), tech, m, e.mean_rel, e.max_rel, e.mean_norm,
-            pa.rotate ? ", after --rotate" : "");
+            kept, pa.path, gprobe_width(p), gprobe_height(p), tech, m, e.mean_rel, e.max_rel, e.mean_norm, R[2], R[5],
+            R[8], pa.rotate ? " after --rotate" : "");
     if (kept < n)
         fprintf(to.f, "# %d of the %d lights carry no energy and are left out.\n", n - kept, n);
     for (int i = 0; i < n; i++) {

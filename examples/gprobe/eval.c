@@ -82,16 +82,29 @@ static int parse_list_techniques(const char *s, int *use)
     return any ? 0 : -1;
 }
 
-static int write_csv(const char *path, const Row *rows, int n)
+static void put_csv(FILE *f, const Row *rows, int n)
 {
-    TextOut t;
-    if (text_open(&t, path) != 0)
-        return -1;
-    fprintf(t.f, "technique,count,mean_rel,max_rel,mean_norm,max_norm,seconds\n");
+    fprintf(f, "technique,count,mean_rel,max_rel,mean_norm,max_norm,seconds\n");
     for (int i = 0; i < n; i++)
-        fprintf(t.f, "%s,%d,%.6g,%.6g,%.6g,%.6g,%.6g\n", tech_name(rows[i].tech), rows[i].count, rows[i].e.mean_rel,
+        fprintf(f, "%s,%d,%.6g,%.6g,%.6g,%.6g,%.6g\n", tech_name(rows[i].tech), rows[i].count, rows[i].e.mean_rel,
                 rows[i].e.max_rel, rows[i].e.mean_norm, rows[i].e.max_norm, rows[i].seconds);
-    return text_close(&t, 1);
+}
+
+/* 0 when the directory of path can take a new file (checked before the long work starts). */
+static int dir_writable(const char *path)
+{
+    char dir[4096];
+    snprintf(dir, sizeof dir, "%s", path);
+    char *slash = strrchr(dir, '/');
+    if (slash)
+        *(slash == dir ? slash + 1 : slash) = '\0';
+    else
+        snprintf(dir, sizeof dir, ".");
+    if (access(dir, W_OK) != 0) {
+        fprintf(stderr, "gprobe: cannot write %s: directory %s is not writable or does not exist\n", path, dir);
+        return -1;
+    }
+    return 0;
 }
 
 int cmd_eval(int argc, char **argv)
@@ -139,11 +152,17 @@ int cmd_eval(int argc, char **argv)
             return 2;
         }
     }
-    if (png && plot_check_gnuplot() != 0)
+    if (png && (plot_check_gnuplot() != 0 || dir_writable(png) != 0))
+        return 1;
+    TextOut csv_out = {0};
+    if (csv && text_open(&csv_out, csv) != 0)
         return 1;
     GProbe *p = probe_args_load(&pa);
-    if (!p)
+    if (!p) {
+        if (csv)
+            text_close(&csv_out, 0);
         return 1;
+    }
 
     GVec3 *normals = gmem_calloc((size_t)m, sizeof *normals);
     double *truth = gmem_calloc((size_t)m * 3, sizeof(double)), *approx = gmem_calloc((size_t)m * 3, sizeof(double));
@@ -219,8 +238,12 @@ int cmd_eval(int argc, char **argv)
                 fprintf(stderr, "\r  %-12s N=%-4d mean %7.3f%%  max %8.3f%%  %7.3f s", tech_name(t), n, r->e.mean_rel,
                         r->e.max_rel, dt);
                 if (t == GPROBE_IRRADIANCE)
-                    fprintf(stderr, "  (objective %.4g -> %.4g, %d iterations%s)", rep.initial, rep.final, rep.iterations,
+                    fprintf(stderr, "  (objective %.4g -> %.4g, %d iterations%s", rep.initial, rep.final, rep.iterations,
                             rep.converged ? "" : ", iteration limit");
+                if (t == GPROBE_IRRADIANCE && rep.revived)
+                    fprintf(stderr, ", %d unused lights moved", rep.revived);
+                if (t == GPROBE_IRRADIANCE)
+                    fputc(')', stderr);
                 fputc('\n', stderr);
             }
         }
@@ -232,33 +255,34 @@ int cmd_eval(int argc, char **argv)
         printf("%-11s %6d %10.3f %10.3f %10.4f %10.4f %9.3f\n", tech_name(rows[i].tech), rows[i].count,
                rows[i].e.mean_rel, rows[i].e.max_rel, rows[i].e.mean_norm, rows[i].e.max_norm, rows[i].seconds);
     status = 0;
-    if (csv && write_csv(csv, rows, nrows) != 0)
-        status = 1;
+    if (csv) {
+        put_csv(csv_out.f, rows, nrows);
+        csv = NULL; /* closed here */
+        if (text_close(&csv_out, 1) != 0)
+            status = 1;
+    }
     if (png && status == 0) {
-        char tmpcsv[64] = "";
-        const char *src = csv;
-        if (!src) {
-            snprintf(tmpcsv, sizeof tmpcsv, "/tmp/gprobe-eval-XXXXXX");
-            int fd = mkstemp(tmpcsv);
-            if (fd < 0) {
-                perror("gprobe: temporary file");
+        char tmpcsv[64] = "/tmp/gprobe-eval-XXXXXX";
+        int fd = mkstemp(tmpcsv);
+        FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
+        if (!f) {
+            perror("gprobe: temporary file");
+            if (fd >= 0)
+                close(fd);
+            status = 1;
+        } else {
+            put_csv(f, rows, nrows);
+            if (fclose(f) != 0)
                 status = 1;
-                goto done;
-            }
-            close(fd);
-            if (write_csv(tmpcsv, rows, nrows) != 0)
-                status = 1;
-            src = tmpcsv;
-        }
-        if (status == 0) {
             const char *base = strrchr(pa.path, '/');
-            if (plot_errors(src, png, title ? title : base ? base + 1 : pa.path) != 0)
+            if (status == 0 && plot_errors(tmpcsv, png, title ? title : base ? base + 1 : pa.path) != 0)
                 status = 1;
         }
-        if (tmpcsv[0])
-            unlink(tmpcsv);
+        unlink(tmpcsv);
     }
 done:
+    if (csv) /* still open: the work failed */
+        text_close(&csv_out, 0);
     gmem_free(normals);
     gmem_free(truth);
     gmem_free(approx);

@@ -24,8 +24,9 @@ static void usage(FILE *f)
             "  approx      write the lights of one technique as text-format entries (gtrace reads them)\n"
             "  irradiance  print the ground-truth irradiance (RGB) for one normal\n"
             "  convert     write the probe as a lat-long or angular map (after --rotate)\n"
-            "Directions: z is up; a probe's lat-long row 0 is the zenith and phi grows to the right from +x\n"
-            "towards +y (see include/generic/probe.h).\n");
+            "Directions: right-handed, z up. In a lat-long probe row 0 is the zenith, the middle column looks\n"
+            "along +x, a quarter of the way along +y and the edges along -x, as Blender maps world textures\n"
+            "(see include/generic/probe.h).\n");
 }
 
 int main(int argc, char **argv)

@@ -4,17 +4,22 @@
  * (../shared/papers/). Probe pixels are linear RGB radiance; everything here works per RGB channel.
  *
  * Direction convention (the one used by every function here, by gprobe and by the lights it writes):
- *   z is up (the zenith). A direction is a unit vector from the probe's centre towards where the light
- *   comes from:   omega(theta, phi) = (sin theta cos phi, sin theta sin phi, cos theta),
- *   theta in [0, pi] measured from +z, phi in [0, 2 pi) measured from +x towards +y (the paper's sec. 3.1).
+ *   right-handed, z is up (the zenith). A direction is a unit vector from the probe's centre towards where
+ *   the light comes from:   omega(theta, phi) = (sin theta cos phi, sin theta sin phi, cos theta),
+ *   theta in [0, pi] measured from +z, phi measured from +x towards +y (the paper's sec. 3.1).
  * Latitude-longitude images (width = 2 * height): pixel (u, v), row v = 0 at the top, is centred on
- *   theta = pi (v + 0.5) / H and phi = 2 pi (u + 0.5) / W. Row 0 touches the zenith, the middle of the image
- *   is the horizon, column 0 starts at phi = 0 (+x) and phi grows to the right.
- * Angular maps (Debevec's "light probe" form, a D x D image): the disc's centre looks along -x (the
- *   direction at the middle of the lat-long image), up in the image is +z and right is -y, and a point at
- *   distance r from the centre (in units of the disc's radius) lies at the angle pi r from -x, so the rim is
- *   +x. Pixels outside the disc are ignored. Lat-long and angular images of one probe thus show the scene
- *   the same way round.
+ *   theta = pi (v + 0.5) / H   and   phi = pi - 2 pi (u + 0.5) / W.
+ *   Row 0 touches the zenith and the middle row is the horizon; the middle column looks along +x, the left
+ *   and right edges along -x, a quarter of the way along +y and three quarters along -y. Seen from the
+ *   centre, facing the middle of the image with z up, the image's right is the viewer's right (-y): the
+ *   environment is not mirrored. This is the mapping of Blender's world textures (Cycles'
+ *   direction_to_equirectangular), for which the blender-data probes are made. The paper puts phi = 0 at
+ *   the left edge and lets it grow to the right, which in a right-handed frame shows the scene mirrored;
+ *   irradiance and every error measure are the same either way.
+ * Angular maps (Debevec's "light probe" form, a D x D image): the disc's centre looks along +x (the middle
+ *   of the lat-long image), up in the image is +z and right is -y (the viewer's right, as in the lat-long
+ *   image), and a point at distance r from the centre (in units of the disc's radius) lies at the angle pi r
+ *   from +x, so the rim is -x. Pixels outside the disc are ignored.
  *
  * Irradiance. Pixel (u, v) with radiance P is a small source of weight
  *   Q(u, v) = 2 pi^2 P(u, v) sin(theta_v) / (W H)          (the paper's Eq. 4, at the pixel centre),
@@ -36,7 +41,8 @@
 extern "C" {
 #endif
 
-/** A light probe held as a latitude-longitude image of linear RGB radiance (opaque). */
+/** A light probe held as a latitude-longitude image of linear RGB radiance (opaque). Besides the pixels it
+ * keeps their weights Q and a summed-area table for the median cuts: about 80 bytes per pixel in all. */
 typedef struct GProbe GProbe;
 
 /** How an image file maps to directions. */
@@ -96,8 +102,8 @@ int gprobe_to_image(const GProbe *p, GImage *out, GError *err);
 /** Writes the probe to a file in the given form (GPROBE_AUTO: lat-long); angular maps are H x H. */
 int gprobe_save(const GProbe *p, const char *path, GProbeFormat format, GError *err);
 /** A new probe showing the environment turned by the rotation matrix R (row-major, 3x3): radiance that came
- * from direction d now comes from R d. Resampled bilinearly (supersampled) except for turns about z by whole
- * pixels, which are exact. */
+ * from direction d now comes from R d. Resampled bilinearly, except for turns about z by whole pixels, which
+ * are exact column shifts. G_ERR_INVALID when R is not a rotation. */
 int gprobe_rotate(const GProbe *p, const double R[9], GProbe **out, GError *err);
 /** Fills R with the rotation by the given angles in degrees about x, then y, then z (R = Rz Ry Rx). */
 void gprobe_rotation_xyz(double x_deg, double y_deg, double z_deg, double R[9]);
@@ -107,7 +113,7 @@ void gprobe_rotation_xyz(double x_deg, double y_deg, double z_deg, double R[9]);
 /** Fills normals[0..m-1] with unit vectors spread evenly over the sphere (a Fibonacci lattice). */
 void gprobe_fibonacci(int m, GVec3 *normals);
 
-/** Ground-truth irradiance E (3 doubles per normal) at m normals: the full sum over pixels (Eq. 4), exact
+/** Ground-truth irradiance E (3 doubles per normal) at m unit normals: the full sum over pixels (Eq. 4), exact
  * up to rounding. Each row of the probe is a circle of directions; the visible arc for a normal is found in
  * closed form and summed with per-row prefix sums, so the cost is O(W H + m H) instead of O(m W H). */
 int gprobe_irradiance(const GProbe *p, const GVec3 *normals, int m, double *E, GError *err);
@@ -174,6 +180,7 @@ typedef struct GProbeFitReport {
     int accepted;       /**< steps that lowered the objective */
     int active;         /**< lights with non-zero colour at the end */
     int converged;      /**< 1 when the iteration stopped by its convergence test, 0 at the iteration limit */
+    int revived;        /**< lights that lost all colour and were moved and fitted again (kept results only) */
 } GProbeFitReport;
 
 /** Approximates the probe by n directional lights with a technique (median cut needs n a power of 2).

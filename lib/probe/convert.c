@@ -5,20 +5,21 @@
 #include <math.h>
 #include <string.h>
 
-/* Angular map coordinates (a right, b up, both in [-1, 1], r <= 1 inside the disc) to a direction. */
+/* Angular map coordinates (a right, b up, both in [-1, 1], r <= 1 inside the disc) to a direction: the
+ * centre looks along +x, right is -y, up is +z (probe.h). */
 static GVec3 angular_to_dir(double a, double b)
 {
     double r = sqrt(a * a + b * b);
     if (r < 1e-12)
-        return gvec3(-1.0, 0.0, 0.0);
+        return gvec3(1.0, 0.0, 0.0);
     double psi = M_PI * r, s = sin(psi) / r;
-    return gvec3(-cos(psi), -a * s, b * s);
+    return gvec3(cos(psi), -a * s, b * s);
 }
 
 /* Direction (unit) to angular map coordinates. */
 static void dir_to_angular(GVec3 d, double *a, double *b)
 {
-    double c = -d.x;
+    double c = d.x;
     if (c > 1.0)
         c = 1.0;
     if (c < -1.0)
@@ -132,8 +133,7 @@ int gprobe_from_angular(const GImage *map, int height, GProbe **out, GError *err
             double acc[3] = {0, 0, 0};
             for (int sv = 0; sv < ss; sv++)
                 for (int su = 0; su < ss; su++) {
-                    double theta = M_PI * (v + (sv + 0.5) / ss) / h, phi = 2.0 * M_PI * (u + (su + 0.5) / ss) / w;
-                    GVec3 d = gvec3(sin(theta) * cos(phi), sin(theta) * sin(phi), cos(theta));
+                    GVec3 d = probe_latlong_dir(u + (su + 0.5) / ss, v + (sv + 0.5) / ss, w, h);
                     double a, b, rgb[3];
                     dir_to_angular(d, &a, &b);
                     angular_lookup(map, a, b, rgb);
@@ -197,7 +197,7 @@ int gprobe_rotate(const GProbe *p, const double R[9], GProbe **out, GError *err)
     if (!buf)
         return gerror_set(err, G_ERR_NOMEM, "out of memory rotating a probe");
     /* a turn about z by a whole number of pixels is a shift of the columns */
-    double shift = atan2(R[3], R[0]) * w / (2.0 * M_PI);
+    double shift = -atan2(R[3], R[0]) * w / (2.0 * M_PI); /* phi falls to the right (probe.h) */
     int about_z = fabs(R[8] - 1.0) < 1e-12 && fabs(R[2]) < 1e-12 && fabs(R[5]) < 1e-12;
     if (about_z && fabs(shift - round(shift)) < 1e-6) {
         int s = (((int)lround(shift)) % w + w) % w;

@@ -6,6 +6,7 @@
  * an arc |phi - phi_n| < acos(-n_z cos(theta) / (rho sin(theta))), and over that arc
  *     sum Q (n . omega) = n_z cos(theta) sum Q + rho-part: n_x sin(theta) sum Q cos(phi) + n_y sin(theta) sum Q sin(phi).
  * With per-row prefix sums of Q, Q cos(phi) and Q sin(phi) the arc costs O(1), so a normal costs O(H).
+ * Column u has phi = pi - 2 pi (u + 0.5) / W (probe.h), so in columns the arc is centred on pi - phi_n.
  * The arc's end pixels are checked with the same dot product the pixel-by-pixel sum uses, so both sums
  * take exactly the same pixels. */
 #include "probe_internal.h"
@@ -123,8 +124,7 @@ int gprobe_irradiance(const GProbe *p, const GVec3 *normals, int m, double *E, G
     double *phin = rho + m;
     for (int i = 0; i < m; i++) {
         rho[i] = sqrt(normals[i].x * normals[i].x + normals[i].y * normals[i].y);
-        double a = atan2(normals[i].y, normals[i].x);
-        phin[i] = a < 0.0 ? a + 2.0 * M_PI : a;
+        phin[i] = M_PI - atan2(normals[i].y, normals[i].x); /* the column phase of the normal, in [0, 2 pi] */
     }
     memset(E, 0, sizeof(double) * 3 * (size_t)m);
     int failed = 0;

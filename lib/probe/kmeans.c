@@ -56,7 +56,7 @@ static long make_points(const GProbe *p, Point **out)
     long n = 0;
     for (int j = 0; j < bh; j++)
         for (int i = 0; i < bw; i++) {
-            double s[4];
+            double s[PROBE_SAT];
             int u1 = (i + 1) * b < p->w ? (i + 1) * b : p->w, v1 = (j + 1) * b < p->h ? (j + 1) * b : p->h;
             probe_sat_sum(p, i * b, j * b, u1, v1, s);
             double len = sqrt(s[1] * s[1] + s[2] * s[2] + s[3] * s[3]);

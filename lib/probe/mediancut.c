@@ -1,8 +1,9 @@
 /* mediancut.c - Debevec's median cut (2005) and the region operations it shares with adaptive.c.
  *
  * Energy is the Rec. 709 luminance of the weights Q (so the sin(theta) of the lat-long mapping is already
- * in it). A summed-area table of the energy and of energy times the pixel direction makes the energy and
- * the centroid of any rectangle O(1); the cut that halves a region's energy is found by bisection. */
+ * in it). A summed-area table (built with the probe) of the energy, of energy times the pixel direction and
+ * of Q's channels makes the energy, centroid and colour of any rectangle O(1); the cut that halves a
+ * region's energy is found by bisection, so n lights cost O(n log W) after the table. */
 #include "probe_internal.h"
 #include "generic/memory.h"
 
@@ -31,7 +32,7 @@ double probe_region_spread(const ProbeRegion *r)
 /* Energy of the first c columns (along u) or rows (along v) of r. */
 static double part_energy(const GProbe *p, const ProbeRegion *r, int along_u, int c)
 {
-    double s[4];
+    double s[PROBE_SAT];
     if (along_u)
         probe_sat_sum(p, r->u0, r->v0, r->u0 + c, r->v1, s);
     else
@@ -84,7 +85,6 @@ int probe_region_split(const GProbe *p, const ProbeRegion *r, ProbeRegion *a, Pr
 
 void probe_regions_to_lights(const GProbe *p, const ProbeRegion *regions, int n, GProbeLight *lights)
 {
-    #pragma omp parallel for schedule(dynamic, 1) if (n > 8)
     for (int i = 0; i < n; i++) {
         const ProbeRegion *r = &regions[i];
         GProbeLight *l = &lights[i];
@@ -93,18 +93,8 @@ void probe_regions_to_lights(const GProbe *p, const ProbeRegion *regions, int n,
             l->dir = gvec3(r->sum[1] / s, r->sum[2] / s, r->sum[3] / s);
         else /* no energy: the rectangle's centre */
             l->dir = gprobe_direction(p, 0.5 * (r->u0 + r->u1), 0.5 * (r->v0 + r->v1));
-        double rgb[3] = {0, 0, 0};
-        for (int v = r->v0; v < r->v1; v++) {
-            const float *q = p->q + ((size_t)v * p->w + r->u0) * 3;
-            double row[3] = {0, 0, 0};
-            for (int u = 0; u < r->u1 - r->u0; u++)
-                for (int c = 0; c < 3; c++)
-                    row[c] += q[u * 3 + c];
-            for (int c = 0; c < 3; c++)
-                rgb[c] += row[c];
-        }
         for (int c = 0; c < 3; c++)
-            l->rgb[c] = rgb[c];
+            l->rgb[c] = r->sum[4 + c];
     }
 }
 

@@ -10,18 +10,28 @@
  *
  * Method (variable projection with non-negativity):
  *   - the colours enter linearly, so for given directions the best colours are a non-negative least-squares
- *     problem per channel, solved exactly (Lawson-Hanson on the normal equations, warm-started);
- *   - the 2N direction parameters are moved by Levenberg-Marquardt steps with the analytic Jacobian (the
- *     derivative of max(0, omega . n) along two tangent directions of omega; directions are updated on the
- *     sphere by the exponential map, so there is no singularity at the poles) and Marquardt scaling;
- *   - a step is accepted only when F, with the colours re-solved at the new directions, goes down; so F never
- *     increases and every run ends at a point no worse than its start. The Jacobian is the one for fixed
- *     colours: at optimal colours its J^T r is the gradient of the projected F (Danskin), so the damped step
- *     is a descent direction and the iteration converges for every N (128 included).
- *   - Lights whose colour is 0 in every channel after convergence carry nothing; each is moved to the fit
- *     normal where the model falls shortest of the truth (largest weighted under-estimate) and the fit runs
- *     again, kept only if F improved. This attacks the paper's failure above 64 sources ("too little energy
- *     for some sources to latch on to").
+ *     problem per channel, solved exactly (Lawson-Hanson on the normal equations, warm-started from the
+ *     previous colours); the colours are never a free LM parameter and can never go negative;
+ *   - the 2N direction parameters move by Levenberg-Marquardt steps (Marquardt's diagonal scaling, Nielsen's
+ *     damping update) with the analytic Jacobian: the derivative of max(0, omega . n) along two tangent
+ *     directions of omega. Directions are updated on the sphere by the exponential map (no pole singularity)
+ *     and no light turns more than 0.5 rad per step;
+ *   - the Gauss-Newton matrix is Kaufman's for the projected problem: J_d^T J_d minus, per channel, the part
+ *     the re-solved colours absorb (the Schur complement over the channel's non-zero colours, see schur()).
+ *     This turned ~400 slow alternating iterations into ~30-120;
+ *   - a step is accepted only when F, with the colours re-solved at the new directions, goes down: F never
+ *     increases, so the result is never worse than the start. At optimal colours J^T r is the gradient of the
+ *     projected F (Danskin), so a damped step always exists that lowers F until a stationary point. The run
+ *     stops when no step up to lambda = 1e12 lowers F, the gradient vanishes, or four accepted steps in a row
+ *     gain less than 1e-5 of F ("converged"), else at the iteration limit (400 by default);
+ *   - the paper lost convergence above 64 sources, which it blamed on sources finding too little energy to
+ *     latch on to. Here a source never has to find energy: its colour is whatever the projection gives, and
+ *     the damping only accepts improvements. A source whose colours all reach 0 has a zero Jacobian and
+ *     would stay unused (it happens at N = 64..128 on several real probes), so after convergence each such
+ *     source is moved to the fit normal where the model falls furthest short of the truth and the fit runs
+ *     again (up to three rounds), kept only when F went down (revive()).
+ * The fit uses its own M_f normals (2000: 6000 residuals for at most 5 x 128 = 640 parameters); callers
+ * evaluate the lights at as many normals as they like (gprobe eval: 20000).
  * Start: adaptive median cut with N lights (its directions and colours). */
 #include "probe_internal.h"
 #include "generic/memory.h"
@@ -212,8 +222,7 @@ static GVec3 rotate_dir(GVec3 d, double a, double b)
 /* Levenberg-Marquardt on the directions with the colours projected out. dir, L, A and *F are updated.
  * Returns 1 when it stopped by its convergence test, 0 at the iteration limit. */
 static int levenberg_marquardt(Fit *f, GVec3 *dir, double *L, double *F, int max_it, GVec3 *tdir, double *tL,
-                               double *tA, const GProbeOptions *opt, double progress0, double progress1,
-                               GProbeFitReport *rep)
+                               double *tA, const GProbeOptions *opt, GProbeFitReport *rep)
 {
     const int n = f->n, p = 2 * n;
     double lambda = 1e-3, nu = 2.0;
@@ -284,13 +293,45 @@ static int levenberg_marquardt(Fit *f, GVec3 *dir, double *L, double *F, int max
                 nu *= 2.0;
             }
         }
-        probe_progress(opt, "irradiance", progress0 + (progress1 - progress0) * (it + 1.0) / max_it);
+        probe_progress(opt, "irradiance", (it + 1.0) / max_it);
         if (!accepted || small >= 4) { /* no step lowers F any more, or it has stopped moving */
             converged = 1;
             break;
         }
     }
     return converged;
+}
+
+/* Moves every light without colour to the fit normal where the model falls furthest short of the truth
+ * (the largest weighted under-estimate in f->res), damping the shortfall around it so that the next one
+ * goes elsewhere. f->res is overwritten. Returns the number of lights moved. */
+static int revive(Fit *f, GVec3 *dir, const double *L)
+{
+    int moved = 0;
+    for (int i = 0; i < f->n; i++) {
+        if (L[i * 3] > 0.0 || L[i * 3 + 1] > 0.0 || L[i * 3 + 2] > 0.0)
+            continue;
+        int best = -1;
+        double bv = 0.0;
+        for (int k = 0; k < f->m; k++) {
+            double r = -(f->res[k * 3] + f->res[k * 3 + 1] + f->res[k * 3 + 2]); /* > 0: the model is too dark */
+            if (r > bv) {
+                bv = r;
+                best = k;
+            }
+        }
+        if (best < 0)
+            break;
+        dir[i] = f->nrm[best];
+        moved++;
+        for (int k = 0; k < f->m; k++) {
+            double d = gvec3_dot(f->nrm[k], f->nrm[best]);
+            if (d > 0.0)
+                for (int c = 0; c < 3; c++)
+                    f->res[k * 3 + c] *= 1.0 - d * d;
+        }
+    }
+    return moved;
 }
 
 int gprobe_irradiance_fit(const GProbe *p, int n, const GProbeOptions *opt, GProbeLight *lights,
@@ -312,9 +353,9 @@ int gprobe_irradiance_fit(const GProbe *p, int n, const GProbeOptions *opt, GPro
     const size_t P = 2 * (size_t)n;
     size_t doubles = 3 * (size_t)m + m + 2 * (size_t)n * m + (size_t)n * n + 3 * (size_t)n + probe_nnls_work_size(n) +
                      P * m + P * P * 2 + 2 * P + 3 * (size_t)m + 6 * (size_t)n + P * n + (size_t)n * n +
-                     (size_t)n * P + n + 3 * (size_t)m + 3 * (size_t)n;
+                     (size_t)n * P + n + 3 * (size_t)m + 3 * (size_t)n + 3 * (size_t)n;
     double *mem = gmem_calloc(doubles, sizeof(double));
-    GVec3 *vecs = gmem_calloc((size_t)m + 2 * (size_t)n, sizeof(GVec3));
+    GVec3 *vecs = gmem_calloc((size_t)m + 3 * (size_t)n, sizeof(GVec3));
     if (!mem || !vecs) {
         gmem_free(mem);
         gmem_free(vecs);
@@ -340,8 +381,10 @@ int gprobe_irradiance_fit(const GProbe *p, int n, const GProbeOptions *opt, GPro
     f.H = cur; cur += P * n;
     f.chol = cur; cur += (size_t)n * n;
     f.Y = cur; cur += (size_t)n * P;
-    f.act = (int *)cur;
-    GVec3 *nrm = vecs, *dir = vecs + m, *tdir = dir + n;
+    double *sL = cur;
+    cur += 3 * (size_t)n;
+    f.act = (int *)cur; /* n ints in the last n doubles */
+    GVec3 *nrm = vecs, *dir = vecs + m, *tdir = dir + n, *sdir = tdir + n;
     f.nrm = nrm;
     f.E = E;
 
@@ -379,68 +422,29 @@ int gprobe_irradiance_fit(const GProbe *p, int n, const GProbeOptions *opt, GPro
     rep.projected = F;
     probe_progress(opt, "irradiance", 0.0);
 
-    rep.converged = levenberg_marquardt(&f, dir, L, &F, max_it, tdir, tL, tA, opt, 0.0, 0.75, &rep);
+    rep.converged = levenberg_marquardt(&f, dir, L, &F, max_it, tdir, tL, tA, opt, &rep);
 
-    /* revive lights that ended without colour, a few rounds while that pays */
-    for (int round = 0; round < 3; round++) {
-        int dead = 0;
-        for (int i = 0; i < n; i++)
-            dead += L[i * 3] <= 0.0 && L[i * 3 + 1] <= 0.0 && L[i * 3 + 2] <= 0.0;
-        if (dead == 0 || F <= 0.0)
-            break;
-        GVec3 *sdir = gmem_calloc((size_t)n, sizeof(GVec3));
-        double *sL = gmem_calloc((size_t)n * 3, sizeof(double));
-        if (!sdir || !sL) {
-            gmem_free(sdir);
-            gmem_free(sL);
-            break;
-        }
+    /* lights that lost all colour: move them where the model is too dark and fit again while that pays */
+    for (int round = 0; round < 3 && F > 0.0; round++) {
         memcpy(sdir, dir, sizeof(GVec3) * n);
         memcpy(sL, L, sizeof(double) * 3 * n);
-        double sF = F;
-        /* move each dead light to the normal with the largest weighted shortfall, then damp that shortfall
-           around it so the next dead light goes elsewhere */
-        for (int i = 0; i < n; i++) {
-            if (!(L[i * 3] <= 0.0 && L[i * 3 + 1] <= 0.0 && L[i * 3 + 2] <= 0.0))
-                continue;
-            int best = -1;
-            double bv = 0.0;
-            for (int k = 0; k < m; k++) {
-                double r = -(f.res[k * 3] + f.res[k * 3 + 1] + f.res[k * 3 + 2]); /* > 0: model too dark */
-                if (r > bv) {
-                    bv = r;
-                    best = k;
-                }
-            }
-            if (best < 0)
-                break;
-            dir[i] = nrm[best];
-            for (int k = 0; k < m; k++) {
-                double d = gvec3_dot(nrm[k], nrm[best]);
-                if (d > 0.0)
-                    for (int c = 0; c < 3; c++)
-                        f.res[k * 3 + c] *= 1.0 - d * d;
-            }
-        }
+        const double sF = F;
+        int moved = revive(&f, dir, L);
+        if (moved == 0)
+            break;
         dots(&f, dir, f.A);
         solve_colours(&f, f.A, L);
-        F = objective(&f, f.A, L, NULL);
-        int conv = levenberg_marquardt(&f, dir, L, &F, max_it / 4, tdir, tL, tA, opt, 0.75 + 0.08 * round,
-                                       0.75 + 0.08 * (round + 1), &rep);
-        if (!(F < sF)) { /* no better: keep the previous solution */
+        int conv = levenberg_marquardt(&f, dir, L, &F, max_it / 4, tdir, tL, tA, opt, &rep);
+        if (!(F < sF)) { /* no better: keep what we had */
             memcpy(dir, sdir, sizeof(GVec3) * n);
             memcpy(L, sL, sizeof(double) * 3 * n);
             F = sF;
-            gmem_free(sdir);
-            gmem_free(sL);
             break;
         }
-        rep.converged &= conv;
-        dots(&f, dir, f.A);
-        objective(&f, f.A, L, f.res);
-        gmem_free(sdir);
-        gmem_free(sL);
+        rep.converged = conv;
+        rep.revived += moved;
     }
+
     probe_progress(opt, "irradiance", 1.0);
 
     rep.final = F;

@@ -31,7 +31,7 @@ static void probe_prepare(GProbe *p)
     const int w = p->w, h = p->h;
     const double k = 2.0 * M_PI * M_PI / ((double)w * h);
     for (int u = 0; u < w; u++) {
-        double phi = 2.0 * M_PI * (u + 0.5) / w;
+        double phi = M_PI - 2.0 * M_PI * (u + 0.5) / w; /* see probe.h */
         p->cos_phi[u] = cos(phi);
         p->sin_phi[u] = sin(phi);
     }
@@ -48,21 +48,26 @@ static void probe_prepare(GProbe *p)
         for (int i = 0; i < w * 3; i++)
             dst[i] = s * src[i];
     }
-    const size_t stride = (size_t)(w + 1) * 4;
+    const size_t stride = (size_t)(w + 1) * PROBE_SAT;
     memset(p->sat, 0, stride * sizeof(double)); /* row 0 */
     for (int v = 0; v < h; v++) {
         double *prev = p->sat + (size_t)v * stride, *row = prev + stride;
-        double acc[4] = {0, 0, 0, 0};
-        row[0] = row[1] = row[2] = row[3] = 0.0;
+        double acc[PROBE_SAT] = {0};
+        for (int c = 0; c < PROBE_SAT; c++)
+            row[c] = 0.0;
         for (int u = 0; u < w; u++) {
-            double e = probe_lum(p->q + ((size_t)v * w + u) * 3);
+            const float *q = p->q + ((size_t)v * w + u) * 3;
+            double e = probe_lum(q);
             GVec3 d = probe_pixel_dir(p, u, v);
             acc[0] += e;
             acc[1] += e * d.x;
             acc[2] += e * d.y;
             acc[3] += e * d.z;
-            for (int c = 0; c < 4; c++)
-                row[(u + 1) * 4 + c] = prev[(u + 1) * 4 + c] + acc[c];
+            acc[4] += q[0];
+            acc[5] += q[1];
+            acc[6] += q[2];
+            for (int c = 0; c < PROBE_SAT; c++)
+                row[(u + 1) * PROBE_SAT + c] = prev[(u + 1) * PROBE_SAT + c] + acc[c];
         }
     }
 }
@@ -83,7 +88,7 @@ int gprobe_create(int width, int height, const float *rgb, GProbe **out, GError 
     p->h = height;
     p->rgb = gmem_calloc(n * 3, sizeof(float));
     p->q = gmem_calloc(n * 3, sizeof(float));
-    p->sat = gmem_calloc((size_t)(width + 1) * (height + 1) * 4, sizeof(double));
+    p->sat = gmem_calloc((size_t)(width + 1) * (height + 1) * PROBE_SAT, sizeof(double));
     p->cos_phi = gmem_calloc(width, sizeof(double));
     p->sin_phi = gmem_calloc(width, sizeof(double));
     p->cos_theta = gmem_calloc(height, sizeof(double));
@@ -170,9 +175,7 @@ long gprobe_clamped_count(const GProbe *p) { return p->clamped; }
 
 GVec3 gprobe_direction(const GProbe *p, double x, double y)
 {
-    double theta = M_PI * y / p->h, phi = 2.0 * M_PI * x / p->w;
-    double s = sin(theta);
-    return gvec3(s * cos(phi), s * sin(phi), cos(theta));
+    return probe_latlong_dir(x, y, p->w, p->h);
 }
 
 void gprobe_position(const GProbe *p, GVec3 dir, double *x, double *y)
@@ -183,10 +186,8 @@ void gprobe_position(const GProbe *p, GVec3 dir, double *x, double *y)
         z = 1.0;
     if (z < -1.0)
         z = -1.0;
-    double phi = atan2(dir.y, dir.x);
-    if (phi < 0.0)
-        phi += 2.0 * M_PI;
-    double fx = phi * p->w / (2.0 * M_PI);
+    double a = M_PI - atan2(dir.y, dir.x); /* pi - phi, in [0, 2 pi] */
+    double fx = a * p->w / (2.0 * M_PI);
     if (fx >= p->w)
         fx -= p->w;
     *x = fx;
@@ -230,13 +231,16 @@ void gprobe_power(const GProbe *p, double rgb[3])
     }
 }
 
-void probe_sat_sum(const GProbe *p, int u0, int v0, int u1, int v1, double out[4])
+void probe_sat_sum(const GProbe *p, int u0, int v0, int u1, int v1, double out[PROBE_SAT])
 {
-    const size_t stride = (size_t)(p->w + 1) * 4;
-    const double *a = p->sat + v0 * stride + (size_t)u0 * 4, *b = p->sat + v0 * stride + (size_t)u1 * 4;
-    const double *c = p->sat + v1 * stride + (size_t)u0 * 4, *d = p->sat + v1 * stride + (size_t)u1 * 4;
-    for (int k = 0; k < 4; k++)
-        out[k] = d[k] - b[k] - c[k] + a[k];
-    if (out[0] < 0.0) /* rounding in an empty region */
+    const size_t stride = (size_t)(p->w + 1) * PROBE_SAT;
+    const double *a = p->sat + v0 * stride + (size_t)u0 * PROBE_SAT, *b = p->sat + v0 * stride + (size_t)u1 * PROBE_SAT;
+    const double *c = p->sat + v1 * stride + (size_t)u0 * PROBE_SAT, *d = p->sat + v1 * stride + (size_t)u1 * PROBE_SAT;
+    for (int k = 0; k < PROBE_SAT; k++)
+        out[k] = (d[k] - b[k]) - (c[k] - a[k]);
+    for (int k = 4; k < PROBE_SAT; k++) /* rounding in a region without energy */
+        if (out[k] < 0.0)
+            out[k] = 0.0;
+    if (out[0] < 0.0)
         out[0] = 0.0;
 }

@@ -2,6 +2,7 @@
 #ifndef GENERIC_PROBE_INTERNAL_H
 #define GENERIC_PROBE_INTERNAL_H
 
+#include <math.h>
 #include <stddef.h>
 
 #include "generic/probe.h"
@@ -15,12 +16,20 @@ struct GProbe {
     int w, h;
     float *rgb;         /* radiance P, 3 per pixel */
     float *q;           /* weights Q, 3 per pixel */
-    double *sat;        /* summed-area table, (h + 1) x (w + 1) entries of 4: luminance of Q and its
-                           products with the pixel direction's x, y, z */
+    double *sat;        /* summed-area table, (h + 1) x (w + 1) entries of PROBE_SAT: luminance of Q, its
+                           products with the pixel direction's x, y, z, and Q's R, G, B */
     double *cos_phi, *sin_phi;     /* per column, at pixel centres */
     double *cos_theta, *sin_theta; /* per row, at pixel centres */
     long clamped;
 };
+
+/** Direction of the point (x, y), in pixel units, of a w x h lat-long image (the convention of probe.h). */
+static inline GVec3 probe_latlong_dir(double x, double y, int w, int h)
+{
+    double theta = M_PI * y / h, phi = M_PI - 2.0 * M_PI * x / w;
+    double s = sin(theta);
+    return gvec3(s * cos(phi), s * sin(phi), cos(theta));
+}
 
 /** Energy (luminance) of a weight triple. */
 static inline double probe_lum(const float *q)
@@ -35,13 +44,17 @@ static inline GVec3 probe_pixel_dir(const GProbe *p, int u, int v)
     return gvec3(s * p->cos_phi[u], s * p->sin_phi[u], p->cos_theta[v]);
 }
 
-/** Sums of the SAT over the pixel rectangle [u0, u1) x [v0, v1): out[0] energy, out[1..3] energy * dir. */
-void probe_sat_sum(const GProbe *p, int u0, int v0, int u1, int v1, double out[4]);
+/** Values per summed-area table entry. */
+#define PROBE_SAT 7
+
+/** Sums of the SAT over the pixel rectangle [u0, u1) x [v0, v1): out[0] energy, out[1..3] energy * dir,
+ * out[4..6] the weights Q per channel. */
+void probe_sat_sum(const GProbe *p, int u0, int v0, int u1, int v1, double out[PROBE_SAT]);
 
 /** A rectangle of the lat-long image and its energy statistics (median cut and its adaptive form). */
 typedef struct ProbeRegion {
     int u0, v0, u1, v1;   /* [u0, u1) x [v0, v1) */
-    double sum[4];        /* energy and energy-weighted direction sums */
+    double sum[PROBE_SAT]; /* energy, energy-weighted direction and colour sums (see probe_sat_sum) */
 } ProbeRegion;
 
 /** Fills r's sums from the SAT. */
@@ -51,7 +64,7 @@ void probe_region_init(const GProbe *p, ProbeRegion *r, int u0, int v0, int u1, 
 int probe_region_split(const GProbe *p, const ProbeRegion *r, ProbeRegion *a, ProbeRegion *b);
 /** Energy-weighted angular spread: sum of E (1 - |mean direction|), the priority of adaptive median cut. */
 double probe_region_spread(const ProbeRegion *r);
-/** Lights for n regions: direction at the energy centroid, colour the region's summed Q (one pass). */
+/** Lights for n regions: direction at the energy centroid, colour the region's summed Q. */
 void probe_regions_to_lights(const GProbe *p, const ProbeRegion *regions, int n, GProbeLight *lights);
 
 /** Reports progress when a callback is set. */
