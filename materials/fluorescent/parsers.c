@@ -1,4 +1,4 @@
-/* parsers.c - the text format of the fluorescent types (docs/text-format.md):
+/* parsers.c - the text format of the fluorescent types (README.md, "Fluorescent types"):
  *
  *   color NAME reradiation { absorb_peak 470 absorb_width 115 absorb_shape 8 absorb_max 0.97
  *                            emit_width 20 stokes_shift 135 quantum_yield 0.65 reflectance 0.92 step 5 }
@@ -138,37 +138,71 @@ static int read_numbers(GReader *r, double lo, double hi, double *v, int n, GErr
     return rc;
 }
 
+/* Reads one parameter of a fluorescent material other than `matrix` into its parameter struct, or reports
+ * an unknown key. */
+typedef int (*FluorParamFn)(GReader *r, const char *key, void *params, GError *err);
+
+/* Reads a fluorescent material's parameter block: `matrix` here, every other key through param; then the
+ * default matrix when none was given. *mat is freed by the caller, also on failure. */
+static int read_material(GReader *r, FluorParamFn param, void *params, GReradiation *mat, GError *err)
+{
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        if (strcmp(key, "matrix") == 0)
+            rc = read_matrix(r, mat, err);
+        else
+            rc = param(r, key, params, err);
+        if (rc < 0)
+            break;
+    }
+    return rc == G_OK ? default_matrix(r, mat, err) : rc;
+}
+
+/* The end of a parse: frees the matrix and hands over the material when rc is G_OK. */
+static int finish(int rc, GReradiation *mat, GMaterial *m, void **object)
+{
+    gfluor_matrix_free(mat);
+    if (rc == G_OK)
+        *object = m;
+    return rc;
+}
+
+static int phong_param(GReader *r, const char *key, void *params, GError *err)
+{
+    GFluorPhongParams *p = params;
+    if (strcmp(key, "ks") == 0)
+        return greader_number_in(r, 0.0, 0.999, &p->ks, err);
+    if (strcmp(key, "exponents") == 0)
+        return read_numbers(r, 1.0, 1e6, p->exponent, 3, err);
+    if (strcmp(key, "weights") == 0)
+        return read_numbers(r, 0.0, 1.0, p->weight, 3, err);
+    return greader_unknown_param(r, "matrix, ks, exponents, weights", err);
+}
+
 static int parse_fluorescent_phong(GReader *r, const void *vt, void **object, GError *err)
 {
     (void)vt;
     GFluorPhongParams p;
     gfluor_phong_default(&p);
     GReradiation mat = {0};
-    const char *key;
-    int rc;
-    while ((rc = greader_param(r, &key, err)) > 0) {
-        if (strcmp(key, "matrix") == 0)
-            rc = read_matrix(r, &mat, err);
-        else if (strcmp(key, "ks") == 0)
-            rc = greader_number_in(r, 0.0, 0.999, &p.ks, err);
-        else if (strcmp(key, "exponents") == 0)
-            rc = read_numbers(r, 1.0, 1e6, p.exponent, 3, err);
-        else if (strcmp(key, "weights") == 0)
-            rc = read_numbers(r, 0.0, 1.0, p.weight, 3, err);
-        else
-            rc = greader_unknown_param(r, "matrix, ks, exponents, weights", err);
-        if (rc < 0)
-            break;
-    }
     GMaterial *m = NULL;
-    if (rc == 0)
-        rc = default_matrix(r, &mat, err);
-    if (rc == 0 && (rc = gfluor_phong_create(greader_colormodel(r), &mat, &p, &m, err)) != G_OK)
+    int rc = read_material(r, phong_param, &p, &mat, err);
+    if (rc == G_OK && (rc = gfluor_phong_create(greader_colormodel(r), &mat, &p, &m, err)) != G_OK)
         greader_locate(r, err);
-    gfluor_matrix_free(&mat);
-    if (rc == G_OK)
-        *object = m;
-    return rc;
+    return finish(rc, &mat, m, object);
+}
+
+static int varnish_param(GReader *r, const char *key, void *params, GError *err)
+{
+    GFluorVarnishParams *p = params;
+    if (strcmp(key, "ior") == 0)
+        return greader_number_in(r, 1.0, 4.0, &p->ior, err);
+    if (strcmp(key, "slope") == 0)
+        return greader_number_in(r, 0.01, 44.99, &p->slope_deg, err);
+    if (strcmp(key, "exponent") == 0)
+        return greader_number_in(r, 0.0, 1e6, &p->exponent, err);
+    return greader_unknown_param(r, "matrix, ior, slope, exponent", err);
 }
 
 static int parse_fluorescent_varnish(GReader *r, const void *vt, void **object, GError *err)
@@ -177,31 +211,11 @@ static int parse_fluorescent_varnish(GReader *r, const void *vt, void **object, 
     GFluorVarnishParams p;
     gfluor_varnish_default(&p);
     GReradiation mat = {0};
-    const char *key;
-    int rc;
-    while ((rc = greader_param(r, &key, err)) > 0) {
-        if (strcmp(key, "matrix") == 0)
-            rc = read_matrix(r, &mat, err);
-        else if (strcmp(key, "ior") == 0)
-            rc = greader_number_in(r, 1.0, 4.0, &p.ior, err);
-        else if (strcmp(key, "slope") == 0)
-            rc = greader_number_in(r, 0.01, 44.99, &p.slope_deg, err);
-        else if (strcmp(key, "exponent") == 0)
-            rc = greader_number_in(r, 0.0, 1e6, &p.exponent, err);
-        else
-            rc = greader_unknown_param(r, "matrix, ior, slope, exponent", err);
-        if (rc < 0)
-            break;
-    }
     GMaterial *m = NULL;
-    if (rc == 0)
-        rc = default_matrix(r, &mat, err);
-    if (rc == 0 && (rc = gfluor_varnish_create(greader_colormodel(r), &mat, &p, &m, err)) != G_OK)
+    int rc = read_material(r, varnish_param, &p, &mat, err);
+    if (rc == G_OK && (rc = gfluor_varnish_create(greader_colormodel(r), &mat, &p, &m, err)) != G_OK)
         greader_locate(r, err);
-    gfluor_matrix_free(&mat);
-    if (rc == G_OK)
-        *object = m;
-    return rc;
+    return finish(rc, &mat, m, object);
 }
 
 const GTypeInfo gfluor_type_reradiation = {
