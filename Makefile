@@ -155,3 +155,83 @@ $(BUILD)/plugins/failing_init.so: tests/plugins/bad_module.c $(PLUGIN_HDR)
 
 $(BUILD)/plugins/no_init.so: tests/plugins/bad_module.c $(PLUGIN_HDR)
 	$(CC) $(PLUGIN_CFLAGS) -DNO_INIT -o $@ $<
+
+# ---- fuzzing (tests/fuzz/): libFuzzer targets built with clang, -fsanitize=fuzzer,address,undefined ----
+# make fuzz [FUZZ_SECONDS=30] [FUZZ_TARGETS="reader bfc"] builds the library's sources with clang into build/fuzz/
+# (without OpenMP: one thread keeps a run reproducible) and runs each target tests/fuzz/fuzz_<target>.c for
+# FUZZ_SECONDS seconds. Inputs: tests/fuzz/corpus/<target>/ (small, committed), the example files fuzz-seed copies
+# into build/fuzz/seed/<target>/ at run time, and tests/regress/<target>/ (every crasher found so far, replayed by
+# tests/test_regress.c in the normal suite). New inputs go to build/fuzz/corpus/<target>/, a crasher to
+# build/fuzz/crashes/<target>/ and the run fails; fix it and keep the input in tests/regress/<target>/.
+FUZZ_BUILD    := build/fuzz
+FUZZ_SECONDS  ?= 30
+FUZZ_CC       ?= clang
+FUZZ_CXX      ?= clang++
+FUZZ_SAN      := -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
+FUZZ_CPPFLAGS := -Iinclude -Ilib -I. -D_GNU_SOURCE -MMD -MP
+FUZZ_CFLAGS   := -std=c11 -O1 -g -Wall -Wextra -Wno-unknown-pragmas $(FUZZ_SAN) -fsanitize=fuzzer-no-link
+FUZZ_CXXFLAGS := -std=c++17 -O1 -g -Wall -Wextra -Wno-unknown-pragmas $(FUZZ_SAN) -fsanitize=fuzzer-no-link \
+                 $(shell pkg-config --cflags OpenImageIO 2>/dev/null)
+FUZZ_LIBS     := $(shell pkg-config --libs OpenImageIO 2>/dev/null) -ldl -lpthread -lm
+FUZZ_NAMES    := $(patsubst tests/fuzz/fuzz_%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
+FUZZ_TARGETS  ?= $(FUZZ_NAMES)
+FUZZ_BIN      := $(FUZZ_NAMES:%=$(FUZZ_BUILD)/fuzz_%)
+FUZZ_C_OBJ    := $(LIB_SRC:%.c=$(FUZZ_BUILD)/obj/%.o)
+FUZZ_CXX_OBJ  := $(LIB_CXX:%.cpp=$(FUZZ_BUILD)/obj/%.o)
+FUZZ_LIBA     := $(FUZZ_BUILD)/libgeneric.a
+# What fuzz-seed copies (the examples of each input kind; tests/bad/*.mat are broken on purpose, good seeds too).
+FUZZ_SEED_reader := examples/materials/*.mat examples/textures/*.txt tests/good/*.mat tests/bad/*.mat
+FUZZ_SEED_bfc    := tests/bad/*.BFC tests/bad/*.bfc
+FUZZ_SEED_probe  := tests/bad/*.hdr tests/bad/*.pfm
+FUZZ_SEED_image  := examples/textures/*.png examples/scenes/*.png tests/bad/*.hdr tests/bad/*.pfm
+# Per-target libFuzzer options. The image readers keep OpenImageIO's file cache between inputs, which grows, so
+# the per-input leak check would run (and cost more than the input) every time: leaks show at exit instead.
+FUZZ_OPTS_image  := -detect_leaks=0
+FUZZ_OPTS_probe  := -detect_leaks=0
+
+.PHONY: fuzz fuzz-build fuzz-seed
+fuzz-build: $(FUZZ_BIN)
+
+$(FUZZ_C_OBJ): $(FUZZ_BUILD)/obj/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CPPFLAGS) $(FUZZ_CFLAGS) -c $< -o $@
+
+$(FUZZ_CXX_OBJ): $(FUZZ_BUILD)/obj/%.o: %.cpp
+	@mkdir -p $(dir $@)
+	$(FUZZ_CXX) $(FUZZ_CPPFLAGS) $(FUZZ_CXXFLAGS) -c $< -o $@
+
+$(FUZZ_BUILD)/obj/tests/fuzz/%.o: tests/fuzz/%.c
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CPPFLAGS) $(FUZZ_CFLAGS) -c $< -o $@
+
+$(FUZZ_LIBA): $(FUZZ_C_OBJ) $(FUZZ_CXX_OBJ)
+	rm -f $@
+	ar rcs $@ $^
+
+.SECONDARY: $(FUZZ_NAMES:%=$(FUZZ_BUILD)/obj/tests/fuzz/fuzz_%.o)
+$(FUZZ_BUILD)/fuzz_%: $(FUZZ_BUILD)/obj/tests/fuzz/fuzz_%.o $(FUZZ_LIBA)
+	$(FUZZ_CXX) $(FUZZ_SAN) -fsanitize=fuzzer -o $@ $< -Wl,--whole-archive $(FUZZ_LIBA) -Wl,--no-whole-archive \
+	    $(FUZZ_LIBS)
+
+fuzz-seed:
+	@rm -rf $(FUZZ_BUILD)/seed
+	@$(foreach t,$(FUZZ_NAMES),mkdir -p $(FUZZ_BUILD)/seed/$(t) && \
+	    for f in $(wildcard $(FUZZ_SEED_$(t))) ''; do [ -z "$$f" ] || cp "$$f" $(FUZZ_BUILD)/seed/$(t)/; done;)
+
+fuzz: fuzz-build fuzz-seed
+	@for t in $(FUZZ_TARGETS); do $(MAKE) --no-print-directory fuzz-run-$$t || exit 1; done
+
+# One target's run: its corpus directories (those that exist), its options; the executions at the end.
+fuzz-run-%:
+	@mkdir -p $(FUZZ_BUILD)/corpus/$* $(FUZZ_BUILD)/crashes/$*
+	@dirs="$(FUZZ_BUILD)/corpus/$*"; \
+	for d in tests/fuzz/corpus/$* $(FUZZ_BUILD)/seed/$* tests/regress/$*; do [ -d $$d ] && dirs="$$dirs $$d"; done; \
+	log=$(FUZZ_BUILD)/fuzz_$*.log; \
+	echo "fuzz $*: $(FUZZ_SECONDS) s over $$dirs"; \
+	if ! $(FUZZ_BUILD)/fuzz_$* -max_total_time=$(FUZZ_SECONDS) -timeout=20 -rss_limit_mb=2560 $(FUZZ_OPTS_$*) \
+	        -print_final_stats=1 -artifact_prefix=$(FUZZ_BUILD)/crashes/$*/ $$dirs > $$log 2>&1; then \
+	    tail -n 80 $$log; echo "fuzz $*: FAILED (input in $(FUZZ_BUILD)/crashes/$*/, log $$log)"; exit 1; \
+	fi; \
+	grep -E '^stat::(number_of_executed_units|new_units_added|peak_rss_mb)' $$log | tr -s ' \n' ' '; echo
+-include $(shell find $(FUZZ_BUILD)/obj -name '*.d' 2>/dev/null)
+# (end of fuzzing)

@@ -53,31 +53,10 @@
 
 enum { BI_MAX = 128 };
 
-typedef struct Bispectral {
-    GSpectral s;
-} Bispectral;
-
-static void bispectral_fini(GColorModel *self)
-{
-    Bispectral *p = self->priv;
-    if (p)
-        gspectral_fini(&p->s);
-    gmem_free(p);
-    self->priv = NULL;
-}
-
+/* The model's priv struct is a plain GSpectral. */
 static int bispectral_init(GColorModel *self, const GColorModelOptions *opt, GError *err)
 {
-    GSpectralGrid grid;
-    int rc = gspectral_grid_from_options("bispectral", opt, 10.0, BI_MAX, &grid, err);
-    if (rc != G_OK)
-        return rc;
-    Bispectral *p = gmem_calloc(1, sizeof *p);
-    if (!p)
-        return gerror_set(err, G_ERR_NOMEM, "out of memory creating colour model 'bispectral'");
-    self->priv = p;
-    self->capacity = grid.n * grid.n;
-    return gspectral_init(self, &p->s, grid, 1, err);
+    return gspectral_model_init(self, opt, 10.0, BI_MAX, 1, err);
 }
 
 /* ---- helpers ---- */
@@ -211,13 +190,13 @@ static int bi_pow(const GColorModel *m, GColor *out, const GColor *a, double e)
 
 static double bi_brightness(const GColorModel *m, const GColor *a)
 {
-    const Bispectral *p = m->priv;
+    const GSpectral *p = m->priv;
     int n = m->nsamples;
     if (a->kind == GCOLOR_VECTOR)
-        return gspectral_kbright(p->s.lum, a->v, n);
+        return gspectral_kbright(p->lum, a->v, n);
     double s = 0.0;
     for (int o = 0; o < n; o++)
-        s += p->s.lum[o] * gspectral_kabs(a->v + o * n, n);
+        s += p->lum[o] * gspectral_kabs(a->v + o * n, n);
     return s;
 }
 
@@ -275,8 +254,8 @@ static int coincident_grid(const GReradiation *r, GSpectralGrid *d, GError *err)
 
 static int bi_from_reradiation(const GColorModel *m, const GReradiation *r, GColor *out, GError *err)
 {
-    const Bispectral *p = m->priv;
-    GSpectralGrid g = p->s.grid, gd;
+    const GSpectral *p = m->priv;
+    GSpectralGrid g = p->grid, gd;
     GSpectralGrid gin = {r->in_min, r->in_step, r->n_in}, gout = {r->out_min, r->out_step, r->n_out};
     int n = g.n;
     int rc = coincident_grid(r, &gd, err);
@@ -344,7 +323,7 @@ const GColorModelClass gcolormodel_bispectral = {
     .name = "bispectral",
     .description = "spectra and fluorescent re-radiation matrices (default 380..780 nm at 10 nm)",
     .init = bispectral_init,
-    .fini = bispectral_fini,
+    .fini = gspectral_model_fini,
     .black = gspectral_black,
     .add = bi_add,
     .mul = bi_mul,

@@ -316,6 +316,32 @@ void gspectral_fini(GSpectral *s)
     memset(s, 0, sizeof *s);
 }
 
+int gspectral_model_alloc(GColorModel *m, size_t size, int capacity, GError *err)
+{
+    m->priv = gmem_calloc(1, size);
+    if (!m->priv)
+        return gerror_set(err, G_ERR_NOMEM, "out of memory creating colour model '%s'", m->cls->name);
+    m->capacity = capacity;
+    return G_OK;
+}
+
+int gspectral_model_init(GColorModel *m, const GColorModelOptions *opt, double def_step, int max_n, int matrices,
+                         GError *err)
+{
+    GSpectralGrid grid;
+    int rc = gspectral_grid_from_options(m->cls->name, opt, def_step, max_n, &grid, err);
+    if (rc == G_OK)
+        rc = gspectral_model_alloc(m, sizeof(GSpectral), matrices ? grid.n * grid.n : grid.n, err);
+    return rc == G_OK ? gspectral_init(m, m->priv, grid, 1, err) : rc;
+}
+
+void gspectral_model_fini(GColorModel *m)
+{
+    gspectral_fini(m->priv);
+    gmem_free(m->priv);
+    m->priv = NULL;
+}
+
 /* ---- operations on sampled spectra ---- */
 
 void gspectral_black(const GColorModel *m, GColor *out)

@@ -63,6 +63,17 @@ int gspectral_init(GColorModel *m, GSpectral *s, GSpectralGrid grid, int linear_
 /** Frees what gspectral_init allocated. */
 void gspectral_fini(GSpectral *s);
 
+/** For a model's init: allocates its zeroed priv struct of `size` bytes (one that begins with its GSpectral)
+ * into m->priv and sets m->capacity; G_ERR_NOMEM "out of memory creating colour model '<name>'". */
+int gspectral_model_alloc(GColorModel *m, size_t size, int capacity, GError *err);
+/** The init of a model whose priv struct is a plain GSpectral (spectrum, bispectral): the grid from the
+ * options (gspectral_grid_from_options with def_step and max_n), n values per colour (n * n with
+ * matrices), the linear to_nm map. */
+int gspectral_model_init(GColorModel *m, const GColorModelOptions *opt, double def_step, int max_n, int matrices,
+                         GError *err);
+/** The fini of every spectral model: gspectral_fini on the priv struct, which is then freed. */
+void gspectral_model_fini(GColorModel *m);
+
 /* Operations of a plain sampled spectrum (vectors only), shared by the class tables. */
 void gspectral_black(const GColorModel *m, GColor *out);
 int gspectral_add(const GColorModel *m, GColor *out, const GColor *a, const GColor *b);
@@ -87,62 +98,57 @@ int gspectral_from_rgb(const GColorModel *m, const double rgb[3], GColorRole rol
 #define GSPECTRAL_VECTOR 1
 typedef float gspectral_v4 __attribute__((vector_size(16)));
 typedef int gspectral_v4i __attribute__((vector_size(16)));
+
+/** The 4 floats at p, any alignment. */
+static inline gspectral_v4 gspectral_vload(const float *p)
+{
+    gspectral_v4 v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+/** Stores v at p, any alignment. */
+static inline void gspectral_vstore(float *p, gspectral_v4 v) { memcpy(p, &v, sizeof v); }
 #endif
+
+/** The element-wise operations of gspectral_kmap. */
+typedef enum GSpectralOp { GSPECTRAL_ADD, GSPECTRAL_MUL } GSpectralOp;
+
+#ifdef GSPECTRAL_VECTOR
+static inline gspectral_v4 gspectral_vop(GSpectralOp op, gspectral_v4 x, gspectral_v4 y)
+{
+    return op == GSPECTRAL_ADD ? x + y : x * y;
+}
+#endif
+
+/** o = a op b. The kernels pass op as a constant, so once inlined the choice costs nothing. */
+static inline void gspectral_kmap(GSpectralOp op, float *o, const float *a, const float *b, int n)
+{
+    int i = 0;
+#ifdef GSPECTRAL_VECTOR
+    for (; i + 8 <= n; i += 8) { /* both blocks are loaded before either is stored */
+        gspectral_v4 x0 = gspectral_vop(op, gspectral_vload(a + i), gspectral_vload(b + i));
+        gspectral_v4 x1 = gspectral_vop(op, gspectral_vload(a + i + 4), gspectral_vload(b + i + 4));
+        gspectral_vstore(o + i, x0);
+        gspectral_vstore(o + i + 4, x1);
+    }
+    for (; i + 4 <= n; i += 4)
+        gspectral_vstore(o + i, gspectral_vop(op, gspectral_vload(a + i), gspectral_vload(b + i)));
+#endif
+    for (; i < n; i++)
+        o[i] = op == GSPECTRAL_ADD ? a[i] + b[i] : a[i] * b[i];
+}
 
 /** o = a + b */
 static inline void gspectral_kadd(float *o, const float *a, const float *b, int n)
 {
-    int i = 0;
-#ifdef GSPECTRAL_VECTOR
-    for (; i + 8 <= n; i += 8) {
-        gspectral_v4 x0, x1, y0, y1;
-        memcpy(&x0, a + i, sizeof x0);
-        memcpy(&x1, a + i + 4, sizeof x1);
-        memcpy(&y0, b + i, sizeof y0);
-        memcpy(&y1, b + i + 4, sizeof y1);
-        x0 += y0;
-        x1 += y1;
-        memcpy(o + i, &x0, sizeof x0);
-        memcpy(o + i + 4, &x1, sizeof x1);
-    }
-    for (; i + 4 <= n; i += 4) {
-        gspectral_v4 x, y;
-        memcpy(&x, a + i, sizeof x);
-        memcpy(&y, b + i, sizeof y);
-        x += y;
-        memcpy(o + i, &x, sizeof x);
-    }
-#endif
-    for (; i < n; i++)
-        o[i] = a[i] + b[i];
+    gspectral_kmap(GSPECTRAL_ADD, o, a, b, n);
 }
 
 /** o = a * b */
 static inline void gspectral_kmul(float *o, const float *a, const float *b, int n)
 {
-    int i = 0;
-#ifdef GSPECTRAL_VECTOR
-    for (; i + 8 <= n; i += 8) {
-        gspectral_v4 x0, x1, y0, y1;
-        memcpy(&x0, a + i, sizeof x0);
-        memcpy(&x1, a + i + 4, sizeof x1);
-        memcpy(&y0, b + i, sizeof y0);
-        memcpy(&y1, b + i + 4, sizeof y1);
-        x0 *= y0;
-        x1 *= y1;
-        memcpy(o + i, &x0, sizeof x0);
-        memcpy(o + i + 4, &x1, sizeof x1);
-    }
-    for (; i + 4 <= n; i += 4) {
-        gspectral_v4 x, y;
-        memcpy(&x, a + i, sizeof x);
-        memcpy(&y, b + i, sizeof y);
-        x *= y;
-        memcpy(o + i, &x, sizeof x);
-    }
-#endif
-    for (; i < n; i++)
-        o[i] = a[i] * b[i];
+    gspectral_kmap(GSPECTRAL_MUL, o, a, b, n);
 }
 
 /** o = a * s */
@@ -151,12 +157,8 @@ static inline void gspectral_kscale(float *o, const float *a, float s, int n)
     int i = 0;
 #ifdef GSPECTRAL_VECTOR
     gspectral_v4 sv = {s, s, s, s};
-    for (; i + 4 <= n; i += 4) {
-        gspectral_v4 x;
-        memcpy(&x, a + i, sizeof x);
-        x *= sv;
-        memcpy(o + i, &x, sizeof x);
-    }
+    for (; i + 4 <= n; i += 4)
+        gspectral_vstore(o + i, gspectral_vload(a + i) * sv);
 #endif
     for (; i < n; i++)
         o[i] = a[i] * s;
@@ -168,16 +170,19 @@ static inline void gspectral_kaxpy(float *o, const float *a, float s, int n)
     int i = 0;
 #ifdef GSPECTRAL_VECTOR
     gspectral_v4 sv = {s, s, s, s};
-    for (; i + 4 <= n; i += 4) {
-        gspectral_v4 x, y;
-        memcpy(&x, a + i, sizeof x);
-        memcpy(&y, o + i, sizeof y);
-        y += x * sv;
-        memcpy(o + i, &y, sizeof y);
-    }
+    for (; i + 4 <= n; i += 4)
+        gspectral_vstore(o + i, gspectral_vload(o + i) + gspectral_vload(a + i) * sv);
 #endif
     for (; i < n; i++)
         o[i] += a[i] * s;
+}
+
+/** The terms the sums below add up: |a| (b is not used: pass a), a * b, and a * |b| (weights a). */
+typedef enum GSpectralTerm { GSPECTRAL_ABS, GSPECTRAL_DOT, GSPECTRAL_WABS } GSpectralTerm;
+
+static inline float gspectral_term(GSpectralTerm t, float a, float b)
+{
+    return t == GSPECTRAL_ABS ? fabsf(a) : t == GSPECTRAL_DOT ? a * b : a * fabsf(b);
 }
 
 #ifdef GSPECTRAL_VECTOR
@@ -186,26 +191,49 @@ static inline gspectral_v4 gspectral_vabs(gspectral_v4 x)
     gspectral_v4i mask = {0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff};
     return (gspectral_v4)((gspectral_v4i)x & mask);
 }
+
+static inline gspectral_v4 gspectral_vterm(GSpectralTerm t, gspectral_v4 a, gspectral_v4 b)
+{
+    return t == GSPECTRAL_ABS ? gspectral_vabs(a) : t == GSPECTRAL_DOT ? a * b : a * gspectral_vabs(b);
+}
+
+/** The terms of the first multiple of 8 samples summed in four lanes (two accumulators: the sum's latency,
+ * not the loads, bounds a single one); *done receives how many samples that was. */
+static inline gspectral_v4 gspectral_vsum(GSpectralTerm t, const float *a, const float *b, int n, int *done)
+{
+    gspectral_v4 acc0 = {0, 0, 0, 0}, acc1 = {0, 0, 0, 0};
+    int i = 0;
+    for (; i + 8 <= n; i += 8) {
+        acc0 += gspectral_vterm(t, gspectral_vload(a + i), gspectral_vload(b + i));
+        acc1 += gspectral_vterm(t, gspectral_vload(a + i + 4), gspectral_vload(b + i + 4));
+    }
+    *done = i;
+    return acc0 + acc1;
+}
 #endif
 
-/** sum of w * |a| (two accumulators: the sum's latency, not the loads, bounds a single one) */
+/** The sum of the terms t of a and b in float; the kernels pass t as a constant. */
+static inline float gspectral_ksum(GSpectralTerm t, const float *a, const float *b, int n)
+{
+    int i = 0;
+    float s = 0.0f;
+#ifdef GSPECTRAL_VECTOR
+    gspectral_v4 acc = gspectral_vsum(t, a, b, n, &i);
+    s = (acc[0] + acc[1]) + (acc[2] + acc[3]);
+#endif
+    for (; i < n; i++)
+        s += gspectral_term(t, a[i], b[i]);
+    return s;
+}
+
+/** sum of w * |a|, in double after the vector part */
 static inline double gspectral_kbright(const float *w, const float *a, int n)
 {
     int i = 0;
     double s = 0.0;
 #ifdef GSPECTRAL_VECTOR
-    gspectral_v4 acc0 = {0, 0, 0, 0}, acc1 = {0, 0, 0, 0};
-    for (; i + 8 <= n; i += 8) {
-        gspectral_v4 x0, x1, w0, w1;
-        memcpy(&x0, a + i, sizeof x0);
-        memcpy(&x1, a + i + 4, sizeof x1);
-        memcpy(&w0, w + i, sizeof w0);
-        memcpy(&w1, w + i + 4, sizeof w1);
-        acc0 += w0 * gspectral_vabs(x0);
-        acc1 += w1 * gspectral_vabs(x1);
-    }
-    acc0 += acc1;
-    s = (double)acc0[0] + acc0[1] + acc0[2] + acc0[3];
+    gspectral_v4 acc = gspectral_vsum(GSPECTRAL_WABS, w, a, n, &i);
+    s = (double)acc[0] + acc[1] + acc[2] + acc[3];
 #endif
     for (; i < n; i++)
         s += w[i] * fabsf(a[i]);
@@ -213,49 +241,12 @@ static inline double gspectral_kbright(const float *w, const float *a, int n)
 }
 
 /** sum of |a| */
-static inline float gspectral_kabs(const float *a, int n)
-{
-    int i = 0;
-    float s = 0.0f;
-#ifdef GSPECTRAL_VECTOR
-    gspectral_v4 acc0 = {0, 0, 0, 0}, acc1 = {0, 0, 0, 0};
-    for (; i + 8 <= n; i += 8) {
-        gspectral_v4 x0, x1;
-        memcpy(&x0, a + i, sizeof x0);
-        memcpy(&x1, a + i + 4, sizeof x1);
-        acc0 += gspectral_vabs(x0);
-        acc1 += gspectral_vabs(x1);
-    }
-    acc0 += acc1;
-    s = (acc0[0] + acc0[1]) + (acc0[2] + acc0[3]);
-#endif
-    for (; i < n; i++)
-        s += fabsf(a[i]);
-    return s;
-}
+static inline float gspectral_kabs(const float *a, int n) { return gspectral_ksum(GSPECTRAL_ABS, a, a, n); }
 
 /** sum of a * b */
 static inline float gspectral_kdot(const float *a, const float *b, int n)
 {
-    int i = 0;
-    float s = 0.0f;
-#ifdef GSPECTRAL_VECTOR
-    gspectral_v4 acc0 = {0, 0, 0, 0}, acc1 = {0, 0, 0, 0};
-    for (; i + 8 <= n; i += 8) {
-        gspectral_v4 x0, x1, y0, y1;
-        memcpy(&x0, a + i, sizeof x0);
-        memcpy(&x1, a + i + 4, sizeof x1);
-        memcpy(&y0, b + i, sizeof y0);
-        memcpy(&y1, b + i + 4, sizeof y1);
-        acc0 += x0 * y0;
-        acc1 += x1 * y1;
-    }
-    acc0 += acc1;
-    s = (acc0[0] + acc0[1]) + (acc0[2] + acc0[3]);
-#endif
-    for (; i < n; i++)
-        s += a[i] * b[i];
-    return s;
+    return gspectral_ksum(GSPECTRAL_DOT, a, b, n);
 }
 
 /** o = a / b sample by sample, zero where b is zero */

@@ -10,31 +10,10 @@
 #include "colormodels.h"
 #include "spectral_common.h"
 
-typedef struct Spectrum {
-    GSpectral s;
-} Spectrum;
-
-static void spectrum_fini(GColorModel *self)
-{
-    Spectrum *p = self->priv;
-    if (p)
-        gspectral_fini(&p->s);
-    gmem_free(p);
-    self->priv = NULL;
-}
-
+/* The model's priv struct is a plain GSpectral. */
 static int spectrum_init(GColorModel *self, const GColorModelOptions *opt, GError *err)
 {
-    GSpectralGrid grid;
-    int rc = gspectral_grid_from_options("spectrum", opt, 5.0, GSPECTRAL_MAX_SAMPLES, &grid, err);
-    if (rc != G_OK)
-        return rc;
-    Spectrum *p = gmem_calloc(1, sizeof *p);
-    if (!p)
-        return gerror_set(err, G_ERR_NOMEM, "out of memory creating colour model 'spectrum'");
-    self->priv = p;
-    self->capacity = grid.n;
-    return gspectral_init(self, &p->s, grid, 1, err);
+    return gspectral_model_init(self, opt, 5.0, GSPECTRAL_MAX_SAMPLES, 0, err);
 }
 
 const GColorModelClass gcolormodel_spectrum = {
@@ -42,7 +21,7 @@ const GColorModelClass gcolormodel_spectrum = {
     .name = "spectrum",
     .description = "spectrum sampled every step_nm (default 380..780 nm at 5 nm)",
     .init = spectrum_init,
-    .fini = spectrum_fini,
+    .fini = gspectral_model_fini,
     .black = gspectral_black,
     .add = gspectral_add,
     .mul = gspectral_mul,

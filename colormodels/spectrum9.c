@@ -57,15 +57,6 @@ static void build_spline(Spectrum9 *p, GSpectralGrid g)
     }
 }
 
-static void spectrum9_fini(GColorModel *self)
-{
-    Spectrum9 *p = self->priv;
-    if (p)
-        gspectral_fini(&p->s);
-    gmem_free(p);
-    self->priv = NULL;
-}
-
 static int spectrum9_init(GColorModel *self, const GColorModelOptions *opt, GError *err)
 {
     if (opt && ((opt->step_nm != 0.0 && opt->step_nm != 50.0) || (opt->min_nm != 0.0 && opt->min_nm != 380.0) ||
@@ -74,11 +65,10 @@ static int spectrum9_init(GColorModel *self, const GColorModelOptions *opt, GErr
                           "colour model 'spectrum9' has a fixed grid (380..780 nm every 50 nm); use 'spectrum' "
                           "for another grid");
     GSpectralGrid grid = {380.0, 50.0, N9};
-    Spectrum9 *p = gmem_calloc(1, sizeof *p);
-    if (!p)
-        return gerror_set(err, G_ERR_NOMEM, "out of memory creating colour model 'spectrum9'");
-    self->priv = p;
-    self->capacity = N9;
+    int rc = gspectral_model_alloc(self, sizeof(Spectrum9), N9, err);
+    if (rc != G_OK)
+        return rc;
+    Spectrum9 *p = self->priv;
     build_spline(p, grid);
     return gspectral_init(self, &p->s, grid, 0, err);
 }
@@ -103,7 +93,7 @@ const GColorModelClass gcolormodel_spectrum9 = {
     .name = "spectrum9",
     .description = "9 samples 380..780 nm every 50 nm, natural cubic spline in between",
     .init = spectrum9_init,
-    .fini = spectrum9_fini,
+    .fini = gspectral_model_fini,
     .black = gspectral_black,
     .add = gspectral_add,
     .mul = gspectral_mul,

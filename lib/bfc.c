@@ -2,8 +2,10 @@
 #include "generic/bfc.h"
 #include "generic/memory.h"
 #include "lexer.h"
+#include "reader_internal.h"
 
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -144,7 +146,11 @@ int gbfc_parse(const char *text, size_t len, const char *name, GBfcData *out, GE
         for (int j = 0; j < n_in && rc == G_OK; j++) {
             double v;
             rc = number(&c, &v, "a matrix value", err);
-            values[(size_t)o * n_in + j] = (float)v;
+            if (rc == G_OK && !(fabs(v) <= FLT_MAX)) /* would become infinite as a float */
+                rc = gerror_set(err, G_ERR_PARSE, "%s:%d:%d: matrix value %g is out of range", c.name, c.line,
+                                (int)(c.tok - c.line_start) + 1, v);
+            if (rc == G_OK)
+                values[(size_t)o * n_in + j] = (float)v;
         }
         if (rc == G_OK && !at_line_end(&c))
             rc = fail(&c, err, "more values on the row than the grid line announces");
@@ -175,38 +181,13 @@ int gbfc_parse(const char *text, size_t len, const char *name, GBfcData *out, GE
 int gbfc_read(const char *path, GBfcData *out, GError *err)
 {
     memset(out, 0, sizeof *out);
-    FILE *f = fopen(path, "rb");
-    if (!f)
-        return gerror_set(err, G_ERR_IO, "cannot open \"%s\": %s", path, strerror(errno));
-    size_t cap = 65536, n = 0;
-    char *buf = gmem_alloc(cap);
-    int rc = buf ? G_OK : gerror_set(err, G_ERR_NOMEM, "out of memory reading \"%s\"", path);
-    while (rc == G_OK) {
-        if (n == cap) {
-            if (cap >= MAX_SIZE) {
-                rc = gerror_set(err, G_ERR_IO, "\"%s\" is larger than %u bytes", path, MAX_SIZE);
-                break;
-            }
-            char *b = gmem_realloc(buf, cap * 2);
-            if (!b) {
-                rc = gerror_set(err, G_ERR_NOMEM, "out of memory reading \"%s\"", path);
-                break;
-            }
-            buf = b;
-            cap *= 2;
-        }
-        size_t got = fread(buf + n, 1, cap - n, f);
-        n += got;
-        if (got == 0) {
-            if (ferror(f))
-                rc = gerror_set(err, G_ERR_IO, "cannot read \"%s\": %s", path, strerror(errno));
-            break;
-        }
+    char *text;
+    size_t n;
+    int rc = greader_read_file(path, MAX_SIZE, &text, &n, err); /* the text reader's whole-file loader */
+    if (rc == G_OK) {
+        rc = gbfc_parse(text, n, path, out, err);
+        gmem_free(text);
     }
-    fclose(f);
-    if (rc == G_OK)
-        rc = gbfc_parse(buf, n, path, out, err);
-    gmem_free(buf);
     return rc;
 }
 

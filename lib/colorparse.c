@@ -94,13 +94,20 @@ int gcolorspec_to_color(const GColorSpec *s, GColorRole role, GColor *out, GErro
         rc = gcolor_from_reradiation(out, &s->rerad, err);
         if (rc == G_OK && s->scale != 1.0)
             rc = gcolor_scale(out, out, s->scale);
-        return rc;
+        if (rc != G_OK)
+            return rc;
+        break;
     default:
         return gerror_set(err, G_ERR_INVALID, "unknown colour form %d", s->form);
     }
     if (rc != G_OK)
         return gerror_set(err, rc, "the colour cannot be converted into model '%s' (%s)", gcolormodel_name(out->model),
                           gstatus_string(rc));
+    if (!gcolor_is_finite(out)) { /* finite factors whose product overflows a float: nothing infinite gets out */
+        gcolor_black(out);
+        return gerror_set(err, G_ERR_INVALID, "the colour is too large: a value overflows in model '%s'",
+                          gcolormodel_name(out->model));
+    }
     return G_OK;
 }
 

@@ -224,14 +224,14 @@ int gdielectric_create(const GColorModel *model, const GDielectricParams *params
     if (!model || !params)
         return gerror_set(err, G_ERR_INVALID, "dielectric: no colour model or parameters given");
     int rc = gdispersion_check(&params->index, err);
+    GMaterial *m;
+    if (rc == G_OK)
+        rc = gmat_new(&gmaterial_dielectric, model, sizeof(Dielectric), &m, err);
     if (rc != G_OK)
         return rc;
-    Dielectric *d = gmem_calloc(1, sizeof *d);
-    if (!d)
-        return gerror_set(err, G_ERR_NOMEM, "dielectric: out of memory");
+    Dielectric *d = (Dielectric *)m;
     d->disp = params->index;
-    rc = gmaterial_init(&d->base, &gmaterial_dielectric, model, err);
-    if (rc == G_OK && gcolor_alloc(&d->index, model) != G_OK)
+    if (gcolor_alloc(&d->index, model) != G_OK)
         rc = gerror_set(err, G_ERR_NOMEM, "dielectric: out of memory");
     if (rc == G_OK && (rc = index_color(&d->disp, &d->index)) != G_OK)
         rc = gerror_set(err, rc, "dielectric: cannot express the index in model '%s'", gcolormodel_name(model));

@@ -4,17 +4,9 @@
 #include "params.h"
 
 typedef struct Emitter {
-    GMaterial base;
-    GColor radiance;
+    GMatOneColor radiance; /* first: the class's destroy is gmat_one_color_destroy */
     int two_sided;
 } Emitter;
-
-static void emitter_destroy(GMaterial *self)
-{
-    Emitter *e = (Emitter *)self;
-    gcolor_free(&e->radiance);
-    gmem_free(e);
-}
 
 static int emitter_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result)
 {
@@ -29,33 +21,22 @@ static int emitter_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GC
             return G_OK;
         }
     }
-    return gcolor_copy(result, &e->radiance);
+    return gcolor_copy(result, &e->radiance.c);
 }
 
 const GMaterialClass gmaterial_emitter = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "emitter",
     .description = "emits a radiance from its front (or both sides)",
-    .destroy = emitter_destroy,
+    .destroy = gmat_one_color_destroy,
     .emission = emitter_emission,
 };
 
 int gemitter_create(const GColorModel *model, const GColor *radiance, int two_sided, GMaterial **out, GError *err)
 {
-    *out = NULL;
-    if (!model)
-        return gerror_set(err, G_ERR_INVALID, "emitter: no colour model given");
-    Emitter *e = gmem_calloc(1, sizeof *e);
-    if (!e)
-        return gerror_set(err, G_ERR_NOMEM, "emitter: out of memory");
-    int rc = gmaterial_init(&e->base, &gmaterial_emitter, model, err);
+    int rc = gmat_one_color_create(&gmaterial_emitter, model, sizeof(Emitter), radiance, GCOLOR_LIGHT, 0.0, "radiance",
+                                   out, err);
     if (rc == G_OK)
-        rc = gmatparam_color(model, radiance, GCOLOR_LIGHT, 0.0, "emitter", "radiance", &e->radiance, err);
-    if (rc != G_OK) {
-        emitter_destroy(&e->base);
-        return rc;
-    }
-    e->two_sided = two_sided != 0;
-    *out = &e->base;
-    return G_OK;
+        ((Emitter *)*out)->two_sided = two_sided != 0;
+    return rc;
 }

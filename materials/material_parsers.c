@@ -63,10 +63,15 @@ static int finish(int rc, GMaterial *m, void **object)
     return rc;
 }
 
-int gparse_lambert(GReader *r, const void *vtable, void **object, GError *err)
+/* The constructor of a material with one reflectance parameter (glambert_create, gmirror_create). */
+typedef int (*ReflectorCreate)(const GColorModel *model, const GColor *reflectance, GMaterial **out, GError *err);
+
+/* `NAME { reflectance COLOR }`: the parameter block of a material whose only parameter is its reflectance
+ * (grey `def` by default), made with create. */
+static int parse_reflector(GReader *r, const char *name, double def, ReflectorCreate create, void **object,
+                           GError *err)
 {
-    (void)vtable;
-    Seen s = {.material = "lambert"};
+    Seen s = {.material = name};
     GColor refl = {0};
     const char *key;
     int rc;
@@ -80,12 +85,18 @@ int gparse_lambert(GReader *r, const void *vtable, void **object, GError *err)
             break;
     }
     if (rc == G_OK)
-        rc = default_color(r, 0.8, GCOLOR_REFLECTANCE, &refl, err);
+        rc = default_color(r, def, GCOLOR_REFLECTANCE, &refl, err);
     GMaterial *m = NULL;
-    if (rc == G_OK && (rc = glambert_create(greader_colormodel(r), &refl, &m, err)) != G_OK)
+    if (rc == G_OK && (rc = create(greader_colormodel(r), &refl, &m, err)) != G_OK)
         rc = locate(r, &s, rc, err);
     gcolor_free(&refl);
     return finish(rc, m, object);
+}
+
+int gparse_lambert(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    return parse_reflector(r, "lambert", 0.8, glambert_create, object, err);
 }
 
 int gparse_phong(GReader *r, const void *vtable, void **object, GError *err)
@@ -128,26 +139,7 @@ int gparse_phong(GReader *r, const void *vtable, void **object, GError *err)
 int gparse_mirror(GReader *r, const void *vtable, void **object, GError *err)
 {
     (void)vtable;
-    Seen s = {.material = "mirror"};
-    GColor refl = {0};
-    const char *key;
-    int rc;
-    while ((rc = greader_param(r, &key, err)) > 0) {
-        seen_add(r, &s, key);
-        if (strcmp(key, "reflectance") == 0)
-            rc = greader_color(r, GCOLOR_REFLECTANCE, &refl, err);
-        else
-            rc = greader_unknown_param(r, "reflectance", err);
-        if (rc < 0)
-            break;
-    }
-    if (rc == G_OK)
-        rc = default_color(r, 1.0, GCOLOR_REFLECTANCE, &refl, err);
-    GMaterial *m = NULL;
-    if (rc == G_OK && (rc = gmirror_create(greader_colormodel(r), &refl, &m, err)) != G_OK)
-        rc = locate(r, &s, rc, err);
-    gcolor_free(&refl);
-    return finish(rc, m, object);
+    return parse_reflector(r, "mirror", 1.0, gmirror_create, object, err);
 }
 
 /* index N | index cauchy A B [C] | index sellmeier B1 B2 B3 C1 C2 C3 */

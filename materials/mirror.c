@@ -3,17 +3,7 @@
 #include "materials_builtin.h"
 #include "params.h"
 
-typedef struct Mirror {
-    GMaterial base;
-    GColor r;
-} Mirror;
-
-static void mirror_destroy(GMaterial *self)
-{
-    Mirror *m = (Mirror *)self;
-    gcolor_free(&m->r);
-    gmem_free(m);
-}
+/* The state is a GMatOneColor: c is the reflectance. */
 
 static int mirror_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
                              GColor *result)
@@ -23,7 +13,7 @@ static int mirror_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, co
         gcolor_black(result);
         return G_OK;
     }
-    return gcolor_mul(result, &((const Mirror *)self)->r, illum);
+    return gcolor_mul(result, &((const GMatOneColor *)self)->c, illum);
 }
 
 static int mirror_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
@@ -36,14 +26,14 @@ static int mirror_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 vi
 static int mirror_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
 {
     (void)sp;
-    return gcolor_mul(result, &((const Mirror *)self)->r, illum);
+    return gcolor_mul(result, &((const GMatOneColor *)self)->c, illum);
 }
 
 const GMaterialClass gmaterial_mirror = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "mirror",
     .description = "perfect specular reflector",
-    .destroy = mirror_destroy,
+    .destroy = gmat_one_color_destroy,
     .reflection = mirror_reflection,
     .reflection_dir = mirror_reflection_dir,
     .ambient = mirror_ambient,
@@ -51,19 +41,6 @@ const GMaterialClass gmaterial_mirror = {
 
 int gmirror_create(const GColorModel *model, const GColor *reflectance, GMaterial **out, GError *err)
 {
-    *out = NULL;
-    if (!model)
-        return gerror_set(err, G_ERR_INVALID, "mirror: no colour model given");
-    Mirror *m = gmem_calloc(1, sizeof *m);
-    if (!m)
-        return gerror_set(err, G_ERR_NOMEM, "mirror: out of memory");
-    int rc = gmaterial_init(&m->base, &gmaterial_mirror, model, err);
-    if (rc == G_OK)
-        rc = gmatparam_color(model, reflectance, GCOLOR_REFLECTANCE, 1.0, "mirror", "reflectance", &m->r, err);
-    if (rc != G_OK) {
-        mirror_destroy(&m->base);
-        return rc;
-    }
-    *out = &m->base;
-    return G_OK;
+    return gmat_one_color_create(&gmaterial_mirror, model, sizeof(GMatOneColor), reflectance, GCOLOR_REFLECTANCE,
+                                 1.0, "reflectance", out, err);
 }

@@ -1,4 +1,5 @@
-/* params.c - parameter checks and shading helpers shared by the built-in materials. */
+/* params.c - parameter checks, construction and shading helpers shared by the built-in materials and the
+ * texture nodes. */
 #include "params.h"
 
 #include <math.h>
@@ -41,7 +42,9 @@ int gmatparam_color(const GColorModel *m, const GColor *src, GColorRole role, do
     if (max > 0.0) {
         int at;
         double mx = gmatparam_max(src, &at);
-        if (mx > max * (1.0 + 1e-4))
+        /* an in-range colour may overshoot a little after conversion (rgb 1 1 1 gives 1.00015 in the spectral
+         * models: the RGB round trip correction of lib/cie.c); such values are clamped below */
+        if (mx > max * (1.0 + 1e-3))
             return gerror_set(err, G_ERR_INVALID, "%s: %s has the value %g at sample %d (must be <= %g)", material,
                               param, mx, at, max);
     }
@@ -53,13 +56,53 @@ int gmatparam_color(const GColorModel *m, const GColor *src, GColorRole role, do
         return gerror_set(err, rc, "%s: cannot convert %s from model '%s' to '%s'", material, param,
                           gcolormodel_name(src->model), gcolormodel_name(m));
     }
-    if (src->model != m && dst->kind == GCOLOR_VECTOR)
+    if (dst->kind == GCOLOR_VECTOR)
         for (int i = 0; i < m->nvalues; i++) {
             if (!(dst->v[i] >= 0.0f))
                 dst->v[i] = 0.0f;
             if (max > 0.0 && dst->v[i] > max)
                 dst->v[i] = (float)max;
         }
+    return G_OK;
+}
+
+int gmat_new(const GMaterialClass *cls, const GColorModel *model, size_t size, GMaterial **out, GError *err)
+{
+    *out = NULL;
+    GMaterial *m = gmem_calloc(1, size);
+    if (!m)
+        return gerror_set(err, G_ERR_NOMEM, "%s: out of memory", cls->name);
+    int rc = gmaterial_init(m, cls, model, err);
+    if (rc != G_OK) {
+        gmem_free(m);
+        return rc;
+    }
+    *out = m;
+    return G_OK;
+}
+
+void gmat_one_color_destroy(GMaterial *self)
+{
+    gcolor_free(&((GMatOneColor *)self)->c);
+    gmem_free(self);
+}
+
+int gmat_one_color_create(const GMaterialClass *cls, const GColorModel *model, size_t size, const GColor *src,
+                          GColorRole role, double max, const char *param, GMaterial **out, GError *err)
+{
+    *out = NULL;
+    if (!model)
+        return gerror_set(err, G_ERR_INVALID, "%s: no colour model given", cls->name);
+    GMaterial *m;
+    int rc = gmat_new(cls, model, size, &m, err);
+    if (rc != G_OK)
+        return rc;
+    rc = gmatparam_color(model, src, role, max, cls->name, param, &((GMatOneColor *)m)->c, err);
+    if (rc != G_OK) {
+        gmat_one_color_destroy(m);
+        return rc;
+    }
+    *out = m;
     return G_OK;
 }
 

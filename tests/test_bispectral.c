@@ -177,6 +177,17 @@ static void random_matrix(const GColorModel *m, GColor *out, float scale)
     matrix(m, data, out);
 }
 
+/* The default model with a random matrix in a (off-diagonal entries up to 0.05) and v, o beside it. */
+static GColorModel *random_fixture(GColor *a, GColor *v, GColor *o)
+{
+    GColorModel *m = model(0, 0, 0);
+    gcolor_wrap(a, m, buf[0]);
+    gcolor_wrap(v, m, buf[1]);
+    gcolor_wrap(o, m, buf[2]);
+    random_matrix(m, a, 0.05f);
+    return m;
+}
+
 static void test_composition(void **state)
 {
     (void)state;
@@ -239,13 +250,9 @@ static void test_composition(void **state)
 static void test_fold_and_brightness(void **state)
 {
     (void)state;
-    GColorModel *m = model(0, 0, 0);
-    int n = m->nsamples;
     GColor a, v, o;
-    gcolor_wrap(&a, m, buf[0]);
-    gcolor_wrap(&v, m, buf[1]);
-    gcolor_wrap(&o, m, buf[2]);
-    random_matrix(m, &a, 0.05f);
+    GColorModel *m = random_fixture(&a, &v, &o);
+    int n = m->nsamples;
     for (int r = 0; r < n; r++) {
         double s = 0.0;
         for (int i = 0; i < n; i++)
@@ -289,13 +296,9 @@ static void test_fold_and_brightness(void **state)
 static void test_matrix_vector_operations(void **state)
 {
     (void)state;
-    GColorModel *m = model(0, 0, 0);
-    int n = m->nsamples;
     GColor a, v, o;
-    gcolor_wrap(&a, m, buf[0]);
-    gcolor_wrap(&v, m, buf[1]);
-    gcolor_wrap(&o, m, buf[2]);
-    random_matrix(m, &a, 0.05f);
+    GColorModel *m = random_fixture(&a, &v, &o);
+    int n = m->nsamples;
     double rgb[3] = {0.4, 0.5, 0.6};
     gcolor_from_rgb(&v, rgb, GCOLOR_REFLECTANCE);
     /* add: A + diag(v) in both orders, and into the vector's own storage */

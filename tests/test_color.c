@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "generic/color.h"
+#include "test_util.h"
 
 /* The models under test: name, options, a label for the printout. */
 typedef struct Case {
@@ -481,29 +482,9 @@ static void test_convert_preserves_xyz(void **state)
 
 /* ---- no allocation on the per-ray path ---- */
 
-static long allocs;
-static void *count_alloc(size_t n, void *u)
-{
-    (void)u;
-    allocs++;
-    return malloc(n);
-}
-static void *count_realloc(void *p, size_t n, void *u)
-{
-    (void)u;
-    allocs++;
-    return realloc(p, n);
-}
-static void count_free(void *p, void *u)
-{
-    (void)u;
-    free(p);
-}
-
 static void test_operations_do_not_allocate(void **state)
 {
     (void)state;
-    const GAllocator counting = {count_alloc, count_realloc, count_free, NULL};
     for (int ci = 0; ci < NCASES; ci++) {
         GColorModel *m = make(&cases[ci]);
         GScratch *s = gscratch_create(0);
@@ -532,8 +513,8 @@ static void test_operations_do_not_allocate(void **state)
         } else {
             gcolor_copy(&mat, &b);
         }
-        gmem_set_allocator(&counting);
-        allocs = 0;
+        static TuCounter counter;
+        tu_count_install(&counter, -1);
         double sink = 0.0;
         for (int i = 0; i < 1000; i++) {
             GScratchMark mark = gscratch_mark(s);
@@ -562,8 +543,9 @@ static void test_operations_do_not_allocate(void **state)
             gscratch_release(s, mark);
         }
         gmem_set_allocator(NULL);
-        printf("%-24s %ld allocations in 1000 rounds (sink %.3g)\n", cases[ci].label, allocs, sink);
-        assert_int_equal(allocs, 0);
+        printf("%-24s %ld allocations in 1000 rounds (sink %.3g)\n", cases[ci].label, counter.allocs,
+               sink);
+        assert_int_equal(counter.allocs, 0);
         assert_true(isfinite(sink) && sink > 0.0);
         gscratch_destroy(s);
         gcolormodel_destroy(m);

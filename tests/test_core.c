@@ -12,24 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* ---- an allocator that counts calls and fails the n-th one ---- */
-static long n_allocs, fail_at = -1;
-static void *count_alloc(size_t n, void *u)
-{
-    (void)u;
-    if (fail_at >= 0 && n_allocs++ == fail_at)
-        return NULL;
-    return malloc(n);
-}
-static void *count_realloc(void *p, size_t n, void *u)
-{
-    (void)u;
-    if (fail_at >= 0 && n_allocs++ == fail_at)
-        return NULL;
-    return realloc(p, n);
-}
-static void count_free(void *p, void *u) { (void)u; free(p); }
-static const GAllocator counting = {count_alloc, count_realloc, count_free, NULL};
+#include "test_util.h"
 
 static void test_error_record(void **state)
 {
@@ -72,18 +55,16 @@ static void test_scratch_reuses_blocks(void **state)
 {
     (void)state;
     GScratch *s = gscratch_create(256);
-    gmem_set_allocator(&counting);
-    n_allocs = 0;
-    fail_at = 1000000;
+    static TuCounter counter;
+    tu_count_install(&counter, -1);
     for (int round = 0; round < 100; round++) {
         GScratchMark m = gscratch_mark(s);
         for (int i = 0; i < 20; i++)
             assert_non_null(gscratch_alloc(s, 200));
         gscratch_release(s, m);
     }
-    long grown = n_allocs;
+    long grown = counter.allocs;
     gmem_set_allocator(NULL);
-    fail_at = -1;
     assert_true(grown <= 20); /* blocks grow in the first round only */
     gscratch_destroy(s);
 }
@@ -122,7 +103,6 @@ static void test_unknown_model_lists_known(void **state)
     assert_non_null(strstr(e.message, "rgb"));
 }
 
-
 static int never_init(GColorModel *self, const GColorModelOptions *opt, GError *err)
 {
     (void)self;
@@ -151,9 +131,8 @@ static void test_out_of_memory(void **state)
     (void)state;
     gregistry_find(GKIND_COLORMODEL, "rgb"); /* registry built before counting */
     for (long k = 0; k < 8; k++) {
-        gmem_set_allocator(&counting);
-        n_allocs = 0;
-        fail_at = k;
+        static TuCounter counter;
+        tu_count_install(&counter, k);
         GError e;
         GColorModel *m = NULL;
         int rc = gcolormodel_create("rgb", NULL, &m, &e);
@@ -161,7 +140,6 @@ static void test_out_of_memory(void **state)
         int rc2 = rc == G_OK ? gcolor_alloc(&c, m) : G_ERR_NOMEM;
         GScratch *s = gscratch_create(0);
         gmem_set_allocator(NULL);
-        fail_at = -1;
         assert_true(rc == G_OK || rc == G_ERR_NOMEM);
         assert_true(rc2 == G_OK || rc2 == G_ERR_NOMEM);
         if (rc2 == G_ERR_NOMEM)

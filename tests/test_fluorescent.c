@@ -18,17 +18,9 @@
 #include "generic/bfc.h"
 #include "generic/fluorescent.h"
 #include "generic/reader.h"
+#include "test_util.h"
 
 #define DEG (M_PI / 180.0)
-#define assert_near(a, b, tol) near_((a), (b), (tol), #a, __FILE__, __LINE__)
-
-static void near_(double a, double b, double tol, const char *what, const char *file, int line)
-{
-    if (!(fabs(a - b) <= tol)) {
-        print_error("%s:%d: %s = %.10g, expected %.10g within %g\n", file, line, what, a, b, tol);
-        _fail(file, line);
-    }
-}
 
 /* Reads a shared BFC file, or skips the test when the data is not there. */
 static void load_bfc(const char *name, GBfcData *d)

@@ -17,16 +17,7 @@
 
 #include "generic/bfc.h"
 #include "generic/fluorescent.h"
-
-#define assert_near(a, b, tol) near_((a), (b), (tol), #a, __FILE__, __LINE__)
-
-static void near_(double a, double b, double tol, const char *what, const char *file, int line)
-{
-    if (!(fabs(a - b) <= tol)) {
-        print_error("%s:%d: %s = %.10g, expected %.10g within %g\n", file, line, what, a, b, tol);
-        _fail(file, line);
-    }
-}
+#include "test_util.h"
 
 /* Fixture: the bispectral model, an arena, and the matrix under test (state: "HERPIORA.BFC" or NULL for
  * the parametric one). */

@@ -12,10 +12,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include "generic/image.h"
+#include "test_util.h"
 
 static char gmat[4096], dir[4096], matfile[4200];
 
@@ -26,15 +26,10 @@ static int setup(void **state)
     snprintf(gmat, sizeof gmat, "%s/bin/gmat", build ? build : "build");
     snprintf(dir, sizeof dir, "%s/tests", build ? build : "build");
     snprintf(matfile, sizeof matfile, "%s/test_gmat.mat", dir);
-    FILE *f = fopen(matfile, "w");
-    if (!f)
-        return -1;
-    fputs("material half lambert { reflectance rgb 0.5 0.5 0.5 }\n"
-          "material gloss phong { diffuse rgb 0.3 0.3 0.3 specular rgb 0.5 0.5 0.5 exponent 50 }\n"
-          "material red lambert { reflectance rgb 0.8 0.05 0.05 }\n",
-          f);
-    fclose(f);
-    return 0;
+    return tu_write_file(matfile, "material half lambert { reflectance rgb 0.5 0.5 0.5 }\n"
+                                  "material gloss phong { diffuse rgb 0.3 0.3 0.3 specular rgb 0.5 0.5 0.5 "
+                                  "exponent 50 }\n"
+                                  "material red lambert { reflectance rgb 0.8 0.05 0.05 }\n");
 }
 
 static int teardown(void **state)
@@ -51,14 +46,7 @@ static int run(const char *args, char *out, size_t size)
         print_error("%s is not built\n", gmat);
         fail();
     }
-    char cmd[12000];
-    snprintf(cmd, sizeof cmd, "'%s' %s 2>&1", gmat, args);
-    FILE *p = popen(cmd, "r");
-    assert_non_null(p);
-    size_t n = fread(out, 1, size - 1, p);
-    out[n] = '\0';
-    int st = pclose(p);
-    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    return tu_run_capture(gmat, args, out, size);
 }
 
 static double field(const char *out, const char *label)

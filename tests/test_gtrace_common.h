@@ -9,6 +9,8 @@
 #include "examples/gtrace/mesh.c"
 #include "examples/gtrace/output.c"
 #include "examples/gtrace/parse.c"
+#include "examples/gtrace/probe_light.c"
+#include "examples/gtrace/probe_sample.c"
 #include "examples/gtrace/progress.c"
 #include "examples/gtrace/render.c"
 #include "examples/gtrace/scene.c"

@@ -18,19 +18,9 @@
 #include "generic/registry.h"
 #include "generic/surfpoint.h"
 #include "materials/materials_builtin.h"
+#include "test_util.h"
 
 #define DEG (M_PI / 180.0)
-
-/* |a - b| <= tol in double precision (cmocka's assert_float_equal works in float). */
-#define assert_near(a, b, tol) near_((a), (b), (tol), #a, __FILE__, __LINE__)
-
-static void near_(double a, double b, double tol, const char *what, const char *file, int line)
-{
-    if (!(fabs(a - b) <= tol)) {
-        print_error("%s:%d: %s = %.10g, expected %.10g within %g\n", file, line, what, a, b, tol);
-        _fail(file, line);
-    }
-}
 
 typedef struct Fix {
     GColorModel *model;

@@ -20,15 +20,7 @@
 #include "generic/materials.h"
 #include "generic/memory.h"
 #include "generic/reader.h"
-
-#define assert_near(a, b, tol) near_((a), (b), (tol), #a, __LINE__)
-static void near_(double a, double b, double tol, const char *what, int line)
-{
-    if (!(fabs(a - b) <= tol)) {
-        print_error("line %d: %s = %.10g, expected %.10g within %g\n", line, what, a, b, tol);
-        fail();
-    }
-}
+#include "test_util.h"
 
 static GLibrary *load(const char *text)
 {

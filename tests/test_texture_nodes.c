@@ -9,6 +9,7 @@
 #include <generic/materials.h>
 
 #include "texture_fixtures.h"
+#include "test_util.h"
 
 #include <stdio.h>
 
@@ -599,24 +600,6 @@ static void test_bad_input(void **state)
 }
 
 /* ---- out of memory at every allocation of a tree's construction: clean failure, no leak ---- */
-static long n_allocs, fail_at = -1;
-static void *count_alloc(size_t n, void *u)
-{
-    (void)u;
-    if (fail_at >= 0 && n_allocs++ == fail_at)
-        return NULL;
-    return malloc(n);
-}
-static void *count_realloc(void *p, size_t n, void *u)
-{
-    (void)u;
-    if (fail_at >= 0 && n_allocs++ == fail_at)
-        return NULL;
-    return realloc(p, n);
-}
-static void count_free(void *p, void *u) { (void)u; free(p); }
-static const GAllocator failing = {count_alloc, count_realloc, count_free, NULL};
-
 static int build_tree(const GColorModel *m, GError *err)
 {
     CountMat *a = countmat_new(m, 0.1, 0.1, 0.1), *b = countmat_new(m, 0.9, 0.9, 0.9);
@@ -656,9 +639,8 @@ static void test_out_of_memory(void **state)
     GError err;
     int failures = 0;
     for (long k = 0; k < 200; k++) {
-        n_allocs = 0;
-        fail_at = k;
-        gmem_set_allocator(&failing);
+        static TuCounter counter;
+        tu_count_install(&counter, k);
         int rc = build_tree(f->rgb, &err);
         gmem_set_allocator(NULL);
         if (rc == G_OK)
@@ -667,7 +649,6 @@ static void test_out_of_memory(void **state)
         assert_non_null(strstr(err.message, "out of memory"));
         failures++;
     }
-    fail_at = -1;
     assert_true(failures >= 8); /* every library allocation of the tree was made to fail once */
 }
 

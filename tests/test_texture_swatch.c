@@ -11,10 +11,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <generic/image.h>
+#include "test_util.h"
 
 static char gmat[4096], matfile[4200], png[4200];
 
@@ -25,15 +25,9 @@ static int setup(void **state)
     snprintf(gmat, sizeof gmat, "%s/bin/gmat", build ? build : "build");
     snprintf(matfile, sizeof matfile, "%s/tests/test_texture_swatch.mat", build ? build : "build");
     snprintf(png, sizeof png, "%s/tests/test_texture_swatch.png", build ? build : "build");
-    FILE *f = fopen(matfile, "w");
-    if (!f)
-        return -1;
-    fputs("material black lambert { reflectance rgb 0.05 0.05 0.05 }\n"
-          "material white lambert { reflectance rgb 0.85 0.85 0.85 }\n"
-          "node board interpolate { a black  b white  t checker { frequency 8 } }\n",
-          f);
-    fclose(f);
-    return 0;
+    return tu_write_file(matfile, "material black lambert { reflectance rgb 0.05 0.05 0.05 }\n"
+                                  "material white lambert { reflectance rgb 0.85 0.85 0.85 }\n"
+                                  "node board interpolate { a black  b white  t checker { frequency 8 } }\n");
 }
 
 static int teardown(void **state)
@@ -48,14 +42,9 @@ static int run(const char *args, char *out, size_t size)
 {
     if (access(gmat, X_OK) != 0)
         skip();
-    char cmd[12000];
-    snprintf(cmd, sizeof cmd, "'%s' swatch %s 2>&1", gmat, args);
-    FILE *p = popen(cmd, "r");
-    assert_non_null(p);
-    size_t n = fread(out, 1, size - 1, p);
-    out[n] = '\0';
-    int st = pclose(p);
-    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    char swatch[10000];
+    snprintf(swatch, sizeof swatch, "swatch %s", args);
+    return tu_run_capture(gmat, swatch, out, size);
 }
 
 /* Lambertian reflectance rho under the swatch's lights with the shading normal n. */
@@ -67,15 +56,21 @@ static double shaded(double rho, double nx, double ny, double nz)
 
 static double pixel(const GImage *img, int x, int y) { return img->pixels[((size_t)y * img->width + x) * img->channels]; }
 
+/* Renders a swatch of material with the given options into png and reads it back. */
+static void render(const char *material, const char *options, GImage *img)
+{
+    char out[4096], args[9000];
+    snprintf(args, sizeof args, "'%s' %s -o '%s' %s", matfile, material, png, options);
+    assert_int_equal(run(args, out, sizeof out), 0);
+    GError err;
+    assert_int_equal(gimage_read(png, GIMAGE_READ_RGB, img, &err), G_OK);
+}
+
 static void test_flat_checker(void **state)
 {
     (void)state;
-    char out[4096], args[9000];
-    snprintf(args, sizeof args, "'%s' board -o '%s' --size 32 --samples 1", matfile, png);
-    assert_int_equal(run(args, out, sizeof out), 0);
     GImage img;
-    GError err;
-    assert_int_equal(gimage_read(png, GIMAGE_READ_RGB, &img, &err), G_OK);
+    render("board", "--size 32 --samples 1", &img);
     assert_int_equal(img.width, 32);
     /* 4 pixels per cell; the top-left cell is (0, 7): odd, white; the next one black */
     double white = shaded(0.85, 0, 0, 1), black = shaded(0.05, 0, 0, 1);
@@ -90,12 +85,8 @@ static void test_flat_checker(void **state)
 static void test_sphere(void **state)
 {
     (void)state;
-    char out[4096], args[9000];
-    snprintf(args, sizeof args, "'%s' white -o '%s' --size 64 --samples 1 --sphere", matfile, png);
-    assert_int_equal(run(args, out, sizeof out), 0);
     GImage img;
-    GError err;
-    assert_int_equal(gimage_read(png, GIMAGE_READ_RGB, &img, &err), G_OK);
+    render("white", "--size 64 --samples 1 --sphere", &img);
     /* a pixel's centre (x, y) in [-1, 1]^2 sees the sphere's normal (x, y, sqrt(1 - x^2 - y^2)) */
     const int px[][2] = {{32, 32}, {20, 12}, {45, 40}, {10, 30}};
     for (int i = 0; i < 4; i++) {

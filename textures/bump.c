@@ -6,8 +6,7 @@
 #include <math.h>
 
 typedef struct Bump {
-    GMaterial base;
-    GMaterial *child;
+    GTexChild node; /* base and child; first */
     GGenerator *height;
     double strength;
 } Bump;
@@ -15,7 +14,7 @@ typedef struct Bump {
 static void bump_destroy(GMaterial *self)
 {
     Bump *b = (Bump *)self;
-    gmaterial_unref(b->child);
+    gmaterial_unref(b->node.child);
     ggenerator_unref(b->height);
     gmem_free(b);
 }
@@ -31,7 +30,7 @@ static void frame(GVec3 m, GVec3 *t1, GVec3 *t2)
 static int bump_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
 {
     const Bump *b = (const Bump *)self;
-    int rc = gmaterial_normal(b->child, sp, n);
+    int rc = gmaterial_normal(b->node.child, sp, n);
     if (rc != G_OK || b->strength == 0.0)
         return rc;
     double hu, hv;
@@ -59,76 +58,22 @@ static int bump_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
     return G_OK;
 }
 
-static int bump_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
-                           GColor *result)
-{
-    return gmaterial_reflection(((const Bump *)self)->child, sp, in, illum, out, result);
-}
-
-static int bump_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
-                           const GColor *rel_index, GVec3 out, GColor *result)
-{
-    return gmaterial_refraction(((const Bump *)self)->child, sp, in, illum, rel_index, out, result);
-}
-
-static int bump_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
-{
-    return gmaterial_refraction_index(((const Bump *)self)->child, sp, result);
-}
-
-static int bump_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
-{
-    return gmaterial_reflection_dir(((const Bump *)self)->child, sp, view, dir);
-}
-
-static int bump_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
-                               GVec3 *dir)
-{
-    return gmaterial_refraction_dir(((const Bump *)self)->child, sp, view, rel_index, dir);
-}
-
-static int bump_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result)
-{
-    return gmaterial_emission(((const Bump *)self)->child, sp, out, result);
-}
-
-static int bump_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
-{
-    return gmaterial_ambient(((const Bump *)self)->child, sp, illum, result);
-}
-
-static int bump_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
-                           GColor *result)
-{
-    return gmaterial_absorption(((const Bump *)self)->child, sp, illum, length, result);
-}
-
-static int bump_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
-{
-    return gmaterial_diffuse(((const Bump *)self)->child, sp, result);
-}
-
-static int bump_opaque(const GMaterial *self, GSurfPoint *sp)
-{
-    return gmaterial_opaque(((const Bump *)self)->child, sp);
-}
-
 const GMaterialClass gnode_bump_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "bump",
     .description = "normal perturbed by the gradient of a height field (Blinn)",
     .destroy = bump_destroy,
-    .reflection = bump_reflection,
-    .refraction = bump_refraction,
-    .refraction_index = bump_refraction_index,
-    .reflection_dir = bump_reflection_dir,
-    .refraction_dir = bump_refraction_dir,
-    .emission = bump_emission,
-    .ambient = bump_ambient,
-    .absorption = bump_absorption,
+    .reflection = gtexchild_reflection,
+    .refraction = gtexchild_refraction,
+    .refraction_index = gtexchild_refraction_index,
+    .reflection_dir = gtexchild_reflection_dir,
+    .refraction_dir = gtexchild_refraction_dir,
+    .emission = gtexchild_emission,
+    .ambient = gtexchild_ambient,
+    .absorption = gtexchild_absorption,
     .normal = bump_normal,
-    .diffuse = bump_diffuse,
-    .opaque = bump_opaque,
+    .diffuse = gtexchild_diffuse,
+    .opaque = gtexchild_opaque,
 };
 
 int gnode_bump_create(GMaterial *child, GGenerator *height, double strength, GMaterial **out, GError *err)
@@ -140,17 +85,14 @@ int gnode_bump_create(GMaterial *child, GGenerator *height, double strength, GMa
         return rc;
     if (!isfinite(strength))
         return gerror_set(err, G_ERR_INVALID, "bump: strength must be finite, got %g", strength);
-    Bump *b = gmem_calloc(1, sizeof *b);
-    if (!b)
-        return gerror_set(err, G_ERR_NOMEM, "bump: out of memory");
-    rc = gmaterial_init(&b->base, &gnode_bump_class, model, err);
-    if (rc != G_OK) {
-        gmem_free(b);
+    GMaterial *mat;
+    rc = gmat_new(&gnode_bump_class, model, sizeof(Bump), &mat, err);
+    if (rc != G_OK)
         return rc;
-    }
-    b->child = gmaterial_ref(child);
+    Bump *b = (Bump *)mat;
+    b->node.child = gmaterial_ref(child);
     b->height = ggenerator_ref(height);
     b->strength = strength;
-    *out = &b->base;
+    *out = &b->node.base;
     return G_OK;
 }

@@ -10,8 +10,6 @@ typedef struct Checker {
     double frequency;
 } Checker;
 
-static void checker_destroy(GGenerator *self) { gmem_free(self); }
-
 /* Integral of the square wave that is 0 on [0, 1) and 1 on [1, 2), repeating. */
 static double wave_integral(double x)
 {
@@ -49,7 +47,7 @@ const GGeneratorClass ggen_checker_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "checker",
     .description = "checkerboard 0/1 in (u, v) (dims 2) or object space (dims 3), box-filtered",
-    .destroy = checker_destroy,
+    .destroy = gtexgen_free,
     .value = checker_value,
 };
 
@@ -60,15 +58,12 @@ int ggen_checker_create(int dims, double frequency, GGenerator **out, GError *er
         return gerror_set(err, G_ERR_INVALID, "checker: dims must be 2 or 3, got %d", dims);
     if (!(frequency > 0.0) || !isfinite(frequency))
         return gerror_set(err, G_ERR_INVALID, "checker: frequency must be positive and finite, got %g", frequency);
-    Checker *c = gmem_calloc(1, sizeof *c);
-    if (!c)
-        return gerror_set(err, G_ERR_NOMEM, "checker: out of memory");
-    int rc = ggenerator_init(&c->base, &ggen_checker_class,
-                             dims == 2 ? GGENERATOR_SPACE_UV : GGENERATOR_SPACE_OBJECT, err);
-    if (rc != G_OK) {
-        gmem_free(c);
+    GGenerator *gen;
+    GGeneratorSpace space = dims == 2 ? GGENERATOR_SPACE_UV : GGENERATOR_SPACE_OBJECT;
+    int rc = gtexgen_new(&ggen_checker_class, space, sizeof(Checker), &gen, err);
+    if (rc != G_OK)
         return rc;
-    }
+    Checker *c = (Checker *)gen;
     c->dims = dims;
     c->frequency = frequency;
     *out = &c->base;

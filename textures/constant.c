@@ -9,8 +9,6 @@ typedef struct Constant {
     double value;
 } Constant;
 
-static void constant_destroy(GGenerator *self) { gmem_free(self); }
-
 static double constant_value(const GGenerator *self, GSurfPoint *sp)
 {
     (void)sp;
@@ -29,7 +27,7 @@ const GGeneratorClass ggen_constant_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "constant",
     .description = "the same value everywhere",
-    .destroy = constant_destroy,
+    .destroy = gtexgen_free,
     .value = constant_value,
     .gradient = constant_gradient,
 };
@@ -39,14 +37,11 @@ int ggen_constant_create(double value, GGenerator **out, GError *err)
     *out = NULL;
     if (!isfinite(value))
         return gerror_set(err, G_ERR_INVALID, "constant: value must be finite, got %g", value);
-    Constant *c = gmem_calloc(1, sizeof *c);
-    if (!c)
-        return gerror_set(err, G_ERR_NOMEM, "constant: out of memory");
-    int rc = ggenerator_init(&c->base, &ggen_constant_class, GGENERATOR_SPACE_NONE, err);
-    if (rc != G_OK) {
-        gmem_free(c);
+    GGenerator *gen;
+    int rc = gtexgen_new(&ggen_constant_class, GGENERATOR_SPACE_NONE, sizeof(Constant), &gen, err);
+    if (rc != G_OK)
         return rc;
-    }
+    Constant *c = (Constant *)gen;
     c->value = value;
     *out = &c->base;
     return G_OK;

@@ -179,17 +179,13 @@ int ggen_cpg_create(GCpgShape *root, GGenerator **out, GError *err)
     *out = NULL;
     if (!root)
         return gerror_set(err, G_ERR_INVALID, "cpg: no shape given");
-    Cpg *c = gmem_calloc(1, sizeof *c);
-    if (!c) {
-        gcpg_destroy(root);
-        return gerror_set(err, G_ERR_NOMEM, "cpg: out of memory");
-    }
-    int rc = ggenerator_init(&c->base, &ggen_cpg_class, GGENERATOR_SPACE_UV, err);
+    GGenerator *gen;
+    int rc = gtexgen_new(&ggen_cpg_class, GGENERATOR_SPACE_UV, sizeof(Cpg), &gen, err);
     if (rc != G_OK) {
         gcpg_destroy(root);
-        gmem_free(c);
         return rc;
     }
+    Cpg *c = (Cpg *)gen;
     c->root = root;
     *out = &c->base;
     return G_OK;

@@ -201,18 +201,15 @@ int ggen_csg_create(GCsgShape *root, GGeneratorSpace space, GGenerator **out, GE
         gcsg_destroy(root);
         return gerror_set(err, G_ERR_INVALID, "csg: space must be object or world");
     }
-    Csg *c = gmem_calloc(1, sizeof *c);
-    if (!c) {
-        gcsg_destroy(root);
-        return gerror_set(err, G_ERR_NOMEM, "csg: out of memory");
-    }
-    int rc = ggenerator_init(&c->base, &ggen_csg_class,
-                             space == GGENERATOR_SPACE_WORLD ? GGENERATOR_SPACE_WORLD : GGENERATOR_SPACE_OBJECT, err);
+    GGenerator *gen;
+    if (space != GGENERATOR_SPACE_WORLD)
+        space = GGENERATOR_SPACE_OBJECT;
+    int rc = gtexgen_new(&ggen_csg_class, space, sizeof(Csg), &gen, err);
     if (rc != G_OK) {
         gcsg_destroy(root);
-        gmem_free(c);
         return rc;
     }
+    Csg *c = (Csg *)gen;
     c->root = root;
     *out = &c->base;
     return G_OK;

@@ -1,5 +1,6 @@
 /* generator.c - dispatch of the generator interface: references, cached values and gradients. */
 #include "generic/texture.h"
+#include "textures_builtin.h"
 
 #include <math.h>
 #include <string.h>
@@ -18,6 +19,23 @@ int ggenerator_init(GGenerator *g, const GGeneratorClass *cls, GGeneratorSpace s
     g->space = (int)space;
     return G_OK;
 }
+
+int gtexgen_new(const GGeneratorClass *cls, GGeneratorSpace space, size_t size, GGenerator **out, GError *err)
+{
+    *out = NULL;
+    GGenerator *g = gmem_calloc(1, size);
+    if (!g)
+        return gerror_set(err, G_ERR_NOMEM, "%s: out of memory", cls->name);
+    int rc = ggenerator_init(g, cls, space, err);
+    if (rc != G_OK) {
+        gmem_free(g);
+        return rc;
+    }
+    *out = g;
+    return G_OK;
+}
+
+void gtexgen_free(GGenerator *self) { gmem_free(self); }
 
 GGenerator *ggenerator_ref(GGenerator *g)
 {

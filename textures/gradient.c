@@ -10,8 +10,6 @@ typedef struct Field {
     double offset;
 } Field;
 
-static void field_destroy(GGenerator *self) { gmem_free(self); }
-
 static GVec3 coords(const GGenerator *g, const GSurfPoint *sp)
 {
     switch (g->space) {
@@ -39,7 +37,7 @@ const GGeneratorClass ggen_gradient_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "gradient",
     .description = "linear field offset + slope . (u, v) or the point (height field or ramp)",
-    .destroy = field_destroy,
+    .destroy = gtexgen_free,
     .value = field_value,
     .gradient = field_gradient,
 };
@@ -51,14 +49,11 @@ int ggen_gradient_create(GGeneratorSpace space, GVec3 slope, double offset, GGen
         return gerror_set(err, G_ERR_INVALID, "gradient: slope and offset must be finite");
     if (space == GGENERATOR_SPACE_NONE)
         space = GGENERATOR_SPACE_OBJECT;
-    Field *f = gmem_calloc(1, sizeof *f);
-    if (!f)
-        return gerror_set(err, G_ERR_NOMEM, "gradient: out of memory");
-    int rc = ggenerator_init(&f->base, &ggen_gradient_class, space, err);
-    if (rc != G_OK) {
-        gmem_free(f);
+    GGenerator *gen;
+    int rc = gtexgen_new(&ggen_gradient_class, space, sizeof(Field), &gen, err);
+    if (rc != G_OK)
         return rc;
-    }
+    Field *f = (Field *)gen;
     f->slope = space == GGENERATOR_SPACE_UV ? gvec3(slope.x, slope.y, 0.0) : slope;
     f->offset = offset;
     *out = &f->base;

@@ -9,8 +9,7 @@
 #include <string.h>
 
 typedef struct Image {
-    GMaterial base;
-    GMaterial *child;
+    GTexChild node; /* base and child; first */
     GTextureSystem *ts;
     GTexFile *file;
     int srgb;
@@ -23,7 +22,7 @@ typedef struct Image {
 static void image_destroy(GMaterial *self)
 {
     Image *im = (Image *)self;
-    gmaterial_unref(im->child);
+    gmaterial_unref(im->node.child);
     for (int i = 0; i < 3; i++)
         gcolor_free(&im->basis[i]);
     gtexsys_unref(im->ts);
@@ -64,7 +63,7 @@ static int apply(const GMaterial *self, GSurfPoint *sp, GColor *result)
     GColor c;
     int rc = gtextemps_color(&t, sp, result->model, 0, &c);
     if (rc == G_OK) {
-        if (result->model == im->base.model) {
+        if (result->model == im->node.base.model) {
             rc = gcolor_scale(&c, &im->basis[0], rgb[0]);
             if (rc == G_OK)
                 rc = gcolor_add_scaled(&c, &im->basis[1], rgb[1]);
@@ -80,68 +79,37 @@ static int apply(const GMaterial *self, GSurfPoint *sp, GColor *result)
     return rc;
 }
 
-#define CHILD(self) (((const Image *)(self))->child)
-
 static int image_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
                             GColor *result)
 {
-    int rc = gmaterial_reflection(CHILD(self), sp, in, illum, out, result);
+    int rc = gmaterial_reflection(gtexchild_of(self), sp, in, illum, out, result);
     return rc != G_OK ? rc : apply(self, sp, result);
 }
 
 static int image_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
                             const GColor *rel_index, GVec3 out, GColor *result)
 {
-    int rc = gmaterial_refraction(CHILD(self), sp, in, illum, rel_index, out, result);
+    int rc = gmaterial_refraction(gtexchild_of(self), sp, in, illum, rel_index, out, result);
     return rc != G_OK ? rc : apply(self, sp, result);
 }
 
 static int image_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result)
 {
-    int rc = gmaterial_emission(CHILD(self), sp, out, result);
+    int rc = gmaterial_emission(gtexchild_of(self), sp, out, result);
     return rc != G_OK ? rc : apply(self, sp, result);
 }
 
 static int image_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
 {
-    int rc = gmaterial_ambient(CHILD(self), sp, illum, result);
+    int rc = gmaterial_ambient(gtexchild_of(self), sp, illum, result);
     return rc != G_OK ? rc : apply(self, sp, result);
 }
 
 static int image_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
 {
-    int rc = gmaterial_diffuse(CHILD(self), sp, result);
+    int rc = gmaterial_diffuse(gtexchild_of(self), sp, result);
     return rc != G_OK ? rc : apply(self, sp, result);
 }
-
-static int image_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
-{
-    return gmaterial_refraction_index(CHILD(self), sp, result);
-}
-
-static int image_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
-{
-    return gmaterial_reflection_dir(CHILD(self), sp, view, dir);
-}
-
-static int image_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
-                                GVec3 *dir)
-{
-    return gmaterial_refraction_dir(CHILD(self), sp, view, rel_index, dir);
-}
-
-static int image_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
-                            GColor *result)
-{
-    return gmaterial_absorption(CHILD(self), sp, illum, length, result);
-}
-
-static int image_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
-{
-    return gmaterial_normal(CHILD(self), sp, n);
-}
-
-static int image_opaque(const GMaterial *self, GSurfPoint *sp) { return gmaterial_opaque(CHILD(self), sp); }
 
 const GMaterialClass gnode_image_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
@@ -150,15 +118,15 @@ const GMaterialClass gnode_image_class = {
     .destroy = image_destroy,
     .reflection = image_reflection,
     .refraction = image_refraction,
-    .refraction_index = image_refraction_index,
-    .reflection_dir = image_reflection_dir,
-    .refraction_dir = image_refraction_dir,
+    .refraction_index = gtexchild_refraction_index,
+    .reflection_dir = gtexchild_reflection_dir,
+    .refraction_dir = gtexchild_refraction_dir,
     .emission = image_emission,
     .ambient = image_ambient,
-    .absorption = image_absorption,
-    .normal = image_normal,
+    .absorption = gtexchild_absorption,
+    .normal = gtexchild_normal,
     .diffuse = image_diffuse,
-    .opaque = image_opaque,
+    .opaque = gtexchild_opaque,
 };
 
 int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptions *opt, GMaterial **out,
@@ -180,15 +148,12 @@ int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptio
         return gerror_set(err, G_ERR_INVALID, "image '%s': unknown wrap mode or colour space", path);
     if (!(o.blur >= 0.0) || !isfinite(o.blur))
         return gerror_set(err, G_ERR_INVALID, "image '%s': blur must be >= 0, got %g", path, o.blur);
-    Image *im = gmem_calloc(1, sizeof *im);
-    if (!im)
-        return gerror_set(err, G_ERR_NOMEM, "image: out of memory");
-    rc = gmaterial_init(&im->base, &gnode_image_class, model, err);
-    if (rc != G_OK) {
-        gmem_free(im);
+    GMaterial *mat;
+    rc = gmat_new(&gnode_image_class, model, sizeof(Image), &mat, err);
+    if (rc != G_OK)
         return rc;
-    }
-    im->child = gmaterial_ref(child);
+    Image *im = (Image *)mat;
+    im->node.child = gmaterial_ref(child);
     im->swrap = o.swrap;
     im->twrap = o.twrap;
     im->blur = o.blur;
@@ -212,9 +177,9 @@ int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptio
                             gcolormodel_name(model));
     }
     if (rc != G_OK) {
-        image_destroy(&im->base);
+        image_destroy(&im->node.base);
         return rc;
     }
-    *out = &im->base;
+    *out = &im->node.base;
     return G_OK;
 }

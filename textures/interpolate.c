@@ -137,18 +137,11 @@ int gtexnode_interpolate_make(const GMaterialClass *cls, GMaterial *a, GMaterial
 {
     *out = NULL;
     GMaterial *children[2] = {a, b};
-    const GColorModel *model;
-    int rc = gtexnode_check(cls->name, children, 2, t, 1, &model, err);
+    GMaterial *node;
+    int rc = gtexnode_new_checked(cls, children, 2, t, 1, sizeof(Interp), &node, err);
     if (rc != G_OK)
         return rc;
-    Interp *n = gmem_calloc(1, sizeof *n);
-    if (!n)
-        return gerror_set(err, G_ERR_NOMEM, "%s: out of memory", cls->name);
-    rc = gmaterial_init(&n->base, cls, model, err);
-    if (rc != G_OK) {
-        gmem_free(n);
-        return rc;
-    }
+    Interp *n = (Interp *)node;
     n->a = gmaterial_ref(a);
     n->b = gmaterial_ref(b);
     n->t = ggenerator_ref(t);

@@ -10,8 +10,6 @@ typedef struct Marble {
     double stripes, turbulence;
 } Marble;
 
-static void marble_destroy(GGenerator *self) { gmem_free(self); }
-
 /* The phase 2 pi (stripes x + turbulence T) and, with grad, its gradient. */
 static double phase(const GGenerator *self, GSurfPoint *sp, GVec3 *grad)
 {
@@ -40,7 +38,7 @@ const GGeneratorClass ggen_marble_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "marble",
     .description = "sine veins across x displaced by turbulence, in [0, 1]",
-    .destroy = marble_destroy,
+    .destroy = gtexgen_free,
     .value = marble_value,
     .gradient = marble_gradient,
 };
@@ -54,14 +52,11 @@ int ggen_marble_create(const GNoiseParams *p, double stripes, double turbulence,
         return rc;
     if (!isfinite(stripes) || !isfinite(turbulence))
         return gerror_set(err, G_ERR_INVALID, "marble: stripes and turbulence must be finite");
-    Marble *m = gmem_calloc(1, sizeof *m);
-    if (!m)
-        return gerror_set(err, G_ERR_NOMEM, "marble: out of memory");
-    rc = ggenerator_init(&m->base, &ggen_marble_class, q.space, err);
-    if (rc != G_OK) {
-        gmem_free(m);
+    GGenerator *gen;
+    rc = gtexgen_new(&ggen_marble_class, q.space, sizeof(Marble), &gen, err);
+    if (rc != G_OK)
         return rc;
-    }
+    Marble *m = (Marble *)gen;
     m->p = q;
     m->stripes = stripes;
     m->turbulence = turbulence;

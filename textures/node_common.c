@@ -58,6 +58,108 @@ int gtexnode_check(const char *node, GMaterial *const *children, int n, const GG
     return G_OK;
 }
 
+int gtexnode_new_checked(const GMaterialClass *cls, GMaterial *const *children, int n, const GGenerator *gen,
+                         int gen_needed, size_t size, GMaterial **out, GError *err)
+{
+    *out = NULL;
+    const GColorModel *model;
+    int rc = gtexnode_check(cls->name, children, n, gen, gen_needed, &model, err);
+    return rc != G_OK ? rc : gmat_new(cls, model, size, out, err);
+}
+
+int gtexlist_new(const GMaterialClass *cls, GMaterial *const *children, int n, GGenerator *gen, size_t size,
+                 GMaterial **out, GError *err)
+{
+    *out = NULL;
+    GMaterial *node;
+    int rc = gtexnode_new_checked(cls, children, n, gen, 1, size, &node, err);
+    if (rc != G_OK)
+        return rc;
+    GTexList *l = (GTexList *)node;
+    l->children = gmem_calloc((size_t)n, sizeof *l->children);
+    if (!l->children) {
+        gmem_free(l);
+        return gerror_set(err, G_ERR_NOMEM, "%s: out of memory", cls->name);
+    }
+    for (int i = 0; i < n; i++)
+        l->children[i] = gmaterial_ref(children[i]);
+    l->n = n;
+    l->gen = ggenerator_ref(gen);
+    *out = node;
+    return G_OK;
+}
+
+void gtexlist_destroy(GMaterial *self)
+{
+    GTexList *l = (GTexList *)self;
+    for (int i = 0; i < l->n; i++)
+        gmaterial_unref(l->children[i]);
+    gmem_free(l->children);
+    ggenerator_unref(l->gen);
+    gmem_free(l);
+}
+
+/* ---- nodes with one child ---- */
+
+int gtexchild_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
+                         GColor *result)
+{
+    return gmaterial_reflection(gtexchild_of(self), sp, in, illum, out, result);
+}
+
+int gtexchild_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
+                         const GColor *rel_index, GVec3 out, GColor *result)
+{
+    return gmaterial_refraction(gtexchild_of(self), sp, in, illum, rel_index, out, result);
+}
+
+int gtexchild_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
+{
+    return gmaterial_refraction_index(gtexchild_of(self), sp, result);
+}
+
+int gtexchild_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
+{
+    return gmaterial_reflection_dir(gtexchild_of(self), sp, view, dir);
+}
+
+int gtexchild_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
+                             GVec3 *dir)
+{
+    return gmaterial_refraction_dir(gtexchild_of(self), sp, view, rel_index, dir);
+}
+
+int gtexchild_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result)
+{
+    return gmaterial_emission(gtexchild_of(self), sp, out, result);
+}
+
+int gtexchild_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
+{
+    return gmaterial_ambient(gtexchild_of(self), sp, illum, result);
+}
+
+int gtexchild_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
+                         GColor *result)
+{
+    return gmaterial_absorption(gtexchild_of(self), sp, illum, length, result);
+}
+
+int gtexchild_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
+{
+    return gmaterial_normal(gtexchild_of(self), sp, n);
+}
+
+int gtexchild_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
+{
+    return gmaterial_diffuse(gtexchild_of(self), sp, result);
+}
+
+int gtexchild_opaque(const GMaterial *self, GSurfPoint *sp)
+{
+    return gmaterial_opaque(gtexchild_of(self), sp);
+}
+
 void gtexblend_pair(GTexBlend *b, const GMaterial *a, const GMaterial *c, double t)
 {
     if (!(t > 0.0)) { /* also NaN */

@@ -5,6 +5,7 @@
 
 #include "generic/material.h"
 #include "generic/textures.h"
+#include "materials/params.h" /* gmat_new: nodes are built like the built-in materials */
 
 /** Most children a blend evaluates at once (a cubic spline segment). */
 #define GTEX_BLEND_MAX 4
@@ -60,5 +61,49 @@ int gtexnode_scales_method(GNodeMethod m);
  * *model gets the common model. Messages name the node. */
 int gtexnode_check(const char *node, GMaterial *const *children, int n, const GGenerator *gen, int gen_needed,
                    const GColorModel **model, GError *err);
+
+/** gtexnode_check (messages naming the class), then gmat_new in the children's model: a zeroed node of
+ * `size` bytes into *out, freed with gmem_free until it is complete. */
+int gtexnode_new_checked(const GMaterialClass *cls, GMaterial *const *children, int n, const GGenerator *gen,
+                         int gen_needed, size_t size, GMaterial **out, GError *err);
+
+/** The start of a node with one child (bump, scale, image): the node's struct begins with it. */
+typedef struct GTexChild {
+    GMaterial base;
+    GMaterial *child;
+} GTexChild;
+/** The child of such a node. */
+static inline GMaterial *gtexchild_of(const GMaterial *self) { return ((const GTexChild *)self)->child; }
+/** Methods of such nodes that pass the call on to the child unchanged, for their class tables. */
+int gtexchild_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
+                         GColor *result);
+int gtexchild_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
+                         const GColor *rel_index, GVec3 out, GColor *result);
+int gtexchild_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result);
+int gtexchild_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir);
+int gtexchild_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
+                             GVec3 *dir);
+int gtexchild_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result);
+int gtexchild_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result);
+int gtexchild_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
+                         GColor *result);
+int gtexchild_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n);
+int gtexchild_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result);
+int gtexchild_opaque(const GMaterial *self, GSurfPoint *sp);
+
+/** The state of a node that picks among n children by a generator's value (select, spline); the node's
+ * struct begins with it. */
+typedef struct GTexList {
+    GMaterial base;
+    GGenerator *gen;
+    int n;
+    GMaterial **children;
+} GTexList;
+/** Creates a node of class cls whose struct (`size` bytes) begins with a GTexList holding a reference to
+ * each of the n children and to gen (all checked with gtexnode_check). */
+int gtexlist_new(const GMaterialClass *cls, GMaterial *const *children, int n, GGenerator *gen, size_t size,
+                 GMaterial **out, GError *err);
+/** The destroy method of the nodes whose struct begins with a GTexList. */
+void gtexlist_destroy(GMaterial *self);
 
 #endif

@@ -7,8 +7,6 @@ typedef struct Perlin {
     GNoiseParams p;
 } Perlin;
 
-static void perlin_destroy(GGenerator *self) { gmem_free(self); }
-
 static double perlin_value(const GGenerator *self, GSurfPoint *sp)
 {
     const Perlin *n = (const Perlin *)self;
@@ -31,7 +29,7 @@ const GGeneratorClass ggen_perlin_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "perlin",
     .description = "improved Perlin noise (2002) in [0, 1]",
-    .destroy = perlin_destroy,
+    .destroy = gtexgen_free,
     .value = perlin_value,
     .gradient = perlin_gradient,
 };
@@ -43,14 +41,11 @@ int ggen_perlin_create(const GNoiseParams *p, GGenerator **out, GError *err)
     int rc = gtexnoise_params("perlin", p, &q, err);
     if (rc != G_OK)
         return rc;
-    Perlin *n = gmem_calloc(1, sizeof *n);
-    if (!n)
-        return gerror_set(err, G_ERR_NOMEM, "perlin: out of memory");
-    rc = ggenerator_init(&n->base, &ggen_perlin_class, q.space, err);
-    if (rc != G_OK) {
-        gmem_free(n);
+    GGenerator *gen;
+    rc = gtexgen_new(&ggen_perlin_class, q.space, sizeof(Perlin), &gen, err);
+    if (rc != G_OK)
         return rc;
-    }
+    Perlin *n = (Perlin *)gen;
     n->p = q;
     *out = &n->base;
     return G_OK;

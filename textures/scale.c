@@ -3,15 +3,14 @@
 #include "textures_builtin.h"
 
 typedef struct Scale {
-    GMaterial base;
-    GMaterial *child;
+    GTexChild node; /* base and child; first */
     GGenerator *factor;
 } Scale;
 
 static void scale_destroy(GMaterial *self)
 {
     Scale *s = (Scale *)self;
-    gmaterial_unref(s->child);
+    gmaterial_unref(s->node.child);
     ggenerator_unref(s->factor);
     gmem_free(s);
 }
@@ -35,7 +34,7 @@ static int scale_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, con
         gcolor_black(result);
         return G_OK;
     }
-    return finish(gmaterial_reflection(((const Scale *)self)->child, sp, in, illum, out, result), f, result);
+    return finish(gmaterial_reflection(gtexchild_of(self), sp, in, illum, out, result), f, result);
 }
 
 static int scale_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
@@ -46,7 +45,7 @@ static int scale_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, con
         gcolor_black(result);
         return G_OK;
     }
-    return finish(gmaterial_refraction(((const Scale *)self)->child, sp, in, illum, rel_index, out, result), f,
+    return finish(gmaterial_refraction(gtexchild_of(self), sp, in, illum, rel_index, out, result), f,
                   result);
 }
 
@@ -57,7 +56,7 @@ static int scale_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GCol
         gcolor_black(result);
         return G_OK;
     }
-    return finish(gmaterial_emission(((const Scale *)self)->child, sp, out, result), f, result);
+    return finish(gmaterial_emission(gtexchild_of(self), sp, out, result), f, result);
 }
 
 static int scale_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
@@ -67,7 +66,7 @@ static int scale_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *il
         gcolor_black(result);
         return G_OK;
     }
-    return finish(gmaterial_ambient(((const Scale *)self)->child, sp, illum, result), f, result);
+    return finish(gmaterial_ambient(gtexchild_of(self), sp, illum, result), f, result);
 }
 
 static int scale_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
@@ -77,39 +76,7 @@ static int scale_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
         gcolor_black(result);
         return G_OK;
     }
-    return finish(gmaterial_diffuse(((const Scale *)self)->child, sp, result), f, result);
-}
-
-static int scale_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
-{
-    return gmaterial_refraction_index(((const Scale *)self)->child, sp, result);
-}
-
-static int scale_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
-{
-    return gmaterial_reflection_dir(((const Scale *)self)->child, sp, view, dir);
-}
-
-static int scale_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
-                                GVec3 *dir)
-{
-    return gmaterial_refraction_dir(((const Scale *)self)->child, sp, view, rel_index, dir);
-}
-
-static int scale_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
-                            GColor *result)
-{
-    return gmaterial_absorption(((const Scale *)self)->child, sp, illum, length, result);
-}
-
-static int scale_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
-{
-    return gmaterial_normal(((const Scale *)self)->child, sp, n);
-}
-
-static int scale_opaque(const GMaterial *self, GSurfPoint *sp)
-{
-    return gmaterial_opaque(((const Scale *)self)->child, sp);
+    return finish(gmaterial_diffuse(gtexchild_of(self), sp, result), f, result);
 }
 
 const GMaterialClass gnode_scale_class = {
@@ -119,34 +86,27 @@ const GMaterialClass gnode_scale_class = {
     .destroy = scale_destroy,
     .reflection = scale_reflection,
     .refraction = scale_refraction,
-    .refraction_index = scale_refraction_index,
-    .reflection_dir = scale_reflection_dir,
-    .refraction_dir = scale_refraction_dir,
+    .refraction_index = gtexchild_refraction_index,
+    .reflection_dir = gtexchild_reflection_dir,
+    .refraction_dir = gtexchild_refraction_dir,
     .emission = scale_emission,
     .ambient = scale_ambient,
-    .absorption = scale_absorption,
-    .normal = scale_normal,
+    .absorption = gtexchild_absorption,
+    .normal = gtexchild_normal,
     .diffuse = scale_diffuse,
-    .opaque = scale_opaque,
+    .opaque = gtexchild_opaque,
 };
 
 int gnode_scale_create(GMaterial *child, GGenerator *factor, GMaterial **out, GError *err)
 {
     *out = NULL;
-    const GColorModel *model;
-    int rc = gtexnode_check("scale", &child, 1, factor, 1, &model, err);
+    GMaterial *mat;
+    int rc = gtexnode_new_checked(&gnode_scale_class, &child, 1, factor, 1, sizeof(Scale), &mat, err);
     if (rc != G_OK)
         return rc;
-    Scale *s = gmem_calloc(1, sizeof *s);
-    if (!s)
-        return gerror_set(err, G_ERR_NOMEM, "scale: out of memory");
-    rc = gmaterial_init(&s->base, &gnode_scale_class, model, err);
-    if (rc != G_OK) {
-        gmem_free(s);
-        return rc;
-    }
-    s->child = gmaterial_ref(child);
+    Scale *s = (Scale *)mat;
+    s->node.child = gmaterial_ref(child);
     s->factor = ggenerator_ref(factor);
-    *out = &s->base;
+    *out = &s->node.base;
     return G_OK;
 }

@@ -4,29 +4,14 @@
 
 #include <math.h>
 
-typedef struct Select {
-    GMaterial base;
-    GGenerator *index;
-    int n;
-    GMaterial **children;
-} Select;
-
-static void select_destroy(GMaterial *self)
-{
-    Select *s = (Select *)self;
-    for (int i = 0; i < s->n; i++)
-        gmaterial_unref(s->children[i]);
-    gmem_free(s->children);
-    ggenerator_unref(s->index);
-    gmem_free(s);
-}
+/* The state is a GTexList: gen is the index. */
 
 static const GMaterial *chosen(const GMaterial *self, GSurfPoint *sp)
 {
-    const Select *s = (const Select *)self;
+    const GTexList *s = (const GTexList *)self;
     if (!sp)
         return s->children[0];
-    double v = floor(ggenerator_cached_value(s->index, sp));
+    double v = floor(ggenerator_cached_value(s->gen, sp));
     int i = !(v > 0.0) ? 0 : v >= s->n - 1 ? s->n - 1 : (int)v; /* NaN picks the first */
     return s->children[i];
 }
@@ -91,7 +76,7 @@ const GMaterialClass gnode_select_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "select",
     .description = "one of n children picked by an integer generator (e.g. the surface index)",
-    .destroy = select_destroy,
+    .destroy = gtexlist_destroy,
     .reflection = select_reflection,
     .refraction = select_refraction,
     .refraction_index = select_refraction_index,
@@ -107,29 +92,5 @@ const GMaterialClass gnode_select_class = {
 
 int gnode_select_create(GMaterial *const *children, int n, GGenerator *index, GMaterial **out, GError *err)
 {
-    *out = NULL;
-    const GColorModel *model;
-    int rc = gtexnode_check("select", children, n, index, 1, &model, err);
-    if (rc != G_OK)
-        return rc;
-    Select *s = gmem_calloc(1, sizeof *s);
-    GMaterial **list = gmem_calloc((size_t)n, sizeof *list);
-    if (!s || !list) {
-        gmem_free(s);
-        gmem_free(list);
-        return gerror_set(err, G_ERR_NOMEM, "select: out of memory");
-    }
-    rc = gmaterial_init(&s->base, &gnode_select_class, model, err);
-    if (rc != G_OK) {
-        gmem_free(s);
-        gmem_free(list);
-        return rc;
-    }
-    for (int i = 0; i < n; i++)
-        list[i] = gmaterial_ref(children[i]);
-    s->children = list;
-    s->n = n;
-    s->index = ggenerator_ref(index);
-    *out = &s->base;
-    return G_OK;
+    return gtexlist_new(&gnode_select_class, children, n, index, sizeof(GTexList), out, err);
 }

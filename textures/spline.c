@@ -6,29 +6,16 @@
 #include <math.h>
 
 typedef struct Spline {
-    GMaterial base;
-    GGenerator *t;
-    int basis; /* a GSplineBasis */
-    int n;
-    GMaterial **children;
+    GTexList list; /* gen is t; first: the class's destroy is gtexlist_destroy */
+    int basis;     /* a GSplineBasis */
 } Spline;
-
-static void spline_destroy(GMaterial *self)
-{
-    Spline *s = (Spline *)self;
-    for (int i = 0; i < s->n; i++)
-        gmaterial_unref(s->children[i]);
-    gmem_free(s->children);
-    ggenerator_unref(s->t);
-    gmem_free(s);
-}
 
 /* Adds weight w of child i (clamped to the ends) to the blend, merging repeats and skipping zeros. */
 static void add(GTexBlend *b, const Spline *s, int i, double w)
 {
     if (w == 0.0)
         return;
-    const GMaterial *m = s->children[i < 0 ? 0 : i >= s->n ? s->n - 1 : i];
+    const GMaterial *m = s->list.children[i < 0 ? 0 : i >= s->list.n ? s->list.n - 1 : i];
     for (int j = 0; j < b->n; j++)
         if (b->m[j] == m) {
             b->w[j] += w;
@@ -46,12 +33,12 @@ static void pick(const GMaterial *self, GSurfPoint *sp, GTexBlend *b)
         add(b, s, 0, 1.0);
         return;
     }
-    double t = ggenerator_cached_value(s->t, sp);
+    double t = ggenerator_cached_value(s->list.gen, sp);
     t = !(t > 0.0) ? 0.0 : t > 1.0 ? 1.0 : t;
-    double x = t * (s->n - 1);
+    double x = t * (s->list.n - 1);
     int k = (int)floor(x);
-    if (k > s->n - 2)
-        k = s->n - 2;
+    if (k > s->list.n - 2)
+        k = s->list.n - 2;
     double f = x - k, f2 = f * f, f3 = f2 * f;
     switch (s->basis) {
     case GSPLINE_LINEAR:
@@ -168,7 +155,7 @@ const GMaterialClass gnode_spline_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "spline",
     .description = "n children blended by a cubic spline over a generator value",
-    .destroy = spline_destroy,
+    .destroy = gtexlist_destroy,
     .reflection = spline_reflection,
     .refraction = spline_refraction,
     .refraction_index = spline_refraction_index,
@@ -190,29 +177,8 @@ int gnode_spline_create(GMaterial *const *children, int n, GGenerator *t, GSplin
         return gerror_set(err, G_ERR_INVALID, "spline: needs at least 2 children, got 1");
     if ((unsigned)basis > GSPLINE_LINEAR)
         return gerror_set(err, G_ERR_INVALID, "spline: unknown basis %d", (int)basis);
-    const GColorModel *model;
-    int rc = gtexnode_check("spline", children, n, t, 1, &model, err);
-    if (rc != G_OK)
-        return rc;
-    Spline *s = gmem_calloc(1, sizeof *s);
-    GMaterial **list = gmem_calloc((size_t)n, sizeof *list);
-    if (!s || !list) {
-        gmem_free(s);
-        gmem_free(list);
-        return gerror_set(err, G_ERR_NOMEM, "spline: out of memory");
-    }
-    rc = gmaterial_init(&s->base, &gnode_spline_class, model, err);
-    if (rc != G_OK) {
-        gmem_free(s);
-        gmem_free(list);
-        return rc;
-    }
-    for (int i = 0; i < n; i++)
-        list[i] = gmaterial_ref(children[i]);
-    s->children = list;
-    s->n = n;
-    s->basis = (int)basis;
-    s->t = ggenerator_ref(t);
-    *out = &s->base;
-    return G_OK;
+    int rc = gtexlist_new(&gnode_spline_class, children, n, t, sizeof(Spline), out, err);
+    if (rc == G_OK)
+        ((Spline *)*out)->basis = (int)basis;
+    return rc;
 }

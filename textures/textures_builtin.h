@@ -31,6 +31,14 @@ extern const GGeneratorClass ggen_gradient_class;   /**< textures/gradient.c */
 extern const GGeneratorClass ggen_csg_class;        /**< textures/csg.c */
 extern const GGeneratorClass ggen_cpg_class;        /**< textures/cpg.c */
 
+/* ---- shared by the generators (textures/generator.c) ---- */
+/** Allocates a zeroed generator of `size` bytes (a struct that begins with its GGenerator) of class cls
+ * computing in space, into *out: G_ERR_NOMEM "<class>: out of memory", or ggenerator_init's error. Until it
+ * is complete, free it with gmem_free. */
+int gtexgen_new(const GGeneratorClass *cls, GGeneratorSpace space, size_t size, GGenerator **out, GError *err);
+/** The destroy method of the generators that own nothing but their own struct. */
+void gtexgen_free(GGenerator *self);
+
 /* ---- parse routines (GParseFn, registry.h): textures/parse_nodes.c, parse_generators.c, parse_shapes.c ---- */
 int gtexparse_interpolate(GReader *r, const void *vtable, void **object, GError *err);
 int gtexparse_interpolate_one(GReader *r, const void *vtable, void **object, GError *err);

@@ -163,13 +163,11 @@ int gnode_transform_create(GMaterial *child, const GAffine2 *uv, const GAffine3 
                            GError *err)
 {
     *out = NULL;
-    const GColorModel *model;
-    int rc = gtexnode_check("transform", &child, 1, NULL, 0, &model, err);
+    GMaterial *node;
+    int rc = gtexnode_new_checked(&gnode_transform_class, &child, 1, NULL, 0, sizeof(Transform), &node, err);
     if (rc != G_OK)
         return rc;
-    Transform *t = gmem_calloc(1, sizeof *t);
-    if (!t)
-        return gerror_set(err, G_ERR_NOMEM, "transform: out of memory");
+    Transform *t = (Transform *)node;
     if (uv) {
         t->has_uv = 1;
         t->uv = *uv;
@@ -187,8 +185,6 @@ int gnode_transform_create(GMaterial *child, const GAffine2 *uv, const GAffine3 
                      m[2] * (m[4] * m[9] - m[5] * m[8]);
         t->xyz_len = cbrt(fabs(det));
     }
-    if (rc == G_OK)
-        rc = gmaterial_init(&t->base, &gnode_transform_class, model, err);
     if (rc != G_OK) {
         gmem_free(t);
         return rc;

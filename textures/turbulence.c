@@ -7,8 +7,6 @@ typedef struct Fractal {
     GNoiseParams p;
 } Fractal;
 
-static void fractal_destroy(GGenerator *self) { gmem_free(self); }
-
 static double fbm_value(const GGenerator *self, GSurfPoint *sp)
 {
     double v = 0.5 + 0.5 * gtexnoise_fbm(&((const Fractal *)self)->p, gtexnoise_coords(self, sp), NULL);
@@ -40,7 +38,7 @@ const GGeneratorClass ggen_fbm_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "fbm",
     .description = "fractional Brownian motion: octaves of noise, in [0, 1]",
-    .destroy = fractal_destroy,
+    .destroy = gtexgen_free,
     .value = fbm_value,
     .gradient = fbm_gradient,
 };
@@ -49,7 +47,7 @@ const GGeneratorClass ggen_turbulence_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "turbulence",
     .description = "Perlin's turbulence: octaves of |noise|, in [0, 1]",
-    .destroy = fractal_destroy,
+    .destroy = gtexgen_free,
     .value = turbulence_value,
     .gradient = turbulence_gradient,
 };
@@ -61,14 +59,11 @@ static int make(const GGeneratorClass *cls, const GNoiseParams *p, GGenerator **
     int rc = gtexnoise_params(cls->name, p, &q, err);
     if (rc != G_OK)
         return rc;
-    Fractal *f = gmem_calloc(1, sizeof *f);
-    if (!f)
-        return gerror_set(err, G_ERR_NOMEM, "%s: out of memory", cls->name);
-    rc = ggenerator_init(&f->base, cls, q.space, err);
-    if (rc != G_OK) {
-        gmem_free(f);
+    GGenerator *gen;
+    rc = gtexgen_new(cls, q.space, sizeof(Fractal), &gen, err);
+    if (rc != G_OK)
         return rc;
-    }
+    Fractal *f = (Fractal *)gen;
     f->p = q;
     *out = &f->base;
     return G_OK;

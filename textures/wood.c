@@ -10,8 +10,6 @@ typedef struct Wood {
     double rings, turbulence, latewood;
 } Wood;
 
-static void wood_destroy(GGenerator *self) { gmem_free(self); }
-
 static double smoothstep(double t) { return t * t * (3.0 - 2.0 * t); }
 static double dsmoothstep(double t) { return 6.0 * t * (1.0 - t); }
 
@@ -54,7 +52,7 @@ const GGeneratorClass ggen_wood_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "wood",
     .description = "growth rings around the z axis displaced by noise, in [0, 1]",
-    .destroy = wood_destroy,
+    .destroy = gtexgen_free,
     .value = wood_value,
     .gradient = wood_gradient,
 };
@@ -75,14 +73,11 @@ int ggen_wood_create(const GNoiseParams *p, double rings, double turbulence, dou
         latewood = 0.2;
     if (!(latewood > 0.0 && latewood < 1.0))
         return gerror_set(err, G_ERR_INVALID, "wood: latewood must be within (0, 1), got %g", latewood);
-    Wood *w = gmem_calloc(1, sizeof *w);
-    if (!w)
-        return gerror_set(err, G_ERR_NOMEM, "wood: out of memory");
-    rc = ggenerator_init(&w->base, &ggen_wood_class, q.space, err);
-    if (rc != G_OK) {
-        gmem_free(w);
+    GGenerator *gen;
+    rc = gtexgen_new(&ggen_wood_class, q.space, sizeof(Wood), &gen, err);
+    if (rc != G_OK)
         return rc;
-    }
+    Wood *w = (Wood *)gen;
     w->p = q;
     w->rings = rings;
     w->turbulence = turbulence;

@@ -34,5 +34,14 @@ int gmat_plot(GmatContext *ctx, double theta_in, int size, const char *path, GEr
 
 /** `gmat laser FILE MATERIAL ...` (laser.c): the laser experiment of Wilkie et al.; returns the exit status. */
 int gmat_laser(int argc, char **argv);
+/** `gmat swatch FILE MATERIAL ...` (swatch.c): renders a material or texture tree; returns the exit status. */
+int gmat_swatch(int argc, char **argv);
+
+/** Reports a usage error of subcommand cmd (NULL: of gmat itself) on stderr: "gmat CMD: ", fmt with arg, and
+ * where to find help (main.c). Returns 2, the exit status of usage errors. */
+int gmat_usage_error(const char *cmd, const char *fmt, const char *arg);
+/** Reads the whole string s as a finite number in [lo, hi] into *out: 0, or -1 (out untouched) when it is
+ * not one. */
+int gmat_number(const char *s, double lo, double hi, double *out);
 
 #endif

@@ -41,31 +41,13 @@ static void laser_usage(FILE *f)
             "  --colormodel NAME   compute in this model instead of the file's; --step NM its spacing\n");
 }
 
-static int bad(const char *fmt, const char *arg)
-{
-    fprintf(stderr, "gmat laser: ");
-    fprintf(stderr, fmt, arg);
-    fprintf(stderr, "\n(see gmat laser --help)\n");
-    return 2;
-}
-
-static int num(const char *s, double lo, double hi, double *out)
-{
-    char *end;
-    double v = strtod(s, &end);
-    if (end == s || *end || !isfinite(v) || v < lo || v > hi)
-        return -1;
-    *out = v;
-    return 0;
-}
-
 static int elevations(const char *s, double *e, int *n)
 {
     char buf[256];
     snprintf(buf, sizeof buf, "%s", s);
     *n = 0;
     for (char *tok = strtok(buf, ","); tok; tok = strtok(NULL, ",")) {
-        if (*n == MAX_ELEVATIONS || num(tok, 0.01, 90.0, &e[*n]))
+        if (*n == MAX_ELEVATIONS || gmat_number(tok, 0.01, 90.0, &e[*n]))
             return -1;
         (*n)++;
     }
@@ -122,28 +104,29 @@ int gmat_laser(int argc, char **argv)
             return 0;
         }
         if (o[0] == '-' && o[1] && !v)
-            return bad("option %s needs a value", o);
+            return gmat_usage_error("laser", "option %s needs a value", o);
         if (strcmp(o, "--wavelength") == 0) {
-            if (num(v, 200, 2000, &nm))
-                return bad("--wavelength: '%s' is not a wavelength in nm", v);
+            if (gmat_number(v, 200, 2000, &nm))
+                return gmat_usage_error("laser", "--wavelength: '%s' is not a wavelength in nm", v);
         } else if (strcmp(o, "--elevation") == 0) {
             if (elevations(v, el, &nel))
-                return bad("--elevation: '%s' is not a list of up to 16 angles in (0, 90] degrees", v);
+                return gmat_usage_error("laser", "--elevation: '%s' is not a list of up to 16 angles in (0, 90] degrees",
+                                        v);
         } else if (strcmp(o, "--pattern") == 0) {
             pattern = v;
         } else if (strcmp(o, "--size") == 0) {
-            if (num(v, 64, 4096, &size) || size != floor(size))
-                return bad("--size: '%s' is not a whole number in 64..4096", v);
+            if (gmat_number(v, 64, 4096, &size) || size != floor(size))
+                return gmat_usage_error("laser", "--size: '%s' is not a whole number in 64..4096", v);
         } else if (strcmp(o, "--extent") == 0) {
-            if (num(v, 0.01, 100, &extent))
-                return bad("--extent: '%s' is not a number in 0.01..100", v);
+            if (gmat_number(v, 0.01, 100, &extent))
+                return gmat_usage_error("laser", "--extent: '%s' is not a number in 0.01..100", v);
         } else if (strcmp(o, "--colormodel") == 0) {
             colormodel = v;
         } else if (strcmp(o, "--step") == 0) {
-            if (num(v, 0.1, 400, &step))
-                return bad("--step: '%s' is not a spacing in nm", v);
+            if (gmat_number(v, 0.1, 400, &step))
+                return gmat_usage_error("laser", "--step: '%s' is not a spacing in nm", v);
         } else if (o[0] == '-' && o[1]) {
-            return bad("unknown option %s", o);
+            return gmat_usage_error("laser", "unknown option %s", o);
         } else if (!file) {
             file = o;
             continue;
@@ -151,12 +134,12 @@ int gmat_laser(int argc, char **argv)
             name = o;
             continue;
         } else {
-            return bad("unexpected argument '%s'", o);
+            return gmat_usage_error("laser", "unexpected argument '%s'", o);
         }
         i++;
     }
     if (!file || !name)
-        return bad("%s", "FILE and MATERIAL are required");
+        return gmat_usage_error("laser", "%s", "FILE and MATERIAL are required");
     GColorModelOptions mo = {.step_nm = step};
     GReaderOptions opt = {.colormodel = colormodel, .colormodel_options = &mo};
     GLibrary *lib;

@@ -72,15 +72,15 @@ static void usage(const char *cmd, FILE *f)
         usage_main(f);
 }
 
-static int fail(const char *cmd, const char *fmt, const char *arg)
+int gmat_usage_error(const char *cmd, const char *fmt, const char *arg)
 {
     fprintf(stderr, "gmat%s%s: ", cmd ? " " : "", cmd ? cmd : "");
     fprintf(stderr, fmt, arg);
-    fprintf(stderr, "\n(see gmat %s--help)\n", cmd ? cmd : "");
+    fprintf(stderr, "\n(see gmat %s%s--help)\n", cmd ? cmd : "", cmd ? " " : "");
     return 2;
 }
 
-static int number(const char *s, double lo, double hi, double *out)
+int gmat_number(const char *s, double lo, double hi, double *out)
 {
     char *end;
     double v = strtod(s, &end);
@@ -99,10 +99,10 @@ static int angles(const char *s, double tmax, double *theta, double *phi)
     *phi = 0.0;
     if (comma) {
         *comma = '\0';
-        if (number(comma + 1, -360.0, 360.0, phi))
+        if (gmat_number(comma + 1, -360.0, 360.0, phi))
             return -1;
     }
-    return number(buf, 0.0, tmax, theta);
+    return gmat_number(buf, 0.0, tmax, theta);
 }
 
 typedef struct Args {
@@ -124,20 +124,20 @@ static int parse_args(int argc, char **argv, Args *a)
         } else if (strcmp(o, "--spectrum") == 0) {
             a->spectrum = 1;
         } else if (o[0] == '-' && o[1] && !v) {
-            return fail(cmd, "option %s needs a value", o);
+            return gmat_usage_error(cmd, "option %s needs a value", o);
         } else if (strcmp(o, "--in") == 0) {
             if (angles(v, 89.9, &a->in_t, &a->in_p))
-                return fail(cmd, "--in: '%s' is not THETA[,PHI] with 0 <= THETA < 90 degrees", v);
+                return gmat_usage_error(cmd, "--in: '%s' is not THETA[,PHI] with 0 <= THETA < 90 degrees", v);
             a->have_in = 1, i++;
         } else if (strcmp(o, "--out") == 0) {
             if (angles(v, 90.0, &a->out_t, &a->out_p))
-                return fail(cmd, "--out: '%s' is not THETA[,PHI] with 0 <= THETA <= 90 degrees", v);
+                return gmat_usage_error(cmd, "--out: '%s' is not THETA[,PHI] with 0 <= THETA <= 90 degrees", v);
             a->have_out = 1, i++;
         } else if (strcmp(o, "--colormodel") == 0) {
             a->colormodel = v, i++;
         } else if (strcmp(o, "--step") == 0) {
-            if (number(v, 0.1, 400.0, &a->step))
-                return fail(cmd, "--step: '%s' is not a spacing in nm (0.1..400)", v);
+            if (gmat_number(v, 0.1, 400.0, &a->step))
+                return gmat_usage_error(cmd, "--step: '%s' is not a spacing in nm (0.1..400)", v);
             i++;
         } else if (strcmp(o, "--plugin") == 0) {
             GError err;
@@ -148,38 +148,38 @@ static int parse_args(int argc, char **argv, Args *a)
             i++;
         } else if (strcmp(o, "--samples") == 0) {
             double n;
-            if (number(v, 8, 4096, &n) || n != floor(n))
-                return fail(cmd, "--samples: '%s' is not a whole number in 8..4096", v);
+            if (gmat_number(v, 8, 4096, &n) || n != floor(n))
+                return gmat_usage_error(cmd, "--samples: '%s' is not a whole number in 8..4096", v);
             a->samples = (int)n, i++;
         } else if (strcmp(o, "--size") == 0) {
             double n;
-            if (number(v, 64, 8192, &n) || n != floor(n))
-                return fail(cmd, "--size: '%s' is not a whole number in 64..8192", v);
+            if (gmat_number(v, 64, 8192, &n) || n != floor(n))
+                return gmat_usage_error(cmd, "--size: '%s' is not a whole number in 64..8192", v);
             a->size = (int)n, i++;
         } else if (strcmp(o, "-o") == 0 || strcmp(o, "--output") == 0) {
             a->output = v, i++;
         } else if (o[0] == '-' && o[1]) {
-            return fail(cmd, "unknown option %s", o);
+            return gmat_usage_error(cmd, "unknown option %s", o);
         } else if (pos == 0) {
             a->file = o, pos++;
         } else if (pos == 1 && strcmp(cmd, "list") != 0) {
             a->material = o, pos++;
         } else {
-            return fail(cmd, "unexpected argument '%s'", o);
+            return gmat_usage_error(cmd, "unexpected argument '%s'", o);
         }
     }
     if (!a->file)
-        return fail(cmd, "%s", "no FILE given");
+        return gmat_usage_error(cmd, "%s", "no FILE given");
     if (strcmp(cmd, "list") == 0)
         return 0;
     if (!a->material)
-        return fail(cmd, "%s", "no MATERIAL given");
+        return gmat_usage_error(cmd, "%s", "no MATERIAL given");
     if (!a->have_in)
-        return fail(cmd, "%s", "--in THETA is required");
+        return gmat_usage_error(cmd, "%s", "--in THETA is required");
     if (strcmp(cmd, "eval") == 0 && !a->have_out)
-        return fail(cmd, "%s", "--out THETA[,PHI] is required");
+        return gmat_usage_error(cmd, "%s", "--out THETA[,PHI] is required");
     if (strcmp(cmd, "plot") == 0 && !a->output)
-        return fail(cmd, "%s", "-o PLOT.png is required");
+        return gmat_usage_error(cmd, "%s", "-o PLOT.png is required");
     return 0;
 }
 
@@ -246,10 +246,11 @@ int main(int argc, char **argv)
     }
     if (strcmp(argv[1], "laser") == 0) /* laser.c parses its own options */
         return gmat_laser(argc, argv);
-    if (strcmp(argv[1], "swatch") == 0) { extern int gmat_swatch(int argc, char **argv); return gmat_swatch(argc, argv); }
+    if (strcmp(argv[1], "swatch") == 0)
+        return gmat_swatch(argc, argv);
     Args a = {.cmd = argv[1]};
     if (strcmp(a.cmd, "eval") && strcmp(a.cmd, "albedo") && strcmp(a.cmd, "plot") && strcmp(a.cmd, "list"))
-        return fail(NULL, "unknown command '%s' (expected eval, albedo, plot or list)", a.cmd);
+        return gmat_usage_error(NULL, "unknown command '%s' (expected eval, albedo, plot or list)", a.cmd);
     int rc = parse_args(argc, argv, &a);
     if (rc != 0)
         return rc;

@@ -18,9 +18,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/** `gmat swatch FILE MATERIAL ...`: returns the exit status (hooked into main.c's command dispatch). */
-int gmat_swatch(int argc, char **argv);
-
 typedef struct Swatch {
     GLibrary *lib;
     const GColorModel *model;
@@ -41,14 +38,6 @@ static void swatch_usage(FILE *f)
                "  --size N            width and height in pixels (16..4096, default 256)\n"
                "  --samples N         N x N samples per pixel (1..8, default 2)\n"
                "  --colormodel NAME   compute in this model instead of the file's; --step NM its spacing\n");
-}
-
-static int bad(const char *fmt, const char *arg)
-{
-    fprintf(stderr, "gmat swatch: ");
-    fprintf(stderr, fmt, arg);
-    fprintf(stderr, "\n(see gmat swatch --help)\n");
-    return 2;
 }
 
 /* Light reaching the point's viewer (+z) from the swatch's lights, added into s->sum. */
@@ -156,43 +145,41 @@ int gmat_swatch(int argc, char **argv)
     int sphere = 0;
     for (int i = 2; i < argc; i++) {
         const char *o = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        char *end;
         if (strcmp(o, "--help") == 0 || strcmp(o, "-h") == 0) {
             swatch_usage(stdout);
             return 0;
         } else if (strcmp(o, "--sphere") == 0) {
             sphere = 1;
         } else if (o[0] == '-' && o[1] && !v) {
-            return bad("option %s needs a value", o);
+            return gmat_usage_error("swatch", "option %s needs a value", o);
         } else if (strcmp(o, "-o") == 0 || strcmp(o, "--output") == 0) {
             output = argv[++i];
         } else if (strcmp(o, "--colormodel") == 0) {
             colormodel = argv[++i];
         } else if (strcmp(o, "--size") == 0 || strcmp(o, "--samples") == 0 || strcmp(o, "--step") == 0) {
-            double n = strtod(v, &end);
             int is_size = o[3] == 'i', is_samples = o[3] == 'a';
-            double lo = is_size ? 16 : is_samples ? 1 : 0.1, hi = is_size ? 4096 : is_samples ? 8 : 400;
-            if (end == v || *end || !(n >= lo && n <= hi) || ((is_size || is_samples) && n != floor(n)))
-                return bad(is_size ? "--size: '%s' is not a whole number in 16..4096"
+            double n, lo = is_size ? 16 : is_samples ? 1 : 0.1, hi = is_size ? 4096 : is_samples ? 8 : 400;
+            if (gmat_number(v, lo, hi, &n) || ((is_size || is_samples) && n != floor(n)))
+                return gmat_usage_error("swatch", is_size ? "--size: '%s' is not a whole number in 16..4096"
                            : is_samples ? "--samples: '%s' is not a whole number in 1..8"
                                         : "--step: '%s' is not a spacing in nm (0.1..400)",
                            v);
             *(is_size ? &size : is_samples ? &samples : &step) = n;
             i++;
         } else if (o[0] == '-' && o[1]) {
-            return bad("unknown option %s", o);
+            return gmat_usage_error("swatch", "unknown option %s", o);
         } else if (!file) {
             file = o;
         } else if (!name) {
             name = o;
         } else {
-            return bad("unexpected argument '%s'", o);
+            return gmat_usage_error("swatch", "unexpected argument '%s'", o);
         }
     }
     if (!file || !name)
-        return bad("%s", "needs FILE and MATERIAL");
+        return gmat_usage_error("swatch", "%s", "needs FILE and MATERIAL");
     if (!output)
-        return bad("%s", "-o SWATCH.png is required");
+        return gmat_usage_error("swatch", "%s", "-o SWATCH.png is required");
 
     Swatch s = {0};
     GError err;

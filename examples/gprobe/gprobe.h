@@ -51,6 +51,8 @@ int cmd_eval(int argc, char **argv);
 int cmd_approx(int argc, char **argv);
 int cmd_irradiance(int argc, char **argv);
 int cmd_convert(int argc, char **argv);
+int cmd_compare(int argc, char **argv); /* compare.c */
+int cmd_sky(int argc, char **argv);     /* sky.c */
 
 /** Draws the Fig. 6 plot of a CSV written by eval into png with gnuplot; -1 with a message on failure. */
 int plot_errors(const char *csv, const char *png, const char *title);

@@ -24,6 +24,8 @@ static void usage(FILE *f)
             "  approx      write the lights of one technique as text-format entries (gtrace reads them)\n"
             "  irradiance  print the ground-truth irradiance (RGB) for one normal\n"
             "  convert     write the probe as a lat-long or angular map (after --rotate)\n"
+            "  compare     RMSE of a render against a reference, whole image and inside the cast shadows\n"
+            "  sky         write a synthetic sky-and-sun probe\n"
             "Directions: right-handed, z up. In a lat-long probe row 0 is the zenith, the middle column looks\n"
             "along +x, a quarter of the way along +y and the edges along -x, as Blender maps world textures\n"
             "(see include/generic/probe.h).\n");
@@ -44,7 +46,11 @@ int main(int argc, char **argv)
         return cmd_irradiance(argc - 1, argv + 1);
     if (strcmp(cmd, "convert") == 0)
         return cmd_convert(argc - 1, argv + 1);
-    fprintf(stderr, "gprobe: unknown command '%s' (expected eval, approx, irradiance or convert)\n", cmd);
+    if (strcmp(cmd, "compare") == 0)
+        return cmd_compare(argc - 1, argv + 1);
+    if (strcmp(cmd, "sky") == 0)
+        return cmd_sky(argc - 1, argv + 1);
+    fprintf(stderr, "gprobe: unknown command '%s' (expected eval, approx, irradiance, convert, compare or sky)\n", cmd);
     return 2;
 }
 

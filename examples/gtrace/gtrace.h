@@ -11,12 +11,14 @@
 #include <generic/error.h>
 #include <generic/material.h>
 #include <generic/memory.h>
+#include <generic/probe.h>
 #include <generic/reader.h>
 #include <generic/surfpoint.h>
 #include <generic/vec.h>
 
 #include <embree3/rtcore.h>
 #include <stdint.h>
+#include <stdio.h>
 
 /* ---- affine transforms (transform.c) ---- */
 
@@ -95,7 +97,8 @@ typedef enum LightKind {
     LIGHT_SPHERE,      /**< sphere of uniform radiance, sampled by solid angle */
     LIGHT_RECT,        /**< one-sided rectangle of uniform radiance, stratified samples */
     LIGHT_AMBIENT,     /**< (text only) ambient light: summed into Scene.ambient */
-    LIGHT_BACKGROUND   /**< (text only) radiance of rays that leave the scene: Scene.background */
+    LIGHT_BACKGROUND,  /**< (text only) radiance of rays that leave the scene: Scene.background */
+    LIGHT_PROBE        /**< a whole light probe, Monte Carlo with importance sampling (probe_sample.c) */
 } LightKind;
 
 typedef struct Light {
@@ -106,7 +109,8 @@ typedef struct Light {
     GVec3 edge1, edge2;      /**< rectangle edges; the lit side is edge1 x edge2 */
     double radius;           /**< sphere */
     double cos_inner, cos_outer; /**< spot cone (full intensity inside inner, none outside outer) */
-    int samples;             /**< area lights: shadow samples per shading point */
+    int samples;             /**< area lights, probe: shadow samples per shading point */
+    const struct ProbeEnv *env; /**< LIGHT_PROBE: the probe it samples (owned by the probe entry) */
 } Light;
 
 /* ---- camera (camera.c) ---- */
@@ -146,6 +150,7 @@ typedef struct Scene {
     RTCScene rtc;
     Object **by_geom;      /**< geometry id -> object */
     unsigned nby_geom;
+    const struct ProbeEnv *env; /**< light probe seen by rays that leave the scene (NULL: background) */
 } Scene;
 
 /** An empty scene in the given colour model (not owned; set owned_model to hand one over). */
@@ -335,5 +340,91 @@ double now_seconds(void);
  * 2^exposure scaling, clamped to [0,1]. Writes a temporary file and renames it, so a failed write
  * leaves no partial file. */
 int output_write(const char *path, const Framebuffer *fb, double exposure, GError *err);
+
+/* ---- light probes (probe_light.c, probe_sample.c) ---- */
+
+/** The probe as a piecewise-constant distribution over its pixels, proportional to each pixel's brightness
+ * in the scene's colour model times its solid angle (probe_sample.c). */
+typedef struct ProbeDist {
+    int w, h;
+    double *row_cdf; /**< h + 1 running sums of the rows' weights */
+    double *col_cdf; /**< h rows of w + 1 running sums of the pixels' weights */
+} ProbeDist;
+
+/** The technique value of the reference mode (next to the library's GProbeTechnique values). */
+#define PROBE_REFERENCE GPROBE_TECHNIQUE_COUNT
+
+/** A `light probe` entry: its settings, the probe once loaded, and the lights made from it. */
+typedef struct ProbeEnv {
+    /* settings: the scene file's, then the command line's */
+    char *file;          /**< the probe image (resolved against the scene file's directory) */
+    int technique;       /**< a GProbeTechnique, or PROBE_REFERENCE */
+    int count;           /**< technique: number of lights */
+    int samples;         /**< reference: samples per shading point */
+    int fit_normals;     /**< irradiance: normals the fit uses (0: the library's default) */
+    GVec3 rotate;        /**< degrees about x, then y, then z (gprobe_rotation_xyz) */
+    double scale;        /**< multiplies the probe's radiance */
+    int background;      /**< the probe is what rays leaving the scene see */
+    int shadows;         /**< reference: cast shadow rays */
+    GProbeFormat format; /**< how the image maps to directions */
+    char where[256];     /**< "file:line:col" of the entry, for messages */
+    /* made by probe_attach */
+    GProbe *probe;
+    double R[9];         /**< probe space -> world, row-major */
+    Light **lights;      /**< the lights it gave the scene (owned) */
+    int nlights;
+    ProbeDist dist;      /**< reference: the sampling distribution */
+    double seconds;      /**< loading and approximating */
+    double error_mean;   /**< technique: mean irradiance error of the lights in percent (the paper's measure) */
+} ProbeEnv;
+
+/** Command-line replacements for the settings of the scene's `light probe` entries (NULL, 0 or -1: keep). */
+typedef struct ProbeOverride {
+    const char *file;      /**< probe image, relative to the current directory */
+    const char *technique; /**< mediancut, adaptive, kmeans, irradiance or reference */
+    int count;             /**< number of lights */
+    int samples;           /**< reference: samples per shading point */
+    double scale;          /**< radiance scale */
+    int shadows;           /**< reference: 1 on, 0 off, -1 keep */
+} ProbeOverride;
+
+/** The parse routine and destructor of `light probe` (registered by gtrace_register_types). */
+int probe_light_parse(GReader *r, const void *vtable, void **object, GError *err);
+void probe_light_destroy(void *object);
+/** Applies command-line replacements to every probe entry of a loaded library (before scene_from_library);
+ * G_ERR_INVALID when the library has none or a value does not fit. */
+int probe_override_apply(GLibrary *lib, const ProbeOverride *ov, GError *err);
+/** Loads the probe of an entry, makes its lights (directional lights of a technique, or one LIGHT_PROBE light
+ * for the reference) and adds them to the scene; the probe becomes the scene's background unless the entry
+ * says `background off`. Called by scene_from_library; the entry keeps owning what it made. */
+int probe_attach(Scene *s, ProbeEnv *env, GError *err);
+/** A direction of the probe in world space (turned by the entry's rotation). */
+GVec3 probe_to_world(const ProbeEnv *env, GVec3 d);
+/** Radiance seen along direction d leaving the scene (d in world space). */
+int probe_background(const ProbeEnv *env, GVec3 d, GColor *out);
+/** Prints one line per probe entry of the scene (file, size, technique, lights, time, irradiance error). */
+void probe_describe(const Scene *s, FILE *f);
+/** Reads a scene file like scene_load, applying ov (NULL: nothing) to its light probes before they load. */
+int scene_load_with(const char *path, const char *colormodel, const ProbeOverride *ov, Scene **out, GError *err);
+
+/** Adds the light of one sample (lights.c): color * scale arrives from direction `in` over dist (INFINITY
+ * for distant light), reflected by the material towards out_dir and shadowed. */
+int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 in, double dist,
+                 const GColor *color, double scale, GVec3 out_dir, LightTmp *t, GColor *result);
+
+/** Builds the distribution of probe p with brightness measured in model. */
+int probe_dist_build(ProbeDist *d, const GProbe *p, const GColorModel *model, GError *err);
+/** Frees the tables (a zeroed ProbeDist is fine). */
+void probe_dist_free(ProbeDist *d);
+/** Maps (u1, u2) in [0,1)^2 to a direction in probe space inside pixel (*u, *v), uniform in solid angle within
+ * the pixel; returns the density of the direction in solid angle (0: the probe is black). */
+double probe_dist_sample(const ProbeDist *d, const GProbe *p, double u1, double u2, int *u, int *v,
+                         GVec3 *dir);
+/** Density in solid angle of a direction in probe space. */
+double probe_dist_pdf(const ProbeDist *d, const GProbe *p, GVec3 dir);
+/** The reference mode of a probe: its direct light at sp estimated from l->samples directions drawn from the
+ * distribution (stratified), each shadowed and reflected through the material like any light. */
+int probe_light_shade(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const Media *media,
+                      GVec3 out_dir, int opaque, LightTmp *t, GColor *result);
 
 #endif

@@ -90,8 +90,8 @@ done:
 }
 
 /* Adds the light of one sample: color * scale is the light's colour at the point (before shadows). */
-static int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 in, double dist,
-                        const GColor *color, double scale, GVec3 out_dir, LightTmp *t, GColor *result)
+int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 in, double dist,
+                 const GColor *color, double scale, GVec3 out_dir, LightTmp *t, GColor *result)
 {
     const Scene *s = c->scene;
     GColor *illum = &t->illum, *refl = &t->refl, *tmp = &t->tmp;
@@ -228,6 +228,8 @@ int light_shade(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const
         }
         return G_OK;
     }
+    case LIGHT_PROBE:
+        return probe_light_shade(c, l, sp, facing, media, out_dir, opaque, t, result);
     case LIGHT_AMBIENT:
     case LIGHT_BACKGROUND:
         break;

@@ -16,6 +16,8 @@ static void usage(FILE *f)
     fprintf(f,
             "usage: gtrace SCENE -o OUT [--width W] [--height H] [--spp N] [--depth D] [--colormodel M]\n"
             "              [--threads N] [--cutoff W] [--exposure STOPS] [-q]\n"
+            "              [--probe FILE] [--probe-technique T] [--probe-count N] [--probe-samples N]\n"
+            "              [--probe-scale S] [--probe-shadows on|off]\n"
             "Renders a scene file (the library's text format with camera, object and light entries) with a\n"
             "Whitted ray tracer that uses colours and materials only through the generic interfaces.\n"
             "  -o OUT            output image; the extension picks the format: .exr linear float,\n"
@@ -29,6 +31,14 @@ static void usage(FILE *f)
             "                    camera's, 1e-3; 0 traces every ray to the depth limit)\n"
             "  --threads N       render threads (default: all processors)\n"
             "  --exposure STOPS  exposure for .png/.jpg output (default: the camera's)\n"
+            "  --probe FILE      replace the image of the scene's `light probe` (relative to the current\n"
+            "                    directory); the other --probe options replace its other settings\n"
+            "  --probe-technique T    mediancut, adaptive, kmeans, irradiance (directional lights) or\n"
+            "                         reference (Monte Carlo over the whole probe)\n"
+            "  --probe-count N        number of lights of a technique\n"
+            "  --probe-samples N      reference: samples per shading point (1..65536)\n"
+            "  --probe-shadows on|off reference: shadow rays (off: the unoccluded image)\n"
+            "  --probe-scale S        multiplies the probe's radiance\n"
             "  -q                no progress bar and no summary line\n"
             "  -h, --help        this text\n",
             models);
@@ -47,7 +57,35 @@ static int parse_int(const char *opt, const char *s, long lo, long hi, int *out)
     return 0;
 }
 
+/* The --probe options (a, its value v); -1 with a message for a bad one. */
+static int parse_probe_option(const char *a, const char *v, ProbeOverride *p)
+{
+    if (strcmp(a, "--probe") == 0)
+        p->file = v;
+    else if (strcmp(a, "--probe-technique") == 0)
+        p->technique = v;
+    else if (strcmp(a, "--probe-count") == 0)
+        return parse_int(a, v, 1, 4096, &p->count);
+    else if (strcmp(a, "--probe-samples") == 0)
+        return parse_int(a, v, 1, 65536, &p->samples);
+    else if (strcmp(a, "--probe-shadows") == 0 && (strcmp(v, "on") == 0 || strcmp(v, "off") == 0))
+        p->shadows = strcmp(v, "on") == 0;
+    else if (strcmp(a, "--probe-scale") == 0) {
+        char *end;
+        p->scale = strtod(v, &end);
+        if (end == v || *end || !(p->scale > 0.0 && p->scale < 1e30)) {
+            fprintf(stderr, "gtrace: --probe-scale expects a positive number, got '%s'\n", v);
+            return -1;
+        }
+    } else {
+        fprintf(stderr, "gtrace: unknown option '%s' or bad value '%s' (see gtrace --help)\n", a, v);
+        return -1;
+    }
+    return 0;
+}
+
 typedef struct Options {
+    ProbeOverride probe;
     const char *scene, *out, *colormodel;
     int width, height, spp, depth, threads, quiet;
     int have_exposure, have_cutoff;
@@ -58,6 +96,7 @@ static int parse_args(int argc, char **argv, Options *o)
 {
     memset(o, 0, sizeof *o);
     o->width = o->height = o->spp = o->depth = -1;
+    o->probe.shadows = -1;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
@@ -89,6 +128,8 @@ static int parse_args(int argc, char **argv, Options *o)
                 rc = parse_int(a, v, 1, 1024, &o->threads);
             else if (strcmp(a, "--colormodel") == 0)
                 o->colormodel = v;
+            else if (strncmp(a, "--probe", 7) == 0)
+                rc = parse_probe_option(a, v, &o->probe);
             else if (strcmp(a, "--exposure") == 0) {
                 char *end;
                 o->exposure = strtod(v, &end);
@@ -136,10 +177,12 @@ int main(int argc, char **argv)
     GError err;
     gerror_clear(&err);
     Scene *scene = NULL;
-    if (scene_load(o.scene, o.colormodel, &scene, &err) < 0) {
+    if (scene_load_with(o.scene, o.colormodel, &o.probe, &scene, &err) < 0) {
         fprintf(stderr, "gtrace: %s\n", err.message);
         return 1;
     }
+    if (!o.quiet)
+        probe_describe(scene, stdout);
     const Camera *cam = &scene->camera;
     RenderSettings rs = {.width = cam->width, .height = cam->height, .spp = cam->spp, .depth = cam->depth,
                          .threads = o.threads, .quiet = o.quiet, .cutoff = o.have_cutoff ? o.cutoff : cam->cutoff};

@@ -17,6 +17,8 @@
  *   light rectangle   { corner P edge1 E edge2 F radiance COLOR samples N }   lit side: edge1 x edge2
  *   light ambient     { color COLOR }        handed to every material's ambient()
  *   light background  { color COLOR }        radiance of rays that leave the scene
+ *   light probe       { file "x.hdr" technique T count N samples S rotate <x,y,z> scale K ... }
+ *                     image-based lighting from an HDR probe (probe_light.c)
  *   camera pinhole    { from P at Q up U fov DEG width W height H spp N depth D cutoff W exposure STOPS
  *                       medium M }
  * Spot cones are full opening angles in degrees (inner: full intensity, outer: none). cutoff: rays whose
@@ -352,6 +354,14 @@ int gtrace_register_types(GError *err)
         if (rc < 0)
             return rc;
     }
+    GTypeInfo probe = {.kind = GKIND_LIGHT, .name = "probe", .vtable = NULL, .parse = probe_light_parse,
+                       .summary = "HDR light probe: directional lights of a technique, or Monte Carlo reference",
+                       .destroy = probe_light_destroy};
+    if (!gregistry_find(GKIND_LIGHT, probe.name)) {
+        int rc = gregistry_add(&probe, err);
+        if (rc < 0)
+            return rc;
+    }
     GTypeInfo cam = {.kind = GKIND_CAMERA, .name = "pinhole", .vtable = &camera_vtable, .parse = parse_camera,
                      .summary = "pinhole camera: look-at, vertical field of view, image settings"};
     if (!gregistry_find(GKIND_CAMERA, cam.name)) {
@@ -388,6 +398,10 @@ int scene_from_library(GLibrary *lib, const char *name, Scene **out, GError *err
     for (int i = 0; i < n && rc == G_OK; i++) {
         const GTypeInfo *t;
         Light *l = glibrary_entry(lib, GKIND_LIGHT, i, NULL, &t);
+        if (t && t->parse == probe_light_parse) {
+            rc = probe_attach(s, (ProbeEnv *)(void *)l, err);
+            continue;
+        }
         if (!t || t->parse != parse_light) {
             rc = gerror_set(err, G_ERR_UNSUPPORTED, "%s: light type '%s' is not one gtrace renders", name,
                             t ? t->name : "?");
@@ -429,6 +443,11 @@ int scene_from_library(GLibrary *lib, const char *name, Scene **out, GError *err
 
 int scene_load(const char *path, const char *colormodel, Scene **out, GError *err)
 {
+    return scene_load_with(path, colormodel, NULL, out, err);
+}
+
+int scene_load_with(const char *path, const char *colormodel, const ProbeOverride *ov, Scene **out, GError *err)
+{
     *out = NULL;
     int rc = gtrace_register_types(err);
     if (rc < 0)
@@ -439,5 +458,9 @@ int scene_load(const char *path, const char *colormodel, Scene **out, GError *er
     rc = greader_load_file(path, &opt, &lib, err);
     if (rc < 0)
         return rc;
+    if ((rc = probe_override_apply(lib, ov, err)) < 0) {
+        glibrary_destroy(lib);
+        return rc;
+    }
     return scene_from_library(lib, path, out, err);
 }

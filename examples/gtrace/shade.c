@@ -191,7 +191,7 @@ int trace_ray(TraceCtx *c, const Ray *r, const Media *media, int depth, GColor *
     Hit h;
     c->rays++;
     if (!accel_intersect(c->scene, r, &h))
-        return gcolor_copy(out, &c->scene->background);
+        return c->scene->env ? probe_background(c->scene->env, r->d, out) : gcolor_copy(out, &c->scene->background);
     GSurfPoint sp;
     GVec3 facing;
     surfpoint_fill(c, r, &h, media, &sp, &facing);

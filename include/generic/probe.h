@@ -33,6 +33,7 @@
 #ifndef GENERIC_PROBE_H
 #define GENERIC_PROBE_H
 
+#include "color.h"
 #include "error.h"
 #include "image.h"
 #include "vec.h"
@@ -215,6 +216,17 @@ typedef struct GProbeSH9 {
 void gprobe_sh9_project(const GProbe *p, GProbeSH9 *sh);
 /** Irradiance the nine coefficients give at m normals (3 doubles each). */
 void gprobe_sh9_irradiance(const GProbeSH9 *sh, const GVec3 *normals, int m, double *E);
+
+/* ---- probes in a colour model (for renderers written against the generic colour interface) ---- */
+
+/** Radiance arriving from a direction (bilinear, as gprobe_radiance) as a light (GCOLOR_LIGHT) in the
+ * colour model of `out`, which must have storage. dir need not be normalised. */
+int gprobe_radiance_color(const GProbe *p, GVec3 dir, GColor *out);
+/** Radiance of pixel (u, v) as a light in the colour model of `out`; u wraps around, v is clamped. */
+int gprobe_pixel_color(const GProbe *p, int u, int v, GColor *out);
+/** The colour of a directional light (its irradiance on a surface facing it) as a light in the colour
+ * model of `out`. */
+int gprobe_light_color(const GProbeLight *l, GColor *out);
 
 #ifdef __cplusplus
 }

@@ -3,6 +3,8 @@
 #define GENERIC_FLUOR_INTERNAL_H
 
 #include "generic/fluorescent.h"
+#include "generic/material.h"
+#include "materials/params.h"
 
 /** Checks a GReradiation's grid and values (finite); G_ERR_INVALID naming `what` otherwise. */
 int fluor_matrix_check(const GReradiation *r, const char *what, GError *err);
@@ -13,6 +15,44 @@ static inline double fluor_entry(const GReradiation *r, int o, int i)
 {
     float v = r->data[(long)o * r->n_in + i];
     return v > 0.0f ? (double)v : 0.0;
+}
+
+/** The cosines of a reflection from in to out with the shading normal *n: *ci (gmat_cos_in) and *co. 1 when
+ * light reflects, else 0 with result made black (either cosine <= 0). */
+static inline int fluor_cosines(GSurfPoint *sp, GVec3 in, GVec3 out, GColor *result, GVec3 *n, double *ci,
+                                double *co)
+{
+    *ci = gmat_cos_in(sp, in, out, n);
+    *co = gvec3_dot(out, *n);
+    if (*ci <= 0.0 || *co <= 0.0) {
+        gcolor_black(result);
+        return 0;
+    }
+    return 1;
+}
+
+/** result = wa * (a ? a * illum : illum) + wb * (b * illum): the light a fluorescent material returns as
+ * the sum of two parts, b * illum held in a temporary on sp's arena and computed first (result may alias
+ * illum). The operations run in the order written, so each material gets the same numbers as it would
+ * spelling the sum out. */
+static inline int fluor_two_parts(GSurfPoint *sp, const GColorModel *model, const GColor *illum, const GColor *a,
+                                  double wa, const GColor *b, double wb, GColor *result)
+{
+    GScratchMark mark = gscratch_mark(sp->scratch);
+    GColor t;
+    int rc = gcolor_scratch(&t, model, sp->scratch);
+    if (rc == G_OK)
+        rc = gcolor_mul(&t, b, illum);
+    if (rc == G_OK && a) {
+        rc = gcolor_mul(result, a, illum);
+        if (rc == G_OK)
+            rc = gcolor_scale(result, result, wa);
+    } else if (rc == G_OK)
+        rc = gcolor_scale(result, illum, wa);
+    if (rc == G_OK)
+        rc = gcolor_add_scaled(result, &t, wb);
+    gscratch_release(sp->scratch, mark);
+    return rc;
 }
 
 #endif

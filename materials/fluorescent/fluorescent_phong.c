@@ -50,12 +50,9 @@ static int fphong_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, co
 {
     const FPhong *p = (const FPhong *)self;
     GVec3 n;
-    double ci = gmat_cos_in(sp, in, out, &n);
-    double co = gvec3_dot(out, n);
-    if (ci <= 0.0 || co <= 0.0) {
-        gcolor_black(result);
+    double ci, co;
+    if (!fluor_cosines(sp, in, out, result, &n, &ci, &co))
         return G_OK;
-    }
     double ca = 2.0 * ci * co - gvec3_dot(in, out); /* cos(alpha) = r.o, r the mirror direction of in */
     double lobe = 0.0;
     if (ca > 0.0) {
@@ -69,19 +66,7 @@ static int fphong_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, co
         int rc = gcolor_mul(result, &p->m, illum);
         return rc ? rc : gcolor_scale(result, result, ci / M_PI);
     }
-    GScratchMark mark = gscratch_mark(sp->scratch);
-    GColor t;
-    int rc = gcolor_scratch(&t, self->model, sp->scratch);
-    if (rc == G_OK)
-        rc = gcolor_mul(&t, &p->d, illum); /* before result is written: it may alias illum */
-    if (rc == G_OK)
-        rc = gcolor_mul(result, &p->m, illum);
-    if (rc == G_OK)
-        rc = gcolor_scale(result, result, ci / M_PI);
-    if (rc == G_OK)
-        rc = gcolor_add_scaled(result, &t, lobe * ci);
-    gscratch_release(sp->scratch, mark);
-    return rc;
+    return fluor_two_parts(sp, self->model, illum, &p->m, ci / M_PI, &p->d, lobe * ci, result);
 }
 
 static int fphong_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
@@ -138,16 +123,12 @@ int gfluor_phong_create(const GColorModel *model, const GReradiation *matrix, co
     int rc = fluor_matrix_check(matrix, "fluorescent-phong", err);
     if (rc == G_OK)
         rc = check_params(&p, err);
+    GMaterial *m;
+    if (rc == G_OK)
+        rc = gmat_new(&gmaterial_fluorescent_phong, model, sizeof(FPhong), &m, err);
     if (rc != G_OK)
         return rc;
-    FPhong *f = gmem_calloc(1, sizeof *f);
-    if (!f)
-        return gerror_set(err, G_ERR_NOMEM, "fluorescent-phong: out of memory");
-    rc = gmaterial_init(&f->base, &gmaterial_fluorescent_phong, model, err);
-    if (rc != G_OK) {
-        gmem_free(f);
-        return rc;
-    }
+    FPhong *f = (FPhong *)m;
     for (int k = 0; k < 3; k++) {
         f->n[k] = p.exponent[k];
         f->norm[k] = p.weight[k] * (p.exponent[k] + 1.0) / (2.0 * M_PI);

@@ -260,27 +260,13 @@ static int varnish_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, c
 {
     const Varnish *v = (const Varnish *)self;
     GVec3 n;
-    double ci = gmat_cos_in(sp, in, out, &n);
-    double co = gvec3_dot(out, n);
-    if (ci <= 0.0 || co <= 0.0) {
-        gcolor_black(result);
+    double ci, co;
+    if (!fluor_cosines(sp, in, out, result, &n, &ci, &co))
         return G_OK;
-    }
     GVec3 h = gvec3_normalize(gvec3_add(in, out));
     double spec = facet_brdf(v, ci, co, gvec3_dot(h, n), gvec3_dot(in, h));
     double base = transmit(v, ci) * transmit(v, co) * v->base_norm;
-    /* the base's light first (result may alias illum) */
-    GScratchMark mark = gscratch_mark(sp->scratch);
-    GColor t;
-    int rc = gcolor_scratch(&t, self->model, sp->scratch);
-    if (rc == G_OK)
-        rc = gcolor_mul(&t, &v->b, illum);
-    if (rc == G_OK)
-        rc = gcolor_scale(result, illum, spec * ci);
-    if (rc == G_OK)
-        rc = gcolor_add_scaled(result, &t, base * ci);
-    gscratch_release(sp->scratch, mark);
-    return rc;
+    return fluor_two_parts(sp, self->model, illum, NULL, spec * ci, &v->b, base * ci, result);
 }
 
 static int varnish_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
@@ -292,17 +278,7 @@ static int varnish_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result
 static int varnish_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
 {
     const Varnish *v = (const Varnish *)self;
-    GScratchMark mark = gscratch_mark(sp->scratch);
-    GColor t;
-    int rc = gcolor_scratch(&t, self->model, sp->scratch);
-    if (rc == G_OK)
-        rc = gcolor_mul(&t, &v->diffuse, illum);
-    if (rc == G_OK)
-        rc = gcolor_scale(result, illum, v->r_avg);
-    if (rc == G_OK)
-        rc = gcolor_add(result, result, &t);
-    gscratch_release(sp->scratch, mark);
-    return rc;
+    return fluor_two_parts(sp, self->model, illum, NULL, v->r_avg, &v->diffuse, 1.0, result);
 }
 
 const GMaterialClass gmaterial_fluorescent_varnish = {
@@ -347,14 +323,11 @@ int gfluor_varnish_create(const GColorModel *model, const GReradiation *matrix, 
             return gerror_set(err, G_ERR_INVALID, "fluorescent-varnish: slope is %g degrees (must be in (0, 45))",
                               p.slope_deg);
     }
-    Varnish *v = gmem_calloc(1, sizeof *v);
-    if (!v)
-        return gerror_set(err, G_ERR_NOMEM, "fluorescent-varnish: out of memory");
-    rc = gmaterial_init(&v->base, &gmaterial_fluorescent_varnish, model, err);
-    if (rc != G_OK) {
-        gmem_free(v);
+    GMaterial *base;
+    rc = gmat_new(&gmaterial_fluorescent_varnish, model, sizeof(Varnish), &base, err);
+    if (rc != G_OK)
         return rc;
-    }
+    Varnish *v = (Varnish *)base;
     v->eta = p.ior;
     v->m = m;
     v->d_norm = (m + 2.0) / (2.0 * M_PI);

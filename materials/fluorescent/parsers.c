@@ -14,6 +14,7 @@
 #include "fluorescent_builtin.h"
 #include "generic/reader.h"
 
+#include <stddef.h>
 #include <string.h>
 
 /* ---- the parametric matrix as a colour literal ---- */
@@ -138,21 +139,47 @@ static int read_numbers(GReader *r, double lo, double hi, double *v, int n, GErr
     return rc;
 }
 
-/* Reads one parameter of a fluorescent material other than `matrix` into its parameter struct, or reports
- * an unknown key. */
-typedef int (*FluorParamFn)(GReader *r, const char *key, void *params, GError *err);
+/* A numeric parameter of a fluorescent material: `count` numbers in [lo, hi] at `offset` in its parameter
+ * struct. */
+typedef struct FluorParam {
+    const char *key;
+    double lo, hi;
+    size_t offset;
+    int count;
+} FluorParam;
 
-/* Reads a fluorescent material's parameter block: `matrix` here, every other key through param; then the
- * default matrix when none was given. *mat is freed by the caller, also on failure. */
-static int read_material(GReader *r, FluorParamFn param, void *params, GReradiation *mat, GError *err)
+static const FluorParam phong_params[] = {
+    {"ks", 0.0, 0.999, offsetof(GFluorPhongParams, ks), 1},
+    {"exponents", 1.0, 1e6, offsetof(GFluorPhongParams, exponent), 3},
+    {"weights", 0.0, 1.0, offsetof(GFluorPhongParams, weight), 3},
+    {NULL, 0.0, 0.0, 0, 0},
+};
+
+static const FluorParam varnish_params[] = {
+    {"ior", 1.0, 4.0, offsetof(GFluorVarnishParams, ior), 1},
+    {"slope", 0.01, 44.99, offsetof(GFluorVarnishParams, slope_deg), 1},
+    {"exponent", 0.0, 1e6, offsetof(GFluorVarnishParams, exponent), 1},
+    {NULL, 0.0, 0.0, 0, 0},
+};
+
+/* Reads a fluorescent material's parameter block into params: `matrix` into *mat (the default matrix when
+ * it is not given), the numbers of the table; `keys` lists them all for the unknown-key message. *mat is
+ * freed by the caller, also on failure. */
+static int read_material(GReader *r, const FluorParam *table, const char *keys, void *params, GReradiation *mat,
+                         GError *err)
 {
     const char *key;
     int rc;
     while ((rc = greader_param(r, &key, err)) > 0) {
+        const FluorParam *p = table;
+        while (p->key && strcmp(key, p->key) != 0)
+            p++;
         if (strcmp(key, "matrix") == 0)
             rc = read_matrix(r, mat, err);
+        else if (p->key)
+            rc = read_numbers(r, p->lo, p->hi, (double *)((char *)params + p->offset), p->count, err);
         else
-            rc = param(r, key, params, err);
+            rc = greader_unknown_param(r, keys, err);
         if (rc < 0)
             break;
     }
@@ -168,18 +195,6 @@ static int finish(int rc, GReradiation *mat, GMaterial *m, void **object)
     return rc;
 }
 
-static int phong_param(GReader *r, const char *key, void *params, GError *err)
-{
-    GFluorPhongParams *p = params;
-    if (strcmp(key, "ks") == 0)
-        return greader_number_in(r, 0.0, 0.999, &p->ks, err);
-    if (strcmp(key, "exponents") == 0)
-        return read_numbers(r, 1.0, 1e6, p->exponent, 3, err);
-    if (strcmp(key, "weights") == 0)
-        return read_numbers(r, 0.0, 1.0, p->weight, 3, err);
-    return greader_unknown_param(r, "matrix, ks, exponents, weights", err);
-}
-
 static int parse_fluorescent_phong(GReader *r, const void *vt, void **object, GError *err)
 {
     (void)vt;
@@ -187,22 +202,10 @@ static int parse_fluorescent_phong(GReader *r, const void *vt, void **object, GE
     gfluor_phong_default(&p);
     GReradiation mat = {0};
     GMaterial *m = NULL;
-    int rc = read_material(r, phong_param, &p, &mat, err);
+    int rc = read_material(r, phong_params, "matrix, ks, exponents, weights", &p, &mat, err);
     if (rc == G_OK && (rc = gfluor_phong_create(greader_colormodel(r), &mat, &p, &m, err)) != G_OK)
         greader_locate(r, err);
     return finish(rc, &mat, m, object);
-}
-
-static int varnish_param(GReader *r, const char *key, void *params, GError *err)
-{
-    GFluorVarnishParams *p = params;
-    if (strcmp(key, "ior") == 0)
-        return greader_number_in(r, 1.0, 4.0, &p->ior, err);
-    if (strcmp(key, "slope") == 0)
-        return greader_number_in(r, 0.01, 44.99, &p->slope_deg, err);
-    if (strcmp(key, "exponent") == 0)
-        return greader_number_in(r, 0.0, 1e6, &p->exponent, err);
-    return greader_unknown_param(r, "matrix, ior, slope, exponent", err);
 }
 
 static int parse_fluorescent_varnish(GReader *r, const void *vt, void **object, GError *err)
@@ -212,7 +215,7 @@ static int parse_fluorescent_varnish(GReader *r, const void *vt, void **object, 
     gfluor_varnish_default(&p);
     GReradiation mat = {0};
     GMaterial *m = NULL;
-    int rc = read_material(r, varnish_param, &p, &mat, err);
+    int rc = read_material(r, varnish_params, "matrix, ior, slope, exponent", &p, &mat, err);
     if (rc == G_OK && (rc = gfluor_varnish_create(greader_colormodel(r), &mat, &p, &m, err)) != G_OK)
         greader_locate(r, err);
     return finish(rc, &mat, m, object);

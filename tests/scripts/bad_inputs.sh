@@ -1,0 +1,193 @@
+#!/bin/sh
+# bad_inputs.sh BUILD - the tools on the corpus of broken inputs in tests/bad/: every material, texture and BFC
+# file (gmat), every probe file (gprobe), every scene (gtrace), broken plug-ins and a file over the size limit.
+# Each must fail with a clear message on stderr - `file:line:col: message` for text, the file's name for images -
+# and an exit status from 1 to 127: a status of 128 or more (a signal) or a sanitizer report is a crash. No tool
+# may leave a partial result: an output file that exists before a failing run keeps its content. A probe with
+# NaN, infinite and negative pixels loads, and the number of pixels set to 0 is reported.
+SRC=$(cd "$(dirname "$0")/../.." && pwd)
+BUILD=$(cd "${1:-build}" 2> /dev/null && pwd) || { echo "FAIL: no build directory ${1:-build}"; exit 1; }
+GMAT="$BUILD/bin/gmat"
+GPROBE="$BUILD/bin/gprobe"
+GTRACE="$BUILD/bin/gtrace"
+PLUGINS="$BUILD/plugins"
+for t in "$GMAT" "$GPROBE" "$GTRACE"; do
+    if [ ! -x "$t" ]; then
+        echo "FAIL: $t is not built"
+        exit 1
+    fi
+done
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+fails=0
+checked=0
+fail() {
+    echo "FAIL: $*"
+    fails=$((fails + 1))
+}
+
+# run WHAT COMMAND...: runs a command that must fail cleanly; its stderr is left in $TMP/err.
+run_fails() {
+    what=$1
+    shift
+    "$@" > "$TMP/out" 2> "$TMP/err"
+    st=$?
+    checked=$((checked + 1))
+    if [ $st -eq 0 ]; then
+        fail "$what: succeeded"
+    elif [ $st -ge 128 ]; then
+        fail "$what: crashed (status $st): $(head -c 2000 "$TMP/err")"
+    fi
+    if grep -q -E "Sanitizer|runtime error:" "$TMP/err"; then
+        fail "$what: sanitizer report: $(head -c 2000 "$TMP/err")"
+    fi
+    if [ ! -s "$TMP/err" ]; then
+        fail "$what: no message on stderr"
+    fi
+}
+
+# An existing output with known content, to check that failed runs leave it alone.
+known() { # file
+    printf 'known content, not to be overwritten\n' > "$1"
+}
+unchanged() { # what file
+    if [ "$(cat "$2" 2>/dev/null)" != "known content, not to be overwritten" ]; then
+        fail "$1: the existing output $2 was overwritten"
+    fi
+}
+
+# ---- the checks of one corpus file, run by two workers at a time (each tool run starts OpenImageIO) ----
+check_mat() { # a material, texture or BFC file: gmat list, in its model (and the bispectral one)
+    f=$1
+    want=$(head -n 1 "$f" | sed -n 's/^# expect: //p')
+    prefix=${want%%...*}
+    run_fails "gmat list $f" "$GMAT" list "$f"
+    if grep -q -E "registered by test_reader|^object " "$f"; then
+        # a type only the reader's test registers: here it is an unknown name, still at file:line:col
+        grep -q -E "^gmat: $f:[0-9]+:[0-9]+: " "$TMP/err" || fail "gmat list $f: no file:line:col: $(cat "$TMP/err")"
+    elif [ -n "$prefix" ]; then
+        grep -q -F "gmat: $prefix" "$TMP/err" || fail "gmat list $f: expected '$want', got: $(cat "$TMP/err")"
+    fi
+    case $f in # values whose conversion depends on the colour model: also in the bispectral one
+    bfc_overflow.mat | scale_overflow.mat)
+        run_fails "gmat list $f --colormodel bispectral" "$GMAT" list "$f" --colormodel bispectral
+        grep -q -E "^gmat: [A-Za-z0-9_.-]+:[0-9]+:[0-9]+: " "$TMP/err" ||
+            fail "gmat list $f --colormodel bispectral: no file:line:col: $(cat "$TMP/err")"
+        ;;
+    esac
+}
+
+check_probe() { # a broken probe: the message names the file, an existing lights file is kept
+    f=$1
+    known "$TMP/lights.txt"
+    run_fails "gprobe approx $f" "$GPROBE" approx --probe "$f" --technique adaptive -n 4 -o "$TMP/lights.txt"
+    grep -q -F "gprobe: $f" "$TMP/err" || fail "gprobe $f: the message does not name the file: $(cat "$TMP/err")"
+    unchanged "gprobe approx $f" "$TMP/lights.txt"
+}
+
+check_scene() { # a broken scene (or a material file without a scene): file:line:col, an existing image is kept
+    f=$1
+    known "$TMP/render.png"
+    run_fails "gtrace $f" "$GTRACE" "$f" -o "$TMP/render.png" -q
+    case $f in
+    *.scene) grep -q -E "^gtrace: $f(:[0-9]+:[0-9]+)?: " "$TMP/err" || fail "gtrace $f: no file:line:col: $(cat "$TMP/err")" ;;
+    esac
+    unchanged "gtrace $f" "$TMP/render.png"
+}
+
+cd "$SRC/tests/bad" || exit 1
+if [ "$2" = "--each" ]; then # worker: BUILD --each KIND FILE...
+    kind=$3
+    shift 3
+    for f in "$@"; do
+        "check_$kind" "$f"
+    done
+    echo "checked $checked"
+    exit 0
+fi
+
+# each KIND FILE...: the checks of every file, two workers at a time; their failures are reported here
+each() {
+    kind=$1
+    shift
+    printf '%s\n' "$@" | xargs -P 2 -n 8 sh "$SRC/tests/scripts/bad_inputs.sh" "$BUILD" --each "$kind" > "$TMP/each" 2>&1
+    while IFS= read -r line; do
+        case $line in
+        "checked "*) checked=$((checked + ${line#checked })) ;;
+        "FAIL: "*) echo "$line"; fails=$((fails + 1)) ;;
+        *) echo "$line" ;;
+        esac
+    done < "$TMP/each"
+}
+
+# ---- text files: every tests/bad/*.mat (every second one in a sanitizer build) ----
+# Each tool run costs about 0.2 s (0.4 s under AddressSanitizer) to start OpenImageIO's 260 shared libraries.
+# Under the sanitizers the library itself reads every file of the corpus in-process (test_reader), so the
+# tools' own path - a failed load reported and the program ended - is checked on half the files there.
+mats=$(ls *.mat)
+if ldd "$GMAT" 2> /dev/null | grep -q -E "libasan|libubsan"; then
+    mats=$(ls *.mat | awk 'NR % 2 == 1')
+fi
+each mat $mats
+
+# a plot of a broken file, and of a good file with a bad argument, keeps an existing image
+known "$TMP/plot.png"
+run_fails "gmat plot of a broken file" "$GMAT" plot scale_overflow.mat lamp --in 30 -o "$TMP/plot.png"
+unchanged "gmat plot of a broken file" "$TMP/plot.png"
+printf 'material m lambert { reflectance rgb 0.5 0.5 0.5 }\n' > "$TMP/good.mat"
+run_fails "gmat plot into an unknown format" "$GMAT" plot "$TMP/good.mat" m --in 30 -o "$TMP/plot.unknownformat"
+[ -e "$TMP/plot.unknownformat" ] && fail "gmat plot into an unknown format left a file"
+
+# a file over the 16 MiB limit (sparse) is refused before it is read
+: > "$TMP/big.mat"
+truncate -s 16777217 "$TMP/big.mat" 2> /dev/null || dd if=/dev/zero of="$TMP/big.mat" bs=1 count=0 seek=16777217 2> /dev/null
+run_fails "gmat list of a 16 MiB + 1 byte file" "$GMAT" list "$TMP/big.mat"
+grep -q "is 16777217 bytes, more than the limit of 16777216 bytes" "$TMP/err" ||
+    fail "a file over the size limit: $(cat "$TMP/err")"
+
+# ---- plug-ins: another interface version, no entry point, a failing init, not a shared object ----
+for case in "bad_abi:was built for module interface version 42, this library has version 1" \
+            "no_init:has no entry point" "failing_init:failed to initialise: this module always fails"; do
+    so=${case%%:*}
+    msg=${case#*:}
+    if [ ! -e "$PLUGINS/$so.so" ]; then
+        fail "$PLUGINS/$so.so is not built"
+        continue
+    fi
+    if [ "$so" = bad_abi ]; then
+        run_fails "gmat --plugin $so.so" "$GMAT" list "$TMP/good.mat" --plugin "$PLUGINS/$so.so"
+        grep -q -F "$msg" "$TMP/err" || fail "--plugin $so.so: expected '$msg', got: $(cat "$TMP/err")"
+    fi
+    printf 'plugin "%s"\nmaterial m lambert\n' "$PLUGINS/$so.so" > "$TMP/plugin_$so.mat"
+    run_fails "plugin \"$so.so\" statement" "$GMAT" list "$TMP/plugin_$so.mat"
+    grep -q -F "plugin_$so.mat:1:8: " "$TMP/err" && grep -q -F "$msg" "$TMP/err" ||
+        fail "plugin statement $so.so: expected 'plugin_$so.mat:1:8: ...$msg', got: $(cat "$TMP/err")"
+done
+run_fails "gmat --plugin of a text file" "$GMAT" list "$TMP/good.mat" --plugin tiny.BFC
+grep -q "invalid ELF header" "$TMP/err" || fail "a text file as a module: $(cat "$TMP/err")"
+
+# ---- light probes: broken files fail naming the file; approx and convert keep existing outputs ----
+each probe $(ls probe_*.hdr probe_*.pfm | grep -v -E "probe_(nonfinite|black).pfm")
+known "$TMP/lights.txt"
+known "$TMP/probe.png"
+run_fails "gprobe convert probe_truncated.hdr" "$GPROBE" convert --probe probe_truncated.hdr -o "$TMP/probe.png"
+unchanged "gprobe convert probe_truncated.hdr" "$TMP/probe.png"
+run_fails "gprobe approx with a bad light count" "$GPROBE" approx --probe probe_black.pfm --technique mediancut -n 3 \
+    -o "$TMP/lights.txt"
+unchanged "gprobe approx with a bad light count" "$TMP/lights.txt"
+# NaN, +-infinity and negative pixels are set to 0 and counted; the lights are finite and the count is reported
+checked=$((checked + 1))
+if "$GPROBE" approx --probe probe_nonfinite.pfm --technique kmeans -n 4 -o "$TMP/nonfinite.txt" 2> "$TMP/err"; then
+    grep -q "4 pixels had negative, NaN or infinite values, set to 0" "$TMP/err" ||
+        fail "probe_nonfinite.pfm: the clamped pixels are not reported: $(cat "$TMP/err")"
+    grep -i -q -E "nan|inf" "$TMP/nonfinite.txt" && fail "probe_nonfinite.pfm: a light is not finite: $(cat "$TMP/nonfinite.txt")"
+    grep -q "^light directional" "$TMP/nonfinite.txt" || fail "probe_nonfinite.pfm: no lights written"
+else
+    fail "gprobe approx probe_nonfinite.pfm failed: $(cat "$TMP/err")"
+fi
+
+# ---- scenes: gtrace reports file:line:col (or the file) and keeps an existing image ----
+each scene scene_*.scene image_missing.mat bfc_overflow.mat
+
+echo "$checked failing runs checked, $fails failures"
+[ $fails -eq 0 ]

@@ -1,0 +1,88 @@
+/* test_util.h - small helpers shared by the test programs (static inline, include after <cmocka.h>):
+ * a double-precision closeness assertion, a counting allocator that can fail one chosen call, and running a
+ * built tool with its output captured. */
+#ifndef GENERIC_TEST_UTIL_H
+#define GENERIC_TEST_UTIL_H
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <sys/wait.h>
+
+#include "generic/memory.h"
+
+/** |a - b| <= tol in double precision (cmocka's assert_float_equal works in float); a failure prints the
+ * expression, both values and the tolerance. */
+#define assert_near(a, b, tol) tu_near((a), (b), (tol), #a, __FILE__, __LINE__)
+
+static inline void tu_near(double a, double b, double tol, const char *what, const char *file, int line)
+{
+    if (!(fabs(a - b) <= tol)) {
+        print_error("%s:%d: %s = %.10g, expected %.10g within %g\n", file, line, what, a, b, tol);
+        _fail(file, line);
+    }
+}
+
+/** What the counting allocator counts: calls of alloc and realloc since it was installed, and the call
+ * (numbered from 0) that fails. */
+typedef struct TuCounter {
+    long allocs;
+    long fail_at; /**< -1: none fails */
+} TuCounter;
+
+static inline void *tu_count_alloc(size_t n, void *user)
+{
+    TuCounter *c = user;
+    return c->allocs++ == c->fail_at ? NULL : malloc(n);
+}
+
+static inline void *tu_count_realloc(void *p, size_t n, void *user)
+{
+    TuCounter *c = user;
+    return c->allocs++ == c->fail_at ? NULL : realloc(p, n);
+}
+
+static inline void tu_count_free(void *p, void *user)
+{
+    (void)user;
+    free(p);
+}
+
+/** Installs the counting allocator (gmem_set_allocator) with c zeroed and failing call fail_at (-1: none);
+ * gmem_set_allocator(NULL) restores the C library's. c must outlive the installation: give it static
+ * storage, so that an assertion failing in between does not leave the allocator on a dead stack frame. */
+static inline void tu_count_install(TuCounter *c, long fail_at)
+{
+    c->allocs = 0;
+    c->fail_at = fail_at;
+    GAllocator a = {tu_count_alloc, tu_count_realloc, tu_count_free, c};
+    gmem_set_allocator(&a);
+}
+
+/** Writes text into a new file at path; 0, or -1 when it cannot be created. */
+static inline int tu_write_file(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    if (!f)
+        return -1;
+    fputs(text, f);
+    fclose(f);
+    return 0;
+}
+
+/** Runs `'exe' args 2>&1` through the shell, capturing up to size - 1 bytes of what it prints into out
+ * (NUL-terminated); returns its exit status, -1 when it did not exit normally. */
+static inline int tu_run_capture(const char *exe, const char *args, char *out, size_t size)
+{
+    char cmd[16384];
+    int len = snprintf(cmd, sizeof cmd, "'%s' %s 2>&1", exe, args);
+    assert_true(len > 0 && (size_t)len < sizeof cmd);
+    FILE *p = popen(cmd, "r");
+    assert_non_null(p);
+    size_t n = fread(out, 1, size - 1, p);
+    out[n] = '\0';
+    int st = pclose(p);
+    return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+#endif
