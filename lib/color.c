@@ -188,6 +188,15 @@ int gcolor_is_finite(const GColor *c)
     return 1;
 }
 
+int gcolor_is_nonnegative(const GColor *c)
+{
+    size_t n = value_floats(c);
+    for (size_t i = 0; i < n; i++)
+        if (!isfinite(c->v[i]) || c->v[i] < 0.0f)
+            return 0;
+    return 1;
+}
+
 /* ---- conversions ---- */
 
 int gcolor_to_nm(const GColor *c, GColorRole role, GSpectrumNM *out)

@@ -307,6 +307,9 @@ int gimage_info(const char *path, int *width, int *height, int *channels, GError
         if (!in)
             return gerror_set(err, G_ERR_IO, "%s: cannot read image: %s", path, first_line(OIIO::geterror()).c_str());
         const ImageSpec &spec = in->spec();
+        if (spec.width <= 0 || spec.height <= 0 || spec.nchannels < 1)
+            return gerror_set(err, G_ERR_IO, "%s: invalid image size %dx%d with %d channels", path, spec.width,
+                              spec.height, spec.nchannels);
         if (width)
             *width = spec.width;
         if (height)

@@ -4,6 +4,7 @@
 #include "generic/memory.h"
 
 #include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imageio.h>
 #include <OpenImageIO/texture.h>
 
 #include <cctype>
@@ -56,7 +57,7 @@ GTextureSystem *make(GError *err)
 
 void release(GTextureSystem *s)
 {
-    TextureSystem::destroy(s->ts);
+    TextureSystem::destroy(s->ts, true); // with its own image cache, which would otherwise stay allocated
     s->~GTextureSystem();
     gmem_free(s);
 }
@@ -127,11 +128,26 @@ int gtexsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *cha
     if (!ts || !path || !path[0])
         return gerror_set(err, G_ERR_INVALID, "image: no file name given");
     try {
+        if (!Filesystem::exists(path))
+            return gerror_set(err, G_ERR_IO, "image '%s': no such file", path);
+        // The header first: OpenImageIO 2.4's cache asserts (aborts) on a file whose header gives a size
+        // below 1, such as a PFM with a negative width.
+        {
+            auto in = ImageInput::open(path);
+            if (!in) {
+                std::string why = OIIO::geterror();
+                why = why.substr(0, why.find('\n'));
+                return gerror_set(err, G_ERR_IO, "image '%s' cannot be read: %s", path,
+                                  why.empty() ? "not an image OpenImageIO can decode" : why.c_str());
+            }
+            const ImageSpec &head = in->spec();
+            if (head.width <= 0 || head.height <= 0 || head.nchannels < 1)
+                return gerror_set(err, G_ERR_IO, "image '%s' cannot be read: invalid size %dx%d with %d channels",
+                                  path, head.width, head.height, head.nchannels);
+        }
         ustring name(path);
         TextureSystem::Perthread *pt = ts->ts->get_perthread_info();
         TextureSystem::TextureHandle *h = ts->ts->get_texture_handle(name, pt);
-        if (!Filesystem::exists(path))
-            return gerror_set(err, G_ERR_IO, "image '%s': no such file", path);
         ImageSpec spec;
         if (!h || !ts->ts->good(h) || !ts->ts->get_imagespec(h, pt, 0, spec)) {
             std::string why = ts->ts->geterror();

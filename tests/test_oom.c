@@ -26,13 +26,6 @@
 #include "generic/memory.h"
 #include "generic/reader.h"
 
-/* OpenImageIO 2.4's TextureSystem::destroy(ts) without its teardown flag never frees the private ImageCache the
- * texture system made (lib/texture_oiio.cpp calls it so; passing teardown_imagecache = true fixes it). That leak
- * is outside the allocator hook and not this test's subject: it is suppressed here by its allocation site (the
- * only frame a fast unwind finds in that library). */
-const char *__lsan_default_suppressions(void);
-const char *__lsan_default_suppressions(void) { return "leak:OpenImageIO_v2_4::aligned_malloc\n"; }
-
 /* ---- the failing allocator ---- */
 
 typedef struct Budget {

@@ -5,6 +5,7 @@
 #include <cmocka.h>
 
 #include <math.h>
+#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -173,6 +174,28 @@ static void test_direction_convention(void **state)
     gprobe_destroy(p);
 }
 
+/* The ground truth is the same, to the last bit, with one thread and with several (fits built on it repeat). */
+static void test_irradiance_repeats_exactly(void **state)
+{
+    (void)state;
+    GProbe *p = random_probe(64, 11u);
+    const int m = 2000;
+    GVec3 *n = malloc(sizeof *n * m);
+    gprobe_fibonacci(m, n);
+    double *a = malloc(sizeof(double) * 3 * m), *b = malloc(sizeof(double) * 3 * m);
+    const int threads = omp_get_max_threads();
+    omp_set_num_threads(1);
+    assert_int_equal(gprobe_irradiance(p, n, m, a, NULL), G_OK);
+    omp_set_num_threads(threads > 1 ? threads : 2);
+    assert_int_equal(gprobe_irradiance(p, n, m, b, NULL), G_OK);
+    omp_set_num_threads(threads);
+    assert_memory_equal(a, b, sizeof(double) * 3 * m);
+    free(n);
+    free(a);
+    free(b);
+    gprobe_destroy(p);
+}
+
 static void test_clamping_counts_bad_pixels(void **state)
 {
     (void)state;
@@ -183,9 +206,14 @@ static void test_clamping_counts_bad_pixels(void **state)
     px[1] = NAN; /* same pixel: counted once */
     px[7] = INFINITY;
     px[20] = -INFINITY;
+    px[30] = 3e38f; /* finite but too large: clamped to GPROBE_MAX_RADIANCE, counted */
     GProbe *p = NULL;
     assert_int_equal(gprobe_create(8, 4, px, &p, NULL), G_OK);
-    assert_int_equal(gprobe_clamped_count(p), 3);
+    assert_int_equal(gprobe_clamped_count(p), 4);
+    assert_float_equal(gprobe_pixels(p)[30], GPROBE_MAX_RADIANCE, 0.0);
+    const float *w = gprobe_weights(p);
+    for (int i = 0; i < 8 * 4 * 3; i++)
+        assert_true(isfinite(w[i]));
     const float *q = gprobe_pixels(p);
     assert_float_equal(q[0], 0.0, 0.0);
     assert_float_equal(q[1], 0.0, 0.0);
@@ -452,6 +480,7 @@ int main(void)
         cmocka_unit_test(test_constant_probe_gives_pi_L),
         cmocka_unit_test(test_fast_sum_matches_direct_sum),
         cmocka_unit_test(test_direction_convention),
+        cmocka_unit_test(test_irradiance_repeats_exactly),
         cmocka_unit_test(test_clamping_counts_bad_pixels),
         cmocka_unit_test(test_bad_shapes_and_files),
         cmocka_unit_test(test_latlong_angular_round_trip),

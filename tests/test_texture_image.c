@@ -8,10 +8,12 @@
 #include <stdint.h>
 #include <cmocka.h>
 
+#include <generic/image.h>
 #include <generic/materials.h>
 
 #include "texture_fixtures.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <unistd.h>
 
@@ -278,6 +280,35 @@ static void test_bad_files(void **state)
     gmaterial_unref(m);
 }
 
+/* Float texels that are NaN, infinite or negative become 0; the finite positive ones pass unchanged, also
+ * above 1 (HDR images scale light). A 4 x 1 EXR: NaN, +Inf, -0.5, 2.5. */
+static void test_nonfinite_texels(void **state)
+{
+    Fix *f = *state;
+    char path[128];
+    snprintf(path, sizeof path, "%s/nonfinite.exr", f->dir);
+    GImage img;
+    GError err;
+    assert_int_equal(gimage_create(&img, 4, 1, 3, &err), G_OK);
+    const float v[4] = {NAN, INFINITY, -0.5f, 2.5f};
+    for (int x = 0; x < 4; x++)
+        for (int c = 0; c < 3; c++)
+            img.pixels[x * 3 + c] = v[x];
+    assert_int_equal(gimage_write(path, &img, NULL, &err), G_OK);
+    gimage_free(&img);
+    GMaterial *m = image(f, path, GTEX_WRAP_CLAMP, GTEX_COLORSPACE_LINEAR);
+    const double want[4] = {0.0, 0.0, 0.0, 2.5};
+    for (int x = 0; x < 4; x++) {
+        GSurfPoint sp;
+        plane_point(&sp, f->rgb, f->scratch, (x + 0.5) / 4, 0.5);
+        sp.uv_footprint = 0.01 / 4; /* a hundredth of a texel: the texel itself */
+        assert_int_equal(gmaterial_diffuse(m, &sp, &f->c), G_OK);
+        assert_float_equal(color_r(&f->c), want[x], 1e-6);
+    }
+    gmaterial_unref(m);
+    unlink(path);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -286,6 +317,7 @@ int main(void)
         cmocka_unit_test(test_wrap_and_orientation),
         cmocka_unit_test(test_color_spaces),
         cmocka_unit_test(test_bad_files),
+        cmocka_unit_test(test_nonfinite_texels),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -4,6 +4,7 @@
 #include "node_common.h"
 #include "textures_builtin.h"
 #include "texture_oiio.h"
+#include "generic/image.h"
 
 #include <math.h>
 #include <string.h>
@@ -30,12 +31,8 @@ static void image_destroy(GMaterial *self)
     gmem_free(im);
 }
 
-static double srgb_decode(double v)
-{
-    return v <= 0.04045 ? v / 12.92 : pow((v + 0.055) / 1.055, 2.4);
-}
-
-/* The linear texel colour at the point, looked up once per point (cached under the node). */
+/* The linear texel colour at the point, looked up once per point (cached under the node). NaN, infinite and
+ * negative texels (possible in float files) become 0: they would otherwise reach the pixels. */
 static void texel(const Image *im, GSurfPoint *sp, double rgb[3])
 {
     GVec3 c;
@@ -47,8 +44,10 @@ static void texel(const Image *im, GSurfPoint *sp, double rgb[3])
     }
     float v[3];
     gtexsys_lookup(im->ts, im->file, im->swrap, im->twrap, sp->u, 1.0 - sp->v, sp->uv_footprint, im->blur, v);
-    for (int i = 0; i < 3; i++)
-        rgb[i] = im->srgb ? srgb_decode(v[i]) : v[i];
+    for (int i = 0; i < 3; i++) {
+        double x = im->srgb ? gimage_srgb_decode(v[i]) : v[i];
+        rgb[i] = isfinite(x) && x > 0.0 ? x : 0.0;
+    }
     gsurfpoint_cache_put(sp, im, 1.0, gvec3(rgb[0], rgb[1], rgb[2]));
 }
 

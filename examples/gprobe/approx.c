@@ -122,6 +122,9 @@ int cmd_approx(int argc, char **argv)
             "# the colour is the irradiance on a surface facing the light (linear Rec.709 RGB).\n",
             kept, pa.path, gprobe_width(p), gprobe_height(p), tech, m, e.mean_rel, e.max_rel, e.mean_norm, R[2], R[5],
             R[8], pa.rotate ? " after --rotate" : "");
+    if (gprobe_clamped_count(p) > 0)
+        fprintf(to.f, "# %ld probe pixels had negative, NaN, infinite or too large values and were clamped.\n",
+                gprobe_clamped_count(p));
     if (kept < n)
         fprintf(to.f, "# %d of the %d lights carry no energy and are left out.\n", n - kept, n);
     for (int i = 0; i < n; i++) {

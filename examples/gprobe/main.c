@@ -158,8 +158,9 @@ GProbe *probe_args_load(const ProbeArgs *a)
         return NULL;
     }
     if (gprobe_clamped_count(p) > 0 && !a->quiet)
-        fprintf(stderr, "gprobe: warning: %s: %ld pixels had negative, NaN or infinite values, set to 0\n", a->path,
-                gprobe_clamped_count(p));
+        fprintf(stderr, "gprobe: warning: %s: %ld pixels had negative, NaN or infinite values (set to 0) or values above "
+                "%g (clamped)\n", a->path,
+                gprobe_clamped_count(p), (double)GPROBE_MAX_RADIANCE);
     if (a->rotate) {
         double R[9];
         gprobe_rotation_xyz(a->rot[0], a->rot[1], a->rot[2], R);

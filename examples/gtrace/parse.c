@@ -239,6 +239,8 @@ static int parse_light(GReader *r, const void *vtable, void **object, GError *er
     }
     if (rc == G_OK && !color.v)
         rc = greader_error(r, err, "the light needs its %s (a colour)", light_color_key[type]);
+    if (rc == G_OK && !gcolor_is_nonnegative(&color))
+        rc = greader_error(r, err, "the light's %s must be finite and >= 0 in every sample", light_color_key[type]);
     if (rc == G_OK && type == L_DIRECTIONAL) {
         if (gvec3_length(dir) == 0.0)
             rc = greader_error(r, err, "the direction must not be zero");

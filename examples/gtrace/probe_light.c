@@ -343,5 +343,8 @@ void probe_describe(const Scene *s, FILE *f)
             fprintf(f, ", %d lights (%d with energy), mean irradiance error %.2f%%", e->count, e->nlights,
                     e->error_mean);
         fprintf(f, ", prepared in %.3f s\n", e->seconds);
+        if (gprobe_clamped_count(e->probe) > 0)
+            fprintf(f, "gtrace: warning: probe %s: %ld pixels had negative, NaN, infinite or too large values, "
+                    "clamped\n", e->file, gprobe_clamped_count(e->probe));
     }
 }

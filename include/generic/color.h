@@ -174,6 +174,8 @@ double gcolor_brightness(const GColor *c);
 int gcolor_add_scaled(GColor *out, const GColor *a, double s);
 /** 1 when every sample is finite, 0 otherwise. */
 int gcolor_is_finite(const GColor *c);
+/** 1 when every sample is finite and >= 0 (a physical light or reflectance), 0 otherwise. */
+int gcolor_is_nonnegative(const GColor *c);
 
 /* ---- conversions ---- */
 

@@ -12,7 +12,9 @@
  * 8-bit formats (PNG, TIFF, ...), premultiplied by the usual convention of EXR.
  *
  * Writing picks the encoding from the file name's extension:
- *   .exr .hdr .pfm                      linear float (EXR: 32-bit float, exact);
+ *   .exr .hdr                           linear float (EXR: 32-bit float, exact);
+ *   .pfm                                linear float where OpenImageIO has a PFM writer (Debian 12's 2.4
+ *                                       has none: the write fails with G_ERR_IO and writes nothing);
  *   anything else (.png .jpg .jpeg .tif .tiff .bmp .tga ...)
  *                                       8 bits per channel, sRGB encoded after the exposure, clamped
  *                                       to [0, 1] (alpha is clamped, not encoded).
@@ -62,7 +64,8 @@ void gimage_free(GImage *img);
  * reason), G_ERR_NOMEM when out of memory. On failure img is zeroed. */
 int gimage_read(const char *path, unsigned flags, GImage *img, GError *err);
 
-/** Reads only the size and channel count of a file (channels as the file has them, 1..n). */
+/** Reads only the size and channel count of a file (channels as the file has them, 1..n). G_ERR_IO when
+ * the file cannot be opened or its header gives a size or channel count below 1. */
 int gimage_info(const char *path, int *width, int *height, int *channels, GError *err);
 
 /** Writes img to path, encoding chosen by the extension (see the top of this file); the file appears

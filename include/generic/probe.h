@@ -55,9 +55,13 @@ typedef enum GProbeFormat {
 
 /* ---- creation ---- */
 
+/** The largest radiance a probe pixel keeps: larger finite values are clamped to it (far above any real
+ * scene, the sun's disc included, and small enough that sums over a probe stay finite in float). */
+#define GPROBE_MAX_RADIANCE 1e20f
+
 /** Creates a lat-long probe from `rgb` (width * height * 3 floats, rows from the zenith down; NULL gives a
- * black probe). width must be 2 * height, height >= 2. Negative, NaN and infinite values are set to 0
- * (see gprobe_clamped_count). */
+ * black probe). width must be 2 * height, height >= 2. Negative, NaN and infinite values are set to 0,
+ * values above GPROBE_MAX_RADIANCE to that (see gprobe_clamped_count). */
 int gprobe_create(int width, int height, const float *rgb, GProbe **out, GError *err);
 
 /** Loads a probe from any image OpenImageIO reads (EXR, HDR, PFM, TIFF, ...). `format` says how to read it
@@ -81,7 +85,7 @@ int gprobe_height(const GProbe *p);
 const float *gprobe_pixels(const GProbe *p);
 /** The pixel weights Q (see the top of this file), 3 floats per pixel. */
 const float *gprobe_weights(const GProbe *p);
-/** Number of pixels that had a negative, NaN or infinite value set to 0 when the probe was made. */
+/** Number of pixels that had a negative, NaN, infinite or too large value clamped when the probe was made. */
 long gprobe_clamped_count(const GProbe *p);
 
 /** Direction of a point of the lat-long image in pixel units (u + 0.5, v + 0.5 is the centre of pixel u, v). */

@@ -126,28 +126,39 @@ int gprobe_irradiance(const GProbe *p, const GVec3 *normals, int m, double *E, G
         rho[i] = sqrt(normals[i].x * normals[i].x + normals[i].y * normals[i].y);
         phin[i] = M_PI - atan2(normals[i].y, normals[i].x); /* the column phase of the normal, in [0, 2 pi] */
     }
-    memset(E, 0, sizeof(double) * 3 * (size_t)m);
+    /* Rows are summed in a fixed number of blocks (each block's rows in order, then the blocks in order), so
+     * the result does not depend on the threads' timing: fits built on it repeat exactly. The block count
+     * keeps the partial sums under 64 MiB. */
+    int blocks = p->h < 32 ? p->h : 32;
+    while (blocks > 1 && (double)blocks * m * 3 * sizeof(double) > 64.0 * 1024 * 1024)
+        blocks /= 2;
+    double *part = gmem_calloc((size_t)blocks * m * 3, sizeof(double));
+    if (!part) {
+        gmem_free(rho);
+        return gerror_set(err, G_ERR_NOMEM, "out of memory computing irradiance");
+    }
     int failed = 0;
     #pragma omp parallel
     {
         double *pre = gmem_alloc(sizeof(double) * 9 * (size_t)(p->w + 1));
-        double *acc = gmem_calloc((size_t)m * 3, sizeof(double));
-        if (!pre || !acc) {
+        if (!pre) {
             #pragma omp atomic write
             failed = 1;
         }
-        #pragma omp for schedule(dynamic, 2)
-        for (int v = 0; v < p->h; v++)
-            if (pre && acc)
-                row_irradiance(p, v, normals, rho, phin, m, pre, acc);
-        if (pre && acc) {
-            #pragma omp critical
-            for (int i = 0; i < 3 * m; i++)
-                E[i] += acc[i];
-        }
+        #pragma omp for schedule(dynamic, 1)
+        for (int b = 0; b < blocks; b++)
+            if (pre)
+                for (int v = (int)((long)p->h * b / blocks); v < (int)((long)p->h * (b + 1) / blocks); v++)
+                    row_irradiance(p, v, normals, rho, phin, m, pre, part + (size_t)b * m * 3);
         gmem_free(pre);
-        gmem_free(acc);
     }
+    for (size_t i = 0; i < (size_t)m * 3; i++) {
+        double e = 0.0;
+        for (int b = 0; b < blocks; b++)
+            e += part[(size_t)b * m * 3 + i];
+        E[i] = e;
+    }
+    gmem_free(part);
     gmem_free(rho);
     if (failed)
         return gerror_set(err, G_ERR_NOMEM, "out of memory computing irradiance");

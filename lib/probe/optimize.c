@@ -71,26 +71,37 @@ static void dots(const Fit *f, const GVec3 *dir, double *A)
     }
 }
 
-/* F and the weighted residuals for colours L (3 per light) with the weighted dot products A. */
+/* F and the weighted residuals for colours L (3 per light) with the weighted dot products A. F is summed in
+ * OBJECTIVE_BLOCKS fixed blocks of normals added in order, so it does not depend on the number of threads
+ * or their timing: the fit's accept/reject decisions, and so its result, are the same on every run. */
+#define OBJECTIVE_BLOCKS 64
 static double objective(const Fit *f, const double *A, const double *L, double *res)
 {
-    double F = 0.0;
-    #pragma omp parallel for schedule(static) reduction(+ : F) if (f->n * (long)f->m > 400000)
-    for (int k = 0; k < f->m; k++) {
-        double e[3] = {0, 0, 0};
-        for (int i = 0; i < f->n; i++) {
-            double a = A[(size_t)i * f->m + k];
-            if (a > 0.0)
-                for (int c = 0; c < 3; c++)
-                    e[c] += a * L[i * 3 + c];
+    double part[OBJECTIVE_BLOCKS] = {0};
+    #pragma omp parallel for schedule(static) if (f->n * (long)f->m > 400000)
+    for (int b = 0; b < OBJECTIVE_BLOCKS; b++) {
+        const int k0 = (int)((long)f->m * b / OBJECTIVE_BLOCKS), k1 = (int)((long)f->m * (b + 1) / OBJECTIVE_BLOCKS);
+        double F = 0.0;
+        for (int k = k0; k < k1; k++) {
+            double e[3] = {0, 0, 0};
+            for (int i = 0; i < f->n; i++) {
+                double a = A[(size_t)i * f->m + k];
+                if (a > 0.0)
+                    for (int c = 0; c < 3; c++)
+                        e[c] += a * L[i * 3 + c];
+            }
+            for (int c = 0; c < 3; c++) {
+                double r = f->s[c] * (e[c] - f->wE[(size_t)c * f->m + k]);
+                if (res)
+                    res[k * 3 + c] = r;
+                F += r * r;
+            }
         }
-        for (int c = 0; c < 3; c++) {
-            double r = f->s[c] * (e[c] - f->wE[(size_t)c * f->m + k]);
-            if (res)
-                res[k * 3 + c] = r;
-            F += r * r;
-        }
+        part[b] = F;
     }
+    double F = 0.0;
+    for (int b = 0; b < OBJECTIVE_BLOCKS; b++)
+        F += part[b];
     return F;
 }
 

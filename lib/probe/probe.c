@@ -106,6 +106,9 @@ int gprobe_create(int width, int height, const float *rgb, GProbe **out, GError 
                 if (!(v >= 0.0f) || isinf(v)) { /* negative, NaN or infinite */
                     v = 0.0f;
                     pixel_bad = 1;
+                } else if (v > GPROBE_MAX_RADIANCE) { /* sums of such values would overflow the weights */
+                    v = GPROBE_MAX_RADIANCE;
+                    pixel_bad = 1;
                 }
                 p->rgb[i * 3 + c] = v;
             }

@@ -41,16 +41,14 @@
 
 #define GFUZZ_FN static __attribute__((unused))
 
-/* Leaks in the system libraries, not in this code, suppressed by a frame of their allocation stack:
- *   - OpenImageIO 2.4's TextureSystem::destroy(ts) without its teardown flag never frees the private ImageCache
- *     the texture system made (lib/texture_oiio.cpp calls it so; teardown_imagecache = true fixes it);
- *   - OpenImageIO's PNG reader keeps its error message in a std::string across libpng's longjmp, which skips the
- *     destructor, on every corrupt PNG (fuzz_image unwinds slowly so that this frame is seen).
+/* A leak in a system library, not in this code, suppressed by a frame of its allocation stack: OpenImageIO's PNG
+ * reader keeps its error message in a std::string across libpng's longjmp, which skips the destructor, on every
+ * corrupt PNG (fuzz_image unwinds slowly so that this frame is seen).
  * One definition per program: include this header once. */
 const char *__lsan_default_suppressions(void);
 const char *__lsan_default_suppressions(void)
 {
-    return "leak:OpenImageIO_v2_4::aligned_malloc\nleak:PNGInput::PngReadCallback\n";
+    return "leak:PNGInput::PngReadCallback\n";
 }
 
 /** Inputs longer than this are skipped (keeps every execution fast; the format limits are tested elsewhere). */
