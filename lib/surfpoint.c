@@ -68,7 +68,7 @@ int gsurfpoint_cache_get(const GSurfPoint *sp, const void *key, double *value, G
 {
     int n = sp->ncache < GSURF_CACHE_SLOTS ? sp->ncache : GSURF_CACHE_SLOTS;
     for (int i = 0; i < n; i++)
-        if (sp->cache[i].key == key) {
+        if (sp->cache[i].key == key && sp->cache_slot_scope[i] == sp->cache_scope) {
             if (value)
                 *value = sp->cache[i].value;
             if (gradient)
@@ -82,7 +82,7 @@ void gsurfpoint_cache_put(GSurfPoint *sp, const void *key, double value, GVec3 g
 {
     int n = sp->ncache < GSURF_CACHE_SLOTS ? sp->ncache : GSURF_CACHE_SLOTS;
     for (int i = 0; i < n; i++)
-        if (sp->cache[i].key == key) { /* a key has one slot: replace its value */
+        if (sp->cache[i].key == key && sp->cache_slot_scope[i] == sp->cache_scope) { /* one slot per key: replace */
             sp->cache[i].value = value;
             sp->cache[i].gradient = gradient;
             return;
@@ -91,6 +91,30 @@ void gsurfpoint_cache_put(GSurfPoint *sp, const void *key, double value, GVec3 g
     sp->cache[slot].key = key;
     sp->cache[slot].value = value;
     sp->cache[slot].gradient = gradient;
+    sp->cache_slot_scope[slot] = sp->cache_scope;
     /* after the slots are full, keep ncache in [GSURF_CACHE_SLOTS, 2 * GSURF_CACHE_SLOTS) so it never overflows */
     sp->ncache = sp->ncache + 1 >= 2 * GSURF_CACHE_SLOTS ? GSURF_CACHE_SLOTS : sp->ncache + 1;
+}
+
+/* splitmix64's finaliser: a scope is a hash of the chain of nodes that moved the coordinates (64 bits: two
+ * different chains meeting on the same point collide with probability about 2^-64). */
+static uint64_t mix64(uint64_t x)
+{
+    x ^= x >> 30;
+    x *= 0xbf58476d1ce4e5b9ull;
+    x ^= x >> 27;
+    x *= 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
+}
+
+void gsurfpoint_cache_enter(GSurfPoint *q, const GSurfPoint *sp, const void *node)
+{
+    q->cache_scope = mix64(sp->cache_scope * 0x9e3779b97f4a7c15ull + (uint64_t)(uintptr_t)node) | 1u;
+}
+
+void gsurfpoint_cache_return(GSurfPoint *sp, const GSurfPoint *q)
+{
+    sp->ncache = q->ncache;
+    memcpy(sp->cache, q->cache, sizeof sp->cache);
+    memcpy(sp->cache_slot_scope, q->cache_slot_scope, sizeof sp->cache_slot_scope);
 }

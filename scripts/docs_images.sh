@@ -32,4 +32,9 @@ done
 "$BUILD/bin/gtrace" examples/scenes/fluorescent_fig1.scene -o "$tmp/fig1_sp.png" -q --width 480 --height 300 \
     --colormodel spectrum
 oiiotool "$tmp/fig1_bi.png" "$tmp/fig1_sp.png" --mosaic:pad=4 2x1 -o "$out/fluorescent_fig1.png"
+# Fig. 10 set-up of Wilkie et al. rendered by gtrace (bispectral): the lit spot seen from the target, 5, 20, 60 degrees
+for e in 05 20 60; do
+    "$BUILD/bin/gtrace" examples/scenes/fluorescent_fig10_$e.scene -o "$tmp/fig10_$e.png" -q --width 240 --height 240
+done
+oiiotool "$tmp/fig10_05.png" "$tmp/fig10_20.png" "$tmp/fig10_60.png" --mosaic:pad=4 3x1 -o "$out/fluorescent_fig10.png"
 echo "docs images written to $out/ (swatches, row by row: $names)"

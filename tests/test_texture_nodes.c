@@ -528,7 +528,8 @@ static void test_transform_moves_patterns(void **state)
     gmaterial_unref(&white->base);
 }
 
-/* The copy under a transform starts with empty caches but keeps the tree's shading normal. */
+/* Values cached below a transform belong to the moved coordinates: never confused with the same generator's
+ * value above it, yet kept across method calls through the transform (each generator once per point). */
 static void test_transform_cache_semantics(void **state)
 {
     Fix *f = *state;
@@ -549,6 +550,35 @@ static void test_transform_cache_semantics(void **state)
     assert_float_equal(color_r(&f->c), 0.6, 1e-6);
     assert_int_equal(gmaterial_diffuse(pat, &f->sp, &f->c), G_OK); /* and the cache above is untouched */
     assert_float_equal(color_r(&f->c), 0.2, 1e-6);
+    assert_int_equal(gmaterial_diffuse(moved, &f->sp, &f->c), G_OK); /* and below, found again */
+    assert_float_equal(color_r(&f->c), 0.6, 1e-6);
+
+    /* a counting generator under two nested transforms: once per point over a sequence of calls */
+    CountGen *g = countgen_new(0.5);
+    GMaterial *inner, *mid, *outer;
+    assert_int_equal(gnode_interpolate_create(&a->base, &b->base, &g->base, &inner, &err), G_OK);
+    GAffine2 s2 = gaffine2_translate(0.25, 0.0);
+    assert_int_equal(gnode_transform_create(inner, &s2, NULL, &mid, &err), G_OK);
+    assert_int_equal(gnode_transform_create(mid, &t, NULL, &outer, &err), G_OK);
+    gsurfpoint_invalidate(&f->sp);
+    f->sp.material = outer;
+    for (int light = 0; light < 4; light++)
+        assert_int_equal(gmaterial_reflection(outer, &f->sp, gvec3(0, 0, 1), &f->illum, gvec3(0, 0, 1), &f->c), G_OK);
+    call_all(f, outer);
+    assert_int_equal(g->calls, 1);
+    /* the same subtree reached without the outer transform is at other coordinates: evaluated again */
+    assert_int_equal(gmaterial_diffuse(mid, &f->sp, &f->c), G_OK);
+    assert_int_equal(g->calls, 2);
+    assert_int_equal(gmaterial_diffuse(mid, &f->sp, &f->c), G_OK);
+    assert_int_equal(gmaterial_diffuse(outer, &f->sp, &f->c), G_OK);
+    assert_int_equal(g->calls, 2);
+    gsurfpoint_invalidate(&f->sp); /* a new point evaluates again */
+    assert_int_equal(gmaterial_diffuse(outer, &f->sp, &f->c), G_OK);
+    assert_int_equal(g->calls, 3);
+    gmaterial_unref(outer);
+    gmaterial_unref(mid);
+    gmaterial_unref(inner);
+    ggenerator_unref(&g->base);
     gmaterial_unref(moved);
     gmaterial_unref(pat);
     ggenerator_unref(chk);

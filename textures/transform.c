@@ -36,7 +36,7 @@ static void move(const Transform *t, GSurfPoint *sp, GSurfPoint *q, int for_norm
             gsurfpoint_relative_index(sp);
     }
     *q = *sp;
-    q->ncache = 0;
+    gsurfpoint_cache_enter(q, sp, t);
     if (t->has_uv) {
         const double *m = t->uv.m;
         gaffine2_apply(&t->uv_inv, sp->u, sp->v, &q->u, &q->v);
@@ -61,7 +61,9 @@ static int transform_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in,
 {
     GSurfPoint q;
     move(T(self), sp, &q, 0, 1);
-    return gmaterial_reflection(CHILD(self), &q, in, illum, out, result);
+    int rc = gmaterial_reflection(CHILD(self), &q, in, illum, out, result);
+    gsurfpoint_cache_return(sp, &q);
+    return rc;
 }
 
 static int transform_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
@@ -69,7 +71,9 @@ static int transform_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in,
 {
     GSurfPoint q;
     move(T(self), sp, &q, 0, 1);
-    return gmaterial_refraction(CHILD(self), &q, in, illum, rel_index, out, result);
+    int rc = gmaterial_refraction(CHILD(self), &q, in, illum, rel_index, out, result);
+    gsurfpoint_cache_return(sp, &q);
+    return rc;
 }
 
 static int transform_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
@@ -78,14 +82,18 @@ static int transform_refraction_index(const GMaterial *self, GSurfPoint *sp, GCo
         return gmaterial_refraction_index(CHILD(self), NULL, result);
     GSurfPoint q;
     move(T(self), sp, &q, 0, 0);
-    return gmaterial_refraction_index(CHILD(self), &q, result);
+    int rc = gmaterial_refraction_index(CHILD(self), &q, result);
+    gsurfpoint_cache_return(sp, &q);
+    return rc;
 }
 
 static int transform_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
 {
     GSurfPoint q;
     move(T(self), sp, &q, 0, 0);
-    return gmaterial_reflection_dir(CHILD(self), &q, view, dir);
+    int rc = gmaterial_reflection_dir(CHILD(self), &q, view, dir);
+    gsurfpoint_cache_return(sp, &q);
+    return rc;
 }
 
 static int transform_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
@@ -93,21 +101,27 @@ static int transform_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3
 {
     GSurfPoint q;
     move(T(self), sp, &q, 0, 1);
-    return gmaterial_refraction_dir(CHILD(self), &q, view, rel_index, dir);
+    int rc = gmaterial_refraction_dir(CHILD(self), &q, view, rel_index, dir);
+    gsurfpoint_cache_return(sp, &q);
+    return rc;
 }
 
 static int transform_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result)
 {
     GSurfPoint q;
     move(T(self), sp, &q, 0, 0);
-    return gmaterial_emission(CHILD(self), &q, out, result);
+    int rc = gmaterial_emission(CHILD(self), &q, out, result);
+    gsurfpoint_cache_return(sp, &q);
+    return rc;
 }
 
 static int transform_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
 {
     GSurfPoint q;
     move(T(self), sp, &q, 0, 0);
-    return gmaterial_ambient(CHILD(self), &q, illum, result);
+    int rc = gmaterial_ambient(CHILD(self), &q, illum, result);
+    gsurfpoint_cache_return(sp, &q);
+    return rc;
 }
 
 static int transform_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
@@ -117,28 +131,36 @@ static int transform_absorption(const GMaterial *self, GSurfPoint *sp, const GCo
         return gmaterial_absorption(CHILD(self), NULL, illum, length, result);
     GSurfPoint q;
     move(T(self), sp, &q, 0, 0);
-    return gmaterial_absorption(CHILD(self), &q, illum, length, result);
+    int rc = gmaterial_absorption(CHILD(self), &q, illum, length, result);
+    gsurfpoint_cache_return(sp, &q);
+    return rc;
 }
 
 static int transform_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
 {
     GSurfPoint q;
     move(T(self), sp, &q, 1, 0);
-    return gmaterial_normal(CHILD(self), &q, n);
+    int rc = gmaterial_normal(CHILD(self), &q, n);
+    gsurfpoint_cache_return(sp, &q);
+    return rc;
 }
 
 static int transform_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
 {
     GSurfPoint q;
     move(T(self), sp, &q, 0, 0);
-    return gmaterial_diffuse(CHILD(self), &q, result);
+    int rc = gmaterial_diffuse(CHILD(self), &q, result);
+    gsurfpoint_cache_return(sp, &q);
+    return rc;
 }
 
 static int transform_opaque(const GMaterial *self, GSurfPoint *sp)
 {
     GSurfPoint q;
     move(T(self), sp, &q, 0, 0);
-    return gmaterial_opaque(CHILD(self), &q);
+    int rc = gmaterial_opaque(CHILD(self), &q);
+    gsurfpoint_cache_return(sp, &q);
+    return rc;
 }
 
 const GMaterialClass gnode_transform_class = {

@@ -10,6 +10,8 @@
 #include "vec.h"
 #include "color.h"
 
+#include <stdint.h>
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -53,6 +55,10 @@ typedef struct GSurfPoint {
     GVec3 object_dpdu, object_dpdv; /**< tangents along u and v in object space, for the derivatives of solid
                                          textures (zero = unknown: dpdu/dpdv are used, exact when the object's
                                          transform to world space is a translation) */
+    /* private: the coordinates the cached generator values belong to (0: the point's own; see
+     * gsurfpoint_cache_enter) and the scope of each slot */
+    uint64_t cache_scope;
+    uint64_t cache_slot_scope[GSURF_CACHE_SLOTS];
 } GSurfPoint;
 
 /** Clears a surface point (all fields zero, caches empty) and sets its model and arena. */
@@ -69,6 +75,13 @@ double gsurfpoint_relative_index(GSurfPoint *sp);
 int gsurfpoint_cache_get(const GSurfPoint *sp, const void *key, double *value, GVec3 *gradient);
 /** Caches a value under key (the oldest slot is reused when all are taken). */
 void gsurfpoint_cache_put(GSurfPoint *sp, const void *key, double value, GVec3 gradient);
+/** For a node that evaluates its subtree at moved coordinates (a transform): makes q, a copy of sp with moved
+ * fields, use its own cache scope derived from sp's and `node`. Values the subtree caches on q are then found
+ * again on the next call through the same node (after gsurfpoint_cache_return) and never mistaken for values
+ * at sp's own coordinates, even when a generator is shared inside and outside the subtree. */
+void gsurfpoint_cache_enter(GSurfPoint *q, const GSurfPoint *sp, const void *node);
+/** Hands the generator cache of q (made by gsurfpoint_cache_enter from sp) back to sp after the subtree's call. */
+void gsurfpoint_cache_return(GSurfPoint *sp, const GSurfPoint *q);
 
 #ifdef __cplusplus
 }
