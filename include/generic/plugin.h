@@ -34,9 +34,10 @@
 extern "C" {
 #endif
 
-/** Version of the module interface: GModuleApi, GTypeInfo, GParseFn, the reader API and the vtables of every
- * kind. Raised whenever any of them changes incompatibly. */
-#define GMODULE_ABI_VERSION 1
+/** Version of the module interface: GModuleApi, GTypeInfo, GParseFn, the reader API, the vtables of every
+ * kind and the layout of the structures they pass (GSurfPoint). Raised whenever any of them changes
+ * incompatibly. 2: GSurfPoint grew by the cache scopes of transform nodes. */
+#define GMODULE_ABI_VERSION 2
 
 /** Name of the exported `const int` holding the module's GMODULE_ABI_VERSION. */
 #define GMODULE_ABI_SYMBOL "generic_module_abi"
