@@ -1,5 +1,7 @@
 /* transform.c - the transform node: the subtree is evaluated on a copy of the surface point whose (u, v)
- * and object-space point (with their tangents and footprints) are moved, which moves its patterns. */
+ * and object-space point (with their tangents and footprints) are moved, which moves its patterns. The copy
+ * caches its generator values in its own scope (gsurfpoint_cache_enter) and hands them back after each call,
+ * so the subtree's generators run once per point however many methods are called through the node. */
 #include "node_common.h"
 #include "textures_builtin.h"
 
