@@ -106,13 +106,13 @@ static void test_bfc(void **state)
 static void test_probe(void **state)
 {
     (void)state;
-    replay("probe", gfuzz_probe, 0);
+    replay("probe", gfuzz_probe, 1);
 }
 
 static void test_image(void **state)
 {
     (void)state;
-    replay("image", gfuzz_image, 0);
+    replay("image", gfuzz_image, 1);
 }
 
 /* The promises the entry points check do fail on broken values (so the replay above cannot pass vacuously). */

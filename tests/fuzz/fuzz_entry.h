@@ -63,10 +63,6 @@ static unsigned long gfuzz_serial; /* numbers the image files: the texture syste
 /* An image node kept for the whole run, so the texture system it shares with the nodes of every input is made
  * once (making and freeing one per input costs more than the rest of the input). */
 static GLibrary *gfuzz_keep;
-/* Set while evaluating an image node over an image that holds NaN or infinity: the node passes such texels
- * through (a known gap of textures/image.c; renderers must clamp, as gtrace does), so non-finite results are
- * not counted as a violation there. */
-static int gfuzz_nonfinite_texels;
 static GColorModel *gfuzz_models[4]; /* rgb, spectrum (5 nm), spectrum9, bispectral (made once) */
 
 GFUZZ_FN int gfuzz_violation(const char *fmt, ...)
@@ -174,7 +170,7 @@ GFUZZ_FN int gfuzz_setup(void)
 
 static int gfuzz_color_ok(const GColor *c, const char *what)
 {
-    if (!gcolor_is_finite(c) && !gfuzz_nonfinite_texels)
+    if (!gcolor_is_finite(c))
         return gfuzz_violation("%s is not finite", what);
     return 0;
 }
@@ -467,12 +463,11 @@ static const char *gfuzz_image_ext(const uint8_t *d, size_t n)
 }
 
 /* Writes the bytes as private/input-N.EXT (name: its last path component): 0 to go on, 1 to skip the input (it
- * cannot be written, or its header claims more than GFUZZ_MAX_PIXELS). *sized says whether OpenImageIO reads a
- * positive size from it. The caller removes the file. */
+ * cannot be written, or its header claims more than GFUZZ_MAX_PIXELS), -1 when gimage_info accepts a header
+ * with a size below 1. The caller removes the file. */
 static int gfuzz_image_file(const uint8_t *data, size_t size, const char *ext, char *path, size_t pathsize,
-                            char *name, size_t namesize, int *sized)
+                            char *name, size_t namesize)
 {
-    *sized = 0;
     snprintf(name, namesize, "input-%lu%s", ++gfuzz_serial, ext);
     if (gfuzz_write(name, data, size, path, pathsize) != 0) {
         unlink(path);
@@ -481,11 +476,10 @@ static int gfuzz_image_file(const uint8_t *data, size_t size, const char *ext, c
     int w = 0, h = 0, ch = 0;
     GError err;
     int rc = gimage_info(path, &w, &h, &ch, &err);
-    /* gimage_info passes on whatever size the header states, also 0 (a known gap of lib/image.cpp; gimage_read
-     * refuses such files) */
+    if (rc == G_OK && (w <= 0 || h <= 0 || ch < 1))
+        return gfuzz_violation("gimage_info accepted a size of %dx%d with %d channels", w, h, ch);
     if (rc == G_OK && (long)w * h > GFUZZ_MAX_PIXELS)
         return 1;
-    *sized = rc == G_OK && w > 0 && h > 0;
     return 0;
 }
 
@@ -504,8 +498,7 @@ GFUZZ_FN int gfuzz_probe(const uint8_t *data, size_t size)
         return 0;
     const char *ext = size >= 2 && data[0] == 'P' ? ".pfm" : ".hdr";
     char path[4200], name[64];
-    int sized = 0;
-    int skip = gfuzz_image_file(data, size, ext, path, sizeof path, name, sizeof name, &sized);
+    int skip = gfuzz_image_file(data, size, ext, path, sizeof path, name, sizeof name);
     if (skip) {
         unlink(path);
         return skip < 0 ? -1 : 0;
@@ -524,14 +517,11 @@ GFUZZ_FN int gfuzz_probe(const uint8_t *data, size_t size)
         bad = gfuzz_violation("probe of %dx%d", w, h);
     if (!bad)
         bad = gfuzz_pixels_ok(gprobe_pixels(p), (size_t)w * h * 3, 1, "probe pixels");
-    /* Pixels near the float limit overflow the weights Q = 2 pi^2 P sin(theta) / (W H) of a small probe (a
-     * known gap of lib/probe/probe.c: such values should be clamped and counted like NaN): then only the pixels
-     * are checked. */
-    float top = 0.0f;
+    /* pixels above GPROBE_MAX_RADIANCE are clamped, so the weights and the lights are always finite */
     for (size_t i = 0; !bad && i < (size_t)w * h * 3; i++)
-        top = fmaxf(top, gprobe_pixels(p)[i]);
-    int huge = top > FLT_MAX / 64.0f;
-    if (!bad && !huge)
+        if (gprobe_pixels(p)[i] > GPROBE_MAX_RADIANCE)
+            bad = gfuzz_violation("pixel %zu is %g, above GPROBE_MAX_RADIANCE", i, gprobe_pixels(p)[i]);
+    if (!bad)
         bad = gfuzz_pixels_ok(gprobe_weights(p), (size_t)w * h * 3, 1, "probe weights");
     if (!bad && gprobe_clamped_count(p) < 0)
         bad = gfuzz_violation("negative clamped count");
@@ -548,7 +538,7 @@ GFUZZ_FN int gfuzz_probe(const uint8_t *data, size_t size)
             bad = gfuzz_error_ok(rc, &err, gprobe_technique_name(runs[r].t));
             continue;
         }
-        for (int i = 0; i < runs[r].n && !bad && !huge; i++) {
+        for (int i = 0; i < runs[r].n && !bad; i++) {
             if (gfuzz_vec_ok(lights[i].dir, "light direction") || !isfinite(lights[i].rgb[0]) ||
                 !isfinite(lights[i].rgb[1]) || !isfinite(lights[i].rgb[2]) || lights[i].rgb[0] < 0 ||
                 lights[i].rgb[1] < 0 || lights[i].rgb[2] < 0)
@@ -561,7 +551,7 @@ GFUZZ_FN int gfuzz_probe(const uint8_t *data, size_t size)
     double E[18];
     gprobe_fibonacci(6, normals);
     if (!bad && gprobe_irradiance(p, normals, 6, E, &err) == G_OK)
-        for (int i = 0; i < 18 && !bad && !huge; i++)
+        for (int i = 0; i < 18 && !bad; i++)
             if (!isfinite(E[i]) || E[i] < 0)
                 bad = gfuzz_violation("irradiance %d is %g", i, E[i]);
     gprobe_destroy(p);
@@ -575,8 +565,7 @@ GFUZZ_FN int gfuzz_image(const uint8_t *data, size_t size)
         return 0;
     const char *ext = gfuzz_image_ext(data, size);
     char path[4200], name[64];
-    int sized = 0;
-    int skip = gfuzz_image_file(data, size, ext, path, sizeof path, name, sizeof name, &sized);
+    int skip = gfuzz_image_file(data, size, ext, path, sizeof path, name, sizeof name);
     if (skip) {
         unlink(path);
         return skip < 0 ? -1 : 0;
@@ -587,7 +576,6 @@ GFUZZ_FN int gfuzz_image(const uint8_t *data, size_t size)
     gerror_clear(&err);
     int rc = gimage_read(path, flags[size % 4], &img, &err);
     int bad = 0;
-    gfuzz_nonfinite_texels = 0;
     if (rc != G_OK) {
         bad = gfuzz_error_ok(rc, &err, "gimage_read");
         if (!bad && (img.pixels || img.width || img.height))
@@ -597,9 +585,6 @@ GFUZZ_FN int gfuzz_image(const uint8_t *data, size_t size)
             (flags[size % 4] & GIMAGE_READ_RGB && img.channels != 3) ||
             (flags[size % 4] & GIMAGE_READ_RGBA && img.channels != 4))
             bad = gfuzz_violation("gimage_read gave %dx%d with %d channels", img.width, img.height, img.channels);
-        for (size_t i = 0; !bad && i < (size_t)img.width * img.height * img.channels; i++)
-            if (!isfinite(img.pixels[i]))
-                gfuzz_nonfinite_texels = 1;
         gimage_free(&img);
     }
     /* the image node (OpenImageIO's texture system) over the same file, in the rgb model */
@@ -608,11 +593,10 @@ GFUZZ_FN int gfuzz_image(const uint8_t *data, size_t size)
              "node n image { child lambert { reflectance rgb 0.8 0.8 0.8 } file \"%s\" wrap %s }\n", name,
              size % 2 ? "clamp" : "periodic");
     GReaderOptions opt = {.model = gfuzz_models[0], .no_plugins = 1};
-    /* A file whose header states a size of 0 or less passes the texture system's checks and then aborts the
-     * process in its first lookup (OpenImageIO 2.4; lib/texture_oiio.cpp does not check the size yet, a known
-     * gap: gtexsys_open should refuse them): such files only go through gimage_read. */
+    /* every file, also one whose header states a size below 1 (the image node must refuse it, not abort):
+     * the node's colours are finite (NaN and infinite texels become 0) */
     int here = open(".", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (!bad && sized && here >= 0 && chdir(gfuzz_dir) == 0) {
+    if (!bad && here >= 0 && chdir(gfuzz_dir) == 0) {
         GLibrary *lib = NULL;
         gerror_clear(&err);
         rc = greader_load_string(text, "fuzz.mat", &opt, &lib, &err);
@@ -627,7 +611,6 @@ GFUZZ_FN int gfuzz_image(const uint8_t *data, size_t size)
     if (here >= 0)
         close(here);
     unlink(path);
-    gfuzz_nonfinite_texels = 0;
     return bad;
 }
 
