@@ -74,10 +74,12 @@ void surfpoint_fill(TraceCtx *c, const Ray *r, const Hit *h, const Media *media,
     sp->v = g.v;
     sp->surface = g.surface;
     sp->t = h->t;
-    /* ray cone: width at the hit, widened by the slant of the surface */
+    /* ray cone: width at the hit, widened by the slant of the surface to the long axis of the footprint
+     * ellipse (w / cos): an isotropic filter as wide as that axis does not alias at grazing angles (the
+     * geometric mean of the axes, w / sqrt(cos), keeps the area but leaves moire on receding checkers) */
     double w = r->cone_width + r->cone_spread * h->t;
-    double cosv = fmax(fabs(dn), 0.01);
-    sp->footprint = w / sqrt(cosv);
+    double cosv = fmax(fabs(dn), 0.02);
+    sp->footprint = w / cosv;
     double area = gvec3_length(gvec3_cross(g.dpdu, g.dpdv));
     sp->uv_footprint = area > 0.0 ? sp->footprint / sqrt(area) : 0.0;
     sp->material = h->obj->material;
