@@ -274,7 +274,14 @@ int gcolor_from_reradiation(GColor *c, const GReradiation *r, GError *err)
         }
         s.v[i] = (float)v;
     }
-    return c->model->cls->from_nm(c->model, &s, GCOLOR_REFLECTANCE, c);
+    int rc = c->model->cls->from_nm(c->model, &s, GCOLOR_REFLECTANCE, c);
+    /* A fluorescent pigment's fold is often outside the rgb gamut (day-glo orange has a negative blue): a
+     * negative reflectance would subtract light, so such components become 0 (hue kept as far as the gamut
+     * allows; the spectral models sample the non-negative fold and are not affected). */
+    for (int i = 0; rc == G_OK && i < c->model->nvalues; i++)
+        if (c->v[i] < 0.0f)
+            c->v[i] = 0.0f;
+    return rc;
 }
 
 int gcolor_convert(GColor *dst, const GColor *src, GColorRole role)

@@ -369,6 +369,12 @@ static void test_models_agree(void **state)
         gcolor_wrap(&fold, md, fs);
         assert_int_equal(gcolor_from_reradiation(&fold, &r, &err), G_OK);
         assert_int_equal(fold.kind, k == 0 ? GCOLOR_MATRIX : GCOLOR_VECTOR);
+        if (k == 3) { /* rgb: the day-glo fold is outside the gamut (blue about -0.02): clamped to 0, red on top */
+            for (int s = 0; s < 3; s++)
+                assert_true(fold.v[s] >= 0.0f);
+            assert_float_equal(fold.v[2], 0.0, 0.0);
+            assert_true(fold.v[0] > 4.0 * fold.v[1]);
+        }
         flat_light(md, ls, &light);
         gcolor_wrap(&out, md, os);
         for (int j = 0; j < 2; j++) {
