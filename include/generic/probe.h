@@ -186,6 +186,7 @@ typedef struct GProbeFitReport {
     int active;         /**< lights with non-zero colour at the end */
     int converged;      /**< 1 when the iteration stopped by its convergence test, 0 at the iteration limit */
     int revived;        /**< lights that lost all colour and were moved and fitted again (kept results only) */
+    int reweighted;     /**< reweighting rounds towards the mean absolute error that were kept (0: none) */
 } GProbeFitReport;
 
 /** Approximates the probe by n directional lights with a technique (median cut needs n a power of 2).
