@@ -1,5 +1,6 @@
 /* test_texture_nodes.c - the texture tree nodes: interpolate (blending, the one-child fast path, the cached
- * generator), interpolate-one, select, spline, bump (the analytic tilt), scale, transform, and bad input. */
+ * generator), interpolate-one, select, spline, bump (the analytic tilt), scale, and bad input (the transform
+ * node: test_texture_transform.c). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -13,56 +14,7 @@
 
 #include <stdio.h>
 
-typedef struct Fix {
-    GColorModel *rgb;
-    GScratch *scratch;
-    GSurfPoint sp;
-    GColor c, illum;
-} Fix;
-
-static int setup(void **state)
-{
-    Fix *f = calloc(1, sizeof *f);
-    GError err;
-    if (!f || gcolormodel_create("rgb", NULL, &f->rgb, &err) != G_OK)
-        return -1;
-    f->scratch = gscratch_create(0);
-    gcolor_alloc(&f->c, f->rgb);
-    gcolor_alloc(&f->illum, f->rgb);
-    double one[3] = {1, 1, 1};
-    gcolor_from_rgb(&f->illum, one, GCOLOR_LIGHT);
-    plane_point(&f->sp, f->rgb, f->scratch, 0.3, 0.4);
-    *state = f;
-    return 0;
-}
-
-static int teardown(void **state)
-{
-    Fix *f = *state;
-    gcolor_free(&f->c);
-    gcolor_free(&f->illum);
-    gscratch_destroy(f->scratch);
-    gcolormodel_destroy(f->rgb);
-    free(f);
-    return 0;
-}
-
-/* Calls every method of m once on the point. */
-static void call_all(Fix *f, const GMaterial *m)
-{
-    GVec3 d, z = gvec3(0, 0, 1);
-    assert_int_equal(gmaterial_reflection(m, &f->sp, z, &f->illum, z, &f->c), G_OK);
-    assert_int_equal(gmaterial_refraction(m, &f->sp, z, &f->illum, NULL, gvec3(0, 0, -1), &f->c), G_OK);
-    assert_int_equal(gmaterial_refraction_index(m, &f->sp, &f->c), G_OK);
-    assert_true(gmaterial_reflection_dir(m, &f->sp, gvec3(0, 0, -1), &d) >= 0);
-    assert_true(gmaterial_refraction_dir(m, &f->sp, gvec3(0, 0, -1), NULL, &d) >= 0);
-    assert_int_equal(gmaterial_emission(m, &f->sp, z, &f->c), G_OK);
-    assert_int_equal(gmaterial_ambient(m, &f->sp, &f->illum, &f->c), G_OK);
-    assert_int_equal(gmaterial_absorption(m, &f->sp, &f->illum, 1.0, &f->c), G_OK);
-    assert_int_equal(gmaterial_normal(m, &f->sp, &d), G_OK);
-    assert_int_equal(gmaterial_diffuse(m, &f->sp, &f->c), G_OK);
-    assert_true(gmaterial_opaque(m, &f->sp) >= 0);
-}
+#include "node_fixture.h"
 
 static void test_interpolate_fast_path(void **state)
 {
@@ -444,148 +396,6 @@ static void test_scale(void **state)
     gmaterial_unref(&a->base);
 }
 
-/* A checker between black and white under a transform, read at (u, v). */
-static double checker_at(Fix *f, const GMaterial *tree, double u, double v)
-{
-    plane_point(&f->sp, f->rgb, f->scratch, u, v);
-    f->sp.material = tree;
-    assert_int_equal(gmaterial_diffuse(tree, &f->sp, &f->c), G_OK);
-    return color_r(&f->c);
-}
-
-static void test_transform_moves_patterns(void **state)
-{
-    Fix *f = *state;
-    CountMat *black = countmat_new(f->rgb, 0, 0, 0), *white = countmat_new(f->rgb, 1, 1, 1);
-    GGenerator *chk;
-    GMaterial *pat, *moved;
-    GError err;
-    assert_int_equal(ggen_checker_create(2, 1.0, &chk, &err), G_OK);
-    assert_int_equal(gnode_interpolate_create(&black->base, &white->base, chk, &pat, &err), G_OK);
-    /* the pattern: cell (0,0) black, (1,0) white */
-    assert_float_equal(checker_at(f, pat, 0.75, 0.5), 0.0, 1e-6);
-    assert_float_equal(checker_at(f, pat, 1.25, 0.5), 1.0, 1e-6);
-
-    GAffine2 t = gaffine2_translate(0.5, 0.0);
-    assert_int_equal(gnode_transform_create(pat, &t, NULL, &moved, &err), G_OK);
-    /* the edge at u = 1 moved to u = 1.5 */
-    assert_float_equal(checker_at(f, moved, 1.25, 0.5), 0.0, 1e-6);
-    assert_float_equal(checker_at(f, moved, 1.45, 0.5), 0.0, 1e-6);
-    assert_float_equal(checker_at(f, moved, 1.55, 0.5), 1.0, 1e-6);
-    gmaterial_unref(moved);
-
-    GAffine2 s = gaffine2_scale(2.0, 2.0); /* cells twice as big */
-    assert_int_equal(gnode_transform_create(pat, &s, NULL, &moved, &err), G_OK);
-    assert_float_equal(checker_at(f, moved, 1.9, 0.5), 0.0, 1e-6);
-    assert_float_equal(checker_at(f, moved, 2.1, 0.5), 1.0, 1e-6);
-    gmaterial_unref(moved);
-
-    GAffine2 r = gaffine2_rotate(90.0); /* the white cell at (1.5, 0.5) turns to (-0.5, 1.5) */
-    assert_int_equal(gnode_transform_create(pat, &r, NULL, &moved, &err), G_OK);
-    assert_float_equal(checker_at(f, moved, -0.5, 1.5), 1.0, 1e-6);
-    assert_float_equal(checker_at(f, moved, 0.5, 1.5), 0.0, 1e-6);
-    assert_float_equal(checker_at(f, moved, 1.5, 1.5), 1.0, 1e-6); /* (1.5, -1.5) before turning */
-    gmaterial_unref(moved);
-    gmaterial_unref(pat);
-    ggenerator_unref(chk);
-
-    /* 3D: a solid checker moved by (0, 0, 0.25) */
-    assert_int_equal(ggen_checker_create(3, 1.0, &chk, &err), G_OK);
-    assert_int_equal(gnode_interpolate_create(&black->base, &white->base, chk, &pat, &err), G_OK);
-    GAffine3 t3 = gaffine3_translate(gvec3(0, 0, 0.25));
-    assert_int_equal(gnode_transform_create(pat, NULL, &t3, &moved, &err), G_OK);
-    plane_point(&f->sp, f->rgb, f->scratch, 0, 0);
-    f->sp.object_point = gvec3(0.5, 0.5, 0.2); /* below the moved edge at z = 0.25: cell z = -1 */
-    assert_int_equal(gmaterial_diffuse(moved, &f->sp, &f->c), G_OK);
-    assert_float_equal(color_r(&f->c), 1.0, 1e-6);
-    f->sp.object_point = gvec3(0.5, 0.5, 0.3);
-    gsurfpoint_invalidate(&f->sp);
-    assert_int_equal(gmaterial_diffuse(moved, &f->sp, &f->c), G_OK);
-    assert_float_equal(color_r(&f->c), 0.0, 1e-6);
-    gmaterial_unref(moved);
-    gmaterial_unref(pat);
-    ggenerator_unref(chk);
-
-    /* bumps under a rotation turn with the pattern: h = u rotated by 90 degrees rises along v */
-    GGenerator *h;
-    GMaterial *bump;
-    assert_int_equal(ggen_gradient_create(GGENERATOR_SPACE_UV, gvec3(1, 0, 0), 0, &h, &err), G_OK);
-    assert_int_equal(gnode_bump_create(&white->base, h, 1.0, &bump, &err), G_OK);
-    assert_int_equal(gnode_transform_create(bump, &r, NULL, &moved, &err), G_OK);
-    plane_point(&f->sp, f->rgb, f->scratch, 0.2, 0.3);
-    GVec3 n;
-    assert_int_equal(gmaterial_normal(moved, &f->sp, &n), G_OK);
-    assert_float_equal(n.x, 0.0, 1e-12);
-    assert_float_equal(n.y, -sqrt(0.5), 1e-12); /* leans away from +v, where the field now rises */
-    gmaterial_unref(moved);
-    gmaterial_unref(bump);
-    ggenerator_unref(h);
-
-    GAffine2 singular = {{1, 2, 0, 2, 4, 0}};
-    assert_int_equal(gnode_transform_create(&white->base, &singular, NULL, &moved, &err), G_ERR_INVALID);
-    assert_non_null(strstr(err.message, "singular"));
-    gmaterial_unref(&black->base);
-    gmaterial_unref(&white->base);
-}
-
-/* Values cached below a transform belong to the moved coordinates: never confused with the same generator's
- * value above it, yet kept across method calls through the transform (each generator once per point). */
-static void test_transform_cache_semantics(void **state)
-{
-    Fix *f = *state;
-    CountMat *a = countmat_new(f->rgb, 0.2, 0.2, 0.2), *b = countmat_new(f->rgb, 0.6, 0.6, 0.6);
-    GGenerator *chk;
-    GMaterial *pat, *moved;
-    GError err;
-    /* the same checker generator above and below a transform */
-    assert_int_equal(ggen_checker_create(2, 1.0, &chk, &err), G_OK);
-    assert_int_equal(gnode_interpolate_create(&a->base, &b->base, chk, &pat, &err), G_OK);
-    GAffine2 t = gaffine2_translate(1.0, 0.0);
-    assert_int_equal(gnode_transform_create(pat, &t, NULL, &moved, &err), G_OK);
-    plane_point(&f->sp, f->rgb, f->scratch, 0.5, 0.5);
-    /* evaluate above first (caches 0 for this point), then below: the moved pattern must give 1 */
-    assert_int_equal(gmaterial_diffuse(pat, &f->sp, &f->c), G_OK);
-    assert_float_equal(color_r(&f->c), 0.2, 1e-6);
-    assert_int_equal(gmaterial_diffuse(moved, &f->sp, &f->c), G_OK);
-    assert_float_equal(color_r(&f->c), 0.6, 1e-6);
-    assert_int_equal(gmaterial_diffuse(pat, &f->sp, &f->c), G_OK); /* and the cache above is untouched */
-    assert_float_equal(color_r(&f->c), 0.2, 1e-6);
-    assert_int_equal(gmaterial_diffuse(moved, &f->sp, &f->c), G_OK); /* and below, found again */
-    assert_float_equal(color_r(&f->c), 0.6, 1e-6);
-
-    /* a counting generator under two nested transforms: once per point over a sequence of calls */
-    CountGen *g = countgen_new(0.5);
-    GMaterial *inner, *mid, *outer;
-    assert_int_equal(gnode_interpolate_create(&a->base, &b->base, &g->base, &inner, &err), G_OK);
-    GAffine2 s2 = gaffine2_translate(0.25, 0.0);
-    assert_int_equal(gnode_transform_create(inner, &s2, NULL, &mid, &err), G_OK);
-    assert_int_equal(gnode_transform_create(mid, &t, NULL, &outer, &err), G_OK);
-    gsurfpoint_invalidate(&f->sp);
-    f->sp.material = outer;
-    for (int light = 0; light < 4; light++)
-        assert_int_equal(gmaterial_reflection(outer, &f->sp, gvec3(0, 0, 1), &f->illum, gvec3(0, 0, 1), &f->c), G_OK);
-    call_all(f, outer);
-    assert_int_equal(g->calls, 1);
-    /* the same subtree reached without the outer transform is at other coordinates: evaluated again */
-    assert_int_equal(gmaterial_diffuse(mid, &f->sp, &f->c), G_OK);
-    assert_int_equal(g->calls, 2);
-    assert_int_equal(gmaterial_diffuse(mid, &f->sp, &f->c), G_OK);
-    assert_int_equal(gmaterial_diffuse(outer, &f->sp, &f->c), G_OK);
-    assert_int_equal(g->calls, 2);
-    gsurfpoint_invalidate(&f->sp); /* a new point evaluates again */
-    assert_int_equal(gmaterial_diffuse(outer, &f->sp, &f->c), G_OK);
-    assert_int_equal(g->calls, 3);
-    gmaterial_unref(outer);
-    gmaterial_unref(mid);
-    gmaterial_unref(inner);
-    ggenerator_unref(&g->base);
-    gmaterial_unref(moved);
-    gmaterial_unref(pat);
-    ggenerator_unref(chk);
-    gmaterial_unref(&a->base);
-    gmaterial_unref(&b->base);
-}
-
 static void test_bad_input(void **state)
 {
     Fix *f = *state;
@@ -693,8 +503,6 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_spline, setup, teardown),
         cmocka_unit_test_setup_teardown(test_bump_analytic_tilt, setup, teardown),
         cmocka_unit_test_setup_teardown(test_scale, setup, teardown),
-        cmocka_unit_test_setup_teardown(test_transform_moves_patterns, setup, teardown),
-        cmocka_unit_test_setup_teardown(test_transform_cache_semantics, setup, teardown),
         cmocka_unit_test_setup_teardown(test_bad_input, setup, teardown),
         cmocka_unit_test_setup_teardown(test_out_of_memory, setup, teardown),
     };
