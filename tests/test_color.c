@@ -414,8 +414,14 @@ static void test_nan_input(void **state)
         gcie_illuminant_nm("D65", &s);
         s.v[200] = NAN;
         assert_int_equal(gcolor_from_nm(&a, &s, GCOLOR_LIGHT), G_ERR_INVALID);
+        gcolor_black(&a);
+        assert_true(gcolor_is_nonnegative(&a));
+        av[0] = -0.1f;
+        assert_true(gcolor_is_finite(&a));
+        assert_false(gcolor_is_nonnegative(&a));
         av[0] = NAN;
         assert_false(gcolor_is_finite(&a));
+        assert_false(gcolor_is_nonnegative(&a));
         gcolormodel_destroy(m);
     }
 }

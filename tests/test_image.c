@@ -170,6 +170,19 @@ static void test_png_exposure_clamp_and_grey(void **state)
     assert_int_equal(c, 1);
     gimage_free(&b);
     gimage_free(&a);
+    /* a header with a size below 1 (a PFM with a negative width) is refused, not passed on */
+    FILE *f = fopen(path_in_dir("neg.pfm"), "wb");
+    assert_non_null(f);
+    fprintf(f, "PF\n-8 4\n-1.0\n");
+    float zero[96] = {0};
+    fwrite(zero, sizeof zero, 1, f);
+    fclose(f);
+    GError err2;
+    assert_int_equal(gimage_info(path_in_dir("neg.pfm"), &w, &h, &c, &err2), G_ERR_IO);
+    assert_non_null(strstr(err2.message, "invalid image size"));
+    assert_int_not_equal(gimage_read(path_in_dir("neg.pfm"), 0, &b, &err2), G_OK);
+    assert_null(b.pixels);
+    unlink(path_in_dir("neg.pfm"));
 }
 
 static void test_exr_exposure_and_alpha_drop(void **state)
