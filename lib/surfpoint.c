@@ -2,6 +2,7 @@
 #include "generic/surfpoint.h"
 #include "generic/material.h"
 
+#include <math.h>
 #include <string.h>
 
 enum { HAVE_NORMAL = 1u, HAVE_REL_INDEX = 2u };
@@ -117,4 +118,16 @@ void gsurfpoint_cache_return(GSurfPoint *sp, const GSurfPoint *q)
     sp->ncache = q->ncache;
     memcpy(sp->cache, q->cache, sizeof sp->cache);
     memcpy(sp->cache_slot_scope, q->cache_slot_scope, sizeof sp->cache_slot_scope);
+}
+
+void gsurfpoint_uv_widths(const GSurfPoint *sp, double *wu, double *wv)
+{
+    const double *a = sp->uv_axis1, *b = sp->uv_axis2;
+    if (a[0] == 0.0 && a[1] == 0.0 && b[0] == 0.0 && b[1] == 0.0) {
+        *wu = *wv = sp->uv_footprint;
+        return;
+    }
+    /* the bounding box of the ellipse spanned by the two (conjugate) half axes */
+    *wu = sqrt(a[0] * a[0] + b[0] * b[0]);
+    *wv = sqrt(a[1] * a[1] + b[1] * b[1]);
 }

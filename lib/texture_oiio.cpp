@@ -168,18 +168,18 @@ int gtexsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *cha
 }
 
 int gtexsys_lookup(GTextureSystem *ts, GTexFile *file, GTexWrap swrap, GTexWrap twrap, double s, double t,
-                   double width, double blur, float rgb[3])
+                   const double deriv[4], double blur, float rgb[3])
 {
     TextureOpt opt;
     opt.swrap = wrap_of(swrap);
     opt.twrap = wrap_of(twrap);
-    opt.mipmode = TextureOpt::MipModeTrilinear;
+    opt.mipmode = TextureOpt::MipModeAniso; // trilinear along the ellipse's short axis, several taps along the long one
+    opt.anisotropic = 16;
     opt.interpmode = TextureOpt::InterpBilinear;
     opt.sblur = opt.tblur = (float)blur;
-    float w = (float)width;
     TextureSystem::Perthread *pt = ts->ts->get_perthread_info();
-    if (!ts->ts->texture(reinterpret_cast<TextureSystem::TextureHandle *>(file), pt, opt, (float)s, (float)t, w, 0.0f,
-                         0.0f, w, 3, rgb)) {
+    if (!ts->ts->texture(reinterpret_cast<TextureSystem::TextureHandle *>(file), pt, opt, (float)s, (float)t,
+                         (float)deriv[0], (float)deriv[1], (float)deriv[2], (float)deriv[3], 3, rgb)) {
         ts->ts->geterror();
         rgb[0] = rgb[1] = rgb[2] = 0.0f;
         return G_ERR_IO;

@@ -16,11 +16,12 @@ typedef struct GTexFile GTexFile;
  * decoded. *srgb is 1 for integer data not marked linear (8-bit PNG/JPEG), 0 for float data. */
 int gtexsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *channels, int *srgb, GError *err);
 
-/** A filtered lookup of 3 channels (grey files are replicated) at (s, t) (t = 0 at the top row) with an
- * isotropic filter width (in s, t units; 0 = the finest level), trilinear MIP-mapping and the wrap modes;
- * G_ERR_IO when OpenImageIO fails (rgb is then black). Thread safe. */
+/** A filtered lookup of 3 channels (grey files are replicated) at (s, t) (t = 0 at the top row) over the
+ * footprint spanned by the two axes (dsdx, dtdx) and (dsdy, dtdy) (full widths in s, t units; all 0 = the
+ * finest level), anisotropic with trilinear MIP-mapping, and the wrap modes; G_ERR_IO when OpenImageIO fails
+ * (rgb is then black). An isotropic width w is (w, 0, 0, w). Thread safe. */
 int gtexsys_lookup(GTextureSystem *ts, GTexFile *file, GTexWrap swrap, GTexWrap twrap, double s, double t,
-                   double width, double blur, float rgb[3]);
+                   const double deriv[4], double blur, float rgb[3]);
 
 #ifdef __cplusplus
 }

@@ -92,6 +92,11 @@ static void test_sphere_surface(void **state)
     /* ray cone: width spread * t on a surface seen head on, in (u,v) divided by the size of the tangents */
     assert_near(p.sp.footprint, 0.001 * 5.0, 1e-12);
     assert_near(p.sp.uv_footprint, p.sp.footprint / sqrt(gvec3_length(gvec3_cross(p.sp.dpdu, p.sp.dpdv))), 1e-12);
+    /* head on, the footprint ellipse is a circle of that width: along u it spans w / |dpdu|, along v w / |dpdv| */
+    assert_near(fabs(p.sp.uv_axis1[0]), 0.005 / (2 * M_PI * 2.0), 1e-12);
+    assert_near(p.sp.uv_axis1[1], 0.0, 1e-12);
+    assert_near(p.sp.uv_axis2[0], 0.0, 1e-12);
+    assert_near(fabs(p.sp.uv_axis2[1]), 0.005 / (M_PI * 2.0), 1e-12);
     /* from the inside: leaving the glass into vacuum, the normal faces the ray */
     Media in_glass = {{g}, 1};
     assert_true(probe_cast(&p, gvec3(1, 2, 3), gvec3(1, 0, 0), &in_glass));
@@ -205,6 +210,17 @@ static void test_cylinder_disc_plane(void **state)
     assert_near(p.sp.u, -3.0, 1e-12);
     assert_near(p.sp.v, -2.0, 1e-12);
     assert_tangents_outward(&p);
+    /* 60 degrees from the normal along +x: the footprint is twice as long along u (the ray's projection) as
+     * across it, along v */
+    assert_true(probe_cast(&p, gvec3(-3, 5, 2), gvec3(sin(M_PI / 3), -cos(M_PI / 3), 0), NULL));
+    assert_near(fabs(p.sp.uv_axis1[0]), p.sp.footprint, 1e-12);
+    assert_near(p.sp.uv_axis1[1], 0.0, 1e-12);
+    assert_near(p.sp.uv_axis2[0], 0.0, 1e-12);
+    assert_near(fabs(p.sp.uv_axis2[1]), 0.5 * p.sp.footprint, 1e-12);
+    double wu, wv;
+    gsurfpoint_uv_widths(&p.sp, &wu, &wv);
+    assert_near(wu, p.sp.footprint, 1e-12);
+    assert_near(wv, 0.5 * p.sp.footprint, 1e-12);
     /* an open cylinder seen from above: the ray enters and meets the inside of the wall */
     probe_close(&p);
     probe_open(&p);

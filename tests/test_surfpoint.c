@@ -185,11 +185,31 @@ static void relative_index_case(const char *model_name)
 
 static void test_relative_index(void **state) { relative_index_case(*state); }
 
+/* Footprint widths along u and v: uv_footprint for both without axes, else the extent of the ellipse. */
+static void test_uv_widths(void **state)
+{
+    (void)state;
+    GSurfPoint sp;
+    gsurfpoint_init(&sp, NULL, NULL);
+    sp.uv_footprint = 0.25;
+    double wu, wv;
+    gsurfpoint_uv_widths(&sp, &wu, &wv);
+    assert_true(wu == 0.25 && wv == 0.25);
+    sp.uv_axis1[0] = 0.3; /* an ellipse with half-axes 0.5 and 0.1 turned by atan(4/3) */
+    sp.uv_axis1[1] = 0.4;
+    sp.uv_axis2[0] = -0.08;
+    sp.uv_axis2[1] = 0.06;
+    gsurfpoint_uv_widths(&sp, &wu, &wv);
+    assert_true(fabs(wu - sqrt(0.3 * 0.3 + 0.08 * 0.08)) < 1e-15);
+    assert_true(fabs(wv - sqrt(0.4 * 0.4 + 0.06 * 0.06)) < 1e-15);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_normal_cached),
         cmocka_unit_test(test_cache_slots),
+        cmocka_unit_test(test_uv_widths),
         {"test_relative_index (rgb)", test_relative_index, NULL, NULL, (void *)"rgb"},
         {"test_relative_index (spectrum)", test_relative_index, NULL, NULL, (void *)"spectrum"},
     };

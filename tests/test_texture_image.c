@@ -280,6 +280,35 @@ static void test_bad_files(void **state)
     gmaterial_unref(m);
 }
 
+/* An elliptical footprint (sp->uv_axis1/2) is filtered anisotropically: long along u over an image that only
+ * changes along v, the lookup stays sharp where an isotropic filter of the same length blurs; the same
+ * ellipse turned to lie along v blurs too (the axes reach OpenImageIO with t = 1 - v). */
+static void test_anisotropic_footprint(void **state)
+{
+    Fix *f = *state;
+    GMaterial *m = image(f, f->halves, GTEX_WRAP_CLAMP, GTEX_COLORSPACE_LINEAR);
+    const double u = 0.3, v = 0.5 + 4.0 / N; /* 4 texels into the white half */
+    double iso = lookup(f, m, u, v, 32.0);
+    GSurfPoint sp;
+    plane_point(&sp, f->rgb, f->scratch, u, v);
+    sp.uv_footprint = 32.0 / N;
+    sp.uv_axis1[0] = 32.0 / N; /* long along u */
+    sp.uv_axis2[1] = 0.5 / N;  /* half a texel along v */
+    assert_int_equal(gmaterial_diffuse(m, &sp, &f->c), G_OK);
+    double along_u = color_r(&f->c);
+    plane_point(&sp, f->rgb, f->scratch, u, v);
+    sp.uv_footprint = 32.0 / N;
+    sp.uv_axis1[1] = 32.0 / N; /* the same ellipse along v */
+    sp.uv_axis2[0] = 0.5 / N;
+    assert_int_equal(gmaterial_diffuse(m, &sp, &f->c), G_OK);
+    double along_v = color_r(&f->c);
+    print_message("isotropic 32 texels %.4f, ellipse along u %.4f, along v %.4f\n", iso, along_u, along_v);
+    assert_true(iso < 0.9);
+    assert_true(along_u > 0.97);
+    assert_true(along_v < 0.9);
+    gmaterial_unref(m);
+}
+
 /* Float texels that are NaN, infinite or negative become 0; the finite positive ones pass unchanged, also
  * above 1 (HDR images scale light). A 4 x 1 EXR: NaN, +Inf, -0.5, 2.5. */
 static void test_nonfinite_texels(void **state)
@@ -318,6 +347,7 @@ int main(void)
         cmocka_unit_test(test_color_spaces),
         cmocka_unit_test(test_bad_files),
         cmocka_unit_test(test_nonfinite_texels),
+        cmocka_unit_test(test_anisotropic_footprint),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

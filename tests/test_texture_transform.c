@@ -1,5 +1,6 @@
-/* test_texture_transform.c - the transform node: patterns move by the expected offsets, and values cached
- * below a transform belong to the moved coordinates yet are kept across method calls. */
+/* test_texture_transform.c - the transform node: patterns move by the expected offsets, the footprint's axes
+ * move with them, and values cached below a transform belong to the moved coordinates yet are kept across
+ * method calls. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -157,11 +158,49 @@ static void test_transform_cache_semantics(void **state)
     gmaterial_unref(&b->base);
 }
 
+/* The footprint's axes move with the coordinates: below a transform, each axis is the difference of the moved
+ * coordinates of the point and of the point plus that axis (checked for a rotation with uneven scaling). */
+static void test_transform_moves_footprint(void **state)
+{
+    Fix *f = *state;
+    CountMat *a = countmat_new(f->rgb, 0.2, 0.2, 0.2), *b = countmat_new(f->rgb, 0.6, 0.6, 0.6);
+    CountGen *g = countgen_new(0.5);
+    GMaterial *pat, *moved;
+    GError err;
+    assert_int_equal(gnode_interpolate_create(&a->base, &b->base, &g->base, &pat, &err), G_OK);
+    GAffine2 r = gaffine2_rotate(30), sc = gaffine2_scale(2.0, 0.5), t = gaffine2_mul(&r, &sc);
+    assert_int_equal(gnode_transform_create(pat, &t, NULL, &moved, &err), G_OK);
+    const double u = 0.3, v = 0.7, ax1[2] = {0.01, 0.002}, ax2[2] = {-0.001, 0.004};
+    double at[3][2];
+    const double du[3] = {0, ax1[0], ax2[0]}, dv[3] = {0, ax1[1], ax2[1]};
+    for (int k = 0; k < 3; k++) { /* the moved coordinates of the point and of its two axis ends */
+        plane_point(&f->sp, f->rgb, f->scratch, u + du[k], v + dv[k]);
+        assert_int_equal(gmaterial_diffuse(moved, &f->sp, &f->c), G_OK);
+        at[k][0] = g->u;
+        at[k][1] = g->v;
+    }
+    plane_point(&f->sp, f->rgb, f->scratch, u, v);
+    memcpy(f->sp.uv_axis1, ax1, sizeof ax1);
+    memcpy(f->sp.uv_axis2, ax2, sizeof ax2);
+    assert_int_equal(gmaterial_diffuse(moved, &f->sp, &f->c), G_OK);
+    for (int c = 0; c < 2; c++) {
+        assert_true(fabs(g->axis1[c] - (at[1][c] - at[0][c])) < 1e-12);
+        assert_true(fabs(g->axis2[c] - (at[2][c] - at[0][c])) < 1e-12);
+    }
+    assert_true(fabs(g->axis1[0] - ax1[0]) > 1e-4); /* they did move */
+    gmaterial_unref(moved);
+    gmaterial_unref(pat);
+    ggenerator_unref(&g->base);
+    gmaterial_unref(&a->base);
+    gmaterial_unref(&b->base);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_setup_teardown(test_transform_moves_patterns, setup, teardown),
         cmocka_unit_test_setup_teardown(test_transform_cache_semantics, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_transform_moves_footprint, setup, teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

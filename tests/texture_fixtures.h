@@ -177,13 +177,18 @@ typedef struct CountGen {
     GGenerator base;
     double value;
     int calls;
+    double u, v, axis1[2], axis2[2]; /* the (u, v) and footprint axes of the last point evaluated */
 } CountGen;
 
 static void cg_destroy(GGenerator *self) { free(self); }
 static double cg_value(const GGenerator *self, GSurfPoint *sp)
 {
-    (void)sp;
-    ((CountGen *)(uintptr_t)self)->calls++;
+    CountGen *g = (CountGen *)(uintptr_t)self;
+    g->calls++;
+    g->u = sp->u;
+    g->v = sp->v;
+    memcpy(g->axis1, sp->uv_axis1, sizeof g->axis1);
+    memcpy(g->axis2, sp->uv_axis2, sizeof g->axis2);
     return ((const CountGen *)self)->value;
 }
 

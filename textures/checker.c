@@ -35,8 +35,9 @@ static double checker_value(const GGenerator *self, GSurfPoint *sp)
     const Checker *c = (const Checker *)self;
     double f = c->frequency;
     if (c->dims == 2) {
-        double w = sp->uv_footprint * f;
-        return xor2(filtered(sp->u * f, w), filtered(sp->v * f, w));
+        double wu, wv;
+        gsurfpoint_uv_widths(sp, &wu, &wv);
+        return xor2(filtered(sp->u * f, wu * f), filtered(sp->v * f, wv * f));
     }
     double w = sp->footprint * f;
     GVec3 p = sp->object_point;

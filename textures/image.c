@@ -43,7 +43,15 @@ static void texel(const Image *im, GSurfPoint *sp, double rgb[3])
         return;
     }
     float v[3];
-    gtexsys_lookup(im->ts, im->file, im->swrap, im->twrap, sp->u, 1.0 - sp->v, sp->uv_footprint, im->blur, v);
+    const double *a = sp->uv_axis1, *b = sp->uv_axis2;
+    double deriv[4] = {sp->uv_footprint, 0.0, 0.0, sp->uv_footprint};
+    if (a[0] != 0.0 || a[1] != 0.0 || b[0] != 0.0 || b[1] != 0.0) { /* the footprint's ellipse; t = 1 - v */
+        deriv[0] = a[0];
+        deriv[1] = -a[1];
+        deriv[2] = b[0];
+        deriv[3] = -b[1];
+    }
+    gtexsys_lookup(im->ts, im->file, im->swrap, im->twrap, sp->u, 1.0 - sp->v, deriv, im->blur, v);
     for (int i = 0; i < 3; i++) {
         double x = im->srgb ? gimage_srgb_decode(v[i]) : v[i];
         rgb[i] = isfinite(x) && x > 0.0 ? x : 0.0;

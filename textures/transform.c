@@ -45,6 +45,11 @@ static void move(const Transform *t, GSurfPoint *sp, GSurfPoint *q, int for_norm
         q->dpdu = gvec3_add(gvec3_scale(sp->dpdu, m[0]), gvec3_scale(sp->dpdv, m[3]));
         q->dpdv = gvec3_add(gvec3_scale(sp->dpdu, m[1]), gvec3_scale(sp->dpdv, m[4]));
         q->uv_footprint = sp->uv_footprint * t->uv_area;
+        const double *mi = t->uv_inv.m; /* the footprint's axes move with the coordinates */
+        q->uv_axis1[0] = mi[0] * sp->uv_axis1[0] + mi[1] * sp->uv_axis1[1];
+        q->uv_axis1[1] = mi[3] * sp->uv_axis1[0] + mi[4] * sp->uv_axis1[1];
+        q->uv_axis2[0] = mi[0] * sp->uv_axis2[0] + mi[1] * sp->uv_axis2[1];
+        q->uv_axis2[1] = mi[3] * sp->uv_axis2[0] + mi[4] * sp->uv_axis2[1];
     }
     if (t->has_xyz) {
         int have = !is_zero(sp->object_dpdu) || !is_zero(sp->object_dpdv);

@@ -32,6 +32,21 @@ static const GMaterial *media_outside(const Media *m, const GMaterial *mat)
     return media_top(m);
 }
 
+
+/* The (u, v) coordinates of a tangent vector v in the frame of the tangents a = dp/du, b = dp/dv (least
+ * squares: exact for a vector in their plane); zero when the tangents are degenerate. */
+static void uv_of(GVec3 a, GVec3 b, GVec3 v, double out[2])
+{
+    double aa = gvec3_dot(a, a), ab = gvec3_dot(a, b), bb = gvec3_dot(b, b), det = aa * bb - ab * ab;
+    if (!(det > 0.0) || !isfinite(det)) {
+        out[0] = out[1] = 0.0;
+        return;
+    }
+    double av = gvec3_dot(a, v), bv = gvec3_dot(b, v);
+    out[0] = (bb * av - ab * bv) / det;
+    out[1] = (aa * bv - ab * av) / det;
+}
+
 /* The stack after crossing the surface of `mat` (entering pushes it, leaving removes it). */
 void media_cross(const Media *in, const GMaterial *mat, int entering, Media *out)
 {
@@ -82,6 +97,14 @@ void surfpoint_fill(TraceCtx *c, const Ray *r, const Hit *h, const Media *media,
     sp->footprint = w / cosv;
     double area = gvec3_length(gvec3_cross(g.dpdu, g.dpdv));
     sp->uv_footprint = area > 0.0 ? sp->footprint / sqrt(area) : 0.0;
+    /* the same footprint as an ellipse for anisotropic filters: w / cos along the ray's projection onto the
+     * surface, w across it, both mapped into (u, v) through the tangents */
+    GVec3 along = gvec3_sub(r->d, gvec3_scale(g.n_out, dn));
+    double la = gvec3_length(along);
+    along = la > 1e-9 ? gvec3_scale(along, 1.0 / la) : gvec3_normalize(g.dpdu);
+    GVec3 across = gvec3_cross(g.n_out, along);
+    uv_of(g.dpdu, g.dpdv, gvec3_scale(along, sp->footprint), sp->uv_axis1);
+    uv_of(g.dpdu, g.dpdv, gvec3_scale(across, w), sp->uv_axis2);
     sp->material = h->obj->material;
     if (sp->entering) {
         sp->from = media_top(media);

@@ -59,6 +59,9 @@ typedef struct GSurfPoint {
      * gsurfpoint_cache_enter) and the scope of each slot */
     uint64_t cache_scope;
     uint64_t cache_slot_scope[GSURF_CACHE_SLOTS];
+    double uv_axis1[2], uv_axis2[2]; /**< the pixel footprint as an ellipse in (u,v): its two axes (du, dv), full
+                                          widths, for anisotropic filtering (both zero = unknown: uv_footprint,
+                                          isotropic, is used) */
 } GSurfPoint;
 
 /** Clears a surface point (all fields zero, caches empty) and sets its model and arena. */
@@ -75,6 +78,9 @@ double gsurfpoint_relative_index(GSurfPoint *sp);
 int gsurfpoint_cache_get(const GSurfPoint *sp, const void *key, double *value, GVec3 *gradient);
 /** Caches a value under key (the oldest slot is reused when all are taken). */
 void gsurfpoint_cache_put(GSurfPoint *sp, const void *key, double value, GVec3 gradient);
+/** Widths of the pixel footprint along u and along v (the extent of the uv_axis ellipse, or uv_footprint for
+ * both when the axes are unknown), for filters that are separable in u and v. */
+void gsurfpoint_uv_widths(const GSurfPoint *sp, double *wu, double *wv);
 /** For a node that evaluates its subtree at moved coordinates (a transform): makes q, a copy of sp with moved
  * fields, use its own cache scope derived from sp's and `node`. Values the subtree caches on q are then found
  * again on the next call through the same node (after gsurfpoint_cache_return) and never mistaken for values

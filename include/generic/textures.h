@@ -198,8 +198,8 @@ typedef struct GImageNodeOptions {
 
 /** image: the child's colour results that carry light (as for scale) multiplied by the image's colour at
  * (u, v) (u to the right, v up: v = 0 is the image's bottom row), read as a reflectance into the child's
- * model. Lookups are trilinear MIP-mapped with a filter width of sp->uv_footprint (0: the finest level,
- * bilinear). The file is opened (and checked) here: a missing or unreadable file is G_ERR_IO naming it.
+ * model. Lookups are MIP-mapped over the pixel footprint: anisotropically over the ellipse sp->uv_axis1/2
+ * when the renderer gives it, else with the isotropic width sp->uv_footprint (0: the finest level, bilinear). The file is opened (and checked) here: a missing or unreadable file is G_ERR_IO naming it.
  * sRGB-encoded files are decoded after filtering. Grey images give grey colours; alpha is ignored. */
 int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptions *opt, GMaterial **out,
                        GError *err);
@@ -213,7 +213,8 @@ int ggen_constant_create(double value, GGenerator **out, GError *err);
 
 /** checker: 1 on the cells of a checkerboard whose cell index sum is odd, 0 on the others; dims 2 in
  * (u, v), dims 3 in object space; `frequency` cells per unit (> 0). Box-filtered over the footprint
- * (uv_footprint or footprint) when it is known, so far-away checkers fade to 0.5 instead of aliasing. */
+ * when it is known (in (u, v) the widths of gsurfpoint_uv_widths, separately along u and v; in object space
+ * footprint), so far-away checkers fade to 0.5 instead of aliasing. */
 int ggen_checker_create(int dims, double frequency, GGenerator **out, GError *err);
 
 /** Parameters shared by the noise generators; zero fields take the defaults. */
