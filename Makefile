@@ -222,13 +222,16 @@ fuzz: fuzz-build fuzz-seed
 	@for t in $(FUZZ_TARGETS); do $(MAKE) --no-print-directory fuzz-run-$$t || exit 1; done
 
 # One target's run: its corpus directories (those that exist), its options; the executions at the end.
+# Inputs are named by their magic bytes, so OpenImageIO tries only the reader of that extension
+# (try_all_readers=0): otherwise every corrupt input is probed by every reader, LibRaw's costly constructor
+# included (the image target ran about 1.6x slower so).
 fuzz-run-%:
 	@mkdir -p $(FUZZ_BUILD)/corpus/$* $(FUZZ_BUILD)/crashes/$*
 	@dirs="$(FUZZ_BUILD)/corpus/$*"; \
 	for d in tests/fuzz/corpus/$* $(FUZZ_BUILD)/seed/$* tests/regress/$*; do [ -d $$d ] && dirs="$$dirs $$d"; done; \
 	log=$(FUZZ_BUILD)/fuzz_$*.log; \
 	echo "fuzz $*: $(FUZZ_SECONDS) s over $$dirs"; \
-	if ! $(FUZZ_BUILD)/fuzz_$* -max_total_time=$(FUZZ_SECONDS) -timeout=20 -rss_limit_mb=2560 $(FUZZ_OPTS_$*) \
+	if ! OPENIMAGEIO_OPTIONS=try_all_readers=0 $(FUZZ_BUILD)/fuzz_$* -max_total_time=$(FUZZ_SECONDS) -timeout=20 -rss_limit_mb=2560 $(FUZZ_OPTS_$*) \
 	        -print_final_stats=1 -artifact_prefix=$(FUZZ_BUILD)/crashes/$*/ $$dirs > $$log 2>&1; then \
 	    tail -n 80 $$log; echo "fuzz $*: FAILED (input in $(FUZZ_BUILD)/crashes/$*/, log $$log)"; exit 1; \
 	fi; \
