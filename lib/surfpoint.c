@@ -127,7 +127,7 @@ void gsurfpoint_uv_widths(const GSurfPoint *sp, double *wu, double *wv)
         *wu = *wv = sp->uv_footprint;
         return;
     }
-    /* the bounding box of the ellipse spanned by the two (conjugate) half axes */
+    /* the bounding box of the ellipse with these two conjugate diameters */
     *wu = sqrt(a[0] * a[0] + b[0] * b[0]);
     *wv = sqrt(a[1] * a[1] + b[1] * b[1]);
 }

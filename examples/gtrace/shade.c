@@ -32,7 +32,6 @@ static const GMaterial *media_outside(const Media *m, const GMaterial *mat)
     return media_top(m);
 }
 
-
 /* The (u, v) coordinates of a tangent vector v in the frame of the tangents a = dp/du, b = dp/dv (least
  * squares: exact for a vector in their plane); zero when the tangents are degenerate. */
 static void uv_of(GVec3 a, GVec3 b, GVec3 v, double out[2])
@@ -89,9 +88,9 @@ void surfpoint_fill(TraceCtx *c, const Ray *r, const Hit *h, const Media *media,
     sp->v = g.v;
     sp->surface = g.surface;
     sp->t = h->t;
-    /* ray cone: width at the hit, widened by the slant of the surface to the long axis of the footprint
-     * ellipse (w / cos): an isotropic filter as wide as that axis does not alias at grazing angles (the
-     * geometric mean of the axes, w / sqrt(cos), keeps the area but leaves moire on receding checkers) */
+    /* ray cone: width w at the hit. The isotropic footprint is the long axis of the footprint ellipse,
+     * w / cos: a filter as wide as that does not alias at grazing angles (the geometric mean of the axes,
+     * w / sqrt(cos), keeps the area but leaves moire on receding checkers) */
     double w = r->cone_width + r->cone_spread * h->t;
     double cosv = fmax(fabs(dn), 0.02);
     sp->footprint = w / cosv;
