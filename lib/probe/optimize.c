@@ -349,27 +349,19 @@ static int revive(Fit *f, GVec3 *dir, const double *L)
     return moved;
 }
 
-/* The paper's measure at the fit normals: mean over normals and channels of |E' - E| / E (channels with E = 0
- * left out). */
-static double mean_rel_error(const Fit *f, const GVec3 *dir, const double *L)
+/* The paper's measure at the fit normals, as gprobe_compare reports it (percent), for directions dir and colours
+ * L; `tmp` holds n lights and `approx` 3 m doubles. */
+static double mean_rel_error(const Fit *f, const GVec3 *dir, const double *L, GProbeLight *tmp, double *approx)
 {
-    double sum = 0.0;
-    long cnt = 0;
-    for (int k = 0; k < f->m; k++) {
-        double e[3] = {0, 0, 0};
-        for (int i = 0; i < f->n; i++) {
-            double d = gvec3_dot(dir[i], f->nrm[k]);
-            if (d > 0.0)
-                for (int c = 0; c < 3; c++)
-                    e[c] += L[i * 3 + c] * d;
-        }
+    for (int i = 0; i < f->n; i++) {
+        tmp[i].dir = dir[i];
         for (int c = 0; c < 3; c++)
-            if (f->E[k * 3 + c] > 0.0) {
-                sum += fabs(e[c] - f->E[k * 3 + c]) / f->E[k * 3 + c];
-                cnt++;
-            }
+            tmp[i].rgb[c] = L[i * 3 + c];
     }
-    return cnt ? sum / cnt : 0.0;
+    gprobe_lights_irradiance(tmp, f->n, f->nrm, f->m, approx);
+    GProbeErrors e;
+    gprobe_compare(f->E, approx, f->m, &e);
+    return e.mean_rel;
 }
 
 /* Sets the per-normal weights w_k = base_k * mult_k and the weighted truth wE. */
@@ -455,9 +447,8 @@ int gprobe_irradiance_fit(const GProbe *p, int n, const GProbeOptions *opt, GPro
     for (int k = 0; k < m; k++) {
         double e = (f.s[0] * E[k * 3] + f.s[1] * E[k * 3 + 1] + f.s[2] * E[k * 3 + 2]) / 3.0;
         f.w[k] = 1.0 / fmax(e, 1e-3);
-        for (int c = 0; c < 3; c++)
-            f.wE[(size_t)c * m + k] = f.w[k] * E[k * 3 + c];
     }
+    set_weights(&f, f.w, NULL);
     for (int i = 0; i < n; i++) {
         dir[i] = lights[i].dir;
         for (int c = 0; c < 3; c++)
@@ -498,15 +489,16 @@ int gprobe_irradiance_fit(const GProbe *p, int n, const GProbeOptions *opt, GPro
      * normal's residual, so the squares approximate absolute values) move the fit towards that measure; the
      * round with the lowest mean absolute error at the fit normals is kept, so it never gets worse. */
     {
-        double *base = gmem_alloc(sizeof(double) * 2 * (size_t)m);
+        double *base = gmem_alloc(sizeof(double) * 5 * (size_t)m);
         GVec3 *bdir = gmem_alloc(sizeof(GVec3) * (size_t)n);
         double *bL = gmem_alloc(sizeof(double) * 3 * (size_t)n);
-        if (base && bdir && bL) {
-            double *mult = base + m;
+        GProbeLight *tmp = gmem_alloc(sizeof(GProbeLight) * (size_t)n);
+        if (base && bdir && bL && tmp) {
+            double *mult = base + m, *approx = base + 2 * (size_t)m;
             memcpy(base, f.w, sizeof(double) * m);
             memcpy(bdir, dir, sizeof(GVec3) * n);
             memcpy(bL, L, sizeof(double) * 3 * n);
-            double best = mean_rel_error(&f, dir, L);
+            double best = mean_rel_error(&f, dir, L, tmp, approx);
             for (int round = 0; round < IRLS_ROUNDS; round++) {
                 /* residual of each normal at the current lights, in the base weighting */
                 set_weights(&f, base, NULL);
@@ -526,7 +518,7 @@ int gprobe_irradiance_fit(const GProbe *p, int n, const GProbeOptions *opt, GPro
                 solve_colours(&f, f.A, L);
                 double G = objective(&f, f.A, L, NULL);
                 levenberg_marquardt(&f, dir, L, &G, max_it / 4, tdir, tL, tA, opt, &rep);
-                double e = mean_rel_error(&f, dir, L);
+                double e = mean_rel_error(&f, dir, L, tmp, approx);
                 if (e < best) {
                     best = e;
                     memcpy(bdir, dir, sizeof(GVec3) * n);
@@ -543,6 +535,7 @@ int gprobe_irradiance_fit(const GProbe *p, int n, const GProbeOptions *opt, GPro
         gmem_free(base);
         gmem_free(bdir);
         gmem_free(bL);
+        gmem_free(tmp);
     }
 
     probe_progress(opt, "irradiance", 1.0);
