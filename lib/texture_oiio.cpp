@@ -1,13 +1,14 @@
 // texture_oiio.cpp - OpenImageIO's TextureSystem behind a C interface: reference-counted texture systems
 // (one per scene, or the shared default), opening files, and filtered lookups with per-thread state.
 #include "texture_oiio.h"
+#include "generic/image.h"
 #include "generic/memory.h"
 
 #include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
 #include <OpenImageIO/texture.h>
 
 #include <cctype>
+#include <cstring>
 #include <mutex>
 #include <new>
 #include <string>
@@ -132,18 +133,16 @@ int gtexsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *cha
             return gerror_set(err, G_ERR_IO, "image '%s': no such file", path);
         // The header first: OpenImageIO 2.4's cache asserts (aborts) on a file whose header gives a size
         // below 1, such as a PFM with a negative width.
-        {
-            auto in = ImageInput::open(path);
-            if (!in) {
-                std::string why = OIIO::geterror();
-                why = why.substr(0, why.find('\n'));
-                return gerror_set(err, G_ERR_IO, "image '%s' cannot be read: %s", path,
-                                  why.empty() ? "not an image OpenImageIO can decode" : why.c_str());
-            }
-            const ImageSpec &head = in->spec();
-            if (head.width <= 0 || head.height <= 0 || head.nchannels < 1)
-                return gerror_set(err, G_ERR_IO, "image '%s' cannot be read: invalid size %dx%d with %d channels",
-                                  path, head.width, head.height, head.nchannels);
+        GError head;
+        if (gimage_info(path, nullptr, nullptr, nullptr, &head) != G_OK) {
+            /* gimage_info's message reads "PATH: [cannot read image: ]REASON"; ours names the path already */
+            const char *why = head.message;
+            size_t len = strlen(path);
+            if (strncmp(why, path, len) == 0 && strncmp(why + len, ": ", 2) == 0)
+                why += len + 2;
+            if (strncmp(why, "cannot read image: ", 19) == 0)
+                why += 19;
+            return gerror_set(err, G_ERR_IO, "image '%s' cannot be read: %s", path, why);
         }
         ustring name(path);
         TextureSystem::Perthread *pt = ts->ts->get_perthread_info();
