@@ -222,6 +222,18 @@ static int bi_to_xyz(const GColorModel *m, const GColor *a, GColorRole role, dou
 
 /* ---- measured matrices ---- */
 
+/* The excitation column on emission row o's diagonal (the one at the same wavelength), or -1. Both the
+ * diagonal's grid and the split below ask this one question, so they always agree on how many there are. */
+static int diagonal_column(const GReradiation *r, int o)
+{
+    double tol = 1e-6 * fmin(r->in_step, r->out_step);
+    double x = r->out_min + o * r->out_step;
+    double i = floor((x - r->in_min) / r->in_step + 0.5);
+    if (i < 0 || i >= r->n_in || fabs(r->in_min + i * r->in_step - x) > tol)
+        return -1;
+    return (int)i;
+}
+
 /* The wavelengths where an excitation sample meets an emission sample: a uniform grid (n = 0: none). */
 static int coincident_grid(const GReradiation *r, GSpectralGrid *d, GError *err)
 {
@@ -230,8 +242,7 @@ static int coincident_grid(const GReradiation *r, GSpectralGrid *d, GError *err)
     int count = 0;
     for (int p = 0; p < r->n_out; p++) {
         double x = r->out_min + p * r->out_step;
-        double i = floor((x - r->in_min) / r->in_step + 0.5);
-        if (i < 0 || i >= r->n_in || fabs(r->in_min + i * r->in_step - x) > tol)
+        if (diagonal_column(r, p) < 0)
             continue;
         if (count == 1)
             spacing = x - first;
@@ -284,14 +295,13 @@ static int bi_from_reradiation(const GColorModel *m, const GReradiation *r, GCol
         goto done;
     }
     /* split: clamped diagonal reflectance, and the off-diagonal density per nm of excitation */
-    double tol = 1e-6 * fmax(r->in_step, r->out_step);
     int nd = 0;
     for (int o = 0; o < r->n_out; o++) {
-        double x = r->out_min + o * r->out_step;
+        int diag = diagonal_column(r, o);
         for (int i = 0; i < r->n_in; i++) {
             float v = r->data[(size_t)o * r->n_in + i];
             v = v > 0.0f ? v : 0.0f;
-            if (fabs(r->in_min + i * r->in_step - x) <= tol) {
+            if (i == diag) {
                 dv[nd++] = v;
                 v = 0.0f;
             }

@@ -465,6 +465,15 @@ static void test_resampling_diagonal_noise_range(void **state)
     float nan_data[4] = {0.1f, NAN, 0.3f, 0.4f};
     GReradiation bad = {380, 10, 2, 380, 10, 2, nan_data};
     assert_int_equal(gcolor_from_reradiation(&c, &bad, &err), G_ERR_INVALID);
+    /* an emission step far wider than the excitation step: only the excitation column at the emission row's
+     * own wavelength is its diagonal, never the neighbours within a tolerance scaled by the wide step */
+    float one_row[3] = {0.5f, 0.8f, 0.0f};
+    GReradiation coarse = {400, 10, 3, 400, 1e8, 1, one_row};
+    assert_int_equal(gcolor_from_reradiation(&c, &coarse, &err), G_OK);
+    for (int e = 0; e < n * n; e++) {
+        float want = e == at(m, 400) * n + at(m, 400) ? 0.5f : e == at(m, 400) * n + at(m, 410) ? 0.8f : 0.0f;
+        assert_true(fabsf(c.v[e] - want) < 1e-6f);
+    }
     gcolormodel_destroy(wide);
     gcolormodel_destroy(m);
 }
