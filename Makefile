@@ -157,14 +157,17 @@ $(BUILD)/plugins/no_init.so: tests/plugins/bad_module.c $(PLUGIN_HDR)
 	$(CC) $(PLUGIN_CFLAGS) -DNO_INIT -o $@ $<
 
 # ---- fuzzing (tests/fuzz/): libFuzzer targets built with clang, -fsanitize=fuzzer,address,undefined ----
-# make fuzz [FUZZ_SECONDS=30] [FUZZ_TARGETS="reader bfc"] builds the library's sources with clang into build/fuzz/
-# (without OpenMP: one thread keeps a run reproducible) and runs each target tests/fuzz/fuzz_<target>.c for
-# FUZZ_SECONDS seconds. Inputs: tests/fuzz/corpus/<target>/ (small, committed), the example files fuzz-seed copies
+# make fuzz [FUZZ_SECONDS=30] [FUZZ_TARGETS="reader bfc"] [FUZZ_SEED=N] builds the library's sources with clang
+# into build/fuzz/ (without OpenMP: one thread keeps a run reproducible) and runs each target
+# tests/fuzz/fuzz_<target>.c for FUZZ_SECONDS seconds. Inputs: tests/fuzz/corpus/<target>/ (small, committed), the example files fuzz-seed copies
 # into build/fuzz/seed/<target>/ at run time, and tests/regress/<target>/ (every crasher found so far, replayed by
 # tests/test_regress.c in the normal suite). New inputs go to build/fuzz/corpus/<target>/, a crasher to
 # build/fuzz/crashes/<target>/ and the run fails; fix it and keep the input in tests/regress/<target>/.
 FUZZ_BUILD    := build/fuzz
 FUZZ_SECONDS  ?= 30
+# libFuzzer's seed: 0 draws a new one each run (exploration); CI passes a fixed one, so that a red smoke run
+# means a regression that the same command reproduces, not a lucky draw.
+FUZZ_SEED     ?= 0
 FUZZ_CC       ?= clang
 FUZZ_CXX      ?= clang++
 FUZZ_SAN      := -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer
@@ -231,7 +234,7 @@ fuzz-run-%:
 	for d in tests/fuzz/corpus/$* $(FUZZ_BUILD)/seed/$* tests/regress/$*; do [ -d $$d ] && dirs="$$dirs $$d"; done; \
 	log=$(FUZZ_BUILD)/fuzz_$*.log; \
 	echo "fuzz $*: $(FUZZ_SECONDS) s over $$dirs"; \
-	if ! OPENIMAGEIO_OPTIONS=try_all_readers=0 $(FUZZ_BUILD)/fuzz_$* -max_total_time=$(FUZZ_SECONDS) -timeout=20 -rss_limit_mb=2560 $(FUZZ_OPTS_$*) \
+	if ! OPENIMAGEIO_OPTIONS=try_all_readers=0 $(FUZZ_BUILD)/fuzz_$* -seed=$(FUZZ_SEED) -max_total_time=$(FUZZ_SECONDS) -timeout=20 -rss_limit_mb=2560 $(FUZZ_OPTS_$*) \
 	        -print_final_stats=1 -artifact_prefix=$(FUZZ_BUILD)/crashes/$*/ $$dirs > $$log 2>&1; then \
 	    tail -n 80 $$log; echo "fuzz $*: FAILED (input in $(FUZZ_BUILD)/crashes/$*/, log $$log)"; exit 1; \
 	fi; \
