@@ -245,7 +245,8 @@ int gcolor_from_rgb(GColor *c, const double rgb[3], GColorRole role)
 
 int gcolor_from_reradiation(GColor *c, const GReradiation *r, GError *err)
 {
-    if (!r || !r->data || r->n_in <= 0 || r->n_out <= 0 || !(r->in_step > 0) || !(r->out_step > 0))
+    if (!r || !r->data || r->n_in <= 0 || r->n_out <= 0 || !(r->in_step > 0) || !(r->out_step > 0) ||
+        !isfinite(r->in_min) || !isfinite(r->in_step) || !isfinite(r->out_min) || !isfinite(r->out_step))
         return gerror_set(err, G_ERR_INVALID, "re-radiation matrix has an empty or invalid grid");
     for (long i = 0; i < (long)r->n_in * r->n_out; i++)
         if (!isfinite(r->data[i]))

@@ -465,6 +465,9 @@ static void test_resampling_diagonal_noise_range(void **state)
     float nan_data[4] = {0.1f, NAN, 0.3f, 0.4f};
     GReradiation bad = {380, 10, 2, 380, 10, 2, nan_data};
     assert_int_equal(gcolor_from_reradiation(&c, &bad, &err), G_ERR_INVALID);
+    GReradiation nan_grid = {NAN, 10, 2, 380, 10, 2, z}, inf_step = {380, INFINITY, 2, 380, 10, 2, z};
+    assert_int_equal(gcolor_from_reradiation(&c, &nan_grid, &err), G_ERR_INVALID);
+    assert_int_equal(gcolor_from_reradiation(&c, &inf_step, &err), G_ERR_INVALID);
     /* an emission step far wider than the excitation step: only the excitation column at the emission row's
      * own wavelength is its diagonal, never the neighbours within a tolerance scaled by the wide step */
     float one_row[3] = {0.5f, 0.8f, 0.0f};

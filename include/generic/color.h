@@ -191,7 +191,8 @@ int gcolor_to_rgb(const GColor *c, GColorRole role, double rgb[3]);
 int gcolor_from_rgb(GColor *c, const double rgb[3], GColorRole role);
 /** From a re-radiation matrix: a matrix in the bispectral model; in the other models the response to an
  * equal-energy light (the matrix's effect folded into a plain reflectance), with components a narrow gamut
- * makes negative (rgb: the blue of a day-glo orange) set to 0. */
+ * makes negative (rgb: the blue of a day-glo orange) set to 0. G_ERR_INVALID for an empty grid, a step that is
+ * not finite and > 0, a non-finite start or value, or grids that share no wavelength (no diagonal). */
 int gcolor_from_reradiation(GColor *c, const GReradiation *r, GError *err);
 /** Converts a value of one model into another (through a direct formula or the nm spectrum). */
 int gcolor_convert(GColor *dst, const GColor *src, GColorRole role);
