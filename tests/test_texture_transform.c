@@ -16,6 +16,16 @@
 
 #include "node_fixture.h"
 
+/* A checker of dimension dim (cell size 1) blending a (even cells) and b (odd cells); *chk gets the generator. */
+static GMaterial *checker_tree(int dim, CountMat *a, CountMat *b, GGenerator **chk)
+{
+    GMaterial *pat;
+    GError err;
+    assert_int_equal(ggen_checker_create(dim, 1.0, chk, &err), G_OK);
+    assert_int_equal(gnode_interpolate_create(&a->base, &b->base, *chk, &pat, &err), G_OK);
+    return pat;
+}
+
 /* A checker between black and white under a transform, read at (u, v). */
 static double checker_at(Fix *f, const GMaterial *tree, double u, double v)
 {
@@ -32,8 +42,7 @@ static void test_transform_moves_patterns(void **state)
     GGenerator *chk;
     GMaterial *pat, *moved;
     GError err;
-    assert_int_equal(ggen_checker_create(2, 1.0, &chk, &err), G_OK);
-    assert_int_equal(gnode_interpolate_create(&black->base, &white->base, chk, &pat, &err), G_OK);
+    pat = checker_tree(2, black, white, &chk);
     /* the pattern: cell (0,0) black, (1,0) white */
     assert_float_equal(checker_at(f, pat, 0.75, 0.5), 0.0, 1e-6);
     assert_float_equal(checker_at(f, pat, 1.25, 0.5), 1.0, 1e-6);
@@ -62,8 +71,7 @@ static void test_transform_moves_patterns(void **state)
     ggenerator_unref(chk);
 
     /* 3D: a solid checker moved by (0, 0, 0.25) */
-    assert_int_equal(ggen_checker_create(3, 1.0, &chk, &err), G_OK);
-    assert_int_equal(gnode_interpolate_create(&black->base, &white->base, chk, &pat, &err), G_OK);
+    pat = checker_tree(3, black, white, &chk);
     GAffine3 t3 = gaffine3_translate(gvec3(0, 0, 0.25));
     assert_int_equal(gnode_transform_create(pat, NULL, &t3, &moved, &err), G_OK);
     plane_point(&f->sp, f->rgb, f->scratch, 0, 0);
@@ -110,8 +118,7 @@ static void test_transform_cache_semantics(void **state)
     GMaterial *pat, *moved;
     GError err;
     /* the same checker generator above and below a transform */
-    assert_int_equal(ggen_checker_create(2, 1.0, &chk, &err), G_OK);
-    assert_int_equal(gnode_interpolate_create(&a->base, &b->base, chk, &pat, &err), G_OK);
+    pat = checker_tree(2, a, b, &chk);
     GAffine2 t = gaffine2_translate(1.0, 0.0);
     assert_int_equal(gnode_transform_create(pat, &t, NULL, &moved, &err), G_OK);
     plane_point(&f->sp, f->rgb, f->scratch, 0.5, 0.5);
