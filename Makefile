@@ -30,9 +30,11 @@ CXXFLAGS += -std=c++17 $(OPT) -g -fPIC $(WARN) $(SANFLAGS) $(shell pkg-config --
 DEPLIBS := $(shell pkg-config --libs OpenImageIO 2>/dev/null) -lstdc++ -fopenmp -ldl -lpthread -lm
 LDFLAGS += $(SANFLAGS)
 
-LIB_SRC := $(wildcard lib/*.c lib/probe/*.c colormodels/*.c materials/*.c materials/*/*.c textures/*.c)
+LIB_SRC := $(foreach d,lib lib/probe colormodels materials materials/* textures,$(sort $(wildcard $(d)/*.c)))
 LIB_CXX := $(wildcard lib/*.cpp)
-LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/obj/%.o) $(LIB_CXX:%.cpp=$(BUILD)/obj/%.o)
+# The list of built-in types (include/generic/builtins.h), generated from the GENERIC_TYPE records of LIB_SRC.
+GEN_BUILTINS = $(1)/gen/builtin_types.c
+LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/obj/%.o) $(LIB_CXX:%.cpp=$(BUILD)/obj/%.o) $(BUILD)/obj/gen/builtin_types.o
 LIBA    := $(BUILD)/lib/libgeneric.a
 LIBSO   := $(BUILD)/lib/libgeneric.so.$(SOVER)
 
@@ -55,6 +57,14 @@ deps:
 	@scripts/deps.sh
 
 $(BUILD)/obj/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
+
+$(call GEN_BUILTINS,$(BUILD)) $(call GEN_BUILTINS,build/fuzz): $(LIB_SRC) scripts/gen_builtins.sh
+	@mkdir -p $(dir $@)
+	scripts/gen_builtins.sh $@ $(LIB_SRC)
+
+$(BUILD)/obj/gen/%.o: $(BUILD)/gen/%.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
 
@@ -181,6 +191,7 @@ FUZZ_TARGETS  ?= $(FUZZ_NAMES)
 FUZZ_BIN      := $(FUZZ_NAMES:%=$(FUZZ_BUILD)/fuzz_%)
 FUZZ_C_OBJ    := $(LIB_SRC:%.c=$(FUZZ_BUILD)/obj/%.o)
 FUZZ_CXX_OBJ  := $(LIB_CXX:%.cpp=$(FUZZ_BUILD)/obj/%.o)
+FUZZ_GEN_OBJ  := $(FUZZ_BUILD)/obj/gen/builtin_types.o
 FUZZ_LIBA     := $(FUZZ_BUILD)/libgeneric.a
 # What fuzz-seed copies (the examples of each input kind; tests/bad/*.mat are broken on purpose, good seeds too).
 FUZZ_SEED_reader := examples/materials/*.mat examples/textures/*.txt tests/good/*.mat tests/bad/*.mat
@@ -203,11 +214,15 @@ $(FUZZ_CXX_OBJ): $(FUZZ_BUILD)/obj/%.o: %.cpp
 	@mkdir -p $(dir $@)
 	$(FUZZ_CXX) $(FUZZ_CPPFLAGS) $(FUZZ_CXXFLAGS) -c $< -o $@
 
+$(FUZZ_GEN_OBJ): $(call GEN_BUILTINS,$(FUZZ_BUILD))
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CPPFLAGS) $(FUZZ_CFLAGS) -c $< -o $@
+
 $(FUZZ_BUILD)/obj/tests/fuzz/%.o: tests/fuzz/%.c
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CPPFLAGS) $(FUZZ_CFLAGS) -c $< -o $@
 
-$(FUZZ_LIBA): $(FUZZ_C_OBJ) $(FUZZ_CXX_OBJ)
+$(FUZZ_LIBA): $(FUZZ_C_OBJ) $(FUZZ_CXX_OBJ) $(FUZZ_GEN_OBJ)
 	rm -f $@
 	ar rcs $@ $^
 

@@ -5,6 +5,7 @@
  * may keep o in registers while the interface goes through memory; brightness reads a value in memory.
  * Prints figures; never fails on time. Targets: rgb within 3x of inline code, the 81-sample spectrum
  * within 1.5x. */
+#include "generic/builtins.h"
 #include "generic/color.h"
 
 #include <math.h>
@@ -234,6 +235,8 @@ static void print_row(const char *model, const char *op, Row r)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     Row rgb[3], s9[3], s81[3], b41[3], mv;
     GColorModelOptions five = {5, 0, 0}, ten = {10, 0, 0};
     printf("%-22s %-14s %12s %12s %12s %8s\n", "model", "operation", "interface", "plain loop", "vectorised", "ratio");

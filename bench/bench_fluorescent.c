@@ -2,6 +2,7 @@
  * bispectral model (41 x 41 re-radiation matrix) and in the spectrum model (the matrix folded into a
  * reflectance), with the cost of the matrix-vector product alone for comparison. One thread; the same
  * 4096 random direction pairs for every material. Prints figures, never fails on time. */
+#include "generic/builtins.h"
 #include "generic/fluorescent.h"
 #include "generic/materials.h"
 
@@ -147,6 +148,8 @@ static int run(const char *model_name, const GReradiation *r, long n)
 
 int main(int argc, char **argv)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     long n = argc > 1 ? atol(argv[1]) : 2000000;
     srand(1);
     for (int k = 0; k < PAIRS; k++) {

@@ -5,6 +5,7 @@
  *   3. irradiance optimisation of 64 lights on that probe;
  *   4. the accuracy goal on each shared probe: irradiance optimisation with N/2 lights against median cut
  *      with N lights (mean error, the paper's measure), N = 8..128. */
+#include "generic/builtins.h"
 #include "generic/memory.h"
 #include "generic/probe.h"
 
@@ -66,6 +67,8 @@ static double loadavg(void)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     GError err;
     const char *blender[] = {"courtyard.exr", "forest.exr", "city.exr", "sunrise.exr", NULL};
     char path[512] = "";

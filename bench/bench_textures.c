@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include "generic/builtins.h"
 
 static double now(void)
 {
@@ -85,6 +86,8 @@ static GMaterial *lambert(const GColorModel *m, double r, double g, double b)
 
 int main(int argc, char **argv)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const char *model_name = argc > 1 ? argv[1] : "rgb";
     GError err;
     GColorModel *model;

@@ -47,8 +47,8 @@
  *          - excitation and emission outside the model's range are dropped;
  *          - a matrix whose excitation and emission grids share no wavelength has no diagonal and is
  *            refused. */
+#include "generic/plugin.h"
 #include "generic/color.h"
-#include "colormodels.h"
 #include "spectral_common.h"
 
 enum { BI_MAX = 128 };
@@ -328,7 +328,7 @@ done:
     return rc;
 }
 
-const GColorModelClass gcolormodel_bispectral = {
+static const GColorModelClass gcolormodel_bispectral = {
     .abi_version = GCOLOR_ABI_VERSION,
     .name = "bispectral",
     .description = "spectra and fluorescent re-radiation matrices (default 380..780 nm at 10 nm)",
@@ -347,3 +347,5 @@ const GColorModelClass gcolormodel_bispectral = {
     .from_rgb = gspectral_from_rgb,
     .from_reradiation = bi_from_reradiation,
 };
+
+GENERIC_TYPE(bispectral, GKIND_COLORMODEL, &gcolormodel_bispectral, NULL, NULL);

@@ -1,7 +1,7 @@
 /* rgb.c - the RGB colour model: linear Rec.709/sRGB primaries, D65 white. Conversions to XYZ use the
  * sRGB matrix directly; to and from spectra go through the spectral primary basis (lib/cie.c). */
+#include "generic/plugin.h"
 #include "generic/color.h"
-#include "colormodels.h"
 
 #include <math.h>
 
@@ -115,7 +115,7 @@ static int rgb_from_rgb(const GColorModel *m, const double rgb[3], GColorRole ro
     return G_OK;
 }
 
-const GColorModelClass gcolormodel_rgb = {
+static const GColorModelClass gcolormodel_rgb = {
     .abi_version = GCOLOR_ABI_VERSION,
     .name = "rgb",
     .description = "linear Rec.709/sRGB primaries, D65 white",
@@ -132,3 +132,5 @@ const GColorModelClass gcolormodel_rgb = {
     .to_xyz = rgb_to_xyz,
     .from_rgb = rgb_from_rgb,
 };
+
+GENERIC_TYPE(rgb, GKIND_COLORMODEL, &gcolormodel_rgb, NULL, NULL);

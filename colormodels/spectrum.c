@@ -6,8 +6,8 @@
  * average around each sample (energy conserving, the identity at 1 nm; see spectral_common.c). to_xyz
  * and brightness use weights computed once from the CIE tables through that same interpolation, so
  * they agree with the nm path while costing n multiply-adds. */
+#include "generic/plugin.h"
 #include "generic/color.h"
-#include "colormodels.h"
 #include "spectral_common.h"
 
 /* The model's priv struct is a plain GSpectral. */
@@ -16,7 +16,7 @@ static int spectrum_init(GColorModel *self, const GColorModelOptions *opt, GErro
     return gspectral_model_init(self, opt, 5.0, GSPECTRAL_MAX_SAMPLES, 0, err);
 }
 
-const GColorModelClass gcolormodel_spectrum = {
+static const GColorModelClass gcolormodel_spectrum = {
     .abi_version = GCOLOR_ABI_VERSION,
     .name = "spectrum",
     .description = "spectrum sampled every step_nm (default 380..780 nm at 5 nm)",
@@ -34,3 +34,5 @@ const GColorModelClass gcolormodel_spectrum = {
     .to_xyz = gspectral_to_xyz,
     .from_rgb = gspectral_from_rgb,
 };
+
+GENERIC_TYPE(spectrum, GKIND_COLORMODEL, &gcolormodel_spectrum, NULL, NULL);

@@ -11,8 +11,8 @@
  * therefore corrected to be exact (spectral_common.c), at a price: saturated reflectances get samples
  * outside [0, 1] (down to -0.13 and up to 1.13 for the sRGB primaries), which nine spline samples need
  * to reach their chroma. The grid is fixed; options other than its own values are refused. */
+#include "generic/plugin.h"
 #include "generic/color.h"
-#include "colormodels.h"
 #include "spectral_common.h"
 
 enum { N9 = 9 };
@@ -88,7 +88,7 @@ static int spectrum9_to_nm(const GColorModel *m, const GColor *a, GColorRole rol
     return G_OK;
 }
 
-const GColorModelClass gcolormodel_spectrum9 = {
+static const GColorModelClass gcolormodel_spectrum9 = {
     .abi_version = GCOLOR_ABI_VERSION,
     .name = "spectrum9",
     .description = "9 samples 380..780 nm every 50 nm, natural cubic spline in between",
@@ -106,3 +106,5 @@ const GColorModelClass gcolormodel_spectrum9 = {
     .to_xyz = gspectral_to_xyz,
     .from_rgb = gspectral_from_rgb,
 };
+
+GENERIC_TYPE(spectrum9, GKIND_COLORMODEL, &gcolormodel_spectrum9, NULL, NULL);

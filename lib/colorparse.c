@@ -2,7 +2,7 @@
  * A literal is parsed into a model-free GColorSpec; each use converts it into the file's colour model in the
  * role of that use (reflectance or light). */
 #include "reader_internal.h"
-#include "colorparse.h"
+#include "generic/plugin.h"
 #include "generic/bfc.h"
 #include "generic/memory.h"
 
@@ -338,16 +338,17 @@ static int parse_scale(GReader *r, const void *vt, void **object, GError *err)
 
 static void destroy_spec(void *p) { gcolorspec_destroy(p); }
 
-const GTypeInfo gcolortype_rgb = {GKIND_COLOR, "rgb", NULL, parse_rgb, "linear sRGB: rgb R G B", destroy_spec};
-const GTypeInfo gcolortype_spectrum = {GKIND_COLOR, "spectrum", NULL, parse_spectrum,
-                                       "tabulated spectrum: spectrum { NM VALUE ... }", destroy_spec};
-const GTypeInfo gcolortype_blackbody = {GKIND_COLOR, "blackbody", NULL, parse_blackbody,
-                                        "Planck radiator, Y = 1: blackbody KELVIN", destroy_spec};
-const GTypeInfo gcolortype_illuminant = {GKIND_COLOR, "illuminant", NULL, parse_illuminant,
-                                         "CIE illuminant, Y = 1: illuminant D65|A|E", destroy_spec};
-const GTypeInfo gcolortype_line = {GKIND_COLOR, "line", NULL, parse_line,
-                                   "monochromatic line: line NM [POWER]", destroy_spec};
-const GTypeInfo gcolortype_bfc = {GKIND_COLOR, "bfc", NULL, parse_bfc,
-                                  "measured re-radiation matrix: bfc \"FILE.BFC\"", destroy_spec};
-const GTypeInfo gcolortype_scale = {GKIND_COLOR, "scale", NULL, parse_scale, "scaled colour: scale FACTOR COLOR",
-                                    destroy_spec};
+/* The colour literal types; the build lists them with the other built-ins (builtins.h). */
+GENERIC_TYPE_NAMED(color_rgb, GKIND_COLOR, "rgb", parse_rgb, "linear sRGB: rgb R G B", destroy_spec);
+GENERIC_TYPE_NAMED(color_spectrum, GKIND_COLOR, "spectrum", parse_spectrum,
+                   "tabulated spectrum: spectrum { NM VALUE ... }", destroy_spec);
+GENERIC_TYPE_NAMED(color_blackbody, GKIND_COLOR, "blackbody", parse_blackbody,
+                   "Planck radiator, Y = 1: blackbody KELVIN", destroy_spec);
+GENERIC_TYPE_NAMED(color_illuminant, GKIND_COLOR, "illuminant", parse_illuminant,
+                   "CIE illuminant, Y = 1: illuminant D65|A|E", destroy_spec);
+GENERIC_TYPE_NAMED(color_line, GKIND_COLOR, "line", parse_line, "monochromatic line: line NM [POWER]",
+                   destroy_spec);
+GENERIC_TYPE_NAMED(color_bfc, GKIND_COLOR, "bfc", parse_bfc, "measured re-radiation matrix: bfc \"FILE.BFC\"",
+                   destroy_spec);
+GENERIC_TYPE_NAMED(color_scale, GKIND_COLOR, "scale", parse_scale, "scaled colour: scale FACTOR COLOR",
+                   destroy_spec);

@@ -30,15 +30,18 @@ static int add_type(GModuleApi *api, const GTypeInfo *info, GError *err)
     Pending *p = api ? api->priv : NULL;
     if (!p || !p->open)
         return gerror_set(err, G_ERR_INVALID, "types can only be registered while a module initialises");
-    if (!info || !info->name || !info->name[0] || (unsigned)info->kind >= GKIND_COUNT)
+    GTypeInfo t;
+    if (info)
+        t = *info;
+    if (!info || gtypeinfo_complete(&t, NULL) != G_OK)
         return gerror_set(err, G_ERR_INVALID, "module '%s' registers an invalid type", api->path);
     if (p->count == MAX_TYPES)
         return gerror_set(err, G_ERR_INVALID, "module '%s' registers more than %d types", api->path, MAX_TYPES);
     for (int i = 0; i < p->count; i++)
-        if (p->types[i].kind == info->kind && strcmp(p->types[i].name, info->name) == 0)
+        if (p->types[i].kind == t.kind && strcmp(p->types[i].name, t.name) == 0)
             return gerror_set(err, G_ERR_EXISTS, "module '%s' registers %s type '%s' twice", api->path,
-                              gkind_name(info->kind), info->name);
-    p->types[p->count++] = *info;
+                              gkind_name(t.kind), t.name);
+    p->types[p->count++] = t;
     return G_OK;
 }
 

@@ -1,7 +1,7 @@
-/* registry.c - per-kind tables of registered types. */
+/* registry.c - per-kind tables of registered types. The registry starts empty: it knows no concrete type
+ * (programs register the built-ins with generic_register_builtins, modules add theirs while they load). */
 #include "generic/registry.h"
 #include "generic/memory.h"
-#include "builtins.h"
 
 #include <pthread.h>
 #include <stdio.h>
@@ -15,7 +15,6 @@ typedef struct Table {
 
 static Table tables[GKIND_COUNT];
 static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
-static pthread_once_t once = PTHREAD_ONCE_INIT;
 
 static const char *const kind_names[GKIND_COUNT] = {
     "colormodel", "color", "material", "node", "generator", "object", "light", "camera",
@@ -26,13 +25,42 @@ const char *gkind_name(GKind kind)
     return (unsigned)kind < GKIND_COUNT ? kind_names[kind] : "?";
 }
 
+int gtypeinfo_complete(GTypeInfo *info, GError *err)
+{
+    if (!info || (unsigned)info->kind >= GKIND_COUNT)
+        return gerror_set(err, G_ERR_INVALID, "invalid type registration: unknown kind");
+    if ((!info->name || !info->summary) && info->vtable) {
+        GClassHeader h; /* the vtable's leading members (copied: the vtable is of another struct type) */
+        memcpy(&h, info->vtable, sizeof h);
+        if (!info->name)
+            info->name = h.name;
+        if (!info->summary)
+            info->summary = h.description;
+    }
+    if (!info->name || !info->name[0])
+        return gerror_set(err, G_ERR_INVALID, "invalid %s type registration: no name", gkind_name(info->kind));
+    if (!info->summary)
+        info->summary = "";
+    return G_OK;
+}
+
+/* The registered record of that kind and name, or NULL; the caller holds the lock. */
+static const GTypeInfo *find_locked(GKind kind, const char *name)
+{
+    Table *t = &tables[kind];
+    for (int i = 0; i < t->count; i++)
+        if (strcmp(t->items[i]->name, name) == 0)
+            return t->items[i];
+    return NULL;
+}
+
+/* Adds a completed record; the caller holds the lock. */
 static int add_locked(const GTypeInfo *info, GError *err)
 {
     Table *t = &tables[info->kind];
-    for (int i = 0; i < t->count; i++)
-        if (strcmp(t->items[i]->name, info->name) == 0)
-            return gerror_set(err, G_ERR_EXISTS, "%s type '%s' is already registered", gkind_name(info->kind),
-                              info->name);
+    if (find_locked(info->kind, info->name))
+        return gerror_set(err, G_ERR_EXISTS, "%s type '%s' is already registered", gkind_name(info->kind),
+                          info->name);
     if (t->count == t->cap) {
         int cap = t->cap ? t->cap * 2 : 16;
         GTypeInfo **n = gmem_realloc(t->items, (size_t)cap * sizeof *n);
@@ -49,21 +77,33 @@ static int add_locked(const GTypeInfo *info, GError *err)
     return G_OK;
 }
 
-static void register_builtins(void)
-{
-    for (const GTypeInfo *const *p = gbuiltin_types(); *p; p++)
-        add_locked(*p, NULL);
-}
-
-static void ensure_init(void) { pthread_once(&once, register_builtins); }
-
 int gregistry_add(const GTypeInfo *info, GError *err)
 {
-    if (!info || !info->name || !info->name[0] || (unsigned)info->kind >= GKIND_COUNT)
-        return gerror_set(err, G_ERR_INVALID, "invalid type registration");
-    ensure_init();
+    if (!info)
+        return gerror_set(err, G_ERR_INVALID, "invalid type registration: no record");
+    GTypeInfo t = *info;
+    int rc = gtypeinfo_complete(&t, err);
+    if (rc != G_OK)
+        return rc;
     pthread_mutex_lock(&lock);
-    int rc = add_locked(info, err);
+    rc = add_locked(&t, err);
+    pthread_mutex_unlock(&lock);
+    return rc;
+}
+
+int gregistry_add_list(const GTypeInfo *const *list, GError *err)
+{
+    int rc = G_OK;
+    pthread_mutex_lock(&lock);
+    for (const GTypeInfo *const *p = list; p && *p && rc == G_OK; p++) {
+        GTypeInfo t = **p;
+        if ((rc = gtypeinfo_complete(&t, err)) != G_OK)
+            break;
+        const GTypeInfo *have = find_locked(t.kind, t.name);
+        if (have && have->vtable == t.vtable && have->parse == t.parse)
+            continue; /* this very record: registered before */
+        rc = add_locked(&t, err);
+    }
     pthread_mutex_unlock(&lock);
     return rc;
 }
@@ -72,13 +112,8 @@ const GTypeInfo *gregistry_find(GKind kind, const char *name)
 {
     if ((unsigned)kind >= GKIND_COUNT || !name)
         return NULL;
-    ensure_init();
-    const GTypeInfo *found = NULL;
     pthread_mutex_lock(&lock);
-    Table *t = &tables[kind];
-    for (int i = 0; i < t->count && !found; i++)
-        if (strcmp(t->items[i]->name, name) == 0)
-            found = t->items[i];
+    const GTypeInfo *found = find_locked(kind, name);
     pthread_mutex_unlock(&lock);
     return found;
 }
@@ -87,7 +122,6 @@ int gregistry_list(GKind kind, const GTypeInfo **out, int max)
 {
     if ((unsigned)kind >= GKIND_COUNT)
         return 0;
-    ensure_init();
     pthread_mutex_lock(&lock);
     Table *t = &tables[kind];
     int n = t->count;
@@ -104,7 +138,6 @@ void gregistry_names(GKind kind, char *buf, size_t size)
     buf[0] = '\0';
     if ((unsigned)kind >= GKIND_COUNT)
         return;
-    ensure_init();
     pthread_mutex_lock(&lock);
     Table *t = &tables[kind];
     size_t used = 0;

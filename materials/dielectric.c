@@ -1,5 +1,7 @@
 /* dielectric.c - a smooth dielectric interface: dispersion formulas, unpolarised Fresnel reflection and
  * refraction, total internal reflection, Beer-Lambert absorption inside. */
+#include "generic/plugin.h"
+#include "material_parsers.h"
 #include "generic/materials.h"
 #include "materials_builtin.h"
 #include "params.h"
@@ -259,3 +261,5 @@ int gdielectric_create(const GColorModel *model, const GDielectricParams *params
     *out = &d->base;
     return G_OK;
 }
+
+GENERIC_TYPE(dielectric, GKIND_MATERIAL, &gmaterial_dielectric, gparse_dielectric, NULL);

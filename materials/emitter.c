@@ -1,4 +1,6 @@
 /* emitter.c - a surface that emits radiance L from its front (or both sides). */
+#include "generic/plugin.h"
+#include "material_parsers.h"
 #include "generic/materials.h"
 #include "materials_builtin.h"
 #include "params.h"
@@ -40,3 +42,5 @@ int gemitter_create(const GColorModel *model, const GColor *radiance, int two_si
         ((Emitter *)*out)->two_sided = two_sided != 0;
     return rc;
 }
+
+GENERIC_TYPE(emitter, GKIND_MATERIAL, &gmaterial_emitter, gparse_emitter, NULL);

@@ -1,4 +1,6 @@
 /* lambert.c - the ideal diffuse reflector: f_r = rho / pi. */
+#include "generic/plugin.h"
+#include "material_parsers.h"
 #include "generic/materials.h"
 #include "materials_builtin.h"
 #include "params.h"
@@ -48,3 +50,5 @@ int glambert_create(const GColorModel *model, const GColor *reflectance, GMateri
     return gmat_one_color_create(&gmaterial_lambert, model, sizeof(GMatOneColor), reflectance, GCOLOR_REFLECTANCE,
                                  1.0, "reflectance", out, err);
 }
+
+GENERIC_TYPE(lambert, GKIND_MATERIAL, &gmaterial_lambert, gparse_lambert, NULL);

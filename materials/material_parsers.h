@@ -1,5 +1,5 @@
 /* material_parsers.h - parse routines of the built-in materials (materials/material_parsers.c), listed in
- * the materials section of lib/builtins.c. Parameters are documented in README.md, "Text format". */
+ * the materials section of its type record (GENERIC_TYPE). Parameters are documented in README.md, "Text format". */
 #ifndef GENERIC_MATERIAL_PARSERS_H
 #define GENERIC_MATERIAL_PARSERS_H
 

@@ -1,5 +1,5 @@
 /* materials_builtin.h - the built-in material classes (one .c file each in materials/), registered
- * under GKIND_MATERIAL by lib/builtins.c. Their constructors are public in generic/materials.h. */
+ * under GKIND_MATERIAL by its type record (GENERIC_TYPE). Their constructors are public in generic/materials.h. */
 #ifndef GENERIC_MATERIALS_BUILTIN_H
 #define GENERIC_MATERIALS_BUILTIN_H
 

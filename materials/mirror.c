@@ -1,4 +1,6 @@
 /* mirror.c - the perfect specular reflector of the paper's example. */
+#include "generic/plugin.h"
+#include "material_parsers.h"
 #include "generic/materials.h"
 #include "materials_builtin.h"
 #include "params.h"
@@ -44,3 +46,5 @@ int gmirror_create(const GColorModel *model, const GColor *reflectance, GMateria
     return gmat_one_color_create(&gmaterial_mirror, model, sizeof(GMatOneColor), reflectance, GCOLOR_REFLECTANCE,
                                  1.0, "reflectance", out, err);
 }
+
+GENERIC_TYPE(mirror, GKIND_MATERIAL, &gmaterial_mirror, gparse_mirror, NULL);

@@ -1,5 +1,7 @@
 /* phong.c - energy-normalised Phong: f_r = kd / pi + ks (n + 2) / (2 pi) cos^n(alpha), with an optional
  * ideal reflection ray of reflectance `mirror`. */
+#include "generic/plugin.h"
+#include "material_parsers.h"
 #include "generic/materials.h"
 #include "materials_builtin.h"
 #include "params.h"
@@ -149,3 +151,5 @@ int gphong_create(const GColorModel *model, const GPhongParams *params, GMateria
     *out = &p->base;
     return G_OK;
 }
+
+GENERIC_TYPE(phong, GKIND_MATERIAL, &gmaterial_phong, gparse_phong, NULL);

@@ -13,6 +13,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "generic/builtins.h"
 #include "generic/bfc.h"
 
 static const char *data_file(const char *name)
@@ -123,6 +124,8 @@ static void test_small_and_malformed(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_real_files),
         cmocka_unit_test(test_small_and_malformed),

@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "generic/builtins.h"
 #include "generic/color.h"
 
 enum { CAP = 128 * 128 };
@@ -497,6 +498,8 @@ static void test_grid_limit(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_diagonal_matrix_is_a_reflectance),
         cmocka_unit_test(test_single_entry_moves_energy),

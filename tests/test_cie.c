@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "generic/builtins.h"
 #include "generic/color.h"
 
 static void xy_of(const double xyz[3], double *x, double *y)
@@ -264,6 +265,8 @@ static void test_rgb_basis(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_d65_white_point), cmocka_unit_test(test_equal_energy_and_a),
         cmocka_unit_test(test_cmf_values),      cmocka_unit_test(test_tables_match_colord),

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "generic/builtins.h"
 #include "generic/color.h"
 #include "test_util.h"
 
@@ -560,6 +561,8 @@ static void test_operations_do_not_allocate(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_create_by_name),
         cmocka_unit_test(test_unknown_name),

@@ -16,6 +16,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "generic/builtins.h"
 #include "generic/bfc.h"
 #include "generic/memory.h"
 #include "generic/reader.h"
@@ -246,6 +247,8 @@ static void test_spec_copy(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_line_energy_in_spectral_models),
         cmocka_unit_test(test_line_in_rgb_is_the_cmf),

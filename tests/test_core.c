@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "generic/builtins.h"
 #include "test_util.h"
 
 static void test_error_record(void **state)
@@ -152,6 +153,8 @@ static void test_out_of_memory(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_error_record),
         cmocka_unit_test(test_scratch_mark_release),

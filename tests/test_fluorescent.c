@@ -15,6 +15,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "generic/builtins.h"
 #include "generic/bfc.h"
 #include "generic/fluorescent.h"
 #include "generic/reader.h"
@@ -605,6 +606,8 @@ static void test_alloc_failures(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_matrix_energy),
         cmocka_unit_test(test_matrix_emission_peak),

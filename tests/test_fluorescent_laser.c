@@ -15,6 +15,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "generic/builtins.h"
 #include "generic/bfc.h"
 #include "generic/fluorescent.h"
 #include "test_util.h"
@@ -302,6 +303,8 @@ static void test_dominant_wavelength(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         BOTH(test_varnish_angle_dependence),
         BOTH(test_phong_angle_independence),

@@ -14,6 +14,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "generic/builtins.h"
 #include "generic/image.h"
 #include "test_util.h"
 
@@ -156,6 +157,8 @@ static void test_bad_input(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_albedo_lambert),
         cmocka_unit_test(test_albedo_phong),

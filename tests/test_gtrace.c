@@ -2,6 +2,7 @@
  * a mirror sphere in a constant background, a glass slab against Fresnel, shadows of opaque and glass
  * occluders, area and spot lights against their closed forms, rgb against spectrum on a grey world
  * (CIEDE2000), the depth limit, and NaN never reaching a pixel. Every case renders a few hundred pixels. */
+#include "generic/builtins.h"
 #include "test_gtrace_common.h"
 
 static const char *const all_models[] = {"rgb", "spectrum9", "spectrum", "bispectral"};
@@ -510,6 +511,8 @@ static void test_material_error_stops_render(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_lambert_point),
         cmocka_unit_test(test_mirror_background),

@@ -6,6 +6,7 @@
  * `gprobe compare` gives 0 for identical images and the analytic RMSE for a known difference; errors, the
  * command-line overrides and allocation failures while loading. Probes are tiny (64 x 32) and written into a
  * temporary directory. */
+#include "generic/builtins.h"
 #include "test_gtrace_common.h"
 
 #include <generic/image.h>
@@ -596,6 +597,8 @@ static void test_allocation_failures(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_constant_probe),       cmocka_unit_test(test_bright_pixel_shadow),
         cmocka_unit_test(test_background),           cmocka_unit_test(test_reference_ground_truth),

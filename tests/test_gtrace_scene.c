@@ -3,6 +3,7 @@
  * media), object transforms, OBJ meshes, the scene text format and its error positions, the output files
  * read back through OpenImageIO, and a check that the tracer's sources name no colour model and never
  * touch colour samples. */
+#include "generic/builtins.h"
 #include "test_gtrace_common.h"
 
 #include <generic/image.h>
@@ -583,6 +584,8 @@ static void test_allocation_failures(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_sphere_surface),       cmocka_unit_test(test_transformed_sphere),
         cmocka_unit_test(test_box_faces),            cmocka_unit_test(test_cylinder_disc_plane),

@@ -12,6 +12,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "generic/builtins.h"
 #include "generic/image.h"
 #include "generic/memory.h"
 
@@ -288,6 +289,8 @@ static void test_create_rejects_bad_sizes(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_srgb_transfer),
         cmocka_unit_test(test_exr_round_trip_exact),

@@ -10,6 +10,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "generic/builtins.h"
 #include "generic/color.h"
 #include "generic/material.h"
 #include "generic/materials.h"
@@ -228,6 +229,8 @@ static void test_constructors_out_of_memory(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         {"test_zero_alloc (rgb)", test_zero_alloc, NULL, NULL, (void *)"rgb"},
         {"test_zero_alloc (spectrum)", test_zero_alloc, NULL, NULL, (void *)"spectrum"},

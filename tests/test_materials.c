@@ -12,6 +12,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "generic/builtins.h"
 #include "generic/color.h"
 #include "generic/material.h"
 #include "generic/materials.h"
@@ -664,6 +665,8 @@ static void test_registered(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         BOTH(test_lambert_albedo),
         BOTH(test_phong_albedo),

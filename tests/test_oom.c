@@ -22,6 +22,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "generic/builtins.h"
 #include "generic/bfc.h"
 #include "generic/memory.h"
 #include "generic/reader.h"
@@ -349,6 +350,8 @@ static void test_bfc_read(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_material_file),
         cmocka_unit_test(test_texture_files),

@@ -15,6 +15,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "generic/builtins.h"
 #include "generic/plugin.h"
 #include "generic/reader.h"
 #include "generic/texture.h"
@@ -194,6 +195,8 @@ static void test_broken_modules(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_load_from_text_and_use),
         cmocka_unit_test(test_abi_mismatch_refused),

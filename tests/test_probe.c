@@ -11,6 +11,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "generic/builtins.h"
 #include "generic/memory.h"
 #include "generic/probe.h"
 
@@ -475,6 +476,8 @@ static void test_out_of_memory(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_weights_sum_to_power),
         cmocka_unit_test(test_constant_probe_gives_pi_L),

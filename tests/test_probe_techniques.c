@@ -11,6 +11,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "generic/builtins.h"
 #include "generic/memory.h"
 #include "generic/probe.h"
 
@@ -347,6 +348,8 @@ static void test_sh9_accuracy_on_shared_probes(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_single_bright_pixel),
         cmocka_unit_test(test_median_cut_counts_and_energy),

@@ -12,6 +12,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "generic/builtins.h"
 #include "generic/image.h"
 #include "generic/probe.h"
 
@@ -217,6 +218,8 @@ static void test_eval_csv_and_plot(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_help),
         cmocka_unit_test(test_clear_errors),

@@ -17,6 +17,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "generic/builtins.h"
 #include "generic/materials.h"
 #include "generic/memory.h"
 #include "generic/reader.h"
@@ -610,6 +611,8 @@ static void test_allocation_failures(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_colormodel_entry),
         cmocka_unit_test(test_colors_rgb_model),

@@ -17,6 +17,7 @@
 #include <sys/stat.h>
 
 #include "fuzz/fuzz_entry.h"
+#include "generic/builtins.h"
 #include "generic/materials.h"
 #include "generic/plugin.h"
 
@@ -202,6 +203,8 @@ static void test_white_in_every_model(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_reader),
         cmocka_unit_test(test_bfc),

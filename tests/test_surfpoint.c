@@ -8,6 +8,7 @@
 
 #include <math.h>
 
+#include "generic/builtins.h"
 #include "generic/color.h"
 #include "generic/material.h"
 #include "generic/materials.h"
@@ -206,6 +207,8 @@ static void test_uv_widths(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_normal_cached),
         cmocka_unit_test(test_cache_slots),

@@ -7,6 +7,7 @@
 #include <stdint.h>
 #include <cmocka.h>
 
+#include "generic/builtins.h"
 #include "texture_fixtures.h"
 
 #include <stdio.h>
@@ -353,6 +354,8 @@ static void test_bad_parameters(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_checker_parity),
         cmocka_unit_test(test_perlin_noise),

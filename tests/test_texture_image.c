@@ -11,6 +11,7 @@
 #include <generic/image.h>
 #include <generic/materials.h>
 
+#include "generic/builtins.h"
 #include "texture_fixtures.h"
 
 #include <math.h>
@@ -340,6 +341,8 @@ static void test_nonfinite_texels(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_exact_texels),
         cmocka_unit_test(test_mip_level_follows_footprint),

@@ -9,6 +9,7 @@
 
 #include <generic/materials.h>
 
+#include "generic/builtins.h"
 #include "texture_fixtures.h"
 #include "test_util.h"
 
@@ -494,6 +495,8 @@ static void test_out_of_memory(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_setup_teardown(test_interpolate_fast_path, setup, teardown),
         cmocka_unit_test_setup_teardown(test_interpolate_blend, setup, teardown),

@@ -9,6 +9,7 @@
 
 #include <generic/reader.h>
 
+#include "generic/builtins.h"
 #include "texture_fixtures.h"
 
 #include <dirent.h>
@@ -247,6 +248,8 @@ static void test_examples_load(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_setup_teardown(test_interpolate_checker, setup, teardown),
         cmocka_unit_test_setup_teardown(test_select_spline_bump_scale, setup, teardown),

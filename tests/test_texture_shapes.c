@@ -11,6 +11,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "generic/builtins.h"
 
 static void test_csg_solids(void **state)
 {
@@ -376,6 +377,8 @@ static void test_cpg_bad_input(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_csg_solids),
         cmocka_unit_test(test_csg_operations_and_transforms),

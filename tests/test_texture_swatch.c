@@ -14,6 +14,7 @@
 #include <unistd.h>
 
 #include <generic/image.h>
+#include "generic/builtins.h"
 #include "test_util.h"
 
 static char gmat[4096], matfile[4200], png[4200];
@@ -115,6 +116,8 @@ static void test_bad_input(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_flat_checker),
         cmocka_unit_test(test_sphere),

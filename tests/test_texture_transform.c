@@ -15,6 +15,7 @@
 #include <stdio.h>
 
 #include "node_fixture.h"
+#include "generic/builtins.h"
 
 /* A checker of dimension dim (cell size 1) blending a (even cells) and b (odd cells); *chk gets the generator. */
 static GMaterial *checker_tree(int dim, CountMat *a, CountMat *b, GGenerator **chk)
@@ -204,6 +205,8 @@ static void test_transform_moves_footprint(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test_setup_teardown(test_transform_moves_patterns, setup, teardown),
         cmocka_unit_test_setup_teardown(test_transform_cache_semantics, setup, teardown),

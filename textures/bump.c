@@ -1,5 +1,6 @@
 /* bump.c - the bump node: Blinn's (1978) perturbation of the normal by the gradient of a height field
  * along the surface tangents; every other method is the child's. */
+#include "generic/plugin.h"
 #include "node_common.h"
 #include "textures_builtin.h"
 
@@ -96,3 +97,5 @@ int gnode_bump_create(GMaterial *child, GGenerator *height, double strength, GMa
     *out = &b->node.base;
     return G_OK;
 }
+
+GENERIC_TYPE(bump, GKIND_NODE, &gnode_bump_class, gtexparse_bump, NULL);

@@ -1,4 +1,5 @@
 /* checker.c - the checker generator in (u, v) or in object space, box-filtered over the footprint. */
+#include "generic/plugin.h"
 #include "generic/textures.h"
 #include "textures_builtin.h"
 
@@ -70,3 +71,5 @@ int ggen_checker_create(int dims, double frequency, GGenerator **out, GError *er
     *out = &c->base;
     return G_OK;
 }
+
+GENERIC_TYPE(checker, GKIND_GENERATOR, &ggen_checker_class, gtexparse_checker, ggenerator_release);

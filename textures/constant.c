@@ -1,4 +1,5 @@
 /* constant.c - the constant generator. */
+#include "generic/plugin.h"
 #include "generic/textures.h"
 #include "textures_builtin.h"
 
@@ -46,3 +47,5 @@ int ggen_constant_create(double value, GGenerator **out, GError *err)
     *out = &c->base;
     return G_OK;
 }
+
+GENERIC_TYPE(constant, GKIND_GENERATOR, &ggen_constant_class, gtexparse_constant, ggenerator_release);

@@ -1,6 +1,7 @@
 /* cpg.c - CPG trees (constructive planar geometry): squares, circles and closed contours
  * (textures/cpg_path.c) with boolean operations and affine transforms, and the cpg generator: 1 inside,
  * 0 outside, at (u, v). */
+#include "generic/plugin.h"
 #include "cpg_internal.h"
 #include "textures_builtin.h"
 
@@ -190,3 +191,5 @@ int ggen_cpg_create(GCpgShape *root, GGenerator **out, GError *err)
     *out = &c->base;
     return G_OK;
 }
+
+GENERIC_TYPE(cpg, GKIND_GENERATOR, &ggen_cpg_class, gtexparse_cpg, ggenerator_release);

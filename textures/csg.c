@@ -1,5 +1,6 @@
 /* csg.c - CSG trees of solids (sphere, box, cylinder, cone, half-space) with boolean operations and
  * affine transforms, and the csg generator: 1 inside, 0 outside. */
+#include "generic/plugin.h"
 #include "generic/textures.h"
 #include "textures_builtin.h"
 
@@ -214,3 +215,5 @@ int ggen_csg_create(GCsgShape *root, GGeneratorSpace space, GGenerator **out, GE
     *out = &c->base;
     return G_OK;
 }
+
+GENERIC_TYPE(csg, GKIND_GENERATOR, &ggen_csg_class, gtexparse_csg, ggenerator_release);

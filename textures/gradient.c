@@ -1,4 +1,5 @@
 /* gradient.c - the linear field generator: offset + slope . c; a height field for bump nodes or a ramp. */
+#include "generic/plugin.h"
 #include "generic/textures.h"
 #include "textures_builtin.h"
 
@@ -59,3 +60,5 @@ int ggen_gradient_create(GGeneratorSpace space, GVec3 slope, double offset, GGen
     *out = &f->base;
     return G_OK;
 }
+
+GENERIC_TYPE(gradient, GKIND_GENERATOR, &ggen_gradient_class, gtexparse_gradient, ggenerator_release);

@@ -1,6 +1,7 @@
 /* image.c - the image node: the child's light-carrying colour results times the colour of an image at
  * (u, v), looked up through OpenImageIO's TextureSystem (lib/texture_oiio.cpp) with trilinear MIP-mapping
  * over the surface point's footprint. */
+#include "generic/plugin.h"
 #include "node_common.h"
 #include "textures_builtin.h"
 #include "texture_oiio.h"
@@ -190,3 +191,5 @@ int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptio
     *out = &im->node.base;
     return G_OK;
 }
+
+GENERIC_TYPE(image, GKIND_NODE, &gnode_image_class, gtexparse_image, NULL);

@@ -1,5 +1,6 @@
 /* interpolate.c - the interpolate node (two children blended by a generator) and, sharing every method,
  * the interpolate-one node (one method blended, the rest from the first child). */
+#include "generic/plugin.h"
 #include "node_common.h"
 #include "textures_builtin.h"
 
@@ -154,3 +155,6 @@ int gnode_interpolate_create(GMaterial *a, GMaterial *b, GGenerator *t, GMateria
 {
     return gtexnode_interpolate_make(&gnode_interpolate_class, a, b, t, -1, out, err);
 }
+
+GENERIC_TYPE(interpolate, GKIND_NODE, &gnode_interpolate_class, gtexparse_interpolate, NULL);
+GENERIC_TYPE(interpolate_one, GKIND_NODE, &gnode_interpolate_one_class, gtexparse_interpolate_one, NULL);

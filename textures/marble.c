@@ -1,4 +1,5 @@
 /* marble.c - the marble generator: sine veins across x displaced by Perlin's turbulence. */
+#include "generic/plugin.h"
 #include "noise.h"
 #include "textures_builtin.h"
 
@@ -63,3 +64,5 @@ int ggen_marble_create(const GNoiseParams *p, double stripes, double turbulence,
     *out = &m->base;
     return G_OK;
 }
+
+GENERIC_TYPE(marble, GKIND_GENERATOR, &ggen_marble_class, gtexparse_marble, ggenerator_release);

@@ -1,4 +1,5 @@
 /* perlin.c - the perlin generator: improved Perlin noise mapped to [0, 1], with its analytic gradient. */
+#include "generic/plugin.h"
 #include "noise.h"
 #include "textures_builtin.h"
 
@@ -50,3 +51,5 @@ int ggen_perlin_create(const GNoiseParams *p, GGenerator **out, GError *err)
     *out = &n->base;
     return G_OK;
 }
+
+GENERIC_TYPE(perlin, GKIND_GENERATOR, &ggen_perlin_class, gtexparse_perlin, ggenerator_release);

@@ -1,4 +1,5 @@
 /* scale.c - the scale node: the child's light-carrying colour results times a generator value. */
+#include "generic/plugin.h"
 #include "node_common.h"
 #include "textures_builtin.h"
 
@@ -110,3 +111,5 @@ int gnode_scale_create(GMaterial *child, GGenerator *factor, GMaterial **out, GE
     *out = &s->node.base;
     return G_OK;
 }
+
+GENERIC_TYPE(scale, GKIND_NODE, &gnode_scale_class, gtexparse_scale, NULL);

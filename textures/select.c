@@ -1,4 +1,5 @@
 /* select.c - the select node: an integer generator (e.g. the surface index) picks one of n children. */
+#include "generic/plugin.h"
 #include "node_common.h"
 #include "textures_builtin.h"
 
@@ -94,3 +95,5 @@ int gnode_select_create(GMaterial *const *children, int n, GGenerator *index, GM
 {
     return gtexlist_new(&gnode_select_class, children, n, index, sizeof(GTexList), out, err);
 }
+
+GENERIC_TYPE(select, GKIND_NODE, &gnode_select_class, gtexparse_select, NULL);

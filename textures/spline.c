@@ -1,5 +1,6 @@
 /* spline.c - the spline node: n children at t = i / (n - 1) blended by a cubic spline over a generator
  * value (Catmull-Rom by default; uniform B-spline and linear on request). */
+#include "generic/plugin.h"
 #include "node_common.h"
 #include "textures_builtin.h"
 
@@ -182,3 +183,5 @@ int gnode_spline_create(GMaterial *const *children, int n, GGenerator *t, GSplin
         ((Spline *)*out)->basis = (int)basis;
     return rc;
 }
+
+GENERIC_TYPE(spline, GKIND_NODE, &gnode_spline_class, gtexparse_spline, NULL);

@@ -1,4 +1,5 @@
 /* surface.c - the surface index generator (for select nodes: a material per face). */
+#include "generic/plugin.h"
 #include "generic/textures.h"
 #include "textures_builtin.h"
 
@@ -22,3 +23,5 @@ int ggen_surface_create(GGenerator **out, GError *err)
     *out = NULL;
     return gtexgen_new(&ggen_surface_class, GGENERATOR_SPACE_NONE, sizeof(GGenerator), out, err);
 }
+
+GENERIC_TYPE(surface, GKIND_GENERATOR, &ggen_surface_class, gtexparse_surface, ggenerator_release);

@@ -1,5 +1,5 @@
 /* textures_builtin.h - the built-in texture node and generator classes (textures/), registered by
- * lib/builtins.c under GKIND_NODE and GKIND_GENERATOR, with their parse routines (the parse_*.c files).
+ * its type record (GENERIC_TYPE) under GKIND_NODE and GKIND_GENERATOR, with their parse routines (the parse_*.c files).
  * The constructors are public in generic/textures.h. */
 #ifndef GENERIC_TEXTURES_BUILTIN_H
 #define GENERIC_TEXTURES_BUILTIN_H
@@ -30,14 +30,6 @@ extern const GGeneratorClass ggen_surface_class;    /**< textures/surface.c */
 extern const GGeneratorClass ggen_gradient_class;   /**< textures/gradient.c */
 extern const GGeneratorClass ggen_csg_class;        /**< textures/csg.c */
 extern const GGeneratorClass ggen_cpg_class;        /**< textures/cpg.c */
-
-/* ---- shared by the generators (textures/generator.c) ---- */
-/** Allocates a zeroed generator of `size` bytes (a struct that begins with its GGenerator) of class cls
- * computing in space, into *out: G_ERR_NOMEM "<class>: out of memory", or ggenerator_init's error. Until it
- * is complete, free it with gmem_free. */
-int gtexgen_new(const GGeneratorClass *cls, GGeneratorSpace space, size_t size, GGenerator **out, GError *err);
-/** The destroy method of the generators that own nothing but their own struct. */
-void gtexgen_free(GGenerator *self);
 
 /* ---- parse routines (GParseFn, registry.h): textures/parse_nodes.c, parse_generators.c, parse_shapes.c ---- */
 int gtexparse_interpolate(GReader *r, const void *vtable, void **object, GError *err);

@@ -2,6 +2,7 @@
  * and object-space point (with their tangents and footprints) are moved, which moves its patterns. The copy
  * caches its generator values in its own scope (gsurfpoint_cache_enter) and hands them back after each call,
  * so the subtree's generators run once per point however many methods are called through the node. */
+#include "generic/plugin.h"
 #include "node_common.h"
 #include "textures_builtin.h"
 
@@ -222,3 +223,5 @@ int gnode_transform_create(GMaterial *child, const GAffine2 *uv, const GAffine3 
     *out = &t->base;
     return G_OK;
 }
+
+GENERIC_TYPE(transform, GKIND_NODE, &gnode_transform_class, gtexparse_transform, NULL);

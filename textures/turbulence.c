@@ -1,4 +1,5 @@
 /* turbulence.c - the fbm (fractional Brownian motion) and turbulence (sum of |noise|) generators. */
+#include "generic/plugin.h"
 #include "noise.h"
 #include "textures_builtin.h"
 
@@ -78,3 +79,6 @@ int ggen_turbulence_create(const GNoiseParams *p, GGenerator **out, GError *err)
 {
     return make(&ggen_turbulence_class, p, out, err);
 }
+
+GENERIC_TYPE(fbm, GKIND_GENERATOR, &ggen_fbm_class, gtexparse_fbm, ggenerator_release);
+GENERIC_TYPE(turbulence, GKIND_GENERATOR, &ggen_turbulence_class, gtexparse_turbulence, ggenerator_release);

@@ -1,4 +1,5 @@
 /* wood.c - the wood generator: growth rings around the z axis, displaced by fbm. */
+#include "generic/plugin.h"
 #include "noise.h"
 #include "textures_builtin.h"
 
@@ -85,3 +86,5 @@ int ggen_wood_create(const GNoiseParams *p, double rings, double turbulence, dou
     *out = &w->base;
     return G_OK;
 }
+
+GENERIC_TYPE(wood, GKIND_GENERATOR, &ggen_wood_class, gtexparse_wood, ggenerator_release);

@@ -1,5 +1,6 @@
 /* gcolor - a colour report: a few colours converted into every registered colour model and back,
  * printed as linear sRGB and CIE XYZ. Built only on the public API. */
+#include <generic/builtins.h>
 #include <generic/color.h>
 #include <generic/registry.h>
 
@@ -53,6 +54,11 @@ static void report_model(const char *model_name, const Sample *samples, int n)
 
 int main(int argc, char **argv)
 {
+    GError reg_err;
+    if (generic_register_builtins(&reg_err) != G_OK) {
+        fprintf(stderr, "%s\n", reg_err.message);
+        return 1;
+    }
     Sample samples[32] = {
         {"white light", {1, 1, 1}, GCOLOR_LIGHT},
         {"grey 18%", {0.18, 0.18, 0.18}, GCOLOR_REFLECTANCE},

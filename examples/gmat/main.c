@@ -7,6 +7,7 @@
  * common options: --colormodel NAME [--step NM], --plugin MODULE.so (repeatable), --help */
 #include "gmat.h"
 
+#include <generic/builtins.h>
 #include <generic/plugin.h>
 
 #include <math.h>
@@ -240,6 +241,11 @@ static int run(const Args *a, GmatContext *ctx)
 
 int main(int argc, char **argv)
 {
+    GError reg_err;
+    if (generic_register_builtins(&reg_err) != G_OK) {
+        fprintf(stderr, "%s\n", reg_err.message);
+        return 1;
+    }
     if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "help") == 0) {
         usage_main(argc < 2 ? stderr : stdout);
         return argc < 2 ? 2 : 0;

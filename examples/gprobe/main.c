@@ -3,6 +3,7 @@
  * main.c: the command dispatch and the pieces every command shares. */
 #include "gprobe.h"
 
+#include <generic/builtins.h>
 #include <generic/memory.h>
 
 #include <errno.h>
@@ -33,6 +34,11 @@ static void usage(FILE *f)
 
 int main(int argc, char **argv)
 {
+    GError reg_err;
+    if (generic_register_builtins(&reg_err) != G_OK) {
+        fprintf(stderr, "%s\n", reg_err.message);
+        return 1;
+    }
     if (argc < 2 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "--help") == 0) {
         usage(argc < 2 ? stderr : stdout);
         return argc < 2 ? 2 : 0;

@@ -2,6 +2,7 @@
  * main.c: the command line, loading, rendering, writing, and the summary line. */
 #include "gtrace.h"
 
+#include <generic/builtins.h>
 #include <generic/registry.h>
 
 #include <errno.h>
@@ -170,6 +171,11 @@ static int parse_args(int argc, char **argv, Options *o)
 
 int main(int argc, char **argv)
 {
+    GError reg_err;
+    if (generic_register_builtins(&reg_err) != G_OK) {
+        fprintf(stderr, "%s\n", reg_err.message);
+        return 1;
+    }
     Options o;
     int a = parse_args(argc, argv, &o);
     if (a != 0)

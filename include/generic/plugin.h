@@ -1,15 +1,22 @@
 /* plugin.h - run-time modules: a shared object that registers colour models, colour literal types, materials,
  * texture nodes or generators (any GKind) while it loads.
  *
- * A module exports exactly two symbols (see examples/plugins/ for a complete one):
+ * Every type, built-in or not, is described by one record beside its code, written with GENERIC_TYPE:
  *
  *     #include <generic/plugin.h>
- *     GENERIC_MODULE_EXPORT const int generic_module_abi = GMODULE_ABI_VERSION;
- *     GENERIC_MODULE_EXPORT int generic_module_init(GModuleApi *api, GError *err)
- *     {
- *         static const GTypeInfo mine = {GKIND_MATERIAL, "oren_nayar", &my_class, my_parse, "rough diffuse", NULL};
- *         return api->add_type(api, &mine, err);
- *     }
+ *     static const GMaterialClass my_class = {GMATERIAL_ABI_VERSION, "oren_nayar", "rough diffuse", ...};
+ *     static int my_parse(GReader *r, const void *vtable, void **object, GError *err) { ... }
+ *     GENERIC_TYPE(oren_nayar, GKIND_MATERIAL, &my_class, my_parse, NULL);
+ *
+ * In the library's own sources that line is all: the build collects every GENERIC_TYPE record of colormodels/,
+ * materials/, textures/ and lib/ into the generated list of builtins.h. A file becomes a run-time module by one
+ * more line naming its records,
+ *
+ *     GENERIC_MODULE(&gtype_oren_nayar);
+ *
+ * which defines the two symbols a module exports (generic_module_abi and generic_module_init; see
+ * examples/plugins/ for complete modules). A module may also write generic_module_init by hand and call
+ * api->add_type for each record.
  *
  * The loader (gplugin_load, or a `plugin "file.so"` statement in a text file) opens the module with
  * dlopen(RTLD_NOW | RTLD_LOCAL), refuses a module whose generic_module_abi differs from the library's
@@ -67,6 +74,32 @@ struct GModuleApi {
 
 /** The module's entry point: registers its types through api->add_type; 0 on success. */
 typedef int (*GModuleInitFn)(GModuleApi *api, GError *err);
+
+/** Defines `const GTypeInfo gtype_<id>`, the record of a type: its kind, vtable, parse routine (NULL when it
+ * cannot be read from text) and destroy (NULL: the kind's default, see GTypeInfo); name and summary are the
+ * vtable's GClassHeader (the keyword is written once, in the class). */
+#define GENERIC_TYPE(id, kind, vtable, parse, destroy) \
+    const GTypeInfo gtype_##id = {(kind), NULL, (vtable), (parse), NULL, (destroy)}
+
+/** The record of a type without a vtable (a colour literal type): name and summary are given here. */
+#define GENERIC_TYPE_NAMED(id, kind, name, parse, summary, destroy) \
+    const GTypeInfo gtype_##id = {(kind), (name), NULL, (parse), (summary), (destroy)}
+
+/** Makes the file it ends a run-time module registering the given records (`&gtype_<id>`, ...): defines
+ * generic_module_abi and a generic_module_init that adds each record with api->add_type. */
+#define GENERIC_MODULE(...)                                                                        \
+    GENERIC_MODULE_EXPORT const int generic_module_abi = GMODULE_ABI_VERSION;                      \
+    GENERIC_MODULE_EXPORT int generic_module_init(GModuleApi *api, GError *err)                    \
+    {                                                                                              \
+        static const GTypeInfo *const generic_module_types_[] = {__VA_ARGS__};                     \
+        for (size_t i_ = 0; i_ < sizeof generic_module_types_ / sizeof generic_module_types_[0]; i_++) { \
+            int rc_ = api->add_type(api, generic_module_types_[i_], err);                          \
+            if (rc_ != G_OK)                                                                       \
+                return rc_;                                                                        \
+        }                                                                                          \
+        return G_OK;                                                                               \
+    }                                                                                              \
+    typedef int generic_module_end_
 
 /** Loads a module: G_ERR_IO with the dlerror() text when it cannot be opened or lacks a symbol, G_ERR_VERSION
  * when it was built for another GMODULE_ABI_VERSION, the init's status when that fails, G_ERR_EXISTS when it

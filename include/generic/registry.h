@@ -1,7 +1,10 @@
 /* registry.h - type keyword -> vtable + parse routine, one table per kind of object.
  *
- * Built-in types register themselves on first use of the registry (lib/builtins.c holds their table);
- * plug-in modules add theirs while they load. Names are unique within a kind. */
+ * The registry starts empty. Every type, built-in or from a module, is described by one GTypeInfo record
+ * that sits beside the type's code (GENERIC_TYPE in plugin.h). The built-in records are collected at build
+ * time into a generated list that a program registers with one call, generic_register_builtins()
+ * (builtins.h); run-time modules register theirs while they load (plugin.h). Names are unique within a
+ * kind. See docs/ARCHITECTURE.md. */
 #ifndef GENERIC_REGISTRY_H
 #define GENERIC_REGISTRY_H
 
@@ -30,22 +33,39 @@ typedef struct GReader GReader;
 /** Parse routine: reads an entry's parameters (after its keyword) and creates the object. */
 typedef int (*GParseFn)(GReader *reader, const void *vtable, void **object, GError *err);
 
-/** One registered type. */
+/** The members every vtable begins with, in this order (GColorModelClass, GMaterialClass, GGeneratorClass
+ * and any class a module defines for its own kind): the registry reads a type's name and summary from them. */
+typedef struct GClassHeader {
+    int abi_version;         /**< the kind's interface version */
+    const char *name;        /**< the type keyword */
+    const char *description; /**< one line for listings */
+} GClassHeader;
+
+/** One registered type. A record with a vtable may leave name and summary NULL: they are then the vtable's
+ * (GClassHeader), so the keyword is written once, in the class. */
 typedef struct GTypeInfo {
     GKind kind;
-    const char *name;    /**< the type keyword */
+    const char *name;    /**< the type keyword (NULL: the vtable's name) */
     const void *vtable;  /**< e.g. a GColorModelClass or GMaterialClass */
     GParseFn parse;      /**< NULL when the type cannot be read from text */
-    const char *summary; /**< one line for listings and error messages */
+    const char *summary; /**< one line for listings and error messages (NULL: the vtable's description) */
     /** Releases an object the parse routine made (when the library that owns it is destroyed). NULL takes the
      * kind's default: material and node: gmaterial_unref; colormodel: gcolormodel_destroy; color:
      * gcolorspec_destroy (reader.h); generator: its class's release (texture.h); other kinds: gmem_free. */
     void (*destroy)(void *object);
 } GTypeInfo;
 
-/** Registers a type (the struct is copied, the strings and vtable must outlive the registry);
- * G_ERR_EXISTS for a name already taken in that kind. Thread safe. */
+/** Registers a type (the struct is copied, with name and summary filled from the vtable when NULL; the
+ * strings and vtable must outlive the registry); G_ERR_EXISTS for a name already taken in that kind,
+ * G_ERR_INVALID for a record without a kind or a name. Thread safe. */
 int gregistry_add(const GTypeInfo *info, GError *err);
+/** Registers every record of a NULL-terminated list, in order. A record registered already (the same kind,
+ * name, vtable and parse routine) is skipped, so registering a list twice is a no-op; the first other failure
+ * stops and is returned (the records before it stay registered). Thread safe. */
+int gregistry_add_list(const GTypeInfo *const *list, GError *err);
+/** Completes a copy of a record: name and summary from its vtable's GClassHeader when they are NULL.
+ * G_ERR_INVALID when the kind is unknown or no name can be found. */
+int gtypeinfo_complete(GTypeInfo *info, GError *err);
 /** Finds a type by kind and keyword; NULL when unknown. */
 const GTypeInfo *gregistry_find(GKind kind, const char *name);
 /** Number of types of a kind; with out != NULL copies up to max pointers, in registration order. */

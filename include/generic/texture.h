@@ -22,6 +22,7 @@
 #ifndef GENERIC_TEXTURE_H
 #define GENERIC_TEXTURE_H
 
+#include <stddef.h>
 #include "error.h"
 #include "surfpoint.h"
 #include "vec.h"
@@ -68,6 +69,12 @@ struct GGeneratorClass {
 /** Fills the header of a new instance (refcount 1) with its space; G_ERR_VERSION when the class is of
  * another version, G_ERR_INVALID when destroy or value is missing or the space is unknown. */
 int ggenerator_init(GGenerator *g, const GGeneratorClass *cls, GGeneratorSpace space, GError *err);
+/** Allocates a zeroed generator of `size` bytes (a struct that begins with its GGenerator) of class cls
+ * computing in space, into *out: G_ERR_NOMEM "<class>: out of memory", or ggenerator_init's error. Until it
+ * is complete, free it with gmem_free. */
+int gtexgen_new(const GGeneratorClass *cls, GGeneratorSpace space, size_t size, GGenerator **out, GError *err);
+/** The destroy method of the generators that own nothing but their own struct (frees it with gmem_free). */
+void gtexgen_free(GGenerator *self);
 /** Adds an owner; returns g. */
 GGenerator *ggenerator_ref(GGenerator *g);
 /** Drops an owner and destroys the generator with the last; NULL is a no-op. */

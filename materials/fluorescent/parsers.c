@@ -12,6 +12,7 @@
  * Without `matrix` the default `reradiation` (a day-glo orange) is used. */
 #include "fluor_internal.h"
 #include "fluorescent_builtin.h"
+#include "generic/plugin.h"
 #include "generic/reader.h"
 
 #include <stddef.h>
@@ -221,14 +222,8 @@ static int parse_fluorescent_varnish(GReader *r, const void *vt, void **object, 
     return finish(rc, &mat, m, object);
 }
 
-const GTypeInfo gfluor_type_reradiation = {
-    .kind = GKIND_COLOR, .name = "reradiation", .parse = parse_reradiation,
-    .summary = "parametric fluorescent re-radiation matrix: reradiation { absorb_peak NM ... quantum_yield Q }"};
-const GTypeInfo gfluor_type_phong = {
-    .kind = GKIND_MATERIAL, .name = "fluorescent-phong", .vtable = &gmaterial_fluorescent_phong,
-    .parse = parse_fluorescent_phong,
-    .summary = "three Phong lobes (matrix diagonal) over a fluorescent Lambertian (Wilkie et al. 5.1)"};
-const GTypeInfo gfluor_type_varnish = {
-    .kind = GKIND_MATERIAL, .name = "fluorescent-varnish", .vtable = &gmaterial_fluorescent_varnish,
-    .parse = parse_fluorescent_varnish,
-    .summary = "rough Fresnel varnish over a fluorescent Lambertian base (Wilkie et al. 5.2)"};
+GENERIC_TYPE_NAMED(reradiation, GKIND_COLOR, "reradiation", parse_reradiation,
+                   "parametric fluorescent re-radiation matrix: reradiation { absorb_peak NM ... quantum_yield Q }",
+                   NULL);
+GENERIC_TYPE(fluorescent_phong, GKIND_MATERIAL, &gmaterial_fluorescent_phong, parse_fluorescent_phong, NULL);
+GENERIC_TYPE(fluorescent_varnish, GKIND_MATERIAL, &gmaterial_fluorescent_varnish, parse_fluorescent_varnish, NULL);

@@ -31,6 +31,7 @@
 #include <unistd.h>
 
 #include "generic/bfc.h"
+#include "generic/builtins.h"
 #include "generic/color.h"
 #include "generic/image.h"
 #include "generic/material.h"
@@ -119,6 +120,8 @@ GFUZZ_FN int gfuzz_setup(void)
 {
     if (gfuzz_dir[0])
         return 0;
+    if (generic_register_builtins(NULL) != G_OK)
+        return -1;
     const char *tmp = getenv("TMPDIR");
     snprintf(gfuzz_dir, sizeof gfuzz_dir, "%s/gfuzz.XXXXXX", tmp && tmp[0] ? tmp : "/tmp");
     if (!mkdtemp(gfuzz_dir)) {

@@ -7,13 +7,14 @@ stage=$(mktemp -d)
 trap 'rm -rf "$stage"' EXIT
 make --no-print-directory -s install BUILD="$BUILD" PREFIX=/usr DESTDIR="$stage" >/dev/null
 cat > "$stage/x.c" <<'C'
+#include <generic/builtins.h>
 #include <generic/color.h>
 #include <stdio.h>
 int main(void)
 {
     GError err;
     GColorModel *m;
-    if (gcolormodel_create("rgb", NULL, &m, &err) != G_OK) {
+    if (generic_register_builtins(&err) != G_OK || gcolormodel_create("rgb", NULL, &m, &err) != G_OK) {
         fprintf(stderr, "%s\n", err.message);
         return 1;
     }

@@ -1,6 +1,5 @@
-/* generator.c - dispatch of the generator interface: references, cached values and gradients. */
+/* generator.c - dispatch of the generator interface: creation, references, cached values and gradients. */
 #include "generic/texture.h"
-#include "textures_builtin.h"
 
 #include <math.h>
 #include <string.h>
