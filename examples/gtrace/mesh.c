@@ -1,6 +1,6 @@
 /* mesh.c - triangle meshes from Wavefront OBJ files (v, vt, vn, f; polygons become fans; negative indices
  * count from the end; usemtl and g start a new surface index) and the surface at a triangle hit. */
-#include "gtrace.h"
+#include "geometry.h"
 
 #include <errno.h>
 #include <math.h>

@@ -23,7 +23,7 @@
  *                       medium M }
  * Spot cones are full opening angles in degrees (inner: full intensity, outer: none). cutoff: rays whose
  * weight in their pixel is below W are not traced (default 1e-3, 0 traces everything to the depth). */
-#include "gtrace.h"
+#include "parse.h"
 
 #include <math.h>
 #include <string.h>

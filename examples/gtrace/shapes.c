@@ -4,7 +4,7 @@
  * Surface indices: box faces 0..5 = -x, +x, -y, +y, -z, +z; cylinder 0 side, 1 base cap, 2 top cap;
  * every other shape 0. (u,v): sphere longitude/latitude in [0,1] (v = 1 at the +y pole); plane: distance
  * along its frame; box faces, disc and caps: [0,1] across; cylinder side: angle and height in [0,1]. */
-#include "gtrace.h"
+#include "geometry.h"
 
 #include <math.h>
 
