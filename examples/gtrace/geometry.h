@@ -36,5 +36,8 @@ void shape_bounds(const Object *o, GVec3 *lo, GVec3 *hi);
 void shape_hit_geom(const Object *o, const Ray *r, const Hit *h, HitGeom *g);
 /** Surface details of a mesh triangle at a hit. */
 void mesh_hit_geom(const Object *o, const Ray *r, const Hit *h, HitGeom *g);
+/** Fills g's point, outward normal n, shading normal ns and tangents from object space (op, n, ns, dpdu, dpdv)
+ * in world space, keeping the object-space point and tangents; u, v and the surface are left to the caller. */
+void hit_geom_to_world(const Object *o, GVec3 op, GVec3 n, GVec3 ns, GVec3 dpdu, GVec3 dpdv, HitGeom *g);
 
 #endif
