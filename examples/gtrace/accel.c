@@ -5,10 +5,16 @@
  * normals are exact and no tessellation level has to be chosen). The double-precision ray travels to the
  * callbacks in an extended intersect context; the callback also keeps the exact t of the closest analytic
  * hit. Meshes are native Embree triangles with world-space vertices. */
-#include "gtrace.h"
+#include "accel.h"
 
+#include <embree3/rtcore.h>
 #include <math.h>
 #include <string.h>
+
+/* scene.h names Embree's handles without Embree's header; they must stay the types Embree hands out */
+_Static_assert(_Generic(((Scene *)0)->device, RTCDevice: 1, default: 0) &&
+                   _Generic(((Scene *)0)->rtc, RTCScene: 1, default: 0),
+               "Scene.device and Scene.rtc are not RTCDevice and RTCScene");
 
 typedef struct Context {
     struct RTCIntersectContext rtc; /* first: Embree hands this pointer back to the callbacks */

@@ -1,6 +1,6 @@
 /* camera.c - the pinhole camera (look-at and vertical field of view), pixel sample positions and the
  * random number generator. */
-#include "gtrace.h"
+#include "camera.h"
 
 #include <math.h>
 

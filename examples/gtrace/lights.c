@@ -12,7 +12,8 @@
  * coloured glass filters), media absorb over the lengths travelled inside them, and the ray continues
  * straight (no caustics; total internal reflection blocks). The material then reflects the light that got
  * through. Directional lights are not absorbed by the media (their distance is infinite). */
-#include "gtrace.h"
+#include "lighting.h"
+#include "accel.h"
 
 #include <math.h>
 

@@ -1,6 +1,10 @@
 /* gtrace - a Whitted ray tracer written only against the generic colour and material interfaces.
  * main.c: the command line, loading, rendering, writing, and the summary line. */
-#include "gtrace.h"
+#include "parse.h"
+#include "accel.h"
+#include "render.h"
+#include "output.h"
+#include "probe_env.h"
 
 #include <generic/builtins.h>
 #include <generic/registry.h>

@@ -1,6 +1,6 @@
 /* mesh.c - triangle meshes from Wavefront OBJ files (v, vt, vn, f; polygons become fans; negative indices
  * count from the end; usemtl and g start a new surface index) and the surface at a triangle hit. */
-#include "gtrace.h"
+#include "geometry.h"
 
 #include <errno.h>
 #include <math.h>
@@ -8,43 +8,29 @@
 #include <stdlib.h>
 #include <string.h>
 
-typedef struct DArr {
-    double *data;
-    int n, cap; /* in doubles */
-} DArr;
+/* A growing array of elements of one size (doubles or ints here). */
+typedef struct Arr {
+    void *data;
+    int n, cap; /* in elements */
+} Arr;
 
-typedef struct IArr {
-    int *data;
-    int n, cap;
-} IArr;
-
-static int dpush(DArr *a, double x)
+/* Appends the `size`-byte element at x, doubling the storage (from 256 elements) when it is full. */
+static int arr_push(Arr *a, const void *x, size_t size)
 {
     if (a->n == a->cap) {
         int cap = a->cap ? a->cap * 2 : 256;
-        double *nv = gmem_realloc(a->data, (size_t)cap * sizeof *nv);
+        void *nv = gmem_realloc(a->data, (size_t)cap * size);
         if (!nv)
             return G_ERR_NOMEM;
         a->data = nv;
         a->cap = cap;
     }
-    a->data[a->n++] = x;
+    memcpy((char *)a->data + (size_t)a->n++ * size, x, size);
     return G_OK;
 }
 
-static int ipush(IArr *a, int x)
-{
-    if (a->n == a->cap) {
-        int cap = a->cap ? a->cap * 2 : 256;
-        int *nv = gmem_realloc(a->data, (size_t)cap * sizeof *nv);
-        if (!nv)
-            return G_ERR_NOMEM;
-        a->data = nv;
-        a->cap = cap;
-    }
-    a->data[a->n++] = x;
-    return G_OK;
-}
+static int dpush(Arr *a, double x) { return arr_push(a, &x, sizeof x); }
+static int ipush(Arr *a, int x) { return arr_push(a, &x, sizeof x); }
 
 void mesh_free(Mesh *m)
 {
@@ -73,8 +59,8 @@ static int resolve(long idx, int count)
 typedef struct Loader {
     const char *path;
     int line;
-    DArr pos, uv, nrm;
-    IArr tri, tuv, tn, tsurf;
+    Arr pos, uv, nrm;          /* doubles */
+    Arr tri, tuv, tn, tsurf;   /* ints */
     int surface, used_surface;
     GError *err;
 } Loader;
@@ -246,7 +232,7 @@ int object_mesh_load(Object *o, const char *path, GError *err)
             rc = gerror_set(err, G_ERR_NOMEM, "%s: out of memory", path);
         }
         for (int i = 0; i < L.tri.n; i++)
-            m->tri[i] = (unsigned)L.tri.data[i];
+            m->tri[i] = (unsigned)((const int *)L.tri.data)[i];
         gmem_free(L.tri.data);
         if (rc != G_OK) {
             mesh_free(m);
@@ -312,23 +298,8 @@ void mesh_hit_geom(const Object *o, const Ray *r, const Hit *h, HitGeom *g)
     } else {
         frame_from_normal(n, &dpdu, &dpdv);
     }
-    g->op = op;
     g->u = u;
     g->v = v;
     g->surface = m->tri_surface[k];
-    g->odpdu = dpdu;
-    g->odpdv = dpdv;
-    if (o->has_xf) {
-        g->p = xform_point(&o->xf, op);
-        g->n_out = gvec3_normalize(xform_normal(&o->xf, n));
-        g->n_smooth = gvec3_normalize(xform_normal(&o->xf, ns));
-        g->dpdu = xform_vector(&o->xf, dpdu);
-        g->dpdv = xform_vector(&o->xf, dpdv);
-    } else {
-        g->p = op;
-        g->n_out = n;
-        g->n_smooth = ns;
-        g->dpdu = dpdu;
-        g->dpdv = dpdv;
-    }
+    hit_geom_to_world(o, op, n, ns, dpdu, dpdv, g);
 }

@@ -2,7 +2,7 @@
  * encoding by extension and writes a temporary file that is renamed only when complete. Float formats
  * (.exr, .hdr, .pfm) get the linear values as rendered; 8-bit formats get the exposure, then the shim's
  * display encoding with clamping. */
-#include "gtrace.h"
+#include "output.h"
 
 #include <generic/image.h>
 

@@ -23,7 +23,7 @@
  *                       medium M }
  * Spot cones are full opening angles in degrees (inner: full intensity, outer: none). cutoff: rays whose
  * weight in their pixel is below W are not traced (default 1e-3, 0 traces everything to the depth). */
-#include "gtrace.h"
+#include "parse.h"
 
 #include <math.h>
 #include <string.h>
@@ -336,42 +336,36 @@ static const char *const light_summaries[] = {
 };
 static const int camera_vtable = 0;
 
+/* Registers a type unless its kind already has one of that name (so registering twice is harmless). */
+static int register_once(const GTypeInfo *t, GError *err)
+{
+    int rc = gregistry_find(t->kind, t->name) ? G_OK : gregistry_add(t, err);
+    return rc < 0 ? rc : G_OK;
+}
+
 int gtrace_register_types(GError *err)
 {
-    for (int i = 0; i < 6; i++) {
+    int rc = G_OK;
+    for (int i = 0; i < 6 && rc == G_OK; i++) {
         GTypeInfo t = {.kind = GKIND_OBJECT, .name = shape_names[i], .vtable = &shape_kinds[i],
                        .parse = parse_object, .summary = shape_summaries[i], .destroy = destroy_object};
-        if (gregistry_find(GKIND_OBJECT, t.name))
-            continue;
-        int rc = gregistry_add(&t, err);
-        if (rc < 0)
-            return rc;
+        rc = register_once(&t, err);
     }
-    for (int i = 0; i < 7; i++) {
+    for (int i = 0; i < 7 && rc == G_OK; i++) {
         GTypeInfo t = {.kind = GKIND_LIGHT, .name = light_names[i], .vtable = &light_types[i],
                        .parse = parse_light, .summary = light_summaries[i], .destroy = destroy_light};
-        if (gregistry_find(GKIND_LIGHT, t.name))
-            continue;
-        int rc = gregistry_add(&t, err);
-        if (rc < 0)
-            return rc;
+        rc = register_once(&t, err);
     }
     GTypeInfo probe = {.kind = GKIND_LIGHT, .name = "probe", .vtable = NULL, .parse = probe_light_parse,
                        .summary = "HDR light probe: directional lights of a technique, or Monte Carlo reference",
                        .destroy = probe_light_destroy};
-    if (!gregistry_find(GKIND_LIGHT, probe.name)) {
-        int rc = gregistry_add(&probe, err);
-        if (rc < 0)
-            return rc;
-    }
     GTypeInfo cam = {.kind = GKIND_CAMERA, .name = "pinhole", .vtable = &camera_vtable, .parse = parse_camera,
                      .summary = "pinhole camera: look-at, vertical field of view, image settings"};
-    if (!gregistry_find(GKIND_CAMERA, cam.name)) {
-        int rc = gregistry_add(&cam, err);
-        if (rc < 0)
-            return rc;
-    }
-    return G_OK;
+    if (rc == G_OK)
+        rc = register_once(&probe, err);
+    if (rc == G_OK)
+        rc = register_once(&cam, err);
+    return rc;
 }
 
 /* ---- scene from a library ---- */

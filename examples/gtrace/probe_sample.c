@@ -15,7 +15,9 @@
  * Each sample goes through the same path as every light (sample_light: material.reflection, shadow ray,
  * transmission through non-opaque surfaces); `shadows off` skips the shadow ray (the unoccluded render that
  * `gprobe compare --unshadowed` uses to find the shadows). */
-#include "gtrace.h"
+#include "probe_dist.h"
+#include "lighting.h"
+#include "probe_env.h"
 
 #include <math.h>
 #include <string.h>

@@ -1,6 +1,6 @@
 /* progress.c - a progress bar with the elapsed time and an estimate of the time left, drawn on stderr
  * only when stderr is a terminal (and not silenced), at most ten times a second. */
-#include "gtrace.h"
+#include "progress.h"
 
 #include <stdio.h>
 #include <time.h>

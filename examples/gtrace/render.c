@@ -3,7 +3,9 @@
  * does not depend on the thread count. Samples that come back NaN or infinite are counted and dropped
  * (they never reach a pixel); pixels leave the colour model through its XYZ conversion (as a light)
  * and become linear sRGB. */
-#include "gtrace.h"
+#include "render.h"
+#include "trace.h"
+#include "progress.h"
 
 #include <math.h>
 #include <omp.h>

@@ -1,6 +1,7 @@
 /* scene.c - the scene: colour model, objects with their materials and transforms, lights, camera,
  * background and ambient light. */
-#include "gtrace.h"
+#include "scene.h"
+#include "accel.h"
 
 #include <math.h>
 #include <string.h>

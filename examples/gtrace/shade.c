@@ -10,7 +10,10 @@
  * bounces instead of branching to the depth limit).
  * Colours only through gcolor_*, materials only through gmaterial_*; temporaries live on the thread's
  * scratch arena and are released before returning. */
-#include "gtrace.h"
+#include "trace.h"
+#include "accel.h"
+#include "lighting.h"
+#include "probe_env.h"
 
 #include <math.h>
 
@@ -123,16 +126,73 @@ void surfpoint_fill(TraceCtx *c, const Ray *r, const Hit *h, const Media *media,
         }                                                                                                              \
     } while (0)
 
+/* What the material passes on towards the viewer of light `in` arriving from dir: its reflection, or its
+ * refraction with the relative index ri when ri is given. */
+static int pass_on(const GMaterial *m, GSurfPoint *sp, GVec3 dir, const GColor *in, const GColor *ri,
+                   GVec3 to_viewer, GColor *out)
+{
+    return ri ? gmaterial_refraction(m, sp, dir, in, ri, to_viewer, out)
+              : gmaterial_reflection(m, sp, dir, in, to_viewer, out);
+}
+
+/* Adds to out the light that arrives along the secondary direction dir (a reflection_dir, or a refraction_dir
+ * with ri its relative index; NULL: reflection) through the media `next`, as the material passes it on
+ * towards the viewer. Adaptive depth: the branch is not traced when what it can bring to the pixel (the
+ * material's pass-on of 1, times the path's weight) is below the cutoff. */
+static int trace_secondary(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, GVec3 dir, const GColor *ri,
+                           const Media *next, int depth, GColor *out)
+{
+    const GMaterial *m = sp->material;
+    GVec3 to_viewer = gvec3_neg(r->d);
+    GScratchMark mark = gscratch_mark(c->scratch);
+    GColor tmp, illum;
+    int rc = G_OK;
+    CHECK(gcolor_scratch(&tmp, c->scene->model, c->scratch));
+    CHECK(pass_on(m, sp, dir, &c->unit, ri, to_viewer, &tmp));
+    double w = c->weight * gcolor_brightness(&tmp);
+    if (!(w > 0.0 && w >= c->cutoff))
+        goto done;
+    CHECK(gcolor_scratch(&illum, c->scene->model, c->scratch));
+    double width = r->cone_width + r->cone_spread * sp->t;
+    Ray ray = {offset_origin(sp->point, facing, dir), dir, 0.0, INFINITY, width, r->cone_spread};
+    double saved = c->weight;
+    c->weight = w;
+    rc = trace_ray(c, &ray, next, depth + 1, &illum);
+    c->weight = saved;
+    CHECK(rc);
+    CHECK(pass_on(m, sp, dir, &illum, ri, to_viewer, &tmp));
+    CHECK(gcolor_add(out, out, &tmp));
+done:
+    gscratch_release(c->scratch, mark);
+    return rc;
+}
+
+/* The relative refraction index n(from) / n(to) at sp, into ri (scratch storage). */
+static int relative_index(TraceCtx *c, GSurfPoint *sp, GColor *ri)
+{
+    GColor n_from, n_to;
+    int rc = G_OK;
+    CHECK(gcolor_scratch(&n_from, c->scene->model, c->scratch));
+    CHECK(gcolor_scratch(&n_to, c->scene->model, c->scratch));
+    CHECK(gcolor_scratch(ri, c->scene->model, c->scratch));
+    CHECK(gmaterial_refraction_index(sp->from, sp, &n_from));
+    CHECK(gmaterial_refraction_index(sp->to, sp, &n_to));
+    CHECK(gcolor_div(ri, &n_from, &n_to));
+done:
+    return rc;
+}
+
 static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const Media *media, int depth, GColor *out)
 {
     const Scene *s = c->scene;
     const GMaterial *m = sp->material;
     GScratchMark mark = gscratch_mark(c->scratch);
-    GVec3 view = r->d, to_viewer = gvec3_neg(r->d);
-    GColor tmp, illum;
-    int rc = G_OK, have_illum = 0; /* illum: only when a reflected or refracted ray is traced */
+    GVec3 view = r->d, to_viewer = gvec3_neg(r->d), dir;
+    GColor tmp;
+    int rc = G_OK, valid;
     CHECK(gcolor_scratch(&tmp, s->model, c->scratch));
 
+    /* emission, ambient light and the direct light of every light source */
     CHECK(gmaterial_emission(m, sp, to_viewer, out));
     if (s->have_ambient) {
         CHECK(gmaterial_ambient(m, sp, &s->ambient, &tmp));
@@ -145,54 +205,20 @@ static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const 
         for (int i = 0; i < s->nlights; i++)
             CHECK(light_shade(c, s->lights[i], sp, facing, media, to_viewer, opaque, &lt, out));
     }
-
     if (depth < c->max_depth) {
-        double width = r->cone_width + r->cone_spread * sp->t;
-        GVec3 dir;
-        int valid;
+        /* ideal reflection, in the medium the ray came through */
         CHECK(valid = gmaterial_reflection_dir(m, sp, view, &dir));
-        if (valid) {
-            CHECK(gmaterial_reflection(m, sp, dir, &c->unit, to_viewer, &tmp));
-            double w = c->weight * gcolor_brightness(&tmp);
-            if (w > 0.0 && w >= c->cutoff) {
-                if (!have_illum++)
-                    CHECK(gcolor_scratch(&illum, s->model, c->scratch));
-                Ray rr = {offset_origin(sp->point, facing, dir), dir, 0.0, INFINITY, width, r->cone_spread};
-                double saved = c->weight;
-                c->weight = w;
-                rc = trace_ray(c, &rr, media, depth + 1, &illum);
-                c->weight = saved;
-                CHECK(rc);
-                CHECK(gmaterial_reflection(m, sp, dir, &illum, to_viewer, &tmp));
-                CHECK(gcolor_add(out, out, &tmp));
-            }
-        }
+        if (valid)
+            CHECK(trace_secondary(c, r, sp, facing, dir, NULL, media, depth, out));
+        /* ideal refraction into the medium on the other side; not valid: total internal reflection */
         if (!opaque) {
-            GColor n_from, n_to, ri;
-            CHECK(gcolor_scratch(&n_from, s->model, c->scratch));
-            CHECK(gcolor_scratch(&n_to, s->model, c->scratch));
-            CHECK(gcolor_scratch(&ri, s->model, c->scratch));
-            CHECK(gmaterial_refraction_index(sp->from, sp, &n_from));
-            CHECK(gmaterial_refraction_index(sp->to, sp, &n_to));
-            CHECK(gcolor_div(&ri, &n_from, &n_to));
+            GColor ri;
+            CHECK(relative_index(c, sp, &ri));
             CHECK(valid = gmaterial_refraction_dir(m, sp, view, &ri, &dir));
-            if (valid) { /* not valid: total internal reflection */
-                CHECK(gmaterial_refraction(m, sp, dir, &c->unit, &ri, to_viewer, &tmp));
-                double w = c->weight * gcolor_brightness(&tmp);
-                if (w > 0.0 && w >= c->cutoff) {
-                    if (!have_illum++)
-                        CHECK(gcolor_scratch(&illum, s->model, c->scratch));
-                    Media next;
-                    media_cross(media, m, sp->entering, &next);
-                    Ray tr = {offset_origin(sp->point, facing, dir), dir, 0.0, INFINITY, width, r->cone_spread};
-                    double saved = c->weight;
-                    c->weight = w;
-                    rc = trace_ray(c, &tr, &next, depth + 1, &illum);
-                    c->weight = saved;
-                    CHECK(rc);
-                    CHECK(gmaterial_refraction(m, sp, dir, &illum, &ri, to_viewer, &tmp));
-                    CHECK(gcolor_add(out, out, &tmp));
-                }
+            if (valid) {
+                Media next;
+                media_cross(media, m, sp->entering, &next);
+                CHECK(trace_secondary(c, r, sp, facing, dir, &ri, &next, depth, out));
             }
         }
     }

@@ -4,7 +4,7 @@
  * Surface indices: box faces 0..5 = -x, +x, -y, +y, -z, +z; cylinder 0 side, 1 base cap, 2 top cap;
  * every other shape 0. (u,v): sphere longitude/latitude in [0,1] (v = 1 at the +y pole); plane: distance
  * along its frame; box faces, disc and caps: [0,1] across; cylinder side: angle and height in [0,1]. */
-#include "gtrace.h"
+#include "geometry.h"
 
 #include <math.h>
 
@@ -324,6 +324,26 @@ static void local_geom(const Object *o, int surface, GVec3 *p, GVec3 *n, GVec3 *
     }
 }
 
+void hit_geom_to_world(const Object *o, GVec3 op, GVec3 n, GVec3 ns, GVec3 dpdu, GVec3 dpdv, HitGeom *g)
+{
+    g->op = op;
+    g->odpdu = dpdu;
+    g->odpdv = dpdv;
+    if (o->has_xf) {
+        g->p = xform_point(&o->xf, op);
+        g->n_out = gvec3_normalize(xform_normal(&o->xf, n));
+        g->n_smooth = gvec3_normalize(xform_normal(&o->xf, ns));
+        g->dpdu = xform_vector(&o->xf, dpdu);
+        g->dpdv = xform_vector(&o->xf, dpdv);
+    } else {
+        g->p = op;
+        g->n_out = n;
+        g->n_smooth = ns;
+        g->dpdu = dpdu;
+        g->dpdv = dpdv;
+    }
+}
+
 void shape_hit_geom(const Object *o, const Ray *r, const Hit *h, HitGeom *g)
 {
     GVec3 pw = gvec3_madd(r->o, r->d, h->t);
@@ -331,22 +351,8 @@ void shape_hit_geom(const Object *o, const Ray *r, const Hit *h, HitGeom *g)
     GVec3 n = gvec3(0, 0, 1), dpdu = gvec3(1, 0, 0), dpdv = gvec3(0, 1, 0);
     double u = 0.0, v = 0.0;
     local_geom(o, h->surface, &op, &n, &dpdu, &dpdv, &u, &v);
-    g->op = op;
     g->surface = h->surface;
     g->u = u;
     g->v = v;
-    g->odpdu = dpdu;
-    g->odpdv = dpdv;
-    if (o->has_xf) {
-        g->p = xform_point(&o->xf, op);
-        g->n_out = gvec3_normalize(xform_normal(&o->xf, n));
-        g->dpdu = xform_vector(&o->xf, dpdu);
-        g->dpdv = xform_vector(&o->xf, dpdv);
-    } else {
-        g->p = op;
-        g->n_out = n;
-        g->dpdu = dpdu;
-        g->dpdv = dpdv;
-    }
-    g->n_smooth = g->n_out;
+    hit_geom_to_world(o, op, n, n, dpdu, dpdv, g);
 }

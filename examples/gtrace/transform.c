@@ -1,5 +1,7 @@
 /* transform.c - affine object transforms (object -> world) and their inverses. */
-#include "gtrace.h"
+#include "transform.h"
+
+#include <generic/error.h>
 
 #include <math.h>
 #include <string.h>

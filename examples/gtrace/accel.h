@@ -1,0 +1,20 @@
+/* accel.h - ray-scene intersection (accel.c, through Embree 3; the only file that includes Embree). */
+#ifndef GTRACE_ACCEL_H
+#define GTRACE_ACCEL_H
+
+#include "geometry.h"
+#include "ray.h"
+#include "scene.h"
+
+#include <generic/error.h>
+
+/** Builds the Embree scene from the objects (after all are added). */
+int accel_build(Scene *s, GError *err);
+/** Releases Embree objects. */
+void accel_release(Scene *s);
+/** Closest hit along r; 1 when something was hit. */
+int accel_intersect(const Scene *s, const Ray *r, Hit *h);
+/** 1 when anything lies on r between tmin and tmax. */
+int accel_occluded(const Scene *s, const Ray *r);
+
+#endif

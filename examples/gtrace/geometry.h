@@ -1,0 +1,43 @@
+/* geometry.h - intersection with a shape and the surface at a hit (shapes.c, mesh.c). */
+#ifndef GTRACE_GEOMETRY_H
+#define GTRACE_GEOMETRY_H
+
+#include "object.h"
+#include "ray.h"
+
+#include <generic/vec.h>
+
+/** What the acceleration structure reports for a hit. */
+typedef struct Hit {
+    const Object *obj;
+    double t;
+    unsigned prim;
+    double bu, bv; /**< barycentrics (meshes) */
+    int surface;   /**< surface index from the user geometry */
+} Hit;
+
+/** The geometry at a hit in world space: outward unit normal (of the object, before facing), shading
+ * normal from mesh normals (equal to the outward normal otherwise), tangents, parameters. */
+typedef struct HitGeom {
+    GVec3 p, op, n_out, n_smooth, dpdu, dpdv;
+    GVec3 odpdu, odpdv; /**< tangents in object space */
+    double u, v;
+    int surface;
+} HitGeom;
+
+/** Half size of a plane's bounded extent in its own units. */
+#define SHAPE_PLANE_EXTENT 1.0e5
+
+/** Object-space ray-shape intersection in (tmin, tmax); 1 with *t and *surface when hit. */
+int shape_intersect(const Object *o, GVec3 ro, GVec3 rd, double tmin, double tmax, double *t, int *surface);
+/** Object-space bounds of a shape (planes are bounded at SHAPE_PLANE_EXTENT). */
+void shape_bounds(const Object *o, GVec3 *lo, GVec3 *hi);
+/** Surface details of an analytic shape at a hit. */
+void shape_hit_geom(const Object *o, const Ray *r, const Hit *h, HitGeom *g);
+/** Surface details of a mesh triangle at a hit. */
+void mesh_hit_geom(const Object *o, const Ray *r, const Hit *h, HitGeom *g);
+/** Fills g's point, outward normal n, shading normal ns and tangents from object space (op, n, ns, dpdu, dpdv)
+ * in world space, keeping the object-space point and tangents; u, v and the surface are left to the caller. */
+void hit_geom_to_world(const Object *o, GVec3 op, GVec3 n, GVec3 ns, GVec3 dpdu, GVec3 dpdv, HitGeom *g);
+
+#endif

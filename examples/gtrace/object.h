@@ -1,0 +1,67 @@
+/* object.h - the scene's objects: a shape in its own space, a transform to world space and a material
+ * (constructors in scene.c, OBJ meshes in mesh.c). */
+#ifndef GTRACE_OBJECT_H
+#define GTRACE_OBJECT_H
+
+#include "transform.h"
+
+#include <generic/error.h>
+#include <generic/material.h>
+#include <generic/vec.h>
+
+typedef enum ShapeKind {
+    SHAPE_SPHERE,
+    SHAPE_PLANE,
+    SHAPE_BOX,
+    SHAPE_DISC,
+    SHAPE_CYLINDER,
+    SHAPE_MESH
+} ShapeKind;
+
+/** A triangle mesh read from an OBJ file. Positions are kept in object space (double) and world space
+ * (the float buffer Embree reads); normals and (u,v) per corner, -1 where the file gave none. */
+typedef struct Mesh {
+    int nverts, ntris, nuvs, nnormals;
+    double *pos;        /**< object space, 3 per vertex */
+    double *uv;         /**< 2 per uv */
+    double *normal;     /**< object space, 3 per normal */
+    unsigned *tri;      /**< 3 vertex indices per triangle */
+    int *tri_uv;        /**< 3 uv indices per triangle or -1 */
+    int *tri_normal;    /**< 3 normal indices per triangle or -1 */
+    int *tri_surface;   /**< group (usemtl/g) index per triangle: the surface index */
+} Mesh;
+
+/** One object: a shape in its own space, a transform to world space and a material. */
+typedef struct Object {
+    ShapeKind kind;
+    GMaterial *material; /**< owned reference */
+    Xform xf;
+    int has_xf;
+    /* shape parameters, object space */
+    GVec3 center;     /**< sphere, disc: centre; plane: a point; cylinder: base centre */
+    GVec3 normal;     /**< plane, disc: unit normal; cylinder: unit axis */
+    GVec3 t1, t2;     /**< plane, disc, cylinder: frame with t1 x t2 = normal */
+    double radius;    /**< sphere, disc, cylinder */
+    double height;    /**< cylinder */
+    int open;         /**< cylinder without caps */
+    GVec3 lo, hi;     /**< box corners */
+    Mesh *mesh;       /**< SHAPE_MESH */
+    unsigned geom_id; /**< Embree geometry id */
+} Object;
+
+/** A zeroed object of a kind with an identity transform holding a new reference to material. */
+Object *object_new(ShapeKind kind, GMaterial *material);
+/** Frees the object, its mesh and its material reference (NULL: no-op). */
+void object_free(Object *o);
+/** Shape constructors in object space (they fill the frames); return G_ERR_INVALID for bad parameters. */
+int object_sphere(Object *o, GVec3 center, double radius, GError *err);
+int object_plane(Object *o, GVec3 point, GVec3 normal, GError *err);
+int object_box(Object *o, GVec3 lo, GVec3 hi, GError *err);
+int object_disc(Object *o, GVec3 center, GVec3 normal, double radius, GError *err);
+int object_cylinder(Object *o, GVec3 base, GVec3 top, double radius, int open, GError *err);
+/** Reads an OBJ file into o (v, vt, vn, f with polygons as fans; usemtl/g start new surface indices). */
+int object_mesh_load(Object *o, const char *path, GError *err);
+/** Frees a mesh (NULL: no-op). */
+void mesh_free(Mesh *m);
+
+#endif

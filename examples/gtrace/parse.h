@@ -1,0 +1,22 @@
+/* parse.h - the tracer's entries in the text format (object, light, camera) and scenes from scene files
+ * (parse.c). */
+#ifndef GTRACE_PARSE_H
+#define GTRACE_PARSE_H
+
+#include "probe_env.h"
+#include "scene.h"
+
+#include <generic/error.h>
+#include <generic/reader.h>
+
+/** Registers the object, light and camera types with the registry (idempotent). */
+int gtrace_register_types(GError *err);
+/** Builds a scene from a loaded library (name: for messages), which the scene then owns (also on failure:
+ * it is destroyed). */
+int scene_from_library(GLibrary *lib, const char *name, Scene **out, GError *err);
+/** Reads a scene file (registering the types first); colormodel overrides the file's model (NULL: keep). */
+int scene_load(const char *path, const char *colormodel, Scene **out, GError *err);
+/** Reads a scene file like scene_load, applying ov (NULL: nothing) to its light probes before they load. */
+int scene_load_with(const char *path, const char *colormodel, const ProbeOverride *ov, Scene **out, GError *err);
+
+#endif

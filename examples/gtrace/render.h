@@ -1,0 +1,34 @@
+/* render.h - rendering the image: OpenMP over tiles, samples per pixel, the framebuffer (render.c). */
+#ifndef GTRACE_RENDER_H
+#define GTRACE_RENDER_H
+
+#include "scene.h"
+
+#include <generic/error.h>
+
+#include <stdint.h>
+
+typedef struct RenderSettings {
+    int width, height, spp, depth, threads, quiet;
+    double cutoff; /**< adaptive depth control threshold (0: off) */
+} RenderSettings;
+
+/** Linear sRGB pixels (from the model's XYZ), row by row from the top. */
+typedef struct Framebuffer {
+    int width, height;
+    float *pixels; /**< 3 floats per pixel */
+} Framebuffer;
+
+typedef struct RenderStats {
+    double seconds;
+    uint64_t rays;
+    uint64_t nonfinite; /**< samples that were NaN or infinite (replaced by black) */
+    int threads;
+} RenderStats;
+
+/** Renders the scene (accel_build must have run). fb->pixels is allocated here (free with framebuffer_free). */
+int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, RenderStats *st, GError *err);
+/** Frees the pixels (NULL or a zeroed framebuffer: no-op). */
+void framebuffer_free(Framebuffer *fb);
+
+#endif

@@ -1,0 +1,52 @@
+/* trace.h - tracing a ray and shading what it hits: the paper's Fig. 4 (shade.c). */
+#ifndef GTRACE_TRACE_H
+#define GTRACE_TRACE_H
+
+#include "geometry.h"
+#include "ray.h"
+#include "rng.h"
+#include "scene.h"
+
+#include <generic/color.h>
+#include <generic/material.h>
+#include <generic/memory.h>
+#include <generic/surfpoint.h>
+#include <generic/vec.h>
+
+#include <stdint.h>
+
+/** Per-thread tracing state. */
+typedef struct TraceCtx {
+    const Scene *scene;
+    GScratch *scratch;
+    Rng rng;
+    int max_depth;
+    double cutoff;  /**< smallest path weight still traced (0: trace to max_depth) */
+    double weight;  /**< weight of the current path in its pixel (product of the branches' brightness) */
+    GColor unit;    /**< 1 in every sample (the vacuum's refraction index): probes a branch's weight */
+    uint64_t rays;  /**< rays cast through Embree */
+    int status;     /**< first error (G_OK while fine) */
+    const char *culprit; /**< type of the material whose call failed first (NULL: none or not a material) */
+} TraceCtx;
+
+/** The media a ray travels through: bottom = the camera's medium, top = the current one. */
+#define MEDIA_MAX 16
+typedef struct Media {
+    const GMaterial *m[MEDIA_MAX];
+    int n;
+} Media;
+
+/** Fills sp for a hit of r: geometry, normal on the incident side, footprint from the ray cone, and the
+ * materials on both sides from the media; *facing is the true face normal on the incident side (for
+ * offsetting secondary rays; it differs from the geometric_normal field on meshes with vertex normals). */
+void surfpoint_fill(TraceCtx *c, const Ray *r, const Hit *h, const Media *media, GSurfPoint *sp, GVec3 *facing);
+/** The current medium (NULL: vacuum). */
+const GMaterial *media_top(const Media *m);
+/** The media after crossing the surface of mat: entering pushes it, leaving removes it. */
+void media_cross(const Media *in, const GMaterial *mat, int entering, Media *out);
+/** Radiance arriving along r (Fig. 4: closest hit, then shade). out must have storage. */
+int trace_ray(TraceCtx *c, const Ray *r, const Media *media, int depth, GColor *out);
+/** Offsets a point off a surface to the side `dir` leaves on, against self-intersection. */
+GVec3 offset_origin(GVec3 p, GVec3 n, GVec3 dir);
+
+#endif
