@@ -1,6 +1,6 @@
 /* test_color.c - the colour models through the generic interface: creation and options, RGB round
  * trips, white light on white, the algebraic identities, brightness, errors, conversion between models,
- * and that the operations never allocate. */
+ * and that the operations never allocate (storage, fill, exp and axpy: test_color_ops.c). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -535,7 +535,10 @@ static void test_operations_do_not_allocate(void **state)
             gcolor_div(&t, &a, &b);
             gcolor_pow(&t, &b, 1.5);
             gcolor_add_scaled(&o, &a, 0.25);
-            sink += gcolor_brightness(&o) + gcolor_brightness(&mat);
+            gcolor_axpy(&t, 0.5, &a, &b);
+            gcolor_exp(&t, &t, -0.3);
+            gcolor_fill(&t, 0.5);
+            sink += gcolor_brightness(&o) + gcolor_brightness(&mat) + gcolor_brightness(&t);
             if (has_matrix) {
                 gcolor_copy(&t, &mat);
                 gcolor_mul(&t, &t, &mat); /* matrix product in place */
@@ -544,7 +547,10 @@ static void test_operations_do_not_allocate(void **state)
                 gcolor_scale(&t, &t, 0.5);
                 gcolor_div(&o, &t, &mat);
                 gcolor_pow(&o, &t, 2.0);
-                sink += gcolor_brightness(&t);
+                gcolor_add_scaled(&t, &mat, 0.25); /* matrix += matrix */
+                gcolor_axpy(&t, 0.5, &b, &t);       /* diag + matrix */
+                gcolor_exp(&o, &mat, -1.0);
+                sink += gcolor_brightness(&t) + gcolor_brightness(&o);
             }
             gscratch_release(s, mark);
         }
