@@ -211,8 +211,9 @@ static void print_row(const char *model, const char *op, Row r)
         }                                                                                                    \
         static float ov[128 * 128], bv[128 * 128], io[N], ib[N], iw[N];                                      \
         GColor o, b;                                                                                         \
-        gcolor_wrap(&o, m, ov);                                                                              \
-        gcolor_wrap(&b, m, bv);                                                                              \
+        if (gcolor_wrap(&o, m, ov, sizeof ov / sizeof ov[0]) != G_OK ||                                      \
+            gcolor_wrap(&b, m, bv, sizeof bv / sizeof bv[0]) != G_OK)                                        \
+            exit(1);                                                                                         \
         double lrgb[3] = {0.5, 0.6, 0.7};                                                                    \
         gcolor_from_rgb(&o, lrgb, GCOLOR_LIGHT);                                                             \
         for (int j = 0; j < N; j++) {                                                                        \
@@ -271,9 +272,10 @@ int main(void)
                 data[r * n + i] = r == i ? 0.8f : (r > i ? 0.01f : 0.0f);
         GReradiation rr = {m->lambda_min, m->lambda_step, n, m->lambda_min, m->lambda_step, n, data};
         GColor mat, light, out;
-        gcolor_wrap(&mat, m, mv_);
-        gcolor_wrap(&light, m, lv);
-        gcolor_wrap(&out, m, ov);
+        if (gcolor_wrap(&mat, m, mv_, sizeof mv_ / sizeof mv_[0]) != G_OK ||
+            gcolor_wrap(&light, m, lv, sizeof lv / sizeof lv[0]) != G_OK ||
+            gcolor_wrap(&out, m, ov, sizeof ov / sizeof ov[0]) != G_OK)
+            return 1;
         gcolor_from_reradiation(&mat, &rr, &err);
         double lrgb[3] = {0.5, 0.6, 0.7};
         gcolor_from_rgb(&light, lrgb, GCOLOR_LIGHT);

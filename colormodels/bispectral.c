@@ -27,6 +27,10 @@
  *          result is the vector d(a) / d(b), zero where d(b) is zero.
  *   pow    absorption, per sample on the diagonal; the result is a vector: a medium absorbs, it does
  *          not fluoresce, so transmittance^distance keeps only the plain part of a matrix.
+ *   exp    exp(s a) per sample on the diagonal, a vector, for the same reason as pow.
+ *   axpy   s a + b: per sample or entry for two values of one kind; a matrix and a vector give the matrix
+ *          (s A + diag(b) or diag(s a) + B), as add does.
+ *   fill   the constant c is the vector c (the operator c I); the library's default.
  *   brightness  V: sum_k w_k |v_k| with the spectrum model's luminance weights (all > 0, sum 1).
  *          M: the brightness of its response to equal-energy light with entries taken by magnitude,
  *          sum_o w_o sum_i |A[o][i]| (for the non-negative matrices from_reradiation makes, exactly the
@@ -188,6 +192,49 @@ static int bi_pow(const GColorModel *m, GColor *out, const GColor *a, double e)
     return G_OK;
 }
 
+static int bi_exp(const GColorModel *m, GColor *out, const GColor *a, double s)
+{
+    int n = m->nsamples;
+    float d[BI_MAX];
+    diagonal(a, n, d);
+    for (int k = 0; k < n; k++)
+        out->v[k] = (float)exp(s * d[k]);
+    out->kind = GCOLOR_VECTOR;
+    return G_OK;
+}
+
+/* o = s * a + b over n floats (the library's rounding: s * a in double, then the float sum). */
+static void axpy_floats(float *o, double s, const float *a, const float *b, int n)
+{
+    for (int i = 0; i < n; i++)
+        o[i] = b[i] + (float)(a[i] * s);
+}
+
+static int bi_axpy(const GColorModel *m, GColor *out, double s, const GColor *a, const GColor *b)
+{
+    int n = m->nsamples;
+    if (a->kind == b->kind) {
+        axpy_floats(out->v, s, a->v, b->v, a->kind == GCOLOR_MATRIX ? n * n : n);
+        out->kind = a->kind;
+        return G_OK;
+    }
+    float d[BI_MAX]; /* the vector, kept before out (which may alias it) becomes the matrix */
+    if (a->kind == GCOLOR_MATRIX) { /* s A + diag(b) */
+        memcpy(d, b->v, (size_t)n * sizeof *d);
+        gspectral_kscale(out->v, a->v, (float)s, n * n);
+        for (int k = 0; k < n; k++)
+            out->v[k * n + k] += d[k];
+    } else { /* diag(s a) + B */
+        memcpy(d, a->v, (size_t)n * sizeof *d);
+        if (out->v != b->v)
+            memcpy(out->v, b->v, (size_t)n * n * sizeof *out->v);
+        for (int k = 0; k < n; k++)
+            out->v[k * n + k] += (float)(d[k] * s);
+    }
+    out->kind = GCOLOR_MATRIX;
+    return G_OK;
+}
+
 static double bi_brightness(const GColorModel *m, const GColor *a)
 {
     const GSpectral *p = m->priv;
@@ -206,7 +253,7 @@ static int bi_to_nm(const GColorModel *m, const GColor *a, GColorRole role, GSpe
         return gspectral_to_nm(m, a, role, out);
     float d[BI_MAX];
     fold(a, m->nsamples, d);
-    GColor v = {m, d, GCOLOR_VECTOR};
+    GColor v = {.model = m, .v = d, .kind = GCOLOR_VECTOR, .storage = GCOLOR_STORAGE_CALLER, .capacity = BI_MAX};
     return gspectral_to_nm(m, &v, role, out);
 }
 
@@ -216,7 +263,7 @@ static int bi_to_xyz(const GColorModel *m, const GColor *a, GColorRole role, dou
         return gspectral_to_xyz(m, a, role, xyz);
     float d[BI_MAX];
     fold(a, m->nsamples, d);
-    GColor v = {m, d, GCOLOR_VECTOR};
+    GColor v = {.model = m, .v = d, .kind = GCOLOR_VECTOR, .storage = GCOLOR_STORAGE_CALLER, .capacity = BI_MAX};
     return gspectral_to_xyz(m, &v, role, xyz);
 }
 
@@ -346,6 +393,8 @@ static const GColorModelClass gcolormodel_bispectral = {
     .to_xyz = bi_to_xyz,
     .from_rgb = gspectral_from_rgb,
     .from_reradiation = bi_from_reradiation,
+    .exp_scaled = bi_exp,
+    .axpy = bi_axpy,
 };
 
 GENERIC_TYPE(bispectral, GKIND_COLORMODEL, &gcolormodel_bispectral, NULL, NULL);

@@ -226,7 +226,7 @@ static int init_colorimetry(GColorModel *m, GSpectral *s, GError *err)
     float *tmp = gmem_calloc((size_t)m->capacity, sizeof(float));
     if (!tmp)
         return gerror_set(err, G_ERR_NOMEM, "out of memory creating colour model '%s'", m->cls->name);
-    GColor c = {m, tmp, GCOLOR_VECTOR};
+    GColor c = {.model = m, .v = tmp, .kind = GCOLOR_VECTOR, .storage = GCOLOR_STORAGE_CALLER, .capacity = m->capacity};
     GSpectrumNM spec;
     for (int k = 0; k < n; k++) {
         memset(tmp, 0, (size_t)n * sizeof *tmp);

@@ -2,7 +2,9 @@
 #include "generic/color.h"
 #include "generic/registry.h"
 
+#include <limits.h>
 #include <math.h>
+#include <pthread.h>
 #include <string.h>
 
 int gcolormodel_create_class(const GColorModelClass *cls, const GColorModelOptions *opt, GColorModel **out,
@@ -64,22 +66,36 @@ const char *gcolormodel_name(const GColorModel *m) { return m ? m->cls->name : "
 
 /* ---- storage ---- */
 
-void gcolor_wrap(GColor *c, const GColorModel *m, float *storage)
+static void clear(GColor *c)
 {
-    c->model = m;
-    c->v = storage;
+    *c = (GColor){.model = NULL, .v = NULL, .kind = GCOLOR_VECTOR, .storage = GCOLOR_STORAGE_NONE, .capacity = 0};
+}
+
+/* Points c at v (at least m->capacity floats) and sets it to black. */
+static void attach(GColor *c, const GColorModel *m, float *v, GColorStorage storage, int capacity)
+{
+    *c = (GColor){.model = m, .v = v, .kind = GCOLOR_VECTOR, .storage = storage, .capacity = capacity};
     m->cls->black(m, c);
+}
+
+int gcolor_wrap(GColor *c, const GColorModel *m, float *storage, size_t nfloats)
+{
+    if (!storage || nfloats < (size_t)m->capacity) {
+        clear(c);
+        return G_ERR_INVALID;
+    }
+    attach(c, m, storage, GCOLOR_STORAGE_CALLER, nfloats > INT_MAX ? INT_MAX : (int)nfloats);
+    return G_OK;
 }
 
 int gcolor_scratch(GColor *c, const GColorModel *m, GScratch *s)
 {
     float *v = gscratch_alloc(s, (size_t)m->capacity * sizeof(float));
     if (!v) {
-        c->model = NULL;
-        c->v = NULL;
+        clear(c);
         return G_ERR_NOMEM;
     }
-    gcolor_wrap(c, m, v);
+    attach(c, m, v, GCOLOR_STORAGE_ARENA, m->capacity);
     return G_OK;
 }
 
@@ -87,11 +103,10 @@ int gcolor_alloc(GColor *c, const GColorModel *m)
 {
     float *v = gmem_calloc((size_t)m->capacity, sizeof(float));
     if (!v) {
-        c->model = NULL;
-        c->v = NULL;
+        clear(c);
         return G_ERR_NOMEM;
     }
-    gcolor_wrap(c, m, v);
+    attach(c, m, v, GCOLOR_STORAGE_HEAP, m->capacity);
     return G_OK;
 }
 
@@ -99,9 +114,9 @@ void gcolor_free(GColor *c)
 {
     if (!c)
         return;
-    gmem_free(c->v);
-    c->v = NULL;
-    c->model = NULL;
+    if (c->storage == GCOLOR_STORAGE_HEAP)
+        gmem_free(c->v);
+    clear(c);
 }
 
 static size_t value_floats(const GColor *c)
@@ -160,23 +175,98 @@ int gcolor_pow(GColor *out, const GColor *a, double e)
 
 double gcolor_brightness(const GColor *c) { return c->model->cls->brightness(c->model, c); }
 
-int gcolor_add_scaled(GColor *out, const GColor *a, double s)
+/* A per-thread arena for the temporaries of the defaults below (matrices of a plug-in model that has no slot
+ * of its own). Created on a thread's first use and grown to the largest temporary asked for, so later calls do
+ * not allocate; the key's destructor frees it when the thread ends (the thread-local pointer keeps it
+ * reachable until then). */
+static pthread_key_t temp_key;
+static int temp_key_ok;
+static pthread_once_t temp_once = PTHREAD_ONCE_INIT;
+static _Thread_local GScratch *temp_arena_of_thread;
+
+static void temp_arena_destroy(void *arena) { gscratch_destroy(arena); }
+
+static void temp_key_create(void) { temp_key_ok = pthread_key_create(&temp_key, temp_arena_destroy) == 0; }
+
+static GScratch *temp_arena(void)
+{
+    if (temp_arena_of_thread)
+        return temp_arena_of_thread;
+    pthread_once(&temp_once, temp_key_create);
+    if (!temp_key_ok)
+        return NULL;
+    GScratch *s = gscratch_create(0);
+    if (s && pthread_setspecific(temp_key, s) != 0) {
+        gscratch_destroy(s);
+        s = NULL;
+    }
+    return temp_arena_of_thread = s;
+}
+
+/* out = s * a + b through the class's scale and add; a temporary holds s * a because out may alias b. */
+static int axpy_composed(const GColorModel *m, GColor *out, double s, const GColor *a, const GColor *b)
+{
+    if (out->v != b->v) {
+        int rc = m->cls->scale(m, out, a, s);
+        return rc ? rc : m->cls->add(m, out, out, b);
+    }
+    GScratch *arena = temp_arena();
+    if (!arena)
+        return G_ERR_NOMEM;
+    GScratchMark mark = gscratch_mark(arena);
+    GColor tmp;
+    int rc = gcolor_scratch(&tmp, m, arena);
+    if (rc == G_OK)
+        rc = m->cls->scale(m, &tmp, a, s);
+    if (rc == G_OK)
+        rc = m->cls->add(m, out, &tmp, b);
+    gscratch_release(arena, mark);
+    return rc;
+}
+
+int gcolor_axpy(GColor *out, double s, const GColor *a, const GColor *b)
+{
+    if (a->model != b->model || out->model != a->model)
+        return G_ERR_MISMATCH;
+    const GColorModel *m = a->model;
+    if (m->cls->axpy)
+        return m->cls->axpy(m, out, s, a, b);
+    if (a->kind != GCOLOR_VECTOR || b->kind != GCOLOR_VECTOR)
+        return axpy_composed(m, out, s, a, b);
+    for (int i = 0; i < m->nvalues; i++)
+        out->v[i] = b->v[i] + (float)(a->v[i] * s);
+    out->kind = GCOLOR_VECTOR;
+    return G_OK;
+}
+
+int gcolor_add_scaled(GColor *out, const GColor *a, double s) { return gcolor_axpy(out, s, a, out); }
+
+int gcolor_fill(GColor *out, double value)
+{
+    if (!isfinite(value))
+        return G_ERR_INVALID;
+    const GColorModel *m = out->model;
+    if (m->cls->fill)
+        return m->cls->fill(m, out, value);
+    for (int i = 0; i < m->nvalues; i++)
+        out->v[i] = (float)value;
+    out->kind = GCOLOR_VECTOR;
+    return G_OK;
+}
+
+int gcolor_exp(GColor *out, const GColor *a, double s)
 {
     if (out->model != a->model)
         return G_ERR_MISMATCH;
     const GColorModel *m = a->model;
-    if (out->kind == GCOLOR_VECTOR && a->kind == GCOLOR_VECTOR) {
-        for (int i = 0; i < m->nvalues; i++)
-            out->v[i] += (float)(a->v[i] * s);
-        return G_OK;
-    }
-    /* matrices: go through the model's own operations on a copy */
-    float tmpv[128 * 128]; /* the largest matrix a built-in model allows */
-    if ((size_t)m->capacity > sizeof tmpv / sizeof tmpv[0])
+    if (m->cls->exp_scaled)
+        return m->cls->exp_scaled(m, out, a, s);
+    if (a->kind != GCOLOR_VECTOR)
         return G_ERR_UNSUPPORTED;
-    GColor tmp = {m, tmpv, GCOLOR_VECTOR};
-    int rc = m->cls->scale(m, &tmp, a, s);
-    return rc ? rc : m->cls->add(m, out, out, &tmp);
+    for (int i = 0; i < m->nvalues; i++)
+        out->v[i] = (float)exp(s * a->v[i]);
+    out->kind = GCOLOR_VECTOR;
+    return G_OK;
 }
 
 int gcolor_is_finite(const GColor *c)

@@ -51,11 +51,8 @@ int gmaterial_refraction_index(const GMaterial *m, GSurfPoint *sp, GColor *resul
 {
     if (m && m->cls->refraction_index)
         return m->cls->refraction_index(m, sp, result);
-    /* exactly 1 in every sample: going through rgb -> spectrum would not give a flat 1 in spectral models */
-    gcolor_black(result);
-    for (int i = 0; i < result->model->nvalues; i++)
-        result->v[i] = 1.0f;
-    return G_OK;
+    /* the constant 1: going through rgb -> spectrum would not give a flat 1 in spectral models */
+    return gcolor_fill(result, 1.0);
 }
 
 int gmaterial_reflection_dir(const GMaterial *m, GSurfPoint *sp, GVec3 view, GVec3 *dir)

@@ -189,14 +189,15 @@ static int dielectric_absorption(const GMaterial *self, GSurfPoint *sp, const GC
         gscratch_release(sp->scratch, mark);
         return rc;
     }
-    /* no arena: a light is a vector, and pow and mul act sample by sample on vectors */
-    if (illum->model != m)
-        return G_ERR_MISMATCH;
-    if (illum->kind != GCOLOR_VECTOR)
-        return G_ERR_UNSUPPORTED;
-    for (int i = 0; i < m->nvalues; i++)
-        result->v[i] *= powf(d->transmittance.v[i], (float)length);
-    return G_OK;
+    /* no arena: a temporary on the heap (the per-ray path always passes one) */
+    GColor t;
+    int rc = gcolor_alloc(&t, m);
+    if (rc == G_OK)
+        rc = gcolor_pow(&t, &d->transmittance, length);
+    if (rc == G_OK)
+        rc = gcolor_mul(result, &t, illum);
+    gcolor_free(&t);
+    return rc;
 }
 
 static int dielectric_opaque(const GMaterial *self, GSurfPoint *sp)
@@ -245,8 +246,10 @@ int gdielectric_create(const GColorModel *model, const GDielectricParams *params
                 rc = gerror_set(err, G_ERR_INVALID, "dielectric: absorption must be a plain colour, not a matrix");
             else {
                 d->absorbs = gcolor_brightness(&d->transmittance) > 0.0;
-                for (int i = 0; i < model->nvalues; i++)
-                    d->transmittance.v[i] = expf(-d->transmittance.v[i]);
+                rc = gcolor_exp(&d->transmittance, &d->transmittance, -1.0);
+                if (rc != G_OK)
+                    rc = gerror_set(err, rc, "dielectric: cannot take exp of the absorption in model '%s'",
+                                    gcolormodel_name(model));
             }
         }
     }

@@ -28,8 +28,7 @@ double gmatparam_max(const GColor *c, int *at)
 int gmatparam_color(const GColorModel *m, const GColor *src, GColorRole role, double max, const char *material,
                     const char *param, GColor *dst, GError *err)
 {
-    dst->model = NULL;
-    dst->v = NULL;
+    *dst = (GColor){.model = NULL, .v = NULL, .storage = GCOLOR_STORAGE_NONE};
     if (!src || !src->model || !src->v)
         return gerror_set(err, G_ERR_INVALID, "%s: %s is missing", material, param);
     int n = value_count(src);

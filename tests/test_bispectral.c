@@ -15,6 +15,7 @@
 
 #include "generic/builtins.h"
 #include "generic/color.h"
+#include "test_util.h"
 
 enum { CAP = 128 * 128 };
 static float buf[8][CAP];
@@ -66,11 +67,11 @@ static void test_diagonal_matrix_is_a_reflectance(void **state)
     GColorModel *m = model(0, 0, 0);
     int n = m->nsamples;
     GColor r, d, light, o1, o2;
-    gcolor_wrap(&r, m, buf[0]);
-    gcolor_wrap(&d, m, buf[1]);
-    gcolor_wrap(&light, m, buf[2]);
-    gcolor_wrap(&o1, m, buf[3]);
-    gcolor_wrap(&o2, m, buf[4]);
+    assert_int_equal(gcolor_wrap(&r, m, buf[0], tu_floats(buf[0])), G_OK);
+    assert_int_equal(gcolor_wrap(&d, m, buf[1], tu_floats(buf[1])), G_OK);
+    assert_int_equal(gcolor_wrap(&light, m, buf[2], tu_floats(buf[2])), G_OK);
+    assert_int_equal(gcolor_wrap(&o1, m, buf[3], tu_floats(buf[3])), G_OK);
+    assert_int_equal(gcolor_wrap(&o2, m, buf[4], tu_floats(buf[4])), G_OK);
     double refl[3] = {0.2, 0.7, 0.4}, lrgb[3] = {0.9, 0.8, 0.6};
     gcolor_from_rgb(&r, refl, GCOLOR_REFLECTANCE);
     gcolor_from_rgb(&light, lrgb, GCOLOR_LIGHT);
@@ -126,9 +127,9 @@ static void test_single_entry_moves_energy(void **state)
     int n = m->nsamples, i450 = at(m, 450), i600 = at(m, 600);
     const float k = 0.3f;
     GColor mat, light, out;
-    gcolor_wrap(&mat, m, buf[0]);
-    gcolor_wrap(&light, m, buf[1]);
-    gcolor_wrap(&out, m, buf[2]);
+    assert_int_equal(gcolor_wrap(&mat, m, buf[0], tu_floats(buf[0])), G_OK);
+    assert_int_equal(gcolor_wrap(&light, m, buf[1], tu_floats(buf[1])), G_OK);
+    assert_int_equal(gcolor_wrap(&out, m, buf[2], tu_floats(buf[2])), G_OK);
     GSpectrumNM d65;
     gcie_illuminant_nm("D65", &d65);
     gcolor_from_nm(&light, &d65, GCOLOR_LIGHT);
@@ -182,9 +183,9 @@ static void random_matrix(const GColorModel *m, GColor *out, float scale)
 static GColorModel *random_fixture(GColor *a, GColor *v, GColor *o)
 {
     GColorModel *m = model(0, 0, 0);
-    gcolor_wrap(a, m, buf[0]);
-    gcolor_wrap(v, m, buf[1]);
-    gcolor_wrap(o, m, buf[2]);
+    assert_int_equal(gcolor_wrap(a, m, buf[0], tu_floats(buf[0])), G_OK);
+    assert_int_equal(gcolor_wrap(v, m, buf[1], tu_floats(buf[1])), G_OK);
+    assert_int_equal(gcolor_wrap(o, m, buf[2], tu_floats(buf[2])), G_OK);
     random_matrix(m, a, 0.05f);
     return m;
 }
@@ -195,14 +196,14 @@ static void test_composition(void **state)
     GColorModel *m = model(0, 0, 0);
     int n = m->nsamples, nn = n * n;
     GColor a, b, ab, light, x1, x2, t, c;
-    gcolor_wrap(&a, m, buf[0]);
-    gcolor_wrap(&b, m, buf[1]);
-    gcolor_wrap(&ab, m, buf[2]);
-    gcolor_wrap(&light, m, buf[3]);
-    gcolor_wrap(&x1, m, buf[4]);
-    gcolor_wrap(&x2, m, buf[5]);
-    gcolor_wrap(&t, m, buf[6]);
-    gcolor_wrap(&c, m, buf[7]);
+    assert_int_equal(gcolor_wrap(&a, m, buf[0], tu_floats(buf[0])), G_OK);
+    assert_int_equal(gcolor_wrap(&b, m, buf[1], tu_floats(buf[1])), G_OK);
+    assert_int_equal(gcolor_wrap(&ab, m, buf[2], tu_floats(buf[2])), G_OK);
+    assert_int_equal(gcolor_wrap(&light, m, buf[3], tu_floats(buf[3])), G_OK);
+    assert_int_equal(gcolor_wrap(&x1, m, buf[4], tu_floats(buf[4])), G_OK);
+    assert_int_equal(gcolor_wrap(&x2, m, buf[5], tu_floats(buf[5])), G_OK);
+    assert_int_equal(gcolor_wrap(&t, m, buf[6], tu_floats(buf[6])), G_OK);
+    assert_int_equal(gcolor_wrap(&c, m, buf[7], tu_floats(buf[7])), G_OK);
     random_matrix(m, &a, 0.02f);
     random_matrix(m, &b, 0.02f);
     double lrgb[3] = {0.7, 0.9, 1.1};
@@ -233,7 +234,7 @@ static void test_composition(void **state)
     /* V * M = diag(v) M: a filter after the fluorescent layer, exact on any light */
     GColor r;
     float rv[CAP];
-    gcolor_wrap(&r, m, rv);
+    assert_int_equal(gcolor_wrap(&r, m, rv, tu_floats(rv)), G_OK);
     double refl[3] = {0.9, 0.3, 0.5};
     gcolor_from_rgb(&r, refl, GCOLOR_REFLECTANCE);
     gcolor_mul(&c, &r, &a);
@@ -312,7 +313,7 @@ static void test_matrix_vector_operations(void **state)
     gcolor_add(&o, &v, &a);
     assert_memory_equal(o.v, keep, (size_t)n * n * sizeof *keep);
     GColor v2;
-    gcolor_wrap(&v2, m, buf[3]);
+    assert_int_equal(gcolor_wrap(&v2, m, buf[3], tu_floats(buf[3])), G_OK);
     gcolor_copy(&v2, &v);
     gcolor_add(&v2, &v2, &a);
     assert_int_equal(v2.kind, GCOLOR_MATRIX);
@@ -394,7 +395,7 @@ static void test_resampling_preserves_energy(void **state)
         GColorModel *m = model(steps[s], 0, 0);
         int n = m->nsamples;
         GColor c;
-        gcolor_wrap(&c, m, buf[0]);
+        assert_int_equal(gcolor_wrap(&c, m, buf[0], tu_floats(buf[0])), G_OK);
         for (size_t k = 0; k < sizeof src / sizeof src[0]; k++) {
             float *d = band(src[k].in_min, src[k].in_step, src[k].n_in, src[k].out_min, src[k].out_step,
                             src[k].n_out);
@@ -424,7 +425,7 @@ static void test_resampling_diagonal_noise_range(void **state)
     GColorModel *m = model(0, 0, 0);
     int n = m->nsamples;
     GColor c;
-    gcolor_wrap(&c, m, buf[0]);
+    assert_int_equal(gcolor_wrap(&c, m, buf[0], tu_floats(buf[0])), G_OK);
     /* a smooth reflectance on a 5 nm grid with negative noise off the diagonal */
     int ns = 81;
     float *d = calloc((size_t)ns * ns, sizeof *d);
@@ -452,7 +453,7 @@ static void test_resampling_diagonal_noise_range(void **state)
     assert_true(gcolor_brightness(&c) == 0.0);
     GColorModel *wide = model(10, 300, 780);
     GColor w;
-    gcolor_wrap(&w, wide, buf[1]);
+    assert_int_equal(gcolor_wrap(&w, wide, buf[1], tu_floats(buf[1])), G_OK);
     assert_int_equal(gcolor_from_reradiation(&w, &uv, &err), G_OK);
     int nw = wide->nsamples;
     for (int e = 0; e < nw * nw; e++)

@@ -1,6 +1,6 @@
 /* test_color.c - the colour models through the generic interface: creation and options, RGB round
  * trips, white light on white, the algebraic identities, brightness, errors, conversion between models,
- * and that the operations never allocate. */
+ * and that the operations never allocate (storage, fill, exp and axpy: test_color_ops.c). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -143,7 +143,7 @@ static void test_rgb_round_trip(void **state)
     for (int ci = 0; ci < NCASES; ci++) {
         GColorModel *m = make(&cases[ci]);
         GColor c;
-        gcolor_wrap(&c, m, st);
+        assert_int_equal(gcolor_wrap(&c, m, st, tu_floats(st)), G_OK);
         double worst = 0.0, worst_nm = 0.0, sum_nm = 0.0;
         int count = 0;
         for (int role = 0; role < 2; role++)
@@ -188,9 +188,9 @@ static void test_white_light_on_white(void **state)
     for (int ci = 0; ci < NCASES; ci++) {
         GColorModel *m = make(&cases[ci]);
         GColor light, refl, out;
-        gcolor_wrap(&light, m, lv);
-        gcolor_wrap(&refl, m, rv);
-        gcolor_wrap(&out, m, ov);
+        assert_int_equal(gcolor_wrap(&light, m, lv, tu_floats(lv)), G_OK);
+        assert_int_equal(gcolor_wrap(&refl, m, rv, tu_floats(rv)), G_OK);
+        assert_int_equal(gcolor_wrap(&out, m, ov, tu_floats(ov)), G_OK);
         assert_int_equal(gcolor_from_rgb(&light, white, GCOLOR_LIGHT), G_OK);
         assert_int_equal(gcolor_from_rgb(&refl, white, GCOLOR_REFLECTANCE), G_OK);
         assert_int_equal(gcolor_mul(&out, &refl, &light), G_OK);
@@ -230,7 +230,7 @@ static void test_sampling(void **state)
     for (int ci = 1; ci < NCASES; ci++) { /* the spectral models */
         GColorModel *m = make(&cases[ci]);
         GColor a;
-        gcolor_wrap(&a, m, av);
+        assert_int_equal(gcolor_wrap(&a, m, av, tu_floats(av)), G_OK);
         int n = m->nsamples;
         double step = m->lambda_step, lo = m->lambda_min, hi = lo + (n - 1) * step;
         GSpectrumNM s, back;
@@ -295,10 +295,10 @@ static void test_identities(void **state)
     for (int ci = 0; ci < NCASES; ci++) {
         GColorModel *m = make(&cases[ci]);
         GColor a, black, white, out;
-        gcolor_wrap(&a, m, av);
-        gcolor_wrap(&black, m, bv);
-        gcolor_wrap(&white, m, wv);
-        gcolor_wrap(&out, m, ov);
+        assert_int_equal(gcolor_wrap(&a, m, av, tu_floats(av)), G_OK);
+        assert_int_equal(gcolor_wrap(&black, m, bv, tu_floats(bv)), G_OK);
+        assert_int_equal(gcolor_wrap(&white, m, wv, tu_floats(wv)), G_OK);
+        assert_int_equal(gcolor_wrap(&out, m, ov, tu_floats(ov)), G_OK);
         double rgb[3] = {0.3, 0.6, 0.2};
         gcolor_from_rgb(&a, rgb, GCOLOR_LIGHT);
         int n = m->nvalues;
@@ -338,7 +338,7 @@ static void test_brightness(void **state)
     for (int ci = 0; ci < NCASES; ci++) {
         GColorModel *m = make(&cases[ci]);
         GColor a;
-        gcolor_wrap(&a, m, av);
+        assert_int_equal(gcolor_wrap(&a, m, av, tu_floats(av)), G_OK);
         assert_true(gcolor_brightness(&a) == 0.0); /* black */
         int n = m->nvalues;
         for (int k = 0; k < n; k++) { /* every single sample counts: 0 only for black */
@@ -380,9 +380,9 @@ static void test_mismatch(void **state)
     assert_int_equal(gcolormodel_create("rgb", NULL, &c, &err), G_OK);
     float av[81], bv[81], cv[3];
     GColor x, y, z;
-    gcolor_wrap(&x, a, av);
-    gcolor_wrap(&y, b, bv);
-    gcolor_wrap(&z, c, cv);
+    assert_int_equal(gcolor_wrap(&x, a, av, tu_floats(av)), G_OK);
+    assert_int_equal(gcolor_wrap(&y, b, bv, tu_floats(bv)), G_OK);
+    assert_int_equal(gcolor_wrap(&z, c, cv, tu_floats(cv)), G_OK);
     const GColor *others[] = {&y, &z};
     for (int i = 0; i < 2; i++) {
         const GColor *o = others[i];
@@ -407,7 +407,7 @@ static void test_nan_input(void **state)
     for (int ci = 0; ci < NCASES; ci++) {
         GColorModel *m = make(&cases[ci]);
         GColor a;
-        gcolor_wrap(&a, m, av);
+        assert_int_equal(gcolor_wrap(&a, m, av, tu_floats(av)), G_OK);
         double bad[3] = {0.5, NAN, 0.5}, inf[3] = {INFINITY, 0, 0};
         assert_int_equal(gcolor_from_rgb(&a, bad, GCOLOR_REFLECTANCE), G_ERR_INVALID);
         assert_int_equal(gcolor_from_rgb(&a, inf, GCOLOR_LIGHT), G_ERR_INVALID);
@@ -462,8 +462,8 @@ static void test_convert_preserves_xyz(void **state)
                     if (i == j)
                         continue;
                     GColor src, dst;
-                    gcolor_wrap(&src, ms[i], sv);
-                    gcolor_wrap(&dst, ms[j], dv);
+                    assert_int_equal(gcolor_wrap(&src, ms[i], sv, tu_floats(sv)), G_OK);
+                    assert_int_equal(gcolor_wrap(&dst, ms[j], dv, tu_floats(dv)), G_OK);
                     assert_int_equal(gcolor_from_nm(&src, &s, (GColorRole)role), G_OK);
                     assert_int_equal(gcolor_convert(&dst, &src, (GColorRole)role), G_OK);
                     double a[3], b[3];
@@ -536,7 +536,10 @@ static void test_operations_do_not_allocate(void **state)
             gcolor_div(&t, &a, &b);
             gcolor_pow(&t, &b, 1.5);
             gcolor_add_scaled(&o, &a, 0.25);
-            sink += gcolor_brightness(&o) + gcolor_brightness(&mat);
+            gcolor_axpy(&t, 0.5, &a, &b);
+            gcolor_exp(&t, &t, -0.3);
+            gcolor_fill(&t, 0.5);
+            sink += gcolor_brightness(&o) + gcolor_brightness(&mat) + gcolor_brightness(&t);
             if (has_matrix) {
                 gcolor_copy(&t, &mat);
                 gcolor_mul(&t, &t, &mat); /* matrix product in place */
@@ -545,7 +548,10 @@ static void test_operations_do_not_allocate(void **state)
                 gcolor_scale(&t, &t, 0.5);
                 gcolor_div(&o, &t, &mat);
                 gcolor_pow(&o, &t, 2.0);
-                sink += gcolor_brightness(&t);
+                gcolor_add_scaled(&t, &mat, 0.25); /* matrix += matrix */
+                gcolor_axpy(&t, 0.5, &b, &t);       /* diag + matrix */
+                gcolor_exp(&o, &mat, -1.0);
+                sink += gcolor_brightness(&t) + gcolor_brightness(&o);
             }
             gscratch_release(s, mark);
         }

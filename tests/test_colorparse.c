@@ -100,8 +100,8 @@ static void test_line_in_rgb_is_the_cmf(void **state)
     const GColorModel *m = glibrary_colormodel(lib);
     float v[3], ve[3];
     GColor c, ce;
-    gcolor_wrap(&c, m, v);
-    gcolor_wrap(&ce, m, ve);
+    assert_int_equal(gcolor_wrap(&c, m, v, sizeof v / sizeof v[0]), G_OK);
+    assert_int_equal(gcolor_wrap(&ce, m, ve, sizeof ve / sizeof ve[0]), G_OK);
     GError err;
     assert_int_equal(glibrary_color(lib, "laser", GCOLOR_LIGHT, &c, &err), G_OK);
     double xyz[3], cmf[3], sum_y = 0;

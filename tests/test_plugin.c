@@ -93,8 +93,8 @@ static void test_load_from_text_and_use(void **state)
     sp.geometric_normal = gvec3(0, 0, 1);
     float iv[1], ov[1];
     GColor illum, out;
-    gcolor_wrap(&illum, m, iv);
-    gcolor_wrap(&out, m, ov);
+    assert_int_equal(gcolor_wrap(&illum, m, iv, sizeof iv / sizeof iv[0]), G_OK);
+    assert_int_equal(gcolor_wrap(&out, m, ov, sizeof ov / sizeof ov[0]), G_OK);
     iv[0] = 1.0f;
     GMaterial *smooth = glibrary_material(lib, "smooth"), *rough = glibrary_material(lib, "rough");
     assert_non_null(smooth);

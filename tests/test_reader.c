@@ -180,7 +180,7 @@ static void test_colors_rgb_model(void **state)
     const GColorModel *m = glibrary_colormodel(lib);
     float v[3];
     GColor c;
-    gcolor_wrap(&c, m, v);
+    assert_int_equal(gcolor_wrap(&c, m, v, tu_floats(v)), G_OK);
     GError err;
     assert_int_equal(glibrary_color(lib, "a", GCOLOR_REFLECTANCE, &c, &err), G_OK);
     assert_near(v[0], 0.25, 1e-7);
@@ -275,8 +275,8 @@ static void test_materials_round_trip(void **state)
     setup_point(&sp, m, s);
     float iv[3], ov[3];
     GColor illum, out;
-    gcolor_wrap(&illum, m, iv);
-    gcolor_wrap(&out, m, ov);
+    assert_int_equal(gcolor_wrap(&illum, m, iv, tu_floats(iv)), G_OK);
+    assert_int_equal(gcolor_wrap(&out, m, ov, tu_floats(ov)), G_OK);
     double one[3] = {1, 1, 1};
     gcolor_from_rgb(&illum, one, GCOLOR_REFLECTANCE);
     GVec3 n = gvec3(0, 0, 1), in = gvec3(0, 0, 1), outd = gvec3(0.6, 0, 0.8);
@@ -338,7 +338,7 @@ static void test_dispersion_forms(void **state)
     const GColorModel *m = glibrary_colormodel(lib);
     float v[3];
     GColor c;
-    gcolor_wrap(&c, m, v);
+    assert_int_equal(gcolor_wrap(&c, m, v, tu_floats(v)), G_OK);
     assert_int_equal(gmaterial_refraction_index(glibrary_material(lib, "bk7"), NULL, &c), G_OK);
     assert_near(v[1], 1.5185, 1e-3); /* BK7 at 550 nm */
     assert_true(v[2] > v[1] && v[1] > v[0]); /* normal dispersion: blue bends more */

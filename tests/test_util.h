@@ -23,6 +23,9 @@ static inline void tu_near(double a, double b, double tol, const char *what, con
     }
 }
 
+/** The number of elements of an array (for gcolor_wrap's size argument; not for a pointer). */
+#define tu_floats(a) (sizeof(a) / sizeof((a)[0]))
+
 /** What the counting allocator counts: calls of alloc and realloc since it was installed, and the call
  * (numbered from 0) that fails. */
 typedef struct TuCounter {

@@ -7,6 +7,7 @@
 int gtextemps_color(GTexTemps *t, GSurfPoint *sp, const GColorModel *m, int index, GColor *c)
 {
     float *v;
+    int storage = GCOLOR_STORAGE_ARENA, capacity = m->capacity;
     if (sp && sp->scratch) {
         if (!t->scratch) {
             t->scratch = sp->scratch;
@@ -19,10 +20,10 @@ int gtextemps_color(GTexTemps *t, GSurfPoint *sp, const GColorModel *m, int inde
         if (m->capacity > GTEX_STACK_FLOATS || index < 0 || index > 1)
             return G_ERR_NOMEM;
         v = t->stack[index];
+        storage = GCOLOR_STORAGE_CALLER;
+        capacity = GTEX_STACK_FLOATS;
     }
-    c->model = m;
-    c->v = v;
-    c->kind = GCOLOR_VECTOR;
+    *c = (GColor){.model = m, .v = v, .kind = GCOLOR_VECTOR, .storage = storage, .capacity = capacity};
     return G_OK;
 }
 

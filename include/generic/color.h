@@ -5,12 +5,18 @@
  * Its behaviour is a versioned const vtable (GColorModelClass); the instance carries the chosen
  * configuration and the model's private tables.
  *
- * Storage scheme. A GColor is a small handle: the model, a kind, and a pointer to the model's
- * `capacity` floats. The handle never owns heap memory by itself:
- *   - on the per-ray path, values live in a per-thread GScratch arena (gcolor_scratch) or in caller
- *     storage (gcolor_wrap); a mark/release pair around each sample returns the arena to where it was,
- *     so colour arithmetic never calls malloc;
- *   - long-lived values (a material's parameters) are made with gcolor_alloc and freed with gcolor_free.
+ * Storage and ownership. A GColor is a small handle: the model, a kind, a pointer to at least
+ * `model->capacity` floats, and a record of where those floats live (`storage`, a GColorStorage) and how many
+ * there are (`capacity`). Who frees the floats follows from where they live:
+ *   - GCOLOR_STORAGE_CALLER (gcolor_wrap): the caller's buffer; the caller keeps owning it;
+ *   - GCOLOR_STORAGE_ARENA (gcolor_scratch): a GScratch arena; a mark/release pair (or destroying the arena)
+ *     gives it back. This is how the per-ray path works, so colour arithmetic never calls malloc;
+ *   - GCOLOR_STORAGE_HEAP (gcolor_alloc): the library's allocator, for long-lived values (a material's
+ *     parameters); the handle owns it and gcolor_free frees it.
+ * gcolor_free may be called on any handle: it frees only HEAP storage and then clears the handle (a cleared
+ * handle, e.g. `GColor c = {0}`, is GCOLOR_STORAGE_NONE and freeing it again is a no-op). Copying a handle by
+ * assignment copies the pointer, not the floats: free only one of the copies. A handle built by hand must name
+ * its fields (designated initialisers) and set storage and capacity.
  * Every operation writes into an `out` colour that already has storage; `out` may alias an operand.
  *
  * Kinds. In every model a value is a vector of samples (a light spectrum, or a plain reflectance that
@@ -34,8 +40,9 @@
 extern "C" {
 #endif
 
-/** Version of the colour model vtable; a class with another version is refused. */
-#define GCOLOR_ABI_VERSION 1
+/** Version of the colour model vtable; a class with another version is refused.
+ * 2: GColor records its storage and capacity, and GColorModelClass grew the optional fill, exp_scaled and axpy slots. */
+#define GCOLOR_ABI_VERSION 2
 
 /** The nm exchange grid: 380..780 nm at 1 nm. */
 #define GNM_MIN 380
@@ -62,11 +69,21 @@ typedef enum GColorRole {
 typedef struct GColorModel GColorModel;
 typedef struct GColorModelClass GColorModelClass;
 
-/** A colour value: a handle to `model->capacity` floats in caller, arena or heap storage. */
+/** Where the floats of a colour value live (see "Storage and ownership" above). */
+typedef enum GColorStorage {
+    GCOLOR_STORAGE_NONE = 0,   /**< a cleared handle, or one built by hand that owns nothing */
+    GCOLOR_STORAGE_CALLER = 1, /**< the caller's buffer (gcolor_wrap) */
+    GCOLOR_STORAGE_ARENA = 2,  /**< a GScratch arena (gcolor_scratch) */
+    GCOLOR_STORAGE_HEAP = 3    /**< the library's allocator (gcolor_alloc); freed by gcolor_free */
+} GColorStorage;
+
+/** A colour value: a handle to at least `model->capacity` floats in caller, arena or heap storage. */
 typedef struct GColor {
     const GColorModel *model;
     float *v;
-    int kind; /**< a GColorKind */
+    int kind;     /**< a GColorKind */
+    int storage;  /**< a GColorStorage: who owns v */
+    int capacity; /**< floats at v (>= model->capacity for a usable handle; 0 when cleared) */
 } GColor;
 
 /** Options for creating a model; zero fields take the model's defaults. */
@@ -100,7 +117,9 @@ struct GColorModel {
 
 /** The vtable of a colour model. Required: init, black, add, mul, scale, div, pow, brightness, to_nm,
  * from_nm. Optional (NULL = go through the nm spectrum): fini, to_xyz, from_rgb, from_reradiation.
- * Operations get valid operands of this model (the dispatch checks models); `out` may alias them. */
+ * Optional (NULL = the default of lib/color.c, which reads a vector as nvalues independent samples, as add and
+ * scale treat it): fill, exp_scaled, axpy. A model whose vectors are not plain samples, or that has matrices, gives
+ * its own. Operations get valid operands of this model (the dispatch checks models); `out` may alias them. */
 struct GColorModelClass {
     int abi_version;         /**< GCOLOR_ABI_VERSION */
     const char *name;        /**< type keyword, e.g. "spectrum" */
@@ -125,6 +144,16 @@ struct GColorModelClass {
     int (*to_xyz)(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3]);
     int (*from_rgb)(const GColorModel *m, const double rgb[3], GColorRole role, GColor *out);
     int (*from_reradiation)(const GColorModel *m, const GReradiation *r, GColor *out, GError *err);
+    /** The constant `value` (a vector; in a model with matrices it stands for value times the identity).
+     * Default: value in each of the nvalues samples. */
+    int (*fill)(const GColorModel *m, GColor *out, double value);
+    /** exp(s * a) sample by sample (Beer-Lambert: a transmittance from an absorption coefficient; not named
+     * exp, which <tgmath.h> defines as a macro). Default: vectors sample by sample; a matrix is refused
+     * (G_ERR_UNSUPPORTED): the library cannot read it. */
+    int (*exp_scaled)(const GColorModel *m, GColor *out, const GColor *a, double s);
+    /** out = s * a + b. Default: two vectors sample by sample; otherwise the class's scale then add, through
+     * a temporary of the model's capacity from a per-thread arena of the library. */
+    int (*axpy)(const GColorModel *m, GColor *out, double s, const GColor *a, const GColor *b);
 };
 
 /* ---- models ---- */
@@ -143,13 +172,17 @@ void gcolormodels_register_builtin(void);
 
 /* ---- storage ---- */
 
-/** Points c at caller storage of at least m->capacity floats and sets it to black. */
-void gcolor_wrap(GColor *c, const GColorModel *m, float *storage);
-/** Gives c storage from the arena and sets it to black; G_ERR_NOMEM when the arena cannot grow. */
+/** Points c at the caller's buffer of nfloats floats (GCOLOR_STORAGE_CALLER) and sets it to black.
+ * G_ERR_INVALID, with c cleared, when storage is NULL or nfloats < m->capacity. */
+int gcolor_wrap(GColor *c, const GColorModel *m, float *storage, size_t nfloats);
+/** Gives c storage from the arena (GCOLOR_STORAGE_ARENA) and sets it to black; G_ERR_NOMEM, with c cleared,
+ * when the arena cannot grow. The arena's mark/release gives the storage back. */
 int gcolor_scratch(GColor *c, const GColorModel *m, GScratch *s);
-/** Gives c heap storage (for long-lived values) and sets it to black. */
+/** Gives c heap storage (GCOLOR_STORAGE_HEAP, for long-lived values) and sets it to black; G_ERR_NOMEM, with
+ * c cleared, when out of memory. */
 int gcolor_alloc(GColor *c, const GColorModel *m);
-/** Frees storage from gcolor_alloc and clears the handle; a cleared handle is a no-op. */
+/** Frees c's storage if it is HEAP (caller and arena storage are left alone) and clears the handle; NULL and
+ * a cleared handle are no-ops. */
 void gcolor_free(GColor *c);
 /** Copies the value of src into dst (same model). */
 int gcolor_copy(GColor *dst, const GColor *src);
@@ -170,8 +203,17 @@ int gcolor_div(GColor *out, const GColor *a, const GColor *b);
 int gcolor_pow(GColor *out, const GColor *a, double e);
 /** Brightness: 0 if and only if c is black; a constant value c gives c. */
 double gcolor_brightness(const GColor *c);
-/** out += a * s (a common compound of add and scale). */
+/** out = s * a + b (out may alias a or b); any kinds the model's add and scale accept. */
+int gcolor_axpy(GColor *out, double s, const GColor *a, const GColor *b);
+/** out += a * s, that is gcolor_axpy(out, s, a, out). */
 int gcolor_add_scaled(GColor *out, const GColor *a, double s);
+/** out = the constant value (a vector: 1 is white, and the relative index of vacuum); G_ERR_INVALID for a
+ * non-finite value. */
+int gcolor_fill(GColor *out, double value);
+/** out = exp(s * a) sample by sample (a transmittance from an absorption coefficient: s = -distance). A
+ * matrix operand: the model's definition (bispectral: its diagonal, as pow), G_ERR_UNSUPPORTED in a plug-in
+ * model that gives no exp of its own. */
+int gcolor_exp(GColor *out, const GColor *a, double s);
 /** 1 when every sample is finite, 0 otherwise. */
 int gcolor_is_finite(const GColor *c);
 /** 1 when every sample is finite and >= 0 (a physical light or reflectance), 0 otherwise. */

@@ -20,7 +20,8 @@ int main(void)
     }
     float s[3];
     GColor c;
-    gcolor_wrap(&c, m, s);
+    if (gcolor_wrap(&c, m, s, 3) != G_OK)
+        return 1;
     double w[3] = {1, 1, 1}, xyz[3];
     gcolor_from_rgb(&c, w, GCOLOR_LIGHT);
     gcolor_to_xyz(&c, GCOLOR_LIGHT, xyz);

@@ -1,0 +1,661 @@
+/* test_color_ops.c - colour storage and the operations materials use instead of touching samples, in every
+ * registered colour model (taken from the registry, not listed here): gcolor_free is harmless for arena and
+ * caller colours, gcolor_wrap refuses a short buffer, fill / exp / axpy / add_scaled give the analytic values
+ * for vectors and (bispectral) matrices, and the library's matrix default works for a model whose capacity is
+ * larger than any built-in one, without allocating after its first use. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "generic/color.h"
+#include "generic/registry.h"
+#include "test_util.h"
+
+enum { MAX_MODELS = 64, BIG_N = 160 /* BIG_N * BIG_N = 25600 floats > 128 * 128 */ };
+
+/* Every registered colour model with its default options; returns how many. */
+static int all_models(GColorModel **out)
+{
+    const GTypeInfo *types[MAX_MODELS];
+    int n = gregistry_list(GKIND_COLORMODEL, types, MAX_MODELS);
+    assert_true(n > 0 && n <= MAX_MODELS);
+    for (int i = 0; i < n; i++) {
+        GError err;
+        int rc = gcolormodel_create(types[i]->name, NULL, &out[i], &err);
+        if (rc != G_OK)
+            print_error("%s: %s\n", types[i]->name, err.message);
+        assert_int_equal(rc, G_OK);
+    }
+    return n;
+}
+
+static void destroy_all(GColorModel **m, int n)
+{
+    for (int i = 0; i < n; i++)
+        gcolormodel_destroy(m[i]);
+}
+
+static void assert_cleared(const GColor *c)
+{
+    assert_null(c->model);
+    assert_null(c->v);
+    assert_int_equal(c->storage, GCOLOR_STORAGE_NONE);
+    assert_int_equal(c->capacity, 0);
+}
+
+/* ---- storage ---- */
+
+/* An allocator that counts frees (and allocations) and passes everything to the C library. */
+typedef struct FreeCounter {
+    long allocs, frees;
+} FreeCounter;
+
+static void *fc_alloc(size_t n, void *u)
+{
+    ((FreeCounter *)u)->allocs++;
+    return malloc(n);
+}
+
+static void *fc_realloc(void *p, size_t n, void *u)
+{
+    ((FreeCounter *)u)->allocs++;
+    return realloc(p, n);
+}
+
+static void fc_free(void *p, void *u)
+{
+    ((FreeCounter *)u)->frees++;
+    free(p);
+}
+
+static void fc_install(FreeCounter *c)
+{
+    c->allocs = c->frees = 0;
+    GAllocator a = {fc_alloc, fc_realloc, fc_free, c};
+    gmem_set_allocator(&a);
+}
+
+static void test_free_is_harmless_for_arena_and_caller(void **state)
+{
+    (void)state;
+    GColorModel *models[MAX_MODELS];
+    int nm = all_models(models);
+    for (int k = 0; k < nm; k++) {
+        const GColorModel *m = models[k];
+        GScratch *s = gscratch_create(0);
+        assert_non_null(s);
+        FreeCounter fc;
+        /* arena: nothing is freed, the handle is cleared, the arena keeps working */
+        GColor a;
+        assert_int_equal(gcolor_scratch(&a, m, s), G_OK);
+        assert_int_equal(a.storage, GCOLOR_STORAGE_ARENA);
+        assert_int_equal(a.capacity, m->capacity);
+        fc_install(&fc);
+        gcolor_free(&a);
+        gcolor_free(&a); /* a cleared handle: a no-op */
+        gmem_set_allocator(NULL);
+        assert_int_equal(fc.frees, 0);
+        assert_cleared(&a);
+        GColor b;
+        assert_int_equal(gcolor_scratch(&b, m, s), G_OK);
+        assert_int_equal(gcolor_fill(&b, 0.25), G_OK);
+        assert_near(gcolor_brightness(&b), 0.25, 1e-6);
+        /* caller storage on the stack (a free of it would be fatal under ASan) */
+        float stack[8];
+        float *buf = (size_t)m->capacity <= tu_floats(stack) ? stack : calloc((size_t)m->capacity, sizeof *buf);
+        GColor c;
+        assert_int_equal(gcolor_wrap(&c, m, buf, (size_t)m->capacity), G_OK);
+        assert_int_equal(c.storage, GCOLOR_STORAGE_CALLER);
+        fc_install(&fc);
+        gcolor_free(&c);
+        gmem_set_allocator(NULL);
+        assert_int_equal(fc.frees, 0);
+        assert_cleared(&c);
+        buf[m->capacity - 1] = 1.0f; /* still the caller's */
+        if (buf != stack)
+            free(buf);
+        /* heap: exactly one free */
+        GColor h;
+        fc_install(&fc);
+        assert_int_equal(gcolor_alloc(&h, m), G_OK);
+        assert_int_equal(h.storage, GCOLOR_STORAGE_HEAP);
+        assert_int_equal(h.capacity, m->capacity);
+        gcolor_free(&h);
+        gcolor_free(&h);
+        gmem_set_allocator(NULL);
+        assert_int_equal(fc.allocs, 1);
+        assert_int_equal(fc.frees, 1);
+        assert_cleared(&h);
+        gcolor_free(NULL);
+        print_message("%-12s capacity %5d: free of arena and caller colours frees nothing, of a heap colour once\n",
+                      gcolormodel_name(m), m->capacity);
+        gscratch_destroy(s);
+    }
+    destroy_all(models, nm);
+}
+
+static void test_wrap_refuses_short_buffer(void **state)
+{
+    (void)state;
+    GColorModel *models[MAX_MODELS];
+    int nm = all_models(models);
+    for (int k = 0; k < nm; k++) {
+        const GColorModel *m = models[k];
+        size_t cap = (size_t)m->capacity, total = cap + 8;
+        float *buf = malloc(total * sizeof *buf);
+        assert_non_null(buf);
+        for (size_t i = 0; i < total; i++)
+            buf[i] = -7.0f;
+        GColor c = {.model = m, .v = buf, .storage = GCOLOR_STORAGE_HEAP, .capacity = 5}; /* stale contents */
+        assert_int_equal(gcolor_wrap(&c, m, buf, cap - 1), G_ERR_INVALID);
+        assert_cleared(&c);
+        assert_int_equal(gcolor_wrap(&c, m, buf, 0), G_ERR_INVALID);
+        assert_cleared(&c);
+        assert_int_equal(gcolor_wrap(&c, m, NULL, cap), G_ERR_INVALID);
+        assert_cleared(&c);
+        for (size_t i = 0; i < total; i++) /* a refused wrap writes nothing */
+            assert_true(buf[i] == -7.0f);
+        assert_int_equal(gcolor_wrap(&c, m, buf, cap), G_OK);
+        assert_ptr_equal(c.model, m);
+        assert_int_equal(c.storage, GCOLOR_STORAGE_CALLER);
+        assert_int_equal(c.capacity, m->capacity);
+        assert_true(gcolor_brightness(&c) == 0.0); /* black */
+        for (size_t i = cap; i < total; i++) /* nothing beyond the size given */
+            assert_true(buf[i] == -7.0f);
+        assert_int_equal(gcolor_wrap(&c, m, buf, total), G_OK);
+        assert_int_equal(c.capacity, (int)total);
+        print_message("%-12s wrap of %zu floats refused, of %zu accepted\n", gcolormodel_name(m), cap - 1, cap);
+        free(buf);
+    }
+    destroy_all(models, nm);
+}
+
+/* ---- fill, exp, axpy on vectors ---- */
+
+static float sample_a(int i, int n) { return 0.05f + 0.9f * (float)i / (float)n; }
+static float sample_b(int i, int n) { return 0.7f - 0.5f * (float)i / (float)n; }
+
+static void set_vector(GColor *c, float (*f)(int, int))
+{
+    gcolor_black(c);
+    for (int i = 0; i < c->model->nvalues; i++)
+        c->v[i] = f(i, c->model->nvalues);
+}
+
+/* every sample of c against want(i), relative tolerance */
+static void assert_samples(const GColor *c, double (*want)(int, int, double), double s, double tol)
+{
+    assert_int_equal(c->kind, GCOLOR_VECTOR);
+    int n = c->model->nvalues;
+    for (int i = 0; i < n; i++) {
+        double w = want(i, n, s);
+        assert_near(c->v[i], w, tol * fmax(1.0, fabs(w)));
+    }
+}
+
+static double want_exp(int i, int n, double s) { return exp(s * sample_a(i, n)); }
+static double want_axpy(int i, int n, double s) { return s * sample_a(i, n) + sample_b(i, n); }
+static double want_add_scaled(int i, int n, double s) { return sample_b(i, n) + s * sample_a(i, n); }
+
+static void test_fill_exp_axpy_vectors(void **state)
+{
+    (void)state;
+    GColorModel *models[MAX_MODELS];
+    int nm = all_models(models);
+    GScratch *s = gscratch_create(0);
+    assert_non_null(s);
+    for (int k = 0; k < nm; k++) {
+        const GColorModel *m = models[k];
+        GScratchMark mark = gscratch_mark(s);
+        GColor a, b, o;
+        assert_int_equal(gcolor_scratch(&a, m, s), G_OK);
+        assert_int_equal(gcolor_scratch(&b, m, s), G_OK);
+        assert_int_equal(gcolor_scratch(&o, m, s), G_OK);
+        /* fill: the constant in every sample, brightness c, and 1 as a reflectance is white */
+        const double cs[] = {0.0, 0.37, 1.0, 2.5};
+        for (int j = 0; j < 4; j++) {
+            assert_int_equal(gcolor_fill(&o, cs[j]), G_OK);
+            assert_int_equal(o.kind, GCOLOR_VECTOR);
+            for (int i = 0; i < m->nvalues; i++)
+                assert_true(o.v[i] == (float)cs[j]);
+            assert_near(gcolor_brightness(&o), cs[j], 1e-6 * fmax(1.0, cs[j]));
+        }
+        double rgb[3];
+        assert_int_equal(gcolor_fill(&o, 1.0), G_OK);
+        assert_int_equal(gcolor_to_rgb(&o, GCOLOR_REFLECTANCE, rgb), G_OK);
+        for (int c = 0; c < 3; c++)
+            assert_near(rgb[c], 1.0, 2e-3);
+        assert_int_equal(gcolor_fill(&o, NAN), G_ERR_INVALID);
+        assert_int_equal(gcolor_fill(&o, INFINITY), G_ERR_INVALID);
+        /* exp(s a), also in place */
+        set_vector(&a, sample_a);
+        assert_int_equal(gcolor_exp(&o, &a, -2.5), G_OK);
+        assert_samples(&o, want_exp, -2.5, 1e-6);
+        assert_int_equal(gcolor_exp(&a, &a, 0.8), G_OK);
+        assert_samples(&a, want_exp, 0.8, 1e-6);
+        assert_int_equal(gcolor_exp(&o, &b, 0.0), G_OK); /* exp(0) = 1 */
+        for (int i = 0; i < m->nvalues; i++)
+            assert_true(o.v[i] == 1.0f);
+        /* axpy: separate, out = a, out = b */
+        const double ss[] = {0.0, 0.75, -1.5};
+        for (int j = 0; j < 3; j++) {
+            set_vector(&a, sample_a);
+            set_vector(&b, sample_b);
+            assert_int_equal(gcolor_axpy(&o, ss[j], &a, &b), G_OK);
+            assert_samples(&o, want_axpy, ss[j], 1e-6);
+            assert_int_equal(gcolor_axpy(&a, ss[j], &a, &b), G_OK);
+            assert_samples(&a, want_axpy, ss[j], 1e-6);
+            set_vector(&a, sample_a);
+            assert_int_equal(gcolor_axpy(&b, ss[j], &a, &b), G_OK);
+            assert_samples(&b, want_axpy, ss[j], 1e-6);
+            set_vector(&b, sample_b);
+            assert_int_equal(gcolor_add_scaled(&b, &a, ss[j]), G_OK);
+            assert_samples(&b, want_add_scaled, ss[j], 1e-6);
+        }
+        /* a + a * 1 = 2 a: out aliasing both operands */
+        set_vector(&a, sample_a);
+        assert_int_equal(gcolor_axpy(&a, 1.0, &a, &a), G_OK);
+        for (int i = 0; i < m->nvalues; i++)
+            assert_near(a.v[i], 2.0 * sample_a(i, m->nvalues), 1e-6);
+        /* operands of another model */
+        const GColorModel *other = models[(k + 1) % nm];
+        if (other != m && other->cls != m->cls) {
+            GColor x;
+            assert_int_equal(gcolor_scratch(&x, other, s), G_OK);
+            assert_int_equal(gcolor_axpy(&o, 1.0, &x, &b), G_ERR_MISMATCH);
+            assert_int_equal(gcolor_axpy(&o, 1.0, &a, &x), G_ERR_MISMATCH);
+            assert_int_equal(gcolor_axpy(&x, 1.0, &a, &b), G_ERR_MISMATCH);
+            assert_int_equal(gcolor_exp(&x, &a, 1.0), G_ERR_MISMATCH);
+        }
+        print_message("%-12s fill, exp, axpy and add_scaled give the analytic samples\n", gcolormodel_name(m));
+        gscratch_release(s, mark);
+    }
+    gscratch_destroy(s);
+    destroy_all(models, nm);
+}
+
+/* ---- matrices (the bispectral layout: A[o * n + i], row o = emission) ---- */
+
+static float entry_a(int o, int i) { return o >= i ? 0.01f * (float)(1 + (o * 7 + i * 3) % 11) : 0.0f; }
+static float entry_b(int o, int i) { return 0.3f + 0.002f * (float)o - 0.001f * (float)i; }
+
+/* A matrix of model m, made through from_reradiation and then given the entries f. 0 when the model turns
+ * a re-radiation matrix into a vector (it has no matrices). */
+static int make_matrix(const GColorModel *m, float (*f)(int, int), GColor *out)
+{
+    int n = m->nsamples;
+    if (n <= 0 || m->capacity != n * n)
+        return 0;
+    float *data = calloc((size_t)n * n, sizeof *data);
+    assert_non_null(data);
+    for (int k = 0; k < n; k++)
+        data[k * n + k] = 0.5f;
+    GReradiation r = {m->lambda_min, m->lambda_step, n, m->lambda_min, m->lambda_step, n, data};
+    GError err;
+    assert_int_equal(gcolor_from_reradiation(out, &r, &err), G_OK);
+    free(data);
+    if (out->kind != GCOLOR_MATRIX)
+        return 0;
+    for (int o = 0; o < n; o++)
+        for (int i = 0; i < n; i++)
+            out->v[o * n + i] = f(o, i);
+    return 1;
+}
+
+/* c's entries against s * A + B, where A and B are matrices or vectors (va, vb: the vector's samples, put on
+ * the diagonal) */
+static void assert_entries(const GColor *c, double s, float (*fa)(int, int), float (*va)(int, int),
+                           float (*fb)(int, int), float (*vb)(int, int))
+{
+    int n = c->model->nsamples;
+    assert_int_equal(c->kind, GCOLOR_MATRIX);
+    double worst = 0.0;
+    for (int o = 0; o < n; o++)
+        for (int i = 0; i < n; i++) {
+            double a = fa ? fa(o, i) : (o == i ? va(o, n) : 0.0);
+            double b = fb ? fb(o, i) : (o == i ? vb(o, n) : 0.0);
+            double w = s * a + b;
+            worst = fmax(worst, fabs(c->v[o * n + i] - w));
+        }
+    assert_true(worst <= 1e-6);
+}
+
+static void test_fill_exp_axpy_matrices(void **state)
+{
+    (void)state;
+    GColorModel *models[MAX_MODELS];
+    int nm = all_models(models), with_matrices = 0;
+    GScratch *s = gscratch_create(0);
+    assert_non_null(s);
+    for (int k = 0; k < nm; k++) {
+        const GColorModel *m = models[k];
+        GScratchMark mark = gscratch_mark(s);
+        GColor A, B, v, o;
+        assert_int_equal(gcolor_scratch(&A, m, s), G_OK);
+        assert_int_equal(gcolor_scratch(&B, m, s), G_OK);
+        assert_int_equal(gcolor_scratch(&v, m, s), G_OK);
+        assert_int_equal(gcolor_scratch(&o, m, s), G_OK);
+        if (!make_matrix(m, entry_a, &A)) {
+            gscratch_release(s, mark);
+            continue;
+        }
+        with_matrices++;
+        int n = m->nsamples;
+        const double sc = 0.6;
+        /* matrix + matrix: separate, out = B, out = A */
+        make_matrix(m, entry_b, &B);
+        assert_int_equal(gcolor_axpy(&o, sc, &A, &B), G_OK);
+        assert_entries(&o, sc, entry_a, NULL, entry_b, NULL);
+        assert_int_equal(gcolor_add_scaled(&B, &A, sc), G_OK);
+        assert_entries(&B, sc, entry_a, NULL, entry_b, NULL);
+        make_matrix(m, entry_b, &B);
+        assert_int_equal(gcolor_axpy(&A, sc, &A, &B), G_OK);
+        assert_entries(&A, sc, entry_a, NULL, entry_b, NULL);
+        /* s A + diag(v): separate, out = v (the vector becomes the matrix), out = A */
+        make_matrix(m, entry_a, &A);
+        set_vector(&v, sample_b);
+        assert_int_equal(gcolor_axpy(&o, sc, &A, &v), G_OK);
+        assert_entries(&o, sc, entry_a, NULL, NULL, sample_b);
+        assert_int_equal(gcolor_axpy(&v, sc, &A, &v), G_OK);
+        assert_entries(&v, sc, entry_a, NULL, NULL, sample_b);
+        set_vector(&v, sample_b);
+        assert_int_equal(gcolor_axpy(&A, sc, &A, &v), G_OK);
+        assert_entries(&A, sc, entry_a, NULL, NULL, sample_b);
+        /* diag(s v) + B: separate, out = v, out = B (add_scaled) */
+        make_matrix(m, entry_b, &B);
+        set_vector(&v, sample_a);
+        assert_int_equal(gcolor_axpy(&o, sc, &v, &B), G_OK);
+        assert_entries(&o, sc, NULL, sample_a, entry_b, NULL);
+        assert_int_equal(gcolor_axpy(&v, sc, &v, &B), G_OK);
+        assert_entries(&v, sc, NULL, sample_a, entry_b, NULL);
+        set_vector(&v, sample_a);
+        assert_int_equal(gcolor_add_scaled(&B, &v, sc), G_OK);
+        assert_entries(&B, sc, NULL, sample_a, entry_b, NULL);
+        /* vector + s matrix into the vector's storage (add_scaled of a matrix into a light) */
+        make_matrix(m, entry_a, &A);
+        set_vector(&v, sample_b);
+        assert_int_equal(gcolor_add_scaled(&v, &A, sc), G_OK);
+        assert_entries(&v, sc, entry_a, NULL, NULL, sample_b);
+        /* exp of a matrix: exp(s d) of its diagonal, a vector (a medium absorbs, it does not re-radiate) */
+        make_matrix(m, entry_b, &B);
+        assert_int_equal(gcolor_exp(&o, &B, -1.5), G_OK);
+        assert_int_equal(o.kind, GCOLOR_VECTOR);
+        for (int i = 0; i < n; i++)
+            assert_near(o.v[i], exp(-1.5 * entry_b(i, i)), 1e-6);
+        assert_int_equal(gcolor_exp(&B, &B, -1.5), G_OK); /* in place */
+        for (int i = 0; i < n; i++)
+            assert_near(B.v[i], exp(-1.5 * entry_b(i, i)), 1e-6);
+        /* fill over a matrix: the constant vector c (the operator c I) */
+        make_matrix(m, entry_b, &B);
+        assert_int_equal(gcolor_fill(&B, 0.4), G_OK);
+        assert_int_equal(B.kind, GCOLOR_VECTOR);
+        for (int i = 0; i < n; i++)
+            assert_true(B.v[i] == 0.4f);
+        assert_near(gcolor_brightness(&B), 0.4, 1e-6);
+        print_message("%-12s %d x %d matrices: axpy, add_scaled, exp and fill give the analytic entries\n",
+                      gcolormodel_name(m), n, n);
+        gscratch_release(s, mark);
+    }
+    assert_true(with_matrices >= 1); /* the bispectral model is built in */
+    gscratch_destroy(s);
+    destroy_all(models, nm);
+}
+
+/* ---- a model larger than any built-in: vectors of BIG_N samples, BIG_N x BIG_N matrices, no axpy slot ---- *
+ * A test fixture: add and scale know matrices (what the library's axpy default composes); mul, div and pow
+ * take vectors only; a vector reads as a grey of its mean. */
+
+static int big_init(GColorModel *self, const GColorModelOptions *opt, GError *err)
+{
+    (void)opt;
+    (void)err;
+    self->nvalues = BIG_N;
+    self->capacity = BIG_N * BIG_N;
+    return G_OK;
+}
+
+static int floats_of(const GColor *c) { return c->kind == GCOLOR_MATRIX ? BIG_N * BIG_N : BIG_N; }
+
+static void big_black(const GColorModel *m, GColor *out)
+{
+    (void)m;
+    out->kind = GCOLOR_VECTOR;
+    memset(out->v, 0, BIG_N * sizeof *out->v);
+}
+
+static int big_add(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+{
+    (void)m;
+    if (a->kind == b->kind) {
+        for (int i = 0; i < floats_of(a); i++)
+            out->v[i] = a->v[i] + b->v[i];
+        out->kind = a->kind;
+        return G_OK;
+    }
+    const GColor *mat = a->kind == GCOLOR_MATRIX ? a : b, *vec = mat == a ? b : a;
+    static _Thread_local float d[BIG_N];
+    memcpy(d, vec->v, sizeof d);
+    if (out->v != mat->v)
+        memcpy(out->v, mat->v, BIG_N * BIG_N * sizeof *out->v);
+    for (int k = 0; k < BIG_N; k++)
+        out->v[k * BIG_N + k] += d[k];
+    out->kind = GCOLOR_MATRIX;
+    return G_OK;
+}
+
+static int big_scale(const GColorModel *m, GColor *out, const GColor *a, double s)
+{
+    (void)m;
+    for (int i = 0; i < floats_of(a); i++)
+        out->v[i] = (float)(a->v[i] * s);
+    out->kind = a->kind;
+    return G_OK;
+}
+
+static int big_mul(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+{
+    (void)m;
+    if (a->kind != GCOLOR_VECTOR || b->kind != GCOLOR_VECTOR)
+        return G_ERR_UNSUPPORTED;
+    for (int i = 0; i < BIG_N; i++)
+        out->v[i] = a->v[i] * b->v[i];
+    out->kind = GCOLOR_VECTOR;
+    return G_OK;
+}
+
+static int big_div(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+{
+    (void)m;
+    if (a->kind != GCOLOR_VECTOR || b->kind != GCOLOR_VECTOR)
+        return G_ERR_UNSUPPORTED;
+    for (int i = 0; i < BIG_N; i++)
+        out->v[i] = b->v[i] != 0.0f ? a->v[i] / b->v[i] : 0.0f;
+    out->kind = GCOLOR_VECTOR;
+    return G_OK;
+}
+
+static int big_pow(const GColorModel *m, GColor *out, const GColor *a, double e)
+{
+    (void)m;
+    if (a->kind != GCOLOR_VECTOR)
+        return G_ERR_UNSUPPORTED;
+    for (int i = 0; i < BIG_N; i++)
+        out->v[i] = a->v[i] > 0.0f ? (float)pow(a->v[i], e) : (e == 0.0 ? 1.0f : 0.0f);
+    out->kind = GCOLOR_VECTOR;
+    return G_OK;
+}
+
+/* mean magnitude; a matrix: of its response to equal-energy light */
+static double big_brightness(const GColorModel *m, const GColor *a)
+{
+    (void)m;
+    double s = 0.0;
+    for (int i = 0; i < floats_of(a); i++)
+        s += fabs(a->v[i]);
+    return s / BIG_N;
+}
+
+static int big_to_nm(const GColorModel *m, const GColor *a, GColorRole role, GSpectrumNM *out)
+{
+    (void)role;
+    float grey = (float)big_brightness(m, a);
+    for (int i = 0; i < GNM_COUNT; i++)
+        out->v[i] = grey;
+    return G_OK;
+}
+
+static int big_from_nm(const GColorModel *m, const GSpectrumNM *in, GColorRole role, GColor *out)
+{
+    (void)m;
+    (void)role;
+    double s = 0.0;
+    for (int i = 0; i < GNM_COUNT; i++)
+        s += in->v[i];
+    for (int i = 0; i < BIG_N; i++)
+        out->v[i] = (float)(s / GNM_COUNT);
+    out->kind = GCOLOR_VECTOR;
+    return G_OK;
+}
+
+static const GColorModelClass big_class = {
+    .abi_version = GCOLOR_ABI_VERSION,
+    .name = "big",
+    .description = "test fixture: 160 samples, 160 x 160 matrices, no axpy of its own",
+    .init = big_init,
+    .black = big_black,
+    .add = big_add,
+    .mul = big_mul,
+    .scale = big_scale,
+    .div = big_div,
+    .pow = big_pow,
+    .brightness = big_brightness,
+    .to_nm = big_to_nm,
+    .from_nm = big_from_nm,
+};
+
+static float big_entry(int o, int i) { return 0.001f * (float)((o * 13 + i * 5) % 97); }
+static float big_entry2(int o, int i) { return 0.5f - 0.0001f * (float)((o + 3 * i) % 401); }
+
+static void big_matrix(GColor *c, float (*f)(int, int))
+{
+    for (int o = 0; o < BIG_N; o++)
+        for (int i = 0; i < BIG_N; i++)
+            c->v[o * BIG_N + i] = f(o, i);
+    c->kind = GCOLOR_MATRIX;
+}
+
+/* add_scaled and axpy on the big model's matrices and vectors, checked entry by entry; 0 on success */
+static int big_round(const GColorModel *m, GScratch *s)
+{
+    GScratchMark mark = gscratch_mark(s);
+    GColor A, M, v, o;
+    int rc = gcolor_scratch(&A, m, s) | gcolor_scratch(&M, m, s) | gcolor_scratch(&v, m, s) |
+             gcolor_scratch(&o, m, s);
+    double worst = 0.0;
+    if (rc == G_OK) {
+        const double sc = -0.35;
+        big_matrix(&A, big_entry);
+        big_matrix(&M, big_entry2);
+        rc |= gcolor_add_scaled(&M, &A, sc); /* M += sc A: the composed default through its temporary */
+        for (int o2 = 0; o2 < BIG_N; o2++)
+            for (int i = 0; i < BIG_N; i++)
+                worst = fmax(worst, fabs(M.v[o2 * BIG_N + i] - (big_entry2(o2, i) + sc * big_entry(o2, i))));
+        for (int i = 0; i < BIG_N; i++)
+            v.v[i] = sample_a(i, BIG_N);
+        v.kind = GCOLOR_VECTOR;
+        rc |= gcolor_add_scaled(&v, &A, 2.0); /* a vector's storage becomes diag(v) + 2 A */
+        rc |= gcolor_axpy(&o, 2.0, &A, &M);   /* out aliases neither: scale, then add */
+        for (int o2 = 0; o2 < BIG_N; o2++)
+            for (int i = 0; i < BIG_N; i++) {
+                double d = o2 == i ? sample_a(i, BIG_N) : 0.0, a = big_entry(o2, i);
+                worst = fmax(worst, fabs(v.v[o2 * BIG_N + i] - (d + 2.0 * a)));
+                worst = fmax(worst, fabs(o.v[o2 * BIG_N + i] - (2.0 * a + M.v[o2 * BIG_N + i])));
+            }
+        if (v.kind != GCOLOR_MATRIX || o.kind != GCOLOR_MATRIX)
+            rc = G_ERR_INVALID;
+    }
+    gscratch_release(s, mark);
+    return rc != G_OK || worst > 1e-6;
+}
+
+static void test_add_scaled_beyond_builtin_capacity(void **state)
+{
+    (void)state;
+    GColorModel *m;
+    GError err;
+    assert_int_equal(gcolormodel_create_class(&big_class, NULL, &m, &err), G_OK);
+    assert_true(m->capacity > 128 * 128);
+    GScratch *s = gscratch_create(4 * (size_t)m->capacity * sizeof(float) + 1024);
+    assert_non_null(s);
+    assert_int_equal(big_round(m, s), 0); /* the first use may set up the library's temporary */
+    static TuCounter counter;
+    tu_count_install(&counter, -1);
+    int bad = 0;
+    for (int i = 0; i < 20; i++)
+        bad |= big_round(m, s);
+    gmem_set_allocator(NULL);
+    assert_int_equal(bad, 0);
+    print_message("capacity %d floats: add_scaled and axpy exact, %ld allocations in 20 rounds after the first\n",
+                  m->capacity, counter.allocs);
+    assert_int_equal(counter.allocs, 0);
+    /* the defaults of the other slots: exp refuses a matrix it cannot read, fill gives the vector */
+    GColor a, o;
+    assert_int_equal(gcolor_scratch(&a, m, s), G_OK);
+    assert_int_equal(gcolor_scratch(&o, m, s), G_OK);
+    big_matrix(&a, big_entry);
+    assert_int_equal(gcolor_exp(&o, &a, -1.0), G_ERR_UNSUPPORTED);
+    assert_int_equal(gcolor_fill(&a, 0.5), G_OK);
+    assert_int_equal(a.kind, GCOLOR_VECTOR);
+    assert_near(gcolor_brightness(&a), 0.5, 1e-6);
+    assert_int_equal(gcolor_exp(&o, &a, -2.0), G_OK);
+    assert_near(o.v[BIG_N - 1], exp(-1.0), 1e-7);
+    gscratch_destroy(s);
+    gcolormodel_destroy(m);
+}
+
+/* The library's temporary is per thread and is freed when the thread ends (LeakSanitizer would report it). */
+static void *big_in_thread(void *model)
+{
+    GScratch *s = gscratch_create(0);
+    int bad = s ? big_round(model, s) : 1;
+    gscratch_destroy(s);
+    return bad ? model : NULL;
+}
+
+static void test_add_scaled_in_other_threads(void **state)
+{
+    (void)state;
+    GColorModel *m;
+    GError err;
+    assert_int_equal(gcolormodel_create_class(&big_class, NULL, &m, &err), G_OK);
+    pthread_t t[2];
+    for (int i = 0; i < 2; i++)
+        assert_int_equal(pthread_create(&t[i], NULL, big_in_thread, m), 0);
+    for (int i = 0; i < 2; i++) {
+        void *res = m;
+        assert_int_equal(pthread_join(t[i], &res), 0);
+        assert_null(res);
+    }
+    gcolormodel_destroy(m);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_free_is_harmless_for_arena_and_caller),
+        cmocka_unit_test(test_wrap_refuses_short_buffer),
+        cmocka_unit_test(test_fill_exp_axpy_vectors),
+        cmocka_unit_test(test_fill_exp_axpy_matrices),
+        cmocka_unit_test(test_add_scaled_beyond_builtin_capacity),
+        cmocka_unit_test(test_add_scaled_in_other_threads),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
