@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "generic/builtins.h"
 #include "generic/color.h"
 #include "generic/registry.h"
 #include "test_util.h"
@@ -649,6 +650,8 @@ static void test_add_scaled_in_other_threads(void **state)
 
 int main(void)
 {
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_free_is_harmless_for_arena_and_caller),
         cmocka_unit_test(test_wrap_refuses_short_buffer),
