@@ -1,6 +1,6 @@
 // texture_oiio.cpp - OpenImageIO's TextureSystem behind a C interface: reference-counted texture systems
 // (one per scene, or the shared default), opening files, and filtered lookups with per-thread state.
-#include "texture_oiio.h"
+#include "generic/texsys.h"
 #include "generic/image.h"
 #include "generic/memory.h"
 

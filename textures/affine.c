@@ -1,5 +1,5 @@
 /* affine.c - 2D and 3D affine maps for transform nodes and CSG/CPG trees. */
-#include "generic/textures.h"
+#include "generic/affine.h"
 
 #include <math.h>
 

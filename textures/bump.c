@@ -1,10 +1,14 @@
 /* bump.c - the bump node: Blinn's (1978) perturbation of the normal by the gradient of a height field
- * along the surface tangents; every other method is the child's. */
-#include "generic/plugin.h"
-#include "node_common.h"
-#include "textures_builtin.h"
+ * along the surface tangents; every other method is the child's:
+ *
+ *   node NAME bump { child MATERIAL  height GENERATOR  strength 1 }
+ */
+#include <generic/node_kit.h>
+#include <generic/plugin.h>
+#include <generic/texture_parse.h>
 
 #include <math.h>
+#include <string.h>
 
 typedef struct Bump {
     GTexChild node; /* base and child; first */
@@ -59,7 +63,7 @@ static int bump_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
     return G_OK;
 }
 
-const GMaterialClass gnode_bump_class = {
+static const GMaterialClass bump_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "bump",
     .description = "normal perturbed by the gradient of a height field (Blinn)",
@@ -87,15 +91,43 @@ int gnode_bump_create(GMaterial *child, GGenerator *height, double strength, GMa
     if (!isfinite(strength))
         return gerror_set(err, G_ERR_INVALID, "bump: strength must be finite, got %g", strength);
     GMaterial *mat;
-    rc = gmat_new(&gnode_bump_class, model, sizeof(Bump), &mat, err);
+    rc = gtexchild_new(&bump_class, child, height, 1, sizeof(Bump), &mat, err);
     if (rc != G_OK)
         return rc;
     Bump *b = (Bump *)mat;
-    b->node.child = gmaterial_ref(child);
     b->height = ggenerator_ref(height);
     b->strength = strength;
     *out = &b->node.base;
     return G_OK;
 }
 
-GENERIC_TYPE(bump, GKIND_NODE, &gnode_bump_class, gtexparse_bump, NULL);
+static int parse_bump(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    GMaterial *child = NULL;
+    GGenerator *h = NULL;
+    double strength = 1.0;
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        if (strcmp(key, "child") == 0)
+            rc = greader_material(r, &child, err);
+        else if (strcmp(key, "height") == 0)
+            rc = gtexparse_generator(r, &h, err);
+        else if (strcmp(key, "strength") == 0)
+            rc = greader_number(r, &strength, err);
+        else
+            rc = greader_unknown_param(r, "child, height, strength", err);
+        if (rc < 0)
+            return rc;
+    }
+    if (rc < 0)
+        return rc;
+    if (!child || !h)
+        return greader_error(r, err, "bump: needs child and height");
+    GMaterial *m = NULL;
+    rc = gnode_bump_create(child, h, strength, &m, err);
+    return gtexparse_finish(r, rc, m, object, err);
+}
+
+GENERIC_TYPE(bump, GKIND_NODE, &bump_class, parse_bump, NULL);

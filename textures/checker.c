@@ -1,9 +1,13 @@
-/* checker.c - the checker generator in (u, v) or in object space, box-filtered over the footprint. */
-#include "generic/plugin.h"
-#include "generic/textures.h"
-#include "textures_builtin.h"
+/* checker.c - the checker generator in (u, v) or in object space, box-filtered over the footprint:
+ *
+ *   generator NAME checker { dims 2|3  frequency F }
+ */
+#include <generic/generators.h>
+#include <generic/plugin.h>
+#include <generic/texture_parse.h>
 
 #include <math.h>
+#include <string.h>
 
 typedef struct Checker {
     GGenerator base;
@@ -45,7 +49,7 @@ static double checker_value(const GGenerator *self, GSurfPoint *sp)
     return xor2(xor2(filtered(p.x * f, w), filtered(p.y * f, w)), filtered(p.z * f, w));
 }
 
-const GGeneratorClass ggen_checker_class = {
+static const GGeneratorClass checker_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "checker",
     .description = "checkerboard 0/1 in (u, v) (dims 2) or object space (dims 3), box-filtered",
@@ -62,7 +66,7 @@ int ggen_checker_create(int dims, double frequency, GGenerator **out, GError *er
         return gerror_set(err, G_ERR_INVALID, "checker: frequency must be positive and finite, got %g", frequency);
     GGenerator *gen;
     GGeneratorSpace space = dims == 2 ? GGENERATOR_SPACE_UV : GGENERATOR_SPACE_OBJECT;
-    int rc = gtexgen_new(&ggen_checker_class, space, sizeof(Checker), &gen, err);
+    int rc = gtexgen_new(&checker_class, space, sizeof(Checker), &gen, err);
     if (rc != G_OK)
         return rc;
     Checker *c = (Checker *)gen;
@@ -72,4 +76,28 @@ int ggen_checker_create(int dims, double frequency, GGenerator **out, GError *er
     return G_OK;
 }
 
-GENERIC_TYPE(checker, GKIND_GENERATOR, &ggen_checker_class, gtexparse_checker, ggenerator_release);
+static int parse_checker(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    long dims = 2;
+    double f = 1.0;
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        if (strcmp(key, "dims") == 0)
+            rc = greader_int(r, 2, 3, &dims, err);
+        else if (strcmp(key, "frequency") == 0)
+            rc = greader_number_in(r, 1e-9, 1e9, &f, err);
+        else
+            rc = greader_unknown_param(r, "dims, frequency", err);
+        if (rc < 0)
+            return rc;
+    }
+    if (rc < 0)
+        return rc;
+    GGenerator *g = NULL;
+    rc = ggen_checker_create((int)dims, f, &g, err);
+    return gtexparse_finish(r, rc, g, object, err);
+}
+
+GENERIC_TYPE(checker, GKIND_GENERATOR, &checker_class, parse_checker, ggenerator_release);

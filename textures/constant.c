@@ -1,9 +1,10 @@
-/* constant.c - the constant generator. */
-#include "generic/plugin.h"
-#include "generic/textures.h"
-#include "textures_builtin.h"
+/* constant.c - the constant generator:  generator NAME constant { value V } */
+#include <generic/generators.h>
+#include <generic/plugin.h>
+#include <generic/texture_parse.h>
 
 #include <math.h>
+#include <string.h>
 
 typedef struct Constant {
     GGenerator base;
@@ -24,7 +25,7 @@ static int constant_gradient(const GGenerator *self, GSurfPoint *sp, GVec3 *grad
     return G_OK;
 }
 
-const GGeneratorClass ggen_constant_class = {
+static const GGeneratorClass constant_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "constant",
     .description = "the same value everywhere",
@@ -39,7 +40,7 @@ int ggen_constant_create(double value, GGenerator **out, GError *err)
     if (!isfinite(value))
         return gerror_set(err, G_ERR_INVALID, "constant: value must be finite, got %g", value);
     GGenerator *gen;
-    int rc = gtexgen_new(&ggen_constant_class, GGENERATOR_SPACE_NONE, sizeof(Constant), &gen, err);
+    int rc = gtexgen_new(&constant_class, GGENERATOR_SPACE_NONE, sizeof(Constant), &gen, err);
     if (rc != G_OK)
         return rc;
     Constant *c = (Constant *)gen;
@@ -48,4 +49,22 @@ int ggen_constant_create(double value, GGenerator **out, GError *err)
     return G_OK;
 }
 
-GENERIC_TYPE(constant, GKIND_GENERATOR, &ggen_constant_class, gtexparse_constant, ggenerator_release);
+static int parse_constant(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    double v = 0.0;
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        rc = strcmp(key, "value") == 0 ? greader_number(r, &v, err) : greader_unknown_param(r, "value", err);
+        if (rc < 0)
+            return rc;
+    }
+    if (rc < 0)
+        return rc;
+    GGenerator *g = NULL;
+    rc = ggen_constant_create(v, &g, err);
+    return gtexparse_finish(r, rc, g, object, err);
+}
+
+GENERIC_TYPE(constant, GKIND_GENERATOR, &constant_class, parse_constant, ggenerator_release);

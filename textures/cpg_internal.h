@@ -1,9 +1,10 @@
-/* cpg_internal.h - closed contours of rational Bézier segments shared by textures/cpg.c and
+/* cpg_internal.h - closed contours of rational Bézier segments shared by textures/cpg_shape.c and
  * textures/cpg_path.c. Internal. */
 #ifndef GENERIC_TEXTURES_CPG_INTERNAL_H
 #define GENERIC_TEXTURES_CPG_INTERNAL_H
 
-#include "generic/textures.h"
+#include "generic/memory.h"
+#include "generic/shapes.h"
 
 /** A rational Bézier segment in homogeneous form: control point i is (hx[i], hy[i]) / hw[i], hw[i] > 0. */
 typedef struct GCpgSeg {

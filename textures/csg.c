@@ -1,172 +1,18 @@
-/* csg.c - CSG trees of solids (sphere, box, cylinder, cone, half-space) with boolean operations and
- * affine transforms, and the csg generator: 1 inside, 0 outside. */
-#include "generic/plugin.h"
-#include "generic/textures.h"
-#include "textures_builtin.h"
+/* csg.c - the csg generator: 1 inside a CSG solid (generic/shapes.h), 0 outside, at the point in object or
+ * world space:
+ *
+ *   generator NAME csg { space object|world  shape SOLID }
+ *   SOLID := sphere R | box X0 Y0 Z0 X1 Y1 Z1 | cylinder R Z0 Z1 | cone R0 Z0 R1 Z1 | halfspace NX NY NZ D
+ *          | union { SOLID ... } | intersection { SOLID ... } | difference { SOLID SOLID ... }
+ *          | transform { translate X Y Z  rotate AXIS DEG  scale S ... } SOLID
+ * (vectors may also be written <x, y, z>). Several solids in an operation combine from the left:
+ * difference { a b c } is a minus b minus c. */
+#include <generic/generators.h>
+#include <generic/plugin.h>
+#include <generic/shapes.h>
+#include <generic/texture_parse.h>
 
-#include <math.h>
-
-enum { SPHERE, BOX, CYLINDER, CONE, HALFSPACE, COMBINE };
-
-struct GCsgShape {
-    int type;
-    int op;         /* GShapeOp of COMBINE */
-    int moved;      /* inv is not the identity */
-    GAffine3 inv;   /* parent coordinates -> the shape's own */
-    double r0, r1, z0, z1, offset;
-    GVec3 lo, hi, normal;
-    GCsgShape *a, *b;
-};
-
-static int finite3(GVec3 v) { return isfinite(v.x) && isfinite(v.y) && isfinite(v.z); }
-
-static int make(int type, GCsgShape **out, GError *err)
-{
-    *out = gmem_calloc(1, sizeof **out);
-    if (!*out)
-        return gerror_set(err, G_ERR_NOMEM, "csg: out of memory");
-    (*out)->type = type;
-    (*out)->inv = gaffine3_identity();
-    return G_OK;
-}
-
-int gcsg_sphere(double radius, GCsgShape **out, GError *err)
-{
-    *out = NULL;
-    if (!(radius > 0.0) || !isfinite(radius))
-        return gerror_set(err, G_ERR_INVALID, "csg sphere: radius must be positive and finite, got %g", radius);
-    int rc = make(SPHERE, out, err);
-    if (rc == G_OK)
-        (*out)->r0 = radius;
-    return rc;
-}
-
-int gcsg_box(GVec3 lo, GVec3 hi, GCsgShape **out, GError *err)
-{
-    *out = NULL;
-    if (!finite3(lo) || !finite3(hi) || !(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
-        return gerror_set(err, G_ERR_INVALID, "csg box: needs finite corners with lo < hi on every axis");
-    int rc = make(BOX, out, err);
-    if (rc == G_OK) {
-        (*out)->lo = lo;
-        (*out)->hi = hi;
-    }
-    return rc;
-}
-
-int gcsg_cylinder(double radius, double z0, double z1, GCsgShape **out, GError *err)
-{
-    *out = NULL;
-    if (!(radius > 0.0) || !isfinite(radius))
-        return gerror_set(err, G_ERR_INVALID, "csg cylinder: radius must be positive and finite, got %g", radius);
-    if (!isfinite(z0) || !isfinite(z1) || !(z0 < z1))
-        return gerror_set(err, G_ERR_INVALID, "csg cylinder: needs z0 < z1, got %g and %g", z0, z1);
-    int rc = make(CYLINDER, out, err);
-    if (rc == G_OK) {
-        (*out)->r0 = radius;
-        (*out)->z0 = z0;
-        (*out)->z1 = z1;
-    }
-    return rc;
-}
-
-int gcsg_cone(double r0, double z0, double r1, double z1, GCsgShape **out, GError *err)
-{
-    *out = NULL;
-    if (!isfinite(r0) || !isfinite(r1) || r0 < 0.0 || r1 < 0.0 || (r0 == 0.0 && r1 == 0.0))
-        return gerror_set(err, G_ERR_INVALID, "csg cone: radii must be >= 0 and not both 0, got %g and %g", r0, r1);
-    if (!isfinite(z0) || !isfinite(z1) || !(z0 < z1))
-        return gerror_set(err, G_ERR_INVALID, "csg cone: needs z0 < z1, got %g and %g", z0, z1);
-    int rc = make(CONE, out, err);
-    if (rc == G_OK) {
-        (*out)->r0 = r0;
-        (*out)->r1 = r1;
-        (*out)->z0 = z0;
-        (*out)->z1 = z1;
-    }
-    return rc;
-}
-
-int gcsg_halfspace(GVec3 normal, double offset, GCsgShape **out, GError *err)
-{
-    *out = NULL;
-    if (!finite3(normal) || gvec3_length(normal) == 0.0 || !isfinite(offset))
-        return gerror_set(err, G_ERR_INVALID, "csg half-space: needs a finite non-zero normal and a finite offset");
-    int rc = make(HALFSPACE, out, err);
-    if (rc == G_OK) {
-        (*out)->normal = normal;
-        (*out)->offset = offset;
-    }
-    return rc;
-}
-
-int gcsg_combine(GShapeOp op, GCsgShape *a, GCsgShape *b, GCsgShape **out, GError *err)
-{
-    *out = NULL;
-    int rc = G_OK;
-    if ((unsigned)op > GSHAPE_DIFFERENCE)
-        rc = gerror_set(err, G_ERR_INVALID, "csg: unknown operation %d", (int)op);
-    else if (!a || !b)
-        rc = gerror_set(err, G_ERR_INVALID, "csg: an operation needs two shapes");
-    else
-        rc = make(COMBINE, out, err);
-    if (rc != G_OK) {
-        gcsg_destroy(a);
-        gcsg_destroy(b);
-        return rc;
-    }
-    (*out)->op = (int)op;
-    (*out)->a = a;
-    (*out)->b = b;
-    return G_OK;
-}
-
-int gcsg_transform(GCsgShape *s, const GAffine3 *m, GError *err)
-{
-    GAffine3 inv;
-    if (gaffine3_invert(m, &inv, NULL) != G_OK)
-        return gerror_set(err, G_ERR_INVALID, "csg: transform is singular or not finite");
-    s->inv = gaffine3_mul(&s->inv, &inv);
-    s->moved = 1;
-    return G_OK;
-}
-
-int gcsg_inside(const GCsgShape *s, GVec3 p)
-{
-    if (s->moved)
-        p = gaffine3_apply(&s->inv, p);
-    switch (s->type) {
-    case SPHERE: return gvec3_dot(p, p) <= s->r0 * s->r0;
-    case BOX:
-        return p.x >= s->lo.x && p.x <= s->hi.x && p.y >= s->lo.y && p.y <= s->hi.y && p.z >= s->lo.z &&
-               p.z <= s->hi.z;
-    case CYLINDER: return p.z >= s->z0 && p.z <= s->z1 && p.x * p.x + p.y * p.y <= s->r0 * s->r0;
-    case CONE: {
-        if (p.z < s->z0 || p.z > s->z1)
-            return 0;
-        double r = s->r0 + (s->r1 - s->r0) * (p.z - s->z0) / (s->z1 - s->z0);
-        return p.x * p.x + p.y * p.y <= r * r;
-    }
-    case HALFSPACE: return gvec3_dot(s->normal, p) <= s->offset;
-    default:
-        switch (s->op) {
-        case GSHAPE_UNION: return gcsg_inside(s->a, p) || gcsg_inside(s->b, p);
-        case GSHAPE_INTERSECTION: return gcsg_inside(s->a, p) && gcsg_inside(s->b, p);
-        default: return gcsg_inside(s->a, p) && !gcsg_inside(s->b, p);
-        }
-    }
-}
-
-void gcsg_destroy(GCsgShape *s)
-{
-    if (!s)
-        return;
-    gcsg_destroy(s->a);
-    gcsg_destroy(s->b);
-    gmem_free(s);
-}
-
-/* ---- the generator ---- */
+#include <string.h>
 
 typedef struct Csg {
     GGenerator base;
@@ -185,7 +31,7 @@ static double csg_value(const GGenerator *self, GSurfPoint *sp)
     return gcsg_inside(((const Csg *)self)->root, p) ? 1.0 : 0.0;
 }
 
-const GGeneratorClass ggen_csg_class = {
+static const GGeneratorClass csg_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "csg",
     .description = "1 inside a CSG solid, 0 outside",
@@ -205,7 +51,7 @@ int ggen_csg_create(GCsgShape *root, GGeneratorSpace space, GGenerator **out, GE
     GGenerator *gen;
     if (space != GGENERATOR_SPACE_WORLD)
         space = GGENERATOR_SPACE_OBJECT;
-    int rc = gtexgen_new(&ggen_csg_class, space, sizeof(Csg), &gen, err);
+    int rc = gtexgen_new(&csg_class, space, sizeof(Csg), &gen, err);
     if (rc != G_OK) {
         gcsg_destroy(root);
         return rc;
@@ -216,4 +62,118 @@ int ggen_csg_create(GCsgShape *root, GGeneratorSpace space, GGenerator **out, GE
     return G_OK;
 }
 
-GENERIC_TYPE(csg, GKIND_GENERATOR, &ggen_csg_class, gtexparse_csg, ggenerator_release);
+/* ---- text ---- */
+
+enum { MAX_SHAPE_DEPTH = 64 };
+
+static const char *const op_names[] = {"union", "intersection", "difference", NULL};
+
+/* Places a constructor's message at the last token read. */
+static int located(GReader *r, int rc, GError *err) { return rc == G_OK ? G_OK : greader_locate(r, err); }
+
+static int solid(GReader *r, int depth, GCsgShape **out, GError *err);
+
+static int solid_list(GReader *r, int depth, GShapeOp op, GCsgShape **out, GError *err)
+{
+    int rc = greader_block_begin(r, err);
+    GCsgShape *acc = NULL;
+    while (rc == G_OK && (rc = greader_block_end(r, err)) == 0) {
+        GCsgShape *s;
+        rc = solid(r, depth + 1, &s, err);
+        if (rc == G_OK && acc)
+            rc = located(r, gcsg_combine(op, acc, s, &acc, err), err);
+        else if (rc == G_OK)
+            acc = s;
+    }
+    if (rc < 0) {
+        gcsg_destroy(acc);
+        return rc;
+    }
+    if (!acc)
+        return greader_error(r, err, "csg %s: no shapes given", op_names[op]);
+    *out = acc;
+    return G_OK;
+}
+
+static int solid(GReader *r, int depth, GCsgShape **out, GError *err)
+{
+    static const char *const kinds[] = {"sphere",    "box",   "cylinder",     "cone",       "halfspace",
+                                        "transform", "union", "intersection", "difference", NULL};
+    *out = NULL;
+    if (depth > MAX_SHAPE_DEPTH)
+        return greader_error(r, err, "csg: shapes nested more than %d deep", MAX_SHAPE_DEPTH);
+    int k, rc = greader_choice(r, kinds, &k, err);
+    if (rc != G_OK)
+        return rc;
+    double a[4] = {0, 0, 0, 0};
+    GVec3 p, q;
+    switch (k) {
+    case 0:
+        rc = greader_number(r, &a[0], err);
+        return rc ? rc : located(r, gcsg_sphere(a[0], out, err), err);
+    case 1:
+        rc = greader_vec3(r, &p, err);
+        if (rc == G_OK)
+            rc = greader_vec3(r, &q, err);
+        return rc ? rc : located(r, gcsg_box(p, q, out, err), err);
+    case 2:
+    case 3:
+        for (int i = 0; i < (k == 2 ? 3 : 4) && rc == G_OK; i++)
+            rc = greader_number(r, &a[i], err);
+        if (rc != G_OK)
+            return rc;
+        return located(r, k == 2 ? gcsg_cylinder(a[0], a[1], a[2], out, err) : gcsg_cone(a[0], a[1], a[2], a[3], out, err),
+                       err);
+    case 4:
+        rc = greader_vec3(r, &p, err);
+        if (rc == G_OK)
+            rc = greader_number(r, &a[0], err);
+        return rc ? rc : located(r, gcsg_halfspace(p, a[0], out, err), err);
+    case 5: {
+        GAffine3 m;
+        rc = gtexparse_xyz_steps(r, &m, err);
+        if (rc == G_OK)
+            rc = solid(r, depth + 1, out, err);
+        if (rc == G_OK && (rc = located(r, gcsg_transform(*out, &m, err), err)) != G_OK) {
+            gcsg_destroy(*out);
+            *out = NULL;
+        }
+        return rc;
+    }
+    default: return solid_list(r, depth, (GShapeOp)(k - 6), out, err);
+    }
+}
+
+static int parse_csg(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    static const char *const space_names[] = {"object", "world", NULL};
+    GCsgShape *root = NULL;
+    int space = 0;
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        if (strcmp(key, "shape") == 0 && !root)
+            rc = solid(r, 0, &root, err);
+        else if (strcmp(key, "space") == 0)
+            rc = greader_choice(r, space_names, &space, err);
+        else
+            rc = greader_unknown_param(r, "space, shape", err);
+        if (rc < 0)
+            break;
+    }
+    if (rc == 0 && !root)
+        rc = greader_error(r, err, "csg: needs a shape");
+    if (rc < 0) {
+        gcsg_destroy(root);
+        return rc;
+    }
+    GGenerator *g = NULL;
+    rc = ggen_csg_create(root, space ? GGENERATOR_SPACE_WORLD : GGENERATOR_SPACE_OBJECT, &g, err);
+    if (rc != G_OK)
+        return greader_locate(r, err);
+    *object = g;
+    return G_OK;
+}
+
+GENERIC_TYPE(csg, GKIND_GENERATOR, &csg_class, parse_csg, ggenerator_release);

@@ -1,9 +1,13 @@
-/* gradient.c - the linear field generator: offset + slope . c; a height field for bump nodes or a ramp. */
-#include "generic/plugin.h"
-#include "generic/textures.h"
-#include "textures_builtin.h"
+/* gradient.c - the linear field generator: offset + slope . c; a height field for bump nodes or a ramp:
+ *
+ *   generator NAME gradient { space uv|object|world  slope X Y Z  offset O }
+ */
+#include <generic/generators.h>
+#include <generic/plugin.h>
+#include <generic/texture_parse.h>
 
 #include <math.h>
+#include <string.h>
 
 typedef struct Field {
     GGenerator base;
@@ -11,19 +15,10 @@ typedef struct Field {
     double offset;
 } Field;
 
-static GVec3 coords(const GGenerator *g, const GSurfPoint *sp)
-{
-    switch (g->space) {
-    case GGENERATOR_SPACE_UV: return gvec3(sp->u, sp->v, 0.0);
-    case GGENERATOR_SPACE_WORLD: return sp->point;
-    default: return sp->object_point;
-    }
-}
-
 static double field_value(const GGenerator *self, GSurfPoint *sp)
 {
     const Field *f = (const Field *)self;
-    return f->offset + gvec3_dot(f->slope, coords(self, sp));
+    return f->offset + gvec3_dot(f->slope, ggenerator_coords(self, sp));
 }
 
 static int field_gradient(const GGenerator *self, GSurfPoint *sp, GVec3 *grad)
@@ -34,7 +29,7 @@ static int field_gradient(const GGenerator *self, GSurfPoint *sp, GVec3 *grad)
     return G_OK;
 }
 
-const GGeneratorClass ggen_gradient_class = {
+static const GGeneratorClass gradient_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "gradient",
     .description = "linear field offset + slope . (u, v) or the point (height field or ramp)",
@@ -51,7 +46,7 @@ int ggen_gradient_create(GGeneratorSpace space, GVec3 slope, double offset, GGen
     if (space == GGENERATOR_SPACE_NONE)
         space = GGENERATOR_SPACE_OBJECT;
     GGenerator *gen;
-    int rc = gtexgen_new(&ggen_gradient_class, space, sizeof(Field), &gen, err);
+    int rc = gtexgen_new(&gradient_class, space, sizeof(Field), &gen, err);
     if (rc != G_OK)
         return rc;
     Field *f = (Field *)gen;
@@ -61,4 +56,31 @@ int ggen_gradient_create(GGeneratorSpace space, GVec3 slope, double offset, GGen
     return G_OK;
 }
 
-GENERIC_TYPE(gradient, GKIND_GENERATOR, &ggen_gradient_class, gtexparse_gradient, ggenerator_release);
+static int parse_gradient(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    GGeneratorSpace space = GGENERATOR_SPACE_UV;
+    GVec3 slope = gvec3(1, 0, 0);
+    double offset = 0.0;
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        if (strcmp(key, "space") == 0)
+            rc = gtexparse_space(r, &space, err);
+        else if (strcmp(key, "slope") == 0)
+            rc = greader_vec3(r, &slope, err);
+        else if (strcmp(key, "offset") == 0)
+            rc = greader_number(r, &offset, err);
+        else
+            rc = greader_unknown_param(r, "space, slope, offset", err);
+        if (rc < 0)
+            return rc;
+    }
+    if (rc < 0)
+        return rc;
+    GGenerator *g = NULL;
+    rc = ggen_gradient_create(space, slope, offset, &g, err);
+    return gtexparse_finish(r, rc, g, object, err);
+}
+
+GENERIC_TYPE(gradient, GKIND_GENERATOR, &gradient_class, parse_gradient, ggenerator_release);

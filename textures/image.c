@@ -1,11 +1,15 @@
 /* image.c - the image node: the child's light-carrying colour results times the colour of an image at
  * (u, v), looked up through OpenImageIO's TextureSystem (lib/texture_oiio.cpp) with trilinear MIP-mapping
- * over the surface point's footprint. */
-#include "generic/plugin.h"
-#include "node_common.h"
-#include "textures_builtin.h"
-#include "texture_oiio.h"
-#include "generic/image.h"
+ * over the surface point's footprint:
+ *
+ *   node NAME image { child MATERIAL  file "name.png"  wrap periodic|clamp|black|mirror
+ *                     swrap ...  twrap ...  colorspace auto|srgb|linear  blur 0 }
+ */
+#include <generic/image.h>
+#include <generic/node_kit.h>
+#include <generic/plugin.h>
+#include <generic/texsys.h>
+#include <generic/texture_parse.h>
 
 #include <math.h>
 #include <string.h>
@@ -119,7 +123,7 @@ static int image_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
     return rc != G_OK ? rc : apply(self, sp, result);
 }
 
-const GMaterialClass gnode_image_class = {
+static const GMaterialClass image_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "image",
     .description = "the child's reflected and emitted light times an image's colour at (u, v)",
@@ -157,11 +161,10 @@ int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptio
     if (!(o.blur >= 0.0) || !isfinite(o.blur))
         return gerror_set(err, G_ERR_INVALID, "image '%s': blur must be >= 0, got %g", path, o.blur);
     GMaterial *mat;
-    rc = gmat_new(&gnode_image_class, model, sizeof(Image), &mat, err);
+    rc = gtexchild_new(&image_class, child, NULL, 0, sizeof(Image), &mat, err);
     if (rc != G_OK)
         return rc;
     Image *im = (Image *)mat;
-    im->node.child = gmaterial_ref(child);
     im->swrap = o.swrap;
     im->twrap = o.twrap;
     im->blur = o.blur;
@@ -192,4 +195,59 @@ int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptio
     return G_OK;
 }
 
-GENERIC_TYPE(image, GKIND_NODE, &gnode_image_class, gtexparse_image, NULL);
+static const char *const wrap_names[] = {"periodic", "clamp", "black", "mirror", NULL};
+static const char *const space_names[] = {"auto", "srgb", "linear", NULL};
+
+static int parse_image(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    GMaterial *child = NULL;
+    char *path = NULL;
+    GImageNodeOptions o;
+    memset(&o, 0, sizeof o);
+    int w, file_line = 0, file_col = 0;
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        if (strcmp(key, "child") == 0)
+            rc = greader_material(r, &child, err);
+        else if (strcmp(key, "file") == 0) {
+            rc = greader_path(r, &path, err);
+            greader_position(r, &file_line, &file_col);
+        } else if (strcmp(key, "wrap") == 0) {
+            rc = greader_choice(r, wrap_names, &w, err);
+            o.swrap = o.twrap = (GTexWrap)w;
+        } else if (strcmp(key, "swrap") == 0) {
+            rc = greader_choice(r, wrap_names, &w, err);
+            o.swrap = (GTexWrap)w;
+        } else if (strcmp(key, "twrap") == 0) {
+            rc = greader_choice(r, wrap_names, &w, err);
+            o.twrap = (GTexWrap)w;
+        } else if (strcmp(key, "colorspace") == 0) {
+            rc = greader_choice(r, space_names, &w, err);
+            o.colorspace = (GTexColorSpace)w;
+        } else if (strcmp(key, "blur") == 0)
+            rc = greader_number_in(r, 0.0, 1.0, &o.blur, err);
+        else
+            rc = greader_unknown_param(r, "child, file, wrap, swrap, twrap, colorspace, blur", err);
+        if (rc < 0)
+            break;
+    }
+    if (rc == 0 && (!child || !path))
+        rc = greader_error(r, err, "image: needs child and file");
+    if (rc == 0) {
+        GMaterial *m = NULL;
+        rc = gnode_image_create(child, path, &o, &m, err);
+        if (rc != G_OK) { /* a file that cannot be read is reported at its name */
+            char msg[sizeof err->message];
+            strcpy(msg, err->message);
+            rc = greader_error_at(r, err, rc, file_line, file_col, "%s", msg);
+        } else {
+            *object = m;
+        }
+    }
+    gmem_free(path);
+    return rc;
+}
+
+GENERIC_TYPE(image, GKIND_NODE, &image_class, parse_image, NULL);

@@ -1,8 +1,16 @@
-/* interpolate.c - the interpolate node (two children blended by a generator) and, sharing every method,
- * the interpolate-one node (one method blended, the rest from the first child). */
-#include "generic/plugin.h"
-#include "node_common.h"
-#include "textures_builtin.h"
+/* interpolate.c - the interpolate node (two children blended by a generator) and, sharing its state and
+ * methods, the interpolate-one node (one method blended, the rest from the first child):
+ *
+ *   node NAME interpolate     { a MATERIAL  b MATERIAL  t GENERATOR }
+ *   node NAME interpolate-one { a MATERIAL  b MATERIAL  t GENERATOR  method refraction_index }
+ *
+ * Both are blend nodes (generic/node_kit.h): their class tables take every material method from the kit, and
+ * pick below says which children answer a call. */
+#include <generic/node_kit.h>
+#include <generic/plugin.h>
+#include <generic/texture_parse.h>
+
+#include <string.h>
 
 typedef struct Interp {
     GMaterial base;
@@ -23,123 +31,37 @@ static void interp_destroy(GMaterial *self)
 static void pick(const GMaterial *self, GSurfPoint *sp, GNodeMethod m, GTexBlend *blend)
 {
     const Interp *n = (const Interp *)self;
-    if (!sp || (n->only >= 0 && n->only != (int)m)) {
-        blend->n = 1;
-        blend->m[0] = n->a;
-        blend->w[0] = 1.0;
-        return;
-    }
-    gtexblend_pair(blend, n->a, n->b, ggenerator_cached_value(n->t, sp));
+    if (!sp || (n->only >= 0 && n->only != (int)m))
+        gtexblend_one(blend, n->a);
+    else
+        gtexblend_pair(blend, n->a, n->b, ggenerator_cached_value(n->t, sp));
 }
 
-static int interp_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
-                             GColor *result)
-{
-    GTexBlend b;
-    pick(self, sp, GNODE_REFLECTION, &b);
-    return gtexblend_reflection(&b, sp, in, illum, out, result);
-}
-
-static int interp_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
-                             const GColor *rel_index, GVec3 out, GColor *result)
-{
-    GTexBlend b;
-    pick(self, sp, GNODE_REFRACTION, &b);
-    return gtexblend_refraction(&b, sp, in, illum, rel_index, out, result);
-}
-
-static int interp_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
-{
-    GTexBlend b;
-    pick(self, sp, GNODE_REFRACTION_INDEX, &b);
-    return gtexblend_refraction_index(&b, sp, result);
-}
-
-static int interp_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
-{
-    GTexBlend b;
-    pick(self, sp, GNODE_REFLECTION_DIR, &b);
-    return gtexblend_reflection_dir(&b, sp, view, dir);
-}
-
-static int interp_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
-                                 GVec3 *dir)
-{
-    GTexBlend b;
-    pick(self, sp, GNODE_REFRACTION_DIR, &b);
-    return gtexblend_refraction_dir(&b, sp, view, rel_index, dir);
-}
-
-static int interp_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result)
-{
-    GTexBlend b;
-    pick(self, sp, GNODE_EMISSION, &b);
-    return gtexblend_emission(&b, sp, out, result);
-}
-
-static int interp_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
-{
-    GTexBlend b;
-    pick(self, sp, GNODE_AMBIENT, &b);
-    return gtexblend_ambient(&b, sp, illum, result);
-}
-
-static int interp_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
-                             GColor *result)
-{
-    GTexBlend b;
-    pick(self, sp, GNODE_ABSORPTION, &b);
-    return gtexblend_absorption(&b, sp, illum, length, result);
-}
-
-static int interp_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *nrm)
-{
-    GTexBlend b;
-    pick(self, sp, GNODE_NORMAL, &b);
-    return gtexblend_normal(&b, sp, nrm);
-}
-
-static int interp_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
-{
-    GTexBlend b;
-    pick(self, sp, GNODE_DIFFUSE, &b);
-    return gtexblend_diffuse(&b, sp, result);
-}
-
-static int interp_opaque(const GMaterial *self, GSurfPoint *sp)
-{
-    GTexBlend b;
-    pick(self, sp, GNODE_OPAQUE, &b);
-    return gtexblend_opaque(&b, sp);
-}
-
-#define INTERP_METHODS                                                                                       \
-    .destroy = interp_destroy, .reflection = interp_reflection, .refraction = interp_refraction,              \
-    .refraction_index = interp_refraction_index, .reflection_dir = interp_reflection_dir,                     \
-    .refraction_dir = interp_refraction_dir, .emission = interp_emission, .ambient = interp_ambient,          \
-    .absorption = interp_absorption, .normal = interp_normal, .diffuse = interp_diffuse, .opaque = interp_opaque
-
-const GMaterialClass gnode_interpolate_class = {
-    .abi_version = GMATERIAL_ABI_VERSION,
-    .name = "interpolate",
-    .description = "two children blended by a generator value in [0, 1]",
-    INTERP_METHODS,
+static const GTexBlendClass interpolate_class = {
+    .base = {.abi_version = GMATERIAL_ABI_VERSION,
+             .name = "interpolate",
+             .description = "two children blended by a generator value in [0, 1]",
+             .destroy = interp_destroy,
+             GTEXBLEND_NODE_METHODS},
+    .pick = pick,
 };
 
-const GMaterialClass gnode_interpolate_one_class = {
-    .abi_version = GMATERIAL_ABI_VERSION,
-    .name = "interpolate-one",
-    .description = "one method blended by a generator, the others from the first child",
-    INTERP_METHODS,
+static const GTexBlendClass interpolate_one_class = {
+    .base = {.abi_version = GMATERIAL_ABI_VERSION,
+             .name = "interpolate-one",
+             .description = "one method blended by a generator, the others from the first child",
+             .destroy = interp_destroy,
+             GTEXBLEND_NODE_METHODS},
+    .pick = pick,
 };
 
-int gtexnode_interpolate_make(const GMaterialClass *cls, GMaterial *a, GMaterial *b, GGenerator *t, int only,
-                              GMaterial **out, GError *err)
+static int make(const GTexBlendClass *cls, GMaterial *a, GMaterial *b, GGenerator *t, int only, GMaterial **out,
+                GError *err)
 {
     *out = NULL;
     GMaterial *children[2] = {a, b};
     GMaterial *node;
-    int rc = gtexnode_new_checked(cls, children, 2, t, 1, sizeof(Interp), &node, err);
+    int rc = gtexnode_new_checked(&cls->base, children, 2, t, 1, sizeof(Interp), &node, err);
     if (rc != G_OK)
         return rc;
     Interp *n = (Interp *)node;
@@ -153,8 +75,70 @@ int gtexnode_interpolate_make(const GMaterialClass *cls, GMaterial *a, GMaterial
 
 int gnode_interpolate_create(GMaterial *a, GMaterial *b, GGenerator *t, GMaterial **out, GError *err)
 {
-    return gtexnode_interpolate_make(&gnode_interpolate_class, a, b, t, -1, out, err);
+    return make(&interpolate_class, a, b, t, -1, out, err);
 }
 
-GENERIC_TYPE(interpolate, GKIND_NODE, &gnode_interpolate_class, gtexparse_interpolate, NULL);
-GENERIC_TYPE(interpolate_one, GKIND_NODE, &gnode_interpolate_one_class, gtexparse_interpolate_one, NULL);
+int gnode_interpolate_one_create(GMaterial *a, GMaterial *b, GGenerator *t, GNodeMethod method, GMaterial **out,
+                                 GError *err)
+{
+    *out = NULL;
+    if ((unsigned)method >= GNODE_METHOD_COUNT)
+        return gerror_set(err, G_ERR_INVALID, "interpolate-one: unknown method %d", (int)method);
+    return make(&interpolate_one_class, a, b, t, (int)method, out, err);
+}
+
+/* The parameters of both; `one` reads the method too. */
+static int parse(GReader *r, int one, void **object, GError *err)
+{
+    GMaterial *a = NULL, *b = NULL;
+    GGenerator *t = NULL;
+    int method = -1;
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        if (strcmp(key, "a") == 0)
+            rc = greader_material(r, &a, err);
+        else if (strcmp(key, "b") == 0)
+            rc = greader_material(r, &b, err);
+        else if (strcmp(key, "t") == 0)
+            rc = gtexparse_generator(r, &t, err);
+        else if (one && strcmp(key, "method") == 0) {
+            char name[32];
+            rc = greader_ident(r, name, sizeof name, err);
+            if (rc == G_OK && (method = gnode_method_from_name(name)) < 0)
+                rc = greader_error(r, err,
+                                   "unknown method '%s' (reflection, refraction, refraction_index, reflection_dir, "
+                                   "refraction_dir, emission, ambient, absorption, normal, diffuse, opaque)",
+                                   name);
+        } else
+            rc = greader_unknown_param(r, one ? "a, b, t, method" : "a, b, t", err);
+        if (rc < 0)
+            return rc;
+    }
+    if (rc < 0)
+        return rc;
+    const char *name = one ? "interpolate-one" : "interpolate";
+    if (!a || !b || !t)
+        return greader_error(r, err, "%s: needs a, b and t", name);
+    if (one && method < 0)
+        return greader_error(r, err, "interpolate-one: needs a method");
+    GMaterial *m = NULL;
+    rc = one ? gnode_interpolate_one_create(a, b, t, (GNodeMethod)method, &m, err)
+             : gnode_interpolate_create(a, b, t, &m, err);
+    return gtexparse_finish(r, rc, m, object, err);
+}
+
+static int parse_interpolate(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    return parse(r, 0, object, err);
+}
+
+static int parse_interpolate_one(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    return parse(r, 1, object, err);
+}
+
+GENERIC_TYPE(interpolate, GKIND_NODE, &interpolate_class.base, parse_interpolate, NULL);
+GENERIC_TYPE(interpolate_one, GKIND_NODE, &interpolate_one_class.base, parse_interpolate_one, NULL);

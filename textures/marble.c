@@ -1,9 +1,15 @@
-/* marble.c - the marble generator: sine veins across x displaced by Perlin's turbulence. */
-#include "generic/plugin.h"
-#include "noise.h"
-#include "textures_builtin.h"
+/* marble.c - the marble generator: sine veins across x displaced by Perlin's turbulence:
+ *
+ *   generator NAME marble { NOISE  stripes S  turbulence T }
+ *
+ * NOISE: the noise parameters (space, frequency, seed, octaves, lacunarity, gain; generic/texture_parse.h). */
+#include <generic/generators.h>
+#include <generic/noise.h>
+#include <generic/plugin.h>
+#include <generic/texture_parse.h>
 
 #include <math.h>
+#include <string.h>
 
 typedef struct Marble {
     GGenerator base;
@@ -15,10 +21,10 @@ typedef struct Marble {
 static double phase(const GGenerator *self, GSurfPoint *sp, GVec3 *grad)
 {
     const Marble *m = (const Marble *)self;
-    GVec3 x = gtexnoise_coords(self, sp), d = gvec3(0, 0, 0);
+    GVec3 x = ggenerator_coords(self, sp), d = gvec3(0, 0, 0);
     double s = m->stripes * x.x;
     if (m->turbulence != 0.0)
-        s += m->turbulence * gtexnoise_turbulence(&m->p, x, grad ? &d : NULL);
+        s += m->turbulence * gnoise_turbulence(&m->p, x, grad ? &d : NULL);
     if (grad)
         *grad = gvec3_scale(gvec3(m->stripes + m->turbulence * d.x, m->turbulence * d.y, m->turbulence * d.z),
                             2.0 * M_PI);
@@ -31,11 +37,11 @@ static int marble_gradient(const GGenerator *self, GSurfPoint *sp, GVec3 *grad)
 {
     GVec3 d;
     double ph = phase(self, sp, &d);
-    *grad = gtexnoise_space_grad(self, gvec3_scale(d, 0.5 * cos(ph)));
+    *grad = ggenerator_space_gradient(self, gvec3_scale(d, 0.5 * cos(ph)));
     return G_OK;
 }
 
-const GGeneratorClass ggen_marble_class = {
+static const GGeneratorClass marble_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "marble",
     .description = "sine veins across x displaced by turbulence, in [0, 1]",
@@ -48,13 +54,13 @@ int ggen_marble_create(const GNoiseParams *p, double stripes, double turbulence,
 {
     *out = NULL;
     GNoiseParams q;
-    int rc = gtexnoise_params("marble", p, &q, err);
+    int rc = gnoise_params("marble", p, &q, err);
     if (rc != G_OK)
         return rc;
     if (!isfinite(stripes) || !isfinite(turbulence))
         return gerror_set(err, G_ERR_INVALID, "marble: stripes and turbulence must be finite");
     GGenerator *gen;
-    rc = gtexgen_new(&ggen_marble_class, q.space, sizeof(Marble), &gen, err);
+    rc = gtexgen_new(&marble_class, q.space, sizeof(Marble), &gen, err);
     if (rc != G_OK)
         return rc;
     Marble *m = (Marble *)gen;
@@ -65,4 +71,32 @@ int ggen_marble_create(const GNoiseParams *p, double stripes, double turbulence,
     return G_OK;
 }
 
-GENERIC_TYPE(marble, GKIND_GENERATOR, &ggen_marble_class, gtexparse_marble, ggenerator_release);
+static int parse_marble(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    GNoiseParams p;
+    memset(&p, 0, sizeof p);
+    double stripes = 1.0, turbulence = 2.0;
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        rc = gtexparse_noise_param(r, key, &p, err);
+        if (rc == 0) {
+            if (strcmp(key, "stripes") == 0)
+                rc = greader_number(r, &stripes, err);
+            else if (strcmp(key, "turbulence") == 0)
+                rc = greader_number(r, &turbulence, err);
+            else
+                rc = greader_unknown_param(r, GTEXPARSE_NOISE_KEYS ", stripes, turbulence", err);
+        }
+        if (rc < 0)
+            return rc;
+    }
+    if (rc < 0)
+        return rc;
+    GGenerator *g = NULL;
+    rc = ggen_marble_create(&p, stripes, turbulence, &g, err);
+    return gtexparse_finish(r, rc, g, object, err);
+}
+
+GENERIC_TYPE(marble, GKIND_GENERATOR, &marble_class, parse_marble, ggenerator_release);

@@ -1,8 +1,29 @@
-/* node_common.c - weighted blends of children for every material method, shared by the interpolate
- * and spline nodes, and the small utilities of all nodes. */
-#include "node_common.h"
+/* node_common.c - the node kit (generic/node_kit.h): weighted blends of children for every material method,
+ * the methods of blend nodes (interpolate, spline, select), temporaries, one-child and list nodes, and the
+ * construction checks of all nodes. */
+#include "generic/node_kit.h"
+#include "materials/params.h" /* gmat_new: nodes are built like the built-in materials */
 
 #include <math.h>
+#include <string.h>
+
+static const char *const method_names[GNODE_METHOD_COUNT] = {
+    "reflection", "refraction", "refraction_index", "reflection_dir", "refraction_dir", "emission",
+    "ambient",    "absorption", "normal",           "diffuse",        "opaque",
+};
+
+const char *gnode_method_name(GNodeMethod m)
+{
+    return (unsigned)m < GNODE_METHOD_COUNT ? method_names[m] : "?";
+}
+
+int gnode_method_from_name(const char *name)
+{
+    for (int i = 0; name && i < GNODE_METHOD_COUNT; i++)
+        if (strcmp(name, method_names[i]) == 0)
+            return i;
+    return -1;
+}
 
 int gtextemps_color(GTexTemps *t, GSurfPoint *sp, const GColorModel *m, int index, GColor *c)
 {
@@ -102,6 +123,21 @@ void gtexlist_destroy(GMaterial *self)
 
 /* ---- nodes with one child ---- */
 
+int gtexchild_new(const GMaterialClass *cls, GMaterial *child, const GGenerator *gen, int gen_needed, size_t size,
+                  GMaterial **out, GError *err)
+{
+    int rc = gtexnode_new_checked(cls, &child, 1, gen, gen_needed, size, out, err);
+    if (rc == G_OK)
+        ((GTexChild *)*out)->child = gmaterial_ref(child);
+    return rc;
+}
+
+void gtexchild_destroy(GMaterial *self)
+{
+    gmaterial_unref(gtexchild_of(self));
+    gmem_free(self);
+}
+
 int gtexchild_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
                          GColor *result)
 {
@@ -178,6 +214,13 @@ void gtexblend_pair(GTexBlend *b, const GMaterial *a, const GMaterial *c, double
         b->m[1] = c;
         b->w[1] = t;
     }
+}
+
+void gtexblend_one(GTexBlend *b, const GMaterial *m)
+{
+    b->n = 1;
+    b->m[0] = m;
+    b->w[0] = 1.0;
 }
 
 /* ---- colour methods: the children's results summed with their weights into the result (through an
@@ -366,4 +409,92 @@ int gtexblend_opaque(const GTexBlend *b, GSurfPoint *sp)
         if (b->w[i] != 0.0 && !gmaterial_opaque(b->m[i], sp))
             return 0;
     return 1;
+}
+
+/* ---- the methods of blend nodes: the class's pick, then the blend ---- */
+
+static void pick(const GMaterial *self, GSurfPoint *sp, GNodeMethod m, GTexBlend *b)
+{
+    ((const GTexBlendClass *)self->cls)->pick(self, sp, m, b);
+}
+
+int gtexblendnode_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
+                             GColor *result)
+{
+    GTexBlend b;
+    pick(self, sp, GNODE_REFLECTION, &b);
+    return gtexblend_reflection(&b, sp, in, illum, out, result);
+}
+
+int gtexblendnode_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
+                             const GColor *rel_index, GVec3 out, GColor *result)
+{
+    GTexBlend b;
+    pick(self, sp, GNODE_REFRACTION, &b);
+    return gtexblend_refraction(&b, sp, in, illum, rel_index, out, result);
+}
+
+int gtexblendnode_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
+{
+    GTexBlend b;
+    pick(self, sp, GNODE_REFRACTION_INDEX, &b);
+    return gtexblend_refraction_index(&b, sp, result);
+}
+
+int gtexblendnode_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
+{
+    GTexBlend b;
+    pick(self, sp, GNODE_REFLECTION_DIR, &b);
+    return gtexblend_reflection_dir(&b, sp, view, dir);
+}
+
+int gtexblendnode_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
+                                 GVec3 *dir)
+{
+    GTexBlend b;
+    pick(self, sp, GNODE_REFRACTION_DIR, &b);
+    return gtexblend_refraction_dir(&b, sp, view, rel_index, dir);
+}
+
+int gtexblendnode_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result)
+{
+    GTexBlend b;
+    pick(self, sp, GNODE_EMISSION, &b);
+    return gtexblend_emission(&b, sp, out, result);
+}
+
+int gtexblendnode_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
+{
+    GTexBlend b;
+    pick(self, sp, GNODE_AMBIENT, &b);
+    return gtexblend_ambient(&b, sp, illum, result);
+}
+
+int gtexblendnode_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
+                             GColor *result)
+{
+    GTexBlend b;
+    pick(self, sp, GNODE_ABSORPTION, &b);
+    return gtexblend_absorption(&b, sp, illum, length, result);
+}
+
+int gtexblendnode_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
+{
+    GTexBlend b;
+    pick(self, sp, GNODE_NORMAL, &b);
+    return gtexblend_normal(&b, sp, n);
+}
+
+int gtexblendnode_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
+{
+    GTexBlend b;
+    pick(self, sp, GNODE_DIFFUSE, &b);
+    return gtexblend_diffuse(&b, sp, result);
+}
+
+int gtexblendnode_opaque(const GMaterial *self, GSurfPoint *sp)
+{
+    GTexBlend b;
+    pick(self, sp, GNODE_OPAQUE, &b);
+    return gtexblend_opaque(&b, sp);
 }

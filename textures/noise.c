@@ -1,7 +1,7 @@
 /* noise.c - improved gradient noise (Perlin 2002: quintic fade, twelve edge gradients) with an analytic
  * gradient, and its fractal sums. The lattice hash is an integer mix seeded per generator instead of a
  * fixed permutation table, so every seed gives a different, deterministic noise. */
-#include "noise.h"
+#include <generic/noise.h>
 
 #include <math.h>
 #include <stdint.h>
@@ -26,7 +26,7 @@ static double fade(double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
 static double dfade(double t) { return 30.0 * t * t * (t * (t - 2.0) + 1.0); }
 static double lerp(double t, double a, double b) { return a + t * (b - a); }
 
-double gtexnoise_signed(unsigned seed, GVec3 p, GVec3 *grad)
+double gnoise_signed(unsigned seed, GVec3 p, GVec3 *grad)
 {
     double fx = floor(p.x), fy = floor(p.y), fz = floor(p.z);
     int32_t ix = (int32_t)(int64_t)fx, iy = (int32_t)(int64_t)fy, iz = (int32_t)(int64_t)fz;
@@ -69,18 +69,18 @@ double gtexnoise_signed(unsigned seed, GVec3 p, GVec3 *grad)
 
 double gnoise_perlin3(unsigned seed, double x, double y, double z, GVec3 *grad)
 {
-    double n = gtexnoise_signed(seed, gvec3(x, y, z), grad);
+    double n = gnoise_signed(seed, gvec3(x, y, z), grad);
     if (grad)
         *grad = gvec3_scale(*grad, 0.5);
     return 0.5 + 0.5 * n;
 }
 
-double gtexnoise_fbm(const GNoiseParams *p, GVec3 x, GVec3 *grad)
+double gnoise_fbm(const GNoiseParams *p, GVec3 x, GVec3 *grad)
 {
     double sum = 0.0, norm = 0.0, amp = 1.0, f = p->frequency;
     GVec3 g = gvec3(0, 0, 0), go;
     for (int i = 0; i < p->octaves; i++) {
-        sum += amp * gtexnoise_signed(p->seed + (unsigned)i, gvec3_scale(x, f), grad ? &go : NULL);
+        sum += amp * gnoise_signed(p->seed + (unsigned)i, gvec3_scale(x, f), grad ? &go : NULL);
         if (grad)
             g = gvec3_madd(g, go, amp * f);
         norm += amp;
@@ -92,12 +92,12 @@ double gtexnoise_fbm(const GNoiseParams *p, GVec3 x, GVec3 *grad)
     return norm > 0.0 ? sum / norm : 0.0;
 }
 
-double gtexnoise_turbulence(const GNoiseParams *p, GVec3 x, GVec3 *grad)
+double gnoise_turbulence(const GNoiseParams *p, GVec3 x, GVec3 *grad)
 {
     double sum = 0.0, norm = 0.0, amp = 1.0, f = p->frequency;
     GVec3 g = gvec3(0, 0, 0), go;
     for (int i = 0; i < p->octaves; i++) {
-        double n = gtexnoise_signed(p->seed + (unsigned)i, gvec3_scale(x, f), grad ? &go : NULL);
+        double n = gnoise_signed(p->seed + (unsigned)i, gvec3_scale(x, f), grad ? &go : NULL);
         sum += amp * fabs(n);
         if (grad)
             g = gvec3_madd(g, go, (n < 0.0 ? -amp : amp) * f);
@@ -111,7 +111,7 @@ double gtexnoise_turbulence(const GNoiseParams *p, GVec3 x, GVec3 *grad)
     return t > 1.0 ? 1.0 : t;
 }
 
-int gtexnoise_params(const char *name, const GNoiseParams *in, GNoiseParams *out, GError *err)
+int gnoise_params(const char *name, const GNoiseParams *in, GNoiseParams *out, GError *err)
 {
     GNoiseParams d = {GGENERATOR_SPACE_OBJECT, 1.0, 0u, 4, 2.0, 0.5};
     if (in) {
@@ -137,13 +137,4 @@ int gtexnoise_params(const char *name, const GNoiseParams *in, GNoiseParams *out
     }
     *out = d;
     return G_OK;
-}
-
-GVec3 gtexnoise_coords(const GGenerator *g, const GSurfPoint *sp)
-{
-    switch (g->space) {
-    case GGENERATOR_SPACE_UV: return gvec3(sp->u, sp->v, 0.0);
-    case GGENERATOR_SPACE_WORLD: return sp->point;
-    default: return sp->object_point;
-    }
 }

@@ -1,6 +1,59 @@
-/* parse_common.c - pieces of the texture parse routines shared by nodes and shape trees: lists of
- * materials and numbers, and 2D/3D transform steps. */
-#include "parse_common.h"
+/* parse_common.c - pieces of the texture parse routines shared by nodes, generators and shape trees
+ * (generic/texture_parse.h): nested generators, lists of materials and numbers, 2D/3D transform steps, spaces,
+ * the noise parameters. */
+#include "generic/texture_parse.h"
+
+#include <string.h>
+
+int gtexparse_finish(GReader *r, int rc, void *obj, void **object, GError *err)
+{
+    if (rc != G_OK)
+        return greader_locate(r, err);
+    *object = obj;
+    return G_OK;
+}
+
+int gtexparse_generator(GReader *r, GGenerator **g, GError *err)
+{
+    void *obj = NULL;
+    int rc = greader_object(r, GKIND_GENERATOR, &obj, NULL, err);
+    *g = rc == G_OK ? obj : NULL;
+    return rc;
+}
+
+int gtexparse_space(GReader *r, GGeneratorSpace *space, GError *err)
+{
+    static const char *const names[] = {"object", "world", "uv", NULL};
+    static const GGeneratorSpace spaces[] = {GGENERATOR_SPACE_OBJECT, GGENERATOR_SPACE_WORLD, GGENERATOR_SPACE_UV};
+    int i, rc = greader_choice(r, names, &i, err);
+    if (rc == G_OK)
+        *space = spaces[i];
+    return rc;
+}
+
+int gtexparse_noise_param(GReader *r, const char *key, GNoiseParams *p, GError *err)
+{
+    int rc;
+    if (strcmp(key, "space") == 0)
+        rc = gtexparse_space(r, &p->space, err);
+    else if (strcmp(key, "frequency") == 0)
+        rc = greader_number_in(r, 1e-9, 1e9, &p->frequency, err);
+    else if (strcmp(key, "seed") == 0) {
+        long s;
+        rc = greader_int(r, 0, 4294967295L, &s, err);
+        p->seed = (unsigned)s;
+    } else if (strcmp(key, "octaves") == 0) {
+        long n;
+        rc = greader_int(r, 1, 16, &n, err);
+        p->octaves = (int)n;
+    } else if (strcmp(key, "lacunarity") == 0)
+        rc = greader_number_in(r, 1e-3, 1e3, &p->lacunarity, err);
+    else if (strcmp(key, "gain") == 0)
+        rc = greader_number_in(r, 1e-6, 1e3, &p->gain, err);
+    else
+        return 0;
+    return rc < 0 ? rc : 1;
+}
 
 int gtexparse_materials(GReader *r, GMaterial ***list, int *n, GError *err)
 {

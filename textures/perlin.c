@@ -1,7 +1,13 @@
-/* perlin.c - the perlin generator: improved Perlin noise mapped to [0, 1], with its analytic gradient. */
-#include "generic/plugin.h"
-#include "noise.h"
-#include "textures_builtin.h"
+/* perlin.c - the perlin generator: improved Perlin noise mapped to [0, 1], with its analytic gradient:
+ *
+ *   generator NAME perlin { space object|world|uv  frequency F  seed N }
+ */
+#include <generic/generators.h>
+#include <generic/noise.h>
+#include <generic/plugin.h>
+#include <generic/texture_parse.h>
+
+#include <string.h>
 
 typedef struct Perlin {
     GGenerator base;
@@ -11,14 +17,14 @@ typedef struct Perlin {
 static double perlin_value(const GGenerator *self, GSurfPoint *sp)
 {
     const Perlin *n = (const Perlin *)self;
-    GVec3 x = gvec3_scale(gtexnoise_coords(self, sp), n->p.frequency);
+    GVec3 x = gvec3_scale(ggenerator_coords(self, sp), n->p.frequency);
     return gnoise_perlin3(n->p.seed, x.x, x.y, x.z, NULL);
 }
 
 static int perlin_gradient(const GGenerator *self, GSurfPoint *sp, GVec3 *grad)
 {
     const Perlin *n = (const Perlin *)self;
-    GVec3 x = gvec3_scale(gtexnoise_coords(self, sp), n->p.frequency);
+    GVec3 x = gvec3_scale(ggenerator_coords(self, sp), n->p.frequency);
     gnoise_perlin3(n->p.seed, x.x, x.y, x.z, grad);
     *grad = gvec3_scale(*grad, n->p.frequency);
     if (self->space == GGENERATOR_SPACE_UV)
@@ -26,7 +32,7 @@ static int perlin_gradient(const GGenerator *self, GSurfPoint *sp, GVec3 *grad)
     return G_OK;
 }
 
-const GGeneratorClass ggen_perlin_class = {
+static const GGeneratorClass perlin_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "perlin",
     .description = "improved Perlin noise (2002) in [0, 1]",
@@ -39,11 +45,11 @@ int ggen_perlin_create(const GNoiseParams *p, GGenerator **out, GError *err)
 {
     *out = NULL;
     GNoiseParams q;
-    int rc = gtexnoise_params("perlin", p, &q, err);
+    int rc = gnoise_params("perlin", p, &q, err);
     if (rc != G_OK)
         return rc;
     GGenerator *gen;
-    rc = gtexgen_new(&ggen_perlin_class, q.space, sizeof(Perlin), &gen, err);
+    rc = gtexgen_new(&perlin_class, q.space, sizeof(Perlin), &gen, err);
     if (rc != G_OK)
         return rc;
     Perlin *n = (Perlin *)gen;
@@ -52,4 +58,32 @@ int ggen_perlin_create(const GNoiseParams *p, GGenerator **out, GError *err)
     return G_OK;
 }
 
-GENERIC_TYPE(perlin, GKIND_GENERATOR, &ggen_perlin_class, gtexparse_perlin, ggenerator_release);
+/* The noise parameters and nothing else. */
+static int parse_noise(GReader *r, GNoiseParams *p, GError *err)
+{
+    memset(p, 0, sizeof *p);
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        rc = gtexparse_noise_param(r, key, p, err);
+        if (rc == 0)
+            rc = greader_unknown_param(r, GTEXPARSE_NOISE_KEYS, err);
+        if (rc < 0)
+            return rc;
+    }
+    return rc;
+}
+
+static int parse_perlin(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    GNoiseParams p;
+    int rc = parse_noise(r, &p, err);
+    if (rc < 0)
+        return rc;
+    GGenerator *g = NULL;
+    rc = ggen_perlin_create(&p, &g, err);
+    return gtexparse_finish(r, rc, g, object, err);
+}
+
+GENERIC_TYPE(perlin, GKIND_GENERATOR, &perlin_class, parse_perlin, ggenerator_release);

@@ -1,7 +1,12 @@
-/* scale.c - the scale node: the child's light-carrying colour results times a generator value. */
-#include "generic/plugin.h"
-#include "node_common.h"
-#include "textures_builtin.h"
+/* scale.c - the scale node: the child's light-carrying colour results times a generator value:
+ *
+ *   node NAME scale { child MATERIAL  factor GENERATOR }
+ */
+#include <generic/node_kit.h>
+#include <generic/plugin.h>
+#include <generic/texture_parse.h>
+
+#include <string.h>
 
 typedef struct Scale {
     GTexChild node; /* base and child; first */
@@ -80,7 +85,7 @@ static int scale_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
     return finish(gmaterial_diffuse(gtexchild_of(self), sp, result), f, result);
 }
 
-const GMaterialClass gnode_scale_class = {
+static const GMaterialClass scale_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "scale",
     .description = "the child's reflected and emitted light times a generator value",
@@ -102,14 +107,39 @@ int gnode_scale_create(GMaterial *child, GGenerator *factor, GMaterial **out, GE
 {
     *out = NULL;
     GMaterial *mat;
-    int rc = gtexnode_new_checked(&gnode_scale_class, &child, 1, factor, 1, sizeof(Scale), &mat, err);
+    int rc = gtexchild_new(&scale_class, child, factor, 1, sizeof(Scale), &mat, err);
     if (rc != G_OK)
         return rc;
     Scale *s = (Scale *)mat;
-    s->node.child = gmaterial_ref(child);
     s->factor = ggenerator_ref(factor);
     *out = &s->node.base;
     return G_OK;
 }
 
-GENERIC_TYPE(scale, GKIND_NODE, &gnode_scale_class, gtexparse_scale, NULL);
+static int parse_scale(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    GMaterial *child = NULL;
+    GGenerator *g = NULL;
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        if (strcmp(key, "child") == 0)
+            rc = greader_material(r, &child, err);
+        else if (strcmp(key, "factor") == 0)
+            rc = gtexparse_generator(r, &g, err);
+        else
+            rc = greader_unknown_param(r, "child, factor", err);
+        if (rc < 0)
+            return rc;
+    }
+    if (rc < 0)
+        return rc;
+    if (!child || !g)
+        return greader_error(r, err, "scale: needs child and factor");
+    GMaterial *m = NULL;
+    rc = gnode_scale_create(child, g, &m, err);
+    return gtexparse_finish(r, rc, m, object, err);
+}
+
+GENERIC_TYPE(scale, GKIND_NODE, &scale_class, parse_scale, NULL);

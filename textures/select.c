@@ -1,99 +1,72 @@
-/* select.c - the select node: an integer generator (e.g. the surface index) picks one of n children. */
-#include "generic/plugin.h"
-#include "node_common.h"
-#include "textures_builtin.h"
+/* select.c - the select node: an integer generator (e.g. the surface index) picks one of n children.
+ *
+ *   node NAME select { index GENERATOR  children { MATERIAL ... } }
+ *
+ * A blend node (generic/node_kit.h) whose blend is always one child; its state is a GTexList (gen is the
+ * index). */
+#include <generic/node_kit.h>
+#include <generic/plugin.h>
+#include <generic/texture_parse.h>
 
 #include <math.h>
+#include <string.h>
 
-/* The state is a GTexList: gen is the index. */
-
-static const GMaterial *chosen(const GMaterial *self, GSurfPoint *sp)
+static void pick(const GMaterial *self, GSurfPoint *sp, GNodeMethod m, GTexBlend *b)
 {
+    (void)m;
     const GTexList *s = (const GTexList *)self;
-    if (!sp)
-        return s->children[0];
-    double v = floor(ggenerator_cached_value(s->gen, sp));
-    int i = !(v > 0.0) ? 0 : v >= s->n - 1 ? s->n - 1 : (int)v; /* NaN picks the first */
-    return s->children[i];
+    int i = 0;
+    if (sp) {
+        double v = floor(ggenerator_cached_value(s->gen, sp));
+        i = !(v > 0.0) ? 0 : v >= s->n - 1 ? s->n - 1 : (int)v; /* NaN picks the first */
+    }
+    gtexblend_one(b, s->children[i]);
 }
 
-static int select_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
-                             GColor *result)
-{
-    return gmaterial_reflection(chosen(self, sp), sp, in, illum, out, result);
-}
-
-static int select_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
-                             const GColor *rel_index, GVec3 out, GColor *result)
-{
-    return gmaterial_refraction(chosen(self, sp), sp, in, illum, rel_index, out, result);
-}
-
-static int select_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
-{
-    return gmaterial_refraction_index(chosen(self, sp), sp, result);
-}
-
-static int select_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
-{
-    return gmaterial_reflection_dir(chosen(self, sp), sp, view, dir);
-}
-
-static int select_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
-                                 GVec3 *dir)
-{
-    return gmaterial_refraction_dir(chosen(self, sp), sp, view, rel_index, dir);
-}
-
-static int select_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result)
-{
-    return gmaterial_emission(chosen(self, sp), sp, out, result);
-}
-
-static int select_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
-{
-    return gmaterial_ambient(chosen(self, sp), sp, illum, result);
-}
-
-static int select_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
-                             GColor *result)
-{
-    return gmaterial_absorption(chosen(self, sp), sp, illum, length, result);
-}
-
-static int select_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
-{
-    return gmaterial_normal(chosen(self, sp), sp, n);
-}
-
-static int select_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
-{
-    return gmaterial_diffuse(chosen(self, sp), sp, result);
-}
-
-static int select_opaque(const GMaterial *self, GSurfPoint *sp) { return gmaterial_opaque(chosen(self, sp), sp); }
-
-const GMaterialClass gnode_select_class = {
-    .abi_version = GMATERIAL_ABI_VERSION,
-    .name = "select",
-    .description = "one of n children picked by an integer generator (e.g. the surface index)",
-    .destroy = gtexlist_destroy,
-    .reflection = select_reflection,
-    .refraction = select_refraction,
-    .refraction_index = select_refraction_index,
-    .reflection_dir = select_reflection_dir,
-    .refraction_dir = select_refraction_dir,
-    .emission = select_emission,
-    .ambient = select_ambient,
-    .absorption = select_absorption,
-    .normal = select_normal,
-    .diffuse = select_diffuse,
-    .opaque = select_opaque,
+static const GTexBlendClass select_class = {
+    .base = {.abi_version = GMATERIAL_ABI_VERSION,
+             .name = "select",
+             .description = "one of n children picked by an integer generator (e.g. the surface index)",
+             .destroy = gtexlist_destroy,
+             GTEXBLEND_NODE_METHODS},
+    .pick = pick,
 };
 
 int gnode_select_create(GMaterial *const *children, int n, GGenerator *index, GMaterial **out, GError *err)
 {
-    return gtexlist_new(&gnode_select_class, children, n, index, sizeof(GTexList), out, err);
+    return gtexlist_new(&select_class.base, children, n, index, sizeof(GTexList), out, err);
 }
 
-GENERIC_TYPE(select, GKIND_NODE, &gnode_select_class, gtexparse_select, NULL);
+static int parse_select(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    GMaterial **kids = NULL;
+    int n = 0, have_kids = 0;
+    GGenerator *g = NULL;
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        if (strcmp(key, "index") == 0)
+            rc = gtexparse_generator(r, &g, err);
+        else if (strcmp(key, "children") == 0) {
+            rc = gtexparse_materials(r, &kids, &n, err);
+            have_kids = 1;
+        } else
+            rc = greader_unknown_param(r, "index, children", err);
+        if (rc < 0)
+            break;
+    }
+    if (rc == 0 && !g)
+        rc = greader_error(r, err, "select: needs index");
+    else if (rc == 0 && !have_kids)
+        rc = greader_error(r, err, "select: needs children { ... }");
+    if (rc == 0) {
+        GMaterial *m = NULL;
+        rc = gnode_select_create(kids, n, g, &m, err);
+        rc = gtexparse_finish(r, rc, m, object, err);
+    }
+    gmem_free(kids);
+    return rc;
+}
+
+GENERIC_TYPE(select, GKIND_NODE, &select_class.base, parse_select, NULL);

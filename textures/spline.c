@@ -1,10 +1,15 @@
 /* spline.c - the spline node: n children at t = i / (n - 1) blended by a cubic spline over a generator
- * value (Catmull-Rom by default; uniform B-spline and linear on request). */
-#include "generic/plugin.h"
-#include "node_common.h"
-#include "textures_builtin.h"
+ * value (Catmull-Rom by default; uniform B-spline and linear on request):
+ *
+ *   node NAME spline { t GENERATOR  basis catmull-rom|bspline|linear  children { MATERIAL ... } }
+ *
+ * A blend node (generic/node_kit.h): pick below gives the children and weights of the segment at t. */
+#include <generic/node_kit.h>
+#include <generic/plugin.h>
+#include <generic/texture_parse.h>
 
 #include <math.h>
+#include <string.h>
 
 typedef struct Spline {
     GTexList list; /* gen is t; first: the class's destroy is gtexlist_destroy */
@@ -26,8 +31,9 @@ static void add(GTexBlend *b, const Spline *s, int i, double w)
     b->w[b->n++] = w;
 }
 
-static void pick(const GMaterial *self, GSurfPoint *sp, GTexBlend *b)
+static void pick(const GMaterial *self, GSurfPoint *sp, GNodeMethod m, GTexBlend *b)
 {
+    (void)m;
     const Spline *s = (const Spline *)self;
     b->n = 0;
     if (!sp) {
@@ -71,103 +77,13 @@ static void pick(const GMaterial *self, GSurfPoint *sp, GTexBlend *b)
         add(b, s, k, 1.0);
 }
 
-static int spline_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
-                             GColor *result)
-{
-    GTexBlend b;
-    pick(self, sp, &b);
-    return gtexblend_reflection(&b, sp, in, illum, out, result);
-}
-
-static int spline_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
-                             const GColor *rel_index, GVec3 out, GColor *result)
-{
-    GTexBlend b;
-    pick(self, sp, &b);
-    return gtexblend_refraction(&b, sp, in, illum, rel_index, out, result);
-}
-
-static int spline_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
-{
-    GTexBlend b;
-    pick(self, sp, &b);
-    return gtexblend_refraction_index(&b, sp, result);
-}
-
-static int spline_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
-{
-    GTexBlend b;
-    pick(self, sp, &b);
-    return gtexblend_reflection_dir(&b, sp, view, dir);
-}
-
-static int spline_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
-                                 GVec3 *dir)
-{
-    GTexBlend b;
-    pick(self, sp, &b);
-    return gtexblend_refraction_dir(&b, sp, view, rel_index, dir);
-}
-
-static int spline_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result)
-{
-    GTexBlend b;
-    pick(self, sp, &b);
-    return gtexblend_emission(&b, sp, out, result);
-}
-
-static int spline_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
-{
-    GTexBlend b;
-    pick(self, sp, &b);
-    return gtexblend_ambient(&b, sp, illum, result);
-}
-
-static int spline_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
-                             GColor *result)
-{
-    GTexBlend b;
-    pick(self, sp, &b);
-    return gtexblend_absorption(&b, sp, illum, length, result);
-}
-
-static int spline_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
-{
-    GTexBlend b;
-    pick(self, sp, &b);
-    return gtexblend_normal(&b, sp, n);
-}
-
-static int spline_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
-{
-    GTexBlend b;
-    pick(self, sp, &b);
-    return gtexblend_diffuse(&b, sp, result);
-}
-
-static int spline_opaque(const GMaterial *self, GSurfPoint *sp)
-{
-    GTexBlend b;
-    pick(self, sp, &b);
-    return gtexblend_opaque(&b, sp);
-}
-
-const GMaterialClass gnode_spline_class = {
-    .abi_version = GMATERIAL_ABI_VERSION,
-    .name = "spline",
-    .description = "n children blended by a cubic spline over a generator value",
-    .destroy = gtexlist_destroy,
-    .reflection = spline_reflection,
-    .refraction = spline_refraction,
-    .refraction_index = spline_refraction_index,
-    .reflection_dir = spline_reflection_dir,
-    .refraction_dir = spline_refraction_dir,
-    .emission = spline_emission,
-    .ambient = spline_ambient,
-    .absorption = spline_absorption,
-    .normal = spline_normal,
-    .diffuse = spline_diffuse,
-    .opaque = spline_opaque,
+static const GTexBlendClass spline_class = {
+    .base = {.abi_version = GMATERIAL_ABI_VERSION,
+             .name = "spline",
+             .description = "n children blended by a cubic spline over a generator value",
+             .destroy = gtexlist_destroy,
+             GTEXBLEND_NODE_METHODS},
+    .pick = pick,
 };
 
 int gnode_spline_create(GMaterial *const *children, int n, GGenerator *t, GSplineBasis basis, GMaterial **out,
@@ -178,10 +94,45 @@ int gnode_spline_create(GMaterial *const *children, int n, GGenerator *t, GSplin
         return gerror_set(err, G_ERR_INVALID, "spline: needs at least 2 children, got 1");
     if ((unsigned)basis > GSPLINE_LINEAR)
         return gerror_set(err, G_ERR_INVALID, "spline: unknown basis %d", (int)basis);
-    int rc = gtexlist_new(&gnode_spline_class, children, n, t, sizeof(Spline), out, err);
+    int rc = gtexlist_new(&spline_class.base, children, n, t, sizeof(Spline), out, err);
     if (rc == G_OK)
         ((Spline *)*out)->basis = (int)basis;
     return rc;
 }
 
-GENERIC_TYPE(spline, GKIND_NODE, &gnode_spline_class, gtexparse_spline, NULL);
+static int parse_spline(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    static const char *const basis_names[] = {"catmull-rom", "bspline", "linear", NULL};
+    GMaterial **kids = NULL;
+    int n = 0, basis = GSPLINE_CATMULL_ROM, have_kids = 0;
+    GGenerator *g = NULL;
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        if (strcmp(key, "t") == 0)
+            rc = gtexparse_generator(r, &g, err);
+        else if (strcmp(key, "children") == 0) {
+            rc = gtexparse_materials(r, &kids, &n, err);
+            have_kids = 1;
+        } else if (strcmp(key, "basis") == 0)
+            rc = greader_choice(r, basis_names, &basis, err);
+        else
+            rc = greader_unknown_param(r, "t, basis, children", err);
+        if (rc < 0)
+            break;
+    }
+    if (rc == 0 && !g)
+        rc = greader_error(r, err, "spline: needs t");
+    else if (rc == 0 && !have_kids)
+        rc = greader_error(r, err, "spline: needs children { ... }");
+    if (rc == 0) {
+        GMaterial *m = NULL;
+        rc = gnode_spline_create(kids, n, g, (GSplineBasis)basis, &m, err);
+        rc = gtexparse_finish(r, rc, m, object, err);
+    }
+    gmem_free(kids);
+    return rc;
+}
+
+GENERIC_TYPE(spline, GKIND_NODE, &spline_class.base, parse_spline, NULL);

@@ -1,7 +1,7 @@
-/* surface.c - the surface index generator (for select nodes: a material per face). */
-#include "generic/plugin.h"
-#include "generic/textures.h"
-#include "textures_builtin.h"
+/* surface.c - the surface index generator (for select nodes: a material per face):  generator NAME surface */
+#include <generic/generators.h>
+#include <generic/plugin.h>
+#include <generic/texture_parse.h>
 
 static double surface_value(const GGenerator *self, GSurfPoint *sp)
 {
@@ -9,7 +9,7 @@ static double surface_value(const GGenerator *self, GSurfPoint *sp)
     return (double)sp->surface;
 }
 
-const GGeneratorClass ggen_surface_class = {
+static const GGeneratorClass surface_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "surface",
     .description = "the index of the object's surface that was hit",
@@ -21,7 +21,21 @@ const GGeneratorClass ggen_surface_class = {
 int ggen_surface_create(GGenerator **out, GError *err)
 {
     *out = NULL;
-    return gtexgen_new(&ggen_surface_class, GGENERATOR_SPACE_NONE, sizeof(GGenerator), out, err);
+    return gtexgen_new(&surface_class, GGENERATOR_SPACE_NONE, sizeof(GGenerator), out, err);
 }
 
-GENERIC_TYPE(surface, GKIND_GENERATOR, &ggen_surface_class, gtexparse_surface, ggenerator_release);
+static int parse_surface(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    const char *key;
+    int rc;
+    if ((rc = greader_param(r, &key, err)) > 0)
+        return greader_unknown_param(r, "(none)", err);
+    if (rc < 0)
+        return rc;
+    GGenerator *g = NULL;
+    rc = ggen_surface_create(&g, err);
+    return gtexparse_finish(r, rc, g, object, err);
+}
+
+GENERIC_TYPE(surface, GKIND_GENERATOR, &surface_class, parse_surface, ggenerator_release);

@@ -1,12 +1,18 @@
 /* transform.c - the transform node: the subtree is evaluated on a copy of the surface point whose (u, v)
  * and object-space point (with their tangents and footprints) are moved, which moves its patterns. The copy
  * caches its generator values in its own scope (gsurfpoint_cache_enter) and hands them back after each call,
- * so the subtree's generators run once per point however many methods are called through the node. */
-#include "generic/plugin.h"
-#include "node_common.h"
-#include "textures_builtin.h"
+ * so the subtree's generators run once per point however many methods are called through the node:
+ *
+ *   node NAME transform { child MATERIAL  uv { translate U V  rotate DEG  scale S [S2] ... }
+ *                         xyz { translate X Y Z  rotate AXIS DEG  scale S | X Y Z ... } }
+ *
+ * Transform steps apply in the order written, each moving the pattern further. */
+#include <generic/node_kit.h>
+#include <generic/plugin.h>
+#include <generic/texture_parse.h>
 
 #include <math.h>
+#include <string.h>
 
 typedef struct Transform {
     GMaterial base;
@@ -171,7 +177,7 @@ static int transform_opaque(const GMaterial *self, GSurfPoint *sp)
     return rc;
 }
 
-const GMaterialClass gnode_transform_class = {
+static const GMaterialClass transform_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "transform",
     .description = "moves the (u, v) and object-space patterns of its subtree",
@@ -194,7 +200,7 @@ int gnode_transform_create(GMaterial *child, const GAffine2 *uv, const GAffine3 
 {
     *out = NULL;
     GMaterial *node;
-    int rc = gtexnode_new_checked(&gnode_transform_class, &child, 1, NULL, 0, sizeof(Transform), &node, err);
+    int rc = gtexnode_new_checked(&transform_class, &child, 1, NULL, 0, sizeof(Transform), &node, err);
     if (rc != G_OK)
         return rc;
     Transform *t = (Transform *)node;
@@ -224,4 +230,36 @@ int gnode_transform_create(GMaterial *child, const GAffine2 *uv, const GAffine3 
     return G_OK;
 }
 
-GENERIC_TYPE(transform, GKIND_NODE, &gnode_transform_class, gtexparse_transform, NULL);
+static int parse_transform(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    GMaterial *child = NULL;
+    GAffine2 uv;
+    GAffine3 xyz;
+    int have_uv = 0, have_xyz = 0;
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        if (strcmp(key, "child") == 0)
+            rc = greader_material(r, &child, err);
+        else if (strcmp(key, "uv") == 0) {
+            rc = gtexparse_uv_steps(r, &uv, err);
+            have_uv = 1;
+        } else if (strcmp(key, "xyz") == 0) {
+            rc = gtexparse_xyz_steps(r, &xyz, err);
+            have_xyz = 1;
+        } else
+            rc = greader_unknown_param(r, "child, uv, xyz", err);
+        if (rc < 0)
+            return rc;
+    }
+    if (rc < 0)
+        return rc;
+    if (!child)
+        return greader_error(r, err, "transform: needs child");
+    GMaterial *m = NULL;
+    rc = gnode_transform_create(child, have_uv ? &uv : NULL, have_xyz ? &xyz : NULL, &m, err);
+    return gtexparse_finish(r, rc, m, object, err);
+}
+
+GENERIC_TYPE(transform, GKIND_NODE, &transform_class, parse_transform, NULL);

@@ -1,7 +1,14 @@
-/* turbulence.c - the fbm (fractional Brownian motion) and turbulence (sum of |noise|) generators. */
-#include "generic/plugin.h"
-#include "noise.h"
-#include "textures_builtin.h"
+/* turbulence.c - the fbm (fractional Brownian motion) and turbulence (sum of |noise|) generators:
+ *
+ *   generator NAME fbm        { space object|world|uv  frequency F  seed N  octaves N  lacunarity L  gain G }
+ *   generator NAME turbulence { the same }
+ */
+#include <generic/generators.h>
+#include <generic/noise.h>
+#include <generic/plugin.h>
+#include <generic/texture_parse.h>
+
+#include <string.h>
 
 typedef struct Fractal {
     GGenerator base;
@@ -10,32 +17,32 @@ typedef struct Fractal {
 
 static double fbm_value(const GGenerator *self, GSurfPoint *sp)
 {
-    double v = 0.5 + 0.5 * gtexnoise_fbm(&((const Fractal *)self)->p, gtexnoise_coords(self, sp), NULL);
+    double v = 0.5 + 0.5 * gnoise_fbm(&((const Fractal *)self)->p, ggenerator_coords(self, sp), NULL);
     return v < 0.0 ? 0.0 : v > 1.0 ? 1.0 : v;
 }
 
 static int fbm_gradient(const GGenerator *self, GSurfPoint *sp, GVec3 *grad)
 {
     GVec3 d;
-    double v = 0.5 + 0.5 * gtexnoise_fbm(&((const Fractal *)self)->p, gtexnoise_coords(self, sp), &d);
-    *grad = v < 0.0 || v > 1.0 ? gvec3(0, 0, 0) : gtexnoise_space_grad(self, gvec3_scale(d, 0.5));
+    double v = 0.5 + 0.5 * gnoise_fbm(&((const Fractal *)self)->p, ggenerator_coords(self, sp), &d);
+    *grad = v < 0.0 || v > 1.0 ? gvec3(0, 0, 0) : ggenerator_space_gradient(self, gvec3_scale(d, 0.5));
     return G_OK;
 }
 
 static double turbulence_value(const GGenerator *self, GSurfPoint *sp)
 {
-    return gtexnoise_turbulence(&((const Fractal *)self)->p, gtexnoise_coords(self, sp), NULL);
+    return gnoise_turbulence(&((const Fractal *)self)->p, ggenerator_coords(self, sp), NULL);
 }
 
 static int turbulence_gradient(const GGenerator *self, GSurfPoint *sp, GVec3 *grad)
 {
     GVec3 d;
-    gtexnoise_turbulence(&((const Fractal *)self)->p, gtexnoise_coords(self, sp), &d);
-    *grad = gtexnoise_space_grad(self, d);
+    gnoise_turbulence(&((const Fractal *)self)->p, ggenerator_coords(self, sp), &d);
+    *grad = ggenerator_space_gradient(self, d);
     return G_OK;
 }
 
-const GGeneratorClass ggen_fbm_class = {
+static const GGeneratorClass fbm_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "fbm",
     .description = "fractional Brownian motion: octaves of noise, in [0, 1]",
@@ -44,7 +51,7 @@ const GGeneratorClass ggen_fbm_class = {
     .gradient = fbm_gradient,
 };
 
-const GGeneratorClass ggen_turbulence_class = {
+static const GGeneratorClass turbulence_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "turbulence",
     .description = "Perlin's turbulence: octaves of |noise|, in [0, 1]",
@@ -57,7 +64,7 @@ static int make(const GGeneratorClass *cls, const GNoiseParams *p, GGenerator **
 {
     *out = NULL;
     GNoiseParams q;
-    int rc = gtexnoise_params(cls->name, p, &q, err);
+    int rc = gnoise_params(cls->name, p, &q, err);
     if (rc != G_OK)
         return rc;
     GGenerator *gen;
@@ -72,13 +79,41 @@ static int make(const GGeneratorClass *cls, const GNoiseParams *p, GGenerator **
 
 int ggen_fbm_create(const GNoiseParams *p, GGenerator **out, GError *err)
 {
-    return make(&ggen_fbm_class, p, out, err);
+    return make(&fbm_class, p, out, err);
 }
 
 int ggen_turbulence_create(const GNoiseParams *p, GGenerator **out, GError *err)
 {
-    return make(&ggen_turbulence_class, p, out, err);
+    return make(&turbulence_class, p, out, err);
 }
 
-GENERIC_TYPE(fbm, GKIND_GENERATOR, &ggen_fbm_class, gtexparse_fbm, ggenerator_release);
-GENERIC_TYPE(turbulence, GKIND_GENERATOR, &ggen_turbulence_class, gtexparse_turbulence, ggenerator_release);
+/* The noise parameters and nothing else. */
+static int parse_noise(GReader *r, GNoiseParams *p, GError *err)
+{
+    memset(p, 0, sizeof *p);
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        rc = gtexparse_noise_param(r, key, p, err);
+        if (rc == 0)
+            rc = greader_unknown_param(r, GTEXPARSE_NOISE_KEYS, err);
+        if (rc < 0)
+            return rc;
+    }
+    return rc;
+}
+
+/* Both take the noise parameters only; the vtable says which is made. */
+static int parse_fractal(GReader *r, const void *vtable, void **object, GError *err)
+{
+    GNoiseParams p;
+    int rc = parse_noise(r, &p, err);
+    if (rc < 0)
+        return rc;
+    GGenerator *g = NULL;
+    rc = make(vtable, &p, &g, err);
+    return gtexparse_finish(r, rc, g, object, err);
+}
+
+GENERIC_TYPE(fbm, GKIND_GENERATOR, &fbm_class, parse_fractal, ggenerator_release);
+GENERIC_TYPE(turbulence, GKIND_GENERATOR, &turbulence_class, parse_fractal, ggenerator_release);

@@ -1,9 +1,15 @@
-/* wood.c - the wood generator: growth rings around the z axis, displaced by fbm. */
-#include "generic/plugin.h"
-#include "noise.h"
-#include "textures_builtin.h"
+/* wood.c - the wood generator: growth rings around the z axis, displaced by fbm:
+ *
+ *   generator NAME wood { NOISE  rings R  turbulence T  latewood W }
+ *
+ * NOISE: the noise parameters (space, frequency, seed, octaves, lacunarity, gain; generic/texture_parse.h). */
+#include <generic/generators.h>
+#include <generic/noise.h>
+#include <generic/plugin.h>
+#include <generic/texture_parse.h>
 
 #include <math.h>
+#include <string.h>
 
 typedef struct Wood {
     GGenerator base;
@@ -18,11 +24,11 @@ static double dsmoothstep(double t) { return 6.0 * t * (1.0 - t); }
 static double profile(const GGenerator *self, GSurfPoint *sp, GVec3 *grad)
 {
     const Wood *w = (const Wood *)self;
-    GVec3 x = gtexnoise_coords(self, sp), d = gvec3(0, 0, 0);
+    GVec3 x = ggenerator_coords(self, sp), d = gvec3(0, 0, 0);
     double rho = sqrt(x.x * x.x + x.y * x.y);
     double r = w->rings * rho;
     if (w->turbulence != 0.0)
-        r += w->turbulence * gtexnoise_fbm(&w->p, x, grad ? &d : NULL);
+        r += w->turbulence * gnoise_fbm(&w->p, x, grad ? &d : NULL);
     double g = r - floor(r), early = 1.0 - w->latewood;
     double v, slope;
     if (g < early) {
@@ -36,7 +42,7 @@ static double profile(const GGenerator *self, GSurfPoint *sp, GVec3 *grad)
         GVec3 dr = gvec3_scale(d, w->turbulence);
         if (rho > 0.0)
             dr = gvec3_madd(dr, gvec3(x.x / rho, x.y / rho, 0.0), w->rings);
-        *grad = gtexnoise_space_grad(self, gvec3_scale(dr, slope));
+        *grad = ggenerator_space_gradient(self, gvec3_scale(dr, slope));
     }
     return v;
 }
@@ -49,7 +55,7 @@ static int wood_gradient(const GGenerator *self, GSurfPoint *sp, GVec3 *grad)
     return G_OK;
 }
 
-const GGeneratorClass ggen_wood_class = {
+static const GGeneratorClass wood_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "wood",
     .description = "growth rings around the z axis displaced by noise, in [0, 1]",
@@ -63,7 +69,7 @@ int ggen_wood_create(const GNoiseParams *p, double rings, double turbulence, dou
 {
     *out = NULL;
     GNoiseParams q;
-    int rc = gtexnoise_params("wood", p, &q, err);
+    int rc = gnoise_params("wood", p, &q, err);
     if (rc != G_OK)
         return rc;
     if (!(rings > 0.0) || !isfinite(rings))
@@ -75,7 +81,7 @@ int ggen_wood_create(const GNoiseParams *p, double rings, double turbulence, dou
     if (!(latewood > 0.0 && latewood < 1.0))
         return gerror_set(err, G_ERR_INVALID, "wood: latewood must be within (0, 1), got %g", latewood);
     GGenerator *gen;
-    rc = gtexgen_new(&ggen_wood_class, q.space, sizeof(Wood), &gen, err);
+    rc = gtexgen_new(&wood_class, q.space, sizeof(Wood), &gen, err);
     if (rc != G_OK)
         return rc;
     Wood *w = (Wood *)gen;
@@ -87,4 +93,34 @@ int ggen_wood_create(const GNoiseParams *p, double rings, double turbulence, dou
     return G_OK;
 }
 
-GENERIC_TYPE(wood, GKIND_GENERATOR, &ggen_wood_class, gtexparse_wood, ggenerator_release);
+static int parse_wood(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    GNoiseParams p;
+    memset(&p, 0, sizeof p);
+    double rings = 8.0, turbulence = 0.5, latewood = 0.2;
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        rc = gtexparse_noise_param(r, key, &p, err);
+        if (rc == 0) {
+            if (strcmp(key, "rings") == 0)
+                rc = greader_number_in(r, 1e-9, 1e9, &rings, err);
+            else if (strcmp(key, "latewood") == 0)
+                rc = greader_number_in(r, 0.001, 0.999, &latewood, err);
+            else if (strcmp(key, "turbulence") == 0)
+                rc = greader_number(r, &turbulence, err);
+            else
+                rc = greader_unknown_param(r, GTEXPARSE_NOISE_KEYS ", rings, turbulence, latewood", err);
+        }
+        if (rc < 0)
+            return rc;
+    }
+    if (rc < 0)
+        return rc;
+    GGenerator *g = NULL;
+    rc = ggen_wood_create(&p, rings, turbulence, latewood, &g, err);
+    return gtexparse_finish(r, rc, g, object, err);
+}
+
+GENERIC_TYPE(wood, GKIND_GENERATOR, &wood_class, parse_wood, ggenerator_release);

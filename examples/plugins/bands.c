@@ -2,10 +2,11 @@
  *     value = 0.5 + 0.5 * sin(2 pi * dot(p, axis) / period)   over the object-space point p,
  * with its analytic gradient. Text format:  generator stripes bands { period 0.5 axis <1, 0, 0> }
  *
- * Built against the installed headers only; the library's functions come from the program that loads it. */
+ * Built against the installed headers only (the generator kit: gtexgen_new, gtexgen_free, gtexparse_finish);
+ * the library's functions come from the program that loads it. Its last line makes the file a module. */
 #include <generic/plugin.h>
-#include <generic/reader.h>
 #include <generic/texture.h>
+#include <generic/texture_parse.h>
 
 #include <math.h>
 #include <string.h>
@@ -15,8 +16,6 @@ typedef struct Bands {
     GVec3 axis; /* unit */
     double period;
 } Bands;
-
-static void bands_destroy(GGenerator *self) { gmem_free(self); }
 
 static double bands_value(const GGenerator *self, GSurfPoint *sp)
 {
@@ -36,7 +35,7 @@ static const GGeneratorClass bands_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "bands",
     .description = "smooth parallel bands (plug-in)",
-    .destroy = bands_destroy,
+    .destroy = gtexgen_free,
     .value = bands_value,
     .gradient = bands_gradient,
 };
@@ -60,26 +59,16 @@ static int parse_bands(GReader *r, const void *vtable, void **object, GError *er
         if (rc < 0)
             return rc;
     }
-    Bands *b = gmem_calloc(1, sizeof *b);
-    if (!b)
-        return greader_error(r, err, "bands: out of memory");
-    if ((rc = ggenerator_init(&b->base, &bands_class, GGENERATOR_SPACE_OBJECT, err)) != G_OK) {
-        gmem_free(b);
+    if (rc < 0)
         return rc;
+    GGenerator *g = NULL;
+    rc = gtexgen_new(&bands_class, GGENERATOR_SPACE_OBJECT, sizeof(Bands), &g, err);
+    if (rc == G_OK) {
+        ((Bands *)g)->axis = gvec3_normalize(axis);
+        ((Bands *)g)->period = period;
     }
-    b->axis = gvec3_normalize(axis);
-    b->period = period;
-    *object = &b->base;
-    return G_OK;
+    return gtexparse_finish(r, rc, g, object, err);
 }
 
-static void release(void *p) { ggenerator_unref(p); }
-
-GENERIC_MODULE_EXPORT const int generic_module_abi = GMODULE_ABI_VERSION;
-
-GENERIC_MODULE_EXPORT int generic_module_init(GModuleApi *api, GError *err)
-{
-    static const GTypeInfo type = {GKIND_GENERATOR, "bands", &bands_class, parse_bands,
-                                   "smooth parallel bands (plug-in)", release};
-    return api->add_type(api, &type, err);
-}
+GENERIC_TYPE(bands, GKIND_GENERATOR, &bands_class, parse_bands, ggenerator_release);
+GENERIC_MODULE(&gtype_bands);

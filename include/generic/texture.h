@@ -1,14 +1,14 @@
 /* texture.h - the texture generator interface (GGenerator) and its evaluation functions.
  *
  * A texture tree is a tree of materials: its leaves are ordinary materials and its inner nodes
- * (interpolate, select, spline, bump, scale, image, transform; include/generic/textures.h) implement
+ * (interpolate, select, spline, bump, scale, image, transform; include/generic/nodes.h) implement
  * the whole material interface by delegating to their children. What varies over the surface comes
  * from generators: a generator maps a surface point to a scalar (checker: 0 or 1, noise: [0, 1],
  * surface index: 0, 1, 2, ...) and, for bump mapping, to the gradient of that scalar.
  *
  * Spaces. Every generator instance says which coordinates it is a function of (GGeneratorSpace):
  * (u, v), the object-space point, the world-space point, or nothing. The space decides what the
- * gradient means and what a transform node (textures.h) changes for it: transform nodes move (u, v)
+ * gradient means and what a transform node (nodes.h) changes for it: transform nodes move (u, v)
  * and the object-space point of their subtree; world-space generators ignore them.
  *
  * Caching. Texture nodes evaluate generators through ggenerator_cached_value/ggenerator_cached_gradient,
@@ -83,6 +83,25 @@ void ggenerator_unref(GGenerator *g);
 void ggenerator_release(void *g);
 /** The generator's type keyword. */
 const char *ggenerator_name(const GGenerator *g);
+
+/** The coordinates a generator of space g->space reads: (u, v, 0), sp->object_point or sp->point (object
+ * space for GGENERATOR_SPACE_NONE). */
+static inline GVec3 ggenerator_coords(const GGenerator *g, const GSurfPoint *sp)
+{
+    switch (g->space) {
+    case GGENERATOR_SPACE_UV: return gvec3(sp->u, sp->v, 0.0);
+    case GGENERATOR_SPACE_WORLD: return sp->point;
+    default: return sp->object_point;
+    }
+}
+/** A gradient with respect to ggenerator_coords as the generator's gradient method returns it (z dropped for
+ * (u, v) generators). */
+static inline GVec3 ggenerator_space_gradient(const GGenerator *g, GVec3 d)
+{
+    if (g->space == GGENERATOR_SPACE_UV)
+        d.z = 0.0;
+    return d;
+}
 
 /** The value at the point, computed now (not cached). */
 double ggenerator_value(const GGenerator *g, GSurfPoint *sp);
