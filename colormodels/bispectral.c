@@ -52,8 +52,11 @@
  *          - a matrix whose excitation and emission grids share no wavelength has no diagonal and is
  *            refused. */
 #include "generic/plugin.h"
-#include "generic/color.h"
-#include "spectral_common.h"
+#include "generic/spectral.h"
+#include "generic/spectral_kernels.h"
+
+#include <math.h>
+#include <string.h>
 
 enum { BI_MAX = 128 };
 

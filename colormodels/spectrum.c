@@ -3,12 +3,11 @@
  * 300..830 nm). A value is n floats, a light or a reflectance; every operation works sample by sample.
  *
  * to_nm interpolates linearly between samples (0 outside the grid); from_nm takes the hat-weighted
- * average around each sample (energy conserving, the identity at 1 nm; see spectral_common.c). to_xyz
+ * average around each sample (energy conserving, the identity at 1 nm; see include/generic/spectral.h). to_xyz
  * and brightness use weights computed once from the CIE tables through that same interpolation, so
  * they agree with the nm path while costing n multiply-adds. */
 #include "generic/plugin.h"
-#include "generic/color.h"
-#include "spectral_common.h"
+#include "generic/spectral.h"
 
 /* The model's priv struct is a plain GSpectral. */
 static int spectrum_init(GColorModel *self, const GColorModelOptions *opt, GError *err)

@@ -3,17 +3,16 @@
  *
  * to_nm reconstructs the natural cubic spline through the nine samples (second derivative 0 at both
  * ends), evaluated from a table of the nine cardinal splines at every nm built once. from_nm samples
- * with the hat-weighted average of half-width 50 nm (spectral_common.c): each nm hands its energy to
+ * with the hat-weighted average of half-width 50 nm (include/generic/spectral.h): each nm hands its energy to
  * the two samples around it in proportion to its distance, so a narrow emission line is kept with its
  * full energy instead of being missed between samples, and a constant stays constant. Sampling then
  * reconstructing smooths a spectrum (features narrower than ~100 nm are lost): this model trades
  * accuracy for size: the hat-sampled spectral primaries come back up to 0.12 off in RGB. from_rgb is
- * therefore corrected to be exact (spectral_common.c), at a price: saturated reflectances get samples
+ * therefore corrected to be exact (include/generic/spectral.h), at a price: saturated reflectances get samples
  * outside [0, 1] (down to -0.13 and up to 1.13 for the sRGB primaries), which nine spline samples need
  * to reach their chroma. The grid is fixed; options other than its own values are refused. */
 #include "generic/plugin.h"
-#include "generic/color.h"
-#include "spectral_common.h"
+#include "generic/spectral.h"
 
 enum { N9 = 9 };
 
@@ -59,13 +58,10 @@ static void build_spline(Spectrum9 *p, GSpectralGrid g)
 
 static int spectrum9_init(GColorModel *self, const GColorModelOptions *opt, GError *err)
 {
-    if (opt && ((opt->step_nm != 0.0 && opt->step_nm != 50.0) || (opt->min_nm != 0.0 && opt->min_nm != 380.0) ||
-                (opt->max_nm != 0.0 && opt->max_nm != 780.0)))
-        return gerror_set(err, G_ERR_INVALID,
-                          "colour model 'spectrum9' has a fixed grid (380..780 nm every 50 nm); use 'spectrum' "
-                          "for another grid");
     GSpectralGrid grid = {380.0, 50.0, N9};
-    int rc = gspectral_model_alloc(self, sizeof(Spectrum9), N9, err);
+    int rc = gspectral_grid_check_fixed("spectrum9", opt, grid, err);
+    if (rc == G_OK)
+        rc = gspectral_model_alloc(self, sizeof(Spectrum9), N9, err);
     if (rc != G_OK)
         return rc;
     Spectrum9 *p = self->priv;

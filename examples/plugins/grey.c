@@ -6,7 +6,10 @@
  *
  * Text format:  colormodel grey
  *
- * Built against the installed headers only; the library's functions come from the program that loads it. */
+ * Built against the installed headers only; the library's functions come from the program that loads it. The
+ * record and the GENERIC_MODULE line at the end make the file a module; without that line it would be a built-in
+ * colour model in colormodels/. It is not a sampled spectrum, so it does not use the spectral kit
+ * (include/generic/spectral.h); README's "Adding a colour model" shows one that does. */
 #include <generic/plugin.h>
 
 #include <math.h>
@@ -124,12 +127,5 @@ static const GColorModelClass grey_class = {
     .from_rgb = grey_from_rgb,
 };
 
-static void release(void *p) { gcolormodel_destroy(p); }
-
-GENERIC_MODULE_EXPORT const int generic_module_abi = GMODULE_ABI_VERSION;
-
-GENERIC_MODULE_EXPORT int generic_module_init(GModuleApi *api, GError *err)
-{
-    static const GTypeInfo type = {GKIND_COLORMODEL, "grey", &grey_class, NULL, "luminance only (plug-in)", release};
-    return api->add_type(api, &type, err);
-}
+GENERIC_TYPE(grey, GKIND_COLORMODEL, &grey_class, NULL, NULL);
+GENERIC_MODULE(&gtype_grey);

@@ -1,4 +1,5 @@
-/* spectral_common.c - grids, resampling and colorimetric tables shared by the spectral colour models.
+/* spectral.c - the spectral kit (include/generic/spectral.h): grids, resampling, the colorimetric tables
+ * and the operations of a plain sampled spectrum, for the built-in sampled models and for modules.
  *
  * Sampling (from_nm and every other change of grid onto a coarser one) is a hat-weighted average: the
  * destination sample at x takes the source samples within one destination step of x, weighted by the
@@ -7,9 +8,12 @@
  * between two samples splits between them in proportion to its distance instead of being missed), and
  * a constant stays the same constant; on an equal grid the map is the identity. Going onto a finer grid
  * is plain linear interpolation, the adjoint operation, which keeps the trapezoid integral. */
-#include "spectral_common.h"
+#include "generic/spectral.h"
+#include "generic/spectral_kernels.h"
 
+#include <math.h>
 #include <stdint.h>
+#include <string.h>
 
 #define EPS 1e-9
 
@@ -39,6 +43,22 @@ int gspectral_grid_from_options(const char *model, const GColorModelOptions *opt
     grid->min = lo;
     grid->step = step;
     grid->n = (int)whole + 1;
+    return G_OK;
+}
+
+int gspectral_grid_check_fixed(const char *model, const GColorModelOptions *opt, GSpectralGrid grid, GError *err)
+{
+    if (!(grid.n >= 1 && grid.n <= GSPECTRAL_MAX_SAMPLES && isfinite(grid.min) && isfinite(grid.step) &&
+          grid.step > 0.0))
+        return gerror_set(err, G_ERR_INVALID, "colour model '%s': its fixed grid (%d samples at %g nm every %g nm) "
+                          "is not a grid", model, grid.n, grid.min, grid.step);
+    double max = gspectral_grid_nm(grid, grid.n - 1);
+    if (opt && ((opt->step_nm != 0.0 && opt->step_nm != grid.step) ||
+                (opt->min_nm != 0.0 && opt->min_nm != grid.min) || (opt->max_nm != 0.0 && opt->max_nm != max)))
+        return gerror_set(err, G_ERR_INVALID,
+                          "colour model '%s' has a fixed grid (%g..%g nm every %g nm); use 'spectrum' for another "
+                          "grid",
+                          model, grid.min, max, grid.step);
     return G_OK;
 }
 
@@ -332,6 +352,14 @@ int gspectral_model_init(GColorModel *m, const GColorModelOptions *opt, double d
     int rc = gspectral_grid_from_options(m->cls->name, opt, def_step, max_n, &grid, err);
     if (rc == G_OK)
         rc = gspectral_model_alloc(m, sizeof(GSpectral), matrices ? grid.n * grid.n : grid.n, err);
+    return rc == G_OK ? gspectral_init(m, m->priv, grid, 1, err) : rc;
+}
+
+int gspectral_model_init_fixed(GColorModel *m, const GColorModelOptions *opt, GSpectralGrid grid, GError *err)
+{
+    int rc = gspectral_grid_check_fixed(m->cls->name, opt, grid, err);
+    if (rc == G_OK)
+        rc = gspectral_model_alloc(m, sizeof(GSpectral), grid.n, err);
     return rc == G_OK ? gspectral_init(m, m->priv, grid, 1, err) : rc;
 }
 

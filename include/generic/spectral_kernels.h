@@ -1,0 +1,199 @@
+/* spectral_kernels.h - element-wise kernels on float arrays (sums, products, scaling, dot products,
+ * weighted magnitudes, division, powers) for colour models whose values are arrays of samples. Header only:
+ * every kernel is static inline. The gspectral_* operations of spectral.h are built on them, and a model with
+ * values of its own shape (bispectral's matrices) uses them directly.
+ *
+ * out may alias an operand in every kernel (each block is loaded before it is stored). With GCC or clang they
+ * work on 4-float vectors (memcpy'd in and out, so no alignment is assumed): -O2 alone does not vectorise a
+ * loop whose operands may alias. */
+#ifndef GENERIC_SPECTRAL_KERNELS_H
+#define GENERIC_SPECTRAL_KERNELS_H
+
+#include <math.h>
+#include <string.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(__GNUC__)
+/** Defined when the kernels use 4-float vectors. */
+#define GSPECTRAL_VECTOR 1
+/** 4 floats in one vector register. */
+typedef float gspectral_v4 __attribute__((vector_size(16)));
+/** 4 ints, for bit masks on gspectral_v4. */
+typedef int gspectral_v4i __attribute__((vector_size(16)));
+
+/** The 4 floats at p, any alignment. */
+static inline gspectral_v4 gspectral_vload(const float *p)
+{
+    gspectral_v4 v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+/** Stores v at p, any alignment. */
+static inline void gspectral_vstore(float *p, gspectral_v4 v) { memcpy(p, &v, sizeof v); }
+#endif
+
+/** The element-wise operations of gspectral_kmap. */
+typedef enum GSpectralOp { GSPECTRAL_ADD, GSPECTRAL_MUL } GSpectralOp;
+
+#ifdef GSPECTRAL_VECTOR
+/** x op y on 4 lanes. */
+static inline gspectral_v4 gspectral_vop(GSpectralOp op, gspectral_v4 x, gspectral_v4 y)
+{
+    return op == GSPECTRAL_ADD ? x + y : x * y;
+}
+#endif
+
+/** o = a op b. The kernels pass op as a constant, so once inlined the choice costs nothing. */
+static inline void gspectral_kmap(GSpectralOp op, float *o, const float *a, const float *b, int n)
+{
+    int i = 0;
+#ifdef GSPECTRAL_VECTOR
+    for (; i + 8 <= n; i += 8) { /* both blocks are loaded before either is stored */
+        gspectral_v4 x0 = gspectral_vop(op, gspectral_vload(a + i), gspectral_vload(b + i));
+        gspectral_v4 x1 = gspectral_vop(op, gspectral_vload(a + i + 4), gspectral_vload(b + i + 4));
+        gspectral_vstore(o + i, x0);
+        gspectral_vstore(o + i + 4, x1);
+    }
+    for (; i + 4 <= n; i += 4)
+        gspectral_vstore(o + i, gspectral_vop(op, gspectral_vload(a + i), gspectral_vload(b + i)));
+#endif
+    for (; i < n; i++)
+        o[i] = op == GSPECTRAL_ADD ? a[i] + b[i] : a[i] * b[i];
+}
+
+/** o = a + b */
+static inline void gspectral_kadd(float *o, const float *a, const float *b, int n)
+{
+    gspectral_kmap(GSPECTRAL_ADD, o, a, b, n);
+}
+
+/** o = a * b */
+static inline void gspectral_kmul(float *o, const float *a, const float *b, int n)
+{
+    gspectral_kmap(GSPECTRAL_MUL, o, a, b, n);
+}
+
+/** o = a * s */
+static inline void gspectral_kscale(float *o, const float *a, float s, int n)
+{
+    int i = 0;
+#ifdef GSPECTRAL_VECTOR
+    gspectral_v4 sv = {s, s, s, s};
+    for (; i + 4 <= n; i += 4)
+        gspectral_vstore(o + i, gspectral_vload(a + i) * sv);
+#endif
+    for (; i < n; i++)
+        o[i] = a[i] * s;
+}
+
+/** o += a * s */
+static inline void gspectral_kaxpy(float *o, const float *a, float s, int n)
+{
+    int i = 0;
+#ifdef GSPECTRAL_VECTOR
+    gspectral_v4 sv = {s, s, s, s};
+    for (; i + 4 <= n; i += 4)
+        gspectral_vstore(o + i, gspectral_vload(o + i) + gspectral_vload(a + i) * sv);
+#endif
+    for (; i < n; i++)
+        o[i] += a[i] * s;
+}
+
+/** The terms the sums below add up: |a| (b is not used: pass a), a * b, and a * |b| (weights a). */
+typedef enum GSpectralTerm { GSPECTRAL_ABS, GSPECTRAL_DOT, GSPECTRAL_WABS } GSpectralTerm;
+
+/** One term t of a and b. */
+static inline float gspectral_term(GSpectralTerm t, float a, float b)
+{
+    return t == GSPECTRAL_ABS ? fabsf(a) : t == GSPECTRAL_DOT ? a * b : a * fabsf(b);
+}
+
+#ifdef GSPECTRAL_VECTOR
+/** |x| on 4 lanes (the sign bits cleared). */
+static inline gspectral_v4 gspectral_vabs(gspectral_v4 x)
+{
+    gspectral_v4i mask = {0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff};
+    return (gspectral_v4)((gspectral_v4i)x & mask);
+}
+
+/** The terms t of a and b on 4 lanes. */
+static inline gspectral_v4 gspectral_vterm(GSpectralTerm t, gspectral_v4 a, gspectral_v4 b)
+{
+    return t == GSPECTRAL_ABS ? gspectral_vabs(a) : t == GSPECTRAL_DOT ? a * b : a * gspectral_vabs(b);
+}
+
+/** The terms of the first multiple of 8 samples summed in four lanes (two accumulators: the sum's latency,
+ * not the loads, bounds a single one); *done receives how many samples that was. */
+static inline gspectral_v4 gspectral_vsum(GSpectralTerm t, const float *a, const float *b, int n, int *done)
+{
+    gspectral_v4 acc0 = {0, 0, 0, 0}, acc1 = {0, 0, 0, 0};
+    int i = 0;
+    for (; i + 8 <= n; i += 8) {
+        acc0 += gspectral_vterm(t, gspectral_vload(a + i), gspectral_vload(b + i));
+        acc1 += gspectral_vterm(t, gspectral_vload(a + i + 4), gspectral_vload(b + i + 4));
+    }
+    *done = i;
+    return acc0 + acc1;
+}
+#endif
+
+/** The sum of the terms t of a and b in float; the kernels pass t as a constant. */
+static inline float gspectral_ksum(GSpectralTerm t, const float *a, const float *b, int n)
+{
+    int i = 0;
+    float s = 0.0f;
+#ifdef GSPECTRAL_VECTOR
+    gspectral_v4 acc = gspectral_vsum(t, a, b, n, &i);
+    s = (acc[0] + acc[1]) + (acc[2] + acc[3]);
+#endif
+    for (; i < n; i++)
+        s += gspectral_term(t, a[i], b[i]);
+    return s;
+}
+
+/** sum of w * |a|, in double after the vector part */
+static inline double gspectral_kbright(const float *w, const float *a, int n)
+{
+    int i = 0;
+    double s = 0.0;
+#ifdef GSPECTRAL_VECTOR
+    gspectral_v4 acc = gspectral_vsum(GSPECTRAL_WABS, w, a, n, &i);
+    s = (double)acc[0] + acc[1] + acc[2] + acc[3];
+#endif
+    for (; i < n; i++)
+        s += w[i] * fabsf(a[i]);
+    return s;
+}
+
+/** sum of |a| */
+static inline float gspectral_kabs(const float *a, int n) { return gspectral_ksum(GSPECTRAL_ABS, a, a, n); }
+
+/** sum of a * b */
+static inline float gspectral_kdot(const float *a, const float *b, int n)
+{
+    return gspectral_ksum(GSPECTRAL_DOT, a, b, n);
+}
+
+/** o = a / b sample by sample, zero where b is zero */
+static inline void gspectral_kdiv(float *o, const float *a, const float *b, int n)
+{
+    for (int i = 0; i < n; i++)
+        o[i] = b[i] != 0.0f ? a[i] / b[i] : 0.0f;
+}
+
+/** o = a ^ e sample by sample; non-positive samples give 0 (1 for e = 0), as in the rgb model */
+static inline void gspectral_kpow(float *o, const float *a, double e, int n)
+{
+    float fe = (float)e, zero = e == 0.0 ? 1.0f : 0.0f;
+    for (int i = 0; i < n; i++)
+        o[i] = a[i] > 0.0f ? powf(a[i], fe) : zero;
+}
+
+#ifdef __cplusplus
+}
+#endif
+#endif
