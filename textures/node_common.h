@@ -5,7 +5,7 @@
 
 #include "generic/material.h"
 #include "generic/textures.h"
-#include "materials/params.h" /* gmat_new: nodes are built like the built-in materials */
+#include "generic/material_kit.h" /* gmat_new: nodes are built like the built-in materials */
 
 /** Most children a blend evaluates at once (a cubic spline segment). */
 #define GTEX_BLEND_MAX 4

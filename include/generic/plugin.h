@@ -43,8 +43,9 @@ extern "C" {
 
 /** Version of the module interface: GModuleApi, GTypeInfo, GParseFn, the reader API, the vtables of every
  * kind and the layout of the structures they pass (GSurfPoint). Raised whenever any of them changes
- * incompatibly. 2: GSurfPoint grew by the cache scopes of transform nodes and the footprint ellipse. */
-#define GMODULE_ABI_VERSION 2
+ * incompatibly. 2: GSurfPoint grew by the cache scopes of transform nodes and the footprint ellipse.
+ * 3: GError grew by the position and parameter fields. */
+#define GMODULE_ABI_VERSION 3
 
 /** Name of the exported `const int` holding the module's GMODULE_ABI_VERSION. */
 #define GMODULE_ABI_SYMBOL "generic_module_abi"
