@@ -166,6 +166,28 @@ $(BUILD)/plugins/failing_init.so: tests/plugins/bad_module.c $(PLUGIN_HDR)
 $(BUILD)/plugins/no_init.so: tests/plugins/bad_module.c $(PLUGIN_HDR)
 	$(CC) $(PLUGIN_CFLAGS) -DNO_INIT -o $@ $<
 
+# ---- built-in files as run-time modules: the proof that a type's file is self-contained ----
+# Each file of BUILTIN_MODULES is compiled as it is in the tree, plus the one line `GENERIC_MODULE(&gtype_NAME);`
+# (NAME: the file's base name), into $(BUILD)/modules/NAME.so: against the installed headers only, not linked with
+# libgeneric, its own symbols hidden (-fvisibility=hidden) so that none binds to the program's built-in copy.
+# tests/test_builtin_modules.c loads them into a registry that lacks those built-ins.
+BUILTIN_MODULES := materials/lambert.c colormodels/rgb.c
+MODULE_SO := $(patsubst %.c,$(BUILD)/modules/%.so,$(notdir $(BUILTIN_MODULES)))
+.SECONDARY: $(MODULE_SO:%.so=%_module.c)
+
+all: modules
+plugins: modules
+.PHONY: modules
+modules: $(MODULE_SO)
+
+MODULE_PCT := %
+$(BUILD)/modules/%_module.c: $$(filter $$(MODULE_PCT)/$$*.c,$(BUILTIN_MODULES))
+	@mkdir -p $(dir $@)
+	{ cat $<; echo; echo 'GENERIC_MODULE(&gtype_$*);'; } > $@
+
+$(BUILD)/modules/%.so: $(BUILD)/modules/%_module.c $(PLUGIN_HDR)
+	$(CC) $(PLUGIN_CFLAGS) -fvisibility=hidden -o $@ $< -lm
+
 # ---- fuzzing (tests/fuzz/): libFuzzer targets built with clang, -fsanitize=fuzzer,address,undefined ----
 # make fuzz [FUZZ_SECONDS=30] [FUZZ_TARGETS="reader bfc"] [FUZZ_SEED=N] builds the library's sources with clang
 # into build/fuzz/ (without OpenMP: one thread keeps a run reproducible) and runs each target
