@@ -144,7 +144,9 @@ PLUGIN_INC := $(BUILD)/plugins/include
 PLUGIN_HDR := $(patsubst include/generic/%,$(PLUGIN_INC)/generic/%,$(wildcard include/generic/*.h))
 PLUGIN_SO  := $(PLUGIN_SRC:examples/plugins/%.c=$(BUILD)/plugins/%.so) \
               $(BUILD)/plugins/bad_abi.so $(BUILD)/plugins/failing_init.so $(BUILD)/plugins/no_init.so
-PLUGIN_CFLAGS := -std=c11 -D_GNU_SOURCE $(OPT) -g -fPIC -shared $(WARN) $(SANFLAGS) -I$(PLUGIN_INC)
+# -fvisibility=hidden: a module's own symbols never bind to the program's copies (only the two GENERIC_MODULE_EXPORT
+# symbols are exported).
+PLUGIN_CFLAGS := -std=c11 -D_GNU_SOURCE $(OPT) -g -fPIC -shared -fvisibility=hidden $(WARN) $(SANFLAGS) -I$(PLUGIN_INC)
 
 .PHONY: plugins
 all: plugins
@@ -165,6 +167,28 @@ $(BUILD)/plugins/failing_init.so: tests/plugins/bad_module.c $(PLUGIN_HDR)
 
 $(BUILD)/plugins/no_init.so: tests/plugins/bad_module.c $(PLUGIN_HDR)
 	$(CC) $(PLUGIN_CFLAGS) -DNO_INIT -o $@ $<
+
+# ---- built-in files as run-time modules: the proof that a type's file is self-contained ----
+# Each file of BUILTIN_MODULES is compiled as it is in the tree, plus the one line `GENERIC_MODULE(&gtype_NAME);`
+# (NAME: the file's base name), into $(BUILD)/modules/NAME.so: against the installed headers only, not linked with
+# libgeneric, its own symbols hidden (PLUGIN_CFLAGS) so that none binds to the program's built-in copy.
+# tests/test_builtin_modules.c loads them into a registry that lacks those built-ins.
+BUILTIN_MODULES := materials/lambert.c colormodels/rgb.c
+MODULE_SO := $(patsubst %.c,$(BUILD)/modules/%.so,$(notdir $(BUILTIN_MODULES)))
+.SECONDARY: $(MODULE_SO:%.so=%_module.c)
+
+all: modules
+plugins: modules
+.PHONY: modules
+modules: $(MODULE_SO)
+
+MODULE_PCT := %
+$(BUILD)/modules/%_module.c: $$(filter $$(MODULE_PCT)/$$*.c,$(BUILTIN_MODULES))
+	@mkdir -p $(dir $@)
+	{ cat $<; echo; echo 'GENERIC_MODULE(&gtype_$*);'; } > $@
+
+$(BUILD)/modules/%.so: $(BUILD)/modules/%_module.c $(PLUGIN_HDR)
+	$(CC) $(PLUGIN_CFLAGS) -o $@ $< -lm
 
 # ---- fuzzing (tests/fuzz/): libFuzzer targets built with clang, -fsanitize=fuzzer,address,undefined ----
 # make fuzz [FUZZ_SECONDS=30] [FUZZ_TARGETS="reader bfc"] [FUZZ_SEED=N] builds the library's sources with clang

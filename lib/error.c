@@ -4,13 +4,31 @@
 #include <stdarg.h>
 #include <stdio.h>
 
+static void vset(GError *err, int code, const char *param, const char *fmt, va_list ap)
+{
+    err->code = code;
+    err->line = err->col = 0;
+    snprintf(err->param, sizeof err->param, "%s", param ? param : "");
+    vsnprintf(err->message, sizeof err->message, fmt, ap);
+}
+
 int gerror_set(GError *err, int code, const char *fmt, ...)
 {
     if (err) {
         va_list ap;
-        err->code = code;
         va_start(ap, fmt);
-        vsnprintf(err->message, sizeof err->message, fmt, ap);
+        vset(err, code, NULL, fmt, ap);
+        va_end(ap);
+    }
+    return code;
+}
+
+int gerror_set_param(GError *err, int code, const char *param, const char *fmt, ...)
+{
+    if (err) {
+        va_list ap;
+        va_start(ap, fmt);
+        vset(err, code, param, fmt, ap);
         va_end(ap);
     }
     return code;
@@ -20,6 +38,8 @@ void gerror_clear(GError *err)
 {
     if (err) {
         err->code = G_OK;
+        err->line = err->col = 0;
+        err->param[0] = '\0';
         err->message[0] = '\0';
     }
 }

@@ -53,7 +53,12 @@ static int fail(const GLexer *lx, GError *err, int line, int col, const char *fm
 {
     char msg[400];
     snprintf(msg, sizeof msg, fmt, arg);
-    return gerror_set(err, G_ERR_PARSE, "%s:%d:%d: %s", lx->name, line, col, msg);
+    gerror_set(err, G_ERR_PARSE, "%s:%d:%d: %s", lx->name, line, col, msg);
+    if (err) {
+        err->line = line;
+        err->col = col;
+    }
+    return G_ERR_PARSE;
 }
 
 static void printable(int c, char *buf, size_t size)

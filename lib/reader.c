@@ -17,7 +17,12 @@ static int verror_at(GReader *r, GError *err, int code, int line, int col, const
     char msg[sizeof err->message];
     vsnprintf(msg, sizeof msg, fmt, ap);
     r->located = 1;
-    return gerror_set(err, code, "%s:%d:%d: %s", r->src ? r->src->name : "?", line, col, msg);
+    gerror_set(err, code, "%s:%d:%d: %s", r->src ? r->src->name : "?", line, col, msg);
+    if (err) {
+        err->line = line;
+        err->col = col;
+    }
+    return code;
 }
 
 int greader_error_at(GReader *r, GError *err, int code, int line, int col, const char *fmt, ...)
@@ -38,6 +43,24 @@ int greader_error(GReader *r, GError *err, const char *fmt, ...)
     return rc;
 }
 
+/* Where the innermost entry being read wrote its parameter `name`: 1 with *line, *col, else 0. */
+static int param_position(const GReader *r, const char *name, int *line, int *col)
+{
+    for (int i = r->nframes - 1; i >= 0; i--) {
+        const GReaderFrame *f = &r->frames[i];
+        if (f->is_block)
+            continue;
+        for (int k = 0; k < f->nkeys; k++)
+            if (strcmp(f->keys[k].name, name) == 0) {
+                *line = f->keys[k].line;
+                *col = f->keys[k].col;
+                return 1;
+            }
+        return 0;
+    }
+    return 0;
+}
+
 int greader_locate(GReader *r, GError *err)
 {
     if (!err)
@@ -45,9 +68,16 @@ int greader_locate(GReader *r, GError *err)
     int code = err->code < 0 ? err->code : G_ERR_PARSE;
     if (r->located)
         return code;
+    int line = r->cur.tok.line, col = r->cur.tok.col;
+    char param[sizeof err->param];
+    snprintf(param, sizeof param, "%s", err->param);
+    if (param[0])
+        param_position(r, param, &line, &col);
     char msg[sizeof err->message];
     snprintf(msg, sizeof msg, "%s", err->message[0] ? err->message : gstatus_string(code));
-    return greader_error_at(r, err, code, r->cur.tok.line, r->cur.tok.col, "%s", msg);
+    greader_error_at(r, err, code, line, col, "%s", msg);
+    memcpy(err->param, param, sizeof param);
+    return code;
 }
 
 void greader_position(GReader *r, int *line, int *col)
@@ -130,7 +160,7 @@ void greader_pop_frames(GReader *r, int n)
     while (r->nframes > n) {
         GReaderFrame *f = &r->frames[--r->nframes];
         for (int i = 0; i < f->nkeys; i++)
-            gmem_free(f->keys[i]);
+            gmem_free(f->keys[i].name);
         gmem_free(f->keys);
     }
 }

@@ -24,15 +24,20 @@ const GColorModel *glibrary_model_or_null(const GLibrary *lib);
 
 /* ---- the reader (lib/reader.c) ---- */
 
+/** A parameter name of an entry and where it was written (a constructor's complaint about it is placed there). */
+typedef struct GReaderKey {
+    char *name;
+    int line, col;
+} GReaderKey;
+
 /** A frame on the nesting stack: an entry being parsed or a positional block. */
 typedef struct GReaderFrame {
     int is_block;          /* 1 for greader_block_begin blocks */
     int state;             /* entries: 0 = block not looked for, 1 = inside `{`, 2 = done */
     int open_line, open_col;
     const GTypeInfo *type; /* entries: the type being read */
-    char **keys;           /* entries: parameter names seen */
+    GReaderKey *keys;      /* entries: parameter names seen, in order */
     int nkeys, capkeys;
-    int key_line, key_col; /* position of the last key */
 } GReaderFrame;
 
 typedef struct GReaderSource GReaderSource;

@@ -280,24 +280,25 @@ int greader_param(GReader *r, const char **key, GError *err)
                                 f->type->name, found);
     }
     for (int i = 0; i < f->nkeys; i++)
-        if (strcmp(f->keys[i], t.text) == 0)
+        if (strcmp(f->keys[i].name, t.text) == 0)
             return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "%s %s: parameter '%s' is given twice",
                                     gkind_name(f->type->kind), f->type->name, t.text);
     if (f->nkeys == f->capkeys) {
         int cap = f->capkeys ? f->capkeys * 2 : 8;
-        char **k = gmem_realloc(f->keys, (size_t)cap * sizeof *k);
+        GReaderKey *k = gmem_realloc(f->keys, (size_t)cap * sizeof *k);
         if (!k)
             return greader_error_at(r, err, G_ERR_NOMEM, t.line, t.col, "out of memory");
         f->keys = k;
         f->capkeys = cap;
     }
-    if (!(f->keys[f->nkeys] = gmem_strdup(t.text)))
+    GReaderKey *k = &f->keys[f->nkeys];
+    if (!(k->name = gmem_strdup(t.text)))
         return greader_error_at(r, err, G_ERR_NOMEM, t.line, t.col, "out of memory");
+    k->line = t.line;
+    k->col = t.col;
     f->nkeys++;
     greader_next(r, NULL, err);
     memcpy(r->keybuf, t.text, strlen(t.text) + 1);
-    f->key_line = t.line;
-    f->key_col = t.col;
     *key = r->keybuf;
     return 1;
 }
@@ -307,9 +308,9 @@ int greader_unknown_param(GReader *r, const char *expected_names, GError *err)
     GReaderFrame *f = entry_frame(r);
     if (!f || f->is_block || !f->nkeys)
         return greader_error(r, err, "unknown parameter");
-    return greader_error_at(r, err, G_ERR_PARSE, f->key_line, f->key_col,
-                            "%s %s: unknown parameter '%s' (expected one of: %s)", gkind_name(f->type->kind),
-                            f->type->name, f->keys[f->nkeys - 1], expected_names ? expected_names : "none");
+    const GReaderKey *k = &f->keys[f->nkeys - 1];
+    return greader_error_at(r, err, G_ERR_PARSE, k->line, k->col, "%s %s: unknown parameter '%s' (expected one of: %s)",
+                            gkind_name(f->type->kind), f->type->name, k->name, expected_names ? expected_names : "none");
 }
 
 int greader_block_begin(GReader *r, GError *err)

@@ -1,12 +1,11 @@
 /* dielectric.c - a smooth dielectric interface: dispersion formulas, unpolarised Fresnel reflection and
  * refraction, total internal reflection, Beer-Lambert absorption inside. */
-#include "generic/plugin.h"
-#include "material_parsers.h"
+#include "generic/material_kit.h"
 #include "generic/materials.h"
-#include "materials_builtin.h"
-#include "params.h"
+#include "generic/plugin.h"
 
 #include <math.h>
+#include <string.h>
 
 typedef struct Dielectric {
     GMaterial base;
@@ -207,7 +206,7 @@ static int dielectric_opaque(const GMaterial *self, GSurfPoint *sp)
     return 0;
 }
 
-const GMaterialClass gmaterial_dielectric = {
+static const GMaterialClass dielectric_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "dielectric",
     .description = "smooth dielectric: Fresnel reflection and refraction, dispersion, Beer-Lambert absorption",
@@ -229,7 +228,7 @@ int gdielectric_create(const GColorModel *model, const GDielectricParams *params
     int rc = gdispersion_check(&params->index, err);
     GMaterial *m;
     if (rc == G_OK)
-        rc = gmat_new(&gmaterial_dielectric, model, sizeof(Dielectric), &m, err);
+        rc = gmat_new(&dielectric_class, model, sizeof(Dielectric), &m, err);
     if (rc != G_OK)
         return rc;
     Dielectric *d = (Dielectric *)m;
@@ -237,13 +236,15 @@ int gdielectric_create(const GColorModel *model, const GDielectricParams *params
     if (gcolor_alloc(&d->index, model) != G_OK)
         rc = gerror_set(err, G_ERR_NOMEM, "dielectric: out of memory");
     if (rc == G_OK && (rc = index_color(&d->disp, &d->index)) != G_OK)
-        rc = gerror_set(err, rc, "dielectric: cannot express the index in model '%s'", gcolormodel_name(model));
+        rc = gerror_set_param(err, rc, "index", "dielectric: cannot express the index in model '%s'",
+                              gcolormodel_name(model));
     if (rc == G_OK && params->absorption) {
         rc = gmatparam_color(model, params->absorption, GCOLOR_REFLECTANCE, 0.0, "dielectric", "absorption",
                              &d->transmittance, err);
         if (rc == G_OK) {
             if (d->transmittance.kind != GCOLOR_VECTOR)
-                rc = gerror_set(err, G_ERR_INVALID, "dielectric: absorption must be a plain colour, not a matrix");
+                rc = gerror_set_param(err, G_ERR_INVALID, "absorption",
+                                      "dielectric: absorption must be a plain colour, not a matrix");
             else {
                 d->absorbs = gcolor_brightness(&d->transmittance) > 0.0;
                 rc = gcolor_exp(&d->transmittance, &d->transmittance, -1.0);
@@ -265,4 +266,71 @@ int gdielectric_create(const GColorModel *model, const GDielectricParams *params
     return G_OK;
 }
 
-GENERIC_TYPE(dielectric, GKIND_MATERIAL, &gmaterial_dielectric, gparse_dielectric, NULL);
+/* ---- the text format ---- */
+
+/* index N | index cauchy A B [C] | index sellmeier B1 B2 B3 C1 C2 C3 */
+static int read_index(GReader *r, GDispersion *d, GError *err)
+{
+    GToken t;
+    int rc = greader_peek(r, &t, err);
+    if (rc != G_OK)
+        return rc;
+    if (t.type == GTOK_NUMBER) {
+        double n;
+        rc = greader_number_in(r, 0.01, 100.0, &n, err);
+        if (rc == G_OK)
+            *d = gdispersion_constant(n);
+        return rc;
+    }
+    static const char *const forms[] = {"cauchy", "sellmeier", NULL};
+    int which = 0;
+    if ((rc = greader_choice(r, forms, &which, err)) != G_OK)
+        return rc;
+    double c[6] = {0, 0, 0, 0, 0, 0};
+    int n = which == 0 ? 2 : 6;
+    for (int i = 0; i < n && rc == G_OK; i++)
+        rc = greader_number(r, &c[i], err);
+    if (rc == G_OK && which == 0 && (rc = greader_at_number(r, err)) == 1)
+        rc = greader_number(r, &c[2], err);
+    if (rc != G_OK)
+        return rc;
+    *d = which == 0 ? gdispersion_cauchy(c[0], c[1], c[2]) : gdispersion_sellmeier(c, c + 3);
+    GError check; /* a bad formula is reported at its last coefficient */
+    if (gdispersion_check(d, &check) != G_OK)
+        return greader_error(r, err, "%s", check.message);
+    return G_OK;
+}
+
+/* dielectric { index N | cauchy A B [C] | sellmeier B1 B2 B3 C1 C2 C3  absorption COLOR  tint COLOR }:
+ * index 1.5, clear, untinted when not given */
+static int parse_dielectric(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    GColor absorption = {0}, tint = {0};
+    GDispersion index = gdispersion_constant(1.5);
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        if (strcmp(key, "index") == 0)
+            rc = read_index(r, &index, err);
+        else if (strcmp(key, "absorption") == 0)
+            rc = greader_color(r, GCOLOR_REFLECTANCE, &absorption, err);
+        else if (strcmp(key, "tint") == 0)
+            rc = greader_color(r, GCOLOR_REFLECTANCE, &tint, err);
+        else
+            rc = greader_unknown_param(r, "index, absorption, tint", err);
+        if (rc < 0)
+            break;
+    }
+    GMaterial *m = NULL;
+    if (rc == G_OK) {
+        GDielectricParams p = {index, absorption.v ? &absorption : NULL, tint.v ? &tint : NULL};
+        if ((rc = gdielectric_create(greader_colormodel(r), &p, &m, err)) == G_OK)
+            *object = m;
+    }
+    gcolor_free(&absorption);
+    gcolor_free(&tint);
+    return rc;
+}
+
+GENERIC_TYPE(dielectric, GKIND_MATERIAL, &dielectric_class, parse_dielectric, NULL);

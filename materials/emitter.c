@@ -1,9 +1,9 @@
 /* emitter.c - a surface that emits radiance L from its front (or both sides). */
-#include "generic/plugin.h"
-#include "material_parsers.h"
+#include "generic/material_kit.h"
 #include "generic/materials.h"
-#include "materials_builtin.h"
-#include "params.h"
+#include "generic/plugin.h"
+
+#include <string.h>
 
 typedef struct Emitter {
     GMatOneColor radiance; /* first: the class's destroy is gmat_one_color_destroy */
@@ -26,7 +26,7 @@ static int emitter_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GC
     return gcolor_copy(result, &e->radiance.c);
 }
 
-const GMaterialClass gmaterial_emitter = {
+static const GMaterialClass emitter_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "emitter",
     .description = "emits a radiance from its front (or both sides)",
@@ -36,11 +36,38 @@ const GMaterialClass gmaterial_emitter = {
 
 int gemitter_create(const GColorModel *model, const GColor *radiance, int two_sided, GMaterial **out, GError *err)
 {
-    int rc = gmat_one_color_create(&gmaterial_emitter, model, sizeof(Emitter), radiance, GCOLOR_LIGHT, 0.0, "radiance",
+    int rc = gmat_one_color_create(&emitter_class, model, sizeof(Emitter), radiance, GCOLOR_LIGHT, 0.0, "radiance",
                                    out, err);
     if (rc == G_OK)
         ((Emitter *)*out)->two_sided = two_sided != 0;
     return rc;
 }
 
-GENERIC_TYPE(emitter, GKIND_MATERIAL, &gmaterial_emitter, gparse_emitter, NULL);
+/* emitter { radiance COLOR two_sided BOOL }: radiance white 1 (a light), one-sided when not given */
+static int parse_emitter(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    GColor radiance = {0};
+    int two_sided = 0;
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        if (strcmp(key, "radiance") == 0)
+            rc = greader_color(r, GCOLOR_LIGHT, &radiance, err);
+        else if (strcmp(key, "two_sided") == 0)
+            rc = greader_bool(r, &two_sided, err);
+        else
+            rc = greader_unknown_param(r, "radiance, two_sided", err);
+        if (rc < 0)
+            break;
+    }
+    if (rc == G_OK)
+        rc = gmatparam_default(r, 1.0, GCOLOR_LIGHT, &radiance, err);
+    GMaterial *m = NULL;
+    if (rc == G_OK && (rc = gemitter_create(greader_colormodel(r), &radiance, two_sided, &m, err)) == G_OK)
+        *object = m;
+    gcolor_free(&radiance);
+    return rc;
+}
+
+GENERIC_TYPE(emitter, GKIND_MATERIAL, &emitter_class, parse_emitter, NULL);

@@ -1,11 +1,10 @@
 /* lambert.c - the ideal diffuse reflector: f_r = rho / pi. */
-#include "generic/plugin.h"
-#include "material_parsers.h"
+#include "generic/material_kit.h"
 #include "generic/materials.h"
-#include "materials_builtin.h"
-#include "params.h"
+#include "generic/plugin.h"
 
 #include <math.h>
+#include <string.h>
 
 /* The state is a GMatOneColor: c is rho. */
 
@@ -35,7 +34,7 @@ static int lambert_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result
     return gcolor_copy(result, &((const GMatOneColor *)self)->c);
 }
 
-const GMaterialClass gmaterial_lambert = {
+static const GMaterialClass lambert_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "lambert",
     .description = "ideal diffuse reflector (f = rho / pi)",
@@ -47,8 +46,32 @@ const GMaterialClass gmaterial_lambert = {
 
 int glambert_create(const GColorModel *model, const GColor *reflectance, GMaterial **out, GError *err)
 {
-    return gmat_one_color_create(&gmaterial_lambert, model, sizeof(GMatOneColor), reflectance, GCOLOR_REFLECTANCE,
+    return gmat_one_color_create(&lambert_class, model, sizeof(GMatOneColor), reflectance, GCOLOR_REFLECTANCE,
                                  1.0, "reflectance", out, err);
 }
 
-GENERIC_TYPE(lambert, GKIND_MATERIAL, &gmaterial_lambert, gparse_lambert, NULL);
+/* lambert { reflectance COLOR }: grey 0.8 when not given */
+static int parse_lambert(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    GColor rho = {0};
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        if (strcmp(key, "reflectance") == 0)
+            rc = greader_color(r, GCOLOR_REFLECTANCE, &rho, err);
+        else
+            rc = greader_unknown_param(r, "reflectance", err);
+        if (rc < 0)
+            break;
+    }
+    if (rc == G_OK)
+        rc = gmatparam_default(r, 0.8, GCOLOR_REFLECTANCE, &rho, err);
+    GMaterial *m = NULL;
+    if (rc == G_OK && (rc = glambert_create(greader_colormodel(r), &rho, &m, err)) == G_OK)
+        *object = m;
+    gcolor_free(&rho);
+    return rc;
+}
+
+GENERIC_TYPE(lambert, GKIND_MATERIAL, &lambert_class, parse_lambert, NULL);

@@ -1,9 +1,9 @@
 /* mirror.c - the perfect specular reflector of the paper's example. */
-#include "generic/plugin.h"
-#include "material_parsers.h"
+#include "generic/material_kit.h"
 #include "generic/materials.h"
-#include "materials_builtin.h"
-#include "params.h"
+#include "generic/plugin.h"
+
+#include <string.h>
 
 /* The state is a GMatOneColor: c is the reflectance. */
 
@@ -31,7 +31,7 @@ static int mirror_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *i
     return gcolor_mul(result, &((const GMatOneColor *)self)->c, illum);
 }
 
-const GMaterialClass gmaterial_mirror = {
+static const GMaterialClass mirror_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "mirror",
     .description = "perfect specular reflector",
@@ -43,8 +43,32 @@ const GMaterialClass gmaterial_mirror = {
 
 int gmirror_create(const GColorModel *model, const GColor *reflectance, GMaterial **out, GError *err)
 {
-    return gmat_one_color_create(&gmaterial_mirror, model, sizeof(GMatOneColor), reflectance, GCOLOR_REFLECTANCE,
+    return gmat_one_color_create(&mirror_class, model, sizeof(GMatOneColor), reflectance, GCOLOR_REFLECTANCE,
                                  1.0, "reflectance", out, err);
 }
 
-GENERIC_TYPE(mirror, GKIND_MATERIAL, &gmaterial_mirror, gparse_mirror, NULL);
+/* mirror { reflectance COLOR }: grey 1.0 when not given */
+static int parse_mirror(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    GColor rho = {0};
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        if (strcmp(key, "reflectance") == 0)
+            rc = greader_color(r, GCOLOR_REFLECTANCE, &rho, err);
+        else
+            rc = greader_unknown_param(r, "reflectance", err);
+        if (rc < 0)
+            break;
+    }
+    if (rc == G_OK)
+        rc = gmatparam_default(r, 1.0, GCOLOR_REFLECTANCE, &rho, err);
+    GMaterial *m = NULL;
+    if (rc == G_OK && (rc = gmirror_create(greader_colormodel(r), &rho, &m, err)) == G_OK)
+        *object = m;
+    gcolor_free(&rho);
+    return rc;
+}
+
+GENERIC_TYPE(mirror, GKIND_MATERIAL, &mirror_class, parse_mirror, NULL);

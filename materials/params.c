@@ -1,6 +1,6 @@
-/* params.c - parameter checks, construction and shading helpers shared by the built-in materials and the
- * texture nodes. */
-#include "params.h"
+/* params.c - material parameters (generic/material_params.h): checking and converting parameter colours,
+ * defaults for parameters a file leaves out. */
+#include "generic/material_params.h"
 
 #include <math.h>
 
@@ -30,13 +30,14 @@ int gmatparam_color(const GColorModel *m, const GColor *src, GColorRole role, do
 {
     *dst = (GColor){.model = NULL, .v = NULL, .storage = GCOLOR_STORAGE_NONE};
     if (!src || !src->model || !src->v)
-        return gerror_set(err, G_ERR_INVALID, "%s: %s is missing", material, param);
+        return gerror_set_param(err, G_ERR_INVALID, param, "%s: %s is missing", material, param);
     int n = value_count(src);
     for (int i = 0; i < n; i++) {
         float x = src->v[i];
         if (!isfinite(x) || x < 0.0f)
-            return gerror_set(err, G_ERR_INVALID, "%s: %s has the value %g at sample %d (must be finite and >= 0)",
-                              material, param, (double)x, i);
+            return gerror_set_param(err, G_ERR_INVALID, param,
+                                    "%s: %s has the value %g at sample %d (must be finite and >= 0)", material, param,
+                                    (double)x, i);
     }
     if (max > 0.0) {
         int at;
@@ -44,16 +45,16 @@ int gmatparam_color(const GColorModel *m, const GColor *src, GColorRole role, do
         /* an in-range colour may overshoot a little after conversion (rgb 1 1 1 gives 1.00015 in the spectral
          * models: the RGB round trip correction of lib/cie.c); such values are clamped below */
         if (mx > max * (1.0 + 1e-3))
-            return gerror_set(err, G_ERR_INVALID, "%s: %s has the value %g at sample %d (must be <= %g)", material,
-                              param, mx, at, max);
+            return gerror_set_param(err, G_ERR_INVALID, param, "%s: %s has the value %g at sample %d (must be <= %g)",
+                                    material, param, mx, at, max);
     }
     if (gcolor_alloc(dst, m) != G_OK)
         return gerror_set(err, G_ERR_NOMEM, "%s: out of memory for %s", material, param);
     int rc = gcolor_convert(dst, src, role);
     if (rc != G_OK) {
         gcolor_free(dst);
-        return gerror_set(err, rc, "%s: cannot convert %s from model '%s' to '%s'", material, param,
-                          gcolormodel_name(src->model), gcolormodel_name(m));
+        return gerror_set_param(err, rc, param, "%s: cannot convert %s from model '%s' to '%s'", material, param,
+                                gcolormodel_name(src->model), gcolormodel_name(m));
     }
     if (dst->kind == GCOLOR_VECTOR)
         for (int i = 0; i < m->nvalues; i++) {
@@ -65,52 +66,14 @@ int gmatparam_color(const GColorModel *m, const GColor *src, GColorRole role, do
     return G_OK;
 }
 
-int gmat_new(const GMaterialClass *cls, const GColorModel *model, size_t size, GMaterial **out, GError *err)
-{
-    *out = NULL;
-    GMaterial *m = gmem_calloc(1, size);
-    if (!m)
-        return gerror_set(err, G_ERR_NOMEM, "%s: out of memory", cls->name);
-    int rc = gmaterial_init(m, cls, model, err);
-    if (rc != G_OK) {
-        gmem_free(m);
-        return rc;
-    }
-    *out = m;
-    return G_OK;
-}
 
-void gmat_one_color_destroy(GMaterial *self)
+int gmatparam_default(GReader *r, double grey, GColorRole role, GColor *c, GError *err)
 {
-    gcolor_free(&((GMatOneColor *)self)->c);
-    gmem_free(self);
-}
-
-int gmat_one_color_create(const GMaterialClass *cls, const GColorModel *model, size_t size, const GColor *src,
-                          GColorRole role, double max, const char *param, GMaterial **out, GError *err)
-{
-    *out = NULL;
-    if (!model)
-        return gerror_set(err, G_ERR_INVALID, "%s: no colour model given", cls->name);
-    GMaterial *m;
-    int rc = gmat_new(cls, model, size, &m, err);
-    if (rc != G_OK)
-        return rc;
-    rc = gmatparam_color(model, src, role, max, cls->name, param, &((GMatOneColor *)m)->c, err);
-    if (rc != G_OK) {
-        gmat_one_color_destroy(m);
-        return rc;
-    }
-    *out = m;
-    return G_OK;
-}
-
-double gmat_cos_in(GSurfPoint *sp, GVec3 in, GVec3 out, GVec3 *n)
-{
-    *n = gsurfpoint_normal(sp);
-    GVec3 ng = sp->geometric_normal;
-    if (gvec3_dot(in, ng) <= 0.0 || gvec3_dot(out, ng) <= 0.0)
-        return 0.0;
-    double c = gvec3_dot(in, *n);
-    return c > 0.0 ? c : 0.0;
+    if (c->v)
+        return G_OK;
+    const GColorModel *m = greader_colormodel(r);
+    double rgb[3] = {grey, grey, grey};
+    if (!m || gcolor_alloc(c, m) != G_OK)
+        return greader_error(r, err, "out of memory");
+    return gcolor_from_rgb(c, rgb, role) == G_OK ? G_OK : greader_error(r, err, "invalid default colour");
 }

@@ -1,12 +1,11 @@
 /* phong.c - energy-normalised Phong: f_r = kd / pi + ks (n + 2) / (2 pi) cos^n(alpha), with an optional
  * ideal reflection ray of reflectance `mirror`. */
-#include "generic/plugin.h"
-#include "material_parsers.h"
+#include "generic/material_kit.h"
 #include "generic/materials.h"
-#include "materials_builtin.h"
-#include "params.h"
+#include "generic/plugin.h"
 
 #include <math.h>
+#include <string.h>
 
 typedef struct Phong {
     GMaterial base;
@@ -85,7 +84,7 @@ static int phong_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
     return gcolor_copy(result, &((const Phong *)self)->kd);
 }
 
-const GMaterialClass gmaterial_phong = {
+static const GMaterialClass phong_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "phong",
     .description = "energy-normalised Phong (kd, ks, exponent) with an optional mirror ray",
@@ -112,9 +111,10 @@ int gphong_create(const GColorModel *model, const GPhongParams *params, GMateria
     if (!model || !params)
         return gerror_set(err, G_ERR_INVALID, "phong: no colour model or parameters given");
     if (!isfinite(params->exponent) || params->exponent < 0.0)
-        return gerror_set(err, G_ERR_INVALID, "phong: exponent is %g (must be finite and >= 0)", params->exponent);
+        return gerror_set_param(err, G_ERR_INVALID, "exponent", "phong: exponent is %g (must be finite and >= 0)",
+                                params->exponent);
     GMaterial *m;
-    int rc = gmat_new(&gmaterial_phong, model, sizeof(Phong), &m, err);
+    int rc = gmat_new(&phong_class, model, sizeof(Phong), &m, err);
     if (rc != G_OK)
         return rc;
     Phong *p = (Phong *)m;
@@ -152,4 +152,41 @@ int gphong_create(const GColorModel *model, const GPhongParams *params, GMateria
     return G_OK;
 }
 
-GENERIC_TYPE(phong, GKIND_MATERIAL, &gmaterial_phong, gparse_phong, NULL);
+/* phong { diffuse COLOR specular COLOR exponent N mirror COLOR }: diffuse grey 0.5 when neither diffuse nor
+ * specular is given, exponent 20 */
+static int parse_phong(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    GColor kd = {0}, ks = {0}, mirror = {0};
+    double exponent = 20.0;
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        if (strcmp(key, "diffuse") == 0)
+            rc = greader_color(r, GCOLOR_REFLECTANCE, &kd, err);
+        else if (strcmp(key, "specular") == 0)
+            rc = greader_color(r, GCOLOR_REFLECTANCE, &ks, err);
+        else if (strcmp(key, "exponent") == 0)
+            rc = greader_number_in(r, 0.0, 1e6, &exponent, err);
+        else if (strcmp(key, "mirror") == 0)
+            rc = greader_color(r, GCOLOR_REFLECTANCE, &mirror, err);
+        else
+            rc = greader_unknown_param(r, "diffuse, specular, exponent, mirror", err);
+        if (rc < 0)
+            break;
+    }
+    if (rc == G_OK && !kd.v && !ks.v)
+        rc = gmatparam_default(r, 0.5, GCOLOR_REFLECTANCE, &kd, err);
+    GMaterial *m = NULL;
+    if (rc == G_OK) {
+        GPhongParams p = {kd.v ? &kd : NULL, ks.v ? &ks : NULL, exponent, mirror.v ? &mirror : NULL};
+        if ((rc = gphong_create(greader_colormodel(r), &p, &m, err)) == G_OK)
+            *object = m;
+    }
+    gcolor_free(&kd);
+    gcolor_free(&ks);
+    gcolor_free(&mirror);
+    return rc;
+}
+
+GENERIC_TYPE(phong, GKIND_MATERIAL, &phong_class, parse_phong, NULL);

@@ -16,9 +16,9 @@
 #include "generic/color.h"
 #include "generic/material.h"
 #include "generic/materials.h"
+#include "generic/reader.h"
 #include "generic/registry.h"
 #include "generic/surfpoint.h"
-#include "materials/materials_builtin.h"
 #include "test_util.h"
 
 #define DEG (M_PI / 180.0)
@@ -640,23 +640,53 @@ static void test_bad_parameters(void **state)
     fix_close(&f);
 }
 
+/* A constructor's complaint names its parameter (gerror_set_param); the reader places it there: the message's
+ * position and the GError fields agree, and a parameter the file did not write is placed at the last token. */
+static void test_error_at_parameter(void **state)
+{
+    (void)state;
+    GError err;
+    assert_int_equal(gerror_set_param(&err, G_ERR_INVALID, "reflectance", "x: %d", 7), G_ERR_INVALID);
+    assert_string_equal(err.param, "reflectance");
+    assert_string_equal(err.message, "x: 7");
+    assert_int_equal(err.line, 0);
+    gerror_set(&err, G_ERR_INVALID, "y");
+    assert_string_equal(err.param, "");
+
+    GLibrary *lib = NULL;
+    /* "reflectance" starts at line 3, column 5; the bad value is read after it */
+    assert_int_equal(greader_load_string("\nmaterial w lambert {\n    reflectance rgb 0.5 -2 0.5 }\n", "t.mat", NULL,
+                                         &lib, &err),
+                     G_ERR_INVALID);
+    assert_null(lib);
+    assert_int_equal(err.line, 3);
+    assert_int_equal(err.col, 5);
+    assert_string_equal(err.param, "reflectance");
+    assert_string_equal(err.message,
+                        "t.mat:3:5: lambert: reflectance has the value -2 at sample 1 (must be finite and >= 0)");
+    /* phong names kd + ks + mirror, which is no parameter of the file: the last token read, the closing brace */
+    assert_int_equal(greader_load_string("material m phong { diffuse rgb 0.6 0.6 0.6\n"
+                                         "  specular rgb 0.3 0.3 0.3 mirror rgb 0.3 0.3 0.3 }\n",
+                                         "p.mat", NULL, &lib, &err),
+                     G_ERR_INVALID);
+    assert_int_equal(err.line, 2);
+    assert_int_equal(err.col, 51);
+    assert_string_equal(err.param, "");
+    assert_non_null(strstr(err.message, "p.mat:2:51: phong: kd + ks + mirror is"));
+}
+
 static void test_registered(void **state)
 {
     (void)state;
-    const struct {
-        const char *name;
-        const GMaterialClass *cls;
-    } all[] = {{"lambert", &gmaterial_lambert},
-               {"phong", &gmaterial_phong},
-               {"mirror", &gmaterial_mirror},
-               {"dielectric", &gmaterial_dielectric},
-               {"emitter", &gmaterial_emitter}};
+    static const char *const names[] = {"lambert", "phong", "mirror", "dielectric", "emitter"};
     for (int i = 0; i < 5; i++) {
-        const GTypeInfo *t = gregistry_find(GKIND_MATERIAL, all[i].name);
+        const GTypeInfo *t = gregistry_find(GKIND_MATERIAL, names[i]);
         assert_non_null(t);
-        assert_ptr_equal(t->vtable, all[i].cls);
-        assert_string_equal(all[i].cls->name, all[i].name);
-        assert_int_equal(all[i].cls->abi_version, GMATERIAL_ABI_VERSION);
+        const GMaterialClass *cls = t->vtable;
+        assert_non_null(cls);
+        assert_string_equal(cls->name, names[i]);
+        assert_int_equal(cls->abi_version, GMATERIAL_ABI_VERSION);
+        assert_non_null(t->parse);
     }
 }
 
@@ -679,6 +709,7 @@ int main(void)
         BOTH(test_emitter),
         BOTH(test_bad_parameters),
         cmocka_unit_test(test_registered),
+        cmocka_unit_test(test_error_at_parameter),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

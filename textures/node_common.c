@@ -2,7 +2,7 @@
  * the methods of blend nodes (interpolate, spline, select), temporaries, one-child and list nodes, and the
  * construction checks of all nodes. */
 #include "generic/node_kit.h"
-#include "materials/params.h" /* gmat_new: nodes are built like the built-in materials */
+#include "generic/material_kit.h" /* gmat_new: nodes are built like the built-in materials */
 
 #include <math.h>
 #include <string.h>

@@ -20,16 +20,31 @@ enum {
     G_ERR_UNSUPPORTED = -9 /**< the operation is not defined for this model or value */
 };
 
-/** Error record: the status and a human readable message ("file:line:col: ..." for text input). */
+/** Longest parameter name a GError records (longer names are cut). */
+#define GERROR_PARAM_MAX 32
+
+/** Error record: the status, a human readable message ("file:line:col: ..." for text input), and where the
+ * complaint is: the text position once a reader has placed it, and the parameter a constructor named. */
 typedef struct GError {
     int code;
+    int line, col;                 /**< 1-based position in text input; 0 until a reader places the error */
+    char param[GERROR_PARAM_MAX];  /**< the parameter the complaint is about ("" for none) */
     char message[512];
 } GError;
 
-/** Sets code and a printf-style message; err may be NULL. Returns code so callers can `return gerror_set(...)`. */
+/** Sets code and a printf-style message, with no position and no parameter; err may be NULL. Returns code so callers can `return gerror_set(...)`. */
 int gerror_set(GError *err, int code, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+/** gerror_set naming the parameter the complaint is about (a constructor's `param`, e.g. "reflectance"): a
+ * reader that called the constructor places the message at that parameter of the entry (reader.h,
+ * greader_locate). Returns code. */
+int gerror_set_param(GError *err, int code, const char *param, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 4, 5)))
 #endif
     ;
 

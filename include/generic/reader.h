@@ -243,7 +243,8 @@ void greader_position(GReader *r, int *line, int *col);
 
 /* ---- errors ---- */
 
-/** Fails with G_ERR_PARSE and "file:line:col: message" at the last token read; returns G_ERR_PARSE. */
+/** Fails with G_ERR_PARSE and "file:line:col: message" at the last token read (err->line, err->col hold the
+ * position); returns G_ERR_PARSE. */
 int greader_error(GReader *r, GError *err, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 3, 4)))
@@ -255,8 +256,11 @@ int greader_error_at(GReader *r, GError *err, int code, int line, int col, const
     __attribute__((format(printf, 6, 7)))
 #endif
     ;
-/** Prefixes a message already in err (e.g. from a constructor) with the position of the last token read,
- * keeping its code; a message that already has a position is left as it is. Returns err->code. */
+/** Places a message already in err (e.g. from a constructor) in the file, keeping its code: at the parameter
+ * err->param of the entry being read when the constructor named one it was given (gerror_set_param), else at
+ * the last token read; the message gets the "file:line:col: " prefix and err->line, err->col the position. A
+ * message that already has a position is left as it is. A parse routine that returns a constructor's failure
+ * need not call this: the reader places every failure of a parse routine so. Returns err->code. */
 int greader_locate(GReader *r, GError *err);
 
 /* ======================================================================================================

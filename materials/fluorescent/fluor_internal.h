@@ -4,7 +4,10 @@
 
 #include "generic/fluorescent.h"
 #include "generic/material.h"
-#include "materials/params.h"
+#include "generic/material_kit.h"
+#include "generic/reader.h"
+
+#include <stddef.h>
 
 /** Checks a GReradiation's grid and values (finite); G_ERR_INVALID naming `what` otherwise. */
 int fluor_matrix_check(const GReradiation *r, const char *what, GError *err);
@@ -54,5 +57,22 @@ static inline int fluor_two_parts(GSurfPoint *sp, const GColorModel *model, cons
     gscratch_release(sp->scratch, mark);
     return rc;
 }
+
+/* A numeric parameter of a fluorescent material: `count` numbers in [lo, hi] at `offset` in its parameter
+ * struct. */
+typedef struct FluorParam {
+    const char *key;
+    double lo, hi;
+    size_t offset;
+    int count;
+} FluorParam;
+
+/** Reads a fluorescent material's parameter block (materials/fluorescent/fluor_params.c): `matrix` into *mat
+ * (the default matrix when it is not given) and the numbers of `table` into params; `keys` lists every name for
+ * the unknown-key message. *mat is freed by the caller (fluor_finish), also on failure. */
+int fluor_read_params(GReader *r, const FluorParam *table, const char *keys, void *params, GReradiation *mat,
+                      GError *err);
+/** The end of a fluorescent material's parse: frees *mat and hands over m when rc is G_OK; returns rc. */
+int fluor_finish(int rc, GReradiation *mat, GMaterial *m, void **object);
 
 #endif

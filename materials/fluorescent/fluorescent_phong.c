@@ -11,8 +11,7 @@
  * points out. The code uses only generic colour operations: M is a matrix in the bispectral model and a
  * folded reflectance in the others. */
 #include "fluor_internal.h"
-#include "fluorescent_builtin.h"
-#include "materials/params.h"
+#include "generic/plugin.h"
 
 #include <math.h>
 #include <string.h>
@@ -81,7 +80,7 @@ static int fphong_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *i
     return gcolor_mul(result, &((const FPhong *)self)->albedo, illum);
 }
 
-const GMaterialClass gmaterial_fluorescent_phong = {
+static const GMaterialClass fluorescent_phong_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "fluorescent-phong",
     .description = "three Phong lobes (matrix diagonal) over a fluorescent Lambertian (Wilkie et al. 5.1)",
@@ -125,7 +124,7 @@ int gfluor_phong_create(const GColorModel *model, const GReradiation *matrix, co
         rc = check_params(&p, err);
     GMaterial *m;
     if (rc == G_OK)
-        rc = gmat_new(&gmaterial_fluorescent_phong, model, sizeof(FPhong), &m, err);
+        rc = gmat_new(&fluorescent_phong_class, model, sizeof(FPhong), &m, err);
     if (rc != G_OK)
         return rc;
     FPhong *f = (FPhong *)m;
@@ -157,3 +156,27 @@ int gfluor_phong_create(const GColorModel *model, const GReradiation *matrix, co
     *out = &f->base;
     return G_OK;
 }
+
+/* ---- the text format ---- */
+
+static const FluorParam phong_params[] = {
+    {"ks", 0.0, 0.999, offsetof(GFluorPhongParams, ks), 1},
+    {"exponents", 1.0, 1e6, offsetof(GFluorPhongParams, exponent), 3},
+    {"weights", 0.0, 1.0, offsetof(GFluorPhongParams, weight), 3},
+    {NULL, 0.0, 0.0, 0, 0},
+};
+
+static int parse_fluorescent_phong(GReader *r, const void *vt, void **object, GError *err)
+{
+    (void)vt;
+    GFluorPhongParams p;
+    gfluor_phong_default(&p);
+    GReradiation mat = {0};
+    GMaterial *m = NULL;
+    int rc = fluor_read_params(r, phong_params, "matrix, ks, exponents, weights", &p, &mat, err);
+    if (rc == G_OK)
+        rc = gfluor_phong_create(greader_colormodel(r), &mat, &p, &m, err);
+    return fluor_finish(rc, &mat, m, object);
+}
+
+GENERIC_TYPE(fluorescent_phong, GKIND_MATERIAL, &fluorescent_phong_class, parse_fluorescent_phong, NULL);

@@ -35,8 +35,7 @@
  * operations and works the same for a matrix or a vector value. R(c) is tabulated at creation by a
  * quadrature over h with the distribution D(h) (h.n). */
 #include "fluor_internal.h"
-#include "fluorescent_builtin.h"
-#include "materials/params.h"
+#include "generic/plugin.h"
 
 #include <math.h>
 #include <string.h>
@@ -281,7 +280,7 @@ static int varnish_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *
     return fluor_two_parts(sp, self->model, illum, NULL, v->r_avg, &v->diffuse, 1.0, result);
 }
 
-const GMaterialClass gmaterial_fluorescent_varnish = {
+static const GMaterialClass fluorescent_varnish_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "fluorescent-varnish",
     .description = "rough Fresnel varnish over a fluorescent Lambertian base (Wilkie et al. 5.2)",
@@ -324,7 +323,7 @@ int gfluor_varnish_create(const GColorModel *model, const GReradiation *matrix, 
                               p.slope_deg);
     }
     GMaterial *base;
-    rc = gmat_new(&gmaterial_fluorescent_varnish, model, sizeof(Varnish), &base, err);
+    rc = gmat_new(&fluorescent_varnish_class, model, sizeof(Varnish), &base, err);
     if (rc != G_OK)
         return rc;
     Varnish *v = (Varnish *)base;
@@ -351,3 +350,27 @@ int gfluor_varnish_create(const GColorModel *model, const GReradiation *matrix, 
     *out = &v->base;
     return G_OK;
 }
+
+/* ---- the text format ---- */
+
+static const FluorParam varnish_params[] = {
+    {"ior", 1.0, 4.0, offsetof(GFluorVarnishParams, ior), 1},
+    {"slope", 0.01, 44.99, offsetof(GFluorVarnishParams, slope_deg), 1},
+    {"exponent", 0.0, 1e6, offsetof(GFluorVarnishParams, exponent), 1},
+    {NULL, 0.0, 0.0, 0, 0},
+};
+
+static int parse_fluorescent_varnish(GReader *r, const void *vt, void **object, GError *err)
+{
+    (void)vt;
+    GFluorVarnishParams p;
+    gfluor_varnish_default(&p);
+    GReradiation mat = {0};
+    GMaterial *m = NULL;
+    int rc = fluor_read_params(r, varnish_params, "matrix, ior, slope, exponent", &p, &mat, err);
+    if (rc == G_OK)
+        rc = gfluor_varnish_create(greader_colormodel(r), &mat, &p, &m, err);
+    return fluor_finish(rc, &mat, m, object);
+}
+
+GENERIC_TYPE(fluorescent_varnish, GKIND_MATERIAL, &fluorescent_varnish_class, parse_fluorescent_varnish, NULL);

@@ -1,0 +1,34 @@
+/* material_params.h - the parameters of a material: checking a parameter colour and copying it into the
+ * material's model, and the default colour a parse routine takes for a parameter the file leaves out.
+ *
+ * A constructor reports a bad parameter with gerror_set_param (error.h) naming it, as gmatparam_color does;
+ * when the constructor was called by a parse routine, the reader then places the message at that parameter
+ * in the file ("file:line:col: lambert: reflectance has the value ..."). */
+#ifndef GENERIC_MATERIAL_PARAMS_H
+#define GENERIC_MATERIAL_PARAMS_H
+
+#include "color.h"
+#include "error.h"
+#include "reader.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Checks a parameter colour and copies it into new heap storage of model m (dst must be freed with
+ * gcolor_free, and is left cleared on failure). Every sample must be finite and >= 0, and with max > 0 also
+ * <= max (for matrices the brightness is compared with max). A colour of another model is converted through
+ * the nm spectrum with the given role and clamped to [0, max] afterwards. A complaint reads
+ * "<material>: <param> ..." and names param (gerror_set_param). */
+int gmatparam_color(const GColorModel *m, const GColor *src, GColorRole role, double max, const char *material,
+                    const char *param, GColor *dst, GError *err);
+/** Largest sample of a vector value (its index in *at, may be NULL), the brightness of a matrix. */
+double gmatparam_max(const GColor *c, int *at);
+/** For a parse routine: unless c already holds a colour (one the file gave), makes c the grey `grey` (an sRGB
+ * triple of that value, read in role) in the file's colour model, in new storage (free with gcolor_free). */
+int gmatparam_default(GReader *r, double grey, GColorRole role, GColor *c, GError *err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
