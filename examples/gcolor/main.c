@@ -1,6 +1,10 @@
 /* gcolor - a colour report: a few colours converted into every registered colour model and back,
- * printed as linear sRGB and CIE XYZ. Built only on the public API. */
+ * printed as linear sRGB and CIE XYZ; `gcolor list` names the registered models and `gcolor check MODEL`
+ * runs the conformance checks (check.c). Built only on the public API. */
+#include "gcolor.h"
+
 #include <generic/color.h>
+#include <generic/plugin.h>
 #include <generic/registry.h>
 
 #include <stdio.h>
@@ -10,11 +14,15 @@
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: gcolor [--models LIST] [--rgb R,G,B]...\n"
+            "usage: gcolor [--models LIST] [--rgb R,G,B]... [--plugin FILE.so]...\n"
+            "       gcolor list [--plugin FILE.so]...          the registered colour models, one per line\n"
+            "       gcolor check MODEL [--step NM] [--plugin FILE.so]...   conformance checks of MODEL\n"
             "Prints sample colours in every colour model (or the comma-separated LIST): the value the model\n"
             "stores, its brightness, and its conversion back to linear sRGB and CIE 1931 XYZ.\n"
             "  --rgb R,G,B   add a reflectance in linear sRGB to the report (repeatable)\n"
             "  --models LIST only these models, e.g. rgb,spectrum\n"
+            "  --plugin FILE.so  load a module first (repeatable; a bare name is searched in the current\n"
+            "                directory, then in GENERIC_PLUGIN_PATH)\n"
             "  -h, --help    this text\n");
 }
 
@@ -51,8 +59,54 @@ static void report_model(const char *model_name, const Sample *samples, int n)
     gcolormodel_destroy(m);
 }
 
+/* Loads the module of every `--plugin FILE` in argv (before anything uses the registry) and removes those
+ * arguments. 0, or the exit status after printing the error. */
+static int load_plugins(int *argc, char **argv)
+{
+    int n = 1;
+    for (int i = 1; i < *argc; i++) {
+        if (strcmp(argv[i], "--plugin") != 0) {
+            argv[n++] = argv[i];
+            continue;
+        }
+        if (i + 1 >= *argc) {
+            fprintf(stderr, "gcolor: --plugin needs a value (a module FILE.so)\n");
+            return 2;
+        }
+        GError err;
+        if (gplugin_load(argv[++i], &err) != G_OK) {
+            fprintf(stderr, "gcolor: %s\n", err.message);
+            return 1;
+        }
+    }
+    *argc = n;
+    argv[n] = NULL;
+    return 0;
+}
+
+static int list_models(void)
+{
+    const GTypeInfo *types[64];
+    int k = gregistry_list(GKIND_COLORMODEL, types, 64);
+    for (int i = 0; i < k && i < 64; i++)
+        printf("%s\n", types[i]->name);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
+    int prc = load_plugins(&argc, argv);
+    if (prc != 0)
+        return prc;
+    if (argc > 1 && strcmp(argv[1], "check") == 0)
+        return gcolor_check(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "list") == 0) {
+        if (argc > 2) {
+            fprintf(stderr, "gcolor list: unexpected argument '%s'\n", argv[2]);
+            return 2;
+        }
+        return list_models();
+    }
     Sample samples[32] = {
         {"white light", {1, 1, 1}, GCOLOR_LIGHT},
         {"grey 18%", {0.18, 0.18, 0.18}, GCOLOR_REFLECTANCE},

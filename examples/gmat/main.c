@@ -139,13 +139,6 @@ static int parse_args(int argc, char **argv, Args *a)
             if (gmat_number(v, 0.1, 400.0, &a->step))
                 return gmat_usage_error(cmd, "--step: '%s' is not a spacing in nm (0.1..400)", v);
             i++;
-        } else if (strcmp(o, "--plugin") == 0) {
-            GError err;
-            if (gplugin_load(v, &err) != G_OK) {
-                fprintf(stderr, "gmat: %s\n", err.message);
-                return 1;
-            }
-            i++;
         } else if (strcmp(o, "--samples") == 0) {
             double n;
             if (gmat_number(v, 8, 4096, &n) || n != floor(n))
@@ -238,8 +231,36 @@ static int run(const Args *a, GmatContext *ctx)
     return 0;
 }
 
+/* Loads the module of every `--plugin FILE` in argv (before anything uses the registry) and removes those
+ * arguments; a bare name is searched as <generic/plugin.h> says. 0, or 1 after printing the error. */
+static int load_plugins(const char *tool, int *argc, char **argv)
+{
+    int n = 1;
+    for (int i = 1; i < *argc; i++) {
+        if (strcmp(argv[i], "--plugin") != 0) {
+            argv[n++] = argv[i];
+            continue;
+        }
+        if (i + 1 >= *argc) {
+            fprintf(stderr, "%s: --plugin needs a value (a module FILE.so)\n", tool);
+            return 2;
+        }
+        GError err;
+        if (gplugin_load(argv[++i], &err) != G_OK) {
+            fprintf(stderr, "%s: %s\n", tool, err.message);
+            return 1;
+        }
+    }
+    *argc = n;
+    argv[n] = NULL;
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
+    int prc = load_plugins("gmat", &argc, argv);
+    if (prc != 0)
+        return prc;
     if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "help") == 0) {
         usage_main(argc < 2 ? stderr : stdout);
         return argc < 2 ? 2 : 0;

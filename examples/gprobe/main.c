@@ -4,6 +4,7 @@
 #include "gprobe.h"
 
 #include <generic/memory.h>
+#include <generic/plugin.h>
 
 #include <errno.h>
 #include <math.h>
@@ -26,13 +27,42 @@ static void usage(FILE *f)
             "  convert     write the probe as a lat-long or angular map (after --rotate)\n"
             "  compare     RMSE of a render against a reference, whole image and inside the cast shadows\n"
             "  sky         write a synthetic sky-and-sun probe\n"
+            "Every command also takes --plugin FILE.so (repeatable): load a module first.\n"
             "Directions: right-handed, z up. In a lat-long probe row 0 is the zenith, the middle column looks\n"
             "along +x, a quarter of the way along +y and the edges along -x, as Blender maps world textures\n"
             "(see include/generic/probe.h).\n");
 }
 
+/* Loads the module of every `--plugin FILE` in argv (before anything uses the registry) and removes those
+ * arguments; a bare name is searched as <generic/plugin.h> says. 0, or 1 after printing the error. */
+static int load_plugins(const char *tool, int *argc, char **argv)
+{
+    int n = 1;
+    for (int i = 1; i < *argc; i++) {
+        if (strcmp(argv[i], "--plugin") != 0) {
+            argv[n++] = argv[i];
+            continue;
+        }
+        if (i + 1 >= *argc) {
+            fprintf(stderr, "%s: --plugin needs a value (a module FILE.so)\n", tool);
+            return 2;
+        }
+        GError err;
+        if (gplugin_load(argv[++i], &err) != G_OK) {
+            fprintf(stderr, "%s: %s\n", tool, err.message);
+            return 1;
+        }
+    }
+    *argc = n;
+    argv[n] = NULL;
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
+    int prc = load_plugins("gprobe", &argc, argv);
+    if (prc != 0)
+        return prc;
     if (argc < 2 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "--help") == 0) {
         usage(argc < 2 ? stderr : stdout);
         return argc < 2 ? 2 : 0;

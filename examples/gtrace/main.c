@@ -2,6 +2,7 @@
  * main.c: the command line, loading, rendering, writing, and the summary line. */
 #include "gtrace.h"
 
+#include <generic/plugin.h>
 #include <generic/registry.h>
 
 #include <errno.h>
@@ -15,7 +16,7 @@ static void usage(FILE *f)
     gregistry_names(GKIND_COLORMODEL, models, sizeof models);
     fprintf(f,
             "usage: gtrace SCENE -o OUT [--width W] [--height H] [--spp N] [--depth D] [--colormodel M]\n"
-            "              [--threads N] [--cutoff W] [--exposure STOPS] [-q]\n"
+            "              [--threads N] [--cutoff W] [--exposure STOPS] [--plugin FILE.so]... [-q]\n"
             "              [--probe FILE] [--probe-technique T] [--probe-count N] [--probe-samples N]\n"
             "              [--probe-scale S] [--probe-shadows on|off]\n"
             "Renders a scene file (the library's text format with camera, object and light entries) with a\n"
@@ -26,7 +27,10 @@ static void usage(FILE *f)
             "  --height H        image height (default: the camera's)\n"
             "  --spp N           samples per pixel, stratified and jittered (default: the camera's)\n"
             "  --depth D         reflection/refraction recursion depth (default: the camera's)\n"
-            "  --colormodel M    compute in colour model M instead of the scene's (%s)\n"
+            "  --colormodel M    compute in colour model M instead of the scene's (%s, or one a\n"
+            "                    module registers: --plugin or a `plugin` statement of the scene)\n"
+            "  --plugin FILE.so  load a module before reading the scene (repeatable; a bare name is\n"
+            "                    searched in the current directory, then GENERIC_PLUGIN_PATH)\n"
             "  --cutoff W        do not trace rays whose weight in the pixel is below W (default: the\n"
             "                    camera's, 1e-3; 0 traces every ray to the depth limit)\n"
             "  --threads N       render threads (default: all processors)\n"
@@ -168,8 +172,36 @@ static int parse_args(int argc, char **argv, Options *o)
     return 0;
 }
 
+/* Loads the module of every `--plugin FILE` in argv (before anything uses the registry) and removes those
+ * arguments; a bare name is searched as <generic/plugin.h> says. 0, or 1 after printing the error. */
+static int load_plugins(const char *tool, int *argc, char **argv)
+{
+    int n = 1;
+    for (int i = 1; i < *argc; i++) {
+        if (strcmp(argv[i], "--plugin") != 0) {
+            argv[n++] = argv[i];
+            continue;
+        }
+        if (i + 1 >= *argc) {
+            fprintf(stderr, "%s: --plugin needs a value (a module FILE.so)\n", tool);
+            return 2;
+        }
+        GError err;
+        if (gplugin_load(argv[++i], &err) != G_OK) {
+            fprintf(stderr, "%s: %s\n", tool, err.message);
+            return 1;
+        }
+    }
+    *argc = n;
+    argv[n] = NULL;
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
+    int prc = load_plugins("gtrace", &argc, argv);
+    if (prc != 0)
+        return prc;
     Options o;
     int a = parse_args(argc, argv, &o);
     if (a != 0)
