@@ -34,7 +34,8 @@ static void usage(FILE *f)
 }
 
 /* Loads the module of every `--plugin FILE` in argv (before anything uses the registry) and removes those
- * arguments; a bare name is searched as <generic/plugin.h> says. 0, or 1 after printing the error. */
+ * arguments; a bare name is searched as <generic/plugin.h> says. 0, or the exit status after printing the
+ * error: 2 for a missing value, 1 when a module does not load. */
 static int load_plugins(const char *tool, int *argc, char **argv)
 {
     int n = 1;
