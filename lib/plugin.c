@@ -4,6 +4,7 @@
 
 #include <dlfcn.h>
 #include <pthread.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -101,7 +102,7 @@ static int init_module(void *h, const char *path, GError *err)
     return rc == G_OK ? G_OK : 1;
 }
 
-int gplugin_load(const char *path, GError *err)
+static int load_path(const char *path, GError *err)
 {
     if (!path || !path[0])
         return gerror_set(err, G_ERR_INVALID, "no module path given");
@@ -145,10 +146,121 @@ done:
     return rc;
 }
 
+/* dir/name in fresh memory (name alone when dir is NULL or name is absolute). */
+static char *join(const char *dir, const char *name)
+{
+    if (!dir || !dir[0] || name[0] == '/')
+        return gmem_strdup(name);
+    size_t a = strlen(dir), b = strlen(name);
+    char *s = gmem_alloc(a + b + 2);
+    if (s) {
+        memcpy(s, dir, a);
+        s[a] = '/';
+        memcpy(s + a + 1, name, b + 1);
+    }
+    return s;
+}
+
+static int exists(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (f)
+        fclose(f);
+    return f != NULL;
+}
+
+/* Appends ", dir" (or "dir" first) to the list of searched directories, truncating quietly. */
+static void note_dir(char *list, size_t size, const char *dir)
+{
+    size_t used = strlen(list);
+    if (used + 1 < size)
+        snprintf(list + used, size - used, "%s%s", used ? ", " : "", dir);
+}
+
+int gplugin_load_from(const char *name, const char *dir, GError *err)
+{
+    if (!name || !name[0])
+        return gerror_set(err, G_ERR_INVALID, "no module path given");
+    if (strchr(name, '/')) { /* a path: relative to dir */
+        char *p = join(dir, name);
+        if (!p)
+            return gerror_set(err, G_ERR_NOMEM, "out of memory loading module '%s'", name);
+        int rc = load_path(p, err);
+        gmem_free(p);
+        return rc;
+    }
+    char searched[1024] = "";
+    const char *base = dir && dir[0] ? dir : ".";
+    char *p = join(base, name);
+    if (!p)
+        return gerror_set(err, G_ERR_NOMEM, "out of memory loading module '%s'", name);
+    if (exists(p)) {
+        int rc = load_path(p, err);
+        gmem_free(p);
+        return rc;
+    }
+    gmem_free(p);
+    note_dir(searched, sizeof searched, base);
+    const char *env = getenv(GPLUGIN_PATH_ENV);
+    for (const char *s = env; s && *s;) {
+        const char *colon = strchr(s, ':');
+        size_t len = colon ? (size_t)(colon - s) : strlen(s);
+        if (len > 0) {
+            char *d = gmem_alloc(len + 1);
+            if (!d)
+                return gerror_set(err, G_ERR_NOMEM, "out of memory loading module '%s'", name);
+            memcpy(d, s, len);
+            d[len] = '\0';
+            p = join(d, name);
+            note_dir(searched, sizeof searched, d);
+            gmem_free(d);
+            if (!p)
+                return gerror_set(err, G_ERR_NOMEM, "out of memory loading module '%s'", name);
+            if (exists(p)) {
+                int rc = load_path(p, err);
+                gmem_free(p);
+                return rc;
+            }
+            gmem_free(p);
+        }
+        s += len + (colon ? 1 : 0);
+    }
+    return gerror_set(err, G_ERR_IO, "cannot load module '%s': file not found in %s (%s%s)", name, searched,
+                      env && env[0] ? GPLUGIN_PATH_ENV "=" : GPLUGIN_PATH_ENV " is not set",
+                      env && env[0] ? env : "");
+}
+
+int gplugin_load(const char *path, GError *err) { return gplugin_load_from(path, NULL, err); }
+
 int gplugin_count(void)
 {
     pthread_mutex_lock(&lock);
     int n = nmodules;
     pthread_mutex_unlock(&lock);
     return n;
+}
+
+int gplugin_load_args(int *argc, char **argv, GError *err)
+{
+    static const char opt[] = "--plugin";
+    int n = 1;
+    for (int i = 1; i < *argc; i++) {
+        const char *name = NULL;
+        if (strcmp(argv[i], opt) == 0) {
+            if (i + 1 >= *argc)
+                return gerror_set(err, G_ERR_INVALID, "--plugin needs a value (a module FILE.so)");
+            name = argv[++i];
+        } else if (strncmp(argv[i], opt, sizeof opt - 1) == 0 && argv[i][sizeof opt - 1] == '=') {
+            name = argv[i] + sizeof opt;
+        } else {
+            argv[n++] = argv[i];
+            continue;
+        }
+        int rc = gplugin_load_from(name, ".", err);
+        if (rc != G_OK)
+            return rc;
+    }
+    *argc = n;
+    argv[n] = NULL;
+    return G_OK;
 }

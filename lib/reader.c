@@ -250,15 +250,17 @@ static int do_plugin(GReader *r, GError *err)
         return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "expected a quoted module path after 'plugin'");
     if (rc == G_OK && r->opt.no_plugins)
         return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "plugin statements are disabled for this file");
-    char *path = NULL;
+    char *name = NULL;
     if (rc == G_OK)
-        rc = greader_path(r, &path, err);
-    if (rc == G_OK) {
-        rc = gplugin_load(path, err);
+        rc = greader_string(r, &name, err);
+    if (rc == G_OK && !name[0])
+        rc = greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "empty module name");
+    if (rc == G_OK) { /* a path relative to the file, or a bare name searched as plugin.h says */
+        rc = gplugin_load_from(name, greader_dir(r), err);
         if (rc != G_OK)
             rc = greader_locate(r, err);
     }
-    gmem_free(path);
+    gmem_free(name);
     return rc;
 }
 
@@ -348,6 +350,22 @@ static int do_entry(GReader *r, GKind kind, GError *err)
     return rc;
 }
 
+/* Creates the caller's colour model (GReaderOptions.colormodel) once, before the first entry: a model a
+ * `plugin` statement of the file registers can so be chosen. */
+static int resolve_model(GReader *r, GError *err)
+{
+    if (!r->model_pending)
+        return G_OK;
+    r->model_pending = 0;
+    GColorModel *m = NULL;
+    int rc = gcolormodel_create(r->opt.colormodel, r->opt.colormodel_options, &m, err);
+    if (rc != G_OK)
+        return rc;
+    glibrary_set_model(r->lib, m, NULL);
+    r->opt.model = m;
+    return G_OK;
+}
+
 static const char statement_list[] = "include, plugin, colormodel, color, material, node, generator, object, light, "
                                      "camera";
 
@@ -371,7 +389,7 @@ static int parse_statements(GReader *r, GError *err)
         } else if (strcmp(t.text, "plugin") == 0) {
             rc = do_plugin(r, err);
         } else if (strcmp(t.text, "colormodel") == 0) {
-            rc = do_colormodel(r, r->opt.model != NULL, err);
+            rc = do_colormodel(r, r->opt.model != NULL || r->model_pending, err);
         } else {
             int kind = -1;
             for (int k = GKIND_COLOR; k < GKIND_COUNT && kind < 0; k++)
@@ -380,7 +398,9 @@ static int parse_statements(GReader *r, GError *err)
             if (kind < 0)
                 return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "unknown statement %s (expected %s)",
                                         found, statement_list);
-            rc = do_entry(r, (GKind)kind, err);
+            rc = resolve_model(r, err);
+            if (rc == G_OK)
+                rc = do_entry(r, (GKind)kind, err);
         }
         if (rc != G_OK)
             return rc;
@@ -413,13 +433,14 @@ static void reader_fini(GReader *r)
     greader_pop_all_sources(r);
 }
 
-/* Reads a source into lib; `override` makes the file's colormodel statement advisory. */
-static int run(GLibrary *lib, const GReaderOptions *opt, const char *path, const char *text, const char *name,
-               GError *err)
+/* Reads a source into lib; create_model: create opt->colormodel (when set) before the first entry. */
+static int run(GLibrary *lib, const GReaderOptions *opt, int create_model, const char *path, const char *text,
+               const char *name, GError *err)
 {
     GReader r;
     reader_init(&r, lib, opt);
     r.opt.model = glibrary_model_or_null(lib); /* a model chosen before the file overrides its statement */
+    r.model_pending = create_model && !r.opt.model && r.opt.colormodel != NULL;
     int rc;
     if (path) {
         char *copy = gmem_strdup(path);
@@ -432,6 +453,8 @@ static int run(GLibrary *lib, const GReaderOptions *opt, const char *path, const
     }
     if (rc == G_OK)
         rc = parse_statements(&r, err);
+    if (rc == G_OK)
+        rc = resolve_model(&r, err); /* a file without entries */
     reader_fini(&r);
     return rc;
 }
@@ -444,14 +467,8 @@ static int load(const char *path, const char *text, const char *name, const GRea
     *out = NULL;
     GLibrary *lib = NULL;
     int rc = glibrary_create(opt ? opt->model : NULL, &lib, &local);
-    if (rc == G_OK && opt && !opt->model && opt->colormodel) {
-        GColorModel *m = NULL;
-        rc = gcolormodel_create(opt->colormodel, opt->colormodel_options, &m, &local);
-        if (rc == G_OK)
-            glibrary_set_model(lib, m, NULL);
-    }
-    if (rc == G_OK)
-        rc = run(lib, opt, path, text, name, &local);
+    if (rc == G_OK) /* opt->colormodel is created by the reader, after the file's leading plugin statements */
+        rc = run(lib, opt, 1, path, text, name, &local);
     if (rc == G_OK && !glibrary_colormodel(lib))
         rc = gerror_set(&local, G_ERR_NOMEM, "out of memory creating the colour model");
     if (rc != G_OK) {
@@ -485,7 +502,7 @@ int glibrary_load_file(GLibrary *lib, const char *path, const GReaderOptions *op
         return gerror_set(err, G_ERR_INVALID, "no library or file given");
     GError local;
     gerror_clear(&local);
-    int rc = run(lib, opt, path, NULL, NULL, &local);
+    int rc = run(lib, opt, 0, path, NULL, NULL, &local);
     if (err)
         *err = local;
     return rc;

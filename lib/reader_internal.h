@@ -75,6 +75,7 @@ struct GReader {
     GReaderSource *src;
     int include_depth;
     int model_fixed; /* colours have been read in the library's model */
+    int model_pending; /* opt.colormodel is still to be created (after the plugin statements before the first entry) */
     int located;     /* the error in *err carries a position */
     GLexToken cur, ahead;
     int have_ahead;

@@ -1,7 +1,11 @@
 /* gcolor - a colour report: a few colours converted into every registered colour model and back,
- * printed as linear sRGB and CIE XYZ. Built only on the public API. */
+ * printed as linear sRGB and CIE XYZ; `gcolor list` names the registered models and `gcolor check MODEL`
+ * runs the conformance checks (check.c). Built only on the public API. */
+#include "gcolor.h"
+
 #include <generic/builtins.h>
 #include <generic/color.h>
+#include <generic/plugin.h>
 #include <generic/registry.h>
 
 #include <stdio.h>
@@ -11,11 +15,15 @@
 static void usage(FILE *f)
 {
     fprintf(f,
-            "usage: gcolor [--models LIST] [--rgb R,G,B]...\n"
+            "usage: gcolor [--models LIST] [--rgb R,G,B]... [--plugin FILE.so]...\n"
+            "       gcolor list [--plugin FILE.so]...          the registered colour models, one per line\n"
+            "       gcolor check MODEL [--step NM] [--plugin FILE.so]...   conformance checks of MODEL\n"
             "Prints sample colours in every colour model (or the comma-separated LIST): the value the model\n"
             "stores, its brightness, and its conversion back to linear sRGB and CIE 1931 XYZ.\n"
             "  --rgb R,G,B   add a reflectance in linear sRGB to the report (repeatable)\n"
             "  --models LIST only these models, e.g. rgb,spectrum\n"
+            "  --plugin FILE.so  load a module first (repeatable; a bare name is searched in the current\n"
+            "                directory, then in GENERIC_PLUGIN_PATH)\n"
             "  -h, --help    this text\n");
 }
 
@@ -52,12 +60,34 @@ static void report_model(const char *model_name, const Sample *samples, int n)
     gcolormodel_destroy(m);
 }
 
+static int list_models(void)
+{
+    const GTypeInfo *types[64];
+    int k = gregistry_list(GKIND_COLORMODEL, types, 64);
+    for (int i = 0; i < k && i < 64; i++)
+        printf("%s\n", types[i]->name);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     GError reg_err;
     if (generic_register_builtins(&reg_err) != G_OK) {
         fprintf(stderr, "%s\n", reg_err.message);
         return 1;
+    }
+    if (gplugin_load_args(&argc, argv, &reg_err) != G_OK) {
+        fprintf(stderr, "gcolor: %s\n", reg_err.message);
+        return reg_err.code == G_ERR_INVALID ? 2 : 1;
+    }
+    if (argc > 1 && strcmp(argv[1], "check") == 0)
+        return gcolor_check(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "list") == 0) {
+        if (argc > 2) {
+            fprintf(stderr, "gcolor list: unexpected argument '%s'\n", argv[2]);
+            return 2;
+        }
+        return list_models();
     }
     Sample samples[32] = {
         {"white light", {1, 1, 1}, GCOLOR_LIGHT},

@@ -5,6 +5,14 @@
 #include <generic/material.h>
 #include <generic/reader.h>
 
+/** Where on the surface a measurement is made (the geometry stays the xy plane with normal +z): the fields
+ * texture generators read. */
+typedef struct GmatPlace {
+    double u, v;
+    GVec3 point; /**< world and object point */
+    int surface;
+} GmatPlace;
+
 /** Everything a subcommand needs: the loaded file, the material and a surface point facing +z. */
 typedef struct GmatContext {
     GLibrary *lib;
@@ -14,6 +22,8 @@ typedef struct GmatContext {
     GScratch *scratch;
     GColor white;  /**< the unit white light: rgb 1 1 1 as a light (D65, Y = 1) */
     GColor result; /**< storage for one evaluation */
+    const GmatPlace *place; /**< NULL: u = v = 0.5 at the origin, surface 0 */
+    const GColor *light;    /**< the light measurements use; NULL: white */
 } GmatContext;
 
 /** A direction from polar angles in degrees about +z (theta from the normal, phi from +x). */
@@ -27,11 +37,22 @@ int gmat_specular(GmatContext *ctx, GVec3 in, GVec3 *dir);
  * sin^2(theta) and phi, exact for a Lambertian surface) plus the ideal specular part: the reflected colour goes
  * to `total` (storage of the model) and the luminance fractions to *y_total and *y_specular. */
 int gmat_albedo(GmatContext *ctx, GVec3 in, int n, GColor *total, double *y_total, double *y_specular);
+/** The surface point of a measurement at ctx->place: seen from outside (normal +z, from vacuum into the
+ * material) or, with below != 0, from inside (normal -z, from the material into vacuum). */
+void gmat_surface_point(GmatContext *ctx, GSurfPoint *sp, int below);
+/** Light from in (upper hemisphere) that the material transmits into the lower hemisphere, as a fraction of
+ * the incident light like gmat_albedo's: refraction() integrated over the lower hemisphere on the same grid
+ * plus the ideal refraction ray. Adds into `total`; *y_ideal gets the ideal ray's luminance fraction. */
+int gmat_transmittance(GmatContext *ctx, GVec3 in, int n, GColor *total, double *y_ideal);
 /** Prints a colour as linear sRGB and XYZ (read as a light), with its spectrum when spectrum != 0. */
 void gmat_print_color(const char *label, const GColor *c, int spectrum);
 /** Writes the polar plot of the BRDF in the plane of incidence of light from theta_in degrees. */
 int gmat_plot(GmatContext *ctx, double theta_in, int size, const char *path, GError *err);
 
+/** `gmat check FILE MATERIAL` (check.c): the conformance checks (albedo, reciprocity, finite values, Snell's
+ * law, defaults), one line each with its figure and PASS/FAIL; samples is the albedo grid (0 = 64). Returns the
+ * exit status: 0 when every property passes, 1 otherwise. */
+int gmat_check(GmatContext *ctx, int samples);
 /** `gmat laser FILE MATERIAL ...` (laser.c): the laser experiment of Wilkie et al.; returns the exit status. */
 int gmat_laser(int argc, char **argv);
 /** `gmat swatch FILE MATERIAL ...` (swatch.c): renders a material or texture tree; returns the exit status. */

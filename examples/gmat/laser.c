@@ -38,7 +38,8 @@ static void laser_usage(FILE *f)
             "                      and print the widths at half maximum of the unshifted lobe\n"
             "  --size PIXELS       panel size (64..4096, default 384)\n"
             "  --extent X          the target spans -X..X (default 1.5)\n"
-            "  --colormodel NAME   compute in this model instead of the file's; --step NM its spacing\n");
+            "  --colormodel NAME   compute in this model instead of the file's; --step NM its spacing\n"
+            "  --plugin FILE.so    load a module first (repeatable)\n");
 }
 
 static int elevations(const char *s, double *e, int *n)

@@ -4,6 +4,8 @@
  *   gmat albedo FILE MATERIAL --in THETA [--samples N]
  *   gmat plot   FILE MATERIAL --in THETA -o PLOT.png [--size PIXELS]
  *   gmat list   FILE
+ *   gmat check  FILE MATERIAL [--samples N]
+ *   gmat types  [material|node|generator]
  * common options: --colormodel NAME [--step NM], --plugin MODULE.so (repeatable), --help */
 #include "gmat.h"
 
@@ -37,7 +39,11 @@ static void usage_main(FILE *f)
                "  eval    reflected colour for one pair of directions\n"
                "  albedo  directional-hemispherical reflectance (numeric integration)\n"
                "  plot    polar plot of the reflection in the plane of incidence (PNG)\n"
-               "  list    the materials a file defines\n\n"
+               "  list    the materials, texture nodes and generators a file defines\n"
+               "  check   conformance checks: albedo, reciprocity, finite values, Snell's law, defaults\n"
+               "  types   the registered material, node and generator types\n"
+               "  swatch  a picture of a material or texture tree (gmat swatch --help)\n"
+               "  laser   the laser experiment of Wilkie et al. (gmat laser --help)\n\n"
                "`gmat COMMAND --help` describes each command.\n\n%s\n%s",
             convention, common);
 }
@@ -66,8 +72,28 @@ static void usage(const char *cmd, FILE *f)
                    "  -o FILE             output image (any format OpenImageIO writes; PNG is 8-bit sRGB)\n"
                    "  --size PIXELS       width (64..8192, default 512; height is 3/4 of it)\n\n%s\n%s",
                 convention, common);
+    else if (strcmp(cmd, "check") == 0)
+        fprintf(f, "usage: gmat check FILE MATERIAL [--samples N] [options]\n\n"
+                   "Measures the properties every material and texture tree must have and prints one line each:\n"
+                   "the worst figure, the tolerance, PASS or FAIL; the exit status is 1 when one fails.\n"
+                   "  albedo       reflected plus transmitted light <= incident (+0.01 for the quadrature) at\n"
+                   "               incidences 0..85 degrees, per sample of the colour model\n"
+                   "  reciprocity  f_r(in, out) = f_r(out, in) over random pairs (relative 1e-3)\n"
+                   "  finite       no failure, NaN, infinite or negative value from any colour method\n"
+                   "  snell        refraction_dir follows Snell's law both ways, total internal reflection\n"
+                   "               past the critical angle (materials that are not opaque)\n"
+                   "  defaults     methods the class leaves out behave as material.h documents\n"
+                   "Each is measured at several surface points (u, v, point and surface index vary).\n"
+                   "  --samples N         albedo grid N x 2N (8..4096, default 64)\n\n%s",
+                common);
+    else if (strcmp(cmd, "types") == 0)
+        fprintf(f, "usage: gmat types [material|node|generator] [options]\n\n"
+                   "Prints the registered types of those kinds (default: all three), one `KIND NAME` per line,\n"
+                   "including those the modules given with --plugin add.\n\n%s",
+                common);
     else if (strcmp(cmd, "list") == 0)
-        fprintf(f, "usage: gmat list FILE [options]\n\nLists the materials FILE defines, with their types.\n\n%s",
+        fprintf(f, "usage: gmat list FILE [options]\n\nLists the materials, texture nodes and generators FILE defines, with their\n"
+                   "types: `KIND NAME TYPE - summary` per line.\n\n%s",
                 common);
     else
         usage_main(f);
@@ -140,13 +166,6 @@ static int parse_args(int argc, char **argv, Args *a)
             if (gmat_number(v, 0.1, 400.0, &a->step))
                 return gmat_usage_error(cmd, "--step: '%s' is not a spacing in nm (0.1..400)", v);
             i++;
-        } else if (strcmp(o, "--plugin") == 0) {
-            GError err;
-            if (gplugin_load(v, &err) != G_OK) {
-                fprintf(stderr, "gmat: %s\n", err.message);
-                return 1;
-            }
-            i++;
         } else if (strcmp(o, "--samples") == 0) {
             double n;
             if (gmat_number(v, 8, 4096, &n) || n != floor(n))
@@ -175,6 +194,8 @@ static int parse_args(int argc, char **argv, Args *a)
         return 0;
     if (!a->material)
         return gmat_usage_error(cmd, "%s", "no MATERIAL given");
+    if (strcmp(cmd, "check") == 0)
+        return 0;
     if (!a->have_in)
         return gmat_usage_error(cmd, "%s", "--in THETA is required");
     if (strcmp(cmd, "eval") == 0 && !a->have_out)
@@ -187,7 +208,7 @@ static int parse_args(int argc, char **argv, Args *a)
 static int list(GLibrary *lib)
 {
     printf("colour model: %s\n", gcolormodel_name(glibrary_colormodel(lib)));
-    for (int k = GKIND_MATERIAL; k <= GKIND_NODE; k++)
+    for (int k = GKIND_MATERIAL; k <= GKIND_GENERATOR; k++)
         for (int i = 0; i < glibrary_count(lib, (GKind)k); i++) {
             const char *name;
             const GTypeInfo *t;
@@ -198,8 +219,39 @@ static int list(GLibrary *lib)
     return 0;
 }
 
+/* `gmat types [KIND]`: the registry's own list, so a script can check every registered type. */
+static int types(int argc, char **argv)
+{
+    const GKind kinds[] = {GKIND_MATERIAL, GKIND_NODE, GKIND_GENERATOR};
+    const char *only = NULL;
+    for (int i = 2; i < argc; i++) {
+        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            usage("types", stdout);
+            return 0;
+        }
+        int known = 0;
+        for (int k = 0; k < 3; k++)
+            known |= strcmp(argv[i], gkind_name(kinds[k])) == 0;
+        if (!known || only)
+            return gmat_usage_error("types", "unexpected argument '%s' (expected material, node or generator)",
+                                    argv[i]);
+        only = argv[i];
+    }
+    for (int k = 0; k < 3; k++) {
+        if (only && strcmp(only, gkind_name(kinds[k])) != 0)
+            continue;
+        const GTypeInfo *t[256];
+        int n = gregistry_list(kinds[k], t, 256);
+        for (int i = 0; i < n && i < 256; i++)
+            printf("%s %s\n", gkind_name(kinds[k]), t[i]->name);
+    }
+    return 0;
+}
+
 static int run(const Args *a, GmatContext *ctx)
 {
+    if (strcmp(a->cmd, "check") == 0)
+        return gmat_check(ctx, a->samples);
     if (strcmp(a->cmd, "eval") == 0) {
         GVec3 in = gmat_direction(a->in_t, a->in_p), out = gmat_direction(a->out_t, a->out_p);
         int rc = gmat_reflect(ctx, in, out);
@@ -246,6 +298,10 @@ int main(int argc, char **argv)
         fprintf(stderr, "%s\n", reg_err.message);
         return 1;
     }
+    if (gplugin_load_args(&argc, argv, &reg_err) != G_OK) {
+        fprintf(stderr, "gmat: %s\n", reg_err.message);
+        return reg_err.code == G_ERR_INVALID ? 2 : 1;
+    }
     if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "help") == 0) {
         usage_main(argc < 2 ? stderr : stdout);
         return argc < 2 ? 2 : 0;
@@ -254,9 +310,14 @@ int main(int argc, char **argv)
         return gmat_laser(argc, argv);
     if (strcmp(argv[1], "swatch") == 0)
         return gmat_swatch(argc, argv);
+    if (strcmp(argv[1], "types") == 0)
+        return types(argc, argv);
     Args a = {.cmd = argv[1]};
-    if (strcmp(a.cmd, "eval") && strcmp(a.cmd, "albedo") && strcmp(a.cmd, "plot") && strcmp(a.cmd, "list"))
-        return gmat_usage_error(NULL, "unknown command '%s' (expected eval, albedo, plot or list)", a.cmd);
+    if (strcmp(a.cmd, "eval") && strcmp(a.cmd, "albedo") && strcmp(a.cmd, "plot") && strcmp(a.cmd, "list") &&
+        strcmp(a.cmd, "check"))
+        return gmat_usage_error(NULL,
+                                "unknown command '%s' (expected eval, albedo, plot, list, check, types, swatch or laser)",
+                                a.cmd);
     int rc = parse_args(argc, argv, &a);
     if (rc != 0)
         return rc;

@@ -11,25 +11,61 @@ GVec3 gmat_direction(double theta_deg, double phi_deg)
     return gvec3(sin(t) * cos(p), sin(t) * sin(p), cos(t));
 }
 
-/* A fresh surface point at the origin of the xy plane, normal +z, seen from outside. */
-static void point(GmatContext *ctx, GSurfPoint *sp)
+void gmat_surface_point(GmatContext *ctx, GSurfPoint *sp, int below)
 {
     gsurfpoint_init(sp, ctx->model, ctx->scratch);
-    sp->geometric_normal = gvec3(0, 0, 1);
+    sp->geometric_normal = gvec3(0, 0, below ? -1 : 1);
     sp->dpdu = gvec3(1, 0, 0);
     sp->dpdv = gvec3(0, 1, 0);
     sp->u = sp->v = 0.5;
-    sp->entering = 1;
+    if (ctx->place) {
+        sp->u = ctx->place->u;
+        sp->v = ctx->place->v;
+        sp->point = sp->object_point = ctx->place->point;
+        sp->surface = ctx->place->surface;
+    }
+    sp->entering = !below;
     sp->material = ctx->material;
-    sp->to = ctx->material;
+    sp->from = below ? ctx->material : NULL;
+    sp->to = below ? NULL : ctx->material;
 }
+
+static const GColor *light(const GmatContext *ctx) { return ctx->light ? ctx->light : &ctx->white; }
 
 int gmat_reflect(GmatContext *ctx, GVec3 in, GVec3 out)
 {
     GSurfPoint sp;
-    point(ctx, &sp);
+    gmat_surface_point(ctx, &sp, 0);
     GScratchMark mark = gscratch_mark(ctx->scratch);
-    int rc = gmaterial_reflection(ctx->material, &sp, in, &ctx->white, out, &ctx->result);
+    int rc = gmaterial_reflection(ctx->material, &sp, in, light(ctx), out, &ctx->result);
+    gscratch_release(ctx->scratch, mark);
+    return rc;
+}
+
+/* The relative index n(from) / n(to) of the point as a colour (as a renderer hands it to refraction()). */
+static int relative_index(GSurfPoint *sp, GColor *out)
+{
+    GColor to;
+    int rc = gcolor_scratch(&to, sp->model, sp->scratch);
+    if (rc == G_OK)
+        rc = gmaterial_refraction_index(sp->from, sp, out);
+    if (rc == G_OK)
+        rc = gmaterial_refraction_index(sp->to, sp, &to);
+    return rc == G_OK ? gcolor_div(out, out, &to) : rc;
+}
+
+/* Light from in (upper hemisphere) refracted towards out (lower hemisphere), into ctx->result. */
+static int transmit(GmatContext *ctx, GVec3 in, GVec3 out)
+{
+    GSurfPoint sp;
+    gmat_surface_point(ctx, &sp, 1);
+    GScratchMark mark = gscratch_mark(ctx->scratch);
+    GColor ri;
+    int rc = gcolor_scratch(&ri, ctx->model, ctx->scratch);
+    if (rc == G_OK)
+        rc = relative_index(&sp, &ri);
+    if (rc == G_OK)
+        rc = gmaterial_refraction(ctx->material, &sp, in, light(ctx), &ri, out, &ctx->result);
     gscratch_release(ctx->scratch, mark);
     return rc;
 }
@@ -37,24 +73,23 @@ int gmat_reflect(GmatContext *ctx, GVec3 in, GVec3 out)
 int gmat_specular(GmatContext *ctx, GVec3 in, GVec3 *dir)
 {
     GSurfPoint sp;
-    point(ctx, &sp);
+    gmat_surface_point(ctx, &sp, 0);
     if (gmaterial_reflection_dir(ctx->material, &sp, gvec3_neg(in), dir) != 1)
         return 0;
     if (dir->z <= 0.0)
         return 0;
     GScratchMark mark = gscratch_mark(ctx->scratch);
-    int rc = gmaterial_reflection(ctx->material, &sp, in, &ctx->white, *dir, &ctx->result);
+    int rc = gmaterial_reflection(ctx->material, &sp, in, light(ctx), *dir, &ctx->result);
     gscratch_release(ctx->scratch, mark);
     return rc == G_OK ? 1 : rc;
 }
 
-int gmat_albedo(GmatContext *ctx, GVec3 in, int n, GColor *total, double *y_total, double *y_specular)
+/* rho = 1/cos(theta_in) * integral of f(in, out) cos(theta_out) d(omega) over the upper (below = 0: reflection)
+ * or lower (below = 1: refraction) hemisphere; with u = sin^2(theta_out): cos(theta) d(omega) = 1/2 du dphi
+ * over [0,1] x [0, 2 pi]. Adds into total. */
+static int integrate(GmatContext *ctx, GVec3 in, int n, int below, GColor *total)
 {
-    /* rho = 1/cos(theta_in) * integral of reflection(in, out) cos(theta_out) d(omega); with
-     * u = sin^2(theta_out): cos(theta) d(omega) = 1/2 du dphi over [0,1] x [0, 2 pi]. */
-    gcolor_black(total);
-    double cin = in.z, xyz[3];
-    double w = 0.5 * (1.0 / n) * (2.0 * M_PI / (2 * n)) / cin;
+    double w = 0.5 * (1.0 / n) * (2.0 * M_PI / (2 * n)) / in.z;
     /* colours hold floats: sum each ring of directions on its own, then the rings, to keep rounding small */
     GColor ring = {0};
     if (gcolor_alloc(&ring, ctx->model) != G_OK)
@@ -65,7 +100,8 @@ int gmat_albedo(GmatContext *ctx, GVec3 in, int n, GColor *total, double *y_tota
         gcolor_black(&ring);
         for (int j = 0; j < 2 * n && rc == G_OK; j++) {
             double p = (j + 0.5) * 2.0 * M_PI / (2 * n);
-            rc = gmat_reflect(ctx, in, gvec3(st * cos(p), st * sin(p), ct));
+            GVec3 out = gvec3(st * cos(p), st * sin(p), below ? -ct : ct);
+            rc = below ? transmit(ctx, in, out) : gmat_reflect(ctx, in, out);
             if (rc == G_OK)
                 rc = gcolor_add_scaled(&ring, &ctx->result, w);
         }
@@ -73,6 +109,14 @@ int gmat_albedo(GmatContext *ctx, GVec3 in, int n, GColor *total, double *y_tota
             rc = gcolor_add(total, total, &ring);
     }
     gcolor_free(&ring);
+    return rc;
+}
+
+int gmat_albedo(GmatContext *ctx, GVec3 in, int n, GColor *total, double *y_total, double *y_specular)
+{
+    double xyz[3];
+    gcolor_black(total);
+    int rc = integrate(ctx, in, n, 0, total);
     if (rc != G_OK)
         return rc;
     *y_specular = 0.0;
@@ -90,6 +134,37 @@ int gmat_albedo(GmatContext *ctx, GVec3 in, int n, GColor *total, double *y_tota
     gcolor_to_xyz(total, GCOLOR_LIGHT, xyz);
     *y_total = xyz[1];
     return G_OK;
+}
+
+int gmat_transmittance(GmatContext *ctx, GVec3 in, int n, GColor *total, double *y_ideal)
+{
+    int rc = integrate(ctx, in, n, 1, total);
+    *y_ideal = 0.0;
+    if (rc != G_OK)
+        return rc;
+    /* the ideal ray: the refraction direction of the light's ray seen from outside, evaluated from inside */
+    GSurfPoint up;
+    gmat_surface_point(ctx, &up, 0);
+    GScratchMark mark = gscratch_mark(ctx->scratch);
+    GColor ri;
+    GVec3 dir;
+    rc = gcolor_scratch(&ri, ctx->model, ctx->scratch);
+    if (rc == G_OK)
+        rc = relative_index(&up, &ri);
+    int valid = rc == G_OK ? gmaterial_refraction_dir(ctx->material, &up, gvec3_neg(in), &ri, &dir) : rc;
+    gscratch_release(ctx->scratch, mark);
+    if (valid < 0)
+        return valid;
+    if (valid == 1 && dir.z < 0.0) {
+        rc = transmit(ctx, in, gvec3_normalize(dir));
+        if (rc == G_OK) {
+            double xyz[3];
+            gcolor_to_xyz(&ctx->result, GCOLOR_LIGHT, xyz);
+            *y_ideal = xyz[1];
+            rc = gcolor_add(total, total, &ctx->result);
+        }
+    }
+    return rc;
 }
 
 void gmat_print_color(const char *label, const GColor *c, int spectrum)

@@ -1,6 +1,7 @@
 /* swatch.c - `gmat swatch`: a picture of a material or texture tree, so a pattern can be seen without a scene.
  *
  *   gmat swatch FILE MATERIAL -o SWATCH.png [--size N] [--sphere] [--samples N] [--colormodel NAME [--step NM]]
+ *               [--plugin FILE.so]... (modules are loaded by main.c before the subcommand runs)
  *
  * The flat swatch is the unit square of (u, v) (u to the right, v up; the object-space point is (u, v, 0)),
  * seen from straight above; --sphere shows a unit sphere instead, u around it (longitude) and v from the south
@@ -37,7 +38,9 @@ static void swatch_usage(FILE *f)
                "  -o SWATCH.png       output image (8-bit sRGB for .png/.jpg, linear for .exr/.hdr)\n"
                "  --size N            width and height in pixels (16..4096, default 256)\n"
                "  --samples N         N x N samples per pixel (1..8, default 2)\n"
-               "  --colormodel NAME   compute in this model instead of the file's; --step NM its spacing\n");
+               "  --colormodel NAME   compute in this model instead of the file's (or one a module registers);\n"
+               "                      --step NM its spacing\n"
+               "  --plugin FILE.so    load a module first (repeatable)\n");
 }
 
 /* Light reaching the point's viewer (+z) from the swatch's lights, added into s->sum. */

@@ -5,6 +5,7 @@
 
 #include <generic/builtins.h>
 #include <generic/memory.h>
+#include <generic/plugin.h>
 
 #include <errno.h>
 #include <math.h>
@@ -27,6 +28,7 @@ static void usage(FILE *f)
             "  convert     write the probe as a lat-long or angular map (after --rotate)\n"
             "  compare     RMSE of a render against a reference, whole image and inside the cast shadows\n"
             "  sky         write a synthetic sky-and-sun probe\n"
+            "Every command also takes --plugin FILE.so (repeatable): load a module first.\n"
             "Directions: right-handed, z up. In a lat-long probe row 0 is the zenith, the middle column looks\n"
             "along +x, a quarter of the way along +y and the edges along -x, as Blender maps world textures\n"
             "(see include/generic/probe.h).\n");
@@ -38,6 +40,10 @@ int main(int argc, char **argv)
     if (generic_register_builtins(&reg_err) != G_OK) {
         fprintf(stderr, "%s\n", reg_err.message);
         return 1;
+    }
+    if (gplugin_load_args(&argc, argv, &reg_err) != G_OK) {
+        fprintf(stderr, "gprobe: %s\n", reg_err.message);
+        return reg_err.code == G_ERR_INVALID ? 2 : 1;
     }
     if (argc < 2 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "--help") == 0) {
         usage(argc < 2 ? stderr : stdout);

@@ -7,6 +7,7 @@
 #include "probe_env.h"
 
 #include <generic/builtins.h>
+#include <generic/plugin.h>
 #include <generic/registry.h>
 
 #include <errno.h>
@@ -20,7 +21,7 @@ static void usage(FILE *f)
     gregistry_names(GKIND_COLORMODEL, models, sizeof models);
     fprintf(f,
             "usage: gtrace SCENE -o OUT [--width W] [--height H] [--spp N] [--depth D] [--colormodel M]\n"
-            "              [--threads N] [--cutoff W] [--exposure STOPS] [-q]\n"
+            "              [--threads N] [--cutoff W] [--exposure STOPS] [--plugin FILE.so]... [-q]\n"
             "              [--probe FILE] [--probe-technique T] [--probe-count N] [--probe-samples N]\n"
             "              [--probe-scale S] [--probe-shadows on|off]\n"
             "Renders a scene file (the library's text format with camera, object and light entries) with a\n"
@@ -31,7 +32,10 @@ static void usage(FILE *f)
             "  --height H        image height (default: the camera's)\n"
             "  --spp N           samples per pixel, stratified and jittered (default: the camera's)\n"
             "  --depth D         reflection/refraction recursion depth (default: the camera's)\n"
-            "  --colormodel M    compute in colour model M instead of the scene's (%s)\n"
+            "  --colormodel M    compute in colour model M instead of the scene's (%s, or one a\n"
+            "                    module registers: --plugin or a `plugin` statement of the scene)\n"
+            "  --plugin FILE.so  load a module before reading the scene (repeatable; a bare name is\n"
+            "                    searched in the current directory, then GENERIC_PLUGIN_PATH)\n"
             "  --cutoff W        do not trace rays whose weight in the pixel is below W (default: the\n"
             "                    camera's, 1e-3; 0 traces every ray to the depth limit)\n"
             "  --threads N       render threads (default: all processors)\n"
@@ -179,6 +183,10 @@ int main(int argc, char **argv)
     if (generic_register_builtins(&reg_err) != G_OK) {
         fprintf(stderr, "%s\n", reg_err.message);
         return 1;
+    }
+    if (gplugin_load_args(&argc, argv, &reg_err) != G_OK) {
+        fprintf(stderr, "gtrace: %s\n", reg_err.message);
+        return reg_err.code == G_ERR_INVALID ? 2 : 1;
     }
     Options o;
     int a = parse_args(argc, argv, &o);

@@ -27,7 +27,14 @@
  * A module is built against the installed headers only and is not linked with libgeneric: the library's
  * functions are resolved from the program that loads it (programs link libgeneric.so, or the static library
  * with -rdynamic). A loaded module stays loaded for the life of the process (its types stay registered); loading
- * the same file again does nothing. */
+ * the same file again does nothing.
+ *
+ * Finding a module. A name that contains a slash is a path: as it is for gplugin_load (relative to the current
+ * directory), relative to the including file for a `plugin` statement. A bare name ("grey.so") is looked up
+ * in a base directory first (the current directory for gplugin_load, the including file's directory for a
+ * `plugin` statement), then in each directory of the environment variable GENERIC_PLUGIN_PATH
+ * (colon-separated, searched in order; empty entries are skipped). The first existing file is loaded; when
+ * none exists the error lists every directory searched. */
 #ifndef GENERIC_PLUGIN_H
 #define GENERIC_PLUGIN_H
 
@@ -107,6 +114,19 @@ typedef int (*GModuleInitFn)(GModuleApi *api, GError *err);
  * when it was built for another GMODULE_ABI_VERSION, the init's status when that fails, G_ERR_EXISTS when it
  * registers a name taken already. Loading the same file twice is a no-op. Thread safe. */
 int gplugin_load(const char *path, GError *err);
+/** Loads a module found by the rule above with `dir` as the base directory (NULL = the current directory):
+ * a name with a slash is dir/name (or name itself when absolute); a bare name is dir/name if that exists, else
+ * the first GENERIC_PLUGIN_PATH directory that holds it. G_ERR_IO naming the directories searched when no
+ * file is found; otherwise as gplugin_load. */
+int gplugin_load_from(const char *name, const char *dir, GError *err);
+/** Loads the module of every `--plugin FILE` (or `--plugin=FILE`) in argv[1..*argc-1], searched as
+ * gplugin_load_from with the current directory, and removes those arguments from argv (keeping the order of the
+ * others; argv[*argc] becomes NULL). Tools call it first, so that every later use of the registry sees the
+ * modules. G_ERR_INVALID for a --plugin without a value, a module's load error otherwise (argv then unchanged
+ * beyond the arguments consumed so far). */
+int gplugin_load_args(int *argc, char **argv, GError *err);
+/** Name of the environment variable with the module search directories. */
+#define GPLUGIN_PATH_ENV "GENERIC_PLUGIN_PATH"
 /** Number of modules loaded so far. */
 int gplugin_count(void);
 

@@ -85,7 +85,9 @@ typedef struct GReaderOptions {
      * the library). NULL: see colormodel. */
     const GColorModel *model;
     /** Create this registered model instead of the file's (with colormodel_options, NULL = defaults).
-     * NULL: the file's `colormodel` entry, else "rgb". Ignored when model is set. */
+     * NULL: the file's `colormodel` entry, else "rgb". Ignored when model is set. The model is created when
+     * the first entry is read (or at the end of a file without entries), so it may be one that a `plugin`
+     * statement before that entry registers; an unknown name fails the load. */
     const char *colormodel;
     const GColorModelOptions *colormodel_options;
     /** Nesting limit; 0 = GREADER_DEFAULT_MAX_DEPTH. */

@@ -1,0 +1,10 @@
+/* gcolor.h - the parts of the gcolor tool (examples/gcolor/). */
+#ifndef GCOLOR_TOOL_H
+#define GCOLOR_TOOL_H
+
+/** `gcolor check MODEL [--step NM]` (check.c): the conformance checks of a colour model, one line per
+ * property with its measured worst error and PASS/FAIL; returns the exit status (0 all pass, 1 a failure,
+ * 2 a usage error). argv[0] is "check". */
+int gcolor_check(int argc, char **argv);
+
+#endif

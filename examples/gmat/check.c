@@ -1,0 +1,500 @@
+/* check.c - `gmat check FILE MATERIAL`: conformance checks any material or texture-tree author can run, built-in
+ * or plug-in. Each property is measured and printed on one line: its name, the worst figure, the tolerance and
+ * PASS or FAIL; the exit status is 1 when one fails.
+ *
+ * Every property is measured at several places on the surface (u, v, the point and the surface index vary, so
+ * texture generators change), with the geometry of measure.c: the xy plane, normal +z, seen from outside
+ * (light from vacuum) or, for transmission, from inside.
+ *   albedo       reflection integrated over the upper hemisphere plus the ideal reflection ray, plus refraction
+ *                over the lower hemisphere plus the ideal refraction ray (measure.c), for light from each
+ *                incidence of a sweep, per sample of the colour model: reflected / incident <= 1 + TOL_ALBEDO
+ *                (the quadrature's error on a sharp lobe), relative to the irradiance about the shading
+ *                normal (the same as the geometric one unless a bump node tilts it: against the geometric
+ *                normal a bumped Lambertian surface reflects up to 1.48 times the light at 85 degrees, the
+ *                known energy gain of shading normals at grazing incidence). A material that moves light between samples
+ *                (fluorescence) is measured with a one-sample light per sample instead: the power leaving,
+ *                summed over all samples, per unit of power arriving in that sample.
+ *   reciprocity  f_r(in, out) = reflection(in, out) / cos(theta_in) against f_r(out, in) over random pairs,
+ *                cosines about the shading normal: max difference / max value <= TOL_RECIPROCITY.
+ *   finite       every colour method (reflection, refraction, emission, ambient, absorption, diffuse,
+ *                refraction index) over a sweep of directions returns G_OK and a value gcolor_is_nonnegative
+ *                accepts.
+ *   snell        for a material that is not opaque: refraction_dir from outside and from inside follows
+ *                n1 sin(theta1) = n2 sin(theta2) in the plane of incidence (n the material's refraction index,
+ *                its brightness as a renderer uses it, vacuum outside), and from inside it returns 0 past the
+ *                critical angle; for an opaque one, refraction_dir returns 0.
+ *   defaults     for every method the class leaves NULL, the value material.h documents. */
+#include "gmat.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define TOL_ALBEDO 0.01
+#define TOL_RECIPROCITY 1e-3
+#define TOL_SNELL 1e-4
+#define TOL_DEFAULT 1e-5
+#define NPLACES 4
+#define NPAIRS 200
+
+static const double incidences[] = {0, 20, 40, 60, 75, 85};
+#define NINC ((int)(sizeof incidences / sizeof incidences[0]))
+
+typedef struct Checker {
+    GmatContext *ctx;
+    GmatPlace places[NPLACES];
+    int samples; /* albedo grid */
+    int failures;
+    GColor a, b, c; /* work colours */
+} Checker;
+
+static void report(Checker *k, const char *property, double worst, double tol, const char *detail)
+{
+    int pass = worst <= tol; /* NaN fails */
+    if (!pass)
+        k->failures++;
+    printf("%-12s worst %-11.4g tolerance %-8.4g %s  %s\n", property, worst, tol, pass ? "PASS" : "FAIL", detail);
+}
+
+/* Deterministic uniform numbers in [0, 1) (a small LCG: the same pairs on every run). */
+static double uniform(unsigned long long *s)
+{
+    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(*s >> 11) * (1.0 / 9007199254740992.0);
+}
+
+/* A direction in the upper hemisphere at most 85 degrees from the normal. */
+static GVec3 random_direction(unsigned long long *s)
+{
+    double ct = cos(85.0 * M_PI / 180.0) + (1.0 - cos(85.0 * M_PI / 180.0)) * uniform(s), p = 2.0 * M_PI * uniform(s);
+    double st = sqrt(fmax(0.0, 1.0 - ct * ct));
+    return gvec3(st * cos(p), st * sin(p), ct);
+}
+
+/* ---- albedo ---- */
+
+/* 1 when light in one sample leaves in another (checked at a few direction pairs, each sample alone). */
+static int shifts_samples(Checker *k)
+{
+    GmatContext *ctx = k->ctx;
+    const GColorModel *m = ctx->model;
+    if (m->nvalues < 2)
+        return 0;
+    GVec3 pairs[3][2] = {{gmat_direction(10, 0), gmat_direction(30, 180)},
+                         {gmat_direction(45, 30), gmat_direction(60, 120)},
+                         {gmat_direction(70, 200), gmat_direction(20, 10)}};
+    int shifted = 0;
+    for (int s = 0; s < m->nvalues && !shifted; s++) {
+        gcolor_black(&k->a);
+        k->a.v[s] = 1.0f;
+        ctx->light = &k->a;
+        for (int p = 0; p < 3 && !shifted; p++)
+            if (gmat_reflect(ctx, pairs[p][0], pairs[p][1]) == G_OK)
+                for (int j = 0; j < m->nvalues; j++)
+                    if (j != s && fabs(ctx->result.v[j]) > 1e-7 * fabs(ctx->result.v[s]) + 1e-12)
+                        shifted = 1;
+    }
+    ctx->light = NULL;
+    return shifted;
+}
+
+/* Light leaving (reflected and transmitted) for the light ctx->light from in, into total. */
+static int leaving(Checker *k, GVec3 in, GColor *total)
+{
+    double ys, yt, y;
+    GSurfPoint sp;
+    gmat_surface_point(k->ctx, &sp, 0);
+    int opaque = gmaterial_opaque(k->ctx->material, &sp); /* then refraction is black: skip its integral */
+    double cos_s = gvec3_dot(gsurfpoint_normal(&sp), in);
+    int rc = gmat_albedo(k->ctx, in, k->samples, total, &y, &ys);
+    if (rc == G_OK && !opaque)
+        rc = gmat_transmittance(k->ctx, in, k->samples, total, &yt);
+    /* measure.c divides by the geometric cos(theta_in); relative to the light the shading normal receives */
+    if (rc == G_OK)
+        rc = gcolor_scale(total, total, cos_s > 0.01 ? in.z / cos_s : 0.0);
+    return rc;
+}
+
+static void check_albedo(Checker *k)
+{
+    GmatContext *ctx = k->ctx;
+    const GColorModel *m = ctx->model;
+    int shift = shifts_samples(k);
+    double worst = 0.0, at_theta = 0.0;
+    int at_sample = 0, at_place = 0, failed = 0;
+    int nplaces = shift ? 1 : NPLACES; /* one light per sample costs nvalues times more: one place, half the grid */
+    int samples = k->samples;
+    if (shift)
+        k->samples = samples / 2 > 8 ? samples / 2 : 8;
+    for (int p = 0; p < nplaces && !failed; p++) {
+        ctx->place = &k->places[p];
+        for (int t = 0; t < NINC && !failed; t++) {
+            GVec3 in = gmat_direction(incidences[t], 30.0);
+            for (int s = 0; s < (shift ? m->nvalues : 1) && !failed; s++) {
+                double ratio[1024];
+                int nr = 0;
+                if (shift) { /* the power leaving in every sample per unit arriving in sample s */
+                    gcolor_black(&k->a);
+                    k->a.v[s] = 1.0f;
+                    ctx->light = &k->a;
+                    failed = leaving(k, in, &k->b) != G_OK;
+                    double sum = 0.0;
+                    for (int j = 0; j < m->nvalues; j++)
+                        sum += k->b.v[j];
+                    ratio[nr++] = sum;
+                } else { /* white light: sample by sample */
+                    failed = leaving(k, in, &k->b) != G_OK;
+                    for (int j = 0; j < m->nvalues && j < 1024; j++)
+                        ratio[nr++] = ctx->white.v[j] > 0.0f ? k->b.v[j] / ctx->white.v[j] : 0.0;
+                }
+                for (int j = 0; j < nr && !failed; j++)
+                    if (!(ratio[j] <= worst)) {
+                        worst = isfinite(ratio[j]) ? ratio[j] : INFINITY;
+                        at_theta = incidences[t], at_sample = shift ? s : j, at_place = p;
+                    }
+            }
+        }
+    }
+    ctx->light = NULL;
+    ctx->place = NULL;
+    int used = k->samples;
+    k->samples = samples;
+    char detail[200];
+    if (failed)
+        snprintf(detail, sizeof detail, "(the material failed to evaluate)");
+    else
+        snprintf(detail, sizeof detail, "(largest reflected+transmitted/incident, at theta_in %g, sample %d, place %d;"
+                 " %d x %d grid%s)", at_theta, at_sample, at_place, used, 2 * used,
+                 shift ? ", light moves between samples: one light per sample" : "");
+    report(k, "albedo", failed ? INFINITY : worst, 1.0 + TOL_ALBEDO, detail);
+}
+
+/* ---- reciprocity ---- */
+
+static int f_r(Checker *k, GVec3 in, GVec3 out, GColor *f, double *cos_in)
+{
+    GmatContext *ctx = k->ctx;
+    GSurfPoint sp;
+    gmat_surface_point(ctx, &sp, 0);
+    *cos_in = gvec3_dot(gsurfpoint_normal(&sp), in);
+    int rc = gmat_reflect(ctx, in, out);
+    if (rc == G_OK && *cos_in > 0.05)
+        rc = gcolor_scale(f, &ctx->result, 1.0 / *cos_in);
+    return rc;
+}
+
+static void check_reciprocity(Checker *k)
+{
+    unsigned long long seed = 12345;
+    double worst = 0.0, wi = 0, wo = 0;
+    int pairs = 0, failed = 0;
+    for (int p = 0; p < NPLACES && !failed; p++) {
+        k->ctx->place = &k->places[p];
+        for (int i = 0; i < NPAIRS / NPLACES && !failed; i++) {
+            GVec3 in = random_direction(&seed), out = random_direction(&seed);
+            double ci, co;
+            if (f_r(k, in, out, &k->a, &ci) != G_OK || f_r(k, out, in, &k->b, &co) != G_OK) {
+                failed = 1;
+                break;
+            }
+            if (ci <= 0.05 || co <= 0.05) /* grazing about a bumped shading normal: f_r is not defined */
+                continue;
+            double big = 0.0, d = 0.0;
+            for (int j = 0; j < k->ctx->model->nvalues; j++) {
+                big = fmax(big, fmax(fabs(k->a.v[j]), fabs(k->b.v[j])));
+                d = fmax(d, fabs((double)k->a.v[j] - k->b.v[j]));
+            }
+            double e = big > 0.0 ? d / big : d;
+            if (!isfinite(e))
+                e = INFINITY;
+            if (e > worst)
+                worst = e, wi = acos(fmin(1.0, in.z)) * 180 / M_PI, wo = acos(fmin(1.0, out.z)) * 180 / M_PI;
+            pairs++;
+        }
+    }
+    k->ctx->place = NULL;
+    char detail[160];
+    snprintf(detail, sizeof detail, "(|f(in,out) - f(out,in)| / max, %d random pairs; worst at theta %.1f / %.1f)", pairs,
+             wi, wo);
+    report(k, "reciprocity", failed ? INFINITY : worst, TOL_RECIPROCITY, failed ? "(the material failed)" : detail);
+}
+
+/* ---- finite and non-negative ---- */
+
+static void check_finite(Checker *k)
+{
+    GmatContext *ctx = k->ctx;
+    const GMaterial *m = ctx->material;
+    int bad = 0, total = 0;
+    const char *first = NULL;
+#define COUNT(call, what)                                                                                     \
+    do {                                                                                                      \
+        total++;                                                                                              \
+        int rc_ = (call);                                                                                     \
+        if (rc_ != G_OK || !gcolor_is_nonnegative(&k->c)) {                                                   \
+            bad++;                                                                                            \
+            if (!first)                                                                                       \
+                first = what;                                                                                 \
+        }                                                                                                     \
+    } while (0)
+    for (int p = 0; p < NPLACES; p++) {
+        ctx->place = &k->places[p];
+        for (int below = 0; below < 2; below++) {
+            GSurfPoint sp;
+            gmat_surface_point(ctx, &sp, below);
+            GScratchMark mark = gscratch_mark(ctx->scratch);
+            COUNT(gmaterial_refraction_index(m, &sp, &k->c), "refraction_index");
+            COUNT(gmaterial_diffuse(m, &sp, &k->c), "diffuse");
+            COUNT(gmaterial_ambient(m, &sp, &ctx->white, &k->c), "ambient");
+            COUNT(gmaterial_absorption(m, &sp, &ctx->white, 1.0, &k->c), "absorption");
+            double sign = below ? -1.0 : 1.0;
+            for (int t = 0; t < 90; t += 15)
+                for (int ph = 0; ph < 360; ph += 90) {
+                    GVec3 a = gmat_direction(t, ph), b = gmat_direction(90 - t * 0.9, ph + 135);
+                    a.z *= sign;
+                    b.z *= sign;
+                    COUNT(gmaterial_emission(m, &sp, a, &k->c), "emission");
+                    COUNT(gmaterial_reflection(m, &sp, a, &ctx->white, b, &k->c), "reflection");
+                    GVec3 th = gvec3(-b.x, -b.y, -b.z); /* from the other side */
+                    COUNT(gmaterial_refraction(m, &sp, th, &ctx->white, NULL, a, &k->c), "refraction");
+                }
+            gscratch_release(ctx->scratch, mark);
+        }
+    }
+#undef COUNT
+    ctx->place = NULL;
+    char detail[160];
+    snprintf(detail, sizeof detail, "(%d of %d evaluations failed, NaN, infinite or negative%s%s)", bad, total,
+             first ? "; first: " : "", first ? first : "");
+    report(k, "finite", bad, 0, detail);
+}
+
+/* ---- Snell's law and total internal reflection ---- */
+
+static double index_of(Checker *k, GSurfPoint *sp, const GMaterial *m)
+{
+    GScratchMark mark = gscratch_mark(k->ctx->scratch);
+    GColor c;
+    double n = NAN;
+    if (gcolor_scratch(&c, k->ctx->model, k->ctx->scratch) == G_OK && gmaterial_refraction_index(m, sp, &c) == G_OK)
+        n = gcolor_brightness(&c);
+    gscratch_release(k->ctx->scratch, mark);
+    return n;
+}
+
+/* One side: from outside (below = 0, eta = 1/n) or inside (below = 1, eta = n). Worst sine error into *worst,
+ * wrong validity (TIR where there is none or no TIR where there is) counted in *wrong. */
+static void snell_side(Checker *k, int below, double n, double *worst, int *wrong, int *tir_seen)
+{
+    GmatContext *ctx = k->ctx;
+    GSurfPoint sp;
+    gmat_surface_point(ctx, &sp, below);
+    double eta = below ? n : 1.0 / n, ncrit = below && n > 1.0 ? asin(1.0 / n) * 180.0 / M_PI : 90.0;
+    for (double t = 0.0; t < 89.5; t += 2.5) {
+        if (fabs(t - ncrit) < 0.5)
+            continue;
+        GVec3 d = gmat_direction(t, 40.0);
+        GVec3 view = below ? gvec3(-d.x, -d.y, d.z) : gvec3_neg(d); /* travels towards the surface */
+        GScratchMark mark = gscratch_mark(ctx->scratch);
+        GColor ri, to;
+        GVec3 dir;
+        int valid = -1;
+        if (gcolor_scratch(&ri, ctx->model, ctx->scratch) == G_OK &&
+            gcolor_scratch(&to, ctx->model, ctx->scratch) == G_OK &&
+            gmaterial_refraction_index(sp.from, &sp, &ri) == G_OK &&
+            gmaterial_refraction_index(sp.to, &sp, &to) == G_OK && gcolor_div(&ri, &ri, &to) == G_OK)
+            valid = gmaterial_refraction_dir(ctx->material, &sp, view, &ri, &dir);
+        gscratch_release(ctx->scratch, mark);
+        double s_in = sin(t * M_PI / 180.0), s_expect = eta * s_in;
+        int expect_valid = s_expect < 1.0;
+        if (valid < 0 || valid != expect_valid) {
+            (*wrong)++;
+            continue;
+        }
+        if (!valid) {
+            (*tir_seen)++;
+            continue;
+        }
+        double len = gvec3_length(dir);
+        GVec3 u = gvec3_scale(dir, 1.0 / len);
+        /* on the far side, in the plane of incidence, with the tangential part eta times the view's */
+        double e = fabs(u.x - eta * view.x) + fabs(u.y - eta * view.y);
+        if (u.z * view.z <= 0.0)
+            e = INFINITY;
+        *worst = fmax(*worst, isfinite(e) ? e : INFINITY);
+        (void)s_expect;
+    }
+}
+
+static void check_snell(Checker *k)
+{
+    GmatContext *ctx = k->ctx;
+    double worst = 0.0;
+    int wrong = 0, tir = 0, clear = 0, opaque_with_dir = 0;
+    double n_seen = 0.0;
+    for (int p = 0; p < NPLACES; p++) {
+        ctx->place = &k->places[p];
+        GSurfPoint sp;
+        gmat_surface_point(ctx, &sp, 0);
+        if (gmaterial_opaque(ctx->material, &sp)) {
+            GVec3 dir;
+            if (gmaterial_refraction_dir(ctx->material, &sp, gvec3(0.3, 0, -1), NULL, &dir) != 0)
+                opaque_with_dir++;
+            continue;
+        }
+        clear++;
+        double n = index_of(k, &sp, ctx->material);
+        n_seen = n;
+        if (!(n > 0.0) || !isfinite(n)) {
+            wrong++;
+            continue;
+        }
+        snell_side(k, 0, n, &worst, &wrong, &tir);
+        snell_side(k, 1, n, &worst, &wrong, &tir);
+    }
+    ctx->place = NULL;
+    char detail[200];
+    if (!clear)
+        snprintf(detail, sizeof detail, "(opaque at every place: refraction_dir must return 0; it did not at %d)",
+                 opaque_with_dir);
+    else
+        snprintf(detail, sizeof detail, "(tangential error of the refracted direction; n = %.4f; %d wrong validity "
+                 "(TIR), %d TIR cases seen, %d opaque places with a direction)", n_seen, wrong, tir, opaque_with_dir);
+    report(k, "snell", wrong || opaque_with_dir ? INFINITY : worst, TOL_SNELL, detail);
+}
+
+/* ---- documented defaults of NULL slots ---- */
+
+static double diff_colors(const GColor *a, const GColor *b)
+{
+    double big = 0.0, d = 0.0;
+    for (int j = 0; j < a->model->nvalues; j++) {
+        big = fmax(big, fmax(fabs(a->v[j]), fabs(b->v[j])));
+        d = fmax(d, fabs((double)a->v[j] - b->v[j]));
+    }
+    return isfinite(d) ? (big > 0.0 ? d / big : d) : INFINITY;
+}
+
+static void check_defaults(Checker *k)
+{
+    GmatContext *ctx = k->ctx;
+    const GMaterial *m = ctx->material;
+    const GMaterialClass *cls = m->cls;
+    double worst = 0.0;
+    int checked = 0;
+    char which[160] = "";
+#define NOTE(name)                                                                                            \
+    do {                                                                                                      \
+        checked++;                                                                                            \
+        size_t l_ = strlen(which);                                                                            \
+        snprintf(which + l_, sizeof which - l_, "%s%s", l_ ? ", " : "", name);                                \
+    } while (0)
+    for (int p = 0; p < NPLACES; p++) {
+        ctx->place = &k->places[p];
+        GSurfPoint sp;
+        gmat_surface_point(ctx, &sp, 0);
+        GVec3 in = gmat_direction(30, 10), out = gmat_direction(50, 200), dir;
+        int first = p == 0;
+        if (!cls->ambient) { /* ambient = diffuse * illum */
+            if (first)
+                NOTE("ambient");
+            if (gmaterial_diffuse(m, &sp, &k->a) || gcolor_mul(&k->a, &k->a, &ctx->white) ||
+                gmaterial_ambient(m, &sp, &ctx->white, &k->b))
+                worst = INFINITY;
+            else
+                worst = fmax(worst, diff_colors(&k->a, &k->b));
+        }
+        gcolor_black(&k->a);
+        if (!cls->reflection) {
+            if (first)
+                NOTE("reflection");
+            worst = fmax(worst, gmaterial_reflection(m, &sp, in, &ctx->white, out, &k->b) ? INFINITY
+                                                                                        : diff_colors(&k->a, &k->b));
+        }
+        if (!cls->refraction) {
+            if (first)
+                NOTE("refraction");
+            worst = fmax(worst, gmaterial_refraction(m, &sp, gvec3_neg(in), &ctx->white, NULL, out, &k->b)
+                                    ? INFINITY
+                                    : diff_colors(&k->a, &k->b));
+        }
+        if (!cls->emission) {
+            if (first)
+                NOTE("emission");
+            worst = fmax(worst, gmaterial_emission(m, &sp, out, &k->b) ? INFINITY : diff_colors(&k->a, &k->b));
+        }
+        if (!cls->diffuse) {
+            if (first)
+                NOTE("diffuse");
+            worst = fmax(worst, gmaterial_diffuse(m, &sp, &k->b) ? INFINITY : diff_colors(&k->a, &k->b));
+        }
+        if (!cls->absorption) { /* illum unchanged */
+            if (first)
+                NOTE("absorption");
+            worst = fmax(worst, gmaterial_absorption(m, &sp, &ctx->white, 2.0, &k->b) ? INFINITY
+                                                                                     : diff_colors(&ctx->white, &k->b));
+        }
+        if (!cls->refraction_index) { /* 1 */
+            if (first)
+                NOTE("refraction_index");
+            double n = index_of(k, &sp, m);
+            worst = fmax(worst, isfinite(n) ? fabs(n - 1.0) : INFINITY);
+        }
+        if (!cls->reflection_dir) {
+            if (first)
+                NOTE("reflection_dir");
+            worst = fmax(worst, gmaterial_reflection_dir(m, &sp, gvec3_neg(in), &dir) == 0 ? 0.0 : INFINITY);
+        }
+        if (!cls->refraction_dir) {
+            if (first)
+                NOTE("refraction_dir");
+            worst = fmax(worst, gmaterial_refraction_dir(m, &sp, gvec3_neg(in), NULL, &dir) == 0 ? 0.0 : INFINITY);
+        }
+        if (!cls->normal) { /* the geometric normal */
+            if (first)
+                NOTE("normal");
+            GVec3 n;
+            worst = fmax(worst, gmaterial_normal(m, &sp, &n) ? INFINITY
+                                                              : gvec3_length(gvec3_sub(n, sp.geometric_normal)));
+        }
+        if (!cls->opaque) {
+            if (first)
+                NOTE("opaque");
+            worst = fmax(worst, gmaterial_opaque(m, &sp) == 1 ? 0.0 : INFINITY);
+        }
+    }
+#undef NOTE
+    ctx->place = NULL;
+    char detail[240];
+    snprintf(detail, sizeof detail, "(NULL slots compared with material.h's defaults: %s)", checked ? which : "none");
+    report(k, "defaults", worst, TOL_DEFAULT, detail);
+}
+
+int gmat_check(GmatContext *ctx, int samples)
+{
+    Checker k = {.ctx = ctx, .samples = samples > 0 ? samples : 64};
+    /* places: different u, v, points and surfaces, so generators take different values */
+    for (int p = 0; p < NPLACES; p++) {
+        double f = (p + 0.37) / NPLACES;
+        k.places[p] = (GmatPlace){f, 1.0 - 0.8 * f, gvec3(2.3 * f - 0.7, 1.1 - 1.7 * f, 0.45 * p - 0.3), p};
+    }
+    if (gcolor_alloc(&k.a, ctx->model) || gcolor_alloc(&k.b, ctx->model) || gcolor_alloc(&k.c, ctx->model)) {
+        fprintf(stderr, "gmat check: out of memory\n");
+        gcolor_free(&k.a);
+        gcolor_free(&k.b);
+        return 1;
+    }
+    printf("material %s (%s), colour model %s\n", ctx->material_name, gmaterial_name(ctx->material),
+           gcolormodel_name(ctx->model));
+    check_albedo(&k);
+    check_reciprocity(&k);
+    check_finite(&k);
+    check_snell(&k);
+    check_defaults(&k);
+    printf("%s: %s\n", ctx->material_name, k.failures ? "FAIL" : "PASS");
+    gcolor_free(&k.a);
+    gcolor_free(&k.b);
+    gcolor_free(&k.c);
+    return k.failures ? 1 : 0;
+}

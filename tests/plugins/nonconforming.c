@@ -1,0 +1,186 @@
+/* nonconforming.c - modules that break one conformance property on purpose, for tests/scripts/conformance.sh
+ * (gmat check and gcolor check must report them as failing, naming the property). Built three ways by the
+ * Makefile's plug-in section:
+ *   -DGAIN       material "gain_lambert": f_r = 1.5 / pi, a Lambertian surface reflecting 1.5 times the light
+ *                (albedo 1.5; reciprocal, finite);
+ *   -DSKEWED     material "skewed_lambert": f_r = (0.25 + 0.5 cos^2(theta_in)) / pi, which depends on the
+ *                incident direction only (albedo 0.25..0.75, not reciprocal);
+ *   -DBAD_ADD    colour model "bad_add": the grey model (luminance only) whose add returns 1.01 a + b, so
+ *                a + black != a. */
+#include <generic/plugin.h>
+#include <generic/reader.h>
+
+#include <math.h>
+
+GENERIC_MODULE_EXPORT const int generic_module_abi = GMODULE_ABI_VERSION;
+
+#if defined(GAIN) || defined(SKEWED)
+typedef struct Flat {
+    GMaterial base;
+} Flat;
+
+static void flat_destroy(GMaterial *self) { gmem_free(self); }
+
+static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
+                           GColor *result)
+{
+    (void)self;
+    GVec3 n = gsurfpoint_normal(sp);
+    double ci = gvec3_dot(in, n), co = gvec3_dot(out, n);
+    if (ci <= 0.0 || co <= 0.0) {
+        gcolor_black(result);
+        return G_OK;
+    }
+#ifdef GAIN
+    double f = 1.5 / M_PI;
+#else
+    double f = (0.25 + 0.5 * ci * ci) / M_PI;
+#endif
+    return gcolor_scale(result, illum, f * ci);
+}
+
+#ifdef GAIN
+#define FLAT_NAME "gain_lambert"
+#else
+#define FLAT_NAME "skewed_lambert"
+#endif
+
+static const GMaterialClass flat_class = {
+    .abi_version = GMATERIAL_ABI_VERSION,
+    .name = FLAT_NAME,
+    .description = "breaks a conformance property on purpose (tests)",
+    .destroy = flat_destroy,
+    .reflection = flat_reflection,
+};
+
+static int parse_flat(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0)
+        if ((rc = greader_unknown_param(r, "(none)", err)) < 0)
+            break;
+    if (rc < 0)
+        return rc;
+    Flat *m = gmem_calloc(1, sizeof *m);
+    if (!m)
+        return greader_error(r, err, FLAT_NAME ": out of memory");
+    if ((rc = gmaterial_init(&m->base, &flat_class, greader_colormodel(r), err)) != G_OK) {
+        gmem_free(m);
+        return rc;
+    }
+    *object = &m->base;
+    return G_OK;
+}
+
+static void release(void *p) { gmaterial_unref(p); }
+
+GENERIC_MODULE_EXPORT int generic_module_init(GModuleApi *api, GError *err)
+{
+    static const GTypeInfo type = {GKIND_MATERIAL, FLAT_NAME, &flat_class, parse_flat,
+                                   "breaks a conformance property on purpose (tests)", release};
+    return api->add_type(api, &type, err);
+}
+#endif
+
+#ifdef BAD_ADD
+static int one_init(GColorModel *self, const GColorModelOptions *opt, GError *err)
+{
+    (void)opt;
+    (void)err;
+    self->nvalues = self->capacity = 1;
+    return G_OK;
+}
+
+static void one_black(const GColorModel *m, GColor *out)
+{
+    (void)m;
+    out->kind = GCOLOR_VECTOR;
+    out->v[0] = 0.0f;
+}
+
+#define OP2(fn, expr)                                                                                          \
+    static int fn(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)                         \
+    {                                                                                                          \
+        (void)m;                                                                                               \
+        float x = a->v[0], y = b->v[0];                                                                        \
+        out->kind = GCOLOR_VECTOR;                                                                             \
+        out->v[0] = (expr);                                                                                    \
+        return G_OK;                                                                                           \
+    }
+OP2(one_add, 1.01f * x + y) /* the deliberate error */
+OP2(one_mul, x * y)
+OP2(one_div, y != 0.0f ? x / y : 0.0f)
+
+static int one_scale(const GColorModel *m, GColor *out, const GColor *a, double s)
+{
+    (void)m;
+    out->kind = GCOLOR_VECTOR;
+    out->v[0] = (float)(a->v[0] * s);
+    return G_OK;
+}
+
+static int one_pow(const GColorModel *m, GColor *out, const GColor *a, double e)
+{
+    (void)m;
+    out->kind = GCOLOR_VECTOR;
+    out->v[0] = a->v[0] > 0.0f ? (float)pow(a->v[0], e) : (e == 0.0 ? 1.0f : 0.0f);
+    return G_OK;
+}
+
+static double one_brightness(const GColorModel *m, const GColor *a)
+{
+    (void)m;
+    return fabs(a->v[0]);
+}
+
+static int one_to_nm(const GColorModel *m, const GColor *a, GColorRole role, GSpectrumNM *out)
+{
+    (void)m;
+    if (role == GCOLOR_LIGHT) {
+        gcie_illuminant_nm("D65", out);
+        for (int i = 0; i < GNM_COUNT; i++)
+            out->v[i] *= a->v[0];
+    } else {
+        for (int i = 0; i < GNM_COUNT; i++)
+            out->v[i] = a->v[0];
+    }
+    return G_OK;
+}
+
+static int one_from_nm(const GColorModel *m, const GSpectrumNM *in, GColorRole role, GColor *out)
+{
+    (void)m;
+    double xyz[3];
+    gcie_nm_to_xyz(in, role, xyz);
+    out->kind = GCOLOR_VECTOR;
+    out->v[0] = (float)xyz[1];
+    return G_OK;
+}
+
+static const GColorModelClass bad_add_class = {
+    .abi_version = GCOLOR_ABI_VERSION,
+    .name = "bad_add",
+    .description = "luminance only, with a wrong add (tests)",
+    .init = one_init,
+    .black = one_black,
+    .add = one_add,
+    .mul = one_mul,
+    .scale = one_scale,
+    .div = one_div,
+    .pow = one_pow,
+    .brightness = one_brightness,
+    .to_nm = one_to_nm,
+    .from_nm = one_from_nm,
+};
+
+static void release(void *p) { gcolormodel_destroy(p); }
+
+GENERIC_MODULE_EXPORT int generic_module_init(GModuleApi *api, GError *err)
+{
+    static const GTypeInfo type = {GKIND_COLORMODEL, "bad_add", &bad_add_class, NULL,
+                                   "luminance only, with a wrong add (tests)", release};
+    return api->add_type(api, &type, err);
+}
+#endif

@@ -1,0 +1,137 @@
+#!/bin/sh
+# conformance.sh BUILD - the conformance checks over every registered type, taken from the registry's own lists
+# (gcolor list, gmat types): a new built-in is checked the moment it is registered.
+#   - gcolor check over every colour model;
+#   - gmat check over every material, node and generator type, in the bispectral model (where every built-in
+#     is defined physically: a fluorescent matrix stays a matrix). The instance checked is a default one
+#     (`material m TYPE`, no parameters) when the type can be made so, else the first named entry of that type
+#     in examples/materials/*.mat or examples/textures/*.txt; a generator drives an interpolate node between two
+#     lamberts. A type with neither FAILS, asking for an example;
+#   - the modules of tests/plugins/nonconforming.c must be reported as failing, naming the broken property,
+#     and the example modules (examples/plugins/) must pass.
+SRC=$(cd "$(dirname "$0")/../.." && pwd)
+BUILD=$(cd "${1:-build}" 2> /dev/null && pwd) || { echo "FAIL: no build directory ${1:-build}"; exit 1; }
+GMAT="$BUILD/bin/gmat"
+GCOLOR="$BUILD/bin/gcolor"
+PLUGINS="$BUILD/plugins"
+for t in "$GMAT" "$GCOLOR"; do
+    [ -x "$t" ] || { echo "FAIL: $t is not built"; exit 1; }
+done
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+fails=0
+checked=0
+fail() {
+    echo "FAIL: $*"
+    fails=$((fails + 1))
+}
+
+# ---- colour models ----
+"$GCOLOR" list > "$TMP/models" || fail "gcolor list failed"
+[ -s "$TMP/models" ] || fail "gcolor list printed no model"
+while read -r model; do
+    checked=$((checked + 1))
+    "$GCOLOR" check "$model" > "$TMP/log" 2>&1 || fail "gcolor check $model:
+$(cat "$TMP/log")"
+    grep -q "^$model: PASS" "$TMP/log" || fail "gcolor check $model printed no verdict: $(cat "$TMP/log")"
+done < "$TMP/models"
+
+# ---- materials, nodes, generators ----
+# The named entries of the example files, listed once: "FILE KIND NAME TYPE" per line.
+for f in "$SRC"/examples/materials/*.mat "$SRC"/examples/textures/*.txt; do
+    "$GMAT" list "$f" 2> /dev/null | awk -v f="$f" '$2 != "(anonymous)" && NF >= 3 { print f, $1, $2, $3 }'
+done > "$TMP/examples"
+# first_entry KIND TYPE: "FILE NAME" of the first named entry of TYPE in the example files, or nothing.
+first_entry() {
+    awk -v k="$1" -v t="$2" '$2 == k && $4 == t { print $1, $3; exit }' "$TMP/examples"
+}
+# a generator's instance: an interpolate node between two lamberts, driven by it
+driven() { # FILE-TO-WRITE GENERATOR [INCLUDE]
+    {
+        [ -n "$3" ] && echo "include \"$3\""
+        echo "node conformance_node interpolate { a lambert { reflectance rgb 0.9 0.2 0.1 }"
+        echo "    b lambert { reflectance rgb 0.1 0.3 0.8 }  t $2 }"
+    } >> "$1"
+}
+"$GMAT" types > "$TMP/types" || fail "gmat types failed"
+[ -s "$TMP/types" ] || fail "gmat types printed nothing"
+while read -r kind type; do
+    checked=$((checked + 1))
+    file="$TMP/default_$type.txt"
+    if [ "$kind" = generator ]; then
+        echo "generator conformance_gen $type" > "$file"
+        driven "$file" conformance_gen
+        name=conformance_node
+    else
+        echo "$kind conformance_default $type" > "$file"
+        name=conformance_default
+    fi
+    how="a default instance"
+    if ! "$GMAT" list "$file" > /dev/null 2>&1; then
+        entry=$(first_entry "$kind" "$type")
+        if [ -z "$entry" ]; then
+            fail "$kind $type: cannot be made with default parameters and no example file has a named entry of it:" \
+                "add one to examples/materials/ or examples/textures/"
+            continue
+        fi
+        efile=${entry% *}
+        ename=${entry##* }
+        how="$ename from ${efile#"$SRC"/}"
+        if [ "$kind" = generator ]; then
+            : > "$file"
+            driven "$file" "$ename" "$efile"
+            name=conformance_node
+        else
+            file=$efile
+            name=$ename
+        fi
+    fi
+    if ! "$GMAT" check "$file" "$name" --colormodel bispectral > "$TMP/log" 2>&1; then
+        fail "$kind $type ($how):
+$(cat "$TMP/log")"
+    fi
+done < "$TMP/types"
+
+# ---- modules that break a property on purpose must be reported, naming it ----
+# expect_fail WHAT PROPERTY COMMAND...: the command fails and its FAIL line names PROPERTY.
+expect_fail() {
+    what=$1
+    prop=$2
+    shift 2
+    checked=$((checked + 1))
+    "$@" > "$TMP/log" 2>&1
+    st=$?
+    [ $st -eq 1 ] || fail "$what: exit status $st, expected 1: $(cat "$TMP/log")"
+    grep -q "^$prop .*FAIL" "$TMP/log" || fail "$what: no FAIL line for '$prop': $(cat "$TMP/log")"
+    [ "$(grep -Ec 'worst .* FAIL( |$)' "$TMP/log")" -eq 1 ] || fail "$what: more than '$prop' failed: $(cat "$TMP/log")"
+}
+echo "material m gain_lambert" > "$TMP/gain.mat"
+echo "material m skewed_lambert" > "$TMP/skewed.mat"
+expect_fail "gain_lambert (albedo 1.5)" albedo "$GMAT" check "$TMP/gain.mat" m --plugin "$PLUGINS/gain.so"
+expect_fail "skewed_lambert (not reciprocal)" reciprocity "$GMAT" check "$TMP/skewed.mat" m --plugin "$PLUGINS/skewed.so"
+expect_fail "bad_add (wrong add)" "a + black = a" "$GCOLOR" check bad_add --plugin "$PLUGINS/bad_add.so"
+
+# ---- the example modules pass ----
+checked=$((checked + 1))
+cat > "$TMP/oren.mat" << 'EOM'
+material rough oren_nayar { reflectance rgb 0.8 0.6 0.4  sigma 30 }
+material smooth oren_nayar { sigma 0 }
+EOM
+for m in rough smooth; do
+    for model in rgb bispectral; do
+        "$GMAT" check "$TMP/oren.mat" $m --colormodel $model --plugin "$PLUGINS/oren_nayar.so" > "$TMP/log" 2>&1 ||
+            fail "oren_nayar $m in $model: $(cat "$TMP/log")"
+    done
+done
+"$GCOLOR" check grey --plugin "$PLUGINS/grey.so" > "$TMP/log" 2>&1 || fail "gcolor check grey: $(cat "$TMP/log")"
+# the bands generator from its module, driven inside a node like the built-in generators
+echo "generator g bands" > "$TMP/bands.txt"
+driven "$TMP/bands.txt" g
+"$GMAT" check "$TMP/bands.txt" conformance_node --plugin "$PLUGINS/bands.so" > "$TMP/log" 2>&1 ||
+    fail "bands generator: $(cat "$TMP/log")"
+
+if [ $fails -gt 0 ]; then
+    echo "$fails failure(s) in $checked checks"
+    exit 1
+fi
+echo "conformance: $checked checks passed"
