@@ -24,9 +24,13 @@ endif
 CC      ?= cc
 CXX     ?= c++
 WARN    := -Wall -Wextra -Werror
-CPPFLAGS += -Iinclude -Ilib -I. -D_GNU_SOURCE -MMD -MP
-CFLAGS  += -std=c11 $(OPT) -g -fPIC -fopenmp $(WARN) $(SANFLAGS)
-CXXFLAGS += -std=c++17 $(OPT) -g -fPIC $(WARN) $(SANFLAGS) $(shell pkg-config --cflags OpenImageIO 2>/dev/null)
+CPPFLAGS += -Iinclude -Ilib -I. -D_GNU_SOURCE -DGENERIC_BUILD -MMD -MP
+# -fvisibility=hidden: only declarations marked GENERIC_API (include/generic/export.h) are exported; the version
+# script keeps the C++ shims' inline instantiations of OpenImageIO templates out of the dynamic symbol table too.
+VISIBILITY := -fvisibility=hidden
+CFLAGS  += -std=c11 $(OPT) -g -fPIC -fopenmp $(WARN) $(SANFLAGS) $(VISIBILITY)
+CXXFLAGS += -std=c++17 $(OPT) -g -fPIC $(WARN) $(SANFLAGS) $(VISIBILITY) -fvisibility-inlines-hidden \
+            $(shell pkg-config --cflags OpenImageIO 2>/dev/null)
 DEPLIBS := $(shell pkg-config --libs OpenImageIO 2>/dev/null) -lstdc++ -fopenmp -ldl -lpthread -lm
 LDFLAGS += $(SANFLAGS)
 
@@ -77,9 +81,10 @@ $(LIBA): $(LIB_OBJ)
 	rm -f $@
 	ar rcs $@ $^
 
-$(LIBSO): $(LIB_OBJ)
+$(LIBSO): $(LIB_OBJ) lib/libgeneric.map
 	@mkdir -p $(dir $@)
-	$(CC) -shared -Wl,-soname,libgeneric.so.$(SOVER) -o $@ $^ $(LDFLAGS) $(DEPLIBS)
+	$(CC) -shared -Wl,-soname,libgeneric.so.$(SOVER) -Wl,--version-script=lib/libgeneric.map -o $@ $(filter %.o,$^) \
+	    $(LDFLAGS) $(DEPLIBS)
 	ln -sf libgeneric.so.$(SOVER) $(BUILD)/lib/libgeneric.so
 
 # Tools and tests link the static library so they run from the build tree without LD_LIBRARY_PATH;

@@ -8,6 +8,7 @@
 #ifndef GENERIC_BFC_H
 #define GENERIC_BFC_H
 
+#include "export.h"
 #include <stddef.h>
 #include "color.h"
 #include "error.h"
@@ -24,11 +25,11 @@ typedef struct GBfcData {
 } GBfcData;
 
 /** Reads a BFC file; on failure out is cleared and err says "file:line:col: message". */
-int gbfc_read(const char *path, GBfcData *out, GError *err);
+GENERIC_API int gbfc_read(const char *path, GBfcData *out, GError *err);
 /** Parses BFC text of len bytes; name is used in messages. */
-int gbfc_parse(const char *text, size_t len, const char *name, GBfcData *out, GError *err);
+GENERIC_API int gbfc_parse(const char *text, size_t len, const char *name, GBfcData *out, GError *err);
 /** Frees the values and clears out; a cleared or zeroed struct is a no-op. */
-void gbfc_free(GBfcData *d);
+GENERIC_API void gbfc_free(GBfcData *d);
 
 #ifdef __cplusplus
 }

@@ -12,6 +12,7 @@
 #ifndef GENERIC_BUILTINS_H
 #define GENERIC_BUILTINS_H
 
+#include "export.h"
 #include "error.h"
 #include "registry.h"
 
@@ -20,11 +21,11 @@ extern "C" {
 #endif
 
 /** The NULL-terminated list of built-in type records, in the order they register (by source file). */
-const GTypeInfo *const *generic_builtin_types(void);
+GENERIC_API const GTypeInfo *const *generic_builtin_types(void);
 
 /** Registers every built-in type (gregistry_add_list): idempotent and thread safe; G_ERR_EXISTS when a module
  * registered one of the built-in names before. */
-int generic_register_builtins(GError *err);
+GENERIC_API int generic_register_builtins(GError *err);
 
 #ifdef __cplusplus
 }

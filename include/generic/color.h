@@ -32,6 +32,7 @@
 #ifndef GENERIC_COLOR_H
 #define GENERIC_COLOR_H
 
+#include "export.h"
 #include <stddef.h>
 #include "error.h"
 #include "memory.h"
@@ -159,108 +160,106 @@ struct GColorModelClass {
 /* ---- models ---- */
 
 /** Creates a model by registered name with options (NULL = defaults). */
-int gcolormodel_create(const char *name, const GColorModelOptions *opt, GColorModel **out, GError *err);
+GENERIC_API int gcolormodel_create(const char *name, const GColorModelOptions *opt, GColorModel **out, GError *err);
 /** Creates a model from a class directly (used by plug-ins and tests). */
-int gcolormodel_create_class(const GColorModelClass *cls, const GColorModelOptions *opt, GColorModel **out,
+GENERIC_API int gcolormodel_create_class(const GColorModelClass *cls, const GColorModelOptions *opt, GColorModel **out,
                              GError *err);
 /** Frees a model; NULL is a no-op. Colours of the model must not be used afterwards. */
-void gcolormodel_destroy(GColorModel *m);
+GENERIC_API void gcolormodel_destroy(GColorModel *m);
 /** The model's type keyword. */
-const char *gcolormodel_name(const GColorModel *m);
-/** Registers the built-in models (idempotent; called by the registry on first use). */
-void gcolormodels_register_builtin(void);
+GENERIC_API const char *gcolormodel_name(const GColorModel *m);
 
 /* ---- storage ---- */
 
 /** Points c at the caller's buffer of nfloats floats (GCOLOR_STORAGE_CALLER) and sets it to black.
  * G_ERR_INVALID, with c cleared, when storage is NULL or nfloats < m->capacity. */
-int gcolor_wrap(GColor *c, const GColorModel *m, float *storage, size_t nfloats);
+GENERIC_API int gcolor_wrap(GColor *c, const GColorModel *m, float *storage, size_t nfloats);
 /** Gives c storage from the arena (GCOLOR_STORAGE_ARENA) and sets it to black; G_ERR_NOMEM, with c cleared,
  * when the arena cannot grow. The arena's mark/release gives the storage back. */
-int gcolor_scratch(GColor *c, const GColorModel *m, GScratch *s);
+GENERIC_API int gcolor_scratch(GColor *c, const GColorModel *m, GScratch *s);
 /** Gives c heap storage (GCOLOR_STORAGE_HEAP, for long-lived values) and sets it to black; G_ERR_NOMEM, with
  * c cleared, when out of memory. */
-int gcolor_alloc(GColor *c, const GColorModel *m);
+GENERIC_API int gcolor_alloc(GColor *c, const GColorModel *m);
 /** Frees c's storage if it is HEAP (caller and arena storage are left alone) and clears the handle; NULL and
  * a cleared handle are no-ops. */
-void gcolor_free(GColor *c);
+GENERIC_API void gcolor_free(GColor *c);
 /** Copies the value of src into dst (same model). */
-int gcolor_copy(GColor *dst, const GColor *src);
+GENERIC_API int gcolor_copy(GColor *dst, const GColor *src);
 
 /* ---- the generic operations (status: G_OK, or G_ERR_MISMATCH for colours of different models) ---- */
 
 /** Sets c to black (a zero vector). */
-void gcolor_black(GColor *c);
+GENERIC_API void gcolor_black(GColor *c);
 /** out = a + b */
-int gcolor_add(GColor *out, const GColor *a, const GColor *b);
+GENERIC_API int gcolor_add(GColor *out, const GColor *a, const GColor *b);
 /** out = a * b: reflection of b by a. */
-int gcolor_mul(GColor *out, const GColor *a, const GColor *b);
+GENERIC_API int gcolor_mul(GColor *out, const GColor *a, const GColor *b);
 /** out = a * s */
-int gcolor_scale(GColor *out, const GColor *a, double s);
+GENERIC_API int gcolor_scale(GColor *out, const GColor *a, double s);
 /** out = a / b: relative refraction index (zero divisors give zero). */
-int gcolor_div(GColor *out, const GColor *a, const GColor *b);
+GENERIC_API int gcolor_div(GColor *out, const GColor *a, const GColor *b);
 /** out = a ^ e, sample by sample (absorption). */
-int gcolor_pow(GColor *out, const GColor *a, double e);
+GENERIC_API int gcolor_pow(GColor *out, const GColor *a, double e);
 /** Brightness: 0 if and only if c is black; a constant value c gives c. */
-double gcolor_brightness(const GColor *c);
+GENERIC_API double gcolor_brightness(const GColor *c);
 /** out = s * a + b (out may alias a or b); any kinds the model's add and scale accept. */
-int gcolor_axpy(GColor *out, double s, const GColor *a, const GColor *b);
+GENERIC_API int gcolor_axpy(GColor *out, double s, const GColor *a, const GColor *b);
 /** out += a * s, that is gcolor_axpy(out, s, a, out). */
-int gcolor_add_scaled(GColor *out, const GColor *a, double s);
+GENERIC_API int gcolor_add_scaled(GColor *out, const GColor *a, double s);
 /** out = the constant value (a vector: 1 is white, and the relative index of vacuum); G_ERR_INVALID for a
  * non-finite value. */
-int gcolor_fill(GColor *out, double value);
+GENERIC_API int gcolor_fill(GColor *out, double value);
 /** out = exp(s * a) sample by sample (a transmittance from an absorption coefficient: s = -distance). A
  * matrix operand: the model's definition (bispectral: its diagonal, as pow), G_ERR_UNSUPPORTED in a plug-in
  * model that gives no exp of its own. */
-int gcolor_exp(GColor *out, const GColor *a, double s);
+GENERIC_API int gcolor_exp(GColor *out, const GColor *a, double s);
 /** 1 when every sample is finite, 0 otherwise. */
-int gcolor_is_finite(const GColor *c);
+GENERIC_API int gcolor_is_finite(const GColor *c);
 /** 1 when every sample is finite and >= 0 (a physical light or reflectance), 0 otherwise. */
-int gcolor_is_nonnegative(const GColor *c);
+GENERIC_API int gcolor_is_nonnegative(const GColor *c);
 
 /* ---- conversions ---- */
 
 /** To the nm exchange spectrum. */
-int gcolor_to_nm(const GColor *c, GColorRole role, GSpectrumNM *out);
+GENERIC_API int gcolor_to_nm(const GColor *c, GColorRole role, GSpectrumNM *out);
 /** From the nm exchange spectrum (checks for NaN). */
-int gcolor_from_nm(GColor *c, const GSpectrumNM *in, GColorRole role);
+GENERIC_API int gcolor_from_nm(GColor *c, const GSpectrumNM *in, GColorRole role);
 /** To CIE 1931 XYZ. */
-int gcolor_to_xyz(const GColor *c, GColorRole role, double xyz[3]);
+GENERIC_API int gcolor_to_xyz(const GColor *c, GColorRole role, double xyz[3]);
 /** To linear sRGB (Rec.709 primaries, D65 white). */
-int gcolor_to_rgb(const GColor *c, GColorRole role, double rgb[3]);
+GENERIC_API int gcolor_to_rgb(const GColor *c, GColorRole role, double rgb[3]);
 /** From linear sRGB; G_ERR_INVALID for NaN or infinite input. */
-int gcolor_from_rgb(GColor *c, const double rgb[3], GColorRole role);
+GENERIC_API int gcolor_from_rgb(GColor *c, const double rgb[3], GColorRole role);
 /** From a re-radiation matrix: a matrix in the bispectral model; in the other models the response to an
  * equal-energy light (the matrix's effect folded into a plain reflectance), with components a narrow gamut
  * makes negative (rgb: the blue of a day-glo orange) set to 0. G_ERR_INVALID for an empty grid, a step that is
  * not finite and > 0, a non-finite start or value, or grids that share no wavelength (no diagonal). */
-int gcolor_from_reradiation(GColor *c, const GReradiation *r, GError *err);
+GENERIC_API int gcolor_from_reradiation(GColor *c, const GReradiation *r, GError *err);
 /** Converts a value of one model into another (through a direct formula or the nm spectrum). */
-int gcolor_convert(GColor *dst, const GColor *src, GColorRole role);
+GENERIC_API int gcolor_convert(GColor *dst, const GColor *src, GColorRole role);
 
 /* ---- colorimetry helpers (lib/cie.c) ---- */
 
 /** Linear sRGB -> XYZ (D65). */
-void gcie_rgb_to_xyz(const double rgb[3], double xyz[3]);
+GENERIC_API void gcie_rgb_to_xyz(const double rgb[3], double xyz[3]);
 /** XYZ -> linear sRGB (D65). */
-void gcie_xyz_to_rgb(const double xyz[3], double rgb[3]);
+GENERIC_API void gcie_xyz_to_rgb(const double xyz[3], double rgb[3]);
 /** XYZ of an nm spectrum read as a role (light: E has Y = 1; reflectance: under D65 with Y = 1). */
-void gcie_nm_to_xyz(const GSpectrumNM *s, GColorRole role, double xyz[3]);
+GENERIC_API void gcie_nm_to_xyz(const GSpectrumNM *s, GColorRole role, double xyz[3]);
 /** Spectrum for a linear sRGB colour: a smooth reflectance from the spectral primary basis
  * (times D65 normalised to Y = 1 for lights), so that gcie_nm_to_xyz gives back the colour. */
-void gcie_rgb_to_nm(const double rgb[3], GColorRole role, GSpectrumNM *out);
+GENERIC_API void gcie_rgb_to_nm(const double rgb[3], GColorRole role, GSpectrumNM *out);
 /** CIE 1931 2-degree colour matching functions at a wavelength in nm (linear between table values, 0 outside). */
-void gcie_cmf(double nm, double xyz[3]);
+GENERIC_API void gcie_cmf(double nm, double xyz[3]);
 /** Relative spectral power of a CIE illuminant ("D65", "A", "E") at nm, normalised so the illuminant has
  * Y = 1 as a light; negative when the name is unknown. */
-double gcie_illuminant(const char *name, double nm);
+GENERIC_API double gcie_illuminant(const char *name, double nm);
 /** Fills an nm spectrum with a named illuminant (Y = 1); G_ERR_NOTFOUND for unknown names. */
-int gcie_illuminant_nm(const char *name, GSpectrumNM *out);
+GENERIC_API int gcie_illuminant_nm(const char *name, GSpectrumNM *out);
 /** Planck blackbody at temperature K, normalised to Y = 1. */
-void gcie_blackbody_nm(double kelvin, GSpectrumNM *out);
+GENERIC_API void gcie_blackbody_nm(double kelvin, GSpectrumNM *out);
 /** Luminance weight of an nm sample: ybar / sum(ybar), so the weights sum to 1. */
-double gcie_luminance_weight(int nm_index);
+GENERIC_API double gcie_luminance_weight(int nm_index);
 
 #ifdef __cplusplus
 }

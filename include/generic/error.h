@@ -2,6 +2,7 @@
 #ifndef GENERIC_ERROR_H
 #define GENERIC_ERROR_H
 
+#include "export.h"
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -33,7 +34,7 @@ typedef struct GError {
 } GError;
 
 /** Sets code and a printf-style message, with no position and no parameter; err may be NULL. Returns code so callers can `return gerror_set(...)`. */
-int gerror_set(GError *err, int code, const char *fmt, ...)
+GENERIC_API int gerror_set(GError *err, int code, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 3, 4)))
 #endif
@@ -42,17 +43,17 @@ int gerror_set(GError *err, int code, const char *fmt, ...)
 /** gerror_set naming the parameter the complaint is about (a constructor's `param`, e.g. "reflectance"): a
  * reader that called the constructor places the message at that parameter of the entry (reader.h,
  * greader_locate). Returns code. */
-int gerror_set_param(GError *err, int code, const char *param, const char *fmt, ...)
+GENERIC_API int gerror_set_param(GError *err, int code, const char *param, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 4, 5)))
 #endif
     ;
 
 /** Clears the record to G_OK and an empty message; err may be NULL. */
-void gerror_clear(GError *err);
+GENERIC_API void gerror_clear(GError *err);
 
 /** Returns a short static description of a status code. */
-const char *gstatus_string(int code);
+GENERIC_API const char *gstatus_string(int code);
 
 #ifdef __cplusplus
 }

@@ -1,11 +1,16 @@
 /* export.h - GENERIC_API marks the declarations of the public API: the only symbols libgeneric.so exports
- * (the library is built with -fvisibility=hidden; tests/scripts/exports.sh compares the two lists). */
+ * (the library is built with -fvisibility=hidden; tests/scripts/exports.sh compares the two lists).
+ *
+ * The mark gives default visibility only while the library itself is compiled (GENERIC_BUILD, set by its
+ * Makefile). Everywhere else it is empty, so that a file built as a run-time module (with -fvisibility=hidden)
+ * keeps its own definitions of public functions local: the lambert constructor inside lambert.so then binds to
+ * lambert.so's class, never to the built-in lambert of the program that loads it. */
 #ifndef GENERIC_EXPORT_H
 #define GENERIC_EXPORT_H
 
-/** Gives a declaration default visibility, so that the shared library exports it and run-time modules
- * resolve it from a program linked with the static library and -rdynamic. */
-#if defined(__GNUC__)
+/** Exports a declaration from libgeneric.so (and from a program linked with the static library and -rdynamic,
+ * where run-time modules resolve it). */
+#if defined(GENERIC_BUILD) && defined(__GNUC__)
 #define GENERIC_API __attribute__((visibility("default")))
 #else
 #define GENERIC_API

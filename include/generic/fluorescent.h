@@ -21,6 +21,7 @@
 #ifndef GENERIC_FLUORESCENT_H
 #define GENERIC_FLUORESCENT_H
 
+#include "export.h"
 #include "color.h"
 #include "material.h"
 
@@ -58,25 +59,25 @@ typedef struct GFluorBands {
 
 /** Fills b with the defaults: a day-glo orange close to the measured HERPIORA.BFC (absorbs up to an edge near
  * 580 nm, emits around 605 nm). */
-void gfluor_bands_default(GFluorBands *b);
+GENERIC_API void gfluor_bands_default(GFluorBands *b);
 /** Checks every field (finite and within the documented ranges, widths > 0); G_ERR_INVALID with a message
  * naming the field otherwise. */
-int gfluor_bands_check(const GFluorBands *b, GError *err);
+GENERIC_API int gfluor_bands_check(const GFluorBands *b, GError *err);
 /** Makes the matrix of b on the square grid min_nm + k * step_nm, k = 0..n-1 (in and out alike) into new
  * storage (free it with gfluor_matrix_free). */
-int gfluor_matrix_create(const GFluorBands *b, double min_nm, double step_nm, int n, GReradiation *out,
+GENERIC_API int gfluor_matrix_create(const GFluorBands *b, double min_nm, double step_nm, int n, GReradiation *out,
                          GError *err);
 /** Copies only the main diagonal of src (the entries whose excitation and emission wavelengths coincide;
  * negatives clamped to 0) into a new matrix on src's grid: a non-fluorescent version of the same pigment. */
-int gfluor_matrix_diagonal(const GReradiation *src, GReradiation *out, GError *err);
+GENERIC_API int gfluor_matrix_diagonal(const GReradiation *src, GReradiation *out, GError *err);
 /** Frees storage from gfluor_matrix_create/gfluor_matrix_diagonal and clears r; NULL and cleared are no-ops. */
-void gfluor_matrix_free(GReradiation *r);
+GENERIC_API void gfluor_matrix_free(GReradiation *r);
 /** The main diagonal of r (negatives clamped to 0) as a reflectance on the nm exchange grid: linear between
  * the emission samples, held constant beyond the ends; 0 where no excitation sample coincides. */
-int gfluor_matrix_diagonal_nm(const GReradiation *r, GSpectrumNM *out, GError *err);
+GENERIC_API int gfluor_matrix_diagonal_nm(const GReradiation *r, GSpectrumNM *out, GError *err);
 /** Largest column sum of r (negatives clamped to 0) over the excitation samples within [lo_nm, hi_nm]:
  * the most energy the matrix returns per unit of incident energy (<= 1 for a conserving matrix). */
-double gfluor_matrix_max_column_sum(const GReradiation *r, double lo_nm, double hi_nm);
+GENERIC_API double gfluor_matrix_max_column_sum(const GReradiation *r, double lo_nm, double hi_nm);
 
 /* ======================================================================================================
  * The normalised Blinn microfacet distribution
@@ -84,13 +85,13 @@ double gfluor_matrix_max_column_sum(const GReradiation *r, double lo_nm, double 
 
 /** D(h) = (m + 2) / (2 pi) (h.n)^m for cos_h = h.n > 0, else 0; normalised so that the integral of
  * D(h) (h.n) over the hemisphere of h is 1. */
-double gfluor_blinn_d(double m, double cos_h);
+GENERIC_API double gfluor_blinn_d(double m, double cos_h);
 /** Mean slope angle in degrees of the Blinn distribution with exponent m: the mean of the facet tilt
  * theta_h under the distribution of projected facet area D(h) (h.n) dw_h. m = 15.3 gives the paper's 17 degrees. */
-double gfluor_blinn_mean_slope(double m);
+GENERIC_API double gfluor_blinn_mean_slope(double m);
 /** The exponent m whose mean slope angle (gfluor_blinn_mean_slope) is slope_deg, for 0 < slope_deg < 45
  * (45 degrees is the mean slope of m = 0); NaN outside that range. */
-double gfluor_blinn_exponent(double slope_deg);
+GENERIC_API double gfluor_blinn_exponent(double slope_deg);
 
 /* ======================================================================================================
  * Materials
@@ -104,7 +105,7 @@ typedef struct GFluorPhongParams {
 } GFluorPhongParams;
 
 /** Fills p with the defaults: a weak, small specular lobe as in the paper's Fig. 6. */
-void gfluor_phong_default(GFluorPhongParams *p);
+GENERIC_API void gfluor_phong_default(GFluorPhongParams *p);
 
 /** fluorescent-phong, the paper's section 5.1: a Lambertian term with the full matrix M plus a weak
  * specular lobe of three Phong lobes that reflect with the matrix's main diagonal d only:
@@ -116,7 +117,7 @@ void gfluor_phong_default(GFluorPhongParams *p);
  * colsum(M) <= 1 for a conserving M. diffuse() is (1 - ks) M; ambient() is ((1 - ks) M + ks d) illum.
  * In non-bispectral models M arrives folded into a reflectance and d as a reflectance: nothing changes in
  * the code. `matrix` may be freed after the call. */
-int gfluor_phong_create(const GColorModel *model, const GReradiation *matrix, const GFluorPhongParams *params,
+GENERIC_API int gfluor_phong_create(const GColorModel *model, const GReradiation *matrix, const GFluorPhongParams *params,
                         GMaterial **out, GError *err);
 
 /** Parameters of fluorescent-varnish. */
@@ -127,7 +128,7 @@ typedef struct GFluorVarnishParams {
 } GFluorVarnishParams;
 
 /** Fills p with the defaults (index 1.5, mean slope 17 degrees, exponent 0 = from the slope). */
-void gfluor_varnish_default(GFluorVarnishParams *p);
+GENERIC_API void gfluor_varnish_default(GFluorVarnishParams *p);
 
 /** fluorescent-varnish, the paper's section 5.2: rough transparent Fresnel facets (normalised Blinn
  * distribution) over a thin clear varnish over a fluorescent Lambertian base with the full matrix; the
@@ -139,7 +140,7 @@ void gfluor_varnish_default(GFluorVarnishParams *p);
  * diffuse light inside the varnish that the top boundary sends back to the base. Reciprocal, and energy
  * conserving for a conserving M. diffuse() is the base part's albedo for diffuse light; ambient() is
  * diffuse() times illum. `matrix` may be freed after the call. */
-int gfluor_varnish_create(const GColorModel *model, const GReradiation *matrix, const GFluorVarnishParams *params,
+GENERIC_API int gfluor_varnish_create(const GColorModel *model, const GReradiation *matrix, const GFluorVarnishParams *params,
                           GMaterial **out, GError *err);
 
 /* ======================================================================================================
@@ -168,7 +169,7 @@ typedef struct GFluorLaserSplit {
  * model sample nearest to nm; kept is the power leaving on that sample, shifted the power on all others.
  * In a non-spectral model (nsamples == 0) nothing can shift: kept is the whole reflected power (measured
  * with a white beam) and shifted 0. scratch: an arena for temporaries. */
-int gfluor_laser_split(const GMaterial *material, GScratch *scratch, double nm, double elevation_deg,
+GENERIC_API int gfluor_laser_split(const GMaterial *material, GScratch *scratch, double nm, double elevation_deg,
                        const GFluorLaserOptions *opt, GFluorLaserSplit *out, GError *err);
 
 /** A reflection pattern on a white diffuse target (see gfluor_laser_pattern). */
@@ -188,14 +189,14 @@ typedef struct GFluorPattern {
  * below the sample's plane stay dark; a faint grid is printed on the target as in the paper. Measures the
  * lobe of kept light (its widths at half maximum through the brightest point). Free with
  * gfluor_pattern_free. */
-int gfluor_laser_pattern(const GMaterial *material, GScratch *scratch, double nm, double elevation_deg, int width,
+GENERIC_API int gfluor_laser_pattern(const GMaterial *material, GScratch *scratch, double nm, double elevation_deg, int width,
                          int height, double extent, GFluorPattern *out, GError *err);
 /** Frees a pattern's pixels; NULL and freed patterns are no-ops. */
-void gfluor_pattern_free(GFluorPattern *p);
+GENERIC_API void gfluor_pattern_free(GFluorPattern *p);
 
 /** Dominant wavelength (nm) of a chromaticity (x, y) against equal-energy white; negative: the complementary
  * wavelength of a purple; 0 at the white point. */
-double gfluor_dominant_wavelength(double x, double y);
+GENERIC_API double gfluor_dominant_wavelength(double x, double y);
 
 #ifdef __cplusplus
 }

@@ -7,6 +7,7 @@
 #ifndef GENERIC_MATERIAL_PARAMS_H
 #define GENERIC_MATERIAL_PARAMS_H
 
+#include "export.h"
 #include "color.h"
 #include "error.h"
 #include "reader.h"
@@ -20,13 +21,13 @@ extern "C" {
  * <= max (for matrices the brightness is compared with max). A colour of another model is converted through
  * the nm spectrum with the given role and clamped to [0, max] afterwards. A complaint reads
  * "<material>: <param> ..." and names param (gerror_set_param). */
-int gmatparam_color(const GColorModel *m, const GColor *src, GColorRole role, double max, const char *material,
+GENERIC_API int gmatparam_color(const GColorModel *m, const GColor *src, GColorRole role, double max, const char *material,
                     const char *param, GColor *dst, GError *err);
 /** Largest sample of a vector value (its index in *at, may be NULL), the brightness of a matrix. */
-double gmatparam_max(const GColor *c, int *at);
+GENERIC_API double gmatparam_max(const GColor *c, int *at);
 /** For a parse routine: unless c already holds a colour (one the file gave), makes c the grey `grey` (an sRGB
  * triple of that value, read in role) in the file's colour model, in new storage (free with gcolor_free). */
-int gmatparam_default(GReader *r, double grey, GColorRole role, GColor *c, GError *err);
+GENERIC_API int gmatparam_default(GReader *r, double grey, GColorRole role, GColor *c, GError *err);
 
 #ifdef __cplusplus
 }

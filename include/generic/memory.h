@@ -10,6 +10,7 @@
 #ifndef GENERIC_MEMORY_H
 #define GENERIC_MEMORY_H
 
+#include "export.h"
 #include <stddef.h>
 
 #ifdef __cplusplus
@@ -26,38 +27,38 @@ typedef struct GAllocator {
 
 /** Installs an allocator for all later library allocations; NULL restores the C library's. Not thread safe:
  * call it before other threads use the library. */
-void gmem_set_allocator(const GAllocator *allocator);
+GENERIC_API void gmem_set_allocator(const GAllocator *allocator);
 /** Allocates size bytes (never returns a pointer for size 0 requests of 0: returns NULL). */
-void *gmem_alloc(size_t size);
+GENERIC_API void *gmem_alloc(size_t size);
 /** Allocates n * size zeroed bytes, checking the multiplication for overflow. */
-void *gmem_calloc(size_t n, size_t size);
+GENERIC_API void *gmem_calloc(size_t n, size_t size);
 /** Resizes a block from gmem_alloc; NULL ptr allocates. */
-void *gmem_realloc(void *ptr, size_t size);
+GENERIC_API void *gmem_realloc(void *ptr, size_t size);
 /** Frees a block from gmem_alloc; NULL is a no-op. */
-void gmem_free(void *ptr);
+GENERIC_API void gmem_free(void *ptr);
 /** Duplicates a string with gmem_alloc; NULL gives NULL. */
-char *gmem_strdup(const char *s);
+GENERIC_API char *gmem_strdup(const char *s);
 
 /** Bump arena for per-ray temporaries. */
 typedef struct GScratch GScratch;
 
 /** Creates an arena whose first block holds `bytes` (0 picks 256 KiB); NULL when out of memory. */
-GScratch *gscratch_create(size_t bytes);
+GENERIC_API GScratch *gscratch_create(size_t bytes);
 /** Frees the arena and all its blocks; NULL is a no-op. */
-void gscratch_destroy(GScratch *s);
+GENERIC_API void gscratch_destroy(GScratch *s);
 /** Returns `bytes` of 32-byte aligned storage, or NULL when the allocator fails. */
-void *gscratch_alloc(GScratch *s, size_t bytes);
+GENERIC_API void *gscratch_alloc(GScratch *s, size_t bytes);
 /** A position in the arena to return to. */
 typedef struct GScratchMark {
     void *block;
     size_t used;
 } GScratchMark;
 /** Remembers the current position. */
-GScratchMark gscratch_mark(const GScratch *s);
+GENERIC_API GScratchMark gscratch_mark(const GScratch *s);
 /** Returns to a position from gscratch_mark; everything allocated after it is released. */
-void gscratch_release(GScratch *s, GScratchMark mark);
+GENERIC_API void gscratch_release(GScratch *s, GScratchMark mark);
 /** Releases everything (keeps the blocks for reuse). */
-void gscratch_reset(GScratch *s);
+GENERIC_API void gscratch_reset(GScratch *s);
 
 #ifdef __cplusplus
 }

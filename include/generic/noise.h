@@ -4,6 +4,7 @@
 #ifndef GENERIC_NOISE_H
 #define GENERIC_NOISE_H
 
+#include "export.h"
 #include "error.h"
 #include "texture.h"
 #include "vec.h"
@@ -24,23 +25,23 @@ typedef struct GNoiseParams {
 
 /** The improved gradient noise of Perlin (2002) mapped to [0, 1] as (1 + n) / 2; 0.5 at every lattice point.
  * The gradient is analytic. */
-double gnoise_perlin3(unsigned seed, double x, double y, double z, GVec3 *grad);
+GENERIC_API double gnoise_perlin3(unsigned seed, double x, double y, double z, GVec3 *grad);
 
 /** Signed improved Perlin noise in about [-1, 1] (0 on the lattice); grad (may be NULL) gets its gradient. */
-double gnoise_signed(unsigned seed, GVec3 p, GVec3 *grad);
+GENERIC_API double gnoise_signed(unsigned seed, GVec3 p, GVec3 *grad);
 
 /** Fractional Brownian motion: sum of octaves gain^i n(lacunarity^i frequency x) over the sum of amplitudes,
  * in about [-1, 1]; every octave has its own seed so the lattices do not line up. grad (may be NULL) gets
  * the analytic gradient with respect to x. p must be complete (gnoise_params). */
-double gnoise_fbm(const GNoiseParams *p, GVec3 x, GVec3 *grad);
+GENERIC_API double gnoise_fbm(const GNoiseParams *p, GVec3 x, GVec3 *grad);
 
 /** Perlin's turbulence: the same sum of |n|, in [0, 1] (grad: its gradient, one-sided at the creases). */
-double gnoise_turbulence(const GNoiseParams *p, GVec3 x, GVec3 *grad);
+GENERIC_API double gnoise_turbulence(const GNoiseParams *p, GVec3 x, GVec3 *grad);
 
 /** Fills the defaults into a copy of the parameters (frequency 1, octaves 4, lacunarity 2, gain 0.5, object
  * space; in may be NULL for all defaults) and checks them: G_ERR_INVALID, the message naming the generator
  * `name`, for an unknown space, a negative or non-finite frequency, lacunarity or gain, or octaves beyond 16. */
-int gnoise_params(const char *name, const GNoiseParams *in, GNoiseParams *out, GError *err);
+GENERIC_API int gnoise_params(const char *name, const GNoiseParams *in, GNoiseParams *out, GError *err);
 
 #ifdef __cplusplus
 }

@@ -33,6 +33,7 @@
 #ifndef GENERIC_PROBE_H
 #define GENERIC_PROBE_H
 
+#include "export.h"
 #include "color.h"
 #include "error.h"
 #include "image.h"
@@ -62,69 +63,69 @@ typedef enum GProbeFormat {
 /** Creates a lat-long probe from `rgb` (width * height * 3 floats, rows from the zenith down; NULL gives a
  * black probe). width must be 2 * height, height >= 2. Negative, NaN and infinite values are set to 0,
  * values above GPROBE_MAX_RADIANCE to that (see gprobe_clamped_count). */
-int gprobe_create(int width, int height, const float *rgb, GProbe **out, GError *err);
+GENERIC_API int gprobe_create(int width, int height, const float *rgb, GProbe **out, GError *err);
 
 /** Loads a probe from any image OpenImageIO reads (EXR, HDR, PFM, TIFF, ...). `format` says how to read it
  * (GPROBE_AUTO decides by the aspect ratio); an angular map is resampled to a lat-long probe of `height`
  * rows (0: half the map's size). Clear errors for unreadable files and for images of the wrong shape. */
-int gprobe_load(const char *path, GProbeFormat format, int height, GProbe **out, GError *err);
+GENERIC_API int gprobe_load(const char *path, GProbeFormat format, int height, GProbe **out, GError *err);
 
 /** Makes a lat-long probe of `height` rows (0: half the map's size) from an angular map (RGB or RGBA). */
-int gprobe_from_angular(const GImage *map, int height, GProbe **out, GError *err);
+GENERIC_API int gprobe_from_angular(const GImage *map, int height, GProbe **out, GError *err);
 
 /** Frees a probe; NULL is a no-op. */
-void gprobe_destroy(GProbe *p);
+GENERIC_API void gprobe_destroy(GProbe *p);
 
 /* ---- access ---- */
 
 /** Width of the lat-long image (2 * height). */
-int gprobe_width(const GProbe *p);
+GENERIC_API int gprobe_width(const GProbe *p);
 /** Height of the lat-long image. */
-int gprobe_height(const GProbe *p);
+GENERIC_API int gprobe_height(const GProbe *p);
 /** The radiance P, 3 floats per pixel, rows from the zenith down. */
-const float *gprobe_pixels(const GProbe *p);
+GENERIC_API const float *gprobe_pixels(const GProbe *p);
 /** The pixel weights Q (see the top of this file), 3 floats per pixel. */
-const float *gprobe_weights(const GProbe *p);
+GENERIC_API const float *gprobe_weights(const GProbe *p);
 /** Number of pixels that had a negative, NaN, infinite or too large value clamped when the probe was made. */
-long gprobe_clamped_count(const GProbe *p);
+GENERIC_API long gprobe_clamped_count(const GProbe *p);
 
 /** Direction of a point of the lat-long image in pixel units (u + 0.5, v + 0.5 is the centre of pixel u, v). */
-GVec3 gprobe_direction(const GProbe *p, double x, double y);
+GENERIC_API GVec3 gprobe_direction(const GProbe *p, double x, double y);
 /** Position of a direction in the lat-long image in pixel units (the inverse of gprobe_direction);
  * dir need not be normalised. */
-void gprobe_position(const GProbe *p, GVec3 dir, double *x, double *y);
+GENERIC_API void gprobe_position(const GProbe *p, GVec3 dir, double *x, double *y);
 /** Radiance arriving from a direction, bilinear between pixel centres (dir need not be normalised). */
-void gprobe_radiance(const GProbe *p, GVec3 dir, float rgb[3]);
+GENERIC_API void gprobe_radiance(const GProbe *p, GVec3 dir, float rgb[3]);
 /** Integrated power: the sum of P times each pixel's exact solid angle (per channel). */
-void gprobe_power(const GProbe *p, double rgb[3]);
+GENERIC_API void gprobe_power(const GProbe *p, double rgb[3]);
 
 /* ---- conversion and rotation ---- */
 
 /** Renders the probe as a D x D angular map (RGB; black outside the disc), supersampled per pixel. */
-int gprobe_to_angular(const GProbe *p, int size, GImage *out, GError *err);
+GENERIC_API int gprobe_to_angular(const GProbe *p, int size, GImage *out, GError *err);
 /** The probe as a lat-long RGB image (a copy of the pixels). */
-int gprobe_to_image(const GProbe *p, GImage *out, GError *err);
+GENERIC_API int gprobe_to_image(const GProbe *p, GImage *out, GError *err);
 /** Writes the probe to a file in the given form (GPROBE_AUTO: lat-long); angular maps are H x H. */
-int gprobe_save(const GProbe *p, const char *path, GProbeFormat format, GError *err);
+GENERIC_API int gprobe_save(const GProbe *p, const char *path, GProbeFormat format, GError *err);
 /** A new probe showing the environment turned by the rotation matrix R (row-major, 3x3): radiance that came
  * from direction d now comes from R d. Resampled bilinearly, except for turns about z by whole pixels, which
  * are exact column shifts. G_ERR_INVALID when R is not a rotation. */
-int gprobe_rotate(const GProbe *p, const double R[9], GProbe **out, GError *err);
+GENERIC_API int gprobe_rotate(const GProbe *p, const double R[9], GProbe **out, GError *err);
 /** Fills R with the rotation by the given angles in degrees about x, then y, then z (R = Rz Ry Rx). */
-void gprobe_rotation_xyz(double x_deg, double y_deg, double z_deg, double R[9]);
+GENERIC_API void gprobe_rotation_xyz(double x_deg, double y_deg, double z_deg, double R[9]);
 
 /* ---- irradiance ---- */
 
 /** Fills normals[0..m-1] with unit vectors spread evenly over the sphere (a Fibonacci lattice). */
-void gprobe_fibonacci(int m, GVec3 *normals);
+GENERIC_API void gprobe_fibonacci(int m, GVec3 *normals);
 
 /** Ground-truth irradiance E (3 doubles per normal) at m unit normals: the full sum over pixels (Eq. 4), exact
  * up to rounding. Each row of the probe is a circle of directions; the visible arc for a normal is found in
  * closed form and summed with per-row prefix sums, so the cost is O(W H + m H) instead of O(m W H). */
-int gprobe_irradiance(const GProbe *p, const GVec3 *normals, int m, double *E, GError *err);
+GENERIC_API int gprobe_irradiance(const GProbe *p, const GVec3 *normals, int m, double *E, GError *err);
 
 /** The same sum pixel by pixel (O(m W H)); a reference for tests and benchmarks. */
-int gprobe_irradiance_direct(const GProbe *p, const GVec3 *normals, int m, double *E, GError *err);
+GENERIC_API int gprobe_irradiance_direct(const GProbe *p, const GVec3 *normals, int m, double *E, GError *err);
 
 /** A directional light: direction towards it (unit) and the irradiance it gives a surface facing it. */
 typedef struct GProbeLight {
@@ -133,7 +134,7 @@ typedef struct GProbeLight {
 } GProbeLight;
 
 /** Irradiance E (3 doubles per normal) that n lights give at m normals. */
-void gprobe_lights_irradiance(const GProbeLight *lights, int n, const GVec3 *normals, int m, double *E);
+GENERIC_API void gprobe_lights_irradiance(const GProbeLight *lights, int n, const GVec3 *normals, int m, double *E);
 
 /** Approximation errors against the ground truth, in percent. For each channel the mean and the maximum
  * over the normals are taken, then averaged over R, G, B (the paper's Fig. 6 measure). */
@@ -146,7 +147,7 @@ typedef struct GProbeErrors {
 
 /** Compares approximate irradiances with the ground truth at m normals (3 doubles each). Normals whose
  * true irradiance is below 1e-6 of the channel's maximum are left out of the relative measure. */
-void gprobe_compare(const double *truth, const double *approx, int m, GProbeErrors *out);
+GENERIC_API void gprobe_compare(const double *truth, const double *approx, int m, GProbeErrors *out);
 
 /* ---- approximation techniques ---- */
 
@@ -160,9 +161,9 @@ typedef enum GProbeTechnique {
 } GProbeTechnique;
 
 /** Keyword of a technique: "mediancut", "adaptive", "kmeans", "irradiance". */
-const char *gprobe_technique_name(GProbeTechnique t);
+GENERIC_API const char *gprobe_technique_name(GProbeTechnique t);
 /** Technique for a keyword; G_ERR_NOTFOUND (message lists the names) for unknown ones. */
-int gprobe_technique_parse(const char *name, GProbeTechnique *t, GError *err);
+GENERIC_API int gprobe_technique_parse(const char *name, GProbeTechnique *t, GError *err);
 
 /** Progress report: stage name and completed fraction 0..1; called from the calling thread. */
 typedef void (*GProbeProgress)(void *user, const char *stage, double fraction);
@@ -191,22 +192,22 @@ typedef struct GProbeFitReport {
 
 /** Approximates the probe by n directional lights with a technique (median cut needs n a power of 2).
  * lights must hold n entries; lights without energy get rgb = 0 and still fill a slot. */
-int gprobe_approximate(const GProbe *p, GProbeTechnique t, int n, const GProbeOptions *opt, GProbeLight *lights,
+GENERIC_API int gprobe_approximate(const GProbe *p, GProbeTechnique t, int n, const GProbeOptions *opt, GProbeLight *lights,
                        GError *err);
 
 /** Median cut (Debevec 2005): n = 2^k regions split along their longest side (width weighted by
  * sin theta) where the energy (luminance of Q) halves; a light at each region's energy centroid with the
  * region's summed Q. */
-int gprobe_median_cut(const GProbe *p, int n, GProbeLight *lights, GError *err);
+GENERIC_API int gprobe_median_cut(const GProbe *p, int n, GProbeLight *lights, GError *err);
 /** Adaptive median cut: the same splits, one region at a time, always the one with the largest
  * energy-weighted angular spread, until there are n regions. */
-int gprobe_adaptive_median_cut(const GProbe *p, int n, GProbeLight *lights, GError *err);
+GENERIC_API int gprobe_adaptive_median_cut(const GProbe *p, int n, GProbeLight *lights, GError *err);
 /** LightGen-style clustering: spherical k-means of the pixel directions weighted by energy, seeded
  * deterministically (k-means++ from a fixed seed); each light carries its cluster's summed Q. */
-int gprobe_kmeans(const GProbe *p, int n, const GProbeOptions *opt, GProbeLight *lights, GError *err);
+GENERIC_API int gprobe_kmeans(const GProbe *p, int n, const GProbeOptions *opt, GProbeLight *lights, GError *err);
 /** Irradiance optimisation: n lights fitted to the ground-truth irradiance at fit normals (see
  * lib/probe/optimize.c for the method); report may be NULL. */
-int gprobe_irradiance_fit(const GProbe *p, int n, const GProbeOptions *opt, GProbeLight *lights,
+GENERIC_API int gprobe_irradiance_fit(const GProbe *p, int n, const GProbeOptions *opt, GProbeLight *lights,
                           GProbeFitReport *report, GError *err);
 
 /* ---- spherical harmonics reference ---- */
@@ -218,20 +219,20 @@ typedef struct GProbeSH9 {
 } GProbeSH9;
 
 /** Projects the probe's radiance onto the nine harmonics (sums of Q times the basis). */
-void gprobe_sh9_project(const GProbe *p, GProbeSH9 *sh);
+GENERIC_API void gprobe_sh9_project(const GProbe *p, GProbeSH9 *sh);
 /** Irradiance the nine coefficients give at m normals (3 doubles each). */
-void gprobe_sh9_irradiance(const GProbeSH9 *sh, const GVec3 *normals, int m, double *E);
+GENERIC_API void gprobe_sh9_irradiance(const GProbeSH9 *sh, const GVec3 *normals, int m, double *E);
 
 /* ---- probes in a colour model (for renderers written against the generic colour interface) ---- */
 
 /** Radiance arriving from a direction (bilinear, as gprobe_radiance) as a light (GCOLOR_LIGHT) in the
  * colour model of `out`, which must have storage. dir need not be normalised. */
-int gprobe_radiance_color(const GProbe *p, GVec3 dir, GColor *out);
+GENERIC_API int gprobe_radiance_color(const GProbe *p, GVec3 dir, GColor *out);
 /** Radiance of pixel (u, v) as a light in the colour model of `out`; u wraps around, v is clamped. */
-int gprobe_pixel_color(const GProbe *p, int u, int v, GColor *out);
+GENERIC_API int gprobe_pixel_color(const GProbe *p, int u, int v, GColor *out);
 /** The colour of a directional light (its irradiance on a surface facing it) as a light in the colour
  * model of `out`. */
-int gprobe_light_color(const GProbeLight *l, GColor *out);
+GENERIC_API int gprobe_light_color(const GProbeLight *l, GColor *out);
 
 #ifdef __cplusplus
 }

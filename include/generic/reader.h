@@ -54,6 +54,7 @@
 #ifndef GENERIC_READER_H
 #define GENERIC_READER_H
 
+#include "export.h"
 #include <stddef.h>
 #include "color.h"
 #include "error.h"
@@ -100,42 +101,42 @@ typedef struct GReaderOptions {
 
 /** Reads a file into a new library. On failure *out is NULL, nothing is leaked and err holds
  * "file:line:col: message". */
-int greader_load_file(const char *path, const GReaderOptions *opt, GLibrary **out, GError *err);
+GENERIC_API int greader_load_file(const char *path, const GReaderOptions *opt, GLibrary **out, GError *err);
 /** Reads text held in memory; `name` is used in messages, and relative paths (include, plugin, data files)
  * are resolved against the current directory. */
-int greader_load_string(const char *text, const char *name, const GReaderOptions *opt, GLibrary **out,
+GENERIC_API int greader_load_string(const char *text, const char *name, const GReaderOptions *opt, GLibrary **out,
                         GError *err);
 
 /** Creates an empty library using `model` (not owned; NULL: "rgb", created and owned by the library). */
-int glibrary_create(const GColorModel *model, GLibrary **out, GError *err);
+GENERIC_API int glibrary_create(const GColorModel *model, GLibrary **out, GError *err);
 /** Reads a file into an existing library (e.g. a scene after a material file). opt->model and
  * opt->colormodel are ignored: the library's model is used. On failure the entries read before the error stay
  * in the library (they are owned by it and freed with it). */
-int glibrary_load_file(GLibrary *lib, const char *path, const GReaderOptions *opt, GError *err);
+GENERIC_API int glibrary_load_file(GLibrary *lib, const char *path, const GReaderOptions *opt, GError *err);
 /** Releases every object of the library (reverse order of creation) and its model if it owns it; NULL is a
  * no-op. Materials still referenced elsewhere (gmaterial_ref) live on, but can only be used while their colour
  * model exists: to keep materials beyond their library, load with your own model (GReaderOptions.model). */
-void glibrary_destroy(GLibrary *lib);
+GENERIC_API void glibrary_destroy(GLibrary *lib);
 /** The model every colour of the library is in. */
-const GColorModel *glibrary_colormodel(const GLibrary *lib);
+GENERIC_API const GColorModel *glibrary_colormodel(const GLibrary *lib);
 /** The object defined under name with the given kind (materials and nodes share one namespace); borrowed,
  * valid for the life of the library. NULL when not defined. */
-void *glibrary_find(const GLibrary *lib, GKind kind, const char *name);
+GENERIC_API void *glibrary_find(const GLibrary *lib, GKind kind, const char *name);
 /** The material (or texture node) defined under name, borrowed; NULL when not defined. */
-GMaterial *glibrary_material(const GLibrary *lib, const char *name);
+GENERIC_API GMaterial *glibrary_material(const GLibrary *lib, const char *name);
 /** Converts the colour defined under name into `out` (storage of the library's model provided by the
  * caller, see gcolor_wrap/gcolor_alloc), read in the given role. G_ERR_NOTFOUND when not defined. */
-int glibrary_color(const GLibrary *lib, const char *name, GColorRole role, GColor *out, GError *err);
+GENERIC_API int glibrary_color(const GLibrary *lib, const char *name, GColorRole role, GColor *out, GError *err);
 /** Number of top-level entries of a kind (named and anonymous, in file order; nested anonymous entries are
  * owned but not listed). Materials and nodes are listed under their own kind. */
-int glibrary_count(const GLibrary *lib, GKind kind);
+GENERIC_API int glibrary_count(const GLibrary *lib, GKind kind);
 /** The i-th top-level entry of a kind (0 <= i < glibrary_count): its object, and its name (NULL when
  * anonymous) and type through the optional pointers. NULL when i is out of range. */
-void *glibrary_entry(const GLibrary *lib, GKind kind, int i, const char **name, const GTypeInfo **type);
+GENERIC_API void *glibrary_entry(const GLibrary *lib, GKind kind, int i, const char **name, const GTypeInfo **type);
 /** Adds an object made by code under name (NULL = anonymous); the library takes ownership and releases it
  * with type->destroy (or the kind's default). G_ERR_EXISTS when the name is taken in that kind, and then the
  * object is released at once (the caller never keeps a half-owned object). */
-int glibrary_add(GLibrary *lib, const GTypeInfo *type, const char *name, void *object, GError *err);
+GENERIC_API int glibrary_add(GLibrary *lib, const GTypeInfo *type, const char *name, void *object, GError *err);
 
 /* ======================================================================================================
  * The API of parse routines
@@ -165,37 +166,37 @@ typedef struct GToken {
 /* ---- tokens ---- */
 
 /** Looks at the next token without consuming it. */
-int greader_peek(GReader *r, GToken *tok, GError *err);
+GENERIC_API int greader_peek(GReader *r, GToken *tok, GError *err);
 /** Consumes and returns the next token. */
-int greader_next(GReader *r, GToken *tok, GError *err);
+GENERIC_API int greader_next(GReader *r, GToken *tok, GError *err);
 /** Consumes the next token when it has the given type: 1 when consumed, 0 when not (nothing consumed). */
-int greader_accept(GReader *r, int type, GError *err);
+GENERIC_API int greader_accept(GReader *r, int type, GError *err);
 /** Consumes a token of the given type or fails with "expected WHAT, found ..."; what may be NULL. */
-int greader_expect(GReader *r, int type, const char *what, GError *err);
+GENERIC_API int greader_expect(GReader *r, int type, const char *what, GError *err);
 /** 1 when the next token is a number (so optional trailing numbers can be read), 0 when not. */
-int greader_at_number(GReader *r, GError *err);
+GENERIC_API int greader_at_number(GReader *r, GError *err);
 
 /* ---- values ---- */
 
 /** Reads a number. */
-int greader_number(GReader *r, double *out, GError *err);
+GENERIC_API int greader_number(GReader *r, double *out, GError *err);
 /** Reads a number and checks lo <= value <= hi ("value X out of range [lo, hi]" at the number). */
-int greader_number_in(GReader *r, double lo, double hi, double *out, GError *err);
+GENERIC_API int greader_number_in(GReader *r, double lo, double hi, double *out, GError *err);
 /** Reads a whole number within [lo, hi]. */
-int greader_int(GReader *r, long lo, long hi, long *out, GError *err);
+GENERIC_API int greader_int(GReader *r, long lo, long hi, long *out, GError *err);
 /** Reads a vector, written `<x, y, z>` or `x y z`. */
-int greader_vec3(GReader *r, GVec3 *out, GError *err);
+GENERIC_API int greader_vec3(GReader *r, GVec3 *out, GError *err);
 /** Reads a boolean: true/false, yes/no, on/off, 1/0. */
-int greader_bool(GReader *r, int *out, GError *err);
+GENERIC_API int greader_bool(GReader *r, int *out, GError *err);
 /** Reads a quoted string; *out is a copy made with gmem_alloc (free it with gmem_free). */
-int greader_string(GReader *r, char **out, GError *err);
+GENERIC_API int greader_string(GReader *r, char **out, GError *err);
 /** Reads an identifier into buf (an error when it does not fit). */
-int greader_ident(GReader *r, char *buf, size_t size, GError *err);
+GENERIC_API int greader_ident(GReader *r, char *buf, size_t size, GError *err);
 /** Reads an identifier that must be one of the NULL-terminated choices; *index gets its position. */
-int greader_choice(GReader *r, const char *const *choices, int *index, GError *err);
+GENERIC_API int greader_choice(GReader *r, const char *const *choices, int *index, GError *err);
 /** Reads a quoted file name and resolves it against the directory of the file being read; *out is a
  * gmem_alloc copy of the resulting path. */
-int greader_path(GReader *r, char **out, GError *err);
+GENERIC_API int greader_path(GReader *r, char **out, GError *err);
 
 /* ---- parameter blocks ---- */
 
@@ -203,57 +204,57 @@ int greader_path(GReader *r, char **out, GError *err);
  * next parameter name (valid until the next read) for the routine to read its value; 0 when the block is
  * closed or when the entry has no block at all (a type keyword followed by anything but `{` keeps all its
  * defaults); negative on error. A name given twice and a missing `}` are reported by the reader. */
-int greader_param(GReader *r, const char **key, GError *err);
+GENERIC_API int greader_param(GReader *r, const char **key, GError *err);
 /** Reports the parameter just returned by greader_param as unknown, listing the expected names. */
-int greader_unknown_param(GReader *r, const char *expected, GError *err);
+GENERIC_API int greader_unknown_param(GReader *r, const char *expected, GError *err);
 /** Reads a `{ ... }` block of positional values: consumes `{` and returns 0 (then read the values until
  * greader_block_end returns 1). */
-int greader_block_begin(GReader *r, GError *err);
+GENERIC_API int greader_block_begin(GReader *r, GError *err);
 /** 1 (and consumes `}`) when the block opened by greader_block_begin ends here, 0 when more follows;
  * a missing `}` at the end of the file is an error naming where the block opened. */
-int greader_block_end(GReader *r, GError *err);
+GENERIC_API int greader_block_end(GReader *r, GError *err);
 
 /* ---- objects, colours, names ---- */
 
 /** Reads a VALUE of a kind: a nested anonymous entry `TYPE parameters` (calling its parse routine) or the
  * name of an entry defined before. *object is borrowed from the library (see Ownership above); *type, when
  * type is not NULL, receives the type the object was made by. */
-int greader_object(GReader *r, GKind kind, void **object, const GTypeInfo **type, GError *err);
+GENERIC_API int greader_object(GReader *r, GKind kind, void **object, const GTypeInfo **type, GError *err);
 /** greader_object for a material or texture node; borrowed (gmaterial_ref to keep it). */
-int greader_material(GReader *r, GMaterial **out, GError *err);
+GENERIC_API int greader_material(GReader *r, GMaterial **out, GError *err);
 /** Reads a colour literal (rgb, spectrum, blackbody, illuminant, line, bfc, scale, or a registered colour
  * type) or a colour name, and converts it in the given role into the reader's colour model. `out` must be a
  * cleared handle ({0}); it receives heap storage (free with gcolor_free), also when it is left black by a
  * failure, so gcolor_free is always right. */
-int greader_color(GReader *r, GColorRole role, GColor *out, GError *err);
+GENERIC_API int greader_color(GReader *r, GColorRole role, GColor *out, GError *err);
 /** The colour model of the file (fixed from here on: a `colormodel` entry after this is an error). */
-const GColorModel *greader_colormodel(GReader *r);
+GENERIC_API const GColorModel *greader_colormodel(GReader *r);
 /** The library being loaded. */
-GLibrary *greader_library(GReader *r);
+GENERIC_API GLibrary *greader_library(GReader *r);
 /** The object defined under name of a kind (materials and nodes share a namespace), borrowed; NULL when
  * not defined. */
-void *greader_lookup(GReader *r, GKind kind, const char *name);
+GENERIC_API void *greader_lookup(GReader *r, GKind kind, const char *name);
 /** Defines an object under a name (NULL = anonymous) in the library being loaded, which takes ownership
  * (see glibrary_add; errors are reported at the last token read). */
-int greader_define(GReader *r, const GTypeInfo *type, const char *name, void *object, GError *err);
+GENERIC_API int greader_define(GReader *r, const GTypeInfo *type, const char *name, void *object, GError *err);
 /** Directory of the file being read ("." for text in memory), for resolving relative paths. */
-const char *greader_dir(GReader *r);
+GENERIC_API const char *greader_dir(GReader *r);
 /** Name of the file being read, as given to the loader or the include statement. */
-const char *greader_file(GReader *r);
+GENERIC_API const char *greader_file(GReader *r);
 /** Position of the last token read (line and col may be NULL). */
-void greader_position(GReader *r, int *line, int *col);
+GENERIC_API void greader_position(GReader *r, int *line, int *col);
 
 /* ---- errors ---- */
 
 /** Fails with G_ERR_PARSE and "file:line:col: message" at the last token read (err->line, err->col hold the
  * position); returns G_ERR_PARSE. */
-int greader_error(GReader *r, GError *err, const char *fmt, ...)
+GENERIC_API int greader_error(GReader *r, GError *err, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 3, 4)))
 #endif
     ;
 /** The same at an explicit position (e.g. a token kept from earlier), with a status code. */
-int greader_error_at(GReader *r, GError *err, int code, int line, int col, const char *fmt, ...)
+GENERIC_API int greader_error_at(GReader *r, GError *err, int code, int line, int col, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 6, 7)))
 #endif
@@ -263,7 +264,7 @@ int greader_error_at(GReader *r, GError *err, int code, int line, int col, const
  * the last token read; the message gets the "file:line:col: " prefix and err->line, err->col the position. A
  * message that already has a position is left as it is. A parse routine that returns a constructor's failure
  * need not call this: the reader places every failure of a parse routine so. Returns err->code. */
-int greader_locate(GReader *r, GError *err);
+GENERIC_API int greader_locate(GReader *r, GError *err);
 
 /* ======================================================================================================
  * Colour literals (lib/colorparse.c)
@@ -293,17 +294,17 @@ typedef struct GColorSpec {
 } GColorSpec;
 
 /** A new spec (form RGB, black, scale 1); NULL when out of memory. */
-GColorSpec *gcolorspec_create(void);
+GENERIC_API GColorSpec *gcolorspec_create(void);
 /** Frees a spec and its matrix; NULL is a no-op. */
-void gcolorspec_destroy(GColorSpec *s);
+GENERIC_API void gcolorspec_destroy(GColorSpec *s);
 /** Deep copy of src into a new spec. */
-int gcolorspec_copy(const GColorSpec *src, GColorSpec **out, GError *err);
+GENERIC_API int gcolorspec_copy(const GColorSpec *src, GColorSpec **out, GError *err);
 /** Converts a spec in a role into out (which has storage of the target model). A line is spread over a
  * triangle one sample step wide on each side in spectral models (1 nm on the exchange grid), so its energy and
  * centre survive any sampling; a re-radiation matrix used as a light is G_ERR_INVALID. */
-int gcolorspec_to_color(const GColorSpec *s, GColorRole role, GColor *out, GError *err);
+GENERIC_API int gcolorspec_to_color(const GColorSpec *s, GColorRole role, GColor *out, GError *err);
 /** Reads a colour literal or name at the reader's position into a new spec (what greader_color parses). */
-int greader_color_spec(GReader *r, GColorSpec **out, GError *err);
+GENERIC_API int greader_color_spec(GReader *r, GColorSpec **out, GError *err);
 
 #ifdef __cplusplus
 }

@@ -7,6 +7,7 @@
 #ifndef GENERIC_SURFPOINT_H
 #define GENERIC_SURFPOINT_H
 
+#include "export.h"
 #include "vec.h"
 #include "color.h"
 
@@ -65,29 +66,29 @@ typedef struct GSurfPoint {
 } GSurfPoint;
 
 /** Clears a surface point (all fields zero, caches empty) and sets its model and arena. */
-void gsurfpoint_init(GSurfPoint *sp, const GColorModel *model, GScratch *scratch);
+GENERIC_API void gsurfpoint_init(GSurfPoint *sp, const GColorModel *model, GScratch *scratch);
 /** Forgets every cached value (call after changing geometric fields of an initialised point). */
-void gsurfpoint_invalidate(GSurfPoint *sp);
+GENERIC_API void gsurfpoint_invalidate(GSurfPoint *sp);
 /** Shading normal: the material's normal() computed once and cached (geometric normal without a material). */
-GVec3 gsurfpoint_normal(GSurfPoint *sp);
+GENERIC_API GVec3 gsurfpoint_normal(GSurfPoint *sp);
 /** Overrides the cached shading normal. */
-void gsurfpoint_set_normal(GSurfPoint *sp, GVec3 n);
+GENERIC_API void gsurfpoint_set_normal(GSurfPoint *sp, GVec3 n);
 /** Scalar relative refraction index n(from) / n(to) (luminance-weighted), computed once and cached. */
-double gsurfpoint_relative_index(GSurfPoint *sp);
+GENERIC_API double gsurfpoint_relative_index(GSurfPoint *sp);
 /** Looks up a value cached under key; 1 when found (value and gradient copied out, either may be NULL). */
-int gsurfpoint_cache_get(const GSurfPoint *sp, const void *key, double *value, GVec3 *gradient);
+GENERIC_API int gsurfpoint_cache_get(const GSurfPoint *sp, const void *key, double *value, GVec3 *gradient);
 /** Caches a value under key (the oldest slot is reused when all are taken). */
-void gsurfpoint_cache_put(GSurfPoint *sp, const void *key, double value, GVec3 gradient);
+GENERIC_API void gsurfpoint_cache_put(GSurfPoint *sp, const void *key, double value, GVec3 gradient);
 /** Widths of the pixel footprint along u and along v (the extent of the uv_axis ellipse, or uv_footprint for
  * both when the axes are unknown), for filters that are separable in u and v. */
-void gsurfpoint_uv_widths(const GSurfPoint *sp, double *wu, double *wv);
+GENERIC_API void gsurfpoint_uv_widths(const GSurfPoint *sp, double *wu, double *wv);
 /** For a node that evaluates its subtree at moved coordinates (a transform): makes q, a copy of sp with moved
  * fields, use its own cache scope derived from sp's and `node`. Values the subtree caches on q are then found
  * again on the next call through the same node (after gsurfpoint_cache_return) and never mistaken for values
  * at sp's own coordinates, even when a generator is shared inside and outside the subtree. */
-void gsurfpoint_cache_enter(GSurfPoint *q, const GSurfPoint *sp, const void *node);
+GENERIC_API void gsurfpoint_cache_enter(GSurfPoint *q, const GSurfPoint *sp, const void *node);
 /** Hands the generator cache of q (made by gsurfpoint_cache_enter from sp) back to sp after the subtree's call. */
-void gsurfpoint_cache_return(GSurfPoint *sp, const GSurfPoint *q);
+GENERIC_API void gsurfpoint_cache_return(GSurfPoint *sp, const GSurfPoint *q);
 
 #ifdef __cplusplus
 }

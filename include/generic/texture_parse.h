@@ -5,6 +5,7 @@
 #ifndef GENERIC_TEXTURE_PARSE_H
 #define GENERIC_TEXTURE_PARSE_H
 
+#include "export.h"
 #include "affine.h"
 #include "error.h"
 #include "material.h"
@@ -18,23 +19,23 @@ extern "C" {
 
 /** Reads a GENERATOR value (a nested entry or the name of an earlier one) into *g, borrowed from the library
  * (a node's constructor takes its own reference). */
-int gtexparse_generator(GReader *r, GGenerator **g, GError *err);
+GENERIC_API int gtexparse_generator(GReader *r, GGenerator **g, GError *err);
 
 /** Reads `{ MATERIAL ... }` into a gmem array of borrowed materials (*list freed first; free it after). */
-int gtexparse_materials(GReader *r, GMaterial ***list, int *n, GError *err);
+GENERIC_API int gtexparse_materials(GReader *r, GMaterial ***list, int *n, GError *err);
 
 /** Reads `{ number ... }` into a gmem array (*list freed first; free it after). */
-int gtexparse_numbers(GReader *r, double **list, int *n, GError *err);
+GENERIC_API int gtexparse_numbers(GReader *r, double **list, int *n, GError *err);
 
 /** Reads `{ translate U V  rotate DEG  scale S [S2] ... }`: the steps composed in the order written (each
  * moves the result of the ones before). */
-int gtexparse_uv_steps(GReader *r, GAffine2 *out, GError *err);
+GENERIC_API int gtexparse_uv_steps(GReader *r, GAffine2 *out, GError *err);
 
 /** Reads `{ translate X Y Z  rotate AXIS DEG  scale S | X Y Z ... }` composed in order. */
-int gtexparse_xyz_steps(GReader *r, GAffine3 *out, GError *err);
+GENERIC_API int gtexparse_xyz_steps(GReader *r, GAffine3 *out, GError *err);
 
 /** Reads a generator space keyword: object, world or uv. */
-int gtexparse_space(GReader *r, GGeneratorSpace *space, GError *err);
+GENERIC_API int gtexparse_space(GReader *r, GGeneratorSpace *space, GError *err);
 
 /** The keys gtexparse_noise_param reads, for "expected one of" lists. */
 #define GTEXPARSE_NOISE_KEYS "space, frequency, seed, octaves, lacunarity, gain"
@@ -42,11 +43,11 @@ int gtexparse_space(GReader *r, GGeneratorSpace *space, GError *err);
 /** Reads the value of `key` when it is one of the noise parameters (GTEXPARSE_NOISE_KEYS: space, frequency
  * in [1e-9, 1e9], seed, octaves in 1..16, lacunarity, gain) into p: 1 when read, 0 when key is none of them
  * (nothing read), a negative status on an error. */
-int gtexparse_noise_param(GReader *r, const char *key, GNoiseParams *p, GError *err);
+GENERIC_API int gtexparse_noise_param(GReader *r, const char *key, GNoiseParams *p, GError *err);
 
 /** The end of a parse routine that called a constructor: on success stores obj in *object and returns G_OK;
  * on failure (rc < 0) places the constructor's message in err at the last token read and returns rc. */
-int gtexparse_finish(GReader *r, int rc, void *obj, void **object, GError *err);
+GENERIC_API int gtexparse_finish(GReader *r, int rc, void *obj, void **object, GError *err);
 
 #ifdef __cplusplus
 }
