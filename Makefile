@@ -34,7 +34,7 @@ CXXFLAGS += -std=c++17 $(OPT) -g -fPIC $(WARN) $(SANFLAGS) $(VISIBILITY) -fvisib
 DEPLIBS := $(shell pkg-config --libs OpenImageIO 2>/dev/null) -lstdc++ -fopenmp -ldl -lpthread -lm
 LDFLAGS += $(SANFLAGS)
 
-LIB_SRC := $(foreach d,lib lib/probe colormodels materials materials/* textures,$(sort $(wildcard $(d)/*.c)))
+LIB_SRC := $(foreach d,lib lib/kit lib/probe colormodels materials materials/* textures,$(sort $(wildcard $(d)/*.c)))
 LIB_CXX := $(wildcard lib/*.cpp)
 # The list of built-in types (include/generic/builtins.h), generated from the GENERIC_TYPE records of LIB_SRC.
 GEN_BUILTINS = $(1)/gen/builtin_types.c

@@ -19,8 +19,12 @@ using namespace OIIO;
 // OpenImageIO 2.4's TextureSystem::destroy deletes its implementation through the base class with a sized
 // delete of the wrong size: a mismatch inside that library, harmless with the C library's allocator, which
 // AddressSanitizer would otherwise report (and abort on) in every program that frees a texture system.
-// Weak, so a program may define its own options.
-extern "C" __attribute__((weak)) const char *__asan_default_options() { return "new_delete_type_mismatch=0"; }
+// Weak, so a program may define its own options; visible (the library is built with -fvisibility=hidden), so
+// that the sanitizer's run-time finds it.
+extern "C" __attribute__((weak, visibility("default"))) const char *__asan_default_options()
+{
+    return "new_delete_type_mismatch=0";
+}
 #endif
 
 struct GTextureSystem {

@@ -10,7 +10,7 @@
  * light and the shifted diffuse light does not follow the angle of incidence, the shortcoming the paper
  * points out. The code uses only generic colour operations: M is a matrix in the bispectral model and a
  * folded reflectance in the others. */
-#include "fluor_internal.h"
+#include "generic/fluorescent_kit.h"
 #include "generic/plugin.h"
 
 #include <math.h>
@@ -50,7 +50,7 @@ static int fphong_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, co
     const FPhong *p = (const FPhong *)self;
     GVec3 n;
     double ci, co;
-    if (!fluor_cosines(sp, in, out, result, &n, &ci, &co))
+    if (!gfluor_cosines(sp, in, out, result, &n, &ci, &co))
         return G_OK;
     double ca = 2.0 * ci * co - gvec3_dot(in, out); /* cos(alpha) = r.o, r the mirror direction of in */
     double lobe = 0.0;
@@ -65,7 +65,7 @@ static int fphong_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, co
         int rc = gcolor_mul(result, &p->m, illum);
         return rc ? rc : gcolor_scale(result, result, ci / M_PI);
     }
-    return fluor_two_parts(sp, self->model, illum, &p->m, ci / M_PI, &p->d, lobe * ci, result);
+    return gfluor_two_parts(sp, self->model, illum, &p->m, ci / M_PI, &p->d, lobe * ci, result);
 }
 
 static int fphong_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
@@ -119,7 +119,7 @@ int gfluor_phong_create(const GColorModel *model, const GReradiation *matrix, co
         p = *params;
     if (!model)
         return gerror_set(err, G_ERR_INVALID, "fluorescent-phong: no colour model given");
-    int rc = fluor_matrix_check(matrix, "fluorescent-phong", err);
+    int rc = gfluor_matrix_check(matrix, "fluorescent-phong", err);
     if (rc == G_OK)
         rc = check_params(&p, err);
     GMaterial *m;
@@ -159,7 +159,7 @@ int gfluor_phong_create(const GColorModel *model, const GReradiation *matrix, co
 
 /* ---- the text format ---- */
 
-static const FluorParam phong_params[] = {
+static const GFluorParam phong_params[] = {
     {"ks", 0.0, 0.999, offsetof(GFluorPhongParams, ks), 1},
     {"exponents", 1.0, 1e6, offsetof(GFluorPhongParams, exponent), 3},
     {"weights", 0.0, 1.0, offsetof(GFluorPhongParams, weight), 3},
@@ -173,10 +173,10 @@ static int parse_fluorescent_phong(GReader *r, const void *vt, void **object, GE
     gfluor_phong_default(&p);
     GReradiation mat = {0};
     GMaterial *m = NULL;
-    int rc = fluor_read_params(r, phong_params, "matrix, ks, exponents, weights", &p, &mat, err);
+    int rc = gfluor_read_params(r, phong_params, "matrix, ks, exponents, weights", &p, &mat, err);
     if (rc == G_OK)
         rc = gfluor_phong_create(greader_colormodel(r), &mat, &p, &m, err);
-    return fluor_finish(rc, &mat, m, object);
+    return gfluor_finish(rc, &mat, m, object);
 }
 
 GENERIC_TYPE(fluorescent_phong, GKIND_MATERIAL, &fluorescent_phong_class, parse_fluorescent_phong, NULL);

@@ -34,7 +34,7 @@
  * bispectral model and folds it into a reflectance elsewhere. The per-call code uses only generic colour
  * operations and works the same for a matrix or a vector value. R(c) is tabulated at creation by a
  * quadrature over h with the distribution D(h) (h.n). */
-#include "fluor_internal.h"
+#include "generic/fluorescent_kit.h"
 #include "generic/plugin.h"
 
 #include <math.h>
@@ -182,15 +182,15 @@ static int solve_bounces(const GReradiation *M, double f_int, GReradiation *out,
         for (int o = 0; o < no; o++) {
             double e = 0.0;
             if (j >= 0 && j < ni)
-                e += (1.0 - t) * fluor_entry(M, o, j);
+                e += (1.0 - t) * gfluor_entry(M, o, j);
             if (t > 0.0 && j + 1 >= 0 && j + 1 < ni)
-                e += t * fluor_entry(M, o, j + 1);
+                e += t * gfluor_entry(M, o, j + 1);
             a[(long)o * no + p] = (o == p ? 1.0 : 0.0) - f_int * e * (M->out_step / M->in_step);
         }
     }
     for (int o = 0; o < no; o++)
         for (int i = 0; i < ni; i++)
-            x[(long)o * ni + i] = fluor_entry(M, o, i);
+            x[(long)o * ni + i] = gfluor_entry(M, o, i);
     /* Gaussian elimination with partial pivoting on a x = M */
     int rc = G_OK;
     for (int c = 0; c < no && rc == G_OK; c++) {
@@ -260,12 +260,12 @@ static int varnish_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, c
     const Varnish *v = (const Varnish *)self;
     GVec3 n;
     double ci, co;
-    if (!fluor_cosines(sp, in, out, result, &n, &ci, &co))
+    if (!gfluor_cosines(sp, in, out, result, &n, &ci, &co))
         return G_OK;
     GVec3 h = gvec3_normalize(gvec3_add(in, out));
     double spec = facet_brdf(v, ci, co, gvec3_dot(h, n), gvec3_dot(in, h));
     double base = transmit(v, ci) * transmit(v, co) * v->base_norm;
-    return fluor_two_parts(sp, self->model, illum, NULL, spec * ci, &v->b, base * ci, result);
+    return gfluor_two_parts(sp, self->model, illum, NULL, spec * ci, &v->b, base * ci, result);
 }
 
 static int varnish_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
@@ -277,7 +277,7 @@ static int varnish_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result
 static int varnish_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
 {
     const Varnish *v = (const Varnish *)self;
-    return fluor_two_parts(sp, self->model, illum, NULL, v->r_avg, &v->diffuse, 1.0, result);
+    return gfluor_two_parts(sp, self->model, illum, NULL, v->r_avg, &v->diffuse, 1.0, result);
 }
 
 static const GMaterialClass fluorescent_varnish_class = {
@@ -307,7 +307,7 @@ int gfluor_varnish_create(const GColorModel *model, const GReradiation *matrix, 
         p = *params;
     if (!model)
         return gerror_set(err, G_ERR_INVALID, "fluorescent-varnish: no colour model given");
-    int rc = fluor_matrix_check(matrix, "fluorescent-varnish", err);
+    int rc = gfluor_matrix_check(matrix, "fluorescent-varnish", err);
     if (rc != G_OK)
         return rc;
     if (!isfinite(p.ior) || p.ior < 1.0 || p.ior > 4.0)
@@ -353,7 +353,7 @@ int gfluor_varnish_create(const GColorModel *model, const GReradiation *matrix, 
 
 /* ---- the text format ---- */
 
-static const FluorParam varnish_params[] = {
+static const GFluorParam varnish_params[] = {
     {"ior", 1.0, 4.0, offsetof(GFluorVarnishParams, ior), 1},
     {"slope", 0.01, 44.99, offsetof(GFluorVarnishParams, slope_deg), 1},
     {"exponent", 0.0, 1e6, offsetof(GFluorVarnishParams, exponent), 1},
@@ -367,10 +367,10 @@ static int parse_fluorescent_varnish(GReader *r, const void *vt, void **object, 
     gfluor_varnish_default(&p);
     GReradiation mat = {0};
     GMaterial *m = NULL;
-    int rc = fluor_read_params(r, varnish_params, "matrix, ior, slope, exponent", &p, &mat, err);
+    int rc = gfluor_read_params(r, varnish_params, "matrix, ior, slope, exponent", &p, &mat, err);
     if (rc == G_OK)
         rc = gfluor_varnish_create(greader_colormodel(r), &mat, &p, &m, err);
-    return fluor_finish(rc, &mat, m, object);
+    return gfluor_finish(rc, &mat, m, object);
 }
 
 GENERIC_TYPE(fluorescent_varnish, GKIND_MATERIAL, &fluorescent_varnish_class, parse_fluorescent_varnish, NULL);

@@ -1,7 +1,11 @@
-/* fluor_internal.h - helpers shared by the fluorescent materials (not public). */
-#ifndef GENERIC_FLUOR_INTERNAL_H
-#define GENERIC_FLUOR_INTERNAL_H
+/* fluorescent_kit.h - the kit of fluorescent material writers: checks of re-radiation matrices, their entries,
+ * the incident and outgoing cosines of a reflection, the two-part sum a fluorescent reflection returns, and the
+ * parameter block shared by the fluorescent materials (matrix plus numbers). Used by
+ * the fluorescent materials of materials/fluorescent/; a module may use it the same way. */
+#ifndef GENERIC_FLUORESCENT_KIT_H
+#define GENERIC_FLUORESCENT_KIT_H
 
+#include "export.h"
 #include "generic/fluorescent.h"
 #include "generic/material.h"
 #include "generic/material_kit.h"
@@ -10,11 +14,11 @@
 #include <stddef.h>
 
 /** Checks a GReradiation's grid and values (finite); G_ERR_INVALID naming `what` otherwise. */
-int fluor_matrix_check(const GReradiation *r, const char *what, GError *err);
+GENERIC_API int gfluor_matrix_check(const GReradiation *r, const char *what, GError *err);
 /** The excitation column of r whose wavelength is nm (within a millionth of a step), or -1. */
-int fluor_column_of(const GReradiation *r, double nm);
+GENERIC_API int gfluor_column_of(const GReradiation *r, double nm);
 /** Entry (o, i) of r with negative noise clamped to 0. */
-static inline double fluor_entry(const GReradiation *r, int o, int i)
+static inline double gfluor_entry(const GReradiation *r, int o, int i)
 {
     float v = r->data[(long)o * r->n_in + i];
     return v > 0.0f ? (double)v : 0.0;
@@ -22,7 +26,7 @@ static inline double fluor_entry(const GReradiation *r, int o, int i)
 
 /** The cosines of a reflection from in to out with the shading normal *n: *ci (gmat_cos_in) and *co. 1 when
  * light reflects, else 0 with result made black (either cosine <= 0). */
-static inline int fluor_cosines(GSurfPoint *sp, GVec3 in, GVec3 out, GColor *result, GVec3 *n, double *ci,
+static inline int gfluor_cosines(GSurfPoint *sp, GVec3 in, GVec3 out, GColor *result, GVec3 *n, double *ci,
                                 double *co)
 {
     *ci = gmat_cos_in(sp, in, out, n);
@@ -38,7 +42,7 @@ static inline int fluor_cosines(GSurfPoint *sp, GVec3 in, GVec3 out, GColor *res
  * the sum of two parts, b * illum held in a temporary on sp's arena and computed first (result may alias
  * illum). The operations run in the order written, so each material gets the same numbers as it would
  * spelling the sum out. */
-static inline int fluor_two_parts(GSurfPoint *sp, const GColorModel *model, const GColor *illum, const GColor *a,
+static inline int gfluor_two_parts(GSurfPoint *sp, const GColorModel *model, const GColor *illum, const GColor *a,
                                   double wa, const GColor *b, double wb, GColor *result)
 {
     GScratchMark mark = gscratch_mark(sp->scratch);
@@ -58,21 +62,21 @@ static inline int fluor_two_parts(GSurfPoint *sp, const GColorModel *model, cons
     return rc;
 }
 
-/* A numeric parameter of a fluorescent material: `count` numbers in [lo, hi] at `offset` in its parameter
+/** A numeric parameter of a fluorescent material: `count` numbers in [lo, hi] at `offset` in its parameter
  * struct. */
-typedef struct FluorParam {
+typedef struct GFluorParam {
     const char *key;
     double lo, hi;
     size_t offset;
     int count;
-} FluorParam;
+} GFluorParam;
 
-/** Reads a fluorescent material's parameter block (materials/fluorescent/fluor_params.c): `matrix` into *mat
+/** Reads a fluorescent material's parameter block (lib/kit/fluorescent_params.c): `matrix` into *mat
  * (the default matrix when it is not given) and the numbers of `table` into params; `keys` lists every name for
- * the unknown-key message. *mat is freed by the caller (fluor_finish), also on failure. */
-int fluor_read_params(GReader *r, const FluorParam *table, const char *keys, void *params, GReradiation *mat,
+ * the unknown-key message. *mat is freed by the caller (gfluor_finish), also on failure. */
+GENERIC_API int gfluor_read_params(GReader *r, const GFluorParam *table, const char *keys, void *params, GReradiation *mat,
                       GError *err);
 /** The end of a fluorescent material's parse: frees *mat and hands over m when rc is G_OK; returns rc. */
-int fluor_finish(int rc, GReradiation *mat, GMaterial *m, void **object);
+GENERIC_API int gfluor_finish(int rc, GReradiation *mat, GMaterial *m, void **object);
 
 #endif

@@ -16,7 +16,7 @@
  * Spectral models: the beam is a unit value on one sample of the model (the one nearest the requested
  * wavelength), written into the samples of a vector colour (the first nsamples values of a vector are its
  * samples at lambda_min + k * lambda_step). Everything else goes through the generic operations. */
-#include "fluor_internal.h"
+#include "generic/fluorescent_kit.h"
 
 #include <math.h>
 #include <string.h>

@@ -1,5 +1,5 @@
-/* cpg_internal.h - closed contours of rational Bézier segments shared by textures/cpg_shape.c and
- * textures/cpg_path.c. Internal. */
+/* cpg_internal.h - closed contours of rational Bézier segments shared by lib/kit/cpg_shape.c and
+ * lib/kit/cpg_path.c. Internal. */
 #ifndef GENERIC_TEXTURES_CPG_INTERNAL_H
 #define GENERIC_TEXTURES_CPG_INTERNAL_H
 

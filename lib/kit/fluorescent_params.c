@@ -1,4 +1,4 @@
-/* fluor_params.c - what the parse routines of the fluorescent materials share (fluor_internal.h): the
+/* fluorescent_params.c - what the parse routines of the fluorescent materials share (fluorescent_kit.h): the
  * `matrix` parameter and the numeric parameters of a table (README.md, "Fluorescent types"):
  *
  *   material NAME fluorescent-phong { matrix COLOR  ks 0.04  exponents 30 120 480  weights 0.2 0.3 0.5 }
@@ -7,7 +7,7 @@
  * `matrix` takes any colour value: a re-radiation matrix (`bfc "FILE"`, `reradiation {...}`, or the name of one,
  * optionally `scale`d) or a plain reflectance (rgb, spectrum), which makes a non-fluorescent matrix holding it on
  * the diagonal. Without `matrix` the default `reradiation` (a day-glo orange) is used. */
-#include "fluor_internal.h"
+#include "generic/fluorescent_kit.h"
 
 #include <string.h>
 
@@ -18,7 +18,7 @@ static int spec_matrix(GReader *r, const GColorSpec *s, GReradiation *out, GErro
     if (s->form == GCOLORSPEC_LINE)
         return greader_error(r, err, "matrix: a spectral line is a light, not a reflectance");
     if (s->form == GCOLORSPEC_RERADIATION) {
-        int rc = fluor_matrix_check(&s->rerad, "matrix", err);
+        int rc = gfluor_matrix_check(&s->rerad, "matrix", err);
         if (rc != G_OK)
             return greader_locate(r, err);
         size_t n = (size_t)s->rerad.n_in * s->rerad.n_out;
@@ -80,13 +80,13 @@ static int read_numbers(GReader *r, double lo, double hi, double *v, int n, GErr
 /* Reads a fluorescent material's parameter block into params: `matrix` into *mat (the default matrix when
  * it is not given), the numbers of the table; `keys` lists them all for the unknown-key message. *mat is
  * freed by the caller, also on failure. */
-int fluor_read_params(GReader *r, const FluorParam *table, const char *keys, void *params, GReradiation *mat,
+int gfluor_read_params(GReader *r, const GFluorParam *table, const char *keys, void *params, GReradiation *mat,
                          GError *err)
 {
     const char *key;
     int rc;
     while ((rc = greader_param(r, &key, err)) > 0) {
-        const FluorParam *p = table;
+        const GFluorParam *p = table;
         while (p->key && strcmp(key, p->key) != 0)
             p++;
         if (strcmp(key, "matrix") == 0)
@@ -102,7 +102,7 @@ int fluor_read_params(GReader *r, const FluorParam *table, const char *keys, voi
 }
 
 /* The end of a parse: frees the matrix and hands over the material when rc is G_OK. */
-int fluor_finish(int rc, GReradiation *mat, GMaterial *m, void **object)
+int gfluor_finish(int rc, GReradiation *mat, GMaterial *m, void **object)
 {
     gfluor_matrix_free(mat);
     if (rc == G_OK)
