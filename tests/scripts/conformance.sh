@@ -2,8 +2,11 @@
 # conformance.sh BUILD - the conformance checks over every registered type, taken from the registry's own lists
 # (gcolor list, gmat types): a new built-in is checked the moment it is registered.
 #   - gcolor check over every colour model;
-#   - gmat check over every material, node and generator type, in the bispectral model (where every built-in
-#     is defined physically: a fluorescent matrix stays a matrix). The instance checked is a default one
+#   - gmat check over every material, node and generator type, in every registered colour model. The one known
+#     violation is listed in KNOWN below with its reason and must still fail (so the list cannot go stale): a
+#     fluorescent material folded into a model without re-radiation matrices reflects more than 1 per sample
+#     under white light (blue light re-radiated as red), an open defect of the "every scene in every model"
+#     work. The instance checked is a default one
 #     (`material m TYPE`, no parameters) when the type can be made so, else the first named entry of that type
 #     in examples/materials/*.mat or examples/textures/*.txt; a generator drives an interpolate node between two
 #     lamberts. A type with neither FAILS, asking for an example;
@@ -37,6 +40,16 @@ $(cat "$TMP/log")"
 done < "$TMP/models"
 
 # ---- materials, nodes, generators ----
+# KNOWN: "TYPE MODEL PROPERTY" for each violation known and tracked; a line must keep failing exactly so.
+KNOWN="fluorescent-phong rgb albedo
+fluorescent-phong spectrum9 albedo
+fluorescent-phong spectrum albedo
+fluorescent-varnish rgb albedo
+fluorescent-varnish spectrum9 albedo
+fluorescent-varnish spectrum albedo"
+known_failure() { # TYPE MODEL: the known failing property, or nothing
+    echo "$KNOWN" | awk -v t="$1" -v m="$2" '$1 == t && $2 == m { print $3; exit }'
+}
 # The named entries of the example files, listed once: "FILE KIND NAME TYPE" per line.
 for f in "$SRC"/examples/materials/*.mat "$SRC"/examples/textures/*.txt; do
     "$GMAT" list "$f" 2> /dev/null | awk -v f="$f" '$2 != "(anonymous)" && NF >= 3 { print f, $1, $2, $3 }'
@@ -86,10 +99,25 @@ while read -r kind type; do
             name=$ename
         fi
     fi
-    if ! "$GMAT" check "$file" "$name" --colormodel bispectral > "$TMP/log" 2>&1; then
-        fail "$kind $type ($how):
+    for model in $(cat "$TMP/models"); do
+        "$GMAT" check "$file" "$name" --colormodel "$model" > "$TMP/log" 2>&1
+        st=$?
+        known=$(known_failure "$type" "$model")
+        if [ -n "$known" ]; then
+            # a known violation must still be exactly that one, else the list is stale
+            if [ $st -eq 0 ]; then
+                fail "$kind $type in $model passes now: remove it from KNOWN ($known)"
+            elif ! grep -q "^$known .*FAIL" "$TMP/log" || [ "$(grep -Ec 'worst .* FAIL( |$)' "$TMP/log")" -ne 1 ]; then
+                fail "$kind $type in $model ($how) fails otherwise than the known '$known':
 $(cat "$TMP/log")"
-    fi
+            else
+                echo "known: $kind $type in $model fails '$known' (listed in KNOWN)"
+            fi
+        elif [ $st -ne 0 ]; then
+            fail "$kind $type in $model ($how):
+$(cat "$TMP/log")"
+        fi
+    done
 done < "$TMP/types"
 
 # ---- modules that break a property on purpose must be reported, naming it ----

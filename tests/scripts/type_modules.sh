@@ -1,15 +1,15 @@
 #!/bin/sh
-# Every file of textures/ that holds type records (GENERIC_TYPE) becomes a run-time module by one added line:
-# each is copied alone into a scratch directory, given `GENERIC_MODULE(&gtype_ID, ...);` naming its records,
-# and compiled as a .so against the public headers only (as `make install` installs them, BUILD/plugins/include)
-# with -fvisibility=hidden. Each module must link with no symbol left over but the library's and libc/libm's,
-# and load into a program whose registry holds every built-in except the module's own types: the module's
-# vtables are registered (not the built-in ones) and the type's example file examples/textures/NAME.txt reads.
-# The README's node and generator examples get the same treatment, with the file that follows each.
+# Every file of colormodels/, materials/ and textures/ is one type that becomes a run-time module by one added
+# line: each is copied alone into a scratch directory, compiled as it is against the public headers only (as
+# `make install` installs them, BUILD/plugins/include), then given `GENERIC_MODULE(&gtype_ID, ...);` naming its
+# records and compiled as a .so with -fvisibility=hidden. Each module must link with no symbol left over but
+# the library's and libc/libm's, and load into a program whose registry holds every built-in except the
+# module's own types: the module's vtables are registered (not the built-in ones) and a file using the type
+# reads (examples/textures/NAME.txt, examples/materials/NAME.mat, else a one-line default instance).
 set -eu
 BUILD=${1:-build}
 inc="$BUILD/plugins/include"
-[ -f "$inc/generic/node_kit.h" ] || { echo "texture_modules.sh: $inc is not made (run make all first)" >&2; exit 1; }
+[ -f "$inc/generic/node_kit.h" ] || { echo "type_modules.sh: $inc is not made (run make all first)" >&2; exit 1; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 san=""
@@ -66,8 +66,8 @@ int main(int argc, char **argv)
             kind++;
         const GTypeInfo *t = kind < GKIND_COUNT ? gregistry_find((GKind)kind, colon + 1) : NULL;
         for (int j = 0; t && b[j]; j++)
-            if (b[j]->vtable == t->vtable)
-                t = NULL;
+            if (b[j]->kind == t->kind && (t->vtable ? b[j]->vtable == t->vtable : b[j]->parse == t->parse))
+                t = NULL; /* the built-in's record, not the module's */
         if (!t) {
             fprintf(stderr, "%s: %s is not registered from the module\n", argv[1], argv[i]);
             return 1;
@@ -79,15 +79,15 @@ C
 cc $san -std=c11 -D_GNU_SOURCE -I"$inc" -rdynamic -o "$work/loader" "$work/loader.c" -Wl,--whole-archive \
     "$BUILD/lib/libgeneric.a" -Wl,--no-whole-archive $(pkg-config --libs OpenImageIO 2>/dev/null) -lstdc++ -fopenmp \
     -ldl -lpthread -lm
-# module DIR SRC EXAMPLE|-: builds SRC (copied into DIR) as a module and loads it; EXAMPLE - : DIR/use.txt, whose
-# plugin statement loads it.
+# module DIR SRC: builds SRC (copied into DIR) as a built-in object and as a module, and loads the module.
 n=0
 module() {
-    dir=$1 src=$2 example=$3
-    ids=$(sed -n 's/^GENERIC_TYPE(\([A-Za-z_][A-Za-z0-9_]*\),.*/\1/p' "$src")
+    dir=$1 src=$2
+    ids=$(sed -n 's/^GENERIC_TYPE\(_NAMED\)\{0,1\}(\([A-Za-z_][A-Za-z0-9_]*\),.*/\2/p' "$src")
+    [ -n "$ids" ] || { echo "type_modules.sh: $src has no GENERIC_TYPE record: every file here must be a type" >&2; exit 1; }
     base=$(basename "$src" .c)
     mkdir -p "$dir"
-    [ "$src" -ef "$dir/$base.c" ] || cp "$src" "$dir/"
+    cp "$src" "$dir/"
     # as a built-in: compiles against the public headers alone
     cc -std=c11 -D_GNU_SOURCE -fPIC -Wall -Wextra -Werror -I"$inc" -c -o "$dir/$base.o" "$dir/$base.c"
     echo "GENERIC_MODULE($(printf '&gtype_%s, ' $ids | sed 's/, $//'));" >> "$dir/$base.c"
@@ -96,36 +96,40 @@ module() {
         -o "$so" "$dir/$base.c" -lm
     # what it leaves unresolved must be the library's: the same link against libgeneric.so with --no-undefined
     cc -shared -o "$so.check" "$so" -Wl,--no-undefined -L"$BUILD/lib" -lgeneric -lm
-    # the kinds and keywords of the file's classes, for the loader
-    kind=generator
-    grep -q 'GKIND_NODE' "$src" && kind=node
-    names=$(sed -n 's/^ *\.name = "\([^"]*\)",$/\1/p' "$src")
+    # KIND:NAME of each record, and a file that uses the first
     args=""
-    for nm in $names; do args="$args $kind:$nm"; done
-    if [ "$example" = - ]; then
-        "$work/loader" - "$dir/use.txt" $args
-    else
-        for nm in $names; do "$work/loader" "$so" "$example/$nm.txt" $args; done
-    fi
-    echo "module $base.so: $(echo $names | tr ' ' ',') built as a built-in and as a module, loaded, example read"
+    example=""
+    for id in $ids; do
+        line=$(grep -E "^GENERIC_TYPE(_NAMED)?\($id," "$src")
+        kind=$(echo "$line" | sed 's/.*GKIND_\([A-Z]*\).*/\1/' | tr 'A-Z' 'a-z')
+        case "$line" in
+        GENERIC_TYPE_NAMED*) name=$(echo "$line" | sed 's/^[^"]*"\([^"]*\)".*/\1/') ;;
+        *) # the keyword of the class named in the record
+            cls=$(echo "$line" | sed 's/^[^,]*,[^,]*, *&\([A-Za-z_0-9]*\).*/\1/')
+            name=$(awk -v c="$cls" '$0 ~ "GMaterialClass " c " =|GGeneratorClass " c " =|GColorModelClass " c " =|GTexBlendClass " c " =" { on = 1 }
+                on && /\.name = "/ { sub(/.*\.name = "/, ""); sub(/".*/, ""); print; exit }' "$src") ;;
+        esac
+        [ -n "$name" ] || { echo "type_modules.sh: cannot find the keyword of record $id in $src" >&2; exit 1; }
+        args="$args $kind:$name"
+        [ -n "$example" ] && continue
+        case $kind in
+        node | generator) [ -f "examples/textures/$name.txt" ] && example="examples/textures/$name.txt" ;;
+        material) [ -f "examples/materials/$name.mat" ] && example="examples/materials/$name.mat" ;;
+        esac
+        if [ -z "$example" ]; then
+            example="$dir/use.txt"
+            case $kind in
+            colormodel) printf 'colormodel %s\nmaterial m lambert { reflectance rgb 0.5 0.4 0.3 }\n' "$name" > "$example" ;;
+            *) printf '%s m %s\n' "$kind" "$name" > "$example" ;;
+            esac
+        fi
+    done
+    "$work/loader" "$so" "$example" $args
+    echo "module $base.so:$args built as a built-in and as a module, loaded, $example read"
     n=$((n + 1))
 }
-for src in textures/*.c; do
-    grep -q '^GENERIC_TYPE(' "$src" || continue
-    module "$work/$(basename "$src" .c)" "$src" examples/textures
+for src in colormodels/*.c materials/*.c materials/*/*.c textures/*.c; do
+    [ -f "$src" ] || continue
+    module "$work/$(basename "$src" .c)" "$src"
 done
-# The README's examples (<!-- readme-example: textures/NAME.c --> before the source, readme-example-use before a
-# text file that uses it), verbatim.
-for ex in $(sed -n 's/^<!-- readme-example: textures\/\([A-Za-z0-9_]*\)\.c -->$/\1/p' README.md); do
-    mkdir -p "$work/readme/$ex"
-    awk -v m="<!-- readme-example: textures/$ex.c -->" '$0 == m { on = 1; next } on == 1 && /^```/ { on = 2; next }
-        on == 2 && /^```$/ { exit } on == 2 { print }' README.md > "$work/readme/$ex/$ex.c"
-    awk -v m="<!-- readme-example-use: textures/$ex.c -->" '$0 == m { on = 1; next } on == 1 && /^```/ { on = 2; next }
-        on == 2 && /^```$/ { exit } on == 2 { print }' README.md > "$work/readme/$ex/use.txt"
-    [ -s "$work/readme/$ex/$ex.c" ] && [ -s "$work/readme/$ex/use.txt" ] || {
-        echo "README example textures/$ex.c: source or use block missing" >&2
-        exit 1
-    }
-    module "$work/readme/$ex" "$work/readme/$ex/$ex.c" -
-done
-echo "$n texture files built and loaded as modules"
+echo "$n type files built and loaded as modules"
