@@ -118,9 +118,9 @@ int gphong_create(const GColorModel *model, const GPhongParams *params, GMateria
     if (rc != G_OK)
         return rc;
     Phong *p = (Phong *)m;
-    rc = param_or_black(model, params->kd, "kd", &p->kd, err);
+    rc = param_or_black(model, params->kd, "diffuse", &p->kd, err); /* the text format's names */
     if (rc == G_OK)
-        rc = param_or_black(model, params->ks, "ks", &p->ks, err);
+        rc = param_or_black(model, params->ks, "specular", &p->ks, err);
     if (rc == G_OK)
         rc = param_or_black(model, params->mirror, "mirror", &p->mirror, err);
     if (rc == G_OK && gcolor_alloc(&p->albedo, model) != G_OK)
