@@ -4,7 +4,6 @@
 #include "generic/plugin.h"
 
 #include <math.h>
-#include <string.h>
 
 /* The state is a GMatOneColor: c is rho. */
 
@@ -54,24 +53,7 @@ int glambert_create(const GColorModel *model, const GColor *reflectance, GMateri
 static int parse_lambert(GReader *r, const void *vtable, void **object, GError *err)
 {
     (void)vtable;
-    GColor rho = {0};
-    const char *key;
-    int rc;
-    while ((rc = greader_param(r, &key, err)) > 0) {
-        if (strcmp(key, "reflectance") == 0)
-            rc = greader_color(r, GCOLOR_REFLECTANCE, &rho, err);
-        else
-            rc = greader_unknown_param(r, "reflectance", err);
-        if (rc < 0)
-            break;
-    }
-    if (rc == G_OK)
-        rc = gmatparam_default(r, 0.8, GCOLOR_REFLECTANCE, &rho, err);
-    GMaterial *m = NULL;
-    if (rc == G_OK && (rc = glambert_create(greader_colormodel(r), &rho, &m, err)) == G_OK)
-        *object = m;
-    gcolor_free(&rho);
-    return rc;
+    return gmatparam_parse_one_color(r, "reflectance", 0.8, GCOLOR_REFLECTANCE, glambert_create, object, err);
 }
 
 GENERIC_TYPE(lambert, GKIND_MATERIAL, &lambert_class, parse_lambert, NULL);

@@ -3,7 +3,6 @@
 #include "generic/materials.h"
 #include "generic/plugin.h"
 
-#include <string.h>
 
 /* The state is a GMatOneColor: c is the reflectance. */
 
@@ -51,24 +50,7 @@ int gmirror_create(const GColorModel *model, const GColor *reflectance, GMateria
 static int parse_mirror(GReader *r, const void *vtable, void **object, GError *err)
 {
     (void)vtable;
-    GColor rho = {0};
-    const char *key;
-    int rc;
-    while ((rc = greader_param(r, &key, err)) > 0) {
-        if (strcmp(key, "reflectance") == 0)
-            rc = greader_color(r, GCOLOR_REFLECTANCE, &rho, err);
-        else
-            rc = greader_unknown_param(r, "reflectance", err);
-        if (rc < 0)
-            break;
-    }
-    if (rc == G_OK)
-        rc = gmatparam_default(r, 1.0, GCOLOR_REFLECTANCE, &rho, err);
-    GMaterial *m = NULL;
-    if (rc == G_OK && (rc = gmirror_create(greader_colormodel(r), &rho, &m, err)) == G_OK)
-        *object = m;
-    gcolor_free(&rho);
-    return rc;
+    return gmatparam_parse_one_color(r, "reflectance", 1.0, GCOLOR_REFLECTANCE, gmirror_create, object, err);
 }
 
 GENERIC_TYPE(mirror, GKIND_MATERIAL, &mirror_class, parse_mirror, NULL);

@@ -29,6 +29,14 @@ GENERIC_API double gmatparam_max(const GColor *c, int *at);
  * triple of that value, read in role) in the file's colour model, in new storage (free with gcolor_free). */
 GENERIC_API int gmatparam_default(GReader *r, double grey, GColorRole role, GColor *c, GError *err);
 
+/** A constructor of a material whose one parameter is a colour (e.g. glambert_create, gmirror_create). */
+typedef int (*GMatOneColorCreate)(const GColorModel *model, const GColor *color, GMaterial **out, GError *err);
+/** The whole parse routine of a material written `NAME { KEY COLOR }`: reads the optional block (KEY is its only
+ * parameter), gives the colour the grey `grey` in role when the file leaves it out (gmatparam_default), and
+ * makes the material with create in the file's model into *object. */
+GENERIC_API int gmatparam_parse_one_color(GReader *r, const char *key, double grey, GColorRole role,
+                                          GMatOneColorCreate create, void **object, GError *err);
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,8 +1,9 @@
-/* params.c - material parameters (generic/material_params.h): checking and converting parameter colours,
+/* material_params.c - material parameters (generic/material_params.h): checking and converting parameter colours,
  * defaults for parameters a file leaves out. */
 #include "generic/material_params.h"
 
 #include <math.h>
+#include <string.h>
 
 static int value_count(const GColor *c)
 {
@@ -66,7 +67,6 @@ int gmatparam_color(const GColorModel *m, const GColor *src, GColorRole role, do
     return G_OK;
 }
 
-
 int gmatparam_default(GReader *r, double grey, GColorRole role, GColor *c, GError *err)
 {
     if (c->v)
@@ -76,4 +76,27 @@ int gmatparam_default(GReader *r, double grey, GColorRole role, GColor *c, GErro
     if (!m || gcolor_alloc(c, m) != G_OK)
         return greader_error(r, err, "out of memory");
     return gcolor_from_rgb(c, rgb, role) == G_OK ? G_OK : greader_error(r, err, "invalid default colour");
+}
+
+int gmatparam_parse_one_color(GReader *r, const char *key, double grey, GColorRole role, GMatOneColorCreate create,
+                              void **object, GError *err)
+{
+    GColor c = {0};
+    const char *k;
+    int rc;
+    while ((rc = greader_param(r, &k, err)) > 0) {
+        if (strcmp(k, key) == 0)
+            rc = greader_color(r, role, &c, err);
+        else
+            rc = greader_unknown_param(r, key, err);
+        if (rc < 0)
+            break;
+    }
+    if (rc == G_OK)
+        rc = gmatparam_default(r, grey, role, &c, err);
+    GMaterial *m = NULL;
+    if (rc == G_OK && (rc = create(greader_colormodel(r), &c, &m, err)) == G_OK)
+        *object = m;
+    gcolor_free(&c);
+    return rc;
 }
