@@ -7,7 +7,6 @@
 #include <generic/plugin.h>
 #include <generic/texture_parse.h>
 
-#include <string.h>
 
 typedef struct Perlin {
     GGenerator base;
@@ -58,27 +57,11 @@ int ggen_perlin_create(const GNoiseParams *p, GGenerator **out, GError *err)
     return G_OK;
 }
 
-/* The noise parameters and nothing else. */
-static int parse_noise(GReader *r, GNoiseParams *p, GError *err)
-{
-    memset(p, 0, sizeof *p);
-    const char *key;
-    int rc;
-    while ((rc = greader_param(r, &key, err)) > 0) {
-        rc = gtexparse_noise_param(r, key, p, err);
-        if (rc == 0)
-            rc = greader_unknown_param(r, GTEXPARSE_NOISE_KEYS, err);
-        if (rc < 0)
-            return rc;
-    }
-    return rc;
-}
-
 static int parse_perlin(GReader *r, const void *vtable, void **object, GError *err)
 {
     (void)vtable;
     GNoiseParams p;
-    int rc = parse_noise(r, &p, err);
+    int rc = gtexparse_noise(r, &p, err);
     if (rc < 0)
         return rc;
     GGenerator *g = NULL;

@@ -8,7 +8,6 @@
 #include <generic/plugin.h>
 #include <generic/texture_parse.h>
 
-#include <string.h>
 
 typedef struct Fractal {
     GGenerator base;
@@ -87,27 +86,11 @@ int ggen_turbulence_create(const GNoiseParams *p, GGenerator **out, GError *err)
     return make(&turbulence_class, p, out, err);
 }
 
-/* The noise parameters and nothing else. */
-static int parse_noise(GReader *r, GNoiseParams *p, GError *err)
-{
-    memset(p, 0, sizeof *p);
-    const char *key;
-    int rc;
-    while ((rc = greader_param(r, &key, err)) > 0) {
-        rc = gtexparse_noise_param(r, key, p, err);
-        if (rc == 0)
-            rc = greader_unknown_param(r, GTEXPARSE_NOISE_KEYS, err);
-        if (rc < 0)
-            return rc;
-    }
-    return rc;
-}
-
 /* Both take the noise parameters only; the vtable says which is made. */
 static int parse_fractal(GReader *r, const void *vtable, void **object, GError *err)
 {
     GNoiseParams p;
-    int rc = parse_noise(r, &p, err);
+    int rc = gtexparse_noise(r, &p, err);
     if (rc < 0)
         return rc;
     GGenerator *g = NULL;

@@ -44,6 +44,8 @@ GENERIC_API int gtexparse_space(GReader *r, GGeneratorSpace *space, GError *err)
  * in [1e-9, 1e9], seed, octaves in 1..16, lacunarity, gain) into p: 1 when read, 0 when key is none of them
  * (nothing read), a negative status on an error. */
 GENERIC_API int gtexparse_noise_param(GReader *r, const char *key, GNoiseParams *p, GError *err);
+/** Reads a parameter block of noise parameters and nothing else into *p (zeroed first: the defaults). */
+GENERIC_API int gtexparse_noise(GReader *r, GNoiseParams *p, GError *err);
 
 /** The end of a parse routine that called a constructor: on success stores obj in *object and returns G_OK;
  * on failure (rc < 0) places the constructor's message in err at the last token read and returns rc. */

@@ -167,3 +167,17 @@ int gtexparse_xyz_steps(GReader *r, GAffine3 *out, GError *err)
     return rc < 0 ? rc : G_OK;
 }
 
+int gtexparse_noise(GReader *r, GNoiseParams *p, GError *err)
+{
+    memset(p, 0, sizeof *p);
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        rc = gtexparse_noise_param(r, key, p, err);
+        if (rc == 0)
+            rc = greader_unknown_param(r, GTEXPARSE_NOISE_KEYS, err);
+        if (rc < 0)
+            return rc;
+    }
+    return rc;
+}
