@@ -175,34 +175,6 @@ int gcolor_pow(GColor *out, const GColor *a, double e)
 
 double gcolor_brightness(const GColor *c) { return c->model->cls->brightness(c->model, c); }
 
-/* A per-thread arena for the temporaries of the defaults below (matrices of a plug-in model that has no slot
- * of its own). Created on a thread's first use and grown to the largest temporary asked for, so later calls do
- * not allocate; the key's destructor frees it when the thread ends (the thread-local pointer keeps it
- * reachable until then). */
-static pthread_key_t temp_key;
-static int temp_key_ok;
-static pthread_once_t temp_once = PTHREAD_ONCE_INIT;
-static _Thread_local GScratch *temp_arena_of_thread;
-
-static void temp_arena_destroy(void *arena) { gscratch_destroy(arena); }
-
-static void temp_key_create(void) { temp_key_ok = pthread_key_create(&temp_key, temp_arena_destroy) == 0; }
-
-static GScratch *temp_arena(void)
-{
-    if (temp_arena_of_thread)
-        return temp_arena_of_thread;
-    pthread_once(&temp_once, temp_key_create);
-    if (!temp_key_ok)
-        return NULL;
-    GScratch *s = gscratch_create(0);
-    if (s && pthread_setspecific(temp_key, s) != 0) {
-        gscratch_destroy(s);
-        s = NULL;
-    }
-    return temp_arena_of_thread = s;
-}
-
 /* out = s * a + b through the class's scale and add; a temporary holds s * a because out may alias b. */
 static int axpy_composed(const GColorModel *m, GColor *out, double s, const GColor *a, const GColor *b)
 {
@@ -210,7 +182,7 @@ static int axpy_composed(const GColorModel *m, GColor *out, double s, const GCol
         int rc = m->cls->scale(m, out, a, s);
         return rc ? rc : m->cls->add(m, out, out, b);
     }
-    GScratch *arena = temp_arena();
+    GScratch *arena = gscratch_thread();
     if (!arena)
         return G_ERR_NOMEM;
     GScratchMark mark = gscratch_mark(arena);

@@ -1,6 +1,8 @@
 /* memory.c - allocator hook and the scratch arena. */
 #include "generic/memory.h"
 
+#include <pthread.h>
+
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -144,4 +146,31 @@ void gscratch_reset(GScratch *s)
 {
     s->cur = s->first;
     s->cur->used = 0;
+}
+
+/* The per-thread arena of gscratch_thread: created on a thread's first use and grown to the largest temporary
+ * asked for, so later calls do not allocate; the key's destructor frees it when the thread ends (the
+ * thread-local pointer keeps it reachable until then). */
+static pthread_key_t thread_key;
+static int thread_key_ok;
+static pthread_once_t thread_once = PTHREAD_ONCE_INIT;
+static _Thread_local GScratch *arena_of_thread;
+
+static void thread_arena_destroy(void *arena) { gscratch_destroy(arena); }
+
+static void thread_key_create(void) { thread_key_ok = pthread_key_create(&thread_key, thread_arena_destroy) == 0; }
+
+GScratch *gscratch_thread(void)
+{
+    if (arena_of_thread)
+        return arena_of_thread;
+    pthread_once(&thread_once, thread_key_create);
+    if (!thread_key_ok)
+        return NULL;
+    GScratch *s = gscratch_create(0);
+    if (s && pthread_setspecific(thread_key, s) != 0) {
+        gscratch_destroy(s);
+        s = NULL;
+    }
+    return arena_of_thread = s;
 }

@@ -8,11 +8,13 @@
 #include <cmocka.h>
 
 #include <generic/materials.h>
+#include <generic/reader.h>
 
 #include "generic/builtins.h"
 #include "texture_fixtures.h"
 #include "test_util.h"
 
+#include <math.h>
 #include <stdio.h>
 
 #include "node_fixture.h"
@@ -474,6 +476,48 @@ static int build_tree(const GColorModel *m, GError *err)
     return rc;
 }
 
+/* Nodes need no arena from the caller, whatever the model's size: without sp->scratch their temporaries come
+ * from the thread's own arena (gscratch_thread). A 1 nm spectrum has 401 samples, more than any stack buffer. */
+static void test_blend_without_arena(void **state)
+{
+    (void)state;
+    GColorModelOptions o = {.step_nm = 1};
+    GColorModel *m;
+    GError err;
+    assert_int_equal(gcolormodel_create("spectrum", &o, &m, &err), G_OK);
+    assert_true(m->capacity > 64);
+    GReaderOptions ro = {.model = m};
+    GLibrary *lib;
+    assert_int_equal(greader_load_string("node n interpolate { a lambert { reflectance rgb 0.2 0.2 0.2 }\n"
+                                         "    b lambert { reflectance rgb 0.6 0.6 0.6 }  t constant { value 0.25 } }\n",
+                                         "n.txt", &ro, &lib, &err),
+                     G_OK);
+    GMaterial *n = glibrary_material(lib, "n");
+    assert_non_null(n);
+    GSurfPoint sp;
+    gsurfpoint_init(&sp, m, NULL);
+    sp.geometric_normal = gvec3(0, 0, 1);
+    sp.material = n;
+    GColor c, illum;
+    assert_int_equal(gcolor_alloc(&c, m), G_OK);
+    assert_int_equal(gcolor_alloc(&illum, m), G_OK);
+    assert_int_equal(gmaterial_diffuse(n, &sp, &c), G_OK);
+    double rgb[3];
+    assert_int_equal(gcolor_to_rgb(&c, GCOLOR_REFLECTANCE, rgb), G_OK);
+    for (int k = 0; k < 3; k++)
+        assert_float_equal(rgb[k], 0.75 * 0.2 + 0.25 * 0.6, 1e-4);
+    /* reflection of white light at normal incidence: rho / pi */
+    assert_int_equal(gcolor_from_rgb(&illum, (double[3]){1, 1, 1}, GCOLOR_LIGHT), G_OK);
+    assert_int_equal(gmaterial_reflection(n, &sp, gvec3(0, 0, 1), &illum, gvec3(0, 0, 1), &c), G_OK);
+    assert_int_equal(gcolor_to_rgb(&c, GCOLOR_LIGHT, rgb), G_OK);
+    for (int k = 0; k < 3; k++)
+        assert_float_equal(rgb[k], 0.3 / M_PI, 1e-4);
+    gcolor_free(&c);
+    gcolor_free(&illum);
+    glibrary_destroy(lib);
+    gcolormodel_destroy(m);
+}
+
 static void test_out_of_memory(void **state)
 {
     Fix *f = *state;
@@ -508,6 +552,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_scale, setup, teardown),
         cmocka_unit_test_setup_teardown(test_bad_input, setup, teardown),
         cmocka_unit_test_setup_teardown(test_out_of_memory, setup, teardown),
+        cmocka_unit_test(test_blend_without_arena),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -57,6 +57,10 @@ typedef struct GScratchMark {
 GENERIC_API GScratchMark gscratch_mark(const GScratch *s);
 /** Returns to a position from gscratch_mark; everything allocated after it is released. */
 GENERIC_API void gscratch_release(GScratch *s, GScratchMark mark);
+/** The calling thread's own arena, for library code that needs temporaries when its caller gave no arena (the
+ * defaults of optional colour operations, texture nodes called without sp->scratch): created on first use,
+ * freed when the thread ends; NULL when out of memory. Users take a mark and release it, like any arena. */
+GENERIC_API GScratch *gscratch_thread(void);
 /** Releases everything (keeps the blocks for reuse). */
 GENERIC_API void gscratch_reset(GScratch *s);
 

@@ -127,21 +127,17 @@ GENERIC_API int gtexblendnode_opaque(const GMaterial *self, GSurfPoint *sp);
 
 /* ---- temporaries ---- */
 
-/** Floats of each stack buffer of a GTexTemps: models up to this size need no arena. */
-#define GTEX_STACK_FLOATS 64
-
-/** Storage for up to two temporary colours: on sp->scratch when there is one, else in a small buffer
- * on the caller's stack (enough for models of up to GTEX_STACK_FLOATS floats). */
+/** Storage for temporary colours of a node method: on sp->scratch when there is one, else on the thread's own
+ * arena (gscratch_thread), so a model of any size works without an arena from the caller. */
 typedef struct GTexTemps {
     GScratch *scratch; /**< the arena a mark was taken on (NULL before the first colour) */
     GScratchMark mark;
-    float stack[2][GTEX_STACK_FLOATS];
 } GTexTemps;
 
-/** Starts an empty set of temporaries (the stack buffers are left uninitialised). */
+/** Starts an empty set of temporaries. */
 static inline void gtextemps_init(GTexTemps *t) { t->scratch = NULL; }
-/** Gives c temporary storage of model m (index 0 or 1 selects the stack buffer); G_ERR_NOMEM when the
- * arena cannot grow or there is no arena and the model is too big for the stack buffer. */
+/** Gives c temporary storage of model m (index: which of the method's temporaries, 0 or 1; kept for source
+ * compatibility); G_ERR_NOMEM when the arena cannot grow. */
 GENERIC_API int gtextemps_color(GTexTemps *t, GSurfPoint *sp, const GColorModel *m, int index, GColor *c);
 /** Returns the arena to where it was before the first gtextemps_color. */
 GENERIC_API void gtextemps_release(GTexTemps *t);

@@ -27,24 +27,18 @@ int gnode_method_from_name(const char *name)
 
 int gtextemps_color(GTexTemps *t, GSurfPoint *sp, const GColorModel *m, int index, GColor *c)
 {
-    float *v;
-    int storage = GCOLOR_STORAGE_ARENA, capacity = m->capacity;
-    if (sp && sp->scratch) {
-        if (!t->scratch) {
-            t->scratch = sp->scratch;
-            t->mark = gscratch_mark(sp->scratch);
-        }
-        v = gscratch_alloc(sp->scratch, (size_t)m->capacity * sizeof(float));
-        if (!v)
-            return G_ERR_NOMEM;
-    } else {
-        if (m->capacity > GTEX_STACK_FLOATS || index < 0 || index > 1)
-            return G_ERR_NOMEM;
-        v = t->stack[index];
-        storage = GCOLOR_STORAGE_CALLER;
-        capacity = GTEX_STACK_FLOATS;
+    (void)index;
+    GScratch *arena = sp && sp->scratch ? sp->scratch : gscratch_thread();
+    if (!arena)
+        return G_ERR_NOMEM;
+    if (!t->scratch) {
+        t->scratch = arena;
+        t->mark = gscratch_mark(arena);
     }
-    *c = (GColor){.model = m, .v = v, .kind = GCOLOR_VECTOR, .storage = storage, .capacity = capacity};
+    float *v = gscratch_alloc(t->scratch, (size_t)m->capacity * sizeof(float));
+    if (!v)
+        return G_ERR_NOMEM;
+    *c = (GColor){.model = m, .v = v, .kind = GCOLOR_VECTOR, .storage = GCOLOR_STORAGE_ARENA, .capacity = m->capacity};
     return G_OK;
 }
 
