@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <vector>
 #include <strings.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -101,7 +102,7 @@ int check_claim(const char *path, const ImageSpec &spec, const char *format, lon
 {
     const long long w = spec.width, h = spec.height, nch = spec.nchannels;
     if (w <= 0 || h <= 0 || nch <= 0 || nch > 1024 || spec.depth > 1)
-        return gerror_set(err, G_ERR_IO, "%s: unsupported image size %lldx%lld with %lld channels", path, w, h, nch);
+        return gerror_set(err, G_ERR_IO, "%s: invalid image size %lldx%lld with %lld channels", path, w, h, nch);
     const double pixels = (double)w * (double)h;
     if (!strcmp(format, "pnm") && spec.format == TypeDesc::FLOAT) { // PFM: uncompressed floats after the header
         double need = pixels * (double)nch * 4.0;
@@ -246,8 +247,25 @@ public:
         m_pos = offset;
         return true;
     }
-    size_t read(void *, size_t) override { return 0; }
-    size_t pread(void *, size_t, int64_t) override { return 0; }
+    size_t read(void *buf, size_t size) override // libtiff reads back what it wrote
+    {
+        size_t n = pread(buf, size, m_pos);
+        m_pos += (int64_t)n;
+        return n;
+    }
+    size_t pread(void *buf, size_t size, int64_t offset) override
+    {
+        size_t done = 0;
+        while (done < size) {
+            ssize_t n = ::pread(fd_, (char *)buf + done, size - done, (off_t)(offset + (int64_t)done));
+            if (n < 0 && errno == EINTR)
+                continue;
+            if (n <= 0)
+                break;
+            done += (size_t)n;
+        }
+        return done;
+    }
     size_t write(const void *buf, size_t size) override
     {
         size_t n = pwrite(buf, size, m_pos);
@@ -329,6 +347,26 @@ int write_pixels(ImageOutput *out, const char *path, const char *tmp, const GIma
     return rc;
 }
 
+// Decodes a file written by name in full: a write error the writer missed shows as a short or broken file.
+int verify_written(const char *path, const char *tmp, const GImage *img, GError *err)
+{
+    auto in = ImageInput::open(tmp);
+    if (!in)
+        return gerror_set(err, G_ERR_IO, "%s: cannot write image: the written file does not read back: %s", path,
+                          first_line(OIIO::geterror()).c_str());
+    const ImageSpec &spec = in->spec();
+    std::vector<unsigned char> scratch;
+    bool ok = spec.width == img->width && spec.height == img->height;
+    if (ok) {
+        scratch.resize((size_t)spec.width * spec.height * spec.nchannels * spec.format.size());
+        ok = in->read_image(0, 0, 0, spec.nchannels, spec.format, scratch.data());
+    }
+    if (!ok)
+        return gerror_set(err, G_ERR_IO, "%s: cannot write image: the written file does not read back: %s", path,
+                          first_line(in->geterror()).c_str());
+    return G_OK;
+}
+
 int write_impl(const char *path, const GImage *img, const GImageWriteOptions *opt, GError *err)
 {
     double exposure = opt ? opt->exposure : 0.0;
@@ -344,13 +382,18 @@ int write_impl(const char *path, const GImage *img, const GImageWriteOptions *op
     if ((rc = gfile_output_begin(&file, path, err)) != G_OK)
         return rc;
     FdWriter proxy(file.temp, file.fd);
+    // OpenImageIO 2.4's TIFF writer links its EXIF directory wrongly through a proxy: it writes the
+    // temporary by name (libtiff checks its writes), and the result is decoded again before it is kept.
+    const bool by_name = !strcmp(out->format_name(), "tiff") || !out->supports("ioproxy");
     try {
-        if (!out->supports("ioproxy") || !out->set_ioproxy(&proxy))
+        if (!by_name && !out->set_ioproxy(&proxy))
             rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: the %s writer cannot write through a descriptor",
                             path, out->format_name());
         else
             rc = write_pixels(out.get(), path, file.temp, img, exp2(exposure), float_extension(path), err);
         out.reset(); // before the proxy goes
+        if (rc == G_OK && by_name)
+            rc = verify_written(path, file.temp, img, err);
     } catch (...) {
         gfile_output_abort(&file);
         throw;
@@ -358,7 +401,7 @@ int write_impl(const char *path, const GImage *img, const GImageWriteOptions *op
     if (rc == G_OK && proxy.error_number())
         rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, strerror(proxy.error_number()));
     if (rc == G_OK)
-        rc = gfile_output_commit(&file, (long long)proxy.end(), path, err);
+        rc = gfile_output_commit(&file, by_name ? -1 : (long long)proxy.end(), path, err);
     else
         gfile_output_abort(&file);
     return rc;
@@ -484,9 +527,6 @@ int gimage_check_output(const char *path, GError *err)
                                   "files (%s)", path, dot, why.c_str());
             return gerror_set(err, G_ERR_IO, "%s: cannot write image: no extension to choose the format by", path);
         }
-        if (!out->supports("ioproxy"))
-            return gerror_set(err, G_ERR_IO, "%s: cannot write image: the %s writer cannot write through a "
-                              "descriptor", path, out->format_name());
         return G_OK;
     } catch (...) {
         return gerror_set(err, G_ERR_IO, "%s: cannot write image: OpenImageIO failed", path);
