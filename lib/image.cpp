@@ -119,6 +119,16 @@ int check_claim(const char *path, const ImageSpec &spec, const char *format, lon
                               "%s: the header claims %lldx%lld pixels, more than a PNG file of %lld bytes can hold",
                               path, w, h, file_size);
     }
+    if (!strcmp(format, "hdr")) {
+        // OpenImageIO's Radiance reader knows flat rows (4 bytes a pixel; always for widths below 8 or above
+        // 32767) and run-length encoded ones (a 4-byte row header, then each of the 4 components in runs of
+        // at most 127 bytes, 2 bytes a run); not the old-style repeat runs, which it refuses.
+        double row = (w < 8 || w > 32767) ? 4.0 * (double)w : 4.0 + 8.0 * std::ceil((double)w / 127.0);
+        if ((double)h * row > (double)file_size)
+            return gerror_set(err, G_ERR_IO,
+                              "%s: the header claims %lldx%lld pixels, more than a Radiance HDR file of %lld bytes "
+                              "can hold", path, w, h, file_size);
+    }
     if (w * h > (1LL << 31) / 4)
         return gerror_set(err, G_ERR_IO, "%s: unsupported image size %lldx%lld (more than 2^29 pixels)", path, w, h);
     const double bytes = pixels * (double)(nch > 3 ? nch : 3) * sizeof(float);

@@ -26,7 +26,8 @@
  *
  * Untrusted files. Only regular files are read (a FIFO or a device is refused, generic/file.h). Before any
  * pixel memory is allocated, a header is refused when it claims more pixels than the file can hold (a PFM's
- * floats are uncompressed, a PNG's deflate stream expands at most 1032 times), or when the decoded image,
+ * floats are uncompressed, a PNG's deflate stream expands at most 1032 times, a Radiance HDR row takes at
+ * least 2 bytes for every 127 bytes of a component), or when the decoded image,
  * width x height x max(channels, 3) 32-bit floats, would exceed the image memory budget (reading takes about
  * twice that): GIMAGE_DEFAULT_BUDGET_MB MiB, or the environment's GENERIC_IMAGE_BUDGET_MB (a whole number of
  * MiB) when set, or what gimage_set_memory_budget sets. Light probes (generic/probe.h) count their tables
