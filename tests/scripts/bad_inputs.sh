@@ -191,7 +191,7 @@ fi
 # ---- files that are not regular files, as every kind of input: refused at once with the path and the kind ----
 mkfifo "$TMP/fifo" 2> /dev/null || fail "mkfifo failed"
 mkdir "$TMP/adir"
-printf 'camera pinhole { position <0,0,5> at <0,0,0> }\nmaterial g lambert { }\n' > "$TMP/cam.part"
+printf 'camera pinhole { from <0,0,5> at <0,0,0> }\nmaterial g lambert { }\n' > "$TMP/cam.part"
 for spec in "$TMP/fifo:a FIFO" "/dev/zero:a character device" "/dev/urandom:a character device" "$TMP/adir:a directory"; do
     p=${spec%%:*}
     kind=${spec#*:}
