@@ -77,7 +77,8 @@ static void chunk(FILE *f, const char *type, const unsigned char *data, uint32_t
 {
     put32(f, n);
     fwrite(type, 1, 4, f);
-    fwrite(data, 1, n, f);
+    if (n)
+        fwrite(data, 1, n, f);
     uint32_t c = crc32_of((const unsigned char *)type, 4, 0);
     put32(f, crc32_of(data, n, c));
 }
