@@ -1,8 +1,12 @@
 // image.cpp - the OpenImageIO shim: float images in and out (see include/generic/image.h).
 #include "generic/image.h"
+#include "generic/file.h"
 #include "generic/memory.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
+
+#include <atomic>
 
 #include <cerrno>
 #include <cmath>
@@ -10,6 +14,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <vector>
 #include <strings.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -74,37 +79,123 @@ bool float_extension(const char *path)
     return !strcasecmp(dot, ".exr") || !strcasecmp(dot, ".hdr") || !strcasecmp(dot, ".pfm");
 }
 
-mode_t process_umask()
+// ---- the memory budget and the header's claim ----
+
+std::atomic<size_t> budget_bytes{0}; // 0: not yet set
+
+size_t default_budget()
 {
-    mode_t mask = 022;
-    if (FILE *f = fopen("/proc/self/status", "r")) {
-        char line[256];
-        while (fgets(line, sizeof line, f))
-            if (!strncmp(line, "Umask:", 6)) {
-                mask = (mode_t)strtol(line + 6, nullptr, 8);
-                break;
-            }
-        fclose(f);
+    const char *env = getenv("GENERIC_IMAGE_BUDGET_MB");
+    if (env && *env) {
+        char *end;
+        errno = 0;
+        unsigned long long mb = strtoull(env, &end, 10);
+        if (!*end && errno == 0 && mb >= 1 && mb <= (1ULL << 40))
+            return (size_t)(mb << 20);
     }
-    return mask;
+    return (size_t)GIMAGE_DEFAULT_BUDGET_MB << 20;
+}
+
+// Refuses a header whose size is impossible, more than the file can hold, or more than the budget; before
+// anything the size decides is allocated.
+int check_claim(const char *path, const ImageSpec &spec, const char *format, long long file_size, GError *err)
+{
+    const long long w = spec.width, h = spec.height, nch = spec.nchannels;
+    if (w <= 0 || h <= 0 || nch <= 0 || nch > 1024 || spec.depth > 1)
+        return gerror_set(err, G_ERR_IO, "%s: invalid image size %lldx%lld with %lld channels", path, w, h, nch);
+    const double pixels = (double)w * (double)h;
+    if (!strcmp(format, "pnm") && spec.format == TypeDesc::FLOAT) { // PFM: uncompressed floats after the header
+        double need = pixels * (double)nch * 4.0;
+        if (need > (double)file_size)
+            return gerror_set(err, G_ERR_IO,
+                              "%s: the header claims %lldx%lld pixels (%.0f bytes of data), more than the file of "
+                              "%lld bytes holds", path, w, h, need, file_size);
+    }
+    if (!strcmp(format, "png")) {
+        // At least one filter byte and one bit per pixel a row, and deflate compresses at most 1032:1.
+        double need = (double)h * (1.0 + std::ceil((double)w / 8.0));
+        if (need > 1032.0 * (double)file_size)
+            return gerror_set(err, G_ERR_IO,
+                              "%s: the header claims %lldx%lld pixels, more than a PNG file of %lld bytes can hold",
+                              path, w, h, file_size);
+    }
+    if (!strcmp(format, "hdr")) {
+        // OpenImageIO's Radiance reader knows flat rows (4 bytes a pixel; always for widths below 8 or above
+        // 32767) and run-length encoded ones (a 4-byte row header, then each of the 4 components in runs of
+        // at most 127 bytes, 2 bytes a run); not the old-style repeat runs, which it refuses.
+        double row = (w < 8 || w > 32767) ? 4.0 * (double)w : 4.0 + 8.0 * std::ceil((double)w / 127.0);
+        if ((double)h * row > (double)file_size)
+            return gerror_set(err, G_ERR_IO,
+                              "%s: the header claims %lldx%lld pixels, more than a Radiance HDR file of %lld bytes "
+                              "can hold", path, w, h, file_size);
+    }
+    if (w * h > (1LL << 31) / 4)
+        return gerror_set(err, G_ERR_IO, "%s: unsupported image size %lldx%lld (more than 2^29 pixels)", path, w, h);
+    const double bytes = pixels * (double)(nch > 3 ? nch : 3) * sizeof(float);
+    const size_t budget = gimage_memory_budget();
+    if (bytes > (double)budget)
+        return gerror_set(err, G_ERR_NOMEM,
+                          "%s: a %lldx%lld image with %lld channels needs %.0f MiB, more than the image memory budget "
+                          "of %zu MiB (GENERIC_IMAGE_BUDGET_MB)", path, w, h, nch, bytes / 1048576.0, budget >> 20);
+    return G_OK;
+}
+
+// The file must be a regular file (never a FIFO or a device); its size bounds what its header may claim.
+int open_checked(const char *path, ImageSpec *config, std::unique_ptr<ImageInput> *in, GError *err)
+{
+    int fd = gfile_open_input(path, err);
+    if (fd < 0)
+        return fd;
+    struct stat st;
+    long long size = fstat(fd, &st) == 0 ? (long long)st.st_size : 0;
+    close(fd);
+    *in = ImageInput::open(path, config);
+    if (!*in)
+        return gerror_set(err, G_ERR_IO, "%s: cannot read image: %s", path, first_line(OIIO::geterror()).c_str());
+    return check_claim(path, (*in)->spec(), (*in)->format_name(), size, err);
+}
+
+// Decodes the pixels as floats. Scanline files are read a band of rows at a time, so that OpenImageIO holds
+// no second copy of the whole image and a file that ends early fails at its first missing row, before the
+// memory for the rows it does not have is touched.
+bool decode(ImageInput *in, const ImageSpec &spec, float *raw)
+{
+    const int nch = spec.nchannels;
+    if (spec.tile_width > 0)
+        return in->read_image(0, 0, 0, nch, TypeDesc::FLOAT, raw);
+    const size_t row = (size_t)spec.width * nch;
+    const int band = 64;
+    for (int y = 0; y < spec.height; y += band) {
+        int y1 = y + band < spec.height ? y + band : spec.height;
+        if (!in->read_scanlines(0, 0, spec.y + y, spec.y + y1, 0, 0, nch, TypeDesc::FLOAT, raw + (size_t)y * row))
+            return false;
+    }
+    return true;
 }
 
 int read_impl(const char *path, unsigned flags, GImage *img, GError *err)
 {
     ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1); // keep straight alpha as the file stores it
-    auto in = ImageInput::open(path, &config);
-    if (!in)
-        return gerror_set(err, G_ERR_IO, "%s: cannot read image: %s", path, first_line(OIIO::geterror()).c_str());
+    std::unique_ptr<ImageInput> in;
+    int rc = open_checked(path, &config, &in, err);
+    if (rc != G_OK)
+        return rc;
     const ImageSpec spec = in->spec();
     const int w = spec.width, h = spec.height, nch = spec.nchannels;
-    if (w <= 0 || h <= 0 || nch <= 0 || (long long)w * h > (1LL << 31) / 4)
-        return gerror_set(err, G_ERR_IO, "%s: unsupported image size %dx%d with %d channels", path, w, h, nch);
     const size_t npix = (size_t)w * h;
-    float *raw = (float *)gmem_calloc(npix * nch, sizeof(float));
+    float *raw = (float *)gmem_alloc(npix * nch * sizeof(float)); // not zeroed: decode() writes every value, and
+                                                                  // a failure leaves the untouched pages unused
     if (!raw)
         return gerror_set(err, G_ERR_NOMEM, "%s: out of memory for a %dx%d image", path, w, h);
-    if (!in->read_image(0, 0, 0, nch, TypeDesc::FLOAT, raw)) {
+    bool decoded;
+    try {
+        decoded = decode(in.get(), spec, raw);
+    } catch (...) {
+        gmem_free(raw);
+        throw;
+    }
+    if (!decoded) {
         std::string msg = first_line(in->geterror());
         gmem_free(raw);
         return gerror_set(err, G_ERR_IO, "%s: cannot decode image: %s", path, msg.c_str());
@@ -151,7 +242,73 @@ int read_impl(const char *path, unsigned flags, GImage *img, GError *err)
     return G_OK;
 }
 
-// Writes the encoded pixels with `out` to tmp; returns a status with the message set.
+// An IOProxy over the temporary's descriptor that notes every failed write. A failed write is reported to the
+// encoder as done, so that no encoder takes its own error path (libjpeg's ends the process): the first error
+// is reported after the encoder has finished, and the output is then discarded.
+class FdWriter final : public OIIO::Filesystem::IOProxy {
+public:
+    FdWriter(const std::string &name, int fd) : IOProxy(name, Write), fd_(fd) {}
+    const char *proxytype() const override { return "generic-fd"; }
+    void close() override { m_mode = Closed; } // the descriptor belongs to the GFileOutput
+    bool seek(int64_t offset) override
+    {
+        if (offset < 0)
+            return false;
+        m_pos = offset;
+        return true;
+    }
+    size_t read(void *buf, size_t size) override // libtiff reads back what it wrote
+    {
+        size_t n = pread(buf, size, m_pos);
+        m_pos += (int64_t)n;
+        return n;
+    }
+    size_t pread(void *buf, size_t size, int64_t offset) override
+    {
+        size_t done = 0;
+        while (done < size) {
+            ssize_t n = ::pread(fd_, (char *)buf + done, size - done, (off_t)(offset + (int64_t)done));
+            if (n < 0 && errno == EINTR)
+                continue;
+            if (n <= 0)
+                break;
+            done += (size_t)n;
+        }
+        return done;
+    }
+    size_t write(const void *buf, size_t size) override
+    {
+        size_t n = pwrite(buf, size, m_pos);
+        m_pos += (int64_t)n;
+        return n;
+    }
+    size_t pwrite(const void *buf, size_t size, int64_t offset) override
+    {
+        const char *p = (const char *)buf;
+        size_t done = 0;
+        while (done < size && errno_ == 0) {
+            ssize_t n = ::pwrite(fd_, p + done, size - done, (off_t)(offset + (int64_t)done));
+            if (n < 0 && errno == EINTR)
+                continue;
+            if (n <= 0)
+                errno_ = n < 0 ? errno : ENOSPC;
+            else
+                done += (size_t)n;
+        }
+        if ((int64_t)(offset + size) > end_)
+            end_ = offset + (int64_t)size;
+        return size;
+    }
+    size_t size() const override { return (size_t)end_; }
+    int error_number() const { return errno_; }
+    int64_t end() const { return end_; }
+
+private:
+    int fd_;
+    int errno_ = 0;
+    int64_t end_ = 0;
+};
+
 int write_pixels(ImageOutput *out, const char *path, const char *tmp, const GImage *img, double scale,
                  bool float_out, GError *err)
 {
@@ -200,42 +357,63 @@ int write_pixels(ImageOutput *out, const char *path, const char *tmp, const GIma
     return rc;
 }
 
+// Decodes a file written by name in full: a write error the writer missed shows as a short or broken file.
+int verify_written(const char *path, const char *tmp, const GImage *img, GError *err)
+{
+    auto in = ImageInput::open(tmp);
+    if (!in)
+        return gerror_set(err, G_ERR_IO, "%s: cannot write image: the written file does not read back: %s", path,
+                          first_line(OIIO::geterror()).c_str());
+    const ImageSpec &spec = in->spec();
+    std::vector<unsigned char> scratch;
+    bool ok = spec.width == img->width && spec.height == img->height;
+    if (ok) {
+        scratch.resize((size_t)spec.width * spec.height * spec.nchannels * spec.format.size());
+        ok = in->read_image(0, 0, 0, spec.nchannels, spec.format, scratch.data());
+    }
+    if (!ok)
+        return gerror_set(err, G_ERR_IO, "%s: cannot write image: the written file does not read back: %s", path,
+                          first_line(in->geterror()).c_str());
+    return G_OK;
+}
+
 int write_impl(const char *path, const GImage *img, const GImageWriteOptions *opt, GError *err)
 {
     double exposure = opt ? opt->exposure : 0.0;
     if (!std::isfinite(exposure))
         return gerror_set(err, G_ERR_INVALID, "%s: exposure must be finite", path);
+    int rc = gimage_check_output(path, err);
+    if (rc != G_OK)
+        return rc;
     auto out = ImageOutput::create(path);
     if (!out)
         return gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, first_line(OIIO::geterror()).c_str());
-
-    // A temporary in the same directory, keeping the extension, renamed over path when complete.
-    std::string p(path);
-    size_t slash = p.rfind('/');
-    std::string dir = slash == std::string::npos ? std::string() : p.substr(0, slash + 1);
-    std::string base = slash == std::string::npos ? p : p.substr(slash + 1);
-    size_t dot = base.rfind('.');
-    std::string ext = dot == std::string::npos || dot == 0 ? std::string() : base.substr(dot);
-    std::string tmpl = dir + "." + base + ".XXXXXX" + ext;
-    std::string tmp(tmpl);
-    int fd = mkstemps(&tmp[0], (int)ext.size());
-    if (fd < 0)
-        return gerror_set(err, G_ERR_IO, "%s: cannot create a temporary file next to it: %s", path, strerror(errno));
-    struct stat st;
-    mode_t mode = stat(path, &st) == 0 ? (st.st_mode & 07777) : (0666 & ~process_umask());
-    fchmod(fd, mode);
-    close(fd);
-
-    int rc;
+    GFileOutput file;
+    if ((rc = gfile_output_begin(&file, path, err)) != G_OK)
+        return rc;
+    FdWriter proxy(file.temp, file.fd);
+    // OpenImageIO 2.4's TIFF writer links its EXIF directory wrongly through a proxy: it writes the
+    // temporary by name (libtiff checks its writes), and the result is decoded again before it is kept.
+    const bool by_name = !strcmp(out->format_name(), "tiff") || !out->supports("ioproxy");
     try {
-        rc = write_pixels(out.get(), path, tmp.c_str(), img, exp2(exposure), float_extension(path), err);
-    } catch (const std::exception &e) {
-        rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, e.what());
+        if (!by_name && !out->set_ioproxy(&proxy))
+            rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: the %s writer cannot write through a descriptor",
+                            path, out->format_name());
+        else
+            rc = write_pixels(out.get(), path, file.temp, img, exp2(exposure), float_extension(path), err);
+        out.reset(); // before the proxy goes
+        if (rc == G_OK && by_name)
+            rc = verify_written(path, file.temp, img, err);
+    } catch (...) {
+        gfile_output_abort(&file);
+        throw;
     }
-    if (rc == G_OK && rename(tmp.c_str(), path) != 0)
-        rc = gerror_set(err, G_ERR_IO, "%s: cannot rename the finished image into place: %s", path, strerror(errno));
-    if (rc != G_OK)
-        unlink(tmp.c_str());
+    if (rc == G_OK && proxy.error_number())
+        rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, strerror(proxy.error_number()));
+    if (rc == G_OK)
+        rc = gfile_output_commit(&file, by_name ? -1 : (long long)proxy.end(), path, err);
+    else
+        gfile_output_abort(&file);
     return rc;
 }
 
@@ -291,6 +469,8 @@ int gimage_read(const char *path, unsigned flags, GImage *img, GError *err)
         return gerror_set(err, G_ERR_INVALID, "%s: GIMAGE_READ_RGB and GIMAGE_READ_RGBA exclude each other", path);
     try {
         return read_impl(path, flags, img, err);
+    } catch (const std::bad_alloc &) {
+        return gerror_set(err, G_ERR_NOMEM, "%s: out of memory reading the image", path);
     } catch (const std::exception &e) {
         return gerror_set(err, G_ERR_IO, "%s: cannot read image: %s", path, e.what());
     } catch (...) {
@@ -303,13 +483,11 @@ int gimage_info(const char *path, int *width, int *height, int *channels, GError
     if (!path || !*path)
         return gerror_set(err, G_ERR_INVALID, "no image file name given");
     try {
-        auto in = ImageInput::open(path);
-        if (!in)
-            return gerror_set(err, G_ERR_IO, "%s: cannot read image: %s", path, first_line(OIIO::geterror()).c_str());
+        std::unique_ptr<ImageInput> in;
+        int rc = open_checked(path, nullptr, &in, err);
+        if (rc != G_OK)
+            return rc;
         const ImageSpec &spec = in->spec();
-        if (spec.width <= 0 || spec.height <= 0 || spec.nchannels < 1)
-            return gerror_set(err, G_ERR_IO, "%s: invalid image size %dx%d with %d channels", path, spec.width,
-                              spec.height, spec.nchannels);
         if (width)
             *width = spec.width;
         if (height)
@@ -317,8 +495,51 @@ int gimage_info(const char *path, int *width, int *height, int *channels, GError
         if (channels)
             *channels = spec.nchannels;
         return G_OK;
+    } catch (const std::bad_alloc &) {
+        return gerror_set(err, G_ERR_NOMEM, "%s: out of memory reading the image header", path);
     } catch (const std::exception &e) {
         return gerror_set(err, G_ERR_IO, "%s: cannot read image: %s", path, e.what());
+    } catch (...) {
+        return gerror_set(err, G_ERR_IO, "%s: cannot read image", path);
+    }
+}
+
+size_t gimage_memory_budget(void)
+{
+    size_t b = budget_bytes.load();
+    if (!b) {
+        size_t d = default_budget();
+        budget_bytes.compare_exchange_strong(b, d);
+        b = budget_bytes.load();
+    }
+    return b;
+}
+
+void gimage_set_memory_budget(size_t bytes)
+{
+    budget_bytes.store(bytes ? bytes : default_budget());
+}
+
+int gimage_check_output(const char *path, GError *err)
+{
+    if (!path || !*path)
+        return gerror_set(err, G_ERR_INVALID, "no image file name given");
+    int rc = gfile_check_output(path, err);
+    if (rc != G_OK)
+        return rc;
+    try {
+        auto out = ImageOutput::create(path);
+        if (!out) {
+            const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
+            std::string why = first_line(OIIO::geterror());
+            if (dot && (!slash || dot > slash))
+                return gerror_set(err, G_ERR_IO, "%s: cannot write image: this OpenImageIO has no writer for '%s' "
+                                  "files (%s)", path, dot, why.c_str());
+            return gerror_set(err, G_ERR_IO, "%s: cannot write image: no extension to choose the format by", path);
+        }
+        return G_OK;
+    } catch (...) {
+        return gerror_set(err, G_ERR_IO, "%s: cannot write image: OpenImageIO failed", path);
     }
 }
 
@@ -330,6 +551,8 @@ int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *
         return gerror_set(err, G_ERR_INVALID, "%s: invalid image to write", path);
     try {
         return write_impl(path, img, opt, err);
+    } catch (const std::bad_alloc &) {
+        return gerror_set(err, G_ERR_NOMEM, "%s: out of memory writing the image", path);
     } catch (const std::exception &e) {
         return gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, e.what());
     } catch (...) {

@@ -1,5 +1,6 @@
 /* plugin.c - loads run-time modules with dlopen and registers the types they add while they initialise. */
 #include "generic/plugin.h"
+#include "generic/file.h"
 #include "generic/memory.h"
 
 #include <dlfcn.h>
@@ -109,6 +110,11 @@ static int load_path(const char *path, GError *err)
     char *real = realpath(path, NULL);
     if (!real)
         return gerror_set(err, G_ERR_IO, "cannot load module '%s': file not found", path);
+    GError why;
+    if (gfile_check_input(real, &why) != G_OK) { /* dlopen would block on a FIFO */
+        free(real);
+        return gerror_set(err, G_ERR_IO, "cannot load module '%s': %s", path, why.message);
+    }
     pthread_mutex_lock(&lock);
     int rc = G_OK;
     Module *m = NULL;

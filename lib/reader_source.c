@@ -1,10 +1,10 @@
 /* reader_source.c - the files being read: loading a file whole (with the size limit), the stack of open
  * sources (the file being read and the files that include it). */
 #include "reader_internal.h"
+#include "generic/file.h"
 #include "generic/memory.h"
 
 #include <errno.h>
-#include <fcntl.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -39,15 +39,11 @@ void greader_free_source(GReaderSource *s)
 int greader_read_file(const char *path, size_t limit, char **text, size_t *len, GError *err)
 {
     *text = NULL;
-    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    int fd = gfile_open_input(path, err); /* a regular file, or a message naming what it is */
     if (fd < 0)
-        return gerror_set(err, G_ERR_IO, "cannot open \"%s\": %s", path, strerror(errno));
+        return fd;
     struct stat st;
-    if (fstat(fd, &st) == 0 && S_ISDIR(st.st_mode)) {
-        close(fd);
-        return gerror_set(err, G_ERR_IO, "cannot read \"%s\": it is a directory", path);
-    }
-    if (fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && (unsigned long long)st.st_size > limit) {
+    if (fstat(fd, &st) == 0 && (unsigned long long)st.st_size > limit) {
         close(fd);
         return gerror_set(err, G_ERR_IO, "\"%s\" is %lld bytes, more than the limit of %zu bytes", path,
                           (long long)st.st_size, limit);

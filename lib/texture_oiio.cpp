@@ -54,9 +54,16 @@ GTextureSystem *make(GError *err)
         gerror_set(err, G_ERR_NOMEM, "texture system: OpenImageIO could not create one");
         return nullptr;
     }
-    ts->attribute("automip", 1);     // MIP levels for files that have none (PNG, JPEG, ...)
-    ts->attribute("gray_to_rgb", 1); // grey files answer 3-channel lookups
-    ts->attribute("max_memory_MB", 512.0f);
+    try {
+        ts->attribute("automip", 1);     // MIP levels for files that have none (PNG, JPEG, ...)
+        ts->attribute("gray_to_rgb", 1); // grey files answer 3-channel lookups
+        ts->attribute("max_memory_MB", 512.0f);
+    } catch (...) {
+        TextureSystem::destroy(ts, true);
+        gmem_free(mem);
+        gerror_set(err, G_ERR_NOMEM, "texture system: OpenImageIO could not set it up");
+        return nullptr;
+    }
     return new (mem) GTextureSystem{ts, 1};
 }
 
@@ -87,6 +94,8 @@ bool says_linear(std::string cs)
 
 extern "C" {
 
+// Every function below is an entry from C: no exception may leave it.
+
 int gtexsys_create(GTextureSystem **out, GError *err)
 {
     *out = make(err);
@@ -96,8 +105,12 @@ int gtexsys_create(GTextureSystem **out, GError *err)
 GTextureSystem *gtexsys_ref(GTextureSystem *ts)
 {
     if (ts) {
-        std::lock_guard<std::mutex> g(refs_lock);
-        ts->refs++;
+        try {
+            std::lock_guard<std::mutex> g(refs_lock);
+            ts->refs++;
+        } catch (...) { // std::system_error from a broken mutex
+            return nullptr;
+        }
     }
     return ts;
 }
@@ -106,25 +119,33 @@ void gtexsys_unref(GTextureSystem *ts)
 {
     if (!ts)
         return;
-    {
-        std::lock_guard<std::mutex> g(refs_lock);
-        if (--ts->refs > 0)
-            return;
-        if (ts == default_system)
-            default_system = nullptr;
+    try {
+        {
+            std::lock_guard<std::mutex> g(refs_lock);
+            if (--ts->refs > 0)
+                return;
+            if (ts == default_system)
+                default_system = nullptr;
+        }
+        release(ts);
+    } catch (...) { // OpenImageIO failed while freeing: the system is lost, the program goes on
     }
-    release(ts);
 }
 
 GTextureSystem *gtexsys_default(GError *err)
 {
-    std::lock_guard<std::mutex> g(refs_lock);
-    if (default_system) {
-        default_system->refs++;
+    try {
+        std::lock_guard<std::mutex> g(refs_lock);
+        if (default_system) {
+            default_system->refs++;
+            return default_system;
+        }
+        default_system = make(err);
         return default_system;
+    } catch (...) {
+        gerror_set(err, G_ERR_NOMEM, "texture system: OpenImageIO could not create one");
+        return nullptr;
     }
-    default_system = make(err);
-    return default_system;
 }
 
 int gtexsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *channels, int *srgb, GError *err)
@@ -146,7 +167,7 @@ int gtexsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *cha
                 why += len + 2;
             if (strncmp(why, "cannot read image: ", 19) == 0)
                 why += 19;
-            return gerror_set(err, G_ERR_IO, "image '%s' cannot be read: %s", path, why);
+            return gerror_set(err, head.code, "image '%s' cannot be read: %s", path, why);
         }
         ustring name(path);
         TextureSystem::Perthread *pt = ts->ts->get_perthread_info();
@@ -180,14 +201,16 @@ int gtexsys_lookup(GTextureSystem *ts, GTexFile *file, GTexWrap swrap, GTexWrap 
     opt.anisotropic = 16;
     opt.interpmode = TextureOpt::InterpBilinear;
     opt.sblur = opt.tblur = (float)blur;
-    TextureSystem::Perthread *pt = ts->ts->get_perthread_info();
-    if (!ts->ts->texture(reinterpret_cast<TextureSystem::TextureHandle *>(file), pt, opt, (float)s, (float)t,
-                         (float)deriv[0], (float)deriv[1], (float)deriv[2], (float)deriv[3], 3, rgb)) {
+    try {
+        TextureSystem::Perthread *pt = ts->ts->get_perthread_info();
+        if (ts->ts->texture(reinterpret_cast<TextureSystem::TextureHandle *>(file), pt, opt, (float)s, (float)t,
+                            (float)deriv[0], (float)deriv[1], (float)deriv[2], (float)deriv[3], 3, rgb))
+            return G_OK;
         ts->ts->geterror();
-        rgb[0] = rgb[1] = rgb[2] = 0.0f;
-        return G_ERR_IO;
+    } catch (...) { // std::bad_alloc from the cache, or any other failure inside OpenImageIO
     }
-    return G_OK;
+    rgb[0] = rgb[1] = rgb[2] = 0.0f;
+    return G_ERR_IO;
 }
 
 } // extern "C"

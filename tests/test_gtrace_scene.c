@@ -397,7 +397,7 @@ static void test_scene_errors(void **state)
     expect_error("camera pinhole { }\ncamera pinhole { }\n", "2 cameras");
     expect_error("material g lambert { }\nobject sphere { material g transform { scale 0 } }\n", "singular");
     expect_error("material g lambert { }\nobject mesh { material g file \"/nonexistent.obj\" }\n",
-                 "/nonexistent.obj: cannot open");
+                 "cannot open \"/nonexistent.obj\": No such file");
 }
 
 /* ---- output files read back equal what was written ---- */

@@ -145,6 +145,10 @@ int gmat_laser(int argc, char **argv)
     GReaderOptions opt = {.colormodel = colormodel, .colormodel_options = &mo};
     GLibrary *lib;
     GError err;
+    if (pattern && gimage_check_output(pattern, &err) != G_OK) { /* before any work */
+        fprintf(stderr, "gmat laser: %s\n", err.message);
+        return 1;
+    }
     if (greader_load_file(file, &opt, &lib, &err) != G_OK) {
         fprintf(stderr, "gmat laser: %s\n", err.message);
         return 1;

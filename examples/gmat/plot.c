@@ -57,6 +57,9 @@ static void display(const GColor *c, float out[3], float *y)
 
 int gmat_plot(GmatContext *ctx, double theta_in, int size, const char *path, GError *err)
 {
+    int check = gimage_check_output(path, err); /* before any work */
+    if (check != G_OK)
+        return check;
     Lobe *lobe = gmem_calloc(1, sizeof *lobe);
     if (!lobe)
         return gerror_set(err, G_ERR_NOMEM, "out of memory");

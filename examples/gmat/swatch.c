@@ -186,6 +186,10 @@ int gmat_swatch(int argc, char **argv)
 
     Swatch s = {0};
     GError err;
+    if (gimage_check_output(output, &err) != G_OK) { /* before any work */
+        fprintf(stderr, "gmat swatch: %s\n", err.message);
+        return 1;
+    }
     GColorModelOptions mo = {.step_nm = step};
     GReaderOptions opt = {.colormodel = colormodel, .colormodel_options = &mo};
     if (greader_load_file(file, &opt, &s.lib, &err) != G_OK) {

@@ -72,6 +72,8 @@ int cmd_approx(int argc, char **argv)
         fprintf(stderr, "gprobe: median cut makes a power of two of lights, not %d (use adaptive for any count)\n", n);
         return 2;
     }
+    if (output_check(out, 0) != 0)
+        return 1;
     GProbe *p = probe_args_load(&pa);
     if (!p)
         return 1;
@@ -252,6 +254,8 @@ int cmd_convert(int argc, char **argv)
         fprintf(stderr, "gprobe convert: -o OUT is required\n");
         return 2;
     }
+    if (output_check(out, 1) != 0)
+        return 1;
     GProbe *p = probe_args_load(&pa);
     if (!p)
         return 1;

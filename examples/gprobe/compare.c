@@ -136,6 +136,8 @@ int cmd_compare(int argc, char **argv)
         fprintf(stderr, "gprobe compare: --write-mask needs --mask or --unshadowed\n");
         return 2;
     }
+    if (output_check(write_mask, 1) != 0)
+        return 1;
     int w = 0, h = 0, status = 1;
     GImage img = {0}, ref = {0}, aux = {0}, out = {0};
     unsigned char *mask = NULL;

@@ -91,22 +91,6 @@ static void put_csv(FILE *f, const Row *rows, int n)
 }
 
 /* 0 when the directory of path can take a new file (checked before the long work starts). */
-static int dir_writable(const char *path)
-{
-    char dir[4096];
-    snprintf(dir, sizeof dir, "%s", path);
-    char *slash = strrchr(dir, '/');
-    if (slash)
-        *(slash == dir ? slash + 1 : slash) = '\0';
-    else
-        snprintf(dir, sizeof dir, ".");
-    if (access(dir, W_OK) != 0) {
-        fprintf(stderr, "gprobe: cannot write %s: directory %s is not writable or does not exist\n", path, dir);
-        return -1;
-    }
-    return 0;
-}
-
 int cmd_eval(int argc, char **argv)
 {
     ProbeArgs pa = {0};
@@ -152,7 +136,7 @@ int cmd_eval(int argc, char **argv)
             return 2;
         }
     }
-    if (png && (plot_check_gnuplot() != 0 || dir_writable(png) != 0))
+    if ((png && plot_check_gnuplot() != 0) || output_check(png, 1) != 0 || output_check(csv, 0) != 0)
         return 1;
     TextOut csv_out = {0};
     if (csv && text_open(&csv_out, csv) != 0)
@@ -262,23 +246,29 @@ int cmd_eval(int argc, char **argv)
             status = 1;
     }
     if (png && status == 0) {
-        char tmpcsv[64] = "/tmp/gprobe-eval-XXXXXX";
-        int fd = mkstemp(tmpcsv);
-        FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
-        if (!f) {
+        GFileOutput tmp; /* the plot's data: a temporary (removed on a signal too) that is never renamed */
+        GError err;
+        FILE *f = NULL;
+        int fd = -1;
+        if (gfile_output_begin(&tmp, png, &err) != G_OK) /* next to the picture, never renamed over it */
+            fprintf(stderr, "gprobe: %s\n", err.message);
+        else if ((fd = dup(tmp.fd)) < 0 || !(f = fdopen(fd, "w")))
             perror("gprobe: temporary file");
+        if (!f) {
             if (fd >= 0)
                 close(fd);
             status = 1;
         } else {
             put_csv(f, rows, nrows);
-            if (fclose(f) != 0)
+            if (ferror(f) | (fclose(f) != 0)) {
+                fprintf(stderr, "gprobe: cannot write the temporary %s\n", tmp.temp);
                 status = 1;
+            }
             const char *base = strrchr(pa.path, '/');
-            if (status == 0 && plot_errors(tmpcsv, png, title ? title : base ? base + 1 : pa.path) != 0)
+            if (status == 0 && plot_errors(tmp.temp, png, title ? title : base ? base + 1 : pa.path) != 0)
                 status = 1;
         }
-        unlink(tmpcsv);
+        gfile_output_abort(&tmp);
     }
 done:
     if (csv) /* still open: the work failed */

@@ -2,6 +2,7 @@
 #ifndef GPROBE_TOOL_H
 #define GPROBE_TOOL_H
 
+#include <generic/file.h>
 #include <generic/probe.h>
 
 #include <stdio.h>
@@ -33,11 +34,15 @@ const char *option_value(int argc, char **argv, int *i);
 /** Seconds on a monotonic clock. */
 double now_seconds(void);
 
-/** A text file written to a temporary next to `path` and renamed into place by text_close. */
+/** A text file written to a temporary next to `path` and renamed into place by text_close (generic/file.h). */
 typedef struct TextOut {
     FILE *f;
-    char *path, *tmp;
+    char *path;
+    GFileOutput out;
 } TextOut;
+/** Checks before any work that path can be written (generic/file.h), and, when image is set, that this
+ * OpenImageIO has a writer for its extension; -1 with a message when not. NULL passes. */
+int output_check(const char *path, int image);
 /** Opens the temporary; -1 with a message on failure. */
 int text_open(TextOut *t, const char *path);
 /** Closes and renames (ok != 0) or removes (ok == 0) the temporary; -1 with a message when the write failed. */

@@ -3,6 +3,8 @@
  * main.c: the command dispatch and the pieces every command shares. */
 #include "gprobe.h"
 
+#include <generic/image.h>
+
 #include <generic/builtins.h>
 #include <generic/memory.h>
 #include <generic/plugin.h>
@@ -188,51 +190,59 @@ GProbe *probe_args_load(const ProbeArgs *a)
     return p;
 }
 
+int output_check(const char *path, int image)
+{
+    if (!path)
+        return 0;
+    GError err;
+    if ((image ? gimage_check_output(path, &err) : gfile_check_output(path, &err)) != G_OK) {
+        fprintf(stderr, "gprobe: %s\n", err.message);
+        return -1;
+    }
+    return 0;
+}
+
 int text_open(TextOut *t, const char *path)
 {
     memset(t, 0, sizeof *t);
-    size_t n = strlen(path);
-    t->path = gmem_strdup(path);
-    t->tmp = gmem_alloc(n + 16);
-    if (!t->path || !t->tmp) {
-        gmem_free(t->path);
-        gmem_free(t->tmp);
+    GError err;
+    if (!(t->path = gmem_strdup(path))) {
         fprintf(stderr, "gprobe: out of memory\n");
         return -1;
     }
-    snprintf(t->tmp, n + 16, "%s.tmpXXXXXX", path);
-    int fd = mkstemp(t->tmp);
-    if (fd < 0 || !(t->f = fdopen(fd, "w"))) {
-        fprintf(stderr, "gprobe: cannot write %s: %s\n", path, strerror(errno));
-        if (fd >= 0) {
-            close(fd);
-            unlink(t->tmp);
-        }
+    if (gfile_output_begin(&t->out, path, &err) != G_OK) {
+        fprintf(stderr, "gprobe: %s\n", err.message);
         gmem_free(t->path);
-        gmem_free(t->tmp);
         return -1;
     }
-    mode_t mask = umask(0); /* single-threaded here: read the umask for the final file's mode */
-    umask(mask);
-    fchmod(fd, 0666 & ~mask);
+    int fd = dup(t->out.fd); /* the stream's own descriptor; the output keeps its one for the fsync */
+    if (fd < 0 || !(t->f = fdopen(fd, "w"))) {
+        fprintf(stderr, "gprobe: cannot write %s: %s\n", path, strerror(errno));
+        if (fd >= 0)
+            close(fd);
+        gfile_output_abort(&t->out);
+        gmem_free(t->path);
+        return -1;
+    }
     return 0;
 }
 
 int text_close(TextOut *t, int ok)
 {
-    int rc = 0;
-    if (ferror(t->f))
+    int rc = 0, failed = ferror(t->f);
+    if (fclose(t->f) != 0 || failed) {
+        if (ok)
+            fprintf(stderr, "gprobe: cannot write %s: %s\n", t->path, failed ? "write error" : strerror(errno));
         ok = 0, rc = -1;
-    if (fclose(t->f) != 0)
-        ok = 0, rc = -1;
-    if (ok && rename(t->tmp, t->path) != 0)
-        ok = 0, rc = -1;
-    if (rc != 0)
-        fprintf(stderr, "gprobe: cannot write %s: %s\n", t->path, strerror(errno));
-    if (!ok)
-        unlink(t->tmp);
+    }
+    GError err;
+    if (!ok) {
+        gfile_output_abort(&t->out);
+    } else if (gfile_output_commit(&t->out, -1, t->path, &err) != G_OK) {
+        fprintf(stderr, "gprobe: %s\n", err.message);
+        rc = -1;
+    }
     gmem_free(t->path);
-    gmem_free(t->tmp);
     return rc;
 }
 

@@ -1,6 +1,8 @@
 /* plot.c - the Fig. 6 plot of `gprobe eval`: error against the number of lights, drawn by gnuplot. */
 #include "gprobe.h"
 
+#include <generic/file.h>
+#include <generic/image.h>
 #include <generic/memory.h>
 
 #include <errno.h>
@@ -47,9 +49,16 @@ static void put_quoted(FILE *f, const char *s)
 
 static int read_csv(const char *csv, Series *series, int *nseries, double sh9[4], int *have_sh9)
 {
-    FILE *f = fopen(csv, "r");
+    GError err;
+    int fd = gfile_open_input(csv, &err);
+    FILE *f = fd >= 0 ? fdopen(fd, "r") : NULL;
     if (!f) {
-        fprintf(stderr, "gprobe: cannot read %s: %s\n", csv, strerror(errno));
+        if (fd >= 0) {
+            close(fd);
+            fprintf(stderr, "gprobe: cannot read %s: %s\n", csv, strerror(errno));
+        } else {
+            fprintf(stderr, "gprobe: %s\n", err.message);
+        }
         return -1;
     }
     char line[512];
@@ -109,26 +118,17 @@ int plot_errors(const char *csv, const char *png, const char *title)
     if (xmax <= 0.0)
         xmin = 1.0, xmax = 128.0;
 
-    size_t n = strlen(png);
-    char *tmp = gmem_alloc(n + 16);
-    if (!tmp)
-        return -1;
-    snprintf(tmp, n + 16, "%s.tmpXXXXXX", png);
-    int fd = mkstemp(tmp);
-    if (fd < 0) {
-        fprintf(stderr, "gprobe: cannot write %s: %s\n", png, strerror(errno));
-        gmem_free(tmp);
+    GFileOutput out; /* gnuplot writes the temporary by name; it is checked and renamed here */
+    GError err;
+    if (gfile_output_begin(&out, png, &err) != G_OK) {
+        fprintf(stderr, "gprobe: %s\n", err.message);
         return -1;
     }
-    mode_t mask = umask(0);
-    umask(mask);
-    fchmod(fd, 0666 & ~mask);
-    close(fd);
+    const char *tmp = out.temp;
     FILE *g = popen("gnuplot", "w");
     if (!g) {
         fprintf(stderr, "gprobe: cannot run gnuplot: %s\n", strerror(errno));
-        unlink(tmp);
-        gmem_free(tmp);
+        gfile_output_abort(&out);
         return -1;
     }
     fprintf(g, "set terminal pngcairo size 1400,600 font 'Sans,11'\nset output ");
@@ -175,20 +175,21 @@ int plot_errors(const char *csv, const char *png, const char *title)
     fprintf(g, "unset multiplot\nset output\n");
     int st = pclose(g);
     int ok = st != -1 && WIFEXITED(st) && WEXITSTATUS(st) == 0;
-    FILE *chk = ok ? fopen(tmp, "rb") : NULL;
-    if (chk) {
-        fseek(chk, 0, SEEK_END);
-        ok = ftell(chk) > 0;
-        fclose(chk);
-    } else {
+    GImage check = {0}; /* the picture must decode whole: a full disk would have cut it short */
+    if (ok && gimage_read(tmp, GIMAGE_READ_RGB, &check, &err) != G_OK) {
+        fprintf(stderr, "gprobe: gnuplot's picture %s is not readable: %s\n", png, err.message);
         ok = 0;
     }
-    if (ok && rename(tmp, png) != 0)
-        ok = 0;
+    gimage_free(&check);
     if (!ok) {
         fprintf(stderr, "gprobe: gnuplot failed to draw %s\n", png);
-        unlink(tmp);
+        gfile_output_abort(&out);
+        return -1;
     }
-    gmem_free(tmp);
+    if (gfile_output_commit(&out, -1, png, &err) != G_OK) {
+        fprintf(stderr, "gprobe: %s\n", err.message);
+        return -1;
+    }
+
     return ok ? 0 : -1;
 }

@@ -97,6 +97,8 @@ int cmd_sky(int argc, char **argv)
         fprintf(stderr, "gprobe sky: -o FILE is required\n");
         return 2;
     }
+    if (output_check(out, 1) != 0)
+        return 1;
     const int w = 2 * h;
     GError err;
     GProbe *grid = NULL; /* a black probe of the size: only for its directions */

@@ -195,6 +195,10 @@ int main(int argc, char **argv)
     GError err;
     gerror_clear(&err);
     Scene *scene = NULL;
+    if (output_check(o.out, &err) != G_OK) { /* before the scene is read and rendered */
+        fprintf(stderr, "gtrace: %s\n", err.message);
+        return 1;
+    }
     if (scene_load_with(o.scene, o.colormodel, &o.probe, &scene, &err) < 0) {
         fprintf(stderr, "gtrace: %s\n", err.message);
         return 1;

@@ -2,11 +2,14 @@
  * count from the end; usemtl and g start a new surface index) and the surface at a triangle hit. */
 #include "geometry.h"
 
+#include <generic/file.h>
+
 #include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 /* A growing array of elements of one size (doubles or ints here). */
 typedef struct Arr {
@@ -188,9 +191,14 @@ static int parse_line(Loader *L, char *line)
 
 int object_mesh_load(Object *o, const char *path, GError *err)
 {
-    FILE *f = fopen(path, "r");
-    if (!f)
-        return gerror_set(err, G_ERR_IO, "%s: cannot open: %s", path, strerror(errno));
+    int fd = gfile_open_input(path, err); /* a regular file: never a FIFO or a device */
+    if (fd < 0)
+        return fd;
+    FILE *f = fdopen(fd, "r");
+    if (!f) {
+        close(fd);
+        return gerror_set(err, G_ERR_NOMEM, "%s: cannot read: %s", path, strerror(errno));
+    }
     Loader L = {.path = path, .err = err};
     char buf[4096];
     int rc = G_OK;

@@ -18,6 +18,11 @@ static int is_float_format(const char *path)
     return strcasecmp(dot, ".exr") == 0 || strcasecmp(dot, ".hdr") == 0 || strcasecmp(dot, ".pfm") == 0;
 }
 
+int output_check(const char *path, GError *err)
+{
+    return gimage_check_output(path, err);
+}
+
 int output_write(const char *path, const Framebuffer *fb, double exposure, GError *err)
 {
     GImage img = {.width = fb->width, .height = fb->height, .channels = 3, .pixels = fb->pixels};

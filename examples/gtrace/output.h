@@ -11,4 +11,8 @@
  * leaves no partial file. */
 int output_write(const char *path, const Framebuffer *fb, double exposure, GError *err);
 
+/** Checks before the render that path can be written: its directory exists and is writable, it is not a
+ * directory or a device, and OpenImageIO has a writer for its extension (gimage_check_output). */
+int output_check(const char *path, GError *err);
+
 #endif

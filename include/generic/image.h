@@ -18,8 +18,20 @@
  *   anything else (.png .jpg .jpeg .tif .tiff .bmp .tga ...)
  *                                       8 bits per channel, sRGB encoded after the exposure, clamped
  *                                       to [0, 1] (alpha is clamped, not encoded).
- * A write goes to a temporary file in the destination's directory which is renamed over the destination
- * only when it is complete: a failed write leaves no partial file behind and keeps an existing file.
+ * A write goes to a temporary file in the destination's directory (generic/file.h) which is renamed over the
+ * destination only when it is complete and on the disk: every failed write (a full disk, an I/O error), a
+ * failed flush and a size that differs from what was written are errors, and leave no partial file behind and
+ * an existing file untouched. A destination that is a symbolic link is written through it (the link's target
+ * is replaced, the link kept). gimage_check_output checks a destination before any work is done.
+ *
+ * Untrusted files. Only regular files are read (a FIFO or a device is refused, generic/file.h). Before any
+ * pixel memory is allocated, a header is refused when it claims more pixels than the file can hold (a PFM's
+ * floats are uncompressed, a PNG's deflate stream expands at most 1032 times, a Radiance HDR row takes at
+ * least 2 bytes for every 127 bytes of a component), or when the decoded image,
+ * width x height x max(channels, 3) 32-bit floats, would exceed the image memory budget (reading takes about
+ * twice that): GIMAGE_DEFAULT_BUDGET_MB MiB, or the environment's GENERIC_IMAGE_BUDGET_MB (a whole number of
+ * MiB) when set, or what gimage_set_memory_budget sets. Light probes (generic/probe.h) count their tables
+ * against the same budget. No C++ exception leaves this library: OpenImageIO's are turned into statuses.
  *
  * Errors return a negative status (error.h) and put OpenImageIO's own message into the GError. All
  * functions are thread safe for distinct images. */
@@ -28,6 +40,8 @@
 
 #include "export.h"
 #include "error.h"
+
+#include <stddef.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -60,19 +74,36 @@ GENERIC_API int gimage_create(GImage *img, int width, int height, int channels, 
 /** Frees the pixels and zeroes the struct; NULL, or an image already freed, is a no-op. */
 GENERIC_API void gimage_free(GImage *img);
 
+/** The image memory budget's default, in MiB (see the top of this file). */
+#define GIMAGE_DEFAULT_BUDGET_MB 2048
+
+/** The image memory budget in bytes: what gimage_set_memory_budget set, else GENERIC_IMAGE_BUDGET_MB MiB
+ * from the environment (read once), else GIMAGE_DEFAULT_BUDGET_MB MiB. */
+GENERIC_API size_t gimage_memory_budget(void);
+
+/** Sets the image memory budget in bytes for the whole process; 0 restores the default. Thread safe. */
+GENERIC_API void gimage_set_memory_budget(size_t bytes);
+
 /** Reads the first subimage of a file into img (which is overwritten, not freed first). flags: GIMAGE_READ_*.
- * G_ERR_IO when the file cannot be opened or decoded (the message names the file and gives OpenImageIO's
- * reason), G_ERR_NOMEM when out of memory. On failure img is zeroed. */
+ * G_ERR_IO when the file is not a regular file, cannot be opened or decoded, or its header claims more than
+ * the file can hold (the message names the file and gives the reason), G_ERR_NOMEM when the image would
+ * exceed the memory budget or memory runs out. On failure img is zeroed. */
 GENERIC_API int gimage_read(const char *path, unsigned flags, GImage *img, GError *err);
 
-/** Reads only the size and channel count of a file (channels as the file has them, 1..n). G_ERR_IO when
- * the file cannot be opened or its header gives a size or channel count below 1. */
+/** Reads only the size and channel count of a file (channels as the file has them, 1..n), with the checks
+ * of gimage_read: G_ERR_IO when the file cannot be opened or its header gives a size or channel count below
+ * 1 or more than the file can hold, G_ERR_NOMEM when the image would exceed the memory budget. */
 GENERIC_API int gimage_info(const char *path, int *width, int *height, int *channels, GError *err);
 
 /** Writes img to path, encoding chosen by the extension (see the top of this file); the file appears
- * complete or not at all. G_ERR_INVALID for a bad image, G_ERR_IO when the format is unknown or the
- * write fails. */
+ * complete or not at all. G_ERR_INVALID for a bad image, G_ERR_IO when the format is unknown, the
+ * destination cannot be written or the write fails. */
 GENERIC_API int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *opt, GError *err);
+
+/** Checks before any work that gimage_write can write path: its directory exists and is writable, path is
+ * not something other than a regular file (gfile_check_output), and this OpenImageIO has a writer for its
+ * extension (Debian 12's has none for .pfm). G_OK or G_ERR_IO naming path and the reason. */
+GENERIC_API int gimage_check_output(const char *path, GError *err);
 
 /** The sRGB transfer function (IEC 61966-2-1): linear value in [0, 1] to its encoded value. */
 GENERIC_API double gimage_srgb_encode(double linear);

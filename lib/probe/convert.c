@@ -123,6 +123,9 @@ int gprobe_from_angular(const GImage *map, int height, GProbe **out, GError *err
     const int h = height > 0 ? height : (map->width / 2 > 2 ? map->width / 2 : 2), w = 2 * h;
     if (h > (1 << 14))
         return gerror_set(err, G_ERR_INVALID, "probe height %d out of range", h);
+    int rc = probe_check_budget(w, h, err);
+    if (rc != G_OK)
+        return rc;
     float *buf = gmem_calloc((size_t)w * h * 3, sizeof(float));
     if (!buf)
         return gerror_set(err, G_ERR_NOMEM, "out of memory converting an angular map");
@@ -144,7 +147,7 @@ int gprobe_from_angular(const GImage *map, int height, GProbe **out, GError *err
                 buf[((size_t)v * w + u) * 3 + c] = (float)(acc[c] / (ss * ss));
         }
     }
-    int rc = gprobe_create(w, h, buf, out, err);
+    rc = gprobe_create(w, h, buf, out, err);
     gmem_free(buf);
     return rc;
 }

@@ -72,6 +72,19 @@ static void probe_prepare(GProbe *p)
     }
 }
 
+int probe_check_budget(int width, int height, GError *err)
+{
+    /* the pixels and their weights (3 floats each) and the summed-area table (PROBE_SAT doubles a corner) */
+    const double bytes = (double)width * height * 6 * sizeof(float) +
+                         ((double)width + 1) * ((double)height + 1) * PROBE_SAT * sizeof(double);
+    const size_t budget = gimage_memory_budget();
+    if (bytes > (double)budget)
+        return gerror_set(err, G_ERR_NOMEM,
+                          "a %dx%d probe needs %.0f MiB, more than the image memory budget of %zu MiB "
+                          "(GENERIC_IMAGE_BUDGET_MB)", width, height, bytes / 1048576.0, budget >> 20);
+    return G_OK;
+}
+
 int gprobe_create(int width, int height, const float *rgb, GProbe **out, GError *err)
 {
     if (!out)
@@ -80,6 +93,9 @@ int gprobe_create(int width, int height, const float *rgb, GProbe **out, GError 
     if (height < 2 || width != 2 * height || height > (1 << 14))
         return gerror_set(err, G_ERR_INVALID,
                           "a latitude-longitude probe must be twice as wide as high (got %dx%d)", width, height);
+    int rc = probe_check_budget(width, height, err);
+    if (rc != G_OK)
+        return rc;
     GProbe *p = gmem_calloc(1, sizeof *p);
     if (!p)
         return gerror_set(err, G_ERR_NOMEM, "out of memory for a %dx%d probe", width, height);

@@ -51,6 +51,9 @@ static inline GVec3 probe_pixel_dir(const GProbe *p, int u, int v)
  * out[4..6] the weights Q per channel. */
 void probe_sat_sum(const GProbe *p, int u0, int v0, int u1, int v1, double out[PROBE_SAT]);
 
+/* G_ERR_NOMEM when a width x height probe's tables would exceed the image memory budget (generic/image.h). */
+int probe_check_budget(int width, int height, GError *err);
+
 /** A rectangle of the lat-long image and its energy statistics (median cut and its adaptive form). */
 typedef struct ProbeRegion {
     int u0, v0, u1, v1;   /* [u0, u1) x [v0, v1) */

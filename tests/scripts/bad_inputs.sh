@@ -3,7 +3,8 @@
 # file (gmat), every probe file (gprobe), every scene (gtrace), broken plug-ins and a file over the size limit.
 # Each must fail with a clear message on stderr - `file:line:col: message` for text, the file's name for images -
 # and an exit status from 1 to 127: a status of 128 or more (a signal) or a sanitizer report is a crash. No tool
-# may leave a partial result: an output file that exists before a failing run keeps its content. A probe with
+# may leave a partial result: an output file that exists before a failing run keeps its content. FIFOs,
+# devices and directories as every kind of input, and generated lying image headers, are refused. A probe with
 # NaN, infinite and negative pixels loads, and the number of pixels set to 0 is reported.
 SRC=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=$(cd "${1:-build}" 2> /dev/null && pwd) || { echo "FAIL: no build directory ${1:-build}"; exit 1; }
@@ -186,6 +187,80 @@ if "$GPROBE" approx --probe probe_nonfinite.pfm --technique kmeans -n 4 -o "$TMP
 else
     fail "gprobe approx probe_nonfinite.pfm failed: $(cat "$TMP/err")"
 fi
+
+# ---- files that are not regular files, as every kind of input: refused at once with the path and the kind ----
+mkfifo "$TMP/fifo" 2> /dev/null || fail "mkfifo failed"
+mkdir "$TMP/adir"
+printf 'camera pinhole { from <0,0,5> at <0,0,0> }\nmaterial g lambert { }\n' > "$TMP/cam.part"
+for spec in "$TMP/fifo:a FIFO" "/dev/zero:a character device" "/dev/urandom:a character device" "$TMP/adir:a directory"; do
+    p=${spec%%:*}
+    kind=${spec#*:}
+    want="\"$p\": it is $kind"
+    {
+        cat "$TMP/cam.part"
+        printf 'object mesh { file "%s" material g }\n' "$p"
+    } > "$TMP/mesh_input.scene"
+    printf 'include "%s"\n' "$p" > "$TMP/include_input.mat"
+    printf 'node n image { child lambert file "%s" }\n' "$p" > "$TMP/image_input.mat"
+    printf 'color c bfc "%s"\n' "$p" > "$TMP/bfc_input.mat"
+    printf 'plugin "%s"\n' "$p" > "$TMP/plugin_input.mat"
+    for c in "gmat list $p:$GMAT list $p" "include:$GMAT list $TMP/include_input.mat" \
+             "image node:$GMAT list $TMP/image_input.mat" "bfc:$GMAT list $TMP/bfc_input.mat" \
+             "plugin statement:$GMAT list $TMP/plugin_input.mat" "--plugin:$GMAT list $TMP/good.mat --plugin $p" \
+             "mesh:$GTRACE $TMP/mesh_input.scene -q -o $TMP/mesh.png" \
+             "probe:$GPROBE approx --probe $p --technique adaptive -n 4 -o $TMP/lights.txt"; do
+        what=${c%%:*}
+        cmd=${c#*:}
+        # shellcheck disable=SC2086 # the command's words
+        timeout 20 sh -c 'exec "$@"' sh $cmd > "$TMP/out" 2> "$TMP/err"
+        st=$?
+        checked=$((checked + 1))
+        if [ $st -eq 124 ]; then
+            fail "$what on $p: hangs"
+        elif [ $st -eq 0 ] || [ $st -ge 128 ]; then
+            fail "$what on $p: exit status $st: $(head -c 1000 "$TMP/err")"
+        elif ! grep -q -F -- "$want" "$TMP/err"; then
+            fail "$what on $p: expected '$want', got: $(cat "$TMP/err")"
+        fi
+    done
+done
+
+# ---- generated headers that claim more pixels than the file holds, or than the memory budget allows ----
+# PFM (uncompressed: compared with the file's size) and Radiance HDR (run-length encoded: at least 2 bytes
+# for 127 of a component), from small to the largest sizes; each is refused by gprobe and the image node
+# within 5 s and 300 MB.
+lie=0
+for size in "1024 512" "4096 2048" "8192 4096" "16384 8192" "23000 11500" "32768 16384" "65535 32767"; do
+    set -- $size
+    lie=$((lie + 1))
+    printf 'PF\n%s %s\n-1.0\n' "$1" "$2" > "$TMP/lie$lie.pfm"
+    head -c 1000 /dev/zero >> "$TMP/lie$lie.pfm"
+    printf '#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y %s +X %s\n' "$2" "$1" > "$TMP/lie$lie.hdr"
+    for f in "$TMP/lie$lie.pfm" "$TMP/lie$lie.hdr"; do
+        printf 'node n image { child lambert file "%s" }\n' "$f" > "$TMP/lie_node.mat"
+        for c in "$GPROBE approx --probe $f --technique adaptive -n 4 -o $TMP/lights.txt" "$GMAT list $TMP/lie_node.mat"; do
+            known "$TMP/lights.txt"
+            # shellcheck disable=SC2086
+            /usr/bin/time -f "%e %M" -o "$TMP/time" $c > "$TMP/out" 2> "$TMP/err"
+            st=$?
+            checked=$((checked + 1))
+            read -r secs kb << EOF
+$(tail -n 1 "$TMP/time")
+EOF
+            if [ $st -eq 0 ] || [ $st -ge 128 ]; then
+                fail "$c: exit status $st: $(head -c 1000 "$TMP/err")"
+            fi
+            grep -q -F "$f" "$TMP/err" || fail "$c: the message does not name the file: $(cat "$TMP/err")"
+            grep -q -E "claims|invalid image size|unsupported image size" "$TMP/err" ||
+                fail "$c: expected the claim to be refused, got: $(cat "$TMP/err")"
+            if ! ldd "$GMAT" 2> /dev/null | grep -q -E "libasan"; then
+                [ "${secs%%.*}" -lt 5 ] || fail "$c: took $secs s"
+                [ "$kb" -lt 300000 ] || fail "$c: held $kb KB"
+            fi
+            unchanged "$c" "$TMP/lights.txt"
+        done
+    done
+done
 
 # ---- scenes: gtrace reports file:line:col (or the file) and keeps an existing image ----
 each scene scene_*.scene image_missing.mat bfc_overflow.mat

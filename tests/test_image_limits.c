@@ -1,0 +1,292 @@
+/* test_image_limits.c - image headers that lie: a generator of PNG, PFM and HDR files whose headers claim
+ * far more pixels than they hold, each refused by every reader (gimage_read, gimage_info, gprobe_load, the
+ * image node) before the claimed memory is allocated and within a second; the memory budget (refusal above
+ * it, a budget-sized image accepted, the setting restored); true images at the extreme of compression still
+ * read. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <cmocka.h>
+
+#include "generic/builtins.h"
+#include "generic/image.h"
+#include "generic/probe.h"
+#include "generic/reader.h"
+#include "test_util.h"
+
+#include <stdint.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <time.h>
+#include <unistd.h>
+
+static char dir[256];
+
+static int setup(void **state)
+{
+    (void)state;
+    snprintf(dir, sizeof dir, "/tmp/test_image_limits.XXXXXX");
+    if (!mkdtemp(dir))
+        return -1;
+    GError err;
+    return generic_register_builtins(&err) == G_OK ? 0 : -1;
+}
+
+static int teardown(void **state)
+{
+    (void)state;
+    char cmd[300];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+    return system(cmd) == 0 ? 0 : -1;
+}
+
+static double seconds(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec + t.tv_nsec * 1e-9;
+}
+
+static long max_rss_kb(void)
+{
+    struct rusage u;
+    getrusage(RUSAGE_SELF, &u);
+    return u.ru_maxrss;
+}
+
+/* ---- the generator ---- */
+
+static uint32_t crc32_of(const unsigned char *p, size_t n, uint32_t c)
+{
+    c = ~c;
+    for (size_t i = 0; i < n; i++) {
+        c ^= p[i];
+        for (int k = 0; k < 8; k++)
+            c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
+    }
+    return ~c;
+}
+
+static void put32(FILE *f, uint32_t v)
+{
+    unsigned char b[4] = {(unsigned char)(v >> 24), (unsigned char)(v >> 16), (unsigned char)(v >> 8), (unsigned char)v};
+    fwrite(b, 1, 4, f);
+}
+
+static void chunk(FILE *f, const char *type, const unsigned char *data, uint32_t n)
+{
+    put32(f, n);
+    fwrite(type, 1, 4, f);
+    if (n)
+        fwrite(data, 1, n, f);
+    uint32_t c = crc32_of((const unsigned char *)type, 4, 0);
+    put32(f, crc32_of(data, n, c));
+}
+
+/* A PNG whose header is valid (with its CRC) and claims w x h pixels of colour type ct and depth bits,
+ * followed by a few bytes of (broken) image data. */
+static void lying_png(const char *path, uint32_t w, uint32_t h, int ct, int bits)
+{
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    fwrite("\x89PNG\r\n\x1a\n", 1, 8, f);
+    unsigned char ihdr[13] = {(unsigned char)(w >> 24), (unsigned char)(w >> 16), (unsigned char)(w >> 8),
+                              (unsigned char)w, (unsigned char)(h >> 24), (unsigned char)(h >> 16),
+                              (unsigned char)(h >> 8), (unsigned char)h, (unsigned char)bits, (unsigned char)ct,
+                              0, 0, 0};
+    chunk(f, "IHDR", ihdr, 13);
+    if (ct == 3) {
+        unsigned char plte[3] = {255, 0, 0};
+        chunk(f, "PLTE", plte, 3);
+    }
+    const unsigned char idat[] = {0x78, 0x9c, 0x63, 0x00, 0x00, 0x00, 0x01, 0x00, 0x01};
+    chunk(f, "IDAT", idat, sizeof idat);
+    chunk(f, "IEND", NULL, 0);
+    assert_int_equal(fclose(f), 0);
+}
+
+/* A PFM (colour or grey) that claims w x h pixels and holds `data` bytes of them. */
+static void lying_pfm(const char *path, long w, long h, int grey, long data)
+{
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    fprintf(f, "%s\n%ld %ld\n-1.0\n", grey ? "Pf" : "PF", w, h);
+    for (long i = 0; i < data; i++)
+        fputc(0, f);
+    assert_int_equal(fclose(f), 0);
+}
+
+/* A Radiance HDR header (run-length encoded or flat) that claims w x h pixels, with `data` bytes after it. */
+static void lying_hdr(const char *path, long w, long h, long data)
+{
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    fprintf(f, "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y %ld +X %ld\n", h, w);
+    for (long i = 0; i < data; i++)
+        fputc(i % 4 == 3 ? 128 : 2, f);
+    assert_int_equal(fclose(f), 0);
+}
+
+/* Every reader must refuse path quickly, with a message naming it, without holding the claimed memory. */
+static void expect_refused(const char *path, const char *why)
+{
+    const double t0 = seconds();
+    GError err;
+    GImage img;
+    int rc = gimage_read(path, 0, &img, &err);
+    if (rc == G_OK)
+        fail_msg("gimage_read accepted %s (%dx%d)", path, img.width, img.height);
+    assert_null(img.pixels);
+    assert_non_null(strstr(err.message, path));
+    if (why && !strstr(err.message, why))
+        fail_msg("%s: expected '%s' in '%s'", path, why, err.message);
+    int w, h, c;
+    rc = gimage_info(path, &w, &h, &c, &err);
+    /* the header alone may be readable; when it is refused, it is for the same reason */
+    if (rc != G_OK && why && strstr(why, "claims") && !strstr(err.message, why))
+        fail_msg("gimage_info %s: expected '%s' in '%s'", path, why, err.message);
+    GProbe *p = NULL;
+    assert_true(gprobe_load(path, GPROBE_AUTO, 0, &p, &err) < 0);
+    assert_null(p);
+    char text[400];
+    snprintf(text, sizeof text, "node n image { child lambert file \"%s\" }\n", path);
+    GLibrary *lib = NULL;
+    rc = greader_load_string(text, "lying.mat", NULL, &lib, &err);
+    if (rc == G_OK) { /* the image node opens the file when the library loads; a look-up must then fail */
+        glibrary_destroy(lib);
+        if (why && strstr(why, "claims"))
+            fail_msg("the image node accepted %s", path);
+    }
+    const double dt = seconds() - t0;
+    if (dt > 2.0)
+        fail_msg("%s took %.2f s to refuse", path, dt);
+}
+
+static void test_lying_png_headers(void **state)
+{
+    (void)state;
+    /* sizes from a few thousand pixels to the largest a PNG header holds, every colour type */
+    const uint32_t sizes[][2] = {{20000, 20000}, {60000, 60000}, {1u << 20, 64}, {64, 1u << 20}, {5000, 5000},
+                                 {0x7fffffffu, 1}, {1, 0x7fffffffu}};
+    const int types[][2] = {{2, 8}, {6, 16}, {0, 1}, {3, 8}, {4, 8}};
+    char path[300];
+    for (size_t i = 0; i < sizeof sizes / sizeof sizes[0]; i++)
+        for (size_t t = 0; t < sizeof types / sizeof types[0]; t++) {
+            snprintf(path, sizeof path, "%s/lie_%zu_%zu.png", dir, i, t);
+            lying_png(path, sizes[i][0], sizes[i][1], types[t][0], types[t][1]);
+            /* libpng refuses a side over 1,000,000 itself; above 2^29 pixels the size is refused outright */
+            int own = sizes[i][0] > 1000000u || sizes[i][1] > 1000000u ||
+                      sizes[i][0] * (double)sizes[i][1] > (double)(1u << 29);
+            expect_refused(path, own ? NULL : "claims");
+        }
+    assert_true(max_rss_kb() < 1024 * 1024); /* no claimed size was ever touched */
+}
+
+static void test_lying_pfm_headers(void **state)
+{
+    (void)state;
+    const long sizes[][2] = {{30000, 30000}, {16384, 8192}, {4096, 2048}, {1024, 512}, {2, 1}, {100000, 1}};
+    char path[300];
+    for (size_t i = 0; i < sizeof sizes / sizeof sizes[0]; i++)
+        for (int grey = 0; grey < 2; grey++) {
+            /* one float short of the data the header claims */
+            long need = sizes[i][0] * sizes[i][1] * (grey ? 1 : 3) * 4;
+            long data = need > 1000 ? 1000 : need - 4;
+            snprintf(path, sizeof path, "%s/lie_%zu_%d.pfm", dir, i, grey);
+            lying_pfm(path, sizes[i][0], sizes[i][1], grey, data);
+            /* the comparison is with the whole file, header included: a claim within a header's length of
+             * the file's size is left to the decoder, which fails at the missing floats */
+            int claims = sizes[i][0] * sizes[i][1] <= (1L << 29) && need > data + 64;
+            expect_refused(path, claims ? "claims" : NULL);
+        }
+    assert_true(max_rss_kb() < 1024 * 1024);
+}
+
+static void test_lying_hdr_headers(void **state)
+{
+    (void)state;
+    /* more than the bytes a run-length encoded row needs at least (claims), or a header that fits its file
+     * (the smallest sizes with 64 bytes of data) left to the decoder, which fails at the first missing row */
+    const long sizes[][2] = {{60000, 30000}, {16384, 8192}, {8192, 4096}, {4096, 2048}, {32767, 16}, {40000, 2},
+                             {7, 100}};
+    char path[300];
+    for (size_t i = 0; i < sizeof sizes / sizeof sizes[0]; i++)
+        for (long data = 0; data <= 64; data += 32) {
+            snprintf(path, sizeof path, "%s/lie_%zu_%ld.hdr", dir, i, data);
+            lying_hdr(path, sizes[i][0], sizes[i][1], data);
+            expect_refused(path, sizes[i][0] * sizes[i][1] > (1L << 29) ? NULL : "claims");
+        }
+    assert_true(max_rss_kb() < 1024 * 1024);
+}
+
+static void test_memory_budget(void **state)
+{
+    (void)state;
+    GError err;
+    gimage_set_memory_budget(0);
+    assert_int_equal(gimage_memory_budget(), (size_t)GIMAGE_DEFAULT_BUDGET_MB << 20);
+    /* a true 512x512 RGB EXR needs 3 MiB as floats */
+    GImage img, back;
+    char path[300];
+    snprintf(path, sizeof path, "%s/true.exr", dir);
+    assert_int_equal(gimage_create(&img, 512, 512, 3, &err), G_OK);
+    for (size_t i = 0; i < 512u * 512u * 3u; i++)
+        img.pixels[i] = (float)(i % 7) * 0.25f;
+    assert_int_equal(gimage_write(path, &img, NULL, &err), G_OK);
+    gimage_set_memory_budget(3u << 20); /* exactly enough */
+    assert_int_equal(gimage_read(path, GIMAGE_READ_RGB, &back, &err), G_OK);
+    assert_int_equal(back.width, 512);
+    assert_true(memcmp(back.pixels, img.pixels, 512u * 512u * 3u * sizeof(float)) == 0);
+    gimage_free(&back);
+    gimage_set_memory_budget((3u << 20) - 1); /* one byte short */
+    assert_int_equal(gimage_read(path, GIMAGE_READ_RGB, &back, &err), G_ERR_NOMEM);
+    assert_non_null(strstr(err.message, "more than the image memory budget of 2 MiB"));
+    assert_int_equal(gimage_info(path, NULL, NULL, NULL, &err), G_ERR_NOMEM);
+    /* a probe's tables count against the same budget: 512x256 needs about 8 MiB */
+    gimage_set_memory_budget(4u << 20);
+    GProbe *p = NULL;
+    assert_int_equal(gprobe_create(512, 256, NULL, &p, &err), G_ERR_NOMEM);
+    assert_non_null(strstr(err.message, "a 512x256 probe needs"));
+    gimage_set_memory_budget(16u << 20);
+    assert_int_equal(gprobe_create(512, 256, NULL, &p, &err), G_OK);
+    gprobe_destroy(p);
+    gimage_set_memory_budget(0);
+    assert_int_equal(gimage_memory_budget(), (size_t)GIMAGE_DEFAULT_BUDGET_MB << 20);
+    gimage_free(&img);
+}
+
+/* True files at the limit of compression are not refused: a one-colour 4000x4000 PNG (deflate near its
+ * 1032:1) and a PFM of exactly the size its header gives. */
+static void test_true_files_read(void **state)
+{
+    (void)state;
+    GError err;
+    char path[300];
+    GImage img, back;
+    snprintf(path, sizeof path, "%s/flat.png", dir);
+    assert_int_equal(gimage_create(&img, 4000, 4000, 1, &err), G_OK);
+    assert_int_equal(gimage_write(path, &img, NULL, &err), G_OK);
+    gimage_free(&img);
+    assert_int_equal(gimage_read(path, 0, &back, &err), G_OK);
+    assert_int_equal(back.width, 4000);
+    assert_int_equal(back.height, 4000);
+    assert_near(back.pixels[3 * 1234567], 0.0, 0.0);
+    gimage_free(&back);
+    snprintf(path, sizeof path, "%s/exact.pfm", dir);
+    lying_pfm(path, 8, 4, 0, 8 * 4 * 3 * 4);
+    assert_int_equal(gimage_read(path, 0, &back, &err), G_OK);
+    assert_int_equal(back.width, 8);
+    gimage_free(&back);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_lying_png_headers),
+        cmocka_unit_test(test_lying_pfm_headers),
+        cmocka_unit_test(test_lying_hdr_headers),
+        cmocka_unit_test(test_memory_budget),
+        cmocka_unit_test(test_true_files_read),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}
