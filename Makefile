@@ -213,6 +213,12 @@ $(BUILD)/plugins/bad_add.so: tests/plugins/nonconforming.c $(PLUGIN_HDR)
 # into build/fuzz/seed/<target>/ at run time, and tests/regress/<target>/ (every crasher found so far, replayed by
 # tests/test_regress.c in the normal suite). New inputs go to build/fuzz/corpus/<target>/, a crasher to
 # build/fuzz/crashes/<target>/ and the run fails; fix it and keep the input in tests/regress/<target>/.
+# Then the structure-aware generator (tests/fuzz/gen/, fuzz_gen) writes FUZZ_GEN_COUNT inputs per target of up to
+# FUZZ_GEN_BUDGET bytes (long operand lists, reference chains, lying image headers, ...: sizes libFuzzer never
+# reaches), seeded by FUZZ_SEED, and tests/fuzz/run_generated.sh runs them through the same entry points with
+# FUZZ_GEN_TIMEOUT seconds and FUZZ_GEN_MB megabytes per input; a crash, timeout or out-of-memory is reported
+# with the input kept in build/fuzz/crashes/<target>/. Every stage runs; `make fuzz` fails if any failed.
+# `make fuzz-gen` runs the generated inputs only.
 FUZZ_BUILD    := build/fuzz
 FUZZ_SECONDS  ?= 30
 # libFuzzer's seed: 0 draws a new one each run (exploration); CI passes a fixed one, so that a red smoke run
@@ -242,9 +248,22 @@ FUZZ_SEED_image  := examples/textures/*.png examples/scenes/*.png tests/bad/*.hd
 # the per-input leak check would run (and cost more than the input) every time: leaks show at exit instead.
 FUZZ_OPTS_image  := -detect_leaks=0
 FUZZ_OPTS_probe  := -detect_leaks=0
+# The reader's inputs may grow to 64 KiB, so that structure (nesting, lists, chains) can appear.
+FUZZ_OPTS_reader := -max_len=65536
+FUZZ_GEN_COUNT   ?= 24
+FUZZ_GEN_BUDGET  ?= 4194304
+FUZZ_GEN_TIMEOUT ?= 10
+FUZZ_GEN_MB      ?= 2048
+FUZZ_GEN_SRC     := $(wildcard tests/fuzz/gen/*.c)
+FUZZ_GEN_BIN     := $(FUZZ_BUILD)/fuzz_gen
 
-.PHONY: fuzz fuzz-build fuzz-seed
-fuzz-build: $(FUZZ_BIN)
+.PHONY: fuzz fuzz-build fuzz-seed fuzz-gen
+fuzz-build: $(FUZZ_BIN) $(FUZZ_GEN_BIN)
+
+# The generator is an ordinary program (no sanitizers: it only writes files).
+$(FUZZ_GEN_BIN): $(FUZZ_GEN_SRC) tests/fuzz/gen/gen.h
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) -std=c11 -O2 -g -Wall -Wextra -Werror -D_GNU_SOURCE -o $@ $(FUZZ_GEN_SRC) -lm
 
 $(FUZZ_C_OBJ): $(FUZZ_BUILD)/obj/%.o: %.c
 	@mkdir -p $(dir $@)
@@ -277,7 +296,17 @@ fuzz-seed:
 	    for f in $(wildcard $(FUZZ_SEED_$(t))) ''; do [ -z "$$f" ] || cp "$$f" $(FUZZ_BUILD)/seed/$(t)/; done;)
 
 fuzz: fuzz-build fuzz-seed
-	@for t in $(FUZZ_TARGETS); do $(MAKE) --no-print-directory fuzz-run-$$t || exit 1; done
+	@failed=; for t in $(FUZZ_TARGETS); do $(MAKE) --no-print-directory fuzz-run-$$t || failed="$$failed $$t"; done; \
+	for t in $(FUZZ_TARGETS); do $(MAKE) --no-print-directory fuzz-gen-$$t || failed="$$failed gen-$$t"; done; \
+	if [ -n "$$failed" ]; then echo "fuzz: FAILED:$$failed (inputs in $(FUZZ_BUILD)/crashes/)"; exit 1; fi
+
+fuzz-gen: fuzz-build
+	@failed=; for t in $(FUZZ_TARGETS); do $(MAKE) --no-print-directory fuzz-gen-$$t || failed="$$failed $$t"; done; \
+	if [ -n "$$failed" ]; then echo "fuzz-gen: FAILED:$$failed (inputs in $(FUZZ_BUILD)/crashes/)"; exit 1; fi
+
+fuzz-gen-%:
+	@tests/fuzz/run_generated.sh $* $(FUZZ_SEED) $(FUZZ_GEN_COUNT) $(FUZZ_GEN_BUDGET) $(FUZZ_GEN_TIMEOUT) \
+	    $(FUZZ_GEN_MB) $(FUZZ_BUILD)
 
 # One target's run: its corpus directories (those that exist), its options; the executions at the end.
 # Inputs are named by their magic bytes, so OpenImageIO tries only the reader of that extension

@@ -15,7 +15,16 @@
  * Confinement. Files are only read from a private directory made by gfuzz_setup (fixtures: a BFC matrix, an
  * included material file, small images); text inputs containing '/' are skipped, so no include, bfc or image
  * path can leave it ('..' names a directory, which every reader refuses), and plug-in statements are disabled
- * (GReaderOptions.no_plugins), so an input can never dlopen anything. gfuzz_setup must succeed first. */
+ * (GReaderOptions.no_plugins), so an input can never dlopen anything. gfuzz_setup must succeed first.
+ *
+ * Large mode. With GFUZZ_LARGE=1 in the environment (the generated inputs of `make fuzz`, tests/fuzz/gen/), inputs
+ * up to GFUZZ_LARGE_INPUT bytes are run (the reader's file limit raised to match) and image and probe headers
+ * claiming any number of pixels go to the library, which must refuse a lie before it allocates. Otherwise
+ * (libFuzzer, the regression replay) larger inputs and headers over GFUZZ_MAX_PIXELS are skipped, for speed.
+ * In either mode a library with many entries is evaluated at its first and last GFUZZ_EVAL_ENDS entries of each
+ * kind: evaluating every entry of a chain of n references would cost n^2 by the harness alone. In large mode a
+ * text or BFC input that contains GFUZZ_MUST_FAIL (the generator's mark of an input wrong by construction) and
+ * loads is a broken promise: a silent wrong success. */
 #ifndef GENERIC_TESTS_FUZZ_ENTRY_H
 #define GENERIC_TESTS_FUZZ_ENTRY_H
 
@@ -44,19 +53,54 @@
 
 /* A leak in a system library, not in this code, suppressed by a frame of its allocation stack: OpenImageIO's PNG
  * reader keeps its error message in a std::string across libpng's longjmp, which skips the destructor, on every
- * corrupt PNG (fuzz_image unwinds slowly so that this frame is seen).
+ * corrupt PNG. A target that keeps the fast unwinder for allocations (fuzz_image: the slow one made it 2.6 times
+ * slower) defines GFUZZ_FAST_UNWIND and suppresses the frame where that unwinder stops instead.
  * One definition per program: include this header once. */
 const char *__lsan_default_suppressions(void);
 const char *__lsan_default_suppressions(void)
 {
+#ifdef GFUZZ_FAST_UNWIND
+    /* the same string seen through the fast unwinder, which stops in libstdc++ (no frame pointers there) */
+    return "leak:PNGInput::PngReadCallback\n"
+           "leak:std::__cxx11::basic_string<char, std::char_traits<char>, std::allocator<char> >::_M_assign\n";
+#else
     return "leak:PNGInput::PngReadCallback\n";
+#endif
 }
 
 /** Inputs longer than this are skipped (keeps every execution fast; the format limits are tested elsewhere). */
 #define GFUZZ_MAX_INPUT (256u * 1024u)
 /** Images with more pixels than this are not decoded: a header of a few bytes can claim any size (lib/image.cpp
- * accepts up to 2^29 pixels), and decoding a large image under AddressSanitizer takes seconds. */
-#define GFUZZ_MAX_PIXELS (256L * 256L)
+ * accepts up to 2^29 pixels), and decoding a large image under AddressSanitizer takes seconds. 64x64 keeps
+ * OpenImageIO's float buffers (64 KiB) in AddressSanitizer's size classes: larger ones are mapped and unmapped
+ * per allocation, and their page faults took most of the image target's time at 256x256. */
+#ifndef GFUZZ_MAX_PIXELS
+#define GFUZZ_MAX_PIXELS (64L * 64L)
+#endif
+/** The input limit of large mode. */
+#define GFUZZ_LARGE_INPUT (64u * 1024u * 1024u)
+/** Entries evaluated at each end of a kind's list (all of them when there are at most twice as many). */
+#define GFUZZ_EVAL_ENDS 32
+
+/** The generator's mark (tests/fuzz/gen/gen.h, GEN_MUST_FAIL). */
+#define GFUZZ_MUST_FAIL "gfuzz: must be refused"
+
+static size_t gfuzz_max_input = GFUZZ_MAX_INPUT;
+static int gfuzz_large;
+
+/* Whether the input is marked as wrong by construction (large mode only). */
+static int gfuzz_must_fail(const void *data, size_t size)
+{
+    return gfuzz_large && memmem(data, size, GFUZZ_MUST_FAIL, sizeof GFUZZ_MUST_FAIL - 1) != NULL;
+}
+static long gfuzz_max_pixels = GFUZZ_MAX_PIXELS;
+
+/* The index of the j-th entry evaluated out of n (j < gfuzz_eval_count(n)). */
+static int gfuzz_eval_count(int n) { return n < 2 * GFUZZ_EVAL_ENDS ? n : 2 * GFUZZ_EVAL_ENDS; }
+static int gfuzz_eval_index(int j, int n)
+{
+    return n <= 2 * GFUZZ_EVAL_ENDS || j < GFUZZ_EVAL_ENDS ? j : n - 2 * GFUZZ_EVAL_ENDS + j;
+}
 
 static char gfuzz_dir[4096];
 static char gfuzz_why[1024];
@@ -120,6 +164,12 @@ GFUZZ_FN int gfuzz_setup(void)
 {
     if (gfuzz_dir[0])
         return 0;
+    const char *large = getenv("GFUZZ_LARGE");
+    if (large && strcmp(large, "1") == 0) {
+        gfuzz_large = 1;
+        gfuzz_max_input = GFUZZ_LARGE_INPUT;
+        gfuzz_max_pixels = -1;
+    }
     if (generic_register_builtins(NULL) != G_OK)
         return -1;
     const char *tmp = getenv("TMPDIR");
@@ -295,7 +345,7 @@ done:
 /** Loads the text from a string inside the private directory, then evaluates what it defines. */
 GFUZZ_FN int gfuzz_reader(const uint8_t *data, size_t size)
 {
-    if (size > GFUZZ_MAX_INPUT || memchr(data, '/', size))
+    if (size > gfuzz_max_input || memchr(data, '/', size))
         return 0;
     char *text = malloc(size + 1);
     if (!text)
@@ -305,7 +355,7 @@ GFUZZ_FN int gfuzz_reader(const uint8_t *data, size_t size)
     /* the file's own colormodel statement (rgb by default), or one of the models made once (their creation
      * costs more than most inputs) */
     GReaderOptions opt = {.model = size % 4 ? gfuzz_models[size % 4] : NULL, .no_plugins = 1,
-                          .max_file_size = 1u << 20};
+                          .max_file_size = gfuzz_max_input > (1u << 20) ? gfuzz_max_input : 1u << 20};
     int here = open(".", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (here < 0 || chdir(gfuzz_dir) != 0) {
         if (here >= 0)
@@ -327,6 +377,8 @@ GFUZZ_FN int gfuzz_reader(const uint8_t *data, size_t size)
             bad = gfuzz_violation("the message has no position: %s", err.message);
         lib = NULL;
     }
+    if (rc == G_OK && gfuzz_must_fail(data, size))
+        bad = gfuzz_violation("an input wrong by construction (" GFUZZ_MUST_FAIL ") loaded without an error");
     const GColorModel *m = lib ? glibrary_colormodel(lib) : NULL;
     if (lib && !m)
         bad = gfuzz_violation("a loaded library without a colour model");
@@ -334,7 +386,8 @@ GFUZZ_FN int gfuzz_reader(const uint8_t *data, size_t size)
     GColor c = {0};
     if (m && !bad && gcolor_alloc(&c, m) == G_OK) {
         int n = glibrary_count(lib, GKIND_COLOR);
-        for (int i = 0; i < n && !bad; i++) {
+        for (int j = 0; j < gfuzz_eval_count(n) && !bad; j++) {
+            int i = gfuzz_eval_index(j, n);
             const char *name = NULL;
             if (!glibrary_entry(lib, GKIND_COLOR, i, &name, NULL) || !name)
                 continue;
@@ -351,15 +404,16 @@ GFUZZ_FN int gfuzz_reader(const uint8_t *data, size_t size)
     /* every material and node; generators through their values at a point */
     for (int kind = GKIND_MATERIAL; m && kind <= GKIND_NODE && !bad; kind++) {
         int n = glibrary_count(lib, (GKind)kind);
-        for (int i = 0; i < n && !bad; i++) {
+        for (int j = 0; j < gfuzz_eval_count(n) && !bad; j++) {
             const char *name = NULL;
-            GMaterial *mat = glibrary_entry(lib, (GKind)kind, i, &name, NULL);
+            GMaterial *mat = glibrary_entry(lib, (GKind)kind, gfuzz_eval_index(j, n), &name, NULL);
             if (mat)
                 bad = gfuzz_eval_material(mat, name ? name : "(anonymous)");
         }
     }
     int ng = m ? glibrary_count(lib, GKIND_GENERATOR) : 0;
-    for (int i = 0; i < ng && !bad; i++) {
+    for (int j = 0; j < gfuzz_eval_count(ng) && !bad; j++) {
+        int i = gfuzz_eval_index(j, ng);
         const GGenerator *g = glibrary_entry(lib, GKIND_GENERATOR, i, NULL, NULL);
         GScratch *s = gscratch_create(4096);
         GSurfPoint sp;
@@ -392,7 +446,7 @@ GFUZZ_FN int gfuzz_reader(const uint8_t *data, size_t size)
 
 GFUZZ_FN int gfuzz_bfc(const uint8_t *data, size_t size)
 {
-    if (size > GFUZZ_MAX_INPUT)
+    if (size > gfuzz_max_input)
         return 0;
     /* an exact-size copy, so reading past the end is caught */
     char *text = malloc(size ? size : 1);
@@ -411,6 +465,9 @@ GFUZZ_FN int gfuzz_bfc(const uint8_t *data, size_t size)
             bad = gfuzz_violation("a failed parse left data behind");
         if (!bad && strncmp(err.message, "fuzz.BFC:", 9) != 0)
             bad = gfuzz_violation("the message has no position: %s", err.message);
+    } else if (gfuzz_must_fail(data, size)) {
+        bad = gfuzz_violation("a matrix wrong by construction (" GFUZZ_MUST_FAIL ") parsed without an error "
+                              "(%d x %d)", d.rerad.n_out, d.rerad.n_in);
     } else if (!d.values || d.rerad.n_in < 1 || d.rerad.n_out < 1 || !(d.rerad.in_step > 0) ||
                !(d.rerad.out_step > 0)) {
         bad = gfuzz_violation("a parsed matrix without values or with an empty grid");
@@ -466,7 +523,7 @@ static const char *gfuzz_image_ext(const uint8_t *d, size_t n)
 }
 
 /* Writes the bytes as private/input-N.EXT (name: its last path component): 0 to go on, 1 to skip the input (it
- * cannot be written, or its header claims more than GFUZZ_MAX_PIXELS), -1 when gimage_info accepts a header
+ * cannot be written, or its header claims more than gfuzz_max_pixels), -1 when gimage_info accepts a header
  * with a size below 1. The caller removes the file. */
 static int gfuzz_image_file(const uint8_t *data, size_t size, const char *ext, char *path, size_t pathsize,
                             char *name, size_t namesize)
@@ -481,7 +538,7 @@ static int gfuzz_image_file(const uint8_t *data, size_t size, const char *ext, c
     int rc = gimage_info(path, &w, &h, &ch, &err);
     if (rc == G_OK && (w <= 0 || h <= 0 || ch < 1))
         return gfuzz_violation("gimage_info accepted a size of %dx%d with %d channels", w, h, ch);
-    if (rc == G_OK && (long)w * h > GFUZZ_MAX_PIXELS)
+    if (rc == G_OK && gfuzz_max_pixels >= 0 && (long)w * h > gfuzz_max_pixels)
         return 1;
     return 0;
 }
@@ -497,7 +554,7 @@ static int gfuzz_pixels_ok(const float *p, size_t n, int nonneg, const char *wha
 /** The bytes as a light probe file (.pfm or .hdr by magic), loaded and approximated by lights. */
 GFUZZ_FN int gfuzz_probe(const uint8_t *data, size_t size)
 {
-    if (size > GFUZZ_MAX_INPUT)
+    if (size > gfuzz_max_input)
         return 0;
     const char *ext = size >= 2 && data[0] == 'P' ? ".pfm" : ".hdr";
     char path[4200], name[64];
@@ -564,7 +621,7 @@ GFUZZ_FN int gfuzz_probe(const uint8_t *data, size_t size)
 /** The bytes as an image file: gimage_read with flags from the size, and the image node evaluated. */
 GFUZZ_FN int gfuzz_image(const uint8_t *data, size_t size)
 {
-    if (size > GFUZZ_MAX_INPUT)
+    if (size > gfuzz_max_input)
         return 0;
     const char *ext = gfuzz_image_ext(data, size);
     char path[4200], name[64];
