@@ -22,6 +22,13 @@ void glibrary_set_model(GLibrary *lib, GColorModel *owned, const GColorModel *bo
 /** The model, or NULL when none has been chosen yet. */
 const GColorModel *glibrary_model_or_null(const GLibrary *lib);
 
+/* ---- confinement (lib/reader_confine.c) ---- */
+
+/** G_OK when path (resolved with its symbolic links; the file itself need not exist) lies under the directory
+ * dir, with *real a gmem_alloc copy of the resolved path; G_ERR_INVALID naming both otherwise (or G_ERR_IO when
+ * either cannot be resolved), *real NULL. */
+int greader_confine(const char *dir, const char *path, char **real, GError *err);
+
 /* ---- the reader (lib/reader.c) ---- */
 
 /** A parameter name of an entry and where it was written (a constructor's complaint about it is placed there). */

@@ -217,17 +217,30 @@ int greader_path(GReader *r, char **out, GError *err)
     const char *dir = greader_dir(r);
     if (rel[0] == '/' || strcmp(dir, ".") == 0) {
         *out = rel;
-        return G_OK;
+    } else {
+        size_t a = strlen(dir), b = strlen(rel);
+        *out = gmem_alloc(a + b + 2);
+        if (*out) {
+            memcpy(*out, dir, a);
+            (*out)[a] = '/';
+            memcpy(*out + a + 1, rel, b + 1);
+        }
+        gmem_free(rel);
+        if (!*out)
+            return greader_error(r, err, "out of memory");
     }
-    size_t a = strlen(dir), b = strlen(rel);
-    *out = gmem_alloc(a + b + 2);
-    if (*out) {
-        memcpy(*out, dir, a);
-        (*out)[a] = '/';
-        memcpy(*out + a + 1, rel, b + 1);
+    if (r->opt.confine_dir) { /* the file read is the resolved one that was checked */
+        char *real = NULL;
+        int rc = greader_confine(r->opt.confine_dir, *out, &real, err);
+        gmem_free(*out);
+        *out = real;
+        if (rc != G_OK) {
+            char msg[sizeof err->message];
+            snprintf(msg, sizeof msg, "%s", err ? err->message : "");
+            return greader_error_at(r, err, rc, r->cur.tok.line, r->cur.tok.col, "%s", msg);
+        }
     }
-    gmem_free(rel);
-    return *out ? G_OK : greader_error(r, err, "out of memory");
+    return G_OK;
 }
 
 /* ---- parameter blocks ---- */

@@ -95,9 +95,23 @@ typedef struct GReaderOptions {
     int max_depth;
     /** Per-file size limit in bytes; 0 = GREADER_DEFAULT_MAX_FILE_SIZE. */
     size_t max_file_size;
-    /** Non-zero refuses `plugin` statements (for files from untrusted sources). */
+    /** Non-zero refuses `plugin` statements (for files from untrusted sources), whatever allow_plugins says. */
     int no_plugins;
+    /** Non-zero allows `plugin` statements: a module runs native code, so a file may load one only with the
+     * caller's consent - this field, or GENERIC_ALLOW_PLUGINS=1 in the environment (plugin.h). Without either, a
+     * `plugin` statement fails naming these options. */
+    int allow_plugins;
+    /** When set, every file the load reads - the file itself, includes, plug-ins and every path read with
+     * greader_path (BFC files, images, meshes, probes) - must lie under this directory once symbolic links are
+     * resolved; others fail with G_ERR_INVALID at their name. NULL: no confinement. Not owned. */
+    const char *confine_dir;
 } GReaderOptions;
+
+/** Takes the reader options of a tool's command line out of argv[1..*argc-1] into opt (the other fields are
+ * left as they are): `--allow-plugins` sets opt->allow_plugins, `--confine DIR` (or `--confine=DIR`) sets
+ * opt->confine_dir to that argument (borrowed from argv). The remaining arguments keep their order; argv[*argc]
+ * becomes NULL. G_ERR_INVALID for a --confine without a value or whose DIR is not a directory. */
+GENERIC_API int greader_options_args(int *argc, char **argv, GReaderOptions *opt, GError *err);
 
 /** Reads a file into a new library. On failure *out is NULL, nothing is leaked and err holds
  * "file:line:col: message". */
@@ -195,8 +209,12 @@ GENERIC_API int greader_ident(GReader *r, char *buf, size_t size, GError *err);
 /** Reads an identifier that must be one of the NULL-terminated choices; *index gets its position. */
 GENERIC_API int greader_choice(GReader *r, const char *const *choices, int *index, GError *err);
 /** Reads a quoted file name and resolves it against the directory of the file being read; *out is a
- * gmem_alloc copy of the resulting path. */
+ * gmem_alloc copy of the resulting path. When the load is confined (GReaderOptions.confine_dir) a path outside
+ * the directory is an error at the name, and *out is the path with its symbolic links resolved. */
 GENERIC_API int greader_path(GReader *r, char **out, GError *err);
+/** G_OK when the load may read path: always without confinement, else when path lies under
+ * GReaderOptions.confine_dir (see there); for parse routines that find files other than with greader_path. */
+GENERIC_API int greader_path_allowed(GReader *r, const char *path, GError *err);
 
 /* ---- parameter blocks ---- */
 

@@ -160,7 +160,7 @@ for case in "bad_abi:was built for module interface version $((ABI + 41)), this 
         grep -q -F "$msg" "$TMP/err" || fail "--plugin $so.so: expected '$msg', got: $(cat "$TMP/err")"
     fi
     printf 'plugin "%s"\nmaterial m lambert\n' "$PLUGINS/$so.so" > "$TMP/plugin_$so.mat"
-    run_fails "plugin \"$so.so\" statement" "$GMAT" list "$TMP/plugin_$so.mat"
+    run_fails "plugin \"$so.so\" statement" "$GMAT" list "$TMP/plugin_$so.mat" --allow-plugins
     grep -q -F "plugin_$so.mat:1:8: " "$TMP/err" && grep -q -F "$msg" "$TMP/err" ||
         fail "plugin statement $so.so: expected 'plugin_$so.mat:1:8: ...$msg', got: $(cat "$TMP/err")"
 done

@@ -73,7 +73,7 @@ EOM
 sed 1d scene.scene > plain.scene
 "$BIN/gtrace" plain.scene -o plain.exr --plugin "$G" --colormodel grey > out 2>&1 || fail "gtrace --plugin --colormodel grey: $(cat out)"
 grep -q "grey," out || fail "gtrace --plugin: not rendered in grey: $(cat out)"
-GENERIC_PLUGIN_PATH="$PLUGINS" "$BIN/gtrace" scene.scene -o grey.exr --colormodel grey > out 2>&1 ||
+GENERIC_PLUGIN_PATH="$PLUGINS" "$BIN/gtrace" scene.scene -o grey.exr --colormodel grey --allow-plugins > out 2>&1 ||
     fail "gtrace --colormodel grey with plugin \"grey.so\" in the scene: $(cat out)"
 grep -q "16x12, 1 spp, depth 2, grey," out || fail "gtrace: the scene's module's model was not used: $(cat out)"
 "$BIN/gtrace" plain.scene -o x.exr --plugin nothere.so > out 2>&1 && fail "gtrace --plugin nothere.so succeeded"
