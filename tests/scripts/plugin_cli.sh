@@ -95,9 +95,9 @@ GENERIC_PLUGIN_PATH="$PLUGINS" "$BIN/gcolor" list --plugin ./grey.so > out 2>&1 
 mkdir scenes
 cp "$PLUGINS/grey.so" scenes/
 cp scene.scene scenes/
-(cd / && "$BIN/gtrace" "$TMP/scenes/scene.scene" -o "$TMP/next.exr" --colormodel grey -q) > out 2>&1 ||
+(cd / && "$BIN/gtrace" "$TMP/scenes/scene.scene" -o "$TMP/next.exr" --colormodel grey -q --allow-plugins) > out 2>&1 ||
     fail "plugin \"grey.so\" next to the scene is not found: $(cat out)"
-"$BIN/gtrace" scene.scene -o x.exr > out 2>&1 && fail "plugin \"grey.so\" found without a path"
+"$BIN/gtrace" scene.scene -o x.exr --allow-plugins > out 2>&1 && fail "plugin \"grey.so\" found without a path"
 grep -q "scene.scene:1:8: cannot load module 'grey.so': file not found in \." out ||
     fail "a file's missing module: no positioned message listing the directory: $(cat out)"
 
