@@ -75,7 +75,7 @@ int greader_locate(GReader *r, GError *err)
         param_position(r, param, &line, &col);
     char msg[sizeof err->message];
     snprintf(msg, sizeof msg, "%s", err->message[0] ? err->message : gstatus_string(code));
-    greader_error_at(r, err, code, line, col, "%s", msg);
+    code = greader_error_at(r, err, code, line, col, "%s", msg);
     memcpy(err->param, param, sizeof param);
     return code;
 }
@@ -113,6 +113,16 @@ int greader_peek(GReader *r, GToken *tok, GError *err)
     if (rc == G_OK && tok)
         *tok = r->ahead.tok;
     return rc;
+}
+
+void greader_take(GReader *r, GToken *tok)
+{
+    r->cur.tok = r->ahead.tok;
+    memcpy(r->cur.text, r->ahead.text, strlen(r->ahead.text) + 1);
+    r->cur.tok.text = r->cur.text;
+    r->have_ahead = 0;
+    if (tok)
+        *tok = r->cur.tok;
 }
 
 int greader_next(GReader *r, GToken *tok, GError *err)
@@ -409,7 +419,7 @@ static int parse_statements(GReader *r, GError *err)
         if (t.type != GTOK_IDENT)
             return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "expected a statement (%s), found %s",
                                     statement_list, found);
-        greader_next(r, &t, err);
+        greader_take(r, &t);
         int known = !strcmp(t.text, "include") || !strcmp(t.text, "plugin") || !strcmp(t.text, "colormodel");
         for (int k = GKIND_COLOR; k < GKIND_COUNT && !known; k++)
             known = strcmp(t.text, gkind_name((GKind)k)) == 0;

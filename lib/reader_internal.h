@@ -93,6 +93,8 @@ struct GReader {
     int nincluded, capincluded;
 };
 
+/** Consumes the token a successful greader_peek just returned (it cannot fail, so it has no status). */
+void greader_take(GReader *r, GToken *tok);
 /** Pushes a frame, checking the nesting limit at (line, col). */
 int greader_push_frame(GReader *r, int is_block, const GTypeInfo *type, int line, int col, GError *err);
 /** Pops frames down to n. */

@@ -55,7 +55,7 @@ typedef struct GImageWriteOptions {
 
 /** Allocates a black image of the given size (channels 1..4); G_ERR_INVALID for bad sizes,
  * G_ERR_NOMEM when the allocation fails. */
-GENERIC_API int gimage_create(GImage *img, int width, int height, int channels, GError *err);
+GENERIC_API GENERIC_NODISCARD int gimage_create(GImage *img, int width, int height, int channels, GError *err);
 
 /** Frees the pixels and zeroes the struct; NULL, or an image already freed, is a no-op. */
 GENERIC_API void gimage_free(GImage *img);
@@ -63,16 +63,16 @@ GENERIC_API void gimage_free(GImage *img);
 /** Reads the first subimage of a file into img (which is overwritten, not freed first). flags: GIMAGE_READ_*.
  * G_ERR_IO when the file cannot be opened or decoded (the message names the file and gives OpenImageIO's
  * reason), G_ERR_NOMEM when out of memory. On failure img is zeroed. */
-GENERIC_API int gimage_read(const char *path, unsigned flags, GImage *img, GError *err);
+GENERIC_API GENERIC_NODISCARD int gimage_read(const char *path, unsigned flags, GImage *img, GError *err);
 
 /** Reads only the size and channel count of a file (channels as the file has them, 1..n). G_ERR_IO when
  * the file cannot be opened or its header gives a size or channel count below 1. */
-GENERIC_API int gimage_info(const char *path, int *width, int *height, int *channels, GError *err);
+GENERIC_API GENERIC_NODISCARD int gimage_info(const char *path, int *width, int *height, int *channels, GError *err);
 
 /** Writes img to path, encoding chosen by the extension (see the top of this file); the file appears
  * complete or not at all. G_ERR_INVALID for a bad image, G_ERR_IO when the format is unknown or the
  * write fails. */
-GENERIC_API int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *opt, GError *err);
+GENERIC_API GENERIC_NODISCARD int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *opt, GError *err);
 
 /** The sRGB transfer function (IEC 61966-2-1): linear value in [0, 1] to its encoded value. */
 GENERIC_API double gimage_srgb_encode(double linear);

@@ -122,21 +122,21 @@ typedef int (*GModuleInitFn)(GModuleApi *api, GError *err);
 /** Loads a module: G_ERR_IO with the dlerror() text when it cannot be opened or lacks a symbol, G_ERR_VERSION
  * when it was built for another GMODULE_ABI_VERSION, the init's status when that fails, G_ERR_EXISTS when it
  * registers a name taken already. Loading the same file twice is a no-op. Thread safe. */
-GENERIC_API int gplugin_load(const char *path, GError *err);
+GENERIC_API GENERIC_NODISCARD int gplugin_load(const char *path, GError *err);
 /** Loads a module found by the rule above with `dir` as the base directory (NULL = the current directory):
  * a name with a slash is dir/name (or name itself when absolute); a bare name is dir/name if that exists, else
  * the first GENERIC_PLUGIN_PATH directory that holds it. G_ERR_IO naming the directories searched when no
  * file is found; otherwise as gplugin_load. */
-GENERIC_API int gplugin_load_from(const char *name, const char *dir, GError *err);
+GENERIC_API GENERIC_NODISCARD int gplugin_load_from(const char *name, const char *dir, GError *err);
 /** Finds a module by the rule above without loading it: *path receives a gmem_alloc copy of the file to load
  * (free with gmem_free; NULL on failure). G_ERR_IO naming the directories searched when no file is found. */
-GENERIC_API int gplugin_find(const char *name, const char *dir, char **path, GError *err);
+GENERIC_API GENERIC_NODISCARD int gplugin_find(const char *name, const char *dir, char **path, GError *err);
 /** Loads the module of every `--plugin FILE` (or `--plugin=FILE`) in argv[1..*argc-1], searched as
  * gplugin_load_from with the current directory, and removes those arguments from argv (keeping the order of the
  * others; argv[*argc] becomes NULL). Tools call it first, so that every later use of the registry sees the
  * modules. G_ERR_INVALID for a --plugin without a value, a module's load error otherwise (argv then unchanged
  * beyond the arguments consumed so far). */
-GENERIC_API int gplugin_load_args(int *argc, char **argv, GError *err);
+GENERIC_API GENERIC_NODISCARD int gplugin_load_args(int *argc, char **argv, GError *err);
 /** Name of the environment variable with the module search directories. */
 #define GPLUGIN_PATH_ENV "GENERIC_PLUGIN_PATH"
 /** Name of the environment variable that allows `plugin` statements in files when it is "1" (reader.h). */
