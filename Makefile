@@ -150,6 +150,7 @@ PLUGIN_INC := $(BUILD)/plugins/include
 PLUGIN_HDR := $(patsubst include/generic/%,$(PLUGIN_INC)/generic/%,$(wildcard include/generic/*.h))
 PLUGIN_SO  := $(PLUGIN_SRC:examples/plugins/%.c=$(BUILD)/plugins/%.so) \
               $(BUILD)/plugins/bad_abi.so $(BUILD)/plugins/failing_init.so $(BUILD)/plugins/no_init.so \
+              $(BUILD)/plugins/constructor_only.so \
               $(BUILD)/plugins/gain.so $(BUILD)/plugins/skewed.so $(BUILD)/plugins/bad_add.so
 # -fvisibility=hidden: a module's own symbols never bind to the program's copies (only the two GENERIC_MODULE_EXPORT
 # symbols are exported).
@@ -174,6 +175,9 @@ $(BUILD)/plugins/failing_init.so: tests/plugins/bad_module.c $(PLUGIN_HDR)
 
 $(BUILD)/plugins/no_init.so: tests/plugins/bad_module.c $(PLUGIN_HDR)
 	$(CC) $(PLUGIN_CFLAGS) -DNO_INIT -o $@ $<
+
+$(BUILD)/plugins/constructor_only.so: tests/plugins/bad_module.c $(PLUGIN_HDR)
+	$(CC) $(PLUGIN_CFLAGS) -DNOT_A_MODULE -o $@ $<
 
 # ---- built-in files as run-time modules: the proof that a type's file is self-contained ----
 # Each file of BUILTIN_MODULES is compiled as it is in the tree, plus the one line `GENERIC_MODULE(&gtype_NAME);`

@@ -14,6 +14,7 @@
 #define HEADER_LINES 10
 #define MAX_SIZE (16u * 1024u * 1024u)
 #define MAX_COLUMNS 4096
+#define MAX_TOKEN 255 /* longest number accepted; a longer one is an error, never split */
 
 typedef struct Cursor {
     const char *name;
@@ -21,6 +22,7 @@ typedef struct Cursor {
     int line;
     const char *line_start;
     const char *tok; /* start of the last number read */
+    int trusted;     /* the grid line was valid: the file is a BFC file and its tokens may be quoted */
 } Cursor;
 
 /* Moves to the start of the next line. */
@@ -48,7 +50,9 @@ static int fail(const Cursor *c, GError *err, const char *what)
     return gerror_set(err, G_ERR_PARSE, "%s:%d:%d: %s", c->name, c->line, col(c), what);
 }
 
-/* Reads one number on the current line. */
+/* Reads one number on the current line: the whole whitespace-delimited token, which must be a finite decimal
+ * number (a token longer than MAX_TOKEN is refused, not cut). Before the grid line has been read the file is not
+ * known to be a BFC file, and nothing of it is quoted. */
 static int number(Cursor *c, double *out, const char *what, GError *err)
 {
     if (at_line_end(c)) {
@@ -56,22 +60,31 @@ static int number(Cursor *c, double *out, const char *what, GError *err)
         snprintf(msg, sizeof msg, "expected %s, found the end of the line", what);
         return fail(c, err, msg);
     }
-    char buf[64];
+    char buf[MAX_TOKEN + 1];
     size_t n = 0;
     const char *start = c->p;
     c->tok = start;
-    while (c->p < c->end && !strchr(" \t\r\n", *c->p) && n + 1 < sizeof buf)
-        buf[n++] = *c->p++;
+    while (c->p + n < c->end && !strchr(" \t\r\n", c->p[n]))
+        n++;
+    if (n > MAX_TOKEN) {
+        char msg[160];
+        snprintf(msg, sizeof msg, "expected %s, found a token of %zu characters (at most %d)", what, n, MAX_TOKEN);
+        return fail(c, err, msg);
+    }
+    memcpy(buf, start, n);
     buf[n] = '\0';
     char *stop;
     errno = 0;
     double v = glex_strtod(buf, &stop);
     if (*stop || !n || !isfinite(v) || strpbrk(buf, "nNiIxX")) {
-        c->p = start;
-        char msg[160];
-        snprintf(msg, sizeof msg, "expected %s, found '%s'", what, buf);
+        char msg[MAX_TOKEN + 160];
+        if (c->trusted)
+            snprintf(msg, sizeof msg, "expected %s, found '%s'", what, buf);
+        else
+            snprintf(msg, sizeof msg, "expected %s: not a BFC-450 matrix file", what);
         return fail(c, err, msg);
     }
+    c->p = start + n;
     *out = v;
     return G_OK;
 }
@@ -81,7 +94,7 @@ static int near(double a, double b) { return fabs(a - b) < 1e-6 * (fabs(a) + fab
 int gbfc_parse(const char *text, size_t len, const char *name, GBfcData *out, GError *err)
 {
     memset(out, 0, sizeof *out);
-    Cursor c = {name ? name : "<bfc>", text, text + len, 1, text, text};
+    Cursor c = {name ? name : "<bfc>", text, text + len, 1, text, text, 0};
     for (int i = 1; i <= HEADER_LINES; i++) {
         if (c.p >= c.end)
             return fail(&c, err, "file ends inside the 10 header lines");
@@ -111,6 +124,7 @@ int gbfc_parse(const char *text, size_t len, const char *name, GBfcData *out, GE
         return fail(&c, err, "invalid grid line (expected: out_min out_max out_step n_in in_min in_step)");
     }
     int n_out = (int)floor(rows_f + 0.5), n_in = (int)g[3];
+    c.trusted = 1;
     next_line(&c);
     /* column labels */
     while (c.p < c.end && (*c.p == ' ' || *c.p == '\t'))

@@ -305,6 +305,31 @@ int gcolor_from_rgb(GColor *c, const double rgb[3], GColorRole role)
     return c->model->cls->from_nm(c->model, &s, role, c);
 }
 
+/* A matrix whose emission or excitation wavelengths all lie outside the model's range (a spectral model's
+ * samples, else the exchange grid GNM_MIN..GNM_MAX) would convert to black: refused, naming both ranges. */
+static int reradiation_overlaps(const GColorModel *m, const GReradiation *r, GError *err)
+{
+    double lo = GNM_MIN, hi = GNM_MAX;
+    if (m->nsamples > 0 && isfinite(m->lambda_min) && m->lambda_step > 0) {
+        lo = m->lambda_min;
+        hi = m->lambda_min + (m->nsamples - 1) * m->lambda_step;
+    }
+    double tol = 1e-6 * (fabs(lo) + fabs(hi));
+    double out_hi = r->out_min + (r->n_out - 1) * r->out_step, in_hi = r->in_min + (r->n_in - 1) * r->in_step;
+    const char *which = NULL;
+    double a = 0.0, b = 0.0;
+    if (!(out_hi >= lo - tol && r->out_min <= hi + tol))
+        which = "emission", a = r->out_min, b = out_hi;
+    else if (!(in_hi >= lo - tol && r->in_min <= hi + tol))
+        which = "excitation", a = r->in_min, b = in_hi;
+    if (!which)
+        return G_OK;
+    return gerror_set(err, G_ERR_INVALID,
+                      "re-radiation matrix: its %s wavelengths %g..%g nm lie outside the range of the colour "
+                      "model '%s' (%g..%g nm), so it would be black",
+                      which, a, b, gcolormodel_name(m), lo, hi);
+}
+
 int gcolor_from_reradiation(GColor *c, const GReradiation *r, GError *err)
 {
     if (!r || !r->data || r->n_in <= 0 || r->n_out <= 0 || !(r->in_step > 0) || !(r->out_step > 0) ||
@@ -313,6 +338,9 @@ int gcolor_from_reradiation(GColor *c, const GReradiation *r, GError *err)
     for (long i = 0; i < (long)r->n_in * r->n_out; i++)
         if (!isfinite(r->data[i]))
             return gerror_set(err, G_ERR_INVALID, "re-radiation matrix holds a non-finite value");
+    int rc = reradiation_overlaps(c->model, r, err);
+    if (rc != G_OK)
+        return rc;
     if (c->model->cls->from_reradiation)
         return c->model->cls->from_reradiation(c->model, r, c, err);
     /* Fold: the response to an equal-energy light over the exchange range, read as a reflectance. */
@@ -337,7 +365,7 @@ int gcolor_from_reradiation(GColor *c, const GReradiation *r, GError *err)
         }
         s.v[i] = (float)v;
     }
-    int rc = c->model->cls->from_nm(c->model, &s, GCOLOR_REFLECTANCE, c);
+    rc = c->model->cls->from_nm(c->model, &s, GCOLOR_REFLECTANCE, c);
     /* A fluorescent pigment's fold is often outside the rgb gamut (day-glo orange has a negative blue): a
      * negative reflectance would subtract light, so such components become 0 (hue kept as far as the gamut
      * allows; the spectral models sample the non-negative fold and are not affected). */

@@ -19,6 +19,7 @@ void glexer_init(GLexer *lx, const char *name, const char *text, size_t len)
     lx->pos = 0;
     lx->line = 1;
     lx->col = 1;
+    lx->quiet = 0;
 }
 
 static locale_t c_locale;
@@ -52,7 +53,10 @@ static void advance(GLexer *lx)
 static int fail(const GLexer *lx, GError *err, int line, int col, const char *fmt, const char *arg)
 {
     char msg[400];
-    snprintf(msg, sizeof msg, fmt, arg);
+    if (lx->quiet) /* a file that does not start with a statement: say so, and quote nothing of it */
+        snprintf(msg, sizeof msg, "%s", GLEX_FOREIGN_MESSAGE);
+    else
+        snprintf(msg, sizeof msg, fmt, arg);
     gerror_set(err, G_ERR_PARSE, "%s:%d:%d: %s", lx->name, line, col, msg);
     if (err) {
         err->line = line;

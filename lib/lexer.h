@@ -6,6 +6,11 @@
 #include "generic/error.h"
 #include "generic/reader.h"
 
+/** What a quiet lexer (and the reader, for a first token that is not a statement) reports. */
+#define GLEX_FOREIGN_MESSAGE                                                                                \
+    "not a libgeneric text file: it does not begin with a statement (include, color, material, ...; its text is " \
+    "not shown)"
+
 /** Longest token text, including the terminating NUL. */
 #define GLEX_TEXT_MAX 4096
 
@@ -21,6 +26,9 @@ typedef struct GLexer {
     const char *src;
     size_t len, pos;
     int line, col;
+    /** Non-zero while the text is not known to be in the format (no statement read yet): errors then quote
+     * nothing of it. glexer_init clears it. */
+    int quiet;
 } GLexer;
 
 /** Starts scanning text of len bytes; name is used in messages. */

@@ -2,8 +2,12 @@
 #include "generic/plugin.h"
 #include "generic/file.h"
 #include "generic/memory.h"
+#include "plugin_elf.h"
 
 #include <dlfcn.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <unistd.h>
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -15,6 +19,7 @@ typedef struct Module {
     struct Module *next;
     char *real; /* canonical path */
     void *handle;
+    int fd; /* the file checked and loaded, open as long as the module is (its /proc/self/fd name stays unique) */
 } Module;
 
 typedef struct Pending {
@@ -103,6 +108,42 @@ static int init_module(void *h, const char *path, GError *err)
     return rc == G_OK ? G_OK : 1;
 }
 
+/* Opens the file that realpath names and checks it (plugin_elf.c) before dlopen runs anything of it; the file
+ * checked is the one loaded (through /proc/self/fd when it exists, so it cannot be swapped in between). On
+ * success *fd is the open file, to be kept open while the module is loaded: dlopen knows the module by that
+ * name, and an fd number closed and reused would make a later module look loaded already. */
+static void *open_checked(const char *real, const char *path, int *fd_out, int *rc, GError *err)
+{
+    *fd_out = -1;
+    int fd = open(real, O_RDONLY | O_CLOEXEC);
+    if (fd < 0) {
+        *rc = gerror_set(err, G_ERR_IO, "cannot load module '%s': %s", path, strerror(errno));
+        return NULL;
+    }
+    int abi = -1;
+    *rc = gplugin_elf_check(fd, path, &abi, err);
+    if (*rc == G_OK && abi != -1 && abi != GMODULE_ABI_VERSION)
+        *rc = gerror_set(err, G_ERR_VERSION,
+                         "module '%s' was built for module interface version %d, this library has version %d "
+                         "(not loaded, nothing of it was run)",
+                         path, abi, GMODULE_ABI_VERSION);
+    void *h = NULL;
+    if (*rc == G_OK) {
+        char byfd[64];
+        snprintf(byfd, sizeof byfd, "/proc/self/fd/%d", fd);
+        h = dlopen(access(byfd, R_OK) == 0 ? byfd : real, RTLD_NOW | RTLD_LOCAL);
+        if (!h) {
+            const char *e = dlerror();
+            *rc = gerror_set(err, G_ERR_IO, "cannot load module '%s': %s", path, e ? e : "unknown dlopen error");
+        }
+    }
+    if (h)
+        *fd_out = fd;
+    else
+        close(fd);
+    return h;
+}
+
 static int load_path(const char *path, GError *err)
 {
     if (!path || !path[0])
@@ -120,15 +161,14 @@ static int load_path(const char *path, GError *err)
     Module *m = NULL;
     if (already_loaded(real))
         goto done;
-    void *h = dlopen(real, RTLD_NOW | RTLD_LOCAL);
-    if (!h) {
-        const char *e = dlerror();
-        rc = gerror_set(err, G_ERR_IO, "cannot load module '%s': %s", path, e ? e : "unknown dlopen error");
+    int fd;
+    void *h = open_checked(real, path, &fd, &rc, err);
+    if (!h)
         goto done;
-    }
     rc = init_module(h, path, err);
     if (rc < 0) {
         dlclose(h);
+        close(fd);
         goto done;
     }
     m = gmem_calloc(1, sizeof *m);
@@ -143,6 +183,7 @@ static int load_path(const char *path, GError *err)
         rc = G_ERR_EXISTS;
     }
     m->handle = h;
+    m->fd = fd;
     m->next = modules;
     modules = m;
     nmodules++;
@@ -183,17 +224,14 @@ static void note_dir(char *list, size_t size, const char *dir)
         snprintf(list + used, size - used, "%s%s", used ? ", " : "", dir);
 }
 
-int gplugin_load_from(const char *name, const char *dir, GError *err)
+int gplugin_find(const char *name, const char *dir, char **path, GError *err)
 {
+    *path = NULL;
     if (!name || !name[0])
         return gerror_set(err, G_ERR_INVALID, "no module path given");
     if (strchr(name, '/')) { /* a path: relative to dir */
-        char *p = join(dir, name);
-        if (!p)
-            return gerror_set(err, G_ERR_NOMEM, "out of memory loading module '%s'", name);
-        int rc = load_path(p, err);
-        gmem_free(p);
-        return rc;
+        *path = join(dir, name);
+        return *path ? G_OK : gerror_set(err, G_ERR_NOMEM, "out of memory loading module '%s'", name);
     }
     char searched[1024] = "";
     const char *base = dir && dir[0] ? dir : ".";
@@ -201,9 +239,8 @@ int gplugin_load_from(const char *name, const char *dir, GError *err)
     if (!p)
         return gerror_set(err, G_ERR_NOMEM, "out of memory loading module '%s'", name);
     if (exists(p)) {
-        int rc = load_path(p, err);
-        gmem_free(p);
-        return rc;
+        *path = p;
+        return G_OK;
     }
     gmem_free(p);
     note_dir(searched, sizeof searched, base);
@@ -223,9 +260,8 @@ int gplugin_load_from(const char *name, const char *dir, GError *err)
             if (!p)
                 return gerror_set(err, G_ERR_NOMEM, "out of memory loading module '%s'", name);
             if (exists(p)) {
-                int rc = load_path(p, err);
-                gmem_free(p);
-                return rc;
+                *path = p;
+                return G_OK;
             }
             gmem_free(p);
         }
@@ -234,6 +270,16 @@ int gplugin_load_from(const char *name, const char *dir, GError *err)
     return gerror_set(err, G_ERR_IO, "cannot load module '%s': file not found in %s (%s%s)", name, searched,
                       env && env[0] ? GPLUGIN_PATH_ENV "=" : GPLUGIN_PATH_ENV " is not set",
                       env && env[0] ? env : "");
+}
+
+int gplugin_load_from(const char *name, const char *dir, GError *err)
+{
+    char *path;
+    int rc = gplugin_find(name, dir, &path, err);
+    if (rc == G_OK)
+        rc = load_path(path, err);
+    gmem_free(path);
+    return rc;
 }
 
 int gplugin_load(const char *path, GError *err) { return gplugin_load_from(path, NULL, err); }

@@ -75,7 +75,7 @@ int greader_locate(GReader *r, GError *err)
         param_position(r, param, &line, &col);
     char msg[sizeof err->message];
     snprintf(msg, sizeof msg, "%s", err->message[0] ? err->message : gstatus_string(code));
-    greader_error_at(r, err, code, line, col, "%s", msg);
+    code = greader_error_at(r, err, code, line, col, "%s", msg);
     memcpy(err->param, param, sizeof param);
     return code;
 }
@@ -113,6 +113,16 @@ int greader_peek(GReader *r, GToken *tok, GError *err)
     if (rc == G_OK && tok)
         *tok = r->ahead.tok;
     return rc;
+}
+
+void greader_take(GReader *r, GToken *tok)
+{
+    r->cur.tok = r->ahead.tok;
+    memcpy(r->cur.text, r->ahead.text, strlen(r->ahead.text) + 1);
+    r->cur.tok.text = r->cur.text;
+    r->have_ahead = 0;
+    if (tok)
+        *tok = r->cur.tok;
 }
 
 int greader_next(GReader *r, GToken *tok, GError *err)
@@ -222,6 +232,7 @@ static int do_include(GReader *r, GError *err)
         snprintf(msg, sizeof msg, "%s", err->message);
         return greader_error_at(r, err, rc, kw.line, kw.col, "cannot include: %s", msg);
     }
+    r->src->lx.quiet = 1; /* until its first statement */
     r->include_depth++;
     rc = parse_statements(r, err);
     r->include_depth--;
@@ -242,6 +253,13 @@ static int do_include(GReader *r, GError *err)
     return rc;
 }
 
+/* 1 when `plugin` statements may load modules: the caller's option or GENERIC_ALLOW_PLUGINS=1. */
+static int plugins_allowed(const GReader *r)
+{
+    const char *env = getenv(GPLUGIN_ALLOW_ENV);
+    return r->opt.allow_plugins || (env && strcmp(env, "1") == 0);
+}
+
 static int do_plugin(GReader *r, GError *err)
 {
     GToken t;
@@ -250,16 +268,31 @@ static int do_plugin(GReader *r, GError *err)
         return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "expected a quoted module path after 'plugin'");
     if (rc == G_OK && r->opt.no_plugins)
         return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "plugin statements are disabled for this file");
-    char *name = NULL;
+    if (rc == G_OK && !plugins_allowed(r))
+        return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col,
+                                "plugin statements are not allowed: a module runs native code, so a file may load "
+                                "one only with consent (--allow-plugins, " GPLUGIN_ALLOW_ENV "=1, or "
+                                "GReaderOptions.allow_plugins; --plugin FILE on the command line loads one)");
+    char *name = NULL, *path = NULL;
     if (rc == G_OK)
         rc = greader_string(r, &name, err);
     if (rc == G_OK && !name[0])
         rc = greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "empty module name");
-    if (rc == G_OK) { /* a path relative to the file, or a bare name searched as plugin.h says */
-        rc = gplugin_load_from(name, greader_dir(r), err);
-        if (rc != G_OK)
-            rc = greader_locate(r, err);
+    if (rc == G_OK) /* a path relative to the file, or a bare name searched as plugin.h says */
+        rc = gplugin_find(name, greader_dir(r), &path, err);
+    if (rc == G_OK && r->opt.confine_dir) { /* the module's file must lie under the directory too */
+        char *real = NULL;
+        rc = greader_confine(r->opt.confine_dir, path, &real, err);
+        if (rc == G_OK) {
+            gmem_free(path);
+            path = real;
+        }
     }
+    if (rc == G_OK)
+        rc = gplugin_load(path, err);
+    if (rc != G_OK)
+        rc = greader_locate(r, err);
+    gmem_free(path);
     gmem_free(name);
     return rc;
 }
@@ -380,10 +413,18 @@ static int parse_statements(GReader *r, GError *err)
             return G_OK;
         char found[96];
         glexer_describe(&t, found, sizeof found);
+        int foreign = r->src->lx.quiet; /* no statement read from this file yet: quote nothing of it */
+        if (t.type != GTOK_IDENT && foreign)
+            return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "%s", GLEX_FOREIGN_MESSAGE);
         if (t.type != GTOK_IDENT)
             return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "expected a statement (%s), found %s",
                                     statement_list, found);
-        greader_next(r, &t, err);
+        greader_take(r, &t);
+        int known = !strcmp(t.text, "include") || !strcmp(t.text, "plugin") || !strcmp(t.text, "colormodel");
+        for (int k = GKIND_COLOR; k < GKIND_COUNT && !known; k++)
+            known = strcmp(t.text, gkind_name((GKind)k)) == 0;
+        if (known)
+            r->src->lx.quiet = 0; /* the file is in the format: from here on its text may be quoted */
         if (strcmp(t.text, "include") == 0) {
             rc = do_include(r, err);
         } else if (strcmp(t.text, "plugin") == 0) {
@@ -395,6 +436,8 @@ static int parse_statements(GReader *r, GError *err)
             for (int k = GKIND_COLOR; k < GKIND_COUNT && kind < 0; k++)
                 if (strcmp(t.text, gkind_name((GKind)k)) == 0)
                     kind = k;
+            if (kind < 0 && foreign)
+                return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "%s", GLEX_FOREIGN_MESSAGE);
             if (kind < 0)
                 return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "unknown statement %s (expected %s)",
                                         found, statement_list);
@@ -443,16 +486,26 @@ static int run(GLibrary *lib, const GReaderOptions *opt, int create_model, const
     r.model_pending = create_model && !r.opt.model && r.opt.colormodel != NULL;
     int rc;
     if (path) {
-        char *copy = gmem_strdup(path);
-        rc = copy ? greader_open_source(&r, copy, err) : gerror_set(err, G_ERR_NOMEM, "out of memory");
+        char *copy = NULL;
+        rc = G_OK;
+        if (r.opt.confine_dir) { /* the file itself must lie under the directory */
+            char *real = NULL;
+            rc = greader_confine(r.opt.confine_dir, path, &real, err);
+            gmem_free(real);
+        }
+        if (rc == G_OK)
+            rc = (copy = gmem_strdup(path)) ? greader_open_source(&r, copy, err)
+                                            : gerror_set(err, G_ERR_NOMEM, "out of memory");
     } else {
         GReaderSource *s = gmem_calloc(1, sizeof *s);
         rc = s && (s->name = gmem_strdup(name ? name : "<string>")) && (s->dir = gmem_strdup("."))
                  ? greader_push_source(&r, s, text, strlen(text))
                  : (greader_free_source(s), gerror_set(err, G_ERR_NOMEM, "out of memory"));
     }
-    if (rc == G_OK)
+    if (rc == G_OK) {
+        r.src->lx.quiet = 1; /* until its first statement */
         rc = parse_statements(&r, err);
+    }
     if (rc == G_OK)
         rc = resolve_model(&r, err); /* a file without entries */
     reader_fini(&r);

@@ -62,7 +62,8 @@ int greader_invoke(GReader *r, const GTypeInfo *type, int line, int col, void **
         gtype_release(type, obj);
     }
     if (rc != G_OK) { /* a failing routine has freed what it made */
-        greader_locate(r, err);
+        int placed = greader_locate(r, err); /* rc stays the routine's status */
+        (void)placed;
         greader_pop_frames(r, base);
         return rc;
     }
@@ -88,7 +89,7 @@ int greader_value(GReader *r, GKind kind, int add, void **object, const GTypeInf
                                 kn, found);
     const GTypeInfo *ty = greader_find_type(kind, t.text);
     if (ty) {
-        greader_next(r, NULL, err);
+        greader_take(r, NULL); /* the token peeked above */
         void *obj = NULL;
         rc = greader_invoke(r, ty, t.line, t.col, &obj, err);
         if (rc == G_OK && add) {
@@ -107,7 +108,7 @@ int greader_value(GReader *r, GKind kind, int add, void **object, const GTypeInf
     }
     void *obj = glibrary_find(r->lib, kind, t.text);
     if (obj) {
-        greader_next(r, NULL, err);
+        greader_take(r, NULL); /* the token peeked above */
         *object = obj;
         if (type)
             *type = glibrary_find_type(r->lib, kind, t.text);

@@ -22,6 +22,13 @@ void glibrary_set_model(GLibrary *lib, GColorModel *owned, const GColorModel *bo
 /** The model, or NULL when none has been chosen yet. */
 const GColorModel *glibrary_model_or_null(const GLibrary *lib);
 
+/* ---- confinement (lib/reader_confine.c) ---- */
+
+/** G_OK when path (resolved with its symbolic links; the file itself need not exist) lies under the directory
+ * dir, with *real a gmem_alloc copy of the resolved path; G_ERR_INVALID naming both otherwise (or G_ERR_IO when
+ * either cannot be resolved), *real NULL. */
+int greader_confine(const char *dir, const char *path, char **real, GError *err);
+
 /* ---- the reader (lib/reader.c) ---- */
 
 /** A parameter name of an entry and where it was written (a constructor's complaint about it is placed there). */
@@ -86,6 +93,8 @@ struct GReader {
     int nincluded, capincluded;
 };
 
+/** Consumes the token a successful greader_peek just returned (it cannot fail, so it has no status). */
+void greader_take(GReader *r, GToken *tok);
 /** Pushes a frame, checking the nesting limit at (line, col). */
 int greader_push_frame(GReader *r, int is_block, const GTypeInfo *type, int line, int col, GError *err);
 /** Pops frames down to n. */

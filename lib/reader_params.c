@@ -79,7 +79,7 @@ int greader_number(GReader *r, double *out, GError *err)
                                 t.text);
     if (t.type != GTOK_NUMBER)
         return expected(r, "a number", err);
-    greader_next(r, NULL, err);
+    greader_take(r, NULL); /* the token peeked above */
     *out = t.number;
     return G_OK;
 }
@@ -163,7 +163,7 @@ int greader_string(GReader *r, char **out, GError *err)
         return rc;
     if (t.type != GTOK_STRING)
         return expected(r, "a quoted string", err);
-    greader_next(r, &t, err);
+    greader_take(r, &t); /* the token peeked above */
     *out = gmem_strdup(t.text);
     return *out ? G_OK : greader_error_at(r, err, G_ERR_NOMEM, t.line, t.col, "out of memory");
 }
@@ -176,7 +176,7 @@ int greader_ident(GReader *r, char *buf, size_t size, GError *err)
         return rc;
     if (t.type != GTOK_IDENT)
         return expected(r, "a name", err);
-    greader_next(r, &t, err);
+    greader_take(r, &t); /* the token peeked above */
     if (strlen(t.text) >= size)
         return greader_error(r, err, "name '%.40s...' is too long (at most %zu characters)", t.text, size - 1);
     memcpy(buf, t.text, strlen(t.text) + 1);
@@ -217,17 +217,30 @@ int greader_path(GReader *r, char **out, GError *err)
     const char *dir = greader_dir(r);
     if (rel[0] == '/' || strcmp(dir, ".") == 0) {
         *out = rel;
-        return G_OK;
+    } else {
+        size_t a = strlen(dir), b = strlen(rel);
+        *out = gmem_alloc(a + b + 2);
+        if (*out) {
+            memcpy(*out, dir, a);
+            (*out)[a] = '/';
+            memcpy(*out + a + 1, rel, b + 1);
+        }
+        gmem_free(rel);
+        if (!*out)
+            return greader_error(r, err, "out of memory");
     }
-    size_t a = strlen(dir), b = strlen(rel);
-    *out = gmem_alloc(a + b + 2);
-    if (*out) {
-        memcpy(*out, dir, a);
-        (*out)[a] = '/';
-        memcpy(*out + a + 1, rel, b + 1);
+    if (r->opt.confine_dir) { /* the file read is the resolved one that was checked */
+        char *real = NULL;
+        int rc = greader_confine(r->opt.confine_dir, *out, &real, err);
+        gmem_free(*out);
+        *out = real;
+        if (rc != G_OK) {
+            char msg[sizeof err->message];
+            snprintf(msg, sizeof msg, "%s", err ? err->message : "");
+            return greader_error_at(r, err, rc, r->cur.tok.line, r->cur.tok.col, "%s", msg);
+        }
     }
-    gmem_free(rel);
-    return *out ? G_OK : greader_error(r, err, "out of memory");
+    return G_OK;
 }
 
 /* ---- parameter blocks ---- */
@@ -255,7 +268,7 @@ int greader_param(GReader *r, const char **key, GError *err)
             f->state = 2;
             return 0;
         }
-        greader_next(r, NULL, err);
+        greader_take(r, NULL); /* the token peeked above */
         f->state = 1;
         f->open_line = t.line;
         f->open_col = t.col;
@@ -266,7 +279,7 @@ int greader_param(GReader *r, const char **key, GError *err)
     if (f->state == 2)
         return 0;
     if (t.type == GTOK_RBRACE) {
-        greader_next(r, NULL, err);
+        greader_take(r, NULL); /* the token peeked above */
         f->state = 2;
         return 0;
     }
@@ -297,7 +310,7 @@ int greader_param(GReader *r, const char **key, GError *err)
     k->line = t.line;
     k->col = t.col;
     f->nkeys++;
-    greader_next(r, NULL, err);
+    greader_take(r, NULL); /* the token peeked above */
     memcpy(r->keybuf, t.text, strlen(t.text) + 1);
     *key = r->keybuf;
     return 1;
@@ -340,7 +353,7 @@ int greader_block_end(GReader *r, GError *err)
         return missing_brace(r, &t, f->open_line, f->open_col, err);
     if (t.type != GTOK_RBRACE)
         return 0;
-    greader_next(r, NULL, err);
+    greader_take(r, NULL); /* the token peeked above */
     greader_pop_frames(r, r->nframes - 1);
     return 1;
 }

@@ -15,6 +15,7 @@
 
 #include "generic/builtins.h"
 #include "generic/bfc.h"
+#include "generic/color.h"
 
 static const char *data_file(const char *name)
 {
@@ -122,6 +123,94 @@ static void test_small_and_malformed(void **state)
     assert_string_equal(err.message, "cannot open \"/nonexistent/x.BFC\": No such file or directory");
 }
 
+/* Numbers of every length up to past the limit: each is read whole (exact value) or refused naming its length,
+ * never split into two numbers - a row short of one value stays an error. */
+static void test_long_numbers(void **state)
+{
+    (void)state;
+    static char text[4096], num[600];
+    GBfcData d;
+    GError err;
+    for (int len = 3; len <= 520; len += len < 250 ? 31 : 1) {
+        /* "0.5" padded with trailing zeros to len characters: the value is exactly 0.5 */
+        memset(num, '0', (size_t)len);
+        memcpy(num, "0.5", 3);
+        num[len] = '\0';
+        snprintf(text, sizeof text, "%s400 410 10 2 400 10\nr:c: 400 410\n400 0.25 %s\n410 0.1 0.2\nEOD\n", header,
+                 num);
+        int rc = gbfc_parse(text, strlen(text), "t.BFC", &d, &err);
+        if (len <= 255) {
+            assert_int_equal(rc, G_OK);
+            assert_true(at(&d, 400, 410) == 0.5f && at(&d, 400, 400) == 0.25f);
+            gbfc_free(&d);
+        } else {
+            char want[200];
+            snprintf(want, sizeof want,
+                     "t.BFC:13:10: expected a matrix value, found a token of %d characters (at most 255)", len);
+            assert_int_equal(rc, G_ERR_PARSE);
+            assert_string_equal(err.message, want);
+            assert_null(d.values);
+        }
+        /* the same number as the only value of a two-column row: one value is missing */
+        snprintf(text, sizeof text, "%s400 410 10 2 400 10\nr:c: 400 410\n400 %s\n410 0.1 0.2\nEOD\n", header, num);
+        assert_int_equal(gbfc_parse(text, strlen(text), "t.BFC", &d, &err), G_ERR_PARSE);
+        assert_null(d.values);
+        assert_non_null(strstr(err.message, len <= 255 ? "t.BFC:13:" : "found a token of"));
+    }
+}
+
+/* Nothing of a file is quoted before its grid line shows it to be a BFC file (a password file says only that
+ * it is not one); after it, a bad token is quoted. */
+static void test_foreign_file_not_quoted(void **state)
+{
+    (void)state;
+    char text[2048];
+    snprintf(text, sizeof text, "%s%s", header, "secret:x:0:0:secret:/root:/bin/sh\n");
+    GBfcData d;
+    GError err;
+    assert_int_equal(gbfc_parse(text, strlen(text), "t.BFC", &d, &err), G_ERR_PARSE);
+    assert_string_equal(err.message, "t.BFC:11:1: expected the first emission wavelength: not a BFC-450 matrix file");
+    assert_null(strstr(err.message, "secret"));
+    parse_fails("400 secret\n", "t.BFC:11:5: expected the last emission wavelength: not a BFC-450 matrix file");
+}
+
+/* A matrix whose grid lies beside a model's range is refused with both ranges; shifted across the range, every
+ * conversion is either refused or gives a colour that is not black. */
+static void test_grid_outside_model(void **state)
+{
+    (void)state;
+    static const char *const models[] = {"rgb", "spectrum", "bispectral"};
+    float data[3 * 3];
+    for (int i = 0; i < 9; i++)
+        data[i] = i % 4 == 0 ? 0.5f : 0.0f; /* a plain 0.5 reflectance on the diagonal */
+    for (int m = 0; m < 3; m++) {
+        GColorModel *model;
+        GError err;
+        assert_int_equal(gcolormodel_create(models[m], NULL, &model, &err), G_OK);
+        GColor c = {0};
+        assert_int_equal(gcolor_alloc(&c, model), G_OK);
+        GReradiation far = {100000, 10, 3, 100000, 10, 3, data};
+        assert_int_equal(gcolor_from_reradiation(&c, &far, &err), G_ERR_INVALID);
+        assert_non_null(strstr(err.message, "emission wavelengths 100000..100020 nm lie outside the range"));
+        int refused = 0, converted = 0;
+        for (double shift = -1000; shift <= 1000; shift += 10) {
+            GReradiation r = {400 + shift, 10, 3, 400 + shift, 10, 3, data};
+            int rc = gcolor_from_reradiation(&c, &r, &err);
+            if (rc != G_OK) {
+                assert_int_equal(rc, G_ERR_INVALID);
+                assert_non_null(strstr(err.message, "lie outside the range of the colour model"));
+                refused++;
+                continue;
+            }
+            converted++;
+            assert_true(gcolor_brightness(&c) > 0.0);
+        }
+        assert_true(refused > 100 && converted >= 40);
+        gcolor_free(&c);
+        gcolormodel_destroy(model);
+    }
+}
+
 int main(void)
 {
     if (generic_register_builtins(NULL) != G_OK)
@@ -129,6 +218,9 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_real_files),
         cmocka_unit_test(test_small_and_malformed),
+        cmocka_unit_test(test_long_numbers),
+        cmocka_unit_test(test_foreign_file_not_quoted),
+        cmocka_unit_test(test_grid_outside_model),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -19,6 +19,10 @@
 #include "generic/plugin.h"
 #include "generic/reader.h"
 #include "generic/texture.h"
+#include "plugin_elf.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
 
 #define assert_near(a, b, tol) near_((a), (b), (tol), #a, __LINE__)
 static void near_(double a, double b, double tol, const char *what, int line)
@@ -78,7 +82,8 @@ static void test_load_from_text_and_use(void **state)
     fclose(f);
     GLibrary *lib = NULL;
     GError err;
-    int rc = greader_load_file(path, NULL, &lib, &err);
+    GReaderOptions allow = {.allow_plugins = 1};
+    int rc = greader_load_file(path, &allow, &lib, &err);
     if (rc != G_OK)
         print_error("%s\n", err.message);
     assert_int_equal(rc, G_OK);
@@ -143,7 +148,9 @@ static void test_abi_mismatch_refused(void **state)
     const char *p = plugin("bad_abi.so");
     assert_int_equal(gplugin_load(p, &err), G_ERR_VERSION);
     char want[8400];
-    snprintf(want, sizeof want, "module '%s' was built for module interface version %d, this library has version %d",
+    snprintf(want, sizeof want,
+             "module '%s' was built for module interface version %d, this library has version %d (not loaded, "
+             "nothing of it was run)",
              p, GMODULE_ABI_VERSION + 41, GMODULE_ABI_VERSION);
     assert_string_equal(err.message, want);
     assert_null(gregistry_find(GKIND_MATERIAL, "never_registered"));
@@ -151,7 +158,8 @@ static void test_abi_mismatch_refused(void **state)
     char text[4400];
     snprintf(text, sizeof text, "color c rgb 1 1 1\nplugin \"%s\"\n", p);
     GLibrary *lib = NULL;
-    assert_int_equal(greader_load_string(text, "scene.mat", NULL, &lib, &err), G_ERR_VERSION);
+    GReaderOptions allow = {.allow_plugins = 1};
+    assert_int_equal(greader_load_string(text, "scene.mat", &allow, &lib, &err), G_ERR_VERSION);
     assert_null(lib);
     assert_true(strncmp(err.message, "scene.mat:2:8: module '", 23) == 0);
     snprintf(want, sizeof want, "version %d, this library has version %d", GMODULE_ABI_VERSION + 41,
@@ -193,6 +201,126 @@ static void test_broken_modules(void **state)
     assert_string_equal(err.message, "t.mat:1:8: plugin statements are disabled for this file");
 }
 
+/* A `plugin` statement needs consent (the option or GENERIC_ALLOW_PLUGINS=1), and the message names the ways to
+ * give it; --plugin-style loads (gplugin_load) are consent themselves. */
+static void test_plugin_statements_need_consent(void **state)
+{
+    (void)state;
+    require("grey.so");
+    char text[4400];
+    snprintf(text, sizeof text, "color c rgb 1 1 1\nplugin \"%s\"\n", plugin("grey.so"));
+    GLibrary *lib = NULL;
+    GError err;
+    unsetenv(GPLUGIN_ALLOW_ENV);
+    int before = gplugin_count();
+    assert_int_equal(greader_load_string(text, "scene.mat", NULL, &lib, &err), G_ERR_PARSE);
+    assert_null(lib);
+    assert_string_equal(err.message,
+                        "scene.mat:2:8: plugin statements are not allowed: a module runs native code, so a file may "
+                        "load one only with consent (--allow-plugins, GENERIC_ALLOW_PLUGINS=1, or "
+                        "GReaderOptions.allow_plugins; --plugin FILE on the command line loads one)");
+    assert_int_equal(gplugin_count(), before); /* nothing was loaded */
+    setenv(GPLUGIN_ALLOW_ENV, "0", 1); /* only "1" allows */
+    assert_int_equal(greader_load_string(text, "scene.mat", NULL, &lib, &err), G_ERR_PARSE);
+    setenv(GPLUGIN_ALLOW_ENV, "1", 1);
+    assert_int_equal(greader_load_string(text, "scene.mat", NULL, &lib, &err), G_OK);
+    assert_true(gregistry_find(GKIND_COLORMODEL, "grey") != NULL);
+    glibrary_destroy(lib);
+    unsetenv(GPLUGIN_ALLOW_ENV);
+    GReaderOptions both = {.allow_plugins = 1, .no_plugins = 1}; /* no_plugins wins */
+    assert_int_equal(greader_load_string(text, "scene.mat", &both, &lib, &err), G_ERR_PARSE);
+    assert_string_equal(err.message, "scene.mat:2:8: plugin statements are disabled for this file");
+}
+
+/* Files that are not modules, or modules for another interface, are refused before dlopen: their ELF constructor
+ * (which creates a marker file) never runs. A module that passes the check does run it. */
+static void test_refused_before_any_code_runs(void **state)
+{
+    (void)state;
+    require("constructor_only.so");
+    require("bad_abi.so");
+    require("no_init.so");
+    require("failing_init.so");
+    char mark[4200];
+    snprintf(mark, sizeof mark, "%s/constructor_ran.mark", plugdir);
+    unlink(mark);
+    setenv("GENERIC_TEST_CONSTRUCTOR_MARK", mark, 1);
+    GError err;
+    assert_int_equal(gplugin_load(plugin("constructor_only.so"), &err), G_ERR_IO);
+    assert_non_null(strstr(err.message, "it is a shared object but not a libgeneric module (it defines neither "
+                                        "generic_module_abi nor generic_module_init)"));
+    assert_int_equal(gplugin_load(plugin("bad_abi.so"), &err), G_ERR_VERSION);
+    assert_int_equal(gplugin_load(plugin("no_init.so"), &err), G_ERR_IO);
+    assert_non_null(strstr(err.message, "nothing of it was run"));
+    assert_int_equal(access(mark, F_OK), -1); /* no constructor ran */
+    assert_int_equal(gplugin_load(plugin("failing_init.so"), &err), G_ERR_INVALID);
+    assert_int_equal(access(mark, F_OK), 0); /* the marker works: a real module's constructor made it */
+    unlink(mark);
+    unsetenv("GENERIC_TEST_CONSTRUCTOR_MARK");
+}
+
+/* The ELF reader on damaged copies of a real module: every cut copy is refused (the section table is at the end),
+ * and copies with bytes of the headers and symbol tables overwritten are refused or accepted without reading
+ * outside the file (AddressSanitizer watches the sanitizer build). Only the check runs: nothing is dlopen'd. */
+static void test_elf_check_on_damaged_files(void **state)
+{
+    (void)state;
+    require("grey.so");
+    int fd = open(plugin("grey.so"), O_RDONLY);
+    assert_true(fd >= 0);
+    struct stat st;
+    assert_int_equal(fstat(fd, &st), 0);
+    size_t n = (size_t)st.st_size;
+    unsigned char *bytes = malloc(n);
+    assert_non_null(bytes);
+    assert_int_equal(read(fd, bytes, n), (ssize_t)n);
+    int abi;
+    GError err;
+    assert_int_equal(gplugin_elf_check(fd, "grey.so", &abi, &err), G_OK);
+    assert_int_equal(abi, GMODULE_ABI_VERSION);
+    close(fd);
+    char path[4200];
+    snprintf(path, sizeof path, "%s/damaged.so", plugdir);
+    int cuts = 0, accepted = 0, refused = 0;
+    for (size_t len = 0; len < n; len += 1 + len / 16, cuts++) {
+        int w = open(path, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        assert_true(w >= 0);
+        assert_int_equal(write(w, bytes, len), (ssize_t)len);
+        close(w);
+        int r = open(path, O_RDONLY);
+        assert_int_equal(gplugin_elf_check(r, path, &abi, &err), G_ERR_IO);
+        assert_non_null(strstr(err.message, "nothing of it was run"));
+        close(r);
+    }
+    unsigned seed = 7;
+    for (int trial = 0; trial < 2000; trial++) {
+        unsigned char *copy = malloc(n);
+        memcpy(copy, bytes, n);
+        for (int k = 0; k < 4; k++) { /* overwrite bytes in the ELF header or in the last 4 KiB (section table) */
+            seed = seed * 1103515245u + 12345u;
+            size_t at = (seed >> 8) % 2 ? (seed >> 12) % 64 : n - 1 - (seed >> 12) % (n < 4096 ? n : 4096);
+            seed = seed * 1103515245u + 12345u;
+            copy[at] = (unsigned char)(seed >> 16);
+        }
+        int w = open(path, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        assert_int_equal(write(w, copy, n), (ssize_t)n);
+        close(w);
+        int r = open(path, O_RDONLY);
+        int rc = gplugin_elf_check(r, path, &abi, &err);
+        close(r);
+        assert_true(rc == G_OK || rc == G_ERR_IO);
+        if (rc == G_OK)
+            accepted++;
+        else
+            refused++;
+        free(copy);
+    }
+    print_message("%d cut copies refused; damaged copies: %d refused, %d accepted\n", cuts, refused, accepted);
+    assert_true(refused > 100);
+    unlink(path);
+    free(bytes);
+}
+
 int main(void)
 {
     if (generic_register_builtins(NULL) != G_OK)
@@ -200,6 +328,9 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_load_from_text_and_use),
         cmocka_unit_test(test_abi_mismatch_refused),
+        cmocka_unit_test(test_plugin_statements_need_consent),
+        cmocka_unit_test(test_refused_before_any_code_runs),
+        cmocka_unit_test(test_elf_check_on_damaged_files),
         cmocka_unit_test(test_broken_modules),
     };
     return cmocka_run_group_tests(tests, setup, NULL);

@@ -339,6 +339,63 @@ static void test_nonfinite_texels(void **state)
     unlink(path);
 }
 
+/* A PNG cut at every few bytes: each cut file is refused when the node is made (naming the file), or, when it
+ * loads, gives exactly the texels of the whole file - never black ones for the pixels it lacks. */
+static void test_truncated_files(void **state)
+{
+    Fix *f = *state;
+    char whole[128], cut[160];
+    snprintf(whole, sizeof whole, "%s/whole.png", f->dir);
+    GImage img;
+    GError err;
+    enum { W = 64 };
+    assert_int_equal(gimage_create(&img, W, W, 3, &err), G_OK);
+    unsigned seed = 12345;
+    for (int i = 0; i < W * W * 3; i++) { /* pseudo-random texels: little to compress */
+        seed = seed * 1103515245u + 12345u;
+        img.pixels[i] = 0.2f + 0.6f * (float)((seed >> 16) % 1000) / 1000.0f;
+    }
+    assert_int_equal(gimage_write(whole, &img, NULL, &err), G_OK);
+    gimage_free(&img);
+    FILE *fp = fopen(whole, "rb");
+    assert_non_null(fp);
+    static unsigned char bytes[1 << 16];
+    size_t n = fread(bytes, 1, sizeof bytes, fp);
+    fclose(fp);
+    assert_true(n > 1000 && n < sizeof bytes);
+    GMaterial *ref = image(f, whole, GTEX_WRAP_CLAMP, GTEX_COLORSPACE_LINEAR);
+    int refused = 0, loaded = 0;
+    for (size_t len = 40; len < n; len += len < n - 40 ? 397 : 1) {
+        snprintf(cut, sizeof cut, "%s/cut%zu.png", f->dir, len);
+        fp = fopen(cut, "wb");
+        assert_non_null(fp);
+        assert_int_equal(fwrite(bytes, 1, len, fp), len);
+        assert_int_equal(fclose(fp), 0);
+        GImageNodeOptions o = {.texsys = f->ts, .swrap = GTEX_WRAP_CLAMP, .twrap = GTEX_WRAP_CLAMP,
+                               .colorspace = GTEX_COLORSPACE_LINEAR};
+        GMaterial *m = NULL;
+        int rc = gnode_image_create(f->white, cut, &o, &m, &err);
+        if (rc != G_OK) {
+            assert_int_equal(rc, G_ERR_IO);
+            assert_null(m);
+            assert_non_null(strstr(err.message, cut));
+            refused++;
+        } else {
+            for (int k = 0; k < 16; k++) {
+                double u = (k % 4 + 0.5) / 4, v = (k / 4 + 0.5) / 4;
+                assert_float_equal(lookup(f, m, u, v, 0.01 * N / W), lookup(f, ref, u, v, 0.01 * N / W), 1e-6);
+            }
+            gmaterial_unref(m);
+            loaded++;
+        }
+        unlink(cut);
+    }
+    print_message("%d cut files refused, %d complete enough to load (of %zu bytes)\n", refused, loaded, n);
+    assert_true(refused > 10);
+    gmaterial_unref(ref);
+    unlink(whole);
+}
+
 int main(void)
 {
     if (generic_register_builtins(NULL) != G_OK)
@@ -351,6 +408,7 @@ int main(void)
         cmocka_unit_test(test_bad_files),
         cmocka_unit_test(test_nonfinite_texels),
         cmocka_unit_test(test_anisotropic_footprint),
+        cmocka_unit_test(test_truncated_files),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -37,15 +37,16 @@ static void image_destroy(GMaterial *self)
 }
 
 /* The linear texel colour at the point, looked up once per point (cached under the node). NaN, infinite and
- * negative texels (possible in float files) become 0: they would otherwise reach the pixels. */
-static void texel(const Image *im, GSurfPoint *sp, double rgb[3])
+ * negative texels (possible in float files) become 0: they would otherwise reach the pixels. A failed lookup (a
+ * file that is damaged past its header) is the lookup's status, never a black texel. */
+static int texel(const Image *im, GSurfPoint *sp, double rgb[3])
 {
     GVec3 c;
     if (gsurfpoint_cache_get(sp, im, NULL, &c)) {
         rgb[0] = c.x;
         rgb[1] = c.y;
         rgb[2] = c.z;
-        return;
+        return G_OK;
     }
     float v[3];
     const double *a = sp->uv_axis1, *b = sp->uv_axis2;
@@ -56,12 +57,15 @@ static void texel(const Image *im, GSurfPoint *sp, double rgb[3])
         deriv[2] = b[0];
         deriv[3] = -b[1];
     }
-    gtexsys_lookup(im->ts, im->file, im->swrap, im->twrap, sp->u, 1.0 - sp->v, deriv, im->blur, v);
+    int rc = gtexsys_lookup(im->ts, im->file, im->swrap, im->twrap, sp->u, 1.0 - sp->v, deriv, im->blur, v);
+    if (rc != G_OK)
+        return rc;
     for (int i = 0; i < 3; i++) {
         double x = im->srgb ? gimage_srgb_decode(v[i]) : v[i];
         rgb[i] = isfinite(x) && x > 0.0 ? x : 0.0;
     }
     gsurfpoint_cache_put(sp, im, 1.0, gvec3(rgb[0], rgb[1], rgb[2]));
+    return G_OK;
 }
 
 /* result = texel * result. */
@@ -69,11 +73,13 @@ static int apply(const GMaterial *self, GSurfPoint *sp, GColor *result)
 {
     const Image *im = (const Image *)self;
     double rgb[3];
-    texel(im, sp, rgb);
+    int rc = texel(im, sp, rgb);
+    if (rc != G_OK)
+        return rc;
     GTexTemps t;
     gtextemps_init(&t);
     GColor c;
-    int rc = gtextemps_color(&t, sp, result->model, 0, &c);
+    rc = gtextemps_color(&t, sp, result->model, 0, &c);
     if (rc == G_OK) {
         if (result->model == im->node.base.model) {
             rc = gcolor_scale(&c, &im->basis[0], rgb[0]);
@@ -178,6 +184,13 @@ int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptio
     if (rc == G_OK)
         rc = gtexsys_open(im->ts, path, &im->file, &channels, &srgb, err);
     im->srgb = o.colorspace == GTEX_COLORSPACE_SRGB || (o.colorspace == GTEX_COLORSPACE_AUTO && srgb);
+    if (rc == G_OK) { /* one lookup of the finest level decodes the pixels: a truncated file fails here */
+        static const double finest[4] = {0.0, 0.0, 0.0, 0.0};
+        float v[3];
+        if (gtexsys_lookup(im->ts, im->file, GTEX_WRAP_CLAMP, GTEX_WRAP_CLAMP, 0.5, 0.5, finest, 0.0, v) != G_OK)
+            rc = gerror_set(err, G_ERR_IO, "image '%s' cannot be read: its pixels cannot be decoded (a truncated "
+                                           "or damaged file)", path);
+    }
     for (int i = 0; i < 3 && rc == G_OK; i++) {
         double e[3] = {i == 0, i == 1, i == 2};
         rc = gcolor_alloc(&im->basis[i], model);

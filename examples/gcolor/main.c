@@ -8,6 +8,7 @@
 #include <generic/plugin.h>
 #include <generic/registry.h>
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -24,7 +25,9 @@ static void usage(FILE *f)
             "  --models LIST only these models, e.g. rgb,spectrum\n"
             "  --plugin FILE.so  load a module first (repeatable; a bare name is searched in the current\n"
             "                directory, then in GENERIC_PLUGIN_PATH)\n"
-            "  -h, --help    this text\n");
+            "  -h, --help    this text\n"
+            "Exit status: 0 when every conversion succeeded, 1 when one failed (it is named on stderr and no value\n"
+            "is printed for it), 2 for a usage error such as an unknown model.\n");
 }
 
 typedef struct Sample {
@@ -33,31 +36,53 @@ typedef struct Sample {
     GColorRole role;
 } Sample;
 
-static void report_model(const char *model_name, const Sample *samples, int n)
+/* Prints every sample in one model; a sample whose conversion fails is reported as failed (never with the
+ * previous sample's values). Returns 0, or 1 when the model cannot be created or a conversion failed. */
+static int report_model(const char *model_name, const Sample *samples, int n)
 {
     GError err;
     GColorModel *m = NULL;
     if (gcolormodel_create(model_name, NULL, &m, &err) != G_OK) {
         fprintf(stderr, "gcolor: %s\n", err.message);
-        return;
+        return 1;
     }
     printf("\n== %s (%d values per colour)\n", model_name, m->nvalues);
     GColor c;
     if (gcolor_alloc(&c, m) != G_OK) {
         fprintf(stderr, "gcolor: out of memory\n");
         gcolormodel_destroy(m);
-        return;
+        return 1;
     }
+    int failed = 0;
     for (int i = 0; i < n; i++) {
         double rgb[3], xyz[3];
-        gcolor_from_rgb(&c, samples[i].rgb, samples[i].role);
-        gcolor_to_rgb(&c, samples[i].role, rgb);
-        gcolor_to_xyz(&c, samples[i].role, xyz);
+        const char *step = "from sRGB";
+        int rc = gcolor_from_rgb(&c, samples[i].rgb, samples[i].role);
+        if (rc == G_OK && (rc = gcolor_to_rgb(&c, samples[i].role, rgb)) != G_OK)
+            step = "to sRGB";
+        if (rc == G_OK && (rc = gcolor_to_xyz(&c, samples[i].role, xyz)) != G_OK)
+            step = "to XYZ";
+        double bright = rc == G_OK ? gcolor_brightness(&c) : 0.0;
+        const char *why = rc != G_OK ? gstatus_string(rc) : NULL;
+        if (rc == G_OK && !(isfinite(bright) && isfinite(rgb[0] + rgb[1] + rgb[2]) &&
+                            isfinite(xyz[0] + xyz[1] + xyz[2]))) {
+            rc = G_ERR_INVALID;
+            step = "to sRGB and XYZ";
+            why = "the result is not finite (the value is out of the model's range)";
+        }
+        if (rc != G_OK) {
+            printf("  %-18s conversion %s failed\n", samples[i].name, step);
+            fprintf(stderr, "gcolor: %s: '%s': the conversion %s failed: %s\n", model_name, samples[i].name, step,
+                    why);
+            failed = 1;
+            continue;
+        }
         printf("  %-18s brightness %.4f  -> sRGB %.4f %.4f %.4f  XYZ %.4f %.4f %.4f\n", samples[i].name,
-               gcolor_brightness(&c), rgb[0], rgb[1], rgb[2], xyz[0], xyz[1], xyz[2]);
+               bright, rgb[0], rgb[1], rgb[2], xyz[0], xyz[1], xyz[2]);
     }
     gcolor_free(&c);
     gcolormodel_destroy(m);
+    return failed;
 }
 
 static int list_models(void)
@@ -106,11 +131,16 @@ int main(int argc, char **argv)
             return 0;
         } else if (!strcmp(argv[i], "--models") && i + 1 < argc) {
             models = argv[++i];
-        } else if (!strcmp(argv[i], "--rgb") && i + 1 < argc && n < 32) {
+        } else if (!strcmp(argv[i], "--rgb") && i + 1 < argc) {
+            if (n == 32) {
+                fprintf(stderr, "gcolor: at most %d --rgb colours\n", 32 - 6);
+                return 2;
+            }
             Sample *s = &samples[n];
             char tail;
-            if (sscanf(argv[++i], "%lf,%lf,%lf%c", &s->rgb[0], &s->rgb[1], &s->rgb[2], &tail) != 3) {
-                fprintf(stderr, "gcolor: --rgb expects R,G,B, got '%s'\n", argv[i]);
+            if (sscanf(argv[++i], "%lf,%lf,%lf%c", &s->rgb[0], &s->rgb[1], &s->rgb[2], &tail) != 3 ||
+                !isfinite(s->rgb[0]) || !isfinite(s->rgb[1]) || !isfinite(s->rgb[2])) {
+                fprintf(stderr, "gcolor: --rgb expects three finite numbers R,G,B, got '%s'\n", argv[i]);
                 return 2;
             }
             snprintf(names[n], sizeof names[n], "rgb %s", argv[i]);
@@ -123,17 +153,37 @@ int main(int argc, char **argv)
             return 2;
         }
     }
-    printf("Colour report: reflectances are seen under D65 (Y = 1); lights are their own spectrum.\n");
-    if (models) {
-        char buf[256];
-        snprintf(buf, sizeof buf, "%s", models);
-        for (char *tok = strtok(buf, ","); tok; tok = strtok(NULL, ","))
-            report_model(tok, samples, n);
-    } else {
-        const GTypeInfo *types[32];
-        int k = gregistry_list(GKIND_COLORMODEL, types, 32);
-        for (int i = 0; i < k && i < 32; i++)
-            report_model(types[i]->name, samples, n);
+    if (models) { /* every name must be a registered model before anything is printed */
+        size_t len = strlen(models);
+        for (const char *p = models; p <= models + len;) {
+            size_t k = strcspn(p, ",");
+            char name[128];
+            snprintf(name, sizeof name, "%.*s", (int)(k < sizeof name ? k : sizeof name - 1), p);
+            if (!k || k >= sizeof name || !gregistry_find(GKIND_COLORMODEL, name)) {
+                char names[512];
+                gregistry_names(GKIND_COLORMODEL, names, sizeof names);
+                fprintf(stderr, "gcolor: --models: unknown colour model '%.*s' (registered: %s)\n", (int)k, p, names);
+                return 2;
+            }
+            p += k + 1;
+        }
     }
-    return 0;
+    printf("Colour report: reflectances are seen under D65 (Y = 1); lights are their own spectrum.\n");
+    int failed = 0;
+    if (models) {
+        size_t len = strlen(models);
+        for (const char *p = models; p <= models + len;) {
+            size_t k = strcspn(p, ",");
+            char name[128];
+            snprintf(name, sizeof name, "%.*s", (int)k, p);
+            failed |= report_model(name, samples, n);
+            p += k + 1;
+        }
+    } else {
+        const GTypeInfo *types[64];
+        int k = gregistry_list(GKIND_COLORMODEL, types, 64);
+        for (int i = 0; i < k && i < 64; i++)
+            failed |= report_model(types[i]->name, samples, n);
+    }
+    return failed;
 }

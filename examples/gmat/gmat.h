@@ -53,10 +53,12 @@ int gmat_plot(GmatContext *ctx, double theta_in, int size, const char *path, GEr
  * law, defaults), one line each with its figure and PASS/FAIL; samples is the albedo grid (0 = 64). Returns the
  * exit status: 0 when every property passes, 1 otherwise. */
 int gmat_check(GmatContext *ctx, int samples);
-/** `gmat laser FILE MATERIAL ...` (laser.c): the laser experiment of Wilkie et al.; returns the exit status. */
-int gmat_laser(int argc, char **argv);
-/** `gmat swatch FILE MATERIAL ...` (swatch.c): renders a material or texture tree; returns the exit status. */
-int gmat_swatch(int argc, char **argv);
+/** `gmat laser FILE MATERIAL ...` (laser.c): the laser experiment of Wilkie et al., reading FILE with the reader
+ * options base (--allow-plugins, --confine); returns the exit status. */
+int gmat_laser(int argc, char **argv, const GReaderOptions *base);
+/** `gmat swatch FILE MATERIAL ...` (swatch.c): renders a material or texture tree read with the reader options
+ * base; returns the exit status. */
+int gmat_swatch(int argc, char **argv, const GReaderOptions *base);
 
 /** Reports a usage error of subcommand cmd (NULL: of gmat itself) on stderr: "gmat CMD: ", fmt with arg, and
  * where to find help (main.c). Returns 2, the exit status of usage errors. */

@@ -39,7 +39,8 @@ static void laser_usage(FILE *f)
             "  --size PIXELS       panel size (64..4096, default 384)\n"
             "  --extent X          the target spans -X..X (default 1.5)\n"
             "  --colormodel NAME   compute in this model instead of the file's; --step NM its spacing\n"
-            "  --plugin FILE.so    load a module first (repeatable)\n");
+            "  --plugin FILE.so    load a module first (repeatable)\n"
+            "  --allow-plugins     let `plugin` statements of FILE load modules; --confine DIR: files under DIR only\n");
 }
 
 static int elevations(const char *s, double *e, int *n)
@@ -93,7 +94,7 @@ static int write_pattern(const GMaterial *m, GScratch *sc, double nm, const doub
     return rc;
 }
 
-int gmat_laser(int argc, char **argv)
+int gmat_laser(int argc, char **argv, const GReaderOptions *base)
 {
     const char *file = NULL, *name = NULL, *pattern = NULL, *colormodel = NULL;
     double nm = 532.0, el[MAX_ELEVATIONS] = {5, 20, 60}, extent = 1.5, size = 384, step = 0;
@@ -142,7 +143,9 @@ int gmat_laser(int argc, char **argv)
     if (!file || !name)
         return gmat_usage_error("laser", "%s", "FILE and MATERIAL are required");
     GColorModelOptions mo = {.step_nm = step};
-    GReaderOptions opt = {.colormodel = colormodel, .colormodel_options = &mo};
+    GReaderOptions opt = *base;
+    opt.colormodel = colormodel;
+    opt.colormodel_options = &mo;
     GLibrary *lib;
     GError err;
     if (pattern && gimage_check_output(pattern, &err) != G_OK) { /* before any work */

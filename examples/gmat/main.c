@@ -6,7 +6,8 @@
  *   gmat list   FILE
  *   gmat check  FILE MATERIAL [--samples N]
  *   gmat types  [material|node|generator]
- * common options: --colormodel NAME [--step NM], --plugin MODULE.so (repeatable), --help */
+ * common options: --colormodel NAME [--step NM], --plugin MODULE.so (repeatable), --allow-plugins, --confine DIR,
+ * --help */
 #include "gmat.h"
 
 #include <generic/builtins.h>
@@ -30,6 +31,9 @@ static const char common[] = "Common options:\n"
                              "  --colormodel NAME   compute in this colour model instead of the file's\n"
                              "  --step NM           sample spacing for --colormodel (spectral models)\n"
                              "  --plugin FILE.so    load a module before reading (repeatable)\n"
+                             "  --allow-plugins     let `plugin` statements of the files load modules (they run\n"
+                             "                      native code; also GENERIC_ALLOW_PLUGINS=1)\n"
+                             "  --confine DIR       every file read (includes, modules, BFC, images) must lie under DIR\n"
                              "  --help              this text\n";
 
 static void usage_main(FILE *f)
@@ -302,14 +306,19 @@ int main(int argc, char **argv)
         fprintf(stderr, "gmat: %s\n", reg_err.message);
         return reg_err.code == G_ERR_INVALID ? 2 : 1;
     }
+    GReaderOptions trust = {0};
+    if (greader_options_args(&argc, argv, &trust, &reg_err) != G_OK) {
+        fprintf(stderr, "gmat: %s\n", reg_err.message);
+        return 2;
+    }
     if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "help") == 0) {
         usage_main(argc < 2 ? stderr : stdout);
         return argc < 2 ? 2 : 0;
     }
     if (strcmp(argv[1], "laser") == 0) /* laser.c parses its own options */
-        return gmat_laser(argc, argv);
+        return gmat_laser(argc, argv, &trust);
     if (strcmp(argv[1], "swatch") == 0)
-        return gmat_swatch(argc, argv);
+        return gmat_swatch(argc, argv, &trust);
     if (strcmp(argv[1], "types") == 0)
         return types(argc, argv);
     Args a = {.cmd = argv[1]};
@@ -322,7 +331,9 @@ int main(int argc, char **argv)
     if (rc != 0)
         return rc;
     GColorModelOptions mo = {.step_nm = a.step};
-    GReaderOptions opt = {.colormodel = a.colormodel, .colormodel_options = &mo};
+    GReaderOptions opt = trust;
+    opt.colormodel = a.colormodel;
+    opt.colormodel_options = &mo;
     GmatContext ctx = {0};
     GError err;
     if (greader_load_file(a.file, &opt, &ctx.lib, &err) != G_OK) {

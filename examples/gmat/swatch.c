@@ -40,7 +40,8 @@ static void swatch_usage(FILE *f)
                "  --samples N         N x N samples per pixel (1..8, default 2)\n"
                "  --colormodel NAME   compute in this model instead of the file's (or one a module registers);\n"
                "                      --step NM its spacing\n"
-               "  --plugin FILE.so    load a module first (repeatable)\n");
+               "  --plugin FILE.so    load a module first (repeatable)\n"
+            "  --allow-plugins     let `plugin` statements of FILE load modules; --confine DIR: files under DIR only\n");
 }
 
 /* Light reaching the point's viewer (+z) from the swatch's lights, added into s->sum. */
@@ -141,7 +142,7 @@ static int render(Swatch *s, int size, int samples, int sphere, GImage *img)
     return G_OK;
 }
 
-int gmat_swatch(int argc, char **argv)
+int gmat_swatch(int argc, char **argv, const GReaderOptions *base)
 {
     const char *file = NULL, *name = NULL, *output = NULL, *colormodel = NULL;
     double size = 256, samples = 2, step = 0;
@@ -191,7 +192,9 @@ int gmat_swatch(int argc, char **argv)
         return 1;
     }
     GColorModelOptions mo = {.step_nm = step};
-    GReaderOptions opt = {.colormodel = colormodel, .colormodel_options = &mo};
+    GReaderOptions opt = *base;
+    opt.colormodel = colormodel;
+    opt.colormodel_options = &mo;
     if (greader_load_file(file, &opt, &s.lib, &err) != G_OK) {
         fprintf(stderr, "gmat swatch: %s\n", err.message);
         return 1;

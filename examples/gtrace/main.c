@@ -22,6 +22,7 @@ static void usage(FILE *f)
     fprintf(f,
             "usage: gtrace SCENE -o OUT [--width W] [--height H] [--spp N] [--depth D] [--colormodel M]\n"
             "              [--threads N] [--cutoff W] [--exposure STOPS] [--plugin FILE.so]... [-q]\n"
+            "              [--allow-plugins] [--confine DIR]\n"
             "              [--probe FILE] [--probe-technique T] [--probe-count N] [--probe-samples N]\n"
             "              [--probe-scale S] [--probe-shadows on|off]\n"
             "Renders a scene file (the library's text format with camera, object and light entries) with a\n"
@@ -36,6 +37,10 @@ static void usage(FILE *f)
             "                    module registers: --plugin or a `plugin` statement of the scene)\n"
             "  --plugin FILE.so  load a module before reading the scene (repeatable; a bare name is\n"
             "                    searched in the current directory, then GENERIC_PLUGIN_PATH)\n"
+            "  --allow-plugins   let `plugin` statements of the scene load modules (a module runs native\n"
+            "                    code: refused without this or GENERIC_ALLOW_PLUGINS=1)\n"
+            "  --confine DIR     every file the scene reads (itself, includes, modules, meshes, images,\n"
+            "                    BFC files, probes) must lie under DIR once symbolic links are resolved\n"
             "  --cutoff W        do not trace rays whose weight in the pixel is below W (default: the\n"
             "                    camera's, 1e-3; 0 traces every ray to the depth limit)\n"
             "  --threads N       render threads (default: all processors)\n"
@@ -188,6 +193,11 @@ int main(int argc, char **argv)
         fprintf(stderr, "gtrace: %s\n", reg_err.message);
         return reg_err.code == G_ERR_INVALID ? 2 : 1;
     }
+    GReaderOptions trust = {0};
+    if (greader_options_args(&argc, argv, &trust, &reg_err) != G_OK) {
+        fprintf(stderr, "gtrace: %s\n", reg_err.message);
+        return 2;
+    }
     Options o;
     int a = parse_args(argc, argv, &o);
     if (a != 0)
@@ -199,7 +209,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "gtrace: %s\n", err.message);
         return 1;
     }
-    if (scene_load_with(o.scene, o.colormodel, &o.probe, &scene, &err) < 0) {
+    if (scene_load_opts(o.scene, o.colormodel, &o.probe, &trust, &scene, &err) < 0) {
         fprintf(stderr, "gtrace: %s\n", err.message);
         return 1;
     }

@@ -444,11 +444,19 @@ int scene_load(const char *path, const char *colormodel, Scene **out, GError *er
 
 int scene_load_with(const char *path, const char *colormodel, const ProbeOverride *ov, Scene **out, GError *err)
 {
+    return scene_load_opts(path, colormodel, ov, NULL, out, err);
+}
+
+int scene_load_opts(const char *path, const char *colormodel, const ProbeOverride *ov, const GReaderOptions *base,
+                    Scene **out, GError *err)
+{
     *out = NULL;
     int rc = gtrace_register_types(err);
     if (rc < 0)
         return rc;
     GReaderOptions opt = {0};
+    if (base)
+        opt = *base;
     opt.colormodel = colormodel;
     GLibrary *lib = NULL;
     rc = greader_load_file(path, &opt, &lib, err);

@@ -18,5 +18,8 @@ int scene_from_library(GLibrary *lib, const char *name, Scene **out, GError *err
 int scene_load(const char *path, const char *colormodel, Scene **out, GError *err);
 /** Reads a scene file like scene_load, applying ov (NULL: nothing) to its light probes before they load. */
 int scene_load_with(const char *path, const char *colormodel, const ProbeOverride *ov, Scene **out, GError *err);
+/** scene_load_with starting from the reader options base (NULL: defaults; e.g. allow_plugins, confine_dir). */
+int scene_load_opts(const char *path, const char *colormodel, const ProbeOverride *ov, const GReaderOptions *base,
+                    Scene **out, GError *err);
 
 #endif

@@ -16,4 +16,13 @@
 #define GENERIC_API
 #endif
 
+/** Marks a function whose result is a status (G_OK or a negative code): ignoring it is a compile error under
+ * -Werror. GCC does not accept a (void) cast to silence it: a call whose status may truly be ignored must say
+ * so explicitly (e.g. `if (f() != G_OK) { ... }` with a comment). */
+#if defined(__GNUC__)
+#define GENERIC_NODISCARD __attribute__((warn_unused_result))
+#else
+#define GENERIC_NODISCARD
+#endif
+
 #endif

@@ -69,7 +69,7 @@ typedef struct GImageWriteOptions {
 
 /** Allocates a black image of the given size (channels 1..4); G_ERR_INVALID for bad sizes,
  * G_ERR_NOMEM when the allocation fails. */
-GENERIC_API int gimage_create(GImage *img, int width, int height, int channels, GError *err);
+GENERIC_API GENERIC_NODISCARD int gimage_create(GImage *img, int width, int height, int channels, GError *err);
 
 /** Frees the pixels and zeroes the struct; NULL, or an image already freed, is a no-op. */
 GENERIC_API void gimage_free(GImage *img);
@@ -88,17 +88,17 @@ GENERIC_API void gimage_set_memory_budget(size_t bytes);
  * G_ERR_IO when the file is not a regular file, cannot be opened or decoded, or its header claims more than
  * the file can hold (the message names the file and gives the reason), G_ERR_NOMEM when the image would
  * exceed the memory budget or memory runs out. On failure img is zeroed. */
-GENERIC_API int gimage_read(const char *path, unsigned flags, GImage *img, GError *err);
+GENERIC_API GENERIC_NODISCARD int gimage_read(const char *path, unsigned flags, GImage *img, GError *err);
 
 /** Reads only the size and channel count of a file (channels as the file has them, 1..n), with the checks
  * of gimage_read: G_ERR_IO when the file cannot be opened or its header gives a size or channel count below
  * 1 or more than the file can hold, G_ERR_NOMEM when the image would exceed the memory budget. */
-GENERIC_API int gimage_info(const char *path, int *width, int *height, int *channels, GError *err);
+GENERIC_API GENERIC_NODISCARD int gimage_info(const char *path, int *width, int *height, int *channels, GError *err);
 
 /** Writes img to path, encoding chosen by the extension (see the top of this file); the file appears
  * complete or not at all. G_ERR_INVALID for a bad image, G_ERR_IO when the format is unknown, the
  * destination cannot be written or the write fails. */
-GENERIC_API int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *opt, GError *err);
+GENERIC_API GENERIC_NODISCARD int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *opt, GError *err);
 
 /** Checks before any work that gimage_write can write path: its directory exists and is writable, path is
  * not something other than a regular file (gfile_check_output), and this OpenImageIO has a writer for its

@@ -18,9 +18,12 @@
  * examples/plugins/ for complete modules). A module may also write generic_module_init by hand and call
  * api->add_type for each record.
  *
- * The loader (gplugin_load, or a `plugin "file.so"` statement in a text file) opens the module with
- * dlopen(RTLD_NOW | RTLD_LOCAL), refuses a module whose generic_module_abi differs from the library's
- * GMODULE_ABI_VERSION (the message states both), and calls generic_module_init. Types added through
+ * The loader (gplugin_load, or a `plugin "file.so"` statement in a text file) first reads the file itself, without
+ * running it: it must be an ELF shared object for this machine whose dynamic symbol table defines both module
+ * symbols, and the generic_module_abi stored in it must be the library's GMODULE_ABI_VERSION (the message states
+ * both) - so a file that is not a module, or a module for another interface, is refused before any of its code
+ * (its ELF constructors included) runs. Only then is the same open file passed to dlopen(RTLD_NOW |
+ * RTLD_LOCAL), and generic_module_init called. Types added through
  * api->add_type are collected and registered together when init returns 0; if init fails, or one of the names is
  * taken already, none is registered and the module is closed again. Registration is only possible during init.
  *
@@ -34,7 +37,12 @@
  * in a base directory first (the current directory for gplugin_load, the including file's directory for a
  * `plugin` statement), then in each directory of the environment variable GENERIC_PLUGIN_PATH
  * (colon-separated, searched in order; empty entries are skipped). The first existing file is loaded; when
- * none exists the error lists every directory searched. */
+ * none exists the error lists every directory searched.
+ *
+ * Consent. Loading a module runs its native code. Modules named on a tool's command line (--plugin) or by a
+ * program (gplugin_load) are the user's choice; a `plugin` statement in a file is refused unless the caller
+ * allows it (GReaderOptions.allow_plugins, the tools' --allow-plugins, or GENERIC_ALLOW_PLUGINS=1 in the
+ * environment; see reader.h). */
 #ifndef GENERIC_PLUGIN_H
 #define GENERIC_PLUGIN_H
 
@@ -114,20 +122,25 @@ typedef int (*GModuleInitFn)(GModuleApi *api, GError *err);
 /** Loads a module: G_ERR_IO with the dlerror() text when it cannot be opened or lacks a symbol, G_ERR_VERSION
  * when it was built for another GMODULE_ABI_VERSION, the init's status when that fails, G_ERR_EXISTS when it
  * registers a name taken already. Loading the same file twice is a no-op. Thread safe. */
-GENERIC_API int gplugin_load(const char *path, GError *err);
+GENERIC_API GENERIC_NODISCARD int gplugin_load(const char *path, GError *err);
 /** Loads a module found by the rule above with `dir` as the base directory (NULL = the current directory):
  * a name with a slash is dir/name (or name itself when absolute); a bare name is dir/name if that exists, else
  * the first GENERIC_PLUGIN_PATH directory that holds it. G_ERR_IO naming the directories searched when no
  * file is found; otherwise as gplugin_load. */
-GENERIC_API int gplugin_load_from(const char *name, const char *dir, GError *err);
+GENERIC_API GENERIC_NODISCARD int gplugin_load_from(const char *name, const char *dir, GError *err);
+/** Finds a module by the rule above without loading it: *path receives a gmem_alloc copy of the file to load
+ * (free with gmem_free; NULL on failure). G_ERR_IO naming the directories searched when no file is found. */
+GENERIC_API GENERIC_NODISCARD int gplugin_find(const char *name, const char *dir, char **path, GError *err);
 /** Loads the module of every `--plugin FILE` (or `--plugin=FILE`) in argv[1..*argc-1], searched as
  * gplugin_load_from with the current directory, and removes those arguments from argv (keeping the order of the
  * others; argv[*argc] becomes NULL). Tools call it first, so that every later use of the registry sees the
  * modules. G_ERR_INVALID for a --plugin without a value, a module's load error otherwise (argv then unchanged
  * beyond the arguments consumed so far). */
-GENERIC_API int gplugin_load_args(int *argc, char **argv, GError *err);
+GENERIC_API GENERIC_NODISCARD int gplugin_load_args(int *argc, char **argv, GError *err);
 /** Name of the environment variable with the module search directories. */
 #define GPLUGIN_PATH_ENV "GENERIC_PLUGIN_PATH"
+/** Name of the environment variable that allows `plugin` statements in files when it is "1" (reader.h). */
+#define GPLUGIN_ALLOW_ENV "GENERIC_ALLOW_PLUGINS"
 /** Number of modules loaded so far. */
 GENERIC_API int gplugin_count(void);
 

@@ -95,24 +95,38 @@ typedef struct GReaderOptions {
     int max_depth;
     /** Per-file size limit in bytes; 0 = GREADER_DEFAULT_MAX_FILE_SIZE. */
     size_t max_file_size;
-    /** Non-zero refuses `plugin` statements (for files from untrusted sources). */
+    /** Non-zero refuses `plugin` statements (for files from untrusted sources), whatever allow_plugins says. */
     int no_plugins;
+    /** Non-zero allows `plugin` statements: a module runs native code, so a file may load one only with the
+     * caller's consent - this field, or GENERIC_ALLOW_PLUGINS=1 in the environment (plugin.h). Without either, a
+     * `plugin` statement fails naming these options. */
+    int allow_plugins;
+    /** When set, every file the load reads - the file itself, includes, plug-ins and every path read with
+     * greader_path (BFC files, images, meshes, probes) - must lie under this directory once symbolic links are
+     * resolved; others fail with G_ERR_INVALID at their name. NULL: no confinement. Not owned. */
+    const char *confine_dir;
 } GReaderOptions;
+
+/** Takes the reader options of a tool's command line out of argv[1..*argc-1] into opt (the other fields are
+ * left as they are): `--allow-plugins` sets opt->allow_plugins, `--confine DIR` (or `--confine=DIR`) sets
+ * opt->confine_dir to that argument (borrowed from argv). The remaining arguments keep their order; argv[*argc]
+ * becomes NULL. G_ERR_INVALID for a --confine without a value or whose DIR is not a directory. */
+GENERIC_API GENERIC_NODISCARD int greader_options_args(int *argc, char **argv, GReaderOptions *opt, GError *err);
 
 /** Reads a file into a new library. On failure *out is NULL, nothing is leaked and err holds
  * "file:line:col: message". */
-GENERIC_API int greader_load_file(const char *path, const GReaderOptions *opt, GLibrary **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_load_file(const char *path, const GReaderOptions *opt, GLibrary **out, GError *err);
 /** Reads text held in memory; `name` is used in messages, and relative paths (include, plugin, data files)
  * are resolved against the current directory. */
-GENERIC_API int greader_load_string(const char *text, const char *name, const GReaderOptions *opt, GLibrary **out,
+GENERIC_API GENERIC_NODISCARD int greader_load_string(const char *text, const char *name, const GReaderOptions *opt, GLibrary **out,
                         GError *err);
 
 /** Creates an empty library using `model` (not owned; NULL: "rgb", created and owned by the library). */
-GENERIC_API int glibrary_create(const GColorModel *model, GLibrary **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int glibrary_create(const GColorModel *model, GLibrary **out, GError *err);
 /** Reads a file into an existing library (e.g. a scene after a material file). opt->model and
  * opt->colormodel are ignored: the library's model is used. On failure the entries read before the error stay
  * in the library (they are owned by it and freed with it). */
-GENERIC_API int glibrary_load_file(GLibrary *lib, const char *path, const GReaderOptions *opt, GError *err);
+GENERIC_API GENERIC_NODISCARD int glibrary_load_file(GLibrary *lib, const char *path, const GReaderOptions *opt, GError *err);
 /** Releases every object of the library (reverse order of creation) and its model if it owns it; NULL is a
  * no-op. Materials still referenced elsewhere (gmaterial_ref) live on, but can only be used while their colour
  * model exists: to keep materials beyond their library, load with your own model (GReaderOptions.model). */
@@ -126,7 +140,7 @@ GENERIC_API void *glibrary_find(const GLibrary *lib, GKind kind, const char *nam
 GENERIC_API GMaterial *glibrary_material(const GLibrary *lib, const char *name);
 /** Converts the colour defined under name into `out` (storage of the library's model provided by the
  * caller, see gcolor_wrap/gcolor_alloc), read in the given role. G_ERR_NOTFOUND when not defined. */
-GENERIC_API int glibrary_color(const GLibrary *lib, const char *name, GColorRole role, GColor *out, GError *err);
+GENERIC_API GENERIC_NODISCARD int glibrary_color(const GLibrary *lib, const char *name, GColorRole role, GColor *out, GError *err);
 /** Number of top-level entries of a kind (named and anonymous, in file order; nested anonymous entries are
  * owned but not listed). Materials and nodes are listed under their own kind. */
 GENERIC_API int glibrary_count(const GLibrary *lib, GKind kind);
@@ -136,7 +150,7 @@ GENERIC_API void *glibrary_entry(const GLibrary *lib, GKind kind, int i, const c
 /** Adds an object made by code under name (NULL = anonymous); the library takes ownership and releases it
  * with type->destroy (or the kind's default). G_ERR_EXISTS when the name is taken in that kind, and then the
  * object is released at once (the caller never keeps a half-owned object). */
-GENERIC_API int glibrary_add(GLibrary *lib, const GTypeInfo *type, const char *name, void *object, GError *err);
+GENERIC_API GENERIC_NODISCARD int glibrary_add(GLibrary *lib, const GTypeInfo *type, const char *name, void *object, GError *err);
 
 /* ======================================================================================================
  * The API of parse routines
@@ -166,37 +180,41 @@ typedef struct GToken {
 /* ---- tokens ---- */
 
 /** Looks at the next token without consuming it. */
-GENERIC_API int greader_peek(GReader *r, GToken *tok, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_peek(GReader *r, GToken *tok, GError *err);
 /** Consumes and returns the next token. */
-GENERIC_API int greader_next(GReader *r, GToken *tok, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_next(GReader *r, GToken *tok, GError *err);
 /** Consumes the next token when it has the given type: 1 when consumed, 0 when not (nothing consumed). */
 GENERIC_API int greader_accept(GReader *r, int type, GError *err);
 /** Consumes a token of the given type or fails with "expected WHAT, found ..."; what may be NULL. */
-GENERIC_API int greader_expect(GReader *r, int type, const char *what, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_expect(GReader *r, int type, const char *what, GError *err);
 /** 1 when the next token is a number (so optional trailing numbers can be read), 0 when not. */
 GENERIC_API int greader_at_number(GReader *r, GError *err);
 
 /* ---- values ---- */
 
 /** Reads a number. */
-GENERIC_API int greader_number(GReader *r, double *out, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_number(GReader *r, double *out, GError *err);
 /** Reads a number and checks lo <= value <= hi ("value X out of range [lo, hi]" at the number). */
-GENERIC_API int greader_number_in(GReader *r, double lo, double hi, double *out, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_number_in(GReader *r, double lo, double hi, double *out, GError *err);
 /** Reads a whole number within [lo, hi]. */
-GENERIC_API int greader_int(GReader *r, long lo, long hi, long *out, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_int(GReader *r, long lo, long hi, long *out, GError *err);
 /** Reads a vector, written `<x, y, z>` or `x y z`. */
-GENERIC_API int greader_vec3(GReader *r, GVec3 *out, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_vec3(GReader *r, GVec3 *out, GError *err);
 /** Reads a boolean: true/false, yes/no, on/off, 1/0. */
-GENERIC_API int greader_bool(GReader *r, int *out, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_bool(GReader *r, int *out, GError *err);
 /** Reads a quoted string; *out is a copy made with gmem_alloc (free it with gmem_free). */
-GENERIC_API int greader_string(GReader *r, char **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_string(GReader *r, char **out, GError *err);
 /** Reads an identifier into buf (an error when it does not fit). */
-GENERIC_API int greader_ident(GReader *r, char *buf, size_t size, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_ident(GReader *r, char *buf, size_t size, GError *err);
 /** Reads an identifier that must be one of the NULL-terminated choices; *index gets its position. */
-GENERIC_API int greader_choice(GReader *r, const char *const *choices, int *index, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_choice(GReader *r, const char *const *choices, int *index, GError *err);
 /** Reads a quoted file name and resolves it against the directory of the file being read; *out is a
- * gmem_alloc copy of the resulting path. */
-GENERIC_API int greader_path(GReader *r, char **out, GError *err);
+ * gmem_alloc copy of the resulting path. When the load is confined (GReaderOptions.confine_dir) a path outside
+ * the directory is an error at the name, and *out is the path with its symbolic links resolved. */
+GENERIC_API GENERIC_NODISCARD int greader_path(GReader *r, char **out, GError *err);
+/** G_OK when the load may read path: always without confinement, else when path lies under
+ * GReaderOptions.confine_dir (see there); for parse routines that find files other than with greader_path. */
+GENERIC_API GENERIC_NODISCARD int greader_path_allowed(GReader *r, const char *path, GError *err);
 
 /* ---- parameter blocks ---- */
 
@@ -204,29 +222,29 @@ GENERIC_API int greader_path(GReader *r, char **out, GError *err);
  * next parameter name (valid until the next read) for the routine to read its value; 0 when the block is
  * closed or when the entry has no block at all (a type keyword followed by anything but `{` keeps all its
  * defaults); negative on error. A name given twice and a missing `}` are reported by the reader. */
-GENERIC_API int greader_param(GReader *r, const char **key, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_param(GReader *r, const char **key, GError *err);
 /** Reports the parameter just returned by greader_param as unknown, listing the expected names. */
-GENERIC_API int greader_unknown_param(GReader *r, const char *expected, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_unknown_param(GReader *r, const char *expected, GError *err);
 /** Reads a `{ ... }` block of positional values: consumes `{` and returns 0 (then read the values until
  * greader_block_end returns 1). */
-GENERIC_API int greader_block_begin(GReader *r, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_block_begin(GReader *r, GError *err);
 /** 1 (and consumes `}`) when the block opened by greader_block_begin ends here, 0 when more follows;
  * a missing `}` at the end of the file is an error naming where the block opened. */
-GENERIC_API int greader_block_end(GReader *r, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_block_end(GReader *r, GError *err);
 
 /* ---- objects, colours, names ---- */
 
 /** Reads a VALUE of a kind: a nested anonymous entry `TYPE parameters` (calling its parse routine) or the
  * name of an entry defined before. *object is borrowed from the library (see Ownership above); *type, when
  * type is not NULL, receives the type the object was made by. */
-GENERIC_API int greader_object(GReader *r, GKind kind, void **object, const GTypeInfo **type, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_object(GReader *r, GKind kind, void **object, const GTypeInfo **type, GError *err);
 /** greader_object for a material or texture node; borrowed (gmaterial_ref to keep it). */
-GENERIC_API int greader_material(GReader *r, GMaterial **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_material(GReader *r, GMaterial **out, GError *err);
 /** Reads a colour literal (rgb, spectrum, blackbody, illuminant, line, bfc, scale, or a registered colour
  * type) or a colour name, and converts it in the given role into the reader's colour model. `out` must be a
  * cleared handle ({0}); it receives heap storage (free with gcolor_free), also when it is left black by a
  * failure, so gcolor_free is always right. */
-GENERIC_API int greader_color(GReader *r, GColorRole role, GColor *out, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_color(GReader *r, GColorRole role, GColor *out, GError *err);
 /** The colour model of the file (fixed from here on: a `colormodel` entry after this is an error). */
 GENERIC_API const GColorModel *greader_colormodel(GReader *r);
 /** The library being loaded. */
@@ -236,7 +254,7 @@ GENERIC_API GLibrary *greader_library(GReader *r);
 GENERIC_API void *greader_lookup(GReader *r, GKind kind, const char *name);
 /** Defines an object under a name (NULL = anonymous) in the library being loaded, which takes ownership
  * (see glibrary_add; errors are reported at the last token read). */
-GENERIC_API int greader_define(GReader *r, const GTypeInfo *type, const char *name, void *object, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_define(GReader *r, const GTypeInfo *type, const char *name, void *object, GError *err);
 /** Directory of the file being read ("." for text in memory), for resolving relative paths. */
 GENERIC_API const char *greader_dir(GReader *r);
 /** Name of the file being read, as given to the loader or the include statement. */
@@ -248,13 +266,13 @@ GENERIC_API void greader_position(GReader *r, int *line, int *col);
 
 /** Fails with G_ERR_PARSE and "file:line:col: message" at the last token read (err->line, err->col hold the
  * position); returns G_ERR_PARSE. */
-GENERIC_API int greader_error(GReader *r, GError *err, const char *fmt, ...)
+GENERIC_API GENERIC_NODISCARD int greader_error(GReader *r, GError *err, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 3, 4)))
 #endif
     ;
 /** The same at an explicit position (e.g. a token kept from earlier), with a status code. */
-GENERIC_API int greader_error_at(GReader *r, GError *err, int code, int line, int col, const char *fmt, ...)
+GENERIC_API GENERIC_NODISCARD int greader_error_at(GReader *r, GError *err, int code, int line, int col, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 6, 7)))
 #endif
@@ -264,7 +282,7 @@ GENERIC_API int greader_error_at(GReader *r, GError *err, int code, int line, in
  * the last token read; the message gets the "file:line:col: " prefix and err->line, err->col the position. A
  * message that already has a position is left as it is. A parse routine that returns a constructor's failure
  * need not call this: the reader places every failure of a parse routine so. Returns err->code. */
-GENERIC_API int greader_locate(GReader *r, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_locate(GReader *r, GError *err);
 
 /* ======================================================================================================
  * Colour literals (lib/colorparse.c)
@@ -298,13 +316,13 @@ GENERIC_API GColorSpec *gcolorspec_create(void);
 /** Frees a spec and its matrix; NULL is a no-op. */
 GENERIC_API void gcolorspec_destroy(GColorSpec *s);
 /** Deep copy of src into a new spec. */
-GENERIC_API int gcolorspec_copy(const GColorSpec *src, GColorSpec **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gcolorspec_copy(const GColorSpec *src, GColorSpec **out, GError *err);
 /** Converts a spec in a role into out (which has storage of the target model). A line is spread over a
  * triangle one sample step wide on each side in spectral models (1 nm on the exchange grid), so its energy and
  * centre survive any sampling; a re-radiation matrix used as a light is G_ERR_INVALID. */
-GENERIC_API int gcolorspec_to_color(const GColorSpec *s, GColorRole role, GColor *out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gcolorspec_to_color(const GColorSpec *s, GColorRole role, GColor *out, GError *err);
 /** Reads a colour literal or name at the reader's position into a new spec (what greader_color parses). */
-GENERIC_API int greader_color_spec(GReader *r, GColorSpec **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_color_spec(GReader *r, GColorSpec **out, GError *err);
 
 #ifdef __cplusplus
 }

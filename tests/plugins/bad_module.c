@@ -1,8 +1,25 @@
-/* bad_module.c - broken modules for tests/test_plugin.c, built three ways by the Makefile's plug-in section:
- *   -DBAD_ABI    exports another generic_module_abi than the library's (must be refused, naming both);
- *   -DFAIL_INIT  registers a type and then fails its init (nothing may stay registered);
- *   -DNO_INIT    exports the version but no entry point. */
+/* bad_module.c - broken modules for tests/test_plugin.c, built four ways by the Makefile's plug-in section:
+ *   -DBAD_ABI       exports another generic_module_abi than the library's (must be refused, naming both);
+ *   -DFAIL_INIT     registers a type and then fails its init (nothing may stay registered);
+ *   -DNO_INIT       exports the version but no entry point;
+ *   -DNOT_A_MODULE  a shared object without either module symbol (built as constructor_only.so).
+ * Each has an ELF constructor that creates the file named by GENERIC_TEST_CONSTRUCTOR_MARK (when set): the
+ * loader must refuse all but FAIL_INIT before their constructor runs. */
 #include <generic/plugin.h>
+
+#include <fcntl.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+__attribute__((constructor)) static void mark_constructor_ran(void)
+{
+    const char *mark = getenv("GENERIC_TEST_CONSTRUCTOR_MARK");
+    int fd = mark ? open(mark, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600) : -1;
+    if (fd >= 0)
+        close(fd);
+}
+
+#ifndef NOT_A_MODULE
 
 #ifdef BAD_ABI
 GENERIC_MODULE_EXPORT const int generic_module_abi = GMODULE_ABI_VERSION + 41;
@@ -24,3 +41,4 @@ GENERIC_MODULE_EXPORT int generic_module_init(GModuleApi *api, GError *err)
     return rc;
 }
 #endif
+#endif /* NOT_A_MODULE */

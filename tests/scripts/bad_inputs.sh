@@ -161,7 +161,7 @@ for case in "bad_abi:was built for module interface version $((ABI + 41)), this 
         grep -q -F "$msg" "$TMP/err" || fail "--plugin $so.so: expected '$msg', got: $(cat "$TMP/err")"
     fi
     printf 'plugin "%s"\nmaterial m lambert\n' "$PLUGINS/$so.so" > "$TMP/plugin_$so.mat"
-    run_fails "plugin \"$so.so\" statement" "$GMAT" list "$TMP/plugin_$so.mat"
+    run_fails "plugin \"$so.so\" statement" "$GMAT" list "$TMP/plugin_$so.mat" --allow-plugins
     grep -q -F "plugin_$so.mat:1:8: " "$TMP/err" && grep -q -F "$msg" "$TMP/err" ||
         fail "plugin statement $so.so: expected 'plugin_$so.mat:1:8: ...$msg', got: $(cat "$TMP/err")"
 done
@@ -206,7 +206,7 @@ for spec in "$TMP/fifo:a FIFO" "/dev/zero:a character device" "/dev/urandom:a ch
     printf 'plugin "%s"\n' "$p" > "$TMP/plugin_input.mat"
     for c in "gmat list $p:$GMAT list $p" "include:$GMAT list $TMP/include_input.mat" \
              "image node:$GMAT list $TMP/image_input.mat" "bfc:$GMAT list $TMP/bfc_input.mat" \
-             "plugin statement:$GMAT list $TMP/plugin_input.mat" "--plugin:$GMAT list $TMP/good.mat --plugin $p" \
+             "plugin statement:$GMAT list $TMP/plugin_input.mat --allow-plugins" "--plugin:$GMAT list $TMP/good.mat --plugin $p" \
              "mesh:$GTRACE $TMP/mesh_input.scene -q -o $TMP/mesh.png" \
              "probe:$GPROBE approx --probe $p --technique adaptive -n 4 -o $TMP/lights.txt"; do
         what=${c%%:*}

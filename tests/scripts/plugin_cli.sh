@@ -73,7 +73,7 @@ EOM
 sed 1d scene.scene > plain.scene
 "$BIN/gtrace" plain.scene -o plain.exr --plugin "$G" --colormodel grey > out 2>&1 || fail "gtrace --plugin --colormodel grey: $(cat out)"
 grep -q "grey," out || fail "gtrace --plugin: not rendered in grey: $(cat out)"
-GENERIC_PLUGIN_PATH="$PLUGINS" "$BIN/gtrace" scene.scene -o grey.exr --colormodel grey > out 2>&1 ||
+GENERIC_PLUGIN_PATH="$PLUGINS" "$BIN/gtrace" scene.scene -o grey.exr --colormodel grey --allow-plugins > out 2>&1 ||
     fail "gtrace --colormodel grey with plugin \"grey.so\" in the scene: $(cat out)"
 grep -q "16x12, 1 spp, depth 2, grey," out || fail "gtrace: the scene's module's model was not used: $(cat out)"
 "$BIN/gtrace" plain.scene -o x.exr --plugin nothere.so > out 2>&1 && fail "gtrace --plugin nothere.so succeeded"
@@ -95,9 +95,9 @@ GENERIC_PLUGIN_PATH="$PLUGINS" "$BIN/gcolor" list --plugin ./grey.so > out 2>&1 
 mkdir scenes
 cp "$PLUGINS/grey.so" scenes/
 cp scene.scene scenes/
-(cd / && "$BIN/gtrace" "$TMP/scenes/scene.scene" -o "$TMP/next.exr" --colormodel grey -q) > out 2>&1 ||
+(cd / && "$BIN/gtrace" "$TMP/scenes/scene.scene" -o "$TMP/next.exr" --colormodel grey -q --allow-plugins) > out 2>&1 ||
     fail "plugin \"grey.so\" next to the scene is not found: $(cat out)"
-"$BIN/gtrace" scene.scene -o x.exr > out 2>&1 && fail "plugin \"grey.so\" found without a path"
+"$BIN/gtrace" scene.scene -o x.exr --allow-plugins > out 2>&1 && fail "plugin \"grey.so\" found without a path"
 grep -q "scene.scene:1:8: cannot load module 'grey.so': file not found in \." out ||
     fail "a file's missing module: no positioned message listing the directory: $(cat out)"
 

@@ -53,7 +53,8 @@ int main(int argc, char **argv)
         return 1;
     }
     GLibrary *lib;
-    if (greader_load_file(argv[2], NULL, &lib, &err) != G_OK) {
+    GReaderOptions allow = {.allow_plugins = 1}; /* the example's plugin statement loads the module */
+    if (greader_load_file(argv[2], &allow, &lib, &err) != G_OK) {
         fprintf(stderr, "%s\n", err.message);
         return 1;
     }
