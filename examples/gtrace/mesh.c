@@ -3,7 +3,6 @@
 #include "geometry.h"
 
 #include <errno.h>
-#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -19,7 +18,7 @@ typedef struct Arr {
 static int arr_push(Arr *a, const void *x, size_t size)
 {
     if (a->n == a->cap) {
-        if (a->cap > INT_MAX / 2)
+        if (a->cap >= 0x40000000) /* doubling would overflow an int */
             return G_ERR_NOMEM;
         int cap = a->cap ? a->cap * 2 : 256;
         void *nv = gmem_realloc(a->data, (size_t)cap * size);
