@@ -279,7 +279,7 @@ static int diagonal_column(const GReradiation *r, int o)
     double tol = 1e-6 * fmin(r->in_step, r->out_step);
     double x = r->out_min + o * r->out_step;
     double i = floor((x - r->in_min) / r->in_step + 0.5);
-    if (i < 0 || i >= r->n_in || fabs(r->in_min + i * r->in_step - x) > tol)
+    if (!(i >= 0 && i < r->n_in) || fabs(r->in_min + i * r->in_step - x) > tol) /* also NaN */
         return -1;
     return (int)i;
 }

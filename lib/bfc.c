@@ -94,6 +94,10 @@ static int near(double a, double b) { return fabs(a - b) < 1e-6 * (fabs(a) + fab
 int gbfc_parse(const char *text, size_t len, const char *name, GBfcData *out, GError *err)
 {
     memset(out, 0, sizeof *out);
+    if (len >= 3 && memcmp(text, "\xef\xbb\xbf", 3) == 0) { /* a UTF-8 byte-order mark: not part of the text */
+        text += 3;
+        len -= 3;
+    }
     Cursor c = {name ? name : "<bfc>", text, text + len, 1, text, text, 0};
     for (int i = 1; i <= HEADER_LINES; i++) {
         if (c.p >= c.end)

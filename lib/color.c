@@ -348,6 +348,10 @@ int gcolor_from_reradiation(GColor *c, const GReradiation *r, GError *err)
     for (int i = 0; i < GNM_COUNT; i++) {
         double nm = GNM_MIN + i;
         double f = (nm - r->out_min) / r->out_step;
+        if (!(f > -1.0 && f < r->n_out)) { /* no emission row within one step (also a grid far away) */
+            s.v[i] = 0.0f;
+            continue;
+        }
         int o = (int)floor(f);
         double t = f - o, v = 0.0;
         for (int k = 0; k < 2; k++) {

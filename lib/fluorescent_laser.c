@@ -46,11 +46,10 @@ static int beam_setup(Beam *b, const GMaterial *mat, GScratch *scratch, double n
         if (!isfinite(nm))
             return gerror_set(err, G_ERR_INVALID, "laser: wavelength is not a number");
         double f = (nm - m->lambda_min) / m->lambda_step;
-        int k = (int)floor(f + 0.5);
-        if (f < -0.5 || k >= m->nsamples)
+        if (!(f >= -0.5 && f < m->nsamples - 0.5)) /* tested before the cast: f may be beyond any int */
             return gerror_set(err, G_ERR_INVALID, "laser: %g nm is outside the model's range %g..%g nm", nm,
                               m->lambda_min, m->lambda_min + (m->nsamples - 1) * m->lambda_step);
-        b->sample = k;
+        b->sample = (int)floor(f + 0.5);
     }
     double e = elevation_deg * M_PI / 180.0;
     b->in = gvec3(-cos(e), 0.0, sin(e));

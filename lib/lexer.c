@@ -20,6 +20,8 @@ void glexer_init(GLexer *lx, const char *name, const char *text, size_t len)
     lx->line = 1;
     lx->col = 1;
     lx->quiet = 0;
+    if (len >= 3 && memcmp(text, "\xef\xbb\xbf", 3) == 0) /* a UTF-8 byte-order mark: not part of the text */
+        lx->pos = 3;
 }
 
 static locale_t c_locale;

@@ -72,11 +72,12 @@ static int map_sample(GSpectralGrid src, GSpectralGrid dst, int interpolate, int
     *first = 0;
     if (!interpolate && dst.step >= src.step * (1.0 - EPS)) {
         double lo = fmax(x - dst.step, dst.min), hi = fmin(x + dst.step, dst.min + (dst.n - 1) * dst.step);
-        int p0 = (int)ceil((lo - src.min) / src.step - EPS), p1 = (int)floor((hi - src.min) / src.step + EPS);
-        if (p0 < 0)
-            p0 = 0;
-        if (p1 > src.n - 1)
-            p1 = src.n - 1;
+        /* clamped to the source's samples as doubles: a source grid far away (a BFC grid at 1e300 nm) puts
+         * these positions beyond any integer type */
+        double a0 = ceil((lo - src.min) / src.step - EPS), a1 = floor((hi - src.min) / src.step + EPS);
+        if (!(a1 >= 0.0 && a0 <= src.n - 1.0 && a0 <= a1)) /* no source sample in reach (or NaN) */
+            return 0;
+        int p0 = a0 > 0.0 ? (int)a0 : 0, p1 = a1 < src.n - 1.0 ? (int)a1 : src.n - 1;
         double raw[2048], sum = 0.0;
         int count = 0;
         for (int p = p0; p <= p1; p++) {
@@ -99,7 +100,7 @@ static int map_sample(GSpectralGrid src, GSpectralGrid dst, int interpolate, int
         return count;
     }
     double f = (x - src.min) / src.step;
-    if (f < -EPS || f > src.n - 1 + EPS)
+    if (!(f >= -EPS && f <= src.n - 1 + EPS)) /* outside the source, or NaN */
         return 0;
     int p = (int)floor(f + EPS);
     if (p > src.n - 2)
@@ -223,7 +224,7 @@ static void init_lum(const GSpectral *s, float *lum)
 static double nm_at(const GSpectrumNM *s, double x)
 {
     double f = x - GNM_MIN;
-    if (f < -EPS || f > GNM_COUNT - 1 + EPS)
+    if (!(f >= -EPS && f <= GNM_COUNT - 1 + EPS))
         return 0.0;
     int i = (int)floor(f + EPS);
     if (i > GNM_COUNT - 2)

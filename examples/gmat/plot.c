@@ -34,6 +34,9 @@ static void put(GImage *img, int x, int y, const float c[3])
 
 static void line(GImage *img, double x0, double y0, double x1, double y1, const float c[3])
 {
+    const double far = 1e6; /* far outside any image: not drawn, and kept away from the integer casts below */
+    if (!(fabs(x0) < far && fabs(y0) < far && fabs(x1) < far && fabs(y1) < far))
+        return;
     int n = (int)(fmax(fabs(x1 - x0), fabs(y1 - y0)) * 2) + 1;
     for (int i = 0; i <= n; i++) {
         double t = (double)i / n;

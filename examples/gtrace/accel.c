@@ -37,16 +37,8 @@ static void to_object(const Object *o, const Ray *r, GVec3 *ro, GVec3 *rd)
 static void user_bounds(const struct RTCBoundsFunctionArguments *args)
 {
     const Object *o = args->geometryUserPtr;
-    GVec3 lo, hi;
-    shape_bounds(o, &lo, &hi);
-    GVec3 wlo = gvec3(INFINITY, INFINITY, INFINITY), whi = gvec3(-INFINITY, -INFINITY, -INFINITY);
-    for (int i = 0; i < 8; i++) {
-        GVec3 c = gvec3((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
-        if (o->has_xf)
-            c = xform_point(&o->xf, c);
-        wlo = gvec3(fmin(wlo.x, c.x), fmin(wlo.y, c.y), fmin(wlo.z, c.z));
-        whi = gvec3(fmax(whi.x, c.x), fmax(whi.y, c.y), fmax(whi.z, c.z));
-    }
+    GVec3 wlo, whi;
+    object_world_bounds(o, &wlo, &whi);
     /* pad by a relative epsilon so flat shapes and float rounding do not lose hits */
     double pad = 1e-6 * (1.0 + fmax(fmax(fabs(wlo.x), fabs(whi.x)), fmax(fmax(fabs(wlo.y), fabs(whi.y)),
                                                                       fmax(fabs(wlo.z), fabs(whi.z)))));
@@ -209,8 +201,20 @@ static void make_ray(const Ray *r, struct RTCRay *ray)
     ray->flags = 0;
 }
 
+/* Embree asserts (and ends the process) on a ray it cannot trace: an origin or direction that is not finite
+ * or beyond about 1.8e18. Scenes are refused beyond SCENE_MAX_COORD when they are read; a ray that still gets
+ * here so (a NaN from a material's direction) hits nothing. */
+static int traceable(const Ray *r)
+{
+    const double big = 1.0e18;
+    return fabs(r->o.x) < big && fabs(r->o.y) < big && fabs(r->o.z) < big && fabs(r->d.x) < big &&
+           fabs(r->d.y) < big && fabs(r->d.z) < big && r->tmin >= 0.0 && r->tmin < 3.0e38 && !(r->tmax < r->tmin);
+}
+
 int accel_intersect(const Scene *s, const Ray *r, Hit *h)
 {
+    if (!traceable(r))
+        return 0;
     Context cx;
     rtcInitIntersectContext(&cx.rtc);
     cx.ray = r;
@@ -241,6 +245,8 @@ int accel_intersect(const Scene *s, const Ray *r, Hit *h)
 
 int accel_occluded(const Scene *s, const Ray *r)
 {
+    if (!traceable(r))
+        return 0;
     Context cx;
     rtcInitIntersectContext(&cx.rtc);
     cx.ray = r;

@@ -27,11 +27,23 @@ typedef struct HitGeom {
 
 /** Half size of a plane's bounded extent in its own units. */
 #define SHAPE_PLANE_EXTENT 1.0e5
+/** Largest coordinate a scene may reach, in world space after transforms: every object's extent, every
+ * light's position and the camera lie within [-SCENE_MAX_COORD, SCENE_MAX_COORD] in x, y and z. Embree traces
+ * single-precision rays and stops the process on an origin beyond about 1.8e18; 1e15 keeps a margin, and
+ * float positions there are already 1e8 units apart. */
+#define SCENE_MAX_COORD 1.0e15
 
 /** Object-space ray-shape intersection in (tmin, tmax); 1 with *t and *surface when hit. */
 int shape_intersect(const Object *o, GVec3 ro, GVec3 rd, double tmin, double tmax, double *t, int *surface);
 /** Object-space bounds of a shape (planes are bounded at SHAPE_PLANE_EXTENT). */
 void shape_bounds(const Object *o, GVec3 *lo, GVec3 *hi);
+/** World-space bounds of an object (its shape's bounds through its transform; not padded). */
+void object_world_bounds(const Object *o, GVec3 *lo, GVec3 *hi);
+/** 1 when every component of v is finite and within [-SCENE_MAX_COORD, SCENE_MAX_COORD]. */
+int scene_coord_ok(GVec3 v);
+/** 0 when the object's world extent lies within SCENE_MAX_COORD; otherwise the largest coordinate it reaches
+ * (INFINITY when one overflows or is not a number). */
+double object_extent_check(const Object *o);
 /** Surface details of an analytic shape at a hit. */
 void shape_hit_geom(const Object *o, const Ray *r, const Hit *h, HitGeom *g);
 /** Surface details of a mesh triangle at a hit. */

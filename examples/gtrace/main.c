@@ -20,19 +20,23 @@ static void usage(FILE *f)
     char models[256];
     gregistry_names(GKIND_COLORMODEL, models, sizeof models);
     fprintf(f,
-            "usage: gtrace SCENE -o OUT [--width W] [--height H] [--spp N] [--depth D] [--colormodel M]\n"
-            "              [--threads N] [--cutoff W] [--exposure STOPS] [--plugin FILE.so]... [-q]\n"
+            "usage: gtrace SCENE -o OUT [--width W] [--height H] [--spp N] [--depth D] [--max-rays N]\n"
+            "              [--colormodel M] [--threads N] [--cutoff W] [--exposure STOPS] [--plugin FILE.so]... [-q]\n"
             "              [--allow-plugins] [--confine DIR]\n"
             "              [--probe FILE] [--probe-technique T] [--probe-count N] [--probe-samples N]\n"
             "              [--probe-scale S] [--probe-shadows on|off]\n"
             "Renders a scene file (the library's text format with camera, object and light entries) with a\n"
             "Whitted ray tracer that uses colours and materials only through the generic interfaces.\n"
+            "Every scene coordinate (after transforms) must be finite and within +-1e15.\n"
             "  -o OUT            output image; the extension picks the format: .exr linear float,\n"
             "                    .png/.jpg display-encoded (sRGB) after the exposure, clamped\n"
             "  --width W         image width (default: the camera's; height follows its aspect)\n"
             "  --height H        image height (default: the camera's)\n"
             "  --spp N           samples per pixel, stratified and jittered (default: the camera's)\n"
-            "  --depth D         reflection/refraction recursion depth (default: the camera's)\n"
+            "  --depth D         reflection/refraction recursion depth (default: the camera's, 0..1000)\n"
+            "  --max-rays N      reflected and refracted rays one camera sample may spawn, 1..1000000\n"
+            "                    (default 4096): with cutoff 0, glass doubles them at every level; the\n"
+            "                    branches beyond are not traced and the samples so cut are reported\n"
             "  --colormodel M    compute in colour model M instead of the scene's (%s, or one a\n"
             "                    module registers: --plugin or a `plugin` statement of the scene)\n"
             "  --plugin FILE.so  load a module before reading the scene (repeatable; a bare name is\n"
@@ -49,7 +53,8 @@ static void usage(FILE *f)
             "                    directory); the other --probe options replace its other settings\n"
             "  --probe-technique T    mediancut, adaptive, kmeans, irradiance (directional lights) or\n"
             "                         reference (Monte Carlo over the whole probe)\n"
-            "  --probe-count N        number of lights of a technique\n"
+            "  --probe-count N        number of lights of a technique (1..4096; irradiance: at most 128,\n"
+            "                         and count x fit_normals at most 524288)\n"
             "  --probe-samples N      reference: samples per shading point (1..65536)\n"
             "  --probe-shadows on|off reference: shadow rays (off: the unoccluded image)\n"
             "  --probe-scale S        multiplies the probe's radiance\n"
@@ -101,7 +106,7 @@ static int parse_probe_option(const char *a, const char *v, ProbeOverride *p)
 typedef struct Options {
     ProbeOverride probe;
     const char *scene, *out, *colormodel;
-    int width, height, spp, depth, threads, quiet;
+    int width, height, spp, depth, threads, quiet, max_rays;
     int have_exposure, have_cutoff;
     double exposure, cutoff;
 } Options;
@@ -138,6 +143,8 @@ static int parse_args(int argc, char **argv, Options *o)
                 rc = parse_int(a, v, 1, 65536, &o->spp);
             else if (strcmp(a, "--depth") == 0)
                 rc = parse_int(a, v, 0, 1000, &o->depth);
+            else if (strcmp(a, "--max-rays") == 0)
+                rc = parse_int(a, v, 1, RENDER_LIMIT_MAX_RAYS, &o->max_rays);
             else if (strcmp(a, "--threads") == 0)
                 rc = parse_int(a, v, 1, 1024, &o->threads);
             else if (strcmp(a, "--colormodel") == 0)
@@ -217,7 +224,8 @@ int main(int argc, char **argv)
         probe_describe(scene, stdout);
     const Camera *cam = &scene->camera;
     RenderSettings rs = {.width = cam->width, .height = cam->height, .spp = cam->spp, .depth = cam->depth,
-                         .threads = o.threads, .quiet = o.quiet, .cutoff = o.have_cutoff ? o.cutoff : cam->cutoff};
+                         .threads = o.threads, .quiet = o.quiet, .cutoff = o.have_cutoff ? o.cutoff : cam->cutoff,
+                         .max_rays = o.max_rays};
     if (o.width > 0 && o.height > 0) {
         rs.width = o.width;
         rs.height = o.height;
@@ -251,6 +259,10 @@ int main(int argc, char **argv)
         scene_destroy(scene);
         return 1;
     }
+    if (st.capped)
+        fprintf(stderr, "gtrace: warning: %llu camera samples reached the limit of %d reflected and refracted "
+                "rays per sample; their deeper branches were not traced (raise --cutoff, lower --depth, or "
+                "raise --max-rays)\n", (unsigned long long)st.capped, rs.max_rays > 0 ? rs.max_rays : RENDER_DEFAULT_MAX_RAYS);
     if (st.nonfinite)
         fprintf(stderr, "gtrace: warning: %llu samples were NaN or infinite and were replaced by black\n",
                 (unsigned long long)st.nonfinite);

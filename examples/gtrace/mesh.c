@@ -21,6 +21,8 @@ typedef struct Arr {
 static int arr_push(Arr *a, const void *x, size_t size)
 {
     if (a->n == a->cap) {
+        if (a->cap >= 0x40000000) /* doubling would overflow an int */
+            return G_ERR_NOMEM;
         int cap = a->cap ? a->cap * 2 : 256;
         void *nv = gmem_realloc(a->data, (size_t)cap * size);
         if (!nv)
@@ -54,7 +56,7 @@ static int resolve(long idx, int count)
 {
     if (idx > 0 && idx <= count)
         return (int)idx - 1;
-    if (idx < 0 && -idx <= count)
+    if (idx < 0 && idx >= -(long)count) /* never -idx: it overflows for LONG_MIN */
         return count + (int)idx;
     return -2;
 }
@@ -84,8 +86,11 @@ static int read_numbers(Loader *L, char *s, const char *line, double *out, int m
         char *end;
         errno = 0;
         double x = strtod(s, &end);
-        if (end == s || !isfinite(x))
+        if (end == s)
             return obj_error(L, (int)(s - line) + 1, "expected a number");
+        if (!isfinite(x))
+            return obj_error(L, (int)(s - line) + 1,
+                             errno == ERANGE ? "number out of range (beyond +-1.8e308)" : "expected a finite number");
         if (n < max)
             out[n] = x;
         n++;
@@ -156,6 +161,25 @@ static int read_face(Loader *L, char *s, const char *line)
     return G_OK;
 }
 
+/* Reads one line (its '\n' dropped) into buf, NUL-terminated, its length in *len (NUL bytes of the file
+ * included, so that they can be reported as such): 1, 0 at the end of the file, -1 when the line does not fit. */
+static int read_line(FILE *f, char *buf, size_t size, size_t *len)
+{
+    size_t n = 0;
+    int c;
+    while ((c = getc_unlocked(f)) != EOF && c != '\n') {
+        if (n + 1 >= size) {
+            buf[n] = '\0';
+            *len = n;
+            return -1;
+        }
+        buf[n++] = (char)c;
+    }
+    buf[n] = '\0';
+    *len = n;
+    return c == EOF && n == 0 ? 0 : 1;
+}
+
 static int parse_line(Loader *L, char *line)
 {
     char *s = line;
@@ -201,14 +225,23 @@ int object_mesh_load(Object *o, const char *path, GError *err)
     }
     Loader L = {.path = path, .err = err};
     char buf[4096];
-    int rc = G_OK;
-    while (rc == G_OK && fgets(buf, sizeof buf, f)) {
+    int rc = G_OK, got;
+    size_t len;
+    while (rc == G_OK && (got = read_line(f, buf, sizeof buf, &len)) != 0) {
         L.line++;
-        if (!strchr(buf, '\n') && !feof(f)) {
-            rc = obj_error(&L, (int)sizeof buf, "line too long");
+        char *nul = memchr(buf, '\0', len);
+        char *text = buf;
+        if (L.line == 1 && len >= 3 && memcmp(buf, "\xef\xbb\xbf", 3) == 0) /* a UTF-8 byte-order mark */
+            text += 3;
+        if (nul) {
+            rc = obj_error(&L, (int)(nul - buf) + 1, "a NUL byte (not a text file?)");
             break;
         }
-        rc = parse_line(&L, buf);
+        if (got < 0) {
+            rc = obj_error(&L, (int)sizeof buf, "line too long (the limit is 4095 bytes)");
+            break;
+        }
+        rc = parse_line(&L, text);
         if (rc == G_ERR_NOMEM)
             gerror_set(err, rc, "%s: out of memory", path);
     }

@@ -24,6 +24,7 @@
  * Spot cones are full opening angles in degrees (inner: full intensity, outer: none). cutoff: rays whose
  * weight in their pixel is below W are not traced (default 1e-3, 0 traces everything to the depth). */
 #include "parse.h"
+#include "geometry.h"
 
 #include <math.h>
 #include <string.h>
@@ -155,7 +156,12 @@ static int parse_object(GReader *r, const void *vtable, void **object, GError *e
         case SHAPE_CYLINDER: rc = object_cylinder(o, center, top, radius, open, err); break;
         case SHAPE_MESH: rc = object_mesh_load(o, file, err); break;
         }
-        if (rc < 0)
+        double reach = rc == G_OK ? object_extent_check(o) : 0.0;
+        if (reach > 0.0)
+            rc = greader_error(r, err, "the object reaches %g (after its transform), beyond the scene's limit of "
+                               "%g: coordinates must be finite and within [-%g, %g]", reach, SCENE_MAX_COORD,
+                               SCENE_MAX_COORD, SCENE_MAX_COORD);
+        else if (rc < 0)
             rc = greader_locate(r, err);
     }
     gmem_free(file);
@@ -187,6 +193,21 @@ static const LightKind light_kinds[] = {LIGHT_POINT, LIGHT_DIRECTIONAL, LIGHT_SP
                                         LIGHT_RECT,  LIGHT_AMBIENT,     LIGHT_BACKGROUND};
 static const char *const light_color_key[] = {"intensity", "irradiance", "intensity", "radiance",
                                               "radiance",  "color",      "color"};
+
+/* 1 when the light's points (a sphere's extent, a rectangle's four corners, a spot's target) lie within the
+ * scene's limit. */
+static int light_within_limits(const Light *l, int type, GVec3 at)
+{
+    GVec3 p = l->position, e1 = l->edge1, e2 = l->edge2, rr = gvec3(l->radius, l->radius, l->radius);
+    if (!scene_coord_ok(p) || !scene_coord_ok(at))
+        return 0;
+    if (type == L_SPHERE)
+        return scene_coord_ok(gvec3_add(p, rr)) && scene_coord_ok(gvec3_sub(p, rr));
+    if (type == L_RECT)
+        return scene_coord_ok(gvec3_add(p, e1)) && scene_coord_ok(gvec3_add(p, e2)) &&
+               scene_coord_ok(gvec3_add(gvec3_add(p, e1), e2));
+    return 1;
+}
 
 static int parse_light(GReader *r, const void *vtable, void **object, GError *err)
 {
@@ -241,9 +262,12 @@ static int parse_light(GReader *r, const void *vtable, void **object, GError *er
         rc = greader_error(r, err, "the light needs its %s (a colour)", light_color_key[type]);
     if (rc == G_OK && !gcolor_is_nonnegative(&color))
         rc = greader_error(r, err, "the light's %s must be finite and >= 0 in every sample", light_color_key[type]);
+    if (rc == G_OK && !light_within_limits(l, type, at))
+        rc = greader_error(r, err, "the light lies beyond the scene's limit of %g: coordinates must be finite "
+                           "and within [-%g, %g]", SCENE_MAX_COORD, SCENE_MAX_COORD, SCENE_MAX_COORD);
     if (rc == G_OK && type == L_DIRECTIONAL) {
-        if (gvec3_length(dir) == 0.0)
-            rc = greader_error(r, err, "the direction must not be zero");
+        if (!(gvec3_length(dir) > 0.0 && isfinite(gvec3_length(dir))))
+            rc = greader_error(r, err, "the direction must be finite and not zero");
         l->direction = gvec3_normalize(dir);
     }
     if (rc == G_OK && type == L_SPOT) {
@@ -311,6 +335,9 @@ static int parse_camera(GReader *r, const void *vtable, void **object, GError *e
         if (rc < 0)
             break;
     }
+    if (rc == G_OK && (!scene_coord_ok(c->from) || !scene_coord_ok(c->at) || !scene_coord_ok(c->up)))
+        rc = greader_error(r, err, "the camera's from, at and up must be finite and within [-%g, %g] (the "
+                           "scene's limit)", SCENE_MAX_COORD, SCENE_MAX_COORD);
     if (rc == G_OK && gvec3_length(gvec3_sub(c->at, c->from)) == 0.0)
         rc = greader_error(r, err, "the camera looks from the point it looks at");
     if (rc < 0) {

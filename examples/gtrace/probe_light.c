@@ -56,12 +56,20 @@ static int technique_from_name(const char *name, int *t, GError *err)
 }
 
 /* The settings that do not fit together (the text is a complete sentence for a message). */
+#define G_STR_(x) #x
+#define G_STR(x) G_STR_(x)
+
 static const char *check_settings(const ProbeEnv *e)
 {
     if (e->technique == GPROBE_MEDIANCUT && (e->count & (e->count - 1)) != 0)
         return "median cut makes a power of two lights: give count 1, 2, 4, 8, ...";
     if (!e->shadows && e->technique != PROBE_REFERENCE)
         return "shadows off is only for technique reference (directional lights always cast shadows)";
+    if (e->technique == GPROBE_IRRADIANCE && e->count > GPROBE_FIT_MAX_LIGHTS)
+        return "technique irradiance fits at most " G_STR(GPROBE_FIT_MAX_LIGHTS) " lights (its time grows with the "
+               "cube of the count): give a smaller count, or mediancut, adaptive or kmeans";
+    if (e->technique == GPROBE_IRRADIANCE && (long)e->count * (e->fit_normals ? e->fit_normals : 2000) > GPROBE_FIT_MAX_PAIRS)
+        return "technique irradiance: count x fit_normals exceeds the limit of " G_STR(GPROBE_FIT_MAX_PAIRS);
     return NULL;
 }
 

@@ -1,7 +1,8 @@
 /* render.c - the render loop: 16x16 tiles shared among OpenMP threads with a dynamic schedule, one
  * scratch arena per thread (marked and released per sample), a generator seeded per pixel so the image
  * does not depend on the thread count. Samples that come back NaN or infinite are counted and dropped
- * (they never reach a pixel); pixels leave the colour model through its XYZ conversion (as a light)
+ * (they never reach a pixel); a camera sample spawns at most max_rays reflected and refracted rays (the
+ * branches beyond are not traced, and the samples so cut are counted); pixels leave the colour model through its XYZ conversion (as a light)
  * and become linear sRGB. */
 #include "render.h"
 #include "trace.h"
@@ -17,11 +18,11 @@ typedef struct Job {
     const Scene *scene;
     const Camera *cam;
     Framebuffer *fb;
-    int spp, depth, ntx;
+    int spp, depth, ntx, max_rays;
     Media media0;
 } Job;
 
-static int render_pixel(TraceCtx *c, const Job *job, int x, int y, int *perm, uint64_t *nonfinite)
+static int render_pixel(TraceCtx *c, const Job *job, int x, int y, int *perm, uint64_t *nonfinite, uint64_t *capped)
 {
     const Scene *s = job->scene;
     GScratchMark mark = gscratch_mark(c->scratch);
@@ -42,7 +43,10 @@ static int render_pixel(TraceCtx *c, const Job *job, int x, int y, int *perm, ui
         camera_ray(job->cam, x + sx, y + sy, &r);
         GScratchMark m2 = gscratch_mark(c->scratch);
         c->weight = 1.0;
+        c->rays_left = job->max_rays;
+        c->capped = 0;
         rc = trace_ray(c, &r, &job->media0, 0, &sample);
+        *capped += (uint64_t)c->capped;
         gscratch_release(c->scratch, m2);
         if (rc < 0)
             goto done;
@@ -94,6 +98,9 @@ int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, Rend
         return gerror_set(err, G_ERR_INVALID, "depth %d out of range (0..1000)", rs->depth);
     if (!(rs->cutoff >= 0.0 && rs->cutoff <= 1.0))
         return gerror_set(err, G_ERR_INVALID, "cutoff %g out of range [0, 1]", rs->cutoff);
+    if (rs->max_rays < 0 || rs->max_rays > RENDER_LIMIT_MAX_RAYS)
+        return gerror_set(err, G_ERR_INVALID, "rays per sample %d out of range (1..%d)", rs->max_rays,
+                          RENDER_LIMIT_MAX_RAYS);
     Camera cam = s->camera;
     camera_setup(&cam, rs->width, rs->height);
     fb->width = rs->width;
@@ -101,7 +108,8 @@ int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, Rend
     fb->pixels = gmem_calloc((size_t)rs->width * (size_t)rs->height * 3, sizeof(float));
     if (!fb->pixels)
         return gerror_set(err, G_ERR_NOMEM, "out of memory for a %dx%d image", rs->width, rs->height);
-    Job job = {.scene = s, .cam = &cam, .fb = fb, .spp = rs->spp, .depth = rs->depth};
+    Job job = {.scene = s, .cam = &cam, .fb = fb, .spp = rs->spp, .depth = rs->depth,
+               .max_rays = rs->max_rays > 0 ? rs->max_rays : RENDER_DEFAULT_MAX_RAYS};
     job.ntx = (rs->width + TILE - 1) / TILE;
     int nty = (rs->height + TILE - 1) / TILE, ntiles = job.ntx * nty;
     if (s->medium) {
@@ -111,11 +119,11 @@ int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, Rend
     int nthreads = rs->threads > 0 ? rs->threads : omp_get_max_threads();
     int status = G_OK;
     const char *culprit = NULL;
-    uint64_t rays = 0, nonfinite = 0;
+    uint64_t rays = 0, nonfinite = 0, capped = 0;
     Progress prog;
     progress_start(&prog, ntiles, rs->quiet);
     double t0 = now_seconds();
-#pragma omp parallel num_threads(nthreads) reduction(+ : rays, nonfinite)
+#pragma omp parallel num_threads(nthreads) reduction(+ : rays, nonfinite, capped)
     {
         TraceCtx ctx = {.scene = s, .max_depth = rs->depth, .cutoff = rs->cutoff};
         ctx.scratch = gscratch_create(0);
@@ -139,7 +147,7 @@ int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, Rend
             int rc = G_OK;
             for (int y = y0; y < y1 && rc == G_OK; y++)
                 for (int x = x0; x < x1 && rc == G_OK; x++)
-                    rc = render_pixel(&ctx, &job, x, y, perm, &nonfinite);
+                    rc = render_pixel(&ctx, &job, x, y, perm, &nonfinite, &capped);
             if (rc != G_OK) {
 #pragma omp critical(gtrace_status)
                 {
@@ -161,6 +169,7 @@ int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, Rend
     st->seconds = now_seconds() - t0;
     st->rays = rays;
     st->nonfinite = nonfinite;
+    st->capped = capped;
     st->threads = nthreads;
     if (status != G_OK) {
         framebuffer_free(fb);

@@ -8,9 +8,15 @@
 
 #include <stdint.h>
 
+/** Default and largest number of reflected and refracted rays one camera sample may spawn (its ray tree):
+ * with cutoff 0 a branching material (glass) doubles the rays at every level, 2^depth in all. */
+#define RENDER_DEFAULT_MAX_RAYS 4096
+#define RENDER_LIMIT_MAX_RAYS 1000000
+
 typedef struct RenderSettings {
     int width, height, spp, depth, threads, quiet;
     double cutoff; /**< adaptive depth control threshold (0: off) */
+    int max_rays;  /**< secondary rays per camera sample (0: RENDER_DEFAULT_MAX_RAYS); the rest are not traced */
 } RenderSettings;
 
 /** Linear sRGB pixels (from the model's XYZ), row by row from the top. */
@@ -23,6 +29,7 @@ typedef struct RenderStats {
     double seconds;
     uint64_t rays;
     uint64_t nonfinite; /**< samples that were NaN or infinite (replaced by black) */
+    uint64_t capped;    /**< camera samples whose ray tree reached max_rays (branches left untraced) */
     int threads;
 } RenderStats;
 

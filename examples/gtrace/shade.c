@@ -152,6 +152,11 @@ static int trace_secondary(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 faci
     double w = c->weight * gcolor_brightness(&tmp);
     if (!(w > 0.0 && w >= c->cutoff))
         goto done;
+    if (c->rays_left <= 0) { /* the sample's ray budget is spent: this branch is not traced */
+        c->capped = 1;
+        goto done;
+    }
+    c->rays_left--;
     CHECK(gcolor_scratch(&illum, c->scene->model, c->scratch));
     double width = r->cone_width + r->cone_spread * sp->t;
     Ray ray = {offset_origin(sp->point, facing, dir), dir, 0.0, INFINITY, width, r->cone_spread};

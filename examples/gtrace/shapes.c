@@ -224,6 +224,44 @@ void shape_bounds(const Object *o, GVec3 *lo, GVec3 *hi)
     }
 }
 
+void object_world_bounds(const Object *o, GVec3 *lo, GVec3 *hi)
+{
+    GVec3 slo, shi;
+    shape_bounds(o, &slo, &shi);
+    *lo = gvec3(INFINITY, INFINITY, INFINITY);
+    *hi = gvec3(-INFINITY, -INFINITY, -INFINITY);
+    for (int i = 0; i < 8; i++) {
+        GVec3 c = gvec3((i & 1) ? shi.x : slo.x, (i & 2) ? shi.y : slo.y, (i & 4) ? shi.z : slo.z);
+        if (o->has_xf)
+            c = xform_point(&o->xf, c);
+        bounds_grow(lo, hi, c);
+    }
+}
+
+int scene_coord_ok(GVec3 v)
+{
+    return fabs(v.x) <= SCENE_MAX_COORD && fabs(v.y) <= SCENE_MAX_COORD && fabs(v.z) <= SCENE_MAX_COORD;
+}
+
+double object_extent_check(const Object *o)
+{
+    GVec3 slo, shi;
+    shape_bounds(o, &slo, &shi);
+    double worst = 0.0;
+    for (int i = 0; i < 8; i++) {
+        GVec3 c = gvec3((i & 1) ? shi.x : slo.x, (i & 2) ? shi.y : slo.y, (i & 4) ? shi.z : slo.z);
+        if (o->has_xf)
+            c = xform_point(&o->xf, c);
+        if (!scene_coord_ok(c)) {
+            double m = fmax(fabs(c.x), fmax(fabs(c.y), fabs(c.z)));
+            if (!(m == m) || !isfinite(c.x) || !isfinite(c.y) || !isfinite(c.z))
+                return INFINITY;
+            worst = fmax(worst, m);
+        }
+    }
+    return worst;
+}
+
 static double wrap01(double x) { return x - floor(x); }
 
 /* Surface in object space: point (refined onto the shape), outward normal, tangents, (u,v). */

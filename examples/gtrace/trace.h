@@ -25,6 +25,8 @@ typedef struct TraceCtx {
     double weight;  /**< weight of the current path in its pixel (product of the branches' brightness) */
     GColor unit;    /**< 1 in every sample (the vacuum's refraction index): probes a branch's weight */
     uint64_t rays;  /**< rays cast through Embree */
+    int rays_left;  /**< secondary rays the current camera sample may still spawn */
+    int capped;     /**< the current camera sample ran out of rays_left */
     int status;     /**< first error (G_OK while fine) */
     const char *culprit; /**< type of the material whose call failed first (NULL: none or not a material) */
 } TraceCtx;

@@ -27,7 +27,8 @@ typedef struct GNoiseParams {
  * The gradient is analytic. */
 GENERIC_API double gnoise_perlin3(unsigned seed, double x, double y, double z, GVec3 *grad);
 
-/** Signed improved Perlin noise in about [-1, 1] (0 on the lattice); grad (may be NULL) gets its gradient. */
+/** Signed improved Perlin noise in about [-1, 1] (0 on the lattice); grad (may be NULL) gets its gradient.
+ * Defined for every point: the lattice wraps every 2^32 cells, and a non-finite point gives 0 (gradient 0). */
 GENERIC_API double gnoise_signed(unsigned seed, GVec3 p, GVec3 *grad);
 
 /** Fractional Brownian motion: sum of octaves gain^i n(lacunarity^i frequency x) over the sum of amplitudes,

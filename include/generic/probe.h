@@ -168,9 +168,15 @@ GENERIC_API int gprobe_technique_parse(const char *name, GProbeTechnique *t, GEr
 /** Progress report: stage name and completed fraction 0..1; called from the calling thread. */
 typedef void (*GProbeProgress)(void *user, const char *stage, double fraction);
 
+/** Largest light count of the irradiance optimisation: each of its iterations solves a system of 2 x count
+ * unknowns, so its time grows with the cube of the count (128 lights on 2000 normals: about 15 s). */
+#define GPROBE_FIT_MAX_LIGHTS 128
+/** Largest lights x fit normals of the irradiance optimisation (each iteration is linear in the product). */
+#define GPROBE_FIT_MAX_PAIRS 524288
+
 /** Options for the techniques; a zeroed struct (or NULL) takes every default. */
 typedef struct GProbeOptions {
-    int fit_normals;     /**< irradiance: normals the fit uses (0: 2000) */
+    int fit_normals;     /**< irradiance: normals the fit uses (0: 2000); lights x normals at most GPROBE_FIT_MAX_PAIRS */
     int max_iterations;  /**< irradiance: Levenberg-Marquardt iterations (0: 400); kmeans: Lloyd rounds (0: 60) */
     GProbeProgress progress;
     void *user;

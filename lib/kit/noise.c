@@ -26,18 +26,33 @@ static double fade(double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
 static double dfade(double t) { return 30.0 * t * t * (t * (t - 2.0) + 1.0); }
 static double lerp(double t, double a, double b) { return a + t * (b - a); }
 
+/* The lattice coordinate of a cell as the hash takes it: the integer floor(x) modulo 2^32. fmod is exact, so
+ * the result equals the wrap-around of the integer for every finite x (beyond 2^53 every double is an integer
+ * and the pattern is a lattice of constant cells); casting floor(x) itself would be undefined beyond the
+ * range of int64_t, which a huge frequency times a huge radius reaches. */
+static uint32_t lattice(double fx)
+{
+    double m = fmod(fx, 4294967296.0); /* in (-2^32, 2^32), sign of fx */
+    return (uint32_t)(int64_t)m;
+}
+
 double gnoise_signed(unsigned seed, GVec3 p, GVec3 *grad)
 {
+    if (!isfinite(p.x) || !isfinite(p.y) || !isfinite(p.z)) { /* overflowed point: no lattice, no variation */
+        if (grad)
+            *grad = gvec3(0, 0, 0);
+        return 0.0;
+    }
     double fx = floor(p.x), fy = floor(p.y), fz = floor(p.z);
-    int32_t ix = (int32_t)(int64_t)fx, iy = (int32_t)(int64_t)fy, iz = (int32_t)(int64_t)fz;
+    uint32_t ix = lattice(fx), iy = lattice(fy), iz = lattice(fz);
     double x = p.x - fx, y = p.y - fy, z = p.z - fz;
     uint32_t hs = mix(seed * 0x9e3779b9u + 0x7f4a7c15u);
     double n[8], g[8][3];
     for (int c = 0; c < 8; c++) {
         int dx = c & 1, dy = (c >> 1) & 1, dz = (c >> 2) & 1;
-        uint32_t h = mix(hs ^ (uint32_t)(ix + dx) * 0x27d4eb2du);
-        h = mix(h ^ (uint32_t)(iy + dy) * 0x165667b1u);
-        h = mix(h ^ (uint32_t)(iz + dz) * 0xd3a2646cu);
+        uint32_t h = mix(hs ^ (ix + (uint32_t)dx) * 0x27d4eb2du);
+        h = mix(h ^ (iy + (uint32_t)dy) * 0x165667b1u);
+        h = mix(h ^ (iz + (uint32_t)dz) * 0xd3a2646cu);
         const signed char *v = grads[h & 15];
         g[c][0] = v[0];
         g[c][1] = v[1];

@@ -22,7 +22,7 @@ int gfluor_column_of(const GReradiation *r, double nm)
 {
     double f = (nm - r->in_min) / r->in_step;
     double k = floor(f + 0.5);
-    if (fabs(f - k) > 1e-6 || k < 0.0 || k >= r->n_in)
+    if (!(k >= 0.0 && k < r->n_in) || fabs(f - k) > 1e-6) /* also NaN */
         return -1;
     return (int)k;
 }

@@ -381,9 +381,16 @@ int gprobe_irradiance_fit(const GProbe *p, int n, const GProbeOptions *opt, GPro
         return gerror_set(err, G_ERR_INVALID, "irradiance optimisation needs at least one light, not %d", n);
     const int m = opt && opt->fit_normals > 0 ? opt->fit_normals : 2000;
     const int max_it = opt && opt->max_iterations > 0 ? opt->max_iterations : 400;
+    if (n > GPROBE_FIT_MAX_LIGHTS)
+        return gerror_set(err, G_ERR_INVALID, "irradiance optimisation of %d lights: the limit is %d lights (its time "
+                          "grows with the cube of the count); mediancut, adaptive and kmeans make more", n,
+                          GPROBE_FIT_MAX_LIGHTS);
     if (m < 2 * n)
         return gerror_set(err, G_ERR_INVALID, "irradiance optimisation of %d lights needs at least %d fit normals, not %d",
                           n, 2 * n, m);
+    if ((long)n * m > GPROBE_FIT_MAX_PAIRS)
+        return gerror_set(err, G_ERR_INVALID, "irradiance optimisation of %d lights on %d fit normals: %ld pairs, more "
+                          "than the limit of %d", n, m, (long)n * m, GPROBE_FIT_MAX_PAIRS);
     GProbeFitReport rep;
     memset(&rep, 0, sizeof rep);
     Fit f;

@@ -151,9 +151,9 @@ static void fill_table(Varnish *v)
 static double transmit(const Varnish *v, double c)
 {
     double f = sqrt(c) * RTABLE;
-    int k = (int)f;
-    if (k >= RTABLE)
+    if (!(f < RTABLE)) /* tested before the cast (also NaN) */
         return 1.0 - v->r_table[RTABLE];
+    int k = (int)f;
     double t = f - k;
     return 1.0 - ((1.0 - t) * v->r_table[k] + t * v->r_table[k + 1]);
 }
@@ -174,7 +174,8 @@ static int solve_bounces(const GReradiation *M, double f_int, GReradiation *out,
     }
     /* a = I - F_int Msq, Msq[o][p]: M's excitation at emission wavelength p (linear between columns) */
     for (int p = 0; p < no; p++) {
-        double f = (M->out_min + p * M->out_step - M->in_min) / M->in_step;
+        /* clamped to just outside the columns before the cast: a grid far away is beyond any int */
+        double f = fmin(fmax((M->out_min + p * M->out_step - M->in_min) / M->in_step, -2.0), ni + 1.0);
         int j = (int)floor(f + 1e-6);
         double t = f - j;
         if (fabs(t) < 1e-6)
