@@ -378,11 +378,12 @@ static int parse_statements(GReader *r, GError *err)
             return rc;
         if (t.type == GTOK_EOF)
             return G_OK;
-        char found[96];
-        glexer_describe(&t, found, sizeof found);
-        if (t.type != GTOK_IDENT)
+        char found[96]; /* described only for a message: formatting it for every statement is measurable */
+        if (t.type != GTOK_IDENT) {
+            glexer_describe(&t, found, sizeof found);
             return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "expected a statement (%s), found %s",
                                     statement_list, found);
+        }
         greader_next(r, &t, err);
         if (strcmp(t.text, "include") == 0) {
             rc = do_include(r, err);
@@ -395,9 +396,11 @@ static int parse_statements(GReader *r, GError *err)
             for (int k = GKIND_COLOR; k < GKIND_COUNT && kind < 0; k++)
                 if (strcmp(t.text, gkind_name((GKind)k)) == 0)
                     kind = k;
-            if (kind < 0)
+            if (kind < 0) {
+                glexer_describe(&t, found, sizeof found);
                 return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "unknown statement %s (expected %s)",
                                         found, statement_list);
+            }
             rc = resolve_model(r, err);
             if (rc == G_OK)
                 rc = do_entry(r, (GKind)kind, err);
