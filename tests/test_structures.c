@@ -315,7 +315,7 @@ static void test_cost_bounds_calls(void **state)
     assert_int_equal(gcolormodel_create("rgb", NULL, &model, &err), G_OK);
     CountMat *leaf = countmat_new(model, 0.5, 0.5, 0.5);
     CountGen *g = countgen_new(0.5);
-    GMaterial *m = gmaterial_ref(&leaf->base);
+    GMaterial *m = &leaf->base; /* its reference passes to the first node */
     for (int level = 1; level <= 12; level++) {
         GMaterial *n;
         assert_int_equal(gnode_interpolate_create(m, m, &g->base, &n, &err), G_OK);
