@@ -11,6 +11,8 @@ int gmaterial_init(GMaterial *m, const GMaterialClass *cls, const GColorModel *m
     m->cls = cls;
     m->model = model;
     m->refcount = 1;
+    m->depth = 1;
+    m->cost = 1;
     return G_OK;
 }
 

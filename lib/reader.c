@@ -411,14 +411,15 @@ static int parse_statements(GReader *r, GError *err)
             return rc;
         if (t.type == GTOK_EOF)
             return G_OK;
-        char found[96];
-        glexer_describe(&t, found, sizeof found);
+        char found[96]; /* described only for a message: formatting it for every statement is measurable */
         int foreign = r->src->lx.quiet; /* no statement read from this file yet: quote nothing of it */
         if (t.type != GTOK_IDENT && foreign)
             return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "%s", GLEX_FOREIGN_MESSAGE);
-        if (t.type != GTOK_IDENT)
+        if (t.type != GTOK_IDENT) {
+            glexer_describe(&t, found, sizeof found);
             return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "expected a statement (%s), found %s",
                                     statement_list, found);
+        }
         greader_take(r, &t);
         int known = !strcmp(t.text, "include") || !strcmp(t.text, "plugin") || !strcmp(t.text, "colormodel");
         for (int k = GKIND_COLOR; k < GKIND_COUNT && !known; k++)
@@ -438,9 +439,11 @@ static int parse_statements(GReader *r, GError *err)
                     kind = k;
             if (kind < 0 && foreign)
                 return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "%s", GLEX_FOREIGN_MESSAGE);
-            if (kind < 0)
+            if (kind < 0) {
+                glexer_describe(&t, found, sizeof found);
                 return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "unknown statement %s (expected %s)",
                                         found, statement_list);
+            }
             rc = resolve_model(r, err);
             if (rc == G_OK)
                 rc = do_entry(r, (GKind)kind, err);

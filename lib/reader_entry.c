@@ -82,11 +82,12 @@ int greader_value(GReader *r, GKind kind, int add, void **object, const GTypeInf
     if (rc != G_OK)
         return rc;
     const char *kn = gkind_name(kind);
-    char found[96];
-    glexer_describe(&t, found, sizeof found);
-    if (t.type != GTOK_IDENT)
+    if (t.type != GTOK_IDENT) {
+        char found[96];
+        glexer_describe(&t, found, sizeof found);
         return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "expected a %s (a type or a defined name), found %s",
                                 kn, found);
+    }
     const GTypeInfo *ty = greader_find_type(kind, t.text);
     if (ty) {
         greader_take(r, NULL); /* the token peeked above */

@@ -22,6 +22,8 @@ struct GLibrary {
     int count, cap;
     int *slots; /* open addressing over named entries: index + 1, 0 = empty */
     int nslots, nnamed;
+    int *toplevel[GKIND_COUNT]; /* per kind, the indices of the top-level entries in order */
+    int ntop[GKIND_COUNT], captop[GKIND_COUNT];
 };
 
 /* Materials and texture nodes share one namespace. */
@@ -32,6 +34,12 @@ static uint32_t hash(int sp, const char *name)
     uint32_t h = 2166136261u ^ (uint32_t)sp;
     for (const unsigned char *p = (const unsigned char *)name; *p; p++)
         h = (h ^ *p) * 16777619u;
+    /* FNV's low bits, the ones the table uses, mix poorly for names that differ in their last digits */
+    h ^= h >> 16;
+    h *= 0x85ebca6bu;
+    h ^= h >> 13;
+    h *= 0xc2b2ae35u;
+    h ^= h >> 16;
     return h;
 }
 
@@ -114,6 +122,8 @@ void glibrary_destroy(GLibrary *lib)
     }
     gmem_free(lib->entries);
     gmem_free(lib->slots);
+    for (int k = 0; k < GKIND_COUNT; k++)
+        gmem_free(lib->toplevel[k]);
     gcolormodel_destroy(lib->owned_model);
     gmem_free(lib);
 }
@@ -160,6 +170,15 @@ int glibrary_put(GLibrary *lib, const GTypeInfo *type, const char *name, void *o
     }
     if (rc == G_OK && name && (lib->nnamed + 1) * 2 > lib->nslots && grow_slots(lib) != G_OK)
         rc = gerror_set(err, G_ERR_NOMEM, "out of memory");
+    int kind = type ? (int)type->kind : 0;
+    if (rc == G_OK && toplevel && (unsigned)kind < GKIND_COUNT && lib->ntop[kind] == lib->captop[kind]) {
+        int cap = lib->captop[kind] ? lib->captop[kind] * 2 : 16;
+        int *t = gmem_realloc(lib->toplevel[kind], (size_t)cap * sizeof *t);
+        if (!t)
+            rc = gerror_set(err, G_ERR_NOMEM, "out of memory");
+        else
+            lib->toplevel[kind] = t, lib->captop[kind] = cap;
+    }
     if (rc != G_OK) {
         gmem_free(copy);
         if (owned)
@@ -176,6 +195,8 @@ int glibrary_put(GLibrary *lib, const GTypeInfo *type, const char *name, void *o
         insert_slot(lib->slots, lib->nslots, e, lib->count);
         lib->nnamed++;
     }
+    if (toplevel && (unsigned)kind < GKIND_COUNT)
+        lib->toplevel[kind][lib->ntop[kind]++] = lib->count;
     lib->count++;
     return G_OK;
 }
@@ -212,27 +233,19 @@ int glibrary_color(const GLibrary *lib, const char *name, GColorRole role, GColo
 
 int glibrary_count(const GLibrary *lib, GKind kind)
 {
-    int n = 0;
-    for (int i = 0; lib && i < lib->count; i++)
-        n += lib->entries[i].toplevel && lib->entries[i].type->kind == kind;
-    return n;
+    return lib && (unsigned)kind < GKIND_COUNT ? lib->ntop[kind] : 0;
 }
 
 void *glibrary_entry(const GLibrary *lib, GKind kind, int index, const char **name, const GTypeInfo **type)
 {
-    for (int i = 0, n = 0; lib && i < lib->count; i++) {
-        const Entry *e = &lib->entries[i];
-        if (!e->toplevel || e->type->kind != kind)
-            continue;
-        if (n++ == index) {
-            if (name)
-                *name = e->name;
-            if (type)
-                *type = e->type;
-            return e->object;
-        }
-    }
-    return NULL;
+    if (!lib || (unsigned)kind >= GKIND_COUNT || index < 0 || index >= lib->ntop[kind])
+        return NULL;
+    const Entry *e = &lib->entries[lib->toplevel[kind][index]];
+    if (name)
+        *name = e->name;
+    if (type)
+        *type = e->type;
+    return e->object;
 }
 
 void glibrary_names(const GLibrary *lib, GKind kind, char *buf, size_t size)

@@ -26,8 +26,8 @@
 extern "C" {
 #endif
 
-/** Version of the material vtable. */
-#define GMATERIAL_ABI_VERSION 1
+/** Version of the material vtable and header (2: the header has depth and cost). */
+#define GMATERIAL_ABI_VERSION 2
 
 typedef struct GMaterialClass GMaterialClass;
 
@@ -36,6 +36,9 @@ struct GMaterial {
     const GMaterialClass *cls;
     const GColorModel *model; /**< the model its colours are in */
     int refcount;             /**< owners; see gmaterial_ref/gmaterial_unref */
+    int depth;                /**< 1 (gmaterial_init); a texture node: 1 + its deepest child's (node_kit.h) */
+    int cost;                 /**< most material calls one call can make, itself included: 1 (gmaterial_init);
+                                   a texture node: see GTEXNODE_MAX_COST (node_kit.h) */
 };
 
 /** The material vtable. Colour methods return a status; direction methods return 1 (valid), 0 (not valid)

@@ -21,13 +21,32 @@ extern "C" {
 
 /* ---- construction ---- */
 
+/** Deepest texture node: a node's depth (GMaterial.depth) is 1 + the largest depth of its children (1 for a
+ * material), and the constructors below refuse a node deeper than this (G_ERR_INVALID "NODE: the node would be
+ * N deep, the limit is 256"), so a material call and the release of a tree never recurse deeper. */
+#define GTEXNODE_MAX_DEPTH 256
+
+/** Most material calls one call of a texture node may make (its work budget): a node's cost (GMaterial.cost)
+ * is 1 + the sum of the costs of its GTEX_BLEND_MAX costliest children (a call evaluates at most that many
+ * children at once), 1 for a material, and the constructors below refuse a node that costs more (G_ERR_INVALID
+ * "NODE: one call of the node would make N material calls, the limit is 100000"). A shared child counts once
+ * for every path to it: a chain of nodes that each blend the node before with itself doubles at every step. */
+#define GTEXNODE_MAX_COST 100000
+
+/** The depth and cost (see GTEXNODE_MAX_DEPTH, GTEXNODE_MAX_COST) of a node over n children, checked against
+ * the limits (G_ERR_INVALID, the message begins with `node`). Nodes built with the constructors below have
+ * them set; a node made otherwise sets its GMaterial's depth and cost from these. */
+GENERIC_API int gtexnode_measure(const char *node, GMaterial *const *children, int n, int *depth, int *cost,
+                                 GError *err);
+
 /** Checks a node's children (n >= 1, none NULL, all in one colour model: G_ERR_MISMATCH otherwise) and its
  * generator (non-NULL when gen_needed); *model gets the common model. Messages begin with `node`. */
 GENERIC_API int gtexnode_check(const char *node, GMaterial *const *children, int n, const GGenerator *gen, int gen_needed,
                    const GColorModel **model, GError *err);
 
-/** gtexnode_check (messages naming the class), then a zeroed node of `size` bytes (a struct that begins with
- * its GMaterial) of class cls in the children's model into *out, with one reference. It holds no reference to
+/** gtexnode_check and gtexnode_measure (messages naming the class), then a zeroed node of `size` bytes (a struct
+ * that begins with its GMaterial) of class cls in the children's model into *out, with one reference, its depth
+ * and cost set. It holds no reference to
  * the children yet: the caller takes those. Until it is complete, free it with gmem_free. */
 GENERIC_API int gtexnode_new_checked(const GMaterialClass *cls, GMaterial *const *children, int n, const GGenerator *gen,
                          int gen_needed, size_t size, GMaterial **out, GError *err);

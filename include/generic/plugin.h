@@ -60,8 +60,8 @@ extern "C" {
 /** Version of the module interface: GModuleApi, GTypeInfo, GParseFn, the reader API, the vtables of every
  * kind and the layout of the structures they pass (GSurfPoint). Raised whenever any of them changes
  * incompatibly. 2: GSurfPoint grew by the cache scopes of transform nodes and the footprint ellipse.
- * 3: GColor and GColorModelClass grew (a colour's storage and capacity; the fill, exp_scaled and axpy slots), and
- *    GError grew by the position and parameter fields. */
+ * 3: GColor and GColorModelClass grew (a colour's storage and capacity; the fill, exp_scaled and axpy slots),
+ *    GError grew by the position and parameter fields, and the GMaterial header by depth and cost. */
 #define GMODULE_ABI_VERSION 3
 
 /** Name of the exported `const int` holding the module's GMODULE_ABI_VERSION. */

@@ -142,10 +142,10 @@ GENERIC_API GMaterial *glibrary_material(const GLibrary *lib, const char *name);
  * caller, see gcolor_wrap/gcolor_alloc), read in the given role. G_ERR_NOTFOUND when not defined. */
 GENERIC_API GENERIC_NODISCARD int glibrary_color(const GLibrary *lib, const char *name, GColorRole role, GColor *out, GError *err);
 /** Number of top-level entries of a kind (named and anonymous, in file order; nested anonymous entries are
- * owned but not listed). Materials and nodes are listed under their own kind. */
+ * owned but not listed). Materials and nodes are listed under their own kind. Constant time. */
 GENERIC_API int glibrary_count(const GLibrary *lib, GKind kind);
 /** The i-th top-level entry of a kind (0 <= i < glibrary_count): its object, and its name (NULL when
- * anonymous) and type through the optional pointers. NULL when i is out of range. */
+ * anonymous) and type through the optional pointers. NULL when i is out of range. Constant time. */
 GENERIC_API void *glibrary_entry(const GLibrary *lib, GKind kind, int i, const char **name, const GTypeInfo **type);
 /** Adds an object made by code under name (NULL = anonymous); the library takes ownership and releases it
  * with type->destroy (or the kind's default). G_ERR_EXISTS when the name is taken in that kind, and then the

@@ -1,5 +1,5 @@
-/* shapes.h - the shape trees of the csg and cpg generators (generators.h): solids in 3D (textures/csg_shape.c)
- * and shapes in the (u, v) plane (textures/cpg_shape.c, textures/cpg_path.c), with boolean operations and
+/* shapes.h - the shape trees of the csg and cpg generators (generators.h): solids in 3D (lib/kit/csg_shape.c)
+ * and shapes in the (u, v) plane (lib/kit/cpg_shape.c, lib/kit/cpg_path.c), with boolean operations and
  * affine moves. */
 #ifndef GENERIC_SHAPES_H
 #define GENERIC_SHAPES_H
@@ -25,6 +25,13 @@ typedef enum GShapeOp {
     GSHAPE_DIFFERENCE /**< the first minus the second */
 } GShapeOp;
 
+/** Deepest CSG or CPG tree (a shape: 1, an operation: 1 + its deepest operand): gcsg_combine and gcpg_combine
+ * refuse deeper ones (G_ERR_INVALID "csg: shapes nested more than 256 deep"), so evaluation never recurses
+ * deeper. An operation keeps its operands in one list: combining an operation that has no transform of its own
+ * with a further operand of the same operation (a union with one more shape, a difference with one more shape to
+ * cut away) adds to that list, so a union of a million shapes, built pair by pair, is depth 2. */
+#define GSHAPE_MAX_DEPTH 256
+
 /** Sphere of radius r > 0 about the origin. */
 GENERIC_API int gcsg_sphere(double radius, GCsgShape **out, GError *err);
 /** Axis-aligned box between lo and hi (lo < hi on every axis). */
@@ -35,14 +42,15 @@ GENERIC_API int gcsg_cylinder(double radius, double z0, double z1, GCsgShape **o
 GENERIC_API int gcsg_cone(double r0, double z0, double r1, double z1, GCsgShape **out, GError *err);
 /** Half-space of the points p with normal . p <= offset (normal not zero; it need not be unit). */
 GENERIC_API int gcsg_halfspace(GVec3 normal, double offset, GCsgShape **out, GError *err);
-/** Combines two shapes; takes ownership of a and b, also when it fails. */
+/** Combines two shapes (see GSHAPE_MAX_DEPTH: *out may be a itself, grown by b); takes ownership of a and b,
+ * also when it fails. */
 GENERIC_API int gcsg_combine(GShapeOp op, GCsgShape *a, GCsgShape *b, GCsgShape **out, GError *err);
 /** Moves a shape (and its subtree) by m, after any earlier transform; G_ERR_INVALID for a singular m
  * (the shape is unchanged then). */
 GENERIC_API int gcsg_transform(GCsgShape *s, const GAffine3 *m, GError *err);
 /** 1 when p is inside or on the boundary, 0 outside. */
 GENERIC_API int gcsg_inside(const GCsgShape *s, GVec3 p);
-/** Frees a tree; NULL is a no-op. */
+/** Frees a tree (without recursion); NULL is a no-op. */
 GENERIC_API void gcsg_destroy(GCsgShape *s);
 
 /* ---- CPG: shapes in the (u, v) plane (textures/cpg_shape.c, textures/cpg_path.c) ---- */
@@ -85,13 +93,14 @@ GENERIC_API void gcpg_path_destroy(GCpgPath *p);
 /** Highest degree of a curved edge. */
 #define GCPG_MAX_DEGREE 7
 
-/** Combines two shapes; takes ownership of a and b, also when it fails. */
+/** Combines two shapes (see GSHAPE_MAX_DEPTH: *out may be a itself, grown by b); takes ownership of a and b,
+ * also when it fails. */
 GENERIC_API int gcpg_combine(GShapeOp op, GCpgShape *a, GCpgShape *b, GCpgShape **out, GError *err);
 /** Moves a shape (and its subtree) by m, after any earlier transform; G_ERR_INVALID for a singular m. */
 GENERIC_API int gcpg_transform(GCpgShape *s, const GAffine2 *m, GError *err);
 /** 1 when (x, y) is inside, 0 outside (points on an edge may go either way). */
 GENERIC_API int gcpg_inside(const GCpgShape *s, double x, double y);
-/** Frees a tree; NULL is a no-op. */
+/** Frees a tree (without recursion); NULL is a no-op. */
 GENERIC_API void gcpg_destroy(GCpgShape *s);
 
 #ifdef __cplusplus

@@ -2,20 +2,21 @@
  * (lib/kit/cpg_path.c) with boolean operations and affine transforms (generic/shapes.h), for the cpg
  * generator (textures/cpg.c). */
 #include "cpg_internal.h"
+#include "shape_tree.h"
 
 #include <math.h>
 
-enum { SQUARE, CIRCLE, CONTOUR, COMBINE };
+enum { SQUARE, CIRCLE, CONTOUR };
 
 struct GCpgShape {
-    int type;
-    int op;       /* GShapeOp of COMBINE */
-    int moved;
-    GAffine2 inv; /* parent coordinates -> the shape's own */
+    GShapeNode node; /* operation, operands, depth, moved (inv is not the identity); first */
+    int type;        /* of a shape (not an operation) */
+    GAffine2 inv;    /* parent coordinates -> the shape's own */
     double cx, cy, size;
     GCpgContour contour;
-    GCpgShape *a, *b;
 };
+
+static void free_contour(GShapeNode *node) { gtexcpg_contour_free(&((GCpgShape *)node)->contour); }
 
 static int make(int type, GCpgShape **out, GError *err)
 {
@@ -23,6 +24,7 @@ static int make(int type, GCpgShape **out, GError *err)
     if (!*out)
         return gerror_set(err, G_ERR_NOMEM, "cpg: out of memory");
     (*out)->type = type;
+    (*out)->node.depth = 1;
     (*out)->inv = gaffine2_identity();
     return G_OK;
 }
@@ -88,23 +90,13 @@ int gtexcpg_shape_from_contour(GCpgContour *c, GCpgShape **out, GError *err)
 
 int gcpg_combine(GShapeOp op, GCpgShape *a, GCpgShape *b, GCpgShape **out, GError *err)
 {
-    *out = NULL;
-    int rc;
-    if ((unsigned)op > GSHAPE_DIFFERENCE)
-        rc = gerror_set(err, G_ERR_INVALID, "cpg: unknown operation %d", (int)op);
-    else if (!a || !b)
-        rc = gerror_set(err, G_ERR_INVALID, "cpg: an operation needs two shapes");
-    else
-        rc = make(COMBINE, out, err);
-    if (rc != G_OK) {
-        gcpg_destroy(a);
-        gcpg_destroy(b);
-        return rc;
-    }
-    (*out)->op = (int)op;
-    (*out)->a = a;
-    (*out)->b = b;
-    return G_OK;
+    GShapeNode *s = NULL;
+    int rc = gshape_combine("cpg", op, a ? &a->node : NULL, b ? &b->node : NULL, sizeof(GCpgShape), free_contour, &s,
+                            err);
+    *out = (GCpgShape *)s;
+    if (rc == G_OK && s != &a->node)
+        (*out)->inv = gaffine2_identity();
+    return rc;
 }
 
 int gcpg_transform(GCpgShape *s, const GAffine2 *m, GError *err)
@@ -113,36 +105,46 @@ int gcpg_transform(GCpgShape *s, const GAffine2 *m, GError *err)
     if (gaffine2_invert(m, &inv, NULL) != G_OK)
         return gerror_set(err, G_ERR_INVALID, "cpg: transform is singular or not finite");
     s->inv = gaffine2_mul(&s->inv, &inv);
-    s->moved = 1;
+    s->node.moved = 1;
     return G_OK;
 }
 
+/* Recursion as deep as the tree, at most GSHAPE_MAX_DEPTH (gshape_combine refuses deeper trees). */
 int gcpg_inside(const GCpgShape *s, double x, double y)
 {
-    if (s->moved)
+    if (s->node.moved)
         gaffine2_apply(&s->inv, x, y, &x, &y);
+    if (s->node.combine) {
+        GCpgShape *const *k = (GCpgShape *const *)s->node.kids;
+        int n = s->node.n;
+        switch (s->node.op) {
+        case GSHAPE_UNION:
+            for (int i = 0; i < n; i++)
+                if (gcpg_inside(k[i], x, y))
+                    return 1;
+            return 0;
+        case GSHAPE_INTERSECTION:
+            for (int i = 0; i < n; i++)
+                if (!gcpg_inside(k[i], x, y))
+                    return 0;
+            return 1;
+        default:
+            if (!gcpg_inside(k[0], x, y))
+                return 0;
+            for (int i = 1; i < n; i++)
+                if (gcpg_inside(k[i], x, y))
+                    return 0;
+            return 1;
+        }
+    }
     switch (s->type) {
     case SQUARE: return fabs(x - s->cx) <= s->size && fabs(y - s->cy) <= s->size;
     case CIRCLE: {
         double dx = x - s->cx, dy = y - s->cy;
         return dx * dx + dy * dy <= s->size * s->size;
     }
-    case CONTOUR: return gtexcpg_winding(&s->contour, x, y) != 0;
-    default:
-        switch (s->op) {
-        case GSHAPE_UNION: return gcpg_inside(s->a, x, y) || gcpg_inside(s->b, x, y);
-        case GSHAPE_INTERSECTION: return gcpg_inside(s->a, x, y) && gcpg_inside(s->b, x, y);
-        default: return gcpg_inside(s->a, x, y) && !gcpg_inside(s->b, x, y);
-        }
+    default: return gtexcpg_winding(&s->contour, x, y) != 0;
     }
 }
 
-void gcpg_destroy(GCpgShape *s)
-{
-    if (!s)
-        return;
-    gcpg_destroy(s->a);
-    gcpg_destroy(s->b);
-    gtexcpg_contour_free(&s->contour);
-    gmem_free(s);
-}
+void gcpg_destroy(GCpgShape *s) { gshape_destroy(s ? &s->node : NULL, free_contour); }

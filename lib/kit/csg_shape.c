@@ -2,19 +2,18 @@
  * affine transforms (generic/shapes.h), for the csg generator (textures/csg.c). */
 #include "generic/memory.h"
 #include "generic/shapes.h"
+#include "shape_tree.h"
 
 #include <math.h>
 
-enum { SPHERE, BOX, CYLINDER, CONE, HALFSPACE, COMBINE };
+enum { SPHERE, BOX, CYLINDER, CONE, HALFSPACE };
 
 struct GCsgShape {
-    int type;
-    int op;         /* GShapeOp of COMBINE */
-    int moved;      /* inv is not the identity */
-    GAffine3 inv;   /* parent coordinates -> the shape's own */
+    GShapeNode node; /* operation, operands, depth, moved (inv is not the identity); first */
+    int type;        /* of a shape (not an operation) */
+    GAffine3 inv;    /* parent coordinates -> the shape's own */
     double r0, r1, z0, z1, offset;
     GVec3 lo, hi, normal;
-    GCsgShape *a, *b;
 };
 
 static int finite3(GVec3 v) { return isfinite(v.x) && isfinite(v.y) && isfinite(v.z); }
@@ -25,6 +24,7 @@ static int make(int type, GCsgShape **out, GError *err)
     if (!*out)
         return gerror_set(err, G_ERR_NOMEM, "csg: out of memory");
     (*out)->type = type;
+    (*out)->node.depth = 1;
     (*out)->inv = gaffine3_identity();
     return G_OK;
 }
@@ -101,23 +101,12 @@ int gcsg_halfspace(GVec3 normal, double offset, GCsgShape **out, GError *err)
 
 int gcsg_combine(GShapeOp op, GCsgShape *a, GCsgShape *b, GCsgShape **out, GError *err)
 {
-    *out = NULL;
-    int rc = G_OK;
-    if ((unsigned)op > GSHAPE_DIFFERENCE)
-        rc = gerror_set(err, G_ERR_INVALID, "csg: unknown operation %d", (int)op);
-    else if (!a || !b)
-        rc = gerror_set(err, G_ERR_INVALID, "csg: an operation needs two shapes");
-    else
-        rc = make(COMBINE, out, err);
-    if (rc != G_OK) {
-        gcsg_destroy(a);
-        gcsg_destroy(b);
-        return rc;
-    }
-    (*out)->op = (int)op;
-    (*out)->a = a;
-    (*out)->b = b;
-    return G_OK;
+    GShapeNode *s = NULL;
+    int rc = gshape_combine("csg", op, a ? &a->node : NULL, b ? &b->node : NULL, sizeof(GCsgShape), NULL, &s, err);
+    *out = (GCsgShape *)s;
+    if (rc == G_OK && s != &a->node)
+        (*out)->inv = gaffine3_identity();
+    return rc;
 }
 
 int gcsg_transform(GCsgShape *s, const GAffine3 *m, GError *err)
@@ -126,14 +115,38 @@ int gcsg_transform(GCsgShape *s, const GAffine3 *m, GError *err)
     if (gaffine3_invert(m, &inv, NULL) != G_OK)
         return gerror_set(err, G_ERR_INVALID, "csg: transform is singular or not finite");
     s->inv = gaffine3_mul(&s->inv, &inv);
-    s->moved = 1;
+    s->node.moved = 1;
     return G_OK;
 }
 
+/* Recursion as deep as the tree, at most GSHAPE_MAX_DEPTH (gshape_combine refuses deeper trees). */
 int gcsg_inside(const GCsgShape *s, GVec3 p)
 {
-    if (s->moved)
+    if (s->node.moved)
         p = gaffine3_apply(&s->inv, p);
+    if (s->node.combine) {
+        GCsgShape *const *k = (GCsgShape *const *)s->node.kids;
+        int n = s->node.n;
+        switch (s->node.op) {
+        case GSHAPE_UNION:
+            for (int i = 0; i < n; i++)
+                if (gcsg_inside(k[i], p))
+                    return 1;
+            return 0;
+        case GSHAPE_INTERSECTION:
+            for (int i = 0; i < n; i++)
+                if (!gcsg_inside(k[i], p))
+                    return 0;
+            return 1;
+        default:
+            if (!gcsg_inside(k[0], p))
+                return 0;
+            for (int i = 1; i < n; i++)
+                if (gcsg_inside(k[i], p))
+                    return 0;
+            return 1;
+        }
+    }
     switch (s->type) {
     case SPHERE: return gvec3_dot(p, p) <= s->r0 * s->r0;
     case BOX:
@@ -146,21 +159,8 @@ int gcsg_inside(const GCsgShape *s, GVec3 p)
         double r = s->r0 + (s->r1 - s->r0) * (p.z - s->z0) / (s->z1 - s->z0);
         return p.x * p.x + p.y * p.y <= r * r;
     }
-    case HALFSPACE: return gvec3_dot(s->normal, p) <= s->offset;
-    default:
-        switch (s->op) {
-        case GSHAPE_UNION: return gcsg_inside(s->a, p) || gcsg_inside(s->b, p);
-        case GSHAPE_INTERSECTION: return gcsg_inside(s->a, p) && gcsg_inside(s->b, p);
-        default: return gcsg_inside(s->a, p) && !gcsg_inside(s->b, p);
-        }
+    default: return gvec3_dot(s->normal, p) <= s->offset;
     }
 }
 
-void gcsg_destroy(GCsgShape *s)
-{
-    if (!s)
-        return;
-    gcsg_destroy(s->a);
-    gcsg_destroy(s->b);
-    gmem_free(s);
-}
+void gcsg_destroy(GCsgShape *s) { gshape_destroy(s ? &s->node : NULL, NULL); }

@@ -74,13 +74,54 @@ int gtexnode_check(const char *node, GMaterial *const *children, int n, const GG
     return G_OK;
 }
 
+/* A material made without gmaterial_init may have 0 there: it counts as a material. */
+static int at_least_1(int v) { return v > 1 ? v : 1; }
+
+int gtexnode_measure(const char *node, GMaterial *const *children, int n, int *depth, int *cost, GError *err)
+{
+    int d = 0;
+    int top[GTEX_BLEND_MAX] = {0}; /* the largest costs, in decreasing order */
+    for (int i = 0; i < n; i++) {
+        d = at_least_1(children[i]->depth) > d ? at_least_1(children[i]->depth) : d;
+        int c = at_least_1(children[i]->cost);
+        for (int k = 0; k < GTEX_BLEND_MAX; k++)
+            if (c > top[k]) {
+                int t = top[k];
+                top[k] = c;
+                c = t;
+            }
+    }
+    long long sum = 1; /* each term is at most GTEXNODE_MAX_COST for kit nodes, INT_MAX for any: no overflow */
+    for (int k = 0; k < GTEX_BLEND_MAX; k++)
+        sum += top[k];
+    if (d + 1 > GTEXNODE_MAX_DEPTH)
+        return gerror_set(err, G_ERR_INVALID, "%s: the node would be %d deep, the limit is %d", node, d + 1,
+                          GTEXNODE_MAX_DEPTH);
+    if (sum > GTEXNODE_MAX_COST)
+        return gerror_set(err, G_ERR_INVALID,
+                          "%s: one call of the node would make %lld material calls, the limit is %d", node, sum,
+                          GTEXNODE_MAX_COST);
+    *depth = d + 1;
+    *cost = (int)sum;
+    return G_OK;
+}
+
 int gtexnode_new_checked(const GMaterialClass *cls, GMaterial *const *children, int n, const GGenerator *gen,
                          int gen_needed, size_t size, GMaterial **out, GError *err)
 {
     *out = NULL;
     const GColorModel *model;
+    int depth = 0, cost = 0;
     int rc = gtexnode_check(cls->name, children, n, gen, gen_needed, &model, err);
-    return rc != G_OK ? rc : gmat_new(cls, model, size, out, err);
+    if (rc == G_OK)
+        rc = gtexnode_measure(cls->name, children, n, &depth, &cost, err);
+    if (rc == G_OK)
+        rc = gmat_new(cls, model, size, out, err);
+    if (rc == G_OK) {
+        (*out)->depth = depth;
+        (*out)->cost = cost;
+    }
+    return rc;
 }
 
 int gtexlist_new(const GMaterialClass *cls, GMaterial *const *children, int n, GGenerator *gen, size_t size,
