@@ -269,8 +269,9 @@ static int init_colorimetry(GColorModel *m, GSpectral *s, GError *err)
             gcie_rgb_to_nm(e, (GColorRole)role, &spec);
             for (int k = 0; k < n; k++)
                 basis[b * n + k] = tmp[k] = (float)nm_at(&spec, s->grid.min + k * s->grid.step);
-            double xyz[3], rgb[3];
-            gspectral_to_xyz(m, &c, (GColorRole)role, xyz);
+            double xyz[3] = {0, 0, 0}, rgb[3];
+            if (gspectral_to_xyz(m, &c, (GColorRole)role, xyz) != G_OK)
+                xyz[0] = xyz[1] = xyz[2] = 0.0; /* a basis colour it cannot convert: the inversion below refuses */
             gcie_xyz_to_rgb(xyz, rgb);
             for (int j = 0; j < 3; j++)
                 p[j][b] = rgb[j];

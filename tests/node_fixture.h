@@ -18,10 +18,10 @@ static int setup(void **state)
     if (!f || gcolormodel_create("rgb", NULL, &f->rgb, &err) != G_OK)
         return -1;
     f->scratch = gscratch_create(0);
-    gcolor_alloc(&f->c, f->rgb);
-    gcolor_alloc(&f->illum, f->rgb);
+    assert_int_equal(gcolor_alloc(&f->c, f->rgb), G_OK);
+    assert_int_equal(gcolor_alloc(&f->illum, f->rgb), G_OK);
     double one[3] = {1, 1, 1};
-    gcolor_from_rgb(&f->illum, one, GCOLOR_LIGHT);
+    assert_int_equal(gcolor_from_rgb(&f->illum, one, GCOLOR_LIGHT), G_OK);
     plane_point(&f->sp, f->rgb, f->scratch, 0.3, 0.4);
     *state = f;
     return 0;

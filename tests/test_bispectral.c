@@ -73,8 +73,8 @@ static void test_diagonal_matrix_is_a_reflectance(void **state)
     assert_int_equal(gcolor_wrap(&o1, m, buf[3], tu_floats(buf[3])), G_OK);
     assert_int_equal(gcolor_wrap(&o2, m, buf[4], tu_floats(buf[4])), G_OK);
     double refl[3] = {0.2, 0.7, 0.4}, lrgb[3] = {0.9, 0.8, 0.6};
-    gcolor_from_rgb(&r, refl, GCOLOR_REFLECTANCE);
-    gcolor_from_rgb(&light, lrgb, GCOLOR_LIGHT);
+    assert_int_equal(gcolor_from_rgb(&r, refl, GCOLOR_REFLECTANCE), G_OK);
+    assert_int_equal(gcolor_from_rgb(&light, lrgb, GCOLOR_LIGHT), G_OK);
     static float data[CAP];
     memset(data, 0, sizeof data);
     for (int k = 0; k < n; k++)
@@ -82,35 +82,35 @@ static void test_diagonal_matrix_is_a_reflectance(void **state)
     matrix(m, data, &d);
     assert_memory_equal(d.v, data, (size_t)n * n * sizeof(float)); /* same grid: an exact copy */
     /* reflection */
-    gcolor_mul(&o1, &d, &light);
-    gcolor_mul(&o2, &r, &light);
+    assert_int_equal(gcolor_mul(&o1, &d, &light), G_OK);
+    assert_int_equal(gcolor_mul(&o2, &r, &light), G_OK);
     assert_int_equal(o1.kind, GCOLOR_VECTOR);
     assert_true(max_rel_diff(o1.v, o2.v, n) < 1e-6);
     /* conversions, brightness */
     double x1[3], x2[3];
     for (int role = 0; role < 2; role++) {
-        gcolor_to_xyz(&d, (GColorRole)role, x1);
-        gcolor_to_xyz(&r, (GColorRole)role, x2);
+        assert_int_equal(gcolor_to_xyz(&d, (GColorRole)role, x1), G_OK);
+        assert_int_equal(gcolor_to_xyz(&r, (GColorRole)role, x2), G_OK);
         for (int i = 0; i < 3; i++)
             assert_true(fabs(x1[i] - x2[i]) < 1e-6);
         GSpectrumNM s1, s2;
-        gcolor_to_nm(&d, (GColorRole)role, &s1);
-        gcolor_to_nm(&r, (GColorRole)role, &s2);
+        assert_int_equal(gcolor_to_nm(&d, (GColorRole)role, &s1), G_OK);
+        assert_int_equal(gcolor_to_nm(&r, (GColorRole)role, &s2), G_OK);
         assert_true(max_rel_diff(s1.v, s2.v, GNM_COUNT) < 1e-6);
     }
     assert_true(fabs(gcolor_brightness(&d) - gcolor_brightness(&r)) < 1e-6);
     /* pow and div act on the diagonal and give vectors */
-    gcolor_pow(&o1, &d, 2.0);
-    gcolor_mul(&o2, &r, &r);
+    assert_int_equal(gcolor_pow(&o1, &d, 2.0), G_OK);
+    assert_int_equal(gcolor_mul(&o2, &r, &r), G_OK);
     assert_int_equal(o1.kind, GCOLOR_VECTOR);
     assert_true(max_rel_diff(o1.v, o2.v, n) < 1e-6);
-    gcolor_div(&o1, &d, &r);
+    assert_int_equal(gcolor_div(&o1, &d, &r), G_OK);
     for (int k = 0; k < n; k++)
         assert_true(r.v[k] == 0.0f ? o1.v[k] == 0.0f : fabsf(o1.v[k] - 1.0f) < 1e-6f);
     /* D * D is diag(r^2), D + r is diag(2 r) */
-    gcolor_mul(&o1, &d, &d);
+    assert_int_equal(gcolor_mul(&o1, &d, &d), G_OK);
     assert_int_equal(o1.kind, GCOLOR_MATRIX);
-    gcolor_add(&o2, &d, &r);
+    assert_int_equal(gcolor_add(&o2, &d, &r), G_OK);
     assert_int_equal(o2.kind, GCOLOR_MATRIX);
     for (int o = 0; o < n; o++)
         for (int i = 0; i < n; i++) {
@@ -131,15 +131,15 @@ static void test_single_entry_moves_energy(void **state)
     assert_int_equal(gcolor_wrap(&light, m, buf[1], tu_floats(buf[1])), G_OK);
     assert_int_equal(gcolor_wrap(&out, m, buf[2], tu_floats(buf[2])), G_OK);
     GSpectrumNM d65;
-    gcie_illuminant_nm("D65", &d65);
-    gcolor_from_nm(&light, &d65, GCOLOR_LIGHT);
+    assert_int_equal(gcie_illuminant_nm("D65", &d65), G_OK);
+    assert_int_equal(gcolor_from_nm(&light, &d65, GCOLOR_LIGHT), G_OK);
     const float *l = light.v;
     static float data[CAP];
     /* only the entry: exactly k of the light at 450 nm appears at 600 nm, nothing anywhere else */
     memset(data, 0, sizeof data);
     data[i600 * n + i450] = k;
     matrix(m, data, &mat);
-    gcolor_mul(&out, &mat, &light);
+    assert_int_equal(gcolor_mul(&out, &mat, &light), G_OK);
     for (int s = 0; s < n; s++)
         assert_true(out.v[s] == (s == i600 ? k * l[i450] : 0.0f));
     /* a conserving matrix: white except that k of 450 nm leaves its diagonal for 600 nm */
@@ -147,7 +147,7 @@ static void test_single_entry_moves_energy(void **state)
         data[s * n + s] = 1.0f;
     data[i450 * n + i450] = 1.0f - k;
     matrix(m, data, &mat);
-    gcolor_mul(&out, &mat, &light);
+    assert_int_equal(gcolor_mul(&out, &mat, &light), G_OK);
     double e_in = 0.0, e_out = 0.0;
     for (int s = 0; s < n; s++) {
         e_in += l[s];
@@ -163,7 +163,7 @@ static void test_single_entry_moves_energy(void **state)
     /* a monochromatic 450 nm light comes back as 1 - k at 450 nm and k at 600 nm */
     gcolor_black(&light);
     light.v[i450] = 1.0f;
-    gcolor_mul(&out, &mat, &light);
+    assert_int_equal(gcolor_mul(&out, &mat, &light), G_OK);
     for (int s = 0; s < n; s++)
         assert_true(out.v[s] == (s == i450 ? 1.0f - k : s == i600 ? k : 0.0f));
     gcolormodel_destroy(m);
@@ -207,44 +207,44 @@ static void test_composition(void **state)
     random_matrix(m, &a, 0.02f);
     random_matrix(m, &b, 0.02f);
     double lrgb[3] = {0.7, 0.9, 1.1};
-    gcolor_from_rgb(&light, lrgb, GCOLOR_LIGHT);
+    assert_int_equal(gcolor_from_rgb(&light, lrgb, GCOLOR_LIGHT), G_OK);
     /* (A B) L = A (B L) */
-    gcolor_mul(&ab, &a, &b);
+    assert_int_equal(gcolor_mul(&ab, &a, &b), G_OK);
     assert_int_equal(ab.kind, GCOLOR_MATRIX);
-    gcolor_mul(&x1, &ab, &light);
-    gcolor_mul(&t, &b, &light);
-    gcolor_mul(&x2, &a, &t);
+    assert_int_equal(gcolor_mul(&x1, &ab, &light), G_OK);
+    assert_int_equal(gcolor_mul(&t, &b, &light), G_OK);
+    assert_int_equal(gcolor_mul(&x2, &a, &t), G_OK);
     assert_true(max_rel_diff(x1.v, x2.v, n) < 1e-5);
     /* in place: out aliasing either operand or both */
-    gcolor_copy(&c, &a);
-    gcolor_mul(&c, &c, &b);
+    assert_int_equal(gcolor_copy(&c, &a), G_OK);
+    assert_int_equal(gcolor_mul(&c, &c, &b), G_OK);
     assert_true(max_rel_diff(c.v, ab.v, nn) < 1e-6);
-    gcolor_copy(&c, &b);
-    gcolor_mul(&c, &a, &c);
+    assert_int_equal(gcolor_copy(&c, &b), G_OK);
+    assert_int_equal(gcolor_mul(&c, &a, &c), G_OK);
     assert_true(max_rel_diff(c.v, ab.v, nn) < 1e-6);
-    gcolor_mul(&x1, &a, &a); /* A^2 */
-    gcolor_copy(&c, &a);
-    gcolor_mul(&c, &c, &c);
+    assert_int_equal(gcolor_mul(&x1, &a, &a), G_OK); /* A^2 */
+    assert_int_equal(gcolor_copy(&c, &a), G_OK);
+    assert_int_equal(gcolor_mul(&c, &c, &c), G_OK);
     assert_true(max_rel_diff(c.v, x1.v, nn) < 1e-6);
     /* M * V in place on the light */
-    gcolor_mul(&x1, &a, &light);
-    gcolor_copy(&t, &light);
-    gcolor_mul(&t, &a, &t);
+    assert_int_equal(gcolor_mul(&x1, &a, &light), G_OK);
+    assert_int_equal(gcolor_copy(&t, &light), G_OK);
+    assert_int_equal(gcolor_mul(&t, &a, &t), G_OK);
     assert_true(max_rel_diff(t.v, x1.v, n) < 1e-7);
     /* V * M = diag(v) M: a filter after the fluorescent layer, exact on any light */
     GColor r;
     float rv[CAP];
     assert_int_equal(gcolor_wrap(&r, m, rv, tu_floats(rv)), G_OK);
     double refl[3] = {0.9, 0.3, 0.5};
-    gcolor_from_rgb(&r, refl, GCOLOR_REFLECTANCE);
-    gcolor_mul(&c, &r, &a);
+    assert_int_equal(gcolor_from_rgb(&r, refl, GCOLOR_REFLECTANCE), G_OK);
+    assert_int_equal(gcolor_mul(&c, &r, &a), G_OK);
     assert_int_equal(c.kind, GCOLOR_MATRIX);
     for (int o = 0; o < n; o++)
         for (int i = 0; i < n; i++)
             assert_true(fabsf(c.v[o * n + i] - rv[o] * a.v[o * n + i]) <= 1e-7f);
-    gcolor_mul(&x1, &c, &light);
-    gcolor_mul(&t, &a, &light);
-    gcolor_mul(&x2, &r, &t);
+    assert_int_equal(gcolor_mul(&x1, &c, &light), G_OK);
+    assert_int_equal(gcolor_mul(&t, &a, &light), G_OK);
+    assert_int_equal(gcolor_mul(&x2, &r, &t), G_OK);
     assert_true(max_rel_diff(x1.v, x2.v, n) < 1e-6);
     gcolormodel_destroy(m);
 }
@@ -263,12 +263,12 @@ static void test_fold_and_brightness(void **state)
     }
     for (int role = 0; role < 2; role++) {
         GSpectrumNM s;
-        gcolor_to_nm(&a, (GColorRole)role, &s);
+        assert_int_equal(gcolor_to_nm(&a, (GColorRole)role, &s), G_OK);
         for (int r = 0; r < n; r++) /* grid wavelengths are whole nm: the folded value is the row sum */
             assert_true(fabsf(s.v[(int)(m->lambda_min + r * m->lambda_step) - GNM_MIN] - v.v[r]) < 1e-6f * v.v[r]);
         double x1[3], x2[3];
-        gcolor_to_xyz(&a, (GColorRole)role, x1);
-        gcolor_to_xyz(&v, (GColorRole)role, x2);
+        assert_int_equal(gcolor_to_xyz(&a, (GColorRole)role, x1), G_OK);
+        assert_int_equal(gcolor_to_xyz(&v, (GColorRole)role, x2), G_OK);
         for (int i = 0; i < 3; i++)
             assert_true(fabs(x1[i] - x2[i]) < 1e-6 * fabs(x2[i]) + 1e-9);
     }
@@ -282,7 +282,7 @@ static void test_fold_and_brightness(void **state)
     matrix(m, data, &o);
     assert_true(fabs(gcolor_brightness(&o) - 0.75) < 1e-6);
     /* 0 only for black: a zero matrix is 0, a single entry anywhere is not */
-    gcolor_scale(&o, &a, 0.0);
+    assert_int_equal(gcolor_scale(&o, &a, 0.0), G_OK);
     assert_int_equal(o.kind, GCOLOR_MATRIX);
     assert_true(gcolor_brightness(&o) == 0.0);
     for (int e = 0; e < n * n; e += 37) {
@@ -302,38 +302,38 @@ static void test_matrix_vector_operations(void **state)
     GColorModel *m = random_fixture(&a, &v, &o);
     int n = m->nsamples;
     double rgb[3] = {0.4, 0.5, 0.6};
-    gcolor_from_rgb(&v, rgb, GCOLOR_REFLECTANCE);
+    assert_int_equal(gcolor_from_rgb(&v, rgb, GCOLOR_REFLECTANCE), G_OK);
     /* add: A + diag(v) in both orders, and into the vector's own storage */
-    gcolor_add(&o, &a, &v);
+    assert_int_equal(gcolor_add(&o, &a, &v), G_OK);
     for (int r = 0; r < n; r++)
         for (int i = 0; i < n; i++)
             assert_true(o.v[r * n + i] == a.v[r * n + i] + (r == i ? v.v[r] : 0.0f));
     static float keep[CAP];
     memcpy(keep, o.v, (size_t)n * n * sizeof *keep);
-    gcolor_add(&o, &v, &a);
+    assert_int_equal(gcolor_add(&o, &v, &a), G_OK);
     assert_memory_equal(o.v, keep, (size_t)n * n * sizeof *keep);
     GColor v2;
     assert_int_equal(gcolor_wrap(&v2, m, buf[3], tu_floats(buf[3])), G_OK);
-    gcolor_copy(&v2, &v);
-    gcolor_add(&v2, &v2, &a);
+    assert_int_equal(gcolor_copy(&v2, &v), G_OK);
+    assert_int_equal(gcolor_add(&v2, &v2, &a), G_OK);
     assert_int_equal(v2.kind, GCOLOR_MATRIX);
     assert_memory_equal(v2.v, keep, (size_t)n * n * sizeof *keep);
     /* scale keeps the kind, per entry */
-    gcolor_scale(&o, &a, 2.0);
+    assert_int_equal(gcolor_scale(&o, &a, 2.0), G_OK);
     assert_int_equal(o.kind, GCOLOR_MATRIX);
     for (int e = 0; e < n * n; e++)
         assert_true(o.v[e] == 2.0f * a.v[e]);
     /* div: diagonals, a vector */
-    gcolor_div(&o, &a, &v);
+    assert_int_equal(gcolor_div(&o, &a, &v), G_OK);
     assert_int_equal(o.kind, GCOLOR_VECTOR);
     for (int k = 0; k < n; k++)
         assert_true(fabsf(o.v[k] - a.v[k * n + k] / v.v[k]) < 1e-6f * o.v[k]);
-    gcolor_copy(&o, &a);
-    gcolor_div(&o, &o, &a); /* in place */
+    assert_int_equal(gcolor_copy(&o, &a), G_OK);
+    assert_int_equal(gcolor_div(&o, &o, &a), G_OK); /* in place */
     for (int k = 0; k < n; k++)
         assert_true(fabsf(o.v[k] - 1.0f) < 1e-6f);
     /* pow: the diagonal only (absorption does not fluoresce) */
-    gcolor_pow(&o, &a, 0.5);
+    assert_int_equal(gcolor_pow(&o, &a, 0.5), G_OK);
     assert_int_equal(o.kind, GCOLOR_VECTOR);
     for (int k = 0; k < n; k++)
         assert_true(fabsf(o.v[k] - sqrtf(a.v[k * n + k])) < 1e-6f);

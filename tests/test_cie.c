@@ -258,7 +258,7 @@ static void test_rgb_basis(void **state)
     for (int i = 0; i < GNM_COUNT; i++)
         assert_true(fabsf(s.v[i] - 1.0f) < 1e-3f);
     gcie_rgb_to_nm(white, GCOLOR_LIGHT, &s);
-    gcie_illuminant_nm("D65", &d65);
+    assert_int_equal(gcie_illuminant_nm("D65", &d65), G_OK);
     for (int i = 0; i < GNM_COUNT; i++)
         assert_true(fabsf(s.v[i] - d65.v[i]) < 2e-3f * d65.v[i]);
 }

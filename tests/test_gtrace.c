@@ -441,7 +441,7 @@ static int nan_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor
     (void)self;
     (void)out;
     double one[3] = {1, 1, 1};
-    gcolor_from_rgb(result, one, GCOLOR_LIGHT);
+    assert_int_equal(gcolor_from_rgb(result, one, GCOLOR_LIGHT), G_OK);
     /* NaN on one side of the sphere, infinity on the other */
     return gcolor_scale(result, result, sp->point.x > 0 ? NAN : INFINITY);
 }

@@ -73,11 +73,11 @@ static void make_set(const GColorModel *m, GScratch *s, Set *set)
     assert_int_equal(gcolor_scratch(&mir, m, s), G_OK);
     assert_int_equal(gcolor_scratch(&a, m, s), G_OK);
     assert_int_equal(gcolor_scratch(&L, m, s), G_OK);
-    gcolor_from_rgb(&kd, half, GCOLOR_REFLECTANCE);
-    gcolor_from_rgb(&ks, low, GCOLOR_REFLECTANCE);
-    gcolor_from_rgb(&mir, tenth, GCOLOR_REFLECTANCE);
-    gcolor_from_rgb(&a, coef, GCOLOR_REFLECTANCE);
-    gcolor_from_rgb(&L, light, GCOLOR_LIGHT);
+    assert_int_equal(gcolor_from_rgb(&kd, half, GCOLOR_REFLECTANCE), G_OK);
+    assert_int_equal(gcolor_from_rgb(&ks, low, GCOLOR_REFLECTANCE), G_OK);
+    assert_int_equal(gcolor_from_rgb(&mir, tenth, GCOLOR_REFLECTANCE), G_OK);
+    assert_int_equal(gcolor_from_rgb(&a, coef, GCOLOR_REFLECTANCE), G_OK);
+    assert_int_equal(gcolor_from_rgb(&L, light, GCOLOR_LIGHT), G_OK);
     for (int i = 0; i < m->nvalues; i++) {
         a.v[i] = fmaxf(a.v[i], 0.0f);
         L.v[i] = fmaxf(L.v[i], 0.0f);
@@ -138,7 +138,7 @@ static void zero_alloc_case(const char *model_name)
             sum += gcolor_brightness(&r);
             rc |= gmaterial_reflection(all[i], &sp, other, &illum, out, &r);
             sum += gcolor_brightness(&r);
-            gmaterial_reflection_dir(all[i], &sp, view, &d);
+            assert_int_equal(gmaterial_reflection_dir(all[i], &sp, view, &d), G_OK);
             rc |= gmaterial_refraction_index(sp.from, &sp, &ri);
             rc |= gmaterial_refraction_index(all[i], &sp, &n1);
             rc |= gcolor_div(&ri, &ri, &n1);
@@ -196,8 +196,8 @@ static void test_constructors_out_of_memory(void **state)
             double a[3] = {0.3, 0.2, 0.1};
             assert_int_equal(gcolor_scratch(&kd, m, s), G_OK);
             assert_int_equal(gcolor_scratch(&ks, m, s), G_OK);
-            gcolor_from_rgb(&kd, a, GCOLOR_REFLECTANCE);
-            gcolor_from_rgb(&ks, a, GCOLOR_REFLECTANCE);
+            assert_int_equal(gcolor_from_rgb(&kd, a, GCOLOR_REFLECTANCE), G_OK);
+            assert_int_equal(gcolor_from_rgb(&ks, a, GCOLOR_REFLECTANCE), G_OK);
             GPhongParams pp = {&kd, &ks, 10.0, &ks};
             GDielectricParams dp = {gdispersion_constant(1.5), &kd, &ks};
             GMaterial *out = (GMaterial *)&c;

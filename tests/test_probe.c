@@ -298,8 +298,8 @@ static void test_latlong_angular_round_trip(void **state)
     GVec3 n[64];
     double e1[192], e2[192];
     gprobe_fibonacci(64, n);
-    gprobe_irradiance(p, n, 64, e1, NULL);
-    gprobe_irradiance(back, n, 64, e2, NULL);
+    assert_int_equal(gprobe_irradiance(p, n, 64, e1, NULL), G_OK);
+    assert_int_equal(gprobe_irradiance(back, n, 64, e2, NULL), G_OK);
     for (int i = 0; i < 192; i++)
         assert_true(fabs(e2[i] / e1[i] - 1.0) < 0.003);
     gimage_free(&map);
@@ -332,8 +332,8 @@ static void test_rotation(void **state)
         rn[i] = gvec3(R[0] * n[i].x + R[1] * n[i].y + R[2] * n[i].z, R[3] * n[i].x + R[4] * n[i].y + R[5] * n[i].z,
                       R[6] * n[i].x + R[7] * n[i].y + R[8] * n[i].z);
     double e1[150], e2[150];
-    gprobe_irradiance(s, n, 50, e1, NULL);
-    gprobe_irradiance(r, rn, 50, e2, NULL);
+    assert_int_equal(gprobe_irradiance(s, n, 50, e1, NULL), G_OK);
+    assert_int_equal(gprobe_irradiance(r, rn, 50, e2, NULL), G_OK);
     for (int i = 0; i < 150; i++)
         assert_true(fabs(e2[i] / e1[i] - 1.0) < 0.002);
     /* +z goes to R (0,0,1): rotating -90 degrees about x makes the zenith +y */

@@ -191,7 +191,7 @@ static void test_errors_fall_with_count(void **state)
     GVec3 *n = malloc(sizeof *n * m);
     double *truth = malloc(sizeof(double) * 3 * m), *approx = malloc(sizeof(double) * 3 * m);
     gprobe_fibonacci(m, n);
-    gprobe_irradiance(p, n, m, truth, NULL);
+    assert_int_equal(gprobe_irradiance(p, n, m, truth, NULL), G_OK);
     GProbeTechnique ts[2] = {GPROBE_ADAPTIVE, GPROBE_KMEANS};
     for (int t = 0; t < 2; t++) {
         double prev = 1e30;
@@ -260,7 +260,7 @@ static void test_irradiance_beats_its_start(void **state)
         GVec3 *n = malloc(sizeof *n * m);
         double *truth = malloc(sizeof(double) * 3 * m), *approx = malloc(sizeof(double) * 3 * m);
         gprobe_fibonacci(m, n);
-        gprobe_irradiance(p, n, m, truth, NULL);
+        assert_int_equal(gprobe_irradiance(p, n, m, truth, NULL), G_OK);
         GProbeLight init[16], fit[16];
         GProbeFitReport rep;
         GProbeOptions opt = {0};
@@ -329,7 +329,7 @@ static void test_sh9_accuracy_on_shared_probes(void **state)
         GVec3 *n = malloc(sizeof *n * m);
         double *truth = malloc(sizeof(double) * 3 * m), *approx = malloc(sizeof(double) * 3 * m);
         gprobe_fibonacci(m, n);
-        gprobe_irradiance(p, n, m, truth, NULL);
+        assert_int_equal(gprobe_irradiance(p, n, m, truth, NULL), G_OK);
         GProbeSH9 sh;
         gprobe_sh9_project(p, &sh);
         gprobe_sh9_irradiance(&sh, n, m, approx);

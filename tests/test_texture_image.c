@@ -77,12 +77,12 @@ static int setup(void **state)
         return -1;
     f->scratch = gscratch_create(0);
     GColor one;
-    gcolor_alloc(&one, f->rgb);
-    gcolor_from_rgb(&one, (double[3]){1, 1, 1}, GCOLOR_REFLECTANCE);
+    assert_int_equal(gcolor_alloc(&one, f->rgb), G_OK);
+    assert_int_equal(gcolor_from_rgb(&one, (double[3]){1, 1, 1}, GCOLOR_REFLECTANCE), G_OK);
     if (glambert_create(f->rgb, &one, &f->white, &err))
         return -1;
     gcolor_free(&one);
-    gcolor_alloc(&f->c, f->rgb);
+    assert_int_equal(gcolor_alloc(&f->c, f->rgb), G_OK);
     *state = f;
     return 0;
 }
@@ -232,9 +232,9 @@ static void test_color_spaces(void **state)
     GError err;
     assert_int_equal(gcolormodel_create("spectrum", NULL, &spec, &err), G_OK);
     GColor one, c;
-    gcolor_alloc(&one, spec);
-    gcolor_alloc(&c, spec);
-    gcolor_from_rgb(&one, (double[3]){0.8, 0.8, 0.8}, GCOLOR_REFLECTANCE);
+    assert_int_equal(gcolor_alloc(&one, spec), G_OK);
+    assert_int_equal(gcolor_alloc(&c, spec), G_OK);
+    assert_int_equal(gcolor_from_rgb(&one, (double[3]){0.8, 0.8, 0.8}, GCOLOR_REFLECTANCE), G_OK);
     GMaterial *w, *m;
     assert_int_equal(glambert_create(spec, &one, &w, &err), G_OK);
     GImageNodeOptions o = {.texsys = f->ts, .colorspace = GTEX_COLORSPACE_LINEAR};
@@ -243,7 +243,7 @@ static void test_color_spaces(void **state)
     plane_point(&sp, spec, f->scratch, 0.5, 0.5);
     assert_int_equal(gmaterial_diffuse(m, &sp, &c), G_OK);
     double rgb[3];
-    gcolor_to_rgb(&c, GCOLOR_REFLECTANCE, rgb);
+    assert_int_equal(gcolor_to_rgb(&c, GCOLOR_REFLECTANCE, rgb), G_OK);
     assert_float_equal(rgb[0], 0.8, 0.02);
     assert_float_equal(rgb[1], 0.0, 0.02);
     assert_float_equal(rgb[2], 0.0, 0.02);

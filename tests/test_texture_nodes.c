@@ -71,7 +71,7 @@ static void test_interpolate_blend(void **state)
 
     assert_int_equal(gmaterial_diffuse(n, &f->sp, &f->c), G_OK);
     double rgb[3];
-    gcolor_to_rgb(&f->c, GCOLOR_REFLECTANCE, rgb);
+    assert_int_equal(gcolor_to_rgb(&f->c, GCOLOR_REFLECTANCE, rgb), G_OK);
     assert_float_equal(rgb[0], 0.75 * 0.2 + 0.25 * 1.0, 1e-6);
     assert_float_equal(rgb[1], 0.75 * 0.4, 1e-6);
     assert_float_equal(rgb[2], 0.25 * 0.5, 1e-6);
@@ -79,7 +79,7 @@ static void test_interpolate_blend(void **state)
     /* the result may alias the incoming light */
     assert_int_equal(gcolor_from_rgb(&f->c, (double[3]){1, 1, 1}, GCOLOR_LIGHT), G_OK);
     assert_int_equal(gmaterial_absorption(n, &f->sp, &f->c, 1.0, &f->c), G_OK);
-    gcolor_to_rgb(&f->c, GCOLOR_REFLECTANCE, rgb);
+    assert_int_equal(gcolor_to_rgb(&f->c, GCOLOR_REFLECTANCE, rgb), G_OK);
     assert_float_equal(rgb[0], 0.75 * 0.2 + 0.25 * 1.0, 1e-6);
 
     GVec3 nn;
@@ -289,8 +289,8 @@ static void test_bump_analytic_tilt(void **state)
     Fix *f = *state;
     GError err;
     GColor rho;
-    gcolor_alloc(&rho, f->rgb);
-    gcolor_from_rgb(&rho, (double[3]){0.5, 0.5, 0.5}, GCOLOR_REFLECTANCE);
+    assert_int_equal(gcolor_alloc(&rho, f->rgb), G_OK);
+    assert_int_equal(gcolor_from_rgb(&rho, (double[3]){0.5, 0.5, 0.5}, GCOLOR_REFLECTANCE), G_OK);
     GMaterial *lam, *bump;
     assert_int_equal(glambert_create(f->rgb, &rho, &lam, &err), G_OK);
     const double slopes[] = {0.1, 1.0, -2.5};
@@ -382,7 +382,7 @@ static void test_scale(void **state)
     assert_int_equal(gnode_scale_create(&a->base, half, &n, &err), G_OK);
     assert_int_equal(gmaterial_diffuse(n, &f->sp, &f->c), G_OK);
     double rgb[3];
-    gcolor_to_rgb(&f->c, GCOLOR_REFLECTANCE, rgb);
+    assert_int_equal(gcolor_to_rgb(&f->c, GCOLOR_REFLECTANCE, rgb), G_OK);
     assert_float_equal(rgb[0], 0.4, 1e-6);
     assert_float_equal(rgb[2], 0.2, 1e-6);
     assert_int_equal(gmaterial_refraction_index(n, &f->sp, &f->c), G_OK); /* not scaled */

@@ -46,7 +46,7 @@ static void load(Fix *f, const char *text)
     if (rc != G_OK)
         print_error("%s\n", err.message);
     assert_int_equal(rc, G_OK);
-    gcolor_alloc(&f->c, glibrary_colormodel(f->lib));
+    assert_int_equal(gcolor_alloc(&f->c, glibrary_colormodel(f->lib)), G_OK);
 }
 
 static int load_error(const char *text, GError *err)

@@ -229,7 +229,7 @@ static inline void plane_point(GSurfPoint *sp, const GColorModel *m, GScratch *s
 static inline double color_r(const GColor *c)
 {
     double rgb[3];
-    gcolor_to_rgb(c, GCOLOR_REFLECTANCE, rgb);
+    assert_int_equal(gcolor_to_rgb(c, GCOLOR_REFLECTANCE, rgb), G_OK);
     return rgb[0];
 }
 

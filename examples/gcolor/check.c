@@ -84,7 +84,10 @@ static void check_identities(Check *c)
         add = fmax(add, gcolor_add(&c->tmp, a, &c->black) == G_OK ? rel_diff(a, &c->tmp) : INFINITY);
         mul = fmax(mul, gcolor_mul(&c->tmp, &c->white_refl, a) == G_OK ? rel_diff(a, &c->tmp) : INFINITY);
         /* pow is for transmittances: on the value with negative samples set to 0 */
-        gcolor_copy(&c->clamped, a);
+        if (gcolor_copy(&c->clamped, a) != G_OK) {
+            pw = INFINITY;
+            continue;
+        }
         for (int i = 0; i < c->m->nvalues; i++)
             c->clamped.v[i] = fmaxf(c->clamped.v[i], 0.0f);
         pw = fmax(pw, gcolor_pow(&c->tmp, &c->clamped, 1.0) == G_OK ? rel_diff(&c->clamped, &c->tmp) : INFINITY);

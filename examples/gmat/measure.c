@@ -125,13 +125,17 @@ int gmat_albedo(GmatContext *ctx, GVec3 in, int n, GColor *total, double *y_tota
     if (spec < 0)
         return spec;
     if (spec == 1) { /* the aligned case returns the specular reflectance times the light: no cosines */
-        gcolor_to_xyz(&ctx->result, GCOLOR_LIGHT, xyz);
+        rc = gcolor_to_xyz(&ctx->result, GCOLOR_LIGHT, xyz);
+        if (rc != G_OK)
+            return rc;
         *y_specular = xyz[1];
-        int rc = gcolor_add(total, total, &ctx->result);
+        rc = gcolor_add(total, total, &ctx->result);
         if (rc != G_OK)
             return rc;
     }
-    gcolor_to_xyz(total, GCOLOR_LIGHT, xyz);
+    rc = gcolor_to_xyz(total, GCOLOR_LIGHT, xyz);
+    if (rc != G_OK)
+        return rc;
     *y_total = xyz[1];
     return G_OK;
 }
@@ -159,9 +163,11 @@ int gmat_transmittance(GmatContext *ctx, GVec3 in, int n, GColor *total, double 
         rc = transmit(ctx, in, gvec3_normalize(dir));
         if (rc == G_OK) {
             double xyz[3];
-            gcolor_to_xyz(&ctx->result, GCOLOR_LIGHT, xyz);
-            *y_ideal = xyz[1];
-            rc = gcolor_add(total, total, &ctx->result);
+            rc = gcolor_to_xyz(&ctx->result, GCOLOR_LIGHT, xyz);
+            if (rc == G_OK) {
+                *y_ideal = xyz[1];
+                rc = gcolor_add(total, total, &ctx->result);
+            }
         }
     }
     return rc;
@@ -170,7 +176,10 @@ int gmat_transmittance(GmatContext *ctx, GVec3 in, int n, GColor *total, double 
 void gmat_print_color(const char *label, const GColor *c, int spectrum)
 {
     double xyz[3], rgb[3];
-    gcolor_to_xyz(c, GCOLOR_LIGHT, xyz);
+    if (gcolor_to_xyz(c, GCOLOR_LIGHT, xyz) != G_OK) {
+        printf("%s (the colour cannot be converted to XYZ)\n", label);
+        return;
+    }
     gcie_xyz_to_rgb(xyz, rgb);
     printf("%s linear sRGB  %.6f %.6f %.6f\n", label, rgb[0], rgb[1], rgb[2]);
     printf("%s XYZ          %.6f %.6f %.6f\n", label, xyz[0], xyz[1], xyz[2]);

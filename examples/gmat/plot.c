@@ -49,8 +49,9 @@ static void line(GImage *img, double x0, double y0, double x1, double y1, const 
 /* The reflected colour of one direction as a display colour: largest channel 1, negatives clipped. */
 static void display(const GColor *c, float out[3], float *y)
 {
-    double xyz[3], rgb[3];
-    gcolor_to_xyz(c, GCOLOR_LIGHT, xyz);
+    double xyz[3] = {0, 0, 0}, rgb[3];
+    if (gcolor_to_xyz(c, GCOLOR_LIGHT, xyz) != G_OK)
+        xyz[0] = xyz[1] = xyz[2] = 0.0; /* shown black */
     gcie_xyz_to_rgb(xyz, rgb);
     double mx = fmax(rgb[0], fmax(rgb[1], rgb[2]));
     for (int k = 0; k < 3; k++)

@@ -132,8 +132,11 @@ static int render(Swatch *s, int size, int samples, int sphere, GImage *img)
             float *out = img->pixels + ((size_t)py * size + px) * 3;
             double rgb[3] = {0, 0, 0};
             if (hits > 0) {
-                gcolor_scale(&s->sum, &s->sum, 1.0 / (samples * samples));
-                gcolor_to_rgb(&s->sum, GCOLOR_LIGHT, rgb);
+                int rc = gcolor_scale(&s->sum, &s->sum, 1.0 / (samples * samples));
+                if (rc == G_OK)
+                    rc = gcolor_to_rgb(&s->sum, GCOLOR_LIGHT, rgb);
+                if (rc != G_OK)
+                    return rc;
             }
             double cover = (double)hits / (samples * samples);
             for (int k = 0; k < 3; k++)

@@ -32,7 +32,7 @@ GENERIC_API GAffine2 gaffine2_scale(double sx, double sy);
 /** The composition a after b: (a * b)(p) = a(b(p)). */
 GENERIC_API GAffine2 gaffine2_mul(const GAffine2 *a, const GAffine2 *b);
 /** The inverse; G_ERR_INVALID (with a message) when the map is singular or not finite. */
-GENERIC_API int gaffine2_invert(const GAffine2 *a, GAffine2 *inv, GError *err);
+GENERIC_API GENERIC_NODISCARD int gaffine2_invert(const GAffine2 *a, GAffine2 *inv, GError *err);
 /** Applies the map to a point. */
 GENERIC_API void gaffine2_apply(const GAffine2 *a, double x, double y, double *ox, double *oy);
 
@@ -47,7 +47,7 @@ GENERIC_API GAffine3 gaffine3_scale(GVec3 s);
 /** The composition a after b. */
 GENERIC_API GAffine3 gaffine3_mul(const GAffine3 *a, const GAffine3 *b);
 /** The inverse; G_ERR_INVALID when singular or not finite. */
-GENERIC_API int gaffine3_invert(const GAffine3 *a, GAffine3 *inv, GError *err);
+GENERIC_API GENERIC_NODISCARD int gaffine3_invert(const GAffine3 *a, GAffine3 *inv, GError *err);
 /** Applies the map to a point. */
 GENERIC_API GVec3 gaffine3_apply(const GAffine3 *a, GVec3 p);
 /** Applies the linear part (no translation) to a direction. */

@@ -25,7 +25,7 @@ GENERIC_API const GTypeInfo *const *generic_builtin_types(void);
 
 /** Registers every built-in type (gregistry_add_list): idempotent and thread safe; G_ERR_EXISTS when a module
  * registered one of the built-in names before. */
-GENERIC_API int generic_register_builtins(GError *err);
+GENERIC_API GENERIC_NODISCARD int generic_register_builtins(GError *err);
 
 #ifdef __cplusplus
 }

@@ -160,9 +160,9 @@ struct GColorModelClass {
 /* ---- models ---- */
 
 /** Creates a model by registered name with options (NULL = defaults). */
-GENERIC_API int gcolormodel_create(const char *name, const GColorModelOptions *opt, GColorModel **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gcolormodel_create(const char *name, const GColorModelOptions *opt, GColorModel **out, GError *err);
 /** Creates a model from a class directly (used by plug-ins and tests). */
-GENERIC_API int gcolormodel_create_class(const GColorModelClass *cls, const GColorModelOptions *opt, GColorModel **out,
+GENERIC_API GENERIC_NODISCARD int gcolormodel_create_class(const GColorModelClass *cls, const GColorModelOptions *opt, GColorModel **out,
                              GError *err);
 /** Frees a model; NULL is a no-op. Colours of the model must not be used afterwards. */
 GENERIC_API void gcolormodel_destroy(GColorModel *m);
@@ -173,70 +173,70 @@ GENERIC_API const char *gcolormodel_name(const GColorModel *m);
 
 /** Points c at the caller's buffer of nfloats floats (GCOLOR_STORAGE_CALLER) and sets it to black.
  * G_ERR_INVALID, with c cleared, when storage is NULL or nfloats < m->capacity. */
-GENERIC_API int gcolor_wrap(GColor *c, const GColorModel *m, float *storage, size_t nfloats);
+GENERIC_API GENERIC_NODISCARD int gcolor_wrap(GColor *c, const GColorModel *m, float *storage, size_t nfloats);
 /** Gives c storage from the arena (GCOLOR_STORAGE_ARENA) and sets it to black; G_ERR_NOMEM, with c cleared,
  * when the arena cannot grow. The arena's mark/release gives the storage back. */
-GENERIC_API int gcolor_scratch(GColor *c, const GColorModel *m, GScratch *s);
+GENERIC_API GENERIC_NODISCARD int gcolor_scratch(GColor *c, const GColorModel *m, GScratch *s);
 /** Gives c heap storage (GCOLOR_STORAGE_HEAP, for long-lived values) and sets it to black; G_ERR_NOMEM, with
  * c cleared, when out of memory. */
-GENERIC_API int gcolor_alloc(GColor *c, const GColorModel *m);
+GENERIC_API GENERIC_NODISCARD int gcolor_alloc(GColor *c, const GColorModel *m);
 /** Frees c's storage if it is HEAP (caller and arena storage are left alone) and clears the handle; NULL and
  * a cleared handle are no-ops. */
 GENERIC_API void gcolor_free(GColor *c);
 /** Copies the value of src into dst (same model). */
-GENERIC_API int gcolor_copy(GColor *dst, const GColor *src);
+GENERIC_API GENERIC_NODISCARD int gcolor_copy(GColor *dst, const GColor *src);
 
 /* ---- the generic operations (status: G_OK, or G_ERR_MISMATCH for colours of different models) ---- */
 
 /** Sets c to black (a zero vector). */
 GENERIC_API void gcolor_black(GColor *c);
 /** out = a + b */
-GENERIC_API int gcolor_add(GColor *out, const GColor *a, const GColor *b);
+GENERIC_API GENERIC_NODISCARD int gcolor_add(GColor *out, const GColor *a, const GColor *b);
 /** out = a * b: reflection of b by a. */
-GENERIC_API int gcolor_mul(GColor *out, const GColor *a, const GColor *b);
+GENERIC_API GENERIC_NODISCARD int gcolor_mul(GColor *out, const GColor *a, const GColor *b);
 /** out = a * s */
-GENERIC_API int gcolor_scale(GColor *out, const GColor *a, double s);
+GENERIC_API GENERIC_NODISCARD int gcolor_scale(GColor *out, const GColor *a, double s);
 /** out = a / b: relative refraction index (zero divisors give zero). */
-GENERIC_API int gcolor_div(GColor *out, const GColor *a, const GColor *b);
+GENERIC_API GENERIC_NODISCARD int gcolor_div(GColor *out, const GColor *a, const GColor *b);
 /** out = a ^ e, sample by sample (absorption). */
-GENERIC_API int gcolor_pow(GColor *out, const GColor *a, double e);
+GENERIC_API GENERIC_NODISCARD int gcolor_pow(GColor *out, const GColor *a, double e);
 /** Brightness: 0 if and only if c is black; a constant value c gives c. */
 GENERIC_API double gcolor_brightness(const GColor *c);
 /** out = s * a + b (out may alias a or b); any kinds the model's add and scale accept. */
-GENERIC_API int gcolor_axpy(GColor *out, double s, const GColor *a, const GColor *b);
+GENERIC_API GENERIC_NODISCARD int gcolor_axpy(GColor *out, double s, const GColor *a, const GColor *b);
 /** out += a * s, that is gcolor_axpy(out, s, a, out). */
-GENERIC_API int gcolor_add_scaled(GColor *out, const GColor *a, double s);
+GENERIC_API GENERIC_NODISCARD int gcolor_add_scaled(GColor *out, const GColor *a, double s);
 /** out = the constant value (a vector: 1 is white, and the relative index of vacuum); G_ERR_INVALID for a
  * non-finite value. */
-GENERIC_API int gcolor_fill(GColor *out, double value);
+GENERIC_API GENERIC_NODISCARD int gcolor_fill(GColor *out, double value);
 /** out = exp(s * a) sample by sample (a transmittance from an absorption coefficient: s = -distance). A
  * matrix operand: the model's definition (bispectral: its diagonal, as pow), G_ERR_UNSUPPORTED in a plug-in
  * model that gives no exp of its own. */
-GENERIC_API int gcolor_exp(GColor *out, const GColor *a, double s);
+GENERIC_API GENERIC_NODISCARD int gcolor_exp(GColor *out, const GColor *a, double s);
 /** 1 when every sample is finite, 0 otherwise. */
-GENERIC_API int gcolor_is_finite(const GColor *c);
+GENERIC_API GENERIC_NODISCARD int gcolor_is_finite(const GColor *c);
 /** 1 when every sample is finite and >= 0 (a physical light or reflectance), 0 otherwise. */
-GENERIC_API int gcolor_is_nonnegative(const GColor *c);
+GENERIC_API GENERIC_NODISCARD int gcolor_is_nonnegative(const GColor *c);
 
 /* ---- conversions ---- */
 
 /** To the nm exchange spectrum. */
-GENERIC_API int gcolor_to_nm(const GColor *c, GColorRole role, GSpectrumNM *out);
+GENERIC_API GENERIC_NODISCARD int gcolor_to_nm(const GColor *c, GColorRole role, GSpectrumNM *out);
 /** From the nm exchange spectrum (checks for NaN). */
-GENERIC_API int gcolor_from_nm(GColor *c, const GSpectrumNM *in, GColorRole role);
+GENERIC_API GENERIC_NODISCARD int gcolor_from_nm(GColor *c, const GSpectrumNM *in, GColorRole role);
 /** To CIE 1931 XYZ. */
-GENERIC_API int gcolor_to_xyz(const GColor *c, GColorRole role, double xyz[3]);
+GENERIC_API GENERIC_NODISCARD int gcolor_to_xyz(const GColor *c, GColorRole role, double xyz[3]);
 /** To linear sRGB (Rec.709 primaries, D65 white). */
-GENERIC_API int gcolor_to_rgb(const GColor *c, GColorRole role, double rgb[3]);
+GENERIC_API GENERIC_NODISCARD int gcolor_to_rgb(const GColor *c, GColorRole role, double rgb[3]);
 /** From linear sRGB; G_ERR_INVALID for NaN or infinite input. */
-GENERIC_API int gcolor_from_rgb(GColor *c, const double rgb[3], GColorRole role);
+GENERIC_API GENERIC_NODISCARD int gcolor_from_rgb(GColor *c, const double rgb[3], GColorRole role);
 /** From a re-radiation matrix: a matrix in the bispectral model; in the other models the response to an
  * equal-energy light (the matrix's effect folded into a plain reflectance), with components a narrow gamut
  * makes negative (rgb: the blue of a day-glo orange) set to 0. G_ERR_INVALID for an empty grid, a step that is
  * not finite and > 0, a non-finite start or value, or grids that share no wavelength (no diagonal). */
-GENERIC_API int gcolor_from_reradiation(GColor *c, const GReradiation *r, GError *err);
+GENERIC_API GENERIC_NODISCARD int gcolor_from_reradiation(GColor *c, const GReradiation *r, GError *err);
 /** Converts a value of one model into another (through a direct formula or the nm spectrum). */
-GENERIC_API int gcolor_convert(GColor *dst, const GColor *src, GColorRole role);
+GENERIC_API GENERIC_NODISCARD int gcolor_convert(GColor *dst, const GColor *src, GColorRole role);
 
 /* ---- colorimetry helpers (lib/cie.c) ---- */
 
@@ -255,7 +255,7 @@ GENERIC_API void gcie_cmf(double nm, double xyz[3]);
  * Y = 1 as a light; negative when the name is unknown. */
 GENERIC_API double gcie_illuminant(const char *name, double nm);
 /** Fills an nm spectrum with a named illuminant (Y = 1); G_ERR_NOTFOUND for unknown names. */
-GENERIC_API int gcie_illuminant_nm(const char *name, GSpectrumNM *out);
+GENERIC_API GENERIC_NODISCARD int gcie_illuminant_nm(const char *name, GSpectrumNM *out);
 /** Planck blackbody at temperature K, normalised to Y = 1. */
 GENERIC_API void gcie_blackbody_nm(double kelvin, GSpectrumNM *out);
 /** Luminance weight of an nm sample: ybar / sum(ybar), so the weights sum to 1. */

@@ -30,10 +30,10 @@ extern "C" {
 /** Opens a regular file for reading (close-on-exec, blocking once checked). Returns the descriptor (>= 0), or
  * G_ERR_IO with "cannot open "PATH": REASON" or "cannot read "PATH": it is a FIFO" (a character device,
  * a block device, a socket, a directory). */
-GENERIC_API int gfile_open_input(const char *path, GError *err);
+GENERIC_API GENERIC_NODISCARD int gfile_open_input(const char *path, GError *err);
 
 /** The same check without keeping the file open, for files a dependency opens by name: G_OK or G_ERR_IO. */
-GENERIC_API int gfile_check_input(const char *path, GError *err);
+GENERIC_API GENERIC_NODISCARD int gfile_check_input(const char *path, GError *err);
 
 /** An output being written; see the top of this file. */
 typedef struct GFileOutput {
@@ -46,17 +46,17 @@ typedef struct GFileOutput {
 /** Checks before any work that path can be written: its directory exists, is a directory and is writable,
  * and path does not name something other than a regular file (symbolic links followed). G_OK or G_ERR_IO
  * with the reason. */
-GENERIC_API int gfile_check_output(const char *path, GError *err);
+GENERIC_API GENERIC_NODISCARD int gfile_check_output(const char *path, GError *err);
 
 /** Starts writing path: checks it (gfile_check_output), creates the temporary (named .BASE.XXXXXX followed
  * by the extension of path, with the mode of the existing file, or 0666 less the umask) and registers it
  * for removal on exit and the signals above. G_ERR_IO or G_ERR_NOMEM on failure (o is then cleared). */
-GENERIC_API int gfile_output_begin(GFileOutput *o, const char *path, GError *err);
+GENERIC_API GENERIC_NODISCARD int gfile_output_begin(GFileOutput *o, const char *path, GError *err);
 
 /** Finishes an output: flushes it to the disk (fsync), checks that the file has expected_size bytes
  * (when >= 0), closes it and renames it over the target. On any failure the temporary is removed and the
  * target is untouched. o is cleared in both cases. G_ERR_IO with the reason naming path. */
-GENERIC_API int gfile_output_commit(GFileOutput *o, long long expected_size, const char *path, GError *err);
+GENERIC_API GENERIC_NODISCARD int gfile_output_commit(GFileOutput *o, long long expected_size, const char *path, GError *err);
 
 /** Abandons an output: closes and removes the temporary, clears o. A cleared o is a no-op. */
 GENERIC_API void gfile_output_abort(GFileOutput *o);

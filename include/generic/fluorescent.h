@@ -62,19 +62,19 @@ typedef struct GFluorBands {
 GENERIC_API void gfluor_bands_default(GFluorBands *b);
 /** Checks every field (finite and within the documented ranges, widths > 0); G_ERR_INVALID with a message
  * naming the field otherwise. */
-GENERIC_API int gfluor_bands_check(const GFluorBands *b, GError *err);
+GENERIC_API GENERIC_NODISCARD int gfluor_bands_check(const GFluorBands *b, GError *err);
 /** Makes the matrix of b on the square grid min_nm + k * step_nm, k = 0..n-1 (in and out alike) into new
  * storage (free it with gfluor_matrix_free). */
-GENERIC_API int gfluor_matrix_create(const GFluorBands *b, double min_nm, double step_nm, int n, GReradiation *out,
+GENERIC_API GENERIC_NODISCARD int gfluor_matrix_create(const GFluorBands *b, double min_nm, double step_nm, int n, GReradiation *out,
                          GError *err);
 /** Copies only the main diagonal of src (the entries whose excitation and emission wavelengths coincide;
  * negatives clamped to 0) into a new matrix on src's grid: a non-fluorescent version of the same pigment. */
-GENERIC_API int gfluor_matrix_diagonal(const GReradiation *src, GReradiation *out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gfluor_matrix_diagonal(const GReradiation *src, GReradiation *out, GError *err);
 /** Frees storage from gfluor_matrix_create/gfluor_matrix_diagonal and clears r; NULL and cleared are no-ops. */
 GENERIC_API void gfluor_matrix_free(GReradiation *r);
 /** The main diagonal of r (negatives clamped to 0) as a reflectance on the nm exchange grid: linear between
  * the emission samples, held constant beyond the ends; 0 where no excitation sample coincides. */
-GENERIC_API int gfluor_matrix_diagonal_nm(const GReradiation *r, GSpectrumNM *out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gfluor_matrix_diagonal_nm(const GReradiation *r, GSpectrumNM *out, GError *err);
 /** Largest column sum of r (negatives clamped to 0) over the excitation samples within [lo_nm, hi_nm]:
  * the most energy the matrix returns per unit of incident energy (<= 1 for a conserving matrix). */
 GENERIC_API double gfluor_matrix_max_column_sum(const GReradiation *r, double lo_nm, double hi_nm);
@@ -117,7 +117,7 @@ GENERIC_API void gfluor_phong_default(GFluorPhongParams *p);
  * colsum(M) <= 1 for a conserving M. diffuse() is (1 - ks) M; ambient() is ((1 - ks) M + ks d) illum.
  * In non-bispectral models M arrives folded into a reflectance and d as a reflectance: nothing changes in
  * the code. `matrix` may be freed after the call. */
-GENERIC_API int gfluor_phong_create(const GColorModel *model, const GReradiation *matrix, const GFluorPhongParams *params,
+GENERIC_API GENERIC_NODISCARD int gfluor_phong_create(const GColorModel *model, const GReradiation *matrix, const GFluorPhongParams *params,
                         GMaterial **out, GError *err);
 
 /** Parameters of fluorescent-varnish. */
@@ -140,7 +140,7 @@ GENERIC_API void gfluor_varnish_default(GFluorVarnishParams *p);
  * diffuse light inside the varnish that the top boundary sends back to the base. Reciprocal, and energy
  * conserving for a conserving M. diffuse() is the base part's albedo for diffuse light; ambient() is
  * diffuse() times illum. `matrix` may be freed after the call. */
-GENERIC_API int gfluor_varnish_create(const GColorModel *model, const GReradiation *matrix, const GFluorVarnishParams *params,
+GENERIC_API GENERIC_NODISCARD int gfluor_varnish_create(const GColorModel *model, const GReradiation *matrix, const GFluorVarnishParams *params,
                           GMaterial **out, GError *err);
 
 /* ======================================================================================================
@@ -169,7 +169,7 @@ typedef struct GFluorLaserSplit {
  * model sample nearest to nm; kept is the power leaving on that sample, shifted the power on all others.
  * In a non-spectral model (nsamples == 0) nothing can shift: kept is the whole reflected power (measured
  * with a white beam) and shifted 0. scratch: an arena for temporaries. */
-GENERIC_API int gfluor_laser_split(const GMaterial *material, GScratch *scratch, double nm, double elevation_deg,
+GENERIC_API GENERIC_NODISCARD int gfluor_laser_split(const GMaterial *material, GScratch *scratch, double nm, double elevation_deg,
                        const GFluorLaserOptions *opt, GFluorLaserSplit *out, GError *err);
 
 /** A reflection pattern on a white diffuse target (see gfluor_laser_pattern). */
@@ -189,7 +189,7 @@ typedef struct GFluorPattern {
  * below the sample's plane stay dark; a faint grid is printed on the target as in the paper. Measures the
  * lobe of kept light (its widths at half maximum through the brightest point). Free with
  * gfluor_pattern_free. */
-GENERIC_API int gfluor_laser_pattern(const GMaterial *material, GScratch *scratch, double nm, double elevation_deg, int width,
+GENERIC_API GENERIC_NODISCARD int gfluor_laser_pattern(const GMaterial *material, GScratch *scratch, double nm, double elevation_deg, int width,
                          int height, double extent, GFluorPattern *out, GError *err);
 /** Frees a pattern's pixels; NULL and freed patterns are no-ops. */
 GENERIC_API void gfluor_pattern_free(GFluorPattern *p);

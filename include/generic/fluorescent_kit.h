@@ -14,9 +14,9 @@
 #include <stddef.h>
 
 /** Checks a GReradiation's grid and values (finite); G_ERR_INVALID naming `what` otherwise. */
-GENERIC_API int gfluor_matrix_check(const GReradiation *r, const char *what, GError *err);
+GENERIC_API GENERIC_NODISCARD int gfluor_matrix_check(const GReradiation *r, const char *what, GError *err);
 /** The excitation column of r whose wavelength is nm (within a millionth of a step), or -1. */
-GENERIC_API int gfluor_column_of(const GReradiation *r, double nm);
+GENERIC_API GENERIC_NODISCARD int gfluor_column_of(const GReradiation *r, double nm);
 /** Entry (o, i) of r with negative noise clamped to 0. */
 static inline double gfluor_entry(const GReradiation *r, int o, int i)
 {
@@ -74,9 +74,9 @@ typedef struct GFluorParam {
 /** Reads a fluorescent material's parameter block (lib/kit/fluorescent_params.c): `matrix` into *mat
  * (the default matrix when it is not given) and the numbers of `table` into params; `keys` lists every name for
  * the unknown-key message. *mat is freed by the caller (gfluor_finish), also on failure. */
-GENERIC_API int gfluor_read_params(GReader *r, const GFluorParam *table, const char *keys, void *params, GReradiation *mat,
+GENERIC_API GENERIC_NODISCARD int gfluor_read_params(GReader *r, const GFluorParam *table, const char *keys, void *params, GReradiation *mat,
                       GError *err);
 /** The end of a fluorescent material's parse: frees *mat and hands over m when rc is G_OK; returns rc. */
-GENERIC_API int gfluor_finish(int rc, GReradiation *mat, GMaterial *m, void **object);
+GENERIC_API GENERIC_NODISCARD int gfluor_finish(int rc, GReradiation *mat, GMaterial *m, void **object);
 
 #endif

@@ -103,7 +103,7 @@ GENERIC_API GENERIC_NODISCARD int gimage_write(const char *path, const GImage *i
 /** Checks before any work that gimage_write can write path: its directory exists and is writable, path is
  * not something other than a regular file (gfile_check_output), and this OpenImageIO has a writer for its
  * extension (Debian 12's has none for .pfm). G_OK or G_ERR_IO naming path and the reason. */
-GENERIC_API int gimage_check_output(const char *path, GError *err);
+GENERIC_API GENERIC_NODISCARD int gimage_check_output(const char *path, GError *err);
 
 /** The sRGB transfer function (IEC 61966-2-1): linear value in [0, 1] to its encoded value. */
 GENERIC_API double gimage_srgb_encode(double linear);

@@ -69,7 +69,7 @@ struct GMaterialClass {
 };
 
 /** Fills the header of a new instance (refcount 1); G_ERR_VERSION when the class is of another version. */
-GENERIC_API int gmaterial_init(GMaterial *m, const GMaterialClass *cls, const GColorModel *model, GError *err);
+GENERIC_API GENERIC_NODISCARD int gmaterial_init(GMaterial *m, const GMaterialClass *cls, const GColorModel *model, GError *err);
 /** Adds an owner; returns m. */
 GENERIC_API GMaterial *gmaterial_ref(GMaterial *m);
 /** Drops an owner and destroys the material with the last; NULL is a no-op. */
@@ -78,38 +78,38 @@ GENERIC_API void gmaterial_unref(GMaterial *m);
 GENERIC_API const char *gmaterial_name(const GMaterial *m);
 
 /** Light reflected towards out (see the top of this file). */
-GENERIC_API int gmaterial_reflection(const GMaterial *m, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
+GENERIC_API GENERIC_NODISCARD int gmaterial_reflection(const GMaterial *m, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
                          GColor *result);
 /** Light refracted towards out. */
-GENERIC_API int gmaterial_refraction(const GMaterial *m, GSurfPoint *sp, GVec3 in, const GColor *illum,
+GENERIC_API GENERIC_NODISCARD int gmaterial_refraction(const GMaterial *m, GSurfPoint *sp, GVec3 in, const GColor *illum,
                          const GColor *rel_index, GVec3 out, GColor *result);
 /** Refraction index (vacuum = 1 for m == NULL). */
-GENERIC_API int gmaterial_refraction_index(const GMaterial *m, GSurfPoint *sp, GColor *result);
+GENERIC_API GENERIC_NODISCARD int gmaterial_refraction_index(const GMaterial *m, GSurfPoint *sp, GColor *result);
 /** Ideal reflection direction for the incident direction view; 1 when valid. */
-GENERIC_API int gmaterial_reflection_dir(const GMaterial *m, GSurfPoint *sp, GVec3 view, GVec3 *dir);
+GENERIC_API GENERIC_NODISCARD int gmaterial_reflection_dir(const GMaterial *m, GSurfPoint *sp, GVec3 view, GVec3 *dir);
 /** Ideal refraction direction; 0 for total internal reflection or opaque materials. */
-GENERIC_API int gmaterial_refraction_dir(const GMaterial *m, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
+GENERIC_API GENERIC_NODISCARD int gmaterial_refraction_dir(const GMaterial *m, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
                              GVec3 *dir);
 /** Emitted light towards out. */
-GENERIC_API int gmaterial_emission(const GMaterial *m, GSurfPoint *sp, GVec3 out, GColor *result);
+GENERIC_API GENERIC_NODISCARD int gmaterial_emission(const GMaterial *m, GSurfPoint *sp, GVec3 out, GColor *result);
 /** Reflected ambient light. */
-GENERIC_API int gmaterial_ambient(const GMaterial *m, GSurfPoint *sp, const GColor *illum, GColor *result);
+GENERIC_API GENERIC_NODISCARD int gmaterial_ambient(const GMaterial *m, GSurfPoint *sp, const GColor *illum, GColor *result);
 /** Light left after `length` in the material as a medium (m == NULL: vacuum, nothing absorbed). */
-GENERIC_API int gmaterial_absorption(const GMaterial *m, GSurfPoint *sp, const GColor *illum, double length, GColor *result);
+GENERIC_API GENERIC_NODISCARD int gmaterial_absorption(const GMaterial *m, GSurfPoint *sp, const GColor *illum, double length, GColor *result);
 /** Shading normal (uncached; renderers call gsurfpoint_normal, which caches this). */
-GENERIC_API int gmaterial_normal(const GMaterial *m, GSurfPoint *sp, GVec3 *n);
+GENERIC_API GENERIC_NODISCARD int gmaterial_normal(const GMaterial *m, GSurfPoint *sp, GVec3 *n);
 /** Lambertian diffuse colour (for previews). */
-GENERIC_API int gmaterial_diffuse(const GMaterial *m, GSurfPoint *sp, GColor *result);
+GENERIC_API GENERIC_NODISCARD int gmaterial_diffuse(const GMaterial *m, GSurfPoint *sp, GColor *result);
 /** 1 when opaque. */
-GENERIC_API int gmaterial_opaque(const GMaterial *m, GSurfPoint *sp);
+GENERIC_API GENERIC_NODISCARD int gmaterial_opaque(const GMaterial *m, GSurfPoint *sp);
 
 /* ---- helpers for material implementations (lib/optics.c) ---- */
 
 /** 1 when out is the ideal mirror direction of in about n (within 1e-6 in cosine). */
-GENERIC_API int gmaterial_is_mirror_pair(GVec3 in, GVec3 n, GVec3 out);
+GENERIC_API GENERIC_NODISCARD int gmaterial_is_mirror_pair(GVec3 in, GVec3 n, GVec3 out);
 /** Ideal refraction of the incident direction view through normal n (facing the incident side) with
  * relative index eta = n_from / n_to; 0 on total internal reflection. */
-GENERIC_API int goptics_refract(GVec3 view, GVec3 n, double eta, GVec3 *dir);
+GENERIC_API GENERIC_NODISCARD int goptics_refract(GVec3 view, GVec3 n, double eta, GVec3 *dir);
 /** Unpolarised Fresnel reflectance for cos_i on the incident side and eta = n_from / n_to (1 past TIR). */
 GENERIC_API double goptics_fresnel(double cos_i, double eta);
 

@@ -20,7 +20,7 @@ extern "C" {
 /** Allocates a zeroed material of `size` bytes (a struct that begins with its GMaterial) of class cls in
  * model into *out: G_ERR_NOMEM "<class>: out of memory", G_ERR_VERSION for a class of another version. Until
  * it is complete, the material is freed with its class's destroy (or gmem_free). */
-GENERIC_API int gmat_new(const GMaterialClass *cls, const GColorModel *model, size_t size, GMaterial **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gmat_new(const GMaterialClass *cls, const GColorModel *model, size_t size, GMaterial **out, GError *err);
 
 /** The state of a material whose one parameter is a colour (lambert, mirror; emitter adds a flag after it). */
 typedef struct GMatOneColor {
@@ -32,7 +32,7 @@ GENERIC_API void gmat_one_color_destroy(GMaterial *self);
 /** Creates a material of class cls whose struct (`size` bytes) begins with a GMatOneColor, its colour being
  * src checked and converted by gmatparam_color (role, max; complaints "<class>: <param> ..." name param).
  * G_ERR_INVALID "<class>: no colour model given" without a model. */
-GENERIC_API int gmat_one_color_create(const GMaterialClass *cls, const GColorModel *model, size_t size, const GColor *src,
+GENERIC_API GENERIC_NODISCARD int gmat_one_color_create(const GMaterialClass *cls, const GColorModel *model, size_t size, const GColor *src,
                           GColorRole role, double max, const char *param, GMaterial **out, GError *err);
 
 /** Cosine of `in` with the shading normal when in and out are both on the incident side of the geometric

@@ -21,20 +21,20 @@ extern "C" {
  * <= max (for matrices the brightness is compared with max). A colour of another model is converted through
  * the nm spectrum with the given role and clamped to [0, max] afterwards. A complaint reads
  * "<material>: <param> ..." and names param (gerror_set_param). */
-GENERIC_API int gmatparam_color(const GColorModel *m, const GColor *src, GColorRole role, double max, const char *material,
+GENERIC_API GENERIC_NODISCARD int gmatparam_color(const GColorModel *m, const GColor *src, GColorRole role, double max, const char *material,
                     const char *param, GColor *dst, GError *err);
 /** Largest sample of a vector value (its index in *at, may be NULL), the brightness of a matrix. */
 GENERIC_API double gmatparam_max(const GColor *c, int *at);
 /** For a parse routine: unless c already holds a colour (one the file gave), makes c the grey `grey` (an sRGB
  * triple of that value, read in role) in the file's colour model, in new storage (free with gcolor_free). */
-GENERIC_API int gmatparam_default(GReader *r, double grey, GColorRole role, GColor *c, GError *err);
+GENERIC_API GENERIC_NODISCARD int gmatparam_default(GReader *r, double grey, GColorRole role, GColor *c, GError *err);
 
 /** A constructor of a material whose one parameter is a colour (e.g. glambert_create, gmirror_create). */
 typedef int (*GMatOneColorCreate)(const GColorModel *model, const GColor *color, GMaterial **out, GError *err);
 /** The whole parse routine of a material written `NAME { KEY COLOR }`: reads the optional block (KEY is its only
  * parameter), gives the colour the grey `grey` in role when the file leaves it out (gmatparam_default), and
  * makes the material with create in the file's model into *object. */
-GENERIC_API int gmatparam_parse_one_color(GReader *r, const char *key, double grey, GColorRole role,
+GENERIC_API GENERIC_NODISCARD int gmatparam_parse_one_color(GReader *r, const char *key, double grey, GColorRole role,
                                           GMatOneColorCreate create, void **object, GError *err);
 
 #ifdef __cplusplus

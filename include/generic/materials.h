@@ -35,7 +35,7 @@ extern "C" {
 
 /** Ideal diffuse reflector with reflectance rho in [0, 1]: f_r = rho / pi, so reflection is
  * rho / pi * cos(theta_in) * illum; diffuse() is rho and ambient() is rho * illum. */
-GENERIC_API int glambert_create(const GColorModel *model, const GColor *reflectance, GMaterial **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int glambert_create(const GColorModel *model, const GColor *reflectance, GMaterial **out, GError *err);
 
 /* ---- phong ---- */
 
@@ -53,14 +53,14 @@ typedef struct GPhongParams {
  * reflection_dir is valid and the aligned case of reflection returns mirror * illum. kd + ks + mirror
  * must not exceed 1 in any sample (energy conservation). diffuse() is kd; ambient() reflects
  * (kd + ks + mirror) * illum, the material's albedo at normal incidence. */
-GENERIC_API int gphong_create(const GColorModel *model, const GPhongParams *params, GMaterial **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gphong_create(const GColorModel *model, const GPhongParams *params, GMaterial **out, GError *err);
 
 /* ---- mirror ---- */
 
 /** Perfect specular reflector with reflectance R in [0, 1]: reflection_dir is the ideal direction,
  * reflection returns R * illum for an aligned pair and black otherwise. As in the paper's example of a
  * perfect mirror, ambient() reflects R * illum; diffuse() is black. */
-GENERIC_API int gmirror_create(const GColorModel *model, const GColor *reflectance, GMaterial **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gmirror_create(const GColorModel *model, const GColor *reflectance, GMaterial **out, GError *err);
 
 /* ---- dielectric ---- */
 
@@ -88,7 +88,7 @@ GENERIC_API GDispersion gdispersion_sellmeier(const double b[3], const double c[
 GENERIC_API double gdispersion_index(const GDispersion *d, double nm);
 /** Checks that the coefficients are finite and that the index is finite and positive over the nm
  * exchange range (GNM_MIN..GNM_MAX); G_ERR_INVALID with a message naming the coefficient otherwise. */
-GENERIC_API int gdispersion_check(const GDispersion *d, GError *err);
+GENERIC_API GENERIC_NODISCARD int gdispersion_check(const GDispersion *d, GError *err);
 
 /** Parameters of a dielectric (glass, water, ...). */
 typedef struct GDielectricParams {
@@ -111,7 +111,7 @@ typedef struct GDielectricParams {
  *    point's relative index); black when not aligned. Radiance is not rescaled by eta^2.
  *  - absorption: illum * exp(-a * length) per sample (the transmittance exp(-a) is computed once).
  *  - opaque: no; diffuse and ambient: black. */
-GENERIC_API int gdielectric_create(const GColorModel *model, const GDielectricParams *params, GMaterial **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gdielectric_create(const GColorModel *model, const GDielectricParams *params, GMaterial **out, GError *err);
 
 /* ---- emitter ---- */
 
@@ -119,7 +119,7 @@ GENERIC_API int gdielectric_create(const GColorModel *model, const GDielectricPa
  * on the front of the surface, the object's outside (the side of the geometric normal when
  * sp->entering, the other side when not), or on both sides with two_sided != 0; reflection and
  * diffuse are black. */
-GENERIC_API int gemitter_create(const GColorModel *model, const GColor *radiance, int two_sided, GMaterial **out,
+GENERIC_API GENERIC_NODISCARD int gemitter_create(const GColorModel *model, const GColor *radiance, int two_sided, GMaterial **out,
                     GError *err);
 
 #ifdef __cplusplus

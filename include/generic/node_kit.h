@@ -36,24 +36,24 @@ extern "C" {
 /** The depth and cost (see GTEXNODE_MAX_DEPTH, GTEXNODE_MAX_COST) of a node over n children, checked against
  * the limits (G_ERR_INVALID, the message begins with `node`). Nodes built with the constructors below have
  * them set; a node made otherwise sets its GMaterial's depth and cost from these. */
-GENERIC_API int gtexnode_measure(const char *node, GMaterial *const *children, int n, int *depth, int *cost,
+GENERIC_API GENERIC_NODISCARD int gtexnode_measure(const char *node, GMaterial *const *children, int n, int *depth, int *cost,
                                  GError *err);
 
 /** Checks a node's children (n >= 1, none NULL, all in one colour model: G_ERR_MISMATCH otherwise) and its
  * generator (non-NULL when gen_needed); *model gets the common model. Messages begin with `node`. */
-GENERIC_API int gtexnode_check(const char *node, GMaterial *const *children, int n, const GGenerator *gen, int gen_needed,
+GENERIC_API GENERIC_NODISCARD int gtexnode_check(const char *node, GMaterial *const *children, int n, const GGenerator *gen, int gen_needed,
                    const GColorModel **model, GError *err);
 
 /** gtexnode_check and gtexnode_measure (messages naming the class), then a zeroed node of `size` bytes (a struct
  * that begins with its GMaterial) of class cls in the children's model into *out, with one reference, its depth
  * and cost set. It holds no reference to
  * the children yet: the caller takes those. Until it is complete, free it with gmem_free. */
-GENERIC_API int gtexnode_new_checked(const GMaterialClass *cls, GMaterial *const *children, int n, const GGenerator *gen,
+GENERIC_API GENERIC_NODISCARD int gtexnode_new_checked(const GMaterialClass *cls, GMaterial *const *children, int n, const GGenerator *gen,
                          int gen_needed, size_t size, GMaterial **out, GError *err);
 
 /** 1 for the methods whose colour carries light (reflection, refraction, emission, ambient, diffuse): the ones
  * a node that darkens or tints its child (scale, image) multiplies. */
-GENERIC_API int gtexnode_scales_method(GNodeMethod m);
+GENERIC_API GENERIC_NODISCARD int gtexnode_scales_method(GNodeMethod m);
 
 /* ---- blends of children ---- */
 
@@ -74,30 +74,30 @@ GENERIC_API void gtexblend_pair(GTexBlend *b, const GMaterial *a, const GMateria
 GENERIC_API void gtexblend_one(GTexBlend *b, const GMaterial *m);
 
 /** Reflection of the blend: the weighted sum of the children's colours (result may alias illum). */
-GENERIC_API int gtexblend_reflection(const GTexBlend *b, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
+GENERIC_API GENERIC_NODISCARD int gtexblend_reflection(const GTexBlend *b, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
                          GColor *result);
 /** Refraction of the blend: the weighted sum (result may alias illum or rel_index). */
-GENERIC_API int gtexblend_refraction(const GTexBlend *b, GSurfPoint *sp, GVec3 in, const GColor *illum, const GColor *rel_index,
+GENERIC_API GENERIC_NODISCARD int gtexblend_refraction(const GTexBlend *b, GSurfPoint *sp, GVec3 in, const GColor *illum, const GColor *rel_index,
                          GVec3 out, GColor *result);
 /** Refraction index of the blend: the weighted sum. */
-GENERIC_API int gtexblend_refraction_index(const GTexBlend *b, GSurfPoint *sp, GColor *result);
+GENERIC_API GENERIC_NODISCARD int gtexblend_refraction_index(const GTexBlend *b, GSurfPoint *sp, GColor *result);
 /** Reflection direction of the blend: valid when a child's is; two or more valid directions are summed with
  * their weights and normalised (the one of largest weight when the sum vanishes), a single one is returned. */
-GENERIC_API int gtexblend_reflection_dir(const GTexBlend *b, GSurfPoint *sp, GVec3 view, GVec3 *dir);
+GENERIC_API GENERIC_NODISCARD int gtexblend_reflection_dir(const GTexBlend *b, GSurfPoint *sp, GVec3 view, GVec3 *dir);
 /** Refraction direction of the blend, as gtexblend_reflection_dir. */
-GENERIC_API int gtexblend_refraction_dir(const GTexBlend *b, GSurfPoint *sp, GVec3 view, const GColor *rel_index, GVec3 *dir);
+GENERIC_API GENERIC_NODISCARD int gtexblend_refraction_dir(const GTexBlend *b, GSurfPoint *sp, GVec3 view, const GColor *rel_index, GVec3 *dir);
 /** Emission of the blend: the weighted sum. */
-GENERIC_API int gtexblend_emission(const GTexBlend *b, GSurfPoint *sp, GVec3 out, GColor *result);
+GENERIC_API GENERIC_NODISCARD int gtexblend_emission(const GTexBlend *b, GSurfPoint *sp, GVec3 out, GColor *result);
 /** Ambient reflection of the blend: the weighted sum (result may alias illum). */
-GENERIC_API int gtexblend_ambient(const GTexBlend *b, GSurfPoint *sp, const GColor *illum, GColor *result);
+GENERIC_API GENERIC_NODISCARD int gtexblend_ambient(const GTexBlend *b, GSurfPoint *sp, const GColor *illum, GColor *result);
 /** Absorption of the blend: the weighted sum (result may alias illum). */
-GENERIC_API int gtexblend_absorption(const GTexBlend *b, GSurfPoint *sp, const GColor *illum, double length, GColor *result);
+GENERIC_API GENERIC_NODISCARD int gtexblend_absorption(const GTexBlend *b, GSurfPoint *sp, const GColor *illum, double length, GColor *result);
 /** Normal of the blend: the children's normals summed with their weights and normalised. */
-GENERIC_API int gtexblend_normal(const GTexBlend *b, GSurfPoint *sp, GVec3 *n);
+GENERIC_API GENERIC_NODISCARD int gtexblend_normal(const GTexBlend *b, GSurfPoint *sp, GVec3 *n);
 /** Diffuse colour of the blend: the weighted sum. */
-GENERIC_API int gtexblend_diffuse(const GTexBlend *b, GSurfPoint *sp, GColor *result);
+GENERIC_API GENERIC_NODISCARD int gtexblend_diffuse(const GTexBlend *b, GSurfPoint *sp, GColor *result);
 /** 1 when every child of non-zero weight is opaque. */
-GENERIC_API int gtexblend_opaque(const GTexBlend *b, GSurfPoint *sp);
+GENERIC_API GENERIC_NODISCARD int gtexblend_opaque(const GTexBlend *b, GSurfPoint *sp);
 
 /** The class of a node that answers each call with a blend of its children chosen by `pick`: its material
  * methods are the gtexblendnode_* below (GTEXBLEND_NODE_METHODS fills them in), so the node itself writes only
@@ -110,31 +110,31 @@ typedef struct GTexBlendClass {
 } GTexBlendClass;
 
 /** The material methods of a GTexBlendClass node: its pick's blend for the method, then gtexblend_<method>. */
-GENERIC_API int gtexblendnode_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
+GENERIC_API GENERIC_NODISCARD int gtexblendnode_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
                              GColor *result);
 /** See gtexblendnode_reflection. */
-GENERIC_API int gtexblendnode_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
+GENERIC_API GENERIC_NODISCARD int gtexblendnode_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
                              const GColor *rel_index, GVec3 out, GColor *result);
 /** See gtexblendnode_reflection. */
-GENERIC_API int gtexblendnode_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result);
+GENERIC_API GENERIC_NODISCARD int gtexblendnode_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result);
 /** See gtexblendnode_reflection. */
-GENERIC_API int gtexblendnode_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir);
+GENERIC_API GENERIC_NODISCARD int gtexblendnode_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir);
 /** See gtexblendnode_reflection. */
-GENERIC_API int gtexblendnode_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
+GENERIC_API GENERIC_NODISCARD int gtexblendnode_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
                                  GVec3 *dir);
 /** See gtexblendnode_reflection. */
-GENERIC_API int gtexblendnode_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result);
+GENERIC_API GENERIC_NODISCARD int gtexblendnode_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result);
 /** See gtexblendnode_reflection. */
-GENERIC_API int gtexblendnode_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result);
+GENERIC_API GENERIC_NODISCARD int gtexblendnode_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result);
 /** See gtexblendnode_reflection. */
-GENERIC_API int gtexblendnode_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
+GENERIC_API GENERIC_NODISCARD int gtexblendnode_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
                              GColor *result);
 /** See gtexblendnode_reflection. */
-GENERIC_API int gtexblendnode_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n);
+GENERIC_API GENERIC_NODISCARD int gtexblendnode_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n);
 /** See gtexblendnode_reflection. */
-GENERIC_API int gtexblendnode_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result);
+GENERIC_API GENERIC_NODISCARD int gtexblendnode_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result);
 /** See gtexblendnode_reflection. */
-GENERIC_API int gtexblendnode_opaque(const GMaterial *self, GSurfPoint *sp);
+GENERIC_API GENERIC_NODISCARD int gtexblendnode_opaque(const GMaterial *self, GSurfPoint *sp);
 
 /** The eleven material methods of a GTexBlendClass, as designated initialisers for its `base`. */
 #define GTEXBLEND_NODE_METHODS                                                                                   \
@@ -157,7 +157,7 @@ typedef struct GTexTemps {
 static inline void gtextemps_init(GTexTemps *t) { t->scratch = NULL; }
 /** Gives c temporary storage of model m (index: which of the method's temporaries, 0 or 1; kept for source
  * compatibility); G_ERR_NOMEM when the arena cannot grow. */
-GENERIC_API int gtextemps_color(GTexTemps *t, GSurfPoint *sp, const GColorModel *m, int index, GColor *c);
+GENERIC_API GENERIC_NODISCARD int gtextemps_color(GTexTemps *t, GSurfPoint *sp, const GColorModel *m, int index, GColor *c);
 /** Returns the arena to where it was before the first gtextemps_color. */
 GENERIC_API void gtextemps_release(GTexTemps *t);
 
@@ -175,37 +175,37 @@ static inline GMaterial *gtexchild_of(const GMaterial *self) { return ((const GT
 /** Creates a node of class cls whose struct (`size` bytes) begins with a GTexChild holding a reference to child
  * (checked with gtexnode_check; gen, when gen_needed, must be non-NULL: the caller takes its own reference to
  * it). Until it is complete, free it with the class's destroy. */
-GENERIC_API int gtexchild_new(const GMaterialClass *cls, GMaterial *child, const GGenerator *gen, int gen_needed, size_t size,
+GENERIC_API GENERIC_NODISCARD int gtexchild_new(const GMaterialClass *cls, GMaterial *child, const GGenerator *gen, int gen_needed, size_t size,
                   GMaterial **out, GError *err);
 /** The destroy method of one-child nodes that own nothing else: drops the child and frees the struct. */
 GENERIC_API void gtexchild_destroy(GMaterial *self);
 
 /** Pass-through method of one-child nodes: the child's reflection. */
-GENERIC_API int gtexchild_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
+GENERIC_API GENERIC_NODISCARD int gtexchild_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
                          GColor *result);
 /** Pass-through: the child's refraction. */
-GENERIC_API int gtexchild_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
+GENERIC_API GENERIC_NODISCARD int gtexchild_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
                          const GColor *rel_index, GVec3 out, GColor *result);
 /** Pass-through: the child's refraction index. */
-GENERIC_API int gtexchild_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result);
+GENERIC_API GENERIC_NODISCARD int gtexchild_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result);
 /** Pass-through: the child's reflection direction. */
-GENERIC_API int gtexchild_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir);
+GENERIC_API GENERIC_NODISCARD int gtexchild_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir);
 /** Pass-through: the child's refraction direction. */
-GENERIC_API int gtexchild_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
+GENERIC_API GENERIC_NODISCARD int gtexchild_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
                              GVec3 *dir);
 /** Pass-through: the child's emission. */
-GENERIC_API int gtexchild_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result);
+GENERIC_API GENERIC_NODISCARD int gtexchild_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result);
 /** Pass-through: the child's ambient reflection. */
-GENERIC_API int gtexchild_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result);
+GENERIC_API GENERIC_NODISCARD int gtexchild_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result);
 /** Pass-through: the child's absorption. */
-GENERIC_API int gtexchild_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
+GENERIC_API GENERIC_NODISCARD int gtexchild_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
                          GColor *result);
 /** Pass-through: the child's normal. */
-GENERIC_API int gtexchild_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n);
+GENERIC_API GENERIC_NODISCARD int gtexchild_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n);
 /** Pass-through: the child's diffuse colour. */
-GENERIC_API int gtexchild_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result);
+GENERIC_API GENERIC_NODISCARD int gtexchild_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result);
 /** Pass-through: the child's opacity. */
-GENERIC_API int gtexchild_opaque(const GMaterial *self, GSurfPoint *sp);
+GENERIC_API GENERIC_NODISCARD int gtexchild_opaque(const GMaterial *self, GSurfPoint *sp);
 
 /* ---- nodes over a list of children ---- */
 
@@ -220,7 +220,7 @@ typedef struct GTexList {
 
 /** Creates a node of class cls whose struct (`size` bytes) begins with a GTexList holding a reference to each
  * of the n children and to gen (all checked with gtexnode_check). */
-GENERIC_API int gtexlist_new(const GMaterialClass *cls, GMaterial *const *children, int n, GGenerator *gen, size_t size,
+GENERIC_API GENERIC_NODISCARD int gtexlist_new(const GMaterialClass *cls, GMaterial *const *children, int n, GGenerator *gen, size_t size,
                  GMaterial **out, GError *err);
 /** The destroy method of the nodes whose struct begins with a GTexList. */
 GENERIC_API void gtexlist_destroy(GMaterial *self);

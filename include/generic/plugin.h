@@ -142,7 +142,7 @@ GENERIC_API GENERIC_NODISCARD int gplugin_load_args(int *argc, char **argv, GErr
 /** Name of the environment variable that allows `plugin` statements in files when it is "1" (reader.h). */
 #define GPLUGIN_ALLOW_ENV "GENERIC_ALLOW_PLUGINS"
 /** Number of modules loaded so far. */
-GENERIC_API int gplugin_count(void);
+GENERIC_API GENERIC_NODISCARD int gplugin_count(void);
 
 #ifdef __cplusplus
 }

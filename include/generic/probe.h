@@ -63,15 +63,15 @@ typedef enum GProbeFormat {
 /** Creates a lat-long probe from `rgb` (width * height * 3 floats, rows from the zenith down; NULL gives a
  * black probe). width must be 2 * height, height >= 2. Negative, NaN and infinite values are set to 0,
  * values above GPROBE_MAX_RADIANCE to that (see gprobe_clamped_count). */
-GENERIC_API int gprobe_create(int width, int height, const float *rgb, GProbe **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gprobe_create(int width, int height, const float *rgb, GProbe **out, GError *err);
 
 /** Loads a probe from any image OpenImageIO reads (EXR, HDR, PFM, TIFF, ...). `format` says how to read it
  * (GPROBE_AUTO decides by the aspect ratio); an angular map is resampled to a lat-long probe of `height`
  * rows (0: half the map's size). Clear errors for unreadable files and for images of the wrong shape. */
-GENERIC_API int gprobe_load(const char *path, GProbeFormat format, int height, GProbe **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gprobe_load(const char *path, GProbeFormat format, int height, GProbe **out, GError *err);
 
 /** Makes a lat-long probe of `height` rows (0: half the map's size) from an angular map (RGB or RGBA). */
-GENERIC_API int gprobe_from_angular(const GImage *map, int height, GProbe **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gprobe_from_angular(const GImage *map, int height, GProbe **out, GError *err);
 
 /** Frees a probe; NULL is a no-op. */
 GENERIC_API void gprobe_destroy(GProbe *p);
@@ -79,9 +79,9 @@ GENERIC_API void gprobe_destroy(GProbe *p);
 /* ---- access ---- */
 
 /** Width of the lat-long image (2 * height). */
-GENERIC_API int gprobe_width(const GProbe *p);
+GENERIC_API GENERIC_NODISCARD int gprobe_width(const GProbe *p);
 /** Height of the lat-long image. */
-GENERIC_API int gprobe_height(const GProbe *p);
+GENERIC_API GENERIC_NODISCARD int gprobe_height(const GProbe *p);
 /** The radiance P, 3 floats per pixel, rows from the zenith down. */
 GENERIC_API const float *gprobe_pixels(const GProbe *p);
 /** The pixel weights Q (see the top of this file), 3 floats per pixel. */
@@ -102,15 +102,15 @@ GENERIC_API void gprobe_power(const GProbe *p, double rgb[3]);
 /* ---- conversion and rotation ---- */
 
 /** Renders the probe as a D x D angular map (RGB; black outside the disc), supersampled per pixel. */
-GENERIC_API int gprobe_to_angular(const GProbe *p, int size, GImage *out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gprobe_to_angular(const GProbe *p, int size, GImage *out, GError *err);
 /** The probe as a lat-long RGB image (a copy of the pixels). */
-GENERIC_API int gprobe_to_image(const GProbe *p, GImage *out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gprobe_to_image(const GProbe *p, GImage *out, GError *err);
 /** Writes the probe to a file in the given form (GPROBE_AUTO: lat-long); angular maps are H x H. */
-GENERIC_API int gprobe_save(const GProbe *p, const char *path, GProbeFormat format, GError *err);
+GENERIC_API GENERIC_NODISCARD int gprobe_save(const GProbe *p, const char *path, GProbeFormat format, GError *err);
 /** A new probe showing the environment turned by the rotation matrix R (row-major, 3x3): radiance that came
  * from direction d now comes from R d. Resampled bilinearly, except for turns about z by whole pixels, which
  * are exact column shifts. G_ERR_INVALID when R is not a rotation. */
-GENERIC_API int gprobe_rotate(const GProbe *p, const double R[9], GProbe **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gprobe_rotate(const GProbe *p, const double R[9], GProbe **out, GError *err);
 /** Fills R with the rotation by the given angles in degrees about x, then y, then z (R = Rz Ry Rx). */
 GENERIC_API void gprobe_rotation_xyz(double x_deg, double y_deg, double z_deg, double R[9]);
 
@@ -122,10 +122,10 @@ GENERIC_API void gprobe_fibonacci(int m, GVec3 *normals);
 /** Ground-truth irradiance E (3 doubles per normal) at m unit normals: the full sum over pixels (Eq. 4), exact
  * up to rounding. Each row of the probe is a circle of directions; the visible arc for a normal is found in
  * closed form and summed with per-row prefix sums, so the cost is O(W H + m H) instead of O(m W H). */
-GENERIC_API int gprobe_irradiance(const GProbe *p, const GVec3 *normals, int m, double *E, GError *err);
+GENERIC_API GENERIC_NODISCARD int gprobe_irradiance(const GProbe *p, const GVec3 *normals, int m, double *E, GError *err);
 
 /** The same sum pixel by pixel (O(m W H)); a reference for tests and benchmarks. */
-GENERIC_API int gprobe_irradiance_direct(const GProbe *p, const GVec3 *normals, int m, double *E, GError *err);
+GENERIC_API GENERIC_NODISCARD int gprobe_irradiance_direct(const GProbe *p, const GVec3 *normals, int m, double *E, GError *err);
 
 /** A directional light: direction towards it (unit) and the irradiance it gives a surface facing it. */
 typedef struct GProbeLight {
@@ -163,7 +163,7 @@ typedef enum GProbeTechnique {
 /** Keyword of a technique: "mediancut", "adaptive", "kmeans", "irradiance". */
 GENERIC_API const char *gprobe_technique_name(GProbeTechnique t);
 /** Technique for a keyword; G_ERR_NOTFOUND (message lists the names) for unknown ones. */
-GENERIC_API int gprobe_technique_parse(const char *name, GProbeTechnique *t, GError *err);
+GENERIC_API GENERIC_NODISCARD int gprobe_technique_parse(const char *name, GProbeTechnique *t, GError *err);
 
 /** Progress report: stage name and completed fraction 0..1; called from the calling thread. */
 typedef void (*GProbeProgress)(void *user, const char *stage, double fraction);
@@ -198,22 +198,22 @@ typedef struct GProbeFitReport {
 
 /** Approximates the probe by n directional lights with a technique (median cut needs n a power of 2).
  * lights must hold n entries; lights without energy get rgb = 0 and still fill a slot. */
-GENERIC_API int gprobe_approximate(const GProbe *p, GProbeTechnique t, int n, const GProbeOptions *opt, GProbeLight *lights,
+GENERIC_API GENERIC_NODISCARD int gprobe_approximate(const GProbe *p, GProbeTechnique t, int n, const GProbeOptions *opt, GProbeLight *lights,
                        GError *err);
 
 /** Median cut (Debevec 2005): n = 2^k regions split along their longest side (width weighted by
  * sin theta) where the energy (luminance of Q) halves; a light at each region's energy centroid with the
  * region's summed Q. */
-GENERIC_API int gprobe_median_cut(const GProbe *p, int n, GProbeLight *lights, GError *err);
+GENERIC_API GENERIC_NODISCARD int gprobe_median_cut(const GProbe *p, int n, GProbeLight *lights, GError *err);
 /** Adaptive median cut: the same splits, one region at a time, always the one with the largest
  * energy-weighted angular spread, until there are n regions. */
-GENERIC_API int gprobe_adaptive_median_cut(const GProbe *p, int n, GProbeLight *lights, GError *err);
+GENERIC_API GENERIC_NODISCARD int gprobe_adaptive_median_cut(const GProbe *p, int n, GProbeLight *lights, GError *err);
 /** LightGen-style clustering: spherical k-means of the pixel directions weighted by energy, seeded
  * deterministically (k-means++ from a fixed seed); each light carries its cluster's summed Q. */
-GENERIC_API int gprobe_kmeans(const GProbe *p, int n, const GProbeOptions *opt, GProbeLight *lights, GError *err);
+GENERIC_API GENERIC_NODISCARD int gprobe_kmeans(const GProbe *p, int n, const GProbeOptions *opt, GProbeLight *lights, GError *err);
 /** Irradiance optimisation: n lights fitted to the ground-truth irradiance at fit normals (see
  * lib/probe/optimize.c for the method); report may be NULL. */
-GENERIC_API int gprobe_irradiance_fit(const GProbe *p, int n, const GProbeOptions *opt, GProbeLight *lights,
+GENERIC_API GENERIC_NODISCARD int gprobe_irradiance_fit(const GProbe *p, int n, const GProbeOptions *opt, GProbeLight *lights,
                           GProbeFitReport *report, GError *err);
 
 /* ---- spherical harmonics reference ---- */
@@ -233,12 +233,12 @@ GENERIC_API void gprobe_sh9_irradiance(const GProbeSH9 *sh, const GVec3 *normals
 
 /** Radiance arriving from a direction (bilinear, as gprobe_radiance) as a light (GCOLOR_LIGHT) in the
  * colour model of `out`, which must have storage. dir need not be normalised. */
-GENERIC_API int gprobe_radiance_color(const GProbe *p, GVec3 dir, GColor *out);
+GENERIC_API GENERIC_NODISCARD int gprobe_radiance_color(const GProbe *p, GVec3 dir, GColor *out);
 /** Radiance of pixel (u, v) as a light in the colour model of `out`; u wraps around, v is clamped. */
-GENERIC_API int gprobe_pixel_color(const GProbe *p, int u, int v, GColor *out);
+GENERIC_API GENERIC_NODISCARD int gprobe_pixel_color(const GProbe *p, int u, int v, GColor *out);
 /** The colour of a directional light (its irradiance on a surface facing it) as a light in the colour
  * model of `out`. */
-GENERIC_API int gprobe_light_color(const GProbeLight *l, GColor *out);
+GENERIC_API GENERIC_NODISCARD int gprobe_light_color(const GProbeLight *l, GColor *out);
 
 #ifdef __cplusplus
 }

@@ -143,7 +143,7 @@ GENERIC_API GMaterial *glibrary_material(const GLibrary *lib, const char *name);
 GENERIC_API GENERIC_NODISCARD int glibrary_color(const GLibrary *lib, const char *name, GColorRole role, GColor *out, GError *err);
 /** Number of top-level entries of a kind (named and anonymous, in file order; nested anonymous entries are
  * owned but not listed). Materials and nodes are listed under their own kind. Constant time. */
-GENERIC_API int glibrary_count(const GLibrary *lib, GKind kind);
+GENERIC_API GENERIC_NODISCARD int glibrary_count(const GLibrary *lib, GKind kind);
 /** The i-th top-level entry of a kind (0 <= i < glibrary_count): its object, and its name (NULL when
  * anonymous) and type through the optional pointers. NULL when i is out of range. Constant time. */
 GENERIC_API void *glibrary_entry(const GLibrary *lib, GKind kind, int i, const char **name, const GTypeInfo **type);
@@ -184,11 +184,11 @@ GENERIC_API GENERIC_NODISCARD int greader_peek(GReader *r, GToken *tok, GError *
 /** Consumes and returns the next token. */
 GENERIC_API GENERIC_NODISCARD int greader_next(GReader *r, GToken *tok, GError *err);
 /** Consumes the next token when it has the given type: 1 when consumed, 0 when not (nothing consumed). */
-GENERIC_API int greader_accept(GReader *r, int type, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_accept(GReader *r, int type, GError *err);
 /** Consumes a token of the given type or fails with "expected WHAT, found ..."; what may be NULL. */
 GENERIC_API GENERIC_NODISCARD int greader_expect(GReader *r, int type, const char *what, GError *err);
 /** 1 when the next token is a number (so optional trailing numbers can be read), 0 when not. */
-GENERIC_API int greader_at_number(GReader *r, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_at_number(GReader *r, GError *err);
 
 /* ---- values ---- */
 

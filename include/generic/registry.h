@@ -59,18 +59,18 @@ typedef struct GTypeInfo {
 /** Registers a type (the struct is copied, with name and summary filled from the vtable when NULL; the
  * strings and vtable must outlive the registry); G_ERR_EXISTS for a name already taken in that kind,
  * G_ERR_INVALID for a record without a kind or a name. Thread safe. */
-GENERIC_API int gregistry_add(const GTypeInfo *info, GError *err);
+GENERIC_API GENERIC_NODISCARD int gregistry_add(const GTypeInfo *info, GError *err);
 /** Registers every record of a NULL-terminated list, in order. A record registered already (the same kind,
  * name, vtable and parse routine) is skipped, so registering a list twice is a no-op; the first other failure
  * stops and is returned (the records before it stay registered). Thread safe. */
-GENERIC_API int gregistry_add_list(const GTypeInfo *const *list, GError *err);
+GENERIC_API GENERIC_NODISCARD int gregistry_add_list(const GTypeInfo *const *list, GError *err);
 /** Completes a copy of a record: name and summary from its vtable's GClassHeader when they are NULL.
  * G_ERR_INVALID when the kind is unknown or no name can be found. */
-GENERIC_API int gtypeinfo_complete(GTypeInfo *info, GError *err);
+GENERIC_API GENERIC_NODISCARD int gtypeinfo_complete(GTypeInfo *info, GError *err);
 /** Finds a type by kind and keyword; NULL when unknown. */
 GENERIC_API const GTypeInfo *gregistry_find(GKind kind, const char *name);
 /** Number of types of a kind; with out != NULL copies up to max pointers, in registration order. */
-GENERIC_API int gregistry_list(GKind kind, const GTypeInfo **out, int max);
+GENERIC_API GENERIC_NODISCARD int gregistry_list(GKind kind, const GTypeInfo **out, int max);
 /** Writes the registered names of a kind, comma separated, into buf (for "expected one of ..." messages). */
 GENERIC_API void gregistry_names(GKind kind, char *buf, size_t size);
 /** Keyword of a kind ("colormodel", "material", ...). */

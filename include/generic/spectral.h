@@ -71,12 +71,12 @@ typedef struct GSpectral {
 /** Reads a configurable grid from the options (zero fields take the defaults: def_step, 380..780 nm) and
  * checks it: step in [1, 100] nm, the range inside 300..830 nm and a whole number of steps, at most max_n
  * samples. G_ERR_INVALID with a message naming the model otherwise. */
-GENERIC_API int gspectral_grid_from_options(const char *model, const GColorModelOptions *opt, double def_step, int max_n,
+GENERIC_API GENERIC_NODISCARD int gspectral_grid_from_options(const char *model, const GColorModelOptions *opt, double def_step, int max_n,
                                 GSpectralGrid *grid, GError *err);
 /** For a model with a fixed grid: G_OK when every non-zero option equals the grid's own value, G_ERR_INVALID
  * ("colour model '<model>' has a fixed grid ...") otherwise, or when the grid itself is not one (n outside
  * 1..GSPECTRAL_MAX_SAMPLES, a start that is not finite, a step that is not finite and > 0). */
-GENERIC_API int gspectral_grid_check_fixed(const char *model, const GColorModelOptions *opt, GSpectralGrid grid,
+GENERIC_API GENERIC_NODISCARD int gspectral_grid_check_fixed(const char *model, const GColorModelOptions *opt, GSpectralGrid grid,
                                GError *err);
 /** The wavelength of sample k of a grid, in nm. */
 static inline double gspectral_grid_nm(GSpectralGrid grid, int k) { return grid.min + k * grid.step; }
@@ -84,7 +84,7 @@ static inline double gspectral_grid_nm(GSpectralGrid grid, int k) { return grid.
 /** Builds a map from src to dst: G_ERR_NOMEM when out of memory, G_ERR_INVALID when dst's step is more than
  * 1000 source steps. With interpolate the map is linear interpolation whatever the steps (for reflectances,
  * which carry no energy to preserve). */
-GENERIC_API int gspectral_resample_build(GSpectralResample *r, GSpectralGrid src, GSpectralGrid dst, int interpolate);
+GENERIC_API GENERIC_NODISCARD int gspectral_resample_build(GSpectralResample *r, GSpectralGrid src, GSpectralGrid dst, int interpolate);
 /** Applies a map: dst[k * dst_stride] from src[j * src_stride] (strides in floats). */
 GENERIC_API void gspectral_resample_apply(const GSpectralResample *r, const float *src, int src_stride, float *dst,
                               int dst_stride);
@@ -98,7 +98,7 @@ GENERIC_API void gspectral_resample_free(GSpectralResample *r);
  * tables. m->priv must already point at the struct holding s and whatever m->cls->to_nm needs must be ready:
  * the colour matching weights and the RGB basis correction are computed through it. G_ERR_NOMEM, or
  * G_ERR_INVALID when the grid cannot represent RGB colours. */
-GENERIC_API int gspectral_init(GColorModel *m, GSpectral *s, GSpectralGrid grid, int linear_to_nm, GError *err);
+GENERIC_API GENERIC_NODISCARD int gspectral_init(GColorModel *m, GSpectral *s, GSpectralGrid grid, int linear_to_nm, GError *err);
 /** Frees what gspectral_init allocated; NULL is a no-op. */
 GENERIC_API void gspectral_fini(GSpectral *s);
 
@@ -106,15 +106,15 @@ GENERIC_API void gspectral_fini(GSpectral *s);
 
 /** Allocates the model's zeroed priv struct of `size` bytes (one that begins with its GSpectral) into m->priv
  * and sets m->capacity; G_ERR_NOMEM "out of memory creating colour model '<name>'". */
-GENERIC_API int gspectral_model_alloc(GColorModel *m, size_t size, int capacity, GError *err);
+GENERIC_API GENERIC_NODISCARD int gspectral_model_alloc(GColorModel *m, size_t size, int capacity, GError *err);
 /** The whole init of a plain sampled model on a configurable grid (priv is a GSpectral): the grid from the
  * options (gspectral_grid_from_options with def_step and max_n), capacity for n values per colour (n * n with
  * matrices), linear to_nm. */
-GENERIC_API int gspectral_model_init(GColorModel *m, const GColorModelOptions *opt, double def_step, int max_n, int matrices,
+GENERIC_API GENERIC_NODISCARD int gspectral_model_init(GColorModel *m, const GColorModelOptions *opt, double def_step, int max_n, int matrices,
                          GError *err);
 /** The whole init of a plain sampled model on a fixed grid (priv is a GSpectral, linear to_nm): refuses other
  * grid options (gspectral_grid_check_fixed). */
-GENERIC_API int gspectral_model_init_fixed(GColorModel *m, const GColorModelOptions *opt, GSpectralGrid grid, GError *err);
+GENERIC_API GENERIC_NODISCARD int gspectral_model_init_fixed(GColorModel *m, const GColorModelOptions *opt, GSpectralGrid grid, GError *err);
 /** The fini of every sampled model: gspectral_fini on the priv struct, which is then freed. */
 GENERIC_API void gspectral_model_fini(GColorModel *m);
 
@@ -123,25 +123,25 @@ GENERIC_API void gspectral_model_fini(GColorModel *m);
 /** A zero vector. */
 GENERIC_API void gspectral_black(const GColorModel *m, GColor *out);
 /** Sample by sample a + b. */
-GENERIC_API int gspectral_add(const GColorModel *m, GColor *out, const GColor *a, const GColor *b);
+GENERIC_API GENERIC_NODISCARD int gspectral_add(const GColorModel *m, GColor *out, const GColor *a, const GColor *b);
 /** Sample by sample a * b. */
-GENERIC_API int gspectral_mul(const GColorModel *m, GColor *out, const GColor *a, const GColor *b);
+GENERIC_API GENERIC_NODISCARD int gspectral_mul(const GColorModel *m, GColor *out, const GColor *a, const GColor *b);
 /** Every sample times s. */
-GENERIC_API int gspectral_scale(const GColorModel *m, GColor *out, const GColor *a, double s);
+GENERIC_API GENERIC_NODISCARD int gspectral_scale(const GColorModel *m, GColor *out, const GColor *a, double s);
 /** Sample by sample a / b, 0 where b is 0. */
-GENERIC_API int gspectral_div(const GColorModel *m, GColor *out, const GColor *a, const GColor *b);
+GENERIC_API GENERIC_NODISCARD int gspectral_div(const GColorModel *m, GColor *out, const GColor *a, const GColor *b);
 /** Sample by sample a ^ e; samples <= 0 give 0 (1 for e = 0). */
-GENERIC_API int gspectral_pow(const GColorModel *m, GColor *out, const GColor *a, double e);
+GENERIC_API GENERIC_NODISCARD int gspectral_pow(const GColorModel *m, GColor *out, const GColor *a, double e);
 /** The brightness weights applied to |a|: 0 only for black, a constant c gives c. */
 GENERIC_API double gspectral_brightness(const GColorModel *m, const GColor *a);
 /** to_nm by linear interpolation between samples (0 outside the grid); needs the linear to_nm map. */
-GENERIC_API int gspectral_to_nm(const GColorModel *m, const GColor *a, GColorRole role, GSpectrumNM *out);
+GENERIC_API GENERIC_NODISCARD int gspectral_to_nm(const GColorModel *m, const GColor *a, GColorRole role, GSpectrumNM *out);
 /** from_nm by the hat-weighted average. */
-GENERIC_API int gspectral_from_nm(const GColorModel *m, const GSpectrumNM *in, GColorRole role, GColor *out);
+GENERIC_API GENERIC_NODISCARD int gspectral_from_nm(const GColorModel *m, const GSpectrumNM *in, GColorRole role, GColor *out);
 /** XYZ from the precomputed colour matching weights (equal to the class's to_nm path). */
-GENERIC_API int gspectral_to_xyz(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3]);
+GENERIC_API GENERIC_NODISCARD int gspectral_to_xyz(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3]);
 /** A vector from linear sRGB through the corrected RGB basis (exact round trip with to_xyz). */
-GENERIC_API int gspectral_from_rgb(const GColorModel *m, const double rgb[3], GColorRole role, GColor *out);
+GENERIC_API GENERIC_NODISCARD int gspectral_from_rgb(const GColorModel *m, const double rgb[3], GColorRole role, GColor *out);
 
 #ifdef __cplusplus
 }

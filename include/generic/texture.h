@@ -69,11 +69,11 @@ struct GGeneratorClass {
 
 /** Fills the header of a new instance (refcount 1) with its space; G_ERR_VERSION when the class is of
  * another version, G_ERR_INVALID when destroy or value is missing or the space is unknown. */
-GENERIC_API int ggenerator_init(GGenerator *g, const GGeneratorClass *cls, GGeneratorSpace space, GError *err);
+GENERIC_API GENERIC_NODISCARD int ggenerator_init(GGenerator *g, const GGeneratorClass *cls, GGeneratorSpace space, GError *err);
 /** Allocates a zeroed generator of `size` bytes (a struct that begins with its GGenerator) of class cls
  * computing in space, into *out: G_ERR_NOMEM "<class>: out of memory", or ggenerator_init's error. Until it
  * is complete, free it with gmem_free. */
-GENERIC_API int gtexgen_new(const GGeneratorClass *cls, GGeneratorSpace space, size_t size, GGenerator **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gtexgen_new(const GGeneratorClass *cls, GGeneratorSpace space, size_t size, GGenerator **out, GError *err);
 /** The destroy method of the generators that own nothing but their own struct (frees it with gmem_free). */
 GENERIC_API void gtexgen_free(GGenerator *self);
 /** Adds an owner; returns g. */
@@ -109,16 +109,16 @@ GENERIC_API double ggenerator_value(const GGenerator *g, GSurfPoint *sp);
 /** The gradient at the point in the generator's space, computed now: the class's gradient method, or
  * central differences of value with a step of 1e-4 times max(1, |coordinate|) along u and v or the
  * three axes of the point (the zero vector for GGENERATOR_SPACE_NONE). */
-GENERIC_API int ggenerator_gradient(const GGenerator *g, GSurfPoint *sp, GVec3 *grad);
+GENERIC_API GENERIC_NODISCARD int ggenerator_gradient(const GGenerator *g, GSurfPoint *sp, GVec3 *grad);
 /** The value at the point, computed once per point and then taken from sp's cache (key: g). */
 GENERIC_API double ggenerator_cached_value(const GGenerator *g, GSurfPoint *sp);
 /** Value and gradient (either pointer may be NULL), computed once per point and then cached. */
-GENERIC_API int ggenerator_cached_gradient(const GGenerator *g, GSurfPoint *sp, double *value, GVec3 *grad);
+GENERIC_API GENERIC_NODISCARD int ggenerator_cached_gradient(const GGenerator *g, GSurfPoint *sp, double *value, GVec3 *grad);
 /** The derivatives of the generator's value along the surface parameters, dh/du and dh/dv, for bump
  * mapping: the gradient itself for (u, v) generators, its projection on the surface tangents for the
  * others (sp->object_dpdu/object_dpdv for object space, falling back to dpdu/dpdv when those are zero;
  * dpdu/dpdv for world space). Cached through ggenerator_cached_gradient. */
-GENERIC_API int ggenerator_surface_derivatives(const GGenerator *g, GSurfPoint *sp, double *dh_du, double *dh_dv);
+GENERIC_API GENERIC_NODISCARD int ggenerator_surface_derivatives(const GGenerator *g, GSurfPoint *sp, double *dh_du, double *dh_dv);
 
 #ifdef __cplusplus
 }

@@ -266,7 +266,10 @@ static int gfuzz_eval_material(const GMaterial *mat, const char *name)
         goto done;
     }
     static const double white[3] = {1, 1, 1};
-    gcolor_from_rgb(&illum, white, GCOLOR_LIGHT);
+    if (gcolor_from_rgb(&illum, white, GCOLOR_LIGHT) != G_OK) {
+        bad = gfuzz_violation("cannot make a white light in %s", name);
+        goto done;
+    }
     static const double uv[3][3] = {{0.3, 0.7, 0.0}, {0.5, 0.5, 0.01}, {0.95, 0.05, 0.2}};
     char what[160];
     for (int k = 0; k < 3 && !bad; k++) {
@@ -328,7 +331,8 @@ static int gfuzz_eval_material(const GMaterial *mat, const char *name)
                             "refraction");
             }
         }
-        (void)gmaterial_opaque(mat, &sp);
+        if (gmaterial_opaque(mat, &sp) < 0)
+            bad = gfuzz_violation("%s: opaque failed", name);
 #undef GFUZZ_CHECK
         gscratch_reset(s);
     }

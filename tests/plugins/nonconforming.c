@@ -139,7 +139,8 @@ static int one_to_nm(const GColorModel *m, const GColor *a, GColorRole role, GSp
 {
     (void)m;
     if (role == GCOLOR_LIGHT) {
-        gcie_illuminant_nm("D65", out);
+        if (gcie_illuminant_nm("D65", out) != G_OK)
+            return G_ERR_INVALID;
         for (int i = 0; i < GNM_COUNT; i++)
             out->v[i] *= a->v[0];
     } else {
