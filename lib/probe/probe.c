@@ -164,16 +164,21 @@ int gprobe_load(const char *path, GProbeFormat format, int height, GProbe **out,
         }
     }
     if (format == GPROBE_LATLONG) {
-        if (w != 2 * h || h < 2)
+        if (w != 2 * h)
             rc = gerror_set(err, G_ERR_INVALID,
                             "%s is %dx%d: a latitude-longitude probe must be twice as wide as high", path, w, h);
+        else if (h < 2)
+            rc = gerror_set(err, G_ERR_INVALID, "%s is %dx%d: a latitude-longitude probe needs at least 2 rows", path,
+                            w, h);
         else if (height && height != h)
             rc = gerror_set(err, G_ERR_INVALID, "%s: resizing a latitude-longitude probe is not supported", path);
         else
             rc = gprobe_create(w, h, img.pixels, out, err);
     } else {
-        if (w != h || w < 2)
+        if (w != h)
             rc = gerror_set(err, G_ERR_INVALID, "%s is %dx%d: an angular map must be square", path, w, h);
+        else if (w < 2)
+            rc = gerror_set(err, G_ERR_INVALID, "%s is %dx%d: an angular map needs at least 2x2 pixels", path, w, h);
         else
             rc = gprobe_from_angular(&img, height, out, err);
     }

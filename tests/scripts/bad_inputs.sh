@@ -187,6 +187,11 @@ if "$GPROBE" approx --probe probe_nonfinite.pfm --technique kmeans -n 4 -o "$TMP
 else
     fail "gprobe approx probe_nonfinite.pfm failed: $(cat "$TMP/err")"
 fi
+# a 1x1 probe is square: the message says what is wrong with it (too small), not that it is not square
+printf 'PF\n1 1\n-1.0\n\000\000\200\077\000\000\200\077\000\000\200\077' > "$TMP/one.pfm"
+run_fails "gprobe eval on a 1x1 probe" "$GPROBE" eval --probe "$TMP/one.pfm"
+grep -q -F "one.pfm is 1x1: an angular map needs at least 2x2 pixels" "$TMP/err" ||
+    fail "gprobe eval on a 1x1 probe: expected 'needs at least 2x2 pixels', got: $(cat "$TMP/err")"
 
 # ---- files that are not regular files, as every kind of input: refused at once with the path and the kind ----
 mkfifo "$TMP/fifo" 2> /dev/null || fail "mkfifo failed"
