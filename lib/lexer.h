@@ -3,6 +3,7 @@
 #define GENERIC_LIB_LEXER_H
 
 #include <stddef.h>
+#include "generic/export.h"
 #include "generic/error.h"
 #include "generic/reader.h"
 
@@ -35,7 +36,7 @@ typedef struct GLexer {
 void glexer_init(GLexer *lx, const char *name, const char *text, size_t len);
 /** Scans the next token into out (tok.text points into out->text); on a lexical error fills err with
  * "name:line:col: message" and returns G_ERR_PARSE. At the end returns GTOK_EOF tokens forever. */
-int glexer_next(GLexer *lx, GLexToken *out, GError *err);
+GENERIC_NODISCARD int glexer_next(GLexer *lx, GLexToken *out, GError *err);
 /** strtod in the C locale, whatever the program's LC_NUMERIC (files always use '.' as decimal point). */
 double glex_strtod(const char *s, char **end);
 /** A short printable description of a token for messages ("'abc'", "number 1.5", "end of file"). */

@@ -2,6 +2,7 @@
 #ifndef GENERIC_LIB_PLUGIN_ELF_H
 #define GENERIC_LIB_PLUGIN_ELF_H
 
+#include "generic/export.h"
 #include "generic/error.h"
 
 /** Reads the open file fd (named path in messages) as an ELF shared object without running it: it must be a
@@ -9,6 +10,6 @@
  * dynamic symbol table defines both module symbols (generic_module_abi, an int, and generic_module_init, a
  * function). *abi receives the value of generic_module_abi when the file holds it (-1 when it cannot be read
  * from the file). G_ERR_IO with a message saying what is missing otherwise. */
-int gplugin_elf_check(int fd, const char *path, int *abi, GError *err);
+GENERIC_NODISCARD int gplugin_elf_check(int fd, const char *path, int *abi, GError *err);
 
 #endif

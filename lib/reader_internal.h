@@ -2,6 +2,7 @@
 #ifndef GENERIC_LIB_READER_INTERNAL_H
 #define GENERIC_LIB_READER_INTERNAL_H
 
+#include "generic/export.h"
 #include "generic/reader.h"
 #include "lexer.h"
 
@@ -9,7 +10,7 @@
 
 /** Adds an entry: owned entries are released with the library; toplevel ones are listed. On failure an owned
  * object is released at once. */
-int glibrary_put(GLibrary *lib, const GTypeInfo *type, const char *name, void *object, int owned, int toplevel,
+GENERIC_NODISCARD int glibrary_put(GLibrary *lib, const GTypeInfo *type, const char *name, void *object, int owned, int toplevel,
                  GError *err);
 /** Releases an object the way its type (or kind) says. */
 void gtype_release(const GTypeInfo *type, void *object);
@@ -27,7 +28,7 @@ const GColorModel *glibrary_model_or_null(const GLibrary *lib);
 /** G_OK when path (resolved with its symbolic links; the file itself need not exist) lies under the directory
  * dir, with *real a gmem_alloc copy of the resolved path; G_ERR_INVALID naming both otherwise (or G_ERR_IO when
  * either cannot be resolved), *real NULL. */
-int greader_confine(const char *dir, const char *path, char **real, GError *err);
+GENERIC_NODISCARD int greader_confine(const char *dir, const char *path, char **real, GError *err);
 
 /* ---- the reader (lib/reader.c) ---- */
 
@@ -64,11 +65,11 @@ struct GReaderSource {
 /** Directory part of a path ("." when there is none), gmem_alloc'd. */
 char *greader_dir_of(const char *path);
 /** Reads a whole file of at most limit bytes (errors name the file, without a position). */
-int greader_read_file(const char *path, size_t limit, char **text, size_t *len, GError *err);
+GENERIC_NODISCARD int greader_read_file(const char *path, size_t limit, char **text, size_t *len, GError *err);
 /** Makes s (with its name set) the current source over text. */
-int greader_push_source(GReader *r, GReaderSource *s, const char *text, size_t len);
+GENERIC_NODISCARD int greader_push_source(GReader *r, GReaderSource *s, const char *text, size_t len);
 /** Opens a file as the new current source; takes ownership of name. */
-int greader_open_source(GReader *r, char *name, GError *err);
+GENERIC_NODISCARD int greader_open_source(GReader *r, char *name, GError *err);
 /** Returns to the including source, freeing the current one. */
 void greader_pop_source(GReader *r);
 /** Frees every open source. */
@@ -96,7 +97,7 @@ struct GReader {
 /** Consumes the token a successful greader_peek just returned (it cannot fail, so it has no status). */
 void greader_take(GReader *r, GToken *tok);
 /** Pushes a frame, checking the nesting limit at (line, col). */
-int greader_push_frame(GReader *r, int is_block, const GTypeInfo *type, int line, int col, GError *err);
+GENERIC_NODISCARD int greader_push_frame(GReader *r, int is_block, const GTypeInfo *type, int line, int col, GError *err);
 /** Pops frames down to n. */
 void greader_pop_frames(GReader *r, int n);
 /** Total nesting (frames and includes). */
@@ -104,11 +105,11 @@ int greader_depth(const GReader *r);
 /** Finds a type of a kind; materials and nodes look in each other's table. */
 const GTypeInfo *greader_find_type(GKind kind, const char *name);
 /** Reads a VALUE: a nested entry or a name; add = 0 leaves a new object to the caller (*owned set to 1). */
-int greader_value(GReader *r, GKind kind, int add, void **object, const GTypeInfo **type, int *owned,
+GENERIC_NODISCARD int greader_value(GReader *r, GKind kind, int add, void **object, const GTypeInfo **type, int *owned,
                   GError *err);
 /** Parses an entry of a known type (its keyword consumed at line:col) and returns the new object. */
-int greader_invoke(GReader *r, const GTypeInfo *type, int line, int col, void **object, GError *err);
+GENERIC_NODISCARD int greader_invoke(GReader *r, const GTypeInfo *type, int line, int col, void **object, GError *err);
 /** Parses the options block of a colour model type and creates the model. */
-int greader_colormodel_entry(GReader *r, const GTypeInfo *type, GColorModel **out, GError *err);
+GENERIC_NODISCARD int greader_colormodel_entry(GReader *r, const GTypeInfo *type, GColorModel **out, GError *err);
 
 #endif

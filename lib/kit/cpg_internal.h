@@ -3,6 +3,7 @@
 #ifndef GENERIC_TEXTURES_CPG_INTERNAL_H
 #define GENERIC_TEXTURES_CPG_INTERNAL_H
 
+#include "generic/export.h"
 #include "generic/memory.h"
 #include "generic/shapes.h"
 
@@ -25,6 +26,6 @@ int gtexcpg_winding(const GCpgContour *c, double x, double y);
 /** Frees the segments of a contour. */
 void gtexcpg_contour_free(GCpgContour *c);
 /** Makes a shape of a finished contour (the shape takes the segments). */
-int gtexcpg_shape_from_contour(GCpgContour *c, GCpgShape **out, GError *err);
+GENERIC_NODISCARD int gtexcpg_shape_from_contour(GCpgContour *c, GCpgShape **out, GError *err);
 
 #endif

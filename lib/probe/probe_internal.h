@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stddef.h>
 
+#include "generic/export.h"
 #include "generic/probe.h"
 
 /** Rec. 709 luminance weights: the "energy" of a pixel for the radiance-space techniques. */
@@ -52,7 +53,7 @@ static inline GVec3 probe_pixel_dir(const GProbe *p, int u, int v)
 void probe_sat_sum(const GProbe *p, int u0, int v0, int u1, int v1, double out[PROBE_SAT]);
 
 /* G_ERR_NOMEM when a width x height probe's tables would exceed the image memory budget (generic/image.h). */
-int probe_check_budget(int width, int height, GError *err);
+GENERIC_NODISCARD int probe_check_budget(int width, int height, GError *err);
 
 /** A rectangle of the lat-long image and its energy statistics (median cut and its adaptive form). */
 typedef struct ProbeRegion {
@@ -87,7 +88,7 @@ void probe_gemm_tn(const double *X, int p, const double *Y, int q, int m, double
 
 /** Cholesky factorisation in place of the n x n symmetric positive definite row-major matrix a (lower
  * triangle used); returns 0 on success, -1 when a is not positive definite. */
-int probe_cholesky(double *a, int n);
+GENERIC_NODISCARD int probe_cholesky(double *a, int n);
 /** Solves L L^T x = b in place for a factor from probe_cholesky. */
 void probe_cholesky_solve(const double *l, int n, double *b);
 /** Non-negative least squares from the normal equations: minimises x^T G x - 2 h^T x over x >= 0 (Lawson &
