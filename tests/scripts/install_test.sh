@@ -23,8 +23,8 @@ int main(void)
     if (gcolor_wrap(&c, m, s, 3) != G_OK)
         return 1;
     double w[3] = {1, 1, 1}, xyz[3];
-    gcolor_from_rgb(&c, w, GCOLOR_LIGHT);
-    gcolor_to_xyz(&c, GCOLOR_LIGHT, xyz);
+    if (gcolor_from_rgb(&c, w, GCOLOR_LIGHT) != G_OK || gcolor_to_xyz(&c, GCOLOR_LIGHT, xyz) != G_OK)
+        return 1;
     gcolormodel_destroy(m);
     printf("%.4f %.4f %.4f\n", xyz[0], xyz[1], xyz[2]);
     return (xyz[1] > 0.999 && xyz[1] < 1.001) ? 0 : 1;

@@ -205,8 +205,8 @@ static int use_colormodel(const char *name)
     for (int role = 0; role < 2; role++)
         for (int i = 0; i < 27; i++) {
             double in[3] = {i % 3 * 0.5, i / 3 % 3 * 0.5, i / 9 * 0.5}, out[3];
-            gcolor_from_rgb(&c, in, (GColorRole)role);
-            gcolor_to_rgb(&c, (GColorRole)role, out);
+            if (gcolor_from_rgb(&c, in, (GColorRole)role) != G_OK || gcolor_to_rgb(&c, (GColorRole)role, out) != G_OK)
+                out[0] = out[1] = out[2] = INFINITY; /* a failed conversion counts as the worst error */
             for (int k = 0; k < 3; k++) {
                 double e = fabs(out[k] - in[k]);
                 worst = fmax(worst, e);
@@ -214,8 +214,8 @@ static int use_colormodel(const char *name)
                     worst_grey = fmax(worst_grey, e);
             }
         }
-    gcolor_from_rgb(&c, white, GCOLOR_LIGHT);
-    gcolor_to_xyz(&c, GCOLOR_LIGHT, xyz);
+    if (gcolor_from_rgb(&c, white, GCOLOR_LIGHT) != G_OK || gcolor_to_xyz(&c, GCOLOR_LIGHT, xyz) != G_OK)
+        xyz[1] = INFINITY;
     printf("module: colormodel '%s': %d values, rgb round trip max error %.2g (greys %.2g), white light Y %.6f\n",
            name, m->nvalues, worst, worst_grey, xyz[1]);
     int bad = worst_grey > 1e-5 || fabs(xyz[1] - 1.0) > 1e-4 || (m->nvalues >= 3 && worst > 1e-5);
@@ -279,7 +279,7 @@ static int use_entry(GKind kind, const char *name, const char *usage, const char
         double rgb[3] = {1, 1, 1};
         bad |= gcolor_scratch(&illum, m, s) != G_OK || gcolor_scratch(&out, m, s) != G_OK;
         if (!bad) {
-            gcolor_from_rgb(&illum, rgb, GCOLOR_LIGHT);
+            bad |= gcolor_from_rgb(&illum, rgb, GCOLOR_LIGHT) != G_OK;
             GVec3 in = gvec3_normalize(gvec3(0.3, 0.1, 1)), view = gvec3_normalize(gvec3(-0.2, 0.4, 1));
             bad |= gmaterial_reflection(mat, &sp, in, &illum, view, &out) != G_OK || !gcolor_is_nonnegative(&out);
             double b = gcolor_brightness(&out);
