@@ -138,7 +138,7 @@ static void zero_alloc_case(const char *model_name)
             sum += gcolor_brightness(&r);
             rc |= gmaterial_reflection(all[i], &sp, other, &illum, out, &r);
             sum += gcolor_brightness(&r);
-            assert_int_equal(gmaterial_reflection_dir(all[i], &sp, view, &d), G_OK);
+            assert_true(gmaterial_reflection_dir(all[i], &sp, view, &d) >= 0); /* 1: valid, 0: none */
             rc |= gmaterial_refraction_index(sp.from, &sp, &ri);
             rc |= gmaterial_refraction_index(all[i], &sp, &n1);
             rc |= gcolor_div(&ri, &ri, &n1);
