@@ -69,7 +69,7 @@ $(BUILD)/obj/%.o: %.c
 
 $(call GEN_BUILTINS,$(BUILD)) $(call GEN_BUILTINS,build/fuzz): $(LIB_SRC) scripts/gen_builtins.sh
 	@mkdir -p $(dir $@)
-	scripts/gen_builtins.sh $@ $(LIB_SRC)
+	@scripts/gen_builtins.sh $@ $(LIB_SRC)
 
 $(BUILD)/obj/gen/%.o: $(BUILD)/gen/%.c
 	@mkdir -p $(dir $@)
