@@ -171,8 +171,7 @@ static void unregister_temp(int slot)
 
 /* ---- outputs ---- */
 
-/* The directory part of path ("." when there is none). */
-static char *dir_of(const char *path)
+char *gfile_dir_of(const char *path)
 {
     const char *slash = strrchr(path, '/');
     if (!slash)
@@ -213,7 +212,7 @@ static int resolve_target(const char *path, char **out, GError *err)
         if (link[0] == '/' || !strchr(cur, '/')) {
             next = gmem_strdup(link);
         } else {
-            char *dir = dir_of(cur);
+            char *dir = gfile_dir_of(cur);
             size_t len = dir ? strlen(dir) + 1 + strlen(link) + 1 : 0;
             next = dir ? gmem_alloc(len) : NULL;
             if (next)
@@ -239,7 +238,7 @@ static int check_target(const char *path, const char *target, GError *err)
     } else if (errno != ENOENT) {
         return gerror_set(err, G_ERR_IO, "cannot write \"%s\": %s", path, strerror(errno));
     }
-    char *dir = dir_of(target);
+    char *dir = gfile_dir_of(target);
     if (!dir)
         return gerror_set(err, G_ERR_NOMEM, "out of memory");
     int rc = G_OK;

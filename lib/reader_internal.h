@@ -62,8 +62,6 @@ struct GReaderSource {
 
 /* ---- sources (lib/reader_source.c) ---- */
 
-/** Directory part of a path ("." when there is none), gmem_alloc'd. */
-char *greader_dir_of(const char *path);
 /** Reads a whole file of at most limit bytes (errors name the file, without a position). */
 GENERIC_NODISCARD int greader_read_file(const char *path, size_t limit, char **text, size_t *len, GError *err);
 /** Makes s (with its name set) the current source over text. */

@@ -10,20 +10,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-char *greader_dir_of(const char *path)
-{
-    const char *slash = strrchr(path, '/');
-    if (!slash)
-        return gmem_strdup(".");
-    size_t n = slash == path ? 1 : (size_t)(slash - path);
-    char *d = gmem_alloc(n + 1);
-    if (d) {
-        memcpy(d, path, n);
-        d[n] = '\0';
-    }
-    return d;
-}
-
 void greader_free_source(GReaderSource *s)
 {
     if (!s)
@@ -116,7 +102,7 @@ int greader_open_source(GReader *r, char *name, GError *err)
     s->name = name;
     size_t len = 0;
     int rc = greader_read_file(name, r->opt.max_file_size, &s->text, &len, err);
-    if (rc == G_OK && (!(s->dir = greader_dir_of(name)) || !(s->real = realpath(name, NULL))))
+    if (rc == G_OK && (!(s->dir = gfile_dir_of(name)) || !(s->real = realpath(name, NULL))))
         rc = gerror_set(err, s->dir ? G_ERR_IO : G_ERR_NOMEM, "cannot resolve \"%s\": %s", name, strerror(errno));
     if (rc == G_OK && s->real) { /* realpath() uses malloc: keep our allocator's copy */
         char *copy = gmem_strdup(s->real);

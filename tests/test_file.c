@@ -31,8 +31,7 @@ static char dir[256];
 static int setup(void **state)
 {
     (void)state;
-    snprintf(dir, sizeof dir, "/tmp/test_file.XXXXXX");
-    if (!mkdtemp(dir))
+    if (tu_tempdir(dir, sizeof dir, "test_file") != 0)
         return -1;
     GError err;
     return generic_register_builtins(&err) == G_OK ? 0 : -1;
@@ -41,16 +40,7 @@ static int setup(void **state)
 static int teardown(void **state)
 {
     (void)state;
-    char cmd[300];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
-    return system(cmd) == 0 ? 0 : -1;
-}
-
-static double seconds(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + t.tv_nsec * 1e-9;
+    return tu_rmtree(dir);
 }
 
 /* ---- inputs: every kind of non-regular file against every reader ---- */
@@ -104,7 +94,7 @@ static void test_non_regular_inputs_are_refused_everywhere(void **state)
     int n = make_kinds(kinds);
     for (int i = 0; i < n; i++) {
         const Kind *k = &kinds[i];
-        double t0 = seconds();
+        double t0 = tu_seconds();
         GError err;
         int fd = gfile_open_input(k->path, &err);
         if (fd >= 0)
@@ -133,7 +123,7 @@ static void test_non_regular_inputs_are_refused_everywhere(void **state)
         assert_null(p);
         expect_refusal(gplugin_load(k->path, &err), &err, k, "gplugin_load");
         /* nothing blocked (a FIFO without a writer) or read forever (/dev/zero) */
-        assert_true(seconds() - t0 < 5.0);
+        assert_true(tu_seconds() - t0 < 5.0);
     }
 }
 

@@ -25,8 +25,7 @@ static char dir[256];
 static int setup(void **state)
 {
     (void)state;
-    snprintf(dir, sizeof dir, "/tmp/test_image_limits.XXXXXX");
-    if (!mkdtemp(dir))
+    if (tu_tempdir(dir, sizeof dir, "test_image_limits") != 0)
         return -1;
     GError err;
     return generic_register_builtins(&err) == G_OK ? 0 : -1;
@@ -35,16 +34,7 @@ static int setup(void **state)
 static int teardown(void **state)
 {
     (void)state;
-    char cmd[300];
-    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
-    return system(cmd) == 0 ? 0 : -1;
-}
-
-static double seconds(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec + t.tv_nsec * 1e-9;
+    return tu_rmtree(dir);
 }
 
 static long max_rss_kb(void)
@@ -130,7 +120,7 @@ static void lying_hdr(const char *path, long w, long h, long data)
 /* Every reader must refuse path quickly, with a message naming it, without holding the claimed memory. */
 static void expect_refused(const char *path, const char *why)
 {
-    const double t0 = seconds();
+    const double t0 = tu_seconds();
     GError err;
     GImage img;
     int rc = gimage_read(path, 0, &img, &err);
@@ -157,7 +147,7 @@ static void expect_refused(const char *path, const char *why)
         if (why && strstr(why, "claims"))
             fail_msg("the image node accepted %s", path);
     }
-    const double dt = seconds() - t0;
+    const double dt = tu_seconds() - t0;
     if (dt > 2.0)
         fail_msg("%s took %.2f s to refuse", path, dt);
 }

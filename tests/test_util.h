@@ -8,6 +8,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
 
 #include "generic/memory.h"
 
@@ -86,6 +88,29 @@ static inline int tu_run_capture(const char *exe, const char *args, char *out, s
     out[n] = '\0';
     int st = pclose(p);
     return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+/** Makes a private directory "/tmp/PREFIX.XXXXXX" into dir (at least 64 + strlen(prefix) bytes); 0 on success. */
+static inline int tu_tempdir(char *dir, size_t size, const char *prefix)
+{
+    snprintf(dir, size, "/tmp/%s.XXXXXX", prefix);
+    return mkdtemp(dir) ? 0 : -1;
+}
+
+/** Removes a directory made by tu_tempdir with everything in it; 0 on success. */
+static inline int tu_rmtree(const char *dir)
+{
+    char cmd[4200];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+    return system(cmd) == 0 ? 0 : -1;
+}
+
+/** A monotonic clock in seconds, for time bounds. */
+static inline double tu_seconds(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec + t.tv_nsec * 1e-9;
 }
 
 #endif

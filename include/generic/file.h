@@ -27,6 +27,10 @@
 extern "C" {
 #endif
 
+/** The directory part of path ("." when it has none, "/" for a file in the root), in gmem_alloc storage;
+ * NULL when out of memory. */
+GENERIC_API char *gfile_dir_of(const char *path);
+
 /** Opens a regular file for reading (close-on-exec, blocking once checked). Returns the descriptor (>= 0), or
  * G_ERR_IO with "cannot open "PATH": REASON" or "cannot read "PATH": it is a FIFO" (a character device,
  * a block device, a socket, a directory). */
