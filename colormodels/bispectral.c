@@ -398,6 +398,9 @@ static const GColorModelClass gcolormodel_bispectral = {
     .from_reradiation = bi_from_reradiation,
     .exp_scaled = bi_exp,
     .axpy = bi_axpy,
+    .band_count = gspectral_band_count,
+    .band_mask = gspectral_band_mask,
+    .band_value = gspectral_band_value,
 };
 
 GENERIC_TYPE(bispectral, GKIND_COLORMODEL, &gcolormodel_bispectral, NULL, NULL);

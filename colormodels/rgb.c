@@ -1,6 +1,7 @@
 /* rgb.c - the RGB colour model: linear Rec.709/sRGB primaries, D65 white. Conversions to XYZ use the
  * sRGB matrix directly; to and from spectra go through the spectral primary basis (lib/cie.c). */
 #include "generic/plugin.h"
+#include "generic/spectral.h"
 #include "generic/color.h"
 
 #include <math.h>
@@ -131,6 +132,11 @@ static const GColorModelClass gcolormodel_rgb = {
     .from_nm = rgb_from_nm,
     .to_xyz = rgb_to_xyz,
     .from_rgb = rgb_from_rgb,
+    /* three bands: the light of each primary, refracted with the index the model holds for it (materials
+     * give the index at 610, 550 and 465 nm) */
+    .band_count = gspectral_band_count,
+    .band_mask = gspectral_band_mask,
+    .band_value = gspectral_band_value,
 };
 
 GENERIC_TYPE(rgb, GKIND_COLORMODEL, &gcolormodel_rgb, NULL, NULL);

@@ -101,6 +101,9 @@ static const GColorModelClass gcolormodel_spectrum9 = {
     .from_nm = gspectral_from_nm,
     .to_xyz = gspectral_to_xyz,
     .from_rgb = gspectral_from_rgb,
+    .band_count = gspectral_band_count,
+    .band_mask = gspectral_band_mask,
+    .band_value = gspectral_band_value,
 };
 
 GENERIC_TYPE(spectrum9, GKIND_COLORMODEL, &gcolormodel_spectrum9, NULL, NULL);

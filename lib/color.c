@@ -393,3 +393,51 @@ int gcolor_convert(GColor *dst, const GColor *src, GColorRole role)
     int rc = gcolor_to_nm(src, role, &s);
     return rc ? rc : gcolor_from_nm(dst, &s, role);
 }
+
+/* ---- wavelength bands (dispersion) ---- */
+
+int gcolormodel_band_count(const GColorModel *m)
+{
+    int n = m->cls->band_count ? m->cls->band_count(m) : 1;
+    return n >= 1 ? n : 1;
+}
+
+int gcolor_band_mask(GColor *out, int band)
+{
+    const GColorModel *m = out->model;
+    if (band < 0 || band >= gcolormodel_band_count(m))
+        return G_ERR_INVALID;
+    if (m->cls->band_mask)
+        return m->cls->band_mask(m, band, out);
+    return gcolor_fill(out, 1.0);
+}
+
+/* The default band value: brightness(mask * c) / brightness(mask), through temporaries of the thread's arena. */
+static double band_value_by_mask(const GColorModel *m, const GColor *c, int band)
+{
+    GScratch *arena = gscratch_thread();
+    if (!arena)
+        return NAN;
+    GScratchMark mark = gscratch_mark(arena);
+    GColor mask, part;
+    double v = NAN;
+    if (gcolor_scratch(&mask, m, arena) == G_OK && gcolor_scratch(&part, m, arena) == G_OK &&
+        gcolor_band_mask(&mask, band) == G_OK && gcolor_mul(&part, &mask, c) == G_OK) {
+        double w = gcolor_brightness(&mask);
+        v = w > 0.0 ? gcolor_brightness(&part) / w : NAN;
+    }
+    gscratch_release(arena, mark);
+    return v;
+}
+
+double gcolor_band_value(const GColor *c, int band)
+{
+    const GColorModel *m = c->model;
+    if (c->kind != GCOLOR_VECTOR || band < 0 || band >= gcolormodel_band_count(m))
+        return NAN;
+    if (m->cls->band_value)
+        return m->cls->band_value(m, c, band);
+    if (!m->cls->band_count)
+        return gcolor_brightness(c); /* the one band is everything */
+    return band_value_by_mask(m, c, band);
+}

@@ -421,6 +421,21 @@ double gspectral_brightness(const GColorModel *m, const GColor *a)
     return gspectral_kbright(s->lum, a->v, m->nvalues);
 }
 
+int gspectral_band_count(const GColorModel *m) { return m->nvalues; }
+
+int gspectral_band_mask(const GColorModel *m, int band, GColor *out)
+{
+    gspectral_black(m, out);
+    out->v[band] = 1.0f;
+    return G_OK;
+}
+
+double gspectral_band_value(const GColorModel *m, const GColor *a, int band)
+{
+    (void)m;
+    return a->v[band];
+}
+
 int gspectral_to_nm(const GColorModel *m, const GColor *a, GColorRole role, GSpectrumNM *out)
 {
     (void)role;

@@ -1,6 +1,7 @@
 /* camera.c - the pinhole camera (look-at and vertical field of view), pixel sample positions and the
  * random number generator. */
 #include "camera.h"
+#include "bands.h"
 
 #include <math.h>
 
@@ -16,6 +17,7 @@ void camera_defaults(Camera *c)
     c->depth = 8;
     c->cutoff = 1e-3;
     c->exposure = 0.0;
+    c->bands = BANDS_DEFAULT_CAP;
 }
 
 void camera_setup(Camera *c, int width, int height)

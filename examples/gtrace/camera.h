@@ -15,6 +15,7 @@ typedef struct Camera {
     int spp, depth;        /**< samples per pixel, recursion depth */
     double cutoff;         /**< adaptive depth: rays whose weight in the pixel falls below this are not traced */
     double exposure;       /**< stops applied to .png/.jpg output */
+    int bands;             /**< most wavelength groups a dispersive refraction splits into (bands.h) */
     GMaterial *medium;     /**< the medium the camera is in (borrowed from the library; NULL: vacuum) */
     /* derived by camera_setup */
     GVec3 eye, right, upv, forward;

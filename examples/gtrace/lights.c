@@ -8,10 +8,17 @@
  * Shadows: a shadow ray that reaches the light unobstructed leaves the reflected light to the absorption
  * of the medium over the distance (as in Fig. 4). When something is in the way, the shadow ray walks the
  * hits in order: an opaque surface blocks the light; at a non-opaque one the light is passed through the
- * material's refraction() for the ideal refraction pair of the shadow-ray direction (Fresnel transmission,
- * coloured glass filters), media absorb over the lengths travelled inside them, and the ray continues
- * straight (no caustics; total internal reflection blocks). The material then reflects the light that got
- * through. Directional lights are not absorbed by the media (their distance is infinite). */
+ * material's refraction() (Fresnel transmission, coloured glass filters), media absorb over the lengths
+ * travelled inside them, and the ray continues straight: no caustics, the refracting path the light really
+ * takes is not searched for. The material then reflects the light that got through. Directional lights are
+ * not absorbed by the media (their distance is infinite).
+ *
+ * The straight path stands for the refracting one, so each interface is read with the straight direction on
+ * its optically thinner side: entering a denser medium, the refraction pair of the shadow-ray direction; leaving
+ * one, the pair seen from the other side (the light arriving along the straight direction from outside and
+ * refracted inwards). A straight path never meets total internal reflection that way. For a sphere and for a
+ * slab this is exact: the real path enters and leaves at the same outside angle as the straight chord, so the
+ * transmittance is T(theta)^2, T the one-interface Fresnel transmittance at the chord's angle theta. */
 #include "lighting.h"
 #include "accel.h"
 
@@ -19,6 +26,43 @@
 
 #define SHADOW_MAX_HITS 64
 #define AREA_MAX_SAMPLES 256
+
+/* What of `light`, arriving along the straight shadow direction dir (pointing towards the light), the surface
+ * at hp lets through, into out: 1 when something went through, 0 when the surface blocks, or a status. The
+ * interface is read with dir on its optically thinner side (see the top of this file): when the shadow ray
+ * leaves a denser medium, the refraction pair is taken at the surface seen from the other side, where dir is
+ * the direction of the light's arrival and the material refracts it inwards. */
+static int interface_transmit(GSurfPoint *hp, GVec3 dir, const GColor *light, GColor *nf, GColor *nt, GColor *ri,
+                              GColor *out)
+{
+    int rc;
+    if ((rc = gmaterial_refraction_index(hp->from, hp, nf)) < 0 || (rc = gmaterial_refraction_index(hp->to, hp, nt)) < 0 ||
+        (rc = gcolor_div(ri, nf, nt)) < 0)
+        return rc;
+    GSurfPoint other;
+    GSurfPoint *at = hp;
+    GVec3 view = dir, to_light;
+    if (gcolor_brightness(ri) > 1.0) { /* leaving a denser medium: the point seen from the thinner side */
+        other = *hp;
+        other.geometric_normal = gvec3_neg(hp->geometric_normal);
+        other.entering = !hp->entering;
+        other.from = hp->to;
+        other.to = hp->from;
+        gsurfpoint_invalidate(&other);
+        if ((rc = gcolor_div(ri, nt, nf)) < 0)
+            return rc;
+        at = &other;
+        view = gvec3_neg(dir);
+    }
+    int valid = gmaterial_refraction_dir(at->material, at, view, ri, &to_light);
+    if (valid <= 0)
+        return valid;
+    if (at == hp)
+        rc = gmaterial_refraction(hp->material, hp, to_light, light, ri, gvec3_neg(dir), out);
+    else /* reciprocity: the same pair with the light entering from dir */
+        rc = gmaterial_refraction(at->material, at, to_light, light, ri, dir, out);
+    return rc < 0 ? rc : 1;
+}
 
 /* Light arriving at sp from `dir` over `dist` after the surfaces in between (G_OK, *visible = 0 when blocked). */
 static int transmit(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 dir, double dist,
@@ -54,17 +98,7 @@ static int transmit(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *medi
             goto done;
         if (hp.from && (rc = gcolor_copy(light, &tmp)) < 0)
             goto done;
-        if ((rc = gmaterial_refraction_index(hp.from, &hp, &nf)) < 0 ||
-            (rc = gmaterial_refraction_index(hp.to, &hp, &nt)) < 0 || (rc = gcolor_div(&ri, &nf, &nt)) < 0)
-            goto done;
-        GVec3 tdir;
-        int valid = gmaterial_refraction_dir(hp.material, &hp, dir, &ri, &tdir);
-        if (valid <= 0) {
-            rc = valid;
-            goto done;
-        }
-        if ((rc = gmaterial_refraction(hp.material, &hp, tdir, light, &ri, gvec3_neg(dir), &tmp)) < 0 ||
-            (rc = gcolor_copy(light, &tmp)) < 0)
+        if ((rc = interface_transmit(&hp, dir, light, &nf, &nt, &ri, &tmp)) <= 0 || (rc = gcolor_copy(light, &tmp)) < 0)
             goto done;
         if (gcolor_brightness(light) <= 0.0)
             goto done;

@@ -2,6 +2,7 @@
  * main.c: the command line, loading, rendering, writing, and the summary line. */
 #include "parse.h"
 #include "accel.h"
+#include "bands.h"
 #include "render.h"
 #include "output.h"
 #include "probe_env.h"
@@ -21,7 +22,7 @@ static void usage(FILE *f)
     gregistry_names(GKIND_COLORMODEL, models, sizeof models);
     fprintf(f,
             "usage: gtrace SCENE -o OUT [--width W] [--height H] [--spp N] [--depth D] [--max-rays N]\n"
-            "              [--colormodel M] [--threads N] [--cutoff W] [--exposure STOPS] [--plugin FILE.so]... [-q]\n"
+            "              [--colormodel M] [--threads N] [--cutoff W] [--bands K] [--exposure STOPS] [--plugin FILE.so]... [-q]\n"
             "              [--allow-plugins] [--confine DIR]\n"
             "              [--probe FILE] [--probe-technique T] [--probe-count N] [--probe-samples N]\n"
             "              [--probe-scale S] [--probe-shadows on|off]\n"
@@ -47,6 +48,9 @@ static void usage(FILE *f)
             "                    BFC files, probes) must lie under DIR once symbolic links are resolved\n"
             "  --cutoff W        do not trace rays whose weight in the pixel is below W (default: the\n"
             "                    camera's, 1e-3; 0 traces every ray to the depth limit)\n"
+            "  --bands K         most wavelength groups a dispersive refraction splits into, 1..1024\n"
+            "                    (default: the camera's, 16; the model's bands are grouped evenly; 1: no\n"
+            "                    dispersion)\n"
             "  --threads N       render threads (default: all processors)\n"
             "  --exposure STOPS  exposure for .png/.jpg output (default: the camera's)\n"
             "  --probe FILE      replace the image of the scene's `light probe` (relative to the current\n"
@@ -106,7 +110,7 @@ static int parse_probe_option(const char *a, const char *v, ProbeOverride *p)
 typedef struct Options {
     ProbeOverride probe;
     const char *scene, *out, *colormodel;
-    int width, height, spp, depth, threads, quiet, max_rays;
+    int width, height, spp, depth, threads, quiet, max_rays, bands;
     int have_exposure, have_cutoff;
     double exposure, cutoff;
 } Options;
@@ -147,6 +151,8 @@ static int parse_args(int argc, char **argv, Options *o)
                 rc = parse_int(a, v, 1, RENDER_LIMIT_MAX_RAYS, &o->max_rays);
             else if (strcmp(a, "--threads") == 0)
                 rc = parse_int(a, v, 1, 1024, &o->threads);
+            else if (strcmp(a, "--bands") == 0)
+                rc = parse_int(a, v, 1, BANDS_LIMIT, &o->bands);
             else if (strcmp(a, "--colormodel") == 0)
                 o->colormodel = v;
             else if (strncmp(a, "--probe", 7) == 0)
@@ -225,7 +231,7 @@ int main(int argc, char **argv)
     const Camera *cam = &scene->camera;
     RenderSettings rs = {.width = cam->width, .height = cam->height, .spp = cam->spp, .depth = cam->depth,
                          .threads = o.threads, .quiet = o.quiet, .cutoff = o.have_cutoff ? o.cutoff : cam->cutoff,
-                         .max_rays = o.max_rays};
+                         .max_rays = o.max_rays, .bands = o.bands > 0 ? o.bands : cam->bands};
     if (o.width > 0 && o.height > 0) {
         rs.width = o.width;
         rs.height = o.height;

@@ -19,10 +19,11 @@
  *   light background  { color COLOR }        radiance of rays that leave the scene
  *   light probe       { file "x.hdr" technique T count N samples S rotate <x,y,z> scale K ... }
  *                     image-based lighting from an HDR probe (probe_light.c)
- *   camera pinhole    { from P at Q up U fov DEG width W height H spp N depth D cutoff W exposure STOPS
+ *   camera pinhole    { from P at Q up U fov DEG width W height H spp N depth D cutoff W exposure STOPS bands K
  *                       medium M }
  * Spot cones are full opening angles in degrees (inner: full intensity, outer: none). cutoff: rays whose
  * weight in their pixel is below W are not traced (default 1e-3, 0 traces everything to the depth). */
+#include "bands.h"
 #include "parse.h"
 #include "geometry.h"
 
@@ -330,8 +331,11 @@ static int parse_camera(GReader *r, const void *vtable, void **object, GError *e
             rc = greader_number_in(r, 0.0, 1.0, &c->cutoff, err);
         else if (strcmp(key, "medium") == 0)
             rc = greader_material(r, &c->medium, err);
+        else if (strcmp(key, "bands") == 0)
+            rc = (rc = greader_int(r, 1, BANDS_LIMIT, &v, err)) < 0 ? rc : (c->bands = (int)v, 0);
         else
-            rc = greader_unknown_param(r, "from, at, up, fov, width, height, spp, depth, cutoff, exposure, medium", err);
+            rc = greader_unknown_param(r, "from, at, up, fov, width, height, spp, depth, cutoff, exposure, medium, bands",
+                                       err);
         if (rc < 0)
             break;
     }

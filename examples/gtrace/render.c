@@ -101,13 +101,21 @@ int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, Rend
     if (rs->max_rays < 0 || rs->max_rays > RENDER_LIMIT_MAX_RAYS)
         return gerror_set(err, G_ERR_INVALID, "rays per sample %d out of range (1..%d)", rs->max_rays,
                           RENDER_LIMIT_MAX_RAYS);
+    if (rs->bands < 0 || rs->bands > BANDS_LIMIT)
+        return gerror_set(err, G_ERR_INVALID, "wavelength bands %d out of range (1..%d)", rs->bands, BANDS_LIMIT);
+    Bands bands;
+    int rc0 = bands_init(&bands, s->model, rs->bands, err);
+    if (rc0 != G_OK)
+        return rc0;
     Camera cam = s->camera;
     camera_setup(&cam, rs->width, rs->height);
     fb->width = rs->width;
     fb->height = rs->height;
     fb->pixels = gmem_calloc((size_t)rs->width * (size_t)rs->height * 3, sizeof(float));
-    if (!fb->pixels)
+    if (!fb->pixels) {
+        bands_free(&bands);
         return gerror_set(err, G_ERR_NOMEM, "out of memory for a %dx%d image", rs->width, rs->height);
+    }
     Job job = {.scene = s, .cam = &cam, .fb = fb, .spp = rs->spp, .depth = rs->depth,
                .max_rays = rs->max_rays > 0 ? rs->max_rays : RENDER_DEFAULT_MAX_RAYS};
     job.ntx = (rs->width + TILE - 1) / TILE;
@@ -125,7 +133,7 @@ int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, Rend
     double t0 = now_seconds();
 #pragma omp parallel num_threads(nthreads) reduction(+ : rays, nonfinite, capped)
     {
-        TraceCtx ctx = {.scene = s, .max_depth = rs->depth, .cutoff = rs->cutoff};
+        TraceCtx ctx = {.scene = s, .max_depth = rs->depth, .cutoff = rs->cutoff, .bands = &bands, .band = -1};
         ctx.scratch = gscratch_create(0);
         int *perm = gmem_alloc((size_t)rs->spp * sizeof(int));
         int ok = ctx.scratch && perm && gcolor_alloc(&ctx.unit, s->model) == G_OK &&
@@ -166,6 +174,7 @@ int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, Rend
         gscratch_destroy(ctx.scratch);
     }
     progress_finish(&prog);
+    bands_free(&bands);
     st->seconds = now_seconds() - t0;
     st->rays = rays;
     st->nonfinite = nonfinite;

@@ -2,6 +2,7 @@
 #ifndef GTRACE_RENDER_H
 #define GTRACE_RENDER_H
 
+#include "bands.h"
 #include "scene.h"
 
 #include <generic/error.h>
@@ -17,6 +18,8 @@ typedef struct RenderSettings {
     int width, height, spp, depth, threads, quiet;
     double cutoff; /**< adaptive depth control threshold (0: off) */
     int max_rays;  /**< secondary rays per camera sample (0: RENDER_DEFAULT_MAX_RAYS); the rest are not traced */
+    int bands;     /**< most wavelength groups a dispersive refraction splits into (0: BANDS_DEFAULT_CAP; 1: no
+                        dispersion) */
 } RenderSettings;
 
 /** Linear sRGB pixels (from the model's XYZ), row by row from the top. */

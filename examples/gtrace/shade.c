@@ -3,6 +3,15 @@
  * refraction with the relative index of the media on both sides (total internal reflection is the
  * material's refraction_dir saying "not valid"), and the absorption of the medium the ray travelled in.
  *
+ * Dispersion: when the relative index differs between the colour model's wavelength groups (bands.h), the
+ * refracted ray splits: each group is refracted with its own index, and of what comes back only the group's
+ * light (its mask times the light) is kept. A path that carries one group is refracted with that group's index
+ * at every later interface and never splits again. The reflected ray does not depend on wavelength and stays
+ * whole. Light that a fluorescent surface re-radiates into the group is carried on (the mask applies where the
+ * path split, so a group's path sees the scene's full light before that point); an interface crossed by the
+ * group's path farther from the viewer still bends it with the group's index, whatever band the light had
+ * before it was re-radiated (documented approximation).
+ *
  * Adaptive depth (Hall and Greenberg 1983): before a reflected or refracted ray is traced, the material is
  * asked what it would pass on of an illumination of 1 in every sample; the brightness of that, times the
  * weight of the path so far, is the most the ray can contribute to its pixel per unit of radiance, and
@@ -137,10 +146,11 @@ static int pass_on(const GMaterial *m, GSurfPoint *sp, GVec3 dir, const GColor *
 
 /* Adds to out the light that arrives along the secondary direction dir (a reflection_dir, or a refraction_dir
  * with ri its relative index; NULL: reflection) through the media `next`, as the material passes it on
- * towards the viewer. Adaptive depth: the branch is not traced when what it can bring to the pixel (the
- * material's pass-on of 1, times the path's weight) is below the cutoff. */
+ * towards the viewer; with a mask, only the mask's part of it (one wavelength group of a dispersive
+ * refraction). Adaptive depth: the branch is not traced when what it can bring to the pixel (the material's
+ * pass-on of 1, times the path's weight) is below the cutoff. */
 static int trace_secondary(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, GVec3 dir, const GColor *ri,
-                           const Media *next, int depth, GColor *out)
+                           const GColor *mask, const Media *next, int depth, GColor *out)
 {
     const GMaterial *m = sp->material;
     GVec3 to_viewer = gvec3_neg(r->d);
@@ -149,6 +159,8 @@ static int trace_secondary(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 faci
     int rc = G_OK;
     CHECK(gcolor_scratch(&tmp, c->scene->model, c->scratch));
     CHECK(pass_on(m, sp, dir, &c->unit, ri, to_viewer, &tmp));
+    if (mask)
+        CHECK(gcolor_mul(&tmp, mask, &tmp));
     double w = c->weight * gcolor_brightness(&tmp);
     if (!(w > 0.0 && w >= c->cutoff))
         goto done;
@@ -166,6 +178,8 @@ static int trace_secondary(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 faci
     c->weight = saved;
     CHECK(rc);
     CHECK(pass_on(m, sp, dir, &illum, ri, to_viewer, &tmp));
+    if (mask)
+        CHECK(gcolor_mul(&tmp, mask, &tmp));
     CHECK(gcolor_add(out, out, &tmp));
 done:
     gscratch_release(c->scratch, mark);
@@ -184,6 +198,42 @@ static int relative_index(TraceCtx *c, GSurfPoint *sp, GColor *ri)
     CHECK(gmaterial_refraction_index(sp->to, sp, &n_to));
     CHECK(gcolor_div(ri, &n_from, &n_to));
 done:
+    return rc;
+}
+
+/* The refracted light at sp: one ray with the relative index ri; a ray per wavelength group when ri is
+ * dispersive; the carried group's index on a path that already split. */
+static int refract(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const GColor *ri, const Media *media,
+                   int depth, GColor *out)
+{
+    const GMaterial *m = sp->material;
+    const Bands *b = c->bands;
+    GVec3 dir;
+    Media next;
+    media_cross(media, m, sp->entering, &next);
+    int split = c->band < 0 && b && bands_disperse(b, ri), valid, rc = G_OK;
+    GScratchMark mark = gscratch_mark(c->scratch);
+    if (!split && (c->band < 0 || !b)) {
+        CHECK(valid = gmaterial_refraction_dir(m, sp, r->d, ri, &dir));
+        if (valid)
+            CHECK(trace_secondary(c, r, sp, facing, dir, ri, NULL, &next, depth, out));
+        goto done;
+    }
+    GColor rg;
+    CHECK(gcolor_scratch(&rg, c->scene->model, c->scratch));
+    int g0 = split ? 0 : c->band, g1 = split ? b->n : c->band + 1;
+    for (int g = g0; g < g1; g++) {
+        CHECK(gcolor_fill(&rg, bands_value(b, ri, g)));
+        CHECK(valid = gmaterial_refraction_dir(m, sp, r->d, &rg, &dir));
+        if (!valid)
+            continue; /* this group is totally reflected */
+        c->band = g;
+        rc = trace_secondary(c, r, sp, facing, dir, &rg, split ? &b->mask[g] : NULL, &next, depth, out);
+        c->band = split ? -1 : g;
+        CHECK(rc);
+    }
+done:
+    gscratch_release(c->scratch, mark);
     return rc;
 }
 
@@ -214,17 +264,12 @@ static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const 
         /* ideal reflection, in the medium the ray came through */
         CHECK(valid = gmaterial_reflection_dir(m, sp, view, &dir));
         if (valid)
-            CHECK(trace_secondary(c, r, sp, facing, dir, NULL, media, depth, out));
+            CHECK(trace_secondary(c, r, sp, facing, dir, NULL, NULL, media, depth, out));
         /* ideal refraction into the medium on the other side; not valid: total internal reflection */
         if (!opaque) {
             GColor ri;
             CHECK(relative_index(c, sp, &ri));
-            CHECK(valid = gmaterial_refraction_dir(m, sp, view, &ri, &dir));
-            if (valid) {
-                Media next;
-                media_cross(media, m, sp->entering, &next);
-                CHECK(trace_secondary(c, r, sp, facing, dir, &ri, &next, depth, out));
-            }
+            CHECK(refract(c, r, sp, facing, &ri, media, depth, out));
         }
     }
     /* absorption until the light reaches the viewer */

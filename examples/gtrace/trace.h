@@ -2,6 +2,7 @@
 #ifndef GTRACE_TRACE_H
 #define GTRACE_TRACE_H
 
+#include "bands.h"
 #include "geometry.h"
 #include "ray.h"
 #include "rng.h"
@@ -29,6 +30,8 @@ typedef struct TraceCtx {
     int capped;     /**< the current camera sample ran out of rays_left */
     int status;     /**< first error (G_OK while fine) */
     const char *culprit; /**< type of the material whose call failed first (NULL: none or not a material) */
+    const Bands *bands;  /**< the wavelength groups a dispersive refraction splits into (NULL: none) */
+    int band;            /**< the group the current path carries (-1: all light; set by a dispersive split) */
 } TraceCtx;
 
 /** The media a ray travels through: bottom = the camera's medium, top = the current one. */

@@ -42,8 +42,9 @@ extern "C" {
 #endif
 
 /** Version of the colour model vtable; a class with another version is refused.
- * 2: GColor records its storage and capacity, and GColorModelClass grew the optional fill, exp_scaled and axpy slots. */
-#define GCOLOR_ABI_VERSION 2
+ * 2: GColor records its storage and capacity, and GColorModelClass grew the optional fill, exp_scaled and axpy slots.
+ * 3: the optional band slots (band_count, band_mask, band_value) for dispersion. */
+#define GCOLOR_ABI_VERSION 3
 
 /** The nm exchange grid: 380..780 nm at 1 nm. */
 #define GNM_MIN 380
@@ -155,6 +156,18 @@ struct GColorModelClass {
     /** out = s * a + b. Default: two vectors sample by sample; otherwise the class's scale then add, through
      * a temporary of the model's capacity from a per-thread arena of the library. */
     int (*axpy)(const GColorModel *m, GColor *out, double s, const GColor *a, const GColor *b);
+    /* Wavelength bands, for dispersion: a renderer that refracts light with an index that varies across the
+     * model's samples splits the ray into bands, each refracted with the band's own index and carrying only
+     * the band's light. The bands partition the model's samples: their masks sum to white. */
+    /** Number of bands (>= 1). Default 1: the model says nothing about wavelengths, and light is refracted
+     * whole with the brightness of the index (no dispersion). */
+    int (*band_count)(const GColorModel *m);
+    /** out = the mask of band `band` (0 <= band < band_count): a vector that multiplied with a light keeps the
+     * light of the band and nothing else. Default: white (the one band is everything). */
+    int (*band_mask)(const GColorModel *m, int band, GColor *out);
+    /** The value of the vector a in band `band` (e.g. the refraction index of the band's light). Default: the
+     * luminance-weighted mean, brightness(mask * a) / brightness(mask). */
+    double (*band_value)(const GColorModel *m, const GColor *a, int band);
 };
 
 /* ---- models ---- */
@@ -213,6 +226,15 @@ GENERIC_API GENERIC_NODISCARD int gcolor_fill(GColor *out, double value);
  * matrix operand: the model's definition (bispectral: its diagonal, as pow), G_ERR_UNSUPPORTED in a plug-in
  * model that gives no exp of its own. */
 GENERIC_API GENERIC_NODISCARD int gcolor_exp(GColor *out, const GColor *a, double s);
+/** Number of wavelength bands of the model (>= 1; see GColorModelClass.band_count). */
+GENERIC_API int gcolormodel_band_count(const GColorModel *m);
+/** out = the mask of band `band` of out's model: mul(mask, light) keeps the band's light; the masks of all
+ * bands sum to white. G_ERR_INVALID for a band out of range. */
+GENERIC_API GENERIC_NODISCARD int gcolor_band_mask(GColor *out, int band);
+/** The value of the vector c in band `band` (the band's refraction index when c is an index); NAN for a
+ * band out of range or a matrix. */
+GENERIC_API double gcolor_band_value(const GColor *c, int band);
+
 /** 1 when every sample is finite, 0 otherwise. */
 GENERIC_API GENERIC_NODISCARD int gcolor_is_finite(const GColor *c);
 /** 1 when every sample is finite and >= 0 (a physical light or reflectance), 0 otherwise. */

@@ -134,6 +134,13 @@ GENERIC_API GENERIC_NODISCARD int gspectral_div(const GColorModel *m, GColor *ou
 GENERIC_API GENERIC_NODISCARD int gspectral_pow(const GColorModel *m, GColor *out, const GColor *a, double e);
 /** The brightness weights applied to |a|: 0 only for black, a constant c gives c. */
 GENERIC_API double gspectral_brightness(const GColorModel *m, const GColor *a);
+/** Band slots of a sampled model: every sample is one wavelength band (band_count = nvalues, the mask of band k
+ * is 1 at sample k, the value of a in band k is its sample k). */
+GENERIC_API int gspectral_band_count(const GColorModel *m);
+/** The mask of band k: 1 at sample k, 0 elsewhere. */
+GENERIC_API GENERIC_NODISCARD int gspectral_band_mask(const GColorModel *m, int band, GColor *out);
+/** Sample k of a. */
+GENERIC_API double gspectral_band_value(const GColorModel *m, const GColor *a, int band);
 /** to_nm by linear interpolation between samples (0 outside the grid); needs the linear to_nm map. */
 GENERIC_API GENERIC_NODISCARD int gspectral_to_nm(const GColorModel *m, const GColor *a, GColorRole role, GSpectrumNM *out);
 /** from_nm by the hat-weighted average. */
