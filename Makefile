@@ -138,7 +138,10 @@ $(BUILD)/tests/test_gtrace_%: TESTLIBS += -lembree3
 .PHONY: bench-pov
 bench-pov: $(BUILD)/bin/gtrace
 	@bench/pov/bench.sh $(BUILD)
-bench: bench-pov
+.PHONY: bench-dispersion
+bench-dispersion: $(BUILD)/bin/gtrace
+	@bench/dispersion.sh $(BUILD)
+bench: bench-pov bench-dispersion
 # (end of gtrace)
 
 # ---- run-time plug-in modules (examples/plugins/, tests/plugins/) ----

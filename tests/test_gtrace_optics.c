@@ -28,7 +28,7 @@ static double bk7(double nm)
 #define APEX_DEG 60.0
 #define PRISM_Z (-3.0)
 #define SLIT_DIST 40.0
-#define WIDTH 2400
+#define WIDTH 1600
 #define HEIGHT 4 /* the strip; row ROW is measured */
 #define ROW 2
 #define HFOV_DEG 8.0
