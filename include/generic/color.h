@@ -121,7 +121,7 @@ struct GColorModel {
  * from_nm. Optional (NULL = go through the nm spectrum): fini, to_xyz, from_rgb, from_reradiation.
  * Optional (NULL = the default of lib/color.c, which reads a vector as nvalues independent samples, as add and
  * scale treat it): fill, exp_scaled, axpy. A model whose vectors are not plain samples, or that has matrices, gives
- * its own. Operations get valid operands of this model (the dispatch checks models); `out` may alias them. */
+ * its own. Optional (NULL = one band, no dispersion): band_count, band_mask, band_value. Operations get valid operands of this model (the dispatch checks models); `out` may alias them. */
 struct GColorModelClass {
     int abi_version;         /**< GCOLOR_ABI_VERSION */
     const char *name;        /**< type keyword, e.g. "spectrum" */
