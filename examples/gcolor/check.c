@@ -178,6 +178,44 @@ static void check_nm_round_trip(Check *c)
     report(c, "model -> nm -> model keeps XYZ", e, TOL_NM, note);
 }
 
+/* The wavelength bands (dispersion): the bands partition every value, sum over bands of mask * a = a; a band's
+ * mask has the value 1 in its own band and 0 in the others; every test colour has a finite value in every
+ * band. A model without band slots has one band, its mask white, and passes trivially. */
+static void check_bands(Check *c)
+{
+    int nb = gcolormodel_band_count(c->m);
+    double part = 0.0, unit = 0.0, finite = 0.0;
+    GColor mask = {0}, sum = {0};
+    if (gcolor_alloc(&mask, c->m) != G_OK || gcolor_alloc(&sum, c->m) != G_OK) {
+        part = unit = finite = INFINITY;
+        goto done;
+    }
+    for (int b = 0; b < nb && isfinite(unit); b++) {
+        if (gcolor_band_mask(&mask, b) != G_OK) {
+            unit = INFINITY;
+            break;
+        }
+        for (int j = 0; j < nb; j++) {
+            double v = gcolor_band_value(&mask, j) - (j == b);
+            unit = fmax(unit, isfinite(v) ? fabs(v) : INFINITY);
+        }
+    }
+    for (int k = 0; k < c->n && isfinite(part); k++) {
+        gcolor_black(&sum);
+        for (int b = 0; b < nb; b++)
+            if (gcolor_band_mask(&mask, b) != G_OK || gcolor_mul(&c->tmp, &mask, &c->test[k]) != G_OK ||
+                gcolor_add(&sum, &sum, &c->tmp) != G_OK || !isfinite(gcolor_band_value(&c->test[k], b)))
+                finite = INFINITY;
+        part = fmax(part, rel_diff(&c->test[k], &sum));
+    }
+done:
+    gcolor_free(&mask);
+    gcolor_free(&sum);
+    char note[96];
+    snprintf(note, sizeof note, "(%d band%s)", nb, nb == 1 ? "" : "s");
+    report(c, "bands partition a (disjoint unit masks)", fmax(fmax(part, finite), unit), TOL_IDENTITY, note);
+}
+
 /* Information, not a property: how far below 0 from_rgb goes for colours in [0, 1] (a model whose basis
  * cannot hold every in-gamut colour without negative samples shows it here). */
 static void report_negative(Check *c)
@@ -198,7 +236,8 @@ int gcolor_check(int argc, char **argv)
             printf("usage: gcolor check MODEL [--step NM] [--plugin FILE.so]...\n"
                    "Checks the colour model MODEL (built-in or from a module): a + black = a, white * a = a,\n"
                    "pow(a, 1) = a, brightness 0 exactly for black, rgb -> model -> rgb, white light on a white\n"
-                   "surface, model -> nm -> model, each with its worst error over a grid of test colours.\n"
+                   "surface, model -> nm -> model, the wavelength bands partitioning every value, each with its\n"
+                   "worst error over a grid of test colours.\n"
                    "Exit status 0 when every property passes, 1 when one fails.\n");
             return 0;
         } else if (!strcmp(argv[i], "--step") && i + 1 < argc) {
@@ -245,6 +284,7 @@ int gcolor_check(int argc, char **argv)
         check_rgb_round_trip(&c);
         check_white(&c);
         check_nm_round_trip(&c);
+        check_bands(&c);
         printf("%s: %s\n", name, c.failures ? "FAIL" : "PASS");
         rc = c.failures ? 1 : 0;
     }

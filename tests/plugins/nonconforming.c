@@ -5,6 +5,8 @@
  *                (albedo 1.5; reciprocal, finite);
  *   -DSKEWED     material "skewed_lambert": f_r = (0.25 + 0.5 cos^2(theta_in)) / pi, which depends on the
  *                incident direction only (albedo 0.25..0.75, not reciprocal);
+ *   -DBAD_BANDS  colour model "bad_bands": the same grey model with a correct add and two wavelength bands whose
+ *                masks are both white, so the bands do not partition a value;
  *   -DBAD_ADD    colour model "bad_add": the grey model (luminance only) whose add returns 1.01 a + b, so
  *                a + black != a. */
 #include <generic/plugin.h>
@@ -84,7 +86,7 @@ GENERIC_MODULE_EXPORT int generic_module_init(GModuleApi *api, GError *err)
 }
 #endif
 
-#ifdef BAD_ADD
+#if defined(BAD_ADD) || defined(BAD_BANDS)
 static int one_init(GColorModel *self, const GColorModelOptions *opt, GError *err)
 {
     (void)opt;
@@ -109,7 +111,30 @@ static void one_black(const GColorModel *m, GColor *out)
         out->v[0] = (expr);                                                                                    \
         return G_OK;                                                                                           \
     }
+#ifdef BAD_ADD
 OP2(one_add, 1.01f * x + y) /* the deliberate error */
+#define ONE_NAME "bad_add"
+#define ONE_SUMMARY "luminance only, with a wrong add (tests)"
+#else
+OP2(one_add, x + y)
+#define ONE_NAME "bad_bands"
+#define ONE_SUMMARY "luminance only, with two overlapping wavelength bands (tests)"
+/* two bands whose masks are both white: they do not partition a value (the deliberate error) */
+static int two_bands(const GColorModel *m)
+{
+    (void)m;
+    return 2;
+}
+
+static int white_mask(const GColorModel *m, int band, GColor *out)
+{
+    (void)m;
+    (void)band;
+    out->kind = GCOLOR_VECTOR;
+    out->v[0] = 1.0f;
+    return G_OK;
+}
+#endif
 OP2(one_mul, x * y)
 OP2(one_div, y != 0.0f ? x / y : 0.0f)
 
@@ -162,8 +187,8 @@ static int one_from_nm(const GColorModel *m, const GSpectrumNM *in, GColorRole r
 
 static const GColorModelClass bad_add_class = {
     .abi_version = GCOLOR_ABI_VERSION,
-    .name = "bad_add",
-    .description = "luminance only, with a wrong add (tests)",
+    .name = ONE_NAME,
+    .description = ONE_SUMMARY,
     .init = one_init,
     .black = one_black,
     .add = one_add,
@@ -174,14 +199,17 @@ static const GColorModelClass bad_add_class = {
     .brightness = one_brightness,
     .to_nm = one_to_nm,
     .from_nm = one_from_nm,
+#ifdef BAD_BANDS
+    .band_count = two_bands,
+    .band_mask = white_mask,
+#endif
 };
 
 static void release(void *p) { gcolormodel_destroy(p); }
 
 GENERIC_MODULE_EXPORT int generic_module_init(GModuleApi *api, GError *err)
 {
-    static const GTypeInfo type = {GKIND_COLORMODEL, "bad_add", &bad_add_class, NULL,
-                                   "luminance only, with a wrong add (tests)", release};
+    static const GTypeInfo type = {GKIND_COLORMODEL, ONE_NAME, &bad_add_class, NULL, ONE_SUMMARY, release};
     return api->add_type(api, &type, err);
 }
 #endif
