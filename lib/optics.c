@@ -38,3 +38,31 @@ double goptics_fresnel(double cos_i, double eta)
     double rp = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
     return 0.5 * (rs * rs + rp * rp);
 }
+
+void goptics_frame(GVec3 n, GVec3 *t, GVec3 *b)
+{
+    /* Duff et al. 2017, "Building an orthonormal basis, revisited" */
+    double sign = n.z >= 0.0 ? 1.0 : -1.0;
+    double a = -1.0 / (sign + n.z), c = n.x * n.y * a;
+    *t = gvec3(1.0 + sign * n.x * n.x * a, sign * c, -sign * n.x);
+    *b = gvec3(c, sign + n.y * n.y * a, -n.y);
+}
+
+static GVec3 from_frame(GVec3 n, double x, double y, double z)
+{
+    GVec3 t, b;
+    goptics_frame(n, &t, &b);
+    return gvec3_add(gvec3_add(gvec3_scale(t, x), gvec3_scale(b, y)), gvec3_scale(n, z));
+}
+
+GVec3 goptics_sample_cosine(GVec3 n, double u1, double u2)
+{
+    double r = sqrt(u1), phi = 2.0 * M_PI * u2;
+    return from_frame(n, r * cos(phi), r * sin(phi), sqrt(fmax(0.0, 1.0 - u1)));
+}
+
+GVec3 goptics_sample_hemisphere(GVec3 n, double u1, double u2)
+{
+    double z = u1, r = sqrt(fmax(0.0, 1.0 - z * z)), phi = 2.0 * M_PI * u2;
+    return from_frame(n, r * cos(phi), r * sin(phi), z);
+}

@@ -13,7 +13,20 @@
  *
  * Missing methods (NULL slots) take these defaults: reflection, refraction, emission, diffuse: black;
  * refraction_index: 1; reflection_dir, refraction_dir: not valid; ambient: diffuse * illum;
- * absorption: illum unchanged; normal: the geometric normal; opaque: yes. */
+ * absorption: illum unchanged; normal: the geometric normal; opaque: yes.
+ *
+ * Sampling (for renderers other than a Whitted tracer: path tracers). sample(out, rel_index, u1, u2) draws a
+ * direction `in` for light leaving towards `out`, from two uniform numbers in [0, 1); it returns the
+ * direction, its pdf and the weight value(in, white, out) / pdf as a colour, where value is reflection() for a
+ * reflected and refraction() for a transmitted direction: for a non-ideal direction f * cos(theta_in) / pdf
+ * (pdf per unit solid angle), for an ideal (delta) lobe its reflectance / the probability of choosing the lobe
+ * (then pdf is that probability). pdf(in, out) is the density sample() draws `in` with, counting the non-delta
+ * lobes only (0 for a pair only a delta lobe produces). is_delta says that every lobe is ideal (a mirror, clear
+ * glass): a renderer need not send light samples there. Defaults, built from the methods above so that every
+ * material renders: delta lobes from reflection_dir and refraction_dir, weighted by the brightness of what
+ * they pass on; a cosine lobe weighted by the brightness of diffuse(); without a diffuse colour a uniform
+ * hemisphere lobe for the rest (1 - the delta lobes' weights) with reflection() as its value — correct for
+ * any material, only noisier than a material's own sampling; is_delta: no. */
 #ifndef GENERIC_MATERIAL_H
 #define GENERIC_MATERIAL_H
 
@@ -26,10 +39,25 @@
 extern "C" {
 #endif
 
-/** Version of the material vtable and header (2: the header has depth and cost). */
-#define GMATERIAL_ABI_VERSION 2
+/** Version of the material vtable and header (2: the header has depth and cost; 3: the sampling slots sample,
+ * pdf and is_delta). */
+#define GMATERIAL_ABI_VERSION 3
 
 typedef struct GMaterialClass GMaterialClass;
+
+/** Flags of a sampled direction. */
+enum {
+    GSAMPLE_REFLECT = 1,  /**< on the side of `out`: a reflection */
+    GSAMPLE_TRANSMIT = 2, /**< on the other side: a refraction; the path crosses into the other medium */
+    GSAMPLE_DELTA = 4     /**< from an ideal (delta) lobe: pdf is the probability of choosing the lobe */
+};
+
+/** A direction drawn by gmaterial_sample. */
+typedef struct GMaterialSample {
+    GVec3 in;   /**< the sampled direction, pointing away from the surface (where the light comes from) */
+    double pdf; /**< density of `in` per unit solid angle; for a delta lobe the probability of choosing it */
+    int flags;  /**< GSAMPLE_* */
+} GMaterialSample;
 
 /** A material instance begins with this header; implementations embed it as their first member. */
 struct GMaterial {
@@ -66,6 +94,16 @@ struct GMaterialClass {
     int (*diffuse)(const GMaterial *self, GSurfPoint *sp, GColor *result);
     /** 1 when opaque, 0 when light passes through. */
     int (*opaque)(const GMaterial *self, GSurfPoint *sp);
+    /* appended in version 3: sampling (see the top of this file) */
+    /** Draws `in` for light leaving towards out from u1, u2 in [0, 1): fills s and weight (value / pdf); returns
+     * 1 when a direction was drawn, 0 when none (nothing is passed on), or a negative status. rel_index is
+     * n(from) / n(to) at sp, as for refraction_dir. */
+    int (*sample)(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1, double u2,
+                  GMaterialSample *s, GColor *weight);
+    /** The density (per unit solid angle) with which sample() draws in for out, non-delta lobes only. */
+    double (*pdf)(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index);
+    /** 1 when every lobe is ideal (no light sample can be reflected), 0 otherwise. */
+    int (*is_delta)(const GMaterial *self, GSurfPoint *sp);
 };
 
 /** Fills the header of a new instance (refcount 1); G_ERR_VERSION when the class is of another version. */
@@ -103,7 +141,23 @@ GENERIC_API GENERIC_NODISCARD int gmaterial_diffuse(const GMaterial *m, GSurfPoi
 /** 1 when opaque. */
 GENERIC_API GENERIC_NODISCARD int gmaterial_opaque(const GMaterial *m, GSurfPoint *sp);
 
+/** Draws a direction for light leaving towards out (see the top of this file): 1 drawn, 0 none, or a status.
+ * weight must have storage of m's model; m == NULL (vacuum) draws nothing. */
+GENERIC_API GENERIC_NODISCARD int gmaterial_sample(const GMaterial *m, GSurfPoint *sp, GVec3 out, const GColor *rel_index,
+                                                   double u1, double u2, GMaterialSample *s, GColor *weight);
+/** The density with which gmaterial_sample draws in for out (non-delta lobes; 0 for m == NULL). */
+GENERIC_API double gmaterial_pdf(const GMaterial *m, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index);
+/** 1 when every lobe of m at sp is ideal (mirror, clear glass): light samples would reflect nothing. */
+GENERIC_API GENERIC_NODISCARD int gmaterial_is_delta(const GMaterial *m, GSurfPoint *sp);
+
 /* ---- helpers for material implementations (lib/optics.c) ---- */
+
+/** An orthonormal frame (t, b, n) around the unit vector n. */
+GENERIC_API void goptics_frame(GVec3 n, GVec3 *t, GVec3 *b);
+/** A cosine-distributed direction about the unit normal n from u1, u2 in [0, 1) (pdf cos / pi). */
+GENERIC_API GVec3 goptics_sample_cosine(GVec3 n, double u1, double u2);
+/** A uniformly distributed direction over the hemisphere about n from u1, u2 in [0, 1) (pdf 1 / (2 pi)). */
+GENERIC_API GVec3 goptics_sample_hemisphere(GVec3 n, double u1, double u2);
 
 /** 1 when out is the ideal mirror direction of in about n (within 1e-6 in cosine). */
 GENERIC_API GENERIC_NODISCARD int gmaterial_is_mirror_pair(GVec3 in, GVec3 n, GVec3 out);
