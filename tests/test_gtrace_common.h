@@ -10,6 +10,7 @@
 #include "examples/gtrace/mesh.c"
 #include "examples/gtrace/output.c"
 #include "examples/gtrace/parse.c"
+#include "examples/gtrace/path.c"
 #include "examples/gtrace/probe_light.c"
 #include "examples/gtrace/probe_sample.c"
 #include "examples/gtrace/progress.c"

@@ -25,7 +25,7 @@ static void usage(FILE *f)
             "              [--colormodel M] [--threads N] [--cutoff W] [--bands K] [--exposure STOPS] [--plugin FILE.so]... [-q]\n"
             "              [--allow-plugins] [--confine DIR]\n"
             "              [--probe FILE] [--probe-technique T] [--probe-count N] [--probe-samples N]\n"
-            "              [--probe-scale S] [--probe-shadows on|off]\n"
+            "              [--probe-scale S] [--probe-shadows on|off] [--integrator whitted|path]\n"
             "Renders a scene file (the library's text format with camera, object and light entries) with a\n"
             "Whitted ray tracer that uses colours and materials only through the generic interfaces.\n"
             "Every scene coordinate (after transforms) must be finite and within +-1e15.\n"
@@ -52,6 +52,9 @@ static void usage(FILE *f)
             "                    (default: the camera's, 16; the model's bands are grouped evenly; 1: no\n"
             "                    dispersion)\n"
             "  --threads N       render threads (default: all processors)\n"
+            "  --integrator I    whitted (default: the paper's Fig. 4) or path (path tracing: next-event\n"
+            "                    estimation and material sampling by MIS, Russian roulette; --spp paths\n"
+            "                    per pixel, --depth bounces)\n"
             "  --exposure STOPS  exposure for .png/.jpg output (default: the camera's)\n"
             "  --probe FILE      replace the image of the scene's `light probe` (relative to the current\n"
             "                    directory); the other --probe options replace its other settings\n"
@@ -110,7 +113,7 @@ static int parse_probe_option(const char *a, const char *v, ProbeOverride *p)
 typedef struct Options {
     ProbeOverride probe;
     const char *scene, *out, *colormodel;
-    int width, height, spp, depth, threads, quiet, max_rays, bands;
+    int width, height, spp, depth, threads, quiet, max_rays, bands, integrator;
     int have_exposure, have_cutoff;
     double exposure, cutoff;
 } Options;
@@ -153,7 +156,14 @@ static int parse_args(int argc, char **argv, Options *o)
                 rc = parse_int(a, v, 1, 1024, &o->threads);
             else if (strcmp(a, "--bands") == 0)
                 rc = parse_int(a, v, 1, BANDS_LIMIT, &o->bands);
-            else if (strcmp(a, "--colormodel") == 0)
+            else if (strcmp(a, "--integrator") == 0) {
+                if (strcmp(v, "whitted") == 0 || strcmp(v, "path") == 0)
+                    o->integrator = strcmp(v, "path") == 0 ? RENDER_PATH : RENDER_WHITTED;
+                else {
+                    fprintf(stderr, "gtrace: --integrator expects whitted or path, got '%s'\n", v);
+                    rc = -1;
+                }
+            } else if (strcmp(a, "--colormodel") == 0)
                 o->colormodel = v;
             else if (strncmp(a, "--probe", 7) == 0)
                 rc = parse_probe_option(a, v, &o->probe);
@@ -231,7 +241,8 @@ int main(int argc, char **argv)
     const Camera *cam = &scene->camera;
     RenderSettings rs = {.width = cam->width, .height = cam->height, .spp = cam->spp, .depth = cam->depth,
                          .threads = o.threads, .quiet = o.quiet, .cutoff = o.have_cutoff ? o.cutoff : cam->cutoff,
-                         .max_rays = o.max_rays, .bands = o.bands > 0 ? o.bands : cam->bands};
+                         .max_rays = o.max_rays, .bands = o.bands > 0 ? o.bands : cam->bands,
+                         .integrator = o.integrator};
     if (o.width > 0 && o.height > 0) {
         rs.width = o.width;
         rs.height = o.height;

@@ -6,6 +6,7 @@
  * and become linear sRGB. */
 #include "render.h"
 #include "trace.h"
+#include "path.h"
 #include "progress.h"
 
 #include <math.h>
@@ -18,7 +19,7 @@ typedef struct Job {
     const Scene *scene;
     const Camera *cam;
     Framebuffer *fb;
-    int spp, depth, ntx, max_rays;
+    int spp, depth, ntx, max_rays, integrator;
     Media media0;
 } Job;
 
@@ -45,7 +46,9 @@ static int render_pixel(TraceCtx *c, const Job *job, int x, int y, int *perm, ui
         c->weight = 1.0;
         c->rays_left = job->max_rays;
         c->capped = 0;
-        rc = trace_ray(c, &r, &job->media0, 0, &sample);
+        rc = job->integrator == RENDER_PATH
+                 ? path_trace(c, &r, &job->media0, (uint64_t)y * (uint64_t)job->fb->width + (uint64_t)x, i, &sample)
+                 : trace_ray(c, &r, &job->media0, 0, &sample);
         *capped += (uint64_t)c->capped;
         gscratch_release(c->scratch, m2);
         if (rc < 0)
@@ -117,7 +120,8 @@ int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, Rend
         return gerror_set(err, G_ERR_NOMEM, "out of memory for a %dx%d image", rs->width, rs->height);
     }
     Job job = {.scene = s, .cam = &cam, .fb = fb, .spp = rs->spp, .depth = rs->depth,
-               .max_rays = rs->max_rays > 0 ? rs->max_rays : RENDER_DEFAULT_MAX_RAYS};
+               .max_rays = rs->max_rays > 0 ? rs->max_rays : RENDER_DEFAULT_MAX_RAYS,
+               .integrator = rs->integrator};
     job.ntx = (rs->width + TILE - 1) / TILE;
     int nty = (rs->height + TILE - 1) / TILE, ntiles = job.ntx * nty;
     if (s->medium) {

@@ -14,12 +14,16 @@
 #define RENDER_DEFAULT_MAX_RAYS 4096
 #define RENDER_LIMIT_MAX_RAYS 1000000
 
+/** The light transport algorithm (--integrator). */
+enum { RENDER_WHITTED = 0, RENDER_PATH = 1 };
+
 typedef struct RenderSettings {
     int width, height, spp, depth, threads, quiet;
     double cutoff; /**< adaptive depth control threshold (0: off) */
     int max_rays;  /**< secondary rays per camera sample (0: RENDER_DEFAULT_MAX_RAYS); the rest are not traced */
     int bands;     /**< most wavelength groups a dispersive refraction splits into (0: BANDS_DEFAULT_CAP; 1: no
                         dispersion) */
+    int integrator; /**< RENDER_WHITTED (the paper's Fig. 4, default) or RENDER_PATH (path.c) */
 } RenderSettings;
 
 /** Linear sRGB pixels (from the model's XYZ), row by row from the top. */

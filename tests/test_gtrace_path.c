@@ -1,0 +1,307 @@
+/* test_gtrace_path.c - the path integrator (examples/gtrace/path.c): white furnace (lambert of albedo 1 and 0.5,
+ * a dielectric sphere creates no energy), Whitted and path agree where only ideal surfaces and point lights
+ * are involved, RMSE convergence on a small Cornell box, fluorescence carried from wall to wall in bispectral
+ * only, images independent of the thread count, and no allocation per ray. Images are tiny. */
+#include "test_gtrace_common.h"
+
+#include "generic/builtins.h"
+
+#include <unistd.h>
+
+static void render_with(Scene *s, int w, int h, int spp, int depth, int threads, int integrator, Framebuffer *fb)
+{
+    GError err;
+    gerror_clear(&err);
+    if (!s->rtc && accel_build(s, &err) != G_OK)
+        fail_msg("accel_build: %s", err.message);
+    RenderSettings rs = {.width = w, .height = h, .spp = spp, .depth = depth, .threads = threads, .quiet = 1,
+                         .cutoff = 0.0, .integrator = integrator};
+    RenderStats st;
+    if (render_image(s, &rs, fb, &st, &err) != G_OK)
+        fail_msg("render_image: %s", err.message);
+    assert_int_equal(st.nonfinite, 0);
+}
+
+static double mean_luma(const Framebuffer *fb, int x0, int y0, int x1, int y1)
+{
+    double sum = 0.0;
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++)
+            sum += luma(pixel(fb, x, y));
+    return sum / ((x1 - x0) * (y1 - y0));
+}
+
+static Scene *load_scene_file(const char *rel, const char *model)
+{
+    const char *root = getenv("GENERIC_SOURCE_DIR");
+    char path[2048];
+    snprintf(path, sizeof path, "%s/%s", root ? root : ".", rel);
+    GError err;
+    assert_int_equal(gtrace_register_types(&err), G_OK);
+    Scene *s = NULL;
+    if (scene_load(path, model, &s, &err) != G_OK)
+        fail_msg("%s: %s", path, err.message);
+    return s;
+}
+
+/* ---- white furnace: a sphere in a uniform background of radiance 1 ---- */
+
+/* Mean luma of the sphere's central pixels over the background's (the image's corners). */
+static double furnace_ratio(const char *model, GMaterial *(*make)(const Scene *, double), double param)
+{
+    Scene *s = new_scene(model, gvec3(0, 0, 4), gvec3(0, 0, 0), 40);
+    set_grey(&s->background, 1.0, GCOLOR_LIGHT);
+    add_sphere(s, make(s, param), gvec3(0, 0, 0), 1.0);
+    Framebuffer fb;
+    render_with(s, 12, 12, 256, 16, 2, RENDER_PATH, &fb);
+    double bg = (luma(pixel(&fb, 0, 0)) + luma(pixel(&fb, 11, 0)) + luma(pixel(&fb, 0, 11)) + luma(pixel(&fb, 11, 11))) / 4;
+    double in = mean_luma(&fb, 4, 4, 8, 8);
+    print_message("%s: background %.5f, sphere %.5f, ratio %.5f\n", model, bg, in, in / bg);
+    assert_true(bg > 0.5);
+    framebuffer_free(&fb);
+    scene_destroy(s);
+    return in / bg;
+}
+
+static void test_white_furnace(void **state)
+{
+    const char *model = *state;
+    /* a convex lambert sphere: every bounce leaves it, so radiance = albedo * background exactly */
+    assert_near(furnace_ratio(model, lambert, 1.0), 1.0, 0.01);
+    assert_near(furnace_ratio(model, lambert, 0.5), 0.5, 0.005);
+    /* clear glass loses nothing: what comes out is the background, no more (paths cut at depth 16 lose a
+     * little at most) */
+    double g = furnace_ratio(model, glass, 1.5);
+    assert_true(g <= 1.01);
+    assert_true(g >= 0.97);
+}
+
+/* ---- Whitted and path agree on ideal surfaces and point lights ---- */
+
+static double compare_integrators(Scene *s, int depth, int spp, double *whitted, double *path)
+{
+    Framebuffer fw, fp; /* the same samples per pixel: the same pixel positions */
+    render_with(s, 16, 12, spp, depth, 2, RENDER_WHITTED, &fw);
+    render_with(s, 16, 12, spp, depth, 2, RENDER_PATH, &fp);
+    *whitted = mean_luma(&fw, 0, 0, 16, 12);
+    *path = mean_luma(&fp, 0, 0, 16, 12);
+    /* the means over the four quarters: the two agree locally too */
+    double worst = 0.0;
+    for (int by = 0; by < 2; by++)
+        for (int bx = 0; bx < 2; bx++) {
+            double a = mean_luma(&fw, 8 * bx, 6 * by, 8 * bx + 8, 6 * by + 6);
+            double b = mean_luma(&fp, 8 * bx, 6 * by, 8 * bx + 8, 6 * by + 6);
+            worst = fmax(worst, fabs(a - b) / fmax(*whitted, 1e-6));
+        }
+    framebuffer_free(&fw);
+    framebuffer_free(&fp);
+    print_message("whitted %.5f, path %.5f, worst quarter's difference %.4f of the mean\n", *whitted, *path, worst);
+    return worst;
+}
+
+static void test_whitted_agrees(void **state)
+{
+    (void)state;
+    /* only ideal surfaces: an emitting sphere seen directly, in a mirror floor, through and in a glass
+     * sphere and a mirror sphere; a point light that no ideal surface reflects */
+    Scene *s = new_scene("rgb", gvec3(0, 1.2, 5), gvec3(0, 0.6, 0), 45);
+    add_plane(s, mirror(s, 0.8), gvec3(0, 0, 0), gvec3(0, 1, 0));
+    add_sphere(s, glass(s, 1.5), gvec3(-0.7, 0.6, 0), 0.6);
+    add_sphere(s, mirror(s, 0.9), gvec3(0.7, 0.6, -0.3), 0.6);
+    add_sphere(s, emitter(s, 2.0), gvec3(0.2, 1.8, -1.5), 0.5);
+    Light *l = add_light(s, LIGHT_POINT, 5.0);
+    l->position = gvec3(0, 3, 2);
+    double w, p;
+    double worst = compare_integrators(s, 6, 256, &w, &p);
+    assert_true(w > 0.01);
+    assert_near(p / w, 1.0, 0.02);
+    assert_true(worst < 0.05);
+    scene_destroy(s);
+
+    /* a diffuse floor lit by a point light, seen directly and in ideal surfaces; depth 1 leaves no path with
+     * a second diffuse vertex, so path tracing computes what Whitted does (its glass picks one lobe) */
+    s = new_scene("rgb", gvec3(0, 1.2, 5), gvec3(0, 0.6, 0), 45);
+    add_plane(s, lambert(s, 0.6), gvec3(0, 0, 0), gvec3(0, 1, 0));
+    add_sphere(s, glass(s, 1.5), gvec3(-0.7, 0.6, 0), 0.6);
+    add_sphere(s, mirror(s, 0.9), gvec3(0.7, 0.6, -0.3), 0.6);
+    l = add_light(s, LIGHT_POINT, 20.0);
+    l->position = gvec3(1, 3, 2);
+    worst = compare_integrators(s, 1, 64, &w, &p);
+    assert_true(w > 0.01);
+    assert_near(p / w, 1.0, 0.02);
+    assert_true(worst < 0.05);
+    scene_destroy(s);
+}
+
+/* ---- convergence: RMSE halves when the samples quadruple ---- */
+
+/* RMSE against ref over the pixels where ref is smooth (each channel within 10% of the mean of its four
+ * neighbours) and no lamp is seen: at silhouettes and the lamp's edges the error of the pixel's area integral falls faster than 1 / sqrt(n) under the
+ * camera's stratified pixel samples, which is not the integrator's Monte Carlo error. */
+static double rmse_smooth(const Framebuffer *a, const Framebuffer *ref, int *used)
+{
+    double sum = 0.0;
+    int n = 0, w = ref->width, h = ref->height;
+    for (int y = 1; y + 1 < h; y++)
+        for (int x = 1; x + 1 < w; x++) {
+            int smooth = 1;
+            for (int ch = 0; ch < 3; ch++) {
+                double c = pixel(ref, x, y)[ch];
+                double m = (pixel(ref, x - 1, y)[ch] + pixel(ref, x + 1, y)[ch] + pixel(ref, x, y - 1)[ch] +
+                            pixel(ref, x, y + 1)[ch]) / 4;
+                smooth &= fabs(c - m) <= 0.1 * fmax(m, 1e-3) && m < 2.0 && c < 2.0; /* not the lamp */
+            }
+            if (!smooth)
+                continue;
+            for (int ch = 0; ch < 3; ch++) {
+                double d = pixel(a, x, y)[ch] - pixel(ref, x, y)[ch];
+                sum += d * d;
+            }
+            n += 3;
+        }
+    *used = n / 3;
+    return n ? sqrt(sum / n) : 0.0;
+}
+
+static void test_convergence(void **state)
+{
+    (void)state;
+    Scene *s = load_scene_file("examples/scenes/cornell.scene", "rgb");
+    Framebuffer ref, f1, f4;
+    render_with(s, 24, 24, 2048, 6, 2, RENDER_PATH, &ref);
+    render_with(s, 24, 24, 4, 6, 2, RENDER_PATH, &f1);
+    render_with(s, 24, 24, 16, 6, 2, RENDER_PATH, &f4);
+    int n1, n4;
+    double e1 = rmse_smooth(&f1, &ref, &n1), e4 = rmse_smooth(&f4, &ref, &n4);
+    print_message("RMSE over %d smooth pixels at 4 spp %.5f, at 16 spp %.5f: ratio %.3f (mean luma %.4f)\n", n1, e1,
+                  e4, e1 / e4, mean_luma(&ref, 0, 0, 24, 24));
+    assert_true(n1 >= 200);
+    assert_true(e4 > 0.0);
+    assert_near(e1 / e4, 2.0, 0.3);
+    framebuffer_free(&ref);
+    framebuffer_free(&f1);
+    framebuffer_free(&f4);
+    scene_destroy(s);
+}
+
+/* ---- fluorescence: the white wall receives the fluorescent wall's orange in bispectral only ---- */
+
+/* Red over blue of the white (right) wall's pixels. */
+static double right_wall_red_over_blue(const char *model)
+{
+    GColorModel *probe_model = model_or_skip(model);
+    gcolormodel_destroy(probe_model);
+    Scene *s = load_scene_file("examples/scenes/cornell_fluorescent.scene", model);
+    Framebuffer fb;
+    render_with(s, 16, 16, 64, 4, 2, RENDER_PATH, &fb);
+    double r = 0.0, b = 0.0, lr = 0.0, lb = 0.0;
+    for (int y = 5; y < 11; y++) {
+        for (int x = 13; x < 15; x++) { /* the right wall */
+            r += pixel(&fb, x, y)[0];
+            b += pixel(&fb, x, y)[2];
+        }
+        for (int x = 1; x < 3; x++) { /* the fluorescent wall */
+            lr += pixel(&fb, x, y)[0];
+            lb += pixel(&fb, x, y)[2];
+        }
+    }
+    print_message("%s: right wall red %.5f blue %.5f (ratio %.3f); fluorescent wall red %.5f blue %.5f\n", model,
+                  r, b, r / b, lr, lb);
+    assert_true(b > 0.0);
+    framebuffer_free(&fb);
+    scene_destroy(s);
+    return r / b;
+}
+
+static void test_fluorescence_between_walls(void **state)
+{
+    (void)state;
+    double bi = right_wall_red_over_blue("bispectral"), sp = right_wall_red_over_blue("spectrum");
+    /* the 450 nm light alone has red / blue of about 0.08 in linear sRGB */
+    assert_true(sp < 0.2);
+    assert_true(bi > 0.5);
+}
+
+/* ---- determinism: the image does not depend on the thread count ---- */
+
+static void test_thread_independent(void **state)
+{
+    (void)state;
+    Scene *s = load_scene_file("examples/scenes/cornell.scene", "rgb");
+    Framebuffer a, b;
+    render_with(s, 20, 18, 4, 6, 1, RENDER_PATH, &a);
+    render_with(s, 20, 18, 4, 6, 2, RENDER_PATH, &b);
+    assert_memory_equal(a.pixels, b.pixels, sizeof(float) * 3 * 20 * 18);
+    /* and a different sample count gives a different image (the sequences depend on the sample index) */
+    Framebuffer c;
+    render_with(s, 20, 18, 5, 6, 1, RENDER_PATH, &c);
+    assert_memory_not_equal(a.pixels, c.pixels, sizeof(float) * 3 * 20 * 18);
+    framebuffer_free(&a);
+    framebuffer_free(&b);
+    framebuffer_free(&c);
+    scene_destroy(s);
+}
+
+/* ---- no allocation per ray ---- */
+
+static long counted;
+static void *count_alloc(size_t n, void *u) { (void)u; counted++; return malloc(n); }
+static void *count_realloc(void *p, size_t n, void *u) { (void)u; counted++; return realloc(p, n); }
+static void count_free(void *p, void *u) { (void)u; free(p); }
+
+static long allocations_of_render(Scene *s, int spp)
+{
+    GAllocator a = {count_alloc, count_realloc, count_free, NULL};
+    counted = 0;
+    gmem_set_allocator(&a);
+    Framebuffer fb;
+    render_with(s, 12, 12, spp, 8, 1, RENDER_PATH, &fb);
+    gmem_set_allocator(NULL);
+    long n = counted;
+    framebuffer_free(&fb);
+    return n;
+}
+
+static void test_no_allocation_per_ray(void **state)
+{
+    const char *model = *state;
+    GColorModel *m = model_or_skip(model);
+    gcolormodel_destroy(m);
+    /* every light type the path tracer samples, glass (media, transmission) and a diffuse box */
+    Scene *s = load_scene_file("examples/scenes/cornell.scene", model);
+    GError err;
+    Light *l = add_light(s, LIGHT_POINT, 1.0);
+    l->position = gvec3(0.5, 1.5, 0.5);
+    l = add_light(s, LIGHT_SPHERE, 2.0);
+    l->position = gvec3(-0.5, 1.6, 0.5);
+    l->radius = 0.1;
+    l = add_light(s, LIGHT_DIRECTIONAL, 0.5);
+    l->direction = gvec3_normalize(gvec3(0.2, -1, -0.3));
+    add_sphere(s, glass(s, 1.5), gvec3(0.3, 0.9, 0.4), 0.25);
+    assert_int_equal(accel_build(s, &err), G_OK);
+    long a1 = allocations_of_render(s, 1), a16 = allocations_of_render(s, 16);
+    print_message("%s: %ld allocations at 1 spp, %ld at 16 spp\n", model, a1, a16);
+    assert_int_equal(a1, a16);
+    scene_destroy(s);
+}
+
+int main(void)
+{
+    GError err;
+    if (generic_register_builtins(&err) != G_OK) {
+        fprintf(stderr, "%s\n", err.message);
+        return 1;
+    }
+    const struct CMUnitTest tests[] = {
+        {"test_white_furnace (rgb)", test_white_furnace, NULL, NULL, (void *)"rgb"},
+        {"test_white_furnace (spectrum)", test_white_furnace, NULL, NULL, (void *)"spectrum"},
+        {"test_white_furnace (bispectral)", test_white_furnace, NULL, NULL, (void *)"bispectral"},
+        cmocka_unit_test(test_whitted_agrees),
+        cmocka_unit_test(test_convergence),
+        cmocka_unit_test(test_fluorescence_between_walls),
+        cmocka_unit_test(test_thread_independent),
+        {"test_no_allocation_per_ray (rgb)", test_no_allocation_per_ray, NULL, NULL, (void *)"rgb"},
+        {"test_no_allocation_per_ray (bispectral)", test_no_allocation_per_ray, NULL, NULL, (void *)"bispectral"},
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
