@@ -222,6 +222,39 @@ static void test_fluorescence_between_walls(void **state)
     assert_true(bi > 0.5);
 }
 
+/* ---- the environment: NEE with the probe's distribution, MIS with material sampling ---- */
+
+/* Mean luma of probe.scene at depth 1 with the probe sampled as `technique`. */
+static double probe_scene_mean(const char *technique, int spp)
+{
+    const char *root = getenv("GENERIC_SOURCE_DIR");
+    char path[2048];
+    snprintf(path, sizeof path, "%s/examples/scenes/probe.scene", root ? root : ".");
+    GError err;
+    assert_int_equal(gtrace_register_types(&err), G_OK);
+    ProbeOverride ov = {.technique = technique, .shadows = -1};
+    Scene *s = NULL;
+    if (scene_load_with(path, NULL, &ov, &s, &err) != G_OK)
+        fail_msg("%s: %s", path, err.message);
+    Framebuffer fb;
+    render_with(s, 16, 12, spp, 1, 2, RENDER_PATH, &fb);
+    double m = mean_luma(&fb, 0, 0, 16, 12);
+    framebuffer_free(&fb);
+    scene_destroy(s);
+    return m;
+}
+
+static void test_environment_mis(void **state)
+{
+    (void)state;
+    /* technique reference: the probe's distribution for NEE, weighted against material sampling by MIS;
+     * mediancut: its lights are skipped, the probe is only reached by material sampling (noisy: the sun) */
+    double mis = probe_scene_mean("reference", 64), bsdf = probe_scene_mean("mediancut", 4096);
+    print_message("sky and sun at depth 1: MIS %.5f, material sampling only %.5f\n", mis, bsdf);
+    assert_true(mis > 0.1);
+    assert_near(bsdf / mis, 1.0, 0.02);
+}
+
 /* ---- determinism: the image does not depend on the thread count ---- */
 
 static void test_thread_independent(void **state)
@@ -299,6 +332,7 @@ int main(void)
         cmocka_unit_test(test_whitted_agrees),
         cmocka_unit_test(test_convergence),
         cmocka_unit_test(test_fluorescence_between_walls),
+        cmocka_unit_test(test_environment_mis),
         cmocka_unit_test(test_thread_independent),
         {"test_no_allocation_per_ray (rgb)", test_no_allocation_per_ray, NULL, NULL, (void *)"rgb"},
         {"test_no_allocation_per_ray (bispectral)", test_no_allocation_per_ray, NULL, NULL, (void *)"bispectral"},
