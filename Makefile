@@ -141,7 +141,10 @@ bench-pov: $(BUILD)/bin/gtrace
 .PHONY: bench-dispersion
 bench-dispersion: $(BUILD)/bin/gtrace
 	@bench/dispersion.sh $(BUILD)
-bench: bench-pov bench-dispersion
+.PHONY: bench-path
+bench-path: $(BUILD)/bin/gtrace
+	@bench/path.sh $(BUILD)
+bench: bench-pov bench-dispersion bench-path
 # (end of gtrace)
 
 # ---- run-time plug-in modules (examples/plugins/, tests/plugins/) ----
