@@ -43,6 +43,7 @@ typedef struct PathCtx {
     TraceCtx *c;
     Rng rng;
     const Light *env_light; /**< the reference probe light that samples the background probe (NULL: none) */
+    int skip_lo, skip_hi;   /**< the background probe's technique lights in the scene's list (not used) */
 } PathCtx;
 
 #define CHECK(expr)                                                                                                    \
@@ -72,16 +73,23 @@ static GVec3 to_probe(const ProbeEnv *e, GVec3 v)
                  R[2] * v.x + R[5] * v.y + R[8] * v.z);
 }
 
-/* 1 when l is a directional light a probe technique made for the background probe. */
-static int is_background_light(const Scene *s, const Light *l)
+/* The run [*lo, *hi) of the scene's lights that a probe technique made for the background probe (its
+ * directional lights, added one after the other by probe_attach); empty when there is none. */
+static void background_lights(const Scene *s, int *lo, int *hi)
 {
+    *lo = *hi = 0;
     const ProbeEnv *e = s->env;
-    if (!e || l->kind == LIGHT_PROBE)
-        return 0;
-    for (int i = 0; i < e->nlights; i++)
-        if (e->lights[i] == l)
-            return 1;
-    return 0;
+    if (!e || e->nlights < 1 || e->lights[0]->kind == LIGHT_PROBE)
+        return;
+    for (int i = 0; i + e->nlights <= s->nlights; i++)
+        if (s->lights[i] == e->lights[0]) {
+            for (int k = 1; k < e->nlights; k++)
+                if (s->lights[i + k] != e->lights[k])
+                    return;
+            *lo = i;
+            *hi = i + e->nlights;
+            return;
+        }
 }
 
 /* The distance along r to area light l within (0, tmax), INFINITY when missed; *pdf is the density (solid
@@ -205,7 +213,7 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
     for (int i = 0; i < s->nlights; i++) {
         const Light *l = s->lights[i];
         if (l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT || l->kind == LIGHT_DIRECTIONAL) {
-            if (!is_background_light(s, l))
+            if (i < p->skip_lo || i >= p->skip_hi)
                 CHECK(light_shade(c, l, sp, facing, media, to_viewer, opaque, &lt, out));
             continue;
         }
@@ -426,6 +434,7 @@ int path_trace(TraceCtx *c, const Ray *r, const Media *media, uint64_t pixel, in
         if (l->kind == LIGHT_PROBE && s->env && l->env == s->env && s->env->dist.row_cdf)
             p.env_light = l;
     }
+    background_lights(s, &p.skip_lo, &p.skip_hi);
     int saved = c->band;
     c->band = -1;
     int rc = path_radiance(&p, r, media, 0, 1.0, 0, 0.0, out);

@@ -23,6 +23,9 @@ grep -q "usage: gtrace SCENE -o OUT" "$TMP/help" || fail "--help does not print 
 "$GT" x.scene -o "$TMP/x.png" --spp zero > "$TMP/err" 2>&1
 [ $? -eq 2 ] || fail "--spp zero: expected exit status 2"
 grep -q -- "--spp expects a whole number" "$TMP/err" || fail "--spp zero: no clear message: $(cat "$TMP/err")"
+"$GT" x.scene -o "$TMP/x.png" --integrator bogus > "$TMP/err" 2>&1
+[ $? -eq 2 ] || fail "--integrator bogus: expected exit status 2"
+grep -q -- "--integrator expects whitted or path" "$TMP/err" || fail "--integrator bogus: no clear message: $(cat "$TMP/err")"
 
 cat > "$TMP/good.scene" << 'EOF'
 material grey lambert { reflectance rgb 0.5 0.5 0.5 }
@@ -53,6 +56,11 @@ for m in rgb spectrum9 spectrum bispectral; do
     [ -s "$TMP/$m.exr" ] || fail "--colormodel $m wrote no image"
     grep -q "40x30, 1 spp, depth 2, $m," "$TMP/out" || fail "--colormodel $m: no summary line: $(cat "$TMP/out")"
     grep -q "M rays/s" "$TMP/out" || fail "the summary line lacks rays/s"
+done
+for m in rgb bispectral; do
+    "$GT" "$TMP/good.scene" -o "$TMP/path_$m.exr" --colormodel $m --integrator path --spp 4 > "$TMP/out" 2>&1 ||
+        fail "--integrator path --colormodel $m: $(cat "$TMP/out")"
+    grep -q "40x30, 4 spp, depth 2, $m," "$TMP/out" || fail "--integrator path: no summary line: $(cat "$TMP/out")"
 done
 "$GT" "$TMP/good.scene" -o "$TMP/x.png" --colormodel nosuchmodel > "$TMP/err" 2>&1 && fail "an unknown colour model succeeded"
 grep -q "nosuchmodel" "$TMP/err" || fail "an unknown colour model is not named: $(cat "$TMP/err")"
