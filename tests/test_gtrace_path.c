@@ -303,19 +303,23 @@ static void test_no_allocation_per_ray(void **state)
     /* every light type the path tracer samples, glass (media, transmission) and a diffuse box */
     Scene *s = load_scene_file("examples/scenes/cornell.scene", model);
     GError err;
-    Light *l = add_light(s, LIGHT_POINT, 1.0);
-    l->position = gvec3(0.5, 1.5, 0.5);
-    l = add_light(s, LIGHT_SPHERE, 2.0);
-    l->position = gvec3(-0.5, 1.6, 0.5);
-    l->radius = 0.1;
-    l = add_light(s, LIGHT_DIRECTIONAL, 0.5);
-    l->direction = gvec3_normalize(gvec3(0.2, -1, -0.3));
-    add_sphere(s, glass(s, 1.5), gvec3(0.3, 0.9, 0.4), 0.25);
+    /* the scene's library owns what the file made; what is added here is freed here */
+    Light *l1 = add_light(s, LIGHT_POINT, 1.0), *l2 = add_light(s, LIGHT_SPHERE, 2.0);
+    Light *l3 = add_light(s, LIGHT_DIRECTIONAL, 0.5);
+    l1->position = gvec3(0.5, 1.5, 0.5);
+    l2->position = gvec3(-0.5, 1.6, 0.5);
+    l2->radius = 0.1;
+    l3->direction = gvec3_normalize(gvec3(0.2, -1, -0.3));
+    Object *ball = add_sphere(s, glass(s, 1.5), gvec3(0.3, 0.9, 0.4), 0.25);
     assert_int_equal(accel_build(s, &err), G_OK);
     long a1 = allocations_of_render(s, 1), a16 = allocations_of_render(s, 16);
     print_message("%s: %ld allocations at 1 spp, %ld at 16 spp\n", model, a1, a16);
     assert_int_equal(a1, a16);
     scene_destroy(s);
+    light_free(l1);
+    light_free(l2);
+    light_free(l3);
+    object_free(ball);
 }
 
 int main(void)
