@@ -1,7 +1,8 @@
 /* test_gtrace_path.c - the path integrator (examples/gtrace/path.c): white furnace (lambert of albedo 1 and 0.5,
  * a dielectric sphere creates no energy), Whitted and path agree where only ideal surfaces and point lights
- * are involved and through a dispersive sphere (hero band), RMSE convergence on a small Cornell box, fluorescence carried from wall to wall in bispectral
- * only, images independent of the thread count, and no allocation per ray. Images are tiny. */
+ * are involved and through a dispersive sphere (hero band), the environment's MIS, RMSE convergence on a small
+ * Cornell box, fluorescence carried from wall to wall in bispectral only, images independent of the thread
+ * count, and no allocation per ray. Images are tiny. */
 #include "test_gtrace_common.h"
 
 #include "generic/builtins.h"
