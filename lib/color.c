@@ -396,6 +396,8 @@ int gcolor_convert(GColor *dst, const GColor *src, GColorRole role)
 
 /* ---- wavelength bands (dispersion) ---- */
 
+size_t gcolormodel_value_bytes(const GColorModel *m) { return (size_t)m->capacity * sizeof(float); }
+
 int gcolormodel_band_count(const GColorModel *m)
 {
     int n = m->cls->band_count ? m->cls->band_count(m) : 1;

@@ -226,6 +226,9 @@ GENERIC_API GENERIC_NODISCARD int gcolor_fill(GColor *out, double value);
  * matrix operand: the model's definition (bispectral: its diagonal, as pow), G_ERR_UNSUPPORTED in a plug-in
  * model that gives no exp of its own. */
 GENERIC_API GENERIC_NODISCARD int gcolor_exp(GColor *out, const GColor *a, double s);
+/** Bytes of storage one value of the model takes (what gcolor_alloc allocates): for budgets of renderers
+ * that keep many values. */
+GENERIC_API size_t gcolormodel_value_bytes(const GColorModel *m);
 /** Number of wavelength bands of the model (>= 1; see GColorModelClass.band_count). */
 GENERIC_API int gcolormodel_band_count(const GColorModel *m);
 /** out = the mask of band `band` of out's model: mul(mask, light) keeps the band's light; the masks of all
