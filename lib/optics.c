@@ -6,11 +6,12 @@
 
 int gmaterial_is_mirror_pair(GVec3 in, GVec3 n, GVec3 out)
 {
+    /* cos(ideal, out) > 1 - 1e-6 without square roots: compare squares once the dot product is positive */
     GVec3 ideal = gvec3_sub(gvec3_scale(n, 2.0 * gvec3_dot(in, n)), in);
-    double li = gvec3_length(ideal), lo = gvec3_length(out);
-    if (li == 0.0 || lo == 0.0)
+    double d = gvec3_dot(ideal, out), c = 1.0 - 1e-6;
+    if (!(d > 0.0))
         return 0;
-    return gvec3_dot(ideal, out) / (li * lo) > 1.0 - 1e-6;
+    return d * d > c * c * gvec3_dot(ideal, ideal) * gvec3_dot(out, out);
 }
 
 int goptics_refract(GVec3 view, GVec3 n, double eta, GVec3 *dir)
