@@ -133,7 +133,9 @@ const GOiioOps *goiio_ops(GError *err)
     if (loaded)
         return &ops;
     gerror_set(err, G_ERR_IO, "image input and output need the OpenImageIO module %s, which cannot be loaded: %s",
-               GOIIO_MODULE_FILE, failure[0] ? failure : "not found beside the library or the program");
+               GOIIO_MODULE_FILE, failure[0] ? failure :
+               "not found (looked in generic/ and ../lib/generic/ beside the library and the program, in "
+               GENERIC_LIBDIR "/generic/ and on the dynamic loader's path; GENERIC_OIIO_MODULE may name it)");
     return NULL;
 }
 
