@@ -53,6 +53,7 @@ static void note(const char *text)
     failure[len + n] = 0;
 }
 
+#ifndef GENERIC_OIIO_STATIC
 /* Opens one candidate; 1 when the module is loaded and accepted. A missing file is noted only when named. */
 static int try_module(const char *path, int named)
 {
@@ -100,6 +101,8 @@ static int try_beside(const char *file)
     snprintf(cand, sizeof cand, "%s/../lib/generic/%s", real, GOIIO_MODULE_FILE);
     return try_module(cand, 0);
 }
+
+#endif
 
 static void load(void)
 {
