@@ -29,7 +29,8 @@ CXX     ?= c++
 WARN    := -Wall -Wextra -Werror
 CPPFLAGS += -Iinclude -Ilib -I. -D_GNU_SOURCE -DGENERIC_BUILD -MMD -MP
 # -fvisibility=hidden: only declarations marked GENERIC_API (include/generic/export.h) are exported; the version
-# script keeps the C++ shims' inline instantiations of OpenImageIO templates out of the dynamic symbol table too.
+# scripts say the same to the linker (lib/libgeneric.map; lib/oiio_module.map keeps the OpenImageIO module's
+# inline instantiations of OpenImageIO templates out of its dynamic symbol table).
 VISIBILITY := -fvisibility=hidden
 CFLAGS  += -std=c11 $(OPT) -g -fPIC -fopenmp $(WARN) $(SANFLAGS) $(VISIBILITY)
 CXXFLAGS += -std=c++17 $(OPT) -g -fPIC $(WARN) $(SANFLAGS) $(VISIBILITY) -fvisibility-inlines-hidden \
