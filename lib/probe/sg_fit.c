@@ -4,8 +4,10 @@
  * of kmeans.c; each pixel then belongs to its nearest centre, and each cluster gives a lobe whose axis is
  * the cluster's energy-weighted mean direction and whose sharpness makes the lobe's own mean direction
  * equally long (the von Mises-Fisher moment estimate: |mean| = coth lambda - 1 / lambda). A probe that is
- * one lobe gives that lobe back. Sharpness is kept in [0.01, (H / pi)^2] (a lobe at least a pixel wide, so
- * that the pixel sums below see it); a cluster without energy gets its centre and sharpness n.
+ * one lobe gives that lobe back. Sharpness is kept in [0.01, (H / 2 pi)^2]: the lobe's width 1 / sqrt(lambda)
+ * is then at least two pixels, so that the pixel sums below integrate it (a sun, sharper than that, gets a
+ * lobe of that width: its irradiance hardly differs, but least squares on narrower lobes sampled at pixel
+ * centres inflates their amplitude by half). A cluster without energy gets its centre and sharpness n.
  * Amplitudes, per channel:
  *   naive       each lobe carries its cluster's power: amp = (sum of Q) / integral of the lobe;
  *   ls          least squares on the radiance, min sum over pixels of Omega (P - sum amp_k G_k)^2 (the
@@ -49,7 +51,7 @@ static int fit_lobes(const GProbe *p, int n, GProbeSGLobe *lobes, double (*power
             for (int c = 0; c < 3; c++)
                 power[best][c] += q[c];
         }
-    double hi = fmax(1.0, (p->h / M_PI) * (p->h / M_PI));
+    double hi = fmax(1.0, (p->h / (2.0 * M_PI)) * (p->h / (2.0 * M_PI)));
     for (int k = 0; k < n && rc == G_OK; k++) {
         double *a = acc + 4 * k, len = sqrt(a[1] * a[1] + a[2] * a[2] + a[3] * a[3]);
         GProbeSGLobe *l = &lobes[k];
