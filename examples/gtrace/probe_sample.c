@@ -131,15 +131,14 @@ double probe_dist_pdf(const ProbeDist *d, const GProbe *p, GVec3 dir)
 }
 
 /* A basis as an ambient term: the material reflects a light of the basis's irradiance E(n) arriving along the
- * normal n (for Lambert exactly the diffuse albedo times E / pi); no shadow rays. */
+ * normal n (for Lambert exactly the diffuse albedo times E / pi); no shadow rays; SH's negative ringing gives
+ * no light. */
 static int probe_basis_shade(TraceCtx *c, const ProbeEnv *env, GSurfPoint *sp, GVec3 facing, GVec3 out_dir,
                              LightTmp *t, GColor *result)
 {
-    GProbeLight e = {probe_from_world(env, facing), {0.0, 0.0, 0.0}};
-    gprobe_basis_irradiance(&env->basis, &e.dir, 1, e.rgb);
-    for (int k = 0; k < 3; k++)
-        e.rgb[k] = e.rgb[k] > 0.0 ? e.rgb[k] * env->scale : 0.0; /* SH's ringing gives no negative light */
-    int rc = gprobe_light_color(&e, &t->illum);
+    int rc = gprobe_basis_irradiance_color(&env->basis, probe_from_world(env, facing), &t->illum);
+    if (rc == G_OK && env->scale != 1.0)
+        rc = gcolor_scale(&t->illum, &t->illum, env->scale);
     if (rc == G_OK)
         rc = gmaterial_reflection(sp->material, sp, facing, &t->illum, out_dir, &t->refl);
     if (rc == G_OK)

@@ -368,6 +368,9 @@ GENERIC_API GENERIC_NODISCARD int gprobe_pixel_color(const GProbe *p, int u, int
 /** The colour of a directional light (its irradiance on a surface facing it) as a light in the colour
  * model of `out`. */
 GENERIC_API GENERIC_NODISCARD int gprobe_light_color(const GProbeLight *l, GColor *out);
+/** A basis's irradiance for a unit normal as a light (GCOLOR_LIGHT) in the colour model of `out`; negative
+ * values (SH's ringing) become 0. */
+GENERIC_API GENERIC_NODISCARD int gprobe_basis_irradiance_color(const GProbeBasis *b, GVec3 normal, GColor *out);
 
 #ifdef __cplusplus
 }
