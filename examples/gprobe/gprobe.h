@@ -51,6 +51,59 @@ int text_close(TextOut *t, int ok);
 /** Progress reporter for the library's callback: a percentage on stderr when it is a terminal. */
 void progress_print(void *user, const char *stage, double fraction);
 
+/* ---- the approximations compared (methods.c) ---- */
+
+/** One approximation method: a light technique (light >= 0) or a basis (basis >= 0). */
+typedef struct Method {
+    const char *name;
+    int light;        /* GProbeTechnique or -1 */
+    int basis;        /* GProbeBasisKind or -1 */
+    const char *unit; /* what N counts: lights, coefficients, lobes */
+} Method;
+/** The names, comma separated, for messages. */
+extern const char methods_names[];
+int method_count(void);
+const Method *method_get(int i);
+/** Index of a name, -1 when unknown. */
+int method_find(const char *name);
+/** 1 for the legacy sh9 entry (the nine-coefficient reference line; not in the default list). */
+int method_is_sh9(int i);
+/** The sizes a method is tried at for the given light counts: SH always at 4, 9, 16, 25 coefficients, the
+ * ambient cube at 6, the others at the counts they can make (skipped ones reported unless quiet). */
+int method_sizes(int i, const int *counts, int ncounts, int fit_normals, int *out, int quiet);
+
+/** One method made for one size. */
+typedef struct Approx {
+    int method, n;
+    GProbeLight *lights; /* light methods */
+    GProbeBasis basis;   /* basis methods */
+} Approx;
+/** Makes method `method` with n lights, coefficients or lobes; rep (may be NULL) gets the irradiance fit's report. */
+int approx_make(const GProbe *p, int method, int n, const GProbeOptions *opt, Approx *a, GProbeFitReport *rep,
+                GError *err);
+/** Irradiance at m normals (3 doubles each). */
+void approx_irradiance(const Approx *a, const GVec3 *normals, int m, double *E);
+void approx_free(Approx *a);
+
+/** One result row of eval and report. */
+typedef struct Row {
+    int method, count;
+    GProbeErrors e;
+    double seconds;
+} Row;
+/** The CSV of rows: technique,count,unit,mean_rel,max_rel,mean_norm,max_norm,smape,seconds. */
+void rows_csv(FILE *f, const Row *rows, int n);
+/** Parses a comma-separated list of counts (1..4096) into counts (at most max); the number or -1. */
+int parse_count_list(const char *s, int *counts, int max);
+/** Parses a comma-separated list of method names into use[method_count()]; 0 or -1. */
+int parse_method_list(const char *s, int *use);
+/** Makes one method at size n, times it and compares its irradiance at the m normals with truth (approx: 3 m
+ * doubles of room); keep (may be NULL) receives the approximation. -1 with a message on failure. */
+int eval_one(const GProbe *p, int method, int n, const GProbeOptions *opt, const GVec3 *normals, int m,
+             const double *truth, double *approx, Row *row, Approx *keep, int quiet);
+/** The default method selection: everything but sh9. */
+void methods_default(int *use);
+
 /* the commands: each returns the process exit status */
 int cmd_eval(int argc, char **argv);
 int cmd_approx(int argc, char **argv);
@@ -58,6 +111,7 @@ int cmd_irradiance(int argc, char **argv);
 int cmd_convert(int argc, char **argv);
 int cmd_compare(int argc, char **argv); /* compare.c */
 int cmd_sky(int argc, char **argv);     /* sky.c */
+int cmd_report(int argc, char **argv);  /* report.c */
 
 /** Draws the Fig. 6 plot of a CSV written by eval into png with gnuplot; -1 with a message on failure. */
 int plot_errors(const char *csv, const char *png, const char *title);

@@ -21,10 +21,13 @@ static void usage(FILE *f)
 {
     fprintf(f,
             "usage: gprobe COMMAND [options]     (gprobe COMMAND --help for its options)\n"
-            "Approximates an HDR light probe by N directional lights and compares the techniques by the\n"
-            "irradiance they give, as in Madsen & Laursen's evaluation (their Fig. 6).\n"
+            "Approximates an HDR light probe by N directional lights, spherical harmonics, an ambient cube or\n"
+            "spherical Gaussians and compares the techniques by the irradiance they give, as in Madsen &\n"
+            "Laursen's evaluation (their Fig. 6).\n"
             "commands:\n"
-            "  eval        error of every technique and light count against the ground truth: table, CSV, plot\n"
+            "  eval        error of every technique and size against the ground truth: table, CSV, plot\n"
+            "  report      an HTML page (and a markdown table) with every technique's radiance, irradiance and\n"
+            "              error images and the plot\n"
             "  approx      write the lights of one technique as text-format entries (gtrace reads them)\n"
             "  irradiance  print the ground-truth irradiance (RGB) for one normal\n"
             "  convert     write the probe as a lat-long or angular map (after --rotate)\n"
@@ -64,7 +67,10 @@ int main(int argc, char **argv)
         return cmd_compare(argc - 1, argv + 1);
     if (strcmp(cmd, "sky") == 0)
         return cmd_sky(argc - 1, argv + 1);
-    fprintf(stderr, "gprobe: unknown command '%s' (expected eval, approx, irradiance, convert, compare or sky)\n", cmd);
+    if (strcmp(cmd, "report") == 0)
+        return cmd_report(argc - 1, argv + 1);
+    fprintf(stderr, "gprobe: unknown command '%s' (expected eval, report, approx, irradiance, convert, compare or "
+            "sky)\n", cmd);
     return 2;
 }
 
