@@ -28,6 +28,8 @@ CC      ?= cc
 CXX     ?= c++
 WARN    := -Wall -Wextra -Werror
 CPPFLAGS += -Iinclude -Ilib -I. -D_GNU_SOURCE -DGENERIC_BUILD -MMD -MP
+# the tools' --version (examples/common/cli.h)
+$(BUILD)/obj/examples/%.o: CPPFLAGS += -DGENERIC_VERSION='"$(VERSION)"'
 # -fvisibility=hidden: only declarations marked GENERIC_API (include/generic/export.h) are exported; the version
 # script keeps the C++ shims' inline instantiations of OpenImageIO templates out of the dynamic symbol table too.
 VISIBILITY := -fvisibility=hidden

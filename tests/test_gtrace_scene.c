@@ -405,7 +405,7 @@ static void test_scene_errors(void **state)
 static void test_output_roundtrip(void **state)
 {
     (void)state;
-    Framebuffer fb = {5, 4, NULL};
+    Framebuffer fb = {.width = 5, .height = 4};
     fb.pixels = gmem_calloc(5 * 4 * 3, sizeof(float));
     for (int i = 0; i < 5 * 4 * 3; i++)
         fb.pixels[i] = (float)(0.013 * i * i) - 0.1f; /* negative, in range and above 1 */
