@@ -12,7 +12,6 @@
 #include <generic/registry.h>
 
 #include <errno.h>
-#include <getopt.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
