@@ -98,7 +98,8 @@ static int list_models(int argc, char **argv)
     int c, n;
     while ((c = cli_next(&p)) != -1) {
         if (c == 'h') {
-            printf("usage: gcolor list [--plugin FILE.so]...\nThe registered colour models, one per line.\n");
+            printf("usage: gcolor list [--plugin FILE.so]...\nThe registered colour models, one per line.\n"
+                   CLI_EXIT_STATUS_HELP);
             return CLI_OK;
         }
         if (c == CLI_VERSION)

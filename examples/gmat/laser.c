@@ -41,7 +41,10 @@ static void laser_usage(FILE *f)
             "  --extent X          the target spans -X..X (default 1.5)\n"
             "  --colormodel NAME   compute in this model instead of the file's; --step NM its spacing\n"
             "  --plugin FILE.so    load a module first (repeatable)\n"
-            "  --allow-plugins     let `plugin` statements of FILE load modules; --confine DIR: files under DIR only\n");
+            "  --allow-plugins     let `plugin` statements of FILE load modules; --confine DIR: files under DIR only\n"
+            "  -h, --help          this text\n"
+            "  --version           the version\n"
+            CLI_EXIT_STATUS_HELP);
 }
 
 static int elevations(const char *s, double *e, int *n)

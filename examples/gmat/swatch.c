@@ -42,7 +42,10 @@ static void swatch_usage(FILE *f)
                "  --colormodel NAME   compute in this model instead of the file's (or one a module registers);\n"
                "                      --step NM its spacing\n"
                "  --plugin FILE.so    load a module first (repeatable)\n"
-            "  --allow-plugins     let `plugin` statements of FILE load modules; --confine DIR: files under DIR only\n");
+            "  --allow-plugins     let `plugin` statements of FILE load modules; --confine DIR: files under DIR only\n"
+            "  -h, --help          this text\n"
+            "  --version           the version\n"
+            CLI_EXIT_STATUS_HELP);
 }
 
 /* Light reaching the point's viewer (+z) from the swatch's lights, added into s->sum. */

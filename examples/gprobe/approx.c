@@ -20,7 +20,7 @@ static void approx_usage(FILE *f)
             "  --technique T     mediancut (N a power of two), adaptive, kmeans or irradiance\n"
             "  -n N              number of lights (1..4096)\n"
             "  -o FILE           output text file (written whole or not at all)\n"
-            "  --fit-normals N   normals the irradiance optimisation fits (default 2000)\n",
+            "  --fit-normals N   normals the irradiance optimisation fits (default 2000)\n" CLI_EXIT_STATUS_HELP,
             probe_args_help);
 }
 
@@ -180,7 +180,7 @@ int cmd_irradiance(int argc, char **argv)
             printf("usage: gprobe irradiance --probe FILE --normal X,Y,Z\n"
                    "Prints the ground-truth irradiance R G B (every pixel of the probe summed, the paper's Eq. 4)\n"
                    "on a surface with the given normal (normalised; z is up).\n%s"
-                   "  --normal X,Y,Z    the surface normal\n",
+                   "  --normal X,Y,Z    the surface normal\n" CLI_EXIT_STATUS_HELP,
                    probe_args_help);
             return CLI_OK;
         } else if (c == CLI_VERSION) {
@@ -244,7 +244,7 @@ int cmd_convert(int argc, char **argv)
                    "extension picks the format (.exr/.hdr linear float; .png/.jpg sRGB encoded, clamped).\n%s"
                    "  --to F            latlong (default) or angular\n"
                    "  --size N          angular map size in pixels (default: the probe's height)\n"
-                   "  -o OUT            output image\n",
+                   "  -o OUT            output image\n" CLI_EXIT_STATUS_HELP,
                    probe_args_help);
             return CLI_OK;
         } else if (c == CLI_VERSION) {

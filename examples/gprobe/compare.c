@@ -35,7 +35,7 @@ static void compare_usage(FILE *f)
                "  --threshold T      the share of blocked light that makes a shadow (default 0.1)\n"
                "  --write-mask OUT   write the shadow mask (white in the shadows) as an image\n"
                "  -h, --help         this text\n"
-               "  --version          the version\n");
+               "  --version          the version\n" CLI_EXIT_STATUS_HELP);
 }
 
 static double luminance(const float *p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }

@@ -26,8 +26,7 @@ static void usage(FILE *f)
             "  --fit-normals N   normals the irradiance optimisation fits (default 2000)\n"
             "  --csv OUT.csv     technique,count,mean_rel,max_rel,mean_norm,max_norm,seconds\n"
             "  --plot OUT.png    error against the number of lights, drawn with gnuplot (pngcairo)\n"
-            "  --title TEXT      plot title (default: the probe's file name)\n"
-            "",
+            "  --title TEXT      plot title (default: the probe's file name)\n" CLI_EXIT_STATUS_HELP,
             probe_args_help);
 }
 

@@ -44,7 +44,7 @@ static void sky_usage(FILE *f)
                "  --sun-irradiance E   irradiance of the sun on a surface facing it (default 3)\n"
                "  --sky-irradiance E   irradiance of the sky alone on a horizontal surface (default 1)\n"
                "  -h, --help           this text\n"
-               "  --version            the version\n");
+               "  --version            the version\n" CLI_EXIT_STATUS_HELP);
 }
 
 static int parse_double(const char *opt, const char *s, double lo, double hi, double *out)
