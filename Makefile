@@ -28,6 +28,8 @@ CC      ?= cc
 CXX     ?= c++
 WARN    := -Wall -Wextra -Werror
 CPPFLAGS += -Iinclude -Ilib -I. -D_GNU_SOURCE -DGENERIC_BUILD -MMD -MP
+# the tools' --version (examples/common/cli.h)
+$(BUILD)/obj/examples/%.o: CPPFLAGS += -DGENERIC_VERSION='"$(VERSION)"'
 # -fvisibility=hidden: only declarations marked GENERIC_API (include/generic/export.h) are exported; the version
 # scripts say the same to the linker (lib/libgeneric.map; lib/oiio_module.map keeps the OpenImageIO module's
 # inline instantiations of OpenImageIO templates out of its dynamic symbol table).

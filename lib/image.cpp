@@ -297,7 +297,7 @@ private:
 };
 
 int write_pixels(ImageOutput *out, const char *path, const char *tmp, const GImage *img, double scale,
-                 bool float_out, GError *err)
+                 bool float_out, const GImageWriteOptions *opt, GError *err)
 {
     const int w = img->width, h = img->height;
     int ch = img->channels;
@@ -309,6 +309,13 @@ int write_pixels(ImageOutput *out, const char *path, const char *tmp, const GIma
     }
     ImageSpec spec(w, h, out_ch, float_out ? TypeDesc::FLOAT : TypeDesc::UINT8);
     spec.alpha_channel = alpha;
+    if (opt && opt->full_width > 0 && out->supports("displaywindow")) { // a crop: data window inside the display
+        spec.x = opt->x;
+        spec.y = opt->y;
+        spec.full_x = spec.full_y = 0;
+        spec.full_width = opt->full_width;
+        spec.full_height = opt->full_height;
+    }
     spec.attribute("oiio:ColorSpace", float_out ? "Linear" : "sRGB");
     if (alpha >= 0 && !float_out)
         spec.attribute("oiio:UnassociatedAlpha", 1); // our pixels carry straight alpha
@@ -410,7 +417,7 @@ int write_impl(const char *path, const GImage *img, const GImageWriteOptions *op
             rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: the %s writer cannot write through a descriptor",
                             path, out->format_name());
         else
-            rc = write_pixels(out.get(), path, file.temp, img, exp2(exposure), float_extension(path), err);
+            rc = write_pixels(out.get(), path, file.temp, img, exp2(exposure), float_extension(path), opt, err);
         out.reset(); // before the proxy goes
         if (rc == G_OK && by_name)
             rc = verify_written(path, file.temp, img, err);

@@ -180,6 +180,11 @@ int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *
         return gerror_set(err, G_ERR_INVALID, "no image file name given");
     if (!img || !img->pixels || img->width <= 0 || img->height <= 0 || img->channels < 1 || img->channels > 4)
         return gerror_set(err, G_ERR_INVALID, "%s: invalid image to write", path);
+    if (opt && opt->full_width > 0 &&
+        (opt->x < 0 || opt->y < 0 || opt->full_height <= 0 || (long long)opt->x + img->width > opt->full_width ||
+         (long long)opt->y + img->height > opt->full_height))
+        return gerror_set(err, G_ERR_INVALID, "%s: the %dx%d image at %d,%d does not lie inside the %dx%d full image",
+                          path, img->width, img->height, opt->x, opt->y, opt->full_width, opt->full_height);
     if (gimage_png_path(path)) {
         double exposure = opt ? opt->exposure : 0.0;
         if (!isfinite(exposure))

@@ -399,6 +399,32 @@ static int resolve_model(GReader *r, GError *err)
     return G_OK;
 }
 
+/* An entry of a kind the caller skips (GReaderOptions.skip_kinds), its keyword read at (line, col): the names
+ * and type keyword before its block, then the block up to its matching brace, without interpreting them. */
+static int skip_entry(GReader *r, GKind kind, int line, int col, GError *err)
+{
+    GToken t;
+    int rc;
+    while ((rc = greader_next(r, &t, err)) == G_OK && t.type == GTOK_IDENT)
+        ;
+    if (rc != G_OK)
+        return rc;
+    if (t.type != GTOK_LBRACE) {
+        char found[96];
+        glexer_describe(&t, found, sizeof found);
+        return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "expected '{' of the %s entry (skipped), found %s",
+                                gkind_name(kind), found);
+    }
+    for (long depth = 1; depth > 0;) {
+        if ((rc = greader_next(r, &t, err)) != G_OK)
+            return rc;
+        if (t.type == GTOK_EOF)
+            return greader_error_at(r, err, G_ERR_PARSE, line, col, "the %s entry has no closing '}'", gkind_name(kind));
+        depth += t.type == GTOK_LBRACE ? 1 : t.type == GTOK_RBRACE ? -1 : 0;
+    }
+    return G_OK;
+}
+
 static const char statement_list[] = "include, plugin, colormodel, color, material, node, generator, object, light, "
                                      "camera";
 
@@ -445,7 +471,9 @@ static int parse_statements(GReader *r, GError *err)
                                         found, statement_list);
             }
             rc = resolve_model(r, err);
-            if (rc == G_OK)
+            if (rc == G_OK && kind < 32 && (r->opt.skip_kinds & (1u << kind)))
+                rc = skip_entry(r, (GKind)kind, t.line, t.col, err);
+            else if (rc == G_OK)
                 rc = do_entry(r, (GKind)kind, err);
         }
         if (rc != G_OK)

@@ -46,8 +46,17 @@ void gmat_surface_point(GmatContext *ctx, GSurfPoint *sp, int below);
 int gmat_transmittance(GmatContext *ctx, GVec3 in, int n, GColor *total, double *y_ideal);
 /** Prints a colour as linear sRGB and XYZ (read as a light), with its spectrum when spectrum != 0. */
 void gmat_print_color(const char *label, const GColor *c, int spectrum);
-/** Writes the polar plot of the BRDF in the plane of incidence of light from theta_in degrees. */
-int gmat_plot(GmatContext *ctx, double theta_in, int size, const char *path, GError *err);
+/** Decades below the maximum that a logarithmic radius shows. */
+#define GMAT_PLOT_DECADES 4
+/** How `gmat plot` draws. */
+typedef struct GmatPlotOptions {
+    int size;         /**< width in pixels (height 3/4 of it) */
+    int log_radius;   /**< logarithmic radius over GMAT_PLOT_DECADES decades (a diffuse lobe beside a specular one) */
+    const char *data; /**< also write the plotted table here (NULL: no) */
+} GmatPlotOptions;
+/** Writes the polar plot (gnuplot) of the light reflected in the plane of incidence of light from theta_in
+ * degrees. */
+int gmat_plot(GmatContext *ctx, double theta_in, const GmatPlotOptions *o, const char *path, GError *err);
 
 /** `gmat check FILE MATERIAL` (check.c): the conformance checks (albedo, reciprocity, finite values, Snell's
  * law, defaults), one line each with its figure and PASS/FAIL; samples is the albedo grid (0 = 64). Returns the

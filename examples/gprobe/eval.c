@@ -29,8 +29,7 @@ static void usage(FILE *f)
             "  --csv OUT.csv     technique,count,unit,mean_rel,max_rel,mean_norm,max_norm,smape,seconds\n"
             "                    (unit: what count counts, lights, coefficients or lobes)\n"
             "  --plot OUT.png    error against N, drawn with gnuplot (pngcairo)\n"
-            "  --title TEXT      plot title (default: the probe's file name)\n"
-            "  -h, --help        this text\n",
+            "  --title TEXT      plot title (default: the probe's file name)\n" CLI_EXIT_STATUS_HELP,
             probe_args_help, methods_names);
 }
 
@@ -131,43 +130,54 @@ int cmd_eval(int argc, char **argv)
     const int defaults[7] = {2, 4, 8, 16, 32, 64, 128};
     memcpy(counts, defaults, sizeof defaults);
     methods_default(use);
-    const char *csv = NULL, *png = NULL, *title = NULL, *v;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        int r = probe_args_parse(&pa, argc, argv, &i);
+    const char *csv = NULL, *png = NULL, *title = NULL;
+    enum { OPT_NORMALS = PROBE_OPT_OWN, OPT_FIT, OPT_COUNTS, OPT_TECHNIQUES, OPT_CSV, OPT_PLOT, OPT_TITLE };
+    static const struct option longopts[] = {
+        CLI_COMMON_OPTIONS, PROBE_ARGS_OPTIONS,
+        {"normals", required_argument, NULL, OPT_NORMALS}, {"fit-normals", required_argument, NULL, OPT_FIT},
+        {"counts", required_argument, NULL, OPT_COUNTS}, {"techniques", required_argument, NULL, OPT_TECHNIQUES},
+        {"csv", required_argument, NULL, OPT_CSV}, {"plot", required_argument, NULL, OPT_PLOT},
+        {"title", required_argument, NULL, OPT_TITLE}, {NULL, 0, NULL, 0},
+    };
+    CliParser cp;
+    cli_begin(&cp, "gprobe eval", argc, argv, "hq", longopts);
+    int c;
+    while ((c = cli_next(&cp)) != -1) {
+        const char *v = optarg;
+        int r = probe_args_option(&pa, c, v);
         if (r < 0)
-            return 2;
+            return CLI_USAGE;
         if (r > 0)
             continue;
-        if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
+        if (c == 'h') {
             usage(stdout);
-            return 0;
-        }
-        if (!(v = option_value(argc, argv, &i)))
-            return 2;
-        if (strcmp(a, "--normals") == 0) {
-            if (parse_int(a, v, 1, 10000000, &m) != 0)
-                return 2;
-        } else if (strcmp(a, "--fit-normals") == 0) {
-            if (parse_int(a, v, 2, 1000000, &fit) != 0)
-                return 2;
-        } else if (strcmp(a, "--counts") == 0) {
+            return CLI_OK;
+        } else if (c == CLI_VERSION) {
+            return cli_version("gprobe");
+        } else if (c == OPT_NORMALS) {
+            if (parse_int("--normals", v, 1, 10000000, &m) != 0)
+                return CLI_USAGE;
+        } else if (c == OPT_FIT) {
+            if (parse_int("--fit-normals", v, 2, 1000000, &fit) != 0)
+                return CLI_USAGE;
+        } else if (c == OPT_COUNTS) {
             if ((ncounts = parse_count_list(v, counts, 64)) < 0)
-                return 2;
-        } else if (strcmp(a, "--techniques") == 0) {
+                return CLI_USAGE;
+        } else if (c == OPT_TECHNIQUES) {
             if (parse_method_list(v, use) != 0)
-                return 2;
-        } else if (strcmp(a, "--csv") == 0) {
+                return CLI_USAGE;
+        } else if (c == OPT_CSV) {
             csv = v;
-        } else if (strcmp(a, "--plot") == 0) {
+        } else if (c == OPT_PLOT) {
             png = v;
-        } else if (strcmp(a, "--title") == 0) {
+        } else if (c == OPT_TITLE) {
             title = v;
         } else {
-            fprintf(stderr, "gprobe eval: unknown option '%s' (gprobe eval --help lists them)\n", a);
-            return 2;
+            return CLI_USAGE;
         }
     }
+    if (no_operands(&cp))
+        return CLI_USAGE;
     if ((png && plot_check_gnuplot() != 0) || output_check(png, 1) != 0 || output_check(csv, 0) != 0)
         return 1;
     TextOut csv_out = {0};

@@ -5,6 +5,8 @@
 #include <generic/file.h>
 #include <generic/probe.h>
 
+#include "../common/cli.h"
+
 #include <stdio.h>
 
 /** Options every command that reads a probe understands. */
@@ -16,9 +18,15 @@ typedef struct ProbeArgs {
     int quiet;           /* -q */
 } ProbeArgs;
 
-/** Handles --probe, --format, --rotate and -q at argv[*i] (consuming the value); 1 when handled, 0 when the
- * option is not one of them, -1 on a bad value (message printed). */
-int probe_args_parse(ProbeArgs *a, int argc, char **argv, int *i);
+/** getopt_long codes of --probe, --format and --rotate (-q is 'q'); a command's own codes start at PROBE_OPT_OWN. */
+enum { PROBE_OPT_PROBE = CLI_FIRST_OWN, PROBE_OPT_FORMAT, PROBE_OPT_ROTATE, PROBE_OPT_OWN };
+/** The option table entries of those options (-q, --quiet too). */
+#define PROBE_ARGS_OPTIONS                                                                                           \
+    {"probe", required_argument, NULL, PROBE_OPT_PROBE}, {"format", required_argument, NULL, PROBE_OPT_FORMAT},     \
+        {"rotate", required_argument, NULL, PROBE_OPT_ROTATE}, {"quiet", no_argument, NULL, 'q'}
+/** Handles the option of code c (value v) when it is one of those; 1 when handled, 0 when it is not one of them,
+ * -1 on a bad value (message printed). */
+int probe_args_option(ProbeArgs *a, int c, const char *v);
 /** The help lines for those options. */
 extern const char probe_args_help[];
 /** Loads (and rotates) the probe; prints the error or the clamping warning. NULL on failure. */
@@ -28,8 +36,6 @@ GProbe *probe_args_load(const ProbeArgs *a);
 int parse_int(const char *opt, const char *s, long lo, long hi, int *out);
 /** Parses "x,y,z"; -1 with a message when malformed. */
 int parse_vec3(const char *opt, const char *s, double v[3]);
-/** Fetches the value of option argv[*i]; NULL with a message when missing. */
-const char *option_value(int argc, char **argv, int *i);
 
 /** Seconds on a monotonic clock. */
 double now_seconds(void);
@@ -103,6 +109,9 @@ int eval_one(const GProbe *p, int method, int n, const GProbeOptions *opt, const
              const double *truth, double *approx, Row *row, Approx *keep, int quiet);
 /** The default method selection: everything but sh9. */
 void methods_default(int *use);
+
+/** The operands after the options: a usage error (2, message printed) when there are any. */
+int no_operands(const CliParser *p);
 
 /* the commands: each returns the process exit status */
 int cmd_eval(int argc, char **argv);

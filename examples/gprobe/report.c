@@ -37,7 +37,7 @@ static void report_usage(FILE *f)
             "  --fit-normals N   normals the irradiance optimisation fits (default 2000)\n"
             "  --error-scale PCT relative error at the top of the error maps' colour ramp (default 25)\n"
             "  --title TEXT      page title (default: the probe's file name)\n"
-            "  -h, --help        this text\n",
+            "Every option value may also be written --option=value.\n" CLI_EXIT_STATUS_HELP,
             probe_args_help, methods_names);
 }
 
@@ -246,54 +246,67 @@ static int write_pages(const Page *pg, const char *title, const char *probe_path
 int cmd_report(int argc, char **argv)
 {
     ProbeArgs pa = {0};
-    const char *dir = NULL, *title = NULL, *v;
+    const char *dir = NULL, *title = NULL;
     int counts[64] = {8, 16, 32}, ncounts = 3, size = 64, m = 20000, fit = 0, use[64];
     double scale_pct = 25.0;
     methods_default(use);
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        int r = probe_args_parse(&pa, argc, argv, &i);
+    enum { OPT_OUTPUT = PROBE_OPT_OWN, OPT_COUNTS, OPT_TECHNIQUES, OPT_SIZE, OPT_NORMALS, OPT_FIT, OPT_SCALE,
+           OPT_TITLE };
+    static const struct option longopts[] = {
+        CLI_COMMON_OPTIONS, PROBE_ARGS_OPTIONS,
+        {"output", required_argument, NULL, 'o'}, {"counts", required_argument, NULL, OPT_COUNTS},
+        {"techniques", required_argument, NULL, OPT_TECHNIQUES}, {"size", required_argument, NULL, OPT_SIZE},
+        {"normals", required_argument, NULL, OPT_NORMALS}, {"fit-normals", required_argument, NULL, OPT_FIT},
+        {"error-scale", required_argument, NULL, OPT_SCALE}, {"title", required_argument, NULL, OPT_TITLE},
+        {NULL, 0, NULL, 0},
+    };
+    CliParser cp;
+    cli_begin(&cp, "gprobe report", argc, argv, "hqo:", longopts);
+    int c;
+    while ((c = cli_next(&cp)) != -1) {
+        const char *v = optarg;
+        int r = probe_args_option(&pa, c, v);
         if (r < 0)
-            return 2;
+            return CLI_USAGE;
         if (r > 0)
             continue;
-        if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
+        if (c == 'h') {
             report_usage(stdout);
-            return 0;
-        }
-        if (!(v = option_value(argc, argv, &i)))
-            return 2;
-        if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0)
+            return CLI_OK;
+        } else if (c == CLI_VERSION) {
+            return cli_version("gprobe");
+        } else if (c == 'o') {
             dir = v;
-        else if (strcmp(a, "--counts") == 0) {
+        } else if (c == OPT_COUNTS) {
             if ((ncounts = parse_count_list(v, counts, 64)) < 0)
-                return 2;
-        } else if (strcmp(a, "--techniques") == 0) {
+                return CLI_USAGE;
+        } else if (c == OPT_TECHNIQUES) {
             if (parse_method_list(v, use) != 0)
-                return 2;
-        } else if (strcmp(a, "--size") == 0) {
-            if (parse_int(a, v, 4, 1024, &size) != 0)
-                return 2;
-        } else if (strcmp(a, "--normals") == 0) {
-            if (parse_int(a, v, 1, 10000000, &m) != 0)
-                return 2;
-        } else if (strcmp(a, "--fit-normals") == 0) {
-            if (parse_int(a, v, 2, 1000000, &fit) != 0)
-                return 2;
-        } else if (strcmp(a, "--error-scale") == 0) {
+                return CLI_USAGE;
+        } else if (c == OPT_SIZE) {
+            if (parse_int("--size", v, 4, 1024, &size) != 0)
+                return CLI_USAGE;
+        } else if (c == OPT_NORMALS) {
+            if (parse_int("--normals", v, 1, 10000000, &m) != 0)
+                return CLI_USAGE;
+        } else if (c == OPT_FIT) {
+            if (parse_int("--fit-normals", v, 2, 1000000, &fit) != 0)
+                return CLI_USAGE;
+        } else if (c == OPT_SCALE) {
             char *end;
             scale_pct = strtod(v, &end);
             if (end == v || *end || !(scale_pct > 0.0 && scale_pct <= 1e6)) {
                 fprintf(stderr, "gprobe report: --error-scale expects a percentage above 0, got '%s'\n", v);
-                return 2;
+                return CLI_USAGE;
             }
-        } else if (strcmp(a, "--title") == 0) {
+        } else if (c == OPT_TITLE) {
             title = v;
         } else {
-            fprintf(stderr, "gprobe report: unknown option '%s' (gprobe report --help lists them)\n", a);
-            return 2;
+            return CLI_USAGE;
         }
     }
+    if (no_operands(&cp))
+        return CLI_USAGE;
     if (!dir) {
         fprintf(stderr, "gprobe report: -o DIR is required (gprobe report --help)\n");
         return 2;

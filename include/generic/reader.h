@@ -105,6 +105,10 @@ typedef struct GReaderOptions {
      * greader_path (BFC files, images, meshes, probes) - must lie under this directory once symbolic links are
      * resolved; others fail with G_ERR_INVALID at their name. NULL: no confinement. Not owned. */
     const char *confine_dir;
+    /** Entry kinds to read past without interpreting them: bit (1u << kind) set skips every `KIND ... { ... }`
+     * entry of that kind (its braces must balance), so that a program without those types (gmat reading a gtrace
+     * scene: GKIND_OBJECT, GKIND_LIGHT, GKIND_CAMERA) can read the rest of the file. 0: skip nothing. */
+    unsigned skip_kinds;
 } GReaderOptions;
 
 /** Takes the reader options of a tool's command line out of argv[1..*argc-1] into opt (the other fields are
