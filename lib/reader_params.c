@@ -64,7 +64,7 @@ int greader_at_number(GReader *r, GError *err)
 {
     GToken t;
     int rc = greader_peek(r, &t, err);
-    return rc ? rc : t.type == GTOK_NUMBER;
+    return rc ? rc : t.type == GTOK_NUMBER || (t.type == GTOK_IDENT && glibrary_constant(r->lib, t.text, NULL, NULL, NULL, NULL));
 }
 
 int greader_number(GReader *r, double *out, GError *err)
@@ -77,6 +77,14 @@ int greader_number(GReader *r, double *out, GError *err)
                                  strcasecmp(t.text, "infinity") == 0))
         return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "'%s' is not allowed: numbers must be finite",
                                 t.text);
+    double value = t.number;
+    if (t.type == GTOK_IDENT && glibrary_constant(r->lib, t.text, &value, NULL, NULL, NULL)) {
+        greader_take(r, NULL); /* a constant (`define`), peeked above */
+        *out = value;
+        return G_OK;
+    }
+    if (t.type == GTOK_IDENT)
+        return expected(r, "a number or a constant defined before", err);
     if (t.type != GTOK_NUMBER)
         return expected(r, "a number", err);
     greader_take(r, NULL); /* the token peeked above */
@@ -264,6 +272,14 @@ int greader_param(GReader *r, const char **key, GError *err)
     if (rc != G_OK)
         return rc;
     if (f->state == 0) {
+        if (t.type != GTOK_LBRACE && f->like) { /* `like` without overrides: the base's block */
+            rc = greader_like_merge(r, f, err);
+            if (rc < 0)
+                return rc;
+            if (rc > 0 && (rc = greader_peek(r, &t, err)) != G_OK)
+                return rc;
+        }
+        greader_record_open(r, f);
         if (t.type != GTOK_LBRACE) {
             f->state = 2;
             return 0;
@@ -278,7 +294,19 @@ int greader_param(GReader *r, const char **key, GError *err)
     }
     if (f->state == 2)
         return 0;
+    if (t.type == GTOK_RBRACE && f->like) { /* the overrides end: the base's other parameters follow */
+        rc = greader_like_merge(r, f, err);
+        if (rc < 0)
+            return rc;
+        if (rc == 0) {
+            f->state = 2;
+            return 0;
+        }
+        if ((rc = greader_peek(r, &t, err)) != G_OK)
+            return rc;
+    }
     if (t.type == GTOK_RBRACE) {
+        greader_record_close(r, f);
         greader_take(r, NULL); /* the token peeked above */
         f->state = 2;
         return 0;
@@ -305,10 +333,14 @@ int greader_param(GReader *r, const char **key, GError *err)
         f->capkeys = cap;
     }
     GReaderKey *k = &f->keys[f->nkeys];
-    if (!(k->name = gmem_strdup(t.text)))
+    if (!(k->name = gmem_strdup(t.text)) || greader_record_key(r, f, t.text) != G_OK) {
+        gmem_free(k->name);
         return greader_error_at(r, err, G_ERR_NOMEM, t.line, t.col, "out of memory");
+    }
     k->line = t.line;
     k->col = t.col;
+    k->text = r->ahead_text;
+    k->via = r->ahead_via;
     f->nkeys++;
     greader_take(r, NULL); /* the token peeked above */
     memcpy(r->keybuf, t.text, strlen(t.text) + 1);

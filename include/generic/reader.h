@@ -147,6 +147,9 @@ GENERIC_API GENERIC_NODISCARD int glibrary_count(const GLibrary *lib, GKind kind
 /** The i-th top-level entry of a kind (0 <= i < glibrary_count): its object, and its name (NULL when
  * anonymous) and type through the optional pointers. NULL when i is out of range. Constant time. */
 GENERIC_API void *glibrary_entry(const GLibrary *lib, GKind kind, int i, const char **name, const GTypeInfo **type);
+/** The name of the entry the i-th top-level entry of a kind was derived from with `like` (`material tile2 like
+ * tile1 { ... }` gives "tile1"), borrowed; NULL when it was not derived or i is out of range. */
+GENERIC_API const char *glibrary_entry_base(const GLibrary *lib, GKind kind, int i);
 /** Adds an object made by code under name (NULL = anonymous); the library takes ownership and releases it
  * with type->destroy (or the kind's default). G_ERR_EXISTS when the name is taken in that kind, and then the
  * object is released at once (the caller never keeps a half-owned object). */
