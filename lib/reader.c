@@ -188,8 +188,11 @@ int greader_push_frame(GReader *r, int is_block, const GTypeInfo *type, int line
         f->via = r->pending_via;
         if (f->via)
             f->like_line = line, f->like_col = col;
+        f->single = r->pending_single;
+        f->single_state = f->single ? 1 : 0;
         r->pending_like = NULL;
         r->pending_via = NULL;
+        r->pending_single = NULL;
     }
     f->open_line = line;
     f->open_col = col;

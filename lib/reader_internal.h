@@ -99,6 +99,8 @@ typedef struct GReaderFrame {
     const GTemplate *like; /* entries derived with `like`: the base's parameters still to merge */
     const char *via;       /* ... and where (message suffix for errors in inherited parameters) */
     int like_line, like_col; /* entries derived with `like`: where (the base's name), else 0 */
+    const char *single;    /* greader_material_with: the one parameter given (its value at the reader's position) */
+    int single_state;      /* 1: its name is still to be returned, 2: its value was read, the block closes next */
     GReaderKey *keys;      /* entries: parameter names seen, in order */
     int nkeys, capkeys;
 } GReaderFrame;
@@ -158,6 +160,7 @@ struct GReader {
     int rec_frame;             /* ... and its frame */
     const GTemplate *pending_like; /* for the next entry frame pushed */
     const char *pending_via;
+    const char *pending_single;
     char **vias;               /* the messages of every `like` read (owned) */
     int nvias, capvias;
     unsigned long long lexed, replayed; /* tokens read from files, and re-read for `like` */

@@ -161,6 +161,8 @@ void greader_record_token(GReader *r)
     GTemplate *t = r->rec;
     if (r->nframes <= r->rec_frame) /* the type keyword, before the entry's frame */
         return;
+    if (r->cur_via != r->frames[r->rec_frame].via) /* re-read for something nested in a value: not the entry's */
+        return;
     t->last_text = r->cur_text;
     t->last_end = r->cur.end;
     if (t->whole_state == 0) {
@@ -242,8 +244,10 @@ int greader_like_merge(GReader *r, GReaderFrame *f, GError *err)
     if (!b)
         return 0;
     if (f->state == 1 && !b->has_block) { /* nothing to inherit: the overrides' `}` closes the entry */
-        greader_record_close(r, f);
-        greader_take(r, NULL);
+        if (!f->single) {
+            greader_record_close(r, f);
+            greader_take(r, NULL);
+        }
         return 0;
     }
     if (!b->has_block)
@@ -260,7 +264,8 @@ int greader_like_merge(GReader *r, GReaderFrame *f, GError *err)
         GTemplate *t = recording(r, f);
         if (t)
             end_param(t);
-        greader_take(r, NULL);
+        if (!f->single) /* greader_material_with has no `}` of its own */
+            greader_take(r, NULL);
         for (int i = 0; i < b->nparams; i++)
             if (!overridden(f, b->params[i].name))
                 spans[n++] = b->params[i].span;
@@ -272,7 +277,8 @@ int greader_like_merge(GReader *r, GReaderFrame *f, GError *err)
 
 /* ---- the statement ---- */
 
-static const char *keep_via(GReader *r, const char *kn, const char *name, int line, int col)
+/* Keeps a message for errors in tokens re-read (their lifetime is the load's). */
+static const char *keep_via(GReader *r, const char *fmt_by, const char *kn, const char *name, int line, int col)
 {
     if (r->nvias == r->capvias) {
         int cap = r->capvias ? r->capvias * 2 : 8;
@@ -283,7 +289,7 @@ static const char *keep_via(GReader *r, const char *kn, const char *name, int li
         r->capvias = cap;
     }
     char buf[400];
-    snprintf(buf, sizeof buf, "(inherited by %s '%s' via 'like' at %s:%d:%d)", kn, name, greader_file(r), line, col);
+    snprintf(buf, sizeof buf, fmt_by, kn, name, greader_file(r), line, col);
     char *copy = gmem_strdup(buf);
     if (copy)
         r->vias[r->nvias++] = copy;
@@ -324,7 +330,7 @@ int greader_like_entry(GReader *r, GKind kind, const char *name, int line, int c
         return greader_error_at(r, err, G_ERR_PARSE, b.line, b.col,
                                 "'like %s': a chain of entries derived with 'like' may be at most %d deep", base,
                                 GREADER_MAX_LIKE_DEPTH);
-    const char *via = keep_via(r, kn, name, line, col);
+    const char *via = keep_via(r, "(inherited by %s '%s' via 'like' at %s:%d:%d)", kn, name, line, col);
     GTemplate *t = via ? gmem_calloc(1, sizeof *t) : NULL;
     if (t && !(t->base = gmem_strdup(base))) {
         gtemplate_free(t);
@@ -400,4 +406,50 @@ void greader_origin(GReader *r, int line, int col, const char **file, const char
         name = r->src ? r->src->name : "?";
     *file = name;
     *via = v;
+}
+
+/* ---- one parameter over a base: greader_material_with ---- */
+
+int greader_material_with(GReader *r, const char *base, const char *param, GMaterial **out, GError *err)
+{
+    *out = NULL;
+    if (!base || !param || !param[0])
+        return greader_error(r, err, "no base or parameter given");
+    const GTypeInfo *type = glibrary_find_type(r->lib, GKIND_MATERIAL, base);
+    const GTemplate *bt = type ? glibrary_template(r->lib, GKIND_MATERIAL, base) : NULL;
+    if (type && !bt)
+        return greader_error(r, err,
+                             "material '%s' was not written with a type and parameters (it is another name for an "
+                             "entry, or was made by code), so it cannot be derived from",
+                             base);
+    if (!type && !(type = greader_find_type(GKIND_MATERIAL, base)))
+        return greader_error(r, err, "'%s' is neither a material defined before nor a material type", base);
+    if (bt && !bt->named)
+        return greader_error(r, err, "material '%s' takes no named parameters", base);
+    if (bt && bt->depth + 1 > GREADER_MAX_LIKE_DEPTH)
+        return greader_error(r, err, "'%s': a chain of entries derived with 'like' may be at most %d deep", base,
+                             GREADER_MAX_LIKE_DEPTH);
+    GToken t;
+    int rc = greader_peek(r, &t, err);
+    if (rc != G_OK)
+        return rc;
+    const char *via = NULL;
+    if (bt && !(via = keep_via(r, "(inherited from %s '%s' by the value at %s:%d:%d)", "material", base, t.line, t.col)))
+        return greader_error(r, err, "out of memory");
+    r->pending_like = bt;
+    r->pending_via = via;
+    r->pending_single = param;
+    void *obj = NULL;
+    rc = greader_invoke(r, type, t.line, t.col, &obj, err);
+    r->pending_like = NULL;
+    r->pending_via = NULL;
+    r->pending_single = NULL;
+    if (rc == G_OK) {
+        rc = glibrary_put(r->lib, type, NULL, obj, 1, 0, err);
+        if (rc != G_OK)
+            rc = greader_locate(r, err);
+    }
+    if (rc == G_OK)
+        *out = obj;
+    return rc;
 }

@@ -261,6 +261,30 @@ static int missing_brace(GReader *r, const GToken *t, int line, int col, GError 
                             line, col);
 }
 
+/* Notes a parameter name of the entry f, written at the token t (the look-ahead token). */
+static int add_key(GReader *r, GReaderFrame *f, const char *name, const GToken *t, GError *err)
+{
+    if (f->nkeys == f->capkeys) {
+        int cap = f->capkeys ? f->capkeys * 2 : 8;
+        GReaderKey *k = gmem_realloc(f->keys, (size_t)cap * sizeof *k);
+        if (!k)
+            return greader_error_at(r, err, G_ERR_NOMEM, t->line, t->col, "out of memory");
+        f->keys = k;
+        f->capkeys = cap;
+    }
+    GReaderKey *k = &f->keys[f->nkeys];
+    if (!(k->name = gmem_strdup(name)) || greader_record_key(r, f, name) != G_OK) {
+        gmem_free(k->name);
+        return greader_error_at(r, err, G_ERR_NOMEM, t->line, t->col, "out of memory");
+    }
+    k->line = t->line;
+    k->col = t->col;
+    k->text = r->ahead_text;
+    k->via = r->ahead_via;
+    f->nkeys++;
+    return G_OK;
+}
+
 int greader_param(GReader *r, const char **key, GError *err)
 {
     *key = NULL;
@@ -271,6 +295,27 @@ int greader_param(GReader *r, const char **key, GError *err)
     int rc = greader_peek(r, &t, err);
     if (rc != G_OK)
         return rc;
+    if (f->single_state == 1) { /* greader_material_with: its one parameter, the value where the reader is */
+        f->single_state = 2;
+        f->state = 1;
+        if ((rc = add_key(r, f, f->single, &t, err)) != G_OK)
+            return rc;
+        snprintf(r->keybuf, sizeof r->keybuf, "%s", f->single);
+        *key = r->keybuf;
+        return 1;
+    }
+    if (f->single_state == 2) { /* ... read: the block closes here, with the base's other parameters */
+        f->single_state = 0;
+        rc = f->like ? greader_like_merge(r, f, err) : 0;
+        if (rc < 0)
+            return rc;
+        if (rc == 0) {
+            f->state = 2;
+            return 0;
+        }
+        if ((rc = greader_peek(r, &t, err)) != G_OK)
+            return rc;
+    }
     if (f->state == 0) {
         if (t.type != GTOK_LBRACE && f->like) { /* `like` without overrides: the base's block */
             rc = greader_like_merge(r, f, err);
@@ -324,24 +369,8 @@ int greader_param(GReader *r, const char **key, GError *err)
         if (strcmp(f->keys[i].name, t.text) == 0)
             return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "%s %s: parameter '%s' is given twice",
                                     gkind_name(f->type->kind), f->type->name, t.text);
-    if (f->nkeys == f->capkeys) {
-        int cap = f->capkeys ? f->capkeys * 2 : 8;
-        GReaderKey *k = gmem_realloc(f->keys, (size_t)cap * sizeof *k);
-        if (!k)
-            return greader_error_at(r, err, G_ERR_NOMEM, t.line, t.col, "out of memory");
-        f->keys = k;
-        f->capkeys = cap;
-    }
-    GReaderKey *k = &f->keys[f->nkeys];
-    if (!(k->name = gmem_strdup(t.text)) || greader_record_key(r, f, t.text) != G_OK) {
-        gmem_free(k->name);
-        return greader_error_at(r, err, G_ERR_NOMEM, t.line, t.col, "out of memory");
-    }
-    k->line = t.line;
-    k->col = t.col;
-    k->text = r->ahead_text;
-    k->via = r->ahead_via;
-    f->nkeys++;
+    if ((rc = add_key(r, f, t.text, &t, err)) != G_OK)
+        return rc;
     greader_take(r, NULL); /* the token peeked above */
     memcpy(r->keybuf, t.text, strlen(t.text) + 1);
     *key = r->keybuf;

@@ -20,11 +20,13 @@
 #include "generic/surfpoint.h"
 #include "test_util.h"
 
-/* The diffuse red of a spline over the ramp at t (the ramp's children are lambert greys). */
-static double ramp_at(const char *basis, const char *ramp, double t)
+/* The diffuse red of a spline over the ramp at t (the ramp's children are lambert greys), after the text
+ * `prelude`; `param` is the spline's parameter ("ramp { ", "colors { ", "colors of x diffuse { "). */
+static double ramp_with(const char *prelude, const char *param, const char *basis, const char *ramp, double t)
 {
     char text[4096];
-    snprintf(text, sizeof text, "node n spline { t constant { value %.17g } basis %s ramp { %s } }\n", t, basis, ramp);
+    snprintf(text, sizeof text, "%s\nnode n spline { t constant { value %.17g } basis %s %s %s } }\n", prelude, t,
+             basis, param, ramp);
     GLibrary *lib = NULL;
     GError err;
     int rc = greader_load_string(text, "t.mat", NULL, &lib, &err);
@@ -47,6 +49,8 @@ static double ramp_at(const char *basis, const char *ramp, double t)
     glibrary_destroy(lib);
     return v[0];
 }
+
+static double ramp_at(const char *basis, const char *ramp, double t) { return ramp_with("", "ramp {", basis, ramp, t); }
 
 #define GREY(x) "lambert { reflectance rgb " #x " " #x " " #x " }"
 static const char ramp3[] = "0 " GREY(0.9) " 0.8 " GREY(0.5) " 1 " GREY(0.2);
@@ -93,6 +97,23 @@ static void test_ramp_catmull_rom(void **state)
     assert_near(ramp_at("catmull-rom", ramp3, t), catmull_rom(vals[0], vals[1], vals[2], vals[2], f), 1e-6);
 }
 
+/* colors { KEY COLOR ... }: lambert children with those reflectances, or children like a named material */
+static void test_color_ramp(void **state)
+{
+    (void)state;
+    const char ramp[] = "0 rgb 0.9 0.9 0.9  0.8 rgb 0.5 0.45 0.4  1 rgb 0.2 0.2 0.2";
+    const double keys[] = {0, 0.8, 1}, vals[] = {0.9, 0.5, 0.2};
+    for (int i = 0; i < 3; i++)
+        assert_near(ramp_with("", "colors {", "linear", ramp, keys[i]), vals[i], 1e-6);
+    assert_near(ramp_with("", "colors {", "linear", ramp, 0.4), 0.7, 1e-6);
+    assert_near(ramp_with("", "colors {", "linear", ramp, 0.9), 0.35, 1e-6);
+    assert_near(ramp_with("", "colors of lambert reflectance {", "linear", ramp, 0.9), 0.35, 1e-6);
+    /* over a named phong: each child is `like tile { diffuse COLOR }` */
+    const char tile[] = "material tile phong { diffuse rgb 0.3 0.3 0.3 specular rgb 0.1 0.1 0.1 exponent 20 }";
+    assert_near(ramp_with(tile, "colors of tile diffuse {", "linear", ramp, 0.4), 0.7, 1e-6);
+    assert_near(ramp_with(tile, "colors of tile diffuse {", "catmull-rom", ramp, 0.8), 0.5, 1e-6);
+}
+
 static void load_fails(const char *text, const char *message)
 {
     GLibrary *lib = (GLibrary *)0x1;
@@ -120,7 +141,21 @@ static void test_ramp_refused(void **state)
     load_fails("node n spline { t constant ramp { 0 lambert 1 } }\n",
                "t.mat:1:47: expected a material (a type or a defined name), found '}'");
     load_fails("node n spline { t constant children { lambert lambert } ramp { 0 lambert 1 lambert } }\n",
-               "t.mat:1:57: spline: children and ramp exclude each other");
+               "t.mat:1:57: spline: children, ramp and colors exclude each other");
+    /* colour ramps: a colour that is wrong, for the base it is given to, is reported at that colour */
+    load_fails("material tile phong {\n"
+               "    diffuse rgb 0.3 0.3 0.3\n"
+               "    specular rgb 0.1 0.1 0.1\n"
+               "}\n"
+               "node n spline { t constant colors of tile diffuse { 0 rgb 0.2 0.2 0.2  1 rgb 0.95 0.95 0.95 } }\n",
+               "t.mat:5:74: phong: kd + ks + mirror is 1.05 at sample 0; it must not exceed 1 (energy conservation)");
+    load_fails("node n spline { t constant colors { 0 rgb 0.2 0.2 0.2  1 rgb 2 2 2 } }\n",
+               "t.mat:1:58: lambert: reflectance has the value 2 at sample 0 (must be <= 1)");
+    load_fails("node n spline { t constant colors of nothing diffuse { 0 rgb 1 1 1  1 rgb 0 0 0 } }\n",
+               "t.mat:1:38: spline: colors of 'nothing': neither a material defined before nor a material type");
+    load_fails("node n spline { t constant colors of phong colour { 0 rgb 1 1 1  1 rgb 0 0 0 } }\n",
+               "t.mat:1:55: material phong: unknown parameter 'colour' (expected one of: diffuse, specular, exponent, "
+               "mirror)");
     /* generated: the largest ramp loads, one key more is refused at that key */
     size_t cap = 1 << 20, n = 0;
     char *text = malloc(cap);
@@ -147,6 +182,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_ramp_linear),
         cmocka_unit_test(test_ramp_catmull_rom),
+        cmocka_unit_test(test_color_ramp),
         cmocka_unit_test(test_ramp_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

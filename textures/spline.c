@@ -3,6 +3,11 @@
  *
  *   node NAME spline { t GENERATOR  basis catmull-rom|bspline|linear  children { MATERIAL ... } }
  *   node NAME spline { t GENERATOR  basis ...  ramp { KEY MATERIAL  KEY MATERIAL ... } }
+ *   node NAME spline { t GENERATOR  basis ...  colors [of BASE PARAMETER] { KEY COLOR  KEY COLOR ... } }
+ *
+ * A colour ramp's children are `BASE { PARAMETER COLOR }` (BASE a material type) or `like BASE { PARAMETER
+ * COLOR }` (BASE a material defined before), made by the reader (greader_material_with); the default is
+ * `of lambert reflectance`.
  *
  * A blend node (generic/node_kit.h): pick below gives the children and weights of the segment at t. */
 #include <generic/node_kit.h>
@@ -156,7 +161,8 @@ int gnode_spline_create_keyed(GMaterial *const *children, const double *keys, in
 
 /* `ramp { KEY MATERIAL ... }`: keys in [0, 1], none smaller than the one before, 2 to GSPLINE_MAX_KEYS of them;
  * each problem is reported at its key. */
-static int parse_ramp(GReader *r, GMaterial ***kids, double **keys, int *n, GError *err)
+static int parse_ramp(GReader *r, const char *base, const char *param, GMaterial ***kids, double **keys, int *n,
+                      GError *err)
 {
     int cap = 0, line = 0, col = 0;
     int rc = greader_block_begin(r, err);
@@ -176,7 +182,8 @@ static int parse_ramp(GReader *r, GMaterial ***kids, double **keys, int *n, GErr
             break;
         }
         GMaterial *m;
-        if ((rc = greader_material(r, &m, err)) != G_OK)
+        rc = base ? greader_material_with(r, base, param, &m, err) : greader_material(r, &m, err);
+        if (rc != G_OK)
             break;
         if (*n == cap) {
             cap = cap ? 2 * cap : 8;
@@ -200,6 +207,26 @@ static int parse_ramp(GReader *r, GMaterial ***kids, double **keys, int *n, GErr
     return rc < 0 ? rc : G_OK;
 }
 
+/* `colors [of BASE PARAMETER] { KEY COLOR ... }` */
+static int parse_colors(GReader *r, GMaterial ***kids, double **keys, int *n, GError *err)
+{
+    char base[256] = "lambert", param[256] = "reflectance";
+    GToken t;
+    int rc = greader_peek(r, &t, err);
+    if (rc == G_OK && t.type == GTOK_IDENT && strcmp(t.text, "of") == 0) {
+        rc = greader_next(r, NULL, err);
+        if (rc == G_OK)
+            rc = greader_ident(r, base, sizeof base, err);
+        if (rc == G_OK && !greader_lookup(r, GKIND_MATERIAL, base) && !gregistry_find(GKIND_MATERIAL, base) &&
+            !gregistry_find(GKIND_NODE, base))
+            rc = greader_error(r, err, "spline: colors of '%s': neither a material defined before nor a material type",
+                               base);
+        if (rc == G_OK)
+            rc = greader_ident(r, param, sizeof param, err);
+    }
+    return rc == G_OK ? parse_ramp(r, base, param, kids, keys, n, err) : rc;
+}
+
 static int parse_spline(GReader *r, const void *vtable, void **object, GError *err)
 {
     (void)vtable;
@@ -213,27 +240,29 @@ static int parse_spline(GReader *r, const void *vtable, void **object, GError *e
     while ((rc = greader_param(r, &key, err)) > 0) {
         if (strcmp(key, "t") == 0)
             rc = gtexparse_generator(r, &g, err);
-        else if (strcmp(key, "children") == 0 || strcmp(key, "ramp") == 0) {
+        else if (strcmp(key, "children") == 0 || strcmp(key, "ramp") == 0 || strcmp(key, "colors") == 0) {
             if (have_kids) {
-                rc = greader_error(r, err, "spline: children and ramp exclude each other");
+                rc = greader_error(r, err, "spline: children, ramp and colors exclude each other");
                 break;
             }
-            if (key[0] == 'c')
+            if (strcmp(key, "children") == 0)
                 rc = gtexparse_materials(r, &kids, &n, err);
+            else if (strcmp(key, "ramp") == 0)
+                rc = parse_ramp(r, NULL, NULL, &kids, &keys, &n, err);
             else
-                rc = parse_ramp(r, &kids, &keys, &n, err);
+                rc = parse_colors(r, &kids, &keys, &n, err);
             have_kids = 1;
         } else if (strcmp(key, "basis") == 0)
             rc = greader_choice(r, basis_names, &basis, err);
         else
-            rc = greader_unknown_param(r, "t, basis, children, ramp", err);
+            rc = greader_unknown_param(r, "t, basis, children, ramp, colors", err);
         if (rc < 0)
             break;
     }
     if (rc == 0 && !g)
         rc = greader_error(r, err, "spline: needs t");
     else if (rc == 0 && !have_kids)
-        rc = greader_error(r, err, "spline: needs children { ... } or ramp { ... }");
+        rc = greader_error(r, err, "spline: needs children { ... }, ramp { ... } or colors { ... }");
     if (rc == 0) {
         GMaterial *m = NULL;
         if (keys)

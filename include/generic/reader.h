@@ -243,6 +243,13 @@ GENERIC_API GENERIC_NODISCARD int greader_block_end(GReader *r, GError *err);
 GENERIC_API GENERIC_NODISCARD int greader_object(GReader *r, GKind kind, void **object, const GTypeInfo **type, GError *err);
 /** greader_object for a material or texture node; borrowed (gmaterial_ref to keep it). */
 GENERIC_API GENERIC_NODISCARD int greader_material(GReader *r, GMaterial **out, GError *err);
+/** A new anonymous material with one parameter given, its value read at the reader's position: `base` is a
+ * material type keyword (the material `TYPE { PARAM VALUE }`) or a material or node defined before (the
+ * material `like BASE { PARAM VALUE }`: its other parameters inherited). E.g. the spline's `colors` ramp makes
+ * each key's child with greader_material_with(r, "lambert", "reflectance", ...). *out is borrowed from the
+ * library. */
+GENERIC_API GENERIC_NODISCARD int greader_material_with(GReader *r, const char *base, const char *param, GMaterial **out,
+                                              GError *err);
 /** Reads a colour literal (rgb, spectrum, blackbody, illuminant, line, bfc, scale, or a registered colour
  * type) or a colour name, and converts it in the given role into the reader's colour model. `out` must be a
  * cleared handle ({0}); it receives heap storage (free with gcolor_free), also when it is left black by a
