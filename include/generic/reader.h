@@ -8,6 +8,8 @@
  *     color warm blackbody 3200               # KIND [NAME] TYPE parameters
  *     material wall lambert { reflectance rgb 0.5 0.5 0.5 }
  *     material floor phong { diffuse warm specular rgb 0.2 0.2 0.2 exponent 40 }
+ *     define shine 60                         # a named number: usable wherever a number is read
+ *     material floor2 like floor { exponent shine }   # floor's other parameters, re-read from its text
  *
  * Every entry is KIND [NAME] VALUE, where KIND is a kind keyword (gkind_name()), NAME an optional identifier
  * that is not a type keyword of that kind, and VALUE either `TYPE parameters` (the registered parse routine
