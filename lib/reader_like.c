@@ -161,7 +161,7 @@ void greader_record_token(GReader *r)
     GTemplate *t = r->rec;
     if (r->nframes <= r->rec_frame) /* the type keyword, before the entry's frame */
         return;
-    if (r->cur_via != r->frames[r->rec_frame].via) /* re-read for something nested in a value: not the entry's */
+    if (r->cur_via && r->cur_via != r->frames[r->rec_frame].via) /* re-read for a value nested in it */
         return;
     t->last_text = r->cur_text;
     t->last_end = r->cur.end;

@@ -174,7 +174,11 @@ static void test_like_other_kinds(void **state)
                          "object p3 like p2 { a 2 }\n"
                          "node ramp1 spline { t constant { value 0.5 } basis linear\n"
                          "                    ramp { 0 lambert { reflectance rgb 0 0 0 } 1 lambert } }\n"
-                         "node ramp2 like ramp1 { t constant { value 0.25 } }\n");
+                         "node ramp2 like ramp1 { t constant { value 0.25 } }\n"
+                         "material tile phong { diffuse rgb 0.1 0.1 0.1 specular rgb 0.1 0.1 0.1 }\n"
+                         "node c1 spline { colors of tile diffuse { 0 rgb 0 0 0  1 rgb 0.4 0.4 0.4 }\n"
+                         "                 basis linear t constant { value 0.5 } }\n"
+                         "node c2 like c1 { t constant { value 0.25 } }\n");
     assert_near(pair(lib, "p2")->a, 1, 0);
     assert_near(pair(lib, "p2")->b, 7, 0);
     assert_near(pair(lib, "p3")->a, 2, 0);
@@ -187,6 +191,9 @@ static void test_like_other_kinds(void **state)
     assert_near(probe(lib, "ramp1").diffuse[0], 0.4, 1e-6); /* 0.5 of the way to lambert's default 0.8 */
     assert_near(probe(lib, "ramp2").diffuse[0], 0.2, 1e-6);
     assert_string_equal(glibrary_entry_base(lib, GKIND_OBJECT, 2), "p2");
+    /* a parameter whose value re-reads another entry (a colour ramp over a named phong) is inherited whole */
+    assert_near(probe(lib, "c1").diffuse[0], 0.2, 1e-6);
+    assert_near(probe(lib, "c2").diffuse[0], 0.1, 1e-6);
     glibrary_destroy(lib);
 }
 
