@@ -161,6 +161,7 @@ struct GReader {
     const GTemplate *pending_like; /* for the next entry frame pushed */
     const char *pending_via;
     const char *pending_single;
+    int single_taken; /* greader_param returned greader_material_with's parameter */
     char **vias;               /* the messages of every `like` read (owned) */
     int nvias, capvias;
     unsigned long long lexed, replayed; /* tokens read from files, and re-read for `like` */

@@ -440,10 +440,16 @@ int greader_material_with(GReader *r, const char *base, const char *param, GMate
     r->pending_via = via;
     r->pending_single = param;
     void *obj = NULL;
+    r->single_taken = 0;
     rc = greader_invoke(r, type, t.line, t.col, &obj, err);
     r->pending_like = NULL;
     r->pending_via = NULL;
     r->pending_single = NULL;
+    if (rc == G_OK && !r->single_taken) { /* a type read positionally: the value is still there */
+        gtype_release(type, obj);
+        rc = greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "%s type %s takes no named parameters (no '%s')",
+                              gkind_name(type->kind), type->name, param);
+    }
     if (rc == G_OK) {
         rc = glibrary_put(r->lib, type, NULL, obj, 1, 0, err);
         if (rc != G_OK)

@@ -302,6 +302,7 @@ int greader_param(GReader *r, const char **key, GError *err)
             return rc;
         snprintf(r->keybuf, sizeof r->keybuf, "%s", f->single);
         *key = r->keybuf;
+        r->single_taken = 1;
         return 1;
     }
     if (f->single_state == 2) { /* ... read: the block closes here, with the base's other parameters */

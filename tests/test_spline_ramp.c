@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "generic/builtins.h"
+#include "generic/materials.h"
 #include "generic/nodes.h"
 #include "generic/reader.h"
 #include "generic/surfpoint.h"
@@ -114,6 +115,25 @@ static void test_color_ramp(void **state)
     assert_near(ramp_with(tile, "colors of tile diffuse {", "catmull-rom", ramp, 0.8), 0.5, 1e-6);
 }
 
+/* A material type that reads nothing (as a positional one would not read named parameters): a grey lambert. */
+static int parse_plain(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    GColor refl = {0};
+    int rc = gcolor_alloc(&refl, greader_colormodel(r));
+    double grey[3] = {0.5, 0.5, 0.5};
+    if (rc == G_OK)
+        rc = gcolor_from_rgb(&refl, grey, GCOLOR_REFLECTANCE);
+    GMaterial *m = NULL;
+    if (rc == G_OK)
+        rc = glambert_create(greader_colormodel(r), &refl, &m, err);
+    gcolor_free(&refl);
+    *object = m;
+    return rc;
+}
+
+static const GTypeInfo plain_type = {GKIND_MATERIAL, "plain", NULL, parse_plain, "test: reads nothing", NULL};
+
 static void load_fails(const char *text, const char *message)
 {
     GLibrary *lib = (GLibrary *)0x1;
@@ -156,6 +176,8 @@ static void test_ramp_refused(void **state)
     load_fails("node n spline { t constant colors of phong colour { 0 rgb 1 1 1  1 rgb 0 0 0 } }\n",
                "t.mat:1:55: material phong: unknown parameter 'colour' (expected one of: diffuse, specular, exponent, "
                "mirror)");
+    load_fails("node n spline { t constant colors of plain x { 0 rgb 1 1 1  1 rgb 0 0 0 } }\n",
+               "t.mat:1:50: material type plain takes no named parameters (no 'x')");
     /* generated: the largest ramp loads, one key more is refused at that key */
     size_t cap = 1 << 20, n = 0;
     char *text = malloc(cap);
@@ -177,7 +199,7 @@ static void test_ramp_refused(void **state)
 
 int main(void)
 {
-    if (generic_register_builtins(NULL) != G_OK)
+    if (generic_register_builtins(NULL) != G_OK || gregistry_add(&plain_type, NULL) != G_OK)
         return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_ramp_linear),
