@@ -271,11 +271,10 @@ int gdielectric_create(const GColorModel *model, const GDielectricParams *params
 /* index N | index cauchy A B [C] | index sellmeier B1 B2 B3 C1 C2 C3 */
 static int read_index(GReader *r, GDispersion *d, GError *err)
 {
-    GToken t;
-    int rc = greader_peek(r, &t, err);
-    if (rc != G_OK)
+    int rc = greader_at_number(r, err); /* a number or a constant */
+    if (rc < 0)
         return rc;
-    if (t.type == GTOK_NUMBER) {
+    if (rc == 1) {
         double n;
         rc = greader_number_in(r, 0.01, 100.0, &n, err);
         if (rc == G_OK)

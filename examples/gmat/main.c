@@ -267,8 +267,9 @@ static int list(GLibrary *lib)
             const char *name;
             const GTypeInfo *t;
             glibrary_entry(lib, (GKind)k, i, &name, &t);
-            printf("%-10s %-24s %s%s%s\n", gkind_name((GKind)k), name ? name : "(anonymous)", t->name,
-                   t->summary ? " - " : "", t->summary ? t->summary : "");
+            const char *base = glibrary_entry_base(lib, (GKind)k, i);
+            printf("%-10s %-24s %s%s%s%s%s\n", gkind_name((GKind)k), name ? name : "(anonymous)", t->name,
+                   base ? " like " : "", base ? base : "", t->summary ? " - " : "", t->summary ? t->summary : "");
         }
     return 0;
 }
