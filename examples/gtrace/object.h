@@ -23,7 +23,7 @@ typedef enum ShapeKind {
 } ShapeKind;
 
 /** Largest nesting of groups and instances in one object. */
-#define GTRACE_MAX_NESTING 32
+#define GTRACE_MAX_NESTING 64
 /** Largest number of Embree instances a scene may expand to (every path through groups and instances). */
 #define GTRACE_MAX_INSTANCES 100000
 

@@ -550,6 +550,13 @@ int scene_from_library(GLibrary *lib, const char *name, Scene **out, GError *err
             rc = gerror_set(err, G_ERR_UNSUPPORTED, "%s: object type '%s' is not one gtrace renders", name,
                             t ? t->name : "?");
     }
+    double placements = 0.0;
+    for (int i = 0; i < s->nobjects; i++)
+        if (!s->objects[i]->is_part && !object_is_shape(s->objects[i]))
+            placements += s->objects[i]->expansion;
+    if (rc == G_OK && placements > GTRACE_MAX_INSTANCES)
+        rc = gerror_set(err, G_ERR_INVALID, "%s: the scene's groups and instances expand to %.6g placements, more "
+                        "than the limit of %d", name, placements, GTRACE_MAX_INSTANCES);
     n = glibrary_count(lib, GKIND_LIGHT);
     for (int i = 0; i < n && rc == G_OK; i++) {
         const GTypeInfo *t;
