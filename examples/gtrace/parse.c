@@ -9,18 +9,24 @@
  *   object NAME? disc     { center P normal N radius R ... }
  *   object NAME? cylinder { base P top Q radius R open BOOL ... }  surface 0 side, 1 base, 2 top
  *   object NAME? mesh     { file "model.obj" ... }
+ *   object NAME? quad     { corner P edge1 E edge2 F ... }   P + u E + v F, (u,v) in [0,1]^2
+ *   object NAME? triangle { a P b Q c R ... }                 (u,v) the barycentrics of Q and R
+ *   object NAME? group    { OBJECT OBJECT ... transform { ... } }   members become prototypes
+ *   object NAME? instance { of OBJECT transform { ... } material M }  M (optional) overrides
  *   transform { scale S | scale <x,y,z> | rotate <ax,ay,az> | rotate_axis <axis> DEG | translate <x,y,z> ... }
  *   light point       { position P intensity COLOR }
  *   light directional { direction D irradiance COLOR }
  *   light spot        { position P at Q intensity COLOR inner DEG outer DEG }
- *   light sphere      { center P radius R radiance COLOR samples N }
- *   light rectangle   { corner P edge1 E edge2 F radiance COLOR samples N }   lit side: edge1 x edge2
+ *   light sphere      { center P radius R radiance COLOR samples N visible BOOL }
+ *   light rectangle   { corner P edge1 E edge2 F radiance COLOR samples N visible BOOL }   lit side: edge1 x edge2
  *   light ambient     { color COLOR }        handed to every material's ambient()
  *   light background  { color COLOR }        radiance of rays that leave the scene
  *   light probe       { file "x.hdr" technique T count N samples S rotate <x,y,z> scale K ... }
  *                     image-based lighting from an HDR probe (probe_light.c)
  *   camera pinhole    { from P at Q up U fov DEG width W height H spp N depth D cutoff W exposure STOPS
  *                       medium M }
+ *   camera thinlens   { ...pinhole's... aperture A focus_distance F }
+ *   camera orthographic { from P at Q up U size S width W height H ... }  (no fov)
  * Spot cones are full opening angles in degrees (inner: full intensity, outer: none). cutoff: rays whose
  * weight in their pixel is below W are not traced (default 1e-3, 0 traces everything to the depth). */
 #include "parse.h"

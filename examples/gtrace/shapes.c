@@ -3,7 +3,10 @@
  *
  * Surface indices: box faces 0..5 = -x, +x, -y, +y, -z, +z; cylinder 0 side, 1 base cap, 2 top cap;
  * every other shape 0. (u,v): sphere longitude/latitude in [0,1] (v = 1 at the +y pole); plane: distance
- * along its frame; box faces, disc and caps: [0,1] across; cylinder side: angle and height in [0,1]. */
+ * along its frame; box faces, disc and caps: [0,1] across; cylinder side: angle and height in [0,1]; quad:
+ * corner + u edge1 + v edge2; triangle: the barycentrics of b and c. The full table with orientations is in
+ * examples/gtrace/README.md ("Surface parameters and surface indices"). hit_geom takes a hit inside an
+ * instance through the placement's transform. */
 #include "geometry.h"
 
 #include <math.h>
