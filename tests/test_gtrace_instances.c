@@ -270,6 +270,11 @@ static void test_limits(void **state)
     expect_error("material m lambert { }\nobject instance { of m }\n", "scene.scene:2:22:");
     expect_error("material m lambert { }\nobject b sphere { material m }\n"
                  "object instance { of b transform { translate <2e15, 0, 0> } }\n", "beyond the scene's limit");
+    /* placements a float cannot carry: a tiny quad scaled up by 1e40, a sphere scaled down by 1e-20 */
+    expect_error("material m lambert { }\nobject q quad { edge1 <1e-50, 0, 0> edge2 <0, 1e-50, 0> material m }\n"
+                 "object instance { of q transform { scale 1e40 } }\n", "beyond 1e30");
+    expect_error("material m lambert { }\nobject b sphere { material m }\n"
+                 "object instance { of b transform { scale 1e-20 } }\n", "singular");
 }
 
 int main(void)

@@ -292,14 +292,25 @@ static int place(Scene *s, int proto, const Xform *xf, const GMaterial *material
     if (s->ninstances >= GTRACE_MAX_INSTANCES)
         return gerror_set(err, G_ERR_INVALID, "the scene expands to more than %d instances", GTRACE_MAX_INSTANCES);
     s->ninstances++;
+    /* Embree takes the placement in single precision and inverts it: refuse what a float cannot carry */
+    float m[12];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++) {
+            if (!(fabs(xf->m[i][j]) <= 1e30))
+                return gerror_set(err, G_ERR_INVALID, "a placement's transform has an entry of %g, beyond 1e30 "
+                                  "(Embree's instances are single precision)", xf->m[i][j]);
+            m[4 * i + j] = (float)xf->m[i][j];
+        }
+    double det = (double)m[0] * ((double)m[5] * m[10] - (double)m[6] * m[9]) -
+                 (double)m[1] * ((double)m[4] * m[10] - (double)m[6] * m[8]) +
+                 (double)m[2] * ((double)m[4] * m[9] - (double)m[5] * m[8]);
+    if (!(fabs(det) > 1e-36))
+        return gerror_set(err, G_ERR_INVALID, "a placement's transform is singular in single precision "
+                          "(determinant %g; Embree's instances are single precision)", det);
     RTCGeometry g = rtcNewGeometry(s->device, RTC_GEOMETRY_TYPE_INSTANCE);
     if (!g)
         return gerror_set(err, G_ERR_NOMEM, "embree: cannot create an instance");
     rtcSetGeometryInstancedScene(g, s->protos[proto].rtc);
-    float m[12];
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 4; j++)
-            m[4 * i + j] = (float)xf->m[i][j];
     rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, m);
     unsigned id;
     attach(g, s->rtc, &id);
