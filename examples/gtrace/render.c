@@ -42,7 +42,7 @@ static int render_pixel(TraceCtx *c, const Job *job, int x, int y, int *perm, ui
         double sx, sy;
         pixel_sample(&c->rng, i, n, grid, perm, &sx, &sy);
         Ray r;
-        camera_ray(job->cam, x + sx, y + sy, &r);
+        camera_ray_lens(job->cam, x + sx, y + sy, &c->rng, &r);
         GScratchMark m2 = gscratch_mark(c->scratch);
         c->weight = 1.0;
         c->rays_left = job->max_rays;
