@@ -113,7 +113,7 @@ static int check_range(const GColor *src, GColorRole role, double max, const cha
                                         "%s: %s has the value %g at sample %d%s (must be <= %g)", material, param, x,
                                         i, where, max);
             return gerror_set_param(err, G_ERR_INVALID, param,
-                                    "%s: %s has the value %g at sample %d%s (must be <= %g, or <= %.4g within the "
+                                    "%s: %s has the value %g at sample %d%s (must be <= %g, or <= %.6g within the "
                                     "conversion error of model '%s')",
                                     material, param, x, i, where, max, hi, name);
         }
