@@ -139,7 +139,7 @@ int gphong_create(const GColorModel *model, const GPhongParams *params, GMateria
         rc = gmatparam_range(&p->albedo, GCOLOR_REFLECTANCE, 1.0, &lo, &hi);
         if (rc != G_OK)
             rc = gerror_set(err, rc, "phong: cannot measure kd + ks + mirror (%s)", gstatus_string(rc));
-        else if (mx > hi)
+        else if (mx > hi && !gmatparam_fold_ok(&p->albedo, hi)) /* above 1 in a band only as a fold */
             rc = gerror_set(err, G_ERR_INVALID,
                             "phong: kd + ks + mirror is %g at sample %d; it must not exceed 1 (energy conservation)%s",
                             mx, at, hi > 1.0 + 2e-5 ? ", or the conversion error of the colour model" : "");

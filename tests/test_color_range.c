@@ -153,14 +153,14 @@ static void test_out_of_range_refused(void **state)
         assert_int_equal(gcolor_fill(&c, 0.5), G_OK);
         c.v[0] = (float)(lo - 0.01);
         expect_refused(m, &c, "at sample 0");
-        assert_int_equal(gcolor_fill(&c, 0.5), G_OK);
-        c.v[0] = (float)(hi + 0.01);
+        assert_int_equal(gcolor_fill(&c, hi + 0.01), G_OK); /* above in every band: no fold either */
         expect_refused(m, &c, "at sample 0");
         if (m->nsamples > 0)
             expect_refused(m, &c, "380 nm");
         if (mi > 0) {
             expect_refused(m, &c, "conversion error of model");
             /* inside the error: accepted and clamped */
+            assert_int_equal(gcolor_fill(&c, 0.5), G_OK);
             c.v[0] = (float)(lo * 0.5);
             c.v[1] = (float)(1.0 + (hi - 1.0) * 0.5);
             GMaterial *l = NULL;
@@ -213,7 +213,7 @@ static void test_matrix_message(void **state)
     for (int k = 0; k < n * n; k++)
         c.v[k] = (k % (n + 1) == 0) ? 1.5f : 0.0f;
     c.kind = GCOLOR_MATRIX;
-    expect_refused(m, &c, "re-radiation matrix whose brightness");
+    expect_refused(m, &c, "re-radiation matrix that sends out 1.5 of the light arriving at excitation sample 0");
     c.v[3] = -1.0f;
     expect_refused(m, &c, "excitation sample 3");
     gcolor_free(&c);
@@ -260,6 +260,92 @@ static void test_clip_to_gamut(void **state)
     }
 }
 
+/* Reflectances above 1: a plain vector is refused where the model has matrices (bispectral) and accepted as a
+ * fold, unclamped, where it has none when its energy is <= 1; above that energy it is refused everywhere. A
+ * matrix that piles light from every excitation into one emission sample (fold 0.9 n there) but sends out 0.9
+ * per excitation sample conserves energy and is accepted. */
+static void test_above_one_is_a_fold(void **state)
+{
+    (void)state;
+    for (int mi = 0; mi < NMODELS; mi++) {
+        GColorModel *m = make(models[mi]);
+        GColor c;
+        assert_int_equal(gcolor_alloc(&c, m), G_OK);
+        assert_int_equal(gcolor_fill(&c, 0.3), G_OK);
+        c.v[0] = 1.6f;
+        double e = gmatparam_energy(&c, NULL);
+        assert_true(e < 1.0);
+        GMaterial *l = NULL;
+        GError err;
+        int rc = glambert_create(m, &c, &l, &err);
+        if (mi == 3) {
+            assert_int_equal(rc, G_ERR_INVALID);
+            assert_null(strstr(err.message, "only as the fold")); /* a plain vector: no fold here */
+        } else {
+            if (rc != G_OK)
+                fail_msg("%s: a fold of energy %g refused: %s", models[mi], e, err.message);
+            GScratch *scratch = gscratch_create(1 << 16);
+            GSurfPoint sp;
+            gsurfpoint_init(&sp, m, scratch);
+            GColor a;
+            assert_int_equal(gcolor_alloc(&a, m), G_OK);
+            assert_int_equal(gmaterial_diffuse(l, &sp, &a), G_OK);
+            assert_true(fabsf(a.v[0] - 1.6f) < 1e-6f); /* unclamped */
+            gcolor_free(&a);
+            gscratch_destroy(scratch);
+            gmaterial_unref(l);
+        }
+        assert_int_equal(gcolor_fill(&c, 1.2), G_OK); /* energy 1.2: refused in every model */
+        expect_refused(m, &c, "(must be <= 1");
+        if (mi == 3) {
+            int n = m->nsamples;
+            memset(c.v, 0, sizeof(float) * (size_t)n * n);
+            for (int i = 0; i < n; i++)
+                c.v[(n - 1) * n + i] = 0.9f;
+            c.kind = GCOLOR_MATRIX;
+            assert_int_equal(glambert_create(m, &c, &l, &err), G_OK);
+            gmaterial_unref(l);
+            c.v[(n - 1) * n + 2] = 1.5f;
+            expect_refused(m, &c, "excitation sample 2");
+        }
+        gcolor_free(&c);
+        gcolormodel_destroy(m);
+    }
+}
+
+/* The measured day-glo pigment (shared data, skipped without it) as a lambert reflectance: its fold reaches 2.19
+ * in rgb; accepted where its energy is <= 1 (spectrum9, spectrum, bispectral), refused in rgb, whose metamer of
+ * the fold carries 1.13. */
+static void test_measured_fold(void **state)
+{
+    (void)state;
+    static const char *const path = "/work/shared/data/bispectral/HERPIORA.BFC";
+    FILE *f = fopen(path, "r");
+    if (!f) {
+        printf("%s not found: skipped\n", path);
+        return;
+    }
+    fclose(f);
+    char text[256];
+    snprintf(text, sizeof text, "color h bfc \"%s\"\nmaterial m lambert { reflectance h }\n", path);
+    for (int mi = 0; mi < NMODELS; mi++) {
+        GReaderOptions opt;
+        memset(&opt, 0, sizeof opt);
+        opt.colormodel = models[mi];
+        GLibrary *lib = NULL;
+        GError err;
+        int rc = greader_load_string(text, "h.mat", &opt, &lib, &err);
+        printf("%-10s HERPIORA as lambert: %s\n", models[mi], rc == G_OK ? "accepted" : err.message);
+        if (mi == 0) {
+            assert_int_equal(rc, G_ERR_INVALID);
+            assert_non_null(strstr(err.message, "above that only as the fold of re-radiation"));
+        } else {
+            assert_int_equal(rc, G_OK);
+        }
+        glibrary_destroy(lib);
+    }
+}
+
 int main(void)
 {
     if (generic_register_builtins(NULL) != G_OK)
@@ -271,6 +357,8 @@ int main(void)
         cmocka_unit_test(test_primaries_through_the_reader),
         cmocka_unit_test(test_matrix_message),
         cmocka_unit_test(test_clip_to_gamut),
+        cmocka_unit_test(test_above_one_is_a_fold),
+        cmocka_unit_test(test_measured_fold),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -265,7 +265,7 @@ static int parse_light(GReader *r, const void *vtable, void **object, GError *er
     }
     if (rc == G_OK && !color.v)
         rc = greader_error(r, err, "the light needs its %s (a colour)", light_color_key[type]);
-    /* out of the model's gamut (a line light in rgb): mapped like a folded matrix, with one warning */
+    /* out of the model's gamut (a line light in a tristimulus model): mapped like a folded matrix, one warning */
     int mapped = 0;
     double xyz[3] = {0, 0, 0};
     if (rc == G_OK && (gcolor_to_xyz(&color, GCOLOR_LIGHT, xyz) != G_OK || !(xyz[1] >= 0.0) ||

@@ -47,6 +47,40 @@ int gmatparam_range(const GColor *c, GColorRole role, double max, double *lo, do
     return G_OK;
 }
 
+double gmatparam_energy(const GColor *c, int *at)
+{
+    const GColorModel *m = c->model;
+    if (at)
+        *at = 0;
+    if (c->kind == GCOLOR_MATRIX) { /* the largest column sum: all that leaves per unit arriving in one sample */
+        int n = m->nsamples;
+        double worst = 0.0;
+        for (int i = 0; i < n; i++) {
+            double sum = 0.0;
+            for (int o = 0; o < n; o++)
+                sum += c->v[o * n + i];
+            if (sum > worst) {
+                worst = sum;
+                if (at)
+                    *at = i;
+            }
+        }
+        return worst;
+    }
+    GSpectrumNM s;
+    if (gcolor_to_nm(c, GCOLOR_REFLECTANCE, &s) != G_OK)
+        return INFINITY;
+    double sum = 0.0;
+    for (int i = 0; i < GNM_COUNT; i++)
+        sum += s.v[i];
+    return sum / GNM_COUNT;
+}
+
+int gmatparam_fold_ok(const GColor *c, double hi)
+{
+    return c->kind == GCOLOR_VECTOR && !c->model->cls->from_reradiation && gmatparam_energy(c, NULL) <= hi;
+}
+
 /* " (NNN nm)" for sample k of a spectral model, "" otherwise. */
 static void sample_nm(const GColorModel *m, int k, char *buf, size_t size)
 {
@@ -86,14 +120,21 @@ static int check_range(const GColor *src, GColorRole role, double max, const cha
                                 name);
     char where[48];
     if (src->kind == GCOLOR_MATRIX) {
-        double b = gcolor_brightness(src);
-        if (b > hi)
+        int col;
+        double e = gmatparam_energy(src, &col);
+        if (max > 0.0 && e > hi) {
+            sample_nm(m, col, where, sizeof where);
             return gerror_set_param(err, G_ERR_INVALID, param,
-                                    "%s: %s is a re-radiation matrix whose brightness (its luminance-weighted "
-                                    "response to equal-energy light) is %g (must be <= %g)",
-                                    material, param, b, max);
+                                    "%s: %s is a re-radiation matrix that sends out %g of the light arriving at "
+                                    "excitation sample %d%s (must be <= %g: energy is conserved)",
+                                    material, param, e, col, where, max);
+        }
         return G_OK;
     }
+    /* above max in a band: in a model without matrices only a fold of re-radiation can be (see the header) */
+    double fold_energy = -1.0;
+    if (max > 0.0 && role == GCOLOR_REFLECTANCE && !m->cls->from_reradiation)
+        fold_energy = gmatparam_energy(src, NULL);
     for (int i = 0; i < m->nvalues; i++) {
         double x = src->v[i];
         sample_nm(m, i, where, sizeof where);
@@ -107,15 +148,17 @@ static int check_range(const GColor *src, GColorRole role, double max, const cha
                                     "within the conversion error of model '%s')",
                                     material, param, x, i, where, lo, name);
         }
+        if (x > hi && fold_energy >= 0.0 && fold_energy <= hi)
+            continue;
         if (x > hi) {
-            if (rhi <= 1.0)
-                return gerror_set_param(err, G_ERR_INVALID, param,
-                                        "%s: %s has the value %g at sample %d%s (must be <= %g)", material, param, x,
-                                        i, where, max);
-            return gerror_set_param(err, G_ERR_INVALID, param,
-                                    "%s: %s has the value %g at sample %d%s (must be <= %g, or <= %.6g within the "
-                                    "conversion error of model '%s')",
-                                    material, param, x, i, where, max, hi, name);
+            char bound[160] = "", fold[160] = "";
+            if (rhi > 1.0)
+                snprintf(bound, sizeof bound, ", or <= %.6g within the conversion error of model '%s'", hi, name);
+            if (fold_energy >= 0.0)
+                snprintf(fold, sizeof fold, "; above that only as the fold of re-radiation, whose energy under "
+                         "equal-energy light, here %g, is <= %.6g", fold_energy, hi);
+            return gerror_set_param(err, G_ERR_INVALID, param, "%s: %s has the value %g at sample %d%s (must be <= %g%s%s)",
+                                    material, param, x, i, where, max, bound, fold);
         }
     }
     return G_OK;
@@ -138,12 +181,17 @@ int gmatparam_color(const GColorModel *m, const GColor *src, GColorRole role, do
         return gerror_set_param(err, rc, param, "%s: cannot convert %s from model '%s' to '%s'", material, param,
                                 gcolormodel_name(src->model), gcolormodel_name(m));
     }
-    /* within the model's conversion error: clamped into [0, max] */
+    /* within the model's conversion error: clamped into [0, max]; a fold above max stays as it is */
+    double lo, hi;
+    int fold = 0;
+    if (max > 0.0 && dst->kind == GCOLOR_VECTOR && gmatparam_range(dst, role, max, &lo, &hi) == G_OK)
+        for (int i = 0; i < m->nvalues; i++)
+            fold |= dst->v[i] > hi;
     if (dst->kind == GCOLOR_VECTOR)
         for (int i = 0; i < m->nvalues; i++) {
             if (!(dst->v[i] >= 0.0f))
                 dst->v[i] = 0.0f;
-            if (max > 0.0 && dst->v[i] > max)
+            if (max > 0.0 && !fold && dst->v[i] > max)
                 dst->v[i] = (float)max;
         }
     return G_OK;
