@@ -134,11 +134,15 @@ int gphong_create(const GColorModel *model, const GPhongParams *params, GMateria
     }
     if (rc == G_OK) {
         int at;
-        double mx = gmatparam_max(&p->albedo, &at);
-        if (mx > 1.0 + 1e-3) /* the tolerance of gmatparam_color: rgb 0.5 + 0.5 is 1.00015 in spectral models */
+        double mx = gmatparam_max(&p->albedo, &at), lo, hi;
+        /* within the model's conversion error, as each parameter: rgb 0 0.5 0 + 0 0.5 0 is 1.03 in spectrum9 */
+        rc = gmatparam_range(&p->albedo, GCOLOR_REFLECTANCE, 1.0, &lo, &hi);
+        if (rc != G_OK)
+            rc = gerror_set(err, rc, "phong: cannot measure kd + ks + mirror (%s)", gstatus_string(rc));
+        else if (mx > hi && !gmatparam_fold_ok(&p->albedo, hi)) /* above 1 in a band only as a fold */
             rc = gerror_set(err, G_ERR_INVALID,
-                            "phong: kd + ks + mirror is %g at sample %d; it must not exceed 1 (energy conservation)",
-                            mx, at);
+                            "phong: kd + ks + mirror is %g at sample %d; it must not exceed 1 (energy conservation)%s",
+                            mx, at, hi > 1.0 + 2e-5 ? ", or the conversion error of the colour model" : "");
     }
     if (rc != G_OK) {
         phong_destroy(&p->base);

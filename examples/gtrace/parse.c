@@ -34,6 +34,7 @@
 #include "geometry.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 /* ---- transforms ---- */
@@ -334,7 +335,7 @@ static int parse_light(GReader *r, const void *vtable, void **object, GError *er
     GVec3 at = gvec3(0, 0, 0), dir = gvec3(0, -1, 0);
     double inner = 20.0, outer = 30.0;
     long samples = 16;
-    int have_at = 0;
+    int have_at = 0, color_line = 0, color_col = 0;
     l->radius = 1.0;
     l->edge1 = gvec3(1, 0, 0);
     l->edge2 = gvec3(0, 0, -1);
@@ -345,7 +346,11 @@ static int parse_light(GReader *r, const void *vtable, void **object, GError *er
     while ((rc = greader_param(r, &key, err)) > 0) {
         if (strcmp(key, light_color_key[type]) == 0) {
             gcolor_free(&color);
-            rc = greader_color(r, GCOLOR_LIGHT, &color, err);
+            GToken lit;
+            if ((rc = greader_peek(r, &lit, err)) == G_OK) {
+                color_line = lit.line, color_col = lit.col;
+                rc = greader_color(r, GCOLOR_LIGHT, &color, err);
+            }
         } else if ((strcmp(key, "position") == 0 && (type == L_POINT || type == L_SPOT)) ||
                    (strcmp(key, "center") == 0 && type == L_SPHERE) || (strcmp(key, "corner") == 0 && type == L_RECT)) {
             rc = greader_vec3(r, &l->position, err);
@@ -376,8 +381,16 @@ static int parse_light(GReader *r, const void *vtable, void **object, GError *er
     }
     if (rc == G_OK && !color.v)
         rc = greader_error(r, err, "the light needs its %s (a colour)", light_color_key[type]);
-    if (rc == G_OK && !gcolor_is_nonnegative(&color))
-        rc = greader_error(r, err, "the light's %s must be finite and >= 0 in every sample", light_color_key[type]);
+    /* out of the model's gamut (a line light in a tristimulus model): mapped like a folded matrix, one warning */
+    int mapped = 0;
+    double xyz[3] = {0, 0, 0};
+    if (rc == G_OK && (gcolor_to_xyz(&color, GCOLOR_LIGHT, xyz) != G_OK || !(xyz[1] >= 0.0) ||
+                       gcolor_clip_to_gamut(&color, GCOLOR_LIGHT, &mapped) != G_OK))
+        rc = greader_error(r, err, "the light's %s must be finite and of luminance >= 0", light_color_key[type]);
+    if (rc == G_OK && mapped)
+        fprintf(stderr, "%s:%d:%d: warning: the light's %s lies outside the gamut of colour model '%s': its "
+                "negative samples are set to 0, its luminance kept\n",
+                greader_file(r), color_line, color_col, light_color_key[type], gcolormodel_name(model));
     if (rc == G_OK && !light_within_limits(l, type, at))
         rc = greader_error(r, err, "the light lies beyond the scene's limit of %g: coordinates must be finite "
                            "and within [-%g, %g]", SCENE_MAX_COORD, SCENE_MAX_COORD, SCENE_MAX_COORD);
