@@ -158,6 +158,11 @@ GENERIC_API void goptics_frame(GVec3 n, GVec3 *t, GVec3 *b);
 GENERIC_API GVec3 goptics_sample_cosine(GVec3 n, double u1, double u2);
 /** A uniformly distributed direction over the hemisphere about n from u1, u2 in [0, 1) (pdf 1 / (2 pi)). */
 GENERIC_API GVec3 goptics_sample_hemisphere(GVec3 n, double u1, double u2);
+/** A direction about the unit axis a distributed as cos^e(alpha) (alpha its angle with a, e >= 0) from u1, u2 in
+ * [0, 1): a Phong lobe; its density is goptics_lobe_pdf. */
+GENERIC_API GVec3 goptics_sample_lobe(GVec3 a, double e, double u1, double u2);
+/** The density per unit solid angle of goptics_sample_lobe: (e + 1) / (2 pi) cos^e(alpha), 0 behind the axis. */
+GENERIC_API double goptics_lobe_pdf(GVec3 a, double e, GVec3 dir);
 
 /** 1 when out is the ideal mirror direction of in about n (within 1e-6 in cosine). */
 GENERIC_API GENERIC_NODISCARD int gmaterial_is_mirror_pair(GVec3 in, GVec3 n, GVec3 out);
