@@ -44,7 +44,7 @@ static void usage_main(FILE *f)
                "  albedo  directional-hemispherical reflectance (numeric integration)\n"
                "  plot    polar plot of the reflection in the plane of incidence (PNG)\n"
                "  list    the materials, texture nodes and generators a file defines\n"
-               "  check   conformance checks: albedo, reciprocity, finite values, Snell's law, defaults\n"
+               "  check   conformance checks: albedo, reciprocity, finite values, Snell's law, defaults, sampling\n"
                "  types   the registered material, node and generator types\n"
                "  swatch  a picture of a material or texture tree (gmat swatch --help)\n"
                "  laser   the laser experiment of Wilkie et al. (gmat laser --help)\n\n"

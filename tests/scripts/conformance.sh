@@ -135,8 +135,10 @@ expect_fail() {
 }
 echo "material m gain_lambert" > "$TMP/gain.mat"
 echo "material m skewed_lambert" > "$TMP/skewed.mat"
+echo "material m misdrawn_lambert" > "$TMP/misdrawn.mat"
 expect_fail "gain_lambert (albedo 1.5)" albedo "$GMAT" check "$TMP/gain.mat" m --plugin "$PLUGINS/gain.so"
 expect_fail "skewed_lambert (not reciprocal)" reciprocity "$GMAT" check "$TMP/skewed.mat" m --plugin "$PLUGINS/skewed.so"
+expect_fail "misdrawn_lambert (samples uniformly, pdf cos/pi)" chi2 "$GMAT" check "$TMP/misdrawn.mat" m --plugin "$PLUGINS/misdrawn.so"
 expect_fail "bad_add (wrong add)" "a + black = a" "$GCOLOR" check bad_add --plugin "$PLUGINS/bad_add.so"
 expect_fail "bad_bands (overlapping bands)" "bands partition a" "$GCOLOR" check bad_bands --plugin "$PLUGINS/bad_bands.so"
 
