@@ -26,7 +26,11 @@
  * material renders: delta lobes from reflection_dir and refraction_dir, weighted by the brightness of what
  * they pass on; a cosine lobe weighted by the brightness of diffuse(); without a diffuse colour a uniform
  * hemisphere lobe for the rest (1 - the delta lobes' weights) with reflection() as its value — correct for
- * any material, only noisier than a material's own sampling; is_delta: no. */
+ * any material, only noisier than a material's own sampling; is_delta: no.
+ * pdf is a density over the whole sphere of directions: a lobe about the mirror direction may reach below the
+ * surface, and sample() then returns such a direction (1) with a black weight, counted by pdf, so that pdf
+ * integrates to the share of draws that give a non-delta direction (1 - P(delta) - P(nothing drawn)). A material
+ * that reflects nothing (an emitter) draws nothing and is delta: a light sample would reflect nothing. */
 #ifndef GENERIC_MATERIAL_H
 #define GENERIC_MATERIAL_H
 

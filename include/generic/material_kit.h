@@ -48,7 +48,7 @@ GENERIC_API GENERIC_NODISCARD int gmat_sample_weight(const GMaterial *self, GSur
 
 /** Picks lobe i of n (weights w[i] >= 0, not all 0) with probability w[i] / sum from u in [0, 1) and remaps u to
  * [0, 1) within the lobe (*u); returns i and the probability in *p. */
-GENERIC_API int gmat_pick_lobe(const double *w, int n, double *u, double *p);
+GENERIC_API GENERIC_NODISCARD int gmat_pick_lobe(const double *w, int n, double *u, double *p);
 
 #ifdef __cplusplus
 }
