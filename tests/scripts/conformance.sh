@@ -10,7 +10,9 @@
 #     (`material m TYPE`, no parameters) when the type can be made so, else the first named entry of that type
 #     in examples/materials/*.mat or examples/textures/*.txt; a generator drives an interpolate node between two
 #     lamberts. A type with neither FAILS, asking for an example;
-#   - the modules of tests/plugins/nonconforming.c must be reported as failing, naming the broken property,
+#     gmat check includes the sampling checks (chi2 of sample() against pdf(), the pdf's integral, the weights);
+#   - the modules of tests/plugins/nonconforming.c must be reported as failing, naming the broken property
+#     (misdrawn_lambert: chi2 alone),
 #     and the example modules (examples/plugins/) must pass.
 SRC=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=$(cd "${1:-build}" 2> /dev/null && pwd) || { echo "FAIL: no build directory ${1:-build}"; exit 1; }
