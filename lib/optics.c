@@ -67,3 +67,17 @@ GVec3 goptics_sample_hemisphere(GVec3 n, double u1, double u2)
     double z = u1, r = sqrt(fmax(0.0, 1.0 - z * z)), phi = 2.0 * M_PI * u2;
     return from_frame(n, r * cos(phi), r * sin(phi), z);
 }
+
+GVec3 goptics_sample_lobe(GVec3 a, double e, double u1, double u2)
+{
+    double z = pow(1.0 - u1, 1.0 / (e + 1.0)), r = sqrt(fmax(0.0, 1.0 - z * z)), phi = 2.0 * M_PI * u2;
+    return from_frame(a, r * cos(phi), r * sin(phi), z);
+}
+
+double goptics_lobe_pdf(GVec3 a, double e, GVec3 dir)
+{
+    double c = gvec3_dot(a, dir);
+    if (!(c > 0.0))
+        return 0.0;
+    return (e + 1.0) / (2.0 * M_PI) * pow(c > 1.0 ? 1.0 : c, e);
+}

@@ -23,7 +23,8 @@
  *                n1 sin(theta1) = n2 sin(theta2) in the plane of incidence (n the material's refraction index,
  *                its brightness as a renderer uses it, vacuum outside), and from inside it returns 0 past the
  *                critical angle; for an opaque one, refraction_dir returns 0.
- *   defaults     for every method the class leaves NULL, the value material.h documents. */
+ *   defaults     for every method the class leaves NULL, the value material.h documents.
+ *   chi2, pdf integral, weight: the sampling slots (sampling.c). */
 #include "gmat.h"
 
 #include <math.h>
@@ -55,6 +56,11 @@ static void report(Checker *k, const char *property, double worst, double tol, c
     if (!pass)
         k->failures++;
     printf("%-12s worst %-11.4g tolerance %-8.4g %s  %s\n", property, worst, tol, pass ? "PASS" : "FAIL", detail);
+}
+
+static void report_fn(void *k, const char *property, double worst, double tol, const char *detail)
+{
+    report(k, property, worst, tol, detail);
 }
 
 /* Deterministic uniform numbers in [0, 1) (a small LCG: the same pairs on every run). */
@@ -487,6 +493,11 @@ static void check_defaults(Checker *k)
                 NOTE("opaque");
             worst = fmax(worst, gmaterial_opaque(m, &sp) == 1 ? 0.0 : INFINITY);
         }
+        if (!cls->is_delta) { /* no */
+            if (first)
+                NOTE("is_delta");
+            worst = fmax(worst, gmaterial_is_delta(m, &sp) == 0 ? 0.0 : INFINITY);
+        }
     }
 #undef NOTE
     ctx->place = NULL;
@@ -516,6 +527,7 @@ int gmat_check(GmatContext *ctx, int samples)
     check_finite(&k);
     check_snell(&k);
     check_defaults(&k);
+    gmat_check_sampling(ctx, k.places, NPLACES, 0, report_fn, &k);
     printf("%s: %s\n", ctx->material_name, k.failures ? "FAIL" : "PASS");
     gcolor_free(&k.a);
     gcolor_free(&k.b);

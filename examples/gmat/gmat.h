@@ -62,6 +62,16 @@ int gmat_plot(GmatContext *ctx, double theta_in, const GmatPlotOptions *o, const
  * law, defaults), one line each with its figure and PASS/FAIL; samples is the albedo grid (0 = 64). Returns the
  * exit status: 0 when every property passes, 1 otherwise. */
 int gmat_check(GmatContext *ctx, int samples);
+/** Prints one property's line (check.c): its name, the worst figure, the tolerance, PASS or FAIL. */
+typedef void (*GmatReportFn)(void *checker, const char *property, double worst, double tol, const char *detail);
+/** The sampling checks of `gmat check` (sampling.c): chi2 of sample() against pdf(), the pdf's integral, the
+ * weights; at places[0] and places[2 % nplaces], nsamples draws per incidence (0 = 20000). */
+void gmat_check_sampling(GmatContext *ctx, const GmatPlace *places, int nplaces, int nsamples, GmatReportFn report,
+                         void *checker);
+/** The relative index n(from) / n(to) at sp as a colour, as a renderer hands it to refraction() (storage of the
+ * model; temporaries on sp's arena). */
+int gmat_relative_index(GSurfPoint *sp, GColor *out);
+
 /** `gmat laser FILE MATERIAL ...` (laser.c): the laser experiment of Wilkie et al., reading FILE with the reader
  * options base (--allow-plugins, --confine); returns the exit status. */
 int gmat_laser(int argc, char **argv, const GReaderOptions *base);
