@@ -87,7 +87,8 @@ static void test_constants_errors(void **state)
     load_fails("define 3 4\n", "t.mat:1:8: expected a constant's name after 'define', found number 3");
     load_fails("define k\n", "t.mat:2:1: expected a number, found end of file");
     load_fails("define k 2\nmaterial m lambert { reflectance rgb k k k }\n",
-               "t.mat:2:22: lambert: reflectance has the value 2 at sample 0 (must be <= 1)");
+               "t.mat:2:22: lambert: reflectance has the value 2 at sample 0 (must be <= 1; above that only as the fold of re-radiation, whose energy "
+               "under equal-energy light, here 2.00015, is <= 1.00001)");
 }
 
 static void test_many_constants(void **state)

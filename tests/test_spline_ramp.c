@@ -170,7 +170,8 @@ static void test_ramp_refused(void **state)
                "node n spline { t constant colors of tile diffuse { 0 rgb 0.2 0.2 0.2  1 rgb 0.95 0.95 0.95 } }\n",
                "t.mat:5:74: phong: kd + ks + mirror is 1.05 at sample 0; it must not exceed 1 (energy conservation)");
     load_fails("node n spline { t constant colors { 0 rgb 0.2 0.2 0.2  1 rgb 2 2 2 } }\n",
-               "t.mat:1:58: lambert: reflectance has the value 2 at sample 0 (must be <= 1)");
+               "t.mat:1:58: lambert: reflectance has the value 2 at sample 0 (must be <= 1; above that only as the fold of re-radiation, whose energy "
+               "under equal-energy light, here 2.00015, is <= 1.00001)");
     load_fails("node n spline { t constant colors of nothing diffuse { 0 rgb 1 1 1  1 rgb 0 0 0 } }\n",
                "t.mat:1:38: spline: colors of 'nothing': neither a material defined before nor a material type");
     load_fails("node n spline { t constant colors of phong colour { 0 rgb 1 1 1  1 rgb 0 0 0 } }\n",
