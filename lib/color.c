@@ -371,12 +371,10 @@ int gcolor_from_reradiation(GColor *c, const GReradiation *r, GError *err)
     }
     rc = c->model->cls->from_nm(c->model, &s, GCOLOR_REFLECTANCE, c);
     /* A fluorescent pigment's fold is often outside the rgb gamut (day-glo orange has a negative blue): a
-     * negative reflectance would subtract light, so such components become 0 (hue kept as far as the gamut
-     * allows; the spectral models sample the non-negative fold and are not affected). */
-    for (int i = 0; rc == G_OK && i < c->model->nvalues; i++)
-        if (c->v[i] < 0.0f)
-            c->v[i] = 0.0f;
-    return rc;
+     * negative reflectance would subtract light, so such components become 0 and the luminance is kept
+     * (gcolor_clip_to_gamut, the mapping out-of-gamut lights get too; the spectral models sample the
+     * non-negative fold and are not affected). */
+    return rc == G_OK ? gcolor_clip_to_gamut(c, GCOLOR_REFLECTANCE, NULL) : rc;
 }
 
 int gcolor_convert(GColor *dst, const GColor *src, GColorRole role)
@@ -395,6 +393,8 @@ int gcolor_convert(GColor *dst, const GColor *src, GColorRole role)
 }
 
 /* ---- wavelength bands (dispersion) ---- */
+
+size_t gcolormodel_value_bytes(const GColorModel *m) { return (size_t)m->capacity * sizeof(float); }
 
 int gcolormodel_band_count(const GColorModel *m)
 {
@@ -440,4 +440,83 @@ double gcolor_band_value(const GColor *c, int band)
     if (!m->cls->band_count)
         return gcolor_brightness(c); /* the one band is everything */
     return band_value_by_mask(m, c, band);
+}
+
+/* ---- range after conversion ---- */
+
+int gcolormodel_rgb_range(const GColorModel *m, GColorRole role, double *lo, double *hi)
+{
+    *lo = 0.0;
+    *hi = 0.0;
+    GScratch *arena = gscratch_thread();
+    if (!arena)
+        return G_ERR_NOMEM;
+    GScratchMark mark = gscratch_mark(arena);
+    GColor p[3];
+    int rc = G_OK;
+    for (int b = 0; b < 3 && rc == G_OK; b++) {
+        double e[3] = {b == 0, b == 1, b == 2};
+        rc = gcolor_scratch(&p[b], m, arena);
+        if (rc == G_OK)
+            rc = gcolor_from_rgb(&p[b], e, role);
+    }
+    /* per sample, the cube's extremes are the sums of the primaries' negative (positive) parts */
+    for (int k = 0; rc == G_OK && k < m->nvalues; k++) {
+        double neg = 0.0, pos = 0.0;
+        for (int b = 0; b < 3; b++) {
+            double x = p[b].v[k];
+            if (x < 0.0)
+                neg += x;
+            else
+                pos += x;
+        }
+        *lo = fmin(*lo, neg);
+        *hi = fmax(*hi, pos);
+    }
+    gscratch_release(arena, mark);
+    return rc;
+}
+
+int gcolor_clip_to_gamut(GColor *c, GColorRole role, int *mapped)
+{
+    if (mapped)
+        *mapped = 0;
+    if (c->kind != GCOLOR_VECTOR)
+        return G_OK;
+    const GColorModel *m = c->model;
+    double most = -INFINITY;
+    for (int k = 0; k < m->nvalues; k++) {
+        if (!isfinite(c->v[k]))
+            return G_ERR_INVALID;
+        most = fmax(most, c->v[k]);
+    }
+    double lowest = INFINITY;
+    for (int k = 0; k < m->nvalues; k++)
+        lowest = fmin(lowest, c->v[k]);
+    if (lowest >= 0.0)
+        return G_OK;
+    double xyz[3], rgb[3], lo, hi;
+    int rc = gcolor_to_xyz(c, role, xyz);
+    if (rc == G_OK)
+        rc = gcolormodel_rgb_range(m, role, &lo, &hi);
+    if (rc != G_OK)
+        return rc;
+    gcie_xyz_to_rgb(xyz, rgb);
+    double s = fmax(0.0, fmax(rgb[0], fmax(rgb[1], rgb[2]))), y0 = xyz[1];
+    /* out of gamut: an RGB component below 0 (beyond rounding), or a sample below what conversion gives */
+    double eps = 1e-5 * fmax(s, most > 0.0 ? most : 0.0);
+    int out = fmin(rgb[0], fmin(rgb[1], rgb[2])) < -eps || lowest < lo * s - eps;
+    for (int k = 0; k < m->nvalues; k++)
+        if (c->v[k] < 0.0f)
+            c->v[k] = 0.0f;
+    double y1 = 0.0;
+    rc = gcolor_to_xyz(c, role, xyz);
+    if (rc != G_OK)
+        return rc;
+    y1 = xyz[1];
+    if (y0 > 0.0 && y1 > 0.0 && isfinite(y0 / y1))
+        rc = gcolor_scale(c, c, y0 / y1);
+    if (mapped)
+        *mapped = out;
+    return rc;
 }

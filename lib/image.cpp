@@ -1,12 +1,14 @@
-// image.cpp - the OpenImageIO shim: float images in and out (see include/generic/image.h).
+// image.cpp - the OpenImageIO shim: float images in and out (see include/generic/image.h). Part of the module
+// libgeneric_oiio.so, which the library loads on first use (lib/oiio_module.h): the library's own functions come
+// through the host table.
 #include "generic/image.h"
 #include "generic/file.h"
 #include "generic/memory.h"
+#define GOIIO_MODULE_SOURCE
+#include "oiio_module.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
-
-#include <atomic>
 
 #include <cerrno>
 #include <cmath>
@@ -79,22 +81,7 @@ bool float_extension(const char *path)
     return !strcasecmp(dot, ".exr") || !strcasecmp(dot, ".hdr") || !strcasecmp(dot, ".pfm");
 }
 
-// ---- the memory budget and the header's claim ----
-
-std::atomic<size_t> budget_bytes{0}; // 0: not yet set
-
-size_t default_budget()
-{
-    const char *env = getenv("GENERIC_IMAGE_BUDGET_MB");
-    if (env && *env) {
-        char *end;
-        errno = 0;
-        unsigned long long mb = strtoull(env, &end, 10);
-        if (!*end && errno == 0 && mb >= 1 && mb <= (1ULL << 40))
-            return (size_t)(mb << 20);
-    }
-    return (size_t)GIMAGE_DEFAULT_BUDGET_MB << 20;
-}
+// ---- the header's claim ----
 
 // Refuses a header whose size is impossible, more than the file can hold, or more than the budget; before
 // anything the size decides is allocated.
@@ -310,7 +297,7 @@ private:
 };
 
 int write_pixels(ImageOutput *out, const char *path, const char *tmp, const GImage *img, double scale,
-                 bool float_out, GError *err)
+                 bool float_out, const GImageWriteOptions *opt, GError *err)
 {
     const int w = img->width, h = img->height;
     int ch = img->channels;
@@ -322,6 +309,13 @@ int write_pixels(ImageOutput *out, const char *path, const char *tmp, const GIma
     }
     ImageSpec spec(w, h, out_ch, float_out ? TypeDesc::FLOAT : TypeDesc::UINT8);
     spec.alpha_channel = alpha;
+    if (opt && opt->full_width > 0 && out->supports("displaywindow")) { // a crop: data window inside the display
+        spec.x = opt->x;
+        spec.y = opt->y;
+        spec.full_x = spec.full_y = 0;
+        spec.full_width = opt->full_width;
+        spec.full_height = opt->full_height;
+    }
     spec.attribute("oiio:ColorSpace", float_out ? "Linear" : "sRGB");
     if (alpha >= 0 && !float_out)
         spec.attribute("oiio:UnassociatedAlpha", 1); // our pixels carry straight alpha
@@ -377,12 +371,35 @@ int verify_written(const char *path, const char *tmp, const GImage *img, GError 
     return G_OK;
 }
 
+int check_output_impl(const char *path, GError *err)
+{
+    if (!path || !*path)
+        return gerror_set(err, G_ERR_INVALID, "no image file name given");
+    int rc = gfile_check_output(path, err);
+    if (rc != G_OK)
+        return rc;
+    try {
+        auto out = ImageOutput::create(path);
+        if (!out) {
+            const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
+            std::string why = first_line(OIIO::geterror());
+            if (dot && (!slash || dot > slash))
+                return gerror_set(err, G_ERR_IO, "%s: cannot write image: this OpenImageIO has no writer for '%s' "
+                                  "files (%s)", path, dot, why.c_str());
+            return gerror_set(err, G_ERR_IO, "%s: cannot write image: no extension to choose the format by", path);
+        }
+        return G_OK;
+    } catch (...) {
+        return gerror_set(err, G_ERR_IO, "%s: cannot write image: OpenImageIO failed", path);
+    }
+}
+
 int write_impl(const char *path, const GImage *img, const GImageWriteOptions *opt, GError *err)
 {
     double exposure = opt ? opt->exposure : 0.0;
     if (!std::isfinite(exposure))
         return gerror_set(err, G_ERR_INVALID, "%s: exposure must be finite", path);
-    int rc = gimage_check_output(path, err);
+    int rc = check_output_impl(path, err);
     if (rc != G_OK)
         return rc;
     auto out = ImageOutput::create(path);
@@ -400,7 +417,7 @@ int write_impl(const char *path, const GImage *img, const GImageWriteOptions *op
             rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: the %s writer cannot write through a descriptor",
                             path, out->format_name());
         else
-            rc = write_pixels(out.get(), path, file.temp, img, exp2(exposure), float_extension(path), err);
+            rc = write_pixels(out.get(), path, file.temp, img, exp2(exposure), float_extension(path), opt, err);
         out.reset(); // before the proxy goes
         if (rc == G_OK && by_name)
             rc = verify_written(path, file.temp, img, err);
@@ -417,47 +434,9 @@ int write_impl(const char *path, const GImage *img, const GImageWriteOptions *op
     return rc;
 }
 
-} // namespace
+// ---- the entries from C: no exception may leave them ----
 
-extern "C" {
-
-double gimage_srgb_encode(double v)
-{
-    return v <= 0.0031308 ? 12.92 * v : 1.055 * pow(v, 1.0 / 2.4) - 0.055;
-}
-
-double gimage_srgb_decode(double v)
-{
-    return v <= 0.04045 ? v / 12.92 : pow((v + 0.055) / 1.055, 2.4);
-}
-
-int gimage_create(GImage *img, int width, int height, int channels, GError *err)
-{
-    if (!img)
-        return gerror_set(err, G_ERR_INVALID, "no image given");
-    img->width = img->height = img->channels = 0;
-    img->pixels = nullptr;
-    if (width <= 0 || height <= 0 || channels < 1 || channels > 4 || (long long)width * height > (1LL << 31) / 4)
-        return gerror_set(err, G_ERR_INVALID, "invalid image size %dx%d with %d channels", width, height, channels);
-    img->pixels = (float *)gmem_calloc((size_t)width * height * channels, sizeof(float));
-    if (!img->pixels)
-        return gerror_set(err, G_ERR_NOMEM, "out of memory for a %dx%d image", width, height);
-    img->width = width;
-    img->height = height;
-    img->channels = channels;
-    return G_OK;
-}
-
-void gimage_free(GImage *img)
-{
-    if (!img)
-        return;
-    gmem_free(img->pixels);
-    img->pixels = nullptr;
-    img->width = img->height = img->channels = 0;
-}
-
-int gimage_read(const char *path, unsigned flags, GImage *img, GError *err)
+int image_read(const char *path, unsigned flags, GImage *img, GError *err)
 {
     if (!img)
         return gerror_set(err, G_ERR_INVALID, "no image given");
@@ -478,7 +457,7 @@ int gimage_read(const char *path, unsigned flags, GImage *img, GError *err)
     }
 }
 
-int gimage_info(const char *path, int *width, int *height, int *channels, GError *err)
+int image_info(const char *path, int *width, int *height, int *channels, GError *err)
 {
     if (!path || !*path)
         return gerror_set(err, G_ERR_INVALID, "no image file name given");
@@ -504,46 +483,7 @@ int gimage_info(const char *path, int *width, int *height, int *channels, GError
     }
 }
 
-size_t gimage_memory_budget(void)
-{
-    size_t b = budget_bytes.load();
-    if (!b) {
-        size_t d = default_budget();
-        budget_bytes.compare_exchange_strong(b, d);
-        b = budget_bytes.load();
-    }
-    return b;
-}
-
-void gimage_set_memory_budget(size_t bytes)
-{
-    budget_bytes.store(bytes ? bytes : default_budget());
-}
-
-int gimage_check_output(const char *path, GError *err)
-{
-    if (!path || !*path)
-        return gerror_set(err, G_ERR_INVALID, "no image file name given");
-    int rc = gfile_check_output(path, err);
-    if (rc != G_OK)
-        return rc;
-    try {
-        auto out = ImageOutput::create(path);
-        if (!out) {
-            const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
-            std::string why = first_line(OIIO::geterror());
-            if (dot && (!slash || dot > slash))
-                return gerror_set(err, G_ERR_IO, "%s: cannot write image: this OpenImageIO has no writer for '%s' "
-                                  "files (%s)", path, dot, why.c_str());
-            return gerror_set(err, G_ERR_IO, "%s: cannot write image: no extension to choose the format by", path);
-        }
-        return G_OK;
-    } catch (...) {
-        return gerror_set(err, G_ERR_IO, "%s: cannot write image: OpenImageIO failed", path);
-    }
-}
-
-int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *opt, GError *err)
+int image_write(const char *path, const GImage *img, const GImageWriteOptions *opt, GError *err)
 {
     if (!path || !*path)
         return gerror_set(err, G_ERR_INVALID, "no image file name given");
@@ -560,4 +500,25 @@ int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *
     }
 }
 
-} // extern "C"
+} // namespace
+
+const GOiioHost *goiio_host;
+
+int goiio_image_info(const char *path, int *width, int *height, int *channels, GError *err)
+{
+    return image_info(path, width, height, channels, err);
+}
+
+extern "C" __attribute__((visibility("default"))) int generic_oiio_module(unsigned abi, const GOiioHost *host,
+                                                                          GOiioOps *ops)
+{
+    if (abi != GOIIO_MODULE_ABI || !host || !ops)
+        return -1;
+    goiio_host = host;
+    ops->image_read = image_read;
+    ops->image_info = image_info;
+    ops->image_write = image_write;
+    ops->image_check_output = check_output_impl;
+    goiio_texsys_ops(ops);
+    return 0;
+}

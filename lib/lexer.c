@@ -181,7 +181,16 @@ static int scan_string(GLexer *lx, GLexToken *out, GError *err)
     return G_OK;
 }
 
+static int scan(GLexer *lx, GLexToken *out, GError *err);
+
 int glexer_next(GLexer *lx, GLexToken *out, GError *err)
+{
+    int rc = scan(lx, out, err);
+    out->end = lx->pos;
+    return rc;
+}
+
+static int scan(GLexer *lx, GLexToken *out, GError *err)
 {
     int c;
     for (;;) { /* whitespace and comments */
@@ -199,6 +208,7 @@ int glexer_next(GLexer *lx, GLexToken *out, GError *err)
     out->tok.col = lx->col;
     out->tok.number = 0.0;
     out->tok.text = out->text;
+    out->start = lx->pos;
     if (c < 0) {
         out->tok.type = GTOK_EOF;
         snprintf(out->text, sizeof out->text, "end of file");

@@ -18,6 +18,7 @@
 /** A token with its own text storage. */
 typedef struct GLexToken {
     GToken tok;
+    size_t start, end; /**< byte offsets of the token in the scanned text (for re-reading it, `like`) */
     char text[GLEX_TEXT_MAX];
 } GLexToken;
 

@@ -6,11 +6,12 @@
 
 int gmaterial_is_mirror_pair(GVec3 in, GVec3 n, GVec3 out)
 {
+    /* cos(ideal, out) > 1 - 1e-6 without square roots: compare squares once the dot product is positive */
     GVec3 ideal = gvec3_sub(gvec3_scale(n, 2.0 * gvec3_dot(in, n)), in);
-    double li = gvec3_length(ideal), lo = gvec3_length(out);
-    if (li == 0.0 || lo == 0.0)
+    double d = gvec3_dot(ideal, out), c = 1.0 - 1e-6;
+    if (!(d > 0.0))
         return 0;
-    return gvec3_dot(ideal, out) / (li * lo) > 1.0 - 1e-6;
+    return d * d > c * c * gvec3_dot(ideal, ideal) * gvec3_dot(out, out);
 }
 
 int goptics_refract(GVec3 view, GVec3 n, double eta, GVec3 *dir)
@@ -65,4 +66,18 @@ GVec3 goptics_sample_hemisphere(GVec3 n, double u1, double u2)
 {
     double z = u1, r = sqrt(fmax(0.0, 1.0 - z * z)), phi = 2.0 * M_PI * u2;
     return from_frame(n, r * cos(phi), r * sin(phi), z);
+}
+
+GVec3 goptics_sample_lobe(GVec3 a, double e, double u1, double u2)
+{
+    double z = pow(1.0 - u1, 1.0 / (e + 1.0)), r = sqrt(fmax(0.0, 1.0 - z * z)), phi = 2.0 * M_PI * u2;
+    return from_frame(a, r * cos(phi), r * sin(phi), z);
+}
+
+double goptics_lobe_pdf(GVec3 a, double e, GVec3 dir)
+{
+    double c = gvec3_dot(a, dir);
+    if (!(c > 0.0))
+        return 0.0;
+    return (e + 1.0) / (2.0 * M_PI) * pow(c > 1.0 ? 1.0 : c, e);
 }

@@ -17,7 +17,9 @@ static int verror_at(GReader *r, GError *err, int code, int line, int col, const
     char msg[sizeof err->message];
     vsnprintf(msg, sizeof msg, fmt, ap);
     r->located = 1;
-    gerror_set(err, code, "%s:%d:%d: %s", r->src ? r->src->name : "?", line, col, msg);
+    const char *file = NULL, *via = NULL;
+    greader_origin(r, line, col, &file, &via);
+    gerror_set(err, code, "%s:%d:%d: %s%s%s", file, line, col, msg, via ? " " : "", via ? via : "");
     if (err) {
         err->line = line;
         err->col = col;
@@ -71,8 +73,14 @@ int greader_locate(GReader *r, GError *err)
     int line = r->cur.tok.line, col = r->cur.tok.col;
     char param[sizeof err->param];
     snprintf(param, sizeof param, "%s", err->param);
-    if (param[0])
-        param_position(r, param, &line, &col);
+    int at_param = param[0] && param_position(r, param, &line, &col);
+    if (!at_param && r->cur_via) /* past a re-read token: the entry derived with `like` says it */
+        for (int i = r->nframes - 1; i >= 0; i--)
+            if (!r->frames[i].is_block && r->frames[i].like_line) {
+                line = r->frames[i].like_line;
+                col = r->frames[i].like_col;
+                break;
+            }
     char msg[sizeof err->message];
     snprintf(msg, sizeof msg, "%s", err->message[0] ? err->message : gstatus_string(code));
     code = greader_error_at(r, err, code, line, col, "%s", msg);
@@ -98,13 +106,34 @@ static int fill(GReader *r, GError *err)
 {
     if (r->have_ahead)
         return G_OK;
-    int rc = glexer_next(&r->src->lx, &r->ahead, err);
+    int rc = greader_replay_fill(r, err); /* `like` re-reading a base entry */
+    if (rc != 0)
+        return rc < 0 ? rc : G_OK;
+    rc = glexer_next(&r->src->lx, &r->ahead, err);
     if (rc != G_OK) {
         r->located = 1;
         return rc;
     }
+    r->ahead_text = r->src->text_id;
+    r->ahead_via = NULL;
+    r->lexed++;
     r->have_ahead = 1;
     return G_OK;
+}
+
+/* The ahead token becomes the current one. */
+static void consume(GReader *r)
+{
+    r->cur.tok = r->ahead.tok;
+    r->cur.start = r->ahead.start;
+    r->cur.end = r->ahead.end;
+    memcpy(r->cur.text, r->ahead.text, strlen(r->ahead.text) + 1);
+    r->cur.tok.text = r->cur.text;
+    r->cur_text = r->ahead_text;
+    r->cur_via = r->ahead_via;
+    r->have_ahead = 0;
+    if (r->rec)
+        greader_record_token(r);
 }
 
 int greader_peek(GReader *r, GToken *tok, GError *err)
@@ -117,10 +146,7 @@ int greader_peek(GReader *r, GToken *tok, GError *err)
 
 void greader_take(GReader *r, GToken *tok)
 {
-    r->cur.tok = r->ahead.tok;
-    memcpy(r->cur.text, r->ahead.text, strlen(r->ahead.text) + 1);
-    r->cur.tok.text = r->cur.text;
-    r->have_ahead = 0;
+    consume(r);
     if (tok)
         *tok = r->cur.tok;
 }
@@ -130,10 +156,7 @@ int greader_next(GReader *r, GToken *tok, GError *err)
     int rc = fill(r, err);
     if (rc != G_OK)
         return rc;
-    r->cur.tok = r->ahead.tok;
-    memcpy(r->cur.text, r->ahead.text, strlen(r->ahead.text) + 1);
-    r->cur.tok.text = r->cur.text;
-    r->have_ahead = 0;
+    consume(r);
     if (tok)
         *tok = r->cur.tok;
     return G_OK;
@@ -160,6 +183,17 @@ int greader_push_frame(GReader *r, int is_block, const GTypeInfo *type, int line
     memset(f, 0, sizeof *f);
     f->is_block = is_block;
     f->type = type;
+    if (!is_block) { /* the entry `like` is reading */
+        f->like = r->pending_like;
+        f->via = r->pending_via;
+        if (f->via)
+            f->like_line = line, f->like_col = col;
+        f->single = r->pending_single;
+        f->single_state = f->single ? 1 : 0;
+        r->pending_like = NULL;
+        r->pending_via = NULL;
+        r->pending_single = NULL;
+    }
     f->open_line = line;
     f->open_col = col;
     return G_OK;
@@ -350,6 +384,9 @@ static int do_entry(GReader *r, GKind kind, GError *err)
         rc = greader_value(r, kind, 0, &obj, &type, &owned, err);
         return rc ? rc : glibrary_put(r->lib, type, NULL, obj, owned, 1, err);
     }
+    if (strcmp(t.text, "like") == 0)
+        return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col,
+                                "'like' needs the new entry's name before it: %s NAME like BASE { ... }", kn);
     char *name = gmem_strdup(t.text);
     if (!name)
         return greader_error_at(r, err, G_ERR_NOMEM, t.line, t.col, "out of memory");
@@ -359,6 +396,9 @@ static int do_entry(GReader *r, GKind kind, GError *err)
         rc = greader_peek(r, &v, err);
     if (rc == G_OK && glibrary_find(r->lib, kind, name)) {
         rc = greader_error_at(r, err, G_ERR_EXISTS, t.line, t.col, "%s '%s' is already defined", kn, name);
+    } else if (rc == G_OK && v.type == GTOK_IDENT && strcmp(v.text, "like") == 0) {
+        greader_take(r, NULL); /* `like`, peeked above */
+        rc = greader_like_entry(r, kind, name, t.line, t.col, err);
     } else if (rc == G_OK && v.type != GTOK_IDENT) { /* most likely a misspelt type keyword */
         char names[512];
         gregistry_names(kind, names, sizeof names);
@@ -372,11 +412,25 @@ static int do_entry(GReader *r, GKind kind, GError *err)
         rc = greader_error_at(r, err, G_ERR_NOTFOUND, t.line, t.col, "unknown %s type '%s' (registered: %s)", kn,
                               name, names[0] ? names : "none");
     } else if (rc == G_OK) {
-        rc = greader_value(r, kind, 0, &obj, &type, &owned, err);
+        GTemplate *tmpl = gmem_calloc(1, sizeof *tmpl); /* for entries derived from this one */
+        if (!tmpl)
+            rc = greader_error_at(r, err, G_ERR_NOMEM, t.line, t.col, "out of memory");
+        r->rec = tmpl;
+        r->rec_frame = r->nframes;
+        if (rc == G_OK)
+            rc = greader_value(r, kind, 0, &obj, &type, &owned, err);
+        r->rec = NULL;
         if (rc == G_OK) {
             rc = glibrary_put(r->lib, type, name, obj, owned, 1, err);
             if (rc != G_OK)
                 rc = greader_error_at(r, err, rc, t.line, t.col, "%s '%s' could not be defined", kn, name);
+        }
+        if (rc == G_OK && owned) { /* made by a parse routine (not another name for an entry) */
+            rc = glibrary_set_template(r->lib, kind, name, tmpl);
+            if (rc != G_OK)
+                rc = greader_error_at(r, err, rc, t.line, t.col, "out of memory");
+        } else {
+            gtemplate_free(tmpl);
         }
     }
     gmem_free(name);
@@ -399,8 +453,34 @@ static int resolve_model(GReader *r, GError *err)
     return G_OK;
 }
 
-static const char statement_list[] = "include, plugin, colormodel, color, material, node, generator, object, light, "
-                                     "camera";
+/* An entry of a kind the caller skips (GReaderOptions.skip_kinds), its keyword read at (line, col): the names
+ * and type keyword before its block, then the block up to its matching brace, without interpreting them. */
+static int skip_entry(GReader *r, GKind kind, int line, int col, GError *err)
+{
+    GToken t;
+    int rc;
+    while ((rc = greader_next(r, &t, err)) == G_OK && t.type == GTOK_IDENT)
+        ;
+    if (rc != G_OK)
+        return rc;
+    if (t.type != GTOK_LBRACE) {
+        char found[96];
+        glexer_describe(&t, found, sizeof found);
+        return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "expected '{' of the %s entry (skipped), found %s",
+                                gkind_name(kind), found);
+    }
+    for (long depth = 1; depth > 0;) {
+        if ((rc = greader_next(r, &t, err)) != G_OK)
+            return rc;
+        if (t.type == GTOK_EOF)
+            return greader_error_at(r, err, G_ERR_PARSE, line, col, "the %s entry has no closing '}'", gkind_name(kind));
+        depth += t.type == GTOK_LBRACE ? 1 : t.type == GTOK_RBRACE ? -1 : 0;
+    }
+    return G_OK;
+}
+
+static const char statement_list[] = "include, plugin, colormodel, define, color, material, node, generator, "
+                                     "object, light, camera";
 
 static int parse_statements(GReader *r, GError *err)
 {
@@ -421,7 +501,8 @@ static int parse_statements(GReader *r, GError *err)
                                     statement_list, found);
         }
         greader_take(r, &t);
-        int known = !strcmp(t.text, "include") || !strcmp(t.text, "plugin") || !strcmp(t.text, "colormodel");
+        int known = !strcmp(t.text, "include") || !strcmp(t.text, "plugin") || !strcmp(t.text, "colormodel") ||
+                    !strcmp(t.text, "define");
         for (int k = GKIND_COLOR; k < GKIND_COUNT && !known; k++)
             known = strcmp(t.text, gkind_name((GKind)k)) == 0;
         if (known)
@@ -432,6 +513,8 @@ static int parse_statements(GReader *r, GError *err)
             rc = do_plugin(r, err);
         } else if (strcmp(t.text, "colormodel") == 0) {
             rc = do_colormodel(r, r->opt.model != NULL || r->model_pending, err);
+        } else if (strcmp(t.text, "define") == 0) {
+            rc = greader_define_statement(r, err);
         } else {
             int kind = -1;
             for (int k = GKIND_COLOR; k < GKIND_COUNT && kind < 0; k++)
@@ -445,7 +528,9 @@ static int parse_statements(GReader *r, GError *err)
                                         found, statement_list);
             }
             rc = resolve_model(r, err);
-            if (rc == G_OK)
+            if (rc == G_OK && kind < 32 && (r->opt.skip_kinds & (1u << kind)))
+                rc = skip_entry(r, (GKind)kind, t.line, t.col, err);
+            else if (rc == G_OK)
                 rc = do_entry(r, (GKind)kind, err);
         }
         if (rc != G_OK)
@@ -467,10 +552,12 @@ static void reader_init(GReader *r, GLibrary *lib, const GReaderOptions *opt)
         r->opt.max_file_size = GREADER_DEFAULT_MAX_FILE_SIZE;
     r->cur.tok.line = r->cur.tok.col = 1;
     r->cur.tok.text = r->cur.text;
+    r->cur_text = r->ahead_text = -1;
 }
 
 static void reader_fini(GReader *r)
 {
+    greader_like_fini(r);
     greader_pop_frames(r, 0);
     gmem_free(r->frames);
     for (int i = 0; i < r->nincluded; i++)
@@ -502,7 +589,7 @@ static int run(GLibrary *lib, const GReaderOptions *opt, int create_model, const
     } else {
         GReaderSource *s = gmem_calloc(1, sizeof *s);
         rc = s && (s->name = gmem_strdup(name ? name : "<string>")) && (s->dir = gmem_strdup("."))
-                 ? greader_push_source(&r, s, text, strlen(text))
+                 ? greader_push_source(&r, s, text, strlen(text), err)
                  : (greader_free_source(s), gerror_set(err, G_ERR_NOMEM, "out of memory"));
     }
     if (rc == G_OK) {

@@ -13,7 +13,19 @@ typedef struct Entry {
     void *object;
     int owned;   /* released with the library (aliases are not) */
     int toplevel;
+    GTemplate *tmpl; /* what `like` re-reads of it (named entries read from text) */
 } Entry;
+
+typedef struct KeptText {
+    char *text, *name;
+    size_t len;
+} KeptText;
+
+typedef struct Constant {
+    char *name;
+    double value;
+    int line, col, text;
+} Constant;
 
 struct GLibrary {
     GColorModel *owned_model;
@@ -24,6 +36,12 @@ struct GLibrary {
     int nslots, nnamed;
     int *toplevel[GKIND_COUNT]; /* per kind, the indices of the top-level entries in order */
     int ntop[GKIND_COUNT], captop[GKIND_COUNT];
+    KeptText *texts; /* every source text read, for `like` */
+    int ntexts, captexts;
+    Constant *consts; /* `define` */
+    int nconsts, capconsts;
+    int *cslots; /* open addressing over consts: index + 1 */
+    int ncslots;
 };
 
 /* Materials and texture nodes share one namespace. */
@@ -119,7 +137,17 @@ void glibrary_destroy(GLibrary *lib)
         if (e->owned)
             gtype_release(e->type, e->object);
         gmem_free(e->name);
+        gtemplate_free(e->tmpl);
     }
+    for (int i = 0; i < lib->ntexts; i++) {
+        gmem_free(lib->texts[i].text);
+        gmem_free(lib->texts[i].name);
+    }
+    gmem_free(lib->texts);
+    for (int i = 0; i < lib->nconsts; i++)
+        gmem_free(lib->consts[i].name);
+    gmem_free(lib->consts);
+    gmem_free(lib->cslots);
     gmem_free(lib->entries);
     gmem_free(lib->slots);
     for (int k = 0; k < GKIND_COUNT; k++)
@@ -191,6 +219,7 @@ int glibrary_put(GLibrary *lib, const GTypeInfo *type, const char *name, void *o
     e->object = object;
     e->owned = owned;
     e->toplevel = toplevel;
+    e->tmpl = NULL;
     if (copy) {
         insert_slot(lib->slots, lib->nslots, e, lib->count);
         lib->nnamed++;
@@ -263,4 +292,145 @@ void glibrary_names(const GLibrary *lib, GKind kind, char *buf, size_t size)
     }
     if (!used)
         snprintf(buf, size, "none");
+}
+
+/* ---- kept texts, templates, constants ---- */
+
+void gtemplate_free(GTemplate *t)
+{
+    if (!t)
+        return;
+    for (int i = 0; i < t->nparams; i++)
+        gmem_free(t->params[i].name);
+    gmem_free(t->params);
+    gmem_free(t->base);
+    gmem_free(t);
+}
+
+int glibrary_keep_text(GLibrary *lib, char *text, size_t len, const char *name, int *id)
+{
+    char *n = NULL;
+    if (lib->ntexts == lib->captexts) {
+        int cap = lib->captexts ? lib->captexts * 2 : 8;
+        KeptText *k = gmem_realloc(lib->texts, (size_t)cap * sizeof *k);
+        if (!k) {
+            gmem_free(text);
+            return G_ERR_NOMEM;
+        }
+        lib->texts = k;
+        lib->captexts = cap;
+    }
+    if (!(n = gmem_strdup(name ? name : "?"))) {
+        gmem_free(text);
+        return G_ERR_NOMEM;
+    }
+    lib->texts[lib->ntexts] = (KeptText){text, n, len};
+    *id = lib->ntexts++;
+    return G_OK;
+}
+
+const char *glibrary_text(const GLibrary *lib, int id, size_t *len, const char **name)
+{
+    if (!lib || id < 0 || id >= lib->ntexts)
+        return NULL;
+    if (len)
+        *len = lib->texts[id].len;
+    if (name)
+        *name = lib->texts[id].name;
+    return lib->texts[id].text;
+}
+
+int glibrary_set_template(GLibrary *lib, GKind kind, const char *name, GTemplate *t)
+{
+    int i = find_index(lib, kind, name);
+    if (i < 0) {
+        gtemplate_free(t);
+        return G_ERR_NOTFOUND;
+    }
+    gtemplate_free(lib->entries[i].tmpl);
+    lib->entries[i].tmpl = t;
+    return G_OK;
+}
+
+const GTemplate *glibrary_template(const GLibrary *lib, GKind kind, const char *name)
+{
+    int i = find_index(lib, kind, name);
+    return i >= 0 ? lib->entries[i].tmpl : NULL;
+}
+
+const char *glibrary_entry_base(const GLibrary *lib, GKind kind, int index)
+{
+    if (!lib || (unsigned)kind >= GKIND_COUNT || index < 0 || index >= lib->ntop[kind])
+        return NULL;
+    const Entry *e = &lib->entries[lib->toplevel[kind][index]];
+    return e->tmpl ? e->tmpl->base : NULL;
+}
+
+static int find_constant(const GLibrary *lib, const char *name)
+{
+    if (!lib->ncslots)
+        return -1;
+    uint32_t mask = (uint32_t)lib->ncslots - 1;
+    for (uint32_t i = hash(-1, name) & mask;; i = (i + 1) & mask) {
+        int s = lib->cslots[i];
+        if (!s)
+            return -1;
+        if (strcmp(lib->consts[s - 1].name, name) == 0)
+            return s - 1;
+    }
+}
+
+int glibrary_define_constant(GLibrary *lib, const char *name, double value, int line, int col, int text)
+{
+    if (find_constant(lib, name) >= 0)
+        return G_ERR_EXISTS;
+    if ((lib->nconsts + 1) * 2 > lib->ncslots) {
+        int n = lib->ncslots ? lib->ncslots * 2 : 64;
+        int *s = gmem_calloc((size_t)n, sizeof *s);
+        if (!s)
+            return G_ERR_NOMEM;
+        for (int i = 0; i < lib->nconsts; i++) {
+            uint32_t j = hash(-1, lib->consts[i].name) & (uint32_t)(n - 1);
+            while (s[j])
+                j = (j + 1) & (uint32_t)(n - 1);
+            s[j] = i + 1;
+        }
+        gmem_free(lib->cslots);
+        lib->cslots = s;
+        lib->ncslots = n;
+    }
+    if (lib->nconsts == lib->capconsts) {
+        int cap = lib->capconsts ? lib->capconsts * 2 : 16;
+        Constant *c = gmem_realloc(lib->consts, (size_t)cap * sizeof *c);
+        if (!c)
+            return G_ERR_NOMEM;
+        lib->consts = c;
+        lib->capconsts = cap;
+    }
+    char *copy = gmem_strdup(name);
+    if (!copy)
+        return G_ERR_NOMEM;
+    lib->consts[lib->nconsts] = (Constant){copy, value, line, col, text};
+    uint32_t j = hash(-1, name) & (uint32_t)(lib->ncslots - 1);
+    while (lib->cslots[j])
+        j = (j + 1) & (uint32_t)(lib->ncslots - 1);
+    lib->cslots[j] = ++lib->nconsts;
+    return G_OK;
+}
+
+int glibrary_constant(const GLibrary *lib, const char *name, double *value, int *line, int *col, int *text)
+{
+    int i = lib ? find_constant(lib, name) : -1;
+    if (i < 0)
+        return 0;
+    const Constant *c = &lib->consts[i];
+    if (value)
+        *value = c->value;
+    if (line)
+        *line = c->line;
+    if (col)
+        *col = c->col;
+    if (text)
+        *text = c->text;
+    return 1;
 }

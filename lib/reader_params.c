@@ -64,7 +64,7 @@ int greader_at_number(GReader *r, GError *err)
 {
     GToken t;
     int rc = greader_peek(r, &t, err);
-    return rc ? rc : t.type == GTOK_NUMBER;
+    return rc ? rc : t.type == GTOK_NUMBER || (t.type == GTOK_IDENT && glibrary_constant(r->lib, t.text, NULL, NULL, NULL, NULL));
 }
 
 int greader_number(GReader *r, double *out, GError *err)
@@ -77,6 +77,14 @@ int greader_number(GReader *r, double *out, GError *err)
                                  strcasecmp(t.text, "infinity") == 0))
         return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "'%s' is not allowed: numbers must be finite",
                                 t.text);
+    double value = t.number;
+    if (t.type == GTOK_IDENT && glibrary_constant(r->lib, t.text, &value, NULL, NULL, NULL)) {
+        greader_take(r, NULL); /* a constant (`define`), peeked above */
+        *out = value;
+        return G_OK;
+    }
+    if (t.type == GTOK_IDENT)
+        return expected(r, "a number or a constant defined before", err);
     if (t.type != GTOK_NUMBER)
         return expected(r, "a number", err);
     greader_take(r, NULL); /* the token peeked above */
@@ -253,6 +261,30 @@ static int missing_brace(GReader *r, const GToken *t, int line, int col, GError 
                             line, col);
 }
 
+/* Notes a parameter name of the entry f, written at the token t (the look-ahead token). */
+static int add_key(GReader *r, GReaderFrame *f, const char *name, const GToken *t, GError *err)
+{
+    if (f->nkeys == f->capkeys) {
+        int cap = f->capkeys ? f->capkeys * 2 : 8;
+        GReaderKey *k = gmem_realloc(f->keys, (size_t)cap * sizeof *k);
+        if (!k)
+            return greader_error_at(r, err, G_ERR_NOMEM, t->line, t->col, "out of memory");
+        f->keys = k;
+        f->capkeys = cap;
+    }
+    GReaderKey *k = &f->keys[f->nkeys];
+    if (!(k->name = gmem_strdup(name)) || greader_record_key(r, f, name) != G_OK) {
+        gmem_free(k->name);
+        return greader_error_at(r, err, G_ERR_NOMEM, t->line, t->col, "out of memory");
+    }
+    k->line = t->line;
+    k->col = t->col;
+    k->text = r->ahead_text;
+    k->via = r->ahead_via;
+    f->nkeys++;
+    return G_OK;
+}
+
 int greader_param(GReader *r, const char **key, GError *err)
 {
     *key = NULL;
@@ -263,7 +295,37 @@ int greader_param(GReader *r, const char **key, GError *err)
     int rc = greader_peek(r, &t, err);
     if (rc != G_OK)
         return rc;
+    if (f->single_state == 1) { /* greader_material_with: its one parameter, the value where the reader is */
+        f->single_state = 2;
+        f->state = 1;
+        if ((rc = add_key(r, f, f->single, &t, err)) != G_OK)
+            return rc;
+        snprintf(r->keybuf, sizeof r->keybuf, "%s", f->single);
+        *key = r->keybuf;
+        r->single_taken = 1;
+        return 1;
+    }
+    if (f->single_state == 2) { /* ... read: the block closes here, with the base's other parameters */
+        f->single_state = 0;
+        rc = f->like ? greader_like_merge(r, f, err) : 0;
+        if (rc < 0)
+            return rc;
+        if (rc == 0) {
+            f->state = 2;
+            return 0;
+        }
+        if ((rc = greader_peek(r, &t, err)) != G_OK)
+            return rc;
+    }
     if (f->state == 0) {
+        if (t.type != GTOK_LBRACE && f->like) { /* `like` without overrides: the base's block */
+            rc = greader_like_merge(r, f, err);
+            if (rc < 0)
+                return rc;
+            if (rc > 0 && (rc = greader_peek(r, &t, err)) != G_OK)
+                return rc;
+        }
+        greader_record_open(r, f);
         if (t.type != GTOK_LBRACE) {
             f->state = 2;
             return 0;
@@ -278,7 +340,19 @@ int greader_param(GReader *r, const char **key, GError *err)
     }
     if (f->state == 2)
         return 0;
+    if (t.type == GTOK_RBRACE && f->like) { /* the overrides end: the base's other parameters follow */
+        rc = greader_like_merge(r, f, err);
+        if (rc < 0)
+            return rc;
+        if (rc == 0) {
+            f->state = 2;
+            return 0;
+        }
+        if ((rc = greader_peek(r, &t, err)) != G_OK)
+            return rc;
+    }
     if (t.type == GTOK_RBRACE) {
+        greader_record_close(r, f);
         greader_take(r, NULL); /* the token peeked above */
         f->state = 2;
         return 0;
@@ -296,20 +370,8 @@ int greader_param(GReader *r, const char **key, GError *err)
         if (strcmp(f->keys[i].name, t.text) == 0)
             return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "%s %s: parameter '%s' is given twice",
                                     gkind_name(f->type->kind), f->type->name, t.text);
-    if (f->nkeys == f->capkeys) {
-        int cap = f->capkeys ? f->capkeys * 2 : 8;
-        GReaderKey *k = gmem_realloc(f->keys, (size_t)cap * sizeof *k);
-        if (!k)
-            return greader_error_at(r, err, G_ERR_NOMEM, t.line, t.col, "out of memory");
-        f->keys = k;
-        f->capkeys = cap;
-    }
-    GReaderKey *k = &f->keys[f->nkeys];
-    if (!(k->name = gmem_strdup(t.text)))
-        return greader_error_at(r, err, G_ERR_NOMEM, t.line, t.col, "out of memory");
-    k->line = t.line;
-    k->col = t.col;
-    f->nkeys++;
+    if ((rc = add_key(r, f, t.text, &t, err)) != G_OK)
+        return rc;
     greader_take(r, NULL); /* the token peeked above */
     memcpy(r->keybuf, t.text, strlen(t.text) + 1);
     *key = r->keybuf;

@@ -68,12 +68,25 @@ int greader_read_file(const char *path, size_t limit, char **text, size_t *len, 
     return G_OK;
 }
 
-int greader_push_source(GReader *r, GReaderSource *s, const char *text, size_t len)
+int greader_push_source(GReader *r, GReaderSource *s, const char *text, size_t len, GError *err)
 {
+    /* the library keeps every text read, so that `like` can re-read an entry of a file already closed */
+    char *kept = s->text;
+    s->text = NULL;
+    if (!kept && (kept = gmem_alloc(len + 1))) {
+        memcpy(kept, text, len);
+        kept[len] = '\0';
+    }
+    if (!kept || glibrary_keep_text(r->lib, kept, len, s->name, &s->text_id) != G_OK) {
+        if (!kept)
+            gmem_free(kept);
+        greader_free_source(s);
+        return gerror_set(err, G_ERR_NOMEM, "out of memory");
+    }
     s->parent = r->src;
     r->src = s;
     r->have_ahead = 0;
-    glexer_init(&s->lx, s->name, text, len);
+    glexer_init(&s->lx, s->name, kept, len);
     return G_OK;
 }
 
@@ -115,6 +128,6 @@ int greader_open_source(GReader *r, char *name, GError *err)
         greader_free_source(s);
         return rc;
     }
-    return greader_push_source(r, s, s->text, len);
+    return greader_push_source(r, s, s->text, len, err);
 }
 

@@ -1,8 +1,11 @@
 // texture_oiio.cpp - OpenImageIO's TextureSystem behind a C interface: reference-counted texture systems
-// (one per scene, or the shared default), opening files, and filtered lookups with per-thread state.
+// (one per scene, or the shared default), opening files, and filtered lookups with per-thread state. Part of the
+// module libgeneric_oiio.so (lib/oiio_module.h).
 #include "generic/texsys.h"
 #include "generic/image.h"
 #include "generic/memory.h"
+#define GOIIO_MODULE_SOURCE
+#include "oiio_module.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/texture.h>
@@ -15,26 +18,7 @@
 
 using namespace OIIO;
 
-#if defined(__SANITIZE_ADDRESS__)
-// OpenImageIO 2.4's TextureSystem::destroy deletes its implementation through the base class with a sized
-// delete of the wrong size: a mismatch inside that library, harmless with the C library's allocator, which
-// AddressSanitizer would otherwise report (and abort on) in every program that frees a texture system.
-// Weak, so a program may define its own options; visible (the library is built with -fvisibility=hidden), so
-// that the sanitizer's run-time finds it.
-extern "C" __attribute__((weak, visibility("default"))) const char *__asan_default_options()
-{
-    return "new_delete_type_mismatch=0";
-}
-// A leak inside OpenImageIO, not here: its PNG reader keeps the error message of a corrupt or truncated PNG in a
-// std::string across libpng's longjmp, which skips the destructor. With the fast unwinder the allocation's stack
-// stops in libstdc++'s string assignment, so that frame is suppressed too (the library's own C++ is the two shims,
-// which keep no strings beyond a call). Weak: a program (the fuzz harness) may name its own.
-extern "C" __attribute__((weak, visibility("default"))) const char *__lsan_default_suppressions()
-{
-    return "leak:PNGInput::PngReadCallback\n"
-           "leak:std::__cxx11::basic_string<char, std::char_traits<char>, std::allocator<char> >::_M_assign\n";
-}
-#endif
+// (The sanitizer options for OpenImageIO's own defects are in lib/image_basic.c: they must be in the program.)
 
 struct GTextureSystem {
     TextureSystem *ts;
@@ -99,19 +83,16 @@ bool says_linear(std::string cs)
         c = (char)std::tolower((unsigned char)c);
     return cs.find("linear") != std::string::npos || cs == "scene_linear" || cs == "raw";
 }
-} // namespace
-
-extern "C" {
 
 // Every function below is an entry from C: no exception may leave it.
 
-int gtexsys_create(GTextureSystem **out, GError *err)
+int texsys_create(GTextureSystem **out, GError *err)
 {
     *out = make(err);
     return *out ? G_OK : err ? err->code : G_ERR_NOMEM;
 }
 
-GTextureSystem *gtexsys_ref(GTextureSystem *ts)
+GTextureSystem *texsys_ref(GTextureSystem *ts)
 {
     if (ts) {
         try {
@@ -124,7 +105,7 @@ GTextureSystem *gtexsys_ref(GTextureSystem *ts)
     return ts;
 }
 
-void gtexsys_unref(GTextureSystem *ts)
+void texsys_unref(GTextureSystem *ts)
 {
     if (!ts)
         return;
@@ -141,7 +122,7 @@ void gtexsys_unref(GTextureSystem *ts)
     }
 }
 
-GTextureSystem *gtexsys_default(GError *err)
+GTextureSystem *texsys_default(GError *err)
 {
     try {
         std::lock_guard<std::mutex> g(refs_lock);
@@ -157,7 +138,7 @@ GTextureSystem *gtexsys_default(GError *err)
     }
 }
 
-int gtexsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *channels, int *srgb, GError *err)
+int texsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *channels, int *srgb, GError *err)
 {
     *file = nullptr;
     if (!ts || !path || !path[0])
@@ -168,7 +149,7 @@ int gtexsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *cha
         // The header first: OpenImageIO 2.4's cache asserts (aborts) on a file whose header gives a size
         // below 1, such as a PFM with a negative width.
         GError head;
-        if (gimage_info(path, nullptr, nullptr, nullptr, &head) != G_OK) {
+        if (goiio_image_info(path, nullptr, nullptr, nullptr, &head) != G_OK) {
             /* gimage_info's message reads "PATH: [cannot read image: ]REASON"; ours names the path already */
             const char *why = head.message;
             size_t len = strlen(path);
@@ -200,7 +181,7 @@ int gtexsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *cha
     }
 }
 
-int gtexsys_lookup(GTextureSystem *ts, GTexFile *file, GTexWrap swrap, GTexWrap twrap, double s, double t,
+int texsys_lookup(GTextureSystem *ts, GTexFile *file, GTexWrap swrap, GTexWrap twrap, double s, double t,
                    const double deriv[4], double blur, float rgb[3])
 {
     TextureOpt opt;
@@ -222,4 +203,14 @@ int gtexsys_lookup(GTextureSystem *ts, GTexFile *file, GTexWrap swrap, GTexWrap 
     return G_ERR_IO;
 }
 
-} // extern "C"
+} // namespace
+
+void goiio_texsys_ops(GOiioOps *ops)
+{
+    ops->texsys_create = texsys_create;
+    ops->texsys_ref = texsys_ref;
+    ops->texsys_unref = texsys_unref;
+    ops->texsys_default = texsys_default;
+    ops->texsys_open = texsys_open;
+    ops->texsys_lookup = texsys_lookup;
+}

@@ -206,6 +206,47 @@ static int dielectric_opaque(const GMaterial *self, GSurfPoint *sp)
     return 0;
 }
 
+/* ---- sampling: the two delta lobes, reflection with probability F (the Fresnel reflectance for the relative
+ * index refraction_dir uses) and refraction with 1 - F; past the critical angle reflection alone ---- */
+
+static int dielectric_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index,
+                             double u1, double u2, GMaterialSample *s, GColor *weight)
+{
+    (void)u2;
+    GVec3 n = gsurfpoint_normal(sp), view = gvec3_neg(out), t;
+    double cos_o = gvec3_dot(out, n);
+    if (cos_o <= 0.0)
+        return 0;
+    double eta = eta_of(sp, rel_index);
+    int refracts = goptics_refract(view, n, eta, &t);
+    double f = refracts ? goptics_fresnel(cos_o, eta) : 1.0;
+    int rc;
+    if (u1 < f || !refracts) {
+        s->in = gvec3_reflect(view, n);
+        s->pdf = f;
+        s->flags = GSAMPLE_REFLECT | GSAMPLE_DELTA;
+        rc = gmat_sample_weight(self, sp, s->in, out, rel_index, 0, f, weight);
+    } else {
+        s->in = t;
+        s->pdf = 1.0 - f;
+        s->flags = GSAMPLE_TRANSMIT | GSAMPLE_DELTA;
+        rc = gmat_sample_weight(self, sp, t, out, rel_index, 1, 1.0 - f, weight);
+    }
+    return rc ? rc : 1;
+}
+
+static double dielectric_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
+{
+    (void)self, (void)sp, (void)in, (void)out, (void)rel_index;
+    return 0.0;
+}
+
+static int dielectric_is_delta(const GMaterial *self, GSurfPoint *sp)
+{
+    (void)self, (void)sp;
+    return 1;
+}
+
 static const GMaterialClass dielectric_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "dielectric",
@@ -218,6 +259,9 @@ static const GMaterialClass dielectric_class = {
     .refraction_dir = dielectric_refraction_dir,
     .absorption = dielectric_absorption,
     .opaque = dielectric_opaque,
+    .sample = dielectric_sample,
+    .pdf = dielectric_pdf,
+    .is_delta = dielectric_is_delta,
 };
 
 int gdielectric_create(const GColorModel *model, const GDielectricParams *params, GMaterial **out, GError *err)
@@ -271,11 +315,10 @@ int gdielectric_create(const GColorModel *model, const GDielectricParams *params
 /* index N | index cauchy A B [C] | index sellmeier B1 B2 B3 C1 C2 C3 */
 static int read_index(GReader *r, GDispersion *d, GError *err)
 {
-    GToken t;
-    int rc = greader_peek(r, &t, err);
-    if (rc != G_OK)
+    int rc = greader_at_number(r, err); /* a number or a constant */
+    if (rc < 0)
         return rc;
-    if (t.type == GTOK_NUMBER) {
+    if (rc == 1) {
         double n;
         rc = greader_number_in(r, 0.01, 100.0, &n, err);
         if (rc == G_OK)

@@ -26,12 +26,37 @@ static int emitter_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GC
     return gcolor_copy(result, &e->radiance.c);
 }
 
+/* An emitter reflects nothing: no direction is drawn, no lobe has a density, and light samples would reflect
+ * nothing (is_delta). */
+static int emitter_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
+                          double u2, GMaterialSample *s, GColor *weight)
+{
+    (void)self, (void)sp, (void)out, (void)rel_index, (void)u1, (void)u2, (void)s;
+    gcolor_black(weight);
+    return 0;
+}
+
+static double emitter_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
+{
+    (void)self, (void)sp, (void)in, (void)out, (void)rel_index;
+    return 0.0;
+}
+
+static int emitter_is_delta(const GMaterial *self, GSurfPoint *sp)
+{
+    (void)self, (void)sp;
+    return 1;
+}
+
 static const GMaterialClass emitter_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "emitter",
     .description = "emits a radiance from its front (or both sides)",
     .destroy = gmat_one_color_destroy,
     .emission = emitter_emission,
+    .sample = emitter_sample,
+    .pdf = emitter_pdf,
+    .is_delta = emitter_is_delta,
 };
 
 int gemitter_create(const GColorModel *model, const GColor *radiance, int two_sided, GMaterial **out, GError *err)

@@ -33,6 +33,37 @@ static int lambert_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result
     return gcolor_copy(result, &((const GMatOneColor *)self)->c);
 }
 
+/* Cosine-weighted sampling: pdf cos / pi, so the weight f cos / pdf is rho exactly. */
+static int lambert_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
+                          double u2, GMaterialSample *s, GColor *weight)
+{
+    (void)rel_index;
+    GVec3 n = gsurfpoint_normal(sp);
+    if (gvec3_dot(out, sp->geometric_normal) <= 0.0)
+        return 0;
+    s->in = goptics_sample_cosine(n, u1, u2);
+    s->pdf = gvec3_dot(s->in, n) / M_PI;
+    s->flags = GSAMPLE_REFLECT;
+    if (!(s->pdf > 0.0))
+        return 0;
+    if (gmat_cos_in(sp, s->in, out, &n) <= 0.0) { /* below the geometric surface (a bumped normal) */
+        gcolor_black(weight);
+        return 1;
+    }
+    int rc = gcolor_copy(weight, &((const GMatOneColor *)self)->c);
+    return rc ? rc : 1;
+}
+
+static double lambert_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
+{
+    (void)self;
+    (void)rel_index;
+    if (gvec3_dot(out, sp->geometric_normal) <= 0.0)
+        return 0.0;
+    double c = gvec3_dot(in, gsurfpoint_normal(sp));
+    return c > 0.0 ? c / M_PI : 0.0;
+}
+
 static const GMaterialClass lambert_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "lambert",
@@ -41,6 +72,8 @@ static const GMaterialClass lambert_class = {
     .reflection = lambert_reflection,
     .ambient = lambert_ambient,
     .diffuse = lambert_diffuse,
+    .sample = lambert_sample,
+    .pdf = lambert_pdf,
 };
 
 int glambert_create(const GColorModel *model, const GColor *reflectance, GMaterial **out, GError *err)

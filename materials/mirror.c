@@ -30,6 +30,37 @@ static int mirror_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *i
     return gcolor_mul(result, &((const GMatOneColor *)self)->c, illum);
 }
 
+/* One delta lobe, chosen with probability 1: weight = the reflectance. */
+static int mirror_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
+                         double u2, GMaterialSample *s, GColor *weight)
+{
+    (void)rel_index;
+    (void)u1;
+    (void)u2;
+    GVec3 n = gsurfpoint_normal(sp);
+    s->in = gvec3_reflect(gvec3_neg(out), n);
+    s->pdf = 1.0;
+    s->flags = GSAMPLE_REFLECT | GSAMPLE_DELTA;
+    if (gmat_cos_in(sp, s->in, out, &n) <= 0.0) {
+        gcolor_black(weight);
+        return 1;
+    }
+    int rc = gmat_sample_weight(self, sp, s->in, out, NULL, 0, 1.0, weight);
+    return rc ? rc : 1;
+}
+
+static double mirror_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
+{
+    (void)self, (void)sp, (void)in, (void)out, (void)rel_index;
+    return 0.0;
+}
+
+static int mirror_is_delta(const GMaterial *self, GSurfPoint *sp)
+{
+    (void)self, (void)sp;
+    return 1;
+}
+
 static const GMaterialClass mirror_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "mirror",
@@ -38,6 +69,9 @@ static const GMaterialClass mirror_class = {
     .reflection = mirror_reflection,
     .reflection_dir = mirror_reflection_dir,
     .ambient = mirror_ambient,
+    .sample = mirror_sample,
+    .pdf = mirror_pdf,
+    .is_delta = mirror_is_delta,
 };
 
 int gmirror_create(const GColorModel *model, const GColor *reflectance, GMaterial **out, GError *err)

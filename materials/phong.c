@@ -84,6 +84,85 @@ static int phong_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
     return gcolor_copy(result, &((const Phong *)self)->kd);
 }
 
+/* ---- sampling: three lobes chosen by the brightness of kd, ks and mirror ---- */
+
+/* The lobes' selection weights and the mirror direction of out. */
+static void phong_lobes(const Phong *p, GSurfPoint *sp, GVec3 out, double w[3], GVec3 *r)
+{
+    GVec3 n = gsurfpoint_normal(sp);
+    *r = gvec3_reflect(gvec3_neg(out), n);
+    w[0] = gcolor_brightness(&p->kd);
+    w[1] = p->has_ks ? gcolor_brightness(&p->ks) : 0.0;
+    w[2] = p->has_mirror ? gcolor_brightness(&p->mirror) : 0.0;
+    if (!(w[0] + w[1] + w[2] > 0.0))
+        w[0] = 1.0; /* black: a cosine lobe that reflects nothing */
+}
+
+/* The density of the non-delta lobes (the diffuse cosine and the specular cos^n about r). */
+static double phong_lobes_pdf(const Phong *p, GVec3 n, GVec3 r, const double w[3], GVec3 in)
+{
+    double total = w[0] + w[1] + w[2], c = gvec3_dot(in, n), pdf = 0.0;
+    if (w[0] > 0.0 && c > 0.0)
+        pdf += w[0] / total * c / M_PI;
+    if (w[1] > 0.0)
+        pdf += w[1] / total * goptics_lobe_pdf(r, p->n, in);
+    return pdf;
+}
+
+static int phong_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
+                        double u2, GMaterialSample *s, GColor *weight)
+{
+    (void)rel_index;
+    const Phong *p = (const Phong *)self;
+    if (gvec3_dot(out, sp->geometric_normal) <= 0.0)
+        return 0;
+    double w[3], prob;
+    GVec3 r, n = gsurfpoint_normal(sp);
+    phong_lobes(p, sp, out, w, &r);
+    int lobe = gmat_pick_lobe(w, 3, &u1, &prob);
+    s->flags = GSAMPLE_REFLECT;
+    if (lobe == 2) { /* the ideal mirror ray: mirror / its probability */
+        s->in = r;
+        s->pdf = prob;
+        s->flags |= GSAMPLE_DELTA;
+        if (gmat_cos_in(sp, r, out, &n) <= 0.0) {
+            gcolor_black(weight);
+            return 1;
+        }
+        int rc = gcolor_scale(weight, &p->mirror, 1.0 / prob);
+        return rc ? rc : 1;
+    }
+    s->in = lobe == 0 ? goptics_sample_cosine(n, u1, u2) : goptics_sample_lobe(r, p->n, u1, u2);
+    s->pdf = phong_lobes_pdf(p, n, r, w, s->in);
+    if (!(s->pdf > 0.0))
+        return 0;
+    /* the value f cos without the ideal part (which only the delta lobe carries) */
+    double ci = gmat_cos_in(sp, s->in, out, &n);
+    if (ci <= 0.0) {
+        gcolor_black(weight);
+        return 1;
+    }
+    int rc = gcolor_scale(weight, &p->kd, ci / M_PI / s->pdf);
+    if (rc == G_OK && p->has_ks) {
+        double ca = gvec3_dot(r, s->in);
+        if (ca > 0.0)
+            rc = gcolor_add_scaled(weight, &p->ks, p->lobe_norm * pow(ca > 1.0 ? 1.0 : ca, p->n) * ci / s->pdf);
+    }
+    return rc ? rc : 1;
+}
+
+static double phong_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
+{
+    (void)rel_index;
+    const Phong *p = (const Phong *)self;
+    if (gvec3_dot(out, sp->geometric_normal) <= 0.0)
+        return 0.0;
+    double w[3];
+    GVec3 r;
+    phong_lobes(p, sp, out, w, &r);
+    return phong_lobes_pdf(p, gsurfpoint_normal(sp), r, w, in);
+}
+
 static const GMaterialClass phong_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "phong",
@@ -93,6 +172,8 @@ static const GMaterialClass phong_class = {
     .reflection_dir = phong_reflection_dir,
     .ambient = phong_ambient,
     .diffuse = phong_diffuse,
+    .sample = phong_sample,
+    .pdf = phong_pdf,
 };
 
 /* A parameter colour, or black when it is not given. */
@@ -134,11 +215,15 @@ int gphong_create(const GColorModel *model, const GPhongParams *params, GMateria
     }
     if (rc == G_OK) {
         int at;
-        double mx = gmatparam_max(&p->albedo, &at);
-        if (mx > 1.0 + 1e-3) /* the tolerance of gmatparam_color: rgb 0.5 + 0.5 is 1.00015 in spectral models */
+        double mx = gmatparam_max(&p->albedo, &at), lo, hi;
+        /* within the model's conversion error, as each parameter: rgb 0 0.5 0 + 0 0.5 0 is 1.03 in spectrum9 */
+        rc = gmatparam_range(&p->albedo, GCOLOR_REFLECTANCE, 1.0, &lo, &hi);
+        if (rc != G_OK)
+            rc = gerror_set(err, rc, "phong: cannot measure kd + ks + mirror (%s)", gstatus_string(rc));
+        else if (mx > hi && !gmatparam_fold_ok(&p->albedo, hi)) /* above 1 in a band only as a fold */
             rc = gerror_set(err, G_ERR_INVALID,
-                            "phong: kd + ks + mirror is %g at sample %d; it must not exceed 1 (energy conservation)",
-                            mx, at);
+                            "phong: kd + ks + mirror is %g at sample %d; it must not exceed 1 (energy conservation)%s",
+                            mx, at, hi > 1.0 + 2e-5 ? ", or the conversion error of the colour model" : "");
     }
     if (rc != G_OK) {
         phong_destroy(&p->base);

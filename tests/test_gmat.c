@@ -113,25 +113,74 @@ static void test_eval(void **state)
     assert_non_null(strstr(out, "   550.0 "));
 }
 
+/* Reads the --data table of gmat plot: angles and luminances; returns the number of rows. */
+static int read_table(const char *path, double *angle, double *lum, float rgb[][3], int max)
+{
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    char line[256];
+    int n = 0;
+    while (fgets(line, sizeof line, f))
+        if (line[0] != '#' && n < max &&
+            sscanf(line, "%lf %lf %f %f %f", &angle[n], &lum[n], &rgb[n][0], &rgb[n][1], &rgb[n][2]) == 5)
+            n++;
+    fclose(f);
+    return n;
+}
+
 static void test_plot(void **state)
 {
     (void)state;
-    char png[4300], args[12000], out[8192];
+    char png[4300], data[4300], args[16000], out[8192];
     snprintf(png, sizeof png, "%s/test_gmat_plot.png", dir);
+    snprintf(data, sizeof data, "%s/test_gmat_plot.dat", dir);
     unlink(png);
-    snprintf(args, sizeof args, "plot '%s' red --in 30 -o '%s' --size 256", matfile, png);
+    unlink(data);
+    snprintf(args, sizeof args, "plot '%s' red --in=30 -o '%s' --size 256 --data '%s'", matfile, png, data);
     assert_int_equal(run(args, out, sizeof out), 0);
     GImage img = {0};
     GError err;
     assert_int_equal(gimage_read(png, GIMAGE_READ_RGB, &img, &err), G_OK);
     assert_int_equal(img.width, 256);
     assert_int_equal(img.height, 192);
-    /* straight above the point, half way up the lobe: a Lambertian lobe is a red disc touching the point */
-    int cx = 128, cy = (int)(192 - 256 * 0.08);
-    const float *px = img.pixels + ((size_t)(cy - 40) * img.width + cx) * 3;
-    assert_true(px[0] > 0.5f && px[1] < 0.2f && px[2] < 0.2f);
+    int red = 0; /* the lobe is filled with the material's colour: red, lighter where it is transparent */
+    for (int i = 0; i < img.width * img.height; i++) {
+        const float *px = img.pixels + 3 * (size_t)i;
+        red += px[0] > 0.3f && px[1] < 0.6f * px[0] && px[2] < 0.6f * px[0];
+    }
+    print_message("%d of %d pixels are the lobe's red\n", red, img.width * img.height);
+    assert_true(red > img.width * img.height / 10);
     gimage_free(&img);
+    /* the plotted values: a Lambertian lobe is rho_Y / pi * cos(theta_in) in every direction */
+    static double angle[400], lum[400];
+    static float rgb[400][3];
+    int n = read_table(data, angle, lum, rgb, 400);
+    assert_int_equal(n, 361);
+    const double y = (0.2126 * 0.8 + 0.7152 * 0.05 + 0.0722 * 0.05) / M_PI * cos(30.0 * M_PI / 180.0);
+    for (int i = 0; i < n; i++) {
+        assert_true(fabs(angle[i] - (-90.0 + 0.5 * i)) < 1e-9);
+        assert_true(fabs(lum[i] - y) < 2e-3 * y);
+        assert_true(rgb[i][0] == 1.0f && rgb[i][1] < 0.1f && rgb[i][2] < 0.1f);
+    }
     unlink(png);
+    unlink(data);
+    /* a logarithmic radius: the glossy lobe peaks at the mirror direction (+30), and the diffuse part is there */
+    snprintf(args, sizeof args, "plot '%s' gloss --in 30 -o '%s' --log-radius --data='%s'", matfile, png, data);
+    assert_int_equal(run(args, out, sizeof out), 0);
+    assert_non_null(strstr(out, "logarithmic radius"));
+    assert_int_equal(gimage_read(png, GIMAGE_READ_RGB, &img, &err), G_OK);
+    assert_int_equal(img.width, 512);
+    assert_int_equal(img.height, 384);
+    gimage_free(&img);
+    n = read_table(data, angle, lum, rgb, 400);
+    assert_int_equal(n, 361);
+    int peak = 0;
+    for (int i = 0; i < n; i++)
+        peak = lum[i] > lum[peak] ? i : peak;
+    assert_true(fabs(angle[peak] - 30.0) <= 0.5);
+    assert_true(lum[0] > 0.0 && lum[0] < 0.05 * lum[peak]); /* grazing on the light's side: diffuse only */
+    unlink(png);
+    unlink(data);
 }
 
 static void test_bad_input(void **state)

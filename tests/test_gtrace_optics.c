@@ -28,10 +28,10 @@ static double bk7(double nm)
 #define APEX_DEG 60.0
 #define PRISM_Z (-3.0)
 #define SLIT_DIST 40.0
-#define WIDTH 1600
-#define HEIGHT 4 /* the strip; row ROW is measured */
-#define ROW 2
-#define HFOV_DEG 8.0
+#define WIDTH 1200
+#define HEIGHT 2 /* the strip; row ROW is measured */
+#define ROW 1
+#define HFOV_DEG 12.0
 
 /* The prism's cross-section in the xz-plane: the entrance face meets the camera's axis at the minimum-deviation
  * incidence for 550 nm, the exit ray leaves towards -x. corner[0] is the apex. */

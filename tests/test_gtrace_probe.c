@@ -122,10 +122,13 @@ static void assert_rel(double a, double b, double tol, const char *what)
  * region's energy centroid carrying the region's whole power, which overestimates a uniform environment by
  * 1 / |mean direction of the region| (9% at 16 lights, 0.7% at 256), so they need many lights for 1%;
  * k-means is within 0.3% from 64 lights; the irradiance fit, whose error at one normal of a uniform
- * environment is about 1.6% with 32 lights, is within 0.6% with 64. */
+ * environment is about 1.6% with 32 lights, is within 0.6% with 64. The bases as an ambient term give the
+ * uniform environment's irradiance pi L along every normal (SH and the ambient cube exactly, the SG fit with
+ * an ambient term through its constant), so the plane shows rho L. */
 static const char *const constant_settings[] = {
     "technique mediancut count 256", "technique adaptive count 256", "technique kmeans count 128",
-    "technique irradiance count 64", "technique reference samples 256",
+    "technique irradiance count 64", "technique reference samples 256", "technique sh count 9",
+    "technique ambientcube count 6", "technique sg-ambient count 4", "technique variance count 256",
 };
 
 static void test_constant_probe(void **state)

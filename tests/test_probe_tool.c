@@ -179,7 +179,8 @@ static void test_eval_csv_and_plot(void **state)
     in_dir("e.png", png);
     const int plot = access("/usr/bin/gnuplot", X_OK) == 0;
     snprintf(args, sizeof args,
-             "eval --probe '%s' --normals 500 --counts 2,3,4 --techniques mediancut,adaptive,irradiance,sh9 --csv '%s' "
+             "eval --probe '%s' --normals 500 --counts 2,3,4 --techniques mediancut,adaptive,irradiance,sh9,sh,sg-nnls "
+             "--csv '%s' "
              "%s%s%s -q",
              path, csv, plot ? "--plot '" : "", plot ? png : "", plot ? "'" : "");
     assert_int_equal(run(NULL, args, out, sizeof out), 0);
@@ -188,23 +189,42 @@ static void test_eval_csv_and_plot(void **state)
     assert_non_null(f);
     char line[512];
     assert_non_null(fgets(line, sizeof line, f));
-    assert_string_equal(line, "technique,count,mean_rel,max_rel,mean_norm,max_norm,seconds\n");
-    int rows = 0, sh9 = 0;
+    assert_string_equal(line, "technique,count,unit,mean_rel,max_rel,mean_norm,max_norm,smape,seconds\n");
+    int rows = 0, sh9 = 0, sh = 0;
+    double sh9_mean = -1.0, sh_mean = -2.0;
     while (fgets(line, sizeof line, f)) {
-        char name[32];
+        char name[32], unit[32];
         int count;
-        double v[5];
-        assert_int_equal(sscanf(line, "%31[^,],%d,%lf,%lf,%lf,%lf,%lf", name, &count, &v[0], &v[1], &v[2], &v[3], &v[4]), 7);
+        double v[6];
+        assert_int_equal(sscanf(line, "%31[^,],%d,%31[^,],%lf,%lf,%lf,%lf,%lf,%lf", name, &count, unit, &v[0], &v[1],
+                                &v[2], &v[3], &v[4], &v[5]),
+                         9);
         assert_true(v[0] >= 0.0 && v[0] <= v[1]); /* mean <= max */
         assert_true(v[2] >= 0.0 && v[2] <= v[3]);
+        assert_true(v[4] >= 0.0 && v[4] <= 200.0); /* sMAPE */
         if (strcmp(name, "mediancut") == 0)
             assert_true(count != 3); /* not a power of two: skipped */
+        if (strcmp(name, "sh") == 0) {
+            assert_string_equal(unit, "coefficients");
+            assert_true(count == 4 || count == 9 || count == 16 || count == 25);
+            if (count == 9)
+                sh_mean = v[0];
+            sh++;
+        }
+        if (strcmp(name, "sg-nnls") == 0)
+            assert_string_equal(unit, "lobes");
+        if (strcmp(name, "adaptive") == 0)
+            assert_string_equal(unit, "lights");
+        if (strcmp(name, "sh9") == 0)
+            sh9_mean = v[0];
         sh9 += strcmp(name, "sh9") == 0;
         rows++;
     }
     fclose(f);
-    assert_int_equal(rows, 2 + 3 + 3 + 1);
+    assert_int_equal(rows, 2 + 3 + 3 + 1 + 4 + 3);
     assert_int_equal(sh9, 1);
+    assert_int_equal(sh, 4);
+    assert_true(fabs(sh9_mean - sh_mean) < 1e-9); /* SH of order 2 is SH9 */
     if (plot) {
         int w, h, c;
         assert_int_equal(gimage_info(png, &w, &h, &c, NULL), G_OK);
@@ -214,6 +234,57 @@ static void test_eval_csv_and_plot(void **state)
     snprintf(args, sizeof args, "eval --probe '%s' --normals 300 --plot '%s/x.png'", path, dir);
     assert_int_equal(run("PATH=/nonexistent", args, out, sizeof out), 1);
     assert_non_null(strstr(out, "gnuplot"));
+}
+
+/* gprobe report: the page, the table, the CSV and every image it names, of the report's size. */
+static void test_report(void **state)
+{
+    (void)state;
+    static char out[16384];
+    char path[600], rdir[600], args[2600], file[1400];
+    write_probe("r.exr", 0.5f, path);
+    in_dir("report", rdir);
+    snprintf(args, sizeof args,
+             "report --probe '%s' -o '%s' --size 8 --normals 400 --counts 4 --techniques adaptive,sh,sg-ls,ambientcube -q",
+             path, rdir);
+    assert_int_equal(run(NULL, args, out, sizeof out), 0);
+    const char *names[] = {"index.html", "report.md", "errors.csv", "images/error-scale.png",
+                           "images/reference-radiance.png", "images/reference-irradiance.png",
+                           "images/adaptive-4-radiance.png", "images/sh-25-error.png", "images/sg-ls-4-irradiance.png",
+                           "images/ambientcube-6-error.png"};
+    for (size_t i = 0; i < sizeof names / sizeof *names; i++) {
+        snprintf(file, sizeof file, "%s/%s", rdir, names[i]);
+        assert_int_equal(access(file, R_OK), 0);
+        if (strstr(names[i], "images/") && !strstr(names[i], "scale")) {
+            int w, h, c;
+            assert_int_equal(gimage_info(file, &w, &h, &c, NULL), G_OK);
+            assert_int_equal(w, 16);
+            assert_int_equal(h, 8);
+        }
+    }
+    snprintf(file, sizeof file, "%s/report.md", rdir);
+    FILE *f = fopen(file, "r");
+    assert_non_null(f);
+    char line[512];
+    int rows = 0;
+    while (fgets(line, sizeof line, f))
+        rows += line[0] == '|';
+    fclose(f);
+    assert_int_equal(rows, 2 + 1 + 4 + 1 + 1); /* header, rule, adaptive, sh x 4, sg-ls, ambient cube */
+    snprintf(file, sizeof file, "%s/index.html", rdir);
+    f = fopen(file, "r");
+    assert_non_null(f);
+    static char html[65536];
+    size_t n = fread(html, 1, sizeof html - 1, f);
+    html[n] = 0;
+    fclose(f);
+    assert_non_null(strstr(html, "images/sh-9-radiance.png"));
+    assert_int_equal(strstr(html, "fig6.png") != NULL, access("/usr/bin/gnuplot", X_OK) == 0);
+    /* a file where the directory should be */
+    snprintf(args, sizeof args, "report --probe '%s' -o '%s' -q", path, path);
+    assert_int_equal(run(NULL, args, out, sizeof out), 1);
+    assert_non_null(strstr(out, "not a directory"));
+    assert_int_equal(run(NULL, "report --probe x.exr", out, sizeof out), 2);
 }
 
 int main(void)
@@ -226,6 +297,7 @@ int main(void)
         cmocka_unit_test(test_irradiance_of_constant_probe),
         cmocka_unit_test(test_approx_writes_lights),
         cmocka_unit_test(test_eval_csv_and_plot),
+        cmocka_unit_test(test_report),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

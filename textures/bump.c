@@ -79,6 +79,9 @@ static const GMaterialClass bump_class = {
     .normal = bump_normal,
     .diffuse = gtexchild_diffuse,
     .opaque = gtexchild_opaque,
+    .sample = gtexchild_sample, /* the child samples about the bumped normal, which it reads from sp */
+    .pdf = gtexchild_pdf,
+    .is_delta = gtexchild_is_delta,
 };
 
 int gnode_bump_create(GMaterial *child, GGenerator *height, double strength, GMaterial **out, GError *err)

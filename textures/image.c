@@ -129,6 +129,17 @@ static int image_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
     return rc != G_OK ? rc : apply(self, sp, result);
 }
 
+/* The child's direction and density; the weight times the texel, as reflection and refraction are. */
+static int image_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
+                        double u2, GMaterialSample *s, GColor *weight)
+{
+    int rc = gmaterial_sample(gtexchild_of(self), sp, out, rel_index, u1, u2, s, weight);
+    if (rc <= 0)
+        return rc;
+    rc = apply(self, sp, weight);
+    return rc ? rc : 1;
+}
+
 static const GMaterialClass image_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "image",
@@ -145,6 +156,9 @@ static const GMaterialClass image_class = {
     .normal = gtexchild_normal,
     .diffuse = image_diffuse,
     .opaque = gtexchild_opaque,
+    .sample = image_sample,
+    .pdf = gtexchild_pdf,
+    .is_delta = gtexchild_is_delta,
 };
 
 int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptions *opt, GMaterial **out,

@@ -85,6 +85,17 @@ static int scale_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
     return finish(gmaterial_diffuse(gtexchild_of(self), sp, result), f, result);
 }
 
+/* The child's direction and density; the weight times the factor, as reflection and refraction are. */
+static int scale_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
+                        double u2, GMaterialSample *s, GColor *weight)
+{
+    int rc = gmaterial_sample(gtexchild_of(self), sp, out, rel_index, u1, u2, s, weight);
+    if (rc <= 0)
+        return rc;
+    rc = finish(G_OK, factor(self, sp), weight);
+    return rc ? rc : 1;
+}
+
 static const GMaterialClass scale_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "scale",
@@ -101,6 +112,9 @@ static const GMaterialClass scale_class = {
     .normal = gtexchild_normal,
     .diffuse = scale_diffuse,
     .opaque = gtexchild_opaque,
+    .sample = scale_sample,
+    .pdf = gtexchild_pdf,
+    .is_delta = gtexchild_is_delta,
 };
 
 int gnode_scale_create(GMaterial *child, GGenerator *factor, GMaterial **out, GError *err)

@@ -177,6 +177,34 @@ static int transform_opaque(const GMaterial *self, GSurfPoint *sp)
     return rc;
 }
 
+static int transform_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
+                            double u2, GMaterialSample *s, GColor *weight)
+{
+    GSurfPoint q;
+    move(T(self), sp, &q, 0, 1);
+    int rc = gmaterial_sample(CHILD(self), &q, out, rel_index, u1, u2, s, weight);
+    gsurfpoint_cache_return(sp, &q);
+    return rc;
+}
+
+static double transform_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
+{
+    GSurfPoint q;
+    move(T(self), sp, &q, 0, 1);
+    double pdf = gmaterial_pdf(CHILD(self), &q, in, out, rel_index);
+    gsurfpoint_cache_return(sp, &q);
+    return pdf;
+}
+
+static int transform_is_delta(const GMaterial *self, GSurfPoint *sp)
+{
+    GSurfPoint q;
+    move(T(self), sp, &q, 0, 0);
+    int rc = gmaterial_is_delta(CHILD(self), &q);
+    gsurfpoint_cache_return(sp, &q);
+    return rc;
+}
+
 static const GMaterialClass transform_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "transform",
@@ -193,6 +221,9 @@ static const GMaterialClass transform_class = {
     .normal = transform_normal,
     .diffuse = transform_diffuse,
     .opaque = transform_opaque,
+    .sample = transform_sample,
+    .pdf = transform_pdf,
+    .is_delta = transform_is_delta,
 };
 
 int gnode_transform_create(GMaterial *child, const GAffine2 *uv, const GAffine3 *xyz, GMaterial **out,

@@ -1,12 +1,20 @@
 #!/bin/sh
-# bench.sh [BUILD] - gtrace against POV-Ray 3.7 on the same scene (scene.scene / scene.pov: checker floor,
-# glass, mirror, wood, marble, two point lights; 800x600, 1 sample per pixel, depth 8, 2 threads).
-# Prints in one run: the wall-time ratio gtrace/POV-Ray (whole process and render only), rays per second,
-# the time ratios of the colour models to rgb, peak memory, and the speed-up from 1 to 2 threads.
-# Each figure is the best of RUNS runs (default 3; set RUNS=1 for a quick look). A benchmark: it prints
-# figures and never fails on time.
+# bench.sh [BUILD] - gtrace against POV-Ray 3.7 on the same picture (scene.scene / scene.pov: checker floor,
+# glass, mirror, wood, marble, two point lights; 800x600, 1 sample per pixel, depth 8), by the procedure of
+# bench/README.md:
+#   1. idle check: waits up to IDLE_WAIT seconds (default 30) for the 1-minute load average to fall below
+#      IDLE_LOAD (default 0.5); says so in the report when it did not (the figures are then of a busy machine);
+#   2. RUNS rounds (default 5; RUNS=1 for a quick look), each running every configuration once, interleaved
+#      (gtrace rgb, POV-Ray, the other colour models, 1 thread each, start-up), so that a change of load hits
+#      both sides alike;
+#   3. each ratio is computed within a round and the median over the rounds is reported; the table shows the
+#      best (least CPU) run of each configuration.
+# Also: peak RSS of each side, and the mean absolute difference per channel between the two pictures (of 255).
+# A benchmark: it prints figures and never fails on time.
 BUILD=${1:-build}
-RUNS=${RUNS:-3}
+RUNS=${RUNS:-5}
+IDLE_WAIT=${IDLE_WAIT:-30}
+IDLE_LOAD=${IDLE_LOAD:-0.5}
 DIR=$(cd "$(dirname "$0")" && pwd)
 GT="$BUILD/bin/gtrace"
 if [ ! -x "$GT" ]; then
@@ -20,74 +28,115 @@ if [ ! -x "$TIME" ]; then
     echo "bench-pov: needs GNU time (/usr/bin/time, Debian package time)"
     exit 1
 fi
+HAVE_POV=0
+command -v povray > /dev/null && HAVE_POV=1
 
-# best NAME CMD...: runs CMD RUNS times; keeps the fastest run's wall time, CPU time, peak RSS and output
-best() {
+# ---- 1. idle check ----
+load1() { cut -d' ' -f1 /proc/loadavg; }
+waited=0
+while awk -v l="$(load1)" -v m="$IDLE_LOAD" 'BEGIN { exit !(l >= m) }' && [ "$waited" -lt "$IDLE_WAIT" ]; do
+    sleep 5
+    waited=$((waited + 5))
+done
+load_start=$(cut -d' ' -f1-3 /proc/loadavg)
+if awk -v l="$(load1)" -v m="$IDLE_LOAD" 'BEGIN { exit !(l >= m) }'; then
+    idle="NOT IDLE (load average $load_start after waiting ${waited} s; ratios within a round still compare like with like)"
+else
+    idle="idle (load average $load_start)"
+fi
+
+# ---- 2. interleaved rounds ----
+# once NAME CMD...: one run; appends "wall cpu rss_kib" to TMP/NAME.runs, keeps the output of the least-CPU run
+once() {
     name=$1
     shift
-    i=0
-    while [ $i -lt "$RUNS" ]; do
-        "$TIME" -f "%e %U %S %M" -o "$TMP/$name.t" "$@" > "$TMP/$name.o" 2>&1 || {
-            echo "bench-pov: $name failed:"
-            cat "$TMP/$name.o"
-            exit 1
-        }
-        if [ ! -f "$TMP/$name.best" ] || awk -v a="$(cut -d' ' -f1 "$TMP/$name.t")" \
-            -v b="$(cut -d' ' -f1 "$TMP/$name.best")" 'BEGIN { exit !(a < b) }'; then
-            cp "$TMP/$name.t" "$TMP/$name.best"
-            cp "$TMP/$name.o" "$TMP/$name.out"
-        fi
-        i=$((i + 1))
-    done
+    "$TIME" -f "%e %U %S %M" -o "$TMP/$name.t" "$@" > "$TMP/$name.o" 2>&1 || {
+        echo "bench-pov: $name failed:"
+        cat "$TMP/$name.o"
+        exit 1
+    }
+    line=$(awk '{ printf "%s %.3f %s", $1, $2 + $3, $4 }' "$TMP/$name.t")
+    echo "$line" >> "$TMP/$name.runs"
+    cpu=$(echo "$line" | cut -d' ' -f2)
+    if [ ! -f "$TMP/$name.best" ] || awk -v a="$cpu" -v b="$(cut -d' ' -f2 "$TMP/$name.best")" 'BEGIN { exit !(a < b) }'; then
+        echo "$line" > "$TMP/$name.best"
+        cp "$TMP/$name.o" "$TMP/$name.out"
+    fi
+    cp "$TMP/$name.o" "$TMP/$name.last"
 }
-wall() { cut -d' ' -f1 "$TMP/$1.best"; }
-cpu() { awk '{ print $2 + $3 }' "$TMP/$1.best"; }
-rss() { awk '{ printf "%.0f", $4 / 1024 }' "$TMP/$1.best"; }
-# render time and rays/s from gtrace's summary line
-render_s() { sed -n 's/.*threads: \([0-9.]*\) s,.*/\1/p' "$TMP/$1.out"; }
-rays_s() { sed -n 's/.* \([0-9.]*\) M rays\/s.*/\1/p' "$TMP/$1.out"; }
-mrays() { sed -n 's/.* s, \([0-9.]*\) M rays,.*/\1/p' "$TMP/$1.out"; }
-ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (b > 0) printf "%.2f", a / b; else print "n/a" }'; }
+# gtrace's render time (its summary line) and POV-Ray's trace time and trace CPU (its statistics), last run
+gt_render() { sed -n 's/.*threads\{0,1\}: \([0-9.]*\) s,.*/\1/p' "$TMP/$1.$2"; }
+pov_trace() { sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p' "$TMP/$1.$2" | head -1; }
+pov_trace_cpu() { awk '/Trace Time:/ { t = 1; next } t && /CPU-seconds/ { for (i = 1; i <= NF; i++) if ($i == "with") { print $(i + 1); exit } }' "$TMP/$1.$2"; }
+field() { cut -d' ' -f"$2" "$TMP/$1.best"; }
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (b > 0) printf "%.3f", a / b; else print "n/a" }'; }
+# note KEY VALUE: a per-round figure (one line per round in TMP/KEY.r)
+note() { echo "$2" >> "$TMP/$1.r"; }
+median() { [ -f "$TMP/$1.r" ] && sort -g "$TMP/$1.r" | awk '{ v[NR] = $1 } END { if (NR % 2) printf "%.2f", v[(NR + 1) / 2]; else printf "%.2f", (v[NR / 2] + v[NR / 2 + 1]) / 2 }' || echo "n/a"; }
 
-echo "== gtrace vs POV-Ray: $(nproc) processors, load average $(cut -d' ' -f1-3 /proc/loadavg), best of $RUNS"
-for m in rgb spectrum9 spectrum bispectral; do
-    best "gt_$m" "$GT" "$DIR/scene.scene" -o "$TMP/gt_$m.png" --threads 2 --colormodel $m
+POV_ARGS="+W800 +H600 -A -D +FN File_Gamma=sRGB"
+r=0
+while [ $r -lt "$RUNS" ]; do
+    once gt_rgb "$GT" "$DIR/scene.scene" -o "$TMP/gt_rgb.png" --threads 2 --colormodel rgb
+    if [ $HAVE_POV -eq 1 ]; then
+        # shellcheck disable=SC2086
+        once pov povray "+I$DIR/scene.pov" "+O$TMP/pov.png" $POV_ARGS +WT2
+    fi
+    for m in spectrum9 spectrum bispectral; do
+        once "gt_$m" "$GT" "$DIR/scene.scene" -o "$TMP/gt_$m.png" --threads 2 --colormodel $m
+    done
+    once gt_rgb_1 "$GT" "$DIR/scene.scene" -o "$TMP/gt_rgb_1.png" --threads 1 --colormodel rgb
+    if [ $HAVE_POV -eq 1 ]; then
+        # shellcheck disable=SC2086
+        once pov_1 povray "+I$DIR/scene.pov" "+O$TMP/pov_1.png" $POV_ARGS +WT1
+    fi
+    once gt_start "$GT" --help
+    # this round's ratios
+    last() { tail -n 1 "$TMP/$1.runs" | cut -d' ' -f"$2"; }
+    st=$(last gt_start 2)
+    for m in spectrum9 spectrum bispectral; do
+        note "render_$m" "$(ratio "$(gt_render "gt_$m" last)" "$(gt_render gt_rgb last)")"
+        note "cpu_$m" "$(ratio "$(last "gt_$m" 2)" "$(last gt_rgb 2)")"
+    done
+    note threads "$(ratio "$(gt_render gt_rgb_1 last)" "$(gt_render gt_rgb last)")"
+    if [ $HAVE_POV -eq 1 ]; then
+        note cpu_pov "$(ratio "$(last gt_rgb 2)" "$(last pov 2)")"
+        note cpu_pov_1 "$(ratio "$(last gt_rgb_1 2)" "$(last pov_1 2)")"
+        note wall_pov "$(ratio "$(last gt_rgb 1)" "$(last pov 1)")"
+        note render_pov "$(ratio "$(gt_render gt_rgb last)" "$(pov_trace pov last)")"
+        note render_pov_1 "$(ratio "$(gt_render gt_rgb_1 last)" "$(pov_trace pov_1 last)")"
+        note net_cpu_pov_1 "$(ratio "$(awk -v a="$(last gt_rgb_1 2)" -v s="$st" 'BEGIN { print a - s }')" "$(pov_trace_cpu pov_1 last)")"
+        note rss_pov "$(ratio "$(last gt_rgb 3)" "$(last pov 3)")"
+    fi
+    r=$((r + 1))
 done
-best gt_rgb_1 "$GT" "$DIR/scene.scene" -o "$TMP/gt_rgb_1.png" --threads 1 --colormodel rgb
-best gt_start "$GT" --help
 
-printf "%-18s %8s %8s %9s %9s %9s %8s\n" "" "wall s" "cpu s" "render s" "M rays" "M rays/s" "peak MB"
-for m in rgb spectrum9 spectrum bispectral; do
-    printf "%-18s %8s %8s %9s %9s %9s %8s\n" "gtrace $m" "$(wall gt_$m)" "$(cpu gt_$m)" "$(render_s gt_$m)" \
-        "$(mrays gt_$m)" "$(rays_s gt_$m)" "$(rss gt_$m)"
+# ---- 3. report ----
+echo "== gtrace vs POV-Ray: $(nproc) processors, $idle; $RUNS interleaved rounds (bench/README.md)"
+printf "%-20s %8s %8s %9s %8s\n" "least-CPU run" "wall s" "cpu s" "render s" "peak MB"
+for n in gt_rgb gt_spectrum9 gt_spectrum gt_bispectral gt_rgb_1 gt_start; do
+    printf "%-20s %8s %8s %9s %8.1f\n" "$n" "$(field $n 1)" "$(field $n 2)" "$(gt_render $n out)" "$(awk -v k="$(field $n 3)" 'BEGIN { print k / 1024 }')"
 done
-printf "%-18s %8s %8s %9s %9s %9s %8s\n" "rgb, 1 thr" "$(wall gt_rgb_1)" "$(cpu gt_rgb_1)" "$(render_s gt_rgb_1)" \
-    "$(mrays gt_rgb_1)" "$(rays_s gt_rgb_1)" "$(rss gt_rgb_1)"
-
-if command -v povray > /dev/null; then
-    best pov povray "+I$DIR/scene.pov" "+O$TMP/pov.png" +W800 +H600 -A +WT2 -D +FN -V -GA
-    # POV-Ray prints its trace time as "(1.234 seconds)" on the Trace Time line
-    povray "+I$DIR/scene.pov" "+O$TMP/pov.png" +W800 +H600 -A +WT2 -D +FN > "$TMP/pov.stats" 2>&1
-    pov_trace=$(sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p' "$TMP/pov.stats" | head -1)
-    pov_rays=$(awk '/^Rays:/ { r = $2 } /^Shadow Ray Tests:/ { s = $4 } END { printf "%.2f", (r + s) / 1e6 }' "$TMP/pov.stats")
-    printf "%-18s %8s %8s %9s %9s %9s %8s\n" "POV-Ray 3.7" "$(wall pov)" "$(cpu pov)" "$pov_trace" "$pov_rays" \
-        "$(ratio "$pov_rays" "$pov_trace")" "$(rss pov)"
-    echo "wall-time ratio gtrace rgb / POV-Ray: $(ratio "$(wall gt_rgb)" "$(wall pov)") (whole process), \
-$(ratio "$(render_s gt_rgb)" "$pov_trace") (render only; target <= 1.0)"
+if [ $HAVE_POV -eq 1 ]; then
+    for n in pov pov_1; do
+        printf "%-20s %8s %8s %9s %8.1f\n" "$n" "$(field $n 1)" "$(field $n 2)" "$(pov_trace $n out)" "$(awk -v k="$(field $n 3)" 'BEGIN { print k / 1024 }')"
+    done
+    echo "medians of the per-round ratios gtrace rgb / POV-Ray:"
+    echo "  whole-process CPU: 2 threads $(median cpu_pov), 1 thread $(median cpu_pov_1) (target <= 0.5)"
+    echo "  render only: wall 2 threads $(median render_pov), 1 thread $(median render_pov_1); CPU 1 thread net of start-up $(median net_cpu_pov_1) (target <= 0.6)"
+    echo "  whole-process wall (2 threads): $(median wall_pov); peak RSS: $(median rss_pov) (target <= 1)"
+    if command -v oiiotool > /dev/null; then
+        d=$(oiiotool "$TMP/gt_rgb.png" "$TMP/pov.png" --absdiff --printstats 2>&1 |
+            sed -n 's/.*Stats Avg: *\([0-9. ]*\)(float).*/\1/p' | awk '{ printf "%.1f %.1f %.1f", $1 * 255, $2 * 255, $3 * 255 }')
+        means=$(for f in gt_rgb pov; do oiiotool "$TMP/$f.png" --printstats 2>&1 |
+            sed -n 's/.*Stats Avg: *\([0-9. ]*\)(of 255).*/\1/p' | awk '{ printf "%.0f", ($1 + $2 + $3) / 3 }'; echo; done | paste -sd' ' -)
+        echo "  the two pictures: mean absolute difference per channel (R G B) $d of 255 (target < 6); mean value gtrace, POV-Ray: $means of 255"
+    fi
 else
     echo "POV-Ray: not installed (Debian package povray); no comparison"
 fi
-echo "colour models / rgb (render time): spectrum9 $(ratio "$(render_s gt_spectrum9)" "$(render_s gt_rgb)") \
-(target <= 2), spectrum $(ratio "$(render_s gt_spectrum)" "$(render_s gt_rgb)") (target <= 6), \
-bispectral $(ratio "$(render_s gt_bispectral)" "$(render_s gt_rgb)")"
-echo "speed-up from 1 to 2 threads (render time): $(ratio "$(render_s gt_rgb_1)" "$(render_s gt_rgb)") (target >= 1.8)"
-# CPU time is steadier than wall time on a shared machine: the same ratios from the processes' CPU seconds,
-# gtrace's start-up (loading OpenImageIO's shared libraries, measured with --help) taken out
-start=$(cpu gt_start)
-net() { awk -v a="$(cpu "$1")" -v s="$start" 'BEGIN { printf "%.3f", a - s }'; }
-echo "CPU seconds: start-up $start; net of it rgb $(net gt_rgb), spectrum9 $(net gt_spectrum9), spectrum \
-$(net gt_spectrum), bispectral $(net gt_bispectral); ratios to rgb $(ratio "$(net gt_spectrum9)" "$(net gt_rgb)"), \
-$(ratio "$(net gt_spectrum)" "$(net gt_rgb)"), $(ratio "$(net gt_bispectral)" "$(net gt_rgb)")"
-if command -v povray > /dev/null; then
-    echo "CPU seconds, whole process: gtrace rgb $(cpu gt_rgb), POV-Ray $(cpu pov): ratio $(ratio "$(cpu gt_rgb)" "$(cpu pov)")"
-fi
+echo "colour models / rgb, medians: render time spectrum9 $(median render_spectrum9), spectrum $(median render_spectrum), \
+bispectral $(median render_bispectral); process CPU spectrum9 $(median cpu_spectrum9), spectrum $(median cpu_spectrum), \
+bispectral $(median cpu_bispectral) (targets 1.1, 1.15, 1.3)"
+echo "speed-up from 1 to 2 threads (render time, median): $(median threads) (target >= 1.9 on an idle machine)"
+echo "start-up (gtrace --help, least CPU): $(field gt_start 2) s CPU, $(awk -v k="$(field gt_start 3)" 'BEGIN { printf "%.1f", k / 1024 }') MB (make bench runs bench_startup for the details)"

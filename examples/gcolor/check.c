@@ -8,6 +8,7 @@
  * allows 1e-3 (the built-in spectral models' white reflectance is 1 within 1.5e-4, from the exact 3x3
  * correction of their basis; measured errors are printed, so tighter models show it). */
 #include "gcolor.h"
+#include "../common/cli.h"
 
 #include <generic/color.h>
 #include <generic/registry.h>
@@ -231,32 +232,46 @@ int gcolor_check(int argc, char **argv)
 {
     const char *name = NULL;
     double step = 0.0;
-    for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "-h") || !strcmp(argv[i], "--help")) {
+    static const struct option longopts[] = {CLI_COMMON_OPTIONS, {"step", required_argument, NULL, 's'}, {0}};
+    CliParser p;
+    cli_begin(&p, "gcolor check", argc, argv, "h", longopts);
+    int opt;
+    while ((opt = cli_next(&p)) != -1) {
+        if (opt == 'h') {
             printf("usage: gcolor check MODEL [--step NM] [--plugin FILE.so]...\n"
                    "Checks the colour model MODEL (built-in or from a module): a + black = a, white * a = a,\n"
                    "pow(a, 1) = a, brightness 0 exactly for black, rgb -> model -> rgb, white light on a white\n"
                    "surface, model -> nm -> model, the wavelength bands partitioning every value, each with its\n"
                    "worst error over a grid of test colours.\n"
-                   "Exit status 0 when every property passes, 1 when one fails.\n");
-            return 0;
-        } else if (!strcmp(argv[i], "--step") && i + 1 < argc) {
-            char *end;
-            step = strtod(argv[++i], &end);
-            if (*end || !(step >= 0.1 && step <= 400.0)) {
-                fprintf(stderr, "gcolor check: --step expects a spacing in nm (0.1..400), got '%s'\n", argv[i]);
-                return 2;
-            }
-        } else if (argv[i][0] == '-' || name) {
-            fprintf(stderr, "gcolor check: unexpected argument '%s' (see gcolor check --help)\n", argv[i]);
-            return 2;
+                   "  --step NM     sample spacing in nm for a spectral model (0.1..400)\n"
+                   "  -h, --help    this text\n"
+                   "  --version     the version\n"
+                   "Exit status: 0 when every property passes, 1 when one fails, 2 for a usage error (an unknown\n"
+                   "option or model, a bad value).\n");
+            return CLI_OK;
+        } else if (opt == CLI_VERSION) {
+            return cli_version("gcolor");
+        } else if (opt == 's') {
+            if (cli_double("gcolor check", "--step", optarg, 0.1, 400.0, &step) != 0)
+                return CLI_USAGE;
         } else {
-            name = argv[i];
+            return CLI_USAGE;
         }
     }
-    if (!name) {
+    int n;
+    char **rest = cli_operands(&p, &n);
+    if (n > 1)
+        return cli_usage_error("gcolor check", "unexpected argument '%s'", rest[1]);
+    if (n == 0) {
         fprintf(stderr, "gcolor check: no MODEL given (gcolor list shows the registered ones)\n");
-        return 2;
+        return CLI_USAGE;
+    }
+    name = rest[0];
+    if (!gregistry_find(GKIND_COLORMODEL, name)) {
+        char names[512];
+        gregistry_names(GKIND_COLORMODEL, names, sizeof names);
+        fprintf(stderr, "gcolor check: unknown colour model '%s' (registered: %s)\n", name, names);
+        return CLI_USAGE;
     }
     GError err;
     GColorModel *m = NULL;

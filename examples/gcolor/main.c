@@ -2,6 +2,7 @@
  * printed as linear sRGB and CIE XYZ; `gcolor list` names the registered models and `gcolor check MODEL`
  * runs the conformance checks (check.c). Built only on the public API. */
 #include "gcolor.h"
+#include "../common/cli.h"
 
 #include <generic/builtins.h>
 #include <generic/color.h>
@@ -19,6 +20,7 @@ static void usage(FILE *f)
             "usage: gcolor [--models LIST] [--rgb R,G,B]... [--plugin FILE.so]...\n"
             "       gcolor list [--plugin FILE.so]...          the registered colour models, one per line\n"
             "       gcolor check MODEL [--step NM] [--plugin FILE.so]...   conformance checks of MODEL\n"
+            "       gcolor --help | --version\n"
             "Prints sample colours in every colour model (or the comma-separated LIST): the value the model\n"
             "stores, its brightness, and its conversion back to linear sRGB and CIE 1931 XYZ.\n"
             "  --rgb R,G,B   add a reflectance in linear sRGB to the report (repeatable)\n"
@@ -26,8 +28,10 @@ static void usage(FILE *f)
             "  --plugin FILE.so  load a module first (repeatable; a bare name is searched in the current\n"
             "                directory, then in GENERIC_PLUGIN_PATH)\n"
             "  -h, --help    this text\n"
+            "  --version     the version\n"
+            "Every option value may also be written --option=value.\n"
             "Exit status: 0 when every conversion succeeded, 1 when one failed (it is named on stderr and no value\n"
-            "is printed for it), 2 for a usage error such as an unknown model.\n");
+            "is printed for it), 2 for a usage error such as an unknown option or model.\n");
 }
 
 typedef struct Sample {
@@ -85,8 +89,26 @@ static int report_model(const char *model_name, const Sample *samples, int n)
     return failed;
 }
 
-static int list_models(void)
+/* `gcolor list`: the registered models, one per line. */
+static int list_models(int argc, char **argv)
 {
+    static const struct option longopts[] = {CLI_COMMON_OPTIONS, {0}};
+    CliParser p;
+    cli_begin(&p, "gcolor list", argc, argv, "h", longopts);
+    int c, n;
+    while ((c = cli_next(&p)) != -1) {
+        if (c == 'h') {
+            printf("usage: gcolor list [--plugin FILE.so]...\nThe registered colour models, one per line.\n"
+                   CLI_EXIT_STATUS_HELP);
+            return CLI_OK;
+        }
+        if (c == CLI_VERSION)
+            return cli_version("gcolor");
+        return CLI_USAGE;
+    }
+    char **rest = cli_operands(&p, &n);
+    if (n > 0)
+        return cli_usage_error("gcolor list", "unexpected argument '%s'", rest[0]);
     const GTypeInfo *types[64];
     int k = gregistry_list(GKIND_COLORMODEL, types, 64);
     for (int i = 0; i < k && i < 64; i++)
@@ -107,13 +129,8 @@ int main(int argc, char **argv)
     }
     if (argc > 1 && strcmp(argv[1], "check") == 0)
         return gcolor_check(argc - 1, argv + 1);
-    if (argc > 1 && strcmp(argv[1], "list") == 0) {
-        if (argc > 2) {
-            fprintf(stderr, "gcolor list: unexpected argument '%s'\n", argv[2]);
-            return 2;
-        }
-        return list_models();
-    }
+    if (argc > 1 && strcmp(argv[1], "list") == 0)
+        return list_models(argc - 1, argv + 1);
     Sample samples[32] = {
         {"white light", {1, 1, 1}, GCOLOR_LIGHT},
         {"grey 18%", {0.18, 0.18, 0.18}, GCOLOR_REFLECTANCE},
@@ -125,33 +142,45 @@ int main(int argc, char **argv)
     int n = 6;
     const char *models = NULL;
     static char names[32][48];
-    for (int i = 1; i < argc; i++) {
-        if (!strcmp(argv[i], "-h") || !strcmp(argv[i], "--help")) {
+    static const struct option longopts[] = {
+        CLI_COMMON_OPTIONS, {"models", required_argument, NULL, 'm'}, {"rgb", required_argument, NULL, 'r'}, {0}};
+    CliParser p;
+    cli_begin(&p, "gcolor", argc, argv, "h", longopts);
+    int c;
+    while ((c = cli_next(&p)) != -1) {
+        if (c == 'h') {
             usage(stdout);
-            return 0;
-        } else if (!strcmp(argv[i], "--models") && i + 1 < argc) {
-            models = argv[++i];
-        } else if (!strcmp(argv[i], "--rgb") && i + 1 < argc) {
+            return CLI_OK;
+        } else if (c == CLI_VERSION) {
+            return cli_version("gcolor");
+        } else if (c == 'm') {
+            models = optarg;
+        } else if (c == 'r') {
             if (n == 32) {
                 fprintf(stderr, "gcolor: at most %d --rgb colours\n", 32 - 6);
-                return 2;
+                return CLI_USAGE;
             }
             Sample *s = &samples[n];
             char tail;
-            if (sscanf(argv[++i], "%lf,%lf,%lf%c", &s->rgb[0], &s->rgb[1], &s->rgb[2], &tail) != 3 ||
+            if (sscanf(optarg, "%lf,%lf,%lf%c", &s->rgb[0], &s->rgb[1], &s->rgb[2], &tail) != 3 ||
                 !isfinite(s->rgb[0]) || !isfinite(s->rgb[1]) || !isfinite(s->rgb[2])) {
-                fprintf(stderr, "gcolor: --rgb expects three finite numbers R,G,B, got '%s'\n", argv[i]);
-                return 2;
+                fprintf(stderr, "gcolor: --rgb expects three finite numbers R,G,B, got '%s'\n", optarg);
+                return CLI_USAGE;
             }
-            snprintf(names[n], sizeof names[n], "rgb %s", argv[i]);
+            snprintf(names[n], sizeof names[n], "rgb %s", optarg);
             s->name = names[n];
             s->role = GCOLOR_REFLECTANCE;
             n++;
         } else {
-            fprintf(stderr, "gcolor: unknown argument '%s'\n", argv[i]);
-            usage(stderr);
-            return 2;
+            return CLI_USAGE;
         }
+    }
+    int nrest;
+    char **rest = cli_operands(&p, &nrest);
+    if (nrest > 0) {
+        fprintf(stderr, "gcolor: unknown command or argument '%s' (expected list or check; see gcolor --help)\n",
+                rest[0]);
+        return CLI_USAGE;
     }
     if (models) { /* every name must be a registered model before anything is printed */
         size_t len = strlen(models);

@@ -46,13 +46,32 @@ void gmat_surface_point(GmatContext *ctx, GSurfPoint *sp, int below);
 int gmat_transmittance(GmatContext *ctx, GVec3 in, int n, GColor *total, double *y_ideal);
 /** Prints a colour as linear sRGB and XYZ (read as a light), with its spectrum when spectrum != 0. */
 void gmat_print_color(const char *label, const GColor *c, int spectrum);
-/** Writes the polar plot of the BRDF in the plane of incidence of light from theta_in degrees. */
-int gmat_plot(GmatContext *ctx, double theta_in, int size, const char *path, GError *err);
+/** Decades below the maximum that a logarithmic radius shows. */
+#define GMAT_PLOT_DECADES 4
+/** How `gmat plot` draws. */
+typedef struct GmatPlotOptions {
+    int size;         /**< width in pixels (height 3/4 of it) */
+    int log_radius;   /**< logarithmic radius over GMAT_PLOT_DECADES decades (a diffuse lobe beside a specular one) */
+    const char *data; /**< also write the plotted table here (NULL: no) */
+} GmatPlotOptions;
+/** Writes the polar plot (gnuplot) of the light reflected in the plane of incidence of light from theta_in
+ * degrees. */
+int gmat_plot(GmatContext *ctx, double theta_in, const GmatPlotOptions *o, const char *path, GError *err);
 
 /** `gmat check FILE MATERIAL` (check.c): the conformance checks (albedo, reciprocity, finite values, Snell's
  * law, defaults), one line each with its figure and PASS/FAIL; samples is the albedo grid (0 = 64). Returns the
  * exit status: 0 when every property passes, 1 otherwise. */
 int gmat_check(GmatContext *ctx, int samples);
+/** Prints one property's line (check.c): its name, the worst figure, the tolerance, PASS or FAIL. */
+typedef void (*GmatReportFn)(void *checker, const char *property, double worst, double tol, const char *detail);
+/** The sampling checks of `gmat check` (sampling.c): chi2 of sample() against pdf(), the pdf's integral, the
+ * weights; at places[0] and places[2 % nplaces], nsamples draws per incidence (0 = 20000). */
+void gmat_check_sampling(GmatContext *ctx, const GmatPlace *places, int nplaces, int nsamples, GmatReportFn report,
+                         void *checker);
+/** The relative index n(from) / n(to) at sp as a colour, as a renderer hands it to refraction() (storage of the
+ * model; temporaries on sp's arena). */
+int gmat_relative_index(GSurfPoint *sp, GColor *out);
+
 /** `gmat laser FILE MATERIAL ...` (laser.c): the laser experiment of Wilkie et al., reading FILE with the reader
  * options base (--allow-plugins, --confine); returns the exit status. */
 int gmat_laser(int argc, char **argv, const GReaderOptions *base);

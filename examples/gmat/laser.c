@@ -9,6 +9,7 @@
  * (one panel per elevation, side by side) and measures the lobe of unshifted light. The computation is the
  * library's (gfluor_laser_split, gfluor_laser_pattern in generic/fluorescent.h). */
 #include "gmat.h"
+#include "../common/cli.h"
 
 #include <generic/fluorescent.h>
 #include <generic/image.h>
@@ -40,7 +41,10 @@ static void laser_usage(FILE *f)
             "  --extent X          the target spans -X..X (default 1.5)\n"
             "  --colormodel NAME   compute in this model instead of the file's; --step NM its spacing\n"
             "  --plugin FILE.so    load a module first (repeatable)\n"
-            "  --allow-plugins     let `plugin` statements of FILE load modules; --confine DIR: files under DIR only\n");
+            "  --allow-plugins     let `plugin` statements of FILE load modules; --confine DIR: files under DIR only\n"
+            "  -h, --help          this text\n"
+            "  --version           the version\n"
+            CLI_EXIT_STATUS_HELP);
 }
 
 static int elevations(const char *s, double *e, int *n)
@@ -99,47 +103,67 @@ int gmat_laser(int argc, char **argv, const GReaderOptions *base)
     const char *file = NULL, *name = NULL, *pattern = NULL, *colormodel = NULL;
     double nm = 532.0, el[MAX_ELEVATIONS] = {5, 20, 60}, extent = 1.5, size = 384, step = 0;
     int nel = 3;
-    for (int i = 2; i < argc; i++) {
-        const char *o = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (strcmp(o, "--help") == 0 || strcmp(o, "-h") == 0) {
+    enum { OPT_WAVELENGTH = CLI_FIRST_OWN, OPT_ELEVATION, OPT_PATTERN, OPT_SIZE, OPT_EXTENT, OPT_COLORMODEL,
+           OPT_STEP };
+    static const struct option longopts[] = {
+        CLI_COMMON_OPTIONS,
+        {"wavelength", required_argument, NULL, OPT_WAVELENGTH},
+        {"elevation", required_argument, NULL, OPT_ELEVATION},
+        {"pattern", required_argument, NULL, OPT_PATTERN},
+        {"size", required_argument, NULL, OPT_SIZE},
+        {"extent", required_argument, NULL, OPT_EXTENT},
+        {"colormodel", required_argument, NULL, OPT_COLORMODEL},
+        {"step", required_argument, NULL, OPT_STEP},
+        {NULL, 0, NULL, 0},
+    };
+    CliParser p;
+    cli_begin(&p, "gmat laser", argc - 1, argv + 1, "h", longopts);
+    int c;
+    while ((c = cli_next(&p)) != -1) {
+        const char *v = optarg;
+        switch (c) {
+        case 'h':
             laser_usage(stdout);
-            return 0;
-        }
-        if (o[0] == '-' && o[1] && !v)
-            return gmat_usage_error("laser", "option %s needs a value", o);
-        if (strcmp(o, "--wavelength") == 0) {
+            return CLI_OK;
+        case CLI_VERSION:
+            return cli_version("gmat");
+        case OPT_WAVELENGTH:
             if (gmat_number(v, 200, 2000, &nm))
                 return gmat_usage_error("laser", "--wavelength: '%s' is not a wavelength in nm", v);
-        } else if (strcmp(o, "--elevation") == 0) {
+            break;
+        case OPT_ELEVATION:
             if (elevations(v, el, &nel))
                 return gmat_usage_error("laser", "--elevation: '%s' is not a list of up to 16 angles in (0, 90] degrees",
                                         v);
-        } else if (strcmp(o, "--pattern") == 0) {
+            break;
+        case OPT_PATTERN:
             pattern = v;
-        } else if (strcmp(o, "--size") == 0) {
+            break;
+        case OPT_SIZE:
             if (gmat_number(v, 64, 4096, &size) || size != floor(size))
                 return gmat_usage_error("laser", "--size: '%s' is not a whole number in 64..4096", v);
-        } else if (strcmp(o, "--extent") == 0) {
+            break;
+        case OPT_EXTENT:
             if (gmat_number(v, 0.01, 100, &extent))
                 return gmat_usage_error("laser", "--extent: '%s' is not a number in 0.01..100", v);
-        } else if (strcmp(o, "--colormodel") == 0) {
+            break;
+        case OPT_COLORMODEL:
             colormodel = v;
-        } else if (strcmp(o, "--step") == 0) {
+            break;
+        case OPT_STEP:
             if (gmat_number(v, 0.1, 400, &step))
                 return gmat_usage_error("laser", "--step: '%s' is not a spacing in nm", v);
-        } else if (o[0] == '-' && o[1]) {
-            return gmat_usage_error("laser", "unknown option %s", o);
-        } else if (!file) {
-            file = o;
-            continue;
-        } else if (!name) {
-            name = o;
-            continue;
-        } else {
-            return gmat_usage_error("laser", "unexpected argument '%s'", o);
+            break;
+        default:
+            return CLI_USAGE;
         }
-        i++;
     }
+    int nrest;
+    char **rest = cli_operands(&p, &nrest);
+    if (nrest > 2)
+        return gmat_usage_error("laser", "unexpected argument '%s'", rest[2]);
+    file = nrest > 0 ? rest[0] : NULL;
+    name = nrest > 1 ? rest[1] : NULL;
     if (!file || !name)
         return gmat_usage_error("laser", "%s", "FILE and MATERIAL are required");
     GColorModelOptions mo = {.step_nm = step};

@@ -2,13 +2,16 @@
  *
  *   gmat eval   FILE MATERIAL --in THETA[,PHI] --out THETA[,PHI] [--spectrum]
  *   gmat albedo FILE MATERIAL --in THETA [--samples N]
- *   gmat plot   FILE MATERIAL --in THETA -o PLOT.png [--size PIXELS]
+ *   gmat plot   FILE MATERIAL --in THETA -o PLOT.png [--size PIXELS] [--log-radius] [--data TABLE]
  *   gmat list   FILE
  *   gmat check  FILE MATERIAL [--samples N]
  *   gmat types  [material|node|generator]
+ *   gmat swatch FILE MATERIAL -o SWATCH.png ...   (swatch.c)
+ *   gmat laser  FILE MATERIAL ...                 (laser.c)
  * common options: --colormodel NAME [--step NM], --plugin MODULE.so (repeatable), --allow-plugins, --confine DIR,
- * --help */
+ * --help, --version */
 #include "gmat.h"
+#include "../common/cli.h"
 
 #include <generic/builtins.h>
 #include <generic/plugin.h>
@@ -34,17 +37,22 @@ static const char common[] = "Common options:\n"
                              "  --allow-plugins     let `plugin` statements of the files load modules (they run\n"
                              "                      native code; also GENERIC_ALLOW_PLUGINS=1)\n"
                              "  --confine DIR       every file read (includes, modules, BFC, images) must lie under DIR\n"
-                             "  --help              this text\n";
+                             "  -h, --help          this text\n"
+                             "  --version           the version\n"
+                             "Every option value may also be written --option=value.\n"
+                             CLI_EXIT_STATUS_HELP;
 
 static void usage_main(FILE *f)
 {
-    fprintf(f, "usage: gmat COMMAND FILE MATERIAL [options]\n\n"
+    fprintf(f, "usage: gmat COMMAND FILE MATERIAL [options]\n"
+               "       gmat --help | --version\n\n"
                "Commands:\n"
                "  eval    reflected colour for one pair of directions\n"
                "  albedo  directional-hemispherical reflectance (numeric integration)\n"
                "  plot    polar plot of the reflection in the plane of incidence (PNG)\n"
-               "  list    the materials, texture nodes and generators a file defines\n"
-               "  check   conformance checks: albedo, reciprocity, finite values, Snell's law, defaults\n"
+               "  list    the materials, texture nodes and generators a file (or a scene) defines\n"
+               "  check   conformance checks: albedo, reciprocity, finite values, Snell's law, defaults,\n"
+               "          sampling (chi-square, pdf, weights)\n"
                "  types   the registered material, node and generator types\n"
                "  swatch  a picture of a material or texture tree (gmat swatch --help)\n"
                "  laser   the laser experiment of Wilkie et al. (gmat laser --help)\n\n"
@@ -68,14 +76,20 @@ static void usage(const char *cmd, FILE *f)
                    "  --samples N         grid resolution (8..4096)\n\n%s\n%s",
                 convention, common);
     else if (strcmp(cmd, "plot") == 0)
-        fprintf(f, "usage: gmat plot FILE MATERIAL --in THETA -o PLOT.png [--size PIXELS] [options]\n\n"
-                   "Writes a polar plot of the light reflected in the plane of incidence: the lobe's radius is\n"
-                   "the reflected luminance (largest = full radius, rings at 25%% steps), its colour the\n"
-                   "reflected colour normalised to full brightness. The light comes from the left (white\n"
-                   "line); an ideal specular ray is a line whose length is its reflectance.\n"
+        fprintf(f, "usage: gmat plot FILE MATERIAL --in THETA -o PLOT.png [--size PIXELS] [--log-radius] [--data TABLE]\n"
+                   "                 [options]\n\n"
+                   "Draws (with gnuplot) a polar plot of the light reflected in the plane of incidence: the lobe's\n"
+                   "radius is the reflected luminance for unit white light, the angle the outgoing direction from\n"
+                   "the normal (negative towards the light, which comes from the left: dashed line); the lobe is\n"
+                   "filled with the reflected colour of its brightest direction; an ideal specular ray is a line\n"
+                   "labelled with its reflectance. Both axes are labelled.\n"
                    "  -o FILE             output image (any format OpenImageIO writes; PNG is 8-bit sRGB)\n"
-                   "  --size PIXELS       width (64..8192, default 512; height is 3/4 of it)\n\n%s\n%s",
-                convention, common);
+                   "  --size PIXELS       width (64..8192, default 512; height is 3/4 of it)\n"
+                   "  --log-radius        logarithmic radius over %d decades below the maximum (a diffuse lobe\n"
+                   "                      beside a specular one)\n"
+                   "  --data TABLE        also write the plotted values: angle, luminance, colour per line\n"
+                   "Needs gnuplot (Debian: gnuplot-nox).\n\n%s\n%s",
+                GMAT_PLOT_DECADES, convention, common);
     else if (strcmp(cmd, "check") == 0)
         fprintf(f, "usage: gmat check FILE MATERIAL [--samples N] [options]\n\n"
                    "Measures the properties every material and texture tree must have and prints one line each:\n"
@@ -97,7 +111,8 @@ static void usage(const char *cmd, FILE *f)
                 common);
     else if (strcmp(cmd, "list") == 0)
         fprintf(f, "usage: gmat list FILE [options]\n\nLists the materials, texture nodes and generators FILE defines, with their\n"
-                   "types: `KIND NAME TYPE - summary` per line.\n\n%s",
+                   "types: `KIND NAME TYPE - summary` per line. FILE may be a gtrace scene: its object, light and\n"
+                   "camera entries are skipped.\n\n%s",
                 common);
     else
         usage_main(f);
@@ -137,61 +152,97 @@ static int angles(const char *s, double tmax, double *theta, double *phi)
 }
 
 typedef struct Args {
-    const char *cmd, *file, *material, *colormodel, *output;
+    const char *cmd, *file, *material, *colormodel, *output, *data;
     double step, in_t, in_p, out_t, out_p;
-    int have_in, have_out, spectrum, samples, size;
+    int have_in, have_out, spectrum, samples, size, log_radius;
 } Args;
 
+enum { OPT_IN = CLI_FIRST_OWN, OPT_OUT, OPT_SPECTRUM, OPT_COLORMODEL, OPT_STEP, OPT_SAMPLES, OPT_SIZE, OPT_LOG_RADIUS,
+       OPT_DATA };
+
+/* 0 to go on, 1 after --help/--version (exit 0), or the usage error's status 2. */
 static int parse_args(int argc, char **argv, Args *a)
 {
+    static const struct option longopts[] = {
+        CLI_COMMON_OPTIONS,
+        {"in", required_argument, NULL, OPT_IN},
+        {"out", required_argument, NULL, OPT_OUT},
+        {"spectrum", no_argument, NULL, OPT_SPECTRUM},
+        {"colormodel", required_argument, NULL, OPT_COLORMODEL},
+        {"step", required_argument, NULL, OPT_STEP},
+        {"samples", required_argument, NULL, OPT_SAMPLES},
+        {"size", required_argument, NULL, OPT_SIZE},
+        {"output", required_argument, NULL, 'o'},
+        {"log-radius", no_argument, NULL, OPT_LOG_RADIUS},
+        {"data", required_argument, NULL, OPT_DATA},
+        {NULL, 0, NULL, 0},
+    };
     const char *cmd = a->cmd;
-    int pos = 0;
-    for (int i = 2; i < argc; i++) {
-        const char *o = argv[i];
-        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (strcmp(o, "--help") == 0 || strcmp(o, "-h") == 0) {
+    char prog[32];
+    snprintf(prog, sizeof prog, "gmat %s", cmd);
+    CliParser p;
+    cli_begin(&p, prog, argc - 1, argv + 1, "ho:", longopts);
+    int c;
+    double n;
+    while ((c = cli_next(&p)) != -1) {
+        const char *v = optarg;
+        switch (c) {
+        case 'h':
             usage(cmd, stdout);
-            exit(0);
-        } else if (strcmp(o, "--spectrum") == 0) {
+            return 1;
+        case CLI_VERSION:
+            cli_version("gmat");
+            return 1;
+        case OPT_SPECTRUM:
             a->spectrum = 1;
-        } else if (o[0] == '-' && o[1] && !v) {
-            return gmat_usage_error(cmd, "option %s needs a value", o);
-        } else if (strcmp(o, "--in") == 0) {
+            break;
+        case OPT_LOG_RADIUS:
+            a->log_radius = 1;
+            break;
+        case OPT_IN:
             if (angles(v, 89.9, &a->in_t, &a->in_p))
                 return gmat_usage_error(cmd, "--in: '%s' is not THETA[,PHI] with 0 <= THETA < 90 degrees", v);
-            a->have_in = 1, i++;
-        } else if (strcmp(o, "--out") == 0) {
+            a->have_in = 1;
+            break;
+        case OPT_OUT:
             if (angles(v, 90.0, &a->out_t, &a->out_p))
                 return gmat_usage_error(cmd, "--out: '%s' is not THETA[,PHI] with 0 <= THETA <= 90 degrees", v);
-            a->have_out = 1, i++;
-        } else if (strcmp(o, "--colormodel") == 0) {
-            a->colormodel = v, i++;
-        } else if (strcmp(o, "--step") == 0) {
+            a->have_out = 1;
+            break;
+        case OPT_COLORMODEL:
+            a->colormodel = v;
+            break;
+        case OPT_STEP:
             if (gmat_number(v, 0.1, 400.0, &a->step))
                 return gmat_usage_error(cmd, "--step: '%s' is not a spacing in nm (0.1..400)", v);
-            i++;
-        } else if (strcmp(o, "--samples") == 0) {
-            double n;
+            break;
+        case OPT_SAMPLES:
             if (gmat_number(v, 8, 4096, &n) || n != floor(n))
                 return gmat_usage_error(cmd, "--samples: '%s' is not a whole number in 8..4096", v);
-            a->samples = (int)n, i++;
-        } else if (strcmp(o, "--size") == 0) {
-            double n;
+            a->samples = (int)n;
+            break;
+        case OPT_SIZE:
             if (gmat_number(v, 64, 8192, &n) || n != floor(n))
                 return gmat_usage_error(cmd, "--size: '%s' is not a whole number in 64..8192", v);
-            a->size = (int)n, i++;
-        } else if (strcmp(o, "-o") == 0 || strcmp(o, "--output") == 0) {
-            a->output = v, i++;
-        } else if (o[0] == '-' && o[1]) {
-            return gmat_usage_error(cmd, "unknown option %s", o);
-        } else if (pos == 0) {
-            a->file = o, pos++;
-        } else if (pos == 1 && strcmp(cmd, "list") != 0) {
-            a->material = o, pos++;
-        } else {
-            return gmat_usage_error(cmd, "unexpected argument '%s'", o);
+            a->size = (int)n;
+            break;
+        case 'o':
+            a->output = v;
+            break;
+        case OPT_DATA:
+            a->data = v;
+            break;
+        default:
+            return CLI_USAGE;
         }
     }
+    int nrest;
+    char **rest = cli_operands(&p, &nrest);
+    int want = strcmp(cmd, "list") == 0 ? 1 : 2;
+    if (nrest > want)
+        return gmat_usage_error(cmd, "unexpected argument '%s'", rest[want]);
+    a->file = nrest > 0 ? rest[0] : NULL;
+    a->material = nrest > 1 ? rest[1] : NULL;
     if (!a->file)
         return gmat_usage_error(cmd, "%s", "no FILE given");
     if (strcmp(cmd, "list") == 0)
@@ -217,8 +268,9 @@ static int list(GLibrary *lib)
             const char *name;
             const GTypeInfo *t;
             glibrary_entry(lib, (GKind)k, i, &name, &t);
-            printf("%-10s %-24s %s%s%s\n", gkind_name((GKind)k), name ? name : "(anonymous)", t->name,
-                   t->summary ? " - " : "", t->summary ? t->summary : "");
+            const char *base = glibrary_entry_base(lib, (GKind)k, i);
+            printf("%-10s %-24s %s%s%s%s%s\n", gkind_name((GKind)k), name ? name : "(anonymous)", t->name,
+                   base ? " like " : "", base ? base : "", t->summary ? " - " : "", t->summary ? t->summary : "");
         }
     return 0;
 }
@@ -228,18 +280,28 @@ static int types(int argc, char **argv)
 {
     const GKind kinds[] = {GKIND_MATERIAL, GKIND_NODE, GKIND_GENERATOR};
     const char *only = NULL;
-    for (int i = 2; i < argc; i++) {
-        if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+    static const struct option longopts[] = {CLI_COMMON_OPTIONS, {NULL, 0, NULL, 0}};
+    CliParser p;
+    cli_begin(&p, "gmat types", argc - 1, argv + 1, "h", longopts);
+    int c, n;
+    while ((c = cli_next(&p)) != -1) {
+        if (c == 'h') {
             usage("types", stdout);
-            return 0;
+            return CLI_OK;
         }
+        if (c == CLI_VERSION)
+            return cli_version("gmat");
+        return CLI_USAGE;
+    }
+    char **rest = cli_operands(&p, &n);
+    for (int i = 0; i < n; i++) {
         int known = 0;
         for (int k = 0; k < 3; k++)
-            known |= strcmp(argv[i], gkind_name(kinds[k])) == 0;
+            known |= strcmp(rest[i], gkind_name(kinds[k])) == 0;
         if (!known || only)
             return gmat_usage_error("types", "unexpected argument '%s' (expected material, node or generator)",
-                                    argv[i]);
-        only = argv[i];
+                                    rest[i]);
+        only = rest[i];
     }
     for (int k = 0; k < 3; k++) {
         if (only && strcmp(only, gkind_name(kinds[k])) != 0)
@@ -288,7 +350,8 @@ static int run(const Args *a, GmatContext *ctx)
         return rc == G_OK ? 0 : 1;
     }
     GError err;
-    if (gmat_plot(ctx, a->in_t, a->size ? a->size : 512, a->output, &err) != G_OK) {
+    GmatPlotOptions po = {.size = a->size ? a->size : 512, .log_radius = a->log_radius, .data = a->data};
+    if (gmat_plot(ctx, a->in_t, &po, a->output, &err) != G_OK) {
         fprintf(stderr, "gmat plot: %s\n", err.message);
         return 1;
     }
@@ -315,6 +378,8 @@ int main(int argc, char **argv)
         usage_main(argc < 2 ? stderr : stdout);
         return argc < 2 ? 2 : 0;
     }
+    if (strcmp(argv[1], "--version") == 0)
+        return cli_version("gmat");
     if (strcmp(argv[1], "laser") == 0) /* laser.c parses its own options */
         return gmat_laser(argc, argv, &trust);
     if (strcmp(argv[1], "swatch") == 0)
@@ -329,11 +394,13 @@ int main(int argc, char **argv)
                                 a.cmd);
     int rc = parse_args(argc, argv, &a);
     if (rc != 0)
-        return rc;
+        return rc == 1 ? CLI_OK : rc;
     GColorModelOptions mo = {.step_nm = a.step};
     GReaderOptions opt = trust;
     opt.colormodel = a.colormodel;
     opt.colormodel_options = &mo;
+    if (strcmp(a.cmd, "list") == 0) /* a scene's entries that only gtrace knows */
+        opt.skip_kinds = 1u << GKIND_OBJECT | 1u << GKIND_LIGHT | 1u << GKIND_CAMERA;
     GmatContext ctx = {0};
     GError err;
     if (greader_load_file(a.file, &opt, &ctx.lib, &err) != G_OK) {

@@ -43,7 +43,7 @@ int gmat_reflect(GmatContext *ctx, GVec3 in, GVec3 out)
 }
 
 /* The relative index n(from) / n(to) of the point as a colour (as a renderer hands it to refraction()). */
-static int relative_index(GSurfPoint *sp, GColor *out)
+int gmat_relative_index(GSurfPoint *sp, GColor *out)
 {
     GColor to;
     int rc = gcolor_scratch(&to, sp->model, sp->scratch);
@@ -63,7 +63,7 @@ static int transmit(GmatContext *ctx, GVec3 in, GVec3 out)
     GColor ri;
     int rc = gcolor_scratch(&ri, ctx->model, ctx->scratch);
     if (rc == G_OK)
-        rc = relative_index(&sp, &ri);
+        rc = gmat_relative_index(&sp, &ri);
     if (rc == G_OK)
         rc = gmaterial_refraction(ctx->material, &sp, in, light(ctx), &ri, out, &ctx->result);
     gscratch_release(ctx->scratch, mark);
@@ -154,7 +154,7 @@ int gmat_transmittance(GmatContext *ctx, GVec3 in, int n, GColor *total, double 
     GVec3 dir;
     rc = gcolor_scratch(&ri, ctx->model, ctx->scratch);
     if (rc == G_OK)
-        rc = relative_index(&up, &ri);
+        rc = gmat_relative_index(&up, &ri);
     int valid = rc == G_OK ? gmaterial_refraction_dir(ctx->material, &up, gvec3_neg(in), &ri, &dir) : rc;
     gscratch_release(ctx->scratch, mark);
     if (valid < 0)

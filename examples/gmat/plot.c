@@ -1,53 +1,36 @@
-/* plot.c - gmat plot: a polar plot of the reflected light in the plane of incidence.
+/* plot.c - gmat plot: a polar plot of the reflected light in the plane of incidence, drawn by gnuplot.
  *
- * The surface is the horizontal line near the bottom; the point of reflection is its centre. For each
- * outgoing direction in the plane (from grazing on the light's side, through the normal, to grazing on the
- * far side) the lobe reaches out to a distance proportional to the reflected luminance, filled with the
- * reflected colour (normalised so its largest sRGB channel is 1, so hue shows at every brightness). Grey
- * rings mark 25, 50, 75 and 100 % of the largest value. The incoming direction is drawn in white; the ideal
- * specular ray, if the material has one, is a coloured line whose length is its reflectance (the whole
- * radius = 1). */
+ * For each outgoing direction in the plane of incidence (from grazing on the light's side, -90 degrees, through
+ * the normal, 0, to grazing on the far side, +90) the lobe reaches out to the reflected luminance for unit white
+ * light, on a linear radius or, with --log-radius, a logarithmic one over GMAT_PLOT_DECADES decades below the
+ * maximum (a diffuse lobe beside a specular one). The lobe is filled with the reflected colour of its brightest
+ * direction; the incoming light and the ideal specular ray (when the material has one) are drawn as lines.
+ * gnuplot draws a PNG into a temporary directory; it is read back and written to the destination through the
+ * library's image writer (so any format OpenImageIO writes, whole or not at all). --data writes the table the
+ * plot is drawn from. */
 #include "gmat.h"
 
+#include <generic/file.h>
 #include <generic/image.h>
 #include <generic/memory.h>
 
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
-#define ANGLES 1801 /* -90 .. 90 degrees in 0.1 degree steps */
+#define ANGLES 361 /* -90 .. 90 degrees in 0.5 degree steps */
 
 typedef struct Lobe {
-    float y[ANGLES];
+    double angle[ANGLES], y[ANGLES];
     float rgb[ANGLES][3];
 } Lobe;
 
-static void put(GImage *img, int x, int y, const float c[3])
-{
-    if (x < 0 || y < 0 || x >= img->width || y >= img->height)
-        return;
-    float *p = img->pixels + ((size_t)y * img->width + x) * 3;
-    p[0] = c[0];
-    p[1] = c[1];
-    p[2] = c[2];
-}
-
-static void line(GImage *img, double x0, double y0, double x1, double y1, const float c[3])
-{
-    const double far = 1e6; /* far outside any image: not drawn, and kept away from the integer casts below */
-    if (!(fabs(x0) < far && fabs(y0) < far && fabs(x1) < far && fabs(y1) < far))
-        return;
-    int n = (int)(fmax(fabs(x1 - x0), fabs(y1 - y0)) * 2) + 1;
-    for (int i = 0; i <= n; i++) {
-        double t = (double)i / n;
-        int x = (int)lround(x0 + (x1 - x0) * t), y = (int)lround(y0 + (y1 - y0) * t);
-        for (int d = 0; d < 2; d++)
-            put(img, x + d, y, c);
-    }
-}
-
 /* The reflected colour of one direction as a display colour: largest channel 1, negatives clipped. */
-static void display(const GColor *c, float out[3], float *y)
+static void display(const GColor *c, float out[3], double *y)
 {
     double xyz[3] = {0, 0, 0}, rgb[3];
     if (gcolor_to_xyz(c, GCOLOR_LIGHT, xyz) != G_OK)
@@ -56,14 +39,144 @@ static void display(const GColor *c, float out[3], float *y)
     double mx = fmax(rgb[0], fmax(rgb[1], rgb[2]));
     for (int k = 0; k < 3; k++)
         out[k] = mx > 0 ? (float)fmax(0.0, rgb[k] / mx) : 0.0f;
-    *y = (float)fmax(0.0, xyz[1]);
+    *y = fmax(0.0, xyz[1]);
 }
 
-int gmat_plot(GmatContext *ctx, double theta_in, int size, const char *path, GError *err)
+/* A display colour as gnuplot's 0xRRGGBB, sRGB encoded and darkened by `shade`. */
+static unsigned hex_colour(const float c[3], double shade)
 {
-    int check = gimage_check_output(path, err); /* before any work */
-    if (check != G_OK)
-        return check;
+    unsigned v = 0;
+    for (int k = 0; k < 3; k++)
+        v = v << 8 | (unsigned)lround(255.0 * fmin(1.0, gimage_srgb_encode(shade * c[k])));
+    return v;
+}
+
+/* Writes s single-quoted for gnuplot ('' escapes a quote). */
+static void put_quoted(FILE *f, const char *s)
+{
+    fputc('\'', f);
+    for (; *s; s++) {
+        if (*s == '\'')
+            fputc('\'', f);
+        if (*s != '\n')
+            fputc(*s, f);
+    }
+    fputc('\'', f);
+}
+
+static int gnuplot_found(void)
+{
+    const char *path = getenv("PATH");
+    char buf[4096];
+    for (const char *p = path ? path : "/usr/bin:/bin"; *p;) {
+        const char *e = strchr(p, ':');
+        size_t n = e ? (size_t)(e - p) : strlen(p);
+        snprintf(buf, sizeof buf, "%.*s/gnuplot", (int)n, n ? p : ".");
+        if (access(buf, X_OK) == 0)
+            return 1;
+        p += n + (e ? 1 : 0);
+    }
+    return 0;
+}
+
+/* The table: angle (degrees from the normal, negative towards the light), luminance, display colour. */
+static void write_table(FILE *f, const Lobe *l)
+{
+    for (int i = 0; i < ANGLES; i++)
+        fprintf(f, "%.1f %.9g %.4f %.4f %.4f\n", l->angle[i], l->y[i], l->rgb[i][0], l->rgb[i][1], l->rgb[i][2]);
+}
+
+static int write_data_file(const char *path, const GmatContext *ctx, double theta_in, const Lobe *l, GError *err)
+{
+    GFileOutput out;
+    int rc = gfile_output_begin(&out, path, err);
+    if (rc != G_OK)
+        return rc;
+    int fd = dup(out.fd);
+    FILE *f = fd >= 0 ? fdopen(fd, "w") : NULL;
+    if (!f) {
+        if (fd >= 0)
+            close(fd);
+        gfile_output_abort(&out);
+        return gerror_set(err, G_ERR_IO, "cannot write %s: %s", path, strerror(errno));
+    }
+    fprintf(f, "# gmat plot: material %s, light from theta %g degrees (the left)\n"
+               "# angle_deg luminance r g b   (angle from the normal, negative towards the light; luminance\n"
+               "# reflected for unit white light; r g b the colour normalised to its largest channel)\n",
+            ctx->material_name, theta_in);
+    write_table(f, l);
+    int failed = ferror(f);
+    if (fclose(f) != 0 || failed) {
+        gfile_output_abort(&out);
+        return gerror_set(err, G_ERR_IO, "cannot write %s: write error", path);
+    }
+    return gfile_output_commit(&out, -1, path, err);
+}
+
+/* The gnuplot program drawing the lobe into png. On a logarithmic radius the plot's radius is
+ * log10(luminance / rmin), rmin GMAT_PLOT_DECADES decades below the maximum, and the rings are labelled with
+ * the luminance they stand for. */
+static void write_script(FILE *g, const char *png, const GmatPlotOptions *o, const GmatContext *ctx,
+                         double theta_in, const Lobe *l, double ymax, int spec, double spec_angle, double spec_y,
+                         const float spec_rgb[3])
+{
+    const int w = o->size, h = o->size * 3 / 4, font = w >= 512 ? 11 : w >= 256 ? 8 : 5;
+    const double top = ymax > 0 ? ymax * 1.05 : 1.0, rmin = top * pow(10.0, -GMAT_PLOT_DECADES);
+    const double R = o->log_radius ? GMAT_PLOT_DECADES : top; /* the outer radius in plot units */
+    int peak = 0;
+    for (int i = 0; i < ANGLES; i++)
+        peak = l->y[i] > l->y[peak] ? i : peak;
+    fprintf(g, "set terminal pngcairo size %d,%d font 'Sans,%d'\nset output ", w, h, font);
+    put_quoted(g, png);
+    fprintf(g, "\n$lobe << EOD\n");
+    for (int i = 0; i < ANGLES; i++) /* gnuplot's polar angle: 90 along the normal, 180 on the light's side */
+        fprintf(g, "%.2f %.9g\n", 90.0 - l->angle[i],
+                o->log_radius ? (l->y[i] > rmin ? log10(l->y[i] / rmin) : 0.0) : l->y[i]);
+    fprintf(g, "EOD\n$in << EOD\n%g 0\n%g %g\nEOD\n", 90.0 + theta_in, 90.0 + theta_in, R);
+    if (spec)
+        fprintf(g, "$spec << EOD\n%g 0\n%g %g\nEOD\n", 90.0 - spec_angle, 90.0 - spec_angle, R);
+    fprintf(g, "set polar\nset angles degrees\nset size ratio -1\nunset border\nunset xtics\nunset ytics\n"
+               "set trange [0:180]\nset rrange [0:%g]\nset xrange [%g:%g]\nset yrange [%g:%g]\n",
+            R, -1.1 * R, 1.1 * R, -0.06 * R, 1.3 * R);
+    if (o->log_radius) {
+        fprintf(g, "set rtics (");
+        for (int k = 0; k <= GMAT_PLOT_DECADES; k++)
+            fprintf(g, "%s'%.0e' %d", k ? ", " : "", rmin * pow(10.0, k), k);
+        fprintf(g, ")\n");
+    } else {
+        fprintf(g, "set rtics format '%%.2g'\n");
+    }
+    fprintf(g, "set grid polar 30 front lc rgb 'gray40'\n"
+               "set ttics ('+90' 0, '+60' 30, '+30' 60, '0' 90, '-30' 120, '-60' 150, '-90' 180)\n"
+               "set xlabel \"outgoing angle from the normal, degrees (negative: light side)\\n"
+               "radius: reflected luminance for unit white light%s\"\n",
+            o->log_radius ? " (logarithmic)" : "");
+    char title[512];
+    snprintf(title, sizeof title, "%s (%s, %s): light from %g degrees on the left", ctx->material_name,
+             gmaterial_name(ctx->material), gcolormodel_name(ctx->model), theta_in);
+    fprintf(g, "set title ");
+    put_quoted(g, title);
+    fprintf(g, "\nset key top right opaque box\n"
+               "plot $lobe using 1:2 with filledcurves closed fs transparent solid 0.6 lc rgb '#%06x' title 'reflected light', "
+               "$lobe using 1:2 with lines lw 2 lc rgb 'black' notitle, "
+               "$in using 1:2 with lines lw 2 dt 2 lc rgb '#e08000' title 'incident light'",
+            hex_colour(l->rgb[peak], 0.75));
+    if (spec)
+        fprintf(g, ", $spec using 1:2 with lines lw 3 lc rgb '#%06x' title 'ideal specular ray, reflectance Y %.3g'",
+                hex_colour(spec_rgb, 0.8), spec_y);
+    fprintf(g, "\nset output\n");
+}
+
+int gmat_plot(GmatContext *ctx, double theta_in, const GmatPlotOptions *o, const char *path, GError *err)
+{
+    int rc = gimage_check_output(path, err); /* before any work */
+    if (rc != G_OK)
+        return rc;
+    if (o->data && (rc = gfile_check_output(o->data, err)) != G_OK)
+        return rc;
+    if (!gnuplot_found())
+        return gerror_set(err, G_ERR_IO, "the plot is drawn by gnuplot, which is not installed (Debian: apt-get "
+                                         "install gnuplot-nox)");
     Lobe *lobe = gmem_calloc(1, sizeof *lobe);
     if (!lobe)
         return gerror_set(err, G_ERR_NOMEM, "out of memory");
@@ -71,8 +184,9 @@ int gmat_plot(GmatContext *ctx, double theta_in, int size, const char *path, GEr
     GVec3 in = gmat_direction(theta_in, 180.0);
     double ymax = 0.0;
     for (int i = 0; i < ANGLES; i++) {
-        double a = -90.0 + 0.1 * i;
-        int rc = gmat_reflect(ctx, in, gmat_direction(fabs(a), a < 0 ? 180.0 : 0.0));
+        double a = -90.0 + 0.5 * i;
+        lobe->angle[i] = a;
+        rc = gmat_reflect(ctx, in, gmat_direction(fabs(a), a < 0 ? 180.0 : 0.0));
         if (rc != G_OK) {
             gmem_free(lobe);
             return gerror_set(err, rc, "evaluating the material failed (%s)", gstatus_string(rc));
@@ -80,51 +194,47 @@ int gmat_plot(GmatContext *ctx, double theta_in, int size, const char *path, GEr
         display(&ctx->result, lobe->rgb[i], &lobe->y[i]);
         ymax = fmax(ymax, lobe->y[i]);
     }
-    GImage img = {0};
-    int rc = gimage_create(&img, size, size * 3 / 4, 3, err);
-    if (rc != G_OK) {
-        gmem_free(lobe);
-        return rc;
-    }
-    double cx = size / 2.0, cy = img.height - size * 0.08, radius = size * 0.44;
-    static const float bg[3] = {0.02f, 0.02f, 0.025f}, ring[3] = {0.12f, 0.12f, 0.12f};
-    for (int y = 0; y < img.height; y++)
-        for (int x = 0; x < img.width; x++) {
-            double dx = x + 0.5 - cx, dy = cy - (y + 0.5), d = sqrt(dx * dx + dy * dy);
-            put(&img, x, y, bg);
-            if (dy < 0)
-                continue;
-            double a = atan2(dx, dy) * 180.0 / M_PI; /* 0 along the normal, negative to the left */
-            double f = (a + 90.0) / 0.1;
-            int i = (int)floor(f);
-            if (i < 0 || i >= ANGLES - 1)
-                continue;
-            double t = f - i, yv = (1 - t) * lobe->y[i] + t * lobe->y[i + 1];
-            double r = ymax > 0 ? radius * yv / ymax : 0.0;
-            double rr = d / radius * 4.0;
-            if (fabs(rr - lround(rr)) * radius / 4.0 < 0.6 && lround(rr) >= 1 && lround(rr) <= 4)
-                put(&img, x, y, ring);
-            if (d <= r) {
-                const float *c = lobe->rgb[t < 0.5 ? i : i + 1];
-                float shade[3] = {0.85f * c[0], 0.85f * c[1], 0.85f * c[2]};
-                put(&img, x, y, shade);
-            }
-        }
-    static const float surface[3] = {0.5f, 0.5f, 0.5f}, white[3] = {1, 1, 1};
-    line(&img, cx - radius * 1.05, cy, cx + radius * 1.05, cy, surface);
-    line(&img, cx, cy, cx + in.x * radius, cy - in.z * radius, white);
     GVec3 dir;
-    int spec = gmat_specular(ctx, in, &dir);
-    if (spec == 1) {
-        float c[3], y;
-        display(&ctx->result, c, &y);
-        line(&img, cx, cy, cx + dir.x * radius * fmin(1.0, y), cy - dir.z * radius * fmin(1.0, y), c);
+    float spec_rgb[3] = {0, 0, 0};
+    double spec_y = 0.0, spec_angle = 0.0;
+    int spec = gmat_specular(ctx, in, &dir) == 1;
+    if (spec) {
+        display(&ctx->result, spec_rgb, &spec_y);
+        spec_angle = atan2(dir.x, dir.z) * 180.0 / M_PI;
     }
-    rc = gimage_write(path, &img, NULL, err);
+    const char *base = getenv("TMPDIR");
+    char dirbuf[4096], png[4200];
+    snprintf(dirbuf, sizeof dirbuf, "%s/gmat_plot_XXXXXX", base && *base ? base : "/tmp");
+    if (!mkdtemp(dirbuf)) {
+        gmem_free(lobe);
+        return gerror_set(err, G_ERR_IO, "cannot make a temporary directory for gnuplot: %s", strerror(errno));
+    }
+    snprintf(png, sizeof png, "%s/plot.png", dirbuf);
+    FILE *g = popen("gnuplot", "w");
+    if (!g) {
+        rmdir(dirbuf);
+        gmem_free(lobe);
+        return gerror_set(err, G_ERR_IO, "cannot run gnuplot: %s", strerror(errno));
+    }
+    write_script(g, png, o, ctx, theta_in, lobe, ymax, spec, spec_angle, spec_y, spec_rgb);
+    int st = pclose(g);
+    GImage img = {0};
+    rc = G_OK;
+    if (st == -1 || !WIFEXITED(st) || WEXITSTATUS(st) != 0)
+        rc = gerror_set(err, G_ERR_IO, "gnuplot failed to draw the plot");
+    else if (gimage_read(png, GIMAGE_READ_RGB, &img, err) != G_OK)
+        rc = gerror_set(err, G_ERR_IO, "gnuplot's picture is not readable: %s", err ? err->message : "");
+    unlink(png);
+    rmdir(dirbuf);
+    if (rc == G_OK)
+        rc = gimage_write(path, &img, NULL, err);
+    if (rc == G_OK && o->data)
+        rc = write_data_file(o->data, ctx, theta_in, lobe, err);
+    if (rc == G_OK)
+        printf("wrote %s: %dx%d, lobe maximum %.6g (reflected luminance for unit white light), %s radius, specular "
+               "%s\n", path, img.width, img.height, ymax, o->log_radius ? "logarithmic" : "linear",
+               spec ? "ray drawn" : "none");
     gimage_free(&img);
     gmem_free(lobe);
-    if (rc == G_OK)
-        printf("wrote %s: %dx%d, lobe maximum %.6g (reflected luminance for unit white light), specular %s\n", path,
-               size, size * 3 / 4, ymax, spec == 1 ? "ray drawn" : "none");
     return rc;
 }

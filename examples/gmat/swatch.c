@@ -11,6 +11,7 @@
  * it. Emission is added as it is. Each pixel averages samples x samples stratified points whose footprints are
  * the sample spacing, so textures filter themselves over the footprint and shapes get smooth edges. */
 #include "gmat.h"
+#include "../common/cli.h"
 
 #include <generic/image.h>
 
@@ -41,7 +42,10 @@ static void swatch_usage(FILE *f)
                "  --colormodel NAME   compute in this model instead of the file's (or one a module registers);\n"
                "                      --step NM its spacing\n"
                "  --plugin FILE.so    load a module first (repeatable)\n"
-            "  --allow-plugins     let `plugin` statements of FILE load modules; --confine DIR: files under DIR only\n");
+            "  --allow-plugins     let `plugin` statements of FILE load modules; --confine DIR: files under DIR only\n"
+            "  -h, --help          this text\n"
+            "  --version           the version\n"
+            CLI_EXIT_STATUS_HELP);
 }
 
 /* Light reaching the point's viewer (+z) from the swatch's lights, added into s->sum. */
@@ -150,39 +154,62 @@ int gmat_swatch(int argc, char **argv, const GReaderOptions *base)
     const char *file = NULL, *name = NULL, *output = NULL, *colormodel = NULL;
     double size = 256, samples = 2, step = 0;
     int sphere = 0;
-    for (int i = 2; i < argc; i++) {
-        const char *o = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (strcmp(o, "--help") == 0 || strcmp(o, "-h") == 0) {
+    enum { OPT_SPHERE = CLI_FIRST_OWN, OPT_COLORMODEL, OPT_SIZE, OPT_SAMPLES, OPT_STEP };
+    static const struct option longopts[] = {
+        CLI_COMMON_OPTIONS,
+        {"sphere", no_argument, NULL, OPT_SPHERE},
+        {"output", required_argument, NULL, 'o'},
+        {"colormodel", required_argument, NULL, OPT_COLORMODEL},
+        {"size", required_argument, NULL, OPT_SIZE},
+        {"samples", required_argument, NULL, OPT_SAMPLES},
+        {"step", required_argument, NULL, OPT_STEP},
+        {NULL, 0, NULL, 0},
+    };
+    CliParser p;
+    cli_begin(&p, "gmat swatch", argc - 1, argv + 1, "ho:", longopts);
+    int c;
+    while ((c = cli_next(&p)) != -1) {
+        const char *v = optarg;
+        double n;
+        switch (c) {
+        case 'h':
             swatch_usage(stdout);
-            return 0;
-        } else if (strcmp(o, "--sphere") == 0) {
+            return CLI_OK;
+        case CLI_VERSION:
+            return cli_version("gmat");
+        case OPT_SPHERE:
             sphere = 1;
-        } else if (o[0] == '-' && o[1] && !v) {
-            return gmat_usage_error("swatch", "option %s needs a value", o);
-        } else if (strcmp(o, "-o") == 0 || strcmp(o, "--output") == 0) {
-            output = argv[++i];
-        } else if (strcmp(o, "--colormodel") == 0) {
-            colormodel = argv[++i];
-        } else if (strcmp(o, "--size") == 0 || strcmp(o, "--samples") == 0 || strcmp(o, "--step") == 0) {
-            int is_size = o[3] == 'i', is_samples = o[3] == 'a';
-            double n, lo = is_size ? 16 : is_samples ? 1 : 0.1, hi = is_size ? 4096 : is_samples ? 8 : 400;
-            if (gmat_number(v, lo, hi, &n) || ((is_size || is_samples) && n != floor(n)))
-                return gmat_usage_error("swatch", is_size ? "--size: '%s' is not a whole number in 16..4096"
-                           : is_samples ? "--samples: '%s' is not a whole number in 1..8"
-                                        : "--step: '%s' is not a spacing in nm (0.1..400)",
-                           v);
-            *(is_size ? &size : is_samples ? &samples : &step) = n;
-            i++;
-        } else if (o[0] == '-' && o[1]) {
-            return gmat_usage_error("swatch", "unknown option %s", o);
-        } else if (!file) {
-            file = o;
-        } else if (!name) {
-            name = o;
-        } else {
-            return gmat_usage_error("swatch", "unexpected argument '%s'", o);
+            break;
+        case 'o':
+            output = v;
+            break;
+        case OPT_COLORMODEL:
+            colormodel = v;
+            break;
+        case OPT_SIZE:
+            if (gmat_number(v, 16, 4096, &n) || n != floor(n))
+                return gmat_usage_error("swatch", "--size: '%s' is not a whole number in 16..4096", v);
+            size = n;
+            break;
+        case OPT_SAMPLES:
+            if (gmat_number(v, 1, 8, &n) || n != floor(n))
+                return gmat_usage_error("swatch", "--samples: '%s' is not a whole number in 1..8", v);
+            samples = n;
+            break;
+        case OPT_STEP:
+            if (gmat_number(v, 0.1, 400, &step))
+                return gmat_usage_error("swatch", "--step: '%s' is not a spacing in nm (0.1..400)", v);
+            break;
+        default:
+            return CLI_USAGE;
         }
     }
+    int nrest;
+    char **rest = cli_operands(&p, &nrest);
+    if (nrest > 2)
+        return gmat_usage_error("swatch", "unexpected argument '%s'", rest[2]);
+    file = nrest > 0 ? rest[0] : NULL;
+    name = nrest > 1 ? rest[1] : NULL;
     if (!file || !name)
         return gmat_usage_error("swatch", "%s", "needs FILE and MATERIAL");
     if (!output)

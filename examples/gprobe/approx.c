@@ -17,47 +17,56 @@ static void approx_usage(FILE *f)
             "Rec.709 RGB as the probe's pixels). Lights that carry no energy are left out. The file's\n"
             "header states the technique and the irradiance error of the lights.\n"
             "%s"
-            "  --technique T     mediancut (N a power of two), adaptive, kmeans or irradiance\n"
+            "  --technique T     mediancut (N a power of two), adaptive, kmeans, irradiance or variance\n"
+            "                    (the bases of gprobe eval are not lights: see gprobe report)\n"
             "  -n N              number of lights (1..4096)\n"
             "  -o FILE           output text file (written whole or not at all)\n"
-            "  --fit-normals N   normals the irradiance optimisation fits (default 2000)\n"
-            "  -h, --help        this text\n",
+            "  --fit-normals N   normals the irradiance optimisation fits (default 2000)\n" CLI_EXIT_STATUS_HELP,
             probe_args_help);
 }
 
 int cmd_approx(int argc, char **argv)
 {
     ProbeArgs pa = {0};
-    const char *out = NULL, *tech = NULL, *v;
+    const char *out = NULL, *tech = NULL;
     int n = 0, fit = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        int r = probe_args_parse(&pa, argc, argv, &i);
+    enum { OPT_FIT = PROBE_OPT_OWN };
+    static const struct option longopts[] = {
+        CLI_COMMON_OPTIONS, PROBE_ARGS_OPTIONS,
+        {"technique", required_argument, NULL, 't'}, {"lights", required_argument, NULL, 'n'},
+        {"output", required_argument, NULL, 'o'}, {"fit-normals", required_argument, NULL, OPT_FIT},
+        {NULL, 0, NULL, 0},
+    };
+    CliParser cp;
+    cli_begin(&cp, "gprobe approx", argc, argv, "hqt:n:o:", longopts);
+    int c;
+    while ((c = cli_next(&cp)) != -1) {
+        int r = probe_args_option(&pa, c, optarg);
         if (r < 0)
-            return 2;
+            return CLI_USAGE;
         if (r > 0)
             continue;
-        if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
+        if (c == 'h') {
             approx_usage(stdout);
-            return 0;
-        }
-        if (!(v = option_value(argc, argv, &i)))
-            return 2;
-        if (strcmp(a, "--technique") == 0 || strcmp(a, "-t") == 0)
-            tech = v;
-        else if (strcmp(a, "-n") == 0 || strcmp(a, "--lights") == 0) {
-            if (parse_int(a, v, 1, 4096, &n) != 0)
-                return 2;
-        } else if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0)
-            out = v;
-        else if (strcmp(a, "--fit-normals") == 0) {
-            if (parse_int(a, v, 2, 1000000, &fit) != 0)
-                return 2;
+            return CLI_OK;
+        } else if (c == CLI_VERSION) {
+            return cli_version("gprobe");
+        } else if (c == 't') {
+            tech = optarg;
+        } else if (c == 'n') {
+            if (parse_int("-n", optarg, 1, 4096, &n) != 0)
+                return CLI_USAGE;
+        } else if (c == 'o') {
+            out = optarg;
+        } else if (c == OPT_FIT) {
+            if (parse_int("--fit-normals", optarg, 2, 1000000, &fit) != 0)
+                return CLI_USAGE;
         } else {
-            fprintf(stderr, "gprobe approx: unknown option '%s' (gprobe approx --help lists them)\n", a);
-            return 2;
+            return CLI_USAGE;
         }
     }
+    if (no_operands(&cp))
+        return CLI_USAGE;
     if (!tech || n <= 0 || !out) {
         fprintf(stderr, "gprobe approx: --technique, -n and -o are required (gprobe approx --help)\n");
         return 2;
@@ -156,31 +165,37 @@ int cmd_irradiance(int argc, char **argv)
     ProbeArgs pa = {0};
     double n[3];
     int have = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v;
-        int r = probe_args_parse(&pa, argc, argv, &i);
+    enum { OPT_NORMAL = PROBE_OPT_OWN };
+    static const struct option longopts[] = {
+        CLI_COMMON_OPTIONS, PROBE_ARGS_OPTIONS, {"normal", required_argument, NULL, OPT_NORMAL}, {NULL, 0, NULL, 0}};
+    CliParser cp;
+    cli_begin(&cp, "gprobe irradiance", argc, argv, "hq", longopts);
+    int c;
+    while ((c = cli_next(&cp)) != -1) {
+        int r = probe_args_option(&pa, c, optarg);
         if (r < 0)
-            return 2;
+            return CLI_USAGE;
         if (r > 0)
             continue;
-        if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
+        if (c == 'h') {
             printf("usage: gprobe irradiance --probe FILE --normal X,Y,Z\n"
                    "Prints the ground-truth irradiance R G B (every pixel of the probe summed, the paper's Eq. 4)\n"
                    "on a surface with the given normal (normalised; z is up).\n%s"
-                   "  --normal X,Y,Z    the surface normal\n"
-                   "  -h, --help        this text\n",
+                   "  --normal X,Y,Z    the surface normal\n" CLI_EXIT_STATUS_HELP,
                    probe_args_help);
-            return 0;
-        }
-        if (strcmp(a, "--normal") == 0) {
-            if (!(v = option_value(argc, argv, &i)) || parse_vec3(a, v, n) != 0)
-                return 2;
+            return CLI_OK;
+        } else if (c == CLI_VERSION) {
+            return cli_version("gprobe");
+        } else if (c == OPT_NORMAL) {
+            if (parse_vec3("--normal", optarg, n) != 0)
+                return CLI_USAGE;
             have = 1;
         } else {
-            fprintf(stderr, "gprobe irradiance: unknown option '%s' (gprobe irradiance --help lists them)\n", a);
-            return 2;
+            return CLI_USAGE;
         }
     }
+    if (no_operands(&cp))
+        return CLI_USAGE;
     if (!have) {
         fprintf(stderr, "gprobe irradiance: --normal X,Y,Z is required\n");
         return 2;
@@ -211,45 +226,50 @@ int cmd_convert(int argc, char **argv)
     const char *out = NULL;
     GProbeFormat to = GPROBE_LATLONG;
     int size = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v;
-        int r = probe_args_parse(&pa, argc, argv, &i);
+    enum { OPT_TO = PROBE_OPT_OWN, OPT_SIZE };
+    static const struct option longopts[] = {
+        CLI_COMMON_OPTIONS, PROBE_ARGS_OPTIONS, {"output", required_argument, NULL, 'o'},
+        {"to", required_argument, NULL, OPT_TO}, {"size", required_argument, NULL, OPT_SIZE}, {NULL, 0, NULL, 0}};
+    CliParser cp;
+    cli_begin(&cp, "gprobe convert", argc, argv, "hqo:", longopts);
+    int c;
+    while ((c = cli_next(&cp)) != -1) {
+        int r = probe_args_option(&pa, c, optarg);
         if (r < 0)
-            return 2;
+            return CLI_USAGE;
         if (r > 0)
             continue;
-        if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
+        if (c == 'h') {
             printf("usage: gprobe convert --probe FILE [--to latlong|angular] [--size N] -o OUT\n"
                    "Writes the probe (after --rotate) as a latitude-longitude image or an angular map; the output's\n"
                    "extension picks the format (.exr/.hdr linear float; .png/.jpg sRGB encoded, clamped).\n%s"
                    "  --to F            latlong (default) or angular\n"
                    "  --size N          angular map size in pixels (default: the probe's height)\n"
-                   "  -o OUT            output image\n"
-                   "  -h, --help        this text\n",
+                   "  -o OUT            output image\n" CLI_EXIT_STATUS_HELP,
                    probe_args_help);
-            return 0;
-        }
-        if (!(v = option_value(argc, argv, &i)))
-            return 2;
-        if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0)
-            out = v;
-        else if (strcmp(a, "--to") == 0) {
-            if (strcmp(v, "latlong") == 0)
+            return CLI_OK;
+        } else if (c == CLI_VERSION) {
+            return cli_version("gprobe");
+        } else if (c == 'o') {
+            out = optarg;
+        } else if (c == OPT_TO) {
+            if (strcmp(optarg, "latlong") == 0)
                 to = GPROBE_LATLONG;
-            else if (strcmp(v, "angular") == 0)
+            else if (strcmp(optarg, "angular") == 0)
                 to = GPROBE_ANGULAR;
             else {
-                fprintf(stderr, "gprobe convert: --to expects latlong or angular, got '%s'\n", v);
-                return 2;
+                fprintf(stderr, "gprobe convert: --to expects latlong or angular, got '%s'\n", optarg);
+                return CLI_USAGE;
             }
-        } else if (strcmp(a, "--size") == 0) {
-            if (parse_int(a, v, 2, 32768, &size) != 0)
-                return 2;
+        } else if (c == OPT_SIZE) {
+            if (parse_int("--size", optarg, 2, 32768, &size) != 0)
+                return CLI_USAGE;
         } else {
-            fprintf(stderr, "gprobe convert: unknown option '%s' (gprobe convert --help lists them)\n", a);
-            return 2;
+            return CLI_USAGE;
         }
     }
+    if (no_operands(&cp))
+        return CLI_USAGE;
     if (!out) {
         fprintf(stderr, "gprobe convert: -o OUT is required\n");
         return 2;

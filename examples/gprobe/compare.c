@@ -34,7 +34,8 @@ static void compare_usage(FILE *f)
                "  --unshadowed IMG   shadow pixels: where the reference's luminance is below (1 - T) times IMG's\n"
                "  --threshold T      the share of blocked light that makes a shadow (default 0.1)\n"
                "  --write-mask OUT   write the shadow mask (white in the shadows) as an image\n"
-               "  -h, --help         this text\n");
+               "  -h, --help         this text\n"
+               "  --version          the version\n" CLI_EXIT_STATUS_HELP);
 }
 
 static double luminance(const float *p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
@@ -87,43 +88,49 @@ static void report(const char *what, long n, double e, double mean)
 
 int cmd_compare(int argc, char **argv)
 {
-    const char *files[2] = {NULL, NULL}, *mask_path = NULL, *unshadowed = NULL, *write_mask = NULL, *v;
+    const char *files[2] = {NULL, NULL}, *mask_path = NULL, *unshadowed = NULL, *write_mask = NULL;
     double threshold = 0.1;
     int nfiles = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
+    enum { OPT_MASK = CLI_FIRST_OWN, OPT_UNSHADOWED, OPT_WRITE_MASK, OPT_THRESHOLD };
+    static const struct option longopts[] = {
+        CLI_COMMON_OPTIONS, {"mask", required_argument, NULL, OPT_MASK},
+        {"unshadowed", required_argument, NULL, OPT_UNSHADOWED}, {"write-mask", required_argument, NULL, OPT_WRITE_MASK},
+        {"threshold", required_argument, NULL, OPT_THRESHOLD}, {NULL, 0, NULL, 0},
+    };
+    CliParser cp;
+    cli_begin(&cp, "gprobe compare", argc, argv, "h", longopts);
+    int c;
+    while ((c = cli_next(&cp)) != -1) {
+        const char *v = optarg;
+        if (c == 'h') {
             compare_usage(stdout);
-            return 0;
-        }
-        if (a[0] != '-' || !a[1]) {
-            if (nfiles == 2) {
-                fprintf(stderr, "gprobe compare: more than two images given ('%s')\n", a);
-                return 2;
-            }
-            files[nfiles++] = a;
-            continue;
-        }
-        if (!(v = option_value(argc, argv, &i)))
-            return 2;
-        if (strcmp(a, "--mask") == 0)
+            return CLI_OK;
+        } else if (c == CLI_VERSION) {
+            return cli_version("gprobe");
+        } else if (c == OPT_MASK) {
             mask_path = v;
-        else if (strcmp(a, "--unshadowed") == 0)
+        } else if (c == OPT_UNSHADOWED) {
             unshadowed = v;
-        else if (strcmp(a, "--write-mask") == 0)
+        } else if (c == OPT_WRITE_MASK) {
             write_mask = v;
-        else if (strcmp(a, "--threshold") == 0) {
+        } else if (c == OPT_THRESHOLD) {
             char *end;
             threshold = strtod(v, &end);
             if (end == v || *end || !(threshold > 0.0 && threshold < 1.0)) {
                 fprintf(stderr, "gprobe compare: --threshold expects a number in (0, 1), got '%s'\n", v);
-                return 2;
+                return CLI_USAGE;
             }
         } else {
-            fprintf(stderr, "gprobe compare: unknown option '%s' (gprobe compare --help lists them)\n", a);
-            return 2;
+            return CLI_USAGE;
         }
     }
+    char **rest = cli_operands(&cp, &nfiles);
+    if (nfiles > 2) {
+        fprintf(stderr, "gprobe compare: more than two images given ('%s')\n", rest[2]);
+        return CLI_USAGE;
+    }
+    for (int i = 0; i < nfiles; i++)
+        files[i] = rest[i];
     if (nfiles != 2) {
         fprintf(stderr, "gprobe compare: give an image and its reference (gprobe compare --help)\n");
         return 2;

@@ -12,35 +12,28 @@ static void usage(FILE *f)
     fprintf(f,
             "usage: gprobe eval --probe FILE [--normals M] [--counts LIST] [--techniques LIST]\n"
             "                   [--fit-normals N] [--csv OUT.csv] [--plot OUT.png] [--title TEXT]\n"
-            "Approximates the probe with each technique and light count and compares the irradiance of the\n"
-            "lights with the ground truth (every pixel summed, Eq. 4) at M normals spread evenly over the\n"
-            "sphere. Errors in percent: for each channel the mean and the max over the normals of\n"
+            "Approximates the probe with each technique and size and compares the irradiance of the\n"
+            "approximation with the ground truth (every pixel summed, Eq. 4) at M normals spread evenly over\n"
+            "the sphere. Errors in percent: for each channel the mean and the max over the normals of\n"
             "|E' - E| / E (the paper's measure) and of |E' - E| / max E (normalised by the largest\n"
-            "irradiance), averaged over R, G, B. Prints a table; --csv and --plot write it and its Fig. 6.\n"
+            "irradiance), and sMAPE, 100 mean 2 |E' - E| / (|E'| + |E|), averaged over R, G, B. Prints a\n"
+            "table; --csv and --plot write it and its Fig. 6.\n"
             "%s"
             "  --normals M       normals for the evaluation (default 20000)\n"
-            "  --counts LIST     light counts, comma separated (default 2,4,8,16,32,64,128; median cut\n"
-            "                    skips counts that are not powers of two)\n"
-            "  --techniques LIST comma separated from mediancut, adaptive, kmeans, irradiance, sh9\n"
-            "                    (default: all; sh9 is the 9-coefficient reference, drawn as a line)\n"
+            "  --counts LIST     light and lobe counts, comma separated (default 2,4,8,16,32,64,128; median\n"
+            "                    cut skips counts that are not powers of two). SH is always tried at 4, 9, 16\n"
+            "                    and 25 coefficients (orders 1..4), the ambient cube at its 6\n"
+            "  --techniques LIST comma separated from %s\n"
+            "                    (default: all but sh9, the 9-coefficient reference drawn as a line)\n"
             "  --fit-normals N   normals the irradiance optimisation fits (default 2000)\n"
-            "  --csv OUT.csv     technique,count,mean_rel,max_rel,mean_norm,max_norm,seconds\n"
-            "  --plot OUT.png    error against the number of lights, drawn with gnuplot (pngcairo)\n"
-            "  --title TEXT      plot title (default: the probe's file name)\n"
-            "  -h, --help        this text\n",
-            probe_args_help);
+            "  --csv OUT.csv     technique,count,unit,mean_rel,max_rel,mean_norm,max_norm,smape,seconds\n"
+            "                    (unit: what count counts, lights, coefficients or lobes)\n"
+            "  --plot OUT.png    error against N, drawn with gnuplot (pngcairo)\n"
+            "  --title TEXT      plot title (default: the probe's file name)\n" CLI_EXIT_STATUS_HELP,
+            probe_args_help, methods_names);
 }
 
-enum { SH9 = GPROBE_TECHNIQUE_COUNT, NTECH };
-static const char *tech_name(int t) { return t == SH9 ? "sh9" : gprobe_technique_name((GProbeTechnique)t); }
-
-typedef struct Row {
-    int tech, count;
-    GProbeErrors e;
-    double seconds;
-} Row;
-
-static int parse_list_counts(const char *s, int *counts, int max)
+int parse_count_list(const char *s, int *counts, int max)
 {
     int n = 0;
     char buf[512];
@@ -59,20 +52,22 @@ static int parse_list_counts(const char *s, int *counts, int max)
     return n > 0 ? n : -1;
 }
 
-static int parse_list_techniques(const char *s, int *use)
+void methods_default(int *use)
+{
+    for (int k = 0; k < method_count(); k++)
+        use[k] = !method_is_sh9(k);
+}
+
+int parse_method_list(const char *s, int *use)
 {
     char buf[512];
     snprintf(buf, sizeof buf, "%s", s);
-    memset(use, 0, sizeof(int) * NTECH);
+    memset(use, 0, sizeof(int) * method_count());
     int any = 0;
     for (char *save = NULL, *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
-        int t = -1;
-        for (int k = 0; k < NTECH; k++)
-            if (strcmp(tok, tech_name(k)) == 0)
-                t = k;
+        int t = method_find(tok);
         if (t < 0) {
-            fprintf(stderr, "gprobe: unknown technique '%s' (expected mediancut, adaptive, kmeans, irradiance or sh9)\n",
-                    tok);
+            fprintf(stderr, "gprobe: unknown technique '%s' (expected %s)\n", tok, methods_names);
             return -1;
         }
         use[t] = any = 1;
@@ -82,60 +77,107 @@ static int parse_list_techniques(const char *s, int *use)
     return any ? 0 : -1;
 }
 
-static void put_csv(FILE *f, const Row *rows, int n)
+void rows_csv(FILE *f, const Row *rows, int n)
 {
-    fprintf(f, "technique,count,mean_rel,max_rel,mean_norm,max_norm,seconds\n");
-    for (int i = 0; i < n; i++)
-        fprintf(f, "%s,%d,%.6g,%.6g,%.6g,%.6g,%.6g\n", tech_name(rows[i].tech), rows[i].count, rows[i].e.mean_rel,
-                rows[i].e.max_rel, rows[i].e.mean_norm, rows[i].e.max_norm, rows[i].seconds);
+    fprintf(f, "technique,count,unit,mean_rel,max_rel,mean_norm,max_norm,smape,seconds\n");
+    for (int i = 0; i < n; i++) {
+        const Method *m = method_get(rows[i].method);
+        fprintf(f, "%s,%d,%s,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n", m->name, rows[i].count, m->unit, rows[i].e.mean_rel,
+                rows[i].e.max_rel, rows[i].e.mean_norm, rows[i].e.max_norm, rows[i].e.smape, rows[i].seconds);
+    }
 }
 
-/* 0 when the directory of path can take a new file (checked before the long work starts). */
+int eval_one(const GProbe *p, int method, int n, const GProbeOptions *opt, const GVec3 *normals, int m,
+             const double *truth, double *approx, Row *row, Approx *keep, int quiet)
+{
+    GError err;
+    GProbeFitReport rep;
+    Approx a;
+    double s = now_seconds();
+    if (approx_make(p, method, n, opt, &a, &rep, &err) != G_OK) {
+        fprintf(stderr, "\ngprobe: %s N=%d: %s\n", method_get(method)->name, n, err.message);
+        return -1;
+    }
+    row->seconds = now_seconds() - s;
+    row->method = method;
+    row->count = n;
+    approx_irradiance(&a, normals, m, approx);
+    gprobe_compare(truth, approx, m, &row->e);
+    if (!quiet) {
+        const Method *me = method_get(method);
+        fprintf(stderr, "\r  %-12s N=%-4d mean %7.3f%%  max %8.3f%%  %7.3f s", me->name, n, row->e.mean_rel,
+                row->e.max_rel, row->seconds);
+        if (me->light == GPROBE_IRRADIANCE) {
+            fprintf(stderr, "  (objective %.4g -> %.4g, %d iterations%s", rep.initial, rep.final, rep.iterations,
+                    rep.converged ? "" : ", iteration limit");
+            if (rep.revived)
+                fprintf(stderr, ", %d unused lights moved", rep.revived);
+            fputc(')', stderr);
+        }
+        fputc('\n', stderr);
+    }
+    if (keep)
+        *keep = a;
+    else
+        approx_free(&a);
+    return 0;
+}
+
 int cmd_eval(int argc, char **argv)
 {
     ProbeArgs pa = {0};
-    int m = 20000, fit = 0, counts[64], ncounts = 7, use[NTECH];
+    int m = 20000, fit = 0, counts[64], ncounts = 7, use[64];
     const int defaults[7] = {2, 4, 8, 16, 32, 64, 128};
     memcpy(counts, defaults, sizeof defaults);
-    for (int k = 0; k < NTECH; k++)
-        use[k] = 1;
-    const char *csv = NULL, *png = NULL, *title = NULL, *v;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        int r = probe_args_parse(&pa, argc, argv, &i);
+    methods_default(use);
+    const char *csv = NULL, *png = NULL, *title = NULL;
+    enum { OPT_NORMALS = PROBE_OPT_OWN, OPT_FIT, OPT_COUNTS, OPT_TECHNIQUES, OPT_CSV, OPT_PLOT, OPT_TITLE };
+    static const struct option longopts[] = {
+        CLI_COMMON_OPTIONS, PROBE_ARGS_OPTIONS,
+        {"normals", required_argument, NULL, OPT_NORMALS}, {"fit-normals", required_argument, NULL, OPT_FIT},
+        {"counts", required_argument, NULL, OPT_COUNTS}, {"techniques", required_argument, NULL, OPT_TECHNIQUES},
+        {"csv", required_argument, NULL, OPT_CSV}, {"plot", required_argument, NULL, OPT_PLOT},
+        {"title", required_argument, NULL, OPT_TITLE}, {NULL, 0, NULL, 0},
+    };
+    CliParser cp;
+    cli_begin(&cp, "gprobe eval", argc, argv, "hq", longopts);
+    int c;
+    while ((c = cli_next(&cp)) != -1) {
+        const char *v = optarg;
+        int r = probe_args_option(&pa, c, v);
         if (r < 0)
-            return 2;
+            return CLI_USAGE;
         if (r > 0)
             continue;
-        if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
+        if (c == 'h') {
             usage(stdout);
-            return 0;
-        }
-        if (!(v = option_value(argc, argv, &i)))
-            return 2;
-        if (strcmp(a, "--normals") == 0) {
-            if (parse_int(a, v, 1, 10000000, &m) != 0)
-                return 2;
-        } else if (strcmp(a, "--fit-normals") == 0) {
-            if (parse_int(a, v, 2, 1000000, &fit) != 0)
-                return 2;
-        } else if (strcmp(a, "--counts") == 0) {
-            if ((ncounts = parse_list_counts(v, counts, 64)) < 0)
-                return 2;
-        } else if (strcmp(a, "--techniques") == 0) {
-            if (parse_list_techniques(v, use) != 0)
-                return 2;
-        } else if (strcmp(a, "--csv") == 0) {
+            return CLI_OK;
+        } else if (c == CLI_VERSION) {
+            return cli_version("gprobe");
+        } else if (c == OPT_NORMALS) {
+            if (parse_int("--normals", v, 1, 10000000, &m) != 0)
+                return CLI_USAGE;
+        } else if (c == OPT_FIT) {
+            if (parse_int("--fit-normals", v, 2, 1000000, &fit) != 0)
+                return CLI_USAGE;
+        } else if (c == OPT_COUNTS) {
+            if ((ncounts = parse_count_list(v, counts, 64)) < 0)
+                return CLI_USAGE;
+        } else if (c == OPT_TECHNIQUES) {
+            if (parse_method_list(v, use) != 0)
+                return CLI_USAGE;
+        } else if (c == OPT_CSV) {
             csv = v;
-        } else if (strcmp(a, "--plot") == 0) {
+        } else if (c == OPT_PLOT) {
             png = v;
-        } else if (strcmp(a, "--title") == 0) {
+        } else if (c == OPT_TITLE) {
             title = v;
         } else {
-            fprintf(stderr, "gprobe eval: unknown option '%s' (gprobe eval --help lists them)\n", a);
-            return 2;
+            return CLI_USAGE;
         }
     }
+    if (no_operands(&cp))
+        return CLI_USAGE;
     if ((png && plot_check_gnuplot() != 0) || output_check(png, 1) != 0 || output_check(csv, 0) != 0)
         return 1;
     TextOut csv_out = {0};
@@ -150,13 +192,9 @@ int cmd_eval(int argc, char **argv)
 
     GVec3 *normals = gmem_calloc((size_t)m, sizeof *normals);
     double *truth = gmem_calloc((size_t)m * 3, sizeof(double)), *approx = gmem_calloc((size_t)m * 3, sizeof(double));
-    Row *rows = gmem_calloc((size_t)NTECH * ncounts, sizeof *rows);
-    GProbeLight *lights = NULL;
-    int maxn = 1, nrows = 0, status = 1;
-    for (int c = 0; c < ncounts; c++)
-        maxn = counts[c] > maxn ? counts[c] : maxn;
-    lights = gmem_calloc((size_t)maxn, sizeof *lights);
-    if (!normals || !truth || !approx || !rows || !lights) {
+    Row *rows = gmem_calloc((size_t)method_count() * (ncounts + GPROBE_SH_MAX_ORDER), sizeof *rows);
+    int nrows = 0, status = 1;
+    if (!normals || !truth || !approx || !rows) {
         fprintf(stderr, "gprobe: out of memory for %d normals\n", m);
         goto done;
     }
@@ -176,71 +214,25 @@ int cmd_eval(int argc, char **argv)
     if (!pa.quiet) {
         opt.progress = progress_print;
     }
-    for (int t = 0; t < NTECH; t++) {
+    for (int t = 0; t < method_count(); t++) {
         if (!use[t])
             continue;
-        if (t == SH9) {
-            double s = now_seconds();
-            GProbeSH9 sh;
-            gprobe_sh9_project(p, &sh);
-            double dt = now_seconds() - s;
-            gprobe_sh9_irradiance(&sh, normals, m, approx);
-            Row *r = &rows[nrows++];
-            r->tech = t;
-            r->count = 9;
-            r->seconds = dt;
-            gprobe_compare(truth, approx, m, &r->e);
-            continue;
-        }
-        for (int c = 0; c < ncounts; c++) {
-            int n = counts[c];
-            if (t == GPROBE_MEDIANCUT && (n & (n - 1)) != 0) {
-                if (!pa.quiet)
-                    fprintf(stderr, "  mediancut    N=%-4d skipped (median cut makes powers of two)\n", n);
-                continue;
-            }
-            if (t == GPROBE_IRRADIANCE && 2 * n > (fit > 0 ? fit : 2000)) {
-                fprintf(stderr, "  irradiance   N=%-4d skipped (needs at least %d fit normals: --fit-normals)\n", n, 2 * n);
-                continue;
-            }
-            GProbeFitReport rep;
-            double s = now_seconds();
-            int rc = t == GPROBE_IRRADIANCE ? gprobe_irradiance_fit(p, n, &opt, lights, &rep, &err)
-                                            : gprobe_approximate(p, (GProbeTechnique)t, n, &opt, lights, &err);
-            double dt = now_seconds() - s;
-            if (rc != G_OK) {
-                fprintf(stderr, "\ngprobe: %s N=%d: %s\n", tech_name(t), n, err.message);
+        int sizes[64 + GPROBE_SH_MAX_ORDER];
+        int ns = method_sizes(t, counts, ncounts, fit, sizes, pa.quiet);
+        for (int c = 0; c < ns; c++)
+            if (eval_one(p, t, sizes[c], &opt, normals, m, truth, approx, &rows[nrows++], NULL, pa.quiet) != 0)
                 goto done;
-            }
-            gprobe_lights_irradiance(lights, n, normals, m, approx);
-            Row *r = &rows[nrows++];
-            r->tech = t;
-            r->count = n;
-            r->seconds = dt;
-            gprobe_compare(truth, approx, m, &r->e);
-            if (!pa.quiet) {
-                fprintf(stderr, "\r  %-12s N=%-4d mean %7.3f%%  max %8.3f%%  %7.3f s", tech_name(t), n, r->e.mean_rel,
-                        r->e.max_rel, dt);
-                if (t == GPROBE_IRRADIANCE)
-                    fprintf(stderr, "  (objective %.4g -> %.4g, %d iterations%s", rep.initial, rep.final, rep.iterations,
-                            rep.converged ? "" : ", iteration limit");
-                if (t == GPROBE_IRRADIANCE && rep.revived)
-                    fprintf(stderr, ", %d unused lights moved", rep.revived);
-                if (t == GPROBE_IRRADIANCE)
-                    fputc(')', stderr);
-                fputc('\n', stderr);
-            }
-        }
     }
 
-    printf("%-11s %6s %10s %10s %10s %10s %9s\n", "technique", "lights", "mean_rel%", "max_rel%", "mean_norm%",
-           "max_norm%", "seconds");
+    printf("%-11s %5s %-12s %10s %10s %10s %10s %8s %9s\n", "technique", "N", "unit", "mean_rel%", "max_rel%",
+           "mean_norm%", "max_norm%", "smape%", "seconds");
     for (int i = 0; i < nrows; i++)
-        printf("%-11s %6d %10.3f %10.3f %10.4f %10.4f %9.3f\n", tech_name(rows[i].tech), rows[i].count,
-               rows[i].e.mean_rel, rows[i].e.max_rel, rows[i].e.mean_norm, rows[i].e.max_norm, rows[i].seconds);
+        printf("%-11s %5d %-12s %10.3f %10.3f %10.4f %10.4f %8.3f %9.3f\n", method_get(rows[i].method)->name,
+               rows[i].count, method_get(rows[i].method)->unit, rows[i].e.mean_rel, rows[i].e.max_rel,
+               rows[i].e.mean_norm, rows[i].e.max_norm, rows[i].e.smape, rows[i].seconds);
     status = 0;
     if (csv) {
-        put_csv(csv_out.f, rows, nrows);
+        rows_csv(csv_out.f, rows, nrows);
         csv = NULL; /* closed here */
         if (text_close(&csv_out, 1) != 0)
             status = 1;
@@ -259,7 +251,7 @@ int cmd_eval(int argc, char **argv)
                 close(fd);
             status = 1;
         } else {
-            put_csv(f, rows, nrows);
+            rows_csv(f, rows, nrows);
             if (ferror(f) | (fclose(f) != 0)) {
                 fprintf(stderr, "gprobe: cannot write the temporary %s\n", tmp.temp);
                 status = 1;
@@ -277,7 +269,6 @@ done:
     gmem_free(truth);
     gmem_free(approx);
     gmem_free(rows);
-    gmem_free(lights);
     gprobe_destroy(p);
     return status;
 }

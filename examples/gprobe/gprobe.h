@@ -5,6 +5,8 @@
 #include <generic/file.h>
 #include <generic/probe.h>
 
+#include "../common/cli.h"
+
 #include <stdio.h>
 
 /** Options every command that reads a probe understands. */
@@ -16,9 +18,15 @@ typedef struct ProbeArgs {
     int quiet;           /* -q */
 } ProbeArgs;
 
-/** Handles --probe, --format, --rotate and -q at argv[*i] (consuming the value); 1 when handled, 0 when the
- * option is not one of them, -1 on a bad value (message printed). */
-int probe_args_parse(ProbeArgs *a, int argc, char **argv, int *i);
+/** getopt_long codes of --probe, --format and --rotate (-q is 'q'); a command's own codes start at PROBE_OPT_OWN. */
+enum { PROBE_OPT_PROBE = CLI_FIRST_OWN, PROBE_OPT_FORMAT, PROBE_OPT_ROTATE, PROBE_OPT_OWN };
+/** The option table entries of those options (-q, --quiet too). */
+#define PROBE_ARGS_OPTIONS                                                                                           \
+    {"probe", required_argument, NULL, PROBE_OPT_PROBE}, {"format", required_argument, NULL, PROBE_OPT_FORMAT},     \
+        {"rotate", required_argument, NULL, PROBE_OPT_ROTATE}, {"quiet", no_argument, NULL, 'q'}
+/** Handles the option of code c (value v) when it is one of those; 1 when handled, 0 when it is not one of them,
+ * -1 on a bad value (message printed). */
+int probe_args_option(ProbeArgs *a, int c, const char *v);
 /** The help lines for those options. */
 extern const char probe_args_help[];
 /** Loads (and rotates) the probe; prints the error or the clamping warning. NULL on failure. */
@@ -28,8 +36,6 @@ GProbe *probe_args_load(const ProbeArgs *a);
 int parse_int(const char *opt, const char *s, long lo, long hi, int *out);
 /** Parses "x,y,z"; -1 with a message when malformed. */
 int parse_vec3(const char *opt, const char *s, double v[3]);
-/** Fetches the value of option argv[*i]; NULL with a message when missing. */
-const char *option_value(int argc, char **argv, int *i);
 
 /** Seconds on a monotonic clock. */
 double now_seconds(void);
@@ -51,6 +57,62 @@ int text_close(TextOut *t, int ok);
 /** Progress reporter for the library's callback: a percentage on stderr when it is a terminal. */
 void progress_print(void *user, const char *stage, double fraction);
 
+/* ---- the approximations compared (methods.c) ---- */
+
+/** One approximation method: a light technique (light >= 0) or a basis (basis >= 0). */
+typedef struct Method {
+    const char *name;
+    int light;        /* GProbeTechnique or -1 */
+    int basis;        /* GProbeBasisKind or -1 */
+    const char *unit; /* what N counts: lights, coefficients, lobes */
+} Method;
+/** The names, comma separated, for messages. */
+extern const char methods_names[];
+int method_count(void);
+const Method *method_get(int i);
+/** Index of a name, -1 when unknown. */
+int method_find(const char *name);
+/** 1 for the legacy sh9 entry (the nine-coefficient reference line; not in the default list). */
+int method_is_sh9(int i);
+/** The sizes a method is tried at for the given light counts: SH always at 4, 9, 16, 25 coefficients, the
+ * ambient cube at 6, the others at the counts they can make (skipped ones reported unless quiet). */
+int method_sizes(int i, const int *counts, int ncounts, int fit_normals, int *out, int quiet);
+
+/** One method made for one size. */
+typedef struct Approx {
+    int method, n;
+    GProbeLight *lights; /* light methods */
+    GProbeBasis basis;   /* basis methods */
+} Approx;
+/** Makes method `method` with n lights, coefficients or lobes; rep (may be NULL) gets the irradiance fit's report. */
+int approx_make(const GProbe *p, int method, int n, const GProbeOptions *opt, Approx *a, GProbeFitReport *rep,
+                GError *err);
+/** Irradiance at m normals (3 doubles each). */
+void approx_irradiance(const Approx *a, const GVec3 *normals, int m, double *E);
+void approx_free(Approx *a);
+
+/** One result row of eval and report. */
+typedef struct Row {
+    int method, count;
+    GProbeErrors e;
+    double seconds;
+} Row;
+/** The CSV of rows: technique,count,unit,mean_rel,max_rel,mean_norm,max_norm,smape,seconds. */
+void rows_csv(FILE *f, const Row *rows, int n);
+/** Parses a comma-separated list of counts (1..4096) into counts (at most max); the number or -1. */
+int parse_count_list(const char *s, int *counts, int max);
+/** Parses a comma-separated list of method names into use[method_count()]; 0 or -1. */
+int parse_method_list(const char *s, int *use);
+/** Makes one method at size n, times it and compares its irradiance at the m normals with truth (approx: 3 m
+ * doubles of room); keep (may be NULL) receives the approximation. -1 with a message on failure. */
+int eval_one(const GProbe *p, int method, int n, const GProbeOptions *opt, const GVec3 *normals, int m,
+             const double *truth, double *approx, Row *row, Approx *keep, int quiet);
+/** The default method selection: everything but sh9. */
+void methods_default(int *use);
+
+/** The operands after the options: a usage error (2, message printed) when there are any. */
+int no_operands(const CliParser *p);
+
 /* the commands: each returns the process exit status */
 int cmd_eval(int argc, char **argv);
 int cmd_approx(int argc, char **argv);
@@ -58,6 +120,7 @@ int cmd_irradiance(int argc, char **argv);
 int cmd_convert(int argc, char **argv);
 int cmd_compare(int argc, char **argv); /* compare.c */
 int cmd_sky(int argc, char **argv);     /* sky.c */
+int cmd_report(int argc, char **argv);  /* report.c */
 
 /** Draws the Fig. 6 plot of a CSV written by eval into png with gnuplot; -1 with a message on failure. */
 int plot_errors(const char *csv, const char *png, const char *title);

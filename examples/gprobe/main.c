@@ -21,19 +21,25 @@ static void usage(FILE *f)
 {
     fprintf(f,
             "usage: gprobe COMMAND [options]     (gprobe COMMAND --help for its options)\n"
-            "Approximates an HDR light probe by N directional lights and compares the techniques by the\n"
-            "irradiance they give, as in Madsen & Laursen's evaluation (their Fig. 6).\n"
+            "       gprobe --help | --version\n"
+            "Approximates an HDR light probe by N directional lights, spherical harmonics, an ambient cube or\n"
+            "spherical Gaussians and compares the techniques by the irradiance they give, as in Madsen &\n"
+            "Laursen's evaluation (their Fig. 6).\n"
             "commands:\n"
-            "  eval        error of every technique and light count against the ground truth: table, CSV, plot\n"
+            "  eval        error of every technique and size against the ground truth: table, CSV, plot\n"
+            "  report      an HTML page (and a markdown table) with every technique's radiance, irradiance and\n"
+            "              error images and the plot\n"
             "  approx      write the lights of one technique as text-format entries (gtrace reads them)\n"
             "  irradiance  print the ground-truth irradiance (RGB) for one normal\n"
             "  convert     write the probe as a lat-long or angular map (after --rotate)\n"
             "  compare     RMSE of a render against a reference, whole image and inside the cast shadows\n"
             "  sky         write a synthetic sky-and-sun probe\n"
-            "Every command also takes --plugin FILE.so (repeatable): load a module first.\n"
+            "Every command also takes --plugin FILE.so (repeatable): load a module first, --help and --version;\n"
+            "every option value may also be written --option=value.\n"
             "Directions: right-handed, z up. In a lat-long probe row 0 is the zenith, the middle column looks\n"
             "along +x, a quarter of the way along +y and the edges along -x, as Blender maps world textures\n"
-            "(see include/generic/probe.h).\n");
+            "(see include/generic/probe.h).\n"
+            CLI_EXIT_STATUS_HELP);
 }
 
 int main(int argc, char **argv)
@@ -51,6 +57,8 @@ int main(int argc, char **argv)
         usage(argc < 2 ? stderr : stdout);
         return argc < 2 ? 2 : 0;
     }
+    if (strcmp(argv[1], "--version") == 0)
+        return cli_version("gprobe");
     const char *cmd = argv[1];
     if (strcmp(cmd, "eval") == 0)
         return cmd_eval(argc - 1, argv + 1);
@@ -64,7 +72,10 @@ int main(int argc, char **argv)
         return cmd_compare(argc - 1, argv + 1);
     if (strcmp(cmd, "sky") == 0)
         return cmd_sky(argc - 1, argv + 1);
-    fprintf(stderr, "gprobe: unknown command '%s' (expected eval, approx, irradiance, convert, compare or sky)\n", cmd);
+    if (strcmp(cmd, "report") == 0)
+        return cmd_report(argc - 1, argv + 1);
+    fprintf(stderr, "gprobe: unknown command '%s' (expected eval, report, approx, irradiance, convert, compare or "
+            "sky)\n", cmd);
     return 2;
 }
 
@@ -75,7 +86,9 @@ const char probe_args_help[] =
     "  --format F        auto (default: 2:1 is lat-long, square is an angular map), latlong, angular\n"
     "  --rotate X,Y,Z    turn the environment by these angles in degrees about x, then y, then z\n"
     "                    (e.g. --rotate -90,0,0 makes the probe's zenith +y for a y-up scene)\n"
-    "  -q, --quiet       no progress and no warnings\n";
+    "  -q, --quiet       no progress and no warnings\n"
+    "  -h, --help        this text\n"
+    "  --version         the version\n";
 
 double now_seconds(void)
 {
@@ -84,13 +97,13 @@ double now_seconds(void)
     return t.tv_sec + 1e-9 * t.tv_nsec;
 }
 
-const char *option_value(int argc, char **argv, int *i)
+int no_operands(const CliParser *p)
 {
-    if (*i + 1 >= argc) {
-        fprintf(stderr, "gprobe: %s needs a value\n", argv[*i]);
-        return NULL;
-    }
-    return argv[++*i];
+    int n;
+    char **rest = cli_operands(p, &n);
+    if (n > 0)
+        return cli_usage_error(p->prog, "unexpected argument '%s'", rest[0]);
+    return 0;
 }
 
 int parse_int(const char *opt, const char *s, long lo, long hi, int *out)
@@ -122,22 +135,16 @@ int parse_vec3(const char *opt, const char *s, double v[3])
     return 0;
 }
 
-int probe_args_parse(ProbeArgs *a, int argc, char **argv, int *i)
+int probe_args_option(ProbeArgs *a, int c, const char *v)
 {
-    const char *o = argv[*i], *v;
-    if (strcmp(o, "-q") == 0 || strcmp(o, "--quiet") == 0) {
+    switch (c) {
+    case 'q':
         a->quiet = 1;
         return 1;
-    }
-    if (strcmp(o, "--probe") == 0) {
-        if (!(v = option_value(argc, argv, i)))
-            return -1;
+    case PROBE_OPT_PROBE:
         a->path = v;
         return 1;
-    }
-    if (strcmp(o, "--format") == 0) {
-        if (!(v = option_value(argc, argv, i)))
-            return -1;
+    case PROBE_OPT_FORMAT:
         if (strcmp(v, "auto") == 0)
             a->format = GPROBE_AUTO;
         else if (strcmp(v, "latlong") == 0)
@@ -149,14 +156,14 @@ int probe_args_parse(ProbeArgs *a, int argc, char **argv, int *i)
             return -1;
         }
         return 1;
-    }
-    if (strcmp(o, "--rotate") == 0) {
-        if (!(v = option_value(argc, argv, i)) || parse_vec3("--rotate", v, a->rot) != 0)
+    case PROBE_OPT_ROTATE:
+        if (parse_vec3("--rotate", v, a->rot) != 0)
             return -1;
         a->rotate = 1;
         return 1;
+    default:
+        return 0;
     }
-    return 0;
 }
 
 GProbe *probe_args_load(const ProbeArgs *a)

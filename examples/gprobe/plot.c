@@ -28,8 +28,12 @@ int plot_check_gnuplot(void)
     return -1;
 }
 
+/* Most series a plot draws (one per method). */
+#define MAX_SERIES 16
+
 typedef struct Series {
     char name[32];
+    int method; /* index in methods.c's list: it picks the colour */
     int n;
     double x[64], y[64][4];
 } Series;
@@ -65,10 +69,11 @@ static int read_csv(const char *csv, Series *series, int *nseries, double sh9[4]
     *nseries = 0;
     *have_sh9 = 0;
     while (fgets(line, sizeof line, f)) {
-        char name[32];
+        char name[32], unit[32];
         int count;
-        double v[5];
-        if (sscanf(line, "%31[^,],%d,%lf,%lf,%lf,%lf,%lf", name, &count, &v[0], &v[1], &v[2], &v[3], &v[4]) != 7)
+        double v[6];
+        if (sscanf(line, "%31[^,],%d,%31[^,],%lf,%lf,%lf,%lf,%lf,%lf", name, &count, unit, &v[0], &v[1], &v[2], &v[3],
+                   &v[4], &v[5]) != 9)
             continue; /* the header */
         if (strcmp(name, "sh9") == 0) {
             memcpy(sh9, v, 4 * sizeof(double));
@@ -79,9 +84,10 @@ static int read_csv(const char *csv, Series *series, int *nseries, double sh9[4]
         while (k < *nseries && strcmp(series[k].name, name) != 0)
             k++;
         if (k == *nseries) {
-            if (k == 8)
+            if (k == MAX_SERIES || method_find(name) < 0)
                 continue;
             snprintf(series[k].name, sizeof series[k].name, "%s", name);
+            series[k].method = method_find(name);
             series[k].n = 0;
             (*nseries)++;
         }
@@ -98,9 +104,12 @@ static int read_csv(const char *csv, Series *series, int *nseries, double sh9[4]
 
 int plot_errors(const char *csv, const char *png, const char *title)
 {
-    static const char *const colours[8] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b",
-                                           "#e377c2", "#17becf"};
-    Series series[8];
+    /* one colour per method of methods.c's list, whatever methods the CSV has */
+    static const char *const colours[MAX_SERIES] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e",
+                                                    "#8c564b", "#e377c2", "#17becf", "#bcbd22", "#7f7f7f",
+                                                    "#393b79", "#e7969c", "#000000", "#637939", "#843c39",
+                                                    "#3182bd"};
+    static Series series[MAX_SERIES];
     int ns, have_sh9;
     double sh9[4];
     if (read_csv(csv, series, &ns, sh9, &have_sh9) != 0)
@@ -131,11 +140,11 @@ int plot_errors(const char *csv, const char *png, const char *title)
         gfile_output_abort(&out);
         return -1;
     }
-    fprintf(g, "set terminal pngcairo size 1400,600 font 'Sans,11'\nset output ");
+    fprintf(g, "set terminal pngcairo size 1500,760 font 'Sans,11'\nset output ");
     put_quoted(g, tmp);
     fputc('\n', g);
     for (int k = 0; k < ns; k++) {
-        fprintf(g, "$%s << EOD\n", series[k].name);
+        fprintf(g, "$s%d << EOD\n", k);
         for (int i = 0; i < series[k].n; i++)
             fprintf(g, "%g %g %g %g %g\n", series[k].x[i], series[k].y[i][0], series[k].y[i][1], series[k].y[i][2],
                     series[k].y[i][3]);
@@ -144,30 +153,31 @@ int plot_errors(const char *csv, const char *png, const char *title)
     fprintf(g, "set multiplot layout 1,2 title ");
     put_quoted(g, title);
     fprintf(g, " font 'Sans,13'\n"
-               "set logscale xy\nset grid xtics ytics mytics\nset key bottom left box opaque\n"
+               "set logscale xy\nset grid xtics ytics mytics\n"
+               "set key outside below center horizontal maxrows 4 box\n" /* beside the data, never over it */
                "set xrange [%g:%g]\nset xtics (",
             xmin / 1.25, xmax * 1.25);
     for (double x = 1; x <= xmax * 1.01; x *= 2)
         if (x >= xmin * 0.99)
             fprintf(g, "%s%g", x > xmin * 1.01 ? "," : "", x);
-    fprintf(g, ")\nset xlabel 'number of directional lights'\nset ylabel 'irradiance error (%%)'\n");
+    fprintf(g, ")\nset xlabel 'N: lights, coefficients or lobes (solid: mean, dashed: max)'\n"
+               "set ylabel 'irradiance error (%%)'\n");
     for (int panel = 0; panel < 2; panel++) {
         fprintf(g, "set title '%s'\nplot ", panel == 0 ? "relative to the true irradiance (the paper''s Fig. 6 measure)"
                                                        : "normalised by the largest irradiance");
         int first = 1;
         for (int k = 0; k < ns; k++) {
-            const char *c = colours[k % 8];
-            fprintf(g, "%s$%s using 1:%d with linespoints lw 2 pt 7 lc rgb '%s' title '%s mean', "
-                       "$%s using 1:%d with linespoints lw 2 dt 2 pt 6 lc rgb '%s' title '%s max'",
-                    first ? "" : ", ", series[k].name, 2 + 2 * panel, c, series[k].name, series[k].name, 3 + 2 * panel,
-                    c, series[k].name);
+            const char *c = colours[series[k].method % MAX_SERIES];
+            fprintf(g, "%s$s%d using 1:%d with linespoints lw 2 pt 7 lc rgb '%s' title '%s', "
+                       "$s%d using 1:%d with linespoints lw 2 dt 2 pt 6 lc rgb '%s' notitle",
+                    first ? "" : ", ", k, 2 + 2 * panel, c, series[k].name, k, 3 + 2 * panel, c);
             first = 0;
         }
         if (have_sh9) {
             double mean = sh9[2 * panel], max = sh9[2 * panel + 1];
             if (mean > 0.0)
-                fprintf(g, "%s%g with lines lw 2 lc rgb 'gray40' title 'SH9 mean (9 coefficients)', "
-                           "%g with lines lw 2 dt 2 lc rgb 'gray40' title 'SH9 max'",
+                fprintf(g, "%s%g with lines lw 2 lc rgb 'gray40' title 'sh9 (9 coefficients)', "
+                           "%g with lines lw 2 dt 2 lc rgb 'gray40' notitle",
                         first ? "" : ", ", mean, max);
         }
         fputc('\n', g);

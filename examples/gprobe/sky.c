@@ -43,7 +43,8 @@ static void sky_usage(FILE *f)
                "  --sun-radius DEG     angular radius of the disc (default 3)\n"
                "  --sun-irradiance E   irradiance of the sun on a surface facing it (default 3)\n"
                "  --sky-irradiance E   irradiance of the sky alone on a horizontal surface (default 1)\n"
-               "  -h, --help           this text\n");
+               "  -h, --help           this text\n"
+               "  --version            the version\n" CLI_EXIT_STATUS_HELP);
 }
 
 static int parse_double(const char *opt, const char *s, double lo, double hi, double *out)
@@ -60,39 +61,51 @@ static int parse_double(const char *opt, const char *s, double lo, double hi, do
 
 int cmd_sky(int argc, char **argv)
 {
-    const char *out = NULL, *v;
+    const char *out = NULL;
     int h = 64;
     double elev = 40.0, azim = 130.0, radius = 3.0, e_sun = 3.0, e_sky = 1.0;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
-            sky_usage(stdout);
-            return 0;
-        }
-        if (!(v = option_value(argc, argv, &i)))
-            return 2;
+    enum { OPT_HEIGHT = CLI_FIRST_OWN, OPT_ELEV, OPT_AZIM, OPT_RADIUS, OPT_SUN, OPT_SKY };
+    static const struct option longopts[] = {
+        CLI_COMMON_OPTIONS, {"output", required_argument, NULL, 'o'}, {"height", required_argument, NULL, OPT_HEIGHT},
+        {"sun-elevation", required_argument, NULL, OPT_ELEV}, {"sun-azimuth", required_argument, NULL, OPT_AZIM},
+        {"sun-radius", required_argument, NULL, OPT_RADIUS}, {"sun-irradiance", required_argument, NULL, OPT_SUN},
+        {"sky-irradiance", required_argument, NULL, OPT_SKY}, {NULL, 0, NULL, 0},
+    };
+    CliParser cp;
+    cli_begin(&cp, "gprobe sky", argc, argv, "ho:", longopts);
+    int c;
+    while ((c = cli_next(&cp)) != -1) {
+        const char *v = optarg, *a = c == OPT_ELEV ? "--sun-elevation" : c == OPT_AZIM ? "--sun-azimuth"
+                                                  : c == OPT_RADIUS ? "--sun-radius" : c == OPT_SUN ? "--sun-irradiance"
+                                                                                                      : "--sky-irradiance";
         int rc = 0;
-        if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0)
+        if (c == 'h') {
+            sky_usage(stdout);
+            return CLI_OK;
+        } else if (c == CLI_VERSION) {
+            return cli_version("gprobe");
+        } else if (c == 'o') {
             out = v;
-        else if (strcmp(a, "--height") == 0)
-            rc = parse_int(a, v, 4, 8192, &h);
-        else if (strcmp(a, "--sun-elevation") == 0)
+        } else if (c == OPT_HEIGHT) {
+            rc = parse_int("--height", v, 4, 8192, &h);
+        } else if (c == OPT_ELEV) {
             rc = parse_double(a, v, -90.0, 90.0, &elev);
-        else if (strcmp(a, "--sun-azimuth") == 0)
+        } else if (c == OPT_AZIM) {
             rc = parse_double(a, v, -360.0, 360.0, &azim);
-        else if (strcmp(a, "--sun-radius") == 0)
+        } else if (c == OPT_RADIUS) {
             rc = parse_double(a, v, 0.05, 45.0, &radius);
-        else if (strcmp(a, "--sun-irradiance") == 0)
+        } else if (c == OPT_SUN) {
             rc = parse_double(a, v, 0.0, 1e9, &e_sun);
-        else if (strcmp(a, "--sky-irradiance") == 0)
+        } else if (c == OPT_SKY) {
             rc = parse_double(a, v, 0.0, 1e9, &e_sky);
-        else {
-            fprintf(stderr, "gprobe sky: unknown option '%s' (gprobe sky --help lists them)\n", a);
-            return 2;
+        } else {
+            return CLI_USAGE;
         }
         if (rc)
-            return 2;
+            return CLI_USAGE;
     }
+    if (no_operands(&cp))
+        return CLI_USAGE;
     if (!out) {
         fprintf(stderr, "gprobe sky: -o FILE is required\n");
         return 2;

@@ -4,7 +4,14 @@
  * exact shape in double precision in the object's own space (spheres stay spheres, so refraction and
  * normals are exact and no tessellation level has to be chosen). The double-precision ray travels to the
  * callbacks in an extended intersect context; the callback also keeps the exact t of the closest analytic
- * hit. Meshes are native Embree triangles with world-space vertices. */
+ * hit. Meshes, quads and triangles are Embree's own triangles and quads.
+ *
+ * Groups and instances: every group's shapes (and every shape an instance places directly) form one
+ * prototype, an Embree scene built once; each placement of a prototype is an Embree instance of it in the
+ * top-level scene. Embree 3 as Debian builds it has one instance level (RTC_MAX_INSTANCE_LEVEL_COUNT 1), so
+ * nested groups and instances are flattened: their transforms are composed and each path to a prototype is
+ * one instance (the prototypes' BVHs are still shared). The shapes' callbacks take the double-precision ray
+ * through the placement's own transform, not Embree's float one. */
 #include "accel.h"
 
 #include <embree3/rtcore.h>
@@ -18,19 +25,41 @@ _Static_assert(_Generic(((Scene *)0)->device, RTCDevice: 1, default: 0) &&
 
 typedef struct Context {
     struct RTCIntersectContext rtc; /* first: Embree hands this pointer back to the callbacks */
+    const Scene *scene;
     const Ray *ray;
     double best_t;
-    unsigned best_geom;
+    unsigned best_geom, best_inst;
 } Context;
 
-static void to_object(const Object *o, const Ray *r, GVec3 *ro, GVec3 *rd)
+/* A prototype: the Embree scene of a group's shapes (or of one instanced shape), built once however often
+ * it is placed, and its geometry id -> object table. */
+typedef struct AccelProto {
+    RTCScene rtc;
+    Object **by_geom;
+    unsigned nby_geom;
+} AccelProto;
+
+/* The placement of the instance Embree is inside (NULL: the top-level scene). */
+static const Instance *context_instance(const Context *cx)
 {
+    unsigned id = cx->rtc.instID[0];
+    if (id == RTC_INVALID_GEOMETRY_ID || id >= cx->scene->nby_geom)
+        return NULL;
+    return &cx->scene->inst_by_geom[id];
+}
+
+/* The ray in o's own space: through the placement (prototype space), then the object's transform. */
+static void to_object(const Object *o, const Instance *in, const Ray *r, GVec3 *ro, GVec3 *rd)
+{
+    *ro = r->o;
+    *rd = r->d;
+    if (in) {
+        *ro = xform_inv_point(&in->xf, *ro);
+        *rd = xform_inv_vector(&in->xf, *rd);
+    }
     if (o->has_xf) {
-        *ro = xform_inv_point(&o->xf, r->o);
-        *rd = xform_inv_vector(&o->xf, r->d);
-    } else {
-        *ro = r->o;
-        *rd = r->d;
+        *ro = xform_inv_point(&o->xf, *ro);
+        *rd = xform_inv_vector(&o->xf, *rd);
     }
 }
 
@@ -59,7 +88,7 @@ static void user_intersect(const struct RTCIntersectFunctionNArguments *args)
     Context *cx = (Context *)args->context;
     struct RTCRayHit *rh = (struct RTCRayHit *)args->rayhit;
     GVec3 ro, rd;
-    to_object(o, cx->ray, &ro, &rd);
+    to_object(o, context_instance(cx), cx->ray, &ro, &rd);
     double tmax = fmin((double)rh->ray.tfar, cx->best_t);
     double t;
     int surface;
@@ -74,6 +103,7 @@ static void user_intersect(const struct RTCIntersectFunctionNArguments *args)
     rh->hit.instID[0] = args->context->instID[0];
     cx->best_t = t;
     cx->best_geom = args->geomID;
+    cx->best_inst = args->context->instID[0];
 }
 
 static void user_occluded(const struct RTCOccludedFunctionNArguments *args)
@@ -84,14 +114,33 @@ static void user_occluded(const struct RTCOccludedFunctionNArguments *args)
     Context *cx = (Context *)args->context;
     struct RTCRay *ray = (struct RTCRay *)args->ray;
     GVec3 ro, rd;
-    to_object(o, cx->ray, &ro, &rd);
+    to_object(o, context_instance(cx), cx->ray, &ro, &rd);
     double t;
     int surface;
     if (shape_intersect(o, ro, rd, cx->ray->tmin, cx->ray->tmax, &t, &surface))
         ray->tfar = -INFINITY;
 }
 
-static int add_mesh(Scene *s, Object *o, GError *err)
+/* Attaches a new geometry to the Embree scene `into` and returns its id through *id. */
+static int attach(RTCGeometry g, RTCScene into, unsigned *id)
+{
+    rtcCommitGeometry(g);
+    *id = rtcAttachGeometry(into, g);
+    rtcReleaseGeometry(g);
+    return G_OK;
+}
+
+/* A point of o in the space of the scene it is attached to (its own transform applied). */
+static void put_vertex(const Object *o, GVec3 p, float *v)
+{
+    if (o->has_xf)
+        p = xform_point(&o->xf, p);
+    v[0] = (float)p.x;
+    v[1] = (float)p.y;
+    v[2] = (float)p.z;
+}
+
+static int add_mesh(Scene *s, RTCScene into, Object *o, unsigned *id, GError *err)
 {
     const Mesh *m = o->mesh;
     RTCGeometry g = rtcNewGeometry(s->device, RTC_GEOMETRY_TYPE_TRIANGLE);
@@ -105,22 +154,42 @@ static int add_mesh(Scene *s, Object *o, GError *err)
         rtcReleaseGeometry(g);
         return gerror_set(err, G_ERR_NOMEM, "embree: out of memory for a mesh of %d triangles", m->ntris);
     }
-    for (int i = 0; i < m->nverts; i++) {
-        GVec3 p = gvec3(m->pos[3 * i], m->pos[3 * i + 1], m->pos[3 * i + 2]);
-        if (o->has_xf)
-            p = xform_point(&o->xf, p);
-        v[3 * i] = (float)p.x;
-        v[3 * i + 1] = (float)p.y;
-        v[3 * i + 2] = (float)p.z;
-    }
+    for (int i = 0; i < m->nverts; i++)
+        put_vertex(o, gvec3(m->pos[3 * i], m->pos[3 * i + 1], m->pos[3 * i + 2]), v + 3 * i);
     memcpy(idx, m->tri, (size_t)m->ntris * 3 * sizeof(unsigned));
-    rtcCommitGeometry(g);
-    o->geom_id = rtcAttachGeometry(s->rtc, g);
-    rtcReleaseGeometry(g);
-    return G_OK;
+    return attach(g, into, id);
 }
 
-static int add_user(Scene *s, Object *o, GError *err)
+/* A quad or a triangle as one primitive of Embree's own type: corners center, +t1, (+t1+t2,) +t2, so that
+ * Embree's hit (u, v) are the shape's parameters along t1 and t2. */
+static int add_flat(Scene *s, RTCScene into, Object *o, unsigned *id, GError *err)
+{
+    int quad = o->kind == SHAPE_QUAD, nv = quad ? 4 : 3;
+    RTCGeometry g = rtcNewGeometry(s->device, quad ? RTC_GEOMETRY_TYPE_QUAD : RTC_GEOMETRY_TYPE_TRIANGLE);
+    if (!g)
+        return gerror_set(err, G_ERR_NOMEM, "embree: cannot create a %s geometry", quad ? "quad" : "triangle");
+    float *v = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), (size_t)nv);
+    unsigned *idx = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, quad ? RTC_FORMAT_UINT4 : RTC_FORMAT_UINT3,
+                                            (size_t)nv * sizeof(unsigned), 1);
+    if (!v || !idx) {
+        rtcReleaseGeometry(g);
+        return gerror_set(err, G_ERR_NOMEM, "embree: out of memory");
+    }
+    GVec3 c = o->center, a = gvec3_add(c, o->t1), b = gvec3_add(c, o->t2);
+    put_vertex(o, c, v);
+    put_vertex(o, a, v + 3);
+    if (quad) {
+        put_vertex(o, gvec3_add(a, o->t2), v + 6);
+        put_vertex(o, b, v + 9);
+    } else {
+        put_vertex(o, b, v + 6);
+    }
+    for (int i = 0; i < nv; i++)
+        idx[i] = (unsigned)i;
+    return attach(g, into, id);
+}
+
+static int add_user(Scene *s, RTCScene into, Object *o, unsigned *id, GError *err)
 {
     RTCGeometry g = rtcNewGeometry(s->device, RTC_GEOMETRY_TYPE_USER);
     if (!g)
@@ -130,9 +199,193 @@ static int add_user(Scene *s, Object *o, GError *err)
     rtcSetGeometryBoundsFunction(g, user_bounds, NULL);
     rtcSetGeometryIntersectFunction(g, user_intersect);
     rtcSetGeometryOccludedFunction(g, user_occluded);
-    rtcCommitGeometry(g);
-    o->geom_id = rtcAttachGeometry(s->rtc, g);
-    rtcReleaseGeometry(g);
+    return attach(g, into, id);
+}
+
+static int add_shape(Scene *s, RTCScene into, Object *o, unsigned *id, GError *err)
+{
+    switch (o->kind) {
+    case SHAPE_MESH: return add_mesh(s, into, o, id, err);
+    case SHAPE_QUAD:
+    case SHAPE_TRIANGLE: return add_flat(s, into, o, id, err);
+    default: return add_user(s, into, o, id, err);
+    }
+}
+
+/* Makes room for geometry id `id` in a table of objects (and placements when inst is not NULL). */
+static int table_fit(Object ***objs, Instance **inst, unsigned *n, unsigned id)
+{
+    if (id < *n)
+        return G_OK;
+    unsigned nn = *n ? *n : 16;
+    while (nn <= id)
+        nn *= 2;
+    Object **no = gmem_realloc(*objs, (size_t)nn * sizeof *no);
+    if (!no)
+        return G_ERR_NOMEM;
+    *objs = no;
+    if (inst) {
+        Instance *ni = gmem_realloc(*inst, (size_t)nn * sizeof *ni);
+        if (!ni)
+            return G_ERR_NOMEM;
+        *inst = ni;
+    }
+    for (unsigned i = *n; i < nn; i++) {
+        no[i] = NULL;
+        if (inst)
+            (*inst)[i].proto = -1;
+    }
+    *n = nn;
+    return G_OK;
+}
+
+/* Adds a shape to a prototype's Embree scene and its table. */
+static int proto_add(Scene *s, AccelProto *p, Object *o, GError *err)
+{
+    unsigned id;
+    int rc = add_shape(s, p->rtc, o, &id, err);
+    if (rc == G_OK && table_fit(&p->by_geom, NULL, &p->nby_geom, id) != G_OK)
+        rc = gerror_set(err, G_ERR_NOMEM, "out of memory");
+    if (rc == G_OK)
+        p->by_geom[id] = o;
+    return rc;
+}
+
+/* The prototype of a group (its shapes) or of an instanced shape, built on first use. */
+static int proto_of(Scene *s, Object *o, GError *err)
+{
+    if (o->proto_index >= 0)
+        return o->proto_index;
+    if (s->nprotos == s->cap_protos) {
+        int nc = s->cap_protos ? 2 * s->cap_protos : 8;
+        AccelProto *np = gmem_realloc(s->protos, (size_t)nc * sizeof *np);
+        if (!np)
+            return gerror_set(err, G_ERR_NOMEM, "out of memory");
+        s->protos = np;
+        s->cap_protos = nc;
+    }
+    AccelProto *p = &s->protos[s->nprotos];
+    memset(p, 0, sizeof *p);
+    p->rtc = rtcNewScene(s->device);
+    if (!p->rtc)
+        return gerror_set(err, G_ERR_NOMEM, "embree: cannot create a scene");
+    s->nprotos++;
+    rtcSetSceneBuildQuality(p->rtc, RTC_BUILD_QUALITY_HIGH);
+    int rc = G_OK;
+    if (o->kind == SHAPE_GROUP) {
+        for (int i = 0; i < o->nmembers && rc == G_OK; i++)
+            if (object_is_shape(o->members[i]))
+                rc = proto_add(s, p, o->members[i], err);
+    } else {
+        rc = proto_add(s, p, o, err);
+    }
+    if (rc < 0)
+        return rc;
+    rtcCommitScene(p->rtc);
+    o->proto_index = s->nprotos - 1;
+    return o->proto_index;
+}
+
+/* Places prototype `proto` at xf in the top-level scene. */
+static int place(Scene *s, int proto, const Xform *xf, const GMaterial *material, GError *err)
+{
+    if (s->ninstances >= GTRACE_MAX_INSTANCES)
+        return gerror_set(err, G_ERR_INVALID, "the scene expands to more than %d instances", GTRACE_MAX_INSTANCES);
+    s->ninstances++;
+    /* Embree takes the placement in single precision and inverts it: refuse what a float cannot carry */
+    float m[12];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++) {
+            if (!(fabs(xf->m[i][j]) <= 1e30))
+                return gerror_set(err, G_ERR_INVALID, "a placement's transform has an entry of %g, beyond 1e30 "
+                                  "(Embree's instances are single precision)", xf->m[i][j]);
+            m[4 * i + j] = (float)xf->m[i][j];
+        }
+    double det = (double)m[0] * ((double)m[5] * m[10] - (double)m[6] * m[9]) -
+                 (double)m[1] * ((double)m[4] * m[10] - (double)m[6] * m[8]) +
+                 (double)m[2] * ((double)m[4] * m[9] - (double)m[5] * m[8]);
+    if (!(fabs(det) > 1e-36))
+        return gerror_set(err, G_ERR_INVALID, "a placement's transform is singular in single precision "
+                          "(determinant %g; Embree's instances are single precision)", det);
+    RTCGeometry g = rtcNewGeometry(s->device, RTC_GEOMETRY_TYPE_INSTANCE);
+    if (!g)
+        return gerror_set(err, G_ERR_NOMEM, "embree: cannot create an instance");
+    rtcSetGeometryInstancedScene(g, s->protos[proto].rtc);
+    rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, m);
+    unsigned id;
+    attach(g, s->rtc, &id);
+    if (table_fit(&s->by_geom, &s->inst_by_geom, &s->nby_geom, id) != G_OK)
+        return gerror_set(err, G_ERR_NOMEM, "out of memory");
+    Instance *in = &s->inst_by_geom[id];
+    in->xf = *xf;
+    in->material = material;
+    in->proto = proto;
+    return G_OK;
+}
+
+/* Places a group or an instance (and everything nested in it) under the transform `parent`. */
+static int flatten(Scene *s, Object *o, const Xform *parent, const GMaterial *override, int depth, GError *err)
+{
+    if (depth > GTRACE_MAX_NESTING)
+        return gerror_set(err, G_ERR_INVALID, "groups and instances nest deeper than %d", GTRACE_MAX_NESTING);
+    Xform xf = *parent;
+    if (o->has_xf)
+        xform_compose(parent, &o->xf, &xf);
+    if (o->kind == SHAPE_INSTANCE) {
+        const GMaterial *m = override ? override : o->material;
+        Object *p = o->proto;
+        if (!object_is_shape(p))
+            return flatten(s, p, &xf, m, depth + 1, err);
+        int k = proto_of(s, p, err);
+        return k < 0 ? k : place(s, k, &xf, m, err);
+    }
+    int shapes = 0, rc = G_OK;
+    for (int i = 0; i < o->nmembers && rc == G_OK; i++) {
+        if (object_is_shape(o->members[i]))
+            shapes = 1;
+        else
+            rc = flatten(s, o->members[i], &xf, override, depth + 1, err);
+    }
+    if (rc == G_OK && shapes) {
+        int k = proto_of(s, o, err);
+        rc = k < 0 ? k : place(s, k, &xf, override, err);
+    }
+    return rc;
+}
+
+static int build_objects(Scene *s, GError *err)
+{
+    double expansion = 0.0;
+    for (int i = 0; i < s->nobjects; i++) {
+        s->objects[i]->proto_index = -1;
+        if (!s->objects[i]->is_part && !object_is_shape(s->objects[i]))
+            expansion += s->objects[i]->expansion;
+    }
+    if (expansion > GTRACE_MAX_INSTANCES)
+        return gerror_set(err, G_ERR_INVALID, "the scene's groups and instances expand to %.6g placements, more than "
+                          "the limit of %d", expansion, GTRACE_MAX_INSTANCES);
+    Xform id;
+    xform_identity(&id);
+    for (int i = 0; i < s->nobjects; i++) {
+        Object *o = s->objects[i];
+        if (o->is_part)
+            continue;
+        int rc;
+        if (object_is_shape(o)) {
+            unsigned gid;
+            rc = add_shape(s, s->rtc, o, &gid, err);
+            if (rc == G_OK && table_fit(&s->by_geom, &s->inst_by_geom, &s->nby_geom, gid) != G_OK)
+                rc = gerror_set(err, G_ERR_NOMEM, "out of memory");
+            if (rc == G_OK) {
+                o->geom_id = gid;
+                s->by_geom[gid] = o;
+            }
+        } else {
+            rc = flatten(s, o, &id, NULL, 1, err);
+        }
+        if (rc < 0)
+            return rc;
+    }
     return G_OK;
 }
 
@@ -144,16 +397,10 @@ int accel_build(Scene *s, GError *err)
         return gerror_set(err, G_ERR_NOMEM, "embree: cannot create a device (error %d)", (int)rtcGetDeviceError(NULL));
     s->rtc = rtcNewScene(s->device);
     rtcSetSceneBuildQuality(s->rtc, RTC_BUILD_QUALITY_HIGH);
-    unsigned maxid = 0;
-    for (int i = 0; i < s->nobjects; i++) {
-        Object *o = s->objects[i];
-        int rc = o->kind == SHAPE_MESH ? add_mesh(s, o, err) : add_user(s, o, err);
-        if (rc != G_OK) {
-            accel_release(s);
-            return rc;
-        }
-        if (o->geom_id + 1 > maxid)
-            maxid = o->geom_id + 1;
+    int rc = build_objects(s, err);
+    if (rc < 0) {
+        accel_release(s);
+        return rc;
     }
     rtcCommitScene(s->rtc);
     enum RTCError e = rtcGetDeviceError(s->device);
@@ -161,19 +408,23 @@ int accel_build(Scene *s, GError *err)
         accel_release(s);
         return gerror_set(err, G_ERR_INVALID, "embree: scene build failed (error %d)", (int)e);
     }
-    s->by_geom = gmem_calloc(maxid ? maxid : 1, sizeof *s->by_geom);
-    if (!s->by_geom) {
+    if (!s->by_geom && table_fit(&s->by_geom, &s->inst_by_geom, &s->nby_geom, 0) != G_OK) {
         accel_release(s);
         return gerror_set(err, G_ERR_NOMEM, "out of memory");
     }
-    s->nby_geom = maxid;
-    for (int i = 0; i < s->nobjects; i++)
-        s->by_geom[s->objects[i]->geom_id] = s->objects[i];
     return G_OK;
 }
 
 void accel_release(Scene *s)
 {
+    for (int i = 0; i < s->nprotos; i++) {
+        rtcReleaseScene(s->protos[i].rtc);
+        gmem_free(s->protos[i].by_geom);
+    }
+    gmem_free(s->protos);
+    s->protos = NULL;
+    s->nprotos = s->cap_protos = 0;
+    s->ninstances = 0;
     if (s->rtc)
         rtcReleaseScene(s->rtc);
     if (s->device)
@@ -181,7 +432,9 @@ void accel_release(Scene *s)
     s->rtc = NULL;
     s->device = NULL;
     gmem_free(s->by_geom);
+    gmem_free(s->inst_by_geom);
     s->by_geom = NULL;
+    s->inst_by_geom = NULL;
     s->nby_geom = 0;
 }
 
@@ -217,26 +470,42 @@ int accel_intersect(const Scene *s, const Ray *r, Hit *h)
         return 0;
     Context cx;
     rtcInitIntersectContext(&cx.rtc);
+    cx.scene = s;
     cx.ray = r;
     cx.best_t = INFINITY;
-    cx.best_geom = RTC_INVALID_GEOMETRY_ID;
+    cx.best_geom = cx.best_inst = RTC_INVALID_GEOMETRY_ID;
     struct RTCRayHit rh;
     make_ray(r, &rh.ray);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(s->rtc, &cx.rtc, &rh);
-    unsigned id = rh.hit.geomID;
-    if (id == RTC_INVALID_GEOMETRY_ID || id >= s->nby_geom)
+    unsigned id = rh.hit.geomID, inst = rh.hit.instID[0];
+    if (id == RTC_INVALID_GEOMETRY_ID)
         return 0;
-    h->obj = s->by_geom[id];
+    h->inst = NULL;
+    if (inst != RTC_INVALID_GEOMETRY_ID) {
+        if (inst >= s->nby_geom || s->inst_by_geom[inst].proto < 0)
+            return 0;
+        h->inst = &s->inst_by_geom[inst];
+        const AccelProto *p = &s->protos[h->inst->proto];
+        if (id >= p->nby_geom || !p->by_geom[id])
+            return 0;
+        h->obj = p->by_geom[id];
+    } else {
+        if (id >= s->nby_geom || !s->by_geom[id])
+            return 0;
+        h->obj = s->by_geom[id];
+    }
+    h->material = h->inst && h->inst->material ? h->inst->material : h->obj->material;
     h->prim = rh.hit.primID;
-    if (h->obj->kind == SHAPE_MESH) {
+    ShapeKind k = h->obj->kind;
+    if (k == SHAPE_MESH || k == SHAPE_QUAD || k == SHAPE_TRIANGLE) {
         h->t = rh.ray.tfar;
         h->bu = rh.hit.u;
         h->bv = rh.hit.v;
         h->surface = 0;
     } else {
-        h->t = id == cx.best_geom ? cx.best_t : rh.ray.tfar;
+        h->t = id == cx.best_geom && inst == cx.best_inst ? cx.best_t : rh.ray.tfar;
         h->bu = h->bv = 0.0;
         h->surface = (int)rh.hit.u;
     }
@@ -249,9 +518,10 @@ int accel_occluded(const Scene *s, const Ray *r)
         return 0;
     Context cx;
     rtcInitIntersectContext(&cx.rtc);
+    cx.scene = s;
     cx.ray = r;
     cx.best_t = INFINITY;
-    cx.best_geom = RTC_INVALID_GEOMETRY_ID;
+    cx.best_geom = cx.best_inst = RTC_INVALID_GEOMETRY_ID;
     struct RTCRay ray;
     make_ray(r, &ray);
     rtcOccluded1(s->rtc, &cx.rtc, &ray);

@@ -23,6 +23,11 @@ int bands_init(Bands *b, const GColorModel *m, int cap, GError *err)
     if (cap <= 0)
         cap = BANDS_DEFAULT_CAP;
     b->n = nb < cap ? nb : cap;
+    size_t per_mask = gcolormodel_value_bytes(m), most = per_mask > 0 ? BANDS_MASK_BUDGET / per_mask : 1;
+    if (most < 1)
+        most = 1;
+    if ((size_t)b->n > most)
+        b->n = (int)most;
     b->first = gmem_calloc((size_t)b->n + 1, sizeof *b->first);
     b->mask = gmem_calloc((size_t)b->n, sizeof *b->mask);
     if (!b->first || !b->mask) {

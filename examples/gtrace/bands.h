@@ -12,6 +12,9 @@
 #define BANDS_DEFAULT_CAP 16
 /** Largest cap accepted (--bands). */
 #define BANDS_LIMIT 1024
+/** Most bytes the groups' masks may take together: a model with large values (a model of fine re-radiation matrices) gets
+ * fewer groups than asked for rather than an allocation the size of the cap times its matrices. */
+#define BANDS_MASK_BUDGET (64u << 20)
 /** Relative indices whose groups differ by no more than this are not split (constant-index glass). */
 #define BANDS_INDEX_TOLERANCE 1e-4
 
@@ -22,7 +25,8 @@ typedef struct Bands {
     GColor *mask; /**< n masks (heap), the sum of the group's band masks */
 } Bands;
 
-/** Groups the bands of model m into min(cap, band count) groups (cap 0: BANDS_DEFAULT_CAP). */
+/** Groups the bands of model m into min(cap, band count) groups (cap 0: BANDS_DEFAULT_CAP), fewer when their
+ * masks would exceed BANDS_MASK_BUDGET. */
 int bands_init(Bands *b, const GColorModel *m, int cap, GError *err);
 /** Frees the masks; a zeroed Bands is a no-op. */
 void bands_free(Bands *b);

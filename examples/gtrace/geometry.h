@@ -7,9 +7,18 @@
 
 #include <generic/vec.h>
 
+/** One placement of a prototype (accel.c): a group's shapes or an instanced shape, in world space. */
+typedef struct Instance {
+    Xform xf;                  /**< prototype space -> world (the composition of the nested transforms) */
+    const GMaterial *material; /**< the override of the outermost instance that gives one (NULL: none) */
+    int proto;                 /**< the prototype's Embree scene */
+} Instance;
+
 /** What the acceleration structure reports for a hit. */
 typedef struct Hit {
     const Object *obj;
+    const Instance *inst;       /**< the placement the hit is in (NULL: a shape of the top-level scene) */
+    const GMaterial *material;  /**< the material at the hit (the instance's override or the object's) */
     double t;
     unsigned prim;
     double bu, bv; /**< barycentrics (meshes) */
@@ -46,6 +55,8 @@ int scene_coord_ok(GVec3 v);
 double object_extent_check(const Object *o);
 /** Surface details of an analytic shape at a hit. */
 void shape_hit_geom(const Object *o, const Ray *r, const Hit *h, HitGeom *g);
+/** Surface details at any hit in world space (through its instance, if any). */
+void hit_geom(const Ray *r, const Hit *h, HitGeom *g);
 /** Surface details of a mesh triangle at a hit. */
 void mesh_hit_geom(const Object *o, const Ray *r, const Hit *h, HitGeom *g);
 /** Fills g's point, outward normal n, shading normal ns and tangents from object space (op, n, ns, dpdu, dpdv)

@@ -27,6 +27,7 @@ typedef struct Light {
     double radius;           /**< sphere */
     double cos_inner, cos_outer; /**< spot cone (full intensity inside inner, none outside outer) */
     int samples;             /**< area lights, probe: shadow samples per shading point */
+    int visible;             /**< sphere, rectangle: seen by camera rays as their radiance (default 0) */
     const struct ProbeEnv *env; /**< LIGHT_PROBE: the probe it samples (owned by the probe entry) */
 } Light;
 

@@ -28,4 +28,8 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
 int probe_light_shade(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const Media *media,
                       GVec3 out_dir, int opaque, LightTmp *t, GColor *result);
 
+/** Visible area lights (light_seen.c): 1 with out = the radiance of the nearest sphere or rectangle light
+ * marked visible that r meets before tmax (a rectangle from its lit side only), 0 when it meets none. */
+int light_seen(const Scene *s, const Ray *r, double tmax, GColor *out, int *status);
+
 #endif

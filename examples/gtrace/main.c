@@ -6,6 +6,7 @@
 #include "render.h"
 #include "output.h"
 #include "probe_env.h"
+#include "../common/cli.h"
 
 #include <generic/builtins.h>
 #include <generic/plugin.h>
@@ -25,7 +26,8 @@ static void usage(FILE *f)
             "              [--colormodel M] [--threads N] [--cutoff W] [--bands K] [--exposure STOPS] [--plugin FILE.so]... [-q]\n"
             "              [--allow-plugins] [--confine DIR]\n"
             "              [--probe FILE] [--probe-technique T] [--probe-count N] [--probe-samples N]\n"
-            "              [--probe-scale S] [--probe-shadows on|off] [--integrator whitted|path]\n"
+            "              [--probe-scale S] [--probe-shadows on|off] [--crop X0,Y0,X1,Y1] [--integrator whitted|path]\n"
+            "       gtrace --help | --version\n"
             "Renders a scene file (the library's text format with camera, object and light entries) with a\n"
             "Whitted ray tracer that uses colours and materials only through the generic interfaces.\n"
             "Every scene coordinate (after transforms) must be finite and within +-1e15.\n"
@@ -58,145 +60,203 @@ static void usage(FILE *f)
             "  --exposure STOPS  exposure for .png/.jpg output (default: the camera's)\n"
             "  --probe FILE      replace the image of the scene's `light probe` (relative to the current\n"
             "                    directory); the other --probe options replace its other settings\n"
-            "  --probe-technique T    mediancut, adaptive, kmeans, irradiance (directional lights) or\n"
-            "                         reference (Monte Carlo over the whole probe)\n"
+            "  --probe-technique T    mediancut, adaptive, kmeans, irradiance, variance (directional\n"
+            "                         lights), reference (Monte Carlo over the whole probe), or a basis\n"
+            "                         as an ambient term: sh, sh-hanning, ambientcube, sg-naive, sg-ls,\n"
+            "                         sg-nnls, sg-ambient\n"
             "  --probe-count N        number of lights of a technique (1..4096; irradiance: at most 128,\n"
             "                         and count x fit_normals at most 524288)\n"
             "  --probe-samples N      reference: samples per shading point (1..65536)\n"
             "  --probe-shadows on|off reference: shadow rays (off: the unoccluded image)\n"
             "  --probe-scale S        multiplies the probe's radiance\n"
-            "  -q                no progress bar and no summary line\n"
-            "  -h, --help        this text\n",
+            "  --crop X0,Y0,X1,Y1  render only the pixels X0 <= x < X1, Y0 <= y < Y1 of the full image (top\n"
+            "                    left is 0,0); the output is the region's size and its pixels equal those of\n"
+            "                    the full render; an .exr records the region as its data window (the full\n"
+            "                    image is the display window), so crops can be merged\n"
+            "  -q, --quiet       no progress bar and no summary line\n"
+            "  -h, --help        this text\n"
+            "  --version         the version\n"
+            "Every option value may also be written --option=value.\n"
+            CLI_EXIT_STATUS_HELP,
             models);
 }
 
-static int parse_int(const char *opt, const char *s, long lo, long hi, int *out)
-{
-    char *end;
-    errno = 0;
-    long v = strtol(s, &end, 10);
-    if (errno || end == s || *end || v < lo || v > hi) {
-        fprintf(stderr, "gtrace: %s expects a whole number in [%ld, %ld], got '%s'\n", opt, lo, hi, s);
-        return -1;
-    }
-    *out = (int)v;
-    return 0;
-}
+enum {
+    OPT_WIDTH = CLI_FIRST_OWN, OPT_HEIGHT, OPT_SPP, OPT_DEPTH, OPT_MAX_RAYS, OPT_THREADS, OPT_COLORMODEL,
+    OPT_EXPOSURE, OPT_CUTOFF, OPT_CROP, OPT_BANDS, OPT_INTEGRATOR, OPT_PROBE, OPT_PROBE_TECHNIQUE, OPT_PROBE_COUNT, OPT_PROBE_SAMPLES,
+    OPT_PROBE_SHADOWS, OPT_PROBE_SCALE
+};
 
-/* The --probe options (a, its value v); -1 with a message for a bad one. */
-static int parse_probe_option(const char *a, const char *v, ProbeOverride *p)
+/* The --probe options (code c, its value v); -1 with a message for a bad one. */
+static int parse_probe_option(int c, const char *v, ProbeOverride *p)
 {
-    if (strcmp(a, "--probe") == 0)
+    switch (c) {
+    case OPT_PROBE:
         p->file = v;
-    else if (strcmp(a, "--probe-technique") == 0)
+        return 0;
+    case OPT_PROBE_TECHNIQUE:
         p->technique = v;
-    else if (strcmp(a, "--probe-count") == 0)
-        return parse_int(a, v, 1, 4096, &p->count);
-    else if (strcmp(a, "--probe-samples") == 0)
-        return parse_int(a, v, 1, 65536, &p->samples);
-    else if (strcmp(a, "--probe-shadows") == 0 && (strcmp(v, "on") == 0 || strcmp(v, "off") == 0))
+        return 0;
+    case OPT_PROBE_COUNT:
+        return cli_int("gtrace", "--probe-count", v, 1, 4096, &p->count);
+    case OPT_PROBE_SAMPLES:
+        return cli_int("gtrace", "--probe-samples", v, 1, 65536, &p->samples);
+    case OPT_PROBE_SHADOWS:
+        if (strcmp(v, "on") != 0 && strcmp(v, "off") != 0) {
+            fprintf(stderr, "gtrace: --probe-shadows expects on or off, got '%s'\n", v);
+            return -1;
+        }
         p->shadows = strcmp(v, "on") == 0;
-    else if (strcmp(a, "--probe-scale") == 0) {
-        char *end;
-        p->scale = strtod(v, &end);
-        if (end == v || *end || !(p->scale > 0.0 && p->scale < 1e30)) {
+        return 0;
+    default: /* OPT_PROBE_SCALE */
+        if (cli_double("gtrace", "--probe-scale", v, 0.0, 1e30, &p->scale) != 0)
+            return -1;
+        if (!(p->scale > 0.0)) {
             fprintf(stderr, "gtrace: --probe-scale expects a positive number, got '%s'\n", v);
             return -1;
         }
-    } else {
-        fprintf(stderr, "gtrace: unknown option '%s' or bad value '%s' (see gtrace --help)\n", a, v);
-        return -1;
+        return 0;
     }
-    return 0;
 }
 
 typedef struct Options {
     ProbeOverride probe;
     const char *scene, *out, *colormodel;
     int width, height, spp, depth, threads, quiet, max_rays, bands, integrator;
-    int have_exposure, have_cutoff;
+    int have_exposure, have_cutoff, have_crop;
+    int crop[4]; /* x0, y0, x1, y1 */
     double exposure, cutoff;
 } Options;
 
+/* "X0,Y0,X1,Y1": four whole numbers with X0 < X1, Y0 < Y1 (checked against the image size later). */
+static int parse_crop(const char *s, int crop[4])
+{
+    const char *p = s;
+    for (int k = 0; k < 4; k++) {
+        char *end;
+        errno = 0;
+        long v = strtol(p, &end, 10);
+        if (errno || end == p || v < 0 || v > 65536 || (k < 3 && *end != ',') || (k == 3 && *end)) {
+            fprintf(stderr, "gtrace: --crop expects X0,Y0,X1,Y1 (whole pixel numbers), got '%s'\n", s);
+            return -1;
+        }
+        crop[k] = (int)v;
+        p = end + 1;
+    }
+    if (crop[0] >= crop[2] || crop[1] >= crop[3]) {
+        fprintf(stderr, "gtrace: --crop %s is empty (it needs X0 < X1 and Y0 < Y1; X1 and Y1 are excluded)\n", s);
+        return -1;
+    }
+    return 0;
+}
+
+/* 0 to go on, 1 after --help or --version (exit 0), -1 after a usage error (exit 2). */
 static int parse_args(int argc, char **argv, Options *o)
 {
+    static const struct option longopts[] = {
+        CLI_COMMON_OPTIONS,
+        {"output", required_argument, NULL, 'o'},
+        {"quiet", no_argument, NULL, 'q'},
+        {"width", required_argument, NULL, OPT_WIDTH},
+        {"height", required_argument, NULL, OPT_HEIGHT},
+        {"spp", required_argument, NULL, OPT_SPP},
+        {"depth", required_argument, NULL, OPT_DEPTH},
+        {"max-rays", required_argument, NULL, OPT_MAX_RAYS},
+        {"threads", required_argument, NULL, OPT_THREADS},
+        {"colormodel", required_argument, NULL, OPT_COLORMODEL},
+        {"exposure", required_argument, NULL, OPT_EXPOSURE},
+        {"cutoff", required_argument, NULL, OPT_CUTOFF},
+        {"crop", required_argument, NULL, OPT_CROP},
+        {"bands", required_argument, NULL, OPT_BANDS},
+        {"integrator", required_argument, NULL, OPT_INTEGRATOR},
+        {"probe", required_argument, NULL, OPT_PROBE},
+        {"probe-technique", required_argument, NULL, OPT_PROBE_TECHNIQUE},
+        {"probe-count", required_argument, NULL, OPT_PROBE_COUNT},
+        {"probe-samples", required_argument, NULL, OPT_PROBE_SAMPLES},
+        {"probe-shadows", required_argument, NULL, OPT_PROBE_SHADOWS},
+        {"probe-scale", required_argument, NULL, OPT_PROBE_SCALE},
+        {NULL, 0, NULL, 0},
+    };
     memset(o, 0, sizeof *o);
     o->width = o->height = o->spp = o->depth = -1;
     o->probe.shadows = -1;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
+    CliParser p;
+    cli_begin(&p, "gtrace", argc, argv, "ho:q", longopts);
+    int c, rc = 0;
+    while (rc == 0 && (c = cli_next(&p)) != -1) {
+        switch (c) {
+        case 'h':
             usage(stdout);
             return 1;
-        }
-        if (strcmp(a, "-q") == 0 || strcmp(a, "--quiet") == 0) {
+        case CLI_VERSION:
+            cli_version("gtrace");
+            return 1;
+        case 'q':
             o->quiet = 1;
-            continue;
-        }
-        if (a[0] == '-' && a[1]) {
-            if (i + 1 >= argc) {
-                fprintf(stderr, "gtrace: %s needs a value\n", a);
-                return -1;
-            }
-            const char *v = argv[++i];
-            int rc = 0;
-            if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0)
-                o->out = v;
-            else if (strcmp(a, "--width") == 0)
-                rc = parse_int(a, v, 1, 65536, &o->width);
-            else if (strcmp(a, "--height") == 0)
-                rc = parse_int(a, v, 1, 65536, &o->height);
-            else if (strcmp(a, "--spp") == 0)
-                rc = parse_int(a, v, 1, 65536, &o->spp);
-            else if (strcmp(a, "--depth") == 0)
-                rc = parse_int(a, v, 0, 1000, &o->depth);
-            else if (strcmp(a, "--max-rays") == 0)
-                rc = parse_int(a, v, 1, RENDER_LIMIT_MAX_RAYS, &o->max_rays);
-            else if (strcmp(a, "--threads") == 0)
-                rc = parse_int(a, v, 1, 1024, &o->threads);
-            else if (strcmp(a, "--bands") == 0)
-                rc = parse_int(a, v, 1, BANDS_LIMIT, &o->bands);
-            else if (strcmp(a, "--integrator") == 0) {
-                if (strcmp(v, "whitted") == 0 || strcmp(v, "path") == 0)
-                    o->integrator = strcmp(v, "path") == 0 ? RENDER_PATH : RENDER_WHITTED;
-                else {
-                    fprintf(stderr, "gtrace: --integrator expects whitted or path, got '%s'\n", v);
-                    rc = -1;
-                }
-            } else if (strcmp(a, "--colormodel") == 0)
-                o->colormodel = v;
-            else if (strncmp(a, "--probe", 7) == 0)
-                rc = parse_probe_option(a, v, &o->probe);
-            else if (strcmp(a, "--exposure") == 0) {
-                char *end;
-                o->exposure = strtod(v, &end);
-                o->have_exposure = 1;
-                if (end == v || *end || !(o->exposure >= -30.0 && o->exposure <= 30.0)) {
-                    fprintf(stderr, "gtrace: --exposure expects a number in [-30, 30], got '%s'\n", v);
-                    rc = -1;
-                }
-            } else if (strcmp(a, "--cutoff") == 0) {
-                char *end;
-                o->cutoff = strtod(v, &end);
-                o->have_cutoff = 1;
-                if (end == v || *end || !(o->cutoff >= 0.0 && o->cutoff <= 1.0)) {
-                    fprintf(stderr, "gtrace: --cutoff expects a number in [0, 1], got '%s'\n", v);
-                    rc = -1;
-                }
+            break;
+        case 'o':
+            o->out = optarg;
+            break;
+        case OPT_WIDTH:
+            rc = cli_int("gtrace", "--width", optarg, 1, 65536, &o->width);
+            break;
+        case OPT_HEIGHT:
+            rc = cli_int("gtrace", "--height", optarg, 1, 65536, &o->height);
+            break;
+        case OPT_SPP:
+            rc = cli_int("gtrace", "--spp", optarg, 1, 65536, &o->spp);
+            break;
+        case OPT_DEPTH:
+            rc = cli_int("gtrace", "--depth", optarg, 0, 1000, &o->depth);
+            break;
+        case OPT_MAX_RAYS:
+            rc = cli_int("gtrace", "--max-rays", optarg, 1, RENDER_LIMIT_MAX_RAYS, &o->max_rays);
+            break;
+        case OPT_THREADS:
+            rc = cli_int("gtrace", "--threads", optarg, 1, 1024, &o->threads);
+            break;
+        case OPT_BANDS:
+            rc = cli_int("gtrace", "--bands", optarg, 1, BANDS_LIMIT, &o->bands);
+            break;
+        case OPT_INTEGRATOR:
+            if (strcmp(optarg, "whitted") == 0 || strcmp(optarg, "path") == 0) {
+                o->integrator = strcmp(optarg, "path") == 0 ? RENDER_PATH : RENDER_WHITTED;
             } else {
-                fprintf(stderr, "gtrace: unknown option '%s' (see gtrace --help)\n", a);
-                return -1;
+                fprintf(stderr, "gtrace: --integrator expects whitted or path, got '%s'\n", optarg);
+                rc = -1;
             }
-            if (rc)
-                return -1;
-            continue;
-        }
-        if (o->scene) {
-            fprintf(stderr, "gtrace: more than one scene file given ('%s' and '%s')\n", o->scene, a);
+            break;
+        case OPT_COLORMODEL:
+            o->colormodel = optarg;
+            break;
+        case OPT_EXPOSURE:
+            o->have_exposure = 1;
+            rc = cli_double("gtrace", "--exposure", optarg, -30.0, 30.0, &o->exposure);
+            break;
+        case OPT_CUTOFF:
+            o->have_cutoff = 1;
+            rc = cli_double("gtrace", "--cutoff", optarg, 0.0, 1.0, &o->cutoff);
+            break;
+        case OPT_CROP:
+            o->have_crop = 1;
+            rc = parse_crop(optarg, o->crop);
+            break;
+        case '?':
             return -1;
+        default:
+            rc = parse_probe_option(c, optarg, &o->probe);
+            break;
         }
-        o->scene = a;
     }
+    if (rc)
+        return -1;
+    int n;
+    char **rest = cli_operands(&p, &n);
+    if (n > 1) {
+        fprintf(stderr, "gtrace: more than one scene file given ('%s' and '%s')\n", rest[0], rest[1]);
+        return -1;
+    }
+    o->scene = n ? rest[0] : NULL;
     if (!o->scene || !o->out) {
         fprintf(stderr, "gtrace: %s\n", !o->scene ? "no scene file given" : "no output file given (-o OUT)");
         usage(stderr);
@@ -261,6 +321,15 @@ int main(int argc, char **argv)
         rs.spp = o.spp;
     if (o.depth >= 0)
         rs.depth = o.depth;
+    if (o.have_crop) {
+        if (o.crop[2] > rs.width || o.crop[3] > rs.height) {
+            fprintf(stderr, "gtrace: --crop %d,%d,%d,%d reaches outside the %dx%d image\n", o.crop[0], o.crop[1],
+                    o.crop[2], o.crop[3], rs.width, rs.height);
+            scene_destroy(scene);
+            return 2;
+        }
+        memcpy(rs.crop, o.crop, sizeof rs.crop);
+    }
     double exposure = o.have_exposure ? o.exposure : cam->exposure;
 
     Framebuffer fb = {0};
@@ -286,7 +355,7 @@ int main(int argc, char **argv)
     if (!o.quiet)
         printf("gtrace: %s %dx%d, %d spp, depth %d, %s, %d threads: %.2f s, %.2f M rays, %.2f M rays/s, "
                "%llu non-finite\n",
-               o.out, rs.width, rs.height, rs.spp, rs.depth, gcolormodel_name(scene->model), st.threads, st.seconds,
+               o.out, fb.width, fb.height, rs.spp, rs.depth, gcolormodel_name(scene->model), st.threads, st.seconds,
                st.rays * 1e-6, st.seconds > 0 ? st.rays * 1e-6 / st.seconds : 0.0,
                (unsigned long long)st.nonfinite);
     framebuffer_free(&fb);

@@ -15,8 +15,17 @@ typedef enum ShapeKind {
     SHAPE_BOX,
     SHAPE_DISC,
     SHAPE_CYLINDER,
-    SHAPE_MESH
+    SHAPE_MESH,
+    SHAPE_QUAD,     /**< parallelogram center + u t1 + v t2, (u,v) in [0,1]^2: an Embree quad */
+    SHAPE_TRIANGLE, /**< center + u t1 + v t2 with u, v >= 0, u + v <= 1: an Embree triangle */
+    SHAPE_GROUP,    /**< a list of objects (borrowed): one Embree scene for its shapes */
+    SHAPE_INSTANCE  /**< another object or group placed by a transform, optionally in another material */
 } ShapeKind;
+
+/** Largest nesting of groups and instances in one object. */
+#define GTRACE_MAX_NESTING 64
+/** Largest number of Embree instances a scene may expand to (every path through groups and instances). */
+#define GTRACE_MAX_INSTANCES 100000
 
 /** A triangle mesh read from an OBJ file. Positions are kept in object space (double) and world space
  * (the float buffer Embree reads); normals and (u,v) per corner, -1 where the file gave none. */
@@ -38,14 +47,21 @@ typedef struct Object {
     Xform xf;
     int has_xf;
     /* shape parameters, object space */
-    GVec3 center;     /**< sphere, disc: centre; plane: a point; cylinder: base centre */
-    GVec3 normal;     /**< plane, disc: unit normal; cylinder: unit axis */
-    GVec3 t1, t2;     /**< plane, disc, cylinder: frame with t1 x t2 = normal */
+    GVec3 center;     /**< sphere, disc: centre; plane: a point; cylinder: base centre; quad, triangle: corner */
+    GVec3 normal;     /**< plane, disc, quad, triangle: unit normal; cylinder: unit axis */
+    GVec3 t1, t2;     /**< plane, disc, cylinder: frame with t1 x t2 = normal; quad, triangle: the edges */
     double radius;    /**< sphere, disc, cylinder */
     double height;    /**< cylinder */
     int open;         /**< cylinder without caps */
-    GVec3 lo, hi;     /**< box corners */
+    GVec3 lo, hi;     /**< box corners; group, instance: the bounds of what they hold, in their own space */
     Mesh *mesh;       /**< SHAPE_MESH */
+    struct Object **members;     /**< SHAPE_GROUP: the members (borrowed from the library), nmembers of them */
+    int nmembers;
+    struct Object *proto;        /**< SHAPE_INSTANCE: what it places (borrowed); material is the override or NULL */
+    int is_part;      /**< a member of a group or an instance's prototype: rendered only through them */
+    int nesting;      /**< groups and instances nested in this object (0 for a shape) */
+    double expansion; /**< Embree instances this object expands to when placed (a shape placed alone: 1) */
+    int proto_index;  /**< accel: the prototype scene of a group or instanced shape (-1: none) */
     unsigned geom_id; /**< Embree geometry id */
 } Object;
 
@@ -59,6 +75,14 @@ int object_plane(Object *o, GVec3 point, GVec3 normal, GError *err);
 int object_box(Object *o, GVec3 lo, GVec3 hi, GError *err);
 int object_disc(Object *o, GVec3 center, GVec3 normal, double radius, GError *err);
 int object_cylinder(Object *o, GVec3 base, GVec3 top, double radius, int open, GError *err);
+int object_quad(Object *o, GVec3 corner, GVec3 edge1, GVec3 edge2, GError *err);
+int object_triangle(Object *o, GVec3 a, GVec3 b, GVec3 c, GError *err);
+/** A group of members (copied array; the members are borrowed and marked as parts). */
+int object_group(Object *o, Object *const *members, int n, GError *err);
+/** An instance of proto (borrowed, marked as a part) with o's transform and o->material as the override. */
+int object_instance(Object *o, Object *proto, GError *err);
+/** 1 for the kinds that are geometry themselves (not groups or instances). */
+int object_is_shape(const Object *o);
 /** Reads an OBJ file into o (v, vt, vn, f with polygons as fans; usemtl/g start new surface indices). */
 int object_mesh_load(Object *o, const char *path, GError *err);
 /** Frees a mesh (NULL: no-op). */

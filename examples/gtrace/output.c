@@ -1,7 +1,8 @@
 /* output.c - writes the framebuffer through the library's image shim (generic/image.h), which picks the
  * encoding by extension and writes a temporary file that is renamed only when complete. Float formats
  * (.exr, .hdr, .pfm) get the linear values as rendered; 8-bit formats get the exposure, then the shim's
- * display encoding with clamping. */
+ * display encoding with clamping. A crop is written as the region it is: in OpenEXR, the data window inside the
+ * full image's display window. */
 #include "output.h"
 
 #include <generic/image.h>
@@ -27,5 +28,11 @@ int output_write(const char *path, const Framebuffer *fb, double exposure, GErro
 {
     GImage img = {.width = fb->width, .height = fb->height, .channels = 3, .pixels = fb->pixels};
     GImageWriteOptions opt = {.exposure = is_float_format(path) ? 0.0 : exposure};
+    if (fb->full_width > 0 && (fb->width != fb->full_width || fb->height != fb->full_height)) { /* a crop */
+        opt.x = fb->x;
+        opt.y = fb->y;
+        opt.full_width = fb->full_width;
+        opt.full_height = fb->full_height;
+    }
     return gimage_write(path, &img, &opt, err);
 }

@@ -9,18 +9,24 @@
  *   object NAME? disc     { center P normal N radius R ... }
  *   object NAME? cylinder { base P top Q radius R open BOOL ... }  surface 0 side, 1 base, 2 top
  *   object NAME? mesh     { file "model.obj" ... }
+ *   object NAME? quad     { corner P edge1 E edge2 F ... }   P + u E + v F, (u,v) in [0,1]^2
+ *   object NAME? triangle { a P b Q c R ... }                 (u,v) the barycentrics of Q and R
+ *   object NAME? group    { OBJECT OBJECT ... transform { ... } }   members become prototypes
+ *   object NAME? instance { of OBJECT transform { ... } material M }  M (optional) overrides
  *   transform { scale S | scale <x,y,z> | rotate <ax,ay,az> | rotate_axis <axis> DEG | translate <x,y,z> ... }
  *   light point       { position P intensity COLOR }
  *   light directional { direction D irradiance COLOR }
  *   light spot        { position P at Q intensity COLOR inner DEG outer DEG }
- *   light sphere      { center P radius R radiance COLOR samples N }
- *   light rectangle   { corner P edge1 E edge2 F radiance COLOR samples N }   lit side: edge1 x edge2
+ *   light sphere      { center P radius R radiance COLOR samples N visible BOOL }
+ *   light rectangle   { corner P edge1 E edge2 F radiance COLOR samples N visible BOOL }   lit side: edge1 x edge2
  *   light ambient     { color COLOR }        handed to every material's ambient()
  *   light background  { color COLOR }        radiance of rays that leave the scene
  *   light probe       { file "x.hdr" technique T count N samples S rotate <x,y,z> scale K ... }
  *                     image-based lighting from an HDR probe (probe_light.c)
  *   camera pinhole    { from P at Q up U fov DEG width W height H spp N depth D cutoff W exposure STOPS bands K
  *                       medium M }
+ *   camera thinlens   { ...pinhole's... aperture A focus_distance F }
+ *   camera orthographic { from P at Q up U size S width W height H ... }  (no fov)
  * Spot cones are full opening angles in degrees (inner: full intensity, outer: none). cutoff: rays whose
  * weight in their pixel is below W are not traced (default 1e-3, 0 traces everything to the depth). */
 #include "bands.h"
@@ -28,6 +34,7 @@
 #include "geometry.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 /* ---- transforms ---- */
@@ -88,7 +95,9 @@ static int parse_transform(GReader *r, Xform *xf, GError *err)
 
 /* ---- objects ---- */
 
-static const ShapeKind shape_kinds[] = {SHAPE_SPHERE, SHAPE_PLANE, SHAPE_BOX, SHAPE_DISC, SHAPE_CYLINDER, SHAPE_MESH};
+static const ShapeKind shape_kinds[] = {SHAPE_SPHERE, SHAPE_PLANE,    SHAPE_BOX,   SHAPE_DISC,    SHAPE_CYLINDER,
+                                        SHAPE_MESH,   SHAPE_QUAD,     SHAPE_TRIANGLE, SHAPE_GROUP, SHAPE_INSTANCE};
+#define NSHAPE_TYPES ((int)(sizeof shape_kinds / sizeof shape_kinds[0]))
 static const char *const shape_params[] = {
     "center, radius, material, transform",
     "point, normal, material, transform",
@@ -96,7 +105,79 @@ static const char *const shape_params[] = {
     "center, normal, radius, material, transform",
     "base, top, radius, open, material, transform",
     "file, material, transform",
+    "corner, edge1, edge2, material, transform",
+    "a, b, c, material, transform",
+    "",
+    "of, material, transform",
 };
+
+static int parse_object(GReader *r, const void *vtable, void **object, GError *err);
+
+/* An object given as a value (a nested entry or a name), which must be one of gtrace's. */
+static int read_object(GReader *r, Object **out, GError *err)
+{
+    void *obj = NULL;
+    const GTypeInfo *t = NULL;
+    int rc = greader_object(r, GKIND_OBJECT, &obj, &t, err);
+    if (rc < 0)
+        return rc;
+    if (!t || t->parse != parse_object)
+        return greader_error(r, err, "object type '%s' is not one gtrace renders", t ? t->name : "?");
+    *out = obj;
+    return G_OK;
+}
+
+/* The limits of nesting and expansion, checked where a group or an instance is defined. */
+static int check_nesting(GReader *r, const Object *o, GError *err)
+{
+    if (o->nesting > GTRACE_MAX_NESTING)
+        return greader_error(r, err, "groups and instances nest %d deep here, more than the limit of %d",
+                             o->nesting, GTRACE_MAX_NESTING);
+    if (o->expansion > GTRACE_MAX_INSTANCES)
+        return greader_error(r, err, "this %s expands to %.6g placements, more than the limit of %d",
+                             o->kind == SHAPE_GROUP ? "group" : "instance", o->expansion, GTRACE_MAX_INSTANCES);
+    return G_OK;
+}
+
+/*   object NAME? group { OBJECT OBJECT ... transform { ... } }: members are nested entries or names. */
+static int parse_group(GReader *r, Object *o, GError *err)
+{
+    Object **members = NULL;
+    int n = 0, cap = 0;
+    int rc = greader_block_begin(r, err);
+    while (rc == G_OK && (rc = greader_block_end(r, err)) == 0) {
+        GToken t;
+        if ((rc = greader_peek(r, &t, err)) < 0)
+            break;
+        if (t.type == GTOK_IDENT && strcmp(t.text, "transform") == 0) {
+            if ((rc = greader_next(r, &t, err)) < 0 || (rc = parse_transform(r, &o->xf, err)) < 0)
+                break;
+            o->has_xf = 1;
+            continue;
+        }
+        if (n == cap) {
+            int nc = cap ? 2 * cap : 8;
+            Object **nm = gmem_realloc(members, (size_t)nc * sizeof *nm);
+            if (!nm) {
+                rc = greader_error(r, err, "out of memory for a group of %d objects", n);
+                break;
+            }
+            members = nm;
+            cap = nc;
+        }
+        if ((rc = read_object(r, &members[n], err)) < 0)
+            break;
+        n++;
+    }
+    if (rc >= 0 && n == 0)
+        rc = greader_error(r, err, "a group needs at least one object");
+    if (rc >= 0)
+        rc = object_group(o, members, n, err) < 0 ? greader_locate(r, err) : G_OK;
+    gmem_free(members);
+    if (rc >= 0)
+        rc = check_nesting(r, o, err);
+    return rc < 0 ? rc : G_OK;
+}
 
 static int parse_object(GReader *r, const void *vtable, void **object, GError *err)
 {
@@ -106,12 +187,24 @@ static int parse_object(GReader *r, const void *vtable, void **object, GError *e
     double radius = 1.0;
     int open = 0;
     char *file = NULL;
+    GVec3 edge1 = gvec3(1, 0, 0), edge2 = gvec3(0, 1, 0), pc = gvec3(0, 1, 0);
     GMaterial *mat = NULL;
+    Object *proto = NULL;
     Object *o = object_new(kind, NULL);
     if (!o)
         return greader_error(r, err, "out of memory");
     const char *key;
     int rc;
+    if (kind == SHAPE_GROUP) {
+        rc = parse_group(r, o, err);
+        if (rc < 0)
+            object_free(o);
+        else
+            *object = o;
+        return rc;
+    }
+    if (kind == SHAPE_TRIANGLE)
+        center = gvec3(0, 0, 0);
     while ((rc = greader_param(r, &key, err)) > 0) {
         if (strcmp(key, "material") == 0) {
             rc = greader_material(r, &mat, err);
@@ -138,13 +231,25 @@ static int parse_object(GReader *r, const void *vtable, void **object, GError *e
             rc = greader_bool(r, &open, err);
         } else if (strcmp(key, "file") == 0 && kind == SHAPE_MESH) {
             rc = greader_path(r, &file, err);
+        } else if ((strcmp(key, "corner") == 0 && kind == SHAPE_QUAD) || (strcmp(key, "a") == 0 && kind == SHAPE_TRIANGLE)) {
+            rc = greader_vec3(r, &center, err);
+        } else if ((strcmp(key, "edge1") == 0 && kind == SHAPE_QUAD) || (strcmp(key, "b") == 0 && kind == SHAPE_TRIANGLE)) {
+            rc = greader_vec3(r, &edge1, err);
+        } else if (strcmp(key, "edge2") == 0 && kind == SHAPE_QUAD) {
+            rc = greader_vec3(r, &edge2, err);
+        } else if (strcmp(key, "c") == 0 && kind == SHAPE_TRIANGLE) {
+            rc = greader_vec3(r, &pc, err);
+        } else if (strcmp(key, "of") == 0 && kind == SHAPE_INSTANCE) {
+            rc = read_object(r, &proto, err);
         } else {
             rc = greader_unknown_param(r, shape_params[kind], err);
         }
         if (rc < 0)
             break;
     }
-    if (rc == G_OK && !mat)
+    if (rc == G_OK && kind == SHAPE_INSTANCE && !proto)
+        rc = greader_error(r, err, "an instance needs the object it places (of NAME or a nested object)");
+    if (rc == G_OK && !mat && kind != SHAPE_INSTANCE)
         rc = greader_error(r, err, "the object needs a material (material NAME or a nested material)");
     if (rc == G_OK && kind == SHAPE_MESH && !file)
         rc = greader_error(r, err, "a mesh needs a file (file \"name.obj\")");
@@ -156,6 +261,15 @@ static int parse_object(GReader *r, const void *vtable, void **object, GError *e
         case SHAPE_DISC: rc = object_disc(o, center, normal, radius, err); break;
         case SHAPE_CYLINDER: rc = object_cylinder(o, center, top, radius, open, err); break;
         case SHAPE_MESH: rc = object_mesh_load(o, file, err); break;
+        case SHAPE_QUAD: rc = object_quad(o, center, edge1, edge2, err); break;
+        case SHAPE_TRIANGLE: rc = object_triangle(o, center, edge1, pc, err); break;
+        case SHAPE_GROUP: break;
+        case SHAPE_INSTANCE: rc = object_instance(o, proto, err); break;
+        }
+        if (rc == G_OK && kind == SHAPE_INSTANCE && (rc = check_nesting(r, o, err)) < 0) {
+            gmem_free(file);
+            object_free(o);
+            return rc;
         }
         double reach = rc == G_OK ? object_extent_check(o) : 0.0;
         if (reach > 0.0)
@@ -185,8 +299,8 @@ static const char *const light_params[] = {
     "position, intensity",
     "direction, irradiance",
     "position, at, intensity, inner, outer",
-    "center, radius, radiance, samples",
-    "corner, edge1, edge2, radiance, samples",
+    "center, radius, radiance, samples, visible",
+    "corner, edge1, edge2, radiance, samples, visible",
     "color",
     "color",
 };
@@ -221,7 +335,7 @@ static int parse_light(GReader *r, const void *vtable, void **object, GError *er
     GVec3 at = gvec3(0, 0, 0), dir = gvec3(0, -1, 0);
     double inner = 20.0, outer = 30.0;
     long samples = 16;
-    int have_at = 0;
+    int have_at = 0, color_line = 0, color_col = 0;
     l->radius = 1.0;
     l->edge1 = gvec3(1, 0, 0);
     l->edge2 = gvec3(0, 0, -1);
@@ -232,7 +346,11 @@ static int parse_light(GReader *r, const void *vtable, void **object, GError *er
     while ((rc = greader_param(r, &key, err)) > 0) {
         if (strcmp(key, light_color_key[type]) == 0) {
             gcolor_free(&color);
-            rc = greader_color(r, GCOLOR_LIGHT, &color, err);
+            GToken lit;
+            if ((rc = greader_peek(r, &lit, err)) == G_OK) {
+                color_line = lit.line, color_col = lit.col;
+                rc = greader_color(r, GCOLOR_LIGHT, &color, err);
+            }
         } else if ((strcmp(key, "position") == 0 && (type == L_POINT || type == L_SPOT)) ||
                    (strcmp(key, "center") == 0 && type == L_SPHERE) || (strcmp(key, "corner") == 0 && type == L_RECT)) {
             rc = greader_vec3(r, &l->position, err);
@@ -253,6 +371,8 @@ static int parse_light(GReader *r, const void *vtable, void **object, GError *er
             rc = greader_vec3(r, &l->edge2, err);
         } else if (strcmp(key, "samples") == 0 && (type == L_SPHERE || type == L_RECT)) {
             rc = greader_int(r, 1, 256, &samples, err);
+        } else if (strcmp(key, "visible") == 0 && (type == L_SPHERE || type == L_RECT)) {
+            rc = greader_bool(r, &l->visible, err);
         } else {
             rc = greader_unknown_param(r, light_params[type], err);
         }
@@ -261,8 +381,16 @@ static int parse_light(GReader *r, const void *vtable, void **object, GError *er
     }
     if (rc == G_OK && !color.v)
         rc = greader_error(r, err, "the light needs its %s (a colour)", light_color_key[type]);
-    if (rc == G_OK && !gcolor_is_nonnegative(&color))
-        rc = greader_error(r, err, "the light's %s must be finite and >= 0 in every sample", light_color_key[type]);
+    /* out of the model's gamut (a line light in a tristimulus model): mapped like a folded matrix, one warning */
+    int mapped = 0;
+    double xyz[3] = {0, 0, 0};
+    if (rc == G_OK && (gcolor_to_xyz(&color, GCOLOR_LIGHT, xyz) != G_OK || !(xyz[1] >= 0.0) ||
+                       gcolor_clip_to_gamut(&color, GCOLOR_LIGHT, &mapped) != G_OK))
+        rc = greader_error(r, err, "the light's %s must be finite and of luminance >= 0", light_color_key[type]);
+    if (rc == G_OK && mapped)
+        fprintf(stderr, "%s:%d:%d: warning: the light's %s lies outside the gamut of colour model '%s': its "
+                "negative samples are set to 0, its luminance kept\n",
+                greader_file(r), color_line, color_col, light_color_key[type], gcolormodel_name(model));
     if (rc == G_OK && !light_within_limits(l, type, at))
         rc = greader_error(r, err, "the light lies beyond the scene's limit of %g: coordinates must be finite "
                            "and within [-%g, %g]", SCENE_MAX_COORD, SCENE_MAX_COORD, SCENE_MAX_COORD);
@@ -298,13 +426,20 @@ static void destroy_light(void *p) { light_free(p); }
 
 /* ---- camera ---- */
 
+static const char *const camera_params[] = {
+    "from, at, up, fov, width, height, spp, depth, cutoff, exposure, medium, bands",
+    "from, at, up, fov, aperture, focus_distance, width, height, spp, depth, cutoff, exposure, medium, bands",
+    "from, at, up, size, width, height, spp, depth, cutoff, exposure, medium, bands",
+};
+
 static int parse_camera(GReader *r, const void *vtable, void **object, GError *err)
 {
-    (void)vtable;
+    CameraProjection proj = *(const CameraProjection *)vtable;
     Camera *c = gmem_calloc(1, sizeof *c);
     if (!c)
         return greader_error(r, err, "out of memory");
     camera_defaults(c);
+    c->projection = proj;
     const char *key;
     int rc;
     long v;
@@ -315,8 +450,14 @@ static int parse_camera(GReader *r, const void *vtable, void **object, GError *e
             rc = greader_vec3(r, &c->at, err);
         else if (strcmp(key, "up") == 0)
             rc = greader_vec3(r, &c->up, err);
-        else if (strcmp(key, "fov") == 0)
+        else if (strcmp(key, "fov") == 0 && proj != CAMERA_ORTHOGRAPHIC)
             rc = greader_number_in(r, 0.01, 179.0, &c->fov, err);
+        else if (strcmp(key, "aperture") == 0 && proj == CAMERA_THINLENS)
+            rc = greader_number_in(r, 0.0, 1e6, &c->aperture, err);
+        else if (strcmp(key, "focus_distance") == 0 && proj == CAMERA_THINLENS)
+            rc = greader_number_in(r, 1e-9, 1e15, &c->focus_distance, err);
+        else if (strcmp(key, "size") == 0 && proj == CAMERA_ORTHOGRAPHIC)
+            rc = greader_number_in(r, 1e-9, 1e15, &c->size, err);
         else if (strcmp(key, "width") == 0)
             rc = (rc = greader_int(r, 1, 65536, &v, err)) < 0 ? rc : (c->width = (int)v, 0);
         else if (strcmp(key, "height") == 0)
@@ -334,8 +475,7 @@ static int parse_camera(GReader *r, const void *vtable, void **object, GError *e
         else if (strcmp(key, "bands") == 0)
             rc = (rc = greader_int(r, 1, BANDS_LIMIT, &v, err)) < 0 ? rc : (c->bands = (int)v, 0);
         else
-            rc = greader_unknown_param(r, "from, at, up, fov, width, height, spp, depth, cutoff, exposure, medium, bands",
-                                       err);
+            rc = greader_unknown_param(r, camera_params[proj], err);
         if (rc < 0)
             break;
     }
@@ -354,10 +494,14 @@ static int parse_camera(GReader *r, const void *vtable, void **object, GError *e
 
 /* ---- registration ---- */
 
-static const char *const shape_names[] = {"sphere", "plane", "box", "disc", "cylinder", "mesh"};
+static const char *const shape_names[] = {"sphere", "plane", "box",      "disc",  "cylinder",
+                                          "mesh",   "quad",  "triangle", "group", "instance"};
 static const char *const shape_summaries[] = {
     "sphere (analytic)", "infinite plane (bounded at 1e5)", "axis-aligned box, a surface index per face",
     "disc", "cylinder with optional caps", "triangle mesh from a Wavefront OBJ file",
+    "parallelogram (an Embree quad)", "triangle (an Embree triangle)",
+    "group of objects (one Embree scene, placed by instances)",
+    "instance of an object or group: own transform, optional material override",
 };
 static const char *const light_names[] = {"point", "directional", "spot", "sphere", "rectangle", "ambient", "background"};
 static const char *const light_summaries[] = {
@@ -365,7 +509,13 @@ static const char *const light_summaries[] = {
     "spherical area light (radiance), soft shadows", "rectangular area light (radiance), soft shadows",
     "ambient light for material.ambient", "radiance of rays that leave the scene",
 };
-static const int camera_vtable = 0;
+static const CameraProjection camera_kinds[] = {CAMERA_PINHOLE, CAMERA_THINLENS, CAMERA_ORTHOGRAPHIC};
+static const char *const camera_names[] = {"pinhole", "thinlens", "orthographic"};
+static const char *const camera_summaries[] = {
+    "pinhole camera: look-at, vertical field of view, image settings",
+    "thin-lens camera: a pinhole's settings plus aperture and focus_distance (depth of field)",
+    "orthographic camera: parallel rays through a window `size` units high",
+};
 
 /* Registers a type unless its kind already has one of that name (so registering twice is harmless). */
 static int register_once(const GTypeInfo *t, GError *err)
@@ -377,7 +527,7 @@ static int register_once(const GTypeInfo *t, GError *err)
 int gtrace_register_types(GError *err)
 {
     int rc = G_OK;
-    for (int i = 0; i < 6 && rc == G_OK; i++) {
+    for (int i = 0; i < NSHAPE_TYPES && rc == G_OK; i++) {
         GTypeInfo t = {.kind = GKIND_OBJECT, .name = shape_names[i], .vtable = &shape_kinds[i],
                        .parse = parse_object, .summary = shape_summaries[i], .destroy = destroy_object};
         rc = register_once(&t, err);
@@ -390,12 +540,13 @@ int gtrace_register_types(GError *err)
     GTypeInfo probe = {.kind = GKIND_LIGHT, .name = "probe", .vtable = NULL, .parse = probe_light_parse,
                        .summary = "HDR light probe: directional lights of a technique, or Monte Carlo reference",
                        .destroy = probe_light_destroy};
-    GTypeInfo cam = {.kind = GKIND_CAMERA, .name = "pinhole", .vtable = &camera_vtable, .parse = parse_camera,
-                     .summary = "pinhole camera: look-at, vertical field of view, image settings"};
     if (rc == G_OK)
         rc = register_once(&probe, err);
-    if (rc == G_OK)
+    for (int i = 0; i < 3 && rc == G_OK; i++) {
+        GTypeInfo cam = {.kind = GKIND_CAMERA, .name = camera_names[i], .vtable = &camera_kinds[i],
+                         .parse = parse_camera, .summary = camera_summaries[i]};
         rc = register_once(&cam, err);
+    }
     return rc;
 }
 
@@ -421,6 +572,13 @@ int scene_from_library(GLibrary *lib, const char *name, Scene **out, GError *err
             rc = gerror_set(err, G_ERR_UNSUPPORTED, "%s: object type '%s' is not one gtrace renders", name,
                             t ? t->name : "?");
     }
+    double placements = 0.0;
+    for (int i = 0; i < s->nobjects; i++)
+        if (!s->objects[i]->is_part && !object_is_shape(s->objects[i]))
+            placements += s->objects[i]->expansion;
+    if (rc == G_OK && placements > GTRACE_MAX_INSTANCES)
+        rc = gerror_set(err, G_ERR_INVALID, "%s: the scene's groups and instances expand to %.6g placements, more "
+                        "than the limit of %d", name, placements, GTRACE_MAX_INSTANCES);
     n = glibrary_count(lib, GKIND_LIGHT);
     for (int i = 0; i < n && rc == G_OK; i++) {
         const GTypeInfo *t;

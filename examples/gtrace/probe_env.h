@@ -17,13 +17,16 @@
 
 /** The technique value of the reference mode (next to the library's GProbeTechnique values). */
 #define PROBE_REFERENCE GPROBE_TECHNIQUE_COUNT
+/** The technique value of a basis (GProbeBasisKind k) used as an ambient term, and the test for one. */
+#define PROBE_BASIS(k) (GPROBE_TECHNIQUE_COUNT + 1 + (int)(k))
+#define PROBE_IS_BASIS(t) ((t) > PROBE_REFERENCE)
 
 /** A `light probe` entry: its settings, the probe once loaded, and the lights made from it. */
 typedef struct ProbeEnv {
     /* settings: the scene file's, then the command line's */
     char *file;          /**< the probe image (resolved against the scene file's directory) */
-    int technique;       /**< a GProbeTechnique, or PROBE_REFERENCE */
-    int count;           /**< technique: number of lights */
+    int technique;       /**< a GProbeTechnique, PROBE_REFERENCE or PROBE_BASIS(kind) */
+    int count;           /**< technique: number of lights; basis: coefficients or lobes */
     int samples;         /**< reference: samples per shading point */
     int fit_normals;     /**< irradiance: normals the fit uses (0: the library's default) */
     GVec3 rotate;        /**< degrees about x, then y, then z (gprobe_rotation_xyz) */
@@ -38,6 +41,7 @@ typedef struct ProbeEnv {
     Light **lights;      /**< the lights it gave the scene (owned) */
     int nlights;
     ProbeDist dist;      /**< reference: the sampling distribution */
+    GProbeBasis basis;   /**< basis: the fitted approximation, its irradiance the ambient term */
     double seconds;      /**< loading and approximating */
     double error_mean;   /**< technique: mean irradiance error of the lights in percent (the paper's measure) */
 } ProbeEnv;
@@ -45,7 +49,7 @@ typedef struct ProbeEnv {
 /** Command-line replacements for the settings of the scene's `light probe` entries (NULL, 0 or -1: keep). */
 typedef struct ProbeOverride {
     const char *file;      /**< probe image, relative to the current directory */
-    const char *technique; /**< mediancut, adaptive, kmeans, irradiance or reference */
+    const char *technique; /**< a library technique or basis keyword, or reference */
     int count;             /**< number of lights */
     int samples;           /**< reference: samples per shading point */
     double scale;          /**< radiance scale */
@@ -64,6 +68,8 @@ int probe_override_apply(GLibrary *lib, const ProbeOverride *ov, GError *err);
 int probe_attach(Scene *s, ProbeEnv *env, GError *err);
 /** A direction of the probe in world space (turned by the entry's rotation). */
 GVec3 probe_to_world(const ProbeEnv *env, GVec3 d);
+/** A world direction in the probe's own frame (the inverse of probe_to_world). */
+GVec3 probe_from_world(const ProbeEnv *env, GVec3 d);
 /** Radiance seen along direction d leaving the scene (d in world space). */
 int probe_background(const ProbeEnv *env, GVec3 d, GColor *out);
 /** Prints one line per probe entry of the scene (file, size, technique, lights, time, irradiance error). */

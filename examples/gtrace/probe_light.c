@@ -9,6 +9,10 @@
  *             technique (include/generic/probe.h), each casting shadow rays like any directional light;
  *             reference: the whole probe, Monte Carlo with importance sampling, `samples` directions per
  *             shading point (probe_sample.c). Default adaptive, count 16, samples 64.
+ *             sh | sh-hanning | ambientcube | sg-naive | sg-ls | sg-nnls | sg-ambient: a basis of `count`
+ *             coefficients or lobes (include/generic/probe.h) whose irradiance E(n) at the shading normal
+ *             lights the surface as an ambient term, without shadows: the material reflects a light of
+ *             irradiance E(n) arriving along the normal (exactly the diffuse response for Lambert).
  * rotate      degrees about x, then y, then z turning the probe into the scene (gprobe_rotation_xyz):
  *             radiance the probe has from direction d arrives from R d. The probe's zenith is +z, so a
  *             y-up scene uses rotate <-90, 0, 0> (as `gprobe approx --rotate -90,0,0`). The techniques run on
@@ -36,6 +40,8 @@
 
 static const char *technique_name(int t)
 {
+    if (PROBE_IS_BASIS(t))
+        return gprobe_basis_name((GProbeBasisKind)(t - PROBE_BASIS(0)));
     return t == PROBE_REFERENCE ? "reference" : gprobe_technique_name((GProbeTechnique)t);
 }
 
@@ -47,10 +53,16 @@ static int technique_from_name(const char *name, int *t, GError *err)
         return G_OK;
     }
     GProbeTechnique pt;
+    GProbeBasisKind bk;
     GError e;
+    if (gprobe_basis_parse(name, &bk, &e) == G_OK) {
+        *t = PROBE_BASIS(bk);
+        return G_OK;
+    }
     if (gprobe_technique_parse(name, &pt, &e) != G_OK)
         return gerror_set(err, G_ERR_NOTFOUND, "unknown probe technique '%s' (expected mediancut, adaptive, kmeans, "
-                          "irradiance or reference)", name);
+                          "irradiance, variance, reference, or a basis: sh, sh-hanning, ambientcube, sg-naive, "
+                          "sg-ls, sg-nnls, sg-ambient)", name);
     *t = (int)pt;
     return G_OK;
 }
@@ -63,6 +75,8 @@ static const char *check_settings(const ProbeEnv *e)
 {
     if (e->technique == GPROBE_MEDIANCUT && (e->count & (e->count - 1)) != 0)
         return "median cut makes a power of two lights: give count 1, 2, 4, 8, ...";
+    if (PROBE_IS_BASIS(e->technique) && !gprobe_basis_size_ok((GProbeBasisKind)(e->technique - PROBE_BASIS(0)), e->count))
+        return "a basis takes count 4, 9, 16 or 25 (sh), 6 (ambientcube) or 1.." G_STR(GPROBE_SG_MAX_LOBES) " (sg)";
     if (!e->shadows && e->technique != PROBE_REFERENCE)
         return "shadows off is only for technique reference (directional lights always cast shadows)";
     if (e->technique == GPROBE_IRRADIANCE && e->count > GPROBE_FIT_MAX_LIGHTS)
@@ -81,6 +95,7 @@ static void release_products(ProbeEnv *e)
     e->lights = NULL;
     e->nlights = 0;
     probe_dist_free(&e->dist);
+    gprobe_basis_free(&e->basis);
     gprobe_destroy(e->probe);
     e->probe = NULL;
 }
@@ -210,7 +225,7 @@ GVec3 probe_to_world(const ProbeEnv *e, GVec3 v)
 }
 
 /* The inverse turn (R is a rotation: its transpose). */
-static GVec3 probe_from_world(const ProbeEnv *e, GVec3 v)
+GVec3 probe_from_world(const ProbeEnv *e, GVec3 v)
 {
     const double *R = e->R;
     return gvec3(R[0] * v.x + R[3] * v.y + R[6] * v.z, R[1] * v.x + R[4] * v.y + R[7] * v.z,
@@ -288,6 +303,37 @@ static int make_lights(Scene *s, ProbeEnv *e, GError *err)
     return rc;
 }
 
+/* A basis as one LIGHT_PROBE light: its irradiance is the ambient term (probe_sample.c). */
+static int make_basis(Scene *s, ProbeEnv *e, GError *err)
+{
+    GError le;
+    int rc = gprobe_basis_fit(e->probe, (GProbeBasisKind)(e->technique - PROBE_BASIS(0)), e->count, &e->basis, &le);
+    if (rc < 0)
+        return gerror_set(err, rc, "%s: light probe: %s", e->where, le.message);
+    e->error_mean = NAN;
+    GVec3 *normals = gmem_alloc(PROBE_ERROR_NORMALS * sizeof *normals);
+    double *truth = gmem_alloc(PROBE_ERROR_NORMALS * 3 * sizeof *truth);
+    double *approx = gmem_alloc(PROBE_ERROR_NORMALS * 3 * sizeof *approx);
+    if (normals && truth && approx) {
+        gprobe_fibonacci(PROBE_ERROR_NORMALS, normals);
+        if (gprobe_irradiance(e->probe, normals, PROBE_ERROR_NORMALS, truth, &le) == G_OK) {
+            GProbeErrors errs;
+            gprobe_basis_irradiance(&e->basis, normals, PROBE_ERROR_NORMALS, approx);
+            gprobe_compare(truth, approx, PROBE_ERROR_NORMALS, &errs);
+            e->error_mean = errs.mean_rel;
+        }
+    }
+    gmem_free(normals);
+    gmem_free(truth);
+    gmem_free(approx);
+    if (!(e->lights = gmem_calloc(1, sizeof *e->lights)))
+        return gerror_set(err, G_ERR_NOMEM, "%s: light probe: out of memory", e->where);
+    Light *l = light_new(s->model, LIGHT_PROBE);
+    if (l)
+        l->env = e;
+    return give_light(s, e, l, err);
+}
+
 int probe_attach(Scene *s, ProbeEnv *e, GError *err)
 {
     release_products(e);
@@ -311,6 +357,8 @@ int probe_attach(Scene *s, ProbeEnv *e, GError *err)
         }
         rc = give_light(s, e, l, err);
         e->error_mean = 0.0;
+    } else if (PROBE_IS_BASIS(e->technique)) {
+        rc = make_basis(s, e, err);
     } else {
         rc = make_lights(s, e, err);
     }
@@ -348,6 +396,9 @@ void probe_describe(const Scene *s, FILE *f)
                 technique_name(e->technique));
         if (e->technique == PROBE_REFERENCE)
             fprintf(f, ", %d samples per shading point%s", e->samples, e->shadows ? "" : ", no shadows");
+        else if (PROBE_IS_BASIS(e->technique))
+            fprintf(f, ", %d %s as an ambient term (no shadows), mean irradiance error %.2f%%", e->count,
+                    gprobe_basis_unit((GProbeBasisKind)(e->technique - PROBE_BASIS(0))), e->error_mean);
         else
             fprintf(f, ", %d lights (%d with energy), mean irradiance error %.2f%%", e->count, e->nlights,
                     e->error_mean);

@@ -130,10 +130,29 @@ double probe_dist_pdf(const ProbeDist *d, const GProbe *p, GVec3 dir)
     return (cdf[u + 1] - cdf[u]) / (total * row_omega(d->w, d->h, v));
 }
 
+/* A basis as an ambient term: the material reflects a light of the basis's irradiance E(n) arriving along the
+ * normal n (for Lambert exactly the diffuse albedo times E / pi); no shadow rays; SH's negative ringing gives
+ * no light. */
+static int probe_basis_shade(TraceCtx *c, const ProbeEnv *env, GSurfPoint *sp, GVec3 facing, GVec3 out_dir,
+                             LightTmp *t, GColor *result)
+{
+    int rc = gprobe_basis_irradiance_color(&env->basis, probe_from_world(env, facing), &t->illum);
+    if (rc == G_OK && env->scale != 1.0)
+        rc = gcolor_scale(&t->illum, &t->illum, env->scale);
+    if (rc == G_OK)
+        rc = gmaterial_reflection(sp->material, sp, facing, &t->illum, out_dir, &t->refl);
+    if (rc == G_OK)
+        rc = gcolor_add(result, result, &t->refl);
+    (void)c;
+    return rc;
+}
+
 int probe_light_shade(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const Media *media,
                       GVec3 out_dir, int opaque, LightTmp *t, GColor *result)
 {
     const ProbeEnv *env = l->env;
+    if (env && PROBE_IS_BASIS(env->technique))
+        return probe_basis_shade(c, env, sp, facing, out_dir, t, result);
     if (!env || !env->probe || !env->dist.row_cdf)
         return G_OK;
     const GProbe *p = env->probe;

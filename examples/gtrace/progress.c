@@ -1,4 +1,5 @@
-/* progress.c - a progress bar with the elapsed time and an estimate of the time left, drawn on stderr
+/* progress.c - a progress bar with the elapsed time and an estimate of the time left (the rate so far applied to
+ * the work left: the renderer takes its tiles in a shuffled order, so the rate is the image's average), drawn on stderr
  * only when stderr is a terminal (and not silenced), at most ten times a second. */
 #include "progress.h"
 
@@ -13,6 +14,15 @@ double now_seconds(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+double progress_remaining(const Progress *p, double now)
+{
+    if (p->done <= 0)
+        return -1.0;
+    if (p->done >= p->total)
+        return 0.0;
+    return (now - p->start) * (double)(p->total - p->done) / (double)p->done;
+}
+
 static void draw(const Progress *p, double now)
 {
     enum { WIDTH = 40 };
@@ -25,7 +35,7 @@ static void draw(const Progress *p, double now)
     double elapsed = now - p->start;
     if (p->done > 0 && p->done < p->total)
         fprintf(stderr, "\r[%s] %3.0f%%  %.1f s, about %.1f s left ", bar, 100.0 * f, elapsed,
-                elapsed * (double)(p->total - p->done) / (double)p->done);
+                progress_remaining(p, now));
     else
         fprintf(stderr, "\r[%s] %3.0f%%  %.1f s                    ", bar, 100.0 * f, elapsed);
     fflush(stderr);

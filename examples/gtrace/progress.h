@@ -12,6 +12,9 @@ typedef struct Progress {
 void progress_start(Progress *p, long total, int quiet);
 /** Adds finished work; redraws at most ten times a second (call from one thread at a time). */
 void progress_add(Progress *p, long n);
+/** The estimated seconds left at time now: the elapsed time times the work left over the work done (0 when
+ * finished, -1 before any work is done). */
+double progress_remaining(const Progress *p, double now);
 /** Ends the bar with a newline (a bar that did not reach the total is drawn once more to show where it stopped). */
 void progress_finish(Progress *p);
 /** Seconds on a monotonic clock. */

@@ -24,12 +24,16 @@ typedef struct RenderSettings {
     int bands;     /**< most wavelength groups a dispersive refraction splits into (0: BANDS_DEFAULT_CAP; 1: no
                         dispersion) */
     int integrator; /**< RENDER_WHITTED (the paper's Fig. 4, default) or RENDER_PATH (path.c) */
+    int crop[4];   /**< x0, y0, x1, y1: render only x0 <= x < x1, y0 <= y < y1 of the width x height image, each
+                        pixel as the full render has it; all 0: the whole image */
 } RenderSettings;
 
 /** Linear sRGB pixels (from the model's XYZ), row by row from the top. */
 typedef struct Framebuffer {
     int width, height;
     float *pixels; /**< 3 floats per pixel */
+    int x, y;                    /**< where pixel (0, 0) lies in the full image (a crop; else 0, 0) */
+    int full_width, full_height; /**< the full image's size */
 } Framebuffer;
 
 typedef struct RenderStats {
@@ -42,6 +46,9 @@ typedef struct RenderStats {
 
 /** Renders the scene (accel_build must have run). fb->pixels is allocated here (free with framebuffer_free). */
 int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, RenderStats *st, GError *err);
+/** The order in which the tiles are rendered: a fixed shuffle of 0..n-1 (the same for every run), so that the
+ * finished fraction of tiles follows the work done wherever the expensive parts of the image lie. */
+void render_tile_order(int n, int *order);
 /** Frees the pixels (NULL or a zeroed framebuffer: no-op). */
 void framebuffer_free(Framebuffer *fb);
 

@@ -90,6 +90,8 @@ Object *object_new(ShapeKind kind, GMaterial *material)
     o->kind = kind;
     o->material = gmaterial_ref(material);
     xform_identity(&o->xf);
+    o->expansion = 1.0;
+    o->proto_index = -1;
     return o;
 }
 
@@ -99,6 +101,7 @@ void object_free(Object *o)
         return;
     gmaterial_unref(o->material);
     mesh_free(o->mesh);
+    gmem_free(o->members);
     gmem_free(o);
 }
 
@@ -185,5 +188,86 @@ int object_cylinder(Object *o, GVec3 base, GVec3 top, double radius, int open, G
     o->radius = radius;
     o->open = open;
     frame_from_normal(o->normal, &o->t1, &o->t2);
+    return G_OK;
+}
+
+int object_quad(Object *o, GVec3 corner, GVec3 edge1, GVec3 edge2, GError *err)
+{
+    GVec3 n = gvec3_cross(edge1, edge2);
+    if (!finite3(corner) || !finite3(edge1) || !finite3(edge2) || !(gvec3_length(n) > 0.0) || !isfinite(gvec3_length(n)))
+        return gerror_set(err, G_ERR_INVALID, "quad: the edges must be finite and not parallel");
+    o->kind = SHAPE_QUAD;
+    o->center = corner;
+    o->t1 = edge1;
+    o->t2 = edge2;
+    o->normal = gvec3_normalize(n);
+    return G_OK;
+}
+
+int object_triangle(Object *o, GVec3 a, GVec3 b, GVec3 c, GError *err)
+{
+    GVec3 e1 = gvec3_sub(b, a), e2 = gvec3_sub(c, a), n = gvec3_cross(e1, e2);
+    if (!finite3(a) || !finite3(b) || !finite3(c) || !(gvec3_length(n) > 0.0) || !isfinite(gvec3_length(n)))
+        return gerror_set(err, G_ERR_INVALID, "triangle: the corners must be finite and not on one line");
+    o->kind = SHAPE_TRIANGLE;
+    o->center = a;
+    o->t1 = e1;
+    o->t2 = e2;
+    o->normal = gvec3_normalize(n);
+    return G_OK;
+}
+
+int object_is_shape(const Object *o) { return o->kind != SHAPE_GROUP && o->kind != SHAPE_INSTANCE; }
+
+/* grows [lo, hi] by the world bounds of a member (cached for groups and instances, so this is O(1)) */
+static void grow_by(GVec3 *lo, GVec3 *hi, const Object *m)
+{
+    GVec3 a, b;
+    object_world_bounds(m, &a, &b);
+    *lo = gvec3(fmin(lo->x, a.x), fmin(lo->y, a.y), fmin(lo->z, a.z));
+    *hi = gvec3(fmax(hi->x, b.x), fmax(hi->y, b.y), fmax(hi->z, b.z));
+}
+
+int object_group(Object *o, Object *const *members, int n, GError *err)
+{
+    if (n < 1)
+        return gerror_set(err, G_ERR_INVALID, "group: needs at least one object");
+    o->members = gmem_calloc((size_t)n, sizeof *o->members);
+    if (!o->members)
+        return gerror_set(err, G_ERR_NOMEM, "group: out of memory for %d members", n);
+    o->kind = SHAPE_GROUP;
+    o->nmembers = n;
+    o->lo = gvec3(INFINITY, INFINITY, INFINITY);
+    o->hi = gvec3(-INFINITY, -INFINITY, -INFINITY);
+    int shapes = 0, nesting = 0;
+    double expansion = 0.0;
+    for (int i = 0; i < n; i++) {
+        Object *m = members[i];
+        o->members[i] = m;
+        m->is_part = 1;
+        grow_by(&o->lo, &o->hi, m);
+        if (object_is_shape(m)) {
+            shapes = 1;
+        } else {
+            expansion += m->expansion;
+            nesting = m->nesting > nesting ? m->nesting : nesting;
+        }
+    }
+    o->nesting = nesting + 1;
+    o->expansion = expansion + shapes;
+    return G_OK;
+}
+
+int object_instance(Object *o, Object *proto, GError *err)
+{
+    (void)err;
+    o->kind = SHAPE_INSTANCE;
+    o->proto = proto;
+    proto->is_part = 1;
+    o->lo = gvec3(INFINITY, INFINITY, INFINITY);
+    o->hi = gvec3(-INFINITY, -INFINITY, -INFINITY);
+    grow_by(&o->lo, &o->hi, proto);
+    o->nesting = proto->nesting + 1;
+    o->expansion = proto->expansion;
     return G_OK;
 }

@@ -4,6 +4,7 @@
 #define GTRACE_SCENE_H
 
 #include "camera.h"
+#include "geometry.h"
 #include "light.h"
 #include "object.h"
 
@@ -35,8 +36,12 @@ typedef struct Scene {
     /* acceleration (accel.c) */
     struct RTCDeviceTy *device; /**< an RTCDevice */
     struct RTCSceneTy *rtc;     /**< an RTCScene (NULL: accel_build has not run) */
-    Object **by_geom;      /**< geometry id -> object */
+    Object **by_geom;      /**< geometry id -> object of the top-level scene (NULL for an instance) */
+    Instance *inst_by_geom; /**< geometry id -> placement (proto -1 for a shape of the top-level scene) */
     unsigned nby_geom;
+    struct AccelProto *protos; /**< prototype scenes of groups and instanced shapes */
+    int nprotos, cap_protos;
+    unsigned ninstances;    /**< Embree instances in the top-level scene */
     const struct ProbeEnv *env; /**< light probe seen by rays that leave the scene (NULL: background) */
 } Scene;
 

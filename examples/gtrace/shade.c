@@ -79,10 +79,7 @@ void media_cross(const Media *in, const GMaterial *mat, int entering, Media *out
 void surfpoint_fill(TraceCtx *c, const Ray *r, const Hit *h, const Media *media, GSurfPoint *sp, GVec3 *facing)
 {
     HitGeom g;
-    if (h->obj->kind == SHAPE_MESH)
-        mesh_hit_geom(h->obj, r, h, &g);
-    else
-        shape_hit_geom(h->obj, r, h, &g);
+    hit_geom(r, h, &g);
     gsurfpoint_init(sp, c->scene->model, c->scratch);
     sp->point = g.p;
     sp->object_point = g.op;
@@ -116,7 +113,7 @@ void surfpoint_fill(TraceCtx *c, const Ray *r, const Hit *h, const Media *media,
     GVec3 across = gvec3_cross(g.n_out, along);
     uv_of(g.dpdu, g.dpdv, gvec3_scale(along, sp->footprint), sp->uv_axis1);
     uv_of(g.dpdu, g.dpdv, gvec3_scale(across, w), sp->uv_axis2);
-    sp->material = h->obj->material;
+    sp->material = h->material;
     if (sp->entering) {
         sp->from = media_top(media);
         sp->to = sp->material;
@@ -290,7 +287,10 @@ int trace_ray(TraceCtx *c, const Ray *r, const Media *media, int depth, GColor *
 {
     Hit h;
     c->rays++;
-    if (!accel_intersect(c->scene, r, &h))
+    int hit = accel_intersect(c->scene, r, &h), seen_rc;
+    if (depth == 0 && light_seen(c->scene, r, hit ? h.t : INFINITY, out, &seen_rc))
+        return seen_rc;
+    if (!hit)
         return c->scene->env ? probe_background(c->scene->env, r->d, out) : gcolor_copy(out, &c->scene->background);
     GSurfPoint sp;
     GVec3 facing;

@@ -3,7 +3,10 @@
  *
  * Surface indices: box faces 0..5 = -x, +x, -y, +y, -z, +z; cylinder 0 side, 1 base cap, 2 top cap;
  * every other shape 0. (u,v): sphere longitude/latitude in [0,1] (v = 1 at the +y pole); plane: distance
- * along its frame; box faces, disc and caps: [0,1] across; cylinder side: angle and height in [0,1]. */
+ * along its frame; box faces, disc and caps: [0,1] across; cylinder side: angle and height in [0,1]; quad:
+ * corner + u edge1 + v edge2; triangle: the barycentrics of b and c. The full table with orientations is in
+ * examples/gtrace/README.md ("Surface parameters and surface indices"). hit_geom takes a hit inside an
+ * instance through the placement's transform. */
 #include "geometry.h"
 
 #include <math.h>
@@ -172,7 +175,11 @@ int shape_intersect(const Object *o, GVec3 ro, GVec3 rd, double tmin, double tma
     case SHAPE_CYLINDER:
         return hit_cylinder(o, ro, rd, tmin, tmax, t, surface);
     case SHAPE_MESH:
-        break;
+    case SHAPE_QUAD:
+    case SHAPE_TRIANGLE:
+    case SHAPE_GROUP:
+    case SHAPE_INSTANCE:
+        break; /* Embree's own geometry and instances */
     }
     return 0;
 }
@@ -220,6 +227,19 @@ void shape_bounds(const Object *o, GVec3 *lo, GVec3 *hi)
     case SHAPE_MESH:
         for (int i = 0; i < o->mesh->nverts; i++)
             bounds_grow(lo, hi, gvec3(o->mesh->pos[3 * i], o->mesh->pos[3 * i + 1], o->mesh->pos[3 * i + 2]));
+        break;
+    case SHAPE_QUAD:
+        bounds_grow(lo, hi, gvec3_add(gvec3_add(o->center, o->t1), o->t2));
+        /* fall through */
+    case SHAPE_TRIANGLE:
+        bounds_grow(lo, hi, o->center);
+        bounds_grow(lo, hi, gvec3_add(o->center, o->t1));
+        bounds_grow(lo, hi, gvec3_add(o->center, o->t2));
+        break;
+    case SHAPE_GROUP:
+    case SHAPE_INSTANCE:
+        *lo = o->lo; /* cached by the constructor */
+        *hi = o->hi;
         break;
     }
 }
@@ -358,6 +378,10 @@ static void local_geom(const Object *o, int surface, GVec3 *p, GVec3 *n, GVec3 *
         break;
     }
     case SHAPE_MESH:
+    case SHAPE_QUAD:
+    case SHAPE_TRIANGLE:
+    case SHAPE_GROUP:
+    case SHAPE_INSTANCE:
         break;
     }
 }
@@ -382,8 +406,22 @@ void hit_geom_to_world(const Object *o, GVec3 op, GVec3 n, GVec3 ns, GVec3 dpdu,
     }
 }
 
+/* quads and triangles: Embree's (u, v) are the parameters of center + u t1 + v t2 */
+static void flat_hit_geom(const Object *o, const Hit *h, HitGeom *g)
+{
+    GVec3 op = gvec3_madd(gvec3_madd(o->center, o->t1, h->bu), o->t2, h->bv);
+    g->surface = 0;
+    g->u = h->bu;
+    g->v = h->bv;
+    hit_geom_to_world(o, op, o->normal, o->normal, o->t1, o->t2, g);
+}
+
 void shape_hit_geom(const Object *o, const Ray *r, const Hit *h, HitGeom *g)
 {
+    if (o->kind == SHAPE_QUAD || o->kind == SHAPE_TRIANGLE) {
+        flat_hit_geom(o, h, g);
+        return;
+    }
     GVec3 pw = gvec3_madd(r->o, r->d, h->t);
     GVec3 op = o->has_xf ? xform_inv_point(&o->xf, pw) : pw;
     GVec3 n = gvec3(0, 0, 1), dpdu = gvec3(1, 0, 0), dpdv = gvec3(0, 1, 0);
@@ -393,4 +431,25 @@ void shape_hit_geom(const Object *o, const Ray *r, const Hit *h, HitGeom *g)
     g->u = u;
     g->v = v;
     hit_geom_to_world(o, op, n, n, dpdu, dpdv, g);
+}
+
+void hit_geom(const Ray *r, const Hit *h, HitGeom *g)
+{
+    const Instance *in = h->inst;
+    Ray pr = *r;
+    if (in) { /* the ray in the prototype's space: affine, so t is unchanged */
+        pr.o = xform_inv_point(&in->xf, r->o);
+        pr.d = xform_inv_vector(&in->xf, r->d);
+    }
+    if (h->obj->kind == SHAPE_MESH)
+        mesh_hit_geom(h->obj, &pr, h, g);
+    else
+        shape_hit_geom(h->obj, &pr, h, g);
+    if (in) {
+        g->p = xform_point(&in->xf, g->p);
+        g->n_out = gvec3_normalize(xform_normal(&in->xf, g->n_out));
+        g->n_smooth = gvec3_normalize(xform_normal(&in->xf, g->n_smooth));
+        g->dpdu = xform_vector(&in->xf, g->dpdu);
+        g->dpdv = xform_vector(&in->xf, g->dpdv);
+    }
 }

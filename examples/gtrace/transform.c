@@ -113,3 +113,16 @@ void frame_from_normal(GVec3 n, GVec3 *t1, GVec3 *t2)
     *t1 = a;
     *t2 = gvec3_cross(n, a);
 }
+
+static void mul34(const double a[3][4], const double b[3][4], double r[3][4])
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++)
+            r[i][j] = a[i][0] * b[0][j] + a[i][1] * b[1][j] + a[i][2] * b[2][j] + (j == 3 ? a[i][3] : 0.0);
+}
+
+void xform_compose(const Xform *outer, const Xform *inner, Xform *out)
+{
+    mul34(outer->m, inner->m, out->m);
+    mul34(inner->inv, outer->inv, out->inv);
+}

@@ -19,6 +19,8 @@ int xform_rotate(Xform *x, GVec3 axis, double degrees);
 int xform_scale(Xform *x, GVec3 s);
 /** x = x followed by the affine matrix rows (3x4). */
 int xform_matrix(Xform *x, const double rows[3][4]);
+/** out = outer after inner (inner applied first); out may not alias. */
+void xform_compose(const Xform *outer, const Xform *inner, Xform *out);
 /** Points, vectors and normals from object to world space and back. */
 GVec3 xform_point(const Xform *x, GVec3 p);
 GVec3 xform_vector(const Xform *x, GVec3 v);

@@ -226,6 +226,9 @@ GENERIC_API GENERIC_NODISCARD int gcolor_fill(GColor *out, double value);
  * matrix operand: the model's definition (bispectral: its diagonal, as pow), G_ERR_UNSUPPORTED in a plug-in
  * model that gives no exp of its own. */
 GENERIC_API GENERIC_NODISCARD int gcolor_exp(GColor *out, const GColor *a, double s);
+/** Bytes of storage one value of the model takes (what gcolor_alloc allocates): for budgets of renderers
+ * that keep many values. */
+GENERIC_API size_t gcolormodel_value_bytes(const GColorModel *m);
 /** Number of wavelength bands of the model (>= 1; see GColorModelClass.band_count). */
 GENERIC_API int gcolormodel_band_count(const GColorModel *m);
 /** out = the mask of band `band` of out's model: mul(mask, light) keeps the band's light; the masks of all
@@ -259,6 +262,24 @@ GENERIC_API GENERIC_NODISCARD int gcolor_from_rgb(GColor *c, const double rgb[3]
 GENERIC_API GENERIC_NODISCARD int gcolor_from_reradiation(GColor *c, const GReradiation *r, GError *err);
 /** Converts a value of one model into another (through a direct formula or the nm spectrum). */
 GENERIC_API GENERIC_NODISCARD int gcolor_convert(GColor *dst, const GColor *src, GColorRole role);
+
+/* ---- range after conversion ---- */
+
+/** The model's own conversion error: *lo and *hi get the smallest and the largest sample that any colour of
+ * the sRGB cube [0, 1]^3 takes after gcolor_from_rgb in role (exact: from_rgb is linear, so the extremes per
+ * sample are sums of the positive or the negative parts of the three primaries' samples). An in-gamut colour
+ * whose largest RGB component is s has every sample within [*lo * s, *hi * s]. rgb: exactly 0 and 1 for a
+ * reflectance. Measured (reflectance): spectrum at 5 nm -0.00005..1.00013, bispectral at 10 nm -0.0030..1.0030,
+ * spectrum9 -0.129..1.129 at its samples (its spline reaches -0.21..1.21 between them). A vector is read as
+ * nvalues samples. G_ERR_NOMEM when no temporary can be had. */
+GENERIC_API GENERIC_NODISCARD int gcolormodel_rgb_range(const GColorModel *m, GColorRole role, double *lo, double *hi);
+/** Maps a vector into the model's range: negative samples become 0, and the value is then scaled so that its
+ * luminance (Y of gcolor_to_xyz in role) is what it was (kept as it is when either luminance is not > 0).
+ * *mapped (may be NULL) gets 1 when a sample lay further below 0 than the model's conversion error allows for
+ * a colour of this size (gcolormodel_rgb_range, times the value's largest RGB component): the value was out of
+ * the model's gamut, which a caller may want to report; 0 when nothing or only conversion error was clipped.
+ * Matrices are left alone. G_ERR_INVALID for a non-finite sample. */
+GENERIC_API GENERIC_NODISCARD int gcolor_clip_to_gamut(GColor *c, GColorRole role, int *mapped);
 
 /* ---- colorimetry helpers (lib/cie.c) ---- */
 

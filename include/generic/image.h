@@ -65,6 +65,10 @@ enum {
 /** Options for gimage_write; NULL or a zeroed struct means exposure 0. */
 typedef struct GImageWriteOptions {
     double exposure; /**< in stops: colour channels are multiplied by 2^exposure before encoding (all formats) */
+    /** The image as a region of a larger one (a crop): its top-left pixel lies at (x, y) of a full_width x
+     * full_height image. Formats with a data and a display window (OpenEXR) record it; the others ignore it.
+     * full_width 0: the image is the whole picture. */
+    int x, y, full_width, full_height;
 } GImageWriteOptions;
 
 /** Allocates a black image of the given size (channels 1..4); G_ERR_INVALID for bad sizes,

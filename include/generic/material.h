@@ -26,7 +26,11 @@
  * material renders: delta lobes from reflection_dir and refraction_dir, weighted by the brightness of what
  * they pass on; a cosine lobe weighted by the brightness of diffuse(); without a diffuse colour a uniform
  * hemisphere lobe for the rest (1 - the delta lobes' weights) with reflection() as its value — correct for
- * any material, only noisier than a material's own sampling; is_delta: no. */
+ * any material, only noisier than a material's own sampling; is_delta: no.
+ * pdf is a density over the whole sphere of directions: a lobe about the mirror direction may reach below the
+ * surface, and sample() then returns such a direction (1) with a black weight, counted by pdf, so that pdf
+ * integrates to the share of draws that give a non-delta direction (1 - P(delta) - P(nothing drawn)). A material
+ * that reflects nothing (an emitter) draws nothing and is delta: a light sample would reflect nothing. */
 #ifndef GENERIC_MATERIAL_H
 #define GENERIC_MATERIAL_H
 
@@ -158,6 +162,11 @@ GENERIC_API void goptics_frame(GVec3 n, GVec3 *t, GVec3 *b);
 GENERIC_API GVec3 goptics_sample_cosine(GVec3 n, double u1, double u2);
 /** A uniformly distributed direction over the hemisphere about n from u1, u2 in [0, 1) (pdf 1 / (2 pi)). */
 GENERIC_API GVec3 goptics_sample_hemisphere(GVec3 n, double u1, double u2);
+/** A direction about the unit axis a distributed as cos^e(alpha) (alpha its angle with a, e >= 0) from u1, u2 in
+ * [0, 1): a Phong lobe; its density is goptics_lobe_pdf. */
+GENERIC_API GVec3 goptics_sample_lobe(GVec3 a, double e, double u1, double u2);
+/** The density per unit solid angle of goptics_sample_lobe: (e + 1) / (2 pi) cos^e(alpha), 0 behind the axis. */
+GENERIC_API double goptics_lobe_pdf(GVec3 a, double e, GVec3 dir);
 
 /** 1 when out is the ideal mirror direction of in about n (within 1e-6 in cosine). */
 GENERIC_API GENERIC_NODISCARD int gmaterial_is_mirror_pair(GVec3 in, GVec3 n, GVec3 out);

@@ -39,6 +39,17 @@ GENERIC_API GENERIC_NODISCARD int gmat_one_color_create(const GMaterialClass *cl
  * normal, else 0 (clamped at 0); *n receives the shading normal (gsurfpoint_normal). */
 GENERIC_API double gmat_cos_in(GSurfPoint *sp, GVec3 in, GVec3 out, GVec3 *n);
 
+/** The weight of a sampled direction (material.h): weight = value(in, white, out) / pdf, value being the
+ * material's reflection() (transmit == 0) or refraction() with rel_index (transmit != 0), white from sp's arena
+ * (or the thread's). For a material's sample(): its weight is then consistent with its methods by construction. */
+GENERIC_API GENERIC_NODISCARD int gmat_sample_weight(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out,
+                                                     const GColor *rel_index, int transmit, double pdf,
+                                                     GColor *weight);
+
+/** Picks lobe i of n (weights w[i] >= 0, not all 0) with probability w[i] / sum from u in [0, 1) and remaps u to
+ * [0, 1) within the lobe (*u); returns i and the probability in *p. */
+GENERIC_API GENERIC_NODISCARD int gmat_pick_lobe(const double *w, int n, double *u, double *p);
+
 #ifdef __cplusplus
 }
 #endif

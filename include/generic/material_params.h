@@ -17,12 +17,32 @@ extern "C" {
 #endif
 
 /** Checks a parameter colour and copies it into new heap storage of model m (dst must be freed with
- * gcolor_free, and is left cleared on failure). Every sample must be finite and >= 0, and with max > 0 also
- * <= max (for matrices the brightness is compared with max). A colour of another model is converted through
- * the nm spectrum with the given role and clamped to [0, max] afterwards. A complaint reads
- * "<material>: <param> ..." and names param (gerror_set_param). */
+ * gcolor_free, and is left cleared on failure). Every sample must be finite and within the range
+ * gmatparam_range gives: >= 0 and, with max > 0, <= max, each widened by the conversion error of src's model
+ * (gcolormodel_rgb_range), so that every in-gamut colour a file can write is accepted in every model; values
+ * within that error are clamped into [0, max]. A re-radiation matrix (bispectral) needs entries >= 0 and its
+ * brightness <= max (widened the same way). A colour of another model is converted through the nm spectrum
+ * with the given role and clamped the same way. Above max in a band: in a model without matrices (no
+ * from_reradiation slot: rgb, spectrum9, spectrum) a reflectance that exceeds max in some band is what the
+ * fold of a re-radiation matrix looks like (blue light re-radiated as red: HERPIORA folds to 2.19 in rgb), and
+ * it is accepted, unclamped, when its energy (gmatparam_energy) is <= max; in a model with matrices a vector
+ * is a plain reflectance and stays <= max in every band, and a matrix needs its energy per excitation sample
+ * <= max. The same physical rule in every model: energy is conserved. A complaint reads "<material>: <param> has the value V at sample
+ * K (NM nm) (must be ...)" (or names the matrix's entry or brightness) and names param (gerror_set_param). */
 GENERIC_API GENERIC_NODISCARD int gmatparam_color(const GColorModel *m, const GColor *src, GColorRole role, double max, const char *material,
                     const char *param, GColor *dst, GError *err);
+/** The range a parameter colour c of role may take in its own model: [0, max] (max <= 0: no upper bound)
+ * widened on both sides by the model's conversion error (gcolormodel_rgb_range) for a colour of size max (for
+ * max <= 0, of c's largest RGB component), plus float rounding. *hi is INFINITY without an upper bound. */
+GENERIC_API GENERIC_NODISCARD int gmatparam_range(const GColor *c, GColorRole role, double max, double *lo, double *hi);
+/** The energy a reflectance sends out per unit arriving, under equal-energy light: a vector, the mean of its
+ * reflectance spectrum (gcolor_to_nm) over GNM_MIN..GNM_MAX; a re-radiation matrix, its largest column sum (all
+ * it sends out, over every emission sample, per unit arriving at one excitation sample; that sample in *at,
+ * which may be NULL). Energy conservation is this <= 1. */
+GENERIC_API double gmatparam_energy(const GColor *c, int *at);
+/** 1 when a vector reflectance c that exceeds hi in some band may be the fold of re-radiation: c's model has
+ * no matrices (no from_reradiation slot) and c's energy (gmatparam_energy) is <= hi; else 0. */
+GENERIC_API int gmatparam_fold_ok(const GColor *c, double hi);
 /** Largest sample of a vector value (its index in *at, may be NULL), the brightness of a matrix. */
 GENERIC_API double gmatparam_max(const GColor *c, int *at);
 /** For a parse routine: unless c already holds a colour (one the file gave), makes c the grey `grey` (an sRGB

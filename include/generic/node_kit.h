@@ -98,6 +98,16 @@ GENERIC_API GENERIC_NODISCARD int gtexblend_normal(const GTexBlend *b, GSurfPoin
 GENERIC_API GENERIC_NODISCARD int gtexblend_diffuse(const GTexBlend *b, GSurfPoint *sp, GColor *result);
 /** 1 when every child of non-zero weight is opaque. */
 GENERIC_API GENERIC_NODISCARD int gtexblend_opaque(const GTexBlend *b, GSurfPoint *sp);
+/** Sampling of the blend as a mixture: child i is chosen with probability q_i = |w_i| / sum |w_j| (u1 remapped)
+ * and draws the direction. A delta sample keeps the child's direction, pdf q_i * the child's, weight w_i / q_i
+ * times the child's; otherwise pdf = sum q_j pdf_j(in) (gtexblend_pdf) and the weight is the blend's own value
+ * (gtexblend_reflection or _refraction of white) / pdf, so the estimate is that of the blend's methods. */
+GENERIC_API GENERIC_NODISCARD int gtexblend_sample(const GTexBlend *b, GSurfPoint *sp, GVec3 out, const GColor *rel_index,
+                                                   double u1, double u2, GMaterialSample *s, GColor *weight);
+/** The mixture's density: sum q_j pdf_j(in, out) (see gtexblend_sample). */
+GENERIC_API double gtexblend_pdf(const GTexBlend *b, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index);
+/** 1 when every child of non-zero weight is delta. */
+GENERIC_API GENERIC_NODISCARD int gtexblend_is_delta(const GTexBlend *b, GSurfPoint *sp);
 
 /** The class of a node that answers each call with a blend of its children chosen by `pick`: its material
  * methods are the gtexblendnode_* below (GTEXBLEND_NODE_METHODS fills them in), so the node itself writes only
@@ -136,13 +146,24 @@ GENERIC_API GENERIC_NODISCARD int gtexblendnode_diffuse(const GMaterial *self, G
 /** See gtexblendnode_reflection. */
 GENERIC_API GENERIC_NODISCARD int gtexblendnode_opaque(const GMaterial *self, GSurfPoint *sp);
 
-/** The eleven material methods of a GTexBlendClass, as designated initialisers for its `base`. */
+/** Sampling of a GTexBlendClass node: the blend its pick gives for GNODE_REFLECTION (the blend its reflection
+ * is), then gtexblend_sample. */
+GENERIC_API GENERIC_NODISCARD int gtexblendnode_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index,
+                                                       double u1, double u2, GMaterialSample *s, GColor *weight);
+/** See gtexblendnode_sample. */
+GENERIC_API double gtexblendnode_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index);
+/** See gtexblendnode_sample. */
+GENERIC_API GENERIC_NODISCARD int gtexblendnode_is_delta(const GMaterial *self, GSurfPoint *sp);
+
+/** The fourteen material methods of a GTexBlendClass (the eleven and the sampling slots), as designated
+ * initialisers for its `base`. */
 #define GTEXBLEND_NODE_METHODS                                                                                   \
     .reflection = gtexblendnode_reflection, .refraction = gtexblendnode_refraction,                             \
     .refraction_index = gtexblendnode_refraction_index, .reflection_dir = gtexblendnode_reflection_dir,         \
     .refraction_dir = gtexblendnode_refraction_dir, .emission = gtexblendnode_emission,                         \
     .ambient = gtexblendnode_ambient, .absorption = gtexblendnode_absorption, .normal = gtexblendnode_normal,   \
-    .diffuse = gtexblendnode_diffuse, .opaque = gtexblendnode_opaque
+    .diffuse = gtexblendnode_diffuse, .opaque = gtexblendnode_opaque, .sample = gtexblendnode_sample,           \
+    .pdf = gtexblendnode_pdf, .is_delta = gtexblendnode_is_delta
 
 /* ---- temporaries ---- */
 
@@ -206,6 +227,13 @@ GENERIC_API GENERIC_NODISCARD int gtexchild_normal(const GMaterial *self, GSurfP
 GENERIC_API GENERIC_NODISCARD int gtexchild_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result);
 /** Pass-through: the child's opacity. */
 GENERIC_API GENERIC_NODISCARD int gtexchild_opaque(const GMaterial *self, GSurfPoint *sp);
+/** Pass-through: the child's sampling (a bump node's: the child sees the bumped normal through sp). */
+GENERIC_API GENERIC_NODISCARD int gtexchild_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index,
+                                                   double u1, double u2, GMaterialSample *s, GColor *weight);
+/** Pass-through: the child's density. */
+GENERIC_API double gtexchild_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index);
+/** Pass-through: the child's is_delta. */
+GENERIC_API GENERIC_NODISCARD int gtexchild_is_delta(const GMaterial *self, GSurfPoint *sp);
 
 /* ---- nodes over a list of children ---- */
 

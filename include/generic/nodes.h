@@ -84,6 +84,17 @@ typedef enum GSplineBasis {
 GENERIC_API GENERIC_NODISCARD int gnode_spline_create(GMaterial *const *children, int n, GGenerator *t, GSplineBasis basis, GMaterial **out,
                         GError *err);
 
+/** Most keys a spline's ramp may have. */
+#define GSPLINE_MAX_KEYS 1024
+
+/** spline over a ramp: child i at t = keys[i] (2 <= n <= GSPLINE_MAX_KEYS keys in [0, 1], none smaller than the
+ * one before; equal keys make a step). Between keys k and k + 1, t is mapped linearly onto the segment of
+ * children k, k + 1 of the uniform spline, so the linear basis interpolates linearly between the keys and
+ * Catmull-Rom passes through every key; below the first key and above the last the end children hold. keys
+ * is copied. */
+GENERIC_API GENERIC_NODISCARD int gnode_spline_create_keyed(GMaterial *const *children, const double *keys, int n, GGenerator *t,
+                                                  GSplineBasis basis, GMaterial **out, GError *err);
+
 /** bump: Blinn's bump mapping. The generator is a height field h; the surface is displaced by
  * strength * h along its normal, and the normal method returns the normal of the displaced surface:
  *   N' = |Pu x Pv| n + s (h_u (n x Pv) + h_v (Pu x n)),  normalised,

@@ -143,6 +143,8 @@ typedef struct GProbeErrors {
     double max_rel;
     double mean_norm; /**< |E' - E| / max over normals of E (normalised by the largest irradiance) */
     double max_norm;
+    double smape;     /**< symmetric mean absolute percentage error, 100 mean of 2 |E' - E| / (|E'| + |E|) over
+                           normals and channels (0..200; Probulator's reports use the same form) */
 } GProbeErrors;
 
 /** Compares approximate irradiances with the ground truth at m normals (3 doubles each). Normals whose
@@ -157,10 +159,11 @@ typedef enum GProbeTechnique {
     GPROBE_ADAPTIVE,      /**< adaptive median cut: any count */
     GPROBE_KMEANS,        /**< LightGen-style energy-weighted k-means */
     GPROBE_IRRADIANCE,    /**< irradiance optimisation (Madsen et al. 2003) */
+    GPROBE_VARIANCE,      /**< variance-minimising median cut (Viriyothai & Debevec 2009): any count */
     GPROBE_TECHNIQUE_COUNT
 } GProbeTechnique;
 
-/** Keyword of a technique: "mediancut", "adaptive", "kmeans", "irradiance". */
+/** Keyword of a technique: "mediancut", "adaptive", "kmeans", "irradiance", "variance". */
 GENERIC_API const char *gprobe_technique_name(GProbeTechnique t);
 /** Technique for a keyword; G_ERR_NOTFOUND (message lists the names) for unknown ones. */
 GENERIC_API GENERIC_NODISCARD int gprobe_technique_parse(const char *name, GProbeTechnique *t, GError *err);
@@ -216,6 +219,25 @@ GENERIC_API GENERIC_NODISCARD int gprobe_kmeans(const GProbe *p, int n, const GP
 GENERIC_API GENERIC_NODISCARD int gprobe_irradiance_fit(const GProbe *p, int n, const GProbeOptions *opt, GProbeLight *lights,
                           GProbeFitReport *report, GError *err);
 
+/** Variance-minimising median cut (Viriyothai & Debevec 2009): regions of the lat-long image are split one
+ * at a time, always the split (either axis, any position) that lowers the summed within-region variance
+ * most (see gprobe_region_variance); a light at each region's energy centroid with its summed Q. */
+GENERIC_API GENERIC_NODISCARD int gprobe_variance_cut(const GProbe *p, int n, GProbeLight *lights, GError *err);
+
+/** A rectangle of the lat-long image: pixels [u0, u1) x [v0, v1). */
+typedef struct GProbeRect {
+    int u0, v0, u1, v1;
+} GProbeRect;
+
+/** The n regions a cutting technique (GPROBE_MEDIANCUT, GPROBE_ADAPTIVE or GPROBE_VARIANCE) makes, in the
+ * order of its lights. G_ERR_INVALID for other techniques or counts they cannot make. */
+GENERIC_API GENERIC_NODISCARD int gprobe_cut_regions(const GProbe *p, GProbeTechnique t, int n, GProbeRect *rects, GError *err);
+
+/** Energy-weighted variance of the pixel positions of a region: sum of e |x - mean x|^2 over its pixels,
+ * e the luminance of Q, x = ((u + 0.5 - W / 2) sin theta_v, v + 0.5) in pixels (the sinusoidal projection,
+ * where distances are angles and areas solid angles). The measure the variance cut minimises. */
+GENERIC_API double gprobe_region_variance(const GProbe *p, const GProbeRect *r);
+
 /* ---- spherical harmonics reference ---- */
 
 /** Nine spherical-harmonic coefficients of the radiance per channel (Ramamoorthi & Hanrahan 2001), in the
@@ -229,6 +251,113 @@ GENERIC_API void gprobe_sh9_project(const GProbe *p, GProbeSH9 *sh);
 /** Irradiance the nine coefficients give at m normals (3 doubles each). */
 GENERIC_API void gprobe_sh9_irradiance(const GProbeSH9 *sh, const GVec3 *normals, int m, double *E);
 
+/* ---- basis-function approximations (lib/probe/basis.c and one file per basis) ---- */
+
+/** Highest spherical-harmonic order (band) of GProbeSH. */
+#define GPROBE_SH_MAX_ORDER 4
+/** Coefficients of an order-L expansion: (L + 1)^2. */
+#define GPROBE_SH_COEFFS(L) (((L) + 1) * ((L) + 1))
+/** Most lobes of a spherical-Gaussian fit. */
+#define GPROBE_SG_MAX_LOBES 128
+
+/** Real spherical harmonics of the radiance up to order `order`, index l (l + 1) + m (the order of
+ * GProbeSH9 for l <= 2; no Condon-Shortley phase), per RGB channel. */
+typedef struct GProbeSH {
+    int order;
+    double c[GPROBE_SH_COEFFS(GPROBE_SH_MAX_ORDER)][3];
+} GProbeSH;
+
+/** Projects the radiance onto the harmonics of order <= order (1..GPROBE_SH_MAX_ORDER). */
+GENERIC_API GENERIC_NODISCARD int gprobe_sh_project(const GProbe *p, int order, GProbeSH *sh, GError *err);
+/** Multiplies band l by the Hanning window (1 + cos(pi l / (2 order + 1))) / 2 (Sloan, "Stupid Spherical
+ * Harmonics Tricks", 2008): less ringing, a blurrier result. The width 2 L + 1 is the one that lowers the
+ * negative irradiance a point light gives order 2 most (to -0.076 of the mean from -0.159; width L + 1,
+ * which damps band 1 more, rings more: -0.19). */
+GENERIC_API void gprobe_sh_window_hanning(GProbeSH *sh);
+/** The real harmonics of order <= order at a unit direction (GPROBE_SH_COEFFS(order) values). */
+GENERIC_API void gprobe_sh_basis(int order, GVec3 d, double *y);
+/** Irradiance at m normals: sum over l, m of A_l c_lm Y_lm(n), A_l the clamped cosine's bands
+ * (pi, 2 pi / 3, pi / 4, 0, -pi / 24). */
+GENERIC_API void gprobe_sh_irradiance(const GProbeSH *sh, const GVec3 *normals, int m, double *E);
+/** Radiance the expansion gives along a unit direction. */
+GENERIC_API void gprobe_sh_radiance(const GProbeSH *sh, GVec3 d, double rgb[3]);
+
+/** Ambient cube (McTaggart, Half-Life 2, 2004): six colours on the axes, E(n) = sum over axes of
+ * n_i^2 C[axis i, side of sign(n_i)], order +x -x +y -y +z -z. */
+typedef struct GProbeAmbientCube {
+    double c[6][3];
+} GProbeAmbientCube;
+/** Fits the six colours to the ground-truth irradiance at fit_normals normals (0: 2000) by least squares. */
+GENERIC_API GENERIC_NODISCARD int gprobe_ambient_cube_fit(const GProbe *p, int fit_normals, GProbeAmbientCube *cube, GError *err);
+/** The cube's value along a unit direction: the irradiance on a surface with that normal. */
+GENERIC_API void gprobe_ambient_cube_eval(const GProbeAmbientCube *cube, GVec3 d, double rgb[3]);
+
+/** A spherical Gaussian lobe: radiance amp exp(sharpness (axis . d - 1)). */
+typedef struct GProbeSGLobe {
+    GVec3 axis;
+    double sharpness;
+    double amp[3];
+} GProbeSGLobe;
+
+/** How the lobes' amplitudes are found (axes and sharpnesses are the same for all: see lib/probe/sg_fit.c). */
+typedef enum GProbeSGFit {
+    GPROBE_SG_NAIVE = 0, /**< each lobe takes its cluster's power */
+    GPROBE_SG_LS,        /**< least squares on the radiance */
+    GPROBE_SG_NNLS,      /**< non-negative least squares */
+    GPROBE_SG_LS_AMBIENT /**< least squares with a constant ambient term beside the lobes */
+} GProbeSGFit;
+
+/** Fits n lobes (1..GPROBE_SG_MAX_LOBES); ambient (3 values, may be NULL unless GPROBE_SG_LS_AMBIENT) gets
+ * the constant term (0 for the other fits). */
+GENERIC_API GENERIC_NODISCARD int gprobe_sg_fit(const GProbe *p, int n, GProbeSGFit fit, GProbeSGLobe *lobes, double ambient[3],
+                  GError *err);
+/** Irradiance of a lobe of amplitude 1 on a surface whose normal makes cosine mu with the axis (numerical
+ * quadrature of the exact integral, accurate to about 1e-6 relative). */
+GENERIC_API double gprobe_sg_lobe_irradiance(double sharpness, double mu);
+
+/** The basis techniques gprobe compares beside the lights. */
+typedef enum GProbeBasisKind {
+    GPROBE_BASIS_SH = 0,       /**< "sh": order L, n = (L + 1)^2 coefficients, L = 1..4 */
+    GPROBE_BASIS_SH_HANNING,   /**< "sh-hanning": the same, Hanning-windowed */
+    GPROBE_BASIS_AMBIENT_CUBE, /**< "ambientcube": n = 6 */
+    GPROBE_BASIS_SG_NAIVE,     /**< "sg-naive": n lobes */
+    GPROBE_BASIS_SG_LS,        /**< "sg-ls" */
+    GPROBE_BASIS_SG_NNLS,      /**< "sg-nnls" */
+    GPROBE_BASIS_SG_AMBIENT,   /**< "sg-ambient": n lobes and an ambient term */
+    GPROBE_BASIS_COUNT
+} GProbeBasisKind;
+
+/** A fitted basis approximation; release with gprobe_basis_free. SG irradiance is tabulated per lobe so
+ * that evaluating it allocates nothing. */
+typedef struct GProbeBasis {
+    GProbeBasisKind kind;
+    int size;               /**< coefficients (sh, ambient cube) or lobes */
+    GProbeSH sh;
+    GProbeAmbientCube cube;
+    GProbeSGLobe *lobes;    /**< size lobes (SG kinds) */
+    double ambient[3];
+    double *table;          /**< SG: irradiance per unit amplitude, GPROBE_SG_TABLE values per lobe */
+} GProbeBasis;
+/** Entries of an SG lobe's irradiance table (cosines -1..1). */
+#define GPROBE_SG_TABLE 257
+
+/** Keyword of a basis kind (see GProbeBasisKind). */
+GENERIC_API const char *gprobe_basis_name(GProbeBasisKind k);
+/** What n counts for a kind: "coefficients" or "lobes". */
+GENERIC_API const char *gprobe_basis_unit(GProbeBasisKind k);
+/** Kind for a keyword; G_ERR_NOTFOUND (message lists the names) for unknown ones. */
+GENERIC_API GENERIC_NODISCARD int gprobe_basis_parse(const char *name, GProbeBasisKind *k, GError *err);
+/** 1 when a kind can have n coefficients or lobes (sh: 4, 9, 16, 25; ambient cube: 6; SG: 1..128). */
+GENERIC_API int gprobe_basis_size_ok(GProbeBasisKind k, int n);
+/** Fits a basis of size n to the probe; out is zeroed first and owns its lobes. */
+GENERIC_API GENERIC_NODISCARD int gprobe_basis_fit(const GProbe *p, GProbeBasisKind k, int n, GProbeBasis *out, GError *err);
+/** Frees what a basis holds; a zeroed basis is a no-op. */
+GENERIC_API void gprobe_basis_free(GProbeBasis *b);
+/** Irradiance at m unit normals (3 doubles each). */
+GENERIC_API void gprobe_basis_irradiance(const GProbeBasis *b, const GVec3 *normals, int m, double *E);
+/** Radiance along a unit direction (the ambient cube, which holds irradiance, shows E / pi). */
+GENERIC_API void gprobe_basis_radiance(const GProbeBasis *b, GVec3 d, double rgb[3]);
+
 /* ---- probes in a colour model (for renderers written against the generic colour interface) ---- */
 
 /** Radiance arriving from a direction (bilinear, as gprobe_radiance) as a light (GCOLOR_LIGHT) in the
@@ -239,6 +368,9 @@ GENERIC_API GENERIC_NODISCARD int gprobe_pixel_color(const GProbe *p, int u, int
 /** The colour of a directional light (its irradiance on a surface facing it) as a light in the colour
  * model of `out`. */
 GENERIC_API GENERIC_NODISCARD int gprobe_light_color(const GProbeLight *l, GColor *out);
+/** A basis's irradiance for a unit normal as a light (GCOLOR_LIGHT) in the colour model of `out`; negative
+ * values (SH's ringing) become 0. */
+GENERIC_API GENERIC_NODISCARD int gprobe_basis_irradiance_color(const GProbeBasis *b, GVec3 normal, GColor *out);
 
 #ifdef __cplusplus
 }

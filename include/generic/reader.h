@@ -8,6 +8,8 @@
  *     color warm blackbody 3200               # KIND [NAME] TYPE parameters
  *     material wall lambert { reflectance rgb 0.5 0.5 0.5 }
  *     material floor phong { diffuse warm specular rgb 0.2 0.2 0.2 exponent 40 }
+ *     define shine 60                         # a named number: usable wherever a number is read
+ *     material floor2 like floor { exponent shine }   # floor's other parameters, re-read from its text
  *
  * Every entry is KIND [NAME] VALUE, where KIND is a kind keyword (gkind_name()), NAME an optional identifier
  * that is not a type keyword of that kind, and VALUE either `TYPE parameters` (the registered parse routine
@@ -105,6 +107,10 @@ typedef struct GReaderOptions {
      * greader_path (BFC files, images, meshes, probes) - must lie under this directory once symbolic links are
      * resolved; others fail with G_ERR_INVALID at their name. NULL: no confinement. Not owned. */
     const char *confine_dir;
+    /** Entry kinds to read past without interpreting them: bit (1u << kind) set skips every `KIND ... { ... }`
+     * entry of that kind (its braces must balance), so that a program without those types (gmat reading a gtrace
+     * scene: GKIND_OBJECT, GKIND_LIGHT, GKIND_CAMERA) can read the rest of the file. 0: skip nothing. */
+    unsigned skip_kinds;
 } GReaderOptions;
 
 /** Takes the reader options of a tool's command line out of argv[1..*argc-1] into opt (the other fields are
@@ -147,6 +153,9 @@ GENERIC_API GENERIC_NODISCARD int glibrary_count(const GLibrary *lib, GKind kind
 /** The i-th top-level entry of a kind (0 <= i < glibrary_count): its object, and its name (NULL when
  * anonymous) and type through the optional pointers. NULL when i is out of range. Constant time. */
 GENERIC_API void *glibrary_entry(const GLibrary *lib, GKind kind, int i, const char **name, const GTypeInfo **type);
+/** The name of the entry the i-th top-level entry of a kind was derived from with `like` (`material tile2 like
+ * tile1 { ... }` gives "tile1"), borrowed; NULL when it was not derived or i is out of range. */
+GENERIC_API const char *glibrary_entry_base(const GLibrary *lib, GKind kind, int i);
 /** Adds an object made by code under name (NULL = anonymous); the library takes ownership and releases it
  * with type->destroy (or the kind's default). G_ERR_EXISTS when the name is taken in that kind, and then the
  * object is released at once (the caller never keeps a half-owned object). */
@@ -240,6 +249,13 @@ GENERIC_API GENERIC_NODISCARD int greader_block_end(GReader *r, GError *err);
 GENERIC_API GENERIC_NODISCARD int greader_object(GReader *r, GKind kind, void **object, const GTypeInfo **type, GError *err);
 /** greader_object for a material or texture node; borrowed (gmaterial_ref to keep it). */
 GENERIC_API GENERIC_NODISCARD int greader_material(GReader *r, GMaterial **out, GError *err);
+/** A new anonymous material with one parameter given, its value read at the reader's position: `base` is a
+ * material type keyword (the material `TYPE { PARAM VALUE }`) or a material or node defined before (the
+ * material `like BASE { PARAM VALUE }`: its other parameters inherited). E.g. the spline's `colors` ramp makes
+ * each key's child with greader_material_with(r, "lambert", "reflectance", ...). *out is borrowed from the
+ * library. */
+GENERIC_API GENERIC_NODISCARD int greader_material_with(GReader *r, const char *base, const char *param, GMaterial **out,
+                                              GError *err);
 /** Reads a colour literal (rgb, spectrum, blackbody, illuminant, line, bfc, scale, or a registered colour
  * type) or a colour name, and converts it in the given role into the reader's colour model. `out` must be a
  * cleared handle ({0}); it receives heap storage (free with gcolor_free), also when it is left black by a

@@ -2,6 +2,8 @@
  * incident cosine. */
 #include "generic/material_kit.h"
 
+#include <math.h>
+
 int gmat_new(const GMaterialClass *cls, const GColorModel *model, size_t size, GMaterial **out, GError *err)
 {
     *out = NULL;
@@ -50,4 +52,52 @@ double gmat_cos_in(GSurfPoint *sp, GVec3 in, GVec3 out, GVec3 *n)
         return 0.0;
     double c = gvec3_dot(in, *n);
     return c > 0.0 ? c : 0.0;
+}
+
+int gmat_sample_weight(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index,
+                       int transmit, double pdf, GColor *weight)
+{
+    if (!(pdf > 0.0) || !isfinite(pdf)) {
+        gcolor_black(weight);
+        return G_OK;
+    }
+    GScratch *arena = sp && sp->scratch ? sp->scratch : gscratch_thread();
+    if (!arena)
+        return G_ERR_NOMEM;
+    GScratchMark mark = gscratch_mark(arena);
+    GColor white;
+    int rc = gcolor_scratch(&white, weight->model, arena);
+    if (rc == G_OK)
+        rc = gcolor_fill(&white, 1.0);
+    if (rc == G_OK)
+        rc = transmit ? gmaterial_refraction(self, sp, in, &white, rel_index, out, weight)
+                      : gmaterial_reflection(self, sp, in, &white, out, weight);
+    if (rc == G_OK)
+        rc = gcolor_scale(weight, weight, 1.0 / pdf);
+    gscratch_release(arena, mark);
+    return rc;
+}
+
+int gmat_pick_lobe(const double *w, int n, double *u, double *p)
+{
+    double total = 0.0;
+    for (int i = 0; i < n; i++)
+        total += w[i] > 0.0 ? w[i] : 0.0;
+    double x = *u * total, acc = 0.0;
+    int last = 0;
+    for (int i = 0; i < n; i++) {
+        if (!(w[i] > 0.0))
+            continue;
+        last = i;
+        if (x < acc + w[i] || i == n - 1) {
+            *p = w[i] / total;
+            *u = fmin(fmax((x - acc) / w[i], 0.0), 0x1.fffffffffffffp-1);
+            return i;
+        }
+        acc += w[i];
+    }
+    /* rounding left x past the last lobe */
+    *p = total > 0.0 ? w[last] / total : 1.0;
+    *u = 0x1.fffffffffffffp-1;
+    return last;
 }

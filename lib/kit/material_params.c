@@ -3,6 +3,7 @@
 #include "generic/material_params.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 static int value_count(const GColor *c)
@@ -26,42 +27,171 @@ double gmatparam_max(const GColor *c, int *at)
     return mx;
 }
 
+int gmatparam_range(const GColor *c, GColorRole role, double max, double *lo, double *hi)
+{
+    double rlo, rhi;
+    int rc = gcolormodel_rgb_range(c->model, role, &rlo, &rhi);
+    if (rc != G_OK)
+        return rc;
+    double scale = max;
+    if (!(max > 0.0)) { /* unbounded: the size of this colour, its largest RGB component */
+        double rgb[3] = {0, 0, 0};
+        if (c->kind == GCOLOR_VECTOR && (rc = gcolor_to_rgb(c, role, rgb)) != G_OK)
+            return rc;
+        scale = fmax(0.0, fmax(rgb[0], fmax(rgb[1], rgb[2])));
+    }
+    /* float rounding of the conversion on top of the model's error */
+    double eps = 1e-5 * scale;
+    *lo = rlo * scale - eps;
+    *hi = max > 0.0 ? fmax(rhi, 1.0) * max + eps : INFINITY;
+    return G_OK;
+}
+
+double gmatparam_energy(const GColor *c, int *at)
+{
+    const GColorModel *m = c->model;
+    if (at)
+        *at = 0;
+    if (c->kind == GCOLOR_MATRIX) { /* the largest column sum: all that leaves per unit arriving in one sample */
+        int n = m->nsamples;
+        double worst = 0.0;
+        for (int i = 0; i < n; i++) {
+            double sum = 0.0;
+            for (int o = 0; o < n; o++)
+                sum += c->v[o * n + i];
+            if (sum > worst) {
+                worst = sum;
+                if (at)
+                    *at = i;
+            }
+        }
+        return worst;
+    }
+    GSpectrumNM s;
+    if (gcolor_to_nm(c, GCOLOR_REFLECTANCE, &s) != G_OK)
+        return INFINITY;
+    double sum = 0.0;
+    for (int i = 0; i < GNM_COUNT; i++)
+        sum += s.v[i];
+    return sum / GNM_COUNT;
+}
+
+int gmatparam_fold_ok(const GColor *c, double hi)
+{
+    return c->kind == GCOLOR_VECTOR && !c->model->cls->from_reradiation && gmatparam_energy(c, NULL) <= hi;
+}
+
+/* " (NNN nm)" for sample k of a spectral model, "" otherwise. */
+static void sample_nm(const GColorModel *m, int k, char *buf, size_t size)
+{
+    if (m->nsamples > 0 && k < m->nsamples)
+        snprintf(buf, size, " (%g nm)", m->lambda_min + k * m->lambda_step);
+    else
+        buf[0] = '\0';
+}
+
+/* Checks src against [lo, hi] (vector samples; a matrix's entries >= 0 and its brightness <= hi). */
+static int check_range(const GColor *src, GColorRole role, double max, const char *material, const char *param,
+                       GError *err)
+{
+    const GColorModel *m = src->model;
+    const char *name = gcolormodel_name(m);
+    if (src->kind == GCOLOR_MATRIX) {
+        int n = m->nsamples > 0 ? m->nsamples : 1;
+        for (int i = 0; i < value_count(src); i++)
+            if (!isfinite(src->v[i]) || src->v[i] < 0.0f)
+                return gerror_set_param(err, G_ERR_INVALID, param,
+                                        "%s: %s is a re-radiation matrix with the entry %g at emission sample %d, "
+                                        "excitation sample %d (must be finite and >= 0)",
+                                        material, param, (double)src->v[i], i / n, i % n);
+    } else {
+        for (int i = 0; i < m->nvalues; i++)
+            if (!isfinite(src->v[i]))
+                return gerror_set_param(err, G_ERR_INVALID, param,
+                                        "%s: %s has the value %g at sample %d (must be finite and >= 0)", material,
+                                        param, (double)src->v[i], i);
+    }
+    double lo, hi, rlo, rhi;
+    int rc = gmatparam_range(src, role, max, &lo, &hi);
+    if (rc == G_OK)
+        rc = gcolormodel_rgb_range(m, role, &rlo, &rhi);
+    if (rc != G_OK)
+        return gerror_set_param(err, rc, param, "%s: cannot measure the range of %s in model '%s'", material, param,
+                                name);
+    char where[48];
+    if (src->kind == GCOLOR_MATRIX) {
+        int col;
+        double e = gmatparam_energy(src, &col);
+        if (max > 0.0 && e > hi) {
+            sample_nm(m, col, where, sizeof where);
+            return gerror_set_param(err, G_ERR_INVALID, param,
+                                    "%s: %s is a re-radiation matrix that sends out %g of the light arriving at "
+                                    "excitation sample %d%s (must be <= %g: energy is conserved)",
+                                    material, param, e, col, where, max);
+        }
+        return G_OK;
+    }
+    /* above max in a band: in a model without matrices only a fold of re-radiation can be (see the header) */
+    double fold_energy = -1.0;
+    if (max > 0.0 && role == GCOLOR_REFLECTANCE && !m->cls->from_reradiation)
+        fold_energy = gmatparam_energy(src, NULL);
+    for (int i = 0; i < m->nvalues; i++) {
+        double x = src->v[i];
+        sample_nm(m, i, where, sizeof where);
+        if (x < 0.0 && x < lo) {
+            if (rlo == 0.0) /* the model has no conversion error below 0 */
+                return gerror_set_param(err, G_ERR_INVALID, param,
+                                        "%s: %s has the value %g at sample %d%s (must be finite and >= 0)",
+                                        material, param, x, i, where);
+            return gerror_set_param(err, G_ERR_INVALID, param,
+                                    "%s: %s has the value %g at sample %d%s (must be finite and >= 0, or >= %.3g "
+                                    "within the conversion error of model '%s')",
+                                    material, param, x, i, where, lo, name);
+        }
+        if (x > hi && fold_energy >= 0.0 && fold_energy <= hi)
+            continue;
+        if (x > hi) {
+            char bound[160] = "", fold[160] = "";
+            if (rhi > 1.0)
+                snprintf(bound, sizeof bound, ", or <= %.6g within the conversion error of model '%s'", hi, name);
+            if (fold_energy >= 0.0)
+                snprintf(fold, sizeof fold, "; above that only as the fold of re-radiation, whose energy under "
+                         "equal-energy light, here %g, is <= %.6g", fold_energy, hi);
+            return gerror_set_param(err, G_ERR_INVALID, param, "%s: %s has the value %g at sample %d%s (must be <= %g%s%s)",
+                                    material, param, x, i, where, max, bound, fold);
+        }
+    }
+    return G_OK;
+}
+
 int gmatparam_color(const GColorModel *m, const GColor *src, GColorRole role, double max, const char *material,
                     const char *param, GColor *dst, GError *err)
 {
     *dst = (GColor){.model = NULL, .v = NULL, .storage = GCOLOR_STORAGE_NONE};
     if (!src || !src->model || !src->v)
         return gerror_set_param(err, G_ERR_INVALID, param, "%s: %s is missing", material, param);
-    int n = value_count(src);
-    for (int i = 0; i < n; i++) {
-        float x = src->v[i];
-        if (!isfinite(x) || x < 0.0f)
-            return gerror_set_param(err, G_ERR_INVALID, param,
-                                    "%s: %s has the value %g at sample %d (must be finite and >= 0)", material, param,
-                                    (double)x, i);
-    }
-    if (max > 0.0) {
-        int at;
-        double mx = gmatparam_max(src, &at);
-        /* an in-range colour may overshoot a little after conversion (rgb 1 1 1 gives 1.00015 in the spectral
-         * models: the RGB round trip correction of lib/cie.c); such values are clamped below */
-        if (mx > max * (1.0 + 1e-3))
-            return gerror_set_param(err, G_ERR_INVALID, param, "%s: %s has the value %g at sample %d (must be <= %g)",
-                                    material, param, mx, at, max);
-    }
+    int rc = check_range(src, role, max, material, param, err);
+    if (rc != G_OK)
+        return rc;
     if (gcolor_alloc(dst, m) != G_OK)
         return gerror_set(err, G_ERR_NOMEM, "%s: out of memory for %s", material, param);
-    int rc = gcolor_convert(dst, src, role);
+    rc = gcolor_convert(dst, src, role);
     if (rc != G_OK) {
         gcolor_free(dst);
         return gerror_set_param(err, rc, param, "%s: cannot convert %s from model '%s' to '%s'", material, param,
                                 gcolormodel_name(src->model), gcolormodel_name(m));
     }
+    /* within the model's conversion error: clamped into [0, max]; a fold above max stays as it is */
+    double lo, hi;
+    int fold = 0;
+    if (max > 0.0 && dst->kind == GCOLOR_VECTOR && gmatparam_range(dst, role, max, &lo, &hi) == G_OK)
+        for (int i = 0; i < m->nvalues; i++)
+            fold |= dst->v[i] > hi;
     if (dst->kind == GCOLOR_VECTOR)
         for (int i = 0; i < m->nvalues; i++) {
             if (!(dst->v[i] >= 0.0f))
                 dst->v[i] = 0.0f;
-            if (max > 0.0 && dst->v[i] > max)
+            if (max > 0.0 && !fold && dst->v[i] > max)
                 dst->v[i] = (float)max;
         }
     return G_OK;

@@ -232,6 +232,22 @@ int gtexchild_opaque(const GMaterial *self, GSurfPoint *sp)
     return gmaterial_opaque(gtexchild_of(self), sp);
 }
 
+int gtexchild_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
+                     double u2, GMaterialSample *s, GColor *weight)
+{
+    return gmaterial_sample(gtexchild_of(self), sp, out, rel_index, u1, u2, s, weight);
+}
+
+double gtexchild_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
+{
+    return gmaterial_pdf(gtexchild_of(self), sp, in, out, rel_index);
+}
+
+int gtexchild_is_delta(const GMaterial *self, GSurfPoint *sp)
+{
+    return gmaterial_is_delta(gtexchild_of(self), sp);
+}
+
 void gtexblend_pair(GTexBlend *b, const GMaterial *a, const GMaterial *c, double t)
 {
     if (!(t > 0.0)) { /* also NaN */
@@ -446,6 +462,77 @@ int gtexblend_opaque(const GTexBlend *b, GSurfPoint *sp)
     return 1;
 }
 
+/* ---- sampling: a mixture of the children ---- */
+
+/* The selection probability of each child: |w_i| / sum |w_j|. */
+static double blend_probs(const GTexBlend *b, double q[GTEX_BLEND_MAX])
+{
+    double total = 0.0;
+    for (int i = 0; i < b->n; i++)
+        total += fabs(b->w[i]);
+    for (int i = 0; i < b->n; i++)
+        q[i] = total > 0.0 ? fabs(b->w[i]) / total : 0.0;
+    return total;
+}
+
+double gtexblend_pdf(const GTexBlend *b, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
+{
+    if (b->n == 1)
+        return gmaterial_pdf(b->m[0], sp, in, out, rel_index);
+    double q[GTEX_BLEND_MAX], pdf = 0.0;
+    blend_probs(b, q);
+    for (int i = 0; i < b->n; i++)
+        if (q[i] > 0.0)
+            pdf += q[i] * gmaterial_pdf(b->m[i], sp, in, out, rel_index);
+    return pdf;
+}
+
+int gtexblend_sample(const GTexBlend *b, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1, double u2,
+                     GMaterialSample *s, GColor *weight)
+{
+    if (b->n == 1)
+        return gmaterial_sample(b->m[0], sp, out, rel_index, u1, u2, s, weight);
+    double q[GTEX_BLEND_MAX], p;
+    if (!(blend_probs(b, q) > 0.0))
+        return 0;
+    int i = gmat_pick_lobe(q, b->n, &u1, &p);
+    int rc = gmaterial_sample(b->m[i], sp, out, rel_index, u1, u2, s, weight);
+    if (rc <= 0)
+        return rc;
+    if (s->flags & GSAMPLE_DELTA) { /* the child's ideal lobe, weighted as in the blend */
+        s->pdf *= q[i];
+        rc = gcolor_scale(weight, weight, b->w[i] / q[i]);
+        return rc ? rc : 1;
+    }
+    s->pdf = gtexblend_pdf(b, sp, s->in, out, rel_index);
+    if (!(s->pdf > 0.0)) {
+        gcolor_black(weight);
+        return 0;
+    }
+    /* the blend's own value of white light along the direction, over the mixture's density */
+    GTexTemps t;
+    gtextemps_init(&t);
+    GColor white;
+    rc = gtextemps_color(&t, sp, weight->model, 0, &white);
+    if (rc == G_OK)
+        rc = gcolor_fill(&white, 1.0);
+    if (rc == G_OK)
+        rc = s->flags & GSAMPLE_TRANSMIT ? gtexblend_refraction(b, sp, s->in, &white, rel_index, out, weight)
+                                          : gtexblend_reflection(b, sp, s->in, &white, out, weight);
+    if (rc == G_OK)
+        rc = gcolor_scale(weight, weight, 1.0 / s->pdf);
+    gtextemps_release(&t);
+    return rc ? rc : 1;
+}
+
+int gtexblend_is_delta(const GTexBlend *b, GSurfPoint *sp)
+{
+    for (int i = 0; i < b->n; i++)
+        if (b->w[i] != 0.0 && !gmaterial_is_delta(b->m[i], sp))
+            return 0;
+    return 1;
+}
+
 /* ---- the methods of blend nodes: the class's pick, then the blend ---- */
 
 static void pick(const GMaterial *self, GSurfPoint *sp, GNodeMethod m, GTexBlend *b)
@@ -532,4 +619,26 @@ int gtexblendnode_opaque(const GMaterial *self, GSurfPoint *sp)
     GTexBlend b;
     pick(self, sp, GNODE_OPAQUE, &b);
     return gtexblend_opaque(&b, sp);
+}
+
+int gtexblendnode_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
+                         double u2, GMaterialSample *s, GColor *weight)
+{
+    GTexBlend b;
+    pick(self, sp, GNODE_REFLECTION, &b);
+    return gtexblend_sample(&b, sp, out, rel_index, u1, u2, s, weight);
+}
+
+double gtexblendnode_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
+{
+    GTexBlend b;
+    pick(self, sp, GNODE_REFLECTION, &b);
+    return gtexblend_pdf(&b, sp, in, out, rel_index);
+}
+
+int gtexblendnode_is_delta(const GMaterial *self, GSurfPoint *sp)
+{
+    GTexBlend b;
+    pick(self, sp, GNODE_REFLECTION, &b);
+    return gtexblend_is_delta(&b, sp);
 }

@@ -61,17 +61,13 @@ static HeapItem item(const ProbeRegion *r, int index)
     return it;
 }
 
-int gprobe_adaptive_median_cut(const GProbe *p, int n, GProbeLight *lights, GError *err)
+int probe_adaptive_regions(const GProbe *p, int n, ProbeRegion *regions, GError *err)
 {
-    if (n < 1 || !lights)
+    if (n < 1)
         return gerror_set(err, G_ERR_INVALID, "adaptive median cut needs at least one light, not %d", n);
-    ProbeRegion *regions = gmem_calloc((size_t)n, sizeof *regions);
     HeapItem *heap = gmem_calloc((size_t)n, sizeof *heap);
-    if (!regions || !heap) {
-        gmem_free(regions);
-        gmem_free(heap);
+    if (!heap)
         return gerror_set(err, G_ERR_NOMEM, "out of memory for %d regions", n);
-    }
     int count = 1, hn = 0;
     probe_region_init(p, &regions[0], 0, 0, p->w, p->h);
     heap_push(heap, &hn, item(&regions[0], 0));
@@ -85,8 +81,20 @@ int gprobe_adaptive_median_cut(const GProbe *p, int n, GProbeLight *lights, GErr
         heap_push(heap, &hn, item(&b, count));
         count++;
     }
-    probe_regions_to_lights(p, regions, n, lights);
-    gmem_free(regions);
     gmem_free(heap);
     return G_OK;
+}
+
+int gprobe_adaptive_median_cut(const GProbe *p, int n, GProbeLight *lights, GError *err)
+{
+    if (n < 1 || !lights)
+        return gerror_set(err, G_ERR_INVALID, "adaptive median cut needs at least one light, not %d", n);
+    ProbeRegion *regions = gmem_calloc((size_t)n, sizeof *regions);
+    if (!regions)
+        return gerror_set(err, G_ERR_NOMEM, "out of memory for %d regions", n);
+    int rc = probe_adaptive_regions(p, n, regions, err);
+    if (rc == G_OK)
+        probe_regions_to_lights(p, regions, n, lights);
+    gmem_free(regions);
+    return rc;
 }

@@ -216,11 +216,12 @@ void gprobe_compare(const double *truth, const double *approx, int m, GProbeErro
         double emax = 0.0;
         for (int i = 0; i < m; i++)
             emax = fmax(emax, truth[i * 3 + c]);
-        double sum_rel = 0.0, max_rel = 0.0, sum_abs = 0.0, max_abs = 0.0;
+        double sum_rel = 0.0, max_rel = 0.0, sum_abs = 0.0, max_abs = 0.0, sum_sym = 0.0;
         long nrel = 0;
         for (int i = 0; i < m; i++) {
-            double t = truth[i * 3 + c], d = fabs(approx[i * 3 + c] - t);
+            double t = truth[i * 3 + c], d = fabs(approx[i * 3 + c] - t), s = fabs(t) + fabs(approx[i * 3 + c]);
             sum_abs += d;
+            sum_sym += s > 0.0 ? 2.0 * d / s : 0.0;
             max_abs = fmax(max_abs, d);
             if (t > 1e-6 * emax && t > 0.0) {
                 double r = d / t;
@@ -233,5 +234,6 @@ void gprobe_compare(const double *truth, const double *approx, int m, GProbeErro
         out->max_rel += 100.0 * max_rel / 3.0;
         out->mean_norm += emax > 0.0 && m > 0 ? 100.0 * sum_abs / m / emax / 3.0 : 0.0;
         out->max_norm += emax > 0.0 ? 100.0 * max_abs / emax / 3.0 : 0.0;
+        out->smape += m > 0 ? 100.0 * sum_sym / m / 3.0 : 0.0;
     }
 }

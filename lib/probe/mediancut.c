@@ -98,12 +98,10 @@ void probe_regions_to_lights(const GProbe *p, const ProbeRegion *regions, int n,
     }
 }
 
-int gprobe_median_cut(const GProbe *p, int n, GProbeLight *lights, GError *err)
+int probe_median_cut_regions(const GProbe *p, int n, ProbeRegion *out, GError *err)
 {
     if (n < 1 || (n & (n - 1)) != 0)
         return gerror_set(err, G_ERR_INVALID, "median cut makes a power of two of lights, not %d", n);
-    if (!lights)
-        return gerror_set(err, G_ERR_INVALID, "median cut: no output given");
     ProbeRegion *cur = gmem_calloc((size_t)n * 2, sizeof *cur);
     if (!cur)
         return gerror_set(err, G_ERR_NOMEM, "out of memory for %d regions", n);
@@ -116,7 +114,23 @@ int gprobe_median_cut(const GProbe *p, int n, GProbeLight *lights, GError *err)
         cur = next;
         next = t;
     }
-    probe_regions_to_lights(p, cur, n, lights);
+    memcpy(out, cur, (size_t)n * sizeof *out);
     gmem_free(cur < next ? cur : next);
     return G_OK;
+}
+
+int gprobe_median_cut(const GProbe *p, int n, GProbeLight *lights, GError *err)
+{
+    if (n < 1 || (n & (n - 1)) != 0)
+        return gerror_set(err, G_ERR_INVALID, "median cut makes a power of two of lights, not %d", n);
+    if (!lights)
+        return gerror_set(err, G_ERR_INVALID, "median cut: no output given");
+    ProbeRegion *regions = gmem_calloc((size_t)n, sizeof *regions);
+    if (!regions)
+        return gerror_set(err, G_ERR_NOMEM, "out of memory for %d regions", n);
+    int rc = probe_median_cut_regions(p, n, regions, err);
+    if (rc == G_OK)
+        probe_regions_to_lights(p, regions, n, lights);
+    gmem_free(regions);
+    return rc;
 }

@@ -23,3 +23,12 @@ int gprobe_light_color(const GProbeLight *l, GColor *out)
 {
     return gcolor_from_rgb(out, l->rgb, GCOLOR_LIGHT);
 }
+
+int gprobe_basis_irradiance_color(const GProbeBasis *b, GVec3 normal, GColor *out)
+{
+    double e[3];
+    gprobe_basis_irradiance(b, &normal, 1, e);
+    for (int c = 0; c < 3; c++)
+        e[c] = e[c] > 0.0 ? e[c] : 0.0;
+    return gcolor_from_rgb(out, e, GCOLOR_LIGHT);
+}

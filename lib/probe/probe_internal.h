@@ -71,6 +71,10 @@ double probe_region_spread(const ProbeRegion *r);
 /** Lights for n regions: direction at the energy centroid, colour the region's summed Q. */
 void probe_regions_to_lights(const GProbe *p, const ProbeRegion *regions, int n, GProbeLight *lights);
 
+/** The n regions of median cut (n a power of two) and of adaptive median cut (any n >= 1). */
+GENERIC_NODISCARD int probe_median_cut_regions(const GProbe *p, int n, ProbeRegion *out, GError *err);
+GENERIC_NODISCARD int probe_adaptive_regions(const GProbe *p, int n, ProbeRegion *out, GError *err);
+
 /** Reports progress when a callback is set. */
 static inline void probe_progress(const GProbeOptions *opt, const char *stage, double f)
 {
@@ -97,3 +101,11 @@ void probe_cholesky_solve(const double *l, int n, double *b);
 void probe_nnls(int n, const double *G, const double *h, double *x, double *work);
 /** Doubles of scratch probe_nnls needs. */
 static inline size_t probe_nnls_work_size(int n) { return (size_t)n * n + 4 * (size_t)n; }
+
+/* ---- spherical Gaussian lobes (sg_lobe.c) ---- */
+
+/** Integral over the sphere of exp(lambda (axis . d - 1)): 2 pi (1 - exp(-2 lambda)) / lambda. */
+double probe_sg_integral(double lambda);
+/** The sharpness in [lo, hi] whose lobe has mean direction of the given length (the von Mises-Fisher
+ * moment estimate, inverting coth lambda - 1 / lambda). */
+double probe_sg_sharpness(double mean_length, double lo, double hi);

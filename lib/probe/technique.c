@@ -3,7 +3,8 @@
 
 #include <string.h>
 
-static const char *const names[GPROBE_TECHNIQUE_COUNT] = {"mediancut", "adaptive", "kmeans", "irradiance"};
+static const char *const names[GPROBE_TECHNIQUE_COUNT] = {"mediancut", "adaptive", "kmeans", "irradiance",
+                                                                   "variance"};
 
 const char *gprobe_technique_name(GProbeTechnique t)
 {
@@ -17,7 +18,7 @@ int gprobe_technique_parse(const char *name, GProbeTechnique *t, GError *err)
             *t = (GProbeTechnique)i;
             return G_OK;
         }
-    return gerror_set(err, G_ERR_NOTFOUND, "unknown technique '%s' (expected mediancut, adaptive, kmeans or irradiance)",
+    return gerror_set(err, G_ERR_NOTFOUND, "unknown technique '%s' (expected mediancut, adaptive, kmeans, irradiance or variance)",
                       name ? name : "");
 }
 
@@ -31,6 +32,7 @@ int gprobe_approximate(const GProbe *p, GProbeTechnique t, int n, const GProbeOp
     case GPROBE_ADAPTIVE: return gprobe_adaptive_median_cut(p, n, lights, err);
     case GPROBE_KMEANS: return gprobe_kmeans(p, n, opt, lights, err);
     case GPROBE_IRRADIANCE: return gprobe_irradiance_fit(p, n, opt, lights, NULL, err);
+    case GPROBE_VARIANCE: return gprobe_variance_cut(p, n, lights, err);
     default: return gerror_set(err, G_ERR_INVALID, "unknown technique %d", (int)t);
     }
 }

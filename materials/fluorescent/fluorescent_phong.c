@@ -80,6 +80,62 @@ static int fphong_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *i
     return gcolor_mul(result, &((const FPhong *)self)->albedo, illum);
 }
 
+/* ---- sampling: the fluorescent Lambertian's cosine lobe and the three cos^n lobes about the mirror direction,
+ * chosen by their brightness; the weight is reflection(in, white, out) / pdf (a vector in every model) ---- */
+
+static void fphong_lobes(const FPhong *p, GSurfPoint *sp, GVec3 out, double w[4], GVec3 *r)
+{
+    *r = gvec3_reflect(gvec3_neg(out), gsurfpoint_normal(sp));
+    w[0] = gcolor_brightness(&p->m);
+    double spec = gcolor_brightness(&p->d);
+    for (int k = 0; k < 3; k++)
+        w[1 + k] = spec * p->norm[k] * 2.0 * M_PI / (p->n[k] + 1.0); /* the lobe's weight w_k */
+    if (!(w[0] + w[1] + w[2] + w[3] > 0.0))
+        w[0] = 1.0;
+}
+
+static double fphong_lobes_pdf(const FPhong *p, GVec3 n, GVec3 r, const double w[4], GVec3 in)
+{
+    double total = w[0] + w[1] + w[2] + w[3], c = gvec3_dot(in, n), pdf = 0.0;
+    if (w[0] > 0.0 && c > 0.0)
+        pdf += w[0] / total * c / M_PI;
+    for (int k = 0; k < 3; k++)
+        if (w[1 + k] > 0.0)
+            pdf += w[1 + k] / total * goptics_lobe_pdf(r, p->n[k], in);
+    return pdf;
+}
+
+static int fphong_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
+                         double u2, GMaterialSample *s, GColor *weight)
+{
+    const FPhong *p = (const FPhong *)self;
+    if (gvec3_dot(out, sp->geometric_normal) <= 0.0)
+        return 0;
+    double w[4], prob;
+    GVec3 r, n = gsurfpoint_normal(sp);
+    fphong_lobes(p, sp, out, w, &r);
+    int lobe = gmat_pick_lobe(w, 4, &u1, &prob);
+    s->in = lobe == 0 ? goptics_sample_cosine(n, u1, u2) : goptics_sample_lobe(r, p->n[lobe - 1], u1, u2);
+    s->pdf = fphong_lobes_pdf(p, n, r, w, s->in);
+    s->flags = GSAMPLE_REFLECT;
+    if (!(s->pdf > 0.0))
+        return 0;
+    int rc = gmat_sample_weight(self, sp, s->in, out, rel_index, 0, s->pdf, weight);
+    return rc ? rc : 1;
+}
+
+static double fphong_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
+{
+    (void)rel_index;
+    const FPhong *p = (const FPhong *)self;
+    if (gvec3_dot(out, sp->geometric_normal) <= 0.0)
+        return 0.0;
+    double w[4];
+    GVec3 r;
+    fphong_lobes(p, sp, out, w, &r);
+    return fphong_lobes_pdf(p, gsurfpoint_normal(sp), r, w, in);
+}
+
 static const GMaterialClass fluorescent_phong_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "fluorescent-phong",
@@ -88,6 +144,8 @@ static const GMaterialClass fluorescent_phong_class = {
     .reflection = fphong_reflection,
     .ambient = fphong_ambient,
     .diffuse = fphong_diffuse,
+    .sample = fphong_sample,
+    .pdf = fphong_pdf,
 };
 
 static int check_params(const GFluorPhongParams *p, GError *err)

@@ -281,6 +281,77 @@ static int varnish_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *
     return gfluor_two_parts(sp, self->model, illum, NULL, v->r_avg, &v->diffuse, 1.0, result);
 }
 
+/* ---- sampling: the facets' lobe (a half vector from D(h)(h.n), reflected) with the probability of the
+ * boundary's directional albedo R(cos_o), and a cosine lobe for the base with T(cos_o) times its albedo ---- */
+
+static void varnish_lobes(const Varnish *v, double co, double w[2])
+{
+    double t = transmit(v, co), b = gcolor_brightness(&v->diffuse);
+    w[0] = v->eta > 1.0 ? fmax(1.0 - t, 1e-3) : 0.0;
+    w[1] = t * fmin(fmax(b, 0.05), 1.0);
+}
+
+/* The density of in: the facets' D(h)(h.n) / (4 o.h) with h = (in + out) / |in + out| and the cosine lobe. */
+static double varnish_lobes_pdf(const Varnish *v, GVec3 n, GVec3 out, const double w[2], GVec3 in)
+{
+    double total = w[0] + w[1], pdf = 0.0, c = gvec3_dot(in, n);
+    if (w[1] > 0.0 && c > 0.0)
+        pdf += w[1] / total * c / M_PI;
+    GVec3 sum = gvec3_add(in, out);
+    double len = gvec3_length(sum);
+    if (w[0] > 0.0 && len > 1e-9) {
+        GVec3 h = gvec3_scale(sum, 1.0 / len);
+        double ch = gvec3_dot(h, n), od = gvec3_dot(out, h);
+        if (ch > 0.0 && od > 0.0)
+            pdf += w[0] / total * gfluor_blinn_d(v->m, ch) * ch / (4.0 * od);
+    }
+    return pdf;
+}
+
+static int varnish_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
+                          double u2, GMaterialSample *s, GColor *weight)
+{
+    const Varnish *v = (const Varnish *)self;
+    GVec3 n = gsurfpoint_normal(sp);
+    double co = gvec3_dot(out, n);
+    if (gvec3_dot(out, sp->geometric_normal) <= 0.0 || co <= 0.0)
+        return 0;
+    double w[2], prob;
+    varnish_lobes(v, co, w);
+    int lobe = gmat_pick_lobe(w, 2, &u1, &prob);
+    if (lobe == 1)
+        s->in = goptics_sample_cosine(n, u1, u2);
+    else { /* cos theta_h = u^(1 / (m + 2)) makes D(h)(h.n) dw_h uniform */
+        double ch = pow(1.0 - u1, 1.0 / (v->m + 2.0)), sh = sqrt(fmax(0.0, 1.0 - ch * ch)), phi = 2.0 * M_PI * u2;
+        GVec3 t, b;
+        goptics_frame(n, &t, &b);
+        GVec3 h = gvec3_add(gvec3_add(gvec3_scale(t, sh * cos(phi)), gvec3_scale(b, sh * sin(phi))), gvec3_scale(n, ch));
+        double od = gvec3_dot(out, h);
+        if (!(od > 0.0))
+            return 0; /* a facet turned away from out reflects nothing towards it */
+        s->in = gvec3_normalize(gvec3_sub(gvec3_scale(h, 2.0 * od), out));
+    }
+    s->pdf = varnish_lobes_pdf(v, n, out, w, s->in);
+    s->flags = GSAMPLE_REFLECT;
+    if (!(s->pdf > 0.0))
+        return 0;
+    int rc = gmat_sample_weight(self, sp, s->in, out, rel_index, 0, s->pdf, weight);
+    return rc ? rc : 1;
+}
+
+static double varnish_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
+{
+    (void)rel_index;
+    const Varnish *v = (const Varnish *)self;
+    GVec3 n = gsurfpoint_normal(sp);
+    double co = gvec3_dot(out, n);
+    if (gvec3_dot(out, sp->geometric_normal) <= 0.0 || co <= 0.0)
+        return 0.0;
+    double w[2];
+    varnish_lobes(v, co, w);
+    return varnish_lobes_pdf(v, n, out, w, in);
+}
+
 static const GMaterialClass fluorescent_varnish_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "fluorescent-varnish",
@@ -289,6 +360,8 @@ static const GMaterialClass fluorescent_varnish_class = {
     .reflection = varnish_reflection,
     .ambient = varnish_ambient,
     .diffuse = varnish_diffuse,
+    .sample = varnish_sample,
+    .pdf = varnish_pdf,
 };
 
 void gfluor_varnish_default(GFluorVarnishParams *p)

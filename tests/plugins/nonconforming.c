@@ -5,6 +5,9 @@
  *                (albedo 1.5; reciprocal, finite);
  *   -DSKEWED     material "skewed_lambert": f_r = (0.25 + 0.5 cos^2(theta_in)) / pi, which depends on the
  *                incident direction only (albedo 0.25..0.75, not reciprocal);
+ *   -DMISDRAWN   material "misdrawn_lambert": a Lambertian of albedo 0.8 whose pdf says cos / pi (and whose
+ *                weights are reflection / that pdf) but whose sample() draws uniformly over the hemisphere: only
+ *                the chi2 test of gmat check sees it;
  *   -DBAD_BANDS  colour model "bad_bands": the same grey model with a correct add and two wavelength bands whose
  *                masks are both white, so the bands do not partition a value;
  *   -DBAD_ADD    colour model "bad_add": the grey model (luminance only) whose add returns 1.01 a + b, so
@@ -16,7 +19,7 @@
 
 GENERIC_MODULE_EXPORT const int generic_module_abi = GMODULE_ABI_VERSION;
 
-#if defined(GAIN) || defined(SKEWED)
+#if defined(GAIN) || defined(SKEWED) || defined(MISDRAWN)
 typedef struct Flat {
     GMaterial base;
 } Flat;
@@ -33,18 +36,48 @@ static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, cons
         gcolor_black(result);
         return G_OK;
     }
-#ifdef GAIN
+#if defined(GAIN)
     double f = 1.5 / M_PI;
+#elif defined(MISDRAWN)
+    double f = 0.8 / M_PI;
 #else
     double f = (0.25 + 0.5 * ci * ci) / M_PI;
 #endif
     return gcolor_scale(result, illum, f * ci);
 }
 
-#ifdef GAIN
+#if defined(GAIN)
 #define FLAT_NAME "gain_lambert"
+#elif defined(MISDRAWN)
+#define FLAT_NAME "misdrawn_lambert"
 #else
 #define FLAT_NAME "skewed_lambert"
+#endif
+
+#ifdef MISDRAWN
+static double flat_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
+{
+    (void)self, (void)out, (void)rel_index;
+    double c = gvec3_dot(in, gsurfpoint_normal(sp));
+    return c > 0.0 ? c / M_PI : 0.0;
+}
+
+/* The deliberate error: uniform over the hemisphere, not cosine-distributed as flat_pdf says. */
+static int flat_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
+                       double u2, GMaterialSample *s, GColor *weight)
+{
+    s->in = goptics_sample_hemisphere(gsurfpoint_normal(sp), u1, u2);
+    s->pdf = flat_pdf(self, sp, s->in, out, rel_index);
+    s->flags = GSAMPLE_REFLECT;
+    if (!(s->pdf > 0.0))
+        return 0;
+    int rc = gcolor_fill(weight, 1.0);
+    if (rc == G_OK)
+        rc = gmaterial_reflection(self, sp, s->in, weight, out, weight);
+    if (rc == G_OK)
+        rc = gcolor_scale(weight, weight, 1.0 / s->pdf);
+    return rc ? rc : 1;
+}
 #endif
 
 static const GMaterialClass flat_class = {
@@ -53,6 +86,10 @@ static const GMaterialClass flat_class = {
     .description = "breaks a conformance property on purpose (tests)",
     .destroy = flat_destroy,
     .reflection = flat_reflection,
+#ifdef MISDRAWN
+    .sample = flat_sample,
+    .pdf = flat_pdf,
+#endif
 };
 
 static int parse_flat(GReader *r, const void *vtable, void **object, GError *err)

@@ -57,13 +57,21 @@ unchanged() { # what file
     fi
 }
 
-# ---- the checks of one corpus file, run by two workers at a time (each tool run starts OpenImageIO) ----
+# ---- the checks of one corpus file, run by two workers at a time ----
 check_mat() { # a material, texture or BFC file: gmat list, in its model (and the bispectral one)
     f=$1
     want=$(head -n 1 "$f" | sed -n 's/^# expect: //p')
     prefix=${want%%...*}
+    if grep -q -E "^(object|light|camera) " "$f"; then
+        # gmat list reads past a scene's object, light and camera entries (only gtrace knows them): gtrace
+        # reports the error in them
+        "$GMAT" list "$f" > "$TMP/out" 2>&1 || fail "gmat list $f does not read past the scene entries: $(cat "$TMP/out")"
+        run_fails "gtrace $f" "$GTRACE" "$f" -o "$TMP/never.png" -q
+        grep -q -F "gtrace: $prefix" "$TMP/err" || fail "gtrace $f: expected '$want', got: $(cat "$TMP/err")"
+        return
+    fi
     run_fails "gmat list $f" "$GMAT" list "$f"
-    if grep -q -E "registered by test_reader|^object " "$f"; then
+    if grep -q -E "registered by test_reader" "$f"; then
         # a type only the reader's test registers: here it is an unknown name, still at file:line:col
         grep -q -E "^gmat: $f:[0-9]+:[0-9]+: " "$TMP/err" || fail "gmat list $f: no file:line:col: $(cat "$TMP/err")"
     elif [ -n "$prefix" ]; then
@@ -122,7 +130,8 @@ each() {
 }
 
 # ---- text files: every tests/bad/*.mat (every second one in a sanitizer build) ----
-# Each tool run costs about 0.2 s (0.4 s under AddressSanitizer) to start OpenImageIO's 260 shared libraries.
+# (Tool runs once cost 0.2 s each, 0.4 s under AddressSanitizer, to start OpenImageIO; it is now loaded only for
+# images, and a run starts in a few milliseconds.)
 # Under the sanitizers the library itself reads every file of the corpus in-process (test_reader), so the
 # tools' own path - a failed load reported and the program ended - is checked on half the files there.
 mats=$(ls *.mat)

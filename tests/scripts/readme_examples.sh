@@ -87,7 +87,7 @@ echo "README.md: $n_examples example(s): $(cut -d' ' -f1 "$tmp/list" | paste -sd
 # ---- linking a program against a libgeneric.a (flags as the Makefile's DEPLIBS; sanitizers when it has them) ----
 san=""
 nm -A "$BUILD/lib/libgeneric.a" 2>/dev/null | grep -q __asan_ && san="-fsanitize=address,undefined"
-deplibs="$(pkg-config --libs OpenImageIO 2>/dev/null || true) -lstdc++ -fopenmp -ldl -lpthread -lm"
+deplibs="-lpng -fopenmp -ldl -lpthread -lm"
 link_program() { # out.c include-dir libgeneric.a out
     # shellcheck disable=SC2086
     cc -std=c11 -D_GNU_SOURCE -O0 -g -Wall -Wextra -Werror $san -I"$2" -rdynamic -o "$4" "$1" \

@@ -12,6 +12,9 @@ inc="$BUILD/plugins/include"
 [ -f "$inc/generic/node_kit.h" ] || { echo "type_modules.sh: $inc is not made (run make all first)" >&2; exit 1; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+# the loader is linked outside the build tree, so it is told where the OpenImageIO module is (image textures)
+GENERIC_OIIO_MODULE="$(cd "$BUILD" && pwd)/lib/generic/libgeneric_oiio.so"
+export GENERIC_OIIO_MODULE
 san=""
 nm -A "$BUILD/lib/libgeneric.a" 2>/dev/null | grep -q __asan_ && san="-fsanitize=address,undefined"
 cat > "$work/loader.c" <<'C'
@@ -78,7 +81,7 @@ int main(int argc, char **argv)
 }
 C
 cc $san -std=c11 -D_GNU_SOURCE -I"$inc" -rdynamic -o "$work/loader" "$work/loader.c" -Wl,--whole-archive \
-    "$BUILD/lib/libgeneric.a" -Wl,--no-whole-archive $(pkg-config --libs OpenImageIO 2>/dev/null) -lstdc++ -fopenmp \
+    "$BUILD/lib/libgeneric.a" -Wl,--no-whole-archive -lpng -fopenmp \
     -ldl -lpthread -lm
 # module DIR SRC: builds SRC (copied into DIR) as a built-in object and as a module, and loads the module.
 n=0

@@ -1,0 +1,379 @@
+/* sampling.c - the sampling checks of `gmat check` (material.h's sample, pdf, is_delta), for every material
+ * and texture tree, built-in or plug-in. For light leaving towards `out` at a few incidences and places (from
+ * outside, and from inside for a material that is not opaque) it draws NSAMPLES directions with
+ * gmaterial_sample and measures:
+ *   chi2          goodness of fit of the non-delta directions against gmaterial_pdf (the method of pbrt-v4's
+ *                 and Mitsuba 3's chi2 tests): the sphere binned in (cos theta, phi), the expected count of a
+ *                 bin N * the integral of pdf over it (midpoint rule, refined where the pdf varies strongly),
+ *                 bins expecting fewer than 5 pooled, Pearson's statistic and its p-value (the regularised
+ *                 incomplete gamma function); the figure is -log10 of the smallest p-value, the tolerance
+ *                 -log10 of ALPHA corrected for the number of tests (Sidak). A direction drawn where the pdf
+ *                 integrates to 0 fails at once.
+ *   pdf integral  the integral of pdf over the sphere against the share of draws that gave a non-delta
+ *                 direction (1 - P(delta) - P(nothing drawn)); a material whose is_delta says every lobe is
+ *                 ideal must draw no other direction.
+ *   weight        for non-delta directions weight = value(in, white, out) / pdf(in, out) with value
+ *                 reflection() or refraction() (directions on the ideal mirror ray excluded: reflection() is
+ *                 the ideal part there) and the sample's pdf = pdf(); for a delta lobe weight * pdf does not
+ *                 exceed the value along the ideal ray (other lobes of a blend may add to it). */
+#include "gmat.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#define NSAMPLES 20000
+#define NWEIGHT 2000  /* samples per test whose weight is checked */
+#define BINS_COS 16
+#define BINS_PHI 32
+#define SUB 6        /* midpoint rule per bin and direction */
+#define SUB_FINE 24  /* where the pdf varies by more than REFINE_RATIO within a bin */
+#define REFINE_RATIO 2.0
+#define MIN_EXPECTED 5.0
+#define ALPHA 1e-3
+#define TOL_INTEGRAL 0.02
+#define TOL_WEIGHT 1e-3
+
+static const double sample_incidences[] = {10, 50, 80};
+#define NSINC ((int)(sizeof sample_incidences / sizeof sample_incidences[0]))
+static const int sample_places[] = {0, 2};
+#define NSPLACES ((int)(sizeof sample_places / sizeof sample_places[0]))
+
+/* A small deterministic generator (splitmix64): the same numbers on every run. */
+static double next_uniform(unsigned long long *s)
+{
+    unsigned long long z = (*s += 0x9E3779B97F4A7C15ULL);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    z ^= z >> 31;
+    return (double)(z >> 11) * (1.0 / 9007199254740992.0);
+}
+
+/* ln Gamma(x) for x > 0 (Lanczos, g = 7, 9 terms). */
+static double log_gamma(double x)
+{
+    static const double c[9] = {0.99999999999980993, 676.5203681218851, -1259.1392167224028,
+                                771.32342877765313, -176.61502916214059, 12.507343278686905,
+                                -0.13857109526572012, 9.9843695780195716e-6, 1.5056327351493116e-7};
+    if (x < 0.5)
+        return log(M_PI / fabs(sin(M_PI * x))) - log_gamma(1.0 - x);
+    x -= 1.0;
+    double a = c[0], t = x + 7.5;
+    for (int i = 1; i < 9; i++)
+        a += c[i] / (x + i);
+    return 0.5 * log(2.0 * M_PI) + (x + 0.5) * log(t) - t + log(a);
+}
+
+/* Q(a, x) = Gamma(a, x) / Gamma(a): the series of P below a + 1, the continued fraction of Q above. */
+static double gamma_q(double a, double x)
+{
+    if (!(x > 0.0))
+        return 1.0;
+    double lg = a * log(x) - x - log_gamma(a);
+    if (x < a + 1.0) {
+        double sum = 1.0 / a, term = sum;
+        for (int n = 1; n < 1000; n++) {
+            term *= x / (a + n);
+            sum += term;
+            if (fabs(term) < fabs(sum) * 1e-15)
+                break;
+        }
+        return fmax(0.0, 1.0 - sum * exp(lg));
+    }
+    /* Lentz's method */
+    double b = x + 1.0 - a, c = 1e300, d = 1.0 / b, h = d;
+    for (int i = 1; i < 1000; i++) {
+        double an = -i * (i - a);
+        b += 2.0;
+        d = an * d + b;
+        if (fabs(d) < 1e-300)
+            d = 1e-300;
+        c = b + an / c;
+        if (fabs(c) < 1e-300)
+            c = 1e-300;
+        d = 1.0 / d;
+        double del = d * c;
+        h *= del;
+        if (fabs(del - 1.0) < 1e-15)
+            break;
+    }
+    return exp(lg) * h;
+}
+
+typedef struct SampleTest {
+    GmatContext *ctx;
+    GSurfPoint sp;
+    GColor ri;     /* the relative index n(from) / n(to) */
+    GColor weight; /* work colours */
+    GColor value;
+    GColor white;  /* gcolor_fill(1): the white sample() weighs with */
+    GVec3 out;
+    double ng; /* +1 or -1: the geometric normal's z */
+} SampleTest;
+
+/* The pdf integrated over bin (i, j) of the sphere (cos theta in [-1, 1] about +z, phi in [0, 2 pi)). */
+static double bin_integral(SampleTest *t, int i, int j, int sub)
+{
+    double c0 = -1.0 + 2.0 * i / BINS_COS, c1 = -1.0 + 2.0 * (i + 1) / BINS_COS;
+    double t0 = acos(c1), t1 = acos(c0); /* theta, to resolve lobes near the poles */
+    double p0 = 2.0 * M_PI * j / BINS_PHI, p1 = 2.0 * M_PI * (j + 1) / BINS_PHI;
+    double dt = (t1 - t0) / sub, dp = (p1 - p0) / sub, sum = 0.0, lo = INFINITY, hi = 0.0;
+    for (int a = 0; a < sub; a++) {
+        double th = t0 + (a + 0.5) * dt, st = sin(th), ct = cos(th);
+        for (int b = 0; b < sub; b++) {
+            double ph = p0 + (b + 0.5) * dp;
+            GVec3 in = gvec3(st * cos(ph), st * sin(ph), ct);
+            GScratchMark mark = gscratch_mark(t->ctx->scratch);
+            double p = gmaterial_pdf(t->ctx->material, &t->sp, in, t->out, &t->ri);
+            gscratch_release(t->ctx->scratch, mark);
+            if (!isfinite(p) || p < 0.0)
+                return NAN;
+            sum += p * st;
+            lo = fmin(lo, p);
+            hi = fmax(hi, p);
+        }
+    }
+    double integral = sum * dt * dp;
+    if (sub < SUB_FINE && hi > REFINE_RATIO * lo && hi > 0.0)
+        return bin_integral(t, i, j, SUB_FINE);
+    return integral;
+}
+
+/* Relative difference of two colours (absolute below 1e-6). */
+static double color_diff(const GColor *a, const GColor *b)
+{
+    double big = 1e-6, d = 0.0;
+    for (int k = 0; k < a->model->nvalues; k++) {
+        big = fmax(big, fmax(fabs(a->v[k]), fabs(b->v[k])));
+        d = fmax(d, fabs((double)a->v[k] - b->v[k]));
+    }
+    return isfinite(d) ? d / big : INFINITY;
+}
+
+/* How far weight * pdf exceeds value (relative), 0 when it does not. */
+static double color_excess(const GColor *w, double pdf, const GColor *value)
+{
+    double big = 1e-6, d = 0.0;
+    for (int k = 0; k < w->model->nvalues; k++) {
+        double x = w->v[k] * pdf, v = value->v[k];
+        big = fmax(big, fmax(fabs(x), fabs(v)));
+        d = fmax(d, x - v);
+    }
+    return isfinite(d) ? d / big : INFINITY;
+}
+
+/* The value of white light from in towards out: reflection() or refraction(). */
+static int value_of(SampleTest *t, GVec3 in, int transmit, GColor *value)
+{
+    GmatContext *ctx = t->ctx;
+    GScratchMark mark = gscratch_mark(ctx->scratch);
+    int rc = transmit ? gmaterial_refraction(ctx->material, &t->sp, in, &t->white, &t->ri, t->out, value)
+                      : gmaterial_reflection(ctx->material, &t->sp, in, &t->white, t->out, value);
+    gscratch_release(ctx->scratch, mark);
+    return rc;
+}
+
+/* Results of one test. */
+typedef struct SampleResult {
+    double log_p;    /* -log10 of the chi2 p-value (0 without non-delta draws) */
+    double integral_err;
+    double weight_err;
+    int nondelta, delta, failed;
+    const char *why; /* of a failure to evaluate */
+} SampleResult;
+
+static void run_test(SampleTest *t, int nsamples, unsigned long long seed, SampleResult *r)
+{
+    GmatContext *ctx = t->ctx;
+    static double expected[BINS_COS * BINS_PHI];
+    static int observed[BINS_COS * BINS_PHI];
+    memset(observed, 0, sizeof observed);
+    memset(r, 0, sizeof *r);
+    int is_delta = gmaterial_is_delta(ctx->material, &t->sp);
+    if (is_delta < 0) {
+        r->failed = 1, r->why = "is_delta failed";
+        return;
+    }
+    for (int n = 0; n < nsamples; n++) {
+        double u1 = next_uniform(&seed), u2 = next_uniform(&seed);
+        GMaterialSample s;
+        GScratchMark mark = gscratch_mark(ctx->scratch);
+        int rc = gmaterial_sample(ctx->material, &t->sp, t->out, &t->ri, u1, u2, &s, &t->weight);
+        gscratch_release(ctx->scratch, mark);
+        if (rc < 0) {
+            r->failed = 1, r->why = "sample returned an error";
+            return;
+        }
+        if (rc == 0)
+            continue;
+        double len = gvec3_length(s.in);
+        if (!isfinite(len) || fabs(len - 1.0) > 1e-4 || !(s.pdf > 0.0) || !isfinite(s.pdf) ||
+            !gcolor_is_finite(&t->weight)) {
+            r->failed = 1, r->why = "a sample with a direction that is not a unit vector, or a pdf or weight that is "
+                                    "not finite and positive";
+            return;
+        }
+        GVec3 in = gvec3_scale(s.in, 1.0 / len);
+        int transmit = in.z * t->ng < 0.0;
+        if (s.flags & GSAMPLE_DELTA) {
+            r->delta++;
+            if (n < NWEIGHT) {
+                if (value_of(t, in, transmit, &t->value) != G_OK) {
+                    r->failed = 1, r->why = "reflection or refraction failed";
+                    return;
+                }
+                r->weight_err = fmax(r->weight_err, color_excess(&t->weight, s.pdf, &t->value));
+            }
+            continue;
+        }
+        r->nondelta++;
+        if (is_delta) {
+            r->integral_err = INFINITY; /* is_delta said every lobe is ideal */
+            r->why = "is_delta is 1 but a non-delta direction was drawn";
+        }
+        double c = fmin(1.0, fmax(-1.0, in.z)), phi = atan2(in.y, in.x);
+        if (phi < 0.0)
+            phi += 2.0 * M_PI;
+        int i = (int)((c + 1.0) * 0.5 * BINS_COS), j = (int)(phi / (2.0 * M_PI) * BINS_PHI);
+        observed[(i < BINS_COS ? i : BINS_COS - 1) * BINS_PHI + (j < BINS_PHI ? j : BINS_PHI - 1)]++;
+        if (n < NWEIGHT) {
+            GVec3 n_s = gsurfpoint_normal(&t->sp);
+            GScratchMark m2 = gscratch_mark(ctx->scratch);
+            double pdf = gmaterial_pdf(ctx->material, &t->sp, in, t->out, &t->ri);
+            gscratch_release(ctx->scratch, m2);
+            double e = fabs(pdf - s.pdf) / fmax(pdf, s.pdf);
+            if (!transmit && gmaterial_is_mirror_pair(in, n_s, t->out))
+                continue; /* reflection() returns the ideal part on the mirror ray */
+            if (value_of(t, in, transmit, &t->value) != G_OK) {
+                r->failed = 1, r->why = "reflection or refraction failed";
+                return;
+            }
+            if (pdf > 0.0 && gcolor_scale(&t->value, &t->value, 1.0 / pdf) == G_OK)
+                e = fmax(e, color_diff(&t->weight, &t->value));
+            else
+                e = INFINITY;
+            r->weight_err = fmax(r->weight_err, isfinite(e) ? e : INFINITY);
+        }
+    }
+    /* expected counts */
+    double integral = 0.0;
+    for (int b = 0; b < BINS_COS * BINS_PHI; b++) {
+        double v = bin_integral(t, b / BINS_PHI, b % BINS_PHI, SUB);
+        if (!isfinite(v)) {
+            r->failed = 1, r->why = "pdf is not finite and >= 0";
+            return;
+        }
+        expected[b] = v * nsamples;
+        integral += v;
+    }
+    double share = (double)r->nondelta / nsamples;
+    r->integral_err = fmax(r->integral_err, fabs(integral - share));
+    if (r->nondelta == 0)
+        return;
+    /* Pearson's chi2 over the bins, those expecting fewer than MIN_EXPECTED pooled */
+    double chi2 = 0.0, pool_e = 0.0;
+    int pool_o = 0, dof = -1;
+    for (int b = 0; b < BINS_COS * BINS_PHI; b++) {
+        if (expected[b] == 0.0 && observed[b] > 0) {
+            r->log_p = INFINITY; /* drawn where the pdf says never */
+            return;
+        }
+        if (expected[b] < MIN_EXPECTED) {
+            pool_e += expected[b];
+            pool_o += observed[b];
+            continue;
+        }
+        double d = observed[b] - expected[b];
+        chi2 += d * d / expected[b];
+        dof++;
+    }
+    if (pool_e >= MIN_EXPECTED) {
+        double d = pool_o - pool_e;
+        chi2 += d * d / pool_e;
+        dof++;
+    } else if (pool_o > 4.0 * MIN_EXPECTED + 4.0 * pool_e) {
+        r->log_p = INFINITY; /* many draws where the pdf expects almost none */
+        return;
+    }
+    if (dof < 1)
+        return;
+    double p = gamma_q(0.5 * dof, 0.5 * chi2);
+    r->log_p = p > 0.0 ? -log10(p) : INFINITY;
+}
+
+void gmat_check_sampling(GmatContext *ctx, const GmatPlace *places, int nplaces, int nsamples, GmatReportFn report,
+                         void *k)
+{
+    if (nsamples <= 0)
+        nsamples = NSAMPLES;
+    SampleTest t = {.ctx = ctx};
+    int failed = 0, tests = 0;
+    double worst_p = 0.0, worst_int = 0.0, worst_w = 0.0, at_p = 0, at_int = 0, at_w = 0;
+    const char *why = NULL;
+    long delta = 0, nondelta = 0;
+    if (gcolor_alloc(&t.ri, ctx->model) || gcolor_alloc(&t.weight, ctx->model) || gcolor_alloc(&t.value, ctx->model) ||
+        gcolor_alloc(&t.white, ctx->model) || gcolor_fill(&t.white, 1.0))
+        failed = 1, why = "out of memory";
+    for (int pi = 0; pi < NSPLACES && !failed; pi++) {
+        ctx->place = &places[sample_places[pi] % nplaces];
+        for (int below = 0; below < 2 && !failed; below++) {
+            gmat_surface_point(ctx, &t.sp, below);
+            if (below && gmaterial_opaque(ctx->material, &t.sp))
+                break;
+            t.ng = below ? -1.0 : 1.0;
+            GScratchMark mark = gscratch_mark(ctx->scratch);
+            int rc = gmat_relative_index(&t.sp, &t.ri);
+            gscratch_release(ctx->scratch, mark);
+            if (rc != G_OK) {
+                failed = 1, why = "refraction_index failed";
+                break;
+            }
+            for (int a = 0; a < NSINC && !failed; a++) {
+                GVec3 d = gmat_direction(sample_incidences[a], 30.0 + 100.0 * pi);
+                t.out = below ? gvec3(d.x, d.y, -d.z) : d;
+                SampleResult r;
+                run_test(&t, nsamples, 0x5eed0000ULL + 977ULL * (unsigned long long)(tests + 1), &r);
+                tests++;
+                if (r.failed) {
+                    failed = 1, why = r.why;
+                    break;
+                }
+                if (r.why && !why)
+                    why = r.why;
+                delta += r.delta;
+                nondelta += r.nondelta;
+                double inc = below ? -sample_incidences[a] : sample_incidences[a];
+                if (!(r.log_p <= worst_p))
+                    worst_p = r.log_p, at_p = inc;
+                if (!(r.integral_err <= worst_int))
+                    worst_int = r.integral_err, at_int = inc;
+                if (!(r.weight_err <= worst_w))
+                    worst_w = r.weight_err, at_w = inc;
+            }
+        }
+    }
+    ctx->place = NULL;
+    gcolor_free(&t.ri);
+    gcolor_free(&t.weight);
+    gcolor_free(&t.value);
+    gcolor_free(&t.white);
+    char detail[320];
+    if (failed) {
+        snprintf(detail, sizeof detail, "(the material failed: %s)", why ? why : "?");
+        report(k, "chi2", INFINITY, 0.0, detail);
+        report(k, "pdf integral", INFINITY, TOL_INTEGRAL, detail);
+        report(k, "weight", INFINITY, TOL_WEIGHT, detail);
+        return;
+    }
+    double tol_p = -log10(1.0 - pow(1.0 - ALPHA, 1.0 / (tests > 0 ? tests : 1)));
+    snprintf(detail, sizeof detail, "(-log10 p of sample() against pdf(), %d tests of %d draws, %dx%d bins in "
+             "(cos theta, phi); worst at theta_out %g; %ld non-delta, %ld delta draws)", tests, nsamples, BINS_COS,
+             BINS_PHI, at_p, nondelta, delta);
+    report(k, "chi2", worst_p, tol_p, detail);
+    snprintf(detail, sizeof detail, "(|integral of pdf - share of non-delta draws|, worst at theta_out %g%s%s)",
+             at_int, why ? "; " : "", why ? why : "");
+    report(k, "pdf integral", worst_int, TOL_INTEGRAL, detail);
+    snprintf(detail, sizeof detail, "(weight vs value / pdf and the sample's pdf vs pdf(), relative; worst at "
+             "theta_out %g)", at_w);
+    report(k, "weight", worst_w, TOL_WEIGHT, detail);
+}

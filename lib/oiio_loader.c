@@ -1,0 +1,244 @@
+/* oiio_loader.c - loads the OpenImageIO module (oiio_module.h) on first use, and the public image and texture
+ * functions that go through it. PNG output goes through libpng (image_png.h) and needs no module.
+ *
+ * Where the module is looked for, in order: $GENERIC_OIIO_MODULE (a path; then nowhere else); beside the object
+ * that holds this code (libgeneric.so, or the program it is linked into): DIR/generic/ and DIR/../lib/generic/;
+ * the same beside the executable; the installed GENERIC_LIBDIR/generic/; and the dynamic loader's own search
+ * (LD_LIBRARY_PATH, ld.so.cache). */
+#include "oiio_module.h"
+
+#include "image_png.h"
+
+#include "generic/memory.h"
+
+#include <dlfcn.h>
+#include <limits.h>
+#include <math.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#ifndef GENERIC_LIBDIR
+#define GENERIC_LIBDIR "/usr/local/lib"
+#endif
+
+static const GOiioHost host = {
+    gerror_set, gmem_alloc, gmem_calloc, gmem_free, gfile_open_input, gfile_check_output, gfile_output_begin,
+    gfile_output_commit, gfile_output_abort, gimage_memory_budget, gimage_srgb_encode, gimage_srgb_decode,
+};
+
+static pthread_once_t once = PTHREAD_ONCE_INIT;
+static GOiioOps ops;
+static int loaded;
+static char failure[400]; /* why not, when not loaded */
+
+#ifdef GENERIC_OIIO_STATIC
+/* A build that links the module's objects into the library itself (the fuzzing build). */
+int generic_oiio_module(unsigned abi, const GOiioHost *host, GOiioOps *ops);
+#endif
+
+/* Appends "; " and text to failure, cut to fit. */
+static void note(const char *text)
+{
+    size_t len = strlen(failure);
+    if (len && len + 2 < sizeof failure) {
+        memcpy(failure + len, "; ", 2);
+        len += 2;
+    }
+    size_t n = strlen(text), room = sizeof failure - 1 - len;
+    n = n < room ? n : room;
+    memcpy(failure + len, text, n);
+    failure[len + n] = 0;
+}
+
+#ifndef GENERIC_OIIO_STATIC
+/* Opens one candidate; 1 when the module is loaded and accepted. A missing file is noted only when named. */
+static int try_module(const char *path, int named)
+{
+    if (!named && strchr(path, '/') && access(path, F_OK) != 0)
+        return 0;
+    void *h = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+    if (!h) {
+        const char *why = dlerror();
+        if (named || strchr(path, '/'))
+            note(why ? why : path);
+        return 0;
+    }
+    GOiioEntry entry = (GOiioEntry)dlsym(h, GOIIO_MODULE_ENTRY);
+    if (!entry) {
+        char msg[PATH_MAX + 64];
+        snprintf(msg, sizeof msg, "%s: no entry %s", path, GOIIO_MODULE_ENTRY);
+        note(msg);
+        dlclose(h);
+        return 0;
+    }
+    if (entry(GOIIO_MODULE_ABI, &host, &ops) != 0) {
+        char msg[PATH_MAX + 64];
+        snprintf(msg, sizeof msg, "%s: built for another interface version (this library has %d)", path,
+                 GOIIO_MODULE_ABI);
+        note(msg);
+        dlclose(h);
+        return 0;
+    }
+    return 1;
+}
+
+/* Tries DIR/generic/FILE and DIR/../lib/generic/FILE for the directory of the file path. */
+static int try_beside(const char *file)
+{
+    char real[PATH_MAX], cand[PATH_MAX + 64];
+    if (!file || !realpath(file, real))
+        return 0;
+    char *slash = strrchr(real, '/');
+    if (!slash)
+        return 0;
+    *slash = 0;
+    snprintf(cand, sizeof cand, "%s/generic/%s", real, GOIIO_MODULE_FILE);
+    if (try_module(cand, 0))
+        return 1;
+    snprintf(cand, sizeof cand, "%s/../lib/generic/%s", real, GOIIO_MODULE_FILE);
+    return try_module(cand, 0);
+}
+
+#endif
+
+static void load(void)
+{
+#ifdef GENERIC_OIIO_STATIC
+    loaded = generic_oiio_module(GOIIO_MODULE_ABI, &host, &ops) == 0;
+    if (!loaded)
+        note("the linked-in OpenImageIO shim refused the interface version");
+    return;
+#else
+    const char *named = secure_getenv("GENERIC_OIIO_MODULE");
+    if (named && *named) {
+        loaded = try_module(named, 1);
+        return;
+    }
+    Dl_info self;
+    if (dladdr((void *)&host, &self) && self.dli_fname && strchr(self.dli_fname, '/') && try_beside(self.dli_fname)) {
+        loaded = 1;
+        return;
+    }
+    if (try_beside("/proc/self/exe")) {
+        loaded = 1;
+        return;
+    }
+    loaded = try_module(GENERIC_LIBDIR "/generic/" GOIIO_MODULE_FILE, 0) || try_module(GOIIO_MODULE_FILE, 0);
+#endif
+}
+
+const GOiioOps *goiio_ops(GError *err)
+{
+    pthread_once(&once, load);
+    if (loaded)
+        return &ops;
+    gerror_set(err, G_ERR_IO, "image input and output need the OpenImageIO module %s, which cannot be loaded: %s",
+               GOIIO_MODULE_FILE, failure[0] ? failure :
+               "not found (looked in generic/ and ../lib/generic/ beside the library and the program, in "
+               GENERIC_LIBDIR "/generic/ and on the dynamic loader's path; GENERIC_OIIO_MODULE may name it)");
+    return NULL;
+}
+
+/* ---- the public functions that need the module ---- */
+
+int gimage_read(const char *path, unsigned flags, GImage *img, GError *err)
+{
+    if (!img)
+        return gerror_set(err, G_ERR_INVALID, "no image given");
+    img->width = img->height = img->channels = 0;
+    img->pixels = NULL;
+    if (!path || !*path)
+        return gerror_set(err, G_ERR_INVALID, "no image file name given");
+    const GOiioOps *o = goiio_ops(err);
+    return o ? o->image_read(path, flags, img, err) : G_ERR_IO;
+}
+
+int gimage_info(const char *path, int *width, int *height, int *channels, GError *err)
+{
+    if (!path || !*path)
+        return gerror_set(err, G_ERR_INVALID, "no image file name given");
+    const GOiioOps *o = goiio_ops(err);
+    return o ? o->image_info(path, width, height, channels, err) : G_ERR_IO;
+}
+
+int gimage_check_output(const char *path, GError *err)
+{
+    if (!path || !*path)
+        return gerror_set(err, G_ERR_INVALID, "no image file name given");
+    if (gimage_png_path(path))
+        return gfile_check_output(path, err);
+    const GOiioOps *o = goiio_ops(err);
+    return o ? o->image_check_output(path, err) : G_ERR_IO;
+}
+
+int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *opt, GError *err)
+{
+    if (!path || !*path)
+        return gerror_set(err, G_ERR_INVALID, "no image file name given");
+    if (!img || !img->pixels || img->width <= 0 || img->height <= 0 || img->channels < 1 || img->channels > 4)
+        return gerror_set(err, G_ERR_INVALID, "%s: invalid image to write", path);
+    if (opt && opt->full_width > 0 &&
+        (opt->x < 0 || opt->y < 0 || opt->full_height <= 0 || (long long)opt->x + img->width > opt->full_width ||
+         (long long)opt->y + img->height > opt->full_height))
+        return gerror_set(err, G_ERR_INVALID, "%s: the %dx%d image at %d,%d does not lie inside the %dx%d full image",
+                          path, img->width, img->height, opt->x, opt->y, opt->full_width, opt->full_height);
+    if (gimage_png_path(path)) {
+        double exposure = opt ? opt->exposure : 0.0;
+        if (!isfinite(exposure))
+            return gerror_set(err, G_ERR_INVALID, "%s: exposure must be finite", path);
+        int rc = gfile_check_output(path, err);
+        return rc != G_OK ? rc : gimage_png_write(path, img, exp2(exposure), err);
+    }
+    const GOiioOps *o = goiio_ops(err);
+    return o ? o->image_write(path, img, opt, err) : G_ERR_IO;
+}
+
+int gtexsys_create(GTextureSystem **out, GError *err)
+{
+    *out = NULL;
+    const GOiioOps *o = goiio_ops(err);
+    return o ? o->texsys_create(out, err) : G_ERR_IO;
+}
+
+/* A texture system exists only once the module is loaded, so NULL needs no module. */
+GTextureSystem *gtexsys_ref(GTextureSystem *ts)
+{
+    const GOiioOps *o = ts ? goiio_ops(NULL) : NULL;
+    return o ? o->texsys_ref(ts) : NULL;
+}
+
+void gtexsys_unref(GTextureSystem *ts)
+{
+    const GOiioOps *o = ts ? goiio_ops(NULL) : NULL;
+    if (o)
+        o->texsys_unref(ts);
+}
+
+GTextureSystem *gtexsys_default(GError *err)
+{
+    const GOiioOps *o = goiio_ops(err);
+    return o ? o->texsys_default(err) : NULL;
+}
+
+int gtexsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *channels, int *srgb, GError *err)
+{
+    *file = NULL;
+    if (!ts || !path || !path[0])
+        return gerror_set(err, G_ERR_INVALID, "image: no file name given");
+    const GOiioOps *o = goiio_ops(err);
+    return o ? o->texsys_open(ts, path, file, channels, srgb, err) : G_ERR_IO;
+}
+
+int gtexsys_lookup(GTextureSystem *ts, GTexFile *file, GTexWrap swrap, GTexWrap twrap, double s, double t,
+                   const double deriv[4], double blur, float rgb[3])
+{
+    const GOiioOps *o = ts ? goiio_ops(NULL) : NULL;
+    if (!o) {
+        rgb[0] = rgb[1] = rgb[2] = 0.0f;
+        return G_ERR_IO;
+    }
+    return o->texsys_lookup(ts, file, swrap, twrap, s, t, deriv, blur, rgb);
+}
