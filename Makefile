@@ -56,6 +56,9 @@ OIIO_OBJ := $(LIB_CXX:%.cpp=$(BUILD)/obj/%.o)
 OIIO_SO  := $(BUILD)/lib/generic/libgeneric_oiio.so
 # Where `make install` puts the module: the loader's last resort when it is not beside the library.
 $(BUILD)/obj/lib/oiio_loader.o: CPPFLAGS += -DGENERIC_LIBDIR='"$(PREFIX)/lib"'
+# Where `make install` puts the example plug-ins: the last directory searched for a bare module name (lib/plugin.c).
+PLUGIN_DIR := $(PREFIX)/lib/generic/plugins
+$(BUILD)/obj/lib/plugin.o: CPPFLAGS += -DGENERIC_PLUGIN_DIR='"$(PLUGIN_DIR)"'
 
 TOOLS   := $(notdir $(patsubst %/,%,$(dir $(wildcard examples/*/main.c))))
 TOOL_BIN := $(TOOLS:%=$(BUILD)/bin/%)
@@ -130,23 +133,57 @@ test: deps
 	@$(MAKE) --no-print-directory all
 	@scripts/run_tests.sh $(BUILD)
 
+# The demo needs the library and the tools only (examples/scenes/demo.scene loads no plug-in).
 demo: deps
-	@$(MAKE) --no-print-directory all
+	@$(MAKE) --no-print-directory lib tools
 	@scripts/demo.sh $(BUILD)
+
+# Objects that only a pattern rule names (the tools', the tests', the benchmarks') are intermediate to make, which
+# would delete them after linking and compile them again on the next goal (`make demo` then `make test`).
+.SECONDARY: $(foreach t,$(TOOLS),$(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard examples/$(t)/*.c))) \
+            $(TEST_SRC:%.c=$(BUILD)/obj/%.o) $(BENCH_SRC:%.c=$(BUILD)/obj/%.o)
 
 bench: deps
 	@$(MAKE) --no-print-directory all $(BENCH_BIN)
 	@for b in $(BENCH_BIN); do echo "== $$b"; $$b || exit 1; done
 
-install: lib
-	install -d $(DESTDIR)$(PREFIX)/include/generic $(DESTDIR)$(PREFIX)/lib/pkgconfig
-	install -m 644 include/generic/*.h $(DESTDIR)$(PREFIX)/include/generic/
-	install -m 644 $(LIBA) $(DESTDIR)$(PREFIX)/lib/
-	install -m 755 $(LIBSO) $(DESTDIR)$(PREFIX)/lib/
-	install -d $(DESTDIR)$(PREFIX)/lib/generic
-	install -m 755 $(OIIO_SO) $(DESTDIR)$(PREFIX)/lib/generic/
-	ln -sf libgeneric.so.$(SOVER) $(DESTDIR)$(PREFIX)/lib/libgeneric.so
-	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' generic.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/generic.pc
+# install: headers, both libraries, the OpenImageIO module, generic.pc, the tools (bin/), the example plug-ins
+# (PLUGIN_DIR) and, when help2man is installed, a man page per tool made from its --help and --version.
+# uninstall removes exactly these files, and the directories that are libgeneric's own once they are empty.
+INST := $(DESTDIR)$(PREFIX)
+EXAMPLE_PLUGIN_SO := $(patsubst examples/plugins/%.c,$(BUILD)/plugins/%.so,$(wildcard examples/plugins/*.c))
+MAN_DIR := $(PREFIX)/share/man/man1
+# the NAME line of each tool's man page
+MAN_NAME_gcolor := sample colours in every colour model of libgeneric
+MAN_NAME_gmat   := evaluate, check, list and plot the materials and texture trees of a libgeneric file
+MAN_NAME_gprobe := approximate an HDR light probe by lights and compare the techniques
+MAN_NAME_gtrace := render a libgeneric scene file
+.PHONY: uninstall
+install: lib tools $(EXAMPLE_PLUGIN_SO)
+	install -d $(INST)/include/generic $(INST)/lib/pkgconfig $(INST)/bin $(DESTDIR)$(PLUGIN_DIR)
+	install -m 644 include/generic/*.h $(INST)/include/generic/
+	install -m 644 $(LIBA) $(INST)/lib/
+	install -m 755 $(LIBSO) $(INST)/lib/
+	install -d $(INST)/lib/generic
+	install -m 755 $(OIIO_SO) $(INST)/lib/generic/
+	ln -sf libgeneric.so.$(SOVER) $(INST)/lib/libgeneric.so
+	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' generic.pc.in > $(INST)/lib/pkgconfig/generic.pc
+	install -m 755 $(TOOL_BIN) $(INST)/bin/
+	install -m 755 $(EXAMPLE_PLUGIN_SO) $(DESTDIR)$(PLUGIN_DIR)/
+	@if command -v help2man >/dev/null 2>&1; then \
+	    install -d $(DESTDIR)$(MAN_DIR) && \
+	    $(foreach t,$(TOOLS),echo "help2man $(BUILD)/bin/$(t) > $(DESTDIR)$(MAN_DIR)/$(t).1" && \
+	    help2man -N -n "$(or $(MAN_NAME_$(t)),a libgeneric tool)" -o $(DESTDIR)$(MAN_DIR)/$(t).1 $(BUILD)/bin/$(t) &&) \
+	    true; \
+	else echo "install: help2man not found: no man pages written (Debian package help2man)"; fi
+
+uninstall:
+	rm -f $(addprefix $(INST)/include/generic/,$(notdir $(wildcard include/generic/*.h)))
+	rm -f $(INST)/lib/libgeneric.a $(INST)/lib/libgeneric.so $(INST)/lib/libgeneric.so.$(SOVER)
+	rm -f $(INST)/lib/generic/$(notdir $(OIIO_SO)) $(INST)/lib/pkgconfig/generic.pc
+	rm -f $(addprefix $(INST)/bin/,$(TOOLS)) $(addprefix $(DESTDIR)$(MAN_DIR)/,$(TOOLS:=.1))
+	rm -f $(addprefix $(DESTDIR)$(PLUGIN_DIR)/,$(notdir $(EXAMPLE_PLUGIN_SO)))
+	rmdir $(INST)/include/generic $(DESTDIR)$(PLUGIN_DIR) $(INST)/lib/generic 2>/dev/null || true
 
 clean:
 	rm -rf build

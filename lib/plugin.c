@@ -267,6 +267,17 @@ int gplugin_find(const char *name, const char *dir, char **path, GError *err)
         }
         s += len + (colon ? 1 : 0);
     }
+#ifdef GENERIC_PLUGIN_DIR /* last: where `make install` puts the example plug-ins (PREFIX/lib/generic/plugins) */
+    p = join(GENERIC_PLUGIN_DIR, name);
+    if (!p)
+        return gerror_set(err, G_ERR_NOMEM, "out of memory loading module '%s'", name);
+    if (exists(p)) {
+        *path = p;
+        return G_OK;
+    }
+    gmem_free(p);
+    note_dir(searched, sizeof searched, GENERIC_PLUGIN_DIR);
+#endif
     return gerror_set(err, G_ERR_IO, "cannot load module '%s': file not found in %s (%s%s)", name, searched,
                       env && env[0] ? GPLUGIN_PATH_ENV "=" : GPLUGIN_PATH_ENV " is not set",
                       env && env[0] ? env : "");
