@@ -26,7 +26,7 @@ static void usage(FILE *f)
             "  --rgb R,G,B   add a reflectance in linear sRGB to the report (repeatable)\n"
             "  --models LIST only these models, e.g. rgb,spectrum\n"
             "  --plugin FILE.so  load a module first (repeatable; a bare name is searched in the current\n"
-            "                directory, then in GENERIC_PLUGIN_PATH)\n"
+            "                directory, then in GENERIC_PLUGIN_PATH, then PREFIX/lib/generic/plugins)\n"
             "  -h, --help    this text\n"
             "  --version     the version\n"
             "Every option value may also be written --option=value.\n"
