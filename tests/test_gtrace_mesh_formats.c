@@ -1,6 +1,6 @@
 /* test_gtrace_mesh_formats.c - the same mesh as OBJ (mesh.c), ASCII PLY and glTF 2.0 (mesh_assimp.c, through
  * assimp) loads to the same corners (positions, normals, uv) and renders to the same pixels; truncated, garbage
- * and lying files fail with a message naming the file. */
+ * and lying files fail with a message naming the file. Also a binary little-endian PLY of the same mesh. */
 #include "test_gtrace_common.h"
 
 #include <generic/builtins.h>
@@ -57,6 +57,30 @@ static void ply_text(char *out, size_t size)
                       N[i][1], N[i][2], UV[i][0], UV[i][1]);
     for (int t = 0; t < 2; t++)
         n += snprintf(out + n, size - (size_t)n, "3 %d %d %d\n", TRI[t][0], TRI[t][1], TRI[t][2]);
+}
+
+/* The same mesh as binary little-endian PLY (float properties, uchar count and int indices); its length. */
+static size_t ply_binary(unsigned char *out, size_t size)
+{
+    int n = snprintf((char *)out, size,
+                     "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                     "property float z\nproperty float nx\nproperty float ny\nproperty float nz\nproperty float u\n"
+                     "property float v\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n");
+    size_t o = (size_t)n;
+    assert_true(o + 4 * 32 + 2 * 13 <= size);
+    for (int i = 0; i < 4; i++) {
+        float f[8] = {(float)P[i][0], (float)P[i][1], (float)P[i][2], (float)N[i][0],
+                      (float)N[i][1], (float)N[i][2], (float)UV[i][0], (float)UV[i][1]};
+        memcpy(out + o, f, sizeof f), o += sizeof f; /* this test runs on little-endian machines */
+    }
+    for (int t = 0; t < 2; t++) {
+        out[o++] = 3;
+        for (int k = 0; k < 3; k++) {
+            int32_t v = TRI[t][k];
+            memcpy(out + o, &v, 4), o += 4;
+        }
+    }
+    return o;
 }
 
 static void base64(const unsigned char *in, size_t n, char *out)
@@ -188,13 +212,19 @@ static void test_formats_agree(void **state)
     char *ply = write_text("m.ply", text);
     gltf_text(text, sizeof text, 0);
     char *gltf = write_text("m.gltf", text);
-    Object *a = load_ok(obj), *b = load_ok(ply), *c = load_ok(gltf);
+    unsigned char bin[2048];
+    size_t nbin = ply_binary(bin, sizeof bin);
+    char *plyb = write_file("mb.ply", bin, nbin);
+    Object *a = load_ok(obj), *b = load_ok(ply), *c = load_ok(gltf), *d = load_ok(plyb);
     assert_int_equal(a->mesh->ntris, 2);
     assert_same_corners(a->mesh, b->mesh);
     assert_same_corners(a->mesh, c->mesh);
+    assert_same_corners(a->mesh, d->mesh);
     object_free(a);
     object_free(b);
     object_free(c);
+    object_free(d);
+    unlink(plyb);
 
     Framebuffer fa, fb, fc;
     render_mesh(obj, &fa);
@@ -245,6 +275,15 @@ static void test_hostile_files(void **state)
     int cuts = 0;
     for (size_t n = 0; n + 8 < plen; n += 3, cuts++)
         assert_refused(write_file("cut.ply", ply, n), NULL);
+    unsigned char bin[2048];
+    size_t blen = ply_binary(bin, sizeof bin);
+    for (size_t n = 0; n < blen; n += 2, cuts++)
+        assert_refused(write_file("cutb.ply", bin, n), NULL);
+    bin[blen - 13] = 2; /* the second face claims 2 indices */
+    assert_refused(write_file("two.ply", bin, blen), "a list of 2 values");
+    bin[blen - 13] = 3;
+    bin[blen - 1] = 0x7f; /* its last index far beyond the 4 vertices */
+    assert_refused(write_file("far.ply", bin, blen), "out of range");
     for (size_t n = 0; n + 4 < glen; n += 7, cuts++)
         assert_refused(write_file("cut.gltf", gltf, n), NULL);
     /* garbage under every extension (seeded bytes; some starting like the real thing) */
@@ -279,7 +318,10 @@ static void test_hostile_files(void **state)
     /* not a regular file */
     assert_refused("/dev/zero.ply", NULL);
     print_message("%d hostile files refused\n", cuts + 5);
-    unlink(temp_path("cut.ply"));
+    const char *made[] = {"cut.ply", "cutb.ply", "two.ply", "far.ply", "cut.gltf", "junk.ply", "junk.gltf", "junk.glb",
+                          "big.ply", "bigf.ply", "big.gltf", "bigb.gltf"};
+    for (size_t i = 0; i < sizeof made / sizeof *made; i++)
+        unlink(temp_path(made[i]));
 }
 
 int main(void)
