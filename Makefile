@@ -191,9 +191,9 @@ clean:
 -include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)
 
 # ---- gtrace (examples/gtrace): Embree for the tracer, its test programs, and the POV-Ray comparison ----
-EXTRA_LIBS_gtrace := -lembree3
-$(BUILD)/tests/test_gtrace: TESTLIBS += -lembree3
-$(BUILD)/tests/test_gtrace_%: TESTLIBS += -lembree3
+EXTRA_LIBS_gtrace := -lembree3 -lassimp
+$(BUILD)/tests/test_gtrace: TESTLIBS += -lembree3 -lassimp
+$(BUILD)/tests/test_gtrace_%: TESTLIBS += -lembree3 -lassimp
 .SECONDARY: $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard examples/gtrace/*.c))
 .PHONY: bench-pov
 bench-pov: $(BUILD)/bin/gtrace

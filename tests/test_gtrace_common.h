@@ -9,6 +9,7 @@
 #include "examples/gtrace/light_seen.c"
 #include "examples/gtrace/lights.c"
 #include "examples/gtrace/mesh.c"
+#include "examples/gtrace/mesh_assimp.c"
 #include "examples/gtrace/output.c"
 #include "examples/gtrace/parse.c"
 #include "examples/gtrace/path.c"

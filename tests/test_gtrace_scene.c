@@ -492,7 +492,7 @@ static void test_sources_are_model_free(void **state)
             /* includes: only the generic interfaces, Embree, OpenMP, the C library, its own headers and the
              * command-line conventions all tools share (examples/common/cli.h, libc only) */
             if (strncmp(line, "#include", 8) == 0) {
-                const char *ok[] = {"<generic/", "<embree3/", "<omp.h>", "<math.h>", "<stdio.h>", "<stdlib.h>",
+                const char *ok[] = {"<generic/", "<embree3/", "<assimp/", "<omp.h>", "<math.h>", "<stdio.h>", "<stdlib.h>",
                                     "<string.h>", "<strings.h>", "<errno.h>", "<stdint.h>", "<time.h>", "<unistd.h>",
                                     "\"../common/cli.h\""};
                 int good = 0;
@@ -508,6 +508,9 @@ static void test_sources_are_model_free(void **state)
                 /* Embree stays behind the acceleration structure */
                 if (strstr(line, "<embree3/") && strcmp(files[f], "accel.c") != 0)
                     fail_msg("%s:%d: only accel.c includes Embree: %s", files[f], ln, line);
+                /* and assimp behind the PLY/glTF reader */
+                if (strstr(line, "<assimp/") && strcmp(files[f], "mesh_assimp.c") != 0)
+                    fail_msg("%s:%d: only mesh_assimp.c includes assimp: %s", files[f], ln, line);
             }
             checked++;
         }

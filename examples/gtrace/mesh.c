@@ -215,6 +215,8 @@ static int parse_line(Loader *L, char *line)
 
 int object_mesh_load(Object *o, const char *path, GError *err)
 {
+    if (mesh_is_assimp_file(path))
+        return mesh_load_assimp(o, path, err);
     int fd = gfile_open_input(path, err); /* a regular file: never a FIFO or a device */
     if (fd < 0)
         return fd;
