@@ -252,20 +252,6 @@ done:
     return rc;
 }
 
-/* The relative refraction index n(from) / n(to) at sp, into ri (scratch storage). */
-static int path_relative_index(TraceCtx *c, GSurfPoint *sp, GColor *ri)
-{
-    GColor n_from, n_to;
-    int rc = G_OK;
-    CHECK(gcolor_scratch(&n_from, c->scene->model, c->scratch));
-    CHECK(gcolor_scratch(&n_to, c->scene->model, c->scratch));
-    CHECK(gmaterial_refraction_index(sp->from, sp, &n_from));
-    CHECK(gmaterial_refraction_index(sp->to, sp, &n_to));
-    CHECK(gcolor_div(ri, &n_from, &n_to));
-done:
-    return rc;
-}
-
 static int path_radiance(PathCtx *p, const Ray *r, const Media *media, int depth, double beta, int prev_delta,
                     double prev_pdf, GColor *out);
 
@@ -280,12 +266,11 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
     GScratchMark mark = gscratch_mark(c->scratch);
     GColor ri, rg, tmp, weight, illum;
     int rc = G_OK, opaque, delta, valid;
-    CHECK(gcolor_scratch(&ri, s->model, c->scratch));
     CHECK(gcolor_scratch(&rg, s->model, c->scratch));
     CHECK(gcolor_scratch(&tmp, s->model, c->scratch));
     CHECK(gcolor_scratch(&weight, s->model, c->scratch));
     CHECK(gcolor_scratch(&illum, s->model, c->scratch));
-    CHECK(path_relative_index(c, sp, &ri));
+    CHECK(trace_relative_index(c, sp, &ri));
     CHECK(gmaterial_emission(m, sp, to_viewer, out));
     opaque = gmaterial_opaque(m, sp);
     CHECK(delta = gmaterial_is_delta(m, sp));

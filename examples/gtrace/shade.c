@@ -183,8 +183,7 @@ done:
     return rc;
 }
 
-/* The relative refraction index n(from) / n(to) at sp, into ri (scratch storage). */
-static int relative_index(TraceCtx *c, GSurfPoint *sp, GColor *ri)
+int trace_relative_index(TraceCtx *c, GSurfPoint *sp, GColor *ri)
 {
     GColor n_from, n_to;
     int rc = G_OK;
@@ -265,7 +264,7 @@ static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const 
         /* ideal refraction into the medium on the other side; not valid: total internal reflection */
         if (!opaque) {
             GColor ri;
-            CHECK(relative_index(c, sp, &ri));
+            CHECK(trace_relative_index(c, sp, &ri));
             CHECK(refract(c, r, sp, facing, &ri, media, depth, out));
         }
     }

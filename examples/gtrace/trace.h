@@ -51,6 +51,8 @@ const GMaterial *media_top(const Media *m);
 void media_cross(const Media *in, const GMaterial *mat, int entering, Media *out);
 /** Radiance arriving along r (Fig. 4: closest hit, then shade). out must have storage. */
 int trace_ray(TraceCtx *c, const Ray *r, const Media *media, int depth, GColor *out);
+/** The relative refraction index n(from) / n(to) at sp, into ri (given storage from the thread's arena). */
+int trace_relative_index(TraceCtx *c, GSurfPoint *sp, GColor *ri);
 /** Offsets a point off a surface to the side `dir` leaves on, against self-intersection. */
 GVec3 offset_origin(GVec3 p, GVec3 n, GVec3 dir);
 
