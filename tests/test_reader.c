@@ -22,6 +22,7 @@
 #include "generic/memory.h"
 #include "generic/reader.h"
 #include "test_util.h"
+#include "reader_fixture.h"
 
 static GLibrary *load(const char *text)
 {
@@ -32,15 +33,6 @@ static GLibrary *load(const char *text)
         print_error("%s\n", err.message);
     assert_int_equal(rc, G_OK);
     return lib;
-}
-
-static void load_fails(const char *text, const char *message)
-{
-    GLibrary *lib = (GLibrary *)0x1;
-    GError err;
-    assert_true(greader_load_string(text, "t.mat", NULL, &lib, &err) < 0);
-    assert_null(lib);
-    assert_string_equal(err.message, message);
 }
 
 /* A surface point facing +z with shading at normal incidence. */

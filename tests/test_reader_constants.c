@@ -14,6 +14,7 @@
 #include "generic/builtins.h"
 #include "generic/reader.h"
 #include "test_util.h"
+#include "reader_fixture.h"
 
 static GLibrary *load(const char *text)
 {
@@ -24,17 +25,6 @@ static GLibrary *load(const char *text)
         print_error("%s\n", err.message);
     assert_int_equal(rc, G_OK);
     return lib;
-}
-
-static void load_fails(const char *text, const char *message)
-{
-    GLibrary *lib = (GLibrary *)0x1;
-    GError err;
-    assert_true(greader_load_string(text, "t.mat", NULL, &lib, &err) < 0);
-    assert_null(lib);
-    if (strcmp(err.message, message) != 0)
-        print_error("got:  %s\nwant: %s\n", err.message, message);
-    assert_string_equal(err.message, message);
 }
 
 static void color_of(GLibrary *lib, const char *name, float v[3])

@@ -18,6 +18,7 @@
 #include "generic/reader.h"
 #include "generic/surfpoint.h"
 #include "test_util.h"
+#include "reader_fixture.h"
 
 static GLibrary *load(const char *text)
 {
@@ -28,17 +29,6 @@ static GLibrary *load(const char *text)
         print_error("%s\n", err.message);
     assert_int_equal(rc, G_OK);
     return lib;
-}
-
-static void load_fails(const char *text, const char *message)
-{
-    GLibrary *lib = (GLibrary *)0x1;
-    GError err;
-    assert_true(greader_load_string(text, "t.mat", NULL, &lib, &err) < 0);
-    assert_null(lib);
-    if (strcmp(err.message, message) != 0)
-        print_error("got:  %s\nwant: %s\n", err.message, message);
-    assert_string_equal(err.message, message);
 }
 
 /* ---- a type registered by the test, as a module would: `object pair { a A  b B }` with a < b ---- */

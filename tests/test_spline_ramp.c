@@ -20,6 +20,7 @@
 #include "generic/reader.h"
 #include "generic/surfpoint.h"
 #include "test_util.h"
+#include "reader_fixture.h"
 
 /* The diffuse red of a spline over the ramp at t (the ramp's children are lambert greys), after the text
  * `prelude`; `param` is the spline's parameter ("ramp { ", "colors { ", "colors of x diffuse { "). */
@@ -133,17 +134,6 @@ static int parse_plain(GReader *r, const void *vtable, void **object, GError *er
 }
 
 static const GTypeInfo plain_type = {GKIND_MATERIAL, "plain", NULL, parse_plain, "test: reads nothing", NULL};
-
-static void load_fails(const char *text, const char *message)
-{
-    GLibrary *lib = (GLibrary *)0x1;
-    GError err;
-    assert_true(greader_load_string(text, "t.mat", NULL, &lib, &err) < 0);
-    assert_null(lib);
-    if (strcmp(err.message, message) != 0)
-        print_error("got:  %s\nwant: %s\n", err.message, message);
-    assert_string_equal(err.message, message);
-}
 
 static void test_ramp_refused(void **state)
 {
