@@ -69,13 +69,13 @@ int bands_disperse(const Bands *b, const GColor *ri)
 {
     if (b->n < 2 || ri->kind != GCOLOR_VECTOR)
         return 0;
-    double lo = INFINITY, hi = -INFINITY;
-    for (int g = 0; g < b->n; g++) {
-        double v = bands_value(b, ri, g);
-        if (!isfinite(v))
+    /* the index at the first, the middle and the last band: a refraction that does not disperse (every hit on
+     * constant-index glass) costs three lookups (an index equal there but different in between is not split) */
+    int last = b->first[b->n] - 1, probe[3] = {0, last / 2, last};
+    double v[3];
+    for (int k = 0; k < 3; k++)
+        if (!isfinite(v[k] = gcolor_band_value(ri, probe[k])))
             return 0;
-        lo = fmin(lo, v);
-        hi = fmax(hi, v);
-    }
+    double lo = fmin(v[0], fmin(v[1], v[2])), hi = fmax(v[0], fmax(v[1], v[2]));
     return hi - lo > BANDS_INDEX_TOLERANCE;
 }

@@ -32,7 +32,8 @@ int bands_init(Bands *b, const GColorModel *m, int cap, GError *err);
 void bands_free(Bands *b);
 /** The index of group g of the relative index ri: the mean of its bands' values. */
 double bands_value(const Bands *b, const GColor *ri, int g);
-/** 1 when ri differs between groups by more than BANDS_INDEX_TOLERANCE (the refraction must split). */
+/** 1 when ri differs by more than BANDS_INDEX_TOLERANCE between its first, middle and last band (the
+ * refraction must split). */
 int bands_disperse(const Bands *b, const GColor *ri);
 
 #endif
