@@ -194,7 +194,7 @@ static int default_sample(const GMaterial *m, GSurfPoint *sp, GVec3 out, const G
         goto done;
     double total = l.w_refl + l.w_refr + l.w_rest, x = u1 * total;
     GVec3 n = gsurfpoint_normal(sp);
-    if (x < l.w_refl || x < l.w_refl + l.w_refr) { /* a delta lobe */
+    if (x < l.w_refl + l.w_refr) { /* a delta lobe */
         int refl = x < l.w_refl;
         double p = (refl ? l.w_refl : l.w_refr) / total;
         s->in = refl ? l.refl : l.refr;
