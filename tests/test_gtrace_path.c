@@ -248,15 +248,16 @@ static void test_fluorescence_between_walls(void **state)
 
 /* ---- the environment: NEE with the probe's distribution, MIS with material sampling ---- */
 
-/* Mean luma of probe.scene at depth 1 with the probe sampled as `technique`. */
-static double probe_scene_mean(const char *technique, int spp)
+/* Mean luma of probe.scene at depth 1 with the probe sampled as `technique` (count: its lights or coefficients,
+ * 0: the scene's). */
+static double probe_scene_mean(const char *technique, int count, int spp)
 {
     const char *root = getenv("GENERIC_SOURCE_DIR");
     char path[2048];
     snprintf(path, sizeof path, "%s/examples/scenes/probe.scene", root ? root : ".");
     GError err;
     assert_int_equal(gtrace_register_types(&err), G_OK);
-    ProbeOverride ov = {.technique = technique, .shadows = -1};
+    ProbeOverride ov = {.technique = technique, .count = count, .shadows = -1};
     Scene *s = NULL;
     if (scene_load_with(path, NULL, &ov, &s, &err) != G_OK)
         fail_msg("%s: %s", path, err.message);
@@ -271,9 +272,10 @@ static double probe_scene_mean(const char *technique, int spp)
 static void test_environment_mis(void **state)
 {
     (void)state;
-    /* technique reference: the probe's distribution for NEE, weighted against material sampling by MIS;
-     * mediancut: its lights are skipped, the probe is only reached by material sampling (noisy: the sun) */
-    double mis = probe_scene_mean("reference", 64), bsdf = probe_scene_mean("mediancut", 4096);
+    /* technique reference: the probe's distribution for NEE (probe_light_nee, the Whitted reference's
+     * estimator), weighted against material sampling by MIS; sh: a basis is not used by the path tracer, the
+     * probe is only reached by material sampling (noisy: the sun). Both see the probe's pixels as the light. */
+    double mis = probe_scene_mean("reference", 0, 64), bsdf = probe_scene_mean("sh", 9, 4096);
     print_message("sky and sun at depth 1: MIS %.5f, material sampling only %.5f\n", mis, bsdf);
     assert_true(mis > 0.1);
     assert_near(bsdf / mis, 1.0, 0.02);
