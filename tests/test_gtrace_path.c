@@ -77,6 +77,76 @@ static void test_white_furnace(void **state)
     assert_true(g >= 0.97);
 }
 
+/* ---- the ambient light: a uniform environment behind the background ---- */
+
+/* A Lambert sphere of albedo a under an ambient light A and a black background: every path leaves the convex
+ * sphere after one bounce and sees A, so the sphere shows a * A, which is also Whitted's material.ambient
+ * term; camera rays see the background (black), not the ambient light. A ball resting on a Lambert floor
+ * darkens the floor next to it by its view factor (ambient occlusion), which Whitted's ambient term cannot
+ * show. */
+static void test_ambient_environment(void **state)
+{
+    const char *model = *state;
+    const double A = 0.8;
+    for (int k = 0; k < 2; k++) {
+        double a = k ? 0.5 : 1.0;
+        Scene *s = new_scene(model, gvec3(0, 0, 4), gvec3(0, 0, 0), 40);
+        set_grey(&s->ambient, A, GCOLOR_LIGHT);
+        s->have_ambient = 1;
+        add_sphere(s, lambert(s, a), gvec3(0, 0, 0), 1.0);
+        Framebuffer fp, fw;
+        render_with(s, 12, 12, 64, 4, 2, RENDER_PATH, &fp);
+        render_with(s, 12, 12, 1, 4, 2, RENDER_WHITTED, &fw);
+        double path = mean_luma(&fp, 4, 4, 8, 8), whitted = mean_luma(&fw, 4, 4, 8, 8);
+        print_message("%s: albedo %.1f under ambient %.1f: path %.5f, Whitted %.5f, corner %.5f\n", model, a, A, path,
+                      whitted, luma(pixel(&fp, 0, 0)));
+        assert_near(path, a * A, 0.005 * A);
+        assert_near(whitted, a * A, 0.005 * A);
+        assert_true(luma(pixel(&fp, 0, 0)) == 0.0);
+        framebuffer_free(&fp);
+        framebuffer_free(&fw);
+        scene_destroy(s);
+    }
+    /* occlusion: a floor of albedo 0.5 under a black ball of radius 1 resting on it. A floor point at distance
+     * x from the contact point sees the ball with the view factor F = R^2 h / (x^2 + h^2)^(3/2) (h = R = 1,
+     * the centre's height), so it shows 0.5 A (1 - F); compared over the floor pixels whose central ray misses
+     * the ball by more than 0.05 */
+    Scene *s = new_scene(model, gvec3(0, 4, 0.001), gvec3(0, 0, 0), 60);
+    set_grey(&s->ambient, A, GCOLOR_LIGHT);
+    s->have_ambient = 1;
+    add_plane(s, lambert(s, 0.5), gvec3(0, 0, 0), gvec3(0, 1, 0));
+    add_sphere(s, lambert(s, 0.0), gvec3(0, 1, 0), 1.0);
+    Framebuffer fb;
+    enum { N = 24 };
+    render_with(s, N, N, 64, 4, 2, RENDER_PATH, &fb);
+    Camera cam = s->camera;
+    camera_setup(&cam, N, N);
+    double got = 0.0, expect = 0.0, occluded = 0.0;
+    int used = 0;
+    for (int y = 0; y < N; y++)
+        for (int x = 0; x < N; x++) {
+            Ray r;
+            camera_ray(&cam, x + 0.5, y + 0.5, &r);
+            GVec3 oc = gvec3_sub(gvec3(0, 1, 0), r.o);
+            double along = gvec3_dot(oc, r.d), miss = sqrt(fmax(0.0, gvec3_dot(oc, oc) - along * along));
+            if (miss < 1.05)
+                continue;
+            GVec3 q = gvec3_madd(r.o, r.d, -r.o.y / r.d.y);
+            double F = 1.0 / pow(q.x * q.x + q.z * q.z + 1.0, 1.5);
+            got += luma(pixel(&fb, x, y));
+            expect += 0.5 * A * (1.0 - F);
+            occluded += F;
+            used++;
+        }
+    print_message("%s: %d floor pixels beside a black ball: path %.5f, analytic %.5f (mean view factor %.3f)\n",
+                  model, used, got / used, expect / used, occluded / used);
+    assert_true(used > 300);
+    assert_true(occluded / used > 0.05); /* without occlusion the floor would be 5% brighter */
+    assert_near(got / expect, 1.0, 0.01);
+    framebuffer_free(&fb);
+    scene_destroy(s);
+}
+
 /* ---- Whitted and path agree on ideal surfaces and point lights ---- */
 
 static double compare_integrators(Scene *s, int depth, int spp, double *whitted, double *path)
@@ -359,6 +429,8 @@ int main(void)
         {"test_white_furnace (rgb)", test_white_furnace, NULL, NULL, (void *)"rgb"},
         {"test_white_furnace (spectrum)", test_white_furnace, NULL, NULL, (void *)"spectrum"},
         {"test_white_furnace (bispectral)", test_white_furnace, NULL, NULL, (void *)"bispectral"},
+        {"test_ambient_environment (rgb)", test_ambient_environment, NULL, NULL, (void *)"rgb"},
+        {"test_ambient_environment (bispectral)", test_ambient_environment, NULL, NULL, (void *)"bispectral"},
         cmocka_unit_test(test_whitted_agrees),
         cmocka_unit_test(test_dispersion_agrees),
         cmocka_unit_test(test_convergence),
