@@ -168,17 +168,25 @@ static void test_constant_probe(void **state)
 
 /* ---- one bright pixel: the shadow falls where the convention says ---- */
 
-static void test_bright_pixel_shadow(void **state)
+/* Writes a black probe with pixel (pu, pv) of radiance P in every channel; returns the pixel's weight Q, its
+ * irradiance on a surface facing it (Eq. 4: P times its solid angle at the centre, 2 pi^2 sin theta / (W H)). */
+static double write_bright_pixel(const char *name, int pu, int pv, double P, char *path, size_t size)
 {
-    (void)state;
-    const int pu = 8, pv = 8;
-    const double P = 100.0, rho = 0.5;
     float px[PW * PH * 3];
     memset(px, 0, sizeof px);
     for (int k = 0; k < 3; k++)
         px[3 * (pv * PW + pu) + k] = (float)P;
+    write_probe(name, px, path, size);
+    return 2.0 * M_PI * M_PI * P * sin(M_PI * (pv + 0.5) / PH) / (PW * PH);
+}
+
+static void test_bright_pixel_shadow(void **state)
+{
+    (void)state;
+    const int pu = 8, pv = 8;
+    const double rho = 0.5;
     char probe[128], text[1024];
-    write_probe("pixel.exr", px, probe, sizeof probe);
+    const double Q = write_bright_pixel("pixel.exr", pu, pv, 100.0, probe, sizeof probe);
     /* probe.h: pixel (u, v) is centred on theta = pi (v + 0.5) / H, phi = pi - 2 pi (u + 0.5) / W, z up;
      * rotate <-90, 0, 0> turns the probe's +z into the world's +y and its +y into -z: (x, y, z) -> (x, z, -y).
      * Here phi = 132 degrees: the light comes from -x, -z and above (a mirrored map would put it at +x). */
@@ -189,7 +197,6 @@ static void test_bright_pixel_shadow(void **state)
     GVec3 C = gvec3(0, 1, 0);
     GVec3 shadow = gvec3_sub(C, gvec3_scale(ell, C.y / ell.y)); /* where the sphere's centre projects */
     GVec3 lit = gvec3(-shadow.x, 0, -shadow.z);
-    const double Q = 2.0 * M_PI * M_PI * P * sin(theta) / (PW * PH); /* the pixel's weight (Eq. 4) */
     const double expect = rho / M_PI * Q * ell.y;
     /* 16 samples are a jittered grid, 12 N-rooks strata */
     const char *settings[] = {"technique mediancut count 4", "technique adaptive count 4", "technique kmeans count 4",
@@ -247,18 +254,12 @@ static double render_mean(Scene *s, int integrator, int spp)
 static void test_path_probe_lights(void **state)
 {
     (void)state;
-    const int pu = 8, pv = 8;
-    const double P = 100.0, rho = 0.5;
-    float px[PW * PH * 3];
-    memset(px, 0, sizeof px);
-    for (int k = 0; k < 3; k++)
-        px[3 * (pv * PW + pu) + k] = (float)P;
+    const int pv = 8;
+    const double rho = 0.5;
     char probe[128], text[1024];
-    write_probe("pixel_path.exr", px, probe, sizeof probe);
-    double theta = M_PI * (pv + 0.5) / PH;
-    double up = cos(theta); /* rotate <-90, 0, 0>: the world's up is the probe's +z */
-    const double Q = 2.0 * M_PI * M_PI * P * sin(theta) / (PW * PH);
-    const double expect = rho / M_PI * Q * up;
+    const double Q = write_bright_pixel("pixel_path.exr", 8, pv, 100.0, probe, sizeof probe);
+    /* rotate <-90, 0, 0>: the world's up is the probe's +z, cos theta */
+    const double expect = rho / M_PI * Q * cos(M_PI * (pv + 0.5) / PH);
     const char *settings[] = {"technique mediancut count 1", "technique reference samples 16"};
     for (int t = 0; t < 2; t++) {
         snprintf(text, sizeof text,
