@@ -37,8 +37,9 @@
  * sampled with that group's index, and a transmitted sample keeps only the group's light (its mask) times
  * the number of groups, and carries the group on (later interfaces refract with its index, as shade.c).
  *
- * Random numbers: a PCG32 generator seeded from the pixel's index and the sample's index, so the image does
- * not depend on the thread count or tile order. Colours only through gcolor_*, materials only through
+ * Random numbers: the thread's PCG32 generator (TraceCtx.rng, which lights.c and probe_sample.c draw from
+ * too), re-seeded for each path from the pixel's index and the sample's index and restored afterwards, so the
+ * image does not depend on the thread count or tile order. Colours only through gcolor_*, materials only through
  * gmaterial_*; temporaries live on the thread's scratch arena and are released at every level: no allocation
  * per ray. */
 #include "path.h"
