@@ -202,7 +202,7 @@ bench-pov: $(BUILD)/bin/gtrace
 bench-dispersion: $(BUILD)/bin/gtrace
 	@bench/dispersion.sh $(BUILD)
 .PHONY: bench-path
-bench-path: $(BUILD)/bin/gtrace
+bench-path: $(BUILD)/bin/gtrace $(BUILD)/bin/gprobe
 	@bench/path.sh $(BUILD)
 bench: bench-pov bench-dispersion bench-path
 # (end of gtrace)

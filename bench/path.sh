@@ -1,13 +1,29 @@
 #!/bin/sh
-# path.sh [BUILD] - what path tracing costs against the Whitted tracer: examples/scenes/demo.scene at 160x120,
-# 4 samples per pixel, depth 8, 1 thread, in every colour model, with `--integrator whitted` and
-# `--integrator path`. Prints the render time, camera samples per second and rays per second (from gtrace's
-# summary line). A benchmark: it prints figures and never fails on time.
+# path.sh [BUILD] - what path tracing costs against the Whitted tracer, and how noisy each is at equal time.
+#
+# 1. Speed: examples/scenes/demo.scene at 160x120, 4 samples per pixel, depth 8, 1 thread, in every colour
+#    model, with `--integrator whitted` and `--integrator path`: render time, camera samples per second and
+#    rays per second (from gtrace's summary line).
+# 2. Noise at equal time: demo.scene at 96x72, depth 8, 1 thread. Time is the process's CPU time (user + sys,
+#    GNU time; loading included), which other users of a shared machine disturb far less than wall time; the
+#    shorter of two runs. Whitted renders 16 spp in CPU time T; the path tracer's fixed cost is its time at 1
+#    spp and its time per sample the difference to 16 spp, and it renders the spp that fit in T (its own time
+#    is printed beside). Each image's noise is
+#    its RMSE (gprobe compare: linear radiance, over pixels and the three channels) against a long render of
+#    the same integrator (Whitted 256 spp, path 1024 spp, 2 threads), so each is measured against what it
+#    converges to; the last column is the RMSE between the two long renders, what Whitted leaves out (the
+#    indirect light). The long renders' own noise is in the figures (a factor sqrt(1 + n / n_long) at most,
+#    1.03 for Whitted, under 1.05 for path) and they share their first n samples' random streams with the
+#    short ones (a correlation of weight n / n_long).
+# A benchmark: it prints figures and never fails on time.
 BUILD=${1:-build}
 GT="$BUILD/bin/gtrace"
+GP="$BUILD/bin/gprobe"
 SCENE=$(dirname "$0")/../examples/scenes/demo.scene
 W=160 H=120 SPP=4
 [ -x "$GT" ] || { echo "bench-path: $GT is not built"; exit 1; }
+[ -x "$GP" ] || { echo "bench-path: $GP is not built"; exit 1; }
+[ -x /usr/bin/time ] || { echo "bench-path: needs GNU time (/usr/bin/time, Debian package time)"; exit 1; }
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 # render seconds and M rays of one run
@@ -25,4 +41,30 @@ for model in rgb spectrum9 spectrum bispectral; do
         set -- $out
         echo "$model $integ $1 $2" | awk -v n=$((W * H * SPP)) '{ printf "%-11s %-8s %8.2f %12.0f %10.3f\n", $1, $2, $3, ($3 > 0 ? n / $3 : 0), ($3 > 0 ? $4 / $3 : 0) }'
     done
+done
+
+# ---- noise at equal time ----
+NW=96 NH=72 SPP_W=16 REF_W=256 REF_P=1024
+# render MODEL INTEGRATOR SPP THREADS OUT: prints the process's CPU seconds
+render() {
+    /usr/bin/time -f '%U %S' -o "$TMP/cpu" "$GT" "$SCENE" -o "$5" --width $NW --height $NH --spp "$3" --depth 8 \
+        --colormodel "$1" --integrator "$2" --threads "$4" -q > /dev/null 2>&1 && awk '{ printf "%.2f\n", $1 + $2 }' "$TMP/cpu"
+}
+# best MODEL INTEGRATOR SPP OUT: the shorter CPU time of two runs on 1 thread
+best() {
+    a=$(render "$1" "$2" "$3" 1 "$4") && b=$(render "$1" "$2" "$3" 1 "$4") && awk -v a="$a" -v b="$b" 'BEGIN { print (a < b ? a : b) }'
+}
+rmse() { "$GP" compare "$1" "$2" | awk '$1 == "whole" { print $5 }'; }
+echo
+echo "noise at equal CPU time: demo.scene ${NW}x${NH}, depth 8, 1 thread; RMSE against Whitted at $REF_W spp and path at $REF_P spp"
+printf '%-11s %16s %9s %16s %9s %14s\n' model "Whitted spp (s)" RMSE "path spp (s)" RMSE "Whitted-path"
+for model in rgb spectrum9 spectrum bispectral; do
+    tw=$(best "$model" whitted $SPP_W "$TMP/w.exr") && t1=$(best "$model" path 1 "$TMP/p.exr") &&
+        t16=$(best "$model" path 16 "$TMP/p.exr") &&
+        np=$(awk -v a="$tw" -v b="$t1" -v c="$t16" 'BEGIN { n = c > b ? int(1 + 15 * (a - b) / (c - b) + 0.5) : 16; print n < 1 ? 1 : n }') &&
+        tp=$(best "$model" path "$np" "$TMP/p.exr") &&
+        render "$model" whitted $REF_W 2 "$TMP/wref.exr" > /dev/null && render "$model" path $REF_P 2 "$TMP/pref.exr" > /dev/null ||
+        { printf '%-11s %s\n' "$model" failed; continue; }
+    printf '%-11s %16s %9.5f %16s %9.5f %14.5f\n' "$model" "$SPP_W ($tw)" "$(rmse "$TMP/w.exr" "$TMP/wref.exr")" \
+        "$np ($tp)" "$(rmse "$TMP/p.exr" "$TMP/pref.exr")" "$(rmse "$TMP/wref.exr" "$TMP/pref.exr")"
 done

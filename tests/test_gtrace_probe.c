@@ -168,17 +168,25 @@ static void test_constant_probe(void **state)
 
 /* ---- one bright pixel: the shadow falls where the convention says ---- */
 
-static void test_bright_pixel_shadow(void **state)
+/* Writes a black probe with pixel (pu, pv) of radiance P in every channel; returns the pixel's weight Q, its
+ * irradiance on a surface facing it (Eq. 4: P times its solid angle at the centre, 2 pi^2 sin theta / (W H)). */
+static double write_bright_pixel(const char *name, int pu, int pv, double P, char *path, size_t size)
 {
-    (void)state;
-    const int pu = 8, pv = 8;
-    const double P = 100.0, rho = 0.5;
     float px[PW * PH * 3];
     memset(px, 0, sizeof px);
     for (int k = 0; k < 3; k++)
         px[3 * (pv * PW + pu) + k] = (float)P;
+    write_probe(name, px, path, size);
+    return 2.0 * M_PI * M_PI * P * sin(M_PI * (pv + 0.5) / PH) / (PW * PH);
+}
+
+static void test_bright_pixel_shadow(void **state)
+{
+    (void)state;
+    const int pu = 8, pv = 8;
+    const double rho = 0.5;
     char probe[128], text[1024];
-    write_probe("pixel.exr", px, probe, sizeof probe);
+    const double Q = write_bright_pixel("pixel.exr", pu, pv, 100.0, probe, sizeof probe);
     /* probe.h: pixel (u, v) is centred on theta = pi (v + 0.5) / H, phi = pi - 2 pi (u + 0.5) / W, z up;
      * rotate <-90, 0, 0> turns the probe's +z into the world's +y and its +y into -z: (x, y, z) -> (x, z, -y).
      * Here phi = 132 degrees: the light comes from -x, -z and above (a mirrored map would put it at +x). */
@@ -189,7 +197,6 @@ static void test_bright_pixel_shadow(void **state)
     GVec3 C = gvec3(0, 1, 0);
     GVec3 shadow = gvec3_sub(C, gvec3_scale(ell, C.y / ell.y)); /* where the sphere's centre projects */
     GVec3 lit = gvec3(-shadow.x, 0, -shadow.z);
-    const double Q = 2.0 * M_PI * M_PI * P * sin(theta) / (PW * PH); /* the pixel's weight (Eq. 4) */
     const double expect = rho / M_PI * Q * ell.y;
     /* 16 samples are a jittered grid, 12 N-rooks strata */
     const char *settings[] = {"technique mediancut count 4", "technique adaptive count 4", "technique kmeans count 4",
@@ -215,6 +222,56 @@ static void test_bright_pixel_shadow(void **state)
             else
                 assert_true(in_shadow[k] <= 1e-3 * expect);
         }
+        scene_destroy(s);
+    }
+}
+
+/* ---- the path tracer: a technique's directional lights and the reference's estimator ---- */
+
+/* Mean luma of a w x h render of the loaded scene with the given integrator. */
+static double render_mean(Scene *s, int integrator, int spp)
+{
+    GError err;
+    if (!s->rtc && accel_build(s, &err) != G_OK)
+        fail_msg("accel_build: %s", err.message);
+    RenderSettings rs = {.width = 8, .height = 8, .spp = spp, .depth = 4, .threads = 2, .quiet = 1,
+                         .integrator = integrator};
+    Framebuffer fb;
+    RenderStats st;
+    if (render_image(s, &rs, &fb, &st, &err) != G_OK)
+        fail_msg("render_image: %s", err.message);
+    double sum = 0.0;
+    for (int i = 0; i < 64; i++)
+        sum += luma(fb.pixels + 3 * i);
+    framebuffer_free(&fb);
+    return sum / 64;
+}
+
+/* One bright pixel over a Lambert plane, seen from above: the plane's radiance is rho / pi * Q * cos, Q the
+ * pixel's weight (its irradiance perpendicular to it). Path tracing gets it from the directional light that
+ * mediancut count 1 makes (NEE; when rays leaving the plane also saw the probe, its light was counted twice:
+ * measured 1.84x at 256 spp) and from the reference's estimator (NEE by the probe's distribution, MIS), as Whitted does. */
+static void test_path_probe_lights(void **state)
+{
+    (void)state;
+    const int pv = 8;
+    const double rho = 0.5;
+    char probe[128], text[1024];
+    const double Q = write_bright_pixel("pixel_path.exr", 8, pv, 100.0, probe, sizeof probe);
+    /* rotate <-90, 0, 0>: the world's up is the probe's +z, cos theta */
+    const double expect = rho / M_PI * Q * cos(M_PI * (pv + 0.5) / PH);
+    const char *settings[] = {"technique mediancut count 1", "technique reference samples 16"};
+    for (int t = 0; t < 2; t++) {
+        snprintf(text, sizeof text,
+                 "light probe { file \"%s\" rotate <-90, 0, 0> %s }\n"
+                 "object plane { point <0, 0, 0> normal <0, 1, 0> material lambert { reflectance rgb %g %g %g } }\n"
+                 "camera pinhole { from <0, 5, 0.01> at <0, 0, 0> up <0, 0, -1> fov 20 }\n",
+                 probe, settings[t], rho, rho, rho);
+        Scene *s = load_ok(text, "rgb", NULL);
+        double path = render_mean(s, RENDER_PATH, 256), whitted = render_mean(s, RENDER_WHITTED, 1);
+        print_message("%-32s path %.6f, Whitted %.6f, expected %.6f\n", settings[t], path, whitted, expect);
+        assert_rel(path, expect, 0.01, settings[t]);
+        assert_rel(whitted, expect, 0.01, settings[t]);
         scene_destroy(s);
     }
 }
@@ -607,6 +664,7 @@ int main(void)
         cmocka_unit_test(test_background),           cmocka_unit_test(test_reference_ground_truth),
         cmocka_unit_test(test_distribution),         cmocka_unit_test(test_compare_tool),
         cmocka_unit_test(test_errors_and_overrides), cmocka_unit_test(test_allocation_failures),
+        cmocka_unit_test(test_path_probe_lights),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

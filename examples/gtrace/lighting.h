@@ -1,4 +1,5 @@
-/* lighting.h - the light sources' shade routine (lights.c; the probe's reference mode in probe_sample.c). */
+/* lighting.h - the light sources' shade routine (lights.c; the probe's reference mode in probe_sample.c, shared
+ * by the Whitted and the path integrator). */
 #ifndef GTRACE_LIGHTING_H
 #define GTRACE_LIGHTING_H
 
@@ -9,24 +10,38 @@
 #include <generic/surfpoint.h>
 #include <generic/vec.h>
 
-/** Scratch colours for light_shade, allocated once per shading point and shared by all lights. */
+/** Scratch colours for light_shade, allocated once per shading point and shared by all lights, and the shadow
+ * rule of sample_light. */
 typedef struct LightTmp {
     GColor illum, refl, tmp;
+    int blocked; /**< 1: a shadow ray stops at any surface (the path tracer's rule for lights that material
+                  * sampling also reaches: light through glass arrives there as a caustic); 0 (light_temps'
+                  * default): it passes non-opaque surfaces along the straight line */
 } LightTmp;
-/** Allocates the temporaries on the thread's arena. */
+/** Allocates the temporaries on the thread's arena; blocked is 0. */
 int light_temps(TraceCtx *c, LightTmp *t);
 /** Adds to result the light reflected towards out_dir by sp from one light source, shadowed and absorbed
  * (Fig. 4, light.shade); opaque: the material's opaque() at sp (culls lights behind the surface). */
 int light_shade(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 out_dir,
                 int opaque, LightTmp *t, GColor *result);
 /** Adds the light of one sample (lights.c): color * scale arrives from direction `in` over dist (INFINITY
- * for distant light), reflected by the material towards out_dir and shadowed. */
+ * for distant light), reflected by the material towards out_dir and shadowed (t->blocked says how). */
 int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 in, double dist,
                  const GColor *color, double scale, GVec3 out_dir, LightTmp *t, GColor *result);
-/** The reference mode of a probe (probe_sample.c): its direct light at sp estimated from l->samples directions
- * drawn from the distribution (stratified), each shadowed and reflected through the material like any light. */
+/** The power heuristic (beta 2, lights.c): the multiple-importance weight of a strategy that drew a direction
+ * with density a against one that would have drawn it with density b. */
+double mis_power(double a, double b);
+/** A probe light in the Whitted tracer (probe_sample.c): a basis's ambient term, or for technique reference
+ * probe_light_nee with l->samples directions and no MIS. */
 int probe_light_shade(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const Media *media,
                       GVec3 out_dir, int opaque, LightTmp *t, GColor *result);
+/** The direct light of a reference probe l at sp towards out_dir, for both integrators (probe_sample.c): n
+ * directions drawn from the probe's distribution with c->rng (stratified when n > 1), each carrying the
+ * probe's pixel as a light through sample_light (shadows by t->blocked; `shadows off` skips them unless
+ * mis_ri is given). mis_ri (the path tracer, whose material sampling also reaches the probe): each direction
+ * is weighted against the material's pdf for the relative index mis_ri by mis_power; NULL: weight 1. */
+int probe_light_nee(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 out_dir,
+                    int opaque, int n, const GColor *mis_ri, LightTmp *t, GColor *result);
 
 /** Visible area lights (light_seen.c): 1 with out = the radiance of the nearest sphere or rectangle light
  * marked visible that r meets before tmax (a rectangle from its lit side only), 0 when it meets none. */

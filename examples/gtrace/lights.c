@@ -18,7 +18,10 @@
  * one, the pair seen from the other side (the light arriving along the straight direction from outside and
  * refracted inwards). A straight path never meets total internal reflection that way. For a sphere and for a
  * slab this is exact: the real path enters and leaves at the same outside angle as the straight chord, so the
- * transmittance is T(theta)^2, T the one-interface Fresnel transmittance at the chord's angle theta. */
+ * transmittance is T(theta)^2, T the one-interface Fresnel transmittance at the chord's angle theta.
+ *
+ * With LightTmp.blocked (the path tracer's sphere, rectangle and probe lights, which its material sampling
+ * also reaches) a shadow ray stops at any surface: light through glass arrives there as a caustic. */
 #include "lighting.h"
 #include "accel.h"
 
@@ -146,6 +149,8 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
         }
         return gcolor_add(result, result, refl);
     }
+    if (t->blocked)
+        return G_OK;
     int visible;
     if ((rc = transmit(c, sp, facing, media, in, dist, illum, &visible)) < 0 || !visible)
         return rc;
@@ -162,9 +167,17 @@ static double smoothstep(double a, double b, double x)
     return t * t * (3.0 - 2.0 * t);
 }
 
+double mis_power(double a, double b)
+{
+    a *= a;
+    b *= b;
+    return a + b > 0.0 && isfinite(a + b) ? a / (a + b) : (isinf(a) ? 1.0 : 0.0);
+}
+
 int light_temps(TraceCtx *c, LightTmp *t)
 {
     int rc;
+    t->blocked = 0;
     if ((rc = gcolor_scratch(&t->illum, c->scene->model, c->scratch)) < 0 ||
         (rc = gcolor_scratch(&t->refl, c->scene->model, c->scratch)) < 0 ||
         (rc = gcolor_scratch(&t->tmp, c->scene->model, c->scratch)) < 0)

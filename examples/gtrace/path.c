@@ -9,27 +9,37 @@
  * re-radiates the light that really arrives, at every bounce. The weight's brightness only steers Russian
  * roulette (after PATH_RR_START bounces a path survives with probability min(1, throughput brightness)).
  *
- * Lights. Point, spot and directional lights are delta lights: NEE only, through lights.c's light_shade (the
- * same shadow rule as the Whitted tracer: transmission through non-opaque surfaces along the straight line).
- * Sphere and rectangle lights and a `light probe` of technique reference (the environment, importance
- * sampled with probe_sample.c's distribution) can also be reached by material sampling, so both estimates
- * are combined by multiple importance sampling with the power heuristic; their shadow rays are blocked by
- * any surface (light through glass reaches them by material sampling, a caustic, so counting the straight
- * transmission too would count it twice). Material sampling sees sphere and rectangle lights (one-sided)
- * when they are nearer than the surface hit; a path after a delta bounce counts them fully. One light sample
- * per light and vertex: the lights' `samples` apply to the Whitted tracer. The directional lights that a
- * probe technique (mediancut, ...) made for the background probe are skipped: the path tracer sees that
- * probe as the background itself (sampled by the materials only; technique reference adds NEE). The
- * ambient light is not used (it stands for the indirect light that paths compute) and a reference probe's
- * `shadows off` does not apply.
+ * Lights. Point, spot and directional lights, including the directional lights a probe technique (mediancut,
+ * adaptive, kmeans, irradiance, variance) makes, are delta lights: NEE only, through lights.c's light_shade
+ * (the same shadow rule as the Whitted tracer: transmission through non-opaque surfaces along the straight
+ * line). Sphere and rectangle lights and a `light probe` of technique reference (the environment, importance
+ * sampled by probe_sample.c's probe_light_nee, the Whitted tracer's reference estimator with one direction)
+ * can also be reached by material sampling, so both estimates are combined by multiple importance sampling
+ * with the power heuristic; their shadow rays are blocked by any surface (light through glass reaches them by
+ * material sampling, a caustic, so counting the straight transmission too would count it twice). Material
+ * sampling sees sphere and rectangle lights (one-sided) when they are nearer than the surface hit; a path
+ * after a delta bounce counts them fully. One light sample per light and vertex: the lights' `samples` apply
+ * to the Whitted tracer; a reference probe's `shadows off` does not apply.
+ *
+ * The environment. Camera rays and rays after a delta bounce see the background (the background colour, or
+ * the background probe interpolated bilinearly). After a non-delta bounce the background probe is a light:
+ * its pixels (piecewise constant, as its distribution), MIS-weighted against NEE for technique reference;
+ * none of it when a technique's directional lights already carry its light (as in the Whitted tracer, where
+ * the probe's light reaches surfaces only through them); a basis technique (sh, ...) is not used, the probe
+ * itself is reached by material sampling. The ambient light (`light ambient`, Scene.ambient) is a uniform
+ * environment of that radiance behind the background: rays leaving the scene on a path that has had a
+ * non-delta bounce see it, camera rays and the mirror images they see do not. A convex Lambert surface of
+ * albedo a so shows a * ambient, as in the Whitted tracer (material.ambient of Lambert), but occluded and
+ * interreflected.
  *
  * Dispersion (hero band): when the relative index at a non-opaque surface differs between the wavelength
  * groups (bands.h) and the path does not carry a group yet, one group is chosen uniformly; the material is
  * sampled with that group's index, and a transmitted sample keeps only the group's light (its mask) times
  * the number of groups, and carries the group on (later interfaces refract with its index, as shade.c).
  *
- * Random numbers: a PCG32 generator seeded from the pixel's index and the sample's index, so the image does
- * not depend on the thread count or tile order. Colours only through gcolor_*, materials only through
+ * Random numbers: the thread's PCG32 generator (TraceCtx.rng, which lights.c and probe_sample.c draw from
+ * too), re-seeded for each path from the pixel's index and the sample's index and restored afterwards, so the
+ * image does not depend on the thread count or tile order. Colours only through gcolor_*, materials only through
  * gmaterial_*; temporaries live on the thread's scratch arena and are released at every level: no allocation
  * per ray. */
 #include "path.h"
@@ -41,9 +51,9 @@
 
 typedef struct PathCtx {
     TraceCtx *c;
-    Rng rng;
     const Light *env_light; /**< the reference probe light that samples the background probe (NULL: none) */
-    int skip_lo, skip_hi;   /**< the background probe's technique lights in the scene's list (not used) */
+    int env_in_lights;      /**< the background probe's light is carried by its technique's directional lights */
+    int scattered;          /**< the current path has had a non-delta bounce (it sees the ambient light) */
 } PathCtx;
 
 #define CHECK(expr)                                                                                                    \
@@ -55,42 +65,8 @@ typedef struct PathCtx {
         }                                                                                                              \
     } while (0)
 
-static double uniform(PathCtx *p) { return rng_next(&p->rng); }
-
-/* The power heuristic (beta 2) weight of a strategy with density a against one with density b. */
-static double power_heuristic(double a, double b)
-{
-    a *= a;
-    b *= b;
-    return a + b > 0.0 && isfinite(a + b) ? a / (a + b) : (isinf(a) ? 1.0 : 0.0);
-}
-
-/* World direction into probe space (the probe's turn is a rotation: its transpose). */
-static GVec3 to_probe(const ProbeEnv *e, GVec3 v)
-{
-    const double *R = e->R;
-    return gvec3(R[0] * v.x + R[3] * v.y + R[6] * v.z, R[1] * v.x + R[4] * v.y + R[7] * v.z,
-                 R[2] * v.x + R[5] * v.y + R[8] * v.z);
-}
-
-/* The run [*lo, *hi) of the scene's lights that a probe technique made for the background probe (its
- * directional lights, added one after the other by probe_attach); empty when there is none. */
-static void background_lights(const Scene *s, int *lo, int *hi)
-{
-    *lo = *hi = 0;
-    const ProbeEnv *e = s->env;
-    if (!e || e->nlights < 1 || e->lights[0]->kind == LIGHT_PROBE)
-        return;
-    for (int i = 0; i + e->nlights <= s->nlights; i++)
-        if (s->lights[i] == e->lights[0]) {
-            for (int k = 1; k < e->nlights; k++)
-                if (s->lights[i + k] != e->lights[k])
-                    return;
-            *lo = i;
-            *hi = i + e->nlights;
-            return;
-        }
-}
+/* The path's random numbers: the thread's generator, seeded for this camera sample by path_trace. */
+static double uniform(PathCtx *p) { return rng_next(&p->c->rng); }
 
 /* The distance along r to area light l within (0, tmax), INFINITY when missed; *pdf is the density (solid
  * angle) with which NEE from r->o draws that direction. */
@@ -135,8 +111,8 @@ static double area_light_hit(const Light *l, const Ray *r, double tmax, double *
     return INFINITY;
 }
 
-/* Draws a direction towards area light or probe l from x: 1 with the direction, the distance (INFINITY for
- * the probe), the density in solid angle and the radiance L; 0 when the light offers none; or a status. */
+/* Draws a direction towards area light l from x: 1 with the direction, the distance, the density in solid
+ * angle and the radiance L; 0 when the light offers none; or a status. */
 static int light_sample(PathCtx *p, const Light *l, GVec3 x, GVec3 *in, double *dist, double *pdf, GColor *L)
 {
     double u1 = uniform(p), u2 = uniform(p);
@@ -180,20 +156,6 @@ static int light_sample(PathCtx *p, const Light *l, GVec3 x, GVec3 *in, double *
         int rc = gcolor_copy(L, &l->color);
         return rc < 0 ? rc : 1;
     }
-    if (l->kind == LIGHT_PROBE) {
-        const ProbeEnv *env = l->env;
-        if (!env || !env->probe || !env->dist.row_cdf)
-            return 0;
-        int pu, pv;
-        GVec3 local;
-        *pdf = probe_dist_sample(&env->dist, env->probe, u1, u2, &pu, &pv, &local);
-        if (!(*pdf > 0.0))
-            return 0;
-        *in = probe_to_world(env, local);
-        *dist = INFINITY;
-        int rc = probe_background(env, *in, L);
-        return rc < 0 ? rc : 1;
-    }
     return 0;
 }
 
@@ -212,12 +174,18 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
     CHECK(gcolor_scratch(&L, s->model, c->scratch));
     for (int i = 0; i < s->nlights; i++) {
         const Light *l = s->lights[i];
+        lt.blocked = 0;
         if (l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT || l->kind == LIGHT_DIRECTIONAL) {
-            if (i < p->skip_lo || i >= p->skip_hi)
-                CHECK(light_shade(c, l, sp, facing, media, to_viewer, opaque, &lt, out));
+            CHECK(light_shade(c, l, sp, facing, media, to_viewer, opaque, &lt, out));
             continue;
         }
-        if (l->kind != LIGHT_SPHERE && l->kind != LIGHT_RECT && l->kind != LIGHT_PROBE)
+        lt.blocked = 1; /* material sampling reaches these lights: light through glass is a caustic */
+        if (l->kind == LIGHT_PROBE) { /* the reference's estimator with one direction (a basis: not used) */
+            CHECK(probe_light_nee(c, l, sp, facing, media, to_viewer, opaque, 1, l == p->env_light ? ri : NULL,
+                                  &lt, out));
+            continue;
+        }
+        if (l->kind != LIGHT_SPHERE && l->kind != LIGHT_RECT)
             continue;
         GVec3 in;
         double dist, pdf_l;
@@ -225,27 +193,9 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
         CHECK(got = light_sample(p, l, sp->point, &in, &dist, &pdf_l, &L));
         if (!got || (opaque && gvec3_dot(in, facing) <= 0.0))
             continue;
-        /* material sampling reaches area lights, and the probe when it is the background */
-        double w = 1.0;
-        if (l->kind != LIGHT_PROBE || l->env == s->env)
-            w = power_heuristic(pdf_l, gmaterial_pdf(m, sp, in, to_viewer, ri));
-        if (!(w > 0.0))
-            continue;
-        CHECK(gcolor_scale(&lt.illum, &L, w / pdf_l));
-        CHECK(gmaterial_reflection(m, sp, in, &lt.illum, to_viewer, &lt.refl));
-        if (gcolor_brightness(&lt.refl) == 0.0)
-            continue; /* nothing reflected from here: no shadow ray */
-        Ray sr = {offset_origin(sp->point, facing, in), in, 0.0, isfinite(dist) ? dist * (1.0 - 1e-7) : INFINITY,
-                  0.0, 0.0};
-        c->rays++;
-        if (accel_occluded(s, &sr))
-            continue;
-        const GMaterial *medium = gvec3_dot(in, facing) >= 0.0 ? sp->from : sp->to;
-        if (medium && isfinite(dist)) {
-            CHECK(gmaterial_absorption(medium, sp, &lt.refl, dist, &lt.tmp));
-            CHECK(gcolor_copy(&lt.refl, &lt.tmp));
-        }
-        CHECK(gcolor_add(out, out, &lt.refl));
+        double w = mis_power(pdf_l, gmaterial_pdf(m, sp, in, to_viewer, ri));
+        if (w > 0.0)
+            CHECK(sample_light(c, sp, facing, media, in, dist, &L, w / pdf_l, to_viewer, &lt, out));
     }
 done:
     gscratch_release(c->scratch, mark);
@@ -315,11 +265,13 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
             next = *media;
         double width = r->cone_width + r->cone_spread * sp->t;
         Ray ray = {offset_origin(sp->point, facing, smp.in), smp.in, 0.0, INFINITY, width, r->cone_spread};
-        int saved = c->band;
+        int saved = c->band, scattered = p->scattered, is_delta = (smp.flags & GSAMPLE_DELTA) != 0;
         if (transmit && pick >= 0)
             c->band = pick;
-        rc = path_radiance(p, &ray, &next, depth + 1, nb, (smp.flags & GSAMPLE_DELTA) != 0, smp.pdf, &illum);
+        p->scattered |= !is_delta;
+        rc = path_radiance(p, &ray, &next, depth + 1, nb, is_delta, smp.pdf, &illum);
         c->band = saved;
+        p->scattered = scattered;
         CHECK(rc);
         CHECK(gcolor_scale(&illum, &illum, 1.0 / (smp.pdf * q)));
         if (transmit)
@@ -347,6 +299,31 @@ done:
     return rc;
 }
 
+/* Radiance arriving along r, which leaves the scene; first: a camera ray or one after a delta bounce, else
+ * drawn by material sampling with density prev_pdf. See the top of the file: the environment. */
+static int escaped(PathCtx *p, const Ray *r, int first, double prev_pdf, GColor *out)
+{
+    const Scene *s = p->c->scene;
+    const ProbeEnv *env = s->env;
+    int rc = G_OK;
+    if (!env)
+        CHECK(gcolor_copy(out, &s->background));
+    else if (first)
+        CHECK(probe_background(env, r->d, out));
+    else if (p->env_in_lights)
+        CHECK(gcolor_fill(out, 0.0));
+    else {
+        CHECK(probe_pixel_radiance(env, r->d, out));
+        if (p->env_light)
+            CHECK(gcolor_scale(out, out, mis_power(prev_pdf, probe_dist_pdf(&env->dist, env->probe,
+                                                                               probe_from_world(env, r->d)))));
+    }
+    if (p->scattered && s->have_ambient)
+        CHECK(gcolor_add(out, out, &s->ambient));
+done:
+    return rc;
+}
+
 /* Radiance arriving at r's origin along r; prev_delta and prev_pdf describe how r was drawn (for the MIS
  * weight of a light it reaches). */
 static int path_radiance(PathCtx *p, const Ray *r, const Media *media, int depth, double beta, int prev_delta,
@@ -370,7 +347,7 @@ static int path_radiance(PathCtx *p, const Ray *r, const Media *media, int depth
     }
     int first = depth == 0 || prev_delta;
     if (lh) {
-        CHECK(gcolor_scale(out, &lh->color, first ? 1.0 : power_heuristic(prev_pdf, pdf_l)));
+        CHECK(gcolor_scale(out, &lh->color, first ? 1.0 : mis_power(prev_pdf, pdf_l)));
         const GMaterial *medium = media_top(media);
         if (medium) {
             GScratchMark mark = gscratch_mark(c->scratch);
@@ -382,16 +359,8 @@ static int path_radiance(PathCtx *p, const Ray *r, const Media *media, int depth
         }
         return rc;
     }
-    if (!hit) {
-        if (!s->env)
-            return gcolor_copy(out, &s->background);
-        CHECK(probe_background(s->env, r->d, out));
-        if (!first && p->env_light) {
-            double pe = probe_dist_pdf(&s->env->dist, s->env->probe, to_probe(s->env, r->d));
-            CHECK(gcolor_scale(out, out, power_heuristic(prev_pdf, pe)));
-        }
-        return G_OK;
-    }
+    if (!hit)
+        return escaped(p, r, first, prev_pdf, out);
     GSurfPoint sp;
     GVec3 facing;
     surfpoint_fill(c, r, &h, media, &sp, &facing);
@@ -412,18 +381,21 @@ static uint64_t mix64(uint64_t z)
 int path_trace(TraceCtx *c, const Ray *r, const Media *media, uint64_t pixel, int sample, GColor *out)
 {
     PathCtx p = {.c = c};
-    rng_seed(&p.rng, mix64(pixel ^ mix64((uint64_t)sample)), 0x5851f42d4c957f2dULL);
+    Rng camera_rng = c->rng; /* the pixel's own sequence (its sample positions) goes on after this path */
+    rng_seed(&c->rng, mix64(pixel ^ mix64((uint64_t)sample)), 0x5851f42d4c957f2dULL);
     const Scene *s = c->scene;
-    for (int i = 0; i < s->nlights; i++) {
+    const ProbeEnv *env = s->env;
+    for (int i = 0; env && i < s->nlights; i++) {
         const Light *l = s->lights[i];
-        if (l->kind == LIGHT_PROBE && s->env && l->env == s->env && s->env->dist.row_cdf)
+        if (l->kind == LIGHT_PROBE && l->env == env && env->dist.row_cdf)
             p.env_light = l;
     }
-    background_lights(s, &p.skip_lo, &p.skip_hi);
+    p.env_in_lights = env && env->nlights > 0 && env->lights[0]->kind == LIGHT_DIRECTIONAL;
     int saved = c->band;
     c->band = -1;
     int rc = path_radiance(&p, r, media, 0, 1.0, 0, 0.0, out);
     c->band = saved;
+    c->rng = camera_rng;
     return rc;
 }
 #undef CHECK

@@ -70,8 +70,11 @@ int probe_attach(Scene *s, ProbeEnv *env, GError *err);
 GVec3 probe_to_world(const ProbeEnv *env, GVec3 d);
 /** A world direction in the probe's own frame (the inverse of probe_to_world). */
 GVec3 probe_from_world(const ProbeEnv *env, GVec3 d);
-/** Radiance seen along direction d leaving the scene (d in world space). */
+/** Radiance seen along direction d leaving the scene (d in world space), bilinear between pixel centres. */
 int probe_background(const ProbeEnv *env, GVec3 d, GColor *out);
+/** Radiance of the probe as a light along world direction d: the pixel d falls in, scaled (piecewise constant,
+ * as its sampling distribution; probe_sample.c). */
+int probe_pixel_radiance(const ProbeEnv *env, GVec3 d, GColor *out);
 /** Prints one line per probe entry of the scene (file, size, technique, lights, time, irradiance error). */
 void probe_describe(const Scene *s, FILE *f);
 

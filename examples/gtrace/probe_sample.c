@@ -14,7 +14,14 @@
  *
  * Each sample goes through the same path as every light (sample_light: material.reflection, shadow ray,
  * transmission through non-opaque surfaces); `shadows off` skips the shadow ray (the unoccluded render that
- * `gprobe compare --unshadowed` uses to find the shadows). */
+ * `gprobe compare --unshadowed` uses to find the shadows).
+ *
+ * One estimator for both integrators (probe_light_nee): the Whitted tracer's reference takes `samples`
+ * stratified directions with weight 1 (probe_light_shade); the path tracer's next-event estimation takes one
+ * per vertex, weighted against its material sampling by the power heuristic, with shadow rays blocked by any
+ * surface (LightTmp.blocked). As a light the probe is its pixels, piecewise constant (probe_pixel_radiance),
+ * which is what the distribution samples and what gprobe's ground truth integrates; seen directly it is the
+ * bilinear background (probe_background). */
 #include "probe_dist.h"
 #include "lighting.h"
 #include "probe_env.h"
@@ -116,16 +123,25 @@ double probe_dist_sample(const ProbeDist *d, const GProbe *p, double u1, double 
     return pw / (total * row_omega(d->w, d->h, row));
 }
 
+/* The pixel (*u, *v) of probe p that direction dir (probe space) falls in. */
+static void pixel_of(const GProbe *p, GVec3 dir, int *u, int *v)
+{
+    double x, y;
+    gprobe_position(p, dir, &x, &y);
+    int w = gprobe_width(p), h = gprobe_height(p);
+    *u = (int)floor(x);
+    *v = (int)floor(y);
+    *u = *u < 0 ? 0 : *u >= w ? w - 1 : *u;
+    *v = *v < 0 ? 0 : *v >= h ? h - 1 : *v;
+}
+
 double probe_dist_pdf(const ProbeDist *d, const GProbe *p, GVec3 dir)
 {
     double total = d->row_cdf[d->h];
     if (!(total > 0.0))
         return 0.0;
-    double x, y;
-    gprobe_position(p, dir, &x, &y);
-    int u = (int)floor(x), v = (int)floor(y);
-    u = u < 0 ? 0 : u >= d->w ? d->w - 1 : u;
-    v = v < 0 ? 0 : v >= d->h ? d->h - 1 : v;
+    int u, v;
+    pixel_of(p, dir, &u, &v);
     const double *cdf = d->col_cdf + (size_t)v * (d->w + 1);
     return (cdf[u + 1] - cdf[u]) / (total * row_omega(d->w, d->h, v));
 }
@@ -147,20 +163,37 @@ static int probe_basis_shade(TraceCtx *c, const ProbeEnv *env, GSurfPoint *sp, G
     return rc;
 }
 
+int probe_pixel_radiance(const ProbeEnv *env, GVec3 d, GColor *out)
+{
+    int u, v;
+    pixel_of(env->probe, probe_from_world(env, d), &u, &v);
+    int rc = gprobe_pixel_color(env->probe, u, v, out);
+    if (rc == G_OK && env->scale != 1.0)
+        rc = gcolor_scale(out, out, env->scale);
+    return rc;
+}
+
 int probe_light_shade(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const Media *media,
                       GVec3 out_dir, int opaque, LightTmp *t, GColor *result)
 {
     const ProbeEnv *env = l->env;
     if (env && PROBE_IS_BASIS(env->technique))
         return probe_basis_shade(c, env, sp, facing, out_dir, t, result);
+    return probe_light_nee(c, l, sp, facing, media, out_dir, opaque, l->samples, NULL, t, result);
+}
+
+int probe_light_nee(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 out_dir,
+                    int opaque, int n, const GColor *mis_ri, LightTmp *t, GColor *result)
+{
+    const ProbeEnv *env = l->env;
     if (!env || !env->probe || !env->dist.row_cdf)
         return G_OK;
     const GProbe *p = env->probe;
     const ProbeDist *d = &env->dist;
-    int n = l->samples < 1 ? 1 : l->samples > PROBE_MAX_SAMPLES ? PROBE_MAX_SAMPLES : l->samples;
+    n = n < 1 ? 1 : n > PROBE_MAX_SAMPLES ? PROBE_MAX_SAMPLES : n;
     int grid = strata_grid(n), *perm = NULL;
     double scale = env->scale;
-    int shadows = env->shadows;
+    int shadows = env->shadows || mis_ri;
     GScratchMark mark = gscratch_mark(c->scratch);
     GColor radiance;
     int rc = gcolor_scratch(&radiance, c->scene->model, c->scratch);
@@ -183,9 +216,12 @@ int probe_light_shade(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing,
         GVec3 in = probe_to_world(env, local);
         if (opaque && gvec3_dot(in, facing) <= 0.0)
             continue;
+        double w = mis_ri ? mis_power(pdf, gmaterial_pdf(sp->material, sp, in, out_dir, mis_ri)) : 1.0;
+        if (!(w > 0.0))
+            continue;
         if ((rc = gprobe_pixel_color(p, pu, pv, &radiance)) < 0)
             break;
-        double s = scale / (n * pdf);
+        double s = w * scale / (n * pdf);
         if (shadows) {
             rc = sample_light(c, sp, facing, media, in, INFINITY, &radiance, s, out_dir, t, result);
         } else if ((rc = gcolor_scale(&t->illum, &radiance, s)) == G_OK &&
