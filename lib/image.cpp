@@ -296,9 +296,72 @@ private:
     int64_t end_ = 0;
 };
 
+// The channel name of wavelength nm in the spectral layout (image.h): S0.550,000000nm.
+std::string spectral_channel(double nm)
+{
+    char num[64];
+    snprintf(num, sizeof num, "%.6f", nm);
+    for (char *p = num; *p; p++)
+        if (*p == '.')
+            *p = ',';
+    return std::string("S0.") + num + "nm";
+}
+
+// Writes the colour channels and the spectra (opt->spectra, OpenEXR only) row by row: no second copy of the
+// whole image.
+int write_spectral(ImageOutput *out, const char *path, const char *tmp, const GImage *img, double scale,
+                   const GImageWriteOptions *opt, GError *err)
+{
+    const GImageSpectra *sp = opt->spectra;
+    const int w = img->width, h = img->height, ch = img->channels, n = sp->count, nch = ch + n;
+    ImageSpec spec(w, h, nch, TypeDesc::FLOAT);
+    spec.alpha_channel = ch == 2 || ch == 4 ? ch - 1 : -1;
+    spec.channelnames.resize((size_t)ch);
+    for (int k = 0; k < n; k++)
+        spec.channelnames.push_back(spectral_channel(sp->wavelengths[k]));
+    if (opt->full_width > 0) {
+        spec.x = opt->x;
+        spec.y = opt->y;
+        spec.full_x = spec.full_y = 0;
+        spec.full_width = opt->full_width;
+        spec.full_height = opt->full_height;
+    }
+    spec.attribute("oiio:ColorSpace", "Linear");
+    spec.attribute("spectralLayoutVersion", "1.0");
+    spec.attribute("emissiveUnits", "W.m^-2.sr^-1");
+    float *row = (float *)gmem_alloc((size_t)w * nch * sizeof(float));
+    if (!row)
+        return gerror_set(err, G_ERR_NOMEM, "%s: out of memory encoding a %dx%d image", path, w, h);
+    int rc = G_OK;
+    if (!out->open(tmp, spec))
+        rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, first_line(out->geterror()).c_str());
+    for (int y = 0; y < h && rc == G_OK; y++) {
+        for (int x = 0; x < w; x++) {
+            size_t i = (size_t)y * w + x;
+            float *d = row + (size_t)x * nch;
+            for (int c = 0; c < ch; c++)
+                d[c] = c == spec.alpha_channel ? img->pixels[i * ch + c] : (float)(img->pixels[i * ch + c] * scale);
+            for (int k = 0; k < n; k++)
+                d[ch + k] = (float)(sp->values[i * n + k] * scale);
+        }
+        if (!out->write_scanline(spec.y + y, 0, TypeDesc::FLOAT, row))
+            rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, first_line(out->geterror()).c_str());
+    }
+    if (rc == G_OK && !out->close())
+        rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, first_line(out->geterror()).c_str());
+    gmem_free(row);
+    return rc;
+}
+
 int write_pixels(ImageOutput *out, const char *path, const char *tmp, const GImage *img, double scale,
                  bool float_out, const GImageWriteOptions *opt, GError *err)
 {
+    if (opt && opt->spectra) {
+        if (strcmp(out->format_name(), "openexr") != 0)
+            return gerror_set(err, G_ERR_INVALID, "%s: only OpenEXR files store spectra, not %s files", path,
+                              out->format_name());
+        return write_spectral(out, path, tmp, img, scale, opt, err);
+    }
     const int w = img->width, h = img->height;
     int ch = img->channels;
     int alpha = (ch == 2 || ch == 4) ? ch - 1 : -1;

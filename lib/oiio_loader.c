@@ -174,6 +174,20 @@ int gimage_check_output(const char *path, GError *err)
     return o ? o->image_check_output(path, err) : G_ERR_IO;
 }
 
+/* The spectra to write beside img: G_OK, or G_ERR_INVALID naming what is wrong. */
+static int check_spectra(const char *path, const GImageSpectra *sp, GError *err)
+{
+    if (sp->count < 1 || sp->count > GIMAGE_MAX_WAVELENGTHS || !sp->wavelengths || !sp->values)
+        return gerror_set(err, G_ERR_INVALID, "%s: spectra need 1..%d wavelengths and their values (got %d)", path,
+                          GIMAGE_MAX_WAVELENGTHS, sp->count);
+    for (int k = 0; k < sp->count; k++)
+        if (!isfinite(sp->wavelengths[k]) || !(sp->wavelengths[k] > 0.0) ||
+            (k > 0 && !(sp->wavelengths[k] > sp->wavelengths[k - 1])))
+            return gerror_set(err, G_ERR_INVALID, "%s: the spectra's wavelengths must be positive and increasing",
+                              path);
+    return G_OK;
+}
+
 int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *opt, GError *err)
 {
     if (!path || !*path)
@@ -185,7 +199,12 @@ int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *
          (long long)opt->y + img->height > opt->full_height))
         return gerror_set(err, G_ERR_INVALID, "%s: the %dx%d image at %d,%d does not lie inside the %dx%d full image",
                           path, img->width, img->height, opt->x, opt->y, opt->full_width, opt->full_height);
+    int rc0 = opt && opt->spectra ? check_spectra(path, opt->spectra, err) : G_OK;
+    if (rc0 != G_OK)
+        return rc0;
     if (gimage_png_path(path)) {
+        if (opt && opt->spectra)
+            return gerror_set(err, G_ERR_INVALID, "%s: only OpenEXR files store spectra, not PNG files", path);
         double exposure = opt ? opt->exposure : 0.0;
         if (!isfinite(exposure))
             return gerror_set(err, G_ERR_INVALID, "%s: exposure must be finite", path);

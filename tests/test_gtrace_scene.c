@@ -464,8 +464,9 @@ static void test_sources_are_model_free(void **state)
     }
     closedir(dir);
     assert_true(nfiles >= 13);
-    /* allowed spellings: the XYZ -> display conversion and the name of the display encoding */
-    const char *allowed[] = {"gcie_xyz_to_rgb", "sRGB"};
+    /* allowed spellings: the XYZ -> display conversion, the name of the display encoding and the option that
+     * asks for the values at the model's wavelengths (it names no model: they come through gcolor_at_wavelengths) */
+    const char *allowed[] = {"gcie_xyz_to_rgb", "sRGB", "--spectral", "\"spectral\""};
     /* colour model names, the rgb conversions, sample access, the nm exchange and the models' sizes */
     const char *forbidden[] = {"rgb", "spectrum", "spectral", ".v[", "->v[", "_nm", "nsamples",
                                "nvalues", "capacity", "lambda", "gcolor_wrap", "cls->"};

@@ -27,6 +27,7 @@ static void usage(FILE *f)
             "              [--allow-plugins] [--confine DIR]\n"
             "              [--probe FILE] [--probe-technique T] [--probe-count N] [--probe-samples N]\n"
             "              [--probe-scale S] [--probe-shadows on|off] [--crop X0,Y0,X1,Y1] [--integrator whitted|path]\n"
+            "              [--spectral]\n"
             "       gtrace --help | --version\n"
             "Renders a scene file (the library's text format with camera, object and light entries) with a\n"
             "Whitted ray tracer that uses colours and materials only through the generic interfaces.\n"
@@ -74,6 +75,10 @@ static void usage(FILE *f)
             "                    left is 0,0); the output is the region's size and its pixels equal those of\n"
             "                    the full render; an .exr records the region as its data window (the full\n"
             "                    image is the display window), so crops can be merged\n"
+            "  --spectral        with -o OUT.exr: also store each pixel's light at the colour model's own\n"
+            "                    wavelengths, as emissive channels S0.<nm>nm (e.g. S0.550,000000nm) beside\n"
+            "                    R,G,B, in the OpenEXR layout of Fichet, Pacanowski and Wilkie 2021 (JCGT\n"
+            "                    10(3)); refused in a model without wavelength samples and for other formats\n"
             "  -q, --quiet       no progress bar and no summary line\n"
             "  -h, --help        this text\n"
             "  --version         the version\n"
@@ -85,7 +90,7 @@ static void usage(FILE *f)
 enum {
     OPT_WIDTH = CLI_FIRST_OWN, OPT_HEIGHT, OPT_SPP, OPT_DEPTH, OPT_MAX_RAYS, OPT_THREADS, OPT_COLORMODEL,
     OPT_EXPOSURE, OPT_CUTOFF, OPT_CROP, OPT_BANDS, OPT_INTEGRATOR, OPT_PROBE, OPT_PROBE_TECHNIQUE, OPT_PROBE_COUNT, OPT_PROBE_SAMPLES,
-    OPT_PROBE_SHADOWS, OPT_PROBE_SCALE
+    OPT_PROBE_SHADOWS, OPT_PROBE_SCALE, OPT_WAVES
 };
 
 /* The --probe options (code c, its value v); -1 with a message for a bad one. */
@@ -123,7 +128,7 @@ static int parse_probe_option(int c, const char *v, ProbeOverride *p)
 typedef struct Options {
     ProbeOverride probe;
     const char *scene, *out, *colormodel;
-    int width, height, spp, depth, threads, quiet, max_rays, bands, integrator;
+    int width, height, spp, depth, threads, quiet, max_rays, bands, integrator, waves;
     int have_exposure, have_cutoff, have_crop;
     int crop[4]; /* x0, y0, x1, y1 */
     double exposure, cutoff;
@@ -176,6 +181,7 @@ static int parse_args(int argc, char **argv, Options *o)
         {"probe-samples", required_argument, NULL, OPT_PROBE_SAMPLES},
         {"probe-shadows", required_argument, NULL, OPT_PROBE_SHADOWS},
         {"probe-scale", required_argument, NULL, OPT_PROBE_SCALE},
+        {"spectral", no_argument, NULL, OPT_WAVES},
         {NULL, 0, NULL, 0},
     };
     memset(o, 0, sizeof *o);
@@ -238,6 +244,9 @@ static int parse_args(int argc, char **argv, Options *o)
             o->have_cutoff = 1;
             rc = cli_double("gtrace", "--cutoff", optarg, 0.0, 1.0, &o->cutoff);
             break;
+        case OPT_WAVES:
+            o->waves = 1;
+            break;
         case OPT_CROP:
             o->have_crop = 1;
             rc = parse_crop(optarg, o->crop);
@@ -261,6 +270,10 @@ static int parse_args(int argc, char **argv, Options *o)
     if (!o->scene || !o->out) {
         fprintf(stderr, "gtrace: %s\n", !o->scene ? "no scene file given" : "no output file given (-o OUT)");
         usage(stderr);
+        return -1;
+    }
+    if (o->waves && !output_is_exr(o->out)) {
+        fprintf(stderr, "gtrace: --spectral writes an OpenEXR file: -o must end in .exr, not '%s'\n", o->out);
         return -1;
     }
     return 0;
@@ -303,7 +316,7 @@ int main(int argc, char **argv)
     RenderSettings rs = {.width = cam->width, .height = cam->height, .spp = cam->spp, .depth = cam->depth,
                          .threads = o.threads, .quiet = o.quiet, .cutoff = o.have_cutoff ? o.cutoff : cam->cutoff,
                          .max_rays = o.max_rays, .bands = o.bands > 0 ? o.bands : cam->bands,
-                         .integrator = o.integrator};
+                         .integrator = o.integrator, .waves = o.waves};
     if (o.width > 0 && o.height > 0) {
         rs.width = o.width;
         rs.height = o.height;

@@ -19,6 +19,13 @@ static int is_float_format(const char *path)
     return strcasecmp(dot, ".exr") == 0 || strcasecmp(dot, ".hdr") == 0 || strcasecmp(dot, ".pfm") == 0;
 }
 
+int output_is_exr(const char *path)
+{
+    const char *dot = strrchr(path, '.');
+    const char *slash = strrchr(path, '/');
+    return dot && (!slash || dot > slash) && strcasecmp(dot, ".exr") == 0;
+}
+
 int output_check(const char *path, GError *err)
 {
     return gimage_check_output(path, err);
@@ -34,5 +41,8 @@ int output_write(const char *path, const Framebuffer *fb, double exposure, GErro
         opt.full_width = fb->full_width;
         opt.full_height = fb->full_height;
     }
+    GImageSpectra waves = {.count = fb->nwaves, .wavelengths = fb->wavelengths, .values = fb->waves};
+    if (fb->waves)
+        opt.spectra = &waves;
     return gimage_write(path, &img, &opt, err);
 }

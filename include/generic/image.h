@@ -62,6 +62,20 @@ enum {
     GIMAGE_READ_RGBA = 1 << 2  /**< always 4 channels: alpha 1 where the file has none */
 };
 
+/** Emissive spectra stored beside an image's colour channels in OpenEXR, in the layout of Fichet, Pacanowski
+ * and Wilkie 2021, "An OpenEXR Layout for Spectral Images" (JCGT 10(3)): one float channel per wavelength, named
+ * S0.<wavelength with 6 decimals and a comma as separator>nm (e.g. S0.550,000000nm), and the string attributes
+ * spectralLayoutVersion "1.0" and emissiveUnits "W.m^-2.sr^-1". */
+typedef struct GImageSpectra {
+    int count;                 /**< wavelengths per pixel, 1..GIMAGE_MAX_WAVELENGTHS */
+    const double *wavelengths; /**< count of them, in nm, increasing, finite and > 0 */
+    /** width * height * count values: pixel (x, y) at wavelength k is values[(y * width + x) * count + k] */
+    const float *values;
+} GImageSpectra;
+
+/** The most wavelengths a GImageSpectra may have. */
+#define GIMAGE_MAX_WAVELENGTHS 4096
+
 /** Options for gimage_write; NULL or a zeroed struct means exposure 0. */
 typedef struct GImageWriteOptions {
     double exposure; /**< in stops: colour channels are multiplied by 2^exposure before encoding (all formats) */
@@ -69,6 +83,9 @@ typedef struct GImageWriteOptions {
      * full_height image. Formats with a data and a display window (OpenEXR) record it; the others ignore it.
      * full_width 0: the image is the whole picture. */
     int x, y, full_width, full_height;
+    /** Spectra to store beside the colour channels (NULL: none). Only OpenEXR stores them: a write to another
+     * format with spectra is G_ERR_INVALID, before anything is written. */
+    const GImageSpectra *spectra;
 } GImageWriteOptions;
 
 /** Allocates a black image of the given size (channels 1..4); G_ERR_INVALID for bad sizes,
