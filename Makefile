@@ -48,7 +48,11 @@ LIB_SRC := $(foreach d,lib lib/kit lib/probe colormodels materials materials/* t
 LIB_CXX := $(wildcard lib/*.cpp)
 # The list of built-in types (include/generic/builtins.h), generated from the GENERIC_TYPE records of LIB_SRC.
 GEN_BUILTINS = $(1)/gen/builtin_types.c
-LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/gen/builtin_types.o
+# The extensions OpenImageIO writes (gimage_write_extensions, generic/image.h), found at build time by a small
+# program built against OpenImageIO, so that --help lists them without loading it.
+GEN_WRITERS = $(1)/gen/image_writers.c
+WRITERS_TOOL := $(BUILD)/gen/gen_image_writers
+LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/gen/builtin_types.o $(BUILD)/obj/gen/image_writers.o
 LIBA    := $(BUILD)/lib/libgeneric.a
 LIBSO   := $(BUILD)/lib/libgeneric.so.$(SOVER)
 # The OpenImageIO module, found beside libgeneric.so (lib/generic/) or the program (../lib/generic/).
@@ -85,6 +89,15 @@ $(BUILD)/obj/%.o: %.c
 $(call GEN_BUILTINS,$(BUILD)) $(call GEN_BUILTINS,build/fuzz): $(LIB_SRC) scripts/gen_builtins.sh
 	@mkdir -p $(dir $@)
 	@scripts/gen_builtins.sh $@ $(LIB_SRC)
+
+# built without the sanitizers: it runs at build time, and OpenImageIO's own leaks are no concern there
+$(WRITERS_TOOL): scripts/gen_image_writers.cpp
+	@mkdir -p $(dir $@)
+	$(CXX) -std=c++17 -O1 $(shell pkg-config --cflags OpenImageIO 2>/dev/null) $< -o $@ $(OIIO_LIBS)
+
+$(call GEN_WRITERS,$(BUILD)) $(call GEN_WRITERS,build/fuzz): $(WRITERS_TOOL)
+	@mkdir -p $(dir $@)
+	$(WRITERS_TOOL) $@
 
 $(BUILD)/obj/gen/%.o: $(BUILD)/gen/%.c
 	@mkdir -p $(dir $@)
@@ -319,6 +332,7 @@ FUZZ_BIN      := $(FUZZ_NAMES:%=$(FUZZ_BUILD)/fuzz_%)
 FUZZ_C_OBJ    := $(LIB_SRC:%.c=$(FUZZ_BUILD)/obj/%.o)
 FUZZ_CXX_OBJ  := $(LIB_CXX:%.cpp=$(FUZZ_BUILD)/obj/%.o)
 FUZZ_GEN_OBJ  := $(FUZZ_BUILD)/obj/gen/builtin_types.o
+FUZZ_WRITERS_OBJ := $(FUZZ_BUILD)/obj/gen/image_writers.o
 FUZZ_LIBA     := $(FUZZ_BUILD)/libgeneric.a
 # What fuzz-seed copies (the examples of each input kind; tests/bad/*.mat are broken on purpose, good seeds too).
 FUZZ_SEED_reader := examples/materials/*.mat examples/textures/*.txt tests/good/*.mat tests/bad/*.mat
@@ -358,11 +372,15 @@ $(FUZZ_GEN_OBJ): $(call GEN_BUILTINS,$(FUZZ_BUILD))
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CPPFLAGS) $(FUZZ_CFLAGS) -c $< -o $@
 
+$(FUZZ_WRITERS_OBJ): $(call GEN_WRITERS,$(FUZZ_BUILD))
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CPPFLAGS) $(FUZZ_CFLAGS) -c $< -o $@
+
 $(FUZZ_BUILD)/obj/tests/fuzz/%.o: tests/fuzz/%.c
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CPPFLAGS) $(FUZZ_CFLAGS) -c $< -o $@
 
-$(FUZZ_LIBA): $(FUZZ_C_OBJ) $(FUZZ_CXX_OBJ) $(FUZZ_GEN_OBJ)
+$(FUZZ_LIBA): $(FUZZ_C_OBJ) $(FUZZ_CXX_OBJ) $(FUZZ_GEN_OBJ) $(FUZZ_WRITERS_OBJ)
 	rm -f $@
 	ar rcs $@ $^
 

@@ -18,6 +18,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <unistd.h>
 
 #ifndef GENERIC_LIBDIR
@@ -164,14 +165,34 @@ int gimage_info(const char *path, int *width, int *height, int *channels, GError
     return o ? o->image_info(path, width, height, channels, err) : G_ERR_IO;
 }
 
+/* 1 when the extension ext (with its dot) is one of gimage_write_extensions(), ignoring case. */
+static int listed_extension(const char *ext)
+{
+    size_t n = strlen(ext);
+    for (const char *p = gimage_write_extensions(); *p;) {
+        size_t len = strcspn(p, " ");
+        if (len == n && strncasecmp(p, ext, n) == 0)
+            return 1;
+        p += len;
+        p += *p == ' ';
+    }
+    return 0;
+}
+
 int gimage_check_output(const char *path, GError *err)
 {
     if (!path || !*path)
         return gerror_set(err, G_ERR_INVALID, "no image file name given");
-    if (gimage_png_path(path))
-        return gfile_check_output(path, err);
-    const GOiioOps *o = goiio_ops(err);
-    return o ? o->image_check_output(path, err) : G_ERR_IO;
+    int rc = gfile_check_output(path, err);
+    if (rc != G_OK || gimage_png_path(path))
+        return rc;
+    const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
+    if (!dot || (slash && dot < slash))
+        return gerror_set(err, G_ERR_IO, "%s: cannot write image: no extension to choose the format by", path);
+    if (!listed_extension(dot))
+        return gerror_set(err, G_ERR_IO, "%s: cannot write image: this OpenImageIO has no writer for '%s' files (it "
+                          "writes %s)", path, dot, gimage_write_extensions());
+    return G_OK;
 }
 
 /* The spectra to write beside img: G_OK, or G_ERR_INVALID naming what is wrong. */

@@ -9,6 +9,7 @@
 #include "../common/cli.h"
 
 #include <generic/builtins.h>
+#include <generic/image.h>
 #include <generic/plugin.h>
 #include <generic/registry.h>
 
@@ -16,6 +17,23 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+/* Prints the space-separated words of list on lines of at most width columns, each indented by indent. */
+static void print_wrapped(FILE *f, int indent, int width, const char *list)
+{
+    int col = 0;
+    for (const char *p = list; *p;) {
+        int len = (int)strcspn(p, " ");
+        if (col > 0 && col + 1 + len > width) {
+            fputc('\n', f);
+            col = 0;
+        }
+        col += col ? fprintf(f, " %.*s", len, p) : fprintf(f, "%*s%.*s", indent, "", len, p);
+        p += len;
+        p += *p == ' ';
+    }
+    fputc('\n', f);
+}
 
 static void usage(FILE *f)
 {
@@ -32,8 +50,11 @@ static void usage(FILE *f)
             "Renders a scene file (the library's text format with camera, object and light entries) with a\n"
             "Whitted ray tracer that uses colours and materials only through the generic interfaces.\n"
             "Every scene coordinate (after transforms) must be finite and within +-1e15.\n"
-            "  -o OUT            output image; the extension picks the format: .exr linear float,\n"
-            "                    .png/.jpg display-encoded (sRGB) after the exposure, clamped\n"
+            "  -o OUT            output image; the extension picks the format: .exr/.hdr linear float,\n"
+            "                    the others (.png, .jpg, ...) display-encoded (sRGB) after the exposure,\n"
+            "                    clamped. This build writes (OpenImageIO's writers, found when it was built):\n");
+    print_wrapped(f, 20, 100, gimage_write_extensions());
+    fprintf(f,
             "  --width W         image width (default: the camera's; height follows its aspect)\n"
             "  --height H        image height (default: the camera's)\n"
             "  --spp N           samples per pixel, stratified and jittered (default: the camera's)\n"

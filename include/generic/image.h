@@ -122,9 +122,16 @@ GENERIC_API GENERIC_NODISCARD int gimage_info(const char *path, int *width, int 
 GENERIC_API GENERIC_NODISCARD int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *opt, GError *err);
 
 /** Checks before any work that gimage_write can write path: its directory exists and is writable, path is
- * not something other than a regular file (gfile_check_output), and this OpenImageIO has a writer for its
- * extension (Debian 12's has none for .pfm). G_OK or G_ERR_IO naming path and the reason. */
+ * not something other than a regular file (gfile_check_output), and its extension is one of
+ * gimage_write_extensions() (Debian 12's OpenImageIO has no writer for .pfm). Loads no OpenImageIO. G_OK or
+ * G_ERR_IO naming path and the reason. */
 GENERIC_API GENERIC_NODISCARD int gimage_check_output(const char *path, GError *err);
+
+/** The file extensions gimage_write writes, with their dots, sorted and separated by one space
+ * (".bmp .exr ... .png ... .webp"): the ones this OpenImageIO wrote and read back when the library was built
+ * (scripts/gen_image_writers.cpp), so that a program can list them without loading OpenImageIO. Case is ignored
+ * when a path's extension is matched against them. A static string. */
+GENERIC_API const char *gimage_write_extensions(void);
 
 /** The sRGB transfer function (IEC 61966-2-1): linear value in [0, 1] to its encoded value. */
 GENERIC_API double gimage_srgb_encode(double linear);
