@@ -353,8 +353,12 @@ int write_spectral(ImageOutput *out, const char *path, const char *tmp, const GI
     return rc;
 }
 
+// How the colour channels of 8-bit files are encoded: the sRGB transfer function, or as they are (display
+// values already, from a display transform).
+enum Encoding { ENCODE_SRGB, ENCODE_AS_IS };
+
 int write_pixels(ImageOutput *out, const char *path, const char *tmp, const GImage *img, double scale,
-                 bool float_out, const GImageWriteOptions *opt, GError *err)
+                 bool float_out, Encoding enc, const GImageWriteOptions *opt, GError *err)
 {
     if (opt && opt->spectra) {
         if (strcmp(out->format_name(), "openexr") != 0)
@@ -398,7 +402,7 @@ int write_pixels(ImageOutput *out, const char *path, const char *tmp, const GIma
             }
             if (!(v > 0.0)) // also NaN
                 v = 0.0;
-            if (!is_alpha)
+            if (!is_alpha && enc == ENCODE_SRGB)
                 v = gimage_srgb_encode(v);
             if (v > 1.0)
                 v = 1.0;
@@ -457,6 +461,29 @@ int check_output_impl(const char *path, GError *err)
     }
 }
 
+// shown = img's pixels times scale through the display transform d (RGB or RGBA; grey is refused).
+int display_pixels(const char *path, const GImage *img, double scale, const GImageDisplay *d, GImage *shown,
+                   GError *err)
+{
+    if (img->channels != 3 && img->channels != 4)
+        return gerror_set(err, G_ERR_INVALID, "%s: a display transform needs an RGB or RGBA image", path);
+    const size_t n = (size_t)img->width * img->height * img->channels;
+    float *p = (float *)gmem_alloc(n * sizeof(float));
+    if (!p)
+        return gerror_set(err, G_ERR_NOMEM, "%s: out of memory for the display transform", path);
+    for (size_t i = 0; i < n; i++)
+        p[i] = img->channels == 4 && i % 4 == 3 ? img->pixels[i] : (float)(img->pixels[i] * scale);
+    GOiioOps ops;
+    goiio_display_ops(&ops);
+    int rc = ops.display_transform(d->config, d->display, d->view, p, img->width, img->height, img->channels, err);
+    if (rc != G_OK) {
+        gmem_free(p);
+        return rc;
+    }
+    *shown = GImage{img->width, img->height, img->channels, p};
+    return G_OK;
+}
+
 int write_impl(const char *path, const GImage *img, const GImageWriteOptions *opt, GError *err)
 {
     double exposure = opt ? opt->exposure : 0.0;
@@ -465,6 +492,17 @@ int write_impl(const char *path, const GImage *img, const GImageWriteOptions *op
     int rc = check_output_impl(path, err);
     if (rc != G_OK)
         return rc;
+    double scale = exp2(exposure);
+    Encoding enc = ENCODE_SRGB;
+    GImage shown = {0, 0, 0, nullptr}; // the pixels through the display transform
+    if (opt && opt->display) {
+        if ((rc = display_pixels(path, img, scale, opt->display, &shown, err)) != G_OK)
+            return rc;
+        img = &shown;
+        scale = 1.0;
+        enc = ENCODE_AS_IS;
+    }
+    struct Release { GImage *g; ~Release() { gmem_free(g->pixels); } } release{&shown};
     auto out = ImageOutput::create(path);
     if (!out)
         return gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, first_line(OIIO::geterror()).c_str());
@@ -480,7 +518,7 @@ int write_impl(const char *path, const GImage *img, const GImageWriteOptions *op
             rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: the %s writer cannot write through a descriptor",
                             path, out->format_name());
         else
-            rc = write_pixels(out.get(), path, file.temp, img, exp2(exposure), float_extension(path), opt, err);
+            rc = write_pixels(out.get(), path, file.temp, img, scale, float_extension(path), enc, opt, err);
         out.reset(); // before the proxy goes
         if (rc == G_OK && by_name)
             rc = verify_written(path, file.temp, img, err);
@@ -583,5 +621,6 @@ extern "C" __attribute__((visibility("default"))) int generic_oiio_module(unsign
     ops->image_write = image_write;
     ops->image_check_output = check_output_impl;
     goiio_texsys_ops(ops);
+    goiio_display_ops(ops);
     return 0;
 }

@@ -195,6 +195,15 @@ int gimage_check_output(const char *path, GError *err)
     return G_OK;
 }
 
+/* Whether path's extension is one of the linear float formats (.exr, .hdr, .pfm: image.h). */
+static int gimage_float_path(const char *path)
+{
+    const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
+    if (!dot || (slash && dot < slash))
+        return 0;
+    return !strcasecmp(dot, ".exr") || !strcasecmp(dot, ".hdr") || !strcasecmp(dot, ".pfm");
+}
+
 /* The spectra to write beside img: G_OK, or G_ERR_INVALID naming what is wrong. */
 static int check_spectra(const char *path, const GImageSpectra *sp, GError *err)
 {
@@ -223,6 +232,20 @@ int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *
     int rc0 = opt && opt->spectra ? check_spectra(path, opt->spectra, err) : G_OK;
     if (rc0 != G_OK)
         return rc0;
+    const GImageDisplay *shown = opt ? opt->display : NULL;
+    if (shown && (img->channels < 3 || gimage_float_path(path)))
+        return gerror_set(err, G_ERR_INVALID, "%s: a display transform is for 8-bit formats of RGB images; %s",
+                          path, img->channels < 3 ? "this image has fewer channels" : "this format stores linear floats");
+    if (shown) { /* through OpenImageIO and OpenColorIO, PNG too, with the config found here */
+        char config[PATH_MAX + 64];
+        if ((rc0 = gimage_display_check(shown, config, sizeof config, err)) != G_OK)
+            return rc0;
+        GImageDisplay resolved = {config, shown->display, shown->view};
+        GImageWriteOptions o2 = *opt;
+        o2.display = &resolved;
+        const GOiioOps *o = goiio_ops(err);
+        return o ? o->image_write(path, img, &o2, err) : G_ERR_IO;
+    }
     if (gimage_png_path(path)) {
         if (opt && opt->spectra)
             return gerror_set(err, G_ERR_INVALID, "%s: only OpenEXR files store spectra, not PNG files", path);

@@ -76,6 +76,19 @@ typedef struct GImageSpectra {
 /** The most wavelengths a GImageSpectra may have. */
 #define GIMAGE_MAX_WAVELENGTHS 4096
 
+/** A display transform through OpenColorIO 2 for 8-bit output, instead of the sRGB encoding: the view `view` of
+ * the display `display` of an OCIO config, applied to the linear pixels (the config's scene_linear role) after
+ * the exposure; the result is clamped to [0, 1] and quantised as it is. The config: `config` when given, else
+ * the file named by $OCIO, else the one libgeneric ships (share/ocio/config.ocio, installed as
+ * PREFIX/share/generic/ocio/config.ocio: linear Rec.709 scene, display sRGB with the views Standard (the sRGB
+ * transfer function, the default), Log and Raw). OpenColorIO comes with the OpenImageIO module: it is loaded
+ * only when a display transform is used. */
+typedef struct GImageDisplay {
+    const char *config;  /**< path of an OCIO config; NULL: $OCIO, else the shipped one */
+    const char *display; /**< NULL: the config's default display */
+    const char *view;    /**< NULL: the display's default view */
+} GImageDisplay;
+
 /** Options for gimage_write; NULL or a zeroed struct means exposure 0. */
 typedef struct GImageWriteOptions {
     double exposure; /**< in stops: colour channels are multiplied by 2^exposure before encoding (all formats) */
@@ -86,6 +99,9 @@ typedef struct GImageWriteOptions {
     /** Spectra to store beside the colour channels (NULL: none). Only OpenEXR stores them: a write to another
      * format with spectra is G_ERR_INVALID, before anything is written. */
     const GImageSpectra *spectra;
+    /** A display transform instead of the sRGB encoding (NULL: none). Only for 8-bit formats of RGB or RGBA
+     * images: with a float format (.exr, .hdr) or fewer channels it is G_ERR_INVALID. */
+    const GImageDisplay *display;
 } GImageWriteOptions;
 
 /** Allocates a black image of the given size (channels 1..4); G_ERR_INVALID for bad sizes,
@@ -132,6 +148,14 @@ GENERIC_API GENERIC_NODISCARD int gimage_check_output(const char *path, GError *
  * (scripts/gen_image_writers.cpp), so that a program can list them without loading OpenImageIO. Case is ignored
  * when a path's extension is matched against them. A static string. */
 GENERIC_API const char *gimage_write_extensions(void);
+
+/** Checks a display transform before any work: finds its config (see GImageDisplay; writes the path used into
+ * config_used, of size bytes, when not NULL), reads it and checks that it has the display and the view. G_OK;
+ * G_ERR_IO when no config is found or OpenColorIO cannot be loaded, G_ERR_PARSE when the config does not read
+ * (OpenColorIO's reason), G_ERR_NOTFOUND for an unknown display or view (the message lists the config's
+ * displays, or the display's views). */
+GENERIC_API GENERIC_NODISCARD int gimage_display_check(const GImageDisplay *d, char *config_used, size_t size,
+                                                       GError *err);
 
 /** The sRGB transfer function (IEC 61966-2-1): linear value in [0, 1] to its encoded value. */
 GENERIC_API double gimage_srgb_encode(double linear);
