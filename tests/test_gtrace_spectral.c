@@ -35,12 +35,6 @@ static int teardown(void **state)
     return tu_rmtree(dir);
 }
 
-static const char *in_dir(const char *name, char *buf, size_t n)
-{
-    snprintf(buf, n, "%s/%s", dir, name);
-    return buf;
-}
-
 /* Runs gtrace with args (the scene file is relative to GENERIC_SOURCE_DIR); its exit status, output in log. */
 static int run_gtrace(const char *args, char *log, size_t n)
 {
@@ -193,7 +187,7 @@ static double check_layout(const Exr *e, const char *model)
 static void render_and_check(const char *model, double tol)
 {
     char out[256], args[1024], log[4096];
-    in_dir(model, out, sizeof out);
+    tu_in_dir(dir, model, out, sizeof out);
     strcat(out, ".exr");
     snprintf(args, sizeof args,
              "examples/scenes/cornell.scene --colormodel %s --width 24 --spp 2 --threads 2 --spectral -o '%s'", model,
@@ -223,8 +217,8 @@ static void test_crop(void **state)
 {
     (void)state;
     char full[256], crop[256], args[1024], log[4096];
-    in_dir("full.exr", full, sizeof full);
-    in_dir("crop.exr", crop, sizeof crop);
+    tu_in_dir(dir, "full.exr", full, sizeof full);
+    tu_in_dir(dir, "crop.exr", crop, sizeof crop);
     const char *common = "examples/scenes/cornell.scene --colormodel spectrum --width 24 --spp 2 --spectral";
     snprintf(args, sizeof args, "%s -o '%s'", common, full);
     assert_int_equal(run_gtrace(args, log, sizeof log), 0);
@@ -257,17 +251,17 @@ static void test_refusals(void **state)
 {
     (void)state;
     char out[256], args[1024], log[4096];
-    in_dir("refused.exr", out, sizeof out);
+    tu_in_dir(dir, "refused.exr", out, sizeof out);
     snprintf(args, sizeof args, "examples/scenes/cornell.scene --colormodel rgb --width 8 --spectral -o '%s'", out);
     assert_int_equal(run_gtrace(args, log, sizeof log), 1);
     assert_non_null(strstr(log, "has no wavelength samples"));
     assert_int_equal(access(out, F_OK), -1);
-    in_dir("refused.png", out, sizeof out);
+    tu_in_dir(dir, "refused.png", out, sizeof out);
     snprintf(args, sizeof args, "examples/scenes/cornell.scene --width 8 --spectral -o '%s'", out);
     assert_int_equal(run_gtrace(args, log, sizeof log), 2);
     assert_non_null(strstr(log, "must end in .exr"));
     assert_int_equal(access(out, F_OK), -1);
-    in_dir("huge.exr", out, sizeof out);
+    tu_in_dir(dir, "huge.exr", out, sizeof out);
     snprintf(args, sizeof args,
              "examples/scenes/cornell.scene --colormodel spectrum --width 65536 --height 65536 --spectral -o '%s'", out);
     assert_int_equal(run_gtrace(args, log, sizeof log), 1);

@@ -31,12 +31,6 @@ static int teardown(void **state)
     return tu_rmtree(dir);
 }
 
-static const char *in_dir(const char *name, char *buf, size_t n)
-{
-    snprintf(buf, n, "%s/%s", dir, name);
-    return buf;
-}
-
 /* A 64x4 RGB ramp: row 0 from -0.1 to 1.5 in every channel, row 1 the same in red only, rows 2 and 3 the powers of
  * two 2^-10..2^6 (the Log view's range and beyond). */
 static void ramp(GImage *img)
@@ -60,7 +54,7 @@ static void write_read(const GImage *img, const char *name, const GImageDisplay 
     char path[256];
     GError err;
     GImageWriteOptions opt = {.display = d};
-    if (gimage_write(in_dir(name, path, sizeof path), img, &opt, &err) != G_OK)
+    if (gimage_write(tu_in_dir(dir, name, path, sizeof path), img, &opt, &err) != G_OK)
         fail_msg("%s: %s", name, err.message);
     assert_int_equal(gimage_read(path, GIMAGE_READ_RAW | GIMAGE_READ_RGB, back, &err), G_OK);
     assert_int_equal(back->width, img->width);
@@ -110,8 +104,8 @@ static void test_views(void **state)
     assert_int_equal(gimage_create(&grey, 2, 2, 1, &err), G_OK);
     char path[256];
     GImageWriteOptions opt = {.display = &standard};
-    assert_int_equal(gimage_write(in_dir("grey.png", path, sizeof path), &grey, &opt, &err), G_ERR_INVALID);
-    assert_int_equal(gimage_write(in_dir("float.exr", path, sizeof path), &img, &opt, &err), G_ERR_INVALID);
+    assert_int_equal(gimage_write(tu_in_dir(dir, "grey.png", path, sizeof path), &grey, &opt, &err), G_ERR_INVALID);
+    assert_int_equal(gimage_write(tu_in_dir(dir, "float.exr", path, sizeof path), &img, &opt, &err), G_ERR_INVALID);
     assert_int_equal(access(path, F_OK), -1);
     gimage_free(&grey);
     gimage_free(&img);
@@ -135,7 +129,7 @@ static void test_bad_names_and_configs(void **state)
     assert_int_equal(gimage_display_check(&d, NULL, 0, &err), G_ERR_NOTFOUND);
     assert_non_null(strstr(err.message, "its displays: sRGB"));
     char bad[256];
-    assert_int_equal(tu_write_file(in_dir("bad.ocio", bad, sizeof bad), "ocio_profile_version: 2\nroles: [\n"), 0);
+    assert_int_equal(tu_write_file(tu_in_dir(dir, "bad.ocio", bad, sizeof bad), "ocio_profile_version: 2\nroles: [\n"), 0);
     const char *broken[] = {"ocio_profile_version: 2\nroles: [\n", "ocio_profile_version: 7\n",
                             "ocio_profile_version: 2\ndisplays:\n  sRGB:\n    - !<View> {name: X, colorspace: nowhere}\n",
                             ""};
@@ -148,7 +142,7 @@ static void test_bad_names_and_configs(void **state)
         assert_non_null(strstr(err.message, bad));
     }
     char fifo[256];
-    assert_int_equal(mkfifo(in_dir("fifo.ocio", fifo, sizeof fifo), 0600), 0);
+    assert_int_equal(mkfifo(tu_in_dir(dir, "fifo.ocio", fifo, sizeof fifo), 0600), 0);
     d = (GImageDisplay){.config = fifo};
     assert_int_equal(gimage_display_check(&d, NULL, 0, &err), G_ERR_IO);
     d = (GImageDisplay){.config = "/nonexistent/config.ocio"};
@@ -163,7 +157,7 @@ static void test_bad_names_and_configs(void **state)
     ramp(&img);
     char out[256];
     GImageWriteOptions opt = {.display = &d};
-    assert_int_equal(gimage_write(in_dir("never.png", out, sizeof out), &img, &opt, &err), G_ERR_IO);
+    assert_int_equal(gimage_write(tu_in_dir(dir, "never.png", out, sizeof out), &img, &opt, &err), G_ERR_IO);
     assert_int_equal(access(out, F_OK), -1);
     gimage_free(&img);
 }
@@ -178,10 +172,10 @@ static void test_gtrace(void **state)
     if (access(gtrace, X_OK) != 0)
         skip();
     const char *scene = "examples/scenes/demo.scene --width 80 --spp 1 -q";
-    snprintf(args, sizeof args, "%s/%s -o %s", src ? src : ".", scene, in_dir("plain.png", a, sizeof a));
+    snprintf(args, sizeof args, "%s/%s -o %s", src ? src : ".", scene, tu_in_dir(dir, "plain.png", a, sizeof a));
     assert_int_equal(tu_run_capture(gtrace, args, log, sizeof log), 0);
     snprintf(args, sizeof args, "%s/%s -o %s --display sRGB --view Standard", src ? src : ".", scene,
-             in_dir("standard.png", c, sizeof c));
+             tu_in_dir(dir, "standard.png", c, sizeof c));
     assert_int_equal(tu_run_capture(gtrace, args, log, sizeof log), 0);
     GImage p, s;
     GError err;
