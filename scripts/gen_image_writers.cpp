@@ -2,7 +2,7 @@
 // file extensions this OpenImageIO actually writes. For every format of OpenImageIO's "extension_list" that has
 // a writer, a 2x2 RGB image is written to a scratch directory under each of the format's extensions and read
 // back; only the extensions whose file is written and reads back are listed. Formats that are no files
-// ("null", "term": the terminal) are left out. Built against OpenImageIO so that the tools' --help can print the
+// ("null", "term": the terminal) are left out, and so is a writer known to read past the pixels it is given. Built against OpenImageIO so that the tools' --help can print the
 // list without loading it (docs/ARCHITECTURE.md, the OpenImageIO module). Usage: gen_image_writers OUT.c
 #include <OpenImageIO/imageio.h>
 
@@ -58,7 +58,9 @@ int main(int argc, char **argv)
         if (colon == std::string::npos)
             continue;
         std::string format = entry.substr(0, colon);
-        if (format == "null" || format == "term")
+        // OpenImageIO 2.4's HEIF writer (.heic, .avif) copies whole padded rows, past the end of the caller's
+        // pixels (AddressSanitizer: HeifOutput::write_scanline reads 192 bytes of a 45-byte 5x3 image): not offered.
+        if (format == "null" || format == "term" || format == "heif") // heif: seen in 2.4.7; check newer ones
             continue;
         std::string rest = entry.substr(colon + 1);
         size_t p = 0;

@@ -2,7 +2,7 @@
  * libgeneric ships (share/ocio/config.ocio): its Standard view writes what the default sRGB path writes within
  * 1/255, Raw the linear values clamped, Log its 12 stops; unknown displays and views are refused naming the valid
  * ones, broken, missing and non-regular config files cleanly; and gtrace --display sRGB --view Standard renders
- * the default PNG within 1/255. */
+ * the default PNG within 1/255 (the Cornell box). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -171,12 +171,19 @@ static void test_gtrace(void **state)
     snprintf(gtrace, sizeof gtrace, "%s/bin/gtrace", b ? b : "build");
     if (access(gtrace, X_OK) != 0)
         skip();
-    const char *scene = "examples/scenes/demo.scene --width 80 --spp 1 -q";
+    /* not demo.scene: started from this (sanitized) test, the sanitized gtrace rendering it crashes in
+     * LeakSanitizer's tracer at exit (from a shell it does not) */
+    const char *scene = "examples/scenes/cornell.scene --width 48 --spp 1 -q";
     snprintf(args, sizeof args, "%s/%s -o %s", src ? src : ".", scene, tu_in_dir(dir, "plain.png", a, sizeof a));
-    assert_int_equal(tu_run_capture(gtrace, args, log, sizeof log), 0);
+    if (tu_run_capture(gtrace, args, log, sizeof log) != 0)
+        fail_msg("gtrace %s: %s", args, log);
     snprintf(args, sizeof args, "%s/%s -o %s --display sRGB --view Standard", src ? src : ".", scene,
              tu_in_dir(dir, "standard.png", c, sizeof c));
-    assert_int_equal(tu_run_capture(gtrace, args, log, sizeof log), 0);
+    if (tu_run_capture(gtrace, args, log, sizeof log) != 0)
+        fail_msg("gtrace %s: %s", args, log);
+    snprintf(args, sizeof args, "%s/%s -o %s --view Filmic", src ? src : ".", scene, c);
+    assert_int_equal(tu_run_capture(gtrace, args, log, sizeof log), 2);
+    assert_non_null(strstr(log, "its views: Standard, Log, Raw"));
     GImage p, s;
     GError err;
     assert_int_equal(gimage_read(a, GIMAGE_READ_RAW | GIMAGE_READ_RGB, &p, &err), G_OK);
@@ -192,9 +199,6 @@ static void test_gtrace(void **state)
     assert_true(d <= 1.0 / 255.0 + 1e-6);
     gimage_free(&p);
     gimage_free(&s);
-    snprintf(args, sizeof args, "%s/%s -o %s --view Filmic", src ? src : ".", scene, c);
-    assert_int_equal(tu_run_capture(gtrace, args, log, sizeof log), 2);
-    assert_non_null(strstr(log, "its views: Standard, Log, Raw"));
 }
 
 int main(void)
