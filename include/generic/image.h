@@ -16,8 +16,11 @@
  *   .pfm                                linear float where OpenImageIO has a PFM writer (Debian 12's 2.4
  *                                       has none: the write fails with G_ERR_IO and writes nothing);
  *   anything else (.png .jpg .jpeg .tif .tiff .bmp .tga ...)
- *                                       8 bits per channel, sRGB encoded after the exposure, clamped
- *                                       to [0, 1] (alpha is clamped, not encoded).
+ *                                       8 bits per channel, sRGB encoded after the exposure (or through an
+ *                                       OpenColorIO display transform, GImageDisplay), clamped to [0, 1]
+ *                                       (alpha is clamped, not encoded).
+ * Only the extensions of gimage_write_extensions() are written (found when the library was built); OpenEXR
+ * files may carry spectra beside the colour channels (GImageSpectra).
  * A write goes to a temporary file in the destination's directory (generic/file.h) which is renamed over the
  * destination only when it is complete and on the disk: every failed write (a full disk, an I/O error), a
  * failed flush and a size that differs from what was written are errors, and leave no partial file behind and
