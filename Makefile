@@ -41,14 +41,19 @@ CXXFLAGS += -std=c++17 $(OPT) -g -fPIC $(WARN) $(SANFLAGS) $(VISIBILITY) -fvisib
 # which the library dlopens on the first image read or write other than PNG output (lib/oiio_module.h); PNG
 # output goes through libpng.
 DEPLIBS := -lpng -fopenmp -ldl -lpthread -lm
-OIIO_LIBS := $(shell pkg-config --libs OpenImageIO 2>/dev/null) -lstdc++
+# OpenColorIO (display transforms, lib/ocio_display.cpp) is part of the module: OpenImageIO links it already.
+OIIO_LIBS := $(shell pkg-config --libs OpenImageIO OpenColorIO 2>/dev/null) -lstdc++
 LDFLAGS += $(SANFLAGS)
 
 LIB_SRC := $(foreach d,lib lib/kit lib/probe colormodels materials materials/* textures,$(sort $(wildcard $(d)/*.c)))
 LIB_CXX := $(wildcard lib/*.cpp)
 # The list of built-in types (include/generic/builtins.h), generated from the GENERIC_TYPE records of LIB_SRC.
 GEN_BUILTINS = $(1)/gen/builtin_types.c
-LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/gen/builtin_types.o
+# The extensions OpenImageIO writes (gimage_write_extensions, generic/image.h), found at build time by a small
+# program built against OpenImageIO, so that --help lists them without loading it.
+GEN_WRITERS = $(1)/gen/image_writers.c
+WRITERS_TOOL := $(BUILD)/gen/gen_image_writers
+LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/gen/builtin_types.o $(BUILD)/obj/gen/image_writers.o
 LIBA    := $(BUILD)/lib/libgeneric.a
 LIBSO   := $(BUILD)/lib/libgeneric.so.$(SOVER)
 # The OpenImageIO module, found beside libgeneric.so (lib/generic/) or the program (../lib/generic/).
@@ -56,6 +61,10 @@ OIIO_OBJ := $(LIB_CXX:%.cpp=$(BUILD)/obj/%.o)
 OIIO_SO  := $(BUILD)/lib/generic/libgeneric_oiio.so
 # Where `make install` puts the module: the loader's last resort when it is not beside the library.
 $(BUILD)/obj/lib/oiio_loader.o: CPPFLAGS += -DGENERIC_LIBDIR='"$(PREFIX)/lib"'
+# Where `make install` puts the shipped OpenColorIO config (share/ocio/config.ocio); the build tree has it in
+# $(BUILD)/share/generic/ocio/, found beside the programs the same way (lib/image_display.c).
+$(BUILD)/obj/lib/image_display.o: CPPFLAGS += -DGENERIC_DATADIR='"$(PREFIX)/share"'
+OCIO_CONFIG := $(BUILD)/share/generic/ocio/config.ocio
 # Where `make install` puts the example plug-ins: the last directory searched for a bare module name (lib/plugin.c).
 PLUGIN_DIR := $(PREFIX)/lib/generic/plugins
 $(BUILD)/obj/lib/plugin.o: CPPFLAGS += -DGENERIC_PLUGIN_DIR='"$(PLUGIN_DIR)"'
@@ -71,7 +80,7 @@ TESTLIBS := $(shell pkg-config --libs cmocka 2>/dev/null)
 .PHONY: all lib tools tests test demo bench install clean deps
 all: lib tools tests
 
-lib: $(LIBA) $(LIBSO) $(OIIO_SO)
+lib: $(LIBA) $(LIBSO) $(OIIO_SO) $(OCIO_CONFIG)
 tools: $(TOOL_BIN)
 tests: $(TEST_BIN)
 
@@ -85,6 +94,15 @@ $(BUILD)/obj/%.o: %.c
 $(call GEN_BUILTINS,$(BUILD)) $(call GEN_BUILTINS,build/fuzz): $(LIB_SRC) scripts/gen_builtins.sh
 	@mkdir -p $(dir $@)
 	@scripts/gen_builtins.sh $@ $(LIB_SRC)
+
+# built without the sanitizers: it runs at build time, and OpenImageIO's own leaks are no concern there
+$(WRITERS_TOOL): scripts/gen_image_writers.cpp
+	@mkdir -p $(dir $@)
+	$(CXX) -std=c++17 -O1 $(shell pkg-config --cflags OpenImageIO 2>/dev/null) $< -o $@ $(OIIO_LIBS)
+
+$(call GEN_WRITERS,$(BUILD)) $(call GEN_WRITERS,build/fuzz): $(WRITERS_TOOL)
+	@mkdir -p $(dir $@)
+	$(WRITERS_TOOL) $@
 
 $(BUILD)/obj/gen/%.o: $(BUILD)/gen/%.c
 	@mkdir -p $(dir $@)
@@ -105,6 +123,10 @@ $(LIBSO): $(LIB_OBJ) lib/libgeneric.map
 	    $(LDFLAGS) $(DEPLIBS)
 	ln -sf libgeneric.so.$(SOVER) $(BUILD)/lib/libgeneric.so
 
+$(OCIO_CONFIG): share/ocio/config.ocio
+	@mkdir -p $(dir $@)
+	cp $< $@
+
 # Linked with OpenImageIO only (-z defs: every symbol it uses resolves there; the library's functions come in the
 # host table), exporting its one entry.
 $(OIIO_SO): $(OIIO_OBJ) lib/oiio_module.map
@@ -114,11 +136,11 @@ $(OIIO_SO): $(OIIO_OBJ) lib/oiio_module.map
 # Tools and tests link the static library so they run from the build tree without LD_LIBRARY_PATH;
 # -rdynamic lets plug-ins resolve the library's symbols from the executable.
 .SECONDEXPANSION:
-$(BUILD)/bin/%: $$(addsuffix .o,$$(addprefix $(BUILD)/obj/,$$(basename $$(wildcard examples/$$*/*.c)))) $(LIBA) | $(OIIO_SO)
+$(BUILD)/bin/%: $$(addsuffix .o,$$(addprefix $(BUILD)/obj/,$$(basename $$(wildcard examples/$$*/*.c)))) $(LIBA) | $(OIIO_SO) $(OCIO_CONFIG)
 	@mkdir -p $(dir $@)
 	$(CC) -rdynamic -o $@ $(filter %.o,$^) -Wl,--whole-archive $(LIBA) -Wl,--no-whole-archive $(LDFLAGS) $(EXTRA_LIBS_$*) $(DEPLIBS)
 
-$(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(LIBA) | $(OIIO_SO)
+$(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(LIBA) | $(OIIO_SO) $(OCIO_CONFIG)
 	@mkdir -p $(dir $@)
 	$(CC) -rdynamic -o $@ $< -Wl,--whole-archive $(LIBA) -Wl,--no-whole-archive $(LDFLAGS) $(TESTLIBS) $(DEPLIBS)
 
@@ -147,7 +169,7 @@ bench: deps
 	@$(MAKE) --no-print-directory all $(BENCH_BIN)
 	@for b in $(BENCH_BIN); do echo "== $$b"; $$b || exit 1; done
 
-# install: headers, both libraries, the OpenImageIO module, generic.pc, the tools (bin/), the example plug-ins
+# install: headers, both libraries, the OpenImageIO module, the OpenColorIO config, generic.pc, the tools (bin/), the example plug-ins
 # (PLUGIN_DIR) and, when help2man is installed, a man page per tool made from its --help and --version.
 # uninstall removes exactly these files, and the directories that are libgeneric's own once they are empty.
 INST := $(DESTDIR)$(PREFIX)
@@ -166,6 +188,8 @@ install: lib tools $(EXAMPLE_PLUGIN_SO)
 	install -m 755 $(LIBSO) $(INST)/lib/
 	install -d $(INST)/lib/generic
 	install -m 755 $(OIIO_SO) $(INST)/lib/generic/
+	install -d $(INST)/share/generic/ocio
+	install -m 644 share/ocio/config.ocio $(INST)/share/generic/ocio/
 	ln -sf libgeneric.so.$(SOVER) $(INST)/lib/libgeneric.so
 	sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|' generic.pc.in > $(INST)/lib/pkgconfig/generic.pc
 	install -m 755 $(TOOL_BIN) $(INST)/bin/
@@ -181,9 +205,11 @@ uninstall:
 	rm -f $(addprefix $(INST)/include/generic/,$(notdir $(wildcard include/generic/*.h)))
 	rm -f $(INST)/lib/libgeneric.a $(INST)/lib/libgeneric.so $(INST)/lib/libgeneric.so.$(SOVER)
 	rm -f $(INST)/lib/generic/$(notdir $(OIIO_SO)) $(INST)/lib/pkgconfig/generic.pc
+	rm -f $(INST)/share/generic/ocio/config.ocio
 	rm -f $(addprefix $(INST)/bin/,$(TOOLS)) $(addprefix $(DESTDIR)$(MAN_DIR)/,$(TOOLS:=.1))
 	rm -f $(addprefix $(DESTDIR)$(PLUGIN_DIR)/,$(notdir $(EXAMPLE_PLUGIN_SO)))
 	rmdir $(INST)/include/generic $(DESTDIR)$(PLUGIN_DIR) $(INST)/lib/generic 2>/dev/null || true
+	rmdir $(INST)/share/generic/ocio $(INST)/share/generic 2>/dev/null || true
 
 clean:
 	rm -rf build
@@ -312,13 +338,14 @@ FUZZ_CPPFLAGS := -Iinclude -Ilib -I. -D_GNU_SOURCE -DGENERIC_OIIO_STATIC -MMD -M
 FUZZ_CFLAGS   := -std=c11 -O1 -g -Wall -Wextra -Wno-unknown-pragmas $(FUZZ_SAN) -fsanitize=fuzzer-no-link
 FUZZ_CXXFLAGS := -std=c++17 -O1 -g -Wall -Wextra -Wno-unknown-pragmas $(FUZZ_SAN) -fsanitize=fuzzer-no-link \
                  $(shell pkg-config --cflags OpenImageIO 2>/dev/null)
-FUZZ_LIBS     := $(shell pkg-config --libs OpenImageIO 2>/dev/null) -lpng -ldl -lpthread -lm
+FUZZ_LIBS     := $(shell pkg-config --libs OpenImageIO OpenColorIO 2>/dev/null) -lpng -ldl -lpthread -lm
 FUZZ_NAMES    := $(patsubst tests/fuzz/fuzz_%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
 FUZZ_TARGETS  ?= $(FUZZ_NAMES)
 FUZZ_BIN      := $(FUZZ_NAMES:%=$(FUZZ_BUILD)/fuzz_%)
 FUZZ_C_OBJ    := $(LIB_SRC:%.c=$(FUZZ_BUILD)/obj/%.o)
 FUZZ_CXX_OBJ  := $(LIB_CXX:%.cpp=$(FUZZ_BUILD)/obj/%.o)
 FUZZ_GEN_OBJ  := $(FUZZ_BUILD)/obj/gen/builtin_types.o
+FUZZ_WRITERS_OBJ := $(FUZZ_BUILD)/obj/gen/image_writers.o
 FUZZ_LIBA     := $(FUZZ_BUILD)/libgeneric.a
 # What fuzz-seed copies (the examples of each input kind; tests/bad/*.mat are broken on purpose, good seeds too).
 FUZZ_SEED_reader := examples/materials/*.mat examples/textures/*.txt tests/good/*.mat tests/bad/*.mat
@@ -358,11 +385,15 @@ $(FUZZ_GEN_OBJ): $(call GEN_BUILTINS,$(FUZZ_BUILD))
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CPPFLAGS) $(FUZZ_CFLAGS) -c $< -o $@
 
+$(FUZZ_WRITERS_OBJ): $(call GEN_WRITERS,$(FUZZ_BUILD))
+	@mkdir -p $(dir $@)
+	$(FUZZ_CC) $(FUZZ_CPPFLAGS) $(FUZZ_CFLAGS) -c $< -o $@
+
 $(FUZZ_BUILD)/obj/tests/fuzz/%.o: tests/fuzz/%.c
 	@mkdir -p $(dir $@)
 	$(FUZZ_CC) $(FUZZ_CPPFLAGS) $(FUZZ_CFLAGS) -c $< -o $@
 
-$(FUZZ_LIBA): $(FUZZ_C_OBJ) $(FUZZ_CXX_OBJ) $(FUZZ_GEN_OBJ)
+$(FUZZ_LIBA): $(FUZZ_C_OBJ) $(FUZZ_CXX_OBJ) $(FUZZ_GEN_OBJ) $(FUZZ_WRITERS_OBJ)
 	rm -f $@
 	ar rcs $@ $^
 

@@ -296,9 +296,76 @@ private:
     int64_t end_ = 0;
 };
 
-int write_pixels(ImageOutput *out, const char *path, const char *tmp, const GImage *img, double scale,
-                 bool float_out, const GImageWriteOptions *opt, GError *err)
+// The channel name of wavelength nm in the spectral layout (image.h): S0.550,000000nm.
+std::string spectral_channel(double nm)
 {
+    char num[64];
+    snprintf(num, sizeof num, "%.6f", nm);
+    for (char *p = num; *p; p++)
+        if (*p == '.')
+            *p = ',';
+    return std::string("S0.") + num + "nm";
+}
+
+// Writes the colour channels and the spectra (opt->spectra, OpenEXR only) row by row: no second copy of the
+// whole image.
+int write_spectral(ImageOutput *out, const char *path, const char *tmp, const GImage *img, double scale,
+                   const GImageWriteOptions *opt, GError *err)
+{
+    const GImageSpectra *sp = opt->spectra;
+    const int w = img->width, h = img->height, ch = img->channels, n = sp->count, nch = ch + n;
+    ImageSpec spec(w, h, nch, TypeDesc::FLOAT);
+    spec.alpha_channel = ch == 2 || ch == 4 ? ch - 1 : -1;
+    spec.channelnames.resize((size_t)ch);
+    for (int k = 0; k < n; k++)
+        spec.channelnames.push_back(spectral_channel(sp->wavelengths[k]));
+    if (opt->full_width > 0) {
+        spec.x = opt->x;
+        spec.y = opt->y;
+        spec.full_x = spec.full_y = 0;
+        spec.full_width = opt->full_width;
+        spec.full_height = opt->full_height;
+    }
+    spec.attribute("oiio:ColorSpace", "Linear");
+    spec.attribute("spectralLayoutVersion", "1.0");
+    spec.attribute("emissiveUnits", "W.m^-2.sr^-1");
+    float *row = (float *)gmem_alloc((size_t)w * nch * sizeof(float));
+    if (!row)
+        return gerror_set(err, G_ERR_NOMEM, "%s: out of memory encoding a %dx%d image", path, w, h);
+    int rc = G_OK;
+    if (!out->open(tmp, spec))
+        rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, first_line(out->geterror()).c_str());
+    for (int y = 0; y < h && rc == G_OK; y++) {
+        for (int x = 0; x < w; x++) {
+            size_t i = (size_t)y * w + x;
+            float *d = row + (size_t)x * nch;
+            for (int c = 0; c < ch; c++)
+                d[c] = c == spec.alpha_channel ? img->pixels[i * ch + c] : (float)(img->pixels[i * ch + c] * scale);
+            for (int k = 0; k < n; k++)
+                d[ch + k] = (float)(sp->values[i * n + k] * scale);
+        }
+        if (!out->write_scanline(spec.y + y, 0, TypeDesc::FLOAT, row))
+            rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, first_line(out->geterror()).c_str());
+    }
+    if (rc == G_OK && !out->close())
+        rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, first_line(out->geterror()).c_str());
+    gmem_free(row);
+    return rc;
+}
+
+// How the colour channels of 8-bit files are encoded: the sRGB transfer function, or as they are (display
+// values already, from a display transform).
+enum Encoding { ENCODE_SRGB, ENCODE_AS_IS };
+
+int write_pixels(ImageOutput *out, const char *path, const char *tmp, const GImage *img, double scale,
+                 bool float_out, Encoding enc, const GImageWriteOptions *opt, GError *err)
+{
+    if (opt && opt->spectra) {
+        if (strcmp(out->format_name(), "openexr") != 0)
+            return gerror_set(err, G_ERR_INVALID, "%s: only OpenEXR files store spectra, not %s files", path,
+                              out->format_name());
+        return write_spectral(out, path, tmp, img, scale, opt, err);
+    }
     const int w = img->width, h = img->height;
     int ch = img->channels;
     int alpha = (ch == 2 || ch == 4) ? ch - 1 : -1;
@@ -335,7 +402,7 @@ int write_pixels(ImageOutput *out, const char *path, const char *tmp, const GIma
             }
             if (!(v > 0.0)) // also NaN
                 v = 0.0;
-            if (!is_alpha)
+            if (!is_alpha && enc == ENCODE_SRGB)
                 v = gimage_srgb_encode(v);
             if (v > 1.0)
                 v = 1.0;
@@ -394,6 +461,29 @@ int check_output_impl(const char *path, GError *err)
     }
 }
 
+// shown = img's pixels times scale through the display transform d (RGB or RGBA; grey is refused).
+int display_pixels(const char *path, const GImage *img, double scale, const GImageDisplay *d, GImage *shown,
+                   GError *err)
+{
+    if (img->channels != 3 && img->channels != 4)
+        return gerror_set(err, G_ERR_INVALID, "%s: a display transform needs an RGB or RGBA image", path);
+    const size_t n = (size_t)img->width * img->height * img->channels;
+    float *p = (float *)gmem_alloc(n * sizeof(float));
+    if (!p)
+        return gerror_set(err, G_ERR_NOMEM, "%s: out of memory for the display transform", path);
+    for (size_t i = 0; i < n; i++)
+        p[i] = img->channels == 4 && i % 4 == 3 ? img->pixels[i] : (float)(img->pixels[i] * scale);
+    GOiioOps ops;
+    goiio_display_ops(&ops);
+    int rc = ops.display_transform(d->config, d->display, d->view, p, img->width, img->height, img->channels, err);
+    if (rc != G_OK) {
+        gmem_free(p);
+        return rc;
+    }
+    *shown = GImage{img->width, img->height, img->channels, p};
+    return G_OK;
+}
+
 int write_impl(const char *path, const GImage *img, const GImageWriteOptions *opt, GError *err)
 {
     double exposure = opt ? opt->exposure : 0.0;
@@ -402,6 +492,17 @@ int write_impl(const char *path, const GImage *img, const GImageWriteOptions *op
     int rc = check_output_impl(path, err);
     if (rc != G_OK)
         return rc;
+    double scale = exp2(exposure);
+    Encoding enc = ENCODE_SRGB;
+    GImage shown = {0, 0, 0, nullptr}; // the pixels through the display transform
+    if (opt && opt->display) {
+        if ((rc = display_pixels(path, img, scale, opt->display, &shown, err)) != G_OK)
+            return rc;
+        img = &shown;
+        scale = 1.0;
+        enc = ENCODE_AS_IS;
+    }
+    struct Release { GImage *g; ~Release() { gmem_free(g->pixels); } } release{&shown};
     auto out = ImageOutput::create(path);
     if (!out)
         return gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, first_line(OIIO::geterror()).c_str());
@@ -417,7 +518,7 @@ int write_impl(const char *path, const GImage *img, const GImageWriteOptions *op
             rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: the %s writer cannot write through a descriptor",
                             path, out->format_name());
         else
-            rc = write_pixels(out.get(), path, file.temp, img, exp2(exposure), float_extension(path), opt, err);
+            rc = write_pixels(out.get(), path, file.temp, img, scale, float_extension(path), enc, opt, err);
         out.reset(); // before the proxy goes
         if (rc == G_OK && by_name)
             rc = verify_written(path, file.temp, img, err);
@@ -520,5 +621,6 @@ extern "C" __attribute__((visibility("default"))) int generic_oiio_module(unsign
     ops->image_write = image_write;
     ops->image_check_output = check_output_impl;
     goiio_texsys_ops(ops);
+    goiio_display_ops(ops);
     return 0;
 }

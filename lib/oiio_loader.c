@@ -18,6 +18,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <unistd.h>
 
 #ifndef GENERIC_LIBDIR
@@ -164,14 +165,57 @@ int gimage_info(const char *path, int *width, int *height, int *channels, GError
     return o ? o->image_info(path, width, height, channels, err) : G_ERR_IO;
 }
 
+/* 1 when the extension ext (with its dot) is one of gimage_write_extensions(), ignoring case. */
+static int listed_extension(const char *ext)
+{
+    size_t n = strlen(ext);
+    for (const char *p = gimage_write_extensions(); *p;) {
+        size_t len = strcspn(p, " ");
+        if (len == n && strncasecmp(p, ext, n) == 0)
+            return 1;
+        p += len;
+        p += *p == ' ';
+    }
+    return 0;
+}
+
 int gimage_check_output(const char *path, GError *err)
 {
     if (!path || !*path)
         return gerror_set(err, G_ERR_INVALID, "no image file name given");
-    if (gimage_png_path(path))
-        return gfile_check_output(path, err);
-    const GOiioOps *o = goiio_ops(err);
-    return o ? o->image_check_output(path, err) : G_ERR_IO;
+    int rc = gfile_check_output(path, err);
+    if (rc != G_OK || gimage_png_path(path))
+        return rc;
+    const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
+    if (!dot || (slash && dot < slash))
+        return gerror_set(err, G_ERR_IO, "%s: cannot write image: no extension to choose the format by", path);
+    if (!listed_extension(dot))
+        return gerror_set(err, G_ERR_IO, "%s: cannot write image: this OpenImageIO has no writer for '%s' files (it "
+                          "writes %s)", path, dot, gimage_write_extensions());
+    return G_OK;
+}
+
+/* Whether path's extension is one of the linear float formats (.exr, .hdr, .pfm: image.h). */
+static int gimage_float_path(const char *path)
+{
+    const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
+    if (!dot || (slash && dot < slash))
+        return 0;
+    return !strcasecmp(dot, ".exr") || !strcasecmp(dot, ".hdr") || !strcasecmp(dot, ".pfm");
+}
+
+/* The spectra to write beside img: G_OK, or G_ERR_INVALID naming what is wrong. */
+static int check_spectra(const char *path, const GImageSpectra *sp, GError *err)
+{
+    if (sp->count < 1 || sp->count > GIMAGE_MAX_WAVELENGTHS || !sp->wavelengths || !sp->values)
+        return gerror_set(err, G_ERR_INVALID, "%s: spectra need 1..%d wavelengths and their values (got %d)", path,
+                          GIMAGE_MAX_WAVELENGTHS, sp->count);
+    for (int k = 0; k < sp->count; k++)
+        if (!isfinite(sp->wavelengths[k]) || !(sp->wavelengths[k] > 0.0) ||
+            (k > 0 && !(sp->wavelengths[k] > sp->wavelengths[k - 1])))
+            return gerror_set(err, G_ERR_INVALID, "%s: the spectra's wavelengths must be positive and increasing",
+                              path);
+    return G_OK;
 }
 
 int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *opt, GError *err)
@@ -185,7 +229,26 @@ int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *
          (long long)opt->y + img->height > opt->full_height))
         return gerror_set(err, G_ERR_INVALID, "%s: the %dx%d image at %d,%d does not lie inside the %dx%d full image",
                           path, img->width, img->height, opt->x, opt->y, opt->full_width, opt->full_height);
+    int rc0 = opt && opt->spectra ? check_spectra(path, opt->spectra, err) : G_OK;
+    if (rc0 != G_OK)
+        return rc0;
+    const GImageDisplay *shown = opt ? opt->display : NULL;
+    if (shown && (img->channels < 3 || gimage_float_path(path)))
+        return gerror_set(err, G_ERR_INVALID, "%s: a display transform is for 8-bit formats of RGB images; %s",
+                          path, img->channels < 3 ? "this image has fewer channels" : "this format stores linear floats");
+    if (shown) { /* through OpenImageIO and OpenColorIO, PNG too, with the config found here */
+        char config[PATH_MAX + 64];
+        if ((rc0 = gimage_display_check(shown, config, sizeof config, err)) != G_OK)
+            return rc0;
+        GImageDisplay resolved = {config, shown->display, shown->view};
+        GImageWriteOptions o2 = *opt;
+        o2.display = &resolved;
+        const GOiioOps *o = goiio_ops(err);
+        return o ? o->image_write(path, img, &o2, err) : G_ERR_IO;
+    }
     if (gimage_png_path(path)) {
+        if (opt && opt->spectra)
+            return gerror_set(err, G_ERR_INVALID, "%s: only OpenEXR files store spectra, not PNG files", path);
         double exposure = opt ? opt->exposure : 0.0;
         if (!isfinite(exposure))
             return gerror_set(err, G_ERR_INVALID, "%s: exposure must be finite", path);

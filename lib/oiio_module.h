@@ -19,7 +19,7 @@ extern "C" {
 #endif
 
 /** Raised whenever either table changes; a module of another version is refused. */
-#define GOIIO_MODULE_ABI 1
+#define GOIIO_MODULE_ABI 2
 /** The module's file name and the one symbol it exports (a GOiioEntry). */
 #define GOIIO_MODULE_FILE "libgeneric_oiio.so"
 #define GOIIO_MODULE_ENTRY "generic_oiio_module"
@@ -54,6 +54,12 @@ typedef struct GOiioOps {
     int (*texsys_open)(GTextureSystem *ts, const char *path, GTexFile **file, int *channels, int *srgb, GError *err);
     int (*texsys_lookup)(GTextureSystem *ts, GTexFile *file, GTexWrap swrap, GTexWrap twrap, double s, double t,
                          const double deriv[4], double blur, float rgb[3]);
+    /** OpenColorIO (lib/ocio_display.cpp): applies the view of a display of the config file (NULL or "": the
+     * config's defaults) to width x height pixels of 3 or 4 floats in place, from the config's scene_linear;
+     * pixels NULL only checks that the config reads and has the display and view. G_ERR_PARSE for a config that
+     * does not read, G_ERR_NOTFOUND for an unknown display or view (the message lists the config's names). */
+    int (*display_transform)(const char *config, const char *display, const char *view, float *pixels, int width,
+                             int height, int channels, GError *err);
 } GOiioOps;
 
 /** The module's entry: checks abi, keeps host (it outlives the module), fills ops. 0, or -1 for another ABI. */
@@ -82,8 +88,9 @@ extern const GOiioHost *goiio_host;
 #define gimage_memory_budget() (goiio_host->image_memory_budget())
 #define gimage_srgb_encode(v) (goiio_host->srgb_encode(v))
 #define gimage_srgb_decode(v) (goiio_host->srgb_decode(v))
-/* texture_oiio.cpp's part of the table, and image.cpp's header check which it uses */
+/* texture_oiio.cpp's and ocio_display.cpp's parts of the table, and image.cpp's header check which the first uses */
 void goiio_texsys_ops(GOiioOps *ops);
+void goiio_display_ops(GOiioOps *ops);
 int goiio_image_info(const char *path, int *width, int *height, int *channels, GError *err);
 #endif
 

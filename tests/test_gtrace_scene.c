@@ -415,7 +415,7 @@ static void test_output_roundtrip(void **state)
     snprintf(bad, sizeof bad, "/tmp/gtrace_test_%d.unknownformat", (int)getpid());
     snprintf(missing, sizeof missing, "/tmp/gtrace_no_such_dir_%d/out.png", (int)getpid());
     GError err;
-    assert_int_equal(output_write(exr, &fb, 2.0, &err), G_OK); /* exposure is for display formats only */
+    assert_int_equal(output_write(exr, &fb, 2.0, NULL, &err), G_OK); /* exposure is for display formats only */
     GImage img;
     assert_int_equal(gimage_read(exr, GIMAGE_READ_RGB, &img, &err), G_OK);
     assert_int_equal(img.width, 5);
@@ -423,7 +423,7 @@ static void test_output_roundtrip(void **state)
     for (int i = 0; i < 5 * 4 * 3; i++)
         assert_true(img.pixels[i] == fb.pixels[i]);
     gimage_free(&img);
-    assert_int_equal(output_write(png, &fb, 1.0, &err), G_OK);
+    assert_int_equal(output_write(png, &fb, 1.0, NULL, &err), G_OK);
     assert_int_equal(gimage_read(png, GIMAGE_READ_RAW | GIMAGE_READ_RGB, &img, &err), G_OK);
     for (int i = 0; i < 5 * 4 * 3; i++) {
         double v = fmin(1.0, fmax(0.0, 2.0 * fb.pixels[i]));
@@ -431,9 +431,9 @@ static void test_output_roundtrip(void **state)
     }
     gimage_free(&img);
     /* failures leave no file */
-    assert_int_not_equal(output_write(bad, &fb, 0.0, &err), G_OK);
+    assert_int_not_equal(output_write(bad, &fb, 0.0, NULL, &err), G_OK);
     assert_int_not_equal(access(bad, F_OK), 0);
-    assert_int_not_equal(output_write(missing, &fb, 0.0, &err), G_OK);
+    assert_int_not_equal(output_write(missing, &fb, 0.0, NULL, &err), G_OK);
     assert_int_not_equal(access(missing, F_OK), 0);
     unlink(exr);
     unlink(png);
@@ -464,8 +464,9 @@ static void test_sources_are_model_free(void **state)
     }
     closedir(dir);
     assert_true(nfiles >= 13);
-    /* allowed spellings: the XYZ -> display conversion and the name of the display encoding */
-    const char *allowed[] = {"gcie_xyz_to_rgb", "sRGB"};
+    /* allowed spellings: the XYZ -> display conversion, the name of the display encoding and the option that
+     * asks for the values at the model's wavelengths (it names no model: they come through gcolor_at_wavelengths) */
+    const char *allowed[] = {"gcie_xyz_to_rgb", "sRGB", "--spectral", "\"spectral\""};
     /* colour model names, the rgb conversions, sample access, the nm exchange and the models' sizes */
     const char *forbidden[] = {"rgb", "spectrum", "spectral", ".v[", "->v[", "_nm", "nsamples",
                                "nvalues", "capacity", "lambda", "gcolor_wrap", "cls->"};

@@ -97,6 +97,13 @@ static inline int tu_tempdir(char *dir, size_t size, const char *prefix)
     return mkdtemp(dir) ? 0 : -1;
 }
 
+/** dir/name into buf (n bytes); returns buf. */
+static inline const char *tu_in_dir(const char *dir, const char *name, char *buf, size_t n)
+{
+    snprintf(buf, n, "%s/%s", dir, name);
+    return buf;
+}
+
 /** Removes a directory made by tu_tempdir with everything in it; 0 on success. */
 static inline int tu_rmtree(const char *dir)
 {

@@ -9,6 +9,7 @@
 #include "../common/cli.h"
 
 #include <generic/builtins.h>
+#include <generic/image.h>
 #include <generic/plugin.h>
 #include <generic/registry.h>
 
@@ -16,6 +17,23 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+
+/* Prints the space-separated words of list on lines of at most width columns, each indented by indent. */
+static void print_wrapped(FILE *f, int indent, int width, const char *list)
+{
+    int col = 0;
+    for (const char *p = list; *p;) {
+        int len = (int)strcspn(p, " ");
+        if (col > 0 && col + 1 + len > width) {
+            fputc('\n', f);
+            col = 0;
+        }
+        col += col ? fprintf(f, " %.*s", len, p) : fprintf(f, "%*s%.*s", indent, "", len, p);
+        p += len;
+        p += *p == ' ';
+    }
+    fputc('\n', f);
+}
 
 static void usage(FILE *f)
 {
@@ -27,12 +45,16 @@ static void usage(FILE *f)
             "              [--allow-plugins] [--confine DIR]\n"
             "              [--probe FILE] [--probe-technique T] [--probe-count N] [--probe-samples N]\n"
             "              [--probe-scale S] [--probe-shadows on|off] [--crop X0,Y0,X1,Y1] [--integrator whitted|path]\n"
+            "              [--spectral] [--display D] [--view V] [--ocio-config FILE]\n"
             "       gtrace --help | --version\n"
             "Renders a scene file (the library's text format with camera, object and light entries) with a\n"
             "Whitted ray tracer that uses colours and materials only through the generic interfaces.\n"
             "Every scene coordinate (after transforms) must be finite and within +-1e15.\n"
-            "  -o OUT            output image; the extension picks the format: .exr linear float,\n"
-            "                    .png/.jpg display-encoded (sRGB) after the exposure, clamped\n"
+            "  -o OUT            output image; the extension picks the format: .exr/.hdr linear float,\n"
+            "                    the others (.png, .jpg, ...) display-encoded (sRGB) after the exposure,\n"
+            "                    clamped. This build writes (OpenImageIO's writers, found when it was built):\n");
+    print_wrapped(f, 20, 100, gimage_write_extensions());
+    fprintf(f,
             "  --width W         image width (default: the camera's; height follows its aspect)\n"
             "  --height H        image height (default: the camera's)\n"
             "  --spp N           samples per pixel, stratified and jittered (default: the camera's)\n"
@@ -74,6 +96,17 @@ static void usage(FILE *f)
             "                    left is 0,0); the output is the region's size and its pixels equal those of\n"
             "                    the full render; an .exr records the region as its data window (the full\n"
             "                    image is the display window), so crops can be merged\n"
+            "  --display D       write the 8-bit output through the view of display D of an OpenColorIO\n"
+            "  --view V          config instead of the sRGB encoding (default: the config's default display,\n"
+            "                    the display's default view); the config is --ocio-config FILE, else $OCIO,\n"
+            "                    else the one libgeneric ships (share/generic/ocio/config.ocio: display sRGB,\n"
+            "                    views Standard (the sRGB transfer function, as without --display), Log (12\n"
+            "                    stops, 2^-8..2^4) and Raw (linear, clamped)); unknown names are listed\n"
+            "  --ocio-config FILE  the OpenColorIO config for --display and --view\n"
+            "  --spectral        with -o OUT.exr: also store each pixel's light at the colour model's own\n"
+            "                    wavelengths, as emissive channels S0.<nm>nm (e.g. S0.550,000000nm) beside\n"
+            "                    R,G,B, in the OpenEXR layout of Fichet, Pacanowski and Wilkie 2021 (JCGT\n"
+            "                    10(3)); refused in a model without wavelength samples and for other formats\n"
             "  -q, --quiet       no progress bar and no summary line\n"
             "  -h, --help        this text\n"
             "  --version         the version\n"
@@ -85,7 +118,7 @@ static void usage(FILE *f)
 enum {
     OPT_WIDTH = CLI_FIRST_OWN, OPT_HEIGHT, OPT_SPP, OPT_DEPTH, OPT_MAX_RAYS, OPT_THREADS, OPT_COLORMODEL,
     OPT_EXPOSURE, OPT_CUTOFF, OPT_CROP, OPT_BANDS, OPT_INTEGRATOR, OPT_PROBE, OPT_PROBE_TECHNIQUE, OPT_PROBE_COUNT, OPT_PROBE_SAMPLES,
-    OPT_PROBE_SHADOWS, OPT_PROBE_SCALE
+    OPT_PROBE_SHADOWS, OPT_PROBE_SCALE, OPT_WAVES, OPT_DISPLAY, OPT_VIEW, OPT_OCIO_CONFIG
 };
 
 /* The --probe options (code c, its value v); -1 with a message for a bad one. */
@@ -122,8 +155,10 @@ static int parse_probe_option(int c, const char *v, ProbeOverride *p)
 
 typedef struct Options {
     ProbeOverride probe;
+    GImageDisplay display; /* --display, --view, --ocio-config */
+    int have_display;
     const char *scene, *out, *colormodel;
-    int width, height, spp, depth, threads, quiet, max_rays, bands, integrator;
+    int width, height, spp, depth, threads, quiet, max_rays, bands, integrator, waves;
     int have_exposure, have_cutoff, have_crop;
     int crop[4]; /* x0, y0, x1, y1 */
     double exposure, cutoff;
@@ -176,6 +211,10 @@ static int parse_args(int argc, char **argv, Options *o)
         {"probe-samples", required_argument, NULL, OPT_PROBE_SAMPLES},
         {"probe-shadows", required_argument, NULL, OPT_PROBE_SHADOWS},
         {"probe-scale", required_argument, NULL, OPT_PROBE_SCALE},
+        {"spectral", no_argument, NULL, OPT_WAVES},
+        {"display", required_argument, NULL, OPT_DISPLAY},
+        {"view", required_argument, NULL, OPT_VIEW},
+        {"ocio-config", required_argument, NULL, OPT_OCIO_CONFIG},
         {NULL, 0, NULL, 0},
     };
     memset(o, 0, sizeof *o);
@@ -238,6 +277,15 @@ static int parse_args(int argc, char **argv, Options *o)
             o->have_cutoff = 1;
             rc = cli_double("gtrace", "--cutoff", optarg, 0.0, 1.0, &o->cutoff);
             break;
+        case OPT_WAVES:
+            o->waves = 1;
+            break;
+        case OPT_DISPLAY:
+        case OPT_VIEW:
+        case OPT_OCIO_CONFIG:
+            o->have_display = 1;
+            *(c == OPT_DISPLAY ? &o->display.display : c == OPT_VIEW ? &o->display.view : &o->display.config) = optarg;
+            break;
         case OPT_CROP:
             o->have_crop = 1;
             rc = parse_crop(optarg, o->crop);
@@ -261,6 +309,15 @@ static int parse_args(int argc, char **argv, Options *o)
     if (!o->scene || !o->out) {
         fprintf(stderr, "gtrace: %s\n", !o->scene ? "no scene file given" : "no output file given (-o OUT)");
         usage(stderr);
+        return -1;
+    }
+    if (o->have_display && output_is_float(o->out)) {
+        fprintf(stderr, "gtrace: --display, --view and --ocio-config are for 8-bit formats (.png, .jpg, ...); '%s' "
+                "stores linear floats\n", o->out);
+        return -1;
+    }
+    if (o->waves && !output_is_exr(o->out)) {
+        fprintf(stderr, "gtrace: --spectral writes an OpenEXR file: -o must end in .exr, not '%s'\n", o->out);
         return -1;
     }
     return 0;
@@ -293,6 +350,10 @@ int main(int argc, char **argv)
         fprintf(stderr, "gtrace: %s\n", err.message);
         return 1;
     }
+    if (o.have_display && gimage_display_check(&o.display, NULL, 0, &err) != G_OK) {
+        fprintf(stderr, "gtrace: %s\n", err.message);
+        return err.code == G_ERR_NOTFOUND ? 2 : 1;
+    }
     if (scene_load_opts(o.scene, o.colormodel, &o.probe, &trust, &scene, &err) < 0) {
         fprintf(stderr, "gtrace: %s\n", err.message);
         return 1;
@@ -303,7 +364,7 @@ int main(int argc, char **argv)
     RenderSettings rs = {.width = cam->width, .height = cam->height, .spp = cam->spp, .depth = cam->depth,
                          .threads = o.threads, .quiet = o.quiet, .cutoff = o.have_cutoff ? o.cutoff : cam->cutoff,
                          .max_rays = o.max_rays, .bands = o.bands > 0 ? o.bands : cam->bands,
-                         .integrator = o.integrator};
+                         .integrator = o.integrator, .waves = o.waves};
     if (o.width > 0 && o.height > 0) {
         rs.width = o.width;
         rs.height = o.height;
@@ -339,7 +400,7 @@ int main(int argc, char **argv)
     if (rc == G_OK)
         rc = render_image(scene, &rs, &fb, &st, &err);
     if (rc == G_OK)
-        rc = output_write(o.out, &fb, exposure, &err);
+        rc = output_write(o.out, &fb, exposure, o.have_display ? &o.display : NULL, &err);
     if (rc != G_OK) {
         fprintf(stderr, "gtrace: %s\n", err.message);
         framebuffer_free(&fb);

@@ -10,6 +10,8 @@
 #include "path.h"
 #include "progress.h"
 
+#include <generic/image.h>
+
 #include <math.h>
 #include <omp.h>
 #include <string.h>
@@ -69,15 +71,25 @@ static int render_pixel(TraceCtx *c, const Job *job, int x, int y, int *perm, ui
         goto done;
     gcie_xyz_to_rgb(xyz, lin);
     float *px = job->fb->pixels + 3 * ((size_t)(y - job->y0) * (size_t)job->fb->width + (size_t)(x - job->x0));
+    int dropped = 0;
     for (int ch = 0; ch < 3; ch++) {
         if (!isfinite(lin[ch]) || fabs(lin[ch]) > 3.0e38) {
             (*nonfinite)++;
             lin[0] = lin[1] = lin[2] = 0.0;
+            dropped = 1;
             break;
         }
     }
     for (int ch = 0; ch < 3; ch++)
         px[ch] = (float)lin[ch];
+    if (job->fb->waves) {
+        size_t n = (size_t)job->fb->nwaves;
+        float *w = job->fb->waves + n * ((size_t)(y - job->y0) * (size_t)job->fb->width + (size_t)(x - job->x0));
+        if (dropped) /* black, as the pixel */
+            memset(w, 0, n * sizeof *w);
+        else
+            rc = gcolor_at_wavelengths(&acc, GCOLOR_LIGHT, w, (int)n);
+    }
 done:
     gscratch_release(c->scratch, mark);
     return rc < 0 ? rc : G_OK;
@@ -104,13 +116,40 @@ void framebuffer_free(Framebuffer *fb)
     if (!fb)
         return;
     gmem_free(fb->pixels);
-    fb->pixels = NULL;
+    gmem_free(fb->waves);
+    gmem_free(fb->wavelengths);
+    fb->pixels = fb->waves = NULL;
+    fb->wavelengths = NULL;
+    fb->nwaves = 0;
+}
+
+/* fb->waves and fb->wavelengths for the model's wavelengths, within the image memory budget. */
+static int alloc_waves(Framebuffer *fb, const GColorModel *m, GError *err)
+{
+    int n = gcolormodel_wavelengths(m, NULL, 0);
+    if (n < 1)
+        return gerror_set(err, G_ERR_UNSUPPORTED, "--spectral: the colour model '%s' has no wavelength samples to "
+                          "write (choose one that has, with --colormodel)", gcolormodel_name(m));
+    size_t bytes = (size_t)fb->width * (size_t)fb->height * (size_t)n * sizeof(float);
+    if (bytes > gimage_memory_budget())
+        return gerror_set(err, G_ERR_NOMEM, "--spectral: %d values per pixel of a %dx%d image take %zu MiB, more than "
+                          "the image memory budget of %zu MiB (GENERIC_IMAGE_BUDGET_MB)", n, fb->width, fb->height,
+                          bytes >> 20, gimage_memory_budget() >> 20);
+    fb->wavelengths = gmem_alloc((size_t)n * sizeof(double));
+    fb->waves = gmem_calloc(bytes / sizeof(float), sizeof(float));
+    if (!fb->wavelengths || !fb->waves)
+        return gerror_set(err, G_ERR_NOMEM, "--spectral: out of memory for %d values per pixel of a %dx%d image", n,
+                          fb->width, fb->height);
+    fb->nwaves = gcolormodel_wavelengths(m, fb->wavelengths, n);
+    return G_OK;
 }
 
 int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, RenderStats *st, GError *err)
 {
     memset(st, 0, sizeof *st);
-    fb->pixels = NULL;
+    fb->pixels = fb->waves = NULL;
+    fb->wavelengths = NULL;
+    fb->nwaves = 0;
     if (rs->width < 1 || rs->height < 1 || rs->width > 65536 || rs->height > 65536)
         return gerror_set(err, G_ERR_INVALID, "image size %dx%d is out of range (1..65536)", rs->width, rs->height);
     if (rs->spp < 1 || rs->spp > 65536)
@@ -143,8 +182,14 @@ int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, Rend
     fb->y = cy0;
     fb->full_width = rs->width;
     fb->full_height = rs->height;
+    if (rs->waves && (rc0 = alloc_waves(fb, s->model, err)) != G_OK) { /* first: its budget is the larger */
+        framebuffer_free(fb);
+        bands_free(&bands);
+        return rc0;
+    }
     fb->pixels = gmem_calloc((size_t)fb->width * (size_t)fb->height * 3, sizeof(float));
     if (!fb->pixels) {
+        framebuffer_free(fb);
         bands_free(&bands);
         return gerror_set(err, G_ERR_NOMEM, "out of memory for a %dx%d image", fb->width, fb->height);
     }

@@ -26,6 +26,7 @@ typedef struct RenderSettings {
     int integrator; /**< RENDER_WHITTED (the paper's Fig. 4, default) or RENDER_PATH (path.c) */
     int crop[4];   /**< x0, y0, x1, y1: render only x0 <= x < x1, y0 <= y < y1 of the width x height image, each
                         pixel as the full render has it; all 0: the whole image */
+    int waves;     /**< 1: also keep each pixel's values at the colour model's wavelengths (--spectral) */
 } RenderSettings;
 
 /** Linear sRGB pixels (from the model's XYZ), row by row from the top. */
@@ -34,6 +35,11 @@ typedef struct Framebuffer {
     float *pixels; /**< 3 floats per pixel */
     int x, y;                    /**< where pixel (0, 0) lies in the full image (a crop; else 0, 0) */
     int full_width, full_height; /**< the full image's size */
+    /** With RenderSettings.waves: nwaves values per pixel at the colour model's wavelengths (in nm, nwaves of
+     * them), pixel by pixel in the order of pixels, the light as the model has it; else NULL and 0. */
+    float *waves;
+    double *wavelengths;
+    int nwaves;
 } Framebuffer;
 
 typedef struct RenderStats {
@@ -44,12 +50,14 @@ typedef struct RenderStats {
     int threads;
 } RenderStats;
 
-/** Renders the scene (accel_build must have run). fb->pixels is allocated here (free with framebuffer_free). */
+/** Renders the scene (accel_build must have run). fb->pixels (and fb->waves when asked) are allocated here (free
+ * with framebuffer_free). Asking for the values at wavelengths in a model without wavelength samples is
+ * G_ERR_UNSUPPORTED; more of them than the image memory budget allows is G_ERR_NOMEM, before rendering. */
 int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, RenderStats *st, GError *err);
 /** The order in which the tiles are rendered: a fixed shuffle of 0..n-1 (the same for every run), so that the
  * finished fraction of tiles follows the work done wherever the expensive parts of the image lie. */
 void render_tile_order(int n, int *order);
-/** Frees the pixels (NULL or a zeroed framebuffer: no-op). */
+/** Frees the pixels and the values at wavelengths (NULL or a zeroed framebuffer: no-op). */
 void framebuffer_free(Framebuffer *fb);
 
 #endif

@@ -249,6 +249,17 @@ GENERIC_API GENERIC_NODISCARD int gcolor_is_nonnegative(const GColor *c);
 GENERIC_API GENERIC_NODISCARD int gcolor_to_nm(const GColor *c, GColorRole role, GSpectrumNM *out);
 /** From the nm exchange spectrum (checks for NaN). */
 GENERIC_API GENERIC_NODISCARD int gcolor_from_nm(GColor *c, const GSpectrumNM *in, GColorRole role);
+/** The wavelengths (nm, increasing) at which the model keeps its values, for writing them out (e.g. the
+ * spectral channels of an OpenEXR): its own sample grid (GColorModel.nsamples from lambda_min in steps of
+ * lambda_step) where it lies within the nm exchange range GNM_MIN..GNM_MAX. Returns how many there are (0 for a
+ * model without wavelength samples, such as rgb) and writes the first min(that, max) of them to nm (which may be
+ * NULL when max is 0). */
+GENERIC_API int gcolormodel_wavelengths(const GColorModel *m, double *nm, int max);
+/** The values of c at the model's wavelengths (gcolormodel_wavelengths), read in role (a light: its spectral
+ * radiance, so that integrating them against the CIE 1931 observer gives gcolor_to_xyz): out[k] for the k-th
+ * wavelength, n of them (n must equal the count). Goes through the nm exchange spectrum (gcolor_to_nm, on the
+ * stack: no allocation). G_ERR_INVALID when n is not the model's count or the model has none. */
+GENERIC_API GENERIC_NODISCARD int gcolor_at_wavelengths(const GColor *c, GColorRole role, float *out, int n);
 /** To CIE 1931 XYZ. */
 GENERIC_API GENERIC_NODISCARD int gcolor_to_xyz(const GColor *c, GColorRole role, double xyz[3]);
 /** To linear sRGB (Rec.709 primaries, D65 white). */

@@ -16,8 +16,11 @@
  *   .pfm                                linear float where OpenImageIO has a PFM writer (Debian 12's 2.4
  *                                       has none: the write fails with G_ERR_IO and writes nothing);
  *   anything else (.png .jpg .jpeg .tif .tiff .bmp .tga ...)
- *                                       8 bits per channel, sRGB encoded after the exposure, clamped
- *                                       to [0, 1] (alpha is clamped, not encoded).
+ *                                       8 bits per channel, sRGB encoded after the exposure (or through an
+ *                                       OpenColorIO display transform, GImageDisplay), clamped to [0, 1]
+ *                                       (alpha is clamped, not encoded).
+ * Only the extensions of gimage_write_extensions() are written (found when the library was built); OpenEXR
+ * files may carry spectra beside the colour channels (GImageSpectra).
  * A write goes to a temporary file in the destination's directory (generic/file.h) which is renamed over the
  * destination only when it is complete and on the disk: every failed write (a full disk, an I/O error), a
  * failed flush and a size that differs from what was written are errors, and leave no partial file behind and
@@ -62,6 +65,33 @@ enum {
     GIMAGE_READ_RGBA = 1 << 2  /**< always 4 channels: alpha 1 where the file has none */
 };
 
+/** Emissive spectra stored beside an image's colour channels in OpenEXR, in the layout of Fichet, Pacanowski
+ * and Wilkie 2021, "An OpenEXR Layout for Spectral Images" (JCGT 10(3)): one float channel per wavelength, named
+ * S0.<wavelength with 6 decimals and a comma as separator>nm (e.g. S0.550,000000nm), and the string attributes
+ * spectralLayoutVersion "1.0" and emissiveUnits "W.m^-2.sr^-1". */
+typedef struct GImageSpectra {
+    int count;                 /**< wavelengths per pixel, 1..GIMAGE_MAX_WAVELENGTHS */
+    const double *wavelengths; /**< count of them, in nm, increasing, finite and > 0 */
+    /** width * height * count values: pixel (x, y) at wavelength k is values[(y * width + x) * count + k] */
+    const float *values;
+} GImageSpectra;
+
+/** The most wavelengths a GImageSpectra may have. */
+#define GIMAGE_MAX_WAVELENGTHS 4096
+
+/** A display transform through OpenColorIO 2 for 8-bit output, instead of the sRGB encoding: the view `view` of
+ * the display `display` of an OCIO config, applied to the linear pixels (the config's scene_linear role) after
+ * the exposure; the result is clamped to [0, 1] and quantised as it is. The config: `config` when given, else
+ * the file named by $OCIO, else the one libgeneric ships (share/ocio/config.ocio, installed as
+ * PREFIX/share/generic/ocio/config.ocio: linear Rec.709 scene, display sRGB with the views Standard (the sRGB
+ * transfer function, the default), Log and Raw). OpenColorIO comes with the OpenImageIO module: it is loaded
+ * only when a display transform is used. */
+typedef struct GImageDisplay {
+    const char *config;  /**< path of an OCIO config; NULL: $OCIO, else the shipped one */
+    const char *display; /**< NULL: the config's default display */
+    const char *view;    /**< NULL: the display's default view */
+} GImageDisplay;
+
 /** Options for gimage_write; NULL or a zeroed struct means exposure 0. */
 typedef struct GImageWriteOptions {
     double exposure; /**< in stops: colour channels are multiplied by 2^exposure before encoding (all formats) */
@@ -69,6 +99,12 @@ typedef struct GImageWriteOptions {
      * full_height image. Formats with a data and a display window (OpenEXR) record it; the others ignore it.
      * full_width 0: the image is the whole picture. */
     int x, y, full_width, full_height;
+    /** Spectra to store beside the colour channels (NULL: none). Only OpenEXR stores them: a write to another
+     * format with spectra is G_ERR_INVALID, before anything is written. */
+    const GImageSpectra *spectra;
+    /** A display transform instead of the sRGB encoding (NULL: none). Only for 8-bit formats of RGB or RGBA
+     * images: with a float format (.exr, .hdr) or fewer channels it is G_ERR_INVALID. */
+    const GImageDisplay *display;
 } GImageWriteOptions;
 
 /** Allocates a black image of the given size (channels 1..4); G_ERR_INVALID for bad sizes,
@@ -105,9 +141,24 @@ GENERIC_API GENERIC_NODISCARD int gimage_info(const char *path, int *width, int 
 GENERIC_API GENERIC_NODISCARD int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *opt, GError *err);
 
 /** Checks before any work that gimage_write can write path: its directory exists and is writable, path is
- * not something other than a regular file (gfile_check_output), and this OpenImageIO has a writer for its
- * extension (Debian 12's has none for .pfm). G_OK or G_ERR_IO naming path and the reason. */
+ * not something other than a regular file (gfile_check_output), and its extension is one of
+ * gimage_write_extensions() (Debian 12's OpenImageIO has no writer for .pfm). Loads no OpenImageIO. G_OK or
+ * G_ERR_IO naming path and the reason. */
 GENERIC_API GENERIC_NODISCARD int gimage_check_output(const char *path, GError *err);
+
+/** The file extensions gimage_write writes, with their dots, sorted and separated by one space
+ * (".bmp .exr ... .png ... .webp"): the ones this OpenImageIO wrote and read back when the library was built
+ * (scripts/gen_image_writers.cpp), so that a program can list them without loading OpenImageIO. Case is ignored
+ * when a path's extension is matched against them. A static string. */
+GENERIC_API const char *gimage_write_extensions(void);
+
+/** Checks a display transform before any work: finds its config (see GImageDisplay; writes the path used into
+ * config_used, of size bytes, when not NULL), reads it and checks that it has the display and the view. G_OK;
+ * G_ERR_IO when no config is found or OpenColorIO cannot be loaded, G_ERR_PARSE when the config does not read
+ * (OpenColorIO's reason), G_ERR_NOTFOUND for an unknown display or view (the message lists the config's
+ * displays, or the display's views). */
+GENERIC_API GENERIC_NODISCARD int gimage_display_check(const GImageDisplay *d, char *config_used, size_t size,
+                                                       GError *err);
 
 /** The sRGB transfer function (IEC 61966-2-1): linear value in [0, 1] to its encoded value. */
 GENERIC_API double gimage_srgb_encode(double linear);

@@ -79,6 +79,13 @@ light background { color rgb 1 1 1 }
 object sphere { center <0, 0, 0> radius 1 material lambert { reflectance rgb 0.5 0.5 0.5 } }
 S
 "$bin/gtrace" one.scene -o one.png -q > out 2>&1 && [ -s one.png ] || fail "gtrace one.scene: $(cat out)"
+# the shipped OpenColorIO config, installed in share/generic/ocio/ and found from the installed tool
+[ -f "$root/share/generic/ocio/config.ocio" ] || fail "the OpenColorIO config is not installed in share/generic/ocio/"
+env -u OCIO "$bin/gtrace" one.scene -o view.png -q --view Nope > out 2>&1 && fail "gtrace --view Nope succeeded"
+grep -q "$root/share/generic/ocio/config.ocio.*its views: Standard, Log, Raw" out ||
+    fail "gtrace --view does not find the installed OpenColorIO config: $(cat out)"
+env -u OCIO "$bin/gtrace" one.scene -o view.png -q --view Raw > out 2>&1 && [ -s view.png ] ||
+    fail "gtrace --view Raw: $(cat out)"
 
 # ---- the example plug-ins, found by bare name in the default directory ----
 for p in "$src"/examples/plugins/*.c; do

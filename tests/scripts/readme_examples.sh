@@ -100,7 +100,7 @@ if [ -n "$san" ]; then
 else
     tree="$tmp/tree"
     mkdir -p "$tree"
-    dirs="include lib colormodels materials textures scripts"
+    dirs="include lib colormodels materials textures scripts share"
     for d in $dirs; do cp -R "$src/$d" "$tree/"; done
     cp "$src/Makefile" "$tree/"
     while read -r path line; do cp "$tmp/examples/$path" "$tree/$path"; done < "$tmp/list"
