@@ -49,7 +49,7 @@ static int render_pixel(TraceCtx *c, const Job *job, int x, int y, int *perm, ui
         c->rays_left = job->max_rays;
         c->capped = 0;
         rc = job->integrator == RENDER_PATH
-                 ? path_trace(c, &r, &job->media0, (uint64_t)y * (uint64_t)job->fb->width + (uint64_t)x, i, &sample)
+                 ? path_trace(c, &r, &job->media0, (uint64_t)y * (uint64_t)job->fb->full_width + (uint64_t)x, i, &sample)
                  : trace_ray(c, &r, &job->media0, 0, &sample);
         *capped += (uint64_t)c->capped;
         gscratch_release(c->scratch, m2);
