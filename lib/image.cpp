@@ -483,6 +483,26 @@ int image_info(const char *path, int *width, int *height, int *channels, GError 
     }
 }
 
+int image_window(const char *path, GImageWindow *win, GError *err)
+{
+    try {
+        std::unique_ptr<ImageInput> in;
+        int rc = open_checked(path, nullptr, &in, err);
+        if (rc != G_OK)
+            return rc;
+        const ImageSpec &spec = in->spec();
+        *win = GImageWindow{spec.x - spec.full_x, spec.y - spec.full_y, spec.width, spec.height, spec.full_width,
+                            spec.full_height};
+        return G_OK;
+    } catch (const std::bad_alloc &) {
+        return gerror_set(err, G_ERR_NOMEM, "%s: out of memory reading the image header", path);
+    } catch (const std::exception &e) {
+        return gerror_set(err, G_ERR_IO, "%s: cannot read image: %s", path, e.what());
+    } catch (...) {
+        return gerror_set(err, G_ERR_IO, "%s: cannot read image", path);
+    }
+}
+
 int image_write(const char *path, const GImage *img, const GImageWriteOptions *opt, GError *err)
 {
     if (!path || !*path)
@@ -519,6 +539,7 @@ extern "C" __attribute__((visibility("default"))) int generic_oiio_module(unsign
     ops->image_info = image_info;
     ops->image_write = image_write;
     ops->image_check_output = check_output_impl;
+    ops->image_window = image_window;
     goiio_texsys_ops(ops);
     return 0;
 }

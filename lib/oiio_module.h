@@ -19,7 +19,7 @@ extern "C" {
 #endif
 
 /** Raised whenever either table changes; a module of another version is refused. */
-#define GOIIO_MODULE_ABI 1
+#define GOIIO_MODULE_ABI 2
 /** The module's file name and the one symbol it exports (a GOiioEntry). */
 #define GOIIO_MODULE_FILE "libgeneric_oiio.so"
 #define GOIIO_MODULE_ENTRY "generic_oiio_module"
@@ -54,6 +54,7 @@ typedef struct GOiioOps {
     int (*texsys_open)(GTextureSystem *ts, const char *path, GTexFile **file, int *channels, int *srgb, GError *err);
     int (*texsys_lookup)(GTextureSystem *ts, GTexFile *file, GTexWrap swrap, GTexWrap twrap, double s, double t,
                          const double deriv[4], double blur, float rgb[3]);
+    int (*image_window)(const char *path, GImageWindow *win, GError *err);
 } GOiioOps;
 
 /** The module's entry: checks abi, keeps host (it outlives the module), fills ops. 0, or -1 for another ABI. */

@@ -4,6 +4,7 @@
 #include "accel.h"
 #include "bands.h"
 #include "dist.h"
+#include "merge.h"
 #include "mpi_load.h"
 #include "render.h"
 #include "output.h"
@@ -29,6 +30,8 @@ static void usage(FILE *f)
             "              [--allow-plugins] [--confine DIR]\n"
             "              [--probe FILE] [--probe-technique T] [--probe-count N] [--probe-samples N]\n"
             "              [--probe-scale S] [--probe-shadows on|off] [--crop X0,Y0,X1,Y1] [--integrator whitted|path]\n"
+            "              [--mpi-block N] [--mpi-timeout S] [--mpi-dedicated]\n"
+            "       gtrace merge PIECE... -o OUT\n"
             "       gtrace --help | --version\n"
             "Renders a scene file (the library's text format with camera, object and light entries) with a\n"
             "Whitted ray tracer that uses colours and materials only through the generic interfaces.\n"
@@ -76,12 +79,21 @@ static void usage(FILE *f)
             "                    left is 0,0); the output is the region's size and its pixels equal those of\n"
             "                    the full render; an .exr records the region as its data window (the full\n"
             "                    image is the display window), so crops can be merged\n"
+            "Under mpirun (Open MPI) every rank loads the scene, rank 0 hands out blocks of the image on demand,\n"
+            "renders some itself, gathers the rest and writes the image, equal to a single-process render\n"
+            "(docs/distributed.md):\n"
+            "  --mpi-block N     blocks of N x N pixels, the unit a rank asks for (default %d)\n"
+            "  --mpi-timeout S   seconds rank 0 waits for a silent rank before it ends the job (default %g;\n"
+            "                    longer than a block takes to render)\n"
+            "  --mpi-dedicated   rank 0 only hands out and gathers blocks\n"
+            "  gtrace merge PIECE... -o OUT   joins --crop pieces (.exr) rendered apart into the full image\n"
+            "                    (gtrace merge --help)\n"
             "  -q, --quiet       no progress bar and no summary line\n"
             "  -h, --help        this text\n"
             "  --version         the version\n"
             "Every option value may also be written --option=value.\n"
             CLI_EXIT_STATUS_HELP,
-            models);
+            models, DIST_DEFAULT_BLOCK, DIST_DEFAULT_TIMEOUT);
 }
 
 enum {
@@ -358,6 +370,8 @@ static void report(const Options *o, const Scene *scene, const RenderSettings *r
 
 int main(int argc, char **argv)
 {
+    if (argc > 1 && strcmp(argv[1], "merge") == 0)
+        return merge_main(argc - 1, argv + 1);
     GError reg_err;
     if (generic_register_builtins(&reg_err) != G_OK) {
         fprintf(stderr, "%s\n", reg_err.message);
