@@ -42,6 +42,7 @@ typedef struct Totals {
 struct Dist {
     const GtMpiOps *ops;
     int rank, size;
+    struct sigaction old_term; /* rank 0: SIGTERM's action before dist_start */
 };
 
 /* The state of one distributed render on one rank. */
@@ -57,6 +58,18 @@ typedef struct Job {
     char msg[512];        /* the transport's last message */
 } Job;
 
+/* Rank 0's SIGTERM from MPI's start to the end of dist_render: the launcher ends the job because another rank died. Says so (the launcher's
+ * own message names the rank) and exits; no image has been written. */
+static void terminated(int sig)
+{
+    static const char text[] = "gtrace: the MPI job was ended by its launcher (another rank died?) before the "
+                               "image was complete; no image written\n";
+    (void)sig;
+    ssize_t n = write(STDERR_FILENO, text, sizeof text - 1);
+    (void)n;
+    _exit(1);
+}
+
 int dist_start(Dist **out, GError *err)
 {
     *out = NULL;
@@ -71,6 +84,10 @@ int dist_start(Dist **out, GError *err)
     if (ops->init(&d->rank, &d->size, msg, sizeof msg) != 0) {
         gmem_free(d);
         return gerror_set(err, G_ERR_IO, "MPI could not start: %s", msg);
+    }
+    if (d->rank == 0) {
+        struct sigaction term = {.sa_handler = terminated};
+        sigaction(SIGTERM, &term, &d->old_term);
     }
     *out = d;
     return G_OK;
@@ -248,18 +265,6 @@ static int gather_hellos(Job *j, int load_status, const char *load_msg, uint64_t
     return gerror_set(err, load_status != G_OK ? load_status : G_ERR_IO, "%s", report);
 }
 
-/* Rank 0's SIGTERM during dist_render: the launcher ends the job because another rank died. Says so (the launcher's
- * own message names the rank) and exits; no image has been written. */
-static void terminated(int sig)
-{
-    static const char text[] = "gtrace: the MPI job was ended by its launcher (another rank died?) before the "
-                               "image was complete; no image written\n";
-    (void)sig;
-    ssize_t n = write(STDERR_FILENO, text, sizeof text - 1);
-    (void)n;
-    _exit(1);
-}
-
 /* Rank 0's part after the HELLOs: hands out, renders, gathers. */
 static void lead(Job *j, RenderStats *st, int quiet)
 {
@@ -430,9 +435,7 @@ int dist_render(Dist *d, const DistSettings *ds, int load_status, const char *lo
     if (rc == G_OK) /* a renderer that cannot start is this rank's failure to report like a load error */
         rc = renderer_create(&j.r, s, rs, fb, err);
     const char *why = load_status != G_OK ? load_msg : err->message;
-    struct sigaction term = {.sa_handler = terminated}, old_term;
     if (d->rank == 0) {
-        sigaction(SIGTERM, &term, &old_term);
         rc = gather_hellos(&j, rc, why, digest, err);
     } else {
         Hello h = {.status = rc, .digest = digest};
@@ -466,8 +469,8 @@ int dist_render(Dist *d, const DistSettings *ds, int load_status, const char *lo
         gmem_free(j.order);
         gmem_free(j.buf);
     }
-    if (d->rank == 0)
-        sigaction(SIGTERM, &old_term, NULL);
+    if (d->rank == 0) /* the image may now be written */
+        sigaction(SIGTERM, &d->old_term, NULL);
     renderer_destroy(j.r);
     if (d->rank != 0 || rc != G_OK)
         framebuffer_free(fb);

@@ -29,7 +29,9 @@ enum { DIST_SENT = 1, DIST_QUIT = 2 };
 /** An MPI job as gtrace sees it. */
 typedef struct Dist Dist;
 
-/** Loads the MPI module (mpi_load.h) and initialises MPI. G_ERR_IO with the reason when either fails. */
+/** Loads the MPI module (mpi_load.h) and initialises MPI. G_ERR_IO with the reason when either fails. On rank
+ * 0, until dist_render returns, a SIGTERM (the launcher ending the job because a rank died) prints that the
+ * job was ended before the image was complete and exits with status 1. */
 int dist_start(Dist **out, GError *err);
 
 /** This process's rank and the number of ranks. */
