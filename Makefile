@@ -204,7 +204,7 @@ bench-dispersion: $(BUILD)/bin/gtrace
 .PHONY: bench-path
 bench-path: $(BUILD)/bin/gtrace
 	@bench/path.sh $(BUILD)
-bench: bench-pov bench-dispersion bench-path
+bench: bench-pov bench-dispersion bench-path bench-mpi
 # gtrace's MPI module (examples/gtrace/mpi/, examples/gtrace/mpi_module.h), built when Open MPI's development
 # files are found (pkg-config ompi-c; Debian's libopenmpi-dev). gtrace opens it with dlopen only when it runs under
 # mpirun (mpi_load.c), so --help and a render on one machine never map libmpi; without it gtrace still builds and
@@ -230,6 +230,9 @@ uninstall: uninstall-mpi
 uninstall-mpi:
 	rm -f $(INST)/lib/generic/gtrace_mpi.so
 endif
+.PHONY: bench-mpi
+bench-mpi: $(BUILD)/bin/gtrace
+	@bench/mpi.sh $(BUILD)
 # (end of gtrace)
 
 # ---- run-time plug-in modules (examples/plugins/, tests/plugins/) ----

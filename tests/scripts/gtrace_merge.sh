@@ -3,6 +3,7 @@
 # as separate processes at once (an array job's tasks) and joined by `gtrace merge` equal the full render pixel by
 # pixel, for the Whitted and the path integrators; overlapping, missing and mismatched pieces are refused with a
 # message naming them (exit 1) and nothing is written; usage errors exit 2.
+# shellcheck disable=SC2086 # option lists ($ARGS, $MPIRUN, ...) are split into words on purpose
 set -u
 BUILD=${1:-build}
 GT="$BUILD/bin/gtrace"
@@ -22,12 +23,10 @@ H=$("$GT" "$SCENE" $ARGS -o "$TMP/probe.exr" && oiiotool --info "$TMP/probe.exr"
 [ -n "$H" ] || { echo "FAIL: no image height"; exit 1; }
 
 for integ in whitted path; do
-    # shellcheck disable=SC2086
     "$GT" "$SCENE" $ARGS --integrator $integ -o "$TMP/full.exr" || fail "the full $integ render failed"
     # four tasks of an array job: quadrants cut off the 16-pixel tile grid, rendered at the same time
     i=0
     for crop in "0,0,41,29" "41,0,$W,29" "0,29,41,$H" "41,29,$W,$H"; do
-        # shellcheck disable=SC2086
         "$GT" "$SCENE" $ARGS --integrator $integ --crop "$crop" -o "$TMP/piece$i.exr" &
         i=$((i + 1))
     done
@@ -43,7 +42,6 @@ for integ in whitted path; do
 done
 # the comparison can fail: a piece of the Whitted render merged into the path one differs
 cp "$TMP/piece0.exr" "$TMP/keep0.exr"
-# shellcheck disable=SC2086
 "$GT" "$SCENE" $ARGS --crop 0,0,41,29 -o "$TMP/piece0.exr" || fail "a Whitted piece failed"
 "$GT" merge -q "$TMP/piece0.exr" "$TMP/piece1.exr" "$TMP/piece2.exr" "$TMP/piece3.exr" -o "$TMP/mixed.exr" ||
     fail "merging a mixed set failed"
@@ -61,13 +59,11 @@ refused() { # WHAT MESSAGE PIECES...: gtrace merge exits 1 with MESSAGE and writ
     grep -q -- "$msg" "$TMP/log" || fail "$what: no message '$msg': $(cat "$TMP/log")"
     [ -e "$TMP/out.exr" ] && fail "$what: an image was written"
 }
-# shellcheck disable=SC2086
 "$GT" "$SCENE" $ARGS --crop "40,0,$W,29" -o "$TMP/wide1.exr" || fail "the overlapping piece failed"
 refused "overlapping pieces" "piece0.exr and .*wide1.exr overlap (pixels 40,0 to 40,28" \
     "$TMP/piece0.exr" "$TMP/wide1.exr" "$TMP/piece2.exr" "$TMP/piece3.exr"
 refused "a missing piece" "leave $((41 * 29)) of the ${W}x$H image's pixels uncovered, the first at 0,0" \
     "$TMP/piece1.exr" "$TMP/piece2.exr" "$TMP/piece3.exr"
-# shellcheck disable=SC2086
 "$GT" "$SCENE" --width 80 --spp 1 --threads 1 -q --crop 0,0,41,29 -o "$TMP/other.exr" || fail "the other piece failed"
 refused "a piece of another image size" "other.exr is a piece of a 80x.* image, .*piece0.exr of a ${W}x$H one" \
     "$TMP/piece0.exr" "$TMP/other.exr" "$TMP/piece2.exr" "$TMP/piece3.exr"

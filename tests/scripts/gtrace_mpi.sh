@@ -5,6 +5,7 @@
 # worker stopped (SIGSTOP) is declared dead after --mpi-timeout, and one killed (SIGKILL) ends the job, both
 # without an image and within a bounded time; a missing module is a clear error; --help and a render on one
 # machine never map libmpi. Every mpirun runs under `timeout`.
+# shellcheck disable=SC2086 # option lists ($ARGS, $MPIRUN, ...) are split into words on purpose
 set -u
 BUILD=${1:-build}
 GT="$BUILD/bin/gtrace"
@@ -40,32 +41,25 @@ same() { # A B WHAT: the two images are equal pixel by pixel
 
 # ---- bit-identical to a single process ----
 for integ in whitted path; do
-    # shellcheck disable=SC2086
     "$GT" "$SCENE" $ARGS --integrator $integ -o "$TMP/one_$integ.exr" || fail "single-process $integ render failed"
-    # shellcheck disable=SC2086
     $MPIRUN -n 3 "$GT" "$SCENE" $ARGS --integrator $integ --mpi-block 16 -o "$TMP/mpi_$integ.exr" > "$TMP/log" 2>&1 ||
         fail "mpirun -n 3 $integ: exit status $?: $(cat "$TMP/log")"
     same "$TMP/one_$integ.exr" "$TMP/mpi_$integ.exr" "mpirun -n 3 --integrator $integ"
 done
 # the comparison can fail: another sample count differs
-# shellcheck disable=SC2086
 "$GT" "$SCENE" $ARGS --spp 3 -o "$TMP/other.exr" || fail "the --spp 3 render failed"
 oiiotool "$TMP/one_whitted.exr" "$TMP/other.exr" --fail 0 --diff 2>&1 | grep -q '^PASS' &&
     fail "renders with 2 and 3 samples compare equal (the check is blind)"
 # rank 0 only gathering, blocks that do not divide the image, two threads a rank, a crop (written as its region)
-# shellcheck disable=SC2086
 $MPIRUN -n 3 "$GT" "$SCENE" $ARGS --threads 2 --mpi-block 20 --mpi-dedicated -o "$TMP/dedicated.exr" > "$TMP/log" 2>&1 ||
     fail "mpirun -n 3 --mpi-dedicated: exit status $?: $(cat "$TMP/log")"
 same "$TMP/one_whitted.exr" "$TMP/dedicated.exr" "mpirun -n 3 --mpi-dedicated --mpi-block 20 --threads 2"
-# shellcheck disable=SC2086
 "$GT" "$SCENE" $ARGS --integrator path --crop 10,5,77,50 -o "$TMP/crop1.exr" || fail "the single crop failed"
-# shellcheck disable=SC2086
 $MPIRUN -n 2 "$GT" "$SCENE" $ARGS --integrator path --crop 10,5,77,50 --mpi-block 16 -o "$TMP/crop2.exr" \
     > "$TMP/log" 2>&1 || fail "mpirun -n 2 --crop: exit status $?: $(cat "$TMP/log")"
 same "$TMP/crop1.exr" "$TMP/crop2.exr" "mpirun -n 2 --crop 10,5,77,50 --integrator path"
 oiiotool --info -v "$TMP/crop2.exr" | grep -q "pixel data origin: x=10, y=5" || fail "the MPI crop has no data window"
 # the summary line names the ranks
-# shellcheck disable=SC2086
 $MPIRUN -n 2 "$GT" "$SCENE" --width 32 --spp 1 --threads 1 -o "$TMP/s.png" > "$TMP/log" 2>&1
 grep -q "1 threads x 2 ranks" "$TMP/log" || fail "the summary does not name the ranks: $(cat "$TMP/log")"
 
@@ -78,19 +72,16 @@ failed_run() { # WHAT EXPECTED-MESSAGE OUT: the last mpirun failed, printed the 
     ls "$TMP"/.*.tmp* > /dev/null 2>&1 && fail "$1: a temporary file was left"
 }
 # a rank that cannot read its scene (another node without the file, here another command line)
-# shellcheck disable=SC2086
 $MPIRUN -n 2 "$GT" "$SCENE" $ARGS -o "$TMP/f1.exr" : -n 1 "$GT" "$TMP/absent.scene" $ARGS -o "$TMP/f1.exr" \
     > "$TMP/log" 2>&1
 st=$?
 failed_run "a rank without the scene" "rank 2: cannot open \"$TMP/absent.scene\"" "$TMP/f1.exr"
 # rank 0 itself cannot read it: its own message, the workers are released
-# shellcheck disable=SC2086
 $MPIRUN -n 1 "$GT" "$TMP/absent.scene" $ARGS -o "$TMP/f2.exr" : -n 2 "$GT" "$SCENE" $ARGS -o "$TMP/f2.exr" \
     > "$TMP/log" 2>&1
 st=$?
 failed_run "rank 0 without the scene" "^gtrace: cannot open \"$TMP/absent.scene\"" "$TMP/f2.exr"
 # a rank started with other arguments would render another image
-# shellcheck disable=SC2086
 $MPIRUN -n 2 "$GT" "$SCENE" $ARGS -o "$TMP/f3.exr" : -n 1 "$GT" "$SCENE" $ARGS --spp 5 -o "$TMP/f3.exr" \
     > "$TMP/log" 2>&1
 st=$?
@@ -121,35 +112,30 @@ busy() {
         i=$((i + 1))
     done
 }
+# interrupt SIGNAL RANK NAME: a job writing TMP/NAME.exr, whose rank RANK gets SIGNAL once it renders; sets st
+interrupt() {
+    $MPIRUN -n 3 "$GT" "$SCENE" $BIG -o "$TMP/$3.exr" > "$TMP/log" 2>&1 &
+    job=$!
+    pid=$(rank_pid "$2" "$3.exr")
+    [ -n "$pid" ] && busy "$pid" && kill "-$1" "$pid"
+    wait $job
+    st=$?
+    [ -n "$pid" ] || fail "rank $2 of the $3 job was not found"
+}
 # a worker that stops answering (SIGSTOP: alive to the launcher) is declared dead after --mpi-timeout
 # (many cheap blocks: no dispersion, depth 3, so that no block of a live rank takes near the timeout on a busy machine)
 BIG="--width 480 --spp 24 --depth 3 --bands 1 --threads 1 -q --mpi-block 16 --mpi-timeout 5"
 t0=$(date +%s)
-# shellcheck disable=SC2086
-$MPIRUN -n 3 "$GT" "$SCENE" $BIG -o "$TMP/stopped.exr" > "$TMP/log" 2>&1 &
-job=$!
-pid=$(rank_pid 2 stopped.exr)
-[ -n "$pid" ] && busy "$pid" && kill -STOP "$pid"
-wait $job
-st=$?
-[ -n "$pid" ] || fail "rank 2 of the stopped job was not found"
+interrupt STOP 2 stopped
 # (stopped while rendering, or, on a slow machine, before it reported its scene)
 failed_run "a stopped worker" "rank 2 sent nothing for 5 s\|rank (2) did not report within 5 s" "$TMP/stopped.exr"
 [ $(($(date +%s) - t0)) -le 60 ] || fail "a stopped worker: the job took $(($(date +%s) - t0)) s to end"
 # a worker that dies: the launcher ends the job, rank 0 says what happened
-# shellcheck disable=SC2086
-$MPIRUN -n 3 "$GT" "$SCENE" $BIG -o "$TMP/killed.exr" > "$TMP/log" 2>&1 &
-job=$!
-pid=$(rank_pid 1 killed.exr)
-[ -n "$pid" ] && busy "$pid" && kill -KILL "$pid"
-wait $job
-st=$?
-[ -n "$pid" ] || fail "rank 1 of the killed job was not found"
+interrupt KILL 1 killed
 failed_run "a killed worker" "ended by its launcher" "$TMP/killed.exr"
 
 # ---- one machine: no MPI library mapped ----
 for c in "--help" "$SCENE -o $TMP/o.png --width 8 -q"; do
-    # shellcheck disable=SC2086
     LD_DEBUG=files LD_DEBUG_OUTPUT="$TMP/ld" "$GT" $c > /dev/null 2>&1 || fail "gtrace $c failed"
     cat "$TMP/ld".* > "$TMP/objects" 2> /dev/null
     rm -f "$TMP/ld".*
