@@ -202,8 +202,7 @@ static int render_slice(Job *j, int b, int slice, Progress *prog)
     if (renderer_region(j->r, region, prog, &err) != G_OK) {
         if (j->d->rank == 0)
             fatal(j->d, "%s", err.message);
-        snprintf((char *)j->buf, j->buf_cap, "%s", err.message);
-        send_now(j, 0, TAG_FAIL, j->buf, strlen((char *)j->buf) + 1);
+        send_now(j, 0, TAG_FAIL, err.message, strlen(err.message) + 1); /* j->buf may still be on its way */
         int from, tag;
         size_t len;
         next_message(j, j->ds->timeout, &from, &tag, &len); /* rank 0 ends the job meanwhile */
@@ -438,7 +437,10 @@ int dist_render(Dist *d, const DistSettings *ds, int load_status, const char *lo
     if (d->rank == 0) {
         rc = gather_hellos(&j, rc, why, digest, err);
     } else {
-        Hello h = {.status = rc, .digest = digest};
+        Hello h;
+        memset(&h, 0, sizeof h); /* no stray bytes in the padding */
+        h.status = rc;
+        h.digest = digest;
         if (rc != G_OK)
             snprintf(h.message, sizeof h.message, "%.*s", (int)sizeof h.message - 1, why);
         send_now(&j, 0, TAG_HELLO, &h, sizeof h);
