@@ -6,15 +6,24 @@
 
 #include <string.h>
 
-#define COUNT_FLOATS(name, n) +(n)
 /* Floats per pixel over all arrays. */
-enum { FLOATS_PER_PIXEL = 0 FRAMEBUFFER_ARRAYS(COUNT_FLOATS) };
+static size_t floats_per_pixel(const Framebuffer *fb)
+{
+    (void)fb; /* read by the counts that depend on it */
+    size_t n = 0;
+#define COUNT(name, count) n += (size_t)(count);
+    FRAMEBUFFER_ARRAYS(COUNT)
+#undef COUNT
+    return n;
+}
 
 int framebuffer_alloc(Framebuffer *fb)
 {
     size_t npix = (size_t)fb->width * (size_t)fb->height;
     int ok = 1;
-#define ALLOC(name, n) ok = ok && (fb->name = gmem_calloc(npix * (n), sizeof(float))) != NULL;
+#define ALLOC(name, count)                                                                                          \
+    fb->name = (count) > 0 && ok ? gmem_calloc(npix * (size_t)(count), sizeof(float)) : NULL;                       \
+    ok = ok && ((count) <= 0 || fb->name);
     FRAMEBUFFER_ARRAYS(ALLOC)
 #undef ALLOC
     if (!ok)
@@ -35,8 +44,7 @@ void framebuffer_free(Framebuffer *fb)
 
 size_t framebuffer_region_bytes(const Framebuffer *fb, const int region[4])
 {
-    (void)fb;
-    return (size_t)(region[2] - region[0]) * (size_t)(region[3] - region[1]) * FLOATS_PER_PIXEL * sizeof(float);
+    return (size_t)(region[2] - region[0]) * (size_t)(region[3] - region[1]) * floats_per_pixel(fb) * sizeof(float);
 }
 
 /* Copies the region's rows of one array (n floats per pixel) between the framebuffer and buf (to_buf: from the
@@ -56,14 +64,18 @@ static size_t copy_rows(const Framebuffer *fb, float *array, int n, const int re
 
 void framebuffer_pack(const Framebuffer *fb, const int region[4], unsigned char *buf)
 {
-#define PACK(name, n) buf += copy_rows(fb, fb->name, (n), region, buf, 1);
+#define PACK(name, count)                                                                                           \
+    if ((count) > 0)                                                                                                \
+        buf += copy_rows(fb, fb->name, (count), region, buf, 1);
     FRAMEBUFFER_ARRAYS(PACK)
 #undef PACK
 }
 
 void framebuffer_unpack(Framebuffer *fb, const int region[4], const unsigned char *buf)
 {
-#define UNPACK(name, n) buf += copy_rows(fb, fb->name, (n), region, (unsigned char *)buf, 0);
+#define UNPACK(name, count)                                                                                         \
+    if ((count) > 0)                                                                                                \
+        buf += copy_rows(fb, fb->name, (count), region, (unsigned char *)buf, 0);
     FRAMEBUFFER_ARRAYS(UNPACK)
 #undef UNPACK
 }

@@ -6,7 +6,9 @@
 #include <stddef.h>
 
 /** Every per-pixel array of a framebuffer, as X(name, floats per pixel): the struct's fields, their allocation,
- * freeing, packing and unpacking all come from this list, so a new per-pixel array is one more line here.
+ * freeing, packing and unpacking all come from this list, so a new per-pixel array is one more line here. The
+ * count is an expression that may read the framebuffer as `fb` (a count set before framebuffer_alloc, such as a
+ * number of wavelengths); an array whose count is 0 is not kept (NULL) and does not travel.
  * pixels: linear sRGB (from the model's XYZ), 3 floats per pixel, row by row from the top. */
 #define FRAMEBUFFER_ARRAYS(X) X(pixels, 3)
 
