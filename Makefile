@@ -230,7 +230,35 @@ bench-dispersion: $(BUILD)/bin/gtrace
 .PHONY: bench-path
 bench-path: $(BUILD)/bin/gtrace $(BUILD)/bin/gprobe
 	@bench/path.sh $(BUILD)
-bench: bench-pov bench-dispersion bench-path
+bench: bench-pov bench-dispersion bench-path bench-mpi
+# gtrace's MPI module (examples/gtrace/mpi/, examples/gtrace/mpi_module.h), built when Open MPI's development
+# files are found (pkg-config ompi-c; Debian's libopenmpi-dev). gtrace opens it with dlopen only when it runs under
+# mpirun (mpi_load.c), so --help and a render on one machine never map libmpi; without it gtrace still builds and
+# --version says so. Found beside gtrace (../lib/generic/) or in the installed PREFIX/lib/generic/.
+$(BUILD)/obj/examples/gtrace/mpi_load.o: CPPFLAGS += -DGTRACE_MPI_LIBDIR='"$(PREFIX)/lib"'
+MPI_CFLAGS := $(shell pkg-config --cflags ompi-c 2>/dev/null)
+MPI_LIBS   := $(shell pkg-config --libs ompi-c 2>/dev/null)
+ifneq ($(MPI_LIBS),)
+GTRACE_MPI_SO := $(BUILD)/lib/generic/gtrace_mpi.so
+$(BUILD)/obj/examples/gtrace/mpi_load.o: CPPFLAGS += -DGTRACE_MPI_BUILT='"gtrace_mpi.so (Open MPI $(shell pkg-config --modversion ompi-c))"'
+$(BUILD)/bin/gtrace: | $(GTRACE_MPI_SO)
+all: $(GTRACE_MPI_SO)
+$(GTRACE_MPI_SO): examples/gtrace/mpi/transport.c examples/gtrace/mpi_module.h
+	@mkdir -p $(dir $@)
+	$(CC) -std=c11 -D_GNU_SOURCE $(OPT) -g -fPIC -shared -fvisibility=hidden $(WARN) $(SANFLAGS) $(MPI_CFLAGS) \
+	    -Wl,-z,defs -o $@ $< $(LDFLAGS) $(MPI_LIBS)
+.PHONY: install-mpi uninstall-mpi
+install: install-mpi
+install-mpi: $(GTRACE_MPI_SO)
+	install -d $(INST)/lib/generic
+	install -m 755 $(GTRACE_MPI_SO) $(INST)/lib/generic/
+uninstall: uninstall-mpi
+uninstall-mpi:
+	rm -f $(INST)/lib/generic/gtrace_mpi.so
+endif
+.PHONY: bench-mpi
+bench-mpi: $(BUILD)/bin/gtrace
+	@bench/mpi.sh $(BUILD)
 # (end of gtrace)
 
 # ---- run-time plug-in modules (examples/plugins/, tests/plugins/) ----

@@ -558,22 +558,18 @@ int image_read(const char *path, unsigned flags, GImage *img, GError *err)
     }
 }
 
-int image_info(const char *path, int *width, int *height, int *channels, GError *err)
+// A file's windows and channel count, with open_checked's checks.
+int read_header(const char *path, GImageWindow *win, int *channels, GError *err)
 {
-    if (!path || !*path)
-        return gerror_set(err, G_ERR_INVALID, "no image file name given");
     try {
         std::unique_ptr<ImageInput> in;
         int rc = open_checked(path, nullptr, &in, err);
         if (rc != G_OK)
             return rc;
         const ImageSpec &spec = in->spec();
-        if (width)
-            *width = spec.width;
-        if (height)
-            *height = spec.height;
-        if (channels)
-            *channels = spec.nchannels;
+        *win = GImageWindow{spec.x - spec.full_x, spec.y - spec.full_y, spec.width, spec.height, spec.full_width,
+                            spec.full_height};
+        *channels = spec.nchannels;
         return G_OK;
     } catch (const std::bad_alloc &) {
         return gerror_set(err, G_ERR_NOMEM, "%s: out of memory reading the image header", path);
@@ -582,6 +578,29 @@ int image_info(const char *path, int *width, int *height, int *channels, GError 
     } catch (...) {
         return gerror_set(err, G_ERR_IO, "%s: cannot read image", path);
     }
+}
+
+int image_info(const char *path, int *width, int *height, int *channels, GError *err)
+{
+    if (!path || !*path)
+        return gerror_set(err, G_ERR_INVALID, "no image file name given");
+    GImageWindow win;
+    int nch, rc = read_header(path, &win, &nch, err);
+    if (rc != G_OK)
+        return rc;
+    if (width)
+        *width = win.width;
+    if (height)
+        *height = win.height;
+    if (channels)
+        *channels = nch;
+    return G_OK;
+}
+
+int image_window(const char *path, GImageWindow *win, GError *err)
+{
+    int nch;
+    return read_header(path, win, &nch, err);
 }
 
 int image_write(const char *path, const GImage *img, const GImageWriteOptions *opt, GError *err)
@@ -620,6 +639,7 @@ extern "C" __attribute__((visibility("default"))) int generic_oiio_module(unsign
     ops->image_info = image_info;
     ops->image_write = image_write;
     ops->image_check_output = check_output_impl;
+    ops->image_window = image_window;
     goiio_texsys_ops(ops);
     goiio_display_ops(ops);
     return 0;

@@ -179,6 +179,17 @@ static int listed_extension(const char *ext)
     return 0;
 }
 
+int gimage_window(const char *path, GImageWindow *win, GError *err)
+{
+    if (!win)
+        return gerror_set(err, G_ERR_INVALID, "no window given");
+    *win = (GImageWindow){0};
+    if (!path || !*path)
+        return gerror_set(err, G_ERR_INVALID, "no image file name given");
+    const GOiioOps *o = goiio_ops(err);
+    return o ? o->image_window(path, win, err) : G_ERR_IO;
+}
+
 int gimage_check_output(const char *path, GError *err)
 {
     if (!path || !*path)

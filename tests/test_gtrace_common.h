@@ -6,6 +6,7 @@
 #include "examples/gtrace/accel.c"
 #include "examples/gtrace/bands.c"
 #include "examples/gtrace/camera.c"
+#include "examples/gtrace/framebuffer.c"
 #include "examples/gtrace/light_seen.c"
 #include "examples/gtrace/lights.c"
 #include "examples/gtrace/mesh.c"

@@ -111,6 +111,34 @@ static void test_exr_round_trip_exact(void **state)
     assert_int_equal(count_files(), 1); /* only a.exr: no temporaries left */
 }
 
+/* A crop written with its place in the full image reports it back as its window; a plain image is its own
+ * whole picture; a missing file is G_ERR_IO. */
+static void test_window_of_a_crop(void **state)
+{
+    (void)state;
+    GImage a;
+    GError err;
+    assert_int_equal(gimage_create(&a, 7, 5, 3, NULL), G_OK);
+    fill(&a, 3u, 0.0, 1.0);
+    GImageWriteOptions opt = {.x = 11, .y = 4, .full_width = 40, .full_height = 30};
+    assert_int_equal(gimage_write(path_in_dir("crop.exr"), &a, &opt, &err), G_OK);
+    GImageWindow w;
+    assert_int_equal(gimage_window(path_in_dir("crop.exr"), &w, &err), G_OK);
+    assert_int_equal(w.x, 11);
+    assert_int_equal(w.y, 4);
+    assert_int_equal(w.width, 7);
+    assert_int_equal(w.height, 5);
+    assert_int_equal(w.full_width, 40);
+    assert_int_equal(w.full_height, 30);
+    assert_int_equal(gimage_write(path_in_dir("whole.exr"), &a, NULL, &err), G_OK);
+    assert_int_equal(gimage_window(path_in_dir("whole.exr"), &w, &err), G_OK);
+    assert_true(w.x == 0 && w.y == 0 && w.width == 7 && w.height == 5 && w.full_width == 7 && w.full_height == 5);
+    assert_int_equal(gimage_window(path_in_dir("absent.exr"), &w, &err), G_ERR_IO);
+    assert_non_null(strstr(err.message, "absent.exr"));
+    assert_int_equal(gimage_window(path_in_dir("crop.exr"), NULL, &err), G_ERR_INVALID);
+    gimage_free(&a);
+}
+
 static void test_png_round_trip(void **state)
 {
     (void)state;
@@ -294,6 +322,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_srgb_transfer),
         cmocka_unit_test(test_exr_round_trip_exact),
+        cmocka_unit_test(test_window_of_a_crop),
         cmocka_unit_test(test_png_round_trip),
         cmocka_unit_test(test_png_exposure_clamp_and_grey),
         cmocka_unit_test(test_exr_exposure_and_alpha_drop),

@@ -3,6 +3,9 @@
 #include "parse.h"
 #include "accel.h"
 #include "bands.h"
+#include "dist.h"
+#include "merge.h"
+#include "mpi_load.h"
 #include "render.h"
 #include "output.h"
 #include "probe_env.h"
@@ -46,6 +49,8 @@ static void usage(FILE *f)
             "              [--probe FILE] [--probe-technique T] [--probe-count N] [--probe-samples N]\n"
             "              [--probe-scale S] [--probe-shadows on|off] [--crop X0,Y0,X1,Y1] [--integrator whitted|path]\n"
             "              [--spectral] [--display D] [--view V] [--ocio-config FILE]\n"
+            "              [--mpi-block N] [--mpi-timeout S] [--mpi-dedicated]\n"
+            "       gtrace merge PIECE... -o OUT\n"
             "       gtrace --help | --version\n"
             "Renders a scene file (the library's text format with camera, object and light entries) with a\n"
             "Whitted ray tracer that uses colours and materials only through the generic interfaces.\n"
@@ -107,18 +112,28 @@ static void usage(FILE *f)
             "                    wavelengths, as emissive channels S0.<nm>nm (e.g. S0.550,000000nm) beside\n"
             "                    R,G,B, in the OpenEXR layout of Fichet, Pacanowski and Wilkie 2021 (JCGT\n"
             "                    10(3)); refused in a model without wavelength samples and for other formats\n"
+            "Under mpirun (Open MPI) every rank loads the scene, rank 0 hands out blocks of the image on demand,\n"
+            "renders some itself, gathers the rest and writes the image, equal to a single-process render\n"
+            "(docs/distributed.md):\n"
+            "  --mpi-block N     blocks of N x N pixels, the unit a rank asks for (default %d)\n"
+            "  --mpi-timeout S   seconds rank 0 waits for a silent rank before it ends the job (default %g;\n"
+            "                    longer than a block takes to render)\n"
+            "  --mpi-dedicated   rank 0 only hands out and gathers blocks\n"
+            "  gtrace merge PIECE... -o OUT   joins --crop pieces (.exr) rendered apart into the full image\n"
+            "                    (gtrace merge --help)\n"
             "  -q, --quiet       no progress bar and no summary line\n"
             "  -h, --help        this text\n"
             "  --version         the version\n"
             "Every option value may also be written --option=value.\n"
             CLI_EXIT_STATUS_HELP,
-            models);
+            models, DIST_DEFAULT_BLOCK, DIST_DEFAULT_TIMEOUT);
 }
 
 enum {
     OPT_WIDTH = CLI_FIRST_OWN, OPT_HEIGHT, OPT_SPP, OPT_DEPTH, OPT_MAX_RAYS, OPT_THREADS, OPT_COLORMODEL,
     OPT_EXPOSURE, OPT_CUTOFF, OPT_CROP, OPT_BANDS, OPT_INTEGRATOR, OPT_PROBE, OPT_PROBE_TECHNIQUE, OPT_PROBE_COUNT, OPT_PROBE_SAMPLES,
-    OPT_PROBE_SHADOWS, OPT_PROBE_SCALE, OPT_WAVES, OPT_DISPLAY, OPT_VIEW, OPT_OCIO_CONFIG
+    OPT_PROBE_SHADOWS, OPT_PROBE_SCALE, OPT_WAVES, OPT_DISPLAY, OPT_VIEW, OPT_OCIO_CONFIG, OPT_MPI_BLOCK,
+    OPT_MPI_TIMEOUT, OPT_MPI_DEDICATED
 };
 
 /* The --probe options (code c, its value v); -1 with a message for a bad one. */
@@ -162,6 +177,7 @@ typedef struct Options {
     int have_exposure, have_cutoff, have_crop;
     int crop[4]; /* x0, y0, x1, y1 */
     double exposure, cutoff;
+    DistSettings dist;
 } Options;
 
 /* "X0,Y0,X1,Y1": four whole numbers with X0 < X1, Y0 < Y1 (checked against the image size later). */
@@ -215,11 +231,15 @@ static int parse_args(int argc, char **argv, Options *o)
         {"display", required_argument, NULL, OPT_DISPLAY},
         {"view", required_argument, NULL, OPT_VIEW},
         {"ocio-config", required_argument, NULL, OPT_OCIO_CONFIG},
+        {"mpi-block", required_argument, NULL, OPT_MPI_BLOCK},
+        {"mpi-timeout", required_argument, NULL, OPT_MPI_TIMEOUT},
+        {"mpi-dedicated", no_argument, NULL, OPT_MPI_DEDICATED},
         {NULL, 0, NULL, 0},
     };
     memset(o, 0, sizeof *o);
     o->width = o->height = o->spp = o->depth = -1;
     o->probe.shadows = -1;
+    o->dist = (DistSettings){.block = DIST_DEFAULT_BLOCK, .timeout = DIST_DEFAULT_TIMEOUT};
     CliParser p;
     cli_begin(&p, "gtrace", argc, argv, "ho:q", longopts);
     int c, rc = 0;
@@ -230,6 +250,7 @@ static int parse_args(int argc, char **argv, Options *o)
             return 1;
         case CLI_VERSION:
             cli_version("gtrace");
+            printf("%s\n", mpi_build_note());
             return 1;
         case 'q':
             o->quiet = 1;
@@ -290,6 +311,15 @@ static int parse_args(int argc, char **argv, Options *o)
             o->have_crop = 1;
             rc = parse_crop(optarg, o->crop);
             break;
+        case OPT_MPI_BLOCK:
+            rc = cli_int("gtrace", "--mpi-block", optarg, 1, 4096, &o->dist.block);
+            break;
+        case OPT_MPI_TIMEOUT:
+            rc = cli_double("gtrace", "--mpi-timeout", optarg, 0.1, 1e6, &o->dist.timeout);
+            break;
+        case OPT_MPI_DEDICATED:
+            o->dist.dedicated = 1;
+            break;
         case '?':
             return -1;
         default:
@@ -323,8 +353,86 @@ static int parse_args(int argc, char **argv, Options *o)
     return 0;
 }
 
+/* Loads the scene (checking first, when asked, that the output can be written) and works out the render settings
+ * and exposure from the options and the camera. G_OK, or an error in err; *usage is set when the command line is
+ * at fault (exit status 2). */
+static int prepare(const Options *o, const GReaderOptions *trust, int check_output, Scene **scene, RenderSettings *rs,
+                   double *exposure, int *usage, GError *err)
+{
+    *usage = 0;
+    *scene = NULL;
+    int rc = check_output ? output_check(o->out, err) : G_OK; /* before the scene is read and rendered */
+    if (rc == G_OK && check_output && o->have_display &&
+        (rc = gimage_display_check(&o->display, NULL, 0, err)) == G_ERR_NOTFOUND)
+        *usage = 1; /* an unknown display or view: the message lists the config's names */
+    if (rc == G_OK)
+        rc = scene_load_opts(o->scene, o->colormodel, &o->probe, trust, scene, err);
+    if (rc < 0)
+        return rc;
+    if (!o->quiet)
+        probe_describe(*scene, stdout);
+    const Camera *cam = &(*scene)->camera;
+    *rs = (RenderSettings){.width = cam->width, .height = cam->height, .spp = cam->spp, .depth = cam->depth,
+                           .threads = o->threads, .quiet = o->quiet, .cutoff = o->have_cutoff ? o->cutoff : cam->cutoff,
+                           .max_rays = o->max_rays, .bands = o->bands > 0 ? o->bands : cam->bands,
+                           .integrator = o->integrator, .waves = o->waves};
+    if (o->width > 0 && o->height > 0) {
+        rs->width = o->width;
+        rs->height = o->height;
+    } else if (o->width > 0) {
+        rs->width = o->width;
+        rs->height = (int)((double)o->width * cam->height / cam->width + 0.5);
+    } else if (o->height > 0) {
+        rs->height = o->height;
+        rs->width = (int)((double)o->height * cam->width / cam->height + 0.5);
+    }
+    if (rs->width < 1)
+        rs->width = 1;
+    if (rs->height < 1)
+        rs->height = 1;
+    if (o->spp > 0)
+        rs->spp = o->spp;
+    if (o->depth >= 0)
+        rs->depth = o->depth;
+    if (o->have_crop) {
+        if (o->crop[2] > rs->width || o->crop[3] > rs->height) {
+            *usage = 1;
+            return gerror_set(err, G_ERR_INVALID, "--crop %d,%d,%d,%d reaches outside the %dx%d image", o->crop[0],
+                              o->crop[1], o->crop[2], o->crop[3], rs->width, rs->height);
+        }
+        memcpy(rs->crop, o->crop, sizeof rs->crop);
+    }
+    *exposure = o->have_exposure ? o->exposure : cam->exposure;
+    return accel_build(*scene, err);
+}
+
+/* The warnings and the summary line of a finished render (ranks: the MPI job's size, 0 without MPI). */
+static void report(const Options *o, const Scene *scene, const RenderSettings *rs, const Framebuffer *fb,
+                   const RenderStats *st, int ranks)
+{
+    if (st->capped)
+        fprintf(stderr, "gtrace: warning: %llu camera samples reached the limit of %d reflected and refracted "
+                "rays per sample; their deeper branches were not traced (raise --cutoff, lower --depth, or "
+                "raise --max-rays)\n", (unsigned long long)st->capped, rs->max_rays > 0 ? rs->max_rays : RENDER_DEFAULT_MAX_RAYS);
+    if (st->nonfinite)
+        fprintf(stderr, "gtrace: warning: %llu samples were NaN or infinite and were replaced by black\n",
+                (unsigned long long)st->nonfinite);
+    if (o->quiet)
+        return;
+    char ranks_text[32] = "";
+    if (ranks > 0)
+        snprintf(ranks_text, sizeof ranks_text, " x %d ranks", ranks);
+    printf("gtrace: %s %dx%d, %d spp, depth %d, %s, %d threads%s: %.2f s, %.2f M rays, %.2f M rays/s, "
+           "%llu non-finite\n",
+           o->out, fb->width, fb->height, rs->spp, rs->depth, gcolormodel_name(scene->model), st->threads, ranks_text,
+           st->seconds, st->rays * 1e-6, st->seconds > 0 ? st->rays * 1e-6 / st->seconds : 0.0,
+           (unsigned long long)st->nonfinite);
+}
+
 int main(int argc, char **argv)
 {
+    if (argc > 1 && strcmp(argv[1], "merge") == 0)
+        return merge_main(argc - 1, argv + 1);
     GError reg_err;
     if (generic_register_builtins(&reg_err) != G_OK) {
         fprintf(stderr, "%s\n", reg_err.message);
@@ -345,82 +453,36 @@ int main(int argc, char **argv)
         return a > 0 ? 0 : 2;
     GError err;
     gerror_clear(&err);
+    Dist *dist = NULL; /* under mpirun: this process is one rank of the job */
+    if (mpi_launched() && dist_start(&dist, &err) != G_OK) {
+        fprintf(stderr, "gtrace: %s\n", err.message);
+        return 1;
+    }
+    int rank = dist ? dist_rank(dist) : 0;
+    if (rank != 0)
+        o.quiet = 1; /* rank 0 speaks for the job */
     Scene *scene = NULL;
-    if (output_check(o.out, &err) != G_OK) { /* before the scene is read and rendered */
-        fprintf(stderr, "gtrace: %s\n", err.message);
-        return 1;
-    }
-    if (o.have_display && gimage_display_check(&o.display, NULL, 0, &err) != G_OK) {
-        fprintf(stderr, "gtrace: %s\n", err.message);
-        return err.code == G_ERR_NOTFOUND ? 2 : 1;
-    }
-    if (scene_load_opts(o.scene, o.colormodel, &o.probe, &trust, &scene, &err) < 0) {
-        fprintf(stderr, "gtrace: %s\n", err.message);
-        return 1;
-    }
-    if (!o.quiet)
-        probe_describe(scene, stdout);
-    const Camera *cam = &scene->camera;
-    RenderSettings rs = {.width = cam->width, .height = cam->height, .spp = cam->spp, .depth = cam->depth,
-                         .threads = o.threads, .quiet = o.quiet, .cutoff = o.have_cutoff ? o.cutoff : cam->cutoff,
-                         .max_rays = o.max_rays, .bands = o.bands > 0 ? o.bands : cam->bands,
-                         .integrator = o.integrator, .waves = o.waves};
-    if (o.width > 0 && o.height > 0) {
-        rs.width = o.width;
-        rs.height = o.height;
-    } else if (o.width > 0) {
-        rs.width = o.width;
-        rs.height = (int)((double)o.width * cam->height / cam->width + 0.5);
-    } else if (o.height > 0) {
-        rs.height = o.height;
-        rs.width = (int)((double)o.height * cam->width / cam->height + 0.5);
-    }
-    if (rs.width < 1)
-        rs.width = 1;
-    if (rs.height < 1)
-        rs.height = 1;
-    if (o.spp > 0)
-        rs.spp = o.spp;
-    if (o.depth >= 0)
-        rs.depth = o.depth;
-    if (o.have_crop) {
-        if (o.crop[2] > rs.width || o.crop[3] > rs.height) {
-            fprintf(stderr, "gtrace: --crop %d,%d,%d,%d reaches outside the %dx%d image\n", o.crop[0], o.crop[1],
-                    o.crop[2], o.crop[3], rs.width, rs.height);
-            scene_destroy(scene);
-            return 2;
-        }
-        memcpy(rs.crop, o.crop, sizeof rs.crop);
-    }
-    double exposure = o.have_exposure ? o.exposure : cam->exposure;
-
+    RenderSettings rs = {0};
+    double exposure = 0.0;
+    int usage = 0;
+    int rc = prepare(&o, &trust, rank == 0, &scene, &rs, &exposure, &usage, &err);
     Framebuffer fb = {0};
-    RenderStats st;
-    int rc = accel_build(scene, &err);
-    if (rc == G_OK)
+    RenderStats st = {0};
+    if (dist) {
+        uint64_t digest = rc == G_OK ? dist_digest(o.scene, o.colormodel, &rs) : 0;
+        rc = dist_render(dist, &o.dist, rc, err.message, digest, scene, &rs, &fb, &st, &err);
+        usage = 0;
+    } else if (rc == G_OK) {
         rc = render_image(scene, &rs, &fb, &st, &err);
+    }
     if (rc == G_OK)
         rc = output_write(o.out, &fb, exposure, o.have_display ? &o.display : NULL, &err);
-    if (rc != G_OK) {
+    if (rc == G_OK)
+        report(&o, scene, &rs, &fb, &st, dist ? dist_size(dist) : 0);
+    else if (rc < 0)
         fprintf(stderr, "gtrace: %s\n", err.message);
-        framebuffer_free(&fb);
-        scene_destroy(scene);
-        return 1;
-    }
-    if (st.capped)
-        fprintf(stderr, "gtrace: warning: %llu camera samples reached the limit of %d reflected and refracted "
-                "rays per sample; their deeper branches were not traced (raise --cutoff, lower --depth, or "
-                "raise --max-rays)\n", (unsigned long long)st.capped, rs.max_rays > 0 ? rs.max_rays : RENDER_DEFAULT_MAX_RAYS);
-    if (st.nonfinite)
-        fprintf(stderr, "gtrace: warning: %llu samples were NaN or infinite and were replaced by black\n",
-                (unsigned long long)st.nonfinite);
-    if (!o.quiet)
-        printf("gtrace: %s %dx%d, %d spp, depth %d, %s, %d threads: %.2f s, %.2f M rays, %.2f M rays/s, "
-               "%llu non-finite\n",
-               o.out, fb.width, fb.height, rs.spp, rs.depth, gcolormodel_name(scene->model), st.threads, st.seconds,
-               st.rays * 1e-6, st.seconds > 0 ? st.rays * 1e-6 / st.seconds : 0.0,
-               (unsigned long long)st.nonfinite);
     framebuffer_free(&fb);
     scene_destroy(scene);
-    return 0;
+    dist_finish(dist);
+    return rc == G_OK || rc == DIST_SENT ? 0 : usage ? 2 : 1;
 }

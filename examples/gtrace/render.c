@@ -22,7 +22,7 @@ typedef struct Job {
     const Scene *scene;
     const Camera *cam;
     Framebuffer *fb;
-    int spp, depth, ntx, max_rays, integrator;
+    int spp, depth, max_rays, integrator;
     int x0, y0; /* the crop's origin in the full image */
     Media media0;
 } Job;
@@ -51,7 +51,7 @@ static int render_pixel(TraceCtx *c, const Job *job, int x, int y, int *perm, ui
         c->rays_left = job->max_rays;
         c->capped = 0;
         rc = job->integrator == RENDER_PATH
-                 ? path_trace(c, &r, &job->media0, (uint64_t)y * (uint64_t)job->fb->width + (uint64_t)x, i, &sample)
+                 ? path_trace(c, &r, &job->media0, (uint64_t)y * (uint64_t)job->fb->full_width + (uint64_t)x, i, &sample)
                  : trace_ray(c, &r, &job->media0, 0, &sample);
         *capped += (uint64_t)c->capped;
         gscratch_release(c->scratch, m2);
@@ -111,45 +111,26 @@ void render_tile_order(int n, int *order)
     }
 }
 
-void framebuffer_free(Framebuffer *fb)
-{
-    if (!fb)
-        return;
-    gmem_free(fb->pixels);
-    gmem_free(fb->waves);
-    gmem_free(fb->wavelengths);
-    fb->pixels = fb->waves = NULL;
-    fb->wavelengths = NULL;
-    fb->nwaves = 0;
-}
+/* One thread's state, kept from one region to the next. */
+typedef struct Worker {
+    TraceCtx ctx;
+    int *perm;
+    uint64_t nonfinite, capped;
+} Worker;
 
-/* fb->waves and fb->wavelengths for the model's wavelengths, within the image memory budget. */
-static int alloc_waves(Framebuffer *fb, const GColorModel *m, GError *err)
-{
-    int n = gcolormodel_wavelengths(m, NULL, 0);
-    if (n < 1)
-        return gerror_set(err, G_ERR_UNSUPPORTED, "--spectral: the colour model '%s' has no wavelength samples to "
-                          "write (choose one that has, with --colormodel)", gcolormodel_name(m));
-    size_t bytes = (size_t)fb->width * (size_t)fb->height * (size_t)n * sizeof(float);
-    if (bytes > gimage_memory_budget())
-        return gerror_set(err, G_ERR_NOMEM, "--spectral: %d values per pixel of a %dx%d image take %zu MiB, more than "
-                          "the image memory budget of %zu MiB (GENERIC_IMAGE_BUDGET_MB)", n, fb->width, fb->height,
-                          bytes >> 20, gimage_memory_budget() >> 20);
-    fb->wavelengths = gmem_alloc((size_t)n * sizeof(double));
-    fb->waves = gmem_calloc(bytes / sizeof(float), sizeof(float));
-    if (!fb->wavelengths || !fb->waves)
-        return gerror_set(err, G_ERR_NOMEM, "--spectral: out of memory for %d values per pixel of a %dx%d image", n,
-                          fb->width, fb->height);
-    fb->nwaves = gcolormodel_wavelengths(m, fb->wavelengths, n);
-    return G_OK;
-}
+struct Renderer {
+    Job job;
+    Camera cam;
+    Bands bands;
+    Worker *workers;
+    int nthreads, status;
+    const char *culprit;
+    double seconds;
+};
 
-int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, RenderStats *st, GError *err)
+/* The settings' checks; G_OK or G_ERR_INVALID. */
+static int check_render_settings(const RenderSettings *rs, GError *err)
 {
-    memset(st, 0, sizeof *st);
-    fb->pixels = fb->waves = NULL;
-    fb->wavelengths = NULL;
-    fb->nwaves = 0;
     if (rs->width < 1 || rs->height < 1 || rs->width > 65536 || rs->height > 65536)
         return gerror_set(err, G_ERR_INVALID, "image size %dx%d is out of range (1..65536)", rs->width, rs->height);
     if (rs->spp < 1 || rs->spp > 65536)
@@ -161,72 +142,124 @@ int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, Rend
     if (rs->max_rays < 0 || rs->max_rays > RENDER_LIMIT_MAX_RAYS)
         return gerror_set(err, G_ERR_INVALID, "rays per sample %d out of range (1..%d)", rs->max_rays,
                           RENDER_LIMIT_MAX_RAYS);
-    int cx0 = 0, cy0 = 0, cx1 = rs->width, cy1 = rs->height;
     if (rs->crop[0] || rs->crop[1] || rs->crop[2] || rs->crop[3]) {
-        cx0 = rs->crop[0], cy0 = rs->crop[1], cx1 = rs->crop[2], cy1 = rs->crop[3];
-        if (cx0 < 0 || cy0 < 0 || cx0 >= cx1 || cy0 >= cy1 || cx1 > rs->width || cy1 > rs->height)
-            return gerror_set(err, G_ERR_INVALID, "crop %d,%d,%d,%d is not a non-empty region of the %dx%d image", cx0,
-                              cy0, cx1, cy1, rs->width, rs->height);
+        const int *c = rs->crop;
+        if (c[0] < 0 || c[1] < 0 || c[0] >= c[2] || c[1] >= c[3] || c[2] > rs->width || c[3] > rs->height)
+            return gerror_set(err, G_ERR_INVALID, "crop %d,%d,%d,%d is not a non-empty region of the %dx%d image", c[0],
+                              c[1], c[2], c[3], rs->width, rs->height);
     }
     if (rs->bands < 0 || rs->bands > BANDS_LIMIT)
         return gerror_set(err, G_ERR_INVALID, "wavelength bands %d out of range (1..%d)", rs->bands, BANDS_LIMIT);
-    Bands bands;
-    int rc0 = bands_init(&bands, s->model, rs->bands, err);
-    if (rc0 != G_OK)
-        return rc0;
-    Camera cam = s->camera;
-    camera_setup(&cam, rs->width, rs->height);
-    fb->width = cx1 - cx0;
-    fb->height = cy1 - cy0;
-    fb->x = cx0;
-    fb->y = cy0;
+    return G_OK;
+}
+
+void renderer_destroy(Renderer *r)
+{
+    if (!r)
+        return;
+    for (int i = 0; r->workers && i < r->nthreads; i++) {
+        gcolor_free(&r->workers[i].ctx.unit);
+        gmem_free(r->workers[i].perm);
+        gscratch_destroy(r->workers[i].ctx.scratch);
+    }
+    gmem_free(r->workers);
+    bands_free(&r->bands);
+    gmem_free(r);
+}
+
+/* fb->wavelengths and fb->nwaves for the model's wavelengths (framebuffer_alloc then allocates fb->waves), within
+ * the image memory budget. */
+static int set_wavelengths(Framebuffer *fb, const GColorModel *m, GError *err)
+{
+    int n = gcolormodel_wavelengths(m, NULL, 0);
+    if (n < 1)
+        return gerror_set(err, G_ERR_UNSUPPORTED, "--spectral: the colour model '%s' has no wavelength samples to "
+                          "write (choose one that has, with --colormodel)", gcolormodel_name(m));
+    size_t bytes = (size_t)fb->width * (size_t)fb->height * (size_t)n * sizeof(float);
+    if (bytes > gimage_memory_budget())
+        return gerror_set(err, G_ERR_NOMEM, "--spectral: %d values per pixel of a %dx%d image take %zu MiB, more than "
+                          "the image memory budget of %zu MiB (GENERIC_IMAGE_BUDGET_MB)", n, fb->width, fb->height,
+                          bytes >> 20, gimage_memory_budget() >> 20);
+    if (!(fb->wavelengths = gmem_alloc((size_t)n * sizeof(double))))
+        return gerror_set(err, G_ERR_NOMEM, "--spectral: out of memory for %d wavelengths", n);
+    fb->nwaves = gcolormodel_wavelengths(m, fb->wavelengths, n);
+    return G_OK;
+}
+
+int renderer_create(Renderer **out, const Scene *s, const RenderSettings *rs, Framebuffer *fb, GError *err)
+{
+    *out = NULL;
+    *fb = (Framebuffer){0};
+    int rc = check_render_settings(rs, err);
+    if (rc != G_OK)
+        return rc;
+    Renderer *r = gmem_calloc(1, sizeof *r);
+    if (!r)
+        return gerror_set(err, G_ERR_NOMEM, "out of memory for the renderer");
+    if ((rc = bands_init(&r->bands, s->model, rs->bands, err)) != G_OK) {
+        gmem_free(r);
+        return rc;
+    }
+    r->cam = s->camera;
+    camera_setup(&r->cam, rs->width, rs->height);
+    int cropped = rs->crop[0] || rs->crop[1] || rs->crop[2] || rs->crop[3];
+    fb->x = cropped ? rs->crop[0] : 0;
+    fb->y = cropped ? rs->crop[1] : 0;
+    fb->width = (cropped ? rs->crop[2] : rs->width) - fb->x;
+    fb->height = (cropped ? rs->crop[3] : rs->height) - fb->y;
     fb->full_width = rs->width;
     fb->full_height = rs->height;
-    if (rs->waves && (rc0 = alloc_waves(fb, s->model, err)) != G_OK) { /* first: its budget is the larger */
-        framebuffer_free(fb);
-        bands_free(&bands);
-        return rc0;
+    r->job = (Job){.scene = s, .cam = &r->cam, .fb = fb, .spp = rs->spp, .depth = rs->depth,
+                   .max_rays = rs->max_rays > 0 ? rs->max_rays : RENDER_DEFAULT_MAX_RAYS, .x0 = fb->x, .y0 = fb->y,
+                   .integrator = rs->integrator};
+    if (s->medium) {
+        r->job.media0.m[0] = s->medium;
+        r->job.media0.n = 1;
     }
-    fb->pixels = gmem_calloc((size_t)fb->width * (size_t)fb->height * 3, sizeof(float));
-    if (!fb->pixels) {
+    r->nthreads = rs->threads > 0 ? rs->threads : omp_get_max_threads();
+    r->workers = gmem_calloc((size_t)r->nthreads, sizeof *r->workers);
+    int ok = r->workers != NULL;
+    for (int i = 0; ok && i < r->nthreads; i++) {
+        Worker *w = &r->workers[i];
+        w->ctx = (TraceCtx){.scene = s, .max_depth = rs->depth, .cutoff = rs->cutoff, .bands = &r->bands, .band = -1};
+        w->ctx.scratch = gscratch_create(0);
+        w->perm = gmem_alloc((size_t)rs->spp * sizeof(int));
+        ok = w->ctx.scratch && w->perm && gcolor_alloc(&w->ctx.unit, s->model) == G_OK &&
+             gmaterial_refraction_index(NULL, NULL, &w->ctx.unit) == G_OK;
+    }
+    if (ok && rs->waves && (rc = set_wavelengths(fb, s->model, err)) != G_OK) {
         framebuffer_free(fb);
-        bands_free(&bands);
+        renderer_destroy(r);
+        return rc;
+    }
+    if (!ok || framebuffer_alloc(fb) != 0) {
+        framebuffer_free(fb);
+        renderer_destroy(r);
         return gerror_set(err, G_ERR_NOMEM, "out of memory for a %dx%d image", fb->width, fb->height);
     }
-    Job job = {.scene = s, .cam = &cam, .fb = fb, .spp = rs->spp, .depth = rs->depth,
-               .max_rays = rs->max_rays > 0 ? rs->max_rays : RENDER_DEFAULT_MAX_RAYS, .x0 = cx0, .y0 = cy0,
-               .integrator = rs->integrator};
-    job.ntx = (fb->width + TILE - 1) / TILE;
-    int nty = (fb->height + TILE - 1) / TILE, ntiles = job.ntx * nty;
+    *out = r;
+    return G_OK;
+}
+
+int renderer_region(Renderer *r, const int region[4], Progress *prog, GError *err)
+{
+    const Framebuffer *fb = r->job.fb;
+    int rx0 = region[0], ry0 = region[1], rx1 = region[2], ry1 = region[3];
+    if (rx0 < fb->x || ry0 < fb->y || rx0 >= rx1 || ry0 >= ry1 || rx1 > fb->x + fb->width ||
+        ry1 > fb->y + fb->height)
+        return gerror_set(err, G_ERR_INVALID, "region %d,%d,%d,%d is not a non-empty part of the rendered %d,%d,%d,%d",
+                          rx0, ry0, rx1, ry1, fb->x, fb->y, fb->x + fb->width, fb->y + fb->height);
+    int ntx = (rx1 - rx0 + TILE - 1) / TILE, nty = (ry1 - ry0 + TILE - 1) / TILE, ntiles = ntx * nty;
     int *order = gmem_alloc((size_t)ntiles * sizeof(int));
-    if (!order) {
-        framebuffer_free(fb);
-        bands_free(&bands);
+    if (!order)
         return gerror_set(err, G_ERR_NOMEM, "out of memory for the tile list");
-    }
     render_tile_order(ntiles, order);
-    if (s->medium) {
-        job.media0.m[0] = s->medium;
-        job.media0.n = 1;
-    }
-    int nthreads = rs->threads > 0 ? rs->threads : omp_get_max_threads();
-    int status = G_OK;
+    int status = r->status;
     const char *culprit = NULL;
-    uint64_t rays = 0, nonfinite = 0, capped = 0;
-    Progress prog;
-    progress_start(&prog, (long)fb->width * fb->height, rs->quiet); /* in pixels */
     double t0 = now_seconds();
-#pragma omp parallel num_threads(nthreads) reduction(+ : rays, nonfinite, capped)
+#pragma omp parallel num_threads(r->nthreads)
     {
-        TraceCtx ctx = {.scene = s, .max_depth = rs->depth, .cutoff = rs->cutoff, .bands = &bands, .band = -1};
-        ctx.scratch = gscratch_create(0);
-        int *perm = gmem_alloc((size_t)rs->spp * sizeof(int));
-        int ok = ctx.scratch && perm && gcolor_alloc(&ctx.unit, s->model) == G_OK &&
-                 gmaterial_refraction_index(NULL, NULL, &ctx.unit) == G_OK;
-        if (!ok) {
-#pragma omp critical(gtrace_status)
-            status = G_ERR_NOMEM;
-        }
+        Worker *w = &r->workers[omp_get_thread_num()];
 #pragma omp for schedule(dynamic, 1)
         for (int tile = 0; tile < ntiles; tile++) {
             int st_now;
@@ -234,43 +267,68 @@ int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, Rend
             st_now = status;
             if (st_now != G_OK)
                 continue; /* a thread failed: finish quickly */
-            int x0 = cx0 + (order[tile] % job.ntx) * TILE, y0 = cy0 + (order[tile] / job.ntx) * TILE;
-            int x1 = x0 + TILE < cx1 ? x0 + TILE : cx1;
-            int y1 = y0 + TILE < cy1 ? y0 + TILE : cy1;
+            int x0 = rx0 + (order[tile] % ntx) * TILE, y0 = ry0 + (order[tile] / ntx) * TILE;
+            int x1 = x0 + TILE < rx1 ? x0 + TILE : rx1;
+            int y1 = y0 + TILE < ry1 ? y0 + TILE : ry1;
             int rc = G_OK;
             for (int y = y0; y < y1 && rc == G_OK; y++)
                 for (int x = x0; x < x1 && rc == G_OK; x++)
-                    rc = render_pixel(&ctx, &job, x, y, perm, &nonfinite, &capped);
+                    rc = render_pixel(&w->ctx, &r->job, x, y, w->perm, &w->nonfinite, &w->capped);
             if (rc != G_OK) {
 #pragma omp critical(gtrace_status)
                 {
                     if (status == G_OK) {
                         status = rc;
-                        culprit = ctx.culprit;
+                        culprit = w->ctx.culprit;
                     }
                 }
             }
+            if (prog) {
 #pragma omp critical(gtrace_progress)
-            progress_add(&prog, (long)(x1 - x0) * (y1 - y0));
+                progress_add(prog, (long)(x1 - x0) * (y1 - y0));
+            }
         }
-        rays += ctx.rays;
-        gcolor_free(&ctx.unit);
-        gmem_free(perm);
-        gscratch_destroy(ctx.scratch);
     }
-    progress_finish(&prog);
-    bands_free(&bands);
+    r->seconds += now_seconds() - t0;
     gmem_free(order);
-    st->seconds = now_seconds() - t0;
-    st->rays = rays;
-    st->nonfinite = nonfinite;
-    st->capped = capped;
-    st->threads = nthreads;
-    if (status != G_OK) {
-        framebuffer_free(fb);
-        if (culprit)
-            return gerror_set(err, status, "rendering failed in a '%s' material: %s", culprit, gstatus_string(status));
-        return gerror_set(err, status, "rendering failed: %s", gstatus_string(status));
+    if (status != G_OK && r->status == G_OK) {
+        r->status = status;
+        r->culprit = culprit;
     }
-    return G_OK;
+    if (status == G_OK)
+        return G_OK;
+    if (r->culprit)
+        return gerror_set(err, status, "rendering failed in a '%s' material: %s", r->culprit, gstatus_string(status));
+    return gerror_set(err, status, "rendering failed: %s", gstatus_string(status));
+}
+
+void renderer_stats(const Renderer *r, RenderStats *st)
+{
+    memset(st, 0, sizeof *st);
+    for (int i = 0; i < r->nthreads; i++) {
+        st->rays += r->workers[i].ctx.rays;
+        st->nonfinite += r->workers[i].nonfinite;
+        st->capped += r->workers[i].capped;
+    }
+    st->seconds = r->seconds;
+    st->threads = r->nthreads;
+}
+
+int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, RenderStats *st, GError *err)
+{
+    memset(st, 0, sizeof *st);
+    Renderer *r;
+    int rc = renderer_create(&r, s, rs, fb, err);
+    if (rc != G_OK)
+        return rc;
+    int all[4] = {fb->x, fb->y, fb->x + fb->width, fb->y + fb->height};
+    Progress prog;
+    progress_start(&prog, (long)fb->width * fb->height, rs->quiet); /* in pixels */
+    rc = renderer_region(r, all, &prog, err);
+    progress_finish(&prog);
+    renderer_stats(r, st);
+    renderer_destroy(r);
+    if (rc != G_OK)
+        framebuffer_free(fb);
+    return rc;
 }

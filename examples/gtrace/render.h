@@ -3,6 +3,8 @@
 #define GTRACE_RENDER_H
 
 #include "bands.h"
+#include "framebuffer.h"
+#include "progress.h"
 #include "scene.h"
 
 #include <generic/error.h>
@@ -29,19 +31,6 @@ typedef struct RenderSettings {
     int waves;     /**< 1: also keep each pixel's values at the colour model's wavelengths (--spectral) */
 } RenderSettings;
 
-/** Linear sRGB pixels (from the model's XYZ), row by row from the top. */
-typedef struct Framebuffer {
-    int width, height;
-    float *pixels; /**< 3 floats per pixel */
-    int x, y;                    /**< where pixel (0, 0) lies in the full image (a crop; else 0, 0) */
-    int full_width, full_height; /**< the full image's size */
-    /** With RenderSettings.waves: nwaves values per pixel at the colour model's wavelengths (in nm, nwaves of
-     * them), pixel by pixel in the order of pixels, the light as the model has it; else NULL and 0. */
-    float *waves;
-    double *wavelengths;
-    int nwaves;
-} Framebuffer;
-
 typedef struct RenderStats {
     double seconds;
     uint64_t rays;
@@ -57,7 +46,24 @@ int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, Rend
 /** The order in which the tiles are rendered: a fixed shuffle of 0..n-1 (the same for every run), so that the
  * finished fraction of tiles follows the work done wherever the expensive parts of the image lie. */
 void render_tile_order(int n, int *order);
-/** Frees the pixels and the values at wavelengths (NULL or a zeroed framebuffer: no-op). */
-void framebuffer_free(Framebuffer *fb);
+/** A render in parts: the settings checked, the camera, the wavelength bands and one tracing state per thread
+ * set up once, then any regions of the image rendered into one framebuffer (dist.c renders the tiles a process
+ * is given so). */
+typedef struct Renderer Renderer;
+
+/** Checks the settings and sets up a renderer for them; allocates fb's arrays (zeroed) for the image or its
+ * crop. G_ERR_INVALID for bad settings, G_ERR_NOMEM. Destroy with renderer_destroy, fb with framebuffer_free. */
+int renderer_create(Renderer **out, const Scene *s, const RenderSettings *rs, Framebuffer *fb, GError *err);
+
+/** Renders the pixels x0 <= x < x1, y0 <= y < y1 of region (full-image coordinates, inside the framebuffer)
+ * in 16x16 tiles shared among the threads; adds the pixels done to prog (NULL: none). After a failure every
+ * later call fails too, with the first error. */
+int renderer_region(Renderer *r, const int region[4], Progress *prog, GError *err);
+
+/** The rays, non-finite and capped samples of every region so far, the seconds spent in them, the threads. */
+void renderer_stats(const Renderer *r, RenderStats *st);
+
+/** Frees the renderer (not the framebuffer); NULL is a no-op. */
+void renderer_destroy(Renderer *r);
 
 #endif

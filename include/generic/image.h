@@ -135,6 +135,19 @@ GENERIC_API GENERIC_NODISCARD int gimage_read(const char *path, unsigned flags, 
  * 1 or more than the file can hold, G_ERR_NOMEM when the image would exceed the memory budget. */
 GENERIC_API GENERIC_NODISCARD int gimage_info(const char *path, int *width, int *height, int *channels, GError *err);
 
+/** Where an image file's pixels lie in its full picture: OpenEXR's data window inside its display window (a crop
+ * written with GImageWriteOptions' x, y, full_width, full_height). Formats without windows report the image as
+ * the whole picture (x = y = 0, full size = size). */
+typedef struct GImageWindow {
+    int x, y;                    /**< the top-left pixel of the data, relative to the display window's corner */
+    int width, height;           /**< the data's size: what gimage_read returns */
+    int full_width, full_height; /**< the display window's size */
+} GImageWindow;
+
+/** Reads the data and display windows of a file's header, with the checks of gimage_info. G_ERR_IO when the
+ * file cannot be opened or its header is refused, G_ERR_NOMEM as gimage_info. */
+GENERIC_API GENERIC_NODISCARD int gimage_window(const char *path, GImageWindow *win, GError *err);
+
 /** Writes img to path, encoding chosen by the extension (see the top of this file); the file appears
  * complete or not at all. G_ERR_INVALID for a bad image, G_ERR_IO when the format is unknown, the
  * destination cannot be written or the write fails. */

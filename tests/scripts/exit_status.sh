@@ -45,7 +45,7 @@ printf 'camera pinhole { from <0, 1, 4> at <0, 0.5, 0> fov 40 width 32 height 24
 printf 'not an image' > "$TMP/bad.hdr"
 
 # ---- every tool and command: --help, --version, an unknown option (also as the last argument) ----
-for cmd in "gtrace" "gcolor" "gcolor list" "gcolor check" "gmat" "gmat eval" "gmat albedo" "gmat plot" "gmat list" \
+for cmd in "gtrace" "gtrace merge" "gcolor" "gcolor list" "gcolor check" "gmat" "gmat eval" "gmat albedo" "gmat plot" "gmat list" \
            "gmat check" "gmat types" "gmat swatch" "gmat laser" "gprobe" "gprobe eval" "gprobe approx" \
            "gprobe irradiance" "gprobe convert" "gprobe compare" "gprobe sky"; do
     tool=${cmd%% *}

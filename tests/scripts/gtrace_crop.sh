@@ -1,7 +1,8 @@
 #!/bin/sh
 # gtrace_crop.sh BUILD - `gtrace --crop X0,Y0,X1,Y1`: the output has the region's size, an EXR records it as its
 # data window inside the full image's display window, and its pixels are bit-identical to the same pixels of the
-# full render (whatever the thread count and however the region cuts the 16x16 tiles); bad regions exit 2.
+# full render (whatever the thread count and however the region cuts the 16x16 tiles), for the Whitted and the path
+# integrators; bad regions exit 2.
 BUILD=${1:-build}
 GT="$BUILD/bin/gtrace"
 [ -x "$GT" ] || { echo "FAIL: $GT is not built"; exit 1; }
@@ -44,6 +45,13 @@ check_crop 0 0 120 "$H" 2
 check_crop 37 5 119 63 2
 check_crop 100 30 101 31 2
 
+# the path integrator seeds each pixel from its index in the full image, so its crops agree with the full render too
+"$GT" "$SCENE" -q -o "$TMP/path_full.exr" --width 120 --spp 2 --integrator path || fail "the full path render failed"
+"$GT" "$SCENE" -q -o "$TMP/path_crop.exr" --width 120 --spp 2 --integrator path --crop 37,5,119,63 ||
+    fail "the path crop failed"
+d=$(oiiotool "$TMP/path_full.exr" --cut 82x58+37+5 "$TMP/path_crop.exr" --cut 82x58+37+5 --fail 0 --diff 2>&1)
+echo "$d" | grep -q '^PASS' || fail "--integrator path --crop 37,5,119,63: pixels differ from the full render: $d"
+
 # two crops rendered apart merge into the full image (disjoint data windows: added, black outside each)
 "$GT" "$SCENE" -q -o "$TMP/left.exr" --width 120 --spp 2 --crop "0,0,61,$H" &&
     "$GT" "$SCENE" -q -o "$TMP/right.exr" --width 120 --spp 2 --crop "61,0,120,$H" ||
@@ -62,5 +70,5 @@ for bad in 5,5,5,9 10,10,2,20 0,0,121,10 1,2,3 a,b,c,d 0,0,10,10,3 -1,0,4,4; do
     grep -q -- "--crop" "$TMP/err" || fail "--crop $bad: the message does not name --crop: $(cat "$TMP/err")"
     [ -e "$TMP/bad.png" ] && fail "--crop $bad: an image was written"
 done
-[ $fails -eq 0 ] && echo "gtrace_crop: 4 crops bit-identical to the full render, data windows recorded, two halves merge, 7 bad regions refused"
+[ $fails -eq 0 ] && echo "gtrace_crop: 4 Whitted crops and a path crop bit-identical to the full render, data windows recorded, two halves merge, 7 bad regions refused"
 exit $fails

@@ -1,0 +1,79 @@
+#!/bin/sh
+# gtrace_merge.sh BUILD - region rendering for job schedulers (docs/distributed.md): four --crop pieces rendered
+# as separate processes at once (an array job's tasks) and joined by `gtrace merge` equal the full render pixel by
+# pixel, for the Whitted and the path integrators; overlapping, missing and mismatched pieces are refused with a
+# message naming them (exit 1) and nothing is written; usage errors exit 2.
+# shellcheck disable=SC2086 # option lists ($ARGS, $MPIRUN, ...) are split into words on purpose
+set -u
+BUILD=${1:-build}
+GT="$BUILD/bin/gtrace"
+[ -x "$GT" ] || { echo "FAIL: $GT is not built"; exit 1; }
+command -v oiiotool > /dev/null || { echo "FAIL: oiiotool (openimageio-tools, scripts/deps.sh) is missing"; exit 1; }
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+fails=0
+fail() {
+    echo "FAIL: $*"
+    fails=$((fails + 1))
+}
+SCENE=examples/scenes/demo.scene
+ARGS="--width 96 --spp 2 --threads 1 -q"
+W=96
+H=$("$GT" "$SCENE" $ARGS -o "$TMP/probe.exr" && oiiotool --info "$TMP/probe.exr" | sed -n 's/.*: *[0-9]* x *\([0-9]*\),.*/\1/p')
+[ -n "$H" ] || { echo "FAIL: no image height"; exit 1; }
+
+for integ in whitted path; do
+    "$GT" "$SCENE" $ARGS --integrator $integ -o "$TMP/full.exr" || fail "the full $integ render failed"
+    # four tasks of an array job: quadrants cut off the 16-pixel tile grid, rendered at the same time
+    i=0
+    for crop in "0,0,41,29" "41,0,$W,29" "0,29,41,$H" "41,29,$W,$H"; do
+        "$GT" "$SCENE" $ARGS --integrator $integ --crop "$crop" -o "$TMP/piece$i.exr" &
+        i=$((i + 1))
+    done
+    wait
+    # given in any order
+    "$GT" merge "$TMP/piece3.exr" "$TMP/piece1.exr" "$TMP/piece0.exr" "$TMP/piece2.exr" -o "$TMP/merged.exr" \
+        > "$TMP/log" 2>&1 || fail "$integ: merging four pieces failed: $(cat "$TMP/log")"
+    grep -q "merged.exr ${W}x$H from 4 pieces" "$TMP/log" || fail "$integ: no summary line: $(cat "$TMP/log")"
+    d=$(oiiotool "$TMP/full.exr" "$TMP/merged.exr" --fail 0 --diff 2>&1)
+    echo "$d" | grep -q '^PASS' || fail "$integ: the merged pieces differ from the full render: $(echo "$d" | tail -3)"
+    info=$(oiiotool --info -v "$TMP/merged.exr")
+    echo "$info" | grep -q ": *$W x *$H, 3 channel, float" || fail "$integ: the merged image is not $W x $H float: $info"
+done
+# the comparison can fail: a piece of the Whitted render merged into the path one differs
+cp "$TMP/piece0.exr" "$TMP/keep0.exr"
+"$GT" "$SCENE" $ARGS --crop 0,0,41,29 -o "$TMP/piece0.exr" || fail "a Whitted piece failed"
+"$GT" merge -q "$TMP/piece0.exr" "$TMP/piece1.exr" "$TMP/piece2.exr" "$TMP/piece3.exr" -o "$TMP/mixed.exr" ||
+    fail "merging a mixed set failed"
+oiiotool "$TMP/full.exr" "$TMP/mixed.exr" --fail 0 --diff 2>&1 | grep -q '^PASS' &&
+    fail "a merge with a piece of another render equals the full render (the check is blind)"
+cp "$TMP/keep0.exr" "$TMP/piece0.exr"
+
+refused() { # WHAT MESSAGE PIECES...: gtrace merge exits 1 with MESSAGE and writes nothing
+    what=$1 msg=$2
+    shift 2
+    rm -f "$TMP/out.exr"
+    "$GT" merge "$@" -o "$TMP/out.exr" > "$TMP/log" 2>&1
+    st=$?
+    [ $st -eq 1 ] || fail "$what: exit status $st, expected 1"
+    grep -q -- "$msg" "$TMP/log" || fail "$what: no message '$msg': $(cat "$TMP/log")"
+    [ -e "$TMP/out.exr" ] && fail "$what: an image was written"
+}
+"$GT" "$SCENE" $ARGS --crop "40,0,$W,29" -o "$TMP/wide1.exr" || fail "the overlapping piece failed"
+refused "overlapping pieces" "piece0.exr and .*wide1.exr overlap (pixels 40,0 to 40,28" \
+    "$TMP/piece0.exr" "$TMP/wide1.exr" "$TMP/piece2.exr" "$TMP/piece3.exr"
+refused "a missing piece" "leave $((41 * 29)) of the ${W}x$H image's pixels uncovered, the first at 0,0" \
+    "$TMP/piece1.exr" "$TMP/piece2.exr" "$TMP/piece3.exr"
+"$GT" "$SCENE" --width 80 --spp 1 --threads 1 -q --crop 0,0,41,29 -o "$TMP/other.exr" || fail "the other piece failed"
+refused "a piece of another image size" "other.exr is a piece of a 80x.* image, .*piece0.exr of a ${W}x$H one" \
+    "$TMP/piece0.exr" "$TMP/other.exr" "$TMP/piece2.exr" "$TMP/piece3.exr"
+refused "an unreadable piece" "absent.exr" "$TMP/absent.exr" "$TMP/piece1.exr"
+"$GT" merge "$TMP/piece0.exr" > "$TMP/log" 2>&1
+[ $? -eq 2 ] || fail "gtrace merge without -o: not exit status 2"
+"$GT" merge -o "$TMP/out.exr" > "$TMP/log" 2>&1
+[ $? -eq 2 ] || fail "gtrace merge without pieces: not exit status 2"
+grep -q "no pieces given" "$TMP/log" || fail "gtrace merge without pieces: $(cat "$TMP/log")"
+
+[ $fails -eq 0 ] && echo "gtrace_merge: four pieces rendered apart merge bit-identically (Whitted, path);" \
+    "overlap, gap, another size and an unreadable piece refused; usage errors exit 2"
+exit $fails
