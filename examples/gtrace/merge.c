@@ -93,8 +93,15 @@ static int assemble(char **paths, int n, const GImageWindow *win, GImage *full, 
     full->pixels = NULL;
     for (int i = 0; i < n; i++) {
         GImage piece;
-        int rc = gimage_read(paths[i], 0, &piece, err);
+        int w, h, channels;
+        int rc = gimage_info(paths[i], &w, &h, &channels, err);
         if (rc != G_OK)
+            return rc;
+        if (channels > 4) /* gimage_read keeps the colour channels only: refuse rather than drop the rest */
+            return gerror_set(err, G_ERR_UNSUPPORTED, "%s has %d channels (values at wavelengths, --spectral?): gtrace "
+                              "merge joins colour channels only; join such pieces with `oiiotool PIECE1 PIECE2 --add "
+                              "PIECE3 --add ... -o OUT` (docs/distributed.md)", paths[i], channels);
+        if ((rc = gimage_read(paths[i], 0, &piece, err)) != G_OK)
             return rc;
         if (piece.width != win[i].width || piece.height != win[i].height) {
             gimage_free(&piece);

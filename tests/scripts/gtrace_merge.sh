@@ -68,6 +68,16 @@ refused "a missing piece" "leave $((41 * 29)) of the ${W}x$H image's pixels unco
 refused "a piece of another image size" "other.exr is a piece of a 80x.* image, .*piece0.exr of a ${W}x$H one" \
     "$TMP/piece0.exr" "$TMP/other.exr" "$TMP/piece2.exr" "$TMP/piece3.exr"
 refused "an unreadable piece" "absent.exr" "$TMP/absent.exr" "$TMP/piece1.exr"
+# spectral pieces: refused by gtrace merge (it would drop their spectral channels); the documented oiiotool route
+# keeps every channel and equals the full render
+SPEC="--colormodel spectrum --spectral"
+"$GT" "$SCENE" $ARGS $SPEC -o "$TMP/spec_full.exr" || fail "the full --spectral render failed"
+"$GT" "$SCENE" $ARGS $SPEC --crop "0,0,41,$H" -o "$TMP/spec_a.exr" || fail "a --spectral piece failed"
+"$GT" "$SCENE" $ARGS $SPEC --crop "41,0,$W,$H" -o "$TMP/spec_b.exr" || fail "a --spectral piece failed"
+refused "spectral pieces" "spec_a.exr has [0-9]* channels (values at wavelengths" "$TMP/spec_a.exr" "$TMP/spec_b.exr"
+oiiotool "$TMP/spec_a.exr" "$TMP/spec_b.exr" --add -o "$TMP/spec_join.exr" || fail "oiiotool --add failed"
+oiiotool "$TMP/spec_full.exr" "$TMP/spec_join.exr" --fail 0 --diff 2>&1 | grep -q '^PASS' ||
+    fail "the oiiotool join of --spectral pieces differs from the full render"
 "$GT" merge "$TMP/piece0.exr" > "$TMP/log" 2>&1
 [ $? -eq 2 ] || fail "gtrace merge without -o: not exit status 2"
 "$GT" merge -o "$TMP/out.exr" > "$TMP/log" 2>&1
@@ -75,5 +85,5 @@ refused "an unreadable piece" "absent.exr" "$TMP/absent.exr" "$TMP/piece1.exr"
 grep -q "no pieces given" "$TMP/log" || fail "gtrace merge without pieces: $(cat "$TMP/log")"
 
 [ $fails -eq 0 ] && echo "gtrace_merge: four pieces rendered apart merge bit-identically (Whitted, path);" \
-    "overlap, gap, another size and an unreadable piece refused; usage errors exit 2"
+    "overlap, gap, another size, an unreadable piece and spectral pieces refused; usage errors exit 2"
 exit $fails
