@@ -206,18 +206,11 @@ static int bi_exp(const GColorModel *m, GColor *out, const GColor *a, double s)
     return G_OK;
 }
 
-/* o = s * a + b over n floats (the library's rounding: s * a in double, then the float sum). */
-static void axpy_floats(float *o, double s, const float *a, const float *b, int n)
-{
-    for (int i = 0; i < n; i++)
-        o[i] = b[i] + (float)(a[i] * s);
-}
-
 static int bi_axpy(const GColorModel *m, GColor *out, double s, const GColor *a, const GColor *b)
 {
     int n = m->nsamples;
     if (a->kind == b->kind) {
-        axpy_floats(out->v, s, a->v, b->v, a->kind == GCOLOR_MATRIX ? n * n : n);
+        gspectral_kaxpyd(out->v, s, a->v, b->v, a->kind == GCOLOR_MATRIX ? n * n : n);
         out->kind = a->kind;
         return G_OK;
     }

@@ -1,6 +1,7 @@
 /* color.c - colour model creation, value storage, and dispatch of the generic colour operations. */
 #include "generic/color.h"
 #include "generic/registry.h"
+#include "generic/spectral_kernels.h"
 
 #include <limits.h>
 #include <math.h>
@@ -205,8 +206,7 @@ int gcolor_axpy(GColor *out, double s, const GColor *a, const GColor *b)
         return m->cls->axpy(m, out, s, a, b);
     if (a->kind != GCOLOR_VECTOR || b->kind != GCOLOR_VECTOR)
         return axpy_composed(m, out, s, a, b);
-    for (int i = 0; i < m->nvalues; i++)
-        out->v[i] = b->v[i] + (float)(a->v[i] * s);
+    gspectral_kaxpyd(out->v, s, a->v, b->v, m->nvalues);
     out->kind = GCOLOR_VECTOR;
     return G_OK;
 }
@@ -241,23 +241,9 @@ int gcolor_exp(GColor *out, const GColor *a, double s)
     return G_OK;
 }
 
-int gcolor_is_finite(const GColor *c)
-{
-    size_t n = value_floats(c);
-    for (size_t i = 0; i < n; i++)
-        if (!isfinite(c->v[i]))
-            return 0;
-    return 1;
-}
+int gcolor_is_finite(const GColor *c) { return gspectral_kfinite(c->v, (int)value_floats(c), 0); }
 
-int gcolor_is_nonnegative(const GColor *c)
-{
-    size_t n = value_floats(c);
-    for (size_t i = 0; i < n; i++)
-        if (!isfinite(c->v[i]) || c->v[i] < 0.0f)
-            return 0;
-    return 1;
-}
+int gcolor_is_nonnegative(const GColor *c) { return gspectral_kfinite(c->v, (int)value_floats(c), 1); }
 
 /* ---- conversions ---- */
 

@@ -3,13 +3,18 @@
 #include "generic/material.h"
 
 #include <math.h>
+#include <stddef.h>
 #include <string.h>
 
 enum { HAVE_NORMAL = 1u, HAVE_REL_INDEX = 2u };
 
 void gsurfpoint_init(GSurfPoint *sp, const GColorModel *model, GScratch *scratch)
 {
-    memset(sp, 0, sizeof *sp);
+    /* every field zero but the cache slots' contents and scopes (768 bytes, most of the struct): only the first
+     * ncache of them are ever read, and ncache is 0 */
+    memset(sp, 0, offsetof(GSurfPoint, cache));
+    memset(&sp->object_dpdu, 0, offsetof(GSurfPoint, cache_slot_scope) - offsetof(GSurfPoint, object_dpdu));
+    memset(sp->uv_axis1, 0, sizeof *sp - offsetof(GSurfPoint, uv_axis1));
     sp->model = model;
     sp->scratch = scratch;
     sp->entering = 1;

@@ -214,6 +214,49 @@ static void test_png_exposure_clamp_and_grey(void **state)
     unlink(path_in_dir("neg.pfm"));
 }
 
+/* The code the PNG writer must give a linear value: round(255 * sRGB(clamp(v, 0, 1))), NaN as 0. */
+static int srgb_code(double v)
+{
+    if (!(v > 0.0))
+        v = 0.0;
+    v = gimage_srgb_encode(v);
+    return (int)((v > 1.0 ? 1.0 : v) * 255.0 + 0.5);
+}
+
+/* The writer's table of codes gives exactly the formula's code on both sides of every one of the 255 steps
+ * (values a few ulps and 1e-9 around each step, as floats) and for 0, negatives, NaN, 1 and beyond. */
+static void test_png_codes_match_formula(void **state)
+{
+    (void)state;
+    enum { PER = 8, N = 255 * PER + 6 };
+    GImage a, b;
+    assert_int_equal(gimage_create(&a, N, 1, 1, NULL), G_OK);
+    int n = 0;
+    for (int k = 1; k <= 255; k++) {
+        float t = (float)gimage_srgb_decode((k - 0.5) / 255.0);
+        const float around[PER] = {nextafterf(t, 0.0f), t, nextafterf(t, 1.0f), nextafterf(nextafterf(t, 0.0f), 0.0f),
+                                   t * (1.0f - 1e-6f), t * (1.0f + 1e-6f), t - 1e-9f, t + 1e-9f};
+        for (int i = 0; i < PER; i++)
+            a.pixels[n++] = around[i];
+    }
+    const float odd[6] = {0.0f, -0.5f, NAN, 1.0f, 7.0f, INFINITY};
+    for (int i = 0; i < 6; i++)
+        a.pixels[n++] = odd[i];
+    GError err;
+    assert_int_equal(gimage_write(path_in_dir("codes.png"), &a, NULL, &err), G_OK);
+    assert_int_equal(gimage_read(path_in_dir("codes.png"), GIMAGE_READ_RAW, &b, &err), G_OK);
+    int bad = 0;
+    for (int i = 0; i < N; i++) {
+        int got = (int)lround(b.pixels[(size_t)i * b.channels] * 255.0), want = srgb_code(a.pixels[i]);
+        if (got != want && bad++ < 5)
+            print_message("value %.9g: code %d, formula %d\n", a.pixels[i], got, want);
+    }
+    assert_int_equal(bad, 0);
+    gimage_free(&b);
+    gimage_free(&a);
+    unlink(path_in_dir("codes.png"));
+}
+
 static void test_exr_exposure_and_alpha_drop(void **state)
 {
     (void)state;
@@ -325,6 +368,7 @@ int main(void)
         cmocka_unit_test(test_window_of_a_crop),
         cmocka_unit_test(test_png_round_trip),
         cmocka_unit_test(test_png_exposure_clamp_and_grey),
+        cmocka_unit_test(test_png_codes_match_formula),
         cmocka_unit_test(test_exr_exposure_and_alpha_drop),
         cmocka_unit_test(test_read_errors),
         cmocka_unit_test(test_failed_write_leaves_nothing),

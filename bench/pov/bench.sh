@@ -10,6 +10,10 @@
 #   3. each ratio is computed within a round and the median over the rounds is reported; the table shows the
 #      best (least CPU) run of each configuration.
 # Also: peak RSS of each side, and the mean absolute difference per channel between the two pictures (of 255).
+# Two generated scenes (gen.sh, written into BUILD/bench/pov, never committed) run in the same rounds, 2 threads:
+# a grid of 10,000 spheres and a 1M-triangle mesh (OBJ for gtrace, mesh2 for POV-Ray), each with CPU, wall,
+# render and peak-RSS ratios; and the load check: 200,000 named spheres (naming 1,000 materials) parsed and
+# built (1x1 render), target <= 2 s.
 # A benchmark: it prints figures and never fails on time.
 BUILD=${1:-build}
 RUNS=${RUNS:-5}
@@ -30,6 +34,9 @@ if [ ! -x "$TIME" ]; then
 fi
 HAVE_POV=0
 command -v povray > /dev/null && HAVE_POV=1
+GEN="$BUILD/bench/pov"
+"$DIR/gen.sh" "$GEN" || exit 1
+GEN=$(cd "$GEN" && pwd)
 
 # ---- 1. idle check ----
 load1() { cut -d' ' -f1 /proc/loadavg; }
@@ -74,6 +81,12 @@ ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (b > 0) printf "%.3f", a / b; else
 note() { echo "$2" >> "$TMP/$1.r"; }
 median() { [ -f "$TMP/$1.r" ] && sort -g "$TMP/$1.r" | awk '{ v[NR] = $1 } END { if (NR % 2) printf "%.2f", v[(NR + 1) / 2]; else printf "%.2f", (v[NR / 2] + v[NR / 2 + 1]) / 2 }' || echo "n/a"; }
 
+# absdiff A B: the mean absolute difference per channel of TMP/A.png and TMP/B.png, in 8-bit units
+absdiff() {
+    oiiotool "$TMP/$1.png" "$TMP/$2.png" --absdiff --printstats 2>&1 |
+        sed -n 's/.*Stats Avg: *\([0-9. ]*\)(float).*/\1/p' | awk '{ printf "%.1f %.1f %.1f", $1 * 255, $2 * 255, $3 * 255 }'
+}
+
 POV_ARGS="+W800 +H600 -A -D +FN File_Gamma=sRGB"
 r=0
 while [ $r -lt "$RUNS" ]; do
@@ -90,6 +103,14 @@ while [ $r -lt "$RUNS" ]; do
         # shellcheck disable=SC2086
         once pov_1 povray "+I$DIR/scene.pov" "+O$TMP/pov_1.png" $POV_ARGS +WT1
     fi
+    for g in spheres mesh; do
+        once "gt_$g" "$GT" "$GEN/$g.scene" -o "$TMP/gt_$g.png" --threads 2
+        if [ $HAVE_POV -eq 1 ]; then
+            # shellcheck disable=SC2086
+            once "pov_$g" povray "+I$GEN/$g.pov" "+L$GEN" "+O$TMP/pov_$g.png" $POV_ARGS +WT2
+        fi
+    done
+    once gt_load "$GT" "$GEN/load.scene" -o "$TMP/gt_load.png" --threads 2
     once gt_start "$GT" --help
     # this round's ratios
     last() { tail -n 1 "$TMP/$1.runs" | cut -d' ' -f"$2"; }
@@ -107,6 +128,12 @@ while [ $r -lt "$RUNS" ]; do
         note render_pov_1 "$(ratio "$(gt_render gt_rgb_1 last)" "$(pov_trace pov_1 last)")"
         note net_cpu_pov_1 "$(ratio "$(awk -v a="$(last gt_rgb_1 2)" -v s="$st" 'BEGIN { print a - s }')" "$(pov_trace_cpu pov_1 last)")"
         note rss_pov "$(ratio "$(last gt_rgb 3)" "$(last pov 3)")"
+        for g in spheres mesh; do
+            note "cpu_pov_$g" "$(ratio "$(last "gt_$g" 2)" "$(last "pov_$g" 2)")"
+            note "wall_pov_$g" "$(ratio "$(last "gt_$g" 1)" "$(last "pov_$g" 1)")"
+            note "render_pov_$g" "$(ratio "$(gt_render "gt_$g" last)" "$(pov_trace "pov_$g" last)")"
+            note "rss_pov_$g" "$(ratio "$(last "gt_$g" 3)" "$(last "pov_$g" 3)")"
+        done
     fi
     r=$((r + 1))
 done
@@ -114,11 +141,11 @@ done
 # ---- 3. report ----
 echo "== gtrace vs POV-Ray: $(nproc) processors, $idle; $RUNS interleaved rounds (bench/README.md)"
 printf "%-20s %8s %8s %9s %8s\n" "least-CPU run" "wall s" "cpu s" "render s" "peak MB"
-for n in gt_rgb gt_spectrum9 gt_spectrum gt_bispectral gt_rgb_1 gt_start; do
+for n in gt_rgb gt_spectrum9 gt_spectrum gt_bispectral gt_rgb_1 gt_spheres gt_mesh gt_load gt_start; do
     printf "%-20s %8s %8s %9s %8.1f\n" "$n" "$(field $n 1)" "$(field $n 2)" "$(gt_render $n out)" "$(awk -v k="$(field $n 3)" 'BEGIN { print k / 1024 }')"
 done
 if [ $HAVE_POV -eq 1 ]; then
-    for n in pov pov_1; do
+    for n in pov pov_1 pov_spheres pov_mesh; do
         printf "%-20s %8s %8s %9s %8.1f\n" "$n" "$(field $n 1)" "$(field $n 2)" "$(pov_trace $n out)" "$(awk -v k="$(field $n 3)" 'BEGIN { print k / 1024 }')"
     done
     echo "medians of the per-round ratios gtrace rgb / POV-Ray:"
@@ -126,12 +153,18 @@ if [ $HAVE_POV -eq 1 ]; then
     echo "  render only: wall 2 threads $(median render_pov), 1 thread $(median render_pov_1); CPU 1 thread net of start-up $(median net_cpu_pov_1) (target <= 0.6)"
     echo "  whole-process wall (2 threads): $(median wall_pov); peak RSS: $(median rss_pov) (target <= 1)"
     if command -v oiiotool > /dev/null; then
-        d=$(oiiotool "$TMP/gt_rgb.png" "$TMP/pov.png" --absdiff --printstats 2>&1 |
-            sed -n 's/.*Stats Avg: *\([0-9. ]*\)(float).*/\1/p' | awk '{ printf "%.1f %.1f %.1f", $1 * 255, $2 * 255, $3 * 255 }')
+        d=$(absdiff gt_rgb pov)
         means=$(for f in gt_rgb pov; do oiiotool "$TMP/$f.png" --printstats 2>&1 |
             sed -n 's/.*Stats Avg: *\([0-9. ]*\)(of 255).*/\1/p' | awk '{ printf "%.0f", ($1 + $2 + $3) / 3 }'; echo; done | paste -sd' ' -)
         echo "  the two pictures: mean absolute difference per channel (R G B) $d of 255 (target < 6); mean value gtrace, POV-Ray: $means of 255"
     fi
+    for g in spheres mesh; do
+        case $g in spheres) what="10,000 spheres" ;; *) what="1M-triangle mesh" ;; esac
+        echo "$what, medians of gtrace / POV-Ray (2 threads): whole-process CPU $(median "cpu_pov_$g"), wall $(median "wall_pov_$g"), render $(median "render_pov_$g"), peak RSS $(median "rss_pov_$g")"
+        if command -v oiiotool > /dev/null; then
+            echo "  the two pictures: mean absolute difference per channel (R G B) $(absdiff "gt_$g" "pov_$g") of 255"
+        fi
+    done
 else
     echo "POV-Ray: not installed (Debian package povray); no comparison"
 fi
@@ -139,4 +172,5 @@ echo "colour models / rgb, medians: render time spectrum9 $(median render_spectr
 bispectral $(median render_bispectral); process CPU spectrum9 $(median cpu_spectrum9), spectrum $(median cpu_spectrum), \
 bispectral $(median cpu_bispectral) (targets 1.1, 1.15, 1.3)"
 echo "speed-up from 1 to 2 threads (render time, median): $(median threads) (target >= 1.9 on an idle machine)"
+echo "load check (200,000 named spheres, 1,000 materials; parse and build, 1x1 render; least-CPU run): $(field gt_load 2) s CPU, $(field gt_load 1) s wall, $(awk -v k="$(field gt_load 3)" 'BEGIN { printf "%.0f", k / 1024 }') MB (target <= 2 s)"
 echo "start-up (gtrace --help, least CPU): $(field gt_start 2) s CPU, $(awk -v k="$(field gt_start 3)" 'BEGIN { printf "%.1f", k / 1024 }') MB (make bench runs bench_startup for the details)"

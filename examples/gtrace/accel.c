@@ -389,6 +389,23 @@ static int build_objects(Scene *s, GError *err)
     return G_OK;
 }
 
+/* The top-level BVH's quality. Embree's high-quality build (spatial splits) costs about 1.4 us of CPU per
+ * triangle more than the medium one and saves some 10% of the tracing: for the 1M-triangle mesh of bench-pov at
+ * 800x600 and 1 sample per pixel the medium build halves the process's CPU (2.9 to 1.4 s) and leaves the render
+ * time within noise. So the high build is chosen when the camera's samples (its width x height x spp, command line
+ * overrides aside) are at least 10 per primitive of the top-level scene, the medium one otherwise. */
+static enum RTCBuildQuality top_quality(const Scene *s)
+{
+    double prims = 0.0;
+    for (int i = 0; i < s->nobjects; i++) {
+        const Object *o = s->objects[i];
+        if (!o->is_part && object_is_shape(o))
+            prims += o->kind == SHAPE_MESH ? o->mesh->ntris : 1;
+    }
+    double samples = (double)s->camera.width * s->camera.height * s->camera.spp;
+    return samples >= 10.0 * prims ? RTC_BUILD_QUALITY_HIGH : RTC_BUILD_QUALITY_MEDIUM;
+}
+
 int accel_build(Scene *s, GError *err)
 {
     accel_release(s);
@@ -396,7 +413,7 @@ int accel_build(Scene *s, GError *err)
     if (!s->device)
         return gerror_set(err, G_ERR_NOMEM, "embree: cannot create a device (error %d)", (int)rtcGetDeviceError(NULL));
     s->rtc = rtcNewScene(s->device);
-    rtcSetSceneBuildQuality(s->rtc, RTC_BUILD_QUALITY_HIGH);
+    rtcSetSceneBuildQuality(s->rtc, top_quality(s));
     int rc = build_objects(s, err);
     if (rc < 0) {
         accel_release(s);

@@ -44,18 +44,23 @@ static const GMaterial *media_outside(const Media *m, const GMaterial *mat)
     return media_top(m);
 }
 
-/* The (u, v) coordinates of a tangent vector v in the frame of the tangents a = dp/du, b = dp/dv (least
- * squares: exact for a vector in their plane); zero when the tangents are degenerate. */
-static void uv_of(GVec3 a, GVec3 b, GVec3 v, double out[2])
+/* The (u, v) coordinates of the tangent vectors v1 and v2 in the frame of the tangents a = dp/du, b = dp/dv
+ * (least squares: exact for a vector in their plane; the Gram matrix once for both); zero when the tangents are
+ * degenerate. */
+static void uv_of(GVec3 a, GVec3 b, GVec3 v1, GVec3 v2, double out1[2], double out2[2])
 {
     double aa = gvec3_dot(a, a), ab = gvec3_dot(a, b), bb = gvec3_dot(b, b), det = aa * bb - ab * ab;
     if (!(det > 0.0) || !isfinite(det)) {
-        out[0] = out[1] = 0.0;
+        out1[0] = out1[1] = out2[0] = out2[1] = 0.0;
         return;
     }
-    double av = gvec3_dot(a, v), bv = gvec3_dot(b, v);
-    out[0] = (bb * av - ab * bv) / det;
-    out[1] = (aa * bv - ab * av) / det;
+    double av = gvec3_dot(a, v1), bv = gvec3_dot(b, v1);
+    out1[0] = (bb * av - ab * bv) / det;
+    out1[1] = (aa * bv - ab * av) / det;
+    av = gvec3_dot(a, v2);
+    bv = gvec3_dot(b, v2);
+    out2[0] = (bb * av - ab * bv) / det;
+    out2[1] = (aa * bv - ab * av) / det;
 }
 
 /* The stack after crossing the surface of `mat` (entering pushes it, leaving removes it). */
@@ -111,8 +116,7 @@ void surfpoint_fill(TraceCtx *c, const Ray *r, const Hit *h, const Media *media,
     double la = gvec3_length(along);
     along = la > 1e-9 ? gvec3_scale(along, 1.0 / la) : gvec3_normalize(g.dpdu);
     GVec3 across = gvec3_cross(g.n_out, along);
-    uv_of(g.dpdu, g.dpdv, gvec3_scale(along, sp->footprint), sp->uv_axis1);
-    uv_of(g.dpdu, g.dpdv, gvec3_scale(across, w), sp->uv_axis2);
+    uv_of(g.dpdu, g.dpdv, gvec3_scale(along, sp->footprint), gvec3_scale(across, w), sp->uv_axis1, sp->uv_axis2);
     sp->material = h->material;
     if (sp->entering) {
         sp->from = media_top(media);

@@ -178,11 +178,64 @@ static inline float gspectral_kdot(const float *a, const float *b, int n)
     return gspectral_ksum(GSPECTRAL_DOT, a, b, n);
 }
 
-/** o = a / b sample by sample, zero where b is zero */
+/** o = a / b sample by sample, zero where b is zero (no lane divides by zero: those divide by 1 and are
+ * cleared, so the results equal the scalar loop's bit for bit) */
 static inline void gspectral_kdiv(float *o, const float *a, const float *b, int n)
 {
-    for (int i = 0; i < n; i++)
+    int i = 0;
+#ifdef GSPECTRAL_VECTOR
+    const gspectral_v4 one = {1, 1, 1, 1}, zero = {0, 0, 0, 0};
+    for (; i + 4 <= n; i += 4) {
+        gspectral_v4 bv = gspectral_vload(b + i);
+        gspectral_v4i nz = bv != zero;
+        gspectral_v4 safe = (gspectral_v4)(((gspectral_v4i)bv & nz) | ((gspectral_v4i)one & ~nz));
+        gspectral_vstore(o + i, (gspectral_v4)((gspectral_v4i)(gspectral_vload(a + i) / safe) & nz));
+    }
+#endif
+    for (; i < n; i++)
         o[i] = b[i] != 0.0f ? a[i] / b[i] : 0.0f;
+}
+
+/** o = b + a * s with the product in double and rounded to float once per sample, then the float sum (the
+ * library's rounding for gcolor_axpy); out may alias a or b */
+static inline void gspectral_kaxpyd(float *o, double s, const float *a, const float *b, int n)
+{
+    int i = 0;
+#ifdef GSPECTRAL_VECTOR
+    typedef double v4d __attribute__((vector_size(32)));
+    const v4d sv = {s, s, s, s};
+    for (; i + 4 <= n; i += 4) {
+        v4d p = __builtin_convertvector(gspectral_vload(a + i), v4d) * sv;
+        gspectral_vstore(o + i, gspectral_vload(b + i) + __builtin_convertvector(p, gspectral_v4));
+    }
+#endif
+    for (; i < n; i++)
+        o[i] = b[i] + (float)(a[i] * s);
+}
+
+/** 1 when every one of the n samples is finite (not infinite, not NaN) and, when nonnegative is set, none is
+ * below 0; 0 otherwise */
+static inline int gspectral_kfinite(const float *a, int n, int nonnegative)
+{
+    int i = 0;
+#ifdef GSPECTRAL_VECTOR
+    /* x - x is 0 for a finite x and NaN otherwise, and a NaN stays in the sum; neg collects x < 0 per lane */
+    const gspectral_v4 zero = {0, 0, 0, 0};
+    gspectral_v4 acc = zero;
+    gspectral_v4i neg = {0, 0, 0, 0};
+    for (; i + 4 <= n; i += 4) {
+        gspectral_v4 x = gspectral_vload(a + i);
+        acc += x - x;
+        neg |= x < zero;
+    }
+    for (int k = 0; k < 4 && i > 0; k++)
+        if (acc[k] != 0.0f || (nonnegative && neg[k]))
+            return 0;
+#endif
+    for (; i < n; i++)
+        if (!isfinite(a[i]) || (nonnegative && a[i] < 0.0f))
+            return 0;
+    return 1;
 }
 
 /** o = a ^ e sample by sample; non-positive samples give 0 (1 for e = 0), as in the rgb model */
