@@ -7,13 +7,7 @@ if [ ! -x "$GT" ]; then
     echo "FAIL: $GT is not built"
     exit 1
 fi
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-fails=0
-fail() {
-    echo "FAIL: $*"
-    fails=$((fails + 1))
-}
+. "$(dirname "$0")/prelude.sh"
 
 "$GT" --help > "$TMP/help" 2>&1 || fail "--help exits with $?"
 grep -q "usage: gtrace SCENE -o OUT" "$TMP/help" || fail "--help does not print the usage"

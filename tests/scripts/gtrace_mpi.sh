@@ -16,13 +16,7 @@ if ! "$GT" --version | grep -q "MPI module"; then
 fi
 command -v mpirun > /dev/null || { echo "FAIL: mpirun (openmpi-bin, scripts/deps.sh) is missing"; exit 1; }
 command -v oiiotool > /dev/null || { echo "FAIL: oiiotool (openimageio-tools, scripts/deps.sh) is missing"; exit 1; }
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-fails=0
-fail() {
-    echo "FAIL: $*"
-    fails=$((fails + 1))
-}
+. "$(dirname "$0")/prelude.sh"
 # Open MPI in a container, possibly as root, on 2 cores: more ranks than cores, no single-copy transfers (they
 # need ptrace rights a container may not grant). Under the sanitizers, Open MPI's own leaks are suppressed
 # (tests/lsan_openmpi.supp): that needs whole stacks (Open MPI has no frame pointers, so the fast unwinder stops

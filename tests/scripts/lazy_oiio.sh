@@ -9,13 +9,7 @@
 set -u
 BUILD=${1:-build}
 GT="$BUILD/bin/gtrace"
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-fails=0
-fail() {
-    echo "FAIL: $*"
-    fails=$((fails + 1))
-}
+. "$(dirname "$0")/prelude.sh"
 unset GENERIC_OIIO_MODULE
 
 # maps NAME CMD...: CMD's stdout and stderr to TMP/NAME.*, the shared objects it loaded to TMP/NAME.objects

@@ -13,13 +13,7 @@ GTRACE="$BUILD/bin/gtrace"
 SCENE="$SRC/examples/scenes/material_lambert.scene"
 MAT="$SRC/examples/materials/lambert.mat"
 PROBE="$SRC/examples/scenes/sky.hdr"
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-fails=0
-fail() {
-    echo "FAIL: $*"
-    fails=$((fails + 1))
-}
+. "$(dirname "$0")/prelude.sh"
 known() { printf 'known content, not to be overwritten\n' > "$1"; }
 unchanged() { [ "$(cat "$2" 2> /dev/null)" = "known content, not to be overwritten" ] || fail "$1: $2 was overwritten"; }
 no_temporaries() { # what dir

@@ -7,13 +7,7 @@
 # sanitizer report, and within a generous time (what it catches is quadratic work).
 BUILD=$(cd "${1:-build}" 2> /dev/null && pwd) || { echo "FAIL: no build directory ${1:-build}"; exit 1; }
 GMAT="$BUILD/bin/gmat"
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-fails=0
-fail() {
-    echo "FAIL: $*"
-    fails=$((fails + 1))
-}
+. "$(dirname "$0")/prelude.sh"
 now() { date +%s.%N; }
 
 # run WHAT WANT_STATUS MAX_SECONDS FILE [EXPECTED STDERR TEXT]

@@ -11,13 +11,7 @@ GCOLOR="$BUILD/bin/gcolor"
 for t in "$GTRACE" "$GCOLOR"; do
     [ -x "$t" ] || { echo "FAIL: $t is not built"; exit 1; }
 done
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-fails=0
-fail() {
-    echo "FAIL: $*"
-    fails=$((fails + 1))
-}
+. "$(dirname "$0")/prelude.sh"
 "$GCOLOR" list > "$TMP/models" || fail "gcolor list failed"
 for m in rgb spectrum9 spectrum bispectral; do
     grep -qx "$m" "$TMP/models" || fail "colour model $m is not registered"

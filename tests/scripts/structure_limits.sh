@@ -8,13 +8,7 @@
 BUILD=$(cd "${1:-build}" 2> /dev/null && pwd) || { echo "FAIL: no build directory ${1:-build}"; exit 1; }
 GMAT="$BUILD/bin/gmat"
 GTRACE="$BUILD/bin/gtrace"
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-fails=0
-fail() {
-    echo "FAIL: $*"
-    fails=$((fails + 1))
-}
+. "$(dirname "$0")/prelude.sh"
 now() { date +%s.%N; }
 
 # run WHAT WANT_STATUS MAX_SECONDS COMMAND...: stdout in $TMP/out, stderr in $TMP/err
