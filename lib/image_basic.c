@@ -45,6 +45,15 @@ void gimage_free(GImage *img)
     img->width = img->height = img->channels = 0;
 }
 
+void gimage_spectra_free(GImageSpectraBuf *s)
+{
+    if (!s)
+        return;
+    gmem_free(s->wavelengths);
+    gmem_free(s->values);
+    *s = (GImageSpectraBuf){0};
+}
+
 /* ---- the memory budget ---- */
 
 static atomic_size_t budget_bytes; /* 0: not yet set */

@@ -190,6 +190,17 @@ int gimage_window(const char *path, GImageWindow *win, GError *err)
     return o ? o->image_window(path, win, err) : G_ERR_IO;
 }
 
+int gimage_read_spectra(const char *path, GImageSpectraBuf *out, GError *err)
+{
+    if (!out)
+        return gerror_set(err, G_ERR_INVALID, "no spectra given");
+    *out = (GImageSpectraBuf){0};
+    if (!path || !*path)
+        return gerror_set(err, G_ERR_INVALID, "no image file name given");
+    const GOiioOps *o = goiio_ops(err);
+    return o ? o->image_read_spectra(path, out, err) : G_ERR_IO;
+}
+
 int gimage_check_output(const char *path, GError *err)
 {
     if (!path || !*path)

@@ -2,7 +2,8 @@
  * the channels R, G, B and one emissive channel S0.<nm>nm per wavelength of the model's grid (Fichet et al. 2021,
  * comma as decimal separator), the attributes spectralLayoutVersion "1.0" and emissiveUnits "W.m^-2.sr^-1", and
  * the stored spectra integrated against the CIE 1931 observer give the RGB channels; a crop stores the same
- * spectra as the full render in its data window; what cannot be written is refused before rendering. */
+ * spectra as the full render in its data window; what cannot be written is refused before rendering; the reader of
+ * the layout (gimage_read_spectra) gives the spectra back and refuses malformed files. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -13,6 +14,7 @@
 
 #include "generic/builtins.h"
 #include "generic/color.h"
+#include "generic/image.h"
 
 #include <string.h>
 
@@ -269,6 +271,105 @@ static void test_refusals(void **state)
     assert_int_equal(access(out, F_OK), -1);
 }
 
+/* A 5x3 RGB image with spectra at 400, 550, 700 and 1000 nm (OpenEXR sorts its channels by name, so the file
+ * has S0.1000,000000nm first), written by gimage_write into dir/name; values in vals. */
+static void write_spectral(const char *name, float vals[5 * 3 * 4])
+{
+    static const double nm[4] = {400.0, 550.0, 700.0, 1000.0};
+    GImage img;
+    GError err;
+    char path[256];
+    assert_int_equal(gimage_create(&img, 5, 3, 3, &err), G_OK);
+    for (int i = 0; i < 5 * 3 * 3; i++)
+        img.pixels[i] = 0.25f * (float)i;
+    for (int i = 0; i < 5 * 3 * 4; i++)
+        vals[i] = 1.0f + 0.5f * (float)i;
+    GImageSpectra sp = {.count = 4, .wavelengths = nm, .values = vals};
+    GImageWriteOptions opt = {.spectra = &sp};
+    assert_int_equal(gimage_write(tu_in_dir(dir, name, path, sizeof path), &img, &opt, &err), G_OK);
+    gimage_free(&img);
+}
+
+/* dir/to: dir/from with its channels renamed by oiiotool --chnames (a comma separates the names there, so the
+ * names are the layout's without decimals). */
+static void renamed(const char *from, const char *to, const char *names)
+{
+    char a[256], b[256], args[1024], log[4096];
+    snprintf(args, sizeof args, "'%s' --chnames '%s' -o '%s'", tu_in_dir(dir, from, a, sizeof a), names,
+             tu_in_dir(dir, to, b, sizeof b));
+    if (tu_run_capture("oiiotool", args, log, sizeof log) != 0)
+        fail_msg("oiiotool --chnames failed: %s", log);
+}
+
+/* gimage_read_spectra refuses the file dir/name with G_ERR_IO and a message naming what, and zeroes out. */
+static void refused(const char *name, const char *what)
+{
+    char path[256];
+    GError err;
+    GImageSpectraBuf s = {.count = 7};
+    assert_int_equal(gimage_read_spectra(tu_in_dir(dir, name, path, sizeof path), &s, &err), G_ERR_IO);
+    if (!strstr(err.message, what) || !strstr(err.message, name))
+        fail_msg("%s: the message '%s' does not name '%s'", name, err.message, what);
+    assert_true(s.count == 0 && s.width == 0 && !s.wavelengths && !s.values);
+}
+
+/* The reader of the layout (gimage_read_spectra, what `gtrace merge` joins --spectral pieces with): spectra come
+ * back bit for bit, sorted by wavelength whatever the channel order; a file without spectra has none; names
+ * without decimals are read; malformed names, two names of one wavelength and spectra over the memory budget are
+ * refused. */
+static void test_spectra_reader(void **state)
+{
+    (void)state;
+    float vals[5 * 3 * 4];
+    char path[256];
+    GError err;
+    GImageSpectraBuf s;
+    write_spectral("sp.exr", vals);
+    assert_int_equal(gimage_read_spectra(tu_in_dir(dir, "sp.exr", path, sizeof path), &s, &err), G_OK);
+    assert_int_equal(s.width, 5);
+    assert_int_equal(s.height, 3);
+    assert_int_equal(s.count, 4);
+    assert_true(s.wavelengths[0] == 400.0 && s.wavelengths[1] == 550.0 && s.wavelengths[2] == 700.0 &&
+                s.wavelengths[3] == 1000.0);
+    assert_memory_equal(s.values, vals, sizeof vals);
+    gimage_spectra_free(&s);
+    assert_true(s.count == 0 && !s.values && !s.wavelengths);
+    gimage_spectra_free(&s); /* twice: a no-op */
+
+    renamed("sp.exr", "plain.exr", "R,G,B,X,Y,Z,W"); /* no spectral channel */
+    assert_int_equal(gimage_read_spectra(tu_in_dir(dir, "plain.exr", path, sizeof path), &s, &err), G_OK);
+    assert_true(s.count == 0 && s.width == 5 && s.height == 3 && !s.wavelengths && !s.values);
+    /* the layout's names without decimals; 0550 is 550 */
+    renamed("sp.exr", "short.exr", "R,G,B,S0.1000nm,S0.400nm,S0.0550nm,S0.700nm");
+    assert_int_equal(gimage_read_spectra(tu_in_dir(dir, "short.exr", path, sizeof path), &s, &err), G_OK);
+    assert_int_equal(s.count, 4);
+    assert_true(s.wavelengths[0] == 400.0 && s.wavelengths[1] == 550.0 && s.wavelengths[3] == 1000.0);
+    assert_memory_equal(s.values, vals, sizeof vals); /* the file's order is 0550, 1000, 400, 700 */
+    gimage_spectra_free(&s);
+
+    static const char *const bad[] = {
+        "S0.550.5nm",         "S0.550um", "S0.nm", "S0.0nm", "S0.abcnm", "S0.550nm ", "S0.-550nm",
+        "S0.1234567890123456nm", /* 16 digits */
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        char names[256];
+        snprintf(names, sizeof names, "R,G,B,S0.300nm,%s,S0.800nm,S0.900nm", bad[i]);
+        renamed("sp.exr", "bad.exr", names);
+        refused("bad.exr", bad[i]);
+    }
+    renamed("sp.exr", "dup.exr", "R,G,B,S0.400nm,S0.550nm,S0.0550nm,S0.700nm");
+    refused("dup.exr", "are the same wavelength (550 nm)");
+
+    gimage_set_memory_budget(5 * 3 * 4 * sizeof(float)); /* less than the file's 7 channels */
+    s.count = 7;
+    assert_int_equal(gimage_read_spectra(tu_in_dir(dir, "sp.exr", path, sizeof path), &s, &err), G_ERR_NOMEM);
+    assert_true(s.count == 0 && !s.values);
+    gimage_set_memory_budget(0);
+    assert_int_equal(gimage_read_spectra(tu_in_dir(dir, "absent.exr", path, sizeof path), &s, &err), G_ERR_IO);
+    assert_int_equal(gimage_read_spectra(NULL, &s, &err), G_ERR_INVALID);
+    assert_int_equal(gimage_read_spectra(path, NULL, &err), G_ERR_INVALID);
+}
+
 int main(void)
 {
     if (generic_register_builtins(NULL) != G_OK)
@@ -277,6 +378,7 @@ int main(void)
         cmocka_unit_test(test_layout_and_integration),
         cmocka_unit_test(test_crop),
         cmocka_unit_test(test_refusals),
+        cmocka_unit_test(test_spectra_reader),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -1,8 +1,10 @@
 /* merge.c - `gtrace merge PIECES... -o OUT`: the pieces are crops of one render (`gtrace --crop`, e.g. the tasks of
  * a scheduler's array job), OpenEXR files whose data windows say where they lie in the full image (the display
  * window). Every piece must name the same full image and channel count, and together they must cover it exactly
- * once; the pixels are copied unchanged, so the result equals the full render bit for bit. Nothing is written
- * when the pieces do not fit: the messages name the pieces at fault. */
+ * once; the pixels are copied unchanged, so the result equals the full render bit for bit. Pieces rendered with
+ * --spectral are joined with their spectra (gimage_read_spectra), which must be at the same wavelengths in every
+ * piece, and the result is written in the same spectral layout. Nothing is written when the pieces do not fit:
+ * the messages name the pieces at fault. */
 #include "merge.h"
 #include "../common/cli.h"
 
@@ -20,6 +22,8 @@ static void merge_usage(FILE *f)
             "e.g. the tasks of a Slurm or HTCondor array job) into the full image. Each piece is an OpenEXR file\n"
             "whose data window is its place in the full image (its display window), as gtrace writes a crop; the\n"
             "pieces must share the full image size and channels and cover it exactly once (no overlap, no gap).\n"
+            "Pieces rendered with --spectral keep their values at the colour model's wavelengths (channels\n"
+            "S0.<nm>nm): all of them must have the same wavelengths, and OUT must be an .exr.\n"
             "Pixels are copied unchanged: the merged image equals a single render bit for bit. See\n"
             "docs/distributed.md.\n"
             "  -o OUT       the merged image (.exr keeps the floats; other formats are display-encoded)\n"
@@ -87,43 +91,110 @@ static int check_pieces(char **paths, int n, GImageWindow *win)
     return 0;
 }
 
-/* Copies every piece into the full image; G_OK or the error in err. */
-static int assemble(char **paths, int n, const GImageWindow *win, GImage *full, GError *err)
+/* The spectra of piece i (count 0: none) against the first piece's: G_OK, or the mismatch in err. */
+static int same_wavelengths(char **paths, int i, const GImageSpectraBuf *sp, const GImageSpectraBuf *first,
+                            GError *err)
+{
+    if (sp->count != first->count) {
+        if (!sp->count || !first->count)
+            return gerror_set(err, G_ERR_MISMATCH, "%s has %d spectral channels, %s %d: pieces of another render "
+                              "(all or none rendered with --spectral)", paths[i], sp->count, paths[0], first->count);
+        return gerror_set(err, G_ERR_MISMATCH, "%s has %d wavelengths (%g to %g nm), %s %d (%g to %g nm): pieces of "
+                          "another render (another colour model?)", paths[i], sp->count, sp->wavelengths[0],
+                          sp->wavelengths[sp->count - 1], paths[0], first->count, first->wavelengths[0],
+                          first->wavelengths[first->count - 1]);
+    }
+    for (int k = 0; k < sp->count; k++)
+        if (sp->wavelengths[k] != first->wavelengths[k])
+            return gerror_set(err, G_ERR_MISMATCH, "%s's wavelength %d is %.6f nm, %s's %.6f nm: pieces of another "
+                              "render (another colour model?)", paths[i], k + 1, sp->wavelengths[k], paths[0],
+                              first->wavelengths[k]);
+    return G_OK;
+}
+
+/* Copies count floats a pixel of a w x h piece at (x, y) into a full image of width fw. */
+static void place(float *full, int fw, const float *piece, int x, int y, int w, int h, int count)
+{
+    size_t row = (size_t)w * (size_t)count;
+    for (int r = 0; r < h; r++)
+        memcpy(full + ((size_t)(y + r) * (size_t)fw + (size_t)x) * (size_t)count, piece + (size_t)r * row,
+               row * sizeof(float));
+}
+
+/* Copies every piece into the full image, and their spectra (the values at the colour model's wavelengths that
+ * --spectral stores) into the full spectra: wavelengths and values (NULL when the pieces have none), count
+ * their number. G_OK or the error in err. */
+static int assemble(char **paths, int n, const GImageWindow *win, GImage *full, GImageSpectraBuf *spectra,
+                    GError *err)
 {
     full->pixels = NULL;
+    *spectra = (GImageSpectraBuf){0};
     for (int i = 0; i < n; i++) {
         GImage piece;
+        GImageSpectraBuf sp;
         int w, h, channels;
         int rc = gimage_info(paths[i], &w, &h, &channels, err);
         if (rc != G_OK)
             return rc;
-        if (channels > 4) /* gimage_read keeps the colour channels only: refuse rather than drop the rest */
-            return gerror_set(err, G_ERR_UNSUPPORTED, "%s has %d channels (values at wavelengths, --spectral?): gtrace "
-                              "merge joins colour channels only; join such pieces with `oiiotool PIECE1 PIECE2 --add "
-                              "PIECE3 --add ... -o OUT` (docs/distributed.md)", paths[i], channels);
         if ((rc = gimage_read(paths[i], 0, &piece, err)) != G_OK)
             return rc;
-        if (piece.width != win[i].width || piece.height != win[i].height) {
-            gimage_free(&piece);
-            return gerror_set(err, G_ERR_IO, "%s: read as %dx%d, its header said %dx%d", paths[i], piece.width,
-                              piece.height, win[i].width, win[i].height);
-        }
-        if (i == 0 && (rc = gimage_create(full, win[0].full_width, win[0].full_height, piece.channels, err)) != G_OK) {
+        if ((rc = gimage_read_spectra(paths[i], &sp, err)) != G_OK) {
             gimage_free(&piece);
             return rc;
         }
-        if (piece.channels != full->channels) {
-            gimage_free(&piece);
-            return gerror_set(err, G_ERR_IO, "%s has %d channels, %s %d: pieces of another render", paths[i],
-                              piece.channels, paths[0], full->channels);
+        if (piece.width != win[i].width || piece.height != win[i].height || sp.width != piece.width ||
+            sp.height != piece.height)
+            rc = gerror_set(err, G_ERR_IO, "%s: read as %dx%d, its header said %dx%d", paths[i], piece.width,
+                            piece.height, win[i].width, win[i].height);
+        else if (channels > 4 && channels > piece.channels + sp.count) /* nothing may be dropped on the way */
+            rc = gerror_set(err, G_ERR_UNSUPPORTED, "%s has %d channels, %d of them neither colour nor spectral "
+                            "(S0.<wavelength>nm): gtrace merge would drop them", paths[i], channels,
+                            channels - piece.channels - sp.count);
+        else if (i > 0 && piece.channels != full->channels)
+            rc = gerror_set(err, G_ERR_IO, "%s has %d channels, %s %d: pieces of another render", paths[i],
+                            piece.channels, paths[0], full->channels);
+        else if (i > 0)
+            rc = same_wavelengths(paths, i, &sp, spectra, err);
+        else if ((rc = gimage_create(full, win[0].full_width, win[0].full_height, piece.channels, err)) == G_OK &&
+                 sp.count > 0) {
+            size_t values = (size_t)win[0].full_width * (size_t)win[0].full_height * (size_t)sp.count;
+            if (values * sizeof(float) > gimage_memory_budget())
+                rc = gerror_set(err, G_ERR_NOMEM, "%d values per pixel of a %dx%d image take %zu MiB, more than "
+                                "the image memory budget of %zu MiB (GENERIC_IMAGE_BUDGET_MB)", sp.count,
+                                win[0].full_width, win[0].full_height, (values * sizeof(float)) >> 20,
+                                gimage_memory_budget() >> 20);
+            else if (!(spectra->wavelengths = gmem_alloc((size_t)sp.count * sizeof(double))) ||
+                     !(spectra->values = gmem_alloc(values * sizeof(float))))
+                rc = gerror_set(err, G_ERR_NOMEM, "out of memory for the spectra of a %dx%d image",
+                                win[0].full_width, win[0].full_height);
+            else {
+                memcpy(spectra->wavelengths, sp.wavelengths, (size_t)sp.count * sizeof(double));
+                spectra->count = sp.count;
+                spectra->width = win[0].full_width;
+                spectra->height = win[0].full_height;
+            }
         }
-        size_t row = (size_t)piece.width * (size_t)piece.channels;
-        for (int y = 0; y < piece.height; y++)
-            memcpy(full->pixels + ((size_t)(win[i].y + y) * (size_t)full->width + (size_t)win[i].x) * full->channels,
-                   piece.pixels + (size_t)y * row, row * sizeof(float));
+        if (rc == G_OK) {
+            place(full->pixels, full->width, piece.pixels, win[i].x, win[i].y, piece.width, piece.height,
+                  piece.channels);
+            if (sp.count > 0)
+                place(spectra->values, spectra->width, sp.values, win[i].x, win[i].y, sp.width, sp.height,
+                      sp.count);
+        }
         gimage_free(&piece);
+        gimage_spectra_free(&sp);
+        if (rc != G_OK)
+            return rc;
     }
     return G_OK;
+}
+
+/* Writes the merged image, with its spectra when the pieces have them. */
+static int write_merged(const char *out, const GImage *full, const GImageSpectraBuf *spectra, GError *err)
+{
+    GImageSpectra sp = {.count = spectra->count, .wavelengths = spectra->wavelengths, .values = spectra->values};
+    GImageWriteOptions opt = {.spectra = spectra->count > 0 ? &sp : NULL};
+    return gimage_write(out, full, &opt, err);
 }
 
 int merge_main(int argc, char **argv)
@@ -174,14 +245,17 @@ int merge_main(int argc, char **argv)
         return 1;
     }
     GImage full = {0};
+    GImageSpectraBuf spectra = {0};
     int status = check_pieces(paths, n, win) != 0 ? 1 : 0;
-    if (!status && (assemble(paths, n, win, &full, &err) != G_OK || gimage_write(out, &full, NULL, &err) != G_OK)) {
+    if (!status && (assemble(paths, n, win, &full, &spectra, &err) != G_OK ||
+                    write_merged(out, &full, &spectra, &err) != G_OK)) {
         fprintf(stderr, "gtrace merge: %s\n", err.message);
         status = 1;
     }
     if (!status && !quiet)
         printf("gtrace merge: %s %dx%d from %d piece%s\n", out, full.width, full.height, n, n > 1 ? "s" : "");
     gimage_free(&full);
+    gimage_spectra_free(&spectra);
     gmem_free(win);
     return status;
 }

@@ -148,6 +148,30 @@ typedef struct GImageWindow {
  * file cannot be opened or its header is refused, G_ERR_NOMEM as gimage_info. */
 GENERIC_API GENERIC_NODISCARD int gimage_window(const char *path, GImageWindow *win, GError *err);
 
+/** Spectra read back from an OpenEXR file in the layout of GImageSpectra (gimage_read_spectra); the struct owns
+ * its arrays, which gimage_spectra_free releases. */
+typedef struct GImageSpectraBuf {
+    int width, height;   /**< the data's size, as gimage_read gives it */
+    int count;           /**< wavelengths per pixel, 0..GIMAGE_MAX_WAVELENGTHS; 0: the file has no spectral channel */
+    double *wavelengths; /**< count of them, in nm, increasing (NULL when count is 0) */
+    /** width * height * count values, laid out as GImageSpectra's (NULL when count is 0) */
+    float *values;
+} GImageSpectraBuf;
+
+/** Reads the spectral channels of a file (the first subimage): every channel whose name starts with "S0." is one,
+ * and its wavelength is parsed from its name, which must be S0.<digits>[,<digits>]nm (at most 15 digits, a
+ * wavelength above 0; e.g. S0.550,000000nm). They are returned sorted by wavelength, whatever their order in
+ * the file (OpenEXR stores channels sorted by name: S0.1000,000000nm before S0.380,000000nm). The other
+ * channels are ignored; a file without spectral channels, or of a format without channel names, gives
+ * count 0. out is overwritten, not freed first. G_OK; G_ERR_IO as gimage_read, and when a spectral channel's
+ * name is malformed, two channels name the same wavelength or there are more than GIMAGE_MAX_WAVELENGTHS of
+ * them (the message names the file and the channels); G_ERR_NOMEM when the values would exceed the image
+ * memory budget or memory runs out. On failure out is zeroed. */
+GENERIC_API GENERIC_NODISCARD int gimage_read_spectra(const char *path, GImageSpectraBuf *out, GError *err);
+
+/** Frees what gimage_read_spectra allocated and zeroes the struct; NULL, or spectra already freed, is a no-op. */
+GENERIC_API void gimage_spectra_free(GImageSpectraBuf *s);
+
 /** Writes img to path, encoding chosen by the extension (see the top of this file); the file appears
  * complete or not at all. G_ERR_INVALID for a bad image, G_ERR_IO when the format is unknown, the
  * destination cannot be written or the write fails. */

@@ -2,7 +2,8 @@
 # gtrace_merge.sh BUILD - region rendering for job schedulers (docs/distributed.md): four --crop pieces rendered
 # as separate processes at once (an array job's tasks) and joined by `gtrace merge` equal the full render pixel by
 # pixel, for the Whitted and the path integrators; overlapping, missing and mismatched pieces are refused with a
-# message naming them (exit 1) and nothing is written; usage errors exit 2.
+# message naming them (exit 1) and nothing is written; --spectral pieces merge with their spectral channels into
+# the full --spectral render, and pieces at other wavelengths or without spectra are refused; usage errors exit 2.
 # shellcheck disable=SC2086 # option lists ($ARGS, $MPIRUN, ...) are split into words on purpose
 set -u
 BUILD=${1:-build}
@@ -62,16 +63,45 @@ refused "a missing piece" "leave $((41 * 29)) of the ${W}x$H image's pixels unco
 refused "a piece of another image size" "other.exr is a piece of a 80x.* image, .*piece0.exr of a ${W}x$H one" \
     "$TMP/piece0.exr" "$TMP/other.exr" "$TMP/piece2.exr" "$TMP/piece3.exr"
 refused "an unreadable piece" "absent.exr" "$TMP/absent.exr" "$TMP/piece1.exr"
-# spectral pieces: refused by gtrace merge (it would drop their spectral channels); the documented oiiotool route
-# keeps every channel and equals the full render
+# spectral pieces (--spectral: values at the colour model's wavelengths beside R, G, B): three crops merge into
+# the full render, every channel bit for bit, with its channel names and spectral attributes
 SPEC="--colormodel spectrum --spectral"
 "$GT" "$SCENE" $ARGS $SPEC -o "$TMP/spec_full.exr" || fail "the full --spectral render failed"
-"$GT" "$SCENE" $ARGS $SPEC --crop "0,0,41,$H" -o "$TMP/spec_a.exr" || fail "a --spectral piece failed"
-"$GT" "$SCENE" $ARGS $SPEC --crop "41,0,$W,$H" -o "$TMP/spec_b.exr" || fail "a --spectral piece failed"
-refused "spectral pieces" "spec_a.exr has [0-9]* channels (values at wavelengths" "$TMP/spec_a.exr" "$TMP/spec_b.exr"
-oiiotool "$TMP/spec_a.exr" "$TMP/spec_b.exr" --add -o "$TMP/spec_join.exr" || fail "oiiotool --add failed"
-oiiotool "$TMP/spec_full.exr" "$TMP/spec_join.exr" --fail 0 --diff 2>&1 | grep -q '^PASS' ||
-    fail "the oiiotool join of --spectral pieces differs from the full render"
+"$GT" "$SCENE" $ARGS $SPEC --crop "0,0,41,$H" -o "$TMP/spec_a.exr" &
+"$GT" "$SCENE" $ARGS $SPEC --crop "41,0,$W,29" -o "$TMP/spec_b.exr" &
+"$GT" "$SCENE" $ARGS $SPEC --crop "41,29,$W,$H" -o "$TMP/spec_c.exr" &
+wait
+for p in a b c; do [ -s "$TMP/spec_$p.exr" ] || fail "the --spectral piece $p failed"; done
+"$GT" merge "$TMP/spec_c.exr" "$TMP/spec_a.exr" "$TMP/spec_b.exr" -o "$TMP/spec_merged.exr" > "$TMP/log" 2>&1 ||
+    fail "merging --spectral pieces failed: $(cat "$TMP/log")"
+d=$(oiiotool "$TMP/spec_full.exr" "$TMP/spec_merged.exr" --fail 0 --diff 2>&1)
+echo "$d" | grep -q '^PASS' || fail "the merged --spectral pieces differ from the full render: $(echo "$d" | tail -3)"
+full_info=$(oiiotool --info -v "$TMP/spec_full.exr")
+info=$(oiiotool --info -v "$TMP/spec_merged.exr")
+chans() { echo "$1" | sed -n 's/^ *channel list: //p'; }
+[ -n "$(chans "$full_info")" ] && [ "$(chans "$info")" = "$(chans "$full_info")" ] ||
+    fail "the merged channels are not the full render's: $(chans "$info")"
+echo "$info" | grep -q ": *$W x *$H, 84 channel, float" || fail "the merged --spectral image is not $W x $H x 84: $info"
+chans "$info" | grep -q '^R, G, B, S0\.380,000000nm, S0\.385,000000nm, .*, S0\.780,000000nm$' ||
+    fail "the merged channels are not R, G, B and S0.380,000000nm to S0.780,000000nm: $(chans "$info")"
+echo "$info" | grep -q 'spectralLayoutVersion: "1.0"' || fail "no spectralLayoutVersion 1.0 in the merged image"
+echo "$info" | grep -q 'emissiveUnits: "W.m^-2.sr^-1"' || fail "no emissiveUnits in the merged image"
+# a piece of another colour model (other wavelengths), and one with colour channels only, are refused
+"$GT" "$SCENE" $ARGS --colormodel bispectral --spectral --crop "41,0,$W,29" -o "$TMP/spec_bi.exr" ||
+    fail "the bispectral --spectral piece failed"
+refused "a piece at other wavelengths" "spec_bi.exr has 41 wavelengths (380 to 780 nm), .*spec_a.exr 81" \
+    "$TMP/spec_a.exr" "$TMP/spec_bi.exr" "$TMP/spec_c.exr"
+"$GT" "$SCENE" $ARGS --colormodel spectrum --crop "41,29,$W,$H" -o "$TMP/spec_rgb.exr" ||
+    fail "the piece without --spectral failed"
+refused "a piece without spectra" "spec_rgb.exr has 0 spectral channels, .*spec_a.exr 81" \
+    "$TMP/spec_a.exr" "$TMP/spec_b.exr" "$TMP/spec_rgb.exr"
+refused "spectral pieces after one without" "spec_a.exr has 81 spectral channels, .*spec_rgb.exr 0" \
+    "$TMP/spec_rgb.exr" "$TMP/spec_a.exr" "$TMP/spec_b.exr"
+# the oiiotool join (docs/distributed.md's alternative) gives the same pixels
+oiiotool "$TMP/spec_a.exr" "$TMP/spec_b.exr" --add "$TMP/spec_c.exr" --add -o "$TMP/spec_join.exr" ||
+    fail "oiiotool --add failed"
+oiiotool "$TMP/spec_merged.exr" "$TMP/spec_join.exr" --fail 0 --diff 2>&1 | grep -q '^PASS' ||
+    fail "the oiiotool join of --spectral pieces differs from gtrace merge's"
 "$GT" merge "$TMP/piece0.exr" > "$TMP/log" 2>&1
 [ $? -eq 2 ] || fail "gtrace merge without -o: not exit status 2"
 "$GT" merge -o "$TMP/out.exr" > "$TMP/log" 2>&1
@@ -79,5 +109,6 @@ oiiotool "$TMP/spec_full.exr" "$TMP/spec_join.exr" --fail 0 --diff 2>&1 | grep -
 grep -q "no pieces given" "$TMP/log" || fail "gtrace merge without pieces: $(cat "$TMP/log")"
 
 [ $fails -eq 0 ] && echo "gtrace_merge: four pieces rendered apart merge bit-identically (Whitted, path);" \
-    "overlap, gap, another size, an unreadable piece and spectral pieces refused; usage errors exit 2"
+    "--spectral pieces merge bit-identically with their wavelengths; overlap, gap, another size, an unreadable" \
+    "piece, other wavelengths and a piece without spectra refused; usage errors exit 2"
 exit $fails
