@@ -3,7 +3,7 @@
  * window). Every piece must name the same full image and channel count, and together they must cover it exactly
  * once; the pixels are copied unchanged, so the result equals the full render bit for bit. Pieces rendered with
  * --spectral are joined with their spectra (gimage_read_spectra), which must be at the same wavelengths in every
- * piece, and the result is written in the same spectral layout. Nothing is written when the pieces do not fit:
+ * piece, and the result is written in the same layout. Nothing is written when the pieces do not fit:
  * the messages name the pieces at fault. */
 #include "merge.h"
 #include "../common/cli.h"
@@ -97,8 +97,8 @@ static int same_wavelengths(char **paths, int i, const GImageSpectraBuf *sp, con
 {
     if (sp->count != first->count) {
         if (!sp->count || !first->count)
-            return gerror_set(err, G_ERR_MISMATCH, "%s has %d spectral channels, %s %d: pieces of another render "
-                              "(all or none rendered with --spectral)", paths[i], sp->count, paths[0], first->count);
+            return gerror_set(err, G_ERR_MISMATCH, "%s has values at %d wavelengths, %s at %d: pieces of another "
+                              "render (all or none rendered with --spectral)", paths[i], sp->count, paths[0], first->count);
         return gerror_set(err, G_ERR_MISMATCH, "%s has %d wavelengths (%g to %g nm), %s %d (%g to %g nm): pieces of "
                           "another render (another colour model?)", paths[i], sp->count, sp->wavelengths[0],
                           sp->wavelengths[sp->count - 1], paths[0], first->count, first->wavelengths[0],
@@ -147,8 +147,8 @@ static int assemble(char **paths, int n, const GImageWindow *win, GImage *full, 
             rc = gerror_set(err, G_ERR_IO, "%s: read as %dx%d, its header said %dx%d", paths[i], piece.width,
                             piece.height, win[i].width, win[i].height);
         else if (channels > 4 && channels > piece.channels + sp.count) /* nothing may be dropped on the way */
-            rc = gerror_set(err, G_ERR_UNSUPPORTED, "%s has %d channels, %d of them neither colour nor spectral "
-                            "(S0.<wavelength>nm): gtrace merge would drop them", paths[i], channels,
+            rc = gerror_set(err, G_ERR_UNSUPPORTED, "%s has %d channels, %d of them neither colour nor values at "
+                            "wavelengths (S0.<wavelength>nm): gtrace merge would drop them", paths[i], channels,
                             channels - piece.channels - sp.count);
         else if (i > 0 && piece.channels != full->channels)
             rc = gerror_set(err, G_ERR_IO, "%s has %d channels, %s %d: pieces of another render", paths[i],
