@@ -6,6 +6,7 @@
 #include "generic/memory.h"
 #define GOIIO_MODULE_SOURCE
 #include "oiio_module.h"
+#include "image_oiio.hpp"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -28,10 +29,8 @@ using OIIO::ImageOutput;
 using OIIO::ImageSpec;
 using OIIO::TypeDesc;
 
-namespace {
-
 // OpenImageIO messages can span lines; keep the first non-empty one.
-std::string first_line(const std::string &s)
+std::string goiio_first_line(const std::string &s)
 {
     size_t b = s.find_first_not_of("\n ");
     if (b == std::string::npos)
@@ -39,6 +38,9 @@ std::string first_line(const std::string &s)
     size_t e = s.find('\n', b);
     return s.substr(b, e == std::string::npos ? std::string::npos : e - b);
 }
+
+namespace {
+
 
 bool is_integer(TypeDesc t)
 {
@@ -129,8 +131,10 @@ int check_claim(const char *path, const ImageSpec &spec, const char *format, lon
     return G_OK;
 }
 
+} // namespace
+
 // The file must be a regular file (never a FIFO or a device); its size bounds what its header may claim.
-int open_checked(const char *path, ImageSpec *config, std::unique_ptr<ImageInput> *in, GError *err)
+int goiio_open_checked(const char *path, ImageSpec *config, std::unique_ptr<ImageInput> *in, GError *err)
 {
     int fd = gfile_open_input(path, err);
     if (fd < 0)
@@ -140,9 +144,11 @@ int open_checked(const char *path, ImageSpec *config, std::unique_ptr<ImageInput
     close(fd);
     *in = ImageInput::open(path, config);
     if (!*in)
-        return gerror_set(err, G_ERR_IO, "%s: cannot read image: %s", path, first_line(OIIO::geterror()).c_str());
+        return gerror_set(err, G_ERR_IO, "%s: cannot read image: %s", path, goiio_first_line(OIIO::geterror()).c_str());
     return check_claim(path, (*in)->spec(), (*in)->format_name(), size, err);
 }
+
+namespace {
 
 // Decodes the pixels as floats. Scanline files are read a band of rows at a time, so that OpenImageIO holds
 // no second copy of the whole image and a file that ends early fails at its first missing row, before the
@@ -167,7 +173,7 @@ int read_impl(const char *path, unsigned flags, GImage *img, GError *err)
     ImageSpec config;
     config.attribute("oiio:UnassociatedAlpha", 1); // keep straight alpha as the file stores it
     std::unique_ptr<ImageInput> in;
-    int rc = open_checked(path, &config, &in, err);
+    int rc = goiio_open_checked(path, &config, &in, err);
     if (rc != G_OK)
         return rc;
     const ImageSpec spec = in->spec();
@@ -185,7 +191,7 @@ int read_impl(const char *path, unsigned flags, GImage *img, GError *err)
         throw;
     }
     if (!decoded) {
-        std::string msg = first_line(in->geterror());
+        std::string msg = goiio_first_line(in->geterror());
         gmem_free(raw);
         return gerror_set(err, G_ERR_IO, "%s: cannot decode image: %s", path, msg.c_str());
     }
@@ -336,7 +342,7 @@ int write_spectral(ImageOutput *out, const char *path, const char *tmp, const GI
         return gerror_set(err, G_ERR_NOMEM, "%s: out of memory encoding a %dx%d image", path, w, h);
     int rc = G_OK;
     if (!out->open(tmp, spec))
-        rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, first_line(out->geterror()).c_str());
+        rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, goiio_first_line(out->geterror()).c_str());
     for (int y = 0; y < h && rc == G_OK; y++) {
         for (int x = 0; x < w; x++) {
             size_t i = (size_t)y * w + x;
@@ -347,10 +353,10 @@ int write_spectral(ImageOutput *out, const char *path, const char *tmp, const GI
                 d[ch + k] = (float)(sp->values[i * n + k] * scale);
         }
         if (!out->write_scanline(spec.y + y, 0, TypeDesc::FLOAT, row))
-            rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, first_line(out->geterror()).c_str());
+            rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, goiio_first_line(out->geterror()).c_str());
     }
     if (rc == G_OK && !out->close())
-        rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, first_line(out->geterror()).c_str());
+        rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, goiio_first_line(out->geterror()).c_str());
     gmem_free(row);
     return rc;
 }
@@ -413,9 +419,9 @@ int write_pixels(ImageOutput *out, const char *path, const char *tmp, const GIma
     }
     int rc = G_OK;
     if (!out->open(tmp, spec))
-        rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, first_line(out->geterror()).c_str());
+        rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, goiio_first_line(out->geterror()).c_str());
     else if (!out->write_image(float_out ? TypeDesc::FLOAT : TypeDesc::UINT8, buf) || !out->close())
-        rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, first_line(out->geterror()).c_str());
+        rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, goiio_first_line(out->geterror()).c_str());
     gmem_free(buf);
     return rc;
 }
@@ -426,7 +432,7 @@ int verify_written(const char *path, const char *tmp, const GImage *img, GError 
     auto in = ImageInput::open(tmp);
     if (!in)
         return gerror_set(err, G_ERR_IO, "%s: cannot write image: the written file does not read back: %s", path,
-                          first_line(OIIO::geterror()).c_str());
+                          goiio_first_line(OIIO::geterror()).c_str());
     const ImageSpec &spec = in->spec();
     std::vector<unsigned char> scratch;
     bool ok = spec.width == img->width && spec.height == img->height;
@@ -436,7 +442,7 @@ int verify_written(const char *path, const char *tmp, const GImage *img, GError 
     }
     if (!ok)
         return gerror_set(err, G_ERR_IO, "%s: cannot write image: the written file does not read back: %s", path,
-                          first_line(in->geterror()).c_str());
+                          goiio_first_line(in->geterror()).c_str());
     return G_OK;
 }
 
@@ -451,7 +457,7 @@ int check_output_impl(const char *path, GError *err)
         auto out = ImageOutput::create(path);
         if (!out) {
             const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
-            std::string why = first_line(OIIO::geterror());
+            std::string why = goiio_first_line(OIIO::geterror());
             if (dot && (!slash || dot > slash))
                 return gerror_set(err, G_ERR_IO, "%s: cannot write image: this OpenImageIO has no writer for '%s' "
                                   "files (%s)", path, dot, why.c_str());
@@ -507,7 +513,7 @@ int write_impl(const char *path, const GImage *img, const GImageWriteOptions *op
     struct Release { GImage *g; ~Release() { gmem_free(g->pixels); } } release{&shown};
     auto out = ImageOutput::create(path);
     if (!out)
-        return gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, first_line(OIIO::geterror()).c_str());
+        return gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, goiio_first_line(OIIO::geterror()).c_str());
     GFileOutput file;
     if ((rc = gfile_output_begin(&file, path, err)) != G_OK)
         return rc;
@@ -537,123 +543,6 @@ int write_impl(const char *path, const GImage *img, const GImageWriteOptions *op
     return rc;
 }
 
-// ---- reading spectra (the layout of image.h's GImageSpectra) ----
-
-// The wavelength of a channel named S0.<digits>[,<digits>]nm: 1 and *nm; 0 for a channel that is not spectral
-// (no S0. prefix); -1 for an S0. name that is malformed, has more than 15 digits or gives 0 nm. The digits make
-// an integer below 2^53, divided by an exact power of ten: the double nearest to the written decimal.
-int spectral_wavelength(const std::string &name, double *nm)
-{
-    if (name.compare(0, 3, "S0.") != 0)
-        return 0;
-    static const double pow10[16] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
-                                     1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
-    long long digits = 0;
-    int ndigits = 0, decimals = 0;
-    bool comma = false;
-    const char *p = name.c_str() + 3;
-    for (;; p++) {
-        if (*p >= '0' && *p <= '9') {
-            if (++ndigits > 15)
-                return -1;
-            digits = digits * 10 + (*p - '0');
-            decimals += comma;
-        } else if (*p == ',' && !comma && ndigits > 0) {
-            comma = true;
-        } else {
-            break;
-        }
-    }
-    if (ndigits == 0 || (comma && decimals == 0) || strcmp(p, "nm") != 0 || digits == 0)
-        return -1;
-    *nm = (double)digits / pow10[decimals];
-    return 1;
-}
-
-// gmem memory released when the holder goes (an error or an exception on the way).
-struct GmemHold {
-    void *p = nullptr;
-    ~GmemHold() { gmem_free(p); }
-};
-
-int read_spectra_impl(const char *path, GImageSpectraBuf *out, GError *err)
-{
-    std::unique_ptr<ImageInput> in;
-    int rc = open_checked(path, nullptr, &in, err);
-    if (rc != G_OK)
-        return rc;
-    const ImageSpec spec = in->spec();
-    const int w = spec.width, h = spec.height, nch = spec.nchannels;
-    std::vector<std::pair<double, int>> waves; // wavelength, channel
-    for (int c = 0; c < nch && c < (int)spec.channelnames.size(); c++) {
-        double nm = 0.0;
-        int k = spectral_wavelength(spec.channelnames[c], &nm);
-        if (k < 0)
-            return gerror_set(err, G_ERR_IO, "%s: channel '%s' is not a wavelength of the spectral layout "
-                              "(S0.<nm above 0, at most 15 digits, a comma before the decimals>nm, e.g. "
-                              "S0.550,000000nm)", path, spec.channelnames[c].c_str());
-        if (k > 0)
-            waves.emplace_back(nm, c);
-    }
-    const int n = (int)waves.size();
-    if (n > GIMAGE_MAX_WAVELENGTHS)
-        return gerror_set(err, G_ERR_IO, "%s: %d spectral channels, more than the %d wavelengths supported", path, n,
-                          GIMAGE_MAX_WAVELENGTHS);
-    std::sort(waves.begin(), waves.end());
-    for (int k = 1; k < n; k++)
-        if (waves[k].first == waves[k - 1].first)
-            return gerror_set(err, G_ERR_IO, "%s: channels '%s' and '%s' are the same wavelength (%g nm)", path,
-                              spec.channelnames[waves[k - 1].second].c_str(),
-                              spec.channelnames[waves[k].second].c_str(), waves[k].first);
-    if (n == 0) {
-        *out = GImageSpectraBuf{w, h, 0, nullptr, nullptr};
-        return G_OK;
-    }
-    // open_checked has held w x h x nch floats to the budget already; the values alone must fit it too
-    const size_t npix = (size_t)w * h, budget = gimage_memory_budget();
-    if ((double)npix * n * sizeof(float) > (double)budget)
-        return gerror_set(err, G_ERR_NOMEM, "%s: %d values per pixel of a %dx%d image need %.0f MiB, more than the "
-                          "image memory budget of %zu MiB (GENERIC_IMAGE_BUDGET_MB)", path, n, w, h,
-                          (double)npix * n * sizeof(float) / 1048576.0, budget >> 20);
-    // The channels from the first spectral one to the last are decoded a band of rows at a time (a tiled file
-    // at once), then put in the order of their wavelengths.
-    int c0 = nch, c1 = 0;
-    for (const auto &wv : waves) {
-        c0 = std::min(c0, wv.second);
-        c1 = std::max(c1, wv.second + 1);
-    }
-    const int span = c1 - c0, band = spec.tile_width > 0 ? h : std::min(h, 64);
-    GmemHold wl, vals, scratch;
-    wl.p = gmem_alloc((size_t)n * sizeof(double));
-    vals.p = gmem_alloc(npix * n * sizeof(float));
-    scratch.p = gmem_alloc((size_t)w * band * span * sizeof(float));
-    if (!wl.p || !vals.p || !scratch.p)
-        return gerror_set(err, G_ERR_NOMEM, "%s: out of memory for the spectra of a %dx%d image", path, w, h);
-    float *v = (float *)vals.p, *raw = (float *)scratch.p;
-    for (int y = 0; y < h; y += band) {
-        const int y1 = std::min(y + band, h);
-        const bool ok = spec.tile_width > 0 ? in->read_image(0, 0, c0, c1, TypeDesc::FLOAT, raw)
-                                            : in->read_scanlines(0, 0, spec.y + y, spec.y + y1, 0, c0, c1,
-                                                                 TypeDesc::FLOAT, raw);
-        if (!ok)
-            return gerror_set(err, G_ERR_IO, "%s: cannot decode image: %s", path,
-                              first_line(in->geterror()).c_str());
-        for (size_t i = 0; i < (size_t)(y1 - y) * w; i++) {
-            const float *s = raw + i * span;
-            float *d = v + ((size_t)y * w + i) * n;
-            for (int k = 0; k < n; k++)
-                d[k] = s[waves[k].second - c0];
-        }
-    }
-    in->close();
-    double *l = (double *)wl.p;
-    for (int k = 0; k < n; k++)
-        l[k] = waves[k].first;
-    *out = GImageSpectraBuf{w, h, n, l, v};
-    wl.p = vals.p = nullptr; // now out's
-    return G_OK;
-}
-
 // ---- the entries from C: no exception may leave them ----
 
 int image_read(const char *path, unsigned flags, GImage *img, GError *err)
@@ -666,37 +555,23 @@ int image_read(const char *path, unsigned flags, GImage *img, GError *err)
         return gerror_set(err, G_ERR_INVALID, "no image file name given");
     if ((flags & GIMAGE_READ_RGB) && (flags & GIMAGE_READ_RGBA))
         return gerror_set(err, G_ERR_INVALID, "%s: GIMAGE_READ_RGB and GIMAGE_READ_RGBA exclude each other", path);
-    try {
-        return read_impl(path, flags, img, err);
-    } catch (const std::bad_alloc &) {
-        return gerror_set(err, G_ERR_NOMEM, "%s: out of memory reading the image", path);
-    } catch (const std::exception &e) {
-        return gerror_set(err, G_ERR_IO, "%s: cannot read image: %s", path, e.what());
-    } catch (...) {
-        return gerror_set(err, G_ERR_IO, "%s: cannot read image", path);
-    }
+    return goiio_guarded(path, "reading the image", "read image", err, [&] { return read_impl(path, flags, img, err); });
 }
 
 // A file's windows and channel count, with open_checked's checks.
 int read_header(const char *path, GImageWindow *win, int *channels, GError *err)
 {
-    try {
+    return goiio_guarded(path, "reading the image header", "read image", err, [&] {
         std::unique_ptr<ImageInput> in;
-        int rc = open_checked(path, nullptr, &in, err);
+        int rc = goiio_open_checked(path, nullptr, &in, err);
         if (rc != G_OK)
             return rc;
         const ImageSpec &spec = in->spec();
         *win = GImageWindow{spec.x - spec.full_x, spec.y - spec.full_y, spec.width, spec.height, spec.full_width,
                             spec.full_height};
         *channels = spec.nchannels;
-        return G_OK;
-    } catch (const std::bad_alloc &) {
-        return gerror_set(err, G_ERR_NOMEM, "%s: out of memory reading the image header", path);
-    } catch (const std::exception &e) {
-        return gerror_set(err, G_ERR_IO, "%s: cannot read image: %s", path, e.what());
-    } catch (...) {
-        return gerror_set(err, G_ERR_IO, "%s: cannot read image", path);
-    }
+        return (int)G_OK;
+    });
 }
 
 int image_info(const char *path, int *width, int *height, int *channels, GError *err)
@@ -722,39 +597,13 @@ int image_window(const char *path, GImageWindow *win, GError *err)
     return read_header(path, win, &nch, err);
 }
 
-int image_read_spectra(const char *path, GImageSpectraBuf *out, GError *err)
-{
-    if (!out)
-        return gerror_set(err, G_ERR_INVALID, "no spectra given");
-    *out = GImageSpectraBuf{0, 0, 0, nullptr, nullptr};
-    if (!path || !*path)
-        return gerror_set(err, G_ERR_INVALID, "no image file name given");
-    try {
-        return read_spectra_impl(path, out, err);
-    } catch (const std::bad_alloc &) {
-        return gerror_set(err, G_ERR_NOMEM, "%s: out of memory reading the spectra", path);
-    } catch (const std::exception &e) {
-        return gerror_set(err, G_ERR_IO, "%s: cannot read image: %s", path, e.what());
-    } catch (...) {
-        return gerror_set(err, G_ERR_IO, "%s: cannot read image", path);
-    }
-}
-
 int image_write(const char *path, const GImage *img, const GImageWriteOptions *opt, GError *err)
 {
     if (!path || !*path)
         return gerror_set(err, G_ERR_INVALID, "no image file name given");
     if (!img || !img->pixels || img->width <= 0 || img->height <= 0 || img->channels < 1 || img->channels > 4)
         return gerror_set(err, G_ERR_INVALID, "%s: invalid image to write", path);
-    try {
-        return write_impl(path, img, opt, err);
-    } catch (const std::bad_alloc &) {
-        return gerror_set(err, G_ERR_NOMEM, "%s: out of memory writing the image", path);
-    } catch (const std::exception &e) {
-        return gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, e.what());
-    } catch (...) {
-        return gerror_set(err, G_ERR_IO, "%s: cannot write image", path);
-    }
+    return goiio_guarded(path, "writing the image", "write image", err, [&] { return write_impl(path, img, opt, err); });
 }
 
 } // namespace
@@ -777,8 +626,8 @@ extern "C" __attribute__((visibility("default"))) int generic_oiio_module(unsign
     ops->image_write = image_write;
     ops->image_check_output = check_output_impl;
     ops->image_window = image_window;
-    ops->image_read_spectra = image_read_spectra;
     goiio_texsys_ops(ops);
     goiio_display_ops(ops);
+    goiio_spectra_ops(ops);
     return 0;
 }
