@@ -153,6 +153,11 @@ static int encode_png(Sink *sink, const char *path, const GImage *img, double sc
     png_set_IHDR(png, info, (png_uint_32)img->width, (png_uint_32)img->height, 8, types[ch - 1],
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    /* zlib level 3 and the Sub filter on every row instead of libpng's level 6 with the filter chosen per row:
+     * on an 800x600 render and a 960x540 path-traced one, 3 to 3.6 times less encoding CPU for files 1% to 6%
+     * larger (encoding was 6% of a whole 800x600 Whitted render's CPU) */
+    png_set_compression_level(png, 3);
+    png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
     png_write_info(png, info);
     pthread_once(&thresholds_once, make_thresholds);
     for (int y = 0; y < img->height; y++) {
