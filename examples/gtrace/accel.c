@@ -392,9 +392,10 @@ static int build_objects(Scene *s, GError *err)
 /* The top-level BVH's quality. Embree's high-quality build (spatial splits) costs about 1.4 us of CPU per
  * triangle more than the medium one and saves some 10% of the tracing: for the 1M-triangle mesh of bench-pov at
  * 800x600 and 1 sample per pixel the medium build halves the process's CPU (2.9 to 1.4 s) and leaves the render
- * time within noise. So the high build is chosen when the camera's samples (its width x height x spp, command line
- * overrides aside) are at least 10 per primitive of the top-level scene, the medium one otherwise. */
-static enum RTCBuildQuality top_quality(const Scene *s)
+ * time within noise. So the high build is chosen when the image's camera samples (width x height x spp of the
+ * whole image, a crop's or an MPI rank's share aside, so that every piece builds alike) are at least 10 per
+ * primitive of the top-level scene, the medium one otherwise. */
+static enum RTCBuildQuality top_quality(const Scene *s, double samples)
 {
     double prims = 0.0;
     for (int i = 0; i < s->nobjects; i++) {
@@ -402,18 +403,22 @@ static enum RTCBuildQuality top_quality(const Scene *s)
         if (!o->is_part && object_is_shape(o))
             prims += o->kind == SHAPE_MESH ? o->mesh->ntris : 1;
     }
-    double samples = (double)s->camera.width * s->camera.height * s->camera.spp;
     return samples >= 10.0 * prims ? RTC_BUILD_QUALITY_HIGH : RTC_BUILD_QUALITY_MEDIUM;
 }
 
 int accel_build(Scene *s, GError *err)
+{
+    return accel_build_for(s, (double)s->camera.width * s->camera.height * s->camera.spp, err);
+}
+
+int accel_build_for(Scene *s, double samples, GError *err)
 {
     accel_release(s);
     s->device = rtcNewDevice(NULL);
     if (!s->device)
         return gerror_set(err, G_ERR_NOMEM, "embree: cannot create a device (error %d)", (int)rtcGetDeviceError(NULL));
     s->rtc = rtcNewScene(s->device);
-    rtcSetSceneBuildQuality(s->rtc, top_quality(s));
+    rtcSetSceneBuildQuality(s->rtc, top_quality(s, samples));
     int rc = build_objects(s, err);
     if (rc < 0) {
         accel_release(s);

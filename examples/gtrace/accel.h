@@ -8,8 +8,11 @@
 
 #include <generic/error.h>
 
-/** Builds the Embree scene from the objects (after all are added). */
+/** Builds the Embree scene from the objects (after all are added), for the camera's own width x height x spp. */
 int accel_build(Scene *s, GError *err);
+/** The same for an image of `samples` camera samples in all (the command line's size and spp): the top-level
+ * BVH's build quality depends on the samples per primitive. */
+int accel_build_for(Scene *s, double samples, GError *err);
 /** Releases Embree objects. */
 void accel_release(Scene *s);
 /** Closest hit along r; 1 when something was hit. */

@@ -403,7 +403,7 @@ static int prepare(const Options *o, const GReaderOptions *trust, int check_outp
         memcpy(rs->crop, o->crop, sizeof rs->crop);
     }
     *exposure = o->have_exposure ? o->exposure : cam->exposure;
-    return accel_build(*scene, err);
+    return accel_build_for(*scene, (double)rs->width * rs->height * rs->spp, err);
 }
 
 /* The warnings and the summary line of a finished render (ranks: the MPI job's size, 0 without MPI). */
