@@ -112,6 +112,8 @@ int gmaterial_diffuse(const GMaterial *m, GSurfPoint *sp, GColor *result)
     return G_OK;
 }
 
+int gmaterial_opaque_everywhere(const GMaterial *m) { return m && !m->cls->opaque; }
+
 int gmaterial_opaque(const GMaterial *m, GSurfPoint *sp)
 {
     if (m && m->cls->opaque)

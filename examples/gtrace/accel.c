@@ -29,7 +29,12 @@ typedef struct Context {
     const Ray *ray;
     double best_t;
     unsigned best_geom, best_inst;
+    int stopped;  /* occlusion: a surface that blocks all light ended the query */
+    int passable; /* occlusion: a surface on the way may let light through (the walk of lights.c decides) */
 } Context;
+
+/* 1 when a surface of material m may let light through somewhere (a shadow ray must then walk its hits). */
+static int may_pass_light(const GMaterial *m) { return !gmaterial_opaque_everywhere(m); }
 
 /* A prototype: the Embree scene of a group's shapes (or of one instanced shape), built once however often
  * it is placed, and its geometry id -> object table. */
@@ -114,11 +119,18 @@ static void user_occluded(const struct RTCOccludedFunctionNArguments *args)
     Context *cx = (Context *)args->context;
     struct RTCRay *ray = (struct RTCRay *)args->ray;
     GVec3 ro, rd;
-    to_object(o, context_instance(cx), cx->ray, &ro, &rd);
+    const Instance *in = context_instance(cx);
+    to_object(o, in, cx->ray, &ro, &rd);
     double t;
     int surface;
-    if (shape_intersect(o, ro, rd, cx->ray->tmin, cx->ray->tmax, &t, &surface))
-        ray->tfar = -INFINITY;
+    if (!shape_intersect(o, ro, rd, cx->ray->tmin, cx->ray->tmax, &t, &surface))
+        return;
+    if (may_pass_light(in && in->material ? in->material : o->material)) {
+        cx->passable = 1; /* the query goes on: an opaque surface farther on still settles it */
+        return;
+    }
+    cx->stopped = 1;
+    ray->tfar = -INFINITY;
 }
 
 /* Attaches a new geometry to the Embree scene `into` and returns its id through *id. */
@@ -205,9 +217,12 @@ static int add_user(Scene *s, RTCScene into, Object *o, unsigned *id, GError *er
 static int add_shape(Scene *s, RTCScene into, Object *o, unsigned *id, GError *err)
 {
     switch (o->kind) {
-    case SHAPE_MESH: return add_mesh(s, into, o, id, err);
+    case SHAPE_MESH:
     case SHAPE_QUAD:
-    case SHAPE_TRIANGLE: return add_flat(s, into, o, id, err);
+    case SHAPE_TRIANGLE:
+        /* Embree ends an occlusion query on these itself, whatever their material */
+        s->native_may_pass |= may_pass_light(o->material);
+        return o->kind == SHAPE_MESH ? add_mesh(s, into, o, id, err) : add_flat(s, into, o, id, err);
     default: return add_user(s, into, o, id, err);
     }
 }
@@ -316,6 +331,8 @@ static int place(Scene *s, int proto, const Xform *xf, const GMaterial *material
     attach(g, s->rtc, &id);
     if (table_fit(&s->by_geom, &s->inst_by_geom, &s->nby_geom, id) != G_OK)
         return gerror_set(err, G_ERR_NOMEM, "out of memory");
+    if (material && may_pass_light(material))
+        s->native_may_pass = 1; /* an override that may reach Embree's own shapes of the prototype */
     Instance *in = &s->inst_by_geom[id];
     in->xf = *xf;
     in->material = material;
@@ -447,6 +464,7 @@ void accel_release(Scene *s)
     s->protos = NULL;
     s->nprotos = s->cap_protos = 0;
     s->ninstances = 0;
+    s->native_may_pass = 0;
     if (s->rtc)
         rtcReleaseScene(s->rtc);
     if (s->device)
@@ -544,8 +562,11 @@ int accel_occluded(const Scene *s, const Ray *r)
     cx.ray = r;
     cx.best_t = INFINITY;
     cx.best_geom = cx.best_inst = RTC_INVALID_GEOMETRY_ID;
+    cx.stopped = cx.passable = 0;
     struct RTCRay ray;
     make_ray(r, &ray);
     rtcOccluded1(s->rtc, &cx.rtc, &ray);
-    return ray.tfar < 0.0f;
+    if (ray.tfar < 0.0f) /* ended by an analytic shape that blocks all light, or by one of Embree's own shapes */
+        return cx.stopped || !s->native_may_pass ? OCCLUDED_OPAQUE : OCCLUDED_PASSABLE;
+    return cx.passable ? OCCLUDED_PASSABLE : OCCLUDED_CLEAR;
 }

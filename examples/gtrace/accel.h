@@ -17,7 +17,13 @@ int accel_build_for(Scene *s, double samples, GError *err);
 void accel_release(Scene *s);
 /** Closest hit along r; 1 when something was hit. */
 int accel_intersect(const Scene *s, const Ray *r, Hit *h);
-/** 1 when anything lies on r between tmin and tmax. */
+/** What lies on r between tmin and tmax (accel_occluded). */
+typedef enum Occlusion {
+    OCCLUDED_CLEAR = 0,    /**< nothing */
+    OCCLUDED_OPAQUE = 1,   /**< a surface whose material is opaque everywhere (gmaterial_opaque_everywhere) */
+    OCCLUDED_PASSABLE = 2, /**< surfaces that may let light through, none known to block it all */
+} Occlusion;
+/** What lies on r between tmin and tmax: nonzero when anything does. */
 int accel_occluded(const Scene *s, const Ray *r);
 
 #endif

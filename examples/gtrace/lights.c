@@ -141,7 +141,8 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
         return G_OK; /* nothing reflected from here: no shadow ray */
     Ray sr = {offset_origin(sp->point, facing, in), in, 0.0, dist * (1.0 - 1e-7), 0.0, 0.0};
     c->rays++;
-    if (!accel_occluded(s, &sr)) {
+    int occluded = accel_occluded(s, &sr);
+    if (occluded == OCCLUDED_CLEAR) {
         const GMaterial *medium = gvec3_dot(in, facing) >= 0.0 ? sp->from : sp->to;
         if (medium && isfinite(dist)) {
             if ((rc = gmaterial_absorption(medium, sp, refl, dist, tmp)) < 0 || (rc = gcolor_copy(refl, tmp)) < 0)
@@ -149,8 +150,8 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
         }
         return gcolor_add(result, result, refl);
     }
-    if (t->blocked)
-        return G_OK;
+    if (t->blocked || occluded == OCCLUDED_OPAQUE)
+        return G_OK; /* the walk below would end at that surface */
     int visible;
     if ((rc = transmit(c, sp, facing, media, in, dist, illum, &visible)) < 0 || !visible)
         return rc;

@@ -42,6 +42,7 @@ typedef struct Scene {
     struct AccelProto *protos; /**< prototype scenes of groups and instanced shapes */
     int nprotos, cap_protos;
     unsigned ninstances;    /**< Embree instances in the top-level scene */
+    int native_may_pass;    /**< a mesh, quad or triangle (or an override reaching one) may let light through */
     const struct ProbeEnv *env; /**< light probe seen by rays that leave the scene (NULL: background) */
 } Scene;
 

@@ -144,6 +144,10 @@ GENERIC_API GENERIC_NODISCARD int gmaterial_normal(const GMaterial *m, GSurfPoin
 GENERIC_API GENERIC_NODISCARD int gmaterial_diffuse(const GMaterial *m, GSurfPoint *sp, GColor *result);
 /** 1 when opaque. */
 GENERIC_API GENERIC_NODISCARD int gmaterial_opaque(const GMaterial *m, GSurfPoint *sp);
+/** 1 when m is opaque at every point (gmaterial_opaque would say 1 wherever it is asked): a renderer may then let
+ * any surface of m block a shadow ray without filling a surface point. 0 when it may let light through somewhere
+ * (or cannot tell); NULL (vacuum) lets light through. */
+GENERIC_API int gmaterial_opaque_everywhere(const GMaterial *m);
 
 /** Draws a direction for light leaving towards out (see the top of this file): 1 drawn, 0 none, or a status.
  * weight must have storage of m's model; m == NULL (vacuum) draws nothing. */
