@@ -48,7 +48,7 @@ GENERIC_API GENERIC_NODISCARD int gtexnode_check(const char *node, GMaterial *co
  * that begins with its GMaterial) of class cls in the children's model into *out, with one reference, its depth
  * and cost set, and GMAT_NO_EMISSION (material.h) when its emission is black: cls has no emission slot, or the
  * slot is the kit's gtexblendnode_emission or gtexchild_emission and every child has the bit (a blend class's
- * pick must blend only these children). A class with an emission method of its own gets the bit only from
+ * pick must blend only these children, a GTexChild's child must be the one given). A class with an emission method of its own gets the bit only from
  * gtexnode_inherit_no_emission. It holds no reference to the children yet: the caller takes those. Until it is
  * complete, free it with gmem_free. */
 GENERIC_API GENERIC_NODISCARD int gtexnode_new_checked(const GMaterialClass *cls, GMaterial *const *children, int n, const GGenerator *gen,
