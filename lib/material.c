@@ -15,6 +15,7 @@ int gmaterial_init(GMaterial *m, const GMaterialClass *cls, const GColorModel *m
     m->refcount = 1;
     m->depth = 1;
     m->cost = 1;
+    m->flags = cls->emission ? 0u : GMAT_NO_EMISSION; /* no slot: black, the documented default */
     return G_OK;
 }
 
@@ -75,11 +76,13 @@ int gmaterial_refraction_dir(const GMaterial *m, GSurfPoint *sp, GVec3 view, con
 
 int gmaterial_emission(const GMaterial *m, GSurfPoint *sp, GVec3 out, GColor *result)
 {
-    if (m && m->cls->emission)
+    if (gmaterial_emits(m) && m->cls->emission)
         return m->cls->emission(m, sp, out, result);
     gcolor_black(result);
     return G_OK;
 }
+
+int gmaterial_emits(const GMaterial *m) { return m && !(m->flags & GMAT_NO_EMISSION); }
 
 int gmaterial_ambient(const GMaterial *m, GSurfPoint *sp, const GColor *illum, GColor *result)
 {

@@ -1,7 +1,7 @@
 /* test_texture_image.c - the image node: exact texels at a tiny footprint, MIP level selection against
  * box-filtered averages as the footprint grows, wrap modes, orientation, sRGB decoding, colour images in
- * a spectral model, and files that do not exist or are corrupt. Images are written as PGM/PPM files
- * into a temporary directory. */
+ * a spectral model, GMAT_NO_EMISSION over a lambert and an emitter, and files that do not exist or are
+ * corrupt. Images are written as PGM/PPM files into a temporary directory. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -254,6 +254,34 @@ static void test_color_spaces(void **state)
     gcolormodel_destroy(spec);
 }
 
+/* GMAT_NO_EMISSION (material.h): the node over a lambert has it; over an emitter it has not, and its emission is
+ * the emitter's times the texel (mid grey, linear). */
+static void test_emission_flag(void **state)
+{
+    Fix *f = *state;
+    GMaterial *lit = image(f, f->grey, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
+    assert_true(lit->flags & GMAT_NO_EMISSION);
+    gmaterial_unref(lit);
+    GColor one;
+    GMaterial *e, *m;
+    GError err;
+    assert_int_equal(gcolor_alloc(&one, f->rgb), G_OK);
+    assert_int_equal(gcolor_from_rgb(&one, (double[3]){2, 2, 2}, GCOLOR_LIGHT), G_OK);
+    assert_int_equal(gemitter_create(f->rgb, &one, 1, &e, &err), G_OK);
+    GImageNodeOptions o = {.texsys = f->ts, .colorspace = GTEX_COLORSPACE_LINEAR};
+    assert_int_equal(gnode_image_create(e, f->grey, &o, &m, &err), G_OK);
+    assert_false(m->flags & GMAT_NO_EMISSION);
+    GSurfPoint sp;
+    plane_point(&sp, f->rgb, f->scratch, 0.5, 0.5);
+    assert_int_equal(gmaterial_emission(m, &sp, gvec3(0, 0, 1), &f->c), G_OK);
+    double rgb[3];
+    assert_int_equal(gcolor_to_rgb(&f->c, GCOLOR_LIGHT, rgb), G_OK);
+    assert_float_equal(rgb[1], 2.0 * 128.0 / 255.0, 1e-4);
+    gmaterial_unref(m);
+    gmaterial_unref(e);
+    gcolor_free(&one);
+}
+
 static void test_bad_files(void **state)
 {
     Fix *f = *state;
@@ -406,6 +434,7 @@ int main(void)
         cmocka_unit_test(test_wrap_and_orientation),
         cmocka_unit_test(test_color_spaces),
         cmocka_unit_test(test_bad_files),
+        cmocka_unit_test(test_emission_flag),
         cmocka_unit_test(test_nonfinite_texels),
         cmocka_unit_test(test_anisotropic_footprint),
         cmocka_unit_test(test_truncated_files),

@@ -218,6 +218,7 @@ int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptio
         image_destroy(&im->node.base);
         return rc;
     }
+    gtexnode_inherit_no_emission(&im->node.base, &child, 1); /* the child's emission times a finite texel */
     *out = &im->node.base;
     return G_OK;
 }

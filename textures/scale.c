@@ -126,6 +126,7 @@ int gnode_scale_create(GMaterial *child, GGenerator *factor, GMaterial **out, GE
         return rc;
     Scale *s = (Scale *)mat;
     s->factor = ggenerator_ref(factor);
+    gtexnode_inherit_no_emission(&s->node.base, &child, 1); /* the child's emission times the factor */
     *out = &s->node.base;
     return G_OK;
 }

@@ -52,7 +52,7 @@ static void usage_main(FILE *f)
                "  plot    polar plot of the reflection in the plane of incidence (PNG)\n"
                "  list    the materials, texture nodes and generators a file (or a scene) defines\n"
                "  check   conformance checks: albedo, reciprocity, finite values, Snell's law, defaults,\n"
-               "          sampling (chi-square, pdf, weights)\n"
+               "          no emission where flagged, sampling (chi-square, pdf, weights)\n"
                "  types   the registered material, node and generator types\n"
                "  swatch  a picture of a material or texture tree (gmat swatch --help)\n"
                "  laser   the laser experiment of Wilkie et al. (gmat laser --help)\n\n"
@@ -101,6 +101,7 @@ static void usage(const char *cmd, FILE *f)
                    "  snell        refraction_dir follows Snell's law both ways, total internal reflection\n"
                    "               past the critical angle (materials that are not opaque)\n"
                    "  defaults     methods the class leaves out behave as material.h documents\n"
+                   "  no-emission  a material flagged GMAT_NO_EMISSION gets black from its class's emission\n"
                    "Each is measured at several surface points (u, v, point and surface index vary).\n"
                    "  --samples N         albedo grid N x 2N (8..4096, default 64)\n\n%s",
                 common);

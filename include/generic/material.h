@@ -44,8 +44,8 @@ extern "C" {
 #endif
 
 /** Version of the material vtable and header (2: the header has depth and cost; 3: the sampling slots sample,
- * pdf and is_delta). */
-#define GMATERIAL_ABI_VERSION 3
+ * pdf and is_delta; 4: the header has flags). */
+#define GMATERIAL_ABI_VERSION 4
 
 typedef struct GMaterialClass GMaterialClass;
 
@@ -63,6 +63,18 @@ typedef struct GMaterialSample {
     int flags;  /**< GSAMPLE_* */
 } GMaterialSample;
 
+/** Properties of one material instance (bits of GMaterial.flags) that let the dispatch skip work. */
+enum {
+    /** emission() is black at every point and towards every direction: gmaterial_emission returns black at once,
+     * without calling the class (a texture tree of non-emitting leaves then costs nothing per hit for it).
+     * gmaterial_init sets it when the class has no emission slot (the documented default is black); the node kit
+     * sets it on a node whose emission only combines its children's when every child has it (node_kit.h). A class
+     * with an emission slot that knows an instance's emission to be black (a zero radiance, say) may set it after
+     * gmaterial_init, and must never set it otherwise: a wrongly set bit makes lights dark, wrong pictures that
+     * no error reports (`gmat check`'s no-emission property catches it). Clearing it is always safe. */
+    GMAT_NO_EMISSION = 1u
+};
+
 /** A material instance begins with this header; implementations embed it as their first member. */
 struct GMaterial {
     const GMaterialClass *cls;
@@ -71,6 +83,8 @@ struct GMaterial {
     int depth;                /**< 1 (gmaterial_init); a texture node: 1 + its deepest child's (node_kit.h) */
     int cost;                 /**< most material calls one call can make, itself included: 1 (gmaterial_init);
                                    a texture node: see GTEXNODE_MAX_COST (node_kit.h) */
+    unsigned flags;           /**< GMAT_* bits (since version 4): set by gmaterial_init and the node kit; 0 in a
+                                   header made without them, which only costs speed */
 };
 
 /** The material vtable. Colour methods return a status; direction methods return 1 (valid), 0 (not valid)
@@ -110,7 +124,8 @@ struct GMaterialClass {
     int (*is_delta)(const GMaterial *self, GSurfPoint *sp);
 };
 
-/** Fills the header of a new instance (refcount 1); G_ERR_VERSION when the class is of another version. */
+/** Fills the header of a new instance (refcount 1; flags GMAT_NO_EMISSION when the class has no emission slot,
+ * else 0); G_ERR_VERSION when the class is of another version. */
 GENERIC_API GENERIC_NODISCARD int gmaterial_init(GMaterial *m, const GMaterialClass *cls, const GColorModel *model, GError *err);
 /** Adds an owner; returns m. */
 GENERIC_API GMaterial *gmaterial_ref(GMaterial *m);
@@ -132,8 +147,11 @@ GENERIC_API GENERIC_NODISCARD int gmaterial_reflection_dir(const GMaterial *m, G
 /** Ideal refraction direction; 0 for total internal reflection or opaque materials. */
 GENERIC_API GENERIC_NODISCARD int gmaterial_refraction_dir(const GMaterial *m, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
                              GVec3 *dir);
-/** Emitted light towards out. */
+/** Emitted light towards out: black without a call to the class when m has GMAT_NO_EMISSION (or is NULL). */
 GENERIC_API GENERIC_NODISCARD int gmaterial_emission(const GMaterial *m, GSurfPoint *sp, GVec3 out, GColor *result);
+/** 1 when m may emit light (its emission slot is called), 0 when it has GMAT_NO_EMISSION or is NULL (vacuum):
+ * a renderer may skip the emission of a 0 material altogether. */
+GENERIC_API int gmaterial_emits(const GMaterial *m);
 /** Reflected ambient light. */
 GENERIC_API GENERIC_NODISCARD int gmaterial_ambient(const GMaterial *m, GSurfPoint *sp, const GColor *illum, GColor *result);
 /** Light left after `length` in the material as a medium (m == NULL: vacuum, nothing absorbed). */

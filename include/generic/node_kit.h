@@ -46,10 +46,22 @@ GENERIC_API GENERIC_NODISCARD int gtexnode_check(const char *node, GMaterial *co
 
 /** gtexnode_check and gtexnode_measure (messages naming the class), then a zeroed node of `size` bytes (a struct
  * that begins with its GMaterial) of class cls in the children's model into *out, with one reference, its depth
- * and cost set. It holds no reference to
- * the children yet: the caller takes those. Until it is complete, free it with gmem_free. */
+ * and cost set, and GMAT_NO_EMISSION (material.h) when its emission is black: cls has no emission slot, or the
+ * slot is the kit's gtexblendnode_emission or gtexchild_emission and every child has the bit (a blend class's
+ * pick must blend only these children, a GTexChild's child must be the one given). A class with an emission method of its own gets the bit only from
+ * gtexnode_inherit_no_emission. It holds no reference to the children yet: the caller takes those. Until it is
+ * complete, free it with gmem_free. */
 GENERIC_API GENERIC_NODISCARD int gtexnode_new_checked(const GMaterialClass *cls, GMaterial *const *children, int n, const GGenerator *gen,
                          int gen_needed, size_t size, GMaterial **out, GError *err);
+
+/** 1 when each of the n children has GMAT_NO_EMISSION (material.h): a node whose emission only combines theirs
+ * (weighted sums, products with finite factors, the child's at a moved point) then emits nothing. */
+GENERIC_API GENERIC_NODISCARD int gtexnode_children_dark(GMaterial *const *children, int n);
+
+/** Sets GMAT_NO_EMISSION on node when gtexnode_children_dark(children, n): for a node class whose own emission
+ * method only combines its children's emissions (the scale, image and transform nodes call it after
+ * construction). Never for a node that adds light of its own: a wrong bit gives wrong pictures. */
+GENERIC_API void gtexnode_inherit_no_emission(GMaterial *node, GMaterial *const *children, int n);
 
 /** 1 for the methods whose colour carries light (reflection, refraction, emission, ambient, diffuse): the ones
  * a node that darkens or tints its child (scale, image) multiplies. */

@@ -27,6 +27,11 @@
  * api->add_type are collected and registered together when init returns 0; if init fails, or one of the names is
  * taken already, none is registered and the module is closed again. Registration is only possible during init.
  *
+ * A material module need not know about GMaterial.flags: gmaterial_init sets GMAT_NO_EMISSION (material.h) for a
+ * class without an emission slot. A class with an emission slot may set that bit on an instance it knows to
+ * emit nothing, after gmaterial_init, and never otherwise: a wrong bit hides the material's light from every
+ * renderer without an error (`gmat check` reports it as the no-emission property).
+ *
  * A module is built against the installed headers only and is not linked with libgeneric: the library's
  * functions are resolved from the program that loads it (programs link libgeneric.so, or the static library
  * with -rdynamic). A loaded module stays loaded for the life of the process (its types stay registered); loading

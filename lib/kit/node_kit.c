@@ -120,6 +120,8 @@ int gtexnode_new_checked(const GMaterialClass *cls, GMaterial *const *children, 
     if (rc == G_OK) {
         (*out)->depth = depth;
         (*out)->cost = cost;
+        if (cls->emission == gtexblendnode_emission || cls->emission == gtexchild_emission) /* sums of children */
+            gtexnode_inherit_no_emission(*out, children, n);
     }
     return rc;
 }

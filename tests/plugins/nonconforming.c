@@ -8,6 +8,9 @@
  *   -DMISDRAWN   material "misdrawn_lambert": a Lambertian of albedo 0.8 whose pdf says cos / pi (and whose
  *                weights are reflection / that pdf) but whose sample() draws uniformly over the hemisphere: only
  *                the chi2 test of gmat check sees it;
+ *   -DMISFLAGGED material "misflagged_lambert": a Lambertian of albedo 0.5 with an emission slot that glows (0.1
+ *                of white everywhere) whose instances set GMAT_NO_EMISSION after gmaterial_init all the same, so
+ *                renderers never see the glow: only the no-emission check of gmat check sees it;
  *   -DBAD_BANDS  colour model "bad_bands": the same grey model with a correct add and two wavelength bands whose
  *                masks are both white, so the bands do not partition a value;
  *   -DBAD_ADD    colour model "bad_add": the grey model (luminance only) whose add returns 1.01 a + b, so
@@ -19,7 +22,7 @@
 
 GENERIC_MODULE_EXPORT const int generic_module_abi = GMODULE_ABI_VERSION;
 
-#if defined(GAIN) || defined(SKEWED) || defined(MISDRAWN)
+#if defined(GAIN) || defined(SKEWED) || defined(MISDRAWN) || defined(MISFLAGGED)
 typedef struct Flat {
     GMaterial base;
 } Flat;
@@ -40,6 +43,8 @@ static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, cons
     double f = 1.5 / M_PI;
 #elif defined(MISDRAWN)
     double f = 0.8 / M_PI;
+#elif defined(MISFLAGGED)
+    double f = 0.5 / M_PI;
 #else
     double f = (0.25 + 0.5 * ci * ci) / M_PI;
 #endif
@@ -50,6 +55,8 @@ static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, cons
 #define FLAT_NAME "gain_lambert"
 #elif defined(MISDRAWN)
 #define FLAT_NAME "misdrawn_lambert"
+#elif defined(MISFLAGGED)
+#define FLAT_NAME "misflagged_lambert"
 #else
 #define FLAT_NAME "skewed_lambert"
 #endif
@@ -80,6 +87,15 @@ static int flat_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const G
 }
 #endif
 
+#ifdef MISFLAGGED
+/* A faint glow that gmaterial_emission never shows: the instances are flagged GMAT_NO_EMISSION (the error). */
+static int flat_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result)
+{
+    (void)self, (void)sp, (void)out;
+    return gcolor_fill(result, 0.1);
+}
+#endif
+
 static const GMaterialClass flat_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = FLAT_NAME,
@@ -89,6 +105,9 @@ static const GMaterialClass flat_class = {
 #ifdef MISDRAWN
     .sample = flat_sample,
     .pdf = flat_pdf,
+#endif
+#ifdef MISFLAGGED
+    .emission = flat_emission,
 #endif
 };
 
@@ -109,6 +128,9 @@ static int parse_flat(GReader *r, const void *vtable, void **object, GError *err
         gmem_free(m);
         return rc;
     }
+#ifdef MISFLAGGED
+    m->base.flags |= GMAT_NO_EMISSION; /* the deliberate error: the class's emission is not black */
+#endif
     *object = &m->base;
     return G_OK;
 }

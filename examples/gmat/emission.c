@@ -1,0 +1,63 @@
+/* emission.c - the no-emission check of `gmat check`. A material whose header has GMAT_NO_EMISSION
+ * (material.h) emits nothing as far as a renderer knows: gmaterial_emission answers black without calling the
+ * class. So a bit set wrongly (by a plug-in on an instance that does emit) would darken every light of that
+ * material without an error. The check calls the class's own emission slot directly, at the places and over
+ * the directions of the finite check (above and below the surface), and holds it to black:
+ *   no-emission  the largest |value| of any sample the slot returns (a failed call counts as infinite);
+ *                nothing to check without the bit, or without a slot (black is then the default). */
+#include "gmat.h"
+
+#include <math.h>
+#include <stdio.h>
+
+/* The largest |sample| of c, every entry of a matrix (infinite for NaN). */
+static double largest(const GColor *c)
+{
+    double big = 0.0;
+    int n = c->kind == GCOLOR_MATRIX ? c->model->capacity : c->model->nvalues;
+    for (int j = 0; j < n && j < c->capacity; j++) {
+        double x = fabs((double)c->v[j]);
+        big = isnan(x) ? INFINITY : fmax(big, x);
+    }
+    return big;
+}
+
+void gmat_check_no_emission(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
+                            void *checker)
+{
+    const GMaterial *m = ctx->material;
+    if (gmaterial_emits(m) || !m->cls->emission) {
+        report(checker, "no-emission", 0.0, 0.0,
+               gmaterial_emits(m) ? "(GMAT_NO_EMISSION not set: the emission slot is called)"
+                                  : "(GMAT_NO_EMISSION set, no emission slot: black, the default)");
+        return;
+    }
+    double worst = 0.0;
+    int calls = 0;
+    for (int p = 0; p < nplaces; p++) {
+        ctx->place = &places[p];
+        for (int below = 0; below < 2; below++) {
+            GSurfPoint sp;
+            gmat_surface_point(ctx, &sp, below);
+            double sign = below ? -1.0 : 1.0;
+            for (int t = 0; t < 90; t += 15)
+                for (int ph = 0; ph < 360; ph += 90) {
+                    GVec3 out = gmat_direction(t, ph);
+                    out.z *= sign;
+                    GScratchMark mark = gscratch_mark(ctx->scratch);
+                    GColor c;
+                    int rc = gcolor_scratch(&c, ctx->model, ctx->scratch);
+                    if (rc == G_OK)
+                        rc = m->cls->emission(m, &sp, out, &c);
+                    worst = fmax(worst, rc == G_OK ? largest(&c) : INFINITY);
+                    calls++;
+                    gscratch_release(ctx->scratch, mark);
+                }
+        }
+    }
+    ctx->place = NULL;
+    char detail[200];
+    snprintf(detail, sizeof detail, "(GMAT_NO_EMISSION set: largest |value| of the class's own emission, %d calls;"
+             " must be black)", calls);
+    report(checker, "no-emission", worst, 0.0, detail);
+}

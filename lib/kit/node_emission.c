@@ -1,0 +1,19 @@
+/* node_emission.c - the node kit's GMAT_NO_EMISSION (generic/node_kit.h): a node whose emission only combines
+ * its children's emits nothing when none of them does, so gmaterial_emission answers it without a call. */
+#include "generic/node_kit.h"
+
+int gtexnode_children_dark(GMaterial *const *children, int n)
+{
+    if (!children || n <= 0)
+        return 0;
+    for (int i = 0; i < n; i++)
+        if (!children[i] || gmaterial_emits(children[i]))
+            return 0;
+    return 1;
+}
+
+void gtexnode_inherit_no_emission(GMaterial *node, GMaterial *const *children, int n)
+{
+    if (node && gtexnode_children_dark(children, n))
+        node->flags |= GMAT_NO_EMISSION;
+}

@@ -1,0 +1,287 @@
+/* test_material_emission.c - GMAT_NO_EMISSION (material.h): which materials and nodes get the bit (every
+ * built-in material without an emission slot, not the emitter; a node over children that all have it, not one
+ * over an emitter, whose emission stays the weighted child's), that the bit makes gmaterial_emission answer
+ * black without calling the class, and that the material interface's version rose with the header. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <generic/affine.h>
+#include <generic/materials.h>
+#include <generic/node_kit.h>
+#include <generic/reader.h>
+
+#include "generic/builtins.h"
+#include "texture_fixtures.h"
+#include "test_util.h"
+
+#include <math.h>
+#include <stdio.h>
+
+#include "node_fixture.h"
+
+/* 1 when every sample of c is exactly 0. */
+static int is_black(const GColor *c)
+{
+    for (int j = 0; j < c->model->nvalues; j++)
+        if (c->v[j] != 0.0f)
+            return 0;
+    return 1;
+}
+
+static int dark(const GMaterial *m) { return (m->flags & GMAT_NO_EMISSION) != 0; }
+
+/* A lambert of grey reflectance r and an emitter of grey radiance e (two-sided) in f's model. */
+static GMaterial *lambert(Fix *f, double r)
+{
+    GColor c;
+    double rgb[3] = {r, r, r};
+    GMaterial *m = NULL;
+    GError err;
+    assert_int_equal(gcolor_alloc(&c, f->rgb), G_OK);
+    assert_int_equal(gcolor_from_rgb(&c, rgb, GCOLOR_REFLECTANCE), G_OK);
+    assert_int_equal(glambert_create(f->rgb, &c, &m, &err), G_OK);
+    gcolor_free(&c);
+    return m;
+}
+
+static GMaterial *emitter(Fix *f, double r, double g, double b)
+{
+    GColor c;
+    double rgb[3] = {r, g, b};
+    GMaterial *m = NULL;
+    GError err;
+    assert_int_equal(gcolor_alloc(&c, f->rgb), G_OK);
+    assert_int_equal(gcolor_from_rgb(&c, rgb, GCOLOR_LIGHT), G_OK);
+    assert_int_equal(gemitter_create(f->rgb, &c, 1, &m, &err), G_OK);
+    gcolor_free(&c);
+    return m;
+}
+
+/* Every built-in material type: the bit exactly when the class has no emission slot (all but the emitter;
+ * the fluorescent materials re-radiate in reflection(), their emission is black). */
+static void test_leaf_materials(void **state)
+{
+    (void)state;
+    static const char *const text =
+        "colormodel bispectral\n"
+        "color dayglo reradiation { absorb_peak 470 absorb_width 115 absorb_shape 8 absorb_max 0.97\n"
+        "    emit_width 20 stokes_shift 135 quantum_yield 0.65 reflectance 0.92 }\n"
+        "material l lambert { reflectance rgb 0.5 0.5 0.5 }\n"
+        "material p phong { diffuse rgb 0.3 0.3 0.3 specular rgb 0.5 0.5 0.5 exponent 50 }\n"
+        "material m mirror\n"
+        "material d dielectric\n"
+        "material fv fluorescent-varnish { matrix dayglo ior 1.5 slope 17 }\n"
+        "material fp fluorescent-phong { matrix dayglo ks 0.04 exponents 30 120 480 weights 0.2 0.3 0.5 }\n"
+        "material e emitter { radiance rgb 1 0.5 0.25 }\n";
+    GLibrary *lib = NULL;
+    GError err;
+    if (greader_load_string(text, "emission.mat", NULL, &lib, &err) != G_OK)
+        fail_msg("%s", err.message);
+    static const char *const dark_names[] = {"l", "p", "m", "d", "fv", "fp"};
+    for (size_t i = 0; i < sizeof dark_names / sizeof dark_names[0]; i++) {
+        GMaterial *m = glibrary_material(lib, dark_names[i]);
+        assert_non_null(m);
+        assert_null(m->cls->emission);
+        assert_true(dark(m));
+        assert_int_equal(gmaterial_emits(m), 0);
+    }
+    GMaterial *e = glibrary_material(lib, "e");
+    assert_non_null(e->cls->emission);
+    assert_false(dark(e));
+    assert_int_equal(gmaterial_emits(e), 1);
+    assert_int_equal(gmaterial_emits(NULL), 0); /* vacuum */
+    glibrary_destroy(lib);
+}
+
+/* Nodes over non-emitters have the bit (blends, one-child nodes, nested nodes); their emission is black. */
+static void test_nodes_of_non_emitters(void **state)
+{
+    Fix *f = *state;
+    GMaterial *a = lambert(f, 0.2), *b = lambert(f, 0.8), *c = lambert(f, 0.5);
+    CountGen *g = countgen_new(0.4);
+    GError err;
+    GMaterial *kids[3] = {a, b, c}, *n[8];
+    GAffine2 uv = gaffine2_rotate(30.0);
+    assert_int_equal(gnode_interpolate_create(a, b, &g->base, &n[0], &err), G_OK);
+    assert_int_equal(gnode_interpolate_one_create(a, b, &g->base, GNODE_DIFFUSE, &n[1], &err), G_OK);
+    assert_int_equal(gnode_spline_create(kids, 3, &g->base, GSPLINE_CATMULL_ROM, &n[2], &err), G_OK);
+    assert_int_equal(gnode_select_create(kids, 3, &g->base, &n[3], &err), G_OK);
+    assert_int_equal(gnode_bump_create(a, &g->base, 1.0, &n[4], &err), G_OK);
+    assert_int_equal(gnode_scale_create(b, &g->base, &n[5], &err), G_OK);
+    assert_int_equal(gnode_transform_create(c, &uv, NULL, &n[6], &err), G_OK);
+    GMaterial *inner[2] = {n[0], n[6]}; /* a node of nodes */
+    assert_int_equal(gnode_spline_create(inner, 2, &g->base, GSPLINE_LINEAR, &n[7], &err), G_OK);
+    for (int i = 0; i < 8; i++) {
+        assert_non_null(n[i]->cls->emission); /* the bit comes from the children, not a missing slot */
+        if (!dark(n[i]))
+            fail_msg("node %d (%s) has no GMAT_NO_EMISSION", i, gmaterial_name(n[i]));
+        assert_int_equal(gmaterial_emits(n[i]), 0);
+        call_all(f, n[i]); /* every method still answers */
+        /* the class's own slot agrees: black */
+        assert_int_equal(n[i]->cls->emission(n[i], &f->sp, gvec3(0, 0, 1), &f->c), G_OK);
+        assert_true(is_black(&f->c));
+    }
+    for (int i = 7; i >= 0; i--)
+        gmaterial_unref(n[i]);
+    gmaterial_unref(a);
+    gmaterial_unref(b);
+    gmaterial_unref(c);
+    ggenerator_unref(&g->base);
+}
+
+/* Reads the three channels of an rgb light. */
+static void light_rgb(const GColor *c, double rgb[3]) { assert_int_equal(gcolor_to_rgb(c, GCOLOR_LIGHT, rgb), G_OK); }
+
+/* A node with one emitting child has no bit, and its emission is the weighted child's: interpolate at t = 0.25
+ * is 0.25 E, a linear spline halfway between a lambert and the emitter 0.5 E, scale by 0.6 is 0.6 E, and the
+ * one-child nodes pass E on. */
+static void test_nodes_with_an_emitter(void **state)
+{
+    Fix *f = *state;
+    GMaterial *l = lambert(f, 0.5), *e = emitter(f, 2.0, 1.0, 0.5);
+    CountGen *t = countgen_new(0.25), *half = countgen_new(0.25), *factor = countgen_new(0.6), *one = countgen_new(1.0);
+    GError err;
+    GMaterial *kids[3] = {l, e, l}, *n[6];
+    GAffine2 uv = gaffine2_translate(0.1, 0.2);
+    assert_int_equal(gnode_interpolate_create(l, e, &t->base, &n[0], &err), G_OK);
+    assert_int_equal(gnode_spline_create(kids, 3, &half->base, GSPLINE_LINEAR, &n[1], &err), G_OK);
+    assert_int_equal(gnode_scale_create(e, &factor->base, &n[2], &err), G_OK);
+    assert_int_equal(gnode_bump_create(e, &t->base, 1.0, &n[3], &err), G_OK);
+    assert_int_equal(gnode_transform_create(e, &uv, NULL, &n[4], &err), G_OK);
+    assert_int_equal(gnode_select_create(kids, 3, &one->base, &n[5], &err), G_OK); /* index 1: the emitter */
+    static const double weight[6] = {0.25, 0.5, 0.6, 1.0, 1.0, 1.0};
+    double want[3], got[3];
+    assert_int_equal(gmaterial_emission(e, &f->sp, gvec3(0, 0, 1), &f->c), G_OK);
+    light_rgb(&f->c, want);
+    assert_float_equal(want[0], 2.0, 1e-5);
+    for (int i = 0; i < 6; i++) {
+        if (dark(n[i]))
+            fail_msg("node %d (%s) over an emitter has GMAT_NO_EMISSION", i, gmaterial_name(n[i]));
+        assert_int_equal(gmaterial_emits(n[i]), 1);
+        assert_int_equal(gmaterial_emission(n[i], &f->sp, gvec3(0, 0, 1), &f->c), G_OK);
+        light_rgb(&f->c, got);
+        for (int k = 0; k < 3; k++)
+            if (fabs(got[k] - weight[i] * want[k]) > 1e-5)
+                fail_msg("node %d (%s) channel %d: emission %g, expected %g * %g", i, gmaterial_name(n[i]), k, got[k],
+                         weight[i], want[k]);
+    }
+    /* one emitting leaf deep in a tree: every node above it emits */
+    GMaterial *top;
+    assert_int_equal(gnode_interpolate_create(l, n[0], &t->base, &top, &err), G_OK);
+    assert_false(dark(top));
+    gmaterial_unref(top);
+    for (int i = 5; i >= 0; i--)
+        gmaterial_unref(n[i]);
+    gmaterial_unref(l);
+    gmaterial_unref(e);
+    ggenerator_unref(&t->base);
+    ggenerator_unref(&half->base);
+    ggenerator_unref(&factor->base);
+    ggenerator_unref(&one->base);
+}
+
+/* ---- a class with an emission slot that counts its calls and always glows ---- */
+
+static int glow_calls;
+
+static int glow_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result)
+{
+    (void)self, (void)sp, (void)out;
+    glow_calls++;
+    return gcolor_fill(result, 1.0);
+}
+
+static void glow_destroy(GMaterial *self) { gmem_free(self); }
+
+static const GMaterialClass glow_class = {
+    .abi_version = GMATERIAL_ABI_VERSION, .name = "glow", .description = "emits 1 (tests)",
+    .destroy = glow_destroy, .emission = glow_emission,
+};
+
+static const GMaterialClass plain_class = {
+    .abi_version = GMATERIAL_ABI_VERSION, .name = "plain", .description = "no methods (tests)",
+    .destroy = glow_destroy,
+};
+
+/* With the bit set by hand after init, gmaterial_emission answers black without calling the class; a node over
+ * it takes the bit from it (the kit trusts the child's bit), so the class is not called through the node either. */
+static void test_bit_skips_the_class(void **state)
+{
+    Fix *f = *state;
+    GMaterial *m = gmem_calloc(1, sizeof *m), *p = gmem_calloc(1, sizeof *p);
+    GError err;
+    assert_int_equal(gmaterial_init(m, &glow_class, f->rgb, &err), G_OK);
+    assert_int_equal(gmaterial_init(p, &plain_class, f->rgb, &err), G_OK);
+    assert_int_equal(m->flags, 0u); /* a slot: the class decides */
+    assert_int_equal(p->flags, (unsigned)GMAT_NO_EMISSION); /* no slot: black by default */
+    glow_calls = 0;
+    assert_int_equal(gmaterial_emission(m, &f->sp, gvec3(0, 0, 1), &f->c), G_OK);
+    assert_int_equal(glow_calls, 1);
+    assert_false(is_black(&f->c));
+    m->flags |= GMAT_NO_EMISSION;
+    assert_int_equal(gcolor_fill(&f->c, 3.0), G_OK);
+    assert_int_equal(gmaterial_emission(m, &f->sp, gvec3(0, 0, 1), &f->c), G_OK);
+    assert_int_equal(glow_calls, 1); /* not called */
+    assert_true(is_black(&f->c));
+    assert_int_equal(gmaterial_emits(m), 0);
+
+    CountGen *g = countgen_new(0.5);
+    GMaterial *n;
+    assert_int_equal(gnode_interpolate_create(m, p, &g->base, &n, &err), G_OK);
+    assert_true(dark(n));
+    assert_int_equal(gmaterial_emission(n, &f->sp, gvec3(0, 0, 1), &f->c), G_OK);
+    assert_int_equal(glow_calls, 1);
+    assert_true(is_black(&f->c));
+    assert_int_equal(g->calls, 0); /* not even the node's pick ran */
+    gmaterial_unref(n);
+
+    /* cleared again (always safe): the class is called, through the node only once rebuilt */
+    m->flags &= ~(unsigned)GMAT_NO_EMISSION;
+    assert_int_equal(gnode_interpolate_create(m, p, &g->base, &n, &err), G_OK);
+    assert_false(dark(n));
+    assert_int_equal(gmaterial_emission(n, &f->sp, gvec3(0, 0, 1), &f->c), G_OK);
+    assert_int_equal(glow_calls, 1 + 1);
+    double rgb[3];
+    light_rgb(&f->c, rgb);
+    assert_true(rgb[0] > 0.0);
+    gmaterial_unref(n);
+    ggenerator_unref(&g->base);
+
+    /* a header made without gmaterial_init (flags 0) keeps calling its class: only slower, never wrong */
+    GMaterial raw = {.cls = &glow_class, .model = f->rgb, .refcount = 1};
+    assert_int_equal(gmaterial_emits(&raw), 1);
+    assert_int_equal(gmaterial_emission(&raw, &f->sp, gvec3(0, 0, 1), &f->c), G_OK);
+    assert_int_equal(glow_calls, 3);
+    gmaterial_unref(m);
+    gmaterial_unref(p);
+}
+
+/* The header grew, so the interface version rose to 4: a class of version 3 is refused, naming both. */
+static void test_interface_version(void **state)
+{
+    (void)state;
+    assert_int_equal(GMATERIAL_ABI_VERSION, 4);
+    GMaterialClass old = glow_class;
+    old.abi_version = 3;
+    GMaterial m = {0};
+    GError err;
+    assert_int_equal(gmaterial_init(&m, &old, NULL, &err), G_ERR_VERSION);
+    assert_non_null(strstr(err.message, "interface version 3, the library has 4"));
+}
+
+int main(void)
+{
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_leaf_materials),
+        cmocka_unit_test_setup_teardown(test_nodes_of_non_emitters, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_nodes_with_an_emitter, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_bit_skips_the_class, setup, teardown),
+        cmocka_unit_test(test_interface_version),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
