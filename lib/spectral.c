@@ -181,6 +181,30 @@ void gspectral_resample_free(GSpectralResample *r)
 
 /* ---- colorimetric tables ---- */
 
+/* The allocation of s->xyz[role] holds the 3 * n double weights, then (from an even index, so 16-byte aligned
+ * in a malloc'd block) the float table of gspectral_kxyz (gspectral_xyz_table). */
+static size_t xyz_table_offset(int n) { return ((size_t)3 * n + 1) / 2 * 2; }
+
+static size_t xyz_doubles(int n) { return xyz_table_offset(n) + ((size_t)gspectral_xyz_table_floats(n) + 1) / 2; }
+
+static float *xyz_table(const GSpectral *s, int role) { return (float *)(s->xyz[role] + xyz_table_offset(s->grid.n)); }
+
+/* XYZ from the double weights, summed in double: the tables' own arithmetic. */
+static void xyz_exact(const GSpectral *s, GColorRole role, const float *v, double xyz[3])
+{
+    int n = s->grid.n;
+    const double *w = s->xyz[role == GCOLOR_LIGHT];
+    double x = 0.0, y = 0.0, z = 0.0;
+    for (int k = 0; k < n; k++) {
+        x += w[k] * v[k];
+        y += w[n + k] * v[k];
+        z += w[2 * n + k] * v[k];
+    }
+    xyz[0] = x;
+    xyz[1] = y;
+    xyz[2] = z;
+}
+
 static int invert3(const double m[3][3], double out[3][3])
 {
     double c00 = m[1][1] * m[2][2] - m[1][2] * m[2][1], c01 = m[1][2] * m[2][0] - m[1][0] * m[2][2],
@@ -260,6 +284,10 @@ static int init_colorimetry(GColorModel *m, GSpectral *s, GError *err)
                 s->xyz[role][j * n + k] = xyz[j];
         }
     }
+    for (int role = 0; role < 2; role++) {
+        const double *w = s->xyz[role];
+        gspectral_xyz_table(xyz_table(s, role), w, w + n, w + 2 * n, n);
+    }
     int rc = G_OK;
     for (int role = 0; role < 2 && rc == G_OK; role++) {
         float *basis = s->rgb[role];
@@ -269,9 +297,8 @@ static int init_colorimetry(GColorModel *m, GSpectral *s, GError *err)
             gcie_rgb_to_nm(e, (GColorRole)role, &spec);
             for (int k = 0; k < n; k++)
                 basis[b * n + k] = tmp[k] = (float)nm_at(&spec, s->grid.min + k * s->grid.step);
-            double xyz[3] = {0, 0, 0}, rgb[3];
-            if (gspectral_to_xyz(m, &c, (GColorRole)role, xyz) != G_OK)
-                xyz[0] = xyz[1] = xyz[2] = 0.0; /* a basis colour it cannot convert: the inversion below refuses */
+            double xyz[3], rgb[3];
+            xyz_exact(s, (GColorRole)role, tmp, xyz);
             gcie_xyz_to_rgb(xyz, rgb);
             for (int j = 0; j < 3; j++)
                 p[j][b] = rgb[j];
@@ -310,7 +337,7 @@ int gspectral_init(GColorModel *m, GSpectral *s, GSpectralGrid grid, int linear_
     if (rc == G_OK) {
         s->lum = gmem_calloc((size_t)n, sizeof(float));
         for (int role = 0; role < 2; role++) {
-            s->xyz[role] = gmem_calloc((size_t)n * 3, sizeof(double));
+            s->xyz[role] = gmem_calloc(xyz_doubles(n), sizeof(double));
             s->rgb[role] = gmem_calloc((size_t)n * 3, sizeof(float));
             if (!s->xyz[role] || !s->rgb[role])
                 rc = G_ERR_NOMEM;
@@ -456,18 +483,7 @@ int gspectral_from_nm(const GColorModel *m, const GSpectrumNM *in, GColorRole ro
 int gspectral_to_xyz(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3])
 {
     const GSpectral *s = m->priv;
-    int n = m->nvalues;
-    const double *w = s->xyz[role == GCOLOR_LIGHT];
-    double x = 0.0, y = 0.0, z = 0.0;
-    for (int k = 0; k < n; k++) {
-        double v = a->v[k];
-        x += w[k] * v;
-        y += w[n + k] * v;
-        z += w[2 * n + k] * v;
-    }
-    xyz[0] = x;
-    xyz[1] = y;
-    xyz[2] = z;
+    gspectral_kxyz(xyz_table(s, role == GCOLOR_LIGHT), a->v, m->nvalues, xyz);
     return G_OK;
 }
 
@@ -478,7 +494,6 @@ int gspectral_from_rgb(const GColorModel *m, const double rgb[3], GColorRole rol
     const float *b = s->rgb[role == GCOLOR_LIGHT];
     float r = (float)rgb[0], g = (float)rgb[1], bl = (float)rgb[2];
     out->kind = GCOLOR_VECTOR;
-    for (int k = 0; k < n; k++)
-        out->v[k] = r * b[k] + g * b[n + k] + bl * b[2 * n + k];
+    gspectral_kmix3(out->v, b, b + n, b + 2 * n, r, g, bl, n);
     return G_OK;
 }

@@ -1,8 +1,9 @@
 /* test_spectral_kernels.c - the vector kernels of spectral_kernels.h that have a scalar definition in their
  * comment (division with zero where the divisor is zero, axpy with the product in double, the finiteness and
- * sign test) give bit for bit the scalar definition's results, for every length from 0 to 90 (the vector part
- * and the tail), with operands that alias the output, and with zeros, negative zeros, infinities and NaNs among
- * the samples. */
+ * sign test, the mix of three rows) give bit for bit the scalar definition's results, for every length
+ * from 0 to 90 (the vector part and the tail), with operands that alias the output, and with zeros, negative
+ * zeros, infinities and NaNs among the samples. The colour matching kernel (float weights and float sums) stays
+ * within a bound of the double sums, on its own and through the sampled models' to_xyz. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -12,7 +13,10 @@
 #include <math.h>
 #include <string.h>
 
+#include "generic/builtins.h"
+#include "generic/color.h"
 #include "generic/spectral_kernels.h"
+#include <stdio.h>
 
 enum { N = 90 };
 
@@ -93,12 +97,123 @@ static void test_finite_equals_scalar(void **state)
     assert_int_equal(gspectral_kfinite(NULL, 0, 1), 1);
 }
 
+static void test_mix3_equals_scalar(void **state)
+{
+    (void)state;
+    for (int n = 0; n <= N; n++) {
+        float o[N + 1], b0[N], b1[N], b2[N], ref[N];
+        o[n] = 42.0f;
+        fill(b0, n);
+        fill(b1, n);
+        fill(b2, n);
+        const float r = 0.7f, g = -1.3f, bl = 2.9f;
+        for (int i = 0; i < n; i++)
+            ref[i] = r * b0[i] + g * b1[i] + bl * b2[i];
+        gspectral_kmix3(o, b0, b1, b2, r, g, bl, n);
+        assert_true(same_bits(o, ref, n));
+        assert_true(o[n] == 42.0f);
+    }
+}
+
+/* Relative error bound of gspectral_kxyz against the double sums, as a share of the sum of the terms'
+ * magnitudes: float weights and products (2 roundings) and float sums of at most 23 terms a lane (n <= 90),
+ * 2^-24 each, with room to spare. */
+#define XYZ_BOUND 2e-6
+
+static void test_xyz_kernel_within_bound(void **state)
+{
+    (void)state;
+    double worst = 0.0;
+    for (int round = 0; round < 30; round++)
+        for (int n = 1; n <= N; n++) {
+            double w[3][N];
+            float a[N], t[(N + 3) / 4 * 12];
+            for (int k = 0; k < n; k++) {
+                for (int c = 0; c < 3; c++)
+                    w[c][k] = fabs(rnd()) * 1e-3 * (c + 1);
+                /* positive spectra, signed ones, and a narrow line over a dim floor */
+                a[k] = round % 3 == 0 ? fabsf(rnd()) : round % 3 == 1 ? rnd() : (k == n / 2 ? 1e4f : 1e-3f);
+            }
+            gspectral_xyz_table(t, w[0], w[1], w[2], n);
+            double xyz[3];
+            gspectral_kxyz(t, a, n, xyz);
+            for (int c = 0; c < 3; c++) {
+                double exact = 0.0, mag = 0.0;
+                for (int k = 0; k < n; k++) {
+                    exact += w[c][k] * a[k];
+                    mag += fabs(w[c][k] * a[k]);
+                }
+                double err = fabs(xyz[c] - exact);
+                assert_true(err <= XYZ_BOUND * mag);
+                if (mag > 0.0 && err / mag > worst)
+                    worst = err / mag;
+            }
+        }
+    print_message("colour matching in float: worst error %.2e of the sum of magnitudes (bound %.0e)\n", worst,
+                  XYZ_BOUND);
+}
+
+/* The models' to_xyz (the float kernel) against the nm path (their to_nm, then gcie_nm_to_xyz in double) on a
+ * range of spectra: RGB colours as reflectances and lights, CIE illuminants, blackbodies and narrow lines. */
+static void test_models_to_xyz_against_nm(void **state)
+{
+    (void)state;
+    const char *names[] = {"spectrum", "spectrum", "spectrum", "spectrum9", "bispectral"};
+    const double steps[] = {5, 1, 10, 0, 0};
+    for (int i = 0; i < 5; i++) {
+        GColorModelOptions opt = {steps[i], 0, 0};
+        GColorModel *m;
+        assert_int_equal(gcolormodel_create(names[i], &opt, &m, NULL), G_OK);
+        GColor c;
+        assert_int_equal(gcolor_alloc(&c, m), G_OK);
+        double worst = 0.0, worst_own = 0.0; /* relative to |X|+|Y|+|Z|, and to the coordinate itself */
+        for (int k = 0; k < 40; k++) {
+            GSpectrumNM in, back;
+            GColorRole role = k % 2 ? GCOLOR_LIGHT : GCOLOR_REFLECTANCE;
+            if (k < 16) {
+                double rgb[3] = {(k & 1) * 0.9 + 0.05, (k >> 1 & 1) * 0.8, (k >> 2 & 1) * 0.7 + (k >> 3) * 0.2};
+                assert_int_equal(gcolor_from_rgb(&c, rgb, role), G_OK);
+            } else {
+                if (k < 22)
+                    assert_int_equal(gcie_illuminant_nm(k % 3 == 0 ? "D65" : k % 3 == 1 ? "A" : "E", &in), G_OK);
+                else if (k < 30)
+                    gcie_blackbody_nm(1000.0 + 1500.0 * (k - 22), &in);
+                else
+                    for (int j = 0; j < GNM_COUNT; j++)
+                        in.v[j] = j == 40 * (k - 30) ? 50.0f : 0.01f;
+                assert_int_equal(gcolor_from_nm(&c, &in, role), G_OK);
+            }
+            double fast[3], exact[3];
+            assert_int_equal(gcolor_to_xyz(&c, role, fast), G_OK);
+            assert_int_equal(gcolor_to_nm(&c, role, &back), G_OK);
+            gcie_nm_to_xyz(&back, role, exact);
+            double mag = fabs(exact[0]) + fabs(exact[1]) + fabs(exact[2]);
+            for (int j = 0; j < 3; j++) {
+                double rel = fabs(fast[j] - exact[j]) / mag;
+                assert_true(rel <= 1e-5);
+                worst = fmax(worst, rel);
+                if (fabs(exact[j]) > 1e-3 * mag)
+                    worst_own = fmax(worst_own, fabs(fast[j] - exact[j]) / fabs(exact[j]));
+            }
+        }
+        print_message("%-10s step %g: to_xyz within %.2e of the nm path relative to |X|+|Y|+|Z|, %.2e relative to "
+                      "the coordinate\n", names[i], m->lambda_step, worst, worst_own);
+        gcolor_free(&c);
+        gcolormodel_destroy(m);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_div_equals_scalar),
         cmocka_unit_test(test_axpyd_equals_scalar),
         cmocka_unit_test(test_finite_equals_scalar),
+        cmocka_unit_test(test_mix3_equals_scalar),
+        cmocka_unit_test(test_xyz_kernel_within_bound),
+        cmocka_unit_test(test_models_to_xyz_against_nm),
     };
+    if (generic_register_builtins(NULL) != G_OK)
+        return 1;
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

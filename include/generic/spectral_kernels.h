@@ -246,6 +246,70 @@ static inline void gspectral_kpow(float *o, const float *a, double e, int n)
         o[i] = a[i] > 0.0f ? powf(a[i], fe) : zero;
 }
 
+
+/** o = r * b0 + g * b1 + bl * b2 sample by sample, in that order in float (the vector part equals the scalar
+ * loop bit for bit). */
+static inline void gspectral_kmix3(float *o, const float *b0, const float *b1, const float *b2, float r, float g,
+                                   float bl, int n)
+{
+    int i = 0;
+#ifdef GSPECTRAL_VECTOR
+    const gspectral_v4 rv = {r, r, r, r}, gv = {g, g, g, g}, bv = {bl, bl, bl, bl};
+    for (; i + 4 <= n; i += 4)
+        gspectral_vstore(o + i, rv * gspectral_vload(b0 + i) + gv * gspectral_vload(b1 + i) +
+                                    bv * gspectral_vload(b2 + i));
+#endif
+    for (; i < n; i++)
+        o[i] = r * b0[i] + g * b1[i] + bl * b2[i];
+}
+
+/** Floats of the colour matching table of gspectral_kxyz for n samples: 12 per block of 4 samples, the last
+ * block padded with zeros. */
+static inline int gspectral_xyz_table_floats(int n) { return (n + 3) / 4 * 12; }
+
+/** Lays out the colour matching weights wx, wy, wz (n each) as gspectral_kxyz reads them: per block of 4
+ * samples the 4 x weights, the 4 y weights and the 4 z weights, in float; zeros past n. */
+static inline void gspectral_xyz_table(float *t, const double *wx, const double *wy, const double *wz, int n)
+{
+    for (int k = 0; k < (n + 3) / 4 * 4; k++) {
+        float *b = t + (k / 4) * 12 + k % 4;
+        b[0] = k < n ? (float)wx[k] : 0.0f;
+        b[4] = k < n ? (float)wy[k] : 0.0f;
+        b[8] = k < n ? (float)wz[k] : 0.0f;
+    }
+}
+
+/** xyz = the sums over the n samples of a[k] times the weights of table t (gspectral_xyz_table): float
+ * products, summed in float on 4 lanes per coordinate over the whole blocks and in a float sum over the last
+ * 1 to 3 samples; the lanes and that sum added in double. */
+static inline void gspectral_kxyz(const float *t, const float *a, int n, double xyz[3])
+{
+    int i = 0;
+    double s[3] = {0.0, 0.0, 0.0};
+#ifdef GSPECTRAL_VECTOR
+    gspectral_v4 x = {0, 0, 0, 0}, y = x, z = x;
+    for (; i + 4 <= n; i += 4) {
+        const float *b = t + i * 3;
+        gspectral_v4 v = gspectral_vload(a + i);
+        x += v * gspectral_vload(b);
+        y += v * gspectral_vload(b + 4);
+        z += v * gspectral_vload(b + 8);
+    }
+    s[0] = ((double)x[0] + x[1]) + ((double)x[2] + x[3]);
+    s[1] = ((double)y[0] + y[1]) + ((double)y[2] + y[3]);
+    s[2] = ((double)z[0] + z[1]) + ((double)z[2] + z[3]);
+#endif
+    float tail[3] = {0.0f, 0.0f, 0.0f};
+    for (; i < n; i++) {
+        const float *b = t + (i / 4) * 12 + i % 4;
+        tail[0] += a[i] * b[0];
+        tail[1] += a[i] * b[4];
+        tail[2] += a[i] * b[8];
+    }
+    for (int c = 0; c < 3; c++)
+        xyz[c] = s[c] + tail[c];
+}
+
 #ifdef __cplusplus
 }
 #endif
