@@ -220,8 +220,7 @@ int gcolor_fill(GColor *out, double value)
     const GColorModel *m = out->model;
     if (m->cls->fill)
         return m->cls->fill(m, out, value);
-    for (int i = 0; i < m->nvalues; i++)
-        out->v[i] = (float)value;
+    gspectral_kfill(out->v, (float)value, m->nvalues);
     out->kind = GCOLOR_VECTOR;
     return G_OK;
 }

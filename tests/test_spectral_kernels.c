@@ -1,6 +1,6 @@
 /* test_spectral_kernels.c - the vector kernels of spectral_kernels.h that have a scalar definition in their
  * comment (division with zero where the divisor is zero, axpy with the product in double, the finiteness and
- * sign test, the mix of three rows) give bit for bit the scalar definition's results, for every length
+ * sign test, the fill, the mix of three rows) give bit for bit the scalar definition's results, for every length
  * from 0 to 90 (the vector part and the tail), with operands that alias the output, and with zeros, negative
  * zeros, infinities and NaNs among the samples. The colour matching kernel (float weights and float sums) stays
  * within a bound of the double sums, on its own and through the sampled models' to_xyz. */
@@ -97,12 +97,16 @@ static void test_finite_equals_scalar(void **state)
     assert_int_equal(gspectral_kfinite(NULL, 0, 1), 1);
 }
 
-static void test_mix3_equals_scalar(void **state)
+static void test_fill_and_mix3_equal_scalar(void **state)
 {
     (void)state;
     for (int n = 0; n <= N; n++) {
         float o[N + 1], b0[N], b1[N], b2[N], ref[N];
         o[n] = 42.0f;
+        gspectral_kfill(o, 0.3f, n);
+        for (int i = 0; i < n; i++)
+            assert_true(o[i] == 0.3f);
+        assert_true(o[n] == 42.0f); /* nothing written past n */
         fill(b0, n);
         fill(b1, n);
         fill(b2, n);
@@ -209,7 +213,7 @@ int main(void)
         cmocka_unit_test(test_div_equals_scalar),
         cmocka_unit_test(test_axpyd_equals_scalar),
         cmocka_unit_test(test_finite_equals_scalar),
-        cmocka_unit_test(test_mix3_equals_scalar),
+        cmocka_unit_test(test_fill_and_mix3_equal_scalar),
         cmocka_unit_test(test_xyz_kernel_within_bound),
         cmocka_unit_test(test_models_to_xyz_against_nm),
     };

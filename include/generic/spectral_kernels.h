@@ -83,6 +83,11 @@ static inline void gspectral_kscale(float *o, const float *a, float s, int n)
     int i = 0;
 #ifdef GSPECTRAL_VECTOR
     gspectral_v4 sv = {s, s, s, s};
+    for (; i + 8 <= n; i += 8) { /* both blocks are loaded before either is stored */
+        gspectral_v4 x0 = gspectral_vload(a + i) * sv, x1 = gspectral_vload(a + i + 4) * sv;
+        gspectral_vstore(o + i, x0);
+        gspectral_vstore(o + i + 4, x1);
+    }
     for (; i + 4 <= n; i += 4)
         gspectral_vstore(o + i, gspectral_vload(a + i) * sv);
 #endif
@@ -211,6 +216,19 @@ static inline void gspectral_kaxpyd(float *o, double s, const float *a, const fl
 #endif
     for (; i < n; i++)
         o[i] = b[i] + (float)(a[i] * s);
+}
+
+/** o = value in each of n floats */
+static inline void gspectral_kfill(float *o, float value, int n)
+{
+    int i = 0;
+#ifdef GSPECTRAL_VECTOR
+    const gspectral_v4 v = {value, value, value, value};
+    for (; i + 4 <= n; i += 4)
+        gspectral_vstore(o + i, v);
+#endif
+    for (; i < n; i++)
+        o[i] = value;
 }
 
 /** 1 when every one of the n samples is finite (not infinite, not NaN) and, when nonnegative is set, none is
