@@ -407,45 +407,137 @@ void gspectral_black(const GColorModel *m, GColor *out)
     memset(out->v, 0, (size_t)m->nvalues * sizeof(float));
 }
 
-int gspectral_add(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+/* The operations run per ray have two bodies: _v4 on 4-float vectors, and _v8 compiled for AVX2 on 8-float
+ * vectors, with the same results bit for bit; GSPECTRAL_PICK (spectral_kernels.h) binds the public name to one
+ * of them when the library is loaded. */
+
+static int gspectral_add_v4(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
 {
     out->kind = GCOLOR_VECTOR;
     gspectral_kadd(out->v, a->v, b->v, m->nvalues);
     return G_OK;
 }
 
-int gspectral_mul(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+static int gspectral_mul_v4(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
 {
     out->kind = GCOLOR_VECTOR;
     gspectral_kmul(out->v, a->v, b->v, m->nvalues);
     return G_OK;
 }
 
-int gspectral_scale(const GColorModel *m, GColor *out, const GColor *a, double s)
+static int gspectral_scale_v4(const GColorModel *m, GColor *out, const GColor *a, double s)
 {
     out->kind = GCOLOR_VECTOR;
     gspectral_kscale(out->v, a->v, (float)s, m->nvalues);
     return G_OK;
 }
 
-int gspectral_div(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+static int gspectral_div_v4(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
 {
     out->kind = GCOLOR_VECTOR;
     gspectral_kdiv(out->v, a->v, b->v, m->nvalues);
     return G_OK;
 }
 
+static double gspectral_brightness_v4(const GColorModel *m, const GColor *a)
+{
+    const GSpectral *s = m->priv;
+    return gspectral_kbright(s->lum, a->v, m->nvalues);
+}
+
+static int gspectral_to_xyz_v4(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3])
+{
+    const GSpectral *s = m->priv;
+    gspectral_kxyz(xyz_table(s, role == GCOLOR_LIGHT), a->v, m->nvalues, xyz);
+    return G_OK;
+}
+
+#ifdef GSPECTRAL_AVX2
+static GSPECTRAL_TARGET_AVX2 int gspectral_add_v8(const GColorModel *m, GColor *out, const GColor *a,
+                                                  const GColor *b)
+{
+    out->kind = GCOLOR_VECTOR;
+    gspectral_kmap8(GSPECTRAL_ADD, out->v, a->v, b->v, m->nvalues);
+    return G_OK;
+}
+
+static GSPECTRAL_TARGET_AVX2 int gspectral_mul_v8(const GColorModel *m, GColor *out, const GColor *a,
+                                                  const GColor *b)
+{
+    out->kind = GCOLOR_VECTOR;
+    gspectral_kmap8(GSPECTRAL_MUL, out->v, a->v, b->v, m->nvalues);
+    return G_OK;
+}
+
+static GSPECTRAL_TARGET_AVX2 int gspectral_scale_v8(const GColorModel *m, GColor *out, const GColor *a, double s)
+{
+    out->kind = GCOLOR_VECTOR;
+    gspectral_kscale8(out->v, a->v, (float)s, m->nvalues);
+    return G_OK;
+}
+
+static GSPECTRAL_TARGET_AVX2 int gspectral_div_v8(const GColorModel *m, GColor *out, const GColor *a,
+                                                  const GColor *b)
+{
+    out->kind = GCOLOR_VECTOR;
+    gspectral_kdiv8(out->v, a->v, b->v, m->nvalues);
+    return G_OK;
+}
+
+static GSPECTRAL_TARGET_AVX2 double gspectral_brightness_v8(const GColorModel *m, const GColor *a)
+{
+    const GSpectral *s = m->priv;
+    return gspectral_kbright8(s->lum, a->v, m->nvalues);
+}
+
+static GSPECTRAL_TARGET_AVX2 int gspectral_to_xyz_v8(const GColorModel *m, const GColor *a, GColorRole role,
+                                                     double xyz[3])
+{
+    const GSpectral *s = m->priv;
+    gspectral_kxyz8(xyz_table(s, role == GCOLOR_LIGHT), a->v, m->nvalues, xyz);
+    return G_OK;
+}
+
+GSPECTRAL_PICK(gspectral_add);
+GSPECTRAL_PICK(gspectral_mul);
+GSPECTRAL_PICK(gspectral_scale);
+GSPECTRAL_PICK(gspectral_div);
+GSPECTRAL_PICK(gspectral_brightness);
+GSPECTRAL_PICK(gspectral_to_xyz);
+#else
+int gspectral_add(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+{
+    return gspectral_add_v4(m, out, a, b);
+}
+
+int gspectral_mul(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+{
+    return gspectral_mul_v4(m, out, a, b);
+}
+
+int gspectral_scale(const GColorModel *m, GColor *out, const GColor *a, double s)
+{
+    return gspectral_scale_v4(m, out, a, s);
+}
+
+int gspectral_div(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+{
+    return gspectral_div_v4(m, out, a, b);
+}
+
+double gspectral_brightness(const GColorModel *m, const GColor *a) { return gspectral_brightness_v4(m, a); }
+
+int gspectral_to_xyz(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3])
+{
+    return gspectral_to_xyz_v4(m, a, role, xyz);
+}
+#endif
+
 int gspectral_pow(const GColorModel *m, GColor *out, const GColor *a, double e)
 {
     out->kind = GCOLOR_VECTOR;
     gspectral_kpow(out->v, a->v, e, m->nvalues);
     return G_OK;
-}
-
-double gspectral_brightness(const GColorModel *m, const GColor *a)
-{
-    const GSpectral *s = m->priv;
-    return gspectral_kbright(s->lum, a->v, m->nvalues);
 }
 
 int gspectral_band_count(const GColorModel *m) { return m->nvalues; }
@@ -477,13 +569,6 @@ int gspectral_from_nm(const GColorModel *m, const GSpectrumNM *in, GColorRole ro
     const GSpectral *s = m->priv;
     out->kind = GCOLOR_VECTOR;
     gspectral_resample_apply(&s->from_nm, in->v, 1, out->v, 1);
-    return G_OK;
-}
-
-int gspectral_to_xyz(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3])
-{
-    const GSpectral *s = m->priv;
-    gspectral_kxyz(xyz_table(s, role == GCOLOR_LIGHT), a->v, m->nvalues, xyz);
     return G_OK;
 }
 
