@@ -297,7 +297,7 @@ static GSPECTRAL_TARGET_AVX2 int bi_axpy_v8(const GColorModel *m, GColor *out, d
     int n = m->nsamples;
     if (a->kind != b->kind)
         return bi_axpy_v4(m, out, s, a, b);
-    gspectral_kaxpyd(out->v, s, a->v, b->v, a->kind == GCOLOR_MATRIX ? n * n : n);
+    gspectral_kaxpyd8(out->v, s, a->v, b->v, a->kind == GCOLOR_MATRIX ? n * n : n);
     out->kind = a->kind;
     return G_OK;
 }

@@ -200,21 +200,22 @@ static int axpy_composed(const GColorModel *m, GColor *out, double s, const GCol
 /* gcolor_axpy, gcolor_fill and the finiteness tests have two bodies as the kit's operations do (lib/spectral.c):
  * on 4-float vectors and, compiled for AVX2, on 8-float vectors, with the same results. */
 
-static inline int axpy_body(GColor *out, double s, const GColor *a, const GColor *b)
-{
-    if (a->model != b->model || out->model != a->model)
-        return G_ERR_MISMATCH;
-    const GColorModel *m = a->model;
-    if (m->cls->axpy)
-        return m->cls->axpy(m, out, s, a, b);
-    if (a->kind != GCOLOR_VECTOR || b->kind != GCOLOR_VECTOR)
-        return axpy_composed(m, out, s, a, b);
-    gspectral_kaxpyd(out->v, s, a->v, b->v, m->nvalues);
-    out->kind = GCOLOR_VECTOR;
-    return G_OK;
-}
+/* The body of gcolor_axpy around its kernel (a macro, so that each body inlines its own kernel). */
+#define AXPY_BODY(kernel)                                                                                      \
+    do {                                                                                                       \
+        if (a->model != b->model || out->model != a->model)                                                    \
+            return G_ERR_MISMATCH;                                                                             \
+        const GColorModel *m = a->model;                                                                       \
+        if (m->cls->axpy)                                                                                      \
+            return m->cls->axpy(m, out, s, a, b);                                                              \
+        if (a->kind != GCOLOR_VECTOR || b->kind != GCOLOR_VECTOR)                                              \
+            return axpy_composed(m, out, s, a, b);                                                             \
+        kernel(out->v, s, a->v, b->v, m->nvalues);                                                             \
+        out->kind = GCOLOR_VECTOR;                                                                             \
+        return G_OK;                                                                                           \
+    } while (0)
 
-static int gcolor_axpy_v4(GColor *out, double s, const GColor *a, const GColor *b) { return axpy_body(out, s, a, b); }
+static int gcolor_axpy_v4(GColor *out, double s, const GColor *a, const GColor *b) { AXPY_BODY(gspectral_kaxpyd); }
 
 int gcolor_add_scaled(GColor *out, const GColor *a, double s) { return gcolor_axpy(out, s, a, out); }
 
@@ -252,7 +253,7 @@ static int gcolor_is_nonnegative_v4(const GColor *c) { return gspectral_kfinite(
 #ifdef GSPECTRAL_AVX2
 static GSPECTRAL_TARGET_AVX2 int gcolor_axpy_v8(GColor *out, double s, const GColor *a, const GColor *b)
 {
-    return axpy_body(out, s, a, b);
+    AXPY_BODY(gspectral_kaxpyd8);
 }
 
 static GSPECTRAL_TARGET_AVX2 int gcolor_fill_v8(GColor *out, double value)

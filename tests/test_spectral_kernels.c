@@ -137,6 +137,9 @@ static GSPECTRAL_TARGET_AVX2 int avx2_equal(int n, float *a, float *b, const flo
     gspectral_kdiv(o4, a, b, n);
     gspectral_kdiv8(o8, a, b, n);
     same &= same_bits(o4, o8, n);
+    gspectral_kaxpyd(o4, s, a, b, n);
+    gspectral_kaxpyd8(o8, s, a, b, n);
+    same &= same_bits(o4, o8, n);
     gspectral_kfill(o4, (float)s, n);
     gspectral_kfill8(o8, (float)s, n);
     same &= same_bits(o4, o8, n);
