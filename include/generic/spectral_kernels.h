@@ -361,6 +361,7 @@ static inline void gspectral_kxyz(const float *t, const float *a, int n, double 
 #if defined(GSPECTRAL_VECTOR) && defined(__x86_64__) && defined(__ELF__)
 /** Defined when the 8-float (AVX2) kernels and GSPECTRAL_PICK exist. */
 #define GSPECTRAL_AVX2 1
+#include <immintrin.h>
 /** Compiles a function for AVX2 (no FMA: a contracted multiply-add would round differently). */
 #define GSPECTRAL_TARGET_AVX2 __attribute__((target("avx2")))
 /** 8 floats in one AVX register. */
@@ -484,18 +485,17 @@ static inline GSPECTRAL_TARGET_AVX2 void gspectral_kfill8(float *o, float value,
 /** gspectral_kaxpyd on 8 floats a step (each product in double, two 4-double halves). */
 static inline GSPECTRAL_TARGET_AVX2 void gspectral_kaxpyd8(float *o, double s, const float *a, const float *b, int n)
 {
-    typedef double v4d __attribute__((vector_size(32)));
-    const v4d sv = {s, s, s, s};
+    const __m256d sv = _mm256_set1_pd(s);
     int i = 0;
     for (; i + 8 <= n; i += 8) {
-        v4d p0 = __builtin_convertvector(gspectral_vload(a + i), v4d) * sv;
-        v4d p1 = __builtin_convertvector(gspectral_vload(a + i + 4), v4d) * sv;
-        gspectral_v4 q0 = __builtin_convertvector(p0, gspectral_v4), q1 = __builtin_convertvector(p1, gspectral_v4);
-        gspectral_vstore8(o + i, gspectral_vload8(b + i) + __builtin_shufflevector(q0, q1, 0, 1, 2, 3, 4, 5, 6, 7));
+        __m128 q0 = _mm256_cvtpd_ps(_mm256_mul_pd(_mm256_cvtps_pd(_mm_loadu_ps(a + i)), sv));
+        __m128 q1 = _mm256_cvtpd_ps(_mm256_mul_pd(_mm256_cvtps_pd(_mm_loadu_ps(a + i + 4)), sv));
+        __m256 q = _mm256_insertf128_ps(_mm256_castps128_ps256(q0), q1, 1);
+        _mm256_storeu_ps(o + i, _mm256_add_ps(_mm256_loadu_ps(b + i), q));
     }
     if (i + 4 <= n) {
-        v4d p = __builtin_convertvector(gspectral_vload(a + i), v4d) * sv;
-        gspectral_vstore(o + i, gspectral_vload(b + i) + __builtin_convertvector(p, gspectral_v4));
+        __m128 q = _mm256_cvtpd_ps(_mm256_mul_pd(_mm256_cvtps_pd(_mm_loadu_ps(a + i)), sv));
+        _mm_storeu_ps(o + i, _mm_add_ps(_mm_loadu_ps(b + i), q));
         i += 4;
     }
     for (; i < n; i++)
