@@ -147,7 +147,7 @@ GENERIC_API GENERIC_NODISCARD int gspectral_to_nm(const GColorModel *m, const GC
 /** from_nm by the hat-weighted average. */
 GENERIC_API GENERIC_NODISCARD int gspectral_from_nm(const GColorModel *m, const GSpectrumNM *in, GColorRole role, GColor *out);
 /** XYZ from the precomputed colour matching weights (equal to the class's to_nm path up to float rounding: the
- * weights are rounded to float and the sums made in float on 4 lanes, gspectral_kxyz of spectral_kernels.h). */
+ * weights are rounded to float and the sums made in float on 8 lanes, gspectral_kxyz of spectral_kernels.h). */
 GENERIC_API GENERIC_NODISCARD int gspectral_to_xyz(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3]);
 /** A vector from linear sRGB through the corrected RGB basis (exact round trip with to_xyz). */
 GENERIC_API GENERIC_NODISCARD int gspectral_from_rgb(const GColorModel *m, const double rgb[3], GColorRole role, GColor *out);
