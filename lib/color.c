@@ -197,31 +197,36 @@ static int axpy_composed(const GColorModel *m, GColor *out, double s, const GCol
     return rc;
 }
 
-int gcolor_axpy(GColor *out, double s, const GColor *a, const GColor *b)
-{
-    if (a->model != b->model || out->model != a->model)
-        return G_ERR_MISMATCH;
-    const GColorModel *m = a->model;
-    if (m->cls->axpy)
-        return m->cls->axpy(m, out, s, a, b);
-    if (a->kind != GCOLOR_VECTOR || b->kind != GCOLOR_VECTOR)
-        return axpy_composed(m, out, s, a, b);
-    gspectral_kaxpyd(out->v, s, a->v, b->v, m->nvalues);
-    out->kind = GCOLOR_VECTOR;
-    return G_OK;
-}
+/* gcolor_axpy, gcolor_fill and the finiteness tests have two bodies as the kit's operations do (lib/spectral.c):
+ * on 4-float vectors and, compiled for AVX2, on 8-float vectors, with the same results. */
+
+/* The body of gcolor_axpy around its kernel (a macro, so that each body inlines its own kernel). */
+#define AXPY_BODY(kernel)                                                                                      \
+    do {                                                                                                       \
+        if (a->model != b->model || out->model != a->model)                                                    \
+            return G_ERR_MISMATCH;                                                                             \
+        const GColorModel *m = a->model;                                                                       \
+        if (m->cls->axpy)                                                                                      \
+            return m->cls->axpy(m, out, s, a, b);                                                              \
+        if (a->kind != GCOLOR_VECTOR || b->kind != GCOLOR_VECTOR)                                              \
+            return axpy_composed(m, out, s, a, b);                                                             \
+        kernel(out->v, s, a->v, b->v, m->nvalues);                                                             \
+        out->kind = GCOLOR_VECTOR;                                                                             \
+        return G_OK;                                                                                           \
+    } while (0)
+
+static int gcolor_axpy_v4(GColor *out, double s, const GColor *a, const GColor *b) { AXPY_BODY(gspectral_kaxpyd); }
 
 int gcolor_add_scaled(GColor *out, const GColor *a, double s) { return gcolor_axpy(out, s, a, out); }
 
-int gcolor_fill(GColor *out, double value)
+static int gcolor_fill_v4(GColor *out, double value)
 {
     if (!isfinite(value))
         return G_ERR_INVALID;
     const GColorModel *m = out->model;
     if (m->cls->fill)
         return m->cls->fill(m, out, value);
-    for (int i = 0; i < m->nvalues; i++)
-        out->v[i] = (float)value;
+    gspectral_kfill(out->v, (float)value, m->nvalues);
     out->kind = GCOLOR_VECTOR;
     return G_OK;
 }
@@ -241,9 +246,51 @@ int gcolor_exp(GColor *out, const GColor *a, double s)
     return G_OK;
 }
 
-int gcolor_is_finite(const GColor *c) { return gspectral_kfinite(c->v, (int)value_floats(c), 0); }
+static int gcolor_is_finite_v4(const GColor *c) { return gspectral_kfinite(c->v, (int)value_floats(c), 0); }
 
-int gcolor_is_nonnegative(const GColor *c) { return gspectral_kfinite(c->v, (int)value_floats(c), 1); }
+static int gcolor_is_nonnegative_v4(const GColor *c) { return gspectral_kfinite(c->v, (int)value_floats(c), 1); }
+
+#ifdef GSPECTRAL_AVX2
+static GSPECTRAL_TARGET_AVX2 int gcolor_axpy_v8(GColor *out, double s, const GColor *a, const GColor *b)
+{
+    AXPY_BODY(gspectral_kaxpyd8);
+}
+
+static GSPECTRAL_TARGET_AVX2 int gcolor_fill_v8(GColor *out, double value)
+{
+    if (!isfinite(value))
+        return G_ERR_INVALID;
+    const GColorModel *m = out->model;
+    if (m->cls->fill)
+        return m->cls->fill(m, out, value);
+    gspectral_kfill8(out->v, (float)value, m->nvalues);
+    out->kind = GCOLOR_VECTOR;
+    return G_OK;
+}
+
+static GSPECTRAL_TARGET_AVX2 int gcolor_is_finite_v8(const GColor *c)
+{
+    return gspectral_kfinite8(c->v, (int)value_floats(c), 0);
+}
+
+static GSPECTRAL_TARGET_AVX2 int gcolor_is_nonnegative_v8(const GColor *c)
+{
+    return gspectral_kfinite8(c->v, (int)value_floats(c), 1);
+}
+
+GSPECTRAL_PICK(gcolor_axpy);
+GSPECTRAL_PICK(gcolor_fill);
+GSPECTRAL_PICK(gcolor_is_finite);
+GSPECTRAL_PICK(gcolor_is_nonnegative);
+#else
+int gcolor_axpy(GColor *out, double s, const GColor *a, const GColor *b) { return gcolor_axpy_v4(out, s, a, b); }
+
+int gcolor_fill(GColor *out, double value) { return gcolor_fill_v4(out, value); }
+
+int gcolor_is_finite(const GColor *c) { return gcolor_is_finite_v4(c); }
+
+int gcolor_is_nonnegative(const GColor *c) { return gcolor_is_nonnegative_v4(c); }
+#endif
 
 /* ---- conversions ---- */
 

@@ -181,6 +181,30 @@ void gspectral_resample_free(GSpectralResample *r)
 
 /* ---- colorimetric tables ---- */
 
+/* The allocation of s->xyz[role] holds the 3 * n double weights, then (from an even index, so 16-byte aligned
+ * in a malloc'd block) the float table of gspectral_kxyz (gspectral_xyz_table). */
+static size_t xyz_table_offset(int n) { return ((size_t)3 * n + 1) / 2 * 2; }
+
+static size_t xyz_doubles(int n) { return xyz_table_offset(n) + ((size_t)gspectral_xyz_table_floats(n) + 1) / 2; }
+
+static float *xyz_table(const GSpectral *s, int role) { return (float *)(s->xyz[role] + xyz_table_offset(s->grid.n)); }
+
+/* XYZ from the double weights, summed in double: the tables' own arithmetic. */
+static void xyz_exact(const GSpectral *s, GColorRole role, const float *v, double xyz[3])
+{
+    int n = s->grid.n;
+    const double *w = s->xyz[role == GCOLOR_LIGHT];
+    double x = 0.0, y = 0.0, z = 0.0;
+    for (int k = 0; k < n; k++) {
+        x += w[k] * v[k];
+        y += w[n + k] * v[k];
+        z += w[2 * n + k] * v[k];
+    }
+    xyz[0] = x;
+    xyz[1] = y;
+    xyz[2] = z;
+}
+
 static int invert3(const double m[3][3], double out[3][3])
 {
     double c00 = m[1][1] * m[2][2] - m[1][2] * m[2][1], c01 = m[1][2] * m[2][0] - m[1][0] * m[2][2],
@@ -260,6 +284,10 @@ static int init_colorimetry(GColorModel *m, GSpectral *s, GError *err)
                 s->xyz[role][j * n + k] = xyz[j];
         }
     }
+    for (int role = 0; role < 2; role++) {
+        const double *w = s->xyz[role];
+        gspectral_xyz_table(xyz_table(s, role), w, w + n, w + 2 * n, n);
+    }
     int rc = G_OK;
     for (int role = 0; role < 2 && rc == G_OK; role++) {
         float *basis = s->rgb[role];
@@ -269,9 +297,8 @@ static int init_colorimetry(GColorModel *m, GSpectral *s, GError *err)
             gcie_rgb_to_nm(e, (GColorRole)role, &spec);
             for (int k = 0; k < n; k++)
                 basis[b * n + k] = tmp[k] = (float)nm_at(&spec, s->grid.min + k * s->grid.step);
-            double xyz[3] = {0, 0, 0}, rgb[3];
-            if (gspectral_to_xyz(m, &c, (GColorRole)role, xyz) != G_OK)
-                xyz[0] = xyz[1] = xyz[2] = 0.0; /* a basis colour it cannot convert: the inversion below refuses */
+            double xyz[3], rgb[3];
+            xyz_exact(s, (GColorRole)role, tmp, xyz);
             gcie_xyz_to_rgb(xyz, rgb);
             for (int j = 0; j < 3; j++)
                 p[j][b] = rgb[j];
@@ -310,7 +337,7 @@ int gspectral_init(GColorModel *m, GSpectral *s, GSpectralGrid grid, int linear_
     if (rc == G_OK) {
         s->lum = gmem_calloc((size_t)n, sizeof(float));
         for (int role = 0; role < 2; role++) {
-            s->xyz[role] = gmem_calloc((size_t)n * 3, sizeof(double));
+            s->xyz[role] = gmem_calloc(xyz_doubles(n), sizeof(double));
             s->rgb[role] = gmem_calloc((size_t)n * 3, sizeof(float));
             if (!s->xyz[role] || !s->rgb[role])
                 rc = G_ERR_NOMEM;
@@ -380,45 +407,137 @@ void gspectral_black(const GColorModel *m, GColor *out)
     memset(out->v, 0, (size_t)m->nvalues * sizeof(float));
 }
 
-int gspectral_add(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+/* The operations run per ray have two bodies: _v4 on 4-float vectors, and _v8 compiled for AVX2 on 8-float
+ * vectors, with the same results bit for bit; GSPECTRAL_PICK (spectral_kernels.h) binds the public name to one
+ * of them when the library is loaded. */
+
+static int gspectral_add_v4(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
 {
     out->kind = GCOLOR_VECTOR;
     gspectral_kadd(out->v, a->v, b->v, m->nvalues);
     return G_OK;
 }
 
-int gspectral_mul(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+static int gspectral_mul_v4(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
 {
     out->kind = GCOLOR_VECTOR;
     gspectral_kmul(out->v, a->v, b->v, m->nvalues);
     return G_OK;
 }
 
-int gspectral_scale(const GColorModel *m, GColor *out, const GColor *a, double s)
+static int gspectral_scale_v4(const GColorModel *m, GColor *out, const GColor *a, double s)
 {
     out->kind = GCOLOR_VECTOR;
     gspectral_kscale(out->v, a->v, (float)s, m->nvalues);
     return G_OK;
 }
 
-int gspectral_div(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+static int gspectral_div_v4(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
 {
     out->kind = GCOLOR_VECTOR;
     gspectral_kdiv(out->v, a->v, b->v, m->nvalues);
     return G_OK;
 }
 
+static double gspectral_brightness_v4(const GColorModel *m, const GColor *a)
+{
+    const GSpectral *s = m->priv;
+    return gspectral_kbright(s->lum, a->v, m->nvalues);
+}
+
+static int gspectral_to_xyz_v4(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3])
+{
+    const GSpectral *s = m->priv;
+    gspectral_kxyz(xyz_table(s, role == GCOLOR_LIGHT), a->v, m->nvalues, xyz);
+    return G_OK;
+}
+
+#ifdef GSPECTRAL_AVX2
+static GSPECTRAL_TARGET_AVX2 int gspectral_add_v8(const GColorModel *m, GColor *out, const GColor *a,
+                                                  const GColor *b)
+{
+    out->kind = GCOLOR_VECTOR;
+    gspectral_kmap8(GSPECTRAL_ADD, out->v, a->v, b->v, m->nvalues);
+    return G_OK;
+}
+
+static GSPECTRAL_TARGET_AVX2 int gspectral_mul_v8(const GColorModel *m, GColor *out, const GColor *a,
+                                                  const GColor *b)
+{
+    out->kind = GCOLOR_VECTOR;
+    gspectral_kmap8(GSPECTRAL_MUL, out->v, a->v, b->v, m->nvalues);
+    return G_OK;
+}
+
+static GSPECTRAL_TARGET_AVX2 int gspectral_scale_v8(const GColorModel *m, GColor *out, const GColor *a, double s)
+{
+    out->kind = GCOLOR_VECTOR;
+    gspectral_kscale8(out->v, a->v, (float)s, m->nvalues);
+    return G_OK;
+}
+
+static GSPECTRAL_TARGET_AVX2 int gspectral_div_v8(const GColorModel *m, GColor *out, const GColor *a,
+                                                  const GColor *b)
+{
+    out->kind = GCOLOR_VECTOR;
+    gspectral_kdiv8(out->v, a->v, b->v, m->nvalues);
+    return G_OK;
+}
+
+static GSPECTRAL_TARGET_AVX2 double gspectral_brightness_v8(const GColorModel *m, const GColor *a)
+{
+    const GSpectral *s = m->priv;
+    return gspectral_kbright8(s->lum, a->v, m->nvalues);
+}
+
+static GSPECTRAL_TARGET_AVX2 int gspectral_to_xyz_v8(const GColorModel *m, const GColor *a, GColorRole role,
+                                                     double xyz[3])
+{
+    const GSpectral *s = m->priv;
+    gspectral_kxyz8(xyz_table(s, role == GCOLOR_LIGHT), a->v, m->nvalues, xyz);
+    return G_OK;
+}
+
+GSPECTRAL_PICK(gspectral_add);
+GSPECTRAL_PICK(gspectral_mul);
+GSPECTRAL_PICK(gspectral_scale);
+GSPECTRAL_PICK(gspectral_div);
+GSPECTRAL_PICK(gspectral_brightness);
+GSPECTRAL_PICK(gspectral_to_xyz);
+#else
+int gspectral_add(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+{
+    return gspectral_add_v4(m, out, a, b);
+}
+
+int gspectral_mul(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+{
+    return gspectral_mul_v4(m, out, a, b);
+}
+
+int gspectral_scale(const GColorModel *m, GColor *out, const GColor *a, double s)
+{
+    return gspectral_scale_v4(m, out, a, s);
+}
+
+int gspectral_div(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+{
+    return gspectral_div_v4(m, out, a, b);
+}
+
+double gspectral_brightness(const GColorModel *m, const GColor *a) { return gspectral_brightness_v4(m, a); }
+
+int gspectral_to_xyz(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3])
+{
+    return gspectral_to_xyz_v4(m, a, role, xyz);
+}
+#endif
+
 int gspectral_pow(const GColorModel *m, GColor *out, const GColor *a, double e)
 {
     out->kind = GCOLOR_VECTOR;
     gspectral_kpow(out->v, a->v, e, m->nvalues);
     return G_OK;
-}
-
-double gspectral_brightness(const GColorModel *m, const GColor *a)
-{
-    const GSpectral *s = m->priv;
-    return gspectral_kbright(s->lum, a->v, m->nvalues);
 }
 
 int gspectral_band_count(const GColorModel *m) { return m->nvalues; }
@@ -453,24 +572,6 @@ int gspectral_from_nm(const GColorModel *m, const GSpectrumNM *in, GColorRole ro
     return G_OK;
 }
 
-int gspectral_to_xyz(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3])
-{
-    const GSpectral *s = m->priv;
-    int n = m->nvalues;
-    const double *w = s->xyz[role == GCOLOR_LIGHT];
-    double x = 0.0, y = 0.0, z = 0.0;
-    for (int k = 0; k < n; k++) {
-        double v = a->v[k];
-        x += w[k] * v;
-        y += w[n + k] * v;
-        z += w[2 * n + k] * v;
-    }
-    xyz[0] = x;
-    xyz[1] = y;
-    xyz[2] = z;
-    return G_OK;
-}
-
 int gspectral_from_rgb(const GColorModel *m, const double rgb[3], GColorRole role, GColor *out)
 {
     const GSpectral *s = m->priv;
@@ -478,7 +579,6 @@ int gspectral_from_rgb(const GColorModel *m, const double rgb[3], GColorRole rol
     const float *b = s->rgb[role == GCOLOR_LIGHT];
     float r = (float)rgb[0], g = (float)rgb[1], bl = (float)rgb[2];
     out->kind = GCOLOR_VECTOR;
-    for (int k = 0; k < n; k++)
-        out->v[k] = r * b[k] + g * b[n + k] + bl * b[2 * n + k];
+    gspectral_kmix3(out->v, b, b + n, b + 2 * n, r, g, bl, n);
     return G_OK;
 }

@@ -58,7 +58,8 @@ typedef struct GSpectral {
     GSpectralResample from_nm; /**< 1 nm exchange grid -> model grid (hat-weighted average) */
     GSpectralResample to_nm;   /**< model grid -> 1 nm, linear interpolation (empty for models with their own) */
     float *lum;                /**< brightness weights: > 0 everywhere, sum 1 */
-    double *xyz[2];            /**< per GColorRole: 3 * n colour matching weights, [c * n + k] */
+    double *xyz[2];            /**< per GColorRole: 3 * n colour matching weights, [c * n + k] (the same
+                                    allocation goes on with the float table gspectral_to_xyz reads) */
     float *rgb[2];             /**< per GColorRole: 3 * n RGB basis on the grid, corrected so the round trip
                                     rgb -> model -> rgb is exact */
 } GSpectral;
@@ -145,7 +146,8 @@ GENERIC_API double gspectral_band_value(const GColorModel *m, const GColor *a, i
 GENERIC_API GENERIC_NODISCARD int gspectral_to_nm(const GColorModel *m, const GColor *a, GColorRole role, GSpectrumNM *out);
 /** from_nm by the hat-weighted average. */
 GENERIC_API GENERIC_NODISCARD int gspectral_from_nm(const GColorModel *m, const GSpectrumNM *in, GColorRole role, GColor *out);
-/** XYZ from the precomputed colour matching weights (equal to the class's to_nm path). */
+/** XYZ from the precomputed colour matching weights (equal to the class's to_nm path up to float rounding: the
+ * weights are rounded to float and the sums made in float on 8 lanes, gspectral_kxyz of spectral_kernels.h). */
 GENERIC_API GENERIC_NODISCARD int gspectral_to_xyz(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3]);
 /** A vector from linear sRGB through the corrected RGB basis (exact round trip with to_xyz). */
 GENERIC_API GENERIC_NODISCARD int gspectral_from_rgb(const GColorModel *m, const double rgb[3], GColorRole role, GColor *out);

@@ -83,6 +83,11 @@ static inline void gspectral_kscale(float *o, const float *a, float s, int n)
     int i = 0;
 #ifdef GSPECTRAL_VECTOR
     gspectral_v4 sv = {s, s, s, s};
+    for (; i + 8 <= n; i += 8) { /* both blocks are loaded before either is stored */
+        gspectral_v4 x0 = gspectral_vload(a + i) * sv, x1 = gspectral_vload(a + i + 4) * sv;
+        gspectral_vstore(o + i, x0);
+        gspectral_vstore(o + i + 4, x1);
+    }
     for (; i + 4 <= n; i += 4)
         gspectral_vstore(o + i, gspectral_vload(a + i) * sv);
 #endif
@@ -178,19 +183,25 @@ static inline float gspectral_kdot(const float *a, const float *b, int n)
     return gspectral_ksum(GSPECTRAL_DOT, a, b, n);
 }
 
+#ifdef GSPECTRAL_VECTOR
+/** a / b on 4 lanes, 0 where b is 0 (those lanes divide by 1 and are cleared) */
+static inline gspectral_v4 gspectral_vdiv(gspectral_v4 a, gspectral_v4 b)
+{
+    const gspectral_v4 one = {1, 1, 1, 1}, zero = {0, 0, 0, 0};
+    gspectral_v4i nz = b != zero;
+    gspectral_v4 safe = (gspectral_v4)(((gspectral_v4i)b & nz) | ((gspectral_v4i)one & ~nz));
+    return (gspectral_v4)((gspectral_v4i)(a / safe) & nz);
+}
+#endif
+
 /** o = a / b sample by sample, zero where b is zero (no lane divides by zero: those divide by 1 and are
  * cleared, so the results equal the scalar loop's bit for bit) */
 static inline void gspectral_kdiv(float *o, const float *a, const float *b, int n)
 {
     int i = 0;
 #ifdef GSPECTRAL_VECTOR
-    const gspectral_v4 one = {1, 1, 1, 1}, zero = {0, 0, 0, 0};
-    for (; i + 4 <= n; i += 4) {
-        gspectral_v4 bv = gspectral_vload(b + i);
-        gspectral_v4i nz = bv != zero;
-        gspectral_v4 safe = (gspectral_v4)(((gspectral_v4i)bv & nz) | ((gspectral_v4i)one & ~nz));
-        gspectral_vstore(o + i, (gspectral_v4)((gspectral_v4i)(gspectral_vload(a + i) / safe) & nz));
-    }
+    for (; i + 4 <= n; i += 4)
+        gspectral_vstore(o + i, gspectral_vdiv(gspectral_vload(a + i), gspectral_vload(b + i)));
 #endif
     for (; i < n; i++)
         o[i] = b[i] != 0.0f ? a[i] / b[i] : 0.0f;
@@ -211,6 +222,19 @@ static inline void gspectral_kaxpyd(float *o, double s, const float *a, const fl
 #endif
     for (; i < n; i++)
         o[i] = b[i] + (float)(a[i] * s);
+}
+
+/** o = value in each of n floats */
+static inline void gspectral_kfill(float *o, float value, int n)
+{
+    int i = 0;
+#ifdef GSPECTRAL_VECTOR
+    const gspectral_v4 v = {value, value, value, value};
+    for (; i + 4 <= n; i += 4)
+        gspectral_vstore(o + i, v);
+#endif
+    for (; i < n; i++)
+        o[i] = value;
 }
 
 /** 1 when every one of the n samples is finite (not infinite, not NaN) and, when nonnegative is set, none is
@@ -245,6 +269,331 @@ static inline void gspectral_kpow(float *o, const float *a, double e, int n)
     for (int i = 0; i < n; i++)
         o[i] = a[i] > 0.0f ? powf(a[i], fe) : zero;
 }
+
+
+/** o = r * b0 + g * b1 + bl * b2 sample by sample, in that order in float (the vector part equals the scalar
+ * loop bit for bit). */
+static inline void gspectral_kmix3(float *o, const float *b0, const float *b1, const float *b2, float r, float g,
+                                   float bl, int n)
+{
+    int i = 0;
+#ifdef GSPECTRAL_VECTOR
+    const gspectral_v4 rv = {r, r, r, r}, gv = {g, g, g, g}, bv = {bl, bl, bl, bl};
+    for (; i + 4 <= n; i += 4)
+        gspectral_vstore(o + i, rv * gspectral_vload(b0 + i) + gv * gspectral_vload(b1 + i) +
+                                    bv * gspectral_vload(b2 + i));
+#endif
+    for (; i < n; i++)
+        o[i] = r * b0[i] + g * b1[i] + bl * b2[i];
+}
+
+/** Floats of the colour matching table of gspectral_kxyz for n samples: 24 per block of 8 samples, the last
+ * block padded with zeros. */
+static inline int gspectral_xyz_table_floats(int n) { return (n + 7) / 8 * 24; }
+
+/** Lays out the colour matching weights wx, wy, wz (n each) as gspectral_kxyz reads them: per block of 8
+ * samples the 8 x weights, the 8 y weights and the 8 z weights, in float; zeros past n. */
+static inline void gspectral_xyz_table(float *t, const double *wx, const double *wy, const double *wz, int n)
+{
+    for (int k = 0; k < (n + 7) / 8 * 8; k++) {
+        float *b = t + (k / 8) * 24 + k % 8;
+        b[0] = k < n ? (float)wx[k] : 0.0f;
+        b[8] = k < n ? (float)wy[k] : 0.0f;
+        b[16] = k < n ? (float)wz[k] : 0.0f;
+    }
+}
+
+/** The samples i..n-1 of gspectral_kxyz (fewer than 8) in a float sum per coordinate, added in double to the
+ * lanes of the whole blocks' sums x, y, z (NULL: none). */
+static inline void gspectral_kxyz_tail(const float *t, const float *a, int i, int n, const float *x, const float *y,
+                                       const float *z, double xyz[3])
+{
+    float tail[3] = {0.0f, 0.0f, 0.0f};
+    for (; i < n; i++) {
+        const float *b = t + (i / 8) * 24 + i % 8;
+        tail[0] += a[i] * b[0];
+        tail[1] += a[i] * b[8];
+        tail[2] += a[i] * b[16];
+    }
+    const float *lanes[3] = {x, y, z};
+    for (int c = 0; c < 3; c++) {
+        const float *l = lanes[c];
+        xyz[c] = (l ? ((double)l[0] + l[1]) + ((double)l[2] + l[3]) : 0.0) + tail[c];
+    }
+}
+
+/** xyz = the sums over the n samples of a[k] times the weights of table t (gspectral_xyz_table): float
+ * products, summed in float on 8 lanes per coordinate over the whole blocks of 8 (two 4-float accumulators)
+ * and in a float sum over the last 1 to 7 samples; the lanes (in pairs) and that sum added in double. */
+static inline void gspectral_kxyz(const float *t, const float *a, int n, double xyz[3])
+{
+    int i = 0;
+#ifdef GSPECTRAL_VECTOR
+    gspectral_v4 x0 = {0, 0, 0, 0}, x1 = x0, y0 = x0, y1 = x0, z0 = x0, z1 = x0;
+    for (; i + 8 <= n; i += 8) {
+        const float *b = t + i * 3;
+        gspectral_v4 v0 = gspectral_vload(a + i), v1 = gspectral_vload(a + i + 4);
+        x0 += v0 * gspectral_vload(b);
+        x1 += v1 * gspectral_vload(b + 4);
+        y0 += v0 * gspectral_vload(b + 8);
+        y1 += v1 * gspectral_vload(b + 12);
+        z0 += v0 * gspectral_vload(b + 16);
+        z1 += v1 * gspectral_vload(b + 20);
+    }
+    float x[4], y[4], z[4];
+    gspectral_vstore(x, x0 + x1);
+    gspectral_vstore(y, y0 + y1);
+    gspectral_vstore(z, z0 + z1);
+    gspectral_kxyz_tail(t, a, i, n, x, y, z, xyz);
+#else
+    gspectral_kxyz_tail(t, a, i, n, NULL, NULL, NULL, xyz);
+#endif
+}
+
+/* ---- 8-float versions (AVX2), for functions compiled for AVX2 and chosen when the library is loaded ----
+ *
+ * On x86-64 every kernel above has a version on 8-float vectors that gives the same results bit for bit: the
+ * element-wise ones trivially, the sums because the 4-float versions already add in two accumulators of
+ * alternate blocks (8 lanes) and the 8-float versions add the two halves of their accumulator the same way. So
+ * a picture does not depend on the processor. An operation gets both bodies, the second marked
+ * GSPECTRAL_TARGET_AVX2, and GSPECTRAL_PICK makes its name an indirect function (ELF ifunc) that the dynamic
+ * loader resolves once, to the 8-float body where the processor has AVX2: no test on each call. */
+#if defined(GSPECTRAL_VECTOR) && defined(__x86_64__) && defined(__ELF__)
+/** Defined when the 8-float (AVX2) kernels and GSPECTRAL_PICK exist. */
+#define GSPECTRAL_AVX2 1
+#include <immintrin.h>
+/** Compiles a function for AVX2 (no FMA: a contracted multiply-add would round differently). */
+#define GSPECTRAL_TARGET_AVX2 __attribute__((target("avx2")))
+/** 8 floats in one AVX register. */
+typedef float gspectral_v8 __attribute__((vector_size(32)));
+/** 8 ints, for bit masks on gspectral_v8. */
+typedef int gspectral_v8i __attribute__((vector_size(32)));
+
+/** 1 when the processor runs AVX2 (for the resolvers, which run before the sanitizers' run-times start). */
+__attribute__((always_inline, no_sanitize_address)) static inline int gspectral_have_avx2(void)
+{
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx2");
+}
+
+/** Defines the function `name` (declared before) as the indirect function choosing name##_v8 (AVX2) or name##_v4,
+ * both defined before with name's type. */
+#define GSPECTRAL_PICK(name)                                                                                   \
+    __attribute__((no_sanitize_address)) static __typeof__(name) *name##_pick(void)                          \
+    {                                                                                                          \
+        return gspectral_have_avx2() ? name##_v8 : name##_v4;                                                  \
+    }                                                                                                          \
+    __typeof__(name) name __attribute__((ifunc(#name "_pick")))
+
+/** The 8 floats at p, any alignment. */
+static inline GSPECTRAL_TARGET_AVX2 gspectral_v8 gspectral_vload8(const float *p)
+{
+    gspectral_v8 v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+/** Stores v at p, any alignment. */
+static inline GSPECTRAL_TARGET_AVX2 void gspectral_vstore8(float *p, gspectral_v8 v) { memcpy(p, &v, sizeof v); }
+
+/** The lanes 0-3 plus the lanes 4-7: what the 4-float versions' two accumulators add up to. */
+static inline GSPECTRAL_TARGET_AVX2 gspectral_v4 gspectral_vfold8(gspectral_v8 x)
+{
+    return __builtin_shufflevector(x, x, 0, 1, 2, 3) + __builtin_shufflevector(x, x, 4, 5, 6, 7);
+}
+
+/** gspectral_kmap on 8-float vectors. */
+static inline GSPECTRAL_TARGET_AVX2 void gspectral_kmap8(GSpectralOp op, float *o, const float *a, const float *b,
+                                                         int n)
+{
+    int i = 0;
+    for (; i + 16 <= n; i += 16) { /* both blocks are loaded before either is stored */
+        gspectral_v8 x0 = gspectral_vload8(a + i), y0 = gspectral_vload8(b + i);
+        gspectral_v8 x1 = gspectral_vload8(a + i + 8), y1 = gspectral_vload8(b + i + 8);
+        gspectral_v8 r0 = op == GSPECTRAL_ADD ? x0 + y0 : x0 * y0, r1 = op == GSPECTRAL_ADD ? x1 + y1 : x1 * y1;
+        gspectral_vstore8(o + i, r0);
+        gspectral_vstore8(o + i + 8, r1);
+    }
+    for (; i + 8 <= n; i += 8) {
+        gspectral_v8 x = gspectral_vload8(a + i), y = gspectral_vload8(b + i);
+        gspectral_vstore8(o + i, op == GSPECTRAL_ADD ? x + y : x * y);
+    }
+    if (i + 4 <= n) {
+        gspectral_vstore(o + i, gspectral_vop(op, gspectral_vload(a + i), gspectral_vload(b + i)));
+        i += 4;
+    }
+    for (; i < n; i++)
+        o[i] = op == GSPECTRAL_ADD ? a[i] + b[i] : a[i] * b[i];
+}
+
+/** gspectral_kscale on 8-float vectors. */
+static inline GSPECTRAL_TARGET_AVX2 void gspectral_kscale8(float *o, const float *a, float s, int n)
+{
+    const gspectral_v8 sv = {s, s, s, s, s, s, s, s};
+    int i = 0;
+    for (; i + 16 <= n; i += 16) { /* both blocks are loaded before either is stored */
+        gspectral_v8 x0 = gspectral_vload8(a + i) * sv, x1 = gspectral_vload8(a + i + 8) * sv;
+        gspectral_vstore8(o + i, x0);
+        gspectral_vstore8(o + i + 8, x1);
+    }
+    for (; i + 8 <= n; i += 8)
+        gspectral_vstore8(o + i, gspectral_vload8(a + i) * sv);
+    if (i + 4 <= n) {
+        const gspectral_v4 s4 = {s, s, s, s};
+        gspectral_vstore(o + i, gspectral_vload(a + i) * s4);
+        i += 4;
+    }
+    for (; i < n; i++)
+        o[i] = a[i] * s;
+}
+
+/** gspectral_kdiv on 8-float vectors. */
+static inline GSPECTRAL_TARGET_AVX2 void gspectral_kdiv8(float *o, const float *a, const float *b, int n)
+{
+    const gspectral_v8 one = {1, 1, 1, 1, 1, 1, 1, 1}, zero = {0, 0, 0, 0, 0, 0, 0, 0};
+    int i = 0;
+    for (; i + 8 <= n; i += 8) {
+        gspectral_v8 bv = gspectral_vload8(b + i);
+        gspectral_v8i nz = bv != zero;
+        gspectral_v8 safe = (gspectral_v8)(((gspectral_v8i)bv & nz) | ((gspectral_v8i)one & ~nz));
+        gspectral_vstore8(o + i, (gspectral_v8)((gspectral_v8i)(gspectral_vload8(a + i) / safe) & nz));
+    }
+    if (i + 4 <= n) {
+        gspectral_vstore(o + i, gspectral_vdiv(gspectral_vload(a + i), gspectral_vload(b + i)));
+        i += 4;
+    }
+    for (; i < n; i++)
+        o[i] = b[i] != 0.0f ? a[i] / b[i] : 0.0f;
+}
+
+/** gspectral_kfill on 8-float vectors. */
+static inline GSPECTRAL_TARGET_AVX2 void gspectral_kfill8(float *o, float value, int n)
+{
+    const gspectral_v8 v = {value, value, value, value, value, value, value, value};
+    int i = 0;
+    for (; i + 8 <= n; i += 8)
+        gspectral_vstore8(o + i, v);
+    if (i + 4 <= n) {
+        const gspectral_v4 v4 = {value, value, value, value};
+        gspectral_vstore(o + i, v4);
+        i += 4;
+    }
+    for (; i < n; i++)
+        o[i] = value;
+}
+
+/** gspectral_kaxpyd on 8 floats a step (each product in double, two 4-double halves). */
+static inline GSPECTRAL_TARGET_AVX2 void gspectral_kaxpyd8(float *o, double s, const float *a, const float *b, int n)
+{
+    const __m256d sv = _mm256_set1_pd(s);
+    int i = 0;
+    for (; i + 8 <= n; i += 8) {
+        __m128 q0 = _mm256_cvtpd_ps(_mm256_mul_pd(_mm256_cvtps_pd(_mm_loadu_ps(a + i)), sv));
+        __m128 q1 = _mm256_cvtpd_ps(_mm256_mul_pd(_mm256_cvtps_pd(_mm_loadu_ps(a + i + 4)), sv));
+        __m256 q = _mm256_insertf128_ps(_mm256_castps128_ps256(q0), q1, 1);
+        _mm256_storeu_ps(o + i, _mm256_add_ps(_mm256_loadu_ps(b + i), q));
+    }
+    if (i + 4 <= n) {
+        __m128 q = _mm256_cvtpd_ps(_mm256_mul_pd(_mm256_cvtps_pd(_mm_loadu_ps(a + i)), sv));
+        _mm_storeu_ps(o + i, _mm_add_ps(_mm_loadu_ps(b + i), q));
+        i += 4;
+    }
+    for (; i < n; i++)
+        o[i] = b[i] + (float)(a[i] * s);
+}
+
+/** The terms t of a and b on 8 lanes. */
+static inline GSPECTRAL_TARGET_AVX2 gspectral_v8 gspectral_vterm8(GSpectralTerm t, gspectral_v8 a, gspectral_v8 b)
+{
+    const gspectral_v8i abs = {0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff,
+                               0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff};
+    return t == GSPECTRAL_ABS ? (gspectral_v8)((gspectral_v8i)a & abs)
+           : t == GSPECTRAL_DOT ? a * b
+                                : a * (gspectral_v8)((gspectral_v8i)b & abs);
+}
+
+/** gspectral_vsum on 8-float vectors: the same sums, folded to 4 lanes. */
+static inline GSPECTRAL_TARGET_AVX2 gspectral_v4 gspectral_vsum8(GSpectralTerm t, const float *a, const float *b,
+                                                                 int n, int *done)
+{
+    gspectral_v8 acc = {0, 0, 0, 0, 0, 0, 0, 0};
+    int i = 0;
+    for (; i + 16 <= n; i += 16) { /* two blocks a step, added in order: the same sums */
+        acc += gspectral_vterm8(t, gspectral_vload8(a + i), gspectral_vload8(b + i));
+        acc += gspectral_vterm8(t, gspectral_vload8(a + i + 8), gspectral_vload8(b + i + 8));
+    }
+    for (; i + 8 <= n; i += 8)
+        acc += gspectral_vterm8(t, gspectral_vload8(a + i), gspectral_vload8(b + i));
+    *done = i;
+    return gspectral_vfold8(acc);
+}
+
+/** gspectral_ksum on 8-float vectors (equal bit for bit). */
+static inline GSPECTRAL_TARGET_AVX2 float gspectral_ksum8(GSpectralTerm t, const float *a, const float *b, int n)
+{
+    int i;
+    gspectral_v4 acc = gspectral_vsum8(t, a, b, n, &i);
+    float s = (acc[0] + acc[1]) + (acc[2] + acc[3]);
+    for (; i < n; i++)
+        s += gspectral_term(t, a[i], b[i]);
+    return s;
+}
+
+/** gspectral_kbright on 8-float vectors (equal bit for bit). */
+static inline GSPECTRAL_TARGET_AVX2 double gspectral_kbright8(const float *w, const float *a, int n)
+{
+    int i;
+    gspectral_v4 acc = gspectral_vsum8(GSPECTRAL_WABS, w, a, n, &i);
+    double s = (double)acc[0] + acc[1] + acc[2] + acc[3];
+    for (; i < n; i++)
+        s += w[i] * fabsf(a[i]);
+    return s;
+}
+
+/** gspectral_kfinite on 8-float vectors. */
+static inline GSPECTRAL_TARGET_AVX2 int gspectral_kfinite8(const float *a, int n, int nonnegative)
+{
+    const gspectral_v8 zero = {0, 0, 0, 0, 0, 0, 0, 0};
+    gspectral_v8 acc = zero;
+    gspectral_v8i neg = {0, 0, 0, 0, 0, 0, 0, 0};
+    int i = 0;
+    for (; i + 8 <= n; i += 8) {
+        gspectral_v8 x = gspectral_vload8(a + i);
+        acc += x - x;
+        if (nonnegative)
+            neg |= x < zero;
+    }
+    if (i > 0) {
+        gspectral_v8i bad = acc != zero;
+        if (nonnegative)
+            bad |= neg;
+        gspectral_v4i b4 =
+            __builtin_shufflevector(bad, bad, 0, 1, 2, 3) | __builtin_shufflevector(bad, bad, 4, 5, 6, 7);
+        if (b4[0] | b4[1] | b4[2] | b4[3])
+            return 0;
+    }
+    return gspectral_kfinite(a + i, n - i, nonnegative);
+}
+
+/** gspectral_kxyz on 8-float vectors (equal bit for bit). */
+static inline GSPECTRAL_TARGET_AVX2 void gspectral_kxyz8(const float *t, const float *a, int n, double xyz[3])
+{
+    gspectral_v8 x = {0, 0, 0, 0, 0, 0, 0, 0}, y = x, z = x;
+    int i = 0;
+    for (; i + 8 <= n; i += 8) {
+        const float *b = t + i * 3;
+        gspectral_v8 v = gspectral_vload8(a + i);
+        x += v * gspectral_vload8(b);
+        y += v * gspectral_vload8(b + 8);
+        z += v * gspectral_vload8(b + 16);
+    }
+    float xs[4], ys[4], zs[4];
+    gspectral_vstore(xs, gspectral_vfold8(x));
+    gspectral_vstore(ys, gspectral_vfold8(y));
+    gspectral_vstore(zs, gspectral_vfold8(z));
+    gspectral_kxyz_tail(t, a, i, n, xs, ys, zs, xyz);
+}
+#endif
 
 #ifdef __cplusplus
 }
