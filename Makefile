@@ -25,9 +25,10 @@ SANFLAGS :=
 OPT     ?= -O2
 # Link-time optimisation of gtrace: the library's small dispatch functions (gcolor_*, gmaterial_*, the scratch
 # arena, the surface point's accessors) inline into the renderer's loops (0.944x the instructions of bench-pov's
-# render, the same picture). The library's objects are fat, so every other link (the other tools, the tests, the
-# benchmarks, the shared library) uses their ordinary code. `make LTO=` turns it off.
-LTO     ?= -flto=auto -ffat-lto-objects
+# render, the same picture). The library and gtrace are compiled a second time for it into BUILD/obj-lto, so
+# libgeneric.a and every other link (the other tools, the tests, the benchmarks, programs linking the installed
+# library) stay ordinary. `make LTO=` turns it off.
+LTO     ?= -flto=auto
 endif
 
 CC      ?= cc
@@ -61,8 +62,9 @@ GEN_WRITERS = $(1)/gen/image_writers.c
 WRITERS_TOOL := $(BUILD)/gen/gen_image_writers
 LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/gen/builtin_types.o $(BUILD)/obj/gen/image_writers.o
 LIBA    := $(BUILD)/lib/libgeneric.a
-$(LIB_OBJ) $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard examples/gtrace/*.c)): CFLAGS += $(LTO)
-LTO_LINK_gtrace := $(if $(LTO),$(LTO) $(OPT) -g)
+# gtrace's objects for the link-time optimised link: the library's and its own, in BUILD/obj-lto
+LTO_OBJ := $(patsubst $(BUILD)/obj/%,$(BUILD)/obj-lto/%,$(LIB_OBJ)) \
+           $(patsubst %.c,$(BUILD)/obj-lto/%.o,$(wildcard examples/gtrace/*.c))
 LIBSO   := $(BUILD)/lib/libgeneric.so.$(SOVER)
 # The OpenImageIO module, found beside libgeneric.so (lib/generic/) or the program (../lib/generic/).
 OIIO_OBJ := $(LIB_CXX:%.cpp=$(BUILD)/obj/%.o)
@@ -146,8 +148,26 @@ $(OIIO_SO): $(OIIO_OBJ) lib/oiio_module.map
 .SECONDEXPANSION:
 $(BUILD)/bin/%: $$(addsuffix .o,$$(addprefix $(BUILD)/obj/,$$(basename $$(wildcard examples/$$*/*.c)))) $(LIBA) | $(OIIO_SO) $(OCIO_CONFIG)
 	@mkdir -p $(dir $@)
-	$(CC) -rdynamic $(LTO_LINK_$*) -o $@ $(filter %.o,$^) -Wl,--whole-archive $(LIBA) -Wl,--no-whole-archive \
-	    $(LDFLAGS) $(EXTRA_LIBS_$*) $(DEPLIBS)
+	$(CC) -rdynamic -o $@ $(filter %.o,$^) -Wl,--whole-archive $(LIBA) -Wl,--no-whole-archive $(LDFLAGS) $(EXTRA_LIBS_$*) $(DEPLIBS)
+
+ifneq ($(LTO),)
+# gtrace, link-time optimised (LTO above): every object of the library is on the command line, as --whole-archive
+# puts them on the others', so plug-ins find all of the library's symbols in the program. -Wmaybe-uninitialized
+# stays a warning at this link: it looks across files there and is prone to false alarms (every object was
+# compiled with it as an error).
+$(BUILD)/bin/gtrace: $(LTO_OBJ) | $(OIIO_SO) $(OCIO_CONFIG)
+	@mkdir -p $(dir $@)
+	$(CC) -rdynamic $(LTO) $(OPT) -g -Wno-error=maybe-uninitialized -o $@ $^ $(LDFLAGS) $(EXTRA_LIBS_gtrace) $(DEPLIBS)
+
+$(BUILD)/obj-lto/examples/%.o: CPPFLAGS += -DGENERIC_VERSION='"$(VERSION)"'
+$(BUILD)/obj-lto/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(LTO) -c $< -o $@
+
+$(BUILD)/obj-lto/gen/%.o: $(BUILD)/gen/%.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CPPFLAGS) $(CFLAGS) $(LTO) -c $< -o $@
+endif
 
 $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(LIBA) | $(OIIO_SO) $(OCIO_CONFIG)
 	@mkdir -p $(dir $@)
@@ -223,7 +243,7 @@ uninstall:
 clean:
 	rm -rf build
 
--include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)
+-include $(shell find $(BUILD)/obj $(BUILD)/obj-lto -name '*.d' 2>/dev/null)
 
 # ---- gtrace (examples/gtrace): Embree for the tracer, its test programs, and the POV-Ray comparison ----
 EXTRA_LIBS_gtrace := -lembree3 -lassimp
@@ -285,7 +305,8 @@ PLUGIN_SO  := $(PLUGIN_SRC:examples/plugins/%.c=$(BUILD)/plugins/%.so) \
               $(BUILD)/plugins/bad_abi.so $(BUILD)/plugins/failing_init.so $(BUILD)/plugins/no_init.so \
               $(BUILD)/plugins/constructor_only.so \
               $(BUILD)/plugins/gain.so $(BUILD)/plugins/skewed.so $(BUILD)/plugins/bad_add.so \
-              $(BUILD)/plugins/bad_bands.so $(BUILD)/plugins/misdrawn.so $(BUILD)/plugins/misflagged.so
+              $(BUILD)/plugins/bad_bands.so $(BUILD)/plugins/misdrawn.so $(BUILD)/plugins/misflagged.so \
+              $(BUILD)/plugins/misopaque.so
 # -fvisibility=hidden: a module's own symbols never bind to the program's copies (only the two GENERIC_MODULE_EXPORT
 # symbols are exported).
 PLUGIN_CFLAGS := -std=c11 -D_GNU_SOURCE $(OPT) -g -fPIC -shared -fvisibility=hidden $(WARN) $(SANFLAGS) -I$(PLUGIN_INC)
@@ -346,6 +367,9 @@ $(BUILD)/plugins/misdrawn.so: tests/plugins/nonconforming.c $(PLUGIN_HDR)
 
 $(BUILD)/plugins/misflagged.so: tests/plugins/nonconforming.c $(PLUGIN_HDR)
 	$(CC) $(PLUGIN_CFLAGS) -DMISFLAGGED -o $@ $< -lm
+
+$(BUILD)/plugins/misopaque.so: tests/plugins/nonconforming.c $(PLUGIN_HDR)
+	$(CC) $(PLUGIN_CFLAGS) -DMISOPAQUE -o $@ $< -lm
 
 $(BUILD)/plugins/bad_add.so: tests/plugins/nonconforming.c $(PLUGIN_HDR)
 	$(CC) $(PLUGIN_CFLAGS) -DBAD_ADD -o $@ $< -lm

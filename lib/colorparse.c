@@ -217,7 +217,7 @@ static int parse_spectrum(GReader *r, const void *vt, void **object, GError *err
                 rc = greader_error(r, err, "spectrum: expected wavelength/value pairs, found an empty block");
             break;
         }
-        double l, v;
+        double l = 0.0, v = 0.0; /* set before use; initialised for the link-time optimiser's flow analysis */
         int ll, lc;
         if ((rc = greader_number_in(r, 1.0, 100000.0, &l, err)) != G_OK)
             break;
