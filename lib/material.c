@@ -15,7 +15,8 @@ int gmaterial_init(GMaterial *m, const GMaterialClass *cls, const GColorModel *m
     m->refcount = 1;
     m->depth = 1;
     m->cost = 1;
-    m->flags = cls->emission ? 0u : GMAT_NO_EMISSION; /* no slot: black, the documented default */
+    m->flags = (cls->emission ? 0u : GMAT_NO_EMISSION) | /* no slot: black, the documented default */
+               (cls->opaque ? 0u : GMAT_OPAQUE);         /* no slot: opaque, the documented default */
     return G_OK;
 }
 
@@ -115,10 +116,12 @@ int gmaterial_diffuse(const GMaterial *m, GSurfPoint *sp, GColor *result)
     return G_OK;
 }
 
-int gmaterial_opaque_everywhere(const GMaterial *m) { return m && !m->cls->opaque; }
+int gmaterial_opaque_everywhere(const GMaterial *m) { return m && (m->flags & GMAT_OPAQUE); }
 
 int gmaterial_opaque(const GMaterial *m, GSurfPoint *sp)
 {
+    if (m && (m->flags & GMAT_OPAQUE))
+        return 1;
     if (m && m->cls->opaque)
         return m->cls->opaque(m, sp);
     return 1;

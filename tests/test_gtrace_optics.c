@@ -7,7 +7,9 @@
  *    does not split and renders the same with any band count;
  *  - shadows through glass: the light a glass sphere lets through to the plane under it is the two-interface
  *    Fresnel transmittance T(theta)^2 of the straight chord, continuous across the radius where the straight
- *    path would meet total internal reflection. */
+ *    path would meet total internal reflection;
+ *  - what a shadow ray meets (accel_occluded): clear, a surface that blocks all light (no walk needed), or
+ *    surfaces that may let light through, for analytic shapes and Embree's own triangles. */
 #include "test_gtrace_common.h"
 
 #include "generic/builtins.h"
@@ -393,6 +395,55 @@ static void test_glass_shadow(void **state)
     check_glass_shadow("spectrum");
 }
 
+/* The occlusion of the segment from (x, 0, 5) along -z over length len. */
+static int occlusion(Scene *s, double x, double len)
+{
+    GError err;
+    if (!s->rtc && accel_build(s, &err) != G_OK)
+        fail_msg("accel_build: %s", err.message);
+    Ray r = {gvec3(x, 0, 5), gvec3(0, 0, -1), 0.0, len, 0.0, 0.0};
+    return accel_occluded(s, &r);
+}
+
+/* A triangle across the z axis at height z. */
+static void add_triangle(Scene *s, GMaterial *m, double z)
+{
+    Object *o = object_new(SHAPE_TRIANGLE, m);
+    gmaterial_unref(m);
+    GError err;
+    assert_int_equal(object_triangle(o, gvec3(-1, -1, z), gvec3(1, -1, z), gvec3(0, 1, z), &err), G_OK);
+    assert_int_equal(scene_add_object(s, o, &err), G_OK);
+}
+
+static void test_occlusion_kinds(void **state)
+{
+    (void)state;
+    /* an opaque sphere: blocked outright; beside it: clear */
+    Scene *s = new_scene("rgb", gvec3(0, 0, 8), gvec3(0, 0, 0), 40.0);
+    add_sphere(s, lambert(s, 0.5), gvec3(0, 0, -2), 1.0);
+    assert_int_equal(occlusion(s, 0.0, 10.0), OCCLUDED_OPAQUE);
+    assert_int_equal(occlusion(s, 3.0, 10.0), OCCLUDED_CLEAR);
+    assert_int_equal(occlusion(s, 0.0, 5.0), OCCLUDED_CLEAR); /* ends before the sphere */
+    /* glass in front of it: the query goes past the glass to the opaque sphere; stopping short of it leaves
+     * only the glass, which may let light through */
+    add_sphere(s, glass(s, 1.5), gvec3(0, 0, 2), 1.0);
+    accel_release(s);
+    assert_int_equal(occlusion(s, 0.0, 10.0), OCCLUDED_OPAQUE);
+    assert_int_equal(occlusion(s, 0.0, 5.0), OCCLUDED_PASSABLE);
+    scene_destroy(s);
+    /* Embree's own triangles: an opaque one blocks; a glass one anywhere makes every blocking by them passable */
+    s = new_scene("rgb", gvec3(0, 0, 8), gvec3(0, 0, 0), 40.0);
+    add_triangle(s, lambert(s, 0.5), 0.0);
+    assert_int_equal(occlusion(s, 0.0, 10.0), OCCLUDED_OPAQUE);
+    assert_int_equal(occlusion(s, 5.0, 10.0), OCCLUDED_CLEAR);
+    assert_int_equal(s->native_may_pass, 0);
+    add_triangle(s, glass(s, 1.5), 3.0);
+    accel_release(s);
+    assert_int_equal(occlusion(s, 0.0, 10.0), OCCLUDED_PASSABLE);
+    assert_int_equal(s->native_may_pass, 1);
+    scene_destroy(s);
+}
+
 int main(void)
 {
     if (generic_register_builtins(NULL) != G_OK)
@@ -403,6 +454,7 @@ int main(void)
         cmocka_unit_test(test_prism_white_spectrum),
         cmocka_unit_test(test_constant_index_does_not_split),
         cmocka_unit_test(test_glass_shadow),
+        cmocka_unit_test(test_occlusion_kinds),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,10 +1,10 @@
-/* emission.c - the no-emission check of `gmat check`. A material whose header has GMAT_NO_EMISSION
- * (material.h) emits nothing as far as a renderer knows: gmaterial_emission answers black without calling the
- * class. So a bit set wrongly (by a plug-in on an instance that does emit) would darken every light of that
- * material without an error. The check calls the class's own emission slot directly, at the places and over
- * the directions of the finite check (above and below the surface), and holds it to black:
- *   no-emission  the largest |value| of any sample the slot returns (a failed call counts as infinite);
- *                nothing to check without the bit, or without a slot (black is then the default). */
+/* flags.c - the checks of `gmat check` on the instance flags (material.h). A flag lets the dispatch answer without
+ * calling the class, so a bit set wrongly (by a plug-in) changes pictures without an error; each check calls the
+ * class's own slot directly, at the places of the finite check, above and below the surface:
+ *   no-emission  with GMAT_NO_EMISSION: the largest |value| of any sample the emission slot returns over the
+ *                finite check's directions (a failed call counts as infinite); must be black;
+ *   opaque-flag  with GMAT_OPAQUE: how many calls of the opaque slot did not say 1; must be none.
+ * Nothing to check without the bit, or without the slot (the default is then what the bit says). */
 #include "gmat.h"
 
 #include <math.h>
@@ -60,4 +60,31 @@ void gmat_check_no_emission(GmatContext *ctx, const GmatPlace *places, int nplac
     snprintf(detail, sizeof detail, "(GMAT_NO_EMISSION set: largest |value| of the class's own emission, %d calls;"
              " must be black)", calls);
     report(checker, "no-emission", worst, 0.0, detail);
+}
+
+void gmat_check_opaque_flag(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
+                            void *checker)
+{
+    const GMaterial *m = ctx->material;
+    if (!gmaterial_opaque_everywhere(m) || !m->cls->opaque) {
+        report(checker, "opaque-flag", 0.0, 0.0,
+               !gmaterial_opaque_everywhere(m) ? "(GMAT_OPAQUE not set: the opaque slot is called)"
+                                               : "(GMAT_OPAQUE set, no opaque slot: opaque, the default)");
+        return;
+    }
+    int calls = 0, wrong = 0;
+    for (int p = 0; p < nplaces; p++) {
+        ctx->place = &places[p];
+        for (int below = 0; below < 2; below++) {
+            GSurfPoint sp;
+            gmat_surface_point(ctx, &sp, below);
+            wrong += m->cls->opaque(m, &sp) != 1;
+            calls++;
+        }
+    }
+    ctx->place = NULL;
+    char detail[200];
+    snprintf(detail, sizeof detail, "(GMAT_OPAQUE set: calls of the class's own opaque slot that did not say 1, of %d)",
+             calls);
+    report(checker, "opaque-flag", wrong, 0.0, detail);
 }

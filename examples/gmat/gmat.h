@@ -68,9 +68,13 @@ typedef void (*GmatReportFn)(void *checker, const char *property, double worst, 
  * weights; at places[0] and places[2 % nplaces], nsamples draws per incidence (0 = 20000). */
 void gmat_check_sampling(GmatContext *ctx, const GmatPlace *places, int nplaces, int nsamples, GmatReportFn report,
                          void *checker);
-/** The no-emission check of `gmat check` (emission.c): a material with GMAT_NO_EMISSION must get black from its
+/** The no-emission check of `gmat check` (flags.c): a material with GMAT_NO_EMISSION must get black from its
  * class's own emission slot at the places given, over the directions of the finite check. */
 void gmat_check_no_emission(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
+                            void *checker);
+/** The opaque-flag check of `gmat check` (flags.c): a material with GMAT_OPAQUE must get 1 from its class's own
+ * opaque slot at the places given, on both sides. */
+void gmat_check_opaque_flag(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
                             void *checker);
 /** The relative index n(from) / n(to) at sp as a colour, as a renderer hands it to refraction() (storage of the
  * model; temporaries on sp's arena). */

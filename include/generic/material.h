@@ -72,7 +72,14 @@ enum {
      * with an emission slot that knows an instance's emission to be black (a zero radiance, say) may set it after
      * gmaterial_init, and must never set it otherwise: a wrongly set bit makes lights dark, wrong pictures that
      * no error reports (`gmat check`'s no-emission property catches it). Clearing it is always safe. */
-    GMAT_NO_EMISSION = 1u
+    GMAT_NO_EMISSION = 1u,
+    /** opaque() is 1 at every point: gmaterial_opaque answers 1 without calling the class, and a renderer may let
+     * any surface of the material block a shadow ray without a surface point (gmaterial_opaque_everywhere).
+     * gmaterial_init sets it when the class has no opaque slot (the documented default is opaque); the node kit
+     * sets it on a node whose opacity is its children's when every child has it (node_kit.h). The same rules as
+     * for GMAT_NO_EMISSION: set by hand only when it is true (`gmat check`'s opaque-flag property), clearing it is
+     * always safe. */
+    GMAT_OPAQUE = 2u
 };
 
 /** A material instance begins with this header; implementations embed it as their first member. */
@@ -162,9 +169,9 @@ GENERIC_API GENERIC_NODISCARD int gmaterial_normal(const GMaterial *m, GSurfPoin
 GENERIC_API GENERIC_NODISCARD int gmaterial_diffuse(const GMaterial *m, GSurfPoint *sp, GColor *result);
 /** 1 when opaque. */
 GENERIC_API GENERIC_NODISCARD int gmaterial_opaque(const GMaterial *m, GSurfPoint *sp);
-/** 1 when m is opaque at every point (gmaterial_opaque would say 1 wherever it is asked): a renderer may then let
- * any surface of m block a shadow ray without filling a surface point. 0 when it may let light through somewhere
- * (or cannot tell); NULL (vacuum) lets light through. */
+/** 1 when m has GMAT_OPAQUE, opaque at every point (gmaterial_opaque would say 1 wherever it is asked): a renderer
+ * may then let any surface of m block a shadow ray without filling a surface point. 0 when it may let light
+ * through somewhere (or cannot tell); NULL (vacuum) lets light through. */
 GENERIC_API int gmaterial_opaque_everywhere(const GMaterial *m);
 
 /** Draws a direction for light leaving towards out (see the top of this file): 1 drawn, 0 none, or a status.

@@ -46,7 +46,8 @@ GENERIC_API GENERIC_NODISCARD int gtexnode_check(const char *node, GMaterial *co
 
 /** gtexnode_check and gtexnode_measure (messages naming the class), then a zeroed node of `size` bytes (a struct
  * that begins with its GMaterial) of class cls in the children's model into *out, with one reference, its depth
- * and cost set, and GMAT_NO_EMISSION (material.h) when its emission is black: cls has no emission slot, or the
+ * and cost set, GMAT_OPAQUE as gtexnode_inherit_opaque says for a class with the kit's opaque slot, and
+ * GMAT_NO_EMISSION (material.h) when its emission is black: cls has no emission slot, or the
  * slot is the kit's gtexblendnode_emission or gtexchild_emission and every child has the bit (a blend class's
  * pick must blend only these children, a GTexChild's child must be the one given). A class with an emission method of its own gets the bit only from
  * gtexnode_inherit_no_emission. It holds no reference to the children yet: the caller takes those. Until it is
@@ -62,6 +63,16 @@ GENERIC_API GENERIC_NODISCARD int gtexnode_children_dark(GMaterial *const *child
  * method only combines its children's emissions (the scale, image and transform nodes call it after
  * construction). Never for a node that adds light of its own: a wrong bit gives wrong pictures. */
 GENERIC_API void gtexnode_inherit_no_emission(GMaterial *node, GMaterial *const *children, int n);
+
+/** 1 when each of the n children has GMAT_OPAQUE (material.h): a node whose opacity is theirs (any child it blends,
+ * the child's at a moved point) is then opaque everywhere. gtexnode_new_checked applies it to a class whose opaque
+ * slot is the kit's gtexblendnode_opaque or gtexchild_opaque. */
+GENERIC_API GENERIC_NODISCARD int gtexnode_children_opaque(GMaterial *const *children, int n);
+
+/** Sets GMAT_OPAQUE on node when gtexnode_children_opaque(children, n): for a node class whose own opaque method
+ * only asks its children (the transform node calls it after construction). Never for a node that can be
+ * transparent where its children are not. */
+GENERIC_API void gtexnode_inherit_opaque(GMaterial *node, GMaterial *const *children, int n);
 
 /** 1 for the methods whose colour carries light (reflection, refraction, emission, ambient, diffuse): the ones
  * a node that darkens or tints its child (scale, image) multiplies. */

@@ -1,5 +1,6 @@
-/* node_emission.c - the node kit's GMAT_NO_EMISSION (generic/node_kit.h): a node whose emission only combines
- * its children's emits nothing when none of them does, so gmaterial_emission answers it without a call. */
+/* node_flags.c - the node kit's GMAT_NO_EMISSION and GMAT_OPAQUE (generic/node_kit.h): a node whose emission only
+ * combines its children's emits nothing when none of them does, and one whose opacity is its children's is opaque
+ * everywhere when each of them is, so the dispatch answers it without a call. */
 #include "generic/node_kit.h"
 
 int gtexnode_children_dark(GMaterial *const *children, int n)
@@ -16,4 +17,20 @@ void gtexnode_inherit_no_emission(GMaterial *node, GMaterial *const *children, i
 {
     if (node && gtexnode_children_dark(children, n))
         node->flags |= GMAT_NO_EMISSION;
+}
+
+int gtexnode_children_opaque(GMaterial *const *children, int n)
+{
+    if (!children || n <= 0)
+        return 0;
+    for (int i = 0; i < n; i++)
+        if (!gmaterial_opaque_everywhere(children[i]))
+            return 0;
+    return 1;
+}
+
+void gtexnode_inherit_opaque(GMaterial *node, GMaterial *const *children, int n)
+{
+    if (node && gtexnode_children_opaque(children, n))
+        node->flags |= GMAT_OPAQUE;
 }

@@ -122,6 +122,8 @@ int gtexnode_new_checked(const GMaterialClass *cls, GMaterial *const *children, 
         (*out)->cost = cost;
         if (cls->emission == gtexblendnode_emission || cls->emission == gtexchild_emission) /* sums of children */
             gtexnode_inherit_no_emission(*out, children, n);
+        if (cls->opaque == gtexblendnode_opaque || cls->opaque == gtexchild_opaque) /* opaque where they all are */
+            gtexnode_inherit_opaque(*out, children, n);
     }
     return rc;
 }

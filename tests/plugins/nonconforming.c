@@ -11,6 +11,8 @@
  *   -DMISFLAGGED material "misflagged_lambert": a Lambertian of albedo 0.5 with an emission slot that glows (0.1
  *                of white everywhere) whose instances set GMAT_NO_EMISSION after gmaterial_init all the same, so
  *                renderers never see the glow: only the no-emission check of gmat check sees it;
+ *   -DMISOPAQUE  material "misopaque_lambert": a Lambertian of albedo 0.5 whose opaque slot says 0 (it would let
+ *                shadow rays through) while its instances set GMAT_OPAQUE: only the opaque-flag check sees it;
  *   -DBAD_BANDS  colour model "bad_bands": the same grey model with a correct add and two wavelength bands whose
  *                masks are both white, so the bands do not partition a value;
  *   -DBAD_ADD    colour model "bad_add": the grey model (luminance only) whose add returns 1.01 a + b, so
@@ -22,7 +24,7 @@
 
 GENERIC_MODULE_EXPORT const int generic_module_abi = GMODULE_ABI_VERSION;
 
-#if defined(GAIN) || defined(SKEWED) || defined(MISDRAWN) || defined(MISFLAGGED)
+#if defined(GAIN) || defined(SKEWED) || defined(MISDRAWN) || defined(MISFLAGGED) || defined(MISOPAQUE)
 typedef struct Flat {
     GMaterial base;
 } Flat;
@@ -43,7 +45,7 @@ static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, cons
     double f = 1.5 / M_PI;
 #elif defined(MISDRAWN)
     double f = 0.8 / M_PI;
-#elif defined(MISFLAGGED)
+#elif defined(MISFLAGGED) || defined(MISOPAQUE)
     double f = 0.5 / M_PI;
 #else
     double f = (0.25 + 0.5 * ci * ci) / M_PI;
@@ -57,6 +59,8 @@ static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, cons
 #define FLAT_NAME "misdrawn_lambert"
 #elif defined(MISFLAGGED)
 #define FLAT_NAME "misflagged_lambert"
+#elif defined(MISOPAQUE)
+#define FLAT_NAME "misopaque_lambert"
 #else
 #define FLAT_NAME "skewed_lambert"
 #endif
@@ -96,6 +100,15 @@ static int flat_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColo
 }
 #endif
 
+#ifdef MISOPAQUE
+/* Transparent by its own slot; the instances are flagged GMAT_OPAQUE all the same (the error). */
+static int flat_opaque(const GMaterial *self, GSurfPoint *sp)
+{
+    (void)self, (void)sp;
+    return 0;
+}
+#endif
+
 static const GMaterialClass flat_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = FLAT_NAME,
@@ -108,6 +121,9 @@ static const GMaterialClass flat_class = {
 #endif
 #ifdef MISFLAGGED
     .emission = flat_emission,
+#endif
+#ifdef MISOPAQUE
+    .opaque = flat_opaque,
 #endif
 };
 
@@ -130,6 +146,9 @@ static int parse_flat(GReader *r, const void *vtable, void **object, GError *err
     }
 #ifdef MISFLAGGED
     m->base.flags |= GMAT_NO_EMISSION; /* the deliberate error: the class's emission is not black */
+#endif
+#ifdef MISOPAQUE
+    m->base.flags |= GMAT_OPAQUE; /* the deliberate error: the class's opaque slot says 0 */
 #endif
     *object = &m->base;
     return G_OK;
