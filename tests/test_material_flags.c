@@ -1,7 +1,10 @@
-/* test_material_emission.c - GMAT_NO_EMISSION (material.h): which materials and nodes get the bit (every
- * built-in material without an emission slot, not the emitter; a node over children that all have it, not one
- * over an emitter, whose emission stays the weighted child's), that the bit makes gmaterial_emission answer
- * black without calling the class, and that the material interface's version rose with the header. */
+/* test_material_flags.c - the instance flags of material.h:
+ *  - GMAT_NO_EMISSION: which materials and nodes get the bit (every built-in material without an emission slot,
+ *    not the emitter; a node over children that all have it, not one over an emitter, whose emission stays the
+ *    weighted child's), and that it makes gmaterial_emission answer black without calling the class;
+ *  - GMAT_OPAQUE: the same for opacity (every built-in but the dielectric; a node over glass has no bit and is
+ *    transparent where the glass is blended in), and that it makes gmaterial_opaque answer 1 without the class;
+ *  - the material interface's version rose with the header. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -32,6 +35,7 @@ static int is_black(const GColor *c)
 }
 
 static int dark(const GMaterial *m) { return (m->flags & GMAT_NO_EMISSION) != 0; }
+static int solid(const GMaterial *m) { return (m->flags & GMAT_OPAQUE) != 0; }
 
 /* A lambert of grey reflectance r and an emitter of grey radiance e (two-sided) in f's model. */
 static GMaterial *lambert(Fix *f, double r)
@@ -60,8 +64,9 @@ static GMaterial *emitter(Fix *f, double r, double g, double b)
     return m;
 }
 
-/* Every built-in material type: the bit exactly when the class has no emission slot (all but the emitter;
- * the fluorescent materials re-radiate in reflection(), their emission is black). */
+/* Every built-in material type: GMAT_NO_EMISSION exactly when the class has no emission slot (all but the
+ * emitter; the fluorescent materials re-radiate in reflection(), their emission is black), GMAT_OPAQUE exactly when
+ * it has no opaque slot (all but the dielectric). */
 static void test_leaf_materials(void **state)
 {
     (void)state;
@@ -80,30 +85,30 @@ static void test_leaf_materials(void **state)
     GError err;
     if (greader_load_string(text, "emission.mat", NULL, &lib, &err) != G_OK)
         fail_msg("%s", err.message);
-    static const char *const dark_names[] = {"l", "p", "m", "d", "fv", "fp"};
-    for (size_t i = 0; i < sizeof dark_names / sizeof dark_names[0]; i++) {
-        GMaterial *m = glibrary_material(lib, dark_names[i]);
+    static const struct {
+        const char *name;
+        int emits, opaque;
+    } want[] = {{"l", 0, 1}, {"p", 0, 1}, {"m", 0, 1}, {"d", 0, 0}, {"fv", 0, 1}, {"fp", 0, 1}, {"e", 1, 1}};
+    for (size_t i = 0; i < sizeof want / sizeof want[0]; i++) {
+        GMaterial *m = glibrary_material(lib, want[i].name);
         assert_non_null(m);
-        assert_null(m->cls->emission);
-        assert_true(dark(m));
-        assert_int_equal(gmaterial_emits(m), 0);
+        assert_int_equal(m->cls->emission != NULL, want[i].emits);
+        assert_int_equal(dark(m), !want[i].emits);
+        assert_int_equal(gmaterial_emits(m), want[i].emits);
+        assert_int_equal(m->cls->opaque == NULL, want[i].opaque);
+        assert_int_equal(solid(m), want[i].opaque);
+        assert_int_equal(gmaterial_opaque_everywhere(m), want[i].opaque);
     }
-    GMaterial *e = glibrary_material(lib, "e");
-    assert_non_null(e->cls->emission);
-    assert_false(dark(e));
-    assert_int_equal(gmaterial_emits(e), 1);
-    assert_int_equal(gmaterial_emits(NULL), 0); /* vacuum */
+    assert_int_equal(gmaterial_emits(NULL), 0);                /* vacuum emits nothing */
+    assert_int_equal(gmaterial_opaque_everywhere(NULL), 0);    /* and lets light through */
     glibrary_destroy(lib);
 }
 
-/* Nodes over non-emitters have the bit (blends, one-child nodes, nested nodes); their emission is black. */
-static void test_nodes_of_non_emitters(void **state)
+/* Nodes of every kit kind over the lamberts a, b and c (blends, one-child nodes, a node of nodes) into n[8]. */
+static void plain_nodes(GMaterial *a, GMaterial *b, GMaterial *c, CountGen *g, GMaterial *n[8])
 {
-    Fix *f = *state;
-    GMaterial *a = lambert(f, 0.2), *b = lambert(f, 0.8), *c = lambert(f, 0.5);
-    CountGen *g = countgen_new(0.4);
     GError err;
-    GMaterial *kids[3] = {a, b, c}, *n[8];
+    GMaterial *kids[3] = {a, b, c};
     GAffine2 uv = gaffine2_rotate(30.0);
     assert_int_equal(gnode_interpolate_create(a, b, &g->base, &n[0], &err), G_OK);
     assert_int_equal(gnode_interpolate_one_create(a, b, &g->base, GNODE_DIFFUSE, &n[1], &err), G_OK);
@@ -114,8 +119,21 @@ static void test_nodes_of_non_emitters(void **state)
     assert_int_equal(gnode_transform_create(c, &uv, NULL, &n[6], &err), G_OK);
     GMaterial *inner[2] = {n[0], n[6]}; /* a node of nodes */
     assert_int_equal(gnode_spline_create(inner, 2, &g->base, GSPLINE_LINEAR, &n[7], &err), G_OK);
+}
+
+/* Nodes over lamberts have both bits, and their class's own slots agree: black emission, opaque. */
+static void test_nodes_of_plain_leaves(void **state)
+{
+    Fix *f = *state;
+    GMaterial *a = lambert(f, 0.2), *b = lambert(f, 0.8), *c = lambert(f, 0.5), *n[8];
+    CountGen *g = countgen_new(0.4);
+    plain_nodes(a, b, c, g, n);
     for (int i = 0; i < 8; i++) {
-        assert_non_null(n[i]->cls->emission); /* the bit comes from the children, not a missing slot */
+        assert_non_null(n[i]->cls->emission); /* the bits come from the children, not missing slots */
+        assert_non_null(n[i]->cls->opaque);
+        if (!solid(n[i]))
+            fail_msg("node %d (%s) has no GMAT_OPAQUE", i, gmaterial_name(n[i]));
+        assert_int_equal(n[i]->cls->opaque(n[i], &f->sp), 1);
         if (!dark(n[i]))
             fail_msg("node %d (%s) has no GMAT_NO_EMISSION", i, gmaterial_name(n[i]));
         assert_int_equal(gmaterial_emits(n[i]), 0);
@@ -129,6 +147,44 @@ static void test_nodes_of_non_emitters(void **state)
     gmaterial_unref(a);
     gmaterial_unref(b);
     gmaterial_unref(c);
+    ggenerator_unref(&g->base);
+}
+
+/* A node with a glass child has no GMAT_OPAQUE anywhere up the tree, and is transparent where the generator
+ * blends the glass in (t = 0.4) and opaque where it shows the lambert alone (t = 0). */
+static void test_nodes_over_glass(void **state)
+{
+    Fix *f = *state;
+    GMaterial *a = lambert(f, 0.2), *b = lambert(f, 0.8), *c = lambert(f, 0.5), *glass = NULL, *n[8], *m[4];
+    GError err;
+    GDielectricParams gp = {.index = gdispersion_constant(1.5)};
+    assert_int_equal(gdielectric_create(f->rgb, &gp, &glass, &err), G_OK);
+    CountGen *g = countgen_new(0.4);
+    plain_nodes(a, b, c, g, n);
+    GAffine2 uv = gaffine2_rotate(30.0);
+    assert_int_equal(gnode_interpolate_create(a, glass, &g->base, &m[0], &err), G_OK);
+    assert_int_equal(gnode_transform_create(glass, &uv, NULL, &m[1], &err), G_OK);
+    assert_int_equal(gnode_scale_create(glass, &g->base, &m[2], &err), G_OK);
+    GMaterial *mixed[2] = {n[0], m[0]};
+    assert_int_equal(gnode_spline_create(mixed, 2, &g->base, GSPLINE_LINEAR, &m[3], &err), G_OK);
+    for (int i = 0; i < 4; i++) {
+        if (solid(m[i]))
+            fail_msg("node %d (%s) over glass has GMAT_OPAQUE", i, gmaterial_name(m[i]));
+        assert_int_equal(gmaterial_opaque_everywhere(m[i]), 0);
+    }
+    assert_int_equal(gmaterial_opaque(m[0], &f->sp), 0);
+    g->value = 0.0;
+    GSurfPoint fresh;
+    plane_point(&fresh, f->rgb, f->scratch, 0.3, 0.4); /* no cached generator value */
+    assert_int_equal(gmaterial_opaque(m[0], &fresh), 1);
+    for (int i = 3; i >= 0; i--)
+        gmaterial_unref(m[i]);
+    for (int i = 7; i >= 0; i--)
+        gmaterial_unref(n[i]);
+    gmaterial_unref(a);
+    gmaterial_unref(b);
+    gmaterial_unref(c);
+    gmaterial_unref(glass);
     ggenerator_unref(&g->base);
 }
 
@@ -259,6 +315,48 @@ static void test_bit_skips_the_class(void **state)
     gmaterial_unref(p);
 }
 
+/* ---- a class whose opaque slot says 0 and counts its calls ---- */
+
+static int see_through_calls;
+
+static int see_through_opaque(const GMaterial *self, GSurfPoint *sp)
+{
+    (void)self, (void)sp;
+    see_through_calls++;
+    return 0;
+}
+
+static const GMaterialClass see_through_class = {
+    .abi_version = GMATERIAL_ABI_VERSION, .name = "see_through", .description = "transparent everywhere (tests)",
+    .destroy = glow_destroy, .opaque = see_through_opaque,
+};
+
+/* Without GMAT_OPAQUE the slot decides (0); set by hand, gmaterial_opaque answers 1 and never calls the class,
+ * also through a node that inherits it; cleared, the slot answers again. */
+static void test_opaque_bit_skips_the_class(void **state)
+{
+    Fix *f = *state;
+    GMaterial *m = gmem_calloc(1, sizeof *m), *node = NULL;
+    GError err;
+    assert_int_equal(gmaterial_init(m, &see_through_class, f->rgb, &err), G_OK);
+    assert_false(solid(m));
+    see_through_calls = 0;
+    assert_int_equal(gmaterial_opaque(m, &f->sp), 0);
+    assert_int_equal(see_through_calls, 1);
+    m->flags |= GMAT_OPAQUE;
+    GAffine2 uv = gaffine2_rotate(10.0);
+    assert_int_equal(gnode_transform_create(m, &uv, NULL, &node, &err), G_OK);
+    assert_true(solid(node));
+    assert_int_equal(gmaterial_opaque(m, &f->sp), 1);
+    assert_int_equal(gmaterial_opaque(node, &f->sp), 1);
+    assert_int_equal(see_through_calls, 1);
+    m->flags &= ~(unsigned)GMAT_OPAQUE;
+    assert_int_equal(gmaterial_opaque(m, &f->sp), 0);
+    assert_int_equal(see_through_calls, 2);
+    gmaterial_unref(node);
+    gmaterial_unref(m);
+}
+
 /* The header grew, so the interface version rose to 4: a class of version 3 is refused, naming both. */
 static void test_interface_version(void **state)
 {
@@ -278,9 +376,11 @@ int main(void)
         return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_leaf_materials),
-        cmocka_unit_test_setup_teardown(test_nodes_of_non_emitters, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_nodes_of_plain_leaves, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_nodes_over_glass, setup, teardown),
         cmocka_unit_test_setup_teardown(test_nodes_with_an_emitter, setup, teardown),
         cmocka_unit_test_setup_teardown(test_bit_skips_the_class, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_opaque_bit_skips_the_class, setup, teardown),
         cmocka_unit_test(test_interface_version),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
