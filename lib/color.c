@@ -219,17 +219,20 @@ static int gcolor_axpy_v4(GColor *out, double s, const GColor *a, const GColor *
 
 int gcolor_add_scaled(GColor *out, const GColor *a, double s) { return gcolor_axpy(out, s, a, out); }
 
-static int gcolor_fill_v4(GColor *out, double value)
-{
-    if (!isfinite(value))
-        return G_ERR_INVALID;
-    const GColorModel *m = out->model;
-    if (m->cls->fill)
-        return m->cls->fill(m, out, value);
-    gspectral_kfill(out->v, (float)value, m->nvalues);
-    out->kind = GCOLOR_VECTOR;
-    return G_OK;
-}
+/* The body of gcolor_fill around its kernel (as AXPY_BODY). */
+#define FILL_BODY(kernel)                                                                                      \
+    do {                                                                                                       \
+        if (!isfinite(value))                                                                                  \
+            return G_ERR_INVALID;                                                                              \
+        const GColorModel *m = out->model;                                                                     \
+        if (m->cls->fill)                                                                                      \
+            return m->cls->fill(m, out, value);                                                                \
+        kernel(out->v, (float)value, m->nvalues);                                                              \
+        out->kind = GCOLOR_VECTOR;                                                                             \
+        return G_OK;                                                                                           \
+    } while (0)
+
+static int gcolor_fill_v4(GColor *out, double value) { FILL_BODY(gspectral_kfill); }
 
 int gcolor_exp(GColor *out, const GColor *a, double s)
 {
@@ -256,17 +259,7 @@ static GSPECTRAL_TARGET_AVX2 int gcolor_axpy_v8(GColor *out, double s, const GCo
     AXPY_BODY(gspectral_kaxpyd8);
 }
 
-static GSPECTRAL_TARGET_AVX2 int gcolor_fill_v8(GColor *out, double value)
-{
-    if (!isfinite(value))
-        return G_ERR_INVALID;
-    const GColorModel *m = out->model;
-    if (m->cls->fill)
-        return m->cls->fill(m, out, value);
-    gspectral_kfill8(out->v, (float)value, m->nvalues);
-    out->kind = GCOLOR_VECTOR;
-    return G_OK;
-}
+static GSPECTRAL_TARGET_AVX2 int gcolor_fill_v8(GColor *out, double value) { FILL_BODY(gspectral_kfill8); }
 
 static GSPECTRAL_TARGET_AVX2 int gcolor_is_finite_v8(const GColor *c)
 {

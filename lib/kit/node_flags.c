@@ -3,15 +3,18 @@
  * everywhere when each of them is, so the dispatch answers it without a call. */
 #include "generic/node_kit.h"
 
-int gtexnode_children_dark(GMaterial *const *children, int n)
+/* 1 when each of the n children has the GMAT_* bit `flag`. */
+static int children_all(GMaterial *const *children, int n, unsigned flag)
 {
     if (!children || n <= 0)
         return 0;
     for (int i = 0; i < n; i++)
-        if (!children[i] || gmaterial_emits(children[i]))
+        if (!children[i] || !(children[i]->flags & flag))
             return 0;
     return 1;
 }
+
+int gtexnode_children_dark(GMaterial *const *children, int n) { return children_all(children, n, GMAT_NO_EMISSION); }
 
 void gtexnode_inherit_no_emission(GMaterial *node, GMaterial *const *children, int n)
 {
@@ -19,15 +22,7 @@ void gtexnode_inherit_no_emission(GMaterial *node, GMaterial *const *children, i
         node->flags |= GMAT_NO_EMISSION;
 }
 
-int gtexnode_children_opaque(GMaterial *const *children, int n)
-{
-    if (!children || n <= 0)
-        return 0;
-    for (int i = 0; i < n; i++)
-        if (!gmaterial_opaque_everywhere(children[i]))
-            return 0;
-    return 1;
-}
+int gtexnode_children_opaque(GMaterial *const *children, int n) { return children_all(children, n, GMAT_OPAQUE); }
 
 void gtexnode_inherit_opaque(GMaterial *node, GMaterial *const *children, int n)
 {

@@ -5,9 +5,9 @@
 # integrators; bad regions exit 2.
 BUILD=${1:-build}
 GT="$BUILD/bin/gtrace"
-[ -x "$GT" ] || { echo "FAIL: $GT is not built"; exit 1; }
-command -v oiiotool > /dev/null || { echo "FAIL: oiiotool (openimageio-tools, scripts/deps.sh) is missing"; exit 1; }
 . "$(dirname "$0")/prelude.sh"
+need_program "$GT"
+need_command oiiotool openimageio-tools
 SCENE=examples/scenes/demo.scene
 "$GT" "$SCENE" -q -o "$TMP/full.exr" --width 120 --spp 2 --threads 2 || fail "the full render failed"
 # full size of the image (the camera's aspect gives the height)

@@ -8,9 +8,9 @@
 set -u
 BUILD=${1:-build}
 GT="$BUILD/bin/gtrace"
-[ -x "$GT" ] || { echo "FAIL: $GT is not built"; exit 1; }
-command -v oiiotool > /dev/null || { echo "FAIL: oiiotool (openimageio-tools, scripts/deps.sh) is missing"; exit 1; }
 . "$(dirname "$0")/prelude.sh"
+need_program "$GT"
+need_command oiiotool openimageio-tools
 SCENE=examples/scenes/demo.scene
 ARGS="--width 96 --spp 2 --threads 1 -q"
 W=96

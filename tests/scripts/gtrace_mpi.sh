@@ -9,14 +9,14 @@
 set -u
 BUILD=${1:-build}
 GT="$BUILD/bin/gtrace"
-[ -x "$GT" ] || { echo "FAIL: $GT is not built"; exit 1; }
+. "$(dirname "$0")/prelude.sh"
+need_program "$GT"
 if ! "$GT" --version | grep -q "MPI module"; then
     echo "gtrace_mpi: gtrace was built without MPI ($("$GT" --version | tail -1)): nothing to test"
     exit 0
 fi
-command -v mpirun > /dev/null || { echo "FAIL: mpirun (openmpi-bin, scripts/deps.sh) is missing"; exit 1; }
-command -v oiiotool > /dev/null || { echo "FAIL: oiiotool (openimageio-tools, scripts/deps.sh) is missing"; exit 1; }
-. "$(dirname "$0")/prelude.sh"
+need_command mpirun openmpi-bin
+need_command oiiotool openimageio-tools
 # Open MPI in a container, possibly as root, on 2 cores: more ranks than cores, no single-copy transfers (they
 # need ptrace rights a container may not grant). Under the sanitizers, Open MPI's own leaks are suppressed
 # (tests/lsan_openmpi.supp): that needs whole stacks (Open MPI has no frame pointers, so the fast unwinder stops

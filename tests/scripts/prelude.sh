@@ -7,3 +7,7 @@ fail() {
     echo "FAIL: $*"
     fails=$((fails + 1))
 }
+# need_program PATH / need_command NAME PACKAGE: end the test (exit 1) unless the program is built, or the command
+# is on PATH (PACKAGE: where scripts/deps.sh gets it).
+need_program() { [ -x "$1" ] || { echo "FAIL: $1 is not built"; exit 1; }; }
+need_command() { command -v "$1" > /dev/null || { echo "FAIL: $1 ($2, scripts/deps.sh) is missing"; exit 1; }; }
