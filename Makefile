@@ -36,7 +36,9 @@ CXX     ?= c++
 WARN    := -Wall -Wextra -Werror
 CPPFLAGS += -Iinclude -Ilib -I. -D_GNU_SOURCE -DGENERIC_BUILD -MMD -MP
 # the tools' --version (examples/common/cli.h)
-$(BUILD)/obj/examples/%.o: CPPFLAGS += -DGENERIC_VERSION='"$(VERSION)"'
+# An object's own defines, in both object trees (BUILD/obj, and BUILD/obj-lto for gtrace's optimised link).
+objs_of = $(BUILD)/obj/$(1) $(BUILD)/obj-lto/$(1)
+$(call objs_of,examples/%.o): CPPFLAGS += -DGENERIC_VERSION='"$(VERSION)"'
 # -fvisibility=hidden: only declarations marked GENERIC_API (include/generic/export.h) are exported; the version
 # scripts say the same to the linker (lib/libgeneric.map; lib/oiio_module.map keeps the OpenImageIO module's
 # inline instantiations of OpenImageIO templates out of its dynamic symbol table).
@@ -70,14 +72,14 @@ LIBSO   := $(BUILD)/lib/libgeneric.so.$(SOVER)
 OIIO_OBJ := $(LIB_CXX:%.cpp=$(BUILD)/obj/%.o)
 OIIO_SO  := $(BUILD)/lib/generic/libgeneric_oiio.so
 # Where `make install` puts the module: the loader's last resort when it is not beside the library.
-$(BUILD)/obj/lib/oiio_loader.o: CPPFLAGS += -DGENERIC_LIBDIR='"$(PREFIX)/lib"'
+$(call objs_of,lib/oiio_loader.o): CPPFLAGS += -DGENERIC_LIBDIR='"$(PREFIX)/lib"'
 # Where `make install` puts the shipped OpenColorIO config (share/ocio/config.ocio); the build tree has it in
 # $(BUILD)/share/generic/ocio/, found beside the programs the same way (lib/image_display.c).
-$(BUILD)/obj/lib/image_display.o: CPPFLAGS += -DGENERIC_DATADIR='"$(PREFIX)/share"'
+$(call objs_of,lib/image_display.o): CPPFLAGS += -DGENERIC_DATADIR='"$(PREFIX)/share"'
 OCIO_CONFIG := $(BUILD)/share/generic/ocio/config.ocio
 # Where `make install` puts the example plug-ins: the last directory searched for a bare module name (lib/plugin.c).
 PLUGIN_DIR := $(PREFIX)/lib/generic/plugins
-$(BUILD)/obj/lib/plugin.o: CPPFLAGS += -DGENERIC_PLUGIN_DIR='"$(PLUGIN_DIR)"'
+$(call objs_of,lib/plugin.o): CPPFLAGS += -DGENERIC_PLUGIN_DIR='"$(PLUGIN_DIR)"'
 
 TOOLS   := $(notdir $(patsubst %/,%,$(dir $(wildcard examples/*/main.c))))
 TOOL_BIN := $(TOOLS:%=$(BUILD)/bin/%)
@@ -159,7 +161,6 @@ $(BUILD)/bin/gtrace: $(LTO_OBJ) | $(OIIO_SO) $(OCIO_CONFIG)
 	@mkdir -p $(dir $@)
 	$(CC) -rdynamic $(LTO) $(OPT) -g -Wno-error=maybe-uninitialized -o $@ $^ $(LDFLAGS) $(EXTRA_LIBS_gtrace) $(DEPLIBS)
 
-$(BUILD)/obj-lto/examples/%.o: CPPFLAGS += -DGENERIC_VERSION='"$(VERSION)"'
 $(BUILD)/obj-lto/%.o: %.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(LTO) -c $< -o $@
@@ -264,12 +265,12 @@ bench: bench-pov bench-dispersion bench-path bench-mpi
 # files are found (pkg-config ompi-c; Debian's libopenmpi-dev). gtrace opens it with dlopen only when it runs under
 # mpirun (mpi_load.c), so --help and a render on one machine never map libmpi; without it gtrace still builds and
 # --version says so. Found beside gtrace (../lib/generic/) or in the installed PREFIX/lib/generic/.
-$(BUILD)/obj/examples/gtrace/mpi_load.o: CPPFLAGS += -DGTRACE_MPI_LIBDIR='"$(PREFIX)/lib"'
+$(call objs_of,examples/gtrace/mpi_load.o): CPPFLAGS += -DGTRACE_MPI_LIBDIR='"$(PREFIX)/lib"'
 MPI_CFLAGS := $(shell pkg-config --cflags ompi-c 2>/dev/null)
 MPI_LIBS   := $(shell pkg-config --libs ompi-c 2>/dev/null)
 ifneq ($(MPI_LIBS),)
 GTRACE_MPI_SO := $(BUILD)/lib/generic/gtrace_mpi.so
-$(BUILD)/obj/examples/gtrace/mpi_load.o: CPPFLAGS += -DGTRACE_MPI_BUILT='"gtrace_mpi.so (Open MPI $(shell pkg-config --modversion ompi-c))"'
+$(call objs_of,examples/gtrace/mpi_load.o): CPPFLAGS += -DGTRACE_MPI_BUILT='"gtrace_mpi.so (Open MPI $(shell pkg-config --modversion ompi-c))"'
 $(BUILD)/bin/gtrace: | $(GTRACE_MPI_SO)
 all: $(GTRACE_MPI_SO)
 $(GTRACE_MPI_SO): examples/gtrace/mpi/transport.c examples/gtrace/mpi_module.h

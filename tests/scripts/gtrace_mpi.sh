@@ -12,6 +12,8 @@ GT="$BUILD/bin/gtrace"
 . "$(dirname "$0")/prelude.sh"
 need_program "$GT"
 if ! "$GT" --version | grep -q "MPI module"; then
+    # Open MPI's development files are here, so the build must have used them (every object tree of gtrace)
+    pkg-config --exists ompi-c 2> /dev/null && { echo "FAIL: Open MPI is installed but $GT says: $("$GT" --version | tail -1)"; exit 1; }
     echo "gtrace_mpi: gtrace was built without MPI ($("$GT" --version | tail -1)): nothing to test"
     exit 0
 fi
