@@ -30,7 +30,7 @@ typedef struct Context {
     double best_t;
     unsigned best_geom, best_inst;
     int stopped;  /* occlusion: a surface that blocks all light ended the query */
-    int passable; /* occlusion: a surface on the way may let light through (the walk of lights.c decides) */
+    int passable; /* occlusion: a surface that may let light through ended it (the walk of lights.c decides) */
 } Context;
 
 /* 1 when a surface of material m may let light through somewhere (a shadow ray must then walk its hits). */
@@ -125,11 +125,12 @@ static void user_occluded(const struct RTCOccludedFunctionNArguments *args)
     int surface;
     if (!shape_intersect(o, ro, rd, cx->ray->tmin, cx->ray->tmax, &t, &surface))
         return;
-    if (may_pass_light(in && in->material ? in->material : o->material)) {
-        cx->passable = 1; /* the query goes on: an opaque surface farther on still settles it */
-        return;
-    }
-    cx->stopped = 1;
+    /* either ends the query: past a surface that may let light through, the walk of lights.c decides (going on
+     * to look for an opaque one behind it would cost every glass surface on the way twice) */
+    if (may_pass_light(in && in->material ? in->material : o->material))
+        cx->passable = 1;
+    else
+        cx->stopped = 1;
     ray->tfar = -INFINITY;
 }
 
@@ -566,7 +567,11 @@ int accel_occluded(const Scene *s, const Ray *r)
     struct RTCRay ray;
     make_ray(r, &ray);
     rtcOccluded1(s->rtc, &cx.rtc, &ray);
-    if (ray.tfar < 0.0f) /* ended by an analytic shape that blocks all light, or by one of Embree's own shapes */
-        return cx.stopped || !s->native_may_pass ? OCCLUDED_OPAQUE : OCCLUDED_PASSABLE;
-    return cx.passable ? OCCLUDED_PASSABLE : OCCLUDED_CLEAR;
+    if (!(ray.tfar < 0.0f))
+        return OCCLUDED_CLEAR;
+    if (cx.stopped) /* an analytic shape that blocks all light */
+        return OCCLUDED_OPAQUE;
+    if (cx.passable) /* an analytic shape that may let light through */
+        return OCCLUDED_PASSABLE;
+    return s->native_may_pass ? OCCLUDED_PASSABLE : OCCLUDED_OPAQUE; /* one of Embree's own shapes */
 }

@@ -21,7 +21,7 @@ int accel_intersect(const Scene *s, const Ray *r, Hit *h);
 typedef enum Occlusion {
     OCCLUDED_CLEAR = 0,    /**< nothing */
     OCCLUDED_OPAQUE = 1,   /**< a surface whose material is opaque everywhere (gmaterial_opaque_everywhere) */
-    OCCLUDED_PASSABLE = 2, /**< surfaces that may let light through, none known to block it all */
+    OCCLUDED_PASSABLE = 2, /**< a surface that may let light through (others may lie behind it) */
 } Occlusion;
 /** What lies on r between tmin and tmax: nonzero when anything does. */
 int accel_occluded(const Scene *s, const Ray *r);
