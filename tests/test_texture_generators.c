@@ -71,6 +71,33 @@ static void test_checker_parity(void **state)
     ggenerator_unref(c3);
 }
 
+/* The noise's values are part of every scene that uses it: a faster evaluation must give the same doubles, so
+ * that a scene renders the same picture after it. These were computed before the corner loop was unrolled. */
+static void test_noise_values_pinned(void **state)
+{
+    (void)state;
+    static const struct {
+        unsigned seed;
+        double x, y, z, value, gx, gy, gz;
+    } pinned[] = {
+        {0u, 0x1p-2, 0x1p-1, 0x1.8p-1, -0x1.291f2p-2, -0x1.1401p-3, 0x1.0e9dc4p-1, 0x1.209d8p+0},
+        {7u, -0x1.a666666666666p+1, 0x1.8051eb851eb85p+3, 0x1.6p+2, 0x1.f31d4add43a5p-6, -0x1.50532541254f3p+0,
+         -0x1.1c2e18fe41fb6p-13, -0x1.536144bed5aa2p-1},
+        {123456789u, 0x1.e848033333333p+19, -0x1.86a059999999ap+17, 0x1.ap+1, 0x1.5632306eb68e9p-2,
+         0x1.ad6865c5d4ab1p-1, 0x1.1ec30d153f293p+0, -0x1.450de611f1e76p+0},
+        {3u, -0x0p+0, -0x1p-1, 0x1.ff7ced916872bp-1, -0x1.fef9d9cc13ad4p-3, 0x1.57150c8p-27, -0x1.c1eb85c99e2a4p-2,
+         -0x1.0003eb47f22abp-1},
+        {4000000000u, 0x1p-1, 0x1p-1, -0x1.56e1fc2f8f359p-997, -0x1.8p-2, 0x1.dp-1, 0x1.cp-3, -0x1.8p-1},
+    };
+    for (size_t i = 0; i < sizeof pinned / sizeof pinned[0]; i++) {
+        GVec3 g, p = gvec3(pinned[i].x, pinned[i].y, pinned[i].z);
+        double v = gnoise_signed(pinned[i].seed, p, &g);
+        assert_true(v == pinned[i].value);
+        assert_true(g.x == pinned[i].gx && g.y == pinned[i].gy && g.z == pinned[i].gz);
+        assert_true(gnoise_signed(pinned[i].seed, p, NULL) == v); /* with and without the gradient */
+    }
+}
+
 static void test_perlin_noise(void **state)
 {
     (void)state;
@@ -358,6 +385,7 @@ int main(void)
         return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_checker_parity),
+        cmocka_unit_test(test_noise_values_pinned),
         cmocka_unit_test(test_perlin_noise),
         cmocka_unit_test(test_fractals),
         cmocka_unit_test(test_wood_and_marble),

@@ -16,8 +16,9 @@ static uint32_t mix(uint32_t h)
     return h;
 }
 
-/* The twelve edge directions of the cube, padded to sixteen as in Perlin's paper. */
-static const signed char grads[16][3] = {
+/* The twelve edge directions of the cube, padded to sixteen as in Perlin's paper (as doubles: the corner
+ * products need no conversion). */
+static const double grads[16][3] = {
     {1, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0}, {1, 0, 1},  {-1, 0, 1}, {1, 0, -1}, {-1, 0, -1},
     {0, 1, 1}, {0, -1, 1}, {0, 1, -1}, {0, -1, -1}, {1, 1, 0},  {-1, 1, 0}, {0, -1, 1}, {0, -1, -1},
 };
@@ -38,6 +39,17 @@ static uint32_t lattice(double fx)
     return (uint32_t)(int64_t)m;
 }
 
+/* The hash's multipliers of the x, y and z lattice coordinates. */
+#define HASH_X 0x27d4eb2du
+#define HASH_Y 0x165667b1u
+#define HASH_Z 0xd3a2646cu
+
+/* The gradient of a corner whose (x, y) stage of the hash is hxy and whose z term is kz. */
+static const double *corner_grad(uint32_t hxy, uint32_t kz) { return grads[mix(hxy ^ kz) & 15]; }
+
+/* The corner plane g . (x, y, z), in the order x, y, z of the sum. */
+static double plane(const double *g, double x, double y, double z) { return g[0] * x + g[1] * y + g[2] * z; }
+
 double gnoise_signed(unsigned seed, GVec3 p, GVec3 *grad)
 {
     if (!isfinite(p.x) || !isfinite(p.y) || !isfinite(p.z)) { /* overflowed point: no lattice, no variation */
@@ -47,36 +59,28 @@ double gnoise_signed(unsigned seed, GVec3 p, GVec3 *grad)
     }
     double fx = floor(p.x), fy = floor(p.y), fz = floor(p.z);
     uint32_t ix = lattice(fx), iy = lattice(fy), iz = lattice(fz);
-    double x = p.x - fx, y = p.y - fy, z = p.z - fz;
+    double x = p.x - fx, y = p.y - fy, z = p.z - fz, x1 = x - 1.0, y1 = y - 1.0, z1 = z - 1.0;
     uint32_t hs = mix(seed * 0x9e3779b9u + 0x7f4a7c15u);
     /* the corner hash mixes x, then y, then z: the x and (x, y) stages are shared by the corners that share
-     * them (14 mixes instead of 24) */
-    uint32_t hx[2], hxy[4];
-    for (int dx = 0; dx < 2; dx++)
-        hx[dx] = mix(hs ^ (ix + (uint32_t)dx) * 0x27d4eb2du);
-    for (int c = 0; c < 4; c++)
-        hxy[c] = mix(hx[c & 1] ^ (iy + (uint32_t)(c >> 1)) * 0x165667b1u);
-    double n[8], g[8][3];
-    for (int c = 0; c < 8; c++) {
-        int dx = c & 1, dy = (c >> 1) & 1, dz = (c >> 2) & 1;
-        uint32_t h = mix(hxy[c & 3] ^ (iz + (uint32_t)dz) * 0xd3a2646cu);
-        const signed char *v = grads[h & 15];
-        g[c][0] = v[0];
-        g[c][1] = v[1];
-        g[c][2] = v[2];
-        n[c] = v[0] * (x - dx) + v[1] * (y - dy) + v[2] * (z - dz);
-    }
+     * them (14 mixes instead of 24); corner c is (c & 1, (c >> 1) & 1, c >> 2) */
+    uint32_t hx0 = mix(hs ^ ix * HASH_X), hx1 = mix(hs ^ (ix + 1u) * HASH_X);
+    uint32_t ky0 = iy * HASH_Y, ky1 = (iy + 1u) * HASH_Y, kz0 = iz * HASH_Z, kz1 = (iz + 1u) * HASH_Z;
+    uint32_t h00 = mix(hx0 ^ ky0), h10 = mix(hx1 ^ ky0), h01 = mix(hx0 ^ ky1), h11 = mix(hx1 ^ ky1);
+    const double *g[8] = {corner_grad(h00, kz0), corner_grad(h10, kz0), corner_grad(h01, kz0), corner_grad(h11, kz0),
+                          corner_grad(h00, kz1), corner_grad(h10, kz1), corner_grad(h01, kz1), corner_grad(h11, kz1)};
+    double n[8] = {plane(g[0], x, y, z),  plane(g[1], x1, y, z),  plane(g[2], x, y1, z),  plane(g[3], x1, y1, z),
+                   plane(g[4], x, y, z1), plane(g[5], x1, y, z1), plane(g[6], x, y1, z1), plane(g[7], x1, y1, z1)};
     double u = fade(x), v = fade(y), w = fade(z);
     double x00 = lerp(u, n[0], n[1]), x10 = lerp(u, n[2], n[3]);
     double x01 = lerp(u, n[4], n[5]), x11 = lerp(u, n[6], n[7]);
-    double y0 = lerp(v, x00, x10), y1 = lerp(v, x01, x11);
-    double value = lerp(w, y0, y1);
+    double y0 = lerp(v, x00, x10), y1v = lerp(v, x01, x11);
+    double value = lerp(w, y0, y1v);
     if (grad) {
         double du = dfade(x), dv = dfade(y), dw = dfade(z);
         /* derivative of the blend weights ... */
         double ddx = du * lerp(w, lerp(v, n[1] - n[0], n[3] - n[2]), lerp(v, n[5] - n[4], n[7] - n[6]));
         double ddy = dv * lerp(w, x10 - x00, x11 - x01);
-        double ddz = dw * (y1 - y0);
+        double ddz = dw * (y1v - y0);
         /* ... plus the blended gradients of the corner planes */
         double gs[3];
         for (int k = 0; k < 3; k++) {
