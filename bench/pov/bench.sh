@@ -111,6 +111,9 @@ while [ $r -lt "$RUNS" ]; do
         fi
     done
     once gt_load "$GT" "$GEN/load.scene" -o "$TMP/gt_load.png" --threads 2
+    # thread scaling on a render long enough (1600x1200, about 1 s) that start-up and output do not count
+    once gt_big_1 "$GT" "$DIR/scene.scene" -o "$TMP/gt_big_1.png" --threads 1 --width 1600 --height 1200
+    once gt_big_2 "$GT" "$DIR/scene.scene" -o "$TMP/gt_big_2.png" --threads 2 --width 1600 --height 1200
     once gt_start "$GT" --help
     # this round's ratios
     last() { tail -n 1 "$TMP/$1.runs" | cut -d' ' -f"$2"; }
@@ -120,6 +123,7 @@ while [ $r -lt "$RUNS" ]; do
         note "cpu_$m" "$(ratio "$(last "gt_$m" 2)" "$(last gt_rgb 2)")"
     done
     note threads "$(ratio "$(gt_render gt_rgb_1 last)" "$(gt_render gt_rgb last)")"
+    note threads_big "$(ratio "$(gt_render gt_big_1 last)" "$(gt_render gt_big_2 last)")"
     if [ $HAVE_POV -eq 1 ]; then
         note cpu_pov "$(ratio "$(last gt_rgb 2)" "$(last pov 2)")"
         note cpu_pov_1 "$(ratio "$(last gt_rgb_1 2)" "$(last pov_1 2)")"
@@ -141,7 +145,7 @@ done
 # ---- 3. report ----
 echo "== gtrace vs POV-Ray: $(nproc) processors, $idle; $RUNS interleaved rounds (bench/README.md)"
 printf "%-20s %8s %8s %9s %8s\n" "least-CPU run" "wall s" "cpu s" "render s" "peak MB"
-for n in gt_rgb gt_spectrum9 gt_spectrum gt_bispectral gt_rgb_1 gt_spheres gt_mesh gt_load gt_start; do
+for n in gt_rgb gt_spectrum9 gt_spectrum gt_bispectral gt_rgb_1 gt_big_1 gt_big_2 gt_spheres gt_mesh gt_load gt_start; do
     printf "%-20s %8s %8s %9s %8.1f\n" "$n" "$(field $n 1)" "$(field $n 2)" "$(gt_render $n out)" "$(awk -v k="$(field $n 3)" 'BEGIN { print k / 1024 }')"
 done
 if [ $HAVE_POV -eq 1 ]; then
@@ -171,6 +175,6 @@ fi
 echo "colour models / rgb, medians: render time spectrum9 $(median render_spectrum9), spectrum $(median render_spectrum), \
 bispectral $(median render_bispectral); process CPU spectrum9 $(median cpu_spectrum9), spectrum $(median cpu_spectrum), \
 bispectral $(median cpu_bispectral) (targets 1.1, 1.15, 1.3)"
-echo "speed-up from 1 to 2 threads (render time, median): $(median threads) (target >= 1.9 on an idle machine)"
+echo "speed-up from 1 to 2 threads (render time, median): $(median threads) at 800x600, $(median threads_big) at 1600x1200 (target >= 1.9 on an idle machine)"
 echo "load check (200,000 named spheres, 1,000 materials; parse and build, 1x1 render; least-CPU run): $(field gt_load 2) s CPU, $(field gt_load 1) s wall, $(awk -v k="$(field gt_load 3)" 'BEGIN { printf "%.0f", k / 1024 }') MB (target <= 2 s)"
 echo "start-up (gtrace --help, least CPU): $(field gt_start 2) s CPU, $(awk -v k="$(field gt_start 3)" 'BEGIN { printf "%.1f", k / 1024 }') MB (make bench runs bench_startup for the details)"
