@@ -1,4 +1,4 @@
-/* test_core.c - error records, the allocator hook, the scratch arena and the type registry. */
+/* test_core.c - error records, the allocator hook, the scratch arena, the type registry and vec.h's inline fmax/fmin. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -7,6 +7,10 @@
 
 #include <generic/color.h>
 #include <generic/registry.h>
+#include <generic/vec.h>
+
+#include <float.h>
+#include <math.h>
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -68,6 +72,27 @@ static void test_scratch_reuses_blocks(void **state)
     gmem_set_allocator(NULL);
     assert_true(grown <= 20); /* blocks grow in the first round only */
     gscratch_destroy(s);
+}
+
+/* gfmax and gfmin are fmax and fmin inline: the same double for every pair of special and ordinary values,
+ * signed zeros included (NaN results compared as NaN). */
+static void test_inline_fmax_fmin(void **state)
+{
+    (void)state;
+    volatile double vals[] = {0.0, -0.0, 1.0, -1.0, 2.5, NAN, -NAN, INFINITY, -INFINITY, 1e-310, -1e-310, DBL_MAX};
+    int n = (int)(sizeof vals / sizeof vals[0]);
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < n; j++) {
+            double a = vals[i], b = vals[j], want[2] = {fmax(a, b), fmin(a, b)}, got[2] = {gfmax(a, b), gfmin(a, b)};
+            for (int k = 0; k < 2; k++) {
+                if (isnan(want[k]))
+                    assert_true(isnan(got[k]));
+                else
+                    assert_memory_equal(&want[k], &got[k], sizeof(double));
+            }
+        }
+    assert_true(gfmax(-0.0, 0.0) == 0.0 && !signbit(gfmax(-0.0, 0.0)));
+    assert_true(gfmin(1.0, NAN) == 1.0 && gfmin(NAN, 1.0) == 1.0);
 }
 
 static void test_registry(void **state)
@@ -159,6 +184,7 @@ int main(void)
         cmocka_unit_test(test_error_record),
         cmocka_unit_test(test_scratch_mark_release),
         cmocka_unit_test(test_scratch_reuses_blocks),
+        cmocka_unit_test(test_inline_fmax_fmin),
         cmocka_unit_test(test_registry),
         cmocka_unit_test(test_unknown_model_lists_known),
         cmocka_unit_test(test_model_version_refused),

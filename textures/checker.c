@@ -19,7 +19,7 @@ typedef struct Checker {
 static double wave_integral(double x)
 {
     double h = floor(0.5 * x);
-    return h + fmax(0.0, x - 2.0 * h - 1.0);
+    return h + gfmax(0.0, x - 2.0 * h - 1.0);
 }
 
 /* The square wave averaged over [x - w/2, x + w/2] (w in cells); the wave itself when w is negligible. */

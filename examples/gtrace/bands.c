@@ -3,6 +3,7 @@
 #include "bands.h"
 
 #include <generic/memory.h>
+#include <generic/vec.h>
 
 #include <math.h>
 
@@ -76,6 +77,6 @@ int bands_disperse(const Bands *b, const GColor *ri)
     for (int k = 0; k < 3; k++)
         if (!isfinite(v[k] = gcolor_band_value(ri, probe[k])))
             return 0;
-    double lo = fmin(v[0], fmin(v[1], v[2])), hi = fmax(v[0], fmax(v[1], v[2]));
+    double lo = gfmin(v[0], gfmin(v[1], v[2])), hi = gfmax(v[0], gfmax(v[1], v[2]));
     return hi - lo > BANDS_INDEX_TOLERANCE;
 }

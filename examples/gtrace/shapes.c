@@ -19,8 +19,8 @@ static int solve_quadratic(double a, double b, double c, double *t0, double *t1)
         return 0;
     double q = -(b + copysign(sqrt(disc), b));
     double r0 = q / a, r1 = q != 0.0 ? c / q : r0;
-    *t0 = fmin(r0, r1);
-    *t1 = fmax(r0, r1);
+    *t0 = gfmin(r0, r1);
+    *t1 = gfmax(r0, r1);
     return 1;
 }
 
@@ -293,7 +293,7 @@ static void local_geom(const Object *o, int surface, GVec3 *p, GVec3 *n, GVec3 *
         GVec3 l = gvec3_normalize(gvec3_sub(*p, o->center));
         *p = gvec3_madd(o->center, l, o->radius);
         *n = l;
-        double cy = fmax(-1.0, fmin(1.0, l.y)), theta = acos(cy), st = sin(theta);
+        double cy = gfmax(-1.0, gfmin(1.0, l.y)), theta = acos(cy), st = sin(theta);
         double phi = atan2(-l.z, l.x);
         *u = wrap01(phi / (2.0 * M_PI));
         *v = 1.0 - theta / M_PI;

@@ -9,6 +9,13 @@ typedef struct GVec3 {
     double x, y, z;
 } GVec3;
 
+/** The larger of a and b as C's fmax gives it (the other operand when one is NaN; b when they compare equal),
+ * inline: without -ffinite-math-only compilers call libm's fmax, which costs a call on hot paths. */
+static inline double gfmax(double a, double b) { return a > b || b != b ? a : b; }
+/** The smaller of a and b as C's fmin gives it (the other operand when one is NaN; b when they compare equal),
+ * inline. */
+static inline double gfmin(double a, double b) { return a < b || b != b ? a : b; }
+
 /** Makes a vector. */
 static inline GVec3 gvec3(double x, double y, double z) { GVec3 r = {x, y, z}; return r; }
 /** a + b */
