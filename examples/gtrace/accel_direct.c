@@ -8,7 +8,9 @@
  * therefore the one the Embree path finds, with the same double t, but for two kinds of near ties: Embree
  * narrows its ray to the single-precision t of a hit, so a second shape hit within float rounding (about 6e-8
  * relative) behind the first may be missed by Embree and found here; and of two shapes hit at exactly the same
- * t the first in the scene's order wins here, the first Embree visits there.
+ * t the first in the scene's order wins here, the first Embree visits there. Likewise a hit within float rounding
+ * of the ray's tmax: Embree's tfar is tmax in single precision, the direct list keeps tmax in double.
+ * Planes are box-tested like the others (their bounds end at SHAPE_PLANE_EXTENT, as Embree's do).
  *
  * Occlusion: the first opaque-everywhere shape on the segment ends the query (OCCLUDED_OPAQUE); otherwise a
  * shape that may let light through makes it OCCLUDED_PASSABLE (the shadow walk of lights.c decides). Embree
