@@ -4,6 +4,7 @@
 #define TEST_GTRACE_COMMON_H
 
 #include "examples/gtrace/accel.c"
+#include "examples/gtrace/accel_direct.c"
 #include "examples/gtrace/bands.c"
 #include "examples/gtrace/camera.c"
 #include "examples/gtrace/framebuffer.c"

@@ -11,8 +11,12 @@
  * top-level scene. Embree 3 as Debian builds it has one instance level (RTC_MAX_INSTANCE_LEVEL_COUNT 1), so
  * nested groups and instances are flattened: their transforms are composed and each path to a prototype is
  * one instance (the prototypes' BVHs are still shared). The shapes' callbacks take the double-precision ray
- * through the placement's own transform, not Embree's float one. */
+ * through the placement's own transform, not Embree's float one.
+ *
+ * A scene of a few analytic shapes is traced without Embree, through the direct list of accel_direct.c (Embree's
+ * scene is built all the same: cheap for so few shapes, and it keeps s->rtc as the sign of a built scene). */
 #include "accel.h"
+#include "accel_direct.h"
 
 #include <embree3/rtcore.h>
 #include <math.h>
@@ -452,11 +456,16 @@ int accel_build_for(Scene *s, double samples, GError *err)
         accel_release(s);
         return gerror_set(err, G_ERR_NOMEM, "out of memory");
     }
+    if ((rc = accel_direct_build(s, err)) < 0) {
+        accel_release(s);
+        return rc;
+    }
     return G_OK;
 }
 
 void accel_release(Scene *s)
 {
+    accel_direct_release(s);
     for (int i = 0; i < s->nprotos; i++) {
         rtcReleaseScene(s->protos[i].rtc);
         gmem_free(s->protos[i].by_geom);
@@ -509,6 +518,8 @@ int accel_intersect(const Scene *s, const Ray *r, Hit *h)
 {
     if (!traceable(r))
         return 0;
+    if (s->direct)
+        return accel_direct_intersect(s, r, h);
     Context cx;
     rtcInitIntersectContext(&cx.rtc);
     cx.scene = s;
@@ -557,6 +568,8 @@ int accel_occluded(const Scene *s, const Ray *r)
 {
     if (!traceable(r))
         return 0;
+    if (s->direct)
+        return accel_direct_occluded(s, r);
     Context cx;
     rtcInitIntersectContext(&cx.rtc);
     cx.scene = s;

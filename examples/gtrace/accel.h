@@ -8,7 +8,8 @@
 
 #include <generic/error.h>
 
-/** Builds the Embree scene from the objects (after all are added), for the camera's own width x height x spp. */
+/** Builds the Embree scene from the objects (after all are added), for the camera's own width x height x spp;
+ * a scene of a few analytic shapes also gets the direct list that then traces it (unless accel_embree_only). */
 int accel_build(Scene *s, GError *err);
 /** The same for an image of `samples` camera samples in all (the command line's size and spp): the top-level
  * BVH's build quality depends on the samples per primitive. */
@@ -25,5 +26,7 @@ typedef enum Occlusion {
 } Occlusion;
 /** What lies on r between tmin and tmax: nonzero when anything does. */
 int accel_occluded(const Scene *s, const Ray *r);
+/** 1 when the built scene is traced through the direct list (accel_direct.c) rather than Embree. */
+int accel_uses_direct(const Scene *s);
 
 #endif

@@ -43,6 +43,10 @@ typedef struct Scene {
     int nprotos, cap_protos;
     unsigned ninstances;    /**< Embree instances in the top-level scene */
     int native_may_pass;    /**< a mesh, quad or triangle (or an override reaching one) may let light through */
+    struct AccelDirect *direct; /**< a small scene of analytic shapes tested one by one (accel_direct.c; NULL:
+                                 * Embree traces every ray) */
+    int ndirect;            /**< entries of direct */
+    int accel_embree_only;  /**< set before accel_build: trace through Embree even when the direct list would do */
     const struct ProbeEnv *env; /**< light probe seen by rays that leave the scene (NULL: background) */
 } Scene;
 
