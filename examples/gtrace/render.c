@@ -159,6 +159,7 @@ void renderer_destroy(Renderer *r)
         return;
     for (int i = 0; r->workers && i < r->nthreads; i++) {
         gcolor_free(&r->workers[i].ctx.unit);
+        trace_ctx_free_temps(&r->workers[i].ctx);
         gmem_free(r->workers[i].perm);
         gscratch_destroy(r->workers[i].ctx.scratch);
     }
@@ -225,7 +226,7 @@ int renderer_create(Renderer **out, const Scene *s, const RenderSettings *rs, Fr
         w->ctx.scratch = gscratch_create(0);
         w->perm = gmem_alloc((size_t)rs->spp * sizeof(int));
         ok = w->ctx.scratch && w->perm && gcolor_alloc(&w->ctx.unit, s->model) == G_OK &&
-             gmaterial_refraction_index(NULL, NULL, &w->ctx.unit) == G_OK;
+             gmaterial_refraction_index(NULL, NULL, &w->ctx.unit) == G_OK && trace_ctx_temps(&w->ctx) == G_OK;
     }
     if (ok && rs->waves && (rc = set_wavelengths(fb, s->model, err)) != G_OK) {
         framebuffer_free(fb);
