@@ -103,7 +103,7 @@ static int transmit(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *medi
             goto done;
         if ((rc = interface_transmit(&hp, dir, light, &nf, &nt, &ri, &tmp)) <= 0 || (rc = gcolor_copy(light, &tmp)) < 0)
             goto done;
-        if (gcolor_brightness(light) <= 0.0)
+        if (gcolor_is_black(light))
             goto done;
         Media next;
         media_cross(&walk, hp.material, hp.entering, &next);
@@ -137,7 +137,7 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
     if ((rc = gcolor_scale(illum, color, scale)) < 0 ||
         (rc = gmaterial_reflection(sp->material, sp, in, illum, out_dir, refl)) < 0)
         return rc;
-    if (gcolor_brightness(refl) == 0.0)
+    if (gcolor_is_black(refl))
         return G_OK; /* nothing reflected from here: no shadow ray */
     Ray sr = {offset_origin(sp->point, facing, in), in, 0.0, dist * (1.0 - 1e-7), 0.0, 0.0};
     c->rays++;
