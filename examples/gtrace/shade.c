@@ -181,7 +181,7 @@ static int trace_secondary(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 faci
     GScratchMark mark = gscratch_mark(c->scratch);
     GColor tmp, illum;
     int rc = G_OK;
-    CHECK(gcolor_scratch(&tmp, c->scene->model, c->scratch));
+    CHECK(trace_tmp(c, TRACE_TMP_PASS, &tmp)); /* not held across trace_ray, which uses it too */
     CHECK(pass_on(m, sp, dir, &c->unit, ri, to_viewer, &tmp));
     if (mask)
         CHECK(gcolor_mul(&tmp, mask, &tmp));
@@ -268,7 +268,7 @@ static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const 
     GVec3 view = r->d, to_viewer = gvec3_neg(r->d), dir;
     GColor tmp;
     int rc = G_OK, valid;
-    CHECK(gcolor_scratch(&tmp, s->model, c->scratch));
+    CHECK(trace_tmp(c, TRACE_TMP_SHADE, &tmp)); /* not held across the secondary rays, which use it too */
 
     /* emission, ambient light and the direct light of every light source */
     CHECK(gmaterial_emission(m, sp, to_viewer, out));

@@ -18,11 +18,14 @@
 
 /** The colours a TraceCtx owns (TraceCtx.tmp), each for one job that holds it without tracing another ray meanwhile,
  * so that no two users can meet: light shading (lighting.h's LightTmp), the shadow ray's walk through glass
- * (lights.c), and the refraction indices on both sides of a surface (trace_relative_index). */
+ * (lights.c), the refraction indices on both sides of a surface (trace_relative_index), a shading point's
+ * ambient and absorbed light (shade.c), and what a material passes on of a secondary ray's light (shade.c's
+ * trace_secondary, before and after the ray, not across it). */
 enum {
     TRACE_TMP_ILLUM, TRACE_TMP_REFL, TRACE_TMP_LIGHT,               /* LightTmp */
     TRACE_TMP_WALK, TRACE_TMP_WALK_RI, TRACE_TMP_WALK_NF, TRACE_TMP_WALK_NT, /* transmit */
     TRACE_TMP_N_FROM, TRACE_TMP_N_TO,                             /* trace_relative_index */
+    TRACE_TMP_SHADE, TRACE_TMP_PASS,                              /* shade, trace_secondary */
     TRACE_TMP_COUNT
 };
 
