@@ -4,7 +4,6 @@
 #include "generic/spectral_kernels.h"
 
 #include <limits.h>
-#include <stdint.h>
 #include <math.h>
 #include <pthread.h>
 #include <string.h>
@@ -254,65 +253,7 @@ static int gcolor_is_finite_v4(const GColor *c) { return gspectral_kfinite(c->v,
 
 static int gcolor_is_nonnegative_v4(const GColor *c) { return gspectral_kfinite(c->v, (int)value_floats(c), 1); }
 
-/* gcolor_is_black's test of a vector read as plain samples: 1 when the n floats at v are all zero (+0 or -0; a
- * NaN is not), by their bits less the sign, sixteen floats at a time (32 in the AVX2 body), stopping at the first
- * group that holds a non-zero one. */
-static int all_zero(const float *v, int n);
-
-/* The floats from i on, one at a time (the tail of all_zero, and short vectors). */
-static inline int all_zero_from(const float *v, int i, int n)
-{
-    uint32_t acc = 0, b;
-    for (; i < n; i++) {
-        memcpy(&b, v + i, sizeof b);
-        acc |= b;
-    }
-    return (acc << 1) == 0;
-}
-
-static int all_zero_v4(const float *v, int n)
-{
-    int i = 0;
-#ifdef GSPECTRAL_VECTOR
-    typedef unsigned int bits4 __attribute__((vector_size(16)));
-    bits4 x[4];
-    for (; i + 16 <= n; i += 16) {
-        memcpy(x, v + i, sizeof x);
-        bits4 a = (x[0] | x[1] | x[2] | x[3]) << 1;
-        if (a[0] | a[1] | a[2] | a[3])
-            return 0;
-    }
-#endif
-    return all_zero_from(v, i, n);
-}
-
-int gcolor_is_black(const GColor *c)
-{
-    const GColorModel *m = c->model;
-    if (m->cls->fill || c->kind != GCOLOR_VECTOR) /* not read as plain samples: the model's own measure */
-        return m->cls->brightness(m, c) == 0.0;
-    return m->nvalues < 8 ? all_zero_from(c->v, 0, m->nvalues) : all_zero(c->v, m->nvalues);
-}
-
 #ifdef GSPECTRAL_AVX2
-static GSPECTRAL_TARGET_AVX2 int all_zero_v8(const float *v, int n)
-{
-    const __m256i magnitude = _mm256_set1_epi32(0x7fffffff);
-    int i = 0;
-    for (; i + 32 <= n; i += 32) {
-        __m256i a = _mm256_or_si256(_mm256_loadu_si256((const __m256i *)(v + i)),
-                                    _mm256_loadu_si256((const __m256i *)(v + i + 8)));
-        __m256i b = _mm256_or_si256(_mm256_loadu_si256((const __m256i *)(v + i + 16)),
-                                    _mm256_loadu_si256((const __m256i *)(v + i + 24)));
-        if (!_mm256_testz_si256(_mm256_or_si256(a, b), magnitude))
-            return 0;
-    }
-    for (; i + 8 <= n; i += 8)
-        if (!_mm256_testz_si256(_mm256_loadu_si256((const __m256i *)(v + i)), magnitude))
-            return 0;
-    return all_zero_from(v, i, n);
-}
-
 static GSPECTRAL_TARGET_AVX2 int gcolor_axpy_v8(GColor *out, double s, const GColor *a, const GColor *b)
 {
     AXPY_BODY(gspectral_kaxpyd8);
@@ -334,10 +275,7 @@ GSPECTRAL_PICK(gcolor_axpy);
 GSPECTRAL_PICK(gcolor_fill);
 GSPECTRAL_PICK(gcolor_is_finite);
 GSPECTRAL_PICK(gcolor_is_nonnegative);
-GSPECTRAL_PICK(all_zero);
 #else
-static int all_zero(const float *v, int n) { return all_zero_v4(v, n); }
-
 int gcolor_axpy(GColor *out, double s, const GColor *a, const GColor *b) { return gcolor_axpy_v4(out, s, a, b); }
 
 int gcolor_fill(GColor *out, double value) { return gcolor_fill_v4(out, value); }

@@ -207,6 +207,11 @@ GENERIC_API void gcolor_black(GColor *c);
 GENERIC_API GENERIC_NODISCARD int gcolor_add(GColor *out, const GColor *a, const GColor *b);
 /** out = a * b: reflection of b by a. */
 GENERIC_API GENERIC_NODISCARD int gcolor_mul(GColor *out, const GColor *a, const GColor *b);
+/** out = (a * b) * s: the reflection of b by a, scaled (a material's reflectance times light times cos / pi). The
+ * same value as gcolor_mul then gcolor_scale, in one pass over the samples for vectors of a model the library
+ * reads as plain samples (no fill of its own: each product rounded to float, then times (float)s, as the built-in
+ * models' mul and scale do); otherwise exactly that composition. */
+GENERIC_API GENERIC_NODISCARD int gcolor_mul_scaled(GColor *out, const GColor *a, const GColor *b, double s);
 /** out = a * s */
 GENERIC_API GENERIC_NODISCARD int gcolor_scale(GColor *out, const GColor *a, double s);
 /** out = a / b: relative refraction index (zero divisors give zero). */

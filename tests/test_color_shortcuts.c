@@ -1,7 +1,8 @@
-/* test_color_black.c - gcolor_is_black in every registered colour model (taken from the registry): black, each
- * single non-zero sample (in the eight-at-a-time blocks and in the tail), -0.0, NaN and infinities, tiny values,
- * all agreeing with gcolor_brightness(c) == 0.0; the bispectral model's matrices; and a plug-in model whose
- * vectors are not plain samples (its own fill), for which the answer is its brightness, not its floats. */
+/* test_color_shortcuts.c - lib/color_shortcuts.c in every registered colour model (taken from the registry):
+ * gcolor_is_black on black, each single non-zero sample (in the vector blocks and in the tail), -0.0, NaN and
+ * infinities, tiny values, all agreeing with gcolor_brightness(c) == 0.0; gcolor_mul_scaled equal bit for bit to
+ * gcolor_mul then gcolor_scale, also in place; the bispectral model's matrices; and a plug-in model whose vectors
+ * are not plain samples (its own fill), for which both take the model's own operations, not its floats. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -221,7 +222,68 @@ static const GColorModelClass off_class = {
     .fill = off_fill,
 };
 
-static void test_own_fill_asks_brightness(void **state)
+/* gcolor_mul_scaled(out, a, b, s) against gcolor_mul then gcolor_scale, bit for bit (memcmp) */
+static void assert_mul_scaled(const GColorModel *m, GScratch *s, const GColor *a, const GColor *b, double k)
+{
+    GScratchMark mark = gscratch_mark(s);
+    GColor want, got, inplace;
+    assert_int_equal(gcolor_scratch(&want, m, s), G_OK);
+    assert_int_equal(gcolor_scratch(&got, m, s), G_OK);
+    assert_int_equal(gcolor_scratch(&inplace, m, s), G_OK);
+    assert_int_equal(gcolor_mul(&want, a, b), G_OK);
+    assert_int_equal(gcolor_scale(&want, &want, k), G_OK);
+    assert_int_equal(gcolor_mul_scaled(&got, a, b, k), G_OK);
+    assert_int_equal(got.kind, want.kind);
+    size_t bytes = (size_t)(want.kind == GCOLOR_MATRIX ? m->capacity : m->nvalues) * sizeof(float);
+    assert_memory_equal(got.v, want.v, bytes);
+    assert_int_equal(gcolor_copy(&inplace, b), G_OK); /* out aliases b */
+    assert_int_equal(gcolor_mul_scaled(&inplace, a, &inplace, k), G_OK);
+    assert_memory_equal(inplace.v, want.v, bytes);
+    gscratch_release(s, mark);
+}
+
+static void test_mul_scaled_is_mul_then_scale(void **state)
+{
+    (void)state;
+    GColorModel *models[MAX_MODELS];
+    int nm = all_models(models);
+    GScratch *s = gscratch_create(0);
+    assert_non_null(s);
+    const double scales[] = {1.0 / M_PI, 0.123456789, -2.5, 0.0, 1e-40};
+    for (int k = 0; k < nm; k++) {
+        const GColorModel *m = models[k];
+        GScratchMark mark = gscratch_mark(s);
+        GColor a, b, mat;
+        assert_int_equal(gcolor_scratch(&a, m, s), G_OK);
+        assert_int_equal(gcolor_scratch(&b, m, s), G_OK);
+        assert_int_equal(gcolor_scratch(&mat, m, s), G_OK);
+        for (int i = 0; i < m->nvalues; i++) { /* awkward values, so that any other rounding shows */
+            a.v[i] = 0.1f + 0.7f * (float)i / (float)(i + 3);
+            b.v[i] = 3.3f - 0.31f * (float)i;
+        }
+        b.v[m->nvalues - 1] = -0.0f;
+        for (size_t j = 0; j < sizeof scales / sizeof *scales; j++)
+            assert_mul_scaled(m, s, &a, &b, scales[j]);
+        if (make_matrix(m, &mat)) { /* matrix times light, and matrix times matrix: the model's own */
+            mat.v[m->nsamples - 1] = 0.25f;
+            assert_mul_scaled(m, s, &mat, &b, 0.3);
+            assert_mul_scaled(m, s, &mat, &mat, 0.3);
+        }
+        gscratch_release(s, mark);
+    }
+    /* colours of two models */
+    if (nm > 1) {
+        GColor a, b;
+        assert_int_equal(gcolor_scratch(&a, models[0], s), G_OK);
+        assert_int_equal(gcolor_scratch(&b, models[1], s), G_OK);
+        assert_int_equal(gcolor_mul_scaled(&a, &a, &b, 1.0), G_ERR_MISMATCH);
+    }
+    gscratch_destroy(s);
+    for (int k = 0; k < nm; k++)
+        gcolormodel_destroy(models[k]);
+}
+
+static void test_own_fill_takes_its_operations(void **state)
 {
     (void)state;
     GColorModel *m;
@@ -240,6 +302,8 @@ static void test_own_fill_asks_brightness(void **state)
     assert_black(&c, 0);
     c.v[OFF_N - 1] = NAN;
     assert_int_equal(gcolor_is_black(&c), 0);
+    /* mul_scaled takes the model's mul (which this model does not have) rather than multiplying its floats */
+    assert_int_equal(gcolor_mul_scaled(&c, &c, &c, 2.0), G_ERR_UNSUPPORTED);
     gcolormodel_destroy(m);
 }
 
@@ -250,7 +314,8 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_vectors_in_every_model),
         cmocka_unit_test(test_matrices),
-        cmocka_unit_test(test_own_fill_asks_brightness),
+        cmocka_unit_test(test_mul_scaled_is_mul_then_scale),
+        cmocka_unit_test(test_own_fill_takes_its_operations),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
