@@ -191,6 +191,16 @@ static int set_wavelengths(Framebuffer *fb, const GColorModel *m, GError *err)
     return G_OK;
 }
 
+/* A worker's arena: room for 32 colours a bounce down to the deepest one (a bounce holds a handful: the shading
+ * point's, its lights', its textures'), so that it need not grow while rendering, where a new depth reached would
+ * allocate (the default 256 KiB holds 38 values of the bispectral model); at least that default, at most 16 MiB.
+ * Pages never reached are never touched. */
+static size_t arena_bytes(const GColorModel *m, int depth)
+{
+    size_t want = gcolormodel_value_bytes(m) * 32 * ((size_t)depth + 2), lo = 256 * 1024, hi = 16u << 20;
+    return want < lo ? lo : want > hi ? hi : want;
+}
+
 int renderer_create(Renderer **out, const Scene *s, const RenderSettings *rs, Framebuffer *fb, GError *err)
 {
     *out = NULL;
@@ -227,7 +237,7 @@ int renderer_create(Renderer **out, const Scene *s, const RenderSettings *rs, Fr
     for (int i = 0; ok && i < r->nthreads; i++) {
         Worker *w = &r->workers[i];
         w->ctx = (TraceCtx){.scene = s, .max_depth = rs->depth, .cutoff = rs->cutoff, .bands = &r->bands, .band = -1};
-        w->ctx.scratch = gscratch_create(0);
+        w->ctx.scratch = gscratch_create(arena_bytes(s->model, rs->depth));
         w->perm = gmem_alloc((size_t)rs->spp * sizeof(int));
         ok = w->ctx.scratch && w->perm && gcolor_alloc(&w->ctx.unit, s->model) == G_OK &&
              gmaterial_refraction_index(NULL, NULL, &w->ctx.unit) == G_OK && trace_ctx_temps(&w->ctx) == G_OK &&
