@@ -40,7 +40,8 @@ static int render_pixel(Worker *w, const Job *job, int x, int y)
 {
     TraceCtx *c = &w->ctx;
     GColor *acc = &w->acc, *sample = &w->sample;
-    const GColor *pixel = acc; /* with one sample, the sample itself (black + s, divided by 1: s but for a zero's sign) */
+    /* with one sample, the pixel is the sample itself (black + s, divided by 1: s but for a zero's sign) */
+    const GColor *pixel = acc;
     int rc = G_OK;
     rng_seed(&c->rng, (uint64_t)y * (uint64_t)job->fb->full_width + (uint64_t)x, 0x9e3779b97f4a7c15ULL);
     int n = job->spp, grid = strata_grid(n);
@@ -193,8 +194,8 @@ static int set_wavelengths(Framebuffer *fb, const GColorModel *m, GError *err)
 
 /* A worker's arena: room for 32 colours a bounce down to the deepest one (a bounce holds a handful: the shading
  * point's, its lights', its textures'), so that it need not grow while rendering, where a new depth reached would
- * allocate (the default 256 KiB holds 38 values of the bispectral model); at least that default, at most 16 MiB.
- * Pages never reached are never touched. */
+ * allocate (the default 256 KiB holds 38 values of a model with 41 x 41 re-radiation matrices); at least that
+ * default, at most 16 MiB. Pages never reached are never touched. */
 static size_t arena_bytes(const GColorModel *m, int depth)
 {
     size_t want = gcolormodel_value_bytes(m) * 32 * ((size_t)depth + 2), lo = 256 * 1024, hi = 16u << 20;
