@@ -106,9 +106,10 @@ void gscratch_destroy(GScratch *s)
     gmem_free(s);
 }
 
-void *gscratch_alloc(GScratch *s, size_t bytes)
+/* gscratch_alloc when the current block is full (bytes rounded): the next kept block, or a new one. Apart, so that
+ * the common case saves no registers. */
+__attribute__((noinline)) static void *alloc_grow(GScratch *s, size_t bytes)
 {
-    bytes = (bytes + ALIGN - 1) & ~(size_t)(ALIGN - 1);
     for (;;) {
         Block *b = s->cur;
         if (b->size - b->used >= bytes) {
@@ -128,6 +129,18 @@ void *gscratch_alloc(GScratch *s, size_t bytes)
         b->next = nb;
         s->cur = nb;
     }
+}
+
+void *gscratch_alloc(GScratch *s, size_t bytes)
+{
+    bytes = (bytes + ALIGN - 1) & ~(size_t)(ALIGN - 1);
+    Block *b = s->cur;
+    if (b->size - b->used >= bytes) {
+        void *p = b->data + b->used;
+        b->used += bytes;
+        return p;
+    }
+    return alloc_grow(s, bytes);
 }
 
 GScratchMark gscratch_mark(const GScratch *s)

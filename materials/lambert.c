@@ -17,8 +17,7 @@ static int lambert_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, c
         gcolor_black(result);
         return G_OK;
     }
-    int rc = gcolor_mul(result, &l->c, illum);
-    return rc ? rc : gcolor_scale(result, result, c / M_PI);
+    return gcolor_mul_scaled(result, &l->c, illum, c / M_PI);
 }
 
 static int lambert_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)

@@ -10,15 +10,17 @@
 #include <generic/surfpoint.h>
 #include <generic/vec.h>
 
-/** Scratch colours for light_shade, allocated once per shading point and shared by all lights, and the shadow
- * rule of sample_light. */
+/** Scratch colours for light_shade, shared by all lights at a shading point (light shading traces no rays
+ * but shadow rays, so the context's own temporaries serve every shading point), and the shadow rule of
+ * sample_light. */
 typedef struct LightTmp {
     GColor illum, refl, tmp;
     int blocked; /**< 1: a shadow ray stops at any surface (the path tracer's rule for lights that material
                   * sampling also reaches: light through glass arrives there as a caustic); 0 (light_temps'
                   * default): it passes non-opaque surfaces along the straight line */
 } LightTmp;
-/** Allocates the temporaries on the thread's arena; blocked is 0. */
+/** The temporaries: the context's own (trace_tmp; from the thread's arena when it has none), not black; blocked
+ * is 0. */
 int light_temps(TraceCtx *c, LightTmp *t);
 /** Adds to result the light reflected towards out_dir by sp from one light source, shadowed and absorbed
  * (Fig. 4, light.shade); opaque: the material's opaque() at sp (culls lights behind the surface). */

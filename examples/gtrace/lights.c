@@ -82,8 +82,8 @@ static int transmit(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *medi
     GScratchMark mark = gscratch_mark(c->scratch);
     GColor tmp, ri, nf, nt;
     int rc = G_OK;
-    if ((rc = gcolor_scratch(&tmp, s->model, c->scratch)) < 0 || (rc = gcolor_scratch(&ri, s->model, c->scratch)) < 0 ||
-        (rc = gcolor_scratch(&nf, s->model, c->scratch)) < 0 || (rc = gcolor_scratch(&nt, s->model, c->scratch)) < 0)
+    if ((rc = trace_tmp(c, TRACE_TMP_WALK, &tmp)) < 0 || (rc = trace_tmp(c, TRACE_TMP_WALK_RI, &ri)) < 0 ||
+        (rc = trace_tmp(c, TRACE_TMP_WALK_NF, &nf)) < 0 || (rc = trace_tmp(c, TRACE_TMP_WALK_NT, &nt)) < 0)
         goto done;
     double left = dist;
     GVec3 target = isfinite(dist) ? gvec3_madd(sp->point, dir, dist) : sp->point;
@@ -103,7 +103,7 @@ static int transmit(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *medi
             goto done;
         if ((rc = interface_transmit(&hp, dir, light, &nf, &nt, &ri, &tmp)) <= 0 || (rc = gcolor_copy(light, &tmp)) < 0)
             goto done;
-        if (gcolor_brightness(light) <= 0.0)
+        if (gcolor_is_black(light))
             goto done;
         Media next;
         media_cross(&walk, hp.material, hp.entering, &next);
@@ -137,7 +137,7 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
     if ((rc = gcolor_scale(illum, color, scale)) < 0 ||
         (rc = gmaterial_reflection(sp->material, sp, in, illum, out_dir, refl)) < 0)
         return rc;
-    if (gcolor_brightness(refl) == 0.0)
+    if (gcolor_is_black(refl))
         return G_OK; /* nothing reflected from here: no shadow ray */
     Ray sr = {offset_origin(sp->point, facing, in), in, 0.0, dist * (1.0 - 1e-7), 0.0, 0.0};
     c->rays++;
@@ -179,9 +179,8 @@ int light_temps(TraceCtx *c, LightTmp *t)
 {
     int rc;
     t->blocked = 0;
-    if ((rc = gcolor_scratch(&t->illum, c->scene->model, c->scratch)) < 0 ||
-        (rc = gcolor_scratch(&t->refl, c->scene->model, c->scratch)) < 0 ||
-        (rc = gcolor_scratch(&t->tmp, c->scene->model, c->scratch)) < 0)
+    if ((rc = trace_tmp(c, TRACE_TMP_ILLUM, &t->illum)) < 0 || (rc = trace_tmp(c, TRACE_TMP_REFL, &t->refl)) < 0 ||
+        (rc = trace_tmp(c, TRACE_TMP_LIGHT, &t->tmp)) < 0)
         return rc;
     return G_OK;
 }

@@ -27,23 +27,31 @@ typedef struct Job {
     Media media0;
 } Job;
 
-static int render_pixel(TraceCtx *c, const Job *job, int x, int y, int *perm, uint64_t *nonfinite, uint64_t *capped)
-{
-    const Scene *s = job->scene;
-    GScratchMark mark = gscratch_mark(c->scratch);
+/* One thread's state, kept from one region to the next: its context, the pixel's sample pairing, its counts, and
+ * the pixel's two colours (heap, made with the worker: render_pixel does not nest). */
+typedef struct Worker {
+    TraceCtx ctx;
+    int *perm;
+    uint64_t nonfinite, capped;
     GColor acc, sample;
-    int rc = gcolor_scratch(&acc, s->model, c->scratch);
-    if (rc == G_OK)
-        rc = gcolor_scratch(&sample, s->model, c->scratch);
-    if (rc != G_OK)
-        goto done;
+} Worker;
+
+static int render_pixel(Worker *w, const Job *job, int x, int y)
+{
+    TraceCtx *c = &w->ctx;
+    GColor *acc = &w->acc, *sample = &w->sample;
+    /* with one sample, the pixel is the sample itself (black + s, divided by 1: s but for a zero's sign) */
+    const GColor *pixel = acc;
+    int rc = G_OK;
     rng_seed(&c->rng, (uint64_t)y * (uint64_t)job->fb->full_width + (uint64_t)x, 0x9e3779b97f4a7c15ULL);
     int n = job->spp, grid = strata_grid(n);
     if (n > 1 && !grid)
-        strata_shuffle(&c->rng, n, perm);
+        strata_shuffle(&c->rng, n, w->perm);
+    if (n > 1)
+        gcolor_black(acc);
     for (int i = 0; i < n; i++) {
         double sx, sy;
-        pixel_sample(&c->rng, i, n, grid, perm, &sx, &sy);
+        pixel_sample(&c->rng, i, n, grid, w->perm, &sx, &sy);
         Ray r;
         camera_ray_lens(job->cam, x + sx, y + sy, &c->rng, &r);
         GScratchMark m2 = gscratch_mark(c->scratch);
@@ -51,30 +59,34 @@ static int render_pixel(TraceCtx *c, const Job *job, int x, int y, int *perm, ui
         c->rays_left = job->max_rays;
         c->capped = 0;
         rc = job->integrator == RENDER_PATH
-                 ? path_trace(c, &r, &job->media0, (uint64_t)y * (uint64_t)job->fb->full_width + (uint64_t)x, i, &sample)
-                 : trace_ray(c, &r, &job->media0, 0, &sample);
-        *capped += (uint64_t)c->capped;
+                 ? path_trace(c, &r, &job->media0, (uint64_t)y * (uint64_t)job->fb->full_width + (uint64_t)x, i, sample)
+                 : trace_ray(c, &r, &job->media0, 0, sample);
+        w->capped += (uint64_t)c->capped;
         gscratch_release(c->scratch, m2);
         if (rc < 0)
-            goto done;
-        if (!gcolor_is_finite(&sample)) {
-            (*nonfinite)++;
+            return rc;
+        if (!gcolor_is_finite(sample)) {
+            w->nonfinite++;
             continue;
         }
-        if ((rc = gcolor_add(&acc, &acc, &sample)) < 0)
-            goto done;
+        if (n == 1)
+            pixel = sample;
+        else if ((rc = gcolor_add(acc, acc, sample)) < 0)
+            return rc;
     }
-    if ((rc = gcolor_scale(&acc, &acc, 1.0 / n)) < 0)
-        goto done;
+    if (n > 1 && (rc = gcolor_scale(acc, acc, 1.0 / n)) < 0)
+        return rc;
+    if (n == 1 && pixel == acc) /* the one sample was dropped: black */
+        gcolor_black(acc);
     double xyz[3], lin[3];
-    if ((rc = gcolor_to_xyz(&acc, GCOLOR_LIGHT, xyz)) < 0)
-        goto done;
+    if ((rc = gcolor_to_xyz(pixel, GCOLOR_LIGHT, xyz)) < 0)
+        return rc;
     gcie_xyz_to_rgb(xyz, lin);
     float *px = job->fb->pixels + 3 * ((size_t)(y - job->y0) * (size_t)job->fb->width + (size_t)(x - job->x0));
     int dropped = 0;
     for (int ch = 0; ch < 3; ch++) {
         if (!isfinite(lin[ch]) || fabs(lin[ch]) > 3.0e38) {
-            (*nonfinite)++;
+            w->nonfinite++;
             lin[0] = lin[1] = lin[2] = 0.0;
             dropped = 1;
             break;
@@ -84,14 +96,12 @@ static int render_pixel(TraceCtx *c, const Job *job, int x, int y, int *perm, ui
         px[ch] = (float)lin[ch];
     if (job->fb->waves) {
         size_t n = (size_t)job->fb->nwaves;
-        float *w = job->fb->waves + n * ((size_t)(y - job->y0) * (size_t)job->fb->width + (size_t)(x - job->x0));
+        float *wv = job->fb->waves + n * ((size_t)(y - job->y0) * (size_t)job->fb->width + (size_t)(x - job->x0));
         if (dropped) /* black, as the pixel */
-            memset(w, 0, n * sizeof *w);
+            memset(wv, 0, n * sizeof *wv);
         else
-            rc = gcolor_at_wavelengths(&acc, GCOLOR_LIGHT, w, (int)n);
+            rc = gcolor_at_wavelengths(pixel, GCOLOR_LIGHT, wv, (int)n);
     }
-done:
-    gscratch_release(c->scratch, mark);
     return rc < 0 ? rc : G_OK;
 }
 
@@ -110,13 +120,6 @@ void render_tile_order(int n, int *order)
         order[j] = t;
     }
 }
-
-/* One thread's state, kept from one region to the next. */
-typedef struct Worker {
-    TraceCtx ctx;
-    int *perm;
-    uint64_t nonfinite, capped;
-} Worker;
 
 struct Renderer {
     Job job;
@@ -159,6 +162,9 @@ void renderer_destroy(Renderer *r)
         return;
     for (int i = 0; r->workers && i < r->nthreads; i++) {
         gcolor_free(&r->workers[i].ctx.unit);
+        trace_ctx_free_temps(&r->workers[i].ctx);
+        gcolor_free(&r->workers[i].acc);
+        gcolor_free(&r->workers[i].sample);
         gmem_free(r->workers[i].perm);
         gscratch_destroy(r->workers[i].ctx.scratch);
     }
@@ -184,6 +190,16 @@ static int set_wavelengths(Framebuffer *fb, const GColorModel *m, GError *err)
         return gerror_set(err, G_ERR_NOMEM, "--spectral: out of memory for %d wavelengths", n);
     fb->nwaves = gcolormodel_wavelengths(m, fb->wavelengths, n);
     return G_OK;
+}
+
+/* A worker's arena: room for 32 colours a bounce down to the deepest one (a bounce holds a handful: the shading
+ * point's, its lights', its textures'), so that it need not grow while rendering, where a new depth reached would
+ * allocate (the default 256 KiB holds 38 values of a model with 41 x 41 re-radiation matrices); at least that
+ * default, at most 16 MiB. Pages never reached are never touched. */
+static size_t arena_bytes(const GColorModel *m, int depth)
+{
+    size_t want = gcolormodel_value_bytes(m) * 32 * ((size_t)depth + 2), lo = 256 * 1024, hi = 16u << 20;
+    return want < lo ? lo : want > hi ? hi : want;
 }
 
 int renderer_create(Renderer **out, const Scene *s, const RenderSettings *rs, Framebuffer *fb, GError *err)
@@ -222,10 +238,11 @@ int renderer_create(Renderer **out, const Scene *s, const RenderSettings *rs, Fr
     for (int i = 0; ok && i < r->nthreads; i++) {
         Worker *w = &r->workers[i];
         w->ctx = (TraceCtx){.scene = s, .max_depth = rs->depth, .cutoff = rs->cutoff, .bands = &r->bands, .band = -1};
-        w->ctx.scratch = gscratch_create(0);
+        w->ctx.scratch = gscratch_create(arena_bytes(s->model, rs->depth));
         w->perm = gmem_alloc((size_t)rs->spp * sizeof(int));
         ok = w->ctx.scratch && w->perm && gcolor_alloc(&w->ctx.unit, s->model) == G_OK &&
-             gmaterial_refraction_index(NULL, NULL, &w->ctx.unit) == G_OK;
+             gmaterial_refraction_index(NULL, NULL, &w->ctx.unit) == G_OK && trace_ctx_temps(&w->ctx) == G_OK &&
+             gcolor_alloc(&w->acc, s->model) == G_OK && gcolor_alloc(&w->sample, s->model) == G_OK;
     }
     if (ok && rs->waves && (rc = set_wavelengths(fb, s->model, err)) != G_OK) {
         framebuffer_free(fb);
@@ -273,7 +290,7 @@ int renderer_region(Renderer *r, const int region[4], Progress *prog, GError *er
             int rc = G_OK;
             for (int y = y0; y < y1 && rc == G_OK; y++)
                 for (int x = x0; x < x1 && rc == G_OK; x++)
-                    rc = render_pixel(&w->ctx, &r->job, x, y, w->perm, &w->nonfinite, &w->capped);
+                    rc = render_pixel(w, &r->job, x, y);
             if (rc != G_OK) {
 #pragma omp critical(gtrace_status)
                 {

@@ -63,6 +63,29 @@ static void uv_of(GVec3 a, GVec3 b, GVec3 v1, GVec3 v2, double out1[2], double o
     out2[1] = (aa * bv - ab * av) / det;
 }
 
+int trace_ctx_temps(TraceCtx *c)
+{
+    for (int i = 0; i < TRACE_TMP_COUNT; i++)
+        if (c->tmp[i].storage == GCOLOR_STORAGE_NONE && gcolor_alloc(&c->tmp[i], c->scene->model) != G_OK)
+            return G_ERR_NOMEM;
+    return G_OK;
+}
+
+void trace_ctx_free_temps(TraceCtx *c)
+{
+    for (int i = 0; i < TRACE_TMP_COUNT; i++)
+        gcolor_free(&c->tmp[i]);
+}
+
+int trace_tmp(TraceCtx *c, int which, GColor *out)
+{
+    if (c->tmp[which].storage != GCOLOR_STORAGE_NONE) {
+        *out = c->tmp[which];
+        return G_OK;
+    }
+    return gcolor_scratch(out, c->scene->model, c->scratch);
+}
+
 /* The stack after crossing the surface of `mat` (entering pushes it, leaving removes it). */
 void media_cross(const Media *in, const GMaterial *mat, int entering, Media *out)
 {
@@ -158,7 +181,7 @@ static int trace_secondary(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 faci
     GScratchMark mark = gscratch_mark(c->scratch);
     GColor tmp, illum;
     int rc = G_OK;
-    CHECK(gcolor_scratch(&tmp, c->scene->model, c->scratch));
+    CHECK(trace_tmp(c, TRACE_TMP_PASS, &tmp)); /* not held across trace_ray, which uses it too */
     CHECK(pass_on(m, sp, dir, &c->unit, ri, to_viewer, &tmp));
     if (mask)
         CHECK(gcolor_mul(&tmp, mask, &tmp));
@@ -191,8 +214,8 @@ int trace_relative_index(TraceCtx *c, GSurfPoint *sp, GColor *ri)
 {
     GColor n_from, n_to;
     int rc = G_OK;
-    CHECK(gcolor_scratch(&n_from, c->scene->model, c->scratch));
-    CHECK(gcolor_scratch(&n_to, c->scene->model, c->scratch));
+    CHECK(trace_tmp(c, TRACE_TMP_N_FROM, &n_from));
+    CHECK(trace_tmp(c, TRACE_TMP_N_TO, &n_to));
     CHECK(gcolor_scratch(ri, c->scene->model, c->scratch));
     CHECK(gmaterial_refraction_index(sp->from, sp, &n_from));
     CHECK(gmaterial_refraction_index(sp->to, sp, &n_to));
@@ -245,7 +268,7 @@ static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const 
     GVec3 view = r->d, to_viewer = gvec3_neg(r->d), dir;
     GColor tmp;
     int rc = G_OK, valid;
-    CHECK(gcolor_scratch(&tmp, s->model, c->scratch));
+    CHECK(trace_tmp(c, TRACE_TMP_SHADE, &tmp)); /* not held across the secondary rays, which use it too */
 
     /* emission, ambient light and the direct light of every light source */
     CHECK(gmaterial_emission(m, sp, to_viewer, out));

@@ -16,6 +16,19 @@
 
 #include <stdint.h>
 
+/** The colours a TraceCtx owns (TraceCtx.tmp), each for one job that holds it without tracing another ray meanwhile,
+ * so that no two users can meet: light shading (lighting.h's LightTmp), the shadow ray's walk through glass
+ * (lights.c), the refraction indices on both sides of a surface (trace_relative_index), a shading point's
+ * ambient and absorbed light (shade.c), and what a material passes on of a secondary ray's light (shade.c's
+ * trace_secondary, before and after the ray, not across it). */
+enum {
+    TRACE_TMP_ILLUM, TRACE_TMP_REFL, TRACE_TMP_LIGHT,               /* LightTmp */
+    TRACE_TMP_WALK, TRACE_TMP_WALK_RI, TRACE_TMP_WALK_NF, TRACE_TMP_WALK_NT, /* transmit */
+    TRACE_TMP_N_FROM, TRACE_TMP_N_TO,                             /* trace_relative_index */
+    TRACE_TMP_SHADE, TRACE_TMP_PASS,                              /* shade, trace_secondary */
+    TRACE_TMP_COUNT
+};
+
 /** Per-thread tracing state. */
 typedef struct TraceCtx {
     const Scene *scene;
@@ -32,7 +45,19 @@ typedef struct TraceCtx {
     const char *culprit; /**< type of the material whose call failed first (NULL: none or not a material) */
     const Bands *bands;  /**< the wavelength groups a dispersive refraction splits into (NULL: none) */
     int band;            /**< the group the current path carries (-1: all light; set by a dispersive split) */
+    GColor tmp[TRACE_TMP_COUNT]; /**< heap temporaries made once with the context (trace_ctx_temps); cleared in a
+                                  * context built without them, whose users then take arena storage (trace_tmp) */
 } TraceCtx;
+
+/** Gives c its own temporaries (c->tmp, heap storage of the scene's model); G_ERR_NOMEM when out of memory (what
+ * was made is still freed by trace_ctx_free_temps). */
+int trace_ctx_temps(TraceCtx *c);
+/** Frees the temporaries of trace_ctx_temps and clears them (a no-op for a context without them). */
+void trace_ctx_free_temps(TraceCtx *c);
+/** The temporary `which` (a TRACE_TMP_ value) of c into *out: a copy of c's handle when c has its temporaries,
+ * else storage from c's arena (given back by the caller's mark and release). Not black: the users write before
+ * they read. */
+int trace_tmp(TraceCtx *c, int which, GColor *out);
 
 /** The media a ray travels through: bottom = the camera's medium, top = the current one. */
 #define MEDIA_MAX 16

@@ -207,6 +207,11 @@ GENERIC_API void gcolor_black(GColor *c);
 GENERIC_API GENERIC_NODISCARD int gcolor_add(GColor *out, const GColor *a, const GColor *b);
 /** out = a * b: reflection of b by a. */
 GENERIC_API GENERIC_NODISCARD int gcolor_mul(GColor *out, const GColor *a, const GColor *b);
+/** out = (a * b) * s: the reflection of b by a, scaled (a material's reflectance times light times cos / pi). The
+ * same value as gcolor_mul then gcolor_scale, in one pass over the samples for vectors of a model the library
+ * reads as plain samples (no fill of its own: each product rounded to float, then times (float)s, as the built-in
+ * models' mul and scale do); otherwise exactly that composition. */
+GENERIC_API GENERIC_NODISCARD int gcolor_mul_scaled(GColor *out, const GColor *a, const GColor *b, double s);
 /** out = a * s */
 GENERIC_API GENERIC_NODISCARD int gcolor_scale(GColor *out, const GColor *a, double s);
 /** out = a / b: relative refraction index (zero divisors give zero). */
@@ -215,6 +220,12 @@ GENERIC_API GENERIC_NODISCARD int gcolor_div(GColor *out, const GColor *a, const
 GENERIC_API GENERIC_NODISCARD int gcolor_pow(GColor *out, const GColor *a, double e);
 /** Brightness: 0 if and only if c is black; a constant value c gives c. */
 GENERIC_API double gcolor_brightness(const GColor *c);
+/** 1 when c is black, 0 otherwise: what gcolor_brightness(c) == 0.0 asks (brightness is 0 only for black), for
+ * callers that need no more than that answer. A value that any NaN makes NaN is not black; -0.0 is zero. A vector
+ * of a model whose vectors the library reads as plain samples (no fill of its own) is black when every sample is
+ * zero, which the test finds out at the first non-zero one; otherwise (matrices, and vectors of models that give
+ * their own fill) it is brightness == 0. */
+GENERIC_API int gcolor_is_black(const GColor *c);
 /** out = s * a + b (out may alias a or b); any kinds the model's add and scale accept. */
 GENERIC_API GENERIC_NODISCARD int gcolor_axpy(GColor *out, double s, const GColor *a, const GColor *b);
 /** out += a * s, that is gcolor_axpy(out, s, a, out). */
