@@ -98,7 +98,7 @@ static void user_intersect(const struct RTCIntersectFunctionNArguments *args)
     struct RTCRayHit *rh = (struct RTCRayHit *)args->rayhit;
     GVec3 ro, rd;
     to_object(o, context_instance(cx), cx->ray, &ro, &rd);
-    double tmax = fmin((double)rh->ray.tfar, cx->best_t);
+    double tmax = gfmin((double)rh->ray.tfar, cx->best_t);
     double t;
     int surface;
     if (!shape_intersect(o, ro, rd, cx->ray->tmin, tmax, &t, &surface))

@@ -164,7 +164,7 @@ static double smoothstep(double a, double b, double x)
 {
     if (b <= a)
         return x >= b ? 1.0 : 0.0;
-    double t = fmin(1.0, fmax(0.0, (x - a) / (b - a)));
+    double t = gfmin(1.0, gfmax(0.0, (x - a) / (b - a)));
     return t * t * (3.0 - 2.0 * t);
 }
 
@@ -218,7 +218,7 @@ int light_shade(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const
         if (dc <= l->radius)
             return G_OK;
         axis = gvec3_scale(axis, 1.0 / dc);
-        double sin_max = l->radius / dc, cos_max = sqrt(fmax(0.0, 1.0 - sin_max * sin_max));
+        double sin_max = l->radius / dc, cos_max = sqrt(gfmax(0.0, 1.0 - sin_max * sin_max));
         if (opaque && gvec3_dot(axis, facing) < -sin_max)
             return G_OK; /* the whole cap is below the surface */
         double omega = 2.0 * M_PI * (1.0 - cos_max);
@@ -233,13 +233,13 @@ int light_shade(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const
             pixel_sample(&c->rng, i, n, grid, perm, &u1, &u2);
             if (n == 1)
                 u1 = rng_next(&c->rng), u2 = rng_next(&c->rng);
-            double ct = 1.0 - u1 * (1.0 - cos_max), st = sqrt(fmax(0.0, 1.0 - ct * ct)), ph = 2.0 * M_PI * u2;
+            double ct = 1.0 - u1 * (1.0 - cos_max), st = sqrt(gfmax(0.0, 1.0 - ct * ct)), ph = 2.0 * M_PI * u2;
             GVec3 in = gvec3_add(gvec3_scale(axis, ct), gvec3_add(gvec3_scale(t1, st * cos(ph)), gvec3_scale(t2, st * sin(ph))));
             if (opaque && gvec3_dot(in, facing) <= 0.0)
                 continue;
             /* distance to the near side of the sphere along in */
             double b = dc * ct, disc = b * b - (dc * dc - l->radius * l->radius);
-            double d = b - sqrt(fmax(0.0, disc));
+            double d = b - sqrt(gfmax(0.0, disc));
             int rc = sample_light(c, sp, facing, media, in, d, &l->color, omega / n, out_dir, t, result);
             if (rc < 0)
                 return rc;

@@ -28,7 +28,7 @@
 
 GVec3 offset_origin(GVec3 p, GVec3 n, GVec3 dir)
 {
-    double scale = 1.0 + fmax(fabs(p.x), fmax(fabs(p.y), fabs(p.z)));
+    double scale = 1.0 + gfmax(fabs(p.x), gfmax(fabs(p.y), fabs(p.z)));
     double eps = 2e-5 * scale;
     return gvec3_madd(p, n, gvec3_dot(dir, n) >= 0.0 ? eps : -eps);
 }
@@ -129,7 +129,7 @@ void surfpoint_fill(TraceCtx *c, const Ray *r, const Hit *h, const Media *media,
      * w / cos: a filter as wide as that does not alias at grazing angles (the geometric mean of the axes,
      * w / sqrt(cos), keeps the area but leaves moire on receding checkers) */
     double w = r->cone_width + r->cone_spread * h->t;
-    double cosv = fmax(fabs(dn), 0.02);
+    double cosv = gfmax(fabs(dn), 0.02);
     sp->footprint = w / cosv;
     double area = gvec3_length(gvec3_cross(g.dpdu, g.dpdv));
     sp->uv_footprint = area > 0.0 ? sp->footprint / sqrt(area) : 0.0;
