@@ -66,6 +66,19 @@ static void test_checker_parity(void **state)
     assert_float_equal(at_uv(c2, 1.0, 0.5, 0.5), 0.5, 1e-12);
     assert_float_equal(at_uv(c2, 1.125, 0.5, 0.5), 0.75, 1e-12);
     assert_float_equal(at_uv(c2, 12345.3, 77.1, 5000.0), 0.5, 1e-12); /* far away: grey */
+    /* a window inside one cell gives the cell exactly (0 or 1, not 1 - 2e-16: a blend over the checker then
+     * evaluates one child), at any position and width that stays inside, on both sides of 0 */
+    uint64_t s = 7;
+    for (int i = 0; i < 10000; i++) {
+        double cu = floor(uniform(&s, -50, 50)), cv = floor(uniform(&s, -50, 50)), w = uniform(&s, 1e-8, 0.5);
+        double u = cu + 0.5 * w + uniform(&s, 0, 1 - w), v = cv + 0.5 * w + uniform(&s, 0, 1 - w);
+        double want = fmod(fabs(cu), 2.0) != fmod(fabs(cv), 2.0) ? 1.0 : 0.0;
+        double got = at_uv(c2, u, v, w);
+        if (u - 0.5 * w > cu && u + 0.5 * w < cu + 1 && v - 0.5 * w > cv && v + 0.5 * w < cv + 1)
+            assert_true(got == want);
+        else
+            assert_float_equal(got, want, 1e-9); /* rounding put an end on the edge */
+    }
     ggenerator_unref(c2);
     ggenerator_unref(c4);
     ggenerator_unref(c3);

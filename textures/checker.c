@@ -22,13 +22,16 @@ static double wave_integral(double x)
     return h + gfmax(0.0, x - 2.0 * h - 1.0);
 }
 
-/* The square wave averaged over [x - w/2, x + w/2] (w in cells); the wave itself when w is negligible. */
+/* The square wave averaged over [x - w/2, x + w/2] (w in cells); the wave itself when w is negligible or the
+ * window lies in one cell. That value is exactly 0 or 1, where the difference of the integrals would give 1 only
+ * to rounding (1 - 2e-16: a blend over the checker would then evaluate both of its children). */
 static double filtered(double x, double w)
 {
     if (w > 1e3)
         return 0.5;
-    if (w > 1e-9)
-        return (wave_integral(x + 0.5 * w) - wave_integral(x - 0.5 * w)) / w;
+    double lo = x - 0.5 * w, hi = x + 0.5 * w;
+    if (w > 1e-9 && floor(lo) != floor(hi))
+        return (wave_integral(hi) - wave_integral(lo)) / w;
     return fmod(fabs(floor(x)), 2.0);
 }
 
