@@ -16,7 +16,8 @@ int gmaterial_init(GMaterial *m, const GMaterialClass *cls, const GColorModel *m
     m->depth = 1;
     m->cost = 1;
     m->flags = (cls->emission ? 0u : GMAT_NO_EMISSION) | /* no slot: black, the documented default */
-               (cls->opaque ? 0u : GMAT_OPAQUE);         /* no slot: opaque, the documented default */
+               (cls->opaque ? 0u : GMAT_OPAQUE) |        /* no slot: opaque, the documented default */
+               (cls->normal ? 0u : GMAT_GEOMETRIC_NORMAL); /* no slot: the geometric normal, the default */
     return G_OK;
 }
 
@@ -102,7 +103,7 @@ int gmaterial_absorption(const GMaterial *m, GSurfPoint *sp, const GColor *illum
 
 int gmaterial_normal(const GMaterial *m, GSurfPoint *sp, GVec3 *n)
 {
-    if (m && m->cls->normal)
+    if (m && !(m->flags & GMAT_GEOMETRIC_NORMAL) && m->cls->normal)
         return m->cls->normal(m, sp, n);
     *n = sp->geometric_normal;
     return G_OK;

@@ -30,7 +30,9 @@ GVec3 gsurfpoint_normal(GSurfPoint *sp)
 {
     if (!(sp->cached_flags & HAVE_NORMAL)) {
         GVec3 n = sp->geometric_normal;
-        if (sp->material && gmaterial_normal(sp->material, sp, &n) != G_OK)
+        /* GMAT_GEOMETRIC_NORMAL: the material's normal is the geometric one, no call (material.h) */
+        if (sp->material && !(sp->material->flags & GMAT_GEOMETRIC_NORMAL) &&
+            gmaterial_normal(sp->material, sp, &n) != G_OK)
             n = sp->geometric_normal;
         sp->cached_normal = n;
         sp->cached_flags |= HAVE_NORMAL;

@@ -79,7 +79,17 @@ enum {
      * sets it on a node whose opacity is its children's when every child has it (node_kit.h). The same rules as
      * for GMAT_NO_EMISSION: set by hand only when it is true (`gmat check`'s opaque-flag property), clearing it is
      * always safe. */
-    GMAT_OPAQUE = 2u
+    GMAT_OPAQUE = 2u,
+    /** normal() is the geometric normal at every point: gmaterial_normal and gsurfpoint_normal answer
+     * sp->geometric_normal without calling the class (a texture tree whose leaves keep the geometric normal then
+     * costs nothing per point for its normal). gmaterial_init sets it when the class has no normal slot (the
+     * documented default is the geometric normal); the node kit sets it on a node whose normal is one of its
+     * children's or a normalised blend of them, evaluated at the point's own geometric normal, when every child
+     * has it (node_kit.h); a node that changes the normal (bump) never gets it. The same rules as for
+     * GMAT_NO_EMISSION: set by hand only when it is true (`gmat check`'s geometric-normal property), clearing it
+     * is always safe. A bit added in the existing flags field, which gmaterial_init fills for plug-ins built
+     * against version 4 as well: the interface version did not change for it. */
+    GMAT_GEOMETRIC_NORMAL = 4u
 };
 
 /** A material instance begins with this header; implementations embed it as their first member. */
@@ -131,8 +141,9 @@ struct GMaterialClass {
     int (*is_delta)(const GMaterial *self, GSurfPoint *sp);
 };
 
-/** Fills the header of a new instance (refcount 1; flags GMAT_NO_EMISSION when the class has no emission slot,
- * else 0); G_ERR_VERSION when the class is of another version. */
+/** Fills the header of a new instance (refcount 1; flags: GMAT_NO_EMISSION when the class has no emission slot,
+ * GMAT_OPAQUE when it has no opaque slot, GMAT_GEOMETRIC_NORMAL when it has no normal slot); G_ERR_VERSION when
+ * the class is of another version. */
 GENERIC_API GENERIC_NODISCARD int gmaterial_init(GMaterial *m, const GMaterialClass *cls, const GColorModel *model, GError *err);
 /** Adds an owner; returns m. */
 GENERIC_API GMaterial *gmaterial_ref(GMaterial *m);
@@ -163,7 +174,8 @@ GENERIC_API int gmaterial_emits(const GMaterial *m);
 GENERIC_API GENERIC_NODISCARD int gmaterial_ambient(const GMaterial *m, GSurfPoint *sp, const GColor *illum, GColor *result);
 /** Light left after `length` in the material as a medium (m == NULL: vacuum, nothing absorbed). */
 GENERIC_API GENERIC_NODISCARD int gmaterial_absorption(const GMaterial *m, GSurfPoint *sp, const GColor *illum, double length, GColor *result);
-/** Shading normal (uncached; renderers call gsurfpoint_normal, which caches this). */
+/** Shading normal (uncached; renderers call gsurfpoint_normal, which caches this): sp->geometric_normal without
+ * a call to the class when m has GMAT_GEOMETRIC_NORMAL (or has no normal slot, or is NULL). */
 GENERIC_API GENERIC_NODISCARD int gmaterial_normal(const GMaterial *m, GSurfPoint *sp, GVec3 *n);
 /** Lambertian diffuse colour (for previews). */
 GENERIC_API GENERIC_NODISCARD int gmaterial_diffuse(const GMaterial *m, GSurfPoint *sp, GColor *result);

@@ -46,7 +46,8 @@ GENERIC_API GENERIC_NODISCARD int gtexnode_check(const char *node, GMaterial *co
 
 /** gtexnode_check and gtexnode_measure (messages naming the class), then a zeroed node of `size` bytes (a struct
  * that begins with its GMaterial) of class cls in the children's model into *out, with one reference, its depth
- * and cost set, GMAT_OPAQUE as gtexnode_inherit_opaque says for a class with the kit's opaque slot, and
+ * and cost set, GMAT_OPAQUE as gtexnode_inherit_opaque says for a class with the kit's opaque slot,
+ * GMAT_GEOMETRIC_NORMAL as gtexnode_inherit_geometric_normal says for a class with the kit's normal slot, and
  * GMAT_NO_EMISSION (material.h) when its emission is black: cls has no emission slot, or the
  * slot is the kit's gtexblendnode_emission or gtexchild_emission and every child has the bit (a blend class's
  * pick must blend only these children, a GTexChild's child must be the one given). A class with an emission method of its own gets the bit only from
@@ -73,6 +74,17 @@ GENERIC_API GENERIC_NODISCARD int gtexnode_children_opaque(GMaterial *const *chi
  * only asks its children (the transform node calls it after construction). Never for a node that can be
  * transparent where its children are not. */
 GENERIC_API void gtexnode_inherit_opaque(GMaterial *node, GMaterial *const *children, int n);
+
+/** 1 when each of the n children has GMAT_GEOMETRIC_NORMAL (material.h): a node whose normal is a child's or a
+ * normalised blend of its children's, asked at the point's own geometric normal (a moved copy of the point keeps
+ * it), then has the geometric normal everywhere. gtexnode_new_checked applies it to a class whose normal slot is
+ * the kit's gtexblendnode_normal or gtexchild_normal. */
+GENERIC_API GENERIC_NODISCARD int gtexnode_children_geometric_normal(GMaterial *const *children, int n);
+
+/** Sets GMAT_GEOMETRIC_NORMAL on node when gtexnode_children_geometric_normal(children, n): for a node class whose
+ * own normal method only asks its children at a point with the same geometric normal (the transform node calls it
+ * after construction). Never for a node that changes the normal (bump): a wrong bit flattens its pictures. */
+GENERIC_API void gtexnode_inherit_geometric_normal(GMaterial *node, GMaterial *const *children, int n);
 
 /** 1 for the methods whose colour carries light (reflection, refraction, emission, ambient, diffuse): the ones
  * a node that darkens or tints its child (scale, image) multiplies. */

@@ -69,7 +69,8 @@ typedef struct GSurfPoint {
 GENERIC_API void gsurfpoint_init(GSurfPoint *sp, const GColorModel *model, GScratch *scratch);
 /** Forgets every cached value (call after changing geometric fields of an initialised point). */
 GENERIC_API void gsurfpoint_invalidate(GSurfPoint *sp);
-/** Shading normal: the material's normal() computed once and cached (geometric normal without a material). */
+/** Shading normal: the material's normal() computed once and cached (the geometric normal without a material,
+ * and without a call when the material has GMAT_GEOMETRIC_NORMAL, material.h). */
 GENERIC_API GVec3 gsurfpoint_normal(GSurfPoint *sp);
 /** Overrides the cached shading normal. */
 GENERIC_API void gsurfpoint_set_normal(GSurfPoint *sp, GVec3 n);

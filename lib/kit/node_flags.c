@@ -1,6 +1,7 @@
-/* node_flags.c - the node kit's GMAT_NO_EMISSION and GMAT_OPAQUE (generic/node_kit.h): a node whose emission only
- * combines its children's emits nothing when none of them does, and one whose opacity is its children's is opaque
- * everywhere when each of them is, so the dispatch answers it without a call. */
+/* node_flags.c - the node kit's GMAT_NO_EMISSION, GMAT_OPAQUE and GMAT_GEOMETRIC_NORMAL (generic/node_kit.h): a
+ * node whose emission only combines its children's emits nothing when none of them does, one whose opacity is its
+ * children's is opaque everywhere when each of them is, and one whose normal blends its children's keeps the
+ * geometric normal when each of them does, so the dispatch answers it without a call. */
 #include "generic/node_kit.h"
 
 /* 1 when each of the n children has the GMAT_* bit `flag`. */
@@ -28,4 +29,15 @@ void gtexnode_inherit_opaque(GMaterial *node, GMaterial *const *children, int n)
 {
     if (node && gtexnode_children_opaque(children, n))
         node->flags |= GMAT_OPAQUE;
+}
+
+int gtexnode_children_geometric_normal(GMaterial *const *children, int n)
+{
+    return children_all(children, n, GMAT_GEOMETRIC_NORMAL);
+}
+
+void gtexnode_inherit_geometric_normal(GMaterial *node, GMaterial *const *children, int n)
+{
+    if (node && gtexnode_children_geometric_normal(children, n))
+        node->flags |= GMAT_GEOMETRIC_NORMAL;
 }
