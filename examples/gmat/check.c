@@ -26,6 +26,8 @@
  *   defaults     for every method the class leaves NULL, the value material.h documents.
  *   no-emission  for a material with GMAT_NO_EMISSION: its class's own emission slot is black (flags.c).
  *   opaque-flag  for a material with GMAT_OPAQUE: its class's own opaque slot says 1 (flags.c).
+ *   geometric-normal  for a material with GMAT_GEOMETRIC_NORMAL: its class's own normal slot gives the geometric
+ *                normal (flags.c).
  *   chi2, pdf integral, weight: the sampling slots (sampling.c). */
 #include "gmat.h"
 
@@ -531,6 +533,7 @@ int gmat_check(GmatContext *ctx, int samples)
     check_defaults(&k);
     gmat_check_no_emission(ctx, k.places, NPLACES, report_fn, &k);
     gmat_check_opaque_flag(ctx, k.places, NPLACES, report_fn, &k);
+    gmat_check_geometric_normal(ctx, k.places, NPLACES, report_fn, &k);
     gmat_check_sampling(ctx, k.places, NPLACES, 0, report_fn, &k);
     printf("%s: %s\n", ctx->material_name, k.failures ? "FAIL" : "PASS");
     gcolor_free(&k.a);

@@ -3,7 +3,9 @@
  * class's own slot directly, at the places of the finite check, above and below the surface:
  *   no-emission  with GMAT_NO_EMISSION: the largest |value| of any sample the emission slot returns over the
  *                finite check's directions (a failed call counts as infinite); must be black;
- *   opaque-flag  with GMAT_OPAQUE: how many calls of the opaque slot did not say 1; must be none.
+ *   opaque-flag  with GMAT_OPAQUE: how many calls of the opaque slot did not say 1; must be none;
+ *   geometric-normal  with GMAT_GEOMETRIC_NORMAL: the largest distance of the normal slot's vector from the
+ *                geometric normal (a failed call counts as infinite); at most 1e-9 (rounding only).
  * Nothing to check without the bit, or without the slot (the default is then what the bit says). */
 #include "gmat.h"
 
@@ -87,4 +89,38 @@ void gmat_check_opaque_flag(GmatContext *ctx, const GmatPlace *places, int nplac
     snprintf(detail, sizeof detail, "(GMAT_OPAQUE set: calls of the class's own opaque slot that did not say 1, of %d)",
              calls);
     report(checker, "opaque-flag", wrong, 0.0, detail);
+}
+
+void gmat_check_geometric_normal(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
+                                 void *checker)
+{
+    const GMaterial *m = ctx->material;
+    const double tol = 1e-9;
+    if (!(m->flags & GMAT_GEOMETRIC_NORMAL) || !m->cls->normal) {
+        report(checker, "geometric-normal", 0.0, tol,
+               !(m->flags & GMAT_GEOMETRIC_NORMAL)
+                   ? "(GMAT_GEOMETRIC_NORMAL not set: the normal slot is called)"
+                   : "(GMAT_GEOMETRIC_NORMAL set, no normal slot: the geometric normal, the default)");
+        return;
+    }
+    double worst = 0.0;
+    int calls = 0;
+    for (int p = 0; p < nplaces; p++) {
+        ctx->place = &places[p];
+        for (int below = 0; below < 2; below++) {
+            GSurfPoint sp;
+            gmat_surface_point(ctx, &sp, below);
+            GVec3 n = sp.geometric_normal;
+            int rc = m->cls->normal(m, &sp, &n);
+            double d = gvec3_length(gvec3_sub(n, sp.geometric_normal));
+            worst = fmax(worst, rc == G_OK && !isnan(d) ? d : INFINITY);
+            calls++;
+        }
+    }
+    ctx->place = NULL;
+    char detail[200];
+    snprintf(detail, sizeof detail,
+             "(GMAT_GEOMETRIC_NORMAL set: largest distance of the class's own normal from the geometric one, %d calls)",
+             calls);
+    report(checker, "geometric-normal", worst, tol, detail);
 }

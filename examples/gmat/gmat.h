@@ -76,6 +76,10 @@ void gmat_check_no_emission(GmatContext *ctx, const GmatPlace *places, int nplac
  * opaque slot at the places given, on both sides. */
 void gmat_check_opaque_flag(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
                             void *checker);
+/** The geometric-normal check of `gmat check` (flags.c): a material with GMAT_GEOMETRIC_NORMAL must get the
+ * geometric normal (within rounding) from its class's own normal slot at the places given, on both sides. */
+void gmat_check_geometric_normal(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
+                                 void *checker);
 /** The relative index n(from) / n(to) at sp as a colour, as a renderer hands it to refraction() (storage of the
  * model; temporaries on sp's arena). */
 int gmat_relative_index(GSurfPoint *sp, GColor *out);

@@ -103,6 +103,8 @@ static void usage(const char *cmd, FILE *f)
                    "  defaults     methods the class leaves out behave as material.h documents\n"
                    "  no-emission  a material flagged GMAT_NO_EMISSION gets black from its class's emission\n"
                    "  opaque-flag  a material flagged GMAT_OPAQUE gets 1 from its class's opaque slot\n"
+                   "  geometric-normal  a material flagged GMAT_GEOMETRIC_NORMAL gets the geometric normal\n"
+                   "               from its class's normal slot\n"
                    "Each is measured at several surface points (u, v, point and surface index vary).\n"
                    "  --samples N         albedo grid N x 2N (8..4096, default 64)\n\n%s",
                 common);

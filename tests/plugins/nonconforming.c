@@ -13,6 +13,9 @@
  *                renderers never see the glow: only the no-emission check of gmat check sees it;
  *   -DMISOPAQUE  material "misopaque_lambert": a Lambertian of albedo 0.5 whose opaque slot says 0 (it would let
  *                shadow rays through) while its instances set GMAT_OPAQUE: only the opaque-flag check sees it;
+ *   -DMISNORMAL  material "misnormal_lambert": a Lambertian of albedo 0.5 whose normal slot tilts the normal 30
+ *                degrees (as a bump would) while its instances set GMAT_GEOMETRIC_NORMAL, so renderers never see
+ *                the tilt: only the geometric-normal check sees it;
  *   -DBAD_BANDS  colour model "bad_bands": the same grey model with a correct add and two wavelength bands whose
  *                masks are both white, so the bands do not partition a value;
  *   -DBAD_ADD    colour model "bad_add": the grey model (luminance only) whose add returns 1.01 a + b, so
@@ -24,7 +27,8 @@
 
 GENERIC_MODULE_EXPORT const int generic_module_abi = GMODULE_ABI_VERSION;
 
-#if defined(GAIN) || defined(SKEWED) || defined(MISDRAWN) || defined(MISFLAGGED) || defined(MISOPAQUE)
+#if defined(GAIN) || defined(SKEWED) || defined(MISDRAWN) || defined(MISFLAGGED) || defined(MISOPAQUE) ||              \
+    defined(MISNORMAL)
 typedef struct Flat {
     GMaterial base;
 } Flat;
@@ -45,7 +49,7 @@ static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, cons
     double f = 1.5 / M_PI;
 #elif defined(MISDRAWN)
     double f = 0.8 / M_PI;
-#elif defined(MISFLAGGED) || defined(MISOPAQUE)
+#elif defined(MISFLAGGED) || defined(MISOPAQUE) || defined(MISNORMAL)
     double f = 0.5 / M_PI;
 #else
     double f = (0.25 + 0.5 * ci * ci) / M_PI;
@@ -61,6 +65,8 @@ static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, cons
 #define FLAT_NAME "misflagged_lambert"
 #elif defined(MISOPAQUE)
 #define FLAT_NAME "misopaque_lambert"
+#elif defined(MISNORMAL)
+#define FLAT_NAME "misnormal_lambert"
 #else
 #define FLAT_NAME "skewed_lambert"
 #endif
@@ -109,6 +115,19 @@ static int flat_opaque(const GMaterial *self, GSurfPoint *sp)
 }
 #endif
 
+#ifdef MISNORMAL
+/* The geometric normal tilted 30 degrees about a tangent; the instances are flagged GMAT_GEOMETRIC_NORMAL all the
+ * same (the error). */
+static int flat_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
+{
+    (void)self;
+    GVec3 g = sp->geometric_normal, t, b;
+    goptics_frame(g, &t, &b);
+    *n = gvec3_normalize(gvec3_add(gvec3_scale(g, cos(M_PI / 6)), gvec3_scale(t, sin(M_PI / 6))));
+    return G_OK;
+}
+#endif
+
 static const GMaterialClass flat_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = FLAT_NAME,
@@ -124,6 +143,9 @@ static const GMaterialClass flat_class = {
 #endif
 #ifdef MISOPAQUE
     .opaque = flat_opaque,
+#endif
+#ifdef MISNORMAL
+    .normal = flat_normal,
 #endif
 };
 
@@ -149,6 +171,9 @@ static int parse_flat(GReader *r, const void *vtable, void **object, GError *err
 #endif
 #ifdef MISOPAQUE
     m->base.flags |= GMAT_OPAQUE; /* the deliberate error: the class's opaque slot says 0 */
+#endif
+#ifdef MISNORMAL
+    m->base.flags |= GMAT_GEOMETRIC_NORMAL; /* the deliberate error: the class's normal slot tilts the normal */
 #endif
     *object = &m->base;
     return G_OK;

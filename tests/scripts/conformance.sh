@@ -16,7 +16,8 @@
 #     gmat check includes the sampling checks (chi2 of sample() against pdf(), the pdf's integral, the weights);
 #   - the modules of tests/plugins/nonconforming.c must be reported as failing, naming the broken property
 #     (misdrawn_lambert: chi2 alone; misflagged_lambert, whose glow a wrong GMAT_NO_EMISSION hides: no-emission
-#     alone; misopaque_lambert, whose transparency a wrong GMAT_OPAQUE hides: opaque-flag alone),
+#     alone; misopaque_lambert, whose transparency a wrong GMAT_OPAQUE hides: opaque-flag alone; misnormal_lambert,
+#     whose tilted normal a wrong GMAT_GEOMETRIC_NORMAL hides: geometric-normal alone),
 #     and the example modules (examples/plugins/) must pass.
 SRC=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=$(cd "${1:-build}" 2> /dev/null && pwd) || { echo "FAIL: no build directory ${1:-build}"; exit 1; }
@@ -140,6 +141,7 @@ echo "material m skewed_lambert" > "$TMP/skewed.mat"
 echo "material m misdrawn_lambert" > "$TMP/misdrawn.mat"
 echo "material m misflagged_lambert" > "$TMP/misflagged.mat"
 echo "material m misopaque_lambert" > "$TMP/misopaque.mat"
+echo "material m misnormal_lambert" > "$TMP/misnormal.mat"
 expect_fail "gain_lambert (albedo 1.5)" albedo "$GMAT" check "$TMP/gain.mat" m --plugin "$PLUGINS/gain.so"
 expect_fail "skewed_lambert (not reciprocal)" reciprocity "$GMAT" check "$TMP/skewed.mat" m --plugin "$PLUGINS/skewed.so"
 expect_fail "misdrawn_lambert (samples uniformly, pdf cos/pi)" chi2 "$GMAT" check "$TMP/misdrawn.mat" m --plugin "$PLUGINS/misdrawn.so"
@@ -147,6 +149,8 @@ expect_fail "misflagged_lambert (GMAT_NO_EMISSION on a glow)" no-emission "$GMAT
     --plugin "$PLUGINS/misflagged.so"
 expect_fail "misopaque_lambert (GMAT_OPAQUE on a transparent slot)" opaque-flag "$GMAT" check "$TMP/misopaque.mat" m \
     --plugin "$PLUGINS/misopaque.so"
+expect_fail "misnormal_lambert (GMAT_GEOMETRIC_NORMAL on a tilted normal)" geometric-normal "$GMAT" check \
+    "$TMP/misnormal.mat" m --plugin "$PLUGINS/misnormal.so"
 expect_fail "bad_add (wrong add)" "a + black = a" "$GCOLOR" check bad_add --plugin "$PLUGINS/bad_add.so"
 expect_fail "bad_bands (overlapping bands)" "bands partition a" "$GCOLOR" check bad_bands --plugin "$PLUGINS/bad_bands.so"
 
