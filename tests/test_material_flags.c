@@ -4,7 +4,10 @@
  *    weighted child's), and that it makes gmaterial_emission answer black without calling the class;
  *  - GMAT_OPAQUE: the same for opacity (every built-in but the dielectric; a node over glass has no bit and is
  *    transparent where the glass is blended in), and that it makes gmaterial_opaque answer 1 without the class;
- *  - the material interface's version rose with the header. */
+ *  - GMAT_GEOMETRIC_NORMAL: every built-in material has it (none has a normal slot), every kit node over such
+ *    children but bump, no node over a child that tilts the normal; it makes gmaterial_normal and gsurfpoint_normal
+ *    answer the geometric normal without calling the class, with the normals the class computes;
+ *  - the material interface's version rose with the header (and stayed for the normal bit). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -36,6 +39,7 @@ static int is_black(const GColor *c)
 
 static int dark(const GMaterial *m) { return (m->flags & GMAT_NO_EMISSION) != 0; }
 static int solid(const GMaterial *m) { return (m->flags & GMAT_OPAQUE) != 0; }
+static int flat(const GMaterial *m) { return (m->flags & GMAT_GEOMETRIC_NORMAL) != 0; }
 
 /* A lambert of grey reflectance r and an emitter of grey radiance e (two-sided) in f's model. */
 static GMaterial *lambert(Fix *f, double r)
@@ -98,6 +102,8 @@ static void test_leaf_materials(void **state)
         assert_int_equal(m->cls->opaque == NULL, want[i].opaque);
         assert_int_equal(solid(m), want[i].opaque);
         assert_int_equal(gmaterial_opaque_everywhere(m), want[i].opaque);
+        assert_null(m->cls->normal); /* no built-in material changes the normal */
+        assert_true(flat(m));
     }
     assert_int_equal(gmaterial_emits(NULL), 0);                /* vacuum emits nothing */
     assert_int_equal(gmaterial_opaque_everywhere(NULL), 0);    /* and lets light through */
@@ -357,6 +363,152 @@ static void test_opaque_bit_skips_the_class(void **state)
     gmaterial_unref(m);
 }
 
+/* ---- a class whose normal slot tilts the normal and counts its calls ---- */
+
+static int tilt_calls;
+
+static int tilt_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
+{
+    (void)self;
+    tilt_calls++;
+    *n = gvec3_normalize(gvec3_add(sp->geometric_normal, gvec3(0.5, 0, 0)));
+    return G_OK;
+}
+
+static const GMaterialClass tilt_class = {
+    .abi_version = GMATERIAL_ABI_VERSION, .name = "tilt", .description = "a tilted normal (tests)",
+    .destroy = glow_destroy, .normal = tilt_normal,
+};
+
+/* 1 when a and b are within 1e-12 (a blend of equal normals may round in its last bit). */
+static int same_dir(GVec3 a, GVec3 b) { return gvec3_length(gvec3_sub(a, b)) <= 1e-12; }
+
+/* The kit's nodes over lamberts have GMAT_GEOMETRIC_NORMAL, bump not; their class's own normal slot gives the
+ * geometric normal, as the dispatch now does without it, at points where the generator blends both children;
+ * bump's normal is still computed (and differs). Nodes over a tilting child or over bump have no bit. */
+static void test_normal_bit_of_nodes(void **state)
+{
+    Fix *f = *state;
+    GMaterial *a = lambert(f, 0.2), *b = lambert(f, 0.8), *c = lambert(f, 0.5), *n[8], *m[5];
+    GMaterial *t = gmem_calloc(1, sizeof *t);
+    GError err;
+    assert_int_equal(gmaterial_init(t, &tilt_class, f->rgb, &err), G_OK);
+    assert_false(flat(t)); /* a slot: the class decides */
+    CountGen *g = countgen_new(0.4);
+    plain_nodes(a, b, c, g, n);
+    for (int i = 0; i < 8; i++) {
+        assert_non_null(n[i]->cls->normal); /* the bit comes from the children, not a missing slot */
+        if (flat(n[i]) != (i != 4))
+            fail_msg("node %d (%s): GMAT_GEOMETRIC_NORMAL %d", i, gmaterial_name(n[i]), flat(n[i]));
+        for (int k = 0; k < 4; k++) {
+            GSurfPoint sp;
+            plane_point(&sp, f->rgb, f->scratch, 0.1 + 0.2 * k, 0.7 - 0.15 * k);
+            sp.geometric_normal = gvec3_normalize(gvec3(0.1 * k, -0.2, 1.0));
+            sp.material = n[i];
+            GVec3 own = gvec3(0, 0, 0), fast;
+            assert_int_equal(n[i]->cls->normal(n[i], &sp, &own), G_OK);
+            assert_int_equal(gmaterial_normal(n[i], &sp, &fast), G_OK);
+            assert_true(same_dir(own, fast));
+            assert_true(same_dir(own, gsurfpoint_normal(&sp)));
+            if (i != 4)
+                assert_true(same_dir(own, sp.geometric_normal));
+        }
+    }
+    /* bump over a node with the bit still tilts the normal (a height ramp along u: atan(0.5) towards -x) */
+    GGenerator *h;
+    GMaterial *bumped;
+    assert_int_equal(ggen_gradient_create(GGENERATOR_SPACE_UV, gvec3(0.5, 0, 0), 0.0, &h, &err), G_OK);
+    assert_int_equal(gnode_bump_create(n[0], h, 1.0, &bumped, &err), G_OK);
+    assert_false(flat(bumped));
+    GSurfPoint bp;
+    plane_point(&bp, f->rgb, f->scratch, 0.3, 0.4);
+    bp.material = bumped;
+    GVec3 nb = gsurfpoint_normal(&bp);
+    assert_float_equal(acos(nb.z), atan(0.5), 1e-12);
+    assert_true(nb.x < 0.0);
+    gmaterial_unref(bumped);
+    ggenerator_unref(h);
+    GAffine2 uv = gaffine2_rotate(30.0);
+    GMaterial *kids[3] = {a, t, b};
+    assert_int_equal(gnode_interpolate_create(a, t, &g->base, &m[0], &err), G_OK);
+    assert_int_equal(gnode_transform_create(t, &uv, NULL, &m[1], &err), G_OK);
+    assert_int_equal(gnode_scale_create(t, &g->base, &m[2], &err), G_OK);
+    assert_int_equal(gnode_select_create(kids, 3, &g->base, &m[3], &err), G_OK);
+    assert_int_equal(gnode_interpolate_create(n[4], b, &g->base, &m[4], &err), G_OK); /* over bump */
+    for (int i = 0; i < 5; i++)
+        if (flat(m[i]))
+            fail_msg("node %d (%s) over a tilting child has GMAT_GEOMETRIC_NORMAL", i, gmaterial_name(m[i]));
+    tilt_calls = 0;
+    GSurfPoint sp;
+    plane_point(&sp, f->rgb, f->scratch, 0.3, 0.4);
+    sp.material = m[1];
+    GVec3 tilted = gsurfpoint_normal(&sp);
+    assert_int_equal(tilt_calls, 1);
+    assert_false(same_dir(tilted, sp.geometric_normal));
+    for (int i = 4; i >= 0; i--)
+        gmaterial_unref(m[i]);
+    for (int i = 7; i >= 0; i--)
+        gmaterial_unref(n[i]);
+    gmaterial_unref(a);
+    gmaterial_unref(b);
+    gmaterial_unref(c);
+    gmaterial_unref(t);
+    ggenerator_unref(&g->base);
+}
+
+/* With the bit set by hand, gmaterial_normal and gsurfpoint_normal answer the geometric normal without calling the
+ * class, also through a node that inherits it (its pick does not run); cleared, the slot is called again. */
+static void test_normal_bit_skips_the_class(void **state)
+{
+    Fix *f = *state;
+    GMaterial *t = gmem_calloc(1, sizeof *t), *p = gmem_calloc(1, sizeof *p), *node = NULL;
+    GError err;
+    assert_int_equal(gmaterial_init(t, &tilt_class, f->rgb, &err), G_OK);
+    assert_int_equal(gmaterial_init(p, &plain_class, f->rgb, &err), G_OK);
+    assert_true(flat(p)); /* no slot: the geometric normal by default */
+    GSurfPoint sp;
+    plane_point(&sp, f->rgb, f->scratch, 0.3, 0.4);
+    sp.material = t;
+    tilt_calls = 0;
+    GVec3 n = gsurfpoint_normal(&sp);
+    assert_false(same_dir(n, sp.geometric_normal));
+    n = gsurfpoint_normal(&sp); /* cached */
+    assert_int_equal(tilt_calls, 1);
+    t->flags |= GMAT_GEOMETRIC_NORMAL;
+    gsurfpoint_invalidate(&sp);
+    n = gsurfpoint_normal(&sp);
+    assert_true(n.x == 0.0 && n.y == 0.0 && n.z == 1.0);
+    assert_int_equal(gmaterial_normal(t, &sp, &n), G_OK);
+    assert_true(n.x == 0.0 && n.y == 0.0 && n.z == 1.0);
+    assert_int_equal(tilt_calls, 1); /* not called */
+
+    CountGen *g = countgen_new(0.5);
+    assert_int_equal(gnode_interpolate_create(t, p, &g->base, &node, &err), G_OK);
+    assert_true(flat(node));
+    GSurfPoint q;
+    plane_point(&q, f->rgb, f->scratch, 0.3, 0.4);
+    q.material = node;
+    n = gsurfpoint_normal(&q);
+    assert_true(n.x == 0.0 && n.y == 0.0 && n.z == 1.0);
+    assert_int_equal(tilt_calls, 1);
+    assert_int_equal(g->calls, 0); /* not even the node's pick ran */
+    gmaterial_unref(node);
+
+    /* cleared again (always safe): the class is called, through the node only once rebuilt */
+    t->flags &= ~(unsigned)GMAT_GEOMETRIC_NORMAL;
+    assert_int_equal(gnode_interpolate_create(t, p, &g->base, &node, &err), G_OK);
+    assert_false(flat(node));
+    plane_point(&q, f->rgb, f->scratch, 0.3, 0.4);
+    q.material = node;
+    n = gsurfpoint_normal(&q);
+    assert_false(same_dir(n, q.geometric_normal));
+    assert_int_equal(tilt_calls, 2);
+    gmaterial_unref(node);
+    ggenerator_unref(&g->base);
+    gmaterial_unref(t);
+    gmaterial_unref(p);
+}
+
 /* The header grew, so the interface version rose to 4: a class of version 3 is refused, naming both. */
 static void test_interface_version(void **state)
 {
@@ -381,6 +533,8 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_nodes_with_an_emitter, setup, teardown),
         cmocka_unit_test_setup_teardown(test_bit_skips_the_class, setup, teardown),
         cmocka_unit_test_setup_teardown(test_opaque_bit_skips_the_class, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_normal_bit_of_nodes, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_normal_bit_skips_the_class, setup, teardown),
         cmocka_unit_test(test_interface_version),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
