@@ -78,13 +78,18 @@ GENERIC_API void gtexnode_inherit_opaque(GMaterial *node, GMaterial *const *chil
 /** 1 when each of the n children has GMAT_GEOMETRIC_NORMAL (material.h): a node whose normal is a child's or a
  * normalised blend of its children's, asked at the point's own geometric normal (a moved copy of the point keeps
  * it), then has the geometric normal everywhere. gtexnode_new_checked applies it to a class whose normal slot is
- * the kit's gtexblendnode_normal or gtexchild_normal. */
+ * the kit's gtexblendnode_normal or gtexchild_normal (gtexnode_inherit_kit_normal). */
 GENERIC_API GENERIC_NODISCARD int gtexnode_children_geometric_normal(GMaterial *const *children, int n);
 
 /** Sets GMAT_GEOMETRIC_NORMAL on node when gtexnode_children_geometric_normal(children, n): for a node class whose
  * own normal method only asks its children at a point with the same geometric normal (the transform node calls it
  * after construction). Never for a node that changes the normal (bump): a wrong bit flattens its pictures. */
 GENERIC_API void gtexnode_inherit_geometric_normal(GMaterial *node, GMaterial *const *children, int n);
+
+/** gtexnode_inherit_geometric_normal for a node whose class's normal slot is the kit's gtexblendnode_normal or
+ * gtexchild_normal (their normal is a child's or a blend of the children's at the same point); nothing for any
+ * other slot. gtexnode_new_checked calls it. */
+GENERIC_API void gtexnode_inherit_kit_normal(GMaterial *node, GMaterial *const *children, int n);
 
 /** 1 for the methods whose colour carries light (reflection, refraction, emission, ambient, diffuse): the ones
  * a node that darkens or tints its child (scale, image) multiplies. */

@@ -41,3 +41,9 @@ void gtexnode_inherit_geometric_normal(GMaterial *node, GMaterial *const *childr
     if (node && gtexnode_children_geometric_normal(children, n))
         node->flags |= GMAT_GEOMETRIC_NORMAL;
 }
+
+void gtexnode_inherit_kit_normal(GMaterial *node, GMaterial *const *children, int n)
+{
+    if (node && (node->cls->normal == gtexblendnode_normal || node->cls->normal == gtexchild_normal))
+        gtexnode_inherit_geometric_normal(node, children, n);
+}
