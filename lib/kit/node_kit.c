@@ -124,8 +124,7 @@ int gtexnode_new_checked(const GMaterialClass *cls, GMaterial *const *children, 
             gtexnode_inherit_no_emission(*out, children, n);
         if (cls->opaque == gtexblendnode_opaque || cls->opaque == gtexchild_opaque) /* opaque where they all are */
             gtexnode_inherit_opaque(*out, children, n);
-        if (cls->normal == gtexblendnode_normal || cls->normal == gtexchild_normal) /* blends of their normals */
-            gtexnode_inherit_geometric_normal(*out, children, n);
+        gtexnode_inherit_kit_normal(*out, children, n); /* the kit's normal slots: blends of their normals */
     }
     return rc;
 }
