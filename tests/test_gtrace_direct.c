@@ -207,7 +207,15 @@ static void test_direct_untraceable(void **state)
         Ray bad[] = {{gvec3(NAN, 0, 5), gvec3(0, 0, -1), 0.0, INFINITY, 0.0, 0.0},
                      {gvec3(0, 0, 5), gvec3(0, INFINITY, -1), 0.0, INFINITY, 0.0, 0.0},
                      {gvec3(0, 0, 5), gvec3(0, 0, -1), -1.0, INFINITY, 0.0, 0.0},
-                     {gvec3(0, 0, 5), gvec3(0, 0, -1), 2.0, 1.0, 0.0, 0.0}};
+                     {gvec3(0, 0, 5), gvec3(0, 0, -1), 2.0, 1.0, 0.0, 0.0},
+                     /* each of the six components beyond 1e18, or not a number */
+                     {gvec3(0, -1e18, 5), gvec3(0, 0, -1), 0.0, INFINITY, 0.0, 0.0},
+                     {gvec3(0, 0, 2e18), gvec3(0, 0, -1), 0.0, INFINITY, 0.0, 0.0},
+                     {gvec3(0, 0, 5), gvec3(-1e19, 0, -1), 0.0, INFINITY, 0.0, 0.0},
+                     {gvec3(0, 0, 5), gvec3(0, 0, NAN), 0.0, INFINITY, 0.0, 0.0},
+                     {gvec3(-INFINITY, 0, 5), gvec3(0, 0, -1), 0.0, INFINITY, 0.0, 0.0},
+                     {gvec3(0, 0, 5), gvec3(0, 0, -1), NAN, INFINITY, 0.0, 0.0},
+                     {gvec3(0, 0, 5), gvec3(0, 0, -1), 3.5e38, INFINITY, 0.0, 0.0}};
         for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
             Hit h;
             assert_int_equal(accel_intersect(s, &bad[i], &h), 0);
@@ -218,6 +226,14 @@ static void test_direct_untraceable(void **state)
         assert_int_equal(accel_intersect(s, &good, &h), 1);
         assert_near(h.t, 4.0, 1e-12);
         assert_int_equal(accel_occluded(s, &good), OCCLUDED_OPAQUE);
+        /* just below the limit (the direct list finds the sphere; Embree's float ray may not), and a NaN tmax
+         * (not below tmin; unlimited as infinity): traced */
+        Ray near_big = {gvec3(0, 0, 9.9e17), gvec3(0, 0, -1), 0.0, INFINITY, 0.0, 0.0};
+        if (!embree)
+            assert_int_equal(accel_intersect(s, &near_big, &h), 1);
+        Ray nan_tmax = {gvec3(0, 0, 5), gvec3(0, 0, -1), 0.0, NAN, 0.0, 0.0};
+        assert_int_equal(accel_intersect(s, &nan_tmax, &h), 1);
+        assert_near(h.t, 4.0, 1e-12);
     }
     scene_destroy(s);
 }
