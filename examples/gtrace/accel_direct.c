@@ -39,6 +39,7 @@
 /* One shape of the direct list. */
 typedef struct DirectEntry {
     const Object *obj;
+    int plain;        /* SHAPE_SPHERE or SHAPE_PLANE without a transform (intersected inline), else -1 */
     int opaque;       /* its material blocks all light (gmaterial_opaque_everywhere) */
     int opaque_later; /* an opaque entry follows this one (occlusion stops at a passable one otherwise) */
 } DirectEntry;
@@ -105,6 +106,7 @@ int accel_direct_build(Scene *s, GError *err)
         hi[2 + k % 2] = whi.y + pad;
         hi[4 + k % 2] = whi.z + pad;
         d->e[k].obj = o;
+        d->e[k].plain = !o->has_xf && (o->kind == SHAPE_SPHERE || o->kind == SHAPE_PLANE) ? (int)o->kind : -1;
         d->e[k].opaque = gmaterial_opaque_everywhere(o->material) != 0;
         k++;
     }
@@ -162,15 +164,23 @@ static inline unsigned boxes_met(const AccelDirect *d, int n, const Ray *r, doub
     return met & ((1u << n) - 1u);
 }
 
-/* The ray in o's own space (to_object of accel.c without a placement). */
-static void in_object(const Object *o, const Ray *r, GVec3 *ro, GVec3 *rd)
+/* r against e's shape within (r->tmin, tmax): shape_intersect in the shape's own space, with an untransformed
+ * sphere or plane intersected inline (the same arithmetic, so the same t). */
+static inline int entry_hit(const DirectEntry *e, const Ray *r, double tmax, double *t, int *surface)
 {
-    *ro = r->o;
-    *rd = r->d;
-    if (o->has_xf) {
-        *ro = xform_inv_point(&o->xf, *ro);
-        *rd = xform_inv_vector(&o->xf, *rd);
+    const Object *o = e->obj;
+    if (e->plain == SHAPE_SPHERE) {
+        *surface = 0;
+        return shape_hit_sphere(o, r->o, r->d, r->tmin, tmax, t);
     }
+    if (e->plain == SHAPE_PLANE) {
+        *surface = 0;
+        return shape_hit_plane(o, r->o, r->d, r->tmin, tmax, t);
+    }
+    if (!o->has_xf)
+        return shape_intersect(o, r->o, r->d, r->tmin, tmax, t, surface);
+    return shape_intersect(o, xform_inv_point(&o->xf, r->o), xform_inv_vector(&o->xf, r->d), r->tmin, tmax, t,
+                           surface);
 }
 
 /* Not inlined (nor accel_direct_occluded) into accel.c's entry points: inlined, they cost the Embree path of
@@ -188,11 +198,9 @@ __attribute__((noinline)) int accel_direct_intersect(const Scene *s, const Ray *
         if (!(near[i] <= best)) /* the box lies beyond the closest hit so far */
             continue;
         const DirectEntry *e = &s->direct->e[i];
-        GVec3 ro, rd;
-        in_object(e->obj, r, &ro, &rd);
         double t;
         int surface;
-        if (shape_intersect(e->obj, ro, rd, r->tmin, best, &t, &surface)) {
+        if (entry_hit(e, r, best, &t, &surface)) {
             best = t;
             hit = e;
             hit_surface = surface;
@@ -218,11 +226,9 @@ __attribute__((noinline)) int accel_direct_occluded(const Scene *s, const Ray *r
     while (met) {
         const DirectEntry *e = &s->direct->e[__builtin_ctz(met)];
         met &= met - 1u;
-        GVec3 ro, rd;
-        in_object(e->obj, r, &ro, &rd);
         double t;
         int surface;
-        if (!shape_intersect(e->obj, ro, rd, r->tmin, r->tmax, &t, &surface))
+        if (!entry_hit(e, r, r->tmax, &t, &surface))
             continue;
         if (e->opaque)
             return OCCLUDED_OPAQUE;
