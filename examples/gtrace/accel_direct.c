@@ -35,6 +35,7 @@
 #ifndef ACCEL_DIRECT_MAX
 #define ACCEL_DIRECT_MAX 8
 #endif
+_Static_assert(ACCEL_DIRECT_MAX >= 0 && ACCEL_DIRECT_MAX <= 31, "the entries met are the bits of an unsigned");
 
 /* One shape of the direct list. */
 typedef struct DirectEntry {
