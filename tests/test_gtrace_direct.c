@@ -47,8 +47,8 @@ static Object *add_random_shape(Scene *s, Rng *g, ShapeKind kind, GMaterial *m)
     return o;
 }
 
-/* A random ray: from anywhere, from inside a shape's box, at a shape, or grazing a shape's box; tmax unlimited,
- * large or short. */
+/* A random ray: from anywhere, from inside a shape's box, at a shape, or grazing a shape's box, sometimes from a
+ * point of a shape's box or parallel to an axis; tmax unlimited, large or short. */
 static Ray random_ray(const Scene *s, Rng *g)
 {
     Ray r = {gvec3(uni(g, -6, 6), uni(g, -6, 6), uni(g, -6, 6)), unit(g), 0.0, INFINITY, 0.0, 0.0};
@@ -79,6 +79,16 @@ static Ray random_ray(const Scene *s, Rng *g)
         break;
     }
     }
+    if (rng_next(g) < 0.1) { /* from a point of the shape's box (a face, an edge or a corner) */
+        r.o = gvec3(rng_next(g) < 0.5 ? lo.x : hi.x, rng_next(g) < 0.5 ? lo.y : hi.y, uni(g, lo.z, hi.z));
+        if (rng_next(g) < 0.5)
+            r.o.x = mid.x;
+    }
+    if (rng_next(g) < 0.1) { /* parallel to an axis (zero components: the slab tests' reciprocals) */
+        int axis = (int)(rng_next(g) * 3);
+        double sgn = rng_next(g) < 0.5 ? -1.0 : 1.0;
+        r.d = gvec3(axis == 0 ? sgn : 0.0, axis == 1 ? sgn : 0.0, axis == 2 ? sgn : 0.0);
+    }
     double u = rng_next(g);
     r.tmin = rng_next(g) < 0.5 ? 0.0 : 1e-4;
     r.tmax = u < 0.4 ? INFINITY : u < 0.5 ? 1e30 : uni(g, 0.0, 12.0);
@@ -101,6 +111,20 @@ static int opaque_on(const Scene *s, const Ray *r)
             return 1;
     }
     return 0;
+}
+
+/* The t at which r meets o in o's own space within (tmin, tmax) by shape_intersect itself (INFINITY: none), for
+ * the direct list's t to be compared bit for bit. */
+static double shape_t(const Object *o, const Ray *r)
+{
+    GVec3 ro = r->o, rd = r->d;
+    if (o->has_xf) {
+        ro = xform_inv_point(&o->xf, ro);
+        rd = xform_inv_vector(&o->xf, rd);
+    }
+    double t;
+    int surface;
+    return shape_intersect(o, ro, rd, r->tmin, r->tmax < 3.0e38 ? r->tmax : INFINITY, &t, &surface) ? t : INFINITY;
 }
 
 typedef struct Traced {
@@ -170,6 +194,9 @@ static void test_direct_matches_embree(void **state)
                 assert_int_equal(a->h.surface, b->h.surface);
                 assert_int_equal(a->h.prim, b->h.prim);
                 assert_near(a->h.t, b->h.t, 1e-9 * fmax(1.0, fabs(b->h.t)));
+                double ts = shape_t(a->h.obj, &rays[i]); /* bit for bit, the inline sphere and plane included */
+                if (a->h.t != ts)
+                    fail_msg("scene %d ray %d: direct t %.17g, shape_intersect %.17g", sc, i, a->h.t, ts);
             }
             if ((a->occ == OCCLUDED_CLEAR) != (b->occ == OCCLUDED_CLEAR))
                 fail_msg("scene %d ray %d: direct occlusion %d, Embree %d", sc, i, a->occ, b->occ);
@@ -207,7 +234,15 @@ static void test_direct_untraceable(void **state)
         Ray bad[] = {{gvec3(NAN, 0, 5), gvec3(0, 0, -1), 0.0, INFINITY, 0.0, 0.0},
                      {gvec3(0, 0, 5), gvec3(0, INFINITY, -1), 0.0, INFINITY, 0.0, 0.0},
                      {gvec3(0, 0, 5), gvec3(0, 0, -1), -1.0, INFINITY, 0.0, 0.0},
-                     {gvec3(0, 0, 5), gvec3(0, 0, -1), 2.0, 1.0, 0.0, 0.0}};
+                     {gvec3(0, 0, 5), gvec3(0, 0, -1), 2.0, 1.0, 0.0, 0.0},
+                     /* each of the six components beyond 1e18, or not a number */
+                     {gvec3(0, -1e18, 5), gvec3(0, 0, -1), 0.0, INFINITY, 0.0, 0.0},
+                     {gvec3(0, 0, 2e18), gvec3(0, 0, -1), 0.0, INFINITY, 0.0, 0.0},
+                     {gvec3(0, 0, 5), gvec3(-1e19, 0, -1), 0.0, INFINITY, 0.0, 0.0},
+                     {gvec3(0, 0, 5), gvec3(0, 0, NAN), 0.0, INFINITY, 0.0, 0.0},
+                     {gvec3(-INFINITY, 0, 5), gvec3(0, 0, -1), 0.0, INFINITY, 0.0, 0.0},
+                     {gvec3(0, 0, 5), gvec3(0, 0, -1), NAN, INFINITY, 0.0, 0.0},
+                     {gvec3(0, 0, 5), gvec3(0, 0, -1), 3.5e38, INFINITY, 0.0, 0.0}};
         for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
             Hit h;
             assert_int_equal(accel_intersect(s, &bad[i], &h), 0);
@@ -218,6 +253,14 @@ static void test_direct_untraceable(void **state)
         assert_int_equal(accel_intersect(s, &good, &h), 1);
         assert_near(h.t, 4.0, 1e-12);
         assert_int_equal(accel_occluded(s, &good), OCCLUDED_OPAQUE);
+        /* just below the limit (the direct list finds the sphere; Embree's float ray may not), and a NaN tmax
+         * (not below tmin; unlimited as infinity): traced */
+        Ray near_big = {gvec3(0, 0, 9.9e17), gvec3(0, 0, -1), 0.0, INFINITY, 0.0, 0.0};
+        if (!embree)
+            assert_int_equal(accel_intersect(s, &near_big, &h), 1);
+        Ray nan_tmax = {gvec3(0, 0, 5), gvec3(0, 0, -1), 0.0, NAN, 0.0, 0.0};
+        assert_int_equal(accel_intersect(s, &nan_tmax, &h), 1);
+        assert_near(h.t, 4.0, 1e-12);
     }
     scene_destroy(s);
 }

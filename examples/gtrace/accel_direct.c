@@ -2,9 +2,11 @@
  *
  * Embree's per-ray cost (setting up the ray, the context and the traversal, and calling back into the user
  * geometry) exceeds testing every shape when the scene holds only a few analytic ones, so such a scene keeps
- * a flat array of its shapes with each shape's padded world bounds: a ray tests the box of each entry (a
- * slab test against [tmin, closest hit so far]) and intersects only the shapes whose box it meets, in double
- * precision in the shape's own space exactly as Embree's user-geometry callbacks do (accel.c). The hit is
+ * a flat array of its shapes with each shape's padded world bounds. A ray tests the boxes of all entries at
+ * once (slab tests against [tmin, tmax], two entries side by side in SSE2 doubles, bit for bit the scalar
+ * test), then, in the scene's order, skips an entry whose box begins beyond the closest hit so far and
+ * intersects the others in double precision in the shape's own space exactly as Embree's user-geometry
+ * callbacks do (accel.c). The hit is
  * therefore the one the Embree path finds, with the same double t, but for two kinds of near ties: Embree
  * narrows its ray to the single-precision t of a hit, so a second shape hit within float rounding (about 6e-8
  * relative) behind the first may be missed by Embree and found here; and of two shapes hit at exactly the same
@@ -19,26 +21,46 @@
 #include "accel_direct.h"
 #include "accel.h"
 
+#include <emmintrin.h>
 #include <math.h>
 
 /* The largest scene (in shapes) traced through the direct list: where it stops paying. Measured with callgrind
- * (whole process, millions of instructions, 1 thread, 320x240, depth 8; a checker plane and k lambert spheres
- * on a grid across the view, one point light; the pictures of both paths byte-identical):
- *   shapes (k + 1)   2      3      5      6      7      8      9      17     33     65
- *   Embree         344.3  340.9  338.0  342.7  342.7  342.1  342.5  346.5  347.0  348.8
- *   direct         306.2  310.6  319.8  329.8  335.5  340.5  346.0  391.8  484.5  665.9
- * Each entry costs about 40 instructions a ray for its box test (and a shape test when the box is met): up to
- * 8 shapes that is less than Embree's cost per ray, from 9 on more. */
+ * (whole process, millions of instructions, 1 thread, 320x240, depth 8; a checker plane and k lambert spheres,
+ * radius up to 1, on a grid across x in [-3, 3] and z in [-2, 2] seen from <0, 2.2, 8>, one point light; the
+ * pictures of both paths byte-identical):
+ *   shapes (k + 1)   2      3      5      6      8      9      12     13     14     15     16     17     25     31
+ *   Embree         254.2  252.1  251.6  251.5  253.8  254.8  256.4  257.1  257.1  257.8  258.0  257.6  258.8  258.8
+ *   direct         217.2  220.2  225.0  224.7  232.9  238.0  245.4  250.9  250.8  256.3  256.2  262.9  284.9  302.5
+ * The box tests of two entries cost about 40 instructions a ray (and a shape test follows when a box is met):
+ * up to 16 shapes that is less than Embree's cost per ray, from 17 on more. With one entry's box test at a
+ * time the threshold was 8 (a heavier scene then: 342.1 Embree against 340.5 direct at 8 shapes, 342.5 against
+ * 346.0 at 9). */
 #ifndef ACCEL_DIRECT_MAX
-#define ACCEL_DIRECT_MAX 8
+#define ACCEL_DIRECT_MAX 16
 #endif
+_Static_assert(ACCEL_DIRECT_MAX >= 0 && ACCEL_DIRECT_MAX <= 31, "the entries met are the bits of an unsigned");
 
 /* One shape of the direct list. */
-typedef struct AccelDirect {
-    double b[6]; /* padded world bounds, as Embree gets them (user_bounds in accel.c): lo x y z, hi x y z */
+typedef struct DirectEntry {
     const Object *obj;
+    int plain;        /* SHAPE_SPHERE or SHAPE_PLANE without a transform (intersected inline), else -1 */
     int opaque;       /* its material blocks all light (gmaterial_opaque_everywhere) */
     int opaque_later; /* an opaque entry follows this one (occlusion stops at a passable one otherwise) */
+} DirectEntry;
+
+/* The padded world bounds of two entries (2k and 2k + 1) as Embree gets them (user_bounds in accel.c), one
+ * axis a vector: their box tests run side by side in the two lanes. */
+typedef struct DirectPair {
+    __m128d lo[3], hi[3];
+} DirectPair;
+
+#define DIRECT_PAIRS ((ACCEL_DIRECT_MAX + 1) / 2)
+
+/* The direct list (s->direct): the entries in the scene's order and their bounds in pairs (the lane of a
+ * missing last entry holds zeros and is masked off). */
+typedef struct AccelDirect {
+    DirectPair pair[DIRECT_PAIRS];
+    DirectEntry e[2 * DIRECT_PAIRS];
 } AccelDirect;
 
 /* 1 for the shapes the direct list holds: the analytic ones. */
@@ -67,7 +89,7 @@ int accel_direct_build(Scene *s, GError *err)
         if (!direct_kind(o) || ++n > ACCEL_DIRECT_MAX)
             return G_OK;
     }
-    AccelDirect *d = gmem_calloc(n ? (size_t)n : 1, sizeof *d);
+    AccelDirect *d = gmem_calloc(1, sizeof *d); /* malloc's alignment (16 bytes) suits the vectors */
     if (!d)
         return gerror_set(err, G_ERR_NOMEM, "out of memory");
     int k = 0;
@@ -75,24 +97,26 @@ int accel_direct_build(Scene *s, GError *err)
         const Object *o = s->objects[i];
         if (o->is_part)
             continue;
-        AccelDirect *e = &d[k++];
         GVec3 wlo, whi;
         object_world_bounds(o, &wlo, &whi);
         /* the padding of user_bounds (accel.c): flat shapes and rounding lose no hits */
         double pad = 1e-6 * (1.0 + fmax(fmax(fabs(wlo.x), fabs(whi.x)), fmax(fmax(fabs(wlo.y), fabs(whi.y)),
                                                                           fmax(fabs(wlo.z), fabs(whi.z)))));
-        e->b[0] = wlo.x - pad;
-        e->b[1] = wlo.y - pad;
-        e->b[2] = wlo.z - pad;
-        e->b[3] = whi.x + pad;
-        e->b[4] = whi.y + pad;
-        e->b[5] = whi.z + pad;
-        e->obj = o;
-        e->opaque = gmaterial_opaque_everywhere(o->material) != 0;
+        double *lo = (double *)d->pair[k / 2].lo, *hi = (double *)d->pair[k / 2].hi;
+        lo[0 + k % 2] = wlo.x - pad;
+        lo[2 + k % 2] = wlo.y - pad;
+        lo[4 + k % 2] = wlo.z - pad;
+        hi[0 + k % 2] = whi.x + pad;
+        hi[2 + k % 2] = whi.y + pad;
+        hi[4 + k % 2] = whi.z + pad;
+        d->e[k].obj = o;
+        d->e[k].plain = !o->has_xf && (o->kind == SHAPE_SPHERE || o->kind == SHAPE_PLANE) ? (int)o->kind : -1;
+        d->e[k].opaque = gmaterial_opaque_everywhere(o->material) != 0;
+        k++;
     }
     for (int i = n - 2, later = 0; i >= 0; i--) {
-        later |= d[i + 1].opaque;
-        d[i].opaque_later = later;
+        later |= d->e[i + 1].opaque;
+        d->e[i].opaque_later = later;
     }
     s->direct = d;
     s->ndirect = n;
@@ -108,12 +132,6 @@ void accel_direct_release(Scene *s)
 
 int accel_uses_direct(const Scene *s) { return s->direct != NULL; }
 
-/* The ray's origin and reciprocal direction for the slab tests. A zero component's reciprocal is +-1e300
- * rather than infinite, so that no product is 0 * inf (a ray in a box's face plane stays in). */
-typedef struct SlabRay {
-    double o[3], inv[3];
-} SlabRay;
-
 /* x clamped to [-1e300, 1e300] (minsd and maxsd: no call, no branch). */
 static inline double clamp_big(double x)
 {
@@ -121,80 +139,82 @@ static inline double clamp_big(double x)
     return x > -1e300 ? x : -1e300;
 }
 
-static inline void slab_ray(const Ray *r, SlabRay *sr)
+/* The box tests of every entry against r within [tmin, tf] (a NaN tf meets nothing): bit i of the result is
+ * set when entry i's box is met, and near[i] is the parameter where the ray enters it. A component of the
+ * direction that is zero has the reciprocal +-1e300 rather than an infinity, so that no product is 0 * inf (a
+ * ray in a box's face plane stays in) and none is a NaN: min and max below are minpd and maxpd, and each lane
+ * computes exactly what a scalar slab test computes. */
+static inline unsigned boxes_met(const AccelDirect *d, int n, const Ray *r, double tf, double *near)
 {
-    sr->o[0] = r->o.x;
-    sr->o[1] = r->o.y;
-    sr->o[2] = r->o.z;
-    sr->inv[0] = clamp_big(1.0 / r->d.x);
-    sr->inv[1] = clamp_big(1.0 / r->d.y);
-    sr->inv[2] = clamp_big(1.0 / r->d.z);
-}
-
-/* The parameters at which the ray crosses the two planes of one axis of a box, in order. */
-#define SLAB_AXIS(e, sr, i, lo, hi)                                                                               \
-    do {                                                                                                           \
-        double a_ = ((e)->b[i] - (sr)->o[i]) * (sr)->inv[i], b_ = ((e)->b[(i) + 3] - (sr)->o[i]) * (sr)->inv[i];   \
-        lo = a_ < b_ ? a_ : b_;                                                                                    \
-        hi = a_ < b_ ? b_ : a_;                                                                                    \
-    } while (0)
-
-/* 1 when the ray meets e's box within [tn, tf] (a NaN tf meets nothing). No product is a NaN, so the
- * comparisons below are minsd and maxsd. */
-static inline int slab_hit(const AccelDirect *e, const SlabRay *sr, double tn, double tf)
-{
-    double n0, f0, n1, f1, n2, f2;
-    SLAB_AXIS(e, sr, 0, n0, f0);
-    SLAB_AXIS(e, sr, 1, n1, f1);
-    SLAB_AXIS(e, sr, 2, n2, f2);
-    tn = n0 > tn ? n0 : tn;
-    tn = n1 > tn ? n1 : tn;
-    tn = n2 > tn ? n2 : tn;
-    tf = f0 < tf ? f0 : tf;
-    tf = f1 < tf ? f1 : tf;
-    tf = f2 < tf ? f2 : tf;
-    return tn <= tf;
-}
-
-/* The ray in o's own space (to_object of accel.c without a placement). */
-static void in_object(const Object *o, const Ray *r, GVec3 *ro, GVec3 *rd)
-{
-    *ro = r->o;
-    *rd = r->d;
-    if (o->has_xf) {
-        *ro = xform_inv_point(&o->xf, *ro);
-        *rd = xform_inv_vector(&o->xf, *rd);
+    const __m128d ox = _mm_set1_pd(r->o.x), oy = _mm_set1_pd(r->o.y), oz = _mm_set1_pd(r->o.z);
+    const __m128d ix = _mm_set1_pd(clamp_big(1.0 / r->d.x)), iy = _mm_set1_pd(clamp_big(1.0 / r->d.y)),
+                  iz = _mm_set1_pd(clamp_big(1.0 / r->d.z));
+    const __m128d tn0 = _mm_set1_pd(r->tmin), tf0 = _mm_set1_pd(tf);
+    unsigned met = 0;
+    for (int p = 0; 2 * p < n; p++) {
+        const DirectPair *b = &d->pair[p];
+        __m128d ax = _mm_mul_pd(_mm_sub_pd(b->lo[0], ox), ix), bx = _mm_mul_pd(_mm_sub_pd(b->hi[0], ox), ix);
+        __m128d ay = _mm_mul_pd(_mm_sub_pd(b->lo[1], oy), iy), by = _mm_mul_pd(_mm_sub_pd(b->hi[1], oy), iy);
+        __m128d az = _mm_mul_pd(_mm_sub_pd(b->lo[2], oz), iz), bz = _mm_mul_pd(_mm_sub_pd(b->hi[2], oz), iz);
+        /* _mm_max_pd(a, t) is a > t ? a : t and _mm_min_pd(a, t) is a < t ? a : t: a NaN tf stays */
+        __m128d tn = _mm_max_pd(_mm_min_pd(ax, bx), tn0), tf_ = _mm_min_pd(_mm_max_pd(ax, bx), tf0);
+        tn = _mm_max_pd(_mm_min_pd(ay, by), tn);
+        tf_ = _mm_min_pd(_mm_max_pd(ay, by), tf_);
+        tn = _mm_max_pd(_mm_min_pd(az, bz), tn);
+        tf_ = _mm_min_pd(_mm_max_pd(az, bz), tf_);
+        _mm_storeu_pd(near + 2 * p, tn);
+        met |= (unsigned)_mm_movemask_pd(_mm_cmple_pd(tn, tf_)) << (2 * p);
     }
+    return met & ((1u << n) - 1u);
+}
+
+/* r against e's shape within (r->tmin, tmax): shape_intersect in the shape's own space, with an untransformed
+ * sphere or plane intersected inline (the same arithmetic, so the same t). */
+static inline int entry_hit(const DirectEntry *e, const Ray *r, double tmax, double *t, int *surface)
+{
+    const Object *o = e->obj;
+    if (e->plain == SHAPE_SPHERE) {
+        *surface = 0;
+        return shape_hit_sphere(o, r->o, r->d, r->tmin, tmax, t);
+    }
+    if (e->plain == SHAPE_PLANE) {
+        *surface = 0;
+        return shape_hit_plane(o, r->o, r->d, r->tmin, tmax, t);
+    }
+    if (!o->has_xf)
+        return shape_intersect(o, r->o, r->d, r->tmin, tmax, t, surface);
+    return shape_intersect(o, xform_inv_point(&o->xf, r->o), xform_inv_vector(&o->xf, r->d), r->tmin, tmax, t,
+                           surface);
 }
 
 /* Not inlined (nor accel_direct_occluded) into accel.c's entry points: inlined, they cost the Embree path of
  * a large scene some 9 instructions a ray in its prologue (10,000 spheres: +0.2% of the process). */
 __attribute__((noinline)) int accel_direct_intersect(const Scene *s, const Ray *r, Hit *h)
 {
-    SlabRay sr;
-    slab_ray(r, &sr);
     double best = r->tmax < 3.0e38 ? r->tmax : INFINITY; /* as Embree's tfar (make_ray in accel.c) */
-    const Object *hit = NULL;
+    double near[2 * DIRECT_PAIRS];
+    unsigned met = boxes_met(s->direct, s->ndirect, r, best, near);
+    const DirectEntry *hit = NULL;
     int hit_surface = 0;
-    for (int i = 0; i < s->ndirect; i++) {
-        const AccelDirect *e = &s->direct[i];
-        if (!slab_hit(e, &sr, r->tmin, best))
+    while (met) {
+        int i = __builtin_ctz(met);
+        met &= met - 1u;
+        if (!(near[i] <= best)) /* the box lies beyond the closest hit so far */
             continue;
-        GVec3 ro, rd;
-        in_object(e->obj, r, &ro, &rd);
+        const DirectEntry *e = &s->direct->e[i];
         double t;
         int surface;
-        if (shape_intersect(e->obj, ro, rd, r->tmin, best, &t, &surface)) {
+        if (entry_hit(e, r, best, &t, &surface)) {
             best = t;
-            hit = e->obj;
+            hit = e;
             hit_surface = surface;
         }
     }
     if (!hit)
         return 0;
-    h->obj = hit;
+    h->obj = hit->obj;
     h->inst = NULL;
-    h->material = hit->material;
+    h->material = hit->obj->material;
     h->prim = 0;
     h->t = best;
     h->bu = h->bv = 0.0;
@@ -204,18 +224,15 @@ __attribute__((noinline)) int accel_direct_intersect(const Scene *s, const Ray *
 
 __attribute__((noinline)) int accel_direct_occluded(const Scene *s, const Ray *r)
 {
-    SlabRay sr;
-    slab_ray(r, &sr);
+    double near[2 * DIRECT_PAIRS];
+    unsigned met = boxes_met(s->direct, s->ndirect, r, r->tmax, near);
     int passable = 0;
-    for (int i = 0; i < s->ndirect; i++) {
-        const AccelDirect *e = &s->direct[i];
-        if (!slab_hit(e, &sr, r->tmin, r->tmax))
-            continue;
-        GVec3 ro, rd;
-        in_object(e->obj, r, &ro, &rd);
+    while (met) {
+        const DirectEntry *e = &s->direct->e[__builtin_ctz(met)];
+        met &= met - 1u;
         double t;
         int surface;
-        if (!shape_intersect(e->obj, ro, rd, r->tmin, r->tmax, &t, &surface))
+        if (!entry_hit(e, r, r->tmax, &t, &surface))
             continue;
         if (e->opaque)
             return OCCLUDED_OPAQUE;

@@ -7,6 +7,8 @@
 
 #include <generic/vec.h>
 
+#include <math.h>
+
 /** One placement of a prototype (accel.c): a group's shapes or an instanced shape, in world space. */
 typedef struct Instance {
     Xform xf;                  /**< prototype space -> world (the composition of the nested transforms) */
@@ -41,6 +43,60 @@ typedef struct HitGeom {
  * single-precision rays and stops the process on an origin beyond about 1.8e18; 1e15 keeps a margin, and
  * float positions there are already 1e8 units apart. */
 #define SCENE_MAX_COORD 1.0e15
+
+/** a t^2 + 2 b t + c = 0: 1 with the roots in ascending order (computed without cancellation), 0 for none. */
+static inline int shape_solve_quadratic(double a, double b, double c, double *t0, double *t1)
+{
+    double disc = b * b - a * c;
+    if (disc < 0.0 || a == 0.0)
+        return 0;
+    double q = -(b + copysign(sqrt(disc), b));
+    double r0 = q / a, r1 = q != 0.0 ? c / q : r0;
+    *t0 = gfmin(r0, r1);
+    *t1 = gfmax(r0, r1);
+    return 1;
+}
+
+/** The first of t0 <= t1 inside (tmin, tmax) into *t: 1, or 0 for neither. */
+static inline int shape_pick(double t0, double t1, double tmin, double tmax, double *t)
+{
+    if (t0 > tmin && t0 < tmax) {
+        *t = t0;
+        return 1;
+    }
+    if (t1 > tmin && t1 < tmax) {
+        *t = t1;
+        return 1;
+    }
+    return 0;
+}
+
+/** A sphere in its own space (shape_intersect's case, inline for the direct list of accel_direct.c). */
+static inline int shape_hit_sphere(const Object *o, GVec3 ro, GVec3 rd, double tmin, double tmax, double *t)
+{
+    GVec3 oc = gvec3_sub(ro, o->center);
+    double t0, t1;
+    if (!shape_solve_quadratic(gvec3_dot(rd, rd), gvec3_dot(oc, rd), gvec3_dot(oc, oc) - o->radius * o->radius,
+                               &t0, &t1))
+        return 0;
+    return shape_pick(t0, t1, tmin, tmax, t);
+}
+
+/** A plane (bounded at SHAPE_PLANE_EXTENT) in its own space (as shape_hit_sphere). */
+static inline int shape_hit_plane(const Object *o, GVec3 ro, GVec3 rd, double tmin, double tmax, double *t)
+{
+    double dn = gvec3_dot(rd, o->normal);
+    if (dn == 0.0)
+        return 0;
+    double th = gvec3_dot(gvec3_sub(o->center, ro), o->normal) / dn;
+    if (!(th > tmin && th < tmax))
+        return 0;
+    GVec3 d = gvec3_sub(gvec3_madd(ro, rd, th), o->center);
+    if (fabs(gvec3_dot(d, o->t1)) > SHAPE_PLANE_EXTENT || fabs(gvec3_dot(d, o->t2)) > SHAPE_PLANE_EXTENT)
+        return 0;
+    *t = th;
+    return 1;
+}
 
 /** Object-space ray-shape intersection in (tmin, tmax); 1 with *t and *surface when hit. */
 int shape_intersect(const Object *o, GVec3 ro, GVec3 rd, double tmin, double tmax, double *t, int *surface);

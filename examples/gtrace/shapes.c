@@ -11,56 +11,6 @@
 
 #include <math.h>
 
-static int solve_quadratic(double a, double b, double c, double *t0, double *t1)
-{
-    /* a t^2 + 2 b t + c = 0, roots in ascending order, computed without cancellation */
-    double disc = b * b - a * c;
-    if (disc < 0.0 || a == 0.0)
-        return 0;
-    double q = -(b + copysign(sqrt(disc), b));
-    double r0 = q / a, r1 = q != 0.0 ? c / q : r0;
-    *t0 = gfmin(r0, r1);
-    *t1 = gfmax(r0, r1);
-    return 1;
-}
-
-static int pick(double t0, double t1, double tmin, double tmax, double *t)
-{
-    if (t0 > tmin && t0 < tmax) {
-        *t = t0;
-        return 1;
-    }
-    if (t1 > tmin && t1 < tmax) {
-        *t = t1;
-        return 1;
-    }
-    return 0;
-}
-
-static int hit_sphere(const Object *o, GVec3 ro, GVec3 rd, double tmin, double tmax, double *t)
-{
-    GVec3 oc = gvec3_sub(ro, o->center);
-    double t0, t1;
-    if (!solve_quadratic(gvec3_dot(rd, rd), gvec3_dot(oc, rd), gvec3_dot(oc, oc) - o->radius * o->radius, &t0, &t1))
-        return 0;
-    return pick(t0, t1, tmin, tmax, t);
-}
-
-static int hit_plane(const Object *o, GVec3 ro, GVec3 rd, double tmin, double tmax, double *t)
-{
-    double dn = gvec3_dot(rd, o->normal);
-    if (dn == 0.0)
-        return 0;
-    double th = gvec3_dot(gvec3_sub(o->center, ro), o->normal) / dn;
-    if (!(th > tmin && th < tmax))
-        return 0;
-    GVec3 d = gvec3_sub(gvec3_madd(ro, rd, th), o->center);
-    if (fabs(gvec3_dot(d, o->t1)) > SHAPE_PLANE_EXTENT || fabs(gvec3_dot(d, o->t2)) > SHAPE_PLANE_EXTENT)
-        return 0;
-    *t = th;
-    return 1;
-}
-
 static int hit_disc_at(GVec3 c, GVec3 n, double r, GVec3 ro, GVec3 rd, double tmin, double tmax, double *t)
 {
     double dn = gvec3_dot(rd, n);
@@ -130,7 +80,8 @@ static int hit_cylinder(const Object *o, GVec3 ro, GVec3 rd, double tmin, double
     double dx = gvec3_dot(rd, o->t1), dy = gvec3_dot(rd, o->t2), dz = gvec3_dot(rd, o->normal);
     int found = 0;
     double best = tmax, t0, t1;
-    if (solve_quadratic(dx * dx + dy * dy, ox * dx + oy * dy, ox * ox + oy * oy - o->radius * o->radius, &t0, &t1)) {
+    if (shape_solve_quadratic(dx * dx + dy * dy, ox * dx + oy * dy, ox * ox + oy * oy - o->radius * o->radius, &t0,
+                              &t1)) {
         const double cand[2] = {t0, t1};
         for (int i = 0; i < 2; i++) {
             double z = oz + dz * cand[i];
@@ -165,9 +116,9 @@ int shape_intersect(const Object *o, GVec3 ro, GVec3 rd, double tmin, double tma
     *surface = 0;
     switch (o->kind) {
     case SHAPE_SPHERE:
-        return hit_sphere(o, ro, rd, tmin, tmax, t);
+        return shape_hit_sphere(o, ro, rd, tmin, tmax, t);
     case SHAPE_PLANE:
-        return hit_plane(o, ro, rd, tmin, tmax, t);
+        return shape_hit_plane(o, ro, rd, tmin, tmax, t);
     case SHAPE_BOX:
         return hit_box(o, ro, rd, tmin, tmax, t, surface);
     case SHAPE_DISC:
