@@ -19,7 +19,7 @@
 #include "accel_direct.h"
 
 #include <embree3/rtcore.h>
-#include <emmintrin.h>
+#include "lanes2.h"
 #include <math.h>
 #include <string.h>
 
@@ -507,15 +507,14 @@ static void make_ray(const Ray *r, struct RTCRay *ray)
 
 /* Embree asserts (and ends the process) on a ray it cannot trace: an origin or direction that is not finite
  * or beyond about 1.8e18. Scenes are refused beyond SCENE_MAX_COORD when they are read; a ray that still gets
- * here so (a NaN from a material's direction) hits nothing. The six magnitudes are compared two at a time in
- * SSE2 (a NaN compares false, as with fabs(x) < big). */
+ * here so (a NaN from a material's direction) hits nothing. The six magnitudes are compared two at a time
+ * (lanes2.h; a NaN compares false, as with fabs(x) < big). */
 static int traceable(const Ray *r)
 {
-    const __m128d big = _mm_set1_pd(1.0e18), mag = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
-    __m128d a = _mm_and_pd(_mm_set_pd(r->o.y, r->o.x), mag), b = _mm_and_pd(_mm_set_pd(r->d.x, r->o.z), mag),
-            c = _mm_and_pd(_mm_set_pd(r->d.z, r->d.y), mag);
-    __m128d in = _mm_and_pd(_mm_and_pd(_mm_cmplt_pd(a, big), _mm_cmplt_pd(b, big)), _mm_cmplt_pd(c, big));
-    return _mm_movemask_pd(in) == 3 && r->tmin >= 0.0 && r->tmin < 3.0e38 && !(r->tmax < r->tmin);
+    const Lanes2 big = lanes2_set1(1.0e18);
+    unsigned in = lanes2_abs_lt(lanes2_set(r->o.x, r->o.y), big) & lanes2_abs_lt(lanes2_set(r->o.z, r->d.x), big) &
+                  lanes2_abs_lt(lanes2_set(r->d.y, r->d.z), big);
+    return in == 3 && r->tmin >= 0.0 && r->tmin < 3.0e38 && !(r->tmax < r->tmin);
 }
 
 int accel_intersect(const Scene *s, const Ray *r, Hit *h)

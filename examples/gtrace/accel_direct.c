@@ -1,17 +1,16 @@
 /* accel_direct.c - the direct list: a scene of a few analytic shapes, each tested in turn.
  *
  * Embree's per-ray cost (setting up the ray, the context and the traversal, and calling back into the user
- * geometry) exceeds testing every shape when the scene holds only a few analytic ones, so such a scene keeps
- * a flat array of its shapes with each shape's padded world bounds. A ray tests the boxes of all entries at
- * once (slab tests against [tmin, tmax], two entries side by side in SSE2 doubles, bit for bit the scalar
- * test), then, in the scene's order, skips an entry whose box begins beyond the closest hit so far and
- * intersects the others in double precision in the shape's own space exactly as Embree's user-geometry
- * callbacks do (accel.c). The hit is
- * therefore the one the Embree path finds, with the same double t, but for two kinds of near ties: Embree
- * narrows its ray to the single-precision t of a hit, so a second shape hit within float rounding (about 6e-8
- * relative) behind the first may be missed by Embree and found here; and of two shapes hit at exactly the same
- * t the first in the scene's order wins here, the first Embree visits there. Likewise a hit within float rounding
- * of the ray's tmax: Embree's tfar is tmax in single precision, the direct list keeps tmax in double.
+ * geometry) exceeds testing every shape when the scene holds only a few analytic ones, so such a scene keeps a flat
+ * array of its shapes with each shape's padded world bounds. A ray tests the boxes of all entries at once (slab
+ * tests against [tmin, tmax], two entries side by side: lanes2.h, SSE2 doubles or two scalars, bit for bit the
+ * scalar test), then, in the scene's order, skips an entry whose box begins beyond the closest hit so far and
+ * intersects the others in double precision in the shape's own space exactly as Embree's user-geometry callbacks do
+ * (accel.c). The hit is therefore the one the Embree path finds, with the same double t, but for two kinds of near
+ * ties: Embree narrows its ray to the single-precision t of a hit, so a second shape hit within float rounding
+ * (about 6e-8 relative) behind the first may be missed by Embree and found here; and of two shapes hit at exactly
+ * the same t the first in the scene's order wins here, the first Embree visits there. Likewise a hit within float
+ * rounding of the ray's tmax: Embree's tfar is tmax in single precision, the direct list keeps tmax in double.
  * Planes are box-tested like the others (their bounds end at SHAPE_PLANE_EXTENT, as Embree's do).
  *
  * Occlusion: the first opaque-everywhere shape on the segment ends the query (OCCLUDED_OPAQUE); otherwise a
@@ -21,7 +20,7 @@
 #include "accel_direct.h"
 #include "accel.h"
 
-#include <emmintrin.h>
+#include "lanes2.h"
 #include <math.h>
 
 /* The largest scene (in shapes) traced through the direct list: where it stops paying. Measured with callgrind
@@ -51,7 +50,7 @@ typedef struct DirectEntry {
 /* The padded world bounds of two entries (2k and 2k + 1) as Embree gets them (user_bounds in accel.c), one
  * axis a vector: their box tests run side by side in the two lanes. */
 typedef struct DirectPair {
-    __m128d lo[3], hi[3];
+    Lanes2 lo[3], hi[3];
 } DirectPair;
 
 #define DIRECT_PAIRS ((ACCEL_DIRECT_MAX + 1) / 2)
@@ -146,24 +145,24 @@ static inline double clamp_big(double x)
  * computes exactly what a scalar slab test computes. */
 static inline unsigned boxes_met(const AccelDirect *d, int n, const Ray *r, double tf, double *near)
 {
-    const __m128d ox = _mm_set1_pd(r->o.x), oy = _mm_set1_pd(r->o.y), oz = _mm_set1_pd(r->o.z);
-    const __m128d ix = _mm_set1_pd(clamp_big(1.0 / r->d.x)), iy = _mm_set1_pd(clamp_big(1.0 / r->d.y)),
-                  iz = _mm_set1_pd(clamp_big(1.0 / r->d.z));
-    const __m128d tn0 = _mm_set1_pd(r->tmin), tf0 = _mm_set1_pd(tf);
+    const Lanes2 ox = lanes2_set1(r->o.x), oy = lanes2_set1(r->o.y), oz = lanes2_set1(r->o.z);
+    const Lanes2 ix = lanes2_set1(clamp_big(1.0 / r->d.x)), iy = lanes2_set1(clamp_big(1.0 / r->d.y)),
+                 iz = lanes2_set1(clamp_big(1.0 / r->d.z));
+    const Lanes2 tn0 = lanes2_set1(r->tmin), tf0 = lanes2_set1(tf);
     unsigned met = 0;
     for (int p = 0; 2 * p < n; p++) {
         const DirectPair *b = &d->pair[p];
-        __m128d ax = _mm_mul_pd(_mm_sub_pd(b->lo[0], ox), ix), bx = _mm_mul_pd(_mm_sub_pd(b->hi[0], ox), ix);
-        __m128d ay = _mm_mul_pd(_mm_sub_pd(b->lo[1], oy), iy), by = _mm_mul_pd(_mm_sub_pd(b->hi[1], oy), iy);
-        __m128d az = _mm_mul_pd(_mm_sub_pd(b->lo[2], oz), iz), bz = _mm_mul_pd(_mm_sub_pd(b->hi[2], oz), iz);
-        /* _mm_max_pd(a, t) is a > t ? a : t and _mm_min_pd(a, t) is a < t ? a : t: a NaN tf stays */
-        __m128d tn = _mm_max_pd(_mm_min_pd(ax, bx), tn0), tf_ = _mm_min_pd(_mm_max_pd(ax, bx), tf0);
-        tn = _mm_max_pd(_mm_min_pd(ay, by), tn);
-        tf_ = _mm_min_pd(_mm_max_pd(ay, by), tf_);
-        tn = _mm_max_pd(_mm_min_pd(az, bz), tn);
-        tf_ = _mm_min_pd(_mm_max_pd(az, bz), tf_);
-        _mm_storeu_pd(near + 2 * p, tn);
-        met |= (unsigned)_mm_movemask_pd(_mm_cmple_pd(tn, tf_)) << (2 * p);
+        Lanes2 ax = lanes2_mul(lanes2_sub(b->lo[0], ox), ix), bx = lanes2_mul(lanes2_sub(b->hi[0], ox), ix);
+        Lanes2 ay = lanes2_mul(lanes2_sub(b->lo[1], oy), iy), by = lanes2_mul(lanes2_sub(b->hi[1], oy), iy);
+        Lanes2 az = lanes2_mul(lanes2_sub(b->lo[2], oz), iz), bz = lanes2_mul(lanes2_sub(b->hi[2], oz), iz);
+        /* lanes2_max(a, t) is a > t ? a : t and lanes2_min(a, t) is a < t ? a : t: a NaN tf stays */
+        Lanes2 tn = lanes2_max(lanes2_min(ax, bx), tn0), tf_ = lanes2_min(lanes2_max(ax, bx), tf0);
+        tn = lanes2_max(lanes2_min(ay, by), tn);
+        tf_ = lanes2_min(lanes2_max(ay, by), tf_);
+        tn = lanes2_max(lanes2_min(az, bz), tn);
+        tf_ = lanes2_min(lanes2_max(az, bz), tf_);
+        lanes2_store(near + 2 * p, tn);
+        met |= lanes2_le(tn, tf_) << (2 * p);
     }
     return met & ((1u << n) - 1u);
 }
