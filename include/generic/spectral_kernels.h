@@ -310,7 +310,7 @@ static inline void gspectral_kxyz_tail(const float *t, const float *a, int i, in
 {
     float tail[3] = {0.0f, 0.0f, 0.0f};
     for (; i < n; i++) {
-        const float *b = t + (i / 8) * 24 + i % 8;
+        const float *b = t + (i >> 3) * 24 + (i & 7); /* i >= 0: block i / 8, lane i % 8 */
         tail[0] += a[i] * b[0];
         tail[1] += a[i] * b[8];
         tail[2] += a[i] * b[16];
@@ -553,17 +553,24 @@ static inline GSPECTRAL_TARGET_AVX2 double gspectral_kbright8(const float *w, co
 /** gspectral_kfinite on 8-float vectors. */
 static inline GSPECTRAL_TARGET_AVX2 int gspectral_kfinite8(const float *a, int n, int nonnegative)
 {
-    const gspectral_v8 zero = {0, 0, 0, 0, 0, 0, 0, 0};
-    gspectral_v8 acc = zero;
-    gspectral_v8i neg = {0, 0, 0, 0, 0, 0, 0, 0};
     int i = 0;
-    for (; i + 8 <= n; i += 8) {
-        gspectral_v8 x = gspectral_vload8(a + i);
-        acc += x - x;
-        if (nonnegative)
-            neg |= x < zero;
-    }
-    if (i > 0) {
+    if (n >= 8) { /* a shorter vector goes straight to the tail */
+        const gspectral_v8 zero = {0, 0, 0, 0, 0, 0, 0, 0};
+        gspectral_v8 acc = zero;
+        gspectral_v8i neg = {0, 0, 0, 0, 0, 0, 0, 0};
+        for (; i + 16 <= n; i += 16) { /* two blocks a step: a NaN in either term is a NaN in the sum */
+            gspectral_v8 x0 = gspectral_vload8(a + i), x1 = gspectral_vload8(a + i + 8);
+            acc += (x0 - x0) + (x1 - x1);
+            if (nonnegative)
+                neg |= (x0 < zero) | (x1 < zero);
+        }
+        if (i + 8 <= n) {
+            gspectral_v8 x = gspectral_vload8(a + i);
+            acc += x - x;
+            if (nonnegative)
+                neg |= x < zero;
+            i += 8;
+        }
         gspectral_v8i bad = acc != zero;
         if (nonnegative)
             bad |= neg;
@@ -580,6 +587,16 @@ static inline GSPECTRAL_TARGET_AVX2 void gspectral_kxyz8(const float *t, const f
 {
     gspectral_v8 x = {0, 0, 0, 0, 0, 0, 0, 0}, y = x, z = x;
     int i = 0;
+    for (; i + 16 <= n; i += 16) { /* two blocks a step, added in order: the same sums */
+        const float *b = t + i * 3;
+        gspectral_v8 v0 = gspectral_vload8(a + i), v1 = gspectral_vload8(a + i + 8);
+        x += v0 * gspectral_vload8(b);
+        y += v0 * gspectral_vload8(b + 8);
+        z += v0 * gspectral_vload8(b + 16);
+        x += v1 * gspectral_vload8(b + 24);
+        y += v1 * gspectral_vload8(b + 32);
+        z += v1 * gspectral_vload8(b + 40);
+    }
     for (; i + 8 <= n; i += 8) {
         const float *b = t + i * 3;
         gspectral_v8 v = gspectral_vload8(a + i);
