@@ -604,11 +604,22 @@ static inline GSPECTRAL_TARGET_AVX2 void gspectral_kxyz8(const float *t, const f
         y += v * gspectral_vload8(b + 8);
         z += v * gspectral_vload8(b + 16);
     }
-    float xs[4], ys[4], zs[4];
-    gspectral_vstore(xs, gspectral_vfold8(x));
-    gspectral_vstore(ys, gspectral_vfold8(y));
-    gspectral_vstore(zs, gspectral_vfold8(z));
-    gspectral_kxyz_tail(t, a, i, n, xs, ys, zs, xyz);
+    float tail[3] = {0.0f, 0.0f, 0.0f};
+    for (; i < n; i++) { /* as gspectral_kxyz_tail */
+        const float *b = t + (i >> 3) * 24 + (i & 7);
+        tail[0] += a[i] * b[0];
+        tail[1] += a[i] * b[8];
+        tail[2] += a[i] * b[16];
+    }
+    /* the lanes in double: hadd gives (l0 + l1) in the low half and (l2 + l3) in the high one, per coordinate */
+    __m256d dx = _mm256_cvtps_pd((__m128)gspectral_vfold8(x)), dy = _mm256_cvtps_pd((__m128)gspectral_vfold8(y));
+    __m256d dz = _mm256_cvtps_pd((__m128)gspectral_vfold8(z));
+    __m256d xy = _mm256_hadd_pd(dx, dy), zz = _mm256_hadd_pd(dz, dz); /* x01 y01 x23 y23, z01 z01 z23 z23 */
+    __m128d sxy = _mm_add_pd(_mm256_castpd256_pd128(xy), _mm256_extractf128_pd(xy, 1));
+    __m128d sz = _mm_add_sd(_mm256_castpd256_pd128(zz), _mm256_extractf128_pd(zz, 1));
+    __m128d txy = _mm_cvtps_pd(_mm_setr_ps(tail[0], tail[1], 0.0f, 0.0f));
+    _mm_storeu_pd(xyz, _mm_add_pd(sxy, txy));
+    xyz[2] = _mm_cvtsd_f64(sz) + (double)tail[2];
 }
 #endif
 
