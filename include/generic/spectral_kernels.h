@@ -550,36 +550,39 @@ static inline GSPECTRAL_TARGET_AVX2 double gspectral_kbright8(const float *w, co
     return s;
 }
 
-/** gspectral_kfinite on 8-float vectors. */
+/** gspectral_kfinite on 8-float vectors. A vector of 8 or more ends with a block that ends at its last sample
+ * (it may overlap the one before: a test of a sample twice gives the same answer), so there is no scalar tail. */
 static inline GSPECTRAL_TARGET_AVX2 int gspectral_kfinite8(const float *a, int n, int nonnegative)
 {
+    if (n < 8)
+        return gspectral_kfinite(a, n, nonnegative);
+    const gspectral_v8 zero = {0, 0, 0, 0, 0, 0, 0, 0};
+    gspectral_v8 acc = zero;
+    gspectral_v8i neg = {0, 0, 0, 0, 0, 0, 0, 0};
     int i = 0;
-    if (n >= 8) { /* a shorter vector goes straight to the tail */
-        const gspectral_v8 zero = {0, 0, 0, 0, 0, 0, 0, 0};
-        gspectral_v8 acc = zero;
-        gspectral_v8i neg = {0, 0, 0, 0, 0, 0, 0, 0};
-        for (; i + 16 <= n; i += 16) { /* two blocks a step: a NaN in either term is a NaN in the sum */
-            gspectral_v8 x0 = gspectral_vload8(a + i), x1 = gspectral_vload8(a + i + 8);
-            acc += (x0 - x0) + (x1 - x1);
-            if (nonnegative)
-                neg |= (x0 < zero) | (x1 < zero);
-        }
-        if (i + 8 <= n) {
-            gspectral_v8 x = gspectral_vload8(a + i);
-            acc += x - x;
-            if (nonnegative)
-                neg |= x < zero;
-            i += 8;
-        }
-        gspectral_v8i bad = acc != zero;
+    for (; i + 16 <= n; i += 16) { /* two blocks a step: a NaN in either term is a NaN in the sum */
+        gspectral_v8 x0 = gspectral_vload8(a + i), x1 = gspectral_vload8(a + i + 8);
+        acc += (x0 - x0) + (x1 - x1);
         if (nonnegative)
-            bad |= neg;
-        gspectral_v4i b4 =
-            __builtin_shufflevector(bad, bad, 0, 1, 2, 3) | __builtin_shufflevector(bad, bad, 4, 5, 6, 7);
-        if (b4[0] | b4[1] | b4[2] | b4[3])
-            return 0;
+            neg |= (x0 < zero) | (x1 < zero);
     }
-    return gspectral_kfinite(a + i, n - i, nonnegative);
+    if (i + 8 <= n) {
+        gspectral_v8 x = gspectral_vload8(a + i);
+        acc += x - x;
+        if (nonnegative)
+            neg |= x < zero;
+        i += 8;
+    }
+    if (i < n) {
+        gspectral_v8 x = gspectral_vload8(a + n - 8);
+        acc += x - x;
+        if (nonnegative)
+            neg |= x < zero;
+    }
+    gspectral_v8i bad = acc != zero;
+    if (nonnegative)
+        bad |= neg;
+    return _mm256_movemask_ps((__m256)bad) == 0;
 }
 
 /** gspectral_kxyz on 8-float vectors (equal bit for bit). */
