@@ -402,33 +402,14 @@ static inline GSPECTRAL_TARGET_AVX2 gspectral_v4 gspectral_vfold8(gspectral_v8 x
     return __builtin_shufflevector(x, x, 0, 1, 2, 3) + __builtin_shufflevector(x, x, 4, 5, 6, 7);
 }
 
-/* GSPECTRAL_LAST8: an element-wise 8-float kernel on a vector longer than 8 and not a multiple of 8 computes its
- * last 8 samples (a block that ends at the last sample) before it stores anything and stores them after the whole
- * blocks: the samples both cover get the same value twice, from the operands as they were (out may alias one),
- * and no scalar tail is left. */
+/* GSPECTRAL_LAST8: on a vector longer than 8, not a multiple of 8, kscale8 computes the block ending at the last
+ * sample before any store (out may alias the operand) and stores it after the whole blocks: no scalar tail. */
 
 /** gspectral_kmap on 8-float vectors. */
-__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectral_kmap8(GSpectralOp op, float *o, const float *a, const float *b,
+static inline GSPECTRAL_TARGET_AVX2 void gspectral_kmap8(GSpectralOp op, float *o, const float *a, const float *b,
                                                          int n)
 {
     int i = 0;
-    if (n > 8 && (n & 7)) { /* the last 8 samples are computed first and stored last: see GSPECTRAL_LAST8 */
-        gspectral_v8 x = gspectral_vload8(a + n - 8), y = gspectral_vload8(b + n - 8);
-        gspectral_v8 last = op == GSPECTRAL_ADD ? x + y : x * y;
-        for (; i + 16 <= n; i += 16) {
-            gspectral_v8 x0 = gspectral_vload8(a + i), y0 = gspectral_vload8(b + i);
-            gspectral_v8 x1 = gspectral_vload8(a + i + 8), y1 = gspectral_vload8(b + i + 8);
-            gspectral_v8 r0 = op == GSPECTRAL_ADD ? x0 + y0 : x0 * y0, r1 = op == GSPECTRAL_ADD ? x1 + y1 : x1 * y1;
-            gspectral_vstore8(o + i, r0);
-            gspectral_vstore8(o + i + 8, r1);
-        }
-        if (i + 8 <= n) {
-            gspectral_v8 x0 = gspectral_vload8(a + i), y0 = gspectral_vload8(b + i);
-            gspectral_vstore8(o + i, op == GSPECTRAL_ADD ? x0 + y0 : x0 * y0);
-        }
-        gspectral_vstore8(o + n - 8, last);
-        return;
-    }
     for (; i + 16 <= n; i += 16) { /* both blocks are loaded before either is stored */
         gspectral_v8 x0 = gspectral_vload8(a + i), y0 = gspectral_vload8(b + i);
         gspectral_v8 x1 = gspectral_vload8(a + i + 8), y1 = gspectral_vload8(b + i + 8);
@@ -449,7 +430,8 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectra
 }
 
 /** gspectral_kscale on 8-float vectors. */
-__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectral_kscale8(float *o, const float *a, float s, int n)
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectral_kscale8(float *o, const float *a,
+                                                                                          float s, int n)
 {
     const gspectral_v8 sv = {s, s, s, s, s, s, s, s};
     int i = 0;
