@@ -123,6 +123,12 @@ static GSPECTRAL_TARGET_AVX2 void mul_scaled_v8(float *out, const float *a, cons
 {
     const gspectral_v8 sv = {s, s, s, s, s, s, s, s};
     int i = 0;
+    for (; i + 16 <= n; i += 16) { /* both blocks are loaded before either is stored */
+        gspectral_v8 x0 = gspectral_vload8(a + i) * gspectral_vload8(b + i);
+        gspectral_v8 x1 = gspectral_vload8(a + i + 8) * gspectral_vload8(b + i + 8);
+        gspectral_vstore8(out + i, x0 * sv);
+        gspectral_vstore8(out + i + 8, x1 * sv);
+    }
     for (; i + 8 <= n; i += 8) {
         gspectral_v8 x = gspectral_vload8(a + i) * gspectral_vload8(b + i);
         gspectral_vstore8(out + i, x * sv);

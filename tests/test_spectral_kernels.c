@@ -76,12 +76,17 @@ static void test_axpyd_equals_scalar(void **state)
         }
 }
 
+#ifdef GSPECTRAL_AVX2
+/* gspectral_kfinite8 where the test may call it (compiled for AVX2; run only when the processor has it). */
+static GSPECTRAL_TARGET_AVX2 int finite8(const float *a, int n, int nonneg) { return gspectral_kfinite8(a, n, nonneg); }
+#endif
+
 static void test_finite_equals_scalar(void **state)
 {
     (void)state;
     const float odd[] = {INFINITY, -INFINITY, NAN, -1.0f, -0.0f, 0.0f, 1e38f, -1e-40f};
     for (int n = 1; n <= N; n++)
-        for (int pos = 0; pos < n; pos += 7)
+        for (int pos = 0; pos < n; pos += 3)
             for (int k = 0; k < (int)(sizeof odd / sizeof *odd); k++) {
                 float a[N];
                 for (int i = 0; i < n; i++)
@@ -93,6 +98,10 @@ static void test_finite_equals_scalar(void **state)
                         if (!isfinite(a[i]) || (nonneg && a[i] < 0.0f))
                             ref = 0;
                     assert_int_equal(gspectral_kfinite(a, n, nonneg), ref);
+#ifdef GSPECTRAL_AVX2
+                    if (gspectral_have_avx2()) /* positions 3 apart: in the two-block steps and after them */
+                        assert_int_equal(finite8(a, n, nonneg), ref);
+#endif
                 }
             }
     assert_int_equal(gspectral_kfinite(NULL, 0, 1), 1);
@@ -130,9 +139,15 @@ static GSPECTRAL_TARGET_AVX2 int avx2_equal(int n, float *a, float *b, const flo
         gspectral_kmap((GSpectralOp)op, o4, a, b, n);
         gspectral_kmap8((GSpectralOp)op, o8, a, b, n);
         same &= same_bits(o4, o8, n);
+        memcpy(o8, a, (size_t)n * sizeof *a); /* in place: the last block overlaps the whole ones */
+        gspectral_kmap8((GSpectralOp)op, o8, o8, b, n);
+        same &= same_bits(o4, o8, n);
     }
     gspectral_kscale(o4, a, (float)s, n);
     gspectral_kscale8(o8, a, (float)s, n);
+    same &= same_bits(o4, o8, n);
+    memcpy(o8, a, (size_t)n * sizeof *a);
+    gspectral_kscale8(o8, o8, (float)s, n);
     same &= same_bits(o4, o8, n);
     gspectral_kdiv(o4, a, b, n);
     gspectral_kdiv8(o8, a, b, n);

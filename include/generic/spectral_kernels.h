@@ -310,7 +310,7 @@ static inline void gspectral_kxyz_tail(const float *t, const float *a, int i, in
 {
     float tail[3] = {0.0f, 0.0f, 0.0f};
     for (; i < n; i++) {
-        const float *b = t + (i / 8) * 24 + i % 8;
+        const float *b = t + (i >> 3) * 24 + (i & 7); /* i >= 0: block i / 8, lane i % 8 */
         tail[0] += a[i] * b[0];
         tail[1] += a[i] * b[8];
         tail[2] += a[i] * b[16];
@@ -402,6 +402,9 @@ static inline GSPECTRAL_TARGET_AVX2 gspectral_v4 gspectral_vfold8(gspectral_v8 x
     return __builtin_shufflevector(x, x, 0, 1, 2, 3) + __builtin_shufflevector(x, x, 4, 5, 6, 7);
 }
 
+/* GSPECTRAL_LAST8: on a vector longer than 8, not a multiple of 8, kscale8 computes the block ending at the last
+ * sample before any store (out may alias the operand) and stores it after the whole blocks: no scalar tail. */
+
 /** gspectral_kmap on 8-float vectors. */
 static inline GSPECTRAL_TARGET_AVX2 void gspectral_kmap8(GSpectralOp op, float *o, const float *a, const float *b,
                                                          int n)
@@ -427,10 +430,23 @@ static inline GSPECTRAL_TARGET_AVX2 void gspectral_kmap8(GSpectralOp op, float *
 }
 
 /** gspectral_kscale on 8-float vectors. */
-static inline GSPECTRAL_TARGET_AVX2 void gspectral_kscale8(float *o, const float *a, float s, int n)
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectral_kscale8(float *o, const float *a,
+                                                                                          float s, int n)
 {
     const gspectral_v8 sv = {s, s, s, s, s, s, s, s};
     int i = 0;
+    if (n > 8 && (n & 7)) { /* see GSPECTRAL_LAST8 */
+        gspectral_v8 last = gspectral_vload8(a + n - 8) * sv;
+        for (; i + 16 <= n; i += 16) {
+            gspectral_v8 x0 = gspectral_vload8(a + i) * sv, x1 = gspectral_vload8(a + i + 8) * sv;
+            gspectral_vstore8(o + i, x0);
+            gspectral_vstore8(o + i + 8, x1);
+        }
+        if (i + 8 <= n)
+            gspectral_vstore8(o + i, gspectral_vload8(a + i) * sv);
+        gspectral_vstore8(o + n - 8, last);
+        return;
+    }
     for (; i + 16 <= n; i += 16) { /* both blocks are loaded before either is stored */
         gspectral_v8 x0 = gspectral_vload8(a + i) * sv, x1 = gspectral_vload8(a + i + 8) * sv;
         gspectral_vstore8(o + i, x0);
@@ -550,29 +566,39 @@ static inline GSPECTRAL_TARGET_AVX2 double gspectral_kbright8(const float *w, co
     return s;
 }
 
-/** gspectral_kfinite on 8-float vectors. */
+/** gspectral_kfinite on 8-float vectors. A vector of 8 or more ends with a block that ends at its last sample
+ * (it may overlap the one before: a test of a sample twice gives the same answer), so there is no scalar tail. */
 static inline GSPECTRAL_TARGET_AVX2 int gspectral_kfinite8(const float *a, int n, int nonnegative)
 {
+    if (n < 8)
+        return gspectral_kfinite(a, n, nonnegative);
     const gspectral_v8 zero = {0, 0, 0, 0, 0, 0, 0, 0};
     gspectral_v8 acc = zero;
     gspectral_v8i neg = {0, 0, 0, 0, 0, 0, 0, 0};
     int i = 0;
-    for (; i + 8 <= n; i += 8) {
+    for (; i + 16 <= n; i += 16) { /* two blocks a step: a NaN in either term is a NaN in the sum */
+        gspectral_v8 x0 = gspectral_vload8(a + i), x1 = gspectral_vload8(a + i + 8);
+        acc += (x0 - x0) + (x1 - x1);
+        if (nonnegative)
+            neg |= (x0 < zero) | (x1 < zero);
+    }
+    if (i + 8 <= n) {
         gspectral_v8 x = gspectral_vload8(a + i);
         acc += x - x;
         if (nonnegative)
             neg |= x < zero;
+        i += 8;
     }
-    if (i > 0) {
-        gspectral_v8i bad = acc != zero;
+    if (i < n) {
+        gspectral_v8 x = gspectral_vload8(a + n - 8);
+        acc += x - x;
         if (nonnegative)
-            bad |= neg;
-        gspectral_v4i b4 =
-            __builtin_shufflevector(bad, bad, 0, 1, 2, 3) | __builtin_shufflevector(bad, bad, 4, 5, 6, 7);
-        if (b4[0] | b4[1] | b4[2] | b4[3])
-            return 0;
+            neg |= x < zero;
     }
-    return gspectral_kfinite(a + i, n - i, nonnegative);
+    gspectral_v8i bad = acc != zero;
+    if (nonnegative)
+        bad |= neg;
+    return _mm256_movemask_ps((__m256)bad) == 0;
 }
 
 /** gspectral_kxyz on 8-float vectors (equal bit for bit). */
@@ -580,6 +606,16 @@ static inline GSPECTRAL_TARGET_AVX2 void gspectral_kxyz8(const float *t, const f
 {
     gspectral_v8 x = {0, 0, 0, 0, 0, 0, 0, 0}, y = x, z = x;
     int i = 0;
+    for (; i + 16 <= n; i += 16) { /* two blocks a step, added in order: the same sums */
+        const float *b = t + i * 3;
+        gspectral_v8 v0 = gspectral_vload8(a + i), v1 = gspectral_vload8(a + i + 8);
+        x += v0 * gspectral_vload8(b);
+        y += v0 * gspectral_vload8(b + 8);
+        z += v0 * gspectral_vload8(b + 16);
+        x += v1 * gspectral_vload8(b + 24);
+        y += v1 * gspectral_vload8(b + 32);
+        z += v1 * gspectral_vload8(b + 40);
+    }
     for (; i + 8 <= n; i += 8) {
         const float *b = t + i * 3;
         gspectral_v8 v = gspectral_vload8(a + i);
@@ -587,11 +623,22 @@ static inline GSPECTRAL_TARGET_AVX2 void gspectral_kxyz8(const float *t, const f
         y += v * gspectral_vload8(b + 8);
         z += v * gspectral_vload8(b + 16);
     }
-    float xs[4], ys[4], zs[4];
-    gspectral_vstore(xs, gspectral_vfold8(x));
-    gspectral_vstore(ys, gspectral_vfold8(y));
-    gspectral_vstore(zs, gspectral_vfold8(z));
-    gspectral_kxyz_tail(t, a, i, n, xs, ys, zs, xyz);
+    float tail[3] = {0.0f, 0.0f, 0.0f};
+    for (; i < n; i++) { /* as gspectral_kxyz_tail */
+        const float *b = t + (i >> 3) * 24 + (i & 7);
+        tail[0] += a[i] * b[0];
+        tail[1] += a[i] * b[8];
+        tail[2] += a[i] * b[16];
+    }
+    /* the lanes in double: hadd gives (l0 + l1) in the low half and (l2 + l3) in the high one, per coordinate */
+    __m256d dx = _mm256_cvtps_pd((__m128)gspectral_vfold8(x)), dy = _mm256_cvtps_pd((__m128)gspectral_vfold8(y));
+    __m256d dz = _mm256_cvtps_pd((__m128)gspectral_vfold8(z));
+    __m256d xy = _mm256_hadd_pd(dx, dy), zz = _mm256_hadd_pd(dz, dz); /* x01 y01 x23 y23, z01 z01 z23 z23 */
+    __m128d sxy = _mm_add_pd(_mm256_castpd256_pd128(xy), _mm256_extractf128_pd(xy, 1));
+    __m128d sz = _mm_add_sd(_mm256_castpd256_pd128(zz), _mm256_extractf128_pd(zz, 1));
+    __m128d txy = _mm_cvtps_pd(_mm_setr_ps(tail[0], tail[1], 0.0f, 0.0f));
+    _mm_storeu_pd(xyz, _mm_add_pd(sxy, txy));
+    xyz[2] = _mm_cvtsd_f64(sz) + (double)tail[2];
 }
 #endif
 
