@@ -292,19 +292,9 @@ static float entry_b(int o, int i) { return 0.3f + 0.002f * (float)o - 0.001f * 
  * a re-radiation matrix into a vector (it has no matrices). */
 static int make_matrix(const GColorModel *m, float (*f)(int, int), GColor *out)
 {
+    if (!tu_diagonal_matrix(m, out))
+        return 0;
     int n = m->nsamples;
-    if (n <= 0 || m->capacity != n * n)
-        return 0;
-    float *data = calloc((size_t)n * n, sizeof *data);
-    assert_non_null(data);
-    for (int k = 0; k < n; k++)
-        data[k * n + k] = 0.5f;
-    GReradiation r = {m->lambda_min, m->lambda_step, n, m->lambda_min, m->lambda_step, n, data};
-    GError err;
-    assert_int_equal(gcolor_from_reradiation(out, &r, &err), G_OK);
-    free(data);
-    if (out->kind != GCOLOR_MATRIX)
-        return 0;
     for (int o = 0; o < n; o++)
         for (int i = 0; i < n; i++)
             out->v[o * n + i] = f(o, i);

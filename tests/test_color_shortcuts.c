@@ -87,23 +87,6 @@ static void test_vectors_in_every_model(void **state)
         gcolormodel_destroy(models[k]);
 }
 
-/* A matrix of the model (when it has them): the diagonal reflectance 0.5, from a re-radiation matrix. */
-static int make_matrix(const GColorModel *m, GColor *out)
-{
-    int n = m->nsamples;
-    if (n <= 0 || m->capacity != n * n)
-        return 0;
-    float *data = calloc((size_t)n * n, sizeof *data);
-    assert_non_null(data);
-    for (int k = 0; k < n; k++)
-        data[k * n + k] = 0.5f;
-    GReradiation r = {m->lambda_min, m->lambda_step, n, m->lambda_min, m->lambda_step, n, data};
-    GError err;
-    assert_int_equal(gcolor_from_reradiation(out, &r, &err), G_OK);
-    free(data);
-    return out->kind == GCOLOR_MATRIX;
-}
-
 static void test_matrices(void **state)
 {
     (void)state;
@@ -116,7 +99,7 @@ static void test_matrices(void **state)
         GScratchMark mark = gscratch_mark(s);
         GColor a;
         assert_int_equal(gcolor_scratch(&a, m, s), G_OK);
-        if (!make_matrix(m, &a)) {
+        if (!tu_diagonal_matrix(m, &a)) {
             gscratch_release(s, mark);
             continue;
         }
@@ -264,7 +247,7 @@ static void test_mul_scaled_is_mul_then_scale(void **state)
         b.v[m->nvalues - 1] = -0.0f;
         for (size_t j = 0; j < sizeof scales / sizeof *scales; j++)
             assert_mul_scaled(m, s, &a, &b, scales[j]);
-        if (make_matrix(m, &mat)) { /* matrix times light, and matrix times matrix: the model's own */
+        if (tu_diagonal_matrix(m, &mat)) { /* matrix times light, and matrix times matrix: the model's own */
             mat.v[m->nsamples - 1] = 0.25f;
             assert_mul_scaled(m, s, &mat, &b, 0.3);
             assert_mul_scaled(m, s, &mat, &mat, 0.3);

@@ -1,6 +1,6 @@
 /* test_util.h - small helpers shared by the test programs (static inline, include after <cmocka.h>):
- * a double-precision closeness assertion, a counting allocator that can fail one chosen call, and running a
- * built tool with its output captured. */
+ * a double-precision closeness assertion, a counting allocator that can fail one chosen call, running a
+ * built tool with its output captured, and a model's diagonal matrix. */
 #ifndef GENERIC_TEST_UTIL_H
 #define GENERIC_TEST_UTIL_H
 
@@ -11,6 +11,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "generic/color.h"
 #include "generic/memory.h"
 
 /** |a - b| <= tol in double precision (cmocka's assert_float_equal works in float); a failure prints the
@@ -23,6 +24,24 @@ static inline void tu_near(double a, double b, double tol, const char *what, con
         print_error("%s:%d: %s = %.10g, expected %.10g within %g\n", file, line, what, a, b, tol);
         _fail(file, line);
     }
+}
+
+/** A matrix of model m (through from_reradiation): the diagonal reflectance 0.5. 0 when the model turns a
+ * re-radiation matrix into a vector (it has no matrices). */
+static inline int tu_diagonal_matrix(const GColorModel *m, GColor *out)
+{
+    int n = m->nsamples;
+    if (n <= 0 || m->capacity != n * n)
+        return 0;
+    float *data = calloc((size_t)n * n, sizeof *data);
+    assert_non_null(data);
+    for (int k = 0; k < n; k++)
+        data[k * n + k] = 0.5f;
+    GReradiation r = {m->lambda_min, m->lambda_step, n, m->lambda_min, m->lambda_step, n, data};
+    GError err;
+    assert_int_equal(gcolor_from_reradiation(out, &r, &err), G_OK);
+    free(data);
+    return out->kind == GCOLOR_MATRIX;
 }
 
 /** The number of elements of an array (for gcolor_wrap's size argument; not for a pointer). */

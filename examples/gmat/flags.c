@@ -24,6 +24,51 @@ static double largest(const GColor *c)
     return big;
 }
 
+/* What one check measures at a surface point (below: the point is seen from under the surface); *calls counts the
+ * class's calls. */
+typedef double (*PointMeasure)(GmatContext *ctx, GSurfPoint *sp, int below, int *calls);
+
+/* The measure at every place of the finite check, above and below the surface: the largest value, or with `sum`
+ * the total. */
+static double over_places(GmatContext *ctx, const GmatPlace *places, int nplaces, PointMeasure measure, int sum,
+                          int *calls)
+{
+    double acc = 0.0;
+    *calls = 0;
+    for (int p = 0; p < nplaces; p++) {
+        ctx->place = &places[p];
+        for (int below = 0; below < 2; below++) {
+            GSurfPoint sp;
+            gmat_surface_point(ctx, &sp, below);
+            double v = measure(ctx, &sp, below, calls);
+            acc = sum ? acc + v : fmax(acc, v);
+        }
+    }
+    ctx->place = NULL;
+    return acc;
+}
+
+/* The largest |value| of the class's own emission over the finite check's directions (a failed call: infinite). */
+static double emission_at(GmatContext *ctx, GSurfPoint *sp, int below, int *calls)
+{
+    const GMaterial *m = ctx->material;
+    double worst = 0.0, sign = below ? -1.0 : 1.0;
+    for (int t = 0; t < 90; t += 15)
+        for (int ph = 0; ph < 360; ph += 90) {
+            GVec3 out = gmat_direction(t, ph);
+            out.z *= sign;
+            GScratchMark mark = gscratch_mark(ctx->scratch);
+            GColor c;
+            int rc = gcolor_scratch(&c, ctx->model, ctx->scratch);
+            if (rc == G_OK)
+                rc = m->cls->emission(m, sp, out, &c);
+            worst = fmax(worst, rc == G_OK ? largest(&c) : INFINITY);
+            (*calls)++;
+            gscratch_release(ctx->scratch, mark);
+        }
+    return worst;
+}
+
 void gmat_check_no_emission(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
                             void *checker)
 {
@@ -34,34 +79,20 @@ void gmat_check_no_emission(GmatContext *ctx, const GmatPlace *places, int nplac
                                   : "(GMAT_NO_EMISSION set, no emission slot: black, the default)");
         return;
     }
-    double worst = 0.0;
-    int calls = 0;
-    for (int p = 0; p < nplaces; p++) {
-        ctx->place = &places[p];
-        for (int below = 0; below < 2; below++) {
-            GSurfPoint sp;
-            gmat_surface_point(ctx, &sp, below);
-            double sign = below ? -1.0 : 1.0;
-            for (int t = 0; t < 90; t += 15)
-                for (int ph = 0; ph < 360; ph += 90) {
-                    GVec3 out = gmat_direction(t, ph);
-                    out.z *= sign;
-                    GScratchMark mark = gscratch_mark(ctx->scratch);
-                    GColor c;
-                    int rc = gcolor_scratch(&c, ctx->model, ctx->scratch);
-                    if (rc == G_OK)
-                        rc = m->cls->emission(m, &sp, out, &c);
-                    worst = fmax(worst, rc == G_OK ? largest(&c) : INFINITY);
-                    calls++;
-                    gscratch_release(ctx->scratch, mark);
-                }
-        }
-    }
-    ctx->place = NULL;
+    int calls;
+    double worst = over_places(ctx, places, nplaces, emission_at, 0, &calls);
     char detail[200];
     snprintf(detail, sizeof detail, "(GMAT_NO_EMISSION set: largest |value| of the class's own emission, %d calls;"
              " must be black)", calls);
     report(checker, "no-emission", worst, 0.0, detail);
+}
+
+/* 1 when the class's own opaque slot does not say 1 at sp. */
+static double not_opaque_at(GmatContext *ctx, GSurfPoint *sp, int below, int *calls)
+{
+    (void)below;
+    (*calls)++;
+    return ctx->material->cls->opaque(ctx->material, sp) != 1;
 }
 
 void gmat_check_opaque_flag(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
@@ -74,21 +105,24 @@ void gmat_check_opaque_flag(GmatContext *ctx, const GmatPlace *places, int nplac
                                                : "(GMAT_OPAQUE set, no opaque slot: opaque, the default)");
         return;
     }
-    int calls = 0, wrong = 0;
-    for (int p = 0; p < nplaces; p++) {
-        ctx->place = &places[p];
-        for (int below = 0; below < 2; below++) {
-            GSurfPoint sp;
-            gmat_surface_point(ctx, &sp, below);
-            wrong += m->cls->opaque(m, &sp) != 1;
-            calls++;
-        }
-    }
-    ctx->place = NULL;
+    int calls;
+    double wrong = over_places(ctx, places, nplaces, not_opaque_at, 1, &calls);
     char detail[200];
     snprintf(detail, sizeof detail, "(GMAT_OPAQUE set: calls of the class's own opaque slot that did not say 1, of %d)",
              calls);
     report(checker, "opaque-flag", wrong, 0.0, detail);
+}
+
+/* The distance of the class's own normal at sp from the geometric normal (a failed call: infinite). */
+static double normal_off_at(GmatContext *ctx, GSurfPoint *sp, int below, int *calls)
+{
+    (void)below;
+    const GMaterial *m = ctx->material;
+    GVec3 n = sp->geometric_normal;
+    int rc = m->cls->normal(m, sp, &n);
+    double d = gvec3_length(gvec3_sub(n, sp->geometric_normal));
+    (*calls)++;
+    return rc == G_OK && !isnan(d) ? d : INFINITY;
 }
 
 void gmat_check_geometric_normal(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
@@ -103,21 +137,8 @@ void gmat_check_geometric_normal(GmatContext *ctx, const GmatPlace *places, int 
                    : "(GMAT_GEOMETRIC_NORMAL set, no normal slot: the geometric normal, the default)");
         return;
     }
-    double worst = 0.0;
-    int calls = 0;
-    for (int p = 0; p < nplaces; p++) {
-        ctx->place = &places[p];
-        for (int below = 0; below < 2; below++) {
-            GSurfPoint sp;
-            gmat_surface_point(ctx, &sp, below);
-            GVec3 n = sp.geometric_normal;
-            int rc = m->cls->normal(m, &sp, &n);
-            double d = gvec3_length(gvec3_sub(n, sp.geometric_normal));
-            worst = fmax(worst, rc == G_OK && !isnan(d) ? d : INFINITY);
-            calls++;
-        }
-    }
-    ctx->place = NULL;
+    int calls;
+    double worst = over_places(ctx, places, nplaces, normal_off_at, 0, &calls);
     char detail[200];
     snprintf(detail, sizeof detail,
              "(GMAT_GEOMETRIC_NORMAL set: largest distance of the class's own normal from the geometric one, %d calls)",
