@@ -95,24 +95,6 @@ static Ray random_ray(const Scene *s, Rng *g)
     return r;
 }
 
-/* 1 when an opaque-everywhere shape of s lies on r (brute force over the objects). */
-static int opaque_on(const Scene *s, const Ray *r)
-{
-    for (int i = 0; i < s->nobjects; i++) {
-        const Object *o = s->objects[i];
-        GVec3 ro = r->o, rd = r->d;
-        if (o->has_xf) {
-            ro = xform_inv_point(&o->xf, ro);
-            rd = xform_inv_vector(&o->xf, rd);
-        }
-        double t;
-        int surface;
-        if (gmaterial_opaque_everywhere(o->material) && shape_intersect(o, ro, rd, r->tmin, r->tmax, &t, &surface))
-            return 1;
-    }
-    return 0;
-}
-
 /* The t at which r meets o in o's own space within (tmin, tmax) by shape_intersect itself (INFINITY: none), for
  * the direct list's t to be compared bit for bit. */
 static double shape_t(const Object *o, const Ray *r)
@@ -125,6 +107,15 @@ static double shape_t(const Object *o, const Ray *r)
     double t;
     int surface;
     return shape_intersect(o, ro, rd, r->tmin, r->tmax < 3.0e38 ? r->tmax : INFINITY, &t, &surface) ? t : INFINITY;
+}
+
+/* 1 when an opaque-everywhere shape of s lies on r (brute force over the objects). */
+static int opaque_on(const Scene *s, const Ray *r)
+{
+    for (int i = 0; i < s->nobjects; i++)
+        if (gmaterial_opaque_everywhere(s->objects[i]->material) && shape_t(s->objects[i], r) < INFINITY)
+            return 1;
+    return 0;
 }
 
 typedef struct Traced {
