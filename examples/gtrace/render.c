@@ -34,6 +34,7 @@ typedef struct Worker {
     int *perm;
     uint64_t nonfinite, capped;
     GColor acc, sample;
+    char apart[64]; /* keeps the next worker's fields, written per ray, off the cache line of these */
 } Worker;
 
 static int render_pixel(Worker *w, const Job *job, int x, int y)
@@ -192,13 +193,18 @@ static int set_wavelengths(Framebuffer *fb, const GColorModel *m, GError *err)
     return G_OK;
 }
 
-/* A worker's arena: room for 32 colours a bounce down to the deepest one (a bounce holds a handful: the shading
+/* The colours a worker keeps in its arena from the start: the context's temporaries, 1, the pixel and the sample
+ * (there, not on the heap, so that two workers' colours never share a cache line). */
+#define WORKER_COLOURS (TRACE_TMP_COUNT + 3)
+
+/* A worker's arena: its own colours and room for 32 colours a bounce down to the deepest one (a bounce holds a handful: the shading
  * point's, its lights', its textures'), so that it need not grow while rendering, where a new depth reached would
  * allocate (the default 256 KiB holds 38 values of a model with 41 x 41 re-radiation matrices); at least that
  * default, at most 16 MiB. Pages never reached are never touched. */
 static size_t arena_bytes(const GColorModel *m, int depth)
 {
-    size_t want = gcolormodel_value_bytes(m) * 32 * ((size_t)depth + 2), lo = 256 * 1024, hi = 16u << 20;
+    size_t want = gcolormodel_value_bytes(m) * (32 * ((size_t)depth + 2) + WORKER_COLOURS), lo = 256 * 1024,
+           hi = 16u << 20;
     return want < lo ? lo : want > hi ? hi : want;
 }
 
@@ -240,9 +246,10 @@ int renderer_create(Renderer **out, const Scene *s, const RenderSettings *rs, Fr
         w->ctx = (TraceCtx){.scene = s, .max_depth = rs->depth, .cutoff = rs->cutoff, .bands = &r->bands, .band = -1};
         w->ctx.scratch = gscratch_create(arena_bytes(s->model, rs->depth));
         w->perm = gmem_alloc((size_t)rs->spp * sizeof(int));
-        ok = w->ctx.scratch && w->perm && gcolor_alloc(&w->ctx.unit, s->model) == G_OK &&
+        ok = w->ctx.scratch && w->perm && gcolor_scratch(&w->ctx.unit, s->model, w->ctx.scratch) == G_OK &&
              gmaterial_refraction_index(NULL, NULL, &w->ctx.unit) == G_OK && trace_ctx_temps(&w->ctx) == G_OK &&
-             gcolor_alloc(&w->acc, s->model) == G_OK && gcolor_alloc(&w->sample, s->model) == G_OK;
+             gcolor_scratch(&w->acc, s->model, w->ctx.scratch) == G_OK &&
+             gcolor_scratch(&w->sample, s->model, w->ctx.scratch) == G_OK;
     }
     if (ok && rs->waves && (rc = set_wavelengths(fb, s->model, err)) != G_OK) {
         framebuffer_free(fb);

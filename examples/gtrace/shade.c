@@ -66,7 +66,8 @@ static void uv_of(GVec3 a, GVec3 b, GVec3 v1, GVec3 v2, double out1[2], double o
 int trace_ctx_temps(TraceCtx *c)
 {
     for (int i = 0; i < TRACE_TMP_COUNT; i++)
-        if (c->tmp[i].storage == GCOLOR_STORAGE_NONE && gcolor_alloc(&c->tmp[i], c->scene->model) != G_OK)
+        if (c->tmp[i].storage == GCOLOR_STORAGE_NONE &&
+            gcolor_scratch(&c->tmp[i], c->scene->model, c->scratch) != G_OK)
             return G_ERR_NOMEM;
     return G_OK;
 }

@@ -45,14 +45,15 @@ typedef struct TraceCtx {
     const char *culprit; /**< type of the material whose call failed first (NULL: none or not a material) */
     const Bands *bands;  /**< the wavelength groups a dispersive refraction splits into (NULL: none) */
     int band;            /**< the group the current path carries (-1: all light; set by a dispersive split) */
-    GColor tmp[TRACE_TMP_COUNT]; /**< heap temporaries made once with the context (trace_ctx_temps); cleared in a
+    GColor tmp[TRACE_TMP_COUNT]; /**< temporaries made once with the context (trace_ctx_temps); cleared in a
                                   * context built without them, whose users then take arena storage (trace_tmp) */
 } TraceCtx;
 
-/** Gives c its own temporaries (c->tmp, heap storage of the scene's model); G_ERR_NOMEM when out of memory (what
- * was made is still freed by trace_ctx_free_temps). */
+/** Gives c its own temporaries (c->tmp, of the scene's model) from c's arena, made before any mark its users take
+ * and kept for its life (a worker's own arena: two threads' colours never share a cache line); G_ERR_NOMEM when
+ * the arena cannot grow. */
 int trace_ctx_temps(TraceCtx *c);
-/** Frees the temporaries of trace_ctx_temps and clears them (a no-op for a context without them). */
+/** Clears the handles of trace_ctx_temps (their storage goes with the arena; a no-op for a context without them). */
 void trace_ctx_free_temps(TraceCtx *c);
 /** The temporary `which` (a TRACE_TMP_ value) of c into *out: a copy of c's handle when c has its temporaries,
  * else storage from c's arena (given back by the caller's mark and release). Not black: the users write before
