@@ -163,7 +163,10 @@ static int encode_png(Sink *sink, const char *path, const GImage *img, double sc
     for (int y = 0; y < img->height; y++) {
         const float *src = img->pixels + (size_t)y * stride;
         for (size_t i = 0; i < stride; i++)
-            row[i] = (int)(i % (size_t)ch) == alpha ? encode(src[i], 1) : encode_colour(src[i] * scale);
+            row[i] = encode_colour(src[i] * scale);
+        if (alpha >= 0) /* the alpha channel again, unscaled and linear (no division per sample to find it) */
+            for (size_t i = (size_t)alpha; i < stride; i += (size_t)ch)
+                row[i] = encode(src[i], 1);
         png_write_row(png, row);
     }
     png_write_end(png, info);

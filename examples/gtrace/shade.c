@@ -54,13 +54,13 @@ static void uv_of(GVec3 a, GVec3 b, GVec3 v1, GVec3 v2, double out1[2], double o
         out1[0] = out1[1] = out2[0] = out2[1] = 0.0;
         return;
     }
-    double av = gvec3_dot(a, v1), bv = gvec3_dot(b, v1);
-    out1[0] = (bb * av - ab * bv) / det;
-    out1[1] = (aa * bv - ab * av) / det;
+    double inv = 1.0 / det, av = gvec3_dot(a, v1), bv = gvec3_dot(b, v1);
+    out1[0] = (bb * av - ab * bv) * inv;
+    out1[1] = (aa * bv - ab * av) * inv;
     av = gvec3_dot(a, v2);
     bv = gvec3_dot(b, v2);
-    out2[0] = (bb * av - ab * bv) / det;
-    out2[1] = (aa * bv - ab * av) / det;
+    out2[0] = (bb * av - ab * bv) * inv;
+    out2[1] = (aa * bv - ab * av) * inv;
 }
 
 int trace_ctx_temps(TraceCtx *c)

@@ -244,7 +244,9 @@ static void local_geom(const Object *o, int surface, GVec3 *p, GVec3 *n, GVec3 *
         GVec3 l = gvec3_normalize(gvec3_sub(*p, o->center));
         *p = gvec3_madd(o->center, l, o->radius);
         *n = l;
-        double cy = gfmax(-1.0, gfmin(1.0, l.y)), theta = acos(cy), st = sin(theta);
+        /* theta = acos(cy) from the pole, phi = atan2(-l.z, l.x) around y; sin(theta) = sqrt(1 - cy^2), and
+         * sin(theta) cos(phi) = l.x, sin(theta) sin(phi) = -l.z: no sin, and no division for dp/du */
+        double cy = gfmax(-1.0, gfmin(1.0, l.y)), theta = acos(cy), st = sqrt(gfmax(0.0, 1.0 - cy * cy));
         double phi = atan2(-l.z, l.x);
         *u = wrap01(phi / (2.0 * M_PI));
         *v = 1.0 - theta / M_PI;
@@ -254,9 +256,9 @@ static void local_geom(const Object *o, int surface, GVec3 *p, GVec3 *n, GVec3 *
             *dpdu = gvec3_scale(*dpdu, 2.0 * M_PI * r);
             *dpdv = gvec3_scale(*dpdv, M_PI * r);
         } else {
-            double cp = l.x / st, sp = -l.z / st;
-            *dpdu = gvec3(-2.0 * M_PI * r * st * sp, 0.0, -2.0 * M_PI * r * st * cp);
-            *dpdv = gvec3(-M_PI * r * cy * cp, M_PI * r * st, M_PI * r * cy * sp);
+            double k = M_PI * r * cy / st;
+            *dpdu = gvec3(2.0 * M_PI * r * l.z, 0.0, -2.0 * M_PI * r * l.x);
+            *dpdv = gvec3(-k * l.x, M_PI * r * st, -k * l.z);
         }
         break;
     }
