@@ -44,12 +44,16 @@ static int invert3(const double m[3][3], double out[3][3])
     return 0;
 }
 
+/* out = m v (out may be v). Three scalars, not an array copied out: the copy read the array 16 bytes at a time
+ * right after its 8-byte stores, a store-forwarding stall on every call (two per pixel). */
 static void mat3_apply(const double m[3][3], const double v[3], double out[3])
 {
-    double r[3];
-    for (int i = 0; i < 3; i++)
-        r[i] = m[i][0] * v[0] + m[i][1] * v[1] + m[i][2] * v[2];
-    memcpy(out, r, sizeof r);
+    double r0 = m[0][0] * v[0] + m[0][1] * v[1] + m[0][2] * v[2];
+    double r1 = m[1][0] * v[0] + m[1][1] * v[1] + m[1][2] * v[2];
+    double r2 = m[2][0] * v[0] + m[2][1] * v[1] + m[2][2] * v[2];
+    out[0] = r0;
+    out[1] = r1;
+    out[2] = r2;
 }
 
 static void init_tables(void)
