@@ -1,35 +1,70 @@
 #!/bin/sh
-# Runs every test program in BUILD/tests (default build) and the script tests in tests/scripts/,
-# then prints one summary line "N passed, N failed".
-# Test programs find the shared data and the source tree through GENERIC_SOURCE_DIR.
+# run_tests.sh [BUILD] - runs every test program in BUILD/tests (default build) and the script tests in
+# tests/scripts/, TEST_JOBS at a time (default: the number of processors), prints PASS or FAIL for each as it
+# ends, then the log of each failure and one summary line "N passed, N failed".
+# The tests that measure time or wait on timeouts, and those that run `make install` in this tree (SERIAL below),
+# run afterwards, one at a time, with no other test loading the machine under them. Test programs find the shared data and the source tree through
+# GENERIC_SOURCE_DIR. Each test's output goes to its log: BUILD/tests/NAME.log.
+# (run_tests.sh --one BUILD PROGRAM runs one test: the form the parallel phase calls.)
+SERIAL="gtrace_mpi.sh load_linear.sh install_test.sh lazy_oiio.sh"
+
+if [ "${1:-}" = "--one" ]; then
+    BUILD=$2
+    prog=$3
+    name=$(basename "$prog")
+    log="$BUILD/tests/$name.log"
+    case "$prog" in
+    *.sh) "$prog" "$BUILD" > "$log" 2>&1 ;;
+    *) "$prog" > "$log" 2>&1 ;;
+    esac
+    status=$?
+    echo "$status" > "$log.status"
+    if [ "$status" -eq 0 ]; then
+        cases=$(grep -c '^\[       OK \]' "$log")
+        if [ "$cases" -gt 0 ]; then echo "PASS $name ($cases cases)"; else echo "PASS $name"; fi
+    else
+        echo "FAIL $name"
+    fi
+    exit 0
+fi
+
 BUILD=${1:-build}
 GENERIC_SOURCE_DIR=$(pwd)
 GENERIC_BUILD_DIR=$(cd "$BUILD" && pwd)
 export GENERIC_SOURCE_DIR GENERIC_BUILD_DIR
-pass=0
-fail=0
-run() { # name, log, command...
-    name=$1
-    log=$2
-    shift 2
-    if "$@" > "$log" 2>&1; then
-        pass=$((pass + 1))
-        cases=$(grep -c '^\[       OK \]' "$log")
-        if [ "$cases" -gt 0 ]; then echo "PASS $name ($cases cases)"; else echo "PASS $name"; fi
-    else
-        fail=$((fail + 1))
-        echo "FAIL $name"
-        cat "$log"
-    fi
-}
+JOBS=${TEST_JOBS:-$(nproc 2> /dev/null || echo 1)}
+SELF="$0"
+
+list=$(mktemp)
+serial=$(mktemp)
+trap 'rm -f "$list" "$serial"' EXIT
 for t in "$BUILD"/tests/test_*; do
-    case "$t" in *.log | *.d | *.o) continue ;; esac
-    [ -x "$t" ] || continue
-    run "$(basename "$t")" "$t.log" "$t"
-done
+    case "$t" in *.log | *.d | *.o | *.status) continue ;; esac
+    [ -x "$t" ] && echo "$t"
+done > "$list"
 for s in tests/scripts/*.sh; do
     [ -x "$s" ] || continue
-    run "$(basename "$s")" "$BUILD/tests/$(basename "$s").log" "$s" "$BUILD"
+    case " $SERIAL " in
+    *" $(basename "$s") "*) echo "$s" >> "$serial" ;;
+    *) echo "$s" >> "$list" ;;
+    esac
+done
+cat "$list" "$serial" | while read -r p; do rm -f "$BUILD/tests/$(basename "$p").log.status"; done
+
+xargs -P "$JOBS" -I{} "$SELF" --one "$BUILD" {} < "$list"
+while read -r p; do "$SELF" --one "$BUILD" "$p" < /dev/null; done < "$serial"
+
+pass=0
+fail=0
+for p in $(cat "$list" "$serial"); do
+    log="$BUILD/tests/$(basename "$p").log"
+    if [ "$(cat "$log.status" 2> /dev/null)" = "0" ]; then
+        pass=$((pass + 1))
+    else
+        fail=$((fail + 1))
+        echo "==== FAIL $(basename "$p"): $log"
+        cat "$log"
+    fi
 done
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]
