@@ -278,7 +278,8 @@ static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const 
         CHECK(gcolor_add(out, out, &tmp));
     }
     int opaque = gmaterial_opaque(m, sp);
-    if (s->nlights > 0) {
+    /* a material whose every lobe is ideal reflects no light sample (is_delta, material.h): no light is asked */
+    if (s->nlights > 0 && !gmaterial_is_delta(m, sp)) {
         LightTmp lt;
         CHECK(light_temps(c, &lt));
         for (int i = 0; i < s->nlights; i++)
