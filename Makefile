@@ -477,14 +477,20 @@ fuzz-seed:
 	@$(foreach t,$(FUZZ_NAMES),mkdir -p $(FUZZ_BUILD)/seed/$(t) && \
 	    for f in $(wildcard $(FUZZ_SEED_$(t))) ''; do [ -z "$$f" ] || cp "$$f" $(FUZZ_BUILD)/seed/$(t)/; done;)
 
+# The targets run FUZZ_JOBS at a time (default: the processors; each run is one process on one core, so a target
+# gets the same FUZZ_SECONDS of a core as alone), each printing its lines as it ends; a failed one is named in
+# FUZZ_BUILD/failed and the others still run.
+FUZZ_JOBS ?= $(shell nproc 2>/dev/null || echo 1)
+fuzz_each = printf '%s\n' $(FUZZ_TARGETS) | xargs -P $(FUZZ_JOBS) -I{} sh -c \
+    '$(MAKE) --no-print-directory $(1){} || echo "$(2){}" >> $(FUZZ_BUILD)/failed'
+
 fuzz: fuzz-build fuzz-seed
-	@failed=; for t in $(FUZZ_TARGETS); do $(MAKE) --no-print-directory fuzz-run-$$t || failed="$$failed $$t"; done; \
-	for t in $(FUZZ_TARGETS); do $(MAKE) --no-print-directory fuzz-gen-$$t || failed="$$failed gen-$$t"; done; \
-	if [ -n "$$failed" ]; then echo "fuzz: FAILED:$$failed (inputs in $(FUZZ_BUILD)/crashes/)"; exit 1; fi
+	@rm -f $(FUZZ_BUILD)/failed; $(call fuzz_each,fuzz-run-,); $(call fuzz_each,fuzz-gen-,gen-); \
+	if [ -s $(FUZZ_BUILD)/failed ]; then echo "fuzz: FAILED: $$(cat $(FUZZ_BUILD)/failed | tr '\n' ' ')(inputs in $(FUZZ_BUILD)/crashes/)"; exit 1; fi
 
 fuzz-gen: fuzz-build
-	@failed=; for t in $(FUZZ_TARGETS); do $(MAKE) --no-print-directory fuzz-gen-$$t || failed="$$failed $$t"; done; \
-	if [ -n "$$failed" ]; then echo "fuzz-gen: FAILED:$$failed (inputs in $(FUZZ_BUILD)/crashes/)"; exit 1; fi
+	@rm -f $(FUZZ_BUILD)/failed; $(call fuzz_each,fuzz-gen-,); \
+	if [ -s $(FUZZ_BUILD)/failed ]; then echo "fuzz-gen: FAILED: $$(cat $(FUZZ_BUILD)/failed | tr '\n' ' ')(inputs in $(FUZZ_BUILD)/crashes/)"; exit 1; fi
 
 fuzz-gen-%:
 	@tests/fuzz/run_generated.sh $* $(FUZZ_SEED) $(FUZZ_GEN_COUNT) $(FUZZ_GEN_BUDGET) $(FUZZ_GEN_TIMEOUT) \
