@@ -510,6 +510,6 @@ fuzz-run-%:
 	        -print_final_stats=1 -artifact_prefix=$(FUZZ_BUILD)/crashes/$*/ $$dirs > $$log 2>&1; then \
 	    tail -n 80 $$log; echo "fuzz $*: FAILED (input in $(FUZZ_BUILD)/crashes/$*/, log $$log)"; exit 1; \
 	fi; \
-	grep -E '^stat::(number_of_executed_units|new_units_added|peak_rss_mb)' $$log | tr -s ' \n' ' '; echo
+	echo "fuzz $*: $$(grep -E '^stat::(number_of_executed_units|new_units_added|peak_rss_mb)' $$log | tr -s ' \n' ' ')"
 -include $(shell find $(FUZZ_BUILD)/obj -name '*.d' 2>/dev/null)
 # (end of fuzzing)
