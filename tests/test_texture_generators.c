@@ -79,6 +79,14 @@ static void test_checker_parity(void **state)
         else
             assert_float_equal(got, want, 1e-9); /* rounding put an end on the edge */
     }
+    /* the parity of a cell far out, where u is an integer or an even one (2^52 and up), on both sides of 0:
+     * the cell of floor(u), as fmod(|floor(u)|, 2) gives it; at v = 0.5 (cell 0) the checker is that parity */
+    for (int e = 20; e <= 70; e++)
+        for (int k = -3; k <= 3; k++)
+            for (int sign = -1; sign <= 1; sign += 2) {
+                double u = sign * (ldexp(1.0, e) + k + 0.25);
+                assert_true(at_uv(c2, u, 0.5, 0.0) == fmod(fabs(floor(u)), 2.0));
+            }
     ggenerator_unref(c2);
     ggenerator_unref(c4);
     ggenerator_unref(c3);

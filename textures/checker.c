@@ -32,7 +32,10 @@ static double filtered(double x, double w)
     double lo = x - 0.5 * w, hi = x + 0.5 * w;
     if (w > 1e-9 && floor(lo) != floor(hi))
         return (wave_integral(hi) - wave_integral(lo)) / w;
-    return fmod(fabs(floor(x)), 2.0);
+    /* the parity of the cell, 0 or 1: fmod(|floor(x)|, 2) without the call, exact for every double (h and
+     * 2 floor(h / 2) are integers that differ by 0 or 1; a NaN or an infinity gives a NaN, as fmod does) */
+    double h = floor(x);
+    return h - 2.0 * floor(0.5 * h);
 }
 
 /* Probability that the xor of two independent bits is 1. */
