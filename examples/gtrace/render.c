@@ -161,6 +161,9 @@ void renderer_destroy(Renderer *r)
 {
     if (!r)
         return;
+    /* the team's threads, idle now, would otherwise spin a few milliseconds waiting for another parallel region
+     * (libgomp's default wait policy) while the picture is written: released, they cost no CPU */
+    omp_pause_resource_all(omp_pause_soft);
     for (int i = 0; r->workers && i < r->nthreads; i++) {
         gcolor_free(&r->workers[i].ctx.unit);
         trace_ctx_free_temps(&r->workers[i].ctx);
