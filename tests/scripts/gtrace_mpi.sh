@@ -126,8 +126,9 @@ interrupt() {
     [ -n "$pid" ] || fail "rank $2 of the $3 job was not found"
 }
 # a worker that stops answering (SIGSTOP: alive to the launcher) is declared dead after --mpi-timeout
-# (many cheap blocks: no dispersion, depth 3, so that no block of a live rank takes near the timeout on a busy machine)
-BIG="--width 480 --spp 24 --depth 3 --bands 1 --threads 1 -q --mpi-block 16 --mpi-timeout 5"
+# (many cheap blocks: no dispersion, depth 3, so that no block of a live rank takes near the timeout on a busy machine;
+# about 3.5 s of CPU per rank in all, so that the signal, sent once the rank has used 1 s, comes while it renders)
+BIG="--width 480 --spp 64 --depth 3 --bands 1 --threads 1 -q --mpi-block 16 --mpi-timeout 5"
 t0=$(date +%s)
 interrupt STOP 2 stopped
 # (stopped while rendering, or, on a slow machine, before it reported its scene)
