@@ -12,10 +12,33 @@
 
 #include <math.h>
 
-/* The model's priv struct is a plain GSpectral. */
+/** Samples of the default grid (380..780 nm every 5 nm), which has operations of its own below. */
+enum { FAST_N = 81 };
+
+/* The model's priv struct: its GSpectral, then on the default grid the colour matching tables of to_xyz (the
+ * kit's gspectral_xyz_table layout: the kit keeps its own in a place private to it). */
+typedef struct Spectrum {
+    GSpectral s;
+    float xyz[2][(FAST_N + 7) / 8 * 24]; /**< per role: gspectral_xyz_table_floats(FAST_N) */
+} Spectrum;
+
+/* gspectral_model_init (grid, capacity of n, the kit's tables) with the larger priv struct, and the tables. */
 static int spectrum_init(GColorModel *self, const GColorModelOptions *opt, GError *err)
 {
-    return gspectral_model_init(self, opt, 5.0, GSPECTRAL_MAX_SAMPLES, 0, err);
+    GSpectralGrid grid;
+    int rc = gspectral_grid_from_options(self->cls->name, opt, 5.0, GSPECTRAL_MAX_SAMPLES, &grid, err);
+    if (rc == G_OK)
+        rc = gspectral_model_alloc(self, sizeof(Spectrum), grid.n, err);
+    if (rc == G_OK)
+        rc = gspectral_init(self, self->priv, grid, 1, err);
+    if (rc == G_OK && grid.n == FAST_N) {
+        Spectrum *p = self->priv;
+        for (int role = 0; role < 2; role++) {
+            const double *w = p->s.xyz[role];
+            gspectral_xyz_table(p->xyz[role], w, w + FAST_N, w + 2 * FAST_N, FAST_N);
+        }
+    }
+    return rc;
 }
 
 /* ---- the default grid's operations ----
@@ -26,8 +49,8 @@ static int spectrum_init(GColorModel *self, const GColorModelOptions *opt, GErro
  * results are equal bit for bit (tests/test_spectrum_fast.c); another grid, or a processor without AVX2, takes
  * the kit's. */
 #ifdef GSPECTRAL_AVX2
-/** Samples of the default grid, and those in its whole 8-float blocks. */
-enum { FAST_N = 81, FAST_BLOCKS = 80 };
+/** Samples in the default grid's whole 8-float blocks. */
+enum { FAST_BLOCKS = 80 };
 
 /** Before a loop over the default grid's blocks: unrolled whole. */
 #define FAST_UNROLL _Pragma("GCC unroll 10")
@@ -134,6 +157,43 @@ static int spectrum_div_v4(const GColorModel *m, GColor *out, const GColor *a, c
     return gspectral_div(m, out, a, b);
 }
 
+/* gspectral_kxyz8's sums: per coordinate the blocks one after another into 8 lanes, the last sample's product in
+ * a float, the lanes' halves added, the 4 lanes in pairs and that float added in double. */
+static GSPECTRAL_TARGET_AVX2 int spectrum_to_xyz_v8(const GColorModel *m, const GColor *a, GColorRole role,
+                                                    double xyz[3])
+{
+    if (m->nvalues != FAST_N)
+        return gspectral_to_xyz(m, a, role, xyz);
+    const float *t = ((const Spectrum *)m->priv)->xyz[role == GCOLOR_LIGHT], *v = a->v;
+    gspectral_v8 x = {0, 0, 0, 0, 0, 0, 0, 0}, y = x, z = x;
+    FAST_UNROLL
+    for (int i = 0; i < FAST_BLOCKS; i += 8) {
+        gspectral_v8 s = gspectral_vload8(v + i);
+        x += s * gspectral_vload8(t + i * 3);
+        y += s * gspectral_vload8(t + i * 3 + 8);
+        z += s * gspectral_vload8(t + i * 3 + 16);
+    }
+    const float *b = t + FAST_BLOCKS * 3; /* the last sample: lane 0 of the table's last block */
+    float tail[3] = {0.0f, 0.0f, 0.0f};
+    tail[0] += v[FAST_BLOCKS] * b[0];
+    tail[1] += v[FAST_BLOCKS] * b[8];
+    tail[2] += v[FAST_BLOCKS] * b[16];
+    __m256d dx = _mm256_cvtps_pd((__m128)gspectral_vfold8(x)), dy = _mm256_cvtps_pd((__m128)gspectral_vfold8(y));
+    __m256d dz = _mm256_cvtps_pd((__m128)gspectral_vfold8(z));
+    __m256d xy = _mm256_hadd_pd(dx, dy), zz = _mm256_hadd_pd(dz, dz);
+    __m128d sxy = _mm_add_pd(_mm256_castpd256_pd128(xy), _mm256_extractf128_pd(xy, 1));
+    __m128d sz = _mm_add_sd(_mm256_castpd256_pd128(zz), _mm256_extractf128_pd(zz, 1));
+    __m128d txy = _mm_cvtps_pd(_mm_setr_ps(tail[0], tail[1], 0.0f, 0.0f));
+    _mm_storeu_pd(xyz, _mm_add_pd(sxy, txy));
+    xyz[2] = _mm_cvtsd_f64(sz) + (double)tail[2];
+    return G_OK;
+}
+
+static int spectrum_to_xyz_v4(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3])
+{
+    return gspectral_to_xyz(m, a, role, xyz);
+}
+
 static int spectrum_add_v4(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
 {
     return gspectral_add(m, out, a, b);
@@ -151,12 +211,14 @@ static int spectrum_scale_v4(const GColorModel *m, GColor *out, const GColor *a,
 
 static double spectrum_brightness_v4(const GColorModel *m, const GColor *a) { return gspectral_brightness(m, a); }
 
+static int spectrum_to_xyz(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3]);
 static void spectrum_black(const GColorModel *m, GColor *out);
 static int spectrum_div(const GColorModel *m, GColor *out, const GColor *a, const GColor *b);
 static int spectrum_add(const GColorModel *m, GColor *out, const GColor *a, const GColor *b);
 static int spectrum_mul(const GColorModel *m, GColor *out, const GColor *a, const GColor *b);
 static int spectrum_scale(const GColorModel *m, GColor *out, const GColor *a, double s);
 static double spectrum_brightness(const GColorModel *m, const GColor *a);
+GSPECTRAL_PICK(spectrum_to_xyz);
 GSPECTRAL_PICK(spectrum_black);
 GSPECTRAL_PICK(spectrum_div);
 GSPECTRAL_PICK(spectrum_add);
@@ -164,6 +226,7 @@ GSPECTRAL_PICK(spectrum_mul);
 GSPECTRAL_PICK(spectrum_scale);
 GSPECTRAL_PICK(spectrum_brightness);
 #else
+#define spectrum_to_xyz gspectral_to_xyz
 #define spectrum_black gspectral_black
 #define spectrum_div gspectral_div
 #define spectrum_add gspectral_add
@@ -187,7 +250,7 @@ static const GColorModelClass gcolormodel_spectrum = {
     .brightness = spectrum_brightness,
     .to_nm = gspectral_to_nm,
     .from_nm = gspectral_from_nm,
-    .to_xyz = gspectral_to_xyz,
+    .to_xyz = spectrum_to_xyz,
     .from_rgb = gspectral_from_rgb,
     .band_count = gspectral_band_count,
     .band_mask = gspectral_band_mask,

@@ -1,8 +1,8 @@
 /* test_spectrum_fast.c - the spectrum model's own operations (colormodels/spectrum.c: black, add, mul, scale, div,
- * brightness, unrolled on the default grid of 81 samples) equal bit for bit to the kit's (gspectral_*, the generic
- * loops): random values, zeros of both signs, NaN, infinities, huge and denormal samples, zero divisors, the result
- * in place of either operand; on the default grid and on another one (41 samples, where the model takes the kit's
- * operations). */
+ * brightness and to_xyz, unrolled on the default grid of 81 samples) equal bit for bit to the kit's (gspectral_*,
+ * the generic loops): random values, zeros of both signs, NaN, infinities, huge and denormal samples, zero
+ * divisors, the result in place of either operand; on the default grid and on another one (41 samples, where the
+ * model takes the kit's operations). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -64,6 +64,12 @@ static void compare_ops(const GColorModel *m, const GColor *a, const GColor *b, 
     assert_int_equal(gcolor_scale(got, a, s), G_OK);
     assert_same(want, got);
     assert_same_double(gspectral_brightness(m, a), gcolor_brightness(a));
+    for (int role = 0; role < 2; role++) {
+        double wx[3], gx[3];
+        assert_int_equal(gspectral_to_xyz(m, a, (GColorRole)role, wx), G_OK);
+        assert_int_equal(gcolor_to_xyz(a, (GColorRole)role, gx), G_OK);
+        assert_memory_equal(wx, gx, sizeof wx);
+    }
     gspectral_black(m, want);
     memset(got->v, 0xff, (size_t)m->nvalues * sizeof(float)); /* NaNs the black must overwrite */
     gcolor_black(got);
@@ -126,6 +132,9 @@ static void check_model(const GColorModelOptions *opt, int want_n)
     assert_int_equal(gcolor_scale(&got, &a, 3.0), G_OK);
     assert_true(got.v[m->nvalues - 1] == 1.5f && got.v[0] == 1.5f);
     assert_near(gcolor_brightness(&a), 0.5, 1e-6);
+    double xyz[3];
+    assert_int_equal(gcolor_to_xyz(&a, GCOLOR_REFLECTANCE, xyz), G_OK);
+    assert_near(xyz[1], 0.5, 1e-3); /* a reflectance of 0.5 under the white point: Y = 0.5 */
     gscratch_destroy(arena);
     gcolormodel_destroy(m);
 }
