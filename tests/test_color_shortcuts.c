@@ -2,7 +2,8 @@
  * gcolor_is_black on black, each single non-zero sample (in the vector blocks and in the tail), -0.0, NaN and
  * infinities, tiny values, all agreeing with gcolor_brightness(c) == 0.0; gcolor_mul_scaled equal bit for bit to
  * gcolor_mul then gcolor_scale, also in place; the bispectral model's matrices; and a plug-in model whose vectors
- * are not plain samples (its own fill), for which both take the model's own operations, not its floats. */
+ * are not plain samples (its own fill), for which both take the model's own operations, not its floats; and the
+ * spectrum model on grids of 3 to 531 samples (no whole 8-sample block, one, many, more than 16). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -266,6 +267,52 @@ static void test_mul_scaled_is_mul_then_scale(void **state)
         gcolormodel_destroy(models[k]);
 }
 
+/* The spectrum model on grids of 3 to 531 samples (no whole 8-sample block up to more than 16 of them, tails of
+ * 1, 3 and 5 samples): is_black with one non-zero sample anywhere, and mul_scaled against mul then scale. */
+static void test_every_length(void **state)
+{
+    (void)state;
+    const GColorModelOptions grids[] = {
+        {.min_nm = 380, .max_nm = 580, .step_nm = 100}, {.min_nm = 380, .max_nm = 780, .step_nm = 100},
+        {.min_nm = 380, .max_nm = 780, .step_nm = 50}, {.min_nm = 380, .max_nm = 780, .step_nm = 25},
+        {.min_nm = 380, .max_nm = 780, .step_nm = 20}, {.min_nm = 380, .max_nm = 780, .step_nm = 10},
+        {.min_nm = 380, .max_nm = 780, .step_nm = 5},  {.min_nm = 380, .max_nm = 780, .step_nm = 4},
+        {.min_nm = 380, .max_nm = 700, .step_nm = 5},  {.min_nm = 380, .max_nm = 780, .step_nm = 2},
+        {.min_nm = 300, .max_nm = 830, .step_nm = 1},
+    };
+    const float odd[] = {1e-30f, -2.0f, NAN, INFINITY};
+    GScratch *s = gscratch_create(0);
+    assert_non_null(s);
+    for (size_t g = 0; g < sizeof grids / sizeof *grids; g++) {
+        GColorModel *m;
+        GError err;
+        if (gcolormodel_create("spectrum", &grids[g], &m, &err) != G_OK)
+            fail_msg("grid %zu: %s", g, err.message);
+        GScratchMark mark = gscratch_mark(s);
+        GColor a, b;
+        assert_int_equal(gcolor_scratch(&a, m, s), G_OK);
+        assert_int_equal(gcolor_scratch(&b, m, s), G_OK);
+        assert_black(&a, 1);
+        for (int i = 0; i < m->nvalues; i++)
+            for (size_t j = 0; j < sizeof odd / sizeof *odd; j++) {
+                gcolor_black(&a);
+                a.v[i] = odd[j];
+                assert_int_equal(gcolor_is_black(&a), 0);
+                a.v[i] = -0.0f;
+                assert_black(&a, 1);
+            }
+        for (int i = 0; i < m->nvalues; i++) {
+            a.v[i] = 0.1f + 0.7f * (float)i / (float)(i + 3);
+            b.v[i] = 3.3f - 0.31f * (float)i;
+        }
+        assert_mul_scaled(m, s, &a, &b, 1.0 / M_PI);
+        assert_mul_scaled(m, s, &a, &b, -0.0);
+        gscratch_release(s, mark);
+        gcolormodel_destroy(m);
+    }
+    gscratch_destroy(s);
+}
+
 static void test_own_fill_takes_its_operations(void **state)
 {
     (void)state;
@@ -298,6 +345,7 @@ int main(void)
         cmocka_unit_test(test_vectors_in_every_model),
         cmocka_unit_test(test_matrices),
         cmocka_unit_test(test_mul_scaled_is_mul_then_scale),
+        cmocka_unit_test(test_every_length),
         cmocka_unit_test(test_own_fill_takes_its_operations),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
