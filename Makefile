@@ -485,11 +485,11 @@ fuzz_each = printf '%s\n' $(FUZZ_TARGETS) | xargs -P $(FUZZ_JOBS) -I{} sh -c \
     '$(MAKE) --no-print-directory $(1){} || echo "$(2){}" >> $(FUZZ_BUILD)/failed'
 
 fuzz: fuzz-build fuzz-seed
-	@rm -f $(FUZZ_BUILD)/failed; $(call fuzz_each,fuzz-run-,); $(call fuzz_each,fuzz-gen-,gen-); \
+	+@rm -f $(FUZZ_BUILD)/failed; $(call fuzz_each,fuzz-run-,); $(call fuzz_each,fuzz-gen-,gen-); \
 	if [ -s $(FUZZ_BUILD)/failed ]; then echo "fuzz: FAILED: $$(cat $(FUZZ_BUILD)/failed | tr '\n' ' ')(inputs in $(FUZZ_BUILD)/crashes/)"; exit 1; fi
 
 fuzz-gen: fuzz-build
-	@rm -f $(FUZZ_BUILD)/failed; $(call fuzz_each,fuzz-gen-,); \
+	+@rm -f $(FUZZ_BUILD)/failed; $(call fuzz_each,fuzz-gen-,); \
 	if [ -s $(FUZZ_BUILD)/failed ]; then echo "fuzz-gen: FAILED: $$(cat $(FUZZ_BUILD)/failed | tr '\n' ' ')(inputs in $(FUZZ_BUILD)/crashes/)"; exit 1; fi
 
 fuzz-gen-%:
