@@ -252,8 +252,11 @@ $(BUILD)/tests/test_gtrace: TESTLIBS += -lembree3 -lassimp
 $(BUILD)/tests/test_gtrace_%: TESTLIBS += -lembree3 -lassimp
 .SECONDARY: $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard examples/gtrace/*.c))
 .PHONY: bench-pov
-bench-pov: $(BUILD)/bin/gtrace
+bench-pov: $(BUILD)/bin/gtrace $(BUILD)/bench/runstat
 	@bench/pov/bench.sh $(BUILD)
+$(BUILD)/bench/runstat: bench/pov/runstat.c
+	@mkdir -p $(dir $@)
+	$(CC) -std=c11 -O2 -Wall -Wextra -Werror -o $@ $<
 .PHONY: bench-dispersion
 bench-dispersion: $(BUILD)/bin/gtrace
 	@bench/dispersion.sh $(BUILD)

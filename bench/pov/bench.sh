@@ -27,9 +27,10 @@ if [ ! -x "$GT" ]; then
 fi
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
-TIME=/usr/bin/time
-if [ ! -x "$TIME" ]; then
-    echo "bench-pov: needs GNU time (/usr/bin/time, Debian package time)"
+# runstat (bench/pov/runstat.c): wall, user and system seconds to the microsecond and the peak RSS of a command
+RUNSTAT="$BUILD/bench/runstat"
+if [ ! -x "$RUNSTAT" ]; then
+    echo "bench-pov: $RUNSTAT is not built (make bench-pov builds it)"
     exit 1
 fi
 HAVE_POV=0
@@ -57,12 +58,12 @@ fi
 once() {
     name=$1
     shift
-    "$TIME" -f "%e %U %S %M" -o "$TMP/$name.t" "$@" > "$TMP/$name.o" 2>&1 || {
+    "$RUNSTAT" "$TMP/$name.t" "$@" > "$TMP/$name.o" 2>&1 || {
         echo "bench-pov: $name failed:"
         cat "$TMP/$name.o"
         exit 1
     }
-    line=$(awk '{ printf "%s %.3f %s", $1, $2 + $3, $4 }' "$TMP/$name.t")
+    line=$(awk '{ printf "%.3f %.3f %s", $1, $2 + $3, $4 }' "$TMP/$name.t")
     echo "$line" >> "$TMP/$name.runs"
     cpu=$(echo "$line" | cut -d' ' -f2)
     if [ ! -f "$TMP/$name.best" ] || awk -v a="$cpu" -v b="$(cut -d' ' -f2 "$TMP/$name.best")" 'BEGIN { exit !(a < b) }'; then
