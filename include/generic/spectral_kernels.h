@@ -379,7 +379,7 @@ __attribute__((always_inline, no_sanitize_address)) static inline int gspectral_
 /** Defines the function `name` (declared before) as the indirect function choosing name##_v8 (AVX2) or name##_v4,
  * both defined before with name's type. */
 #define GSPECTRAL_PICK(name)                                                                                   \
-    __attribute__((no_sanitize_address)) static __typeof__(name) *name##_pick(void)                          \
+    __attribute__((used, no_sanitize_address)) static __typeof__(name) *name##_pick(void)                    \
     {                                                                                                          \
         return gspectral_have_avx2() ? name##_v8 : name##_v4;                                                  \
     }                                                                                                          \
