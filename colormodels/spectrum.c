@@ -15,30 +15,10 @@
 /** Samples of the default grid (380..780 nm every 5 nm), which has operations of its own below. */
 enum { FAST_N = 81 };
 
-/* The model's priv struct: its GSpectral, then on the default grid the colour matching tables of to_xyz (the
- * kit's gspectral_xyz_table layout: the kit keeps its own in a place private to it). */
-typedef struct Spectrum {
-    GSpectral s;
-    float xyz[2][(FAST_N + 7) / 8 * 24]; /**< per role: gspectral_xyz_table_floats(FAST_N) */
-} Spectrum;
-
-/* gspectral_model_init (grid, capacity of n, the kit's tables) with the larger priv struct, and the tables. */
+/* The model's priv struct is a plain GSpectral. */
 static int spectrum_init(GColorModel *self, const GColorModelOptions *opt, GError *err)
 {
-    GSpectralGrid grid;
-    int rc = gspectral_grid_from_options(self->cls->name, opt, 5.0, GSPECTRAL_MAX_SAMPLES, &grid, err);
-    if (rc == G_OK)
-        rc = gspectral_model_alloc(self, sizeof(Spectrum), grid.n, err);
-    if (rc == G_OK)
-        rc = gspectral_init(self, self->priv, grid, 1, err);
-    if (rc == G_OK && grid.n == FAST_N) {
-        Spectrum *p = self->priv;
-        for (int role = 0; role < 2; role++) {
-            const double *w = p->s.xyz[role];
-            gspectral_xyz_table(p->xyz[role], w, w + FAST_N, w + 2 * FAST_N, FAST_N);
-        }
-    }
-    return rc;
+    return gspectral_model_init(self, opt, 5.0, GSPECTRAL_MAX_SAMPLES, 0, err);
 }
 
 /* ---- the default grid's operations ----
@@ -55,16 +35,22 @@ enum { FAST_BLOCKS = 80 };
 /** Before a loop over the default grid's blocks: unrolled whole. */
 #define FAST_UNROLL _Pragma("GCC unroll 10")
 
+/* o = a op b on the default grid (op a constant once inlined, as in the kit's gspectral_kmap8) */
+static inline GSPECTRAL_TARGET_AVX2 void map81(GSpectralOp op, float *o, const float *x, const float *y)
+{
+    FAST_UNROLL
+    for (int i = 0; i < FAST_BLOCKS; i += 8) { /* o may be x or y: each block is loaded before it is stored */
+        gspectral_v8 a = gspectral_vload8(x + i), b = gspectral_vload8(y + i);
+        gspectral_vstore8(o + i, op == GSPECTRAL_ADD ? a + b : a * b);
+    }
+    o[FAST_BLOCKS] = op == GSPECTRAL_ADD ? x[FAST_BLOCKS] + y[FAST_BLOCKS] : x[FAST_BLOCKS] * y[FAST_BLOCKS];
+}
+
 static GSPECTRAL_TARGET_AVX2 int spectrum_add_v8(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
 {
     if (m->nvalues != FAST_N)
         return gspectral_add(m, out, a, b);
-    float *o = out->v;
-    const float *x = a->v, *y = b->v;
-    FAST_UNROLL
-    for (int i = 0; i < FAST_BLOCKS; i += 8) /* out may be a or b: each block is loaded before it is stored */
-        gspectral_vstore8(o + i, gspectral_vload8(x + i) + gspectral_vload8(y + i));
-    o[FAST_BLOCKS] = x[FAST_BLOCKS] + y[FAST_BLOCKS];
+    map81(GSPECTRAL_ADD, out->v, a->v, b->v);
     out->kind = GCOLOR_VECTOR;
     return G_OK;
 }
@@ -73,12 +59,7 @@ static GSPECTRAL_TARGET_AVX2 int spectrum_mul_v8(const GColorModel *m, GColor *o
 {
     if (m->nvalues != FAST_N)
         return gspectral_mul(m, out, a, b);
-    float *o = out->v;
-    const float *x = a->v, *y = b->v;
-    FAST_UNROLL
-    for (int i = 0; i < FAST_BLOCKS; i += 8)
-        gspectral_vstore8(o + i, gspectral_vload8(x + i) * gspectral_vload8(y + i));
-    o[FAST_BLOCKS] = x[FAST_BLOCKS] * y[FAST_BLOCKS];
+    map81(GSPECTRAL_MUL, out->v, a->v, b->v);
     out->kind = GCOLOR_VECTOR;
     return G_OK;
 }
@@ -164,7 +145,7 @@ static GSPECTRAL_TARGET_AVX2 int spectrum_to_xyz_v8(const GColorModel *m, const 
 {
     if (m->nvalues != FAST_N)
         return gspectral_to_xyz(m, a, role, xyz);
-    const float *t = ((const Spectrum *)m->priv)->xyz[role == GCOLOR_LIGHT], *v = a->v;
+    const float *t = gspectral_xyz_floats(m->priv, role), *v = a->v;
     gspectral_v8 x = {0, 0, 0, 0, 0, 0, 0, 0}, y = x, z = x;
     FAST_UNROLL
     for (int i = 0; i < FAST_BLOCKS; i += 8) {

@@ -189,6 +189,8 @@ static size_t xyz_doubles(int n) { return xyz_table_offset(n) + ((size_t)gspectr
 
 static float *xyz_table(const GSpectral *s, int role) { return (float *)(s->xyz[role] + xyz_table_offset(s->grid.n)); }
 
+const float *gspectral_xyz_floats(const GSpectral *s, GColorRole role) { return xyz_table(s, role == GCOLOR_LIGHT); }
+
 /* XYZ from the double weights, summed in double: the tables' own arithmetic. */
 static void xyz_exact(const GSpectral *s, GColorRole role, const float *v, double xyz[3])
 {

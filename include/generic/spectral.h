@@ -149,6 +149,9 @@ GENERIC_API GENERIC_NODISCARD int gspectral_from_nm(const GColorModel *m, const 
 /** XYZ from the precomputed colour matching weights (equal to the class's to_nm path up to float rounding: the
  * weights are rounded to float and the sums made in float on 8 lanes, gspectral_kxyz of spectral_kernels.h). */
 GENERIC_API GENERIC_NODISCARD int gspectral_to_xyz(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3]);
+/** The float colour matching table gspectral_to_xyz reads for role (gspectral_xyz_table's layout, n = the grid's
+ * samples), for a model's own to_xyz kernel over the same sums. */
+GENERIC_API const float *gspectral_xyz_floats(const GSpectral *s, GColorRole role);
 /** A vector from linear sRGB through the corrected RGB basis (exact round trip with to_xyz). */
 GENERIC_API GENERIC_NODISCARD int gspectral_from_rgb(const GColorModel *m, const double rgb[3], GColorRole role, GColor *out);
 
