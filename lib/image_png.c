@@ -162,11 +162,11 @@ static int encode_png(Sink *sink, const char *path, const GImage *img, double sc
     pthread_once(&thresholds_once, make_thresholds);
     for (int y = 0; y < img->height; y++) {
         const float *src = img->pixels + (size_t)y * stride;
-        for (size_t i = 0; i < stride; i++)
-            row[i] = encode_colour(src[i] * scale);
-        if (alpha >= 0) /* the alpha channel again, unscaled and linear (no division per sample to find it) */
-            for (size_t i = (size_t)alpha; i < stride; i += (size_t)ch)
-                row[i] = encode(src[i], 1);
+        /* a pixel at a time, its channels by index (no division per sample to find the alpha channel, which is
+         * unscaled and linear) */
+        for (size_t i = 0; i < stride; i += (size_t)ch)
+            for (int k = 0; k < ch; k++)
+                row[i + k] = k == alpha ? encode(src[i + k], 1) : encode_colour(src[i + k] * scale);
         png_write_row(png, row);
     }
     png_write_end(png, info);

@@ -3,8 +3,8 @@
 # tests/scripts/, TEST_JOBS at a time (default: the number of processors), prints PASS or FAIL for each as it
 # ends, then the log of each failure and one summary line "N passed, N failed".
 # The tests that measure time or wait on timeouts, and those that run `make install` in this tree (SERIAL below),
-# run afterwards, one at a time, with no other test loading the machine under them. Test programs find the shared data and the source tree through
-# GENERIC_SOURCE_DIR. Each test's output goes to its log: BUILD/tests/NAME.log.
+# run afterwards, one at a time, with no other test loading the machine under them. Test programs find the shared
+# data and the source tree through GENERIC_SOURCE_DIR. Each test's output goes to its log: BUILD/tests/NAME.log.
 # (run_tests.sh --one BUILD PROGRAM runs one test: the form the parallel phase calls.)
 SERIAL="gtrace_mpi.sh load_linear.sh install_test.sh lazy_oiio.sh"
 
@@ -56,7 +56,7 @@ while read -r p; do "$SELF" --one "$BUILD" "$p" < /dev/null; done < "$serial"
 
 pass=0
 fail=0
-for p in $(cat "$list" "$serial"); do
+while read -r p; do
     log="$BUILD/tests/$(basename "$p").log"
     if [ "$(cat "$log.status" 2> /dev/null)" = "0" ]; then
         pass=$((pass + 1))
@@ -65,6 +65,8 @@ for p in $(cat "$list" "$serial"); do
         echo "==== FAIL $(basename "$p"): $log"
         cat "$log"
     fi
-done
+done << LIST
+$(cat "$list" "$serial")
+LIST
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

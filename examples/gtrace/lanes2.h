@@ -1,4 +1,4 @@
-/* lanes2.h - two doubles side by side for the direct list's box tests and the ray guard: SSE2 where the compiler
+/* lanes2.h - two doubles side by side for the direct list's box tests: SSE2 where the compiler
  * targets it (x86-64's baseline), two scalars elsewhere, with the same result in each lane either way. */
 #ifndef GTRACE_LANES2_H
 #define GTRACE_LANES2_H
@@ -13,8 +13,6 @@ typedef __m128d Lanes2;
 
 /** (x, x). */
 static inline Lanes2 lanes2_set1(double x) { return _mm_set1_pd(x); }
-/** (a, b): a in lane 0. */
-static inline Lanes2 lanes2_set(double a, double b) { return _mm_set_pd(b, a); }
 /** a - b, lane by lane. */
 static inline Lanes2 lanes2_sub(Lanes2 a, Lanes2 b) { return _mm_sub_pd(a, b); }
 /** a * b, lane by lane. */
@@ -25,12 +23,6 @@ static inline Lanes2 lanes2_min(Lanes2 a, Lanes2 b) { return _mm_min_pd(a, b); }
 static inline Lanes2 lanes2_max(Lanes2 a, Lanes2 b) { return _mm_max_pd(a, b); }
 /** Bit k set when a <= b in lane k (false for a NaN). */
 static inline unsigned lanes2_le(Lanes2 a, Lanes2 b) { return (unsigned)_mm_movemask_pd(_mm_cmple_pd(a, b)); }
-/** Bit k set when |a| < b in lane k (false for a NaN). */
-static inline unsigned lanes2_abs_lt(Lanes2 a, Lanes2 b)
-{
-    const Lanes2 mag = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
-    return (unsigned)_mm_movemask_pd(_mm_cmplt_pd(_mm_and_pd(a, mag), b));
-}
 /** Stores the two lanes at p (any alignment). */
 static inline void lanes2_store(double *p, Lanes2 a) { _mm_storeu_pd(p, a); }
 #else
@@ -39,7 +31,6 @@ typedef struct Lanes2 {
 } Lanes2;
 
 static inline Lanes2 lanes2_set1(double x) { return (Lanes2){{x, x}}; }
-static inline Lanes2 lanes2_set(double a, double b) { return (Lanes2){{a, b}}; }
 static inline Lanes2 lanes2_sub(Lanes2 a, Lanes2 b) { return (Lanes2){{a.lane[0] - b.lane[0], a.lane[1] - b.lane[1]}}; }
 static inline Lanes2 lanes2_mul(Lanes2 a, Lanes2 b) { return (Lanes2){{a.lane[0] * b.lane[0], a.lane[1] * b.lane[1]}}; }
 static inline Lanes2 lanes2_min(Lanes2 a, Lanes2 b)
@@ -53,10 +44,6 @@ static inline Lanes2 lanes2_max(Lanes2 a, Lanes2 b)
 static inline unsigned lanes2_le(Lanes2 a, Lanes2 b)
 {
     return (unsigned)(a.lane[0] <= b.lane[0]) | (unsigned)(a.lane[1] <= b.lane[1]) << 1;
-}
-static inline unsigned lanes2_abs_lt(Lanes2 a, Lanes2 b)
-{
-    return (unsigned)(fabs(a.lane[0]) < b.lane[0]) | (unsigned)(fabs(a.lane[1]) < b.lane[1]) << 1;
 }
 static inline void lanes2_store(double *p, Lanes2 a)
 {
