@@ -63,34 +63,46 @@ typedef struct Block {
 struct GScratch {
     Block *first, *cur;
     size_t block_size;
+    void *raw; /* the allocation holding this header and the first block */
 };
 
-enum { ALIGN = 32 };
+/* ALIGN: of every allocation from the arena. LINE: a cache line. An arena is one thread's, and its header and
+ * current block are written at every allocation and release: they sit in an allocation of their own, a line
+ * apart from anything else, so that two threads' arenas never share a cache line (two 24-byte headers from
+ * malloc did, side by side, and cost the spectral models 10% of a 2-thread render). */
+enum { ALIGN = 32, LINE = 64 };
 
-static Block *block_new(size_t size)
+static void block_init(Block *b, size_t size)
 {
-    Block *b = gmem_alloc(sizeof *b + size + ALIGN);
-    if (!b)
-        return NULL;
     b->next = NULL;
     b->size = size;
     b->used = 0;
     uintptr_t p = (uintptr_t)(b + 1);
     b->data = (unsigned char *)((p + ALIGN - 1) & ~(uintptr_t)(ALIGN - 1));
+}
+
+static Block *block_new(size_t size)
+{
+    Block *b = size <= SIZE_MAX - sizeof *b - ALIGN ? gmem_alloc(sizeof *b + size + ALIGN) : NULL;
+    if (b)
+        block_init(b, size);
     return b;
 }
 
 GScratch *gscratch_create(size_t bytes)
 {
-    GScratch *s = gmem_alloc(sizeof *s);
-    if (!s)
+    size_t size = bytes ? bytes : 256 * 1024;
+    size_t head = (sizeof(GScratch) + sizeof(Block) + LINE - 1) & ~(size_t)(LINE - 1);
+    if (size > SIZE_MAX - head - 3 * LINE)
         return NULL;
-    s->block_size = bytes ? bytes : 256 * 1024;
-    s->first = s->cur = block_new(s->block_size);
-    if (!s->first) {
-        gmem_free(s);
+    /* a line of slack to align the header, the header with the first block's, the data, a line after it */
+    unsigned char *raw = gmem_alloc(LINE + head + size + LINE);
+    if (!raw)
         return NULL;
-    }
+    GScratch *s = (GScratch *)(((uintptr_t)raw + LINE - 1) & ~(uintptr_t)(LINE - 1));
+    Block *b = (Block *)(s + 1);
+    block_init(b, size);
+    *s = (GScratch){.first = b, .cur = b, .block_size = size, .raw = raw};
     return s;
 }
 
@@ -98,12 +110,12 @@ void gscratch_destroy(GScratch *s)
 {
     if (!s)
         return;
-    for (Block *b = s->first; b;) {
+    for (Block *b = s->first->next; b;) { /* the first block is in the header's allocation */
         Block *n = b->next;
         gmem_free(b);
         b = n;
     }
-    gmem_free(s);
+    gmem_free(s->raw);
 }
 
 /* gscratch_alloc when the current block is full (bytes rounded): the next kept block, or a new one. Apart, so that

@@ -74,6 +74,28 @@ static void test_scratch_reuses_blocks(void **state)
     gscratch_destroy(s);
 }
 
+/* Two threads' arenas never share a cache line: two arenas made one after the other (their headers were two
+ * 24-byte mallocs side by side) hand out storage at least a 64-byte line apart, 64-byte aligned at the start; an
+ * arena whose size overflows is refused, not made small. */
+static void test_scratch_arenas_apart(void **state)
+{
+    (void)state;
+    for (size_t bytes = 32; bytes <= 4096; bytes *= 2) {
+        GScratch *a = gscratch_create(bytes), *b = gscratch_create(bytes);
+        assert_non_null(a);
+        assert_non_null(b);
+        uintptr_t pa = (uintptr_t)gscratch_alloc(a, 32), pb = (uintptr_t)gscratch_alloc(b, 32);
+        assert_int_equal(pa % 64, 0);
+        assert_int_equal(pb % 64, 0);
+        uintptr_t lo = pa < pb ? pa : pb, hi = pa < pb ? pb : pa;
+        assert_true(hi - lo >= bytes + 64); /* the lower one's whole block, and a line, below the other's */
+        gscratch_destroy(a);
+        gscratch_destroy(b);
+    }
+    assert_null(gscratch_create(SIZE_MAX));
+    assert_null(gscratch_create(SIZE_MAX - 100));
+}
+
 /* gfmax and gfmin are fmax and fmin inline: the same double for every pair of special and ordinary values,
  * signed zeros included (NaN results compared as NaN). */
 static void test_inline_fmax_fmin(void **state)
@@ -184,6 +206,7 @@ int main(void)
         cmocka_unit_test(test_error_record),
         cmocka_unit_test(test_scratch_mark_release),
         cmocka_unit_test(test_scratch_reuses_blocks),
+        cmocka_unit_test(test_scratch_arenas_apart),
         cmocka_unit_test(test_inline_fmax_fmin),
         cmocka_unit_test(test_registry),
         cmocka_unit_test(test_unknown_model_lists_known),
