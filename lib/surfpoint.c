@@ -11,13 +11,25 @@ enum { HAVE_NORMAL = 1u, HAVE_REL_INDEX = 2u };
 void gsurfpoint_init(GSurfPoint *sp, const GColorModel *model, GScratch *scratch)
 {
     /* every field zero but the cache slots' contents and scopes (768 bytes, most of the struct): only the first
-     * ncache of them are ever read, and ncache is 0 */
-    memset(sp, 0, offsetof(GSurfPoint, cache));
-    memset(&sp->object_dpdu, 0, offsetof(GSurfPoint, cache_slot_scope) - offsetof(GSurfPoint, object_dpdu));
-    memset(sp->uv_axis1, 0, sizeof *sp - offsetof(GSurfPoint, uv_axis1));
+     * ncache of them are ever read, and ncache is 0. Field by field, not one memset of the 208 bytes before the
+     * slots: GCC makes that a `rep stos`, whose start-up was a fifth of a renderer's surface-point fill; these
+     * stores merge into vector stores, and a renderer that inlines this drops those it overwrites. */
+    const GVec3 zero = {0.0, 0.0, 0.0};
+    sp->point = sp->object_point = sp->geometric_normal = sp->dpdu = sp->dpdv = zero;
+    sp->u = sp->v = 0.0;
+    sp->surface = 0;
+    sp->entering = 1;
+    sp->t = sp->footprint = sp->uv_footprint = 0.0;
+    sp->material = sp->from = sp->to = NULL;
     sp->model = model;
     sp->scratch = scratch;
-    sp->entering = 1;
+    sp->cached_flags = 0;
+    sp->cached_normal = zero;
+    sp->cached_rel_index = 0.0;
+    sp->ncache = 0;
+    sp->object_dpdu = sp->object_dpdv = zero;
+    sp->cache_scope = 0;
+    memset(sp->uv_axis1, 0, sizeof *sp - offsetof(GSurfPoint, uv_axis1));
 }
 
 void gsurfpoint_invalidate(GSurfPoint *sp)

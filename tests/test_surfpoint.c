@@ -7,6 +7,7 @@
 #include <cmocka.h>
 
 #include <math.h>
+#include <string.h>
 
 #include "generic/builtins.h"
 #include "generic/color.h"
@@ -205,11 +206,47 @@ static void test_uv_widths(void **state)
     assert_true(fabs(wv - sqrt(0.4 * 0.4 + 0.06 * 0.06)) < 1e-15);
 }
 
+/* gsurfpoint_init clears every field of a point that held anything (each byte 0xA5 before), sets the model,
+ * the arena and entering, and leaves the cache empty: a value put before is not found after. */
+static void test_init_clears(void **state)
+{
+    (void)state;
+    GSurfPoint sp;
+    memset(&sp, 0xA5, sizeof sp);
+    const GColorModel *model = (const GColorModel *)&sp; /* any distinct pointers: init only stores them */
+    GScratch *arena = (GScratch *)&model;
+    gsurfpoint_init(&sp, model, arena);
+    const GVec3 *vecs[] = {&sp.point, &sp.object_point, &sp.geometric_normal, &sp.dpdu, &sp.dpdv,
+                           &sp.object_dpdu, &sp.object_dpdv};
+    for (size_t i = 0; i < sizeof vecs / sizeof *vecs; i++)
+        assert_true(vecs[i]->x == 0.0 && vecs[i]->y == 0.0 && vecs[i]->z == 0.0);
+    assert_true(sp.u == 0.0 && sp.v == 0.0 && sp.t == 0.0 && sp.footprint == 0.0 && sp.uv_footprint == 0.0);
+    assert_true(sp.uv_axis1[0] == 0.0 && sp.uv_axis1[1] == 0.0 && sp.uv_axis2[0] == 0.0 && sp.uv_axis2[1] == 0.0);
+    assert_int_equal(sp.surface, 0);
+    assert_int_equal(sp.entering, 1);
+    assert_null(sp.material);
+    assert_null(sp.from);
+    assert_null(sp.to);
+    assert_ptr_equal(sp.model, model);
+    assert_ptr_equal(sp.scratch, arena);
+    double v;
+    assert_false(gsurfpoint_cache_get(&sp, &sp, &v, NULL));
+    gsurfpoint_cache_put(&sp, &sp, 2.5, gvec3(0, 0, 0));
+    assert_true(gsurfpoint_cache_get(&sp, &sp, &v, NULL) && v == 2.5);
+    gsurfpoint_init(&sp, model, arena);
+    assert_false(gsurfpoint_cache_get(&sp, &sp, &v, NULL));
+    /* no material: the shading normal is the geometric one, not a cached value from before */
+    sp.geometric_normal = gvec3(0, 0, 1);
+    GVec3 n = gsurfpoint_normal(&sp);
+    assert_true(n.x == 0.0 && n.y == 0.0 && n.z == 1.0);
+}
+
 int main(void)
 {
     if (generic_register_builtins(NULL) != G_OK)
         return 1;
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_init_clears),
         cmocka_unit_test(test_normal_cached),
         cmocka_unit_test(test_cache_slots),
         cmocka_unit_test(test_uv_widths),

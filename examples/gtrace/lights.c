@@ -75,7 +75,7 @@ static int transmit(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *medi
     *visible = 0;
     Media walk;
     if (gvec3_dot(dir, facing) >= 0.0)
-        walk = *media;
+        media_copy(&walk, media);
     else /* the light is behind the surface: the path starts on the other side */
         media_cross(media, sp->material, sp->entering, &walk);
     Ray seg = {offset_origin(sp->point, facing, dir), dir, 0.0, dist * (1.0 - 1e-7), 0.0, 0.0};
@@ -107,7 +107,7 @@ static int transmit(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *medi
             goto done;
         Media next;
         media_cross(&walk, hp.material, hp.entering, &next);
-        walk = next;
+        media_copy(&walk, &next);
         seg.o = offset_origin(hp.point, hf, dir);
         if (isfinite(dist)) {
             left = gvec3_dot(gvec3_sub(target, seg.o), dir);

@@ -262,7 +262,7 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
         if (transmit)
             media_cross(media, m, sp->entering, &next);
         else
-            next = *media;
+            media_copy(&next, media);
         double width = r->cone_width + r->cone_spread * sp->t;
         Ray ray = {offset_origin(sp->point, facing, smp.in), smp.in, 0.0, INFINITY, width, r->cone_spread};
         int saved = c->band, scattered = p->scattered, is_delta = (smp.flags & GSAMPLE_DELTA) != 0;

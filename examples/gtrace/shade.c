@@ -88,9 +88,17 @@ int trace_tmp(TraceCtx *c, int which, GColor *out)
 }
 
 /* The stack after crossing the surface of `mat` (entering pushes it, leaving removes it). */
+void media_copy(Media *out, const Media *in)
+{
+    int n = in->n < 0 ? 0 : in->n > MEDIA_MAX ? MEDIA_MAX : in->n;
+    for (int i = 0; i < n; i++)
+        out->m[i] = in->m[i];
+    out->n = n;
+}
+
 void media_cross(const Media *in, const GMaterial *mat, int entering, Media *out)
 {
-    *out = *in;
+    media_copy(out, in);
     if (entering) {
         if (out->n < MEDIA_MAX)
             out->m[out->n++] = mat;

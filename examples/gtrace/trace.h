@@ -73,6 +73,9 @@ typedef struct Media {
 void surfpoint_fill(TraceCtx *c, const Ray *r, const Hit *h, const Media *media, GSurfPoint *sp, GVec3 *facing);
 /** The current medium (NULL: vacuum). */
 const GMaterial *media_top(const Media *m);
+/** Copies the stack in to out: its n entries only (a struct copy of the whole array is a `rep movs`, per shadow
+ * ray; the stack is rarely more than two deep). */
+void media_copy(Media *out, const Media *in);
 /** The media after crossing the surface of mat: entering pushes it, leaving removes it. */
 void media_cross(const Media *in, const GMaterial *mat, int entering, Media *out);
 /** Radiance arriving along r (Fig. 4: closest hit, then shade). out must have storage. */
