@@ -311,7 +311,7 @@ PLUGIN_SO  := $(PLUGIN_SRC:examples/plugins/%.c=$(BUILD)/plugins/%.so) \
               $(BUILD)/plugins/constructor_only.so \
               $(BUILD)/plugins/gain.so $(BUILD)/plugins/skewed.so $(BUILD)/plugins/bad_add.so \
               $(BUILD)/plugins/bad_bands.so $(BUILD)/plugins/misdrawn.so $(BUILD)/plugins/misflagged.so \
-              $(BUILD)/plugins/misopaque.so $(BUILD)/plugins/misnormal.so
+              $(BUILD)/plugins/misopaque.so $(BUILD)/plugins/misnormal.so $(BUILD)/plugins/misuv.so
 # -fvisibility=hidden: a module's own symbols never bind to the program's copies (only the two GENERIC_MODULE_EXPORT
 # symbols are exported).
 PLUGIN_CFLAGS := -std=c11 -D_GNU_SOURCE $(OPT) -g -fPIC -shared -fvisibility=hidden $(WARN) $(SANFLAGS) -I$(PLUGIN_INC)
@@ -378,6 +378,9 @@ $(BUILD)/plugins/misopaque.so: tests/plugins/nonconforming.c $(PLUGIN_HDR)
 
 $(BUILD)/plugins/misnormal.so: tests/plugins/nonconforming.c $(PLUGIN_HDR)
 	$(CC) $(PLUGIN_CFLAGS) -DMISNORMAL -o $@ $< -lm
+
+$(BUILD)/plugins/misuv.so: tests/plugins/nonconforming.c $(PLUGIN_HDR)
+	$(CC) $(PLUGIN_CFLAGS) -DMISUV -o $@ $< -lm
 
 $(BUILD)/plugins/bad_add.so: tests/plugins/nonconforming.c $(PLUGIN_HDR)
 	$(CC) $(PLUGIN_CFLAGS) -DBAD_ADD -o $@ $< -lm

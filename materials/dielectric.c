@@ -306,6 +306,7 @@ int gdielectric_create(const GColorModel *model, const GDielectricParams *params
         dielectric_destroy(&d->base);
         return rc;
     }
+    d->base.flags |= GMAT_NO_UV; /* its methods read none of the (u, v) parametrisation (material.h) */
     *out = &d->base;
     return G_OK;
 }

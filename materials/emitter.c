@@ -63,8 +63,10 @@ int gemitter_create(const GColorModel *model, const GColor *radiance, int two_si
 {
     int rc = gmat_one_color_create(&emitter_class, model, sizeof(Emitter), radiance, GCOLOR_LIGHT, 0.0, "radiance",
                                    out, err);
-    if (rc == G_OK)
+    if (rc == G_OK) {
         ((Emitter *)*out)->two_sided = two_sided != 0;
+        (*out)->flags |= GMAT_NO_UV; /* its methods read none of the (u, v) parametrisation (material.h) */
+    }
     return rc;
 }
 

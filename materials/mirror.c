@@ -76,8 +76,11 @@ static const GMaterialClass mirror_class = {
 
 int gmirror_create(const GColorModel *model, const GColor *reflectance, GMaterial **out, GError *err)
 {
-    return gmat_one_color_create(&mirror_class, model, sizeof(GMatOneColor), reflectance, GCOLOR_REFLECTANCE,
-                                 1.0, "reflectance", out, err);
+    int rc = gmat_one_color_create(&mirror_class, model, sizeof(GMatOneColor), reflectance, GCOLOR_REFLECTANCE,
+                                   1.0, "reflectance", out, err);
+    if (rc == G_OK)
+        (*out)->flags |= GMAT_NO_UV; /* its methods read none of the (u, v) parametrisation (material.h) */
+    return rc;
 }
 
 /* mirror { reflectance COLOR }: grey 1.0 when not given */

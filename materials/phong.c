@@ -233,6 +233,7 @@ int gphong_create(const GColorModel *model, const GPhongParams *params, GMateria
     p->lobe_norm = (p->n + 2.0) / (2.0 * M_PI);
     p->has_ks = gcolor_brightness(&p->ks) > 0.0;
     p->has_mirror = gcolor_brightness(&p->mirror) > 0.0;
+    p->base.flags |= GMAT_NO_UV; /* its methods read none of the (u, v) parametrisation (material.h) */
     *out = &p->base;
     return G_OK;
 }

@@ -69,6 +69,7 @@ static int make(const GTexBlendClass *cls, GMaterial *a, GMaterial *b, GGenerato
     n->b = gmaterial_ref(b);
     n->t = ggenerator_ref(t);
     n->only = only;
+    gtexnode_inherit_no_uv(node, children, 2, t); /* reads the point only through t */
     *out = &n->base;
     return G_OK;
 }

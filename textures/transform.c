@@ -261,6 +261,8 @@ int gnode_transform_create(GMaterial *child, const GAffine2 *uv, const GAffine3 
     gtexnode_inherit_opaque(&t->base, &child, 1);      /* the child's opacity at a moved point */
     /* the child's normal at a moved point that keeps the geometric normal (move() leaves it) */
     gtexnode_inherit_geometric_normal(&t->base, &child, 1);
+    /* it moves (u, v) and the tangents for a child that, with the bit, never reads them */
+    gtexnode_inherit_no_uv(&t->base, &child, 1, NULL);
     *out = &t->base;
     return G_OK;
 }

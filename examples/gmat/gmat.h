@@ -80,6 +80,9 @@ void gmat_check_opaque_flag(GmatContext *ctx, const GmatPlace *places, int nplac
  * geometric normal (within rounding) from its class's own normal slot at the places given, on both sides. */
 void gmat_check_geometric_normal(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
                                  void *checker);
+/** The no-uv check of `gmat check` (uvflag.c): a material with GMAT_NO_UV must give the same colours, normal and
+ * opacity at the places given, on both sides, with the surface's parametrisation set and with it zero. */
+void gmat_check_no_uv(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report, void *checker);
 /** The relative index n(from) / n(to) at sp as a colour, as a renderer hands it to refraction() (storage of the
  * model; temporaries on sp's arena). */
 int gmat_relative_index(GSurfPoint *sp, GColor *out);

@@ -105,6 +105,8 @@ static void usage(const char *cmd, FILE *f)
                    "  opaque-flag  a material flagged GMAT_OPAQUE gets 1 from its class's opaque slot\n"
                    "  geometric-normal  a material flagged GMAT_GEOMETRIC_NORMAL gets the geometric normal\n"
                    "               from its class's normal slot\n"
+                   "  no-uv        a material flagged GMAT_NO_UV gives the same values with and without\n"
+                   "               the surface's (u, v) and tangents\n"
                    "Each is measured at several surface points (u, v, point and surface index vary).\n"
                    "  --samples N         albedo grid N x 2N (8..4096, default 64)\n\n%s",
                 common);

@@ -34,6 +34,8 @@ typedef struct HitGeom {
     GVec3 odpdu, odpdv; /**< tangents in object space */
     double u, v;
     int surface;
+    int want_uv; /**< set by hit_geom: 0 when (u, v) and the tangents are not wanted (GMAT_NO_UV) and may be left
+                      zero (a shape whose (u, v) cost a call skips them; the others fill them anyway) */
 } HitGeom;
 
 /** Half size of a plane's bounded extent in its own units. */
@@ -109,11 +111,12 @@ int scene_coord_ok(GVec3 v);
 /** 0 when the object's world extent lies within SCENE_MAX_COORD; otherwise the largest coordinate it reaches
  * (INFINITY when one overflows or is not a number). */
 double object_extent_check(const Object *o);
-/** Surface details of an analytic shape at a hit. */
+/** Surface details of an analytic shape at a hit (g->want_uv as hit_geom set it). */
 void shape_hit_geom(const Object *o, const Ray *r, const Hit *h, HitGeom *g);
-/** Surface details at any hit in world space (through its instance, if any). */
-void hit_geom(const Ray *r, const Hit *h, HitGeom *g);
-/** Surface details of a mesh triangle at a hit. */
+/** Surface details at any hit in world space (through its instance, if any); without want_uv, (u, v) and the
+ * tangents may be left zero. */
+void hit_geom(const Ray *r, const Hit *h, int want_uv, HitGeom *g);
+/** Surface details of a mesh triangle at a hit (g->want_uv as hit_geom set it). */
 void mesh_hit_geom(const Object *o, const Ray *r, const Hit *h, HitGeom *g);
 /** Fills g's point, outward normal n, shading normal ns and tangents from object space (op, n, ns, dpdu, dpdv)
  * in world space, keeping the object-space point and tangents; u, v and the surface are left to the caller. */

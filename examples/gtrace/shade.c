@@ -115,8 +115,11 @@ void media_cross(const Media *in, const GMaterial *mat, int entering, Media *out
 
 void surfpoint_fill(TraceCtx *c, const Ray *r, const Hit *h, const Media *media, GSurfPoint *sp, GVec3 *facing)
 {
+    /* a material that reads nothing of the parametrisation (GMAT_NO_UV) gets it zero, as gsurfpoint_init leaves
+     * it: no (u, v), tangents or footprint ellipse to compute */
+    int want_uv = !(h->material && (h->material->flags & GMAT_NO_UV));
     HitGeom g;
-    hit_geom(r, h, &g);
+    hit_geom(r, h, want_uv, &g);
     gsurfpoint_init(sp, c->scene->model, c->scratch);
     sp->point = g.p;
     sp->object_point = g.op;
@@ -126,12 +129,6 @@ void surfpoint_fill(TraceCtx *c, const Ray *r, const Hit *h, const Media *media,
     GVec3 ns = sp->entering ? g.n_smooth : gvec3_neg(g.n_smooth);
     sp->geometric_normal = ns;
     *facing = sp->entering ? g.n_out : gvec3_neg(g.n_out);
-    sp->dpdu = g.dpdu;
-    sp->dpdv = g.dpdv;
-    sp->object_dpdu = g.odpdu;
-    sp->object_dpdv = g.odpdv;
-    sp->u = g.u;
-    sp->v = g.v;
     sp->surface = g.surface;
     sp->t = h->t;
     /* ray cone: width w at the hit. The isotropic footprint is the long axis of the footprint ellipse,
@@ -140,15 +137,24 @@ void surfpoint_fill(TraceCtx *c, const Ray *r, const Hit *h, const Media *media,
     double w = r->cone_width + r->cone_spread * h->t;
     double cosv = gfmax(fabs(dn), 0.02);
     sp->footprint = w / cosv;
-    double area = gvec3_length(gvec3_cross(g.dpdu, g.dpdv));
-    sp->uv_footprint = area > 0.0 ? sp->footprint / sqrt(area) : 0.0;
-    /* the same footprint as an ellipse for anisotropic filters: w / cos along the ray's projection onto the
-     * surface, w across it, both mapped into (u, v) through the tangents */
-    GVec3 along = gvec3_sub(r->d, gvec3_scale(g.n_out, dn));
-    double la = gvec3_length(along);
-    along = la > 1e-9 ? gvec3_scale(along, 1.0 / la) : gvec3_normalize(g.dpdu);
-    GVec3 across = gvec3_cross(g.n_out, along);
-    uv_of(g.dpdu, g.dpdv, gvec3_scale(along, sp->footprint), gvec3_scale(across, w), sp->uv_axis1, sp->uv_axis2);
+    if (want_uv) {
+        sp->dpdu = g.dpdu;
+        sp->dpdv = g.dpdv;
+        sp->object_dpdu = g.odpdu;
+        sp->object_dpdv = g.odpdv;
+        sp->u = g.u;
+        sp->v = g.v;
+        double area = gvec3_length(gvec3_cross(g.dpdu, g.dpdv));
+        sp->uv_footprint = area > 0.0 ? sp->footprint / sqrt(area) : 0.0;
+        /* the same footprint as an ellipse for anisotropic filters: w / cos along the ray's projection onto the
+         * surface, w across it, both mapped into (u, v) through the tangents */
+        GVec3 along = gvec3_sub(r->d, gvec3_scale(g.n_out, dn));
+        double la = gvec3_length(along);
+        along = la > 1e-9 ? gvec3_scale(along, 1.0 / la) : gvec3_normalize(g.dpdu);
+        GVec3 across = gvec3_cross(g.n_out, along);
+        uv_of(g.dpdu, g.dpdv, gvec3_scale(along, sp->footprint), gvec3_scale(across, w), sp->uv_axis1,
+              sp->uv_axis2);
+    }
     sp->material = h->material;
     if (sp->entering) {
         sp->from = media_top(media);

@@ -236,14 +236,18 @@ double object_extent_check(const Object *o)
 static double wrap01(double x) { return x - floor(x); }
 
 /* Surface in object space: point (refined onto the shape), outward normal, tangents, (u,v). */
-static void local_geom(const Object *o, int surface, GVec3 *p, GVec3 *n, GVec3 *dpdu, GVec3 *dpdv, double *u,
-                       double *v)
+static void local_geom(const Object *o, int surface, int want_uv, GVec3 *p, GVec3 *n, GVec3 *dpdu, GVec3 *dpdv,
+                       double *u, double *v)
 {
     switch (o->kind) {
     case SHAPE_SPHERE: {
         GVec3 l = gvec3_normalize(gvec3_sub(*p, o->center));
         *p = gvec3_madd(o->center, l, o->radius);
         *n = l;
+        if (!want_uv) { /* an acos and an atan2 saved */
+            *dpdu = *dpdv = gvec3(0, 0, 0);
+            break;
+        }
         /* theta = acos(cy) from the pole, phi = atan2(-l.z, l.x) around y; sin(theta) = sqrt(1 - cy^2), and
          * sin(theta) cos(phi) = l.x, sin(theta) sin(phi) = -l.z: no sin, and no division for dp/du */
         double cy = gfmax(-1.0, gfmin(1.0, l.y)), theta = acos(cy), st = sqrt(gfmax(0.0, 1.0 - cy * cy));
@@ -348,8 +352,8 @@ void hit_geom_to_world(const Object *o, GVec3 op, GVec3 n, GVec3 ns, GVec3 dpdu,
         g->p = xform_point(&o->xf, op);
         g->n_out = gvec3_normalize(xform_normal(&o->xf, n));
         g->n_smooth = gvec3_normalize(xform_normal(&o->xf, ns));
-        g->dpdu = xform_vector(&o->xf, dpdu);
-        g->dpdv = xform_vector(&o->xf, dpdv);
+        g->dpdu = g->want_uv ? xform_vector(&o->xf, dpdu) : dpdu;
+        g->dpdv = g->want_uv ? xform_vector(&o->xf, dpdv) : dpdv;
     } else {
         g->p = op;
         g->n_out = n;
@@ -379,15 +383,16 @@ void shape_hit_geom(const Object *o, const Ray *r, const Hit *h, HitGeom *g)
     GVec3 op = o->has_xf ? xform_inv_point(&o->xf, pw) : pw;
     GVec3 n = gvec3(0, 0, 1), dpdu = gvec3(1, 0, 0), dpdv = gvec3(0, 1, 0);
     double u = 0.0, v = 0.0;
-    local_geom(o, h->surface, &op, &n, &dpdu, &dpdv, &u, &v);
+    local_geom(o, h->surface, g->want_uv, &op, &n, &dpdu, &dpdv, &u, &v);
     g->surface = h->surface;
     g->u = u;
     g->v = v;
     hit_geom_to_world(o, op, n, n, dpdu, dpdv, g);
 }
 
-void hit_geom(const Ray *r, const Hit *h, HitGeom *g)
+void hit_geom(const Ray *r, const Hit *h, int want_uv, HitGeom *g)
 {
+    g->want_uv = want_uv;
     const Instance *in = h->inst;
     Ray pr = *r;
     if (in) { /* the ray in the prototype's space: affine, so t is unchanged */
@@ -402,7 +407,9 @@ void hit_geom(const Ray *r, const Hit *h, HitGeom *g)
         g->p = xform_point(&in->xf, g->p);
         g->n_out = gvec3_normalize(xform_normal(&in->xf, g->n_out));
         g->n_smooth = gvec3_normalize(xform_normal(&in->xf, g->n_smooth));
-        g->dpdu = xform_vector(&in->xf, g->dpdu);
-        g->dpdv = xform_vector(&in->xf, g->dpdv);
+        if (want_uv) {
+            g->dpdu = xform_vector(&in->xf, g->dpdu);
+            g->dpdv = xform_vector(&in->xf, g->dpdv);
+        }
     }
 }

@@ -89,7 +89,18 @@ enum {
      * GMAT_NO_EMISSION: set by hand only when it is true (`gmat check`'s geometric-normal property), clearing it
      * is always safe. A bit added in the existing flags field, which gmaterial_init fills for plug-ins built
      * against version 4 as well: the interface version did not change for it. */
-    GMAT_GEOMETRIC_NORMAL = 4u
+    GMAT_GEOMETRIC_NORMAL = 4u,
+    /** No method reads the surface's parametrisation: u, v, dpdu, dpdv, object_dpdu, object_dpdv, uv_footprint,
+     * uv_axis1 and uv_axis2 (the point, the normals, the footprint, t and the surface index are read as ever). A
+     * renderer may then leave those fields zero, as gsurfpoint_init sets them, and save their computation (a
+     * sphere's (u, v) is an acos and an atan2 per hit). gmaterial_init cannot know it and never sets it; a class
+     * whose methods read none of those fields sets it on its instances after gmaterial_init (every built-in
+     * material does); a node sets it when its own methods read none of them and every child has it
+     * (gtexnode_inherit_no_uv, node_kit.h: interpolate, select, spline, scale and transform over generators not
+     * in (u, v) space). The same rules as for GMAT_NO_EMISSION: set only when it is true (`gmat check`'s no-uv
+     * property evaluates the class with those fields zero and with other values, and the two must agree),
+     * clearing it is always safe. A bit added in the existing flags field, like GMAT_GEOMETRIC_NORMAL. */
+    GMAT_NO_UV = 16u
 };
 
 /** A material instance begins with this header; implementations embed it as their first member. */

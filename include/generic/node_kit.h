@@ -91,6 +91,16 @@ GENERIC_API void gtexnode_inherit_geometric_normal(GMaterial *node, GMaterial *c
  * other slot. gtexnode_new_checked calls it. */
 GENERIC_API void gtexnode_inherit_kit_normal(GMaterial *node, GMaterial *const *children, int n);
 
+/** 1 when each of the n children has GMAT_NO_UV (material.h) and gen, when given, is not a function of (u, v)
+ * (its space, texture.h, is not GGENERATOR_SPACE_UV: a generator's space says what its value reads). */
+GENERIC_API GENERIC_NODISCARD int gtexnode_children_no_uv(GMaterial *const *children, int n, const GGenerator *gen);
+
+/** Sets GMAT_NO_UV on node when gtexnode_children_no_uv(children, n, gen): for a node class whose own methods read
+ * nothing of the surface's parametrisation but through gen (interpolate, select, spline and scale call it after
+ * construction; transform, which moves (u, v) for a subtree that then never reads them, too). Never for a node
+ * that reads (u, v) or the tangents itself (image, bump): a wrong bit gives wrong pictures. */
+GENERIC_API void gtexnode_inherit_no_uv(GMaterial *node, GMaterial *const *children, int n, const GGenerator *gen);
+
 /** 1 for the methods whose colour carries light (reflection, refraction, emission, ambient, diffuse): the ones
  * a node that darkens or tints its child (scale, image) multiplies. */
 GENERIC_API GENERIC_NODISCARD int gtexnode_scales_method(GNodeMethod m);

@@ -1,8 +1,11 @@
-/* node_flags.c - the node kit's GMAT_NO_EMISSION, GMAT_OPAQUE and GMAT_GEOMETRIC_NORMAL (generic/node_kit.h): a
- * node whose emission only combines its children's emits nothing when none of them does, one whose opacity is its
- * children's is opaque everywhere when each of them is, and one whose normal blends its children's keeps the
- * geometric normal when each of them does, so the dispatch answers it without a call. */
+/* node_flags.c - the node kit's GMAT_NO_EMISSION, GMAT_OPAQUE, GMAT_GEOMETRIC_NORMAL and GMAT_NO_UV
+ * (generic/node_kit.h): a node whose emission only combines its children's emits nothing when none of them does,
+ * one whose opacity is its children's is opaque everywhere when each of them is, one whose normal blends its
+ * children's keeps the geometric normal when each of them does, so the dispatch answers it without a call; and
+ * one that reads the point only through a generator not in (u, v) space, over children that never read (u, v),
+ * lets the renderer skip the parametrisation. */
 #include "generic/node_kit.h"
+#include "generic/texture.h"
 
 /* 1 when each of the n children has the GMAT_* bit `flag`. */
 static int children_all(GMaterial *const *children, int n, unsigned flag)
@@ -46,4 +49,15 @@ void gtexnode_inherit_kit_normal(GMaterial *node, GMaterial *const *children, in
 {
     if (node && (node->cls->normal == gtexblendnode_normal || node->cls->normal == gtexchild_normal))
         gtexnode_inherit_geometric_normal(node, children, n);
+}
+
+int gtexnode_children_no_uv(GMaterial *const *children, int n, const GGenerator *gen)
+{
+    return children_all(children, n, GMAT_NO_UV) && !(gen && gen->space == GGENERATOR_SPACE_UV);
+}
+
+void gtexnode_inherit_no_uv(GMaterial *node, GMaterial *const *children, int n, const GGenerator *gen)
+{
+    if (node && gtexnode_children_no_uv(children, n, gen))
+        node->flags |= GMAT_NO_UV;
 }

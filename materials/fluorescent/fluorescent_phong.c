@@ -211,6 +211,7 @@ int gfluor_phong_create(const GColorModel *model, const GReradiation *matrix, co
         fphong_destroy(&f->base);
         return rc;
     }
+    f->base.flags |= GMAT_NO_UV; /* its methods read none of the (u, v) parametrisation (material.h) */
     *out = &f->base;
     return G_OK;
 }

@@ -421,6 +421,7 @@ int gfluor_varnish_create(const GColorModel *model, const GReradiation *matrix, 
         varnish_destroy(&v->base);
         return rc;
     }
+    v->base.flags |= GMAT_NO_UV; /* its methods read none of the (u, v) parametrisation (material.h) */
     *out = &v->base;
     return G_OK;
 }

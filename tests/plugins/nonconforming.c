@@ -16,6 +16,8 @@
  *   -DMISNORMAL  material "misnormal_lambert": a Lambertian of albedo 0.5 whose normal slot tilts the normal 30
  *                degrees (as a bump would) while its instances set GMAT_GEOMETRIC_NORMAL, so renderers never see
  *                the tilt: only the geometric-normal check sees it;
+ *   -DMISUV      material "misuv_lambert": a Lambertian whose albedo is 0.25 + 0.5 u (it reads the surface's u)
+ *                while its instances set GMAT_NO_UV, so renderers give it u = 0: only the no-uv check sees it;
  *   -DBAD_BANDS  colour model "bad_bands": the same grey model with a correct add and two wavelength bands whose
  *                masks are both white, so the bands do not partition a value;
  *   -DBAD_ADD    colour model "bad_add": the grey model (luminance only) whose add returns 1.01 a + b, so
@@ -28,7 +30,7 @@
 GENERIC_MODULE_EXPORT const int generic_module_abi = GMODULE_ABI_VERSION;
 
 #if defined(GAIN) || defined(SKEWED) || defined(MISDRAWN) || defined(MISFLAGGED) || defined(MISOPAQUE) ||              \
-    defined(MISNORMAL)
+    defined(MISNORMAL) || defined(MISUV)
 typedef struct Flat {
     GMaterial base;
 } Flat;
@@ -51,6 +53,8 @@ static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, cons
     double f = 0.8 / M_PI;
 #elif defined(MISFLAGGED) || defined(MISOPAQUE) || defined(MISNORMAL)
     double f = 0.5 / M_PI;
+#elif defined(MISUV)
+    double f = (0.25 + 0.5 * fmin(1.0, fmax(0.0, sp->u))) / M_PI; /* reads u: GMAT_NO_UV is wrong */
 #else
     double f = (0.25 + 0.5 * ci * ci) / M_PI;
 #endif
@@ -67,6 +71,8 @@ static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, cons
 #define FLAT_NAME "misopaque_lambert"
 #elif defined(MISNORMAL)
 #define FLAT_NAME "misnormal_lambert"
+#elif defined(MISUV)
+#define FLAT_NAME "misuv_lambert"
 #else
 #define FLAT_NAME "skewed_lambert"
 #endif
@@ -174,6 +180,9 @@ static int parse_flat(GReader *r, const void *vtable, void **object, GError *err
 #endif
 #ifdef MISNORMAL
     m->base.flags |= GMAT_GEOMETRIC_NORMAL; /* the deliberate error: the class's normal slot tilts the normal */
+#endif
+#ifdef MISUV
+    m->base.flags |= GMAT_NO_UV; /* the deliberate error: the class's reflection reads u */
 #endif
     *object = &m->base;
     return G_OK;
