@@ -46,6 +46,9 @@ static int probe_cast(Probe *p, GVec3 o, GVec3 d, const Media *media)
     Media none = {{NULL}, 0};
     if (!accel_intersect(p->scene, &r, &p->hit))
         return 0;
+    /* the parametrisation is under test: a material without GMAT_NO_UV, for which it is filled (clearing the bit
+     * is always correct; test_no_uv_fields in test_gtrace_shapes.c checks what the bit leaves out) */
+    ((GMaterial *)p->hit.material)->flags &= ~(unsigned)GMAT_NO_UV;
     surfpoint_fill(&p->ctx, &r, &p->hit, media ? media : &none, &p->sp, &p->facing);
     return 1;
 }

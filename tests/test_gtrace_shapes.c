@@ -1,6 +1,7 @@
 /* test_gtrace_shapes.c - the quad and triangle (Embree's own quads and triangles) and the disc: the surface
  * point at known hits (point, outward normal, (u, v), tangents dpdu x dpdv along the normal, surface index,
- * t), misses just outside, transforms, the scene text entries and their errors. */
+ * t), misses just outside, transforms, the scene text entries and their errors; and what a material's GMAT_NO_UV
+ * leaves out of the surface point for every shape. */
 #include "generic/builtins.h"
 #include "test_gtrace_common.h"
 
@@ -39,6 +40,9 @@ static int probe_cast(Probe *p, GVec3 o, GVec3 d)
     Media none = {{NULL}, 0};
     if (!accel_intersect(p->scene, &r, &p->hit))
         return 0;
+    /* the parametrisation is under test: a material without GMAT_NO_UV, for which it is filled (clearing the bit
+     * is always correct; test_no_uv_fields in test_gtrace_shapes.c checks what the bit leaves out) */
+    ((GMaterial *)p->hit.material)->flags &= ~(unsigned)GMAT_NO_UV;
     surfpoint_fill(&p->ctx, &r, &p->hit, &none, &p->sp, &p->facing);
     return 1;
 }
@@ -242,6 +246,76 @@ static void test_shape_entries(void **state)
     expect_error("object quad { }\n", "needs a material");
 }
 
+/* Every shape, plain and transformed, hit at random: with GMAT_NO_UV on the material the surface point is the same
+ * but for its parametrisation, which stays zero; without it the parametrisation is filled. */
+static void test_no_uv_fields(void **state)
+{
+    (void)state;
+    GError err;
+    Scene *s = load_text("material g lambert { }\n"
+                         "object sphere { center <0, 0, 0> radius 1 material g }\n"
+                         "object sphere { center <3, 0, 0> radius 1 transform { scale <1, 2, 1> rotate <0, 30, 10> } "
+                         "material g }\n"
+                         "object box { min <-4, -1, -1> max <-2, 1, 1> transform { rotate <20, 0, 0> } material g }\n"
+                         "object cylinder { base <0, 2.5, 0> top <0, 3.5, 0> radius 1 material g }\n"
+                         "object disc { center <3, 3, 0> normal <0, 0, 1> radius 1 material g }\n"
+                         "object quad { corner <-4, 3, 0> edge1 <2, 0, 0> edge2 <0, 2, 0> material g }\n"
+                         "object plane { point <0, -2, 0> normal <0, 1, 0> material g }\n",
+                         &err);
+    if (!s)
+        fail_msg("%s", err.message);
+    assert_int_equal(accel_build(s, &err), G_OK);
+    GScratch *scratch = gscratch_create(0);
+    TraceCtx ctx = {.scene = s, .scratch = scratch};
+    GMaterial *g = (GMaterial *)s->objects[0]->material;
+    assert_true(g->flags & GMAT_NO_UV); /* lambert's */
+    unsigned long long seed = 7;
+    int hits = 0, kinds = 0;
+    for (int k = 0; k < 2000; k++) {
+        double a[3];
+        for (int i = 0; i < 3; i++) {
+            seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+            a[i] = (double)(seed >> 11) * 0x1.0p-53;
+        }
+        GVec3 target = gvec3(-4.5 + 8 * a[0], -2.5 + 6.5 * a[1], -0.5 + a[2]);
+        GVec3 o = gvec3(0.3 * a[2], 0.5, 12), d = gvec3_normalize(gvec3_sub(target, o));
+        Ray r = {o, d, 0.0, INFINITY, 0.0, 0.001};
+        Media none = {{NULL}, 0};
+        Hit h;
+        if (!accel_intersect(s, &r, &h))
+            continue;
+        GSurfPoint full, bare;
+        GVec3 ff, fb;
+        g->flags &= ~(unsigned)GMAT_NO_UV;
+        surfpoint_fill(&ctx, &r, &h, &none, &full, &ff);
+        g->flags |= GMAT_NO_UV;
+        surfpoint_fill(&ctx, &r, &h, &none, &bare, &fb);
+        hits++;
+        kinds |= 1 << h.obj->kind;
+        assert_memory_equal(&full.point, &bare.point, sizeof full.point);
+        assert_memory_equal(&full.object_point, &bare.object_point, sizeof full.point);
+        assert_memory_equal(&full.geometric_normal, &bare.geometric_normal, sizeof full.point);
+        assert_memory_equal(&ff, &fb, sizeof ff);
+        assert_true(full.t == bare.t && full.footprint == bare.footprint && full.surface == bare.surface);
+        assert_true(full.entering == bare.entering && full.material == bare.material);
+        assert_true(full.from == bare.from && full.to == bare.to);
+        assert_true(gvec3_length(full.dpdu) > 0.0 && gvec3_length(full.dpdv) > 0.0 && full.uv_footprint > 0.0);
+        const GVec3 *zero[] = {&bare.dpdu, &bare.dpdv, &bare.object_dpdu, &bare.object_dpdv};
+        for (int i = 0; i < 4; i++)
+            assert_true(zero[i]->x == 0.0 && zero[i]->y == 0.0 && zero[i]->z == 0.0);
+        assert_true(bare.u == 0.0 && bare.v == 0.0 && bare.uv_footprint == 0.0);
+        assert_true(bare.uv_axis1[0] == 0.0 && bare.uv_axis1[1] == 0.0);
+        assert_true(bare.uv_axis2[0] == 0.0 && bare.uv_axis2[1] == 0.0);
+    }
+    print_message("%d hits, shape kinds 0x%x\n", hits, kinds);
+    assert_true(hits > 1000);
+    const ShapeKind want[] = {SHAPE_SPHERE, SHAPE_BOX, SHAPE_CYLINDER, SHAPE_DISC, SHAPE_QUAD, SHAPE_PLANE};
+    for (int i = 0; i < 6; i++)
+        assert_true(kinds & (1 << want[i]));
+    gscratch_destroy(scratch);
+    scene_destroy(s);
+}
+
 int main(void)
 {
     if (generic_register_builtins(NULL) != G_OK)
@@ -249,7 +323,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_quad_surface),     cmocka_unit_test(test_triangle_surface),
         cmocka_unit_test(test_transformed_quad), cmocka_unit_test(test_disc_surface),
-        cmocka_unit_test(test_shape_entries),
+        cmocka_unit_test(test_shape_entries),    cmocka_unit_test(test_no_uv_fields),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

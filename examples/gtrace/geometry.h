@@ -118,8 +118,9 @@ void shape_hit_geom(const Object *o, const Ray *r, const Hit *h, HitGeom *g);
 void hit_geom(const Ray *r, const Hit *h, int want_uv, HitGeom *g);
 /** Surface details of a mesh triangle at a hit (g->want_uv as hit_geom set it). */
 void mesh_hit_geom(const Object *o, const Ray *r, const Hit *h, HitGeom *g);
-/** Fills g's point, outward normal n, shading normal ns and tangents from object space (op, n, ns, dpdu, dpdv)
- * in world space, keeping the object-space point and tangents; u, v and the surface are left to the caller. */
-void hit_geom_to_world(const Object *o, GVec3 op, GVec3 n, GVec3 ns, GVec3 dpdu, GVec3 dpdv, HitGeom *g);
+/** Brings g from the object's space to world space in place: g->op, n_out, n_smooth, dpdu and dpdv hold the
+ * object-space point, outward normal, shading normal and tangents; sets g->p, keeps the tangents in odpdu and odpdv
+ * and turns the normals and (when g->want_uv) the tangents to world space; u, v and the surface are the caller's. */
+void hit_geom_to_world(const Object *o, HitGeom *g);
 
 #endif

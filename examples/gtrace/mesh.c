@@ -344,5 +344,10 @@ void mesh_hit_geom(const Object *o, const Ray *r, const Hit *h, HitGeom *g)
     g->u = u;
     g->v = v;
     g->surface = m->tri_surface[k];
-    hit_geom_to_world(o, op, n, ns, dpdu, dpdv, g);
+    g->op = op;
+    g->n_out = n;
+    g->n_smooth = ns;
+    g->dpdu = dpdu;
+    g->dpdv = dpdv;
+    hit_geom_to_world(o, g);
 }

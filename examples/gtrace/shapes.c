@@ -244,10 +244,8 @@ static void local_geom(const Object *o, int surface, int want_uv, GVec3 *p, GVec
         GVec3 l = gvec3_normalize(gvec3_sub(*p, o->center));
         *p = gvec3_madd(o->center, l, o->radius);
         *n = l;
-        if (!want_uv) { /* an acos and an atan2 saved */
-            *dpdu = *dpdv = gvec3(0, 0, 0);
+        if (!want_uv) /* an acos and an atan2 saved: the tangents stay as the caller set them */
             break;
-        }
         /* theta = acos(cy) from the pole, phi = atan2(-l.z, l.x) around y; sin(theta) = sqrt(1 - cy^2), and
          * sin(theta) cos(phi) = l.x, sin(theta) sin(phi) = -l.z: no sin, and no division for dp/du */
         double cy = gfmax(-1.0, gfmin(1.0, l.y)), theta = acos(cy), st = sqrt(gfmax(0.0, 1.0 - cy * cy));
@@ -343,34 +341,34 @@ static void local_geom(const Object *o, int surface, int want_uv, GVec3 *p, GVec
     }
 }
 
-void hit_geom_to_world(const Object *o, GVec3 op, GVec3 n, GVec3 ns, GVec3 dpdu, GVec3 dpdv, HitGeom *g)
+void hit_geom_to_world(const Object *o, HitGeom *g)
 {
-    g->op = op;
-    g->odpdu = dpdu;
-    g->odpdv = dpdv;
-    if (o->has_xf) {
-        g->p = xform_point(&o->xf, op);
-        g->n_out = gvec3_normalize(xform_normal(&o->xf, n));
-        g->n_smooth = gvec3_normalize(xform_normal(&o->xf, ns));
-        g->dpdu = g->want_uv ? xform_vector(&o->xf, dpdu) : dpdu;
-        g->dpdv = g->want_uv ? xform_vector(&o->xf, dpdv) : dpdv;
-    } else {
-        g->p = op;
-        g->n_out = n;
-        g->n_smooth = ns;
-        g->dpdu = dpdu;
-        g->dpdv = dpdv;
+    g->odpdu = g->dpdu;
+    g->odpdv = g->dpdv;
+    if (!o->has_xf) {
+        g->p = g->op;
+        return;
+    }
+    g->p = xform_point(&o->xf, g->op);
+    g->n_out = gvec3_normalize(xform_normal(&o->xf, g->n_out));
+    g->n_smooth = gvec3_normalize(xform_normal(&o->xf, g->n_smooth));
+    if (g->want_uv) {
+        g->dpdu = xform_vector(&o->xf, g->dpdu);
+        g->dpdv = xform_vector(&o->xf, g->dpdv);
     }
 }
 
 /* quads and triangles: Embree's (u, v) are the parameters of center + u t1 + v t2 */
 static void flat_hit_geom(const Object *o, const Hit *h, HitGeom *g)
 {
-    GVec3 op = gvec3_madd(gvec3_madd(o->center, o->t1, h->bu), o->t2, h->bv);
+    g->op = gvec3_madd(gvec3_madd(o->center, o->t1, h->bu), o->t2, h->bv);
+    g->n_out = g->n_smooth = o->normal;
+    g->dpdu = o->t1;
+    g->dpdv = o->t2;
     g->surface = 0;
     g->u = h->bu;
     g->v = h->bv;
-    hit_geom_to_world(o, op, o->normal, o->normal, o->t1, o->t2, g);
+    hit_geom_to_world(o, g);
 }
 
 void shape_hit_geom(const Object *o, const Ray *r, const Hit *h, HitGeom *g)
@@ -380,14 +378,17 @@ void shape_hit_geom(const Object *o, const Ray *r, const Hit *h, HitGeom *g)
         return;
     }
     GVec3 pw = gvec3_madd(r->o, r->d, h->t);
-    GVec3 op = o->has_xf ? xform_inv_point(&o->xf, pw) : pw;
-    GVec3 n = gvec3(0, 0, 1), dpdu = gvec3(1, 0, 0), dpdv = gvec3(0, 1, 0);
-    double u = 0.0, v = 0.0;
-    local_geom(o, h->surface, g->want_uv, &op, &n, &dpdu, &dpdv, &u, &v);
+    g->op = o->has_xf ? xform_inv_point(&o->xf, pw) : pw;
+    g->n_out = gvec3(0, 0, 1);
+    g->dpdu = gvec3(1, 0, 0);
+    g->dpdv = gvec3(0, 1, 0);
+    g->u = g->v = 0.0;
+    /* in place: the fields, not copies passed by value (24-byte vectors go through the stack, and a 16-byte load
+     * of two 8-byte stores just made stalls) */
+    local_geom(o, h->surface, g->want_uv, &g->op, &g->n_out, &g->dpdu, &g->dpdv, &g->u, &g->v);
+    g->n_smooth = g->n_out;
     g->surface = h->surface;
-    g->u = u;
-    g->v = v;
-    hit_geom_to_world(o, op, n, n, dpdu, dpdv, g);
+    hit_geom_to_world(o, g);
 }
 
 void hit_geom(const Ray *r, const Hit *h, int want_uv, HitGeom *g)
