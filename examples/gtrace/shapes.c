@@ -341,14 +341,8 @@ static void local_geom(const Object *o, int surface, int want_uv, GVec3 *p, GVec
     }
 }
 
-void hit_geom_to_world(const Object *o, HitGeom *g)
+void hit_geom_transform(const Object *o, HitGeom *g)
 {
-    g->odpdu = g->dpdu;
-    g->odpdv = g->dpdv;
-    if (!o->has_xf) {
-        g->p = g->op;
-        return;
-    }
     g->p = xform_point(&o->xf, g->op);
     g->n_out = gvec3_normalize(xform_normal(&o->xf, g->n_out));
     g->n_smooth = gvec3_normalize(xform_normal(&o->xf, g->n_smooth));
