@@ -8,7 +8,9 @@
 
 enum { HAVE_NORMAL = 1u, HAVE_REL_INDEX = 2u };
 
-void gsurfpoint_init(GSurfPoint *sp, const GColorModel *model, GScratch *scratch)
+/* always inlined where the optimiser sees it (link-time optimisation of a renderer): the stores then merge with the
+ * caller's, which overwrites most of them; an external definition all the same (surfpoint.h declares it) */
+__attribute__((always_inline)) inline void gsurfpoint_init(GSurfPoint *sp, const GColorModel *model, GScratch *scratch)
 {
     /* every field zero but the cache slots' contents and scopes (768 bytes, most of the struct): only the first
      * ncache of them are ever read, and ncache is 0. Field by field, not one memset of the 208 bytes before the
