@@ -77,8 +77,11 @@ static const GMaterialClass lambert_class = {
 
 int glambert_create(const GColorModel *model, const GColor *reflectance, GMaterial **out, GError *err)
 {
-    return gmat_one_color_create(&lambert_class, model, sizeof(GMatOneColor), reflectance, GCOLOR_REFLECTANCE,
-                                 1.0, "reflectance", out, err);
+    int rc = gmat_one_color_create(&lambert_class, model, sizeof(GMatOneColor), reflectance, GCOLOR_REFLECTANCE,
+                                   1.0, "reflectance", out, err);
+    if (rc == G_OK) /* reflection is diffuse (rho) * illum * gmat_cos_in / pi, as the bit says (material.h) */
+        (*out)->flags |= GMAT_LAMBERTIAN;
+    return rc;
 }
 
 /* lambert { reflectance COLOR }: grey 0.8 when not given */

@@ -34,7 +34,10 @@ static const GTexBlendClass select_class = {
 
 int gnode_select_create(GMaterial *const *children, int n, GGenerator *index, GMaterial **out, GError *err)
 {
-    return gtexlist_new(&select_class.base, children, n, index, sizeof(GTexList), out, err);
+    int rc = gtexlist_new(&select_class.base, children, n, index, sizeof(GTexList), out, err);
+    if (rc == G_OK)
+        gtexnode_inherit_lambertian(*out, children, n); /* pick ignores the method: one child for all */
+    return rc;
 }
 
 static int parse_select(GReader *r, const void *vtable, void **object, GError *err)

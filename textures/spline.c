@@ -128,8 +128,10 @@ int gnode_spline_create(GMaterial *const *children, int n, GGenerator *t, GSplin
     if ((unsigned)basis > GSPLINE_LINEAR)
         return gerror_set(err, G_ERR_INVALID, "spline: unknown basis %d", (int)basis);
     int rc = gtexlist_new(&spline_class.base, children, n, t, sizeof(Spline), out, err);
-    if (rc == G_OK)
+    if (rc == G_OK) {
         ((Spline *)*out)->basis = (int)basis;
+        gtexnode_inherit_lambertian(*out, children, n); /* pick ignores the method: one blend for all */
+    }
     return rc;
 }
 

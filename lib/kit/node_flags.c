@@ -1,7 +1,9 @@
-/* node_flags.c - the node kit's GMAT_NO_EMISSION, GMAT_OPAQUE and GMAT_GEOMETRIC_NORMAL (generic/node_kit.h): a
- * node whose emission only combines its children's emits nothing when none of them does, one whose opacity is its
- * children's is opaque everywhere when each of them is, and one whose normal blends its children's keeps the
- * geometric normal when each of them does, so the dispatch answers it without a call. */
+/* node_flags.c - the node kit's GMAT_NO_EMISSION, GMAT_OPAQUE, GMAT_GEOMETRIC_NORMAL and GMAT_LAMBERTIAN
+ * (generic/node_kit.h): a node whose emission only combines its children's emits nothing when none of them does,
+ * one whose opacity is its children's is opaque everywhere when each of them is, one whose normal blends its
+ * children's keeps the geometric normal when each of them does, so the dispatch answers it without a call, and a
+ * blend whose reflection and diffuse colour are the same blend of its children's is Lambertian when each of them
+ * is, so a renderer reflects the light of all its samples at once. */
 #include "generic/node_kit.h"
 
 /* 1 when each of the n children has the GMAT_* bit `flag`. */
@@ -46,4 +48,16 @@ void gtexnode_inherit_kit_normal(GMaterial *node, GMaterial *const *children, in
 {
     if (node && (node->cls->normal == gtexblendnode_normal || node->cls->normal == gtexchild_normal))
         gtexnode_inherit_geometric_normal(node, children, n);
+}
+
+int gtexnode_children_lambertian(GMaterial *const *children, int n)
+{
+    return children_all(children, n, GMAT_LAMBERTIAN);
+}
+
+void gtexnode_inherit_lambertian(GMaterial *node, GMaterial *const *children, int n)
+{
+    if (node && node->cls->reflection == gtexblendnode_reflection && node->cls->diffuse == gtexblendnode_diffuse &&
+        gtexnode_children_lambertian(children, n))
+        node->flags |= GMAT_LAMBERTIAN;
 }
