@@ -80,6 +80,11 @@ void gmat_check_opaque_flag(GmatContext *ctx, const GmatPlace *places, int nplac
  * geometric normal (within rounding) from its class's own normal slot at the places given, on both sides. */
 void gmat_check_geometric_normal(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
                                  void *checker);
+/** The lambertian check of `gmat check` (flags.c): a material with GMAT_LAMBERTIAN must reflect, by its class's own
+ * reflection slot, its diffuse colour times the light times gmat_cos_in / pi (relative 1e-5) over random pairs of
+ * directions and lights at the places given, on both sides, and its is_delta slot (if any) must say 0. */
+void gmat_check_lambertian(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
+                           void *checker);
 /** The relative index n(from) / n(to) at sp as a colour, as a renderer hands it to refraction() (storage of the
  * model; temporaries on sp's arena). */
 int gmat_relative_index(GSurfPoint *sp, GColor *out);

@@ -52,7 +52,7 @@ static void usage_main(FILE *f)
                "  plot    polar plot of the reflection in the plane of incidence (PNG)\n"
                "  list    the materials, texture nodes and generators a file (or a scene) defines\n"
                "  check   conformance checks: albedo, reciprocity, finite values, Snell's law, defaults,\n"
-               "          no emission where flagged, sampling (chi-square, pdf, weights)\n"
+               "          the instance flags, sampling (chi-square, pdf, weights)\n"
                "  types   the registered material, node and generator types\n"
                "  swatch  a picture of a material or texture tree (gmat swatch --help)\n"
                "  laser   the laser experiment of Wilkie et al. (gmat laser --help)\n\n"
@@ -105,6 +105,8 @@ static void usage(const char *cmd, FILE *f)
                    "  opaque-flag  a material flagged GMAT_OPAQUE gets 1 from its class's opaque slot\n"
                    "  geometric-normal  a material flagged GMAT_GEOMETRIC_NORMAL gets the geometric normal\n"
                    "               from its class's normal slot\n"
+                   "  lambertian   a material flagged GMAT_LAMBERTIAN reflects diffuse * light * cos / pi\n"
+                   "               by its class's reflection slot (random pairs and lights, relative 1e-5)\n"
                    "Each is measured at several surface points (u, v, point and surface index vary).\n"
                    "  --samples N         albedo grid N x 2N (8..4096, default 64)\n\n%s",
                 common);

@@ -16,6 +16,9 @@
  *   -DMISNORMAL  material "misnormal_lambert": a Lambertian of albedo 0.5 whose normal slot tilts the normal 30
  *                degrees (as a bump would) while its instances set GMAT_GEOMETRIC_NORMAL, so renderers never see
  *                the tilt: only the geometric-normal check sees it;
+ *   -DMISDIFFUSE material "misdiffuse_lambert": a Lambertian of albedo 0.5 whose diffuse slot says 0.8 while its
+ *                instances set GMAT_LAMBERTIAN, so a renderer that reflects its lights through diffuse() shows it
+ *                0.8 bright: only the lambertian check sees it;
  *   -DBAD_BANDS  colour model "bad_bands": the same grey model with a correct add and two wavelength bands whose
  *                masks are both white, so the bands do not partition a value;
  *   -DBAD_ADD    colour model "bad_add": the grey model (luminance only) whose add returns 1.01 a + b, so
@@ -28,7 +31,7 @@
 GENERIC_MODULE_EXPORT const int generic_module_abi = GMODULE_ABI_VERSION;
 
 #if defined(GAIN) || defined(SKEWED) || defined(MISDRAWN) || defined(MISFLAGGED) || defined(MISOPAQUE) ||              \
-    defined(MISNORMAL)
+    defined(MISNORMAL) || defined(MISDIFFUSE)
 typedef struct Flat {
     GMaterial base;
 } Flat;
@@ -49,7 +52,7 @@ static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, cons
     double f = 1.5 / M_PI;
 #elif defined(MISDRAWN)
     double f = 0.8 / M_PI;
-#elif defined(MISFLAGGED) || defined(MISOPAQUE) || defined(MISNORMAL)
+#elif defined(MISFLAGGED) || defined(MISOPAQUE) || defined(MISNORMAL) || defined(MISDIFFUSE)
     double f = 0.5 / M_PI;
 #else
     double f = (0.25 + 0.5 * ci * ci) / M_PI;
@@ -67,6 +70,8 @@ static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, cons
 #define FLAT_NAME "misopaque_lambert"
 #elif defined(MISNORMAL)
 #define FLAT_NAME "misnormal_lambert"
+#elif defined(MISDIFFUSE)
+#define FLAT_NAME "misdiffuse_lambert"
 #else
 #define FLAT_NAME "skewed_lambert"
 #endif
@@ -128,6 +133,16 @@ static int flat_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
 }
 #endif
 
+#ifdef MISDIFFUSE
+/* A diffuse colour brighter than the reflection's 0.5; the instances are flagged GMAT_LAMBERTIAN all the same (the
+ * error). */
+static int flat_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
+{
+    (void)self, (void)sp;
+    return gcolor_fill(result, 0.8);
+}
+#endif
+
 static const GMaterialClass flat_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = FLAT_NAME,
@@ -146,6 +161,9 @@ static const GMaterialClass flat_class = {
 #endif
 #ifdef MISNORMAL
     .normal = flat_normal,
+#endif
+#ifdef MISDIFFUSE
+    .diffuse = flat_diffuse,
 #endif
 };
 
@@ -174,6 +192,9 @@ static int parse_flat(GReader *r, const void *vtable, void **object, GError *err
 #endif
 #ifdef MISNORMAL
     m->base.flags |= GMAT_GEOMETRIC_NORMAL; /* the deliberate error: the class's normal slot tilts the normal */
+#endif
+#ifdef MISDIFFUSE
+    m->base.flags |= GMAT_LAMBERTIAN; /* the deliberate error: reflection is 0.5 / pi, diffuse says 0.8 */
 #endif
     *object = &m->base;
     return G_OK;
