@@ -299,10 +299,11 @@ bench-mpi: $(BUILD)/bin/gtrace
 # headers as `make install` installs them (copied to $(BUILD)/plugins/include), never against the source tree.
 # Modules are not linked with libgeneric: the program that loads them provides the library's symbols.
 # tests/plugins/bad_module.c is built three ways (wrong interface version, failing init, no entry point)
-# for tests/test_plugin.c; tests/plugins/nonconforming.c eight ways (albedo above 1, not reciprocal, a sampler
+# for tests/test_plugin.c; tests/plugins/nonconforming.c nine ways (albedo above 1, not reciprocal, a sampler
 # that disagrees with its pdf, a glow hidden by a wrong GMAT_NO_EMISSION, a transparency hidden by a wrong
-# GMAT_OPAQUE, a tilted normal hidden by a wrong GMAT_GEOMETRIC_NORMAL, a wrong colour add, overlapping
-# wavelength bands) for tests/scripts/conformance.sh.
+# GMAT_OPAQUE, a tilted normal hidden by a wrong GMAT_GEOMETRIC_NORMAL, a diffuse colour that a wrong
+# GMAT_LAMBERTIAN renders in place of the reflection, a wrong colour add, overlapping wavelength bands) for
+# tests/scripts/conformance.sh.
 PLUGIN_SRC := $(wildcard examples/plugins/*.c)
 PLUGIN_INC := $(BUILD)/plugins/include
 PLUGIN_HDR := $(patsubst include/generic/%,$(PLUGIN_INC)/generic/%,$(wildcard include/generic/*.h))
@@ -311,7 +312,8 @@ PLUGIN_SO  := $(PLUGIN_SRC:examples/plugins/%.c=$(BUILD)/plugins/%.so) \
               $(BUILD)/plugins/constructor_only.so \
               $(BUILD)/plugins/gain.so $(BUILD)/plugins/skewed.so $(BUILD)/plugins/bad_add.so \
               $(BUILD)/plugins/bad_bands.so $(BUILD)/plugins/misdrawn.so $(BUILD)/plugins/misflagged.so \
-              $(BUILD)/plugins/misopaque.so $(BUILD)/plugins/misnormal.so $(BUILD)/plugins/misuv.so
+              $(BUILD)/plugins/misopaque.so $(BUILD)/plugins/misnormal.so $(BUILD)/plugins/misdiffuse.so \
+              $(BUILD)/plugins/misuv.so
 # -fvisibility=hidden: a module's own symbols never bind to the program's copies (only the two GENERIC_MODULE_EXPORT
 # symbols are exported).
 PLUGIN_CFLAGS := -std=c11 -D_GNU_SOURCE $(OPT) -g -fPIC -shared -fvisibility=hidden $(WARN) $(SANFLAGS) -I$(PLUGIN_INC)
@@ -378,6 +380,9 @@ $(BUILD)/plugins/misopaque.so: tests/plugins/nonconforming.c $(PLUGIN_HDR)
 
 $(BUILD)/plugins/misnormal.so: tests/plugins/nonconforming.c $(PLUGIN_HDR)
 	$(CC) $(PLUGIN_CFLAGS) -DMISNORMAL -o $@ $< -lm
+
+$(BUILD)/plugins/misdiffuse.so: tests/plugins/nonconforming.c $(PLUGIN_HDR)
+	$(CC) $(PLUGIN_CFLAGS) -DMISDIFFUSE -o $@ $< -lm
 
 $(BUILD)/plugins/misuv.so: tests/plugins/nonconforming.c $(PLUGIN_HDR)
 	$(CC) $(PLUGIN_CFLAGS) -DMISUV -o $@ $< -lm

@@ -119,6 +119,8 @@ int gmaterial_diffuse(const GMaterial *m, GSurfPoint *sp, GColor *result)
 
 int gmaterial_opaque_everywhere(const GMaterial *m) { return m && (m->flags & GMAT_OPAQUE); }
 
+int gmaterial_lambertian(const GMaterial *m) { return m && (m->flags & GMAT_LAMBERTIAN); }
+
 int gmaterial_opaque(const GMaterial *m, GSurfPoint *sp)
 {
     if (m && (m->flags & GMAT_OPAQUE))
@@ -278,6 +280,8 @@ double gmaterial_pdf(const GMaterial *m, GSurfPoint *sp, GVec3 in, GVec3 out, co
 
 int gmaterial_is_delta(const GMaterial *m, GSurfPoint *sp)
 {
+    if (m && (m->flags & GMAT_LAMBERTIAN)) /* a diffuse lobe: not delta (material.h) */
+        return 0;
     if (m && m->cls->is_delta)
         return m->cls->is_delta(m, sp);
     return 0;

@@ -79,8 +79,9 @@ int glambert_create(const GColorModel *model, const GColor *reflectance, GMateri
 {
     int rc = gmat_one_color_create(&lambert_class, model, sizeof(GMatOneColor), reflectance, GCOLOR_REFLECTANCE,
                                    1.0, "reflectance", out, err);
-    if (rc == G_OK)
-        (*out)->flags |= GMAT_NO_UV; /* its methods read none of the (u, v) parametrisation (material.h) */
+    if (rc == G_OK) /* reflection is diffuse (rho) * illum * gmat_cos_in / pi, as the bit says, and no method reads
+                     * the (u, v) parametrisation (material.h) */
+        (*out)->flags |= GMAT_LAMBERTIAN | GMAT_NO_UV;
     return rc;
 }
 

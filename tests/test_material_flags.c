@@ -7,7 +7,8 @@
  *  - GMAT_GEOMETRIC_NORMAL: every built-in material has it (none has a normal slot), every kit node over such
  *    children but bump, no node over a child that tilts the normal; it makes gmaterial_normal and gsurfpoint_normal
  *    answer the geometric normal without calling the class, with the normals the class computes;
- *  - the material interface's version rose with the header (and stayed for the normal bit). */
+ *  - GMAT_LAMBERTIAN: lambert has it, no other built-in material (test_material_lambertian.c: nodes, the property);
+ *  - the material interface's version rose with the header (and stayed for the normal and Lambertian bits). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -70,7 +71,9 @@ static GMaterial *emitter(Fix *f, double r, double g, double b)
 
 /* Every built-in material type: GMAT_NO_EMISSION exactly when the class has no emission slot (all but the
  * emitter; the fluorescent materials re-radiate in reflection(), their emission is black), GMAT_OPAQUE exactly when
- * it has no opaque slot (all but the dielectric). */
+ * it has no opaque slot (all but the dielectric), GMAT_LAMBERTIAN for lambert alone (its class sets it: phong has a
+ * glossy lobe, mirror and dielectric are delta, the fluorescent ones have specular parts, the emitter reflects
+ * nothing and says it is delta). */
 static void test_leaf_materials(void **state)
 {
     (void)state;
@@ -91,8 +94,9 @@ static void test_leaf_materials(void **state)
         fail_msg("%s", err.message);
     static const struct {
         const char *name;
-        int emits, opaque;
-    } want[] = {{"l", 0, 1}, {"p", 0, 1}, {"m", 0, 1}, {"d", 0, 0}, {"fv", 0, 1}, {"fp", 0, 1}, {"e", 1, 1}};
+        int emits, opaque, lambertian;
+    } want[] = {{"l", 0, 1, 1}, {"p", 0, 1, 0}, {"m", 0, 1, 0}, {"d", 0, 0, 0},
+                {"fv", 0, 1, 0}, {"fp", 0, 1, 0}, {"e", 1, 1, 0}};
     for (size_t i = 0; i < sizeof want / sizeof want[0]; i++) {
         GMaterial *m = glibrary_material(lib, want[i].name);
         assert_non_null(m);
@@ -104,6 +108,7 @@ static void test_leaf_materials(void **state)
         assert_int_equal(gmaterial_opaque_everywhere(m), want[i].opaque);
         assert_null(m->cls->normal); /* no built-in material changes the normal */
         assert_true(flat(m));
+        assert_int_equal(gmaterial_lambertian(m), want[i].lambertian);
     }
     assert_int_equal(gmaterial_emits(NULL), 0);                /* vacuum emits nothing */
     assert_int_equal(gmaterial_opaque_everywhere(NULL), 0);    /* and lets light through */

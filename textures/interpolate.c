@@ -69,6 +69,8 @@ static int make(const GTexBlendClass *cls, GMaterial *a, GMaterial *b, GGenerato
     n->b = gmaterial_ref(b);
     n->t = ggenerator_ref(t);
     n->only = only;
+    if (only != GNODE_REFLECTION && only != GNODE_DIFFUSE) /* pick blends both alike, or gives a for both */
+        gtexnode_inherit_lambertian(node, children, 2);
     gtexnode_inherit_no_uv(node, children, 2, t); /* reads the point only through t */
     *out = &n->base;
     return G_OK;

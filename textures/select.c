@@ -35,8 +35,10 @@ static const GTexBlendClass select_class = {
 int gnode_select_create(GMaterial *const *children, int n, GGenerator *index, GMaterial **out, GError *err)
 {
     int rc = gtexlist_new(&select_class.base, children, n, index, sizeof(GTexList), out, err);
-    if (rc == G_OK)
+    if (rc == G_OK) {
+        gtexnode_inherit_lambertian(*out, children, n); /* pick ignores the method: one child for all */
         gtexnode_inherit_no_uv(*out, children, n, index); /* reads the point only through the index */
+    }
     return rc;
 }
 

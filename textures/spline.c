@@ -130,6 +130,7 @@ int gnode_spline_create(GMaterial *const *children, int n, GGenerator *t, GSplin
     int rc = gtexlist_new(&spline_class.base, children, n, t, sizeof(Spline), out, err);
     if (rc == G_OK) {
         ((Spline *)*out)->basis = (int)basis;
+        gtexnode_inherit_lambertian(*out, children, n); /* pick ignores the method: one blend for all */
         gtexnode_inherit_no_uv(*out, children, n, t); /* reads the point only through t */
     }
     return rc;

@@ -28,6 +28,8 @@
  *   opaque-flag  for a material with GMAT_OPAQUE: its class's own opaque slot says 1 (flags.c).
  *   geometric-normal  for a material with GMAT_GEOMETRIC_NORMAL: its class's own normal slot gives the geometric
  *                normal (flags.c).
+ *   lambertian   for a material with GMAT_LAMBERTIAN: its class's own reflection is its diffuse colour times the
+ *                light times gmat_cos_in / pi over random pairs and lights, and it is not delta (flags.c).
  *   no-uv        for a material with GMAT_NO_UV: the same colours, normal and opacity with the surface's (u, v)
  *                and tangents as without them (uvflag.c).
  *   chi2, pdf integral, weight: the sampling slots (sampling.c). */
@@ -536,6 +538,7 @@ int gmat_check(GmatContext *ctx, int samples)
     gmat_check_no_emission(ctx, k.places, NPLACES, report_fn, &k);
     gmat_check_opaque_flag(ctx, k.places, NPLACES, report_fn, &k);
     gmat_check_geometric_normal(ctx, k.places, NPLACES, report_fn, &k);
+    gmat_check_lambertian(ctx, k.places, NPLACES, report_fn, &k);
     gmat_check_no_uv(ctx, k.places, NPLACES, report_fn, &k);
     gmat_check_sampling(ctx, k.places, NPLACES, 0, report_fn, &k);
     printf("%s: %s\n", ctx->material_name, k.failures ? "FAIL" : "PASS");

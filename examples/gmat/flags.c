@@ -5,9 +5,16 @@
  *                finite check's directions (a failed call counts as infinite); must be black;
  *   opaque-flag  with GMAT_OPAQUE: how many calls of the opaque slot did not say 1; must be none;
  *   geometric-normal  with GMAT_GEOMETRIC_NORMAL: the largest distance of the normal slot's vector from the
- *                geometric normal (a failed call counts as infinite); at most 1e-9 (rounding only).
+ *                geometric normal (a failed call counts as infinite); at most 1e-9 (rounding only);
+ *   lambertian   with GMAT_LAMBERTIAN: over random pairs of directions (both on the side of the geometric normal
+ *                mostly, one or both behind it else) and lights (white, and one of random samples), the class's
+ *                own reflection against its diffuse colour times the light times gmat_cos_in / pi: the largest
+ *                difference over the largest value at a place (a failed call, or an is_delta slot that does not
+ *                say 0, counts as infinite); at most 1e-5 (rounding: a blend sums its children's products).
  * Nothing to check without the bit, or without the slot (the default is then what the bit says). */
 #include "gmat.h"
+
+#include <generic/material_kit.h>
 
 #include <math.h>
 #include <stdio.h>
@@ -144,4 +151,89 @@ void gmat_check_geometric_normal(GmatContext *ctx, const GmatPlace *places, int 
              "(GMAT_GEOMETRIC_NORMAL set: largest distance of the class's own normal from the geometric one, %d calls)",
              calls);
     report(checker, "geometric-normal", worst, tol, detail);
+}
+
+/* ---- lambertian: reflection against diffuse * light * cos / pi ---- */
+
+#define LAMBERT_PAIRS 64
+#define TOL_LAMBERTIAN 1e-5
+
+/* Deterministic uniform numbers in [0, 1) (a small LCG: the same pairs on every run). */
+static double next_uniform(unsigned long long *s)
+{
+    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(*s >> 11) * (1.0 / 9007199254740992.0);
+}
+
+/* A uniformly distributed direction on the sphere, turned to the side of n unless `behind`. */
+static GVec3 sphere_direction(unsigned long long *s, GVec3 n, int behind)
+{
+    double z = 1.0 - 2.0 * next_uniform(s), p = 2.0 * M_PI * next_uniform(s), r = sqrt(fmax(0.0, 1.0 - z * z));
+    GVec3 d = gvec3(r * cos(p), r * sin(p), z);
+    return (gvec3_dot(d, n) < 0.0) != behind ? gvec3_neg(d) : d;
+}
+
+/* The largest difference between the class's own reflection and diffuse * light * gmat_cos_in / pi over
+ * LAMBERT_PAIRS random pairs at sp, over the largest value (a failed call, or is_delta not 0: infinite). */
+static double lambertian_at(GmatContext *ctx, GSurfPoint *sp, int below, int *calls)
+{
+    const GMaterial *m = ctx->material;
+    /* other pairs at each place and side, the same on every run */
+    unsigned long long seed = 0x5eedULL + (below ? 977ULL : 0ULL) + (unsigned long long)(ctx->place->u * 1000003.0);
+    if (m->cls->is_delta && m->cls->is_delta(m, sp) != 0)
+        return INFINITY;
+    GScratchMark mark = gscratch_mark(ctx->scratch);
+    GColor diffuse, light, got, want;
+    int rc = gcolor_scratch(&diffuse, ctx->model, ctx->scratch);
+    if (rc == G_OK)
+        rc = gcolor_scratch(&light, ctx->model, ctx->scratch);
+    if (rc == G_OK)
+        rc = gcolor_scratch(&got, ctx->model, ctx->scratch);
+    if (rc == G_OK)
+        rc = gcolor_scratch(&want, ctx->model, ctx->scratch);
+    if (rc == G_OK)
+        rc = gmaterial_diffuse(m, sp, &diffuse);
+    double diff = 0.0, big = 0.0;
+    for (int i = 0; i < LAMBERT_PAIRS && rc == G_OK; i++) {
+        GVec3 g = sp->geometric_normal, n;
+        GVec3 in = sphere_direction(&seed, g, i % 8 == 5 || i % 8 == 7), out = sphere_direction(&seed, g, i % 8 >= 6);
+        if (i % 2) { /* a light of random samples in [0.25, 1] */
+            for (int j = 0; j < ctx->model->nvalues; j++)
+                light.v[j] = (float)(0.25 + 0.75 * next_uniform(&seed));
+        } else {
+            rc = gcolor_copy(&light, &ctx->white);
+        }
+        double c = gmat_cos_in(sp, in, out, &n);
+        gcolor_black(&got); /* no reflection slot: black, the default */
+        if (rc == G_OK && m->cls->reflection)
+            rc = m->cls->reflection(m, sp, in, &light, out, &got);
+        if (rc == G_OK)
+            rc = gcolor_mul_scaled(&want, &diffuse, &light, c / M_PI);
+        (*calls)++;
+        for (int j = 0; rc == G_OK && j < ctx->model->nvalues; j++) {
+            double a = got.v[j], b = want.v[j];
+            diff = fmax(diff, isnan(a - b) ? INFINITY : fabs(a - b));
+            big = fmax(big, fmax(fabs(a), fabs(b)));
+        }
+    }
+    gscratch_release(ctx->scratch, mark);
+    if (rc != G_OK || !isfinite(diff))
+        return INFINITY;
+    return big > 0.0 ? diff / big : diff;
+}
+
+void gmat_check_lambertian(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
+                           void *checker)
+{
+    if (!gmaterial_lambertian(ctx->material)) {
+        report(checker, "lambertian", 0.0, TOL_LAMBERTIAN, "(GMAT_LAMBERTIAN not set: reflection is asked per light)");
+        return;
+    }
+    int calls;
+    double worst = over_places(ctx, places, nplaces, lambertian_at, 0, &calls);
+    char detail[200];
+    snprintf(detail, sizeof detail,
+             "(GMAT_LAMBERTIAN set: |reflection - diffuse * light * cos / pi| / max, %d random pairs and lights)",
+             calls);
+    report(checker, "lambertian", worst, TOL_LAMBERTIAN, detail);
 }

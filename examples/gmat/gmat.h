@@ -80,6 +80,11 @@ void gmat_check_opaque_flag(GmatContext *ctx, const GmatPlace *places, int nplac
  * geometric normal (within rounding) from its class's own normal slot at the places given, on both sides. */
 void gmat_check_geometric_normal(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
                                  void *checker);
+/** The lambertian check of `gmat check` (flags.c): a material with GMAT_LAMBERTIAN must reflect, by its class's own
+ * reflection slot, its diffuse colour times the light times gmat_cos_in / pi (relative 1e-5) over random pairs of
+ * directions and lights at the places given, on both sides, and its is_delta slot (if any) must say 0. */
+void gmat_check_lambertian(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
+                           void *checker);
 /** The no-uv check of `gmat check` (uvflag.c): a material with GMAT_NO_UV must give the same colours, normal and
  * opacity at the places given, on both sides, with the surface's parametrisation set and with it zero. */
 void gmat_check_no_uv(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report, void *checker);

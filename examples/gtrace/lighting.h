@@ -11,23 +11,37 @@
 #include <generic/vec.h>
 
 /** Scratch colours for light_shade, shared by all lights at a shading point (light shading traces no rays
- * but shadow rays, so the context's own temporaries serve every shading point), and the shadow rule of
- * sample_light. */
+ * but shadow rays, so the context's own temporaries serve every shading point), the shadow rule of
+ * sample_light, and the light gathered for a Lambertian material (light_gather). */
 typedef struct LightTmp {
     GColor illum, refl, tmp;
+    GColor gathered; /**< with `gather`: the sum of each sample's light (shadowed) times its gmat_cos_in */
     int blocked; /**< 1: a shadow ray stops at any surface (the path tracer's rule for lights that material
                   * sampling also reaches: light through glass arrives there as a caustic); 0 (light_temps'
                   * default): it passes non-opaque surfaces along the straight line */
+    int gather;  /**< 1 (light_gather): sample_light adds to `gathered` instead of asking the material per sample;
+                  * 0 (light_temps' default): it adds the material's reflection of each sample to the result */
 } LightTmp;
 /** The temporaries: the context's own (trace_tmp; from the thread's arena when it has none), not black; blocked
- * is 0. */
+ * and gather are 0. */
 int light_temps(TraceCtx *c, LightTmp *t);
+/** Starts gathering the light of the samples at sp when its material has GMAT_LAMBERTIAN (material.h): its
+ * reflection of a sample is diffuse(sp) times the light times gmat_cos_in / pi, so sample_light sums light times
+ * cosine into t->gathered and light_gather_finish reflects the sum once. Nothing for another material (each
+ * sample asks its reflection). Call it after light_temps, before the first light. */
+void light_gather(GSurfPoint *sp, LightTmp *t);
+/** Ends light_gather: adds diffuse(sp) times t->gathered / pi to result (nothing when none was gathered) and
+ * turns gathering off. A no-op without light_gather. */
+int light_gather_finish(GSurfPoint *sp, LightTmp *t, GColor *result);
 /** Adds to result the light reflected towards out_dir by sp from one light source, shadowed and absorbed
  * (Fig. 4, light.shade); opaque: the material's opaque() at sp (culls lights behind the surface). */
 int light_shade(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 out_dir,
                 int opaque, LightTmp *t, GColor *result);
 /** Adds the light of one sample (lights.c): color * scale arrives from direction `in` over dist (INFINITY
- * for distant light), reflected by the material towards out_dir and shadowed (t->blocked says how). */
+ * for distant light), reflected by the material towards out_dir and shadowed (t->blocked says how); with
+ * t->gather, the shadowed light times its cosine goes to t->gathered instead (light_gather_finish reflects it),
+ * except where the medium's absorption acts on the reflected light (a finite distance in a medium): that sample
+ * is reflected on its own. */
 int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 in, double dist,
                  const GColor *color, double scale, GVec3 out_dir, LightTmp *t, GColor *result);
 /** The power heuristic (beta 2, lights.c): the multiple-importance weight of a strategy that drew a direction

@@ -21,9 +21,18 @@
  * transmittance is T(theta)^2, T the one-interface Fresnel transmittance at the chord's angle theta.
  *
  * With LightTmp.blocked (the path tracer's sphere, rectangle and probe lights, which its material sampling
- * also reaches) a shadow ray stops at any surface: light through glass arrives there as a caustic. */
+ * also reaches) a shadow ray stops at any surface: light through glass arrives there as a caustic.
+ *
+ * Lambertian materials (GMAT_LAMBERTIAN, material.h; light_gather): the reflection of every sample is diffuse(sp)
+ * times its light times its cosine over pi, so the samples' light times cosine is summed over all lights and the
+ * material is asked once per shading point (diffuse), where it would be asked once or twice per sample. A sample
+ * whose cosine is 0 casts no shadow ray, as a black reflection does otherwise. The walk through glass changes the
+ * light before it is reflected, which the sum carries as well; the absorption of the medium the point lies in acts
+ * on the reflected light, so a sample at a finite distance in a medium is still reflected on its own. */
 #include "lighting.h"
 #include "accel.h"
+
+#include <generic/material_kit.h>
 
 #include <math.h>
 
@@ -127,37 +136,75 @@ done:
     return rc;
 }
 
-/* Adds the light of one sample: color * scale is the light's colour at the point (before shadows). */
+/* Adds the light of one sample: color * scale is the light's colour at the point (before shadows). With t->gather
+ * (a Lambertian material, light_gather) the material is not asked: the light that arrives, times cos_in, is added
+ * to t->gathered, which is what the material's reflection of it would be but for the factor diffuse(sp) / pi that
+ * light_gather_finish applies to the sum; only where the medium absorbs the reflected light is the sample
+ * reflected on its own, as without gathering. */
 int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 in, double dist,
                  const GColor *color, double scale, GVec3 out_dir, LightTmp *t, GColor *result)
 {
     const Scene *s = c->scene;
     GColor *illum = &t->illum, *refl = &t->refl, *tmp = &t->tmp;
+    double cos_in = 0.0;
     int rc;
-    if ((rc = gcolor_scale(illum, color, scale)) < 0 ||
-        (rc = gmaterial_reflection(sp->material, sp, in, illum, out_dir, refl)) < 0)
+    if ((rc = gcolor_scale(illum, color, scale)) < 0)
         return rc;
-    if (gcolor_is_black(refl))
-        return G_OK; /* nothing reflected from here: no shadow ray */
+    if (t->gather) {
+        GVec3 n;
+        cos_in = gmat_cos_in(sp, in, out_dir, &n); /* the cosine the material's reflection would use */
+        if (!(cos_in > 0.0))
+            return G_OK; /* its reflection would be black: no shadow ray */
+    } else {
+        if ((rc = gmaterial_reflection(sp->material, sp, in, illum, out_dir, refl)) < 0)
+            return rc;
+        if (gcolor_is_black(refl))
+            return G_OK; /* nothing reflected from here: no shadow ray */
+    }
     Ray sr = {offset_origin(sp->point, facing, in), in, 0.0, dist * (1.0 - 1e-7), 0.0, 0.0};
     c->rays++;
     int occluded = accel_occluded(s, &sr);
     if (occluded == OCCLUDED_CLEAR) {
         const GMaterial *medium = gvec3_dot(in, facing) >= 0.0 ? sp->from : sp->to;
-        if (medium && isfinite(dist)) {
+        if (medium && isfinite(dist)) { /* the medium absorbs the reflected light: this sample on its own */
+            if (t->gather && (rc = gmaterial_reflection(sp->material, sp, in, illum, out_dir, refl)) < 0)
+                return rc;
             if ((rc = gmaterial_absorption(medium, sp, refl, dist, tmp)) < 0 || (rc = gcolor_copy(refl, tmp)) < 0)
                 return rc;
+            return gcolor_add(result, result, refl);
         }
-        return gcolor_add(result, result, refl);
+        return t->gather ? gcolor_add_scaled(&t->gathered, illum, cos_in) : gcolor_add(result, result, refl);
     }
     if (t->blocked || occluded == OCCLUDED_OPAQUE)
         return G_OK; /* the walk below would end at that surface */
     int visible;
     if ((rc = transmit(c, sp, facing, media, in, dist, illum, &visible)) < 0 || !visible)
         return rc;
+    if (t->gather) /* the light that got through, as the material would reflect it */
+        return gcolor_add_scaled(&t->gathered, illum, cos_in);
     if ((rc = gmaterial_reflection(sp->material, sp, in, illum, out_dir, refl)) < 0)
         return rc;
     return gcolor_add(result, result, refl);
+}
+
+void light_gather(GSurfPoint *sp, LightTmp *t)
+{
+    t->gather = gmaterial_lambertian(sp->material);
+    if (t->gather)
+        gcolor_black(&t->gathered);
+}
+
+int light_gather_finish(GSurfPoint *sp, LightTmp *t, GColor *result)
+{
+    if (!t->gather)
+        return G_OK;
+    t->gather = 0;
+    if (gcolor_is_black(&t->gathered))
+        return G_OK; /* no light arrived: the material is not asked */
+    int rc = gmaterial_diffuse(sp->material, sp, &t->tmp);
+    if (rc == G_OK)
+        rc = gcolor_mul_scaled(&t->tmp, &t->tmp, &t->gathered, 1.0 / M_PI);
+    return rc == G_OK ? gcolor_add(result, result, &t->tmp) : rc;
 }
 
 static double smoothstep(double a, double b, double x)
@@ -179,8 +226,9 @@ int light_temps(TraceCtx *c, LightTmp *t)
 {
     int rc;
     t->blocked = 0;
+    t->gather = 0;
     if ((rc = trace_tmp(c, TRACE_TMP_ILLUM, &t->illum)) < 0 || (rc = trace_tmp(c, TRACE_TMP_REFL, &t->refl)) < 0 ||
-        (rc = trace_tmp(c, TRACE_TMP_LIGHT, &t->tmp)) < 0)
+        (rc = trace_tmp(c, TRACE_TMP_LIGHT, &t->tmp)) < 0 || (rc = trace_tmp(c, TRACE_TMP_GATHER, &t->gathered)) < 0)
         return rc;
     return G_OK;
 }

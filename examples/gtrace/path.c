@@ -19,7 +19,9 @@
  * material sampling, a caustic, so counting the straight transmission too would count it twice). Material
  * sampling sees sphere and rectangle lights (one-sided) when they are nearer than the surface hit; a path
  * after a delta bounce counts them fully. One light sample per light and vertex: the lights' `samples` apply
- * to the Whitted tracer; a reference probe's `shadows off` does not apply.
+ * to the Whitted tracer; a reference probe's `shadows off` does not apply. At a Lambertian material
+ * (GMAT_LAMBERTIAN) the samples' light, each with its MIS weight in it, is gathered and reflected once (lights.c's
+ * light_gather), as in the Whitted tracer.
  *
  * The environment. Camera rays and rays after a delta bounce see the background (the background colour, or
  * the background probe interpolated bilinearly). After a non-delta bounce the background probe is a light:
@@ -172,6 +174,7 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
     int rc = G_OK;
     CHECK(light_temps(c, &lt));
     CHECK(gcolor_scratch(&L, s->model, c->scratch));
+    light_gather(sp, &lt); /* a Lambertian material: asked once for all samples, MIS weights in their light */
     for (int i = 0; i < s->nlights; i++) {
         const Light *l = s->lights[i];
         lt.blocked = 0;
@@ -197,6 +200,7 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
         if (w > 0.0)
             CHECK(sample_light(c, sp, facing, media, in, dist, &L, w / pdf_l, to_viewer, &lt, out));
     }
+    CHECK(light_gather_finish(sp, &lt, out));
 done:
     gscratch_release(c->scratch, mark);
     return rc;

@@ -296,8 +296,10 @@ static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const 
     if (s->nlights > 0 && !gmaterial_is_delta(m, sp)) {
         LightTmp lt;
         CHECK(light_temps(c, &lt));
+        light_gather(sp, &lt); /* a Lambertian material: asked once for all lights (lights.c) */
         for (int i = 0; i < s->nlights; i++)
             CHECK(light_shade(c, s->lights[i], sp, facing, media, to_viewer, opaque, &lt, out));
+        CHECK(light_gather_finish(sp, &lt, out));
     }
     if (depth < c->max_depth) {
         /* ideal reflection, in the medium the ray came through */

@@ -22,7 +22,7 @@
  * ambient and absorbed light (shade.c), and what a material passes on of a secondary ray's light (shade.c's
  * trace_secondary, before and after the ray, not across it). */
 enum {
-    TRACE_TMP_ILLUM, TRACE_TMP_REFL, TRACE_TMP_LIGHT,               /* LightTmp */
+    TRACE_TMP_ILLUM, TRACE_TMP_REFL, TRACE_TMP_LIGHT, TRACE_TMP_GATHER, /* LightTmp */
     TRACE_TMP_WALK, TRACE_TMP_WALK_RI, TRACE_TMP_WALK_NF, TRACE_TMP_WALK_NT, /* transmit */
     TRACE_TMP_N_FROM, TRACE_TMP_N_TO,                             /* trace_relative_index */
     TRACE_TMP_SHADE, TRACE_TMP_PASS,                              /* shade, trace_secondary */

@@ -90,6 +90,18 @@ enum {
      * is always safe. A bit added in the existing flags field, which gmaterial_init fills for plug-ins built
      * against version 4 as well: the interface version did not change for it. */
     GMAT_GEOMETRIC_NORMAL = 4u,
+    /** The material is Lambertian: at every point and for every pair of directions, reflection(sp, in, illum, out)
+     * is diffuse(sp) times illum times gmat_cos_in(sp, in, out, &n) / pi (material_kit.h: the cosine of in with the
+     * point's shading normal, 0 when in or out is below the geometric normal), and is_delta is 0. A renderer may
+     * then sum the light of all its light samples, each times its cosine, and ask the material once: diffuse(sp)
+     * times that sum over pi, where it would ask reflection() once per sample; gmaterial_is_delta answers 0
+     * without calling the class. gmaterial_init cannot tell it from missing slots and never sets it: a class sets
+     * it after gmaterial_init on the instances it holds for (lambert); the node kit sets it on a blend node whose
+     * pick gives the same blend for reflection as for diffuse when every child has it (node_kit.h). The same rules
+     * as for GMAT_NO_EMISSION: set only when it is true (`gmat check`'s lambertian property), clearing it is always
+     * safe. A bit added in the existing flags field like GMAT_GEOMETRIC_NORMAL: the interface version did not
+     * change for it, and a plug-in built before it simply never has it. */
+    GMAT_LAMBERTIAN = 8u,
     /** No method reads the surface's parametrisation: u, v, dpdu, dpdv, object_dpdu, object_dpdv, uv_footprint,
      * uv_axis1 and uv_axis2 (the point, the normals, the footprint, t and the surface index are read as ever). A
      * renderer may then leave those fields zero, as gsurfpoint_init sets them, and save their computation (a
@@ -196,6 +208,10 @@ GENERIC_API GENERIC_NODISCARD int gmaterial_opaque(const GMaterial *m, GSurfPoin
  * may then let any surface of m block a shadow ray without filling a surface point. 0 when it may let light
  * through somewhere (or cannot tell); NULL (vacuum) lets light through. */
 GENERIC_API int gmaterial_opaque_everywhere(const GMaterial *m);
+/** 1 when m has GMAT_LAMBERTIAN: its reflection of any light is diffuse(sp) times the light times
+ * gmat_cos_in / pi, so the light of several samples may be summed (each times its cosine) and reflected at once.
+ * 0 when it may not be (or cannot tell); NULL (vacuum) reflects nothing and is not. */
+GENERIC_API int gmaterial_lambertian(const GMaterial *m);
 
 /** Draws a direction for light leaving towards out (see the top of this file): 1 drawn, 0 none, or a status.
  * weight must have storage of m's model; m == NULL (vacuum) draws nothing. */
@@ -203,7 +219,8 @@ GENERIC_API GENERIC_NODISCARD int gmaterial_sample(const GMaterial *m, GSurfPoin
                                                    double u1, double u2, GMaterialSample *s, GColor *weight);
 /** The density with which gmaterial_sample draws in for out (non-delta lobes; 0 for m == NULL). */
 GENERIC_API double gmaterial_pdf(const GMaterial *m, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index);
-/** 1 when every lobe of m at sp is ideal (mirror, clear glass): light samples would reflect nothing. */
+/** 1 when every lobe of m at sp is ideal (mirror, clear glass): light samples would reflect nothing. 0 without a
+ * call to the class when m has GMAT_LAMBERTIAN. */
 GENERIC_API GENERIC_NODISCARD int gmaterial_is_delta(const GMaterial *m, GSurfPoint *sp);
 
 /* ---- helpers for material implementations (lib/optics.c) ---- */

@@ -91,6 +91,22 @@ GENERIC_API void gtexnode_inherit_geometric_normal(GMaterial *node, GMaterial *c
  * other slot. gtexnode_new_checked calls it. */
 GENERIC_API void gtexnode_inherit_kit_normal(GMaterial *node, GMaterial *const *children, int n);
 
+/** 1 when each of the n children has GMAT_LAMBERTIAN (material.h): a node whose reflection is the sum of its
+ * children's reflections at the same point with weights w_i, and whose diffuse colour the sum of their diffuse
+ * colours with the same w_i, is then Lambertian: sum w_i diffuse_i * illum * cos / pi, the cosine being the same
+ * for every child (gmat_cos_in reads the shading normal cached on the point, which the kit's nodes hand on
+ * unchanged, and the geometric normal, which none moves). */
+GENERIC_API GENERIC_NODISCARD int gtexnode_children_lambertian(GMaterial *const *children, int n);
+
+/** Sets GMAT_LAMBERTIAN on node when gtexnode_children_lambertian(children, n) and node's class is a GTexBlendClass
+ * with the kit's reflection and diffuse slots (gtexblendnode_reflection, gtexblendnode_diffuse): for a blend class
+ * whose pick gives the same blend for GNODE_REFLECTION as for GNODE_DIFFUSE at every point, which only the class
+ * knows, so gtexnode_new_checked never sets the bit: the class calls this after construction (interpolate, spline
+ * and select, whose picks ignore the method; interpolate-one unless its one blended method is reflection or
+ * diffuse). Never for a pick that answers the two methods differently: a wrong bit renders the diffuse blend where
+ * the reflection blend belongs. One-child nodes (bump, scale, image, transform) do not get it. */
+GENERIC_API void gtexnode_inherit_lambertian(GMaterial *node, GMaterial *const *children, int n);
+
 /** 1 when each of the n children has GMAT_NO_UV (material.h) and gen, when given, is not a function of (u, v)
  * (its space, texture.h, is not GGENERATOR_SPACE_UV: a generator's space says what its value reads). */
 GENERIC_API GENERIC_NODISCARD int gtexnode_children_no_uv(GMaterial *const *children, int n, const GGenerator *gen);

@@ -1,9 +1,11 @@
-/* node_flags.c - the node kit's GMAT_NO_EMISSION, GMAT_OPAQUE, GMAT_GEOMETRIC_NORMAL and GMAT_NO_UV
- * (generic/node_kit.h): a node whose emission only combines its children's emits nothing when none of them does,
- * one whose opacity is its children's is opaque everywhere when each of them is, one whose normal blends its
- * children's keeps the geometric normal when each of them does, so the dispatch answers it without a call; and
- * one that reads the point only through a generator not in (u, v) space, over children that never read (u, v),
- * lets the renderer skip the parametrisation. */
+/* node_flags.c - the node kit's GMAT_NO_EMISSION, GMAT_OPAQUE, GMAT_GEOMETRIC_NORMAL, GMAT_LAMBERTIAN and
+ * GMAT_NO_UV (generic/node_kit.h): a node whose emission only combines its children's emits nothing when none of
+ * them does, one whose opacity is its children's is opaque everywhere when each of them is, one whose normal blends
+ * its children's keeps the geometric normal when each of them does, so the dispatch answers it without a call; a
+ * blend whose reflection and diffuse colour are the same blend of its children's is Lambertian when each of them
+ * is, so a renderer reflects the light of all its samples at once; and one that reads the point only through a
+ * generator not in (u, v) space, over children that never read (u, v), lets the renderer skip the
+ * parametrisation. */
 #include "generic/node_kit.h"
 #include "generic/texture.h"
 
@@ -49,6 +51,18 @@ void gtexnode_inherit_kit_normal(GMaterial *node, GMaterial *const *children, in
 {
     if (node && (node->cls->normal == gtexblendnode_normal || node->cls->normal == gtexchild_normal))
         gtexnode_inherit_geometric_normal(node, children, n);
+}
+
+int gtexnode_children_lambertian(GMaterial *const *children, int n)
+{
+    return children_all(children, n, GMAT_LAMBERTIAN);
+}
+
+void gtexnode_inherit_lambertian(GMaterial *node, GMaterial *const *children, int n)
+{
+    if (node && node->cls->reflection == gtexblendnode_reflection && node->cls->diffuse == gtexblendnode_diffuse &&
+        gtexnode_children_lambertian(children, n))
+        node->flags |= GMAT_LAMBERTIAN;
 }
 
 int gtexnode_children_no_uv(GMaterial *const *children, int n, const GGenerator *gen)

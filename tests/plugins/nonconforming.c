@@ -16,6 +16,9 @@
  *   -DMISNORMAL  material "misnormal_lambert": a Lambertian of albedo 0.5 whose normal slot tilts the normal 30
  *                degrees (as a bump would) while its instances set GMAT_GEOMETRIC_NORMAL, so renderers never see
  *                the tilt: only the geometric-normal check sees it;
+ *   -DMISDIFFUSE material "misdiffuse_lambert": a Lambertian of albedo 0.5 whose diffuse slot says 0.8 while its
+ *                instances set GMAT_LAMBERTIAN, so a renderer that reflects its lights through diffuse() shows it
+ *                0.8 bright: only the lambertian check sees it;
  *   -DMISUV      material "misuv_lambert": a Lambertian whose albedo is 0.25 + 0.5 u (it reads the surface's u)
  *                while its instances set GMAT_NO_UV, so renderers give it u = 0: only the no-uv check sees it;
  *   -DBAD_BANDS  colour model "bad_bands": the same grey model with a correct add and two wavelength bands whose
@@ -30,7 +33,7 @@
 GENERIC_MODULE_EXPORT const int generic_module_abi = GMODULE_ABI_VERSION;
 
 #if defined(GAIN) || defined(SKEWED) || defined(MISDRAWN) || defined(MISFLAGGED) || defined(MISOPAQUE) ||              \
-    defined(MISNORMAL) || defined(MISUV)
+    defined(MISNORMAL) || defined(MISDIFFUSE) || defined(MISUV)
 typedef struct Flat {
     GMaterial base;
 } Flat;
@@ -51,7 +54,7 @@ static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, cons
     double f = 1.5 / M_PI;
 #elif defined(MISDRAWN)
     double f = 0.8 / M_PI;
-#elif defined(MISFLAGGED) || defined(MISOPAQUE) || defined(MISNORMAL)
+#elif defined(MISFLAGGED) || defined(MISOPAQUE) || defined(MISNORMAL) || defined(MISDIFFUSE)
     double f = 0.5 / M_PI;
 #elif defined(MISUV)
     double f = (0.25 + 0.5 * fmin(1.0, fmax(0.0, sp->u))) / M_PI; /* reads u: GMAT_NO_UV is wrong */
@@ -71,6 +74,8 @@ static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, cons
 #define FLAT_NAME "misopaque_lambert"
 #elif defined(MISNORMAL)
 #define FLAT_NAME "misnormal_lambert"
+#elif defined(MISDIFFUSE)
+#define FLAT_NAME "misdiffuse_lambert"
 #elif defined(MISUV)
 #define FLAT_NAME "misuv_lambert"
 #else
@@ -134,6 +139,16 @@ static int flat_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
 }
 #endif
 
+#ifdef MISDIFFUSE
+/* A diffuse colour brighter than the reflection's 0.5; the instances are flagged GMAT_LAMBERTIAN all the same (the
+ * error). */
+static int flat_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
+{
+    (void)self, (void)sp;
+    return gcolor_fill(result, 0.8);
+}
+#endif
+
 static const GMaterialClass flat_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = FLAT_NAME,
@@ -152,6 +167,9 @@ static const GMaterialClass flat_class = {
 #endif
 #ifdef MISNORMAL
     .normal = flat_normal,
+#endif
+#ifdef MISDIFFUSE
+    .diffuse = flat_diffuse,
 #endif
 };
 
@@ -180,6 +198,9 @@ static int parse_flat(GReader *r, const void *vtable, void **object, GError *err
 #endif
 #ifdef MISNORMAL
     m->base.flags |= GMAT_GEOMETRIC_NORMAL; /* the deliberate error: the class's normal slot tilts the normal */
+#endif
+#ifdef MISDIFFUSE
+    m->base.flags |= GMAT_LAMBERTIAN; /* the deliberate error: reflection is 0.5 / pi, diffuse says 0.8 */
 #endif
 #ifdef MISUV
     m->base.flags |= GMAT_NO_UV; /* the deliberate error: the class's reflection reads u */

@@ -17,8 +17,9 @@
 #   - the modules of tests/plugins/nonconforming.c must be reported as failing, naming the broken property
 #     (misdrawn_lambert: chi2 alone; misflagged_lambert, whose glow a wrong GMAT_NO_EMISSION hides: no-emission
 #     alone; misopaque_lambert, whose transparency a wrong GMAT_OPAQUE hides: opaque-flag alone; misnormal_lambert,
-#     whose tilted normal a wrong GMAT_GEOMETRIC_NORMAL hides: geometric-normal alone; misuv_lambert, whose albedo
-#     follows u, which a wrong GMAT_NO_UV hides: no-uv alone),
+#     whose tilted normal a wrong GMAT_GEOMETRIC_NORMAL hides: geometric-normal alone; misdiffuse_lambert, whose
+#     diffuse colour a wrong GMAT_LAMBERTIAN puts in place of its reflection: lambertian alone;
+#     misuv_lambert, whose albedo follows u, which a wrong GMAT_NO_UV hides: no-uv alone),
 #     and the example modules (examples/plugins/) must pass.
 SRC=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=$(cd "${1:-build}" 2> /dev/null && pwd) || { echo "FAIL: no build directory ${1:-build}"; exit 1; }
@@ -143,6 +144,7 @@ echo "material m misdrawn_lambert" > "$TMP/misdrawn.mat"
 echo "material m misflagged_lambert" > "$TMP/misflagged.mat"
 echo "material m misopaque_lambert" > "$TMP/misopaque.mat"
 echo "material m misnormal_lambert" > "$TMP/misnormal.mat"
+echo "material m misdiffuse_lambert" > "$TMP/misdiffuse.mat"
 echo "material m misuv_lambert" > "$TMP/misuv.mat"
 expect_fail "gain_lambert (albedo 1.5)" albedo "$GMAT" check "$TMP/gain.mat" m --plugin "$PLUGINS/gain.so"
 expect_fail "skewed_lambert (not reciprocal)" reciprocity "$GMAT" check "$TMP/skewed.mat" m --plugin "$PLUGINS/skewed.so"
@@ -153,6 +155,8 @@ expect_fail "misopaque_lambert (GMAT_OPAQUE on a transparent slot)" opaque-flag 
     --plugin "$PLUGINS/misopaque.so"
 expect_fail "misnormal_lambert (GMAT_GEOMETRIC_NORMAL on a tilted normal)" geometric-normal "$GMAT" check \
     "$TMP/misnormal.mat" m --plugin "$PLUGINS/misnormal.so"
+expect_fail "misdiffuse_lambert (GMAT_LAMBERTIAN on a diffuse colour that is not the reflection's)" lambertian \
+    "$GMAT" check "$TMP/misdiffuse.mat" m --plugin "$PLUGINS/misdiffuse.so"
 expect_fail "misuv_lambert (GMAT_NO_UV on a reflection that reads u)" no-uv "$GMAT" check "$TMP/misuv.mat" m \
     --plugin "$PLUGINS/misuv.so"
 expect_fail "bad_add (wrong add)" "a + black = a" "$GCOLOR" check bad_add --plugin "$PLUGINS/bad_add.so"
