@@ -300,6 +300,11 @@ static void test_no_uv_fields(void **state)
         assert_true(full.entering == bare.entering && full.material == bare.material);
         assert_true(full.from == bare.from && full.to == bare.to);
         assert_true(gvec3_length(full.dpdu) > 0.0 && gvec3_length(full.dpdv) > 0.0 && full.uv_footprint > 0.0);
+        /* object-space tangents for a transformed object; zero (which means dpdu, dpdv) for the others */
+        if (h.obj->has_xf)
+            assert_true(gvec3_length(full.object_dpdu) > 0.0 && gvec3_length(full.object_dpdv) > 0.0);
+        else
+            assert_true(gvec3_length(full.object_dpdu) == 0.0 && gvec3_length(full.object_dpdv) == 0.0);
         const GVec3 *zero[] = {&bare.dpdu, &bare.dpdv, &bare.object_dpdu, &bare.object_dpdv};
         for (int i = 0; i < 4; i++)
             assert_true(zero[i]->x == 0.0 && zero[i]->y == 0.0 && zero[i]->z == 0.0);

@@ -31,7 +31,9 @@ typedef struct Hit {
  * normal from mesh normals (equal to the outward normal otherwise), tangents, parameters. */
 typedef struct HitGeom {
     GVec3 p, op, n_out, n_smooth, dpdu, dpdv;
-    GVec3 odpdu, odpdv; /**< tangents in object space */
+    GVec3 odpdu, odpdv; /**< tangents in object space, set only with object_tangents */
+    int object_tangents; /**< 1 when the object's space is not world space (a transform, an instance): odpdu and
+                              odpdv are then the tangents there; 0: they equal dpdu and dpdv and are not set */
     double u, v;
     int surface;
     int want_uv; /**< set by hit_geom: 0 when (u, v) and the tangents are not wanted (GMAT_NO_UV) and may be left
@@ -123,14 +125,15 @@ void mesh_hit_geom(const Object *o, const Ray *r, const Hit *h, HitGeom *g);
 void hit_geom_transform(const Object *o, HitGeom *g);
 
 /** Brings g from the object's space to world space in place: g->op, n_out, n_smooth, dpdu and dpdv hold the
- * object-space point, outward normal, shading normal and tangents; sets g->p, keeps the tangents in odpdu and odpdv
- * and turns the normals and (when g->want_uv) the tangents to world space; u, v and the surface are the caller's.
- * Inline: called, it reloaded the vectors its caller had just stored (a store-forwarding stall, 2.5% of the
- * samples of bench-pov's render). */
+ * object-space point, outward normal, shading normal and tangents; sets g->p and, for a transformed object, keeps
+ * the tangents in odpdu and odpdv (object_tangents) and turns the normals and (when g->want_uv) the tangents to
+ * world space; u, v and the surface are the caller's. Inline: called, it reloaded the vectors its caller had just
+ * stored (a store-forwarding stall, 2.5% of the samples of bench-pov's render); and an untransformed object's
+ * tangents are not copied to odpdu, for the same reason (surface points leave object_dpdu zero for them, which
+ * surfpoint.h defines as equal to dpdu). */
 static inline void hit_geom_to_world(const Object *o, HitGeom *g)
 {
-    g->odpdu = g->dpdu;
-    g->odpdv = g->dpdv;
+    g->object_tangents = o->has_xf;
     if (o->has_xf)
         hit_geom_transform(o, g);
     else

@@ -140,8 +140,10 @@ void surfpoint_fill(TraceCtx *c, const Ray *r, const Hit *h, const Media *media,
     if (want_uv) {
         sp->dpdu = g.dpdu;
         sp->dpdv = g.dpdv;
-        sp->object_dpdu = g.odpdu;
-        sp->object_dpdv = g.odpdv;
+        if (g.object_tangents) { /* else zero, which means dpdu and dpdv (surfpoint.h) */
+            sp->object_dpdu = g.odpdu;
+            sp->object_dpdv = g.odpdv;
+        }
         sp->u = g.u;
         sp->v = g.v;
         double area = gvec3_length(gvec3_cross(g.dpdu, g.dpdv));

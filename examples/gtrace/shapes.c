@@ -343,6 +343,8 @@ static void local_geom(const Object *o, int surface, int want_uv, GVec3 *p, GVec
 
 void hit_geom_transform(const Object *o, HitGeom *g)
 {
+    g->odpdu = g->dpdu;
+    g->odpdv = g->dpdv;
     g->p = xform_point(&o->xf, g->op);
     g->n_out = gvec3_normalize(xform_normal(&o->xf, g->n_out));
     g->n_smooth = gvec3_normalize(xform_normal(&o->xf, g->n_smooth));
@@ -399,6 +401,11 @@ void hit_geom(const Ray *r, const Hit *h, int want_uv, HitGeom *g)
     else
         shape_hit_geom(h->obj, &pr, h, g);
     if (in) {
+        if (!g->object_tangents) { /* the prototype's space is the object's */
+            g->odpdu = g->dpdu;
+            g->odpdv = g->dpdv;
+            g->object_tangents = 1;
+        }
         g->p = xform_point(&in->xf, g->p);
         g->n_out = gvec3_normalize(xform_normal(&in->xf, g->n_out));
         g->n_smooth = gvec3_normalize(xform_normal(&in->xf, g->n_smooth));
