@@ -2,49 +2,20 @@
  * vectors of models that the library reads as plain samples (their class has no fill of its own, as lib/color.c's
  * defaults decide): gcolor_is_black (brightness == 0) and gcolor_mul_scaled (mul, then scale). Other models and
  * matrices take the composition itself. Two bodies as in lib/color.c: on 4-float vectors and, compiled for
- * AVX2, on 8-float vectors, with the same results. */
+ * AVX2, on 8-float vectors (whole blocks as straight-line code, GSPECTRAL_EACH_BLOCK8 of spectral_kernels8.h),
+ * with the same results. */
 #include "generic/color.h"
 #include "generic/spectral_kernels.h"
 
 #include <stdint.h>
 #include <string.h>
 
-/* One case of EACH_BLOCK8's jump: block k - 1, then on to the block before. */
-#define BLOCK_CASE(k, BLOCK)                                                                                   \
-    case k:                                                                                                    \
-        BLOCK(((k) - 1) * 8);                                                                                  \
-        __attribute__((fallthrough));
-
-/* Runs BLOCK(i) (a macro) once for each whole 8-float block of n samples, i = 0, 8, 16, ..., in no particular
- * order: for kernels whose blocks do not depend on each other. Up to 16 blocks are straight-line code entered by
- * one jump (on a spectrum of tens of samples a loop spent a third of a kernel's instructions on its control);
- * blocks past the 16th go through a loop first. */
-#define EACH_BLOCK8(n, BLOCK)                                                                                  \
-    do {                                                                                                       \
-        int nb_ = (n) >> 3;                                                                                    \
-        for (; nb_ > 16; nb_--)                                                                                \
-            BLOCK((nb_ - 1) * 8);                                                                              \
-        if (nb_ <= 1) { /* none or one: no jump */                                                             \
-            if (nb_)                                                                                           \
-                BLOCK(0);                                                                                      \
-            break;                                                                                             \
-        }                                                                                                      \
-        switch (nb_) {                                                                                         \
-            BLOCK_CASE(16, BLOCK) BLOCK_CASE(15, BLOCK) BLOCK_CASE(14, BLOCK) BLOCK_CASE(13, BLOCK)            \
-            BLOCK_CASE(12, BLOCK) BLOCK_CASE(11, BLOCK) BLOCK_CASE(10, BLOCK) BLOCK_CASE(9, BLOCK)             \
-            BLOCK_CASE(8, BLOCK) BLOCK_CASE(7, BLOCK) BLOCK_CASE(6, BLOCK) BLOCK_CASE(5, BLOCK)                \
-            BLOCK_CASE(4, BLOCK) BLOCK_CASE(3, BLOCK) BLOCK_CASE(2, BLOCK) BLOCK_CASE(1, BLOCK)                \
-        default:                                                                                               \
-            break;                                                                                             \
-        }                                                                                                      \
-    } while (0)
-
 /* 1 when the model's class leaves fill to the library, which then reads its vectors as nvalues plain samples. */
 static int plain_samples(const GColorModel *m) { return m->cls->fill == NULL; }
 
 /* gcolor_is_black's test of a vector read as plain samples: 1 when the n floats at v are all zero (+0 or -0; a
  * NaN is not), by their bits less the sign: sixteen floats at a time, stopping at the first group that holds a
- * non-zero one (the AVX2 body ORs all whole 8-float blocks, then tests). */
+ * non-zero one (the AVX2 body ORs all its 8-float blocks, then tests). */
 static int all_zero(const float *v, int n);
 
 /* The floats from i on, one at a time (the tail of all_zero, and short vectors). */
@@ -131,26 +102,30 @@ int gcolor_mul_scaled(GColor *out, const GColor *a, const GColor *b, double s)
 }
 
 #ifdef GSPECTRAL_AVX2
+/* n >= 8 (gcolor_is_black takes shorter vectors to all_zero_from) */
 static GSPECTRAL_TARGET_AVX2 int all_zero_v8(const float *v, int n)
 {
-    /* the whole blocks' bits ORed together and tested once: straight-line code costs less than a test per group */
-    __m256i acc = _mm256_setzero_si256();
-#define ALL_ZERO_BLOCK(i) acc = _mm256_or_si256(acc, _mm256_loadu_si256((const __m256i *)(v + (i))))
-    EACH_BLOCK8(n, ALL_ZERO_BLOCK);
+    /* the whole blocks' bits and those of the block ending at the last float (it may overlap the one before) ORed
+     * together and tested once: straight-line code costs less than a test per group */
+    __m256i acc = _mm256_loadu_si256((const __m256i *)(v + n - 8));
+#define ALL_ZERO_BLOCK(i, k) acc = _mm256_or_si256(acc, _mm256_loadu_si256((const __m256i *)(v + (i) + (k))))
+    GSPECTRAL_EACH_BLOCK8(n, ALL_ZERO_BLOCK);
 #undef ALL_ZERO_BLOCK
-    if (!_mm256_testz_si256(acc, _mm256_set1_epi32(0x7fffffff)))
-        return 0;
-    return all_zero_from(v, n & ~7, n);
+    return _mm256_testz_si256(acc, _mm256_set1_epi32(0x7fffffff));
 }
 
+/* n >= 8 (gcolor_mul_scaled takes shorter vectors to mul_scaled_from) */
 static GSPECTRAL_TARGET_AVX2 void mul_scaled_v8(float *out, const float *a, const float *b, float s, int n)
 {
     const gspectral_v8 sv = {s, s, s, s, s, s, s, s};
-    /* out may be a or b: each block is loaded before it is stored */
-#define MUL_SCALED_BLOCK(i) gspectral_vstore8(out + (i), gspectral_vload8(a + (i)) * gspectral_vload8(b + (i)) * sv)
-    EACH_BLOCK8(n, MUL_SCALED_BLOCK);
+    /* out may be a or b: the block ending at the last sample is computed before any store and stored after the
+     * whole blocks (over samples they wrote, with the same values), and each block is loaded before it is stored */
+    const gspectral_v8 last = gspectral_vload8(a + n - 8) * gspectral_vload8(b + n - 8) * sv;
+#define MUL_SCALED_BLOCK(i, k)                                                                                 \
+    gspectral_vstore8(out + (i) + (k), gspectral_vload8(a + (i) + (k)) * gspectral_vload8(b + (i) + (k)) * sv)
+    GSPECTRAL_EACH_BLOCK8(n, MUL_SCALED_BLOCK);
 #undef MUL_SCALED_BLOCK
-    mul_scaled_from(out, a, b, s, n & ~7, n);
+    gspectral_vstore8(out + n - 8, last);
 }
 
 GSPECTRAL_PICK(all_zero);
