@@ -256,6 +256,158 @@ static void test_direct_untraceable(void **state)
     scene_destroy(s);
 }
 
+/* A sphere's t in (tmin, tmax) by the quadratic and nothing else (shape_solve_quadratic, shape_pick): the reference
+ * for shape_hit_sphere's early miss (INFINITY: none). */
+static double ref_sphere(const Object *o, GVec3 ro, GVec3 rd, double tmin, double tmax)
+{
+    GVec3 oc = gvec3_sub(ro, o->center);
+    double t0, t1, t;
+    if (!shape_solve_quadratic(gvec3_dot(rd, rd), gvec3_dot(oc, rd), gvec3_dot(oc, oc) - o->radius * o->radius, &t0,
+                               &t1))
+        return INFINITY;
+    return shape_pick(t0, t1, tmin, tmax, &t) ? t : INFINITY;
+}
+
+/* A plane's t in (tmin, tmax) by the division and nothing else: the reference for shape_hit_plane's early miss. */
+static double ref_plane(const Object *o, GVec3 ro, GVec3 rd, double tmin, double tmax)
+{
+    double dn = gvec3_dot(rd, o->normal);
+    if (dn == 0.0)
+        return INFINITY;
+    double th = gvec3_dot(gvec3_sub(o->center, ro), o->normal) / dn;
+    if (!(th > tmin && th < tmax))
+        return INFINITY;
+    GVec3 d = gvec3_sub(gvec3_madd(ro, rd, th), o->center);
+    if (fabs(gvec3_dot(d, o->t1)) > SHAPE_PLANE_EXTENT || fabs(gvec3_dot(d, o->t2)) > SHAPE_PLANE_EXTENT)
+        return INFINITY;
+    return th;
+}
+
+/* The same double, a NaN equal to a NaN. */
+static int same_bits(double a, double b) { return memcmp(&a, &b, sizeof a) == 0; }
+
+/* A ray at o of the kinds where an early miss could differ from the arithmetic: from a point of its surface (and
+ * just off it, both sides) outward, inward, along it (grazing) or anywhere; from the centre, from afar; with zero,
+ * tiny, huge, infinite and NaN components. */
+static void edge_ray(const Object *o, Rng *g, GVec3 *ro, GVec3 *rd)
+{
+    GVec3 n = o->kind == SHAPE_SPHERE ? unit(g) : o->normal;
+    double rad = o->kind == SHAPE_SPHERE ? o->radius : 0.0;
+    GVec3 tang = gvec3_normalize(gvec3_cross(n, fabs(n.x) < 0.9 ? gvec3(1, 0, 0) : gvec3(0, 1, 0)));
+    if (o->kind == SHAPE_PLANE)
+        tang = gvec3_madd(gvec3_scale(o->t1, uni(g, -1, 1)), o->t2, uni(g, -1, 1));
+    const double offs[] = {0.0, 0.0, 1e-12, -1e-12, 1e-300, -1e-300, 1e-7, -1e-7, 1.0, -0.5};
+    *ro = gvec3_madd(gvec3_madd(o->center, tang, o->kind == SHAPE_PLANE ? uni(g, -5, 5) : 0.0), n,
+                     rad + offs[(int)(rng_next(g) * 10)]);
+    switch ((int)(rng_next(g) * 6)) {
+    case 0: *rd = n; break;
+    case 1: *rd = gvec3_scale(n, -1.0); break;
+    case 2: *rd = gvec3_normalize(gvec3_madd(tang, n, uni(g, -1e-9, 1e-9))); break; /* grazing */
+    case 3: *rd = tang; break;
+    default: *rd = unit(g); break;
+    }
+    if (rng_next(g) < 0.1)
+        *ro = o->center;
+    if (rng_next(g) < 0.1)
+        *ro = gvec3_madd(o->center, unit(g), uni(g, 1e3, 1e15));
+    if (rng_next(g) < 0.2) {
+        const double odd[] = {0.0, -0.0, 1e-310, -1e-310, 1e300, -1e300, INFINITY, -INFINITY, NAN, 1e18};
+        double v = odd[(int)(rng_next(g) * 10)];
+        double *c = (int)(rng_next(g) * 2) ? (double *)rd : (double *)ro;
+        c[(int)(rng_next(g) * 3)] = v;
+    }
+    if (rng_next(g) < 0.1)
+        *rd = gvec3_scale(*rd, rng_next(g) < 0.5 ? 1e-160 : 1e150);
+}
+
+/* shape_hit_sphere and shape_hit_plane miss early (no square root, no division) only where the arithmetic misses
+ * too: for any ray, tmin >= 0 and tmax (infinite, finite, NaN), the same answer and the same t, bit for bit, as
+ * the quadratic and the division alone. */
+static void test_direct_early_miss(void **state)
+{
+    (void)state;
+    Rng g;
+    rng_seed(&g, 20261202u, 11u);
+    Scene *s = new_scene("rgb", gvec3(0, 0, 10), gvec3(0, 0, 0), 40.0);
+    Object *sp = add_sphere(s, lambert(s, 0.5), gvec3(0.3, -0.2, 0.1), 0.7);
+    Object *pl = add_plane(s, lambert(s, 0.5), gvec3(0.2, -1, 0.3), gvec3(0, 1, 0));
+    Object *tilted = add_plane(s, lambert(s, 0.5), gvec3(0.1, 0.2, -2), gvec3_normalize(gvec3(1, 2, 3)));
+    const Object *shapes[] = {sp, pl, tilted};
+    const double tmins[] = {0.0, 1e-4, 1e-12, 5e-324, 2.0};
+    const double tmaxs[] = {INFINITY, 1e30, 3.0, 1e-6, NAN, 0.0};
+    long hits = 0, early = 0;
+    for (int i = 0; i < 300000; i++) {
+        const Object *o = shapes[i % 3];
+        GVec3 ro, rd;
+        edge_ray(o, &g, &ro, &rd);
+        double tmin = tmins[(int)(rng_next(&g) * 5)], tmax = tmaxs[(int)(rng_next(&g) * 6)];
+        double t = -1.0, want;
+        int hit;
+        if (o->kind == SHAPE_SPHERE) {
+            hit = shape_hit_sphere(o, ro, rd, tmin, tmax, &t);
+            want = ref_sphere(o, ro, rd, tmin, tmax);
+            GVec3 oc = gvec3_sub(ro, o->center);
+            early += gvec3_dot(oc, rd) > 0.0 && gvec3_dot(oc, oc) - o->radius * o->radius >= 0.0;
+        } else {
+            hit = shape_hit_plane(o, ro, rd, tmin, tmax, &t);
+            want = ref_plane(o, ro, rd, tmin, tmax);
+        }
+        if (hit != (want != INFINITY) || (hit && !same_bits(t, want)))
+            fail_msg("ray %d (%s): o <%.17g %.17g %.17g> d <%.17g %.17g %.17g> (%g, %g): hit %d t %.17g, want %.17g", i,
+                     o->kind == SHAPE_SPHERE ? "sphere" : "plane", ro.x, ro.y, ro.z, rd.x, rd.y, rd.z, tmin, tmax, hit,
+                     t, want);
+        hits += hit;
+    }
+    print_message("%ld hits, %ld early sphere misses\n", hits, early);
+    assert_true(hits > 20000 && early > 20000);
+    scene_destroy(s);
+}
+
+/* Rays from a sphere's or a plane's surface (and just off it), grazing ones, rays along an axis, tmax infinite,
+ * large and short, through the direct list of one shape: the hit and its t bit for bit, and the occlusion, as the
+ * quadratic and the division alone give them. */
+static void test_direct_surface_rays(void **state)
+{
+    (void)state;
+    Rng g;
+    rng_seed(&g, 20261202u, 13u);
+    for (int kind = 0; kind < 2; kind++) {
+        Scene *s = new_scene("rgb", gvec3(0, 0, 10), gvec3(0, 0, 0), 40.0);
+        Object *o = kind == 0 ? add_sphere(s, lambert(s, 0.5), gvec3(0.3, -0.2, 0.1), 0.7)
+                              : add_plane(s, lambert(s, 0.5), gvec3(0.2, -1, 0.3), gvec3(0, 1, 0));
+        GError err;
+        assert_int_equal(accel_build(s, &err), G_OK);
+        assert_int_equal(accel_uses_direct(s), 1);
+        long hits = 0;
+        for (int i = 0; i < 100000; i++) {
+            GVec3 ro, rd;
+            edge_ray(o, &g, &ro, &rd);
+            if (!(fabs(ro.x) + fabs(ro.y) + fabs(ro.z) < 100.0 && gvec3_length(rd) > 1e-3 && gvec3_length(rd) < 1e3))
+                continue; /* near the shape (its box is met wherever it is), traceable */
+            if (rng_next(&g) < 0.1) {
+                int axis = (int)(rng_next(&g) * 3);
+                rd = gvec3(axis == 0 ? 1.0 : 0.0, axis == 1 ? -1.0 : 0.0, axis == 2 ? 1.0 : 0.0);
+            }
+            double u = rng_next(&g);
+            Ray r = {ro, rd, rng_next(&g) < 0.5 ? 0.0 : 1e-4, u < 0.4 ? INFINITY : u < 0.5 ? 1e30 : uni(&g, 0, 3), 0.0,
+                     0.0};
+            double tmax = r.tmax < 3.0e38 ? r.tmax : INFINITY;
+            double want = kind == 0 ? ref_sphere(o, ro, rd, r.tmin, tmax) : ref_plane(o, ro, rd, r.tmin, tmax);
+            Hit h;
+            int hit = accel_intersect(s, &r, &h);
+            if (hit != (want != INFINITY) || (hit && !same_bits(h.t, want)))
+                fail_msg("%s ray %d: hit %d t %.17g, want %.17g", kind == 0 ? "sphere" : "plane", i, hit, hit ? h.t : 0.0,
+                         want);
+            double wocc = kind == 0 ? ref_sphere(o, ro, rd, r.tmin, r.tmax) : ref_plane(o, ro, rd, r.tmin, r.tmax);
+            assert_int_equal(accel_occluded(s, &r), wocc != INFINITY ? OCCLUDED_OPAQUE : OCCLUDED_CLEAR);
+            hits += hit;
+        }
+        print_message("%s: %ld hits\n", kind == 0 ? "sphere" : "plane", hits);
+        assert_true(hits > (kind == 0 ? 20000 : 5000));
+        scene_destroy(s);
+    }
+}
+
 /* Adds n spheres in a row. */
 static void add_spheres(Scene *s, int n)
 {
@@ -324,6 +476,8 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_direct_matches_embree),
         cmocka_unit_test(test_direct_untraceable),
+        cmocka_unit_test(test_direct_early_miss),
+        cmocka_unit_test(test_direct_surface_rays),
         cmocka_unit_test(test_direct_threshold),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

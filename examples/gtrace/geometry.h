@@ -75,13 +75,15 @@ static inline int shape_pick(double t0, double t1, double tmin, double tmax, dou
     return 0;
 }
 
-/** A sphere in its own space (shape_intersect's case, inline for the direct list of accel_direct.c). */
+/** A sphere in its own space (shape_intersect's case, inline for the direct list of accel_direct.c); tmin >= 0.
+ * A ray leaving the sphere's centre from outside it (b > 0, c >= 0: a ray from a point of its surface, as its
+ * shadow and reflected rays are) is a miss without the square root and the divisions: both roots are then <= 0
+ * (q < 0, so q / a <= 0 and c / q <= 0; no NaN, as b and c are finite), neither beyond tmin. */
 static inline int shape_hit_sphere(const Object *o, GVec3 ro, GVec3 rd, double tmin, double tmax, double *t)
 {
     GVec3 oc = gvec3_sub(ro, o->center);
-    double t0, t1;
-    if (!shape_solve_quadratic(gvec3_dot(rd, rd), gvec3_dot(oc, rd), gvec3_dot(oc, oc) - o->radius * o->radius,
-                               &t0, &t1))
+    double b = gvec3_dot(oc, rd), c = gvec3_dot(oc, oc) - o->radius * o->radius, t0, t1;
+    if ((b > 0.0 && c >= 0.0) || !shape_solve_quadratic(gvec3_dot(rd, rd), b, c, &t0, &t1))
         return 0;
     return shape_pick(t0, t1, tmin, tmax, t);
 }
@@ -102,7 +104,8 @@ static inline int shape_hit_plane(const Object *o, GVec3 ro, GVec3 rd, double tm
     return 1;
 }
 
-/** Object-space ray-shape intersection in (tmin, tmax); 1 with *t and *surface when hit. */
+/** Object-space ray-shape intersection in (tmin, tmax), tmin >= 0 (a traceable ray's: accel.c); 1 with *t and
+ * *surface when hit. */
 int shape_intersect(const Object *o, GVec3 ro, GVec3 rd, double tmin, double tmax, double *t, int *surface);
 /** Object-space bounds of a shape (planes are bounded at SHAPE_PLANE_EXTENT). */
 void shape_bounds(const Object *o, GVec3 *lo, GVec3 *hi);
