@@ -273,7 +273,7 @@ static void test_no_uv_fields(void **state)
     int hits = 0, kinds = 0;
     for (int k = 0; k < 2000; k++) {
         double a[3];
-        for (int i = 0; i < 3; i++) {
+        for (int i = 0; i < 3; i++) { /* test_util.h's tu_uniform; that header clashes with test_gtrace_common.h */
             seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
             a[i] = (double)(seed >> 11) * 0x1.0p-53;
         }

@@ -47,11 +47,7 @@ static GMaterial *lambert_rgb(const GColorModel *m, double r, double g, double b
 }
 
 /* Deterministic uniform numbers in [0, 1). */
-static double uniform(unsigned long long *s)
-{
-    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (double)(*s >> 11) * (1.0 / 9007199254740992.0);
-}
+static double uniform(unsigned long long *s) { return tu_uniform(s); }
 
 static GVec3 random_dir(unsigned long long *s)
 {

@@ -50,11 +50,7 @@ static const struct {
 enum { NCASES = sizeof cases / sizeof *cases };
 
 static unsigned long long seed = 99;
-static double uniform(void)
-{
-    seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (double)(seed >> 11) * 0x1.0p-53;
-}
+static double uniform(void) { return tu_uniform(&seed); }
 static GVec3 random_vec(double s) { return gvec3(s * (2 * uniform() - 1), s * (2 * uniform() - 1), s * (2 * uniform() - 1)); }
 
 /* A point on a plane at p with the parametrisation set at random (with_uv) or zero, as a renderer leaves it. */

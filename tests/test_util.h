@@ -18,6 +18,13 @@
  * expression, both values and the tolerance. */
 #define assert_near(a, b, tol) tu_near((a), (b), (tol), #a, __FILE__, __LINE__)
 
+/** Deterministic uniform numbers in [0, 1) from the state *s (a 64-bit LCG: the same draws on every run). */
+static inline double tu_uniform(unsigned long long *s)
+{
+    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(*s >> 11) * 0x1.0p-53;
+}
+
 static inline void tu_near(double a, double b, double tol, const char *what, const char *file, int line)
 {
     if (!(fabs(a - b) <= tol)) {

@@ -71,17 +71,10 @@ static void report_fn(void *k, const char *property, double worst, double tol, c
     report(k, property, worst, tol, detail);
 }
 
-/* Deterministic uniform numbers in [0, 1) (a small LCG: the same pairs on every run). */
-static double uniform(unsigned long long *s)
-{
-    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (double)(*s >> 11) * (1.0 / 9007199254740992.0);
-}
-
 /* A direction in the upper hemisphere at most 85 degrees from the normal. */
 static GVec3 random_direction(unsigned long long *s)
 {
-    double ct = cos(85.0 * M_PI / 180.0) + (1.0 - cos(85.0 * M_PI / 180.0)) * uniform(s), p = 2.0 * M_PI * uniform(s);
+    double ct = cos(85.0 * M_PI / 180.0) + (1.0 - cos(85.0 * M_PI / 180.0)) * gmat_uniform(s), p = 2.0 * M_PI * gmat_uniform(s);
     double st = sqrt(fmax(0.0, 1.0 - ct * ct));
     return gvec3(st * cos(p), st * sin(p), ct);
 }

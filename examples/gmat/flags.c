@@ -158,17 +158,10 @@ void gmat_check_geometric_normal(GmatContext *ctx, const GmatPlace *places, int 
 #define LAMBERT_PAIRS 64
 #define TOL_LAMBERTIAN 1e-5
 
-/* Deterministic uniform numbers in [0, 1) (a small LCG: the same pairs on every run). */
-static double next_uniform(unsigned long long *s)
-{
-    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (double)(*s >> 11) * (1.0 / 9007199254740992.0);
-}
-
 /* A uniformly distributed direction on the sphere, turned to the side of n unless `behind`. */
 static GVec3 sphere_direction(unsigned long long *s, GVec3 n, int behind)
 {
-    double z = 1.0 - 2.0 * next_uniform(s), p = 2.0 * M_PI * next_uniform(s), r = sqrt(fmax(0.0, 1.0 - z * z));
+    double z = 1.0 - 2.0 * gmat_uniform(s), p = 2.0 * M_PI * gmat_uniform(s), r = sqrt(fmax(0.0, 1.0 - z * z));
     GVec3 d = gvec3(r * cos(p), r * sin(p), z);
     return (gvec3_dot(d, n) < 0.0) != behind ? gvec3_neg(d) : d;
 }
@@ -199,7 +192,7 @@ static double lambertian_at(GmatContext *ctx, GSurfPoint *sp, int below, int *ca
         GVec3 in = sphere_direction(&seed, g, i % 8 == 5 || i % 8 == 7), out = sphere_direction(&seed, g, i % 8 >= 6);
         if (i % 2) { /* a light of random samples in [0.25, 1] */
             for (int j = 0; j < ctx->model->nvalues; j++)
-                light.v[j] = (float)(0.25 + 0.75 * next_uniform(&seed));
+                light.v[j] = (float)(0.25 + 0.75 * gmat_uniform(&seed));
         } else {
             rc = gcolor_copy(&light, &ctx->white);
         }

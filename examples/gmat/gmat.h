@@ -28,6 +28,9 @@ typedef struct GmatContext {
 
 /** A direction from polar angles in degrees about +z (theta from the normal, phi from +x). */
 GVec3 gmat_direction(double theta_deg, double phi_deg);
+/** Deterministic uniform numbers in [0, 1) from the state *s (a small LCG: the checks draw the same pairs on every
+ * run; measure.c). */
+double gmat_uniform(unsigned long long *s);
 /** Light reflected towards out for the unit white light arriving from in (into ctx->result). */
 int gmat_reflect(GmatContext *ctx, GVec3 in, GVec3 out);
 /** The ideal specular part for light from in: its direction and reflected colour (into ctx->result); 0 when the

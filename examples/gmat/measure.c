@@ -30,6 +30,12 @@ void gmat_surface_point(GmatContext *ctx, GSurfPoint *sp, int below)
     sp->to = below ? NULL : ctx->material;
 }
 
+double gmat_uniform(unsigned long long *s)
+{
+    *s = *s * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(*s >> 11) * (1.0 / 9007199254740992.0);
+}
+
 static const GColor *light(const GmatContext *ctx) { return ctx->light ? ctx->light : &ctx->white; }
 
 int gmat_reflect(GmatContext *ctx, GVec3 in, GVec3 out)
