@@ -103,7 +103,7 @@ int gcolor_mul_scaled(GColor *out, const GColor *a, const GColor *b, double s)
 
 #ifdef GSPECTRAL_AVX2
 /* n >= 8 (gcolor_is_black takes shorter vectors to all_zero_from) */
-static GSPECTRAL_TARGET_AVX2 int all_zero_v8(const float *v, int n)
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 int all_zero_n8(const float *v, int n)
 {
     /* the whole blocks' bits and those of the block ending at the last float (it may overlap the one before) ORed
      * together and tested once: straight-line code costs less than a test per group */
@@ -115,7 +115,8 @@ static GSPECTRAL_TARGET_AVX2 int all_zero_v8(const float *v, int n)
 }
 
 /* n >= 8 (gcolor_mul_scaled takes shorter vectors to mul_scaled_from) */
-static GSPECTRAL_TARGET_AVX2 void mul_scaled_v8(float *out, const float *a, const float *b, float s, int n)
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void mul_scaled_n8(float *out, const float *a,
+                                                                                     const float *b, float s, int n)
 {
     const gspectral_v8 sv = {s, s, s, s, s, s, s, s};
     /* out may be a or b: the block ending at the last sample is computed before any store and stored after the
@@ -126,6 +127,21 @@ static GSPECTRAL_TARGET_AVX2 void mul_scaled_v8(float *out, const float *a, cons
     GSPECTRAL_EACH_BLOCK8(n, MUL_SCALED_BLOCK);
 #undef MUL_SCALED_BLOCK
     gspectral_vstore8(out + n - 8, last);
+}
+
+/* the common grids' lengths as constants, as the kit's operations take them (spectral_kernels8.h) */
+static GSPECTRAL_TARGET_AVX2 int all_zero_v8(const float *v, int n)
+{
+#define ALL_ZERO(len) all_zero_n8(v, len)
+    return GSPECTRAL_ON_COMMON_LENGTH(n, ALL_ZERO);
+#undef ALL_ZERO
+}
+
+static GSPECTRAL_TARGET_AVX2 void mul_scaled_v8(float *out, const float *a, const float *b, float s, int n)
+{
+#define MUL_SCALED(len) mul_scaled_n8(out, a, b, s, len)
+    GSPECTRAL_ON_COMMON_LENGTH(n, MUL_SCALED);
+#undef MUL_SCALED
 }
 
 GSPECTRAL_PICK(all_zero);

@@ -455,13 +455,9 @@ static int gspectral_to_xyz_v4(const GColorModel *m, const GColor *a, GColorRole
 }
 
 #ifdef GSPECTRAL_AVX2
-/* The 8-float bodies on the common grids, 380..780 nm every 5 nm (81 samples: the spectrum model's default) and
- * every 10 nm (41: bispectral's default), and 9 samples (spectrum9), which any kit-based model on them gets too,
- * plug-ins included: with the length a constant the kernels' jump into their blocks folds away and the operation
- * is straight-line code (spectrum's render: 0.97x the instructions); every other length takes the jump. The same
- * kernels either way, so the same results bit for bit. */
-#define ON_GRID(m, CALL)                                                                                               \
-    ((m)->nvalues == 81 ? CALL(81) : (m)->nvalues == 41 ? CALL(41) : (m)->nvalues == 9 ? CALL(9) : CALL((m)->nvalues))
+/* The 8-float bodies take the common grids' lengths as constants (GSPECTRAL_ON_COMMON_LENGTH): any kit-based
+ * model on them gets straight-line code, plug-ins included; every other length takes the kernels' jump. */
+#define ON_GRID(m, CALL) GSPECTRAL_ON_COMMON_LENGTH((m)->nvalues, CALL)
 
 /* +0.0 in every sample, as memset gives: the straight-line stores take fewer instructions than its call */
 static GSPECTRAL_TARGET_AVX2 void gspectral_black_v8(const GColorModel *m, GColor *out)
@@ -476,7 +472,7 @@ static GSPECTRAL_TARGET_AVX2 int gspectral_add_v8(const GColorModel *m, GColor *
                                                   const GColor *b)
 {
     out->kind = GCOLOR_VECTOR;
-    #define ADD(n) gspectral_kmap8(GSPECTRAL_ADD, out->v, a->v, b->v, n)
+#define ADD(n) gspectral_kmap8(GSPECTRAL_ADD, out->v, a->v, b->v, n)
     ON_GRID(m, ADD);
 #undef ADD
     return G_OK;
@@ -486,7 +482,7 @@ static GSPECTRAL_TARGET_AVX2 int gspectral_mul_v8(const GColorModel *m, GColor *
                                                   const GColor *b)
 {
     out->kind = GCOLOR_VECTOR;
-    #define MUL(n) gspectral_kmap8(GSPECTRAL_MUL, out->v, a->v, b->v, n)
+#define MUL(n) gspectral_kmap8(GSPECTRAL_MUL, out->v, a->v, b->v, n)
     ON_GRID(m, MUL);
 #undef MUL
     return G_OK;
@@ -495,7 +491,7 @@ static GSPECTRAL_TARGET_AVX2 int gspectral_mul_v8(const GColorModel *m, GColor *
 static GSPECTRAL_TARGET_AVX2 int gspectral_scale_v8(const GColorModel *m, GColor *out, const GColor *a, double s)
 {
     out->kind = GCOLOR_VECTOR;
-    #define SCALE(n) gspectral_kscale8(out->v, a->v, (float)s, n)
+#define SCALE(n) gspectral_kscale8(out->v, a->v, (float)s, n)
     ON_GRID(m, SCALE);
 #undef SCALE
     return G_OK;
@@ -505,7 +501,7 @@ static GSPECTRAL_TARGET_AVX2 int gspectral_div_v8(const GColorModel *m, GColor *
                                                   const GColor *b)
 {
     out->kind = GCOLOR_VECTOR;
-    #define DIV(n) gspectral_kdiv8(out->v, a->v, b->v, n)
+#define DIV(n) gspectral_kdiv8(out->v, a->v, b->v, n)
     ON_GRID(m, DIV);
 #undef DIV
     return G_OK;
@@ -514,7 +510,7 @@ static GSPECTRAL_TARGET_AVX2 int gspectral_div_v8(const GColorModel *m, GColor *
 static GSPECTRAL_TARGET_AVX2 double gspectral_brightness_v8(const GColorModel *m, const GColor *a)
 {
     const GSpectral *s = m->priv;
-    #define BRIGHT(n) gspectral_kbright8(s->lum, a->v, n)
+#define BRIGHT(n) gspectral_kbright8(s->lum, a->v, n)
     return ON_GRID(m, BRIGHT);
 #undef BRIGHT
 }
