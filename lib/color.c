@@ -125,15 +125,6 @@ static size_t value_floats(const GColor *c)
     return (size_t)(c->kind == GCOLOR_MATRIX ? c->model->capacity : c->model->nvalues);
 }
 
-int gcolor_copy(GColor *dst, const GColor *src)
-{
-    if (!dst->model || dst->model != src->model)
-        return G_ERR_MISMATCH;
-    if (dst->v != src->v)
-        memcpy(dst->v, src->v, value_floats(src) * sizeof(float));
-    dst->kind = src->kind;
-    return G_OK;
-}
 
 /* ---- operations ---- */
 
@@ -217,6 +208,21 @@ static int axpy_composed(const GColorModel *m, GColor *out, double s, const GCol
 
 static int gcolor_axpy_v4(GColor *out, double s, const GColor *a, const GColor *b) { AXPY_BODY(gspectral_kaxpyd); }
 
+/* The body of gcolor_copy around its copy of n floats (as AXPY_BODY). */
+#define COPY_BODY(copy)                                                                                        \
+    do {                                                                                                       \
+        if (!dst->model || dst->model != src->model)                                                           \
+            return G_ERR_MISMATCH;                                                                             \
+        if (dst->v != src->v)                                                                                  \
+            copy(dst->v, src->v, value_floats(src));                                                           \
+        dst->kind = src->kind;                                                                                 \
+        return G_OK;                                                                                           \
+    } while (0)
+
+#define COPY_MEMCPY(o, a, n) memcpy(o, a, (n) * sizeof(float))
+static int gcolor_copy_v4(GColor *dst, const GColor *src) { COPY_BODY(COPY_MEMCPY); }
+#undef COPY_MEMCPY
+
 int gcolor_add_scaled(GColor *out, const GColor *a, double s) { return gcolor_axpy(out, s, a, out); }
 
 /* The body of gcolor_fill around its kernel (as AXPY_BODY). */
@@ -261,6 +267,12 @@ static GSPECTRAL_TARGET_AVX2 int gcolor_axpy_v8(GColor *out, double s, const GCo
 
 static GSPECTRAL_TARGET_AVX2 int gcolor_fill_v8(GColor *out, double value) { FILL_BODY(gspectral_kfill8); }
 
+/* from 8 floats on, the 8-float blocks the kernels load (spectral_kernels8.h), not libc's pieces; fewer (rgb's 3)
+ * as memcpy stores them, which is how the models of so few values read them back */
+#define COPY_KERNEL(o, a, n) ((n) < 8 ? (void)memcpy(o, a, (n) * sizeof(float)) : gspectral_kcopy8(o, a, (int)(n)))
+static GSPECTRAL_TARGET_AVX2 int gcolor_copy_v8(GColor *dst, const GColor *src) { COPY_BODY(COPY_KERNEL); }
+#undef COPY_KERNEL
+
 static GSPECTRAL_TARGET_AVX2 int gcolor_is_finite_v8(const GColor *c)
 {
     return gspectral_kfinite8(c->v, (int)value_floats(c), 0);
@@ -273,12 +285,15 @@ static GSPECTRAL_TARGET_AVX2 int gcolor_is_nonnegative_v8(const GColor *c)
 
 GSPECTRAL_PICK(gcolor_axpy);
 GSPECTRAL_PICK(gcolor_fill);
+GSPECTRAL_PICK(gcolor_copy);
 GSPECTRAL_PICK(gcolor_is_finite);
 GSPECTRAL_PICK(gcolor_is_nonnegative);
 #else
 int gcolor_axpy(GColor *out, double s, const GColor *a, const GColor *b) { return gcolor_axpy_v4(out, s, a, b); }
 
 int gcolor_fill(GColor *out, double value) { return gcolor_fill_v4(out, value); }
+
+int gcolor_copy(GColor *dst, const GColor *src) { return gcolor_copy_v4(dst, src); }
 
 int gcolor_is_finite(const GColor *c) { return gcolor_is_finite_v4(c); }
 

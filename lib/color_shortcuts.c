@@ -105,28 +105,27 @@ int gcolor_mul_scaled(GColor *out, const GColor *a, const GColor *b, double s)
 /* n >= 8 (gcolor_is_black takes shorter vectors to all_zero_from) */
 __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 int all_zero_n8(const float *v, int n)
 {
-    /* the whole blocks' bits and those of the block ending at the last float (it may overlap the one before) ORed
-     * together and tested once: straight-line code costs less than a test per group */
-    __m256i acc = _mm256_loadu_si256((const __m256i *)(v + n - 8));
+    /* the whole blocks' bits ORed together and tested once (straight-line code costs less than a test per group),
+     * then the last floats' */
+    __m256i acc = _mm256_setzero_si256();
 #define ALL_ZERO_BLOCK(i, k) acc = _mm256_or_si256(acc, _mm256_loadu_si256((const __m256i *)(v + (i) + (k))))
     GSPECTRAL_EACH_BLOCK8(n, ALL_ZERO_BLOCK);
 #undef ALL_ZERO_BLOCK
-    return _mm256_testz_si256(acc, _mm256_set1_epi32(0x7fffffff));
+    return _mm256_testz_si256(acc, _mm256_set1_epi32(0x7fffffff)) && all_zero_from(v, n & ~7, n);
 }
 
 /* n >= 8 (gcolor_mul_scaled takes shorter vectors to mul_scaled_from) */
 __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void mul_scaled_n8(float *out, const float *a,
                                                                                      const float *b, float s, int n)
 {
-    const gspectral_v8 sv = {s, s, s, s, s, s, s, s};
-    /* out may be a or b: the block ending at the last sample is computed before any store and stored after the
-     * whole blocks (over samples they wrote, with the same values), and each block is loaded before it is stored */
-    const gspectral_v8 last = gspectral_vload8(a + n - 8) * gspectral_vload8(b + n - 8) * sv;
+    gspectral_v8 sv = {s, s, s, s, s, s, s, s};
+    GSPECTRAL_KEEP8(sv);
+    /* out may be a or b: each block is loaded before it is stored, the last samples one by one after the blocks */
 #define MUL_SCALED_BLOCK(i, k)                                                                                 \
     gspectral_vstore8(out + (i) + (k), gspectral_vload8(a + (i) + (k)) * gspectral_vload8(b + (i) + (k)) * sv)
     GSPECTRAL_EACH_BLOCK8(n, MUL_SCALED_BLOCK);
 #undef MUL_SCALED_BLOCK
-    gspectral_vstore8(out + n - 8, last);
+    mul_scaled_from(out, a, b, s, n & ~7, n);
 }
 
 /* the common grids' lengths as constants, as the kit's operations take them (spectral_kernels8.h) */

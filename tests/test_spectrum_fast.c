@@ -165,8 +165,9 @@ static int ref_finite(const float *a, int n, int nonneg)
     return 1;
 }
 
-/* The element-wise operations: 0 add, 1 mul, 2 scale (b unused), 3 div, 4 fill (a, b unused), 5 axpy. */
-enum { ADD, MUL, SCALE, DIV, FILL, AXPY, NOPS };
+/* The element-wise operations: 0 add, 1 mul, 2 scale (b unused), 3 div, 4 fill (a, b unused), 5 axpy, 6 copy
+ * (b unused; the 4-float side is memmove, what gcolor_copy does without AVX2). */
+enum { ADD, MUL, SCALE, DIV, FILL, AXPY, COPY, NOPS };
 
 static float ref_elem(int op, float a, float b, double s)
 {
@@ -176,6 +177,7 @@ static float ref_elem(int op, float a, float b, double s)
     case SCALE: return a * (float)s;
     case DIV: return b != 0.0f ? a / b : 0.0f;
     case FILL: return (float)s;
+    case COPY: return a;
     default: return b + (float)(a * s);
     }
 }
@@ -192,6 +194,7 @@ static void elem4(int op, float *o, const float *a, const float *b, double s, in
     case SCALE: gspectral_kscale(o, a, (float)s, n); break;
     case DIV: gspectral_kdiv(o, a, b, n); break;
     case FILL: gspectral_kfill(o, (float)s, n); break;
+    case COPY: memmove(o, a, (size_t)n * sizeof(float)); break;
     default: gspectral_kaxpyd(o, s, a, b, n); break;
     }
 }
@@ -222,6 +225,7 @@ static GSPECTRAL_TARGET_AVX2 void elem8(int op, float *o, const float *a, const 
     case SCALE: gspectral_kscale8(o, a, (float)s, n); break;
     case DIV: gspectral_kdiv8(o, a, b, n); break;
     case FILL: gspectral_kfill8(o, (float)s, n); break;
+    case COPY: gspectral_kcopy8(o, a, n); break;
     default: gspectral_kaxpyd8(o, s, a, b, n); break;
     }
 }
@@ -376,7 +380,7 @@ static GSPECTRAL_TARGET_AVX2 int finite8(const float *a, int n, int nonneg) { re
 #endif
 
 /* The finiteness and sign test with one odd sample at every position (in the blocks the jump enters, the
- * overlapping last block and the loop's rounds). */
+ * samples after the whole blocks and the loop's rounds). */
 static void test_finite_every_position(void **state)
 {
     (void)state;

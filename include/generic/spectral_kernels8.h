@@ -8,11 +8,12 @@
  *
  * The whole 8-float blocks of a vector run as straight-line code entered by one jump, for any number of samples
  * (GSPECTRAL_EACH_BLOCK8, which lib/color_shortcuts.c uses too): on a spectrum of tens of samples a loop spent
- * about a third of a kernel's instructions on its index, compare and branch. On 8 samples or more, an element-wise
- * kernel computes the block that ends at the last sample before its first store (out may alias an operand) and
- * stores it after the whole blocks, over samples they already wrote with the same values: no scalar tail. A sum
- * adds its last 1 to 7 samples one by one, in order, as its 4-float version does. An element-wise kernel on fewer
- * than 8 samples takes the 4-float version. */
+ * about a third of a kernel's instructions on its index, compare and branch. The last 1 to 7 samples are done one
+ * by one (the common grids have one: 81, 41, 9), never as an 8-float block that overlaps the whole blocks: a
+ * block load that spans two earlier stores (the overlapping block's and the whole block's) cannot take its data
+ * from the store buffer and waits for both to retire, and colour operations read what the one before just
+ * wrote. So every kernel stores and loads the same pieces: the 8-float blocks at multiples of 8, then single
+ * floats. An element-wise kernel on fewer than 8 samples takes the 4-float version. */
 #ifndef GENERIC_SPECTRAL_KERNELS8_H
 #define GENERIC_SPECTRAL_KERNELS8_H
 
@@ -92,6 +93,10 @@ extern "C" {
         }                                                                                                      \
     } while (0)
 
+/** A loop over the samples after GSPECTRAL_EACH_BLOCK8's whole blocks (ptrdiff_t i from n & ~7 to n - 1), as
+ * the head of the statement that follows: the tail every kernel does one sample at a time. */
+#define GSPECTRAL_TAIL8(n, i) for (ptrdiff_t i = (ptrdiff_t)(n) & ~(ptrdiff_t)7; i < (ptrdiff_t)(n); i++)
+
 /** CALL(n) with n a constant when it is one of the common grids' lengths (81: 380..780 nm every 5 nm, 41: every
  * 10 nm, 9: spectrum9), else CALL(n) as it is: with the kernels inlined, a constant length folds
  * GSPECTRAL_EACH_BLOCK8's jump away into straight-line code (spectrum's render: 0.97x the instructions), for any
@@ -120,13 +125,13 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectra
         gspectral_kmap(op, o, a, b, n);
         return;
     }
-    const gspectral_v8 last = gspectral_vop8(op, gspectral_vload8(a + n - 8), gspectral_vload8(b + n - 8));
 #define GSPECTRAL_MAP8_BLOCK(i, k)                                                                             \
     gspectral_vstore8(o + (i) + (k),                                                                           \
                       gspectral_vop8(op, gspectral_vload8(a + (i) + (k)), gspectral_vload8(b + (i) + (k))))
     GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_MAP8_BLOCK);
 #undef GSPECTRAL_MAP8_BLOCK
-    gspectral_vstore8(o + n - 8, last);
+    GSPECTRAL_TAIL8(n, i)
+        o[i] = op == GSPECTRAL_ADD ? a[i] + b[i] : a[i] * b[i];
 }
 
 /** gspectral_kscale on 8-float vectors. */
@@ -137,11 +142,13 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectra
         gspectral_kscale(o, a, s, n);
         return;
     }
-    const gspectral_v8 sv = {s, s, s, s, s, s, s, s}, last = gspectral_vload8(a + n - 8) * sv;
+    gspectral_v8 sv = {s, s, s, s, s, s, s, s};
+    GSPECTRAL_KEEP8(sv);
 #define GSPECTRAL_SCALE8_BLOCK(i, k) gspectral_vstore8(o + (i) + (k), gspectral_vload8(a + (i) + (k)) * sv)
     GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_SCALE8_BLOCK);
 #undef GSPECTRAL_SCALE8_BLOCK
-    gspectral_vstore8(o + n - 8, last);
+    GSPECTRAL_TAIL8(n, i)
+        o[i] = a[i] * s;
 }
 
 /** gspectral_vdiv on 8 lanes: a / b, 0 where b is 0 (those lanes divide by 1 and are cleared); zero and one hold
@@ -165,16 +172,16 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectra
     gspectral_v8 zero = {0, 0, 0, 0, 0, 0, 0, 0}, one = {1, 1, 1, 1, 1, 1, 1, 1};
     GSPECTRAL_KEEP8(zero);
     GSPECTRAL_KEEP8(one);
-    const gspectral_v8 last = gspectral_vdiv8(gspectral_vload8(a + n - 8), gspectral_vload8(b + n - 8), zero, one);
 #define GSPECTRAL_DIV8_BLOCK(i, k)                                                                             \
     gspectral_vstore8(o + (i) + (k),                                                                           \
                       gspectral_vdiv8(gspectral_vload8(a + (i) + (k)), gspectral_vload8(b + (i) + (k)), zero, one))
     GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_DIV8_BLOCK);
 #undef GSPECTRAL_DIV8_BLOCK
-    gspectral_vstore8(o + n - 8, last);
+    GSPECTRAL_TAIL8(n, i)
+        o[i] = b[i] != 0.0f ? a[i] / b[i] : 0.0f;
 }
 
-/** gspectral_kfill on 8-float vectors (8 to 16 samples: two stores, which may overlap). */
+/** gspectral_kfill on 8-float vectors. */
 __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectral_kfill8(float *o, float value,
                                                                                          int n)
 {
@@ -183,16 +190,24 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectra
         return;
     }
     gspectral_v8 v = {value, value, value, value, value, value, value, value};
-    if (n <= 16) {
-        gspectral_vstore8(o, v);
-        gspectral_vstore8(o + n - 8, v);
-        return;
-    }
     GSPECTRAL_KEEP8(v);
 #define GSPECTRAL_FILL8_BLOCK(i, k) gspectral_vstore8(o + (i) + (k), v)
     GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_FILL8_BLOCK);
 #undef GSPECTRAL_FILL8_BLOCK
-    gspectral_vstore8(o + n - 8, v);
+    GSPECTRAL_TAIL8(n, i)
+        o[i] = value;
+}
+
+/** o = a, n >= 0 floats, in the pieces every kernel here uses (libc's memcpy stores blocks that straddle them,
+ * and the next kernel's loads would wait for those stores to retire); o and a do not overlap. */
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectral_kcopy8(float *o, const float *a,
+                                                                                         int n)
+{
+#define GSPECTRAL_COPY8_BLOCK(i, k) gspectral_vstore8(o + (i) + (k), gspectral_vload8(a + (i) + (k)))
+    GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_COPY8_BLOCK);
+#undef GSPECTRAL_COPY8_BLOCK
+    GSPECTRAL_TAIL8(n, i)
+        o[i] = a[i];
 }
 
 /** gspectral_kaxpyd's 8 results at a and b: each product in double (two 4-double halves), rounded to float, then
@@ -216,12 +231,12 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectra
         return;
     }
     const __m256d sv = _mm256_set1_pd(s);
-    const __m256 last = gspectral_vaxpyd8(sv, a + n - 8, b + n - 8);
 #define GSPECTRAL_AXPYD8_BLOCK(i, k)                                                                           \
     _mm256_storeu_ps(o + (i) + (k), gspectral_vaxpyd8(sv, a + (i) + (k), b + (i) + (k)))
     GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_AXPYD8_BLOCK);
 #undef GSPECTRAL_AXPYD8_BLOCK
-    _mm256_storeu_ps(o + n - 8, last);
+    GSPECTRAL_TAIL8(n, i)
+        o[i] = b[i] + (float)(a[i] * s);
 }
 
 /** 0x7fffffff in each of 8 lanes: the initializer of the mask of gspectral_vterm8_mask, which clears sign bits. */
@@ -294,8 +309,7 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 double gspect
     return s;
 }
 
-/** gspectral_kfinite on 8-float vectors. After the whole blocks comes the block that ends at the last sample (it
- * may overlap the one before: a test of a sample twice gives the same answer), so there is no scalar tail. */
+/** gspectral_kfinite on 8-float vectors: the whole blocks, then the last samples one by one. */
 __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 int gspectral_kfinite8(const float *a, int n,
                                                                                          int nonnegative)
 {
@@ -315,12 +329,18 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 int gspectral
             neg |= x_ < zero;                                                                                  \
     } while (0)
     GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_FINITE8_BLOCK);
-    GSPECTRAL_FINITE8_BLOCK(n - 8, 0);
 #undef GSPECTRAL_FINITE8_BLOCK
+    float tail = 0.0f;
+    int tail_neg = 0;
+    GSPECTRAL_TAIL8(n, i)
+    {
+        tail += a[i] - a[i];
+        tail_neg |= a[i] < 0.0f;
+    }
     gspectral_v8i bad = acc != zero;
     if (nonnegative)
         bad |= neg;
-    return _mm256_movemask_ps((__m256)bad) == 0;
+    return _mm256_movemask_ps((__m256)bad) == 0 && tail == 0.0f && !(nonnegative && tail_neg);
 }
 
 /** gspectral_kxyz on 8-float vectors (equal bit for bit): per coordinate the blocks' products added block after
