@@ -179,6 +179,30 @@ static void relative_index_case(const char *model_name)
     sp.to = NULL;
     gsurfpoint_invalidate(&sp);
     assert_true(fabs(gsurfpoint_relative_index(&sp) - 1.5) < 1e-6);
+
+    /* set from the colour a renderer divides: the same value as computed, bit for bit, and no call to the media
+     * (a point without them would give 1) */
+    GColor nf, nt;
+    assert_int_equal(gcolor_alloc(&nf, model), G_OK);
+    assert_int_equal(gcolor_alloc(&nt, model), G_OK);
+    sp.from = glass;
+    sp.to = water;
+    gsurfpoint_invalidate(&sp);
+    double computed = gsurfpoint_relative_index(&sp);
+    assert_int_equal(gmaterial_refraction_index(glass, &sp, &nf), G_OK);
+    assert_int_equal(gmaterial_refraction_index(water, &sp, &nt), G_OK);
+    assert_int_equal(gcolor_div(&nf, &nf, &nt), G_OK);
+    GSurfPoint bare;
+    gsurfpoint_init(&bare, model, s);
+    gsurfpoint_set_relative_index(&bare, &nf);
+    assert_true(gsurfpoint_relative_index(&bare) == computed);
+    gsurfpoint_invalidate(&bare); /* forgotten like any cached value: no media, about 1 */
+    assert_true(fabs(gsurfpoint_relative_index(&bare) - 1.0) < 1e-6);
+    gcolor_black(&nf); /* not positive: 1, as computed */
+    gsurfpoint_set_relative_index(&bare, &nf);
+    assert_true(gsurfpoint_relative_index(&bare) == 1.0);
+    gcolor_free(&nf);
+    gcolor_free(&nt);
     gmaterial_unref(glass);
     gmaterial_unref(water);
     gscratch_destroy(s);

@@ -237,6 +237,7 @@ int trace_relative_index(TraceCtx *c, GSurfPoint *sp, GColor *ri)
     CHECK(gmaterial_refraction_index(sp->from, sp, &n_from));
     CHECK(gmaterial_refraction_index(sp->to, sp, &n_to));
     CHECK(gcolor_div(ri, &n_from, &n_to));
+    gsurfpoint_set_relative_index(sp, ri); /* what the material's reflection reads: not divided again */
 done:
     return rc;
 }
@@ -304,16 +305,17 @@ static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const 
         CHECK(light_gather_finish(sp, &lt, out));
     }
     if (depth < c->max_depth) {
+        /* the relative index first: the reflection's Fresnel term reads it too */
+        GColor ri;
+        if (!opaque)
+            CHECK(trace_relative_index(c, sp, &ri));
         /* ideal reflection, in the medium the ray came through */
         CHECK(valid = gmaterial_reflection_dir(m, sp, view, &dir));
         if (valid)
             CHECK(trace_secondary(c, r, sp, facing, dir, NULL, NULL, media, depth, out));
         /* ideal refraction into the medium on the other side; not valid: total internal reflection */
-        if (!opaque) {
-            GColor ri;
-            CHECK(trace_relative_index(c, sp, &ri));
+        if (!opaque)
             CHECK(refract(c, r, sp, facing, &ri, media, depth, out));
-        }
     }
     /* absorption until the light reaches the viewer */
     if (sp->from) {

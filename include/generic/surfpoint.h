@@ -74,8 +74,13 @@ GENERIC_API void gsurfpoint_invalidate(GSurfPoint *sp);
 GENERIC_API GVec3 gsurfpoint_normal(GSurfPoint *sp);
 /** Overrides the cached shading normal. */
 GENERIC_API void gsurfpoint_set_normal(GSurfPoint *sp, GVec3 n);
-/** Scalar relative refraction index n(from) / n(to) (luminance-weighted), computed once and cached. */
+/** Scalar relative refraction index n(from) / n(to) (luminance-weighted), computed once and cached: the
+ * brightness of the ratio of the two materials' refraction_index colours (1 when that is not positive). */
 GENERIC_API double gsurfpoint_relative_index(GSurfPoint *sp);
+/** Caches the scalar relative index from ri, the colour n(from) / n(to) that a renderer computed for sp (as it
+ * hands it to refraction()), so that gsurfpoint_relative_index gives the same value without the two
+ * refraction_index calls and the division again. */
+GENERIC_API void gsurfpoint_set_relative_index(GSurfPoint *sp, const GColor *ri);
 /** Looks up a value cached under key; 1 when found (value and gradient copied out, either may be NULL). */
 GENERIC_API GENERIC_NODISCARD int gsurfpoint_cache_get(const GSurfPoint *sp, const void *key, double *value, GVec3 *gradient);
 /** Caches a value under key (the oldest slot is reused when all are taken). */
