@@ -25,6 +25,22 @@ int goptics_refract(GVec3 view, GVec3 n, double eta, GVec3 *dir)
     return 1;
 }
 
+int goptics_is_refraction_pair(GVec3 view, GVec3 n, double eta, GVec3 in)
+{
+    /* goptics_refract's direction t before it is normalised, then cos(t, in) > 1 - 1e-6 as
+     * gmaterial_is_mirror_pair compares it: squares once the dot product is positive */
+    double cos_i = -gvec3_dot(view, n);
+    double sin2_t = eta * eta * (1.0 - cos_i * cos_i);
+    if (sin2_t > 1.0)
+        return 0;
+    double cos_t = sqrt(1.0 - sin2_t);
+    GVec3 t = gvec3_add(gvec3_scale(view, eta), gvec3_scale(n, eta * cos_i - cos_t));
+    double d = gvec3_dot(t, in), c = 1.0 - 1e-6;
+    if (!(d > 0.0))
+        return 0;
+    return d * d > c * c * gvec3_dot(t, t) * gvec3_dot(in, in);
+}
+
 double goptics_fresnel(double cos_i, double eta)
 {
     cos_i = fabs(cos_i);

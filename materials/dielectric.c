@@ -132,11 +132,10 @@ static int dielectric_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in
                                  const GColor *rel_index, GVec3 out, GColor *result)
 {
     (void)self;
-    GVec3 n = gsurfpoint_normal(sp), t;
+    GVec3 n = gsurfpoint_normal(sp);
     double cos_o = gvec3_dot(out, n);
     double eta = eta_of(sp, rel_index);
-    if (cos_o <= 0.0 || !goptics_refract(gvec3_neg(out), n, eta, &t) ||
-        gvec3_dot(t, in) <= (1.0 - 1e-6) * gvec3_length(in)) {
+    if (cos_o <= 0.0 || !goptics_is_refraction_pair(gvec3_neg(out), n, eta, in)) {
         gcolor_black(result);
         return G_OK;
     }

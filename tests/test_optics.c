@@ -1,6 +1,6 @@
-/* test_optics.c - the geometric helpers of lib/optics.c: the ideal-mirror test against its definition (the
- * cosine between out and the mirror direction of in above 1 - 1e-6), the orthonormal frame, and the moments of
- * the cosine and uniform hemisphere samplers. */
+/* test_optics.c - the geometric helpers of lib/optics.c: the ideal-mirror and ideal-refraction tests against
+ * their definitions (the cosine between the given direction and the ideal one above 1 - 1e-6), the orthonormal
+ * frame, and the moments of the cosine and uniform hemisphere samplers. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -59,6 +59,52 @@ static void test_mirror_pair(void **state)
     assert_false(gmaterial_is_mirror_pair(gvec3(1, 0, 1), n, gvec3(2, 0, -2)));
 }
 
+/* The definition: the normalised refraction direction, then the cosine with the square root of |in|. */
+static int refraction_pair_reference(GVec3 view, GVec3 n, double eta, GVec3 in)
+{
+    GVec3 t;
+    double li = gvec3_length(in);
+    if (!goptics_refract(view, n, eta, &t) || li == 0.0)
+        return 0;
+    return gvec3_dot(t, in) > (1.0 - 1e-6) * li;
+}
+
+static void test_refraction_pair(void **state)
+{
+    (void)state;
+    unsigned s = 13;
+    int agree = 0, pairs = 0, tir = 0;
+    for (int i = 0; i < 200000; i++) {
+        GVec3 n = gvec3_normalize(rnd_vec(&s, 1.0)), view = gvec3_normalize(rnd_vec(&s, 1.0)), t;
+        if (gvec3_dot(view, n) > 0.0)
+            view = gvec3_neg(view); /* arriving against the normal */
+        double eta = i % 4 == 0 ? 1.5 : i % 4 == 1 ? 1.0 / 1.5 : 0.3 + 2.0 * rnd(&s);
+        GVec3 in;
+        if (goptics_refract(view, n, eta, &t)) {
+            in = gvec3_scale(t, i % 3 ? 1.0 : 1e3 * rnd(&s) + 1e-3);
+            /* half of the cases near the ideal direction, at angles around the 1e-6 threshold in cosine */
+            if (i % 2)
+                in = gvec3_add(in, gvec3_scale(rnd_vec(&s, 1.0), gvec3_length(in) * 3e-3 * rnd(&s)));
+            else
+                in = rnd_vec(&s, 2.0);
+        } else {
+            tir++;
+            in = rnd_vec(&s, 1.0);
+        }
+        int want = refraction_pair_reference(view, n, eta, in);
+        pairs += want;
+        agree += goptics_is_refraction_pair(view, n, eta, in) == want;
+    }
+    assert_int_equal(agree, 200000);
+    assert_true(pairs > 1000 && pairs < 99000 && tir > 1000); /* both answers and total reflection occur */
+    GVec3 n = gvec3(0, 0, 1), v = gvec3(0, 0, -1);
+    assert_true(goptics_is_refraction_pair(v, n, 1.5, v));              /* normal incidence goes straight on */
+    assert_false(goptics_is_refraction_pair(v, n, 1.5, gvec3(0, 0, 0))); /* no direction */
+    assert_false(goptics_is_refraction_pair(v, n, 1.5, gvec3(0, 0, 1))); /* backwards */
+    GVec3 grazing = gvec3_normalize(gvec3(1, 0, -0.1));
+    assert_false(goptics_is_refraction_pair(grazing, n, 1.5, grazing)); /* past the critical angle */
+}
+
 static void test_frame(void **state)
 {
     (void)state;
@@ -105,6 +151,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_mirror_pair),
+        cmocka_unit_test(test_refraction_pair),
         cmocka_unit_test(test_frame),
         cmocka_unit_test(test_hemisphere_moments),
     };

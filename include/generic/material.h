@@ -242,6 +242,10 @@ GENERIC_API GENERIC_NODISCARD int gmaterial_is_mirror_pair(GVec3 in, GVec3 n, GV
 /** Ideal refraction of the incident direction view through normal n (facing the incident side) with
  * relative index eta = n_from / n_to; 0 on total internal reflection. */
 GENERIC_API GENERIC_NODISCARD int goptics_refract(GVec3 view, GVec3 n, double eta, GVec3 *dir);
+/** 1 when in is the ideal refraction of view through n with relative index eta (goptics_refract's direction,
+ * within 1e-6 in cosine, as gmaterial_is_mirror_pair); 0 otherwise and on total internal reflection. No square
+ * root but Snell's: what a material's refraction() asks of the pair it is given. */
+GENERIC_API GENERIC_NODISCARD int goptics_is_refraction_pair(GVec3 view, GVec3 n, double eta, GVec3 in);
 /** Unpolarised Fresnel reflectance for cos_i on the incident side and eta = n_from / n_to (1 past TIR). */
 GENERIC_API double goptics_fresnel(double cos_i, double eta);
 
