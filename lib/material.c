@@ -121,6 +121,8 @@ int gmaterial_opaque_everywhere(const GMaterial *m) { return m && (m->flags & GM
 
 int gmaterial_lambertian(const GMaterial *m) { return m && (m->flags & GMAT_LAMBERTIAN); }
 
+int gmaterial_diagonal(const GMaterial *m) { return m && (m->flags & GMAT_DIAGONAL); }
+
 int gmaterial_opaque(const GMaterial *m, GSurfPoint *sp)
 {
     if (m && (m->flags & GMAT_OPAQUE))

@@ -306,6 +306,8 @@ int gdielectric_create(const GColorModel *model, const GDielectricParams *params
         return rc;
     }
     d->base.flags |= GMAT_NO_UV; /* its methods read none of the (u, v) parametrisation (material.h) */
+    if (!d->tinted || d->tint.kind == GCOLOR_VECTOR) /* F * illum (* tint), (1 - F) * illum: sample by sample */
+        d->base.flags |= GMAT_DIAGONAL;
     *out = &d->base;
     return G_OK;
 }

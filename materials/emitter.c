@@ -65,7 +65,8 @@ int gemitter_create(const GColorModel *model, const GColor *radiance, int two_si
                                    out, err);
     if (rc == G_OK) {
         ((Emitter *)*out)->two_sided = two_sided != 0;
-        (*out)->flags |= GMAT_NO_UV; /* its methods read none of the (u, v) parametrisation (material.h) */
+        /* no method reads the (u, v) parametrisation; no reflection or refraction: black, sample by sample */
+        (*out)->flags |= GMAT_NO_UV | GMAT_DIAGONAL;
     }
     return rc;
 }

@@ -79,9 +79,12 @@ int glambert_create(const GColorModel *model, const GColor *reflectance, GMateri
 {
     int rc = gmat_one_color_create(&lambert_class, model, sizeof(GMatOneColor), reflectance, GCOLOR_REFLECTANCE,
                                    1.0, "reflectance", out, err);
-    if (rc == G_OK) /* reflection is diffuse (rho) * illum * gmat_cos_in / pi, as the bit says, and no method reads
-                     * the (u, v) parametrisation (material.h) */
+    if (rc == G_OK) { /* reflection is diffuse (rho) * illum * gmat_cos_in / pi, as the bit says, and no method
+                       * reads the (u, v) parametrisation (material.h) */
         (*out)->flags |= GMAT_LAMBERTIAN | GMAT_NO_UV;
+        if (((GMatOneColor *)*out)->c.kind == GCOLOR_VECTOR) /* rho * illum: sample by sample (material.h) */
+            (*out)->flags |= GMAT_DIAGONAL;
+    }
     return rc;
 }
 

@@ -78,8 +78,11 @@ int gmirror_create(const GColorModel *model, const GColor *reflectance, GMateria
 {
     int rc = gmat_one_color_create(&mirror_class, model, sizeof(GMatOneColor), reflectance, GCOLOR_REFLECTANCE,
                                    1.0, "reflectance", out, err);
-    if (rc == G_OK)
+    if (rc == G_OK) {
         (*out)->flags |= GMAT_NO_UV; /* its methods read none of the (u, v) parametrisation (material.h) */
+        if (((GMatOneColor *)*out)->c.kind == GCOLOR_VECTOR) /* rho * illum: sample by sample (material.h) */
+            (*out)->flags |= GMAT_DIAGONAL;
+    }
     return rc;
 }
 

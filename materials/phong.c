@@ -234,6 +234,9 @@ int gphong_create(const GColorModel *model, const GPhongParams *params, GMateria
     p->has_ks = gcolor_brightness(&p->ks) > 0.0;
     p->has_mirror = gcolor_brightness(&p->mirror) > 0.0;
     p->base.flags |= GMAT_NO_UV; /* its methods read none of the (u, v) parametrisation (material.h) */
+    /* reflection is (a sum of its colours) * illum: sample by sample unless one of them re-radiates */
+    if (p->kd.kind == GCOLOR_VECTOR && p->ks.kind == GCOLOR_VECTOR && p->mirror.kind == GCOLOR_VECTOR)
+        p->base.flags |= GMAT_DIAGONAL;
     *out = &p->base;
     return G_OK;
 }

@@ -219,6 +219,8 @@ int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptio
         return rc;
     }
     gtexnode_inherit_no_emission(&im->node.base, &child, 1); /* the child's emission times a finite texel */
+    if (im->basis[0].kind == GCOLOR_VECTOR && im->basis[1].kind == GCOLOR_VECTOR && im->basis[2].kind == GCOLOR_VECTOR)
+        gtexnode_inherit_diagonal(&im->node.base, &child, 1); /* the child's pass-on times a texel colour */
     *out = &im->node.base;
     return G_OK;
 }

@@ -127,6 +127,7 @@ int gnode_scale_create(GMaterial *child, GGenerator *factor, GMaterial **out, GE
     Scale *s = (Scale *)mat;
     s->factor = ggenerator_ref(factor);
     gtexnode_inherit_no_emission(&s->node.base, &child, 1); /* the child's emission times the factor */
+    gtexnode_inherit_diagonal(&s->node.base, &child, 1);    /* the child's pass-on times the factor */
     gtexnode_inherit_no_uv(&s->node.base, &child, 1, factor); /* reads the point only through the factor */
     *out = &s->node.base;
     return G_OK;

@@ -259,6 +259,7 @@ int gnode_transform_create(GMaterial *child, const GAffine2 *uv, const GAffine3 
     t->child = gmaterial_ref(child);
     gtexnode_inherit_no_emission(&t->base, &child, 1); /* the child's emission at a moved point */
     gtexnode_inherit_opaque(&t->base, &child, 1);      /* the child's opacity at a moved point */
+    gtexnode_inherit_diagonal(&t->base, &child, 1);    /* the child's pass-on at a moved point */
     /* the child's normal at a moved point that keeps the geometric normal (move() leaves it) */
     gtexnode_inherit_geometric_normal(&t->base, &child, 1);
     /* it moves (u, v) and the tangents for a child that, with the bit, never reads them */

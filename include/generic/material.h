@@ -112,7 +112,19 @@ enum {
      * in (u, v) space). The same rules as for GMAT_NO_EMISSION: set only when it is true (`gmat check`'s no-uv
      * property evaluates the class with those fields zero and with other values, and the two must agree),
      * clearing it is always safe. A bit added in the existing flags field, like GMAT_GEOMETRIC_NORMAL. */
-    GMAT_NO_UV = 16u
+    GMAT_NO_UV = 16u,
+    /** The material filters light sample by sample (a diagonal re-radiation matrix: no fluorescence): at every
+     * point and for every pair of directions, reflection(sp, in, illum, out) is reflection(sp, in, white, out)
+     * times illum (gcolor_mul), and the same for refraction with any rel_index, white being 1 in every sample
+     * (the vacuum's refraction index) and illum any light, up to rounding. A renderer may then ask what the
+     * material passes on of white light once, to weigh a secondary ray, and multiply the ray's light by it, where
+     * it would ask the material again with that light. gmaterial_init cannot know it and never sets it: a class
+     * sets it after gmaterial_init on the instances it holds for (lambert, mirror, phong, dielectric and emitter
+     * whose colours are not re-radiation matrices); the node kit sets it on a blend node when every child has it
+     * (gtexnode_inherit_diagonal, node_kit.h). The same rules as for GMAT_NO_EMISSION: set only when it is true
+     * (`gmat check`'s diagonal property), clearing it is always safe. A bit added in the existing flags field,
+     * like GMAT_GEOMETRIC_NORMAL. */
+    GMAT_DIAGONAL = 32u
 };
 
 /** A material instance begins with this header; implementations embed it as their first member. */
@@ -212,6 +224,9 @@ GENERIC_API int gmaterial_opaque_everywhere(const GMaterial *m);
  * gmat_cos_in / pi, so the light of several samples may be summed (each times its cosine) and reflected at once.
  * 0 when it may not be (or cannot tell); NULL (vacuum) reflects nothing and is not. */
 GENERIC_API int gmaterial_lambertian(const GMaterial *m);
+/** 1 when m has GMAT_DIAGONAL: its reflection and refraction of any light are what they pass on of white light
+ * times that light. 0 when they may not be (or it cannot tell); NULL (vacuum) passes nothing on and is not. */
+GENERIC_API int gmaterial_diagonal(const GMaterial *m);
 
 /** Draws a direction for light leaving towards out (see the top of this file): 1 drawn, 0 none, or a status.
  * weight must have storage of m's model; m == NULL (vacuum) draws nothing. */

@@ -107,6 +107,21 @@ GENERIC_API GENERIC_NODISCARD int gtexnode_children_lambertian(GMaterial *const 
  * the reflection blend belongs. One-child nodes (bump, scale, image, transform) do not get it. */
 GENERIC_API void gtexnode_inherit_lambertian(GMaterial *node, GMaterial *const *children, int n);
 
+/** 1 when each of the n children has GMAT_DIAGONAL (material.h): a node whose reflection and refraction are sums
+ * of its children's reflections and refractions of the same light, with weights and at points that do not depend
+ * on the light (a blend, a factor, a texel, a moved point), then filters light sample by sample too. */
+GENERIC_API GENERIC_NODISCARD int gtexnode_children_diagonal(GMaterial *const *children, int n);
+
+/** Sets GMAT_DIAGONAL on node when gtexnode_children_diagonal(children, n): for a class whose reflection and
+ * refraction are such sums, which only the class knows, so a class with slots of its own calls it after
+ * construction (image, scale, transform). */
+GENERIC_API void gtexnode_inherit_diagonal(GMaterial *node, GMaterial *const *children, int n);
+
+/** gtexnode_inherit_diagonal when node's reflection and refraction slots are the kit's blends or pass-throughs
+ * (gtexblendnode_reflection and _refraction, gtexchild_reflection and _refraction) or empty: gtexnode_new_checked
+ * calls it for every node it makes, plug-in classes included. */
+GENERIC_API void gtexnode_inherit_kit_diagonal(GMaterial *node, GMaterial *const *children, int n);
+
 /** 1 when each of the n children has GMAT_NO_UV (material.h) and gen, when given, is not a function of (u, v)
  * (its space, texture.h, is not GGENERATOR_SPACE_UV: a generator's space says what its value reads). */
 GENERIC_API GENERIC_NODISCARD int gtexnode_children_no_uv(GMaterial *const *children, int n, const GGenerator *gen);

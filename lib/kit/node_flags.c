@@ -1,9 +1,10 @@
-/* node_flags.c - the node kit's GMAT_NO_EMISSION, GMAT_OPAQUE, GMAT_GEOMETRIC_NORMAL, GMAT_LAMBERTIAN and
- * GMAT_NO_UV (generic/node_kit.h): a node whose emission only combines its children's emits nothing when none of
+/* node_flags.c - the node kit's GMAT_NO_EMISSION, GMAT_OPAQUE, GMAT_GEOMETRIC_NORMAL, GMAT_LAMBERTIAN,
+ * GMAT_NO_UV and GMAT_DIAGONAL (generic/node_kit.h): a node whose emission only combines its children's emits nothing when none of
  * them does, one whose opacity is its children's is opaque everywhere when each of them is, one whose normal blends
  * its children's keeps the geometric normal when each of them does, so the dispatch answers it without a call; a
  * blend whose reflection and diffuse colour are the same blend of its children's is Lambertian when each of them
- * is, so a renderer reflects the light of all its samples at once; and one that reads the point only through a
+ * is, so a renderer reflects the light of all its samples at once; one whose reflection and refraction sum its
+ * children's filters light sample by sample when each of them does (GMAT_DIAGONAL); and one that reads the point only through a
  * generator not in (u, v) space, over children that never read (u, v), lets the renderer skip the
  * parametrisation. */
 #include "generic/node_kit.h"
@@ -63,6 +64,27 @@ void gtexnode_inherit_lambertian(GMaterial *node, GMaterial *const *children, in
     if (node && node->cls->reflection == gtexblendnode_reflection && node->cls->diffuse == gtexblendnode_diffuse &&
         gtexnode_children_lambertian(children, n))
         node->flags |= GMAT_LAMBERTIAN;
+}
+
+int gtexnode_children_diagonal(GMaterial *const *children, int n)
+{
+    return children_all(children, n, GMAT_DIAGONAL);
+}
+
+void gtexnode_inherit_diagonal(GMaterial *node, GMaterial *const *children, int n)
+{
+    if (node && gtexnode_children_diagonal(children, n))
+        node->flags |= GMAT_DIAGONAL;
+}
+
+void gtexnode_inherit_kit_diagonal(GMaterial *node, GMaterial *const *children, int n)
+{
+    if (!node)
+        return;
+    const GMaterialClass *c = node->cls;
+    if ((!c->reflection || c->reflection == gtexblendnode_reflection || c->reflection == gtexchild_reflection) &&
+        (!c->refraction || c->refraction == gtexblendnode_refraction || c->refraction == gtexchild_refraction))
+        gtexnode_inherit_diagonal(node, children, n);
 }
 
 int gtexnode_children_no_uv(GMaterial *const *children, int n, const GGenerator *gen)

@@ -125,6 +125,7 @@ int gtexnode_new_checked(const GMaterialClass *cls, GMaterial *const *children, 
         if (cls->opaque == gtexblendnode_opaque || cls->opaque == gtexchild_opaque) /* opaque where they all are */
             gtexnode_inherit_opaque(*out, children, n);
         gtexnode_inherit_kit_normal(*out, children, n); /* the kit's normal slots: blends of their normals */
+        gtexnode_inherit_kit_diagonal(*out, children, n); /* the kit's pass-on slots: sums of their pass-ons */
     }
     return rc;
 }
