@@ -189,7 +189,8 @@ static int pass_on(const GMaterial *m, GSurfPoint *sp, GVec3 dir, const GColor *
  * with ri its relative index; NULL: reflection) through the media `next`, as the material passes it on
  * towards the viewer; with a mask, only the mask's part of it (one wavelength group of a dispersive
  * refraction). Adaptive depth: the branch is not traced when what it can bring to the pixel (the material's
- * pass-on of 1, times the path's weight) is below the cutoff. */
+ * pass-on of 1, times the path's weight) is below the cutoff. A material that filters light sample by sample
+ * (GMAT_DIAGONAL) is not asked again with the ray's light: its pass-on of 1 times that light is the same. */
 static int trace_secondary(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, GVec3 dir, const GColor *ri,
                            const GColor *mask, const Media *next, int depth, GColor *out)
 {
@@ -197,8 +198,11 @@ static int trace_secondary(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 faci
     GVec3 to_viewer = gvec3_neg(r->d);
     GScratchMark mark = gscratch_mark(c->scratch);
     GColor tmp, illum;
-    int rc = G_OK;
-    CHECK(trace_tmp(c, TRACE_TMP_PASS, &tmp)); /* not held across trace_ray, which uses it too */
+    int rc = G_OK, diagonal = gmaterial_diagonal(m);
+    if (diagonal) /* the pass-on of 1 is kept across the ray */
+        CHECK(gcolor_scratch(&tmp, c->scene->model, c->scratch));
+    else
+        CHECK(trace_tmp(c, TRACE_TMP_PASS, &tmp)); /* not held across trace_ray, which uses it too */
     CHECK(pass_on(m, sp, dir, &c->unit, ri, to_viewer, &tmp));
     if (mask)
         CHECK(gcolor_mul(&tmp, mask, &tmp));
@@ -218,6 +222,12 @@ static int trace_secondary(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 faci
     rc = trace_ray(c, &ray, next, depth + 1, &illum);
     c->weight = saved;
     CHECK(rc);
+    if (diagonal) {
+        CHECK(gcolor_mul(&illum, &tmp, &illum));
+        CHECK(gcolor_add(out, out, &illum));
+        goto done;
+    }
+    CHECK(trace_tmp(c, TRACE_TMP_PASS, &tmp));
     CHECK(pass_on(m, sp, dir, &illum, ri, to_viewer, &tmp));
     if (mask)
         CHECK(gcolor_mul(&tmp, mask, &tmp));
