@@ -30,6 +30,8 @@
  *                normal (flags.c).
  *   lambertian   for a material with GMAT_LAMBERTIAN: its class's own reflection is its diffuse colour times the
  *                light times gmat_cos_in / pi over random pairs and lights, and it is not delta (flags.c).
+ *   diagonal     for a material with GMAT_DIAGONAL: its class's own reflection and refraction of a random light
+ *                are what they pass on of white times the light, over random and ideal pairs (flags.c).
  *   no-uv        for a material with GMAT_NO_UV: the same colours, normal and opacity with the surface's (u, v)
  *                and tangents as without them (uvflag.c).
  *   chi2, pdf integral, weight: the sampling slots (sampling.c). */
@@ -532,6 +534,7 @@ int gmat_check(GmatContext *ctx, int samples)
     gmat_check_opaque_flag(ctx, k.places, NPLACES, report_fn, &k);
     gmat_check_geometric_normal(ctx, k.places, NPLACES, report_fn, &k);
     gmat_check_lambertian(ctx, k.places, NPLACES, report_fn, &k);
+    gmat_check_diagonal(ctx, k.places, NPLACES, report_fn, &k);
     gmat_check_no_uv(ctx, k.places, NPLACES, report_fn, &k);
     gmat_check_sampling(ctx, k.places, NPLACES, 0, report_fn, &k);
     printf("%s: %s\n", ctx->material_name, k.failures ? "FAIL" : "PASS");

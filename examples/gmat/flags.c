@@ -10,7 +10,15 @@
  *                mostly, one or both behind it else) and lights (white, and one of random samples), the class's
  *                own reflection against its diffuse colour times the light times gmat_cos_in / pi: the largest
  *                difference over the largest value at a place (a failed call, or an is_delta slot that does not
- *                say 0, counts as infinite); at most 1e-5 (rounding: a blend sums its children's products).
+ *                say 0, counts as infinite); at most 1e-5 (rounding: a blend sums its children's products);
+ *   diagonal     with GMAT_DIAGONAL: over random directions out (on the side of the geometric normal mostly) and
+ *                random lights (samples in [0.25, 1]; in a model with its own fill, whose vectors may not be plain
+ *                samples, random linear sRGB colours), the class's own reflection of the light from random
+ *                directions (one or both behind the normal sometimes) and from the ideal reflection of out, and its
+ *                refraction with the relative indices 1 and 1.5 (gcolor_fill) from across the surface, from the
+ *                ideal refraction and sometimes from out's side, each against what the slot passes on of white (1
+ *                in every sample) times the light (gcolor_mul): the largest difference over the largest value of
+ *                each of the three at a place (a failed call counts as infinite); at most 1e-5 (rounding).
  * Nothing to check without the bit, or without the slot (the default is then what the bit says). */
 #include "gmat.h"
 
@@ -229,4 +237,149 @@ void gmat_check_lambertian(GmatContext *ctx, const GmatPlace *places, int nplace
              "(GMAT_LAMBERTIAN set: |reflection - diffuse * light * cos / pi| / max, %d random pairs and lights)",
              calls);
     report(checker, "lambertian", worst, TOL_LAMBERTIAN, detail);
+}
+
+/* ---- diagonal: the pass-on of a light against the pass-on of white times that light ---- */
+
+#define DIAGONAL_PAIRS 48
+#define TOL_DIAGONAL 1e-5
+
+/* One comparison of the diagonal check: reflection, refraction with the relative index 1 or with 1.5. */
+enum { DIAG_REFLECTION, DIAG_REFRACTION_1, DIAG_REFRACTION_15, DIAG_KINDS };
+
+/* What the diagonal check holds at one place: white (1 in every sample: the bit's white, not ctx->white, which is
+ * D65 in a spectral model), the indices 1 (white itself) and 1.5, the light, the two answers, and per comparison
+ * the largest |difference| and the largest |value| (kept apart: a dielectric's small reflection is not measured
+ * against its large refraction). */
+typedef struct DiagonalWork {
+    GColor white, index15, light, got, want;
+    double diff[DIAG_KINDS], big[DIAG_KINDS];
+} DiagonalWork;
+
+/* A light of random samples in [0.25, 1]: a coloured light, which a material that moves light between samples
+ * answers otherwise than white times it. Written as nvalues plain samples, as the lambertian check does; a model
+ * that gives its own fill may read a vector otherwise, so there a random linear sRGB colour (three degrees of
+ * freedom only: a mixing the three primaries cannot show goes unseen). */
+static int random_light(GmatContext *ctx, unsigned long long *seed, GColor *light)
+{
+    if (!ctx->model->cls->fill) {
+        for (int j = 0; j < ctx->model->nvalues; j++)
+            light->v[j] = (float)(0.25 + 0.75 * gmat_uniform(seed));
+        return G_OK;
+    }
+    double rgb[3];
+    for (int k = 0; k < 3; k++)
+        rgb[k] = 0.25 + 0.75 * gmat_uniform(seed);
+    return gcolor_from_rgb(light, rgb, GCOLOR_LIGHT);
+}
+
+/* Compares w->got with w->want sample by sample into comparison `kind` (a NaN difference: infinite); the values
+ * are read as nvalues floats, as the lambertian check reads them. */
+static void diagonal_compare(GmatContext *ctx, DiagonalWork *w, int kind)
+{
+    for (int j = 0; j < ctx->model->nvalues; j++) {
+        double a = w->got.v[j], b = w->want.v[j];
+        w->diff[kind] = fmax(w->diff[kind], isnan(a - b) ? INFINITY : fabs(a - b));
+        w->big[kind] = fmax(w->big[kind], fmax(fabs(a), fabs(b)));
+    }
+}
+
+/* The class's own reflection (rel_index NULL) or refraction of w->light from in towards out against its pass-on
+ * of white times the light (gcolor_mul), into comparison `kind`; a missing slot is black (the default), which
+ * passes black on of any light: nothing to compare. */
+static int diagonal_pair(GmatContext *ctx, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index,
+                         DiagonalWork *w, int kind, int *calls)
+{
+    const GMaterial *m = ctx->material;
+    if (rel_index ? !m->cls->refraction : !m->cls->reflection)
+        return G_OK;
+    int rc = rel_index ? m->cls->refraction(m, sp, in, &w->light, rel_index, out, &w->got)
+                       : m->cls->reflection(m, sp, in, &w->light, out, &w->got);
+    if (rc == G_OK) /* want: first what it passes on of white, then times the light */
+        rc = rel_index ? m->cls->refraction(m, sp, in, &w->white, rel_index, out, &w->want)
+                       : m->cls->reflection(m, sp, in, &w->white, out, &w->want);
+    if (rc == G_OK)
+        rc = gcolor_mul(&w->want, &w->want, &w->light);
+    *calls += 2;
+    if (rc == G_OK)
+        diagonal_compare(ctx, w, kind);
+    return rc;
+}
+
+/* The direction light comes from along the ideal ray of out (reflection_dir, or refraction_dir with rel_index):
+ * a delta lobe (a mirror, glass) passes light on there alone, which random pairs never hit. Else a random
+ * direction on the side of g unless `behind`. */
+static GVec3 pair_in(GmatContext *ctx, GSurfPoint *sp, unsigned long long *seed, GVec3 out, const GColor *rel_index,
+                     int ideal, int behind)
+{
+    GVec3 g = sp->geometric_normal, in = sphere_direction(seed, g, behind);
+    GVec3 dir;
+    if (!ideal)
+        return in;
+    int valid = rel_index ? gmaterial_refraction_dir(ctx->material, sp, gvec3_neg(out), rel_index, &dir)
+                          : gmaterial_reflection_dir(ctx->material, sp, gvec3_neg(out), &dir);
+    return valid == 1 && gvec3_length(dir) > 0.0 ? gvec3_normalize(dir) : in;
+}
+
+/* Over DIAGONAL_PAIRS random directions out (on the side of the geometric normal mostly, behind it else) and a
+ * random light each: the reflection of light from a direction on out's side (one pair in four the ideal
+ * reflection of out), and the refraction with the relative indices 1 and 1.5 of light from across the surface
+ * (one pair in four the ideal refraction, one in eight from out's side), each against the pass-on of white times
+ * the light. The largest of the three comparisons' largest difference over largest value (a failed call:
+ * infinite). */
+static double diagonal_at(GmatContext *ctx, GSurfPoint *sp, int below, int *calls)
+{
+    /* other pairs at each place and side, the same on every run */
+    unsigned long long seed = 0xd1a6ULL + (below ? 977ULL : 0ULL) + (unsigned long long)(ctx->place->u * 1000003.0);
+    GScratchMark mark = gscratch_mark(ctx->scratch);
+    DiagonalWork w = {.diff = {0}, .big = {0}};
+    int rc = gcolor_scratch(&w.white, ctx->model, ctx->scratch);
+    if (rc == G_OK)
+        rc = gcolor_scratch(&w.index15, ctx->model, ctx->scratch);
+    if (rc == G_OK)
+        rc = gcolor_scratch(&w.light, ctx->model, ctx->scratch);
+    if (rc == G_OK)
+        rc = gcolor_scratch(&w.got, ctx->model, ctx->scratch);
+    if (rc == G_OK)
+        rc = gcolor_scratch(&w.want, ctx->model, ctx->scratch);
+    if (rc == G_OK)
+        rc = gcolor_fill(&w.white, 1.0);
+    if (rc == G_OK)
+        rc = gcolor_fill(&w.index15, 1.5);
+    const GColor *index[2] = {&w.white, &w.index15}; /* white is the relative index 1 too */
+    GVec3 g = sp->geometric_normal;
+    for (int i = 0; i < DIAGONAL_PAIRS && rc == G_OK; i++) {
+        int out_behind = i % 8 >= 6; /* as the lambertian check: one or both behind the normal in 3 of 8 */
+        GVec3 out = sphere_direction(&seed, g, out_behind);
+        rc = random_light(ctx, &seed, &w.light);
+        GVec3 in = pair_in(ctx, sp, &seed, out, NULL, i % 4 == 0, i % 8 == 5 || i % 8 == 7);
+        if (rc == G_OK)
+            rc = diagonal_pair(ctx, sp, in, out, NULL, &w, DIAG_REFLECTION, calls);
+        for (int r = 0; r < 2 && rc == G_OK; r++) { /* across the surface, from out's side one pair in eight */
+            in = pair_in(ctx, sp, &seed, out, index[r], i % 4 == 0, i % 8 == 3 ? out_behind : !out_behind);
+            rc = diagonal_pair(ctx, sp, in, out, index[r], &w, DIAG_REFRACTION_1 + r, calls);
+        }
+    }
+    gscratch_release(ctx->scratch, mark);
+    double worst = 0.0;
+    for (int k = 0; k < DIAG_KINDS; k++)
+        worst = fmax(worst, w.big[k] > 0.0 ? w.diff[k] / w.big[k] : w.diff[k]);
+    return rc != G_OK || !isfinite(worst) ? INFINITY : worst;
+}
+
+void gmat_check_diagonal(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report, void *checker)
+{
+    if (!gmaterial_diagonal(ctx->material)) {
+        report(checker, "diagonal", 0.0, TOL_DIAGONAL,
+               "(GMAT_DIAGONAL not set: reflection and refraction are asked with each light)");
+        return;
+    }
+    int calls = 0;
+    double worst = over_places(ctx, places, nplaces, diagonal_at, 0, &calls);
+    char detail[240];
+    snprintf(detail, sizeof detail,
+             "(GMAT_DIAGONAL set: |pass-on of a light - pass-on of white * light| / max, reflection and refraction"
+             " at indices 1 and 1.5, %d calls)",
+             calls);
+    report(checker, "diagonal", worst, TOL_DIAGONAL, detail);
 }

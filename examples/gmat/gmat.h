@@ -88,6 +88,11 @@ void gmat_check_geometric_normal(GmatContext *ctx, const GmatPlace *places, int 
  * directions and lights at the places given, on both sides, and its is_delta slot (if any) must say 0. */
 void gmat_check_lambertian(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
                            void *checker);
+/** The diagonal check of `gmat check` (flags.c): a material with GMAT_DIAGONAL must pass on, by its class's own
+ * reflection and refraction slots (with the relative indices 1 and 1.5), of any light what they pass on of white
+ * (1 in every sample) times that light (relative 1e-5) over random pairs of directions, the ideal ones included,
+ * and random lights at the places given, on both sides. */
+void gmat_check_diagonal(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report, void *checker);
 /** The no-uv check of `gmat check` (uvflag.c): a material with GMAT_NO_UV must give the same colours, normal and
  * opacity at the places given, on both sides, with the surface's parametrisation set and with it zero. */
 void gmat_check_no_uv(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report, void *checker);

@@ -1,5 +1,5 @@
 /* nonconforming.c - modules that break one conformance property on purpose, for tests/scripts/conformance.sh
- * (gmat check and gcolor check must report them as failing, naming the property). Built three ways by the
+ * (gmat check and gcolor check must report them as failing, naming the property). Built once per variant by the
  * Makefile's plug-in section:
  *   -DGAIN       material "gain_lambert": f_r = 1.5 / pi, a Lambertian surface reflecting 1.5 times the light
  *                (albedo 1.5; reciprocal, finite);
@@ -21,6 +21,11 @@
  *                0.8 bright: only the lambertian check sees it;
  *   -DMISUV      material "misuv_lambert": a Lambertian whose albedo is 0.25 + 0.5 u (it reads the surface's u)
  *                while its instances set GMAT_NO_UV, so renderers give it u = 0: only the no-uv check sees it;
+ *   -DMISDIAG    material "misdiag_lambert": a grey Lambertian of albedo 0.5 that reflects, in every sample, the
+ *                mean of the light's samples (it moves light between samples, energy kept: a one-sample light's
+ *                power leaves spread over all of them) while its instances set GMAT_DIAGONAL, so a renderer
+ *                that weighs a ray by its pass-on of white gives it the light's colour: only the diagonal check
+ *                sees it;
  *   -DBAD_BANDS  colour model "bad_bands": the same grey model with a correct add and two wavelength bands whose
  *                masks are both white, so the bands do not partition a value;
  *   -DBAD_ADD    colour model "bad_add": the grey model (luminance only) whose add returns 1.01 a + b, so
@@ -33,12 +38,27 @@
 GENERIC_MODULE_EXPORT const int generic_module_abi = GMODULE_ABI_VERSION;
 
 #if defined(GAIN) || defined(SKEWED) || defined(MISDRAWN) || defined(MISFLAGGED) || defined(MISOPAQUE) ||              \
-    defined(MISNORMAL) || defined(MISDIFFUSE) || defined(MISUV)
+    defined(MISNORMAL) || defined(MISDIFFUSE) || defined(MISUV) || defined(MISDIAG)
 typedef struct Flat {
     GMaterial base;
 } Flat;
 
 static void flat_destroy(GMaterial *self) { gmem_free(self); }
+
+#ifdef MISDIAG
+/* The deliberate error: the mean of the light's samples in every sample (a grey response to any light), not the
+ * light sample by sample, times f_r * cos; the mean, not gcolor_brightness, so that a one-sample light's power
+ * leaving over all samples stays f_r's albedo (0.5) and only the diagonal check fails. Reads the samples as plain
+ * floats, as the built-in models keep them. */
+static int grey_response(GColor *result, const GColor *illum, double f)
+{
+    const GColorModel *m = illum->model;
+    double sum = 0.0;
+    for (int j = 0; j < m->nvalues; j++)
+        sum += illum->v[j];
+    return gcolor_fill(result, f * sum / m->nvalues);
+}
+#endif
 
 static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
                            GColor *result)
@@ -54,14 +74,18 @@ static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, cons
     double f = 1.5 / M_PI;
 #elif defined(MISDRAWN)
     double f = 0.8 / M_PI;
-#elif defined(MISFLAGGED) || defined(MISOPAQUE) || defined(MISNORMAL) || defined(MISDIFFUSE)
+#elif defined(MISFLAGGED) || defined(MISOPAQUE) || defined(MISNORMAL) || defined(MISDIFFUSE) || defined(MISDIAG)
     double f = 0.5 / M_PI;
 #elif defined(MISUV)
     double f = (0.25 + 0.5 * fmin(1.0, fmax(0.0, sp->u))) / M_PI; /* reads u: GMAT_NO_UV is wrong */
 #else
     double f = (0.25 + 0.5 * ci * ci) / M_PI;
 #endif
+#ifdef MISDIAG
+    return grey_response(result, illum, f * ci);
+#else
     return gcolor_scale(result, illum, f * ci);
+#endif
 }
 
 #if defined(GAIN)
@@ -78,6 +102,8 @@ static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, cons
 #define FLAT_NAME "misdiffuse_lambert"
 #elif defined(MISUV)
 #define FLAT_NAME "misuv_lambert"
+#elif defined(MISDIAG)
+#define FLAT_NAME "misdiag_lambert"
 #else
 #define FLAT_NAME "skewed_lambert"
 #endif
@@ -204,6 +230,9 @@ static int parse_flat(GReader *r, const void *vtable, void **object, GError *err
 #endif
 #ifdef MISUV
     m->base.flags |= GMAT_NO_UV; /* the deliberate error: the class's reflection reads u */
+#endif
+#ifdef MISDIAG
+    m->base.flags |= GMAT_DIAGONAL; /* the deliberate error: the class's reflection mixes the light's samples */
 #endif
     *object = &m->base;
     return G_OK;
