@@ -207,4 +207,20 @@ static inline const float *pixel(const Framebuffer *fb, int x, int y) { return f
 /* Luminance of a linear sRGB pixel. */
 static inline double luma(const float *p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }
 
+/* The largest relative difference of two pictures' channels (over 1e-6 absolute for near-black ones), and how
+ * many channels differ by more than relative 1e-5 into *off: two renders that should agree within rounding. */
+static inline double largest_difference(const Framebuffer *a, const Framebuffer *b, int *off)
+{
+    assert_int_equal(a->width, b->width);
+    assert_int_equal(a->height, b->height);
+    double worst = 0.0;
+    *off = 0;
+    for (size_t i = 0; i < 3 * (size_t)a->width * a->height; i++) {
+        double x = a->pixels[i], y = b->pixels[i], d = fabs(x - y) / fmax(1e-6, fmax(fabs(x), fabs(y)));
+        worst = fmax(worst, d);
+        *off += d > 1e-5;
+    }
+    return worst;
+}
+
 #endif

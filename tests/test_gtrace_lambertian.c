@@ -94,22 +94,6 @@ static void render_as(Scene *s, int integrator, Framebuffer *fb)
     assert_int_equal(st.nonfinite, 0);
 }
 
-/* The largest relative difference of two pictures' channels (over 1e-6 absolute for near-black ones), and how
- * many channels differ by more than relative 1e-5 into *off. */
-static double largest_difference(const Framebuffer *a, const Framebuffer *b, int *off)
-{
-    assert_int_equal(a->width, b->width);
-    assert_int_equal(a->height, b->height);
-    double worst = 0.0;
-    *off = 0;
-    for (size_t i = 0; i < 3 * (size_t)a->width * a->height; i++) {
-        double x = a->pixels[i], y = b->pixels[i], d = fabs(x - y) / fmax(1e-6, fmax(fabs(x), fabs(y)));
-        worst = fmax(worst, d);
-        *off += d > 1e-5;
-    }
-    return worst;
-}
-
 static double mean_of(const Framebuffer *fb)
 {
     double sum = 0.0;
