@@ -148,15 +148,14 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
     GColor *illum = &t->illum, *refl = &t->refl, *tmp = &t->tmp;
     double cos_in = 0.0;
     int rc;
-    if ((rc = gcolor_scale(illum, color, scale)) < 0)
-        return rc;
-    if (t->gather) {
+    if (t->gather) { /* illum is made below where it is needed: the clear path adds color * (scale * cos) */
         GVec3 n;
         cos_in = gmat_cos_in(sp, in, out_dir, &n); /* the cosine the material's reflection would use */
         if (!(cos_in > 0.0))
             return G_OK; /* its reflection would be black: no shadow ray */
     } else {
-        if ((rc = gmaterial_reflection(sp->material, sp, in, illum, out_dir, refl)) < 0)
+        if ((rc = gcolor_scale(illum, color, scale)) < 0 ||
+            (rc = gmaterial_reflection(sp->material, sp, in, illum, out_dir, refl)) < 0)
             return rc;
         if (gcolor_is_black(refl))
             return G_OK; /* nothing reflected from here: no shadow ray */
@@ -167,16 +166,19 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
     if (occluded == OCCLUDED_CLEAR) {
         const GMaterial *medium = gvec3_dot(in, facing) >= 0.0 ? sp->from : sp->to;
         if (medium && isfinite(dist)) { /* the medium absorbs the reflected light: this sample on its own */
-            if (t->gather && (rc = gmaterial_reflection(sp->material, sp, in, illum, out_dir, refl)) < 0)
+            if (t->gather && ((rc = gcolor_scale(illum, color, scale)) < 0 ||
+                              (rc = gmaterial_reflection(sp->material, sp, in, illum, out_dir, refl)) < 0))
                 return rc;
             if ((rc = gmaterial_absorption(medium, sp, refl, dist, tmp)) < 0 || (rc = gcolor_copy(refl, tmp)) < 0)
                 return rc;
             return gcolor_add(result, result, refl);
         }
-        return t->gather ? gcolor_add_scaled(&t->gathered, illum, cos_in) : gcolor_add(result, result, refl);
+        return t->gather ? gcolor_add_scaled(&t->gathered, color, scale * cos_in) : gcolor_add(result, result, refl);
     }
     if (t->blocked || occluded == OCCLUDED_OPAQUE)
         return G_OK; /* the walk below would end at that surface */
+    if (t->gather && (rc = gcolor_scale(illum, color, scale)) < 0)
+        return rc;
     int visible;
     if ((rc = transmit(c, sp, facing, media, in, dist, illum, &visible)) < 0 || !visible)
         return rc;
