@@ -32,7 +32,8 @@ static int lambert_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result
     return gcolor_copy(result, &((const GMatOneColor *)self)->c);
 }
 
-/* Cosine-weighted sampling: pdf cos / pi, so the weight f cos / pdf is rho exactly. */
+/* Cosine-weighted sampling: pdf cos / pi, so the weight f cos / pdf is rho exactly (a re-radiation matrix rho:
+ * what it makes of white light, a vector, as the weight is defined: material.h). */
 static int lambert_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
                           double u2, GMaterialSample *s, GColor *weight)
 {
@@ -49,7 +50,9 @@ static int lambert_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, cons
         gcolor_black(weight);
         return 1;
     }
-    int rc = gcolor_copy(weight, &((const GMatOneColor *)self)->c);
+    const GColor *rho = &((const GMatOneColor *)self)->c;
+    int rc = rho->kind == GCOLOR_VECTOR ? gcolor_copy(weight, rho)
+                                        : gmat_sample_weight(self, sp, s->in, out, NULL, 0, s->pdf, weight);
     return rc ? rc : 1;
 }
 

@@ -129,7 +129,8 @@ static int phong_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const 
             gcolor_black(weight);
             return 1;
         }
-        int rc = gcolor_scale(weight, &p->mirror, 1.0 / prob);
+        int rc = p->mirror.kind == GCOLOR_VECTOR ? gcolor_scale(weight, &p->mirror, 1.0 / prob)
+                                                 : gmat_sample_weight(self, sp, r, out, NULL, 0, prob, weight);
         return rc ? rc : 1;
     }
     s->in = lobe == 0 ? goptics_sample_cosine(n, u1, u2) : goptics_sample_lobe(r, p->n, u1, u2);
@@ -141,6 +142,10 @@ static int phong_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const 
     if (ci <= 0.0) {
         gcolor_black(weight);
         return 1;
+    }
+    if (p->kd.kind != GCOLOR_VECTOR || p->ks.kind != GCOLOR_VECTOR) { /* re-radiation: what it makes of white */
+        int rc = gmat_sample_weight(self, sp, s->in, out, NULL, 0, s->pdf, weight);
+        return rc ? rc : 1;
     }
     int rc = gcolor_scale(weight, &p->kd, ci / M_PI / s->pdf);
     if (rc == G_OK && p->has_ks) {

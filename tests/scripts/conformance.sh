@@ -21,7 +21,8 @@
 #     diffuse colour a wrong GMAT_LAMBERTIAN puts in place of its reflection: lambertian alone;
 #     misuv_lambert, whose albedo follows u, which a wrong GMAT_NO_UV hides: no-uv alone; misdiag_lambert, whose
 #     grey response to coloured light a wrong GMAT_DIAGONAL hides: diagonal alone),
-#     and the example modules (examples/plugins/) must pass.
+#     and the example modules (examples/plugins/) must pass;
+#   - lambert and phong with a re-radiation matrix for a colour (bispectral) pass, the sampling weights included.
 SRC=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=$(cd "${1:-build}" 2> /dev/null && pwd) || { echo "FAIL: no build directory ${1:-build}"; exit 1; }
 GMAT="$BUILD/bin/gmat"
@@ -165,6 +166,21 @@ expect_fail "misdiag_lambert (GMAT_DIAGONAL on a reflection that mixes the light
     "$TMP/misdiag.mat" m --plugin "$PLUGINS/misdiag.so"
 expect_fail "bad_add (wrong add)" "a + black = a" "$GCOLOR" check bad_add --plugin "$PLUGINS/bad_add.so"
 expect_fail "bad_bands (overlapping bands)" "bands partition a" "$GCOLOR" check bad_bands --plugin "$PLUGINS/bad_bands.so"
+
+# ---- plain materials whose colours are re-radiation matrices (bispectral) pass, sampling included: a sampled
+# direction's weight is what the matrix makes of white light, a vector, as material.h defines it ----
+checked=$((checked + 1))
+cat > "$TMP/matrix.mat" << 'EOM'
+colormodel bispectral
+color dayglo reradiation { absorb_peak 470 absorb_width 115 absorb_shape 8 absorb_max 0.97
+    emit_width 20 stokes_shift 135 quantum_yield 0.65 reflectance 0.92 }
+material matte lambert { reflectance dayglo }
+material glossy phong { diffuse dayglo specular rgb 0.04 0.04 0.04 exponent 30 }
+material mirrored phong { diffuse dayglo specular rgb 0.02 0.02 0.02 exponent 30 mirror rgb 0.03 0.03 0.03 }
+EOM
+for m in matte glossy mirrored; do
+    "$GMAT" check "$TMP/matrix.mat" $m > "$TMP/log" 2>&1 || fail "$m with a re-radiation matrix: $(cat "$TMP/log")"
+done
 
 # ---- the example modules pass ----
 checked=$((checked + 1))
