@@ -73,9 +73,15 @@ static void clear(GColor *c)
 }
 
 /* Points c at v (at least m->capacity floats) and sets it to black. */
-static void attach(GColor *c, const GColorModel *m, float *v, GColorStorage storage, int capacity)
+/* Points c at v (uncleared). */
+static void attach_uncleared(GColor *c, const GColorModel *m, float *v, GColorStorage storage, int capacity)
 {
     *c = (GColor){.model = m, .v = v, .kind = GCOLOR_VECTOR, .storage = storage, .capacity = capacity};
+}
+
+static void attach(GColor *c, const GColorModel *m, float *v, GColorStorage storage, int capacity)
+{
+    attach_uncleared(c, m, v, storage, capacity);
     m->cls->black(m, c);
 }
 
@@ -97,6 +103,17 @@ int gcolor_scratch(GColor *c, const GColorModel *m, GScratch *s)
         return G_ERR_NOMEM;
     }
     attach(c, m, v, GCOLOR_STORAGE_ARENA, m->capacity);
+    return G_OK;
+}
+
+int gcolor_scratch_uncleared(GColor *c, const GColorModel *m, GScratch *s)
+{
+    float *v = gscratch_alloc(s, (size_t)m->capacity * sizeof(float));
+    if (!v) {
+        clear(c);
+        return G_ERR_NOMEM;
+    }
+    attach_uncleared(c, m, v, GCOLOR_STORAGE_ARENA, m->capacity);
     return G_OK;
 }
 

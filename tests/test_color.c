@@ -565,6 +565,35 @@ static void test_operations_do_not_allocate(void **state)
     }
 }
 
+/* gcolor_scratch_uncleared: the arena's storage as it was (a released colour's values show through), a vector
+ * of the model's capacity; gcolor_scratch on the same storage is black; both give it back at the mark. */
+static void test_scratch_uncleared(void **state)
+{
+    (void)state;
+    for (int ci = 0; ci < NCASES; ci++) {
+        GColorModel *m = make(&cases[ci]);
+        GScratch *s = gscratch_create(0);
+        assert_non_null(s);
+        GScratchMark mark = gscratch_mark(s);
+        GColor a, b;
+        assert_int_equal(gcolor_scratch(&a, m, s), G_OK);
+        assert_int_equal(gcolor_fill(&a, 0.25), G_OK);
+        gscratch_release(s, mark);
+        assert_int_equal(gcolor_scratch_uncleared(&b, m, s), G_OK);
+        assert_ptr_equal(b.v, a.v); /* the same storage, handed out again */
+        assert_int_equal(b.kind, GCOLOR_VECTOR);
+        assert_int_equal(b.storage, GCOLOR_STORAGE_ARENA);
+        assert_int_equal(b.capacity, m->capacity);
+        assert_true(fabs(gcolor_brightness(&b) - 0.25) < 1e-6); /* not cleared */
+        gscratch_release(s, mark);
+        assert_int_equal(gcolor_scratch(&b, m, s), G_OK);
+        assert_ptr_equal(b.v, a.v);
+        assert_true(gcolor_is_black(&b)); /* gcolor_scratch clears */
+        gscratch_destroy(s);
+        gcolormodel_destroy(m);
+    }
+}
+
 int main(void)
 {
     if (generic_register_builtins(NULL) != G_OK)
@@ -582,6 +611,7 @@ int main(void)
         cmocka_unit_test(test_nan_input),
         cmocka_unit_test(test_convert_preserves_xyz),
         cmocka_unit_test(test_operations_do_not_allocate),
+        cmocka_unit_test(test_scratch_uncleared),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -199,8 +199,8 @@ static int trace_secondary(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 faci
     GScratchMark mark = gscratch_mark(c->scratch);
     GColor tmp, illum;
     int rc = G_OK, diagonal = gmaterial_diagonal(m);
-    if (diagonal) /* the pass-on of 1 is kept across the ray */
-        CHECK(gcolor_scratch(&tmp, c->scene->model, c->scratch));
+    if (diagonal) /* the pass-on of 1 is kept across the ray (written in full by the material: not cleared) */
+        CHECK(gcolor_scratch_uncleared(&tmp, c->scene->model, c->scratch));
     else
         CHECK(trace_tmp(c, TRACE_TMP_PASS, &tmp)); /* not held across trace_ray, which uses it too */
     CHECK(pass_on(m, sp, dir, &c->unit, ri, to_viewer, &tmp));
@@ -214,7 +214,7 @@ static int trace_secondary(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 faci
         goto done;
     }
     c->rays_left--;
-    CHECK(gcolor_scratch(&illum, c->scene->model, c->scratch));
+    CHECK(gcolor_scratch_uncleared(&illum, c->scene->model, c->scratch)); /* trace_ray writes it in full */
     double width = r->cone_width + r->cone_spread * sp->t;
     Ray ray = {offset_origin(sp->point, facing, dir), dir, 0.0, INFINITY, width, r->cone_spread};
     double saved = c->weight;
@@ -243,7 +243,7 @@ int trace_relative_index(TraceCtx *c, GSurfPoint *sp, GColor *ri)
     int rc = G_OK;
     CHECK(trace_tmp(c, TRACE_TMP_N_FROM, &n_from));
     CHECK(trace_tmp(c, TRACE_TMP_N_TO, &n_to));
-    CHECK(gcolor_scratch(ri, c->scene->model, c->scratch));
+    CHECK(gcolor_scratch_uncleared(ri, c->scene->model, c->scratch)); /* the division writes it in full */
     CHECK(gmaterial_refraction_index(sp->from, sp, &n_from));
     CHECK(gmaterial_refraction_index(sp->to, sp, &n_to));
     CHECK(gcolor_div(ri, &n_from, &n_to));

@@ -190,6 +190,10 @@ GENERIC_API GENERIC_NODISCARD int gcolor_wrap(GColor *c, const GColorModel *m, f
 /** Gives c storage from the arena (GCOLOR_STORAGE_ARENA) and sets it to black; G_ERR_NOMEM, with c cleared,
  * when the arena cannot grow. The arena's mark/release gives the storage back. */
 GENERIC_API GENERIC_NODISCARD int gcolor_scratch(GColor *c, const GColorModel *m, GScratch *s);
+/** gcolor_scratch without setting the colour to black: its values are whatever the arena held (a vector of
+ * unspecified samples), for a colour that the caller's next operation writes in full (a material method's
+ * result, the out of an operation): a renderer's per-ray temporaries save the black's stores. */
+GENERIC_API GENERIC_NODISCARD int gcolor_scratch_uncleared(GColor *c, const GColorModel *m, GScratch *s);
 /** Gives c heap storage (GCOLOR_STORAGE_HEAP, for long-lived values) and sets it to black; G_ERR_NOMEM, with
  * c cleared, when out of memory. */
 GENERIC_API GENERIC_NODISCARD int gcolor_alloc(GColor *c, const GColorModel *m);
