@@ -1,7 +1,9 @@
 /* test_gtrace_lambertian.c - the light gathered for Lambertian materials (lights.c's light_gather): a surface whose
  * material has GMAT_LAMBERTIAN is asked once per shading point for its diffuse colour, times the sum of the lights'
  * light times cosine, where any other material is asked for its reflection of each light sample. The same scene is
- * rendered twice: with a lambert, an interpolate node over two lamberts and a spline over colours used directly
+ * rendered twice: with a lambert, an interpolate node over two lamberts, a spline over colours, and the one-child
+ * nodes scale (over a lambert, by a checker that is 0 on half the cells), transform (over an interpolate of lamberts,
+ * its pattern moved in (u, v) and in space) and bump (over a lambert) used directly
  * (flagged: gathered), and with each of them seen through an interpolate-one node whose one blended method is
  * reflection at t = 0 (every call handed to the material as it is, but the node is not flagged: each light asks the
  * reflection as before). Point, spot, directional, sphere (4 samples) and rectangle (4 samples) lights; a glass
@@ -15,7 +17,7 @@
 
 #include <unistd.h>
 
-/* The flagged materials, named white, floor and wood followed by `suffix`, into buf. */
+/* The flagged materials, named white, floor, wood, scaled, moved and bumpy followed by `suffix`, into buf. */
 static void materials(char *buf, size_t size, const char *suffix)
 {
     snprintf(buf, size,
@@ -23,8 +25,15 @@ static void materials(char *buf, size_t size, const char *suffix)
              "material floor%s interpolate { a lambert { reflectance rgb 0.8 0.8 0.8 }\n"
              "    b lambert { reflectance rgb 0.1 0.2 0.3 }  t checker { dims 2 frequency 2 } }\n"
              "material wood%s spline { t wood { space object frequency 6.67 rings 6.67 turbulence 0.1 latewood 0.5 }\n"
-             "    basis catmull-rom colors { 0 rgb 0.75 0.5 0.25  0.5 rgb 0.6 0.4 0.2  1 rgb 0.4 0.22 0.08 } }\n",
-             suffix, suffix, suffix);
+             "    basis catmull-rom colors { 0 rgb 0.75 0.5 0.25  0.5 rgb 0.6 0.4 0.2  1 rgb 0.4 0.22 0.08 } }\n"
+             "material scaled%s scale { child lambert { reflectance rgb 0.9 0.8 0.7 }\n"
+             "    factor checker { dims 3 frequency 4 } }\n"
+             "material moved%s transform { child interpolate { a lambert { reflectance rgb 0.2 0.6 0.3 }\n"
+             "    b lambert { reflectance rgb 0.9 0.85 0.2 }  t checker { dims 2 frequency 6 } }\n"
+             "    uv { rotate 30 scale 0.5 }  xyz { rotate 0 1 0 20 } }\n"
+             "material bumpy%s bump { child lambert { reflectance rgb 0.6 0.7 0.9 }\n"
+             "    height fbm { frequency 8 octaves 3 }  strength 0.05 }\n",
+             suffix, suffix, suffix, suffix, suffix, suffix);
 }
 
 /* The scene; wrap: each flagged material seen through an unflagged node that hands it every call. */
@@ -42,6 +51,9 @@ static Scene *lit_scene(const char *model, int wrap)
         "object sphere { center <0, 0.35, 1.4> radius 0.35 material white }\n"
         "object sphere { center <0.2, 2.4, -1.5> radius 0.9 material tinted }\n"
         "object sphere { center <0.55, 2.4, -1.5> radius 0.25 material white }\n"
+        "object sphere { center <-0.9, 0.3, 1.6> radius 0.3 material scaled }\n"
+        "object sphere { center <0.9, 0.3, 1.6> radius 0.3 material moved }\n"
+        "object sphere { center <-2.2, 0.4, 1.0> radius 0.4 material bumpy }\n"
         "light point { position <-0.1, 2.4, -1.5> intensity rgb 3 3 3 }\n"
         "light point { position <-4, 6, 5> intensity rgb 60 60 60 }\n"
         "light spot { position <3, 4, 3> at <0, 0, 0> intensity rgb 40 30 20 inner 20 outer 35 }\n"
@@ -52,10 +64,13 @@ static Scene *lit_scene(const char *model, int wrap)
     static const char *const wrapped =
         "material white interpolate-one { a white_l b white_l t constant { value 0 } method reflection }\n"
         "material floor interpolate-one { a floor_l b floor_l t constant { value 0 } method reflection }\n"
-        "material wood interpolate-one { a wood_l b wood_l t constant { value 0 } method reflection }\n";
-    char defs[1024];
+        "material wood interpolate-one { a wood_l b wood_l t constant { value 0 } method reflection }\n"
+        "material scaled interpolate-one { a scaled_l b scaled_l t constant { value 0 } method reflection }\n"
+        "material moved interpolate-one { a moved_l b moved_l t constant { value 0 } method reflection }\n"
+        "material bumpy interpolate-one { a bumpy_l b bumpy_l t constant { value 0 } method reflection }\n";
+    char defs[2048];
     materials(defs, sizeof defs, wrap ? "_l" : "");
-    char buf[4096], path[256];
+    char buf[8192], path[256];
     snprintf(buf, sizeof buf, text, defs, wrap ? wrapped : "");
     snprintf(path, sizeof path, "/tmp/gtrace_test_%d_lambertian.scene", (int)getpid());
     FILE *f = fopen(path, "w");
@@ -69,8 +84,8 @@ static Scene *lit_scene(const char *model, int wrap)
     unlink(path);
     if (rc != G_OK)
         fail_msg("%s", err.message);
-    /* the floor, the wood and the white balls: flagged directly, not through the wrapper */
-    static const int lit[] = {0, 2, 3, 5};
+    /* the floor, the wood, the white, scaled, moved and bumpy balls: flagged directly, not through the wrapper */
+    static const int lit[] = {0, 2, 3, 5, 6, 7, 8};
     for (size_t i = 0; i < sizeof lit / sizeof lit[0]; i++) {
         const GMaterial *m = s->objects[lit[i]]->material;
         if (gmaterial_lambertian(m) != !wrap)

@@ -1,15 +1,19 @@
 /* test_material_lambertian.c - GMAT_LAMBERTIAN (material.h): reflection(sp, in, illum, out) is diffuse(sp) * illum *
  * gmat_cos_in(sp, in, out) / pi everywhere, so a renderer may reflect the sum of its lights at once:
  *  - which materials and nodes get the bit: lambert; the blend nodes whose pick gives one blend for reflection and
- *    diffuse (interpolate, interpolate-one of another method, spline, select) over children that all have it; not
- *    interpolate-one of reflection or diffuse, not one-child nodes (bump, scale, transform), not a node over a phong,
- *    mirror or dielectric child, not a blend class the kit does not know to pick alike (gtexnode_new_checked never
- *    sets it, gtexnode_inherit_lambertian refuses another class);
+ *    diffuse (interpolate, interpolate-one of another method, spline, select) over children that all have it; the
+ *    one-child nodes (bump, scale, image, transform: gtexnode_inherit_lambertian_child) over a child that has it, and
+ *    nodes over those; not interpolate-one of reflection or diffuse, not a node (blend or one-child) over a phong,
+ *    mirror or dielectric child or over an unflagged node, not a blend class the kit does not know to pick alike
+ *    (gtexnode_new_checked never sets it, gtexnode_inherit_lambertian refuses another class, a one-child one too);
  *  - the property itself for every flagged material and node, in rgb, spectrum and bispectral (with a re-radiation
  *    matrix as a lambert's reflectance there): random points (generator values, geometric normals, and a shading
- *    normal set on the point, which every child reads as the node does), random pairs of directions on both sides
- *    and random lights, the class's reflection against diffuse * light * cos / pi within relative 1e-6;
- *  - gmaterial_is_delta answers 0 for a flagged material without calling the class or a node's pick. */
+ *    normal set on the point, which every child reads as the node does, or else the node's own: a bump's bumped
+ *    normal, a transform's child's at the original point), random pairs of directions on both sides and random
+ *    lights, the class's reflection against diffuse * light * cos / pi within relative 1e-6; scale factors that
+ *    are 0 (both black) and negative, texel colours of a small PPM written into a temporary directory;
+ *  - gmaterial_is_delta answers 0 for a flagged material without calling the class or a node's pick, and the
+ *    one-child nodes' own is_delta slots agree (their Lambertian child is not delta). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -28,6 +32,9 @@
 
 #include <math.h>
 #include <stdio.h>
+
+/* A small colour image (written by main into a temporary directory) for the image nodes. */
+static char image_path[256];
 
 static int lamb(const GMaterial *m) { return (m->flags & GMAT_LAMBERTIAN) != 0; }
 
@@ -48,6 +55,30 @@ static GMaterial *lambert_rgb(const GColorModel *m, double r, double g, double b
 
 /* Deterministic uniform numbers in [0, 1). */
 static double uniform(unsigned long long *s) { return tu_uniform(s); }
+
+/* An image node over child reading image_path (texels of every colour, some black). */
+static GMaterial *image_over(GMaterial *child)
+{
+    GMaterial *out = NULL;
+    GError err;
+    int rc = gnode_image_create(child, image_path, NULL, &out, &err);
+    if (rc != G_OK)
+        fail_msg("image node: %s", err.message);
+    return out;
+}
+
+/* Writes an 8 x 8 binary PPM of pseudo-random colours (and one black texel) to path; 0 on success. */
+static int write_image(const char *path)
+{
+    FILE *f = fopen(path, "wb");
+    if (!f)
+        return -1;
+    unsigned long long seed = 7;
+    fprintf(f, "P6\n8 8\n255\n");
+    for (int i = 0; i < 64 * 3; i++)
+        fputc(i < 3 ? 0 : (int)(255.0 * tu_uniform(&seed)), f);
+    return fclose(f);
+}
 
 static GVec3 random_dir(unsigned long long *s)
 {
@@ -93,26 +124,39 @@ static void test_which_get_the_bit(void **state)
     GMaterial *c = lambert_rgb(rgb, 0.5, 0.5, 0.1);
     GGenerator *t;
     assert_int_equal(ggen_gradient_create(GGENERATOR_SPACE_UV, gvec3(1, 0, 0), 0.0, &t, &err), G_OK);
-    GMaterial *kids[3] = {a, b, c}, *n[12];
+    enum { NODES = 21, FLAGGED = 15 };
+    GMaterial *kids[3] = {a, b, c}, *n[NODES];
     GAffine2 uv = gaffine2_rotate(30.0);
+    GAffine3 xyz = gaffine3_rotate(gvec3(0, 0, 1), 20.0);
     assert_int_equal(gnode_interpolate_create(a, b, t, &n[0], &err), G_OK);
     assert_int_equal(gnode_interpolate_one_create(a, b, t, GNODE_NORMAL, &n[1], &err), G_OK);
     assert_int_equal(gnode_spline_create(kids, 3, t, GSPLINE_CATMULL_ROM, &n[2], &err), G_OK);
     assert_int_equal(gnode_select_create(kids, 3, t, &n[3], &err), G_OK);
     GMaterial *inner[2] = {n[0], n[3]};
     assert_int_equal(gnode_spline_create(inner, 2, t, GSPLINE_LINEAR, &n[4], &err), G_OK);
-    /* without the bit: */
-    assert_int_equal(gnode_interpolate_one_create(a, b, t, GNODE_REFLECTION, &n[5], &err), G_OK);
-    assert_int_equal(gnode_interpolate_one_create(a, b, t, GNODE_DIFFUSE, &n[6], &err), G_OK);
-    assert_int_equal(gnode_bump_create(a, t, 1.0, &n[7], &err), G_OK);
-    assert_int_equal(gnode_scale_create(b, t, &n[8], &err), G_OK);
-    assert_int_equal(gnode_transform_create(c, &uv, NULL, &n[9], &err), G_OK);
-    GMaterial *over_bump[2] = {n[0], n[7]};
-    assert_int_equal(gnode_spline_create(over_bump, 2, t, GSPLINE_LINEAR, &n[10], &err), G_OK);
-    GMaterial *over_transform[2] = {n[9], n[3]};
-    assert_int_equal(gnode_select_create(over_transform, 2, t, &n[11], &err), G_OK);
-    for (int i = 0; i < 12; i++)
-        if (lamb(n[i]) != (i < 5))
+    /* one-child nodes over a lambert, over an interpolate of lamberts, over one another */
+    assert_int_equal(gnode_bump_create(a, t, 1.0, &n[5], &err), G_OK);
+    assert_int_equal(gnode_scale_create(b, t, &n[6], &err), G_OK);
+    assert_int_equal(gnode_transform_create(c, &uv, NULL, &n[7], &err), G_OK);
+    n[8] = image_over(a);
+    assert_int_equal(gnode_scale_create(n[0], t, &n[9], &err), G_OK);
+    assert_int_equal(gnode_bump_create(n[9], t, 0.5, &n[10], &err), G_OK);
+    assert_int_equal(gnode_transform_create(n[10], &uv, &xyz, &n[11], &err), G_OK);
+    n[12] = image_over(n[11]);
+    /* blends over them */
+    GMaterial *over_bump[2] = {n[0], n[5]};
+    assert_int_equal(gnode_spline_create(over_bump, 2, t, GSPLINE_LINEAR, &n[13], &err), G_OK);
+    GMaterial *over_transform[2] = {n[7], n[3]};
+    assert_int_equal(gnode_select_create(over_transform, 2, t, &n[14], &err), G_OK);
+    /* without the bit: interpolate-one of reflection or diffuse, and one-child nodes over them */
+    assert_int_equal(gnode_interpolate_one_create(a, b, t, GNODE_REFLECTION, &n[15], &err), G_OK);
+    assert_int_equal(gnode_interpolate_one_create(a, b, t, GNODE_DIFFUSE, &n[16], &err), G_OK);
+    assert_int_equal(gnode_bump_create(n[15], t, 1.0, &n[17], &err), G_OK);
+    assert_int_equal(gnode_scale_create(n[16], t, &n[18], &err), G_OK);
+    assert_int_equal(gnode_transform_create(n[15], &uv, &xyz, &n[19], &err), G_OK);
+    n[20] = image_over(n[16]);
+    for (int i = 0; i < NODES; i++)
+        if (lamb(n[i]) != (i < FLAGGED))
             fail_msg("node %d (%s): GMAT_LAMBERTIAN %d", i, gmaterial_name(n[i]), lamb(n[i]));
 
     /* over a phong, a mirror or a dielectric child: no bit */
@@ -135,6 +179,17 @@ static void test_which_get_the_bit(void **state)
         assert_false(gmaterial_lambertian(m[i]));
     }
     assert_false(gmaterial_lambertian(NULL));
+    /* one-child nodes over each of them: no bit */
+    GMaterial *one[12];
+    for (int i = 0; i < 3; i++) {
+        assert_int_equal(gnode_bump_create(other[i], t, 1.0, &one[4 * i], &err), G_OK);
+        assert_int_equal(gnode_scale_create(other[i], t, &one[4 * i + 1], &err), G_OK);
+        assert_int_equal(gnode_transform_create(other[i], &uv, &xyz, &one[4 * i + 2], &err), G_OK);
+        one[4 * i + 3] = image_over(other[i]);
+    }
+    for (int i = 0; i < 12; i++)
+        if (lamb(one[i]))
+            fail_msg("%s over %s: GMAT_LAMBERTIAN", gmaterial_name(one[i]), gmaterial_name(other[i / 4]));
 
     /* a blend class the kit does not know to pick alike: not from construction, and the inherit call refuses a
      * class with other slots than the kit's blend (a one-child node) */
@@ -143,18 +198,28 @@ static void test_which_get_the_bit(void **state)
     ((Pair *)p)->a = gmaterial_ref(a);
     ((Pair *)p)->b = gmaterial_ref(b);
     assert_false(lamb(p));
-    gtexnode_inherit_lambertian(n[8], pair_kids, 2);
-    assert_false(lamb(n[8]));
+    gtexnode_inherit_lambertian(one[1], pair_kids, 2); /* a scale over a mirror: not a blend class */
+    assert_false(lamb(one[1]));
     assert_true(gtexnode_children_lambertian(pair_kids, 2));
     assert_false(gtexnode_children_lambertian(other, 3));
+    /* the one-child form: nothing for a child without the bit, for NULL, or for the node as its own child */
+    gtexnode_inherit_lambertian_child(one[1], other[1]);
+    assert_false(lamb(one[1]));
+    gtexnode_inherit_lambertian_child(one[1], NULL);
+    gtexnode_inherit_lambertian_child(NULL, a);
+    assert_false(lamb(one[1]));
+    gtexnode_inherit_lambertian_child(n[15], n[15]);
+    assert_false(lamb(n[15]));
 
+    for (int i = 11; i >= 0; i--)
+        gmaterial_unref(one[i]);
     gmaterial_unref(p);
     for (int i = 2; i >= 0; i--)
         gmaterial_unref(m[i]);
     for (int i = 0; i < 3; i++)
         gmaterial_unref(other[i]);
     gcolor_free(&half);
-    for (int i = 11; i >= 0; i--)
+    for (int i = NODES - 1; i >= 0; i--)
         gmaterial_unref(n[i]);
     gmaterial_unref(a);
     gmaterial_unref(b);
@@ -228,10 +293,15 @@ static void test_reflection_is_diffuse(void **state)
         d = gmaterial_ref(c);
     }
     gcolor_free(&matrix);
-    GGenerator *t, *w;
+    GGenerator *t, *w, *h, *cells, *zero;
     assert_int_equal(ggen_gradient_create(GGENERATOR_SPACE_UV, gvec3(1, 0.3, 0), 0.0, &t, &err), G_OK);
     assert_int_equal(ggen_gradient_create(GGENERATOR_SPACE_OBJECT, gvec3(0.2, -0.1, 0), 0.5, &w, &err), G_OK);
-    GMaterial *kids[4] = {a, b, c, d}, *n[6];
+    GNoiseParams np = {.space = GGENERATOR_SPACE_OBJECT, .frequency = 2.0, .seed = 5};
+    assert_int_equal(ggen_perlin_create(&np, &h, &err), G_OK);            /* a bump's height */
+    assert_int_equal(ggen_checker_create(3, 1.0, &cells, &err), G_OK);    /* a factor 0 on half the points */
+    assert_int_equal(ggen_constant_create(0.0, &zero, &err), G_OK);
+    enum { NODES = 20 };
+    GMaterial *kids[4] = {a, b, c, d}, *n[NODES];
     assert_int_equal(gnode_interpolate_create(a, d, t, &n[0], &err), G_OK);
     assert_int_equal(gnode_interpolate_one_create(b, c, t, GNODE_NORMAL, &n[1], &err), G_OK);
     assert_int_equal(gnode_spline_create(kids, 4, w, GSPLINE_CATMULL_ROM, &n[2], &err), G_OK);
@@ -239,18 +309,63 @@ static void test_reflection_is_diffuse(void **state)
     assert_int_equal(gnode_select_create(kids, 4, w, &n[4], &err), G_OK);
     GMaterial *inner[3] = {n[0], n[2], n[4]};
     assert_int_equal(gnode_spline_create(inner, 3, t, GSPLINE_LINEAR, &n[5], &err), G_OK);
-    const GMaterial *all[] = {a, b, d, n[0], n[1], n[2], n[3], n[4], n[5]};
+    /* one-child nodes over a lambert (d: the matrix one in bispectral) and over the interpolate n[0] */
+    GAffine2 uv_rot = gaffine2_rotate(35.0), uv_scale = gaffine2_scale(0.4, 1.7);
+    GAffine2 uv_move = gaffine2_translate(0.25, -0.1), uv_turned = gaffine2_mul(&uv_scale, &uv_rot);
+    GAffine2 uv = gaffine2_mul(&uv_move, &uv_turned);
+    GAffine3 xyz_rot = gaffine3_rotate(gvec3(1, 1, 0), 40.0), xyz_scale = gaffine3_scale(gvec3(2, 0.5, 1));
+    GAffine3 xyz = gaffine3_mul(&xyz_scale, &xyz_rot);
+    assert_int_equal(gnode_bump_create(d, h, 0.8, &n[6], &err), G_OK);
+    assert_int_equal(gnode_bump_create(n[0], h, 3.0, &n[7], &err), G_OK); /* steep: some normals far off */
+    assert_int_equal(gnode_scale_create(d, w, &n[8], &err), G_OK);       /* factors in [-0.1, 1.1] */
+    assert_int_equal(gnode_scale_create(n[0], cells, &n[9], &err), G_OK); /* 0 or 1 */
+    assert_int_equal(gnode_scale_create(a, zero, &n[10], &err), G_OK);    /* black everywhere */
+    n[11] = image_over(d);
+    n[12] = image_over(n[0]);
+    assert_int_equal(gnode_transform_create(d, &uv, &xyz, &n[13], &err), G_OK);
+    assert_int_equal(gnode_transform_create(n[0], &uv, &xyz, &n[14], &err), G_OK);
+    assert_int_equal(gnode_transform_create(n[7], &uv, &xyz, &n[15], &err), G_OK); /* a bump's normal, moved */
+    /* a chain of all four over a spline, and a blend of one-child nodes */
+    assert_int_equal(gnode_scale_create(n[2], w, &n[16], &err), G_OK);
+    n[17] = image_over(n[16]);
+    assert_int_equal(gnode_bump_create(n[17], h, 1.5, &n[18], &err), G_OK);
+    GMaterial *ones[4] = {n[7], n[9], n[12], n[14]};
+    assert_int_equal(gnode_spline_create(ones, 4, t, GSPLINE_BSPLINE, &n[19], &err), G_OK);
+    GMaterial *chain;
+    assert_int_equal(gnode_transform_create(n[18], &uv, &xyz, &chain, &err), G_OK);
+    struct {
+        const GMaterial *m;
+        const char *what;
+        int min_lit; /* pairs that must reflect something (of 400) */
+    } all[] = {
+        {a, "lambert", 200}, {b, "lambert", 200}, {d, "lambert (matrix in bispectral)", 200},
+        {n[0], "interpolate", 200}, {n[1], "interpolate-one normal", 200}, {n[2], "spline object", 200},
+        {n[3], "spline uv", 200}, {n[4], "select", 200}, {n[5], "spline of nodes", 200},
+        {n[6], "bump over lambert", 200}, {n[7], "bump over interpolate", 200},
+        {n[8], "scale over lambert", 200}, {n[9], "scale 0 or 1 over interpolate", 100},
+        {n[10], "scale 0 over lambert", 0}, {n[11], "image over lambert", 150},
+        {n[12], "image over interpolate", 150}, {n[13], "transform over lambert", 200},
+        {n[14], "transform over interpolate", 200}, {n[15], "transform over bump", 200},
+        {chain, "transform(bump(image(scale(spline))))", 150}, {n[19], "spline of one-child nodes", 150},
+    };
     for (size_t i = 0; i < sizeof all / sizeof all[0]; i++) {
-        assert_true(lamb(all[i]));
+        if (!lamb(all[i].m))
+            fail_msg("%s %s: no GMAT_LAMBERTIAN", name, all[i].what);
         int lit;
-        double worst = worst_relative(all[i], scratch, 400, &lit);
-        print_message("%s %s: largest relative difference %.3g over %d lit pairs\n", name, gmaterial_name(all[i]),
-                      worst, lit);
-        assert_true(lit > 200); /* most pairs reflect something */
+        double worst = worst_relative(all[i].m, scratch, 400, &lit);
+        print_message("%s %s: largest relative difference %.3g over %d lit pairs\n", name, all[i].what, worst, lit);
+        if (lit < all[i].min_lit) /* most pairs reflect something */
+            fail_msg("%s %s: %d lit pairs, fewer than %d", name, all[i].what, lit, all[i].min_lit);
+        if (all[i].min_lit == 0)
+            assert_int_equal(lit, 0); /* the black scale: both sides black everywhere */
         assert_true(worst <= 1e-6);
     }
-    for (int i = 5; i >= 0; i--)
+    gmaterial_unref(chain);
+    for (int i = NODES - 1; i >= 0; i--)
         gmaterial_unref(n[i]);
+    ggenerator_unref(h);
+    ggenerator_unref(cells);
+    ggenerator_unref(zero);
     gmaterial_unref(a);
     gmaterial_unref(b);
     gmaterial_unref(c);
@@ -335,6 +450,31 @@ static void test_is_delta_skips_the_class(void **state)
     assert_int_equal(g->calls, 0); /* no pick, no generator */
     assert_int_equal(gtexblendnode_is_delta(node, &sp), 0); /* the class's own answer agrees */
     assert_int_equal(g->calls, 1);
+
+    /* the one-child nodes over a lambert and over that interpolate: is_delta 0 without a call, and their own slots
+     * (the child's answer, at the point or a moved copy) agree */
+    GGenerator *t;
+    assert_int_equal(ggen_gradient_create(GGENERATOR_SPACE_UV, gvec3(1, 0, 0), 0.0, &t, &err), G_OK);
+    GAffine2 uv = gaffine2_rotate(30.0);
+    GMaterial *one[8];
+    for (int i = 0; i < 2; i++) {
+        GMaterial *child = i ? node : a;
+        assert_int_equal(gnode_bump_create(child, t, 1.0, &one[4 * i], &err), G_OK);
+        assert_int_equal(gnode_scale_create(child, t, &one[4 * i + 1], &err), G_OK);
+        assert_int_equal(gnode_transform_create(child, &uv, NULL, &one[4 * i + 2], &err), G_OK);
+        one[4 * i + 3] = image_over(child);
+    }
+    for (int i = 0; i < 8; i++) {
+        GSurfPoint q;
+        plane_point(&q, rgb, scratch, 0.3, 0.4);
+        q.material = one[i];
+        assert_true(lamb(one[i]));
+        assert_int_equal(gmaterial_is_delta(one[i], &q), 0);
+        assert_int_equal(one[i]->cls->is_delta(one[i], &q), 0);
+    }
+    for (int i = 7; i >= 0; i--)
+        gmaterial_unref(one[i]);
+    ggenerator_unref(t);
     gmaterial_unref(node);
     gmaterial_unref(a);
     gmaterial_unref(b);
@@ -347,6 +487,10 @@ int main(void)
 {
     if (generic_register_builtins(NULL) != G_OK)
         return 1;
+    char dir[128];
+    if (tu_tempdir(dir, sizeof dir, "lambertian") != 0 ||
+        write_image(tu_in_dir(dir, "colours.ppm", image_path, sizeof image_path)) != 0)
+        return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_which_get_the_bit),
         {"test_reflection_is_diffuse (rgb)", test_reflection_is_diffuse, NULL, NULL, (void *)"rgb"},
@@ -355,5 +499,7 @@ int main(void)
         cmocka_unit_test(test_comparison_sees_a_glossy_lobe),
         cmocka_unit_test(test_is_delta_skips_the_class),
     };
-    return cmocka_run_group_tests(tests, NULL, NULL);
+    int failed = cmocka_run_group_tests(tests, NULL, NULL);
+    tu_rmtree(dir);
+    return failed;
 }

@@ -100,6 +100,9 @@ int gnode_bump_create(GMaterial *child, GGenerator *height, double strength, GMa
     Bump *b = (Bump *)mat;
     b->height = ggenerator_ref(height);
     b->strength = strength;
+    /* reflection and diffuse colour: the child's at sp itself, whose cached shading normal (the bumped one when the
+     * bump is the point's material) the child's gmat_cos_in reads as the node's does */
+    gtexnode_inherit_lambertian_child(&b->node.base, child);
     *out = &b->node.base;
     return G_OK;
 }

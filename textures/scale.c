@@ -129,6 +129,8 @@ int gnode_scale_create(GMaterial *child, GGenerator *factor, GMaterial **out, GE
     gtexnode_inherit_no_emission(&s->node.base, &child, 1); /* the child's emission times the factor */
     gtexnode_inherit_diagonal(&s->node.base, &child, 1);    /* the child's pass-on times the factor */
     gtexnode_inherit_no_uv(&s->node.base, &child, 1, factor); /* reads the point only through the factor */
+    /* reflection and diffuse colour: the child's at the same point times the same factor (both black at 0) */
+    gtexnode_inherit_lambertian_child(&s->node.base, child);
     *out = &s->node.base;
     return G_OK;
 }

@@ -262,6 +262,9 @@ int gnode_transform_create(GMaterial *child, const GAffine2 *uv, const GAffine3 
     gtexnode_inherit_diagonal(&t->base, &child, 1);    /* the child's pass-on at a moved point */
     /* the child's normal at a moved point that keeps the geometric normal (move() leaves it) */
     gtexnode_inherit_geometric_normal(&t->base, &child, 1);
+    /* reflection and diffuse colour: the child's at the moved copy, which carries sp's shading normal (move()
+     * computes it on sp first) and geometric normal, so the child's gmat_cos_in is the node's */
+    gtexnode_inherit_lambertian_child(&t->base, child);
     /* it moves (u, v) and the tangents for a child that, with the bit, never reads them */
     gtexnode_inherit_no_uv(&t->base, &child, 1, NULL);
     *out = &t->base;

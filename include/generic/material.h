@@ -97,10 +97,13 @@ enum {
      * times that sum over pi, where it would ask reflection() once per sample; gmaterial_is_delta answers 0
      * without calling the class. gmaterial_init cannot tell it from missing slots and never sets it: a class sets
      * it after gmaterial_init on the instances it holds for (lambert); the node kit sets it on a blend node whose
-     * pick gives the same blend for reflection as for diffuse when every child has it (node_kit.h). The same rules
-     * as for GMAT_NO_EMISSION: set only when it is true (`gmat check`'s lambertian property), clearing it is always
-     * safe. A bit added in the existing flags field like GMAT_GEOMETRIC_NORMAL: the interface version did not
-     * change for it, and a plug-in built before it simply never has it. */
+     * pick gives the same blend for reflection as for diffuse when every child has it (gtexnode_inherit_lambertian,
+     * node_kit.h), and on a one-child node whose reflection and diffuse colour are its child's times the same
+     * factor, at a point with sp's shading and geometric normals, when the child has it (bump, scale, image,
+     * transform: gtexnode_inherit_lambertian_child). The same rules as for GMAT_NO_EMISSION: set only when it is
+     * true (`gmat check`'s lambertian property), clearing it is always safe. A bit added in the existing flags field
+     * like GMAT_GEOMETRIC_NORMAL: the interface version did not change for it, and a plug-in built before it simply
+     * never has it. */
     GMAT_LAMBERTIAN = 8u,
     /** No method reads the surface's parametrisation: u, v, dpdu, dpdv, object_dpdu, object_dpdv, uv_footprint,
      * uv_axis1 and uv_axis2 (the point, the normals, the footprint, t and the surface index are read as ever). A

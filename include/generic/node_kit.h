@@ -104,8 +104,24 @@ GENERIC_API GENERIC_NODISCARD int gtexnode_children_lambertian(GMaterial *const 
  * knows, so gtexnode_new_checked never sets the bit: the class calls this after construction (interpolate, spline
  * and select, whose picks ignore the method; interpolate-one unless its one blended method is reflection or
  * diffuse). Never for a pick that answers the two methods differently: a wrong bit renders the diffuse blend where
- * the reflection blend belongs. One-child nodes (bump, scale, image, transform) do not get it. */
+ * the reflection blend belongs. It refuses any other class: one-child nodes (bump, scale, image, transform) get the
+ * bit from gtexnode_inherit_lambertian_child. */
 GENERIC_API void gtexnode_inherit_lambertian(GMaterial *node, GMaterial *const *children, int n);
+
+/** Sets GMAT_LAMBERTIAN on node when child has it (gtexnode_children_lambertian(&child, 1)): for a one-child node
+ * class whose reflection at sp is the child's reflection at a point q times a factor k, whose diffuse colour at sp
+ * is the child's diffuse colour at the same q times the same k, and whose is_delta is the child's (0 for a
+ * Lambertian child). q is sp itself or a copy of it that carries sp's shading normal (gsurfpoint_normal(sp),
+ * cached on sp before the copy) and its geometric normal, so that gmat_cos_in(q, ...) is gmat_cos_in(sp, ...); k
+ * is a number or a colour that is a vector (GCOLOR_VECTOR), never a re-radiation matrix: k * (d * light) is then
+ * (k * d) * light for the child's diffuse colour d, which a matrix k times a vector d is not. The node is then
+ * Lambertian: k * d * light * gmat_cos_in(sp) / pi. Only the class knows this, so it calls this after construction:
+ * bump (q = sp, k = 1: the child reads the shading normal cached on sp, the bumped one when the bump is the point's
+ * material, which is what gsurfpoint_normal(sp) gives), scale (k the factor; 0 makes both black), image (k the texel
+ * colour, when the image's primaries are vectors in the model) and transform (q the moved copy, k = 1). Never for a
+ * node whose reflection and diffuse colour differ otherwise (a tint of one alone, a point with another shading
+ * normal for the child): a wrong bit renders the diffuse colour where the reflection belongs. */
+GENERIC_API void gtexnode_inherit_lambertian_child(GMaterial *node, GMaterial *child);
 
 /** 1 when each of the n children has GMAT_DIAGONAL (material.h): a node whose reflection and refraction are sums
  * of its children's reflections and refractions of the same light, with weights and at points that do not depend

@@ -3,8 +3,10 @@
  * them does, one whose opacity is its children's is opaque everywhere when each of them is, one whose normal blends
  * its children's keeps the geometric normal when each of them does, so the dispatch answers it without a call; a
  * blend whose reflection and diffuse colour are the same blend of its children's is Lambertian when each of them
- * is, so a renderer reflects the light of all its samples at once; one whose reflection and refraction sum its
- * children's filters light sample by sample when each of them does (GMAT_DIAGONAL); and one that reads the point only through a
+ * is, so a renderer reflects the light of all its samples at once, and so is a one-child node whose reflection and
+ * diffuse colour are its child's times the same factor, at a point with the same normals (bump, scale, image,
+ * transform); one whose reflection and refraction sum its children's filters light sample by sample when each of
+ * them does (GMAT_DIAGONAL); and one that reads the point only through a
  * generator not in (u, v) space, over children that never read (u, v), lets the renderer skip the
  * parametrisation. */
 #include "generic/node_kit.h"
@@ -63,6 +65,12 @@ void gtexnode_inherit_lambertian(GMaterial *node, GMaterial *const *children, in
 {
     if (node && node->cls->reflection == gtexblendnode_reflection && node->cls->diffuse == gtexblendnode_diffuse &&
         gtexnode_children_lambertian(children, n))
+        node->flags |= GMAT_LAMBERTIAN;
+}
+
+void gtexnode_inherit_lambertian_child(GMaterial *node, GMaterial *child)
+{
+    if (node && child && node != child && gtexnode_children_lambertian(&child, 1))
         node->flags |= GMAT_LAMBERTIAN;
 }
 
