@@ -95,17 +95,6 @@ int gcolor_wrap(GColor *c, const GColorModel *m, float *storage, size_t nfloats)
     return G_OK;
 }
 
-int gcolor_scratch(GColor *c, const GColorModel *m, GScratch *s)
-{
-    float *v = gscratch_alloc(s, (size_t)m->capacity * sizeof(float));
-    if (!v) {
-        clear(c);
-        return G_ERR_NOMEM;
-    }
-    attach(c, m, v, GCOLOR_STORAGE_ARENA, m->capacity);
-    return G_OK;
-}
-
 int gcolor_scratch_uncleared(GColor *c, const GColorModel *m, GScratch *s)
 {
     float *v = gscratch_alloc(s, (size_t)m->capacity * sizeof(float));
@@ -115,6 +104,14 @@ int gcolor_scratch_uncleared(GColor *c, const GColorModel *m, GScratch *s)
     }
     attach_uncleared(c, m, v, GCOLOR_STORAGE_ARENA, m->capacity);
     return G_OK;
+}
+
+int gcolor_scratch(GColor *c, const GColorModel *m, GScratch *s)
+{
+    int rc = gcolor_scratch_uncleared(c, m, s);
+    if (rc == G_OK)
+        m->cls->black(m, c);
+    return rc;
 }
 
 int gcolor_alloc(GColor *c, const GColorModel *m)
