@@ -7,13 +7,13 @@
  *   geometric-normal  with GMAT_GEOMETRIC_NORMAL: the largest distance of the normal slot's vector from the
  *                geometric normal (a failed call counts as infinite); at most 1e-9 (rounding only);
  *   lambertian   with GMAT_LAMBERTIAN: over random pairs of directions (both on the side of the geometric normal
- *                mostly, one or both behind it else) and lights (white, and one of random samples), the class's
+ *                mostly, one or both behind it else) and lights (white, and gmat_random_light), the class's
  *                own reflection against its diffuse colour times the light times gmat_cos_in / pi: the largest
  *                difference over the largest value at a place (a failed call, or an is_delta slot that does not
  *                say 0, counts as infinite); at most 1e-5 (rounding: a blend sums its children's products);
  *   diagonal     with GMAT_DIAGONAL: over random directions out (on the side of the geometric normal mostly) and
- *                random lights (samples in [0.25, 1]; in a model with its own fill, whose vectors may not be plain
- *                samples, random linear sRGB colours), the class's own reflection of the light from random
+ *                random lights (gmat_random_light: values in [0.25, 1], each sample on its own, or a random spectrum
+ *                through a plug-in model's own conversion), the class's own reflection of the light from random
  *                directions (one or both behind the normal sometimes) and from the ideal reflection of out, and its
  *                refraction with the relative indices 1 and 1.5 (gcolor_fill) from across the surface, from the
  *                ideal refraction and sometimes from out's side, each against what the slot passes on of white (1
@@ -198,9 +198,8 @@ static double lambertian_at(GmatContext *ctx, GSurfPoint *sp, int below, int *ca
     for (int i = 0; i < LAMBERT_PAIRS && rc == G_OK; i++) {
         GVec3 g = sp->geometric_normal, n;
         GVec3 in = sphere_direction(&seed, g, i % 8 == 5 || i % 8 == 7), out = sphere_direction(&seed, g, i % 8 >= 6);
-        if (i % 2) { /* a light of random samples in [0.25, 1] */
-            for (int j = 0; j < ctx->model->nvalues; j++)
-                light.v[j] = (float)(0.25 + 0.75 * gmat_uniform(&seed));
+        if (i % 2) { /* a light of random values in [0.25, 1] */
+            rc = gmat_random_light(ctx->model, &seed, &light);
         } else {
             rc = gcolor_copy(&light, &ctx->white);
         }
@@ -256,22 +255,6 @@ typedef struct DiagonalWork {
     double diff[DIAG_KINDS], big[DIAG_KINDS];
 } DiagonalWork;
 
-/* A light of random samples in [0.25, 1]: a coloured light, which a material that moves light between samples
- * answers otherwise than white times it. Written as nvalues plain samples, as the lambertian check does; a model
- * that gives its own fill may read a vector otherwise, so there a random linear sRGB colour (three degrees of
- * freedom only: a mixing the three primaries cannot show goes unseen). */
-static int random_light(GmatContext *ctx, unsigned long long *seed, GColor *light)
-{
-    if (!ctx->model->cls->fill) {
-        for (int j = 0; j < ctx->model->nvalues; j++)
-            light->v[j] = (float)(0.25 + 0.75 * gmat_uniform(seed));
-        return G_OK;
-    }
-    double rgb[3];
-    for (int k = 0; k < 3; k++)
-        rgb[k] = 0.25 + 0.75 * gmat_uniform(seed);
-    return gcolor_from_rgb(light, rgb, GCOLOR_LIGHT);
-}
 
 /* Compares w->got with w->want sample by sample into comparison `kind` (a NaN difference: infinite); the values
  * are read as nvalues floats, as the lambertian check reads them. */
@@ -351,7 +334,7 @@ static double diagonal_at(GmatContext *ctx, GSurfPoint *sp, int below, int *call
     for (int i = 0; i < DIAGONAL_PAIRS && rc == G_OK; i++) {
         int out_behind = i % 8 >= 6; /* as the lambertian check: one or both behind the normal in 3 of 8 */
         GVec3 out = sphere_direction(&seed, g, out_behind);
-        rc = random_light(ctx, &seed, &w.light);
+        rc = gmat_random_light(ctx->model, &seed, &w.light); /* coloured: what moves light between samples shows */
         GVec3 in = pair_in(ctx, sp, &seed, out, NULL, i % 4 == 0, i % 8 == 5 || i % 8 == 7);
         if (rc == G_OK)
             rc = diagonal_pair(ctx, sp, in, out, NULL, &w, DIAG_REFLECTION, calls);

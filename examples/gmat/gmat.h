@@ -31,6 +31,10 @@ GVec3 gmat_direction(double theta_deg, double phi_deg);
 /** Deterministic uniform numbers in [0, 1) from the state *s (a small LCG: the checks draw the same pairs on every
  * run; measure.c). */
 double gmat_uniform(unsigned long long *s);
+/** A light of random values in [0.25, 1] (from *s) into light: each of m's nvalues samples drawn on its own when
+ * the library reads m's values as plain samples (no fill slot), else a random spectrum (a value every 10 nm)
+ * through m's own conversion from nm, so that a plug-in model's representation is respected (measure.c). */
+int gmat_random_light(const GColorModel *m, unsigned long long *s, GColor *light);
 /** Light reflected towards out for the unit white light arriving from in (into ctx->result). */
 int gmat_reflect(GmatContext *ctx, GVec3 in, GVec3 out);
 /** The ideal specular part for light from in: its direction and reflected colour (into ctx->result); 0 when the

@@ -36,6 +36,29 @@ double gmat_uniform(unsigned long long *s)
     return (double)(*s >> 11) * (1.0 / 9007199254740992.0);
 }
 
+int gmat_random_light(const GColorModel *m, unsigned long long *s, GColor *light)
+{
+    if (!m->cls->fill) { /* the library reads its values as plain samples: each one drawn on its own */
+        for (int j = 0; j < m->nvalues; j++)
+            light->v[j] = (float)(0.25 + 0.75 * gmat_uniform(s));
+        light->kind = GCOLOR_VECTOR;
+        return G_OK;
+    }
+    /* a model with its own representation: a random spectrum (a value every 10 nm, linear between) through its own
+     * conversion, 41 degrees of freedom */
+    enum { KNOTS = (GNM_COUNT - 1) / 10 + 1 };
+    double knot[KNOTS];
+    for (int k = 0; k < KNOTS; k++)
+        knot[k] = 0.25 + 0.75 * gmat_uniform(s);
+    GSpectrumNM nm;
+    for (int i = 0; i < GNM_COUNT; i++) {
+        int k = i / 10;
+        double f = (i % 10) / 10.0;
+        nm.v[i] = (float)(k + 1 < KNOTS ? knot[k] + f * (knot[k + 1] - knot[k]) : knot[k]);
+    }
+    return gcolor_from_nm(light, &nm, GCOLOR_LIGHT);
+}
+
 static const GColor *light(const GmatContext *ctx) { return ctx->light ? ctx->light : &ctx->white; }
 
 int gmat_reflect(GmatContext *ctx, GVec3 in, GVec3 out)
