@@ -173,7 +173,9 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
                 return rc;
             return gcolor_add(result, result, refl);
         }
-        return t->gather ? gcolor_add_scaled(&t->gathered, color, scale * cos_in) : gcolor_add(result, result, refl);
+        /* the factor rounded to float, as gcolor_scale rounds its own: the axpy then multiplies in float */
+        return t->gather ? gcolor_add_scaled(&t->gathered, color, (float)(scale * cos_in))
+                         : gcolor_add(result, result, refl);
     }
     if (t->blocked || occluded == OCCLUDED_OPAQUE)
         return G_OK; /* the walk below would end at that surface */

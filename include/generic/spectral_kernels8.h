@@ -221,13 +221,27 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 __m256 gspect
     return _mm256_add_ps(_mm256_loadu_ps(b), _mm256_insertf128_ps(_mm256_castps128_ps256(q0), q1, 1));
 }
 
-/** gspectral_kaxpyd on 8-float vectors. */
+/** gspectral_kaxpyd on 8-float vectors. When s is a float (it converts to float and back unchanged), each product
+ * is taken in float: a float times a float is exact in double, so its rounding to float is the float product, the
+ * same bits at a third of the instructions. */
 __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectral_kaxpyd8(float *o, double s,
                                                                                           const float *a,
                                                                                           const float *b, int n)
 {
     if (n < 8) {
         gspectral_kaxpyd(o, s, a, b, n);
+        return;
+    }
+    const float sf = (float)s;
+    if ((double)sf == s) {
+        gspectral_v8 sv = {sf, sf, sf, sf, sf, sf, sf, sf};
+        GSPECTRAL_KEEP8(sv);
+#define GSPECTRAL_AXPYF8_BLOCK(i, k)                                                                           \
+    gspectral_vstore8(o + (i) + (k), gspectral_vload8(b + (i) + (k)) + gspectral_vload8(a + (i) + (k)) * sv)
+        GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_AXPYF8_BLOCK);
+#undef GSPECTRAL_AXPYF8_BLOCK
+        GSPECTRAL_TAIL8(n, i)
+            o[i] = b[i] + a[i] * sf;
         return;
     }
     const __m256d sv = _mm256_set1_pd(s);
