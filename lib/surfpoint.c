@@ -60,9 +60,7 @@ void gsurfpoint_set_normal(GSurfPoint *sp, GVec3 n)
     sp->cached_flags |= HAVE_NORMAL;
 }
 
-/* The scalar relative index of the colour ri = n(from) / n(to): its brightness, as a renderer computes the
- * rel_index it hands to refraction(), so that reflection and refraction see the same eta; 1 when not positive. */
-static double scalar_index(const GColor *ri)
+double gsurfpoint_scalar_index(const GColor *ri)
 {
     double ratio = gcolor_brightness(ri);
     return ratio > 0.0 ? ratio : 1.0;
@@ -79,7 +77,7 @@ double gsurfpoint_relative_index(GSurfPoint *sp)
                 gcolor_scratch(&b, sp->model, sp->scratch) == G_OK &&
                 gmaterial_refraction_index(sp->from, sp, &a) == G_OK &&
                 gmaterial_refraction_index(sp->to, sp, &b) == G_OK && gcolor_div(&a, &a, &b) == G_OK)
-                r = scalar_index(&a);
+                r = gsurfpoint_scalar_index(&a);
             gscratch_release(sp->scratch, mark);
         }
         sp->cached_rel_index = r;
@@ -90,7 +88,7 @@ double gsurfpoint_relative_index(GSurfPoint *sp)
 
 void gsurfpoint_set_relative_index(GSurfPoint *sp, const GColor *ri)
 {
-    sp->cached_rel_index = scalar_index(ri);
+    sp->cached_rel_index = gsurfpoint_scalar_index(ri);
     sp->cached_flags |= HAVE_REL_INDEX;
 }
 

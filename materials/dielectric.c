@@ -105,10 +105,7 @@ static void dielectric_destroy(GMaterial *self)
 
 static double eta_of(GSurfPoint *sp, const GColor *rel_index)
 {
-    if (!rel_index)
-        return gsurfpoint_relative_index(sp);
-    double eta = gcolor_brightness(rel_index);
-    return eta > 0.0 ? eta : 1.0;
+    return rel_index ? gsurfpoint_scalar_index(rel_index) : gsurfpoint_relative_index(sp);
 }
 
 static int dielectric_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,

@@ -196,9 +196,11 @@ static void relative_index_case(const char *model_name)
     gsurfpoint_init(&bare, model, s);
     gsurfpoint_set_relative_index(&bare, &nf);
     assert_true(gsurfpoint_relative_index(&bare) == computed);
+    assert_true(gsurfpoint_scalar_index(&nf) == computed); /* the rule a material applies to its rel_index */
     gsurfpoint_invalidate(&bare); /* forgotten like any cached value: no media, about 1 */
     assert_true(fabs(gsurfpoint_relative_index(&bare) - 1.0) < 1e-6);
     gcolor_black(&nf); /* not positive: 1, as computed */
+    assert_true(gsurfpoint_scalar_index(&nf) == 1.0);
     gsurfpoint_set_relative_index(&bare, &nf);
     assert_true(gsurfpoint_relative_index(&bare) == 1.0);
     gcolor_free(&nf);

@@ -77,6 +77,10 @@ GENERIC_API void gsurfpoint_set_normal(GSurfPoint *sp, GVec3 n);
 /** Scalar relative refraction index n(from) / n(to) (luminance-weighted), computed once and cached: the
  * brightness of the ratio of the two materials' refraction_index colours (1 when that is not positive). */
 GENERIC_API double gsurfpoint_relative_index(GSurfPoint *sp);
+/** The scalar relative index of the colour ri = n(from) / n(to): its brightness, 1 when that is not positive. What
+ * gsurfpoint_relative_index caches, and what a material reads from the rel_index refraction() is handed, so that
+ * reflection and refraction see the same eta. */
+GENERIC_API double gsurfpoint_scalar_index(const GColor *ri);
 /** Caches the scalar relative index from ri, the colour n(from) / n(to) that a renderer computed for sp (as it
  * hands it to refraction()), so that gsurfpoint_relative_index gives the same value without the two
  * refraction_index calls and the division again. */
