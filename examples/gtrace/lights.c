@@ -163,24 +163,24 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
     Ray sr = {offset_origin(sp->point, facing, in), in, 0.0, dist * (1.0 - 1e-7), 0.0, 0.0};
     c->rays++;
     int occluded = accel_occluded(s, &sr);
+    const GMaterial *medium = NULL;
     if (occluded == OCCLUDED_CLEAR) {
-        const GMaterial *medium = gvec3_dot(in, facing) >= 0.0 ? sp->from : sp->to;
-        if (medium && isfinite(dist)) { /* the medium absorbs the reflected light: this sample on its own */
-            if (t->gather && ((rc = gcolor_scale(illum, color, scale)) < 0 ||
-                              (rc = gmaterial_reflection(sp->material, sp, in, illum, out_dir, refl)) < 0))
-                return rc;
-            if ((rc = gmaterial_absorption(medium, sp, refl, dist, tmp)) < 0 || (rc = gcolor_copy(refl, tmp)) < 0)
-                return rc;
-            return gcolor_add(result, result, refl);
-        }
-        /* the factor rounded to float, as gcolor_scale rounds its own: the axpy then multiplies in float */
-        return t->gather ? gcolor_add_scaled(&t->gathered, color, (float)(scale * cos_in))
-                         : gcolor_add(result, result, refl);
-    }
-    if (t->blocked || occluded == OCCLUDED_OPAQUE)
+        medium = gvec3_dot(in, facing) >= 0.0 ? sp->from : sp->to;
+        if (!medium || !isfinite(dist)) /* the light arrives as it left; gathered with the factor rounded to float,
+                                           * as gcolor_scale rounds its own: the axpy then multiplies in float */
+            return t->gather ? gcolor_add_scaled(&t->gathered, color, (float)(scale * cos_in))
+                             : gcolor_add(result, result, refl);
+    } else if (t->blocked || occluded == OCCLUDED_OPAQUE) {
         return G_OK; /* the walk below would end at that surface */
-    if (t->gather && (rc = gcolor_scale(illum, color, scale)) < 0)
+    }
+    if (t->gather && (rc = gcolor_scale(illum, color, scale)) < 0) /* the light itself, which gathering skipped */
         return rc;
+    if (occluded == OCCLUDED_CLEAR) { /* the medium absorbs the reflected light: this sample on its own */
+        if ((t->gather && (rc = gmaterial_reflection(sp->material, sp, in, illum, out_dir, refl)) < 0) ||
+            (rc = gmaterial_absorption(medium, sp, refl, dist, tmp)) < 0 || (rc = gcolor_copy(refl, tmp)) < 0)
+            return rc;
+        return gcolor_add(result, result, refl);
+    }
     int visible;
     if ((rc = transmit(c, sp, facing, media, in, dist, illum, &visible)) < 0 || !visible)
         return rc;

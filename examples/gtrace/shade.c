@@ -222,15 +222,13 @@ static int trace_secondary(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 faci
     rc = trace_ray(c, &ray, next, depth + 1, &illum);
     c->weight = saved;
     CHECK(rc);
-    if (diagonal) {
-        CHECK(gcolor_mul(&illum, &tmp, &illum));
-        CHECK(gcolor_add(out, out, &illum));
-        goto done;
+    if (diagonal) { /* its pass-on of 1 (the mask in it) times the ray's light */
+        CHECK(gcolor_mul(&tmp, &tmp, &illum));
+    } else {
+        CHECK(pass_on(m, sp, dir, &illum, ri, to_viewer, &tmp));
+        if (mask)
+            CHECK(gcolor_mul(&tmp, mask, &tmp));
     }
-    CHECK(trace_tmp(c, TRACE_TMP_PASS, &tmp));
-    CHECK(pass_on(m, sp, dir, &illum, ri, to_viewer, &tmp));
-    if (mask)
-        CHECK(gcolor_mul(&tmp, mask, &tmp));
     CHECK(gcolor_add(out, out, &tmp));
 done:
     gscratch_release(c->scratch, mark);
