@@ -72,13 +72,13 @@ static void clear(GColor *c)
     *c = (GColor){.model = NULL, .v = NULL, .kind = GCOLOR_VECTOR, .storage = GCOLOR_STORAGE_NONE, .capacity = 0};
 }
 
-/* Points c at v (at least m->capacity floats) and sets it to black. */
-/* Points c at v (uncleared). */
+/* Points c at v (at least m->capacity floats), its values as they are. */
 static void attach_uncleared(GColor *c, const GColorModel *m, float *v, GColorStorage storage, int capacity)
 {
     *c = (GColor){.model = m, .v = v, .kind = GCOLOR_VECTOR, .storage = storage, .capacity = capacity};
 }
 
+/* Points c at v (at least m->capacity floats) and sets it to black. */
 static void attach(GColor *c, const GColorModel *m, float *v, GColorStorage storage, int capacity)
 {
     attach_uncleared(c, m, v, storage, capacity);
@@ -138,7 +138,6 @@ static size_t value_floats(const GColor *c)
 {
     return (size_t)(c->kind == GCOLOR_MATRIX ? c->model->capacity : c->model->nvalues);
 }
-
 
 /* ---- operations ---- */
 

@@ -266,15 +266,6 @@ gspectral_vterm8_mask(GSpectralTerm t, gspectral_v8 a, gspectral_v8 b, gspectral
                                 : a * (gspectral_v8)((gspectral_v8i)b & abs);
 }
 
-/** The terms t of a and b on 8 lanes. */
-__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 gspectral_v8 gspectral_vterm8(GSpectralTerm t,
-                                                                                               gspectral_v8 a,
-                                                                                               gspectral_v8 b)
-{
-    const gspectral_v8i abs = GSPECTRAL_ABS8;
-    return gspectral_vterm8_mask(t, a, b, abs);
-}
-
 /** gspectral_vsum on 8-float vectors: the terms of the whole blocks added block after block into 8 lanes, folded
  * to the 4 lanes the 4-float version's two accumulators give. */
 __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 gspectral_v4
