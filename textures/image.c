@@ -219,7 +219,9 @@ int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptio
         return rc;
     }
     gtexnode_inherit_no_emission(&im->node.base, &child, 1); /* the child's emission times a finite texel */
-    if (im->basis[0].kind == GCOLOR_VECTOR && im->basis[1].kind == GCOLOR_VECTOR && im->basis[2].kind == GCOLOR_VECTOR) {
+    int vectors = im->basis[0].kind == GCOLOR_VECTOR && im->basis[1].kind == GCOLOR_VECTOR &&
+                  im->basis[2].kind == GCOLOR_VECTOR;
+    if (vectors) {
         gtexnode_inherit_diagonal(&im->node.base, &child, 1); /* the child's pass-on times a texel colour */
         /* reflection and diffuse colour: the child's at the same point times the same texel colour, a vector, so
          * texel * (diffuse * light) = (texel * diffuse) * light */

@@ -76,7 +76,8 @@ static void report_fn(void *k, const char *property, double worst, double tol, c
 /* A direction in the upper hemisphere at most 85 degrees from the normal. */
 static GVec3 random_direction(unsigned long long *s)
 {
-    double ct = cos(85.0 * M_PI / 180.0) + (1.0 - cos(85.0 * M_PI / 180.0)) * gmat_uniform(s), p = 2.0 * M_PI * gmat_uniform(s);
+    double ct = cos(85.0 * M_PI / 180.0) + (1.0 - cos(85.0 * M_PI / 180.0)) * gmat_uniform(s);
+    double p = 2.0 * M_PI * gmat_uniform(s);
     double st = sqrt(fmax(0.0, 1.0 - ct * ct));
     return gvec3(st * cos(p), st * sin(p), ct);
 }
