@@ -84,7 +84,17 @@ static GVec3 random_direction(unsigned long long *s)
 
 /* ---- albedo ---- */
 
-/* 1 when light in one sample leaves in another (checked at a few direction pairs, each sample alone). */
+/* 1 when the result holds light outside sample s (beyond rounding). */
+static int leaves_sample(const GColor *result, int nvalues, int s)
+{
+    for (int j = 0; j < nvalues; j++)
+        if (j != s && fabs(result->v[j]) > 1e-7 * fabs(result->v[s]) + 1e-12)
+            return 1;
+    return 0;
+}
+
+/* 1 when light in one sample leaves in another (checked at a few direction pairs and along the specular ray, each
+ * sample alone). */
 static int shifts_samples(Checker *k)
 {
     GmatContext *ctx = k->ctx;
@@ -99,11 +109,13 @@ static int shifts_samples(Checker *k)
         gcolor_black(&k->a);
         k->a.v[s] = 1.0f;
         ctx->light = &k->a;
-        for (int p = 0; p < 3 && !shifted; p++)
+        for (int p = 0; p < 3 && !shifted; p++) {
+            GVec3 dir;
             if (gmat_reflect(ctx, pairs[p][0], pairs[p][1]) == G_OK)
-                for (int j = 0; j < m->nvalues; j++)
-                    if (j != s && fabs(ctx->result.v[j]) > 1e-7 * fabs(ctx->result.v[s]) + 1e-12)
-                        shifted = 1;
+                shifted = leaves_sample(&ctx->result, m->nvalues, s);
+            if (!shifted && gmat_specular(ctx, pairs[p][0], &dir) == 1)
+                shifted = leaves_sample(&ctx->result, m->nvalues, s);
+        }
     }
     ctx->light = NULL;
     return shifted;

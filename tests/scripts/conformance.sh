@@ -22,7 +22,8 @@
 #     misuv_lambert, whose albedo follows u, which a wrong GMAT_NO_UV hides: no-uv alone; misdiag_lambert, whose
 #     grey response to coloured light a wrong GMAT_DIAGONAL hides: diagonal alone),
 #     and the example modules (examples/plugins/) must pass;
-#   - lambert and phong with a re-radiation matrix for a colour (bispectral) pass, the sampling weights included.
+#   - lambert, phong and mirror with a re-radiation matrix for a colour (bispectral) pass, the sampling weights
+#     included; light that moves between samples along the ideal ray alone is seen as re-radiation.
 SRC=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=$(cd "${1:-build}" 2> /dev/null && pwd) || { echo "FAIL: no build directory ${1:-build}"; exit 1; }
 GMAT="$BUILD/bin/gmat"
@@ -177,8 +178,10 @@ color dayglo reradiation { absorb_peak 470 absorb_width 115 absorb_shape 8 absor
 material matte lambert { reflectance dayglo }
 material glossy phong { diffuse dayglo specular rgb 0.04 0.04 0.04 exponent 30 }
 material mirrored phong { diffuse dayglo specular rgb 0.02 0.02 0.02 exponent 30 mirror rgb 0.03 0.03 0.03 }
+material shiny mirror { reflectance dayglo }
+material tinted phong { diffuse rgb 0.05 0.05 0.05 mirror dayglo }
 EOM
-for m in matte glossy mirrored; do
+for m in matte glossy mirrored shiny tinted; do
     "$GMAT" check "$TMP/matrix.mat" $m > "$TMP/log" 2>&1 || fail "$m with a re-radiation matrix: $(cat "$TMP/log")"
 done
 
