@@ -6,7 +6,9 @@
 #include <stddef.h>
 #include <string.h>
 
-enum { HAVE_NORMAL = 1u, HAVE_REL_INDEX = 2u };
+/* HAVE_REL_INDEX_COLOUR: the cached relative index was read from the colour at rel_index_values (set by
+ * gsurfpoint_set_relative_index, not computed by gsurfpoint_relative_index) */
+enum { HAVE_NORMAL = 1u, HAVE_REL_INDEX = 2u, HAVE_REL_INDEX_COLOUR = 4u };
 
 /* always inlined where the optimiser sees it (link-time optimisation of a renderer): the stores then merge with the
  * caller's, which overwrites most of them; an external definition all the same (surfpoint.h declares it) */
@@ -89,7 +91,15 @@ double gsurfpoint_relative_index(GSurfPoint *sp)
 void gsurfpoint_set_relative_index(GSurfPoint *sp, const GColor *ri)
 {
     sp->cached_rel_index = gsurfpoint_scalar_index(ri);
-    sp->cached_flags |= HAVE_REL_INDEX;
+    sp->rel_index_values = ri->v;
+    sp->cached_flags |= HAVE_REL_INDEX | HAVE_REL_INDEX_COLOUR;
+}
+
+double gsurfpoint_index_of(const GSurfPoint *sp, const GColor *ri)
+{
+    if ((sp->cached_flags & HAVE_REL_INDEX_COLOUR) && ri->v == sp->rel_index_values)
+        return sp->cached_rel_index;
+    return gsurfpoint_scalar_index(ri);
 }
 
 int gsurfpoint_cache_get(const GSurfPoint *sp, const void *key, double *value, GVec3 *gradient)

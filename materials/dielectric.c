@@ -105,7 +105,7 @@ static void dielectric_destroy(GMaterial *self)
 
 static double eta_of(GSurfPoint *sp, const GColor *rel_index)
 {
-    return rel_index ? gsurfpoint_scalar_index(rel_index) : gsurfpoint_relative_index(sp);
+    return rel_index ? gsurfpoint_index_of(sp, rel_index) : gsurfpoint_relative_index(sp);
 }
 
 static int dielectric_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,

@@ -197,8 +197,19 @@ static void relative_index_case(const char *model_name)
     gsurfpoint_set_relative_index(&bare, &nf);
     assert_true(gsurfpoint_relative_index(&bare) == computed);
     assert_true(gsurfpoint_scalar_index(&nf) == computed); /* the rule a material applies to its rel_index */
+    /* a material handed that colour reads the cached value (the renderer does not change it meanwhile: so the
+     * changed colour below still gives the set value); another colour is computed */
+    assert_true(gsurfpoint_index_of(&bare, &nf) == computed);
+    assert_true(gsurfpoint_index_of(&bare, &nt) == gsurfpoint_scalar_index(&nt));
+    assert_true(fabs(gsurfpoint_index_of(&bare, &nt) - 1.33) < 1e-6);
+    assert_int_equal(gcolor_scale(&nf, &nf, 2.0), G_OK);
+    assert_true(gsurfpoint_index_of(&bare, &nf) == computed);
     gsurfpoint_invalidate(&bare); /* forgotten like any cached value: no media, about 1 */
+    assert_true(fabs(gsurfpoint_index_of(&bare, &nf) - 2.0 * computed) < 1e-6);
     assert_true(fabs(gsurfpoint_relative_index(&bare) - 1.0) < 1e-6);
+    /* a value gsurfpoint_relative_index computed itself belongs to no colour */
+    assert_true(gsurfpoint_index_of(&bare, &nf) == gsurfpoint_scalar_index(&nf));
+    assert_int_equal(gcolor_scale(&nf, &nf, 0.5), G_OK);
     gcolor_black(&nf); /* not positive: 1, as computed */
     assert_true(gsurfpoint_scalar_index(&nf) == 1.0);
     gsurfpoint_set_relative_index(&bare, &nf);

@@ -63,6 +63,7 @@ typedef struct GSurfPoint {
     double uv_axis1[2], uv_axis2[2]; /**< the pixel footprint as an ellipse in (u,v): its two axes (du, dv), full
                                           widths, for anisotropic filtering (both zero = unknown: uv_footprint,
                                           isotropic, is used) */
+    const float *rel_index_values; /* private: the storage of the colour gsurfpoint_set_relative_index read */
 } GSurfPoint;
 
 /** Clears a surface point (all fields zero, caches empty) and sets its model and arena. */
@@ -85,6 +86,11 @@ GENERIC_API double gsurfpoint_scalar_index(const GColor *ri);
  * hands it to refraction()), so that gsurfpoint_relative_index gives the same value without the two
  * refraction_index calls and the division again. */
 GENERIC_API void gsurfpoint_set_relative_index(GSurfPoint *sp, const GColor *ri);
+/** The scalar relative index of ri for a material's refraction at sp: the cached value when ri is the colour last
+ * given to gsurfpoint_set_relative_index (the same storage), without computing it again; otherwise
+ * gsurfpoint_scalar_index(ri). A renderer that sets the relative index from a colour must therefore not change
+ * that colour's values while it shades the point (hand another colour to refraction() instead). */
+GENERIC_API double gsurfpoint_index_of(const GSurfPoint *sp, const GColor *ri);
 /** Looks up a value cached under key; 1 when found (value and gradient copied out, either may be NULL). */
 GENERIC_API GENERIC_NODISCARD int gsurfpoint_cache_get(const GSurfPoint *sp, const void *key, double *value, GVec3 *gradient);
 /** Caches a value under key (the oldest slot is reused when all are taken). */
