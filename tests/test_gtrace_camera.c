@@ -3,7 +3,8 @@
  * the 10-90 % width of the edge in the rendered image) and keeps an in-focus one sharp; the orthographic camera's
  * rays are parallel (a sphere's image keeps its size at every distance, the pinhole's shrinks as 1 / distance);
  * area lights with `visible on` are seen by camera rays as their radiance, in front of what is behind them,
- * hidden by what is in front, from their lit side only, and not at all by default. */
+ * hidden by what is in front, from their lit side only, and not at all by default; a pinhole camera's ray through a
+ * pixel's one sample is the one the renderer computes ahead. */
 #include "generic/builtins.h"
 #include "test_gtrace_common.h"
 
@@ -189,6 +190,50 @@ static void test_orthographic_parallel(void **state)
     assert_near(r.o.y, 2.0 - 2.0, 1e-12);
 }
 
+/* The renderer computes a row's camera rays ahead for one sample per pixel from a pinhole camera
+ * (camera_is_pinhole): that is exact only if such a camera's ray through the pixel's sample is camera_ray's through
+ * its centre, bit for bit, and draws nothing from the pixel's generator. A lens of non-zero aperture draws. */
+static void test_pinhole_rays_ahead(void **state)
+{
+    (void)state;
+    const int projections[4] = {CAMERA_PINHOLE, CAMERA_THINLENS, CAMERA_ORTHOGRAPHIC, CAMERA_THINLENS};
+    const double apertures[4] = {0.0, 0.0, 0.0, 0.2};
+    for (int k = 0; k < 4; k++) {
+        Camera c;
+        camera_defaults(&c);
+        c.projection = projections[k];
+        c.aperture = apertures[k];
+        c.from = gvec3(0.3, 1.2, 5);
+        c.at = gvec3(0.1, 0.5, -0.2);
+        c.focus_distance = 2.0;
+        camera_setup(&c, 37, 23);
+        assert_int_equal(camera_is_pinhole(&c), apertures[k] == 0.0);
+        int same = 0, drawn = 0;
+        for (int y = 0; y < 23; y++)
+            for (int x = 0; x < 37; x++) {
+                Rng rng, before;
+                rng_seed(&rng, (uint64_t)y * 37u + (uint64_t)x, 0x9e3779b97f4a7c15ULL);
+                before = rng;
+                double sx, sy;
+                pixel_sample(&rng, 0, 1, 0, NULL, &sx, &sy);
+                Ray a, b;
+                memset(&a, 0, sizeof a);
+                memset(&b, 0, sizeof b);
+                camera_ray_lens(&c, x + sx, y + sy, &rng, &a);
+                camera_ray(&c, x + 0.5, y + 0.5, &b);
+                same += memcmp(&a, &b, sizeof a) == 0;
+                drawn += memcmp(&rng, &before, sizeof rng) != 0;
+            }
+        if (apertures[k] == 0.0) {
+            assert_int_equal(same, 37 * 23);
+            assert_int_equal(drawn, 0);
+        } else {
+            assert_int_equal(drawn, 37 * 23);
+            assert_true(same < 37 * 23 / 2);
+        }
+    }
+}
+
 /* A visible rectangle light straight ahead of the camera, a grey background and an optional occluder. */
 static Scene *light_scene(int visible, int flip, int occluder)
 {
@@ -289,7 +334,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_thinlens_aperture0_is_pinhole), cmocka_unit_test(test_depth_of_field_blur),
         cmocka_unit_test(test_orthographic_parallel),         cmocka_unit_test(test_visible_area_lights),
-        cmocka_unit_test(test_camera_entries),
+        cmocka_unit_test(test_camera_entries),                cmocka_unit_test(test_pinhole_rays_ahead),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -83,10 +83,12 @@ static void lens_ray(const Camera *c, double x, double y, double lx, double ly, 
 
 void camera_ray(const Camera *c, double x, double y, Ray *r) { lens_ray(c, x, y, 0.0, 0.0, r); }
 
+int camera_is_pinhole(const Camera *c) { return !(c->projection == CAMERA_THINLENS && c->aperture > 0.0); }
+
 void camera_ray_lens(const Camera *c, double x, double y, Rng *rng, Ray *r)
 {
     double lx = 0.0, ly = 0.0;
-    if (c->projection == CAMERA_THINLENS && c->aperture > 0.0) {
+    if (!camera_is_pinhole(c)) {
         /* concentric map of the unit square onto the unit disc (Shirley and Chiu 1997): uniform by area */
         double a = 2.0 * rng_next(rng) - 1.0, b = 2.0 * rng_next(rng) - 1.0, rad, phi;
         if (a == 0.0 && b == 0.0) {

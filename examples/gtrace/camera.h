@@ -45,6 +45,9 @@ void camera_ray(const Camera *c, double x, double y, Ray *r);
 /** camera_ray through a random point of the lens (two numbers from rng, drawn only when the camera has a lens
  * of non-zero aperture: other cameras leave rng untouched and give camera_ray's ray). */
 void camera_ray_lens(const Camera *c, double x, double y, Rng *rng, Ray *r);
+/** 1 when camera_ray_lens draws nothing from rng (no lens, or one of zero aperture): its ray is camera_ray's, which
+ * a renderer may then compute ahead of the pixel. */
+int camera_is_pinhole(const Camera *c);
 /** The side of the jittered grid for n samples when n is a square above 1, else 0. */
 int strata_grid(int n);
 /** A random permutation of 0..n-1 (pairs the x and y strata of N-rooks sampling). */

@@ -34,10 +34,13 @@ typedef struct Worker {
     int *perm;
     uint64_t nonfinite, capped;
     GColor acc, sample;
+    Ray row[TILE]; /* the camera rays of a tile's row, computed ahead (render_row) */
     char apart[64]; /* keeps the next worker's fields, written per ray, off the cache line of these */
 } Worker;
 
-static int render_pixel(Worker *w, const Job *job, int x, int y)
+/* The pixel (x, y); ahead: its camera ray computed beforehand (one sample through the pixel's centre from a pinhole
+ * camera, as pixel_sample and camera_ray_lens give it), or NULL. */
+static int render_pixel(Worker *w, const Job *job, int x, int y, const Ray *ahead)
 {
     TraceCtx *c = &w->ctx;
     GColor *acc = &w->acc, *sample = &w->sample;
@@ -51,10 +54,14 @@ static int render_pixel(Worker *w, const Job *job, int x, int y)
     if (n > 1)
         gcolor_black(acc);
     for (int i = 0; i < n; i++) {
-        double sx, sy;
-        pixel_sample(&c->rng, i, n, grid, w->perm, &sx, &sy);
         Ray r;
-        camera_ray_lens(job->cam, x + sx, y + sy, &c->rng, &r);
+        if (ahead) {
+            r = *ahead;
+        } else {
+            double sx, sy;
+            pixel_sample(&c->rng, i, n, grid, w->perm, &sx, &sy);
+            camera_ray_lens(job->cam, x + sx, y + sy, &c->rng, &r);
+        }
         GScratchMark m2 = gscratch_mark(c->scratch);
         c->weight = 1.0;
         c->rays_left = job->max_rays;
@@ -104,6 +111,21 @@ static int render_pixel(Worker *w, const Job *job, int x, int y)
             rc = gcolor_at_wavelengths(pixel, GCOLOR_LIGHT, wv, (int)n);
     }
     return rc < 0 ? rc : G_OK;
+}
+
+/* The pixels x0 .. x1 - 1 of row y. With one sample per pixel from a pinhole camera the row's camera rays are
+ * computed first, all together: each one's square root and divisions then overlap the others' instead of delaying
+ * its pixel's first intersection test (the same rays, bit for bit). */
+static int render_row(Worker *w, const Job *job, int x0, int x1, int y)
+{
+    int ahead = job->spp == 1 && camera_is_pinhole(job->cam) && x1 - x0 <= TILE;
+    if (ahead)
+        for (int x = x0; x < x1; x++)
+            camera_ray(job->cam, x + 0.5, y + 0.5, &w->row[x - x0]);
+    int rc = G_OK;
+    for (int x = x0; x < x1 && rc == G_OK; x++)
+        rc = render_pixel(w, job, x, y, ahead ? &w->row[x - x0] : NULL);
+    return rc;
 }
 
 void render_tile_order(int n, int *order)
@@ -299,8 +321,7 @@ int renderer_region(Renderer *r, const int region[4], Progress *prog, GError *er
             int y1 = y0 + TILE < ry1 ? y0 + TILE : ry1;
             int rc = G_OK;
             for (int y = y0; y < y1 && rc == G_OK; y++)
-                for (int x = x0; x < x1 && rc == G_OK; x++)
-                    rc = render_pixel(w, &r->job, x, y);
+                rc = render_row(w, &r->job, x0, x1, y);
             if (rc != G_OK) {
 #pragma omp critical(gtrace_status)
                 {
