@@ -27,32 +27,33 @@ typedef struct Job {
     Media media0;
 } Job;
 
-/* One thread's state, kept from one region to the next: its context, the pixel's sample pairing, its counts, and
- * the pixel's two colours (heap, made with the worker: render_pixel does not nest). */
+/* One thread's state, kept from one region to the next: its context, the pixel's sample pairing, its counts, the
+ * colours of a tile row's pixels and the sample (heap, made with the worker: render_pixel does not nest). */
 typedef struct Worker {
     TraceCtx ctx;
     int *perm;
     uint64_t nonfinite, capped;
-    GColor acc, sample;
+    GColor pixel[TILE], sample;
     Ray row[TILE]; /* the camera rays of a tile's row, computed ahead (render_row) */
     char apart[64]; /* keeps the next worker's fields, written per ray, off the cache line of these */
 } Worker;
 
-/* The pixel (x, y); ahead: its camera ray computed beforehand (one sample through the pixel's centre from a pinhole
- * camera, as pixel_sample and camera_ray_lens give it), or NULL. */
-static int render_pixel(Worker *w, const Job *job, int x, int y, const Ray *ahead)
+/* The colour of pixel (x, y) into out (black when its one sample is not finite); ahead: its camera ray computed
+ * beforehand (one sample through the pixel's centre from a pinhole camera, as pixel_sample and camera_ray_lens give
+ * it), or NULL. */
+static int render_pixel(Worker *w, const Job *job, int x, int y, const Ray *ahead, GColor *out)
 {
     TraceCtx *c = &w->ctx;
-    GColor *acc = &w->acc, *sample = &w->sample;
-    /* with one sample, the pixel is the sample itself (black + s, divided by 1: s but for a zero's sign) */
-    const GColor *pixel = acc;
     int rc = G_OK;
     rng_seed(&c->rng, (uint64_t)y * (uint64_t)job->fb->full_width + (uint64_t)x, 0x9e3779b97f4a7c15ULL);
     int n = job->spp, grid = strata_grid(n);
     if (n > 1 && !grid)
         strata_shuffle(&c->rng, n, w->perm);
+    /* with one sample, the pixel is the sample itself, traced into out (black + s, divided by 1: s but for a
+     * zero's sign) */
+    GColor *sample = n == 1 ? out : &w->sample;
     if (n > 1)
-        gcolor_black(acc);
+        gcolor_black(out);
     for (int i = 0; i < n; i++) {
         Ray r;
         if (ahead) {
@@ -75,19 +76,25 @@ static int render_pixel(Worker *w, const Job *job, int x, int y, const Ray *ahea
             return rc;
         if (!gcolor_is_finite(sample)) {
             w->nonfinite++;
+            if (n == 1) /* the one sample dropped: black */
+                gcolor_black(out);
             continue;
         }
-        if (n == 1)
-            pixel = sample;
-        else if ((rc = gcolor_add(acc, acc, sample)) < 0)
+        if (n > 1 && (rc = gcolor_add(out, out, sample)) < 0)
             return rc;
     }
-    if (n > 1 && (rc = gcolor_scale(acc, acc, 1.0 / n)) < 0)
+    if (n > 1 && (rc = gcolor_scale(out, out, 1.0 / n)) < 0)
         return rc;
-    if (n == 1 && pixel == acc) /* the one sample was dropped: black */
-        gcolor_black(acc);
+    return G_OK;
+}
+
+/* Writes pixel (x, y) of the framebuffer from its colour: linear sRGB (black, and counted, when not finite) and, when
+ * the framebuffer keeps them, the values at its wavelengths. */
+static int store_pixel(Worker *w, const Job *job, int x, int y, const GColor *pixel)
+{
     double xyz[3], lin[3];
-    if ((rc = gcolor_to_xyz(pixel, GCOLOR_LIGHT, xyz)) < 0)
+    int rc = gcolor_to_xyz(pixel, GCOLOR_LIGHT, xyz);
+    if (rc < 0)
         return rc;
     gcie_xyz_to_rgb(xyz, lin);
     float *px = job->fb->pixels + 3 * ((size_t)(y - job->y0) * (size_t)job->fb->width + (size_t)(x - job->x0));
@@ -113,18 +120,22 @@ static int render_pixel(Worker *w, const Job *job, int x, int y, const Ray *ahea
     return rc < 0 ? rc : G_OK;
 }
 
-/* The pixels x0 .. x1 - 1 of row y. With one sample per pixel from a pinhole camera the row's camera rays are
- * computed first, all together: each one's square root and divisions then overlap the others' instead of delaying
- * its pixel's first intersection test (the same rays, bit for bit). */
+/* The pixels x0 .. x1 - 1 (at most TILE) of row y, in three passes, so that the short dependent chains at the two
+ * ends of a pixel's work overlap each other instead of stalling it: with one sample per pixel from a pinhole camera
+ * the row's camera rays first (a square root and divisions before the first intersection test); then the pixels'
+ * colours; then their conversions to the framebuffer (the conversion to XYZ waits for the whole trace). The same
+ * rays and values, bit for bit. */
 static int render_row(Worker *w, const Job *job, int x0, int x1, int y)
 {
-    int ahead = job->spp == 1 && camera_is_pinhole(job->cam) && x1 - x0 <= TILE;
+    int ahead = job->spp == 1 && camera_is_pinhole(job->cam);
     if (ahead)
         for (int x = x0; x < x1; x++)
             camera_ray(job->cam, x + 0.5, y + 0.5, &w->row[x - x0]);
     int rc = G_OK;
     for (int x = x0; x < x1 && rc == G_OK; x++)
-        rc = render_pixel(w, job, x, y, ahead ? &w->row[x - x0] : NULL);
+        rc = render_pixel(w, job, x, y, ahead ? &w->row[x - x0] : NULL, &w->pixel[x - x0]);
+    for (int x = x0; x < x1 && rc == G_OK; x++)
+        rc = store_pixel(w, job, x, y, &w->pixel[x - x0]);
     return rc;
 }
 
@@ -189,7 +200,8 @@ void renderer_destroy(Renderer *r)
     for (int i = 0; r->workers && i < r->nthreads; i++) {
         gcolor_free(&r->workers[i].ctx.unit);
         trace_ctx_free_temps(&r->workers[i].ctx);
-        gcolor_free(&r->workers[i].acc);
+        for (int k = 0; k < TILE; k++)
+            gcolor_free(&r->workers[i].pixel[k]);
         gcolor_free(&r->workers[i].sample);
         gmem_free(r->workers[i].perm);
         gscratch_destroy(r->workers[i].ctx.scratch);
@@ -218,9 +230,9 @@ static int set_wavelengths(Framebuffer *fb, const GColorModel *m, GError *err)
     return G_OK;
 }
 
-/* The colours a worker keeps in its arena from the start: the context's temporaries, 1, the pixel and the sample
- * (there, not on the heap, so that two workers' colours never share a cache line). */
-#define WORKER_COLOURS (TRACE_TMP_COUNT + 3)
+/* The colours a worker keeps in its arena from the start: the context's temporaries, 1, a tile row's pixels and the
+ * sample (there, not on the heap, so that two workers' colours never share a cache line). */
+#define WORKER_COLOURS (TRACE_TMP_COUNT + TILE + 2)
 
 /* A worker's arena: its own colours and room for 32 colours a bounce down to the deepest one (a bounce holds a handful: the shading
  * point's, its lights', its textures'), so that it need not grow while rendering, where a new depth reached would
@@ -273,8 +285,9 @@ int renderer_create(Renderer **out, const Scene *s, const RenderSettings *rs, Fr
         w->perm = gmem_alloc((size_t)rs->spp * sizeof(int));
         ok = w->ctx.scratch && w->perm && gcolor_scratch(&w->ctx.unit, s->model, w->ctx.scratch) == G_OK &&
              gmaterial_refraction_index(NULL, NULL, &w->ctx.unit) == G_OK && trace_ctx_temps(&w->ctx) == G_OK &&
-             gcolor_scratch(&w->acc, s->model, w->ctx.scratch) == G_OK &&
              gcolor_scratch(&w->sample, s->model, w->ctx.scratch) == G_OK;
+        for (int k = 0; ok && k < TILE; k++)
+            ok = gcolor_scratch(&w->pixel[k], s->model, w->ctx.scratch) == G_OK;
     }
     if (ok && rs->waves && (rc = set_wavelengths(fb, s->model, err)) != G_OK) {
         framebuffer_free(fb);
