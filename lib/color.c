@@ -103,6 +103,12 @@ int gcolor_scratch_uncleared(GColor *c, const GColorModel *m, GScratch *s)
         return G_ERR_NOMEM;
     }
     attach_uncleared(c, m, v, GCOLOR_STORAGE_ARENA, m->capacity);
+#ifdef __SANITIZE_ADDRESS__
+    /* sanitizer builds: a NaN in every value, so that a caller that reads before writing makes non-finite results
+     * (which renders count and tests see) instead of quietly reusing old values, which no sanitizer reports */
+    for (int i = 0; i < m->capacity; i++)
+        v[i] = NAN;
+#endif
     return G_OK;
 }
 

@@ -584,7 +584,11 @@ static void test_scratch_uncleared(void **state)
         assert_int_equal(b.kind, GCOLOR_VECTOR);
         assert_int_equal(b.storage, GCOLOR_STORAGE_ARENA);
         assert_int_equal(b.capacity, m->capacity);
+#ifdef __SANITIZE_ADDRESS__
+        assert_true(isnan(b.v[0]) && isnan(b.v[m->capacity - 1])); /* poisoned: a read before the write shows */
+#else
         assert_true(fabs(gcolor_brightness(&b) - 0.25) < 1e-6); /* not cleared */
+#endif
         gscratch_release(s, mark);
         assert_int_equal(gcolor_scratch(&b, m, s), G_OK);
         assert_ptr_equal(b.v, a.v);

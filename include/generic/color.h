@@ -192,7 +192,8 @@ GENERIC_API GENERIC_NODISCARD int gcolor_wrap(GColor *c, const GColorModel *m, f
 GENERIC_API GENERIC_NODISCARD int gcolor_scratch(GColor *c, const GColorModel *m, GScratch *s);
 /** gcolor_scratch without setting the colour to black: its values are whatever the arena held (a vector of
  * unspecified samples), for a colour that the caller's next operation writes in full (a material method's
- * result, the out of an operation): a renderer's per-ray temporaries save the black's stores. */
+ * result, the out of an operation): a renderer's per-ray temporaries save the black's stores. In a build with
+ * AddressSanitizer the values are NaN, so that a read before the write shows as non-finite results. */
 GENERIC_API GENERIC_NODISCARD int gcolor_scratch_uncleared(GColor *c, const GColorModel *m, GScratch *s);
 /** Gives c heap storage (GCOLOR_STORAGE_HEAP, for long-lived values) and sets it to black; G_ERR_NOMEM, with
  * c cleared, when out of memory. */
