@@ -220,10 +220,12 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
     GScratchMark mark = gscratch_mark(c->scratch);
     GColor ri, rg, tmp, weight, illum;
     int rc = G_OK, opaque, delta, valid;
-    CHECK(gcolor_scratch(&rg, s->model, c->scratch));
-    CHECK(gcolor_scratch(&tmp, s->model, c->scratch));
+    /* written in full before they are read (the group's index by its fill, the others as an operation's out; the
+     * bounce's light by path_radiance): not cleared. The sample's weight is read even when no sample is drawn. */
+    CHECK(gcolor_scratch_uncleared(&rg, s->model, c->scratch));
+    CHECK(gcolor_scratch_uncleared(&tmp, s->model, c->scratch));
     CHECK(gcolor_scratch(&weight, s->model, c->scratch));
-    CHECK(gcolor_scratch(&illum, s->model, c->scratch));
+    CHECK(gcolor_scratch_uncleared(&illum, s->model, c->scratch));
     CHECK(trace_relative_index(c, sp, &ri));
     CHECK(gmaterial_emission(m, sp, to_viewer, out));
     opaque = gmaterial_opaque(m, sp);
@@ -356,7 +358,7 @@ static int path_radiance(PathCtx *p, const Ray *r, const Media *media, int depth
         if (medium) {
             GScratchMark mark = gscratch_mark(c->scratch);
             GColor tmp;
-            if ((rc = gcolor_scratch(&tmp, s->model, c->scratch)) == G_OK &&
+            if ((rc = gcolor_scratch_uncleared(&tmp, s->model, c->scratch)) == G_OK && /* absorption's out */
                 (rc = gmaterial_absorption(medium, NULL, out, t_l, &tmp)) == G_OK)
                 rc = gcolor_copy(out, &tmp);
             gscratch_release(c->scratch, mark);
