@@ -23,6 +23,7 @@ typedef struct Job {
     const Camera *cam;
     Framebuffer *fb;
     int spp, depth, max_rays, integrator;
+    int grid; /* strata_grid(spp): the pixel's samples on a grid of grid x grid strata (0: not a square) */
     int x0, y0; /* the crop's origin in the full image */
     Media media0;
 } Job;
@@ -46,7 +47,7 @@ static int render_pixel(Worker *w, const Job *job, int x, int y, const Ray *ahea
     TraceCtx *c = &w->ctx;
     int rc = G_OK;
     rng_seed(&c->rng, (uint64_t)y * (uint64_t)job->fb->full_width + (uint64_t)x, 0x9e3779b97f4a7c15ULL);
-    int n = job->spp, grid = strata_grid(n);
+    int n = job->spp, grid = job->grid;
     if (n > 1 && !grid)
         strata_shuffle(&c->rng, n, w->perm);
     /* with one sample, the pixel is the sample itself, traced into out (black + s, divided by 1: s but for a
@@ -268,9 +269,9 @@ int renderer_create(Renderer **out, const Scene *s, const RenderSettings *rs, Fr
     fb->height = (cropped ? rs->crop[3] : rs->height) - fb->y;
     fb->full_width = rs->width;
     fb->full_height = rs->height;
-    r->job = (Job){.scene = s, .cam = &r->cam, .fb = fb, .spp = rs->spp, .depth = rs->depth,
-                   .max_rays = rs->max_rays > 0 ? rs->max_rays : RENDER_DEFAULT_MAX_RAYS, .x0 = fb->x, .y0 = fb->y,
-                   .integrator = rs->integrator};
+    r->job = (Job){.scene = s, .cam = &r->cam, .fb = fb, .spp = rs->spp, .grid = strata_grid(rs->spp),
+                   .depth = rs->depth, .max_rays = rs->max_rays > 0 ? rs->max_rays : RENDER_DEFAULT_MAX_RAYS,
+                   .x0 = fb->x, .y0 = fb->y, .integrator = rs->integrator};
     if (s->medium) {
         r->job.media0.m[0] = s->medium;
         r->job.media0.n = 1;
