@@ -54,25 +54,31 @@ static int interface_transmit(GSurfPoint *hp, GVec3 dir, const GColor *light, GC
     GSurfPoint other;
     GSurfPoint *at = hp;
     GVec3 view = dir, to_light;
-    if (gcolor_brightness(ri) > 1.0) { /* leaving a denser medium: the point seen from the thinner side */
+    /* the relative index set on the point the material is asked at (n(from) / n(to) there): its scalar is taken
+     * once, and the colour is not changed while the point is used */
+    gsurfpoint_set_relative_index(hp, ri);
+    const GColor *ri_at = ri;
+    if (gsurfpoint_relative_index(hp) > 1.0) { /* leaving a denser medium: the point seen from the thinner side */
         other = *hp;
         other.geometric_normal = gvec3_neg(hp->geometric_normal);
         other.entering = !hp->entering;
         other.from = hp->to;
         other.to = hp->from;
         gsurfpoint_invalidate(&other);
-        if ((rc = gcolor_div(ri, nt, nf)) < 0)
+        if ((rc = gcolor_div(nf, nt, nf)) < 0) /* n(to) / n(from) of hp, in nf's storage */
             return rc;
+        gsurfpoint_set_relative_index(&other, nf);
+        ri_at = nf;
         at = &other;
         view = gvec3_neg(dir);
     }
-    int valid = gmaterial_refraction_dir(at->material, at, view, ri, &to_light);
+    int valid = gmaterial_refraction_dir(at->material, at, view, ri_at, &to_light);
     if (valid <= 0)
         return valid;
     if (at == hp)
-        rc = gmaterial_refraction(hp->material, hp, to_light, light, ri, gvec3_neg(dir), out);
+        rc = gmaterial_refraction(hp->material, hp, to_light, light, ri_at, gvec3_neg(dir), out);
     else /* reciprocity: the same pair with the light entering from dir */
-        rc = gmaterial_refraction(at->material, at, to_light, light, ri, dir, out);
+        rc = gmaterial_refraction(at->material, at, to_light, light, ri_at, dir, out);
     return rc < 0 ? rc : 1;
 }
 
