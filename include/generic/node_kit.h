@@ -1,7 +1,7 @@
-/* node_kit.h - what texture nodes are built from (textures/node_common.c), for the built-in nodes and for
- * nodes of one's own: construction with checks of the children, weighted blends of children for every material
- * method (interpolate, spline, select), colour temporaries, pass-through methods of one-child nodes (bump,
- * scale, image) and the state of nodes over a list of children. */
+/* node_kit.h - what texture nodes are built from (lib/kit/node_kit.c, node_blend.c and node_flags.c), for the
+ * built-in nodes and for nodes of one's own: construction with checks of the children, weighted blends of
+ * children for every material method (interpolate, spline, select), colour temporaries, pass-through methods of
+ * one-child nodes (bump, scale, image) and the state of nodes over a list of children. */
 #ifndef GENERIC_NODE_KIT_H
 #define GENERIC_NODE_KIT_H
 

@@ -1,0 +1,293 @@
+/* node_blend.c - the node kit's weighted blends of children (generic/node_kit.h): every material method of a
+ * GTexBlend, the colours summed with the children's weights, the directions and normals summed and normalised,
+ * and sampling as a mixture of the children. The blend nodes' methods (lib/kit/node_kit.c) pick a blend and
+ * call these. */
+#include "generic/node_kit.h"
+#include "generic/material_kit.h" /* gmat_pick_lobe */
+
+#include <math.h>
+
+void gtexblend_pair(GTexBlend *b, const GMaterial *a, const GMaterial *c, double t)
+{
+    if (!(t > 0.0)) { /* also NaN */
+        b->n = 1;
+        b->m[0] = a;
+        b->w[0] = 1.0;
+    } else if (t >= 1.0) {
+        b->n = 1;
+        b->m[0] = c;
+        b->w[0] = 1.0;
+    } else {
+        b->n = 2;
+        b->m[0] = a;
+        b->w[0] = 1.0 - t;
+        b->m[1] = c;
+        b->w[1] = t;
+    }
+}
+
+void gtexblend_one(GTexBlend *b, const GMaterial *m)
+{
+    b->n = 1;
+    b->m[0] = m;
+    b->w[0] = 1.0;
+}
+
+/* ---- colour methods: the children's results summed with their weights into the result (through an
+ * accumulator when the result is also an input colour) ---- */
+
+typedef struct ColorCall {
+    int method; /* a GNodeMethod */
+    GVec3 in, out;
+    const GColor *illum, *rel_index;
+    double length;
+} ColorCall;
+
+static int call_color(const GMaterial *m, GSurfPoint *sp, const ColorCall *c, GColor *r)
+{
+    switch (c->method) {
+    case GNODE_REFLECTION: return gmaterial_reflection(m, sp, c->in, c->illum, c->out, r);
+    case GNODE_REFRACTION: return gmaterial_refraction(m, sp, c->in, c->illum, c->rel_index, c->out, r);
+    case GNODE_REFRACTION_INDEX: return gmaterial_refraction_index(m, sp, r);
+    case GNODE_EMISSION: return gmaterial_emission(m, sp, c->out, r);
+    case GNODE_AMBIENT: return gmaterial_ambient(m, sp, c->illum, r);
+    case GNODE_ABSORPTION: return gmaterial_absorption(m, sp, c->illum, c->length, r);
+    default: return gmaterial_diffuse(m, sp, r);
+    }
+}
+
+static int blend_color(const GTexBlend *b, GSurfPoint *sp, const ColorCall *c, GColor *result)
+{
+    if (b->n == 1)
+        return call_color(b->m[0], sp, c, result);
+    /* the first child goes straight into the result unless the result is also an input */
+    int alias = (c->illum && c->illum->v == result->v) || (c->rel_index && c->rel_index->v == result->v);
+    GTexTemps t;
+    gtextemps_init(&t);
+    GColor acc, tmp;
+    int rc = G_OK;
+    if (alias)
+        rc = gtextemps_color(&t, sp, result->model, 0, &acc);
+    else
+        acc = *result;
+    if (rc == G_OK)
+        rc = gtextemps_color(&t, sp, result->model, 1, &tmp);
+    int first = 1;
+    for (int i = 0; i < b->n && rc == G_OK; i++) {
+        if (b->w[i] == 0.0)
+            continue;
+        if (first) {
+            rc = call_color(b->m[i], sp, c, &acc);
+            if (rc == G_OK && b->w[i] != 1.0)
+                rc = gcolor_scale(&acc, &acc, b->w[i]);
+            first = 0;
+        } else {
+            rc = call_color(b->m[i], sp, c, &tmp);
+            if (rc == G_OK)
+                rc = gcolor_add_scaled(&acc, &tmp, b->w[i]);
+        }
+    }
+    if (rc == G_OK && alias)
+        rc = gcolor_copy(result, &acc);
+    else if (rc == G_OK)
+        result->kind = acc.kind;
+    gtextemps_release(&t);
+    return rc;
+}
+
+int gtexblend_reflection(const GTexBlend *b, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
+                         GColor *result)
+{
+    ColorCall c = {.method = GNODE_REFLECTION, .in = in, .out = out, .illum = illum};
+    return blend_color(b, sp, &c, result);
+}
+
+int gtexblend_refraction(const GTexBlend *b, GSurfPoint *sp, GVec3 in, const GColor *illum, const GColor *rel_index,
+                         GVec3 out, GColor *result)
+{
+    ColorCall c = {.method = GNODE_REFRACTION, .in = in, .out = out, .illum = illum, .rel_index = rel_index};
+    return blend_color(b, sp, &c, result);
+}
+
+int gtexblend_refraction_index(const GTexBlend *b, GSurfPoint *sp, GColor *result)
+{
+    ColorCall c = {.method = GNODE_REFRACTION_INDEX};
+    return blend_color(b, sp, &c, result);
+}
+
+int gtexblend_emission(const GTexBlend *b, GSurfPoint *sp, GVec3 out, GColor *result)
+{
+    ColorCall c = {.method = GNODE_EMISSION, .out = out};
+    return blend_color(b, sp, &c, result);
+}
+
+int gtexblend_ambient(const GTexBlend *b, GSurfPoint *sp, const GColor *illum, GColor *result)
+{
+    ColorCall c = {.method = GNODE_AMBIENT, .illum = illum};
+    return blend_color(b, sp, &c, result);
+}
+
+int gtexblend_absorption(const GTexBlend *b, GSurfPoint *sp, const GColor *illum, double length, GColor *result)
+{
+    ColorCall c = {.method = GNODE_ABSORPTION, .illum = illum, .length = length};
+    return blend_color(b, sp, &c, result);
+}
+
+int gtexblend_diffuse(const GTexBlend *b, GSurfPoint *sp, GColor *result)
+{
+    ColorCall c = {.method = GNODE_DIFFUSE};
+    return blend_color(b, sp, &c, result);
+}
+
+/* ---- vectors: the weighted sum of the valid children's vectors, normalised; with one valid child its own
+ * vector; when the sum vanishes (opposite vectors) the valid child of largest weight ---- */
+
+typedef struct DirCall {
+    int method; /* GNODE_REFLECTION_DIR, GNODE_REFRACTION_DIR or GNODE_NORMAL */
+    GVec3 view;
+    const GColor *rel_index;
+} DirCall;
+
+static int call_dir(const GMaterial *m, GSurfPoint *sp, const DirCall *c, GVec3 *d)
+{
+    switch (c->method) {
+    case GNODE_REFLECTION_DIR: return gmaterial_reflection_dir(m, sp, c->view, d);
+    case GNODE_REFRACTION_DIR: return gmaterial_refraction_dir(m, sp, c->view, c->rel_index, d);
+    default: {
+        int rc = gmaterial_normal(m, sp, d);
+        return rc < 0 ? rc : 1;
+    }
+    }
+}
+
+static int blend_dir(const GTexBlend *b, GSurfPoint *sp, const DirCall *c, GVec3 *dir)
+{
+    if (b->n == 1)
+        return call_dir(b->m[0], sp, c, dir);
+    GVec3 sum = gvec3(0, 0, 0), best = sum;
+    double best_w = -INFINITY;
+    int valid = 0;
+    for (int i = 0; i < b->n; i++) {
+        if (b->w[i] == 0.0)
+            continue;
+        GVec3 d;
+        int rc = call_dir(b->m[i], sp, c, &d);
+        if (rc < 0)
+            return rc;
+        if (rc == 0)
+            continue;
+        valid++;
+        sum = gvec3_madd(sum, d, b->w[i]);
+        if (b->w[i] > best_w) {
+            best_w = b->w[i];
+            best = d;
+        }
+    }
+    if (valid == 0)
+        return 0;
+    if (valid == 1) {
+        *dir = best;
+        return 1;
+    }
+    double len = gvec3_length(sum);
+    *dir = len > 1e-12 ? gvec3_scale(sum, 1.0 / len) : best;
+    return 1;
+}
+
+int gtexblend_reflection_dir(const GTexBlend *b, GSurfPoint *sp, GVec3 view, GVec3 *dir)
+{
+    DirCall c = {.method = GNODE_REFLECTION_DIR, .view = view};
+    return blend_dir(b, sp, &c, dir);
+}
+
+int gtexblend_refraction_dir(const GTexBlend *b, GSurfPoint *sp, GVec3 view, const GColor *rel_index, GVec3 *dir)
+{
+    DirCall c = {.method = GNODE_REFRACTION_DIR, .view = view, .rel_index = rel_index};
+    return blend_dir(b, sp, &c, dir);
+}
+
+int gtexblend_normal(const GTexBlend *b, GSurfPoint *sp, GVec3 *n)
+{
+    DirCall c = {.method = GNODE_NORMAL};
+    int rc = blend_dir(b, sp, &c, n);
+    return rc < 0 ? rc : G_OK;
+}
+
+int gtexblend_opaque(const GTexBlend *b, GSurfPoint *sp)
+{
+    for (int i = 0; i < b->n; i++)
+        if (b->w[i] != 0.0 && !gmaterial_opaque(b->m[i], sp))
+            return 0;
+    return 1;
+}
+
+/* ---- sampling: a mixture of the children ---- */
+
+/* The selection probability of each child: |w_i| / sum |w_j|. */
+static double blend_probs(const GTexBlend *b, double q[GTEX_BLEND_MAX])
+{
+    double total = 0.0;
+    for (int i = 0; i < b->n; i++)
+        total += fabs(b->w[i]);
+    for (int i = 0; i < b->n; i++)
+        q[i] = total > 0.0 ? fabs(b->w[i]) / total : 0.0;
+    return total;
+}
+
+double gtexblend_pdf(const GTexBlend *b, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
+{
+    if (b->n == 1)
+        return gmaterial_pdf(b->m[0], sp, in, out, rel_index);
+    double q[GTEX_BLEND_MAX], pdf = 0.0;
+    blend_probs(b, q);
+    for (int i = 0; i < b->n; i++)
+        if (q[i] > 0.0)
+            pdf += q[i] * gmaterial_pdf(b->m[i], sp, in, out, rel_index);
+    return pdf;
+}
+
+int gtexblend_sample(const GTexBlend *b, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1, double u2,
+                     GMaterialSample *s, GColor *weight)
+{
+    if (b->n == 1)
+        return gmaterial_sample(b->m[0], sp, out, rel_index, u1, u2, s, weight);
+    double q[GTEX_BLEND_MAX], p;
+    if (!(blend_probs(b, q) > 0.0))
+        return 0;
+    int i = gmat_pick_lobe(q, b->n, &u1, &p);
+    int rc = gmaterial_sample(b->m[i], sp, out, rel_index, u1, u2, s, weight);
+    if (rc <= 0)
+        return rc;
+    if (s->flags & GSAMPLE_DELTA) { /* the child's ideal lobe, weighted as in the blend */
+        s->pdf *= q[i];
+        rc = gcolor_scale(weight, weight, b->w[i] / q[i]);
+        return rc ? rc : 1;
+    }
+    s->pdf = gtexblend_pdf(b, sp, s->in, out, rel_index);
+    if (!(s->pdf > 0.0)) {
+        gcolor_black(weight);
+        return 0;
+    }
+    /* the blend's own value of white light along the direction, over the mixture's density */
+    GTexTemps t;
+    gtextemps_init(&t);
+    GColor white;
+    rc = gtextemps_color(&t, sp, weight->model, 0, &white);
+    if (rc == G_OK)
+        rc = gcolor_fill(&white, 1.0);
+    if (rc == G_OK)
+        rc = s->flags & GSAMPLE_TRANSMIT ? gtexblend_refraction(b, sp, s->in, &white, rel_index, out, weight)
+                                          : gtexblend_reflection(b, sp, s->in, &white, out, weight);
+    if (rc == G_OK)
+        rc = gcolor_scale(weight, weight, 1.0 / s->pdf);
+    gtextemps_release(&t);
+    return rc ? rc : 1;
+}
+
+int gtexblend_is_delta(const GTexBlend *b, GSurfPoint *sp)
+{
+    for (int i = 0; i < b->n; i++)
+        if (b->w[i] != 0.0 && !gmaterial_is_delta(b->m[i], sp))
+            return 0;
+    return 1;
+}
