@@ -15,6 +15,12 @@
  *     of -out within the same 1e-6 tolerance in cosine): the perfect specular case of the paper, where
  *     `illum` is the radiance traced along the ideal ray and the result is that radiance times the
  *     specular reflectance or transmittance;
+ *   - a material that sums others (a texture node blending its children, node_kit.h) keeps the rule at a pair
+ *     aligned with its own ideal ray: only the parts that have an ideal ray of their own there answer
+ *     (reflection_dir, or refraction_dir, returns 1 for them), each with its own aligned case; a part without
+ *     one (lambert, a Phong lobe without `mirror`, the fluorescent materials) has no delta part, and its BRDF
+ *     value, a density, adds nothing there. Where the sum has no ideal ray every part is an ordinary BRDF, and
+ *     all are summed;
  *   - the surface point must have its geometric normal set, and an arena (sp->scratch) for the methods
  *     that need temporaries (phong reflection; dielectric absorption in place uses it when there is one);
  *     temporaries are released before returning and nothing is allocated per call;

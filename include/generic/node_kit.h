@@ -170,10 +170,23 @@ GENERIC_API void gtexblend_pair(GTexBlend *b, const GMaterial *a, const GMateria
 /** The blend of one child with weight 1. */
 GENERIC_API void gtexblend_one(GTexBlend *b, const GMaterial *m);
 
-/** Reflection of the blend: the weighted sum of the children's colours (result may alias illum). */
+/** Reflection of the blend: the weighted sum of the children's colours (result may alias illum). At a pair
+ * aligned with the blend's own ideal ray (materials.h) only the children with an ideal ray of their own count:
+ * when some child of non-zero weight has the reflection_dir slot and `in` is the mirror direction of `out` about
+ * the point's shading normal (gmaterial_is_mirror_pair with gsurfpoint_normal(sp), the normal every child reads),
+ * the children are asked for their reflection_dir of the view -out, and if one has a ray, those that have none
+ * are left out (their BRDF has no delta part); the others answer as ever, each checking its own aligned case.
+ * That pair is the blend's ray (gtexblend_reflection_dir) whenever the children reflect about the point's shading
+ * normal, as every built-in material and node does; for children whose rays differ (a plug-in with a normal of
+ * its own) the blended ray is an approximation and the test stays the point's mirror pair. Without a child with
+ * the slot, or away from the pair, the cost is that of the plain sum (a few products, no square root, no call),
+ * and the one-child blend calls its child directly. */
 GENERIC_API GENERIC_NODISCARD int gtexblend_reflection(const GTexBlend *b, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
                          GColor *result);
-/** Refraction of the blend: the weighted sum (result may alias illum or rel_index). */
+/** Refraction of the blend: the weighted sum (result may alias illum or rel_index), with the rule of
+ * gtexblend_reflection at the ideal refraction: `in` the ideal refraction of -out about the point's shading
+ * normal with the scalar index of rel_index (gsurfpoint_scalar_index; the point's relative index when rel_index
+ * is NULL, as the dielectric reads it: goptics_is_refraction_pair), refraction_dir for the children's rays. */
 GENERIC_API GENERIC_NODISCARD int gtexblend_refraction(const GTexBlend *b, GSurfPoint *sp, GVec3 in, const GColor *illum, const GColor *rel_index,
                          GVec3 out, GColor *result);
 /** Refraction index of the blend: the weighted sum. */
@@ -198,7 +211,10 @@ GENERIC_API GENERIC_NODISCARD int gtexblend_opaque(const GTexBlend *b, GSurfPoin
 /** Sampling of the blend as a mixture: child i is chosen with probability q_i = |w_i| / sum |w_j| (u1 remapped)
  * and draws the direction. A delta sample keeps the child's direction, pdf q_i * the child's, weight w_i / q_i
  * times the child's; otherwise pdf = sum q_j pdf_j(in) (gtexblend_pdf) and the weight is the blend's own value
- * (gtexblend_reflection or _refraction of white) / pdf, so the estimate is that of the blend's methods. */
+ * (gtexblend_reflection or _refraction of white) / pdf, so the estimate is that of the blend's methods. A
+ * non-delta direction on the blend's ideal ray (see gtexblend_reflection) is weighed with the value of the lobes
+ * that are not ideal: the children without a ray of their own there (those with one would give their ideal part,
+ * which only the delta samples carry). */
 GENERIC_API GENERIC_NODISCARD int gtexblend_sample(const GTexBlend *b, GSurfPoint *sp, GVec3 out, const GColor *rel_index,
                                                    double u1, double u2, GMaterialSample *s, GColor *weight);
 /** The mixture's density: sum q_j pdf_j(in, out) (see gtexblend_sample). */

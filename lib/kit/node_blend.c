@@ -33,11 +33,31 @@ void gtexblend_one(GTexBlend *b, const GMaterial *m)
     b->w[0] = 1.0;
 }
 
+/* The direction methods of one child (reflection_dir, refraction_dir, normal). */
+typedef struct DirCall {
+    int method; /* GNODE_REFLECTION_DIR, GNODE_REFRACTION_DIR or GNODE_NORMAL */
+    GVec3 view;
+    const GColor *rel_index;
+} DirCall;
+
+static int call_dir(const GMaterial *m, GSurfPoint *sp, const DirCall *c, GVec3 *d)
+{
+    switch (c->method) {
+    case GNODE_REFLECTION_DIR: return gmaterial_reflection_dir(m, sp, c->view, d);
+    case GNODE_REFRACTION_DIR: return gmaterial_refraction_dir(m, sp, c->view, c->rel_index, d);
+    default: {
+        int rc = gmaterial_normal(m, sp, d);
+        return rc < 0 ? rc : 1;
+    }
+    }
+}
+
 /* ---- colour methods: the children's results summed with their weights into the result (through an
  * accumulator when the result is also an input colour) ---- */
 
 typedef struct ColorCall {
-    int method; /* a GNodeMethod */
+    int method;   /* a GNodeMethod */
+    int nondelta; /* reflection, refraction: the value of the lobes that are not ideal (sampling's weight) */
     GVec3 in, out;
     const GColor *illum, *rel_index;
     double length;
@@ -56,10 +76,66 @@ static int call_color(const GMaterial *m, GSurfPoint *sp, const ColorCall *c, GC
     }
 }
 
+/* ---- the ideal ray (material.h, materials.h): at a pair aligned with the blend's own ideal ray the result is the
+ * ideal part, the sum of the children that have an ideal ray of their own there; the others' BRDF has no delta
+ * part and adds nothing. The blend's ray is its children's rays blended (gtexblend_reflection_dir); the pair is
+ * taken as aligned with it when `in` is the mirror direction of `out` (for refraction: the ideal refraction of
+ * -out) about the point's shading normal, the cached normal every child reads, so that the test is exact when the
+ * children reflect and refract about it, as every built-in material and node does, and costs no call and no
+ * square root. Children whose rays go elsewhere (a plug-in with a normal of its own) make the blended ray an
+ * approximation, which a renderer traces once; the test stays the point's own ideal pair. ---- */
+
+/* 1 when some child of non-zero weight has the direction slot of the method (reflection_dir for reflection,
+ * refraction_dir for refraction): only then may the blend have an ideal ray. No call. */
+static int may_have_ray(const GTexBlend *b, int reflect)
+{
+    for (int i = 0; i < b->n; i++) {
+        const GMaterialClass *cls = b->m[i]->cls;
+        if (b->w[i] != 0.0 && (reflect ? cls->reflection_dir != NULL : cls->refraction_dir != NULL))
+            return 1;
+    }
+    return 0;
+}
+
+/* The children a reflection or refraction call leaves out, one bit each (child i: 1 << i): at an aligned pair
+ * where some child of non-zero weight has an ideal ray for the view -out, those without one (with c->nondelta,
+ * those with one: their value there is the ideal part). 0 elsewhere; or a negative status. */
+static int ideal_skip(const GTexBlend *b, GSurfPoint *sp, const ColorCall *c)
+{
+    int reflect = c->method == GNODE_REFLECTION;
+    if (!may_have_ray(b, reflect))
+        return 0;
+    GVec3 n = gsurfpoint_normal(sp), view = gvec3_neg(c->out);
+    if (reflect ? !gmaterial_is_mirror_pair(c->in, n, c->out)
+                : !goptics_is_refraction_pair(view, n, c->rel_index ? gsurfpoint_scalar_index(c->rel_index)
+                                                                     : gsurfpoint_relative_index(sp), c->in))
+        return 0;
+    DirCall d = {.method = reflect ? GNODE_REFLECTION_DIR : GNODE_REFRACTION_DIR, .view = view,
+                 .rel_index = c->rel_index};
+    int with = 0, without = 0;
+    for (int i = 0; i < b->n; i++) {
+        if (b->w[i] == 0.0)
+            continue;
+        GVec3 dir;
+        int rc = call_dir(b->m[i], sp, &d, &dir);
+        if (rc < 0)
+            return rc;
+        if (rc > 0)
+            with |= 1 << i;
+        else
+            without |= 1 << i;
+    }
+    return !with ? 0 : c->nondelta ? with : without;
+}
+
 static int blend_color(const GTexBlend *b, GSurfPoint *sp, const ColorCall *c, GColor *result)
 {
     if (b->n == 1)
         return call_color(b->m[0], sp, c, result);
+    int skip = 0; /* the children left out at the ideal ray */
+    if (c->method == GNODE_REFLECTION || c->method == GNODE_REFRACTION)
+        if ((skip = ideal_skip(b, sp, c)) < 0)
+            return skip;
     /* the first child goes straight into the result unless the result is also an input */
     int alias = (c->illum && c->illum->v == result->v) || (c->rel_index && c->rel_index->v == result->v);
     GTexTemps t;
@@ -74,7 +150,7 @@ static int blend_color(const GTexBlend *b, GSurfPoint *sp, const ColorCall *c, G
         rc = gtextemps_color(&t, sp, result->model, 1, &tmp);
     int first = 1;
     for (int i = 0; i < b->n && rc == G_OK; i++) {
-        if (b->w[i] == 0.0)
+        if (b->w[i] == 0.0 || (skip >> i & 1))
             continue;
         if (first) {
             rc = call_color(b->m[i], sp, c, &acc);
@@ -87,6 +163,8 @@ static int blend_color(const GTexBlend *b, GSurfPoint *sp, const ColorCall *c, G
                 rc = gcolor_add_scaled(&acc, &tmp, b->w[i]);
         }
     }
+    if (rc == G_OK && first) /* no child answered */
+        gcolor_black(&acc);
     if (rc == G_OK && alias)
         rc = gcolor_copy(result, &acc);
     else if (rc == G_OK)
@@ -141,24 +219,6 @@ int gtexblend_diffuse(const GTexBlend *b, GSurfPoint *sp, GColor *result)
 
 /* ---- vectors: the weighted sum of the valid children's vectors, normalised; with one valid child its own
  * vector; when the sum vanishes (opposite vectors) the valid child of largest weight ---- */
-
-typedef struct DirCall {
-    int method; /* GNODE_REFLECTION_DIR, GNODE_REFRACTION_DIR or GNODE_NORMAL */
-    GVec3 view;
-    const GColor *rel_index;
-} DirCall;
-
-static int call_dir(const GMaterial *m, GSurfPoint *sp, const DirCall *c, GVec3 *d)
-{
-    switch (c->method) {
-    case GNODE_REFLECTION_DIR: return gmaterial_reflection_dir(m, sp, c->view, d);
-    case GNODE_REFRACTION_DIR: return gmaterial_refraction_dir(m, sp, c->view, c->rel_index, d);
-    default: {
-        int rc = gmaterial_normal(m, sp, d);
-        return rc < 0 ? rc : 1;
-    }
-    }
-}
 
 static int blend_dir(const GTexBlend *b, GSurfPoint *sp, const DirCall *c, GVec3 *dir)
 {
@@ -275,9 +335,12 @@ int gtexblend_sample(const GTexBlend *b, GSurfPoint *sp, GVec3 out, const GColor
     rc = gtextemps_color(&t, sp, weight->model, 0, &white);
     if (rc == G_OK)
         rc = gcolor_fill(&white, 1.0);
-    if (rc == G_OK)
-        rc = s->flags & GSAMPLE_TRANSMIT ? gtexblend_refraction(b, sp, s->in, &white, rel_index, out, weight)
-                                          : gtexblend_reflection(b, sp, s->in, &white, out, weight);
+    if (rc == G_OK) { /* at the ideal ray, the value of the lobes that are not ideal: the children without a ray */
+        int transmit = (s->flags & GSAMPLE_TRANSMIT) != 0;
+        ColorCall c = {.method = transmit ? GNODE_REFRACTION : GNODE_REFLECTION, .nondelta = 1, .in = s->in,
+                       .out = out, .illum = &white, .rel_index = transmit ? rel_index : NULL};
+        rc = blend_color(b, sp, &c, weight);
+    }
     if (rc == G_OK)
         rc = gcolor_scale(weight, weight, 1.0 / s->pdf);
     gtextemps_release(&t);
