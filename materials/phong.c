@@ -218,17 +218,11 @@ int gphong_create(const GColorModel *model, const GPhongParams *params, GMateria
         if (rc != G_OK)
             rc = gerror_set(err, rc, "phong: cannot add kd, ks and mirror (%s)", gstatus_string(rc));
     }
-    if (rc == G_OK) {
-        int at;
-        double mx = gmatparam_max(&p->albedo, &at), lo, hi;
-        /* within the model's conversion error, as each parameter: rgb 0 0.5 0 + 0 0.5 0 is 1.03 in spectrum9 */
-        rc = gmatparam_range(&p->albedo, GCOLOR_REFLECTANCE, 1.0, &lo, &hi);
-        if (rc != G_OK)
-            rc = gerror_set(err, rc, "phong: cannot measure kd + ks + mirror (%s)", gstatus_string(rc));
-        else if (mx > hi && !gmatparam_fold_ok(&p->albedo, hi)) /* above 1 in a band only as a fold */
-            rc = gerror_set(err, G_ERR_INVALID,
-                            "phong: kd + ks + mirror is %g at sample %d; it must not exceed 1 (energy conservation)%s",
-                            mx, at, hi > 1.0 + 2e-5 ? ", or the conversion error of the colour model" : "");
+    if (rc == G_OK) { /* a matrix sum is named by the parameter that re-radiates */
+        const char *matrix = p->mirror.kind == GCOLOR_MATRIX ? "mirror"
+                             : p->ks.kind == GCOLOR_MATRIX   ? "specular"
+                                                             : "diffuse";
+        rc = gmatparam_check_sum(&p->albedo, "phong", "kd + ks + mirror", matrix, err);
     }
     if (rc != G_OK) {
         phong_destroy(&p->base);

@@ -316,6 +316,93 @@ static void test_bad_parameters(void **state)
     fix_close(&f);
 }
 
+/* A matrix on the bispectral model's grid: `diag` on the diagonal and `shift` of each sample's light re-radiated
+ * one sample up, so every excitation sample but the last sends out diag + shift. */
+static void shift_matrix(GColorModel *m, float diag, float shift, float *data, GColor *out)
+{
+    int n = m->nsamples;
+    memset(data, 0, (size_t)n * n * sizeof *data);
+    for (int i = 0; i < n; i++) {
+        data[i * n + i] = diag;
+        if (i + 1 < n)
+            data[(i + 1) * n + i] = shift; /* row: emission, column: excitation */
+    }
+    GReradiation r = {m->lambda_min, m->lambda_step, n, m->lambda_min, m->lambda_step, n, data};
+    GError err;
+    assert_int_equal(gcolor_alloc(out, m), G_OK);
+    assert_int_equal(gcolor_from_reradiation(out, &r, &err), G_OK);
+    assert_int_equal(out->kind, GCOLOR_MATRIX);
+}
+
+/* Re-radiation matrices are held to what they send out per excitation sample, their column sums (light moved to
+ * other samples counts): alone as a parameter of lambert, mirror, phong or a dielectric's tint, and in phong's
+ * kd + ks + mirror, where a plain colour beside the matrix adds to its diagonal. */
+static void test_matrix_energy(void **state)
+{
+    (void)state;
+    GColorModel *model;
+    GError err;
+    assert_int_equal(gcolormodel_create("bispectral", NULL, &model, &err), G_OK);
+    float *data = malloc((size_t)model->nsamples * model->nsamples * sizeof *data);
+    assert_non_null(data);
+    GColor keeps, makes, kd, small;
+    shift_matrix(model, 0.6f, 0.3f, data, &keeps); /* sends out 0.9: accepted alone */
+    shift_matrix(model, 0.6f, 0.5f, data, &makes); /* sends out 1.1: its diagonal alone is 0.6 */
+    assert_int_equal(gcolor_alloc(&kd, model), G_OK);
+    assert_int_equal(gcolor_fill(&kd, 0.2), G_OK);
+    assert_int_equal(gcolor_alloc(&small, model), G_OK);
+    assert_int_equal(gcolor_fill(&small, 0.05), G_OK);
+    GMaterial *m = NULL;
+    assert_int_equal(gmirror_create(model, &keeps, &m, &err), G_OK);
+    gmaterial_unref(m);
+    m = NULL;
+    expect_error(gmirror_create(model, &makes, &m, &err), m, &err, "reflectance is a re-radiation matrix that sends "
+                 "out 1.1", "energy is conserved");
+    assert_string_equal(err.param, "reflectance");
+    expect_error(glambert_create(model, &makes, &m, &err), m, &err, "sends out 1.1", NULL);
+    GPhongParams pp = {&small, NULL, 20.0, &makes};
+    expect_error(gphong_create(model, &pp, &m, &err), m, &err, "phong: mirror is a re-radiation matrix", "1.1");
+    GDielectricParams dp = {gdispersion_constant(1.5), NULL, &makes};
+    expect_error(gdielectric_create(model, &dp, &m, &err), m, &err, "tint is a re-radiation matrix", "1.1");
+    /* kd 0.2 + mirror 0.9 per excitation sample: 1.1, though no parameter exceeds 1 and the sum's diagonal is 0.8 */
+    pp.kd = &kd;
+    pp.mirror = &keeps;
+    expect_error(gphong_create(model, &pp, &m, &err), m, &err,
+                 "phong: kd + ks + mirror is a re-radiation matrix that sends out 1.1", "excitation sample 0");
+    assert_string_equal(err.param, "mirror");
+    pp.mirror = NULL;
+    pp.ks = &keeps; /* the glossy lobe's matrix, named so */
+    expect_error(gphong_create(model, &pp, &m, &err), m, &err, "sends out 1.1", NULL);
+    assert_string_equal(err.param, "specular");
+    pp.ks = NULL;
+    pp.kd = &small; /* 0.05 + 0.9 */
+    pp.mirror = &keeps;
+    assert_int_equal(gphong_create(model, &pp, &m, &err), G_OK);
+    gmaterial_unref(m);
+    /* from a file: placed at the parameter that re-radiates */
+    GLibrary *lib = NULL;
+    GReaderOptions ro = {.model = model};
+    assert_int_equal(greader_load_string("color dayglo reradiation { absorb_peak 470 absorb_width 115 absorb_shape 8 "
+                                         "absorb_max 0.97\n    emit_width 20 stokes_shift 135 quantum_yield 0.65 "
+                                         "reflectance 0.92 }\n"
+                                         "material p phong { diffuse rgb 0.1 0.1 0.1 mirror dayglo }\n",
+                                         "t.mat", &ro, &lib, &err),
+                     G_ERR_INVALID);
+    assert_null(lib);
+    print_message("refused: %s\n", err.message);
+    assert_int_equal(err.line, 3);
+    assert_int_equal(err.col, 44); /* "mirror" */
+    assert_string_equal(err.param, "mirror");
+    assert_non_null(strstr(err.message, "t.mat:3:44: phong: kd + ks + mirror is a re-radiation matrix that sends out "
+                                        "1.02"));
+    gcolor_free(&keeps);
+    gcolor_free(&makes);
+    gcolor_free(&kd);
+    gcolor_free(&small);
+    free(data);
+    gcolormodel_destroy(model);
+}
+
 /* A constructor's complaint names its parameter (gerror_set_param); the reader places it there: the message's
  * position and the GError fields agree, and a parameter the file did not write is placed at the last token. */
 static void test_error_at_parameter(void **state)
@@ -380,6 +467,7 @@ int main(void)
         BOTH(test_bad_parameters),
         cmocka_unit_test(test_registered),
         cmocka_unit_test(test_error_at_parameter),
+        cmocka_unit_test(test_matrix_energy),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -90,7 +90,26 @@ static void sample_nm(const GColorModel *m, int k, char *buf, size_t size)
         buf[0] = '\0';
 }
 
-/* Checks src against [lo, hi] (vector samples; a matrix's entries >= 0 and its brightness <= hi). */
+/* A re-radiation matrix's energy, its largest column sum (gmatparam_energy), against hi: "<material>: <what> is a
+ * re-radiation matrix that sends out E of the light arriving at excitation sample K (NM nm) (must be <= max:
+ * energy is conserved)", naming param. */
+static int check_matrix_energy(const GColor *c, double max, double hi, const char *material, const char *what,
+                               const char *param, GError *err)
+{
+    int col;
+    double e = gmatparam_energy(c, &col);
+    if (!(e > hi))
+        return G_OK;
+    char where[48];
+    sample_nm(c->model, col, where, sizeof where);
+    return gerror_set_param(err, G_ERR_INVALID, param,
+                            "%s: %s is a re-radiation matrix that sends out %g of the light arriving at excitation "
+                            "sample %d%s (must be <= %g: energy is conserved)",
+                            material, what, e, col, where, max);
+}
+
+/* Checks src against [lo, hi] (vector samples; a matrix's entries >= 0 and its energy per excitation sample
+ * <= hi). */
 static int check_range(const GColor *src, GColorRole role, double max, const char *material, const char *param,
                        GError *err)
 {
@@ -118,19 +137,9 @@ static int check_range(const GColor *src, GColorRole role, double max, const cha
     if (rc != G_OK)
         return gerror_set_param(err, rc, param, "%s: cannot measure the range of %s in model '%s'", material, param,
                                 name);
+    if (src->kind == GCOLOR_MATRIX)
+        return max > 0.0 ? check_matrix_energy(src, max, hi, material, param, param, err) : G_OK;
     char where[48];
-    if (src->kind == GCOLOR_MATRIX) {
-        int col;
-        double e = gmatparam_energy(src, &col);
-        if (max > 0.0 && e > hi) {
-            sample_nm(m, col, where, sizeof where);
-            return gerror_set_param(err, G_ERR_INVALID, param,
-                                    "%s: %s is a re-radiation matrix that sends out %g of the light arriving at "
-                                    "excitation sample %d%s (must be <= %g: energy is conserved)",
-                                    material, param, e, col, where, max);
-        }
-        return G_OK;
-    }
     /* above max in a band: in a model without matrices only a fold of re-radiation can be (see the header) */
     double fold_energy = -1.0;
     if (max > 0.0 && role == GCOLOR_REFLECTANCE && !m->cls->from_reradiation)
@@ -194,6 +203,24 @@ int gmatparam_color(const GColorModel *m, const GColor *src, GColorRole role, do
             if (max > 0.0 && !fold && dst->v[i] > max)
                 dst->v[i] = (float)max;
         }
+    return G_OK;
+}
+
+int gmatparam_check_sum(const GColor *sum, const char *material, const char *what, const char *param, GError *err)
+{
+    double lo, hi;
+    int rc = gmatparam_range(sum, GCOLOR_REFLECTANCE, 1.0, &lo, &hi);
+    if (rc != G_OK)
+        return gerror_set(err, rc, "%s: cannot measure %s (%s)", material, what, gstatus_string(rc));
+    if (sum->kind == GCOLOR_MATRIX) /* re-radiated light counts: all that leaves per unit arriving in a sample */
+        return check_matrix_energy(sum, 1.0, hi, material, what, param, err);
+    int at;
+    double mx = gmatparam_max(sum, &at);
+    /* within the model's conversion error, as each parameter: rgb 0 0.5 0 + 0 0.5 0 is 1.03 in spectrum9 */
+    if (mx > hi && !gmatparam_fold_ok(sum, hi)) /* above 1 in a band only as a fold */
+        return gerror_set(err, G_ERR_INVALID,
+                          "%s: %s is %g at sample %d; it must not exceed 1 (energy conservation)%s", material, what,
+                          mx, at, hi > 1.0 + 2e-5 ? ", or the conversion error of the colour model" : "");
     return G_OK;
 }
 
