@@ -11,9 +11,12 @@
  *                (the quadrature's error on a sharp lobe), relative to the irradiance about the shading
  *                normal (the same as the geometric one unless a bump node tilts it: against the geometric
  *                normal a bumped Lambertian surface reflects up to 1.48 times the light at 85 degrees, the
- *                known energy gain of shading normals at grazing incidence). A material that moves light between samples
- *                (fluorescence) is measured with a one-sample light per sample instead: the power leaving,
- *                summed over all samples, per unit of power arriving in that sample.
+ *                known energy gain of shading normals at grazing incidence). A material that moves light between
+ *                samples (fluorescence) is measured with a one-sample light per sample instead: the power
+ *                leaving, summed over all samples, per unit of power arriving in that sample. Whether it does is
+ *                asked at each place (a texture tree may re-radiate at some places only); the first place where
+ *                it does is measured so (on half the grid: it costs a light per sample), the places where light
+ *                keeps its sample with white light, and further re-radiating places are left out.
  *   reciprocity  f_r(in, out) = reflection(in, out) / cos(theta_in) against f_r(out, in) over random pairs,
  *                cosines about the shading normal: max difference / max value <= TOL_RECIPROCITY.
  *   finite       every colour method (reflection, refraction, emission, ambient, absorption, diffuse,
@@ -93,8 +96,8 @@ static int leaves_sample(const GColor *result, int nvalues, int s)
     return 0;
 }
 
-/* 1 when light in one sample leaves in another (checked at a few direction pairs and along the specular ray, each
- * sample alone). */
+/* 1 when light in one sample leaves in another at the place ctx->place (checked at a few direction pairs and along the
+ * specular ray, each sample alone). */
 static int shifts_samples(Checker *k)
 {
     GmatContext *ctx = k->ctx;
@@ -154,14 +157,25 @@ static void check_albedo(Checker *k)
 {
     GmatContext *ctx = k->ctx;
     const GColorModel *m = ctx->model;
-    int shift = shifts_samples(k);
+    /* where light moves between samples (a texture tree may re-radiate at some places only): one light per sample
+     * costs nvalues times more, so only the first such place is measured so, on half the grid; the places where
+     * light stays in its sample are measured with white light */
+    int shift_at = -1, shifts[NPLACES], nshift = 0;
+    for (int p = 0; p < NPLACES; p++) {
+        ctx->place = &k->places[p];
+        shifts[p] = shifts_samples(k);
+        nshift += shifts[p];
+        if (shifts[p] && shift_at < 0)
+            shift_at = p;
+    }
     double worst = 0.0, at_theta = 0.0;
     int at_sample = 0, at_place = 0, failed = 0, folded = 0;
-    int nplaces = shift ? 1 : NPLACES; /* one light per sample costs nvalues times more: one place, half the grid */
-    int samples = k->samples;
-    if (shift)
-        k->samples = samples / 2 > 8 ? samples / 2 : 8;
-    for (int p = 0; p < nplaces && !failed; p++) {
+    int samples = k->samples, half = samples / 2 > 8 ? samples / 2 : 8;
+    for (int p = 0; p < NPLACES && !failed; p++) {
+        if (shifts[p] && p != shift_at)
+            continue;
+        int shift = shifts[p];
+        k->samples = shift ? half : samples;
         ctx->place = &k->places[p];
         for (int t = 0; t < NINC && !failed; t++) {
             GVec3 in = gmat_direction(incidences[t], 30.0);
@@ -203,16 +217,18 @@ static void check_albedo(Checker *k)
     }
     ctx->light = NULL;
     ctx->place = NULL;
-    int used = k->samples;
     k->samples = samples;
-    char detail[200];
+    int used = shifts[at_place] ? half : samples;
+    char detail[240], moves[120] = "";
+    if (shift_at >= 0)
+        snprintf(moves, sizeof moves, ", light moves between samples%s: one light per sample at place %d",
+                 nshift < NPLACES ? " at some places" : "", shift_at);
     if (failed)
         snprintf(detail, sizeof detail, "(the material failed to evaluate)");
     else
         snprintf(detail, sizeof detail, "(largest reflected+transmitted/incident, at theta_in %g, sample %d, place %d;"
-                 " %d x %d grid%s)", at_theta, at_sample, at_place, used, 2 * used,
-                 shift ? ", light moves between samples: one light per sample"
-                       : folded ? ", above 1 in a band: a fold of re-radiation, energy over all samples" : "");
+                 " %d x %d grid%s%s)", at_theta, at_sample, at_place, used, 2 * used, moves,
+                 folded ? ", above 1 in a band: a fold of re-radiation, energy over all samples" : "");
     report(k, "albedo", failed ? INFINITY : worst, 1.0 + TOL_ALBEDO, detail);
 }
 
