@@ -24,6 +24,7 @@
 #     and the example modules (examples/plugins/) must pass;
 #   - lambert, phong and mirror with a re-radiation matrix for a colour (bispectral) pass, the sampling weights
 #     included; light that moves between samples along the ideal ray alone is seen as re-radiation.
+# Blends of materials with and without an ideal ray, generated in pairs and triples: blend_conformance.sh.
 SRC=$(cd "$(dirname "$0")/../.." && pwd)
 BUILD=$(cd "${1:-build}" 2> /dev/null && pwd) || { echo "FAIL: no build directory ${1:-build}"; exit 1; }
 GMAT="$BUILD/bin/gmat"
