@@ -50,7 +50,9 @@ GENERIC_API GENERIC_NODISCARD int gnode_method_from_name(const char *name);
 /** interpolate: child a where the generator gives t <= 0, child b where t >= 1, and in between every
  * method blends the two results linearly ((1 - t) a + t b):
  *   - colours (reflection, refraction, refraction_index, emission, ambient, absorption, diffuse) blend
- *     as colours (gcolor_scale / gcolor_add_scaled);
+ *     as colours (gcolor_scale / gcolor_add_scaled), but for reflection and refraction along the node's
+ *     ideal ray: there only a child with an ideal ray of its own answers, the specular case, and a child
+ *     without one adds nothing (materials.h, gtexblend_reflection in node_kit.h);
  *   - normal: the two normals blended and normalised;
  *   - reflection_dir / refraction_dir: valid when either child's is; two valid directions are blended and
  *     normalised, a single valid one is returned as it is (its child's weight already scales the colour
