@@ -9,6 +9,8 @@
  *     so a point light of intensity I at distance d passes illum = I / d^2;
  *   - when out is the ideal mirror direction of in (checked by the material, as the paper asks), the
  *     perfect specular part: the specular reflectance times illum (the radiance traced along that ray).
+ *     A material that sums others (a texture node's blend) sums there only the parts that have an ideal ray
+ *     of their own: a BRDF value is a density, not a reflectance (materials.h, node_kit.h).
  * refraction(in, illum, rel_index, out) is the same for light arriving through the surface from `in`.
  *
  * Missing methods (NULL slots) take these defaults: reflection, refraction, emission, diffuse: black;
