@@ -100,6 +100,8 @@ static int may_have_ray(const GTexBlend *b, int reflect)
 /* The children a reflection or refraction call leaves out, one bit each (child i: 1 << i): at an aligned pair
  * where some child of non-zero weight has an ideal ray for the view -out, those without one (with c->nondelta,
  * those with one: their value there is the ideal part). 0 elsewhere; or a negative status. */
+_Static_assert(GTEX_BLEND_MAX <= 31, "ideal_skip's children are the bits of an int");
+
 static int ideal_skip(const GTexBlend *b, GSurfPoint *sp, const ColorCall *c)
 {
     int reflect = c->method == GNODE_REFLECTION;
@@ -107,7 +109,7 @@ static int ideal_skip(const GTexBlend *b, GSurfPoint *sp, const ColorCall *c)
         return 0;
     GVec3 n = gsurfpoint_normal(sp), view = gvec3_neg(c->out);
     if (reflect ? !gmaterial_is_mirror_pair(c->in, n, c->out)
-                : !goptics_is_refraction_pair(view, n, c->rel_index ? gsurfpoint_scalar_index(c->rel_index)
+                : !goptics_is_refraction_pair(view, n, c->rel_index ? gsurfpoint_index_of(sp, c->rel_index)
                                                                      : gsurfpoint_relative_index(sp), c->in))
         return 0;
     DirCall d = {.method = reflect ? GNODE_REFLECTION_DIR : GNODE_REFRACTION_DIR, .view = view,
