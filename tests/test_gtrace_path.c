@@ -8,6 +8,8 @@
 #include "test_gtrace_common.h"
 
 #include "generic/builtins.h"
+#include "generic/generators.h"
+#include "generic/nodes.h"
 
 #include <unistd.h>
 
@@ -200,6 +202,57 @@ static void test_whitted_agrees(void **state)
     l = add_light(s, LIGHT_POINT, 20.0);
     l->position = gvec3(1, 3, 2);
     worst = compare_integrators(s, 1, 64, &w, &p);
+    assert_true(w > 0.01);
+    assert_near(p / w, 1.0, 0.02);
+    assert_true(worst < 0.05);
+    scene_destroy(s);
+}
+
+/* interpolate of a and b at t = 0.5 (the children's references are taken over). */
+static GMaterial *half_blend(GMaterial *a, GMaterial *b)
+{
+    GGenerator *t = NULL;
+    GMaterial *m = NULL;
+    GError err;
+    assert_int_equal(ggen_constant_create(0.5, &t, &err), G_OK);
+    if (gnode_interpolate_create(a, b, t, &m, &err) != G_OK)
+        fail_msg("gnode_interpolate_create: %s", err.message);
+    ggenerator_unref(t);
+    gmaterial_unref(a);
+    gmaterial_unref(b);
+    return m;
+}
+
+/* Blends whose children share an ideal ray: reflection() along it gives the children's sum (materials.h), while a
+ * sample stands for one child's lobe with that child's probability. An interpolate of two equal mirrors in a
+ * uniform background of 1 is that mirror, 0.8 in every path; and an interpolate of a mirror and a glass over a
+ * floor lit by a point light agrees with Whitted, which traces the shared reflection ray once (depth 1: no second
+ * diffuse vertex). Both fail if a path weighs the sum by one child's
+ * probability (the mirror part twice as bright). */
+static void test_blend_shared_ray(void **state)
+{
+    (void)state;
+    const char *models[] = {"rgb", "spectrum"};
+    for (int k = 0; k < 2; k++) {
+        Scene *s = new_scene(models[k], gvec3(0, 0, 4), gvec3(0, 0, 0), 30);
+        set_grey(&s->background, 1.0, GCOLOR_LIGHT);
+        add_sphere(s, half_blend(mirror(s, 0.8), mirror(s, 0.8)), gvec3(0, 0, 0), 1.0);
+        Framebuffer fb;
+        render_with(s, 12, 12, 4, 8, 2, RENDER_PATH, &fb);
+        double in = mean_luma(&fb, 4, 4, 8, 8), bg = luma(pixel(&fb, 0, 0));
+        print_message("%s: two mirrors of 0.8 blended, path: sphere %.5f, background %.5f\n", models[k], in, bg);
+        assert_near(in, 0.8, 1e-3);
+        assert_near(bg, 1.0, 1e-3);
+        framebuffer_free(&fb);
+        scene_destroy(s);
+    }
+    Scene *s = new_scene("rgb", gvec3(0, 1.2, 5), gvec3(0, 0.6, 0), 45);
+    add_plane(s, lambert(s, 0.6), gvec3(0, 0, 0), gvec3(0, 1, 0));
+    add_sphere(s, half_blend(mirror(s, 0.9), glass(s, 1.5)), gvec3(0, 0.6, 0), 0.6);
+    Light *l = add_light(s, LIGHT_POINT, 20.0);
+    l->position = gvec3(1, 3, 2);
+    double w, p;
+    double worst = compare_integrators(s, 1, 256, &w, &p);
     assert_true(w > 0.01);
     assert_near(p / w, 1.0, 0.02);
     assert_true(worst < 0.05);
@@ -430,6 +483,7 @@ int main(void)
         {"test_ambient_environment (rgb)", test_ambient_environment, NULL, NULL, (void *)"rgb"},
         {"test_ambient_environment (bispectral)", test_ambient_environment, NULL, NULL, (void *)"bispectral"},
         cmocka_unit_test(test_whitted_agrees),
+        cmocka_unit_test(test_blend_shared_ray),
         cmocka_unit_test(test_dispersion_agrees),
         cmocka_unit_test(test_convergence),
         cmocka_unit_test(test_fluorescence_between_walls),

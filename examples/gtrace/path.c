@@ -279,11 +279,18 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
         c->band = saved;
         p->scattered = scattered;
         CHECK(rc);
-        CHECK(gcolor_scale(&illum, &illum, 1.0 / (smp.pdf * q)));
-        if (transmit)
-            CHECK(gmaterial_refraction(m, sp, smp.in, &illum, ri_use, to_viewer, &tmp));
-        else
-            CHECK(gmaterial_reflection(m, sp, smp.in, &illum, to_viewer, &tmp));
+        if (gmaterial_diagonal(m)) {
+            /* what it passes on of white light over the density (the sample's weight), times the light: no second
+             * evaluation, and each ideal lobe counts with its own probability where a blend's children share an
+             * ideal ray (there, reflection() gives their sum, which one child's probability would overweigh) */
+            CHECK(gcolor_mul_scaled(&tmp, &weight, &illum, 1.0 / q));
+        } else { /* re-radiation: the light itself through the material */
+            CHECK(gcolor_scale(&illum, &illum, 1.0 / (smp.pdf * q)));
+            if (transmit)
+                CHECK(gmaterial_refraction(m, sp, smp.in, &illum, ri_use, to_viewer, &tmp));
+            else
+                CHECK(gmaterial_reflection(m, sp, smp.in, &illum, to_viewer, &tmp));
+        }
         if (transmit && pick >= 0) { /* one group of n chosen: its light, n times */
             CHECK(gcolor_mul(&tmp, &b->mask[pick], &tmp));
             CHECK(gcolor_scale(&tmp, &tmp, (double)b->n));
