@@ -219,7 +219,7 @@ static void check_albedo(Checker *k)
     ctx->place = NULL;
     k->samples = samples;
     int used = shifts[at_place] ? half : samples;
-    char detail[240], moves[120] = "";
+    char detail[400], moves[120] = ""; /* room for every part at its longest */
     if (shift_at >= 0)
         snprintf(moves, sizeof moves, ", light moves between samples%s: one light per sample at place %d",
                  nshift < NPLACES ? " at some places" : "", shift_at);
