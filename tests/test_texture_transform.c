@@ -1,6 +1,6 @@
 /* test_texture_transform.c - the transform node: patterns move by the expected offsets, the footprint's axes
- * move with them, and values cached below a transform belong to the moved coordinates yet are kept across
- * method calls. */
+ * move with them, values cached below a transform belong to the moved coordinates yet are kept across
+ * method calls, and a (u, v) transform leaves the bumps of object- and world-space height fields alone. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -203,6 +203,48 @@ static void test_transform_moves_footprint(void **state)
     gmaterial_unref(&b->base);
 }
 
+/* A (u, v) transform moves no pattern in object or world space, so a bump of such a height field must keep its
+ * normal under it, whatever the xyz part does not move either: the tangents along the new (u, v) and the height's
+ * derivatives along them change together (Blinn's normal does not depend on the parametrisation). Checked for an
+ * identity xyz part (object tangents taken from dpdu, dpdv) and with the renderer's own object tangents. */
+static void test_transform_uv_keeps_solid_bumps(void **state)
+{
+    Fix *f = *state;
+    CountMat *white = countmat_new(f->rgb, 1, 1, 1);
+    GError err;
+    const GGeneratorSpace spaces[] = {GGENERATOR_SPACE_OBJECT, GGENERATOR_SPACE_WORLD};
+    GAffine2 r = gaffine2_rotate(90), r30 = gaffine2_rotate(30), sc = gaffine2_scale(2.0, -0.5);
+    GAffine2 uvs[] = {r, gaffine2_mul(&sc, &r30)};
+    GAffine3 same = gaffine3_translate(gvec3(0, 0, 0));
+    for (int s = 0; s < 2; s++) {
+        GGenerator *h;
+        GMaterial *bump;
+        assert_int_equal(ggen_gradient_create(spaces[s], gvec3(1, 0.5, 0), 0, &h, &err), G_OK);
+        assert_int_equal(gnode_bump_create(&white->base, h, 0.8, &bump, &err), G_OK);
+        for (int own = 0; own < 2; own++) { /* own: the renderer gives object tangents (object = world turned) */
+            plane_point(&f->sp, f->rgb, f->scratch, 0.2, 0.3);
+            if (own)
+                f->sp.object_dpdu = gvec3(0, 1, 0), f->sp.object_dpdv = gvec3(-1, 0, 0);
+            GSurfPoint at = f->sp;
+            GVec3 n0, n;
+            assert_int_equal(gmaterial_normal(bump, &at, &n0), G_OK);
+            assert_true(n0.z < 0.9); /* it does tilt */
+            for (int k = 0; k < 2; k++)
+                for (int xyz = 0; xyz < 2; xyz++) {
+                    GMaterial *moved;
+                    assert_int_equal(gnode_transform_create(bump, &uvs[k], xyz ? &same : NULL, &moved, &err), G_OK);
+                    at = f->sp;
+                    assert_int_equal(gmaterial_normal(moved, &at, &n), G_OK);
+                    assert_true(gvec3_length(gvec3_sub(n, n0)) < 1e-12);
+                    gmaterial_unref(moved);
+                }
+        }
+        gmaterial_unref(bump);
+        ggenerator_unref(h);
+    }
+    gmaterial_unref(&white->base);
+}
+
 int main(void)
 {
     if (generic_register_builtins(NULL) != G_OK)
@@ -211,6 +253,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_transform_moves_patterns, setup, teardown),
         cmocka_unit_test_setup_teardown(test_transform_cache_semantics, setup, teardown),
         cmocka_unit_test_setup_teardown(test_transform_moves_footprint, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_transform_uv_keeps_solid_bumps, setup, teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

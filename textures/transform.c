@@ -46,11 +46,19 @@ static void move(const Transform *t, GSurfPoint *sp, GSurfPoint *q, int for_norm
     }
     *q = *sp;
     gsurfpoint_cache_enter(q, sp, t);
+    /* object tangents known: the renderer's; else dpdu, dpdv stand for them (texture.h), moved below as they are */
+    int have = !is_zero(sp->object_dpdu) || !is_zero(sp->object_dpdv);
     if (t->has_uv) {
+        /* the tangents along the new (u, v), world and object alike: a bump's h_u, h_v (derivatives of an object-
+         * space height along the object tangents) must be taken along the same directions as its dpdu, dpdv */
         const double *m = t->uv.m;
         gaffine2_apply(&t->uv_inv, sp->u, sp->v, &q->u, &q->v);
         q->dpdu = gvec3_add(gvec3_scale(sp->dpdu, m[0]), gvec3_scale(sp->dpdv, m[3]));
         q->dpdv = gvec3_add(gvec3_scale(sp->dpdu, m[1]), gvec3_scale(sp->dpdv, m[4]));
+        if (have) {
+            q->object_dpdu = gvec3_add(gvec3_scale(sp->object_dpdu, m[0]), gvec3_scale(sp->object_dpdv, m[3]));
+            q->object_dpdv = gvec3_add(gvec3_scale(sp->object_dpdu, m[1]), gvec3_scale(sp->object_dpdv, m[4]));
+        }
         q->uv_footprint = sp->uv_footprint * t->uv_area;
         const double *mi = t->uv_inv.m; /* the footprint's axes move with the coordinates */
         q->uv_axis1[0] = mi[0] * sp->uv_axis1[0] + mi[1] * sp->uv_axis1[1];
@@ -59,10 +67,9 @@ static void move(const Transform *t, GSurfPoint *sp, GSurfPoint *q, int for_norm
         q->uv_axis2[1] = mi[3] * sp->uv_axis2[0] + mi[4] * sp->uv_axis2[1];
     }
     if (t->has_xyz) {
-        int have = !is_zero(sp->object_dpdu) || !is_zero(sp->object_dpdv);
         q->object_point = gaffine3_apply(&t->xyz_inv, sp->object_point);
-        q->object_dpdu = gaffine3_apply_dir(&t->xyz_inv, have ? sp->object_dpdu : sp->dpdu);
-        q->object_dpdv = gaffine3_apply_dir(&t->xyz_inv, have ? sp->object_dpdv : sp->dpdv);
+        q->object_dpdu = gaffine3_apply_dir(&t->xyz_inv, have ? q->object_dpdu : q->dpdu);
+        q->object_dpdv = gaffine3_apply_dir(&t->xyz_inv, have ? q->object_dpdv : q->dpdv);
         q->footprint = sp->footprint * t->xyz_len;
     }
 }

@@ -115,7 +115,9 @@ GENERIC_API GENERIC_NODISCARD int gnode_scale_create(GMaterial *child, GGenerato
  * `uv` in the (u, v) plane and by `xyz` in object space (either may be NULL for none). A subtree that
  * gives pattern f(u, v) gives f(uv^-1 (u, v)) below the node; translate 0.5 0 moves a checker's edges
  * by +0.5 in u. The node evaluates the child on a copy of the surface point with u, v, dpdu, dpdv,
- * uv_footprint (for uv) and object_point, object_dpdu, object_dpdv (for xyz) transformed; the copy
+ * uv_footprint (for uv) and object_point, object_dpdu, object_dpdv (for xyz) transformed; the object tangents
+ * are those along the new (u, v) (turned with dpdu, dpdv by uv), so a (u, v) transform leaves the bumps of an
+ * object- or world-space height field as they were (bump's normal does not depend on the parametrisation); the copy
  * starts with empty generator caches, since values cached above were computed at other coordinates, so
  * generators below a transform are evaluated once per method call on it. The copy keeps the shading
  * normal computed for the original point (the normal is a world-space quantity). World-space
