@@ -7,8 +7,12 @@
  *                 bin N * the integral of pdf over it (midpoint rule, refined where the pdf varies strongly),
  *                 bins expecting fewer than 5 pooled, Pearson's statistic and its p-value (the regularised
  *                 incomplete gamma function); the figure is -log10 of the smallest p-value, the tolerance
- *                 -log10 of ALPHA corrected for the number of tests (Sidak). A direction drawn where the pdf
- *                 integrates to 0 fails at once.
+ *                 -log10 of ALPHA corrected for the number of tests (Sidak). A direction drawn where pdf() is
+ *                 0 fails at once. A bin whose midpoints all miss the pdf's support while it holds some of it
+ *                 (the edge of a lobe about a tilted shading normal crosses the bins slantwise and may clip a
+ *                 corner of one; a lobe narrower than the midpoints' spacing) has expected count 0 by the
+ *                 rule: a draw there is asked pdf() and, when it is positive, the bin is integrated again on
+ *                 a SUB_EDGE grid; whatever it still misses counts with the pooled bins.
  *   pdf integral  the integral of pdf over the sphere against the share of draws that gave a non-delta
  *                 direction (1 - P(delta) - P(nothing drawn)); a material whose is_delta says every lobe is
  *                 ideal must draw no other direction.
@@ -28,6 +32,7 @@
 #define BINS_PHI 32
 #define SUB 6        /* midpoint rule per bin and direction */
 #define SUB_FINE 24  /* where the pdf varies by more than REFINE_RATIO within a bin */
+#define SUB_EDGE 96  /* where a draw found the pdf positive in a bin the midpoints saw 0 in */
 #define REFINE_RATIO 2.0
 #define MIN_EXPECTED 5.0
 #define ALPHA 1e-3
@@ -111,6 +116,15 @@ typedef struct SampleTest {
     double ng; /* +1 or -1: the geometric normal's z */
 } SampleTest;
 
+/* pdf(in, out) at the test's point. */
+static double pdf_at(SampleTest *t, GVec3 in)
+{
+    GScratchMark mark = gscratch_mark(t->ctx->scratch);
+    double pdf = gmaterial_pdf(t->ctx->material, &t->sp, in, t->out, &t->ri);
+    gscratch_release(t->ctx->scratch, mark);
+    return pdf;
+}
+
 /* The pdf integrated over bin (i, j) of the sphere (cos theta in [-1, 1] about +z, phi in [0, 2 pi)). */
 static double bin_integral(SampleTest *t, int i, int j, int sub)
 {
@@ -122,10 +136,7 @@ static double bin_integral(SampleTest *t, int i, int j, int sub)
         double th = t0 + (a + 0.5) * dt, st = sin(th), ct = cos(th);
         for (int b = 0; b < sub; b++) {
             double ph = p0 + (b + 0.5) * dp;
-            GVec3 in = gvec3(st * cos(ph), st * sin(ph), ct);
-            GScratchMark mark = gscratch_mark(t->ctx->scratch);
-            double p = gmaterial_pdf(t->ctx->material, &t->sp, in, t->out, &t->ri);
-            gscratch_release(t->ctx->scratch, mark);
+            double p = pdf_at(t, gvec3(st * cos(ph), st * sin(ph), ct));
             if (!isfinite(p) || p < 0.0)
                 return NAN;
             sum += p * st;
@@ -185,15 +196,30 @@ typedef struct SampleResult {
 static void run_test(SampleTest *t, int nsamples, unsigned long long seed, SampleResult *r)
 {
     GmatContext *ctx = t->ctx;
-    static double expected[BINS_COS * BINS_PHI];
-    static int observed[BINS_COS * BINS_PHI];
+    enum { NBINS = BINS_COS * BINS_PHI };
+    static double expected[NBINS];
+    static int observed[NBINS];
+    static unsigned char missed[NBINS]; /* the midpoints saw 0, a draw found the pdf positive */
     memset(observed, 0, sizeof observed);
+    memset(missed, 0, sizeof missed);
     memset(r, 0, sizeof *r);
     int is_delta = gmaterial_is_delta(ctx->material, &t->sp);
     if (is_delta < 0) {
         r->failed = 1, r->why = "is_delta failed";
         return;
     }
+    /* expected counts first, so that a draw into a bin expecting none is checked as it is drawn */
+    double integral = 0.0;
+    for (int b = 0; b < NBINS; b++) {
+        double v = bin_integral(t, b / BINS_PHI, b % BINS_PHI, SUB);
+        if (!isfinite(v)) {
+            r->failed = 1, r->why = "pdf is not finite and >= 0";
+            return;
+        }
+        expected[b] = v * nsamples;
+        integral += v;
+    }
+    int drawn_at_zero = 0; /* a direction drawn where pdf() is 0 */
     for (int n = 0; n < nsamples; n++) {
         double u1 = next_uniform(&seed), u2 = next_uniform(&seed);
         GMaterialSample s;
@@ -235,12 +261,18 @@ static void run_test(SampleTest *t, int nsamples, unsigned long long seed, Sampl
         if (phi < 0.0)
             phi += 2.0 * M_PI;
         int i = (int)((c + 1.0) * 0.5 * BINS_COS), j = (int)(phi / (2.0 * M_PI) * BINS_PHI);
-        observed[(i < BINS_COS ? i : BINS_COS - 1) * BINS_PHI + (j < BINS_PHI ? j : BINS_PHI - 1)]++;
+        int b = (i < BINS_COS ? i : BINS_COS - 1) * BINS_PHI + (j < BINS_PHI ? j : BINS_PHI - 1);
+        observed[b]++;
+        if (expected[b] == 0.0) { /* every such draw: one in a clipped corner must not excuse the others */
+            double pdf = pdf_at(t, in);
+            if (pdf > 0.0 && isfinite(pdf))
+                missed[b] = 1;
+            else
+                drawn_at_zero = 1;
+        }
         if (n < NWEIGHT) {
             GVec3 n_s = gsurfpoint_normal(&t->sp);
-            GScratchMark m2 = gscratch_mark(ctx->scratch);
-            double pdf = gmaterial_pdf(ctx->material, &t->sp, in, t->out, &t->ri);
-            gscratch_release(ctx->scratch, m2);
+            double pdf = pdf_at(t, in);
             double e = fabs(pdf - s.pdf) / fmax(pdf, s.pdf);
             if (!transmit && gmaterial_is_mirror_pair(in, n_s, t->out))
                 continue; /* reflection() returns the ideal part on the mirror ray */
@@ -255,10 +287,11 @@ static void run_test(SampleTest *t, int nsamples, unsigned long long seed, Sampl
             r->weight_err = fmax(r->weight_err, isfinite(e) ? e : INFINITY);
         }
     }
-    /* expected counts */
-    double integral = 0.0;
-    for (int b = 0; b < BINS_COS * BINS_PHI; b++) {
-        double v = bin_integral(t, b / BINS_PHI, b % BINS_PHI, SUB);
+    /* the bins the midpoints missed, again on the fine grid */
+    for (int b = 0; b < NBINS; b++) {
+        if (!missed[b])
+            continue;
+        double v = bin_integral(t, b / BINS_PHI, b % BINS_PHI, SUB_EDGE);
         if (!isfinite(v)) {
             r->failed = 1, r->why = "pdf is not finite and >= 0";
             return;
@@ -270,14 +303,14 @@ static void run_test(SampleTest *t, int nsamples, unsigned long long seed, Sampl
     r->integral_err = fmax(r->integral_err, fabs(integral - share));
     if (r->nondelta == 0)
         return;
+    if (drawn_at_zero) {
+        r->log_p = INFINITY; /* drawn where the pdf says never */
+        return;
+    }
     /* Pearson's chi2 over the bins, those expecting fewer than MIN_EXPECTED pooled */
     double chi2 = 0.0, pool_e = 0.0;
     int pool_o = 0, dof = -1;
-    for (int b = 0; b < BINS_COS * BINS_PHI; b++) {
-        if (expected[b] == 0.0 && observed[b] > 0) {
-            r->log_p = INFINITY; /* drawn where the pdf says never */
-            return;
-        }
+    for (int b = 0; b < NBINS; b++) {
         if (expected[b] < MIN_EXPECTED) {
             pool_e += expected[b];
             pool_o += observed[b];
