@@ -193,6 +193,22 @@ typedef struct SampleResult {
     const char *why; /* of a failure to evaluate */
 } SampleResult;
 
+/* Expected counts: N * the pdf's integral over each bin on a sub x sub grid (refined as bin_integral does), only
+ * over the bins marked in `only` unless it is NULL, added to *integral; 0 when the pdf is not finite and >= 0. */
+static int expect(SampleTest *t, int nsamples, int sub, const unsigned char *only, double *expected, double *integral)
+{
+    for (int b = 0; b < BINS_COS * BINS_PHI; b++) {
+        if (only && !only[b])
+            continue;
+        double v = bin_integral(t, b / BINS_PHI, b % BINS_PHI, sub);
+        if (!isfinite(v))
+            return 0;
+        expected[b] = v * nsamples;
+        *integral += v;
+    }
+    return 1;
+}
+
 static void run_test(SampleTest *t, int nsamples, unsigned long long seed, SampleResult *r)
 {
     GmatContext *ctx = t->ctx;
@@ -210,14 +226,9 @@ static void run_test(SampleTest *t, int nsamples, unsigned long long seed, Sampl
     }
     /* expected counts first, so that a draw into a bin expecting none is checked as it is drawn */
     double integral = 0.0;
-    for (int b = 0; b < NBINS; b++) {
-        double v = bin_integral(t, b / BINS_PHI, b % BINS_PHI, SUB);
-        if (!isfinite(v)) {
-            r->failed = 1, r->why = "pdf is not finite and >= 0";
-            return;
-        }
-        expected[b] = v * nsamples;
-        integral += v;
+    if (!expect(t, nsamples, SUB, NULL, expected, &integral)) {
+        r->failed = 1, r->why = "pdf is not finite and >= 0";
+        return;
     }
     int drawn_at_zero = 0; /* a direction drawn where pdf() is 0 */
     for (int n = 0; n < nsamples; n++) {
@@ -287,17 +298,9 @@ static void run_test(SampleTest *t, int nsamples, unsigned long long seed, Sampl
             r->weight_err = fmax(r->weight_err, isfinite(e) ? e : INFINITY);
         }
     }
-    /* the bins the midpoints missed, again on the fine grid */
-    for (int b = 0; b < NBINS; b++) {
-        if (!missed[b])
-            continue;
-        double v = bin_integral(t, b / BINS_PHI, b % BINS_PHI, SUB_EDGE);
-        if (!isfinite(v)) {
-            r->failed = 1, r->why = "pdf is not finite and >= 0";
-            return;
-        }
-        expected[b] = v * nsamples;
-        integral += v;
+    if (!expect(t, nsamples, SUB_EDGE, missed, expected, &integral)) { /* the bins the midpoints missed */
+        r->failed = 1, r->why = "pdf is not finite and >= 0";
+        return;
     }
     double share = (double)r->nondelta / nsamples;
     r->integral_err = fmax(r->integral_err, fabs(integral - share));
