@@ -174,6 +174,17 @@ static double compare_integrators(Scene *s, int depth, int spp, double *whitted,
     return worst;
 }
 
+/* Whitted and path tracing agree on s (over the image and in each quarter); s is destroyed. */
+static void integrators_agree(Scene *s, int depth, int spp)
+{
+    double w, p;
+    double worst = compare_integrators(s, depth, spp, &w, &p);
+    assert_true(w > 0.01);
+    assert_near(p / w, 1.0, 0.02);
+    assert_true(worst < 0.05);
+    scene_destroy(s);
+}
+
 static void test_whitted_agrees(void **state)
 {
     (void)state;
@@ -186,12 +197,7 @@ static void test_whitted_agrees(void **state)
     add_sphere(s, emitter(s, 2.0), gvec3(0.2, 1.8, -1.5), 0.5);
     Light *l = add_light(s, LIGHT_POINT, 5.0);
     l->position = gvec3(0, 3, 2);
-    double w, p;
-    double worst = compare_integrators(s, 6, 256, &w, &p);
-    assert_true(w > 0.01);
-    assert_near(p / w, 1.0, 0.02);
-    assert_true(worst < 0.05);
-    scene_destroy(s);
+    integrators_agree(s, 6, 256);
 
     /* a diffuse floor lit by a point light, seen directly and in ideal surfaces; depth 1 leaves no path with
      * a second diffuse vertex, so path tracing computes what Whitted does (its glass picks one lobe) */
@@ -201,11 +207,7 @@ static void test_whitted_agrees(void **state)
     add_sphere(s, mirror(s, 0.9), gvec3(0.7, 0.6, -0.3), 0.6);
     l = add_light(s, LIGHT_POINT, 20.0);
     l->position = gvec3(1, 3, 2);
-    worst = compare_integrators(s, 1, 64, &w, &p);
-    assert_true(w > 0.01);
-    assert_near(p / w, 1.0, 0.02);
-    assert_true(worst < 0.05);
-    scene_destroy(s);
+    integrators_agree(s, 1, 64);
 }
 
 /* interpolate of a and b at t = 0.5 (the children's references are taken over). */
@@ -251,12 +253,7 @@ static void test_blend_shared_ray(void **state)
     add_sphere(s, half_blend(mirror(s, 0.9), glass(s, 1.5)), gvec3(0, 0.6, 0), 0.6);
     Light *l = add_light(s, LIGHT_POINT, 20.0);
     l->position = gvec3(1, 3, 2);
-    double w, p;
-    double worst = compare_integrators(s, 1, 256, &w, &p);
-    assert_true(w > 0.01);
-    assert_near(p / w, 1.0, 0.02);
-    assert_true(worst < 0.05);
-    scene_destroy(s);
+    integrators_agree(s, 1, 256);
 }
 
 /* Dispersion: a strongly dispersive glass sphere (Cauchy 1.45 + 0.03 / lambda^2, lambda in um: 1.64 at 400 nm,
@@ -274,12 +271,7 @@ static void test_dispersion_agrees(void **state)
     assert_int_equal(gdielectric_create(s->model, &gp, &g, &err), G_OK);
     add_sphere(s, g, gvec3(0, 0.6, 0), 0.6);
     add_sphere(s, emitter(s, 2.0), gvec3(0.3, 1.0, -2.0), 0.7);
-    double w, p;
-    double worst = compare_integrators(s, 6, 256, &w, &p);
-    assert_true(w > 0.01);
-    assert_near(p / w, 1.0, 0.02);
-    assert_true(worst < 0.05);
-    scene_destroy(s);
+    integrators_agree(s, 6, 256);
 }
 
 /* ---- convergence: RMSE halves when the samples quadruple ---- */
