@@ -34,6 +34,13 @@ static void transform_destroy(GMaterial *self)
 
 static int is_zero(GVec3 a) { return a.x == 0.0 && a.y == 0.0 && a.z == 0.0; }
 
+/* The tangents along the new (u, v) from those along the old ones (du, dv), by the (u, v) map's linear part m. */
+static void uv_tangents(const double *m, GVec3 du, GVec3 dv, GVec3 *new_du, GVec3 *new_dv)
+{
+    *new_du = gvec3_add(gvec3_scale(du, m[0]), gvec3_scale(dv, m[3]));
+    *new_dv = gvec3_add(gvec3_scale(du, m[1]), gvec3_scale(dv, m[4]));
+}
+
 /* Fills q with the moved copy of sp. Unless `for_normal`, the shading normal (and, where refraction needs
  * it, the relative index) is first computed on the original point, so the copy carries the values of the
  * untransformed tree instead of recomputing them from the root at moved coordinates. */
@@ -53,12 +60,9 @@ static void move(const Transform *t, GSurfPoint *sp, GSurfPoint *q, int for_norm
          * space height along the object tangents) must be taken along the same directions as its dpdu, dpdv */
         const double *m = t->uv.m;
         gaffine2_apply(&t->uv_inv, sp->u, sp->v, &q->u, &q->v);
-        q->dpdu = gvec3_add(gvec3_scale(sp->dpdu, m[0]), gvec3_scale(sp->dpdv, m[3]));
-        q->dpdv = gvec3_add(gvec3_scale(sp->dpdu, m[1]), gvec3_scale(sp->dpdv, m[4]));
-        if (have) {
-            q->object_dpdu = gvec3_add(gvec3_scale(sp->object_dpdu, m[0]), gvec3_scale(sp->object_dpdv, m[3]));
-            q->object_dpdv = gvec3_add(gvec3_scale(sp->object_dpdu, m[1]), gvec3_scale(sp->object_dpdv, m[4]));
-        }
+        uv_tangents(m, sp->dpdu, sp->dpdv, &q->dpdu, &q->dpdv);
+        if (have)
+            uv_tangents(m, sp->object_dpdu, sp->object_dpdv, &q->object_dpdu, &q->object_dpdv);
         q->uv_footprint = sp->uv_footprint * t->uv_area;
         const double *mi = t->uv_inv.m; /* the footprint's axes move with the coordinates */
         q->uv_axis1[0] = mi[0] * sp->uv_axis1[0] + mi[1] * sp->uv_axis1[1];
