@@ -220,11 +220,11 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
     GScratchMark mark = gscratch_mark(c->scratch);
     GColor ri, rg, tmp, weight, illum;
     int rc = G_OK, opaque, delta, valid;
-    /* written in full before they are read (the group's index by its fill, the others as an operation's out; the
-     * bounce's light by path_radiance): not cleared. The sample's weight is read even when no sample is drawn. */
+    /* written in full before they are read (the group's index by its fill, the others as an operation's out: the
+     * weight by a sample drawn, the bounce's light by path_radiance): not cleared */
     CHECK(gcolor_scratch_uncleared(&rg, s->model, c->scratch));
     CHECK(gcolor_scratch_uncleared(&tmp, s->model, c->scratch));
-    CHECK(gcolor_scratch(&weight, s->model, c->scratch));
+    CHECK(gcolor_scratch_uncleared(&weight, s->model, c->scratch));
     CHECK(gcolor_scratch_uncleared(&illum, s->model, c->scratch));
     CHECK(trace_relative_index(c, sp, &ri));
     CHECK(gmaterial_emission(m, sp, to_viewer, out));
@@ -254,8 +254,10 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
         GMaterialSample smp;
         double u1 = uniform(p), u2 = uniform(p);
         CHECK(valid = gmaterial_sample(m, sp, to_viewer, ri_use, u1, u2, &smp, &weight));
+        if (!valid || !(smp.pdf > 0.0)) /* no sample: the weight is not read */
+            goto absorb;
         double nb = beta * gcolor_brightness(&weight), q = 1.0;
-        if (!valid || !(smp.pdf > 0.0) || !(nb > 0.0) || !isfinite(nb))
+        if (!(nb > 0.0) || !isfinite(nb))
             goto absorb;
         if (depth >= PATH_RR_START) { /* Russian roulette on the path's throughput */
             q = fmin(1.0, nb);

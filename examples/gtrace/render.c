@@ -23,7 +23,8 @@ typedef struct Job {
     const Camera *cam;
     Framebuffer *fb;
     int spp, depth, max_rays, integrator;
-    int grid; /* strata_grid(spp): the pixel's samples on a grid of grid x grid strata (0: not a square) */
+    int grid;  /* strata_grid(spp): the pixel's samples on a grid of grid x grid strata (0: not a square) */
+    int ahead; /* one sample a pixel from a pinhole camera: a row's camera rays are computed ahead (render_row) */
     int x0, y0; /* the crop's origin in the full image */
     Media media0;
 } Job;
@@ -122,13 +123,12 @@ static int store_pixel(Worker *w, const Job *job, int x, int y, const GColor *pi
 }
 
 /* The pixels x0 .. x1 - 1 (at most TILE) of row y, in three passes, so that the short dependent chains at the two
- * ends of a pixel's work overlap each other instead of stalling it: with one sample per pixel from a pinhole camera
- * the row's camera rays first (a square root and divisions before the first intersection test); then the pixels'
- * colours; then their conversions to the framebuffer (the conversion to XYZ waits for the whole trace). The same
- * rays and values, bit for bit. */
+ * ends of a pixel's work overlap each other instead of stalling it: when job->ahead, the row's camera rays first (a
+ * square root and divisions before the first intersection test); then the pixels' colours; then their conversions
+ * to the framebuffer (the conversion to XYZ waits for the whole trace). The same rays and values, bit for bit. */
 static int render_row(Worker *w, const Job *job, int x0, int x1, int y)
 {
-    int ahead = job->spp == 1 && camera_is_pinhole(job->cam);
+    int ahead = job->ahead;
     if (ahead)
         for (int x = x0; x < x1; x++)
             camera_ray(job->cam, x + 0.5, y + 0.5, &w->row[x - x0]);
@@ -271,7 +271,8 @@ int renderer_create(Renderer **out, const Scene *s, const RenderSettings *rs, Fr
     fb->full_height = rs->height;
     r->job = (Job){.scene = s, .cam = &r->cam, .fb = fb, .spp = rs->spp, .grid = strata_grid(rs->spp),
                    .depth = rs->depth, .max_rays = rs->max_rays > 0 ? rs->max_rays : RENDER_DEFAULT_MAX_RAYS,
-                   .x0 = fb->x, .y0 = fb->y, .integrator = rs->integrator};
+                   .x0 = fb->x, .y0 = fb->y, .integrator = rs->integrator,
+                   .ahead = rs->spp == 1 && camera_is_pinhole(&r->cam)};
     if (s->medium) {
         r->job.media0.m[0] = s->medium;
         r->job.media0.n = 1;
