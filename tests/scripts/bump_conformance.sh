@@ -37,7 +37,10 @@ for child in ll ph pm mix; do
             case $form in
             plain) echo "node $name $bump" ;;
             over) echo "node $name transform { child $bump $MOVE }" ;;
-            under) echo "node $name bump { child transform { child $child $MOVE } height $height strength $strength }" ;;
+            under)
+                moved="transform { child $child $MOVE }"
+                echo "node $name bump { child $moved height $height strength $strength }"
+                ;;
             esac >> "$TMP/bumps.mat"
             eval "model=\${$((turn % 3 + 1))}"
             echo "$name $model" >> "$TMP/nodes"
