@@ -2,6 +2,7 @@
 #include "generic/color.h"
 #include "generic/registry.h"
 #include "generic/spectral_kernels.h"
+#include "generic/spectral.h"
 
 #include <limits.h>
 #include <math.h>
@@ -333,6 +334,8 @@ int gcolor_from_nm(GColor *c, const GSpectrumNM *in, GColorRole role)
             return G_ERR_INVALID;
     return c->model->cls->from_nm(c->model, in, role, c);
 }
+
+int gcolormodel_xyz_shows_nonfinite(const GColorModel *m) { return m && m->cls->to_xyz == gspectral_to_xyz; }
 
 int gcolor_to_xyz(const GColor *c, GColorRole role, double xyz[3])
 {

@@ -476,6 +476,51 @@ static void test_nonfinite_never_reaches_pixels(void **state)
     scene_destroy(s);
 }
 
+/* With one sample a pixel, in every model (the spectral ones find a non-finite sample in the coordinates the pixel
+ * converts to, gcolormodel_xyz_shows_nonfinite, not sample by sample): each sphere pixel's sample is counted once and
+ * its pixel and wavelength values are black; the background's are not. */
+static void test_nonfinite_one_sample_every_model(void **state)
+{
+    (void)state;
+    const char *models[] = {"rgb", "spectrum", "spectrum9", "bispectral"};
+    long counted[4];
+    for (int i = 0; i < 4; i++) {
+        Scene *s = new_scene(models[i], gvec3(0, 0, 4), gvec3(0, 0, 0), 40.0);
+        GMaterial *m = gmem_calloc(1, sizeof *m);
+        GError err;
+        assert_int_equal(gmaterial_init(m, &nan_class, s->model, &err), G_OK);
+        add_sphere(s, m, gvec3(0, 0, 0), 1.0);
+        set_grey(&s->background, 0.25, GCOLOR_LIGHT);
+        assert_int_equal(accel_build(s, &err), G_OK);
+        RenderSettings rs = {.width = 16, .height = 16, .spp = 1, .depth = 2, .threads = 2, .quiet = 1,
+                             .waves = i > 0, .cutoff = s->camera.cutoff}; /* rgb has no wavelengths */
+        Framebuffer fb;
+        RenderStats st;
+        assert_int_equal(render_image(s, &rs, &fb, &st, &err), G_OK);
+        assert_true(i == 0 || fb.nwaves > 0);
+        long black = 0;
+        for (int p = 0; p < 16 * 16; p++) {
+            const float *px = fb.pixels + 3 * p, *wv = fb.waves ? fb.waves + (size_t)fb.nwaves * (size_t)p : NULL;
+            int dark = px[0] == 0.0f && px[1] == 0.0f && px[2] == 0.0f;
+            black += dark;
+            for (int k = 0; wv && k < fb.nwaves; k++) {
+                assert_true(isfinite(wv[k]));
+                assert_true(dark ? wv[k] == 0.0f : wv[k] > 0.0f);
+            }
+            for (int ch = 0; ch < 3; ch++)
+                assert_true(isfinite(px[ch]) && (dark || px[ch] > 0.0f));
+        }
+        assert_int_equal((long)st.nonfinite, black);
+        counted[i] = black;
+        print_message("%-10s %ld non-finite samples counted, as many black pixels\n", models[i], black);
+        framebuffer_free(&fb);
+        scene_destroy(s);
+    }
+    assert_true(counted[0] > 0 && counted[0] < 16 * 16);
+    for (int i = 1; i < 4; i++)
+        assert_int_equal(counted[i], counted[0]);
+}
+
 /* ---- a material that fails stops the render: an error, and no image ---- */
 
 static int failing_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
@@ -523,6 +568,7 @@ int main(void)
         cmocka_unit_test(test_grey_world_models),
         cmocka_unit_test(test_depth_limit),
         cmocka_unit_test(test_nonfinite_never_reaches_pixels),
+        cmocka_unit_test(test_nonfinite_one_sample_every_model),
         cmocka_unit_test(test_material_error_stops_render),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

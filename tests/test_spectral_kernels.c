@@ -3,7 +3,8 @@
  * sign test, the fill, the mix of three rows) give bit for bit the scalar definition's results, for every length
  * from 0 to 90 (the vector part and the tail), with operands that alias the output, and with zeros, negative
  * zeros, infinities and NaNs among the samples. The colour matching kernel (float weights and float sums) stays
- * within a bound of the double sums, on its own and through the sampled models' to_xyz. Where the processor has
+ * within a bound of the double sums, on its own and through the sampled models' to_xyz, and shows every non-finite
+ * sample in all three coordinates (gcolormodel_xyz_shows_nonfinite). Where the processor has
  * AVX2, the 8-float versions give bit for bit the 4-float versions' results. */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -302,6 +303,75 @@ static void test_models_to_xyz_against_nm(void **state)
     }
 }
 
+/* Every non-finite sample shows in all three coordinates of the colour matching kernel, whatever its weight (zero
+ * included: NaN and infinity times 0 are NaN), for every length and position, in the 4- and 8-float versions: what
+ * gcolormodel_xyz_shows_nonfinite promises for the models on the kit's to_xyz, which a renderer relies on to skip
+ * the sample-by-sample finiteness test. Then the promise itself, model by model, on grids whose lengths are and are
+ * not multiples of 8. */
+static int xyz_nonfinite(const double xyz[3]) { return !isfinite(xyz[0]) && !isfinite(xyz[1]) && !isfinite(xyz[2]); }
+
+#ifdef GSPECTRAL_AVX2
+static GSPECTRAL_TARGET_AVX2 void kxyz8(const float *t, const float *a, int n, double xyz[3])
+{
+    gspectral_kxyz8(t, a, n, xyz);
+}
+#endif
+
+static void test_xyz_shows_nonfinite(void **state)
+{
+    (void)state;
+    const float odd[] = {NAN, INFINITY, -INFINITY};
+    int cases = 0;
+    for (int n = 1; n <= N; n++)
+        for (int k = 0; k < n; k++)
+            for (int o = 0; o < 3; o++) {
+                float a[N], t[(N + 7) / 8 * 24];
+                fill(a, n);
+                fill(t, (n + 7) / 8 * 24);
+                if ((k + o) % 2) /* the sample's three weights zero */
+                    for (int c = 0; c < 3; c++)
+                        t[(k >> 3) * 24 + (k & 7) + 8 * c] = 0.0f;
+                a[k] = odd[o];
+                double xyz[3];
+                gspectral_kxyz(t, a, n, xyz);
+                assert_true(xyz_nonfinite(xyz));
+#ifdef GSPECTRAL_AVX2
+                if (gspectral_have_avx2()) {
+                    kxyz8(t, a, n, xyz);
+                    assert_true(xyz_nonfinite(xyz));
+                }
+#endif
+                cases++;
+            }
+    const char *names[] = {"spectrum", "spectrum", "spectrum", "spectrum", "spectrum9", "bispectral", "rgb"};
+    const GColorModelOptions opts[] = {{5, 0, 0}, {1, 0, 0}, {10, 0, 0}, {6, 400, 700}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    const int shows[] = {1, 1, 1, 1, 1, 0, 0}; /* bispectral and rgb have conversions of their own */
+    assert_int_equal(gcolormodel_xyz_shows_nonfinite(NULL), 0);
+    for (int i = 0; i < 7; i++) {
+        GColorModel *m;
+        assert_int_equal(gcolormodel_create(names[i], &opts[i], &m, NULL), G_OK);
+        assert_int_equal(gcolormodel_xyz_shows_nonfinite(m), shows[i]);
+        GColor c;
+        assert_int_equal(gcolor_alloc(&c, m), G_OK);
+        for (int k = 0; shows[i] && k < m->nvalues; k++)
+            for (int o = 0; o < 3; o++) {
+                for (int j = 0; j < m->nvalues; j++)
+                    c.v[j] = 0.5f + 0.01f * (float)j;
+                c.v[k] = odd[o];
+                double xyz[3];
+                assert_int_equal(gcolor_to_xyz(&c, GCOLOR_LIGHT, xyz), G_OK);
+                assert_true(xyz_nonfinite(xyz));
+                assert_false(gcolor_is_finite(&c));
+                cases++;
+            }
+        print_message("%-10s %3d samples: the conversion %s every non-finite sample\n", names[i], m->nvalues,
+                      shows[i] ? "shows" : "is not known to show");
+        gcolor_free(&c);
+        gcolormodel_destroy(m);
+    }
+    print_message("%d non-finite samples, each in all three coordinates\n", cases);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -311,6 +381,7 @@ int main(void)
         cmocka_unit_test(test_fill_and_mix3_equal_scalar),
         cmocka_unit_test(test_xyz_kernel_within_bound),
         cmocka_unit_test(test_models_to_xyz_against_nm),
+        cmocka_unit_test(test_xyz_shows_nonfinite),
         cmocka_unit_test(test_avx2_equals_sse),
     };
     if (generic_register_builtins(NULL) != G_OK)

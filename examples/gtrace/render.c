@@ -25,6 +25,9 @@ typedef struct Job {
     int spp, depth, max_rays, integrator;
     int grid;  /* strata_grid(spp): the pixel's samples on a grid of grid x grid strata (0: not a square) */
     int ahead; /* one sample a pixel from a pinhole camera: a row's camera rays are computed ahead (render_row) */
+    int finite_by_xyz; /* one sample a pixel, and a model whose conversion to XYZ shows every non-finite value
+                        * (gcolormodel_xyz_shows_nonfinite): a non-finite sample is found by store_pixel in the
+                        * coordinates it converts, three numbers, not tested sample by sample in render_pixel */
     int x0, y0; /* the crop's origin in the full image */
     Media media0;
 } Job;
@@ -40,8 +43,8 @@ typedef struct Worker {
     char apart[64]; /* keeps the next worker's fields, written per ray, off the cache line of these */
 } Worker;
 
-/* The colour of pixel (x, y) into out (black when its one sample is not finite); ahead: its camera ray computed
- * beforehand (one sample through the pixel's centre from a pinhole camera, as pixel_sample and camera_ray_lens give
+/* The colour of pixel (x, y) into out (black when its one sample is not finite, unless job->finite_by_xyz leaves
+ * that to store_pixel); ahead: its camera ray computed beforehand (one sample through the pixel's centre from a pinhole camera, as pixel_sample and camera_ray_lens give
  * it), or NULL. */
 static int render_pixel(Worker *w, const Job *job, int x, int y, const Ray *ahead, GColor *out)
 {
@@ -76,7 +79,7 @@ static int render_pixel(Worker *w, const Job *job, int x, int y, const Ray *ahea
         gscratch_release(c->scratch, m2);
         if (rc < 0)
             return rc;
-        if (!gcolor_is_finite(sample)) {
+        if (!job->finite_by_xyz && !gcolor_is_finite(sample)) {
             w->nonfinite++;
             if (n == 1) /* the one sample dropped: black */
                 gcolor_black(out);
@@ -90,8 +93,9 @@ static int render_pixel(Worker *w, const Job *job, int x, int y, const Ray *ahea
     return G_OK;
 }
 
-/* Writes pixel (x, y) of the framebuffer from its colour: linear sRGB (black, and counted, when not finite) and, when
- * the framebuffer keeps them, the values at its wavelengths. */
+/* Writes pixel (x, y) of the framebuffer from its colour: linear sRGB (black, and counted, when not finite: a
+ * non-finite colour, which job->finite_by_xyz lets through render_pixel, converts to non-finite coordinates) and,
+ * when the framebuffer keeps them, the values at its wavelengths. */
 static int store_pixel(Worker *w, const Job *job, int x, int y, const GColor *pixel)
 {
     double xyz[3], lin[3];
@@ -272,7 +276,8 @@ int renderer_create(Renderer **out, const Scene *s, const RenderSettings *rs, Fr
     r->job = (Job){.scene = s, .cam = &r->cam, .fb = fb, .spp = rs->spp, .grid = strata_grid(rs->spp),
                    .depth = rs->depth, .max_rays = rs->max_rays > 0 ? rs->max_rays : RENDER_DEFAULT_MAX_RAYS,
                    .x0 = fb->x, .y0 = fb->y, .integrator = rs->integrator,
-                   .ahead = rs->spp == 1 && camera_is_pinhole(&r->cam)};
+                   .ahead = rs->spp == 1 && camera_is_pinhole(&r->cam),
+                   .finite_by_xyz = rs->spp == 1 && gcolormodel_xyz_shows_nonfinite(s->model)};
     if (s->medium) {
         r->job.media0.m[0] = s->medium;
         r->job.media0.n = 1;

@@ -258,6 +258,13 @@ GENERIC_API double gcolor_band_value(const GColor *c, int band);
 GENERIC_API GENERIC_NODISCARD int gcolor_is_finite(const GColor *c);
 /** 1 when every sample is finite and >= 0 (a physical light or reflectance), 0 otherwise. */
 GENERIC_API GENERIC_NODISCARD int gcolor_is_nonnegative(const GColor *c);
+/** 1 when the model's conversion to XYZ shows every non-finite value: gcolor_to_xyz of a colour of m with a NaN or
+ * infinite value anywhere gives non-finite coordinates, so that finite coordinates prove the colour finite and a
+ * renderer may test the three numbers it converts instead of every sample (gcolor_is_finite). It holds for the
+ * models whose to_xyz is the spectral kit's (gspectral_to_xyz: each coordinate is a sum over every sample of the
+ * sample times a weight, and NaN or infinity times any weight, zero included, stays non-finite through the sum); 0
+ * for any other, whose conversion the library cannot read (it may clamp, or skip samples). */
+GENERIC_API int gcolormodel_xyz_shows_nonfinite(const GColorModel *m);
 
 /* ---- conversions ---- */
 
