@@ -40,6 +40,13 @@ int gmat_reflect(GmatContext *ctx, GVec3 in, GVec3 out);
 /** The ideal specular part for light from in: its direction and reflected colour (into ctx->result); 0 when the
  * material has no ideal reflection ray. */
 int gmat_specular(GmatContext *ctx, GVec3 in, GVec3 *dir);
+/** Adds to total the light from in (upper hemisphere) that refraction() (below != 0) or reflection() (below = 0)
+ * sends into the lower or upper hemisphere, integrated over an n x 2n grid (midpoints in sin^2(theta) and phi) and
+ * divided by in's cosine with the geometric normal: the non-ideal part of gmat_albedo and gmat_transmittance. */
+int gmat_integrate(GmatContext *ctx, GVec3 in, int n, int below, GColor *total);
+/** The ideal refraction ray for light from in: its direction (into the lower hemisphere) and transmitted colour
+ * (into ctx->result); 0 when the material has none there. */
+int gmat_ideal_refraction(GmatContext *ctx, GVec3 in, GVec3 *dir);
 /** Directional-hemispherical reflectance for light from in, integrated over an n x 2n grid (midpoints in
  * sin^2(theta) and phi, exact for a Lambertian surface) plus the ideal specular part: the reflected colour goes
  * to `total` (storage of the model) and the luminance fractions to *y_total and *y_specular. */

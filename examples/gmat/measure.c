@@ -116,7 +116,7 @@ int gmat_specular(GmatContext *ctx, GVec3 in, GVec3 *dir)
 /* rho = 1/cos(theta_in) * integral of f(in, out) cos(theta_out) d(omega) over the upper (below = 0: reflection)
  * or lower (below = 1: refraction) hemisphere; with u = sin^2(theta_out): cos(theta) d(omega) = 1/2 du dphi
  * over [0,1] x [0, 2 pi]. Adds into total. */
-static int integrate(GmatContext *ctx, GVec3 in, int n, int below, GColor *total)
+int gmat_integrate(GmatContext *ctx, GVec3 in, int n, int below, GColor *total)
 {
     double w = 0.5 * (1.0 / n) * (2.0 * M_PI / (2 * n)) / in.z;
     /* colours hold floats: sum each ring of directions on its own, then the rings, to keep rounding small */
@@ -145,7 +145,7 @@ int gmat_albedo(GmatContext *ctx, GVec3 in, int n, GColor *total, double *y_tota
 {
     double xyz[3];
     gcolor_black(total);
-    int rc = integrate(ctx, in, n, 0, total);
+    int rc = gmat_integrate(ctx, in, n, 0, total);
     if (rc != G_OK)
         return rc;
     *y_specular = 0.0;
@@ -169,35 +169,40 @@ int gmat_albedo(GmatContext *ctx, GVec3 in, int n, GColor *total, double *y_tota
     return G_OK;
 }
 
-int gmat_transmittance(GmatContext *ctx, GVec3 in, int n, GColor *total, double *y_ideal)
+int gmat_ideal_refraction(GmatContext *ctx, GVec3 in, GVec3 *dir)
 {
-    int rc = integrate(ctx, in, n, 1, total);
-    *y_ideal = 0.0;
-    if (rc != G_OK)
-        return rc;
-    /* the ideal ray: the refraction direction of the light's ray seen from outside, evaluated from inside */
+    /* the refraction direction of the light's ray seen from outside, evaluated from inside */
     GSurfPoint up;
     gmat_surface_point(ctx, &up, 0);
     GScratchMark mark = gscratch_mark(ctx->scratch);
     GColor ri;
-    GVec3 dir;
-    rc = gcolor_scratch(&ri, ctx->model, ctx->scratch);
+    int rc = gcolor_scratch(&ri, ctx->model, ctx->scratch);
     if (rc == G_OK)
         rc = gmat_relative_index(&up, &ri);
-    int valid = rc == G_OK ? gmaterial_refraction_dir(ctx->material, &up, gvec3_neg(in), &ri, &dir) : rc;
+    int valid = rc == G_OK ? gmaterial_refraction_dir(ctx->material, &up, gvec3_neg(in), &ri, dir) : rc;
     gscratch_release(ctx->scratch, mark);
-    if (valid < 0)
-        return valid;
-    if (valid == 1 && dir.z < 0.0) {
-        rc = transmit(ctx, in, gvec3_normalize(dir));
-        if (rc == G_OK) {
-            double xyz[3];
-            rc = gcolor_to_xyz(&ctx->result, GCOLOR_LIGHT, xyz);
-            if (rc == G_OK) {
-                *y_ideal = xyz[1];
-                rc = gcolor_add(total, total, &ctx->result);
-            }
-        }
+    if (valid != 1 || dir->z >= 0.0)
+        return valid < 0 ? valid : 0;
+    *dir = gvec3_normalize(*dir);
+    rc = transmit(ctx, in, *dir);
+    return rc == G_OK ? 1 : rc;
+}
+
+int gmat_transmittance(GmatContext *ctx, GVec3 in, int n, GColor *total, double *y_ideal)
+{
+    int rc = gmat_integrate(ctx, in, n, 1, total);
+    *y_ideal = 0.0;
+    if (rc != G_OK)
+        return rc;
+    GVec3 dir;
+    int ideal = gmat_ideal_refraction(ctx, in, &dir);
+    if (ideal != 1)
+        return ideal;
+    double xyz[3];
+    rc = gcolor_to_xyz(&ctx->result, GCOLOR_LIGHT, xyz);
+    if (rc == G_OK) {
+        *y_ideal = xyz[1];
+        rc = gcolor_add(total, total, &ctx->result);
     }
     return rc;
 }
