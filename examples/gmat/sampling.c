@@ -19,7 +19,10 @@
  *   weight        for non-delta directions weight = value(in, white, out) / pdf(in, out) with value
  *                 reflection() or refraction() (directions on the ideal mirror ray excluded: reflection() is
  *                 the ideal part there) and the sample's pdf = pdf(); for a delta lobe weight * pdf does not
- *                 exceed the value along the ideal ray (other lobes of a blend may add to it). */
+ *                 exceed the value along the ideal ray (other lobes of a blend may add to it). The value is
+ *                 refraction() for a sample flagged GSAMPLE_TRANSMIT, else reflection(), as a renderer weighs it;
+ *                 a sample on the other side of the geometric surface than its flag says (a ray about a tilted
+ *                 shading normal that points into the surface) must carry no light. */
 #include "gmat.h"
 
 #include <math.h>
@@ -173,6 +176,15 @@ static double color_excess(const GColor *w, double pdf, const GColor *value)
     return isfinite(d) ? d / big : INFINITY;
 }
 
+/* 1 when every sample of c is 0. */
+static int is_black(const GColor *c)
+{
+    for (int k = 0; k < c->model->nvalues; k++)
+        if (c->v[k] != 0.0f)
+            return 0;
+    return 1;
+}
+
 /* The value of white light from in towards out: reflection() or refraction(). */
 static int value_of(SampleTest *t, GVec3 in, int transmit, GColor *value)
 {
@@ -191,6 +203,7 @@ typedef struct SampleResult {
     double weight_err;
     int nondelta, delta, failed;
     const char *why; /* of a failure to evaluate */
+    const char *weight_why; /* of a weight error not measured by a difference */
 } SampleResult;
 
 /* Expected counts: N * the pdf's integral over each bin on a sub x sub grid (refined as bin_integral does), only
@@ -251,7 +264,15 @@ static void run_test(SampleTest *t, int nsamples, unsigned long long seed, Sampl
             return;
         }
         GVec3 in = gvec3_scale(s.in, 1.0 / len);
-        int transmit = in.z * t->ng < 0.0;
+        /* the value a renderer weighs the sample with is the one its flag names (path.c); on the other side of the
+         * geometric surface than the flag says (a mirror ray about a tilted shading normal that points into the
+         * surface) the sample must carry no light (material.h), else it leaks light through the surface */
+        int transmit = (s.flags & GSAMPLE_TRANSMIT) != 0;
+        if ((in.z * t->ng < 0.0) != transmit && !is_black(&t->weight)) {
+            r->weight_err = INFINITY;
+            r->weight_why = "a reflected sample below the geometric surface, or a transmitted one above it, "
+                            "carries light";
+        }
         if (s.flags & GSAMPLE_DELTA) {
             r->delta++;
             if (n < NWEIGHT) {
@@ -345,7 +366,7 @@ void gmat_check_sampling(GmatContext *ctx, const GmatPlace *places, int nplaces,
     SampleTest t = {.ctx = ctx};
     int failed = 0, tests = 0;
     double worst_p = 0.0, worst_int = 0.0, worst_w = 0.0, at_p = 0, at_int = 0, at_w = 0;
-    const char *why = NULL;
+    const char *why = NULL, *weight_why = NULL;
     long delta = 0, nondelta = 0;
     if (gcolor_alloc(&t.ri, ctx->model) || gcolor_alloc(&t.weight, ctx->model) || gcolor_alloc(&t.value, ctx->model) ||
         gcolor_alloc(&t.white, ctx->model) || gcolor_fill(&t.white, 1.0))
@@ -376,6 +397,8 @@ void gmat_check_sampling(GmatContext *ctx, const GmatPlace *places, int nplaces,
                 }
                 if (r.why && !why)
                     why = r.why;
+                if (r.weight_why && !weight_why)
+                    weight_why = r.weight_why;
                 delta += r.delta;
                 nondelta += r.nondelta;
                 double inc = below ? -sample_incidences[a] : sample_incidences[a];
@@ -410,6 +433,6 @@ void gmat_check_sampling(GmatContext *ctx, const GmatPlace *places, int nplaces,
              at_int, why ? "; " : "", why ? why : "");
     report(k, "pdf integral", worst_int, TOL_INTEGRAL, detail);
     snprintf(detail, sizeof detail, "(weight vs value / pdf and the sample's pdf vs pdf(), relative; worst at "
-             "theta_out %g)", at_w);
+             "theta_out %g%s%s)", at_w, weight_why ? "; " : "", weight_why ? weight_why : "");
     report(k, "weight", worst_w, TOL_WEIGHT, detail);
 }
