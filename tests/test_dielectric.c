@@ -1,5 +1,6 @@
 /* test_dielectric.c - the smooth dielectric: Fresnel reflectance and total internal reflection, dispersion
- * (BK7 by Sellmeier), Beer-Lambert absorption; each case in the rgb and the spectrum model. */
+ * (BK7 by Sellmeier), Beer-Lambert absorption, ideal rays about a tilted shading normal; each case in the rgb and
+ * the spectrum model. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -203,6 +204,71 @@ static void test_beer_lambert(void **state)
     fix_close(&f);
 }
 
+/* One ideal ray of the glass at f->sp for light leaving towards out (k 0: reflected, 1: refracted, with ri):
+ * checks that it passes on nothing when it points back across the geometric surface (reflected into it, refracted
+ * out of it) and something otherwise, and that the sample drawn along it (u1 picks the lobe) weighs the same.
+ * Returns 1 when it crossed. */
+static int tilted_ray(Fix *f, const GMaterial *glass, GVec3 out, const GColor *ri, int k, GVec3 dir)
+{
+    GColor one = grey(f, 1.0), r = new_color(f), w = new_color(f);
+    int across = (dir.z < 0.0) != k;
+    assert_int_equal(k ? gmaterial_refraction(glass, &f->sp, dir, &one, ri, out, &r)
+                       : gmaterial_reflection(glass, &f->sp, dir, &one, out, &r), G_OK);
+    if (across)
+        assert_black(&r);
+    else
+        assert_true(max_sample(&r) > 0.0);
+    GMaterialSample s;
+    assert_int_equal(gmaterial_sample(glass, &f->sp, out, ri, k ? 0x1.fffffffffffffp-1 : 0.0, 0.5, &s, &w), 1);
+    assert_int_equal(s.flags, GSAMPLE_DELTA | (k ? GSAMPLE_TRANSMIT : GSAMPLE_REFLECT));
+    assert_true(gvec3_length(gvec3_sub(gvec3_normalize(s.in), gvec3_normalize(dir))) < 1e-9);
+    assert_true(across ? max_sample(&w) == 0.0 : max_sample(&w) > 0.0);
+    return across;
+}
+
+/* A shading normal tilted as a bump tilts it (40 and 75 degrees), seen from outside and from inside: an ideal ray
+ * about it that points back across the geometric surface (reflected into the body, or refracted back into it from
+ * inside) passes nothing on, as a mirror's does, where it leaked F or 1 - F of the light through the surface; the
+ * rays on their own side pass on what they did. Each kind of crossing must occur. */
+static void test_tilted_normal(void **state)
+{
+    Fix f;
+    fix_open(&f, state);
+    GMaterial *glass = make_glass(&f, 1.5);
+    f.sp.material = glass;
+    int crossed[2][2] = {{0, 0}, {0, 0}}, kept[2][2] = {{0, 0}, {0, 0}};
+    for (int inside = 0; inside < 2; inside++) {
+        f.sp.from = inside ? glass : NULL;
+        f.sp.to = inside ? NULL : glass;
+        f.sp.entering = !inside;
+        GColor ri = rel_index(&f, f.sp.from, f.sp.to);
+        for (double tilt = 40; tilt < 80; tilt += 35)
+            for (double th = 5; th < 90; th += 5)
+                for (double ph = 0; ph < 360; ph += 30) {
+                    GVec3 out = dir_at(th * DEG, ph * DEG), ns = dir_at(tilt * DEG, 0), dir[2];
+                    gsurfpoint_invalidate(&f.sp);
+                    gsurfpoint_set_normal(&f.sp, ns);
+                    if (gvec3_dot(out, ns) <= 0.01)
+                        continue; /* the back of the facet */
+                    assert_int_equal(gmaterial_reflection_dir(glass, &f.sp, gvec3_neg(out), &dir[0]), 1);
+                    int refracts = gmaterial_refraction_dir(glass, &f.sp, gvec3_neg(out), &ri, &dir[1]);
+                    for (int k = 0; k < 1 + refracts; k++) {
+                        int c = tilted_ray(&f, glass, out, &ri, k, dir[k]);
+                        crossed[inside][k] += c;
+                        kept[inside][k] += !c;
+                    }
+                }
+    }
+    print_message("reflected rays crossing / kept: outside %d / %d, inside %d / %d; refracted: outside %d / %d, "
+                  "inside %d / %d\n", crossed[0][0], kept[0][0], crossed[1][0], kept[1][0], crossed[0][1], kept[0][1],
+                  crossed[1][1], kept[1][1]);
+    assert_true(crossed[0][0] > 0 && crossed[1][0] > 0 && crossed[1][1] > 0);
+    assert_int_equal(crossed[0][1], 0); /* entering the denser side, the refracted ray never turns back */
+    assert_true(kept[0][0] > 0 && kept[1][0] > 0 && kept[0][1] > 0 && kept[1][1] > 0);
+    gmaterial_unref(glass);
+    fix_close(&f);
+}
+
 /* ---- emitter ---- */
 
 int main(void)
@@ -213,6 +279,7 @@ int main(void)
         BOTH(test_fresnel),
         BOTH(test_dispersion_bk7),
         BOTH(test_beer_lambert),
+        BOTH(test_tilted_normal),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
