@@ -299,12 +299,13 @@ bench-mpi: $(BUILD)/bin/gtrace
 # headers as `make install` installs them (copied to $(BUILD)/plugins/include), never against the source tree.
 # Modules are not linked with libgeneric: the program that loads them provides the library's symbols.
 # tests/plugins/bad_module.c is built three ways (wrong interface version, failing init, no entry point)
-# for tests/test_plugin.c; tests/plugins/nonconforming.c eleven ways (albedo above 1, not reciprocal, a sampler
+# for tests/test_plugin.c; tests/plugins/nonconforming.c fourteen ways (albedo above 1, not reciprocal, a sampler
 # that disagrees with its pdf, a glow hidden by a wrong GMAT_NO_EMISSION, a transparency hidden by a wrong
 # GMAT_OPAQUE, a tilted normal hidden by a wrong GMAT_GEOMETRIC_NORMAL, a diffuse colour that a wrong
 # GMAT_LAMBERTIAN renders in place of the reflection, a reflection that reads u under a wrong GMAT_NO_UV, a grey
 # response to coloured light under a wrong GMAT_DIAGONAL, a wrong colour add, overlapping wavelength bands) for
-# tests/scripts/conformance.sh.
+# tests/scripts/conformance.sh, and (a mirror reflecting 1.2 times the light, a glass refracting about the
+# geometric normal, a mirror reflecting light from inside the body) for tests/scripts/bump_ideal_conformance.sh.
 PLUGIN_SRC := $(wildcard examples/plugins/*.c)
 PLUGIN_INC := $(BUILD)/plugins/include
 PLUGIN_HDR := $(patsubst include/generic/%,$(PLUGIN_INC)/generic/%,$(wildcard include/generic/*.h))
@@ -314,7 +315,8 @@ PLUGIN_SO  := $(PLUGIN_SRC:examples/plugins/%.c=$(BUILD)/plugins/%.so) \
               $(BUILD)/plugins/gain.so $(BUILD)/plugins/skewed.so $(BUILD)/plugins/bad_add.so \
               $(BUILD)/plugins/bad_bands.so $(BUILD)/plugins/misdrawn.so $(BUILD)/plugins/misflagged.so \
               $(BUILD)/plugins/misopaque.so $(BUILD)/plugins/misnormal.so $(BUILD)/plugins/misdiffuse.so \
-              $(BUILD)/plugins/misuv.so $(BUILD)/plugins/misdiag.so
+              $(BUILD)/plugins/misuv.so $(BUILD)/plugins/misdiag.so $(BUILD)/plugins/gain_mirror.so \
+              $(BUILD)/plugins/misbent.so $(BUILD)/plugins/leaky.so
 # -fvisibility=hidden: a module's own symbols never bind to the program's copies (only the two GENERIC_MODULE_EXPORT
 # symbols are exported).
 PLUGIN_CFLAGS := -std=c11 -D_GNU_SOURCE $(OPT) -g -fPIC -shared -fvisibility=hidden $(WARN) $(SANFLAGS) -I$(PLUGIN_INC)
@@ -390,6 +392,15 @@ $(BUILD)/plugins/misuv.so: tests/plugins/nonconforming.c $(PLUGIN_HDR)
 
 $(BUILD)/plugins/misdiag.so: tests/plugins/nonconforming.c $(PLUGIN_HDR)
 	$(CC) $(PLUGIN_CFLAGS) -DMISDIAG -o $@ $< -lm
+
+$(BUILD)/plugins/gain_mirror.so: tests/plugins/nonconforming.c $(PLUGIN_HDR)
+	$(CC) $(PLUGIN_CFLAGS) -DGAIN_MIRROR -o $@ $< -lm
+
+$(BUILD)/plugins/misbent.so: tests/plugins/nonconforming.c $(PLUGIN_HDR)
+	$(CC) $(PLUGIN_CFLAGS) -DMISBENT -o $@ $< -lm
+
+$(BUILD)/plugins/leaky.so: tests/plugins/nonconforming.c $(PLUGIN_HDR)
+	$(CC) $(PLUGIN_CFLAGS) -DLEAKY -o $@ $< -lm
 
 $(BUILD)/plugins/bad_add.so: tests/plugins/nonconforming.c $(PLUGIN_HDR)
 	$(CC) $(PLUGIN_CFLAGS) -DBAD_ADD -o $@ $< -lm

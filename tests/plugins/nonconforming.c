@@ -26,6 +26,16 @@
  *                power leaves spread over all of them) while its instances set GMAT_DIAGONAL, so a renderer
  *                that weighs a ray by its pass-on of white gives it the light's colour: only the diagonal check
  *                sees it;
+ *   -DGAIN_MIRROR material "gain_mirror": a mirror whose ideal ray passes on 1.2 times the light (albedo 1.2 on
+ *                any surface, bumped or not);
+ *   -DMISBENT    material "misbent_glass": clear glass of index 1.5 whose refraction_dir refracts about the
+ *                geometric normal while its reflection and refraction use the shading normal: right on a flat
+ *                surface, under a bump node only the snell check sees it;
+ *   -DLEAKY      material "leaky_mirror": a mirror of reflectance 0.9 whose reflection asks only the shading
+ *                normal, so that about a bumped normal it reflects light arriving from inside the body (the
+ *                dielectric's error before it asked the geometric side): under a bump node only the weight check
+ *                sees it (the default sampling draws that ray with the light it passes on);
+ *   (these three for tests/scripts/bump_ideal_conformance.sh)
  *   -DBAD_BANDS  colour model "bad_bands": the same grey model with a correct add and two wavelength bands whose
  *                masks are both white, so the bands do not partition a value;
  *   -DBAD_ADD    colour model "bad_add": the grey model (luminance only) whose add returns 1.01 a + b, so
@@ -243,6 +253,147 @@ static void release(void *p) { gmaterial_unref(p); }
 GENERIC_MODULE_EXPORT int generic_module_init(GModuleApi *api, GError *err)
 {
     static const GTypeInfo type = {GKIND_MATERIAL, FLAT_NAME, &flat_class, parse_flat,
+                                   "breaks a conformance property on purpose (tests)", release};
+    return api->add_type(api, &type, err);
+}
+#endif
+
+#if defined(GAIN_MIRROR) || defined(MISBENT) || defined(LEAKY)
+/* An ideal reflector (and for misbent_glass refractor), wrong in one way each. */
+typedef struct Ideal {
+    GMaterial base;
+} Ideal;
+
+#if defined(GAIN_MIRROR)
+#define IDEAL_NAME "gain_mirror"
+#define IDEAL_RHO 1.2 /* the deliberate error: more light than arrives */
+#elif defined(LEAKY)
+#define IDEAL_NAME "leaky_mirror"
+#define IDEAL_RHO 0.9
+#else
+#define IDEAL_NAME "misbent_glass"
+#define IDEAL_INDEX 1.5
+#endif
+
+static void ideal_destroy(GMaterial *self) { gmem_free(self); }
+
+/* in and out on the incident side of the geometric normal, where one interface can reflect (gmat_cos_in). */
+static int incident_side(const GSurfPoint *sp, GVec3 in, GVec3 out)
+{
+#ifdef LEAKY
+    (void)sp, (void)in, (void)out;
+    return 1; /* the deliberate error: light from inside the body is reflected too */
+#else
+    return gvec3_dot(in, sp->geometric_normal) > 0.0 && gvec3_dot(out, sp->geometric_normal) > 0.0;
+#endif
+}
+
+static int ideal_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
+                            GColor *result)
+{
+    (void)self;
+    GVec3 n = gsurfpoint_normal(sp);
+    double co = gvec3_dot(out, n);
+    if (co <= 0.0 || !incident_side(sp, in, out) || !gmaterial_is_mirror_pair(in, n, out)) {
+        gcolor_black(result);
+        return G_OK;
+    }
+#ifdef IDEAL_INDEX
+    return gcolor_scale(result, illum, goptics_fresnel(co, gsurfpoint_relative_index(sp)));
+#else
+    return gcolor_scale(result, illum, IDEAL_RHO);
+#endif
+}
+
+static int ideal_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
+{
+    (void)self;
+    *dir = gvec3_reflect(view, gsurfpoint_normal(sp));
+    return 1;
+}
+
+#ifdef IDEAL_INDEX
+static double eta_of(GSurfPoint *sp, const GColor *rel_index)
+{
+    return rel_index ? gsurfpoint_index_of(sp, rel_index) : gsurfpoint_relative_index(sp);
+}
+
+static int glass_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
+                            const GColor *rel_index, GVec3 out, GColor *result)
+{
+    (void)self;
+    GVec3 n = gsurfpoint_normal(sp), ng = sp->geometric_normal;
+    double co = gvec3_dot(out, n), eta = eta_of(sp, rel_index);
+    if (co <= 0.0 || gvec3_dot(out, ng) <= 0.0 || gvec3_dot(in, ng) >= 0.0 ||
+        !goptics_is_refraction_pair(gvec3_neg(out), n, eta, in)) {
+        gcolor_black(result);
+        return G_OK;
+    }
+    return gcolor_scale(result, illum, 1.0 - goptics_fresnel(co, eta));
+}
+
+/* The deliberate error: about the geometric normal, where reflection and refraction take the shading one. */
+static int glass_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
+                                GVec3 *dir)
+{
+    (void)self;
+    return goptics_refract(view, sp->geometric_normal, eta_of(sp, rel_index), dir);
+}
+
+static int glass_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
+{
+    (void)self, (void)sp;
+    return gcolor_fill(result, IDEAL_INDEX);
+}
+
+static int glass_opaque(const GMaterial *self, GSurfPoint *sp)
+{
+    (void)self, (void)sp;
+    return 0;
+}
+#endif
+
+static const GMaterialClass ideal_class = {
+    .abi_version = GMATERIAL_ABI_VERSION,
+    .name = IDEAL_NAME,
+    .description = "breaks a conformance property on purpose (tests)",
+    .destroy = ideal_destroy,
+    .reflection = ideal_reflection,
+    .reflection_dir = ideal_reflection_dir,
+#ifdef IDEAL_INDEX
+    .refraction = glass_refraction,
+    .refraction_dir = glass_refraction_dir,
+    .refraction_index = glass_refraction_index,
+    .opaque = glass_opaque,
+#endif
+};
+
+static int parse_ideal(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0)
+        if ((rc = greader_unknown_param(r, "(none)", err)) < 0)
+            break;
+    if (rc < 0)
+        return rc;
+    Ideal *m = gmem_calloc(1, sizeof *m);
+    if (!m)
+        return greader_error(r, err, IDEAL_NAME ": out of memory");
+    if ((rc = gmaterial_init(&m->base, &ideal_class, greader_colormodel(r), err)) != G_OK) {
+        gmem_free(m);
+        return rc;
+    }
+    *object = &m->base;
+    return G_OK;
+}
+
+static void release(void *p) { gmaterial_unref(p); }
+
+GENERIC_MODULE_EXPORT int generic_module_init(GModuleApi *api, GError *err)
+{
+    static const GTypeInfo type = {GKIND_MATERIAL, IDEAL_NAME, &ideal_class, parse_ideal,
                                    "breaks a conformance property on purpose (tests)", release};
     return api->add_type(api, &type, err);
 }
