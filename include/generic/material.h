@@ -12,6 +12,10 @@
  *     A material that sums others (a texture node's blend) sums there only the parts that have an ideal ray
  *     of their own: a BRDF value is a density, not a reflectance (materials.h, node_kit.h).
  * refraction(in, illum, rel_index, out) is the same for light arriving through the surface from `in`.
+ * The geometric normal tells the sides: a reflection has in and out on its incident side, a refraction has in on
+ * the other. About a shading normal that a bump node tilts, an ideal ray may point back across the surface (a
+ * mirror ray into the body); one interface sends no light there, so what such a pair passes on is black
+ * (gmat_cos_in, material_kit.h; the built-ins all do so), and a sample along it keeps its flag with a black weight.
  *
  * Missing methods (NULL slots) take these defaults: reflection, refraction, emission, diffuse: black;
  * refraction_index: 1; reflection_dir, refraction_dir: not valid; ambient: diffuse * illum;
