@@ -176,15 +176,6 @@ static double color_excess(const GColor *w, double pdf, const GColor *value)
     return isfinite(d) ? d / big : INFINITY;
 }
 
-/* 1 when every sample of c is 0. */
-static int is_black(const GColor *c)
-{
-    for (int k = 0; k < c->model->nvalues; k++)
-        if (c->v[k] != 0.0f)
-            return 0;
-    return 1;
-}
-
 /* The value of white light from in towards out: reflection() or refraction(). */
 static int value_of(SampleTest *t, GVec3 in, int transmit, GColor *value)
 {
@@ -268,7 +259,7 @@ static void run_test(SampleTest *t, int nsamples, unsigned long long seed, Sampl
          * geometric surface than the flag says (a mirror ray about a tilted shading normal that points into the
          * surface) the sample must carry no light (material.h), else it leaks light through the surface */
         int transmit = (s.flags & GSAMPLE_TRANSMIT) != 0;
-        if ((in.z * t->ng < 0.0) != transmit && !is_black(&t->weight)) {
+        if ((in.z * t->ng < 0.0) != transmit && !gcolor_is_black(&t->weight)) {
             r->weight_err = INFINITY;
             r->weight_why = "a reflected sample below the geometric surface, or a transmitted one above it, "
                             "carries light";
