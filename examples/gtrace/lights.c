@@ -172,10 +172,14 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
     const GMaterial *medium = NULL;
     if (occluded == OCCLUDED_CLEAR) {
         medium = gvec3_dot(in, facing) >= 0.0 ? sp->from : sp->to;
-        if (!medium || !isfinite(dist)) /* the light arrives as it left; gathered with the factor rounded to float,
-                                           * as gcolor_scale rounds its own: the axpy then multiplies in float */
-            return t->gather ? gcolor_add_scaled(&t->gathered, color, (float)(scale * cos_in))
-                             : gcolor_add(result, result, refl);
+        if (!medium || !isfinite(dist)) { /* the light arrives as it left */
+            if (!t->gather)
+                return gcolor_add(result, result, refl);
+            /* gathered with the factor rounded to float, as gcolor_scale rounds its own: the axpy then multiplies in
+             * float */
+            t->gathered_any = 1;
+            return gcolor_add_scaled(&t->gathered, color, (float)(scale * cos_in));
+        }
     } else if (t->blocked || occluded == OCCLUDED_OPAQUE) {
         return G_OK; /* the walk below would end at that surface */
     }
@@ -190,8 +194,10 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
     int visible;
     if ((rc = transmit(c, sp, facing, media, in, dist, illum, &visible)) < 0 || !visible)
         return rc;
-    if (t->gather) /* the light that got through, as the material would reflect it */
+    if (t->gather) { /* the light that got through, as the material would reflect it */
+        t->gathered_any = 1;
         return gcolor_add_scaled(&t->gathered, illum, cos_in);
+    }
     if ((rc = gmaterial_reflection(sp->material, sp, in, illum, out_dir, refl)) < 0)
         return rc;
     return gcolor_add(result, result, refl);
@@ -200,6 +206,7 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
 void light_gather(GSurfPoint *sp, LightTmp *t)
 {
     t->gather = gmaterial_lambertian(sp->material);
+    t->gathered_any = 0;
     if (t->gather)
         gcolor_black(&t->gathered);
 }
@@ -209,8 +216,8 @@ int light_gather_finish(GSurfPoint *sp, LightTmp *t, GColor *result)
     if (!t->gather)
         return G_OK;
     t->gather = 0;
-    if (gcolor_is_black(&t->gathered))
-        return G_OK; /* no light arrived: the material is not asked */
+    if (!t->gathered_any)
+        return G_OK; /* no light sample arrived (all shadowed or turned away): the material is not asked */
     int rc = gmaterial_diffuse(sp->material, sp, &t->tmp);
     if (rc == G_OK)
         rc = gcolor_mul_scaled(&t->tmp, &t->tmp, &t->gathered, 1.0 / M_PI);
@@ -237,6 +244,7 @@ int light_temps(TraceCtx *c, LightTmp *t)
     int rc;
     t->blocked = 0;
     t->gather = 0;
+    t->gathered_any = 0;
     if ((rc = trace_tmp(c, TRACE_TMP_ILLUM, &t->illum)) < 0 || (rc = trace_tmp(c, TRACE_TMP_REFL, &t->refl)) < 0 ||
         (rc = trace_tmp(c, TRACE_TMP_LIGHT, &t->tmp)) < 0 || (rc = trace_tmp(c, TRACE_TMP_GATHER, &t->gathered)) < 0)
         return rc;
