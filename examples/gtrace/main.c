@@ -422,7 +422,7 @@ static void report(const Options *o, const Scene *scene, const RenderSettings *r
     char ranks_text[32] = "";
     if (ranks > 0)
         snprintf(ranks_text, sizeof ranks_text, " x %d ranks", ranks);
-    printf("gtrace: %s %dx%d, %d spp, depth %d, %s, %d threads%s: %.3f s, %.2f M rays, %.2f M rays/s, "
+    printf("gtrace: %s %dx%d, %d spp, depth %d, %s, %d threads%s: %.4f s, %.2f M rays, %.2f M rays/s, "
            "%llu non-finite\n",
            o->out, fb->width, fb->height, rs->spp, rs->depth, gcolormodel_name(scene->model), st->threads, ranks_text,
            st->seconds, st->rays * 1e-6, st->seconds > 0 ? st->rays * 1e-6 / st->seconds : 0.0,
