@@ -47,6 +47,38 @@
 
 GENERIC_MODULE_EXPORT const int generic_module_abi = GMODULE_ABI_VERSION;
 
+/* The material variants' entry: no parameters (any one given is refused at its place); a zeroed instance of `size`
+ * bytes, the GMaterial header first, of class cls in the reader's colour model. */
+__attribute__((unused)) static int new_bare(GReader *r, const GMaterialClass *cls, size_t size, const char *name,
+                                            GMaterial **out, GError *err)
+{
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0)
+        if ((rc = greader_unknown_param(r, "(none)", err)) < 0)
+            break;
+    if (rc < 0)
+        return rc;
+    GMaterial *m = gmem_calloc(1, size);
+    if (!m)
+        return greader_error(r, err, "%s: out of memory", name);
+    if ((rc = gmaterial_init(m, cls, greader_colormodel(r), err)) != G_OK) {
+        gmem_free(m);
+        return rc;
+    }
+    *out = m;
+    return G_OK;
+}
+
+/* Registers a material variant: its name, class and entry (released by the material kind's default, unref). */
+__attribute__((unused)) static int add_material(GModuleApi *api, const char *name, const GMaterialClass *cls,
+                                                GParseFn parse, GError *err)
+{
+    const GTypeInfo type = {GKIND_MATERIAL, name, cls, parse, "breaks a conformance property on purpose (tests)",
+                            NULL};
+    return api->add_type(api, &type, err);
+}
+
 #if defined(GAIN) || defined(SKEWED) || defined(MISDRAWN) || defined(MISFLAGGED) || defined(MISOPAQUE) ||              \
     defined(MISNORMAL) || defined(MISDIFFUSE) || defined(MISUV) || defined(MISDIAG)
 typedef struct Flat {
@@ -212,20 +244,11 @@ static const GMaterialClass flat_class = {
 static int parse_flat(GReader *r, const void *vtable, void **object, GError *err)
 {
     (void)vtable;
-    const char *key;
-    int rc;
-    while ((rc = greader_param(r, &key, err)) > 0)
-        if ((rc = greader_unknown_param(r, "(none)", err)) < 0)
-            break;
-    if (rc < 0)
+    GMaterial *base = NULL;
+    int rc = new_bare(r, &flat_class, sizeof(Flat), FLAT_NAME, &base, err);
+    if (rc != G_OK)
         return rc;
-    Flat *m = gmem_calloc(1, sizeof *m);
-    if (!m)
-        return greader_error(r, err, FLAT_NAME ": out of memory");
-    if ((rc = gmaterial_init(&m->base, &flat_class, greader_colormodel(r), err)) != G_OK) {
-        gmem_free(m);
-        return rc;
-    }
+    Flat *m = (Flat *)base;
 #ifdef MISFLAGGED
     m->base.flags |= GMAT_NO_EMISSION; /* the deliberate error: the class's emission is not black */
 #endif
@@ -248,13 +271,9 @@ static int parse_flat(GReader *r, const void *vtable, void **object, GError *err
     return G_OK;
 }
 
-static void release(void *p) { gmaterial_unref(p); }
-
 GENERIC_MODULE_EXPORT int generic_module_init(GModuleApi *api, GError *err)
 {
-    static const GTypeInfo type = {GKIND_MATERIAL, FLAT_NAME, &flat_class, parse_flat,
-                                   "breaks a conformance property on purpose (tests)", release};
-    return api->add_type(api, &type, err);
+    return add_material(api, FLAT_NAME, &flat_class, parse_flat, err);
 }
 #endif
 
@@ -371,31 +390,16 @@ static const GMaterialClass ideal_class = {
 static int parse_ideal(GReader *r, const void *vtable, void **object, GError *err)
 {
     (void)vtable;
-    const char *key;
-    int rc;
-    while ((rc = greader_param(r, &key, err)) > 0)
-        if ((rc = greader_unknown_param(r, "(none)", err)) < 0)
-            break;
-    if (rc < 0)
-        return rc;
-    Ideal *m = gmem_calloc(1, sizeof *m);
-    if (!m)
-        return greader_error(r, err, IDEAL_NAME ": out of memory");
-    if ((rc = gmaterial_init(&m->base, &ideal_class, greader_colormodel(r), err)) != G_OK) {
-        gmem_free(m);
-        return rc;
-    }
-    *object = &m->base;
-    return G_OK;
+    GMaterial *base = NULL;
+    int rc = new_bare(r, &ideal_class, sizeof(Ideal), IDEAL_NAME, &base, err);
+    if (rc == G_OK)
+        *object = base;
+    return rc;
 }
-
-static void release(void *p) { gmaterial_unref(p); }
 
 GENERIC_MODULE_EXPORT int generic_module_init(GModuleApi *api, GError *err)
 {
-    static const GTypeInfo type = {GKIND_MATERIAL, IDEAL_NAME, &ideal_class, parse_ideal,
-                                   "breaks a conformance property on purpose (tests)", release};
-    return api->add_type(api, &type, err);
+    return add_material(api, IDEAL_NAME, &ideal_class, parse_ideal, err);
 }
 #endif
 

@@ -24,8 +24,6 @@ generator hills fbm { space object frequency 4 octaves 4 }
 generator pits perlin { space uv frequency 6 }
 EOM
 MOVE="uv { rotate 30 scale 2 0.5 translate 0.1 0.2 } xyz { rotate 1 1 0 40 scale 1 -2 0.5 translate 0.3 0 1 }"
-set -- rgb spectrum bispectral
-turn=0
 : > "$TMP/nodes"
 for child in ll ph pm mix; do
     for h in "bevel 1" "slant 1" "hills 0.5" "pits 0.1"; do
@@ -42,18 +40,11 @@ for child in ll ph pm mix; do
                 echo "node $name bump { child $moved height $height strength $strength }"
                 ;;
             esac >> "$TMP/bumps.mat"
-            eval "model=\${$((turn % 3 + 1))}"
-            echo "$name $model" >> "$TMP/nodes"
-            turn=$((turn + 1))
+            listed "$name"
         done
     done
 done
-checked=0
-while read -r name model; do
-    checked=$((checked + 1))
-    "$GMAT" check "$TMP/bumps.mat" "$name" --colormodel "$model" > "$TMP/log" 2>&1 || fail "$name in $model:
-$(cat "$TMP/log")"
-done < "$TMP/nodes"
+check_nodes "$GMAT" "$TMP/bumps.mat" "$TMP/nodes"
 [ "$checked" -eq 48 ] || fail "checked $checked bump nodes, expected 48 (4 children x 4 heights x 3 forms)"
 [ $fails -eq 0 ] && echo "bump conformance: $checked bump nodes pass"
 exit $fails

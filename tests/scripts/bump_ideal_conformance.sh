@@ -40,8 +40,6 @@ node() {
     under) echo "node $1 bump { child transform { child $3 $MOVE } height $4 strength $5 }" ;;
     esac >> "$TMP/ideal.mat"
 }
-set -- rgb spectrum bispectral
-turn=0
 k=0
 : > "$TMP/nodes"
 for child in mr glass pm mix trio; do
@@ -53,18 +51,11 @@ for child in mr glass pm mix trio; do
         for form in $forms; do
             name="${form}_${child}_$height"
             node "$name" "$form" "$child" "$height" "${h#* }"
-            eval "model=\${$((turn % 3 + 1))}"
-            echo "$name $model" >> "$TMP/nodes"
-            turn=$((turn + 1))
+            listed "$name"
         done
     done
 done
-checked=0
-while read -r name model; do
-    checked=$((checked + 1))
-    "$GMAT" check "$TMP/ideal.mat" "$name" --colormodel "$model" > "$TMP/log" 2>&1 || fail "$name in $model:
-$(cat "$TMP/log")"
-done < "$TMP/nodes"
+check_nodes "$GMAT" "$TMP/ideal.mat" "$TMP/nodes"
 [ "$checked" -eq 30 ] || fail "checked $checked bump nodes, expected 30 (5 children x (3 forms + 3 heights))"
 
 # ---- wrong materials still fail, the one property each breaks ----

@@ -11,3 +11,19 @@ fail() {
 # is on PATH (PACKAGE: where scripts/deps.sh gets it).
 need_program() { [ -x "$1" ] || { echo "FAIL: $1 is not built"; exit 1; }; }
 need_command() { command -v "$1" > /dev/null || { echo "FAIL: $1 ($2, scripts/deps.sh) is missing"; exit 1; }; }
+# listed NAME: appends "NAME MODEL" to TMP/nodes, MODEL rgb, spectrum and bispectral in turn (the count in turn).
+turn=0
+listed() {
+    case $((turn % 3)) in 0) echo "$1 rgb" ;; 1) echo "$1 spectrum" ;; *) echo "$1 bispectral" ;; esac >> "$TMP/nodes"
+    turn=$((turn + 1))
+}
+# check_nodes GMAT FILE LIST: `gmat check` of each "name model" line of LIST in FILE, every property must pass (a
+# failure fails with gmat's report); checked is then the number of lines checked.
+check_nodes() {
+    checked=0
+    while read -r name model; do
+        checked=$((checked + 1))
+        "$1" check "$2" "$name" --colormodel "$model" > "$TMP/log" 2>&1 || fail "$name in $model:
+$(cat "$TMP/log")"
+    done < "$3"
+}
