@@ -24,9 +24,9 @@
  *                refraction index) over a sweep of directions returns G_OK and a value gcolor_is_nonnegative
  *                accepts.
  *   snell        for a material that is not opaque: refraction_dir from outside and from inside follows
- *                n1 sin(theta1) = n2 sin(theta2) in the plane of incidence (n the material's refraction index,
- *                its brightness as a renderer uses it, vacuum outside), and returns 0 past the critical angle,
- *                angles taken about the shading normal (the facet a bump tilts refracts as a flat one would);
+ *                n1 sin(theta1) = n2 sin(theta2) in the plane of incidence (n1 / n2 the scalar relative index
+ *                it is handed, as a renderer uses it; vacuum outside), returns 0 past the critical angle, angles
+ *                taken about the shading normal (the facet a bump tilts refracts as a flat one would);
  *                for an opaque one, refraction_dir returns 0.
  *   defaults     for every method the class leaves NULL, the value material.h documents.
  *   no-emission  for a material with GMAT_NO_EMISSION: its class's own emission slot is black (flags.c).
@@ -99,23 +99,37 @@ static int leaves_sample(const GColor *result, int nvalues, int s)
     return 0;
 }
 
-/* 1 when light in one sample leaves in another at the place ctx->place (checked at a few direction pairs and along the
- * specular ray, each sample alone). */
+/* Two directions 20 degrees off the bisector of the place's shading and geometric normals: above both, so a material
+ * reflects there however far a bump tilts its normal (fixed pairs may all lie behind a steep facet: black). */
+static void bisector_pair(GmatContext *ctx, GVec3 pair[2])
+{
+    GSurfPoint sp;
+    gmat_surface_point(ctx, &sp, 0);
+    GVec3 h = gvec3_normalize(gvec3_add(gsurfpoint_normal(&sp), sp.geometric_normal)), t, b;
+    goptics_frame(h, &t, &b);
+    double c = cos(20.0 * M_PI / 180.0), s = sin(20.0 * M_PI / 180.0);
+    pair[0] = gvec3_add(gvec3_scale(h, c), gvec3_scale(t, s));
+    pair[1] = gvec3_add(gvec3_scale(h, c), gvec3_scale(b, -s));
+}
+
+/* 1 when light in one sample leaves in another at the place ctx->place (checked at a few direction pairs, one about
+ * the shading normal, and along the specular ray, each sample alone). */
 static int shifts_samples(Checker *k)
 {
     GmatContext *ctx = k->ctx;
     const GColorModel *m = ctx->model;
     if (m->nvalues < 2)
         return 0;
-    GVec3 pairs[3][2] = {{gmat_direction(10, 0), gmat_direction(30, 180)},
+    GVec3 pairs[4][2] = {{gmat_direction(10, 0), gmat_direction(30, 180)},
                          {gmat_direction(45, 30), gmat_direction(60, 120)},
                          {gmat_direction(70, 200), gmat_direction(20, 10)}};
+    bisector_pair(ctx, pairs[3]);
     int shifted = 0;
     for (int s = 0; s < m->nvalues && !shifted; s++) {
         gcolor_black(&k->a);
         k->a.v[s] = 1.0f;
         ctx->light = &k->a;
-        for (int p = 0; p < 3 && !shifted; p++) {
+        for (int p = 0; p < 4 && !shifted; p++) {
             GVec3 dir;
             if (gmat_reflect(ctx, pairs[p][0], pairs[p][1]) == G_OK)
                 shifted = leaves_sample(&ctx->result, m->nvalues, s);
@@ -388,18 +402,24 @@ static int refracted(GmatContext *ctx, GSurfPoint *sp, GVec3 view, GVec3 *dir)
     return valid;
 }
 
-/* One side: from outside (below = 0, eta = 1/n) or inside (below = 1, eta = n). Snell's law holds at the facet
+/* One side: from outside (below = 0, eta = n(vacuum) / n) or inside (below = 1, eta = n / n(vacuum)), eta as the
+ * material reads it from the relative index it is handed (gmat_relative_eta). Snell's law holds at the facet
  * the material refracts at: angles and tangential parts are taken about the point's shading normal (the geometric
  * one unless a bump node tilts it; against the geometric normal a bumped glass "broke" the law and its TIR).
  * Views from the geometric side that reach the back of a tilted facet (cosine below SNELL_MIN_COS) have no
  * refraction to check and are skipped; the critical angle's neighbourhood too. */
-static void snell_side(Checker *k, int below, double n, SnellTally *t)
+static void snell_side(Checker *k, int below, SnellTally *t)
 {
     GmatContext *ctx = k->ctx;
     GSurfPoint sp;
     gmat_surface_point(ctx, &sp, below);
     GVec3 ns = gsurfpoint_normal(&sp); /* faces the incident side */
-    double eta = below ? n : 1.0 / n, ncrit = eta > 1.0 ? asin(1.0 / eta) * 180.0 / M_PI : 90.0;
+    double eta = gmat_relative_eta(&sp);
+    if (!(eta > 0.0) || !isfinite(eta)) {
+        t->wrong++;
+        return;
+    }
+    double ncrit = eta > 1.0 ? asin(1.0 / eta) * 180.0 / M_PI : 90.0;
     for (double theta = 0.0; theta < 89.5; theta += 2.5) {
         GVec3 d = gmat_direction(theta, 40.0);
         GVec3 view = below ? gvec3(-d.x, -d.y, d.z) : gvec3_neg(d); /* travels towards the surface */
@@ -456,8 +476,8 @@ static void check_snell(Checker *k)
             t.wrong++;
             continue;
         }
-        snell_side(k, 0, n, &t);
-        snell_side(k, 1, n, &t);
+        snell_side(k, 0, &t);
+        snell_side(k, 1, &t);
     }
     ctx->place = NULL;
     char detail[320];

@@ -110,6 +110,10 @@ void gmat_check_no_uv(GmatContext *ctx, const GmatPlace *places, int nplaces, Gm
 /** The relative index n(from) / n(to) at sp as a colour, as a renderer hands it to refraction() (storage of the
  * model; temporaries on sp's arena). */
 int gmat_relative_index(GSurfPoint *sp, GColor *out);
+/** The scalar of that colour (gsurfpoint_scalar_index): the relative index a material refracts with at sp. For a
+ * dispersive index it is not 1 / the scalar of n from outside (the brightness of 1 / n is not 1 / that of n: a
+ * Cauchy glass with B = 0.1 differs by 1e-3). NaN on error. */
+double gmat_relative_eta(GSurfPoint *sp);
 
 /** `gmat laser FILE MATERIAL ...` (laser.c): the laser experiment of Wilkie et al., reading FILE with the reader
  * options base (--allow-plugins, --confine); returns the exit status. */

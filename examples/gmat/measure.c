@@ -83,6 +83,17 @@ int gmat_relative_index(GSurfPoint *sp, GColor *out)
     return rc == G_OK ? gcolor_div(out, out, &to) : rc;
 }
 
+double gmat_relative_eta(GSurfPoint *sp)
+{
+    GScratchMark mark = gscratch_mark(sp->scratch);
+    GColor ri;
+    double eta = NAN;
+    if (gcolor_scratch(&ri, sp->model, sp->scratch) == G_OK && gmat_relative_index(sp, &ri) == G_OK)
+        eta = gsurfpoint_scalar_index(&ri);
+    gscratch_release(sp->scratch, mark);
+    return eta;
+}
+
 /* Light from in (upper hemisphere) refracted towards out (lower hemisphere), into ctx->result. */
 static int transmit(GmatContext *ctx, GVec3 in, GVec3 out)
 {
