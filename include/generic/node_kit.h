@@ -260,7 +260,10 @@ GENERIC_API GENERIC_NODISCARD int gtexblendnode_diffuse(const GMaterial *self, G
 GENERIC_API GENERIC_NODISCARD int gtexblendnode_opaque(const GMaterial *self, GSurfPoint *sp);
 
 /** Sampling of a GTexBlendClass node: the blend its pick gives for GNODE_REFLECTION (the blend its reflection
- * is), then gtexblend_sample. */
+ * is), then gtexblend_sample. When the pick gives another blend for GNODE_REFRACTION (interpolate-one of reflection
+ * or refraction), the mixture is over every child of either blend (weight |w_reflection| + |w_refraction|), and a
+ * sample weighs the value of the blend its flag names: a reflected one the reflection's, a transmitted one the
+ * refraction's. pdf and is_delta are those of the same mixture. */
 GENERIC_API GENERIC_NODISCARD int gtexblendnode_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index,
                                                        double u1, double u2, GMaterialSample *s, GColor *weight);
 /** See gtexblendnode_sample. */

@@ -4,6 +4,7 @@
  * call these. */
 #include "generic/node_kit.h"
 #include "generic/material_kit.h" /* gmat_pick_lobe */
+#include "node_blend.h"
 
 #include <math.h>
 
@@ -308,24 +309,36 @@ double gtexblend_pdf(const GTexBlend *b, GSurfPoint *sp, GVec3 in, GVec3 out, co
     return pdf;
 }
 
-int gtexblend_sample(const GTexBlend *b, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1, double u2,
-                     GMaterialSample *s, GColor *weight)
+/* The weight child m has in b: the sum over its entries (a spline may list one child twice). */
+static double weight_of(const GTexBlend *b, const GMaterial *m)
 {
-    if (b->n == 1)
-        return gmaterial_sample(b->m[0], sp, out, rel_index, u1, u2, s, weight);
+    double w = 0.0;
+    for (int i = 0; i < b->n; i++)
+        if (b->m[i] == m)
+            w += b->w[i];
+    return w;
+}
+
+/* The mixture over sel's children; a sample's value is that of refl, or of refr for a transmitted one (sel is both
+ * when the two are one blend; see gtexblend_sample_split). */
+static int mixture_sample(const GTexBlend *sel, const GTexBlend *refl, const GTexBlend *refr, GSurfPoint *sp,
+                          GVec3 out, const GColor *rel_index, double u1, double u2, GMaterialSample *s, GColor *weight)
+{
     double q[GTEX_BLEND_MAX], p;
-    if (!(blend_probs(b, q) > 0.0))
+    if (!(blend_probs(sel, q) > 0.0))
         return 0;
-    int i = gmat_pick_lobe(q, b->n, &u1, &p);
-    int rc = gmaterial_sample(b->m[i], sp, out, rel_index, u1, u2, s, weight);
+    int i = gmat_pick_lobe(q, sel->n, &u1, &p);
+    int rc = gmaterial_sample(sel->m[i], sp, out, rel_index, u1, u2, s, weight);
     if (rc <= 0)
         return rc;
+    int transmit = (s->flags & GSAMPLE_TRANSMIT) != 0;
+    const GTexBlend *value = transmit ? refr : refl;
     if (s->flags & GSAMPLE_DELTA) { /* the child's ideal lobe, weighted as in the blend */
         s->pdf *= q[i];
-        rc = gcolor_scale(weight, weight, b->w[i] / q[i]);
+        rc = gcolor_scale(weight, weight, (value == sel ? sel->w[i] : weight_of(value, sel->m[i])) / q[i]);
         return rc ? rc : 1;
     }
-    s->pdf = gtexblend_pdf(b, sp, s->in, out, rel_index);
+    s->pdf = gtexblend_pdf(sel, sp, s->in, out, rel_index);
     if (!(s->pdf > 0.0)) {
         gcolor_black(weight);
         return 0;
@@ -338,15 +351,59 @@ int gtexblend_sample(const GTexBlend *b, GSurfPoint *sp, GVec3 out, const GColor
     if (rc == G_OK)
         rc = gcolor_fill(&white, 1.0);
     if (rc == G_OK) { /* at the ideal ray, the value of the lobes that are not ideal: the children without a ray */
-        int transmit = (s->flags & GSAMPLE_TRANSMIT) != 0;
         ColorCall c = {.method = transmit ? GNODE_REFRACTION : GNODE_REFLECTION, .nondelta = 1, .in = s->in,
                        .out = out, .illum = &white, .rel_index = transmit ? rel_index : NULL};
-        rc = blend_color(b, sp, &c, weight);
+        rc = blend_color(value, sp, &c, weight);
     }
     if (rc == G_OK)
         rc = gcolor_scale(weight, weight, 1.0 / s->pdf);
     gtextemps_release(&t);
     return rc ? rc : 1;
+}
+
+int gtexblend_sample(const GTexBlend *b, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1, double u2,
+                     GMaterialSample *s, GColor *weight)
+{
+    if (b->n == 1)
+        return gmaterial_sample(b->m[0], sp, out, rel_index, u1, u2, s, weight);
+    return mixture_sample(b, b, b, sp, out, rel_index, u1, u2, s, weight);
+}
+
+int gtexblend_sampled(const GTexBlend *refl, const GTexBlend *refr, GTexBlend *sel)
+{
+    int same = refl->n == refr->n;
+    for (int i = 0; i < refl->n && same; i++)
+        same = refl->m[i] == refr->m[i] && refl->w[i] == refr->w[i];
+    *sel = *refl;
+    if (same)
+        return 0;
+    sel->n = 0;
+    const GTexBlend *both[2] = {refl, refr};
+    for (int k = 0; k < 2; k++)
+        for (int i = 0; i < both[k]->n; i++) {
+            int j = 0;
+            while (j < sel->n && sel->m[j] != both[k]->m[i])
+                j++;
+            if (j == GTEX_BLEND_MAX) { /* more children than a blend holds: the reflection's alone */
+                *sel = *refl;
+                return 0;
+            }
+            if (j == sel->n) {
+                sel->m[sel->n] = both[k]->m[i];
+                sel->w[sel->n++] = 0.0;
+            }
+            sel->w[j] += fabs(both[k]->w[i]);
+        }
+    return 1;
+}
+
+int gtexblend_sample_split(const GTexBlend *refl, const GTexBlend *refr, GSurfPoint *sp, GVec3 out,
+                           const GColor *rel_index, double u1, double u2, GMaterialSample *s, GColor *weight)
+{
+    GTexBlend sel;
+    if (!gtexblend_sampled(refl, refr, &sel))
+        return gtexblend_sample(refl, sp, out, rel_index, u1, u2, s, weight);
+    return mixture_sample(&sel, refl, refr, sp, out, rel_index, u1, u2, s, weight);
 }
 
 int gtexblend_is_delta(const GTexBlend *b, GSurfPoint *sp)

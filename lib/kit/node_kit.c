@@ -3,6 +3,7 @@
  * the construction checks of all nodes. */
 #include "generic/node_kit.h"
 #include "generic/material_kit.h" /* gmat_new: nodes are built like the built-in materials */
+#include "node_blend.h"
 
 #include <string.h>
 
@@ -344,21 +345,31 @@ int gtexblendnode_opaque(const GMaterial *self, GSurfPoint *sp)
 int gtexblendnode_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
                          double u2, GMaterialSample *s, GColor *weight)
 {
-    GTexBlend b;
-    pick(self, sp, GNODE_REFLECTION, &b);
-    return gtexblend_sample(&b, sp, out, rel_index, u1, u2, s, weight);
+    GTexBlend r, t;
+    pick(self, sp, GNODE_REFLECTION, &r);
+    pick(self, sp, GNODE_REFRACTION, &t);
+    return gtexblend_sample_split(&r, &t, sp, out, rel_index, u1, u2, s, weight);
+}
+
+/* The blend sampling draws from (gtexblend_sampled): the reflection's, or the union with the refraction's. */
+static void sampled(const GMaterial *self, GSurfPoint *sp, GTexBlend *sel)
+{
+    GTexBlend r, t;
+    pick(self, sp, GNODE_REFLECTION, &r);
+    pick(self, sp, GNODE_REFRACTION, &t);
+    (void)gtexblend_sampled(&r, &t, sel);
 }
 
 double gtexblendnode_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
 {
     GTexBlend b;
-    pick(self, sp, GNODE_REFLECTION, &b);
+    sampled(self, sp, &b);
     return gtexblend_pdf(&b, sp, in, out, rel_index);
 }
 
 int gtexblendnode_is_delta(const GMaterial *self, GSurfPoint *sp)
 {
     GTexBlend b;
-    pick(self, sp, GNODE_REFLECTION, &b);
+    sampled(self, sp, &b);
     return gtexblend_is_delta(&b, sp);
 }
