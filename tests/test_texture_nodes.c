@@ -399,6 +399,36 @@ static void test_scale(void **state)
     gmaterial_unref(&a->base);
 }
 
+/* A negative factor (a gradient or noise below 0) scales by 0: black, never negative light, in every method and in
+ * sample()'s weight. */
+static void test_scale_negative_factor(void **state)
+{
+    Fix *f = *state;
+    CountMat *a = countmat_new(f->rgb, 0.8, 0.6, 0.4);
+    GGenerator *neg;
+    GMaterial *n;
+    GError err;
+    assert_int_equal(ggen_constant_create(-0.5, &neg, &err), G_OK);
+    assert_int_equal(gnode_scale_create(&a->base, neg, &n, &err), G_OK);
+    f->sp.material = n;
+    GVec3 in = gvec3(0, 0.6, 0.8), out = gvec3(0, -0.6, 0.8);
+    assert_int_equal(gmaterial_diffuse(n, &f->sp, &f->c), G_OK);
+    assert_float_equal(color_r(&f->c), 0.0, 0.0);
+    assert_int_equal(gmaterial_reflection(n, &f->sp, in, &f->illum, out, &f->c), G_OK);
+    assert_float_equal(color_r(&f->c), 0.0, 0.0);
+    assert_int_equal(gmaterial_ambient(n, &f->sp, &f->illum, &f->c), G_OK);
+    assert_float_equal(color_r(&f->c), 0.0, 0.0);
+    GMaterialSample s;
+    int rc = gmaterial_sample(n, &f->sp, out, NULL, 0.3, 0.7, &s, &f->c);
+    assert_true(rc >= 0);
+    if (rc == 1)
+        assert_true(gcolor_is_nonnegative(&f->c) && color_r(&f->c) == 0.0);
+    f->sp.material = NULL;
+    gmaterial_unref(n);
+    ggenerator_unref(neg);
+    gmaterial_unref(&a->base);
+}
+
 static void test_bad_input(void **state)
 {
     Fix *f = *state;
@@ -550,6 +580,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_spline, setup, teardown),
         cmocka_unit_test_setup_teardown(test_bump_analytic_tilt, setup, teardown),
         cmocka_unit_test_setup_teardown(test_scale, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_scale_negative_factor, setup, teardown),
         cmocka_unit_test_setup_teardown(test_bad_input, setup, teardown),
         cmocka_unit_test_setup_teardown(test_out_of_memory, setup, teardown),
         cmocka_unit_test(test_blend_without_arena),

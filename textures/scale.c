@@ -21,10 +21,12 @@ static void scale_destroy(GMaterial *self)
     gmem_free(s);
 }
 
-/* The factor at the point; 0 short-cuts the child (result black). */
+/* The factor at the point, 0 where the generator's value is negative (or NaN): noise and gradients go below 0, and
+ * light times a negative factor is no light at all, not negative light. 0 short-cuts the child (result black). */
 static double factor(const GMaterial *self, GSurfPoint *sp)
 {
-    return sp ? ggenerator_cached_value(((const Scale *)self)->factor, sp) : 1.0;
+    double f = sp ? ggenerator_cached_value(((const Scale *)self)->factor, sp) : 1.0;
+    return f > 0.0 ? f : 0.0;
 }
 
 static int finish(int rc, double f, GColor *result)

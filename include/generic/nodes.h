@@ -107,8 +107,9 @@ GENERIC_API GENERIC_NODISCARD int gnode_spline_create_keyed(GMaterial *const *ch
 GENERIC_API GENERIC_NODISCARD int gnode_bump_create(GMaterial *child, GGenerator *height, double strength, GMaterial **out, GError *err);
 
 /** scale: the child's colour results that carry light (reflection, refraction, emission, ambient, diffuse)
- * multiplied by the generator's value (e.g. noise as dirt); refraction_index, absorption, directions,
- * normal and opaque are the child's. */
+ * multiplied by the generator's value (e.g. noise as dirt), 0 where that value is negative (noise and gradients
+ * go below 0: no light, never negative light); refraction_index, absorption, directions, normal and opaque are
+ * the child's. */
 GENERIC_API GENERIC_NODISCARD int gnode_scale_create(GMaterial *child, GGenerator *factor, GMaterial **out, GError *err);
 
 /** transform: the subtree sees its texture coordinates moved: the pattern it generates is moved by
