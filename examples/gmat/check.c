@@ -224,7 +224,9 @@ static void check_albedo(Checker *k)
                     for (int j = 0; j < m->nvalues; j++)
                         sum += k->b.v[j];
                     ratio[nr++] = sum;
-                } else { /* white light: sample by sample */
+                } else { /* white light (not the one-sample light a re-radiating place before left): sample by
+                          * sample */
+                    ctx->light = NULL;
                     failed = leaving(k, in, &k->b) != G_OK;
                     double most = 0.0;
                     for (int j = 0; j < m->nvalues && j < 1024; j++) {

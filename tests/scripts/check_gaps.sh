@@ -6,8 +6,11 @@
 # 8e-4 in a correct material. albedo: a fluorescent varnish under a bump of strength 100 in bispectral; the check
 # asked whether light moves between samples at three fixed pairs of directions, all behind the steep facet at one
 # place, where reflection is black, so it measured that place with white light sample by sample and counted the
-# re-radiated light of every other sample as reflected in one (1.65). Then misbent_glass (refracts about the
-# geometric normal) must still fail snell under a bump (tests/plugins/nonconforming.c). About 3 s.
+# re-radiated light of every other sample as reflected in one (1.65). albedo again: a select of a fluorescent varnish
+# and a white mirror, the varnish at the first place; the check measured the mirror's places after it with the
+# one-sample light the varnish's place left set, against white light (1.56 in bispectral). Then misbent_glass
+# (refracts about the geometric normal) must still fail snell under a bump, and gain_lambert (1.5 times the light)
+# albedo where it is selected after the varnish (tests/plugins/nonconforming.c). About 4 s.
 BUILD=$(cd "${1:-build}" 2> /dev/null && pwd) || { echo "FAIL: no build directory ${1:-build}"; exit 1; }
 GMAT="$BUILD/bin/gmat"
 PLUGINS="$BUILD/plugins"
@@ -20,6 +23,10 @@ node steep_varnish bump {
     child fluorescent-varnish { matrix reradiation { absorb_peak 470 } ior 1.3 slope 13 }
     height perlin { space object frequency 5.6 seed 37 }
     strength 100
+}
+node varnish_or_mirror select {
+    index cpg { shape square 0.5 0.5 0.4 }
+    children { fluorescent-varnish { matrix reradiation { absorb_peak 470 } ior 1.06 slope 17 } mirror { } }
 }
 EOM
 # must_pass NAME MODEL PROPERTY
@@ -34,13 +41,24 @@ for model in rgb spectrum spectrum9 bispectral; do
     must_pass dense $model snell
 done
 must_pass steep_varnish bispectral albedo
+must_pass varnish_or_mirror bispectral albedo
 # still failing where the material is wrong
 cat > "$TMP/wrong.mat" << 'EOM'
 node bent bump { child misbent_glass height gradient { space object slope 2 0 0 } strength 0.3 }
+EOM
+cat > "$TMP/gain.mat" << 'EOM'
+node varnish_or_gain select {
+    index cpg { shape square 0.5 0.5 0.4 }
+    children { fluorescent-varnish { matrix reradiation { absorb_peak 470 } ior 1.06 slope 17 } gain_lambert }
+}
 EOM
 "$GMAT" check "$TMP/wrong.mat" bent --plugin "$PLUGINS/misbent.so" > "$TMP/log" 2>&1
 awk '$1 == "snell" && / FAIL / { ok = 1 } END { exit !ok }' "$TMP/log" ||
     fail "misbent_glass under a bump no longer fails snell:
 $(cat "$TMP/log")"
-[ $fails -eq 0 ] && echo "check gaps: dispersive glasses pass snell, a steep fluorescent bump passes albedo"
+"$GMAT" check "$TMP/gain.mat" varnish_or_gain --colormodel bispectral --plugin "$PLUGINS/gain.so" > "$TMP/log" 2>&1
+awk '$1 == "albedo" && / FAIL / { ok = 1 } END { exit !ok }' "$TMP/log" ||
+    fail "gain_lambert selected after a fluorescent varnish no longer fails albedo:
+$(cat "$TMP/log")"
+[ $fails -eq 0 ] && echo "check gaps: dispersive glasses pass snell, fluorescent trees pass albedo"
 exit $fails
