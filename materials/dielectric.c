@@ -108,25 +108,17 @@ static double eta_of(GSurfPoint *sp, const GColor *rel_index)
     return rel_index ? gsurfpoint_index_of(sp, rel_index) : gsurfpoint_relative_index(sp);
 }
 
-/* 1 when in and out are on the sides of the geometric surface an ideal ray about the shading normal may join:
- * the same (reflection) or opposite ones (transmit). About a normal a bump tilts, the mirror or refracted ray may
- * point back across the surface (into the body, or out of it); a single interface cannot send it there, and what
- * it passes on is black (material.h: a lobe reaching below the surface has a black weight; mirror and phong do
- * the same through gmat_cos_in), where passing it on leaked light through the surface: gtrace traced the
- * reflected ray inside the body in the outside medium. */
-static int sides_agree(const GSurfPoint *sp, GVec3 in, GVec3 out, int transmit)
-{
-    double ci = gvec3_dot(in, sp->geometric_normal), co = gvec3_dot(out, sp->geometric_normal);
-    return co > 0.0 && (transmit ? ci < 0.0 : ci > 0.0);
-}
-
+/* Both methods pass on nothing for a pair on the wrong sides of the geometric surface (gmat_sides_agree): about a
+ * normal a bump tilts, the mirror or refracted ray may point back across the surface (into the body, or out of it),
+ * where passing it on leaked light through the surface (gtrace traced the reflected ray inside the body in the
+ * outside medium). Mirror and phong do the same through gmat_cos_in. */
 static int dielectric_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
                                  GColor *result)
 {
     const Dielectric *d = (const Dielectric *)self;
     GVec3 n = gsurfpoint_normal(sp);
     double cos_o = gvec3_dot(out, n);
-    if (cos_o <= 0.0 || !sides_agree(sp, in, out, 0) || !gmaterial_is_mirror_pair(in, n, out)) {
+    if (cos_o <= 0.0 || !gmat_sides_agree(sp, in, out, 0) || !gmaterial_is_mirror_pair(in, n, out)) {
         gcolor_black(result);
         return G_OK;
     }
@@ -144,7 +136,7 @@ static int dielectric_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in
     GVec3 n = gsurfpoint_normal(sp);
     double cos_o = gvec3_dot(out, n);
     double eta = eta_of(sp, rel_index);
-    if (cos_o <= 0.0 || !sides_agree(sp, in, out, 1) || !goptics_is_refraction_pair(gvec3_neg(out), n, eta, in)) {
+    if (cos_o <= 0.0 || !gmat_sides_agree(sp, in, out, 1) || !goptics_is_refraction_pair(gvec3_neg(out), n, eta, in)) {
         gcolor_black(result);
         return G_OK;
     }

@@ -35,8 +35,14 @@ GENERIC_API void gmat_one_color_destroy(GMaterial *self);
 GENERIC_API GENERIC_NODISCARD int gmat_one_color_create(const GMaterialClass *cls, const GColorModel *model, size_t size, const GColor *src,
                           GColorRole role, double max, const char *param, GMaterial **out, GError *err);
 
+/** 1 when in and out lie where one interface can join them, by the geometric normal (material.h): out on its
+ * incident side, and in on that side too for a reflection (transmit = 0) or on the other for a refraction
+ * (transmit = 1). About a shading normal a bump tilts, an ideal ray may point back across the surface; such a pair
+ * passes on nothing. */
+GENERIC_API int gmat_sides_agree(const GSurfPoint *sp, GVec3 in, GVec3 out, int transmit);
 /** Cosine of `in` with the shading normal when in and out are both on the incident side of the geometric
- * normal, else 0 (clamped at 0); *n receives the shading normal (gsurfpoint_normal). */
+ * normal (gmat_sides_agree for a reflection), else 0 (clamped at 0); *n receives the shading normal
+ * (gsurfpoint_normal). */
 GENERIC_API double gmat_cos_in(GSurfPoint *sp, GVec3 in, GVec3 out, GVec3 *n);
 
 /** The weight of a sampled direction (material.h): weight = value(in, white, out) / pdf, value being the

@@ -44,11 +44,16 @@ int gmat_one_color_create(const GMaterialClass *cls, const GColorModel *model, s
     return G_OK;
 }
 
+int gmat_sides_agree(const GSurfPoint *sp, GVec3 in, GVec3 out, int transmit)
+{
+    double ci = gvec3_dot(in, sp->geometric_normal), co = gvec3_dot(out, sp->geometric_normal);
+    return co > 0.0 && (transmit ? ci < 0.0 : ci > 0.0);
+}
+
 double gmat_cos_in(GSurfPoint *sp, GVec3 in, GVec3 out, GVec3 *n)
 {
     *n = gsurfpoint_normal(sp);
-    GVec3 ng = sp->geometric_normal;
-    if (gvec3_dot(in, ng) <= 0.0 || gvec3_dot(out, ng) <= 0.0)
+    if (!gmat_sides_agree(sp, in, out, 0))
         return 0.0;
     double c = gvec3_dot(in, *n);
     return c > 0.0 ? c : 0.0;
