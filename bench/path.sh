@@ -52,7 +52,8 @@ for model in rgb spectrum9 spectrum bispectral; do
         awk -v m="$model" -v g="$integ" -v n=$((W * H * SPP)) '
             $1 == m && $2 == g && $3 != "failed" && (t == "" || $3 < t) { t = $3; r = $4 }
             END { if (t == "") printf "%-11s %-8s %8s\n", m, g, "failed"
-                  else printf "%-11s %-8s %8.4f %12.0f %10.3f\n", m, g, t, (t > 0 ? n / t : 0), (t > 0 ? r / t : 0) }' "$TMP/speed"
+                  else printf "%-11s %-8s %8.4f %12.0f %10.3f\n", m, g, t, (t > 0 ? n / t : 0),
+                              (t > 0 ? r / t : 0) }' "$TMP/speed"
     done
 done
 

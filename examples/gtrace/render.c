@@ -44,8 +44,8 @@ typedef struct Worker {
 } Worker;
 
 /* The colour of pixel (x, y) into out (black when its one sample is not finite, unless job->finite_by_xyz leaves
- * that to store_pixel); ahead: its camera ray computed beforehand (one sample through the pixel's centre from a pinhole camera, as pixel_sample and camera_ray_lens give
- * it), or NULL. */
+ * that to store_pixel); ahead: its camera ray computed beforehand (one sample through the pixel's centre from a
+ * pinhole camera, as pixel_sample and camera_ray_lens give it), or NULL. */
 static int render_pixel(Worker *w, const Job *job, int x, int y, const Ray *ahead, GColor *out)
 {
     TraceCtx *c = &w->ctx;

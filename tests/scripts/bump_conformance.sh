@@ -11,8 +11,8 @@
 # again on a finer grid. About 8 s.
 BUILD=$(cd "${1:-build}" 2> /dev/null && pwd) || { echo "FAIL: no build directory ${1:-build}"; exit 1; }
 GMAT="$BUILD/bin/gmat"
-[ -x "$GMAT" ] || { echo "FAIL: $GMAT is not built"; exit 1; }
 . "$(dirname "$0")/prelude.sh"
+need_program "$GMAT"
 cat > "$TMP/bumps.mat" << 'EOM'
 material ll lambert { reflectance rgb 0.6 0.3 0.2 }
 material ph phong { diffuse rgb 0.4 0.3 0.2 specular rgb 0.3 0.3 0.3 exponent 60 }

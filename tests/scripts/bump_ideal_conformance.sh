@@ -15,8 +15,8 @@
 BUILD=$(cd "${1:-build}" 2> /dev/null && pwd) || { echo "FAIL: no build directory ${1:-build}"; exit 1; }
 GMAT="$BUILD/bin/gmat"
 PLUGINS="$BUILD/plugins"
-[ -x "$GMAT" ] || { echo "FAIL: $GMAT is not built"; exit 1; }
 . "$(dirname "$0")/prelude.sh"
+need_program "$GMAT"
 cat > "$TMP/ideal.mat" << 'EOM'
 material mr mirror { reflectance rgb 0.9 0.8 0.7 }
 material glass dielectric { index 1.5 }

@@ -14,8 +14,8 @@
 BUILD=$(cd "${1:-build}" 2> /dev/null && pwd) || { echo "FAIL: no build directory ${1:-build}"; exit 1; }
 GMAT="$BUILD/bin/gmat"
 PLUGINS="$BUILD/plugins"
-[ -x "$GMAT" ] || { echo "FAIL: $GMAT is not built"; exit 1; }
 . "$(dirname "$0")/prelude.sh"
+need_program "$GMAT"
 cat > "$TMP/gaps.mat" << 'EOM'
 material flint dielectric { index cauchy 1 0.1 }
 material dense dielectric { index cauchy 1.5 0.1 -0.000132 }

@@ -11,8 +11,8 @@
 # refraction sends out more than arrives). About 10 s.
 BUILD=$(cd "${1:-build}" 2> /dev/null && pwd) || { echo "FAIL: no build directory ${1:-build}"; exit 1; }
 GMAT="$BUILD/bin/gmat"
-[ -x "$GMAT" ] || { echo "FAIL: $GMAT is not built"; exit 1; }
 . "$(dirname "$0")/prelude.sh"
+need_program "$GMAT"
 cat > "$TMP/one.mat" << 'EOM'
 material ll lambert { reflectance rgb 0.6 0.3 0.2 }
 material pm phong { diffuse rgb 0.1 0.1 0.1 specular rgb 0.3 0.3 0.3 exponent 200 mirror rgb 0.3 0.3 0.3 }
