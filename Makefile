@@ -40,25 +40,29 @@ CPPFLAGS += -Iinclude -Ilib -I. -D_GNU_SOURCE -DGENERIC_BUILD -MMD -MP
 objs_of = $(BUILD)/obj/$(1) $(BUILD)/obj-lto/$(1)
 $(call objs_of,examples/%.o): CPPFLAGS += -DGENERIC_VERSION='"$(VERSION)"'
 # -fvisibility=hidden: only declarations marked GENERIC_API (include/generic/export.h) are exported; the version
-# scripts say the same to the linker (lib/libgeneric.map; lib/oiio_module.map keeps the OpenImageIO module's
+# scripts say the same to the linker (lib/libgeneric.map; lib/image/oiio_module.map keeps the OpenImageIO module's
 # inline instantiations of OpenImageIO templates out of its dynamic symbol table).
 VISIBILITY := -fvisibility=hidden
 CFLAGS  += -std=c11 $(OPT) -g -fPIC -fopenmp $(WARN) $(SANFLAGS) $(VISIBILITY)
 CXXFLAGS += -std=c++17 $(OPT) -g -fPIC $(WARN) $(SANFLAGS) $(VISIBILITY) -fvisibility-inlines-hidden \
             $(shell pkg-config --cflags OpenImageIO 2>/dev/null)
 # The library itself needs no C++ and no OpenImageIO: the OpenImageIO shims (LIB_CXX) are the module OIIO_SO,
-# which the library dlopens on the first image read or write other than PNG output (lib/oiio_module.h); PNG
+# which the library dlopens on the first image read or write other than PNG output (lib/image/oiio_module.h); PNG
 # output goes through libpng.
 DEPLIBS := -lpng -fopenmp -ldl -lpthread -lm
-# OpenColorIO (display transforms, lib/ocio_display.cpp) is part of the module: OpenImageIO links it already.
+# OpenColorIO (display transforms, lib/image/ocio_display.cpp) is part of the module: OpenImageIO links it already.
 OIIO_LIBS := $(shell pkg-config --libs OpenImageIO OpenColorIO 2>/dev/null) -lstdc++
 LDFLAGS += $(SANFLAGS)
 
-LIB_SRC := $(foreach d,lib lib/kit lib/probe colormodels materials materials/* textures,$(sort $(wildcard $(d)/*.c)))
-LIB_CXX := $(wildcard lib/*.cpp)
+# The public headers: for applications (generic/), for type writers (generic/kit/), the tools' services
+# (generic/services/).
+PUBLIC_HDR := $(wildcard include/generic/*.h include/generic/kit/*.h include/generic/services/*.h)
+LIB_DIRS := $(sort $(dir $(wildcard lib/*/)))
+LIB_SRC := $(foreach d,$(LIB_DIRS) colormodels/ materials/ materials/*/ textures/,$(sort $(wildcard $(d)*.c)))
+LIB_CXX := $(wildcard lib/*/*.cpp)
 # The list of built-in types (include/generic/builtins.h), generated from the GENERIC_TYPE records of LIB_SRC.
 GEN_BUILTINS = $(1)/gen/builtin_types.c
-# The extensions OpenImageIO writes (gimage_write_extensions, generic/image.h), found at build time by a small
+# The extensions OpenImageIO writes (gimage_write_extensions, generic/services/image.h), found at build time by a small
 # program built against OpenImageIO, so that --help lists them without loading it.
 GEN_WRITERS = $(1)/gen/image_writers.c
 WRITERS_TOOL := $(BUILD)/gen/gen_image_writers
@@ -72,14 +76,14 @@ LIBSO   := $(BUILD)/lib/libgeneric.so.$(SOVER)
 OIIO_OBJ := $(LIB_CXX:%.cpp=$(BUILD)/obj/%.o)
 OIIO_SO  := $(BUILD)/lib/generic/libgeneric_oiio.so
 # Where `make install` puts the module: the loader's last resort when it is not beside the library.
-$(call objs_of,lib/oiio_loader.o): CPPFLAGS += -DGENERIC_LIBDIR='"$(PREFIX)/lib"'
+$(call objs_of,lib/image/oiio_loader.o): CPPFLAGS += -DGENERIC_LIBDIR='"$(PREFIX)/lib"'
 # Where `make install` puts the shipped OpenColorIO config (share/ocio/config.ocio); the build tree has it in
-# $(BUILD)/share/generic/ocio/, found beside the programs the same way (lib/image_display.c).
-$(call objs_of,lib/image_display.o): CPPFLAGS += -DGENERIC_DATADIR='"$(PREFIX)/share"'
+# $(BUILD)/share/generic/ocio/, found beside the programs the same way (lib/image/image_display.c).
+$(call objs_of,lib/image/image_display.o): CPPFLAGS += -DGENERIC_DATADIR='"$(PREFIX)/share"'
 OCIO_CONFIG := $(BUILD)/share/generic/ocio/config.ocio
-# Where `make install` puts the example plug-ins: the last directory searched for a bare module name (lib/plugin.c).
+# Where `make install` puts the example plug-ins: the last directory searched for a bare module name (lib/module/plugin.c).
 PLUGIN_DIR := $(PREFIX)/lib/generic/plugins
-$(call objs_of,lib/plugin.o): CPPFLAGS += -DGENERIC_PLUGIN_DIR='"$(PLUGIN_DIR)"'
+$(call objs_of,lib/module/plugin.o): CPPFLAGS += -DGENERIC_PLUGIN_DIR='"$(PLUGIN_DIR)"'
 
 TOOLS   := $(notdir $(patsubst %/,%,$(dir $(wildcard examples/*/main.c))))
 TOOL_BIN := $(TOOLS:%=$(BUILD)/bin/%)
@@ -141,9 +145,9 @@ $(OCIO_CONFIG): share/ocio/config.ocio
 
 # Linked with OpenImageIO only (-z defs: every symbol it uses resolves there; the library's functions come in the
 # host table), exporting its one entry.
-$(OIIO_SO): $(OIIO_OBJ) lib/oiio_module.map
+$(OIIO_SO): $(OIIO_OBJ) lib/image/oiio_module.map
 	@mkdir -p $(dir $@)
-	$(CXX) -shared -Wl,-z,defs -Wl,--version-script=lib/oiio_module.map -o $@ $(filter %.o,$^) $(LDFLAGS) $(OIIO_LIBS)
+	$(CXX) -shared -Wl,-z,defs -Wl,--version-script=lib/image/oiio_module.map -o $@ $(filter %.o,$^) $(LDFLAGS) $(OIIO_LIBS)
 
 # Tools and tests link the static library so they run from the build tree without LD_LIBRARY_PATH;
 # -rdynamic lets plug-ins resolve the library's symbols from the executable.
@@ -170,9 +174,12 @@ $(BUILD)/obj-lto/gen/%.o: $(BUILD)/gen/%.c
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(LTO) -c $< -o $@
 endif
 
-$(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(LIBA) | $(OIIO_SO) $(OCIO_CONFIG)
+# Tests of a tool's own code link its objects too (TEST_OBJ_<test>).
+TEST_OBJ_test_fluorescent := $(BUILD)/obj/examples/gmat/laser_experiment.o
+TEST_OBJ_test_fluorescent_laser := $(BUILD)/obj/examples/gmat/laser_experiment.o
+$(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $$(TEST_OBJ_$$*) $(LIBA) | $(OIIO_SO) $(OCIO_CONFIG)
 	@mkdir -p $(dir $@)
-	$(CC) -rdynamic -o $@ $< -Wl,--whole-archive $(LIBA) -Wl,--no-whole-archive $(LDFLAGS) $(TESTLIBS) $(DEPLIBS)
+	$(CC) -rdynamic -o $@ $< $(TEST_OBJ_$*) -Wl,--whole-archive $(LIBA) -Wl,--no-whole-archive $(LDFLAGS) $(TESTLIBS) $(DEPLIBS)
 
 # The benchmarks call the GENERIC_NODISCARD operations in their timed loops without looking at the status (a
 # branch there would be timed too); until their set-up calls check theirs, unused results are not errors here.
@@ -212,8 +219,11 @@ MAN_NAME_gprobe := approximate an HDR light probe by lights and compare the tech
 MAN_NAME_gtrace := render a libgeneric scene file
 .PHONY: uninstall
 install: lib tools $(EXAMPLE_PLUGIN_SO)
-	install -d $(INST)/include/generic $(INST)/lib/pkgconfig $(INST)/bin $(DESTDIR)$(PLUGIN_DIR)
+	install -d $(INST)/include/generic/kit $(INST)/include/generic/services $(INST)/lib/pkgconfig $(INST)/bin \
+	    $(DESTDIR)$(PLUGIN_DIR)
 	install -m 644 include/generic/*.h $(INST)/include/generic/
+	install -m 644 include/generic/kit/*.h $(INST)/include/generic/kit/
+	install -m 644 include/generic/services/*.h $(INST)/include/generic/services/
 	install -m 644 $(LIBA) $(INST)/lib/
 	install -m 755 $(LIBSO) $(INST)/lib/
 	install -d $(INST)/lib/generic
@@ -232,12 +242,13 @@ install: lib tools $(EXAMPLE_PLUGIN_SO)
 	else echo "install: help2man not found: no man pages written (Debian package help2man)"; fi
 
 uninstall:
-	rm -f $(addprefix $(INST)/include/generic/,$(notdir $(wildcard include/generic/*.h)))
+	rm -f $(patsubst include/%,$(INST)/include/%,$(PUBLIC_HDR))
 	rm -f $(INST)/lib/libgeneric.a $(INST)/lib/libgeneric.so $(INST)/lib/libgeneric.so.$(SOVER)
 	rm -f $(INST)/lib/generic/$(notdir $(OIIO_SO)) $(INST)/lib/pkgconfig/generic.pc
 	rm -f $(INST)/share/generic/ocio/config.ocio
 	rm -f $(addprefix $(INST)/bin/,$(TOOLS)) $(addprefix $(DESTDIR)$(MAN_DIR)/,$(TOOLS:=.1))
 	rm -f $(addprefix $(DESTDIR)$(PLUGIN_DIR)/,$(notdir $(EXAMPLE_PLUGIN_SO)))
+	rmdir $(INST)/include/generic/kit $(INST)/include/generic/services 2>/dev/null || true
 	rmdir $(INST)/include/generic $(DESTDIR)$(PLUGIN_DIR) $(INST)/lib/generic 2>/dev/null || true
 	rmdir $(INST)/share/generic/ocio $(INST)/share/generic 2>/dev/null || true
 
@@ -308,7 +319,7 @@ bench-mpi: $(BUILD)/bin/gtrace
 # geometric normal, a mirror reflecting light from inside the body) for tests/scripts/bump_ideal_conformance.sh.
 PLUGIN_SRC := $(wildcard examples/plugins/*.c)
 PLUGIN_INC := $(BUILD)/plugins/include
-PLUGIN_HDR := $(patsubst include/generic/%,$(PLUGIN_INC)/generic/%,$(wildcard include/generic/*.h))
+PLUGIN_HDR := $(patsubst include/generic/%,$(PLUGIN_INC)/generic/%,$(PUBLIC_HDR))
 PLUGIN_SO  := $(PLUGIN_SRC:examples/plugins/%.c=$(BUILD)/plugins/%.so) \
               $(BUILD)/plugins/bad_abi.so $(BUILD)/plugins/failing_init.so $(BUILD)/plugins/no_init.so \
               $(BUILD)/plugins/constructor_only.so \

@@ -77,7 +77,7 @@ static double now(void)
 
 /* The inline code an application would write for a fixed representation of N floats: the plain loops
  * (which GCC 12 leaves scalar at -O2), and the same loops on 4-float vectors, the form the spectral
- * models' kernels use (include/generic/spectral_kernels.h). */
+ * models' kernels use (include/generic/kit/spectral_kernels.h). */
 #define INLINE_OPS(N)                                                                                        \
     static inline void add_##N(float *o, const float *b)                                                     \
     {                                                                                                        \

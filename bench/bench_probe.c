@@ -7,7 +7,7 @@
  *      with N lights (mean error, the paper's measure), N = 8..128. */
 #include "generic/builtins.h"
 #include "generic/memory.h"
-#include "generic/probe.h"
+#include "generic/services/probe.h"
 
 #include <math.h>
 #include <omp.h>

@@ -52,8 +52,8 @@
  *          - a matrix whose excitation and emission grids share no wavelength has no diagonal and is
  *            refused. */
 #include "generic/plugin.h"
-#include "generic/spectral.h"
-#include "generic/spectral_kernels.h"
+#include "generic/kit/spectral.h"
+#include "generic/kit/spectral_kernels.h"
 
 #include <math.h>
 #include <string.h>

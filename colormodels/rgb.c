@@ -1,7 +1,7 @@
 /* rgb.c - the RGB colour model: linear Rec.709/sRGB primaries, D65 white. Conversions to XYZ use the
- * sRGB matrix directly; to and from spectra go through the spectral primary basis (lib/cie.c). */
+ * sRGB matrix directly; to and from spectra go through the spectral primary basis (lib/color/cie.c). */
 #include "generic/plugin.h"
-#include "generic/spectral.h"
+#include "generic/kit/spectral.h"
 #include "generic/color.h"
 
 #include <math.h>

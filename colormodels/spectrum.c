@@ -3,12 +3,12 @@
  * 300..830 nm). A value is n floats, a light or a reflectance; every operation works sample by sample.
  *
  * to_nm interpolates linearly between samples (0 outside the grid); from_nm takes the hat-weighted
- * average around each sample (energy conserving, the identity at 1 nm; see include/generic/spectral.h). to_xyz
+ * average around each sample (energy conserving, the identity at 1 nm; see include/generic/kit/spectral.h). to_xyz
  * and brightness use weights computed once from the CIE tables through that same interpolation, so
  * they agree with the nm path while costing n multiply-adds. Every operation is the kit's (gspectral_*), as a
  * module written on the kit has them, on any grid. */
 #include "generic/plugin.h"
-#include "generic/spectral.h"
+#include "generic/kit/spectral.h"
 
 /* The model's priv struct is a plain GSpectral. */
 static int spectrum_init(GColorModel *self, const GColorModelOptions *opt, GError *err)

@@ -3,16 +3,16 @@
  *
  * to_nm reconstructs the natural cubic spline through the nine samples (second derivative 0 at both
  * ends), evaluated from a table of the nine cardinal splines at every nm built once. from_nm samples
- * with the hat-weighted average of half-width 50 nm (include/generic/spectral.h): each nm hands its energy to
+ * with the hat-weighted average of half-width 50 nm (include/generic/kit/spectral.h): each nm hands its energy to
  * the two samples around it in proportion to its distance, so a narrow emission line is kept with its
  * full energy instead of being missed between samples, and a constant stays constant. Sampling then
  * reconstructing smooths a spectrum (features narrower than ~100 nm are lost): this model trades
  * accuracy for size: the hat-sampled spectral primaries come back up to 0.12 off in RGB. from_rgb is
- * therefore corrected to be exact (include/generic/spectral.h), at a price: saturated reflectances get samples
+ * therefore corrected to be exact (include/generic/kit/spectral.h), at a price: saturated reflectances get samples
  * outside [0, 1] (down to -0.13 and up to 1.13 for the sRGB primaries), which nine spline samples need
  * to reach their chroma. The grid is fixed; options other than its own values are refused. */
 #include "generic/plugin.h"
-#include "generic/spectral.h"
+#include "generic/kit/spectral.h"
 
 enum { N9 = 9 };
 

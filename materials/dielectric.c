@@ -1,6 +1,6 @@
 /* dielectric.c - a smooth dielectric interface: dispersion formulas, unpolarised Fresnel reflection and
  * refraction, total internal reflection, Beer-Lambert absorption inside. */
-#include "generic/material_kit.h"
+#include "generic/kit/material_kit.h"
 #include "generic/materials.h"
 #include "generic/plugin.h"
 

@@ -1,5 +1,5 @@
 /* emitter.c - a surface that emits radiance L from its front (or both sides). */
-#include "generic/material_kit.h"
+#include "generic/kit/material_kit.h"
 #include "generic/materials.h"
 #include "generic/plugin.h"
 

@@ -1,5 +1,5 @@
 /* lambert.c - the ideal diffuse reflector: f_r = rho / pi. */
-#include "generic/material_kit.h"
+#include "generic/kit/material_kit.h"
 #include "generic/materials.h"
 #include "generic/plugin.h"
 

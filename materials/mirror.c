@@ -1,5 +1,5 @@
 /* mirror.c - the perfect specular reflector of the paper's example. */
-#include "generic/material_kit.h"
+#include "generic/kit/material_kit.h"
 #include "generic/materials.h"
 #include "generic/plugin.h"
 

@@ -1,6 +1,6 @@
 /* phong.c - energy-normalised Phong: f_r = kd / pi + ks (n + 2) / (2 pi) cos^n(alpha), with an optional
  * ideal reflection ray of reflectance `mirror`. */
-#include "generic/material_kit.h"
+#include "generic/kit/material_kit.h"
 #include "generic/materials.h"
 #include "generic/plugin.h"
 

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
-"""Generates lib/cie_tables.c from Debian's colord-data CIE tables and computes the spectral primary
+"""Generates lib/color/cie_tables.c from Debian's colord-data CIE tables and computes the spectral primary
 basis used for RGB -> spectrum (three smooth reflectances in [0,1] that sum to 1 at every wavelength and
-whose sRGB colours under D65 are the primaries). Run: python3 scripts/gen_cie_tables.py > lib/cie_tables.c
+whose sRGB colours under D65 are the primaries). Run: python3 scripts/gen_cie_tables.py > lib/color/cie_tables.c
 Needs colord-data, python3-numpy and python3-scipy (development time only; the output is committed)."""
 import sys
 import numpy as np

@@ -14,7 +14,7 @@
 #include <unistd.h>
 
 #include "generic/builtins.h"
-#include "generic/bfc.h"
+#include "generic/services/bfc.h"
 #include "generic/color.h"
 
 static const char *data_file(const char *name)

@@ -17,7 +17,7 @@
 #include <unistd.h>
 
 #include "generic/builtins.h"
-#include "generic/material_kit.h"
+#include "generic/kit/material_kit.h"
 #include "generic/plugin.h"
 #include "generic/reader.h"
 

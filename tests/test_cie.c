@@ -1,4 +1,4 @@
-/* test_cie.c - CIE colorimetry (lib/cie.c): white points of the illuminants, the colour matching
+/* test_cie.c - CIE colorimetry (lib/color/cie.c): white points of the illuminants, the colour matching
  * functions and D65 against Debian's colord-data, the blackbody, the sRGB matrices and the RGB basis. */
 #include <setjmp.h>
 #include <stdarg.h>

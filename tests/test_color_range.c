@@ -15,7 +15,7 @@
 
 #include "generic/builtins.h"
 #include "generic/color.h"
-#include "generic/material_params.h"
+#include "generic/kit/material_params.h"
 #include "generic/materials.h"
 #include "generic/reader.h"
 #include "generic/surfpoint.h"

@@ -1,4 +1,4 @@
-/* test_color_shortcuts.c - lib/color_shortcuts.c in every registered colour model (taken from the registry):
+/* test_color_shortcuts.c - lib/color/color_shortcuts.c in every registered colour model (taken from the registry):
  * gcolor_is_black on black, each single non-zero sample (in the vector blocks and in the tail), -0.0, NaN and
  * infinities, tiny values, all agreeing with gcolor_brightness(c) == 0.0; gcolor_mul_scaled equal bit for bit to
  * gcolor_mul then gcolor_scale, also in place; the bispectral model's matrices; and a plug-in model whose vectors

@@ -17,7 +17,7 @@
 #include <unistd.h>
 
 #include "generic/builtins.h"
-#include "generic/bfc.h"
+#include "generic/services/bfc.h"
 #include "generic/memory.h"
 #include "generic/reader.h"
 

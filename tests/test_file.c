@@ -6,12 +6,12 @@
 #include <stddef.h>
 #include <cmocka.h>
 
-#include "generic/bfc.h"
+#include "generic/services/bfc.h"
 #include "generic/builtins.h"
-#include "generic/file.h"
-#include "generic/image.h"
+#include "generic/services/file.h"
+#include "generic/services/image.h"
 #include "generic/plugin.h"
-#include "generic/probe.h"
+#include "generic/services/probe.h"
 #include "generic/reader.h"
 #include "test_util.h"
 

@@ -16,8 +16,9 @@
 #include <unistd.h>
 
 #include "generic/builtins.h"
-#include "generic/bfc.h"
+#include "generic/services/bfc.h"
 #include "generic/fluorescent.h"
+#include "examples/gmat/laser_experiment.h"
 #include "generic/reader.h"
 #include "test_util.h"
 

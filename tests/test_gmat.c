@@ -15,7 +15,7 @@
 #include <unistd.h>
 
 #include "generic/builtins.h"
-#include "generic/image.h"
+#include "generic/services/image.h"
 #include "test_util.h"
 
 static char gmat[4096], dir[4096], matfile[4200];

@@ -9,7 +9,7 @@
 #include "generic/builtins.h"
 #include "test_gtrace_common.h"
 
-#include <generic/image.h>
+#include <generic/services/image.h>
 
 #include <sys/wait.h>
 #include <unistd.h>

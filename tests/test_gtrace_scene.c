@@ -6,7 +6,7 @@
 #include "generic/builtins.h"
 #include "test_gtrace_common.h"
 
-#include <generic/image.h>
+#include <generic/services/image.h>
 
 #include <ctype.h>
 #include <dirent.h>

@@ -14,7 +14,7 @@
 
 #include "generic/builtins.h"
 #include "generic/color.h"
-#include "generic/image.h"
+#include "generic/services/image.h"
 
 #include <string.h>
 

@@ -13,7 +13,7 @@
 #include <unistd.h>
 
 #include "generic/builtins.h"
-#include "generic/image.h"
+#include "generic/services/image.h"
 #include "generic/memory.h"
 
 static char dir[256];

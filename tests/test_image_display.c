@@ -1,4 +1,4 @@
-/* test_image_display.c - display transforms through OpenColorIO (GImageDisplay, generic/image.h) with the config
+/* test_image_display.c - display transforms through OpenColorIO (GImageDisplay, generic/services/image.h) with the config
  * libgeneric ships (share/ocio/config.ocio): its Standard view writes what the default sRGB path writes within
  * 1/255, Raw the linear values clamped, Log its 12 stops; unknown displays and views are refused naming the valid
  * ones, broken, missing and non-regular config files cleanly; and gtrace --display sRGB --view Standard renders
@@ -11,7 +11,7 @@
 
 #include "test_util.h"
 
-#include "generic/image.h"
+#include "generic/services/image.h"
 
 #include <string.h>
 #include <sys/stat.h>

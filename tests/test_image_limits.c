@@ -9,8 +9,8 @@
 #include <cmocka.h>
 
 #include "generic/builtins.h"
-#include "generic/image.h"
-#include "generic/probe.h"
+#include "generic/services/image.h"
+#include "generic/services/probe.h"
 #include "generic/reader.h"
 #include "test_util.h"
 

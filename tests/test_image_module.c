@@ -1,5 +1,5 @@
 /* test_image_module.c - the OpenImageIO module is loaded on first use, once, when several threads need it at the
- * same moment (lib/oiio_module.h): before, the process maps no libOpenImageIO (PNG output goes through libpng and
+ * same moment (lib/image/oiio_module.h): before, the process maps no libOpenImageIO (PNG output goes through libpng and
  * needs none; NULL texture systems need none); then eight threads read the same PNG at once, all get the same
  * pixels, and the process maps the module exactly once. One test per process: the first use is the subject. */
 #include <setjmp.h>
@@ -12,8 +12,8 @@
 #include <string.h>
 
 #include "generic/builtins.h"
-#include "generic/image.h"
-#include "generic/texsys.h"
+#include "generic/services/image.h"
+#include "generic/services/texsys.h"
 #include "test_util.h"
 
 /* Counts the distinct mapped files of /proc/self/maps whose path contains name. */

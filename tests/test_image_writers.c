@@ -10,7 +10,7 @@
 
 #include "test_util.h"
 
-#include "generic/image.h"
+#include "generic/services/image.h"
 
 #include <string.h>
 

@@ -8,7 +8,7 @@
 
 #include <string.h>
 
-#include "lexer.h"
+#include "reader/lexer.h"
 
 typedef struct Lexed {
     GLexer lx;

@@ -9,8 +9,8 @@
 #include <math.h>
 #include <string.h>
 #include "generic/builtins.h"
-#include "generic/noise.h"
-#include "generic/spectral.h"
+#include "generic/kit/noise.h"
+#include "generic/kit/spectral.h"
 
 /* The lattice wraps every 2^32 cells: a point and the same point 2^32 cells away have the same noise, and
  * beyond 2^53 (every double an integer, a lattice point) the noise is 0 with a finite gradient. */

@@ -15,9 +15,9 @@
 #include <stdint.h>
 #include <cmocka.h>
 
-#include <generic/affine.h>
+#include <generic/kit/affine.h>
 #include <generic/materials.h>
-#include <generic/node_kit.h>
+#include <generic/kit/node_kit.h>
 #include <generic/reader.h>
 
 #include "generic/builtins.h"

@@ -20,11 +20,11 @@
 #include <stdint.h>
 #include <cmocka.h>
 
-#include <generic/affine.h>
+#include <generic/kit/affine.h>
 #include <generic/generators.h>
-#include <generic/material_kit.h>
+#include <generic/kit/material_kit.h>
 #include <generic/materials.h>
-#include <generic/node_kit.h>
+#include <generic/kit/node_kit.h>
 
 #include "generic/builtins.h"
 #include "texture_fixtures.h"

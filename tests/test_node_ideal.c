@@ -11,7 +11,7 @@
 #include <cmocka.h>
 
 #include <generic/materials.h>
-#include <generic/node_kit.h>
+#include <generic/kit/node_kit.h>
 #include <generic/reader.h>
 
 #include "generic/builtins.h"

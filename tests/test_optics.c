@@ -1,4 +1,4 @@
-/* test_optics.c - the geometric helpers of lib/optics.c: the ideal-mirror and ideal-refraction tests against
+/* test_optics.c - the geometric helpers of lib/core/optics.c: the ideal-mirror and ideal-refraction tests against
  * their definitions (the cosine between the given direction and the ideal one above 1 - 1e-6), the orthonormal
  * frame, and the moments of the cosine and uniform hemisphere samplers. */
 #include <stdarg.h>

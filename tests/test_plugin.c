@@ -19,7 +19,7 @@
 #include "generic/plugin.h"
 #include "generic/reader.h"
 #include "generic/texture.h"
-#include "plugin_elf.h"
+#include "module/plugin_elf.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>

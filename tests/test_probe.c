@@ -13,7 +13,7 @@
 
 #include "generic/builtins.h"
 #include "generic/memory.h"
-#include "generic/probe.h"
+#include "generic/services/probe.h"
 
 static double rnd(unsigned *s)
 {

@@ -13,7 +13,7 @@
 
 #include "generic/builtins.h"
 #include "generic/memory.h"
-#include "generic/probe.h"
+#include "generic/services/probe.h"
 
 /* Path of a shared probe, or NULL when the data is not there. */
 static const char *shared_probe(const char *name, char *buf, size_t size)

@@ -13,8 +13,8 @@
 #include <unistd.h>
 
 #include "generic/builtins.h"
-#include "generic/image.h"
-#include "generic/probe.h"
+#include "generic/services/image.h"
+#include "generic/services/probe.h"
 
 static char tool[1024], dir[256];
 

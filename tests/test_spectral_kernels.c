@@ -17,7 +17,7 @@
 
 #include "generic/builtins.h"
 #include "generic/color.h"
-#include "generic/spectral_kernels.h"
+#include "generic/kit/spectral_kernels.h"
 #include <stdio.h>
 
 enum { N = 90 };

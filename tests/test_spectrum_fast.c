@@ -27,8 +27,8 @@
 
 #include "generic/builtins.h"
 #include "generic/color.h"
-#include "generic/spectral.h"
-#include "generic/spectral_kernels.h"
+#include "generic/kit/spectral.h"
+#include "generic/kit/spectral_kernels.h"
 #include "test_util.h"
 
 enum { MAX_N = 1681, SMALL_N = 140, ROUNDS = 6, GUARD = 8 };

@@ -9,7 +9,7 @@
 #include <cmocka.h>
 
 #include <generic/builtins.h>
-#include <generic/node_kit.h>
+#include <generic/kit/node_kit.h>
 #include <generic/reader.h>
 #include <generic/textures.h>
 

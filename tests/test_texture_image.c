@@ -8,7 +8,7 @@
 #include <stdint.h>
 #include <cmocka.h>
 
-#include <generic/image.h>
+#include <generic/services/image.h>
 #include <generic/materials.h>
 
 #include "generic/builtins.h"

@@ -13,7 +13,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include <generic/image.h>
+#include <generic/services/image.h>
 #include "generic/builtins.h"
 #include "test_util.h"
 

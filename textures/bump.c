@@ -3,9 +3,9 @@
  *
  *   node NAME bump { child MATERIAL  height GENERATOR  strength 1 }
  */
-#include <generic/node_kit.h>
+#include <generic/kit/node_kit.h>
 #include <generic/plugin.h>
-#include <generic/texture_parse.h>
+#include <generic/kit/texture_parse.h>
 
 #include <math.h>
 #include <string.h>

@@ -4,7 +4,7 @@
  */
 #include <generic/generators.h>
 #include <generic/plugin.h>
-#include <generic/texture_parse.h>
+#include <generic/kit/texture_parse.h>
 
 #include <math.h>
 #include <string.h>

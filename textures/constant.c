@@ -1,7 +1,7 @@
 /* constant.c - the constant generator:  generator NAME constant { value V } */
 #include <generic/generators.h>
 #include <generic/plugin.h>
-#include <generic/texture_parse.h>
+#include <generic/kit/texture_parse.h>
 
 #include <math.h>
 #include <string.h>

@@ -1,4 +1,4 @@
-/* cpg.c - the cpg generator: 1 inside a CPG shape (generic/shapes.h), 0 outside, at (u, v):
+/* cpg.c - the cpg generator: 1 inside a CPG shape (generic/kit/shapes.h), 0 outside, at (u, v):
  *
  *   generator NAME cpg { shape SHAPE }
  *   SHAPE := square CX CY SIDE | circle CX CY R | polygon { X Y X Y ... } | path { EDGE ... }
@@ -10,8 +10,8 @@
  * Several shapes in an operation combine from the left: difference { a b c } is a minus b minus c. */
 #include <generic/generators.h>
 #include <generic/plugin.h>
-#include <generic/shapes.h>
-#include <generic/texture_parse.h>
+#include <generic/kit/shapes.h>
+#include <generic/kit/texture_parse.h>
 
 #include <string.h>
 

@@ -1,4 +1,4 @@
-/* csg.c - the csg generator: 1 inside a CSG solid (generic/shapes.h), 0 outside, at the point in object or
+/* csg.c - the csg generator: 1 inside a CSG solid (generic/kit/shapes.h), 0 outside, at the point in object or
  * world space:
  *
  *   generator NAME csg { space object|world  shape SOLID }
@@ -9,8 +9,8 @@
  * difference { a b c } is a minus b minus c. */
 #include <generic/generators.h>
 #include <generic/plugin.h>
-#include <generic/shapes.h>
-#include <generic/texture_parse.h>
+#include <generic/kit/shapes.h>
+#include <generic/kit/texture_parse.h>
 
 #include <string.h>
 

@@ -1,15 +1,15 @@
 /* image.c - the image node: the child's light-carrying colour results times the colour of an image at
- * (u, v), looked up through OpenImageIO's TextureSystem (lib/texture_oiio.cpp) with trilinear MIP-mapping
+ * (u, v), looked up through OpenImageIO's TextureSystem (lib/image/texture_oiio.cpp) with trilinear MIP-mapping
  * over the surface point's footprint:
  *
  *   node NAME image { child MATERIAL  file "name.png"  wrap periodic|clamp|black|mirror
  *                     swrap ...  twrap ...  colorspace auto|srgb|linear  blur 0 }
  */
-#include <generic/image.h>
-#include <generic/node_kit.h>
+#include <generic/services/image.h>
+#include <generic/kit/node_kit.h>
 #include <generic/plugin.h>
-#include <generic/texsys.h>
-#include <generic/texture_parse.h>
+#include <generic/services/texsys.h>
+#include <generic/kit/texture_parse.h>
 
 #include <math.h>
 #include <string.h>

@@ -4,11 +4,11 @@
  *   node NAME interpolate     { a MATERIAL  b MATERIAL  t GENERATOR }
  *   node NAME interpolate-one { a MATERIAL  b MATERIAL  t GENERATOR  method refraction_index }
  *
- * Both are blend nodes (generic/node_kit.h): their class tables take every material method from the kit, and
+ * Both are blend nodes (generic/kit/node_kit.h): their class tables take every material method from the kit, and
  * pick below says which children answer a call. */
-#include <generic/node_kit.h>
+#include <generic/kit/node_kit.h>
 #include <generic/plugin.h>
-#include <generic/texture_parse.h>
+#include <generic/kit/texture_parse.h>
 
 #include <string.h>
 

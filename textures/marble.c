@@ -2,11 +2,11 @@
  *
  *   generator NAME marble { NOISE  stripes S  turbulence T }
  *
- * NOISE: the noise parameters (space, frequency, seed, octaves, lacunarity, gain; generic/texture_parse.h). */
+ * NOISE: the noise parameters (space, frequency, seed, octaves, lacunarity, gain; generic/kit/texture_parse.h). */
 #include <generic/generators.h>
-#include <generic/noise.h>
+#include <generic/kit/noise.h>
 #include <generic/plugin.h>
-#include <generic/texture_parse.h>
+#include <generic/kit/texture_parse.h>
 
 #include <math.h>
 #include <string.h>

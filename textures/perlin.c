@@ -3,9 +3,9 @@
  *   generator NAME perlin { space object|world|uv  frequency F  seed N }
  */
 #include <generic/generators.h>
-#include <generic/noise.h>
+#include <generic/kit/noise.h>
 #include <generic/plugin.h>
-#include <generic/texture_parse.h>
+#include <generic/kit/texture_parse.h>
 
 
 typedef struct Perlin {

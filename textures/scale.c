@@ -2,9 +2,9 @@
  *
  *   node NAME scale { child MATERIAL  factor GENERATOR }
  */
-#include <generic/node_kit.h>
+#include <generic/kit/node_kit.h>
 #include <generic/plugin.h>
-#include <generic/texture_parse.h>
+#include <generic/kit/texture_parse.h>
 
 #include <string.h>
 

@@ -2,11 +2,11 @@
  *
  *   node NAME select { index GENERATOR  children { MATERIAL ... } }
  *
- * A blend node (generic/node_kit.h) whose blend is always one child; its state is a GTexList (gen is the
+ * A blend node (generic/kit/node_kit.h) whose blend is always one child; its state is a GTexList (gen is the
  * index). */
-#include <generic/node_kit.h>
+#include <generic/kit/node_kit.h>
 #include <generic/plugin.h>
-#include <generic/texture_parse.h>
+#include <generic/kit/texture_parse.h>
 
 #include <math.h>
 #include <string.h>

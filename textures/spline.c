@@ -9,10 +9,10 @@
  * COLOR }` (BASE a material defined before), made by the reader (greader_material_with); the default is
  * `of lambert reflectance`.
  *
- * A blend node (generic/node_kit.h): pick below gives the children and weights of the segment at t. */
-#include <generic/node_kit.h>
+ * A blend node (generic/kit/node_kit.h): pick below gives the children and weights of the segment at t. */
+#include <generic/kit/node_kit.h>
 #include <generic/plugin.h>
-#include <generic/texture_parse.h>
+#include <generic/kit/texture_parse.h>
 
 #include <math.h>
 #include <string.h>

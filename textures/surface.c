@@ -1,7 +1,7 @@
 /* surface.c - the surface index generator (for select nodes: a material per face):  generator NAME surface */
 #include <generic/generators.h>
 #include <generic/plugin.h>
-#include <generic/texture_parse.h>
+#include <generic/kit/texture_parse.h>
 
 static double surface_value(const GGenerator *self, GSurfPoint *sp)
 {

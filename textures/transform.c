@@ -7,9 +7,9 @@
  *                         xyz { translate X Y Z  rotate AXIS DEG  scale S | X Y Z ... } }
  *
  * Transform steps apply in the order written, each moving the pattern further. */
-#include <generic/node_kit.h>
+#include <generic/kit/node_kit.h>
 #include <generic/plugin.h>
-#include <generic/texture_parse.h>
+#include <generic/kit/texture_parse.h>
 
 #include <math.h>
 #include <string.h>

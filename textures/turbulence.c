@@ -4,9 +4,9 @@
  *   generator NAME turbulence { the same }
  */
 #include <generic/generators.h>
-#include <generic/noise.h>
+#include <generic/kit/noise.h>
 #include <generic/plugin.h>
-#include <generic/texture_parse.h>
+#include <generic/kit/texture_parse.h>
 
 
 typedef struct Fractal {

@@ -22,7 +22,7 @@
  * Nothing to check without the bit, or without the slot (the default is then what the bit says). */
 #include "gmat.h"
 
-#include <generic/material_kit.h>
+#include <generic/kit/material_kit.h>
 
 #include <math.h>
 #include <stdio.h>

@@ -11,8 +11,8 @@
 #include "gmat.h"
 #include "../common/cli.h"
 
-#include <generic/fluorescent.h>
-#include <generic/image.h>
+#include "laser_experiment.h"
+#include <generic/services/image.h>
 
 #include <math.h>
 #include <stdio.h>

@@ -10,8 +10,8 @@
  * plot is drawn from. */
 #include "gmat.h"
 
-#include <generic/file.h>
-#include <generic/image.h>
+#include <generic/services/file.h>
+#include <generic/services/image.h>
 #include <generic/memory.h>
 
 #include <errno.h>

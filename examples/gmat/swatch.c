@@ -13,7 +13,7 @@
 #include "gmat.h"
 #include "../common/cli.h"
 
-#include <generic/image.h>
+#include <generic/services/image.h>
 
 #include <math.h>
 #include <stdio.h>

@@ -13,7 +13,7 @@
  * default 0.1: at least a tenth of the direct light is blocked). */
 #include "gprobe.h"
 
-#include <generic/image.h>
+#include <generic/services/image.h>
 #include <generic/memory.h>
 
 #include <math.h>

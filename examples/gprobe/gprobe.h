@@ -2,8 +2,8 @@
 #ifndef GPROBE_TOOL_H
 #define GPROBE_TOOL_H
 
-#include <generic/file.h>
-#include <generic/probe.h>
+#include <generic/services/file.h>
+#include <generic/services/probe.h>
 
 #include "../common/cli.h"
 
@@ -40,13 +40,13 @@ int parse_vec3(const char *opt, const char *s, double v[3]);
 /** Seconds on a monotonic clock. */
 double now_seconds(void);
 
-/** A text file written to a temporary next to `path` and renamed into place by text_close (generic/file.h). */
+/** A text file written to a temporary next to `path` and renamed into place by text_close (generic/services/file.h). */
 typedef struct TextOut {
     FILE *f;
     char *path;
     GFileOutput out;
 } TextOut;
-/** Checks before any work that path can be written (generic/file.h), and, when image is set, that this
+/** Checks before any work that path can be written (generic/services/file.h), and, when image is set, that this
  * OpenImageIO has a writer for its extension; -1 with a message when not. NULL passes. */
 int output_check(const char *path, int image);
 /** Opens the temporary; -1 with a message on failure. */

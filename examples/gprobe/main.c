@@ -3,7 +3,7 @@
  * main.c: the command dispatch and the pieces every command shares. */
 #include "gprobe.h"
 
-#include <generic/image.h>
+#include <generic/services/image.h>
 
 #include <generic/builtins.h>
 #include <generic/memory.h>
@@ -38,7 +38,7 @@ static void usage(FILE *f)
             "every option value may also be written --option=value.\n"
             "Directions: right-handed, z up. In a lat-long probe row 0 is the zenith, the middle column looks\n"
             "along +x, a quarter of the way along +y and the edges along -x, as Blender maps world textures\n"
-            "(see include/generic/probe.h).\n"
+            "(see include/generic/services/probe.h).\n"
             CLI_EXIT_STATUS_HELP);
 }
 

@@ -1,8 +1,8 @@
 /* plot.c - the Fig. 6 plot of `gprobe eval`: error against the number of lights, drawn by gnuplot. */
 #include "gprobe.h"
 
-#include <generic/file.h>
-#include <generic/image.h>
+#include <generic/services/file.h>
+#include <generic/services/image.h>
 #include <generic/memory.h>
 
 #include <errno.h>

@@ -11,7 +11,7 @@
  * --error-scale, drawn beside it as a bar; larger errors saturate. */
 #include "gprobe.h"
 
-#include <generic/image.h>
+#include <generic/services/image.h>
 #include <generic/memory.h>
 
 #include <errno.h>

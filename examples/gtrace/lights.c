@@ -32,7 +32,7 @@
 #include "lighting.h"
 #include "accel.h"
 
-#include <generic/material_kit.h>
+#include <generic/kit/material_kit.h>
 
 #include <math.h>
 

@@ -12,7 +12,7 @@
 #include "../common/cli.h"
 
 #include <generic/builtins.h>
-#include <generic/image.h>
+#include <generic/services/image.h>
 #include <generic/plugin.h>
 #include <generic/registry.h>
 

@@ -8,7 +8,7 @@
 #include "merge.h"
 #include "../common/cli.h"
 
-#include <generic/image.h>
+#include <generic/services/image.h>
 #include <generic/memory.h>
 
 #include <stdio.h>

@@ -2,7 +2,7 @@
  * count from the end; usemtl and g start a new surface index) and the surface at a triangle hit. */
 #include "geometry.h"
 
-#include <generic/file.h>
+#include <generic/services/file.h>
 
 #include <errno.h>
 #include <math.h>

@@ -3,7 +3,7 @@
  * each assimp mesh as the surface index of its triangles. OBJ stays with mesh.c's own reader. */
 #include "object.h"
 
-#include <generic/file.h>
+#include <generic/services/file.h>
 #include <generic/memory.h>
 
 #include <assimp/cimport.h>

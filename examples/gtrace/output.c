@@ -1,11 +1,11 @@
-/* output.c - writes the framebuffer through the library's image shim (generic/image.h), which picks the
+/* output.c - writes the framebuffer through the library's image shim (generic/services/image.h), which picks the
  * encoding by extension and writes a temporary file that is renamed only when complete. Float formats
  * (.exr, .hdr, .pfm) get the linear values as rendered; 8-bit formats get the exposure, then the shim's
  * display encoding with clamping. A crop is written as the region it is: in OpenEXR, the data window inside the
  * full image's display window. */
 #include "output.h"
 
-#include <generic/image.h>
+#include <generic/services/image.h>
 
 #include <string.h>
 #include <strings.h>

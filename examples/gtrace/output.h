@@ -5,12 +5,12 @@
 #include "render.h"
 
 #include <generic/error.h>
-#include <generic/image.h>
+#include <generic/services/image.h>
 
 /** Writes the framebuffer by extension: .exr linear float (and, with fb->waves, the values at wavelengths as
- * emissive channels S0.<nm>nm in the layout of generic/image.h); .png/.jpg/.jpeg sRGB-encoded after 2^exposure
+ * emissive channels S0.<nm>nm in the layout of generic/services/image.h); .png/.jpg/.jpeg sRGB-encoded after 2^exposure
  * scaling, clamped to [0,1], or through the OpenColorIO display transform display (NULL: none; 8-bit formats
- * only, generic/image.h). Writes a temporary file and renames it, so a failed write
+ * only, generic/services/image.h). Writes a temporary file and renames it, so a failed write
  * leaves no partial file. */
 int output_write(const char *path, const Framebuffer *fb, double exposure, const GImageDisplay *display, GError *err);
 

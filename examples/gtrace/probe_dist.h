@@ -4,7 +4,7 @@
 
 #include <generic/color.h>
 #include <generic/error.h>
-#include <generic/probe.h>
+#include <generic/services/probe.h>
 #include <generic/vec.h>
 
 /** The probe as a piecewise-constant distribution over its pixels, proportional to each pixel's brightness

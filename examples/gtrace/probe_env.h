@@ -9,7 +9,7 @@
 
 #include <generic/color.h>
 #include <generic/error.h>
-#include <generic/probe.h>
+#include <generic/services/probe.h>
 #include <generic/reader.h>
 #include <generic/vec.h>
 

@@ -6,11 +6,11 @@
  * file        the probe (anything gprobe_load reads; relative paths resolve against the scene file's
  *             directory); format auto | latlong | angular (default auto: 2:1 lat-long, square angular map)
  * technique   mediancut | adaptive | kmeans | irradiance: `count` directional lights made by the library's
- *             technique (include/generic/probe.h), each casting shadow rays like any directional light;
+ *             technique (include/generic/services/probe.h), each casting shadow rays like any directional light;
  *             reference: the whole probe, Monte Carlo with importance sampling, `samples` directions per
  *             shading point (probe_sample.c). Default adaptive, count 16, samples 64.
  *             sh | sh-hanning | ambientcube | sg-naive | sg-ls | sg-nnls | sg-ambient: a basis of `count`
- *             coefficients or lobes (include/generic/probe.h) whose irradiance E(n) at the shading normal
+ *             coefficients or lobes (include/generic/services/probe.h) whose irradiance E(n) at the shading normal
  *             lights the surface as an ambient term, without shadows: the material reflects a light of
  *             irradiance E(n) arriving along the normal (exactly the diffuse response for Lambert).
  * rotate      degrees about x, then y, then z turning the probe into the scene (gprobe_rotation_xyz):

@@ -10,7 +10,7 @@
 #include "path.h"
 #include "progress.h"
 
-#include <generic/image.h>
+#include <generic/services/image.h>
 
 #include <math.h>
 #include <omp.h>

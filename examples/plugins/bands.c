@@ -6,7 +6,7 @@
  * the library's functions come from the program that loads it. Its last line makes the file a module. */
 #include <generic/plugin.h>
 #include <generic/texture.h>
-#include <generic/texture_parse.h>
+#include <generic/kit/texture_parse.h>
 
 #include <math.h>
 #include <string.h>

@@ -10,9 +10,9 @@
  * Text format:  material clay oren_nayar { reflectance rgb 0.6 0.4 0.3  sigma 20 }   (sigma in degrees)
  *
  * Built against the installed headers only (<generic/...>); the library's functions come from the program
- * that loads the module. The material kit (generic/material_kit.h) checks the reflectance, builds the instance
+ * that loads the module. The material kit (generic/kit/material_kit.h) checks the reflectance, builds the instance
  * and places a complaint at the parameter it is about. */
-#include <generic/material_kit.h>
+#include <generic/kit/material_kit.h>
 #include <generic/plugin.h>
 
 #include <math.h>

@@ -119,7 +119,7 @@ struct GColorModel {
 
 /** The vtable of a colour model. Required: init, black, add, mul, scale, div, pow, brightness, to_nm,
  * from_nm. Optional (NULL = go through the nm spectrum): fini, to_xyz, from_rgb, from_reradiation.
- * Optional (NULL = the default of lib/color.c, which reads a vector as nvalues independent samples, as add and
+ * Optional (NULL = the default of lib/color/color.c, which reads a vector as nvalues independent samples, as add and
  * scale treat it): fill, exp_scaled, axpy. A model whose vectors are not plain samples, or that has matrices, gives
  * its own. Optional (NULL = one band, no dispersion): band_count, band_mask, band_value. Operations get valid operands of this model (the dispatch checks models); `out` may alias them. */
 struct GColorModelClass {
@@ -315,7 +315,7 @@ GENERIC_API GENERIC_NODISCARD int gcolormodel_rgb_range(const GColorModel *m, GC
  * Matrices are left alone. G_ERR_INVALID for a non-finite sample. */
 GENERIC_API GENERIC_NODISCARD int gcolor_clip_to_gamut(GColor *c, GColorRole role, int *mapped);
 
-/* ---- colorimetry helpers (lib/cie.c) ---- */
+/* ---- colorimetry helpers (lib/color/cie.c) ---- */
 
 /** Linear sRGB -> XYZ (D65). */
 GENERIC_API void gcie_rgb_to_xyz(const double rgb[3], double xyz[3]);

@@ -6,8 +6,8 @@
 
 #include "export.h"
 #include "texture.h"
-#include "noise.h"
-#include "shapes.h"
+#include "kit/noise.h"
+#include "kit/shapes.h"
 
 #ifdef __cplusplus
 extern "C" {

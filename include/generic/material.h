@@ -247,7 +247,7 @@ GENERIC_API double gmaterial_pdf(const GMaterial *m, GSurfPoint *sp, GVec3 in, G
  * call to the class when m has GMAT_LAMBERTIAN. */
 GENERIC_API GENERIC_NODISCARD int gmaterial_is_delta(const GMaterial *m, GSurfPoint *sp);
 
-/* ---- helpers for material implementations (lib/optics.c) ---- */
+/* ---- helpers for material implementations (lib/core/optics.c) ---- */
 
 /** An orthonormal frame (t, b, n) around the unit vector n. */
 GENERIC_API void goptics_frame(GVec3 n, GVec3 *t, GVec3 *b);

@@ -19,8 +19,8 @@
 #include "color.h"
 #include "material.h"
 #include "texture.h"
-#include "affine.h"
-#include "texsys.h"
+#include "kit/affine.h"
+#include "services/texsys.h"
 
 #ifdef __cplusplus
 extern "C" {

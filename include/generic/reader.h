@@ -301,7 +301,7 @@ GENERIC_API GENERIC_NODISCARD int greader_error_at(GReader *r, GError *err, int 
 GENERIC_API GENERIC_NODISCARD int greader_locate(GReader *r, GError *err);
 
 /* ======================================================================================================
- * Colour literals (lib/colorparse.c)
+ * Colour literals (lib/reader/colorparse.c)
  * ====================================================================================================== */
 
 /** What a colour literal describes, kept apart from any colour model: an entry `color NAME ...` stores

@@ -5,12 +5,12 @@
 #ifndef GENERIC_TEXTURES_H
 #define GENERIC_TEXTURES_H
 
-#include "affine.h"
+#include "kit/affine.h"
 #include "generators.h"
 #include "nodes.h"
-#include "noise.h"
-#include "shapes.h"
-#include "texsys.h"
+#include "kit/noise.h"
+#include "kit/shapes.h"
+#include "services/texsys.h"
 #include "texture.h"
 
 #endif

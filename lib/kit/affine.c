@@ -1,5 +1,5 @@
 /* affine.c - 2D and 3D affine maps for transform nodes and CSG/CPG trees. */
-#include "generic/affine.h"
+#include "generic/kit/affine.h"
 
 #include <math.h>
 

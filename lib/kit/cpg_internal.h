@@ -5,7 +5,7 @@
 
 #include "generic/export.h"
 #include "generic/memory.h"
-#include "generic/shapes.h"
+#include "generic/kit/shapes.h"
 
 /** A rational Bézier segment in homogeneous form: control point i is (hx[i], hy[i]) / hw[i], hw[i] > 0. */
 typedef struct GCpgSeg {

@@ -1,5 +1,5 @@
 /* cpg_shape.c - CPG trees (constructive planar geometry): squares, circles and closed contours
- * (lib/kit/cpg_path.c) with boolean operations and affine transforms (generic/shapes.h), for the cpg
+ * (lib/kit/cpg_path.c) with boolean operations and affine transforms (generic/kit/shapes.h), for the cpg
  * generator (textures/cpg.c). */
 #include "cpg_internal.h"
 #include "shape_tree.h"

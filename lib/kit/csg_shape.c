@@ -1,7 +1,7 @@
 /* csg_shape.c - CSG trees of solids (sphere, box, cylinder, cone, half-space) with boolean operations and
- * affine transforms (generic/shapes.h), for the csg generator (textures/csg.c). */
+ * affine transforms (generic/kit/shapes.h), for the csg generator (textures/csg.c). */
 #include "generic/memory.h"
-#include "generic/shapes.h"
+#include "generic/kit/shapes.h"
 #include "shape_tree.h"
 
 #include <math.h>

@@ -7,7 +7,7 @@
  * `matrix` takes any colour value: a re-radiation matrix (`bfc "FILE"`, `reradiation {...}`, or the name of one,
  * optionally `scale`d) or a plain reflectance (rgb, spectrum), which makes a non-fluorescent matrix holding it on
  * the diagonal. Without `matrix` the default `reradiation` (a day-glo orange) is used. */
-#include "generic/fluorescent_kit.h"
+#include "generic/kit/fluorescent_kit.h"
 
 #include <string.h>
 

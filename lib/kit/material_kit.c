@@ -1,6 +1,6 @@
-/* kit.c - building material instances (generic/material_kit.h): allocation, the one-colour material, the
+/* kit.c - building material instances (generic/kit/material_kit.h): allocation, the one-colour material, the
  * incident cosine. */
-#include "generic/material_kit.h"
+#include "generic/kit/material_kit.h"
 
 #include <math.h>
 

@@ -1,6 +1,6 @@
-/* material_params.c - material parameters (generic/material_params.h): checking and converting parameter colours,
+/* material_params.c - material parameters (generic/kit/material_params.h): checking and converting parameter colours,
  * defaults for parameters a file leaves out. */
-#include "generic/material_params.h"
+#include "generic/kit/material_params.h"
 
 #include <math.h>
 #include <stdio.h>

@@ -1,9 +1,9 @@
-/* node_blend.c - the node kit's weighted blends of children (generic/node_kit.h): every material method of a
+/* node_blend.c - the node kit's weighted blends of children (generic/kit/node_kit.h): every material method of a
  * GTexBlend, the colours summed with the children's weights, the directions and normals summed and normalised,
  * and sampling as a mixture of the children. The blend nodes' methods (lib/kit/node_kit.c) pick a blend and
  * call these. */
-#include "generic/node_kit.h"
-#include "generic/material_kit.h" /* gmat_pick_lobe */
+#include "generic/kit/node_kit.h"
+#include "generic/kit/material_kit.h" /* gmat_pick_lobe */
 #include "node_blend.h"
 
 #include <math.h>

@@ -3,7 +3,7 @@
 #ifndef GENERIC_KIT_NODE_BLEND_H
 #define GENERIC_KIT_NODE_BLEND_H
 
-#include "generic/node_kit.h"
+#include "generic/kit/node_kit.h"
 
 /** The blend a node's sampling draws from, given the blends its reflection (refl) and refraction (refr) are: refl
  * when the two are one blend (returns 0); else every child of either once, with weight |w_refl| + |w_refr|

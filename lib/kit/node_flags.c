@@ -1,5 +1,5 @@
 /* node_flags.c - the node kit's GMAT_NO_EMISSION, GMAT_OPAQUE, GMAT_GEOMETRIC_NORMAL, GMAT_LAMBERTIAN, GMAT_NO_UV
- * and GMAT_DIAGONAL (generic/node_kit.h): a node whose emission only combines its children's emits nothing when none
+ * and GMAT_DIAGONAL (generic/kit/node_kit.h): a node whose emission only combines its children's emits nothing when none
  * of them does, one whose opacity is its children's is opaque everywhere when each of them is, one whose normal
  * blends its children's keeps the geometric normal when each of them does, so the dispatch answers it without a
  * call; a blend whose reflection and diffuse colour are the same blend of its children's is Lambertian when each of
@@ -8,7 +8,7 @@
  * transform); one whose reflection and refraction sum its children's filters light sample by sample when each of
  * them does (GMAT_DIAGONAL); and one that reads the point only through a generator not in (u, v) space, over
  * children that never read (u, v), lets the renderer skip the parametrisation. */
-#include "generic/node_kit.h"
+#include "generic/kit/node_kit.h"
 #include "generic/texture.h"
 
 /* 1 when each of the n children has the GMAT_* bit `flag`. */

@@ -1,8 +1,8 @@
-/* node_kit.c - the node kit (generic/node_kit.h): the methods of blend nodes (interpolate, spline, select), which
+/* node_kit.c - the node kit (generic/kit/node_kit.h): the methods of blend nodes (interpolate, spline, select), which
  * pick a blend and hand it to lib/kit/node_blend.c's weighted blends, temporaries, one-child and list nodes, and
  * the construction checks of all nodes. */
-#include "generic/node_kit.h"
-#include "generic/material_kit.h" /* gmat_new: nodes are built like the built-in materials */
+#include "generic/kit/node_kit.h"
+#include "generic/kit/material_kit.h" /* gmat_new: nodes are built like the built-in materials */
 #include "node_blend.h"
 
 #include <string.h>

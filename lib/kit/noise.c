@@ -1,7 +1,7 @@
 /* noise.c - improved gradient noise (Perlin 2002: quintic fade, twelve edge gradients) with an analytic
  * gradient, and its fractal sums. The lattice hash is an integer mix seeded per generator instead of a
  * fixed permutation table, so every seed gives a different, deterministic noise. */
-#include <generic/noise.h>
+#include <generic/kit/noise.h>
 
 #include <math.h>
 #include <stdint.h>

@@ -1,6 +1,6 @@
 /* reradiation.c - tools on re-radiation matrices (GReradiation): checks, the parametric matrix of absorption and
  * emission bands, diagonals and column sums (include/generic/fluorescent.h, fluorescent_kit.h). */
-#include "generic/fluorescent_kit.h"
+#include "generic/kit/fluorescent_kit.h"
 
 #include <math.h>
 #include <string.h>

@@ -5,7 +5,7 @@
 #define GENERIC_KIT_SHAPE_TREE_H
 
 #include "generic/export.h"
-#include "generic/shapes.h"
+#include "generic/kit/shapes.h"
 
 #include <stddef.h>
 

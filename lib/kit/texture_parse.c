@@ -1,7 +1,7 @@
 /* parse_common.c - pieces of the texture parse routines shared by nodes, generators and shape trees
- * (generic/texture_parse.h): nested generators, lists of materials and numbers, 2D/3D transform steps, spaces,
+ * (generic/kit/texture_parse.h): nested generators, lists of materials and numbers, 2D/3D transform steps, spaces,
  * the noise parameters. */
-#include "generic/texture_parse.h"
+#include "generic/kit/texture_parse.h"
 
 #include <string.h>
 

@@ -6,7 +6,7 @@
 #include <stddef.h>
 
 #include "generic/export.h"
-#include "generic/probe.h"
+#include "generic/services/probe.h"
 
 /** Rec. 709 luminance weights: the "energy" of a pixel for the radiance-space techniques. */
 #define GPROBE_LUM_R 0.2126
@@ -52,7 +52,7 @@ static inline GVec3 probe_pixel_dir(const GProbe *p, int u, int v)
  * out[4..6] the weights Q per channel. */
 void probe_sat_sum(const GProbe *p, int u0, int v0, int u1, int v1, double out[PROBE_SAT]);
 
-/* G_ERR_NOMEM when a width x height probe's tables would exceed the image memory budget (generic/image.h). */
+/* G_ERR_NOMEM when a width x height probe's tables would exceed the image memory budget (generic/services/image.h). */
 GENERIC_NODISCARD int probe_check_budget(int width, int height, GError *err);
 
 /** A rectangle of the lat-long image and its energy statistics (median cut and its adaptive form). */

@@ -10,7 +10,7 @@
  * light and the shifted diffuse light does not follow the angle of incidence, the shortcoming the paper
  * points out. The code uses only generic colour operations: M is a matrix in the bispectral model and a
  * folded reflectance in the others. */
-#include "generic/fluorescent_kit.h"
+#include "generic/kit/fluorescent_kit.h"
 #include "generic/plugin.h"
 
 #include <math.h>

@@ -34,7 +34,7 @@
  * bispectral model and folds it into a reflectance elsewhere. The per-call code uses only generic colour
  * operations and works the same for a matrix or a vector value. R(c) is tabulated at creation by a
  * quadrature over h with the distribution D(h) (h.n). */
-#include "generic/fluorescent_kit.h"
+#include "generic/kit/fluorescent_kit.h"
 #include "generic/plugin.h"
 
 #include <math.h>

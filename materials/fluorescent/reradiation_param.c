@@ -1,7 +1,7 @@
 /* reradiation_param.c - the `reradiation` colour type: the parametric re-radiation matrix (absorption band,
  * emission band, quantum yield, Stokes shift) read from text; the matrix itself is made by the library
  * (gfluor_matrix_create, lib/kit/reradiation.c). */
-#include "generic/fluorescent_kit.h"
+#include "generic/kit/fluorescent_kit.h"
 #include "generic/plugin.h"
 
 #include <math.h>

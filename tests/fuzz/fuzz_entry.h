@@ -39,13 +39,13 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "generic/bfc.h"
+#include "generic/services/bfc.h"
 #include "generic/builtins.h"
 #include "generic/color.h"
-#include "generic/image.h"
+#include "generic/services/image.h"
 #include "generic/material.h"
 #include "generic/memory.h"
-#include "generic/probe.h"
+#include "generic/services/probe.h"
 #include "generic/reader.h"
 #include "generic/texture.h"
 
@@ -70,7 +70,7 @@ const char *__lsan_default_suppressions(void)
 
 /** Inputs longer than this are skipped (keeps every execution fast; the format limits are tested elsewhere). */
 #define GFUZZ_MAX_INPUT (256u * 1024u)
-/** Images with more pixels than this are not decoded: a header of a few bytes can claim any size (lib/image.cpp
+/** Images with more pixels than this are not decoded: a header of a few bytes can claim any size (lib/image/image.cpp
  * accepts up to 2^29 pixels), and decoding a large image under AddressSanitizer takes seconds. 64x64 keeps
  * OpenImageIO's float buffers (64 KiB) in AddressSanitizer's size classes: larger ones are mapped and unmapped
  * per allocation, and their page faults took most of the image target's time at 256x256. */

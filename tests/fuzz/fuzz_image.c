@@ -1,7 +1,7 @@
 /* fuzz_image.c - libFuzzer target: images: the bytes as an image file read with gimage_read and through the image texture node.
  * The entry point is shared with tests/test_regress.c (fuzz_entry.h); `make fuzz` builds and runs it. */
 /* OpenImageIO's TextureSystem frees its implementation with a sized delete of the wrong size (see
- * lib/image_basic.c); that mismatch is inside the system library, not ours. Allocation stacks by the fast
+ * lib/image/image_basic.c); that mismatch is inside the system library, not ours. Allocation stacks by the fast
  * unwinder (full ones cost 60% of the run), so the suppressions name the frame where it stops. */
 #define GFUZZ_FAST_UNWIND
 #include "fuzz_entry.h"

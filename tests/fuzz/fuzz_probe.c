@@ -3,7 +3,7 @@
 #include "fuzz_entry.h"
 
 /* OpenImageIO's TextureSystem frees its implementation with a sized delete of the wrong size (see
- * lib/texture_oiio.cpp); that mismatch is inside the system library, not ours. */
+ * lib/image/texture_oiio.cpp); that mismatch is inside the system library, not ours. */
 const char *__asan_default_options(void);
 const char *__asan_default_options(void) { return "new_delete_type_mismatch=0"; }
 

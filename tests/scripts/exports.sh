@@ -1,5 +1,5 @@
 #!/bin/sh
-# The shared library exports exactly the public API: the names that include/generic/*.h declares with
+# The shared library exports exactly the public API: the names that the headers of include/generic/ (and its kit/ and services/) declare with
 # GENERIC_API (export.h) against `nm -D --defined-only` of libgeneric.so. Also checks that every function
 # declared at file level in a public header carries GENERIC_API, so a declaration cannot silently miss it.
 set -eu
@@ -14,7 +14,7 @@ trap 'rm -rf "$tmp"' EXIT
 awk '
     /^GENERIC_API[ \t]/ { decl = ""; on = 1 }
     on { decl = decl " " $0; if (index($0, ";")) { on = 0; print decl } }
-' include/generic/*.h | sed 's/__attribute__.*//' | awk '{
+' include/generic/*.h include/generic/*/*.h | sed 's/__attribute__.*//' | awk '{
     d = $0
     p = index(d, "(")
     if (p) d = substr(d, 1, p - 1); else { sub(/[;\[=].*/, "", d) }
@@ -24,7 +24,7 @@ awk '
 
 # Prototypes at file level without the macro: a line that starts with a type and has name( but is not a
 # typedef, a macro, a static inline helper or inside a struct (those lines are indented).
-grep -n -E '^[A-Za-z_][A-Za-z0-9_ \*]*[ \*]g[a-z0-9_]+\(' include/generic/*.h |
+grep -n -E '^[A-Za-z_][A-Za-z0-9_ \*]*[ \*]g[a-z0-9_]+\(' include/generic/*.h include/generic/*/*.h |
     grep -v -E ':(GENERIC_API|typedef|static|#)' > "$tmp/unmarked" || true
 if [ -s "$tmp/unmarked" ]; then
     echo "exports: public declarations without GENERIC_API:"

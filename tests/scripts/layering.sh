@@ -20,7 +20,7 @@ objects() {
     done
 }
 types=$(objects colormodels/*.c materials/*.c materials/*/*.c textures/*.c) || exit 1
-core=$(objects lib/*.c lib/*.cpp lib/*/*.c) || exit 1
+core=$(objects lib/*/*.c lib/*/*.cpp) || exit 1
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 # shellcheck disable=SC2086

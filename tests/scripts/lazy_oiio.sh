@@ -1,5 +1,5 @@
 #!/bin/sh
-# lazy_oiio.sh BUILD - OpenImageIO is mapped only when an image needs it (lib/oiio_module.h):
+# lazy_oiio.sh BUILD - OpenImageIO is mapped only when an image needs it (lib/image/oiio_module.h):
 #   1. gtrace --help, gmat --help, gcolor list and a small render to PNG (libpng) never map libOpenImageIO
 #      (the dynamic loader's own record, LD_DEBUG=files), and the PNG is a valid 8-bit sRGB picture;
 #   2. the same render to EXR does map it (the check above can fail), and reads back;
@@ -84,7 +84,7 @@ make --no-print-directory -s install BUILD="$BUILD" PREFIX=/usr DESTDIR="$stage"
 [ -f "$stage/usr/lib/generic/libgeneric_oiio.so" ] || fail "make install does not install the module"
 cat > "$TMP/x.c" << 'EOF2'
 #include <generic/builtins.h>
-#include <generic/image.h>
+#include <generic/services/image.h>
 #include <stdio.h>
 int main(int argc, char **argv)
 {

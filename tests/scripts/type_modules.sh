@@ -9,7 +9,7 @@
 set -eu
 BUILD=${1:-build}
 inc="$BUILD/plugins/include"
-[ -f "$inc/generic/node_kit.h" ] || { echo "type_modules.sh: $inc is not made (run make all first)" >&2; exit 1; }
+[ -f "$inc/generic/kit/node_kit.h" ] || { echo "type_modules.sh: $inc is not made (run make all first)" >&2; exit 1; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 # the loader is linked outside the build tree, so it is told where the OpenImageIO module is (image textures)

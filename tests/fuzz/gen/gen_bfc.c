@@ -1,4 +1,4 @@
-/* gen_bfc.c - BFC-450 matrices (include/generic/bfc.h) with long tokens, grids far from any colour model's,
+/* gen_bfc.c - BFC-450 matrices (include/generic/services/bfc.h) with long tokens, grids far from any colour model's,
  * grids that claim more rows or columns than the file holds, and rows one value short or long. */
 #include "gen.h"
 

@@ -1,0 +1,396 @@
+/* spectral_kernels8.h - the 8-float (AVX2) versions of the kernels of spectral_kernels.h, for functions compiled
+ * for AVX2 (GSPECTRAL_TARGET_AVX2) and chosen when the library is loaded (GSPECTRAL_PICK). Header only, included
+ * at the end of spectral_kernels.h (include that one); empty where GSPECTRAL_AVX2 is not defined.
+ *
+ * Each gives its 4-float version's results bit for bit: the element-wise ones trivially, the sums because the
+ * 4-float versions already add in two accumulators of alternate blocks (8 lanes) and the 8-float versions add
+ * the blocks into one 8-lane accumulator in the same order and its two halves the same way at the end.
+ *
+ * The whole 8-float blocks of a vector run as straight-line code entered by one jump, for any number of samples
+ * (GSPECTRAL_EACH_BLOCK8, which lib/color/color_shortcuts.c uses too): on a spectrum of tens of samples a loop spent
+ * about a third of a kernel's instructions on its index, compare and branch. The last 1 to 7 samples are done one
+ * by one (the common grids have one: 81, 41, 9), never as an 8-float block that overlaps the whole blocks: a
+ * block load that spans two earlier stores (the overlapping block's and the whole block's) cannot take its data
+ * from the store buffer and waits for both to retire, and colour operations read what the one before just
+ * wrote. So every kernel stores and loads the same pieces: the 8-float blocks at multiples of 8, then single
+ * floats. An element-wise kernel on fewer than 8 samples takes the 4-float version. */
+#ifndef GENERIC_SPECTRAL_KERNELS8_H
+#define GENERIC_SPECTRAL_KERNELS8_H
+
+#include <stddef.h>
+
+#include "spectral_kernels.h"
+
+#ifdef GSPECTRAL_AVX2
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* One case of GSPECTRAL_EACH_BLOCK8's jump: the block k blocks before end, then on to the next one. */
+#define GSPECTRAL_BLOCK8_CASE(k, end, BLOCK)                                                                   \
+    case k:                                                                                                    \
+        BLOCK(end, -8 * (k));                                                                                  \
+        __attribute__((fallthrough));
+
+/* The 16 blocks from sample b on, in order. */
+#define GSPECTRAL_BLOCKS8_16(b, BLOCK)                                                                         \
+    do {                                                                                                       \
+        BLOCK(b, 0);                                                                                           \
+        BLOCK(b, 8);                                                                                           \
+        BLOCK(b, 16);                                                                                          \
+        BLOCK(b, 24);                                                                                          \
+        BLOCK(b, 32);                                                                                          \
+        BLOCK(b, 40);                                                                                          \
+        BLOCK(b, 48);                                                                                          \
+        BLOCK(b, 56);                                                                                          \
+        BLOCK(b, 64);                                                                                          \
+        BLOCK(b, 72);                                                                                          \
+        BLOCK(b, 80);                                                                                          \
+        BLOCK(b, 88);                                                                                          \
+        BLOCK(b, 96);                                                                                          \
+        BLOCK(b, 104);                                                                                         \
+        BLOCK(b, 112);                                                                                         \
+        BLOCK(b, 120);                                                                                         \
+    } while (0)
+
+/** Runs BLOCK(b, k) (a macro) on each whole 8-float block of n >= 0 samples (none for n < 8), in order, so that a
+ * sum over the blocks keeps its order: the block of samples b + k to b + k + 7, b a ptrdiff_t base shared by up to
+ * 16 blocks and k a constant, so that an address written p + b + k (or t + m * b + m * k in a table of m floats a
+ * sample) is a base computed once and a constant offset. All straight-line code: 16 blocks a step while 16 or more
+ * are left (more than 127 samples), then the last 0 to 15 entered by one jump, with b = n & ~7. Constants the
+ * blocks use are best built before and kept in registers (GSPECTRAL_KEEP8): else GCC builds them again in each
+ * block the jump may enter at. */
+#define GSPECTRAL_EACH_BLOCK8(n, BLOCK)                                                                        \
+    do {                                                                                                       \
+        ptrdiff_t gspectral_end_ = (ptrdiff_t)(n) & ~(ptrdiff_t)7, gspectral_i_ = 0;                           \
+        for (; gspectral_i_ + 128 <= gspectral_end_; gspectral_i_ += 128) {                                    \
+            __asm__("" : "+r"(gspectral_i_)); /* one index for all operands, not a pointer each */             \
+            GSPECTRAL_BLOCKS8_16(gspectral_i_, BLOCK);                                                         \
+        }                                                                                                      \
+        /* the blocks' byte offset, computed before the jump (else GCC computes it on each edge of the jump,   \
+         * each then a second jump) */                                                                         \
+        __asm__("" ::"r"((size_t)gspectral_end_ * sizeof(float)));                                             \
+        switch ((gspectral_end_ >> 3) & 15) { /* the blocks the loop left */                                   \
+            GSPECTRAL_BLOCK8_CASE(15, gspectral_end_, BLOCK)                                                   \
+            GSPECTRAL_BLOCK8_CASE(14, gspectral_end_, BLOCK)                                                   \
+            GSPECTRAL_BLOCK8_CASE(13, gspectral_end_, BLOCK)                                                   \
+            GSPECTRAL_BLOCK8_CASE(12, gspectral_end_, BLOCK)                                                   \
+            GSPECTRAL_BLOCK8_CASE(11, gspectral_end_, BLOCK)                                                   \
+            GSPECTRAL_BLOCK8_CASE(10, gspectral_end_, BLOCK)                                                   \
+            GSPECTRAL_BLOCK8_CASE(9, gspectral_end_, BLOCK)                                                    \
+            GSPECTRAL_BLOCK8_CASE(8, gspectral_end_, BLOCK)                                                    \
+            GSPECTRAL_BLOCK8_CASE(7, gspectral_end_, BLOCK)                                                    \
+            GSPECTRAL_BLOCK8_CASE(6, gspectral_end_, BLOCK)                                                    \
+            GSPECTRAL_BLOCK8_CASE(5, gspectral_end_, BLOCK)                                                    \
+            GSPECTRAL_BLOCK8_CASE(4, gspectral_end_, BLOCK)                                                    \
+            GSPECTRAL_BLOCK8_CASE(3, gspectral_end_, BLOCK)                                                    \
+            GSPECTRAL_BLOCK8_CASE(2, gspectral_end_, BLOCK)                                                    \
+        case 1:                                                                                                \
+            BLOCK(gspectral_end_, -8);                                                                         \
+            break;                                                                                             \
+        default: /* none */                                                                                    \
+            break;                                                                                             \
+        }                                                                                                      \
+    } while (0)
+
+/** A loop over the samples after GSPECTRAL_EACH_BLOCK8's whole blocks (ptrdiff_t i from n & ~7 to n - 1), as
+ * the head of the statement that follows: the tail every kernel does one sample at a time. */
+#define GSPECTRAL_TAIL8(n, i) for (ptrdiff_t i = (ptrdiff_t)(n) & ~(ptrdiff_t)7; i < (ptrdiff_t)(n); i++)
+
+/** CALL(n) with n a constant when it is one of the common grids' lengths (81: 380..780 nm every 5 nm, 41: every
+ * 10 nm, 9: spectrum9), else CALL(n) as it is: with the kernels inlined, a constant length folds
+ * GSPECTRAL_EACH_BLOCK8's jump away into straight-line code (spectrum's render: 0.97x the instructions), for any
+ * model on those grids. The same kernels either way, so the same results bit for bit. */
+#define GSPECTRAL_ON_COMMON_LENGTH(n, CALL)                                                                    \
+    ((n) == 81 ? CALL(81) : (n) == 41 ? CALL(41) : (n) == 9 ? CALL(9) : CALL(n))
+
+/** Keeps the vector v in a register from here on (an empty asm that may change it): a constant that every block
+ * of GSPECTRAL_EACH_BLOCK8 uses is then built once before the jump, not in each block. */
+#define GSPECTRAL_KEEP8(v) __asm__("" : "+x"(v))
+
+/** x op y on 8 lanes. */
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 gspectral_v8 gspectral_vop8(GSpectralOp op,
+                                                                                             gspectral_v8 x,
+                                                                                             gspectral_v8 y)
+{
+    return op == GSPECTRAL_ADD ? x + y : x * y;
+}
+
+/** gspectral_kmap on 8-float vectors. */
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectral_kmap8(GSpectralOp op, float *o,
+                                                                                        const float *a,
+                                                                                        const float *b, int n)
+{
+    if (n < 8) {
+        gspectral_kmap(op, o, a, b, n);
+        return;
+    }
+#define GSPECTRAL_MAP8_BLOCK(i, k)                                                                             \
+    gspectral_vstore8(o + (i) + (k),                                                                           \
+                      gspectral_vop8(op, gspectral_vload8(a + (i) + (k)), gspectral_vload8(b + (i) + (k))))
+    GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_MAP8_BLOCK);
+#undef GSPECTRAL_MAP8_BLOCK
+    GSPECTRAL_TAIL8(n, i)
+        o[i] = op == GSPECTRAL_ADD ? a[i] + b[i] : a[i] * b[i];
+}
+
+/** gspectral_kscale on 8-float vectors. */
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectral_kscale8(float *o, const float *a,
+                                                                                          float s, int n)
+{
+    if (n < 8) {
+        gspectral_kscale(o, a, s, n);
+        return;
+    }
+    gspectral_v8 sv = {s, s, s, s, s, s, s, s};
+    GSPECTRAL_KEEP8(sv);
+#define GSPECTRAL_SCALE8_BLOCK(i, k) gspectral_vstore8(o + (i) + (k), gspectral_vload8(a + (i) + (k)) * sv)
+    GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_SCALE8_BLOCK);
+#undef GSPECTRAL_SCALE8_BLOCK
+    GSPECTRAL_TAIL8(n, i)
+        o[i] = a[i] * s;
+}
+
+/** gspectral_vdiv on 8 lanes: a / b, 0 where b is 0 (those lanes divide by 1 and are cleared); zero and one hold
+ * 0 and 1 in every lane. */
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 gspectral_v8
+gspectral_vdiv8(gspectral_v8 a, gspectral_v8 b, gspectral_v8 zero, gspectral_v8 one)
+{
+    gspectral_v8i nz = b != zero;
+    gspectral_v8 safe = (gspectral_v8)(((gspectral_v8i)b & nz) | ((gspectral_v8i)one & ~nz));
+    return (gspectral_v8)((gspectral_v8i)(a / safe) & nz);
+}
+
+/** gspectral_kdiv on 8-float vectors. */
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectral_kdiv8(float *o, const float *a,
+                                                                                        const float *b, int n)
+{
+    if (n < 8) {
+        gspectral_kdiv(o, a, b, n);
+        return;
+    }
+    gspectral_v8 zero = {0, 0, 0, 0, 0, 0, 0, 0}, one = {1, 1, 1, 1, 1, 1, 1, 1};
+    GSPECTRAL_KEEP8(zero);
+    GSPECTRAL_KEEP8(one);
+#define GSPECTRAL_DIV8_BLOCK(i, k)                                                                             \
+    gspectral_vstore8(o + (i) + (k),                                                                           \
+                      gspectral_vdiv8(gspectral_vload8(a + (i) + (k)), gspectral_vload8(b + (i) + (k)), zero, one))
+    GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_DIV8_BLOCK);
+#undef GSPECTRAL_DIV8_BLOCK
+    GSPECTRAL_TAIL8(n, i)
+        o[i] = b[i] != 0.0f ? a[i] / b[i] : 0.0f;
+}
+
+/** gspectral_kfill on 8-float vectors. */
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectral_kfill8(float *o, float value,
+                                                                                         int n)
+{
+    if (n < 8) {
+        gspectral_kfill(o, value, n);
+        return;
+    }
+    gspectral_v8 v = {value, value, value, value, value, value, value, value};
+    GSPECTRAL_KEEP8(v);
+#define GSPECTRAL_FILL8_BLOCK(i, k) gspectral_vstore8(o + (i) + (k), v)
+    GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_FILL8_BLOCK);
+#undef GSPECTRAL_FILL8_BLOCK
+    GSPECTRAL_TAIL8(n, i)
+        o[i] = value;
+}
+
+/** o = a, n >= 0 floats, in the pieces every kernel here uses (libc's memcpy stores blocks that straddle them,
+ * and the next kernel's loads would wait for those stores to retire); o and a do not overlap. */
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectral_kcopy8(float *o, const float *a,
+                                                                                         int n)
+{
+#define GSPECTRAL_COPY8_BLOCK(i, k) gspectral_vstore8(o + (i) + (k), gspectral_vload8(a + (i) + (k)))
+    GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_COPY8_BLOCK);
+#undef GSPECTRAL_COPY8_BLOCK
+    GSPECTRAL_TAIL8(n, i)
+        o[i] = a[i];
+}
+
+/** gspectral_kaxpyd's 8 results at a and b: each product in double (two 4-double halves), rounded to float, then
+ * the float sum. */
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 __m256 gspectral_vaxpyd8(__m256d sv,
+                                                                                           const float *a,
+                                                                                           const float *b)
+{
+    __m128 q0 = _mm256_cvtpd_ps(_mm256_mul_pd(_mm256_cvtps_pd(_mm_loadu_ps(a)), sv));
+    __m128 q1 = _mm256_cvtpd_ps(_mm256_mul_pd(_mm256_cvtps_pd(_mm_loadu_ps(a + 4)), sv));
+    return _mm256_add_ps(_mm256_loadu_ps(b), _mm256_insertf128_ps(_mm256_castps128_ps256(q0), q1, 1));
+}
+
+/** gspectral_kaxpyd on 8-float vectors. When s is a float (it converts to float and back unchanged), each product
+ * is taken in float: a float times a float is exact in double, so its rounding to float is the float product, the
+ * same bits at a third of the instructions. */
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectral_kaxpyd8(float *o, double s,
+                                                                                          const float *a,
+                                                                                          const float *b, int n)
+{
+    if (n < 8) {
+        gspectral_kaxpyd(o, s, a, b, n);
+        return;
+    }
+    const float sf = (float)s;
+    if ((double)sf == s) {
+        gspectral_v8 sv = {sf, sf, sf, sf, sf, sf, sf, sf};
+        GSPECTRAL_KEEP8(sv);
+#define GSPECTRAL_AXPYF8_BLOCK(i, k)                                                                           \
+    gspectral_vstore8(o + (i) + (k), gspectral_vload8(b + (i) + (k)) + gspectral_vload8(a + (i) + (k)) * sv)
+        GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_AXPYF8_BLOCK);
+#undef GSPECTRAL_AXPYF8_BLOCK
+        GSPECTRAL_TAIL8(n, i)
+            o[i] = b[i] + a[i] * sf;
+        return;
+    }
+    const __m256d sv = _mm256_set1_pd(s);
+#define GSPECTRAL_AXPYD8_BLOCK(i, k)                                                                           \
+    _mm256_storeu_ps(o + (i) + (k), gspectral_vaxpyd8(sv, a + (i) + (k), b + (i) + (k)))
+    GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_AXPYD8_BLOCK);
+#undef GSPECTRAL_AXPYD8_BLOCK
+    GSPECTRAL_TAIL8(n, i)
+        o[i] = b[i] + (float)(a[i] * s);
+}
+
+/** 0x7fffffff in each of 8 lanes: the initializer of the mask of gspectral_vterm8_mask, which clears sign bits. */
+#define GSPECTRAL_ABS8                                                                                         \
+    {0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff, 0x7fffffff}
+
+/** The terms t of a and b on 8 lanes, |x| as x & abs (abs = GSPECTRAL_ABS8). */
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 gspectral_v8
+gspectral_vterm8_mask(GSpectralTerm t, gspectral_v8 a, gspectral_v8 b, gspectral_v8i abs)
+{
+    return t == GSPECTRAL_ABS ? (gspectral_v8)((gspectral_v8i)a & abs)
+           : t == GSPECTRAL_DOT ? a * b
+                                : a * (gspectral_v8)((gspectral_v8i)b & abs);
+}
+
+/** gspectral_vsum on 8-float vectors: the terms of the whole blocks added block after block into 8 lanes, folded
+ * to the 4 lanes the 4-float version's two accumulators give. */
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 gspectral_v4
+gspectral_vsum8(GSpectralTerm t, const float *a, const float *b, int n, int *done)
+{
+    gspectral_v8 acc = {0, 0, 0, 0, 0, 0, 0, 0};
+    gspectral_v8i abs = GSPECTRAL_ABS8;
+    GSPECTRAL_KEEP8(acc);
+    GSPECTRAL_KEEP8(abs);
+    const int end = n >= 8 ? n & ~7 : 0; /* the samples in whole blocks */
+#define GSPECTRAL_SUM8_BLOCK(i, k)                                                                             \
+    acc += gspectral_vterm8_mask(t, gspectral_vload8(a + (i) + (k)), gspectral_vload8(b + (i) + (k)), abs)
+    if (end)
+        GSPECTRAL_EACH_BLOCK8(end, GSPECTRAL_SUM8_BLOCK);
+#undef GSPECTRAL_SUM8_BLOCK
+    *done = end;
+    return gspectral_vfold8(acc);
+}
+
+/** gspectral_ksum on 8-float vectors (equal bit for bit). */
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 float gspectral_ksum8(GSpectralTerm t,
+                                                                                        const float *a,
+                                                                                        const float *b, int n)
+{
+    if (n < 8)
+        return gspectral_ksum(t, a, b, n);
+    int i;
+    gspectral_v4 acc = gspectral_vsum8(t, a, b, n, &i);
+    float s = (acc[0] + acc[1]) + (acc[2] + acc[3]);
+    for (; i < n; i++)
+        s += gspectral_term(t, a[i], b[i]);
+    return s;
+}
+
+/** gspectral_kbright on 8-float vectors (equal bit for bit). */
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 double gspectral_kbright8(const float *w,
+                                                                                           const float *a, int n)
+{
+    if (n < 8)
+        return gspectral_kbright(w, a, n);
+    int i;
+    gspectral_v4 acc = gspectral_vsum8(GSPECTRAL_WABS, w, a, n, &i);
+    double s = (double)acc[0] + acc[1] + acc[2] + acc[3];
+    for (; i < n; i++)
+        s += w[i] * fabsf(a[i]);
+    return s;
+}
+
+/** gspectral_kfinite on 8-float vectors: the whole blocks, then the last samples one by one. */
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 int gspectral_kfinite8(const float *a, int n,
+                                                                                         int nonnegative)
+{
+    if (n < 8)
+        return gspectral_kfinite(a, n, nonnegative);
+    /* x - x is 0 for a finite x and NaN otherwise, and a NaN stays in the sum; neg collects x < 0 per lane */
+    gspectral_v8 zero = {0, 0, 0, 0, 0, 0, 0, 0}, acc = zero;
+    gspectral_v8i neg = {0, 0, 0, 0, 0, 0, 0, 0};
+    GSPECTRAL_KEEP8(zero);
+    GSPECTRAL_KEEP8(acc);
+    GSPECTRAL_KEEP8(neg);
+#define GSPECTRAL_FINITE8_BLOCK(i, k)                                                                          \
+    do {                                                                                                       \
+        gspectral_v8 x_ = gspectral_vload8(a + (i) + (k));                                                     \
+        acc += x_ - x_;                                                                                        \
+        if (nonnegative)                                                                                       \
+            neg |= x_ < zero;                                                                                  \
+    } while (0)
+    GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_FINITE8_BLOCK);
+#undef GSPECTRAL_FINITE8_BLOCK
+    float tail = 0.0f;
+    int tail_neg = 0;
+    GSPECTRAL_TAIL8(n, i)
+    {
+        tail += a[i] - a[i];
+        tail_neg |= a[i] < 0.0f;
+    }
+    gspectral_v8i bad = acc != zero;
+    if (nonnegative)
+        bad |= neg;
+    return _mm256_movemask_ps((__m256)bad) == 0 && tail == 0.0f && !(nonnegative && tail_neg);
+}
+
+/** gspectral_kxyz on 8-float vectors (equal bit for bit): per coordinate the blocks' products added block after
+ * block into 8 lanes, the last 1 to 7 samples in a float sum (as gspectral_kxyz_tail), the lanes' halves added,
+ * then in double the 4 lanes in pairs and that sum. */
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectral_kxyz8(const float *t,
+                                                                                        const float *a, int n,
+                                                                                        double xyz[3])
+{
+    gspectral_v8 x = {0, 0, 0, 0, 0, 0, 0, 0}, y = x, z = x;
+    GSPECTRAL_KEEP8(x);
+    GSPECTRAL_KEEP8(y);
+    GSPECTRAL_KEEP8(z);
+    const ptrdiff_t end = n >= 8 ? n & ~7 : 0; /* the samples in whole blocks */
+    const float *te = t + 3 * end;             /* the table's block after them (the last samples' weights) */
+#define GSPECTRAL_XYZ8_BLOCK(i, k)                                                                             \
+    do {                                                                                                       \
+        const float *b_ = te + 3 * ((i) - end) + 3 * (k);                                                      \
+        gspectral_v8 v_ = gspectral_vload8(a + (i) + (k));                                                     \
+        x += v_ * gspectral_vload8(b_);                                                                        \
+        y += v_ * gspectral_vload8(b_ + 8);                                                                    \
+        z += v_ * gspectral_vload8(b_ + 16);                                                                   \
+    } while (0)
+    if (end)
+        GSPECTRAL_EACH_BLOCK8(end, GSPECTRAL_XYZ8_BLOCK);
+#undef GSPECTRAL_XYZ8_BLOCK
+    float tail[3] = {0.0f, 0.0f, 0.0f};
+    for (ptrdiff_t k = 0; k < n - end; k++) { /* as gspectral_kxyz_tail: sample end + k, lane k of block te */
+        tail[0] += a[end + k] * te[k];
+        tail[1] += a[end + k] * te[k + 8];
+        tail[2] += a[end + k] * te[k + 16];
+    }
+    /* the lanes in double: hadd gives (l0 + l1) in the low half and (l2 + l3) in the high one, per coordinate */
+    __m256d dx = _mm256_cvtps_pd((__m128)gspectral_vfold8(x)), dy = _mm256_cvtps_pd((__m128)gspectral_vfold8(y));
+    __m256d dz = _mm256_cvtps_pd((__m128)gspectral_vfold8(z));
+    __m256d xy = _mm256_hadd_pd(dx, dy), zz = _mm256_hadd_pd(dz, dz); /* x01 y01 x23 y23, z01 z01 z23 z23 */
+    __m128d sxy = _mm_add_pd(_mm256_castpd256_pd128(xy), _mm256_extractf128_pd(xy, 1));
+    __m128d sz = _mm_add_sd(_mm256_castpd256_pd128(zz), _mm256_extractf128_pd(zz, 1));
+    __m128d txy = _mm_cvtps_pd(_mm_setr_ps(tail[0], tail[1], 0.0f, 0.0f));
+    _mm_storeu_pd(xyz, _mm_add_pd(sxy, txy));
+    xyz[2] = _mm_cvtsd_f64(sz) + (double)tail[2];
+}
+
+#ifdef __cplusplus
+}
+#endif
+#endif
+#endif

@@ -1,0 +1,60 @@
+/* texsys.h - texture systems (OpenImageIO's TextureSystem behind lib/image/texture_oiio.cpp): reference-counted
+ * systems shared by the image nodes of a scene, opened files and filtered lookups. */
+#ifndef GENERIC_TEXSYS_H
+#define GENERIC_TEXSYS_H
+
+#include "../export.h"
+#include "../error.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** A texture system: OpenImageIO's TextureSystem with its tile cache, shared by the image nodes of a scene.
+ * Thread safe; reference counted. */
+typedef struct GTextureSystem GTextureSystem;
+
+/** Creates a texture system (MIP maps made on the fly for files that have none). */
+GENERIC_API GENERIC_NODISCARD int gtexsys_create(GTextureSystem **out, GError *err);
+/** Adds an owner; returns ts. */
+GENERIC_API GTextureSystem *gtexsys_ref(GTextureSystem *ts);
+/** Drops an owner; the last frees the system and its cache. NULL is a no-op. */
+GENERIC_API void gtexsys_unref(GTextureSystem *ts);
+/** The process's default texture system, created on first use and freed when its last owner lets go;
+ * returns a new reference (or NULL with err filled). Image nodes created without a system use it. */
+GENERIC_API GTextureSystem *gtexsys_default(GError *err);
+
+/** How lookups outside [0, 1] behave. */
+typedef enum GTexWrap {
+    GTEX_WRAP_PERIODIC = 0, /**< repeat */
+    GTEX_WRAP_CLAMP,        /**< the edge texels continue */
+    GTEX_WRAP_BLACK,        /**< black outside */
+    GTEX_WRAP_MIRROR        /**< repeat mirrored */
+} GTexWrap;
+
+/** How stored values relate to linear values. */
+typedef enum GTexColorSpace {
+    GTEX_COLORSPACE_AUTO = 0, /**< sRGB for 8- and 16-bit files that say sRGB (PNG, JPEG), linear otherwise */
+    GTEX_COLORSPACE_SRGB,     /**< decode the sRGB curve */
+    GTEX_COLORSPACE_LINEAR    /**< values are linear */
+} GTexColorSpace;
+
+
+/** An opened texture file (OpenImageIO's TextureHandle), valid while its texture system lives. */
+typedef struct GTexFile GTexFile;
+
+/** Opens (and checks) a texture file: G_ERR_IO with OpenImageIO's reason when it is missing or cannot be
+ * decoded. *srgb is 1 for integer data not marked linear (8-bit PNG/JPEG), 0 for float data. */
+GENERIC_API GENERIC_NODISCARD int gtexsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *channels, int *srgb, GError *err);
+
+/** A filtered lookup of 3 channels (grey files are replicated) at (s, t) (t = 0 at the top row) over the
+ * footprint spanned by the two axes (dsdx, dtdx) and (dsdy, dtdy) (full widths in s, t units; all 0 = the
+ * finest level), anisotropic with trilinear MIP-mapping, and the wrap modes; G_ERR_IO when OpenImageIO fails
+ * (rgb is then black). An isotropic width w is (w, 0, 0, w). Thread safe. */
+GENERIC_API GENERIC_NODISCARD int gtexsys_lookup(GTextureSystem *ts, GTexFile *file, GTexWrap swrap, GTexWrap twrap, double s, double t,
+                   const double deriv[4], double blur, float rgb[3]);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,585 @@
+/* color.c - colour model creation, value storage, and dispatch of the generic colour operations. */
+#include "generic/color.h"
+#include "generic/registry.h"
+#include "generic/kit/spectral_kernels.h"
+#include "generic/kit/spectral.h"
+
+#include <limits.h>
+#include <math.h>
+#include <pthread.h>
+#include <string.h>
+
+int gcolormodel_create_class(const GColorModelClass *cls, const GColorModelOptions *opt, GColorModel **out,
+                             GError *err)
+{
+    *out = NULL;
+    if (!cls)
+        return gerror_set(err, G_ERR_INVALID, "no colour model class given");
+    if (cls->abi_version != GCOLOR_ABI_VERSION)
+        return gerror_set(err, G_ERR_VERSION, "colour model '%s' has interface version %d, the library has %d",
+                          cls->name ? cls->name : "?", cls->abi_version, GCOLOR_ABI_VERSION);
+    if (!cls->init || !cls->black || !cls->add || !cls->mul || !cls->scale || !cls->div || !cls->pow ||
+        !cls->brightness || !cls->to_nm || !cls->from_nm)
+        return gerror_set(err, G_ERR_INVALID, "colour model '%s' lacks a required operation", cls->name);
+    GColorModelOptions none = {0, 0, 0};
+    if (!opt)
+        opt = &none;
+    if (!isfinite(opt->step_nm) || !isfinite(opt->min_nm) || !isfinite(opt->max_nm) || opt->step_nm < 0)
+        return gerror_set(err, G_ERR_INVALID, "colour model '%s': options must be finite and non-negative", cls->name);
+    GColorModel *m = gmem_calloc(1, sizeof *m);
+    if (!m)
+        return gerror_set(err, G_ERR_NOMEM, "out of memory creating colour model '%s'", cls->name);
+    m->cls = cls;
+    int rc = cls->init(m, opt, err);
+    if (rc == G_OK && (m->nvalues <= 0 || m->capacity < m->nvalues))
+        rc = gerror_set(err, G_ERR_INVALID, "colour model '%s' reported invalid sizes", cls->name);
+    if (rc != G_OK) {
+        if (cls->fini)
+            cls->fini(m);
+        gmem_free(m);
+        return rc;
+    }
+    *out = m;
+    return G_OK;
+}
+
+int gcolormodel_create(const char *name, const GColorModelOptions *opt, GColorModel **out, GError *err)
+{
+    *out = NULL;
+    const GTypeInfo *t = gregistry_find(GKIND_COLORMODEL, name ? name : "");
+    if (!t) {
+        char names[256];
+        gregistry_names(GKIND_COLORMODEL, names, sizeof names);
+        return gerror_set(err, G_ERR_NOTFOUND, "unknown colour model '%s' (known: %s)", name ? name : "", names);
+    }
+    return gcolormodel_create_class(t->vtable, opt, out, err);
+}
+
+void gcolormodel_destroy(GColorModel *m)
+{
+    if (!m)
+        return;
+    if (m->cls->fini)
+        m->cls->fini(m);
+    gmem_free(m);
+}
+
+const char *gcolormodel_name(const GColorModel *m) { return m ? m->cls->name : "(none)"; }
+
+/* ---- storage ---- */
+
+static void clear(GColor *c)
+{
+    *c = (GColor){.model = NULL, .v = NULL, .kind = GCOLOR_VECTOR, .storage = GCOLOR_STORAGE_NONE, .capacity = 0};
+}
+
+/* Points c at v (at least m->capacity floats), its values as they are. */
+static void attach_uncleared(GColor *c, const GColorModel *m, float *v, GColorStorage storage, int capacity)
+{
+    *c = (GColor){.model = m, .v = v, .kind = GCOLOR_VECTOR, .storage = storage, .capacity = capacity};
+}
+
+/* Points c at v (at least m->capacity floats) and sets it to black. */
+static void attach(GColor *c, const GColorModel *m, float *v, GColorStorage storage, int capacity)
+{
+    attach_uncleared(c, m, v, storage, capacity);
+    m->cls->black(m, c);
+}
+
+int gcolor_wrap(GColor *c, const GColorModel *m, float *storage, size_t nfloats)
+{
+    if (!storage || nfloats < (size_t)m->capacity) {
+        clear(c);
+        return G_ERR_INVALID;
+    }
+    attach(c, m, storage, GCOLOR_STORAGE_CALLER, nfloats > INT_MAX ? INT_MAX : (int)nfloats);
+    return G_OK;
+}
+
+int gcolor_scratch_uncleared(GColor *c, const GColorModel *m, GScratch *s)
+{
+    float *v = gscratch_alloc(s, (size_t)m->capacity * sizeof(float));
+    if (!v) {
+        clear(c);
+        return G_ERR_NOMEM;
+    }
+    attach_uncleared(c, m, v, GCOLOR_STORAGE_ARENA, m->capacity);
+#ifdef __SANITIZE_ADDRESS__
+    /* sanitizer builds: a NaN in every value, so that a caller that reads before writing makes non-finite results
+     * (which renders count and tests see) instead of quietly reusing old values, which no sanitizer reports */
+    for (int i = 0; i < m->capacity; i++)
+        v[i] = NAN;
+#endif
+    return G_OK;
+}
+
+int gcolor_scratch(GColor *c, const GColorModel *m, GScratch *s)
+{
+    int rc = gcolor_scratch_uncleared(c, m, s);
+    if (rc == G_OK)
+        m->cls->black(m, c);
+    return rc;
+}
+
+int gcolor_alloc(GColor *c, const GColorModel *m)
+{
+    float *v = gmem_calloc((size_t)m->capacity, sizeof(float));
+    if (!v) {
+        clear(c);
+        return G_ERR_NOMEM;
+    }
+    attach(c, m, v, GCOLOR_STORAGE_HEAP, m->capacity);
+    return G_OK;
+}
+
+void gcolor_free(GColor *c)
+{
+    if (!c)
+        return;
+    if (c->storage == GCOLOR_STORAGE_HEAP)
+        gmem_free(c->v);
+    clear(c);
+}
+
+static size_t value_floats(const GColor *c)
+{
+    return (size_t)(c->kind == GCOLOR_MATRIX ? c->model->capacity : c->model->nvalues);
+}
+
+/* ---- operations ---- */
+
+void gcolor_black(GColor *c) { c->model->cls->black(c->model, c); }
+
+int gcolor_add(GColor *out, const GColor *a, const GColor *b)
+{
+    if (a->model != b->model || out->model != a->model)
+        return G_ERR_MISMATCH;
+    return a->model->cls->add(a->model, out, a, b);
+}
+
+int gcolor_mul(GColor *out, const GColor *a, const GColor *b)
+{
+    if (a->model != b->model || out->model != a->model)
+        return G_ERR_MISMATCH;
+    return a->model->cls->mul(a->model, out, a, b);
+}
+
+int gcolor_scale(GColor *out, const GColor *a, double s)
+{
+    if (out->model != a->model)
+        return G_ERR_MISMATCH;
+    return a->model->cls->scale(a->model, out, a, s);
+}
+
+int gcolor_div(GColor *out, const GColor *a, const GColor *b)
+{
+    if (a->model != b->model || out->model != a->model)
+        return G_ERR_MISMATCH;
+    return a->model->cls->div(a->model, out, a, b);
+}
+
+int gcolor_pow(GColor *out, const GColor *a, double e)
+{
+    if (out->model != a->model)
+        return G_ERR_MISMATCH;
+    return a->model->cls->pow(a->model, out, a, e);
+}
+
+double gcolor_brightness(const GColor *c) { return c->model->cls->brightness(c->model, c); }
+
+/* out = s * a + b through the class's scale and add; a temporary holds s * a because out may alias b. */
+static int axpy_composed(const GColorModel *m, GColor *out, double s, const GColor *a, const GColor *b)
+{
+    if (out->v != b->v) {
+        int rc = m->cls->scale(m, out, a, s);
+        return rc ? rc : m->cls->add(m, out, out, b);
+    }
+    GScratch *arena = gscratch_thread();
+    if (!arena)
+        return G_ERR_NOMEM;
+    GScratchMark mark = gscratch_mark(arena);
+    GColor tmp;
+    int rc = gcolor_scratch(&tmp, m, arena);
+    if (rc == G_OK)
+        rc = m->cls->scale(m, &tmp, a, s);
+    if (rc == G_OK)
+        rc = m->cls->add(m, out, &tmp, b);
+    gscratch_release(arena, mark);
+    return rc;
+}
+
+/* gcolor_axpy, gcolor_fill and the finiteness tests have two bodies as the kit's operations do (lib/color/spectral.c):
+ * on 4-float vectors and, compiled for AVX2, on 8-float vectors, with the same results. */
+
+/* The body of gcolor_axpy around its kernel (a macro, so that each body inlines its own kernel). */
+#define AXPY_BODY(kernel)                                                                                      \
+    do {                                                                                                       \
+        if (a->model != b->model || out->model != a->model)                                                    \
+            return G_ERR_MISMATCH;                                                                             \
+        const GColorModel *m = a->model;                                                                       \
+        if (m->cls->axpy)                                                                                      \
+            return m->cls->axpy(m, out, s, a, b);                                                              \
+        if (a->kind != GCOLOR_VECTOR || b->kind != GCOLOR_VECTOR)                                              \
+            return axpy_composed(m, out, s, a, b);                                                             \
+        kernel(out->v, s, a->v, b->v, m->nvalues);                                                             \
+        out->kind = GCOLOR_VECTOR;                                                                             \
+        return G_OK;                                                                                           \
+    } while (0)
+
+static int gcolor_axpy_v4(GColor *out, double s, const GColor *a, const GColor *b) { AXPY_BODY(gspectral_kaxpyd); }
+
+/* The body of gcolor_copy around its copy of n floats (as AXPY_BODY). */
+#define COPY_BODY(copy)                                                                                        \
+    do {                                                                                                       \
+        if (!dst->model || dst->model != src->model)                                                           \
+            return G_ERR_MISMATCH;                                                                             \
+        if (dst->v != src->v)                                                                                  \
+            copy(dst->v, src->v, value_floats(src));                                                           \
+        dst->kind = src->kind;                                                                                 \
+        return G_OK;                                                                                           \
+    } while (0)
+
+#define COPY_MEMCPY(o, a, n) memcpy(o, a, (n) * sizeof(float))
+static int gcolor_copy_v4(GColor *dst, const GColor *src) { COPY_BODY(COPY_MEMCPY); }
+#undef COPY_MEMCPY
+
+int gcolor_add_scaled(GColor *out, const GColor *a, double s) { return gcolor_axpy(out, s, a, out); }
+
+/* The body of gcolor_fill around its kernel (as AXPY_BODY). */
+#define FILL_BODY(kernel)                                                                                      \
+    do {                                                                                                       \
+        if (!isfinite(value))                                                                                  \
+            return G_ERR_INVALID;                                                                              \
+        const GColorModel *m = out->model;                                                                     \
+        if (m->cls->fill)                                                                                      \
+            return m->cls->fill(m, out, value);                                                                \
+        kernel(out->v, (float)value, m->nvalues);                                                              \
+        out->kind = GCOLOR_VECTOR;                                                                             \
+        return G_OK;                                                                                           \
+    } while (0)
+
+static int gcolor_fill_v4(GColor *out, double value) { FILL_BODY(gspectral_kfill); }
+
+int gcolor_exp(GColor *out, const GColor *a, double s)
+{
+    if (out->model != a->model)
+        return G_ERR_MISMATCH;
+    const GColorModel *m = a->model;
+    if (m->cls->exp_scaled)
+        return m->cls->exp_scaled(m, out, a, s);
+    if (a->kind != GCOLOR_VECTOR)
+        return G_ERR_UNSUPPORTED;
+    for (int i = 0; i < m->nvalues; i++)
+        out->v[i] = (float)exp(s * a->v[i]);
+    out->kind = GCOLOR_VECTOR;
+    return G_OK;
+}
+
+static int gcolor_is_finite_v4(const GColor *c) { return gspectral_kfinite(c->v, (int)value_floats(c), 0); }
+
+static int gcolor_is_nonnegative_v4(const GColor *c) { return gspectral_kfinite(c->v, (int)value_floats(c), 1); }
+
+#ifdef GSPECTRAL_AVX2
+static GSPECTRAL_TARGET_AVX2 int gcolor_axpy_v8(GColor *out, double s, const GColor *a, const GColor *b)
+{
+    AXPY_BODY(gspectral_kaxpyd8);
+}
+
+static GSPECTRAL_TARGET_AVX2 int gcolor_fill_v8(GColor *out, double value) { FILL_BODY(gspectral_kfill8); }
+
+/* from 8 floats on, the 8-float blocks the kernels load (spectral_kernels8.h), not libc's pieces; fewer (rgb's 3)
+ * as memcpy stores them, which is how the models of so few values read them back */
+#define COPY_KERNEL(o, a, n) ((n) < 8 ? (void)memcpy(o, a, (n) * sizeof(float)) : gspectral_kcopy8(o, a, (int)(n)))
+static GSPECTRAL_TARGET_AVX2 int gcolor_copy_v8(GColor *dst, const GColor *src) { COPY_BODY(COPY_KERNEL); }
+#undef COPY_KERNEL
+
+static GSPECTRAL_TARGET_AVX2 int gcolor_is_finite_v8(const GColor *c)
+{
+    return gspectral_kfinite8(c->v, (int)value_floats(c), 0);
+}
+
+static GSPECTRAL_TARGET_AVX2 int gcolor_is_nonnegative_v8(const GColor *c)
+{
+    return gspectral_kfinite8(c->v, (int)value_floats(c), 1);
+}
+
+GSPECTRAL_PICK(gcolor_axpy);
+GSPECTRAL_PICK(gcolor_fill);
+GSPECTRAL_PICK(gcolor_copy);
+GSPECTRAL_PICK(gcolor_is_finite);
+GSPECTRAL_PICK(gcolor_is_nonnegative);
+#else
+int gcolor_axpy(GColor *out, double s, const GColor *a, const GColor *b) { return gcolor_axpy_v4(out, s, a, b); }
+
+int gcolor_fill(GColor *out, double value) { return gcolor_fill_v4(out, value); }
+
+int gcolor_copy(GColor *dst, const GColor *src) { return gcolor_copy_v4(dst, src); }
+
+int gcolor_is_finite(const GColor *c) { return gcolor_is_finite_v4(c); }
+
+int gcolor_is_nonnegative(const GColor *c) { return gcolor_is_nonnegative_v4(c); }
+#endif
+
+/* ---- conversions ---- */
+
+int gcolor_to_nm(const GColor *c, GColorRole role, GSpectrumNM *out)
+{
+    return c->model->cls->to_nm(c->model, c, role, out);
+}
+
+int gcolor_from_nm(GColor *c, const GSpectrumNM *in, GColorRole role)
+{
+    for (int i = 0; i < GNM_COUNT; i++)
+        if (!isfinite(in->v[i]))
+            return G_ERR_INVALID;
+    return c->model->cls->from_nm(c->model, in, role, c);
+}
+
+int gcolormodel_xyz_shows_nonfinite(const GColorModel *m) { return m && m->cls->to_xyz == gspectral_to_xyz; }
+
+int gcolor_to_xyz(const GColor *c, GColorRole role, double xyz[3])
+{
+    if (c->model->cls->to_xyz)
+        return c->model->cls->to_xyz(c->model, c, role, xyz);
+    GSpectrumNM s;
+    int rc = gcolor_to_nm(c, role, &s);
+    if (rc == G_OK)
+        gcie_nm_to_xyz(&s, role, xyz);
+    return rc;
+}
+
+int gcolor_to_rgb(const GColor *c, GColorRole role, double rgb[3])
+{
+    double xyz[3];
+    int rc = gcolor_to_xyz(c, role, xyz);
+    if (rc == G_OK)
+        gcie_xyz_to_rgb(xyz, rgb);
+    return rc;
+}
+
+int gcolor_from_rgb(GColor *c, const double rgb[3], GColorRole role)
+{
+    if (!isfinite(rgb[0]) || !isfinite(rgb[1]) || !isfinite(rgb[2]))
+        return G_ERR_INVALID;
+    if (c->model->cls->from_rgb)
+        return c->model->cls->from_rgb(c->model, rgb, role, c);
+    GSpectrumNM s;
+    gcie_rgb_to_nm(rgb, role, &s);
+    return c->model->cls->from_nm(c->model, &s, role, c);
+}
+
+/* A matrix whose emission or excitation wavelengths all lie outside the model's range (a spectral model's
+ * samples, else the exchange grid GNM_MIN..GNM_MAX) would convert to black: refused, naming both ranges. */
+static int reradiation_overlaps(const GColorModel *m, const GReradiation *r, GError *err)
+{
+    double lo = GNM_MIN, hi = GNM_MAX;
+    if (m->nsamples > 0 && isfinite(m->lambda_min) && m->lambda_step > 0) {
+        lo = m->lambda_min;
+        hi = m->lambda_min + (m->nsamples - 1) * m->lambda_step;
+    }
+    double tol = 1e-6 * (fabs(lo) + fabs(hi));
+    double out_hi = r->out_min + (r->n_out - 1) * r->out_step, in_hi = r->in_min + (r->n_in - 1) * r->in_step;
+    const char *which = NULL;
+    double a = 0.0, b = 0.0;
+    if (!(out_hi >= lo - tol && r->out_min <= hi + tol))
+        which = "emission", a = r->out_min, b = out_hi;
+    else if (!(in_hi >= lo - tol && r->in_min <= hi + tol))
+        which = "excitation", a = r->in_min, b = in_hi;
+    if (!which)
+        return G_OK;
+    return gerror_set(err, G_ERR_INVALID,
+                      "re-radiation matrix: its %s wavelengths %g..%g nm lie outside the range of the colour "
+                      "model '%s' (%g..%g nm), so it would be black",
+                      which, a, b, gcolormodel_name(m), lo, hi);
+}
+
+int gcolor_from_reradiation(GColor *c, const GReradiation *r, GError *err)
+{
+    if (!r || !r->data || r->n_in <= 0 || r->n_out <= 0 || !(r->in_step > 0) || !(r->out_step > 0) ||
+        !isfinite(r->in_min) || !isfinite(r->in_step) || !isfinite(r->out_min) || !isfinite(r->out_step))
+        return gerror_set(err, G_ERR_INVALID, "re-radiation matrix has an empty or invalid grid");
+    for (long i = 0; i < (long)r->n_in * r->n_out; i++)
+        if (!isfinite(r->data[i]))
+            return gerror_set(err, G_ERR_INVALID, "re-radiation matrix holds a non-finite value");
+    int rc = reradiation_overlaps(c->model, r, err);
+    if (rc != G_OK)
+        return rc;
+    if (c->model->cls->from_reradiation)
+        return c->model->cls->from_reradiation(c->model, r, c, err);
+    /* Fold: the response to an equal-energy light over the exchange range, read as a reflectance. */
+    GSpectrumNM s;
+    for (int i = 0; i < GNM_COUNT; i++) {
+        double nm = GNM_MIN + i;
+        double f = (nm - r->out_min) / r->out_step;
+        if (!(f > -1.0 && f < r->n_out)) { /* no emission row within one step (also a grid far away) */
+            s.v[i] = 0.0f;
+            continue;
+        }
+        int o = (int)floor(f);
+        double t = f - o, v = 0.0;
+        for (int k = 0; k < 2; k++) {
+            int row = o + k;
+            double w = k ? t : 1.0 - t;
+            if (row < 0 || row >= r->n_out || w == 0.0)
+                continue;
+            double sum = 0.0;
+            for (int j = 0; j < r->n_in; j++) {
+                double in_nm = r->in_min + j * r->in_step;
+                if (in_nm >= GNM_MIN - 1e-9 && in_nm <= GNM_MAX + 1e-9)
+                    sum += r->data[(long)row * r->n_in + j];
+            }
+            v += w * sum;
+        }
+        s.v[i] = (float)v;
+    }
+    rc = c->model->cls->from_nm(c->model, &s, GCOLOR_REFLECTANCE, c);
+    /* A fluorescent pigment's fold is often outside the rgb gamut (day-glo orange has a negative blue): a
+     * negative reflectance would subtract light, so such components become 0 and the luminance is kept
+     * (gcolor_clip_to_gamut, the mapping out-of-gamut lights get too; the spectral models sample the
+     * non-negative fold and are not affected). */
+    return rc == G_OK ? gcolor_clip_to_gamut(c, GCOLOR_REFLECTANCE, NULL) : rc;
+}
+
+int gcolor_convert(GColor *dst, const GColor *src, GColorRole role)
+{
+    if (dst->model == src->model)
+        return gcolor_copy(dst, src);
+    if (src->model->nsamples == 0 && src->kind == GCOLOR_VECTOR) {
+        /* a tristimulus model: its exact colour, then the target's own (exact) from_rgb */
+        double rgb[3];
+        int rc = gcolor_to_rgb(src, role, rgb);
+        return rc ? rc : gcolor_from_rgb(dst, rgb, role);
+    }
+    GSpectrumNM s;
+    int rc = gcolor_to_nm(src, role, &s);
+    return rc ? rc : gcolor_from_nm(dst, &s, role);
+}
+
+/* ---- wavelength bands (dispersion) ---- */
+
+size_t gcolormodel_value_bytes(const GColorModel *m) { return (size_t)m->capacity * sizeof(float); }
+
+int gcolormodel_band_count(const GColorModel *m)
+{
+    int n = m->cls->band_count ? m->cls->band_count(m) : 1;
+    return n >= 1 ? n : 1;
+}
+
+int gcolor_band_mask(GColor *out, int band)
+{
+    const GColorModel *m = out->model;
+    if (band < 0 || band >= gcolormodel_band_count(m))
+        return G_ERR_INVALID;
+    if (m->cls->band_mask)
+        return m->cls->band_mask(m, band, out);
+    return gcolor_fill(out, 1.0);
+}
+
+/* The default band value: brightness(mask * c) / brightness(mask), through temporaries of the thread's arena. */
+static double band_value_by_mask(const GColorModel *m, const GColor *c, int band)
+{
+    GScratch *arena = gscratch_thread();
+    if (!arena)
+        return NAN;
+    GScratchMark mark = gscratch_mark(arena);
+    GColor mask, part;
+    double v = NAN;
+    if (gcolor_scratch(&mask, m, arena) == G_OK && gcolor_scratch(&part, m, arena) == G_OK &&
+        gcolor_band_mask(&mask, band) == G_OK && gcolor_mul(&part, &mask, c) == G_OK) {
+        double w = gcolor_brightness(&mask);
+        v = w > 0.0 ? gcolor_brightness(&part) / w : NAN;
+    }
+    gscratch_release(arena, mark);
+    return v;
+}
+
+double gcolor_band_value(const GColor *c, int band)
+{
+    const GColorModel *m = c->model;
+    if (c->kind != GCOLOR_VECTOR || band < 0 || band >= gcolormodel_band_count(m))
+        return NAN;
+    if (m->cls->band_value)
+        return m->cls->band_value(m, c, band);
+    if (!m->cls->band_count)
+        return gcolor_brightness(c); /* the one band is everything */
+    return band_value_by_mask(m, c, band);
+}
+
+/* ---- range after conversion ---- */
+
+int gcolormodel_rgb_range(const GColorModel *m, GColorRole role, double *lo, double *hi)
+{
+    *lo = 0.0;
+    *hi = 0.0;
+    GScratch *arena = gscratch_thread();
+    if (!arena)
+        return G_ERR_NOMEM;
+    GScratchMark mark = gscratch_mark(arena);
+    GColor p[3];
+    int rc = G_OK;
+    for (int b = 0; b < 3 && rc == G_OK; b++) {
+        double e[3] = {b == 0, b == 1, b == 2};
+        rc = gcolor_scratch(&p[b], m, arena);
+        if (rc == G_OK)
+            rc = gcolor_from_rgb(&p[b], e, role);
+    }
+    /* per sample, the cube's extremes are the sums of the primaries' negative (positive) parts */
+    for (int k = 0; rc == G_OK && k < m->nvalues; k++) {
+        double neg = 0.0, pos = 0.0;
+        for (int b = 0; b < 3; b++) {
+            double x = p[b].v[k];
+            if (x < 0.0)
+                neg += x;
+            else
+                pos += x;
+        }
+        *lo = fmin(*lo, neg);
+        *hi = fmax(*hi, pos);
+    }
+    gscratch_release(arena, mark);
+    return rc;
+}
+
+int gcolor_clip_to_gamut(GColor *c, GColorRole role, int *mapped)
+{
+    if (mapped)
+        *mapped = 0;
+    if (c->kind != GCOLOR_VECTOR)
+        return G_OK;
+    const GColorModel *m = c->model;
+    double most = -INFINITY;
+    for (int k = 0; k < m->nvalues; k++) {
+        if (!isfinite(c->v[k]))
+            return G_ERR_INVALID;
+        most = fmax(most, c->v[k]);
+    }
+    double lowest = INFINITY;
+    for (int k = 0; k < m->nvalues; k++)
+        lowest = fmin(lowest, c->v[k]);
+    if (lowest >= 0.0)
+        return G_OK;
+    double xyz[3], rgb[3], lo, hi;
+    int rc = gcolor_to_xyz(c, role, xyz);
+    if (rc == G_OK)
+        rc = gcolormodel_rgb_range(m, role, &lo, &hi);
+    if (rc != G_OK)
+        return rc;
+    gcie_xyz_to_rgb(xyz, rgb);
+    double s = fmax(0.0, fmax(rgb[0], fmax(rgb[1], rgb[2]))), y0 = xyz[1];
+    /* out of gamut: an RGB component below 0 (beyond rounding), or a sample below what conversion gives */
+    double eps = 1e-5 * fmax(s, most > 0.0 ? most : 0.0);
+    int out = fmin(rgb[0], fmin(rgb[1], rgb[2])) < -eps || lowest < lo * s - eps;
+    for (int k = 0; k < m->nvalues; k++)
+        if (c->v[k] < 0.0f)
+            c->v[k] = 0.0f;
+    double y1 = 0.0;
+    rc = gcolor_to_xyz(c, role, xyz);
+    if (rc != G_OK)
+        return rc;
+    y1 = xyz[1];
+    if (y0 > 0.0 && y1 > 0.0 && isfinite(y0 / y1))
+        rc = gcolor_scale(c, c, y0 / y1);
+    if (mapped)
+        *mapped = out;
+    return rc;
+}
