@@ -98,13 +98,13 @@ int main(int argc, char **argv)
     GMaterial *leaf = lambert(model, 0.6, 0.5, 0.4), *b = lambert(model, 0.8, 0.8, 0.75),
               *c = lambert(model, 0.3, 0.3, 0.35), *white = lambert(model, 0.9, 0.9, 0.9);
     GGenerator *chk, *marble, *fbm, *half, *zero;
-    CHECK(ggen_checker_create(2, 8, &chk, &err));
+    CHECK(ggenerator_checker_create(2, 8, &chk, &err));
     GNoiseParams np = {.frequency = 2, .octaves = 4};
-    CHECK(ggen_marble_create(&np, 2, 2, &marble, &err));
+    CHECK(ggenerator_marble_create(&np, 2, 2, &marble, &err));
     GNoiseParams bp = {.space = GGENERATOR_SPACE_UV, .frequency = 16, .octaves = 3};
-    CHECK(ggen_fbm_create(&bp, &fbm, &err));
-    CHECK(ggen_constant_create(0.5, &half, &err));
-    CHECK(ggen_constant_create(0.0, &zero, &err));
+    CHECK(ggenerator_fbm_create(&bp, &fbm, &err));
+    CHECK(ggenerator_constant_create(0.5, &half, &err));
+    CHECK(ggenerator_constant_create(0.0, &zero, &err));
 
     /* the image node, when the example picture is there */
     char path[1024];
@@ -138,7 +138,7 @@ int main(int argc, char **argv)
     GMaterial *bands, *tr_bands, *kids3[3] = {leaf, b, c};
     CHECK(gnode_spline_create(kids3, 3, marble, GSPLINE_CATMULL_ROM, &bands, &err));
     CHECK(gnode_transform_create(bands, &rot, NULL, &tr_bands, &err));
-    CHECK(ggen_gradient_create(GGENERATOR_SPACE_UV, gvec3(1, 0, 0), 0, &lin, &err));
+    CHECK(ggenerator_gradient_create(GGENERATOR_SPACE_UV, gvec3(1, 0, 0), 0, &lin, &err));
     CHECK(gnode_bump_create(leaf, lin, 0.5, &bump_lin, &err));
 
     printf("texture trees, colour model %s, one evaluation = normal + 2 reflections + ambient\n", model_name);

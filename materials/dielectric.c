@@ -108,17 +108,17 @@ static double eta_of(GSurfPoint *sp, const GColor *rel_index)
     return rel_index ? gsurfpoint_index_of(sp, rel_index) : gsurfpoint_relative_index(sp);
 }
 
-/* Both methods pass on nothing for a pair on the wrong sides of the geometric surface (gmat_sides_agree): about a
+/* Both methods pass on nothing for a pair on the wrong sides of the geometric surface (gmaterial_sides_agree): about a
  * normal a bump tilts, the mirror or refracted ray may point back across the surface (into the body, or out of it),
  * where passing it on leaked light through the surface (gtrace traced the reflected ray inside the body in the
- * outside medium). Mirror and phong do the same through gmat_cos_in. */
+ * outside medium). Mirror and phong do the same through gmaterial_cos_in. */
 static int dielectric_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
                                  GColor *result)
 {
     const Dielectric *d = (const Dielectric *)self;
     GVec3 n = gsurfpoint_normal(sp);
     double cos_o = gvec3_dot(out, n);
-    if (cos_o <= 0.0 || !gmat_sides_agree(sp, in, out, 0) || !gmaterial_is_mirror_pair(in, n, out)) {
+    if (cos_o <= 0.0 || !gmaterial_sides_agree(sp, in, out, 0) || !gmaterial_is_mirror_pair(in, n, out)) {
         gcolor_black(result);
         return G_OK;
     }
@@ -136,7 +136,8 @@ static int dielectric_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in
     GVec3 n = gsurfpoint_normal(sp);
     double cos_o = gvec3_dot(out, n);
     double eta = eta_of(sp, rel_index);
-    if (cos_o <= 0.0 || !gmat_sides_agree(sp, in, out, 1) || !goptics_is_refraction_pair(gvec3_neg(out), n, eta, in)) {
+    if (cos_o <= 0.0 || !gmaterial_sides_agree(sp, in, out, 1) ||
+        !goptics_is_refraction_pair(gvec3_neg(out), n, eta, in)) {
         gcolor_black(result);
         return G_OK;
     }
@@ -225,12 +226,12 @@ static int dielectric_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, c
         s->in = gvec3_reflect(view, n);
         s->pdf = f;
         s->flags = GSAMPLE_REFLECT | GSAMPLE_DELTA;
-        rc = gmat_sample_weight(self, sp, s->in, out, rel_index, 0, f, weight);
+        rc = gmaterial_sample_weight(self, sp, s->in, out, rel_index, 0, f, weight);
     } else {
         s->in = t;
         s->pdf = 1.0 - f;
         s->flags = GSAMPLE_TRANSMIT | GSAMPLE_DELTA;
-        rc = gmat_sample_weight(self, sp, t, out, rel_index, 1, 1.0 - f, weight);
+        rc = gmaterial_sample_weight(self, sp, t, out, rel_index, 1, 1.0 - f, weight);
     }
     return rc ? rc : 1;
 }
@@ -272,7 +273,7 @@ int gdielectric_create(const GColorModel *model, const GDielectricParams *params
     int rc = gdispersion_check(&params->index, err);
     GMaterial *m;
     if (rc == G_OK)
-        rc = gmat_new(&dielectric_class, model, sizeof(Dielectric), &m, err);
+        rc = gmaterial_new(&dielectric_class, model, sizeof(Dielectric), &m, err);
     if (rc != G_OK)
         return rc;
     Dielectric *d = (Dielectric *)m;
@@ -283,7 +284,7 @@ int gdielectric_create(const GColorModel *model, const GDielectricParams *params
         rc = gerror_set_param(err, rc, "index", "dielectric: cannot express the index in model '%s'",
                               gcolormodel_name(model));
     if (rc == G_OK && params->absorption) {
-        rc = gmatparam_color(model, params->absorption, GCOLOR_REFLECTANCE, 0.0, "dielectric", "absorption",
+        rc = gmaterial_param_color(model, params->absorption, GCOLOR_REFLECTANCE, 0.0, "dielectric", "absorption",
                              &d->transmittance, err);
         if (rc == G_OK) {
             if (d->transmittance.kind != GCOLOR_VECTOR)
@@ -299,7 +300,7 @@ int gdielectric_create(const GColorModel *model, const GDielectricParams *params
         }
     }
     if (rc == G_OK && params->tint) {
-        rc = gmatparam_color(model, params->tint, GCOLOR_REFLECTANCE, 1.0, "dielectric", "tint", &d->tint, err);
+        rc = gmaterial_param_color(model, params->tint, GCOLOR_REFLECTANCE, 1.0, "dielectric", "tint", &d->tint, err);
         d->tinted = rc == G_OK;
     }
     if (rc != G_OK) {

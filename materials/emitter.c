@@ -6,7 +6,7 @@
 #include <string.h>
 
 typedef struct Emitter {
-    GMatOneColor radiance; /* first: the class's destroy is gmat_one_color_destroy */
+    GMaterialOneColor radiance; /* first: the class's destroy is gmaterial_one_color_destroy */
     int two_sided;
 } Emitter;
 
@@ -52,7 +52,7 @@ static const GMaterialClass emitter_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "emitter",
     .description = "emits a radiance from its front (or both sides)",
-    .destroy = gmat_one_color_destroy,
+    .destroy = gmaterial_one_color_destroy,
     .emission = emitter_emission,
     .sample = emitter_sample,
     .pdf = emitter_pdf,
@@ -61,7 +61,7 @@ static const GMaterialClass emitter_class = {
 
 int gemitter_create(const GColorModel *model, const GColor *radiance, int two_sided, GMaterial **out, GError *err)
 {
-    int rc = gmat_one_color_create(&emitter_class, model, sizeof(Emitter), radiance, GCOLOR_LIGHT, 0.0, "radiance",
+    int rc = gmaterial_one_color_create(&emitter_class, model, sizeof(Emitter), radiance, GCOLOR_LIGHT, 0.0, "radiance",
                                    out, err);
     if (rc == G_OK) {
         ((Emitter *)*out)->two_sided = two_sided != 0;
@@ -90,7 +90,7 @@ static int parse_emitter(GReader *r, const void *vtable, void **object, GError *
             break;
     }
     if (rc == G_OK)
-        rc = gmatparam_default(r, 1.0, GCOLOR_LIGHT, &radiance, err);
+        rc = gmaterial_param_default(r, 1.0, GCOLOR_LIGHT, &radiance, err);
     GMaterial *m = NULL;
     if (rc == G_OK && (rc = gemitter_create(greader_colormodel(r), &radiance, two_sided, &m, err)) == G_OK)
         *object = m;

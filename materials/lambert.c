@@ -5,14 +5,14 @@
 
 #include <math.h>
 
-/* The state is a GMatOneColor: c is rho. */
+/* The state is a GMaterialOneColor: c is rho. */
 
 static int lambert_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
                               GColor *result)
 {
-    const GMatOneColor *l = (const GMatOneColor *)self;
+    const GMaterialOneColor *l = (const GMaterialOneColor *)self;
     GVec3 n;
-    double c = gmat_cos_in(sp, in, out, &n);
+    double c = gmaterial_cos_in(sp, in, out, &n);
     if (c <= 0.0) {
         gcolor_black(result);
         return G_OK;
@@ -23,13 +23,13 @@ static int lambert_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, c
 static int lambert_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
 {
     (void)sp;
-    return gcolor_mul(result, &((const GMatOneColor *)self)->c, illum);
+    return gcolor_mul(result, &((const GMaterialOneColor *)self)->c, illum);
 }
 
 static int lambert_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
 {
     (void)sp;
-    return gcolor_copy(result, &((const GMatOneColor *)self)->c);
+    return gcolor_copy(result, &((const GMaterialOneColor *)self)->c);
 }
 
 /* Cosine-weighted sampling: pdf cos / pi, so the weight f cos / pdf is rho exactly (a re-radiation matrix rho:
@@ -46,13 +46,13 @@ static int lambert_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, cons
     s->flags = GSAMPLE_REFLECT;
     if (!(s->pdf > 0.0))
         return 0;
-    if (gmat_cos_in(sp, s->in, out, &n) <= 0.0) { /* below the geometric surface (a bumped normal) */
+    if (gmaterial_cos_in(sp, s->in, out, &n) <= 0.0) { /* below the geometric surface (a bumped normal) */
         gcolor_black(weight);
         return 1;
     }
-    const GColor *rho = &((const GMatOneColor *)self)->c;
+    const GColor *rho = &((const GMaterialOneColor *)self)->c;
     int rc = rho->kind == GCOLOR_VECTOR ? gcolor_copy(weight, rho)
-                                        : gmat_sample_weight(self, sp, s->in, out, NULL, 0, s->pdf, weight);
+                                        : gmaterial_sample_weight(self, sp, s->in, out, NULL, 0, s->pdf, weight);
     return rc ? rc : 1;
 }
 
@@ -70,7 +70,7 @@ static const GMaterialClass lambert_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "lambert",
     .description = "ideal diffuse reflector (f = rho / pi)",
-    .destroy = gmat_one_color_destroy,
+    .destroy = gmaterial_one_color_destroy,
     .reflection = lambert_reflection,
     .ambient = lambert_ambient,
     .diffuse = lambert_diffuse,
@@ -80,12 +80,12 @@ static const GMaterialClass lambert_class = {
 
 int glambert_create(const GColorModel *model, const GColor *reflectance, GMaterial **out, GError *err)
 {
-    int rc = gmat_one_color_create(&lambert_class, model, sizeof(GMatOneColor), reflectance, GCOLOR_REFLECTANCE,
+    int rc = gmaterial_one_color_create(&lambert_class, model, sizeof(GMaterialOneColor), reflectance, GCOLOR_REFLECTANCE,
                                    1.0, "reflectance", out, err);
-    if (rc == G_OK) { /* reflection is diffuse (rho) * illum * gmat_cos_in / pi, as the bit says, and no method
+    if (rc == G_OK) { /* reflection is diffuse (rho) * illum * gmaterial_cos_in / pi, as the bit says, and no method
                        * reads the (u, v) parametrisation (material.h) */
         (*out)->flags |= GMAT_LAMBERTIAN | GMAT_NO_UV;
-        if (((GMatOneColor *)*out)->c.kind == GCOLOR_VECTOR) /* rho * illum: sample by sample (material.h) */
+        if (((GMaterialOneColor *)*out)->c.kind == GCOLOR_VECTOR) /* rho * illum: sample by sample (material.h) */
             (*out)->flags |= GMAT_DIAGONAL;
     }
     return rc;
@@ -95,7 +95,7 @@ int glambert_create(const GColorModel *model, const GColor *reflectance, GMateri
 static int parse_lambert(GReader *r, const void *vtable, void **object, GError *err)
 {
     (void)vtable;
-    return gmatparam_parse_one_color(r, "reflectance", 0.8, GCOLOR_REFLECTANCE, glambert_create, object, err);
+    return gmaterial_param_parse_one_color(r, "reflectance", 0.8, GCOLOR_REFLECTANCE, glambert_create, object, err);
 }
 
 GENERIC_TYPE(lambert, GKIND_MATERIAL, &lambert_class, parse_lambert, NULL);

@@ -4,17 +4,17 @@
 #include "generic/plugin.h"
 
 
-/* The state is a GMatOneColor: c is the reflectance. */
+/* The state is a GMaterialOneColor: c is the reflectance. */
 
 static int mirror_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
                              GColor *result)
 {
     GVec3 n;
-    if (gmat_cos_in(sp, in, out, &n) <= 0.0 || !gmaterial_is_mirror_pair(in, n, out)) {
+    if (gmaterial_cos_in(sp, in, out, &n) <= 0.0 || !gmaterial_is_mirror_pair(in, n, out)) {
         gcolor_black(result);
         return G_OK;
     }
-    return gcolor_mul(result, &((const GMatOneColor *)self)->c, illum);
+    return gcolor_mul(result, &((const GMaterialOneColor *)self)->c, illum);
 }
 
 static int mirror_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
@@ -27,7 +27,7 @@ static int mirror_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 vi
 static int mirror_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
 {
     (void)sp;
-    return gcolor_mul(result, &((const GMatOneColor *)self)->c, illum);
+    return gcolor_mul(result, &((const GMaterialOneColor *)self)->c, illum);
 }
 
 /* One delta lobe, chosen with probability 1: weight = the reflectance. */
@@ -41,11 +41,11 @@ static int mirror_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const
     s->in = gvec3_reflect(gvec3_neg(out), n);
     s->pdf = 1.0;
     s->flags = GSAMPLE_REFLECT | GSAMPLE_DELTA;
-    if (gmat_cos_in(sp, s->in, out, &n) <= 0.0) {
+    if (gmaterial_cos_in(sp, s->in, out, &n) <= 0.0) {
         gcolor_black(weight);
         return 1;
     }
-    int rc = gmat_sample_weight(self, sp, s->in, out, NULL, 0, 1.0, weight);
+    int rc = gmaterial_sample_weight(self, sp, s->in, out, NULL, 0, 1.0, weight);
     return rc ? rc : 1;
 }
 
@@ -65,7 +65,7 @@ static const GMaterialClass mirror_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "mirror",
     .description = "perfect specular reflector",
-    .destroy = gmat_one_color_destroy,
+    .destroy = gmaterial_one_color_destroy,
     .reflection = mirror_reflection,
     .reflection_dir = mirror_reflection_dir,
     .ambient = mirror_ambient,
@@ -76,11 +76,11 @@ static const GMaterialClass mirror_class = {
 
 int gmirror_create(const GColorModel *model, const GColor *reflectance, GMaterial **out, GError *err)
 {
-    int rc = gmat_one_color_create(&mirror_class, model, sizeof(GMatOneColor), reflectance, GCOLOR_REFLECTANCE,
+    int rc = gmaterial_one_color_create(&mirror_class, model, sizeof(GMaterialOneColor), reflectance, GCOLOR_REFLECTANCE,
                                    1.0, "reflectance", out, err);
     if (rc == G_OK) {
         (*out)->flags |= GMAT_NO_UV; /* its methods read none of the (u, v) parametrisation (material.h) */
-        if (((GMatOneColor *)*out)->c.kind == GCOLOR_VECTOR) /* rho * illum: sample by sample (material.h) */
+        if (((GMaterialOneColor *)*out)->c.kind == GCOLOR_VECTOR) /* rho * illum: sample by sample (material.h) */
             (*out)->flags |= GMAT_DIAGONAL;
     }
     return rc;
@@ -90,7 +90,7 @@ int gmirror_create(const GColorModel *model, const GColor *reflectance, GMateria
 static int parse_mirror(GReader *r, const void *vtable, void **object, GError *err)
 {
     (void)vtable;
-    return gmatparam_parse_one_color(r, "reflectance", 1.0, GCOLOR_REFLECTANCE, gmirror_create, object, err);
+    return gmaterial_param_parse_one_color(r, "reflectance", 1.0, GCOLOR_REFLECTANCE, gmirror_create, object, err);
 }
 
 GENERIC_TYPE(mirror, GKIND_MATERIAL, &mirror_class, parse_mirror, NULL);

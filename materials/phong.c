@@ -31,7 +31,7 @@ static int phong_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, con
 {
     const Phong *p = (const Phong *)self;
     GVec3 n;
-    double cos_in = gmat_cos_in(sp, in, out, &n);
+    double cos_in = gmaterial_cos_in(sp, in, out, &n);
     if (cos_in <= 0.0) {
         gcolor_black(result);
         return G_OK;
@@ -119,18 +119,18 @@ static int phong_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const 
     double w[3], prob;
     GVec3 r, n = gsurfpoint_normal(sp);
     phong_lobes(p, sp, out, w, &r);
-    int lobe = gmat_pick_lobe(w, 3, &u1, &prob);
+    int lobe = gmaterial_pick_lobe(w, 3, &u1, &prob);
     s->flags = GSAMPLE_REFLECT;
     if (lobe == 2) { /* the ideal mirror ray: mirror / its probability */
         s->in = r;
         s->pdf = prob;
         s->flags |= GSAMPLE_DELTA;
-        if (gmat_cos_in(sp, r, out, &n) <= 0.0) {
+        if (gmaterial_cos_in(sp, r, out, &n) <= 0.0) {
             gcolor_black(weight);
             return 1;
         }
         int rc = p->mirror.kind == GCOLOR_VECTOR ? gcolor_scale(weight, &p->mirror, 1.0 / prob)
-                                                 : gmat_sample_weight(self, sp, r, out, NULL, 0, prob, weight);
+                                                 : gmaterial_sample_weight(self, sp, r, out, NULL, 0, prob, weight);
         return rc ? rc : 1;
     }
     s->in = lobe == 0 ? goptics_sample_cosine(n, u1, u2) : goptics_sample_lobe(r, p->n, u1, u2);
@@ -138,13 +138,13 @@ static int phong_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const 
     if (!(s->pdf > 0.0))
         return 0;
     /* the value f cos without the ideal part (which only the delta lobe carries) */
-    double ci = gmat_cos_in(sp, s->in, out, &n);
+    double ci = gmaterial_cos_in(sp, s->in, out, &n);
     if (ci <= 0.0) {
         gcolor_black(weight);
         return 1;
     }
     if (p->kd.kind != GCOLOR_VECTOR || p->ks.kind != GCOLOR_VECTOR) { /* re-radiation: what it makes of white */
-        int rc = gmat_sample_weight(self, sp, s->in, out, NULL, 0, s->pdf, weight);
+        int rc = gmaterial_sample_weight(self, sp, s->in, out, NULL, 0, s->pdf, weight);
         return rc ? rc : 1;
     }
     int rc = gcolor_scale(weight, &p->kd, ci / M_PI / s->pdf);
@@ -185,7 +185,7 @@ static const GMaterialClass phong_class = {
 static int param_or_black(const GColorModel *m, const GColor *src, const char *name, GColor *dst, GError *err)
 {
     if (src)
-        return gmatparam_color(m, src, GCOLOR_REFLECTANCE, 1.0, "phong", name, dst, err);
+        return gmaterial_param_color(m, src, GCOLOR_REFLECTANCE, 1.0, "phong", name, dst, err);
     if (gcolor_alloc(dst, m) != G_OK)
         return gerror_set(err, G_ERR_NOMEM, "phong: out of memory for %s", name);
     return G_OK;
@@ -200,7 +200,7 @@ int gphong_create(const GColorModel *model, const GPhongParams *params, GMateria
         return gerror_set_param(err, G_ERR_INVALID, "exponent", "phong: exponent is %g (must be finite and >= 0)",
                                 params->exponent);
     GMaterial *m;
-    int rc = gmat_new(&phong_class, model, sizeof(Phong), &m, err);
+    int rc = gmaterial_new(&phong_class, model, sizeof(Phong), &m, err);
     if (rc != G_OK)
         return rc;
     Phong *p = (Phong *)m;
@@ -222,7 +222,7 @@ int gphong_create(const GColorModel *model, const GPhongParams *params, GMateria
         const char *matrix = p->mirror.kind == GCOLOR_MATRIX ? "mirror"
                              : p->ks.kind == GCOLOR_MATRIX   ? "specular"
                                                              : "diffuse";
-        rc = gmatparam_check_sum(&p->albedo, "phong", "kd + ks + mirror", matrix, err);
+        rc = gmaterial_param_check_sum(&p->albedo, "phong", "kd + ks + mirror", matrix, err);
     }
     if (rc != G_OK) {
         phong_destroy(&p->base);
@@ -264,7 +264,7 @@ static int parse_phong(GReader *r, const void *vtable, void **object, GError *er
             break;
     }
     if (rc == G_OK && !kd.v && !ks.v)
-        rc = gmatparam_default(r, 0.5, GCOLOR_REFLECTANCE, &kd, err);
+        rc = gmaterial_param_default(r, 0.5, GCOLOR_REFLECTANCE, &kd, err);
     GMaterial *m = NULL;
     if (rc == G_OK) {
         GPhongParams p = {kd.v ? &kd : NULL, ks.v ? &ks : NULL, exponent, mirror.v ? &mirror : NULL};

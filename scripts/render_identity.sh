@@ -1,9 +1,10 @@
 #!/bin/sh
 # render_identity.sh BUILD OUTDIR [REFDIR] - renders every scene of examples/scenes, the bench scene
 # (bench/pov/scene.scene) and the path tracer's demo into OUTDIR, in every built-in colour model, with the
-# Whitted tracer and the path tracer, as OpenEXR (float; the same bytes for the same floats), with each render's exit status. With
-# REFDIR, every file must be byte-identical to REFDIR's file of the same name (cmp), and a missing or extra file is
-# a failure.
+# Whitted tracer and the path tracer, as float OpenEXR, with each render's exit status and messages. With REFDIR,
+# every image must hold exactly REFDIR's pixel values (idiff -fail 0 -warn 0: every float equal; the files' own
+# bytes differ by their DateTime), every status and message file must be byte-identical, and a missing or extra
+# file is a failure.
 #
 # For refactorings that must not change what anything computes: render once from the old build, once from the new,
 # and compare (`scripts/render_identity.sh build /tmp/new /tmp/old`). One thread each, two renders at a time.
@@ -35,13 +36,15 @@ n=$(ls "$OUT"/*.status | wc -l)
 echo "render_identity: $n renders in $OUT"
 [ -n "$REF" ] || exit 0
 status=0
-for f in "$REF"/*.exr "$REF"/*.status; do
+for f in "$REF"/*.exr "$REF"/*.status "$REF"/*.err; do
     b=$(basename "$f")
     if [ ! -f "$OUT/$b" ]; then echo "render_identity: $b missing"; status=1
+    elif [ "${b%.exr}" != "$b" ]; then
+        idiff -q -fail 0 -warn 0 "$f" "$OUT/$b" > /dev/null 2>&1 || { echo "render_identity: $b differs"; status=1; }
     elif ! cmp -s "$f" "$OUT/$b"; then echo "render_identity: $b differs"; status=1; fi
 done
 for f in "$OUT"/*.exr; do
     [ -f "$REF/$(basename "$f")" ] || { echo "render_identity: $(basename "$f") is new"; status=1; }
 done
-[ $status -eq 0 ] && echo "render_identity: all $(ls "$REF"/*.exr | wc -l) images byte-identical to $REF"
+[ $status -eq 0 ] && echo "render_identity: all $(ls "$REF"/*.exr | wc -l) images identical to $REF"
 exit $status

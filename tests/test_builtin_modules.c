@@ -116,7 +116,7 @@ static void test_same_results_bit_for_bit(void **state)
     const GColorModel *mm = glibrary_colormodel(lib);
     assert_ptr_equal(mm->cls, gregistry_find(GKIND_COLORMODEL, "rgb")->vtable);
 
-    /* the built-ins, from their records: the rgb class, the lambert class over a GMatOneColor */
+    /* the built-ins, from their records: the rgb class, the lambert class over a GMaterialOneColor */
     GColorModel *bm = NULL;
     assert_int_equal(gcolormodel_create_class(builtin(GKIND_COLORMODEL, "rgb")->vtable, NULL, &bm, &err), G_OK);
     const GMaterialClass *bcls = builtin(GKIND_MATERIAL, "lambert")->vtable;
@@ -138,7 +138,7 @@ static void test_same_results_bit_for_bit(void **state)
         assert_non_null(mmat);
         assert_ptr_equal(mmat->cls, lambert->vtable);
         assert_int_equal(gcolor_from_rgb(&bc, rho[k], GCOLOR_REFLECTANCE), G_OK);
-        assert_int_equal(gmat_one_color_create(bcls, bm, sizeof(GMatOneColor), &bc, GCOLOR_REFLECTANCE, 1.0,
+        assert_int_equal(gmaterial_one_color_create(bcls, bm, sizeof(GMaterialOneColor), &bc, GCOLOR_REFLECTANCE, 1.0,
                                                "reflectance", &bmat, &err),
                          G_OK);
         assert_ptr_equal(bmat->cls, bcls);

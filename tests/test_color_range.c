@@ -273,7 +273,7 @@ static void test_above_one_is_a_fold(void **state)
         assert_int_equal(gcolor_alloc(&c, m), G_OK);
         assert_int_equal(gcolor_fill(&c, 0.3), G_OK);
         c.v[0] = 1.6f;
-        double e = gmatparam_energy(&c, NULL);
+        double e = gmaterial_param_energy(&c, NULL);
         assert_true(e < 1.0);
         GMaterial *l = NULL;
         GError err;

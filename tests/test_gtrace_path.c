@@ -216,7 +216,7 @@ static GMaterial *half_blend(GMaterial *a, GMaterial *b)
     GGenerator *t = NULL;
     GMaterial *m = NULL;
     GError err;
-    assert_int_equal(ggen_constant_create(0.5, &t, &err), G_OK);
+    assert_int_equal(ggenerator_constant_create(0.5, &t, &err), G_OK);
     if (gnode_interpolate_create(a, b, t, &m, &err) != G_OK)
         fail_msg("gnode_interpolate_create: %s", err.message);
     ggenerator_unref(t);

@@ -422,7 +422,7 @@ static void test_normal_bit_of_nodes(void **state)
     /* bump over a node with the bit still tilts the normal (a height ramp along u: atan(0.5) towards -x) */
     GGenerator *h;
     GMaterial *bumped;
-    assert_int_equal(ggen_gradient_create(GGENERATOR_SPACE_UV, gvec3(0.5, 0, 0), 0.0, &h, &err), G_OK);
+    assert_int_equal(ggenerator_gradient_create(GGENERATOR_SPACE_UV, gvec3(0.5, 0, 0), 0.0, &h, &err), G_OK);
     assert_int_equal(gnode_bump_create(n[0], h, 1.0, &bumped, &err), G_OK);
     assert_false(flat(bumped));
     GSurfPoint bp;

@@ -1,11 +1,11 @@
 /* test_material_lambertian.c - GMAT_LAMBERTIAN (material.h): reflection(sp, in, illum, out) is diffuse(sp) * illum *
- * gmat_cos_in(sp, in, out) / pi everywhere, so a renderer may reflect the sum of its lights at once:
+ * gmaterial_cos_in(sp, in, out) / pi everywhere, so a renderer may reflect the sum of its lights at once:
  *  - which materials and nodes get the bit: lambert; the blend nodes whose pick gives one blend for reflection and
  *    diffuse (interpolate, interpolate-one of another method, spline, select) over children that all have it; the
- *    one-child nodes (bump, scale, image, transform: gtexnode_inherit_lambertian_child) over a child that has it, and
+ *    one-child nodes (bump, scale, image, transform: gnode_inherit_lambertian_child) over a child that has it, and
  *    nodes over those; not interpolate-one of reflection or diffuse, not a node (blend or one-child) over a phong,
  *    mirror or dielectric child or over an unflagged node, not a blend class the kit does not know to pick alike
- *    (gtexnode_new_checked never sets it, gtexnode_inherit_lambertian refuses another class, a one-child one too);
+ *    (gnode_new_checked never sets it, gnode_inherit_lambertian refuses another class, a one-child one too);
  *  - the property itself for every flagged material and node, in rgb, spectrum and bispectral (with a re-radiation
  *    matrix as a lambert's reflectance there): random points (generator values, geometric normals, and a shading
  *    normal set on the point, which every child reads as the node does, or else the node's own: a bump's bumped
@@ -101,16 +101,16 @@ static void pair_destroy(GMaterial *self)
     gmem_free(p);
 }
 
-static void pair_pick(const GMaterial *self, GSurfPoint *sp, GNodeMethod m, GTexBlend *b)
+static void pair_pick(const GMaterial *self, GSurfPoint *sp, GNodeMethod m, GNodeBlend *b)
 {
     (void)sp;
     const Pair *p = (const Pair *)self;
-    gtexblend_one(b, m == GNODE_REFLECTION ? p->b : p->a);
+    gnode_blend_one(b, m == GNODE_REFLECTION ? p->b : p->a);
 }
 
-static const GTexBlendClass pair_class = {
+static const GNodeBlendClass pair_class = {
     .base = {.abi_version = GMATERIAL_ABI_VERSION, .name = "test-pair", .description = "reflection from b",
-             .destroy = pair_destroy, GTEXBLEND_NODE_METHODS},
+             .destroy = pair_destroy, GNODE_BLENDED_METHODS},
     .pick = pair_pick,
 };
 
@@ -123,7 +123,7 @@ static void test_which_get_the_bit(void **state)
     GMaterial *a = lambert_rgb(rgb, 0.2, 0.3, 0.4), *b = lambert_rgb(rgb, 0.8, 0.7, 0.6);
     GMaterial *c = lambert_rgb(rgb, 0.5, 0.5, 0.1);
     GGenerator *t;
-    assert_int_equal(ggen_gradient_create(GGENERATOR_SPACE_UV, gvec3(1, 0, 0), 0.0, &t, &err), G_OK);
+    assert_int_equal(ggenerator_gradient_create(GGENERATOR_SPACE_UV, gvec3(1, 0, 0), 0.0, &t, &err), G_OK);
     enum { NODES = 21, FLAGGED = 15 };
     GMaterial *kids[3] = {a, b, c}, *n[NODES];
     GAffine2 uv = gaffine2_rotate(30.0);
@@ -194,21 +194,21 @@ static void test_which_get_the_bit(void **state)
     /* a blend class the kit does not know to pick alike: not from construction, and the inherit call refuses a
      * class with other slots than the kit's blend (a one-child node) */
     GMaterial *pair_kids[2] = {a, b}, *p;
-    assert_int_equal(gtexnode_new_checked(&pair_class.base, pair_kids, 2, NULL, 0, sizeof(Pair), &p, &err), G_OK);
+    assert_int_equal(gnode_new_checked(&pair_class.base, pair_kids, 2, NULL, 0, sizeof(Pair), &p, &err), G_OK);
     ((Pair *)p)->a = gmaterial_ref(a);
     ((Pair *)p)->b = gmaterial_ref(b);
     assert_false(lamb(p));
-    gtexnode_inherit_lambertian(one[1], pair_kids, 2); /* a scale over a mirror: not a blend class */
+    gnode_inherit_lambertian(one[1], pair_kids, 2); /* a scale over a mirror: not a blend class */
     assert_false(lamb(one[1]));
-    assert_true(gtexnode_children_lambertian(pair_kids, 2));
-    assert_false(gtexnode_children_lambertian(other, 3));
+    assert_true(gnode_children_lambertian(pair_kids, 2));
+    assert_false(gnode_children_lambertian(other, 3));
     /* the one-child form: nothing for a child without the bit, for NULL, or for the node as its own child */
-    gtexnode_inherit_lambertian_child(one[1], other[1]);
+    gnode_inherit_lambertian_child(one[1], other[1]);
     assert_false(lamb(one[1]));
-    gtexnode_inherit_lambertian_child(one[1], NULL);
-    gtexnode_inherit_lambertian_child(NULL, a);
+    gnode_inherit_lambertian_child(one[1], NULL);
+    gnode_inherit_lambertian_child(NULL, a);
     assert_false(lamb(one[1]));
-    gtexnode_inherit_lambertian_child(n[15], n[15]);
+    gnode_inherit_lambertian_child(n[15], n[15]);
     assert_false(lamb(n[15]));
 
     for (int i = 11; i >= 0; i--)
@@ -228,7 +228,7 @@ static void test_which_get_the_bit(void **state)
     gcolormodel_destroy(rgb);
 }
 
-/* The largest relative difference between m's own reflection and diffuse * light * gmat_cos_in / pi over n random
+/* The largest relative difference between m's own reflection and diffuse * light * gmaterial_cos_in / pi over n random
  * points, pairs and lights (per pair: the largest sample difference over the pair's largest |value|); *lit counts
  * the pairs whose reflection is not black. */
 static double worst_relative(const GMaterial *m, GScratch *scratch, int n, int *lit)
@@ -259,7 +259,7 @@ static double worst_relative(const GMaterial *m, GScratch *scratch, int n, int *
             light.v[j] = (float)(0.1 + 10.0 * uniform(&seed));
         assert_int_equal(m->cls->reflection(m, &sp, in, &light, out, &got), G_OK);
         assert_int_equal(gmaterial_diffuse(m, &sp, &diffuse), G_OK);
-        assert_int_equal(gcolor_mul_scaled(&want, &diffuse, &light, gmat_cos_in(&sp, in, out, &nrm) / M_PI), G_OK);
+        assert_int_equal(gcolor_mul_scaled(&want, &diffuse, &light, gmaterial_cos_in(&sp, in, out, &nrm) / M_PI), G_OK);
         double d = 0.0, big = 0.0;
         for (int j = 0; j < model->nvalues; j++) {
             d = fmax(d, fabs((double)got.v[j] - want.v[j]));
@@ -294,12 +294,12 @@ static void test_reflection_is_diffuse(void **state)
     }
     gcolor_free(&matrix);
     GGenerator *t, *w, *h, *cells, *zero;
-    assert_int_equal(ggen_gradient_create(GGENERATOR_SPACE_UV, gvec3(1, 0.3, 0), 0.0, &t, &err), G_OK);
-    assert_int_equal(ggen_gradient_create(GGENERATOR_SPACE_OBJECT, gvec3(0.2, -0.1, 0), 0.5, &w, &err), G_OK);
+    assert_int_equal(ggenerator_gradient_create(GGENERATOR_SPACE_UV, gvec3(1, 0.3, 0), 0.0, &t, &err), G_OK);
+    assert_int_equal(ggenerator_gradient_create(GGENERATOR_SPACE_OBJECT, gvec3(0.2, -0.1, 0), 0.5, &w, &err), G_OK);
     GNoiseParams np = {.space = GGENERATOR_SPACE_OBJECT, .frequency = 2.0, .seed = 5};
-    assert_int_equal(ggen_perlin_create(&np, &h, &err), G_OK);            /* a bump's height */
-    assert_int_equal(ggen_checker_create(3, 1.0, &cells, &err), G_OK);    /* a factor 0 on half the points */
-    assert_int_equal(ggen_constant_create(0.0, &zero, &err), G_OK);
+    assert_int_equal(ggenerator_perlin_create(&np, &h, &err), G_OK);            /* a bump's height */
+    assert_int_equal(ggenerator_checker_create(3, 1.0, &cells, &err), G_OK);    /* a factor 0 on half the points */
+    assert_int_equal(ggenerator_constant_create(0.0, &zero, &err), G_OK);
     enum { NODES = 20 };
     GMaterial *kids[4] = {a, b, c, d}, *n[NODES];
     assert_int_equal(gnode_interpolate_create(a, d, t, &n[0], &err), G_OK);
@@ -448,13 +448,13 @@ static void test_is_delta_skips_the_class(void **state)
     sp.material = node;
     assert_int_equal(gmaterial_is_delta(node, &sp), 0);
     assert_int_equal(g->calls, 0); /* no pick, no generator */
-    assert_int_equal(gtexblendnode_is_delta(node, &sp), 0); /* the class's own answer agrees */
+    assert_int_equal(gnode_blended_is_delta(node, &sp), 0); /* the class's own answer agrees */
     assert_int_equal(g->calls, 1);
 
     /* the one-child nodes over a lambert and over that interpolate: is_delta 0 without a call, and their own slots
      * (the child's answer, at the point or a moved copy) agree */
     GGenerator *t;
-    assert_int_equal(ggen_gradient_create(GGENERATOR_SPACE_UV, gvec3(1, 0, 0), 0.0, &t, &err), G_OK);
+    assert_int_equal(ggenerator_gradient_create(GGENERATOR_SPACE_UV, gvec3(1, 0, 0), 0.0, &t, &err), G_OK);
     GAffine2 uv = gaffine2_rotate(30.0);
     GMaterial *one[8];
     for (int i = 0; i < 2; i++) {

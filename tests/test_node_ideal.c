@@ -2,7 +2,7 @@
  * ray only the children with an ideal ray of their own answer (a glass's Fresnel reflectance, a mirror's, a
  * phong's `mirror`), and a child without one (lambert, a glossy phong lobe, fluorescent-phong, a translucent test
  * double) adds nothing; away from that pair, or in a blend without a ray, the result is the weighted sum, bit for
- * bit. In rgb, spectrum and bispectral, for reflection and refraction, through interpolate, spline and a GTexBlend
+ * bit. In rgb, spectrum and bispectral, for reflection and refraction, through interpolate, spline and a GNodeBlend
  * of three children; sampling weighs a non-delta direction on the ray with the children without a ray. */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -88,7 +88,7 @@ static const GMaterial *mat(Fix *f, const char *name)
 
 /* The weighted sum of the children in `use` (bit i: child i) as the blend forms it: the first into the sum and
  * scaled, the others added with their weights; refraction when transmit. */
-static void weighted(Fix *f, const GTexBlend *b, unsigned use, GVec3 in, GVec3 out, int transmit, GColor *sum)
+static void weighted(Fix *f, const GNodeBlend *b, unsigned use, GVec3 in, GVec3 out, int transmit, GColor *sum)
 {
     int first = 1;
     gcolor_black(sum);
@@ -120,7 +120,7 @@ static double brightness(const GColor *c) { return gcolor_brightness(c); }
 /* The node `name` against the weighted sum of its children `b` (the same weights): on its ray (and within the
  * 1e-6 cosine of it) only those in `ideal`, all of them when `ideal` is 0 (no child has a ray), and all of them
  * elsewhere. */
-static void check_node(Fix *f, const char *name, const GTexBlend *b, unsigned ideal, GVec3 out)
+static void check_node(Fix *f, const char *name, const GNodeBlend *b, unsigned ideal, GVec3 out)
 {
     const GMaterial *n = mat(f, name);
     unsigned all = (1u << b->n) - 1u;
@@ -158,7 +158,7 @@ static void test_blend_nodes(void **state)
 {
     Fix *f = *state;
     GVec3 out = gvec3(sin(40 * DEG) * cos(0.3), sin(40 * DEG) * sin(0.3), cos(40 * DEG));
-    GTexBlend b = {2, {mat(f, "fp"), mat(f, "glass")}, {1.0 - 0.3, 0.3}};
+    GNodeBlend b = {2, {mat(f, "fp"), mat(f, "glass")}, {1.0 - 0.3, 0.3}};
     check_node(f, "glass_fp", &b, 2u, out);
     /* the node's reflection on its ray is exactly 0.3 times the glass's own, which is not black */
     GVec3 mirror = gvec3(-out.x, -out.y, out.z);
@@ -167,12 +167,12 @@ static void test_blend_nodes(void **state)
     assert_int_equal(gcolor_scale(&f->want, &f->want, 0.3), G_OK);
     assert_int_equal(gmaterial_reflection(mat(f, "glass_fp"), &f->sp, mirror, &f->light, out, &f->got), G_OK);
     assert_same(&f->got, &f->want, "glass_fp: 0.3 glass");
-    GTexBlend s = {2, {mat(f, "ll"), mat(f, "glass")}, {1.0 - 0.6, 0.6}};
+    GNodeBlend s = {2, {mat(f, "ll"), mat(f, "glass")}, {1.0 - 0.6, 0.6}};
     check_node(f, "ll_glass", &s, 2u, out);
     /* a B-spline segment of four (t = 0.4: x = 1.2, the spline's own arithmetic), one with a mirror term: on its
      * ray pm's mirror alone, the glossy lobes, the lambert and fluorescent-phong dropping out */
     double x = 0.4 * 3, fr = x - 1, f2 = fr * fr, f3 = f2 * fr;
-    GTexBlend g = {4,
+    GNodeBlend g = {4,
                    {mat(f, "gl"), mat(f, "fp"), mat(f, "ll"), mat(f, "pm")},
                    {(1.0 - fr) * (1.0 - fr) * (1.0 - fr) / 6.0, (3.0 * f3 - 6.0 * f2 + 4.0) / 6.0,
                     (-3.0 * f3 + 3.0 * f2 + 3.0 * fr + 1.0) / 6.0, f3 / 6.0}};
@@ -190,13 +190,13 @@ static void test_blend_three(void **state)
                                   {mat(f, "ll"), mat(f, "gl"), mat(f, "fp")}};
     unsigned ideal[] = {6u, 2u, 7u};
     for (int c = 0; c < 3; c++) {
-        GTexBlend b = {3, {kids[c][0], kids[c][1], kids[c][2]}, {0.5, 0.3, 0.2}};
-        assert_int_equal(gtexblend_reflection(&b, &f->sp, mirror, &f->light, out, &f->got), G_OK);
+        GNodeBlend b = {3, {kids[c][0], kids[c][1], kids[c][2]}, {0.5, 0.3, 0.2}};
+        assert_int_equal(gnode_blend_reflection(&b, &f->sp, mirror, &f->light, out, &f->got), G_OK);
         weighted(f, &b, ideal[c], mirror, out, 0, &f->want);
         assert_same(&f->got, &f->want, "three children on the ray");
         /* the result may alias the light */
         assert_int_equal(gcolor_copy(&f->tmp, &f->light), G_OK);
-        assert_int_equal(gtexblend_reflection(&b, &f->sp, mirror, &f->tmp, out, &f->tmp), G_OK);
+        assert_int_equal(gnode_blend_reflection(&b, &f->sp, mirror, &f->tmp, out, &f->tmp), G_OK);
         assert_same(&f->tmp, &f->want, "three children on the ray, in place");
     }
 }
@@ -208,16 +208,16 @@ static void test_blend_refraction(void **state)
     Fix *f = *state;
     CountMat *tr = countmat_new(f->model, 0.4, 0.3, 0.2);
     assert_non_null(tr);
-    GTexBlend b = {2, {&tr->base, mat(f, "glass")}, {0.4, 0.6}};
+    GNodeBlend b = {2, {&tr->base, mat(f, "glass")}, {0.4, 0.6}};
     GVec3 out = gvec3(sin(35 * DEG), 0.0, cos(35 * DEG)), in;
     assert_int_equal(goptics_refract(gvec3_neg(out), gvec3(0, 0, 1), 1.0 / 1.5, &in), 1);
-    assert_int_equal(gtexblend_refraction(&b, &f->sp, in, &f->light, &f->ri, out, &f->got), G_OK);
+    assert_int_equal(gnode_blend_refraction(&b, &f->sp, in, &f->light, &f->ri, out, &f->got), G_OK);
     weighted(f, &b, 2u, in, out, 1, &f->want);
     assert_true(brightness(&f->want) > 0.3); /* 0.6 (1 - F) */
     assert_same(&f->got, &f->want, "refraction on the glass's ray");
     assert_int_equal(tr->calls[GNODE_REFRACTION], 0); /* not even asked */
     GVec3 other = gvec3_normalize(gvec3(-0.1, 0.2, -0.9));
-    assert_int_equal(gtexblend_refraction(&b, &f->sp, other, &f->light, &f->ri, out, &f->got), G_OK);
+    assert_int_equal(gnode_blend_refraction(&b, &f->sp, other, &f->light, &f->ri, out, &f->got), G_OK);
     weighted(f, &b, 3u, other, out, 1, &f->want);
     assert_same(&f->got, &f->want, "refraction away from the ray");
     gmaterial_unref(&tr->base);
@@ -228,11 +228,11 @@ static void test_no_calls_off_the_ray(void **state)
 {
     Fix *f = *state;
     CountMat *a = countmat_new(f->model, 0.2, 0.2, 0.2), *c = countmat_new(f->model, 0.5, 0.5, 0.5);
-    GTexBlend b = {2, {&a->base, &c->base}, {0.25, 0.75}};
+    GNodeBlend b = {2, {&a->base, &c->base}, {0.25, 0.75}};
     GVec3 out = gvec3(0.0, 0.6, 0.8), mirror = gvec3(0.0, -0.6, 0.8);
-    assert_int_equal(gtexblend_reflection(&b, &f->sp, gvec3(0.6, 0.0, 0.8), &f->light, out, &f->got), G_OK);
+    assert_int_equal(gnode_blend_reflection(&b, &f->sp, gvec3(0.6, 0.0, 0.8), &f->light, out, &f->got), G_OK);
     assert_int_equal(a->calls[GNODE_REFLECTION_DIR] + c->calls[GNODE_REFLECTION_DIR], 0);
-    assert_int_equal(gtexblend_reflection(&b, &f->sp, mirror, &f->light, out, &f->got), G_OK);
+    assert_int_equal(gnode_blend_reflection(&b, &f->sp, mirror, &f->light, out, &f->got), G_OK);
     assert_int_equal(a->calls[GNODE_REFLECTION_DIR], 1);
     assert_int_equal(c->calls[GNODE_REFLECTION_DIR], 1);
     weighted(f, &b, 3u, mirror, out, 0, &f->want); /* neither has a ray: both answer */
@@ -276,10 +276,10 @@ static void test_sample_on_the_ray(void **state)
     GMaterial *spike = calloc(1, sizeof *spike);
     assert_non_null(spike);
     assert_int_equal(gmaterial_init(spike, &spike_class, f->model, NULL), G_OK);
-    GTexBlend b = {2, {spike, mat(f, "glass")}, {0.4, 0.6}};
+    GNodeBlend b = {2, {spike, mat(f, "glass")}, {0.4, 0.6}};
     GVec3 out = gvec3(0.0, sin(30 * DEG), cos(30 * DEG));
     GMaterialSample s;
-    assert_int_equal(gtexblend_sample(&b, &f->sp, out, &f->ri, 0.1, 0.5, &s, &f->got), 1); /* u1 < 0.4: spike */
+    assert_int_equal(gnode_blend_sample(&b, &f->sp, out, &f->ri, 0.1, 0.5, &s, &f->got), 1); /* u1 < 0.4: spike */
     assert_int_equal(s.flags, GSAMPLE_REFLECT);
     assert_true(fabs(s.pdf - 0.4 * 50.0) < 1e-12);
     GColor white = f->tmp;

@@ -257,12 +257,12 @@ static void test_reference_chain(void **state)
     (void)state;
     /* at the limit: n255 is 256 deep; 0.8 times 0.5^127 */
     Text t = {0};
-    chain(&t, GTEXNODE_MAX_DEPTH - 1);
+    chain(&t, GNODE_MAX_DEPTH - 1);
     GLibrary *lib = load_ok(&t);
     GMaterial *top = glibrary_material(lib, "n255");
     assert_non_null(top);
-    assert_int_equal(top->depth, GTEXNODE_MAX_DEPTH);
-    assert_int_equal(top->cost, GTEXNODE_MAX_DEPTH);
+    assert_int_equal(top->depth, GNODE_MAX_DEPTH);
+    assert_int_equal(top->cost, GNODE_MAX_DEPTH);
     assert_near(diffuse_r(top) / (0.8 * pow(0.5, 127)), 1.0, 1e-5);
     glibrary_destroy(lib);
     free(t.s);
@@ -325,13 +325,13 @@ static void test_cost_bounds_calls(void **state)
     assert_int_equal(m->cost, 8191);
     assert_near(diffuse_r(m), 0.5, 1e-6);
     assert_int_equal(leaf->calls[GNODE_DIFFUSE], 4096); /* 2^12 leaves; with the 4095 nodes, 8191 calls */
-    /* a wide select over 1000 towers: it evaluates one at a time, the cost counts GTEX_BLEND_MAX of them */
+    /* a wide select over 1000 towers: it evaluates one at a time, the cost counts GNODE_BLEND_MAX of them */
     GMaterial *kids[1000];
     for (int i = 0; i < 1000; i++)
         kids[i] = m;
     GMaterial *sel;
     assert_int_equal(gnode_select_create(kids, 1000, &g->base, &sel, &err), G_OK);
-    assert_int_equal(sel->cost, 1 + GTEX_BLEND_MAX * 8191);
+    assert_int_equal(sel->cost, 1 + GNODE_BLEND_MAX * 8191);
     assert_int_equal(sel->depth, 14);
     gmaterial_unref(sel);
     gmaterial_unref(m);

@@ -40,9 +40,9 @@ static void test_checker_parity(void **state)
     (void)state;
     GGenerator *c2, *c4, *c3;
     GError err;
-    assert_int_equal(ggen_checker_create(2, 1.0, &c2, &err), G_OK);
-    assert_int_equal(ggen_checker_create(2, 4.0, &c4, &err), G_OK);
-    assert_int_equal(ggen_checker_create(3, 1.0, &c3, &err), G_OK);
+    assert_int_equal(ggenerator_checker_create(2, 1.0, &c2, &err), G_OK);
+    assert_int_equal(ggenerator_checker_create(2, 4.0, &c4, &err), G_OK);
+    assert_int_equal(ggenerator_checker_create(3, 1.0, &c3, &err), G_OK);
     assert_string_equal(ggenerator_name(c2), "checker");
     const double pts[][3] = {{0.5, 0.5, 0}, {1.5, 0.5, 1}, {-0.5, 0.5, 1}, {-0.5, -0.5, 0},
                              {2.5, 3.5, 1}, {10.2, 7.9, 1}, {-3.1, 2.2, 0}};
@@ -159,7 +159,7 @@ static void test_perlin_noise(void **state)
     GNoiseParams p = {.frequency = 2.5, .seed = 9};
     GGenerator *g;
     GError err;
-    assert_int_equal(ggen_perlin_create(&p, &g, &err), G_OK);
+    assert_int_equal(ggenerator_perlin_create(&p, &g, &err), G_OK);
     assert_int_equal(g->space, GGENERATOR_SPACE_OBJECT);
     GSurfPoint sp;
     gsurfpoint_init(&sp, NULL, NULL);
@@ -185,9 +185,9 @@ static void test_fractals(void **state)
     GError err;
     GGenerator *fbm, *turb, *fbm2;
     GNoiseParams p = {.octaves = 6, .seed = 3};
-    assert_int_equal(ggen_fbm_create(&p, &fbm, &err), G_OK);
-    assert_int_equal(ggen_fbm_create(&p, &fbm2, &err), G_OK);
-    assert_int_equal(ggen_turbulence_create(&p, &turb, &err), G_OK);
+    assert_int_equal(ggenerator_fbm_create(&p, &fbm, &err), G_OK);
+    assert_int_equal(ggenerator_fbm_create(&p, &fbm2, &err), G_OK);
+    assert_int_equal(ggenerator_turbulence_create(&p, &turb, &err), G_OK);
     uint64_t s = 7;
     double tsum = 0, fsum = 0;
     const int n = 20000;
@@ -217,14 +217,14 @@ static void test_wood_and_marble(void **state)
     GGenerator *wood, *plain, *marble, *veined;
     GNoiseParams p = {.frequency = 2.0, .seed = 1};
     /* without turbulence: rings of period 1/4 in the radius, 0 at each ring's start, 1 at its peak */
-    assert_int_equal(ggen_wood_create(&p, 4.0, 0.0, 0.25, &plain, &err), G_OK);
+    assert_int_equal(ggenerator_wood_create(&p, 4.0, 0.0, 0.25, &plain, &err), G_OK);
     for (int k = 1; k < 6; k++) {
         double r = k / 4.0;
         assert_float_equal(at_xyz(plain, gvec3(r * cos(k), r * sin(k), 0.3 * k)), 0.0, 1e-9);
         assert_float_equal(at_xyz(plain, gvec3(r + 0.75 / 4.0, 0, 0)), 1.0, 1e-9);
         assert_float_equal(at_xyz(plain, gvec3(0, r + 0.375 / 4.0, 5.0)), 0.5, 1e-9);
     }
-    assert_int_equal(ggen_wood_create(&p, 4.0, 0.3, 0.0, &wood, &err), G_OK);
+    assert_int_equal(ggenerator_wood_create(&p, 4.0, 0.3, 0.0, &wood, &err), G_OK);
     uint64_t s = 11;
     double max_step = 0;
     for (int i = 0; i < 20000; i++) {
@@ -236,7 +236,7 @@ static void test_wood_and_marble(void **state)
     assert_true(max_step < 1e-4); /* continuous: no jumps at ring boundaries */
 
     /* marble without turbulence is the plain sine; with it, a displaced sine in [0, 1] */
-    assert_int_equal(ggen_marble_create(&p, 3.0, 0.0, &marble, &err), G_OK);
+    assert_int_equal(ggenerator_marble_create(&p, 3.0, 0.0, &marble, &err), G_OK);
     for (int i = 0; i < 50; i++) {
         double x = uniform(&s, -2, 2);
         assert_float_equal(at_xyz(marble, gvec3(x, 1.0, 2.0)), 0.5 + 0.5 * sin(2 * M_PI * 3.0 * x), 1e-12);
@@ -249,7 +249,7 @@ static void test_wood_and_marble(void **state)
     assert_int_equal(ggenerator_gradient(marble, &sp, &g), G_OK);
     assert_float_equal(g.x, 0.5 * cos(2 * M_PI * 3.0 * 0.13) * 2 * M_PI * 3.0, 1e-4);
     assert_float_equal(g.y, 0.0, 1e-9);
-    assert_int_equal(ggen_marble_create(&p, 3.0, 1.5, &veined, &err), G_OK);
+    assert_int_equal(ggenerator_marble_create(&p, 3.0, 1.5, &veined, &err), G_OK);
     for (int i = 0; i < 5000; i++) {
         double v = at_xyz(veined, gvec3(uniform(&s, -2, 2), uniform(&s, -2, 2), uniform(&s, -2, 2)));
         assert_true(v >= 0.0 && v <= 1.0);
@@ -268,10 +268,10 @@ static void test_analytic_gradients(void **state)
     GError err;
     GNoiseParams p = {.frequency = 1.7, .octaves = 5, .seed = 21};
     GGenerator *g[4];
-    assert_int_equal(ggen_fbm_create(&p, &g[0], &err), G_OK);
-    assert_int_equal(ggen_wood_create(&p, 3.0, 0.4, 0.3, &g[1], &err), G_OK);
-    assert_int_equal(ggen_turbulence_create(&p, &g[2], &err), G_OK);
-    assert_int_equal(ggen_marble_create(&p, 1.5, 0.8, &g[3], &err), G_OK);
+    assert_int_equal(ggenerator_fbm_create(&p, &g[0], &err), G_OK);
+    assert_int_equal(ggenerator_wood_create(&p, 3.0, 0.4, 0.3, &g[1], &err), G_OK);
+    assert_int_equal(ggenerator_turbulence_create(&p, &g[2], &err), G_OK);
+    assert_int_equal(ggenerator_marble_create(&p, 1.5, 0.8, &g[3], &err), G_OK);
     const int smooth[4] = {1, 1, 0, 0};
     uint64_t s = 99;
     for (int k = 0; k < 4; k++) {
@@ -312,10 +312,10 @@ static void test_surface_constant_gradient(void **state)
     (void)state;
     GError err;
     GGenerator *surf, *k, *field, *uvfield;
-    assert_int_equal(ggen_surface_create(&surf, &err), G_OK);
-    assert_int_equal(ggen_constant_create(0.25, &k, &err), G_OK);
-    assert_int_equal(ggen_gradient_create(GGENERATOR_SPACE_OBJECT, gvec3(1, -2, 0.5), 3.0, &field, &err), G_OK);
-    assert_int_equal(ggen_gradient_create(GGENERATOR_SPACE_UV, gvec3(0.5, 2, 9), 0.0, &uvfield, &err), G_OK);
+    assert_int_equal(ggenerator_surface_create(&surf, &err), G_OK);
+    assert_int_equal(ggenerator_constant_create(0.25, &k, &err), G_OK);
+    assert_int_equal(ggenerator_gradient_create(GGENERATOR_SPACE_OBJECT, gvec3(1, -2, 0.5), 3.0, &field, &err), G_OK);
+    assert_int_equal(ggenerator_gradient_create(GGENERATOR_SPACE_UV, gvec3(0.5, 2, 9), 0.0, &uvfield, &err), G_OK);
     GSurfPoint sp;
     plane_point(&sp, NULL, NULL, 0.2, 0.6);
     sp.object_point = gvec3(1, 1, 2);
@@ -375,22 +375,22 @@ static void test_bad_parameters(void **state)
     (void)state;
     GError err;
     GGenerator *g = (GGenerator *)1;
-    assert_int_equal(ggen_checker_create(4, 1.0, &g, &err), G_ERR_INVALID);
+    assert_int_equal(ggenerator_checker_create(4, 1.0, &g, &err), G_ERR_INVALID);
     assert_null(g);
     assert_non_null(strstr(err.message, "dims"));
-    assert_int_equal(ggen_checker_create(2, 0.0, &g, &err), G_ERR_INVALID);
+    assert_int_equal(ggenerator_checker_create(2, 0.0, &g, &err), G_ERR_INVALID);
     assert_non_null(strstr(err.message, "frequency"));
-    assert_int_equal(ggen_constant_create(NAN, &g, &err), G_ERR_INVALID);
+    assert_int_equal(ggenerator_constant_create(NAN, &g, &err), G_ERR_INVALID);
     GNoiseParams p = {.octaves = 40};
-    assert_int_equal(ggen_fbm_create(&p, &g, &err), G_ERR_INVALID);
+    assert_int_equal(ggenerator_fbm_create(&p, &g, &err), G_ERR_INVALID);
     assert_non_null(strstr(err.message, "octaves"));
     p = (GNoiseParams){.frequency = -1};
-    assert_int_equal(ggen_perlin_create(&p, &g, &err), G_ERR_INVALID);
-    assert_int_equal(ggen_wood_create(NULL, 4.0, 0.1, 1.5, &g, &err), G_ERR_INVALID);
+    assert_int_equal(ggenerator_perlin_create(&p, &g, &err), G_ERR_INVALID);
+    assert_int_equal(ggenerator_wood_create(NULL, 4.0, 0.1, 1.5, &g, &err), G_ERR_INVALID);
     assert_non_null(strstr(err.message, "latewood"));
-    assert_int_equal(ggen_wood_create(NULL, 0.0, 0.1, 0.2, &g, &err), G_ERR_INVALID);
-    assert_int_equal(ggen_marble_create(NULL, INFINITY, 0.1, &g, &err), G_ERR_INVALID);
-    assert_int_equal(ggen_gradient_create(GGENERATOR_SPACE_UV, gvec3(NAN, 0, 0), 0, &g, &err), G_ERR_INVALID);
+    assert_int_equal(ggenerator_wood_create(NULL, 0.0, 0.1, 0.2, &g, &err), G_ERR_INVALID);
+    assert_int_equal(ggenerator_marble_create(NULL, INFINITY, 0.1, &g, &err), G_ERR_INVALID);
+    assert_int_equal(ggenerator_gradient_create(GGENERATOR_SPACE_UV, gvec3(NAN, 0, 0), 0, &g, &err), G_ERR_INVALID);
     /* a class of another interface version is refused */
     GGeneratorClass future = countgen_class;
     future.abi_version = GGENERATOR_ABI_VERSION + 1;

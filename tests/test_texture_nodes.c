@@ -185,7 +185,7 @@ static void test_select_by_surface(void **state)
     GGenerator *surf;
     GMaterial *n;
     GError err;
-    assert_int_equal(ggen_surface_create(&surf, &err), G_OK);
+    assert_int_equal(ggenerator_surface_create(&surf, &err), G_OK);
     assert_int_equal(gnode_select_create(kids, 3, surf, &n, &err), G_OK);
     const int faces[] = {0, 1, 2, -3, 99};
     const int want[] = {0, 1, 2, 0, 2}; /* out of range clamps */
@@ -299,7 +299,7 @@ static void test_bump_analytic_tilt(void **state)
         GGenerator *h;
         double k = slopes[i], s = strengths[i];
         /* h = k u in (u, v) */
-        assert_int_equal(ggen_gradient_create(GGENERATOR_SPACE_UV, gvec3(k, 0, 0), 0.0, &h, &err), G_OK);
+        assert_int_equal(ggenerator_gradient_create(GGENERATOR_SPACE_UV, gvec3(k, 0, 0), 0.0, &h, &err), G_OK);
         assert_int_equal(gnode_bump_create(lam, h, s, &bump, &err), G_OK);
         plane_point(&f->sp, f->rgb, f->scratch, 0.3, 0.7);
         f->sp.material = bump;
@@ -330,7 +330,7 @@ static void test_bump_analytic_tilt(void **state)
     }
     /* a solid height field along x, through the object tangents (rotated object: object x is world y) */
     GGenerator *h;
-    assert_int_equal(ggen_gradient_create(GGENERATOR_SPACE_OBJECT, gvec3(0.5, 0, 0), 0.0, &h, &err), G_OK);
+    assert_int_equal(ggenerator_gradient_create(GGENERATOR_SPACE_OBJECT, gvec3(0.5, 0, 0), 0.0, &h, &err), G_OK);
     assert_int_equal(gnode_bump_create(lam, h, 1.0, &bump, &err), G_OK);
     plane_point(&f->sp, f->rgb, f->scratch, 0.3, 0.7);
     f->sp.object_dpdu = gvec3(0, 1, 0);
@@ -345,7 +345,7 @@ static void test_bump_analytic_tilt(void **state)
 
     /* a noise height field: the normal is the finite-difference normal of the displaced surface */
     GNoiseParams np = {.space = GGENERATOR_SPACE_UV, .frequency = 3.0, .seed = 7};
-    assert_int_equal(ggen_perlin_create(&np, &h, &err), G_OK);
+    assert_int_equal(ggenerator_perlin_create(&np, &h, &err), G_OK);
     assert_int_equal(gnode_bump_create(lam, h, 0.2, &bump, &err), G_OK);
     plane_point(&f->sp, f->rgb, f->scratch, 0.37, 0.71);
     assert_int_equal(gmaterial_normal(bump, &f->sp, &n), G_OK);
@@ -377,8 +377,8 @@ static void test_scale(void **state)
     GGenerator *half, *zero;
     GMaterial *n, *nz;
     GError err;
-    assert_int_equal(ggen_constant_create(0.5, &half, &err), G_OK);
-    assert_int_equal(ggen_constant_create(0.0, &zero, &err), G_OK);
+    assert_int_equal(ggenerator_constant_create(0.5, &half, &err), G_OK);
+    assert_int_equal(ggenerator_constant_create(0.0, &zero, &err), G_OK);
     assert_int_equal(gnode_scale_create(&a->base, half, &n, &err), G_OK);
     assert_int_equal(gmaterial_diffuse(n, &f->sp, &f->c), G_OK);
     double rgb[3];
@@ -408,7 +408,7 @@ static void test_scale_negative_factor(void **state)
     GGenerator *neg;
     GMaterial *n;
     GError err;
-    assert_int_equal(ggen_constant_create(-0.5, &neg, &err), G_OK);
+    assert_int_equal(ggenerator_constant_create(-0.5, &neg, &err), G_OK);
     assert_int_equal(gnode_scale_create(&a->base, neg, &n, &err), G_OK);
     f->sp.material = n;
     GVec3 in = gvec3(0, 0.6, 0.8), out = gvec3(0, -0.6, 0.8);
@@ -435,7 +435,7 @@ static void test_bad_input(void **state)
     GError err;
     GMaterial *n = (GMaterial *)1;
     GGenerator *g;
-    assert_int_equal(ggen_constant_create(0.5, &g, &err), G_OK);
+    assert_int_equal(ggenerator_constant_create(0.5, &g, &err), G_OK);
     CountMat *a = countmat_new(f->rgb, 0.5, 0.5, 0.5);
     GMaterial *one[1] = {&a->base};
 
@@ -479,9 +479,9 @@ static int build_tree(const GColorModel *m, GError *err)
     GGenerator *g = NULL, *h = NULL;
     GMaterial *i = NULL, *s = NULL, *bump = NULL, *t = NULL, *sel = NULL;
     GNoiseParams np = {0};
-    int rc = ggen_perlin_create(&np, &g, err);
+    int rc = ggenerator_perlin_create(&np, &g, err);
     if (rc == G_OK)
-        rc = ggen_checker_create(2, 4.0, &h, err);
+        rc = ggenerator_checker_create(2, 4.0, &h, err);
     if (rc == G_OK)
         rc = gnode_interpolate_create(&a->base, &b->base, h, &i, err);
     GMaterial *kids[3] = {&a->base, i, &b->base};

@@ -88,7 +88,7 @@ static void test_csg_operations_and_transforms(void **state)
 
     /* the generator reads the object-space point */
     GGenerator *g;
-    assert_int_equal(ggen_csg_create(d, GGENERATOR_SPACE_OBJECT, &g, &err), G_OK);
+    assert_int_equal(ggenerator_csg_create(d, GGENERATOR_SPACE_OBJECT, &g, &err), G_OK);
     GSurfPoint sp;
     gsurfpoint_init(&sp, NULL, NULL);
     sp.point = gvec3(0, 1, 0); /* world point ignored */
@@ -123,7 +123,7 @@ static void test_csg_bad_input(void **state)
     assert_int_equal(gcsg_sphere(1.0, &a, &err), G_OK);
     assert_int_equal(gcsg_combine(GSHAPE_UNION, a, NULL, &s, &err), G_ERR_INVALID); /* frees a */
     GGenerator *g;
-    assert_int_equal(ggen_csg_create(NULL, GGENERATOR_SPACE_OBJECT, &g, &err), G_ERR_INVALID);
+    assert_int_equal(ggenerator_csg_create(NULL, GGENERATOR_SPACE_OBJECT, &g, &err), G_ERR_INVALID);
 }
 
 /* ---- CPG ---- */
@@ -215,7 +215,7 @@ static void test_cpg_nurbs_circle_is_exact(void **state)
 
     /* the generator reads (u, v) */
     GGenerator *g;
-    assert_int_equal(ggen_cpg_create(c, &g, &err), G_OK);
+    assert_int_equal(ggenerator_cpg_create(c, &g, &err), G_OK);
     GSurfPoint sp;
     gsurfpoint_init(&sp, NULL, NULL);
     sp.u = 3.5;
@@ -370,7 +370,7 @@ static void test_cpg_bad_input(void **state)
     assert_int_equal(gcpg_path_close(p, &s, &err), G_ERR_INVALID);
     assert_non_null(strstr(err.message, "no edges"));
     GGenerator *g;
-    assert_int_equal(ggen_cpg_create(NULL, &g, &err), G_ERR_INVALID);
+    assert_int_equal(ggenerator_cpg_create(NULL, &g, &err), G_ERR_INVALID);
     gcpg_path_destroy(NULL);
     gcpg_destroy(NULL);
 }

@@ -22,7 +22,7 @@ static GMaterial *checker_tree(int dim, CountMat *a, CountMat *b, GGenerator **c
 {
     GMaterial *pat;
     GError err;
-    assert_int_equal(ggen_checker_create(dim, 1.0, chk, &err), G_OK);
+    assert_int_equal(ggenerator_checker_create(dim, 1.0, chk, &err), G_OK);
     assert_int_equal(gnode_interpolate_create(&a->base, &b->base, *chk, &pat, &err), G_OK);
     return pat;
 }
@@ -90,7 +90,7 @@ static void test_transform_moves_patterns(void **state)
     /* bumps under a rotation turn with the pattern: h = u rotated by 90 degrees rises along v */
     GGenerator *h;
     GMaterial *bump;
-    assert_int_equal(ggen_gradient_create(GGENERATOR_SPACE_UV, gvec3(1, 0, 0), 0, &h, &err), G_OK);
+    assert_int_equal(ggenerator_gradient_create(GGENERATOR_SPACE_UV, gvec3(1, 0, 0), 0, &h, &err), G_OK);
     assert_int_equal(gnode_bump_create(&white->base, h, 1.0, &bump, &err), G_OK);
     assert_int_equal(gnode_transform_create(bump, &r, NULL, &moved, &err), G_OK);
     plane_point(&f->sp, f->rgb, f->scratch, 0.2, 0.3);
@@ -219,7 +219,7 @@ static void test_transform_uv_keeps_solid_bumps(void **state)
     for (int s = 0; s < 2; s++) {
         GGenerator *h;
         GMaterial *bump;
-        assert_int_equal(ggen_gradient_create(spaces[s], gvec3(1, 0.5, 0), 0, &h, &err), G_OK);
+        assert_int_equal(ggenerator_gradient_create(spaces[s], gvec3(1, 0.5, 0), 0, &h, &err), G_OK);
         assert_int_equal(gnode_bump_create(&white->base, h, 0.8, &bump, &err), G_OK);
         for (int own = 0; own < 2; own++) { /* own: the renderer gives object tangents (object = world turned) */
             plane_point(&f->sp, f->rgb, f->scratch, 0.2, 0.3);

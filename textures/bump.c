@@ -11,7 +11,7 @@
 #include <string.h>
 
 typedef struct Bump {
-    GTexChild node; /* base and child; first */
+    GNodeChild node; /* base and child; first */
     GGenerator *height;
     double strength;
 } Bump;
@@ -68,41 +68,41 @@ static const GMaterialClass bump_class = {
     .name = "bump",
     .description = "normal perturbed by the gradient of a height field (Blinn)",
     .destroy = bump_destroy,
-    .reflection = gtexchild_reflection,
-    .refraction = gtexchild_refraction,
-    .refraction_index = gtexchild_refraction_index,
-    .reflection_dir = gtexchild_reflection_dir,
-    .refraction_dir = gtexchild_refraction_dir,
-    .emission = gtexchild_emission,
-    .ambient = gtexchild_ambient,
-    .absorption = gtexchild_absorption,
+    .reflection = gnode_child_reflection,
+    .refraction = gnode_child_refraction,
+    .refraction_index = gnode_child_refraction_index,
+    .reflection_dir = gnode_child_reflection_dir,
+    .refraction_dir = gnode_child_refraction_dir,
+    .emission = gnode_child_emission,
+    .ambient = gnode_child_ambient,
+    .absorption = gnode_child_absorption,
     .normal = bump_normal,
-    .diffuse = gtexchild_diffuse,
-    .opaque = gtexchild_opaque,
-    .sample = gtexchild_sample, /* the child samples about the bumped normal, which it reads from sp */
-    .pdf = gtexchild_pdf,
-    .is_delta = gtexchild_is_delta,
+    .diffuse = gnode_child_diffuse,
+    .opaque = gnode_child_opaque,
+    .sample = gnode_child_sample, /* the child samples about the bumped normal, which it reads from sp */
+    .pdf = gnode_child_pdf,
+    .is_delta = gnode_child_is_delta,
 };
 
 int gnode_bump_create(GMaterial *child, GGenerator *height, double strength, GMaterial **out, GError *err)
 {
     *out = NULL;
     const GColorModel *model;
-    int rc = gtexnode_check("bump", &child, 1, height, 1, &model, err);
+    int rc = gnode_check("bump", &child, 1, height, 1, &model, err);
     if (rc != G_OK)
         return rc;
     if (!isfinite(strength))
         return gerror_set(err, G_ERR_INVALID, "bump: strength must be finite, got %g", strength);
     GMaterial *mat;
-    rc = gtexchild_new(&bump_class, child, height, 1, sizeof(Bump), &mat, err);
+    rc = gnode_child_new(&bump_class, child, height, 1, sizeof(Bump), &mat, err);
     if (rc != G_OK)
         return rc;
     Bump *b = (Bump *)mat;
     b->height = ggenerator_ref(height);
     b->strength = strength;
     /* reflection and diffuse colour: the child's at sp itself, whose cached shading normal (the bumped one when the
-     * bump is the point's material) the child's gmat_cos_in reads as the node's does */
-    gtexnode_inherit_lambertian_child(&b->node.base, child);
+     * bump is the point's material) the child's gmaterial_cos_in reads as the node's does */
+    gnode_inherit_lambertian_child(&b->node.base, child);
     *out = &b->node.base;
     return G_OK;
 }

@@ -59,11 +59,11 @@ static const GGeneratorClass checker_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "checker",
     .description = "checkerboard 0/1 in (u, v) (dims 2) or object space (dims 3), box-filtered",
-    .destroy = gtexgen_free,
+    .destroy = ggenerator_free,
     .value = checker_value,
 };
 
-int ggen_checker_create(int dims, double frequency, GGenerator **out, GError *err)
+int ggenerator_checker_create(int dims, double frequency, GGenerator **out, GError *err)
 {
     *out = NULL;
     if (dims != 2 && dims != 3)
@@ -72,7 +72,7 @@ int ggen_checker_create(int dims, double frequency, GGenerator **out, GError *er
         return gerror_set(err, G_ERR_INVALID, "checker: frequency must be positive and finite, got %g", frequency);
     GGenerator *gen;
     GGeneratorSpace space = dims == 2 ? GGENERATOR_SPACE_UV : GGENERATOR_SPACE_OBJECT;
-    int rc = gtexgen_new(&checker_class, space, sizeof(Checker), &gen, err);
+    int rc = ggenerator_new(&checker_class, space, sizeof(Checker), &gen, err);
     if (rc != G_OK)
         return rc;
     Checker *c = (Checker *)gen;
@@ -102,7 +102,7 @@ static int parse_checker(GReader *r, const void *vtable, void **object, GError *
     if (rc < 0)
         return rc;
     GGenerator *g = NULL;
-    rc = ggen_checker_create((int)dims, f, &g, err);
+    rc = ggenerator_checker_create((int)dims, f, &g, err);
     return gtexparse_finish(r, rc, g, object, err);
 }
 

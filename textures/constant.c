@@ -29,18 +29,18 @@ static const GGeneratorClass constant_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "constant",
     .description = "the same value everywhere",
-    .destroy = gtexgen_free,
+    .destroy = ggenerator_free,
     .value = constant_value,
     .gradient = constant_gradient,
 };
 
-int ggen_constant_create(double value, GGenerator **out, GError *err)
+int ggenerator_constant_create(double value, GGenerator **out, GError *err)
 {
     *out = NULL;
     if (!isfinite(value))
         return gerror_set(err, G_ERR_INVALID, "constant: value must be finite, got %g", value);
     GGenerator *gen;
-    int rc = gtexgen_new(&constant_class, GGENERATOR_SPACE_NONE, sizeof(Constant), &gen, err);
+    int rc = ggenerator_new(&constant_class, GGENERATOR_SPACE_NONE, sizeof(Constant), &gen, err);
     if (rc != G_OK)
         return rc;
     Constant *c = (Constant *)gen;
@@ -63,7 +63,7 @@ static int parse_constant(GReader *r, const void *vtable, void **object, GError 
     if (rc < 0)
         return rc;
     GGenerator *g = NULL;
-    rc = ggen_constant_create(v, &g, err);
+    rc = ggenerator_constant_create(v, &g, err);
     return gtexparse_finish(r, rc, g, object, err);
 }
 

@@ -39,13 +39,13 @@ static const GGeneratorClass cpg_class = {
     .value = cpg_value,
 };
 
-int ggen_cpg_create(GCpgShape *root, GGenerator **out, GError *err)
+int ggenerator_cpg_create(GCpgShape *root, GGenerator **out, GError *err)
 {
     *out = NULL;
     if (!root)
         return gerror_set(err, G_ERR_INVALID, "cpg: no shape given");
     GGenerator *gen;
-    int rc = gtexgen_new(&cpg_class, GGENERATOR_SPACE_UV, sizeof(Cpg), &gen, err);
+    int rc = ggenerator_new(&cpg_class, GGENERATOR_SPACE_UV, sizeof(Cpg), &gen, err);
     if (rc != G_OK) {
         gcpg_destroy(root);
         return rc;
@@ -245,7 +245,7 @@ static int parse_cpg(GReader *r, const void *vtable, void **object, GError *err)
         return rc;
     }
     GGenerator *g = NULL;
-    rc = ggen_cpg_create(root, &g, err);
+    rc = ggenerator_cpg_create(root, &g, err);
     if (rc != G_OK)
         return greader_locate(r, err);
     *object = g;

@@ -39,7 +39,7 @@ static const GGeneratorClass csg_class = {
     .value = csg_value,
 };
 
-int ggen_csg_create(GCsgShape *root, GGeneratorSpace space, GGenerator **out, GError *err)
+int ggenerator_csg_create(GCsgShape *root, GGeneratorSpace space, GGenerator **out, GError *err)
 {
     *out = NULL;
     if (!root)
@@ -51,7 +51,7 @@ int ggen_csg_create(GCsgShape *root, GGeneratorSpace space, GGenerator **out, GE
     GGenerator *gen;
     if (space != GGENERATOR_SPACE_WORLD)
         space = GGENERATOR_SPACE_OBJECT;
-    int rc = gtexgen_new(&csg_class, space, sizeof(Csg), &gen, err);
+    int rc = ggenerator_new(&csg_class, space, sizeof(Csg), &gen, err);
     if (rc != G_OK) {
         gcsg_destroy(root);
         return rc;
@@ -169,7 +169,7 @@ static int parse_csg(GReader *r, const void *vtable, void **object, GError *err)
         return rc;
     }
     GGenerator *g = NULL;
-    rc = ggen_csg_create(root, space ? GGENERATOR_SPACE_WORLD : GGENERATOR_SPACE_OBJECT, &g, err);
+    rc = ggenerator_csg_create(root, space ? GGENERATOR_SPACE_WORLD : GGENERATOR_SPACE_OBJECT, &g, err);
     if (rc != G_OK)
         return greader_locate(r, err);
     *object = g;

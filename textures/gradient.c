@@ -33,12 +33,12 @@ static const GGeneratorClass gradient_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "gradient",
     .description = "linear field offset + slope . (u, v) or the point (height field or ramp)",
-    .destroy = gtexgen_free,
+    .destroy = ggenerator_free,
     .value = field_value,
     .gradient = field_gradient,
 };
 
-int ggen_gradient_create(GGeneratorSpace space, GVec3 slope, double offset, GGenerator **out, GError *err)
+int ggenerator_gradient_create(GGeneratorSpace space, GVec3 slope, double offset, GGenerator **out, GError *err)
 {
     *out = NULL;
     if (!isfinite(slope.x) || !isfinite(slope.y) || !isfinite(slope.z) || !isfinite(offset))
@@ -46,7 +46,7 @@ int ggen_gradient_create(GGeneratorSpace space, GVec3 slope, double offset, GGen
     if (space == GGENERATOR_SPACE_NONE)
         space = GGENERATOR_SPACE_OBJECT;
     GGenerator *gen;
-    int rc = gtexgen_new(&gradient_class, space, sizeof(Field), &gen, err);
+    int rc = ggenerator_new(&gradient_class, space, sizeof(Field), &gen, err);
     if (rc != G_OK)
         return rc;
     Field *f = (Field *)gen;
@@ -79,7 +79,7 @@ static int parse_gradient(GReader *r, const void *vtable, void **object, GError 
     if (rc < 0)
         return rc;
     GGenerator *g = NULL;
-    rc = ggen_gradient_create(space, slope, offset, &g, err);
+    rc = ggenerator_gradient_create(space, slope, offset, &g, err);
     return gtexparse_finish(r, rc, g, object, err);
 }
 

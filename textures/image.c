@@ -15,7 +15,7 @@
 #include <string.h>
 
 typedef struct Image {
-    GTexChild node; /* base and child; first */
+    GNodeChild node; /* base and child; first */
     GTextureSystem *ts;
     GTexFile *file;
     int srgb;
@@ -76,10 +76,10 @@ static int apply(const GMaterial *self, GSurfPoint *sp, GColor *result)
     int rc = texel(im, sp, rgb);
     if (rc != G_OK)
         return rc;
-    GTexTemps t;
-    gtextemps_init(&t);
+    GNodeTemps t;
+    gnode_temps_init(&t);
     GColor c;
-    rc = gtextemps_color(&t, sp, result->model, 0, &c);
+    rc = gnode_temps_color(&t, sp, result->model, 0, &c);
     if (rc == G_OK) {
         if (result->model == im->node.base.model) {
             rc = gcolor_scale(&c, &im->basis[0], rgb[0]);
@@ -93,39 +93,39 @@ static int apply(const GMaterial *self, GSurfPoint *sp, GColor *result)
     }
     if (rc == G_OK)
         rc = gcolor_mul(result, &c, result);
-    gtextemps_release(&t);
+    gnode_temps_release(&t);
     return rc;
 }
 
 static int image_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
                             GColor *result)
 {
-    int rc = gmaterial_reflection(gtexchild_of(self), sp, in, illum, out, result);
+    int rc = gmaterial_reflection(gnode_child_of(self), sp, in, illum, out, result);
     return rc != G_OK ? rc : apply(self, sp, result);
 }
 
 static int image_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
                             const GColor *rel_index, GVec3 out, GColor *result)
 {
-    int rc = gmaterial_refraction(gtexchild_of(self), sp, in, illum, rel_index, out, result);
+    int rc = gmaterial_refraction(gnode_child_of(self), sp, in, illum, rel_index, out, result);
     return rc != G_OK ? rc : apply(self, sp, result);
 }
 
 static int image_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result)
 {
-    int rc = gmaterial_emission(gtexchild_of(self), sp, out, result);
+    int rc = gmaterial_emission(gnode_child_of(self), sp, out, result);
     return rc != G_OK ? rc : apply(self, sp, result);
 }
 
 static int image_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
 {
-    int rc = gmaterial_ambient(gtexchild_of(self), sp, illum, result);
+    int rc = gmaterial_ambient(gnode_child_of(self), sp, illum, result);
     return rc != G_OK ? rc : apply(self, sp, result);
 }
 
 static int image_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
 {
-    int rc = gmaterial_diffuse(gtexchild_of(self), sp, result);
+    int rc = gmaterial_diffuse(gnode_child_of(self), sp, result);
     return rc != G_OK ? rc : apply(self, sp, result);
 }
 
@@ -133,7 +133,7 @@ static int image_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
 static int image_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
                         double u2, GMaterialSample *s, GColor *weight)
 {
-    int rc = gmaterial_sample(gtexchild_of(self), sp, out, rel_index, u1, u2, s, weight);
+    int rc = gmaterial_sample(gnode_child_of(self), sp, out, rel_index, u1, u2, s, weight);
     if (rc <= 0)
         return rc;
     rc = apply(self, sp, weight);
@@ -147,18 +147,18 @@ static const GMaterialClass image_class = {
     .destroy = image_destroy,
     .reflection = image_reflection,
     .refraction = image_refraction,
-    .refraction_index = gtexchild_refraction_index,
-    .reflection_dir = gtexchild_reflection_dir,
-    .refraction_dir = gtexchild_refraction_dir,
+    .refraction_index = gnode_child_refraction_index,
+    .reflection_dir = gnode_child_reflection_dir,
+    .refraction_dir = gnode_child_refraction_dir,
     .emission = image_emission,
     .ambient = image_ambient,
-    .absorption = gtexchild_absorption,
-    .normal = gtexchild_normal,
+    .absorption = gnode_child_absorption,
+    .normal = gnode_child_normal,
     .diffuse = image_diffuse,
-    .opaque = gtexchild_opaque,
+    .opaque = gnode_child_opaque,
     .sample = image_sample,
-    .pdf = gtexchild_pdf,
-    .is_delta = gtexchild_is_delta,
+    .pdf = gnode_child_pdf,
+    .is_delta = gnode_child_is_delta,
 };
 
 int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptions *opt, GMaterial **out,
@@ -170,7 +170,7 @@ int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptio
     if (opt)
         o = *opt;
     const GColorModel *model;
-    int rc = gtexnode_check("image", &child, 1, NULL, 0, &model, err);
+    int rc = gnode_check("image", &child, 1, NULL, 0, &model, err);
     if (rc != G_OK)
         return rc;
     if (!path || !path[0])
@@ -181,7 +181,7 @@ int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptio
     if (!(o.blur >= 0.0) || !isfinite(o.blur))
         return gerror_set(err, G_ERR_INVALID, "image '%s': blur must be >= 0, got %g", path, o.blur);
     GMaterial *mat;
-    rc = gtexchild_new(&image_class, child, NULL, 0, sizeof(Image), &mat, err);
+    rc = gnode_child_new(&image_class, child, NULL, 0, sizeof(Image), &mat, err);
     if (rc != G_OK)
         return rc;
     Image *im = (Image *)mat;
@@ -218,14 +218,14 @@ int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptio
         image_destroy(&im->node.base);
         return rc;
     }
-    gtexnode_inherit_no_emission(&im->node.base, &child, 1); /* the child's emission times a finite texel */
+    gnode_inherit_no_emission(&im->node.base, &child, 1); /* the child's emission times a finite texel */
     int vectors = im->basis[0].kind == GCOLOR_VECTOR && im->basis[1].kind == GCOLOR_VECTOR &&
                   im->basis[2].kind == GCOLOR_VECTOR;
     if (vectors) {
-        gtexnode_inherit_diagonal(&im->node.base, &child, 1); /* the child's pass-on times a texel colour */
+        gnode_inherit_diagonal(&im->node.base, &child, 1); /* the child's pass-on times a texel colour */
         /* reflection and diffuse colour: the child's at the same point times the same texel colour, a vector, so
          * texel * (diffuse * light) = (texel * diffuse) * light */
-        gtexnode_inherit_lambertian_child(&im->node.base, child);
+        gnode_inherit_lambertian_child(&im->node.base, child);
     }
     *out = &im->node.base;
     return G_OK;

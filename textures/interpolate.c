@@ -28,40 +28,40 @@ static void interp_destroy(GMaterial *self)
     gmem_free(n);
 }
 
-static void pick(const GMaterial *self, GSurfPoint *sp, GNodeMethod m, GTexBlend *blend)
+static void pick(const GMaterial *self, GSurfPoint *sp, GNodeMethod m, GNodeBlend *blend)
 {
     const Interp *n = (const Interp *)self;
     if (!sp || (n->only >= 0 && n->only != (int)m))
-        gtexblend_one(blend, n->a);
+        gnode_blend_one(blend, n->a);
     else
-        gtexblend_pair(blend, n->a, n->b, ggenerator_cached_value(n->t, sp));
+        gnode_blend_pair(blend, n->a, n->b, ggenerator_cached_value(n->t, sp));
 }
 
-static const GTexBlendClass interpolate_class = {
+static const GNodeBlendClass interpolate_class = {
     .base = {.abi_version = GMATERIAL_ABI_VERSION,
              .name = "interpolate",
              .description = "two children blended by a generator value in [0, 1]",
              .destroy = interp_destroy,
-             GTEXBLEND_NODE_METHODS},
+             GNODE_BLENDED_METHODS},
     .pick = pick,
 };
 
-static const GTexBlendClass interpolate_one_class = {
+static const GNodeBlendClass interpolate_one_class = {
     .base = {.abi_version = GMATERIAL_ABI_VERSION,
              .name = "interpolate-one",
              .description = "one method blended by a generator, the others from the first child",
              .destroy = interp_destroy,
-             GTEXBLEND_NODE_METHODS},
+             GNODE_BLENDED_METHODS},
     .pick = pick,
 };
 
-static int make(const GTexBlendClass *cls, GMaterial *a, GMaterial *b, GGenerator *t, int only, GMaterial **out,
+static int make(const GNodeBlendClass *cls, GMaterial *a, GMaterial *b, GGenerator *t, int only, GMaterial **out,
                 GError *err)
 {
     *out = NULL;
     GMaterial *children[2] = {a, b};
     GMaterial *node;
-    int rc = gtexnode_new_checked(&cls->base, children, 2, t, 1, sizeof(Interp), &node, err);
+    int rc = gnode_new_checked(&cls->base, children, 2, t, 1, sizeof(Interp), &node, err);
     if (rc != G_OK)
         return rc;
     Interp *n = (Interp *)node;
@@ -70,8 +70,8 @@ static int make(const GTexBlendClass *cls, GMaterial *a, GMaterial *b, GGenerato
     n->t = ggenerator_ref(t);
     n->only = only;
     if (only != GNODE_REFLECTION && only != GNODE_DIFFUSE) /* pick blends both alike, or gives a for both */
-        gtexnode_inherit_lambertian(node, children, 2);
-    gtexnode_inherit_no_uv(node, children, 2, t); /* reads the point only through t */
+        gnode_inherit_lambertian(node, children, 2);
+    gnode_inherit_no_uv(node, children, 2, t); /* reads the point only through t */
     *out = &n->base;
     return G_OK;
 }

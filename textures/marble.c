@@ -45,12 +45,12 @@ static const GGeneratorClass marble_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "marble",
     .description = "sine veins across x displaced by turbulence, in [0, 1]",
-    .destroy = gtexgen_free,
+    .destroy = ggenerator_free,
     .value = marble_value,
     .gradient = marble_gradient,
 };
 
-int ggen_marble_create(const GNoiseParams *p, double stripes, double turbulence, GGenerator **out, GError *err)
+int ggenerator_marble_create(const GNoiseParams *p, double stripes, double turbulence, GGenerator **out, GError *err)
 {
     *out = NULL;
     GNoiseParams q;
@@ -60,7 +60,7 @@ int ggen_marble_create(const GNoiseParams *p, double stripes, double turbulence,
     if (!isfinite(stripes) || !isfinite(turbulence))
         return gerror_set(err, G_ERR_INVALID, "marble: stripes and turbulence must be finite");
     GGenerator *gen;
-    rc = gtexgen_new(&marble_class, q.space, sizeof(Marble), &gen, err);
+    rc = ggenerator_new(&marble_class, q.space, sizeof(Marble), &gen, err);
     if (rc != G_OK)
         return rc;
     Marble *m = (Marble *)gen;
@@ -95,7 +95,7 @@ static int parse_marble(GReader *r, const void *vtable, void **object, GError *e
     if (rc < 0)
         return rc;
     GGenerator *g = NULL;
-    rc = ggen_marble_create(&p, stripes, turbulence, &g, err);
+    rc = ggenerator_marble_create(&p, stripes, turbulence, &g, err);
     return gtexparse_finish(r, rc, g, object, err);
 }
 

@@ -35,12 +35,12 @@ static const GGeneratorClass perlin_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "perlin",
     .description = "improved Perlin noise (2002) in [0, 1]",
-    .destroy = gtexgen_free,
+    .destroy = ggenerator_free,
     .value = perlin_value,
     .gradient = perlin_gradient,
 };
 
-int ggen_perlin_create(const GNoiseParams *p, GGenerator **out, GError *err)
+int ggenerator_perlin_create(const GNoiseParams *p, GGenerator **out, GError *err)
 {
     *out = NULL;
     GNoiseParams q;
@@ -48,7 +48,7 @@ int ggen_perlin_create(const GNoiseParams *p, GGenerator **out, GError *err)
     if (rc != G_OK)
         return rc;
     GGenerator *gen;
-    rc = gtexgen_new(&perlin_class, q.space, sizeof(Perlin), &gen, err);
+    rc = ggenerator_new(&perlin_class, q.space, sizeof(Perlin), &gen, err);
     if (rc != G_OK)
         return rc;
     Perlin *n = (Perlin *)gen;
@@ -65,7 +65,7 @@ static int parse_perlin(GReader *r, const void *vtable, void **object, GError *e
     if (rc < 0)
         return rc;
     GGenerator *g = NULL;
-    rc = ggen_perlin_create(&p, &g, err);
+    rc = ggenerator_perlin_create(&p, &g, err);
     return gtexparse_finish(r, rc, g, object, err);
 }
 

@@ -9,7 +9,7 @@
 #include <string.h>
 
 typedef struct Scale {
-    GTexChild node; /* base and child; first */
+    GNodeChild node; /* base and child; first */
     GGenerator *factor;
 } Scale;
 
@@ -42,7 +42,7 @@ static int scale_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, con
         gcolor_black(result);
         return G_OK;
     }
-    return finish(gmaterial_reflection(gtexchild_of(self), sp, in, illum, out, result), f, result);
+    return finish(gmaterial_reflection(gnode_child_of(self), sp, in, illum, out, result), f, result);
 }
 
 static int scale_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
@@ -53,7 +53,7 @@ static int scale_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, con
         gcolor_black(result);
         return G_OK;
     }
-    return finish(gmaterial_refraction(gtexchild_of(self), sp, in, illum, rel_index, out, result), f,
+    return finish(gmaterial_refraction(gnode_child_of(self), sp, in, illum, rel_index, out, result), f,
                   result);
 }
 
@@ -64,7 +64,7 @@ static int scale_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GCol
         gcolor_black(result);
         return G_OK;
     }
-    return finish(gmaterial_emission(gtexchild_of(self), sp, out, result), f, result);
+    return finish(gmaterial_emission(gnode_child_of(self), sp, out, result), f, result);
 }
 
 static int scale_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
@@ -74,7 +74,7 @@ static int scale_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *il
         gcolor_black(result);
         return G_OK;
     }
-    return finish(gmaterial_ambient(gtexchild_of(self), sp, illum, result), f, result);
+    return finish(gmaterial_ambient(gnode_child_of(self), sp, illum, result), f, result);
 }
 
 static int scale_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
@@ -84,14 +84,14 @@ static int scale_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
         gcolor_black(result);
         return G_OK;
     }
-    return finish(gmaterial_diffuse(gtexchild_of(self), sp, result), f, result);
+    return finish(gmaterial_diffuse(gnode_child_of(self), sp, result), f, result);
 }
 
 /* The child's direction and density; the weight times the factor, as reflection and refraction are. */
 static int scale_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
                         double u2, GMaterialSample *s, GColor *weight)
 {
-    int rc = gmaterial_sample(gtexchild_of(self), sp, out, rel_index, u1, u2, s, weight);
+    int rc = gmaterial_sample(gnode_child_of(self), sp, out, rel_index, u1, u2, s, weight);
     if (rc <= 0)
         return rc;
     rc = finish(G_OK, factor(self, sp), weight);
@@ -105,34 +105,34 @@ static const GMaterialClass scale_class = {
     .destroy = scale_destroy,
     .reflection = scale_reflection,
     .refraction = scale_refraction,
-    .refraction_index = gtexchild_refraction_index,
-    .reflection_dir = gtexchild_reflection_dir,
-    .refraction_dir = gtexchild_refraction_dir,
+    .refraction_index = gnode_child_refraction_index,
+    .reflection_dir = gnode_child_reflection_dir,
+    .refraction_dir = gnode_child_refraction_dir,
     .emission = scale_emission,
     .ambient = scale_ambient,
-    .absorption = gtexchild_absorption,
-    .normal = gtexchild_normal,
+    .absorption = gnode_child_absorption,
+    .normal = gnode_child_normal,
     .diffuse = scale_diffuse,
-    .opaque = gtexchild_opaque,
+    .opaque = gnode_child_opaque,
     .sample = scale_sample,
-    .pdf = gtexchild_pdf,
-    .is_delta = gtexchild_is_delta,
+    .pdf = gnode_child_pdf,
+    .is_delta = gnode_child_is_delta,
 };
 
 int gnode_scale_create(GMaterial *child, GGenerator *factor, GMaterial **out, GError *err)
 {
     *out = NULL;
     GMaterial *mat;
-    int rc = gtexchild_new(&scale_class, child, factor, 1, sizeof(Scale), &mat, err);
+    int rc = gnode_child_new(&scale_class, child, factor, 1, sizeof(Scale), &mat, err);
     if (rc != G_OK)
         return rc;
     Scale *s = (Scale *)mat;
     s->factor = ggenerator_ref(factor);
-    gtexnode_inherit_no_emission(&s->node.base, &child, 1); /* the child's emission times the factor */
-    gtexnode_inherit_diagonal(&s->node.base, &child, 1);    /* the child's pass-on times the factor */
-    gtexnode_inherit_no_uv(&s->node.base, &child, 1, factor); /* reads the point only through the factor */
+    gnode_inherit_no_emission(&s->node.base, &child, 1); /* the child's emission times the factor */
+    gnode_inherit_diagonal(&s->node.base, &child, 1);    /* the child's pass-on times the factor */
+    gnode_inherit_no_uv(&s->node.base, &child, 1, factor); /* reads the point only through the factor */
     /* reflection and diffuse colour: the child's at the same point times the same factor (both black at 0) */
-    gtexnode_inherit_lambertian_child(&s->node.base, child);
+    gnode_inherit_lambertian_child(&s->node.base, child);
     *out = &s->node.base;
     return G_OK;
 }

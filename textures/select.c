@@ -2,7 +2,7 @@
  *
  *   node NAME select { index GENERATOR  children { MATERIAL ... } }
  *
- * A blend node (generic/kit/node_kit.h) whose blend is always one child; its state is a GTexList (gen is the
+ * A blend node (generic/kit/node_kit.h) whose blend is always one child; its state is a GNodeList (gen is the
  * index). */
 #include <generic/kit/node_kit.h>
 #include <generic/plugin.h>
@@ -11,33 +11,33 @@
 #include <math.h>
 #include <string.h>
 
-static void pick(const GMaterial *self, GSurfPoint *sp, GNodeMethod m, GTexBlend *b)
+static void pick(const GMaterial *self, GSurfPoint *sp, GNodeMethod m, GNodeBlend *b)
 {
     (void)m;
-    const GTexList *s = (const GTexList *)self;
+    const GNodeList *s = (const GNodeList *)self;
     int i = 0;
     if (sp) {
         double v = floor(ggenerator_cached_value(s->gen, sp));
         i = !(v > 0.0) ? 0 : v >= s->n - 1 ? s->n - 1 : (int)v; /* NaN picks the first */
     }
-    gtexblend_one(b, s->children[i]);
+    gnode_blend_one(b, s->children[i]);
 }
 
-static const GTexBlendClass select_class = {
+static const GNodeBlendClass select_class = {
     .base = {.abi_version = GMATERIAL_ABI_VERSION,
              .name = "select",
              .description = "one of n children picked by an integer generator (e.g. the surface index)",
-             .destroy = gtexlist_destroy,
-             GTEXBLEND_NODE_METHODS},
+             .destroy = gnode_list_destroy,
+             GNODE_BLENDED_METHODS},
     .pick = pick,
 };
 
 int gnode_select_create(GMaterial *const *children, int n, GGenerator *index, GMaterial **out, GError *err)
 {
-    int rc = gtexlist_new(&select_class.base, children, n, index, sizeof(GTexList), out, err);
+    int rc = gnode_list_new(&select_class.base, children, n, index, sizeof(GNodeList), out, err);
     if (rc == G_OK) {
-        gtexnode_inherit_lambertian(*out, children, n); /* pick ignores the method: one child for all */
-        gtexnode_inherit_no_uv(*out, children, n, index); /* reads the point only through the index */
+        gnode_inherit_lambertian(*out, children, n); /* pick ignores the method: one child for all */
+        gnode_inherit_no_uv(*out, children, n, index); /* reads the point only through the index */
     }
     return rc;
 }

@@ -18,7 +18,7 @@
 #include <string.h>
 
 typedef struct Spline {
-    GTexList list; /* gen is t; first: the class's destroy is gtexlist_destroy */
+    GNodeList list; /* gen is t; first: the class's destroy is gnode_list_destroy */
     int basis;     /* a GSplineBasis */
     double *keys;  /* a ramp: list.n keys; NULL: uniform, child i at i / (n - 1) */
 } Spline;
@@ -26,7 +26,7 @@ typedef struct Spline {
 static void spline_destroy(GMaterial *self)
 {
     gmem_free(((Spline *)self)->keys);
-    gtexlist_destroy(self);
+    gnode_list_destroy(self);
 }
 
 /* The position on the uniform spline's axis (child i at x = i) of t on the ramp. */
@@ -50,7 +50,7 @@ static double ramp_x(const Spline *s, double t)
 }
 
 /* Adds weight w of child i (clamped to the ends) to the blend, merging repeats and skipping zeros. */
-static void add(GTexBlend *b, const Spline *s, int i, double w)
+static void add(GNodeBlend *b, const Spline *s, int i, double w)
 {
     if (w == 0.0)
         return;
@@ -64,7 +64,7 @@ static void add(GTexBlend *b, const Spline *s, int i, double w)
     b->w[b->n++] = w;
 }
 
-static void pick(const GMaterial *self, GSurfPoint *sp, GNodeMethod m, GTexBlend *b)
+static void pick(const GMaterial *self, GSurfPoint *sp, GNodeMethod m, GNodeBlend *b)
 {
     (void)m;
     const Spline *s = (const Spline *)self;
@@ -110,12 +110,12 @@ static void pick(const GMaterial *self, GSurfPoint *sp, GNodeMethod m, GTexBlend
         add(b, s, k, 1.0);
 }
 
-static const GTexBlendClass spline_class = {
+static const GNodeBlendClass spline_class = {
     .base = {.abi_version = GMATERIAL_ABI_VERSION,
              .name = "spline",
              .description = "n children blended by a cubic spline over a generator value",
              .destroy = spline_destroy,
-             GTEXBLEND_NODE_METHODS},
+             GNODE_BLENDED_METHODS},
     .pick = pick,
 };
 
@@ -127,11 +127,11 @@ int gnode_spline_create(GMaterial *const *children, int n, GGenerator *t, GSplin
         return gerror_set(err, G_ERR_INVALID, "spline: needs at least 2 children, got 1");
     if ((unsigned)basis > GSPLINE_LINEAR)
         return gerror_set(err, G_ERR_INVALID, "spline: unknown basis %d", (int)basis);
-    int rc = gtexlist_new(&spline_class.base, children, n, t, sizeof(Spline), out, err);
+    int rc = gnode_list_new(&spline_class.base, children, n, t, sizeof(Spline), out, err);
     if (rc == G_OK) {
         ((Spline *)*out)->basis = (int)basis;
-        gtexnode_inherit_lambertian(*out, children, n); /* pick ignores the method: one blend for all */
-        gtexnode_inherit_no_uv(*out, children, n, t); /* reads the point only through t */
+        gnode_inherit_lambertian(*out, children, n); /* pick ignores the method: one blend for all */
+        gnode_inherit_no_uv(*out, children, n, t); /* reads the point only through t */
     }
     return rc;
 }

@@ -13,15 +13,15 @@ static const GGeneratorClass surface_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "surface",
     .description = "the index of the object's surface that was hit",
-    .destroy = gtexgen_free,
+    .destroy = ggenerator_free,
     .value = surface_value,
     .gradient = NULL, /* piecewise constant: space NONE gives a zero gradient */
 };
 
-int ggen_surface_create(GGenerator **out, GError *err)
+int ggenerator_surface_create(GGenerator **out, GError *err)
 {
     *out = NULL;
-    return gtexgen_new(&surface_class, GGENERATOR_SPACE_NONE, sizeof(GGenerator), out, err);
+    return ggenerator_new(&surface_class, GGENERATOR_SPACE_NONE, sizeof(GGenerator), out, err);
 }
 
 static int parse_surface(GReader *r, const void *vtable, void **object, GError *err)
@@ -34,7 +34,7 @@ static int parse_surface(GReader *r, const void *vtable, void **object, GError *
     if (rc < 0)
         return rc;
     GGenerator *g = NULL;
-    rc = ggen_surface_create(&g, err);
+    rc = ggenerator_surface_create(&g, err);
     return gtexparse_finish(r, rc, g, object, err);
 }
 

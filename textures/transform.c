@@ -242,7 +242,7 @@ int gnode_transform_create(GMaterial *child, const GAffine2 *uv, const GAffine3 
 {
     *out = NULL;
     GMaterial *node;
-    int rc = gtexnode_new_checked(&transform_class, &child, 1, NULL, 0, sizeof(Transform), &node, err);
+    int rc = gnode_new_checked(&transform_class, &child, 1, NULL, 0, sizeof(Transform), &node, err);
     if (rc != G_OK)
         return rc;
     Transform *t = (Transform *)node;
@@ -268,16 +268,16 @@ int gnode_transform_create(GMaterial *child, const GAffine2 *uv, const GAffine3 
         return rc;
     }
     t->child = gmaterial_ref(child);
-    gtexnode_inherit_no_emission(&t->base, &child, 1); /* the child's emission at a moved point */
-    gtexnode_inherit_opaque(&t->base, &child, 1);      /* the child's opacity at a moved point */
-    gtexnode_inherit_diagonal(&t->base, &child, 1);    /* the child's pass-on at a moved point */
+    gnode_inherit_no_emission(&t->base, &child, 1); /* the child's emission at a moved point */
+    gnode_inherit_opaque(&t->base, &child, 1);      /* the child's opacity at a moved point */
+    gnode_inherit_diagonal(&t->base, &child, 1);    /* the child's pass-on at a moved point */
     /* the child's normal at a moved point that keeps the geometric normal (move() leaves it) */
-    gtexnode_inherit_geometric_normal(&t->base, &child, 1);
+    gnode_inherit_geometric_normal(&t->base, &child, 1);
     /* reflection and diffuse colour: the child's at the moved copy, which carries sp's shading normal (move()
-     * computes it on sp first) and geometric normal, so the child's gmat_cos_in is the node's */
-    gtexnode_inherit_lambertian_child(&t->base, child);
+     * computes it on sp first) and geometric normal, so the child's gmaterial_cos_in is the node's */
+    gnode_inherit_lambertian_child(&t->base, child);
     /* it moves (u, v) and the tangents for a child that, with the bit, never reads them */
-    gtexnode_inherit_no_uv(&t->base, &child, 1, NULL);
+    gnode_inherit_no_uv(&t->base, &child, 1, NULL);
     *out = &t->base;
     return G_OK;
 }

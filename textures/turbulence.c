@@ -45,7 +45,7 @@ static const GGeneratorClass fbm_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "fbm",
     .description = "fractional Brownian motion: octaves of noise, in [0, 1]",
-    .destroy = gtexgen_free,
+    .destroy = ggenerator_free,
     .value = fbm_value,
     .gradient = fbm_gradient,
 };
@@ -54,7 +54,7 @@ static const GGeneratorClass turbulence_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "turbulence",
     .description = "Perlin's turbulence: octaves of |noise|, in [0, 1]",
-    .destroy = gtexgen_free,
+    .destroy = ggenerator_free,
     .value = turbulence_value,
     .gradient = turbulence_gradient,
 };
@@ -67,7 +67,7 @@ static int make(const GGeneratorClass *cls, const GNoiseParams *p, GGenerator **
     if (rc != G_OK)
         return rc;
     GGenerator *gen;
-    rc = gtexgen_new(cls, q.space, sizeof(Fractal), &gen, err);
+    rc = ggenerator_new(cls, q.space, sizeof(Fractal), &gen, err);
     if (rc != G_OK)
         return rc;
     Fractal *f = (Fractal *)gen;
@@ -76,12 +76,12 @@ static int make(const GGeneratorClass *cls, const GNoiseParams *p, GGenerator **
     return G_OK;
 }
 
-int ggen_fbm_create(const GNoiseParams *p, GGenerator **out, GError *err)
+int ggenerator_fbm_create(const GNoiseParams *p, GGenerator **out, GError *err)
 {
     return make(&fbm_class, p, out, err);
 }
 
-int ggen_turbulence_create(const GNoiseParams *p, GGenerator **out, GError *err)
+int ggenerator_turbulence_create(const GNoiseParams *p, GGenerator **out, GError *err)
 {
     return make(&turbulence_class, p, out, err);
 }

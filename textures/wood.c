@@ -59,12 +59,12 @@ static const GGeneratorClass wood_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "wood",
     .description = "growth rings around the z axis displaced by noise, in [0, 1]",
-    .destroy = gtexgen_free,
+    .destroy = ggenerator_free,
     .value = wood_value,
     .gradient = wood_gradient,
 };
 
-int ggen_wood_create(const GNoiseParams *p, double rings, double turbulence, double latewood, GGenerator **out,
+int ggenerator_wood_create(const GNoiseParams *p, double rings, double turbulence, double latewood, GGenerator **out,
                      GError *err)
 {
     *out = NULL;
@@ -81,7 +81,7 @@ int ggen_wood_create(const GNoiseParams *p, double rings, double turbulence, dou
     if (!(latewood > 0.0 && latewood < 1.0))
         return gerror_set(err, G_ERR_INVALID, "wood: latewood must be within (0, 1), got %g", latewood);
     GGenerator *gen;
-    rc = gtexgen_new(&wood_class, q.space, sizeof(Wood), &gen, err);
+    rc = ggenerator_new(&wood_class, q.space, sizeof(Wood), &gen, err);
     if (rc != G_OK)
         return rc;
     Wood *w = (Wood *)gen;
@@ -119,7 +119,7 @@ static int parse_wood(GReader *r, const void *vtable, void **object, GError *err
     if (rc < 0)
         return rc;
     GGenerator *g = NULL;
-    rc = ggen_wood_create(&p, rings, turbulence, latewood, &g, err);
+    rc = ggenerator_wood_create(&p, rings, turbulence, latewood, &g, err);
     return gtexparse_finish(r, rc, g, object, err);
 }
 

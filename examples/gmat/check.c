@@ -34,7 +34,7 @@
  *   geometric-normal  for a material with GMAT_GEOMETRIC_NORMAL: its class's own normal slot gives the geometric
  *                normal (flags.c).
  *   lambertian   for a material with GMAT_LAMBERTIAN: its class's own reflection is its diffuse colour times the
- *                light times gmat_cos_in / pi over random pairs and lights, and it is not delta (flags.c).
+ *                light times gmaterial_cos_in / pi over random pairs and lights, and it is not delta (flags.c).
  *   diagonal     for a material with GMAT_DIAGONAL: its class's own reflection and refraction of a random light
  *                are what they pass on of white times the light, over random and ideal pairs (flags.c).
  *   no-uv        for a material with GMAT_NO_UV: the same colours, normal and opacity with the surface's (u, v)

@@ -8,7 +8,7 @@
  *                geometric normal (a failed call counts as infinite); at most 1e-9 (rounding only);
  *   lambertian   with GMAT_LAMBERTIAN: over random pairs of directions (both on the side of the geometric normal
  *                mostly, one or both behind it else) and lights (white, and gmat_random_light), the class's
- *                own reflection against its diffuse colour times the light times gmat_cos_in / pi: the largest
+ *                own reflection against its diffuse colour times the light times gmaterial_cos_in / pi: the largest
  *                difference over the largest value at a place (a failed call, or an is_delta slot that does not
  *                say 0, counts as infinite); at most 1e-5 (rounding: a blend sums its children's products);
  *   diagonal     with GMAT_DIAGONAL: over random directions out (on the side of the geometric normal mostly) and
@@ -174,7 +174,7 @@ static GVec3 sphere_direction(unsigned long long *s, GVec3 n, int behind)
     return (gvec3_dot(d, n) < 0.0) != behind ? gvec3_neg(d) : d;
 }
 
-/* The largest difference between the class's own reflection and diffuse * light * gmat_cos_in / pi over
+/* The largest difference between the class's own reflection and diffuse * light * gmaterial_cos_in / pi over
  * LAMBERT_PAIRS random pairs at sp, over the largest value (a failed call, or is_delta not 0: infinite). */
 static double lambertian_at(GmatContext *ctx, GSurfPoint *sp, int below, int *calls)
 {
@@ -203,7 +203,7 @@ static double lambertian_at(GmatContext *ctx, GSurfPoint *sp, int below, int *ca
         } else {
             rc = gcolor_copy(&light, &ctx->white);
         }
-        double c = gmat_cos_in(sp, in, out, &n);
+        double c = gmaterial_cos_in(sp, in, out, &n);
         gcolor_black(&got); /* no reflection slot: black, the default */
         if (rc == G_OK && m->cls->reflection)
             rc = m->cls->reflection(m, sp, in, &light, out, &got);

@@ -95,7 +95,7 @@ void gmat_check_opaque_flag(GmatContext *ctx, const GmatPlace *places, int nplac
 void gmat_check_geometric_normal(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
                                  void *checker);
 /** The lambertian check of `gmat check` (flags.c): a material with GMAT_LAMBERTIAN must reflect, by its class's own
- * reflection slot, its diffuse colour times the light times gmat_cos_in / pi (relative 1e-5) over random pairs of
+ * reflection slot, its diffuse colour times the light times gmaterial_cos_in / pi (relative 1e-5) over random pairs of
  * directions and lights at the places given, on both sides, and its is_delta slot (if any) must say 0. */
 void gmat_check_lambertian(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
                            void *checker);

@@ -15,7 +15,7 @@
  * sample_light, and the light gathered for a Lambertian material (light_gather). */
 typedef struct LightTmp {
     GColor illum, refl, tmp;
-    GColor gathered; /**< with `gather`: the sum of each sample's light (shadowed) times its gmat_cos_in */
+    GColor gathered; /**< with `gather`: the sum of each sample's light (shadowed) times its gmaterial_cos_in */
     int gathered_any; /**< with `gather`: 1 once a sample's light was added to `gathered` (0: it is still black) */
     int blocked; /**< 1: a shadow ray stops at any surface (the path tracer's rule for lights that material
                   * sampling also reaches: light through glass arrives there as a caustic); 0 (light_temps'
@@ -27,7 +27,7 @@ typedef struct LightTmp {
  * and gather are 0. */
 int light_temps(TraceCtx *c, LightTmp *t);
 /** Starts gathering the light of the samples at sp when its material has GMAT_LAMBERTIAN (material.h): its
- * reflection of a sample is diffuse(sp) times the light times gmat_cos_in / pi, so sample_light sums light times
+ * reflection of a sample is diffuse(sp) times the light times gmaterial_cos_in / pi, so sample_light sums light times
  * cosine into t->gathered and light_gather_finish reflects the sum once. Nothing for another material (each
  * sample asks its reflection). Call it after light_temps, before the first light. */
 void light_gather(GSurfPoint *sp, LightTmp *t);

@@ -156,7 +156,7 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
     int rc;
     if (t->gather) { /* illum is made below where it is needed: the clear path adds color * (scale * cos) */
         GVec3 n;
-        cos_in = gmat_cos_in(sp, in, out_dir, &n); /* the cosine the material's reflection would use */
+        cos_in = gmaterial_cos_in(sp, in, out_dir, &n); /* the cosine the material's reflection would use */
         if (!(cos_in > 0.0))
             return G_OK; /* its reflection would be black: no shadow ray */
     } else {

@@ -2,7 +2,7 @@
  *     value = 0.5 + 0.5 * sin(2 pi * dot(p, axis) / period)   over the object-space point p,
  * with its analytic gradient. Text format:  generator stripes bands { period 0.5 axis <1, 0, 0> }
  *
- * Built against the installed headers only (the generator kit: gtexgen_new, gtexgen_free, gtexparse_finish);
+ * Built against the installed headers only (the generator kit: ggenerator_new, ggenerator_free, gtexparse_finish);
  * the library's functions come from the program that loads it. Its last line makes the file a module. */
 #include <generic/plugin.h>
 #include <generic/texture.h>
@@ -35,7 +35,7 @@ static const GGeneratorClass bands_class = {
     .abi_version = GGENERATOR_ABI_VERSION,
     .name = "bands",
     .description = "smooth parallel bands (plug-in)",
-    .destroy = gtexgen_free,
+    .destroy = ggenerator_free,
     .value = bands_value,
     .gradient = bands_gradient,
 };
@@ -62,7 +62,7 @@ static int parse_bands(GReader *r, const void *vtable, void **object, GError *er
     if (rc < 0)
         return rc;
     GGenerator *g = NULL;
-    rc = gtexgen_new(&bands_class, GGENERATOR_SPACE_OBJECT, sizeof(Bands), &g, err);
+    rc = ggenerator_new(&bands_class, GGENERATOR_SPACE_OBJECT, sizeof(Bands), &g, err);
     if (rc == G_OK) {
         ((Bands *)g)->axis = gvec3_normalize(axis);
         ((Bands *)g)->period = period;

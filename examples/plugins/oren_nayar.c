@@ -19,7 +19,7 @@
 #include <string.h>
 
 typedef struct OrenNayar {
-    GMatOneColor rho; /* first: the class's destroy is gmat_one_color_destroy */
+    GMaterialOneColor rho; /* first: the class's destroy is gmaterial_one_color_destroy */
     double a, b;
 } OrenNayar;
 
@@ -28,7 +28,7 @@ static int on_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const 
 {
     const OrenNayar *m = (const OrenNayar *)self;
     GVec3 n;
-    double ci = fmin(gmat_cos_in(sp, in, out, &n), 1.0), co = fmin(gvec3_dot(out, n), 1.0);
+    double ci = fmin(gmaterial_cos_in(sp, in, out, &n), 1.0), co = fmin(gvec3_dot(out, n), 1.0);
     if (ci <= 0.0 || co <= 0.0) {
         gcolor_black(result);
         return G_OK;
@@ -55,7 +55,7 @@ static const GMaterialClass oren_nayar_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "oren_nayar",
     .description = "Oren-Nayar rough diffuse reflector (plug-in)",
-    .destroy = gmat_one_color_destroy,
+    .destroy = gmaterial_one_color_destroy,
     .reflection = on_reflection,
     .diffuse = on_diffuse, /* ambient: the default, diffuse * illum */
 };
@@ -78,10 +78,10 @@ static int parse_oren_nayar(GReader *r, const void *vtable, void **object, GErro
             break;
     }
     if (rc == G_OK)
-        rc = gmatparam_default(r, 0.8, GCOLOR_REFLECTANCE, &rho, err);
+        rc = gmaterial_param_default(r, 0.8, GCOLOR_REFLECTANCE, &rho, err);
     GMaterial *m = NULL;
     if (rc == G_OK)
-        rc = gmat_one_color_create(&oren_nayar_class, greader_colormodel(r), sizeof(OrenNayar), &rho,
+        rc = gmaterial_one_color_create(&oren_nayar_class, greader_colormodel(r), sizeof(OrenNayar), &rho,
                                    GCOLOR_REFLECTANCE, 1.0, "reflectance", &m, err);
     gcolor_free(&rho);
     if (rc != G_OK)

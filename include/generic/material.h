@@ -15,7 +15,7 @@
  * The geometric normal tells the sides: a reflection has in and out on its incident side, a refraction has in on
  * the other. About a shading normal that a bump node tilts, an ideal ray may point back across the surface (a
  * mirror ray into the body); one interface sends no light there, so what such a pair passes on is black
- * (gmat_cos_in, material_kit.h; the built-ins all do so), and a sample along it keeps its flag with a black weight.
+ * (gmaterial_cos_in, material_kit.h; the built-ins all do so), and a sample along it keeps its flag with a black weight.
  *
  * Missing methods (NULL slots) take these defaults: reflection, refraction, emission, diffuse: black;
  * refraction_index: 1; reflection_dir, refraction_dir: not valid; ambient: diffuse * illum;
@@ -97,16 +97,16 @@ enum {
      * against version 4 as well: the interface version did not change for it. */
     GMAT_GEOMETRIC_NORMAL = 4u,
     /** The material is Lambertian: at every point and for every pair of directions, reflection(sp, in, illum, out)
-     * is diffuse(sp) times illum times gmat_cos_in(sp, in, out, &n) / pi (material_kit.h: the cosine of in with the
+     * is diffuse(sp) times illum times gmaterial_cos_in(sp, in, out, &n) / pi (material_kit.h: the cosine of in with the
      * point's shading normal, 0 when in or out is below the geometric normal), and is_delta is 0. A renderer may
      * then sum the light of all its light samples, each times its cosine, and ask the material once: diffuse(sp)
      * times that sum over pi, where it would ask reflection() once per sample; gmaterial_is_delta answers 0
      * without calling the class. gmaterial_init cannot tell it from missing slots and never sets it: a class sets
      * it after gmaterial_init on the instances it holds for (lambert); the node kit sets it on a blend node whose
-     * pick gives the same blend for reflection as for diffuse when every child has it (gtexnode_inherit_lambertian,
+     * pick gives the same blend for reflection as for diffuse when every child has it (gnode_inherit_lambertian,
      * node_kit.h), and on a one-child node whose reflection and diffuse colour are its child's times the same
      * factor, at a point with sp's shading and geometric normals, when the child has it (bump, scale, image,
-     * transform: gtexnode_inherit_lambertian_child). The same rules as for GMAT_NO_EMISSION: set only when it is
+     * transform: gnode_inherit_lambertian_child). The same rules as for GMAT_NO_EMISSION: set only when it is
      * true (`gmat check`'s lambertian property), clearing it is always safe. A bit added in the existing flags field
      * like GMAT_GEOMETRIC_NORMAL: the interface version did not change for it, and a plug-in built before it simply
      * never has it. */
@@ -117,7 +117,7 @@ enum {
      * sphere's (u, v) is an acos and an atan2 per hit). gmaterial_init cannot know it and never sets it; a class
      * whose methods read none of those fields sets it on its instances after gmaterial_init (every built-in
      * material does); a node sets it when its own methods read none of them and every child has it
-     * (gtexnode_inherit_no_uv, node_kit.h: interpolate, select, spline, scale and transform over generators not
+     * (gnode_inherit_no_uv, node_kit.h: interpolate, select, spline, scale and transform over generators not
      * in (u, v) space). The same rules as for GMAT_NO_EMISSION: set only when it is true (`gmat check`'s no-uv
      * property evaluates the class with those fields zero and with other values, and the two must agree),
      * clearing it is always safe. A bit added in the existing flags field, like GMAT_GEOMETRIC_NORMAL. */
@@ -130,7 +130,7 @@ enum {
      * it would ask the material again with that light. gmaterial_init cannot know it and never sets it: a class
      * sets it after gmaterial_init on the instances it holds for (lambert, mirror, phong, dielectric and emitter
      * whose colours are not re-radiation matrices); the node kit sets it on a blend node when every child has it
-     * (gtexnode_inherit_diagonal, node_kit.h). The same rules as for GMAT_NO_EMISSION: set only when it is true
+     * (gnode_inherit_diagonal, node_kit.h). The same rules as for GMAT_NO_EMISSION: set only when it is true
      * (`gmat check`'s diagonal property), clearing it is always safe. A bit added in the existing flags field,
      * like GMAT_GEOMETRIC_NORMAL. */
     GMAT_DIAGONAL = 32u
@@ -143,7 +143,7 @@ struct GMaterial {
     int refcount;             /**< owners; see gmaterial_ref/gmaterial_unref */
     int depth;                /**< 1 (gmaterial_init); a texture node: 1 + its deepest child's (node_kit.h) */
     int cost;                 /**< most material calls one call can make, itself included: 1 (gmaterial_init);
-                                   a texture node: see GTEXNODE_MAX_COST (node_kit.h) */
+                                   a texture node: see GNODE_MAX_COST (node_kit.h) */
     unsigned flags;           /**< GMAT_* bits (since version 4): set by gmaterial_init and the node kit; 0 in a
                                    header made without them, which only costs speed */
 };
@@ -230,7 +230,7 @@ GENERIC_API GENERIC_NODISCARD int gmaterial_opaque(const GMaterial *m, GSurfPoin
  * through somewhere (or cannot tell); NULL (vacuum) lets light through. */
 GENERIC_API int gmaterial_opaque_everywhere(const GMaterial *m);
 /** 1 when m has GMAT_LAMBERTIAN: its reflection of any light is diffuse(sp) times the light times
- * gmat_cos_in / pi, so the light of several samples may be summed (each times its cosine) and reflected at once.
+ * gmaterial_cos_in / pi, so the light of several samples may be summed (each times its cosine) and reflected at once.
  * 0 when it may not be (or cannot tell); NULL (vacuum) reflects nothing and is not. */
 GENERIC_API int gmaterial_lambertian(const GMaterial *m);
 /** 1 when m has GMAT_DIAGONAL: its reflection and refraction of any light are what they pass on of white light

@@ -58,7 +58,7 @@ typedef struct GPhongParams {
  * (and less at grazing angles, where the lobe is cut by the horizon). With a non-black `mirror`
  * reflection_dir is valid and the aligned case of reflection returns mirror * illum. kd + ks + mirror
  * must not exceed 1 in any sample (energy conservation); when one of them is a re-radiation matrix, in what
- * the sum sends out per excitation sample, its column sums (gmatparam_check_sum). diffuse() is kd;
+ * the sum sends out per excitation sample, its column sums (gmaterial_param_check_sum). diffuse() is kd;
  * ambient() reflects (kd + ks + mirror) * illum, the material's albedo at normal incidence. */
 GENERIC_API GENERIC_NODISCARD int gphong_create(const GColorModel *model, const GPhongParams *params, GMaterial **out, GError *err);
 

@@ -52,7 +52,7 @@ GENERIC_API GENERIC_NODISCARD int gnode_method_from_name(const char *name);
  *   - colours (reflection, refraction, refraction_index, emission, ambient, absorption, diffuse) blend
  *     as colours (gcolor_scale / gcolor_add_scaled), but for reflection and refraction along the node's
  *     ideal ray: there only a child with an ideal ray of its own answers, the specular case, and a child
- *     without one adds nothing (materials.h, gtexblend_reflection in node_kit.h);
+ *     without one adds nothing (materials.h, gnode_blend_reflection in node_kit.h);
  *   - normal: the two normals blended and normalised;
  *   - reflection_dir / refraction_dir: valid when either child's is; two valid directions are blended and
  *     normalised, a single valid one is returned as it is (its child's weight already scales the colour

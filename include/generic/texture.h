@@ -73,9 +73,9 @@ GENERIC_API GENERIC_NODISCARD int ggenerator_init(GGenerator *g, const GGenerato
 /** Allocates a zeroed generator of `size` bytes (a struct that begins with its GGenerator) of class cls
  * computing in space, into *out: G_ERR_NOMEM "<class>: out of memory", or ggenerator_init's error. Until it
  * is complete, free it with gmem_free. */
-GENERIC_API GENERIC_NODISCARD int gtexgen_new(const GGeneratorClass *cls, GGeneratorSpace space, size_t size, GGenerator **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int ggenerator_new(const GGeneratorClass *cls, GGeneratorSpace space, size_t size, GGenerator **out, GError *err);
 /** The destroy method of the generators that own nothing but their own struct (frees it with gmem_free). */
-GENERIC_API void gtexgen_free(GGenerator *self);
+GENERIC_API void ggenerator_free(GGenerator *self);
 /** Adds an owner; returns g. */
 GENERIC_API GGenerator *ggenerator_ref(GGenerator *g);
 /** Drops an owner and destroys the generator with the last; NULL is a no-op. */

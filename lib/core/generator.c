@@ -19,7 +19,7 @@ int ggenerator_init(GGenerator *g, const GGeneratorClass *cls, GGeneratorSpace s
     return G_OK;
 }
 
-int gtexgen_new(const GGeneratorClass *cls, GGeneratorSpace space, size_t size, GGenerator **out, GError *err)
+int ggenerator_new(const GGeneratorClass *cls, GGeneratorSpace space, size_t size, GGenerator **out, GError *err)
 {
     *out = NULL;
     GGenerator *g = gmem_calloc(1, size);
@@ -34,7 +34,7 @@ int gtexgen_new(const GGeneratorClass *cls, GGeneratorSpace space, size_t size, 
     return G_OK;
 }
 
-void gtexgen_free(GGenerator *self) { gmem_free(self); }
+void ggenerator_free(GGenerator *self) { gmem_free(self); }
 
 GGenerator *ggenerator_ref(GGenerator *g)
 {

@@ -4,7 +4,7 @@
 
 #include <math.h>
 
-int gmat_new(const GMaterialClass *cls, const GColorModel *model, size_t size, GMaterial **out, GError *err)
+int gmaterial_new(const GMaterialClass *cls, const GColorModel *model, size_t size, GMaterial **out, GError *err)
 {
     *out = NULL;
     GMaterial *m = gmem_calloc(1, size);
@@ -19,47 +19,47 @@ int gmat_new(const GMaterialClass *cls, const GColorModel *model, size_t size, G
     return G_OK;
 }
 
-void gmat_one_color_destroy(GMaterial *self)
+void gmaterial_one_color_destroy(GMaterial *self)
 {
-    gcolor_free(&((GMatOneColor *)self)->c);
+    gcolor_free(&((GMaterialOneColor *)self)->c);
     gmem_free(self);
 }
 
-int gmat_one_color_create(const GMaterialClass *cls, const GColorModel *model, size_t size, const GColor *src,
+int gmaterial_one_color_create(const GMaterialClass *cls, const GColorModel *model, size_t size, const GColor *src,
                           GColorRole role, double max, const char *param, GMaterial **out, GError *err)
 {
     *out = NULL;
     if (!model)
         return gerror_set(err, G_ERR_INVALID, "%s: no colour model given", cls->name);
     GMaterial *m;
-    int rc = gmat_new(cls, model, size, &m, err);
+    int rc = gmaterial_new(cls, model, size, &m, err);
     if (rc != G_OK)
         return rc;
-    rc = gmatparam_color(model, src, role, max, cls->name, param, &((GMatOneColor *)m)->c, err);
+    rc = gmaterial_param_color(model, src, role, max, cls->name, param, &((GMaterialOneColor *)m)->c, err);
     if (rc != G_OK) {
-        gmat_one_color_destroy(m);
+        gmaterial_one_color_destroy(m);
         return rc;
     }
     *out = m;
     return G_OK;
 }
 
-int gmat_sides_agree(const GSurfPoint *sp, GVec3 in, GVec3 out, int transmit)
+int gmaterial_sides_agree(const GSurfPoint *sp, GVec3 in, GVec3 out, int transmit)
 {
     double ci = gvec3_dot(in, sp->geometric_normal), co = gvec3_dot(out, sp->geometric_normal);
     return co > 0.0 && (transmit ? ci < 0.0 : ci > 0.0);
 }
 
-double gmat_cos_in(GSurfPoint *sp, GVec3 in, GVec3 out, GVec3 *n)
+double gmaterial_cos_in(GSurfPoint *sp, GVec3 in, GVec3 out, GVec3 *n)
 {
     *n = gsurfpoint_normal(sp);
-    if (!gmat_sides_agree(sp, in, out, 0))
+    if (!gmaterial_sides_agree(sp, in, out, 0))
         return 0.0;
     double c = gvec3_dot(in, *n);
     return c > 0.0 ? c : 0.0;
 }
 
-int gmat_sample_weight(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index,
+int gmaterial_sample_weight(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index,
                        int transmit, double pdf, GColor *weight)
 {
     if (!(pdf > 0.0) || !isfinite(pdf)) {
@@ -83,7 +83,7 @@ int gmat_sample_weight(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 ou
     return rc;
 }
 
-int gmat_pick_lobe(const double *w, int n, double *u, double *p)
+int gmaterial_pick_lobe(const double *w, int n, double *u, double *p)
 {
     double total = 0.0;
     for (int i = 0; i < n; i++)

@@ -11,7 +11,7 @@ static int value_count(const GColor *c)
     return c->kind == GCOLOR_MATRIX ? c->model->capacity : c->model->nvalues;
 }
 
-double gmatparam_max(const GColor *c, int *at)
+double gmaterial_param_max(const GColor *c, int *at)
 {
     if (at)
         *at = 0;
@@ -27,7 +27,7 @@ double gmatparam_max(const GColor *c, int *at)
     return mx;
 }
 
-int gmatparam_range(const GColor *c, GColorRole role, double max, double *lo, double *hi)
+int gmaterial_param_range(const GColor *c, GColorRole role, double max, double *lo, double *hi)
 {
     double rlo, rhi;
     int rc = gcolormodel_rgb_range(c->model, role, &rlo, &rhi);
@@ -47,7 +47,7 @@ int gmatparam_range(const GColor *c, GColorRole role, double max, double *lo, do
     return G_OK;
 }
 
-double gmatparam_energy(const GColor *c, int *at)
+double gmaterial_param_energy(const GColor *c, int *at)
 {
     const GColorModel *m = c->model;
     if (at)
@@ -76,9 +76,9 @@ double gmatparam_energy(const GColor *c, int *at)
     return sum / GNM_COUNT;
 }
 
-int gmatparam_fold_ok(const GColor *c, double hi)
+int gmaterial_param_fold_ok(const GColor *c, double hi)
 {
-    return c->kind == GCOLOR_VECTOR && !c->model->cls->from_reradiation && gmatparam_energy(c, NULL) <= hi;
+    return c->kind == GCOLOR_VECTOR && !c->model->cls->from_reradiation && gmaterial_param_energy(c, NULL) <= hi;
 }
 
 /* " (NNN nm)" for sample k of a spectral model, "" otherwise. */
@@ -90,14 +90,14 @@ static void sample_nm(const GColorModel *m, int k, char *buf, size_t size)
         buf[0] = '\0';
 }
 
-/* A re-radiation matrix's energy, its largest column sum (gmatparam_energy), against hi: "<material>: <what> is a
+/* A re-radiation matrix's energy, its largest column sum (gmaterial_param_energy), against hi: "<material>: <what> is a
  * re-radiation matrix that sends out E of the light arriving at excitation sample K (NM nm) (must be <= max:
  * energy is conserved)", naming param. */
 static int check_matrix_energy(const GColor *c, double max, double hi, const char *material, const char *what,
                                const char *param, GError *err)
 {
     int col;
-    double e = gmatparam_energy(c, &col);
+    double e = gmaterial_param_energy(c, &col);
     if (!(e > hi))
         return G_OK;
     char where[48];
@@ -131,7 +131,7 @@ static int check_range(const GColor *src, GColorRole role, double max, const cha
                                         param, (double)src->v[i], i);
     }
     double lo, hi, rlo, rhi;
-    int rc = gmatparam_range(src, role, max, &lo, &hi);
+    int rc = gmaterial_param_range(src, role, max, &lo, &hi);
     if (rc == G_OK)
         rc = gcolormodel_rgb_range(m, role, &rlo, &rhi);
     if (rc != G_OK)
@@ -143,7 +143,7 @@ static int check_range(const GColor *src, GColorRole role, double max, const cha
     /* above max in a band: in a model without matrices only a fold of re-radiation can be (see the header) */
     double fold_energy = -1.0;
     if (max > 0.0 && role == GCOLOR_REFLECTANCE && !m->cls->from_reradiation)
-        fold_energy = gmatparam_energy(src, NULL);
+        fold_energy = gmaterial_param_energy(src, NULL);
     for (int i = 0; i < m->nvalues; i++) {
         double x = src->v[i];
         sample_nm(m, i, where, sizeof where);
@@ -173,7 +173,7 @@ static int check_range(const GColor *src, GColorRole role, double max, const cha
     return G_OK;
 }
 
-int gmatparam_color(const GColorModel *m, const GColor *src, GColorRole role, double max, const char *material,
+int gmaterial_param_color(const GColorModel *m, const GColor *src, GColorRole role, double max, const char *material,
                     const char *param, GColor *dst, GError *err)
 {
     *dst = (GColor){.model = NULL, .v = NULL, .storage = GCOLOR_STORAGE_NONE};
@@ -193,7 +193,7 @@ int gmatparam_color(const GColorModel *m, const GColor *src, GColorRole role, do
     /* within the model's conversion error: clamped into [0, max]; a fold above max stays as it is */
     double lo, hi;
     int fold = 0;
-    if (max > 0.0 && dst->kind == GCOLOR_VECTOR && gmatparam_range(dst, role, max, &lo, &hi) == G_OK)
+    if (max > 0.0 && dst->kind == GCOLOR_VECTOR && gmaterial_param_range(dst, role, max, &lo, &hi) == G_OK)
         for (int i = 0; i < m->nvalues; i++)
             fold |= dst->v[i] > hi;
     if (dst->kind == GCOLOR_VECTOR)
@@ -206,25 +206,25 @@ int gmatparam_color(const GColorModel *m, const GColor *src, GColorRole role, do
     return G_OK;
 }
 
-int gmatparam_check_sum(const GColor *sum, const char *material, const char *what, const char *param, GError *err)
+int gmaterial_param_check_sum(const GColor *sum, const char *material, const char *what, const char *param, GError *err)
 {
     double lo, hi;
-    int rc = gmatparam_range(sum, GCOLOR_REFLECTANCE, 1.0, &lo, &hi);
+    int rc = gmaterial_param_range(sum, GCOLOR_REFLECTANCE, 1.0, &lo, &hi);
     if (rc != G_OK)
         return gerror_set(err, rc, "%s: cannot measure %s (%s)", material, what, gstatus_string(rc));
     if (sum->kind == GCOLOR_MATRIX) /* re-radiated light counts: all that leaves per unit arriving in a sample */
         return check_matrix_energy(sum, 1.0, hi, material, what, param, err);
     int at;
-    double mx = gmatparam_max(sum, &at);
+    double mx = gmaterial_param_max(sum, &at);
     /* within the model's conversion error, as each parameter: rgb 0 0.5 0 + 0 0.5 0 is 1.03 in spectrum9 */
-    if (mx > hi && !gmatparam_fold_ok(sum, hi)) /* above 1 in a band only as a fold */
+    if (mx > hi && !gmaterial_param_fold_ok(sum, hi)) /* above 1 in a band only as a fold */
         return gerror_set(err, G_ERR_INVALID,
                           "%s: %s is %g at sample %d; it must not exceed 1 (energy conservation)%s", material, what,
                           mx, at, hi > 1.0 + 2e-5 ? ", or the conversion error of the colour model" : "");
     return G_OK;
 }
 
-int gmatparam_default(GReader *r, double grey, GColorRole role, GColor *c, GError *err)
+int gmaterial_param_default(GReader *r, double grey, GColorRole role, GColor *c, GError *err)
 {
     if (c->v)
         return G_OK;
@@ -235,8 +235,8 @@ int gmatparam_default(GReader *r, double grey, GColorRole role, GColor *c, GErro
     return gcolor_from_rgb(c, rgb, role) == G_OK ? G_OK : greader_error(r, err, "invalid default colour");
 }
 
-int gmatparam_parse_one_color(GReader *r, const char *key, double grey, GColorRole role, GMatOneColorCreate create,
-                              void **object, GError *err)
+int gmaterial_param_parse_one_color(GReader *r, const char *key, double grey, GColorRole role,
+                                    GMaterialOneColorCreate create, void **object, GError *err)
 {
     GColor c = {0};
     const char *k;
@@ -250,7 +250,7 @@ int gmatparam_parse_one_color(GReader *r, const char *key, double grey, GColorRo
             break;
     }
     if (rc == G_OK)
-        rc = gmatparam_default(r, grey, role, &c, err);
+        rc = gmaterial_param_default(r, grey, role, &c, err);
     GMaterial *m = NULL;
     if (rc == G_OK && (rc = create(greader_colormodel(r), &c, &m, err)) == G_OK)
         *object = m;

@@ -1,14 +1,14 @@
 /* node_blend.c - the node kit's weighted blends of children (generic/kit/node_kit.h): every material method of a
- * GTexBlend, the colours summed with the children's weights, the directions and normals summed and normalised,
+ * GNodeBlend, the colours summed with the children's weights, the directions and normals summed and normalised,
  * and sampling as a mixture of the children. The blend nodes' methods (lib/kit/node_kit.c) pick a blend and
  * call these. */
 #include "generic/kit/node_kit.h"
-#include "generic/kit/material_kit.h" /* gmat_pick_lobe */
+#include "generic/kit/material_kit.h" /* gmaterial_pick_lobe */
 #include "node_blend.h"
 
 #include <math.h>
 
-void gtexblend_pair(GTexBlend *b, const GMaterial *a, const GMaterial *c, double t)
+void gnode_blend_pair(GNodeBlend *b, const GMaterial *a, const GMaterial *c, double t)
 {
     if (!(t > 0.0)) { /* also NaN */
         b->n = 1;
@@ -27,7 +27,7 @@ void gtexblend_pair(GTexBlend *b, const GMaterial *a, const GMaterial *c, double
     }
 }
 
-void gtexblend_one(GTexBlend *b, const GMaterial *m)
+void gnode_blend_one(GNodeBlend *b, const GMaterial *m)
 {
     b->n = 1;
     b->m[0] = m;
@@ -79,7 +79,7 @@ static int call_color(const GMaterial *m, GSurfPoint *sp, const ColorCall *c, GC
 
 /* ---- the ideal ray (material.h, materials.h): at a pair aligned with the blend's own ideal ray the result is the
  * ideal part, the sum of the children that have an ideal ray of their own there; the others' BRDF has no delta
- * part and adds nothing. The blend's ray is its children's rays blended (gtexblend_reflection_dir); the pair is
+ * part and adds nothing. The blend's ray is its children's rays blended (gnode_blend_reflection_dir); the pair is
  * taken as aligned with it when `in` is the mirror direction of `out` (for refraction: the ideal refraction of
  * -out) about the point's shading normal, the cached normal every child reads, so that the test is exact when the
  * children reflect and refract about it, as every built-in material and node does, and costs no call and no
@@ -88,7 +88,7 @@ static int call_color(const GMaterial *m, GSurfPoint *sp, const ColorCall *c, GC
 
 /* 1 when some child of non-zero weight has the direction slot of the method (reflection_dir for reflection,
  * refraction_dir for refraction): only then may the blend have an ideal ray. No call. */
-static int may_have_ray(const GTexBlend *b, int reflect)
+static int may_have_ray(const GNodeBlend *b, int reflect)
 {
     for (int i = 0; i < b->n; i++) {
         const GMaterialClass *cls = b->m[i]->cls;
@@ -101,9 +101,9 @@ static int may_have_ray(const GTexBlend *b, int reflect)
 /* The children a reflection or refraction call leaves out, one bit each (child i: 1 << i): at an aligned pair
  * where some child of non-zero weight has an ideal ray for the view -out, those without one (with c->nondelta,
  * those with one: their value there is the ideal part). 0 elsewhere; or a negative status. */
-_Static_assert(GTEX_BLEND_MAX <= 31, "ideal_skip's children are the bits of an int");
+_Static_assert(GNODE_BLEND_MAX <= 31, "ideal_skip's children are the bits of an int");
 
-static int ideal_skip(const GTexBlend *b, GSurfPoint *sp, const ColorCall *c)
+static int ideal_skip(const GNodeBlend *b, GSurfPoint *sp, const ColorCall *c)
 {
     int reflect = c->method == GNODE_REFLECTION;
     if (!may_have_ray(b, reflect))
@@ -131,7 +131,7 @@ static int ideal_skip(const GTexBlend *b, GSurfPoint *sp, const ColorCall *c)
     return !with ? 0 : c->nondelta ? with : without;
 }
 
-static int blend_color(const GTexBlend *b, GSurfPoint *sp, const ColorCall *c, GColor *result)
+static int blend_color(const GNodeBlend *b, GSurfPoint *sp, const ColorCall *c, GColor *result)
 {
     if (b->n == 1)
         return call_color(b->m[0], sp, c, result);
@@ -141,16 +141,16 @@ static int blend_color(const GTexBlend *b, GSurfPoint *sp, const ColorCall *c, G
             return skip;
     /* the first child goes straight into the result unless the result is also an input */
     int alias = (c->illum && c->illum->v == result->v) || (c->rel_index && c->rel_index->v == result->v);
-    GTexTemps t;
-    gtextemps_init(&t);
+    GNodeTemps t;
+    gnode_temps_init(&t);
     GColor acc, tmp;
     int rc = G_OK;
     if (alias)
-        rc = gtextemps_color(&t, sp, result->model, 0, &acc);
+        rc = gnode_temps_color(&t, sp, result->model, 0, &acc);
     else
         acc = *result;
     if (rc == G_OK)
-        rc = gtextemps_color(&t, sp, result->model, 1, &tmp);
+        rc = gnode_temps_color(&t, sp, result->model, 1, &tmp);
     int first = 1;
     for (int i = 0; i < b->n && rc == G_OK; i++) {
         if (b->w[i] == 0.0 || (skip >> i & 1))
@@ -172,49 +172,49 @@ static int blend_color(const GTexBlend *b, GSurfPoint *sp, const ColorCall *c, G
         rc = gcolor_copy(result, &acc);
     else if (rc == G_OK)
         result->kind = acc.kind;
-    gtextemps_release(&t);
+    gnode_temps_release(&t);
     return rc;
 }
 
-int gtexblend_reflection(const GTexBlend *b, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
+int gnode_blend_reflection(const GNodeBlend *b, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
                          GColor *result)
 {
     ColorCall c = {.method = GNODE_REFLECTION, .in = in, .out = out, .illum = illum};
     return blend_color(b, sp, &c, result);
 }
 
-int gtexblend_refraction(const GTexBlend *b, GSurfPoint *sp, GVec3 in, const GColor *illum, const GColor *rel_index,
+int gnode_blend_refraction(const GNodeBlend *b, GSurfPoint *sp, GVec3 in, const GColor *illum, const GColor *rel_index,
                          GVec3 out, GColor *result)
 {
     ColorCall c = {.method = GNODE_REFRACTION, .in = in, .out = out, .illum = illum, .rel_index = rel_index};
     return blend_color(b, sp, &c, result);
 }
 
-int gtexblend_refraction_index(const GTexBlend *b, GSurfPoint *sp, GColor *result)
+int gnode_blend_refraction_index(const GNodeBlend *b, GSurfPoint *sp, GColor *result)
 {
     ColorCall c = {.method = GNODE_REFRACTION_INDEX};
     return blend_color(b, sp, &c, result);
 }
 
-int gtexblend_emission(const GTexBlend *b, GSurfPoint *sp, GVec3 out, GColor *result)
+int gnode_blend_emission(const GNodeBlend *b, GSurfPoint *sp, GVec3 out, GColor *result)
 {
     ColorCall c = {.method = GNODE_EMISSION, .out = out};
     return blend_color(b, sp, &c, result);
 }
 
-int gtexblend_ambient(const GTexBlend *b, GSurfPoint *sp, const GColor *illum, GColor *result)
+int gnode_blend_ambient(const GNodeBlend *b, GSurfPoint *sp, const GColor *illum, GColor *result)
 {
     ColorCall c = {.method = GNODE_AMBIENT, .illum = illum};
     return blend_color(b, sp, &c, result);
 }
 
-int gtexblend_absorption(const GTexBlend *b, GSurfPoint *sp, const GColor *illum, double length, GColor *result)
+int gnode_blend_absorption(const GNodeBlend *b, GSurfPoint *sp, const GColor *illum, double length, GColor *result)
 {
     ColorCall c = {.method = GNODE_ABSORPTION, .illum = illum, .length = length};
     return blend_color(b, sp, &c, result);
 }
 
-int gtexblend_diffuse(const GTexBlend *b, GSurfPoint *sp, GColor *result)
+int gnode_blend_diffuse(const GNodeBlend *b, GSurfPoint *sp, GColor *result)
 {
     ColorCall c = {.method = GNODE_DIFFUSE};
     return blend_color(b, sp, &c, result);
@@ -223,7 +223,7 @@ int gtexblend_diffuse(const GTexBlend *b, GSurfPoint *sp, GColor *result)
 /* ---- vectors: the weighted sum of the valid children's vectors, normalised; with one valid child its own
  * vector; when the sum vanishes (opposite vectors) the valid child of largest weight ---- */
 
-static int blend_dir(const GTexBlend *b, GSurfPoint *sp, const DirCall *c, GVec3 *dir)
+static int blend_dir(const GNodeBlend *b, GSurfPoint *sp, const DirCall *c, GVec3 *dir)
 {
     if (b->n == 1)
         return call_dir(b->m[0], sp, c, dir);
@@ -257,26 +257,26 @@ static int blend_dir(const GTexBlend *b, GSurfPoint *sp, const DirCall *c, GVec3
     return 1;
 }
 
-int gtexblend_reflection_dir(const GTexBlend *b, GSurfPoint *sp, GVec3 view, GVec3 *dir)
+int gnode_blend_reflection_dir(const GNodeBlend *b, GSurfPoint *sp, GVec3 view, GVec3 *dir)
 {
     DirCall c = {.method = GNODE_REFLECTION_DIR, .view = view};
     return blend_dir(b, sp, &c, dir);
 }
 
-int gtexblend_refraction_dir(const GTexBlend *b, GSurfPoint *sp, GVec3 view, const GColor *rel_index, GVec3 *dir)
+int gnode_blend_refraction_dir(const GNodeBlend *b, GSurfPoint *sp, GVec3 view, const GColor *rel_index, GVec3 *dir)
 {
     DirCall c = {.method = GNODE_REFRACTION_DIR, .view = view, .rel_index = rel_index};
     return blend_dir(b, sp, &c, dir);
 }
 
-int gtexblend_normal(const GTexBlend *b, GSurfPoint *sp, GVec3 *n)
+int gnode_blend_normal(const GNodeBlend *b, GSurfPoint *sp, GVec3 *n)
 {
     DirCall c = {.method = GNODE_NORMAL};
     int rc = blend_dir(b, sp, &c, n);
     return rc < 0 ? rc : G_OK;
 }
 
-int gtexblend_opaque(const GTexBlend *b, GSurfPoint *sp)
+int gnode_blend_opaque(const GNodeBlend *b, GSurfPoint *sp)
 {
     for (int i = 0; i < b->n; i++)
         if (b->w[i] != 0.0 && !gmaterial_opaque(b->m[i], sp))
@@ -287,7 +287,7 @@ int gtexblend_opaque(const GTexBlend *b, GSurfPoint *sp)
 /* ---- sampling: a mixture of the children ---- */
 
 /* The selection probability of each child: |w_i| / sum |w_j|. */
-static double blend_probs(const GTexBlend *b, double q[GTEX_BLEND_MAX])
+static double blend_probs(const GNodeBlend *b, double q[GNODE_BLEND_MAX])
 {
     double total = 0.0;
     for (int i = 0; i < b->n; i++)
@@ -297,11 +297,11 @@ static double blend_probs(const GTexBlend *b, double q[GTEX_BLEND_MAX])
     return total;
 }
 
-double gtexblend_pdf(const GTexBlend *b, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
+double gnode_blend_pdf(const GNodeBlend *b, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
 {
     if (b->n == 1)
         return gmaterial_pdf(b->m[0], sp, in, out, rel_index);
-    double q[GTEX_BLEND_MAX], pdf = 0.0;
+    double q[GNODE_BLEND_MAX], pdf = 0.0;
     blend_probs(b, q);
     for (int i = 0; i < b->n; i++)
         if (q[i] > 0.0)
@@ -310,7 +310,7 @@ double gtexblend_pdf(const GTexBlend *b, GSurfPoint *sp, GVec3 in, GVec3 out, co
 }
 
 /* The weight child m has in b: the sum over its entries (a spline may list one child twice). */
-static double weight_of(const GTexBlend *b, const GMaterial *m)
+static double weight_of(const GNodeBlend *b, const GMaterial *m)
 {
     double w = 0.0;
     for (int i = 0; i < b->n; i++)
@@ -320,34 +320,34 @@ static double weight_of(const GTexBlend *b, const GMaterial *m)
 }
 
 /* The mixture over sel's children; a sample's value is that of refl, or of refr for a transmitted one (sel is both
- * when the two are one blend; see gtexblend_sample_split). */
-static int mixture_sample(const GTexBlend *sel, const GTexBlend *refl, const GTexBlend *refr, GSurfPoint *sp,
+ * when the two are one blend; see gnode_blend_sample_split). */
+static int mixture_sample(const GNodeBlend *sel, const GNodeBlend *refl, const GNodeBlend *refr, GSurfPoint *sp,
                           GVec3 out, const GColor *rel_index, double u1, double u2, GMaterialSample *s, GColor *weight)
 {
-    double q[GTEX_BLEND_MAX], p;
+    double q[GNODE_BLEND_MAX], p;
     if (!(blend_probs(sel, q) > 0.0))
         return 0;
-    int i = gmat_pick_lobe(q, sel->n, &u1, &p);
+    int i = gmaterial_pick_lobe(q, sel->n, &u1, &p);
     int rc = gmaterial_sample(sel->m[i], sp, out, rel_index, u1, u2, s, weight);
     if (rc <= 0)
         return rc;
     int transmit = (s->flags & GSAMPLE_TRANSMIT) != 0;
-    const GTexBlend *value = transmit ? refr : refl;
+    const GNodeBlend *value = transmit ? refr : refl;
     if (s->flags & GSAMPLE_DELTA) { /* the child's ideal lobe, weighted as in the blend */
         s->pdf *= q[i];
         rc = gcolor_scale(weight, weight, (value == sel ? sel->w[i] : weight_of(value, sel->m[i])) / q[i]);
         return rc ? rc : 1;
     }
-    s->pdf = gtexblend_pdf(sel, sp, s->in, out, rel_index);
+    s->pdf = gnode_blend_pdf(sel, sp, s->in, out, rel_index);
     if (!(s->pdf > 0.0)) {
         gcolor_black(weight);
         return 0;
     }
     /* the blend's own value of white light along the direction, over the mixture's density */
-    GTexTemps t;
-    gtextemps_init(&t);
+    GNodeTemps t;
+    gnode_temps_init(&t);
     GColor white;
-    rc = gtextemps_color(&t, sp, weight->model, 0, &white);
+    rc = gnode_temps_color(&t, sp, weight->model, 0, &white);
     if (rc == G_OK)
         rc = gcolor_fill(&white, 1.0);
     if (rc == G_OK) { /* at the ideal ray, the value of the lobes that are not ideal: the children without a ray */
@@ -357,11 +357,11 @@ static int mixture_sample(const GTexBlend *sel, const GTexBlend *refl, const GTe
     }
     if (rc == G_OK)
         rc = gcolor_scale(weight, weight, 1.0 / s->pdf);
-    gtextemps_release(&t);
+    gnode_temps_release(&t);
     return rc ? rc : 1;
 }
 
-int gtexblend_sample(const GTexBlend *b, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1, double u2,
+int gnode_blend_sample(const GNodeBlend *b, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1, double u2,
                      GMaterialSample *s, GColor *weight)
 {
     if (b->n == 1)
@@ -369,7 +369,7 @@ int gtexblend_sample(const GTexBlend *b, GSurfPoint *sp, GVec3 out, const GColor
     return mixture_sample(b, b, b, sp, out, rel_index, u1, u2, s, weight);
 }
 
-int gtexblend_sampled(const GTexBlend *refl, const GTexBlend *refr, GTexBlend *sel)
+int gnode_blend_sampled(const GNodeBlend *refl, const GNodeBlend *refr, GNodeBlend *sel)
 {
     int same = refl->n == refr->n;
     for (int i = 0; i < refl->n && same; i++)
@@ -378,13 +378,13 @@ int gtexblend_sampled(const GTexBlend *refl, const GTexBlend *refr, GTexBlend *s
     if (same)
         return 0;
     sel->n = 0;
-    const GTexBlend *both[2] = {refl, refr};
+    const GNodeBlend *both[2] = {refl, refr};
     for (int k = 0; k < 2; k++)
         for (int i = 0; i < both[k]->n; i++) {
             int j = 0;
             while (j < sel->n && sel->m[j] != both[k]->m[i])
                 j++;
-            if (j == GTEX_BLEND_MAX) { /* more children than a blend holds: the reflection's alone */
+            if (j == GNODE_BLEND_MAX) { /* more children than a blend holds: the reflection's alone */
                 *sel = *refl;
                 return 0;
             }
@@ -397,16 +397,16 @@ int gtexblend_sampled(const GTexBlend *refl, const GTexBlend *refr, GTexBlend *s
     return 1;
 }
 
-int gtexblend_sample_split(const GTexBlend *refl, const GTexBlend *refr, GSurfPoint *sp, GVec3 out,
+int gnode_blend_sample_split(const GNodeBlend *refl, const GNodeBlend *refr, GSurfPoint *sp, GVec3 out,
                            const GColor *rel_index, double u1, double u2, GMaterialSample *s, GColor *weight)
 {
-    GTexBlend sel;
-    if (!gtexblend_sampled(refl, refr, &sel))
-        return gtexblend_sample(refl, sp, out, rel_index, u1, u2, s, weight);
+    GNodeBlend sel;
+    if (!gnode_blend_sampled(refl, refr, &sel))
+        return gnode_blend_sample(refl, sp, out, rel_index, u1, u2, s, weight);
     return mixture_sample(&sel, refl, refr, sp, out, rel_index, u1, u2, s, weight);
 }
 
-int gtexblend_is_delta(const GTexBlend *b, GSurfPoint *sp)
+int gnode_blend_is_delta(const GNodeBlend *b, GSurfPoint *sp)
 {
     for (int i = 0; i < b->n; i++)
         if (b->w[i] != 0.0 && !gmaterial_is_delta(b->m[i], sp))

@@ -22,85 +22,85 @@ static int children_all(GMaterial *const *children, int n, unsigned flag)
     return 1;
 }
 
-int gtexnode_children_dark(GMaterial *const *children, int n) { return children_all(children, n, GMAT_NO_EMISSION); }
+int gnode_children_dark(GMaterial *const *children, int n) { return children_all(children, n, GMAT_NO_EMISSION); }
 
-void gtexnode_inherit_no_emission(GMaterial *node, GMaterial *const *children, int n)
+void gnode_inherit_no_emission(GMaterial *node, GMaterial *const *children, int n)
 {
-    if (node && gtexnode_children_dark(children, n))
+    if (node && gnode_children_dark(children, n))
         node->flags |= GMAT_NO_EMISSION;
 }
 
-int gtexnode_children_opaque(GMaterial *const *children, int n) { return children_all(children, n, GMAT_OPAQUE); }
+int gnode_children_opaque(GMaterial *const *children, int n) { return children_all(children, n, GMAT_OPAQUE); }
 
-void gtexnode_inherit_opaque(GMaterial *node, GMaterial *const *children, int n)
+void gnode_inherit_opaque(GMaterial *node, GMaterial *const *children, int n)
 {
-    if (node && gtexnode_children_opaque(children, n))
+    if (node && gnode_children_opaque(children, n))
         node->flags |= GMAT_OPAQUE;
 }
 
-int gtexnode_children_geometric_normal(GMaterial *const *children, int n)
+int gnode_children_geometric_normal(GMaterial *const *children, int n)
 {
     return children_all(children, n, GMAT_GEOMETRIC_NORMAL);
 }
 
-void gtexnode_inherit_geometric_normal(GMaterial *node, GMaterial *const *children, int n)
+void gnode_inherit_geometric_normal(GMaterial *node, GMaterial *const *children, int n)
 {
-    if (node && gtexnode_children_geometric_normal(children, n))
+    if (node && gnode_children_geometric_normal(children, n))
         node->flags |= GMAT_GEOMETRIC_NORMAL;
 }
 
-void gtexnode_inherit_kit_normal(GMaterial *node, GMaterial *const *children, int n)
+void gnode_inherit_kit_normal(GMaterial *node, GMaterial *const *children, int n)
 {
-    if (node && (node->cls->normal == gtexblendnode_normal || node->cls->normal == gtexchild_normal))
-        gtexnode_inherit_geometric_normal(node, children, n);
+    if (node && (node->cls->normal == gnode_blended_normal || node->cls->normal == gnode_child_normal))
+        gnode_inherit_geometric_normal(node, children, n);
 }
 
-int gtexnode_children_lambertian(GMaterial *const *children, int n)
+int gnode_children_lambertian(GMaterial *const *children, int n)
 {
     return children_all(children, n, GMAT_LAMBERTIAN);
 }
 
-void gtexnode_inherit_lambertian(GMaterial *node, GMaterial *const *children, int n)
+void gnode_inherit_lambertian(GMaterial *node, GMaterial *const *children, int n)
 {
-    if (node && node->cls->reflection == gtexblendnode_reflection && node->cls->diffuse == gtexblendnode_diffuse &&
-        gtexnode_children_lambertian(children, n))
+    if (node && node->cls->reflection == gnode_blended_reflection && node->cls->diffuse == gnode_blended_diffuse &&
+        gnode_children_lambertian(children, n))
         node->flags |= GMAT_LAMBERTIAN;
 }
 
-void gtexnode_inherit_lambertian_child(GMaterial *node, GMaterial *child)
+void gnode_inherit_lambertian_child(GMaterial *node, GMaterial *child)
 {
-    if (node && child && node != child && gtexnode_children_lambertian(&child, 1))
+    if (node && child && node != child && gnode_children_lambertian(&child, 1))
         node->flags |= GMAT_LAMBERTIAN;
 }
 
-int gtexnode_children_diagonal(GMaterial *const *children, int n)
+int gnode_children_diagonal(GMaterial *const *children, int n)
 {
     return children_all(children, n, GMAT_DIAGONAL);
 }
 
-void gtexnode_inherit_diagonal(GMaterial *node, GMaterial *const *children, int n)
+void gnode_inherit_diagonal(GMaterial *node, GMaterial *const *children, int n)
 {
-    if (node && gtexnode_children_diagonal(children, n))
+    if (node && gnode_children_diagonal(children, n))
         node->flags |= GMAT_DIAGONAL;
 }
 
-void gtexnode_inherit_kit_diagonal(GMaterial *node, GMaterial *const *children, int n)
+void gnode_inherit_kit_diagonal(GMaterial *node, GMaterial *const *children, int n)
 {
     if (!node)
         return;
     const GMaterialClass *c = node->cls;
-    if ((!c->reflection || c->reflection == gtexblendnode_reflection || c->reflection == gtexchild_reflection) &&
-        (!c->refraction || c->refraction == gtexblendnode_refraction || c->refraction == gtexchild_refraction))
-        gtexnode_inherit_diagonal(node, children, n);
+    if ((!c->reflection || c->reflection == gnode_blended_reflection || c->reflection == gnode_child_reflection) &&
+        (!c->refraction || c->refraction == gnode_blended_refraction || c->refraction == gnode_child_refraction))
+        gnode_inherit_diagonal(node, children, n);
 }
 
-int gtexnode_children_no_uv(GMaterial *const *children, int n, const GGenerator *gen)
+int gnode_children_no_uv(GMaterial *const *children, int n, const GGenerator *gen)
 {
     return children_all(children, n, GMAT_NO_UV) && !(gen && gen->space == GGENERATOR_SPACE_UV);
 }
 
-void gtexnode_inherit_no_uv(GMaterial *node, GMaterial *const *children, int n, const GGenerator *gen)
+void gnode_inherit_no_uv(GMaterial *node, GMaterial *const *children, int n, const GGenerator *gen)
 {
-    if (node && gtexnode_children_no_uv(children, n, gen))
+    if (node && gnode_children_no_uv(children, n, gen))
         node->flags |= GMAT_NO_UV;
 }

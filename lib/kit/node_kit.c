@@ -2,7 +2,7 @@
  * pick a blend and hand it to lib/kit/node_blend.c's weighted blends, temporaries, one-child and list nodes, and
  * the construction checks of all nodes. */
 #include "generic/kit/node_kit.h"
-#include "generic/kit/material_kit.h" /* gmat_new: nodes are built like the built-in materials */
+#include "generic/kit/material_kit.h" /* gmaterial_new: nodes are built like the built-in materials */
 #include "node_blend.h"
 
 #include <string.h>
@@ -25,7 +25,7 @@ int gnode_method_from_name(const char *name)
     return -1;
 }
 
-int gtextemps_color(GTexTemps *t, GSurfPoint *sp, const GColorModel *m, int index, GColor *c)
+int gnode_temps_color(GNodeTemps *t, GSurfPoint *sp, const GColorModel *m, int index, GColor *c)
 {
     (void)index;
     GScratch *arena = sp && sp->scratch ? sp->scratch : gscratch_thread();
@@ -42,20 +42,20 @@ int gtextemps_color(GTexTemps *t, GSurfPoint *sp, const GColorModel *m, int inde
     return G_OK;
 }
 
-void gtextemps_release(GTexTemps *t)
+void gnode_temps_release(GNodeTemps *t)
 {
     if (t->scratch)
         gscratch_release(t->scratch, t->mark);
     t->scratch = NULL;
 }
 
-int gtexnode_scales_method(GNodeMethod m)
+int gnode_scales_method(GNodeMethod m)
 {
     return m == GNODE_REFLECTION || m == GNODE_REFRACTION || m == GNODE_EMISSION || m == GNODE_AMBIENT ||
            m == GNODE_DIFFUSE;
 }
 
-int gtexnode_check(const char *node, GMaterial *const *children, int n, const GGenerator *gen, int gen_needed,
+int gnode_check(const char *node, GMaterial *const *children, int n, const GGenerator *gen, int gen_needed,
                    const GColorModel **model, GError *err)
 {
     if (!children || n <= 0)
@@ -77,68 +77,68 @@ int gtexnode_check(const char *node, GMaterial *const *children, int n, const GG
 /* A material made without gmaterial_init may have 0 there: it counts as a material. */
 static int at_least_1(int v) { return v > 1 ? v : 1; }
 
-int gtexnode_measure(const char *node, GMaterial *const *children, int n, int *depth, int *cost, GError *err)
+int gnode_measure(const char *node, GMaterial *const *children, int n, int *depth, int *cost, GError *err)
 {
     int d = 0;
-    int top[GTEX_BLEND_MAX] = {0}; /* the largest costs, in decreasing order */
+    int top[GNODE_BLEND_MAX] = {0}; /* the largest costs, in decreasing order */
     for (int i = 0; i < n; i++) {
         d = at_least_1(children[i]->depth) > d ? at_least_1(children[i]->depth) : d;
         int c = at_least_1(children[i]->cost);
-        for (int k = 0; k < GTEX_BLEND_MAX; k++)
+        for (int k = 0; k < GNODE_BLEND_MAX; k++)
             if (c > top[k]) {
                 int t = top[k];
                 top[k] = c;
                 c = t;
             }
     }
-    long long sum = 1; /* each term is at most GTEXNODE_MAX_COST for kit nodes, INT_MAX for any: no overflow */
-    for (int k = 0; k < GTEX_BLEND_MAX; k++)
+    long long sum = 1; /* each term is at most GNODE_MAX_COST for kit nodes, INT_MAX for any: no overflow */
+    for (int k = 0; k < GNODE_BLEND_MAX; k++)
         sum += top[k];
-    if (d + 1 > GTEXNODE_MAX_DEPTH)
+    if (d + 1 > GNODE_MAX_DEPTH)
         return gerror_set(err, G_ERR_INVALID, "%s: the node would be %d deep, the limit is %d", node, d + 1,
-                          GTEXNODE_MAX_DEPTH);
-    if (sum > GTEXNODE_MAX_COST)
+                          GNODE_MAX_DEPTH);
+    if (sum > GNODE_MAX_COST)
         return gerror_set(err, G_ERR_INVALID,
                           "%s: one call of the node would make %lld material calls, the limit is %d", node, sum,
-                          GTEXNODE_MAX_COST);
+                          GNODE_MAX_COST);
     *depth = d + 1;
     *cost = (int)sum;
     return G_OK;
 }
 
-int gtexnode_new_checked(const GMaterialClass *cls, GMaterial *const *children, int n, const GGenerator *gen,
+int gnode_new_checked(const GMaterialClass *cls, GMaterial *const *children, int n, const GGenerator *gen,
                          int gen_needed, size_t size, GMaterial **out, GError *err)
 {
     *out = NULL;
     const GColorModel *model;
     int depth = 0, cost = 0;
-    int rc = gtexnode_check(cls->name, children, n, gen, gen_needed, &model, err);
+    int rc = gnode_check(cls->name, children, n, gen, gen_needed, &model, err);
     if (rc == G_OK)
-        rc = gtexnode_measure(cls->name, children, n, &depth, &cost, err);
+        rc = gnode_measure(cls->name, children, n, &depth, &cost, err);
     if (rc == G_OK)
-        rc = gmat_new(cls, model, size, out, err);
+        rc = gmaterial_new(cls, model, size, out, err);
     if (rc == G_OK) {
         (*out)->depth = depth;
         (*out)->cost = cost;
-        if (cls->emission == gtexblendnode_emission || cls->emission == gtexchild_emission) /* sums of children */
-            gtexnode_inherit_no_emission(*out, children, n);
-        if (cls->opaque == gtexblendnode_opaque || cls->opaque == gtexchild_opaque) /* opaque where they all are */
-            gtexnode_inherit_opaque(*out, children, n);
-        gtexnode_inherit_kit_normal(*out, children, n); /* the kit's normal slots: blends of their normals */
-        gtexnode_inherit_kit_diagonal(*out, children, n); /* the kit's pass-on slots: sums of their pass-ons */
+        if (cls->emission == gnode_blended_emission || cls->emission == gnode_child_emission) /* sums of children */
+            gnode_inherit_no_emission(*out, children, n);
+        if (cls->opaque == gnode_blended_opaque || cls->opaque == gnode_child_opaque) /* opaque where they all are */
+            gnode_inherit_opaque(*out, children, n);
+        gnode_inherit_kit_normal(*out, children, n); /* the kit's normal slots: blends of their normals */
+        gnode_inherit_kit_diagonal(*out, children, n); /* the kit's pass-on slots: sums of their pass-ons */
     }
     return rc;
 }
 
-int gtexlist_new(const GMaterialClass *cls, GMaterial *const *children, int n, GGenerator *gen, size_t size,
+int gnode_list_new(const GMaterialClass *cls, GMaterial *const *children, int n, GGenerator *gen, size_t size,
                  GMaterial **out, GError *err)
 {
     *out = NULL;
     GMaterial *node;
-    int rc = gtexnode_new_checked(cls, children, n, gen, 1, size, &node, err);
+    int rc = gnode_new_checked(cls, children, n, gen, 1, size, &node, err);
     if (rc != G_OK)
         return rc;
-    GTexList *l = (GTexList *)node;
+    GNodeList *l = (GNodeList *)node;
     l->children = gmem_calloc((size_t)n, sizeof *l->children);
     if (!l->children) {
         gmem_free(l);
@@ -152,9 +152,9 @@ int gtexlist_new(const GMaterialClass *cls, GMaterial *const *children, int n, G
     return G_OK;
 }
 
-void gtexlist_destroy(GMaterial *self)
+void gnode_list_destroy(GMaterial *self)
 {
-    GTexList *l = (GTexList *)self;
+    GNodeList *l = (GNodeList *)self;
     for (int i = 0; i < l->n; i++)
         gmaterial_unref(l->children[i]);
     gmem_free(l->children);
@@ -164,212 +164,212 @@ void gtexlist_destroy(GMaterial *self)
 
 /* ---- nodes with one child ---- */
 
-int gtexchild_new(const GMaterialClass *cls, GMaterial *child, const GGenerator *gen, int gen_needed, size_t size,
+int gnode_child_new(const GMaterialClass *cls, GMaterial *child, const GGenerator *gen, int gen_needed, size_t size,
                   GMaterial **out, GError *err)
 {
-    int rc = gtexnode_new_checked(cls, &child, 1, gen, gen_needed, size, out, err);
+    int rc = gnode_new_checked(cls, &child, 1, gen, gen_needed, size, out, err);
     if (rc == G_OK)
-        ((GTexChild *)*out)->child = gmaterial_ref(child);
+        ((GNodeChild *)*out)->child = gmaterial_ref(child);
     return rc;
 }
 
-void gtexchild_destroy(GMaterial *self)
+void gnode_child_destroy(GMaterial *self)
 {
-    gmaterial_unref(gtexchild_of(self));
+    gmaterial_unref(gnode_child_of(self));
     gmem_free(self);
 }
 
-int gtexchild_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
+int gnode_child_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
                          GColor *result)
 {
-    return gmaterial_reflection(gtexchild_of(self), sp, in, illum, out, result);
+    return gmaterial_reflection(gnode_child_of(self), sp, in, illum, out, result);
 }
 
-int gtexchild_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
+int gnode_child_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
                          const GColor *rel_index, GVec3 out, GColor *result)
 {
-    return gmaterial_refraction(gtexchild_of(self), sp, in, illum, rel_index, out, result);
+    return gmaterial_refraction(gnode_child_of(self), sp, in, illum, rel_index, out, result);
 }
 
-int gtexchild_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
+int gnode_child_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
 {
-    return gmaterial_refraction_index(gtexchild_of(self), sp, result);
+    return gmaterial_refraction_index(gnode_child_of(self), sp, result);
 }
 
-int gtexchild_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
+int gnode_child_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
 {
-    return gmaterial_reflection_dir(gtexchild_of(self), sp, view, dir);
+    return gmaterial_reflection_dir(gnode_child_of(self), sp, view, dir);
 }
 
-int gtexchild_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
+int gnode_child_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
                              GVec3 *dir)
 {
-    return gmaterial_refraction_dir(gtexchild_of(self), sp, view, rel_index, dir);
+    return gmaterial_refraction_dir(gnode_child_of(self), sp, view, rel_index, dir);
 }
 
-int gtexchild_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result)
+int gnode_child_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result)
 {
-    return gmaterial_emission(gtexchild_of(self), sp, out, result);
+    return gmaterial_emission(gnode_child_of(self), sp, out, result);
 }
 
-int gtexchild_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
+int gnode_child_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
 {
-    return gmaterial_ambient(gtexchild_of(self), sp, illum, result);
+    return gmaterial_ambient(gnode_child_of(self), sp, illum, result);
 }
 
-int gtexchild_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
+int gnode_child_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
                          GColor *result)
 {
-    return gmaterial_absorption(gtexchild_of(self), sp, illum, length, result);
+    return gmaterial_absorption(gnode_child_of(self), sp, illum, length, result);
 }
 
-int gtexchild_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
+int gnode_child_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
 {
-    return gmaterial_normal(gtexchild_of(self), sp, n);
+    return gmaterial_normal(gnode_child_of(self), sp, n);
 }
 
-int gtexchild_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
+int gnode_child_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
 {
-    return gmaterial_diffuse(gtexchild_of(self), sp, result);
+    return gmaterial_diffuse(gnode_child_of(self), sp, result);
 }
 
-int gtexchild_opaque(const GMaterial *self, GSurfPoint *sp)
+int gnode_child_opaque(const GMaterial *self, GSurfPoint *sp)
 {
-    return gmaterial_opaque(gtexchild_of(self), sp);
+    return gmaterial_opaque(gnode_child_of(self), sp);
 }
 
-int gtexchild_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
+int gnode_child_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
                      double u2, GMaterialSample *s, GColor *weight)
 {
-    return gmaterial_sample(gtexchild_of(self), sp, out, rel_index, u1, u2, s, weight);
+    return gmaterial_sample(gnode_child_of(self), sp, out, rel_index, u1, u2, s, weight);
 }
 
-double gtexchild_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
+double gnode_child_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
 {
-    return gmaterial_pdf(gtexchild_of(self), sp, in, out, rel_index);
+    return gmaterial_pdf(gnode_child_of(self), sp, in, out, rel_index);
 }
 
-int gtexchild_is_delta(const GMaterial *self, GSurfPoint *sp)
+int gnode_child_is_delta(const GMaterial *self, GSurfPoint *sp)
 {
-    return gmaterial_is_delta(gtexchild_of(self), sp);
+    return gmaterial_is_delta(gnode_child_of(self), sp);
 }
 
 /* ---- the methods of blend nodes: the class's pick, then the blend ---- */
 
-static void pick(const GMaterial *self, GSurfPoint *sp, GNodeMethod m, GTexBlend *b)
+static void pick(const GMaterial *self, GSurfPoint *sp, GNodeMethod m, GNodeBlend *b)
 {
-    ((const GTexBlendClass *)self->cls)->pick(self, sp, m, b);
+    ((const GNodeBlendClass *)self->cls)->pick(self, sp, m, b);
 }
 
-int gtexblendnode_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
+int gnode_blended_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
                              GColor *result)
 {
-    GTexBlend b;
+    GNodeBlend b;
     pick(self, sp, GNODE_REFLECTION, &b);
-    return gtexblend_reflection(&b, sp, in, illum, out, result);
+    return gnode_blend_reflection(&b, sp, in, illum, out, result);
 }
 
-int gtexblendnode_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
+int gnode_blended_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
                              const GColor *rel_index, GVec3 out, GColor *result)
 {
-    GTexBlend b;
+    GNodeBlend b;
     pick(self, sp, GNODE_REFRACTION, &b);
-    return gtexblend_refraction(&b, sp, in, illum, rel_index, out, result);
+    return gnode_blend_refraction(&b, sp, in, illum, rel_index, out, result);
 }
 
-int gtexblendnode_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
+int gnode_blended_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
 {
-    GTexBlend b;
+    GNodeBlend b;
     pick(self, sp, GNODE_REFRACTION_INDEX, &b);
-    return gtexblend_refraction_index(&b, sp, result);
+    return gnode_blend_refraction_index(&b, sp, result);
 }
 
-int gtexblendnode_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
+int gnode_blended_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
 {
-    GTexBlend b;
+    GNodeBlend b;
     pick(self, sp, GNODE_REFLECTION_DIR, &b);
-    return gtexblend_reflection_dir(&b, sp, view, dir);
+    return gnode_blend_reflection_dir(&b, sp, view, dir);
 }
 
-int gtexblendnode_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
+int gnode_blended_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
                                  GVec3 *dir)
 {
-    GTexBlend b;
+    GNodeBlend b;
     pick(self, sp, GNODE_REFRACTION_DIR, &b);
-    return gtexblend_refraction_dir(&b, sp, view, rel_index, dir);
+    return gnode_blend_refraction_dir(&b, sp, view, rel_index, dir);
 }
 
-int gtexblendnode_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result)
+int gnode_blended_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result)
 {
-    GTexBlend b;
+    GNodeBlend b;
     pick(self, sp, GNODE_EMISSION, &b);
-    return gtexblend_emission(&b, sp, out, result);
+    return gnode_blend_emission(&b, sp, out, result);
 }
 
-int gtexblendnode_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
+int gnode_blended_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
 {
-    GTexBlend b;
+    GNodeBlend b;
     pick(self, sp, GNODE_AMBIENT, &b);
-    return gtexblend_ambient(&b, sp, illum, result);
+    return gnode_blend_ambient(&b, sp, illum, result);
 }
 
-int gtexblendnode_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
+int gnode_blended_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
                              GColor *result)
 {
-    GTexBlend b;
+    GNodeBlend b;
     pick(self, sp, GNODE_ABSORPTION, &b);
-    return gtexblend_absorption(&b, sp, illum, length, result);
+    return gnode_blend_absorption(&b, sp, illum, length, result);
 }
 
-int gtexblendnode_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
+int gnode_blended_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
 {
-    GTexBlend b;
+    GNodeBlend b;
     pick(self, sp, GNODE_NORMAL, &b);
-    return gtexblend_normal(&b, sp, n);
+    return gnode_blend_normal(&b, sp, n);
 }
 
-int gtexblendnode_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
+int gnode_blended_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
 {
-    GTexBlend b;
+    GNodeBlend b;
     pick(self, sp, GNODE_DIFFUSE, &b);
-    return gtexblend_diffuse(&b, sp, result);
+    return gnode_blend_diffuse(&b, sp, result);
 }
 
-int gtexblendnode_opaque(const GMaterial *self, GSurfPoint *sp)
+int gnode_blended_opaque(const GMaterial *self, GSurfPoint *sp)
 {
-    GTexBlend b;
+    GNodeBlend b;
     pick(self, sp, GNODE_OPAQUE, &b);
-    return gtexblend_opaque(&b, sp);
+    return gnode_blend_opaque(&b, sp);
 }
 
-int gtexblendnode_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
+int gnode_blended_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
                          double u2, GMaterialSample *s, GColor *weight)
 {
-    GTexBlend r, t;
+    GNodeBlend r, t;
     pick(self, sp, GNODE_REFLECTION, &r);
     pick(self, sp, GNODE_REFRACTION, &t);
-    return gtexblend_sample_split(&r, &t, sp, out, rel_index, u1, u2, s, weight);
+    return gnode_blend_sample_split(&r, &t, sp, out, rel_index, u1, u2, s, weight);
 }
 
-/* The blend sampling draws from (gtexblend_sampled): the reflection's, or the union with the refraction's. */
-static void sampled(const GMaterial *self, GSurfPoint *sp, GTexBlend *sel)
+/* The blend sampling draws from (gnode_blend_sampled): the reflection's, or the union with the refraction's. */
+static void sampled(const GMaterial *self, GSurfPoint *sp, GNodeBlend *sel)
 {
-    GTexBlend r, t;
+    GNodeBlend r, t;
     pick(self, sp, GNODE_REFLECTION, &r);
     pick(self, sp, GNODE_REFRACTION, &t);
-    (void)gtexblend_sampled(&r, &t, sel);
+    (void)gnode_blend_sampled(&r, &t, sel);
 }
 
-double gtexblendnode_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
+double gnode_blended_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
 {
-    GTexBlend b;
+    GNodeBlend b;
     sampled(self, sp, &b);
-    return gtexblend_pdf(&b, sp, in, out, rel_index);
+    return gnode_blend_pdf(&b, sp, in, out, rel_index);
 }
 
-int gtexblendnode_is_delta(const GMaterial *self, GSurfPoint *sp)
+int gnode_blended_is_delta(const GMaterial *self, GSurfPoint *sp)
 {
-    GTexBlend b;
+    GNodeBlend b;
     sampled(self, sp, &b);
-    return gtexblend_is_delta(&b, sp);
+    return gnode_blend_is_delta(&b, sp);
 }

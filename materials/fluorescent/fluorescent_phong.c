@@ -114,13 +114,13 @@ static int fphong_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const
     double w[4], prob;
     GVec3 r, n = gsurfpoint_normal(sp);
     fphong_lobes(p, sp, out, w, &r);
-    int lobe = gmat_pick_lobe(w, 4, &u1, &prob);
+    int lobe = gmaterial_pick_lobe(w, 4, &u1, &prob);
     s->in = lobe == 0 ? goptics_sample_cosine(n, u1, u2) : goptics_sample_lobe(r, p->n[lobe - 1], u1, u2);
     s->pdf = fphong_lobes_pdf(p, n, r, w, s->in);
     s->flags = GSAMPLE_REFLECT;
     if (!(s->pdf > 0.0))
         return 0;
-    int rc = gmat_sample_weight(self, sp, s->in, out, rel_index, 0, s->pdf, weight);
+    int rc = gmaterial_sample_weight(self, sp, s->in, out, rel_index, 0, s->pdf, weight);
     return rc ? rc : 1;
 }
 
@@ -182,7 +182,7 @@ int gfluor_phong_create(const GColorModel *model, const GReradiation *matrix, co
         rc = check_params(&p, err);
     GMaterial *m;
     if (rc == G_OK)
-        rc = gmat_new(&fluorescent_phong_class, model, sizeof(FPhong), &m, err);
+        rc = gmaterial_new(&fluorescent_phong_class, model, sizeof(FPhong), &m, err);
     if (rc != G_OK)
         return rc;
     FPhong *f = (FPhong *)m;

@@ -318,7 +318,7 @@ static int varnish_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, cons
         return 0;
     double w[2], prob;
     varnish_lobes(v, co, w);
-    int lobe = gmat_pick_lobe(w, 2, &u1, &prob);
+    int lobe = gmaterial_pick_lobe(w, 2, &u1, &prob);
     if (lobe == 1)
         s->in = goptics_sample_cosine(n, u1, u2);
     else { /* cos theta_h = u^(1 / (m + 2)) makes D(h)(h.n) dw_h uniform */
@@ -335,7 +335,7 @@ static int varnish_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, cons
     s->flags = GSAMPLE_REFLECT;
     if (!(s->pdf > 0.0))
         return 0;
-    int rc = gmat_sample_weight(self, sp, s->in, out, rel_index, 0, s->pdf, weight);
+    int rc = gmaterial_sample_weight(self, sp, s->in, out, rel_index, 0, s->pdf, weight);
     return rc ? rc : 1;
 }
 
@@ -397,7 +397,7 @@ int gfluor_varnish_create(const GColorModel *model, const GReradiation *matrix, 
                               p.slope_deg);
     }
     GMaterial *base;
-    rc = gmat_new(&fluorescent_varnish_class, model, sizeof(Varnish), &base, err);
+    rc = gmaterial_new(&fluorescent_varnish_class, model, sizeof(Varnish), &base, err);
     if (rc != G_OK)
         return rc;
     Varnish *v = (Varnish *)base;

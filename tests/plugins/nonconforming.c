@@ -296,7 +296,7 @@ typedef struct Ideal {
 
 static void ideal_destroy(GMaterial *self) { gmem_free(self); }
 
-/* in and out on the incident side of the geometric normal, where one interface can reflect (gmat_cos_in). */
+/* in and out on the incident side of the geometric normal, where one interface can reflect (gmaterial_cos_in). */
 static int incident_side(const GSurfPoint *sp, GVec3 in, GVec3 out)
 {
 #ifdef LEAKY

@@ -110,7 +110,7 @@ module() {
         GENERIC_TYPE_NAMED*) name=$(echo "$line" | sed 's/^[^"]*"\([^"]*\)".*/\1/') ;;
         *) # the keyword of the class named in the record
             cls=$(echo "$line" | sed 's/^[^,]*,[^,]*, *&\([A-Za-z_0-9]*\).*/\1/')
-            name=$(awk -v c="$cls" '$0 ~ "GMaterialClass " c " =|GGeneratorClass " c " =|GColorModelClass " c " =|GTexBlendClass " c " =" { on = 1 }
+            name=$(awk -v c="$cls" '$0 ~ "GMaterialClass " c " =|GGeneratorClass " c " =|GColorModelClass " c " =|GNodeBlendClass " c " =" { on = 1 }
                 on && /\.name = "/ { sub(/.*\.name = "/, ""); sub(/".*/, ""); print; exit }' "$src") ;;
         esac
         [ -n "$name" ] || { echo "type_modules.sh: cannot find the keyword of record $id in $src" >&2; exit 1; }

@@ -24,12 +24,12 @@ static inline double gfluor_entry(const GReradiation *r, int o, int i)
     return v > 0.0f ? (double)v : 0.0;
 }
 
-/** The cosines of a reflection from in to out with the shading normal *n: *ci (gmat_cos_in) and *co. 1 when
+/** The cosines of a reflection from in to out with the shading normal *n: *ci (gmaterial_cos_in) and *co. 1 when
  * light reflects, else 0 with result made black (either cosine <= 0). */
 static inline int gfluor_cosines(GSurfPoint *sp, GVec3 in, GVec3 out, GColor *result, GVec3 *n, double *ci,
                                 double *co)
 {
-    *ci = gmat_cos_in(sp, in, out, n);
+    *ci = gmaterial_cos_in(sp, in, out, n);
     *co = gvec3_dot(out, *n);
     if (*ci <= 0.0 || *co <= 0.0) {
         gcolor_black(result);

@@ -20,41 +20,41 @@ extern "C" {
 /** Allocates a zeroed material of `size` bytes (a struct that begins with its GMaterial) of class cls in
  * model into *out: G_ERR_NOMEM "<class>: out of memory", G_ERR_VERSION for a class of another version. Until
  * it is complete, the material is freed with its class's destroy (or gmem_free). */
-GENERIC_API GENERIC_NODISCARD int gmat_new(const GMaterialClass *cls, const GColorModel *model, size_t size, GMaterial **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gmaterial_new(const GMaterialClass *cls, const GColorModel *model, size_t size, GMaterial **out, GError *err);
 
 /** The state of a material whose one parameter is a colour (lambert, mirror; emitter adds a flag after it). */
-typedef struct GMatOneColor {
+typedef struct GMaterialOneColor {
     GMaterial base;
     GColor c; /**< the parameter, in the material's model */
-} GMatOneColor;
-/** The destroy method of the materials whose struct begins with a GMatOneColor (frees c and the struct). */
-GENERIC_API void gmat_one_color_destroy(GMaterial *self);
-/** Creates a material of class cls whose struct (`size` bytes) begins with a GMatOneColor, its colour being
- * src checked and converted by gmatparam_color (role, max; complaints "<class>: <param> ..." name param).
+} GMaterialOneColor;
+/** The destroy method of the materials whose struct begins with a GMaterialOneColor (frees c and the struct). */
+GENERIC_API void gmaterial_one_color_destroy(GMaterial *self);
+/** Creates a material of class cls whose struct (`size` bytes) begins with a GMaterialOneColor, its colour being
+ * src checked and converted by gmaterial_param_color (role, max; complaints "<class>: <param> ..." name param).
  * G_ERR_INVALID "<class>: no colour model given" without a model. */
-GENERIC_API GENERIC_NODISCARD int gmat_one_color_create(const GMaterialClass *cls, const GColorModel *model, size_t size, const GColor *src,
+GENERIC_API GENERIC_NODISCARD int gmaterial_one_color_create(const GMaterialClass *cls, const GColorModel *model, size_t size, const GColor *src,
                           GColorRole role, double max, const char *param, GMaterial **out, GError *err);
 
 /** 1 when in and out lie where one interface can join them, by the geometric normal (material.h): out on its
  * incident side, and in on that side too for a reflection (transmit = 0) or on the other for a refraction
  * (transmit = 1). About a shading normal a bump tilts, an ideal ray may point back across the surface; such a pair
  * passes on nothing. */
-GENERIC_API int gmat_sides_agree(const GSurfPoint *sp, GVec3 in, GVec3 out, int transmit);
+GENERIC_API int gmaterial_sides_agree(const GSurfPoint *sp, GVec3 in, GVec3 out, int transmit);
 /** Cosine of `in` with the shading normal when in and out are both on the incident side of the geometric
- * normal (gmat_sides_agree for a reflection), else 0 (clamped at 0); *n receives the shading normal
+ * normal (gmaterial_sides_agree for a reflection), else 0 (clamped at 0); *n receives the shading normal
  * (gsurfpoint_normal). */
-GENERIC_API double gmat_cos_in(GSurfPoint *sp, GVec3 in, GVec3 out, GVec3 *n);
+GENERIC_API double gmaterial_cos_in(GSurfPoint *sp, GVec3 in, GVec3 out, GVec3 *n);
 
 /** The weight of a sampled direction (material.h): weight = value(in, white, out) / pdf, value being the
  * material's reflection() (transmit == 0) or refraction() with rel_index (transmit != 0), white from sp's arena
  * (or the thread's). For a material's sample(): its weight is then consistent with its methods by construction. */
-GENERIC_API GENERIC_NODISCARD int gmat_sample_weight(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out,
+GENERIC_API GENERIC_NODISCARD int gmaterial_sample_weight(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out,
                                                      const GColor *rel_index, int transmit, double pdf,
                                                      GColor *weight);
 
 /** Picks lobe i of n (weights w[i] >= 0, not all 0) with probability w[i] / sum from u in [0, 1) and remaps u to
  * [0, 1) within the lobe (*u); returns i and the probability in *p. */
-GENERIC_API GENERIC_NODISCARD int gmat_pick_lobe(const double *w, int n, double *u, double *p);
+GENERIC_API GENERIC_NODISCARD int gmaterial_pick_lobe(const double *w, int n, double *u, double *p);
 
 #ifdef __cplusplus
 }
