@@ -148,41 +148,97 @@ struct GMaterial {
                                    header made without them, which only costs speed */
 };
 
-/** The material vtable. Colour methods return a status; direction methods return 1 (valid), 0 (not valid)
- * or a negative status. */
+/* ---- the methods, written once ----
+ *
+ * GMATERIAL_METHODS(X) applies X to each method of the interface, in the order of GMaterialClass's slots (a method
+ * is only ever appended), as X(name, NAME, type, attr, unless, dispatch, blend, params, args):
+ *   name      the slot; the suffix of gmaterial_<name> (below) and of the node kit's gnode_child_<name>,
+ *             gnode_blended_<name> and gnode_blend_<name> (node_kit.h)
+ *   NAME      the same in capitals: GNODE_<NAME> (GNodeMethod, nodes.h)
+ *   type      the result: int (a status; for the direction methods and opaque and is_delta 1 or 0) or double
+ *   attr      GENERIC_NODISCARD when the result must be read, else empty
+ *   unless    the GMAT_* bit with which gmaterial_<name> answers the default without calling the class (0: none)
+ *   dispatch  call: gmaterial_<name> calls the slot, or answers the default for a NULL slot (lib/core/material.c,
+ *             default_<name>); own: gmaterial_<name> has a body of its own (sample checks its numbers first and
+ *             blackens the weight of a draw that fails)
+ *   blend     pick: a blend node asks its pick for GNODE_<NAME> and the blend's gnode_blend_<name> answers;
+ *             sampled: no GNodeMethod, the method follows the blends of reflection and refraction
+ *             (gnode_blended_<name> of its own in lib/kit/node_kit.c)
+ *   params    the parameters after the material, parenthesised; args: their names, parenthesised
+ * The slots, the dispatch functions, GNodeMethod and its names and the node kit's forwarding methods are generated
+ * from it. A method is added with its line here, its default_<name> in lib/core/material.c and, for a picked
+ * method, its blend rule gnode_blend_<name> in lib/kit/node_blend.c; GMATERIAL_ABI_VERSION rises with it. */
+#define GMATERIAL_METHODS(X)                                                                                           \
+    /** Light leaving towards out when light illum arrives from in (see the top of this file). Default: black. */      \
+    X(reflection, REFLECTION, int, GENERIC_NODISCARD, 0, call, pick,                                                   \
+      (GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out, GColor *result), (sp, in, illum, out, result))        \
+    /** The same for light arriving through the surface from in; rel_index is n(from) / n(to) at sp. Default:          \
+     * black. */                                                                                                       \
+    X(refraction, REFRACTION, int, GENERIC_NODISCARD, 0, call, pick,                                                   \
+      (GSurfPoint *sp, GVec3 in, const GColor *illum, const GColor *rel_index, GVec3 out, GColor *result),             \
+      (sp, in, illum, rel_index, out, result))                                                                         \
+    /** Wavelength-dependent refraction index (sp may be NULL for a homogeneous material). Default: 1, and 1 for       \
+     * m == NULL (vacuum). */                                                                                          \
+    X(refraction_index, REFRACTION_INDEX, int, GENERIC_NODISCARD, 0, call, pick, (GSurfPoint *sp, GColor *result),     \
+      (sp, result))                                                                                                    \
+    /** Ideal reflection direction for the incident direction view: 1 when valid, 0 when not. Default: not valid. */   \
+    X(reflection_dir, REFLECTION_DIR, int, GENERIC_NODISCARD, 0, call, pick, (GSurfPoint *sp, GVec3 view, GVec3 *dir), \
+      (sp, view, dir))                                                                                                 \
+    /** Ideal refraction direction: 0 on total internal reflection or through an opaque material. Default: not         \
+     * valid. */                                                                                                       \
+    X(refraction_dir, REFRACTION_DIR, int, GENERIC_NODISCARD, 0, call, pick,                                           \
+      (GSurfPoint *sp, GVec3 view, const GColor *rel_index, GVec3 *dir), (sp, view, rel_index, dir))                   \
+    /** Light emitted towards out. Default: black, without a call to the class when m has GMAT_NO_EMISSION. */         \
+    X(emission, EMISSION, int, GENERIC_NODISCARD, GMAT_NO_EMISSION, call, pick,                                        \
+      (GSurfPoint *sp, GVec3 out, GColor *result), (sp, out, result))                                                  \
+    /** Ambient light illum reflected. Default: diffuse times illum. */                                                \
+    X(ambient, AMBIENT, int, GENERIC_NODISCARD, 0, call, pick, (GSurfPoint *sp, const GColor *illum, GColor *result),  \
+      (sp, illum, result))                                                                                             \
+    /** What is left of illum after `length` through the material as a medium (sp may be NULL). Default: illum         \
+     * (m == NULL: vacuum, nothing absorbed). */                                                                       \
+    X(absorption, ABSORPTION, int, GENERIC_NODISCARD, 0, call, pick,                                                   \
+      (GSurfPoint *sp, const GColor *illum, double length, GColor *result), (sp, illum, length, result))               \
+    /** Shading normal, uncached (renderers call gsurfpoint_normal, which caches it). Default: sp->geometric_normal,   \
+     * without a call to the class when m has GMAT_GEOMETRIC_NORMAL. */                                                \
+    X(normal, NORMAL, int, GENERIC_NODISCARD, GMAT_GEOMETRIC_NORMAL, call, pick, (GSurfPoint *sp, GVec3 *n), (sp, n))  \
+    /** Lambertian diffuse colour (previews, the default sampling). Default: black. */                                 \
+    X(diffuse, DIFFUSE, int, GENERIC_NODISCARD, 0, call, pick, (GSurfPoint *sp, GColor *result), (sp, result))         \
+    /** 1 when opaque, 0 when light passes through. Default: 1, without a call to the class when m has                 \
+     * GMAT_OPAQUE. */                                                                                                 \
+    X(opaque, OPAQUE, int, GENERIC_NODISCARD, GMAT_OPAQUE, call, pick, (GSurfPoint *sp), (sp))                         \
+    /** Draws `in` for light leaving towards out from u1, u2 in [0, 1) (see the top of this file): fills s and         \
+     * weight (value / pdf, storage of m's model); 1 when a direction was drawn, 0 when none (nothing is passed        \
+     * on), or a negative status; rel_index as for refraction_dir. Default: the lobes of the methods above; m ==       \
+     * NULL (vacuum) draws nothing. */                                                                                 \
+    X(sample, SAMPLE, int, GENERIC_NODISCARD, 0, own, sampled,                                                         \
+      (GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1, double u2, GMaterialSample *s, GColor *weight),  \
+      (sp, out, rel_index, u1, u2, s, weight))                                                                         \
+    /** The density (per unit solid angle) with which sample draws in for out, non-delta lobes only. Default: that     \
+     * of the default sampling; 0 for m == NULL. */                                                                    \
+    X(pdf, PDF, double, , 0, call, sampled, (GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index),            \
+      (sp, in, out, rel_index))                                                                                        \
+    /** 1 when every lobe at sp is ideal (a mirror, clear glass): light samples would reflect nothing. Default: 0,     \
+     * without a call to the class when m has GMAT_LAMBERTIAN. */                                                      \
+    X(is_delta, IS_DELTA, int, GENERIC_NODISCARD, GMAT_LAMBERTIAN, call, sampled, (GSurfPoint *sp), (sp))
+
+/** (first, the list's items): a parameter or argument put before a parenthesised list of GMATERIAL_METHODS, e.g.
+ * GMATERIAL_WITH(m, (sp, out)) is (m, sp, out). */
+#define GMATERIAL_WITH(first, list) GMATERIAL_WITH_(first, GMATERIAL_UNPAREN_ list)
+#define GMATERIAL_WITH_(first, ...) (first, __VA_ARGS__)
+#define GMATERIAL_UNPAREN_(...) __VA_ARGS__
+
+#define GMATERIAL_SLOT_(name, NAME, type, attr, unless, dispatch, blend, params, args) \
+    type(*name) GMATERIAL_WITH(const GMaterial *self, params);
+
+/** The material vtable: its header, destroy, and a slot `type (*name)(const GMaterial *self, params)` for each of
+ * GMATERIAL_METHODS, in its order. A NULL slot takes the method's default. */
 struct GMaterialClass {
     int abi_version;         /**< GMATERIAL_ABI_VERSION */
     const char *name;        /**< type keyword */
     const char *description; /**< one line for listings */
     /** Frees the instance (called when the last reference goes). */
     void (*destroy)(GMaterial *self);
-    int (*reflection)(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
-                      GColor *result);
-    int (*refraction)(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
-                      const GColor *rel_index, GVec3 out, GColor *result);
-    /** Wavelength-dependent refraction index (sp may be NULL for a homogeneous material). */
-    int (*refraction_index)(const GMaterial *self, GSurfPoint *sp, GColor *result);
-    int (*reflection_dir)(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir);
-    int (*refraction_dir)(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
-                          GVec3 *dir);
-    int (*emission)(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result);
-    int (*ambient)(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result);
-    /** What is left of illum after `length` through the material as a medium (sp may be NULL). */
-    int (*absorption)(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length, GColor *result);
-    int (*normal)(const GMaterial *self, GSurfPoint *sp, GVec3 *n);
-    int (*diffuse)(const GMaterial *self, GSurfPoint *sp, GColor *result);
-    /** 1 when opaque, 0 when light passes through. */
-    int (*opaque)(const GMaterial *self, GSurfPoint *sp);
-    /* appended in version 3: sampling (see the top of this file) */
-    /** Draws `in` for light leaving towards out from u1, u2 in [0, 1): fills s and weight (value / pdf); returns
-     * 1 when a direction was drawn, 0 when none (nothing is passed on), or a negative status. rel_index is
-     * n(from) / n(to) at sp, as for refraction_dir. */
-    int (*sample)(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1, double u2,
-                  GMaterialSample *s, GColor *weight);
-    /** The density (per unit solid angle) with which sample() draws in for out, non-delta lobes only. */
-    double (*pdf)(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index);
-    /** 1 when every lobe is ideal (no light sample can be reflected), 0 otherwise. */
-    int (*is_delta)(const GMaterial *self, GSurfPoint *sp);
+    GMATERIAL_METHODS(GMATERIAL_SLOT_)
 };
 
 /** Fills the header of a new instance (refcount 1; flags: GMAT_NO_EMISSION when the class has no emission slot,
@@ -196,35 +252,16 @@ GENERIC_API void gmaterial_unref(GMaterial *m);
 /** The material's type keyword. */
 GENERIC_API const char *gmaterial_name(const GMaterial *m);
 
-/** Light reflected towards out (see the top of this file). */
-GENERIC_API GENERIC_NODISCARD int gmaterial_reflection(const GMaterial *m, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
-                         GColor *result);
-/** Light refracted towards out. */
-GENERIC_API GENERIC_NODISCARD int gmaterial_refraction(const GMaterial *m, GSurfPoint *sp, GVec3 in, const GColor *illum,
-                         const GColor *rel_index, GVec3 out, GColor *result);
-/** Refraction index (vacuum = 1 for m == NULL). */
-GENERIC_API GENERIC_NODISCARD int gmaterial_refraction_index(const GMaterial *m, GSurfPoint *sp, GColor *result);
-/** Ideal reflection direction for the incident direction view; 1 when valid. */
-GENERIC_API GENERIC_NODISCARD int gmaterial_reflection_dir(const GMaterial *m, GSurfPoint *sp, GVec3 view, GVec3 *dir);
-/** Ideal refraction direction; 0 for total internal reflection or opaque materials. */
-GENERIC_API GENERIC_NODISCARD int gmaterial_refraction_dir(const GMaterial *m, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
-                             GVec3 *dir);
-/** Emitted light towards out: black without a call to the class when m has GMAT_NO_EMISSION (or is NULL). */
-GENERIC_API GENERIC_NODISCARD int gmaterial_emission(const GMaterial *m, GSurfPoint *sp, GVec3 out, GColor *result);
+/** The dispatch of each method of GMATERIAL_METHODS: `type gmaterial_<name>(const GMaterial *m, params)` calls
+ * m's slot, or answers the method's default (written beside it in the list) when the slot is NULL, m is NULL or m
+ * has the method's `unless` bit. */
+#define GMATERIAL_DECLARE_(name, NAME, type, attr, unless, dispatch, blend, params, args) \
+    GENERIC_API attr type gmaterial_##name GMATERIAL_WITH(const GMaterial *m, params);
+GMATERIAL_METHODS(GMATERIAL_DECLARE_)
+
 /** 1 when m may emit light (its emission slot is called), 0 when it has GMAT_NO_EMISSION or is NULL (vacuum):
  * a renderer may skip the emission of a 0 material altogether. */
 GENERIC_API int gmaterial_emits(const GMaterial *m);
-/** Reflected ambient light. */
-GENERIC_API GENERIC_NODISCARD int gmaterial_ambient(const GMaterial *m, GSurfPoint *sp, const GColor *illum, GColor *result);
-/** Light left after `length` in the material as a medium (m == NULL: vacuum, nothing absorbed). */
-GENERIC_API GENERIC_NODISCARD int gmaterial_absorption(const GMaterial *m, GSurfPoint *sp, const GColor *illum, double length, GColor *result);
-/** Shading normal (uncached; renderers call gsurfpoint_normal, which caches this): sp->geometric_normal without
- * a call to the class when m has GMAT_GEOMETRIC_NORMAL (or has no normal slot, or is NULL). */
-GENERIC_API GENERIC_NODISCARD int gmaterial_normal(const GMaterial *m, GSurfPoint *sp, GVec3 *n);
-/** Lambertian diffuse colour (for previews). */
-GENERIC_API GENERIC_NODISCARD int gmaterial_diffuse(const GMaterial *m, GSurfPoint *sp, GColor *result);
-/** 1 when opaque. */
-GENERIC_API GENERIC_NODISCARD int gmaterial_opaque(const GMaterial *m, GSurfPoint *sp);
 /** 1 when m has GMAT_OPAQUE, opaque at every point (gmaterial_opaque would say 1 wherever it is asked): a renderer
  * may then let any surface of m block a shadow ray without filling a surface point. 0 when it may let light
  * through somewhere (or cannot tell); NULL (vacuum) lets light through. */
@@ -236,16 +273,6 @@ GENERIC_API int gmaterial_lambertian(const GMaterial *m);
 /** 1 when m has GMAT_DIAGONAL: its reflection and refraction of any light are what they pass on of white light
  * times that light. 0 when they may not be (or it cannot tell); NULL (vacuum) passes nothing on and is not. */
 GENERIC_API int gmaterial_diagonal(const GMaterial *m);
-
-/** Draws a direction for light leaving towards out (see the top of this file): 1 drawn, 0 none, or a status.
- * weight must have storage of m's model; m == NULL (vacuum) draws nothing. */
-GENERIC_API GENERIC_NODISCARD int gmaterial_sample(const GMaterial *m, GSurfPoint *sp, GVec3 out, const GColor *rel_index,
-                                                   double u1, double u2, GMaterialSample *s, GColor *weight);
-/** The density with which gmaterial_sample draws in for out (non-delta lobes; 0 for m == NULL). */
-GENERIC_API double gmaterial_pdf(const GMaterial *m, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index);
-/** 1 when every lobe of m at sp is ideal (mirror, clear glass): light samples would reflect nothing. 0 without a
- * call to the class when m has GMAT_LAMBERTIAN. */
-GENERIC_API GENERIC_NODISCARD int gmaterial_is_delta(const GMaterial *m, GSurfPoint *sp);
 
 /* ---- helpers for material implementations (lib/core/optics.c) ---- */
 

@@ -26,19 +26,15 @@
 extern "C" {
 #endif
 
-/** The methods of the material interface, for nodes that treat one of them specially. */
+/** The methods a blend node's pick is asked for (node_kit.h, GNodeBlendClass), GNODE_<NAME> for each method of
+ * GMATERIAL_METHODS (material.h) whose blend is `pick`, in the list's order: every method but the sampling ones
+ * (sample, pdf, is_delta), which follow the blends of reflection and refraction. */
+#define GNODE_METHOD_ENUM_(name, NAME, type, attr, unless, dispatch, blend, params, args) \
+    GNODE_METHOD_ENUM_##blend(GNODE_##NAME)
+#define GNODE_METHOD_ENUM_pick(id) id,
+#define GNODE_METHOD_ENUM_sampled(id)
 typedef enum GNodeMethod {
-    GNODE_REFLECTION = 0,
-    GNODE_REFRACTION,
-    GNODE_REFRACTION_INDEX,
-    GNODE_REFLECTION_DIR,
-    GNODE_REFRACTION_DIR,
-    GNODE_EMISSION,
-    GNODE_AMBIENT,
-    GNODE_ABSORPTION,
-    GNODE_NORMAL,
-    GNODE_DIFFUSE,
-    GNODE_OPAQUE,
+    GMATERIAL_METHODS(GNODE_METHOD_ENUM_)
     GNODE_METHOD_COUNT
 } GNodeMethod;
 

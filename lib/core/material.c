@@ -36,86 +36,7 @@ void gmaterial_unref(GMaterial *m)
 
 const char *gmaterial_name(const GMaterial *m) { return m ? m->cls->name : "vacuum"; }
 
-int gmaterial_reflection(const GMaterial *m, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
-                         GColor *result)
-{
-    if (m && m->cls->reflection)
-        return m->cls->reflection(m, sp, in, illum, out, result);
-    gcolor_black(result);
-    return G_OK;
-}
-
-int gmaterial_refraction(const GMaterial *m, GSurfPoint *sp, GVec3 in, const GColor *illum,
-                         const GColor *rel_index, GVec3 out, GColor *result)
-{
-    if (m && m->cls->refraction)
-        return m->cls->refraction(m, sp, in, illum, rel_index, out, result);
-    gcolor_black(result);
-    return G_OK;
-}
-
-int gmaterial_refraction_index(const GMaterial *m, GSurfPoint *sp, GColor *result)
-{
-    if (m && m->cls->refraction_index)
-        return m->cls->refraction_index(m, sp, result);
-    /* the constant 1: going through rgb -> spectrum would not give a flat 1 in spectral models */
-    return gcolor_fill(result, 1.0);
-}
-
-int gmaterial_reflection_dir(const GMaterial *m, GSurfPoint *sp, GVec3 view, GVec3 *dir)
-{
-    if (m && m->cls->reflection_dir)
-        return m->cls->reflection_dir(m, sp, view, dir);
-    return 0;
-}
-
-int gmaterial_refraction_dir(const GMaterial *m, GSurfPoint *sp, GVec3 view, const GColor *rel_index, GVec3 *dir)
-{
-    if (m && m->cls->refraction_dir)
-        return m->cls->refraction_dir(m, sp, view, rel_index, dir);
-    return 0;
-}
-
-int gmaterial_emission(const GMaterial *m, GSurfPoint *sp, GVec3 out, GColor *result)
-{
-    if (gmaterial_emits(m) && m->cls->emission)
-        return m->cls->emission(m, sp, out, result);
-    gcolor_black(result);
-    return G_OK;
-}
-
 int gmaterial_emits(const GMaterial *m) { return m && !(m->flags & GMAT_NO_EMISSION); }
-
-int gmaterial_ambient(const GMaterial *m, GSurfPoint *sp, const GColor *illum, GColor *result)
-{
-    if (m && m->cls->ambient)
-        return m->cls->ambient(m, sp, illum, result);
-    int rc = gmaterial_diffuse(m, sp, result);
-    return rc ? rc : gcolor_mul(result, result, illum);
-}
-
-int gmaterial_absorption(const GMaterial *m, GSurfPoint *sp, const GColor *illum, double length, GColor *result)
-{
-    if (m && m->cls->absorption)
-        return m->cls->absorption(m, sp, illum, length, result);
-    return gcolor_copy(result, illum);
-}
-
-int gmaterial_normal(const GMaterial *m, GSurfPoint *sp, GVec3 *n)
-{
-    if (m && !(m->flags & GMAT_GEOMETRIC_NORMAL) && m->cls->normal)
-        return m->cls->normal(m, sp, n);
-    *n = sp->geometric_normal;
-    return G_OK;
-}
-
-int gmaterial_diffuse(const GMaterial *m, GSurfPoint *sp, GColor *result)
-{
-    if (m && m->cls->diffuse)
-        return m->cls->diffuse(m, sp, result);
-    gcolor_black(result);
-    return G_OK;
-}
 
 int gmaterial_opaque_everywhere(const GMaterial *m) { return m && (m->flags & GMAT_OPAQUE); }
 
@@ -123,13 +44,89 @@ int gmaterial_lambertian(const GMaterial *m) { return m && (m->flags & GMAT_LAMB
 
 int gmaterial_diagonal(const GMaterial *m) { return m && (m->flags & GMAT_DIAGONAL); }
 
-int gmaterial_opaque(const GMaterial *m, GSurfPoint *sp)
+/* ---- the defaults of GMATERIAL_METHODS (material.h): what gmaterial_<name> answers for a NULL slot, a NULL
+ * material, or a material with the method's `unless` bit ---- */
+
+static inline int default_reflection(const GMaterial *m, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
+                                     GColor *result)
 {
-    if (m && (m->flags & GMAT_OPAQUE))
-        return 1;
-    if (m && m->cls->opaque)
-        return m->cls->opaque(m, sp);
+    (void)m, (void)sp, (void)in, (void)illum, (void)out;
+    gcolor_black(result);
+    return G_OK;
+}
+
+static inline int default_refraction(const GMaterial *m, GSurfPoint *sp, GVec3 in, const GColor *illum,
+                                     const GColor *rel_index, GVec3 out, GColor *result)
+{
+    (void)m, (void)sp, (void)in, (void)illum, (void)rel_index, (void)out;
+    gcolor_black(result);
+    return G_OK;
+}
+
+static inline int default_refraction_index(const GMaterial *m, GSurfPoint *sp, GColor *result)
+{
+    (void)m, (void)sp;
+    /* the constant 1: going through rgb -> spectrum would not give a flat 1 in spectral models */
+    return gcolor_fill(result, 1.0);
+}
+
+static inline int default_reflection_dir(const GMaterial *m, GSurfPoint *sp, GVec3 view, GVec3 *dir)
+{
+    (void)m, (void)sp, (void)view, (void)dir;
+    return 0;
+}
+
+static inline int default_refraction_dir(const GMaterial *m, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
+                                         GVec3 *dir)
+{
+    (void)m, (void)sp, (void)view, (void)rel_index, (void)dir;
+    return 0;
+}
+
+static inline int default_emission(const GMaterial *m, GSurfPoint *sp, GVec3 out, GColor *result)
+{
+    (void)m, (void)sp, (void)out;
+    gcolor_black(result);
+    return G_OK;
+}
+
+static inline int default_ambient(const GMaterial *m, GSurfPoint *sp, const GColor *illum, GColor *result)
+{
+    int rc = gmaterial_diffuse(m, sp, result);
+    return rc ? rc : gcolor_mul(result, result, illum);
+}
+
+static inline int default_absorption(const GMaterial *m, GSurfPoint *sp, const GColor *illum, double length,
+                                     GColor *result)
+{
+    (void)m, (void)sp, (void)length;
+    return gcolor_copy(result, illum);
+}
+
+static inline int default_normal(const GMaterial *m, GSurfPoint *sp, GVec3 *n)
+{
+    (void)m;
+    *n = sp->geometric_normal;
+    return G_OK;
+}
+
+static inline int default_diffuse(const GMaterial *m, GSurfPoint *sp, GColor *result)
+{
+    (void)m, (void)sp;
+    gcolor_black(result);
+    return G_OK;
+}
+
+static inline int default_opaque(const GMaterial *m, GSurfPoint *sp)
+{
+    (void)m, (void)sp;
     return 1;
+}
+
+static inline int default_is_delta(const GMaterial *m, GSurfPoint *sp)
+{
+    (void)m, (void)sp; /* also for GMAT_LAMBERTIAN: a diffuse lobe is not delta (material.h) */
+    return 0;
 }
 
 /* ---- sampling: the material's own, or the documented defaults built from the other methods ---- */
@@ -242,6 +239,8 @@ done:
 
 static double default_pdf(const GMaterial *m, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *ri)
 {
+    if (!m) /* vacuum */
+        return 0.0;
     GScratch *arena = arena_of(sp);
     if (!arena)
         return 0.0;
@@ -273,18 +272,16 @@ int gmaterial_sample(const GMaterial *m, GSurfPoint *sp, GVec3 out, const GColor
     return rc;
 }
 
-double gmaterial_pdf(const GMaterial *m, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
-{
-    if (!m)
-        return 0.0;
-    return m->cls->pdf ? m->cls->pdf(m, sp, in, out, rel_index) : default_pdf(m, sp, in, out, rel_index);
-}
+/* ---- the dispatch functions of GMATERIAL_METHODS whose `dispatch` is `call`: the class's slot, or the default ---- */
 
-int gmaterial_is_delta(const GMaterial *m, GSurfPoint *sp)
-{
-    if (m && (m->flags & GMAT_LAMBERTIAN)) /* a diffuse lobe: not delta (material.h) */
-        return 0;
-    if (m && m->cls->is_delta)
-        return m->cls->is_delta(m, sp);
-    return 0;
-}
+#define DISPATCH_call(name, type, unless, params, args)                                                            \
+    type gmaterial_##name GMATERIAL_WITH(const GMaterial *m, params)                                               \
+    {                                                                                                              \
+        if (m && !(m->flags & (unless)) && m->cls->name)                                                           \
+            return m->cls->name GMATERIAL_WITH(m, args);                                                           \
+        return default_##name GMATERIAL_WITH(m, args);                                                             \
+    }
+#define DISPATCH_own(name, type, unless, params, args)
+#define DISPATCH(name, NAME, type, attr, unless, dispatch, blend, params, args) \
+    DISPATCH_##dispatch(name, type, unless, params, args)
+GMATERIAL_METHODS(DISPATCH)

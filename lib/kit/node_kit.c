@@ -7,10 +7,12 @@
 
 #include <string.h>
 
-static const char *const method_names[GNODE_METHOD_COUNT] = {
-    "reflection", "refraction", "refraction_index", "reflection_dir", "refraction_dir", "emission",
-    "ambient",    "absorption", "normal",           "diffuse",        "opaque",
-};
+/* the keyword of each GNodeMethod: the name of each picked method of GMATERIAL_METHODS (material.h) */
+#define METHOD_NAME(name, NAME, type, attr, unless, dispatch, blend, params, args) METHOD_NAME_##blend(name)
+#define METHOD_NAME_pick(name) #name,
+#define METHOD_NAME_sampled(name)
+static const char *const method_names[] = {GMATERIAL_METHODS(METHOD_NAME)};
+_Static_assert(sizeof method_names / sizeof method_names[0] == GNODE_METHOD_COUNT, "a keyword for each GNodeMethod");
 
 const char *gnode_method_name(GNodeMethod m)
 {
@@ -179,80 +181,13 @@ void gnode_child_destroy(GMaterial *self)
     gmem_free(self);
 }
 
-int gnode_child_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
-                         GColor *result)
-{
-    return gmaterial_reflection(gnode_child_of(self), sp, in, illum, out, result);
-}
-
-int gnode_child_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
-                         const GColor *rel_index, GVec3 out, GColor *result)
-{
-    return gmaterial_refraction(gnode_child_of(self), sp, in, illum, rel_index, out, result);
-}
-
-int gnode_child_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
-{
-    return gmaterial_refraction_index(gnode_child_of(self), sp, result);
-}
-
-int gnode_child_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
-{
-    return gmaterial_reflection_dir(gnode_child_of(self), sp, view, dir);
-}
-
-int gnode_child_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
-                             GVec3 *dir)
-{
-    return gmaterial_refraction_dir(gnode_child_of(self), sp, view, rel_index, dir);
-}
-
-int gnode_child_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result)
-{
-    return gmaterial_emission(gnode_child_of(self), sp, out, result);
-}
-
-int gnode_child_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
-{
-    return gmaterial_ambient(gnode_child_of(self), sp, illum, result);
-}
-
-int gnode_child_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
-                         GColor *result)
-{
-    return gmaterial_absorption(gnode_child_of(self), sp, illum, length, result);
-}
-
-int gnode_child_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
-{
-    return gmaterial_normal(gnode_child_of(self), sp, n);
-}
-
-int gnode_child_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
-{
-    return gmaterial_diffuse(gnode_child_of(self), sp, result);
-}
-
-int gnode_child_opaque(const GMaterial *self, GSurfPoint *sp)
-{
-    return gmaterial_opaque(gnode_child_of(self), sp);
-}
-
-int gnode_child_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
-                     double u2, GMaterialSample *s, GColor *weight)
-{
-    return gmaterial_sample(gnode_child_of(self), sp, out, rel_index, u1, u2, s, weight);
-}
-
-double gnode_child_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
-{
-    return gmaterial_pdf(gnode_child_of(self), sp, in, out, rel_index);
-}
-
-int gnode_child_is_delta(const GMaterial *self, GSurfPoint *sp)
-{
-    return gmaterial_is_delta(gnode_child_of(self), sp);
-}
+/* the pass-through methods: the child's gmaterial_<name> for each of GMATERIAL_METHODS */
+#define CHILD_METHOD(name, NAME, type, attr, unless, dispatch, blend, params, args)                                \
+    type gnode_child_##name GMATERIAL_WITH(const GMaterial *self, params)                                           \
+    {                                                                                                              \
+        return gmaterial_##name GMATERIAL_WITH(gnode_child_of(self), args);                                        \
+    }
+GMATERIAL_METHODS(CHILD_METHOD)
 
 /* ---- the methods of blend nodes: the class's pick, then the blend ---- */
 
@@ -261,86 +196,19 @@ static void pick(const GMaterial *self, GSurfPoint *sp, GNodeMethod m, GNodeBlen
     ((const GNodeBlendClass *)self->cls)->pick(self, sp, m, b);
 }
 
-int gnode_blended_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
-                             GColor *result)
-{
-    GNodeBlend b;
-    pick(self, sp, GNODE_REFLECTION, &b);
-    return gnode_blend_reflection(&b, sp, in, illum, out, result);
-}
-
-int gnode_blended_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
-                             const GColor *rel_index, GVec3 out, GColor *result)
-{
-    GNodeBlend b;
-    pick(self, sp, GNODE_REFRACTION, &b);
-    return gnode_blend_refraction(&b, sp, in, illum, rel_index, out, result);
-}
-
-int gnode_blended_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
-{
-    GNodeBlend b;
-    pick(self, sp, GNODE_REFRACTION_INDEX, &b);
-    return gnode_blend_refraction_index(&b, sp, result);
-}
-
-int gnode_blended_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
-{
-    GNodeBlend b;
-    pick(self, sp, GNODE_REFLECTION_DIR, &b);
-    return gnode_blend_reflection_dir(&b, sp, view, dir);
-}
-
-int gnode_blended_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
-                                 GVec3 *dir)
-{
-    GNodeBlend b;
-    pick(self, sp, GNODE_REFRACTION_DIR, &b);
-    return gnode_blend_refraction_dir(&b, sp, view, rel_index, dir);
-}
-
-int gnode_blended_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result)
-{
-    GNodeBlend b;
-    pick(self, sp, GNODE_EMISSION, &b);
-    return gnode_blend_emission(&b, sp, out, result);
-}
-
-int gnode_blended_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
-{
-    GNodeBlend b;
-    pick(self, sp, GNODE_AMBIENT, &b);
-    return gnode_blend_ambient(&b, sp, illum, result);
-}
-
-int gnode_blended_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
-                             GColor *result)
-{
-    GNodeBlend b;
-    pick(self, sp, GNODE_ABSORPTION, &b);
-    return gnode_blend_absorption(&b, sp, illum, length, result);
-}
-
-int gnode_blended_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n)
-{
-    GNodeBlend b;
-    pick(self, sp, GNODE_NORMAL, &b);
-    return gnode_blend_normal(&b, sp, n);
-}
-
-int gnode_blended_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
-{
-    GNodeBlend b;
-    pick(self, sp, GNODE_DIFFUSE, &b);
-    return gnode_blend_diffuse(&b, sp, result);
-}
-
-int gnode_blended_opaque(const GMaterial *self, GSurfPoint *sp)
-{
-    GNodeBlend b;
-    pick(self, sp, GNODE_OPAQUE, &b);
-    return gnode_blend_opaque(&b, sp);
-}
+/* the methods whose blend is `pick` (GMATERIAL_METHODS): the pick's blend for GNODE_<NAME>, then gnode_blend_<name>;
+ * the sampling methods are written out below */
+#define BLENDED_METHOD_pick(name, NAME, type, params, args)                                                        \
+    type gnode_blended_##name GMATERIAL_WITH(const GMaterial *self, params)                                         \
+    {                                                                                                              \
+        GNodeBlend b;                                                                                              \
+        pick(self, sp, GNODE_##NAME, &b);                                                                          \
+        return gnode_blend_##name GMATERIAL_WITH(&b, args);                                                        \
+    }
+#define BLENDED_METHOD_sampled(name, NAME, type, params, args)
+#define BLENDED_METHOD(name, NAME, type, attr, unless, dispatch, blend, params, args) \
+    BLENDED_METHOD_##blend(name, NAME, type, params, args)
+GMATERIAL_METHODS(BLENDED_METHOD)
 
 int gnode_blended_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
                          double u2, GMaterialSample *s, GColor *weight)

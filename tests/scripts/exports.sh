@@ -1,7 +1,8 @@
 #!/bin/sh
-# The shared library exports exactly the public API: the names that the headers of include/generic/ (and its kit/ and services/) declare with
-# GENERIC_API (export.h) against `nm -D --defined-only` of libgeneric.so. Also checks that every function
-# declared at file level in a public header carries GENERIC_API, so a declaration cannot silently miss it.
+# The shared library exports exactly the public API: the names that the headers of include/generic/ (and its kit/ and
+# services/) declare with GENERIC_API (export.h), written out or by a macro, against `nm -D --defined-only` of
+# libgeneric.so. Also checks that every function declared at file level in a public header carries GENERIC_API, so a
+# declaration cannot silently miss it.
 set -eu
 BUILD=${1:-build}
 so="$BUILD/lib/libgeneric.so"
@@ -9,12 +10,15 @@ so="$BUILD/lib/libgeneric.so"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-# Declarations: from a line starting with GENERIC_API up to the ';' that ends it; the name is the identifier
+# Declarations: the headers as the library's compiler sees them (preprocessed with GENERIC_BUILD, where GENERIC_API
+# is __attribute__((visibility("default")))), so that the declarations a macro writes count too (the methods of
+# GMATERIAL_METHODS, material.h). Each statement with the mark, its attributes removed: the name is the identifier
 # before the first '(' (a function) or before ';' / '[' / '=' (a variable).
-awk '
-    /^GENERIC_API[ \t]/ { decl = ""; on = 1 }
-    on { decl = decl " " $0; if (index($0, ";")) { on = 0; print decl } }
-' include/generic/*.h include/generic/*/*.h | sed 's/__attribute__.*//' | awk '{
+for h in include/generic/*.h include/generic/*/*.h; do
+    ${CC:-cc} -E -P -DGENERIC_BUILD -D_GNU_SOURCE -Iinclude -x c "$h" || { echo "exports: cannot preprocess $h"; exit 1; }
+done > "$tmp/headers.i"
+tr '\n' ' ' < "$tmp/headers.i" | sed 's/visibility *( *"default" *)/GENERIC_API_MARK/g' | tr ';{}' '\n\n\n' |
+    grep GENERIC_API_MARK | sed -E 's/.*GENERIC_API_MARK//; s/__attribute__ *\(\(([^()]|\([^()]*\))*\)\)//g' | awk '{
     d = $0
     p = index(d, "(")
     if (p) d = substr(d, 1, p - 1); else { sub(/[;\[=].*/, "", d) }

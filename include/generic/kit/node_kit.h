@@ -232,54 +232,23 @@ typedef struct GNodeBlendClass {
     void (*pick)(const GMaterial *self, GSurfPoint *sp, GNodeMethod m, GNodeBlend *blend);
 } GNodeBlendClass;
 
-/** The material methods of a GNodeBlendClass node: its pick's blend for the method, then gnode_blend_<method>. */
-GENERIC_API GENERIC_NODISCARD int gnode_blended_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
-                             GColor *result);
-/** See gnode_blended_reflection. */
-GENERIC_API GENERIC_NODISCARD int gnode_blended_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
-                             const GColor *rel_index, GVec3 out, GColor *result);
-/** See gnode_blended_reflection. */
-GENERIC_API GENERIC_NODISCARD int gnode_blended_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result);
-/** See gnode_blended_reflection. */
-GENERIC_API GENERIC_NODISCARD int gnode_blended_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir);
-/** See gnode_blended_reflection. */
-GENERIC_API GENERIC_NODISCARD int gnode_blended_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
-                                 GVec3 *dir);
-/** See gnode_blended_reflection. */
-GENERIC_API GENERIC_NODISCARD int gnode_blended_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result);
-/** See gnode_blended_reflection. */
-GENERIC_API GENERIC_NODISCARD int gnode_blended_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result);
-/** See gnode_blended_reflection. */
-GENERIC_API GENERIC_NODISCARD int gnode_blended_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
-                             GColor *result);
-/** See gnode_blended_reflection. */
-GENERIC_API GENERIC_NODISCARD int gnode_blended_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n);
-/** See gnode_blended_reflection. */
-GENERIC_API GENERIC_NODISCARD int gnode_blended_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result);
-/** See gnode_blended_reflection. */
-GENERIC_API GENERIC_NODISCARD int gnode_blended_opaque(const GMaterial *self, GSurfPoint *sp);
+/** The material methods of a GNodeBlendClass node, `type gnode_blended_<name>(const GMaterial *self, params)` for
+ * each of GMATERIAL_METHODS (material.h): for a method whose blend is `pick`, the blend the node's pick gives for
+ * GNODE_<NAME>, then gnode_blend_<name>. Sampling (sample, pdf, is_delta) draws from the blend the pick gives for
+ * GNODE_REFLECTION (the blend its reflection is), with gnode_blend_sample, _pdf and _is_delta. When the pick gives
+ * another blend for GNODE_REFRACTION (interpolate-one of reflection or refraction), the mixture is over every child
+ * of either blend (weight |w_reflection| + |w_refraction|), and a sample weighs the value of the blend its flag
+ * names: a reflected one the reflection's, a transmitted one the refraction's; pdf and is_delta are those of the
+ * same mixture. */
+#define GNODE_DECLARE_BLENDED_(name, NAME, type, attr, unless, dispatch, blend, params, args) \
+    GENERIC_API attr type gnode_blended_##name GMATERIAL_WITH(const GMaterial *self, params);
+GMATERIAL_METHODS(GNODE_DECLARE_BLENDED_)
 
-/** Sampling of a GNodeBlendClass node: the blend its pick gives for GNODE_REFLECTION (the blend its reflection
- * is), then gnode_blend_sample. When the pick gives another blend for GNODE_REFRACTION (interpolate-one of reflection
- * or refraction), the mixture is over every child of either blend (weight |w_reflection| + |w_refraction|), and a
- * sample weighs the value of the blend its flag names: a reflected one the reflection's, a transmitted one the
- * refraction's. pdf and is_delta are those of the same mixture. */
-GENERIC_API GENERIC_NODISCARD int gnode_blended_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index,
-                                                       double u1, double u2, GMaterialSample *s, GColor *weight);
-/** See gnode_blended_sample. */
-GENERIC_API double gnode_blended_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index);
-/** See gnode_blended_sample. */
-GENERIC_API GENERIC_NODISCARD int gnode_blended_is_delta(const GMaterial *self, GSurfPoint *sp);
-
-/** The fourteen material methods of a GNodeBlendClass (the eleven and the sampling slots), as designated
- * initialisers for its `base`. */
-#define GNODE_BLENDED_METHODS                                                                                   \
-    .reflection = gnode_blended_reflection, .refraction = gnode_blended_refraction,                             \
-    .refraction_index = gnode_blended_refraction_index, .reflection_dir = gnode_blended_reflection_dir,         \
-    .refraction_dir = gnode_blended_refraction_dir, .emission = gnode_blended_emission,                         \
-    .ambient = gnode_blended_ambient, .absorption = gnode_blended_absorption, .normal = gnode_blended_normal,   \
-    .diffuse = gnode_blended_diffuse, .opaque = gnode_blended_opaque, .sample = gnode_blended_sample,           \
-    .pdf = gnode_blended_pdf, .is_delta = gnode_blended_is_delta
+/** The slots of a GNodeBlendClass's `base`: `.<name> = gnode_blended_<name>,` for each of GMATERIAL_METHODS,
+ * designated initialisers each followed by a comma. */
+#define GNODE_BLENDED_SLOT_(name, NAME, type, attr, unless, dispatch, blend, params, args) \
+    .name = gnode_blended_##name,
+#define GNODE_BLENDED_METHODS GMATERIAL_METHODS(GNODE_BLENDED_SLOT_)
 
 /* ---- temporaries ---- */
 
@@ -317,39 +286,12 @@ GENERIC_API GENERIC_NODISCARD int gnode_child_new(const GMaterialClass *cls, GMa
 /** The destroy method of one-child nodes that own nothing else: drops the child and frees the struct. */
 GENERIC_API void gnode_child_destroy(GMaterial *self);
 
-/** Pass-through method of one-child nodes: the child's reflection. */
-GENERIC_API GENERIC_NODISCARD int gnode_child_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
-                         GColor *result);
-/** Pass-through: the child's refraction. */
-GENERIC_API GENERIC_NODISCARD int gnode_child_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
-                         const GColor *rel_index, GVec3 out, GColor *result);
-/** Pass-through: the child's refraction index. */
-GENERIC_API GENERIC_NODISCARD int gnode_child_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result);
-/** Pass-through: the child's reflection direction. */
-GENERIC_API GENERIC_NODISCARD int gnode_child_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir);
-/** Pass-through: the child's refraction direction. */
-GENERIC_API GENERIC_NODISCARD int gnode_child_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
-                             GVec3 *dir);
-/** Pass-through: the child's emission. */
-GENERIC_API GENERIC_NODISCARD int gnode_child_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result);
-/** Pass-through: the child's ambient reflection. */
-GENERIC_API GENERIC_NODISCARD int gnode_child_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result);
-/** Pass-through: the child's absorption. */
-GENERIC_API GENERIC_NODISCARD int gnode_child_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length,
-                         GColor *result);
-/** Pass-through: the child's normal. */
-GENERIC_API GENERIC_NODISCARD int gnode_child_normal(const GMaterial *self, GSurfPoint *sp, GVec3 *n);
-/** Pass-through: the child's diffuse colour. */
-GENERIC_API GENERIC_NODISCARD int gnode_child_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result);
-/** Pass-through: the child's opacity. */
-GENERIC_API GENERIC_NODISCARD int gnode_child_opaque(const GMaterial *self, GSurfPoint *sp);
-/** Pass-through: the child's sampling (a bump node's: the child sees the bumped normal through sp). */
-GENERIC_API GENERIC_NODISCARD int gnode_child_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index,
-                                                   double u1, double u2, GMaterialSample *s, GColor *weight);
-/** Pass-through: the child's density. */
-GENERIC_API double gnode_child_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index);
-/** Pass-through: the child's is_delta. */
-GENERIC_API GENERIC_NODISCARD int gnode_child_is_delta(const GMaterial *self, GSurfPoint *sp);
+/** The pass-through methods of one-child nodes, `type gnode_child_<name>(const GMaterial *self, params)` for each
+ * of GMATERIAL_METHODS (material.h): the child's gmaterial_<name> at the same point (a bump node's child samples
+ * about the bumped normal, which it reads from sp). */
+#define GNODE_DECLARE_CHILD_(name, NAME, type, attr, unless, dispatch, blend, params, args) \
+    GENERIC_API attr type gnode_child_##name GMATERIAL_WITH(const GMaterial *self, params);
+GMATERIAL_METHODS(GNODE_DECLARE_CHILD_)
 
 /* ---- nodes over a list of children ---- */
 
