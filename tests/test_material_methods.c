@@ -81,7 +81,7 @@ static void test_node_method_names(void **state)
 typedef struct Fix {
     GColorModel *model;
     GScratch *scratch;
-    GSurfPoint point, *sp;
+    GSurfPoint *sp;
     GColor illum, rel_index, result, weight;
 } Fix;
 
@@ -92,11 +92,9 @@ static int setup(void **state)
     if (!f || gcolormodel_create(*state ? *state : "rgb", NULL, &f->model, &err) != G_OK)
         return -1;
     f->scratch = gscratch_create(0);
-    f->sp = &f->point;
-    gsurfpoint_init(f->sp, f->model, f->scratch);
-    f->sp->point = gvec3(0.5, 0.25, 0);
-    f->sp->geometric_normal = gvec3(0, 0, 1);
-    if (gcolor_alloc(&f->illum, f->model) != G_OK || gcolor_alloc(&f->rel_index, f->model) != G_OK ||
+    f->sp = gsurfpoint_new(f->model, f->scratch, gvec3(0.5, 0.25, 0), gvec3(0, 0, 1), gvec3(1, 0, 0),
+                           gvec3(0, 1, 0), 0.5, 0.25, 0, &err);
+    if (!f->sp || gcolor_alloc(&f->illum, f->model) != G_OK || gcolor_alloc(&f->rel_index, f->model) != G_OK ||
         gcolor_alloc(&f->result, f->model) != G_OK || gcolor_alloc(&f->weight, f->model) != G_OK)
         return -1;
     double light[3] = {1.0, 0.5, 0.25};
@@ -113,6 +111,7 @@ static int teardown(void **state)
     gcolor_free(&f->rel_index);
     gcolor_free(&f->result);
     gcolor_free(&f->weight);
+    gsurfpoint_free(f->sp);
     gscratch_destroy(f->scratch);
     gcolormodel_destroy(f->model);
     free(f);

@@ -1,5 +1,6 @@
 /* test_surfpoint.c - the surface point's caches: the shading normal computed once, the generator cache
- * slots, and the cached relative refraction index. */
+ * slots, and the cached relative refraction index; the layout (public fields, then the private caches) and the
+ * constructor gsurfpoint_new. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -14,6 +15,7 @@
 #include "generic/material.h"
 #include "generic/materials.h"
 #include "generic/surfpoint.h"
+#include "test_util.h"
 
 static int normal_calls;
 
@@ -278,11 +280,149 @@ static void test_init_clears(void **state)
     assert_true(n.x == 0.0 && n.y == 0.0 && n.z == 1.0);
 }
 
+/* The public fields come first and the private caches are the last member: a binding lays out the struct up to
+ * `priv` and nothing of it. */
+static void test_layout(void **state)
+{
+    (void)state;
+    size_t priv = offsetof(GSurfPoint, priv);
+    const size_t public_ends[] = {
+        offsetof(GSurfPoint, point) + sizeof(GVec3),          offsetof(GSurfPoint, scratch) + sizeof(GScratch *),
+        offsetof(GSurfPoint, object_dpdv) + sizeof(GVec3),    offsetof(GSurfPoint, uv_axis2) + 2 * sizeof(double),
+        offsetof(GSurfPoint, material) + sizeof(GMaterial *),
+    };
+    for (size_t i = 0; i < sizeof public_ends / sizeof *public_ends; i++)
+        assert_true(public_ends[i] <= priv);
+    assert_int_equal(priv + sizeof(GSurfPointPrivate), sizeof(GSurfPoint));
+    assert_int_equal(gsurfpoint_size(), sizeof(GSurfPoint));
+}
+
+static const GVec3 P = {1.0, -2.0, 0.5}, N = {0.0, 0.0, 2.0}, DU = {0.5, 0.0, 0.0}, DV = {0.0, 0.25, 0.0};
+
+/* gsurfpoint_new sets the fields it is given (the normal normalised, the object point the point), leaves every other
+ * public field as gsurfpoint_init does, and starts with empty caches. */
+static void test_new_fields(void **state)
+{
+    (void)state;
+    GError err;
+    GColorModel *model;
+    assert_int_equal(gcolormodel_create("rgb", NULL, &model, &err), G_OK);
+    GScratch *arena = gscratch_create(0);
+    assert_non_null(arena);
+    GSurfPoint *sp = gsurfpoint_new(model, arena, P, N, DU, DV, 0.25, 0.75, 3, &err);
+    assert_non_null(sp);
+    assert_true(sp->point.x == 1.0 && sp->point.y == -2.0 && sp->point.z == 0.5);
+    assert_true(sp->object_point.x == 1.0 && sp->object_point.y == -2.0 && sp->object_point.z == 0.5);
+    assert_true(sp->geometric_normal.x == 0.0 && sp->geometric_normal.y == 0.0 && sp->geometric_normal.z == 1.0);
+    assert_true(sp->dpdu.x == 0.5 && sp->dpdu.y == 0.0 && sp->dpdv.y == 0.25 && sp->dpdv.x == 0.0);
+    assert_true(sp->u == 0.25 && sp->v == 0.75);
+    assert_int_equal(sp->surface, 3);
+    assert_int_equal(sp->entering, 1);
+    assert_true(sp->t == 0.0 && sp->footprint == 0.0 && sp->uv_footprint == 0.0);
+    assert_true(sp->uv_axis1[0] == 0.0 && sp->uv_axis1[1] == 0.0 && sp->uv_axis2[0] == 0.0 && sp->uv_axis2[1] == 0.0);
+    assert_true(sp->object_dpdu.x == 0.0 && sp->object_dpdv.y == 0.0);
+    assert_null(sp->material);
+    assert_null(sp->from);
+    assert_null(sp->to);
+    assert_ptr_equal(sp->model, model);
+    assert_ptr_equal(sp->scratch, arena);
+    /* empty caches: no generator value, the shading normal is the geometric one, the relative index is computed
+     * (vacuum on both sides: 1) and belongs to no colour */
+    double v;
+    assert_false(gsurfpoint_cache_get(sp, sp, &v, NULL));
+    GVec3 n = gsurfpoint_normal(sp);
+    assert_true(n.x == 0.0 && n.y == 0.0 && n.z == 1.0);
+    assert_near(gsurfpoint_relative_index(sp), 1.0, 1e-6);
+    GColor ri;
+    assert_int_equal(gcolor_alloc(&ri, model), G_OK);
+    assert_int_equal(gcolor_fill(&ri, 0.5), G_OK);
+    assert_near(gsurfpoint_index_of(sp, &ri), 0.5, 1e-6);
+    /* the caches work on it, and a material evaluates at it */
+    gsurfpoint_cache_put(sp, sp, 4.5, gvec3(1, 2, 3));
+    assert_true(gsurfpoint_cache_get(sp, sp, &v, NULL) && v == 4.5);
+    GMaterial *m;
+    GColor albedo;
+    assert_int_equal(gcolor_alloc(&albedo, model), G_OK);
+    assert_int_equal(gcolor_fill(&albedo, 0.5), G_OK);
+    assert_int_equal(glambert_create(model, &albedo, &m, &err), G_OK);
+    gcolor_free(&albedo);
+    sp->material = m;
+    GVec3 in = gvec3_normalize(gvec3(0.0, 0.6, 0.8));
+    double one[3] = {1.0, 1.0, 1.0}, rgb[3];
+    GColor light;
+    assert_int_equal(gcolor_alloc(&light, model), G_OK);
+    assert_int_equal(gcolor_from_rgb(&light, one, GCOLOR_LIGHT), G_OK);
+    assert_int_equal(gmaterial_reflection(m, sp, in, &light, gvec3(0, 0, 1), &ri), G_OK);
+    assert_int_equal(gcolor_to_rgb(&ri, GCOLOR_LIGHT, rgb), G_OK);
+    assert_near(rgb[1], 0.5 * 0.8 / M_PI, 1e-6); /* albedo times cos(in) over pi */
+    gcolor_free(&light);
+    gcolor_free(&ri);
+    gmaterial_unref(m);
+    gsurfpoint_free(sp);
+    gsurfpoint_free(NULL); /* a no-op */
+    gscratch_destroy(arena);
+    gcolormodel_destroy(model);
+}
+
+/* Missing or invalid arguments are refused with G_ERR_INVALID naming what is wrong; running out of memory is
+ * G_ERR_NOMEM. err may be NULL. */
+static void test_new_refuses(void **state)
+{
+    (void)state;
+    GError err;
+    GColorModel *model;
+    assert_int_equal(gcolormodel_create("rgb", NULL, &model, &err), G_OK);
+    GScratch *arena = gscratch_create(0);
+    const GVec3 nan3 = {NAN, 0.0, 0.0}, inf3 = {0.0, INFINITY, 0.0}, zero = {0.0, 0.0, 0.0};
+    struct {
+        const GColorModel *model;
+        GScratch *arena;
+        GVec3 p, n, du, dv;
+        double u, v;
+        int surface;
+        const char *message;
+    } bad[] = {
+        {NULL, arena, P, N, DU, DV, 0, 0, 0, "no colour model"},
+        {model, NULL, P, N, DU, DV, 0, 0, 0, "no scratch arena"},
+        {model, arena, nan3, N, DU, DV, 0, 0, 0, "the point is not finite"},
+        {model, arena, inf3, N, DU, DV, 0, 0, 0, "the point is not finite"},
+        {model, arena, P, zero, DU, DV, 0, 0, 0, "the normal is zero"},
+        {model, arena, P, nan3, DU, DV, 0, 0, 0, "the normal is zero or not finite"},
+        {model, arena, P, N, inf3, DV, 0, 0, 0, "a tangent is not finite"},
+        {model, arena, P, N, DU, nan3, 0, 0, 0, "a tangent is not finite"},
+        {model, arena, P, N, DU, DV, NAN, 0, 0, "(u, v) is not finite"},
+        {model, arena, P, N, DU, DV, 0, -INFINITY, 0, "(u, v) is not finite"},
+        {model, arena, P, N, DU, DV, 0, 0, -1, "the surface index is negative"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
+        gerror_clear(&err);
+        assert_null(gsurfpoint_new(bad[i].model, bad[i].arena, bad[i].p, bad[i].n, bad[i].du, bad[i].dv, bad[i].u,
+                                   bad[i].v, bad[i].surface, &err));
+        assert_int_equal(err.code, G_ERR_INVALID);
+        assert_non_null(strstr(err.message, bad[i].message));
+        assert_null(gsurfpoint_new(bad[i].model, bad[i].arena, bad[i].p, bad[i].n, bad[i].du, bad[i].dv, bad[i].u,
+                                   bad[i].v, bad[i].surface, NULL));
+    }
+    TuCounter c = {0, 0}; /* the first allocation fails */
+    GAllocator a = {tu_count_alloc, tu_count_realloc, tu_count_free, &c};
+    gmem_set_allocator(&a);
+    GSurfPoint *sp = gsurfpoint_new(model, arena, P, N, DU, DV, 0, 0, 0, &err);
+    gmem_set_allocator(NULL);
+    assert_null(sp);
+    assert_int_equal(err.code, G_ERR_NOMEM);
+    assert_int_equal(c.allocs, 1);
+    gscratch_destroy(arena);
+    gcolormodel_destroy(model);
+}
+
 int main(void)
 {
     if (generic_register_builtins(NULL) != G_OK)
         return 1;
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_layout),
+        cmocka_unit_test(test_new_fields),
+        cmocka_unit_test(test_new_refuses),
         cmocka_unit_test(test_init_clears),
         cmocka_unit_test(test_normal_cached),
         cmocka_unit_test(test_cache_slots),

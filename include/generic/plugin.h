@@ -67,8 +67,9 @@ extern "C" {
  * kind and the layout of the structures they pass (GSurfPoint). Raised whenever any of them changes
  * incompatibly. 2: GSurfPoint grew by the cache scopes of transform nodes and the footprint ellipse.
  * 3: GColor and GColorModelClass grew (a colour's storage and capacity; the fill, exp_scaled and axpy slots),
- *    GError grew by the position and parameter fields, and the GMaterial header by depth and cost. */
-#define GMODULE_ABI_VERSION 3
+ *    GError grew by the position and parameter fields, and the GMaterial header by depth and cost.
+ * 4: GSurfPoint's public fields come first and its caches are one private member at the end (GSurfPointPrivate). */
+#define GMODULE_ABI_VERSION 4
 
 /** Name of the exported `const int` holding the module's GMODULE_ABI_VERSION. */
 #define GMODULE_ABI_SYMBOL "generic_module_abi"

@@ -3,14 +3,18 @@
  * The renderer fills the geometric fields once per hit (gsurfpoint_init, then the fields); materials
  * and texture nodes read them and cache what they compute for the point: the shading normal (which a
  * material such as a bump node may change) and the generator values of texture nodes, so a sequence of
- * material calls on the same point evaluates each generator once. */
+ * material calls on the same point evaluates each generator once. The public fields come first; the caches are
+ * the private member `priv` at the end, reached only through the functions below. A renderer keeps points on its
+ * stack; a binding or a test that does not lay the struct out makes one with gsurfpoint_new. */
 #ifndef GENERIC_SURFPOINT_H
 #define GENERIC_SURFPOINT_H
 
 #include "export.h"
 #include "vec.h"
 #include "color.h"
+#include "error.h"
 
+#include <stddef.h>
 #include <stdint.h>
 
 #ifdef __cplusplus
@@ -22,14 +26,30 @@ typedef struct GMaterial GMaterial;
 /** Number of texture-node cache slots per surface point. */
 #define GSURF_CACHE_SLOTS 16
 
-/** One cached generator result, keyed by the object that computed it. */
+/** One cached generator result, keyed by the object that computed it (part of GSurfPointPrivate). */
 typedef struct GSurfCacheSlot {
     const void *key;
     double value;
     GVec3 gradient;
 } GSurfCacheSlot;
 
-/** Everything a material needs to know about the point it is evaluated at. */
+/** The caches of a surface point: private. Only the gsurfpoint_* functions below read or write them; they are laid
+ * out here so that a renderer can keep a point on its stack, and may change in any release (a program or binding
+ * that allocates points with gsurfpoint_new never lays them out). */
+typedef struct GSurfPointPrivate {
+    unsigned cached_flags;          /* which of the cached values below are set */
+    GVec3 cached_normal;            /* the shading normal (gsurfpoint_normal) */
+    double cached_rel_index;        /* the scalar relative index (gsurfpoint_relative_index) */
+    const float *rel_index_values;  /* the storage of the colour gsurfpoint_set_relative_index read */
+    int ncache;                     /* generator values put so far (the first GSURF_CACHE_SLOTS slots are used) */
+    uint64_t cache_scope;           /* the coordinates the cached generator values belong to (0: the point's own;
+                                       gsurfpoint_cache_enter) */
+    GSurfCacheSlot cache[GSURF_CACHE_SLOTS];       /* generator values */
+    uint64_t cache_slot_scope[GSURF_CACHE_SLOTS]; /* the scope of each slot */
+} GSurfPointPrivate;
+
+/** Everything a material needs to know about the point it is evaluated at: the public fields, then the private
+ * caches. */
 typedef struct GSurfPoint {
     GVec3 point;            /**< hit point in world space */
     GVec3 object_point;     /**< hit point in the object's own space (for solid textures) */
@@ -46,26 +66,28 @@ typedef struct GSurfPoint {
     const GMaterial *to;       /**< the medium on the other side of the surface */
     const GColorModel *model;  /**< colour model of the computation */
     GScratch *scratch;         /**< per-thread arena for temporaries */
-    /* cached values (private: use the functions below) */
-    unsigned cached_flags;
-    GVec3 cached_normal;
-    double cached_rel_index;
-    int ncache;
-    GSurfCacheSlot cache[GSURF_CACHE_SLOTS];
-    /* appended fields */
     GVec3 object_dpdu, object_dpdv; /**< tangents along u and v in object space, for the derivatives of solid
                                          textures (zero = unknown: dpdu/dpdv are used, exact when the object's
                                          transform to world space is a translation) */
-    /* private: the coordinates the cached generator values belong to (0: the point's own; see
-     * gsurfpoint_cache_enter) and the scope of each slot */
-    uint64_t cache_scope;
-    uint64_t cache_slot_scope[GSURF_CACHE_SLOTS];
     double uv_axis1[2], uv_axis2[2]; /**< the pixel footprint as an ellipse in (u,v): its two axes (du, dv), full
                                           widths, for anisotropic filtering (both zero = unknown: uv_footprint,
                                           isotropic, is used) */
-    const float *rel_index_values; /* private: the storage of the colour gsurfpoint_set_relative_index read */
+    GSurfPointPrivate priv; /**< private: the caches (use the functions below) */
 } GSurfPoint;
 
+/** A surface point on the heap, for bindings and programs that do not lay GSurfPoint out: gsurfpoint_init's point
+ * with model and scratch (both required; scratch is the arena of the thread that evaluates materials at it), the
+ * world and object-space point `point`, the geometric normal `normal` (normalised here), the tangents dpdu and dpdv,
+ * (u, v) and the surface index (>= 0); every other public field is as gsurfpoint_init leaves it, and may be set
+ * afterwards (material, from, to, t, footprints, entering). NULL with G_ERR_INVALID in err when model or scratch is
+ * NULL, a number is not finite, the normal is zero or the surface index negative; G_ERR_NOMEM when out of memory.
+ * Free it with gsurfpoint_free. */
+GENERIC_API GSurfPoint *gsurfpoint_new(const GColorModel *model, GScratch *scratch, GVec3 point, GVec3 normal,
+                                       GVec3 dpdu, GVec3 dpdv, double u, double v, int surface, GError *err);
+/** Frees a point made by gsurfpoint_new; NULL is a no-op. */
+GENERIC_API void gsurfpoint_free(GSurfPoint *sp);
+/** sizeof(GSurfPoint) in the library: what a binding checks its own view of the public fields against. */
+GENERIC_API size_t gsurfpoint_size(void);
 /** Clears a surface point (all fields zero, caches empty) and sets its model and arena. */
 GENERIC_API void gsurfpoint_init(GSurfPoint *sp, const GColorModel *model, GScratch *scratch);
 /** Forgets every cached value (call after changing geometric fields of an initialised point). */

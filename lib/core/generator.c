@@ -62,7 +62,7 @@ static double step_for(double x) { return 1e-4 * fmax(1.0, fabs(x)); }
 static void central_differences(const GGenerator *g, const GSurfPoint *sp, GVec3 *grad)
 {
     GSurfPoint q = *sp;
-    q.ncache = 0;
+    q.priv.ncache = 0;
     if (g->space == GGENERATOR_SPACE_UV) {
         double hu = step_for(sp->u), hv = step_for(sp->v);
         q.u = sp->u + hu;

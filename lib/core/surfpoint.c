@@ -1,6 +1,7 @@
 /* surfpoint.c - the surface point's caches. */
 #include "generic/surfpoint.h"
 #include "generic/material.h"
+#include "generic/memory.h"
 
 #include <math.h>
 #include <stddef.h>
@@ -15,9 +16,9 @@ enum { HAVE_NORMAL = 1u, HAVE_REL_INDEX = 2u, HAVE_REL_INDEX_COLOUR = 4u };
 __attribute__((always_inline)) inline void gsurfpoint_init(GSurfPoint *sp, const GColorModel *model, GScratch *scratch)
 {
     /* every field zero but the cache slots' contents and scopes (768 bytes, most of the struct): only the first
-     * ncache of them are ever read, and ncache is 0. Field by field, not one memset of the 208 bytes before the
-     * slots: GCC makes that a `rep stos`, whose start-up was a fifth of a renderer's surface-point fill; these
-     * stores merge into vector stores, and a renderer that inlines this drops those it overwrites. */
+     * ncache of them are ever read, and ncache is 0. Field by field, not one memset of the public fields: GCC makes
+     * that a `rep stos`, whose start-up was a fifth of a renderer's surface-point fill; these stores merge into
+     * vector stores, and a renderer that inlines this drops those it overwrites. */
     const GVec3 zero = {0.0, 0.0, 0.0};
     sp->point = sp->object_point = sp->geometric_normal = sp->dpdu = sp->dpdv = zero;
     sp->u = sp->v = 0.0;
@@ -27,39 +28,78 @@ __attribute__((always_inline)) inline void gsurfpoint_init(GSurfPoint *sp, const
     sp->material = sp->from = sp->to = NULL;
     sp->model = model;
     sp->scratch = scratch;
-    sp->cached_flags = 0;
-    sp->cached_normal = zero;
-    sp->cached_rel_index = 0.0;
-    sp->ncache = 0;
     sp->object_dpdu = sp->object_dpdv = zero;
-    sp->cache_scope = 0;
-    memset(sp->uv_axis1, 0, sizeof *sp - offsetof(GSurfPoint, uv_axis1));
+    sp->uv_axis1[0] = sp->uv_axis1[1] = sp->uv_axis2[0] = sp->uv_axis2[1] = 0.0;
+    GSurfPointPrivate *p = &sp->priv;
+    p->cached_flags = 0;
+    p->cached_normal = zero;
+    p->cached_rel_index = 0.0;
+    p->rel_index_values = NULL;
+    p->ncache = 0;
+    p->cache_scope = 0;
 }
+
+static int finite3(GVec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
+
+GSurfPoint *gsurfpoint_new(const GColorModel *model, GScratch *scratch, GVec3 point, GVec3 normal, GVec3 dpdu,
+                           GVec3 dpdv, double u, double v, int surface, GError *err)
+{
+    const char *bad = !model ? "no colour model given"
+                      : !scratch ? "no scratch arena given"
+                      : !finite3(point) ? "the point is not finite"
+                      : !finite3(normal) || gvec3_length(normal) == 0.0 ? "the normal is zero or not finite"
+                      : !finite3(dpdu) || !finite3(dpdv) ? "a tangent is not finite"
+                      : !isfinite(u) || !isfinite(v) ? "(u, v) is not finite"
+                      : surface < 0 ? "the surface index is negative"
+                      : NULL;
+    if (bad) {
+        gerror_set(err, G_ERR_INVALID, "gsurfpoint_new: %s", bad);
+        return NULL;
+    }
+    GSurfPoint *sp = gmem_alloc(sizeof *sp);
+    if (!sp) {
+        gerror_set(err, G_ERR_NOMEM, "gsurfpoint_new: out of memory");
+        return NULL;
+    }
+    gsurfpoint_init(sp, model, scratch);
+    sp->point = sp->object_point = point;
+    sp->geometric_normal = gvec3_normalize(normal);
+    sp->dpdu = dpdu;
+    sp->dpdv = dpdv;
+    sp->u = u;
+    sp->v = v;
+    sp->surface = surface;
+    return sp;
+}
+
+void gsurfpoint_free(GSurfPoint *sp) { gmem_free(sp); }
+
+size_t gsurfpoint_size(void) { return sizeof(GSurfPoint); }
 
 void gsurfpoint_invalidate(GSurfPoint *sp)
 {
-    sp->cached_flags = 0;
-    sp->ncache = 0;
+    sp->priv.cached_flags = 0;
+    sp->priv.ncache = 0;
 }
 
 GVec3 gsurfpoint_normal(GSurfPoint *sp)
 {
-    if (!(sp->cached_flags & HAVE_NORMAL)) {
+    if (!(sp->priv.cached_flags & HAVE_NORMAL)) {
         GVec3 n = sp->geometric_normal;
         /* GMAT_GEOMETRIC_NORMAL: the material's normal is the geometric one, no call (material.h) */
         if (sp->material && !(sp->material->flags & GMAT_GEOMETRIC_NORMAL) &&
             gmaterial_normal(sp->material, sp, &n) != G_OK)
             n = sp->geometric_normal;
-        sp->cached_normal = n;
-        sp->cached_flags |= HAVE_NORMAL;
+        sp->priv.cached_normal = n;
+        sp->priv.cached_flags |= HAVE_NORMAL;
     }
-    return sp->cached_normal;
+    return sp->priv.cached_normal;
 }
 
 void gsurfpoint_set_normal(GSurfPoint *sp, GVec3 n)
 {
-    sp->cached_normal = n;
-    sp->cached_flags |= HAVE_NORMAL;
+    sp->priv.cached_normal = n;
+    sp->priv.cached_flags |= HAVE_NORMAL;
 }
 
 double gsurfpoint_scalar_index(const GColor *ri)
@@ -70,7 +110,7 @@ double gsurfpoint_scalar_index(const GColor *ri)
 
 double gsurfpoint_relative_index(GSurfPoint *sp)
 {
-    if (!(sp->cached_flags & HAVE_REL_INDEX)) {
+    if (!(sp->priv.cached_flags & HAVE_REL_INDEX)) {
         double r = 1.0;
         if (sp->model && sp->scratch) {
             GScratchMark mark = gscratch_mark(sp->scratch);
@@ -82,35 +122,36 @@ double gsurfpoint_relative_index(GSurfPoint *sp)
                 r = gsurfpoint_scalar_index(&a);
             gscratch_release(sp->scratch, mark);
         }
-        sp->cached_rel_index = r;
-        sp->cached_flags |= HAVE_REL_INDEX;
+        sp->priv.cached_rel_index = r;
+        sp->priv.cached_flags |= HAVE_REL_INDEX;
     }
-    return sp->cached_rel_index;
+    return sp->priv.cached_rel_index;
 }
 
 void gsurfpoint_set_relative_index(GSurfPoint *sp, const GColor *ri)
 {
-    sp->cached_rel_index = gsurfpoint_scalar_index(ri);
-    sp->rel_index_values = ri->v;
-    sp->cached_flags |= HAVE_REL_INDEX | HAVE_REL_INDEX_COLOUR;
+    sp->priv.cached_rel_index = gsurfpoint_scalar_index(ri);
+    sp->priv.rel_index_values = ri->v;
+    sp->priv.cached_flags |= HAVE_REL_INDEX | HAVE_REL_INDEX_COLOUR;
 }
 
 double gsurfpoint_index_of(const GSurfPoint *sp, const GColor *ri)
 {
-    if ((sp->cached_flags & HAVE_REL_INDEX_COLOUR) && ri->v == sp->rel_index_values)
-        return sp->cached_rel_index;
+    if ((sp->priv.cached_flags & HAVE_REL_INDEX_COLOUR) && ri->v == sp->priv.rel_index_values)
+        return sp->priv.cached_rel_index;
     return gsurfpoint_scalar_index(ri);
 }
 
 int gsurfpoint_cache_get(const GSurfPoint *sp, const void *key, double *value, GVec3 *gradient)
 {
-    int n = sp->ncache < GSURF_CACHE_SLOTS ? sp->ncache : GSURF_CACHE_SLOTS;
+    const GSurfPointPrivate *p = &sp->priv;
+    int n = p->ncache < GSURF_CACHE_SLOTS ? p->ncache : GSURF_CACHE_SLOTS;
     for (int i = 0; i < n; i++)
-        if (sp->cache[i].key == key && sp->cache_slot_scope[i] == sp->cache_scope) {
+        if (p->cache[i].key == key && p->cache_slot_scope[i] == p->cache_scope) {
             if (value)
-                *value = sp->cache[i].value;
+                *value = p->cache[i].value;
             if (gradient)
-                *gradient = sp->cache[i].gradient;
+                *gradient = p->cache[i].gradient;
             return 1;
         }
     return 0;
@@ -118,20 +159,21 @@ int gsurfpoint_cache_get(const GSurfPoint *sp, const void *key, double *value, G
 
 void gsurfpoint_cache_put(GSurfPoint *sp, const void *key, double value, GVec3 gradient)
 {
-    int n = sp->ncache < GSURF_CACHE_SLOTS ? sp->ncache : GSURF_CACHE_SLOTS;
+    GSurfPointPrivate *p = &sp->priv;
+    int n = p->ncache < GSURF_CACHE_SLOTS ? p->ncache : GSURF_CACHE_SLOTS;
     for (int i = 0; i < n; i++)
-        if (sp->cache[i].key == key && sp->cache_slot_scope[i] == sp->cache_scope) { /* one slot per key: replace */
-            sp->cache[i].value = value;
-            sp->cache[i].gradient = gradient;
+        if (p->cache[i].key == key && p->cache_slot_scope[i] == p->cache_scope) { /* one slot per key: replace */
+            p->cache[i].value = value;
+            p->cache[i].gradient = gradient;
             return;
         }
-    int slot = sp->ncache % GSURF_CACHE_SLOTS;
-    sp->cache[slot].key = key;
-    sp->cache[slot].value = value;
-    sp->cache[slot].gradient = gradient;
-    sp->cache_slot_scope[slot] = sp->cache_scope;
+    int slot = p->ncache % GSURF_CACHE_SLOTS;
+    p->cache[slot].key = key;
+    p->cache[slot].value = value;
+    p->cache[slot].gradient = gradient;
+    p->cache_slot_scope[slot] = p->cache_scope;
     /* after the slots are full, keep ncache in [GSURF_CACHE_SLOTS, 2 * GSURF_CACHE_SLOTS) so it never overflows */
-    sp->ncache = sp->ncache + 1 >= 2 * GSURF_CACHE_SLOTS ? GSURF_CACHE_SLOTS : sp->ncache + 1;
+    p->ncache = p->ncache + 1 >= 2 * GSURF_CACHE_SLOTS ? GSURF_CACHE_SLOTS : p->ncache + 1;
 }
 
 /* splitmix64's finaliser: a scope is a hash of the chain of nodes that moved the coordinates (64 bits: two
@@ -147,14 +189,14 @@ static uint64_t mix64(uint64_t x)
 
 void gsurfpoint_cache_enter(GSurfPoint *q, const GSurfPoint *sp, const void *node)
 {
-    q->cache_scope = mix64(sp->cache_scope * 0x9e3779b97f4a7c15ull + (uint64_t)(uintptr_t)node) | 1u;
+    q->priv.cache_scope = mix64(sp->priv.cache_scope * 0x9e3779b97f4a7c15ull + (uint64_t)(uintptr_t)node) | 1u;
 }
 
 void gsurfpoint_cache_return(GSurfPoint *sp, const GSurfPoint *q)
 {
-    sp->ncache = q->ncache;
-    memcpy(sp->cache, q->cache, sizeof sp->cache);
-    memcpy(sp->cache_slot_scope, q->cache_slot_scope, sizeof sp->cache_slot_scope);
+    sp->priv.ncache = q->priv.ncache;
+    memcpy(sp->priv.cache, q->priv.cache, sizeof sp->priv.cache);
+    memcpy(sp->priv.cache_slot_scope, q->priv.cache_slot_scope, sizeof sp->priv.cache_slot_scope);
 }
 
 void gsurfpoint_uv_widths(const GSurfPoint *sp, double *wu, double *wv)
