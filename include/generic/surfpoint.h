@@ -38,10 +38,10 @@ typedef struct GSurfCacheSlot {
  * that allocates points with gsurfpoint_new never lays them out). */
 typedef struct GSurfPointPrivate {
     unsigned cached_flags;          /* which of the cached values below are set */
+    int ncache;                     /* generator values put so far (the first GSURF_CACHE_SLOTS slots are used) */
     GVec3 cached_normal;            /* the shading normal (gsurfpoint_normal) */
     double cached_rel_index;        /* the scalar relative index (gsurfpoint_relative_index) */
     const float *rel_index_values;  /* the storage of the colour gsurfpoint_set_relative_index read */
-    int ncache;                     /* generator values put so far (the first GSURF_CACHE_SLOTS slots are used) */
     uint64_t cache_scope;           /* the coordinates the cached generator values belong to (0: the point's own;
                                        gsurfpoint_cache_enter) */
     GSurfCacheSlot cache[GSURF_CACHE_SLOTS];       /* generator values */

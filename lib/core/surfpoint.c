@@ -32,10 +32,10 @@ __attribute__((always_inline)) inline void gsurfpoint_init(GSurfPoint *sp, const
     sp->uv_axis1[0] = sp->uv_axis1[1] = sp->uv_axis2[0] = sp->uv_axis2[1] = 0.0;
     GSurfPointPrivate *p = &sp->priv;
     p->cached_flags = 0;
+    p->ncache = 0;
     p->cached_normal = zero;
     p->cached_rel_index = 0.0;
     p->rel_index_values = NULL;
-    p->ncache = 0;
     p->cache_scope = 0;
 }
 
