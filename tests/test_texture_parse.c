@@ -194,7 +194,9 @@ static void test_errors(void **state)
     assert_int_equal(load_error("material m lambert\nnode n interpolate-one { a m b m t constant method shine }\n",
                                 &err),
                      G_ERR_PARSE);
-    assert_non_null(strstr(err.message, "unknown method 'shine'"));
+    assert_non_null(strstr(err.message, "unknown method 'shine' (reflection, refraction, refraction_index, "
+                                        "reflection_dir, refraction_dir, emission, ambient, absorption, normal, "
+                                        "diffuse, opaque)"));
     assert_int_equal(load_error("node n bump { child nothing height constant }\n", &err), G_ERR_NOTFOUND);
     assert_non_null(strstr(err.message, "nothing"));
     assert_int_equal(load_error("generator w wood { latewood 2 }\n", &err), G_ERR_PARSE);

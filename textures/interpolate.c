@@ -10,6 +10,7 @@
 #include <generic/plugin.h>
 #include <generic/kit/texture_parse.h>
 
+#include <stdio.h>
 #include <string.h>
 
 typedef struct Interp {
@@ -108,11 +109,13 @@ static int parse(GReader *r, int one, void **object, GError *err)
         else if (one && strcmp(key, "method") == 0) {
             char name[32];
             rc = greader_ident(r, name, sizeof name, err);
-            if (rc == G_OK && (method = gnode_method_from_name(name)) < 0)
-                rc = greader_error(r, err,
-                                   "unknown method '%s' (reflection, refraction, refraction_index, reflection_dir, "
-                                   "refraction_dir, emission, ambient, absorption, normal, diffuse, opaque)",
-                                   name);
+            if (rc == G_OK && (method = gnode_method_from_name(name)) < 0) {
+                char known[256] = ""; /* the keywords of GNodeMethod, ", " between them */
+                for (int i = 0; i < GNODE_METHOD_COUNT; i++)
+                    snprintf(known + strlen(known), sizeof known - strlen(known), "%s%s", i ? ", " : "",
+                             gnode_method_name((GNodeMethod)i));
+                rc = greader_error(r, err, "unknown method '%s' (%s)", name, known);
+            }
         } else
             rc = greader_unknown_param(r, one ? "a, b, t, method" : "a, b, t", err);
         if (rc < 0)
