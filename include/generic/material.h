@@ -17,9 +17,8 @@
  * mirror ray into the body); one interface sends no light there, so what such a pair passes on is black
  * (gmaterial_cos_in, material_kit.h; the built-ins all do so), and a sample along it keeps its flag with a black weight.
  *
- * Missing methods (NULL slots) take these defaults: reflection, refraction, emission, diffuse: black;
- * refraction_index: 1; reflection_dir, refraction_dir: not valid; ambient: diffuse * illum;
- * absorption: illum unchanged; normal: the geometric normal; opaque: yes.
+ * The methods are listed once, in GMATERIAL_METHODS below, each with the default a missing method (a NULL slot)
+ * takes.
  *
  * Sampling (for renderers other than a Whitted tracer: path tracers). sample(out, rel_index, u1, u2) draws a
  * direction `in` for light leaving towards `out`, from two uniform numbers in [0, 1); it returns the
