@@ -1,7 +1,7 @@
 /* colorparse.c - colour literals: rgb, spectrum, blackbody, illuminant, line, bfc, scale, and names.
  * A literal is parsed into a model-free GColorSpec; each use converts it into the file's colour model in the
  * role of that use (reflectance or light). */
-#include "reader_internal.h"
+#include "reader_entry.h"
 #include "generic/plugin.h"
 #include "generic/services/bfc.h"
 #include "generic/memory.h"

@@ -1,5 +1,5 @@
-/* reader_entry.c - entries: calling parse routines, nested values and references, colour model entries. */
-#include "reader_internal.h"
+/* reader_entry.c - entries: calling parse routines, nested values and references to named entries. */
+#include "reader_entry.h"
 #include "generic/memory.h"
 
 #include <stdio.h>
@@ -85,8 +85,8 @@ int greader_value(GReader *r, GKind kind, int add, void **object, const GTypeInf
     if (t.type != GTOK_IDENT) {
         char found[96];
         glexer_describe(&t, found, sizeof found);
-        return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "expected a %s (a type or a defined name), found %s",
-                                kn, found);
+        return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col,
+                                "expected a %s (a type or a defined name), found %s", kn, found);
     }
     const GTypeInfo *ty = greader_find_type(kind, t.text);
     if (ty) {
@@ -155,52 +155,4 @@ const GColorModel *greader_colormodel(GReader *r)
 {
     r->model_fixed = 1;
     return glibrary_colormodel(r->lib);
-}
-
-/* ---- colour model entries: `colormodel TYPE { step 5 min 380 max 780 }` ---- */
-
-static int colormodel_options(GReader *r, GColorModelOptions *o, GError *err)
-{
-    const char *key;
-    int rc;
-    while ((rc = greader_param(r, &key, err)) > 0) {
-        if (strcmp(key, "step") == 0)
-            rc = greader_number_in(r, 0.01, 400.0, &o->step_nm, err);
-        else if (strcmp(key, "min") == 0)
-            rc = greader_number_in(r, 100.0, 2000.0, &o->min_nm, err);
-        else if (strcmp(key, "max") == 0)
-            rc = greader_number_in(r, 100.0, 2000.0, &o->max_nm, err);
-        else
-            rc = greader_unknown_param(r, "step, min, max", err);
-        if (rc < 0)
-            return rc;
-    }
-    return rc;
-}
-
-int greader_colormodel_entry(GReader *r, const GTypeInfo *type, GColorModel **out, GError *err)
-{
-    *out = NULL;
-    if (type->parse) {
-        void *obj = NULL;
-        int rc = greader_invoke(r, type, r->cur.tok.line, r->cur.tok.col, &obj, err);
-        *out = obj;
-        return rc;
-    }
-    int line = r->cur.tok.line, col = r->cur.tok.col;
-    int base = r->nframes;
-    int rc = greader_push_frame(r, 0, type, line, col, err);
-    GColorModelOptions o = {0, 0, 0};
-    if (rc == G_OK)
-        rc = colormodel_options(r, &o, err);
-    if (rc == G_OK) {
-        rc = gcolormodel_create_class(type->vtable, &o, out, err);
-        if (rc != G_OK) {
-            char msg[sizeof err->message];
-            snprintf(msg, sizeof msg, "%s", err ? err->message : "");
-            rc = greader_error_at(r, err, rc, line, col, "%s", msg);
-        }
-    }
-    greader_pop_frames(r, base);
-    return rc;
 }

@@ -1,5 +1,5 @@
 /* reader_library.c - GLibrary: the objects a text file defines, looked up by kind and name, freed at once. */
-#include "reader_internal.h"
+#include "reader_library.h"
 #include "generic/memory.h"
 #include "generic/texture.h"
 
@@ -295,17 +295,6 @@ void glibrary_names(const GLibrary *lib, GKind kind, char *buf, size_t size)
 }
 
 /* ---- kept texts, templates, constants ---- */
-
-void gtemplate_free(GTemplate *t)
-{
-    if (!t)
-        return;
-    for (int i = 0; i < t->nparams; i++)
-        gmem_free(t->params[i].name);
-    gmem_free(t->params);
-    gmem_free(t->base);
-    gmem_free(t);
-}
 
 int glibrary_keep_text(GLibrary *lib, char *text, size_t len, const char *name, int *id)
 {
