@@ -9,7 +9,7 @@
  *     GENERIC_TYPE(oren_nayar, GKIND_MATERIAL, &my_class, my_parse, NULL);
  *
  * In the library's own sources that line is all: the build collects every GENERIC_TYPE record of colormodels/,
- * materials/, textures/ and lib/ into the generated list of builtins.h. A file becomes a run-time module by one
+ * colors/, materials/ and textures/ into the generated list of builtins.h. A file becomes a run-time module by one
  * more line naming its records,
  *
  *     GENERIC_MODULE(&gtype_oren_nayar);
