@@ -73,6 +73,9 @@ GENERIC_API const GTypeInfo *gregistry_find(GKind kind, const char *name);
 GENERIC_API GENERIC_NODISCARD int gregistry_list(GKind kind, const GTypeInfo **out, int max);
 /** Writes the registered names of a kind, comma separated, into buf (for "expected one of ..." messages). */
 GENERIC_API void gregistry_names(GKind kind, char *buf, size_t size);
+/** Releases an object a type made: with type->destroy, else the default of its kind (see GTypeInfo.destroy);
+ * NULL object is a no-op. */
+GENERIC_API void gtypeinfo_release(const GTypeInfo *type, void *object);
 /** Keyword of a kind ("colormodel", "material", ...). */
 GENERIC_API const char *gkind_name(GKind kind);
 

@@ -1,7 +1,10 @@
 /* registry.c - per-kind tables of registered types. The registry starts empty: it knows no concrete type
  * (programs register the built-ins with generic_register_builtins, modules add theirs while they load). */
 #include "generic/registry.h"
+#include "generic/colorspec.h"
+#include "generic/material.h"
 #include "generic/memory.h"
+#include "generic/texture.h"
 
 #include <pthread.h>
 #include <stdio.h>
@@ -23,6 +26,29 @@ static const char *const kind_names[GKIND_COUNT] = {
 const char *gkind_name(GKind kind)
 {
     return (unsigned)kind < GKIND_COUNT ? kind_names[kind] : "?";
+}
+
+static void release_colormodel(void *object) { gcolormodel_destroy(object); }
+static void release_colorspec(void *object) { gcolorspec_destroy(object); }
+static void release_material(void *object) { gmaterial_unref(object); }
+static void release_generator(void *object) { ggenerator_unref(object); }
+
+/* What releases an object of a type without a destroy of its own, per kind (NULL: gmem_free). */
+static void (*const kind_release[GKIND_COUNT])(void *object) = {
+    release_colormodel, release_colorspec, release_material, release_material, release_generator, NULL, NULL, NULL,
+};
+
+void gtypeinfo_release(const GTypeInfo *type, void *object)
+{
+    if (!object)
+        return;
+    void (*destroy)(void *) = type ? type->destroy : NULL;
+    if (!destroy && type && (unsigned)type->kind < GKIND_COUNT)
+        destroy = kind_release[type->kind];
+    if (destroy)
+        destroy(object);
+    else
+        gmem_free(object);
 }
 
 int gtypeinfo_complete(GTypeInfo *info, GError *err)

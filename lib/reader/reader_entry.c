@@ -59,7 +59,7 @@ int greader_invoke(GReader *r, const GTypeInfo *type, int line, int col, void **
             rc = greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "%s %s: expected '}', found %s",
                                   gkind_name(type->kind), type->name, found);
         }
-        gtype_release(type, obj);
+        gtypeinfo_release(type, obj);
     }
     if (rc != G_OK) { /* a failing routine has freed what it made */
         int placed = greader_locate(r, err); /* rc stays the routine's status */

@@ -1,7 +1,6 @@
 /* reader_library.c - GLibrary: the objects a text file defines, looked up by kind and name, freed at once. */
 #include "reader_library.h"
 #include "generic/memory.h"
-#include "generic/texture.h"
 
 #include <stdint.h>
 #include <stdio.h>
@@ -99,24 +98,6 @@ static int grow_slots(GLibrary *lib)
     return G_OK;
 }
 
-void gtype_release(const GTypeInfo *type, void *object)
-{
-    if (!object)
-        return;
-    if (type && type->destroy) {
-        type->destroy(object);
-        return;
-    }
-    switch (type ? type->kind : GKIND_COUNT) {
-    case GKIND_MATERIAL:
-    case GKIND_NODE: gmaterial_unref(object); break;
-    case GKIND_COLORMODEL: gcolormodel_destroy(object); break;
-    case GKIND_COLOR: gcolorspec_destroy(object); break;
-    case GKIND_GENERATOR: ggenerator_unref(object); break;
-    default: gmem_free(object); break;
-    }
-}
-
 int glibrary_create(const GColorModel *model, GLibrary **out, GError *err)
 {
     *out = NULL;
@@ -135,7 +116,7 @@ void glibrary_destroy(GLibrary *lib)
     for (int i = lib->count - 1; i >= 0; i--) {
         Entry *e = &lib->entries[i];
         if (e->owned)
-            gtype_release(e->type, e->object);
+            gtypeinfo_release(e->type, e->object);
         gmem_free(e->name);
         gtemplate_free(e->tmpl);
     }
@@ -210,7 +191,7 @@ int glibrary_put(GLibrary *lib, const GTypeInfo *type, const char *name, void *o
     if (rc != G_OK) {
         gmem_free(copy);
         if (owned)
-            gtype_release(type, object);
+            gtypeinfo_release(type, object);
         return rc;
     }
     Entry *e = &lib->entries[lib->count];

@@ -13,8 +13,6 @@
  * object is released at once. */
 GENERIC_NODISCARD int glibrary_put(GLibrary *lib, const GTypeInfo *type, const char *name, void *object, int owned,
                                    int toplevel, GError *err);
-/** Releases an object the way its type (or kind) says. */
-void gtype_release(const GTypeInfo *type, void *object);
 /** The type an object of the library was defined with (by name), or NULL. */
 const GTypeInfo *glibrary_find_type(const GLibrary *lib, GKind kind, const char *name);
 /** Comma separated names defined in a kind (for messages). */

@@ -170,7 +170,7 @@ int greader_material_with(GReader *r, const char *base, const char *param, GMate
     r->pending_via = NULL;
     r->pending_single = NULL;
     if (rc == G_OK && !r->single_taken) { /* a type read positionally: the value is still there */
-        gtype_release(type, obj);
+        gtypeinfo_release(type, obj);
         rc = greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "%s type %s takes no named parameters (no '%s')",
                               gkind_name(type->kind), type->name, param);
     }
