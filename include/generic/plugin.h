@@ -16,7 +16,8 @@
  *
  * which defines the two symbols a module exports (generic_module_abi and generic_module_init; see
  * examples/plugins/ for complete modules). A module may also write generic_module_init by hand and call
- * api->add_type for each record.
+ * api->add_type for each record; a type of a kind an application registers (registry.h: gtrace's object, light and
+ * camera) has no constant kind to write in a record, so its module finds the kind with gkind_find in its init.
  *
  * The loader (gplugin_load, or a `plugin "file.so"` statement in a text file) first reads the file itself, without
  * running it: it must be an ELF shared object for this machine whose dynamic symbol table defines both module

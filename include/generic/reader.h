@@ -110,7 +110,8 @@ typedef struct GReaderOptions {
     const char *confine_dir;
     /** Entry kinds to read past without interpreting them: bit (1u << kind) set skips every `KIND ... { ... }`
      * entry of that kind (its braces must balance), so that a program without those types (gmat reading a gtrace
-     * scene: GKIND_OBJECT, GKIND_LIGHT, GKIND_CAMERA) can read the rest of the file. 0: skip nothing. */
+     * scene registers gtrace's kinds object, light and camera, without types, and skips them) can read the rest of
+     * the file. 0: skip nothing. */
     unsigned skip_kinds;
 } GReaderOptions;
 

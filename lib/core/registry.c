@@ -1,10 +1,8 @@
-/* registry.c - per-kind tables of registered types. The registry starts empty: it knows no concrete type
- * (programs register the built-ins with generic_register_builtins, modules add theirs while they load). */
+/* registry.c - per-kind tables of registered types (the kinds are lib/core/kinds.c's). The registry starts empty: it
+ * knows no concrete type (programs register the built-ins with generic_register_builtins, modules add theirs while
+ * they load). */
 #include "generic/registry.h"
-#include "generic/colorspec.h"
-#include "generic/material.h"
 #include "generic/memory.h"
-#include "generic/texture.h"
 
 #include <pthread.h>
 #include <stdio.h>
@@ -16,35 +14,17 @@ typedef struct Table {
     int count, cap;
 } Table;
 
-static Table tables[GKIND_COUNT];
+static Table tables[GKIND_MAX];
 static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
-
-static const char *const kind_names[GKIND_COUNT] = {
-    "colormodel", "color", "material", "node", "generator", "object", "light", "camera",
-};
-
-const char *gkind_name(GKind kind)
-{
-    return (unsigned)kind < GKIND_COUNT ? kind_names[kind] : "?";
-}
-
-static void release_colormodel(void *object) { gcolormodel_destroy(object); }
-static void release_colorspec(void *object) { gcolorspec_destroy(object); }
-static void release_material(void *object) { gmaterial_unref(object); }
-static void release_generator(void *object) { ggenerator_unref(object); }
-
-/* What releases an object of a type without a destroy of its own, per kind (NULL: gmem_free). */
-static void (*const kind_release[GKIND_COUNT])(void *object) = {
-    release_colormodel, release_colorspec, release_material, release_material, release_generator, NULL, NULL, NULL,
-};
 
 void gtypeinfo_release(const GTypeInfo *type, void *object)
 {
     if (!object)
         return;
     void (*destroy)(void *) = type ? type->destroy : NULL;
-    if (!destroy && type && (unsigned)type->kind < GKIND_COUNT)
-        destroy = kind_release[type->kind];
+    const GKindInfo *kind = type && !destroy ? gkind_info(type->kind) : NULL;
+    if (kind)
+        destroy = kind->destroy;
     if (destroy)
         destroy(object);
     else
@@ -53,7 +33,7 @@ void gtypeinfo_release(const GTypeInfo *type, void *object)
 
 int gtypeinfo_complete(GTypeInfo *info, GError *err)
 {
-    if (!info || (unsigned)info->kind >= GKIND_COUNT)
+    if (!info || !gkind_info(info->kind))
         return gerror_set(err, G_ERR_INVALID, "invalid type registration: unknown kind");
     if ((!info->name || !info->summary) && info->vtable) {
         GClassHeader h; /* the vtable's leading members (copied: the vtable is of another struct type) */
@@ -136,7 +116,7 @@ int gregistry_add_list(const GTypeInfo *const *list, GError *err)
 
 const GTypeInfo *gregistry_find(GKind kind, const char *name)
 {
-    if ((unsigned)kind >= GKIND_COUNT || !name)
+    if (!gkind_info(kind) || !name)
         return NULL;
     pthread_mutex_lock(&lock);
     const GTypeInfo *found = find_locked(kind, name);
@@ -146,7 +126,7 @@ const GTypeInfo *gregistry_find(GKind kind, const char *name)
 
 int gregistry_list(GKind kind, const GTypeInfo **out, int max)
 {
-    if ((unsigned)kind >= GKIND_COUNT)
+    if (!gkind_info(kind))
         return 0;
     pthread_mutex_lock(&lock);
     Table *t = &tables[kind];
@@ -162,7 +142,7 @@ void gregistry_names(GKind kind, char *buf, size_t size)
     if (!size)
         return;
     buf[0] = '\0';
-    if ((unsigned)kind >= GKIND_COUNT)
+    if (!gkind_info(kind))
         return;
     pthread_mutex_lock(&lock);
     Table *t = &tables[kind];

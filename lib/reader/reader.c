@@ -258,14 +258,7 @@ static int do_entry(GReader *r, GKind kind, GError *err)
         rc = greader_like_entry(r, kind, name, t.line, t.col, err);
     } else if (rc == G_OK && v.type != GTOK_IDENT) { /* most likely a misspelt type keyword */
         char names[512];
-        gregistry_names(kind, names, sizeof names);
-        if (kind == GKIND_MATERIAL || kind == GKIND_NODE) {
-            size_t n = strlen(names);
-            gregistry_names(kind == GKIND_MATERIAL ? GKIND_NODE : GKIND_MATERIAL, names + n + 2,
-                            sizeof names - n - 2);
-            if (names[n + 2])
-                names[n] = ',', names[n + 1] = ' ';
-        }
+        greader_type_names(kind, names, sizeof names);
         rc = greader_error_at(r, err, G_ERR_NOTFOUND, t.line, t.col, "unknown %s type '%s' (registered: %s)", kn,
                               name, names[0] ? names : "none");
     } else if (rc == G_OK) {
@@ -336,8 +329,15 @@ static int skip_entry(GReader *r, GKind kind, int line, int col, GError *err)
     return G_OK;
 }
 
-static const char statement_list[] = "include, plugin, colormodel, define, color, material, node, generator, "
-                                     "object, light, camera";
+/* "include, plugin, colormodel, define, color, material, ...": the statements, then the keywords of every other kind
+ * (the applications' too), for messages. */
+static void statement_list(char *buf, size_t size)
+{
+    size_t used = (size_t)snprintf(buf, size, "include, plugin, colormodel, define");
+    for (int k = 0, n = gkind_count(); k < n && used < size; k++)
+        if ((GKind)k != GKIND_COLORMODEL)
+            used += (size_t)snprintf(buf + used, size - used, ", %s", gkind_name((GKind)k));
+}
 
 static int parse_statements(GReader *r, GError *err)
 {
@@ -348,20 +348,21 @@ static int parse_statements(GReader *r, GError *err)
             return rc;
         if (t.type == GTOK_EOF)
             return G_OK;
-        char found[96]; /* described only for a message: formatting it for every statement is measurable */
+        char found[96], statements[512]; /* made only for messages: for every statement it would be measurable */
         int foreign = r->ts.src->lx.quiet; /* no statement read from this file yet: quote nothing of it */
         if (t.type != GTOK_IDENT && foreign)
             return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "%s", GLEX_FOREIGN_MESSAGE);
         if (t.type != GTOK_IDENT) {
             glexer_describe(&t, found, sizeof found);
+            statement_list(statements, sizeof statements);
             return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "expected a statement (%s), found %s",
-                                    statement_list, found);
+                                    statements, found);
         }
         greader_take(r, &t);
-        int known = !strcmp(t.text, "include") || !strcmp(t.text, "plugin") || !strcmp(t.text, "colormodel") ||
-                    !strcmp(t.text, "define");
-        for (int k = GKIND_COLOR; k < GKIND_COUNT && !known; k++)
-            known = strcmp(t.text, gkind_name((GKind)k)) == 0;
+        GKind kind = GKIND_COLORMODEL; /* the colormodel statement; other kinds are entries */
+        int entry = gkind_find(t.text, &kind) && kind != GKIND_COLORMODEL;
+        int known = entry || !strcmp(t.text, "include") || !strcmp(t.text, "plugin") ||
+                    !strcmp(t.text, "colormodel") || !strcmp(t.text, "define");
         if (known)
             r->ts.src->lx.quiet = 0; /* the file is in the format: from here on its text may be quoted */
         if (strcmp(t.text, "include") == 0) {
@@ -373,22 +374,19 @@ static int parse_statements(GReader *r, GError *err)
         } else if (strcmp(t.text, "define") == 0) {
             rc = greader_define_statement(r, err);
         } else {
-            int kind = -1;
-            for (int k = GKIND_COLOR; k < GKIND_COUNT && kind < 0; k++)
-                if (strcmp(t.text, gkind_name((GKind)k)) == 0)
-                    kind = k;
-            if (kind < 0 && foreign)
+            if (!entry && foreign)
                 return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "%s", GLEX_FOREIGN_MESSAGE);
-            if (kind < 0) {
+            if (!entry) {
                 glexer_describe(&t, found, sizeof found);
+                statement_list(statements, sizeof statements);
                 return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "unknown statement %s (expected %s)",
-                                        found, statement_list);
+                                        found, statements);
             }
             rc = resolve_model(r, err);
-            if (rc == G_OK && kind < 32 && (r->opt.skip_kinds & (1u << kind)))
-                rc = skip_entry(r, (GKind)kind, t.line, t.col, err);
+            if (rc == G_OK && (unsigned)kind < 32 && (r->opt.skip_kinds & (1u << kind)))
+                rc = skip_entry(r, kind, t.line, t.col, err);
             else if (rc == G_OK)
-                rc = do_entry(r, (GKind)kind, err);
+                rc = do_entry(r, kind, err);
         }
         if (rc != G_OK)
             return rc;

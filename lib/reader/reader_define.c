@@ -19,7 +19,7 @@ static const char *reserved_word(const char *name)
             return "a keyword of the format";
     if (strcasecmp(name, "nan") == 0 || strcasecmp(name, "inf") == 0 || strcasecmp(name, "infinity") == 0)
         return "not a finite number";
-    for (int k = 0; k < GKIND_COUNT; k++) {
+    for (int k = 0, n = gkind_count(); k < n; k++) {
         if (strcmp(name, gkind_name((GKind)k)) == 0)
             return "a kind keyword";
         if (gregistry_find((GKind)k, name))

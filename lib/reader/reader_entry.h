@@ -6,8 +6,10 @@
 #include "generic/export.h"
 #include "reader_state.h"
 
-/** Finds a type of a kind; materials and nodes look in each other's table. */
+/** Finds a type of a kind, else of another kind of its namespace (materials and nodes look in each other's table). */
 const GTypeInfo *greader_find_type(GKind kind, const char *name);
+/** "lambert, phong, ..." for a kind, then for the other kinds of its namespace (materials also list node types). */
+void greader_type_names(GKind kind, char *buf, size_t size);
 /** Reads a VALUE: a nested entry or a name; add = 0 leaves a new object to the caller (*owned set to 1). */
 GENERIC_NODISCARD int greader_value(GReader *r, GKind kind, int add, void **object, const GTypeInfo **type, int *owned,
                                     GError *err);

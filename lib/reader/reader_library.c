@@ -33,8 +33,8 @@ struct GLibrary {
     int count, cap;
     int *slots; /* open addressing over named entries: index + 1, 0 = empty */
     int nslots, nnamed;
-    int *toplevel[GKIND_COUNT]; /* per kind, the indices of the top-level entries in order */
-    int ntop[GKIND_COUNT], captop[GKIND_COUNT];
+    int *toplevel[GKIND_MAX]; /* per kind, the indices of the top-level entries in order */
+    int ntop[GKIND_MAX], captop[GKIND_MAX];
     KeptText *texts; /* every source text read, for `like` */
     int ntexts, captexts;
     Constant *consts; /* `define` */
@@ -43,8 +43,8 @@ struct GLibrary {
     int ncslots;
 };
 
-/* Materials and texture nodes share one namespace. */
-static int space(GKind kind) { return kind == GKIND_NODE ? GKIND_MATERIAL : (int)kind; }
+/* The namespace of a kind (materials and texture nodes share one). */
+static int space(GKind kind) { return (int)gkind_namespace(kind); }
 
 static uint32_t hash(int sp, const char *name)
 {
@@ -131,7 +131,7 @@ void glibrary_destroy(GLibrary *lib)
     gmem_free(lib->cslots);
     gmem_free(lib->entries);
     gmem_free(lib->slots);
-    for (int k = 0; k < GKIND_COUNT; k++)
+    for (int k = 0; k < GKIND_MAX; k++)
         gmem_free(lib->toplevel[k]);
     gcolormodel_destroy(lib->owned_model);
     gmem_free(lib);
@@ -180,7 +180,7 @@ int glibrary_put(GLibrary *lib, const GTypeInfo *type, const char *name, void *o
     if (rc == G_OK && name && (lib->nnamed + 1) * 2 > lib->nslots && grow_slots(lib) != G_OK)
         rc = gerror_set(err, G_ERR_NOMEM, "out of memory");
     int kind = type ? (int)type->kind : 0;
-    if (rc == G_OK && toplevel && (unsigned)kind < GKIND_COUNT && lib->ntop[kind] == lib->captop[kind]) {
+    if (rc == G_OK && toplevel && (unsigned)kind < GKIND_MAX && lib->ntop[kind] == lib->captop[kind]) {
         int cap = lib->captop[kind] ? lib->captop[kind] * 2 : 16;
         int *t = gmem_realloc(lib->toplevel[kind], (size_t)cap * sizeof *t);
         if (!t)
@@ -205,7 +205,7 @@ int glibrary_put(GLibrary *lib, const GTypeInfo *type, const char *name, void *o
         insert_slot(lib->slots, lib->nslots, e, lib->count);
         lib->nnamed++;
     }
-    if (toplevel && (unsigned)kind < GKIND_COUNT)
+    if (toplevel && (unsigned)kind < GKIND_MAX)
         lib->toplevel[kind][lib->ntop[kind]++] = lib->count;
     lib->count++;
     return G_OK;
@@ -243,12 +243,12 @@ int glibrary_color(const GLibrary *lib, const char *name, GColorRole role, GColo
 
 int glibrary_count(const GLibrary *lib, GKind kind)
 {
-    return lib && (unsigned)kind < GKIND_COUNT ? lib->ntop[kind] : 0;
+    return lib && (unsigned)kind < GKIND_MAX ? lib->ntop[kind] : 0;
 }
 
 void *glibrary_entry(const GLibrary *lib, GKind kind, int index, const char **name, const GTypeInfo **type)
 {
-    if (!lib || (unsigned)kind >= GKIND_COUNT || index < 0 || index >= lib->ntop[kind])
+    if (!lib || (unsigned)kind >= GKIND_MAX || index < 0 || index >= lib->ntop[kind])
         return NULL;
     const Entry *e = &lib->entries[lib->toplevel[kind][index]];
     if (name)
@@ -330,7 +330,7 @@ const GTemplate *glibrary_template(const GLibrary *lib, GKind kind, const char *
 
 const char *glibrary_entry_base(const GLibrary *lib, GKind kind, int index)
 {
-    if (!lib || (unsigned)kind >= GKIND_COUNT || index < 0 || index >= lib->ntop[kind])
+    if (!lib || (unsigned)kind >= GKIND_MAX || index < 0 || index >= lib->ntop[kind])
         return NULL;
     const Entry *e = &lib->entries[lib->toplevel[kind][index]];
     return e->tmpl ? e->tmpl->base : NULL;

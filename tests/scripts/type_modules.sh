@@ -66,10 +66,10 @@ int main(int argc, char **argv)
     for (int i = 3; i < argc; i++) {
         int kind = 0;
         const char *colon = strchr(argv[i], ':');
-        while (kind < GKIND_COUNT && (strncmp(argv[i], gkind_name((GKind)kind), (size_t)(colon - argv[i])) != 0 ||
+        while (kind < gkind_count() && (strncmp(argv[i], gkind_name((GKind)kind), (size_t)(colon - argv[i])) != 0 ||
                                       gkind_name((GKind)kind)[colon - argv[i]] != '\0'))
             kind++;
-        const GTypeInfo *t = kind < GKIND_COUNT ? gregistry_find((GKind)kind, colon + 1) : NULL;
+        const GTypeInfo *t = kind < gkind_count() ? gregistry_find((GKind)kind, colon + 1) : NULL;
         for (int j = 0; t && b[j]; j++)
             if (b[j]->kind == t->kind && (t->vtable ? b[j]->vtable == t->vtable : b[j]->parse == t->parse))
                 t = NULL; /* the built-in's record, not the module's */
