@@ -58,7 +58,7 @@ LDFLAGS += $(SANFLAGS)
 # (generic/services/).
 PUBLIC_HDR := $(wildcard include/generic/*.h include/generic/kit/*.h include/generic/services/*.h)
 LIB_DIRS := $(sort $(dir $(wildcard lib/*/)))
-LIB_SRC := $(foreach d,$(LIB_DIRS) colormodels/ materials/ materials/*/ textures/,$(sort $(wildcard $(d)*.c)))
+LIB_SRC := $(foreach d,$(LIB_DIRS) colormodels/ colors/ materials/ materials/*/ textures/,$(sort $(wildcard $(d)*.c)))
 LIB_CXX := $(wildcard lib/*/*.cpp)
 # The list of built-in types (include/generic/builtins.h), generated from the GENERIC_TYPE records of LIB_SRC.
 GEN_BUILTINS = $(1)/gen/builtin_types.c

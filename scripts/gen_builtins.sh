@@ -1,11 +1,35 @@
 #!/bin/sh
 # Writes the C file of the built-in type list (include/generic/builtins.h) from the GENERIC_TYPE and
 # GENERIC_TYPE_NAMED records (include/generic/plugin.h) of the given source files, in the order of the files
-# and of the records within each file. Usage: gen_builtins.sh OUT.c SOURCE.c...
+# and of the records within each file, except that the sources of a folder holding a file named listing_order
+# come in the order it names them (base names, one a line; `#` starts a comment), the others of that folder after
+# them. Usage: gen_builtins.sh OUT.c SOURCE.c...
 # The records are the only place a built-in is listed: adding a type is adding its file.
 set -e
 out=$1
 shift
+ordered=""
+folders=""
+for f in "$@"; do
+    d=$(dirname "$f")
+    if [ ! -f "$d/listing_order" ]; then
+        ordered="$ordered $f"
+        continue
+    fi
+    case " $folders " in *" $d "*) continue ;; esac
+    folders="$folders $d"
+    for name in $(sed 's/#.*//' "$d/listing_order"); do
+        for g in "$@"; do
+            if [ "$g" = "$d/$name.c" ]; then ordered="$ordered $g"; fi
+        done
+    done
+    for g in "$@"; do
+        [ "$(dirname "$g")" = "$d" ] || continue
+        case " $ordered " in *" $g "*) ;; *) ordered="$ordered $g" ;; esac
+    done
+done
+# shellcheck disable=SC2086
+set -- $ordered
 ids=$(sed -n 's/^GENERIC_TYPE\(_NAMED\)\{0,1\}([[:space:]]*\([A-Za-z_][A-Za-z0-9_]*\).*/\2/p' "$@")
 dups=$(printf '%s\n' $ids | sort | uniq -d)
 if [ -n "$dups" ]; then

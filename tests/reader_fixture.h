@@ -1,5 +1,5 @@
 /* reader_fixture.h - shared by the text-reader tests (include after <cmocka.h> and generic/reader.h): loading
- * a text that must fail, with the exact message it must give. */
+ * a text that must fail, with the exact message it must give; the kinds of a renderer's scene entries. */
 #ifndef GENERIC_TEST_READER_FIXTURE_H
 #define GENERIC_TEST_READER_FIXTURE_H
 
@@ -16,6 +16,21 @@ static inline void load_fails(const char *text, const char *message)
     if (strcmp(err.message, message) != 0)
         print_error("got:  %s\nwant: %s\n", err.message, message);
     assert_string_equal(err.message, message);
+}
+
+/* The kinds of a renderer's scene entries, registered as gtrace registers them (object, light, camera, in that
+ * order, without types): the tests read such entries with test types, and the reader's messages list them. */
+typedef struct SceneKinds {
+    GKind object, light, camera;
+} SceneKinds;
+
+static inline SceneKinds register_scene_kinds(void)
+{
+    static const GKindInfo kinds[3] = {{"object", NULL, 0}, {"light", NULL, 0}, {"camera", NULL, 0}};
+    GKind k[3];
+    for (int i = 0; i < 3; i++)
+        assert_int_equal(gregistry_add_kind(&kinds[i], &k[i], NULL), G_OK);
+    return (SceneKinds){k[0], k[1], k[2]};
 }
 
 #endif

@@ -1,4 +1,5 @@
-/* test_core.c - error records, the allocator hook, the scratch arena, the type registry and vec.h's inline fmax/fmin. */
+/* test_core.c - error records, the allocator hook, the scratch arena, the type registry (releasing objects through
+ * their type record) and vec.h's inline fmax/fmin. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -6,6 +7,7 @@
 #include <cmocka.h>
 
 #include <generic/color.h>
+#include <generic/materials.h>
 #include <generic/registry.h>
 #include <generic/vec.h>
 
@@ -122,7 +124,7 @@ static void test_registry(void **state)
     (void)state;
     assert_non_null(gregistry_find(GKIND_COLORMODEL, "rgb"));
     assert_null(gregistry_find(GKIND_COLORMODEL, "no-such-model"));
-    assert_null(gregistry_find(GKIND_COUNT, "rgb"));
+    assert_null(gregistry_find((GKind)gkind_count(), "rgb"));
     static const int dummy = 1;
     GTypeInfo t = {GKIND_GENERATOR, "test-core-dummy", &dummy, NULL, "a test entry", NULL};
     GError e;
@@ -136,8 +138,43 @@ static void test_registry(void **state)
     gregistry_names(GKIND_COLORMODEL, names, sizeof names);
     assert_non_null(strstr(names, "rgb"));
     assert_string_equal(gkind_name(GKIND_MATERIAL), "material");
-    GTypeInfo bad = {GKIND_COUNT, "x", NULL, NULL, NULL, NULL};
+    GTypeInfo bad = {(GKind)gkind_count(), "x", NULL, NULL, NULL, NULL};
     assert_int_equal(gregistry_add(&bad, &e), G_ERR_INVALID);
+}
+
+static int released;
+static void count_release(void *object)
+{
+    released++;
+    gmem_free(object);
+}
+
+/* An object goes back through its type record: the record's destroy, else its kind's default (a material's
+ * reference is dropped). */
+static void test_release_through_type_record(void **state)
+{
+    (void)state;
+    GTypeInfo own = {GKIND_GENERATOR, "test-core-released", NULL, NULL, "counts releases", count_release};
+    released = 0;
+    gtypeinfo_release(&own, gmem_alloc(16));
+    gtypeinfo_release(&own, NULL);
+    assert_int_equal(released, 1);
+    GColorModel *m = NULL;
+    assert_int_equal(gcolormodel_create("rgb", NULL, &m, NULL), G_OK);
+    GColor refl = {0};
+    assert_int_equal(gcolor_alloc(&refl, m), G_OK);
+    GMaterial *mat = NULL;
+    assert_int_equal(glambert_create(m, &refl, &mat, NULL), G_OK);
+    gmaterial_ref(mat);
+    assert_int_equal(mat->refcount, 2);
+    const GTypeInfo *lambert = gregistry_find(GKIND_MATERIAL, "lambert");
+    assert_non_null(lambert);
+    assert_null(lambert->destroy); /* the kind's default */
+    gtypeinfo_release(lambert, mat);
+    assert_int_equal(mat->refcount, 1);
+    gmaterial_unref(mat);
+    gcolor_free(&refl);
+    gcolormodel_destroy(m);
 }
 
 static void test_unknown_model_lists_known(void **state)
@@ -209,6 +246,7 @@ int main(void)
         cmocka_unit_test(test_scratch_arenas_apart),
         cmocka_unit_test(test_inline_fmax_fmin),
         cmocka_unit_test(test_registry),
+        cmocka_unit_test(test_release_through_type_record),
         cmocka_unit_test(test_unknown_model_lists_known),
         cmocka_unit_test(test_model_version_refused),
         cmocka_unit_test(test_out_of_memory),

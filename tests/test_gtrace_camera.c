@@ -301,13 +301,13 @@ static void test_camera_entries(void **state)
     if (greader_load_string("camera thinlens { aperture 0.5 focus_distance 3 fov 30 }\n", "cam", NULL, &lib, &err) !=
         G_OK)
         fail_msg("%s", err.message);
-    const Camera *c = glibrary_entry(lib, GKIND_CAMERA, 0, NULL, NULL);
+    const Camera *c = glibrary_entry(lib, gtrace_kind_camera, 0, NULL, NULL);
     assert_int_equal(c->projection, CAMERA_THINLENS);
     assert_near(c->aperture, 0.5, 0);
     assert_near(c->focus_distance, 3.0, 0);
     glibrary_destroy(lib);
     assert_int_equal(greader_load_string("camera orthographic { size 7 }\n", "cam", NULL, &lib, &err), G_OK);
-    c = glibrary_entry(lib, GKIND_CAMERA, 0, NULL, NULL);
+    c = glibrary_entry(lib, gtrace_kind_camera, 0, NULL, NULL);
     assert_int_equal(c->projection, CAMERA_ORTHOGRAPHIC);
     assert_near(c->size, 7.0, 0);
     glibrary_destroy(lib);
@@ -318,11 +318,11 @@ static void test_camera_entries(void **state)
     assert_int_not_equal(greader_load_string("light point { position <0,0,0> intensity rgb 1 1 1 visible on }\n",
                                              "l", NULL, &lib, &err), G_OK);
     assert_int_equal(greader_load_string("light sphere { radiance rgb 1 1 1 visible on }\n", "l", NULL, &lib, &err), G_OK);
-    const Light *l = glibrary_entry(lib, GKIND_LIGHT, 0, NULL, NULL);
+    const Light *l = glibrary_entry(lib, gtrace_kind_light, 0, NULL, NULL);
     assert_int_equal(l->visible, 1);
     glibrary_destroy(lib);
     assert_int_equal(greader_load_string("light rectangle { radiance rgb 1 1 1 }\n", "l", NULL, &lib, &err), G_OK);
-    l = glibrary_entry(lib, GKIND_LIGHT, 0, NULL, NULL);
+    l = glibrary_entry(lib, gtrace_kind_light, 0, NULL, NULL);
     assert_int_equal(l->visible, 0);
     glibrary_destroy(lib);
 }

@@ -111,13 +111,15 @@ static int parse_nest(GReader *r, const void *vt, void **object, GError *err)
     return G_OK;
 }
 
-static const GTypeInfo sphere_type = {GKIND_OBJECT, "sphere", NULL, parse_sphere, "test sphere", sphere_destroy};
+static GKind object_kind; /* registered by register_test_types */
+static GTypeInfo sphere_type = {GKIND_MAX, "sphere", NULL, parse_sphere, "test sphere", sphere_destroy};
 static const GTypeInfo nest_type = {GKIND_MATERIAL, "nest", NULL, parse_nest, "test nesting", NULL};
 
 static int register_test_types(void **state)
 {
     (void)state;
-    if (!gregistry_find(GKIND_OBJECT, "sphere")) {
+    object_kind = sphere_type.kind = register_scene_kinds().object;
+    if (!gregistry_find(object_kind, "sphere")) {
         assert_int_equal(gregistry_add(&sphere_type, NULL), G_OK);
         assert_int_equal(gregistry_add(&nest_type, NULL), G_OK);
     }
@@ -346,10 +348,10 @@ static void test_objects_and_nesting(void **state)
                          "object sphere { center <1, 2, 3> radius 2 material red }\n"
                          "object sphere { center 0 0 -1 material lambert { reflectance rgb 0.1 0.1 0.8 } }\n"
                          "object ball sphere { material nest { child nest { child red } } }\n");
-    assert_int_equal(glibrary_count(lib, GKIND_OBJECT), 3);
-    Sphere *a = glibrary_entry(lib, GKIND_OBJECT, 0, NULL, NULL);
-    Sphere *b = glibrary_entry(lib, GKIND_OBJECT, 1, NULL, NULL);
-    Sphere *ball = glibrary_find(lib, GKIND_OBJECT, "ball");
+    assert_int_equal(glibrary_count(lib, object_kind), 3);
+    Sphere *a = glibrary_entry(lib, object_kind, 0, NULL, NULL);
+    Sphere *b = glibrary_entry(lib, object_kind, 1, NULL, NULL);
+    Sphere *ball = glibrary_find(lib, object_kind, "ball");
     assert_near(a->center.y, 2.0, 0);
     assert_near(a->radius, 2.0, 0);
     assert_ptr_equal(a->material, glibrary_material(lib, "red"));

@@ -369,10 +369,23 @@ static int run(const Args *a, GmatContext *ctx)
     return 0;
 }
 
+/* The kinds of a gtrace scene's entries, registered without types: gmat reads a scene's materials, and `gmat list`
+ * reads past its objects, lights and camera. */
+static GKind scene_kinds[3];
+
+static int register_scene_kinds(GError *err)
+{
+    static const GKindInfo kinds[3] = {{"object", NULL, 0}, {"light", NULL, 0}, {"camera", NULL, 0}};
+    int rc = G_OK;
+    for (int i = 0; i < 3 && rc == G_OK; i++)
+        rc = gregistry_add_kind(&kinds[i], &scene_kinds[i], err);
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
     GError reg_err;
-    if (generic_register_builtins(&reg_err) != G_OK) {
+    if (generic_register_builtins(&reg_err) != G_OK || register_scene_kinds(&reg_err) != G_OK) {
         fprintf(stderr, "%s\n", reg_err.message);
         return 1;
     }
@@ -411,7 +424,7 @@ int main(int argc, char **argv)
     opt.colormodel = a.colormodel;
     opt.colormodel_options = &mo;
     if (strcmp(a.cmd, "list") == 0) /* a scene's entries that only gtrace knows */
-        opt.skip_kinds = 1u << GKIND_OBJECT | 1u << GKIND_LIGHT | 1u << GKIND_CAMERA;
+        opt.skip_kinds = 1u << scene_kinds[0] | 1u << scene_kinds[1] | 1u << scene_kinds[2];
     GmatContext ctx = {0};
     GError err;
     if (greader_load_file(a.file, &opt, &ctx.lib, &err) != G_OK) {

@@ -434,7 +434,7 @@ int main(int argc, char **argv)
     if (argc > 1 && strcmp(argv[1], "merge") == 0)
         return merge_main(argc - 1, argv + 1);
     GError reg_err;
-    if (generic_register_builtins(&reg_err) != G_OK) {
+    if (generic_register_builtins(&reg_err) != G_OK || gtrace_register_kinds(&reg_err) != G_OK) {
         fprintf(stderr, "%s\n", reg_err.message);
         return 1;
     }

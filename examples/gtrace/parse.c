@@ -118,7 +118,7 @@ static int read_object(GReader *r, Object **out, GError *err)
 {
     void *obj = NULL;
     const GTypeInfo *t = NULL;
-    int rc = greader_object(r, GKIND_OBJECT, &obj, &t, err);
+    int rc = greader_object(r, gtrace_kind_object, &obj, &t, err);
     if (rc < 0)
         return rc;
     if (!t || t->parse != parse_object)
@@ -524,26 +524,37 @@ static int register_once(const GTypeInfo *t, GError *err)
     return rc < 0 ? rc : G_OK;
 }
 
+GKind gtrace_kind_object = GKIND_MAX, gtrace_kind_light = GKIND_MAX, gtrace_kind_camera = GKIND_MAX;
+
+int gtrace_register_kinds(GError *err)
+{
+    static const GKindInfo objects = {"object", NULL, 0}, lights = {"light", NULL, 0}, cameras = {"camera", NULL, 0};
+    int rc = gregistry_add_kind(&objects, &gtrace_kind_object, err);
+    if (rc == G_OK)
+        rc = gregistry_add_kind(&lights, &gtrace_kind_light, err);
+    return rc == G_OK ? gregistry_add_kind(&cameras, &gtrace_kind_camera, err) : rc;
+}
+
 int gtrace_register_types(GError *err)
 {
-    int rc = G_OK;
+    int rc = gtrace_register_kinds(err);
     for (int i = 0; i < NSHAPE_TYPES && rc == G_OK; i++) {
-        GTypeInfo t = {.kind = GKIND_OBJECT, .name = shape_names[i], .vtable = &shape_kinds[i],
+        GTypeInfo t = {.kind = gtrace_kind_object, .name = shape_names[i], .vtable = &shape_kinds[i],
                        .parse = parse_object, .summary = shape_summaries[i], .destroy = destroy_object};
         rc = register_once(&t, err);
     }
     for (int i = 0; i < 7 && rc == G_OK; i++) {
-        GTypeInfo t = {.kind = GKIND_LIGHT, .name = light_names[i], .vtable = &light_types[i],
+        GTypeInfo t = {.kind = gtrace_kind_light, .name = light_names[i], .vtable = &light_types[i],
                        .parse = parse_light, .summary = light_summaries[i], .destroy = destroy_light};
         rc = register_once(&t, err);
     }
-    GTypeInfo probe = {.kind = GKIND_LIGHT, .name = "probe", .vtable = NULL, .parse = probe_light_parse,
+    GTypeInfo probe = {.kind = gtrace_kind_light, .name = "probe", .vtable = NULL, .parse = probe_light_parse,
                        .summary = "HDR light probe: directional lights of a technique, or Monte Carlo reference",
                        .destroy = probe_light_destroy};
     if (rc == G_OK)
         rc = register_once(&probe, err);
     for (int i = 0; i < 3 && rc == G_OK; i++) {
-        GTypeInfo cam = {.kind = GKIND_CAMERA, .name = camera_names[i], .vtable = &camera_kinds[i],
+        GTypeInfo cam = {.kind = gtrace_kind_camera, .name = camera_names[i], .vtable = &camera_kinds[i],
                          .parse = parse_camera, .summary = camera_summaries[i]};
         rc = register_once(&cam, err);
     }
@@ -562,10 +573,10 @@ int scene_from_library(GLibrary *lib, const char *name, Scene **out, GError *err
         return rc;
     }
     s->lib = lib;
-    int n = glibrary_count(lib, GKIND_OBJECT);
+    int n = glibrary_count(lib, gtrace_kind_object);
     for (int i = 0; i < n && rc == G_OK; i++) {
         const GTypeInfo *t;
-        void *o = glibrary_entry(lib, GKIND_OBJECT, i, NULL, &t);
+        void *o = glibrary_entry(lib, gtrace_kind_object, i, NULL, &t);
         if (t && t->parse == parse_object)
             rc = scene_add_object(s, o, err);
         else
@@ -579,10 +590,10 @@ int scene_from_library(GLibrary *lib, const char *name, Scene **out, GError *err
     if (rc == G_OK && placements > GTRACE_MAX_INSTANCES)
         rc = gerror_set(err, G_ERR_INVALID, "%s: the scene's groups and instances expand to %.6g placements, more "
                         "than the limit of %d", name, placements, GTRACE_MAX_INSTANCES);
-    n = glibrary_count(lib, GKIND_LIGHT);
+    n = glibrary_count(lib, gtrace_kind_light);
     for (int i = 0; i < n && rc == G_OK; i++) {
         const GTypeInfo *t;
-        Light *l = glibrary_entry(lib, GKIND_LIGHT, i, NULL, &t);
+        Light *l = glibrary_entry(lib, gtrace_kind_light, i, NULL, &t);
         if (t && t->parse == probe_light_parse) {
             rc = probe_attach(s, (ProbeEnv *)(void *)l, err);
             continue;
@@ -603,12 +614,12 @@ int scene_from_library(GLibrary *lib, const char *name, Scene **out, GError *err
         if (rc < 0 && err && !err->message[0])
             gerror_set(err, rc, "light %d: %s", i, gstatus_string(rc));
     }
-    n = glibrary_count(lib, GKIND_CAMERA);
+    n = glibrary_count(lib, gtrace_kind_camera);
     if (rc == G_OK && n > 1)
         rc = gerror_set(err, G_ERR_INVALID, "%s: the scene defines %d cameras; give one", name, n);
     if (rc == G_OK && n == 1) {
         const GTypeInfo *t;
-        const Camera *c = glibrary_entry(lib, GKIND_CAMERA, 0, NULL, &t);
+        const Camera *c = glibrary_entry(lib, gtrace_kind_camera, 0, NULL, &t);
         if (t && t->parse == parse_camera) {
             s->camera = *c;
             s->have_camera = 1;

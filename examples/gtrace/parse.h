@@ -9,7 +9,11 @@
 #include <generic/error.h>
 #include <generic/reader.h>
 
-/** Registers the object, light and camera types with the registry (idempotent). */
+/** The tracer's kinds of entries (`object`, `light`, `camera`), numbered by gtrace_register_kinds. */
+extern GKind gtrace_kind_object, gtrace_kind_light, gtrace_kind_camera;
+/** Registers the kinds object, light and camera with the registry (idempotent). */
+int gtrace_register_kinds(GError *err);
+/** Registers the kinds and the object, light and camera types with the registry (idempotent). */
 int gtrace_register_types(GError *err);
 /** Builds a scene from a loaded library (name: for messages), which the scene then owns (also on failure:
  * it is destroyed). */

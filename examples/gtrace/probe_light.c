@@ -28,6 +28,7 @@
  * The probe's pixels become colours of the scene's model through the library (gprobe_pixel_color and
  * friends, which read them as lights), so the tracer stays free of any colour model. The entry owns the
  * probe and the lights it makes; the scene only points at them. */
+#include "parse.h"
 #include "probe_env.h"
 #include "progress.h"
 
@@ -183,10 +184,10 @@ int probe_override_apply(GLibrary *lib, const ProbeOverride *ov, GError *err)
     int technique = -1;
     if (ov->technique && technique_from_name(ov->technique, &technique, err) < 0)
         return err ? err->code : G_ERR_NOTFOUND;
-    int found = 0, n = glibrary_count(lib, GKIND_LIGHT);
+    int found = 0, n = glibrary_count(lib, gtrace_kind_light);
     for (int i = 0; i < n; i++) {
         const GTypeInfo *t;
-        ProbeEnv *e = glibrary_entry(lib, GKIND_LIGHT, i, NULL, &t);
+        ProbeEnv *e = glibrary_entry(lib, gtrace_kind_light, i, NULL, &t);
         if (!t || t->parse != probe_light_parse)
             continue;
         found++;
@@ -386,10 +387,10 @@ void probe_describe(const Scene *s, FILE *f)
 {
     if (!s->lib)
         return;
-    int n = glibrary_count(s->lib, GKIND_LIGHT);
+    int n = glibrary_count(s->lib, gtrace_kind_light);
     for (int i = 0; i < n; i++) {
         const GTypeInfo *t;
-        const ProbeEnv *e = glibrary_entry(s->lib, GKIND_LIGHT, i, NULL, &t);
+        const ProbeEnv *e = glibrary_entry(s->lib, gtrace_kind_light, i, NULL, &t);
         if (!t || t->parse != probe_light_parse || !e->probe)
             continue;
         fprintf(f, "gtrace: probe %s (%dx%d): %s", e->file, gprobe_width(e->probe), gprobe_height(e->probe),

@@ -9,14 +9,15 @@
  *     GENERIC_TYPE(oren_nayar, GKIND_MATERIAL, &my_class, my_parse, NULL);
  *
  * In the library's own sources that line is all: the build collects every GENERIC_TYPE record of colormodels/,
- * materials/, textures/ and lib/ into the generated list of builtins.h. A file becomes a run-time module by one
+ * colors/, materials/ and textures/ into the generated list of builtins.h. A file becomes a run-time module by one
  * more line naming its records,
  *
  *     GENERIC_MODULE(&gtype_oren_nayar);
  *
  * which defines the two symbols a module exports (generic_module_abi and generic_module_init; see
  * examples/plugins/ for complete modules). A module may also write generic_module_init by hand and call
- * api->add_type for each record.
+ * api->add_type for each record; a type of a kind an application registers (registry.h: gtrace's object, light and
+ * camera) has no constant kind to write in a record, so its module finds the kind with gkind_find in its init.
  *
  * The loader (gplugin_load, or a `plugin "file.so"` statement in a text file) first reads the file itself, without
  * running it: it must be an ELF shared object for this machine whose dynamic symbol table defines both module

@@ -59,6 +59,7 @@
 #include "export.h"
 #include <stddef.h>
 #include "color.h"
+#include "colorspec.h"
 #include "error.h"
 #include "material.h"
 #include "registry.h"
@@ -109,7 +110,8 @@ typedef struct GReaderOptions {
     const char *confine_dir;
     /** Entry kinds to read past without interpreting them: bit (1u << kind) set skips every `KIND ... { ... }`
      * entry of that kind (its braces must balance), so that a program without those types (gmat reading a gtrace
-     * scene: GKIND_OBJECT, GKIND_LIGHT, GKIND_CAMERA) can read the rest of the file. 0: skip nothing. */
+     * scene registers gtrace's kinds object, light and camera, without types, and skips them) can read the rest of
+     * the file. 0: skip nothing. */
     unsigned skip_kinds;
 } GReaderOptions;
 
@@ -301,42 +303,9 @@ GENERIC_API GENERIC_NODISCARD int greader_error_at(GReader *r, GError *err, int 
 GENERIC_API GENERIC_NODISCARD int greader_locate(GReader *r, GError *err);
 
 /* ======================================================================================================
- * Colour literals (lib/reader/colorparse.c)
+ * Colour literals: GColorSpec (colorspec.h)
  * ====================================================================================================== */
 
-/** What a colour literal describes, kept apart from any colour model: an entry `color NAME ...` stores
- * one, and each use converts it into the model in the role of that use (a colour named once can serve as a
- * reflectance and as a light). Objects of kind GKIND_COLOR are GColorSpecs: a colour type registered by a module
- * makes its spec with gcolorspec_create, reading nested colours with greader_color_spec. */
-typedef enum GColorSpecForm {
-    GCOLORSPEC_RGB = 0,     /**< linear sRGB triple (reflectance, or a light of D65 chromaticity) */
-    GCOLORSPEC_NM,          /**< samples on the 1 nm exchange grid (role free) */
-    GCOLORSPEC_LINE,        /**< a monochromatic line: line_nm, line_power (energy, W-like units) */
-    GCOLORSPEC_RERADIATION  /**< a re-radiation matrix (a reflectance only) */
-} GColorSpecForm;
-
-/** A colour literal. Create with gcolorspec_create, release with gcolorspec_destroy. */
-typedef struct GColorSpec {
-    int form;          /**< a GColorSpecForm */
-    double scale;      /**< multiplies the value (1 for a plain literal) */
-    double rgb[3];     /**< GCOLORSPEC_RGB */
-    GSpectrumNM nm;    /**< GCOLORSPEC_NM */
-    double line_nm;    /**< GCOLORSPEC_LINE: wavelength in nm */
-    double line_power; /**< GCOLORSPEC_LINE: radiant power of the line */
-    GReradiation rerad; /**< GCOLORSPEC_RERADIATION; rerad.data points at owned_data */
-    float *owned_data;  /**< matrix storage owned by the spec (gmem_alloc) */
-} GColorSpec;
-
-/** A new spec (form RGB, black, scale 1); NULL when out of memory. */
-GENERIC_API GColorSpec *gcolorspec_create(void);
-/** Frees a spec and its matrix; NULL is a no-op. */
-GENERIC_API void gcolorspec_destroy(GColorSpec *s);
-/** Deep copy of src into a new spec. */
-GENERIC_API GENERIC_NODISCARD int gcolorspec_copy(const GColorSpec *src, GColorSpec **out, GError *err);
-/** Converts a spec in a role into out (which has storage of the target model). A line is spread over a
- * triangle one sample step wide on each side in spectral models (1 nm on the exchange grid), so its energy and
- * centre survive any sampling; a re-radiation matrix used as a light is G_ERR_INVALID. */
-GENERIC_API GENERIC_NODISCARD int gcolorspec_to_color(const GColorSpec *s, GColorRole role, GColor *out, GError *err);
 /** Reads a colour literal or name at the reader's position into a new spec (what greader_color parses). */
 GENERIC_API GENERIC_NODISCARD int greader_color_spec(GReader *r, GColorSpec **out, GError *err);
 

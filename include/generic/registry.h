@@ -1,10 +1,12 @@
-/* registry.h - type keyword -> vtable + parse routine, one table per kind of object.
+/* registry.h - the kinds of objects a text file holds, and per kind its types: keyword -> vtable + parse routine.
  *
- * The registry starts empty. Every type, built-in or from a module, is described by one GTypeInfo record
- * that sits beside the type's code (GENERIC_TYPE in plugin.h). The built-in records are collected at build
- * time into a generated list that a program registers with one call, generic_register_builtins()
- * (builtins.h); run-time modules register theirs while they load (plugin.h). Names are unique within a
- * kind. See docs/ARCHITECTURE.md. */
+ * Kinds. The library knows its own five (colormodel, color, material, node, generator); an application adds its
+ * own at run time (gregistry_add_kind: a renderer's objects, lights and cameras), each with the statement keyword
+ * of its entries and the default release of its objects. Types. The registry starts empty of types. Every type,
+ * built-in or from a module, is described by one GTypeInfo record that sits beside the type's code (GENERIC_TYPE
+ * in plugin.h). The built-in records are collected at build time into a generated list that a program registers
+ * with one call, generic_register_builtins() (builtins.h); run-time modules register theirs while they load
+ * (plugin.h). Names are unique within a kind. See docs/ARCHITECTURE.md. */
 #ifndef GENERIC_REGISTRY_H
 #define GENERIC_REGISTRY_H
 
@@ -16,18 +18,32 @@
 extern "C" {
 #endif
 
-/** The kinds of objects a text file can hold. */
+/** A kind of object a text file holds. The library's own kinds are these; the kinds an application registers
+ * (gregistry_add_kind) take the numbers after them, in the order they are registered, below GKIND_MAX. */
 typedef enum GKind {
-    GKIND_COLORMODEL = 0,
-    GKIND_COLOR,
-    GKIND_MATERIAL,
-    GKIND_NODE,
-    GKIND_GENERATOR,
-    GKIND_OBJECT,
-    GKIND_LIGHT,
-    GKIND_CAMERA,
-    GKIND_COUNT
+    GKIND_COLORMODEL = 0, /**< colour models (GColorModel, color.h) */
+    GKIND_COLOR,          /**< colour literals (GColorSpec, colorspec.h) */
+    GKIND_MATERIAL,       /**< materials (GMaterial, material.h) */
+    GKIND_NODE,           /**< texture tree nodes (GMaterial); they share the materials' names */
+    GKIND_GENERATOR       /**< texture generators (GGenerator, texture.h) */
 } GKind;
+
+/** The most kinds a process has, the library's and the applications' together. */
+#define GKIND_MAX 32
+
+/** A kind of object an application adds (gregistry_add_kind). */
+typedef struct GKindInfo {
+    /** The keyword of its entries in a file (`object ball sphere { ... }`): an identifier, not the keyword of
+     * another kind nor a statement of the format (include, plugin, define). The string must outlive the
+     * registry. */
+    const char *keyword;
+    /** Releases an object of a type of this kind whose record has no destroy of its own (GTypeInfo.destroy);
+     * NULL: gmem_free. */
+    void (*destroy)(void *object);
+    /** Non-zero: the kind's entries share the materials' names and type keywords, as texture nodes do (a name or
+     * a type of either stands wherever the other is read), so its objects must be GMaterials. */
+    int shares_material_names;
+} GKindInfo;
 
 typedef struct GReader GReader;
 
@@ -52,13 +68,31 @@ typedef struct GTypeInfo {
     const char *summary; /**< one line for listings and error messages (NULL: the vtable's description) */
     /** Releases an object the parse routine made (when the library that owns it is destroyed). NULL takes the
      * kind's default: material and node: gmaterial_unref; colormodel: gcolormodel_destroy; color:
-     * gcolorspec_destroy (reader.h); generator: its class's release (texture.h); other kinds: gmem_free. */
+     * gcolorspec_destroy (colorspec.h); generator: ggenerator_unref (texture.h); a kind an application registers:
+     * its GKindInfo.destroy. */
     void (*destroy)(void *object);
 } GTypeInfo;
 
+/** Registers a kind (the struct is copied) and gives its number in *out (optional). Registering a keyword again
+ * with the same destroy and namespace gives the kind registered first, so a program may register its kinds at
+ * every start of its work. G_ERR_EXISTS for a keyword taken otherwise (a library kind's among them),
+ * G_ERR_INVALID for a keyword that is not an identifier or is a statement of the format, and beyond GKIND_MAX
+ * kinds. Thread safe. */
+GENERIC_API GENERIC_NODISCARD int gregistry_add_kind(const GKindInfo *info, GKind *out, GError *err);
+/** The number of kinds, the library's and the applications': every kind is below it. Thread safe. */
+GENERIC_API GENERIC_NODISCARD int gkind_count(void);
+/** What is known of a kind (the library's kinds have the defaults GTypeInfo.destroy lists); NULL when kind is
+ * not one. Valid for the life of the process. */
+GENERIC_API const GKindInfo *gkind_info(GKind kind);
+/** 1 with *out the kind whose entries are written with that keyword, 0 when none is. */
+GENERIC_API GENERIC_NODISCARD int gkind_find(const char *keyword, GKind *out);
+/** The kind whose names an entry of kind shares: GKIND_MATERIAL for materials, nodes and every kind registered
+ * with shares_material_names; kind itself otherwise. */
+GENERIC_API GKind gkind_namespace(GKind kind);
+
 /** Registers a type (the struct is copied, with name and summary filled from the vtable when NULL; the
  * strings and vtable must outlive the registry); G_ERR_EXISTS for a name already taken in that kind,
- * G_ERR_INVALID for a record without a kind or a name. Thread safe. */
+ * G_ERR_INVALID for a record without a registered kind or a name. Thread safe. */
 GENERIC_API GENERIC_NODISCARD int gregistry_add(const GTypeInfo *info, GError *err);
 /** Registers every record of a NULL-terminated list, in order. A record registered already (the same kind,
  * name, vtable and parse routine) is skipped, so registering a list twice is a no-op; the first other failure
@@ -73,7 +107,10 @@ GENERIC_API const GTypeInfo *gregistry_find(GKind kind, const char *name);
 GENERIC_API GENERIC_NODISCARD int gregistry_list(GKind kind, const GTypeInfo **out, int max);
 /** Writes the registered names of a kind, comma separated, into buf (for "expected one of ..." messages). */
 GENERIC_API void gregistry_names(GKind kind, char *buf, size_t size);
-/** Keyword of a kind ("colormodel", "material", ...). */
+/** Releases an object a type made: with type->destroy, else the default of its kind (see GTypeInfo.destroy);
+ * NULL object is a no-op. */
+GENERIC_API void gtypeinfo_release(const GTypeInfo *type, void *object);
+/** Keyword of a kind ("colormodel", "material", ...; "?" when kind is not one). */
 GENERIC_API const char *gkind_name(GKind kind);
 
 #ifdef __cplusplus

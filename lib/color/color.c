@@ -1,6 +1,5 @@
 /* color.c - colour model creation, value storage, and dispatch of the generic colour operations. */
 #include "generic/color.h"
-#include "generic/registry.h"
 #include "generic/kit/spectral_kernels.h"
 #include "generic/kit/spectral.h"
 
@@ -41,18 +40,6 @@ int gcolormodel_create_class(const GColorModelClass *cls, const GColorModelOptio
     }
     *out = m;
     return G_OK;
-}
-
-int gcolormodel_create(const char *name, const GColorModelOptions *opt, GColorModel **out, GError *err)
-{
-    *out = NULL;
-    const GTypeInfo *t = gregistry_find(GKIND_COLORMODEL, name ? name : "");
-    if (!t) {
-        char names[256];
-        gregistry_names(GKIND_COLORMODEL, names, sizeof names);
-        return gerror_set(err, G_ERR_NOTFOUND, "unknown colour model '%s' (known: %s)", name ? name : "", names);
-    }
-    return gcolormodel_create_class(t->vtable, opt, out, err);
 }
 
 void gcolormodel_destroy(GColorModel *m)

@@ -1,5 +1,6 @@
-/* registry.c - per-kind tables of registered types. The registry starts empty: it knows no concrete type
- * (programs register the built-ins with generic_register_builtins, modules add theirs while they load). */
+/* registry.c - per-kind tables of registered types (the kinds are lib/core/kinds.c's). The registry starts empty: it
+ * knows no concrete type (programs register the built-ins with generic_register_builtins, modules add theirs while
+ * they load). */
 #include "generic/registry.h"
 #include "generic/memory.h"
 
@@ -13,21 +14,26 @@ typedef struct Table {
     int count, cap;
 } Table;
 
-static Table tables[GKIND_COUNT];
+static Table tables[GKIND_MAX];
 static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
 
-static const char *const kind_names[GKIND_COUNT] = {
-    "colormodel", "color", "material", "node", "generator", "object", "light", "camera",
-};
-
-const char *gkind_name(GKind kind)
+void gtypeinfo_release(const GTypeInfo *type, void *object)
 {
-    return (unsigned)kind < GKIND_COUNT ? kind_names[kind] : "?";
+    if (!object)
+        return;
+    void (*destroy)(void *) = type ? type->destroy : NULL;
+    const GKindInfo *kind = type && !destroy ? gkind_info(type->kind) : NULL;
+    if (kind)
+        destroy = kind->destroy;
+    if (destroy)
+        destroy(object);
+    else
+        gmem_free(object);
 }
 
 int gtypeinfo_complete(GTypeInfo *info, GError *err)
 {
-    if (!info || (unsigned)info->kind >= GKIND_COUNT)
+    if (!info || !gkind_info(info->kind))
         return gerror_set(err, G_ERR_INVALID, "invalid type registration: unknown kind");
     if ((!info->name || !info->summary) && info->vtable) {
         GClassHeader h; /* the vtable's leading members (copied: the vtable is of another struct type) */
@@ -110,7 +116,7 @@ int gregistry_add_list(const GTypeInfo *const *list, GError *err)
 
 const GTypeInfo *gregistry_find(GKind kind, const char *name)
 {
-    if ((unsigned)kind >= GKIND_COUNT || !name)
+    if (!gkind_info(kind) || !name)
         return NULL;
     pthread_mutex_lock(&lock);
     const GTypeInfo *found = find_locked(kind, name);
@@ -120,7 +126,7 @@ const GTypeInfo *gregistry_find(GKind kind, const char *name)
 
 int gregistry_list(GKind kind, const GTypeInfo **out, int max)
 {
-    if ((unsigned)kind >= GKIND_COUNT)
+    if (!gkind_info(kind))
         return 0;
     pthread_mutex_lock(&lock);
     Table *t = &tables[kind];
@@ -136,7 +142,7 @@ void gregistry_names(GKind kind, char *buf, size_t size)
     if (!size)
         return;
     buf[0] = '\0';
-    if ((unsigned)kind >= GKIND_COUNT)
+    if (!gkind_info(kind))
         return;
     pthread_mutex_lock(&lock);
     Table *t = &tables[kind];

@@ -1,217 +1,27 @@
-/* reader.c - loading text files: includes and plugin statements, tokens, positions and errors, the nesting stack,
- * and the top-level statements (include, plugin, colormodel, KIND [NAME] VALUE). */
-#include "reader_internal.h"
+/* reader.c - loading text files: the top-level statements (include, plugin, colormodel, define, KIND [NAME] VALUE)
+ * read from the token stream, and the loaders of files and strings. */
+#include "reader_confine.h"
+#include "reader_define.h"
+#include "reader_entry.h"
+#include "reader_like.h"
 #include "generic/memory.h"
 #include "generic/plugin.h"
 
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-
-/* ---- errors ---- */
-
-static int verror_at(GReader *r, GError *err, int code, int line, int col, const char *fmt, va_list ap)
-{
-    char msg[sizeof err->message];
-    vsnprintf(msg, sizeof msg, fmt, ap);
-    r->located = 1;
-    const char *file = NULL, *via = NULL;
-    greader_origin(r, line, col, &file, &via);
-    gerror_set(err, code, "%s:%d:%d: %s%s%s", file, line, col, msg, via ? " " : "", via ? via : "");
-    if (err) {
-        err->line = line;
-        err->col = col;
-    }
-    return code;
-}
-
-int greader_error_at(GReader *r, GError *err, int code, int line, int col, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    int rc = verror_at(r, err, code, line, col, fmt, ap);
-    va_end(ap);
-    return rc;
-}
-
-int greader_error(GReader *r, GError *err, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    int rc = verror_at(r, err, G_ERR_PARSE, r->cur.tok.line, r->cur.tok.col, fmt, ap);
-    va_end(ap);
-    return rc;
-}
-
-/* Where the innermost entry being read wrote its parameter `name`: 1 with *line, *col, else 0. */
-static int param_position(const GReader *r, const char *name, int *line, int *col)
-{
-    for (int i = r->nframes - 1; i >= 0; i--) {
-        const GReaderFrame *f = &r->frames[i];
-        if (f->is_block)
-            continue;
-        for (int k = 0; k < f->nkeys; k++)
-            if (strcmp(f->keys[k].name, name) == 0) {
-                *line = f->keys[k].line;
-                *col = f->keys[k].col;
-                return 1;
-            }
-        return 0;
-    }
-    return 0;
-}
-
-int greader_locate(GReader *r, GError *err)
-{
-    if (!err)
-        return G_ERR_PARSE;
-    int code = err->code < 0 ? err->code : G_ERR_PARSE;
-    if (r->located)
-        return code;
-    int line = r->cur.tok.line, col = r->cur.tok.col;
-    char param[sizeof err->param];
-    snprintf(param, sizeof param, "%s", err->param);
-    int at_param = param[0] && param_position(r, param, &line, &col);
-    if (!at_param && r->cur_via) /* past a re-read token: the entry derived with `like` says it */
-        for (int i = r->nframes - 1; i >= 0; i--)
-            if (!r->frames[i].is_block && r->frames[i].like_line) {
-                line = r->frames[i].like_line;
-                col = r->frames[i].like_col;
-                break;
-            }
-    char msg[sizeof err->message];
-    snprintf(msg, sizeof msg, "%s", err->message[0] ? err->message : gstatus_string(code));
-    code = greader_error_at(r, err, code, line, col, "%s", msg);
-    memcpy(err->param, param, sizeof param);
-    return code;
-}
-
-void greader_position(GReader *r, int *line, int *col)
-{
-    if (line)
-        *line = r->cur.tok.line;
-    if (col)
-        *col = r->cur.tok.col;
-}
-
-const char *greader_dir(GReader *r) { return r->src ? r->src->dir : "."; }
-const char *greader_file(GReader *r) { return r->src ? r->src->name : "?"; }
-GLibrary *greader_library(GReader *r) { return r->lib; }
-
-/* ---- tokens ---- */
-
-static int fill(GReader *r, GError *err)
-{
-    if (r->have_ahead)
-        return G_OK;
-    int rc = greader_replay_fill(r, err); /* `like` re-reading a base entry */
-    if (rc != 0)
-        return rc < 0 ? rc : G_OK;
-    rc = glexer_next(&r->src->lx, &r->ahead, err);
-    if (rc != G_OK) {
-        r->located = 1;
-        return rc;
-    }
-    r->ahead_text = r->src->text_id;
-    r->ahead_via = NULL;
-    r->lexed++;
-    r->have_ahead = 1;
-    return G_OK;
-}
-
-/* The ahead token becomes the current one. */
-static void consume(GReader *r)
-{
-    r->cur.tok = r->ahead.tok;
-    r->cur.start = r->ahead.start;
-    r->cur.end = r->ahead.end;
-    memcpy(r->cur.text, r->ahead.text, strlen(r->ahead.text) + 1);
-    r->cur.tok.text = r->cur.text;
-    r->cur_text = r->ahead_text;
-    r->cur_via = r->ahead_via;
-    r->have_ahead = 0;
-    if (r->rec)
-        greader_record_token(r);
-}
-
-int greader_peek(GReader *r, GToken *tok, GError *err)
-{
-    int rc = fill(r, err);
-    if (rc == G_OK && tok)
-        *tok = r->ahead.tok;
-    return rc;
-}
-
-void greader_take(GReader *r, GToken *tok)
-{
-    consume(r);
-    if (tok)
-        *tok = r->cur.tok;
-}
-
-int greader_next(GReader *r, GToken *tok, GError *err)
-{
-    int rc = fill(r, err);
-    if (rc != G_OK)
-        return rc;
-    consume(r);
-    if (tok)
-        *tok = r->cur.tok;
-    return G_OK;
-}
-
-/* ---- the nesting stack ---- */
-
-int greader_depth(const GReader *r) { return r->nframes + r->include_depth; }
-
-int greader_push_frame(GReader *r, int is_block, const GTypeInfo *type, int line, int col, GError *err)
-{
-    if (greader_depth(r) + 1 > r->opt.max_depth)
-        return greader_error_at(r, err, G_ERR_PARSE, line, col,
-                                "nesting deeper than %d levels (entries, blocks and includes)", r->opt.max_depth);
-    if (r->nframes == r->capframes) {
-        int cap = r->capframes ? r->capframes * 2 : 16;
-        GReaderFrame *f = gmem_realloc(r->frames, (size_t)cap * sizeof *f);
-        if (!f)
-            return greader_error_at(r, err, G_ERR_NOMEM, line, col, "out of memory");
-        r->frames = f;
-        r->capframes = cap;
-    }
-    GReaderFrame *f = &r->frames[r->nframes++];
-    memset(f, 0, sizeof *f);
-    f->is_block = is_block;
-    f->type = type;
-    if (!is_block) { /* the entry `like` is reading */
-        f->like = r->pending_like;
-        f->via = r->pending_via;
-        if (f->via)
-            f->like_line = line, f->like_col = col;
-        f->single = r->pending_single;
-        f->single_state = f->single ? 1 : 0;
-        r->pending_like = NULL;
-        r->pending_via = NULL;
-        r->pending_single = NULL;
-    }
-    f->open_line = line;
-    f->open_col = col;
-    return G_OK;
-}
-
-void greader_pop_frames(GReader *r, int n)
-{
-    while (r->nframes > n) {
-        GReaderFrame *f = &r->frames[--r->nframes];
-        for (int i = 0; i < f->nkeys; i++)
-            gmem_free(f->keys[i].name);
-        gmem_free(f->keys);
-    }
-}
-
 /* ---- statements ---- */
 
 static int parse_statements(GReader *r, GError *err);
+
+/* Reads the file name (taken over) and makes it the source read from here on. */
+static int open_file(GReader *r, char *name, GError *err)
+{
+    GReaderSource *s = NULL;
+    int rc = greader_source_file(name, r->opt.max_file_size, &s, err);
+    return rc == G_OK ? gtokens_push_source(&r->ts, s, err) : rc;
+}
 
 static int do_include(GReader *r, GError *err)
 {
@@ -231,7 +41,7 @@ static int do_include(GReader *r, GError *err)
     }
     char *real = realpath(path, NULL);
     if (real) {
-        for (GReaderSource *s = r->src; s; s = s->parent) {
+        for (GReaderSource *s = r->ts.src; s; s = s->parent) {
             if (!s->real || strcmp(s->real, real) != 0)
                 continue;
             char chain[400] = "";
@@ -239,7 +49,7 @@ static int do_include(GReader *r, GError *err)
             /* the chain from the file that is included again down to here */
             GReaderSource *stack[64];
             int n = 0;
-            for (GReaderSource *q = r->src; q && n < 64; q = q->parent) {
+            for (GReaderSource *q = r->ts.src; q && n < 64; q = q->parent) {
                 stack[n++] = q;
                 if (q == s)
                     break;
@@ -259,31 +69,31 @@ static int do_include(GReader *r, GError *err)
             }
         free(real);
     }
-    GToken kw = r->cur.tok;
-    rc = greader_open_source(r, path, err);
+    GToken kw = r->ts.cur.tok;
+    rc = open_file(r, path, err);
     if (rc != G_OK) {
         char msg[sizeof err->message];
         snprintf(msg, sizeof msg, "%s", err->message);
         return greader_error_at(r, err, rc, kw.line, kw.col, "cannot include: %s", msg);
     }
-    r->src->lx.quiet = 1; /* until its first statement */
+    r->ts.src->lx.quiet = 1; /* until its first statement */
     r->include_depth++;
     rc = parse_statements(r, err);
     r->include_depth--;
-    if (rc == G_OK && r->src->real) {
+    if (rc == G_OK && r->ts.src->real) {
         if (r->nincluded == r->capincluded) {
             int cap = r->capincluded ? r->capincluded * 2 : 8;
             char **n = gmem_realloc(r->included, (size_t)cap * sizeof *n);
             if (n)
                 r->included = n, r->capincluded = cap;
         }
-        char *copy = r->nincluded < r->capincluded ? gmem_strdup(r->src->real) : NULL;
+        char *copy = r->nincluded < r->capincluded ? gmem_strdup(r->ts.src->real) : NULL;
         if (copy)
             r->included[r->nincluded++] = copy;
         else
             rc = greader_error_at(r, err, G_ERR_NOMEM, kw.line, kw.col, "out of memory");
     }
-    greader_pop_source(r);
+    gtokens_pop_source(&r->ts);
     return rc;
 }
 
@@ -331,6 +141,53 @@ static int do_plugin(GReader *r, GError *err)
     return rc;
 }
 
+static int colormodel_options(GReader *r, GColorModelOptions *o, GError *err)
+{
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        if (strcmp(key, "step") == 0)
+            rc = greader_number_in(r, 0.01, 400.0, &o->step_nm, err);
+        else if (strcmp(key, "min") == 0)
+            rc = greader_number_in(r, 100.0, 2000.0, &o->min_nm, err);
+        else if (strcmp(key, "max") == 0)
+            rc = greader_number_in(r, 100.0, 2000.0, &o->max_nm, err);
+        else
+            rc = greader_unknown_param(r, "step, min, max", err);
+        if (rc < 0)
+            return rc;
+    }
+    return rc;
+}
+
+/* Parses the options block of a colour model type and creates the model. */
+static int colormodel_entry(GReader *r, const GTypeInfo *type, GColorModel **out, GError *err)
+{
+    *out = NULL;
+    if (type->parse) {
+        void *obj = NULL;
+        int rc = greader_invoke(r, type, r->ts.cur.tok.line, r->ts.cur.tok.col, &obj, err);
+        *out = obj;
+        return rc;
+    }
+    int line = r->ts.cur.tok.line, col = r->ts.cur.tok.col;
+    int base = r->nframes;
+    int rc = greader_push_frame(r, 0, type, line, col, err);
+    GColorModelOptions o = {0, 0, 0};
+    if (rc == G_OK)
+        rc = colormodel_options(r, &o, err);
+    if (rc == G_OK) {
+        rc = gcolormodel_create_class(type->vtable, &o, out, err);
+        if (rc != G_OK) {
+            char msg[sizeof err->message];
+            snprintf(msg, sizeof msg, "%s", err ? err->message : "");
+            rc = greader_error_at(r, err, rc, line, col, "%s", msg);
+        }
+    }
+    greader_pop_frames(r, base);
+    return rc;
+}
+
 static int do_colormodel(GReader *r, int override, GError *err)
 {
     GToken t;
@@ -346,7 +203,7 @@ static int do_colormodel(GReader *r, int override, GError *err)
                                 "unknown colour model %s (registered colour models: %s)", found, names);
     }
     GColorModel *m = NULL;
-    rc = greader_colormodel_entry(r, type, &m, err);
+    rc = colormodel_entry(r, type, &m, err);
     if (rc != G_OK)
         return rc;
     if (override) {
@@ -401,25 +258,17 @@ static int do_entry(GReader *r, GKind kind, GError *err)
         rc = greader_like_entry(r, kind, name, t.line, t.col, err);
     } else if (rc == G_OK && v.type != GTOK_IDENT) { /* most likely a misspelt type keyword */
         char names[512];
-        gregistry_names(kind, names, sizeof names);
-        if (kind == GKIND_MATERIAL || kind == GKIND_NODE) {
-            size_t n = strlen(names);
-            gregistry_names(kind == GKIND_MATERIAL ? GKIND_NODE : GKIND_MATERIAL, names + n + 2,
-                            sizeof names - n - 2);
-            if (names[n + 2])
-                names[n] = ',', names[n + 1] = ' ';
-        }
+        greader_type_names(kind, names, sizeof names);
         rc = greader_error_at(r, err, G_ERR_NOTFOUND, t.line, t.col, "unknown %s type '%s' (registered: %s)", kn,
                               name, names[0] ? names : "none");
     } else if (rc == G_OK) {
         GTemplate *tmpl = gmem_calloc(1, sizeof *tmpl); /* for entries derived from this one */
         if (!tmpl)
             rc = greader_error_at(r, err, G_ERR_NOMEM, t.line, t.col, "out of memory");
-        r->rec = tmpl;
-        r->rec_frame = r->nframes;
+        r->pending_rec = tmpl; /* recorded while its entry frame is open */
         if (rc == G_OK)
             rc = greader_value(r, kind, 0, &obj, &type, &owned, err);
-        r->rec = NULL;
+        r->pending_rec = NULL;
         if (rc == G_OK) {
             rc = glibrary_put(r->lib, type, name, obj, owned, 1, err);
             if (rc != G_OK)
@@ -473,14 +322,22 @@ static int skip_entry(GReader *r, GKind kind, int line, int col, GError *err)
         if ((rc = greader_next(r, &t, err)) != G_OK)
             return rc;
         if (t.type == GTOK_EOF)
-            return greader_error_at(r, err, G_ERR_PARSE, line, col, "the %s entry has no closing '}'", gkind_name(kind));
+            return greader_error_at(r, err, G_ERR_PARSE, line, col, "the %s entry has no closing '}'",
+                                    gkind_name(kind));
         depth += t.type == GTOK_LBRACE ? 1 : t.type == GTOK_RBRACE ? -1 : 0;
     }
     return G_OK;
 }
 
-static const char statement_list[] = "include, plugin, colormodel, define, color, material, node, generator, "
-                                     "object, light, camera";
+/* "include, plugin, colormodel, define, color, material, ...": the statements, then the keywords of every other kind
+ * (the applications' too), for messages. */
+static void statement_list(char *buf, size_t size)
+{
+    size_t used = (size_t)snprintf(buf, size, "include, plugin, colormodel, define");
+    for (int k = 0, n = gkind_count(); k < n && used < size; k++)
+        if ((GKind)k != GKIND_COLORMODEL)
+            used += (size_t)snprintf(buf + used, size - used, ", %s", gkind_name((GKind)k));
+}
 
 static int parse_statements(GReader *r, GError *err)
 {
@@ -491,22 +348,23 @@ static int parse_statements(GReader *r, GError *err)
             return rc;
         if (t.type == GTOK_EOF)
             return G_OK;
-        char found[96]; /* described only for a message: formatting it for every statement is measurable */
-        int foreign = r->src->lx.quiet; /* no statement read from this file yet: quote nothing of it */
+        char found[96], statements[512]; /* made only for messages: for every statement it would be measurable */
+        int foreign = r->ts.src->lx.quiet; /* no statement read from this file yet: quote nothing of it */
         if (t.type != GTOK_IDENT && foreign)
             return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "%s", GLEX_FOREIGN_MESSAGE);
         if (t.type != GTOK_IDENT) {
             glexer_describe(&t, found, sizeof found);
+            statement_list(statements, sizeof statements);
             return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "expected a statement (%s), found %s",
-                                    statement_list, found);
+                                    statements, found);
         }
         greader_take(r, &t);
-        int known = !strcmp(t.text, "include") || !strcmp(t.text, "plugin") || !strcmp(t.text, "colormodel") ||
-                    !strcmp(t.text, "define");
-        for (int k = GKIND_COLOR; k < GKIND_COUNT && !known; k++)
-            known = strcmp(t.text, gkind_name((GKind)k)) == 0;
+        GKind kind = GKIND_COLORMODEL; /* the colormodel statement; other kinds are entries */
+        int entry = gkind_find(t.text, &kind) && kind != GKIND_COLORMODEL;
+        int known = entry || !strcmp(t.text, "include") || !strcmp(t.text, "plugin") ||
+                    !strcmp(t.text, "colormodel") || !strcmp(t.text, "define");
         if (known)
-            r->src->lx.quiet = 0; /* the file is in the format: from here on its text may be quoted */
+            r->ts.src->lx.quiet = 0; /* the file is in the format: from here on its text may be quoted */
         if (strcmp(t.text, "include") == 0) {
             rc = do_include(r, err);
         } else if (strcmp(t.text, "plugin") == 0) {
@@ -516,22 +374,19 @@ static int parse_statements(GReader *r, GError *err)
         } else if (strcmp(t.text, "define") == 0) {
             rc = greader_define_statement(r, err);
         } else {
-            int kind = -1;
-            for (int k = GKIND_COLOR; k < GKIND_COUNT && kind < 0; k++)
-                if (strcmp(t.text, gkind_name((GKind)k)) == 0)
-                    kind = k;
-            if (kind < 0 && foreign)
+            if (!entry && foreign)
                 return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "%s", GLEX_FOREIGN_MESSAGE);
-            if (kind < 0) {
+            if (!entry) {
                 glexer_describe(&t, found, sizeof found);
+                statement_list(statements, sizeof statements);
                 return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "unknown statement %s (expected %s)",
-                                        found, statement_list);
+                                        found, statements);
             }
             rc = resolve_model(r, err);
-            if (rc == G_OK && kind < 32 && (r->opt.skip_kinds & (1u << kind)))
-                rc = skip_entry(r, (GKind)kind, t.line, t.col, err);
+            if (rc == G_OK && (unsigned)kind < 32 && (r->opt.skip_kinds & (1u << kind)))
+                rc = skip_entry(r, kind, t.line, t.col, err);
             else if (rc == G_OK)
-                rc = do_entry(r, (GKind)kind, err);
+                rc = do_entry(r, kind, err);
         }
         if (rc != G_OK)
             return rc;
@@ -550,9 +405,7 @@ static void reader_init(GReader *r, GLibrary *lib, const GReaderOptions *opt)
         r->opt.max_depth = GREADER_DEFAULT_MAX_DEPTH;
     if (r->opt.max_file_size == 0)
         r->opt.max_file_size = GREADER_DEFAULT_MAX_FILE_SIZE;
-    r->cur.tok.line = r->cur.tok.col = 1;
-    r->cur.tok.text = r->cur.text;
-    r->cur_text = r->ahead_text = -1;
+    gtokens_init(&r->ts, lib);
 }
 
 static void reader_fini(GReader *r)
@@ -563,7 +416,7 @@ static void reader_fini(GReader *r)
     for (int i = 0; i < r->nincluded; i++)
         gmem_free(r->included[i]);
     gmem_free(r->included);
-    greader_pop_all_sources(r);
+    gtokens_fini(&r->ts);
 }
 
 /* Reads a source into lib; create_model: create opt->colormodel (when set) before the first entry. */
@@ -584,16 +437,15 @@ static int run(GLibrary *lib, const GReaderOptions *opt, int create_model, const
             gmem_free(real);
         }
         if (rc == G_OK)
-            rc = (copy = gmem_strdup(path)) ? greader_open_source(&r, copy, err)
-                                            : gerror_set(err, G_ERR_NOMEM, "out of memory");
+            rc = (copy = gmem_strdup(path)) ? open_file(&r, copy, err) : gerror_set(err, G_ERR_NOMEM, "out of memory");
     } else {
-        GReaderSource *s = gmem_calloc(1, sizeof *s);
-        rc = s && (s->name = gmem_strdup(name ? name : "<string>")) && (s->dir = gmem_strdup("."))
-                 ? greader_push_source(&r, s, text, strlen(text), err)
-                 : (greader_free_source(s), gerror_set(err, G_ERR_NOMEM, "out of memory"));
+        GReaderSource *s = NULL;
+        rc = greader_source_string(name ? name : "<string>", text, &s, err);
+        if (rc == G_OK)
+            rc = gtokens_push_source(&r.ts, s, err);
     }
     if (rc == G_OK) {
-        r.src->lx.quiet = 1; /* until its first statement */
+        r.ts.src->lx.quiet = 1; /* until its first statement */
         rc = parse_statements(&r, err);
     }
     if (rc == G_OK)

@@ -1,7 +1,8 @@
 /* reader_confine.c - GReaderOptions.confine_dir: every file a load reads (the file itself, includes, plug-ins
  * and every path read with greader_path: BFC files, images, meshes, probes) must lie under one directory once
  * symbolic links are resolved. */
-#include "reader_internal.h"
+#include "reader_state.h"
+#include "reader_confine.h"
 #include "generic/memory.h"
 
 #include <errno.h>

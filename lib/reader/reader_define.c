@@ -2,7 +2,7 @@
  * is read (greader_number and everything built on it). A constant is defined before its use and once; its
  * value is a number or an earlier constant. Constants belong to the library, so a scene loaded after a
  * material file (glibrary_load_file) sees the file's constants. */
-#include "reader_internal.h"
+#include "reader_define.h"
 #include "generic/memory.h"
 
 #include <stdio.h>
@@ -19,7 +19,7 @@ static const char *reserved_word(const char *name)
             return "a keyword of the format";
     if (strcasecmp(name, "nan") == 0 || strcasecmp(name, "inf") == 0 || strcasecmp(name, "infinity") == 0)
         return "not a finite number";
-    for (int k = 0; k < GKIND_COUNT; k++) {
+    for (int k = 0, n = gkind_count(); k < n; k++) {
         if (strcmp(name, gkind_name((GKind)k)) == 0)
             return "a kind keyword";
         if (gregistry_find((GKind)k, name))
@@ -43,7 +43,7 @@ int greader_define_statement(GReader *r, GError *err)
     greader_take(r, &t); /* peeked above */
     char name[GLEX_TEXT_MAX];
     memcpy(name, t.text, strlen(t.text) + 1);
-    int line = t.line, col = t.col, text = r->cur_text;
+    int line = t.line, col = t.col, text = r->ts.cur_text;
     const char *why = reserved_word(name);
     if (why)
         return greader_error_at(r, err, G_ERR_PARSE, line, col, "'%s' cannot name a constant: it is %s", name, why);

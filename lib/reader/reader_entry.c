@@ -1,5 +1,5 @@
-/* reader_entry.c - entries: calling parse routines, nested values and references, colour model entries. */
-#include "reader_internal.h"
+/* reader_entry.c - entries: calling parse routines, nested values and references to named entries. */
+#include "reader_entry.h"
 #include "generic/memory.h"
 
 #include <stdio.h>
@@ -8,27 +8,29 @@
 const GTypeInfo *greader_find_type(GKind kind, const char *name)
 {
     const GTypeInfo *t = gregistry_find(kind, name);
-    if (!t && kind == GKIND_MATERIAL)
-        t = gregistry_find(GKIND_NODE, name);
-    else if (!t && kind == GKIND_NODE)
-        t = gregistry_find(GKIND_MATERIAL, name);
+    GKind space = gkind_namespace(kind);
+    for (int k = 0, n = gkind_count(); !t && k < n; k++)
+        if ((GKind)k != kind && gkind_namespace((GKind)k) == space)
+            t = gregistry_find((GKind)k, name);
     return t;
 }
 
-/* "lambert, phong, ..." for a kind (materials also list node types). */
-static void type_names(GKind kind, char *buf, size_t size)
+void greader_type_names(GKind kind, char *buf, size_t size)
 {
     gregistry_names(kind, buf, size);
-    if (kind != GKIND_MATERIAL && kind != GKIND_NODE)
-        return;
-    size_t n = strlen(buf);
-    if (n + 3 >= size)
-        return;
-    gregistry_names(kind == GKIND_MATERIAL ? GKIND_NODE : GKIND_MATERIAL, buf + n + 2, size - n - 2);
-    if (buf[n + 2] && n)
-        buf[n] = ',', buf[n + 1] = ' ';
-    else if (buf[n + 2])
-        memmove(buf, buf + n + 2, strlen(buf + n + 2) + 1);
+    GKind space = gkind_namespace(kind);
+    for (int k = 0, n = gkind_count(); k < n; k++) {
+        if ((GKind)k == kind || gkind_namespace((GKind)k) != space)
+            continue;
+        size_t used = strlen(buf);
+        if (used + 3 >= size)
+            return;
+        gregistry_names((GKind)k, buf + used + 2, size - used - 2);
+        if (buf[used + 2] && used)
+            buf[used] = ',', buf[used + 1] = ' ';
+        else if (buf[used + 2])
+            memmove(buf, buf + used + 2, strlen(buf + used + 2) + 1);
+    }
 }
 
 int greader_invoke(GReader *r, const GTypeInfo *type, int line, int col, void **object, GError *err)
@@ -59,7 +61,7 @@ int greader_invoke(GReader *r, const GTypeInfo *type, int line, int col, void **
             rc = greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "%s %s: expected '}', found %s",
                                   gkind_name(type->kind), type->name, found);
         }
-        gtype_release(type, obj);
+        gtypeinfo_release(type, obj);
     }
     if (rc != G_OK) { /* a failing routine has freed what it made */
         int placed = greader_locate(r, err); /* rc stays the routine's status */
@@ -85,8 +87,8 @@ int greader_value(GReader *r, GKind kind, int add, void **object, const GTypeInf
     if (t.type != GTOK_IDENT) {
         char found[96];
         glexer_describe(&t, found, sizeof found);
-        return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "expected a %s (a type or a defined name), found %s",
-                                kn, found);
+        return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col,
+                                "expected a %s (a type or a defined name), found %s", kn, found);
     }
     const GTypeInfo *ty = greader_find_type(kind, t.text);
     if (ty) {
@@ -115,12 +117,12 @@ int greader_value(GReader *r, GKind kind, int add, void **object, const GTypeInf
             *type = glibrary_find_type(r->lib, kind, t.text);
         return G_OK;
     }
-    for (int k = 0; k < GKIND_COUNT; k++)
+    for (int k = 0, n = gkind_count(); k < n; k++)
         if (glibrary_find(r->lib, (GKind)k, t.text))
             return greader_error_at(r, err, G_ERR_NOTFOUND, t.line, t.col, "'%s' is a %s, not a %s", t.text,
                                     gkind_name((GKind)k), kn);
     char types[512], names[512];
-    type_names(kind, types, sizeof types);
+    greader_type_names(kind, types, sizeof types);
     glibrary_names(r->lib, kind, names, sizeof names);
     return greader_error_at(r, err, G_ERR_NOTFOUND, t.line, t.col,
                             "unknown %s '%s': neither a %s type (%s) nor a defined %s (defined: %s)", kn, t.text, kn,
@@ -129,7 +131,7 @@ int greader_value(GReader *r, GKind kind, int add, void **object, const GTypeInf
 
 int greader_object(GReader *r, GKind kind, void **object, const GTypeInfo **type, GError *err)
 {
-    if ((unsigned)kind >= GKIND_COUNT || kind == GKIND_COLORMODEL)
+    if (!gkind_info(kind) || kind == GKIND_COLORMODEL)
         return greader_error(r, err, "objects of kind %s cannot be nested", gkind_name(kind));
     return greader_value(r, kind, 1, object, type, NULL, err);
 }
@@ -155,52 +157,4 @@ const GColorModel *greader_colormodel(GReader *r)
 {
     r->model_fixed = 1;
     return glibrary_colormodel(r->lib);
-}
-
-/* ---- colour model entries: `colormodel TYPE { step 5 min 380 max 780 }` ---- */
-
-static int colormodel_options(GReader *r, GColorModelOptions *o, GError *err)
-{
-    const char *key;
-    int rc;
-    while ((rc = greader_param(r, &key, err)) > 0) {
-        if (strcmp(key, "step") == 0)
-            rc = greader_number_in(r, 0.01, 400.0, &o->step_nm, err);
-        else if (strcmp(key, "min") == 0)
-            rc = greader_number_in(r, 100.0, 2000.0, &o->min_nm, err);
-        else if (strcmp(key, "max") == 0)
-            rc = greader_number_in(r, 100.0, 2000.0, &o->max_nm, err);
-        else
-            rc = greader_unknown_param(r, "step, min, max", err);
-        if (rc < 0)
-            return rc;
-    }
-    return rc;
-}
-
-int greader_colormodel_entry(GReader *r, const GTypeInfo *type, GColorModel **out, GError *err)
-{
-    *out = NULL;
-    if (type->parse) {
-        void *obj = NULL;
-        int rc = greader_invoke(r, type, r->cur.tok.line, r->cur.tok.col, &obj, err);
-        *out = obj;
-        return rc;
-    }
-    int line = r->cur.tok.line, col = r->cur.tok.col;
-    int base = r->nframes;
-    int rc = greader_push_frame(r, 0, type, line, col, err);
-    GColorModelOptions o = {0, 0, 0};
-    if (rc == G_OK)
-        rc = colormodel_options(r, &o, err);
-    if (rc == G_OK) {
-        rc = gcolormodel_create_class(type->vtable, &o, out, err);
-        if (rc != G_OK) {
-            char msg[sizeof err->message];
-            snprintf(msg, sizeof msg, "%s", err ? err->message : "");
-            rc = greader_error_at(r, err, rc, line, col, "%s", msg);
-        }
-    }
-    greader_pop_frames(r, base);
-    return rc;
 }

@@ -1,7 +1,6 @@
 /* reader_library.c - GLibrary: the objects a text file defines, looked up by kind and name, freed at once. */
-#include "reader_internal.h"
+#include "reader_library.h"
 #include "generic/memory.h"
-#include "generic/texture.h"
 
 #include <stdint.h>
 #include <stdio.h>
@@ -34,8 +33,8 @@ struct GLibrary {
     int count, cap;
     int *slots; /* open addressing over named entries: index + 1, 0 = empty */
     int nslots, nnamed;
-    int *toplevel[GKIND_COUNT]; /* per kind, the indices of the top-level entries in order */
-    int ntop[GKIND_COUNT], captop[GKIND_COUNT];
+    int *toplevel[GKIND_MAX]; /* per kind, the indices of the top-level entries in order */
+    int ntop[GKIND_MAX], captop[GKIND_MAX];
     KeptText *texts; /* every source text read, for `like` */
     int ntexts, captexts;
     Constant *consts; /* `define` */
@@ -44,8 +43,8 @@ struct GLibrary {
     int ncslots;
 };
 
-/* Materials and texture nodes share one namespace. */
-static int space(GKind kind) { return kind == GKIND_NODE ? GKIND_MATERIAL : (int)kind; }
+/* The namespace of a kind (materials and texture nodes share one). */
+static int space(GKind kind) { return (int)gkind_namespace(kind); }
 
 static uint32_t hash(int sp, const char *name)
 {
@@ -99,24 +98,6 @@ static int grow_slots(GLibrary *lib)
     return G_OK;
 }
 
-void gtype_release(const GTypeInfo *type, void *object)
-{
-    if (!object)
-        return;
-    if (type && type->destroy) {
-        type->destroy(object);
-        return;
-    }
-    switch (type ? type->kind : GKIND_COUNT) {
-    case GKIND_MATERIAL:
-    case GKIND_NODE: gmaterial_unref(object); break;
-    case GKIND_COLORMODEL: gcolormodel_destroy(object); break;
-    case GKIND_COLOR: gcolorspec_destroy(object); break;
-    case GKIND_GENERATOR: ggenerator_unref(object); break;
-    default: gmem_free(object); break;
-    }
-}
-
 int glibrary_create(const GColorModel *model, GLibrary **out, GError *err)
 {
     *out = NULL;
@@ -135,7 +116,7 @@ void glibrary_destroy(GLibrary *lib)
     for (int i = lib->count - 1; i >= 0; i--) {
         Entry *e = &lib->entries[i];
         if (e->owned)
-            gtype_release(e->type, e->object);
+            gtypeinfo_release(e->type, e->object);
         gmem_free(e->name);
         gtemplate_free(e->tmpl);
     }
@@ -150,7 +131,7 @@ void glibrary_destroy(GLibrary *lib)
     gmem_free(lib->cslots);
     gmem_free(lib->entries);
     gmem_free(lib->slots);
-    for (int k = 0; k < GKIND_COUNT; k++)
+    for (int k = 0; k < GKIND_MAX; k++)
         gmem_free(lib->toplevel[k]);
     gcolormodel_destroy(lib->owned_model);
     gmem_free(lib);
@@ -199,7 +180,7 @@ int glibrary_put(GLibrary *lib, const GTypeInfo *type, const char *name, void *o
     if (rc == G_OK && name && (lib->nnamed + 1) * 2 > lib->nslots && grow_slots(lib) != G_OK)
         rc = gerror_set(err, G_ERR_NOMEM, "out of memory");
     int kind = type ? (int)type->kind : 0;
-    if (rc == G_OK && toplevel && (unsigned)kind < GKIND_COUNT && lib->ntop[kind] == lib->captop[kind]) {
+    if (rc == G_OK && toplevel && (unsigned)kind < GKIND_MAX && lib->ntop[kind] == lib->captop[kind]) {
         int cap = lib->captop[kind] ? lib->captop[kind] * 2 : 16;
         int *t = gmem_realloc(lib->toplevel[kind], (size_t)cap * sizeof *t);
         if (!t)
@@ -210,7 +191,7 @@ int glibrary_put(GLibrary *lib, const GTypeInfo *type, const char *name, void *o
     if (rc != G_OK) {
         gmem_free(copy);
         if (owned)
-            gtype_release(type, object);
+            gtypeinfo_release(type, object);
         return rc;
     }
     Entry *e = &lib->entries[lib->count];
@@ -224,7 +205,7 @@ int glibrary_put(GLibrary *lib, const GTypeInfo *type, const char *name, void *o
         insert_slot(lib->slots, lib->nslots, e, lib->count);
         lib->nnamed++;
     }
-    if (toplevel && (unsigned)kind < GKIND_COUNT)
+    if (toplevel && (unsigned)kind < GKIND_MAX)
         lib->toplevel[kind][lib->ntop[kind]++] = lib->count;
     lib->count++;
     return G_OK;
@@ -262,12 +243,12 @@ int glibrary_color(const GLibrary *lib, const char *name, GColorRole role, GColo
 
 int glibrary_count(const GLibrary *lib, GKind kind)
 {
-    return lib && (unsigned)kind < GKIND_COUNT ? lib->ntop[kind] : 0;
+    return lib && (unsigned)kind < GKIND_MAX ? lib->ntop[kind] : 0;
 }
 
 void *glibrary_entry(const GLibrary *lib, GKind kind, int index, const char **name, const GTypeInfo **type)
 {
-    if (!lib || (unsigned)kind >= GKIND_COUNT || index < 0 || index >= lib->ntop[kind])
+    if (!lib || (unsigned)kind >= GKIND_MAX || index < 0 || index >= lib->ntop[kind])
         return NULL;
     const Entry *e = &lib->entries[lib->toplevel[kind][index]];
     if (name)
@@ -295,17 +276,6 @@ void glibrary_names(const GLibrary *lib, GKind kind, char *buf, size_t size)
 }
 
 /* ---- kept texts, templates, constants ---- */
-
-void gtemplate_free(GTemplate *t)
-{
-    if (!t)
-        return;
-    for (int i = 0; i < t->nparams; i++)
-        gmem_free(t->params[i].name);
-    gmem_free(t->params);
-    gmem_free(t->base);
-    gmem_free(t);
-}
 
 int glibrary_keep_text(GLibrary *lib, char *text, size_t len, const char *name, int *id)
 {
@@ -360,7 +330,7 @@ const GTemplate *glibrary_template(const GLibrary *lib, GKind kind, const char *
 
 const char *glibrary_entry_base(const GLibrary *lib, GKind kind, int index)
 {
-    if (!lib || (unsigned)kind >= GKIND_COUNT || index < 0 || index >= lib->ntop[kind])
+    if (!lib || (unsigned)kind >= GKIND_MAX || index < 0 || index >= lib->ntop[kind])
         return NULL;
     const Entry *e = &lib->entries[lib->toplevel[kind][index]];
     return e->tmpl ? e->tmpl->base : NULL;

@@ -1,257 +1,11 @@
-/* reader_params.c - typed values (numbers, vectors, strings, names, paths) and parameter blocks. */
-#include "reader_internal.h"
+/* reader_params.c - parameter blocks: the named parameters of an entry (greader_param), with those an entry derived
+ * with `like` inherits merged in where its block of overrides ends, and positional blocks. A named entry being
+ * recorded for `like` notes here where its block and each parameter begin and end. */
+#include "reader_state.h"
 #include "generic/memory.h"
 
-#include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include <strings.h>
-
-static const char *type_name(int type)
-{
-    switch (type) {
-    case GTOK_IDENT: return "a name";
-    case GTOK_NUMBER: return "a number";
-    case GTOK_STRING: return "a quoted string";
-    case GTOK_LBRACE: return "'{'";
-    case GTOK_RBRACE: return "'}'";
-    case GTOK_LANGLE: return "'<'";
-    case GTOK_RANGLE: return "'>'";
-    case GTOK_COMMA: return "','";
-    default: return "end of file";
-    }
-}
-
-/* "expected WHAT, found TOKEN" at the next token (which is not consumed). */
-static int expected(GReader *r, const char *what, GError *err)
-{
-    GToken t;
-    int rc = greader_peek(r, &t, err);
-    if (rc != G_OK)
-        return rc;
-    char found[96];
-    glexer_describe(&t, found, sizeof found);
-    const GReaderFrame *f = r->nframes ? &r->frames[r->nframes - 1] : NULL;
-    while (f && f->is_block && f > r->frames)
-        f--;
-    if (f && f->type && !f->is_block)
-        return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "%s %s: expected %s, found %s",
-                                gkind_name(f->type->kind), f->type->name, what, found);
-    return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "expected %s, found %s", what, found);
-}
-
-int greader_accept(GReader *r, int type, GError *err)
-{
-    GToken t;
-    int rc = greader_peek(r, &t, err);
-    if (rc != G_OK)
-        return rc;
-    if (t.type != type)
-        return 0;
-    rc = greader_next(r, NULL, err);
-    return rc ? rc : 1;
-}
-
-int greader_expect(GReader *r, int type, const char *what, GError *err)
-{
-    int rc = greader_accept(r, type, err);
-    if (rc < 0)
-        return rc;
-    return rc ? G_OK : expected(r, what ? what : type_name(type), err);
-}
-
-int greader_at_number(GReader *r, GError *err)
-{
-    GToken t;
-    int rc = greader_peek(r, &t, err);
-    return rc ? rc : t.type == GTOK_NUMBER || (t.type == GTOK_IDENT && glibrary_constant(r->lib, t.text, NULL, NULL, NULL, NULL));
-}
-
-int greader_number(GReader *r, double *out, GError *err)
-{
-    GToken t;
-    int rc = greader_peek(r, &t, err);
-    if (rc != G_OK)
-        return rc;
-    if (t.type == GTOK_IDENT && (strcasecmp(t.text, "nan") == 0 || strcasecmp(t.text, "inf") == 0 ||
-                                 strcasecmp(t.text, "infinity") == 0))
-        return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "'%s' is not allowed: numbers must be finite",
-                                t.text);
-    double value = t.number;
-    if (t.type == GTOK_IDENT && glibrary_constant(r->lib, t.text, &value, NULL, NULL, NULL)) {
-        greader_take(r, NULL); /* a constant (`define`), peeked above */
-        *out = value;
-        return G_OK;
-    }
-    if (t.type == GTOK_IDENT)
-        return expected(r, "a number or a constant defined before", err);
-    if (t.type != GTOK_NUMBER)
-        return expected(r, "a number", err);
-    greader_take(r, NULL); /* the token peeked above */
-    *out = t.number;
-    return G_OK;
-}
-
-int greader_number_in(GReader *r, double lo, double hi, double *out, GError *err)
-{
-    double v;
-    int rc = greader_number(r, &v, err);
-    if (rc != G_OK)
-        return rc;
-    if (!(v >= lo && v <= hi))
-        return greader_error(r, err, "value %g is out of range [%g, %g]", v, lo, hi);
-    *out = v;
-    return G_OK;
-}
-
-int greader_int(GReader *r, long lo, long hi, long *out, GError *err)
-{
-    double v;
-    int rc = greader_number(r, &v, err);
-    if (rc != G_OK)
-        return rc;
-    if (v != floor(v))
-        return greader_error(r, err, "expected a whole number, found %g", v);
-    if (!(v >= (double)lo && v <= (double)hi))
-        return greader_error(r, err, "value %g is out of range [%ld, %ld]", v, lo, hi);
-    *out = (long)v;
-    return G_OK;
-}
-
-int greader_vec3(GReader *r, GVec3 *out, GError *err)
-{
-    int angle = greader_accept(r, GTOK_LANGLE, err);
-    if (angle < 0)
-        return angle;
-    double v[3];
-    for (int i = 0; i < 3; i++) {
-        if (angle && i > 0) {
-            int rc = greader_expect(r, GTOK_COMMA, "',' between vector components", err);
-            if (rc != G_OK)
-                return rc;
-        }
-        int rc = greader_number(r, &v[i], err);
-        if (rc != G_OK)
-            return rc;
-    }
-    if (angle) {
-        int rc = greader_expect(r, GTOK_RANGLE, "'>' to close the vector", err);
-        if (rc != G_OK)
-            return rc;
-    }
-    *out = gvec3(v[0], v[1], v[2]);
-    return G_OK;
-}
-
-int greader_bool(GReader *r, int *out, GError *err)
-{
-    GToken t;
-    int rc = greader_peek(r, &t, err);
-    if (rc != G_OK)
-        return rc;
-    if (t.type == GTOK_NUMBER && (t.number == 0.0 || t.number == 1.0)) {
-        *out = t.number != 0.0;
-        return greader_next(r, NULL, err);
-    }
-    static const char *const names[] = {"false", "true", "no", "yes", "off", "on", NULL};
-    for (int i = 0; t.type == GTOK_IDENT && names[i]; i++)
-        if (strcmp(t.text, names[i]) == 0) {
-            *out = i & 1;
-            return greader_next(r, NULL, err);
-        }
-    return expected(r, "true or false", err);
-}
-
-int greader_string(GReader *r, char **out, GError *err)
-{
-    *out = NULL;
-    GToken t;
-    int rc = greader_peek(r, &t, err);
-    if (rc != G_OK)
-        return rc;
-    if (t.type != GTOK_STRING)
-        return expected(r, "a quoted string", err);
-    greader_take(r, &t); /* the token peeked above */
-    *out = gmem_strdup(t.text);
-    return *out ? G_OK : greader_error_at(r, err, G_ERR_NOMEM, t.line, t.col, "out of memory");
-}
-
-int greader_ident(GReader *r, char *buf, size_t size, GError *err)
-{
-    GToken t;
-    int rc = greader_peek(r, &t, err);
-    if (rc != G_OK)
-        return rc;
-    if (t.type != GTOK_IDENT)
-        return expected(r, "a name", err);
-    greader_take(r, &t); /* the token peeked above */
-    if (strlen(t.text) >= size)
-        return greader_error(r, err, "name '%.40s...' is too long (at most %zu characters)", t.text, size - 1);
-    memcpy(buf, t.text, strlen(t.text) + 1);
-    return G_OK;
-}
-
-int greader_choice(GReader *r, const char *const *choices, int *index, GError *err)
-{
-    GToken t;
-    int rc = greader_peek(r, &t, err);
-    if (rc != G_OK)
-        return rc;
-    for (int i = 0; t.type == GTOK_IDENT && choices[i]; i++)
-        if (strcmp(t.text, choices[i]) == 0) {
-            *index = i;
-            return greader_next(r, NULL, err);
-        }
-    char list[400];
-    size_t used = 0;
-    list[0] = '\0';
-    for (int i = 0; choices[i] && used < sizeof list; i++)
-        used += (size_t)snprintf(list + used, sizeof list - used, "%s%s", i ? ", " : "", choices[i]);
-    char what[420];
-    snprintf(what, sizeof what, "one of %s", list);
-    return expected(r, what, err);
-}
-
-int greader_path(GReader *r, char **out, GError *err)
-{
-    char *rel = NULL;
-    int rc = greader_string(r, &rel, err);
-    if (rc != G_OK)
-        return rc;
-    if (!rel[0]) {
-        gmem_free(rel);
-        return greader_error(r, err, "empty file name");
-    }
-    const char *dir = greader_dir(r);
-    if (rel[0] == '/' || strcmp(dir, ".") == 0) {
-        *out = rel;
-    } else {
-        size_t a = strlen(dir), b = strlen(rel);
-        *out = gmem_alloc(a + b + 2);
-        if (*out) {
-            memcpy(*out, dir, a);
-            (*out)[a] = '/';
-            memcpy(*out + a + 1, rel, b + 1);
-        }
-        gmem_free(rel);
-        if (!*out)
-            return greader_error(r, err, "out of memory");
-    }
-    if (r->opt.confine_dir) { /* the file read is the resolved one that was checked */
-        char *real = NULL;
-        int rc = greader_confine(r->opt.confine_dir, *out, &real, err);
-        gmem_free(*out);
-        *out = real;
-        if (rc != G_OK) {
-            char msg[sizeof err->message];
-            snprintf(msg, sizeof msg, "%s", err ? err->message : "");
-            return greader_error_at(r, err, rc, r->cur.tok.line, r->cur.tok.col, "%s", msg);
-        }
-    }
-    return G_OK;
-}
-
-/* ---- parameter blocks ---- */
 
 static GReaderFrame *entry_frame(GReader *r) { return r->nframes ? &r->frames[r->nframes - 1] : NULL; }
 
@@ -260,6 +14,83 @@ static int missing_brace(GReader *r, const GToken *t, int line, int col, GError 
     return greader_error_at(r, err, G_ERR_PARSE, t->line, t->col, "missing '}' to close the block opened at %d:%d",
                             line, col);
 }
+
+/* ---- recording a named entry's block (its template, when the entry is recorded) ---- */
+
+/* The block is looked for: it opens when the look-ahead token is `{`. */
+static void record_open(GReader *r, const GReaderFrame *f)
+{
+    GTemplate *t = f->rec;
+    if (!t)
+        return;
+    t->named = 1;
+    if (f->state == 0 && r->ts.have_ahead && r->ts.ahead.tok.type == GTOK_LBRACE) {
+        t->has_block = 1;
+        t->open = gtokens_ahead_span(&r->ts);
+    }
+}
+
+/* The block closes at the look-ahead token, `}`. */
+static void record_close(GReader *r, const GReaderFrame *f)
+{
+    if (!f->rec)
+        return;
+    gtemplate_end_param(f->rec);
+    f->rec->close = gtokens_ahead_span(&r->ts);
+}
+
+/* ---- `like`: the base's parameters the entry does not give ---- */
+
+static int overridden(const GReaderFrame *f, const char *name)
+{
+    for (int i = 0; i < f->nkeys; i++)
+        if (strcmp(f->keys[i].name, name) == 0)
+            return 1;
+    return 0;
+}
+
+/* The merge for the frame f of an entry derived with `like` (state 0: no block of overrides follows; state 1: the
+ * block of overrides ends at the look-ahead token, `}`): re-reads the base's parameters the entry does not give,
+ * then the base's `}`. 1 when a replay was started (peek again), 0 when nothing is inherited, negative on error. */
+static int like_merge(GReader *r, GReaderFrame *f, GError *err)
+{
+    const GTemplate *b = f->like;
+    f->like = NULL;
+    if (!b)
+        return 0;
+    if (f->state == 1 && !b->has_block) { /* nothing to inherit: the overrides' `}` closes the entry */
+        if (!f->single) {
+            record_close(r, f);
+            greader_take(r, NULL);
+        }
+        return 0;
+    }
+    if (!b->has_block)
+        return 0;
+    GSpan *spans = gmem_alloc((size_t)(b->nparams + 2) * sizeof *spans);
+    if (!spans)
+        return greader_error(r, err, "out of memory");
+    int n = 0;
+    if (f->state == 0) { /* no overrides: the base's block as it was written */
+        spans[n++] = b->open;
+        for (int i = 0; i < b->nparams; i++)
+            spans[n++] = b->params[i].span;
+    } else { /* after the overrides (their `}` is dropped): the parameters they do not name */
+        if (f->rec)
+            gtemplate_end_param(f->rec);
+        if (!f->single) /* greader_material_with has no `}` of its own */
+            greader_take(r, NULL);
+        for (int i = 0; i < b->nparams; i++)
+            if (!overridden(f, b->params[i].name))
+                spans[n++] = b->params[i].span;
+    }
+    spans[n++] = b->close;
+    if (gtokens_replay(&r->ts, spans, n, f->via) != G_OK)
+        return greader_error(r, err, "out of memory");
+    return 1;
+}
+
+/* ---- named parameters ---- */
 
 /* Notes a parameter name of the entry f, written at the token t (the look-ahead token). */
 static int add_key(GReader *r, GReaderFrame *f, const char *name, const GToken *t, GError *err)
@@ -273,14 +104,15 @@ static int add_key(GReader *r, GReaderFrame *f, const char *name, const GToken *
         f->capkeys = cap;
     }
     GReaderKey *k = &f->keys[f->nkeys];
-    if (!(k->name = gmem_strdup(name)) || greader_record_key(r, f, name) != G_OK) {
+    if (!(k->name = gmem_strdup(name)) ||
+        (f->rec && gtemplate_add_param(f->rec, name, gtokens_ahead_span(&r->ts)) != G_OK)) {
         gmem_free(k->name);
         return greader_error_at(r, err, G_ERR_NOMEM, t->line, t->col, "out of memory");
     }
     k->line = t->line;
     k->col = t->col;
-    k->text = r->ahead_text;
-    k->via = r->ahead_via;
+    k->text = r->ts.ahead_text;
+    k->via = r->ts.ahead_via;
     f->nkeys++;
     return G_OK;
 }
@@ -307,7 +139,7 @@ int greader_param(GReader *r, const char **key, GError *err)
     }
     if (f->single_state == 2) { /* ... read: the block closes here, with the base's other parameters */
         f->single_state = 0;
-        rc = f->like ? greader_like_merge(r, f, err) : 0;
+        rc = f->like ? like_merge(r, f, err) : 0;
         if (rc < 0)
             return rc;
         if (rc == 0) {
@@ -319,13 +151,13 @@ int greader_param(GReader *r, const char **key, GError *err)
     }
     if (f->state == 0) {
         if (t.type != GTOK_LBRACE && f->like) { /* `like` without overrides: the base's block */
-            rc = greader_like_merge(r, f, err);
+            rc = like_merge(r, f, err);
             if (rc < 0)
                 return rc;
             if (rc > 0 && (rc = greader_peek(r, &t, err)) != G_OK)
                 return rc;
         }
-        greader_record_open(r, f);
+        record_open(r, f);
         if (t.type != GTOK_LBRACE) {
             f->state = 2;
             return 0;
@@ -341,7 +173,7 @@ int greader_param(GReader *r, const char **key, GError *err)
     if (f->state == 2)
         return 0;
     if (t.type == GTOK_RBRACE && f->like) { /* the overrides end: the base's other parameters follow */
-        rc = greader_like_merge(r, f, err);
+        rc = like_merge(r, f, err);
         if (rc < 0)
             return rc;
         if (rc == 0) {
@@ -352,7 +184,7 @@ int greader_param(GReader *r, const char **key, GError *err)
             return rc;
     }
     if (t.type == GTOK_RBRACE) {
-        greader_record_close(r, f);
+        record_close(r, f);
         greader_take(r, NULL); /* the token peeked above */
         f->state = 2;
         return 0;
@@ -384,9 +216,12 @@ int greader_unknown_param(GReader *r, const char *expected_names, GError *err)
     if (!f || f->is_block || !f->nkeys)
         return greader_error(r, err, "unknown parameter");
     const GReaderKey *k = &f->keys[f->nkeys - 1];
-    return greader_error_at(r, err, G_ERR_PARSE, k->line, k->col, "%s %s: unknown parameter '%s' (expected one of: %s)",
-                            gkind_name(f->type->kind), f->type->name, k->name, expected_names ? expected_names : "none");
+    return greader_error_at(r, err, G_ERR_PARSE, k->line, k->col,
+                            "%s %s: unknown parameter '%s' (expected one of: %s)", gkind_name(f->type->kind),
+                            f->type->name, k->name, expected_names ? expected_names : "none");
 }
+
+/* ---- positional blocks ---- */
 
 int greader_block_begin(GReader *r, GError *err)
 {
@@ -395,7 +230,7 @@ int greader_block_begin(GReader *r, GError *err)
     if (rc != G_OK)
         return rc;
     if (t.type != GTOK_LBRACE)
-        return expected(r, "'{'", err);
+        return greader_expected(r, "'{'", err);
     rc = greader_push_frame(r, 1, NULL, t.line, t.col, err);
     if (rc != G_OK)
         return rc;

@@ -1,12 +1,12 @@
 #!/bin/sh
 # The layering of docs/ARCHITECTURE.md: lib/ knows no concrete type, and a type file uses only public headers.
-#   1. no file of lib/ includes anything from colormodels/, materials/ or textures/;
+#   1. no file of lib/ includes anything from colormodels/, colors/, materials/ or textures/;
 #   2. no object of lib/ refers to a symbol defined by an object of those directories (no link cycle);
 #   3. every file of those directories includes only public headers (generic/...) and system headers.
 set -eu
 BUILD=${1:-build}
 status=0
-inc=$(grep -rn '#include' lib/ | grep -E '"(\.\./)*(colormodels|materials|textures)/' || true)
+inc=$(grep -rn '#include' lib/ | grep -E '"(\.\./)*(colormodels|colors|materials|textures)/' || true)
 if [ -n "$inc" ]; then
     echo "layering: lib/ includes concrete types:"; echo "$inc"; status=1
 fi
@@ -19,7 +19,7 @@ objects() {
         echo "$o"
     done
 }
-types=$(objects colormodels/*.c materials/*.c materials/*/*.c textures/*.c) || exit 1
+types=$(objects colormodels/*.c colors/*.c materials/*.c materials/*/*.c textures/*.c) || exit 1
 core=$(objects lib/*/*.c lib/*/*.cpp) || exit 1
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -31,7 +31,8 @@ cycle=$(comm -12 "$tmp/defined" "$tmp/used")
 if [ -n "$cycle" ]; then
     echo "layering: lib/ refers to symbols of concrete types:"; echo "$cycle" | sed 's/^/  /'; status=1
 fi
-priv=$(grep -n '#include "' colormodels/*.c materials/*.c materials/*/*.c textures/*.c | grep -v '#include "generic/' || true)
+priv=$(grep -n '#include "' colormodels/*.c colors/*.c materials/*.c materials/*/*.c textures/*.c |
+    grep -v '#include "generic/' || true)
 if [ -n "$priv" ]; then
     echo "layering: type files include private headers:"; echo "$priv"; status=1
 fi

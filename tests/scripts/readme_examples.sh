@@ -303,14 +303,14 @@ int main(int argc, char **argv)
     GError err;
     if (generic_register_builtins(&err) != G_OK)
         return fail("generic_register_builtins", &err);
-    const GTypeInfo *before[GKIND_COUNT][256];
-    int nbefore[GKIND_COUNT];
-    for (int k = 0; k < GKIND_COUNT; k++)
+    const GTypeInfo *before[GKIND_MAX][256];
+    int nbefore[GKIND_MAX];
+    for (int k = 0; k < gkind_count(); k++)
         nbefore[k] = gregistry_list((GKind)k, before[k], 256);
     if (gplugin_load(argv[1], &err) != G_OK)
         return fail("gplugin_load", &err);
     int added = 0, bad = 0;
-    for (int k = 0; k < GKIND_COUNT; k++) {
+    for (int k = 0; k < gkind_count(); k++) {
         const GTypeInfo *now[256];
         int n = gregistry_list((GKind)k, now, 256);
         for (int i = nbefore[k]; i < n && i < 256; i++) {

@@ -1,11 +1,12 @@
 #!/bin/sh
-# Every file of colormodels/, materials/ and textures/ is one type that becomes a run-time module by one added
-# line: each is copied alone into a scratch directory, compiled as it is against the public headers only (as
+# Every file of colormodels/, colors/, materials/ and textures/ is one type that becomes a run-time module by one
+# added line: each is copied alone into a scratch directory, compiled as it is against the public headers only (as
 # `make install` installs them, BUILD/plugins/include), then given `GENERIC_MODULE(&gtype_ID, ...);` naming its
 # records and compiled as a .so with -fvisibility=hidden. Each module must link with no symbol left over but
 # the library's and libc/libm's, and load into a program whose registry holds every built-in except the
 # module's own types: the module's vtables are registered (not the built-in ones) and a file using the type
-# reads (examples/textures/NAME.txt, examples/materials/NAME.mat, else a one-line default instance).
+# reads (examples/textures/NAME.txt, examples/materials/NAME.mat, for a colour literal examples/materials/colors.mat
+# when it uses it, else a one-line default instance).
 set -eu
 BUILD=${1:-build}
 inc="$BUILD/plugins/include"
@@ -65,10 +66,10 @@ int main(int argc, char **argv)
     for (int i = 3; i < argc; i++) {
         int kind = 0;
         const char *colon = strchr(argv[i], ':');
-        while (kind < GKIND_COUNT && (strncmp(argv[i], gkind_name((GKind)kind), (size_t)(colon - argv[i])) != 0 ||
+        while (kind < gkind_count() && (strncmp(argv[i], gkind_name((GKind)kind), (size_t)(colon - argv[i])) != 0 ||
                                       gkind_name((GKind)kind)[colon - argv[i]] != '\0'))
             kind++;
-        const GTypeInfo *t = kind < GKIND_COUNT ? gregistry_find((GKind)kind, colon + 1) : NULL;
+        const GTypeInfo *t = kind < gkind_count() ? gregistry_find((GKind)kind, colon + 1) : NULL;
         for (int j = 0; t && b[j]; j++)
             if (b[j]->kind == t->kind && (t->vtable ? b[j]->vtable == t->vtable : b[j]->parse == t->parse))
                 t = NULL; /* the built-in's record, not the module's */
@@ -119,6 +120,8 @@ module() {
         case $kind in
         node | generator) [ -f "examples/textures/$name.txt" ] && example="examples/textures/$name.txt" ;;
         material) [ -f "examples/materials/$name.mat" ] && example="examples/materials/$name.mat" ;;
+        color) grep -q -E "^color +[A-Za-z_]+ +$name( |\$)" examples/materials/colors.mat &&
+            example="examples/materials/colors.mat" ;;
         esac
         if [ -z "$example" ]; then
             example="$dir/use.txt"
@@ -132,8 +135,8 @@ module() {
     echo "module $base.so:$args built as a built-in and as a module, loaded, $example read"
     n=$((n + 1))
 }
-for src in colormodels/*.c materials/*.c materials/*/*.c textures/*.c; do
+for src in colormodels/*.c colors/*.c materials/*.c materials/*/*.c textures/*.c; do
     [ -f "$src" ] || continue
-    module "$work/$(basename "$src" .c)" "$src"
+    module "$work/${src%.c}" "$src" # colors/scale.c and textures/scale.c: a directory each
 done
 echo "$n type files built and loaded as modules"

@@ -1,0 +1,25 @@
+/* rgb.c - the colour literal `rgb R G B`: a linear sRGB triple (a reflectance, or a light of D65's chromaticity),
+ * written `R G B` or `<R, G, B>`. */
+#include "generic/colorspec.h"
+#include "generic/plugin.h"
+#include "generic/reader.h"
+
+static int parse_rgb(GReader *r, const void *vt, void **object, GError *err)
+{
+    (void)vt;
+    GVec3 v;
+    int rc = greader_vec3(r, &v, err);
+    if (rc != G_OK)
+        return rc;
+    GColorSpec *s = gcolorspec_create();
+    if (!s)
+        return greader_error(r, err, "out of memory");
+    s->form = GCOLORSPEC_RGB;
+    s->rgb[0] = v.x;
+    s->rgb[1] = v.y;
+    s->rgb[2] = v.z;
+    *object = s;
+    return G_OK;
+}
+
+GENERIC_TYPE_NAMED(color_rgb, GKIND_COLOR, "rgb", parse_rgb, "linear sRGB: rgb R G B", NULL);
