@@ -1,7 +1,7 @@
 # examples/gtrace/build.mk - gtrace's rules, included by the top Makefile: the tracer as a static library,
-# BUILD/lib/libgtrace.a (every source but main.c), which the tool and its test programs link; Embree and assimp
-# for them; the MPI module; and the benchmarks that run gtrace.
-GTRACE_SRC := $(filter-out examples/gtrace/main.c,$(wildcard examples/gtrace/*.c))
+# BUILD/lib/libgtrace.a (the sources of its folders: everything but main.c), which the tool and its test programs
+# link; Embree and assimp for them; the MPI module; and the benchmarks that run gtrace.
+GTRACE_SRC := $(sort $(wildcard examples/gtrace/*/*.c))
 GTRACE_LIB := $(BUILD)/lib/libgtrace.a
 GTRACE_LIBS := -lembree3 -lassimp
 all: $(GTRACE_LIB)
@@ -11,6 +11,9 @@ $(GTRACE_LIB): $(GTRACE_SRC:%.c=$(BUILD)/obj/%.o)
 	rm -f $@
 	ar rcs $@ $^
 
+# gtrace's files include each other as "folder/name.h" across its folders (and "name.h" within one)
+$(call objs_of,examples/gtrace/%.o): CPPFLAGS += -Iexamples/gtrace
+$(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tests/test_gtrace*.c)): CPPFLAGS += -Iexamples/gtrace
 $(BUILD)/tests/test_gtrace: TESTLIBS += $(GTRACE_LIBS)
 $(BUILD)/tests/test_gtrace_%: TESTLIBS += $(GTRACE_LIBS)
 
@@ -51,19 +54,19 @@ bench-dispersion: $(BUILD)/bin/gtrace
 bench-path: $(BUILD)/bin/gtrace $(BUILD)/bin/gprobe
 	@bench/path.sh $(BUILD)
 bench: bench-pov bench-dispersion bench-path bench-mpi
-# gtrace's MPI module (examples/gtrace/mpi/, examples/gtrace/mpi_module.h), built when Open MPI's development
+# gtrace's MPI module (examples/gtrace/distributed/mpi/, examples/gtrace/distributed/mpi_module.h), built when Open MPI's development
 # files are found (pkg-config ompi-c; Debian's libopenmpi-dev). gtrace opens it with dlopen only when it runs under
 # mpirun (mpi_load.c), so --help and a render on one machine never map libmpi; without it gtrace still builds and
 # --version says so. Found beside gtrace (../lib/generic/) or in the installed PREFIX/lib/generic/.
-$(call objs_of,examples/gtrace/mpi_load.o): CPPFLAGS += -DGTRACE_MPI_LIBDIR='"$(PREFIX)/lib"'
+$(call objs_of,examples/gtrace/distributed/mpi_load.o): CPPFLAGS += -DGTRACE_MPI_LIBDIR='"$(PREFIX)/lib"'
 MPI_CFLAGS := $(shell pkg-config --cflags ompi-c 2>/dev/null)
 MPI_LIBS   := $(shell pkg-config --libs ompi-c 2>/dev/null)
 ifneq ($(MPI_LIBS),)
 GTRACE_MPI_SO := $(BUILD)/lib/generic/gtrace_mpi.so
-$(call objs_of,examples/gtrace/mpi_load.o): CPPFLAGS += -DGTRACE_MPI_BUILT='"gtrace_mpi.so (Open MPI $(shell pkg-config --modversion ompi-c))"'
+$(call objs_of,examples/gtrace/distributed/mpi_load.o): CPPFLAGS += -DGTRACE_MPI_BUILT='"gtrace_mpi.so (Open MPI $(shell pkg-config --modversion ompi-c))"'
 $(BUILD)/bin/gtrace: | $(GTRACE_MPI_SO)
 all: $(GTRACE_MPI_SO)
-$(GTRACE_MPI_SO): examples/gtrace/mpi/transport.c examples/gtrace/mpi_module.h
+$(GTRACE_MPI_SO): examples/gtrace/distributed/mpi/transport.c examples/gtrace/distributed/mpi_module.h
 	@mkdir -p $(dir $@)
 	$(CC) -std=c11 -D_GNU_SOURCE $(OPT) -g -fPIC -shared -fvisibility=hidden $(WARN) $(SANFLAGS) $(MPI_CFLAGS) \
 	    -Wl,-z,defs -o $@ $< $(LDFLAGS) $(MPI_LIBS)

@@ -1,14 +1,14 @@
 /* gtrace - a Whitted ray tracer written only against the generic colour and material interfaces.
  * main.c: the command line, loading, rendering, writing, and the summary line. */
-#include "parse.h"
-#include "accel.h"
-#include "bands.h"
-#include "dist.h"
-#include "merge.h"
-#include "mpi_load.h"
-#include "render.h"
-#include "output.h"
-#include "probe_env.h"
+#include "scenefile/parse.h"
+#include "scene/accel.h"
+#include "integrators/bands.h"
+#include "distributed/dist.h"
+#include "film/merge.h"
+#include "distributed/mpi_load.h"
+#include "render/render.h"
+#include "film/output.h"
+#include "lights/probe_env.h"
 #include "../common/cli.h"
 
 #include <generic/builtins.h>

@@ -4,7 +4,7 @@
 #ifndef GTRACE_DIST_H
 #define GTRACE_DIST_H
 
-#include "render.h"
+#include "render/render.h"
 
 #include <generic/error.h>
 

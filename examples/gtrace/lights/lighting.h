@@ -3,8 +3,8 @@
 #ifndef GTRACE_LIGHTING_H
 #define GTRACE_LIGHTING_H
 
-#include "light.h"
-#include "trace.h"
+#include "scene/light.h"
+#include "trace/trace.h"
 
 #include <generic/color.h>
 #include <generic/surfpoint.h>

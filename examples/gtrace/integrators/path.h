@@ -2,7 +2,7 @@
 #ifndef GTRACE_PATH_H
 #define GTRACE_PATH_H
 
-#include "trace.h"
+#include "trace/trace.h"
 
 #include <generic/color.h>
 

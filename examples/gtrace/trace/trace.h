@@ -2,11 +2,11 @@
 #ifndef GTRACE_TRACE_H
 #define GTRACE_TRACE_H
 
-#include "bands.h"
-#include "geometry.h"
-#include "ray.h"
-#include "rng.h"
-#include "scene.h"
+#include "integrators/bands.h"
+#include "geometry/geometry.h"
+#include "geometry/ray.h"
+#include "camera/rng.h"
+#include "scene/scene.h"
 
 #include <generic/color.h>
 #include <generic/material.h>

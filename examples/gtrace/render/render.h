@@ -2,10 +2,10 @@
 #ifndef GTRACE_RENDER_H
 #define GTRACE_RENDER_H
 
-#include "bands.h"
-#include "framebuffer.h"
-#include "progress.h"
-#include "scene.h"
+#include "integrators/bands.h"
+#include "film/framebuffer.h"
+#include "film/progress.h"
+#include "scene/scene.h"
 
 #include <generic/error.h>
 

@@ -3,8 +3,8 @@
 #ifndef GTRACE_PARSE_H
 #define GTRACE_PARSE_H
 
-#include "probe_env.h"
-#include "scene.h"
+#include "lights/probe_env.h"
+#include "scene/scene.h"
 
 #include <generic/error.h>
 #include <generic/reader.h>

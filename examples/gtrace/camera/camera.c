@@ -7,7 +7,7 @@
  * on the image plane at unit distance (aperture * |1/z - 1/focus| * height / (2 tan(fov/2)) pixels). With
  * aperture 0 the offset is exactly 0 and the ray is the pinhole's, bit for bit. */
 #include "camera.h"
-#include "bands.h"
+#include "integrators/bands.h"
 
 #include <math.h>
 

@@ -29,7 +29,7 @@
  * friends, which read them as lights), so the tracer stays free of any colour model. The entry owns the
  * probe and the lights it makes; the scene only points at them. */
 #include "probe_env.h"
-#include "progress.h"
+#include "film/progress.h"
 
 #include <math.h>
 #include <stdio.h>

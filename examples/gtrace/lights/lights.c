@@ -30,7 +30,7 @@
  * light before it is reflected, which the sum carries as well; the absorption of the medium the point lies in acts
  * on the reflected light, so a sample at a finite distance in a medium is still reflected on its own. */
 #include "lighting.h"
-#include "accel.h"
+#include "scene/accel.h"
 
 #include <generic/kit/material_kit.h>
 

@@ -3,9 +3,9 @@
 #ifndef GTRACE_PROBE_ENV_H
 #define GTRACE_PROBE_ENV_H
 
-#include "light.h"
+#include "scene/light.h"
 #include "probe_dist.h"
-#include "scene.h"
+#include "scene/scene.h"
 
 #include <generic/color.h>
 #include <generic/error.h>

@@ -19,10 +19,10 @@
  * bounces instead of branching to the depth limit).
  * Colours only through gcolor_*, materials only through gmaterial_*; temporaries live on the thread's
  * scratch arena and are released before returning. */
-#include "trace.h"
-#include "accel.h"
-#include "lighting.h"
-#include "probe_env.h"
+#include "trace/trace.h"
+#include "scene/accel.h"
+#include "lights/lighting.h"
+#include "lights/probe_env.h"
 
 #include <math.h>
 

@@ -2,8 +2,8 @@
 #ifndef GTRACE_ACCEL_H
 #define GTRACE_ACCEL_H
 
-#include "geometry.h"
-#include "ray.h"
+#include "geometry/geometry.h"
+#include "geometry/ray.h"
 #include "scene.h"
 
 #include <generic/error.h>

@@ -3,10 +3,10 @@
 #ifndef GTRACE_SCENE_H
 #define GTRACE_SCENE_H
 
-#include "camera.h"
-#include "geometry.h"
+#include "camera/camera.h"
+#include "geometry/geometry.h"
 #include "light.h"
-#include "object.h"
+#include "geometry/object.h"
 
 #include <generic/color.h>
 #include <generic/error.h>

@@ -3,8 +3,8 @@
 #ifndef GTRACE_ACCEL_DIRECT_H
 #define GTRACE_ACCEL_DIRECT_H
 
-#include "geometry.h"
-#include "ray.h"
+#include "geometry/geometry.h"
+#include "geometry/ray.h"
 #include "scene.h"
 
 #include <generic/error.h>

@@ -6,7 +6,7 @@
  * piece, and the result is written in the same layout. Nothing is written when the pieces do not fit:
  * the messages name the pieces at fault. */
 #include "merge.h"
-#include "../common/cli.h"
+#include "../../common/cli.h"
 
 #include <generic/services/image.h>
 #include <generic/memory.h>

@@ -6,9 +6,9 @@
  * branches beyond are not traced, and the samples so cut are counted); pixels leave the colour model through its XYZ conversion (as a light)
  * and become linear sRGB. */
 #include "render.h"
-#include "trace.h"
-#include "path.h"
-#include "progress.h"
+#include "trace/trace.h"
+#include "integrators/path.h"
+#include "film/progress.h"
 
 #include <generic/services/image.h>
 

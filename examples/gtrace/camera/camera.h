@@ -2,7 +2,7 @@
 #ifndef GTRACE_CAMERA_H
 #define GTRACE_CAMERA_H
 
-#include "ray.h"
+#include "geometry/ray.h"
 #include "rng.h"
 
 #include <generic/material.h>

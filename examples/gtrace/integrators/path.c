@@ -45,9 +45,9 @@
  * gmaterial_*; temporaries live on the thread's scratch arena and are released at every level: no allocation
  * per ray. */
 #include "path.h"
-#include "accel.h"
-#include "lighting.h"
-#include "probe_env.h"
+#include "scene/accel.h"
+#include "lights/lighting.h"
+#include "lights/probe_env.h"
 
 #include <math.h>
 

@@ -29,9 +29,9 @@
  *   camera orthographic { from P at Q up U size S width W height H ... }  (no fov)
  * Spot cones are full opening angles in degrees (inner: full intensity, outer: none). cutoff: rays whose
  * weight in their pixel is below W are not traced (default 1e-3, 0 traces everything to the depth). */
-#include "bands.h"
+#include "integrators/bands.h"
 #include "parse.h"
-#include "geometry.h"
+#include "geometry/geometry.h"
 
 #include <math.h>
 #include <stdio.h>
