@@ -1,28 +1,22 @@
-/* test_gtrace_common.h - shared by the gtrace test programs: the tracer's sources compiled into the test
- * (everything but main.c) and helpers that build scenes from C and render them small. */
+/* test_gtrace_common.h - shared by the gtrace test programs, which link the tracer's library (libgtrace.a): its
+ * headers and helpers that build scenes from C and render them small. */
 #ifndef TEST_GTRACE_COMMON_H
 #define TEST_GTRACE_COMMON_H
 
-#include "examples/gtrace/scene/accel.c"
-#include "examples/gtrace/scene/accel_direct.c"
-#include "examples/gtrace/integrators/bands.c"
-#include "examples/gtrace/camera/camera.c"
-#include "examples/gtrace/film/framebuffer.c"
-#include "examples/gtrace/lights/light_seen.c"
-#include "examples/gtrace/lights/lights.c"
-#include "examples/gtrace/geometry/mesh.c"
-#include "examples/gtrace/geometry/mesh_assimp.c"
-#include "examples/gtrace/film/output.c"
-#include "examples/gtrace/scenefile/parse.c"
-#include "examples/gtrace/integrators/path.c"
-#include "examples/gtrace/lights/probe_light.c"
-#include "examples/gtrace/lights/probe_sample.c"
-#include "examples/gtrace/film/progress.c"
-#include "examples/gtrace/render/render.c"
-#include "examples/gtrace/scene/scene.c"
-#include "examples/gtrace/integrators/whitted.c"
-#include "examples/gtrace/geometry/shapes.c"
-#include "examples/gtrace/geometry/transform.c"
+#include "film/framebuffer.h"
+#include "film/output.h"
+#include "film/progress.h"
+#include "geometry/geometry.h"
+#include "integrators/bands.h"
+#include "integrators/path.h"
+#include "lights/lighting.h"
+#include "lights/probe_env.h"
+#include "render/render.h"
+#include "scene/accel.h"
+#include "scene/accel_direct.h"
+#include "scene/scene.h"
+#include "scenefile/parse.h"
+#include "trace/trace.h"
 
 #include "generic/materials.h"
 

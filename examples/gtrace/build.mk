@@ -14,8 +14,10 @@ $(GTRACE_LIB): $(GTRACE_SRC:%.c=$(BUILD)/obj/%.o)
 # gtrace's files include each other as "folder/name.h" across its folders (and "name.h" within one)
 $(call objs_of,examples/gtrace/%.o): CPPFLAGS += -Iexamples/gtrace
 $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tests/test_gtrace*.c)): CPPFLAGS += -Iexamples/gtrace
-$(BUILD)/tests/test_gtrace: TESTLIBS += $(GTRACE_LIBS)
-$(BUILD)/tests/test_gtrace_%: TESTLIBS += $(GTRACE_LIBS)
+# the test programs of the tracer link the library
+GTRACE_TEST_BIN := $(patsubst tests/%.c,$(BUILD)/tests/%,$(wildcard tests/test_gtrace*.c))
+$(GTRACE_TEST_BIN): $(GTRACE_LIB)
+$(GTRACE_TEST_BIN): TESTLIBS += $(GTRACE_LIB) $(GTRACE_LIBS)
 
 ifeq ($(LTO),)
 # the tool: main.c (the top Makefile's rule for examples/TOOL/*.c) and the library

@@ -38,6 +38,11 @@ int light_gather_finish(GSurfPoint *sp, LightTmp *t, GColor *result);
  * (Fig. 4, light.shade); opaque: the material's opaque() at sp (culls lights behind the surface). */
 int light_shade(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 out_dir,
                 int opaque, LightTmp *t, GColor *result);
+/** The light of one sample arriving at sp from `dir` over `dist` (INFINITY: a distant light) after the surfaces in
+ * between, in place in light (lights.c): blocked by an opaque surface (*visible = 0), passed through the others
+ * along the straight line (their refraction at each interface, the media's absorption); G_OK or a status. */
+int light_transmit(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 dir, double dist,
+                   GColor *light, int *visible);
 /** Adds the light of one sample (lights.c): color * scale arrives from direction `in` over dist (INFINITY
  * for distant light), reflected by the material towards out_dir and shadowed (t->blocked says how); with
  * t->gather, the shadowed light times its cosine goes to t->gathered instead (light_gather_finish reflects it),

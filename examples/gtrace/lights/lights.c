@@ -82,9 +82,8 @@ static int interface_transmit(GSurfPoint *hp, GVec3 dir, const GColor *light, GC
     return rc < 0 ? rc : 1;
 }
 
-/* Light arriving at sp from `dir` over `dist` after the surfaces in between (G_OK, *visible = 0 when blocked). */
-static int transmit(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 dir, double dist,
-                    GColor *light, int *visible)
+int light_transmit(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 dir, double dist,
+                   GColor *light, int *visible)
 {
     const Scene *s = c->scene;
     *visible = 0;
@@ -192,7 +191,7 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
         return gcolor_add(result, result, refl);
     }
     int visible;
-    if ((rc = transmit(c, sp, facing, media, in, dist, illum, &visible)) < 0 || !visible)
+    if ((rc = light_transmit(c, sp, facing, media, in, dist, illum, &visible)) < 0 || !visible)
         return rc;
     if (t->gather) { /* the light that got through, as the material would reflect it */
         t->gathered_any = 1;

@@ -23,7 +23,8 @@
 #include "lanes2.h"
 #include <math.h>
 
-/* The largest scene (in shapes) traced through the direct list: where it stops paying. Measured with callgrind
+/* ACCEL_DIRECT_MAX (accel_direct.h), the largest scene (in shapes) traced through the direct list: where it stops
+ * paying. Measured with callgrind
  * (whole process, millions of instructions, 1 thread, 320x240, depth 8; a checker plane and k lambert spheres,
  * radius up to 1, on a grid across x in [-3, 3] and z in [-2, 2] seen from <0, 2.2, 8>, one point light; the
  * pictures of both paths byte-identical):
@@ -34,9 +35,6 @@
  * up to 16 shapes that is less than Embree's cost per ray, from 17 on more. With one entry's box test at a
  * time the threshold was 8 (a heavier scene then: 342.1 Embree against 340.5 direct at 8 shapes, 342.5 against
  * 346.0 at 9). */
-#ifndef ACCEL_DIRECT_MAX
-#define ACCEL_DIRECT_MAX 16
-#endif
 _Static_assert(ACCEL_DIRECT_MAX >= 0 && ACCEL_DIRECT_MAX <= 31, "the entries met are the bits of an unsigned");
 
 /* One shape of the direct list. */

@@ -9,6 +9,9 @@
 
 #include <generic/error.h>
 
+/** The most shapes a scene traced through the direct list may have (measured: accel_direct.c). */
+#define ACCEL_DIRECT_MAX 16
+
 /** Builds s->direct when the top-level scene is only analytic shapes (spheres, planes, boxes, discs, cylinders;
  * no meshes, quads, triangles, groups or instances), at most ACCEL_DIRECT_MAX of them, and
  * s->accel_embree_only is not set; otherwise leaves it NULL. */
