@@ -9,6 +9,7 @@
 #include "geometry/geometry.h"
 #include "integrators/bands.h"
 #include "integrators/path.h"
+#include "integrators/whitted.h"
 #include "lights/lighting.h"
 #include "lights/probe_env.h"
 #include "render/render.h"

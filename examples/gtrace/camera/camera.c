@@ -7,7 +7,6 @@
  * on the image plane at unit distance (aperture * |1/z - 1/focus| * height / (2 tan(fov/2)) pixels). With
  * aperture 0 the offset is exactly 0 and the ray is the pinhole's, bit for bit. */
 #include "camera.h"
-#include "integrators/bands.h"
 
 #include <math.h>
 
@@ -23,7 +22,7 @@ void camera_defaults(Camera *c)
     c->depth = 8;
     c->cutoff = 1e-3;
     c->exposure = 0.0;
-    c->bands = BANDS_DEFAULT_CAP;
+    c->bands = 0;
     c->projection = CAMERA_PINHOLE;
     c->aperture = 0.0;
     c->focus_distance = 0.0;

@@ -26,7 +26,8 @@ typedef struct Camera {
     int spp, depth;        /**< samples per pixel, recursion depth */
     double cutoff;         /**< adaptive depth: rays whose weight in the pixel falls below this are not traced */
     double exposure;       /**< stops applied to .png/.jpg output */
-    int bands;             /**< most wavelength groups a dispersive refraction splits into (bands.h) */
+    int bands;             /**< most wavelength groups a dispersive refraction splits into (0: the renderer's
+                                default, integrators/bands.h) */
     GMaterial *medium;     /**< the medium the camera is in (borrowed from the library; NULL: vacuum) */
     /* derived by camera_setup */
     GVec3 eye, right, upv, forward;
@@ -35,7 +36,7 @@ typedef struct Camera {
     double spread;         /**< ray cone spread angle per pixel (radians) */
 } Camera;
 
-/** Default camera: looking down -z from (0,0,5), 40 degrees, 320x240, 1 spp, depth 8. */
+/** Default camera: looking down -z from (0,0,5), 40 degrees, 320x240, 1 spp, depth 8, the default bands. */
 void camera_defaults(Camera *c);
 /** Computes the camera frame for an image size. */
 void camera_setup(Camera *c, int width, int height);

@@ -1,4 +1,4 @@
-/* mpi_module.h - the interface between gtrace and its MPI module, gtrace_mpi.so (examples/gtrace/mpi/transport.c).
+/* mpi_module.h - the interface between gtrace and its MPI module, gtrace_mpi.so (mpi/transport.c).
  * Open MPI maps a few dozen libraries and takes tens of milliseconds to start, so gtrace does not link it: the
  * module is opened (mpi_load.c) only when gtrace runs under mpirun. It holds MPI's few calls that gtrace needs,
  * each bounded by a timeout where it waits, and reports failures as text; the scheduling is gtrace's (dist.c). */

@@ -2,7 +2,7 @@
 #ifndef GTRACE_OUTPUT_H
 #define GTRACE_OUTPUT_H
 
-#include "render/render.h"
+#include "framebuffer.h"
 
 #include <generic/error.h>
 #include <generic/services/image.h>

@@ -1,6 +1,6 @@
 /* bands.h - wavelength bands for dispersion (bands.c): the colour model's bands, grouped into at most a cap,
  * with one mask per group. A refraction whose relative index differs between the groups splits the ray: each
- * group is refracted with its own index and carries only its own light (shade.c). */
+ * group is refracted with its own index and carries only its own light (whitted.c). */
 #ifndef GTRACE_BANDS_H
 #define GTRACE_BANDS_H
 

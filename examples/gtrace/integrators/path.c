@@ -37,7 +37,7 @@
  * Dispersion (hero band): when the relative index at a non-opaque surface differs between the wavelength
  * groups (bands.h) and the path does not carry a group yet, one group is chosen uniformly; the material is
  * sampled with that group's index, and a transmitted sample keeps only the group's light (its mask) times
- * the number of groups, and carries the group on (later interfaces refract with its index, as shade.c).
+ * the number of groups, and carries the group on (later interfaces refract with its index, as whitted.c).
  *
  * Random numbers: the thread's PCG32 generator (TraceCtx.rng, which lights.c and probe_sample.c draw from
  * too), re-seeded for each path from the pixel's index and the sample's index and restored afterwards, so the
@@ -45,6 +45,7 @@
  * gmaterial_*; temporaries live on the thread's scratch arena and are released at every level: no allocation
  * per ray. */
 #include "path.h"
+#include "bands.h"
 #include "scene/accel.h"
 #include "lights/lighting.h"
 #include "lights/probe_env.h"

@@ -8,6 +8,7 @@
 #include "render.h"
 #include "trace/trace.h"
 #include "integrators/path.h"
+#include "integrators/whitted.h"
 #include "film/progress.h"
 
 #include <generic/services/image.h>

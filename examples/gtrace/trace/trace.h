@@ -1,8 +1,8 @@
-/* trace.h - tracing a ray and shading what it hits: the paper's Fig. 4 (shade.c). */
+/* trace.h - what the integrators (integrators/) and the lights (lights/) share: the per-thread tracing context,
+ * the stack of media a ray travels through and the surface point at a hit (trace.c). */
 #ifndef GTRACE_TRACE_H
 #define GTRACE_TRACE_H
 
-#include "integrators/bands.h"
 #include "geometry/geometry.h"
 #include "geometry/ray.h"
 #include "camera/rng.h"
@@ -19,11 +19,11 @@
 /** The colours a TraceCtx owns (TraceCtx.tmp), each for one job that holds it without tracing another ray meanwhile,
  * so that no two users can meet: light shading (lighting.h's LightTmp), the shadow ray's walk through glass
  * (lights.c), the refraction indices on both sides of a surface (trace_relative_index), a shading point's
- * ambient and absorbed light (shade.c), and what a material passes on of a secondary ray's light (shade.c's
+ * ambient and absorbed light (whitted.c), and what a material passes on of a secondary ray's light (whitted.c's
  * trace_secondary, before and after the ray, not across it). */
 enum {
     TRACE_TMP_ILLUM, TRACE_TMP_REFL, TRACE_TMP_LIGHT, TRACE_TMP_GATHER, /* LightTmp */
-    TRACE_TMP_WALK, TRACE_TMP_WALK_RI, TRACE_TMP_WALK_NF, TRACE_TMP_WALK_NT, /* transmit */
+    TRACE_TMP_WALK, TRACE_TMP_WALK_RI, TRACE_TMP_WALK_NF, TRACE_TMP_WALK_NT, /* light_transmit */
     TRACE_TMP_N_FROM, TRACE_TMP_N_TO,                             /* trace_relative_index */
     TRACE_TMP_SHADE, TRACE_TMP_PASS,                              /* shade, trace_secondary */
     TRACE_TMP_COUNT
@@ -43,7 +43,8 @@ typedef struct TraceCtx {
     int capped;     /**< the current camera sample ran out of rays_left */
     int status;     /**< first error (G_OK while fine) */
     const char *culprit; /**< type of the material whose call failed first (NULL: none or not a material) */
-    const Bands *bands;  /**< the wavelength groups a dispersive refraction splits into (NULL: none) */
+    const struct Bands *bands; /**< the wavelength groups a dispersive refraction splits into (integrators/bands.h;
+                                * NULL: none) */
     int band;            /**< the group the current path carries (-1: all light; set by a dispersive split) */
     GColor tmp[TRACE_TMP_COUNT]; /**< temporaries made once with the context (trace_ctx_temps); cleared in a
                                   * context built without them, whose users then take arena storage (trace_tmp) */
@@ -78,8 +79,6 @@ const GMaterial *media_top(const Media *m);
 void media_copy(Media *out, const Media *in);
 /** The media after crossing the surface of mat: entering pushes it, leaving removes it. */
 void media_cross(const Media *in, const GMaterial *mat, int entering, Media *out);
-/** Radiance arriving along r (Fig. 4: closest hit, then shade). out must have storage. */
-int trace_ray(TraceCtx *c, const Ray *r, const Media *media, int depth, GColor *out);
 /** The relative refraction index n(from) / n(to) at sp, into ri (given storage from the thread's arena). */
 int trace_relative_index(TraceCtx *c, GSurfPoint *sp, GColor *ri);
 /** Offsets a point off a surface to the side `dir` leaves on, against self-intersection. */
