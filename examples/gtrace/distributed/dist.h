@@ -30,8 +30,8 @@ enum { DIST_SENT = 1, DIST_QUIT = 2 };
 typedef struct Dist Dist;
 
 /** Loads the MPI module (mpi_load.h) and initialises MPI. G_ERR_IO with the reason when either fails. On rank
- * 0, until dist_render returns, a SIGTERM (the launcher ending the job because a rank died) prints that the
- * job was ended before the image was complete and exits with status 1. */
+ * 0, until dist_render returns (until dist_finish when it failed), a SIGTERM (the launcher ending the job because a
+ * rank died) prints that the job was ended before the image was complete and exits with status 1. */
 int dist_start(Dist **out, GError *err);
 
 /** This process's rank and the number of ranks. */
@@ -47,12 +47,14 @@ uint64_t dist_digest(const char *scene_path, const char *model, const RenderSett
  * returns an error with every failing rank's message and the others DIST_QUIT; so does a rank
  * with another digest. Then the blocks are rendered. Rank 0 returns G_OK with the whole image (or crop) in fb
  * and the job's totals in st; the others return DIST_SENT once their part is sent. A rank that falls silent for
- * ds->timeout seconds, a failed render or a lost message ends the whole job (MPI_Abort, exit status 1) after
- * the message is printed: no image is written. */
+ * ds->timeout seconds, a failed render or a lost message fails the whole job: G_ERR_IO with the message in err
+ * (rank 0: "...; the job is ended and no image written", another: "rank R: ...; the job is ended"), and
+ * dist_finish then ends every rank. */
 int dist_render(Dist *d, const DistSettings *ds, int load_status, const char *load_msg, uint64_t digest,
                 const Scene *s, const RenderSettings *rs, Framebuffer *fb, RenderStats *st, GError *err);
 
-/** MPI_Finalize and frees d (NULL: no-op). */
+/** Ends this rank's part of the job and frees d (NULL: no-op): MPI_Finalize, or, after dist_render failed the job
+ * (its message printed by the caller), MPI_Abort of every rank with exit status 1, which does not return. */
 void dist_finish(Dist *d);
 
 #endif

@@ -17,7 +17,7 @@ static size_t floats_per_pixel(const Framebuffer *fb)
     return n;
 }
 
-int framebuffer_alloc(Framebuffer *fb)
+int framebuffer_alloc(Framebuffer *fb, GError *err)
 {
     size_t npix = (size_t)fb->width * (size_t)fb->height;
     int ok = 1;
@@ -26,9 +26,10 @@ int framebuffer_alloc(Framebuffer *fb)
     ok = ok && ((count) <= 0 || fb->name);
     FRAMEBUFFER_ARRAYS(ALLOC)
 #undef ALLOC
-    if (!ok)
-        framebuffer_free(fb);
-    return ok ? 0 : -1;
+    if (ok)
+        return G_OK;
+    framebuffer_free(fb);
+    return gerror_set(err, G_ERR_NOMEM, "out of memory for a %dx%d image", fb->width, fb->height);
 }
 
 void framebuffer_free(Framebuffer *fb)

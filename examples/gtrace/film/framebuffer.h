@@ -3,6 +3,8 @@
 #ifndef GTRACE_FRAMEBUFFER_H
 #define GTRACE_FRAMEBUFFER_H
 
+#include <generic/error.h>
+
 #include <stddef.h>
 
 /** Every per-pixel array of a framebuffer, as X(name, floats per pixel): the struct's fields, their allocation,
@@ -27,8 +29,9 @@ typedef struct Framebuffer {
 } Framebuffer;
 
 /** Allocates every per-pixel array for fb's width x height, zeroed (pages never written cost no memory, so a
- * process that renders a few tiles of a large image touches only those). 0, or -1 with nothing allocated. */
-int framebuffer_alloc(Framebuffer *fb);
+ * process that renders a few tiles of a large image touches only those). G_OK, or G_ERR_NOMEM with nothing
+ * allocated (the arrays and the wavelengths freed). */
+int framebuffer_alloc(Framebuffer *fb, GError *err);
 
 /** Frees the per-pixel arrays and the wavelengths (NULL or a zeroed framebuffer: no-op). */
 void framebuffer_free(Framebuffer *fb);

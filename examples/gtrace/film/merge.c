@@ -1,61 +1,37 @@
-/* merge.c - `gtrace merge PIECES... -o OUT`: the pieces are crops of one render (`gtrace --crop`, e.g. the tasks of
- * a scheduler's array job), OpenEXR files whose data windows say where they lie in the full image (the display
- * window). Every piece must name the same full image and channel count, and together they must cover it exactly
- * once; the pixels are copied unchanged, so the result equals the full render bit for bit. Pieces rendered with
- * --spectral are joined with their spectra (gimage_read_spectra), which must be at the same wavelengths in every
- * piece, and the result is written in the same layout. Nothing is written when the pieces do not fit:
- * the messages name the pieces at fault. */
+/* merge.c - joining crops of one render (merge.h): the pieces (`gtrace --crop`, e.g. the tasks of a scheduler's
+ * array job) are OpenEXR files whose data windows say where they lie in the full image (the display window). Every
+ * piece must name the same full image and channel count, and together they must cover it exactly once; the pixels
+ * are copied unchanged, so the result equals the full render bit for bit. Pieces rendered with --spectral are
+ * joined with their spectra (gimage_read_spectra), which must be at the same wavelengths in every piece, and the
+ * result is written in the same layout. Nothing is written when the pieces do not fit: the message names the
+ * pieces at fault. */
 #include "merge.h"
-#include "../../common/cli.h"
 
 #include <generic/services/image.h>
 #include <generic/memory.h>
 
-#include <stdio.h>
 #include <string.h>
 
-static void merge_usage(FILE *f)
+/* Reads every piece's window and checks that they tile one full image exactly: G_OK, or the first misfit found
+ * (a piece of another image or outside it, then two pieces that overlap, then a pixel that none covers) in err. */
+static int check_pieces(char *const *paths, int n, GImageWindow *win, GError *err)
 {
-    fprintf(f,
-            "usage: gtrace merge PIECE... -o OUT [-q]\n"
-            "Joins crops of one render (gtrace --crop X0,Y0,X1,Y1 -o PIECE.exr, rendered as separate processes,\n"
-            "e.g. the tasks of a Slurm or HTCondor array job) into the full image. Each piece is an OpenEXR file\n"
-            "whose data window is its place in the full image (its display window), as gtrace writes a crop; the\n"
-            "pieces must share the full image size and channels and cover it exactly once (no overlap, no gap).\n"
-            "Pieces rendered with --spectral keep their values at the colour model's wavelengths (channels\n"
-            "S0.<nm>nm): all of them must have the same wavelengths, and OUT must be an .exr.\n"
-            "Pixels are copied unchanged: the merged image equals a single render bit for bit. See\n"
-            "docs/distributed.md.\n"
-            "  -o OUT       the merged image (.exr keeps the floats; other formats are display-encoded)\n"
-            "  -q, --quiet  no summary line\n"
-            "  -h, --help   this text\n"
-            "  --version    the version\n" CLI_EXIT_STATUS_HELP);
-}
-
-/* Reads every piece's window and checks that they tile one full image exactly. 0, or -1 after the messages. */
-static int check_pieces(char **paths, int n, GImageWindow *win)
-{
-    GError err;
-    int bad = 0;
     for (int i = 0; i < n; i++) {
-        if (gimage_window(paths[i], &win[i], &err) != G_OK) {
-            fprintf(stderr, "gtrace merge: %s\n", err.message);
-            return -1;
-        }
-        const GImageWindow *w = &win[i], *f = &win[0];
-        if (w->full_width != f->full_width || w->full_height != f->full_height) {
-            fprintf(stderr, "gtrace merge: %s is a piece of a %dx%d image, %s of a %dx%d one: pieces of another "
-                    "render\n", paths[i], w->full_width, w->full_height, paths[0], f->full_width, f->full_height);
-            bad = 1;
-        } else if (w->x < 0 || w->y < 0 || (long long)w->x + w->width > w->full_width ||
-                   (long long)w->y + w->height > w->full_height) {
-            fprintf(stderr, "gtrace merge: %s: its %dx%d pixels at %d,%d reach outside the %dx%d image\n", paths[i],
-                    w->width, w->height, w->x, w->y, w->full_width, w->full_height);
-            bad = 1;
-        }
+        int rc = gimage_window(paths[i], &win[i], err);
+        if (rc != G_OK)
+            return rc;
     }
-    if (bad)
-        return -1;
+    for (int i = 0; i < n; i++) {
+        const GImageWindow *w = &win[i], *f = &win[0];
+        if (w->full_width != f->full_width || w->full_height != f->full_height)
+            return gerror_set(err, G_ERR_MISMATCH, "%s is a piece of a %dx%d image, %s of a %dx%d one: pieces of "
+                              "another render", paths[i], w->full_width, w->full_height, paths[0], f->full_width,
+                              f->full_height);
+        if (w->x < 0 || w->y < 0 || (long long)w->x + w->width > w->full_width ||
+            (long long)w->y + w->height > w->full_height)
+            return gerror_set(err, G_ERR_MISMATCH, "%s: its %dx%d pixels at %d,%d reach outside the %dx%d image",
+                              paths[i], w->width, w->height, w->x, w->y, w->full_width, w->full_height);
+    }
     long long area = 0;
     for (int i = 0; i < n; i++) {
         area += (long long)win[i].width * win[i].height;
@@ -64,15 +40,11 @@ static int check_pieces(char **paths, int n, GImageWindow *win)
             int x0 = a->x > b->x ? a->x : b->x, y0 = a->y > b->y ? a->y : b->y;
             int x1 = a->x + a->width < b->x + b->width ? a->x + a->width : b->x + b->width;
             int y1 = a->y + a->height < b->y + b->height ? a->y + a->height : b->y + b->height;
-            if (x0 < x1 && y0 < y1) {
-                fprintf(stderr, "gtrace merge: %s and %s overlap (pixels %d,%d to %d,%d are in both)\n", paths[k],
-                        paths[i], x0, y0, x1 - 1, y1 - 1);
-                bad = 1;
-            }
+            if (x0 < x1 && y0 < y1)
+                return gerror_set(err, G_ERR_MISMATCH, "%s and %s overlap (pixels %d,%d to %d,%d are in both)",
+                                  paths[k], paths[i], x0, y0, x1 - 1, y1 - 1);
         }
     }
-    if (bad)
-        return -1;
     long long full = (long long)win[0].full_width * win[0].full_height;
     if (area < full) { /* disjoint pieces inside the image: some pixels are in none; name the first */
         for (int y = 0; y < win[0].full_height; y++)
@@ -80,19 +52,17 @@ static int check_pieces(char **paths, int n, GImageWindow *win)
                 int in = 0;
                 for (int i = 0; i < n && !in; i++)
                     in = x >= win[i].x && x < win[i].x + win[i].width && y >= win[i].y && y < win[i].y + win[i].height;
-                if (!in) {
-                    fprintf(stderr, "gtrace merge: the pieces leave %lld of the %dx%d image's pixels uncovered, the "
-                            "first at %d,%d (a piece is missing)\n", full - area, win[0].full_width,
-                            win[0].full_height, x, y);
-                    return -1;
-                }
+                if (!in)
+                    return gerror_set(err, G_ERR_MISMATCH, "the pieces leave %lld of the %dx%d image's pixels "
+                                      "uncovered, the first at %d,%d (a piece is missing)", full - area,
+                                      win[0].full_width, win[0].full_height, x, y);
             }
     }
-    return 0;
+    return G_OK;
 }
 
 /* The spectra of piece i (count 0: none) against the first piece's: G_OK, or the mismatch in err. */
-static int same_wavelengths(char **paths, int i, const GImageSpectraBuf *sp, const GImageSpectraBuf *first,
+static int same_wavelengths(char *const *paths, int i, const GImageSpectraBuf *sp, const GImageSpectraBuf *first,
                             GError *err)
 {
     if (sp->count != first->count) {
@@ -124,7 +94,7 @@ static void place(float *full, int fw, const float *piece, int x, int y, int w, 
 /* Copies every piece into the full image, and their spectra (the values at the colour model's wavelengths that
  * --spectral stores) into the full spectra: wavelengths and values (NULL when the pieces have none), count
  * their number. G_OK or the error in err. */
-static int assemble(char **paths, int n, const GImageWindow *win, GImage *full, GImageSpectraBuf *spectra,
+static int assemble(char *const *paths, int n, const GImageWindow *win, GImage *full, GImageSpectraBuf *spectra,
                     GError *err)
 {
     full->pixels = NULL;
@@ -197,65 +167,24 @@ static int write_merged(const char *out, const GImage *full, const GImageSpectra
     return gimage_write(out, full, &opt, err);
 }
 
-int merge_main(int argc, char **argv)
+int merge_pieces(char *const *paths, int n, const char *out, int *width, int *height, GError *err)
 {
-    static const struct option longopts[] = {
-        CLI_COMMON_OPTIONS,
-        {"output", required_argument, NULL, 'o'},
-        {"quiet", no_argument, NULL, 'q'},
-        {NULL, 0, NULL, 0},
-    };
-    const char *out = NULL;
-    int quiet = 0, c;
-    CliParser p;
-    cli_begin(&p, "gtrace merge", argc, argv, "ho:q", longopts);
-    while ((c = cli_next(&p)) != -1) {
-        switch (c) {
-        case 'h':
-            merge_usage(stdout);
-            return 0;
-        case CLI_VERSION:
-            cli_version("gtrace");
-            return 0;
-        case 'o':
-            out = optarg;
-            break;
-        case 'q':
-            quiet = 1;
-            break;
-        default:
-            return 2;
-        }
-    }
-    int n;
-    char **paths = cli_operands(&p, &n);
-    if (n < 1 || !out) {
-        fprintf(stderr, "gtrace merge: %s\n", n < 1 ? "no pieces given" : "no output file given (-o OUT)");
-        merge_usage(stderr);
-        return 2;
-    }
-    GError err;
-    if (gimage_check_output(out, &err) != G_OK) {
-        fprintf(stderr, "gtrace merge: %s\n", err.message);
-        return 1;
-    }
+    if (n < 1)
+        return gerror_set(err, G_ERR_INVALID, "no pieces given");
+    int rc = gimage_check_output(out, err); /* before the pieces are read */
+    if (rc != G_OK)
+        return rc;
     GImageWindow *win = gmem_calloc((size_t)n, sizeof *win);
-    if (!win) {
-        fprintf(stderr, "gtrace merge: out of memory\n");
-        return 1;
-    }
+    if (!win)
+        return gerror_set(err, G_ERR_NOMEM, "out of memory for %d pieces", n);
     GImage full = {0};
     GImageSpectraBuf spectra = {0};
-    int status = check_pieces(paths, n, win) != 0 ? 1 : 0;
-    if (!status && (assemble(paths, n, win, &full, &spectra, &err) != G_OK ||
-                    write_merged(out, &full, &spectra, &err) != G_OK)) {
-        fprintf(stderr, "gtrace merge: %s\n", err.message);
-        status = 1;
-    }
-    if (!status && !quiet)
-        printf("gtrace merge: %s %dx%d from %d piece%s\n", out, full.width, full.height, n, n > 1 ? "s" : "");
+    if ((rc = check_pieces(paths, n, win, err)) == G_OK && (rc = assemble(paths, n, win, &full, &spectra, err)) == G_OK)
+        rc = write_merged(out, &full, &spectra, err);
+    *width = full.width;
+    *height = full.height;
     gimage_free(&full);
     gimage_spectra_free(&spectra);
     gmem_free(win);
-    return status;
+    return rc;
 }

@@ -297,15 +297,16 @@ int renderer_create(Renderer **out, const Scene *s, const RenderSettings *rs, Fr
         for (int k = 0; ok && k < TILE; k++)
             ok = gcolor_scratch(&w->pixel[k], s->model, w->ctx.scratch) == G_OK;
     }
-    if (ok && rs->waves && (rc = set_wavelengths(fb, s->model, err)) != G_OK) {
+    if (!ok)
+        rc = gerror_set(err, G_ERR_NOMEM, "out of memory for a %dx%d image", fb->width, fb->height);
+    if (rc == G_OK && rs->waves)
+        rc = set_wavelengths(fb, s->model, err);
+    if (rc == G_OK)
+        rc = framebuffer_alloc(fb, err);
+    if (rc != G_OK) {
         framebuffer_free(fb);
         renderer_destroy(r);
         return rc;
-    }
-    if (!ok || framebuffer_alloc(fb) != 0) {
-        framebuffer_free(fb);
-        renderer_destroy(r);
-        return gerror_set(err, G_ERR_NOMEM, "out of memory for a %dx%d image", fb->width, fb->height);
     }
     *out = r;
     return G_OK;
