@@ -62,7 +62,7 @@ static int trace_secondary(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 faci
     if (diagonal) /* the pass-on of 1 is kept across the ray (written in full by the material: not cleared) */
         CHECK(gcolor_scratch_uncleared(&tmp, c->scene->model, c->scratch));
     else
-        CHECK(trace_tmp(c, TRACE_TMP_PASS, &tmp)); /* not held across trace_ray, which uses it too */
+        CHECK(trace_tmp(c, TRACE_TMP_PASS, &tmp)); /* not held across whitted_trace, which uses it too */
     CHECK(pass_on(m, sp, dir, &c->unit, ri, to_viewer, &tmp));
     if (mask)
         CHECK(gcolor_mul(&tmp, mask, &tmp));
@@ -74,12 +74,12 @@ static int trace_secondary(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 faci
         goto done;
     }
     c->rays_left--;
-    CHECK(gcolor_scratch_uncleared(&illum, c->scene->model, c->scratch)); /* trace_ray writes it in full */
+    CHECK(gcolor_scratch_uncleared(&illum, c->scene->model, c->scratch)); /* whitted_trace writes it in full */
     double width = r->cone_width + r->cone_spread * sp->t;
     Ray ray = {offset_origin(sp->point, facing, dir), dir, 0.0, INFINITY, width, r->cone_spread};
     double saved = c->weight;
     c->weight = w;
-    rc = trace_ray(c, &ray, next, depth + 1, &illum);
+    rc = whitted_trace(c, &ray, next, depth + 1, &illum);
     c->weight = saved;
     CHECK(rc);
     if (diagonal) { /* its pass-on of 1 (the mask in it) times the ray's light */
@@ -184,7 +184,7 @@ done:
     return rc;
 }
 
-int trace_ray(TraceCtx *c, const Ray *r, const Media *media, int depth, GColor *out)
+int whitted_trace(TraceCtx *c, const Ray *r, const Media *media, int depth, GColor *out)
 {
     Hit h;
     c->rays++;

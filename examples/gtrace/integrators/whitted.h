@@ -9,6 +9,6 @@
 
 /** Radiance arriving along r (Fig. 4: closest hit, then shade) at recursion depth `depth` (0: a camera ray). out
  * must have storage. */
-int trace_ray(TraceCtx *c, const Ray *r, const Media *media, int depth, GColor *out);
+int whitted_trace(TraceCtx *c, const Ray *r, const Media *media, int depth, GColor *out);
 
 #endif

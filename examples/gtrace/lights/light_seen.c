@@ -1,5 +1,5 @@
 /* light_seen.c - area lights seen by camera rays: a sphere or rectangle light with `visible on` appears as its
- * radiance where a camera ray meets it before any object (trace_ray asks for camera rays only; reflections
+ * radiance where a camera ray meets it before any object (whitted_trace asks for camera rays only; reflections
  * and refractions show the light through the materials' highlights, as before). */
 #include "lighting.h"
 

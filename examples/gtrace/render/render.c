@@ -75,7 +75,7 @@ static int render_pixel(Worker *w, const Job *job, int x, int y, const Ray *ahea
         c->capped = 0;
         rc = job->integrator == RENDER_PATH
                  ? path_trace(c, &r, &job->media0, (uint64_t)y * (uint64_t)job->fb->full_width + (uint64_t)x, i, sample)
-                 : trace_ray(c, &r, &job->media0, 0, sample);
+                 : whitted_trace(c, &r, &job->media0, 0, sample);
         w->capped += (uint64_t)c->capped;
         gscratch_release(c->scratch, m2);
         if (rc < 0)
