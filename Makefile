@@ -247,7 +247,9 @@ clean:
 
 -include $(shell find $(BUILD)/obj $(BUILD)/obj-lto -name '*.d' 2>/dev/null)
 
-include examples/gtrace/build.mk
+# gtrace's rules (a copy of the tree without examples/, as tests/scripts/readme_examples.sh builds the library in,
+# has none)
+-include examples/gtrace/build.mk
 
 # ---- run-time plug-in modules (examples/plugins/, tests/plugins/) ----
 # Each examples/plugins/*.c is one module, built as its own .so into $(BUILD)/plugins/ against the public
