@@ -68,9 +68,6 @@ GEN_WRITERS = $(1)/gen/image_writers.c
 WRITERS_TOOL := $(BUILD)/gen/gen_image_writers
 LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/gen/builtin_types.o $(BUILD)/obj/gen/image_writers.o
 LIBA    := $(BUILD)/lib/libgeneric.a
-# gtrace's objects for the link-time optimised link: the library's and its own, in BUILD/obj-lto
-LTO_OBJ := $(patsubst $(BUILD)/obj/%,$(BUILD)/obj-lto/%,$(LIB_OBJ)) \
-           $(patsubst %.c,$(BUILD)/obj-lto/%.o,$(wildcard examples/gtrace/*.c))
 LIBSO   := $(BUILD)/lib/libgeneric.so.$(SOVER)
 # The OpenImageIO module, found beside libgeneric.so (lib/generic/) or the program (../lib/generic/).
 OIIO_OBJ := $(LIB_CXX:%.cpp=$(BUILD)/obj/%.o)
@@ -157,14 +154,7 @@ $(BUILD)/bin/%: $$(addsuffix .o,$$(addprefix $(BUILD)/obj/,$$(basename $$(wildca
 	$(CC) -rdynamic -o $@ $(filter %.o,$^) -Wl,--whole-archive $(LIBA) -Wl,--no-whole-archive $(LDFLAGS) $(EXTRA_LIBS_$*) $(DEPLIBS)
 
 ifneq ($(LTO),)
-# gtrace, link-time optimised (LTO above): every object of the library is on the command line, as --whole-archive
-# puts them on the others', so plug-ins find all of the library's symbols in the program. -Wmaybe-uninitialized
-# stays a warning at this link: it looks across files there and is prone to false alarms (every object was
-# compiled with it as an error).
-$(BUILD)/bin/gtrace: $(LTO_OBJ) | $(OIIO_SO) $(OCIO_CONFIG)
-	@mkdir -p $(dir $@)
-	$(CC) -rdynamic $(LTO) $(OPT) -g -Wno-error=maybe-uninitialized -o $@ $^ $(LDFLAGS) $(EXTRA_LIBS_gtrace) $(DEPLIBS)
-
+# Objects compiled for link-time optimisation (LTO above): gtrace links them (examples/gtrace/build.mk).
 $(BUILD)/obj-lto/%.o: %.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(LTO) -c $< -o $@
@@ -257,53 +247,9 @@ clean:
 
 -include $(shell find $(BUILD)/obj $(BUILD)/obj-lto -name '*.d' 2>/dev/null)
 
-# ---- gtrace (examples/gtrace): Embree for the tracer, its test programs, and the POV-Ray comparison ----
-EXTRA_LIBS_gtrace := -lembree3 -lassimp
-$(BUILD)/tests/test_gtrace: TESTLIBS += -lembree3 -lassimp
-$(BUILD)/tests/test_gtrace_%: TESTLIBS += -lembree3 -lassimp
-.SECONDARY: $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard examples/gtrace/*.c))
-.PHONY: bench-pov
-bench-pov: $(BUILD)/bin/gtrace $(BUILD)/bench/runstat
-	@bench/pov/bench.sh $(BUILD)
-$(BUILD)/bench/runstat: bench/pov/runstat.c
-	@mkdir -p $(dir $@)
-	$(CC) -std=c11 -O2 -Wall -Wextra -Werror -o $@ $<
-.PHONY: bench-dispersion
-bench-dispersion: $(BUILD)/bin/gtrace
-	@bench/dispersion.sh $(BUILD)
-.PHONY: bench-path
-bench-path: $(BUILD)/bin/gtrace $(BUILD)/bin/gprobe
-	@bench/path.sh $(BUILD)
-bench: bench-pov bench-dispersion bench-path bench-mpi
-# gtrace's MPI module (examples/gtrace/mpi/, examples/gtrace/mpi_module.h), built when Open MPI's development
-# files are found (pkg-config ompi-c; Debian's libopenmpi-dev). gtrace opens it with dlopen only when it runs under
-# mpirun (mpi_load.c), so --help and a render on one machine never map libmpi; without it gtrace still builds and
-# --version says so. Found beside gtrace (../lib/generic/) or in the installed PREFIX/lib/generic/.
-$(call objs_of,examples/gtrace/mpi_load.o): CPPFLAGS += -DGTRACE_MPI_LIBDIR='"$(PREFIX)/lib"'
-MPI_CFLAGS := $(shell pkg-config --cflags ompi-c 2>/dev/null)
-MPI_LIBS   := $(shell pkg-config --libs ompi-c 2>/dev/null)
-ifneq ($(MPI_LIBS),)
-GTRACE_MPI_SO := $(BUILD)/lib/generic/gtrace_mpi.so
-$(call objs_of,examples/gtrace/mpi_load.o): CPPFLAGS += -DGTRACE_MPI_BUILT='"gtrace_mpi.so (Open MPI $(shell pkg-config --modversion ompi-c))"'
-$(BUILD)/bin/gtrace: | $(GTRACE_MPI_SO)
-all: $(GTRACE_MPI_SO)
-$(GTRACE_MPI_SO): examples/gtrace/mpi/transport.c examples/gtrace/mpi_module.h
-	@mkdir -p $(dir $@)
-	$(CC) -std=c11 -D_GNU_SOURCE $(OPT) -g -fPIC -shared -fvisibility=hidden $(WARN) $(SANFLAGS) $(MPI_CFLAGS) \
-	    -Wl,-z,defs -o $@ $< $(LDFLAGS) $(MPI_LIBS)
-.PHONY: install-mpi uninstall-mpi
-install: install-mpi
-install-mpi: $(GTRACE_MPI_SO)
-	install -d $(INST)/lib/generic
-	install -m 755 $(GTRACE_MPI_SO) $(INST)/lib/generic/
-uninstall: uninstall-mpi
-uninstall-mpi:
-	rm -f $(INST)/lib/generic/gtrace_mpi.so
-endif
-.PHONY: bench-mpi
-bench-mpi: $(BUILD)/bin/gtrace
-	@bench/mpi.sh $(BUILD)
-# (end of gtrace)
+# gtrace's rules (a copy of the tree without examples/, as tests/scripts/readme_examples.sh builds the library in,
+# has none)
+-include examples/gtrace/build.mk
 
 # ---- run-time plug-in modules (examples/plugins/, tests/plugins/) ----
 # Each examples/plugins/*.c is one module, built as its own .so into $(BUILD)/plugins/ against the public

@@ -1,28 +1,23 @@
-/* test_gtrace_common.h - shared by the gtrace test programs: the tracer's sources compiled into the test
- * (everything but main.c) and helpers that build scenes from C and render them small. */
+/* test_gtrace_common.h - shared by the gtrace test programs, which link the tracer's library (libgtrace.a): its
+ * headers and helpers that build scenes from C and render them small. */
 #ifndef TEST_GTRACE_COMMON_H
 #define TEST_GTRACE_COMMON_H
 
-#include "examples/gtrace/accel.c"
-#include "examples/gtrace/accel_direct.c"
-#include "examples/gtrace/bands.c"
-#include "examples/gtrace/camera.c"
-#include "examples/gtrace/framebuffer.c"
-#include "examples/gtrace/light_seen.c"
-#include "examples/gtrace/lights.c"
-#include "examples/gtrace/mesh.c"
-#include "examples/gtrace/mesh_assimp.c"
-#include "examples/gtrace/output.c"
-#include "examples/gtrace/parse.c"
-#include "examples/gtrace/path.c"
-#include "examples/gtrace/probe_light.c"
-#include "examples/gtrace/probe_sample.c"
-#include "examples/gtrace/progress.c"
-#include "examples/gtrace/render.c"
-#include "examples/gtrace/scene.c"
-#include "examples/gtrace/shade.c"
-#include "examples/gtrace/shapes.c"
-#include "examples/gtrace/transform.c"
+#include "film/framebuffer.h"
+#include "film/output.h"
+#include "film/progress.h"
+#include "geometry/geometry.h"
+#include "integrators/bands.h"
+#include "integrators/path.h"
+#include "integrators/whitted.h"
+#include "lights/lighting.h"
+#include "lights/probe_env.h"
+#include "render/render.h"
+#include "scene/accel.h"
+#include "scene/accel_direct.h"
+#include "scene/scene.h"
+#include "scenefile/parse.h"
+#include "trace/trace.h"
 
 #include "generic/materials.h"
 

@@ -353,7 +353,7 @@ static double sphere_shadow(Scene *s, double r)
     assert_int_equal(gcolor_alloc(&light, s->model), G_OK);
     assert_int_equal(gcolor_fill(&light, 1.0), G_OK);
     int visible = 0;
-    assert_int_equal(transmit(&c, &sp, facing, &none, gvec3(0, 1, 0), INFINITY, &light, &visible), G_OK);
+    assert_int_equal(light_transmit(&c, &sp, facing, &none, gvec3(0, 1, 0), INFINITY, &light, &visible), G_OK);
     double t = visible ? gcolor_brightness(&light) : 0.0;
     gcolor_free(&light);
     gscratch_destroy(c.scratch);

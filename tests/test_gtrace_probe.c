@@ -99,7 +99,7 @@ static void trace_rgb(Scene *s, GVec3 o, GVec3 d, int repeats, double rgb[3])
     for (int k = 0; k < repeats; k++) {
         rng_seed(&c.rng, 12345 + k, 777);
         Ray r = {o, gvec3_normalize(d), 0.0, INFINITY, 0.0, 0.0};
-        assert_int_equal(trace_ray(&c, &r, &none, 0, &out), G_OK);
+        assert_int_equal(whitted_trace(&c, &r, &none, 0, &out), G_OK);
         assert_int_equal(gcolor_add(&sum, &sum, &out), G_OK);
     }
     assert_int_equal(gcolor_scale(&sum, &sum, 1.0 / repeats), G_OK);

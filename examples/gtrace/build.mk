@@ -1,0 +1,86 @@
+# examples/gtrace/build.mk - gtrace's rules, included by the top Makefile: the tracer as a static library,
+# BUILD/lib/libgtrace.a (the sources of its folders: everything but main.c), which the tool and its test programs
+# link; Embree and assimp for them; the MPI module; and the benchmarks that run gtrace.
+GTRACE_SRC := $(sort $(wildcard examples/gtrace/*/*.c))
+GTRACE_LIB := $(BUILD)/lib/libgtrace.a
+GTRACE_LIBS := -lembree3 -lassimp
+all: $(GTRACE_LIB)
+
+$(GTRACE_LIB): $(GTRACE_SRC:%.c=$(BUILD)/obj/%.o)
+	@mkdir -p $(dir $@)
+	rm -f $@
+	ar rcs $@ $^
+
+# gtrace's files include each other as "folder/name.h" across its folders (and "name.h" within one)
+$(call objs_of,examples/gtrace/%.o): CPPFLAGS += -Iexamples/gtrace
+$(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tests/test_gtrace*.c)): CPPFLAGS += -Iexamples/gtrace
+# the test programs of the tracer link the library
+GTRACE_TEST_BIN := $(patsubst tests/%.c,$(BUILD)/tests/%,$(wildcard tests/test_gtrace*.c))
+$(GTRACE_TEST_BIN): $(GTRACE_LIB)
+$(GTRACE_TEST_BIN): TESTLIBS += $(GTRACE_LIB) $(GTRACE_LIBS)
+
+ifeq ($(LTO),)
+# the tool: main.c (the top Makefile's rule for examples/TOOL/*.c) and the library
+EXTRA_LIBS_gtrace := $(GTRACE_LIB) $(GTRACE_LIBS)
+$(BUILD)/bin/gtrace: $(GTRACE_LIB)
+else
+# The tool, link-time optimised (LTO in the top Makefile): main.c and the library compiled for it into BUILD/obj-lto,
+# the twin of libgtrace.a whole, and every object of libgeneric on the command line, as --whole-archive puts them on
+# the others', so plug-ins find all of the library's symbols in the program. -Wmaybe-uninitialized stays a warning
+# at this link: it looks across files there and is prone to false alarms (every object was compiled with it as an
+# error).
+GTRACE_LTO_LIB := $(BUILD)/obj-lto/libgtrace.a
+LTO_OBJ := $(patsubst $(BUILD)/obj/%,$(BUILD)/obj-lto/%,$(LIB_OBJ)) $(BUILD)/obj-lto/examples/gtrace/main.o
+$(GTRACE_LTO_LIB): $(GTRACE_SRC:%.c=$(BUILD)/obj-lto/%.o)
+	@mkdir -p $(dir $@)
+	rm -f $@
+	ar rcs $@ $^
+
+$(BUILD)/bin/gtrace: $(LTO_OBJ) $(GTRACE_LTO_LIB) | $(OIIO_SO) $(OCIO_CONFIG)
+	@mkdir -p $(dir $@)
+	$(CC) -rdynamic $(LTO) $(OPT) -g -Wno-error=maybe-uninitialized -o $@ $(LTO_OBJ) \
+	    -Wl,--whole-archive $(GTRACE_LTO_LIB) -Wl,--no-whole-archive $(LDFLAGS) $(GTRACE_LIBS) $(DEPLIBS)
+endif
+
+# the POV-Ray comparison and the other benchmarks that run gtrace
+.PHONY: bench-pov
+bench-pov: $(BUILD)/bin/gtrace $(BUILD)/bench/runstat
+	@bench/pov/bench.sh $(BUILD)
+$(BUILD)/bench/runstat: bench/pov/runstat.c
+	@mkdir -p $(dir $@)
+	$(CC) -std=c11 -O2 -Wall -Wextra -Werror -o $@ $<
+.PHONY: bench-dispersion
+bench-dispersion: $(BUILD)/bin/gtrace
+	@bench/dispersion.sh $(BUILD)
+.PHONY: bench-path
+bench-path: $(BUILD)/bin/gtrace $(BUILD)/bin/gprobe
+	@bench/path.sh $(BUILD)
+bench: bench-pov bench-dispersion bench-path bench-mpi
+# gtrace's MPI module (examples/gtrace/distributed/mpi/, examples/gtrace/distributed/mpi_module.h), built when Open MPI's development
+# files are found (pkg-config ompi-c; Debian's libopenmpi-dev). gtrace opens it with dlopen only when it runs under
+# mpirun (mpi_load.c), so --help and a render on one machine never map libmpi; without it gtrace still builds and
+# --version says so. Found beside gtrace (../lib/generic/) or in the installed PREFIX/lib/generic/.
+$(call objs_of,examples/gtrace/distributed/mpi_load.o): CPPFLAGS += -DGTRACE_MPI_LIBDIR='"$(PREFIX)/lib"'
+MPI_CFLAGS := $(shell pkg-config --cflags ompi-c 2>/dev/null)
+MPI_LIBS   := $(shell pkg-config --libs ompi-c 2>/dev/null)
+ifneq ($(MPI_LIBS),)
+GTRACE_MPI_SO := $(BUILD)/lib/generic/gtrace_mpi.so
+$(call objs_of,examples/gtrace/distributed/mpi_load.o): CPPFLAGS += -DGTRACE_MPI_BUILT='"gtrace_mpi.so (Open MPI $(shell pkg-config --modversion ompi-c))"'
+$(BUILD)/bin/gtrace: | $(GTRACE_MPI_SO)
+all: $(GTRACE_MPI_SO)
+$(GTRACE_MPI_SO): examples/gtrace/distributed/mpi/transport.c examples/gtrace/distributed/mpi_module.h
+	@mkdir -p $(dir $@)
+	$(CC) -std=c11 -D_GNU_SOURCE $(OPT) -g -fPIC -shared -fvisibility=hidden $(WARN) $(SANFLAGS) $(MPI_CFLAGS) \
+	    -Wl,-z,defs -o $@ $< $(LDFLAGS) $(MPI_LIBS)
+.PHONY: install-mpi uninstall-mpi
+install: install-mpi
+install-mpi: $(GTRACE_MPI_SO)
+	install -d $(INST)/lib/generic
+	install -m 755 $(GTRACE_MPI_SO) $(INST)/lib/generic/
+uninstall: uninstall-mpi
+uninstall-mpi:
+	rm -f $(INST)/lib/generic/gtrace_mpi.so
+endif
+.PHONY: bench-mpi
+bench-mpi: $(BUILD)/bin/gtrace
+	@bench/mpi.sh $(BUILD)

@@ -1,0 +1,417 @@
+/* path.c - unidirectional path tracing on the generic interfaces (`gtrace --integrator path`).
+ *
+ * Radiance is computed recursively, one path per camera sample. At every surface: the material's emission;
+ * next-event estimation (NEE) to every light unless every lobe of the material is a delta one; then one
+ * direction drawn by gmaterial_sample, the radiance arriving along it traced recursively, divided by the
+ * sample's pdf (and the Russian-roulette probability), and passed on through gmaterial_reflection (or
+ * gmaterial_refraction for a GSAMPLE_TRANSMIT sample). The sample's weight colour is never multiplied in: the
+ * material itself transforms the actual incoming light, so with re-radiation matrices a fluorescent surface
+ * re-radiates the light that really arrives, at every bounce. The weight's brightness only steers Russian
+ * roulette (after PATH_RR_START bounces a path survives with probability min(1, throughput brightness)).
+ *
+ * Lights. Point, spot and directional lights, including the directional lights a probe technique (mediancut,
+ * adaptive, kmeans, irradiance, variance) makes, are delta lights: NEE only, through lights.c's light_shade
+ * (the same shadow rule as the Whitted tracer: transmission through non-opaque surfaces along the straight
+ * line). Sphere and rectangle lights and a `light probe` of technique reference (the environment, importance
+ * sampled by probe_sample.c's probe_light_nee, the Whitted tracer's reference estimator with one direction)
+ * can also be reached by material sampling, so both estimates are combined by multiple importance sampling
+ * with the power heuristic; their shadow rays are blocked by any surface (light through glass reaches them by
+ * material sampling, a caustic, so counting the straight transmission too would count it twice). Material
+ * sampling sees sphere and rectangle lights (one-sided) when they are nearer than the surface hit; a path
+ * after a delta bounce counts them fully. One light sample per light and vertex: the lights' `samples` apply
+ * to the Whitted tracer; a reference probe's `shadows off` does not apply. At a Lambertian material
+ * (GMAT_LAMBERTIAN) the samples' light, each with its MIS weight in it, is gathered and reflected once (lights.c's
+ * light_gather), as in the Whitted tracer.
+ *
+ * The environment. Camera rays and rays after a delta bounce see the background (the background colour, or
+ * the background probe interpolated bilinearly). After a non-delta bounce the background probe is a light:
+ * its pixels (piecewise constant, as its distribution), MIS-weighted against NEE for technique reference;
+ * none of it when a technique's directional lights already carry its light (as in the Whitted tracer, where
+ * the probe's light reaches surfaces only through them); a basis technique (sh, ...) is not used, the probe
+ * itself is reached by material sampling. The ambient light (`light ambient`, Scene.ambient) is a uniform
+ * environment of that radiance behind the background: rays leaving the scene on a path that has had a
+ * non-delta bounce see it, camera rays and the mirror images they see do not. A convex Lambert surface of
+ * albedo a so shows a * ambient, as in the Whitted tracer (material.ambient of Lambert), but occluded and
+ * interreflected.
+ *
+ * Dispersion (hero band): when the relative index at a non-opaque surface differs between the wavelength
+ * groups (bands.h) and the path does not carry a group yet, one group is chosen uniformly; the material is
+ * sampled with that group's index, and a transmitted sample keeps only the group's light (its mask) times
+ * the number of groups, and carries the group on (later interfaces refract with its index, as whitted.c).
+ *
+ * Random numbers: the thread's PCG32 generator (TraceCtx.rng, which lights.c and probe_sample.c draw from
+ * too), re-seeded for each path from the pixel's index and the sample's index and restored afterwards, so the
+ * image does not depend on the thread count or tile order. Colours only through gcolor_*, materials only through
+ * gmaterial_*; temporaries live on the thread's scratch arena and are released at every level: no allocation
+ * per ray. */
+#include "path.h"
+#include "bands.h"
+#include "scene/accel.h"
+#include "lights/lighting.h"
+#include "lights/probe_env.h"
+
+#include <math.h>
+
+typedef struct PathCtx {
+    TraceCtx *c;
+    const Light *env_light; /**< the reference probe light that samples the background probe (NULL: none) */
+    int env_in_lights;      /**< the background probe's light is carried by its technique's directional lights */
+    int scattered;          /**< the current path has had a non-delta bounce (it sees the ambient light) */
+} PathCtx;
+
+#define CHECK(expr)                                                                                                    \
+    do {                                                                                                               \
+        int rc_ = (expr);                                                                                              \
+        if (rc_ < 0) {                                                                                                 \
+            rc = rc_;                                                                                                  \
+            goto done;                                                                                                 \
+        }                                                                                                              \
+    } while (0)
+
+/* The path's random numbers: the thread's generator, seeded for this camera sample by path_trace. */
+static double uniform(PathCtx *p) { return rng_next(&p->c->rng); }
+
+/* The distance along r to area light l within (0, tmax), INFINITY when missed; *pdf is the density (solid
+ * angle) with which NEE from r->o draws that direction. */
+static double area_light_hit(const Light *l, const Ray *r, double tmax, double *pdf)
+{
+    if (l->kind == LIGHT_SPHERE) {
+        GVec3 oc = gvec3_sub(l->position, r->o);
+        double dc2 = gvec3_dot(oc, oc), r2 = l->radius * l->radius, b = gvec3_dot(oc, r->d);
+        double disc = b * b - (dc2 - r2);
+        if (dc2 <= r2 || b <= 0.0 || disc < 0.0)
+            return INFINITY;
+        double t = b - sqrt(disc);
+        if (!(t > 0.0 && t < tmax))
+            return INFINITY;
+        double omega = 2.0 * M_PI * (1.0 - sqrt(fmax(0.0, 1.0 - r2 / dc2)));
+        *pdf = omega > 0.0 ? 1.0 / omega : 0.0;
+        return t;
+    }
+    if (l->kind == LIGHT_RECT) {
+        GVec3 nl = gvec3_cross(l->edge1, l->edge2);
+        double area = gvec3_length(nl);
+        if (!(area > 0.0))
+            return INFINITY;
+        nl = gvec3_scale(nl, 1.0 / area);
+        double dn = gvec3_dot(r->d, nl);
+        if (!(dn < 0.0)) /* one-sided: only the lit side faces the ray */
+            return INFINITY;
+        double t = gvec3_dot(gvec3_sub(l->position, r->o), nl) / dn;
+        if (!(t > 0.0 && t < tmax))
+            return INFINITY;
+        /* parallelogram coordinates of the hit */
+        GVec3 q = gvec3_sub(gvec3_madd(r->o, r->d, t), l->position);
+        double aa = gvec3_dot(l->edge1, l->edge1), ab = gvec3_dot(l->edge1, l->edge2);
+        double bb = gvec3_dot(l->edge2, l->edge2), det = aa * bb - ab * ab;
+        double qa = gvec3_dot(q, l->edge1), qb = gvec3_dot(q, l->edge2);
+        double a = (bb * qa - ab * qb) / det, b = (aa * qb - ab * qa) / det;
+        if (!(a >= 0.0 && a <= 1.0 && b >= 0.0 && b <= 1.0))
+            return INFINITY;
+        *pdf = t * t / (area * -dn);
+        return t;
+    }
+    return INFINITY;
+}
+
+/* Draws a direction towards area light l from x: 1 with the direction, the distance, the density in solid
+ * angle and the radiance L; 0 when the light offers none; or a status. */
+static int light_sample(PathCtx *p, const Light *l, GVec3 x, GVec3 *in, double *dist, double *pdf, GColor *L)
+{
+    double u1 = uniform(p), u2 = uniform(p);
+    if (l->kind == LIGHT_SPHERE) {
+        GVec3 axis = gvec3_sub(l->position, x);
+        double dc = gvec3_length(axis);
+        if (!(dc > l->radius))
+            return 0;
+        axis = gvec3_scale(axis, 1.0 / dc);
+        double sin_max = l->radius / dc, cos_max = sqrt(fmax(0.0, 1.0 - sin_max * sin_max));
+        double omega = 2.0 * M_PI * (1.0 - cos_max);
+        if (!(omega > 0.0))
+            return 0;
+        GVec3 t1, t2;
+        goptics_frame(axis, &t1, &t2);
+        double ct = 1.0 - u1 * (1.0 - cos_max), st = sqrt(fmax(0.0, 1.0 - ct * ct)), ph = 2.0 * M_PI * u2;
+        *in = gvec3_add(gvec3_scale(axis, ct), gvec3_add(gvec3_scale(t1, st * cos(ph)), gvec3_scale(t2, st * sin(ph))));
+        double b = dc * ct, disc = b * b - (dc * dc - l->radius * l->radius);
+        *dist = b - sqrt(fmax(0.0, disc));
+        *pdf = 1.0 / omega;
+        int rc = gcolor_copy(L, &l->color);
+        return rc < 0 ? rc : 1;
+    }
+    if (l->kind == LIGHT_RECT) {
+        GVec3 nl = gvec3_cross(l->edge1, l->edge2);
+        double area = gvec3_length(nl);
+        if (!(area > 0.0))
+            return 0;
+        nl = gvec3_scale(nl, 1.0 / area);
+        GVec3 y = gvec3_add(l->position, gvec3_add(gvec3_scale(l->edge1, u1), gvec3_scale(l->edge2, u2)));
+        GVec3 w = gvec3_sub(y, x);
+        double d = gvec3_length(w);
+        if (!(d > 0.0))
+            return 0;
+        *in = gvec3_scale(w, 1.0 / d);
+        double cos_l = -gvec3_dot(*in, nl);
+        if (!(cos_l > 0.0))
+            return 0;
+        *dist = d;
+        *pdf = d * d / (area * cos_l);
+        int rc = gcolor_copy(L, &l->color);
+        return rc < 0 ? rc : 1;
+    }
+    return 0;
+}
+
+/* Adds to out the direct light at sp from every light source, reflected towards to_viewer (NEE). */
+static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 to_viewer, int opaque,
+                        const GColor *ri, GColor *out)
+{
+    TraceCtx *c = p->c;
+    const Scene *s = c->scene;
+    const GMaterial *m = sp->material;
+    GScratchMark mark = gscratch_mark(c->scratch);
+    LightTmp lt;
+    GColor L;
+    int rc = G_OK;
+    CHECK(light_temps(c, &lt));
+    CHECK(gcolor_scratch(&L, s->model, c->scratch));
+    light_gather(sp, &lt); /* a Lambertian material: asked once for all samples, MIS weights in their light */
+    for (int i = 0; i < s->nlights; i++) {
+        const Light *l = s->lights[i];
+        lt.blocked = 0;
+        if (l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT || l->kind == LIGHT_DIRECTIONAL) {
+            CHECK(light_shade(c, l, sp, facing, media, to_viewer, opaque, &lt, out));
+            continue;
+        }
+        lt.blocked = 1; /* material sampling reaches these lights: light through glass is a caustic */
+        if (l->kind == LIGHT_PROBE) { /* the reference's estimator with one direction (a basis: not used) */
+            CHECK(probe_light_nee(c, l, sp, facing, media, to_viewer, opaque, 1, l == p->env_light ? ri : NULL,
+                                  &lt, out));
+            continue;
+        }
+        if (l->kind != LIGHT_SPHERE && l->kind != LIGHT_RECT)
+            continue;
+        GVec3 in;
+        double dist, pdf_l;
+        int got;
+        CHECK(got = light_sample(p, l, sp->point, &in, &dist, &pdf_l, &L));
+        if (!got || (opaque && gvec3_dot(in, facing) <= 0.0))
+            continue;
+        double w = mis_power(pdf_l, gmaterial_pdf(m, sp, in, to_viewer, ri));
+        if (w > 0.0)
+            CHECK(sample_light(c, sp, facing, media, in, dist, &L, w / pdf_l, to_viewer, &lt, out));
+    }
+    CHECK(light_gather_finish(sp, &lt, out));
+done:
+    gscratch_release(c->scratch, mark);
+    return rc;
+}
+
+static int path_radiance(PathCtx *p, const Ray *r, const Media *media, int depth, double beta, int prev_delta,
+                    double prev_pdf, GColor *out);
+
+/* The light leaving sp towards the viewer of r: emission, NEE, and one sampled bounce. */
+static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, const Media *media, int depth,
+                      double beta, GColor *out)
+{
+    TraceCtx *c = p->c;
+    const Scene *s = c->scene;
+    const GMaterial *m = sp->material;
+    GVec3 to_viewer = gvec3_neg(r->d);
+    GScratchMark mark = gscratch_mark(c->scratch);
+    GColor ri, rg, tmp, weight, illum;
+    int rc = G_OK, opaque, delta, valid;
+    /* written in full before they are read (the group's index by its fill, the others as an operation's out: the
+     * weight by a sample drawn, the bounce's light by path_radiance): not cleared */
+    CHECK(gcolor_scratch_uncleared(&rg, s->model, c->scratch));
+    CHECK(gcolor_scratch_uncleared(&tmp, s->model, c->scratch));
+    CHECK(gcolor_scratch_uncleared(&weight, s->model, c->scratch));
+    CHECK(gcolor_scratch_uncleared(&illum, s->model, c->scratch));
+    CHECK(trace_relative_index(c, sp, &ri));
+    CHECK(gmaterial_emission(m, sp, to_viewer, out));
+    opaque = gmaterial_opaque(m, sp);
+    CHECK(delta = gmaterial_is_delta(m, sp));
+
+    /* dispersion: the wavelength group this vertex refracts with (hero band) */
+    const Bands *b = c->bands;
+    const GColor *ri_use = &ri;
+    int band = c->band, pick = -1;
+    if (!opaque && b && b->n > 1) {
+        if (band < 0 && bands_disperse(b, &ri)) {
+            pick = (int)(uniform(p) * b->n);
+            band = pick < b->n ? pick : b->n - 1;
+            pick = band;
+        }
+        if (band >= 0) {
+            CHECK(gcolor_fill(&rg, bands_value(b, &ri, band)));
+            ri_use = &rg;
+        }
+    }
+
+    if (!delta && s->nlights > 0)
+        CHECK(direct_light(p, sp, facing, media, to_viewer, opaque, ri_use, out));
+
+    if (depth < c->max_depth) {
+        GMaterialSample smp;
+        double u1 = uniform(p), u2 = uniform(p);
+        CHECK(valid = gmaterial_sample(m, sp, to_viewer, ri_use, u1, u2, &smp, &weight));
+        if (!valid || !(smp.pdf > 0.0)) /* no sample: the weight is not read */
+            goto absorb;
+        double nb = beta * gcolor_brightness(&weight), q = 1.0;
+        if (!(nb > 0.0) || !isfinite(nb))
+            goto absorb;
+        if (depth >= PATH_RR_START) { /* Russian roulette on the path's throughput */
+            q = fmin(1.0, nb);
+            if (uniform(p) >= q)
+                goto absorb;
+            nb /= q;
+        }
+        int transmit = (smp.flags & GSAMPLE_TRANSMIT) != 0;
+        Media next;
+        if (transmit)
+            media_cross(media, m, sp->entering, &next);
+        else
+            media_copy(&next, media);
+        double width = r->cone_width + r->cone_spread * sp->t;
+        Ray ray = {offset_origin(sp->point, facing, smp.in), smp.in, 0.0, INFINITY, width, r->cone_spread};
+        int saved = c->band, scattered = p->scattered, is_delta = (smp.flags & GSAMPLE_DELTA) != 0;
+        if (transmit && pick >= 0)
+            c->band = pick;
+        p->scattered |= !is_delta;
+        rc = path_radiance(p, &ray, &next, depth + 1, nb, is_delta, smp.pdf, &illum);
+        c->band = saved;
+        p->scattered = scattered;
+        CHECK(rc);
+        if (gmaterial_diagonal(m)) {
+            /* what it passes on of white light over the density (the sample's weight), times the light: no second
+             * evaluation, and each ideal lobe counts with its own probability where a blend's children share an
+             * ideal ray (there, reflection() gives their sum, which one child's probability would overweigh) */
+            CHECK(gcolor_mul_scaled(&tmp, &weight, &illum, 1.0 / q));
+        } else { /* re-radiation: the light itself through the material */
+            CHECK(gcolor_scale(&illum, &illum, 1.0 / (smp.pdf * q)));
+            if (transmit)
+                CHECK(gmaterial_refraction(m, sp, smp.in, &illum, ri_use, to_viewer, &tmp));
+            else
+                CHECK(gmaterial_reflection(m, sp, smp.in, &illum, to_viewer, &tmp));
+        }
+        if (transmit && pick >= 0) { /* one group of n chosen: its light, n times */
+            CHECK(gcolor_mul(&tmp, &b->mask[pick], &tmp));
+            CHECK(gcolor_scale(&tmp, &tmp, (double)b->n));
+        }
+        CHECK(gcolor_add(out, out, &tmp));
+    }
+absorb:
+    /* absorption until the light reaches the viewer */
+    if (sp->from) {
+        CHECK(gmaterial_absorption(sp->from, sp, out, sp->t, &tmp));
+        CHECK(gcolor_copy(out, &tmp));
+    }
+done:
+    gscratch_release(c->scratch, mark);
+    if (rc < 0 && c->status == G_OK) {
+        c->status = rc;
+        c->culprit = gmaterial_name(m);
+    }
+    return rc;
+}
+
+/* Radiance arriving along r, which leaves the scene; first: a camera ray or one after a delta bounce, else
+ * drawn by material sampling with density prev_pdf. See the top of the file: the environment. */
+static int escaped(PathCtx *p, const Ray *r, int first, double prev_pdf, GColor *out)
+{
+    const Scene *s = p->c->scene;
+    const ProbeEnv *env = s->env;
+    int rc = G_OK;
+    if (!env)
+        CHECK(gcolor_copy(out, &s->background));
+    else if (first)
+        CHECK(probe_background(env, r->d, out));
+    else if (p->env_in_lights)
+        CHECK(gcolor_fill(out, 0.0));
+    else {
+        CHECK(probe_pixel_radiance(env, r->d, out));
+        if (p->env_light)
+            CHECK(gcolor_scale(out, out, mis_power(prev_pdf, probe_dist_pdf(&env->dist, env->probe,
+                                                                               probe_from_world(env, r->d)))));
+    }
+    if (p->scattered && s->have_ambient)
+        CHECK(gcolor_add(out, out, &s->ambient));
+done:
+    return rc;
+}
+
+/* Radiance arriving at r's origin along r; prev_delta and prev_pdf describe how r was drawn (for the MIS
+ * weight of a light it reaches). */
+static int path_radiance(PathCtx *p, const Ray *r, const Media *media, int depth, double beta, int prev_delta,
+                    double prev_pdf, GColor *out)
+{
+    TraceCtx *c = p->c;
+    const Scene *s = c->scene;
+    Hit h;
+    c->rays++;
+    int hit = accel_intersect(s, r, &h), rc = G_OK;
+    /* the nearest area light in front of the surface */
+    const Light *lh = NULL;
+    double t_l = hit ? h.t : INFINITY, pdf_l = 0.0;
+    for (int i = 0; i < s->nlights; i++) {
+        double pl = 0.0, t = area_light_hit(s->lights[i], r, t_l, &pl);
+        if (t < t_l) {
+            t_l = t;
+            pdf_l = pl;
+            lh = s->lights[i];
+        }
+    }
+    int first = depth == 0 || prev_delta;
+    if (lh) {
+        CHECK(gcolor_scale(out, &lh->color, first ? 1.0 : mis_power(prev_pdf, pdf_l)));
+        const GMaterial *medium = media_top(media);
+        if (medium) {
+            GScratchMark mark = gscratch_mark(c->scratch);
+            GColor tmp;
+            if ((rc = gcolor_scratch_uncleared(&tmp, s->model, c->scratch)) == G_OK && /* absorption's out */
+                (rc = gmaterial_absorption(medium, NULL, out, t_l, &tmp)) == G_OK)
+                rc = gcolor_copy(out, &tmp);
+            gscratch_release(c->scratch, mark);
+        }
+        return rc;
+    }
+    if (!hit)
+        return escaped(p, r, first, prev_pdf, out);
+    GSurfPoint sp;
+    GVec3 facing;
+    surfpoint_fill(c, r, &h, media, &sp, &facing);
+    return shade_path(p, r, &sp, facing, media, depth, beta, out);
+done:
+    return rc;
+}
+
+/* SplitMix64's finaliser: decorrelates neighbouring pixel and sample indices. */
+static uint64_t mix64(uint64_t z)
+{
+    z += 0x9e3779b97f4a7c15ULL;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+int path_trace(TraceCtx *c, const Ray *r, const Media *media, uint64_t pixel, int sample, GColor *out)
+{
+    PathCtx p = {.c = c};
+    Rng camera_rng = c->rng; /* the pixel's own sequence (its sample positions) goes on after this path */
+    rng_seed(&c->rng, mix64(pixel ^ mix64((uint64_t)sample)), 0x5851f42d4c957f2dULL);
+    const Scene *s = c->scene;
+    const ProbeEnv *env = s->env;
+    for (int i = 0; env && i < s->nlights; i++) {
+        const Light *l = s->lights[i];
+        if (l->kind == LIGHT_PROBE && l->env == env && env->dist.row_cdf)
+            p.env_light = l;
+    }
+    p.env_in_lights = env && env->nlights > 0 && env->lights[0]->kind == LIGHT_DIRECTIONAL;
+    int saved = c->band;
+    c->band = -1;
+    int rc = path_radiance(&p, r, media, 0, 1.0, 0, 0.0, out);
+    c->band = saved;
+    c->rng = camera_rng;
+    return rc;
+}
+#undef CHECK

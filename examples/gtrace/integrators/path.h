@@ -1,0 +1,20 @@
+/* path.h - unidirectional path tracing (path.c): `gtrace --integrator path`. */
+#ifndef GTRACE_PATH_H
+#define GTRACE_PATH_H
+
+#include "trace/trace.h"
+
+#include <generic/color.h>
+
+#include <stdint.h>
+
+/** Bounces after which Russian roulette may end a path. */
+#define PATH_RR_START 3
+
+/** Radiance arriving along the camera ray r, estimated by one path: next-event estimation to every light
+ * combined with material sampling by multiple importance sampling, Russian roulette, at most c->max_depth
+ * bounces. The path's random numbers come from a generator seeded by the pixel's index and the sample's
+ * index, so the image does not depend on the thread count or the order of the tiles. out must have storage. */
+int path_trace(TraceCtx *c, const Ray *r, const Media *media, uint64_t pixel, int sample, GColor *out);
+
+#endif

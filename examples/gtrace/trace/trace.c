@@ -1,0 +1,160 @@
+/* trace.c - what the integrators and the lights share (trace.h): the per-thread tracing context's temporaries, the
+ * stack of media a ray travels through, the surface point filled at a hit (geometry, the normal on the incident
+ * side, the footprint of the ray cone, the materials on both sides) with the relative index across it, and the
+ * offset of a secondary ray's origin against self-intersection. */
+#include "trace.h"
+
+#include <math.h>
+
+GVec3 offset_origin(GVec3 p, GVec3 n, GVec3 dir)
+{
+    double scale = 1.0 + gfmax(fabs(p.x), gfmax(fabs(p.y), fabs(p.z)));
+    double eps = 2e-5 * scale;
+    return gvec3_madd(p, n, gvec3_dot(dir, n) >= 0.0 ? eps : -eps);
+}
+
+const GMaterial *media_top(const Media *m) { return m->n > 0 ? m->m[m->n - 1] : NULL; }
+
+/* The medium outside `mat` as seen from the stack: the entry below its top-most occurrence. */
+static const GMaterial *media_outside(const Media *m, const GMaterial *mat)
+{
+    for (int i = m->n - 1; i >= 0; i--)
+        if (m->m[i] == mat)
+            return i > 0 ? m->m[i - 1] : NULL;
+    return media_top(m);
+}
+
+/* The (u, v) coordinates of the tangent vectors v1 and v2 in the frame of the tangents a = dp/du, b = dp/dv
+ * (least squares: exact for a vector in their plane; the Gram matrix once for both); zero when the tangents are
+ * degenerate. */
+static void uv_of(GVec3 a, GVec3 b, GVec3 v1, GVec3 v2, double out1[2], double out2[2])
+{
+    double aa = gvec3_dot(a, a), ab = gvec3_dot(a, b), bb = gvec3_dot(b, b), det = aa * bb - ab * ab;
+    if (!(det > 0.0) || !isfinite(det)) {
+        out1[0] = out1[1] = out2[0] = out2[1] = 0.0;
+        return;
+    }
+    double inv = 1.0 / det, av = gvec3_dot(a, v1), bv = gvec3_dot(b, v1);
+    out1[0] = (bb * av - ab * bv) * inv;
+    out1[1] = (aa * bv - ab * av) * inv;
+    av = gvec3_dot(a, v2);
+    bv = gvec3_dot(b, v2);
+    out2[0] = (bb * av - ab * bv) * inv;
+    out2[1] = (aa * bv - ab * av) * inv;
+}
+
+int trace_ctx_temps(TraceCtx *c)
+{
+    for (int i = 0; i < TRACE_TMP_COUNT; i++)
+        if (c->tmp[i].storage == GCOLOR_STORAGE_NONE &&
+            gcolor_scratch(&c->tmp[i], c->scene->model, c->scratch) != G_OK)
+            return G_ERR_NOMEM;
+    return G_OK;
+}
+
+void trace_ctx_free_temps(TraceCtx *c)
+{
+    for (int i = 0; i < TRACE_TMP_COUNT; i++)
+        gcolor_free(&c->tmp[i]);
+}
+
+int trace_tmp(TraceCtx *c, int which, GColor *out)
+{
+    if (c->tmp[which].storage != GCOLOR_STORAGE_NONE) {
+        *out = c->tmp[which];
+        return G_OK;
+    }
+    return gcolor_scratch(out, c->scene->model, c->scratch);
+}
+
+void media_copy(Media *out, const Media *in)
+{
+    int n = in->n < 0 ? 0 : in->n > MEDIA_MAX ? MEDIA_MAX : in->n;
+    for (int i = 0; i < n; i++)
+        out->m[i] = in->m[i];
+    out->n = n;
+}
+
+void media_cross(const Media *in, const GMaterial *mat, int entering, Media *out)
+{
+    media_copy(out, in);
+    if (entering) {
+        if (out->n < MEDIA_MAX)
+            out->m[out->n++] = mat;
+        return;
+    }
+    for (int i = out->n - 1; i >= 0; i--)
+        if (out->m[i] == mat) {
+            for (int j = i; j + 1 < out->n; j++)
+                out->m[j] = out->m[j + 1];
+            out->n--;
+            return;
+        }
+}
+
+void surfpoint_fill(TraceCtx *c, const Ray *r, const Hit *h, const Media *media, GSurfPoint *sp, GVec3 *facing)
+{
+    /* a material that reads nothing of the parametrisation (GMAT_NO_UV) gets it zero, as gsurfpoint_init leaves
+     * it: no (u, v), tangents or footprint ellipse to compute */
+    int want_uv = !(h->material && (h->material->flags & GMAT_NO_UV));
+    HitGeom g;
+    hit_geom(r, h, want_uv, &g);
+    gsurfpoint_init(sp, c->scene->model, c->scratch);
+    sp->point = g.p;
+    sp->object_point = g.op;
+    double dn = gvec3_dot(r->d, g.n_out);
+    sp->entering = dn < 0.0;
+    /* the geometry's normal on the incident side (interpolated for meshes with normals) */
+    GVec3 ns = sp->entering ? g.n_smooth : gvec3_neg(g.n_smooth);
+    sp->geometric_normal = ns;
+    *facing = sp->entering ? g.n_out : gvec3_neg(g.n_out);
+    sp->surface = g.surface;
+    sp->t = h->t;
+    /* ray cone: width w at the hit. The isotropic footprint is the long axis of the footprint ellipse,
+     * w / cos: a filter as wide as that does not alias at grazing angles (the geometric mean of the axes,
+     * w / sqrt(cos), keeps the area but leaves moire on receding checkers) */
+    double w = r->cone_width + r->cone_spread * h->t;
+    double cosv = gfmax(fabs(dn), 0.02);
+    sp->footprint = w / cosv;
+    if (want_uv) {
+        sp->dpdu = g.dpdu;
+        sp->dpdv = g.dpdv;
+        if (g.object_tangents) { /* else zero, which means dpdu and dpdv (surfpoint.h) */
+            sp->object_dpdu = g.odpdu;
+            sp->object_dpdv = g.odpdv;
+        }
+        sp->u = g.u;
+        sp->v = g.v;
+        double area = gvec3_length(gvec3_cross(g.dpdu, g.dpdv));
+        sp->uv_footprint = area > 0.0 ? sp->footprint / sqrt(area) : 0.0;
+        /* the same footprint as an ellipse for anisotropic filters: w / cos along the ray's projection onto the
+         * surface, w across it, both mapped into (u, v) through the tangents */
+        GVec3 along = gvec3_sub(r->d, gvec3_scale(g.n_out, dn));
+        double la = gvec3_length(along);
+        along = la > 1e-9 ? gvec3_scale(along, 1.0 / la) : gvec3_normalize(g.dpdu);
+        GVec3 across = gvec3_cross(g.n_out, along);
+        uv_of(g.dpdu, g.dpdv, gvec3_scale(along, sp->footprint), gvec3_scale(across, w), sp->uv_axis1,
+              sp->uv_axis2);
+    }
+    sp->material = h->material;
+    if (sp->entering) {
+        sp->from = media_top(media);
+        sp->to = sp->material;
+    } else {
+        sp->from = sp->material;
+        sp->to = media_outside(media, sp->material);
+    }
+}
+
+int trace_relative_index(TraceCtx *c, GSurfPoint *sp, GColor *ri)
+{
+    GColor n_from, n_to;
+    int rc;
+    if ((rc = trace_tmp(c, TRACE_TMP_N_FROM, &n_from)) < 0 || (rc = trace_tmp(c, TRACE_TMP_N_TO, &n_to)) < 0 ||
+        (rc = gcolor_scratch_uncleared(ri, c->scene->model, c->scratch)) < 0 || /* the division writes it in full */
+        (rc = gmaterial_refraction_index(sp->from, sp, &n_from)) < 0 ||
+        (rc = gmaterial_refraction_index(sp->to, sp, &n_to)) < 0 || (rc = gcolor_div(ri, &n_from, &n_to)) < 0)
+        return rc;
+    gsurfpoint_set_relative_index(sp, ri); /* what the material's reflection reads: not divided again */
+    return G_OK;
+}

@@ -1,0 +1,87 @@
+/* trace.h - what the integrators (integrators/) and the lights (lights/) share: the per-thread tracing context,
+ * the stack of media a ray travels through and the surface point at a hit (trace.c). */
+#ifndef GTRACE_TRACE_H
+#define GTRACE_TRACE_H
+
+#include "geometry/geometry.h"
+#include "geometry/ray.h"
+#include "camera/rng.h"
+#include "scene/scene.h"
+
+#include <generic/color.h>
+#include <generic/material.h>
+#include <generic/memory.h>
+#include <generic/surfpoint.h>
+#include <generic/vec.h>
+
+#include <stdint.h>
+
+/** The colours a TraceCtx owns (TraceCtx.tmp), each for one job that holds it without tracing another ray meanwhile,
+ * so that no two users can meet: light shading (lighting.h's LightTmp), the shadow ray's walk through glass
+ * (lights.c), the refraction indices on both sides of a surface (trace_relative_index), a shading point's
+ * ambient and absorbed light (whitted.c), and what a material passes on of a secondary ray's light (whitted.c's
+ * trace_secondary, before and after the ray, not across it). */
+enum {
+    TRACE_TMP_ILLUM, TRACE_TMP_REFL, TRACE_TMP_LIGHT, TRACE_TMP_GATHER, /* LightTmp */
+    TRACE_TMP_WALK, TRACE_TMP_WALK_RI, TRACE_TMP_WALK_NF, TRACE_TMP_WALK_NT, /* light_transmit */
+    TRACE_TMP_N_FROM, TRACE_TMP_N_TO,                             /* trace_relative_index */
+    TRACE_TMP_SHADE, TRACE_TMP_PASS,                              /* shade, trace_secondary */
+    TRACE_TMP_COUNT
+};
+
+/** Per-thread tracing state. */
+typedef struct TraceCtx {
+    const Scene *scene;
+    GScratch *scratch;
+    Rng rng;
+    int max_depth;
+    double cutoff;  /**< smallest path weight still traced (0: trace to max_depth) */
+    double weight;  /**< weight of the current path in its pixel (product of the branches' brightness) */
+    GColor unit;    /**< 1 in every sample (the vacuum's refraction index): probes a branch's weight */
+    uint64_t rays;  /**< rays cast through Embree */
+    int rays_left;  /**< secondary rays the current camera sample may still spawn */
+    int capped;     /**< the current camera sample ran out of rays_left */
+    int status;     /**< first error (G_OK while fine) */
+    const char *culprit; /**< type of the material whose call failed first (NULL: none or not a material) */
+    const struct Bands *bands; /**< the wavelength groups a dispersive refraction splits into (integrators/bands.h;
+                                * NULL: none) */
+    int band;            /**< the group the current path carries (-1: all light; set by a dispersive split) */
+    GColor tmp[TRACE_TMP_COUNT]; /**< temporaries made once with the context (trace_ctx_temps); cleared in a
+                                  * context built without them, whose users then take arena storage (trace_tmp) */
+} TraceCtx;
+
+/** Gives c its own temporaries (c->tmp, of the scene's model) from c's arena, made before any mark its users take
+ * and kept for its life (a worker's own arena: two threads' colours never share a cache line); G_ERR_NOMEM when
+ * the arena cannot grow. */
+int trace_ctx_temps(TraceCtx *c);
+/** Clears the handles of trace_ctx_temps (their storage goes with the arena; a no-op for a context without them). */
+void trace_ctx_free_temps(TraceCtx *c);
+/** The temporary `which` (a TRACE_TMP_ value) of c into *out: a copy of c's handle when c has its temporaries,
+ * else storage from c's arena (given back by the caller's mark and release). Not black: the users write before
+ * they read. */
+int trace_tmp(TraceCtx *c, int which, GColor *out);
+
+/** The media a ray travels through: bottom = the camera's medium, top = the current one. */
+#define MEDIA_MAX 16
+typedef struct Media {
+    const GMaterial *m[MEDIA_MAX];
+    int n;
+} Media;
+
+/** Fills sp for a hit of r: geometry, normal on the incident side, footprint from the ray cone, and the
+ * materials on both sides from the media; *facing is the true face normal on the incident side (for
+ * offsetting secondary rays; it differs from the geometric_normal field on meshes with vertex normals). */
+void surfpoint_fill(TraceCtx *c, const Ray *r, const Hit *h, const Media *media, GSurfPoint *sp, GVec3 *facing);
+/** The current medium (NULL: vacuum). */
+const GMaterial *media_top(const Media *m);
+/** Copies the stack in to out: its n entries only (a struct copy of the whole array is a `rep movs`, per shadow
+ * ray; the stack is rarely more than two deep). */
+void media_copy(Media *out, const Media *in);
+/** The media after crossing the surface of mat: entering pushes it, leaving removes it. */
+void media_cross(const Media *in, const GMaterial *mat, int entering, Media *out);
+/** The relative refraction index n(from) / n(to) at sp, into ri (given storage from the thread's arena). */
+int trace_relative_index(TraceCtx *c, GSurfPoint *sp, GColor *ri);
+/** Offsets a point off a surface to the side `dir` leaves on, against self-intersection. */
+GVec3 offset_origin(GVec3 p, GVec3 n, GVec3 dir);
+
+#endif
