@@ -28,7 +28,7 @@
  * The probe's pixels become colours of the scene's model through the library (gprobe_pixel_color and
  * friends, which read them as lights), so the tracer stays free of any colour model. The entry owns the
  * probe and the lights it makes; the scene only points at them. */
-#include "parse.h"
+#include "scenefile/parse.h"
 #include "probe_env.h"
 #include "film/progress.h"
 
