@@ -1,6 +1,6 @@
 /* test_util.h - small helpers shared by the test programs (static inline, include after <cmocka.h>):
  * a double-precision closeness assertion, a counting allocator that can fail one chosen call, running a
- * built tool with its output captured, and a model's diagonal matrix. */
+ * built tool with its output captured, a model's diagonal matrix, and clocks for time bounds. */
 #ifndef GENERIC_TEST_UTIL_H
 #define GENERIC_TEST_UTIL_H
 
@@ -138,11 +138,22 @@ static inline int tu_rmtree(const char *dir)
     return system(cmd) == 0 ? 0 : -1;
 }
 
-/** A monotonic clock in seconds, for time bounds. */
-static inline double tu_seconds(void)
+/** Seconds of a clock, for time bounds: tu_seconds() the monotonic clock, tu_cpu_seconds() the process's CPU time
+ * (all threads). A time bound holds only on a machine that no other test loads: a program that asserts one is
+ * listed in SERIAL of scripts/run_tests.sh, which runs it alone after the parallel batch. Read in the batch
+ * (GENERIC_TEST_BATCH set), either clock fails the test instead. */
+#define tu_seconds() tu_clock_seconds(CLOCK_MONOTONIC, __FILE__, __LINE__)
+#define tu_cpu_seconds() tu_clock_seconds(CLOCK_PROCESS_CPUTIME_ID, __FILE__, __LINE__)
+
+static inline double tu_clock_seconds(clockid_t clock, const char *file, int line)
 {
+    if (getenv("GENERIC_TEST_BATCH")) {
+        print_error("%s:%d: a time bound in the parallel batch: list the program in SERIAL of scripts/run_tests.sh\n",
+                    file, line);
+        _fail(file, line);
+    }
     struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
+    clock_gettime(clock, &t);
     return t.tv_sec + t.tv_nsec * 1e-9;
 }
 

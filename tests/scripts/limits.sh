@@ -10,14 +10,9 @@ GTRACE="$BUILD/bin/gtrace"
 GMAT="$BUILD/bin/gmat"
 GPROBE="$BUILD/bin/gprobe"
 SRC=$(cd "$(dirname "$0")/../.." && pwd)
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
+. "$(dirname "$0")/prelude.sh"
+serial_only
 cd "$TMP" || exit 1
-fails=0
-fail() {
-    echo "FAIL: $*"
-    fails=$((fails + 1))
-}
 
 # run WANT_STATUS LIMIT_S WHAT COMMAND...: status 0 or "fail" (1..127), no sanitizer report, within LIMIT_S
 run() {

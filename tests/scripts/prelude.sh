@@ -11,6 +11,16 @@ fail() {
 # is on PATH (PACKAGE: where scripts/deps.sh gets it).
 need_program() { [ -x "$1" ] || { echo "FAIL: $1 is not built"; exit 1; }; }
 need_command() { command -v "$1" > /dev/null || { echo "FAIL: $1 ($2, scripts/deps.sh) is missing"; exit 1; }; }
+# serial_only: a script that asserts time bounds says so first; such a bound holds only on a machine no other test
+# loads, so the script is listed in SERIAL of scripts/run_tests.sh (run alone, after the parallel batch), and in
+# the batch (GENERIC_TEST_BATCH set) it fails at once. now: the time in seconds, with fractions.
+serial_only() {
+    [ -z "${GENERIC_TEST_BATCH:-}" ] || {
+        echo "FAIL: time bounds in the parallel batch: list $(basename "$0") in SERIAL of scripts/run_tests.sh"
+        exit 1
+    }
+}
+now() { date +%s.%N; }
 # listed NAME: appends "NAME MODEL" to TMP/nodes, MODEL rgb, spectrum and bispectral in turn (the count in turn).
 turn=0
 listed() {

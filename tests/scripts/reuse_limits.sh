@@ -8,7 +8,7 @@
 BUILD=$(cd "${1:-build}" 2> /dev/null && pwd) || { echo "FAIL: no build directory ${1:-build}"; exit 1; }
 GMAT="$BUILD/bin/gmat"
 . "$(dirname "$0")/prelude.sh"
-now() { date +%s.%N; }
+serial_only
 
 # run WHAT WANT_STATUS MAX_SECONDS FILE [EXPECTED STDERR TEXT]
 run() {

@@ -9,7 +9,7 @@ BUILD=$(cd "${1:-build}" 2> /dev/null && pwd) || { echo "FAIL: no build director
 GMAT="$BUILD/bin/gmat"
 GTRACE="$BUILD/bin/gtrace"
 . "$(dirname "$0")/prelude.sh"
-now() { date +%s.%N; }
+serial_only
 
 # run WHAT WANT_STATUS MAX_SECONDS COMMAND...: stdout in $TMP/out, stderr in $TMP/err
 run() {
