@@ -32,7 +32,8 @@ fi
 # shellcheck disable=SC2046 # the flags' words
 if cc -std=c11 -O2 -fPIC -shared -fvisibility=hidden -Wall -Wextra -Werror $(pkg-config --cflags generic) \
     "$SRC/examples/plugins/oren_nayar.c" -o on.so -lm > out 2>&1; then
-    "$BUILD/bin/gmat" types --plugin ./on.so > out 2>&1 || fail "the module built with the .pc does not load: $(cat out)"
+    "$BUILD/bin/gmat" types --plugin ./on.so > out 2>&1 ||
+        fail "the module built with the .pc does not load: $(cat out)"
     grep -qw oren_nayar out || fail "the module built with the .pc registered no oren_nayar: $(cat out)"
     echo "module: oren_nayar.c built with the uninstalled .pc's Cflags loads into gmat"
 else
