@@ -89,6 +89,10 @@ OIIO_OBJ := $(LIB_CXX:%.cpp=$(BUILD)/obj/%.o)
 OIIO_SO  := $(BUILD)/lib/generic/libgeneric_oiio.so
 OCIO_CONFIG := $(BUILD)/share/generic/ocio/config.ocio
 
+# The default goal; each folder's build.mk gives lib, tools, plugins and tests their prerequisites.
+.PHONY: all test demo install uninstall clean deps
+all: lib tools plugins tests
+
 # Every object of the tree, compiled alike (the generated sources from BUILD/gen).
 $(BUILD)/obj/%.o: %.c
 	@mkdir -p $(dir $@)
@@ -127,9 +131,6 @@ $(BUILD)/obj-lto/gen/%.o: $(BUILD)/gen/%.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(LTO) -c $< -o $@
 endif
-
-.PHONY: all test demo install uninstall clean deps
-all: lib tools plugins tests
 
 deps:
 	@scripts/deps.sh
