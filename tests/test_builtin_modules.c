@@ -1,5 +1,5 @@
 /* test_builtin_modules.c - a built-in type's file is all of the type: materials/lambert.c and colormodels/rgb.c,
- * each compiled unchanged plus the line `GENERIC_MODULE(&gtype_NAME);` into BUILD/modules/NAME.so (Makefile,
+ * each compiled unchanged plus the line `GENERIC_MODULE(&gtype_NAME);` into BUILD/modules/NAME.so (tests/build.mk,
  * "built-in files as run-time modules"), are loaded into a registry that holds every other built-in but not those
  * two. The registered types are the modules' (their own vtables, not the built-in records'), a material file
  * reads with them, and the module lambert in the module rgb model gives bit for bit the results of the built-in

@@ -54,36 +54,6 @@ static void assert_cleared(const GColor *c)
 
 /* ---- storage ---- */
 
-/* An allocator that counts frees (and allocations) and passes everything to the C library. */
-typedef struct FreeCounter {
-    long allocs, frees;
-} FreeCounter;
-
-static void *fc_alloc(size_t n, void *u)
-{
-    ((FreeCounter *)u)->allocs++;
-    return malloc(n);
-}
-
-static void *fc_realloc(void *p, size_t n, void *u)
-{
-    ((FreeCounter *)u)->allocs++;
-    return realloc(p, n);
-}
-
-static void fc_free(void *p, void *u)
-{
-    ((FreeCounter *)u)->frees++;
-    free(p);
-}
-
-static void fc_install(FreeCounter *c)
-{
-    c->allocs = c->frees = 0;
-    GAllocator a = {fc_alloc, fc_realloc, fc_free, c};
-    gmem_set_allocator(&a);
-}
-
 static void test_free_is_harmless_for_arena_and_caller(void **state)
 {
     (void)state;
@@ -93,17 +63,17 @@ static void test_free_is_harmless_for_arena_and_caller(void **state)
         const GColorModel *m = models[k];
         GScratch *s = gscratch_create(0);
         assert_non_null(s);
-        FreeCounter fc;
+        static TuAlloc counter;
         /* arena: nothing is freed, the handle is cleared, the arena keeps working */
         GColor a;
         assert_int_equal(gcolor_scratch(&a, m, s), G_OK);
         assert_int_equal(a.storage, GCOLOR_STORAGE_ARENA);
         assert_int_equal(a.capacity, m->capacity);
-        fc_install(&fc);
+        tu_alloc_install(&counter);
         gcolor_free(&a);
         gcolor_free(&a); /* a cleared handle: a no-op */
         gmem_set_allocator(NULL);
-        assert_int_equal(fc.frees, 0);
+        assert_int_equal(counter.frees, 0);
         assert_cleared(&a);
         GColor b;
         assert_int_equal(gcolor_scratch(&b, m, s), G_OK);
@@ -115,25 +85,25 @@ static void test_free_is_harmless_for_arena_and_caller(void **state)
         GColor c;
         assert_int_equal(gcolor_wrap(&c, m, buf, (size_t)m->capacity), G_OK);
         assert_int_equal(c.storage, GCOLOR_STORAGE_CALLER);
-        fc_install(&fc);
+        tu_alloc_install(&counter);
         gcolor_free(&c);
         gmem_set_allocator(NULL);
-        assert_int_equal(fc.frees, 0);
+        assert_int_equal(counter.frees, 0);
         assert_cleared(&c);
         buf[m->capacity - 1] = 1.0f; /* still the caller's */
         if (buf != stack)
             free(buf);
         /* heap: exactly one free */
         GColor h;
-        fc_install(&fc);
+        tu_alloc_install(&counter);
         assert_int_equal(gcolor_alloc(&h, m), G_OK);
         assert_int_equal(h.storage, GCOLOR_STORAGE_HEAP);
         assert_int_equal(h.capacity, m->capacity);
         gcolor_free(&h);
         gcolor_free(&h);
         gmem_set_allocator(NULL);
-        assert_int_equal(fc.allocs, 1);
-        assert_int_equal(fc.frees, 1);
+        assert_int_equal(counter.calls, 1);
+        assert_int_equal(counter.frees, 1);
         assert_cleared(&h);
         gcolor_free(NULL);
         print_message("%-12s capacity %5d: free of arena and caller colours frees nothing, of a heap colour once\n",
@@ -587,16 +557,16 @@ static void test_add_scaled_beyond_builtin_capacity(void **state)
     GScratch *s = gscratch_create(4 * (size_t)m->capacity * sizeof(float) + 1024);
     assert_non_null(s);
     assert_int_equal(big_round(m, s), 0); /* the first use may set up the library's temporary */
-    static TuCounter counter;
-    tu_count_install(&counter, -1);
+    static TuAlloc counter;
+    tu_alloc_install(&counter);
     int bad = 0;
     for (int i = 0; i < 20; i++)
         bad |= big_round(m, s);
     gmem_set_allocator(NULL);
     assert_int_equal(bad, 0);
     print_message("capacity %d floats: add_scaled and axpy exact, %ld allocations in 20 rounds after the first\n",
-                  m->capacity, counter.allocs);
-    assert_int_equal(counter.allocs, 0);
+                  m->capacity, counter.calls);
+    assert_int_equal(counter.calls, 0);
     /* the defaults of the other slots: exp refuses a matrix it cannot read, fill gives the vector */
     GColor a, o;
     assert_int_equal(gcolor_scratch(&a, m, s), G_OK);

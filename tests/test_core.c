@@ -62,15 +62,15 @@ static void test_scratch_reuses_blocks(void **state)
 {
     (void)state;
     GScratch *s = gscratch_create(256);
-    static TuCounter counter;
-    tu_count_install(&counter, -1);
+    static TuAlloc counter;
+    tu_alloc_install(&counter);
     for (int round = 0; round < 100; round++) {
         GScratchMark m = gscratch_mark(s);
         for (int i = 0; i < 20; i++)
             assert_non_null(gscratch_alloc(s, 200));
         gscratch_release(s, m);
     }
-    long grown = counter.allocs;
+    long grown = counter.calls;
     gmem_set_allocator(NULL);
     assert_true(grown <= 20); /* blocks grow in the first round only */
     gscratch_destroy(s);
@@ -216,8 +216,9 @@ static void test_out_of_memory(void **state)
     (void)state;
     gregistry_find(GKIND_COLORMODEL, "rgb"); /* registry built before counting */
     for (long k = 0; k < 8; k++) {
-        static TuCounter counter;
-        tu_count_install(&counter, k);
+        static TuAlloc alloc;
+        alloc = (TuAlloc){.fail_call = k + 1};
+        tu_alloc_install(&alloc);
         GError e;
         GColorModel *m = NULL;
         int rc = gcolormodel_create("rgb", NULL, &m, &e);

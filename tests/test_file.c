@@ -23,7 +23,6 @@
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/un.h>
-#include <time.h>
 #include <unistd.h>
 
 static char dir[256];
@@ -77,6 +76,8 @@ static int make_kinds(Kind *k)
     return n;
 }
 
+/* The message must name what the file is: the reader refused it by its kind before reading from it, so it
+ * neither blocked (a FIFO without a writer) nor read forever (/dev/zero). */
 static void expect_refusal(int rc, const GError *err, const Kind *k, const char *reader)
 {
     if (rc >= 0)
@@ -94,7 +95,6 @@ static void test_non_regular_inputs_are_refused_everywhere(void **state)
     int n = make_kinds(kinds);
     for (int i = 0; i < n; i++) {
         const Kind *k = &kinds[i];
-        double t0 = tu_seconds();
         GError err;
         int fd = gfile_open_input(k->path, &err);
         if (fd >= 0)
@@ -122,8 +122,6 @@ static void test_non_regular_inputs_are_refused_everywhere(void **state)
         expect_refusal(gprobe_load(k->path, GPROBE_AUTO, 0, &p, &err), &err, k, "gprobe_load");
         assert_null(p);
         expect_refusal(gplugin_load(k->path, &err), &err, k, "gplugin_load");
-        /* nothing blocked (a FIFO without a writer) or read forever (/dev/zero) */
-        assert_true(tu_seconds() - t0 < 5.0);
     }
 }
 

@@ -552,34 +552,17 @@ static void test_text_format(void **state)
 
 /* ---- allocation failures ---- */
 
-static long fail_after;
-static void *failing_alloc(size_t n, void *u)
-{
-    (void)u;
-    return fail_after-- > 0 ? malloc(n) : NULL;
-}
-static void *failing_realloc(void *p, size_t n, void *u)
-{
-    (void)u;
-    return fail_after-- > 0 ? realloc(p, n) : NULL;
-}
-static void plain_free(void *p, void *u)
-{
-    (void)u;
-    free(p);
-}
-
 static void test_alloc_failures(void **state)
 {
     (void)state;
     GColorModel *md = model("bispectral");
     GReradiation r = default_matrix();
-    GAllocator a = {failing_alloc, failing_realloc, plain_free, NULL};
+    static TuAlloc alloc;
     for (int which = 0; which < 3; which++) {
         int ok = 0;
         for (long n = 0; n < 64 && !ok; n++) {
-            fail_after = n;
-            gmem_set_allocator(&a);
+            alloc = (TuAlloc){.fail_call = n + 1, .fail_after = 1}; /* n calls succeed */
+            tu_alloc_install(&alloc);
             GMaterial *m = NULL;
             GReradiation g = {0};
             GError err;

@@ -6,6 +6,7 @@
  * of the thread count, and no allocation per ray. Images are tiny. (A probe technique's directional lights
  * under path tracing: test_gtrace_probe.c.) */
 #include "test_gtrace_common.h"
+#include "test_alloc.h"
 
 #include "generic/builtins.h"
 #include "generic/generators.h"
@@ -416,20 +417,14 @@ static void test_thread_independent(void **state)
 
 /* ---- no allocation per ray ---- */
 
-static long counted;
-static void *count_alloc(size_t n, void *u) { (void)u; counted++; return malloc(n); }
-static void *count_realloc(void *p, size_t n, void *u) { (void)u; counted++; return realloc(p, n); }
-static void count_free(void *p, void *u) { (void)u; free(p); }
-
 static long allocations_of_render(Scene *s, int spp)
 {
-    GAllocator a = {count_alloc, count_realloc, count_free, NULL};
-    counted = 0;
-    gmem_set_allocator(&a);
+    static TuAlloc counter;
+    tu_alloc_install(&counter);
     Framebuffer fb;
     render_with(s, 12, 12, spp, 8, 1, RENDER_PATH, &fb);
     gmem_set_allocator(NULL);
-    long n = counted;
+    long n = counter.calls;
     framebuffer_free(&fb);
     return n;
 }

@@ -8,6 +8,7 @@
  * temporary directory. */
 #include "generic/builtins.h"
 #include "test_gtrace_common.h"
+#include "test_alloc.h"
 
 #include <generic/services/image.h>
 
@@ -582,34 +583,6 @@ static void test_errors_and_overrides(void **state)
 
 /* ---- allocation failures while loading a probe scene fail cleanly ---- */
 
-static long alloc_budget;
-
-static int take_budget(void)
-{
-    long left;
-#pragma omp atomic capture
-    left = alloc_budget--;
-    return left > 0;
-}
-
-static void *budget_alloc(size_t size, void *user)
-{
-    (void)user;
-    return take_budget() ? malloc(size) : NULL;
-}
-
-static void *budget_realloc(void *ptr, size_t size, void *user)
-{
-    (void)user;
-    return take_budget() ? realloc(ptr, size) : NULL;
-}
-
-static void budget_free(void *ptr, void *user)
-{
-    (void)user;
-    free(ptr);
-}
-
 static void test_allocation_failures(void **state)
 {
     (void)state;
@@ -625,11 +598,11 @@ static void test_allocation_failures(void **state)
                  "camera pinhole { from <0, -3, 2> at <0, 0, 0> up <0, 0, 1> width 4 height 3 }\n",
                  probe, variant ? "technique reference samples 4" : "technique adaptive count 4");
         write_text(in_tmp("alloc.scene", path, sizeof path), text);
-        GAllocator a = {budget_alloc, budget_realloc, budget_free, NULL};
+        static TuAlloc alloc;
         int failures = 0, k;
         for (k = 0; k < 5000; k++) {
-            alloc_budget = k;
-            gmem_set_allocator(&a);
+            alloc = (TuAlloc){.fail_call = k + 1, .fail_after = 1}; /* k calls succeed */
+            tu_alloc_install(&alloc);
             Scene *s = NULL;
             Framebuffer fb = {0};
             RenderStats st;

@@ -5,6 +5,7 @@
  * touch colour samples. */
 #include "generic/builtins.h"
 #include "test_gtrace_common.h"
+#include "test_alloc.h"
 
 #include <generic/services/image.h>
 
@@ -561,34 +562,6 @@ static void test_sources_are_model_free(void **state)
 
 /* ---- allocation failures: loading and rendering fail cleanly at every allocation ---- */
 
-static long alloc_budget; /* allocations still allowed; every one after that fails */
-
-static int take_budget(void)
-{
-    long left;
-#pragma omp atomic capture
-    left = alloc_budget--;
-    return left > 0;
-}
-
-static void *budget_alloc(size_t size, void *user)
-{
-    (void)user;
-    return take_budget() ? malloc(size) : NULL;
-}
-
-static void *budget_realloc(void *ptr, size_t size, void *user)
-{
-    (void)user;
-    return take_budget() ? realloc(ptr, size) : NULL;
-}
-
-static void budget_free(void *ptr, void *user)
-{
-    (void)user;
-    free(ptr);
-}
-
 static void test_allocation_failures(void **state)
 {
     (void)state;
@@ -602,11 +575,11 @@ static void test_allocation_failures(void **state)
                             "object sphere { center <0, 0.5, 0> radius 0.5 material glass }\n"
                             "light sphere { center <1, 3, 1> radius 0.2 radiance rgb 5 5 5 samples 4 }\n"
                             "light ambient { color rgb 0.1 0.1 0.1 }\n");
-    GAllocator a = {budget_alloc, budget_realloc, budget_free, NULL};
+    static TuAlloc alloc;
     int failures = 0, k;
     for (k = 0; k < 5000; k++) {
-        alloc_budget = k;
-        gmem_set_allocator(&a);
+        alloc = (TuAlloc){.fail_call = k + 1, .fail_after = 1}; /* k calls succeed */
+        tu_alloc_install(&alloc);
         Scene *s = NULL;
         Framebuffer fb = {0};
         RenderStats st;

@@ -14,7 +14,7 @@
 
 #include "generic/builtins.h"
 #include "generic/services/image.h"
-#include "generic/memory.h"
+#include "test_alloc.h"
 
 static char dir[256];
 
@@ -299,12 +299,6 @@ static void test_read_errors(void **state)
     unlink(path_in_dir("junk.png"));
 }
 
-/* An allocator that refuses blocks of at least `limit` bytes. */
-static size_t limit;
-static void *lim_alloc(size_t n, void *u) { (void)u; return n >= limit ? NULL : malloc(n); }
-static void *lim_realloc(void *p, size_t n, void *u) { (void)u; return n >= limit ? NULL : realloc(p, n); }
-static void lim_free(void *p, void *u) { (void)u; free(p); }
-
 static void test_failed_write_leaves_nothing(void **state)
 {
     (void)state;
@@ -329,9 +323,11 @@ static void test_failed_write_leaves_nothing(void **state)
     assert_int_equal(stat(path_in_dir("keep.png"), &st0), 0);
     GImage big;
     assert_int_equal(gimage_create(&big, 256, 256, 3, NULL), G_OK);
-    limit = 60000; /* more than a row, less than the encoder's state (zlib's 64 KiB deflate window) */
-    GAllocator lim = {lim_alloc, lim_realloc, lim_free, NULL};
-    gmem_set_allocator(&lim);
+    /* blocks of 60000 bytes and more refused: more than a row, less than the encoder's state (zlib's 64 KiB
+     * deflate window) */
+    static TuAlloc limited;
+    limited = (TuAlloc){.max_bytes = 60000};
+    tu_alloc_install(&limited);
     int rc = gimage_write(path_in_dir("keep.png"), &big, NULL, &err);
     gmem_set_allocator(NULL);
     assert_int_equal(rc, G_ERR_NOMEM);

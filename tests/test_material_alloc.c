@@ -15,48 +15,7 @@
 #include "generic/material.h"
 #include "generic/materials.h"
 #include "generic/surfpoint.h"
-
-/* Counting allocator: counts every call; fails the call numbered `fail_at` (and later ones) when >= 0. */
-typedef struct Counter {
-    long allocs, frees;
-    long fail_at;
-} Counter;
-
-static void *count_alloc(size_t n, void *u)
-{
-    Counter *c = u;
-    if (c->fail_at >= 0 && c->allocs >= c->fail_at) {
-        c->allocs++;
-        return NULL;
-    }
-    c->allocs++;
-    return malloc(n);
-}
-
-static void *count_realloc(void *p, size_t n, void *u)
-{
-    Counter *c = u;
-    if (c->fail_at >= 0 && c->allocs >= c->fail_at) {
-        c->allocs++;
-        return NULL;
-    }
-    c->allocs++;
-    return realloc(p, n);
-}
-
-static void count_free(void *p, void *u)
-{
-    ((Counter *)u)->frees++;
-    free(p);
-}
-
-static void install(Counter *c, long fail_at)
-{
-    c->allocs = c->frees = 0;
-    c->fail_at = fail_at;
-    GAllocator a = {count_alloc, count_realloc, count_free, c};
-    gmem_set_allocator(&a);
-}
+#include "test_alloc.h"
 
 typedef struct Set {
     GMaterial *lambert, *phong, *mirror, *glass, *emitter;
@@ -118,8 +77,8 @@ static void zero_alloc_case(const char *model_name)
     sp.from = NULL;
     sp.to = set.glass;
 
-    Counter c;
-    install(&c, -1);
+    static TuAlloc c;
+    tu_alloc_install(&c);
     double sum = 0.0;
     for (int k = 0; k < 1000; k++) {
         GScratchMark mark = gscratch_mark(s);
@@ -164,8 +123,8 @@ static void zero_alloc_case(const char *model_name)
     }
     gmem_set_allocator(NULL);
     print_message("%s: 1000 rounds of every material method: %ld allocations, %ld frees (sum %.3f)\n", model_name,
-                  c.allocs, c.frees, sum);
-    assert_int_equal(c.allocs, 0);
+                  c.calls, c.frees, sum);
+    assert_int_equal(c.calls, 0);
     assert_int_equal(c.frees, 0);
     assert_true(sum > 0.0 && isfinite(sum));
     free_set(&set);
@@ -190,7 +149,7 @@ static void test_constructors_out_of_memory(void **state)
     for (int which = 0; which < 5; which++) {
         int succeeded = 0;
         for (long k = 0; k < 50 && !succeeded; k++) {
-            Counter c;
+            static TuAlloc c; /* fails from call k on */
             gscratch_reset(s);
             GColor kd, ks;
             double a[3] = {0.3, 0.2, 0.1};
@@ -201,7 +160,8 @@ static void test_constructors_out_of_memory(void **state)
             GPhongParams pp = {&kd, &ks, 10.0, &ks};
             GDielectricParams dp = {gdispersion_constant(1.5), &kd, &ks};
             GMaterial *out = (GMaterial *)&c;
-            install(&c, k);
+            c = (TuAlloc){.fail_call = k + 1, .fail_after = 1};
+            tu_alloc_install(&c);
             int rc = which == 0   ? glambert_create(m, &kd, &out, &err)
                      : which == 1 ? gphong_create(m, &pp, &out, &err)
                      : which == 2 ? gmirror_create(m, &kd, &out, &err)
@@ -211,7 +171,7 @@ static void test_constructors_out_of_memory(void **state)
                 succeeded = 1;
                 assert_non_null(out);
                 gmaterial_unref(out);
-                assert_int_equal(c.allocs, c.frees);
+                assert_int_equal(c.calls, c.frees);
                 assert_true(k >= 2); /* at least the instance and one colour */
             } else {
                 assert_int_equal(rc, G_ERR_NOMEM);

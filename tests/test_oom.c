@@ -1,7 +1,7 @@
 /* test_oom.c - out of memory: every allocation the library makes while loading files can fail, and the load then
  * returns an error status with a message instead of crashing, and frees everything it made.
  *
- * A counting allocator (gmem_set_allocator) fails the k-th allocation for k = 0, 1, 2, ... (and, in a second
+ * The test allocator (test_alloc.h) fails the k-th allocation for k = 0, 1, 2, ... (and, in a second
  * sweep, every allocation from the k-th on, so the error paths themselves get no memory either) over:
  *   - a material file with an include, colours of every literal form, every built-in material, a BFC matrix
  *     and the fluorescent materials, read in the spectral model (glibrary_create + glibrary_load_file);
@@ -26,66 +26,11 @@
 #include "generic/services/bfc.h"
 #include "generic/memory.h"
 #include "generic/reader.h"
+#include "test_alloc.h"
 
-/* ---- the failing allocator ---- */
+/* ---- the failing allocator: the test allocator (test_alloc.h) ---- */
 
-typedef struct Budget {
-    long calls;   /* allocation calls so far (alloc and realloc) */
-    long fail_at; /* the call that fails (0 = the first); < 0: none */
-    int sticky;   /* fail every call from fail_at on */
-    int failed;   /* a call has failed */
-    long live;    /* blocks allocated and not yet freed */
-} Budget;
-
-static Budget budget;
-
-static int should_fail(void)
-{
-    long n = budget.calls++;
-    if (budget.fail_at >= 0 && (n == budget.fail_at || (budget.sticky && n > budget.fail_at))) {
-        budget.failed = 1;
-        return 1;
-    }
-    return 0;
-}
-
-static void *oom_alloc(size_t size, void *user)
-{
-    (void)user;
-    if (should_fail())
-        return NULL;
-    void *p = malloc(size);
-    if (p)
-        budget.live++;
-    return p;
-}
-
-static void *oom_realloc(void *ptr, size_t size, void *user)
-{
-    if (!ptr)
-        return oom_alloc(size, user);
-    if (should_fail())
-        return NULL;
-    return realloc(ptr, size);
-}
-
-static void oom_free(void *ptr, void *user)
-{
-    (void)user;
-    if (!ptr)
-        return;
-    budget.live--;
-    free(ptr);
-}
-
-static void install(long fail_at, int sticky)
-{
-    memset(&budget, 0, sizeof budget);
-    budget.fail_at = fail_at;
-    budget.sticky = sticky;
-    static const GAllocator a = {oom_alloc, oom_realloc, oom_free, NULL};
-    gmem_set_allocator(&a);
-}
+static TuAlloc alloc;
 
 /* ---- files ---- */
 
@@ -224,11 +169,12 @@ static long sweep(Attempt attempt, const void *arg, int sticky, const char *what
     assert_int_equal(rc, G_OK);
     long k;
     for (k = 0; k < 1000000; k++) {
-        install(k, sticky);
+        alloc = (TuAlloc){.fail_call = k + 1, .fail_after = sticky};
+        tu_alloc_install(&alloc);
         gerror_clear(&err);
         rc = attempt(arg, &err);
-        Budget b = budget;
         gmem_set_allocator(NULL);
+        TuAlloc b = alloc;
         if (b.live != 0)
             print_error("%s: allocation %ld failing (%s) leaves %ld blocks (status %d: %s)\n", what, k,
                         sticky ? "and all after it" : "alone", b.live, rc, err.message);

@@ -12,8 +12,8 @@
 #include <unistd.h>
 
 #include "generic/builtins.h"
-#include "generic/memory.h"
 #include "generic/services/probe.h"
+#include "test_alloc.h"
 
 static double rnd(unsigned *s)
 {
@@ -419,22 +419,6 @@ static void test_fibonacci_is_even(void **state)
     free(n);
 }
 
-/* An allocator that fails from the k-th allocation on (thread safe: the irradiance sum allocates in threads). */
-static long fail_at, calls;
-static void *oom_alloc(size_t n, void *u)
-{
-    (void)u;
-    long c = __atomic_fetch_add(&calls, 1, __ATOMIC_SEQ_CST);
-    return c >= fail_at ? NULL : malloc(n);
-}
-static void *oom_realloc(void *p, size_t n, void *u)
-{
-    (void)u;
-    long c = __atomic_fetch_add(&calls, 1, __ATOMIC_SEQ_CST);
-    return c >= fail_at ? NULL : realloc(p, n);
-}
-static void oom_free(void *p, void *u) { (void)u; free(p); }
-
 /* Every allocation failure is reported as G_ERR_NOMEM and leaks nothing (the sanitizer build checks). */
 static void test_out_of_memory(void **state)
 {
@@ -442,13 +426,13 @@ static void test_out_of_memory(void **state)
     float px[16 * 8 * 3];
     for (int i = 0; i < 16 * 8 * 3; i++)
         px[i] = (float)(i % 7);
-    GAllocator a = {oom_alloc, oom_realloc, oom_free, NULL};
+    static TuAlloc alloc; /* fails from the k-th call on (the irradiance sum allocates in threads) */
     const GProbeTechnique ts[] = {GPROBE_MEDIANCUT, GPROBE_ADAPTIVE, GPROBE_KMEANS, GPROBE_IRRADIANCE};
     for (int t = -1; t < 4; t++) {
         int succeeded = 0;
-        for (fail_at = 0; fail_at < 200 && !succeeded; fail_at++) {
-            calls = 0;
-            gmem_set_allocator(&a);
+        for (long k = 0; k < 200 && !succeeded; k++) {
+            alloc = (TuAlloc){.fail_call = k + 1, .fail_after = 1};
+            tu_alloc_install(&alloc);
             GProbe *p = NULL;
             GError err;
             int rc = gprobe_create(16, 8, px, &p, &err);

@@ -533,41 +533,6 @@ static void test_limits(void **state)
 
 /* ---- no leak on any error path: fail the n-th allocation for every n ---- */
 
-static long live;
-static long countdown;
-static void *fail_alloc(size_t n, void *u)
-{
-    (void)u;
-    if (countdown > 0 && --countdown == 0)
-        return NULL;
-    void *p = malloc(n + 16);
-    if (!p)
-        return NULL;
-    *(size_t *)p = n;
-    live++;
-    return (char *)p + 16;
-}
-static void *fail_realloc(void *ptr, size_t n, void *u)
-{
-    if (!ptr)
-        return fail_alloc(n, u);
-    if (countdown > 0 && --countdown == 0)
-        return NULL;
-    void *p = realloc((char *)ptr - 16, n + 16);
-    if (!p)
-        return NULL;
-    *(size_t *)p = n;
-    return (char *)p + 16;
-}
-static void fail_free(void *ptr, void *u)
-{
-    (void)u;
-    if (!ptr)
-        return;
-    live--;
-    free((char *)ptr - 16);
-}
-
 static void test_allocation_failures(void **state)
 {
     (void)state;
@@ -581,21 +546,21 @@ static void test_allocation_failures(void **state)
                        "object sphere { material lambert { reflectance rgb 0.1 0.2 0.3 } }\n";
     GLibrary *lib = load(text); /* registers everything the run needs before counting */
     glibrary_destroy(lib);
-    GAllocator a = {fail_alloc, fail_realloc, fail_free, NULL};
+    /* tagged blocks: a block the library frees with free() instead of gmem_free, or the reverse, crashes */
+    static TuAlloc alloc;
     int failures = 0;
     for (long n = 1; n < 100000; n++) {
-        live = 0;
-        countdown = n;
-        gmem_set_allocator(&a);
+        alloc = (TuAlloc){.fail_call = n, .tagged = 1};
+        tu_alloc_install(&alloc);
         GError err;
         int rc = greader_load_string(text, "t.mat", NULL, &lib, &err);
         if (rc == G_OK)
             glibrary_destroy(lib);
         gmem_set_allocator(NULL);
-        if (live != 0)
-            print_error("allocation %ld failing leaves %ld blocks (rc %d: %s)\n", n, live, rc, err.message);
-        assert_int_equal(live, 0);
-        if (rc == G_OK && countdown > 0)
+        if (alloc.live != 0)
+            print_error("allocation %ld failing leaves %ld blocks (rc %d: %s)\n", n, alloc.live, rc, err.message);
+        assert_int_equal(alloc.live, 0);
+        if (rc == G_OK && !alloc.failed)
             break; /* every allocation succeeded: all failure points were covered */
         assert_true(rc < 0);
         failures++;

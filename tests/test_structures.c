@@ -16,7 +16,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "test_util.h"
 #include "texture_fixtures.h"
@@ -47,8 +46,6 @@ static void text_add(Text *t, const char *fmt, ...)
         assert_non_null(t->s);
     }
 }
-
-static double cpu_seconds(void) { return (double)clock() / CLOCKS_PER_SEC; }
 
 static GLibrary *load_ok(const Text *t)
 {
@@ -94,7 +91,7 @@ static void test_csg_long_union(void **state)
     for (int i = 0; i < MANY; i++)
         text_add(&t, "transform { translate %d 0 0 } sphere 0.25\n", i);
     text_add(&t, "} }\n");
-    double t0 = cpu_seconds();
+    double t0 = tu_cpu_seconds();
     GLibrary *lib = load_ok(&t);
     const GGenerator *g = glibrary_find(lib, GKIND_GENERATOR, "g");
     assert_non_null(g);
@@ -105,7 +102,7 @@ static void test_csg_long_union(void **state)
     assert_near(value_at(g, MANY - 0.7, 0, 0), 0.0, 0);
     assert_near(value_at(g, 7, 0.26, 0), 0.0, 0);
     glibrary_destroy(lib);
-    double took = cpu_seconds() - t0;
+    double took = tu_cpu_seconds() - t0;
     print_message("csg union of %d spheres: read, 6 inside tests and freed in %.2f s of CPU\n", MANY, took);
     assert_true(took < 20.0);
     free(t.s);
@@ -269,9 +266,9 @@ static void test_reference_chain(void **state)
     /* 100,000 references: refused at the first node past the limit */
     t = (Text){0};
     chain(&t, MANY);
-    double t0 = cpu_seconds();
+    double t0 = tu_cpu_seconds();
     load_fails(&t, "gen:257:60: scale: the node would be 257 deep, the limit is 256");
-    assert_true(cpu_seconds() - t0 < 10.0);
+    assert_true(tu_cpu_seconds() - t0 < 10.0);
     free(t.s);
 }
 
@@ -298,10 +295,10 @@ static void test_self_blending_tower(void **state)
     free(t.s);
     t = (Text){0};
     tower(&t, 40); /* 40 levels would be 2^41 calls: refused at level 16, at once */
-    double t0 = cpu_seconds();
+    double t0 = tu_cpu_seconds();
     load_fails(&t, "gen:17:61: interpolate: one call of the node would make 131071 material calls, the limit is "
                    "100000");
-    assert_true(cpu_seconds() - t0 < 5.0);
+    assert_true(tu_cpu_seconds() - t0 < 5.0);
     free(t.s);
 }
 
@@ -349,9 +346,9 @@ static void test_many_entries(void **state)
     text_add(&t, "material m lambert { reflectance rgb 0.5 0.5 0.5 }\n");
     for (int i = 0; i < N; i++)
         text_add(&t, "node n%d scale { child m factor constant { value 0.5 } }\n", i);
-    double t0 = cpu_seconds();
+    double t0 = tu_cpu_seconds();
     GLibrary *lib = load_ok(&t);
-    double loaded = cpu_seconds() - t0;
+    double loaded = tu_cpu_seconds() - t0;
     assert_int_equal(glibrary_count(lib, GKIND_NODE), N);
     assert_int_equal(glibrary_count(lib, GKIND_MATERIAL), 1);
     long found = 0;
@@ -365,7 +362,7 @@ static void test_many_entries(void **state)
     assert_int_equal(found, N);
     assert_null(glibrary_entry(lib, GKIND_NODE, N, NULL, NULL));
     glibrary_destroy(lib);
-    double total = cpu_seconds() - t0;
+    double total = tu_cpu_seconds() - t0;
     print_message("%d nodes: loaded in %.2f s, listed, looked up and freed in %.2f s of CPU\n", N, loaded, total);
     assert_true(total < 10.0); /* about 0.5 s; quadratic listing took minutes */
     free(t.s);

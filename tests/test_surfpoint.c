@@ -15,6 +15,7 @@
 #include "generic/material.h"
 #include "generic/materials.h"
 #include "generic/surfpoint.h"
+#include "test_alloc.h"
 #include "test_util.h"
 
 static int normal_calls;
@@ -403,14 +404,14 @@ static void test_new_refuses(void **state)
         assert_null(gsurfpoint_new(bad[i].model, bad[i].arena, bad[i].p, bad[i].n, bad[i].du, bad[i].dv, bad[i].u,
                                    bad[i].v, bad[i].surface, NULL));
     }
-    TuCounter c = {0, 0}; /* the first allocation fails */
-    GAllocator a = {tu_count_alloc, tu_count_realloc, tu_count_free, &c};
-    gmem_set_allocator(&a);
+    static TuAlloc a;
+    a = (TuAlloc){.fail_call = 1}; /* the first allocation fails */
+    tu_alloc_install(&a);
     GSurfPoint *sp = gsurfpoint_new(model, arena, P, N, DU, DV, 0, 0, 0, &err);
     gmem_set_allocator(NULL);
     assert_null(sp);
     assert_int_equal(err.code, G_ERR_NOMEM);
-    assert_int_equal(c.allocs, 1);
+    assert_int_equal(a.calls, 1);
     gscratch_destroy(arena);
     gcolormodel_destroy(model);
 }

@@ -554,8 +554,9 @@ static void test_out_of_memory(void **state)
     GError err;
     int failures = 0;
     for (long k = 0; k < 200; k++) {
-        static TuCounter counter;
-        tu_count_install(&counter, k);
+        static TuAlloc alloc;
+        alloc = (TuAlloc){.fail_call = k + 1};
+        tu_alloc_install(&alloc);
         int rc = build_tree(f->rgb, &err);
         gmem_set_allocator(NULL);
         if (rc == G_OK)

@@ -1,6 +1,6 @@
 /* test_util.h - small helpers shared by the test programs (static inline, include after <cmocka.h>):
- * a double-precision closeness assertion, a counting allocator that can fail one chosen call, running a
- * built tool with its output captured, and a model's diagonal matrix. */
+ * a double-precision closeness assertion, the test allocator (test_alloc.h), running a built tool with its output
+ * captured, a model's diagonal matrix, and clocks for time bounds. */
 #ifndef GENERIC_TEST_UTIL_H
 #define GENERIC_TEST_UTIL_H
 
@@ -12,7 +12,7 @@
 #include <unistd.h>
 
 #include "generic/color.h"
-#include "generic/memory.h"
+#include "test_alloc.h"
 
 /** |a - b| <= tol in double precision (cmocka's assert_float_equal works in float); a failure prints the
  * expression, both values and the tolerance. */
@@ -53,42 +53,6 @@ static inline int tu_diagonal_matrix(const GColorModel *m, GColor *out)
 
 /** The number of elements of an array (for gcolor_wrap's size argument; not for a pointer). */
 #define tu_floats(a) (sizeof(a) / sizeof((a)[0]))
-
-/** What the counting allocator counts: calls of alloc and realloc since it was installed, and the call
- * (numbered from 0) that fails. */
-typedef struct TuCounter {
-    long allocs;
-    long fail_at; /**< -1: none fails */
-} TuCounter;
-
-static inline void *tu_count_alloc(size_t n, void *user)
-{
-    TuCounter *c = user;
-    return c->allocs++ == c->fail_at ? NULL : malloc(n);
-}
-
-static inline void *tu_count_realloc(void *p, size_t n, void *user)
-{
-    TuCounter *c = user;
-    return c->allocs++ == c->fail_at ? NULL : realloc(p, n);
-}
-
-static inline void tu_count_free(void *p, void *user)
-{
-    (void)user;
-    free(p);
-}
-
-/** Installs the counting allocator (gmem_set_allocator) with c zeroed and failing call fail_at (-1: none);
- * gmem_set_allocator(NULL) restores the C library's. c must outlive the installation: give it static
- * storage, so that an assertion failing in between does not leave the allocator on a dead stack frame. */
-static inline void tu_count_install(TuCounter *c, long fail_at)
-{
-    c->allocs = 0;
-    c->fail_at = fail_at;
-    GAllocator a = {tu_count_alloc, tu_count_realloc, tu_count_free, c};
-    gmem_set_allocator(&a);
-}
 
 /** Writes text into a new file at path; 0, or -1 when it cannot be created. */
 static inline int tu_write_file(const char *path, const char *text)
@@ -138,11 +102,22 @@ static inline int tu_rmtree(const char *dir)
     return system(cmd) == 0 ? 0 : -1;
 }
 
-/** A monotonic clock in seconds, for time bounds. */
-static inline double tu_seconds(void)
+/** Seconds of a clock, for time bounds: tu_seconds() the monotonic clock, tu_cpu_seconds() the process's CPU time
+ * (all threads). A time bound holds only on a machine that no other test loads: a program that asserts one is
+ * listed in SERIAL of scripts/run_tests.sh, which runs it alone after the parallel batch. Read in the batch
+ * (GENERIC_TEST_BATCH set), either clock fails the test instead. */
+#define tu_seconds() tu_clock_seconds(CLOCK_MONOTONIC, __FILE__, __LINE__)
+#define tu_cpu_seconds() tu_clock_seconds(CLOCK_PROCESS_CPUTIME_ID, __FILE__, __LINE__)
+
+static inline double tu_clock_seconds(clockid_t clock, const char *file, int line)
 {
+    if (getenv("GENERIC_TEST_BATCH")) {
+        print_error("%s:%d: a time bound in the parallel batch: list the program in SERIAL of scripts/run_tests.sh\n",
+                    file, line);
+        _fail(file, line);
+    }
     struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
+    clock_gettime(clock, &t);
     return t.tv_sec + t.tv_nsec * 1e-9;
 }
 

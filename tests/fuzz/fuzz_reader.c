@@ -1,30 +1,5 @@
-/* fuzz_reader.c - libFuzzer target: the text format loaded from a string (every registered entry kind, four colour models), then evaluated.
- * The entry point is shared with tests/test_regress.c (fuzz_entry.h); `make fuzz` builds and runs it. */
-#include "fuzz_entry.h"
-
-/* OpenImageIO's TextureSystem frees its implementation with a sized delete of the wrong size (see
- * lib/image/texture_oiio.cpp); that mismatch is inside the system library, not ours. */
-const char *__asan_default_options(void);
-const char *__asan_default_options(void) { return "new_delete_type_mismatch=0"; }
-
-int LLVMFuzzerInitialize(int *argc, char ***argv);
-int LLVMFuzzerInitialize(int *argc, char ***argv)
-{
-    (void)argc;
-    (void)argv;
-    if (gfuzz_setup() != 0) {
-        fprintf(stderr, "fuzz_reader: cannot set up the private directory\n");
-        abort();
-    }
-    return 0;
-}
-
-int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
-int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
-{
-    if (gfuzz_reader(data, size) != 0) {
-        fprintf(stderr, "fuzz_reader: %s\n", gfuzz_why);
-        abort();
-    }
-    return 0;
-}
+/* fuzz_reader.c - libFuzzer target: the text format loaded from a string (every registered entry kind, four colour
+ * models), then evaluated. The entry point is shared with tests/test_regress.c (fuzz_entry.h); `make fuzz` builds
+ * and runs it. */
+#define GFUZZ_TARGET reader
+#include "fuzz_target.h"

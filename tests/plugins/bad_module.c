@@ -1,4 +1,4 @@
-/* bad_module.c - broken modules for tests/test_plugin.c, built four ways by the Makefile's plug-in section:
+/* bad_module.c - broken modules for tests/test_plugin.c, built four ways by the test plug-in table (tests/build.mk):
  *   -DBAD_ABI       exports another generic_module_abi than the library's (must be refused, naming both);
  *   -DFAIL_INIT     registers a type and then fails its init (nothing may stay registered);
  *   -DNO_INIT       exports the version but no entry point;

@@ -1,6 +1,6 @@
 /* nonconforming.c - modules that break one conformance property on purpose, for tests/scripts/conformance.sh
  * (gmat check and gcolor check must report them as failing, naming the property). Built once per variant by the
- * Makefile's plug-in section:
+ * test plug-in table of tests/build.mk:
  *   -DGAIN       material "gain_lambert": f_r = 1.5 / pi, a Lambertian surface reflecting 1.5 times the light
  *                (albedo 1.5; reciprocal, finite);
  *   -DSKEWED     material "skewed_lambert": f_r = (0.25 + 0.5 cos^2(theta_in)) / pi, which depends on the

@@ -23,36 +23,12 @@ mkdir "$stage/work"
 cd "$stage/work"
 
 # ---- the library through pkg-config ----
-cat > x.c <<'C'
-#include <generic/builtins.h>
-#include <generic/color.h>
-#include <stdio.h>
-int main(void)
-{
-    GError err;
-    GColorModel *m;
-    if (generic_register_builtins(&err) != G_OK || gcolormodel_create("rgb", NULL, &m, &err) != G_OK) {
-        fprintf(stderr, "%s\n", err.message);
-        return 1;
-    }
-    float s[3];
-    GColor c;
-    if (gcolor_wrap(&c, m, s, 3) != G_OK)
-        return 1;
-    double w[3] = {1, 1, 1}, xyz[3];
-    if (gcolor_from_rgb(&c, w, GCOLOR_LIGHT) != G_OK || gcolor_to_xyz(&c, GCOLOR_LIGHT, xyz) != G_OK)
-        return 1;
-    gcolormodel_destroy(m);
-    printf("%.4f %.4f %.4f\n", xyz[0], xyz[1], xyz[2]);
-    return (xyz[1] > 0.999 && xyz[1] < 1.001) ? 0 : 1;
-}
-C
 export PKG_CONFIG_SYSROOT_DIR="$stage"
 export PKG_CONFIG_PATH="$root/lib/pkgconfig"
 # a library built with sanitizers needs their run-time in the program too
 san=""
 nm -A "$src/$BUILD/lib/libgeneric.a" 2>/dev/null | grep -q __asan_ && san="-fsanitize=address,undefined"
-cc $san x.c -o x $(pkg-config --cflags --libs generic)
+cc $san "$src/tests/scripts/pkgconfig_user.c" -o x $(pkg-config --cflags --libs generic)
 out=$(LD_LIBRARY_PATH="$root/lib" ./x) || fail "the program built with the installed .pc: $out"
 echo "installed library: D65 white XYZ = $out"
 

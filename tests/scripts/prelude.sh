@@ -11,6 +11,41 @@ fail() {
 # is on PATH (PACKAGE: where scripts/deps.sh gets it).
 need_program() { [ -x "$1" ] || { echo "FAIL: $1 is not built"; exit 1; }; }
 need_command() { command -v "$1" > /dev/null || { echo "FAIL: $1 ($2, scripts/deps.sh) is missing"; exit 1; }; }
+# serial_only: a script that asserts time bounds says so first; such a bound holds only on a machine no other test
+# loads, so the script is listed in SERIAL of scripts/run_tests.sh (run alone, after the parallel batch), and in
+# the batch (GENERIC_TEST_BATCH set) it fails at once. now: the time in seconds, with fractions.
+serial_only() {
+    [ -z "${GENERIC_TEST_BATCH:-}" ] || {
+        echo "FAIL: time bounds in the parallel batch: list $(basename "$0") in SERIAL of scripts/run_tests.sh"
+        exit 1
+    }
+}
+now() { date +%s.%N; }
+# bounded_run WHAT WANT MAX_SECONDS COMMAND...: runs COMMAND (stdout in TMP/out, stderr in TMP/err), which must exit
+# 0 (WANT 0) or 1..127 (WANT 1), without a sanitizer report or a failed assertion, within MAX_SECONDS (a time
+# bound: call serial_only first).
+bounded_run() {
+    what=$1 want=$2 max=$3
+    shift 3
+    t0=$(now)
+    "$@" > "$TMP/out" 2> "$TMP/err"
+    st=$?
+    took=$(echo "$(now) - $t0" | bc)
+    echo "$what: status $st, $took s"
+    if [ $st -ge 128 ]; then
+        fail "$what: crashed (status $st): $(head -c 2000 "$TMP/err")"
+    elif [ "$want" = 0 ] && [ $st -ne 0 ]; then
+        fail "$what: failed (status $st): $(head -c 2000 "$TMP/err")"
+    elif [ "$want" != 0 ] && [ $st -eq 0 ]; then
+        fail "$what: succeeded"
+    fi
+    if grep -q -E "Sanitizer|runtime error:|Assertion" "$TMP/err"; then
+        fail "$what: sanitizer report or failed assertion: $(head -c 2000 "$TMP/err")"
+    fi
+    if [ "$(echo "$took > $max" | bc)" = 1 ]; then
+        fail "$what: took $took s (more than $max s)"
+    fi
+}
 # listed NAME: appends "NAME MODEL" to TMP/nodes, MODEL rgb, spectrum and bispectral in turn (the count in turn).
 turn=0
 listed() {

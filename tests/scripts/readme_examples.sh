@@ -102,7 +102,11 @@ else
     mkdir -p "$tree"
     dirs="include lib colormodels materials textures scripts share"
     for d in $dirs; do cp -R "$src/$d" "$tree/"; done
-    cp "$src/Makefile" "$tree/"
+    # the build: the top Makefile, every folder's build.mk it includes, the pkg-config template
+    (cd "$src" && find . -path ./build -prune -o -name build.mk -print) | while read -r f; do
+        mkdir -p "$tree/$(dirname "$f")" && cp "$src/$f" "$tree/$f"
+    done
+    cp "$src/Makefile" "$src/generic.pc.in" "$tree/"
     while read -r path line; do cp "$tmp/examples/$path" "$tree/$path"; done < "$tmp/list"
     added=0
     edited=0

@@ -8,31 +8,13 @@
 BUILD=$(cd "${1:-build}" 2> /dev/null && pwd) || { echo "FAIL: no build directory ${1:-build}"; exit 1; }
 GMAT="$BUILD/bin/gmat"
 . "$(dirname "$0")/prelude.sh"
-now() { date +%s.%N; }
+serial_only
 
-# run WHAT WANT_STATUS MAX_SECONDS FILE [EXPECTED STDERR TEXT]
+# run WHAT WANT_STATUS MAX_SECONDS FILE [EXPECTED STDERR TEXT]: gmat list FILE through bounded_run (prelude.sh)
 run() {
-    what=$1 want=$2 max=$3 file=$4 msg=$5
-    t0=$(now)
-    "$GMAT" list "$file" > "$TMP/out" 2> "$TMP/err"
-    st=$?
-    took=$(echo "$(now) - $t0" | bc)
-    echo "$what: status $st, $took s"
-    if [ $st -ge 128 ]; then
-        fail "$what: crashed (status $st): $(head -c 2000 "$TMP/err")"
-    elif [ "$want" = 0 ] && [ $st -ne 0 ]; then
-        fail "$what: failed (status $st): $(head -c 2000 "$TMP/err")"
-    elif [ "$want" != 0 ] && [ $st -eq 0 ]; then
-        fail "$what: succeeded"
-    fi
-    if [ -n "$msg" ] && ! grep -qF "$msg" "$TMP/err"; then
-        fail "$what: expected '$msg', got: $(head -c 2000 "$TMP/err")"
-    fi
-    if grep -q -E "Sanitizer|runtime error:" "$TMP/err"; then
-        fail "$what: sanitizer report: $(head -c 2000 "$TMP/err")"
-    fi
-    if [ "$(echo "$took > $max" | bc)" = 1 ]; then
-        fail "$what: took $took s (more than $max s)"
+    bounded_run "$1" "$2" "$3" "$GMAT" list "$4"
+    if [ -n "$5" ] && ! grep -qF "$5" "$TMP/err"; then
+        fail "$1: expected '$5', got: $(head -c 2000 "$TMP/err")"
     fi
 }
 

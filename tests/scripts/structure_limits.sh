@@ -9,31 +9,7 @@ BUILD=$(cd "${1:-build}" 2> /dev/null && pwd) || { echo "FAIL: no build director
 GMAT="$BUILD/bin/gmat"
 GTRACE="$BUILD/bin/gtrace"
 . "$(dirname "$0")/prelude.sh"
-now() { date +%s.%N; }
-
-# run WHAT WANT_STATUS MAX_SECONDS COMMAND...: stdout in $TMP/out, stderr in $TMP/err
-run() {
-    what=$1 want=$2 max=$3
-    shift 3
-    t0=$(now)
-    "$@" > "$TMP/out" 2> "$TMP/err"
-    st=$?
-    took=$(echo "$(now) - $t0" | bc)
-    echo "$what: status $st, $took s"
-    if [ $st -ge 128 ]; then
-        fail "$what: crashed (status $st): $(head -c 2000 "$TMP/err")"
-    elif [ "$want" = 0 ] && [ $st -ne 0 ]; then
-        fail "$what: failed (status $st): $(head -c 2000 "$TMP/err")"
-    elif [ "$want" != 0 ] && [ $st -eq 0 ]; then
-        fail "$what: succeeded"
-    fi
-    if grep -q -E "Sanitizer|runtime error:" "$TMP/err"; then
-        fail "$what: sanitizer report: $(head -c 2000 "$TMP/err")"
-    fi
-    if [ "$(echo "$took > $max" | bc)" = 1 ]; then
-        fail "$what: took $took s (more than $max s)"
-    fi
-}
+serial_only
 
 header='material m lambert { reflectance rgb 0.5 0.5 0.5 }
 camera pinhole { from <0, 0, -10> at <0, 0, 0> fov 40 width 16 height 16 spp 1 depth 2 }
@@ -46,7 +22,7 @@ light point { position <0, 5, -5> intensity rgb 10 10 10 }'
         printf "object sphere { center <%g, %g, %g> radius 0.01 material m }\n",
             (i % 100) * 0.05 - 2.5, int(i / 100) % 100 * 0.05 - 2.5, int(i / 10000) * 0.05 }'
 } > "$TMP/spheres.scene"
-run "gtrace, 200,000 spheres" 0 30 "$GTRACE" "$TMP/spheres.scene" -o "$TMP/spheres.png" -q
+bounded_run "gtrace, 200,000 spheres" 0 30 "$GTRACE" "$TMP/spheres.scene" -o "$TMP/spheres.png" -q
 [ -s "$TMP/spheres.png" ] || fail "gtrace, 200,000 spheres: no image"
 
 # ---- long operand lists as textures ----
@@ -68,7 +44,7 @@ run "gtrace, 200,000 spheres" 0 30 "$GTRACE" "$TMP/spheres.scene" -o "$TMP/spher
     echo "object sphere { center <-1, 0, 0> radius 1 material interpolate { a m b mirror { reflectance rgb 1 1 1 } t pips } }"
     echo "object sphere { center <1, 0, 0> radius 1 material scale { child m factor dots } }"
 } > "$TMP/shapes.scene"
-run "gtrace, a union of 300,000 spheres and one of 300,000 circles as textures" 0 120 \
+bounded_run "gtrace, a union of 300,000 spheres and one of 300,000 circles as textures" 0 120 \
     "$GTRACE" "$TMP/shapes.scene" -o "$TMP/shapes.png" -q
 [ -s "$TMP/shapes.png" ] || fail "gtrace, long unions: no image"
 
@@ -77,7 +53,7 @@ run "gtrace, a union of 300,000 spheres and one of 300,000 circles as textures" 
     echo 'material m lambert { reflectance rgb 0.5 0.5 0.5 }'
     awk 'BEGIN { for (i = 0; i < 200000; i++) printf "node n%d scale { child m factor constant { value 0.5 } }\n", i }'
 } > "$TMP/nodes.mat"
-run "gmat list, 200,000 nodes" 0 30 "$GMAT" list "$TMP/nodes.mat"
+bounded_run "gmat list, 200,000 nodes" 0 30 "$GMAT" list "$TMP/nodes.mat"
 n=$(grep -c '^node  *n[0-9]* *scale' "$TMP/out")
 [ "$n" = 200000 ] || fail "gmat list, 200,000 nodes: $n listed"
 grep -q '^node  *n199999 ' "$TMP/out" || fail "gmat list, 200,000 nodes: the last one is not listed"
@@ -87,7 +63,7 @@ grep -q '^node  *n199999 ' "$TMP/out" || fail "gmat list, 200,000 nodes: the las
     echo 'material n0 lambert { reflectance rgb 0.5 0.5 0.5 }'
     awk 'BEGIN { for (i = 1; i <= 100000; i++) printf "node n%d scale { child n%d factor constant { value 1 } }\n", i, i - 1 }'
 } > "$TMP/chain.mat"
-run "gmat eval, a chain of 100,000 references" 1 30 "$GMAT" eval "$TMP/chain.mat" n100000 --in 30 --out 30
+bounded_run "gmat eval, a chain of 100,000 references" 1 30 "$GMAT" eval "$TMP/chain.mat" n100000 --in 30 --out 30
 want="gmat: $TMP/chain.mat:257:58: scale: the node would be 257 deep, the limit is 256"
 [ "$(cat "$TMP/err")" = "$want" ] || fail "chain: expected '$want', got '$(cat "$TMP/err")'"
 
@@ -95,13 +71,13 @@ want="gmat: $TMP/chain.mat:257:58: scale: the node would be 257 deep, the limit 
     echo 'material n0 lambert { reflectance rgb 0.5 0.5 0.5 }'
     awk 'BEGIN { for (i = 1; i <= 40; i++) printf "node n%d interpolate { a n%d b n%d t constant { value 0.5 } }\n", i, i - 1, i - 1 }'
 } > "$TMP/tower.mat"
-run "gmat eval, a tower of 40 self-blending nodes" 1 30 "$GMAT" eval "$TMP/tower.mat" n40 --in 30 --out 30
+bounded_run "gmat eval, a tower of 40 self-blending nodes" 1 30 "$GMAT" eval "$TMP/tower.mat" n40 --in 30 --out 30
 want="gmat: $TMP/tower.mat:17:61: interpolate: one call of the node would make 131071 material calls, the limit is 100000"
 [ "$(cat "$TMP/err")" = "$want" ] || fail "tower: expected '$want', got '$(cat "$TMP/err")'"
 
 # 16 levels are within the budget (65,535 calls) and evaluate to the leaf's value
 head -n 16 "$TMP/tower.mat" > "$TMP/tower15.mat"
-run "gmat eval, a tower of 15 self-blending nodes" 0 30 "$GMAT" eval "$TMP/tower15.mat" n15 --in 30 --out 30
+bounded_run "gmat eval, a tower of 15 self-blending nodes" 0 30 "$GMAT" eval "$TMP/tower15.mat" n15 --in 30 --out 30
 grep reflected "$TMP/out" > "$TMP/top"
 "$GMAT" eval "$TMP/tower15.mat" n0 --in 30 --out 30 2>&1 | grep reflected > "$TMP/leaf"
 [ -s "$TMP/top" ] && cmp -s "$TMP/top" "$TMP/leaf" || fail "tower of 15: $(cat "$TMP/out") differs from the leaf's $(cat "$TMP/leaf")"
