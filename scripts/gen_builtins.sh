@@ -1,12 +1,12 @@
 #!/bin/sh
-# Writes the C file of the built-in type list (include/generic/builtins.h) from the GENERIC_TYPE and
-# GENERIC_TYPE_NAMED records (include/generic/plugin.h) of the given source files, in the order of the files
-# and of the records within each file. Usage: gen_builtins.sh OUT.c SOURCE.c...
+# Writes the C file of the built-in type list (include/generic/builtins.h) from the GENERIC_TYPE, GENERIC_TYPE_NAMED
+# and *_PARAMS records (include/generic/plugin.h) of the given source files, in the order of the files and of the
+# records within each file. Usage: gen_builtins.sh OUT.c SOURCE.c...
 # The records are the only place a built-in is listed: adding a type is adding its file.
 set -e
 out=$1
 shift
-ids=$(sed -n 's/^GENERIC_TYPE\(_NAMED\)\{0,1\}([[:space:]]*\([A-Za-z_][A-Za-z0-9_]*\).*/\2/p' "$@")
+ids=$(sed -n 's/^GENERIC_TYPE\(_NAMED\)\{0,1\}\(_PARAMS\)\{0,1\}([[:space:]]*\([A-Za-z_][A-Za-z0-9_]*\).*/\3/p' "$@")
 dups=$(printf '%s\n' $ids | sort | uniq -d)
 if [ -n "$dups" ]; then
     echo "gen_builtins.sh: type records defined twice:" $dups >&2

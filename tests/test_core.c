@@ -124,7 +124,7 @@ static void test_registry(void **state)
     assert_null(gregistry_find(GKIND_COLORMODEL, "no-such-model"));
     assert_null(gregistry_find(GKIND_COUNT, "rgb"));
     static const int dummy = 1;
-    GTypeInfo t = {GKIND_GENERATOR, "test-core-dummy", &dummy, NULL, "a test entry", NULL};
+    GTypeInfo t = {GKIND_GENERATOR, "test-core-dummy", &dummy, NULL, "a test entry", NULL, NULL};
     GError e;
     assert_int_equal(gregistry_add(&t, &e), G_OK);
     assert_int_equal(gregistry_add(&t, &e), G_ERR_EXISTS);
@@ -136,7 +136,7 @@ static void test_registry(void **state)
     gregistry_names(GKIND_COLORMODEL, names, sizeof names);
     assert_non_null(strstr(names, "rgb"));
     assert_string_equal(gkind_name(GKIND_MATERIAL), "material");
-    GTypeInfo bad = {GKIND_COUNT, "x", NULL, NULL, NULL, NULL};
+    GTypeInfo bad = {GKIND_COUNT, "x", NULL, NULL, NULL, NULL, NULL};
     assert_int_equal(gregistry_add(&bad, &e), G_ERR_INVALID);
 }
 

@@ -111,8 +111,8 @@ static int parse_nest(GReader *r, const void *vt, void **object, GError *err)
     return G_OK;
 }
 
-static const GTypeInfo sphere_type = {GKIND_OBJECT, "sphere", NULL, parse_sphere, "test sphere", sphere_destroy};
-static const GTypeInfo nest_type = {GKIND_MATERIAL, "nest", NULL, parse_nest, "test nesting", NULL};
+static const GTypeInfo sphere_type = {GKIND_OBJECT, "sphere", NULL, parse_sphere, "test sphere", sphere_destroy, NULL};
+static const GTypeInfo nest_type = {GKIND_MATERIAL, "nest", NULL, parse_nest, "test nesting", NULL, NULL};
 
 static int register_test_types(void **state)
 {

@@ -64,7 +64,7 @@ static int parse_pair(GReader *r, const void *vtable, void **object, GError *err
     return G_OK;
 }
 
-static const GTypeInfo pair_type = {GKIND_OBJECT, "pair", NULL, parse_pair, "test pair", NULL};
+static const GTypeInfo pair_type = {GKIND_OBJECT, "pair", NULL, parse_pair, "test pair", NULL, NULL};
 
 static int register_types(void **state)
 {

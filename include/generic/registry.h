@@ -54,6 +54,9 @@ typedef struct GTypeInfo {
      * kind's default: material and node: gmaterial_unref; colormodel: gcolormodel_destroy; color:
      * gcolorspec_destroy (reader.h); generator: its class's release (texture.h); other kinds: gmem_free. */
     void (*destroy)(void *object);
+    /** The parameters the parse routine reads (GParamInfo below): rows ended by one whose name is NULL; a table
+     * of that row alone says the type takes none. NULL when the type does not describe them. */
+    const struct GParamInfo *params;
 } GTypeInfo;
 
 /** Registers a type (the struct is copied, with name and summary filled from the vtable when NULL; the
@@ -75,6 +78,28 @@ GENERIC_API GENERIC_NODISCARD int gregistry_list(GKind kind, const GTypeInfo **o
 GENERIC_API void gregistry_names(GKind kind, char *buf, size_t size);
 /** Keyword of a kind ("colormodel", "material", ...). */
 GENERIC_API const char *gkind_name(GKind kind);
+
+/** How a parameter is written in an entry. */
+typedef enum GParamForm {
+    GPARAM_NAMED = 0, /**< `NAME VALUE` in the entry's optional `{ ... }` block: any order, each at most once */
+    GPARAM_POSITIONAL /**< a value after the type keyword (or inside its positional block), in table order */
+} GParamForm;
+
+/** One row of a type's parameter table (GTypeInfo.params): what a parse routine reads, for the reference pages
+ * (`gmat types --markdown`) and for the checks that the table and the routine agree. Every string is static.
+ * `type` is the syntax of the value: "number" (or a defined constant), "numbers" (several in a row; `doc` says how
+ * many), "integer", "bool", "string" (quoted), "path" (a quoted file name, relative to the file), "vector"
+ * (`<x, y, z>` or `x y z`), "color", "material" (a material or texture node), "generator", "choice" (one of the
+ * words `range` lists), "formula" (a number or a keyword with numbers; `range` lists the forms), "block" (a
+ * `{ ... }` of its own syntax, which `doc` describes), or the keyword of a kind an application registers. */
+typedef struct GParamInfo {
+    const char *name;  /**< the keyword of a named parameter; a placeholder (e.g. "KELVIN") for a positional one */
+    GParamForm form;   /**< how it is written */
+    const char *type;  /**< the value's syntax (above) */
+    const char *def;   /**< the value taken when it is left out, as text; NULL: it must be given */
+    const char *range; /**< the values accepted ("[0, 1]", "object, world, uv"); NULL: any value of the type */
+    const char *doc;   /**< what it does, in a sentence */
+} GParamInfo;
 
 #ifdef __cplusplus
 }
