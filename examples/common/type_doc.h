@@ -19,19 +19,20 @@
     "integer, bool (true/false, yes/no, on/off, 1/0), string (quoted), path (a quoted file name, relative to\n"     \
     "the file), vector (`<x, y, z>` or `x y z`), color (a colour literal or the name of a colour), material (a\n"  \
     "material or texture node: a nested entry or a name), generator, choice (one of the words the range\n"        \
-    "lists), formula (a number or a keyword with numbers), block (a `{ ... }` of its own syntax). *default* is\n"  \
-    "the value taken when the parameter is left out; `required` means it must be given.\n"
+    "lists), formula (a number or a keyword with numbers), block (a `{ ... }` of its own syntax), shape (a\n"     \
+    "CSG or CPG shape tree). *range* gives the syntax of these. *default* is the value taken when the parameter\n"\
+    "is left out; `required` means it must be given.\n"
 
-/* Writes s as the text of a table cell: '|' escaped, line breaks as spaces; NULL or empty as `empty`. */
+/* Writes s as Markdown text that shows it as it is (a table cell's too): '\\', '|', '<' (`<axis>` would be an HTML
+ * tag) and '*' escaped, line breaks as spaces; NULL or empty as `empty`. */
 static inline void type_doc_cell(FILE *f, const char *s, const char *empty)
 {
     if (!s || !*s)
         s = empty;
     for (; *s; s++) {
-        if (*s == '|')
-            fputs("\\|", f);
-        else
-            fputc(*s == '\n' ? ' ' : *s, f);
+        if (strchr("\\|<*", *s))
+            fputc('\\', f);
+        fputc(*s == '\n' ? ' ' : *s, f);
     }
 }
 
@@ -54,9 +55,7 @@ static inline void type_doc_type(FILE *f, const GTypeInfo *t)
     }
     fputs("| name | form | type | default | range | what it does |\n| --- | --- | --- | --- | --- | --- |\n", f);
     for (const GParamInfo *p = t->params; p->name; p++) {
-        fputs("| `", f);
-        type_doc_cell(f, p->name, "");
-        fprintf(f, "` | %s | ", p->form == GPARAM_POSITIONAL ? "positional" : "named");
+        fprintf(f, "| `%s` | %s | ", p->name, p->form == GPARAM_POSITIONAL ? "positional" : "named");
         type_doc_cell(f, p->type, "");
         fputs(" | ", f);
         type_doc_cell(f, p->def, "required");

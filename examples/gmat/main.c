@@ -297,7 +297,10 @@ static const char *const doc_intros[] = {
     "`color [NAME] TYPE ...` names a colour literal. Wherever a parameter of type color is read, a literal of\n"
     "these types (or the name of a colour) stands; it is converted in the role of its use (reflectance or\n"
     "light).\n",
-    "`material [NAME] TYPE [{ ... }]`.\n",
+    "`material [NAME] TYPE [{ ... }]`. A colour parameter's range holds for each sample in the file's colour\n"
+    "model, widened by the model's conversion error; a reflectance exceeds 1 in a band only as the fold of a\n"
+    "re-radiation matrix whose energy stays at most 1 (README.md, \"Range after conversion\" and \"Reflectances\n"
+    "above 1\").\n",
     "`node [NAME] TYPE { ... }`: the nodes of texture trees. Nodes are materials: each stands wherever a\n"
     "material is expected, and the other way round.\n",
     "`generator [NAME] TYPE [{ ... }]`: a scalar (with its gradient) per surface point, for the parameters of\n"

@@ -12,9 +12,7 @@
 static const GKind scene_kinds[] = {GKIND_OBJECT, GKIND_LIGHT, GKIND_CAMERA};
 static const char *const scene_intros[] = {
     "`object [NAME] TYPE { ... }`: the shapes gtrace renders. Every shape but a group and an instance needs a\n"
-    "material. A `transform` block moves the shape: `{ translate <x, y, z>  rotate <ax, ay, az>  rotate_axis\n"
-    "<axis> DEG  scale S | scale <x, y, z> ... }`, steps applied in the order written (rotate: degrees about x,\n"
-    "then y, then z).\n",
+    "material. Every coordinate, after the transforms, must be finite and within +-1e15.\n",
     "`light [NAME] TYPE { ... }`: light sources, the ambient light and the background.\n",
     "`camera [NAME] TYPE { ... }`: at most one per scene (default: a pinhole with every default). The tool's\n"
     "options (--width, --spp, ...) override the camera's settings.\n",
