@@ -338,17 +338,54 @@ static int parse_scale(GReader *r, const void *vt, void **object, GError *err)
 
 static void destroy_spec(void *p) { gcolorspec_destroy(p); }
 
+/* The parameter tables of the colour literal types: every one reads positional values. */
+static const GParamInfo rgb_params[] = {
+    {"R", GPARAM_POSITIONAL, "number", NULL, NULL, "red, linear sRGB (Rec.709 primaries); also written <R, G, B>"},
+    {"G", GPARAM_POSITIONAL, "number", NULL, NULL, "green"},
+    {"B", GPARAM_POSITIONAL, "number", NULL, NULL, "blue; as a light, rgb 1 1 1 is D65 of luminance Y = 1"},
+    {NULL},
+};
+static const GParamInfo spectrum_params[] = {
+    {"PAIRS", GPARAM_POSITIONAL, "block", NULL, "{ NM VALUE ... }, wavelengths in [1, 100000] increasing",
+     "the spectrum at those wavelengths, linear in between and held beyond the ends (values per nm for lights)"},
+    {NULL},
+};
+static const GParamInfo blackbody_params[] = {
+    {"KELVIN", GPARAM_POSITIONAL, "number", NULL, "[100, 1e6]", "the temperature of a Planck radiator of Y = 1"},
+    {NULL},
+};
+static const GParamInfo illuminant_params[] = {
+    {"NAME", GPARAM_POSITIONAL, "choice", NULL, "D65, A, E", "the CIE illuminant, of Y = 1"},
+    {NULL},
+};
+static const GParamInfo line_params[] = {
+    {"NM", GPARAM_POSITIONAL, "number", NULL, "[380, 780]", "the wavelength of a monochromatic line"},
+    {"POWER", GPARAM_POSITIONAL, "number", "1", "[0, 1e30]", "its radiant power (optional)"},
+    {NULL},
+};
+static const GParamInfo bfc_params[] = {
+    {"FILE", GPARAM_POSITIONAL, "path", NULL, "a Labsphere BFC-450 text file",
+     "a measured re-radiation (Donaldson) matrix, for reflectances only"},
+    {NULL},
+};
+static const GParamInfo scale_params[] = {
+    {"FACTOR", GPARAM_POSITIONAL, "number", NULL, "[0, 1e30]", "multiplies the colour"},
+    {"COLOR", GPARAM_POSITIONAL, "color", NULL, NULL, "any colour value: a literal or a name"},
+    {NULL},
+};
+
 /* The colour literal types; the build lists them with the other built-ins (builtins.h). */
-GENERIC_TYPE_NAMED(color_rgb, GKIND_COLOR, "rgb", parse_rgb, "linear sRGB: rgb R G B", destroy_spec);
-GENERIC_TYPE_NAMED(color_spectrum, GKIND_COLOR, "spectrum", parse_spectrum,
-                   "tabulated spectrum: spectrum { NM VALUE ... }", destroy_spec);
-GENERIC_TYPE_NAMED(color_blackbody, GKIND_COLOR, "blackbody", parse_blackbody,
-                   "Planck radiator, Y = 1: blackbody KELVIN", destroy_spec);
-GENERIC_TYPE_NAMED(color_illuminant, GKIND_COLOR, "illuminant", parse_illuminant,
-                   "CIE illuminant, Y = 1: illuminant D65|A|E", destroy_spec);
-GENERIC_TYPE_NAMED(color_line, GKIND_COLOR, "line", parse_line, "monochromatic line: line NM [POWER]",
-                   destroy_spec);
-GENERIC_TYPE_NAMED(color_bfc, GKIND_COLOR, "bfc", parse_bfc, "measured re-radiation matrix: bfc \"FILE.BFC\"",
-                   destroy_spec);
-GENERIC_TYPE_NAMED(color_scale, GKIND_COLOR, "scale", parse_scale, "scaled colour: scale FACTOR COLOR",
-                   destroy_spec);
+GENERIC_TYPE_NAMED_PARAMS(color_rgb, GKIND_COLOR, "rgb", parse_rgb, "linear sRGB: rgb R G B", destroy_spec,
+                          rgb_params);
+GENERIC_TYPE_NAMED_PARAMS(color_spectrum, GKIND_COLOR, "spectrum", parse_spectrum,
+                          "tabulated spectrum: spectrum { NM VALUE ... }", destroy_spec, spectrum_params);
+GENERIC_TYPE_NAMED_PARAMS(color_blackbody, GKIND_COLOR, "blackbody", parse_blackbody,
+                          "Planck radiator, Y = 1: blackbody KELVIN", destroy_spec, blackbody_params);
+GENERIC_TYPE_NAMED_PARAMS(color_illuminant, GKIND_COLOR, "illuminant", parse_illuminant,
+                          "CIE illuminant, Y = 1: illuminant D65|A|E", destroy_spec, illuminant_params);
+GENERIC_TYPE_NAMED_PARAMS(color_line, GKIND_COLOR, "line", parse_line, "monochromatic line: line NM [POWER]",
+                          destroy_spec, line_params);
+GENERIC_TYPE_NAMED_PARAMS(color_bfc, GKIND_COLOR, "bfc", parse_bfc, "measured re-radiation matrix: bfc \"FILE.BFC\"",
+                          destroy_spec, bfc_params);
+GENERIC_TYPE_NAMED_PARAMS(color_scale, GKIND_COLOR, "scale", parse_scale, "scaled colour: scale FACTOR COLOR",
+                          destroy_spec, scale_params);
