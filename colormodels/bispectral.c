@@ -495,4 +495,13 @@ static const GColorModelClass gcolormodel_bispectral = {
     .band_value = gspectral_band_value,
 };
 
-GENERIC_TYPE(bispectral, GKIND_COLORMODEL, &gcolormodel_bispectral, NULL, NULL);
+static const GParamInfo bispectral_params[] = {
+    {"step", GPARAM_NAMED, "number", "10", "[1, 100], a whole number of steps from min to max",
+     "the spacing of the samples (and of the matrices' rows and columns), in nm"},
+    {"min", GPARAM_NAMED, "number", "380", "[300, 830], below max",
+     "the first sample, in nm; start lower (300) to keep ultraviolet excitation"},
+    {"max", GPARAM_NAMED, "number", "780", "[300, 830], at most 127 steps above min", "the last sample, in nm"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(bispectral, GKIND_COLORMODEL, &gcolormodel_bispectral, NULL, NULL, bispectral_params);

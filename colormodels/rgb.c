@@ -139,4 +139,12 @@ static const GColorModelClass gcolormodel_rgb = {
     .band_value = gspectral_band_value,
 };
 
-GENERIC_TYPE(rgb, GKIND_COLORMODEL, &gcolormodel_rgb, NULL, NULL);
+/* The reader reads the grid options of every `colormodel` entry; rgb has no wavelength samples. */
+static const GParamInfo rgb_params[] = {
+    {"step", GPARAM_NAMED, "number", "(ignored)", "[0.01, 400]", "read and ignored: rgb has no wavelength samples"},
+    {"min", GPARAM_NAMED, "number", "(ignored)", "[100, 2000]", "read and ignored"},
+    {"max", GPARAM_NAMED, "number", "(ignored)", "[100, 2000]", "read and ignored"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(rgb, GKIND_COLORMODEL, &gcolormodel_rgb, NULL, NULL, rgb_params);

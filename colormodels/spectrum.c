@@ -38,4 +38,13 @@ static const GColorModelClass gcolormodel_spectrum = {
     .band_value = gspectral_band_value,
 };
 
-GENERIC_TYPE(spectrum, GKIND_COLORMODEL, &gcolormodel_spectrum, NULL, NULL);
+static const GParamInfo spectrum_params[] = {
+    {"step", GPARAM_NAMED, "number", "5", "[1, 100], a whole number of steps from min to max",
+     "the spacing of the samples, in nm"},
+    {"min", GPARAM_NAMED, "number", "380", "[300, 830], below max", "the wavelength of the first sample, in nm"},
+    {"max", GPARAM_NAMED, "number", "780", "[300, 830], at most 1023 steps above min",
+     "the wavelength of the last sample, in nm"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(spectrum, GKIND_COLORMODEL, &gcolormodel_spectrum, NULL, NULL, spectrum_params);

@@ -106,4 +106,12 @@ static const GColorModelClass gcolormodel_spectrum9 = {
     .band_value = gspectral_band_value,
 };
 
-GENERIC_TYPE(spectrum9, GKIND_COLORMODEL, &gcolormodel_spectrum9, NULL, NULL);
+/* The grid is fixed: the options may only repeat it. */
+static const GParamInfo spectrum9_params[] = {
+    {"step", GPARAM_NAMED, "number", "50", "50", "the spacing of the samples, in nm (fixed; another is refused)"},
+    {"min", GPARAM_NAMED, "number", "380", "380", "the first sample, in nm (fixed)"},
+    {"max", GPARAM_NAMED, "number", "780", "780", "the last sample, in nm (fixed)"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(spectrum9, GKIND_COLORMODEL, &gcolormodel_spectrum9, NULL, NULL, spectrum9_params);

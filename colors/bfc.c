@@ -43,4 +43,11 @@ static int parse_bfc(GReader *r, const void *vt, void **object, GError *err)
     return G_OK;
 }
 
-GENERIC_TYPE_NAMED(color_bfc, GKIND_COLOR, "bfc", parse_bfc, "measured re-radiation matrix: bfc \"FILE.BFC\"", NULL);
+static const GParamInfo bfc_params[] = {
+    {"FILE", GPARAM_POSITIONAL, "path", NULL, "a Labsphere BFC-450 text file",
+     "a measured re-radiation (Donaldson) matrix, for reflectances only"},
+    {NULL},
+};
+
+GENERIC_TYPE_NAMED_PARAMS(color_bfc, GKIND_COLOR, "bfc", parse_bfc,
+                          "measured re-radiation matrix: bfc \"FILE.BFC\"", NULL, bfc_params);

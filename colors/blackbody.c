@@ -19,5 +19,10 @@ static int parse_blackbody(GReader *r, const void *vt, void **object, GError *er
     return G_OK;
 }
 
-GENERIC_TYPE_NAMED(color_blackbody, GKIND_COLOR, "blackbody", parse_blackbody,
-                   "Planck radiator, Y = 1: blackbody KELVIN", NULL);
+static const GParamInfo blackbody_params[] = {
+    {"KELVIN", GPARAM_POSITIONAL, "number", NULL, "[100, 1e6]", "the temperature of a Planck radiator of Y = 1"},
+    {NULL},
+};
+
+GENERIC_TYPE_NAMED_PARAMS(color_blackbody, GKIND_COLOR, "blackbody", parse_blackbody,
+                          "Planck radiator, Y = 1: blackbody KELVIN", NULL, blackbody_params);

@@ -23,5 +23,10 @@ static int parse_illuminant(GReader *r, const void *vt, void **object, GError *e
     return G_OK;
 }
 
-GENERIC_TYPE_NAMED(color_illuminant, GKIND_COLOR, "illuminant", parse_illuminant,
-                   "CIE illuminant, Y = 1: illuminant D65|A|E", NULL);
+static const GParamInfo illuminant_params[] = {
+    {"NAME", GPARAM_POSITIONAL, "choice", NULL, "D65, A, E", "the CIE illuminant, of Y = 1"},
+    {NULL},
+};
+
+GENERIC_TYPE_NAMED_PARAMS(color_illuminant, GKIND_COLOR, "illuminant", parse_illuminant,
+                          "CIE illuminant, Y = 1: illuminant D65|A|E", NULL, illuminant_params);

@@ -23,4 +23,11 @@ static int parse_line(GReader *r, const void *vt, void **object, GError *err)
     return G_OK;
 }
 
-GENERIC_TYPE_NAMED(color_line, GKIND_COLOR, "line", parse_line, "monochromatic line: line NM [POWER]", NULL);
+static const GParamInfo line_params[] = {
+    {"NM", GPARAM_POSITIONAL, "number", NULL, "[380, 780]", "the wavelength of a monochromatic line"},
+    {"POWER", GPARAM_POSITIONAL, "number", "1", "[0, 1e30]", "its radiant power (optional)"},
+    {NULL},
+};
+
+GENERIC_TYPE_NAMED_PARAMS(color_line, GKIND_COLOR, "line", parse_line, "monochromatic line: line NM [POWER]", NULL,
+                          line_params);

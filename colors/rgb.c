@@ -22,4 +22,12 @@ static int parse_rgb(GReader *r, const void *vt, void **object, GError *err)
     return G_OK;
 }
 
-GENERIC_TYPE_NAMED(color_rgb, GKIND_COLOR, "rgb", parse_rgb, "linear sRGB: rgb R G B", NULL);
+static const GParamInfo rgb_params[] = {
+    {"R", GPARAM_POSITIONAL, "number", NULL, NULL, "red, linear sRGB (Rec.709 primaries); also written <R, G, B>"},
+    {"G", GPARAM_POSITIONAL, "number", NULL, NULL, "green"},
+    {"B", GPARAM_POSITIONAL, "number", NULL, NULL, "blue; as a light, rgb 1 1 1 is D65 of luminance Y = 1"},
+    {NULL},
+};
+
+GENERIC_TYPE_NAMED_PARAMS(color_rgb, GKIND_COLOR, "rgb", parse_rgb, "linear sRGB: rgb R G B", NULL,
+                          rgb_params);

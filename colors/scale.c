@@ -18,4 +18,11 @@ static int parse_scale(GReader *r, const void *vt, void **object, GError *err)
     return G_OK;
 }
 
-GENERIC_TYPE_NAMED(color_scale, GKIND_COLOR, "scale", parse_scale, "scaled colour: scale FACTOR COLOR", NULL);
+static const GParamInfo scale_params[] = {
+    {"FACTOR", GPARAM_POSITIONAL, "number", NULL, "[0, 1e30]", "multiplies the colour"},
+    {"COLOR", GPARAM_POSITIONAL, "color", NULL, NULL, "any colour value: a literal or a name"},
+    {NULL},
+};
+
+GENERIC_TYPE_NAMED_PARAMS(color_scale, GKIND_COLOR, "scale", parse_scale, "scaled colour: scale FACTOR COLOR", NULL,
+                          scale_params);

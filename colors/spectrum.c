@@ -62,5 +62,11 @@ static int parse_spectrum(GReader *r, const void *vt, void **object, GError *err
     return G_OK;
 }
 
-GENERIC_TYPE_NAMED(color_spectrum, GKIND_COLOR, "spectrum", parse_spectrum,
-                   "tabulated spectrum: spectrum { NM VALUE ... }", NULL);
+static const GParamInfo spectrum_params[] = {
+    {"PAIRS", GPARAM_POSITIONAL, "block", NULL, "{ NM VALUE ... }, wavelengths in [1, 100000] increasing",
+     "the spectrum at those wavelengths, linear in between and held beyond the ends (values per nm for lights)"},
+    {NULL},
+};
+
+GENERIC_TYPE_NAMED_PARAMS(color_spectrum, GKIND_COLOR, "spectrum", parse_spectrum,
+                          "tabulated spectrum: spectrum { NM VALUE ... }", NULL, spectrum_params);

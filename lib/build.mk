@@ -14,7 +14,7 @@ $(call objs_of,lib/module/plugin.o): CPPFLAGS += -DGENERIC_PLUGIN_DIR='"$(PLUGIN
 
 # ---- generated sources, for any build tree (BUILD, the fuzzing build) ----
 # The list of built-in types (include/generic/builtins.h), from the GENERIC_TYPE records of LIB_SRC.
-%/gen/builtin_types.c: $(LIB_SRC) scripts/gen_builtins.sh
+%/gen/builtin_types.c: $(LIB_SRC) $(wildcard $(addsuffix listing_order,$(TYPE_DIRS))) scripts/gen_builtins.sh
 	@mkdir -p $(dir $@)
 	@scripts/gen_builtins.sh $@ $(LIB_SRC)
 

@@ -380,4 +380,15 @@ static int parse_dielectric(GReader *r, const void *vtable, void **object, GErro
     return rc;
 }
 
-GENERIC_TYPE(dielectric, GKIND_MATERIAL, &dielectric_class, parse_dielectric, NULL);
+static const GParamInfo dielectric_params[] = {
+    {"index", GPARAM_NAMED, "formula", "1.5",
+     "N in [0.01, 100]; cauchy A B [C]; sellmeier B1 B2 B3 C1 C2 C3",
+     "the refraction index: a constant, or Cauchy's or Sellmeier's formula of the wavelength in micrometres "
+     "(dispersion)"},
+    {"absorption", GPARAM_NAMED, "color", "none (clear)", ">= 0, not a matrix",
+     "the absorption coefficient per unit length inside (Beer-Lambert: exp(-a d) of the light passes)"},
+    {"tint", GPARAM_NAMED, "color", "none (untinted)", "[0, 1]", "multiplies the light the surface reflects"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(dielectric, GKIND_MATERIAL, &dielectric_class, parse_dielectric, NULL, dielectric_params);

@@ -98,4 +98,11 @@ static int parse_emitter(GReader *r, const void *vtable, void **object, GError *
     return rc;
 }
 
-GENERIC_TYPE(emitter, GKIND_MATERIAL, &emitter_class, parse_emitter, NULL);
+static const GParamInfo emitter_params[] = {
+    {"radiance", GPARAM_NAMED, "color", "rgb 1 1 1", ">= 0",
+     "the radiance emitted, read as a light (rgb 1 1 1: D65 of luminance 1)"},
+    {"two_sided", GPARAM_NAMED, "bool", "no", NULL, "emit from both sides; no: from the front (the outside) only"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(emitter, GKIND_MATERIAL, &emitter_class, parse_emitter, NULL, emitter_params);

@@ -98,4 +98,9 @@ static int parse_lambert(GReader *r, const void *vtable, void **object, GError *
     return gmaterial_param_parse_one_color(r, "reflectance", 0.8, GCOLOR_REFLECTANCE, glambert_create, object, err);
 }
 
-GENERIC_TYPE(lambert, GKIND_MATERIAL, &lambert_class, parse_lambert, NULL);
+static const GParamInfo lambert_params[] = {
+    {"reflectance", GPARAM_NAMED, "color", "rgb 0.8 0.8 0.8", "[0, 1]", "the albedo rho (f = rho / pi)"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(lambert, GKIND_MATERIAL, &lambert_class, parse_lambert, NULL, lambert_params);

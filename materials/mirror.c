@@ -93,4 +93,9 @@ static int parse_mirror(GReader *r, const void *vtable, void **object, GError *e
     return gmaterial_param_parse_one_color(r, "reflectance", 1.0, GCOLOR_REFLECTANCE, gmirror_create, object, err);
 }
 
-GENERIC_TYPE(mirror, GKIND_MATERIAL, &mirror_class, parse_mirror, NULL);
+static const GParamInfo mirror_params[] = {
+    {"reflectance", GPARAM_NAMED, "color", "rgb 1 1 1", "[0, 1]", "the share of the light the mirror ray reflects"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(mirror, GKIND_MATERIAL, &mirror_class, parse_mirror, NULL, mirror_params);

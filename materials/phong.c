@@ -277,4 +277,13 @@ static int parse_phong(GReader *r, const void *vtable, void **object, GError *er
     return rc;
 }
 
-GENERIC_TYPE(phong, GKIND_MATERIAL, &phong_class, parse_phong, NULL);
+static const GParamInfo phong_params[] = {
+    {"diffuse", GPARAM_NAMED, "color", "rgb 0.5 0.5 0.5 without specular, else black", "[0, 1]",
+     "kd, the Lambertian part; kd + ks + mirror must not exceed 1"},
+    {"specular", GPARAM_NAMED, "color", "black", "[0, 1]", "ks, the albedo of the energy-normalised cos^n lobe"},
+    {"exponent", GPARAM_NAMED, "number", "20", "[0, 1e6]", "n, the lobe's sharpness about the mirror direction"},
+    {"mirror", GPARAM_NAMED, "color", "black", "[0, 1]", "the reflectance of an ideal mirror ray"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(phong, GKIND_MATERIAL, &phong_class, parse_phong, NULL, phong_params);

@@ -1,7 +1,7 @@
 #!/bin/sh
-# Writes the C file of the built-in type list (include/generic/builtins.h) from the GENERIC_TYPE and
-# GENERIC_TYPE_NAMED records (include/generic/plugin.h) of the given source files, in the order of the files
-# and of the records within each file, except that the sources of a folder holding a file named listing_order
+# Writes the C file of the built-in type list (include/generic/builtins.h) from the GENERIC_TYPE,
+# GENERIC_TYPE_NAMED and *_PARAMS records (include/generic/plugin.h) of the given source files, in the order of the
+# files and of the records within each file, except that the sources of a folder holding a file named listing_order
 # come in the order it names them (base names, one a line; `#` starts a comment), the others of that folder after
 # them. Usage: gen_builtins.sh OUT.c SOURCE.c...
 # The records are the only place a built-in is listed: adding a type is adding its file.
@@ -30,7 +30,7 @@ for f in "$@"; do
 done
 # shellcheck disable=SC2086
 set -- $ordered
-ids=$(sed -n 's/^GENERIC_TYPE\(_NAMED\)\{0,1\}([[:space:]]*\([A-Za-z_][A-Za-z0-9_]*\).*/\2/p' "$@")
+ids=$(sed -n 's/^GENERIC_TYPE\(_NAMED\)\{0,1\}\(_PARAMS\)\{0,1\}([[:space:]]*\([A-Za-z_][A-Za-z0-9_]*\).*/\3/p' "$@")
 dups=$(printf '%s\n' $ids | sort | uniq -d)
 if [ -n "$dups" ]; then
     echo "gen_builtins.sh: type records defined twice:" $dups >&2

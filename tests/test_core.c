@@ -126,7 +126,7 @@ static void test_registry(void **state)
     assert_null(gregistry_find(GKIND_COLORMODEL, "no-such-model"));
     assert_null(gregistry_find((GKind)gkind_count(), "rgb"));
     static const int dummy = 1;
-    GTypeInfo t = {GKIND_GENERATOR, "test-core-dummy", &dummy, NULL, "a test entry", NULL};
+    GTypeInfo t = {GKIND_GENERATOR, "test-core-dummy", &dummy, NULL, "a test entry", NULL, NULL};
     GError e;
     assert_int_equal(gregistry_add(&t, &e), G_OK);
     assert_int_equal(gregistry_add(&t, &e), G_ERR_EXISTS);
@@ -138,7 +138,7 @@ static void test_registry(void **state)
     gregistry_names(GKIND_COLORMODEL, names, sizeof names);
     assert_non_null(strstr(names, "rgb"));
     assert_string_equal(gkind_name(GKIND_MATERIAL), "material");
-    GTypeInfo bad = {(GKind)gkind_count(), "x", NULL, NULL, NULL, NULL};
+    GTypeInfo bad = {(GKind)gkind_count(), "x", NULL, NULL, NULL, NULL, NULL};
     assert_int_equal(gregistry_add(&bad, &e), G_ERR_INVALID);
 }
 
@@ -154,7 +154,7 @@ static void count_release(void *object)
 static void test_release_through_type_record(void **state)
 {
     (void)state;
-    GTypeInfo own = {GKIND_GENERATOR, "test-core-released", NULL, NULL, "counts releases", count_release};
+    GTypeInfo own = {GKIND_GENERATOR, "test-core-released", NULL, NULL, "counts releases", count_release, NULL};
     released = 0;
     gtypeinfo_release(&own, gmem_alloc(16));
     gtypeinfo_release(&own, NULL);

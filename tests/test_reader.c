@@ -112,8 +112,8 @@ static int parse_nest(GReader *r, const void *vt, void **object, GError *err)
 }
 
 static GKind object_kind; /* registered by register_test_types */
-static GTypeInfo sphere_type = {GKIND_MAX, "sphere", NULL, parse_sphere, "test sphere", sphere_destroy};
-static const GTypeInfo nest_type = {GKIND_MATERIAL, "nest", NULL, parse_nest, "test nesting", NULL};
+static GTypeInfo sphere_type = {GKIND_MAX, "sphere", NULL, parse_sphere, "test sphere", sphere_destroy, NULL};
+static const GTypeInfo nest_type = {GKIND_MATERIAL, "nest", NULL, parse_nest, "test nesting", NULL, NULL};
 
 static int register_test_types(void **state)
 {

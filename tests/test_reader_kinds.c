@@ -89,7 +89,7 @@ static void test_registering_kinds(void **state)
     assert_int_equal(gkind_namespace(GKIND_NODE), GKIND_MATERIAL);
     assert_int_equal(gkind_namespace(widget), widget);
     /* a type of the kind is registered like any other; one without a kind is not */
-    GTypeInfo gadget = {widget, "gadget", NULL, parse_gadget, "test gadget", NULL};
+    GTypeInfo gadget = {widget, "gadget", NULL, parse_gadget, "test gadget", NULL, NULL};
     assert_int_equal(gregistry_add(&gadget, &err), G_OK);
     assert_non_null(gregistry_find(widget, "gadget"));
     gadget.kind = (GKind)gkind_count();
@@ -174,7 +174,7 @@ static void test_kind_sharing_material_names(void **state)
     GKind shader;
     assert_int_equal(gregistry_add_kind(&shader_info, &shader, NULL), G_OK);
     assert_int_equal(gkind_namespace(shader), GKIND_MATERIAL);
-    static GTypeInfo toon = {GKIND_MAX, "toon", NULL, parse_toon, "test toon", NULL};
+    static GTypeInfo toon = {GKIND_MAX, "toon", NULL, parse_toon, "test toon", NULL, NULL};
     toon.kind = shader;
     if (!gregistry_find(shader, "toon"))
         assert_int_equal(gregistry_add(&toon, NULL), G_OK);

@@ -65,7 +65,7 @@ static int parse_pair(GReader *r, const void *vtable, void **object, GError *err
 }
 
 static GKind object_kind; /* registered by register_types */
-static GTypeInfo pair_type = {GKIND_MAX, "pair", NULL, parse_pair, "test pair", NULL};
+static GTypeInfo pair_type = {GKIND_MAX, "pair", NULL, parse_pair, "test pair", NULL, NULL};
 
 static int register_types(void **state)
 {

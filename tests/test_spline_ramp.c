@@ -133,7 +133,7 @@ static int parse_plain(GReader *r, const void *vtable, void **object, GError *er
     return rc;
 }
 
-static const GTypeInfo plain_type = {GKIND_MATERIAL, "plain", NULL, parse_plain, "test: reads nothing", NULL};
+static const GTypeInfo plain_type = {GKIND_MATERIAL, "plain", NULL, parse_plain, "test: reads nothing", NULL, NULL};
 
 static void test_ramp_refused(void **state)
 {

@@ -136,4 +136,12 @@ static int parse_bump(GReader *r, const void *vtable, void **object, GError *err
     return gtexparse_finish(r, rc, m, object, err);
 }
 
-GENERIC_TYPE(bump, GKIND_NODE, &bump_class, parse_bump, NULL);
+static const GParamInfo bump_params[] = {
+    {"child", GPARAM_NAMED, "material", NULL, NULL, "the material seen with the bumped normal"},
+    {"height", GPARAM_NAMED, "generator", NULL, NULL,
+     "the height field: its gradient along the u and v tangents tilts the normal (Blinn 1978)"},
+    {"strength", GPARAM_NAMED, "number", "1", "finite", "multiplies the height"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(bump, GKIND_NODE, &bump_class, parse_bump, NULL, bump_params);

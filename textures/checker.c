@@ -106,4 +106,10 @@ static int parse_checker(GReader *r, const void *vtable, void **object, GError *
     return gtexparse_finish(r, rc, g, object, err);
 }
 
-GENERIC_TYPE(checker, GKIND_GENERATOR, &checker_class, parse_checker, ggenerator_release);
+static const GParamInfo checker_params[] = {
+    {"dims", GPARAM_NAMED, "integer", "2", "2, 3", "2: squares in (u, v); 3: cubes in object space"},
+    {"frequency", GPARAM_NAMED, "number", "1", "[1e-9, 1e9]", "squares (cubes) per unit"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(checker, GKIND_GENERATOR, &checker_class, parse_checker, ggenerator_release, checker_params);

@@ -67,4 +67,10 @@ static int parse_constant(GReader *r, const void *vtable, void **object, GError 
     return gtexparse_finish(r, rc, g, object, err);
 }
 
-GENERIC_TYPE(constant, GKIND_GENERATOR, &constant_class, parse_constant, ggenerator_release);
+static const GParamInfo constant_params[] = {
+    {"value", GPARAM_NAMED, "number", "0", "finite", "the value everywhere"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(constant, GKIND_GENERATOR, &constant_class, parse_constant, ggenerator_release,
+                    constant_params);

@@ -252,4 +252,15 @@ static int parse_cpg(GReader *r, const void *vtable, void **object, GError *err)
     return G_OK;
 }
 
-GENERIC_TYPE(cpg, GKIND_GENERATOR, &cpg_class, parse_cpg, ggenerator_release);
+static const GParamInfo cpg_params[] = {
+    {"shape", GPARAM_NAMED, "shape", NULL,
+     "SHAPE := square CX CY SIDE | circle CX CY R | polygon { X Y ... } | path { EDGE ... } | "
+     "union { SHAPE ... } | intersection { SHAPE ... } | difference { SHAPE SHAPE ... } | "
+     "transform { translate U V  rotate DEG  scale S [S2] ... } SHAPE; EDGE := lines { X Y ... } | "
+     "bezier { X Y ... } | bspline { degree N  periodic BOOL  points { X Y ... } } | "
+     "nurbs { degree N  points { X Y ... }  weights { W ... }  knots { U ... } }",
+     "the shape in (u, v): the value is 1 inside, 0 outside; several shapes of an operation combine from the left"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(cpg, GKIND_GENERATOR, &cpg_class, parse_cpg, ggenerator_release, cpg_params);

@@ -176,4 +176,14 @@ static int parse_csg(GReader *r, const void *vtable, void **object, GError *err)
     return G_OK;
 }
 
-GENERIC_TYPE(csg, GKIND_GENERATOR, &csg_class, parse_csg, ggenerator_release);
+static const GParamInfo csg_params[] = {
+    {"space", GPARAM_NAMED, "choice", "object", "object, world", "the space the solid is placed in"},
+    {"shape", GPARAM_NAMED, "shape", NULL,
+     "SOLID := sphere R | box X0 Y0 Z0 X1 Y1 Z1 | cylinder R Z0 Z1 | cone R0 Z0 R1 Z1 | halfspace NX NY NZ D | "
+     "union { SOLID ... } | intersection { SOLID ... } | difference { SOLID SOLID ... } | "
+     "transform { translate X Y Z  rotate AXIS DEG  scale S | X Y Z ... } SOLID",
+     "the solid: the value is 1 inside, 0 outside; several solids of an operation combine from the left"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(csg, GKIND_GENERATOR, &csg_class, parse_csg, ggenerator_release, csg_params);

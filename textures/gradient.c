@@ -83,4 +83,13 @@ static int parse_gradient(GReader *r, const void *vtable, void **object, GError 
     return gtexparse_finish(r, rc, g, object, err);
 }
 
-GENERIC_TYPE(gradient, GKIND_GENERATOR, &gradient_class, parse_gradient, ggenerator_release);
+static const GParamInfo gradient_params[] = {
+    {"space", GPARAM_NAMED, "choice", "uv", "uv, object, world",
+     "the coordinates c: (u, v, 0), the object-space point or the world point"},
+    {"slope", GPARAM_NAMED, "vector", "<1, 0, 0>", "finite", "the field's gradient (its z is dropped in uv)"},
+    {"offset", GPARAM_NAMED, "number", "0", "finite", "the value at c = 0: the field is offset + slope . c"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(gradient, GKIND_GENERATOR, &gradient_class, parse_gradient, ggenerator_release,
+                    gradient_params);

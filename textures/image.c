@@ -286,4 +286,20 @@ static int parse_image(GReader *r, const void *vtable, void **object, GError *er
     return rc;
 }
 
-GENERIC_TYPE(image, GKIND_NODE, &image_class, parse_image, NULL);
+#define IMAGE_WRAPS "periodic, clamp, black, mirror"
+
+static const GParamInfo image_params[] = {
+    {"child", GPARAM_NAMED, "material", NULL, NULL, "the material whose reflected and emitted light is multiplied"},
+    {"file", GPARAM_NAMED, "path", NULL, "an image OpenImageIO reads",
+     "the image, looked up at (u, v) with trilinear MIP-mapping over the footprint"},
+    {"wrap", GPARAM_NAMED, "choice", "periodic", IMAGE_WRAPS, "outside [0, 1] in u and v: repeat, hold the edge, "
+     "black, repeat mirrored"},
+    {"swrap", GPARAM_NAMED, "choice", "periodic", IMAGE_WRAPS, "the same in u only"},
+    {"twrap", GPARAM_NAMED, "choice", "periodic", IMAGE_WRAPS, "the same in v only"},
+    {"colorspace", GPARAM_NAMED, "choice", "auto", "auto, srgb, linear",
+     "how stored values relate to linear ones; auto: sRGB for 8- and 16-bit files that say sRGB, else linear"},
+    {"blur", GPARAM_NAMED, "number", "0", "[0, 1]", "an extra filter width, in (u, v) units"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(image, GKIND_NODE, &image_class, parse_image, NULL, image_params);

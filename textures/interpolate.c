@@ -146,5 +146,25 @@ static int parse_interpolate_one(GReader *r, const void *vtable, void **object, 
     return parse(r, 1, object, err);
 }
 
-GENERIC_TYPE(interpolate, GKIND_NODE, &interpolate_class.base, parse_interpolate, NULL);
-GENERIC_TYPE(interpolate_one, GKIND_NODE, &interpolate_one_class.base, parse_interpolate_one, NULL);
+#define INTERPOLATE_PARAMS                                                                                       \
+    {"a", GPARAM_NAMED, "material", NULL, NULL, "the child at t <= 0"},                                           \
+    {"b", GPARAM_NAMED, "material", NULL, NULL, "the child at t >= 1"},                                           \
+    {"t", GPARAM_NAMED, "generator", NULL, NULL, "the weight of b: (1 - t) a + t b; at 0 or 1 one child is called"}
+
+static const GParamInfo interpolate_params[] = {
+    INTERPOLATE_PARAMS,
+    {NULL},
+};
+
+static const GParamInfo interpolate_one_params[] = {
+    INTERPOLATE_PARAMS,
+    {"method", GPARAM_NAMED, "choice", NULL,
+     "reflection, refraction, refraction_index, reflection_dir, refraction_dir, emission, ambient, absorption, "
+     "normal, diffuse, opaque",
+     "the one material method that is blended; every other is a's"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(interpolate, GKIND_NODE, &interpolate_class.base, parse_interpolate, NULL, interpolate_params);
+GENERIC_TYPE_PARAMS(interpolate_one, GKIND_NODE, &interpolate_one_class.base, parse_interpolate_one, NULL,
+                    interpolate_one_params);

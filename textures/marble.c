@@ -99,4 +99,13 @@ static int parse_marble(GReader *r, const void *vtable, void **object, GError *e
     return gtexparse_finish(r, rc, g, object, err);
 }
 
-GENERIC_TYPE(marble, GKIND_GENERATOR, &marble_class, parse_marble, ggenerator_release);
+static const GParamInfo marble_params[] = {
+    GTEXPARSE_NOISE_BASE_PARAMS,
+    GTEXPARSE_NOISE_OCTAVE_PARAMS,
+    {"stripes", GPARAM_NAMED, "number", "1", "finite",
+     "veins per unit along x: the value is 0.5 + 0.5 sin(2 pi (stripes x + turbulence N)), N Perlin's turbulence"},
+    {"turbulence", GPARAM_NAMED, "number", "2", "finite", "how far the turbulence N displaces the veins"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(marble, GKIND_GENERATOR, &marble_class, parse_marble, ggenerator_release, marble_params);

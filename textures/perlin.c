@@ -69,4 +69,13 @@ static int parse_perlin(GReader *r, const void *vtable, void **object, GError *e
     return gtexparse_finish(r, rc, g, object, err);
 }
 
-GENERIC_TYPE(perlin, GKIND_GENERATOR, &perlin_class, parse_perlin, ggenerator_release);
+/* gtexparse_noise reads every noise parameter; perlin is one octave and uses the first three. */
+static const GParamInfo perlin_params[] = {
+    GTEXPARSE_NOISE_BASE_PARAMS,
+    {"octaves", GPARAM_NAMED, "integer", "4", "[1, 16]", "read and ignored: perlin is one octave"},
+    {"lacunarity", GPARAM_NAMED, "number", "2", "[1e-3, 1e3]", "read and ignored"},
+    {"gain", GPARAM_NAMED, "number", "0.5", "[1e-6, 1e3]", "read and ignored"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(perlin, GKIND_GENERATOR, &perlin_class, parse_perlin, ggenerator_release, perlin_params);

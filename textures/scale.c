@@ -163,4 +163,10 @@ static int parse_scale(GReader *r, const void *vtable, void **object, GError *er
     return gtexparse_finish(r, rc, m, object, err);
 }
 
-GENERIC_TYPE(scale, GKIND_NODE, &scale_class, parse_scale, NULL);
+static const GParamInfo scale_params[] = {
+    {"child", GPARAM_NAMED, "material", NULL, NULL, "the material whose reflected and emitted light is scaled"},
+    {"factor", GPARAM_NAMED, "generator", NULL, NULL, "multiplies the child's light"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(scale, GKIND_NODE, &scale_class, parse_scale, NULL, scale_params);

@@ -74,4 +74,11 @@ static int parse_select(GReader *r, const void *vtable, void **object, GError *e
     return rc;
 }
 
-GENERIC_TYPE(select, GKIND_NODE, &select_class.base, parse_select, NULL);
+static const GParamInfo select_params[] = {
+    {"index", GPARAM_NAMED, "generator", NULL, NULL,
+     "picks the child: its value rounded down, clamped to 0 .. n - 1 (e.g. surface: a material per face)"},
+    {"children", GPARAM_NAMED, "block", NULL, "{ MATERIAL ... }", "the children, numbered from 0"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(select, GKIND_NODE, &select_class.base, parse_select, NULL, select_params);

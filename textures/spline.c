@@ -279,4 +279,19 @@ static int parse_spline(GReader *r, const void *vtable, void **object, GError *e
     return rc;
 }
 
-GENERIC_TYPE(spline, GKIND_NODE, &spline_class.base, parse_spline, NULL);
+static const GParamInfo spline_params[] = {
+    {"t", GPARAM_NAMED, "generator", NULL, NULL, "where along the children: 0 the first, 1 the last"},
+    {"basis", GPARAM_NAMED, "choice", "catmull-rom", "catmull-rom, bspline, linear",
+     "the spline: Catmull-Rom passes through every child, the uniform B-spline smooths, linear interpolates"},
+    {"children", GPARAM_NAMED, "block", "one of children, ramp, colors", "{ MATERIAL ... }, at least 2",
+     "the children at t = i / (n - 1)"},
+    {"ramp", GPARAM_NAMED, "block", "one of children, ramp, colors", "{ KEY MATERIAL ... }, 2 to 1024 keys",
+     "the children at their keys in [0, 1], none below the one before (equal keys make a step)"},
+    {"colors", GPARAM_NAMED, "block", "one of children, ramp, colors",
+     "[of BASE PARAMETER] { KEY COLOR ... }, 2 to 1024 keys",
+     "a ramp of children BASE { PARAMETER COLOR } (BASE a material type) or like BASE { PARAMETER COLOR } (a "
+     "material defined before); default of lambert reflectance"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(spline, GKIND_NODE, &spline_class.base, parse_spline, NULL, spline_params);

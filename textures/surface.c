@@ -38,4 +38,8 @@ static int parse_surface(GReader *r, const void *vtable, void **object, GError *
     return gtexparse_finish(r, rc, g, object, err);
 }
 
-GENERIC_TYPE(surface, GKIND_GENERATOR, &surface_class, parse_surface, ggenerator_release);
+static const GParamInfo surface_params[] = {
+    {NULL}, /* none: its value is the surface index of the hit */
+};
+
+GENERIC_TYPE_PARAMS(surface, GKIND_GENERATOR, &surface_class, parse_surface, ggenerator_release, surface_params);

@@ -314,4 +314,13 @@ static int parse_transform(GReader *r, const void *vtable, void **object, GError
     return gtexparse_finish(r, rc, m, object, err);
 }
 
-GENERIC_TYPE(transform, GKIND_NODE, &transform_class, parse_transform, NULL);
+static const GParamInfo transform_params[] = {
+    {"child", GPARAM_NAMED, "material", NULL, NULL, "the subtree whose patterns are moved"},
+    {"uv", GPARAM_NAMED, "block", "none", "{ translate U V  rotate DEG  scale S [S2] ... }",
+     "moves the patterns in (u, v), the steps in the order written"},
+    {"xyz", GPARAM_NAMED, "block", "none", "{ translate X Y Z  rotate AXIS DEG  scale S | X Y Z ... }",
+     "moves the patterns in object space, the steps in the order written"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(transform, GKIND_NODE, &transform_class, parse_transform, NULL, transform_params);

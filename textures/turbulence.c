@@ -98,5 +98,11 @@ static int parse_fractal(GReader *r, const void *vtable, void **object, GError *
     return gtexparse_finish(r, rc, g, object, err);
 }
 
-GENERIC_TYPE(fbm, GKIND_GENERATOR, &fbm_class, parse_fractal, ggenerator_release);
-GENERIC_TYPE(turbulence, GKIND_GENERATOR, &turbulence_class, parse_fractal, ggenerator_release);
+static const GParamInfo fractal_params[] = {
+    GTEXPARSE_NOISE_BASE_PARAMS,
+    GTEXPARSE_NOISE_OCTAVE_PARAMS,
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(fbm, GKIND_GENERATOR, &fbm_class, parse_fractal, ggenerator_release, fractal_params);
+GENERIC_TYPE_PARAMS(turbulence, GKIND_GENERATOR, &turbulence_class, parse_fractal, ggenerator_release, fractal_params);

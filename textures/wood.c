@@ -123,4 +123,14 @@ static int parse_wood(GReader *r, const void *vtable, void **object, GError *err
     return gtexparse_finish(r, rc, g, object, err);
 }
 
-GENERIC_TYPE(wood, GKIND_GENERATOR, &wood_class, parse_wood, ggenerator_release);
+static const GParamInfo wood_params[] = {
+    GTEXPARSE_NOISE_BASE_PARAMS,
+    GTEXPARSE_NOISE_OCTAVE_PARAMS,
+    {"rings", GPARAM_NAMED, "number", "8", "[1e-9, 1e9]", "growth rings per unit of distance from the z axis"},
+    {"turbulence", GPARAM_NAMED, "number", "0.5", "finite", "how far fbm displaces the rings"},
+    {"latewood", GPARAM_NAMED, "number", "0.2", "[0.001, 0.999]",
+     "the share of each ring in which the value falls back from 1 to 0 (the dark latewood)"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(wood, GKIND_GENERATOR, &wood_class, parse_wood, ggenerator_release, wood_params);

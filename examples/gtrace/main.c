@@ -10,6 +10,7 @@
 #include "render/render.h"
 #include "film/output.h"
 #include "lights/probe_env.h"
+#include "scenefile/type_list.h"
 #include "../common/cli.h"
 
 #include <generic/builtins.h>
@@ -52,6 +53,7 @@ static void usage(FILE *f)
             "              [--spectral] [--display D] [--view V] [--ocio-config FILE]\n"
             "              [--mpi-block N] [--mpi-timeout S] [--mpi-dedicated]\n"
             "       gtrace merge PIECE... -o OUT\n"
+            "       gtrace types [object|light|camera] [--markdown]\n"
             "       gtrace --help | --version\n"
             "Renders a scene file (the library's text format with camera, object and light entries) with a\n"
             "Whitted ray tracer that uses colours and materials only through the generic interfaces.\n"
@@ -122,6 +124,8 @@ static void usage(FILE *f)
             "  --mpi-dedicated   rank 0 only hands out and gathers blocks\n"
             "  gtrace merge PIECE... -o OUT   joins --crop pieces (.exr) rendered apart into the full image\n"
             "                    (gtrace merge --help)\n"
+            "  gtrace types      the object, light and camera types, or with --markdown the reference of their\n"
+            "                    parameters (gtrace types --help)\n"
             "  -q, --quiet       no progress bar and no summary line\n"
             "  -h, --help        this text\n"
             "  --version         the version\n"
@@ -515,6 +519,8 @@ int main(int argc, char **argv)
         fprintf(stderr, "gtrace: %s\n", reg_err.message);
         return 2;
     }
+    if (argc > 1 && strcmp(argv[1], "types") == 0)
+        return type_list_main(argc - 1, argv + 1);
     Options o;
     int a = parse_args(argc, argv, &o);
     if (a != 0)

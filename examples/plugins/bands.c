@@ -70,5 +70,11 @@ static int parse_bands(GReader *r, const void *vtable, void **object, GError *er
     return gtexparse_finish(r, rc, g, object, err);
 }
 
-GENERIC_TYPE(bands, GKIND_GENERATOR, &bands_class, parse_bands, ggenerator_release);
+static const GParamInfo bands_params[] = {
+    {"period", GPARAM_NAMED, "number", "1", "[1e-9, 1e9]", "the distance from one band to the next"},
+    {"axis", GPARAM_NAMED, "vector", "<1, 0, 0>", "not zero", "the direction across the bands, in object space"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(bands, GKIND_GENERATOR, &bands_class, parse_bands, ggenerator_release, bands_params);
 GENERIC_MODULE(&gtype_bands);

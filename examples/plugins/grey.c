@@ -128,5 +128,13 @@ static const GColorModelClass grey_class = {
     .from_rgb = grey_from_rgb,
 };
 
-GENERIC_TYPE(grey, GKIND_COLORMODEL, &grey_class, NULL, NULL);
+/* The reader reads the grid options of every `colormodel` entry; grey has no wavelength samples. */
+static const GParamInfo grey_params[] = {
+    {"step", GPARAM_NAMED, "number", "(ignored)", "[0.01, 400]", "read and ignored: grey has no wavelength samples"},
+    {"min", GPARAM_NAMED, "number", "(ignored)", "[100, 2000]", "read and ignored"},
+    {"max", GPARAM_NAMED, "number", "(ignored)", "[100, 2000]", "read and ignored"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(grey, GKIND_COLORMODEL, &grey_class, NULL, NULL, grey_params);
 GENERIC_MODULE(&gtype_grey);

@@ -93,5 +93,11 @@ static int parse_oren_nayar(GReader *r, const void *vtable, void **object, GErro
     return G_OK;
 }
 
-GENERIC_TYPE(oren_nayar, GKIND_MATERIAL, &oren_nayar_class, parse_oren_nayar, NULL);
+static const GParamInfo oren_nayar_params[] = {
+    {"reflectance", GPARAM_NAMED, "color", "rgb 0.8 0.8 0.8", "[0, 1]", "the albedo rho"},
+    {"sigma", GPARAM_NAMED, "number", "20", "[0, 90]", "the standard deviation of the facets' slope, in degrees"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(oren_nayar, GKIND_MATERIAL, &oren_nayar_class, parse_oren_nayar, NULL, oren_nayar_params);
 GENERIC_MODULE(&gtype_oren_nayar);

@@ -1,7 +1,8 @@
 /* plugin.h - run-time modules: a shared object that registers colour models, colour literal types, materials,
  * texture nodes or generators (any GKind) while it loads.
  *
- * Every type, built-in or not, is described by one record beside its code, written with GENERIC_TYPE:
+ * Every type, built-in or not, is described by one record beside its code, written with GENERIC_TYPE (or
+ * GENERIC_TYPE_PARAMS, which adds the table of its parameters):
  *
  *     #include <generic/plugin.h>
  *     static const GMaterialClass my_class = {GMATERIAL_ABI_VERSION, "oren_nayar", "rough diffuse", ...};
@@ -69,7 +70,8 @@ extern "C" {
  * incompatibly. 2: GSurfPoint grew by the cache scopes of transform nodes and the footprint ellipse.
  * 3: GColor and GColorModelClass grew (a colour's storage and capacity; the fill, exp_scaled and axpy slots),
  *    GError grew by the position and parameter fields, and the GMaterial header by depth and cost.
- * 4: GSurfPoint's public fields come first and its caches are one private member at the end (GSurfPointPrivate). */
+ * 4: GSurfPoint's public fields come first and its caches are one private member at the end (GSurfPointPrivate);
+ *    GTypeInfo grew by its parameter table (the loader copies a module's records whole). */
 #define GMODULE_ABI_VERSION 4
 
 /** Name of the exported `const int` holding the module's GMODULE_ABI_VERSION. */
@@ -103,13 +105,30 @@ typedef int (*GModuleInitFn)(GModuleApi *api, GError *err);
 
 /** Defines `const GTypeInfo gtype_<id>`, the record of a type: its kind, vtable, parse routine (NULL when it
  * cannot be read from text) and destroy (NULL: the kind's default, see GTypeInfo); name and summary are the
- * vtable's GClassHeader (the keyword is written once, in the class). */
+ * vtable's GClassHeader (the keyword is written once, in the class). It has no parameter table. */
 #define GENERIC_TYPE(id, kind, vtable, parse, destroy) \
-    const GTypeInfo gtype_##id = {(kind), NULL, (vtable), (parse), NULL, (destroy)}
+    const GTypeInfo gtype_##id = {(kind), NULL, (vtable), (parse), NULL, (destroy), NULL}
+
+/** GENERIC_TYPE with the type's parameter table (GParamInfo rows ended by {NULL}, registry.h):
+ *
+ *     static const GParamInfo my_params[] = {
+ *         {"reflectance", GPARAM_NAMED, "color", "grey 0.8", "[0, 1] per sample", "the diffuse albedo"},
+ *         {"sigma", GPARAM_NAMED, "number", "20", "[0, 90]", "the facets' slope deviation, in degrees"},
+ *         {NULL},
+ *     };
+ *     GENERIC_TYPE_PARAMS(oren_nayar, GKIND_MATERIAL, &my_class, my_parse, NULL, my_params);
+ *
+ * Every built-in type has one; `gmat types --markdown` prints them as the reference pages. */
+#define GENERIC_TYPE_PARAMS(id, kind, vtable, parse, destroy, params) \
+    const GTypeInfo gtype_##id = {(kind), NULL, (vtable), (parse), NULL, (destroy), (params)}
 
 /** The record of a type without a vtable (a colour literal type): name and summary are given here. */
 #define GENERIC_TYPE_NAMED(id, kind, name, parse, summary, destroy) \
-    const GTypeInfo gtype_##id = {(kind), (name), NULL, (parse), (summary), (destroy)}
+    const GTypeInfo gtype_##id = {(kind), (name), NULL, (parse), (summary), (destroy), NULL}
+
+/** GENERIC_TYPE_NAMED with the type's parameter table (as GENERIC_TYPE_PARAMS). */
+#define GENERIC_TYPE_NAMED_PARAMS(id, kind, name, parse, summary, destroy, params) \
+    const GTypeInfo gtype_##id = {(kind), (name), NULL, (parse), (summary), (destroy), (params)}
 
 /** Makes the file it ends a run-time module registering the given records (`&gtype_<id>`, ...): defines
  * generic_module_abi and a generic_module_init that adds each record with api->add_type. */

@@ -71,6 +71,9 @@ typedef struct GTypeInfo {
      * gcolorspec_destroy (colorspec.h); generator: ggenerator_unref (texture.h); a kind an application registers:
      * its GKindInfo.destroy. */
     void (*destroy)(void *object);
+    /** The parameters the parse routine reads (GParamInfo below): rows ended by one whose name is NULL; a table
+     * of that row alone says the type takes none. NULL when the type does not describe them. */
+    const struct GParamInfo *params;
 } GTypeInfo;
 
 /** Registers a kind (the struct is copied) and gives its number in *out (optional). Registering a keyword again
@@ -112,6 +115,29 @@ GENERIC_API void gregistry_names(GKind kind, char *buf, size_t size);
 GENERIC_API void gtypeinfo_release(const GTypeInfo *type, void *object);
 /** Keyword of a kind ("colormodel", "material", ...; "?" when kind is not one). */
 GENERIC_API const char *gkind_name(GKind kind);
+
+/** How a parameter is written in an entry. */
+typedef enum GParamForm {
+    GPARAM_NAMED = 0, /**< `NAME VALUE` in the entry's optional `{ ... }` block: any order, each at most once */
+    GPARAM_POSITIONAL /**< a value after the type keyword (or inside its positional block), in table order */
+} GParamForm;
+
+/** One row of a type's parameter table (GTypeInfo.params): what a parse routine reads, for the reference pages
+ * (`gmat types --markdown`) and for the checks that the table and the routine agree. Every string is static.
+ * `type` is the syntax of the value: "number" (or a defined constant), "numbers" (several in a row; `doc` says how
+ * many), "integer", "bool", "string" (quoted), "path" (a quoted file name, relative to the file), "vector"
+ * (`<x, y, z>` or `x y z`), "color", "material" (a material or texture node), "generator", "choice" (one of the
+ * words `range` lists), "formula" (a number or a keyword with numbers; `range` lists the forms), "block" (a
+ * `{ ... }` of its own syntax, which `range` gives), "shape" (a CSG or CPG shape tree, its grammar in `range`), or
+ * the keyword of a kind an application registers. */
+typedef struct GParamInfo {
+    const char *name;  /**< the keyword of a named parameter; a placeholder (e.g. "KELVIN") for a positional one */
+    GParamForm form;   /**< how it is written */
+    const char *type;  /**< the value's syntax (above) */
+    const char *def;   /**< the value taken when it is left out, as text; NULL: it must be given */
+    const char *range; /**< the values accepted ("[0, 1]", "object, world, uv"); NULL: any value of the type */
+    const char *doc;   /**< what it does, in a sentence */
+} GParamInfo;
 
 #ifdef __cplusplus
 }

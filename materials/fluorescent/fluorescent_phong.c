@@ -238,4 +238,17 @@ static int parse_fluorescent_phong(GReader *r, const void *vt, void **object, GE
     return gfluor_finish(rc, &mat, m, object);
 }
 
-GENERIC_TYPE(fluorescent_phong, GKIND_MATERIAL, &fluorescent_phong_class, parse_fluorescent_phong, NULL);
+static const GParamInfo fluorescent_phong_doc[] = {
+    {"matrix", GPARAM_NAMED, "color", "reradiation (a day-glo orange)",
+     "a re-radiation matrix (bfc, reradiation) or a reflectance; not a line",
+     "the pigment of the Lambertian term; a plain reflectance makes a non-fluorescent matrix of it"},
+    {"ks", GPARAM_NAMED, "number", "0.04", "[0, 0.999]", "the albedo of the three specular lobes together"},
+    {"exponents", GPARAM_NAMED, "numbers", "30 120 480", "each in [1, 1e6]",
+     "three numbers: the exponents of the Phong lobes"},
+    {"weights", GPARAM_NAMED, "numbers", "0.2 0.3 0.5", "each in [0, 1], summing to 1",
+     "three numbers: each lobe's share of ks"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(fluorescent_phong, GKIND_MATERIAL, &fluorescent_phong_class, parse_fluorescent_phong, NULL,
+                    fluorescent_phong_doc);

@@ -448,4 +448,16 @@ static int parse_fluorescent_varnish(GReader *r, const void *vt, void **object, 
     return gfluor_finish(rc, &mat, m, object);
 }
 
-GENERIC_TYPE(fluorescent_varnish, GKIND_MATERIAL, &fluorescent_varnish_class, parse_fluorescent_varnish, NULL);
+static const GParamInfo fluorescent_varnish_doc[] = {
+    {"matrix", GPARAM_NAMED, "color", "reradiation (a day-glo orange)",
+     "a re-radiation matrix (bfc, reradiation) or a reflectance; not a line",
+     "the pigment of the Lambertian base under the varnish; a plain reflectance makes a non-fluorescent matrix"},
+    {"ior", GPARAM_NAMED, "number", "1.5", "[1, 4]", "the refraction index of the clear varnish"},
+    {"slope", GPARAM_NAMED, "number", "17", "[0.01, 44.99]",
+     "the facets' mean slope in degrees under the Blinn distribution (used when exponent is 0)"},
+    {"exponent", GPARAM_NAMED, "number", "0 (from slope)", "[0, 1e6]", "the Blinn exponent m of the facets"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(fluorescent_varnish, GKIND_MATERIAL, &fluorescent_varnish_class, parse_fluorescent_varnish, NULL,
+                    fluorescent_varnish_doc);

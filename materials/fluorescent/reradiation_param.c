@@ -67,6 +67,22 @@ static int parse_reradiation(GReader *r, const void *vt, void **object, GError *
     return G_OK;
 }
 
-GENERIC_TYPE_NAMED(reradiation, GKIND_COLOR, "reradiation", parse_reradiation,
-                   "parametric fluorescent re-radiation matrix: reradiation { absorb_peak NM ... quantum_yield Q }",
-                   NULL);
+static const GParamInfo reradiation_params[] = {
+    {"absorb_peak", GPARAM_NAMED, "number", "470", "[100, 2000]", "the centre of the absorption band, in nm"},
+    {"absorb_width", GPARAM_NAMED, "number", "115", "(0, 1000]",
+     "the band's half width in nm: absorption falls to absorb_max e^(-1/2) this far from the peak"},
+    {"absorb_shape", GPARAM_NAMED, "number", "8", "[1, 64]", "the band's edge exponent: 2 a Gaussian, larger flatter"},
+    {"absorb_max", GPARAM_NAMED, "number", "0.97", "[0, 1]", "the share of the light absorbed at the peak"},
+    {"emit_width", GPARAM_NAMED, "number", "20", "(0, 1000]", "the standard deviation of the emission band, in nm"},
+    {"stokes_shift", GPARAM_NAMED, "number", "135", "[0, 1000]", "the emission peak minus the absorption peak, in nm"},
+    {"quantum_yield", GPARAM_NAMED, "number", "0.65", "[0, 1]", "photons emitted per photon absorbed"},
+    {"reflectance", GPARAM_NAMED, "number", "0.92", "[0, 1]", "the reflectance of the light that is not absorbed"},
+    {"step", GPARAM_NAMED, "number", "the model's grid, else 5", "[1, 50]",
+     "the matrix's grid spacing in nm, over 380..780 nm (default: the spectral model's own grid)"},
+    {NULL},
+};
+
+GENERIC_TYPE_NAMED_PARAMS(reradiation, GKIND_COLOR, "reradiation", parse_reradiation,
+                          "parametric fluorescent re-radiation matrix: reradiation { absorb_peak NM ... "
+                          "quantum_yield Q }",
+                          NULL, reradiation_params);

@@ -32,7 +32,7 @@ static const GMaterialClass never_class = {.abi_version = GMATERIAL_ABI_VERSION,
 
 GENERIC_MODULE_EXPORT int generic_module_init(GModuleApi *api, GError *err)
 {
-    static const GTypeInfo type = {GKIND_MATERIAL, "never_registered", &never_class, NULL, "must not stay", NULL};
+    static const GTypeInfo type = {GKIND_MATERIAL, "never_registered", &never_class, NULL, "must not stay", NULL, NULL};
     int rc = api->add_type(api, &type, err);
 #ifdef FAIL_INIT
     if (rc == G_OK)

@@ -75,7 +75,7 @@ __attribute__((unused)) static int add_material(GModuleApi *api, const char *nam
                                                 GParseFn parse, GError *err)
 {
     const GTypeInfo type = {GKIND_MATERIAL, name, cls, parse, "breaks a conformance property on purpose (tests)",
-                            NULL};
+                            NULL, NULL};
     return api->add_type(api, &type, err);
 }
 
@@ -526,7 +526,7 @@ static void release(void *p) { gcolormodel_destroy(p); }
 
 GENERIC_MODULE_EXPORT int generic_module_init(GModuleApi *api, GError *err)
 {
-    static const GTypeInfo type = {GKIND_COLORMODEL, ONE_NAME, &bad_add_class, NULL, ONE_SUMMARY, release};
+    static const GTypeInfo type = {GKIND_COLORMODEL, ONE_NAME, &bad_add_class, NULL, ONE_SUMMARY, release, NULL};
     return api->add_type(api, &type, err);
 }
 #endif

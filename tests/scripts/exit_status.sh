@@ -45,9 +45,9 @@ printf 'camera pinhole { from <0, 1, 4> at <0, 0.5, 0> fov 40 width 32 height 24
 printf 'not an image' > "$TMP/bad.hdr"
 
 # ---- every tool and command: --help, --version, an unknown option (also as the last argument) ----
-for cmd in "gtrace" "gtrace merge" "gcolor" "gcolor list" "gcolor check" "gmat" "gmat eval" "gmat albedo" "gmat plot" "gmat list" \
-           "gmat check" "gmat types" "gmat swatch" "gmat laser" "gprobe" "gprobe eval" "gprobe approx" \
-           "gprobe irradiance" "gprobe convert" "gprobe compare" "gprobe sky"; do
+for cmd in "gtrace" "gtrace merge" "gtrace types" "gcolor" "gcolor list" "gcolor check" "gmat" "gmat eval" \
+           "gmat albedo" "gmat plot" "gmat list" "gmat check" "gmat types" "gmat swatch" "gmat laser" "gprobe" \
+           "gprobe eval" "gprobe approx" "gprobe irradiance" "gprobe convert" "gprobe compare" "gprobe sky"; do
     tool=${cmd%% *}
     sub=${cmd#"$tool"}
     # shellcheck disable=SC2086
@@ -93,6 +93,7 @@ expect 1 "gtrace of a broken scene" "broken.scene:" -- "$GT" "$TMP/broken.scene"
 expect 1 "gtrace --colormodel nosuch" "unknown colour model 'nosuch'" -- "$GT" "$TMP/good.scene" -o "$TMP/x.png" --colormodel nosuch
 expect 1 "gtrace into a missing directory" "No such file" -- "$GT" "$TMP/good.scene" -o "$TMP/none/x.png"
 expect 1 "gtrace --plugin nothere.so" "nothere.so" -- "$GT" "$TMP/good.scene" -o "$TMP/x.png" --plugin nothere.so
+expect 2 "gtrace types nothing" "unexpected argument 'nothing'" -- "$GT" types nothing
 
 # ---- gmat ----
 GM="$BIN/gmat"

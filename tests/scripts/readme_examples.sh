@@ -3,9 +3,9 @@
 #
 # Every example is the complete source of one type: a fenced ```c block directly preceded by the line
 #     <!-- readme-example: DIR/NAME.c -->
-# (DIR: colormodels, materials or textures), with one or more GENERIC_TYPE / GENERIC_TYPE_NAMED records, and the
-# README text right after it names the line `GENERIC_MODULE(&gtype_ID);` that makes it a module. Each is taken
-# verbatim and
+# (DIR: colormodels, materials or textures), with one or more GENERIC_TYPE / GENERIC_TYPE_NAMED (or *_PARAMS)
+# records, and the README text right after it names the line `GENERIC_MODULE(&gtype_ID);` that makes it a module.
+# Each is taken verbatim and
 #   a) built-in: dropped into its DIR in a copy of the source tree, where `make lib` builds the library; a small
 #      program then checks that each record is in the generated built-in list and registered by
 #      generic_register_builtins(). The copy is compared with the tree: the examples must be the only change
@@ -61,7 +61,9 @@ awk -v out="$tmp/examples" -v list="$tmp/list" '
 n_examples=$(wc -l < "$tmp/list")
 
 # The record ids of a source file, in order.
-ids_of() { sed -n 's/^GENERIC_TYPE\(_NAMED\)\{0,1\}([[:space:]]*\([A-Za-z_][A-Za-z0-9_]*\).*/\2/p' "$1"; }
+ids_of() {
+    sed -n 's/^GENERIC_TYPE\(_NAMED\)\{0,1\}\(_PARAMS\)\{0,1\}([[:space:]]*\([A-Za-z_][A-Za-z0-9_]*\).*/\3/p' "$1"
+}
 # The GENERIC_MODULE line of an example: every record it has.
 module_line() { printf 'GENERIC_MODULE(%s);\n' "$(ids_of "$1" | sed 's/^/\&gtype_/' | paste -sd, - | sed 's/,/, /g')"; }
 

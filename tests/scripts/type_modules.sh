@@ -88,7 +88,7 @@ cc $san -std=c11 -D_GNU_SOURCE -I"$inc" -rdynamic -o "$work/loader" "$work/loade
 n=0
 module() {
     dir=$1 src=$2
-    ids=$(sed -n 's/^GENERIC_TYPE\(_NAMED\)\{0,1\}(\([A-Za-z_][A-Za-z0-9_]*\),.*/\2/p' "$src")
+    ids=$(sed -n 's/^GENERIC_TYPE\(_NAMED\)\{0,1\}\(_PARAMS\)\{0,1\}(\([A-Za-z_][A-Za-z0-9_]*\),.*/\3/p' "$src")
     [ -n "$ids" ] || { echo "type_modules.sh: $src has no GENERIC_TYPE record: every file here must be a type" >&2; exit 1; }
     base=$(basename "$src" .c)
     mkdir -p "$dir"
@@ -105,7 +105,7 @@ module() {
     args=""
     example=""
     for id in $ids; do
-        line=$(grep -E "^GENERIC_TYPE(_NAMED)?\($id," "$src")
+        line=$(grep -E "^GENERIC_TYPE(_NAMED)?(_PARAMS)?\($id," "$src")
         kind=$(echo "$line" | sed 's/.*GKIND_\([A-Z]*\).*/\1/' | tr 'A-Z' 'a-z')
         case "$line" in
         GENERIC_TYPE_NAMED*) name=$(echo "$line" | sed 's/^[^"]*"\([^"]*\)".*/\1/') ;;

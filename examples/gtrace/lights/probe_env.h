@@ -59,6 +59,8 @@ typedef struct ProbeOverride {
 /** The parse routine and destructor of `light probe` (registered by gtrace_register_types). */
 int probe_light_parse(GReader *r, const void *vtable, void **object, GError *err);
 void probe_light_destroy(void *object);
+/** The parameters probe_light_parse reads (GParamInfo rows ended by {NULL}; generic/registry.h). */
+extern const GParamInfo probe_light_params[];
 /** Applies command-line replacements to every probe entry of a loaded library (before scene_from_library);
  * G_ERR_INVALID when the library has none or a value does not fit. */
 int probe_override_apply(GLibrary *lib, const ProbeOverride *ov, GError *err);

@@ -177,6 +177,32 @@ int probe_light_parse(GReader *r, const void *vtable, void **object, GError *err
     return G_OK;
 }
 
+const GParamInfo probe_light_params[] = {
+    {"file", GPARAM_NAMED, "path", NULL, "an image gprobe_load reads (e.g. .hdr, .exr, .pfm)",
+     "the light probe: a 2:1 latitude-longitude or a square angular map"},
+    {"technique", GPARAM_NAMED, "choice", "adaptive",
+     "mediancut, adaptive, kmeans, irradiance, variance, reference, sh, sh-hanning, ambientcube, sg-naive, sg-ls, "
+     "sg-nnls, sg-ambient",
+     "the techniques make count directional lights; reference samples the whole probe; a basis (sh...sg-ambient) "
+     "lights the surface as an ambient term, without shadows"},
+    {"count", GPARAM_NAMED, "integer", "16",
+     "[1, 4096]; mediancut a power of 2; irradiance at most 128; sh 4, 9, 16, 25; ambientcube 6; sg at most 128",
+     "the number of lights, coefficients or lobes"},
+    {"samples", GPARAM_NAMED, "integer", "64", "[1, 65536]", "reference: directions sampled per shading point"},
+    {"rotate", GPARAM_NAMED, "vector", "<0, 0, 0>", NULL,
+     "degrees about x, then y, then z turning the probe into the scene (its zenith is +z: y-up scenes say "
+     "<-90, 0, 0>)"},
+    {"scale", GPARAM_NAMED, "number", "1", "[0, 1e30]", "multiplies the probe's radiance"},
+    {"background", GPARAM_NAMED, "bool", "yes", NULL, "rays that leave the scene see the probe"},
+    {"shadows", GPARAM_NAMED, "bool", "yes", "off only with technique reference",
+     "reference: no shows the unoccluded image"},
+    {"format", GPARAM_NAMED, "choice", "auto", "auto, latlong, angular",
+     "the probe's mapping; auto: 2:1 latitude-longitude, square angular"},
+    {"fit_normals", GPARAM_NAMED, "integer", "2000", "[16, 1000000], count x fit_normals at most 524288",
+     "irradiance: the normals the fit uses"},
+    {NULL},
+};
+
 int probe_override_apply(GLibrary *lib, const ProbeOverride *ov, GError *err)
 {
     if (!ov)

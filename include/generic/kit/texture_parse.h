@@ -40,6 +40,19 @@ GENERIC_API GENERIC_NODISCARD int gtexparse_space(GReader *r, GGeneratorSpace *s
 /** The keys gtexparse_noise_param reads, for "expected one of" lists. */
 #define GTEXPARSE_NOISE_KEYS "space, frequency, seed, octaves, lacunarity, gain"
 
+/** The rows of a parameter table (GParamInfo, registry.h) for space, frequency and seed, the noise parameters every
+ * noise generator uses. */
+#define GTEXPARSE_NOISE_BASE_PARAMS                                                                                    \
+    {"space", GPARAM_NAMED, "choice", "object", "object, world, uv",                                                 \
+     "the coordinates: the object-space point, the world point, or (u, v, 0)"},                                       \
+    {"frequency", GPARAM_NAMED, "number", "1", "[1e-9, 1e9]", "features per unit"},                                   \
+    {"seed", GPARAM_NAMED, "integer", "0", "[0, 4294967295]", "picks the noise (the same in every run)"}
+/** The rows for octaves, lacunarity and gain, the noise parameters of the generators that sum octaves. */
+#define GTEXPARSE_NOISE_OCTAVE_PARAMS                                                                                  \
+    {"octaves", GPARAM_NAMED, "integer", "4", "[1, 16]", "the number of octaves summed"},                             \
+    {"lacunarity", GPARAM_NAMED, "number", "2", "[1e-3, 1e3]", "the frequency factor from one octave to the next"}, \
+    {"gain", GPARAM_NAMED, "number", "0.5", "[1e-6, 1e3]", "the amplitude factor from one octave to the next"}
+
 /** Reads the value of `key` when it is one of the noise parameters (GTEXPARSE_NOISE_KEYS: space, frequency
  * in [1e-9, 1e9], seed, octaves in 1..16, lacunarity, gain) into p: 1 when read, 0 when key is none of them
  * (nothing read), a negative status on an error. */
