@@ -80,7 +80,8 @@ for page in $pages; do
     }
     /^<!-- readme-example/ { fail("readme-example markers are called doc-example now"); next }
     /^<!-- doc-example: / {
-        if (!match($0, /^<!-- doc-example: (colormodels|materials|textures)\/[A-Za-z0-9_]+\.c( as [A-Za-z0-9_.\/-]+)? -->$/)) {
+        if (!match($0, "^<!-- doc-example: (colormodels|materials|textures)/[A-Za-z0-9_]+[.]c" \
+                       "( as [A-Za-z0-9_./-]+)? -->$")) {
             fail("malformed marker (expected <!-- doc-example: colormodels|materials|textures/NAME.c [as PATH] -->)")
             next
         }
@@ -91,7 +92,10 @@ for page in $pages; do
         system("mkdir -p \"" out "/" dir "\"")
         file = out "/" path
         also = $4 == "as" ? $5 : ""
-        if (also != "") { runline("mkdir -p \"$(dirname \"" also "\")\""); runline("cat > \"" also "\" <<\047DOC_FILE_END\047") }
+        if (also != "") {
+            runline("mkdir -p \"$(dirname \"" also "\")\"")
+            runline("cat > \"" also "\" <<\047DOC_FILE_END\047")
+        }
         printf "%s %s %d\n", path, page, NR >> list
         kind = "example"; want = "c"; state = 1; next
     }
@@ -167,9 +171,10 @@ else
     tree="$tmp/tree"
     mkdir -p "$tree"
     # the source tree without what builds and runs leave in it
-    for e in $(ls -A "$src"); do
-        case "$e" in build | out | try | .git) continue ;; esac
-        cp -R "$src/$e" "$tree/"
+    for e in "$src"/* "$src"/.[!.]*; do
+        [ -e "$e" ] || continue
+        case "$(basename "$e")" in build | out | try | .git) continue ;; esac
+        cp -R "$e" "$tree/"
     done
     while read -r path page line; do cp "$tmp/examples/$path" "$tree/$path"; done < "$tmp/list"
     out=$(diff -rq -x build -x out -x try -x .git "$src" "$tree" || true)
@@ -413,14 +418,14 @@ while read -r path page line; do
     [ "$exported" = "generic_module_abi generic_module_init" ] ||
         problem "module: $name.so exports '$exported', not just generic_module_abi generic_module_init"
     usage=$(sed -n 's/.*Text format:[[:space:]]*//p' "$tmp/examples/$path" | head -n 1 | sed 's/[[:space:]]*\*\/[[:space:]]*$//')
-    if ! "$tmp/loader" "$tmp/modules/$name.so" "$tmp/modules" "$usage" > "$tmp/loader.out"; then
+    if ! "$tmp/loader" "$tmp/modules/$name.so" "$tmp/modules" "$usage" > "$tmp/loader.out" < /dev/null; then
         cat "$tmp/loader.out"
         problem "module: $name.so does not load or its type does not work (above)"
         continue
     fi
     grep -v '^check ' "$tmp/loader.out" || true
     # the conformance checks a type writer runs
-    while read -r word what entry; do
+    while read -r _ what entry; do
         if [ "$what" = colormodel ]; then
             cmd="gcolor check $entry"
             set -- "$BUILD/bin/gcolor" check "$entry"
@@ -429,7 +434,7 @@ while read -r path page line; do
             set -- "$BUILD/bin/gmat" check "$what" "$entry"
         fi
         rc=0
-        "$@" --plugin "$tmp/modules/$name.so" > "$tmp/check.out" 2>&1 || rc=$?
+        "$@" --plugin "$tmp/modules/$name.so" > "$tmp/check.out" 2>&1 < /dev/null || rc=$?
         if [ "$rc" -ne 0 ]; then
             cat "$tmp/check.out"
             problem "module: $cmd --plugin $name.so fails (status $rc, above)"
@@ -447,20 +452,21 @@ while read -r path file page line; do
     [ -f "$tmp/modules/$name.so" ] || continue # its module failed above
     use="$tmp/modules/use_$(basename "$file" .txt).mat"
     cp "$file" "$use"
-    if ! "$BUILD/bin/gmat" list "$use" --allow-plugins > "$tmp/list.out" 2>&1; then
+    if ! "$BUILD/bin/gmat" list "$use" --allow-plugins > "$tmp/list.out" 2>&1 < /dev/null; then
         cat "$tmp/list.out"
         problem "use: $page:$line: gmat list --allow-plugins fails on it (above)"
         continue
     fi
     checked=0
-    for entry in $(awk '$1 == "material" || $1 == "node" { print $2 }' "$tmp/list.out"); do
-        if "$BUILD/bin/gmat" check "$use" "$entry" --allow-plugins > "$tmp/check.out" 2>&1; then
+    awk '$1 == "material" || $1 == "node" { print $2 }' "$tmp/list.out" > "$tmp/entries"
+    while read -r entry; do
+        if "$BUILD/bin/gmat" check "$use" "$entry" --allow-plugins > "$tmp/check.out" 2>&1 < /dev/null; then
             checked=$((checked + 1))
         else
             cat "$tmp/check.out"
             problem "use: $page:$line: gmat check fails on '$entry' (above)"
         fi
-    done
+    done < "$tmp/entries"
     echo "use: $page:$line ($name.so): read, $checked entries pass gmat check"
 done < "$tmp/uselist"
 
