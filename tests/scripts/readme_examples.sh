@@ -1,47 +1,88 @@
 #!/bin/sh
-# readme_examples.sh BUILD - the "Adding a ..." examples of README.md, built the two ways README promises.
+# readme_examples.sh BUILD - the examples of README.md and docs/, run the way the documentation says.
 #
-# Every example is the complete source of one type: a fenced ```c block directly preceded by the line
-#     <!-- readme-example: DIR/NAME.c -->
-# (DIR: colormodels, materials or textures), with one or more GENERIC_TYPE / GENERIC_TYPE_NAMED (or *_PARAMS)
-# records, and the README text right after it names the line `GENERIC_MODULE(&gtype_ID);` that makes it a module.
-# Each is taken verbatim and
-#   a) built-in: dropped into its DIR in a copy of the source tree, where `make lib` builds the library; a small
-#      program then checks that each record is in the generated built-in list and registered by
-#      generic_register_builtins(). The copy is compared with the tree: the examples must be the only change
-#      (one new file each, no file edited). Skipped for a sanitizer build (it rebuilds the library, ~1 min).
-#   b) module: compiled with that GENERIC_MODULE line appended as a .so against the staged public headers
-#      (BUILD/plugins/include, as `make install` installs them) with -fvisibility=hidden, not linked with
-#      libgeneric, exporting nothing but the module's two symbols; a program linked with BUILD/lib/libgeneric.a
+# The documentation marks what it shows with an HTML comment on the line before a fenced block:
+#   <!-- doc-example: DIR/NAME.c [as PATH] -->   a ```c block: the complete source of one new type (DIR:
+#        colormodels, materials or textures), with GENERIC_TYPE / GENERIC_TYPE_NAMED records; the text right
+#        after it names the line `GENERIC_MODULE(&gtype_ID);` that makes it a module. With `as PATH` a run
+#        below (doc-run) also finds it at PATH.
+#   <!-- doc-example-use: DIR/NAME.c -->   a ``` block: a file that uses the module of that example.
+#   <!-- doc-file: PATH -->   a ``` block: a file the reader saves at PATH (relative to the top of the tree).
+#   <!-- doc-run -->   a ```sh block: commands the reader runs from the top of the tree.
+# Checks:
+#   a) built-in: every doc-example dropped into its DIR in a copy of the source tree, where `make lib` builds the
+#      library; a program checks that each record is in the generated built-in list and registered by
+#      generic_register_builtins(). The copy must differ from the tree by the examples alone (one new file each).
+#      Skipped for a sanitizer build (it rebuilds the library, ~1 min).
+#   b) module: each doc-example with its GENERIC_MODULE line appended, compiled as a .so against the staged public
+#      headers (BUILD/plugins/include, as `make install` installs them) with -fvisibility=hidden, not linked with
+#      libgeneric, exporting nothing but the module's two symbols. A program linked with BUILD/lib/libgeneric.a
 #      (-rdynamic) loads it with gplugin_load and uses each type it registers: a colour model is created and
-#      round-trips rgb; a material or node is read from a one-line file and evaluated; a generator is read
-#      inside an interpolate node, which is evaluated. The one-line file is the example's "Text format:" line
-#      when its comment has one (e.g. "Text format:  node NAME tint { child lambert }"), else the bare keyword.
+#      round-trips rgb; a material or node is read from a one-line file and evaluated; a generator is read inside
+#      an interpolate node, which is evaluated. The one-line file is the example's "Text format:" line when its
+#      comment has one, else the bare keyword. Then the conformance checks run on each type: `gcolor check` on a
+#      colour model, `gmat check` on that one-line entry.
+#   c) use: each doc-example-use file is saved beside the example's module and read by `gmat list
+#      --allow-plugins`; `gmat check` runs on every material and node it defines.
+#   d) run: the doc-file and doc-run blocks of each page, in the page's order, as one shell script (`set -e`) in an
+#      empty directory where `build` is BUILD and `examples` the tree's examples/: every command must succeed.
 set -eu
 BUILD=${1:-build}
 src=$(pwd)
-readme="$src/README.md"
+build_abs=$(cd "$BUILD" && pwd)
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT INT TERM
 problems=0
 problem() { echo "readme_examples: $*" >&2; problems=$((problems + 1)); }
 die() { echo "readme_examples: $*" >&2; exit 1; }
+# tools outside the build tree find the OpenImageIO module here (image textures, non-PNG output)
+GENERIC_OIIO_MODULE="$build_abs/lib/generic/libgeneric_oiio.so"
+export GENERIC_OIIO_MODULE
 
-# ---- extraction: $tmp/examples/DIR/NAME.c, and $tmp/list with "DIR/NAME.c LINE" per example ----
-mkdir -p "$tmp/examples"
-awk -v out="$tmp/examples" -v list="$tmp/list" '
-    function fail(msg) { printf "README.md:%d: %s\n", NR, msg > "/dev/stderr"; bad = 1 }
+pages=""
+for f in README.md docs/*.md docs/reference/*.md; do
+    [ -f "$f" ] && pages="$pages $f"
+done
+
+# ---- extraction ----
+# $tmp/examples/DIR/NAME.c and $tmp/list ("DIR/NAME.c PAGE LINE" per example); $tmp/uses/NAME.N.txt and
+# $tmp/uselist ("DIR/NAME.c FILE PAGE LINE"); $tmp/run/PAGE.sh, the page's files and commands in order.
+mkdir -p "$tmp/examples" "$tmp/uses" "$tmp/run"
+: > "$tmp/list"
+: > "$tmp/uselist"
+for page in $pages; do
+    runfile="$tmp/run/$(echo "$page" | tr '/' '_').sh"
+    echo "$page" > "$runfile.page"
+    awk -v out="$tmp/examples" -v list="$tmp/list" -v uses="$tmp/uses" -v uselist="$tmp/uselist" \
+        -v run="$runfile" -v page="$page" '
+    function fail(msg) { printf "%s:%d: %s\n", page, NR, msg > "/dev/stderr"; bad = 1 }
+    function runline(s) { print s > run; nrun++ }
+    function fence_ok(want) {
+        if (want == "" ? $0 !~ /^```/ : $0 != "```" want) {
+            fail("the line after a doc marker must open a ```" want " block"); state = 0; return 0
+        }
+        return 1
+    }
     state == 2 {
-        if ($0 == "```") { close(file); state = 0; next }
-        print > file; next
+        if ($0 == "```") {
+            if (file != "") close(file)
+            if (also != "") runline("DOC_FILE_END")
+            state = 0; next
+        }
+        if (file != "") print > file
+        if (also != "") runline($0)
+        if (kind == "run") runline($0)
+        next
     }
     state == 1 {
-        if ($0 != "```c") { fail("the line after a readme-example marker must open a ```c block"); state = 0; next }
+        if (!fence_ok(want)) next
         state = 2; next
     }
-    /^<!-- readme-example:/ {
-        if (!match($0, /^<!-- readme-example: (colormodels|materials|textures)\/[A-Za-z0-9_]+\.c -->$/)) {
-            fail("malformed marker (expected <!-- readme-example: colormodels|materials|textures/NAME.c -->)")
+    /^<!-- readme-example/ { fail("readme-example markers are called doc-example now"); next }
+    /^<!-- doc-example: / {
+        if (!match($0, "^<!-- doc-example: (colormodels|materials|textures)/[A-Za-z0-9_]+[.]c" \
+                       "( as [A-Za-z0-9_./-]+)? -->$")) {
+            fail("malformed marker (expected <!-- doc-example: colormodels|materials|textures/NAME.c [as PATH] -->)")
             next
         }
         path = $3
@@ -50,15 +91,41 @@ awk -v out="$tmp/examples" -v list="$tmp/list" '
         dir = path; sub(/\/.*/, "", dir)
         system("mkdir -p \"" out "/" dir "\"")
         file = out "/" path
-        printf "%s %d\n", path, NR > list
-        state = 1
+        also = $4 == "as" ? $5 : ""
+        if (also != "") {
+            runline("mkdir -p \"$(dirname \"" also "\")\"")
+            runline("cat > \"" also "\" <<\047DOC_FILE_END\047")
+        }
+        printf "%s %s %d\n", path, page, NR >> list
+        kind = "example"; want = "c"; state = 1; next
     }
+    /^<!-- doc-example-use: / {
+        if (!match($0, /^<!-- doc-example-use: (colormodels|materials|textures)\/[A-Za-z0-9_]+\.c -->$/)) {
+            fail("malformed marker (expected <!-- doc-example-use: DIR/NAME.c -->)"); next
+        }
+        nuse++
+        name = $3; sub(/.*\//, "", name); sub(/\.c$/, "", name)
+        file = uses "/" name "." nuse ".txt"; also = ""
+        printf "%s %s %s %d\n", $3, file, page, NR >> uselist
+        kind = "use"; want = ""; state = 1; next
+    }
+    /^<!-- doc-file: / {
+        if (!match($0, /^<!-- doc-file: [A-Za-z0-9_.\/-]+ -->$/) || $3 ~ /^\// || $3 ~ /\.\./) {
+            fail("malformed marker (expected <!-- doc-file: RELATIVE/PATH -->)"); next
+        }
+        file = ""; also = $3
+        runline("mkdir -p \"$(dirname \"" also "\")\""); runline("cat > \"" also "\" <<\047DOC_FILE_END\047")
+        kind = "file"; want = ""; state = 1; next
+    }
+    /^<!-- doc-run -->$/ { file = ""; also = ""; kind = "run"; want = "sh"; state = 1; next }
+    /^<!-- doc-/ { fail("unknown doc marker: " $0); next }
     END {
-        if (state == 2) fail("the last example block is not closed")
+        if (state != 0) fail("the last marked block is not closed")
         exit bad
-    }' "$readme" || die "README.md has malformed examples (above)"
-[ -s "$tmp/list" ] || die "README.md has no <!-- readme-example: DIR/NAME.c --> block"
+    }' "$page" || die "$page has malformed doc markers (above)"
+done
 n_examples=$(wc -l < "$tmp/list")
+[ "$n_examples" -gt 0 ] || die "no page has a <!-- doc-example: DIR/NAME.c --> block"
 
 # The record ids of a source file, in order.
 ids_of() {
@@ -67,24 +134,27 @@ ids_of() {
 # The GENERIC_MODULE line of an example: every record it has.
 module_line() { printf 'GENERIC_MODULE(%s);\n' "$(ids_of "$1" | sed 's/^/\&gtype_/' | paste -sd, - | sed 's/,/, /g')"; }
 
-while read -r path line; do
+while read -r path page line; do
     f="$tmp/examples/$path"
     if [ -z "$(ids_of "$f")" ]; then
-        problem "$path (README.md:$line): no GENERIC_TYPE record"
+        problem "$path ($page:$line): no GENERIC_TYPE record"
         continue
     fi
     # the text after the block must say which line makes it a module
-    end=$(awk -v from="$line" 'NR > from + 1 && $0 == "```" { print NR; exit }' "$readme")
+    end=$(awk -v from="$line" 'NR > from + 1 && $0 == "```" { print NR; exit }' "$page")
     for id in $(ids_of "$f"); do
-        sed -n "$((end + 1)),$((end + 15))p" "$readme" | grep -qF "GENERIC_MODULE(&gtype_$id" ||
-            problem "$path (README.md:$line): the text after it does not name the line GENERIC_MODULE(&gtype_$id);"
+        sed -n "$((end + 1)),$((end + 15))p" "$page" | grep -qF "GENERIC_MODULE(&gtype_$id" ||
+            problem "$path ($page:$line): the text after it does not name the line GENERIC_MODULE(&gtype_$id);"
     done
     if [ -e "$src/$path" ]; then
-        problem "$path (README.md:$line): the tree has that file already (an example must be a new type)"
+        problem "$path ($page:$line): the tree has that file already (an example must be a new type)"
     fi
 done < "$tmp/list"
-[ "$problems" -eq 0 ] || die "$problems problem(s) in README.md's examples"
-echo "README.md: $n_examples example(s): $(cut -d' ' -f1 "$tmp/list" | paste -sd' ' -)"
+while read -r path file page line; do
+    grep -q "^$path " "$tmp/list" || problem "$page:$line: doc-example-use of $path, which no doc-example gives"
+done < "$tmp/uselist"
+[ "$problems" -eq 0 ] || die "$problems problem(s) in the documentation's examples"
+echo "examples: $n_examples: $(awk '{ printf "%s%s (%s)", (NR > 1 ? ", " : ""), $1, $2 }' "$tmp/list")"
 
 # ---- linking a program against a libgeneric.a (flags as the Makefile's DEPLIBS; sanitizers when it has them) ----
 san=""
@@ -102,22 +172,17 @@ if [ -n "$san" ]; then
 else
     tree="$tmp/tree"
     mkdir -p "$tree"
-    dirs="include lib colormodels materials textures scripts share"
-    for d in $dirs; do cp -R "$src/$d" "$tree/"; done
-    # the build: the top Makefile, every folder's build.mk it includes, the pkg-config template
-    (cd "$src" && find . -path ./build -prune -o -name build.mk -print) | while read -r f; do
-        mkdir -p "$tree/$(dirname "$f")" && cp "$src/$f" "$tree/$f"
+    # the source tree without what builds and runs leave in it
+    for e in "$src"/* "$src"/.[!.]*; do
+        [ -e "$e" ] || continue
+        case "$(basename "$e")" in build | out | try | .git) continue ;; esac
+        cp -R "$e" "$tree/"
     done
-    cp "$src/Makefile" "$src/generic.pc.in" "$tree/"
-    while read -r path line; do cp "$tmp/examples/$path" "$tree/$path"; done < "$tmp/list"
-    added=0
-    edited=0
-    for d in $dirs; do
-        out=$(diff -rq "$src/$d" "$tree/$d" || true)
-        added=$((added + $(printf '%s\n' "$out" | grep -c "^Only in $tree" || true)))
-        edited=$((edited + $(printf '%s\n' "$out" | grep -c " differ$" || true)))
-        if printf '%s\n' "$out" | grep -q "^Only in $src"; then problem "built-in: the copy of $d lacks files"; fi
-    done
+    while read -r path page line; do cp "$tmp/examples/$path" "$tree/$path"; done < "$tmp/list"
+    out=$(diff -rq -x build -x out -x try -x .git "$src" "$tree" || true)
+    added=$(printf '%s\n' "$out" | grep -c "^Only in $tree" || true)
+    edited=$(printf '%s\n' "$out" | grep -c " differ$" || true)
+    if printf '%s\n' "$out" | grep -q "^Only in $src"; then problem "built-in: the copy of the tree lacks files"; fi
     echo "built-in: $added file(s) added, $edited file(s) edited in a copy of the tree"
     [ "$added" -eq "$n_examples" ] || problem "built-in: $added files added for $n_examples examples"
     [ "$edited" -eq 0 ] || problem "built-in: $edited files of the tree differ from the original"
@@ -129,7 +194,7 @@ else
     {
         echo '#include <generic/builtins.h>'
         echo '#include <stdio.h>'
-        while read -r path line; do
+        while read -r path page line; do
             for id in $(ids_of "$tmp/examples/$path"); do echo "extern const GTypeInfo gtype_$id;"; done
         done < "$tmp/list"
         cat <<'C'
@@ -163,7 +228,7 @@ int main(void)
     }
     int bad = 0;
 C
-        while read -r path line; do
+        while read -r path page line; do
             for id in $(ids_of "$tmp/examples/$path"); do echo "    bad += check(&gtype_$id, \"$id\", \"$path\");"; done
         done < "$tmp/list"
         echo '    return bad != 0;'
@@ -178,7 +243,8 @@ fi
 inc="$BUILD/plugins/include"
 [ -f "$inc/generic/plugin.h" ] || die "module: $inc has no staged headers (run make first)"
 cat > "$tmp/loader.c" <<'C'
-/* loader MODULE.so [USAGE]: loads a module and uses every type it registers. */
+/* loader MODULE.so WORKDIR [USAGE]: loads a module and uses every type it registers; prints a line
+ * `check colormodel NAME` or `check FILE ENTRY` for each type, for the conformance checks that follow. */
 #include <generic/builtins.h>
 #include <generic/plugin.h>
 #include <generic/reader.h>
@@ -224,6 +290,7 @@ static int use_colormodel(const char *name)
         xyz[1] = INFINITY;
     printf("module: colormodel '%s': %d values, rgb round trip max error %.2g (greys %.2g), white light Y %.6f\n",
            name, m->nvalues, worst, worst_grey, xyz[1]);
+    printf("check colormodel %s\n", name); /* the script runs gcolor check on it */
     int bad = worst_grey > 1e-5 || fabs(xyz[1] - 1.0) > 1e-4 || (m->nvalues >= 3 && worst > 1e-5);
     gcolor_free(&c);
     gcolormodel_destroy(m);
@@ -253,7 +320,7 @@ static int use_entry(GKind kind, const char *name, const char *usage, const char
     else
         snprintf(text, sizeof text, "%s readme_check %s\n", gkind_name(kind), value);
     char path[4200];
-    snprintf(path, sizeof path, "%s/readme_check.mat", dir);
+    snprintf(path, sizeof path, "%s/check_%s.mat", dir, name);
     FILE *f = fopen(path, "w");
     if (!f || fputs(text, f) < 0 || fclose(f) != 0)
         return fail("cannot write the test file", NULL);
@@ -297,6 +364,8 @@ static int use_entry(GKind kind, const char *name, const char *usage, const char
     }
     printf("module: %s '%s' from \"%s\": reflection brightness %.4g..%.4g over 64 points%s\n", gkind_name(kind),
            name, text, lo, hi, bad ? ": FAILED (not finite and >= 0)" : "");
+    if (!bad) /* the script runs gmat check on it */
+        printf("check %s %s\n", path, "readme_check");
     gscratch_destroy(s);
     glibrary_destroy(lib);
     return bad;
@@ -336,7 +405,7 @@ int main(int argc, char **argv)
 C
 link_program "$tmp/loader.c" "$inc" "$BUILD/lib/libgeneric.a" "$tmp/loader" || die "module: the loader does not build"
 mkdir -p "$tmp/modules"
-while read -r path line; do
+while read -r path page line; do
     name=$(basename "$path" .c)
     m="$tmp/modules/$name.c"
     { cat "$tmp/examples/$path"; module_line "$tmp/examples/$path"; } > "$m"
@@ -351,10 +420,73 @@ while read -r path line; do
     [ "$exported" = "generic_module_abi generic_module_init" ] ||
         problem "module: $name.so exports '$exported', not just generic_module_abi generic_module_init"
     usage=$(sed -n 's/.*Text format:[[:space:]]*//p' "$tmp/examples/$path" | head -n 1 | sed 's/[[:space:]]*\*\/[[:space:]]*$//')
-    if ! "$tmp/loader" "$tmp/modules/$name.so" "$tmp/modules" "$usage"; then
+    if ! "$tmp/loader" "$tmp/modules/$name.so" "$tmp/modules" "$usage" > "$tmp/loader.out" < /dev/null; then
+        cat "$tmp/loader.out"
         problem "module: $name.so does not load or its type does not work (above)"
+        continue
     fi
+    grep -v '^check ' "$tmp/loader.out" || true
+    # the conformance checks a type writer runs
+    while read -r _ what entry; do
+        if [ "$what" = colormodel ]; then
+            cmd="gcolor check $entry"
+            set -- "$BUILD/bin/gcolor" check "$entry"
+        else
+            cmd="gmat check $(basename "$what") $entry"
+            set -- "$BUILD/bin/gmat" check "$what" "$entry"
+        fi
+        rc=0
+        "$@" --plugin "$tmp/modules/$name.so" > "$tmp/check.out" 2>&1 < /dev/null || rc=$?
+        if [ "$rc" -ne 0 ]; then
+            cat "$tmp/check.out"
+            problem "module: $cmd --plugin $name.so fails (status $rc, above)"
+        else
+            echo "module: $cmd --plugin $name.so: $(grep -c 'PASS' "$tmp/check.out") properties pass"
+        fi
+    done << CHECKS
+$(grep '^check ' "$tmp/loader.out")
+CHECKS
 done < "$tmp/list"
 
+# ---- c) use ----
+while read -r path file page line; do
+    name=$(basename "$path" .c)
+    [ -f "$tmp/modules/$name.so" ] || continue # its module failed above
+    use="$tmp/modules/use_$(basename "$file" .txt).mat"
+    cp "$file" "$use"
+    if ! "$BUILD/bin/gmat" list "$use" --allow-plugins > "$tmp/list.out" 2>&1 < /dev/null; then
+        cat "$tmp/list.out"
+        problem "use: $page:$line: gmat list --allow-plugins fails on it (above)"
+        continue
+    fi
+    checked=0
+    awk '$1 == "material" || $1 == "node" { print $2 }' "$tmp/list.out" > "$tmp/entries"
+    while read -r entry; do
+        if "$BUILD/bin/gmat" check "$use" "$entry" --allow-plugins > "$tmp/check.out" 2>&1 < /dev/null; then
+            checked=$((checked + 1))
+        else
+            cat "$tmp/check.out"
+            problem "use: $page:$line: gmat check fails on '$entry' (above)"
+        fi
+    done < "$tmp/entries"
+    echo "use: $page:$line ($name.so): read, $checked entries pass gmat check"
+done < "$tmp/uselist"
+
+# ---- d) run ----
+for script in "$tmp"/run/*.sh; do
+    [ -s "$script" ] || continue
+    page=$(cat "$script.page")
+    work="$tmp/work/$(basename "$script" .sh)"
+    mkdir -p "$work"
+    ln -s "$build_abs" "$work/build"
+    ln -s "$src/examples" "$work/examples"
+    if (cd "$work" && sh -ex "$script") > "$tmp/run.log" 2>&1; then
+        echo "run: $page: $(grep -c '^+ ' "$tmp/run.log") commands succeed"
+    else
+        tail -n 30 "$tmp/run.log" >&2
+        problem "run: a command of $page fails (above; the last one shown)"
+    fi
+done
+
 [ "$problems" -eq 0 ] || die "$problems problem(s)"
-echo "readme_examples: $n_examples example(s) work as built-ins and as modules"
+echo "readme_examples: $n_examples example(s) work as built-ins and as modules; every page's commands run"
