@@ -3,7 +3,7 @@
 # link; Embree and assimp for them; the MPI module; and the benchmarks that run gtrace.
 GTRACE_SRC := $(sort $(wildcard examples/gtrace/*/*.c))
 GTRACE_LIB := $(BUILD)/lib/libgtrace.a
-GTRACE_LIBS := -lembree3 -lassimp
+GTRACE_DEPLIBS := -lembree3 -lassimp
 all: $(GTRACE_LIB)
 
 $(GTRACE_LIB): $(GTRACE_SRC:%.c=$(BUILD)/obj/%.o)
@@ -17,11 +17,11 @@ $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tests/test_gtrace*.c)): CPPFLAGS += -
 # the test programs of the tracer link the library
 GTRACE_TEST_BIN := $(patsubst tests/%.c,$(BUILD)/tests/%,$(wildcard tests/test_gtrace*.c))
 $(GTRACE_TEST_BIN): $(GTRACE_LIB)
-$(GTRACE_TEST_BIN): TESTLIBS += $(GTRACE_LIB) $(GTRACE_LIBS)
+$(GTRACE_TEST_BIN): TESTLIBS += $(GTRACE_LIB) $(GTRACE_DEPLIBS)
 
 ifeq ($(LTO),)
 # the tool: main.c (the top Makefile's rule for examples/TOOL/*.c) and the library
-EXTRA_LIBS_gtrace := $(GTRACE_LIB) $(GTRACE_LIBS)
+EXTRA_LIBS_gtrace := $(GTRACE_LIB) $(GTRACE_DEPLIBS)
 $(BUILD)/bin/gtrace: $(GTRACE_LIB)
 else
 # The tool, link-time optimised (LTO in the top Makefile): main.c and the library compiled for it into BUILD/obj-lto,
@@ -39,7 +39,7 @@ $(GTRACE_LTO_LIB): $(GTRACE_SRC:%.c=$(BUILD)/obj-lto/%.o)
 $(BUILD)/bin/gtrace: $(LTO_OBJ) $(GTRACE_LTO_LIB) | $(OIIO_SO) $(OCIO_CONFIG)
 	@mkdir -p $(dir $@)
 	$(CC) -rdynamic $(LTO) $(OPT) -g -Wno-error=maybe-uninitialized -o $@ $(LTO_OBJ) \
-	    -Wl,--whole-archive $(GTRACE_LTO_LIB) -Wl,--no-whole-archive $(LDFLAGS) $(GTRACE_LIBS) $(DEPLIBS)
+	    -Wl,--whole-archive $(GTRACE_LTO_LIB) -Wl,--no-whole-archive $(LDFLAGS) $(GTRACE_DEPLIBS) $(DEPLIBS)
 endif
 
 # the POV-Ray comparison and the other benchmarks that run gtrace
@@ -56,16 +56,18 @@ bench-dispersion: $(BUILD)/bin/gtrace
 bench-path: $(BUILD)/bin/gtrace $(BUILD)/bin/gprobe
 	@bench/path.sh $(BUILD)
 bench: bench-pov bench-dispersion bench-path bench-mpi
-# gtrace's MPI module (examples/gtrace/distributed/mpi/, examples/gtrace/distributed/mpi_module.h), built when Open MPI's development
-# files are found (pkg-config ompi-c; Debian's libopenmpi-dev). gtrace opens it with dlopen only when it runs under
-# mpirun (mpi_load.c), so --help and a render on one machine never map libmpi; without it gtrace still builds and
-# --version says so. Found beside gtrace (../lib/generic/) or in the installed PREFIX/lib/generic/.
-$(call objs_of,examples/gtrace/distributed/mpi_load.o): CPPFLAGS += -DGTRACE_MPI_LIBDIR='"$(PREFIX)/lib"'
+# gtrace's MPI module (examples/gtrace/distributed/mpi/, distributed/mpi_module.h), built when Open MPI's
+# development files are found (pkg-config ompi-c; Debian's libopenmpi-dev). gtrace opens it with dlopen only when
+# it runs under mpirun (mpi_load.c), so --help and a render on one machine never map libmpi; without it gtrace still
+# builds and --version says so. Found beside gtrace (../lib/generic/) or in the installed PREFIX/lib/generic/.
+GTRACE_MPI_LOAD_OBJ := $(call objs_of,examples/gtrace/distributed/mpi_load.o)
+$(GTRACE_MPI_LOAD_OBJ): CPPFLAGS += -DGTRACE_MPI_LIBDIR='"$(PREFIX)/lib"'
 MPI_CFLAGS := $(shell pkg-config --cflags ompi-c 2>/dev/null)
 MPI_LIBS   := $(shell pkg-config --libs ompi-c 2>/dev/null)
 ifneq ($(MPI_LIBS),)
 GTRACE_MPI_SO := $(BUILD)/lib/generic/gtrace_mpi.so
-$(call objs_of,examples/gtrace/distributed/mpi_load.o): CPPFLAGS += -DGTRACE_MPI_BUILT='"gtrace_mpi.so (Open MPI $(shell pkg-config --modversion ompi-c))"'
+GTRACE_MPI_NOTE := gtrace_mpi.so (Open MPI $(shell pkg-config --modversion ompi-c))
+$(GTRACE_MPI_LOAD_OBJ): CPPFLAGS += -DGTRACE_MPI_BUILT='"$(GTRACE_MPI_NOTE)"'
 $(BUILD)/bin/gtrace: | $(GTRACE_MPI_SO)
 all: $(GTRACE_MPI_SO)
 $(GTRACE_MPI_SO): examples/gtrace/distributed/mpi/transport.c examples/gtrace/distributed/mpi_module.h
