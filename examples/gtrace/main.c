@@ -392,6 +392,10 @@ static int prepare(const Options *o, const GReaderOptions *trust, int check_outp
         rs->width = 1;
     if (rs->height < 1)
         rs->height = 1;
+    Camera *framed = &(*scene)->camera; /* a view fitted to the scene, fitted again to another image size */
+    if (framed->frame >= 0.0 && (rs->width != framed->width || rs->height != framed->height) &&
+        (rc = camera_frame(framed, framed->frame_lo, framed->frame_hi, rs->width, rs->height, err)) < 0)
+        return rc;
     if (o->spp > 0)
         rs->spp = o->spp;
     if (o->depth >= 0)
