@@ -7,6 +7,7 @@
 #include "film/output.h"
 #include "film/progress.h"
 #include "geometry/geometry.h"
+#include "geometry/mesh_format.h"
 #include "integrators/bands.h"
 #include "integrators/path.h"
 #include "integrators/whitted.h"

@@ -1,6 +1,7 @@
 /* test_gtrace_mesh_formats.c - the same mesh as OBJ (mesh.c), ASCII PLY and glTF 2.0 (mesh_assimp.c, through
  * assimp) loads to the same corners (positions, normals, uv) and renders to the same pixels; truncated, garbage
- * and lying files fail with a message naming the file. Also a binary little-endian PLY of the same mesh. */
+ * and lying files fail with a message naming the file. Also a binary little-endian PLY of the same mesh, the header
+ * lines PLY exporters write, and PLY layouts assimp mishandles, refused before it reads them. */
 #include "test_gtrace_common.h"
 
 #include <generic/builtins.h>
@@ -324,10 +325,159 @@ static void test_hostile_files(void **state)
         unlink(temp_path(made[i]));
 }
 
+/* text with `insert` put after the first occurrence of `after` */
+static void insert_after(char *out, size_t size, const char *text, const char *after, const char *insert)
+{
+    const char *at = strstr(text, after);
+    assert_non_null(at);
+    at += strlen(after);
+    snprintf(out, size, "%.*s%s%s", (int)(at - text), text, insert, at);
+}
+
+/* Header lines real exporters write load to the same mesh: Blender 2.4x's line without "comment", obj_info, a
+ * "comment TextureFile" line and an obj_info line between one element's properties (assimp alone drops the
+ * properties after them), a comment before the format line, CR LF line ends; a binary body whose first byte is a
+ * line feed (which assimp alone drops). */
+static void test_ply_exporter_headers(void **state)
+{
+    (void)state;
+    char obj[8192], ply[8192], a[8192], b[8192];
+    obj_text(obj, sizeof obj);
+    Object *ref = load_ok(write_text("ref.obj", obj));
+    ply_text(ply, sizeof ply);
+    insert_after(a, sizeof a, ply, "format ascii 1.0\n",
+                 "Created by Blender3D 247 - www.blender.org, source file: quad.blend\nobj_info vertices 4\n");
+    insert_after(b, sizeof b, a, "property float y\n", "obj_info between properties\ncomment TextureFile quad.png\n");
+    Object *o = load_ok(write_text("blender.ply", b));
+    assert_same_corners(ref->mesh, o->mesh);
+    object_free(o);
+    insert_after(a, sizeof a, ply, "ply\n", "comment before the format\n");
+    o = load_ok(write_text("first.ply", a));
+    assert_same_corners(ref->mesh, o->mesh);
+    object_free(o);
+    size_t k = 0;
+    for (const char *c = ply; *c && k + 2 < sizeof a; c++) { /* CR LF everywhere */
+        if (*c == '\n')
+            a[k++] = '\r';
+        a[k++] = *c;
+    }
+    a[k] = '\0';
+    o = load_ok(write_text("crlf.ply", a));
+    assert_same_corners(ref->mesh, o->mesh);
+    object_free(o);
+
+    unsigned char bin[2048];
+    size_t n = ply_binary(bin, sizeof bin);
+    unsigned char *body = (unsigned char *)strstr((char *)bin, "end_header\n") + strlen("end_header\n");
+    body[0] = 0x0a; /* the first vertex's x: -1 with its lowest mantissa byte a line feed */
+    float x0;
+    memcpy(&x0, body, 4);
+    assert_true(x0 != -1.0f && fabs(x0 + 1.0) < 1e-5);
+    o = load_ok(write_file("lf.ply", bin, n));
+    assert_int_equal(o->mesh->ntris, 2);
+    int found = 0;
+    for (int i = 0; i < o->mesh->nverts; i++) {
+        const double *q = o->mesh->pos + 3 * i;
+        found |= q[0] == (double)x0 && q[1] == -1.0 && q[2] == 0.0;
+        for (int j = 1; j < 4; j++)
+            found |= (q[0] == P[j][0] && q[1] == P[j][1] && q[2] == P[j][2]) << j;
+    }
+    assert_int_equal(found, 15); /* every vertex where it was written */
+    object_free(o);
+    object_free(ref);
+    const char *made[] = {"ref.obj", "blender.ply", "first.ply", "crlf.ply", "lf.ply"};
+    for (size_t i = 0; i < sizeof made / sizeof *made; i++)
+        unlink(temp_path(made[i]));
+}
+
+/* Layouts assimp's PLY reader mishandles are refused before it reads them: a face's texcoord list without its
+ * index list (assimp follows a null pointer) or longer than two per corner (it reads past the index list), a
+ * second vertex or face element (it writes past its arrays), malformed keyword lines; elements other than vertex
+ * and face (assimp reads the data of one of a name it does not know as the next element's) are left out. */
+static void test_ply_hostile_layouts(void **state)
+{
+    (void)state;
+    const char *head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                       "property float z\n";
+    const char *verts = "0 0 0\n1 0 0\n0 1 0\n";
+    const struct {
+        const char *header, *body, *expect;
+    } bad[] = {
+        {"element face 1\nproperty list uchar float texcoord\n", "6 0 0 1 0 0 1\n", "no vertex_indices list"},
+        {"element face 1\nproperty list uchar int vertex_indices\nproperty list uchar float texcoord\n",
+         "3 0 1 2 8 0 0 1 0 0 1 1 1\n", "8 texture coordinates for 3 corners"},
+        {"element vertex 2\nproperty float x\n", "1\n2\n", "a second vertex element"},
+        {"element face 1\nproperty list uchar int vertex_indices\nelement tristrips 1\nproperty list int int "
+         "vertex_indices\n", "3 0 1 2\n3 0 1 2\n", "a second face or tristrips element"},
+        {"property float w\n", "", NULL}, /* a fourth vertex property: the vertices run short */
+        {"element face 1\nproperty list uchar int128 vertex_indices\n", "3 0 1 2\n", "expected \"property TYPE"},
+        {"format ascii 1.0\n", "", "expected one line \"format ascii 1.0\""},
+        {"element face\n", "", "expected \"element NAME COUNT\""},
+        {"element face -1\n", "", "needs a count"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof *bad; i++) {
+        char text[1024];
+        snprintf(text, sizeof text, "%send_header\n%s%s", bad[i].header, verts, bad[i].body);
+        char full[1200];
+        snprintf(full, sizeof full, "%s%s", head, text);
+        assert_refused(write_text("layout.ply", full), bad[i].expect);
+    }
+    assert_refused(write_text("prop.ply", "ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\nend_header\n1\n"),
+                   "a property before any element");
+    assert_refused(write_text("end.ply", "ply\nend_header\nformat ascii 1.0\n"), "end_header before the format");
+    /* the same face with 6 texture coordinates loads */
+    char full[1200];
+    snprintf(full, sizeof full, "%selement face 1\nproperty list uchar int vertex_indices\nproperty list uchar float "
+             "texcoord\nend_header\n%s3 0 1 2 6 0 0 1 0 0 1\n", head, verts);
+    Object *o = load_ok(write_text("layout.ply", full));
+    assert_int_equal(o->mesh->ntris, 1);
+    object_free(o);
+    /* elements other than vertex and face (assimp gives one of an unknown name no entries and reads its data as
+     * the next element's), before and after the vertices, ASCII and binary: the vertices stay where they were */
+    snprintf(full, sizeof full, "ply\nformat ascii 1.0\nelement junk 2\nproperty float a\nproperty list uchar int b\n"
+             "element material 1\nproperty uchar red\n%s", head + strlen("ply\nformat ascii 1.0\n"));
+    snprintf(full + strlen(full), sizeof full - strlen(full), "element face 1\nproperty list uchar int "
+             "vertex_indices\nelement edge 1\nproperty int vertex1\nend_header\n7 2 7 7\n8 0\n255\n%s3 0 1 2\n9\n",
+             verts);
+    o = load_ok(write_text("other.ply", full));
+    static const double tri[3][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    assert_int_equal(o->mesh->ntris, 1);
+    for (int j = 0; j < 3; j++)
+        for (int k = 0; k < 3; k++)
+            assert_near(o->mesh->pos[3 * o->mesh->tri[j] + k], tri[j][k], 0.0);
+    object_free(o);
+    unsigned char bin[512];
+    int hn = snprintf((char *)bin, sizeof bin, "ply\nformat binary_little_endian 1.0\nelement junk 1\nproperty "
+                      "double a\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                      "element face 1\nproperty list uchar int vertex_indices\nend_header\n");
+    size_t bn = (size_t)hn;
+    double junk = 1e300;
+    memcpy(bin + bn, &junk, 8), bn += 8;
+    for (int j = 0; j < 3; j++)
+        for (int k = 0; k < 3; k++) {
+            float f = (float)tri[j][k];
+            memcpy(bin + bn, &f, 4), bn += 4;
+        }
+    bin[bn++] = 3;
+    for (int32_t j = 0; j < 3; j++)
+        memcpy(bin + bn, &j, 4), bn += 4;
+    o = load_ok(write_file("otherb.ply", bin, bn));
+    assert_int_equal(o->mesh->ntris, 1);
+    for (int j = 0; j < 3; j++)
+        for (int k = 0; k < 3; k++)
+            assert_near(o->mesh->pos[3 * o->mesh->tri[j] + k], tri[j][k], 0.0);
+    object_free(o);
+    const char *made[] = {"layout.ply", "prop.ply", "end.ply", "other.ply", "otherb.ply"};
+    for (size_t i = 0; i < sizeof made / sizeof *made; i++)
+        unlink(temp_path(made[i]));
+}
+
 int main(void)
 {
     if (generic_register_builtins(NULL) != G_OK)
         return 1;
-    const struct CMUnitTest tests[] = {cmocka_unit_test(test_formats_agree), cmocka_unit_test(test_hostile_files)};
+    const struct CMUnitTest tests[] = {cmocka_unit_test(test_formats_agree), cmocka_unit_test(test_hostile_files),
+                                       cmocka_unit_test(test_ply_exporter_headers),
+                                       cmocka_unit_test(test_ply_hostile_layouts)};
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

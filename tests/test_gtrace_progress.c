@@ -1,6 +1,7 @@
 /* test_gtrace_progress.c - gtrace's progress estimate and crops: the tiles are taken in a fixed shuffled order,
  * so that the estimate of the time left follows the work even when the costly pixels are all at the bottom of
- * the image (where rendering in order misleads it); a crop renders pixels bit-identical to the full image's. */
+ * the image (where rendering in order misleads it); when progress lines are due (tests/scripts/gtrace_progress.sh
+ * checks the lines themselves); a crop renders pixels bit-identical to the full image's. */
 #include "generic/builtins.h"
 #include "test_gtrace_common.h"
 
@@ -77,6 +78,39 @@ static void test_estimate_follows_work(void **state)
     assert_near(progress_remaining(&p, 20.0), 0.0, 0.0);
 }
 
+/* Lines are due after a tenth of the work and the interval, both counted from the last line; the interval comes from
+ * GTRACE_PROGRESS_INTERVAL when that is a number in [0, 1e9]. */
+static void test_lines_due(void **state)
+{
+    (void)state;
+    Progress p = {.enabled = PROGRESS_LINES, .total = 1000, .done = 0, .start = 0.0, .last = 0.0, .interval = 10.0};
+    p.done = 99;
+    assert_false(progress_line_due(&p, 1e6)); /* less than a tenth, however long it took */
+    p.done = 100;
+    assert_false(progress_line_due(&p, 9.99)); /* a tenth, but too soon */
+    assert_true(progress_line_due(&p, 10.0));
+    p.line_done = 100, p.last = 10.0, p.done = 199;
+    assert_false(progress_line_due(&p, 100.0));
+    p.done = 200;
+    assert_true(progress_line_due(&p, 20.0));
+    p.total = 1001, p.done = 100, p.line_done = 0, p.last = 0.0; /* a tenth rounds up */
+    assert_false(progress_line_due(&p, 20.0));
+    p.done = 101;
+    assert_true(progress_line_due(&p, 20.0));
+
+    const char *values[] = {"0", "2.5", "1e9", "", "abc", "-1", "3s", "2e9", NULL};
+    const double expect[] = {0.0, 2.5, 1e9, PROGRESS_LINE_INTERVAL, PROGRESS_LINE_INTERVAL, PROGRESS_LINE_INTERVAL,
+                             PROGRESS_LINE_INTERVAL, PROGRESS_LINE_INTERVAL, PROGRESS_LINE_INTERVAL};
+    for (size_t i = 0; i < sizeof expect / sizeof *expect; i++) {
+        if (values[i])
+            setenv("GTRACE_PROGRESS_INTERVAL", values[i], 1);
+        else
+            unsetenv("GTRACE_PROGRESS_INTERVAL");
+        assert_near(progress_interval(), expect[i], 0.0);
+    }
+    assert_near(PROGRESS_LINE_INTERVAL, 10.0, 0.0);
+}
+
 /* A crop's pixels are those of the full render, bit for bit, whatever the region and the thread count. */
 static void test_crop_matches_full_render(void **state)
 {
@@ -137,6 +171,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_tile_order_is_fixed_permutation),
         cmocka_unit_test(test_estimate_follows_work),
+        cmocka_unit_test(test_lines_due),
         cmocka_unit_test(test_crop_matches_full_render),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -126,7 +126,9 @@ static void usage(FILE *f)
             "                    (gtrace merge --help)\n"
             "  gtrace types      the object, light and camera types, or with --markdown the reference of their\n"
             "                    parameters (gtrace types --help)\n"
-            "  -q, --quiet       no progress bar and no summary line\n"
+            "  -q, --quiet       no progress and no summary line (progress: a bar on a terminal; elsewhere a\n"
+            "                    line when a tenth of the work and 10 s have passed, GTRACE_PROGRESS_INTERVAL=S\n"
+            "                    for another interval)\n"
             "  -h, --help        this text\n"
             "  --version         the version\n"
             "Every option value may also be written --option=value.\n"
@@ -395,6 +397,10 @@ static int prepare(const Options *o, const GReaderOptions *trust, int check_outp
         rs->width = 1;
     if (rs->height < 1)
         rs->height = 1;
+    Camera *framed = &(*scene)->camera; /* a view fitted to the scene, fitted again to another image size */
+    if (framed->frame >= 0.0 && (rs->width != framed->width || rs->height != framed->height) &&
+        (rc = camera_frame(framed, framed->frame_lo, framed->frame_hi, rs->width, rs->height, err)) < 0)
+        return rc;
     if (o->spp > 0)
         rs->spp = o->spp;
     if (o->depth >= 0)

@@ -1,5 +1,5 @@
 /* camera.c - the cameras (look-at; pinhole and thin lens with a vertical field of view, orthographic with a
- * window height), pixel sample positions and the random number generator.
+ * window height), fitting the view to a box, pixel sample positions and the random number generator.
  *
  * Thin lens: the image position gives the pinhole direction d (unit distance along the view); the point in
  * focus is from + focus * d, and a ray from lens point from + o leaves in direction d - o / focus. A point at
@@ -7,6 +7,7 @@
  * on the image plane at unit distance (aperture * |1/z - 1/focus| * height / (2 tan(fov/2)) pixels). With
  * aperture 0 the offset is exactly 0 and the ray is the pinhole's, bit for bit. */
 #include "camera.h"
+#include "geometry/geometry.h"
 
 #include <math.h>
 
@@ -27,6 +28,43 @@ void camera_defaults(Camera *c)
     c->aperture = 0.0;
     c->focus_distance = 0.0;
     c->size = 2.0;
+    c->frame = -1.0;
+}
+
+int camera_frame(Camera *c, GVec3 lo, GVec3 hi, int width, int height, GError *err)
+{
+    if (!(lo.x <= hi.x && lo.y <= hi.y && lo.z <= hi.z) || !scene_coord_ok(lo) || !scene_coord_ok(hi))
+        return gerror_set(err, G_ERR_INVALID, "camera frame: no bounds to frame");
+    Camera v = *c;
+    camera_setup(&v, width, height); /* the view's direction, axes and half extents */
+    double grow = 1.0 + c->frame, t = INFINITY, nearest = INFINITY, reach = 0.0;
+    for (int i = 0; i < 8; i++) {
+        GVec3 p = gvec3((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
+        GVec3 rel = gvec3_sub(p, v.from);
+        double z = gvec3_dot(rel, v.forward), x = fabs(gvec3_dot(rel, v.right)), y = fabs(gvec3_dot(rel, v.upv));
+        /* the eye at from + t forward sees p when x <= (z - t) half_w / grow and y <= (z - t) half_h / grow */
+        t = fmin(t, z - grow * fmax(x / v.half_w, y / v.half_h));
+        nearest = fmin(nearest, z);
+        reach = fmax(reach, fmax(y, x * v.half_h / v.half_w)); /* orthographic: the half height the box needs */
+    }
+    GVec3 centre = gvec3_scale(gvec3_add(lo, hi), 0.5), size = gvec3_sub(hi, lo);
+    double pad = 1e-6 * (gvec3_length(size) + 1.0); /* no corner at the eye itself */
+    if (c->projection == CAMERA_ORTHOGRAPHIC) {
+        t = nearest - 0.01 * gvec3_length(size) - pad; /* the window stands before the box */
+        c->size = fmax(2.0 * grow * reach, 1e-9);
+    } else {
+        t = fmin(t, nearest - pad);
+    }
+    GVec3 from = gvec3_add(v.from, gvec3_scale(v.forward, t));
+    GVec3 at = gvec3_add(from, gvec3_scale(v.forward, fmax(gvec3_dot(gvec3_sub(centre, from), v.forward), pad)));
+    if (!scene_coord_ok(from) || !scene_coord_ok(at) || !isfinite(from.x + from.y + from.z))
+        return gerror_set(err, G_ERR_INVALID, "camera frame: the camera would stand beyond the scene's limit of %g "
+                          "(a narrower field of view than the scene allows)", SCENE_MAX_COORD);
+    c->from = from;
+    c->at = at;
+    c->frame_lo = lo;
+    c->frame_hi = hi;
+    return G_OK;
 }
 
 void camera_setup(Camera *c, int width, int height)

@@ -5,6 +5,7 @@
 #include "geometry/ray.h"
 #include "rng.h"
 
+#include <generic/error.h>
 #include <generic/material.h>
 #include <generic/vec.h>
 
@@ -29,6 +30,8 @@ typedef struct Camera {
     int bands;             /**< most wavelength groups a dispersive refraction splits into (0: the renderer's
                                 default, integrators/bands.h) */
     GMaterial *medium;     /**< the medium the camera is in (borrowed from the library; NULL: vacuum) */
+    double frame;          /**< >= 0: the view fitted to the scene's bounds with this margin (camera_frame); < 0: off */
+    GVec3 frame_lo, frame_hi; /**< the box camera_frame last fitted the view to */
     /* derived by camera_setup */
     GVec3 eye, right, upv, forward;
     double half_h, half_w; /**< tan of the half angles; orthographic: half the window in scene units */
@@ -38,6 +41,14 @@ typedef struct Camera {
 
 /** Default camera: looking down -z from (0,0,5), 40 degrees, 320x240, 1 spp, depth 8, the default bands. */
 void camera_defaults(Camera *c);
+/** Fits the view to the box lo..hi for a width x height image, keeping the view direction and up. A pinhole or
+ * thin-lens camera moves along its view line until every corner of the box lies within the field of view narrowed
+ * by 1 + c->frame (c->frame 0.1 leaves a tenth of the half view free around the box); an orthographic camera sets
+ * size so that the box fits its window narrowed so, and stands before the box. from is the new eye and at the point
+ * of the view line nearest the box's centre (a thin lens without focus_distance is focused there). Records lo, hi
+ * in frame_lo, frame_hi, so that it can be fitted again for another image size. G_ERR_INVALID when the box is
+ * empty or not finite, or the eye would lie beyond the scene's coordinate limit (SCENE_MAX_COORD). */
+int camera_frame(Camera *c, GVec3 lo, GVec3 hi, int width, int height, GError *err);
 /** Computes the camera frame for an image size. */
 void camera_setup(Camera *c, int width, int height);
 /** The primary ray through image position (x, y) in pixels (y down from the top), through the centre of a

@@ -1,6 +1,8 @@
 /* mesh.c - triangle meshes from Wavefront OBJ files (v, vt, vn, f; polygons become fans; negative indices
- * count from the end; usemtl and g start a new surface index) and the surface at a triangle hit. */
+ * count from the end; usemtl and g start a new surface index), other formats handed to their readers
+ * (mesh_format.c), and the surface at a triangle hit. */
 #include "geometry.h"
+#include "mesh_format.h"
 
 #include <generic/services/file.h>
 
@@ -213,13 +215,20 @@ static int parse_line(Loader *L, char *line)
     return G_OK; /* comments, o, s, mtllib and other statements are ignored */
 }
 
-int object_mesh_load(Object *o, const char *path, GError *err)
+static int mesh_load(Object *o, const char *path, GError *err)
 {
-    if (mesh_is_assimp_file(path))
-        return mesh_load_assimp(o, path, err);
     int fd = gfile_open_input(path, err); /* a regular file: never a FIFO or a device */
     if (fd < 0)
         return fd;
+    char what[64];
+    MeshFormat format = mesh_format_of(fd, path, what, sizeof what);
+    if (format == MESH_FORMAT_UNSUPPORTED) {
+        close(fd);
+        return gerror_set(err, G_ERR_UNSUPPORTED, "%s: %s, not a mesh format gtrace reads (it reads "
+                          MESH_FORMATS_READ ")", path, what);
+    }
+    if (format != MESH_FORMAT_OBJ)
+        return mesh_load_assimp(o, path, fd, format, err);
     FILE *f = fdopen(fd, "r");
     if (!f) {
         close(fd);
@@ -292,6 +301,14 @@ int object_mesh_load(Object *o, const char *path, GError *err)
     gmem_free(L.tuv.data);
     gmem_free(L.tn.data);
     gmem_free(L.tsurf.data);
+    return rc;
+}
+
+int object_mesh_load(Object *o, const char *path, GError *err)
+{
+    int rc = mesh_load(o, path, err);
+    if (rc < 0 && err && !err->param[0]) /* a scene file's reader places the message at the entry's file */
+        snprintf(err->param, sizeof err->param, "%s", "file");
     return rc;
 }
 

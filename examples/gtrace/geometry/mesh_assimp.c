@@ -1,9 +1,9 @@
-/* mesh_assimp.c - triangle meshes from PLY and glTF 2.0 (.ply, .gltf, .glb) through assimp: positions, normals
- * and the first (u,v) set where the file has them, the node transforms baked in, and the material index of
- * each assimp mesh as the surface index of its triangles. OBJ stays with mesh.c's own reader. */
-#include "object.h"
+/* mesh_assimp.c - triangle meshes from PLY, STL and glTF 2.0 through assimp: positions, normals and the first
+ * (u,v) set where the file has them, the node transforms baked in, and the material index of each assimp mesh as
+ * the surface index of its triangles. A PLY or STL file is checked whole first (mesh_ply.c, mesh_stl.c) and assimp
+ * reads the checked bytes. OBJ stays with mesh.c's own reader; mesh_format.c picks the reader. */
+#include "mesh_format.h"
 
-#include <generic/services/file.h>
 #include <generic/memory.h>
 
 #include <assimp/cimport.h>
@@ -15,197 +15,71 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <strings.h>
 #include <unistd.h>
 
-/* The OBJ reader's bound: its arrays hold at most 2^30 ints, 3 per triangle or vertex. */
-#define MESH_MAX_COUNT (0x40000000 / 3)
 /* Largest node depth walked (a hostile file may nest nodes deeply). */
 #define MESH_MAX_NODE_DEPTH 256
+/* Bytes kept free in front of a PLY file read whole: the header mesh_ply_check writes is at most one byte longer
+ * than the file's own, and goes there in front of the body. */
+#define MESH_HEADROOM 16
 
-static int ends_with(const char *s, const char *suffix)
+int mesh_assimp_reads_extension(const char *ext) { return aiIsExtensionSupported(ext) == AI_TRUE; }
+
+/* Reads the regular file open as fd whole into *buf (gmem_alloc), its bytes from MESH_HEADROOM on, NUL-terminated:
+ * *size of them (fewer than the file's size when it shrinks meanwhile), at most MESH_MAX_FILE_BYTES. */
+static int read_whole(const char *path, int fd, char **buf, size_t *size, GError *err)
 {
-    size_t n = strlen(s), k = strlen(suffix);
-    return n >= k && strcasecmp(s + n - k, suffix) == 0;
-}
-
-int mesh_is_assimp_file(const char *path)
-{
-    return ends_with(path, ".ply") || ends_with(path, ".gltf") || ends_with(path, ".glb");
-}
-
-/* assimp's PLY reader loops forever on some truncated headers, aborts on some truncated bodies and sizes its
- * arrays by the claimed counts, so a PLY file is checked completely first: a header of known lines only, element
- * counts the file can hold, and a body that has every value the header announces (ASCII numbers, or binary
- * bytes), face lists of at least 3 indices within the vertex count. */
-#define PLY_MAX_ELEMENTS 16
-#define PLY_MAX_PROPS 32
-
-typedef struct PlyProp {
-    int size, count_size; /* bytes of a value and, for a list, of its count (0: not a list) */
-    int is_index;         /* the face's vertex_indices / vertex_index list */
-} PlyProp;
-
-typedef struct PlyElem {
-    unsigned long long n;
-    int nprops, is_vertex, is_face;
-    PlyProp prop[PLY_MAX_PROPS];
-} PlyElem;
-
-static int ply_type_size(const char *t)
-{
-    static const char *names[] = {"char", "uchar", "int8", "uint8", "short", "ushort", "int16", "uint16",
-                                  "int", "uint", "int32", "uint32", "float", "float32", "double", "float64"};
-    static const int sizes[] = {1, 1, 1, 1, 2, 2, 2, 2, 4, 4, 4, 4, 4, 4, 8, 8};
-    for (size_t i = 0; i < sizeof sizes / sizeof *sizes; i++)
-        if (strcmp(t, names[i]) == 0)
-            return sizes[i];
-    return 0;
-}
-
-typedef struct PlyBody {
-    const char *p, *end;
-    int ascii, big_endian;
-} PlyBody;
-
-/* The next value as a double: an ASCII number or `size` binary bytes (integers read as unsigned when used as
- * counts or indices: the caller only needs them for those). -1 when the file ends or holds no number there. */
-static int ply_value(PlyBody *B, int size, double *out)
-{
-    if (B->ascii) {
-        while (B->p < B->end && (*B->p == ' ' || *B->p == '\t' || *B->p == '\n' || *B->p == '\r'))
-            B->p++;
-        char tok[64];
-        size_t k = 0;
-        while (B->p < B->end && k + 1 < sizeof tok && !(*B->p == ' ' || *B->p == '\t' || *B->p == '\n' || *B->p == '\r'))
-            tok[k++] = *B->p++;
-        tok[k] = '\0';
-        char *e;
-        *out = strtod(tok, &e);
-        return k > 0 && *e == '\0' ? 0 : -1;
-    }
-    if (B->end - B->p < size)
-        return -1;
-    unsigned long long v = 0;
-    for (int i = 0; i < size; i++)
-        v |= (unsigned long long)(unsigned char)B->p[B->big_endian ? i : size - 1 - i] << (8 * (size - 1 - i));
-    B->p += size;
-    *out = size <= 4 ? (double)(v & 0xffffffffull) : 0.0; /* counts and indices are at most 4 bytes */
-    return 0;
-}
-
-static int ply_check(const char *path, int fd, GError *err)
-{
-    off_t size = lseek(fd, 0, SEEK_END);
-    if (size < 0 || lseek(fd, 0, SEEK_SET) != 0)
+    off_t n = lseek(fd, 0, SEEK_END);
+    if (n < 0 || lseek(fd, 0, SEEK_SET) != 0)
         return gerror_set(err, G_ERR_IO, "%s: cannot read: %s", path, strerror(errno));
-    if ((unsigned long long)size > (unsigned long long)MESH_MAX_COUNT * 64)
-        return gerror_set(err, G_ERR_PARSE, "%s: larger than %lld bytes", path, (long long)MESH_MAX_COUNT * 64);
-    char *data = gmem_alloc((size_t)size + 1);
-    if (!data)
+    if ((unsigned long long)n > MESH_MAX_FILE_BYTES)
+        return gerror_set(err, G_ERR_PARSE, "%s: larger than %llu bytes", path, MESH_MAX_FILE_BYTES);
+    char *b = gmem_alloc((size_t)n + MESH_HEADROOM + 1);
+    if (!b)
         return gerror_set(err, G_ERR_NOMEM, "%s: out of memory", path);
-    ssize_t got = 0;
-    while (got < size) {
-        ssize_t r = read(fd, data + got, (size_t)(size - got));
+    size_t got = 0;
+    while (got < (size_t)n) {
+        ssize_t r = read(fd, b + MESH_HEADROOM + got, (size_t)n - got);
+        if (r < 0 && errno == EINTR)
+            continue;
         if (r <= 0)
             break;
-        got += r;
+        got += (size_t)r;
     }
-    data[got] = '\0';
-    int rc = G_OK, line = 1, ascii = -1, big = 0, nel = 0, header_done = 0;
-    PlyElem *el = gmem_calloc(PLY_MAX_ELEMENTS, sizeof *el);
-    char *s = data, *end = data + got;
-    if (!el)
-        rc = gerror_set(err, G_ERR_NOMEM, "%s: out of memory", path);
-    while (rc == G_OK && !header_done) {
-        char *nl = memchr(s, '\n', (size_t)(end - s));
-        if (!nl) {
-            rc = gerror_set(err, G_ERR_PARSE, "%s:%d: the header ends before end_header", path, line);
-            break;
+    b[MESH_HEADROOM + got] = '\0';
+    *buf = b;
+    *size = got;
+    return G_OK;
+}
+
+/* The scene assimp makes of a PLY or STL file: read whole, checked, and handed to assimp from memory (a PLY file
+ * as mesh_ply_check rewrote it: its header in front of the body), so that assimp reads the bytes that were checked. */
+static int import_checked(const char *path, int fd, MeshFormat format, unsigned flags, const struct aiScene **sc,
+                          GError *err)
+{
+    char *buf = NULL, *header = NULL;
+    size_t size = 0, hlen = 0, body = 0, body_len = 0;
+    int rc = read_whole(path, fd, &buf, &size, err);
+    if (rc != G_OK)
+        return rc;
+    char *data = buf + MESH_HEADROOM, *start = data;
+    size_t len = size;
+    if (format == MESH_FORMAT_PLY) {
+        rc = mesh_ply_check(path, data, size, &header, &hlen, &body, &body_len, err);
+        if (rc == G_OK && hlen > body + MESH_HEADROOM)
+            rc = gerror_set(err, G_ERR_PARSE, "%s: the PLY header would not fit", path);
+        if (rc == G_OK) {
+            start = data + body - hlen;
+            memcpy(start, header, hlen);
+            len = hlen + body_len;
         }
-        *nl = '\0';
-        size_t len = (size_t)(nl - s);
-        if (len > 0 && nl[-1] == '\r')
-            nl[-1] = '\0', len--;
-        if (strlen(s) != len)
-            rc = gerror_set(err, G_ERR_PARSE, "%s:%d: a NUL byte in the header", path, line);
-        char w[4][64];
-        int nw = rc == G_OK ? sscanf(s, "%63s %63s %63s %63s", w[0], w[1], w[2], w[3]) : 0;
-        if (rc != G_OK) {
-        } else if (line == 1) {
-            if (nw != 1 || strcmp(w[0], "ply") != 0)
-                rc = gerror_set(err, G_ERR_PARSE, "%s:1: not a PLY file (no \"ply\" line)", path);
-        } else if (nw >= 1 && (strcmp(w[0], "comment") == 0 || strcmp(w[0], "obj_info") == 0)) {
-        } else if (nw == 3 && strcmp(w[0], "format") == 0 && strcmp(w[2], "1.0") == 0 && ascii < 0 &&
-                   (strcmp(w[1], "ascii") == 0 || strcmp(w[1], "binary_little_endian") == 0 ||
-                    strcmp(w[1], "binary_big_endian") == 0)) {
-            ascii = strcmp(w[1], "ascii") == 0;
-            big = strcmp(w[1], "binary_big_endian") == 0;
-        } else if (nw == 3 && strcmp(w[0], "element") == 0 && nel < PLY_MAX_ELEMENTS) {
-            char *e;
-            errno = 0;
-            unsigned long long n = strtoull(w[2], &e, 10);
-            if (*e || errno || w[2][0] == '-')
-                rc = gerror_set(err, G_ERR_PARSE, "%s:%d: the element %s needs a count", path, line, w[1]);
-            else if (n > MESH_MAX_COUNT || n > (unsigned long long)got)
-                rc = gerror_set(err, G_ERR_PARSE,
-                                "%s:%d: element %s claims %llu entries, more than the %lld-byte file can hold "
-                                "(limit %d)", path, line, w[1], n, (long long)got, MESH_MAX_COUNT);
-            el[nel].n = n;
-            el[nel].is_vertex = strcmp(w[1], "vertex") == 0;
-            el[nel].is_face = strcmp(w[1], "face") == 0;
-            nel++;
-        } else if (nel > 0 && el[nel - 1].nprops < PLY_MAX_PROPS && nw == 3 && strcmp(w[0], "property") == 0 &&
-                   ply_type_size(w[1])) {
-            el[nel - 1].prop[el[nel - 1].nprops++] = (PlyProp){ply_type_size(w[1]), 0, 0};
-        } else if (nel > 0 && el[nel - 1].nprops < PLY_MAX_PROPS && strcmp(w[0], "property") == 0 && nw == 4 &&
-                   strcmp(w[1], "list") == 0 && ply_type_size(w[2]) && ply_type_size(w[2]) <= 4 &&
-                   sscanf(s, "%*s %*s %*s %63s %63s", w[0], w[1]) == 2 && ply_type_size(w[0])) {
-            el[nel - 1].prop[el[nel - 1].nprops++] = (PlyProp){
-                ply_type_size(w[0]), ply_type_size(w[2]),
-                el[nel - 1].is_face && (strcmp(w[1], "vertex_indices") == 0 || strcmp(w[1], "vertex_index") == 0)};
-        } else if (nw == 1 && strcmp(w[0], "end_header") == 0 && ascii >= 0) {
-            header_done = 1;
-        } else {
-            rc = gerror_set(err, G_ERR_PARSE, "%s:%d: not a PLY header line this reader accepts: %.60s", path,
-                            line, s);
-        }
-        s = nl + 1;
-        line++;
+    } else {
+        rc = mesh_stl_check(path, data, size, err);
     }
-    unsigned long long nverts = 0;
-    for (int e = 0; e < nel; e++)
-        if (el[e].is_vertex)
-            nverts = el[e].n;
-    PlyBody B = {s, end, ascii == 1, big};
-    for (int e = 0; e < nel && rc == G_OK; e++)
-        for (unsigned long long i = 0; i < el[e].n && rc == G_OK; i++)
-            for (int k = 0; k < el[e].nprops && rc == G_OK; k++) {
-                const PlyProp *pp = &el[e].prop[k];
-                double x, cnt = 1;
-                if (pp->count_size && ply_value(&B, pp->count_size, &cnt) < 0) {
-                    rc = gerror_set(err, G_ERR_PARSE, "%s: the data ends early or holds a non-number "
-                                    "(entry %llu of element %d)", path, i, e);
-                    break;
-                }
-                if (cnt < 0 || cnt != (long long)cnt || cnt > (double)(end - B.p) ||
-                    (pp->is_index && cnt < 3)) {
-                    rc = gerror_set(err, G_ERR_PARSE, "%s: entry %llu of element %d: a list of %g values", path,
-                                    i, e, cnt);
-                    break;
-                }
-                for (long long j = 0; j < (long long)cnt && rc == G_OK; j++) {
-                    if (ply_value(&B, pp->size, &x) < 0)
-                        rc = gerror_set(err, G_ERR_PARSE, "%s: the data ends early or holds a non-number "
-                                        "(entry %llu of element %d)", path, i, e);
-                    else if (pp->is_index && !(x >= 0 && x < (double)nverts))
-                        rc = gerror_set(err, G_ERR_PARSE, "%s: face %llu: vertex index %g out of range", path, i, x);
-                }
-                if (rc == G_OK && B.p > B.end)
-                    rc = gerror_set(err, G_ERR_PARSE, "%s: the data ends early", path);
-            }
-    gmem_free(el);
-    gmem_free(data);
+    if (rc == G_OK)
+        *sc = aiImportFileFromMemory(start, (unsigned)len, flags, format == MESH_FORMAT_PLY ? "ply" : "stl");
+    gmem_free(header);
+    gmem_free(buf);
     return rc;
 }
 
@@ -318,17 +192,18 @@ static int indices_ok(const struct aiScene *sc)
     return 1;
 }
 
-int mesh_load_assimp(Object *o, const char *path, GError *err)
+int mesh_load_assimp(Object *o, const char *path, int fd, MeshFormat format, GError *err)
 {
-    int fd = gfile_open_input(path, err); /* a regular file: never a FIFO or a device */
-    if (fd < 0)
-        return fd;
-    int rc = ends_with(path, ".ply") ? ply_check(path, fd, err) : G_OK;
+    unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_ValidateDataStructure;
+    const struct aiScene *sc = NULL;
+    int rc = G_OK;
+    if (format == MESH_FORMAT_GLTF)
+        sc = aiImportFile(path, flags); /* a .gltf may name buffer files beside it */
+    else
+        rc = import_checked(path, fd, format, flags, &sc, err);
     close(fd);
     if (rc != G_OK)
         return rc;
-    const struct aiScene *sc = aiImportFile(path, aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                                                      aiProcess_ValidateDataStructure);
     if (!sc)
         return gerror_set(err, G_ERR_PARSE, "%s: %s", path, aiGetErrorString());
     Counts cnt = {0, 0};

@@ -1,5 +1,5 @@
 /* object.h - the scene's objects: a shape in its own space, a transform to world space and a material
- * (constructors in scene.c, OBJ meshes in mesh.c, PLY and glTF in mesh_assimp.c). */
+ * (constructors in scene.c, OBJ meshes in mesh.c, PLY, STL and glTF in mesh_assimp.c). */
 #ifndef GTRACE_OBJECT_H
 #define GTRACE_OBJECT_H
 
@@ -27,7 +27,7 @@ typedef enum ShapeKind {
 /** Largest number of Embree instances a scene may expand to (every path through groups and instances). */
 #define GTRACE_MAX_INSTANCES 100000
 
-/** A triangle mesh read from an OBJ, PLY or glTF file. Positions are kept in object space (double) and world space
+/** A triangle mesh read from an OBJ, PLY, STL or glTF file. Positions are kept in object space (double) and world space
  * (the float buffer Embree reads); normals and (u,v) per corner, -1 where the file gave none. */
 typedef struct Mesh {
     int nverts, ntris, nuvs, nnormals;
@@ -83,15 +83,11 @@ int object_group(Object *o, Object *const *members, int n, GError *err);
 int object_instance(Object *o, Object *proto, GError *err);
 /** 1 for the kinds that are geometry themselves (not groups or instances). */
 int object_is_shape(const Object *o);
-/** Reads a mesh file into o: .ply, .gltf and .glb through assimp (mesh_load_assimp), anything else as OBJ
- * (v, vt, vn, f with polygons as fans; usemtl/g start new surface indices). */
+/** Reads a mesh file into o: Wavefront OBJ (v, vt, vn, f with polygons as fans; usemtl/g start new surface
+ * indices) here, PLY, STL and glTF 2.0 through assimp (mesh_format.h picks the reader by content, else by name).
+ * A format gtrace does not read (3DS, FBX, ...) fails with G_ERR_UNSUPPORTED. Errors name the file and the
+ * parameter "file" (GError.param), where a scene file's reader places them. */
 int object_mesh_load(Object *o, const char *path, GError *err);
-/** 1 when path names a format read through assimp (.ply, .gltf, .glb, any case). */
-int mesh_is_assimp_file(const char *path);
-/** Reads a PLY or glTF 2.0 file through assimp (mesh_assimp.c): positions, normals and the first (u,v) set
- * per vertex, node transforms baked in, each assimp mesh's material index as the surface index. Refuses
- * PLY element counts the file cannot hold and more than 2^30/3 vertices or triangles before copying. */
-int mesh_load_assimp(Object *o, const char *path, GError *err);
 /** Frees a mesh (NULL: no-op). */
 void mesh_free(Mesh *m);
 

@@ -27,6 +27,7 @@
  *                       medium M }
  *   camera thinlens   { ...pinhole's... aperture A focus_distance F }
  *   camera orthographic { from P at Q up U size S width W height H ... }  (no fov)
+ *   (any camera: frame MARGIN fits the view to the scene's bounds, camera_frame)
  * Spot cones are full opening angles in degrees (inner: full intensity, outer: none). cutoff: rays whose
  * weight in their pixel is below W are not traced (default 1e-3, 0 traces everything to the depth). */
 #include "integrators/bands.h"
@@ -427,9 +428,9 @@ static void destroy_light(void *p) { light_free(p); }
 /* ---- camera ---- */
 
 static const char *const camera_params[] = {
-    "from, at, up, fov, width, height, spp, depth, cutoff, exposure, medium, bands",
-    "from, at, up, fov, aperture, focus_distance, width, height, spp, depth, cutoff, exposure, medium, bands",
-    "from, at, up, size, width, height, spp, depth, cutoff, exposure, medium, bands",
+    "from, at, up, fov, frame, width, height, spp, depth, cutoff, exposure, medium, bands",
+    "from, at, up, fov, frame, aperture, focus_distance, width, height, spp, depth, cutoff, exposure, medium, bands",
+    "from, at, up, size, frame, width, height, spp, depth, cutoff, exposure, medium, bands",
 };
 
 static int parse_camera(GReader *r, const void *vtable, void **object, GError *err)
@@ -458,6 +459,8 @@ static int parse_camera(GReader *r, const void *vtable, void **object, GError *e
             rc = greader_number_in(r, 1e-9, 1e15, &c->focus_distance, err);
         else if (strcmp(key, "size") == 0 && proj == CAMERA_ORTHOGRAPHIC)
             rc = greader_number_in(r, 1e-9, 1e15, &c->size, err);
+        else if (strcmp(key, "frame") == 0)
+            rc = greader_number_in(r, 0.0, 10.0, &c->frame, err);
         else if (strcmp(key, "width") == 0)
             rc = (rc = greader_int(r, 1, 65536, &v, err)) < 0 ? rc : (c->width = (int)v, 0);
         else if (strcmp(key, "height") == 0)
@@ -718,6 +721,31 @@ int gtrace_register_types(GError *err)
 
 /* ---- scene from a library ---- */
 
+/* The camera's `frame`: the view fitted to the world bounds of the objects rendered directly (planes, unbounded,
+ * are left out) at the camera's own image size (main.c fits it again when the command line sets another). */
+static int frame_camera(Scene *s, const char *name, GError *err)
+{
+    GVec3 lo = gvec3(INFINITY, INFINITY, INFINITY), hi = gvec3(-INFINITY, -INFINITY, -INFINITY);
+    for (int i = 0; i < s->nobjects; i++) {
+        const Object *o = s->objects[i];
+        if (o->is_part || o->kind == SHAPE_PLANE)
+            continue;
+        GVec3 a, b;
+        object_world_bounds(o, &a, &b);
+        lo = gvec3(fmin(lo.x, a.x), fmin(lo.y, a.y), fmin(lo.z, a.z));
+        hi = gvec3(fmax(hi.x, b.x), fmax(hi.y, b.y), fmax(hi.z, b.z));
+    }
+    if (!(lo.x <= hi.x))
+        return gerror_set(err, G_ERR_INVALID, "%s: the camera's frame needs an object other than a plane", name);
+    int rc = camera_frame(&s->camera, lo, hi, s->camera.width, s->camera.height, err);
+    if (rc < 0 && err) {
+        char msg[sizeof err->message];
+        snprintf(msg, sizeof msg, "%s", err->message);
+        gerror_set(err, rc, "%s: %s", name, msg);
+    }
+    return rc;
+}
+
 int scene_from_library(GLibrary *lib, const char *name, Scene **out, GError *err)
 {
     *out = NULL;
@@ -779,6 +807,8 @@ int scene_from_library(GLibrary *lib, const char *name, Scene **out, GError *err
             s->camera = *c;
             s->have_camera = 1;
             s->medium = gmaterial_ref(c->medium);
+            if (c->frame >= 0.0)
+                rc = frame_camera(s, name, err);
         } else {
             rc = gerror_set(err, G_ERR_UNSUPPORTED, "%s: camera type '%s' is not one gtrace renders", name,
                             t ? t->name : "?");

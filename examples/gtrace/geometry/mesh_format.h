@@ -1,0 +1,67 @@
+/* mesh_format.h - which reader a mesh file goes to (mesh_format.c), the checks a PLY or STL file passes before
+ * assimp reads it (mesh_ply.c, mesh_stl.c) and the assimp reader (mesh_assimp.c). */
+#ifndef GTRACE_MESH_FORMAT_H
+#define GTRACE_MESH_FORMAT_H
+
+#include "object.h"
+
+#include <stddef.h>
+
+/** Most vertices or triangles of a mesh: the OBJ reader's arrays hold at most 2^30 ints, 3 per triangle or vertex. */
+#define MESH_MAX_COUNT (0x40000000 / 3)
+/** Largest PLY or STL file in bytes (4 GiB less 16): assimp reads the checked bytes from memory, with a 32-bit
+ * length. */
+#define MESH_MAX_FILE_BYTES 0xfffffff0ull
+/** The mesh formats gtrace reads, for messages. */
+#define MESH_FORMATS_READ "Wavefront OBJ (.obj), PLY (.ply), STL (.stl) and glTF 2.0 (.gltf, .glb)"
+
+/** The reader of a mesh file. */
+typedef enum MeshFormat {
+    MESH_FORMAT_OBJ,        /**< mesh.c */
+    MESH_FORMAT_PLY,        /**< mesh_ply.c's check, then assimp */
+    MESH_FORMAT_STL,        /**< mesh_stl.c's check, then assimp */
+    MESH_FORMAT_GLTF,       /**< assimp, from the file (a .gltf may name buffer files beside it) */
+    MESH_FORMAT_UNSUPPORTED /**< a format gtrace does not read */
+} MeshFormat;
+
+/** The reader for a file whose first n bytes are head, of size bytes in all, named path. The content decides where
+ * it is recognisable: a "ply" first line, a binary STL (84 + 50 bytes per triangle its header counts), "solid" at
+ * the start (an ASCII STL), the "glTF" magic, a 3DS main chunk; else the extension (any case): .ply, .stl, .gltf,
+ * .glb and .obj as named, .3ds and the other extensions assimp knows (mesh_assimp_reads_extension) unsupported; else
+ * a file with a NUL byte in its first line (binary data) is unsupported and any other is OBJ. For an unsupported
+ * file, what (of what_size bytes) names what it is ("a 3DS (3D Studio) file", "a .fbx file"). */
+MeshFormat mesh_format_detect(const unsigned char *head, size_t n, unsigned long long size, const char *path,
+                              char *what, size_t what_size);
+/** mesh_format_detect on the first bytes of the regular file open as fd (its offset is left where it was). */
+MeshFormat mesh_format_of(int fd, const char *path, char *what, size_t what_size);
+
+/** 1 when the word w (len bytes, no NUL needed) is a decimal number that assimp's number readers and strtod read
+ * whole and alike: a sign, digits with a point among or after them or a point and digits, an exponent with digits
+ * (no hexadecimal, no "nan" or "inf", no comma). */
+int mesh_decimal_number(const char *w, size_t len);
+/** 1 when assimp has a reader for files named with the extension ext (with its dot, any case). */
+int mesh_assimp_reads_extension(const char *ext);
+/** Reads a PLY, STL or glTF 2.0 file through assimp (mesh_assimp.c): positions, normals and the first (u,v) set per
+ * vertex, node transforms baked in, each assimp mesh's material index as the surface index. fd is the file, open,
+ * and is closed. A PLY or STL file is read whole (at most MESH_MAX_FILE_BYTES) and checked (mesh_ply_check,
+ * mesh_stl_check), and assimp reads those bytes; more than MESH_MAX_COUNT vertices or triangles are refused before
+ * they are copied. Errors name the file. */
+int mesh_load_assimp(Object *o, const char *path, int fd, MeshFormat format, GError *err);
+
+/** Checks a whole PLY file (data, size bytes, and one more byte that may be written) before assimp reads it: a
+ * "ply" line, one format line, element and property lines it understands, other header lines (comment, obj_info, a
+ * line such as Blender 2.4x's "Created by Blender3D 247 ...") skipped; element counts the file can hold, at most one
+ * vertex and one face (or tristrips) element; a body with every value the header announces (ASCII: numbers as
+ * assimp reads them), face lists of at least 3 indices within the vertex count. On success *header (gmem_alloc,
+ * *header_len bytes) is the header to hand assimp instead of the file's own, written from what was checked, with the
+ * vertex and face (tristrips) elements only, and the body to hand it is the *body_len bytes at offset *body of data,
+ * where their entries were rewritten (ASCII: one entry a line). Errors name the file (and the header line). */
+int mesh_ply_check(const char *path, char *data, size_t size, char **header, size_t *header_len, size_t *body,
+                   size_t *body_len, GError *err);
+/** Checks a whole STL file (data, size bytes) before assimp reads it: binary (an 80-byte header, a count of
+ * triangles, 50 bytes each, exactly filling the file) or ASCII (solid NAME, facets of "facet normal X Y Z",
+ * "outer loop", three "vertex X Y Z", "endloop", "endfacet", then "endsolid"; several solids may follow each
+ * other), with finite numbers and 1 to MESH_MAX_COUNT / 3 triangles. Errors name the file (ASCII: FILE:LINE:COL). */
+int mesh_stl_check(const char *path, const char *data, size_t size, GError *err);
+
+#endif
