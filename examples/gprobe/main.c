@@ -106,19 +106,6 @@ int no_operands(const CliParser *p)
     return 0;
 }
 
-int parse_int(const char *opt, const char *s, long lo, long hi, int *out)
-{
-    char *end;
-    errno = 0;
-    long v = strtol(s, &end, 10);
-    if (errno || end == s || *end || v < lo || v > hi) {
-        fprintf(stderr, "gprobe: %s expects a whole number in [%ld, %ld], got '%s'\n", opt, lo, hi, s);
-        return -1;
-    }
-    *out = (int)v;
-    return 0;
-}
-
 int parse_vec3(const char *opt, const char *s, double v[3])
 {
     const char *p = s;
@@ -166,6 +153,32 @@ int probe_args_option(ProbeArgs *a, int c, const char *v)
     }
 }
 
+int command_next_option(CliParser *p, ProbeArgs *a, void (*usage)(FILE *), int *status)
+{
+    for (;;) {
+        int c = cli_next(p);
+        if (c == -1)
+            return -1;
+        int r = a ? probe_args_option(a, c, optarg) : 0;
+        if (r > 0)
+            continue;
+        if (r < 0 || c == '?') {
+            *status = CLI_USAGE;
+            return COMMAND_EXIT;
+        }
+        if (c == 'h') {
+            usage(stdout);
+            *status = CLI_OK;
+            return COMMAND_EXIT;
+        }
+        if (c == CLI_VERSION) {
+            *status = cli_version("gprobe");
+            return COMMAND_EXIT;
+        }
+        return c;
+    }
+}
+
 GProbe *probe_args_load(const ProbeArgs *a)
 {
     if (!a->path) {
@@ -179,9 +192,8 @@ GProbe *probe_args_load(const ProbeArgs *a)
         return NULL;
     }
     if (gprobe_clamped_count(p) > 0 && !a->quiet)
-        fprintf(stderr, "gprobe: warning: %s: %ld pixels had negative, NaN or infinite values (set to 0) or values above "
-                "%g (clamped)\n", a->path,
-                gprobe_clamped_count(p), (double)GPROBE_MAX_RADIANCE);
+        fprintf(stderr, "gprobe: warning: %s: %ld pixels had negative, NaN or infinite values (set to 0) or values "
+                "above %g (clamped)\n", a->path, gprobe_clamped_count(p), (double)GPROBE_MAX_RADIANCE);
     if (a->rotate) {
         double R[9];
         gprobe_rotation_xyz(a->rot[0], a->rot[1], a->rot[2], R);
@@ -251,6 +263,15 @@ int text_close(TextOut *t, int ok)
     }
     gmem_free(t->path);
     return rc;
+}
+
+GProbeOptions probe_options(int fit_normals, int quiet)
+{
+    GProbeOptions opt = {0};
+    opt.fit_normals = fit_normals;
+    if (!quiet)
+        opt.progress = progress_print;
+    return opt;
 }
 
 void progress_print(void *user, const char *stage, double fraction)
