@@ -45,9 +45,9 @@ static int approx_args(int argc, char **argv, ApproxArgs *a)
     memset(a, 0, sizeof *a);
     CliParser cp;
     cli_begin(&cp, "gprobe approx", argc, argv, "hqt:n:o:", longopts);
-    int c, status;
-    while ((c = command_next_option(&cp, &a->probe, approx_usage, &status)) != -1) {
-        if (c == COMMAND_EXIT)
+    int c, status = CLI_OK;
+    while ((c = probe_next_option(&cp, &a->probe, approx_usage, &status)) != -1) {
+        if (c == CLI_EXIT)
             return status;
         switch (c) {
         case 't':
@@ -207,9 +207,9 @@ int cmd_irradiance(int argc, char **argv)
         CLI_COMMON_OPTIONS, PROBE_ARGS_OPTIONS, {"normal", required_argument, NULL, OPT_NORMAL}, {NULL, 0, NULL, 0}};
     CliParser cp;
     cli_begin(&cp, "gprobe irradiance", argc, argv, "hq", longopts);
-    int c, status;
-    while ((c = command_next_option(&cp, &pa, irradiance_usage, &status)) != -1) {
-        if (c == COMMAND_EXIT)
+    int c, status = CLI_OK;
+    while ((c = probe_next_option(&cp, &pa, irradiance_usage, &status)) != -1) {
+        if (c == CLI_EXIT)
             return status;
         if (c != OPT_NORMAL || parse_vec3("--normal", optarg, n) != 0)
             return CLI_USAGE;
@@ -264,9 +264,9 @@ int cmd_convert(int argc, char **argv)
         {"to", required_argument, NULL, OPT_TO}, {"size", required_argument, NULL, OPT_SIZE}, {NULL, 0, NULL, 0}};
     CliParser cp;
     cli_begin(&cp, "gprobe convert", argc, argv, "hqo:", longopts);
-    int c, status;
-    while ((c = command_next_option(&cp, &pa, convert_usage, &status)) != -1) {
-        if (c == COMMAND_EXIT)
+    int c, status = CLI_OK;
+    while ((c = probe_next_option(&cp, &pa, convert_usage, &status)) != -1) {
+        if (c == CLI_EXIT)
             return status;
         if (c == 'o') {
             out = optarg;

@@ -130,9 +130,9 @@ static int compare_args(int argc, char **argv, CompareArgs *a)
     *a = (CompareArgs){{NULL, NULL}, NULL, NULL, NULL, 0.1};
     CliParser cp;
     cli_begin(&cp, "gprobe compare", argc, argv, "h", longopts);
-    int c, status, nfiles;
-    while ((c = command_next_option(&cp, NULL, compare_usage, &status)) != -1) {
-        if (c == COMMAND_EXIT)
+    int c, status = CLI_OK, nfiles;
+    while ((c = cli_next_own(&cp, "gprobe", compare_usage, &status)) != -1) {
+        if (c == CLI_EXIT)
             return status;
         if (compare_option(a, c, optarg) != 0)
             return CLI_USAGE;

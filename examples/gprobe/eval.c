@@ -54,9 +54,9 @@ static int eval_args(int argc, char **argv, EvalArgs *a)
     eval_plan_init(&a->plan, counts, (int)(sizeof counts / sizeof *counts));
     CliParser cp;
     cli_begin(&cp, "gprobe eval", argc, argv, "hq", longopts);
-    int c, status;
-    while ((c = command_next_option(&cp, &a->probe, usage, &status)) != -1) {
-        if (c == COMMAND_EXIT)
+    int c, status = CLI_OK;
+    while ((c = probe_next_option(&cp, &a->probe, usage, &status)) != -1) {
+        if (c == CLI_EXIT)
             return status;
         int r = eval_plan_option(&a->plan, c, optarg);
         if (r < 0)

@@ -32,13 +32,10 @@ extern const char probe_args_help[];
 /** Loads (and rotates) the probe; prints the error or the clamping warning. NULL on failure. */
 GProbe *probe_args_load(const ProbeArgs *a);
 
-/** What command_next_option returns when the command must end at once (after --help, --version or a mistake). */
-enum { COMMAND_EXIT = -2 };
-/** The next option of a command's own, after those every command shares: -h/--help (prints usage(stdout)),
- * --version and, when a is not NULL, the probe options (--probe, --format, --rotate, -q, into a). Returns the
- * option's code (its value in optarg), -1 after the last option, or COMMAND_EXIT with *status the exit status:
- * CLI_OK after --help or --version, CLI_USAGE after a mistake (its message printed). */
-int command_next_option(CliParser *p, ProbeArgs *a, void (*usage)(FILE *), int *status);
+/** The next option of a command's own, after -h/--help (prints usage(stdout)), --version and the probe options
+ * (--probe, --format, --rotate, -q, into a): as cli_next_own, CLI_EXIT with *status CLI_USAGE after a bad value
+ * of a probe option too. */
+int probe_next_option(CliParser *p, ProbeArgs *a, void (*usage)(FILE *), int *status);
 
 /** Parses "x,y,z"; -1 with a message when malformed. */
 int parse_vec3(const char *opt, const char *s, double v[3]);

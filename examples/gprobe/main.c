@@ -2,12 +2,11 @@
  * (after Madsen & Laursen, "A Comparison of Techniques for Approximating Full Image-Based Lighting").
  * main.c: the command dispatch and the pieces every command shares. */
 #include "gprobe.h"
+#include "../common/startup.h"
 
 #include <generic/services/image.h>
 
-#include <generic/builtins.h>
 #include <generic/memory.h>
-#include <generic/plugin.h>
 
 #include <errno.h>
 #include <math.h>
@@ -44,38 +43,26 @@ static void usage(FILE *f)
 
 int main(int argc, char **argv)
 {
-    GError reg_err;
-    if (generic_register_builtins(&reg_err) != G_OK) {
-        fprintf(stderr, "%s\n", reg_err.message);
-        return 1;
-    }
-    if (gplugin_load_args(&argc, argv, &reg_err) != G_OK) {
-        fprintf(stderr, "gprobe: %s\n", reg_err.message);
-        return reg_err.code == G_ERR_INVALID ? 2 : 1;
-    }
+    int rc = startup("gprobe", &argc, argv);
+    if (rc >= 0)
+        return rc;
     if (argc < 2 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "--help") == 0) {
         usage(argc < 2 ? stderr : stdout);
         return argc < 2 ? 2 : 0;
     }
     if (strcmp(argv[1], "--version") == 0)
         return cli_version("gprobe");
-    const char *cmd = argv[1];
-    if (strcmp(cmd, "eval") == 0)
-        return cmd_eval(argc - 1, argv + 1);
-    if (strcmp(cmd, "approx") == 0)
-        return cmd_approx(argc - 1, argv + 1);
-    if (strcmp(cmd, "irradiance") == 0)
-        return cmd_irradiance(argc - 1, argv + 1);
-    if (strcmp(cmd, "convert") == 0)
-        return cmd_convert(argc - 1, argv + 1);
-    if (strcmp(cmd, "compare") == 0)
-        return cmd_compare(argc - 1, argv + 1);
-    if (strcmp(cmd, "sky") == 0)
-        return cmd_sky(argc - 1, argv + 1);
-    if (strcmp(cmd, "report") == 0)
-        return cmd_report(argc - 1, argv + 1);
+    static const struct {
+        const char *name;
+        int (*run)(int argc, char **argv);
+    } commands[] = {{"eval", cmd_eval},       {"approx", cmd_approx},   {"irradiance", cmd_irradiance},
+                    {"convert", cmd_convert}, {"compare", cmd_compare}, {"sky", cmd_sky},
+                    {"report", cmd_report}};
+    for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
+        if (strcmp(argv[1], commands[i].name) == 0)
+            return commands[i].run(argc - 1, argv + 1);
     fprintf(stderr, "gprobe: unknown command '%s' (expected eval, report, approx, irradiance, convert, compare or "
-            "sky)\n", cmd);
+            "sky)\n", argv[1]);
     return 2;
 }
 
@@ -153,30 +140,19 @@ int probe_args_option(ProbeArgs *a, int c, const char *v)
     }
 }
 
-int command_next_option(CliParser *p, ProbeArgs *a, void (*usage)(FILE *), int *status)
+int probe_next_option(CliParser *p, ProbeArgs *a, void (*usage)(FILE *), int *status)
 {
-    for (;;) {
-        int c = cli_next(p);
-        if (c == -1)
-            return -1;
-        int r = a ? probe_args_option(a, c, optarg) : 0;
-        if (r > 0)
-            continue;
-        if (r < 0 || c == '?') {
+    int c;
+    while ((c = cli_next_own(p, "gprobe", usage, status)) >= 0) {
+        int r = probe_args_option(a, c, optarg);
+        if (r == 0)
+            return c;
+        if (r < 0) {
             *status = CLI_USAGE;
-            return COMMAND_EXIT;
+            return CLI_EXIT;
         }
-        if (c == 'h') {
-            usage(stdout);
-            *status = CLI_OK;
-            return COMMAND_EXIT;
-        }
-        if (c == CLI_VERSION) {
-            *status = cli_version("gprobe");
-            return COMMAND_EXIT;
-        }
-        return c;
     }
+    return c;
 }
 
 GProbe *probe_args_load(const ProbeArgs *a)

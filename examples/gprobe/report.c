@@ -293,9 +293,9 @@ static int report_args(int argc, char **argv, ReportArgs *a)
     a->scale_pct = 25.0;
     CliParser cp;
     cli_begin(&cp, "gprobe report", argc, argv, "hqo:", longopts);
-    int c, status;
-    while ((c = command_next_option(&cp, &a->probe, report_usage, &status)) != -1) {
-        if (c == COMMAND_EXIT)
+    int c, status = CLI_OK;
+    while ((c = probe_next_option(&cp, &a->probe, report_usage, &status)) != -1) {
+        if (c == CLI_EXIT)
             return status;
         int r = eval_plan_option(&a->plan, c, optarg);
         if (r < 0 || (r == 0 && report_option(a, c, optarg) != 0))

@@ -67,12 +67,12 @@ static int sky_args(int argc, char **argv, SkyArgs *a)
     *a = (SkyArgs){NULL, 64, 40.0, 130.0, 3.0, 3.0, 1.0};
     CliParser cp;
     cli_begin(&cp, "gprobe sky", argc, argv, "ho:", longopts);
-    int c, status;
-    while ((c = command_next_option(&cp, NULL, sky_usage, &status)) != -1) {
+    int c, status = CLI_OK;
+    while ((c = cli_next_own(&cp, "gprobe", sky_usage, &status)) != -1) {
         const char *v = optarg;
         int rc;
         switch (c) {
-        case COMMAND_EXIT:
+        case CLI_EXIT:
             return status;
         case 'o':
             a->out = v;
