@@ -96,6 +96,8 @@ int approx_make(const GProbe *p, int method, int n, const GProbeOptions *opt, Ap
 void approx_irradiance(const Approx *a, const GVec3 *normals, int m, double *E);
 void approx_free(Approx *a);
 
+/* ---- what eval and report measure (measure.c) ---- */
+
 /** One result row of eval and report. */
 typedef struct Row {
     int method, count;
@@ -104,8 +106,6 @@ typedef struct Row {
 } Row;
 /** The CSV of rows: technique,count,unit,mean_rel,max_rel,mean_norm,max_norm,smape,seconds. */
 void rows_csv(FILE *f, const Row *rows, int n);
-
-/* ---- what eval and report measure (measure.c) ---- */
 
 /** The techniques, their sizes and the normals eval and report measure them at. */
 typedef struct EvalPlan {
