@@ -26,8 +26,9 @@ enum { CLI_VERSION = 0x100, CLI_FIRST_OWN = 0x101 };
 #define CLI_COMMON_OPTIONS {"help", no_argument, NULL, 'h'}, {"version", no_argument, NULL, CLI_VERSION}
 
 /** The exit-status paragraph of every --help. */
-#define CLI_EXIT_STATUS_HELP "Exit status: 0 on success, 1 when the work failed (an unreadable or bad input file, a failed\n" \
-                             "write), 2 for a usage error (an unknown option, a bad value, a missing argument).\n"
+#define CLI_EXIT_STATUS_HELP                                                                                       \
+    "Exit status: 0 on success, 1 when the work failed (an unreadable or bad input file, a failed\n"                  \
+    "write), 2 for a usage error (an unknown option, a bad value, a missing argument).\n"
 
 /** One parse of argv with a table of options; prog is the name in messages ("gtrace", "gmat plot"). */
 typedef struct CliParser {
@@ -112,6 +113,28 @@ static inline int cli_version(const char *prog)
 {
     printf("%s (libgeneric) %s\n", prog, GENERIC_VERSION);
     return CLI_OK;
+}
+
+/** What cli_next_own returns when the tool must end at once. */
+enum { CLI_EXIT = -2 };
+
+/** The next option of the tool's own, after those every tool handles alike: -h/--help (prints usage(stdout)),
+ * --version (cli_version(tool)) and a mistake (cli_next's message). Returns the option's code (its value in
+ * optarg), -1 after the last option, or CLI_EXIT with *status the exit status: CLI_OK after --help or --version,
+ * CLI_USAGE after a mistake. */
+static inline int cli_next_own(CliParser *p, const char *tool, void (*usage)(FILE *), int *status)
+{
+    int c = cli_next(p);
+    if (c == 'h') {
+        usage(stdout);
+        *status = CLI_OK;
+        return CLI_EXIT;
+    }
+    if (c == CLI_VERSION || c == '?') {
+        *status = c == '?' ? CLI_USAGE : cli_version(tool);
+        return CLI_EXIT;
+    }
+    return c;
 }
 
 /** Prints "PROG: MESSAGE (see PROG --help)" on stderr; returns CLI_USAGE. */

@@ -228,37 +228,33 @@ static void report_negative(Check *c)
     printf("%-44s %-11.3g %s\n", "least value from_rgb gives in [0,1]^3", least, "(information)");
 }
 
-int gcolor_check(int argc, char **argv)
+static void check_usage(FILE *f)
 {
-    const char *name = NULL;
-    double step = 0.0;
+    fprintf(f, "usage: gcolor check MODEL [--step NM] [--plugin FILE.so]...\n"
+               "Checks the colour model MODEL (built-in or from a module): a + black = a, white * a = a,\n"
+               "pow(a, 1) = a, brightness 0 exactly for black, rgb -> model -> rgb, white light on a white\n"
+               "surface, model -> nm -> model, the wavelength bands partitioning every value, each with its\n"
+               "worst error over a grid of test colours.\n"
+               "  --step NM     sample spacing in nm for a spectral model (0.1..400)\n"
+               "  -h, --help    this text\n"
+               "  --version     the version\n"
+               "Exit status: 0 when every property passes, 1 when one fails, 2 for a usage error (an unknown\n"
+               "option or model, a bad value).\n");
+}
+
+/* Reads the command line into *name and *step: -1 to go on, else the exit status to end with. */
+static int check_args(int argc, char **argv, const char **name, double *step)
+{
     static const struct option longopts[] = {CLI_COMMON_OPTIONS, {"step", required_argument, NULL, 's'}, {0}};
     CliParser p;
     cli_begin(&p, "gcolor check", argc, argv, "h", longopts);
-    int opt;
-    while ((opt = cli_next(&p)) != -1) {
-        if (opt == 'h') {
-            printf("usage: gcolor check MODEL [--step NM] [--plugin FILE.so]...\n"
-                   "Checks the colour model MODEL (built-in or from a module): a + black = a, white * a = a,\n"
-                   "pow(a, 1) = a, brightness 0 exactly for black, rgb -> model -> rgb, white light on a white\n"
-                   "surface, model -> nm -> model, the wavelength bands partitioning every value, each with its\n"
-                   "worst error over a grid of test colours.\n"
-                   "  --step NM     sample spacing in nm for a spectral model (0.1..400)\n"
-                   "  -h, --help    this text\n"
-                   "  --version     the version\n"
-                   "Exit status: 0 when every property passes, 1 when one fails, 2 for a usage error (an unknown\n"
-                   "option or model, a bad value).\n");
-            return CLI_OK;
-        } else if (opt == CLI_VERSION) {
-            return cli_version("gcolor");
-        } else if (opt == 's') {
-            if (cli_double("gcolor check", "--step", optarg, 0.1, 400.0, &step) != 0)
-                return CLI_USAGE;
-        } else {
+    int opt, n, status = CLI_OK;
+    while ((opt = cli_next_own(&p, "gcolor", check_usage, &status)) != -1) {
+        if (opt == CLI_EXIT)
+            return status;
+        if (opt != 's' || cli_double("gcolor check", "--step", optarg, 0.1, 400.0, step) != 0)
             return CLI_USAGE;
-        }
     }
-    int n;
     char **rest = cli_operands(&p, &n);
     if (n > 1)
         return cli_usage_error("gcolor check", "unexpected argument '%s'", rest[1]);
@@ -266,13 +262,47 @@ int gcolor_check(int argc, char **argv)
         fprintf(stderr, "gcolor check: no MODEL given (gcolor list shows the registered ones)\n");
         return CLI_USAGE;
     }
-    name = rest[0];
-    if (!gregistry_find(GKIND_COLORMODEL, name)) {
+    *name = rest[0];
+    if (!gregistry_find(GKIND_COLORMODEL, *name)) {
         char names[512];
         gregistry_names(GKIND_COLORMODEL, names, sizeof names);
-        fprintf(stderr, "gcolor check: unknown colour model '%s' (registered: %s)\n", name, names);
+        fprintf(stderr, "gcolor check: unknown colour model '%s' (registered: %s)\n", *name, names);
         return CLI_USAGE;
     }
+    return -1;
+}
+
+/* The checks of model m (named name) on c's test colours: the exit status. */
+static int check_model(Check *c, const char *name, const GColorModel *m)
+{
+    double one[3] = {1, 1, 1};
+    c->m = m;
+    if (gcolor_alloc(&c->tmp, m) || gcolor_alloc(&c->clamped, m) || gcolor_alloc(&c->black, m) ||
+        gcolor_alloc(&c->white_refl, m) || gcolor_alloc(&c->white_light, m) ||
+        gcolor_from_rgb(&c->white_refl, one, GCOLOR_REFLECTANCE) ||
+        gcolor_from_rgb(&c->white_light, one, GCOLOR_LIGHT) || make_tests(c)) {
+        fprintf(stderr, "gcolor check: %s: creating the test colours failed\n", name);
+        return 1;
+    }
+    printf("colour model %s (%d values, %d test colours)\n", name, m->nvalues, c->n);
+    report_negative(c);
+    check_identities(c);
+    check_brightness(c);
+    check_rgb_round_trip(c);
+    check_white(c);
+    check_nm_round_trip(c);
+    check_bands(c);
+    printf("%s: %s\n", name, c->failures ? "FAIL" : "PASS");
+    return c->failures ? 1 : 0;
+}
+
+int gcolor_check(int argc, char **argv)
+{
+    const char *name = NULL;
+    double step = 0.0;
+    int rc = check_args(argc, argv, &name, &step);
+    if (rc >= 0)
+        return rc;
     GError err;
     GColorModel *m = NULL;
     GColorModelOptions mo = {.step_nm = step};
@@ -282,27 +312,7 @@ int gcolor_check(int argc, char **argv)
     }
     static Check c; /* large: keep it off the stack */
     memset(&c, 0, sizeof c);
-    c.m = m;
-    double one[3] = {1, 1, 1};
-    int rc = 0;
-    if (gcolor_alloc(&c.tmp, m) || gcolor_alloc(&c.clamped, m) || gcolor_alloc(&c.black, m) ||
-        gcolor_alloc(&c.white_refl, m) || gcolor_alloc(&c.white_light, m) ||
-        gcolor_from_rgb(&c.white_refl, one, GCOLOR_REFLECTANCE) ||
-        gcolor_from_rgb(&c.white_light, one, GCOLOR_LIGHT) || make_tests(&c)) {
-        fprintf(stderr, "gcolor check: %s: creating the test colours failed\n", name);
-        rc = 1;
-    } else {
-        printf("colour model %s (%d values, %d test colours)\n", name, m->nvalues, c.n);
-        report_negative(&c);
-        check_identities(&c);
-        check_brightness(&c);
-        check_rgb_round_trip(&c);
-        check_white(&c);
-        check_nm_round_trip(&c);
-        check_bands(&c);
-        printf("%s: %s\n", name, c.failures ? "FAIL" : "PASS");
-        rc = c.failures ? 1 : 0;
-    }
+    rc = check_model(&c, name, m);
     for (int k = 0; k < c.n; k++)
         gcolor_free(&c.test[k]);
     gcolor_free(&c.tmp);

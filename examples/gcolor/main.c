@@ -3,10 +3,9 @@
  * runs the conformance checks (check.c). Built only on the public API. */
 #include "gcolor.h"
 #include "../common/cli.h"
+#include "../common/startup.h"
 
-#include <generic/builtins.h>
 #include <generic/color.h>
-#include <generic/plugin.h>
 #include <generic/registry.h>
 
 #include <math.h>
@@ -89,23 +88,21 @@ static int report_model(const char *model_name, const Sample *samples, int n)
     return failed;
 }
 
+static void list_usage(FILE *f)
+{
+    fprintf(f, "usage: gcolor list [--plugin FILE.so]...\nThe registered colour models, one per line.\n"
+               CLI_EXIT_STATUS_HELP);
+}
+
 /* `gcolor list`: the registered models, one per line. */
 static int list_models(int argc, char **argv)
 {
     static const struct option longopts[] = {CLI_COMMON_OPTIONS, {0}};
     CliParser p;
     cli_begin(&p, "gcolor list", argc, argv, "h", longopts);
-    int c, n;
-    while ((c = cli_next(&p)) != -1) {
-        if (c == 'h') {
-            printf("usage: gcolor list [--plugin FILE.so]...\nThe registered colour models, one per line.\n"
-                   CLI_EXIT_STATUS_HELP);
-            return CLI_OK;
-        }
-        if (c == CLI_VERSION)
-            return cli_version("gcolor");
-        return CLI_USAGE;
-    }
+    int c, n, status = CLI_OK;
+    if ((c = cli_next_own(&p, "gcolor", list_usage, &status)) != -1) /* list has no options of its own */
+        return c == CLI_EXIT ? status : CLI_USAGE;
     char **rest = cli_operands(&p, &n);
     if (n > 0)
         return cli_usage_error("gcolor list", "unexpected argument '%s'", rest[0]);
@@ -116,22 +113,39 @@ static int list_models(int argc, char **argv)
     return 0;
 }
 
-int main(int argc, char **argv)
+/* The report's colours: the six samples, then each --rgb; and --models. */
+typedef struct ReportArgs {
+    Sample samples[32];
+    char names[32][48];
+    int n;
+    const char *models;
+} ReportArgs;
+
+/* Adds --rgb R,G,B as a reflectance: 0, or the usage error's status (message printed). */
+static int add_rgb(ReportArgs *a, const char *v)
 {
-    GError reg_err;
-    if (generic_register_builtins(&reg_err) != G_OK) {
-        fprintf(stderr, "%s\n", reg_err.message);
-        return 1;
+    if (a->n == 32) {
+        fprintf(stderr, "gcolor: at most %d --rgb colours\n", 32 - 6);
+        return CLI_USAGE;
     }
-    if (gplugin_load_args(&argc, argv, &reg_err) != G_OK) {
-        fprintf(stderr, "gcolor: %s\n", reg_err.message);
-        return reg_err.code == G_ERR_INVALID ? 2 : 1;
+    Sample *s = &a->samples[a->n];
+    char tail;
+    if (sscanf(v, "%lf,%lf,%lf%c", &s->rgb[0], &s->rgb[1], &s->rgb[2], &tail) != 3 || !isfinite(s->rgb[0]) ||
+        !isfinite(s->rgb[1]) || !isfinite(s->rgb[2])) {
+        fprintf(stderr, "gcolor: --rgb expects three finite numbers R,G,B, got '%s'\n", v);
+        return CLI_USAGE;
     }
-    if (argc > 1 && strcmp(argv[1], "check") == 0)
-        return gcolor_check(argc - 1, argv + 1);
-    if (argc > 1 && strcmp(argv[1], "list") == 0)
-        return list_models(argc - 1, argv + 1);
-    Sample samples[32] = {
+    snprintf(a->names[a->n], sizeof a->names[a->n], "rgb %s", v);
+    s->name = a->names[a->n];
+    s->role = GCOLOR_REFLECTANCE;
+    a->n++;
+    return 0;
+}
+
+/* Reads the command line of the report into a: -1 to go on, else the exit status to end with. */
+static int report_args(int argc, char **argv, ReportArgs *a)
+{
+    static const Sample defaults[] = {
         {"white light", {1, 1, 1}, GCOLOR_LIGHT},
         {"grey 18%", {0.18, 0.18, 0.18}, GCOLOR_REFLECTANCE},
         {"red", {0.8, 0.1, 0.1}, GCOLOR_REFLECTANCE},
@@ -139,80 +153,95 @@ int main(int argc, char **argv)
         {"blue", {0.05, 0.1, 0.75}, GCOLOR_REFLECTANCE},
         {"skin", {0.61, 0.42, 0.33}, GCOLOR_REFLECTANCE},
     };
-    int n = 6;
-    const char *models = NULL;
-    static char names[32][48];
     static const struct option longopts[] = {
         CLI_COMMON_OPTIONS, {"models", required_argument, NULL, 'm'}, {"rgb", required_argument, NULL, 'r'}, {0}};
+    memset(a, 0, sizeof *a);
+    a->n = (int)(sizeof defaults / sizeof *defaults);
+    memcpy(a->samples, defaults, sizeof defaults);
     CliParser p;
     cli_begin(&p, "gcolor", argc, argv, "h", longopts);
-    int c;
-    while ((c = cli_next(&p)) != -1) {
-        if (c == 'h') {
-            usage(stdout);
-            return CLI_OK;
-        } else if (c == CLI_VERSION) {
-            return cli_version("gcolor");
-        } else if (c == 'm') {
-            models = optarg;
-        } else if (c == 'r') {
-            if (n == 32) {
-                fprintf(stderr, "gcolor: at most %d --rgb colours\n", 32 - 6);
-                return CLI_USAGE;
-            }
-            Sample *s = &samples[n];
-            char tail;
-            if (sscanf(optarg, "%lf,%lf,%lf%c", &s->rgb[0], &s->rgb[1], &s->rgb[2], &tail) != 3 ||
-                !isfinite(s->rgb[0]) || !isfinite(s->rgb[1]) || !isfinite(s->rgb[2])) {
-                fprintf(stderr, "gcolor: --rgb expects three finite numbers R,G,B, got '%s'\n", optarg);
-                return CLI_USAGE;
-            }
-            snprintf(names[n], sizeof names[n], "rgb %s", optarg);
-            s->name = names[n];
-            s->role = GCOLOR_REFLECTANCE;
-            n++;
-        } else {
+    int c, nrest, status = CLI_OK;
+    while ((c = cli_next_own(&p, "gcolor", usage, &status)) != -1) {
+        if (c == CLI_EXIT)
+            return status;
+        if (c == 'm')
+            a->models = optarg;
+        else if (c != 'r' || add_rgb(a, optarg) != 0)
             return CLI_USAGE;
-        }
     }
-    int nrest;
     char **rest = cli_operands(&p, &nrest);
     if (nrest > 0) {
         fprintf(stderr, "gcolor: unknown command or argument '%s' (expected list or check; see gcolor --help)\n",
                 rest[0]);
         return CLI_USAGE;
     }
-    if (models) { /* every name must be a registered model before anything is printed */
-        size_t len = strlen(models);
-        for (const char *p = models; p <= models + len;) {
-            size_t k = strcspn(p, ",");
-            char name[128];
-            snprintf(name, sizeof name, "%.*s", (int)(k < sizeof name ? k : sizeof name - 1), p);
-            if (!k || k >= sizeof name || !gregistry_find(GKIND_COLORMODEL, name)) {
-                char names[512];
-                gregistry_names(GKIND_COLORMODEL, names, sizeof names);
-                fprintf(stderr, "gcolor: --models: unknown colour model '%.*s' (registered: %s)\n", (int)k, p, names);
-                return 2;
-            }
-            p += k + 1;
+    return -1;
+}
+
+/* The next name of a comma-separated list at *p (at most 127 characters of it into name); *len gets its whole
+ * length and *p moves past its comma. */
+static void next_name(const char **p, char name[128], size_t *len)
+{
+    *len = strcspn(*p, ",");
+    snprintf(name, 128, "%.*s", (int)(*len < 128 ? *len : 127), *p);
+    *p += *len + 1;
+}
+
+/* 0 when every name of the list is a registered colour model, else 2 after a message naming the first that is not:
+ * checked before anything is printed. */
+static int models_known(const char *models)
+{
+    const char *end = models + strlen(models);
+    for (const char *p = models; p <= end;) {
+        const char *at = p;
+        char name[128];
+        size_t k;
+        next_name(&p, name, &k);
+        if (!k || k >= sizeof name || !gregistry_find(GKIND_COLORMODEL, name)) {
+            char names[512];
+            gregistry_names(GKIND_COLORMODEL, names, sizeof names);
+            fprintf(stderr, "gcolor: --models: unknown colour model '%.*s' (registered: %s)\n", (int)k, at, names);
+            return 2;
         }
     }
-    printf("Colour report: reflectances are seen under D65 (Y = 1); lights are their own spectrum.\n");
+    return 0;
+}
+
+/* The report in each model of the list (NULL: every registered one): 0, or 1 when a conversion failed. */
+static int report_models(const char *models, const Sample *samples, int n)
+{
     int failed = 0;
-    if (models) {
-        size_t len = strlen(models);
-        for (const char *p = models; p <= models + len;) {
-            size_t k = strcspn(p, ",");
-            char name[128];
-            snprintf(name, sizeof name, "%.*s", (int)k, p);
-            failed |= report_model(name, samples, n);
-            p += k + 1;
-        }
-    } else {
+    if (!models) {
         const GTypeInfo *types[64];
         int k = gregistry_list(GKIND_COLORMODEL, types, 64);
         for (int i = 0; i < k && i < 64; i++)
             failed |= report_model(types[i]->name, samples, n);
+        return failed;
+    }
+    const char *end = models + strlen(models);
+    for (const char *p = models; p <= end;) {
+        char name[128];
+        size_t k;
+        next_name(&p, name, &k);
+        failed |= report_model(name, samples, n);
     }
     return failed;
+}
+
+int main(int argc, char **argv)
+{
+    int rc = startup("gcolor", &argc, argv);
+    if (rc >= 0)
+        return rc;
+    if (argc > 1 && strcmp(argv[1], "check") == 0)
+        return gcolor_check(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "list") == 0)
+        return list_models(argc - 1, argv + 1);
+    static ReportArgs a;
+    if ((rc = report_args(argc, argv, &a)) >= 0)
+        return rc;
+    if (a.models && (rc = models_known(a.models)) != 0)
+        return rc;
+    printf("Colour report: reflectances are seen under D65 (Y = 1); lights are their own spectrum.\n");
+    return report_models(a.models, a.samples, a.n);
 }

@@ -186,6 +186,43 @@ static double energy_ratio(Checker *k, const GColor *c)
     return sw > 0.0 ? sa / sw : INFINITY;
 }
 
+/* The ratios of light leaving to light arriving from in: with shift, the power leaving in every sample per unit
+ * arriving in sample s (one ratio); else white light's, sample by sample, or, above 1 in a band of a model without
+ * matrices, a fold of re-radiation held to energy conservation over all bands (material_params.h; *folded set).
+ * Their number, or -1 when the material failed. */
+static int albedo_ratios(Checker *k, GVec3 in, int shift, int s, double ratio[1024], int *folded)
+{
+    GmatContext *ctx = k->ctx;
+    const GColorModel *m = ctx->model;
+    int nr = 0;
+    if (shift) {
+        gcolor_black(&k->a);
+        k->a.v[s] = 1.0f;
+        ctx->light = &k->a;
+        if (leaving(k, in, &k->b) != G_OK)
+            return -1;
+        double sum = 0.0;
+        for (int j = 0; j < m->nvalues; j++)
+            sum += k->b.v[j];
+        ratio[nr++] = sum;
+        return nr;
+    }
+    ctx->light = NULL; /* white light, not the one-sample light a re-radiating place before left */
+    if (leaving(k, in, &k->b) != G_OK)
+        return -1;
+    double most = 0.0;
+    for (int j = 0; j < m->nvalues && j < 1024; j++) {
+        ratio[nr++] = ctx->white.v[j] > 0.0f ? k->b.v[j] / ctx->white.v[j] : 0.0;
+        most = fmax(most, ratio[nr - 1]);
+    }
+    if (most > 1.0 + TOL_ALBEDO && !m->cls->from_reradiation) {
+        ratio[0] = energy_ratio(k, &k->b);
+        nr = 1;
+        *folded = 1;
+    }
+    return nr;
+}
+
 static void check_albedo(Checker *k)
 {
     GmatContext *ctx = k->ctx;
@@ -214,35 +251,9 @@ static void check_albedo(Checker *k)
             GVec3 in = gmat_direction(incidences[t], 30.0);
             for (int s = 0; s < (shift ? m->nvalues : 1) && !failed; s++) {
                 double ratio[1024];
-                int nr = 0;
-                if (shift) { /* the power leaving in every sample per unit arriving in sample s */
-                    gcolor_black(&k->a);
-                    k->a.v[s] = 1.0f;
-                    ctx->light = &k->a;
-                    failed = leaving(k, in, &k->b) != G_OK;
-                    double sum = 0.0;
-                    for (int j = 0; j < m->nvalues; j++)
-                        sum += k->b.v[j];
-                    ratio[nr++] = sum;
-                } else { /* white light (not the one-sample light a re-radiating place before left): sample by
-                          * sample */
-                    ctx->light = NULL;
-                    failed = leaving(k, in, &k->b) != G_OK;
-                    double most = 0.0;
-                    for (int j = 0; j < m->nvalues && j < 1024; j++) {
-                        ratio[nr++] = ctx->white.v[j] > 0.0f ? k->b.v[j] / ctx->white.v[j] : 0.0;
-                        most = fmax(most, ratio[nr - 1]);
-                    }
-                    /* above 1 in a band, in a model without matrices: a fold of re-radiation, held to energy
-                     * conservation over all bands (material_params.h) */
-                    if (!failed && most > 1.0 + TOL_ALBEDO && !m->cls->from_reradiation) {
-                        double e = energy_ratio(k, &k->b);
-                        nr = 0;
-                        ratio[nr++] = e;
-                        folded = 1;
-                    }
-                }
-                for (int j = 0; j < nr && !failed; j++)
+                int nr = albedo_ratios(k, in, shift, s, ratio, &folded);
+                failed = nr < 0;
+                for (int j = 0; j < nr; j++)
                     if (!(ratio[j] <= worst)) {
                         worst = isfinite(ratio[j]) ? ratio[j] : INFINITY;
                         at_theta = incidences[t], at_sample = shift ? s : j, at_place = p;
@@ -312,8 +323,8 @@ static void check_reciprocity(Checker *k)
     }
     k->ctx->place = NULL;
     char detail[160];
-    snprintf(detail, sizeof detail, "(|f(in,out) - f(out,in)| / max, %d random pairs; worst at theta %.1f / %.1f)", pairs,
-             wi, wo);
+    snprintf(detail, sizeof detail, "(|f(in,out) - f(out,in)| / max, %d random pairs; worst at theta %.1f / %.1f)",
+             pairs, wi, wo);
     report(k, "reciprocity", failed ? INFINITY : worst, TOL_RECIPROCITY, failed ? "(the material failed)" : detail);
 }
 
@@ -508,103 +519,120 @@ static double diff_colors(const GColor *a, const GColor *b)
     return isfinite(d) ? (big > 0.0 ? d / big : d) : INFINITY;
 }
 
-static void check_defaults(Checker *k)
+/* The NULL slots checked, named once (at the first place). */
+typedef struct Slots {
+    int checked;
+    char which[160];
+} Slots;
+
+static void note(Slots *s, int first, const char *name)
+{
+    if (!first)
+        return;
+    s->checked++;
+    size_t l = strlen(s->which);
+    snprintf(s->which + l, sizeof s->which - l, "%s%s", l ? ", " : "", name);
+}
+
+/* The colour slots left out at sp against their defaults (ambient = diffuse * illum, black, illum unchanged):
+ * the worst difference. */
+static double defaults_colours(Checker *k, GSurfPoint *sp, int first, Slots *slots)
 {
     GmatContext *ctx = k->ctx;
     const GMaterial *m = ctx->material;
     const GMaterialClass *cls = m->cls;
+    GVec3 in = gmat_direction(30, 10), out = gmat_direction(50, 200);
     double worst = 0.0;
-    int checked = 0;
-    char which[160] = "";
-#define NOTE(name)                                                                                            \
-    do {                                                                                                      \
-        checked++;                                                                                            \
-        size_t l_ = strlen(which);                                                                            \
-        snprintf(which + l_, sizeof which - l_, "%s%s", l_ ? ", " : "", name);                                \
-    } while (0)
+    if (!cls->ambient) {
+        note(slots, first, "ambient");
+        if (gmaterial_diffuse(m, sp, &k->a) || gcolor_mul(&k->a, &k->a, &ctx->white) ||
+            gmaterial_ambient(m, sp, &ctx->white, &k->b))
+            worst = INFINITY;
+        else
+            worst = fmax(worst, diff_colors(&k->a, &k->b));
+    }
+    gcolor_black(&k->a);
+    if (!cls->reflection) {
+        note(slots, first, "reflection");
+        worst = fmax(worst, gmaterial_reflection(m, sp, in, &ctx->white, out, &k->b) ? INFINITY
+                                                                                   : diff_colors(&k->a, &k->b));
+    }
+    if (!cls->refraction) {
+        note(slots, first, "refraction");
+        worst = fmax(worst, gmaterial_refraction(m, sp, gvec3_neg(in), &ctx->white, NULL, out, &k->b)
+                                ? INFINITY
+                                : diff_colors(&k->a, &k->b));
+    }
+    if (!cls->emission) {
+        note(slots, first, "emission");
+        worst = fmax(worst, gmaterial_emission(m, sp, out, &k->b) ? INFINITY : diff_colors(&k->a, &k->b));
+    }
+    if (!cls->diffuse) {
+        note(slots, first, "diffuse");
+        worst = fmax(worst, gmaterial_diffuse(m, sp, &k->b) ? INFINITY : diff_colors(&k->a, &k->b));
+    }
+    if (!cls->absorption) {
+        note(slots, first, "absorption");
+        worst = fmax(worst, gmaterial_absorption(m, sp, &ctx->white, 2.0, &k->b) ? INFINITY
+                                                                                : diff_colors(&ctx->white, &k->b));
+    }
+    return worst;
+}
+
+/* The other slots left out at sp against their defaults (index 1, no ideal directions, the geometric normal,
+ * opaque, not delta): the worst difference. */
+static double defaults_geometry(Checker *k, GSurfPoint *sp, int first, Slots *slots)
+{
+    const GMaterial *m = k->ctx->material;
+    const GMaterialClass *cls = m->cls;
+    GVec3 in = gmat_direction(30, 10), dir;
+    double worst = 0.0;
+    if (!cls->refraction_index) {
+        note(slots, first, "refraction_index");
+        double n = index_of(k, sp, m);
+        worst = fmax(worst, isfinite(n) ? fabs(n - 1.0) : INFINITY);
+    }
+    if (!cls->reflection_dir) {
+        note(slots, first, "reflection_dir");
+        worst = fmax(worst, gmaterial_reflection_dir(m, sp, gvec3_neg(in), &dir) == 0 ? 0.0 : INFINITY);
+    }
+    if (!cls->refraction_dir) {
+        note(slots, first, "refraction_dir");
+        worst = fmax(worst, gmaterial_refraction_dir(m, sp, gvec3_neg(in), NULL, &dir) == 0 ? 0.0 : INFINITY);
+    }
+    if (!cls->normal) {
+        note(slots, first, "normal");
+        GVec3 n;
+        worst = fmax(worst, gmaterial_normal(m, sp, &n) ? INFINITY : gvec3_length(gvec3_sub(n, sp->geometric_normal)));
+    }
+    if (!cls->opaque) {
+        note(slots, first, "opaque");
+        worst = fmax(worst, gmaterial_opaque(m, sp) == 1 ? 0.0 : INFINITY);
+    }
+    if (!cls->is_delta) {
+        note(slots, first, "is_delta");
+        worst = fmax(worst, gmaterial_is_delta(m, sp) == 0 ? 0.0 : INFINITY);
+    }
+    return worst;
+}
+
+/* Every slot a class leaves NULL must behave as material.h documents, at every place. */
+static void check_defaults(Checker *k)
+{
+    GmatContext *ctx = k->ctx;
+    Slots slots = {0, ""};
+    double worst = 0.0;
     for (int p = 0; p < NPLACES; p++) {
         ctx->place = &k->places[p];
         GSurfPoint sp;
         gmat_surface_point(ctx, &sp, 0);
-        GVec3 in = gmat_direction(30, 10), out = gmat_direction(50, 200), dir;
-        int first = p == 0;
-        if (!cls->ambient) { /* ambient = diffuse * illum */
-            if (first)
-                NOTE("ambient");
-            if (gmaterial_diffuse(m, &sp, &k->a) || gcolor_mul(&k->a, &k->a, &ctx->white) ||
-                gmaterial_ambient(m, &sp, &ctx->white, &k->b))
-                worst = INFINITY;
-            else
-                worst = fmax(worst, diff_colors(&k->a, &k->b));
-        }
-        gcolor_black(&k->a);
-        if (!cls->reflection) {
-            if (first)
-                NOTE("reflection");
-            worst = fmax(worst, gmaterial_reflection(m, &sp, in, &ctx->white, out, &k->b) ? INFINITY
-                                                                                        : diff_colors(&k->a, &k->b));
-        }
-        if (!cls->refraction) {
-            if (first)
-                NOTE("refraction");
-            worst = fmax(worst, gmaterial_refraction(m, &sp, gvec3_neg(in), &ctx->white, NULL, out, &k->b)
-                                    ? INFINITY
-                                    : diff_colors(&k->a, &k->b));
-        }
-        if (!cls->emission) {
-            if (first)
-                NOTE("emission");
-            worst = fmax(worst, gmaterial_emission(m, &sp, out, &k->b) ? INFINITY : diff_colors(&k->a, &k->b));
-        }
-        if (!cls->diffuse) {
-            if (first)
-                NOTE("diffuse");
-            worst = fmax(worst, gmaterial_diffuse(m, &sp, &k->b) ? INFINITY : diff_colors(&k->a, &k->b));
-        }
-        if (!cls->absorption) { /* illum unchanged */
-            if (first)
-                NOTE("absorption");
-            worst = fmax(worst, gmaterial_absorption(m, &sp, &ctx->white, 2.0, &k->b) ? INFINITY
-                                                                                     : diff_colors(&ctx->white, &k->b));
-        }
-        if (!cls->refraction_index) { /* 1 */
-            if (first)
-                NOTE("refraction_index");
-            double n = index_of(k, &sp, m);
-            worst = fmax(worst, isfinite(n) ? fabs(n - 1.0) : INFINITY);
-        }
-        if (!cls->reflection_dir) {
-            if (first)
-                NOTE("reflection_dir");
-            worst = fmax(worst, gmaterial_reflection_dir(m, &sp, gvec3_neg(in), &dir) == 0 ? 0.0 : INFINITY);
-        }
-        if (!cls->refraction_dir) {
-            if (first)
-                NOTE("refraction_dir");
-            worst = fmax(worst, gmaterial_refraction_dir(m, &sp, gvec3_neg(in), NULL, &dir) == 0 ? 0.0 : INFINITY);
-        }
-        if (!cls->normal) { /* the geometric normal */
-            if (first)
-                NOTE("normal");
-            GVec3 n;
-            worst = fmax(worst, gmaterial_normal(m, &sp, &n) ? INFINITY
-                                                              : gvec3_length(gvec3_sub(n, sp.geometric_normal)));
-        }
-        if (!cls->opaque) {
-            if (first)
-                NOTE("opaque");
-            worst = fmax(worst, gmaterial_opaque(m, &sp) == 1 ? 0.0 : INFINITY);
-        }
-        if (!cls->is_delta) { /* no */
-            if (first)
-                NOTE("is_delta");
-            worst = fmax(worst, gmaterial_is_delta(m, &sp) == 0 ? 0.0 : INFINITY);
-        }
+        worst = fmax(worst, defaults_colours(k, &sp, p == 0, &slots));
+        worst = fmax(worst, defaults_geometry(k, &sp, p == 0, &slots));
     }
-#undef NOTE
     ctx->place = NULL;
     char detail[240];
-    snprintf(detail, sizeof detail, "(NULL slots compared with material.h's defaults: %s)", checked ? which : "none");
+    snprintf(detail, sizeof detail, "(NULL slots compared with material.h's defaults: %s)",
+             slots.checked ? slots.which : "none");
     report(k, "defaults", worst, TOL_DEFAULT, detail);
 }
 

@@ -5,6 +5,8 @@
 #include <generic/material.h>
 #include <generic/reader.h>
 
+#include "../common/cli.h"
+
 /** Where on the surface a measurement is made (the geometry stays the xy plane with normal +z): the fields
  * texture generators read. */
 typedef struct GmatPlace {
@@ -128,5 +130,13 @@ int gmat_usage_error(const char *cmd, const char *fmt, const char *arg);
 /** Reads the whole string s as a finite number in [lo, hi] into *out: 0, or -1 (out untouched) when it is
  * not one. */
 int gmat_number(const char *s, double lo, double hi, double *out);
+/** The operands FILE and MATERIAL of subcommand cmd after its options (missing ones NULL): 0, or the usage
+ * error's status 2 (message printed) when there are more than `want`. */
+int gmat_operands(const char *cmd, const CliParser *p, int want, const char **file, const char **material);
+/** Reads file with the reader options base, computing in the colour model `colormodel` (NULL: the file's) with
+ * its samples `step` nm apart (0: the model's default), and skipping the entries of the kinds in skip_kinds
+ * (a bit per GKind, as GReaderOptions.skip_kinds). */
+int gmat_read(const char *file, const GReaderOptions *base, const char *colormodel, double step, unsigned skip_kinds,
+              GLibrary **lib, GError *err);
 
 #endif

@@ -98,13 +98,54 @@ static int write_pattern(const GMaterial *m, GScratch *sc, double nm, const doub
     return rc;
 }
 
-int gmat_laser(int argc, char **argv, const GReaderOptions *base)
+/* The command line of laser. */
+typedef struct LaserArgs {
+    const char *file, *name, *pattern, *colormodel;
+    double nm, el[MAX_ELEVATIONS], extent, size, step;
+    int nel;
+} LaserArgs;
+
+enum { OPT_WAVELENGTH = CLI_FIRST_OWN, OPT_ELEVATION, OPT_PATTERN, OPT_SIZE, OPT_EXTENT, OPT_COLORMODEL, OPT_STEP };
+
+/* Handles one of laser's own options: 0, or the usage error's status (message printed). */
+static int laser_option(LaserArgs *a, int c, const char *v)
 {
-    const char *file = NULL, *name = NULL, *pattern = NULL, *colormodel = NULL;
-    double nm = 532.0, el[MAX_ELEVATIONS] = {5, 20, 60}, extent = 1.5, size = 384, step = 0;
-    int nel = 3;
-    enum { OPT_WAVELENGTH = CLI_FIRST_OWN, OPT_ELEVATION, OPT_PATTERN, OPT_SIZE, OPT_EXTENT, OPT_COLORMODEL,
-           OPT_STEP };
+    switch (c) {
+    case OPT_WAVELENGTH:
+        if (gmat_number(v, 200, 2000, &a->nm))
+            return gmat_usage_error("laser", "--wavelength: '%s' is not a wavelength in nm", v);
+        return 0;
+    case OPT_ELEVATION:
+        if (elevations(v, a->el, &a->nel))
+            return gmat_usage_error("laser", "--elevation: '%s' is not a list of up to 16 angles in (0, 90] degrees",
+                                    v);
+        return 0;
+    case OPT_PATTERN:
+        a->pattern = v;
+        return 0;
+    case OPT_SIZE:
+        if (gmat_number(v, 64, 4096, &a->size) || a->size != floor(a->size))
+            return gmat_usage_error("laser", "--size: '%s' is not a whole number in 64..4096", v);
+        return 0;
+    case OPT_EXTENT:
+        if (gmat_number(v, 0.01, 100, &a->extent))
+            return gmat_usage_error("laser", "--extent: '%s' is not a number in 0.01..100", v);
+        return 0;
+    case OPT_COLORMODEL:
+        a->colormodel = v;
+        return 0;
+    case OPT_STEP:
+        if (gmat_number(v, 0.1, 400, &a->step))
+            return gmat_usage_error("laser", "--step: '%s' is not a spacing in nm", v);
+        return 0;
+    default:
+        return CLI_USAGE;
+    }
+}
+
+/* Reads the command line into a: -1 to go on, else the exit status to end with. */
+static int laser_args(int argc, char **argv, LaserArgs *a)
+{
     static const struct option longopts[] = {
         CLI_COMMON_OPTIONS,
         {"wavelength", required_argument, NULL, OPT_WAVELENGTH},
@@ -116,98 +157,36 @@ int gmat_laser(int argc, char **argv, const GReaderOptions *base)
         {"step", required_argument, NULL, OPT_STEP},
         {NULL, 0, NULL, 0},
     };
+    *a = (LaserArgs){.nm = 532.0, .el = {5, 20, 60}, .extent = 1.5, .size = 384, .nel = 3};
     CliParser p;
     cli_begin(&p, "gmat laser", argc - 1, argv + 1, "h", longopts);
-    int c;
-    while ((c = cli_next(&p)) != -1) {
-        const char *v = optarg;
-        switch (c) {
-        case 'h':
-            laser_usage(stdout);
-            return CLI_OK;
-        case CLI_VERSION:
-            return cli_version("gmat");
-        case OPT_WAVELENGTH:
-            if (gmat_number(v, 200, 2000, &nm))
-                return gmat_usage_error("laser", "--wavelength: '%s' is not a wavelength in nm", v);
-            break;
-        case OPT_ELEVATION:
-            if (elevations(v, el, &nel))
-                return gmat_usage_error("laser", "--elevation: '%s' is not a list of up to 16 angles in (0, 90] degrees",
-                                        v);
-            break;
-        case OPT_PATTERN:
-            pattern = v;
-            break;
-        case OPT_SIZE:
-            if (gmat_number(v, 64, 4096, &size) || size != floor(size))
-                return gmat_usage_error("laser", "--size: '%s' is not a whole number in 64..4096", v);
-            break;
-        case OPT_EXTENT:
-            if (gmat_number(v, 0.01, 100, &extent))
-                return gmat_usage_error("laser", "--extent: '%s' is not a number in 0.01..100", v);
-            break;
-        case OPT_COLORMODEL:
-            colormodel = v;
-            break;
-        case OPT_STEP:
-            if (gmat_number(v, 0.1, 400, &step))
-                return gmat_usage_error("laser", "--step: '%s' is not a spacing in nm", v);
-            break;
-        default:
-            return CLI_USAGE;
-        }
+    int c, rc, status = CLI_OK;
+    while ((c = cli_next_own(&p, "gmat", laser_usage, &status)) != -1) {
+        if (c == CLI_EXIT)
+            return status;
+        if ((rc = laser_option(a, c, optarg)) != 0)
+            return rc;
     }
-    int nrest;
-    char **rest = cli_operands(&p, &nrest);
-    if (nrest > 2)
-        return gmat_usage_error("laser", "unexpected argument '%s'", rest[2]);
-    file = nrest > 0 ? rest[0] : NULL;
-    name = nrest > 1 ? rest[1] : NULL;
-    if (!file || !name)
+    if ((rc = gmat_operands("laser", &p, 2, &a->file, &a->name)) != 0)
+        return rc;
+    if (!a->file || !a->name)
         return gmat_usage_error("laser", "%s", "FILE and MATERIAL are required");
-    GColorModelOptions mo = {.step_nm = step};
-    GReaderOptions opt = *base;
-    opt.colormodel = colormodel;
-    opt.colormodel_options = &mo;
-    GLibrary *lib;
+    return -1;
+}
+
+/* The table of the shares kept and shifted at each elevation: 0, or 1 with a message. */
+static int print_splits(const LaserArgs *a, const GMaterial *m, GScratch *sc)
+{
     GError err;
-    if (pattern && gimage_check_output(pattern, &err) != G_OK) { /* before any work */
-        fprintf(stderr, "gmat laser: %s\n", err.message);
-        return 1;
-    }
-    if (greader_load_file(file, &opt, &lib, &err) != G_OK) {
-        fprintf(stderr, "gmat laser: %s\n", err.message);
-        return 1;
-    }
-    GMaterial *m = glibrary_material(lib, name);
-    GScratch *sc = gscratch_create(0);
-    int rc = 0;
-    if (!m) {
-        fprintf(stderr, "gmat laser: %s defines no material named '%s' (gmat list %s shows them)\n", file, name,
-                file);
-        rc = 1;
-    } else if (!sc) {
-        fprintf(stderr, "gmat laser: out of memory\n");
-        rc = 1;
-    }
-    const GColorModel *model = glibrary_colormodel(lib);
-    if (rc == 0) {
-        printf("material %s (%s), colour model %s\n", name, gmaterial_name(m), gcolormodel_name(model));
-        if (model->nsamples == 0)
-            printf("(a non-spectral model: nothing can shift, a white beam is used; try --colormodel bispectral)\n");
-        printf("  elevation   kept     shifted   total    shifted light: dominant / peak\n");
-    }
-    for (int k = 0; k < nel && rc == 0; k++) {
+    for (int k = 0; k < a->nel; k++) {
         GFluorLaserSplit s;
-        if (gfluor_laser_split(m, sc, nm, el[k], NULL, &s, &err) != G_OK) {
+        if (gfluor_laser_split(m, sc, a->nm, a->el[k], NULL, &s, &err) != G_OK) {
             fprintf(stderr, "gmat laser: %s\n", err.message);
-            rc = 1;
-            break;
+            return 1;
         }
         if (k == 0 && s.wavelength > 0)
             printf("  (beam on the %g nm sample)\n", s.wavelength);
-        printf("  %6.1f    %7.4f  %7.4f  %7.4f", el[k], s.kept, s.shifted, s.kept + s.shifted);
+        printf("  %6.1f    %7.4f  %7.4f  %7.4f", a->el[k], s.kept, s.shifted, s.kept + s.shifted);
         if (s.shifted > 0 && s.dominant_nm > 0)
             printf("   %5.0f nm / %5.0f nm\n", s.dominant_nm, s.peak_nm);
         else if (s.shifted > 0)
@@ -215,9 +194,52 @@ int gmat_laser(int argc, char **argv, const GReaderOptions *base)
         else
             printf("   -\n");
     }
-    if (rc == 0 && pattern)
-        rc = write_pattern(m, sc, nm, el, nel, (int)size, extent, pattern);
+    return 0;
+}
+
+/* The experiment on the material of lib: the table, then the pattern when asked. The exit status. */
+static int laser_run(const LaserArgs *a, GLibrary *lib)
+{
+    GMaterial *m = glibrary_material(lib, a->name);
+    if (!m) {
+        fprintf(stderr, "gmat laser: %s defines no material named '%s' (gmat list %s shows them)\n", a->file, a->name,
+                a->file);
+        return 1;
+    }
+    GScratch *sc = gscratch_create(0);
+    if (!sc) {
+        fprintf(stderr, "gmat laser: out of memory\n");
+        return 1;
+    }
+    const GColorModel *model = glibrary_colormodel(lib);
+    printf("material %s (%s), colour model %s\n", a->name, gmaterial_name(m), gcolormodel_name(model));
+    if (model->nsamples == 0)
+        printf("(a non-spectral model: nothing can shift, a white beam is used; try --colormodel bispectral)\n");
+    printf("  elevation   kept     shifted   total    shifted light: dominant / peak\n");
+    int rc = print_splits(a, m, sc);
+    if (rc == 0 && a->pattern)
+        rc = write_pattern(m, sc, a->nm, a->el, a->nel, (int)a->size, a->extent, a->pattern);
     gscratch_destroy(sc);
+    return rc;
+}
+
+int gmat_laser(int argc, char **argv, const GReaderOptions *base)
+{
+    LaserArgs a;
+    int rc = laser_args(argc, argv, &a);
+    if (rc >= 0)
+        return rc;
+    GLibrary *lib;
+    GError err;
+    if (a.pattern && gimage_check_output(a.pattern, &err) != G_OK) { /* before any work */
+        fprintf(stderr, "gmat laser: %s\n", err.message);
+        return 1;
+    }
+    if (gmat_read(a.file, base, a.colormodel, a.step, 0, &lib, &err) != G_OK) {
+        fprintf(stderr, "gmat laser: %s\n", err.message);
+        return 1;
+    }
+    rc = laser_run(&a, lib);
     glibrary_destroy(lib);
     return rc;
 }

@@ -138,8 +138,8 @@ int gfluor_laser_split(const GMaterial *material, GScratch *scratch, double nm, 
         double w = sin(a) * 2.0 * M_PI * u * (1.0 / nt) * (2.0 * M_PI / np);
         for (int ib = 0; ib < np && rc == G_OK; ib++) {
             double beta = 2.0 * M_PI * (ib + 0.5) / np;
-            GVec3 o = gvec3_add(gvec3_scale(b.r, cos(a)),
-                                gvec3_add(gvec3_scale(b.t1, sin(a) * cos(beta)), gvec3_scale(b.t2, sin(a) * sin(beta))));
+            GVec3 o = gvec3_add(gvec3_scale(b.r, cos(a)), gvec3_add(gvec3_scale(b.t1, sin(a) * cos(beta)),
+                                                               gvec3_scale(b.t2, sin(a) * sin(beta))));
             if (o.z <= 0.0)
                 continue;
             rc = beam_reflect(&b, o);

@@ -48,8 +48,9 @@ typedef struct GFluorPattern {
  * below the sample's plane stay dark; a faint grid is printed on the target as in the paper. Measures the
  * lobe of kept light (its widths at half maximum through the brightest point). Free with
  * gfluor_pattern_free. */
-GENERIC_NODISCARD int gfluor_laser_pattern(const GMaterial *material, GScratch *scratch, double nm, double elevation_deg, int width,
-                         int height, double extent, GFluorPattern *out, GError *err);
+GENERIC_NODISCARD int gfluor_laser_pattern(const GMaterial *material, GScratch *scratch, double nm,
+                                           double elevation_deg, int width, int height, double extent,
+                                           GFluorPattern *out, GError *err);
 /** Frees a pattern's pixels; NULL and freed patterns are no-ops. */
 void gfluor_pattern_free(GFluorPattern *p);
 

@@ -11,11 +11,8 @@
  * common options: --colormodel NAME [--step NM], --plugin MODULE.so (repeatable), --allow-plugins, --confine DIR,
  * --help, --version */
 #include "gmat.h"
-#include "../common/cli.h"
+#include "../common/startup.h"
 #include "../common/type_doc.h"
-
-#include <generic/builtins.h>
-#include <generic/plugin.h>
 
 #include <math.h>
 #include <stdio.h>
@@ -37,7 +34,8 @@ static const char common[] = "Common options:\n"
                              "  --plugin FILE.so    load a module before reading (repeatable)\n"
                              "  --allow-plugins     let `plugin` statements of the files load modules (they run\n"
                              "                      native code; also GENERIC_ALLOW_PLUGINS=1)\n"
-                             "  --confine DIR       every file read (includes, modules, BFC, images) must lie under DIR\n"
+                             "  --confine DIR       every file read (includes, modules, BFC, images) must lie "
+                             "under DIR\n"
                              "  -h, --help          this text\n"
                              "  --version           the version\n"
                              "Every option value may also be written --option=value.\n"
@@ -61,75 +59,88 @@ static void usage_main(FILE *f)
             convention, common);
 }
 
-static void usage(const char *cmd, FILE *f)
+static void usage_eval(FILE *f)
 {
-    if (strcmp(cmd, "eval") == 0)
-        fprintf(f, "usage: gmat eval FILE MATERIAL --in THETA[,PHI] --out THETA[,PHI] [--spectrum] [options]\n\n"
-                   "Prints the light MATERIAL (a name defined in FILE) reflects towards --out.\n"
-                   "  --spectrum          also print the spectrum of the result\n\n%s\n%s",
-                convention, common);
-    else if (strcmp(cmd, "albedo") == 0)
-        fprintf(f, "usage: gmat albedo FILE MATERIAL --in THETA[,PHI] [--samples N] [options]\n\n"
-                   "Directional-hemispherical reflectance: the fraction of the light from --in reflected into\n"
-                   "the hemisphere, integrated numerically over N x 2N directions (midpoints in sin^2(theta)\n"
-                   "and phi, exact for Lambertian surfaces; default N = 256) plus the ideal specular ray.\n"
-                   "Printed as the luminance fraction and as the reflected colour.\n"
-                   "  --samples N         grid resolution (8..4096)\n\n%s\n%s",
-                convention, common);
-    else if (strcmp(cmd, "plot") == 0)
-        fprintf(f, "usage: gmat plot FILE MATERIAL --in THETA -o PLOT.png [--size PIXELS] [--log-radius] [--data TABLE]\n"
-                   "                 [options]\n\n"
-                   "Draws (with gnuplot) a polar plot of the light reflected in the plane of incidence: the lobe's\n"
-                   "radius is the reflected luminance for unit white light, the angle the outgoing direction from\n"
-                   "the normal (negative towards the light, which comes from the left: dashed line); the lobe is\n"
-                   "filled with the reflected colour of its brightest direction; an ideal specular ray is a line\n"
-                   "labelled with its reflectance. Both axes are labelled.\n"
-                   "  -o FILE             output image (any format OpenImageIO writes; PNG is 8-bit sRGB)\n"
-                   "  --size PIXELS       width (64..8192, default 512; height is 3/4 of it)\n"
-                   "  --log-radius        logarithmic radius over %d decades below the maximum (a diffuse lobe\n"
-                   "                      beside a specular one)\n"
-                   "  --data TABLE        also write the plotted values: angle, luminance, colour per line\n"
-                   "Needs gnuplot (Debian: gnuplot-nox).\n\n%s\n%s",
-                GMAT_PLOT_DECADES, convention, common);
-    else if (strcmp(cmd, "check") == 0)
-        fprintf(f, "usage: gmat check FILE MATERIAL [--samples N] [options]\n\n"
-                   "Measures the properties every material and texture tree must have and prints one line each:\n"
-                   "the worst figure, the tolerance, PASS or FAIL; the exit status is 1 when one fails.\n"
-                   "  albedo       reflected plus transmitted light <= incident (+0.01 for the quadrature) at\n"
-                   "               incidences 0..85 degrees, per sample of the colour model\n"
-                   "  reciprocity  f_r(in, out) = f_r(out, in) over random pairs (relative 1e-3)\n"
-                   "  finite       no failure, NaN, infinite or negative value from any colour method\n"
-                   "  snell        refraction_dir follows Snell's law both ways, total internal reflection\n"
-                   "               past the critical angle (materials that are not opaque)\n"
-                   "  defaults     methods the class leaves out behave as material.h documents\n"
-                   "  no-emission  a material flagged GMAT_NO_EMISSION gets black from its class's emission\n"
-                   "  opaque-flag  a material flagged GMAT_OPAQUE gets 1 from its class's opaque slot\n"
-                   "  geometric-normal  a material flagged GMAT_GEOMETRIC_NORMAL gets the geometric normal\n"
-                   "               from its class's normal slot\n"
-                   "  lambertian   a material flagged GMAT_LAMBERTIAN reflects diffuse * light * cos / pi\n"
-                   "               by its class's reflection slot (random pairs and lights, relative 1e-5)\n"
-                   "  diagonal     a material flagged GMAT_DIAGONAL passes on of any light, by its class's\n"
-                   "               reflection and refraction slots, what it passes on of white times the light\n"
-                   "               (random and ideal pairs, random lights, relative 1e-5)\n"
-                   "  no-uv        a material flagged GMAT_NO_UV gives the same values with and without\n"
-                   "               the surface's (u, v) and tangents\n"
-                   "Each is measured at several surface points (u, v, point and surface index vary).\n"
-                   "  --samples N         albedo grid N x 2N (8..4096, default 64)\n\n%s",
-                common);
-    else if (strcmp(cmd, "types") == 0)
-        fprintf(f, "usage: gmat types [colormodel|color|material|node|generator] [--markdown] [options]\n\n"
-                   "Prints the registered types of a kind (default: material, node and generator), one `KIND NAME`\n"
-                   "per line, including those the modules given with --plugin add.\n"
-                   "  --markdown          the reference page instead: per kind (default: all five) and type, its\n"
-                   "                      summary and the table of its parameters (docs/reference/types.md)\n\n%s",
-                common);
-    else if (strcmp(cmd, "list") == 0)
-        fprintf(f, "usage: gmat list FILE [options]\n\nLists the materials, texture nodes and generators FILE defines, with their\n"
-                   "types: `KIND NAME TYPE - summary` per line. FILE may be a gtrace scene: its object, light and\n"
-                   "camera entries are skipped.\n\n%s",
-                common);
-    else
-        usage_main(f);
+    fprintf(f, "usage: gmat eval FILE MATERIAL --in THETA[,PHI] --out THETA[,PHI] [--spectrum] [options]\n\n"
+               "Prints the light MATERIAL (a name defined in FILE) reflects towards --out.\n"
+               "  --spectrum          also print the spectrum of the result\n\n%s\n%s",
+            convention, common);
+}
+
+static void usage_albedo(FILE *f)
+{
+    fprintf(f, "usage: gmat albedo FILE MATERIAL --in THETA[,PHI] [--samples N] [options]\n\n"
+               "Directional-hemispherical reflectance: the fraction of the light from --in reflected into\n"
+               "the hemisphere, integrated numerically over N x 2N directions (midpoints in sin^2(theta)\n"
+               "and phi, exact for Lambertian surfaces; default N = 256) plus the ideal specular ray.\n"
+               "Printed as the luminance fraction and as the reflected colour.\n"
+               "  --samples N         grid resolution (8..4096)\n\n%s\n%s",
+            convention, common);
+}
+
+static void usage_plot(FILE *f)
+{
+    fprintf(f, "usage: gmat plot FILE MATERIAL --in THETA -o PLOT.png [--size PIXELS] [--log-radius] [--data TABLE]\n"
+               "                 [options]\n\n"
+               "Draws (with gnuplot) a polar plot of the light reflected in the plane of incidence: the lobe's\n"
+               "radius is the reflected luminance for unit white light, the angle the outgoing direction from\n"
+               "the normal (negative towards the light, which comes from the left: dashed line); the lobe is\n"
+               "filled with the reflected colour of its brightest direction; an ideal specular ray is a line\n"
+               "labelled with its reflectance. Both axes are labelled.\n"
+               "  -o FILE             output image (any format OpenImageIO writes; PNG is 8-bit sRGB)\n"
+               "  --size PIXELS       width (64..8192, default 512; height is 3/4 of it)\n"
+               "  --log-radius        logarithmic radius over %d decades below the maximum (a diffuse lobe\n"
+               "                      beside a specular one)\n"
+               "  --data TABLE        also write the plotted values: angle, luminance, colour per line\n"
+               "Needs gnuplot (Debian: gnuplot-nox).\n\n%s\n%s",
+            GMAT_PLOT_DECADES, convention, common);
+}
+
+static void usage_check(FILE *f)
+{
+    fprintf(f, "usage: gmat check FILE MATERIAL [--samples N] [options]\n\n"
+               "Measures the properties every material and texture tree must have and prints one line each:\n"
+               "the worst figure, the tolerance, PASS or FAIL; the exit status is 1 when one fails.\n"
+               "  albedo       reflected plus transmitted light <= incident (+0.01 for the quadrature) at\n"
+               "               incidences 0..85 degrees, per sample of the colour model\n"
+               "  reciprocity  f_r(in, out) = f_r(out, in) over random pairs (relative 1e-3)\n"
+               "  finite       no failure, NaN, infinite or negative value from any colour method\n"
+               "  snell        refraction_dir follows Snell's law both ways, total internal reflection\n"
+               "               past the critical angle (materials that are not opaque)\n"
+               "  defaults     methods the class leaves out behave as material.h documents\n"
+               "  no-emission  a material flagged GMAT_NO_EMISSION gets black from its class's emission\n"
+               "  opaque-flag  a material flagged GMAT_OPAQUE gets 1 from its class's opaque slot\n"
+               "  geometric-normal  a material flagged GMAT_GEOMETRIC_NORMAL gets the geometric normal\n"
+               "               from its class's normal slot\n"
+               "  lambertian   a material flagged GMAT_LAMBERTIAN reflects diffuse * light * cos / pi\n"
+               "               by its class's reflection slot (random pairs and lights, relative 1e-5)\n"
+               "  diagonal     a material flagged GMAT_DIAGONAL passes on of any light, by its class's\n"
+               "               reflection and refraction slots, what it passes on of white times the light\n"
+               "               (random and ideal pairs, random lights, relative 1e-5)\n"
+               "  no-uv        a material flagged GMAT_NO_UV gives the same values with and without\n"
+               "               the surface's (u, v) and tangents\n"
+               "Each is measured at several surface points (u, v, point and surface index vary).\n"
+               "  --samples N         albedo grid N x 2N (8..4096, default 64)\n\n%s",
+            common);
+}
+
+static void usage_types(FILE *f)
+{
+    fprintf(f, "usage: gmat types [colormodel|color|material|node|generator] [--markdown] [options]\n\n"
+               "Prints the registered types of a kind (default: material, node and generator), one `KIND NAME`\n"
+               "per line, including those the modules given with --plugin add.\n"
+               "  --markdown          the reference page instead: per kind (default: all five) and type, its\n"
+               "                      summary and the table of its parameters (docs/reference/types.md)\n\n%s",
+            common);
+}
+
+static void usage_list(FILE *f)
+{
+    fprintf(f, "usage: gmat list FILE [options]\n\n"
+               "Lists the materials, texture nodes and generators FILE defines, with their\n"
+               "types: `KIND NAME TYPE - summary` per line. FILE may be a gtrace scene: its object, light and\n"
+               "camera entries are skipped.\n\n%s",
+            common);
 }
 
 int gmat_usage_error(const char *cmd, const char *fmt, const char *arg)
@@ -150,6 +161,28 @@ int gmat_number(const char *s, double lo, double hi, double *out)
     return 0;
 }
 
+int gmat_operands(const char *cmd, const CliParser *p, int want, const char **file, const char **material)
+{
+    int n;
+    char **rest = cli_operands(p, &n);
+    if (n > want)
+        return gmat_usage_error(cmd, "unexpected argument '%s'", rest[want]);
+    *file = n > 0 ? rest[0] : NULL;
+    *material = n > 1 ? rest[1] : NULL;
+    return 0;
+}
+
+int gmat_read(const char *file, const GReaderOptions *base, const char *colormodel, double step, unsigned skip_kinds,
+              GLibrary **lib, GError *err)
+{
+    GColorModelOptions mo = {.step_nm = step};
+    GReaderOptions opt = *base;
+    opt.colormodel = colormodel;
+    opt.colormodel_options = &mo;
+    opt.skip_kinds = skip_kinds;
+    return greader_load_file(file, &opt, lib, err);
+}
+
 /* THETA or THETA,PHI in degrees. */
 static int angles(const char *s, double tmax, double *theta, double *phi)
 {
@@ -165,8 +198,16 @@ static int angles(const char *s, double tmax, double *theta, double *phi)
     return gmat_number(buf, 0.0, tmax, theta);
 }
 
+/* The commands main.c reads itself, with their help. */
+static const struct {
+    const char *name;
+    void (*usage)(FILE *f);
+} commands[] = {{"eval", usage_eval}, {"albedo", usage_albedo}, {"plot", usage_plot}, {"list", usage_list},
+                {"check", usage_check}};
+
 typedef struct Args {
     const char *cmd, *file, *material, *colormodel, *output, *data;
+    void (*usage)(FILE *f); /* the command's help */
     double step, in_t, in_p, out_t, out_p;
     int have_in, have_out, spectrum, samples, size, log_radius;
 } Args;
@@ -174,7 +215,79 @@ typedef struct Args {
 enum { OPT_IN = CLI_FIRST_OWN, OPT_OUT, OPT_SPECTRUM, OPT_COLORMODEL, OPT_STEP, OPT_SAMPLES, OPT_SIZE, OPT_LOG_RADIUS,
        OPT_DATA };
 
-/* 0 to go on, 1 after --help/--version (exit 0), or the usage error's status 2. */
+/* Handles one option of eval, albedo, plot, list and check: 0, or the usage error's status 2 (message printed). */
+static int gmat_option(Args *a, int c, const char *v)
+{
+    const char *cmd = a->cmd;
+    double n;
+    switch (c) {
+    case OPT_SPECTRUM:
+        a->spectrum = 1;
+        return 0;
+    case OPT_LOG_RADIUS:
+        a->log_radius = 1;
+        return 0;
+    case OPT_IN:
+        if (angles(v, 89.9, &a->in_t, &a->in_p))
+            return gmat_usage_error(cmd, "--in: '%s' is not THETA[,PHI] with 0 <= THETA < 90 degrees", v);
+        a->have_in = 1;
+        return 0;
+    case OPT_OUT:
+        if (angles(v, 90.0, &a->out_t, &a->out_p))
+            return gmat_usage_error(cmd, "--out: '%s' is not THETA[,PHI] with 0 <= THETA <= 90 degrees", v);
+        a->have_out = 1;
+        return 0;
+    case OPT_COLORMODEL:
+        a->colormodel = v;
+        return 0;
+    case OPT_STEP:
+        if (gmat_number(v, 0.1, 400.0, &a->step))
+            return gmat_usage_error(cmd, "--step: '%s' is not a spacing in nm (0.1..400)", v);
+        return 0;
+    case OPT_SAMPLES:
+        if (gmat_number(v, 8, 4096, &n) || n != floor(n))
+            return gmat_usage_error(cmd, "--samples: '%s' is not a whole number in 8..4096", v);
+        a->samples = (int)n;
+        return 0;
+    case OPT_SIZE:
+        if (gmat_number(v, 64, 8192, &n) || n != floor(n))
+            return gmat_usage_error(cmd, "--size: '%s' is not a whole number in 64..8192", v);
+        a->size = (int)n;
+        return 0;
+    case 'o':
+        a->output = v;
+        return 0;
+    case OPT_DATA:
+        a->data = v;
+        return 0;
+    default:
+        return CLI_USAGE;
+    }
+}
+
+/* What the command needs besides its options: FILE, MATERIAL (not for list), --in (eval, albedo, plot), --out
+ * (eval), -o (plot). 0, or the usage error's status 2. */
+static int required(const Args *a)
+{
+    const char *cmd = a->cmd;
+    if (!a->file)
+        return gmat_usage_error(cmd, "%s", "no FILE given");
+    if (strcmp(cmd, "list") == 0)
+        return 0;
+    if (!a->material)
+        return gmat_usage_error(cmd, "%s", "no MATERIAL given");
+    if (strcmp(cmd, "check") == 0)
+        return 0;
+    if (!a->have_in)
+        return gmat_usage_error(cmd, "%s", "--in THETA is required");
+    if (strcmp(cmd, "eval") == 0 && !a->have_out)
+        return gmat_usage_error(cmd, "%s", "--out THETA[,PHI] is required");
+    if (strcmp(cmd, "plot") == 0 && !a->output)
+        return gmat_usage_error(cmd, "%s", "-o PLOT.png is required");
+    return 0;
+}
+
+/* Reads the command line into a: -1 to go on, else the exit status to end with. */
 static int parse_args(int argc, char **argv, Args *a)
 {
     static const struct option longopts[] = {
@@ -191,87 +304,20 @@ static int parse_args(int argc, char **argv, Args *a)
         {"data", required_argument, NULL, OPT_DATA},
         {NULL, 0, NULL, 0},
     };
-    const char *cmd = a->cmd;
     char prog[32];
-    snprintf(prog, sizeof prog, "gmat %s", cmd);
+    snprintf(prog, sizeof prog, "gmat %s", a->cmd);
     CliParser p;
     cli_begin(&p, prog, argc - 1, argv + 1, "ho:", longopts);
-    int c;
-    double n;
-    while ((c = cli_next(&p)) != -1) {
-        const char *v = optarg;
-        switch (c) {
-        case 'h':
-            usage(cmd, stdout);
-            return 1;
-        case CLI_VERSION:
-            cli_version("gmat");
-            return 1;
-        case OPT_SPECTRUM:
-            a->spectrum = 1;
-            break;
-        case OPT_LOG_RADIUS:
-            a->log_radius = 1;
-            break;
-        case OPT_IN:
-            if (angles(v, 89.9, &a->in_t, &a->in_p))
-                return gmat_usage_error(cmd, "--in: '%s' is not THETA[,PHI] with 0 <= THETA < 90 degrees", v);
-            a->have_in = 1;
-            break;
-        case OPT_OUT:
-            if (angles(v, 90.0, &a->out_t, &a->out_p))
-                return gmat_usage_error(cmd, "--out: '%s' is not THETA[,PHI] with 0 <= THETA <= 90 degrees", v);
-            a->have_out = 1;
-            break;
-        case OPT_COLORMODEL:
-            a->colormodel = v;
-            break;
-        case OPT_STEP:
-            if (gmat_number(v, 0.1, 400.0, &a->step))
-                return gmat_usage_error(cmd, "--step: '%s' is not a spacing in nm (0.1..400)", v);
-            break;
-        case OPT_SAMPLES:
-            if (gmat_number(v, 8, 4096, &n) || n != floor(n))
-                return gmat_usage_error(cmd, "--samples: '%s' is not a whole number in 8..4096", v);
-            a->samples = (int)n;
-            break;
-        case OPT_SIZE:
-            if (gmat_number(v, 64, 8192, &n) || n != floor(n))
-                return gmat_usage_error(cmd, "--size: '%s' is not a whole number in 64..8192", v);
-            a->size = (int)n;
-            break;
-        case 'o':
-            a->output = v;
-            break;
-        case OPT_DATA:
-            a->data = v;
-            break;
-        default:
-            return CLI_USAGE;
-        }
+    int c, rc, status = CLI_OK;
+    while ((c = cli_next_own(&p, "gmat", a->usage, &status)) != -1) {
+        if (c == CLI_EXIT)
+            return status;
+        if ((rc = gmat_option(a, c, optarg)) != 0)
+            return rc;
     }
-    int nrest;
-    char **rest = cli_operands(&p, &nrest);
-    int want = strcmp(cmd, "list") == 0 ? 1 : 2;
-    if (nrest > want)
-        return gmat_usage_error(cmd, "unexpected argument '%s'", rest[want]);
-    a->file = nrest > 0 ? rest[0] : NULL;
-    a->material = nrest > 1 ? rest[1] : NULL;
-    if (!a->file)
-        return gmat_usage_error(cmd, "%s", "no FILE given");
-    if (strcmp(cmd, "list") == 0)
-        return 0;
-    if (!a->material)
-        return gmat_usage_error(cmd, "%s", "no MATERIAL given");
-    if (strcmp(cmd, "check") == 0)
-        return 0;
-    if (!a->have_in)
-        return gmat_usage_error(cmd, "%s", "--in THETA is required");
-    if (strcmp(cmd, "eval") == 0 && !a->have_out)
-        return gmat_usage_error(cmd, "%s", "--out THETA[,PHI] is required");
-    if (strcmp(cmd, "plot") == 0 && !a->output)
-        return gmat_usage_error(cmd, "%s", "-o PLOT.png is required");
-    return 0;
+    if ((rc = gmat_operands(a->cmd, &p, strcmp(a->cmd, "list") == 0 ? 1 : 2, &a->file, &a->material)) != 0)
+        return rc;
+    return required(a) != 0 ? CLI_USAGE : -1;
 }
 
 static int list(GLibrary *lib)
@@ -338,19 +384,13 @@ static int types(int argc, char **argv)
                                              {NULL, 0, NULL, 0}};
     CliParser p;
     cli_begin(&p, "gmat types", argc - 1, argv + 1, "h", longopts);
-    int c, n;
-    while ((c = cli_next(&p)) != -1) {
-        if (c == 'h') {
-            usage("types", stdout);
-            return CLI_OK;
-        }
-        if (c == CLI_VERSION)
-            return cli_version("gmat");
-        if (c == OPT_MARKDOWN) {
-            markdown = 1;
-            continue;
-        }
-        return CLI_USAGE;
+    int c, n, status = CLI_OK;
+    while ((c = cli_next_own(&p, "gmat", usage_types, &status)) != -1) {
+        if (c == CLI_EXIT)
+            return status;
+        if (c != OPT_MARKDOWN)
+            return CLI_USAGE;
+        markdown = 1;
     }
     char **rest = cli_operands(&p, &n);
     for (int i = 0; i < n; i++) {
@@ -374,6 +414,19 @@ static int types(int argc, char **argv)
             printf("%s %s\n", gkind_name(kind), t[i]->name);
     }
     return 0;
+}
+
+/* The kinds of a gtrace scene's entries, registered without types: gmat reads a scene's materials, and `gmat list`
+ * reads past its objects, lights and camera. */
+static GKind scene_kinds[3];
+
+static int register_scene_kinds(GError *err)
+{
+    static const GKindInfo kinds[3] = {{"object", NULL, 0}, {"light", NULL, 0}, {"camera", NULL, 0}};
+    int rc = G_OK;
+    for (int i = 0; i < 3 && rc == G_OK; i++)
+        rc = gregistry_add_kind(&kinds[i], &scene_kinds[i], err);
+    return rc;
 }
 
 static int run(const Args *a, GmatContext *ctx)
@@ -420,33 +473,60 @@ static int run(const Args *a, GmatContext *ctx)
     return 0;
 }
 
-/* The kinds of a gtrace scene's entries, registered without types: gmat reads a scene's materials, and `gmat list`
- * reads past its objects, lights and camera. */
-static GKind scene_kinds[3];
-
-static int register_scene_kinds(GError *err)
+/* The material `name` of lib, or NULL after a message that names the materials and nodes file defines. */
+static GMaterial *find_material(GLibrary *lib, const char *file, const char *name)
 {
-    static const GKindInfo kinds[3] = {{"object", NULL, 0}, {"light", NULL, 0}, {"camera", NULL, 0}};
-    int rc = G_OK;
-    for (int i = 0; i < 3 && rc == G_OK; i++)
-        rc = gregistry_add_kind(&kinds[i], &scene_kinds[i], err);
+    GMaterial *m = glibrary_material(lib, name);
+    if (m)
+        return m;
+    char names[1024] = "";
+    size_t used = 0;
+    for (int k = GKIND_MATERIAL; k <= GKIND_NODE; k++)
+        for (int i = 0; i < glibrary_count(lib, (GKind)k) && used + 1 < sizeof names; i++) {
+            const char *n;
+            glibrary_entry(lib, (GKind)k, i, &n, NULL);
+            if (n)
+                used += (size_t)snprintf(names + used, sizeof names - used, "%s%s", used ? ", " : "", n);
+        }
+    fprintf(stderr, "gmat: %s defines no material named '%s' (it defines: %s)\n", file, name, used ? names : "none");
+    return NULL;
+}
+
+/* Runs eval, albedo, plot or check on the material of lib: the exit status. */
+static int inspect(const Args *a, GLibrary *lib)
+{
+    GmatContext ctx = {.lib = lib, .model = glibrary_colormodel(lib), .material_name = a->material};
+    if (!(ctx.material = find_material(lib, a->file, a->material)))
+        return 1;
+    double one[3] = {1, 1, 1};
+    int rc;
+    ctx.scratch = gscratch_create(0);
+    if (!ctx.scratch || gcolor_alloc(&ctx.white, ctx.model) != G_OK || gcolor_alloc(&ctx.result, ctx.model) != G_OK ||
+        gcolor_from_rgb(&ctx.white, one, GCOLOR_LIGHT) != G_OK) {
+        fprintf(stderr, "gmat: out of memory\n");
+        rc = 1;
+    } else {
+        rc = run(a, &ctx);
+    }
+    gcolor_free(&ctx.white);
+    gcolor_free(&ctx.result);
+    gscratch_destroy(ctx.scratch);
     return rc;
 }
 
 int main(int argc, char **argv)
 {
-    GError reg_err;
-    if (generic_register_builtins(&reg_err) != G_OK || register_scene_kinds(&reg_err) != G_OK) {
-        fprintf(stderr, "%s\n", reg_err.message);
+    GError err;
+    if (register_scene_kinds(&err) != G_OK) {
+        fprintf(stderr, "%s\n", err.message);
         return 1;
     }
-    if (gplugin_load_args(&argc, argv, &reg_err) != G_OK) {
-        fprintf(stderr, "gmat: %s\n", reg_err.message);
-        return reg_err.code == G_ERR_INVALID ? 2 : 1;
-    }
+    int rc = startup("gmat", &argc, argv);
+    if (rc >= 0)
+        return rc;
     GReaderOptions trust = {0};
-    if (greader_options_args(&argc, argv, &trust, &reg_err) != G_OK) {
-        fprintf(stderr, "gmat: %s\n", reg_err.message);
+    if (greader_options_args(&argc, argv, &trust, &err) != G_OK) {
+        fprintf(stderr, "gmat: %s\n", err.message);
         return 2;
     }
     if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "help") == 0) {
@@ -462,61 +542,23 @@ int main(int argc, char **argv)
     if (strcmp(argv[1], "types") == 0)
         return types(argc, argv);
     Args a = {.cmd = argv[1]};
-    if (strcmp(a.cmd, "eval") && strcmp(a.cmd, "albedo") && strcmp(a.cmd, "plot") && strcmp(a.cmd, "list") &&
-        strcmp(a.cmd, "check"))
-        return gmat_usage_error(NULL,
-                                "unknown command '%s' (expected eval, albedo, plot, list, check, types, swatch or laser)",
-                                a.cmd);
-    int rc = parse_args(argc, argv, &a);
-    if (rc != 0)
-        return rc == 1 ? CLI_OK : rc;
-    GColorModelOptions mo = {.step_nm = a.step};
-    GReaderOptions opt = trust;
-    opt.colormodel = a.colormodel;
-    opt.colormodel_options = &mo;
-    if (strcmp(a.cmd, "list") == 0) /* a scene's entries that only gtrace knows */
-        opt.skip_kinds = 1u << scene_kinds[0] | 1u << scene_kinds[1] | 1u << scene_kinds[2];
-    GmatContext ctx = {0};
-    GError err;
-    if (greader_load_file(a.file, &opt, &ctx.lib, &err) != G_OK) {
+    for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
+        if (strcmp(a.cmd, commands[i].name) == 0)
+            a.usage = commands[i].usage;
+    if (!a.usage)
+        return gmat_usage_error(NULL, "unknown command '%s' (expected eval, albedo, plot, list, check, types, swatch "
+                                      "or laser)", a.cmd);
+    if ((rc = parse_args(argc, argv, &a)) >= 0)
+        return rc;
+    int listing = strcmp(a.cmd, "list") == 0;
+    /* a listed scene's entries that only gtrace knows are skipped */
+    unsigned skip = listing ? 1u << scene_kinds[0] | 1u << scene_kinds[1] | 1u << scene_kinds[2] : 0;
+    GLibrary *lib;
+    if (gmat_read(a.file, &trust, a.colormodel, a.step, skip, &lib, &err) != G_OK) {
         fprintf(stderr, "gmat: %s\n", err.message);
         return 1;
     }
-    ctx.model = glibrary_colormodel(ctx.lib);
-    if (strcmp(a.cmd, "list") == 0) {
-        rc = list(ctx.lib);
-        glibrary_destroy(ctx.lib);
-        return rc;
-    }
-    ctx.material_name = a.material;
-    ctx.material = glibrary_material(ctx.lib, a.material);
-    if (!ctx.material) {
-        char names[1024] = "";
-        size_t used = 0;
-        for (int k = GKIND_MATERIAL; k <= GKIND_NODE; k++)
-            for (int i = 0; i < glibrary_count(ctx.lib, (GKind)k) && used + 1 < sizeof names; i++) {
-                const char *n;
-                glibrary_entry(ctx.lib, (GKind)k, i, &n, NULL);
-                if (n)
-                    used += (size_t)snprintf(names + used, sizeof names - used, "%s%s", used ? ", " : "", n);
-            }
-        fprintf(stderr, "gmat: %s defines no material named '%s' (it defines: %s)\n", a.file, a.material,
-                used ? names : "none");
-        glibrary_destroy(ctx.lib);
-        return 1;
-    }
-    double one[3] = {1, 1, 1};
-    ctx.scratch = gscratch_create(0);
-    if (!ctx.scratch || gcolor_alloc(&ctx.white, ctx.model) != G_OK || gcolor_alloc(&ctx.result, ctx.model) != G_OK ||
-        gcolor_from_rgb(&ctx.white, one, GCOLOR_LIGHT) != G_OK) {
-        fprintf(stderr, "gmat: out of memory\n");
-        rc = 1;
-    } else {
-        rc = run(&a, &ctx);
-    }
-    gcolor_free(&ctx.white);
-    gcolor_free(&ctx.result);
-    gscratch_destroy(ctx.scratch);
-    glibrary_destroy(ctx.lib);
+    rc = listing ? list(lib) : inspect(&a, lib);
+    glibrary_destroy(lib);
     return rc;
 }

@@ -83,12 +83,19 @@ int gmat_relative_index(GSurfPoint *sp, GColor *out)
     return rc == G_OK ? gcolor_div(out, out, &to) : rc;
 }
 
+/* The relative index at sp into ri, a colour on sp's arena (released with the caller's mark). */
+static int scratch_relative_index(GSurfPoint *sp, GColor *ri)
+{
+    int rc = gcolor_scratch(ri, sp->model, sp->scratch);
+    return rc == G_OK ? gmat_relative_index(sp, ri) : rc;
+}
+
 double gmat_relative_eta(GSurfPoint *sp)
 {
     GScratchMark mark = gscratch_mark(sp->scratch);
     GColor ri;
     double eta = NAN;
-    if (gcolor_scratch(&ri, sp->model, sp->scratch) == G_OK && gmat_relative_index(sp, &ri) == G_OK)
+    if (scratch_relative_index(sp, &ri) == G_OK)
         eta = gsurfpoint_scalar_index(&ri);
     gscratch_release(sp->scratch, mark);
     return eta;
@@ -101,9 +108,7 @@ static int transmit(GmatContext *ctx, GVec3 in, GVec3 out)
     gmat_surface_point(ctx, &sp, 1);
     GScratchMark mark = gscratch_mark(ctx->scratch);
     GColor ri;
-    int rc = gcolor_scratch(&ri, ctx->model, ctx->scratch);
-    if (rc == G_OK)
-        rc = gmat_relative_index(&sp, &ri);
+    int rc = scratch_relative_index(&sp, &ri);
     if (rc == G_OK)
         rc = gmaterial_refraction(ctx->material, &sp, in, light(ctx), &ri, out, &ctx->result);
     gscratch_release(ctx->scratch, mark);
@@ -187,9 +192,7 @@ int gmat_ideal_refraction(GmatContext *ctx, GVec3 in, GVec3 *dir)
     gmat_surface_point(ctx, &up, 0);
     GScratchMark mark = gscratch_mark(ctx->scratch);
     GColor ri;
-    int rc = gcolor_scratch(&ri, ctx->model, ctx->scratch);
-    if (rc == G_OK)
-        rc = gmat_relative_index(&up, &ri);
+    int rc = scratch_relative_index(&up, &ri);
     int valid = rc == G_OK ? gmaterial_refraction_dir(ctx->material, &up, gvec3_neg(in), &ri, dir) : rc;
     gscratch_release(ctx->scratch, mark);
     if (valid != 1 || dir->z >= 0.0)

@@ -213,126 +213,127 @@ static int expect(SampleTest *t, int nsamples, int sub, const unsigned char *onl
     return 1;
 }
 
-static void run_test(SampleTest *t, int nsamples, unsigned long long seed, SampleResult *r)
+/* The sphere's bins of one test: the counts expected from pdf() and those drawn. */
+enum { NBINS = BINS_COS * BINS_PHI };
+typedef struct Bins {
+    double expected[NBINS];
+    int observed[NBINS];
+    unsigned char missed[NBINS]; /* the midpoints saw 0, a draw found the pdf positive */
+    int drawn_at_zero;           /* a direction drawn where pdf() is 0 */
+} Bins;
+
+/* A delta sample: weight * pdf must not exceed the value along the ideal ray (checked on the first NWEIGHT draws).
+ * 0, or -1 when the material failed (r->failed). */
+static int check_delta(SampleTest *t, int n, GVec3 in, int transmit, const GMaterialSample *s, SampleResult *r)
+{
+    r->delta++;
+    if (n >= NWEIGHT)
+        return 0;
+    if (value_of(t, in, transmit, &t->value) != G_OK) {
+        r->failed = 1, r->why = "reflection or refraction failed";
+        return -1;
+    }
+    r->weight_err = fmax(r->weight_err, color_excess(&t->weight, s->pdf, &t->value));
+    return 0;
+}
+
+/* Counts a non-delta direction in its bin; a draw into a bin expecting none is asked pdf() (every such draw: one
+ * in a clipped corner must not excuse the others). */
+static void bin_draw(SampleTest *t, GVec3 in, Bins *bins)
+{
+    double c = fmin(1.0, fmax(-1.0, in.z)), phi = atan2(in.y, in.x);
+    if (phi < 0.0)
+        phi += 2.0 * M_PI;
+    int i = (int)((c + 1.0) * 0.5 * BINS_COS), j = (int)(phi / (2.0 * M_PI) * BINS_PHI);
+    int b = (i < BINS_COS ? i : BINS_COS - 1) * BINS_PHI + (j < BINS_PHI ? j : BINS_PHI - 1);
+    bins->observed[b]++;
+    if (bins->expected[b] == 0.0) {
+        double pdf = pdf_at(t, in);
+        if (pdf > 0.0 && isfinite(pdf))
+            bins->missed[b] = 1;
+        else
+            bins->drawn_at_zero = 1;
+    }
+}
+
+/* A non-delta sample's weight against value / pdf() and its pdf against pdf() (directions on the ideal mirror ray
+ * excluded: reflection() is the ideal part there). 0, or -1 when the material failed (r->failed). */
+static int check_weight(SampleTest *t, GVec3 in, int transmit, const GMaterialSample *s, SampleResult *r)
+{
+    GVec3 n_s = gsurfpoint_normal(&t->sp);
+    double pdf = pdf_at(t, in);
+    double e = fabs(pdf - s->pdf) / fmax(pdf, s->pdf);
+    if (!transmit && gmaterial_is_mirror_pair(in, n_s, t->out))
+        return 0;
+    if (value_of(t, in, transmit, &t->value) != G_OK) {
+        r->failed = 1, r->why = "reflection or refraction failed";
+        return -1;
+    }
+    if (pdf > 0.0 && gcolor_scale(&t->value, &t->value, 1.0 / pdf) == G_OK)
+        e = fmax(e, color_diff(&t->weight, &t->value));
+    else
+        e = INFINITY;
+    r->weight_err = fmax(r->weight_err, isfinite(e) ? e : INFINITY);
+    return 0;
+}
+
+/* Draw n of a test: sample() with the next two numbers of *seed, checked and counted. 0, or -1 when the test
+ * failed (r->failed and r->why set). */
+static int draw(SampleTest *t, int n, unsigned long long *seed, int is_delta, Bins *bins, SampleResult *r)
 {
     GmatContext *ctx = t->ctx;
-    enum { NBINS = BINS_COS * BINS_PHI };
-    static double expected[NBINS];
-    static int observed[NBINS];
-    static unsigned char missed[NBINS]; /* the midpoints saw 0, a draw found the pdf positive */
-    memset(observed, 0, sizeof observed);
-    memset(missed, 0, sizeof missed);
-    memset(r, 0, sizeof *r);
-    int is_delta = gmaterial_is_delta(ctx->material, &t->sp);
-    if (is_delta < 0) {
-        r->failed = 1, r->why = "is_delta failed";
-        return;
+    double u1 = next_uniform(seed), u2 = next_uniform(seed);
+    GMaterialSample s;
+    GScratchMark mark = gscratch_mark(ctx->scratch);
+    int rc = gmaterial_sample(ctx->material, &t->sp, t->out, &t->ri, u1, u2, &s, &t->weight);
+    gscratch_release(ctx->scratch, mark);
+    if (rc < 0) {
+        r->failed = 1, r->why = "sample returned an error";
+        return -1;
     }
-    /* expected counts first, so that a draw into a bin expecting none is checked as it is drawn */
-    double integral = 0.0;
-    if (!expect(t, nsamples, SUB, NULL, expected, &integral)) {
-        r->failed = 1, r->why = "pdf is not finite and >= 0";
-        return;
+    if (rc == 0)
+        return 0;
+    double len = gvec3_length(s.in);
+    if (!isfinite(len) || fabs(len - 1.0) > 1e-4 || !(s.pdf > 0.0) || !isfinite(s.pdf) ||
+        !gcolor_is_finite(&t->weight)) {
+        r->failed = 1, r->why = "a sample with a direction that is not a unit vector, or a pdf or weight that is "
+                                "not finite and positive";
+        return -1;
     }
-    int drawn_at_zero = 0; /* a direction drawn where pdf() is 0 */
-    for (int n = 0; n < nsamples; n++) {
-        double u1 = next_uniform(&seed), u2 = next_uniform(&seed);
-        GMaterialSample s;
-        GScratchMark mark = gscratch_mark(ctx->scratch);
-        int rc = gmaterial_sample(ctx->material, &t->sp, t->out, &t->ri, u1, u2, &s, &t->weight);
-        gscratch_release(ctx->scratch, mark);
-        if (rc < 0) {
-            r->failed = 1, r->why = "sample returned an error";
-            return;
-        }
-        if (rc == 0)
-            continue;
-        double len = gvec3_length(s.in);
-        if (!isfinite(len) || fabs(len - 1.0) > 1e-4 || !(s.pdf > 0.0) || !isfinite(s.pdf) ||
-            !gcolor_is_finite(&t->weight)) {
-            r->failed = 1, r->why = "a sample with a direction that is not a unit vector, or a pdf or weight that is "
-                                    "not finite and positive";
-            return;
-        }
-        GVec3 in = gvec3_scale(s.in, 1.0 / len);
-        /* the value a renderer weighs the sample with is the one its flag names (path.c); on the other side of the
-         * geometric surface than the flag says (a mirror ray about a tilted shading normal that points into the
-         * surface) the sample must carry no light (material.h), else it leaks light through the surface */
-        int transmit = (s.flags & GSAMPLE_TRANSMIT) != 0;
-        if ((in.z * t->ng < 0.0) != transmit && !gcolor_is_black(&t->weight)) {
-            r->weight_err = INFINITY;
-            r->weight_why = "a reflected sample below the geometric surface, or a transmitted one above it, "
-                            "carries light";
-        }
-        if (s.flags & GSAMPLE_DELTA) {
-            r->delta++;
-            if (n < NWEIGHT) {
-                if (value_of(t, in, transmit, &t->value) != G_OK) {
-                    r->failed = 1, r->why = "reflection or refraction failed";
-                    return;
-                }
-                r->weight_err = fmax(r->weight_err, color_excess(&t->weight, s.pdf, &t->value));
-            }
-            continue;
-        }
-        r->nondelta++;
-        if (is_delta) {
-            r->integral_err = INFINITY; /* is_delta said every lobe is ideal */
-            r->why = "is_delta is 1 but a non-delta direction was drawn";
-        }
-        double c = fmin(1.0, fmax(-1.0, in.z)), phi = atan2(in.y, in.x);
-        if (phi < 0.0)
-            phi += 2.0 * M_PI;
-        int i = (int)((c + 1.0) * 0.5 * BINS_COS), j = (int)(phi / (2.0 * M_PI) * BINS_PHI);
-        int b = (i < BINS_COS ? i : BINS_COS - 1) * BINS_PHI + (j < BINS_PHI ? j : BINS_PHI - 1);
-        observed[b]++;
-        if (expected[b] == 0.0) { /* every such draw: one in a clipped corner must not excuse the others */
-            double pdf = pdf_at(t, in);
-            if (pdf > 0.0 && isfinite(pdf))
-                missed[b] = 1;
-            else
-                drawn_at_zero = 1;
-        }
-        if (n < NWEIGHT) {
-            GVec3 n_s = gsurfpoint_normal(&t->sp);
-            double pdf = pdf_at(t, in);
-            double e = fabs(pdf - s.pdf) / fmax(pdf, s.pdf);
-            if (!transmit && gmaterial_is_mirror_pair(in, n_s, t->out))
-                continue; /* reflection() returns the ideal part on the mirror ray */
-            if (value_of(t, in, transmit, &t->value) != G_OK) {
-                r->failed = 1, r->why = "reflection or refraction failed";
-                return;
-            }
-            if (pdf > 0.0 && gcolor_scale(&t->value, &t->value, 1.0 / pdf) == G_OK)
-                e = fmax(e, color_diff(&t->weight, &t->value));
-            else
-                e = INFINITY;
-            r->weight_err = fmax(r->weight_err, isfinite(e) ? e : INFINITY);
-        }
+    GVec3 in = gvec3_scale(s.in, 1.0 / len);
+    /* the value a renderer weighs the sample with is the one its flag names (path.c); on the other side of the
+     * geometric surface than the flag says (a mirror ray about a tilted shading normal that points into the
+     * surface) the sample must carry no light (material.h), else it leaks light through the surface */
+    int transmit = (s.flags & GSAMPLE_TRANSMIT) != 0;
+    if ((in.z * t->ng < 0.0) != transmit && !gcolor_is_black(&t->weight)) {
+        r->weight_err = INFINITY;
+        r->weight_why = "a reflected sample below the geometric surface, or a transmitted one above it, "
+                        "carries light";
     }
-    if (!expect(t, nsamples, SUB_EDGE, missed, expected, &integral)) { /* the bins the midpoints missed */
-        r->failed = 1, r->why = "pdf is not finite and >= 0";
-        return;
+    if (s.flags & GSAMPLE_DELTA)
+        return check_delta(t, n, in, transmit, &s, r);
+    r->nondelta++;
+    if (is_delta) {
+        r->integral_err = INFINITY; /* is_delta said every lobe is ideal */
+        r->why = "is_delta is 1 but a non-delta direction was drawn";
     }
-    double share = (double)r->nondelta / nsamples;
-    r->integral_err = fmax(r->integral_err, fabs(integral - share));
-    if (r->nondelta == 0)
-        return;
-    if (drawn_at_zero) {
-        r->log_p = INFINITY; /* drawn where the pdf says never */
-        return;
-    }
-    /* Pearson's chi2 over the bins, those expecting fewer than MIN_EXPECTED pooled */
+    bin_draw(t, in, bins);
+    return n < NWEIGHT ? check_weight(t, in, transmit, &s, r) : 0;
+}
+
+/* Pearson's chi2 over the bins, those expecting fewer than MIN_EXPECTED pooled, into r->log_p. */
+static void pearson(const Bins *bins, SampleResult *r)
+{
     double chi2 = 0.0, pool_e = 0.0;
     int pool_o = 0, dof = -1;
     for (int b = 0; b < NBINS; b++) {
-        if (expected[b] < MIN_EXPECTED) {
-            pool_e += expected[b];
-            pool_o += observed[b];
+        if (bins->expected[b] < MIN_EXPECTED) {
+            pool_e += bins->expected[b];
+            pool_o += bins->observed[b];
             continue;
         }
-        double d = observed[b] - expected[b];
-        chi2 += d * d / expected[b];
+        double d = bins->observed[b] - bins->expected[b];
+        chi2 += d * d / bins->expected[b];
         dof++;
     }
     if (pool_e >= MIN_EXPECTED) {
@@ -349,81 +350,138 @@ static void run_test(SampleTest *t, int nsamples, unsigned long long seed, Sampl
     r->log_p = p > 0.0 ? -log10(p) : INFINITY;
 }
 
+static void run_test(SampleTest *t, int nsamples, unsigned long long seed, SampleResult *r)
+{
+    static Bins bins;
+    memset(&bins, 0, sizeof bins);
+    memset(r, 0, sizeof *r);
+    int is_delta = gmaterial_is_delta(t->ctx->material, &t->sp);
+    if (is_delta < 0) {
+        r->failed = 1, r->why = "is_delta failed";
+        return;
+    }
+    /* expected counts first, so that a draw into a bin expecting none is checked as it is drawn */
+    double integral = 0.0;
+    if (!expect(t, nsamples, SUB, NULL, bins.expected, &integral)) {
+        r->failed = 1, r->why = "pdf is not finite and >= 0";
+        return;
+    }
+    for (int n = 0; n < nsamples; n++)
+        if (draw(t, n, &seed, is_delta, &bins, r) != 0)
+            return;
+    if (!expect(t, nsamples, SUB_EDGE, bins.missed, bins.expected, &integral)) { /* the bins the midpoints missed */
+        r->failed = 1, r->why = "pdf is not finite and >= 0";
+        return;
+    }
+    double share = (double)r->nondelta / nsamples;
+    r->integral_err = fmax(r->integral_err, fabs(integral - share));
+    if (r->nondelta == 0)
+        return;
+    if (bins.drawn_at_zero)
+        r->log_p = INFINITY; /* drawn where the pdf says never */
+    else
+        pearson(&bins, r);
+}
+
+/* The worst of every test, where each was seen (the signed incidence theta_out), and the draws counted. */
+typedef struct Summary {
+    int failed, tests;
+    double worst_p, worst_int, worst_w, at_p, at_int, at_w;
+    const char *why, *weight_why;
+    long delta, nondelta;
+} Summary;
+
+/* Adds a test's result at the signed incidence inc; 0, or -1 when the material failed (sum->failed). */
+static int summarise(Summary *sum, const SampleResult *r, double inc)
+{
+    sum->tests++;
+    if (r->failed) {
+        sum->failed = 1, sum->why = r->why;
+        return -1;
+    }
+    if (r->why && !sum->why)
+        sum->why = r->why;
+    if (r->weight_why && !sum->weight_why)
+        sum->weight_why = r->weight_why;
+    sum->delta += r->delta;
+    sum->nondelta += r->nondelta;
+    if (!(r->log_p <= sum->worst_p))
+        sum->worst_p = r->log_p, sum->at_p = inc;
+    if (!(r->integral_err <= sum->worst_int))
+        sum->worst_int = r->integral_err, sum->at_int = inc;
+    if (!(r->weight_err <= sum->worst_w))
+        sum->worst_w = r->weight_err, sum->at_w = inc;
+    return 0;
+}
+
+/* The tests at place number pi, from outside and (unless opaque there) from inside, one per incidence. */
+static void test_place(SampleTest *t, int pi, int nsamples, Summary *sum)
+{
+    GmatContext *ctx = t->ctx;
+    for (int below = 0; below < 2 && !sum->failed; below++) {
+        gmat_surface_point(ctx, &t->sp, below);
+        if (below && gmaterial_opaque(ctx->material, &t->sp))
+            break;
+        t->ng = below ? -1.0 : 1.0;
+        GScratchMark mark = gscratch_mark(ctx->scratch);
+        int rc = gmat_relative_index(&t->sp, &t->ri);
+        gscratch_release(ctx->scratch, mark);
+        if (rc != G_OK) {
+            sum->failed = 1, sum->why = "refraction_index failed";
+            break;
+        }
+        for (int a = 0; a < NSINC && !sum->failed; a++) {
+            GVec3 d = gmat_direction(sample_incidences[a], 30.0 + 100.0 * pi);
+            t->out = below ? gvec3(d.x, d.y, -d.z) : d;
+            SampleResult r;
+            run_test(t, nsamples, 0x5eed0000ULL + 977ULL * (unsigned long long)(sum->tests + 1), &r);
+            summarise(sum, &r, below ? -sample_incidences[a] : sample_incidences[a]);
+        }
+    }
+}
+
+/* The three lines of the sampling checks. */
+static void report_summary(const Summary *sum, int nsamples, GmatReportFn report, void *k)
+{
+    char detail[320];
+    if (sum->failed) {
+        snprintf(detail, sizeof detail, "(the material failed: %s)", sum->why ? sum->why : "?");
+        report(k, "chi2", INFINITY, 0.0, detail);
+        report(k, "pdf integral", INFINITY, TOL_INTEGRAL, detail);
+        report(k, "weight", INFINITY, TOL_WEIGHT, detail);
+        return;
+    }
+    double tol_p = -log10(1.0 - pow(1.0 - ALPHA, 1.0 / (sum->tests > 0 ? sum->tests : 1)));
+    snprintf(detail, sizeof detail, "(-log10 p of sample() against pdf(), %d tests of %d draws, %dx%d bins in "
+             "(cos theta, phi); worst at theta_out %g; %ld non-delta, %ld delta draws)", sum->tests, nsamples,
+             BINS_COS, BINS_PHI, sum->at_p, sum->nondelta, sum->delta);
+    report(k, "chi2", sum->worst_p, tol_p, detail);
+    snprintf(detail, sizeof detail, "(|integral of pdf - share of non-delta draws|, worst at theta_out %g%s%s)",
+             sum->at_int, sum->why ? "; " : "", sum->why ? sum->why : "");
+    report(k, "pdf integral", sum->worst_int, TOL_INTEGRAL, detail);
+    snprintf(detail, sizeof detail, "(weight vs value / pdf and the sample's pdf vs pdf(), relative; worst at "
+             "theta_out %g%s%s)", sum->at_w, sum->weight_why ? "; " : "", sum->weight_why ? sum->weight_why : "");
+    report(k, "weight", sum->worst_w, TOL_WEIGHT, detail);
+}
+
 void gmat_check_sampling(GmatContext *ctx, const GmatPlace *places, int nplaces, int nsamples, GmatReportFn report,
                          void *k)
 {
     if (nsamples <= 0)
         nsamples = NSAMPLES;
     SampleTest t = {.ctx = ctx};
-    int failed = 0, tests = 0;
-    double worst_p = 0.0, worst_int = 0.0, worst_w = 0.0, at_p = 0, at_int = 0, at_w = 0;
-    const char *why = NULL, *weight_why = NULL;
-    long delta = 0, nondelta = 0;
+    Summary sum = {0};
     if (gcolor_alloc(&t.ri, ctx->model) || gcolor_alloc(&t.weight, ctx->model) || gcolor_alloc(&t.value, ctx->model) ||
         gcolor_alloc(&t.white, ctx->model) || gcolor_fill(&t.white, 1.0))
-        failed = 1, why = "out of memory";
-    for (int pi = 0; pi < NSPLACES && !failed; pi++) {
+        sum.failed = 1, sum.why = "out of memory";
+    for (int pi = 0; pi < NSPLACES && !sum.failed; pi++) {
         ctx->place = &places[sample_places[pi] % nplaces];
-        for (int below = 0; below < 2 && !failed; below++) {
-            gmat_surface_point(ctx, &t.sp, below);
-            if (below && gmaterial_opaque(ctx->material, &t.sp))
-                break;
-            t.ng = below ? -1.0 : 1.0;
-            GScratchMark mark = gscratch_mark(ctx->scratch);
-            int rc = gmat_relative_index(&t.sp, &t.ri);
-            gscratch_release(ctx->scratch, mark);
-            if (rc != G_OK) {
-                failed = 1, why = "refraction_index failed";
-                break;
-            }
-            for (int a = 0; a < NSINC && !failed; a++) {
-                GVec3 d = gmat_direction(sample_incidences[a], 30.0 + 100.0 * pi);
-                t.out = below ? gvec3(d.x, d.y, -d.z) : d;
-                SampleResult r;
-                run_test(&t, nsamples, 0x5eed0000ULL + 977ULL * (unsigned long long)(tests + 1), &r);
-                tests++;
-                if (r.failed) {
-                    failed = 1, why = r.why;
-                    break;
-                }
-                if (r.why && !why)
-                    why = r.why;
-                if (r.weight_why && !weight_why)
-                    weight_why = r.weight_why;
-                delta += r.delta;
-                nondelta += r.nondelta;
-                double inc = below ? -sample_incidences[a] : sample_incidences[a];
-                if (!(r.log_p <= worst_p))
-                    worst_p = r.log_p, at_p = inc;
-                if (!(r.integral_err <= worst_int))
-                    worst_int = r.integral_err, at_int = inc;
-                if (!(r.weight_err <= worst_w))
-                    worst_w = r.weight_err, at_w = inc;
-            }
-        }
+        test_place(&t, pi, nsamples, &sum);
     }
     ctx->place = NULL;
     gcolor_free(&t.ri);
     gcolor_free(&t.weight);
     gcolor_free(&t.value);
     gcolor_free(&t.white);
-    char detail[320];
-    if (failed) {
-        snprintf(detail, sizeof detail, "(the material failed: %s)", why ? why : "?");
-        report(k, "chi2", INFINITY, 0.0, detail);
-        report(k, "pdf integral", INFINITY, TOL_INTEGRAL, detail);
-        report(k, "weight", INFINITY, TOL_WEIGHT, detail);
-        return;
-    }
-    double tol_p = -log10(1.0 - pow(1.0 - ALPHA, 1.0 / (tests > 0 ? tests : 1)));
-    snprintf(detail, sizeof detail, "(-log10 p of sample() against pdf(), %d tests of %d draws, %dx%d bins in "
-             "(cos theta, phi); worst at theta_out %g; %ld non-delta, %ld delta draws)", tests, nsamples, BINS_COS,
-             BINS_PHI, at_p, nondelta, delta);
-    report(k, "chi2", worst_p, tol_p, detail);
-    snprintf(detail, sizeof detail, "(|integral of pdf - share of non-delta draws|, worst at theta_out %g%s%s)",
-             at_int, why ? "; " : "", why ? why : "");
-    report(k, "pdf integral", worst_int, TOL_INTEGRAL, detail);
-    snprintf(detail, sizeof detail, "(weight vs value / pdf and the sample's pdf vs pdf(), relative; worst at "
-             "theta_out %g%s%s)", at_w, weight_why ? "; " : "", weight_why ? weight_why : "");
-    report(k, "weight", worst_w, TOL_WEIGHT, detail);
+    report_summary(&sum, nsamples, report, k);
 }

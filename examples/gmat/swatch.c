@@ -149,12 +149,51 @@ static int render(Swatch *s, int size, int samples, int sphere, GImage *img)
     return G_OK;
 }
 
-int gmat_swatch(int argc, char **argv, const GReaderOptions *base)
+/* The command line of swatch. */
+typedef struct SwatchArgs {
+    const char *file, *name, *output, *colormodel;
+    double size, samples, step;
+    int sphere;
+} SwatchArgs;
+
+enum { OPT_SPHERE = CLI_FIRST_OWN, OPT_COLORMODEL, OPT_SIZE, OPT_SAMPLES, OPT_STEP };
+
+/* Handles one of swatch's own options: 0, or the usage error's status (message printed). */
+static int swatch_option(SwatchArgs *a, int c, const char *v)
 {
-    const char *file = NULL, *name = NULL, *output = NULL, *colormodel = NULL;
-    double size = 256, samples = 2, step = 0;
-    int sphere = 0;
-    enum { OPT_SPHERE = CLI_FIRST_OWN, OPT_COLORMODEL, OPT_SIZE, OPT_SAMPLES, OPT_STEP };
+    double n;
+    switch (c) {
+    case OPT_SPHERE:
+        a->sphere = 1;
+        return 0;
+    case 'o':
+        a->output = v;
+        return 0;
+    case OPT_COLORMODEL:
+        a->colormodel = v;
+        return 0;
+    case OPT_SIZE:
+        if (gmat_number(v, 16, 4096, &n) || n != floor(n))
+            return gmat_usage_error("swatch", "--size: '%s' is not a whole number in 16..4096", v);
+        a->size = n;
+        return 0;
+    case OPT_SAMPLES:
+        if (gmat_number(v, 1, 8, &n) || n != floor(n))
+            return gmat_usage_error("swatch", "--samples: '%s' is not a whole number in 1..8", v);
+        a->samples = n;
+        return 0;
+    case OPT_STEP:
+        if (gmat_number(v, 0.1, 400, &a->step))
+            return gmat_usage_error("swatch", "--step: '%s' is not a spacing in nm (0.1..400)", v);
+        return 0;
+    default:
+        return CLI_USAGE;
+    }
+}
+
+/* Reads the command line into a: -1 to go on, else the exit status to end with. */
+static int swatch_args(int argc, char **argv, SwatchArgs *a)
+{
     static const struct option longopts[] = {
         CLI_COMMON_OPTIONS,
         {"sphere", no_argument, NULL, OPT_SPHERE},
@@ -165,100 +204,82 @@ int gmat_swatch(int argc, char **argv, const GReaderOptions *base)
         {"step", required_argument, NULL, OPT_STEP},
         {NULL, 0, NULL, 0},
     };
+    *a = (SwatchArgs){.size = 256, .samples = 2};
     CliParser p;
     cli_begin(&p, "gmat swatch", argc - 1, argv + 1, "ho:", longopts);
-    int c;
-    while ((c = cli_next(&p)) != -1) {
-        const char *v = optarg;
-        double n;
-        switch (c) {
-        case 'h':
-            swatch_usage(stdout);
-            return CLI_OK;
-        case CLI_VERSION:
-            return cli_version("gmat");
-        case OPT_SPHERE:
-            sphere = 1;
-            break;
-        case 'o':
-            output = v;
-            break;
-        case OPT_COLORMODEL:
-            colormodel = v;
-            break;
-        case OPT_SIZE:
-            if (gmat_number(v, 16, 4096, &n) || n != floor(n))
-                return gmat_usage_error("swatch", "--size: '%s' is not a whole number in 16..4096", v);
-            size = n;
-            break;
-        case OPT_SAMPLES:
-            if (gmat_number(v, 1, 8, &n) || n != floor(n))
-                return gmat_usage_error("swatch", "--samples: '%s' is not a whole number in 1..8", v);
-            samples = n;
-            break;
-        case OPT_STEP:
-            if (gmat_number(v, 0.1, 400, &step))
-                return gmat_usage_error("swatch", "--step: '%s' is not a spacing in nm (0.1..400)", v);
-            break;
-        default:
-            return CLI_USAGE;
-        }
+    int c, rc, status = CLI_OK;
+    while ((c = cli_next_own(&p, "gmat", swatch_usage, &status)) != -1) {
+        if (c == CLI_EXIT)
+            return status;
+        if ((rc = swatch_option(a, c, optarg)) != 0)
+            return rc;
     }
-    int nrest;
-    char **rest = cli_operands(&p, &nrest);
-    if (nrest > 2)
-        return gmat_usage_error("swatch", "unexpected argument '%s'", rest[2]);
-    file = nrest > 0 ? rest[0] : NULL;
-    name = nrest > 1 ? rest[1] : NULL;
-    if (!file || !name)
+    if ((rc = gmat_operands("swatch", &p, 2, &a->file, &a->name)) != 0)
+        return rc;
+    if (!a->file || !a->name)
         return gmat_usage_error("swatch", "%s", "needs FILE and MATERIAL");
-    if (!output)
+    if (!a->output)
         return gmat_usage_error("swatch", "%s", "-o SWATCH.png is required");
+    return -1;
+}
 
+/* The lights and work colours of s in its model, and the picture: 0, or -1 when out of memory. */
+static int swatch_setup(Swatch *s, int size, GImage *img)
+{
+    double key[3] = {M_PI * 0.85, M_PI * 0.85, M_PI * 0.85}, amb[3] = {0.15, 0.15, 0.15};
+    GError err;
+    s->scratch = gscratch_create(0);
+    if (!s->scratch || gcolor_alloc(&s->key, s->model) || gcolor_alloc(&s->amb, s->model) ||
+        gcolor_alloc(&s->sky, s->model) || gcolor_alloc(&s->c, s->model) || gcolor_alloc(&s->sum, s->model) ||
+        gcolor_from_rgb(&s->key, key, GCOLOR_LIGHT) || gcolor_from_rgb(&s->amb, amb, GCOLOR_LIGHT) ||
+        gimage_create(img, size, size, 3, &err))
+        return -1;
+    s->light = gvec3_normalize(gvec3(-0.5, 0.6, 1.0));
+    return 0;
+}
+
+/* Renders the material of s into a.output: the exit status. */
+static int swatch_draw(const SwatchArgs *a, Swatch *s)
+{
+    GImage img = {0};
+    GError err;
+    int rc = 1;
+    if (swatch_setup(s, (int)a->size, &img) != 0)
+        fprintf(stderr, "gmat swatch: out of memory\n");
+    else if (render(s, (int)a->size, (int)a->samples, a->sphere, &img) != G_OK)
+        fprintf(stderr, "gmat swatch: evaluating '%s' failed\n", a->name);
+    else if (gimage_write(a->output, &img, NULL, &err) != G_OK)
+        fprintf(stderr, "gmat swatch: %s\n", err.message);
+    else
+        rc = 0;
+    gimage_free(&img);
+    return rc;
+}
+
+int gmat_swatch(int argc, char **argv, const GReaderOptions *base)
+{
+    SwatchArgs a;
+    int rc = swatch_args(argc, argv, &a);
+    if (rc >= 0)
+        return rc;
     Swatch s = {0};
     GError err;
-    if (gimage_check_output(output, &err) != G_OK) { /* before any work */
+    if (gimage_check_output(a.output, &err) != G_OK) { /* before any work */
         fprintf(stderr, "gmat swatch: %s\n", err.message);
         return 1;
     }
-    GColorModelOptions mo = {.step_nm = step};
-    GReaderOptions opt = *base;
-    opt.colormodel = colormodel;
-    opt.colormodel_options = &mo;
-    if (greader_load_file(file, &opt, &s.lib, &err) != G_OK) {
+    if (gmat_read(a.file, base, a.colormodel, a.step, 0, &s.lib, &err) != G_OK) {
         fprintf(stderr, "gmat swatch: %s\n", err.message);
         return 1;
     }
     s.model = glibrary_colormodel(s.lib);
-    s.m = glibrary_material(s.lib, name);
-    int rc = 1;
-    GImage img = {0};
-    if (!s.m) {
-        fprintf(stderr, "gmat swatch: %s defines no material or texture node named '%s' (see gmat list)\n", file,
-                name);
-        goto done;
-    }
-    s.scratch = gscratch_create(0);
-    double key[3] = {M_PI * 0.85, M_PI * 0.85, M_PI * 0.85}, amb[3] = {0.15, 0.15, 0.15};
-    if (!s.scratch || gcolor_alloc(&s.key, s.model) || gcolor_alloc(&s.amb, s.model) ||
-        gcolor_alloc(&s.sky, s.model) || gcolor_alloc(&s.c, s.model) || gcolor_alloc(&s.sum, s.model) ||
-        gcolor_from_rgb(&s.key, key, GCOLOR_LIGHT) || gcolor_from_rgb(&s.amb, amb, GCOLOR_LIGHT) ||
-        gimage_create(&img, (int)size, (int)size, 3, &err)) {
-        fprintf(stderr, "gmat swatch: out of memory\n");
-        goto done;
-    }
-    s.light = gvec3_normalize(gvec3(-0.5, 0.6, 1.0));
-    if (render(&s, (int)size, (int)samples, sphere, &img) != G_OK) {
-        fprintf(stderr, "gmat swatch: evaluating '%s' failed\n", name);
-        goto done;
-    }
-    if (gimage_write(output, &img, NULL, &err) != G_OK) {
-        fprintf(stderr, "gmat swatch: %s\n", err.message);
-        goto done;
-    }
-    rc = 0;
-done:
-    gimage_free(&img);
+    s.m = glibrary_material(s.lib, a.name);
+    rc = 1;
+    if (!s.m)
+        fprintf(stderr, "gmat swatch: %s defines no material or texture node named '%s' (see gmat list)\n", a.file,
+                a.name);
+    else
+        rc = swatch_draw(&a, &s);
     gcolor_free(&s.key);
     gcolor_free(&s.amb);
     gcolor_free(&s.sky);

@@ -82,7 +82,8 @@ static double gap_at(GmatContext *ctx, int below, int *calls)
                 point_with(ctx, &a, below, 1);
                 point_with(ctx, &z, below, 0);
                 GColor ca, cz;
-                int ra = gcolor_scratch(&ca, ctx->model, ctx->scratch), rz = gcolor_scratch(&cz, ctx->model, ctx->scratch);
+                int ra = gcolor_scratch(&ca, ctx->model, ctx->scratch);
+                int rz = gcolor_scratch(&cz, ctx->model, ctx->scratch);
                 if (ra == G_OK && rz == G_OK) {
                     ra = colour_method(ctx, method, &a, in, out, &ca);
                     rz = colour_method(ctx, method, &z, in, out, &cz);

@@ -25,11 +25,16 @@ static void approx_usage(FILE *f)
             probe_args_help);
 }
 
-int cmd_approx(int argc, char **argv)
+/* The command line of approx. */
+typedef struct ApproxArgs {
+    ProbeArgs probe;
+    const char *out, *tech; /* -o, --technique */
+    int n, fit;             /* -n, --fit-normals */
+} ApproxArgs;
+
+/* Reads the command line into a: -1 to go on, else the exit status to end with. */
+static int approx_args(int argc, char **argv, ApproxArgs *a)
 {
-    ProbeArgs pa = {0};
-    const char *out = NULL, *tech = NULL;
-    int n = 0, fit = 0;
     enum { OPT_FIT = PROBE_OPT_OWN };
     static const struct option longopts[] = {
         CLI_COMMON_OPTIONS, PROBE_ARGS_OPTIONS,
@@ -37,127 +42,159 @@ int cmd_approx(int argc, char **argv)
         {"output", required_argument, NULL, 'o'}, {"fit-normals", required_argument, NULL, OPT_FIT},
         {NULL, 0, NULL, 0},
     };
+    memset(a, 0, sizeof *a);
     CliParser cp;
     cli_begin(&cp, "gprobe approx", argc, argv, "hqt:n:o:", longopts);
-    int c;
-    while ((c = cli_next(&cp)) != -1) {
-        int r = probe_args_option(&pa, c, optarg);
-        if (r < 0)
-            return CLI_USAGE;
-        if (r > 0)
-            continue;
-        if (c == 'h') {
-            approx_usage(stdout);
-            return CLI_OK;
-        } else if (c == CLI_VERSION) {
-            return cli_version("gprobe");
-        } else if (c == 't') {
-            tech = optarg;
-        } else if (c == 'n') {
-            if (parse_int("-n", optarg, 1, 4096, &n) != 0)
+    int c, status = CLI_OK;
+    while ((c = probe_next_option(&cp, &a->probe, approx_usage, &status)) != -1) {
+        if (c == CLI_EXIT)
+            return status;
+        switch (c) {
+        case 't':
+            a->tech = optarg;
+            break;
+        case 'o':
+            a->out = optarg;
+            break;
+        case 'n':
+            if (cli_int("gprobe", "-n", optarg, 1, 4096, &a->n) != 0)
                 return CLI_USAGE;
-        } else if (c == 'o') {
-            out = optarg;
-        } else if (c == OPT_FIT) {
-            if (parse_int("--fit-normals", optarg, 2, 1000000, &fit) != 0)
+            break;
+        case OPT_FIT:
+            if (cli_int("gprobe", "--fit-normals", optarg, 2, 1000000, &a->fit) != 0)
                 return CLI_USAGE;
-        } else {
+            break;
+        default:
             return CLI_USAGE;
         }
     }
     if (no_operands(&cp))
         return CLI_USAGE;
-    if (!tech || n <= 0 || !out) {
+    if (!a->tech || a->n <= 0 || !a->out) {
         fprintf(stderr, "gprobe approx: --technique, -n and -o are required (gprobe approx --help)\n");
-        return 2;
+        return CLI_USAGE;
     }
-    GError err;
-    GProbeTechnique t;
-    if (gprobe_technique_parse(tech, &t, &err) != G_OK) {
-        fprintf(stderr, "gprobe: %s\n", err.message);
-        return 2;
-    }
-    if (t == GPROBE_MEDIANCUT && (n & (n - 1)) != 0) {
-        fprintf(stderr, "gprobe: median cut makes a power of two of lights, not %d (use adaptive for any count)\n", n);
-        return 2;
-    }
-    if (output_check(out, 0) != 0)
-        return 1;
-    GProbe *p = probe_args_load(&pa);
-    if (!p)
-        return 1;
-    int status = 1;
-    const int m = 20000;
-    GProbeLight *lights = gmem_calloc((size_t)n, sizeof *lights);
-    GVec3 *normals = gmem_calloc(m, sizeof *normals);
-    double *truth = gmem_calloc((size_t)m * 3, sizeof(double)), *approx = gmem_calloc((size_t)m * 3, sizeof(double));
-    if (!lights || !normals || !truth || !approx) {
-        fprintf(stderr, "gprobe: out of memory\n");
-        goto done;
-    }
-    GProbeOptions opt = {0};
-    opt.fit_normals = fit;
-    if (!pa.quiet)
-        opt.progress = progress_print;
-    double t0 = now_seconds();
-    if (gprobe_approximate(p, t, n, &opt, lights, &err) != G_OK) {
-        fprintf(stderr, "\ngprobe: %s\n", err.message);
-        goto done;
-    }
-    double dt = now_seconds() - t0;
-    gprobe_fibonacci(m, normals);
-    if (gprobe_irradiance(p, normals, m, truth, &err) != G_OK) {
-        fprintf(stderr, "gprobe: %s\n", err.message);
-        goto done;
-    }
-    gprobe_lights_irradiance(lights, n, normals, m, approx);
-    GProbeErrors e;
-    gprobe_compare(truth, approx, m, &e);
-    int kept = 0;
-    for (int i = 0; i < n; i++)
-        kept += lights[i].rgb[0] > 0.0 || lights[i].rgb[1] > 0.0 || lights[i].rgb[2] > 0.0;
+    return -1;
+}
 
-    TextOut to;
-    if (text_open(&to, out) != 0)
-        goto done;
+/* The technique named by a, checked against its count: G_OK, or a usage error with its message printed. */
+static int approx_technique(const ApproxArgs *a, GProbeTechnique *t)
+{
+    GError err;
+    if (gprobe_technique_parse(a->tech, t, &err) != G_OK) {
+        fprintf(stderr, "gprobe: %s\n", err.message);
+        return G_ERR_INVALID;
+    }
+    if (*t == GPROBE_MEDIANCUT && (a->n & (a->n - 1)) != 0) {
+        fprintf(stderr, "gprobe: median cut makes a power of two of lights, not %d (use adaptive for any count)\n",
+                a->n);
+        return G_ERR_INVALID;
+    }
+    return G_OK;
+}
+
+static int carries_light(const GProbeLight *l) { return l->rgb[0] > 0.0 || l->rgb[1] > 0.0 || l->rgb[2] > 0.0; }
+
+/* The lights file: a header with the technique, its errors and the probe's frame, then the lights that carry
+ * energy as text-format entries. */
+static void write_lights(FILE *f, const ApproxArgs *a, const GProbe *p, const GProbeLight *lights, int kept,
+                         const GProbeErrors *e, int m)
+{
     double R[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
-    if (pa.rotate)
-        gprobe_rotation_xyz(pa.rot[0], pa.rot[1], pa.rot[2], R);
+    if (a->probe.rotate)
+        gprobe_rotation_xyz(a->probe.rot[0], a->probe.rot[1], a->probe.rot[2], R);
     for (int k = 0; k < 9; k++)
         R[k] = fabs(R[k]) < 1e-12 ? 0.0 : R[k];
-    fprintf(to.f,
+    fprintf(f,
             "# %d directional lights approximating the light probe %s (%dx%d)\n"
             "# technique %s; irradiance error at %d normals: mean %.3f%%, max %.3f%% of the true irradiance,\n"
             "# mean %.4f%% of the largest irradiance.\n"
             "# The probe's zenith is (%.6g, %.6g, %.6g)%s. `direction` is the way the light travels;\n"
             "# the colour is the irradiance on a surface facing the light (linear Rec.709 RGB).\n",
-            kept, pa.path, gprobe_width(p), gprobe_height(p), tech, m, e.mean_rel, e.max_rel, e.mean_norm, R[2], R[5],
-            R[8], pa.rotate ? " after --rotate" : "");
+            kept, a->probe.path, gprobe_width(p), gprobe_height(p), a->tech, m, e->mean_rel, e->max_rel, e->mean_norm,
+            R[2], R[5], R[8], a->probe.rotate ? " after --rotate" : "");
     if (gprobe_clamped_count(p) > 0)
-        fprintf(to.f, "# %ld probe pixels had negative, NaN, infinite or too large values and were clamped.\n",
+        fprintf(f, "# %ld probe pixels had negative, NaN, infinite or too large values and were clamped.\n",
                 gprobe_clamped_count(p));
-    if (kept < n)
-        fprintf(to.f, "# %d of the %d lights carry no energy and are left out.\n", n - kept, n);
-    for (int i = 0; i < n; i++) {
+    if (kept < a->n)
+        fprintf(f, "# %d of the %d lights carry no energy and are left out.\n", a->n - kept, a->n);
+    for (int i = 0; i < a->n; i++) {
         const GProbeLight *l = &lights[i];
-        if (!(l->rgb[0] > 0.0 || l->rgb[1] > 0.0 || l->rgb[2] > 0.0))
-            continue;
-        fprintf(to.f, "light directional { direction %.9g %.9g %.9g irradiance rgb %.9g %.9g %.9g }\n", -l->dir.x,
-                -l->dir.y, -l->dir.z, l->rgb[0], l->rgb[1], l->rgb[2]);
+        if (carries_light(l))
+            fprintf(f, "light directional { direction %.9g %.9g %.9g irradiance rgb %.9g %.9g %.9g }\n", -l->dir.x,
+                    -l->dir.y, -l->dir.z, l->rgb[0], l->rgb[1], l->rgb[2]);
     }
+}
+
+/* Makes the lights, measures their irradiance error at the truth's normals and writes them: 0, or -1 with a
+ * message. */
+static int approx_lights(const ApproxArgs *a, GProbeTechnique tech, const GProbe *p, GProbeLight *lights,
+                         Truth *truth)
+{
+    GError err;
+    GProbeOptions opt = probe_options(a->fit, a->probe.quiet);
+    double t0 = now_seconds();
+    if (gprobe_approximate(p, tech, a->n, &opt, lights, &err) != G_OK) {
+        fprintf(stderr, "\ngprobe: %s\n", err.message);
+        return -1;
+    }
+    double dt = now_seconds() - t0;
+    if (truth_compute(truth, p, &err) != G_OK) {
+        fprintf(stderr, "gprobe: %s\n", err.message);
+        return -1;
+    }
+    gprobe_lights_irradiance(lights, a->n, truth->normals, truth->m, truth->approx);
+    GProbeErrors e;
+    gprobe_compare(truth->truth, truth->approx, truth->m, &e);
+    int kept = 0;
+    for (int i = 0; i < a->n; i++)
+        kept += carries_light(&lights[i]);
+    TextOut to;
+    if (text_open(&to, a->out) != 0)
+        return -1;
+    write_lights(to.f, a, p, lights, kept, &e, truth->m);
     if (text_close(&to, 1) != 0)
-        goto done;
-    if (!pa.quiet)
+        return -1;
+    if (!a->probe.quiet)
         fprintf(stderr, "%sgprobe: %s: %d lights (%s) in %.2f s; irradiance error mean %.3f%%, max %.3f%%\n",
-                opt.progress ? "\r" : "", out, kept, tech, dt, e.mean_rel, e.max_rel);
-    status = 0;
-done:
+                opt.progress ? "\r" : "", a->out, kept, a->tech, dt, e.mean_rel, e.max_rel);
+    return 0;
+}
+
+int cmd_approx(int argc, char **argv)
+{
+    ApproxArgs a;
+    int status = approx_args(argc, argv, &a);
+    if (status >= 0)
+        return status;
+    GProbeTechnique t;
+    if (approx_technique(&a, &t) != G_OK)
+        return CLI_USAGE;
+    if (output_check(a.out, 0) != 0)
+        return 1;
+    GProbe *p = probe_args_load(&a.probe);
+    if (!p)
+        return 1;
+    Truth truth = {0};
+    GProbeLight *lights = gmem_calloc((size_t)a.n, sizeof *lights);
+    status = 1;
+    if (truth_alloc(&truth, 20000) != 0 || !lights)
+        fprintf(stderr, "gprobe: out of memory\n");
+    else if (approx_lights(&a, t, p, lights, &truth) == 0)
+        status = 0;
+    truth_free(&truth);
     gmem_free(lights);
-    gmem_free(normals);
-    gmem_free(truth);
-    gmem_free(approx);
     gprobe_destroy(p);
     return status;
+}
+
+static void irradiance_usage(FILE *f)
+{
+    fprintf(f, "usage: gprobe irradiance --probe FILE --normal X,Y,Z\n"
+               "Prints the ground-truth irradiance R G B (every pixel of the probe summed, the paper's Eq. 4)\n"
+               "on a surface with the given normal (normalised; z is up).\n%s"
+               "  --normal X,Y,Z    the surface normal\n" CLI_EXIT_STATUS_HELP,
+            probe_args_help);
 }
 
 int cmd_irradiance(int argc, char **argv)
@@ -170,29 +207,13 @@ int cmd_irradiance(int argc, char **argv)
         CLI_COMMON_OPTIONS, PROBE_ARGS_OPTIONS, {"normal", required_argument, NULL, OPT_NORMAL}, {NULL, 0, NULL, 0}};
     CliParser cp;
     cli_begin(&cp, "gprobe irradiance", argc, argv, "hq", longopts);
-    int c;
-    while ((c = cli_next(&cp)) != -1) {
-        int r = probe_args_option(&pa, c, optarg);
-        if (r < 0)
+    int c, status = CLI_OK;
+    while ((c = probe_next_option(&cp, &pa, irradiance_usage, &status)) != -1) {
+        if (c == CLI_EXIT)
+            return status;
+        if (c != OPT_NORMAL || parse_vec3("--normal", optarg, n) != 0)
             return CLI_USAGE;
-        if (r > 0)
-            continue;
-        if (c == 'h') {
-            printf("usage: gprobe irradiance --probe FILE --normal X,Y,Z\n"
-                   "Prints the ground-truth irradiance R G B (every pixel of the probe summed, the paper's Eq. 4)\n"
-                   "on a surface with the given normal (normalised; z is up).\n%s"
-                   "  --normal X,Y,Z    the surface normal\n" CLI_EXIT_STATUS_HELP,
-                   probe_args_help);
-            return CLI_OK;
-        } else if (c == CLI_VERSION) {
-            return cli_version("gprobe");
-        } else if (c == OPT_NORMAL) {
-            if (parse_vec3("--normal", optarg, n) != 0)
-                return CLI_USAGE;
-            have = 1;
-        } else {
-            return CLI_USAGE;
-        }
+        have = 1;
     }
     if (no_operands(&cp))
         return CLI_USAGE;
@@ -220,6 +241,17 @@ int cmd_irradiance(int argc, char **argv)
     return rc == G_OK ? 0 : 1;
 }
 
+static void convert_usage(FILE *f)
+{
+    fprintf(f, "usage: gprobe convert --probe FILE [--to latlong|angular] [--size N] -o OUT\n"
+               "Writes the probe (after --rotate) as a latitude-longitude image or an angular map; the output's\n"
+               "extension picks the format (.exr/.hdr linear float; .png/.jpg sRGB encoded, clamped).\n%s"
+               "  --to F            latlong (default) or angular\n"
+               "  --size N          angular map size in pixels (default: the probe's height)\n"
+               "  -o OUT            output image\n" CLI_EXIT_STATUS_HELP,
+            probe_args_help);
+}
+
 int cmd_convert(int argc, char **argv)
 {
     ProbeArgs pa = {0};
@@ -232,39 +264,18 @@ int cmd_convert(int argc, char **argv)
         {"to", required_argument, NULL, OPT_TO}, {"size", required_argument, NULL, OPT_SIZE}, {NULL, 0, NULL, 0}};
     CliParser cp;
     cli_begin(&cp, "gprobe convert", argc, argv, "hqo:", longopts);
-    int c;
-    while ((c = cli_next(&cp)) != -1) {
-        int r = probe_args_option(&pa, c, optarg);
-        if (r < 0)
-            return CLI_USAGE;
-        if (r > 0)
-            continue;
-        if (c == 'h') {
-            printf("usage: gprobe convert --probe FILE [--to latlong|angular] [--size N] -o OUT\n"
-                   "Writes the probe (after --rotate) as a latitude-longitude image or an angular map; the output's\n"
-                   "extension picks the format (.exr/.hdr linear float; .png/.jpg sRGB encoded, clamped).\n%s"
-                   "  --to F            latlong (default) or angular\n"
-                   "  --size N          angular map size in pixels (default: the probe's height)\n"
-                   "  -o OUT            output image\n" CLI_EXIT_STATUS_HELP,
-                   probe_args_help);
-            return CLI_OK;
-        } else if (c == CLI_VERSION) {
-            return cli_version("gprobe");
-        } else if (c == 'o') {
+    int c, status = CLI_OK;
+    while ((c = probe_next_option(&cp, &pa, convert_usage, &status)) != -1) {
+        if (c == CLI_EXIT)
+            return status;
+        if (c == 'o') {
             out = optarg;
+        } else if (c == OPT_TO && (strcmp(optarg, "latlong") == 0 || strcmp(optarg, "angular") == 0)) {
+            to = strcmp(optarg, "latlong") == 0 ? GPROBE_LATLONG : GPROBE_ANGULAR;
         } else if (c == OPT_TO) {
-            if (strcmp(optarg, "latlong") == 0)
-                to = GPROBE_LATLONG;
-            else if (strcmp(optarg, "angular") == 0)
-                to = GPROBE_ANGULAR;
-            else {
-                fprintf(stderr, "gprobe convert: --to expects latlong or angular, got '%s'\n", optarg);
-                return CLI_USAGE;
-            }
-        } else if (c == OPT_SIZE) {
-            if (parse_int("--size", optarg, 2, 32768, &size) != 0)
-                return CLI_USAGE;
-        } else {
+            fprintf(stderr, "gprobe convert: --to expects latlong or angular, got '%s'\n", optarg);
+            return CLI_USAGE;
+        } else if (c != OPT_SIZE || cli_int("gprobe", "--size", optarg, 2, 32768, &size) != 0) {
             return CLI_USAGE;
         }
     }

@@ -86,43 +86,56 @@ static void report(const char *what, long n, double e, double mean)
     printf("%-6s pixels %ld rmse %.6g relative %.6g\n", what, n, e, mean > 0.0 ? e / mean : 0.0);
 }
 
-int cmd_compare(int argc, char **argv)
+/* The command line of compare. */
+typedef struct CompareArgs {
+    const char *files[2];                      /* IMAGE REFERENCE */
+    const char *mask, *unshadowed, *write_mask; /* --mask, --unshadowed, --write-mask */
+    double threshold;                          /* --threshold */
+} CompareArgs;
+
+/* getopt_long codes of compare's options. */
+enum { OPT_MASK = CLI_FIRST_OWN, OPT_UNSHADOWED, OPT_WRITE_MASK, OPT_THRESHOLD };
+
+/* Handles one of compare's options: 0, or -1 on a usage error (message printed). */
+static int compare_option(CompareArgs *a, int c, const char *v)
 {
-    const char *files[2] = {NULL, NULL}, *mask_path = NULL, *unshadowed = NULL, *write_mask = NULL;
-    double threshold = 0.1;
-    int nfiles = 0;
-    enum { OPT_MASK = CLI_FIRST_OWN, OPT_UNSHADOWED, OPT_WRITE_MASK, OPT_THRESHOLD };
+    if (c == OPT_MASK) {
+        a->mask = v;
+    } else if (c == OPT_UNSHADOWED) {
+        a->unshadowed = v;
+    } else if (c == OPT_WRITE_MASK) {
+        a->write_mask = v;
+    } else if (c == OPT_THRESHOLD) {
+        char *end;
+        a->threshold = strtod(v, &end);
+        if (end == v || *end || !(a->threshold > 0.0 && a->threshold < 1.0)) {
+            fprintf(stderr, "gprobe compare: --threshold expects a number in (0, 1), got '%s'\n", v);
+            return -1;
+        }
+    } else {
+        return -1;
+    }
+    return 0;
+}
+
+/* Reads the command line into a: -1 to go on, else the exit status to end with. */
+static int compare_args(int argc, char **argv, CompareArgs *a)
+{
     static const struct option longopts[] = {
         CLI_COMMON_OPTIONS, {"mask", required_argument, NULL, OPT_MASK},
-        {"unshadowed", required_argument, NULL, OPT_UNSHADOWED}, {"write-mask", required_argument, NULL, OPT_WRITE_MASK},
-        {"threshold", required_argument, NULL, OPT_THRESHOLD}, {NULL, 0, NULL, 0},
+        {"unshadowed", required_argument, NULL, OPT_UNSHADOWED},
+        {"write-mask", required_argument, NULL, OPT_WRITE_MASK}, {"threshold", required_argument, NULL, OPT_THRESHOLD},
+        {NULL, 0, NULL, 0},
     };
+    *a = (CompareArgs){{NULL, NULL}, NULL, NULL, NULL, 0.1};
     CliParser cp;
     cli_begin(&cp, "gprobe compare", argc, argv, "h", longopts);
-    int c;
-    while ((c = cli_next(&cp)) != -1) {
-        const char *v = optarg;
-        if (c == 'h') {
-            compare_usage(stdout);
-            return CLI_OK;
-        } else if (c == CLI_VERSION) {
-            return cli_version("gprobe");
-        } else if (c == OPT_MASK) {
-            mask_path = v;
-        } else if (c == OPT_UNSHADOWED) {
-            unshadowed = v;
-        } else if (c == OPT_WRITE_MASK) {
-            write_mask = v;
-        } else if (c == OPT_THRESHOLD) {
-            char *end;
-            threshold = strtod(v, &end);
-            if (end == v || *end || !(threshold > 0.0 && threshold < 1.0)) {
-                fprintf(stderr, "gprobe compare: --threshold expects a number in (0, 1), got '%s'\n", v);
-                return CLI_USAGE;
-            }
-        } else {
+    int c, status = CLI_OK, nfiles;
+    while ((c = cli_next_own(&cp, "gprobe", compare_usage, &status)) != -1) {
+        if (c == CLI_EXIT)
+            return status;
+        if (compare_option(a, c, optarg) != 0)
             return CLI_USAGE;
-        }
     }
     char **rest = cli_operands(&cp, &nfiles);
     if (nfiles > 2) {
@@ -130,44 +143,75 @@ int cmd_compare(int argc, char **argv)
         return CLI_USAGE;
     }
     for (int i = 0; i < nfiles; i++)
-        files[i] = rest[i];
-    if (nfiles != 2) {
-        fprintf(stderr, "gprobe compare: give an image and its reference (gprobe compare --help)\n");
-        return 2;
+        a->files[i] = rest[i];
+    const char *wrong = NULL;
+    if (nfiles != 2)
+        wrong = "give an image and its reference (gprobe compare --help)";
+    else if (a->mask && a->unshadowed)
+        wrong = "give either --mask or --unshadowed, not both";
+    else if (a->write_mask && !a->mask && !a->unshadowed)
+        wrong = "--write-mask needs --mask or --unshadowed";
+    if (wrong) {
+        fprintf(stderr, "gprobe compare: %s\n", wrong);
+        return CLI_USAGE;
     }
-    if (mask_path && unshadowed) {
-        fprintf(stderr, "gprobe compare: give either --mask or --unshadowed, not both\n");
-        return 2;
+    return -1;
+}
+
+/* The shadow mask (1 in the shadows) from aux, read from --mask or --unshadowed: NULL when out of memory. */
+static unsigned char *shadow_mask(const CompareArgs *a, const GImage *ref, const GImage *aux)
+{
+    size_t npix = (size_t)ref->width * ref->height;
+    unsigned char *mask = gmem_calloc(npix, 1);
+    if (!mask) {
+        fprintf(stderr, "gprobe: out of memory\n");
+        return NULL;
     }
-    if (write_mask && !mask_path && !unshadowed) {
-        fprintf(stderr, "gprobe compare: --write-mask needs --mask or --unshadowed\n");
-        return 2;
+    for (size_t i = 0; i < npix; i++) {
+        const float *m = aux->pixels + 3 * i;
+        if (a->mask) {
+            mask[i] = (m[0] + m[1] + m[2]) / 3.0 > 0.5;
+        } else {
+            double open = luminance(m);
+            mask[i] = open > 0.0 && luminance(ref->pixels + 3 * i) < (1.0 - a->threshold) * open;
+        }
     }
-    if (output_check(write_mask, 1) != 0)
+    return mask;
+}
+
+/* The mask as an image, white in the shadows: 0, or -1 with a message. */
+static int write_mask(const char *path, const unsigned char *mask, int w, int h)
+{
+    GImage out = {0};
+    GError err;
+    int rc = gimage_create(&out, w, h, 3, &err);
+    if (rc == G_OK) {
+        for (size_t i = 0; i < (size_t)w * h; i++)
+            out.pixels[3 * i] = out.pixels[3 * i + 1] = out.pixels[3 * i + 2] = mask[i] ? 1.0f : 0.0f;
+        rc = gimage_write(path, &out, NULL, &err);
+    }
+    if (rc != G_OK)
+        fprintf(stderr, "gprobe: %s\n", err.message);
+    gimage_free(&out);
+    return rc == G_OK ? 0 : -1;
+}
+
+int cmd_compare(int argc, char **argv)
+{
+    CompareArgs a;
+    int status = compare_args(argc, argv, &a);
+    if (status >= 0)
+        return status;
+    if (output_check(a.write_mask, 1) != 0)
         return 1;
-    int w = 0, h = 0, status = 1;
-    GImage img = {0}, ref = {0}, aux = {0}, out = {0};
+    int w = 0, h = 0;
+    GImage img = {0}, ref = {0}, aux = {0};
     unsigned char *mask = NULL;
-    if (read_rgb(files[0], &w, &h, &img) || read_rgb(files[1], &w, &h, &ref))
+    const char *aux_path = a.mask ? a.mask : a.unshadowed;
+    status = 1;
+    if (read_rgb(a.files[0], &w, &h, &img) || read_rgb(a.files[1], &w, &h, &ref) ||
+        (aux_path && (read_rgb(aux_path, &w, &h, &aux) || !(mask = shadow_mask(&a, &ref, &aux)))))
         goto done;
-    size_t npix = (size_t)w * h;
-    if (mask_path || unshadowed) {
-        if (read_rgb(mask_path ? mask_path : unshadowed, &w, &h, &aux))
-            goto done;
-        if (!(mask = gmem_calloc(npix, 1))) {
-            fprintf(stderr, "gprobe: out of memory\n");
-            goto done;
-        }
-        for (size_t i = 0; i < npix; i++) {
-            const float *m = aux.pixels + 3 * i;
-            if (mask_path) {
-                mask[i] = (m[0] + m[1] + m[2]) / 3.0 > 0.5;
-            } else {
-                double open = luminance(m);
-                mask[i] = open > 0.0 && luminance(ref.pixels + 3 * i) < (1.0 - threshold) * open;
-            }
-        }
-    }
     long n;
     double e, mean;
     rmse(&img, &ref, NULL, &n, &e, &mean);
@@ -176,25 +220,12 @@ int cmd_compare(int argc, char **argv)
         rmse(&img, &ref, mask, &n, &e, &mean);
         report("shadow", n, e, mean);
     }
-    if (write_mask) {
-        GError err;
-        if (gimage_create(&out, w, h, 3, &err) != G_OK) {
-            fprintf(stderr, "gprobe: %s\n", err.message);
-            goto done;
-        }
-        for (size_t i = 0; i < npix; i++)
-            out.pixels[3 * i] = out.pixels[3 * i + 1] = out.pixels[3 * i + 2] = mask[i] ? 1.0f : 0.0f;
-        if (gimage_write(write_mask, &out, NULL, &err) != G_OK) {
-            fprintf(stderr, "gprobe: %s\n", err.message);
-            goto done;
-        }
-    }
-    status = 0;
+    if (!a.write_mask || write_mask(a.write_mask, mask, w, h) == 0)
+        status = 0;
 done:
     gimage_free(&img);
     gimage_free(&ref);
     gimage_free(&aux);
-    gimage_free(&out);
     gmem_free(mask);
     return status;
 }

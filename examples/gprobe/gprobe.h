@@ -32,8 +32,11 @@ extern const char probe_args_help[];
 /** Loads (and rotates) the probe; prints the error or the clamping warning. NULL on failure. */
 GProbe *probe_args_load(const ProbeArgs *a);
 
-/** Parses a whole number in [lo, hi] for option opt; -1 with a message when it is not one. */
-int parse_int(const char *opt, const char *s, long lo, long hi, int *out);
+/** The next option of a command's own, after -h/--help (prints usage(stdout)), --version and the probe options
+ * (--probe, --format, --rotate, -q, into a): as cli_next_own, CLI_EXIT with *status CLI_USAGE after a bad value
+ * of a probe option too. */
+int probe_next_option(CliParser *p, ProbeArgs *a, void (*usage)(FILE *), int *status);
+
 /** Parses "x,y,z"; -1 with a message when malformed. */
 int parse_vec3(const char *opt, const char *s, double v[3]);
 
@@ -56,6 +59,8 @@ int text_close(TextOut *t, int ok);
 
 /** Progress reporter for the library's callback: a percentage on stderr when it is a terminal. */
 void progress_print(void *user, const char *stage, double fraction);
+/** The library's options for a command: the irradiance fit's normals (0: its default), progress unless quiet. */
+GProbeOptions probe_options(int fit_normals, int quiet);
 
 /* ---- the approximations compared (methods.c) ---- */
 
@@ -91,6 +96,8 @@ int approx_make(const GProbe *p, int method, int n, const GProbeOptions *opt, Ap
 void approx_irradiance(const Approx *a, const GVec3 *normals, int m, double *E);
 void approx_free(Approx *a);
 
+/* ---- what eval and report measure (measure.c) ---- */
+
 /** One result row of eval and report. */
 typedef struct Row {
     int method, count;
@@ -99,16 +106,48 @@ typedef struct Row {
 } Row;
 /** The CSV of rows: technique,count,unit,mean_rel,max_rel,mean_norm,max_norm,smape,seconds. */
 void rows_csv(FILE *f, const Row *rows, int n);
-/** Parses a comma-separated list of counts (1..4096) into counts (at most max); the number or -1. */
-int parse_count_list(const char *s, int *counts, int max);
-/** Parses a comma-separated list of method names into use[method_count()]; 0 or -1. */
-int parse_method_list(const char *s, int *use);
-/** Makes one method at size n, times it and compares its irradiance at the m normals with truth (approx: 3 m
- * doubles of room); keep (may be NULL) receives the approximation. -1 with a message on failure. */
-int eval_one(const GProbe *p, int method, int n, const GProbeOptions *opt, const GVec3 *normals, int m,
-             const double *truth, double *approx, Row *row, Approx *keep, int quiet);
-/** The default method selection: everything but sh9. */
-void methods_default(int *use);
+
+/** The techniques, their sizes and the normals eval and report measure them at. */
+typedef struct EvalPlan {
+    int normals;             /* --normals M: the normals of the error figures (default 20000) */
+    int fit_normals;         /* --fit-normals N: the normals the irradiance fit fits (0: the library's default) */
+    int counts[64], ncounts; /* --counts: light and lobe counts */
+    int use[64];             /* --techniques: use[method] */
+} EvalPlan;
+/** getopt_long codes of the plan's options; a command's own codes start at PLAN_OPT_OWN. */
+enum { PLAN_OPT_NORMALS = PROBE_OPT_OWN, PLAN_OPT_FIT, PLAN_OPT_COUNTS, PLAN_OPT_TECHNIQUES, PLAN_OPT_OWN };
+/** The option table entries of --normals, --fit-normals, --counts and --techniques. */
+#define EVAL_PLAN_OPTIONS                                                                                            \
+    {"normals", required_argument, NULL, PLAN_OPT_NORMALS}, {"fit-normals", required_argument, NULL, PLAN_OPT_FIT}, \
+        {"counts", required_argument, NULL, PLAN_OPT_COUNTS},                                                        \
+        {"techniques", required_argument, NULL, PLAN_OPT_TECHNIQUES}
+/** A plan of 20000 normals, the given counts, every technique but sh9 and the fit's default normals. */
+void eval_plan_init(EvalPlan *plan, const int *counts, int ncounts);
+/** Handles the option of code c (value v) when it is one of the plan's: 1 when handled, 0 when it is not one of
+ * them, -1 on a bad value (message printed). */
+int eval_plan_option(EvalPlan *plan, int c, const char *v);
+/** The most rows a plan makes. */
+int eval_plan_max_rows(const EvalPlan *plan);
+
+/** The ground truth at m normals spread evenly over the sphere, and room for an approximation's irradiance
+ * there (3 doubles a normal each). */
+typedef struct Truth {
+    int m;
+    GVec3 *normals;
+    double *truth, *approx;
+} Truth;
+/** Allocates for m normals: 0, or -1 when out of memory (nothing printed). */
+int truth_alloc(Truth *t, int m);
+/** Spreads the normals and sums the probe's irradiance at each (the paper's Eq. 4). */
+int truth_compute(Truth *t, const GProbe *p, GError *err);
+void truth_free(Truth *t);
+
+/** Receives one measured technique and size with its approximation (freed after the call); 0 to go on. */
+typedef int (*EvalRowFn)(void *user, const Row *row, const Approx *a);
+/** Makes every technique of the plan at each of its sizes, in the order of methods.c's list, times it and
+ * compares its irradiance at the truth's normals (printing a line each unless quiet); each goes to fn. 0, or -1
+ * when a technique failed (message printed) or fn returned non-zero. */
+int eval_plan_run(const EvalPlan *plan, const GProbe *p, Truth *truth, int quiet, EvalRowFn fn, void *user);
 
 /** The operands after the options: a usage error (2, message printed) when there are any. */
 int no_operands(const CliParser *p);

@@ -2,12 +2,11 @@
  * (after Madsen & Laursen, "A Comparison of Techniques for Approximating Full Image-Based Lighting").
  * main.c: the command dispatch and the pieces every command shares. */
 #include "gprobe.h"
+#include "../common/startup.h"
 
 #include <generic/services/image.h>
 
-#include <generic/builtins.h>
 #include <generic/memory.h>
-#include <generic/plugin.h>
 
 #include <errno.h>
 #include <math.h>
@@ -44,38 +43,26 @@ static void usage(FILE *f)
 
 int main(int argc, char **argv)
 {
-    GError reg_err;
-    if (generic_register_builtins(&reg_err) != G_OK) {
-        fprintf(stderr, "%s\n", reg_err.message);
-        return 1;
-    }
-    if (gplugin_load_args(&argc, argv, &reg_err) != G_OK) {
-        fprintf(stderr, "gprobe: %s\n", reg_err.message);
-        return reg_err.code == G_ERR_INVALID ? 2 : 1;
-    }
+    int rc = startup("gprobe", &argc, argv);
+    if (rc >= 0)
+        return rc;
     if (argc < 2 || strcmp(argv[1], "-h") == 0 || strcmp(argv[1], "--help") == 0) {
         usage(argc < 2 ? stderr : stdout);
         return argc < 2 ? 2 : 0;
     }
     if (strcmp(argv[1], "--version") == 0)
         return cli_version("gprobe");
-    const char *cmd = argv[1];
-    if (strcmp(cmd, "eval") == 0)
-        return cmd_eval(argc - 1, argv + 1);
-    if (strcmp(cmd, "approx") == 0)
-        return cmd_approx(argc - 1, argv + 1);
-    if (strcmp(cmd, "irradiance") == 0)
-        return cmd_irradiance(argc - 1, argv + 1);
-    if (strcmp(cmd, "convert") == 0)
-        return cmd_convert(argc - 1, argv + 1);
-    if (strcmp(cmd, "compare") == 0)
-        return cmd_compare(argc - 1, argv + 1);
-    if (strcmp(cmd, "sky") == 0)
-        return cmd_sky(argc - 1, argv + 1);
-    if (strcmp(cmd, "report") == 0)
-        return cmd_report(argc - 1, argv + 1);
+    static const struct {
+        const char *name;
+        int (*run)(int argc, char **argv);
+    } commands[] = {{"eval", cmd_eval},       {"approx", cmd_approx},   {"irradiance", cmd_irradiance},
+                    {"convert", cmd_convert}, {"compare", cmd_compare}, {"sky", cmd_sky},
+                    {"report", cmd_report}};
+    for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
+        if (strcmp(argv[1], commands[i].name) == 0)
+            return commands[i].run(argc - 1, argv + 1);
     fprintf(stderr, "gprobe: unknown command '%s' (expected eval, report, approx, irradiance, convert, compare or "
-            "sky)\n", cmd);
+            "sky)\n", argv[1]);
     return 2;
 }
 
@@ -103,19 +90,6 @@ int no_operands(const CliParser *p)
     char **rest = cli_operands(p, &n);
     if (n > 0)
         return cli_usage_error(p->prog, "unexpected argument '%s'", rest[0]);
-    return 0;
-}
-
-int parse_int(const char *opt, const char *s, long lo, long hi, int *out)
-{
-    char *end;
-    errno = 0;
-    long v = strtol(s, &end, 10);
-    if (errno || end == s || *end || v < lo || v > hi) {
-        fprintf(stderr, "gprobe: %s expects a whole number in [%ld, %ld], got '%s'\n", opt, lo, hi, s);
-        return -1;
-    }
-    *out = (int)v;
     return 0;
 }
 
@@ -166,6 +140,21 @@ int probe_args_option(ProbeArgs *a, int c, const char *v)
     }
 }
 
+int probe_next_option(CliParser *p, ProbeArgs *a, void (*usage)(FILE *), int *status)
+{
+    int c;
+    while ((c = cli_next_own(p, "gprobe", usage, status)) >= 0) {
+        int r = probe_args_option(a, c, optarg);
+        if (r == 0)
+            return c;
+        if (r < 0) {
+            *status = CLI_USAGE;
+            return CLI_EXIT;
+        }
+    }
+    return c;
+}
+
 GProbe *probe_args_load(const ProbeArgs *a)
 {
     if (!a->path) {
@@ -179,9 +168,8 @@ GProbe *probe_args_load(const ProbeArgs *a)
         return NULL;
     }
     if (gprobe_clamped_count(p) > 0 && !a->quiet)
-        fprintf(stderr, "gprobe: warning: %s: %ld pixels had negative, NaN or infinite values (set to 0) or values above "
-                "%g (clamped)\n", a->path,
-                gprobe_clamped_count(p), (double)GPROBE_MAX_RADIANCE);
+        fprintf(stderr, "gprobe: warning: %s: %ld pixels had negative, NaN or infinite values (set to 0) or values "
+                "above %g (clamped)\n", a->path, gprobe_clamped_count(p), (double)GPROBE_MAX_RADIANCE);
     if (a->rotate) {
         double R[9];
         gprobe_rotation_xyz(a->rot[0], a->rot[1], a->rot[2], R);
@@ -251,6 +239,15 @@ int text_close(TextOut *t, int ok)
     }
     gmem_free(t->path);
     return rc;
+}
+
+GProbeOptions probe_options(int fit_normals, int quiet)
+{
+    GProbeOptions opt = {0};
+    opt.fit_normals = fit_normals;
+    if (!quiet)
+        opt.progress = progress_print;
+    return opt;
 }
 
 void progress_print(void *user, const char *stage, double fraction)

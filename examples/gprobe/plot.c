@@ -1,5 +1,6 @@
 /* plot.c - the Fig. 6 plot of `gprobe eval`: error against the number of lights, drawn by gnuplot. */
 #include "gprobe.h"
+#include "../common/gnuplot.h"
 
 #include <generic/services/file.h>
 #include <generic/services/image.h>
@@ -14,16 +15,8 @@
 
 int plot_check_gnuplot(void)
 {
-    const char *path = getenv("PATH");
-    char buf[4096];
-    for (const char *p = path ? path : "/usr/bin:/bin"; *p;) {
-        const char *e = strchr(p, ':');
-        size_t n = e ? (size_t)(e - p) : strlen(p);
-        snprintf(buf, sizeof buf, "%.*s/gnuplot", (int)n, n ? p : ".");
-        if (access(buf, X_OK) == 0)
-            return 0;
-        p += n + (e ? 1 : 0);
-    }
+    if (gnuplot_found())
+        return 0;
     fprintf(stderr, "gprobe: --plot needs gnuplot, which is not installed (Debian: apt-get install gnuplot-nox)\n");
     return -1;
 }
@@ -37,19 +30,6 @@ typedef struct Series {
     int n;
     double x[64], y[64][4];
 } Series;
-
-/* Writes s single-quoted for gnuplot ('' escapes a quote). */
-static void put_quoted(FILE *f, const char *s)
-{
-    fputc('\'', f);
-    for (; *s; s++) {
-        if (*s == '\'')
-            fputc('\'', f);
-        if (*s != '\n')
-            fputc(*s, f);
-    }
-    fputc('\'', f);
-}
 
 static int read_csv(const char *csv, Series *series, int *nseries, double sh9[4], int *have_sh9)
 {
@@ -102,13 +82,130 @@ static int read_csv(const char *csv, Series *series, int *nseries, double sh9[4]
     return 0;
 }
 
+/* One colour per method of methods.c's list, whatever methods the CSV has. */
+static const char *const colours[MAX_SERIES] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b",
+                                                "#e377c2", "#17becf", "#bcbd22", "#7f7f7f", "#393b79", "#e7969c",
+                                                "#000000", "#637939", "#843c39", "#3182bd"};
+
+/* The figure: 1500 x 760 pixels, Sans 11 (pngcairo: a line 17 pixels high, the legend sized by characters 9
+ * pixels wide). */
+enum { FIG_W = 1500, FIG_H = 760, FIG_FONT = 11 };
+#define FIG_LINE (1.55 * FIG_FONT)
+#define FIG_CHAR (0.82 * FIG_FONT)
+
+/* The data blocks, one per series: N, then mean and max of each measure. */
+static void write_series(FILE *g, const Series *series, int ns)
+{
+    for (int k = 0; k < ns; k++) {
+        fprintf(g, "$s%d << EOD\n", k);
+        for (int i = 0; i < series[k].n; i++)
+            fprintf(g, "%g %g %g %g %g\n", series[k].x[i], series[k].y[i][0], series[k].y[i][1], series[k].y[i][2],
+                    series[k].y[i][3]);
+        fprintf(g, "EOD\n");
+    }
+}
+
+/* The layout, in screen fractions: the title on top, the two panels side by side, under them the legend across
+ * the figure (as many columns as fit, the rows it takes), so that it covers neither axis label. */
+typedef struct Layout {
+    int cols, rows;
+    double key_top;      /* the legend's area is [0, key_top] */
+    double panel_bottom; /* above the legend: room for the tic labels and the x label */
+} Layout;
+
+static Layout layout_of(int entries, int longest)
+{
+    Layout t;
+    t.cols = (int)((FIG_W - 4 * FIG_CHAR) / ((longest + 10) * FIG_CHAR)); /* text, sample, gaps */
+    t.cols = t.cols < 1 ? 1 : t.cols > entries ? entries : t.cols;
+    t.rows = (entries + t.cols - 1) / t.cols;
+    t.key_top = (t.rows + 1.0) * FIG_LINE / FIG_H;
+    t.panel_bottom = t.key_top + 3.0 * FIG_LINE / FIG_H;
+    return t;
+}
+
+/* The logarithmic axes: N at powers of two from xmin to xmax, the error in percent. */
+static void write_axes(FILE *g, double xmin, double xmax)
+{
+    fprintf(g, "set logscale xy\nset grid xtics ytics mytics\nset xrange [%g:%g]\nset xtics (", xmin / 1.25,
+            xmax * 1.25);
+    for (double x = 1; x <= xmax * 1.01; x *= 2)
+        if (x >= xmin * 0.99)
+            fprintf(g, "%s%g", x > xmin * 1.01 ? "," : "", x);
+    fprintf(g, ")\nset xlabel 'N: lights, coefficients or lobes (solid: mean, dashed: max)'\n"
+               "set ylabel 'irradiance error (%%)'\nunset key\n");
+}
+
+/* Panel 0 (relative to the true irradiance, on the left) or 1 (normalised by the largest, on the right). */
+static void write_panel(FILE *g, const Layout *t, int panel, const Series *series, int ns, const double sh9[4],
+                        int have_sh9)
+{
+    fprintf(g, "set lmargin at screen %.2f\nset rmargin at screen %.2f\nset bmargin at screen %.4f\n"
+               "set tmargin at screen 0.9\n",
+            panel == 0 ? 0.06 : 0.56, panel == 0 ? 0.48 : 0.98, t->panel_bottom);
+    fprintf(g, "set title '%s'\nplot ", panel == 0 ? "relative to the true irradiance (the paper''s Fig. 6 measure)"
+                                                   : "normalised by the largest irradiance");
+    int first = 1;
+    for (int k = 0; k < ns; k++) {
+        const char *c = colours[series[k].method % MAX_SERIES];
+        fprintf(g, "%s$s%d using 1:%d with linespoints lw 2 pt 7 lc rgb '%s' notitle, "
+                   "$s%d using 1:%d with linespoints lw 2 dt 2 pt 6 lc rgb '%s' notitle",
+                first ? "" : ", ", k, 2 + 2 * panel, c, k, 3 + 2 * panel, c);
+        first = 0;
+    }
+    if (have_sh9) {
+        double mean = sh9[2 * panel], max = sh9[2 * panel + 1];
+        if (mean > 0.0)
+            fprintf(g, "%s%g with lines lw 2 lc rgb 'gray40' notitle, %g with lines lw 2 dt 2 lc rgb 'gray40' notitle",
+                    first ? "" : ", ", mean, max);
+    }
+    fputc('\n', g);
+}
+
+/* The legend of both panels: a plot of nothing across the bottom of the figure whose only mark is its key. */
+static void write_legend(FILE *g, const Layout *t, const Series *series, int ns, int have_sh9)
+{
+    fprintf(g, "unset title\nunset xlabel\nunset ylabel\nunset logscale\nunset grid\nunset border\nunset tics\n"
+               "set xrange [0:1]\nset yrange [0:1]\n"
+               "set lmargin at screen 0.02\nset rmargin at screen 0.98\nset bmargin at screen 0\n"
+               "set tmargin at screen %.4f\n"
+               "set key inside center center horizontal maxcols %d maxrows %d box\nplot ",
+            t->key_top, t->cols, t->rows);
+    for (int k = 0; k < ns; k++)
+        fprintf(g, "%sNaN with linespoints lw 2 pt 7 lc rgb '%s' title '%s'", k ? ", " : "",
+                colours[series[k].method % MAX_SERIES], series[k].name);
+    if (have_sh9)
+        fprintf(g, "%sNaN with lines lw 2 lc rgb 'gray40' title 'sh9 (9 coefficients)'", ns ? ", " : "");
+    fputc('\n', g);
+}
+
+/* Ends gnuplot's run: its picture (the temporary of out) must decode whole, a full disk would have cut it short;
+ * then it is renamed into place. 0, or -1 with a message. */
+static int finish(FILE *g, GFileOutput *out, const char *png)
+{
+    int st = pclose(g);
+    int ok = st != -1 && WIFEXITED(st) && WEXITSTATUS(st) == 0;
+    GError err;
+    GImage check = {0};
+    if (ok && gimage_read(out->temp, GIMAGE_READ_RGB, &check, &err) != G_OK) {
+        fprintf(stderr, "gprobe: gnuplot's picture %s is not readable: %s\n", png, err.message);
+        ok = 0;
+    }
+    gimage_free(&check);
+    if (!ok) {
+        fprintf(stderr, "gprobe: gnuplot failed to draw %s\n", png);
+        gfile_output_abort(out);
+        return -1;
+    }
+    if (gfile_output_commit(out, -1, png, &err) != G_OK) {
+        fprintf(stderr, "gprobe: %s\n", err.message);
+        return -1;
+    }
+    return 0;
+}
+
 int plot_errors(const char *csv, const char *png, const char *title)
 {
-    /* one colour per method of methods.c's list, whatever methods the CSV has */
-    static const char *const colours[MAX_SERIES] = {"#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e",
-                                                    "#8c564b", "#e377c2", "#17becf", "#bcbd22", "#7f7f7f",
-                                                    "#393b79", "#e7969c", "#000000", "#637939", "#843c39",
-                                                    "#3182bd"};
     static Series series[MAX_SERIES];
     int ns, have_sh9;
     double sh9[4];
@@ -119,87 +216,39 @@ int plot_errors(const char *csv, const char *png, const char *title)
         return -1;
     }
     double xmin = 1e9, xmax = 0.0;
-    for (int k = 0; k < ns; k++)
+    int longest = have_sh9 ? (int)strlen("sh9 (9 coefficients)") : 0;
+    for (int k = 0; k < ns; k++) {
         for (int i = 0; i < series[k].n; i++) {
             xmin = series[k].x[i] < xmin ? series[k].x[i] : xmin;
             xmax = series[k].x[i] > xmax ? series[k].x[i] : xmax;
         }
+        longest = (int)strlen(series[k].name) > longest ? (int)strlen(series[k].name) : longest;
+    }
     if (xmax <= 0.0)
         xmin = 1.0, xmax = 128.0;
 
-    GFileOutput out; /* gnuplot writes the temporary by name; it is checked and renamed here */
+    GFileOutput out; /* gnuplot writes the temporary by name; finish() checks and renames it */
     GError err;
     if (gfile_output_begin(&out, png, &err) != G_OK) {
         fprintf(stderr, "gprobe: %s\n", err.message);
         return -1;
     }
-    const char *tmp = out.temp;
     FILE *g = popen("gnuplot", "w");
     if (!g) {
         fprintf(stderr, "gprobe: cannot run gnuplot: %s\n", strerror(errno));
         gfile_output_abort(&out);
         return -1;
     }
-    fprintf(g, "set terminal pngcairo size 1500,760 font 'Sans,11'\nset output ");
-    put_quoted(g, tmp);
-    fputc('\n', g);
-    for (int k = 0; k < ns; k++) {
-        fprintf(g, "$s%d << EOD\n", k);
-        for (int i = 0; i < series[k].n; i++)
-            fprintf(g, "%g %g %g %g %g\n", series[k].x[i], series[k].y[i][0], series[k].y[i][1], series[k].y[i][2],
-                    series[k].y[i][3]);
-        fprintf(g, "EOD\n");
-    }
-    fprintf(g, "set multiplot layout 1,2 title ");
-    put_quoted(g, title);
-    fprintf(g, " font 'Sans,13'\n"
-               "set logscale xy\nset grid xtics ytics mytics\n"
-               "set key outside below center horizontal maxrows 4 box\n" /* beside the data, never over it */
-               "set xrange [%g:%g]\nset xtics (",
-            xmin / 1.25, xmax * 1.25);
-    for (double x = 1; x <= xmax * 1.01; x *= 2)
-        if (x >= xmin * 0.99)
-            fprintf(g, "%s%g", x > xmin * 1.01 ? "," : "", x);
-    fprintf(g, ")\nset xlabel 'N: lights, coefficients or lobes (solid: mean, dashed: max)'\n"
-               "set ylabel 'irradiance error (%%)'\n");
-    for (int panel = 0; panel < 2; panel++) {
-        fprintf(g, "set title '%s'\nplot ", panel == 0 ? "relative to the true irradiance (the paper''s Fig. 6 measure)"
-                                                       : "normalised by the largest irradiance");
-        int first = 1;
-        for (int k = 0; k < ns; k++) {
-            const char *c = colours[series[k].method % MAX_SERIES];
-            fprintf(g, "%s$s%d using 1:%d with linespoints lw 2 pt 7 lc rgb '%s' title '%s', "
-                       "$s%d using 1:%d with linespoints lw 2 dt 2 pt 6 lc rgb '%s' notitle",
-                    first ? "" : ", ", k, 2 + 2 * panel, c, series[k].name, k, 3 + 2 * panel, c);
-            first = 0;
-        }
-        if (have_sh9) {
-            double mean = sh9[2 * panel], max = sh9[2 * panel + 1];
-            if (mean > 0.0)
-                fprintf(g, "%s%g with lines lw 2 lc rgb 'gray40' title 'sh9 (9 coefficients)', "
-                           "%g with lines lw 2 dt 2 lc rgb 'gray40' notitle",
-                        first ? "" : ", ", mean, max);
-        }
-        fputc('\n', g);
-    }
+    const Layout t = layout_of(ns + have_sh9, longest);
+    gnuplot_begin_png(g, FIG_W, FIG_H, FIG_FONT, out.temp);
+    write_series(g, series, ns);
+    fprintf(g, "set multiplot title ");
+    gnuplot_put_quoted(g, title);
+    fprintf(g, " font 'Sans,13'\n");
+    write_axes(g, xmin, xmax);
+    for (int panel = 0; panel < 2; panel++)
+        write_panel(g, &t, panel, series, ns, sh9, have_sh9);
+    write_legend(g, &t, series, ns, have_sh9);
     fprintf(g, "unset multiplot\nset output\n");
-    int st = pclose(g);
-    int ok = st != -1 && WIFEXITED(st) && WEXITSTATUS(st) == 0;
-    GImage check = {0}; /* the picture must decode whole: a full disk would have cut it short */
-    if (ok && gimage_read(tmp, GIMAGE_READ_RGB, &check, &err) != G_OK) {
-        fprintf(stderr, "gprobe: gnuplot's picture %s is not readable: %s\n", png, err.message);
-        ok = 0;
-    }
-    gimage_free(&check);
-    if (!ok) {
-        fprintf(stderr, "gprobe: gnuplot failed to draw %s\n", png);
-        gfile_output_abort(&out);
-        return -1;
-    }
-    if (gfile_output_commit(&out, -1, png, &err) != G_OK) {
-        fprintf(stderr, "gprobe: %s\n", err.message);
-        return -1;
-    }
-
-    return ok ? 0 : -1;
+    return finish(g, &out, png);
 }

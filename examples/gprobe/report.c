@@ -20,6 +20,9 @@
 #include <string.h>
 #include <sys/stat.h>
 
+/* getopt_long codes of report's own long options. */
+enum { OPT_SIZE = PLAN_OPT_OWN, OPT_SCALE, OPT_TITLE };
+
 static void report_usage(FILE *f)
 {
     fprintf(f,
@@ -243,226 +246,254 @@ static int write_pages(const Page *pg, const char *title, const char *probe_path
     return text_close(&t, 1);
 }
 
-int cmd_report(int argc, char **argv)
+/* The command line of report. */
+typedef struct ReportArgs {
+    ProbeArgs probe;
+    EvalPlan plan;
+    const char *dir, *title; /* -o, --title */
+    int size;                /* --size H: image height */
+    double scale_pct;        /* --error-scale */
+} ReportArgs;
+
+/* Handles one of report's own options: 0, or -1 on a usage error (message printed). */
+static int report_option(ReportArgs *a, int c, const char *v)
 {
-    ProbeArgs pa = {0};
-    const char *dir = NULL, *title = NULL;
-    int counts[64] = {8, 16, 32}, ncounts = 3, size = 64, m = 20000, fit = 0, use[64];
-    double scale_pct = 25.0;
-    methods_default(use);
-    enum { OPT_OUTPUT = PROBE_OPT_OWN, OPT_COUNTS, OPT_TECHNIQUES, OPT_SIZE, OPT_NORMALS, OPT_FIT, OPT_SCALE,
-           OPT_TITLE };
+    if (c == 'o') {
+        a->dir = v;
+    } else if (c == OPT_SIZE) {
+        return cli_int("gprobe", "--size", v, 4, 1024, &a->size);
+    } else if (c == OPT_SCALE) {
+        char *end;
+        a->scale_pct = strtod(v, &end);
+        if (end == v || *end || !(a->scale_pct > 0.0 && a->scale_pct <= 1e6)) {
+            fprintf(stderr, "gprobe report: --error-scale expects a percentage above 0, got '%s'\n", v);
+            return -1;
+        }
+    } else if (c == OPT_TITLE) {
+        a->title = v;
+    } else {
+        return -1;
+    }
+    return 0;
+}
+
+/* Reads the command line into a: -1 to go on, else the exit status to end with. */
+static int report_args(int argc, char **argv, ReportArgs *a)
+{
+    static const int counts[] = {8, 16, 32};
     static const struct option longopts[] = {
-        CLI_COMMON_OPTIONS, PROBE_ARGS_OPTIONS,
-        {"output", required_argument, NULL, 'o'}, {"counts", required_argument, NULL, OPT_COUNTS},
-        {"techniques", required_argument, NULL, OPT_TECHNIQUES}, {"size", required_argument, NULL, OPT_SIZE},
-        {"normals", required_argument, NULL, OPT_NORMALS}, {"fit-normals", required_argument, NULL, OPT_FIT},
+        CLI_COMMON_OPTIONS, PROBE_ARGS_OPTIONS, EVAL_PLAN_OPTIONS,
+        {"output", required_argument, NULL, 'o'}, {"size", required_argument, NULL, OPT_SIZE},
         {"error-scale", required_argument, NULL, OPT_SCALE}, {"title", required_argument, NULL, OPT_TITLE},
         {NULL, 0, NULL, 0},
     };
+    memset(a, 0, sizeof *a);
+    eval_plan_init(&a->plan, counts, (int)(sizeof counts / sizeof *counts));
+    a->size = 64;
+    a->scale_pct = 25.0;
     CliParser cp;
     cli_begin(&cp, "gprobe report", argc, argv, "hqo:", longopts);
-    int c;
-    while ((c = cli_next(&cp)) != -1) {
-        const char *v = optarg;
-        int r = probe_args_option(&pa, c, v);
-        if (r < 0)
+    int c, status = CLI_OK;
+    while ((c = probe_next_option(&cp, &a->probe, report_usage, &status)) != -1) {
+        if (c == CLI_EXIT)
+            return status;
+        int r = eval_plan_option(&a->plan, c, optarg);
+        if (r < 0 || (r == 0 && report_option(a, c, optarg) != 0))
             return CLI_USAGE;
-        if (r > 0)
-            continue;
-        if (c == 'h') {
-            report_usage(stdout);
-            return CLI_OK;
-        } else if (c == CLI_VERSION) {
-            return cli_version("gprobe");
-        } else if (c == 'o') {
-            dir = v;
-        } else if (c == OPT_COUNTS) {
-            if ((ncounts = parse_count_list(v, counts, 64)) < 0)
-                return CLI_USAGE;
-        } else if (c == OPT_TECHNIQUES) {
-            if (parse_method_list(v, use) != 0)
-                return CLI_USAGE;
-        } else if (c == OPT_SIZE) {
-            if (parse_int("--size", v, 4, 1024, &size) != 0)
-                return CLI_USAGE;
-        } else if (c == OPT_NORMALS) {
-            if (parse_int("--normals", v, 1, 10000000, &m) != 0)
-                return CLI_USAGE;
-        } else if (c == OPT_FIT) {
-            if (parse_int("--fit-normals", v, 2, 1000000, &fit) != 0)
-                return CLI_USAGE;
-        } else if (c == OPT_SCALE) {
-            char *end;
-            scale_pct = strtod(v, &end);
-            if (end == v || *end || !(scale_pct > 0.0 && scale_pct <= 1e6)) {
-                fprintf(stderr, "gprobe report: --error-scale expects a percentage above 0, got '%s'\n", v);
-                return CLI_USAGE;
-            }
-        } else if (c == OPT_TITLE) {
-            title = v;
-        } else {
-            return CLI_USAGE;
-        }
     }
     if (no_operands(&cp))
         return CLI_USAGE;
-    if (!dir) {
+    if (!a->dir) {
         fprintf(stderr, "gprobe report: -o DIR is required (gprobe report --help)\n");
-        return 2;
+        return CLI_USAGE;
     }
+    return -1;
+}
+
+/* DIR and DIR/images, made when missing, and a writer for the PNG images: 0, or -1 with a message. */
+static int make_dirs(const char *dir)
+{
     char sub[4096];
     snprintf(sub, sizeof sub, "%s/images", dir);
     if (make_dir(dir) != 0 || make_dir(sub) != 0)
-        return 1;
+        return -1;
     snprintf(sub, sizeof sub, "%s/images/error-scale.png", dir);
-    if (output_check(sub, 1) != 0)
-        return 1;
-    int have_gnuplot = plot_check_gnuplot() == 0;
-    if (!have_gnuplot)
-        fprintf(stderr, "gprobe report: the page will have no plot\n");
-    GProbe *p = probe_args_load(&pa);
-    if (!p)
-        return 1;
+    return output_check(sub, 1);
+}
 
-    Page pg = {dir, 2 * size, size, NULL, NULL, NULL, 0.0, 0.0, scale_pct / 100.0};
-    const size_t npix = (size_t)pg.w * pg.h;
-    int status = 1, nent = 0;
-    GVec3 *normals = gmem_calloc((size_t)m, sizeof *normals);
-    double *truth = gmem_calloc((size_t)m * 3, sizeof(double)), *approx = gmem_calloc((size_t)m * 3, sizeof(double));
-    double *rad = gmem_calloc(npix * 3, sizeof(double));
-    Entry *ent = gmem_calloc((size_t)method_count() * (ncounts + GPROBE_SH_MAX_ORDER), sizeof *ent);
-    pg.dirs = gmem_calloc(npix, sizeof *pg.dirs);
-    pg.truth = gmem_calloc(npix * 3, sizeof(double));
-    pg.approx = gmem_calloc(npix * 3, sizeof(double));
-    GProbe *grid = NULL;
-    GError err;
-    if (!normals || !truth || !approx || !rad || !ent || !pg.dirs || !pg.truth || !pg.approx) {
+/* One run of the report: the page's images, the ground truth at the normals, and a row per technique and size. */
+typedef struct Report {
+    const ReportArgs *args;
+    const GProbe *probe;
+    Page page;
+    GProbe *grid; /* a black probe of the page's size: its pixels' directions */
+    Truth truth;
+    double *rad;  /* scratch: a radiance image */
+    Entry *entries;
+    int n;
+} Report;
+
+/* The page's pixel directions and the true irradiance at them and at the normals: 0, or -1 with a message. */
+static int report_start(Report *r)
+{
+    Page *pg = &r->page;
+    const size_t npix = (size_t)pg->w * pg->h;
+    int oom = truth_alloc(&r->truth, r->args->plan.normals) != 0;
+    r->rad = gmem_calloc(npix * 3, sizeof(double));
+    r->entries = gmem_calloc((size_t)eval_plan_max_rows(&r->args->plan), sizeof *r->entries);
+    pg->dirs = gmem_calloc(npix, sizeof *pg->dirs);
+    pg->truth = gmem_calloc(npix * 3, sizeof(double));
+    pg->approx = gmem_calloc(npix * 3, sizeof(double));
+    if (oom || !r->rad || !r->entries || !pg->dirs || !pg->truth || !pg->approx) {
         fprintf(stderr, "gprobe: out of memory\n");
-        goto done;
+        return -1;
     }
-    if (gprobe_create(pg.w, pg.h, NULL, &grid, &err) != G_OK) {
+    GError err;
+    if (gprobe_create(pg->w, pg->h, NULL, &r->grid, &err) != G_OK) {
         fprintf(stderr, "gprobe: %s\n", err.message);
-        goto done;
+        return -1;
     }
-    for (int v2 = 0; v2 < pg.h; v2++)
-        for (int u = 0; u < pg.w; u++)
-            pg.dirs[(size_t)v2 * pg.w + u] = gprobe_direction(grid, u + 0.5, v2 + 0.5);
-    gprobe_fibonacci(m, normals);
-    if (gprobe_irradiance(p, normals, m, truth, &err) != G_OK || gprobe_irradiance(p, pg.dirs, (int)npix, pg.truth, &err) != G_OK) {
+    for (int v = 0; v < pg->h; v++)
+        for (int u = 0; u < pg->w; u++)
+            pg->dirs[(size_t)v * pg->w + u] = gprobe_direction(r->grid, u + 0.5, v + 0.5);
+    if (truth_compute(&r->truth, r->probe, &err) != G_OK ||
+        gprobe_irradiance(r->probe, pg->dirs, (int)npix, pg->truth, &err) != G_OK) {
         fprintf(stderr, "gprobe: %s\n", err.message);
-        goto done;
+        return -1;
     }
-    /* the reference: the probe (4 x 4 samples a pixel) and its irradiance; the exposures */
+    return 0;
+}
+
+/* The reference row (the probe, 4 x 4 samples a pixel, and its irradiance), the exposures they set, and the
+ * error ramp's bar: 0, or -1 with a message. */
+static int write_reference(Report *r)
+{
+    Page *pg = &r->page;
     double lum_sum = 0.0, omega_sum = 0.0, emax = 0.0;
-    for (int v2 = 0; v2 < pg.h; v2++)
-        for (int u = 0; u < pg.w; u++) {
-            double *o = rad + 3 * ((size_t)v2 * pg.w + u);
+    for (int v = 0; v < pg->h; v++)
+        for (int u = 0; u < pg->w; u++) {
+            double *o = r->rad + 3 * ((size_t)v * pg->w + u);
             for (int s = 0; s < 16; s++) {
                 float c[3];
-                gprobe_radiance(p, gprobe_direction(grid, u + (s % 4 + 0.5) / 4.0, v2 + (s / 4 + 0.5) / 4.0), c);
+                gprobe_radiance(r->probe, gprobe_direction(r->grid, u + (s % 4 + 0.5) / 4.0, v + (s / 4 + 0.5) / 4.0),
+                                c);
                 for (int k = 0; k < 3; k++)
                     o[k] += c[k] / 16.0;
             }
-            double omega = sin(M_PI * (v2 + 0.5) / pg.h);
+            double omega = sin(M_PI * (v + 0.5) / pg->h);
             lum_sum += luminance(o) * omega;
             omega_sum += omega;
         }
-    for (size_t i = 0; i < npix; i++)
-        emax = fmax(emax, luminance(pg.truth + 3 * i));
-    pg.kr = lum_sum > 0.0 ? 0.18 * omega_sum / lum_sum : 1.0;
-    pg.ke = emax > 0.0 ? 0.8 / emax : 1.0;
-    if (write_scaled(&pg, "reference-radiance.png", rad, pg.kr) || write_scaled(&pg, "reference-irradiance.png", pg.truth, pg.ke))
-        goto done;
+    for (size_t i = 0; i < (size_t)pg->w * pg->h; i++)
+        emax = fmax(emax, luminance(pg->truth + 3 * i));
+    pg->kr = lum_sum > 0.0 ? 0.18 * omega_sum / lum_sum : 1.0;
+    pg->ke = emax > 0.0 ? 0.8 / emax : 1.0;
+    if (write_scaled(pg, "reference-radiance.png", r->rad, pg->kr) ||
+        write_scaled(pg, "reference-irradiance.png", pg->truth, pg->ke))
+        return -1;
     GImage bar;
+    GError err;
     if (gimage_create(&bar, 256, 16, 3, &err) != G_OK) {
         fprintf(stderr, "gprobe: %s\n", err.message);
-        goto done;
+        return -1;
     }
     for (int y = 0; y < 16; y++)
         for (int x = 0; x < 256; x++)
             ramp_colour((x + 0.5) / 256.0, bar.pixels + 3 * (y * 256 + x));
-    int brc = write_image(&pg, "error-scale.png", &bar);
+    int rc = write_image(pg, "error-scale.png", &bar);
     gimage_free(&bar);
-    if (brc)
-        goto done;
+    return rc;
+}
 
-    GProbeOptions opt = {0};
-    opt.fit_normals = fit;
-    if (!pa.quiet)
-        opt.progress = progress_print;
-    for (int t = 0; t < method_count(); t++) {
-        if (!use[t])
-            continue;
-        int sizes[64 + GPROBE_SH_MAX_ORDER];
-        int ns = method_sizes(t, counts, ncounts, fit, sizes, pa.quiet);
-        for (int c = 0; c < ns; c++) {
-            Approx a;
-            Entry *e = &ent[nent];
-            if (eval_one(p, t, sizes[c], &opt, normals, m, truth, approx, &e->row, &a, pa.quiet) != 0)
-                goto done;
-            char name[160];
-            const char *mn = method_get(t)->name;
-            approx_irradiance(&a, pg.dirs, (int)npix, pg.approx);
-            approx_radiance(&pg, p, &a, rad);
-            int rc = 0;
-            snprintf(name, sizeof name, "%s-%d-radiance.png", mn, sizes[c]);
-            rc |= write_scaled(&pg, name, rad, pg.kr);
-            snprintf(name, sizeof name, "%s-%d-irradiance.png", mn, sizes[c]);
-            rc |= write_scaled(&pg, name, pg.approx, pg.ke);
-            snprintf(name, sizeof name, "%s-%d-error.png", mn, sizes[c]);
-            rc |= write_error_map(&pg, name, &e->worst);
-            approx_free(&a);
-            if (rc)
-                goto done;
-            nent++;
-        }
-    }
+/* One technique and size: its radiance, irradiance and error images, and its entry. */
+static int report_row(void *user, const Row *row, const Approx *a)
+{
+    Report *r = user;
+    Page *pg = &r->page;
+    Entry *e = &r->entries[r->n];
+    const char *mn = method_get(row->method)->name;
+    char name[160];
+    int rc = 0;
+    e->row = *row;
+    approx_irradiance(a, pg->dirs, pg->w * pg->h, pg->approx);
+    approx_radiance(pg, r->probe, a, r->rad);
+    snprintf(name, sizeof name, "%s-%d-radiance.png", mn, row->count);
+    rc |= write_scaled(pg, name, r->rad, pg->kr);
+    snprintf(name, sizeof name, "%s-%d-irradiance.png", mn, row->count);
+    rc |= write_scaled(pg, name, pg->approx, pg->ke);
+    snprintf(name, sizeof name, "%s-%d-error.png", mn, row->count);
+    rc |= write_error_map(pg, name, &e->worst);
+    if (rc == 0)
+        r->n++;
+    return rc;
+}
 
-    /* the CSV, the plot and the pages */
-    Row *rows = gmem_calloc((size_t)nent + 1, sizeof *rows);
+/* DIR/errors.csv, the plot (when gnuplot is there) and the pages: 0, or -1 with a message. */
+static int report_finish(const Report *r, int have_gnuplot)
+{
+    const ReportArgs *a = r->args;
+    Row *rows = gmem_calloc((size_t)r->n + 1, sizeof *rows);
     if (!rows) {
         fprintf(stderr, "gprobe: out of memory\n");
-        goto done;
+        return -1;
     }
-    for (int i = 0; i < nent; i++)
-        rows[i] = ent[i].row;
+    for (int i = 0; i < r->n; i++)
+        rows[i] = r->entries[i].row;
     char path[4096];
-    snprintf(path, sizeof path, "%s/errors.csv", dir);
+    snprintf(path, sizeof path, "%s/errors.csv", a->dir);
     TextOut csv;
     int ok = text_open(&csv, path) == 0;
     if (ok) {
-        rows_csv(csv.f, rows, nent);
+        rows_csv(csv.f, rows, r->n);
         ok = text_close(&csv, 1) == 0;
     }
     gmem_free(rows);
     if (!ok)
-        goto done;
-    const char *base = strrchr(pa.path, '/');
-    const char *shown = title ? title : base ? base + 1 : pa.path;
-    int have_plot = 0;
+        return -1;
+    const char *base = strrchr(a->probe.path, '/');
+    const char *shown = a->title ? a->title : base ? base + 1 : a->probe.path;
     if (have_gnuplot) {
         char png[4096];
-        snprintf(png, sizeof png, "%s/fig6.png", dir);
+        snprintf(png, sizeof png, "%s/fig6.png", a->dir);
         if (plot_errors(path, png, shown) != 0)
-            goto done;
-        have_plot = 1;
+            return -1;
     }
-    if (write_pages(&pg, shown, pa.path, gprobe_width(p), gprobe_height(p), ent, nent, have_plot, m) != 0)
-        goto done;
-    if (!pa.quiet)
-        fprintf(stderr, "gprobe: %s/index.html: %d rows\n", dir, nent);
-    status = 0;
-done:
-    gprobe_destroy(grid);
-    gmem_free(normals);
-    gmem_free(truth);
-    gmem_free(approx);
-    gmem_free(rad);
-    gmem_free(ent);
-    gmem_free(pg.dirs);
-    gmem_free(pg.truth);
-    gmem_free(pg.approx);
+    return write_pages(&r->page, shown, a->probe.path, gprobe_width(r->probe), gprobe_height(r->probe), r->entries,
+                       r->n, have_gnuplot, a->plan.normals);
+}
+
+int cmd_report(int argc, char **argv)
+{
+    ReportArgs a;
+    int status = report_args(argc, argv, &a);
+    if (status >= 0)
+        return status;
+    if (make_dirs(a.dir) != 0)
+        return 1;
+    int have_gnuplot = plot_check_gnuplot() == 0;
+    if (!have_gnuplot)
+        fprintf(stderr, "gprobe report: the page will have no plot\n");
+    GProbe *p = probe_args_load(&a.probe);
+    if (!p)
+        return 1;
+    Report r = {.args = &a, .probe = p, .page = {a.dir, 2 * a.size, a.size, NULL, NULL, NULL, 0.0, 0.0,
+                                                 a.scale_pct / 100.0}};
+    if (report_start(&r) == 0 && write_reference(&r) == 0 &&
+        eval_plan_run(&a.plan, p, &r.truth, a.probe.quiet, report_row, &r) == 0 &&
+        report_finish(&r, have_gnuplot) == 0) {
+        if (!a.probe.quiet)
+            fprintf(stderr, "gprobe: %s/index.html: %d rows\n", a.dir, r.n);
+        status = 0;
+    } else {
+        status = 1;
+    }
+    gprobe_destroy(r.grid);
+    truth_free(&r.truth);
+    gmem_free(r.rad);
+    gmem_free(r.entries);
+    gmem_free(r.page.dirs);
+    gmem_free(r.page.truth);
+    gmem_free(r.page.approx);
     gprobe_destroy(p);
     return status;
 }

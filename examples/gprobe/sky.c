@@ -47,23 +47,16 @@ static void sky_usage(FILE *f)
                "  --version            the version\n" CLI_EXIT_STATUS_HELP);
 }
 
-static int parse_double(const char *opt, const char *s, double lo, double hi, double *out)
-{
-    char *end;
-    double v = strtod(s, &end);
-    if (end == s || *end || !(v >= lo && v <= hi)) {
-        fprintf(stderr, "gprobe: %s expects a number in [%g, %g], got '%s'\n", opt, lo, hi, s);
-        return -1;
-    }
-    *out = v;
-    return 0;
-}
+/* The command line of sky and the sky it describes. */
+typedef struct SkyArgs {
+    const char *out; /* -o */
+    int h;           /* --height */
+    double elev, azim, radius, e_sun, e_sky;
+} SkyArgs;
 
-int cmd_sky(int argc, char **argv)
+/* Reads the command line into a: -1 to go on, else the exit status to end with. */
+static int sky_args(int argc, char **argv, SkyArgs *a)
 {
-    const char *out = NULL;
-    int h = 64;
-    double elev = 40.0, azim = 130.0, radius = 3.0, e_sun = 3.0, e_sky = 1.0;
     enum { OPT_HEIGHT = CLI_FIRST_OWN, OPT_ELEV, OPT_AZIM, OPT_RADIUS, OPT_SUN, OPT_SKY };
     static const struct option longopts[] = {
         CLI_COMMON_OPTIONS, {"output", required_argument, NULL, 'o'}, {"height", required_argument, NULL, OPT_HEIGHT},
@@ -71,50 +64,154 @@ int cmd_sky(int argc, char **argv)
         {"sun-radius", required_argument, NULL, OPT_RADIUS}, {"sun-irradiance", required_argument, NULL, OPT_SUN},
         {"sky-irradiance", required_argument, NULL, OPT_SKY}, {NULL, 0, NULL, 0},
     };
+    *a = (SkyArgs){NULL, 64, 40.0, 130.0, 3.0, 3.0, 1.0};
     CliParser cp;
     cli_begin(&cp, "gprobe sky", argc, argv, "ho:", longopts);
-    int c;
-    while ((c = cli_next(&cp)) != -1) {
-        const char *v = optarg, *a = c == OPT_ELEV ? "--sun-elevation" : c == OPT_AZIM ? "--sun-azimuth"
-                                                  : c == OPT_RADIUS ? "--sun-radius" : c == OPT_SUN ? "--sun-irradiance"
-                                                                                                      : "--sky-irradiance";
-        int rc = 0;
-        if (c == 'h') {
-            sky_usage(stdout);
-            return CLI_OK;
-        } else if (c == CLI_VERSION) {
-            return cli_version("gprobe");
-        } else if (c == 'o') {
-            out = v;
-        } else if (c == OPT_HEIGHT) {
-            rc = parse_int("--height", v, 4, 8192, &h);
-        } else if (c == OPT_ELEV) {
-            rc = parse_double(a, v, -90.0, 90.0, &elev);
-        } else if (c == OPT_AZIM) {
-            rc = parse_double(a, v, -360.0, 360.0, &azim);
-        } else if (c == OPT_RADIUS) {
-            rc = parse_double(a, v, 0.05, 45.0, &radius);
-        } else if (c == OPT_SUN) {
-            rc = parse_double(a, v, 0.0, 1e9, &e_sun);
-        } else if (c == OPT_SKY) {
-            rc = parse_double(a, v, 0.0, 1e9, &e_sky);
-        } else {
-            return CLI_USAGE;
+    int c, status = CLI_OK;
+    while ((c = cli_next_own(&cp, "gprobe", sky_usage, &status)) != -1) {
+        const char *v = optarg;
+        int rc;
+        switch (c) {
+        case CLI_EXIT:
+            return status;
+        case 'o':
+            a->out = v;
+            rc = 0;
+            break;
+        case OPT_HEIGHT:
+            rc = cli_int("gprobe", "--height", v, 4, 8192, &a->h);
+            break;
+        case OPT_ELEV:
+            rc = cli_double("gprobe", "--sun-elevation", v, -90.0, 90.0, &a->elev);
+            break;
+        case OPT_AZIM:
+            rc = cli_double("gprobe", "--sun-azimuth", v, -360.0, 360.0, &a->azim);
+            break;
+        case OPT_RADIUS:
+            rc = cli_double("gprobe", "--sun-radius", v, 0.05, 45.0, &a->radius);
+            break;
+        case OPT_SUN:
+            rc = cli_double("gprobe", "--sun-irradiance", v, 0.0, 1e9, &a->e_sun);
+            break;
+        case OPT_SKY:
+            rc = cli_double("gprobe", "--sky-irradiance", v, 0.0, 1e9, &a->e_sky);
+            break;
+        default:
+            rc = -1;
         }
         if (rc)
             return CLI_USAGE;
     }
     if (no_operands(&cp))
         return CLI_USAGE;
-    if (!out) {
+    if (!a->out) {
         fprintf(stderr, "gprobe sky: -o FILE is required\n");
-        return 2;
+        return CLI_USAGE;
     }
-    if (output_check(out, 1) != 0)
+    return -1;
+}
+
+/* The picture being made: w x h RGB pixels, the share of each pixel the sun's disc covers, and the directions. */
+typedef struct Sky {
+    int w, h;
+    float *px;
+    double *sun_cov;
+    const GProbe *grid; /* a black probe of the size: only for its directions */
+    GVec3 sun;
+    double q; /* Q = q sin(theta) P, as the library weighs pixels */
+} Sky;
+
+static GVec3 pixel_dir(const Sky *s, int x, int y) { return gprobe_direction(s->grid, x + 0.5, y + 0.5); }
+
+/* The unscaled sky above the horizon and the sun's coverage of every pixel (none in the ground); the sky's
+ * irradiance on a horizontal surface into *sky_e and the sun's summed coverage weights into *sun_sum. */
+static void sky_fill(Sky *s, double cos_r, double *sky_e, double *sun_sum)
+{
+    *sky_e = *sun_sum = 0.0;
+    for (int y = 0; y < s->h; y++) {
+        double sin_t = sin(M_PI * (y + 0.5) / s->h);
+        for (int x = 0; x < s->w; x++) {
+            GVec3 d = pixel_dir(s, x, y);
+            float *p = s->px + ((size_t)y * s->w + x) * 3;
+            int covered = 0;
+            for (int j = 0; j < SKY_SUB; j++)
+                for (int i = 0; i < SKY_SUB; i++)
+                    covered += gvec3_dot(gprobe_direction(s->grid, x + (i + 0.5) / SKY_SUB, y + (j + 0.5) / SKY_SUB),
+                                         s->sun) >= cos_r;
+            double *cov = &s->sun_cov[(size_t)y * s->w + x];
+            *cov = d.z > 0.0 ? (double)covered / (SKY_SUB * SKY_SUB) : 0.0;
+            *sun_sum += *cov * s->q * sin_t;
+            if (d.z <= 0.0)
+                continue; /* ground: filled by sky_light */
+            double t = 1.0 - d.z, gamma = acos(fmax(-1.0, fmin(1.0, gvec3_dot(d, s->sun))));
+            double glow = 0.6 * exp(-gamma / 0.2), c[3];
+            for (int k = 0; k < 3; k++) {
+                c[k] = (1.0 - t) * sky_zenith[k] + t * sky_horizon[k] + glow * sun_colour[k];
+                p[k] = (float)c[k];
+            }
+            *sky_e += lum3(c) * s->q * sin_t * d.z;
+        }
+    }
+}
+
+/* Scales the sky by ks and adds the sun's disc of radiance ls; the horizontal irradiance of both into horiz. */
+static void sky_scale(Sky *s, double ks, double ls, double horiz[3])
+{
+    horiz[0] = horiz[1] = horiz[2] = 0.0;
+    for (int y = 0; y < s->h; y++) {
+        double sin_t = sin(M_PI * (y + 0.5) / s->h);
+        for (int x = 0; x < s->w; x++) {
+            GVec3 d = pixel_dir(s, x, y);
+            float *p = s->px + ((size_t)y * s->w + x) * 3;
+            double cov = s->sun_cov[(size_t)y * s->w + x];
+            for (int k = 0; k < 3; k++) {
+                p[k] = (float)(d.z > 0.0 ? ks * p[k] : 0.0);
+                p[k] += (float)(cov * ls * sun_colour[k]);
+                if (d.z > 0.0)
+                    horiz[k] += p[k] * s->q * sin_t * d.z;
+            }
+        }
+    }
+}
+
+/* The ground: Lambertian, lit by the horizontal irradiance horiz. */
+static void sky_ground(Sky *s, const double horiz[3])
+{
+    for (int y = 0; y < s->h; y++)
+        for (int x = 0; x < s->w; x++) {
+            float *p = s->px + ((size_t)y * s->w + x) * 3;
+            if (pixel_dir(s, x, y).z <= 0.0)
+                for (int k = 0; k < 3; k++)
+                    p[k] += (float)(ground_albedo[k] / M_PI * horiz[k]);
+        }
+}
+
+/* The sky of a into px (2 h x h, RGB): the sky scaled to its irradiance, the sun to its own, then the ground lit
+ * by both. */
+static void sky_render(const SkyArgs *a, const GProbe *grid, float *px, double *sun_cov)
+{
+    const double el = a->elev * M_PI / 180.0, az = a->azim * M_PI / 180.0;
+    Sky s = {2 * a->h, a->h, px, sun_cov, grid, gvec3(cos(el) * cos(az), cos(el) * sin(az), sin(el)), 0.0};
+    s.q = 2.0 * M_PI * M_PI / ((double)s.w * s.h);
+    double sky_e, sun_sum, horiz[3];
+    sky_fill(&s, cos(a->radius * M_PI / 180.0), &sky_e, &sun_sum);
+    double ks = sky_e > 0.0 ? a->e_sky / sky_e : 0.0;
+    double ls = sun_sum > 0.0 ? a->e_sun / (sun_sum * lum3(sun_colour)) : 0.0;
+    sky_scale(&s, ks, ls, horiz);
+    sky_ground(&s, horiz);
+}
+
+int cmd_sky(int argc, char **argv)
+{
+    SkyArgs a;
+    int status = sky_args(argc, argv, &a);
+    if (status >= 0)
+        return status;
+    if (output_check(a.out, 1) != 0)
         return 1;
-    const int w = 2 * h;
+    const int w = 2 * a.h, h = a.h;
     GError err;
-    GProbe *grid = NULL; /* a black probe of the size: only for its directions */
+    GProbe *grid = NULL;
     float *px = gmem_calloc((size_t)w * h * 3, sizeof *px);
     double *sun_cov = gmem_calloc((size_t)w * h, sizeof *sun_cov);
     if (!px || !sun_cov || gprobe_create(w, h, NULL, &grid, &err) != G_OK) {
@@ -123,68 +220,14 @@ int cmd_sky(int argc, char **argv)
         gmem_free(sun_cov);
         return 1;
     }
-    double el = elev * M_PI / 180.0, az = azim * M_PI / 180.0, cos_r = cos(radius * M_PI / 180.0);
-    GVec3 sun = gvec3(cos(el) * cos(az), cos(el) * sin(az), sin(el));
-    const double q = 2.0 * M_PI * M_PI / ((double)w * h); /* Q = q sin(theta) P, as the library weighs pixels */
-    double sky_e = 0.0, sun_sum = 0.0;
-    for (int y = 0; y < h; y++) {
-        double sin_t = sin(M_PI * (y + 0.5) / h);
-        for (int x = 0; x < w; x++) {
-            GVec3 d = gprobe_direction(grid, x + 0.5, y + 0.5);
-            float *p = px + ((size_t)y * w + x) * 3;
-            int covered = 0;
-            for (int j = 0; j < SKY_SUB; j++)
-                for (int i = 0; i < SKY_SUB; i++)
-                    covered += gvec3_dot(gprobe_direction(grid, x + (i + 0.5) / SKY_SUB, y + (j + 0.5) / SKY_SUB),
-                                         sun) >= cos_r;
-            sun_cov[(size_t)y * w + x] = d.z > 0.0 ? (double)covered / (SKY_SUB * SKY_SUB) : 0.0; /* no sun in the ground */
-            sun_sum += sun_cov[(size_t)y * w + x] * q * sin_t;
-            if (d.z <= 0.0)
-                continue; /* ground: filled below */
-            double t = 1.0 - d.z, gamma = acos(fmax(-1.0, fmin(1.0, gvec3_dot(d, sun))));
-            double glow = 0.6 * exp(-gamma / 0.2), c[3];
-            for (int k = 0; k < 3; k++) {
-                c[k] = (1.0 - t) * sky_zenith[k] + t * sky_horizon[k] + glow * sun_colour[k];
-                p[k] = (float)c[k];
-            }
-            sky_e += lum3(c) * q * sin_t * d.z;
-        }
-    }
-    /* scale the sky to its irradiance, the sun to its own, then light the ground with both */
-    double ks = sky_e > 0.0 ? e_sky / sky_e : 0.0;
-    double ls = sun_sum > 0.0 ? e_sun / (sun_sum * lum3(sun_colour)) : 0.0;
-    double horiz[3];
-    for (int k = 0; k < 3; k++)
-        horiz[k] = 0.0;
-    for (int y = 0; y < h; y++) {
-        double sin_t = sin(M_PI * (y + 0.5) / h);
-        for (int x = 0; x < w; x++) {
-            GVec3 d = gprobe_direction(grid, x + 0.5, y + 0.5);
-            float *p = px + ((size_t)y * w + x) * 3;
-            double cov = sun_cov[(size_t)y * w + x];
-            for (int k = 0; k < 3; k++) {
-                p[k] = (float)(d.z > 0.0 ? ks * p[k] : 0.0);
-                p[k] += (float)(cov * ls * sun_colour[k]);
-                if (d.z > 0.0)
-                    horiz[k] += p[k] * q * sin_t * d.z;
-            }
-        }
-    }
-    for (int y = 0; y < h; y++)
-        for (int x = 0; x < w; x++) {
-            GVec3 d = gprobe_direction(grid, x + 0.5, y + 0.5);
-            float *p = px + ((size_t)y * w + x) * 3;
-            if (d.z <= 0.0)
-                for (int k = 0; k < 3; k++)
-                    p[k] += (float)(ground_albedo[k] / M_PI * horiz[k]);
-        }
+    sky_render(&a, grid, px, sun_cov);
     gprobe_destroy(grid);
     gmem_free(sun_cov);
     GProbe *p = NULL;
     int rc = gprobe_create(w, h, px, &p, &err);
     gmem_free(px);
     if (rc == G_OK)
-        rc = gprobe_save(p, out, GPROBE_LATLONG, &err);
+        rc = gprobe_save(p, a.out, GPROBE_LATLONG, &err);
     gprobe_destroy(p);
     if (rc != G_OK) {
         fprintf(stderr, "gprobe: %s\n", err.message);
