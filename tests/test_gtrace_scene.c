@@ -11,6 +11,7 @@
 
 #include <ctype.h>
 #include <dirent.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 /* Intersects one ray with a scene holding the given objects and fills the surface point. */
@@ -462,8 +463,13 @@ static void list_sources(const char *dirpath, const char *sub, int folders, char
         snprintf(entry, sizeof entry, "%s%s%.200s", sub, *sub ? "/" : "", de->d_name);
         if (l > 2 && l < 200 && de->d_name[l - 2] == '.' && (de->d_name[l - 1] == 'c' || de->d_name[l - 1] == 'h'))
             snprintf(files[(*nfiles)++], 256, "%s", entry);
-        else if (folders && de->d_name[0] != '.' && de->d_type == DT_DIR)
-            list_sources(dirpath, entry, 0, files, nfiles, cap);
+        else if (folders && de->d_name[0] != '.') {
+            char sub_path[1280];
+            struct stat st;
+            snprintf(sub_path, sizeof sub_path, "%s/%s", dirpath, entry);
+            if (stat(sub_path, &st) == 0 && S_ISDIR(st.st_mode))
+                list_sources(dirpath, entry, 0, files, nfiles, cap);
+        }
     }
     closedir(dir);
 }
