@@ -21,8 +21,8 @@
  *
  * Kinds. In every model a value is a vector of samples (a light spectrum, or a plain reflectance that
  * multiplies sample by sample). The bispectral model also has re-radiation matrices (GCOLOR_MATRIX,
- * out x in) for fluorescent reflectances; see colormodels/bispectral.c and README for how every
- * operation is defined on them.
+ * out x in) for fluorescent reflectances; colormodels/bispectral.c and docs/reference/colour.md ("Bispectral
+ * values") define every operation on them.
  *
  * Roles. Converting from or to RGB needs to know whether a value is a reflectance (seen under D65) or a
  * light (its own spectrum); the role argument says which. Sample values themselves are role free.

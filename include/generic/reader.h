@@ -1,6 +1,6 @@
 /* reader.h - the text format: loading files into a GLibrary, and the API parse routines read with.
  *
- * A file is a sequence of statements (README.md, "Text format", has the full grammar):
+ * A file is a sequence of statements (docs/reference/format.md has the full grammar):
  *
  *     colormodel spectrum { step 5 }          # optional, before the first colour
  *     include "common.mat"                    # relative to this file; read once; cycles are refused
