@@ -41,9 +41,7 @@
 extern "C" {
 #endif
 
-/** Version of the colour model vtable; a class with another version is refused.
- * 2: GColor records its storage and capacity, and GColorModelClass grew the optional fill, exp_scaled and axpy slots.
- * 3: the optional band slots (band_count, band_mask, band_value) for dispersion. */
+/** Version of the colour model vtable; a class with another version is refused. */
 #define GCOLOR_ABI_VERSION 3
 
 /** The nm exchange grid: 380..780 nm at 1 nm. */

@@ -40,6 +40,8 @@
  *     gcolor_free(&refl);
  *     return rc;
  *
+ * The names greader_unknown_param lists are the named rows of the type's parameter table (GTypeInfo.params).
+ *
  * Ownership. Every object a parse routine returns goes to the GLibrary being loaded, which releases it with
  * its type's GTypeInfo.destroy (or the kind's default, see GTypeInfo) when the library is destroyed, in
  * reverse order of creation. Objects handed to a parse routine by greader_object() and friends are borrowed
