@@ -1,5 +1,5 @@
 #!/bin/sh
-# Regenerates the pictures README shows (docs/images/): texture swatches of every example in
+# Regenerates the pictures README.md and docs/ show (docs/images/): texture swatches of every example in
 # examples/textures/ (the last node or material each file defines) as one contact sheet, the demo
 # render, and the laser reflection patterns of the fluorescent materials.
 # Usage: scripts/docs_images.sh [BUILD]   (needs oiiotool from openimageio-tools)

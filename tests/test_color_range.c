@@ -23,7 +23,8 @@
 static const char *const models[] = {"rgb", "spectrum9", "spectrum", "bispectral"};
 enum { NMODELS = 4, GRID = 11 };
 
-/* The measured conversion error of each model (reflectance), rounded outwards: the README states these. */
+/* The measured conversion error of each model (reflectance), rounded outwards: docs/reference/colour.md ("Range
+ * after conversion") states these. */
 static const double expect_lo[NMODELS] = {0.0, -0.13, -0.0001, -0.0031};
 static const double expect_hi[NMODELS] = {1.0, 1.13, 1.0002, 1.0031};
 

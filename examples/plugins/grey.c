@@ -9,7 +9,7 @@
  * Built against the installed headers only; the library's functions come from the program that loads it. The
  * record and the GENERIC_MODULE line at the end make the file a module; without that line it would be a built-in
  * colour model in colormodels/. It is not a sampled spectrum, so it does not use the spectral kit
- * (include/generic/kit/spectral.h); README's "Adding a colour model" shows one that does. */
+ * (include/generic/kit/spectral.h); docs/guide.md ("A first colour model") shows one that does. */
 #include <generic/plugin.h>
 
 #include <math.h>

@@ -21,8 +21,8 @@
  *
  * Kinds. In every model a value is a vector of samples (a light spectrum, or a plain reflectance that
  * multiplies sample by sample). The bispectral model also has re-radiation matrices (GCOLOR_MATRIX,
- * out x in) for fluorescent reflectances; see colormodels/bispectral.c and README for how every
- * operation is defined on them.
+ * out x in) for fluorescent reflectances; colormodels/bispectral.c and docs/reference/colour.md ("Bispectral
+ * values") define every operation on them.
  *
  * Roles. Converting from or to RGB needs to know whether a value is a reflectance (seen under D65) or a
  * light (its own spectrum); the role argument says which. Sample values themselves are role free.
@@ -41,9 +41,7 @@
 extern "C" {
 #endif
 
-/** Version of the colour model vtable; a class with another version is refused.
- * 2: GColor records its storage and capacity, and GColorModelClass grew the optional fill, exp_scaled and axpy slots.
- * 3: the optional band slots (band_count, band_mask, band_value) for dispersion. */
+/** Version of the colour model vtable; a class with another version is refused. */
 #define GCOLOR_ABI_VERSION 3
 
 /** The nm exchange grid: 380..780 nm at 1 nm. */

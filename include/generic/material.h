@@ -48,8 +48,7 @@
 extern "C" {
 #endif
 
-/** Version of the material vtable and header (2: the header has depth and cost; 3: the sampling slots sample,
- * pdf and is_delta; 4: the header has flags). */
+/** Version of the material vtable and the GMaterial header; a class of another version is refused. */
 #define GMATERIAL_ABI_VERSION 4
 
 typedef struct GMaterialClass GMaterialClass;
@@ -68,70 +67,45 @@ typedef struct GMaterialSample {
     int flags;  /**< GSAMPLE_* */
 } GMaterialSample;
 
-/** Properties of one material instance (bits of GMaterial.flags) that let the dispatch skip work. */
+/** Properties of one material instance (bits of GMaterial.flags) that let the dispatch and a renderer skip work.
+ * Each bit is a promise about every point and every pair of directions. Clearing a bit is always correct, only
+ * slower; a bit set where it does not hold changes pictures without an error, so a class sets one by hand (after
+ * gmaterial_init) only where it holds, and `gmat check` has a property per bit that tests it. */
 enum {
-    /** emission() is black at every point and towards every direction: gmaterial_emission returns black at once,
-     * without calling the class (a texture tree of non-emitting leaves then costs nothing per hit for it).
-     * gmaterial_init sets it when the class has no emission slot (the documented default is black); the node kit
-     * sets it on a node whose emission only combines its children's when every child has it (node_kit.h). A class
-     * with an emission slot that knows an instance's emission to be black (a zero radiance, say) may set it after
-     * gmaterial_init, and must never set it otherwise: a wrongly set bit makes lights dark, wrong pictures that
-     * no error reports (`gmat check`'s no-emission property catches it). Clearing it is always safe. */
+    /** emission() is black: gmaterial_emission answers black without calling the class. Set by gmaterial_init for
+     * a class without an emission slot, by the node kit for a node whose emission only combines its children's
+     * when every child has it (node_kit.h); a class with a slot may set it on an instance that emits nothing. */
     GMAT_NO_EMISSION = 1u,
-    /** opaque() is 1 at every point: gmaterial_opaque answers 1 without calling the class, and a renderer may let
-     * any surface of the material block a shadow ray without a surface point (gmaterial_opaque_everywhere).
-     * gmaterial_init sets it when the class has no opaque slot (the documented default is opaque); the node kit
-     * sets it on a node whose opacity is its children's when every child has it (node_kit.h). The same rules as
-     * for GMAT_NO_EMISSION: set by hand only when it is true (`gmat check`'s opaque-flag property), clearing it is
-     * always safe. */
+    /** opaque() is 1: gmaterial_opaque answers 1 without calling the class, and a renderer may let any surface of
+     * the material block a shadow ray without a surface point (gmaterial_opaque_everywhere). Set by gmaterial_init
+     * for a class without an opaque slot, by the node kit for a node whose opacity is its children's when every
+     * child has it. */
     GMAT_OPAQUE = 2u,
-    /** normal() is the geometric normal at every point: gmaterial_normal and gsurfpoint_normal answer
-     * sp->geometric_normal without calling the class (a texture tree whose leaves keep the geometric normal then
-     * costs nothing per point for its normal). gmaterial_init sets it when the class has no normal slot (the
-     * documented default is the geometric normal); the node kit sets it on a node whose normal is one of its
-     * children's or a normalised blend of them, evaluated at the point's own geometric normal, when every child
-     * has it (node_kit.h); a node that changes the normal (bump) never gets it. The same rules as for
-     * GMAT_NO_EMISSION: set by hand only when it is true (`gmat check`'s geometric-normal property), clearing it
-     * is always safe. A bit added in the existing flags field, which gmaterial_init fills for plug-ins built
-     * against version 4 as well: the interface version did not change for it. */
+    /** normal() is the geometric normal: gmaterial_normal and gsurfpoint_normal answer sp->geometric_normal
+     * without calling the class. Set by gmaterial_init for a class without a normal slot, by the node kit for a
+     * node whose normal is a child's or a normalised blend of them when every child has it; never on a node that
+     * changes the normal (bump). */
     GMAT_GEOMETRIC_NORMAL = 4u,
-    /** The material is Lambertian: at every point and for every pair of directions, reflection(sp, in, illum, out)
-     * is diffuse(sp) times illum times gmaterial_cos_in(sp, in, out, &n) / pi (material_kit.h: the cosine of in with the
-     * point's shading normal, 0 when in or out is below the geometric normal), and is_delta is 0. A renderer may
-     * then sum the light of all its light samples, each times its cosine, and ask the material once: diffuse(sp)
-     * times that sum over pi, where it would ask reflection() once per sample; gmaterial_is_delta answers 0
-     * without calling the class. gmaterial_init cannot tell it from missing slots and never sets it: a class sets
-     * it after gmaterial_init on the instances it holds for (lambert); the node kit sets it on a blend node whose
-     * pick gives the same blend for reflection as for diffuse when every child has it (gnode_inherit_lambertian,
-     * node_kit.h), and on a one-child node whose reflection and diffuse colour are its child's times the same
-     * factor, at a point with sp's shading and geometric normals, when the child has it (bump, scale, image,
-     * transform: gnode_inherit_lambertian_child). The same rules as for GMAT_NO_EMISSION: set only when it is
-     * true (`gmat check`'s lambertian property), clearing it is always safe. A bit added in the existing flags field
-     * like GMAT_GEOMETRIC_NORMAL: the interface version did not change for it, and a plug-in built before it simply
-     * never has it. */
+    /** Lambertian: reflection(sp, in, illum, out) is diffuse(sp) times illum times gmaterial_cos_in(sp, in, out,
+     * &n) / pi (material_kit.h), and is_delta is 0. A renderer may sum the light of all its light samples, each
+     * times its cosine, and ask the material once for diffuse(sp); gmaterial_is_delta answers 0 without calling
+     * the class. gmaterial_init never sets it: a class sets it on the instances it holds for (lambert); the node
+     * kit sets it on a blend whose pick gives the same blend for reflection as for diffuse when every child has it
+     * (gnode_inherit_lambertian), and on a one-child node whose reflection and diffuse colour are its child's times
+     * the same factor (gnode_inherit_lambertian_child). */
     GMAT_LAMBERTIAN = 8u,
-    /** No method reads the surface's parametrisation: u, v, dpdu, dpdv, object_dpdu, object_dpdv, uv_footprint,
-     * uv_axis1 and uv_axis2 (the point, the normals, the footprint, t and the surface index are read as ever). A
-     * renderer may then leave those fields zero, as gsurfpoint_init sets them, and save their computation (a
-     * sphere's (u, v) is an acos and an atan2 per hit). gmaterial_init cannot know it and never sets it; a class
-     * whose methods read none of those fields sets it on its instances after gmaterial_init (every built-in
-     * material does); a node sets it when its own methods read none of them and every child has it
-     * (gnode_inherit_no_uv, node_kit.h: interpolate, select, spline, scale and transform over generators not
-     * in (u, v) space). The same rules as for GMAT_NO_EMISSION: set only when it is true (`gmat check`'s no-uv
-     * property evaluates the class with those fields zero and with other values, and the two must agree),
-     * clearing it is always safe. A bit added in the existing flags field, like GMAT_GEOMETRIC_NORMAL. */
+    /** No method reads the surface's parametrisation (u, v, dpdu, dpdv, object_dpdu, object_dpdv, uv_footprint,
+     * uv_axis1, uv_axis2): a renderer may leave those fields zero, as gsurfpoint_init sets them, and skip computing
+     * them. gmaterial_init never sets it; a class whose methods read none of them sets it on its instances (every
+     * built-in material does), and a node when its own methods read none of them and every child has it
+     * (gnode_inherit_no_uv). */
     GMAT_NO_UV = 16u,
-    /** The material filters light sample by sample (a diagonal re-radiation matrix: no fluorescence): at every
-     * point and for every pair of directions, reflection(sp, in, illum, out) is reflection(sp, in, white, out)
-     * times illum (gcolor_mul), and the same for refraction with any rel_index, white being 1 in every sample
-     * (the vacuum's refraction index) and illum any light, up to rounding. A renderer may then ask what the
-     * material passes on of white light once, to weigh a secondary ray, and multiply the ray's light by it, where
-     * it would ask the material again with that light. gmaterial_init cannot know it and never sets it: a class
-     * sets it after gmaterial_init on the instances it holds for (lambert, mirror, phong, dielectric and emitter
-     * whose colours are not re-radiation matrices); the node kit sets it on a blend node when every child has it
-     * (gnode_inherit_diagonal, node_kit.h). The same rules as for GMAT_NO_EMISSION: set only when it is true
-     * (`gmat check`'s diagonal property), clearing it is always safe. A bit added in the existing flags field,
-     * like GMAT_GEOMETRIC_NORMAL. */
+    /** The material filters light sample by sample (no fluorescence): reflection(sp, in, illum, out) is
+     * reflection(sp, in, white, out) times illum (gcolor_mul), and the same for refraction with any rel_index,
+     * white being 1 in every sample, up to rounding. A renderer may ask once what the material passes on of white
+     * light, weigh a secondary ray with it and multiply the ray's light by it. gmaterial_init never sets it: a
+     * class sets it on the instances it holds for (the built-ins whose colours are not re-radiation matrices);
+     * the node kit on a blend when every child has it (gnode_inherit_diagonal). */
     GMAT_DIAGONAL = 32u
 };
 
@@ -143,8 +117,8 @@ struct GMaterial {
     int depth;                /**< 1 (gmaterial_init); a texture node: 1 + its deepest child's (node_kit.h) */
     int cost;                 /**< most material calls one call can make, itself included: 1 (gmaterial_init);
                                    a texture node: see GNODE_MAX_COST (node_kit.h) */
-    unsigned flags;           /**< GMAT_* bits (since version 4): set by gmaterial_init and the node kit; 0 in a
-                                   header made without them, which only costs speed */
+    unsigned flags;           /**< GMAT_* bits: set by gmaterial_init and the node kit; 0 in a header made
+                                   without them, which only costs speed */
 };
 
 /* ---- the methods, written once ----

@@ -29,11 +29,6 @@
  * api->add_type are collected and registered together when init returns 0; if init fails, or one of the names is
  * taken already, none is registered and the module is closed again. Registration is only possible during init.
  *
- * A material module need not know about GMaterial.flags: gmaterial_init sets GMAT_NO_EMISSION (material.h) for a
- * class without an emission slot. A class with an emission slot may set that bit on an instance it knows to
- * emit nothing, after gmaterial_init, and never otherwise: a wrong bit hides the material's light from every
- * renderer without an error (`gmat check` reports it as the no-emission property).
- *
  * A module is built against the installed headers only and is not linked with libgeneric: the library's
  * functions are resolved from the program that loads it (programs link libgeneric.so, or the static library
  * with -rdynamic). A loaded module stays loaded for the life of the process (its types stay registered); loading
@@ -67,11 +62,16 @@ extern "C" {
 
 /** Version of the module interface: GModuleApi, GTypeInfo, GParseFn, the reader API, the vtables of every
  * kind and the layout of the structures they pass (GSurfPoint). Raised whenever any of them changes
- * incompatibly. 2: GSurfPoint grew by the cache scopes of transform nodes and the footprint ellipse.
- * 3: GColor and GColorModelClass grew (a colour's storage and capacity; the fill, exp_scaled and axpy slots),
- *    GError grew by the position and parameter fields, and the GMaterial header by depth and cost.
- * 4: GSurfPoint's public fields come first and its caches are one private member at the end (GSurfPointPrivate);
- *    GTypeInfo grew by its parameter table (the loader copies a module's records whole). */
+ * incompatibly. The versions of the interfaces:
+ *   module    2: GSurfPoint has the cache scopes of transform nodes and the footprint ellipse.
+ *             3: GColor and GColorModelClass as in colour version 2; GError has the position and parameter
+ *                fields; the GMaterial header has depth and cost.
+ *             4: GSurfPoint's public fields, then its caches as one private member (GSurfPointPrivate); GTypeInfo
+ *                has its parameter table (the loader copies a module's records whole).
+ *   colour    2: GColor records its storage and capacity; GColorModelClass has the optional fill, exp_scaled
+ *                and axpy slots. 3: the optional band slots (band_count, band_mask, band_value).
+ *   material  2: the header has depth and cost. 3: the sampling slots sample, pdf and is_delta. 4: the header
+ *                has flags. */
 #define GMODULE_ABI_VERSION 4
 
 /** Name of the exported `const int` holding the module's GMODULE_ABI_VERSION. */

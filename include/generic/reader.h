@@ -1,6 +1,6 @@
 /* reader.h - the text format: loading files into a GLibrary, and the API parse routines read with.
  *
- * A file is a sequence of statements (README.md, "Text format", has the full grammar):
+ * A file is a sequence of statements (docs/reference/format.md has the full grammar):
  *
  *     colormodel spectrum { step 5 }          # optional, before the first colour
  *     include "common.mat"                    # relative to this file; read once; cycles are refused
@@ -39,6 +39,8 @@
  *     if (rc == 0) rc = create the object from the values (reporting bad combinations with greader_error);
  *     gcolor_free(&refl);
  *     return rc;
+ *
+ * The names greader_unknown_param lists are the named rows of the type's parameter table (GTypeInfo.params).
  *
  * Ownership. Every object a parse routine returns goes to the GLibrary being loaded, which releases it with
  * its type's GTypeInfo.destroy (or the kind's default, see GTypeInfo) when the library is destroyed, in

@@ -1,5 +1,6 @@
 /* cie.c - CIE 1931 colorimetry on the 1 nm exchange grid: XYZ of spectra, sRGB matrices, illuminants,
- * blackbody, and RGB -> spectrum through the spectral primary basis (see README, "RGB to spectrum"). */
+ * blackbody, and RGB -> spectrum through the spectral primary basis (docs/reference/colour.md, "RGB to
+ * spectrum"). */
 #include "generic/color.h"
 #include "cie_tables.h"
 

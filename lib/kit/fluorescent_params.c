@@ -1,5 +1,5 @@
 /* fluorescent_params.c - what the parse routines of the fluorescent materials share (fluorescent_kit.h): the
- * `matrix` parameter and the numeric parameters of a table (README.md, "Fluorescent types"):
+ * `matrix` parameter and the numeric parameters of a table (docs/reference/format.md, "Fluorescent types"):
  *
  *   material NAME fluorescent-phong { matrix COLOR  ks 0.04  exponents 30 120 480  weights 0.2 0.3 0.5 }
  *   material NAME fluorescent-varnish { matrix COLOR  ior 1.5  slope 17 | exponent M }

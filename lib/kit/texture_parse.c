@@ -1,4 +1,4 @@
-/* parse_common.c - pieces of the texture parse routines shared by nodes, generators and shape trees
+/* texture_parse.c - pieces of the texture parse routines shared by nodes, generators and shape trees
  * (generic/kit/texture_parse.h): nested generators, lists of materials and numbers, 2D/3D transform steps, spaces,
  * the noise parameters. */
 #include "generic/kit/texture_parse.h"

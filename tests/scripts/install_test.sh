@@ -5,7 +5,7 @@
 #   (the staged tree is bind-mounted over PREFIX in a private mount namespace; skipped, and said so, without
 #   unshare);
 # - a program built with `cc x.c $(pkg-config --cflags --libs generic)` runs against the staged shared library,
-#   and a module built with the staged .pc's Cflags as the README shows (-std=c11, M_PI) loads into a tool;
+#   and a module built with the staged .pc's Cflags as docs/building.md shows (-std=c11, M_PI) loads into a tool;
 # - a man page per tool when help2man is installed;
 # - `make uninstall` leaves no file in the staging tree.
 set -eu
@@ -80,7 +80,7 @@ else
     echo "installed plug-in: SKIPPED loading by bare name (no unshare -rm to bind the stage over $PREFIX)"
 fi
 
-# ---- a module built with the installed .pc, as the README shows, loaded into the installed tool ----
+# ---- a module built with the installed .pc, as docs/building.md shows, loaded into the installed tool ----
 cat > halfgrey.c <<'C'
 #include <generic/material.h>
 #include <generic/plugin.h>

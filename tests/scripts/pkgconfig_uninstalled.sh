@@ -1,6 +1,6 @@
 #!/bin/sh
 # pkgconfig_uninstalled.sh BUILD - the uninstalled generic.pc that `make` writes (BUILD/pkgconfig/generic.pc,
-# lib/build.mk), used from the tree as the README shows, with nothing installed:
+# lib/build.mk), used from the tree as docs/building.md shows, with nothing installed:
 # - `cc pkgconfig_user.c $(pkg-config --cflags --libs generic)` builds a program that runs without
 #   LD_LIBRARY_PATH against BUILD/lib/libgeneric.so (the file's run path) and prints the XYZ of white light;
 # - an example plug-in built with its Cflags (-std=c11, M_PI from <math.h>) loads into the tree's gmat.

@@ -1,6 +1,6 @@
 /* material_kit.h - building a material instance: allocating it, the material whose one parameter is a colour,
  * and the cosine every BRDF starts from. With material_params.h (included) it is what a material's file needs
- * beside material.h and reader.h; README.md, "Adding a material", shows a complete one. */
+ * beside material.h and reader.h; docs/guide.md ("A first material of your own") shows a complete one. */
 #ifndef GENERIC_MATERIAL_KIT_H
 #define GENERIC_MATERIAL_KIT_H
 

@@ -1,4 +1,4 @@
-/* gen_text.c - structured inputs for the text format (README "Text format"): each family builds a file that
+/* gen_text.c - structured inputs for the text format (docs/reference/format.md): each family builds a file that
  * is valid where it matters (so the reader gets past the first token) and extreme in one direction: size,
  * depth, sharing, numbers, token length or bytes. Names never contain '/' (the harness skips such inputs). */
 #include "gen.h"
