@@ -639,7 +639,10 @@ static const GParamInfo *const light_tables[] = {point_params,     directional_p
 
 #define P_CAMERA_VIEW                                                                                                \
     P_VEC("from", "<0, 0, 5>", "the eye"), P_VEC("at", "<0, 0, 0>", "the point looked at (not from)"),                \
-    P_VEC("up", "<0, 1, 0>", "the image's up direction")
+    P_VEC("up", "<0, 1, 0>", "the image's up direction"),                                                            \
+    {"frame", GPARAM_NAMED, "number", "none", "[0, 10]",                                                             \
+     "fits the scene's bounds (planes left out) into the view widened by 1 + MARGIN: `from` moves along the view "   \
+     "line, `at` to the point nearest the bounds' centre; an orthographic camera's size is set"}
 #define P_CAMERA_IMAGE                                                                                               \
     {"width", GPARAM_NAMED, "integer", "320", "[1, 65536]", "the image width in pixels (--width overrides)"},          \
     {"height", GPARAM_NAMED, "integer", "240", "[1, 65536]", "the image height in pixels"},                           \
