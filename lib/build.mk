@@ -62,8 +62,12 @@ LINK_PROGRAM = $(CC) -rdynamic -o $@ $(filter %.o,$^) -Wl,--whole-archive $(LIBA
 # From a clone, after `make`: PKG_CONFIG_PATH=build/pkgconfig pkg-config --cflags --libs generic. The uninstalled
 # file adds a run path to BUILD/lib, so that a program built with it runs without LD_LIBRARY_PATH. It is rewritten
 # when its text would change (a moved tree) and left alone otherwise.
+# A sanitizer build's library needs the sanitizers' run-time first in the program, so its uninstalled file hands
+# their flags to the programs and modules built with it (PC_SANITIZE; empty for the installed file).
 pc_text = sed -e 's|@PREFIX@|$(1)|' -e 's|@INCLUDEDIR@|$(2)|' -e 's|@LIBDIR@|$(3)|' -e 's|@RPATH@|$(4)|' \
-              -e 's|@VERSION@|$(VERSION)|' generic.pc.in
+              -e 's|@SANITIZE@|$(PC_SANITIZE)|' -e 's|@VERSION@|$(VERSION)|' generic.pc.in
+PC_SANITIZE :=
+$(BUILD)/pkgconfig/generic.pc: PC_SANITIZE = $(if $(SANFLAGS), $(SANFLAGS))
 $(BUILD)/pkgconfig/generic.pc: generic.pc.in FORCE
 	@mkdir -p $(dir $@)
 	@$(call pc_text,$(CURDIR),$(CURDIR)/include,$(abspath $(BUILD)/lib), -Wl$(comma)-rpath$(comma)$${libdir}) > $@.tmp
