@@ -32,6 +32,7 @@
  * weight in their pixel is below W are not traced (default 1e-3, 0 traces everything to the depth). */
 #include "integrators/bands.h"
 #include "parse.h"
+#include "param_tables.h"
 #include "geometry/geometry.h"
 
 #include <math.h>
@@ -112,7 +113,6 @@ static const char *const shape_params[] = {
     "of, material, transform",
 };
 
-static int parse_object(GReader *r, const void *vtable, void **object, GError *err);
 
 /* An object given as a value (a nested entry or a name), which must be one of gtrace's. */
 static int read_object(GReader *r, Object **out, GError *err)
@@ -122,7 +122,7 @@ static int read_object(GReader *r, Object **out, GError *err)
     int rc = greader_object(r, gtrace_kind_object, &obj, &t, err);
     if (rc < 0)
         return rc;
-    if (!t || t->parse != parse_object)
+    if (!t || t->parse != scene_parse_object)
         return greader_error(r, err, "object type '%s' is not one gtrace renders", t ? t->name : "?");
     *out = obj;
     return G_OK;
@@ -180,7 +180,7 @@ static int parse_group(GReader *r, Object *o, GError *err)
     return rc < 0 ? rc : G_OK;
 }
 
-static int parse_object(GReader *r, const void *vtable, void **object, GError *err)
+int scene_parse_object(GReader *r, const void *vtable, void **object, GError *err)
 {
     ShapeKind kind = *(const ShapeKind *)vtable;
     GVec3 center = gvec3(0, 0, 0), normal = gvec3(0, 1, 0), lo = gvec3(-1, -1, -1), hi = gvec3(1, 1, 1);
@@ -325,7 +325,7 @@ static int light_within_limits(const Light *l, int type, GVec3 at)
     return 1;
 }
 
-static int parse_light(GReader *r, const void *vtable, void **object, GError *err)
+int scene_parse_light(GReader *r, const void *vtable, void **object, GError *err)
 {
     int type = *(const int *)vtable;
     const GColorModel *model = greader_colormodel(r);
@@ -433,7 +433,7 @@ static const char *const camera_params[] = {
     "from, at, up, size, frame, width, height, spp, depth, cutoff, exposure, medium, bands",
 };
 
-static int parse_camera(GReader *r, const void *vtable, void **object, GError *err)
+int scene_parse_camera(GReader *r, const void *vtable, void **object, GError *err)
 {
     CameraProjection proj = *(const CameraProjection *)vtable;
     Camera *c = gmem_calloc(1, sizeof *c);
@@ -520,162 +520,6 @@ static const char *const camera_summaries[] = {
     "orthographic camera: parallel rays through a window `size` units high",
 };
 
-/* The parameter tables of the types above (GParamInfo, generic/registry.h): `gtrace types --markdown` prints them
- * (docs/reference/scene-types.md); tests/scripts/type_params.sh checks them against the parse routines' lists. */
-#define P_MATERIAL {"material", GPARAM_NAMED, "material", NULL, NULL, "the surface's material"}
-#define P_TRANSFORM                                                                                                  \
-    {"transform", GPARAM_NAMED, "block", "none",                                                                     \
-     "{ translate <x, y, z>  rotate <ax, ay, az>  rotate_axis <axis> DEG  scale S | <x, y, z> ... }",               \
-     "places the object: the steps in the order written (rotate: degrees about x, then y, then z)"}
-#define P_VEC(name, def, doc) {name, GPARAM_NAMED, "vector", def, NULL, doc}
-static const GParamInfo sphere_params[] = {
-    P_VEC("center", "<0, 0, 0>", "the centre"),
-    {"radius", GPARAM_NAMED, "number", "1", "[1e-12, 1e30]", "the radius"},
-    P_MATERIAL, P_TRANSFORM, {NULL},
-};
-static const GParamInfo plane_params[] = {
-    P_VEC("point", "<0, 0, 0>", "a point of the plane"),
-    P_VEC("normal", "<0, 1, 0>", "the normal (not zero); the plane is bounded at 1e5 units"),
-    P_MATERIAL, P_TRANSFORM, {NULL},
-};
-static const GParamInfo box_params[] = {
-    P_VEC("min", "<-1, -1, -1>", "the corner with the smallest coordinates"),
-    P_VEC("max", "<1, 1, 1>", "the opposite corner"),
-    P_MATERIAL, P_TRANSFORM, {NULL},
-};
-static const GParamInfo disc_params[] = {
-    P_VEC("center", "<0, 0, 0>", "the centre"),
-    P_VEC("normal", "<0, 1, 0>", "the normal (not zero)"),
-    {"radius", GPARAM_NAMED, "number", "1", "[1e-12, 1e30]", "the radius"},
-    P_MATERIAL, P_TRANSFORM, {NULL},
-};
-static const GParamInfo cylinder_params[] = {
-    P_VEC("base", "<0, 0, 0>", "the centre of the base (surface 1)"),
-    P_VEC("top", "<0, 1, 0>", "the centre of the top (surface 2)"),
-    {"radius", GPARAM_NAMED, "number", "1", "[1e-12, 1e30]", "the radius"},
-    {"open", GPARAM_NAMED, "bool", "no", NULL, "yes: the side (surface 0) without the caps"},
-    P_MATERIAL, P_TRANSFORM, {NULL},
-};
-static const GParamInfo mesh_params[] = {
-    {"file", GPARAM_NAMED, "path", NULL, ".obj, .ply, .gltf, .glb",
-     "the mesh; an OBJ's usemtl and g number the surfaces"},
-    P_MATERIAL, P_TRANSFORM, {NULL},
-};
-static const GParamInfo quad_params[] = {
-    P_VEC("corner", "<0, 0, 0>", "the corner P: the quad is P + u edge1 + v edge2, (u, v) in [0, 1]^2"),
-    P_VEC("edge1", "<1, 0, 0>", "the edge along u"),
-    P_VEC("edge2", "<0, 1, 0>", "the edge along v (the normal is edge1 x edge2)"),
-    P_MATERIAL, P_TRANSFORM, {NULL},
-};
-static const GParamInfo triangle_params[] = {
-    P_VEC("a", "<0, 0, 0>", "the first corner: the point is a + u (b - a) + v (c - a)"),
-    P_VEC("b", "<1, 0, 0>", "the second corner"),
-    P_VEC("c", "<0, 1, 0>", "the third corner (the normal is (b - a) x (c - a))"),
-    P_MATERIAL, P_TRANSFORM, {NULL},
-};
-static const GParamInfo group_params[] = {
-    {"OBJECT", GPARAM_POSITIONAL, "object", NULL, "a nested object entry or the name of one, at least one",
-     "the members, any number: one Embree scene that instances place; each becomes a prototype"},
-    P_TRANSFORM, {NULL},
-};
-static const GParamInfo instance_params[] = {
-    {"of", GPARAM_NAMED, "object", NULL, "a nested object entry or the name of one",
-     "the object or group placed (it becomes a prototype)"},
-    {"material", GPARAM_NAMED, "material", "the objects' own", NULL,
-     "replaces the material of everything placed (the outermost instance that gives one wins)"},
-    P_TRANSFORM, {NULL},
-};
-static const GParamInfo *const shape_tables[] = {sphere_params, plane_params,    box_params,   disc_params,
-                                                 cylinder_params, mesh_params, quad_params, triangle_params,
-                                                 group_params,  instance_params};
-
-#define P_SAMPLES {"samples", GPARAM_NAMED, "integer", "16", "[1, 256]", "shadow rays per shading point"}
-#define P_VISIBLE {"visible", GPARAM_NAMED, "bool", "no", NULL, "camera rays see the light's surface"}
-static const GParamInfo point_params[] = {
-    P_VEC("position", "<0, 0, 0>", "where the light is"),
-    {"intensity", GPARAM_NAMED, "color", NULL, "luminance >= 0",
-     "the intensity I, read as a light: the illumination at distance d is I / d^2"},
-    {NULL},
-};
-static const GParamInfo directional_params[] = {
-    P_VEC("direction", "<0, -1, 0>", "the direction the light travels (not zero)"),
-    {"irradiance", GPARAM_NAMED, "color", NULL, "luminance >= 0", "the irradiance on a surface facing the light"},
-    {NULL},
-};
-static const GParamInfo spot_params[] = {
-    P_VEC("position", "<0, 0, 0>", "where the light is"),
-    {"at", GPARAM_NAMED, "vector", NULL, "not the position", "the point the cone is aimed at"},
-    {"intensity", GPARAM_NAMED, "color", NULL, "luminance >= 0", "the intensity on the cone's axis"},
-    {"inner", GPARAM_NAMED, "number", "20", "[0, 180]", "the full opening angle of full intensity, in degrees"},
-    {"outer", GPARAM_NAMED, "number", "30", "[0, 180], not below inner",
-     "the full opening angle beyond which the light is dark, in degrees (smooth in between)"},
-    {NULL},
-};
-static const GParamInfo sphere_light_params[] = {
-    P_VEC("center", "<0, 0, 0>", "the centre"),
-    {"radius", GPARAM_NAMED, "number", "1", "[1e-9, 1e30]", "the radius"},
-    {"radiance", GPARAM_NAMED, "color", NULL, "luminance >= 0", "the radiance of its surface"},
-    P_SAMPLES, P_VISIBLE, {NULL},
-};
-static const GParamInfo rectangle_params[] = {
-    P_VEC("corner", "<-0.5, 2, 0.5>", "a corner P: the light is P + u edge1 + v edge2, (u, v) in [0, 1]^2"),
-    P_VEC("edge1", "<1, 0, 0>", "one edge"),
-    P_VEC("edge2", "<0, 0, -1>", "the other edge (not parallel); the lit side is that of edge1 x edge2"),
-    {"radiance", GPARAM_NAMED, "color", NULL, "luminance >= 0", "the radiance of its lit side"},
-    P_SAMPLES, P_VISIBLE, {NULL},
-};
-static const GParamInfo ambient_params[] = {
-    {"color", GPARAM_NAMED, "color", NULL, "luminance >= 0",
-     "the ambient light handed to every material's ambient() (several add up)"},
-    {NULL},
-};
-static const GParamInfo background_params[] = {
-    {"color", GPARAM_NAMED, "color", NULL, "luminance >= 0", "the radiance of rays that leave the scene"},
-    {NULL},
-};
-static const GParamInfo *const light_tables[] = {point_params,     directional_params, spot_params,
-                                                 sphere_light_params, rectangle_params, ambient_params,
-                                                 background_params};
-
-#define P_CAMERA_VIEW                                                                                                \
-    P_VEC("from", "<0, 0, 5>", "the eye"), P_VEC("at", "<0, 0, 0>", "the point looked at (not from)"),                \
-    P_VEC("up", "<0, 1, 0>", "the image's up direction"),                                                            \
-    {"frame", GPARAM_NAMED, "number", "none", "[0, 10]",                                                             \
-     "fits the scene's bounds (planes left out) into the view widened by 1 + MARGIN: `from` moves along the view "   \
-     "line, `at` to the point nearest the bounds' centre; an orthographic camera's size is set"}
-#define P_CAMERA_IMAGE                                                                                               \
-    {"width", GPARAM_NAMED, "integer", "320", "[1, 65536]", "the image width in pixels (--width overrides)"},          \
-    {"height", GPARAM_NAMED, "integer", "240", "[1, 65536]", "the image height in pixels"},                           \
-    {"spp", GPARAM_NAMED, "integer", "1", "[1, 65536]",                                                               \
-     "samples per pixel: a jittered grid when a square, else N-rooks"},                                               \
-    {"depth", GPARAM_NAMED, "integer", "8", "[0, 1000]", "the recursion depth of reflected and refracted rays"},       \
-    {"cutoff", GPARAM_NAMED, "number", "1e-3", "[0, 1]",                                                              \
-     "rays whose weight in their pixel is below it are not traced (0: every ray to the depth)"},                     \
-    {"exposure", GPARAM_NAMED, "number", "0", "[-30, 30]", "stops applied to display-encoded output (.png, .jpg)"},   \
-    {"medium", GPARAM_NAMED, "material", "none (vacuum)", NULL,                                                       \
-     "the material the camera sits in (its absorption applies along every ray in it)"},                              \
-    {"bands", GPARAM_NAMED, "integer", "16", "[1, 1024]",                                                             \
-     "the most wavelength groups a dispersive refraction splits into (1: no dispersion)"}
-#define P_FOV {"fov", GPARAM_NAMED, "number", "40", "[0.01, 179]", "the vertical field of view, in degrees"}
-static const GParamInfo pinhole_params[] = {P_CAMERA_VIEW, P_FOV, P_CAMERA_IMAGE, {NULL}};
-static const GParamInfo thinlens_params[] = {
-    P_CAMERA_VIEW,
-    P_FOV,
-    {"aperture", GPARAM_NAMED, "number", "0", "[0, 1e6]",
-     "the lens diameter in scene units (0: exactly the pinhole's image)"},
-    {"focus_distance", GPARAM_NAMED, "number", "|at - from|", "[1e-9, 1e15]",
-     "the distance of the plane in focus along the view direction"},
-    P_CAMERA_IMAGE,
-    {NULL},
-};
-static const GParamInfo orthographic_params[] = {
-    P_CAMERA_VIEW,
-    {"size", GPARAM_NAMED, "number", "2", "[1e-9, 1e15]", "the height of the window of parallel rays, in scene units"},
-    P_CAMERA_IMAGE,
-    {NULL},
-};
-static const GParamInfo *const camera_tables[] = {pinhole_params, thinlens_params, orthographic_params};
-
 /* Registers a type unless its kind already has one of that name (so registering twice is harmless). */
 static int register_once(const GTypeInfo *t, GError *err)
 {
@@ -694,19 +538,23 @@ int gtrace_register_kinds(GError *err)
     return rc == G_OK ? gregistry_add_kind(&cameras, &gtrace_kind_camera, err) : rc;
 }
 
+_Static_assert(sizeof shape_names / sizeof *shape_names == SCENE_SHAPE_TYPES, "a table for every shape");
+_Static_assert(sizeof light_names / sizeof *light_names == SCENE_LIGHT_TYPES, "a table for every light");
+_Static_assert(sizeof camera_names / sizeof *camera_names == SCENE_CAMERA_TYPES, "a table for every camera");
+
 int gtrace_register_types(GError *err)
 {
     int rc = gtrace_register_kinds(err);
     for (int i = 0; i < NSHAPE_TYPES && rc == G_OK; i++) {
         GTypeInfo t = {.kind = gtrace_kind_object, .name = shape_names[i], .vtable = &shape_kinds[i],
-                       .parse = parse_object, .summary = shape_summaries[i], .destroy = destroy_object,
-                       .params = shape_tables[i]};
+                       .parse = scene_parse_object, .summary = shape_summaries[i], .destroy = destroy_object,
+                       .params = scene_shape_tables[i]};
         rc = register_once(&t, err);
     }
-    for (int i = 0; i < 7 && rc == G_OK; i++) {
+    for (int i = 0; i < SCENE_LIGHT_TYPES && rc == G_OK; i++) {
         GTypeInfo t = {.kind = gtrace_kind_light, .name = light_names[i], .vtable = &light_types[i],
-                       .parse = parse_light, .summary = light_summaries[i], .destroy = destroy_light,
-                       .params = light_tables[i]};
+                       .parse = scene_parse_light, .summary = light_summaries[i], .destroy = destroy_light,
+                       .params = scene_light_tables[i]};
         rc = register_once(&t, err);
     }
     GTypeInfo probe = {.kind = gtrace_kind_light, .name = "probe", .vtable = NULL, .parse = probe_light_parse,
@@ -714,145 +562,10 @@ int gtrace_register_types(GError *err)
                        .destroy = probe_light_destroy, .params = probe_light_params};
     if (rc == G_OK)
         rc = register_once(&probe, err);
-    for (int i = 0; i < 3 && rc == G_OK; i++) {
+    for (int i = 0; i < SCENE_CAMERA_TYPES && rc == G_OK; i++) {
         GTypeInfo cam = {.kind = gtrace_kind_camera, .name = camera_names[i], .vtable = &camera_kinds[i],
-                         .parse = parse_camera, .summary = camera_summaries[i], .params = camera_tables[i]};
+                         .parse = scene_parse_camera, .summary = camera_summaries[i], .params = scene_camera_tables[i]};
         rc = register_once(&cam, err);
     }
     return rc;
-}
-
-/* ---- scene from a library ---- */
-
-/* The camera's `frame`: the view fitted to the world bounds of the objects rendered directly (planes, unbounded,
- * are left out) at the camera's own image size (main.c fits it again when the command line sets another). */
-static int frame_camera(Scene *s, const char *name, GError *err)
-{
-    GVec3 lo = gvec3(INFINITY, INFINITY, INFINITY), hi = gvec3(-INFINITY, -INFINITY, -INFINITY);
-    for (int i = 0; i < s->nobjects; i++) {
-        const Object *o = s->objects[i];
-        if (o->is_part || o->kind == SHAPE_PLANE)
-            continue;
-        GVec3 a, b;
-        object_world_bounds(o, &a, &b);
-        lo = gvec3(fmin(lo.x, a.x), fmin(lo.y, a.y), fmin(lo.z, a.z));
-        hi = gvec3(fmax(hi.x, b.x), fmax(hi.y, b.y), fmax(hi.z, b.z));
-    }
-    if (!(lo.x <= hi.x))
-        return gerror_set(err, G_ERR_INVALID, "%s: the camera's frame needs an object other than a plane", name);
-    int rc = camera_frame(&s->camera, lo, hi, s->camera.width, s->camera.height, err);
-    if (rc < 0 && err) {
-        char msg[sizeof err->message];
-        snprintf(msg, sizeof msg, "%s", err->message);
-        gerror_set(err, rc, "%s: %s", name, msg);
-    }
-    return rc;
-}
-
-int scene_from_library(GLibrary *lib, const char *name, Scene **out, GError *err)
-{
-    *out = NULL;
-    Scene *s;
-    int rc = scene_create(glibrary_colormodel(lib), &s, err);
-    if (rc < 0) {
-        glibrary_destroy(lib);
-        return rc;
-    }
-    s->lib = lib;
-    int n = glibrary_count(lib, gtrace_kind_object);
-    for (int i = 0; i < n && rc == G_OK; i++) {
-        const GTypeInfo *t;
-        void *o = glibrary_entry(lib, gtrace_kind_object, i, NULL, &t);
-        if (t && t->parse == parse_object)
-            rc = scene_add_object(s, o, err);
-        else
-            rc = gerror_set(err, G_ERR_UNSUPPORTED, "%s: object type '%s' is not one gtrace renders", name,
-                            t ? t->name : "?");
-    }
-    double placements = 0.0;
-    for (int i = 0; i < s->nobjects; i++)
-        if (!s->objects[i]->is_part && !object_is_shape(s->objects[i]))
-            placements += s->objects[i]->expansion;
-    if (rc == G_OK && placements > GTRACE_MAX_INSTANCES)
-        rc = gerror_set(err, G_ERR_INVALID, "%s: the scene's groups and instances expand to %.6g placements, more "
-                        "than the limit of %d", name, placements, GTRACE_MAX_INSTANCES);
-    n = glibrary_count(lib, gtrace_kind_light);
-    for (int i = 0; i < n && rc == G_OK; i++) {
-        const GTypeInfo *t;
-        Light *l = glibrary_entry(lib, gtrace_kind_light, i, NULL, &t);
-        if (t && t->parse == probe_light_parse) {
-            rc = probe_attach(s, (ProbeEnv *)(void *)l, err);
-            continue;
-        }
-        if (!t || t->parse != parse_light) {
-            rc = gerror_set(err, G_ERR_UNSUPPORTED, "%s: light type '%s' is not one gtrace renders", name,
-                            t ? t->name : "?");
-            break;
-        }
-        if (l->kind == LIGHT_AMBIENT) {
-            rc = gcolor_add(&s->ambient, &s->ambient, &l->color);
-            s->have_ambient = 1;
-        } else if (l->kind == LIGHT_BACKGROUND) {
-            rc = gcolor_copy(&s->background, &l->color);
-        } else {
-            rc = scene_add_light(s, l, err);
-        }
-        if (rc < 0 && err && !err->message[0])
-            gerror_set(err, rc, "light %d: %s", i, gstatus_string(rc));
-    }
-    n = glibrary_count(lib, gtrace_kind_camera);
-    if (rc == G_OK && n > 1)
-        rc = gerror_set(err, G_ERR_INVALID, "%s: the scene defines %d cameras; give one", name, n);
-    if (rc == G_OK && n == 1) {
-        const GTypeInfo *t;
-        const Camera *c = glibrary_entry(lib, gtrace_kind_camera, 0, NULL, &t);
-        if (t && t->parse == parse_camera) {
-            s->camera = *c;
-            s->have_camera = 1;
-            s->medium = gmaterial_ref(c->medium);
-            if (c->frame >= 0.0)
-                rc = frame_camera(s, name, err);
-        } else {
-            rc = gerror_set(err, G_ERR_UNSUPPORTED, "%s: camera type '%s' is not one gtrace renders", name,
-                            t ? t->name : "?");
-        }
-    }
-    if (rc < 0) {
-        scene_destroy(s);
-        return rc;
-    }
-    *out = s;
-    return G_OK;
-}
-
-int scene_load(const char *path, const char *colormodel, Scene **out, GError *err)
-{
-    return scene_load_with(path, colormodel, NULL, out, err);
-}
-
-int scene_load_with(const char *path, const char *colormodel, const ProbeOverride *ov, Scene **out, GError *err)
-{
-    return scene_load_opts(path, colormodel, ov, NULL, out, err);
-}
-
-int scene_load_opts(const char *path, const char *colormodel, const ProbeOverride *ov, const GReaderOptions *base,
-                    Scene **out, GError *err)
-{
-    *out = NULL;
-    int rc = gtrace_register_types(err);
-    if (rc < 0)
-        return rc;
-    GReaderOptions opt = {0};
-    if (base)
-        opt = *base;
-    opt.colormodel = colormodel;
-    GLibrary *lib = NULL;
-    rc = greader_load_file(path, &opt, &lib, err);
-    if (rc < 0)
-        return rc;
-    if ((rc = probe_override_apply(lib, ov, err)) < 0) {
-        glibrary_destroy(lib);
-        return rc;
-    }
-    return scene_from_library(lib, path, out, err);
 }

@@ -11,6 +11,11 @@
 
 /** The tracer's kinds of entries (`object`, `light`, `camera`), numbered by gtrace_register_kinds. */
 extern GKind gtrace_kind_object, gtrace_kind_light, gtrace_kind_camera;
+/** The parse routines of gtrace's object, light and camera types (GParseFn, generic/registry.h); a loaded entry is
+ * one of gtrace's when its type's parse routine is one of these. */
+int scene_parse_object(GReader *r, const void *vtable, void **object, GError *err);
+int scene_parse_light(GReader *r, const void *vtable, void **object, GError *err);
+int scene_parse_camera(GReader *r, const void *vtable, void **object, GError *err);
 /** Registers the kinds object, light and camera with the registry (idempotent). */
 int gtrace_register_kinds(GError *err);
 /** Registers the kinds and the object, light and camera types with the registry (idempotent). */
