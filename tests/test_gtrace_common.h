@@ -30,6 +30,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include <cmocka.h>
 
 /* |a - b| <= tol in double precision. */
@@ -53,6 +54,30 @@ static inline void near_(double a, double b, double tol, const char *what, const
             _fail(__FILE__, __LINE__);                                                                                 \
         }                                                                                                              \
     } while (0)
+
+/* A scratch file name under /tmp for this process (the last 8 stay valid at once). */
+static inline char *temp_path(const char *name)
+{
+    static char path[8][256];
+    static int k;
+    char *p = path[k++ % 8];
+    snprintf(p, sizeof path[0], "/tmp/gtrace_test_%d_%s", (int)getpid(), name);
+    return p;
+}
+
+/* Writes n bytes to temp_path(name); its path. */
+static inline char *write_file(const char *name, const void *data, size_t n)
+{
+    char *p = temp_path(name);
+    FILE *f = fopen(p, "wb");
+    assert_non_null(f);
+    assert_int_equal(fwrite(data, 1, n, f), n);
+    fclose(f);
+    return p;
+}
+
+/* Writes a text to temp_path(name); its path. */
+static inline char *write_text(const char *name, const char *text) { return write_file(name, text, strlen(text)); }
 
 /* A model by name, skipping the test when it is not registered. */
 static inline GColorModel *model_or_skip(const char *name)

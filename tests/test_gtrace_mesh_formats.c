@@ -14,27 +14,6 @@ static const double N[4][3] = {{0, 0, 1}, {0.6, 0, 0.8}, {0, -0.6, 0.8}, {-0.28,
 static const double UV[4][2] = {{0, 0}, {2, 0}, {2, 1}, {0.25, 1}};
 static const int TRI[2][3] = {{0, 1, 2}, {0, 2, 3}};
 
-static char *temp_path(const char *name)
-{
-    static char path[8][256];
-    static int k;
-    char *p = path[k++ % 8];
-    snprintf(p, sizeof path[0], "/tmp/gtrace_fmt_%d_%s", (int)getpid(), name);
-    return p;
-}
-
-static char *write_file(const char *name, const void *data, size_t n)
-{
-    char *p = temp_path(name);
-    FILE *f = fopen(p, "wb");
-    assert_non_null(f);
-    assert_int_equal(fwrite(data, 1, n, f), n);
-    fclose(f);
-    return p;
-}
-
-static char *write_text(const char *name, const char *text) { return write_file(name, text, strlen(text)); }
-
 static void obj_text(char *out, size_t size)
 {
     int n = 0;

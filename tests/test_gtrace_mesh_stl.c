@@ -22,27 +22,6 @@ static void normal_of(int t, float n[3])
         n[k] = (float)(c[k] / len);
 }
 
-static char *temp_path(const char *name)
-{
-    static char path[4][256];
-    static int k;
-    char *p = path[k++ % 4];
-    snprintf(p, sizeof path[0], "/tmp/gtrace_stl_%d_%s", (int)getpid(), name);
-    return p;
-}
-
-static char *write_file(const char *name, const void *data, size_t n)
-{
-    char *p = temp_path(name);
-    FILE *f = fopen(p, "wb");
-    assert_non_null(f);
-    assert_int_equal(fwrite(data, 1, n, f), n);
-    fclose(f);
-    return p;
-}
-
-static char *write_text(const char *name, const char *text) { return write_file(name, text, strlen(text)); }
-
 /* The two triangles as ASCII STL (as solid NAME, twice over when `solids` is 2: the second solid repeats them). */
 static void stl_text(char *out, size_t size, int solids)
 {

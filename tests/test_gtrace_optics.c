@@ -94,15 +94,6 @@ static void write_prism_obj(const Prism *p, const char *path)
     fclose(f);
 }
 
-static char *temp_path(const char *name)
-{
-    static char path[4][256];
-    static int k;
-    char *p = path[k++ % 4];
-    snprintf(p, sizeof path[0], "/tmp/gtrace_optics_%d_%s", (int)getpid(), name);
-    return p;
-}
-
 /* Renders the prism scene: a WIDTH x 1 strip, the slit emitting `radiance`, the prism's index `index`. */
 static void render_prism(const char *model, const char *radiance, const char *index, int bands, Framebuffer *fb,
                          Camera *cam_out)

@@ -54,7 +54,7 @@ static void write_probe(const char *name, const float *px, char *path, size_t si
     gprobe_destroy(p);
 }
 
-static void write_text(const char *path, const char *text)
+static void write_probe_text(const char *path, const char *text)
 {
     FILE *f = fopen(path, "w");
     assert_non_null(f);
@@ -66,7 +66,7 @@ static void write_text(const char *path, const char *text)
 static Scene *load_scene(const char *text, const char *model, const ProbeOverride *ov, GError *err)
 {
     char path[128];
-    write_text(in_tmp("probe.scene", path, sizeof path), text);
+    write_probe_text(in_tmp("probe.scene", path, sizeof path), text);
     Scene *s = NULL;
     gerror_clear(err);
     int rc = scene_load_with(path, model, ov, &s, err);
@@ -597,7 +597,7 @@ static void test_allocation_failures(void **state)
                  "object plane { point <0, 0, 0> normal <0, 0, 1> material lambert { reflectance rgb 0.5 0.5 0.5 } }\n"
                  "camera pinhole { from <0, -3, 2> at <0, 0, 0> up <0, 0, 1> width 4 height 3 }\n",
                  probe, variant ? "technique reference samples 4" : "technique adaptive count 4");
-        write_text(in_tmp("alloc.scene", path, sizeof path), text);
+        write_probe_text(in_tmp("alloc.scene", path, sizeof path), text);
         static TuAlloc alloc;
         int failures = 0, k;
         for (k = 0; k < 5000; k++) {
