@@ -21,6 +21,11 @@
 #include <strings.h>
 #include <unistd.h>
 
+#if defined(__SANITIZE_ADDRESS__) && !defined(GENERIC_OIIO_STATIC)
+#include <sanitizer/lsan_interface.h>
+#define GENERIC_LEAK_CHECK_BEFORE_MODULE_EXIT 1
+#endif
+
 #ifndef GENERIC_LIBDIR
 #define GENERIC_LIBDIR "/usr/local/lib"
 #endif
@@ -105,7 +110,16 @@ static int try_beside(const char *file)
 
 #endif
 
-static void load(void)
+#ifdef GENERIC_LEAK_CHECK_BEFORE_MODULE_EXIT
+/* The module's libraries stop their own threads in their destructors at exit (OpenImageIO's thread pool, the
+ * threads log4cplus starts when OpenColorIO loads). LeakSanitizer's check at exit would run while those threads are
+ * exiting, and its thread tracer can crash on a thread that disappears under it (seldom, under load). A handler
+ * registered after the module loaded runs before those destructors, while their threads are idle: the check runs
+ * there, once, and the one at exit is skipped. Sanitizer builds only. */
+static void check_leaks_before_module_exit(void) { __lsan_do_leak_check(); }
+#endif
+
+static void load_module(void)
 {
 #ifdef GENERIC_OIIO_STATIC
     loaded = generic_oiio_module(GOIIO_MODULE_ABI, &host, &ops) == 0;
@@ -128,6 +142,15 @@ static void load(void)
         return;
     }
     loaded = try_module(GENERIC_LIBDIR "/generic/" GOIIO_MODULE_FILE, 0) || try_module(GOIIO_MODULE_FILE, 0);
+#endif
+}
+
+static void load(void)
+{
+    load_module();
+#ifdef GENERIC_LEAK_CHECK_BEFORE_MODULE_EXIT
+    if (loaded)
+        atexit(check_leaks_before_module_exit);
 #endif
 }
 
