@@ -84,7 +84,7 @@ static void usage(FILE *f)
             "  --bands K         most wavelength groups a dispersive refraction splits into, 1..1024\n"
             "                    (default: the camera's, 16; the model's bands are grouped evenly; 1: no\n"
             "                    dispersion)\n"
-            "  --threads N       render threads (default: all processors)\n"
+            "  --threads N       threads for rendering and the BVH build (default: all processors)\n"
             "  --integrator I    whitted (default: the paper's Fig. 4) or path (path tracing: next-event\n"
             "                    estimation and material sampling by MIS, Russian roulette; --spp paths\n"
             "                    per pixel, --depth bounces)\n"
@@ -414,6 +414,7 @@ static int prepare(const Options *o, const GReaderOptions *trust, int check_outp
         memcpy(rs->crop, o->crop, sizeof rs->crop);
     }
     *exposure = o->have_exposure ? o->exposure : cam->exposure;
+    (*scene)->accel_threads = o->threads;
     return accel_build_for(*scene, (double)rs->width * rs->height * rs->spp, err);
 }
 

@@ -20,6 +20,7 @@
 
 #include <embree3/rtcore.h>
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 /* scene.h names Embree's handles without Embree's header; they must stay the types Embree hands out */
@@ -436,7 +437,10 @@ int accel_build(Scene *s, GError *err)
 int accel_build_for(Scene *s, double samples, GError *err)
 {
     accel_release(s);
-    s->device = rtcNewDevice(NULL);
+    char config[32] = ""; /* Embree's own thread pool obeys --threads too (its BVH build is parallel) */
+    if (s->accel_threads > 0)
+        snprintf(config, sizeof config, "threads=%d", s->accel_threads);
+    s->device = rtcNewDevice(config[0] ? config : NULL);
     if (!s->device)
         return gerror_set(err, G_ERR_NOMEM, "embree: cannot create a device (error %d)", (int)rtcGetDeviceError(NULL));
     s->rtc = rtcNewScene(s->device);

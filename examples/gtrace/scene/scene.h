@@ -47,6 +47,7 @@ typedef struct Scene {
                                  * Embree traces every ray) */
     int ndirect;            /**< entries of direct */
     int accel_embree_only;  /**< set before accel_build: trace through Embree even when the direct list would do */
+    int accel_threads;      /**< set before accel_build: threads Embree may build with (0: all processors) */
     const struct ProbeEnv *env; /**< light probe seen by rays that leave the scene (NULL: background) */
 } Scene;
 
