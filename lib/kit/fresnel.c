@@ -54,3 +54,28 @@ int gmaterial_fresnel_dielectric(GColor *out, double cos_i, const GColor *eta)
 {
     return gcolor_map_samples(out, dielectric_samples, &cos_i, eta, NULL, NULL);
 }
+
+/* k for a normal-incidence reflectance r and index n: ((n - 1)^2 + k^2) / ((n + 1)^2 + k^2) = r solved for k. */
+static double k_for_reflectance(double n, double r, double unused, const void *params)
+{
+    (void)unused, (void)params;
+    r = gfmin(gfmax(r, 0.0), 0.9999);
+    double k2 = (r * (n + 1.0) * (n + 1.0) - (n - 1.0) * (n - 1.0)) / (1.0 - r);
+    return k2 > 0.0 ? sqrt(k2) : 0.0;
+}
+
+int gmaterial_complex_index_from_nm(GColor *eta, GColor *k, const GSpectrumNM *eta_nm, const GSpectrumNM *k_nm)
+{
+    if (!eta || !k || !eta_nm || !k_nm)
+        return G_ERR_INVALID;
+    if (eta->model != k->model)
+        return G_ERR_MISMATCH;
+    int rc = gcolor_from_nm(eta, eta_nm, GCOLOR_UNITLESS);
+    if (rc != G_OK || eta->model->nsamples > 0)
+        return rc ? rc : gcolor_from_nm(k, k_nm, GCOLOR_UNITLESS);
+    GSpectrumNM r0;
+    for (int i = 0; i < GNM_COUNT; i++)
+        r0.v[i] = (float)goptics_fresnel_conductor(1.0, eta_nm->v[i], k_nm->v[i]);
+    rc = gcolor_from_nm(k, &r0, GCOLOR_REFLECTANCE);
+    return rc ? rc : gcolor_map(k, k_for_reflectance, NULL, eta, k, NULL);
+}
