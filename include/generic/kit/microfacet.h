@@ -83,6 +83,22 @@ GENERIC_API double gmicrofacet_pdf_reflect(const GMicrofacet *m, GVec3 wo, GVec3
  * reflection is this times its Fresnel reflectance F(wi.h). */
 GENERIC_API double gmicrofacet_reflect_cos(const GMicrofacet *m, GVec3 wi, GVec3 wo);
 
+/* ---- energy of single scattering (multiple-scattering compensation, Kulla and Conty 2017) ---- */
+
+/** Nodes of an albedo table: E(mu) at mu = i / (GMICROFACET_ALBEDO_N - 1). */
+#define GMICROFACET_ALBEDO_N 32
+
+/** The directional albedo of the single-scattering rough mirror with Fresnel 1 (gmicrofacet_reflect_cos integrated
+ * over the incident hemisphere), E(mu_o) at the GMICROFACET_ALBEDO_N nodes mu_o = i / (N - 1) of an isotropic
+ * distribution m (an anisotropic one is read at alpha = sqrt(alpha_x alpha_y)), into e; *e_avg (may be NULL) gets its
+ * cosine-weighted mean E_avg = 2 * integral of E(mu) mu dmu, of the table's linear interpolation. Deterministic:
+ * each node is the mean of G2 / G1 over 32 x 32 visible normals, jittered within their strata by a fixed
+ * sequence (within 5e-3 of the integral). */
+GENERIC_API void gmicrofacet_albedo_table(const GMicrofacet *m, float e[GMICROFACET_ALBEDO_N], double *e_avg);
+
+/** E(mu) from a table of gmicrofacet_albedo_table, linear between the nodes (mu clamped to [0, 1]). */
+GENERIC_API double gmicrofacet_albedo_at(const float e[GMICROFACET_ALBEDO_N], double mu);
+
 /* ---- the local shading frame ---- */
 
 /** An orthonormal frame: t and b the tangents (the microfacet frame's x and y), n the normal (its z). */
