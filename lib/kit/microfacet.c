@@ -3,7 +3,6 @@
 #include "generic/kit/microfacet.h"
 
 #include <math.h>
-#include <stdint.h>
 
 #define INV_SQRT_PI 0.56418958354775628695
 #define ALPHA_MAX 1e3
@@ -184,57 +183,4 @@ double gmicrofacet_reflect_cos(const GMicrofacet *m, GVec3 wi, GVec3 wo)
         return 0.0;
     GVec3 h = gvec3_normalize(gvec3_add(wo, wi));
     return gmicrofacet_d(m, h) * gmicrofacet_g2(m, wi, wo, h) / (4.0 * wo.z);
-}
-
-/* A uniform number in [0, 1) from a 64-bit linear congruential state (Knuth's MMIX constants). */
-static double jitter(uint64_t *state)
-{
-    *state = *state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (double)(*state >> 11) * 0x1.0p-53;
-}
-
-void gmicrofacet_albedo_table(const GMicrofacet *m, float e[GMICROFACET_ALBEDO_N], double *e_avg)
-{
-    enum { S = 32 };
-    double a = sqrt(m->alpha_x * m->alpha_y);
-    GMicrofacet iso = gmicrofacet_make(m->distribution, a, a);
-    for (int i = 0; i < GMICROFACET_ALBEDO_N; i++) {
-        double mu = (double)i / (GMICROFACET_ALBEDO_N - 1);
-        if (i == 0) { /* grazing: nothing is seen */
-            e[i] = 0.0f;
-            continue;
-        }
-        GVec3 wo = gvec3(sqrt(gfmax(0.0, 1.0 - mu * mu)), 0.0, mu);
-        double sum = 0.0;
-        uint64_t state = 0x9E3779B97F4A7C15ULL * (uint64_t)(i + 1); /* the same jitter on every run */
-        for (int p = 0; p < S; p++)
-            for (int q = 0; q < S; q++) {
-                double j1 = jitter(&state), j2 = jitter(&state);
-                GVec3 h = gmicrofacet_sample_visible(&iso, wo, (p + j1) / S, (q + j2) / S);
-                GVec3 wi = gvec3_sub(gvec3_scale(h, 2.0 * gvec3_dot(wo, h)), wo);
-                if (wi.z > 0.0)
-                    sum += (1.0 + gmicrofacet_lambda(&iso, wo)) / (1.0 + gmicrofacet_lambda(&iso, wo) +
-                                                                   gmicrofacet_lambda(&iso, wi)); /* G2 / G1 */
-            }
-        e[i] = (float)(sum / (S * S));
-    }
-    if (e_avg) {
-        double sum = 0.0;
-        enum { K = 1024 };
-        for (int j = 0; j < K; j++) {
-            double mu = (j + 0.5) / K;
-            sum += gmicrofacet_albedo_at(e, mu) * mu;
-        }
-        *e_avg = 2.0 * sum / K;
-    }
-}
-
-double gmicrofacet_albedo_at(const float e[GMICROFACET_ALBEDO_N], double mu)
-{
-    double x = gfmin(gfmax(mu, 0.0), 1.0) * (GMICROFACET_ALBEDO_N - 1);
-    int i = (int)x;
-    if (i > GMICROFACET_ALBEDO_N - 2)
-        i = GMICROFACET_ALBEDO_N - 2;
-    double t = x - i;
-    return (1.0 - t) * e[i] + t * e[i + 1];
 }

@@ -89,11 +89,11 @@ GENERIC_API double gmicrofacet_reflect_cos(const GMicrofacet *m, GVec3 wi, GVec3
 #define GMICROFACET_ALBEDO_N 32
 
 /** The directional albedo of the single-scattering rough mirror with Fresnel 1 (gmicrofacet_reflect_cos integrated
- * over the incident hemisphere), E(mu_o) at the GMICROFACET_ALBEDO_N nodes mu_o = i / (N - 1) of an isotropic
- * distribution m (an anisotropic one is read at alpha = sqrt(alpha_x alpha_y)), into e; *e_avg (may be NULL) gets its
- * cosine-weighted mean E_avg = 2 * integral of E(mu) mu dmu, of the table's linear interpolation. Deterministic:
- * each node is the mean of G2 / G1 over 32 x 32 visible normals, jittered within their strata by a fixed
- * sequence (within 5e-3 of the integral). */
+ * over the incident hemisphere), E(mu_o) at the GMICROFACET_ALBEDO_N nodes mu_o = i / (N - 1), into e, for m's shape
+ * and width (an anisotropic m is read at alpha = sqrt(alpha_x alpha_y), clamped to [0, 1]); *e_avg (may be NULL) gets
+ * the cosine-weighted mean E_avg = 2 * integral of E(mu) mu dmu of the table's linear interpolation. From tables
+ * precomputed at N x N nodes of (mu, alpha) by scripts/gen_microfacet_albedo.c (quadrature over the half vector,
+ * exact to about 1e-5 at the nodes), linear in alpha between them: no work but the interpolation. */
 GENERIC_API void gmicrofacet_albedo_table(const GMicrofacet *m, float e[GMICROFACET_ALBEDO_N], double *e_avg);
 
 /** E(mu) from a table of gmicrofacet_albedo_table, linear between the nodes (mu clamped to [0, 1]). */
