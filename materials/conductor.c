@@ -52,28 +52,6 @@ static GFrame frame_at(const Conductor *c, const GSurfPoint *sp, GVec3 n)
     return c->anisotropic ? gframe_from_normal_tangent(n, sp->dpdu) : gframe_from_normal(n);
 }
 
-/* What the rough kernel needs beside eta, k and ms: the Fresnel cosine and the weights of the two terms. */
-typedef struct RoughTerms {
-    float cos_h, single, multiple;
-} RoughTerms;
-
-/* out = F(cos_h; eta, k) * single + ms * multiple, sample by sample, in float so that the loop vectorises; the same
- * formula as goptics_fresnel_conductor. */
-static void rough_kernel(float *out, const float *eta, const float *k, const float *ms, int n, const void *params)
-{
-    const RoughTerms *t = params;
-    float c = t->cos_h, c2 = c * c, s2 = 1.0f - c2, single = t->single, multiple = t->multiple;
-    for (int i = 0; i < n; i++) {
-        float e2 = eta[i] * eta[i], k2 = k[i] * k[i], u = e2 - k2 - s2;
-        float ab = sqrtf(u * u + 4.0f * e2 * k2), a2 = 0.5f * (ab + u);
-        float a = sqrtf(a2 > 0.0f ? a2 : 0.0f);
-        float rs_den = ab + 2.0f * a * c + c2, rs = rs_den > 0.0f ? (ab - 2.0f * a * c + c2) / rs_den : 1.0f;
-        float p1 = c2 * ab + s2 * s2, p2 = 2.0f * a * c * s2;
-        float rp = p1 + p2 > 0.0f ? rs * (p1 - p2) / (p1 + p2) : rs;
-        out[i] = 0.5f * (rs + rp) * single + ms[i] * multiple;
-    }
-}
-
 /* f cos_in of the rough surface for white light into f (a colour of the model); 0 when nothing is reflected. */
 static int rough_value(const Conductor *c, const GSurfPoint *sp, GVec3 n, GVec3 in, GVec3 out, GColor *f)
 {
@@ -84,12 +62,11 @@ static int rough_value(const Conductor *c, const GSurfPoint *sp, GVec3 n, GVec3 
         return G_OK;
     }
     GVec3 h = gvec3_normalize(gvec3_add(wi, wo));
-    RoughTerms t = {(float)gfmin(gfmax(gvec3_dot(wi, h), 0.0), 1.0), (float)gmicrofacet_reflect_cos(&c->mf, wi, wo),
-                    0.0f};
+    double multiple = 0.0;
     if (c->compensate)
-        t.multiple = (float)((1.0 - gmicrofacet_albedo_at(c->e, wo.z)) * (1.0 - gmicrofacet_albedo_at(c->e, wi.z)) *
-                             wi.z);
-    return gcolor_map_samples(f, rough_kernel, &t, &c->eta, &c->k, &c->ms);
+        multiple = (1.0 - gmicrofacet_albedo_at(c->e, wo.z)) * (1.0 - gmicrofacet_albedo_at(c->e, wi.z)) * wi.z;
+    return gmaterial_fresnel_conductor_mix(f, gvec3_dot(wi, h), &c->eta, &c->k, gmicrofacet_reflect_cos(&c->mf, wi, wo),
+                                           c->compensate ? &c->ms : NULL, multiple);
 }
 
 static int conductor_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
