@@ -62,11 +62,13 @@ static int rough_value(const Conductor *c, const GSurfPoint *sp, GVec3 n, GVec3 
         return G_OK;
     }
     GVec3 h = gvec3_normalize(gvec3_add(wi, wo));
-    double multiple = 0.0;
+    double single = gmicrofacet_reflect_cos(&c->mf, wi, wo), multiple = 0.0;
+    if (single < 1e-30) /* far outside a narrow lobe: below what a float keeps to its precision */
+        single = 0.0;
     if (c->compensate)
         multiple = (1.0 - gmicrofacet_albedo_at(c->e, wo.z)) * (1.0 - gmicrofacet_albedo_at(c->e, wi.z)) * wi.z;
-    return gmaterial_fresnel_conductor_mix(f, gvec3_dot(wi, h), &c->eta, &c->k, gmicrofacet_reflect_cos(&c->mf, wi, wo),
-                                           c->compensate ? &c->ms : NULL, multiple);
+    return gmaterial_fresnel_conductor_mix(f, gvec3_dot(wi, h), &c->eta, &c->k, single, c->compensate ? &c->ms : NULL,
+                                           multiple);
 }
 
 static int conductor_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
@@ -290,7 +292,7 @@ static int conductor_create(const GColorModel *model, const ConductorSpec *p, GM
     Conductor *c = (Conductor *)m;
     double ax = gmicrofacet_alpha_from_roughness(p->roughness_u);
     double ay = gmicrofacet_alpha_from_roughness(p->roughness_v);
-    c->smooth = !(ax >= GMICROFACET_ALPHA_MIN && ay >= GMICROFACET_ALPHA_MIN); /* below it: the ideal mirror */
+    c->smooth = !(ax >= GMICROFACET_ALPHA_MIN || ay >= GMICROFACET_ALPHA_MIN); /* both below it: the ideal mirror */
     c->mf = gmicrofacet_make(p->distribution, ax, ay);
     c->anisotropic = !c->smooth && ax != ay;
     c->compensate = p->compensate && !c->smooth;
@@ -426,7 +428,7 @@ static const GParamInfo conductor_params[] = {
     {"metal", GPARAM_NAMED, "name", "Cu (without eta and k)", "a name of `gmat metals`",
      "measured n and k of a metal or compound (docs/reference/metals.md); excludes eta and k"},
     {"roughness", GPARAM_NAMED, "number", "0 (smooth)", "[0, 1]",
-     "the microfacet width alpha (alpha = roughness); below 0.001 an ideal mirror"},
+     "the microfacet width alpha (alpha = roughness); below 0.001 (both ways) an ideal mirror"},
     {"roughness_u", GPARAM_NAMED, "number", "0", "[0, 1]", "alpha along the surface's dP/du (anisotropic)"},
     {"roughness_v", GPARAM_NAMED, "number", "0", "[0, 1]", "alpha across it"},
     {"distribution", GPARAM_NAMED, "name", "ggx", "ggx, beckmann", "the microfacet distribution"},
