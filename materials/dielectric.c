@@ -1,5 +1,6 @@
 /* dielectric.c - a smooth dielectric interface: dispersion formulas, unpolarised Fresnel reflection and
  * refraction, total internal reflection, Beer-Lambert absorption inside. */
+#include "generic/kit/dispersion.h"
 #include "generic/kit/material_kit.h"
 #include "generic/materials.h"
 #include "generic/plugin.h"
@@ -15,82 +16,6 @@ typedef struct Dielectric {
     GColor tint;
     int absorbs, tinted;
 } Dielectric;
-
-/* ---- dispersion formulas ---- */
-
-GDispersion gdispersion_constant(double n)
-{
-    GDispersion d = {GDISPERSION_CONSTANT, {n, 0, 0, 0, 0, 0}};
-    return d;
-}
-
-GDispersion gdispersion_cauchy(double a, double b, double c)
-{
-    GDispersion d = {GDISPERSION_CAUCHY, {a, b, c, 0, 0, 0}};
-    return d;
-}
-
-GDispersion gdispersion_sellmeier(const double b[3], const double c[3])
-{
-    GDispersion d = {GDISPERSION_SELLMEIER, {b[0], b[1], b[2], c[0], c[1], c[2]}};
-    return d;
-}
-
-double gdispersion_index(const GDispersion *d, double nm)
-{
-    double l = nm * 1e-3, l2 = l * l;
-    switch (d->kind) {
-    case GDISPERSION_CONSTANT:
-        return d->c[0];
-    case GDISPERSION_CAUCHY:
-        return d->c[0] + d->c[1] / l2 + d->c[2] / (l2 * l2);
-    case GDISPERSION_SELLMEIER: {
-        double n2 = 1.0;
-        for (int i = 0; i < 3; i++)
-            n2 += d->c[i] * l2 / (l2 - d->c[3 + i]);
-        return n2 > 0.0 ? sqrt(n2) : NAN;
-    }
-    }
-    return NAN;
-}
-
-int gdispersion_check(const GDispersion *d, GError *err)
-{
-    static const char *const names[3][6] = {
-        {"n", "", "", "", "", ""},
-        {"A", "B", "C", "", "", ""},
-        {"B1", "B2", "B3", "C1", "C2", "C3"},
-    };
-    static const int counts[3] = {1, 3, 6};
-    static const char *const kinds[3] = {"constant", "Cauchy", "Sellmeier"};
-    if (!d || (unsigned)d->kind > GDISPERSION_SELLMEIER)
-        return gerror_set(err, G_ERR_INVALID, "dielectric: unknown dispersion formula %d", d ? (int)d->kind : -1);
-    for (int i = 0; i < counts[d->kind]; i++)
-        if (!isfinite(d->c[i]))
-            return gerror_set(err, G_ERR_INVALID, "dielectric: %s coefficient %s is %g (must be finite)",
-                              kinds[d->kind], names[d->kind][i], d->c[i]);
-    for (int nm = GNM_MIN; nm <= GNM_MAX; nm++) {
-        double n = gdispersion_index(d, nm);
-        if (!isfinite(n) || n <= 0.0)
-            return gerror_set(err, G_ERR_INVALID,
-                              "dielectric: the %s formula gives the index %g at %d nm (must be finite and > 0)",
-                              kinds[d->kind], n, nm);
-    }
-    return G_OK;
-}
-
-/* The index as a colour: the nm spectrum for spectral models, n at 610/550/465 nm for the others. */
-static int index_color(const GDispersion *d, GColor *out)
-{
-    if (out->model->nsamples > 0) {
-        GSpectrumNM s;
-        for (int i = 0; i < GNM_COUNT; i++)
-            s.v[i] = (float)gdispersion_index(d, GNM_MIN + i);
-        return gcolor_from_nm(out, &s, GCOLOR_REFLECTANCE);
-    }
-    double rgb[3] = {gdispersion_index(d, 610.0), gdispersion_index(d, 550.0), gdispersion_index(d, 465.0)};
-    return gcolor_from_rgb(out, rgb, GCOLOR_REFLECTANCE);
-}
 
 /* ---- the material ---- */
 
@@ -280,7 +205,7 @@ int gdielectric_create(const GColorModel *model, const GDielectricParams *params
     d->disp = params->index;
     if (gcolor_alloc(&d->index, model) != G_OK)
         rc = gerror_set(err, G_ERR_NOMEM, "dielectric: out of memory");
-    if (rc == G_OK && (rc = index_color(&d->disp, &d->index)) != G_OK)
+    if (rc == G_OK && (rc = gdispersion_color(&d->disp, &d->index)) != G_OK)
         rc = gerror_set_param(err, rc, "index", "dielectric: cannot express the index in model '%s'",
                               gcolormodel_name(model));
     if (rc == G_OK && params->absorption) {
@@ -316,39 +241,8 @@ int gdielectric_create(const GColorModel *model, const GDielectricParams *params
 
 /* ---- the text format ---- */
 
-/* index N | index cauchy A B [C] | index sellmeier B1 B2 B3 C1 C2 C3 */
-static int read_index(GReader *r, GDispersion *d, GError *err)
-{
-    int rc = greader_at_number(r, err); /* a number or a constant */
-    if (rc < 0)
-        return rc;
-    if (rc == 1) {
-        double n;
-        rc = greader_number_in(r, 0.01, 100.0, &n, err);
-        if (rc == G_OK)
-            *d = gdispersion_constant(n);
-        return rc;
-    }
-    static const char *const forms[] = {"cauchy", "sellmeier", NULL};
-    int which = 0;
-    if ((rc = greader_choice(r, forms, &which, err)) != G_OK)
-        return rc;
-    double c[6] = {0, 0, 0, 0, 0, 0};
-    int n = which == 0 ? 2 : 6;
-    for (int i = 0; i < n && rc == G_OK; i++)
-        rc = greader_number(r, &c[i], err);
-    if (rc == G_OK && which == 0 && (rc = greader_at_number(r, err)) == 1)
-        rc = greader_number(r, &c[2], err);
-    if (rc != G_OK)
-        return rc;
-    *d = which == 0 ? gdispersion_cauchy(c[0], c[1], c[2]) : gdispersion_sellmeier(c, c + 3);
-    GError check; /* a bad formula is reported at its last coefficient */
-    if (gdispersion_check(d, &check) != G_OK)
-        return greader_error(r, err, "%s", check.message);
-    return G_OK;
-}
-
-/* dielectric { index N | cauchy A B [C] | sellmeier B1 B2 B3 C1 C2 C3  absorption COLOR  tint COLOR }:
+/* dielectric { index N | cauchy A B [C] | sellmeier B1 B2 B3 C1 C2 C3 | glass NAME  glass NAME  absorption COLOR
+ *              tint COLOR }:
  * index 1.5, clear, untinted when not given */
 static int parse_dielectric(GReader *r, const void *vtable, void **object, GError *err)
 {
@@ -359,13 +253,15 @@ static int parse_dielectric(GReader *r, const void *vtable, void **object, GErro
     int rc;
     while ((rc = greader_param(r, &key, err)) > 0) {
         if (strcmp(key, "index") == 0)
-            rc = read_index(r, &index, err);
+            rc = gdispersion_read(r, &index, err);
+        else if (strcmp(key, "glass") == 0)
+            rc = gdispersion_read_glass(r, &index, err);
         else if (strcmp(key, "absorption") == 0)
             rc = greader_color(r, GCOLOR_REFLECTANCE, &absorption, err);
         else if (strcmp(key, "tint") == 0)
             rc = greader_color(r, GCOLOR_REFLECTANCE, &tint, err);
         else
-            rc = greader_unknown_param(r, "index, absorption, tint", err);
+            rc = greader_unknown_param(r, "index, glass, absorption, tint", err);
         if (rc < 0)
             break;
     }
@@ -382,9 +278,12 @@ static int parse_dielectric(GReader *r, const void *vtable, void **object, GErro
 
 static const GParamInfo dielectric_params[] = {
     {"index", GPARAM_NAMED, "formula", "1.5",
-     "N in [0.01, 100]; cauchy A B [C]; sellmeier B1 B2 B3 C1 C2 C3",
-     "the refraction index: a constant, or Cauchy's or Sellmeier's formula of the wavelength in micrometres "
-     "(dispersion)"},
+     "N in [0.01, 100]; cauchy A B [C]; sellmeier B1 B2 B3 C1 C2 C3; glass NAME",
+     "the refraction index: a constant, Cauchy's or Sellmeier's formula of the wavelength in micrometres "
+     "(dispersion), or a named glass (`gmat glasses` lists them)"},
+    {"glass", GPARAM_NAMED, "name", "none", "a name `gmat glasses` lists",
+     "the same as `index glass NAME`: BK7, BAF10, F5, F10, F11, FK51A, LASF9, SF5, SF10, SF11, fused_silica, "
+     "water, diamond"},
     {"absorption", GPARAM_NAMED, "color", "none (clear)", ">= 0, not a matrix",
      "the absorption coefficient per unit length inside (Beer-Lambert: exp(-a d) of the light passes)"},
     {"tint", GPARAM_NAMED, "color", "none (untinted)", "[0, 1]", "multiplies the light the surface reflects"},

@@ -120,6 +120,18 @@ typedef struct GDielectricParams {
  *  - opaque: no; diffuse and ambient: black. */
 GENERIC_API GENERIC_NODISCARD int gdielectric_create(const GColorModel *model, const GDielectricParams *params, GMaterial **out, GError *err);
 
+/* ---- thindielectric ---- */
+
+/** A thin dielectric pane of index n (the brightness of `index` in the model, checked by gdispersion_check) with
+ * the same medium on both sides: one face reflects F = goptics_fresnel(cos, 1 / n), and the light reflected between
+ * the two faces sums to the pane's reflectance R = F + (1 - F)^2 F / (1 - F^2) = 2 F / (1 + F) and transmittance
+ * 1 - R (no absorption). reflection_dir: the mirror direction; refraction_dir: the view direction itself (no
+ * offset, no refraction). reflection, aligned: R * illum; refraction, aligned (in = -out): (1 - R) * illum, whatever
+ * rel_index; black when not aligned. Delta lobes only (is_delta); not opaque; refraction_index: the default 1 (the
+ * pane changes no medium). */
+GENERIC_API GENERIC_NODISCARD int gthindielectric_create(const GColorModel *model, const GDispersion *index,
+                                                         GMaterial **out, GError *err);
+
 /* ---- emitter ---- */
 
 /** Light source surface with radiance L (a light colour, finite and >= 0). emission is L towards out
