@@ -49,19 +49,24 @@ static GFrame rough_frame(const Dielectric *d, GSurfPoint *sp)
 }
 
 /* The energy compensation of the refraction: (1 - R) / T of the single-scattering albedos, so that the reflection
- * (single scattering, reciprocal) and the refraction together keep all the light; 1 when off, and where the
- * refraction has (almost) no lobe to carry it (T < 1e-3: past the critical angle from inside). */
+ * (single scattering, reciprocal) and the refraction together keep all the light; at most COMPENSATION_MAX (where the
+ * refraction has almost no lobe to carry the light back in: near and past the critical angle from inside); 1 when
+ * off. */
+#define COMPENSATION_MAX 2.0
 static double compensation(const Dielectric *d, double cos_o, double eta)
 {
     if (!d->albedo)
         return 1.0;
     double r, t;
     gmicrofacet_albedo(d->albedo, cos_o, eta, &r, &t);
-    return t >= 1e-3 && r < 1.0 ? (1.0 - r) / t : 1.0;
+    if (!(t > 0.0) || !(r < 1.0))
+        return 1.0;
+    double k = (1.0 - r) / t;
+    return k < 1.0 ? 1.0 : k > COMPENSATION_MAX ? COMPENSATION_MAX : k;
 }
 
 /* An index-matched interface is none: the light goes straight on, whatever the roughness. */
-static int index_matched(double eta) { return fabs(eta - 1.0) <= 1e-9; }
+static int index_matched(double eta) { return fabs(eta - 1.0) <= 1e-5; }
 
 static int rough_reflection(const Dielectric *d, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
                             GColor *result)

@@ -137,8 +137,9 @@ typedef struct GDielectricRoughness {
  * (cos theta_out, eta) (a table made at creation, kit/microfacet_dielectric.h): the light the microfacet model loses
  * to multiple scattering is given back in the refraction's lobe, so that a lossless interface keeps all of it while
  * its reflection stays single scattering and reciprocal. The error of this simple form: all of the multiply
- * scattered light leaves as refracted light (part of it would leave as reflected light), and where the refraction
- * has almost no lobe (T < 1e-3, past the critical angle from inside) nothing is given back. Anisotropic widths use
+ * scattered light leaves as refracted light (part of it would leave as reflected light), and the factor is held
+ * within [1, 2], so that near and past the critical angle from inside, where the refraction has almost no lobe to
+ * carry it, part of the light stays lost. Anisotropic widths use
  * the table of their geometric mean, and need dpdu (not GMAT_NO_UV). A roughness outside [0, 1] or an unknown
  * distribution is refused naming the parameter (roughness_u, roughness_v, distribution); rough NULL is smooth
  * (gdielectric_create). */

@@ -140,7 +140,7 @@ void gmicrofacet_albedo(const GMicrofacetAlbedo *a, double cos_o, double eta, do
     *t = 1.0;
     double x = cos_o * GMICROFACET_ALBEDO_MU - 0.5;
     double y = (log(eta) / a->ln_eta_max + 1.0) * 0.5 * (GMICROFACET_ALBEDO_ETA - 1);
-    if (fabs(eta - 1.0) <= 1e-9 || x != x || y != y) /* index-matched; NaN */
+    if (fabs(eta - 1.0) <= 1e-5 || x != x || y != y) /* index-matched; NaN */
         return;
     x = x < 0.0 ? 0.0 : x > GMICROFACET_ALBEDO_MU - 1 ? GMICROFACET_ALBEDO_MU - 1 : x;
     y = y < 0.0 ? 0.0 : y > GMICROFACET_ALBEDO_ETA - 1 ? GMICROFACET_ALBEDO_ETA - 1 : y;

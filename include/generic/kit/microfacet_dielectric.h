@@ -67,7 +67,7 @@ typedef struct GMicrofacetAlbedo {
 GENERIC_API void gmicrofacet_albedo_init(GMicrofacetAlbedo *a, const GMicrofacet *m, double eta_max);
 
 /** R and T at (cos_o, eta) from a, interpolated bilinearly in cos_o and ln eta and clamped at the table's edges;
- * R = 0 and T = 1 for eta = 1 within 1e-9 (an index-matched interface is no interface). */
+ * R = 0 and T = 1 for eta = 1 within 1e-5 (an index-matched interface is no interface). */
 GENERIC_API void gmicrofacet_albedo(const GMicrofacetAlbedo *a, double cos_o, double eta, double *r, double *t);
 
 #ifdef __cplusplus
