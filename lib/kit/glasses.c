@@ -77,10 +77,13 @@ const char *gdispersion_glass_names(char *buf, size_t size)
         return buf;
     buf[0] = '\0';
     for (int i = 0; i < GLASS_COUNT && used < size; i++) {
+        size_t start = used + (i ? 2 : 0);
         int n = snprintf(buf + used, size - used, "%s%s", i ? ", " : "", glasses[i].name);
         if (n < 0)
             break;
         used += (size_t)n;
+        for (size_t k = start; k < used && k < size; k++) /* the form a file writes: fused_silica */
+            buf[k] = buf[k] == ' ' ? '_' : buf[k];
     }
     return buf;
 }

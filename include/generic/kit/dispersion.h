@@ -29,7 +29,7 @@ GENERIC_API int gdispersion_glass_count(void);
 GENERIC_API const GGlass *gdispersion_glass_at(int i);
 /** The glass called name (without regard to case; '_' and ' ' are the same), NULL when there is none. */
 GENERIC_API const GGlass *gdispersion_glass_find(const char *name);
-/** Writes the names of the glasses, separated by ", ", into buf of size bytes (always NUL-terminated, cut when
+/** Writes the names of the glasses as a file writes them ('_' for ' '), separated by ", ", into buf of size bytes (always NUL-terminated, cut when
  * short); returns buf. */
 GENERIC_API const char *gdispersion_glass_names(char *buf, size_t size);
 
