@@ -293,7 +293,8 @@ static int dielectric_is_delta(const GMaterial *self, GSurfPoint *sp)
 static const GMaterialClass dielectric_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "dielectric",
-    .description = "dielectric: Fresnel reflection and refraction, smooth or rough, dispersion, Beer-Lambert absorption",
+    .description = "dielectric: Fresnel reflection and refraction, smooth or rough, dispersion, Beer-Lambert "
+                   "absorption",
     .destroy = dielectric_destroy,
     .reflection = dielectric_reflection,
     .refraction = dielectric_refraction,

@@ -29,8 +29,8 @@ GENERIC_API int gdispersion_glass_count(void);
 GENERIC_API const GGlass *gdispersion_glass_at(int i);
 /** The glass called name (without regard to case; '_' and ' ' are the same), NULL when there is none. */
 GENERIC_API const GGlass *gdispersion_glass_find(const char *name);
-/** Writes the names of the glasses as a file writes them ('_' for ' '), separated by ", ", into buf of size bytes (always NUL-terminated, cut when
- * short); returns buf. */
+/** Writes the names of the glasses as a file writes them ('_' for ' '), separated by ", ", into buf of size bytes
+ * (always NUL-terminated, cut when short); returns buf. */
 GENERIC_API const char *gdispersion_glass_names(char *buf, size_t size);
 
 /** The index of d as a colour of out's model: spectral models (nsamples > 0) get the nm spectrum of n(lambda)
