@@ -460,7 +460,7 @@ static const GParamInfo dielectric_params[] = {
      "N in [0.01, 100]; cauchy A B [C]; sellmeier B1 B2 B3 C1 C2 C3; glass NAME",
      "the refraction index: a constant, Cauchy's or Sellmeier's formula of the wavelength in micrometres "
      "(dispersion), or a named glass (`gmat glasses` lists them)"},
-    {"glass", GPARAM_NAMED, "name", "none", "a name `gmat glasses` lists",
+    {"glass", GPARAM_NAMED, "choice", "none", "a name `gmat glasses` lists",
      "the same as `index glass NAME`: BK7, BAF10, F5, F10, F11, FK51A, LASF9, SF5, SF10, SF11, fused_silica, "
      "water, diamond"},
     {"absorption", GPARAM_NAMED, "color", "none (clear)", ">= 0, not a matrix",

@@ -171,7 +171,7 @@ static const GParamInfo thindielectric_params[] = {
     {"index", GPARAM_NAMED, "formula", "1.5",
      "N in [0.01, 100]; cauchy A B [C]; sellmeier B1 B2 B3 C1 C2 C3; glass NAME",
      "the pane's refraction index (its brightness in the model sets the Fresnel reflectance of both faces)"},
-    {"glass", GPARAM_NAMED, "name", "none", "a name `gmat glasses` lists", "the same as `index glass NAME`"},
+    {"glass", GPARAM_NAMED, "choice", "none", "a name `gmat glasses` lists", "the same as `index glass NAME`"},
     {NULL},
 };
 
