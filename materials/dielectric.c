@@ -19,7 +19,7 @@ typedef struct Dielectric {
     int absorbs, tinted;
     int rough, anisotropic; /* microfacet widths (rough); different along dpdu and dpdv (anisotropic) */
     GMicrofacet mf;
-    GMicrofacetAlbedo *albedo; /* the single-scattering albedo the lobes are divided by (NULL: uncompensated) */
+    GMicrofacetDielectricAlbedo *albedo; /* single-scattering albedos of the compensation (NULL: uncompensated) */
 } Dielectric;
 
 /* ---- the material ---- */
@@ -58,7 +58,7 @@ static double compensation(const Dielectric *d, double cos_o, double eta)
     if (!d->albedo)
         return 1.0;
     double r, t;
-    gmicrofacet_albedo(d->albedo, cos_o, eta, &r, &t);
+    gmicrofacet_dielectric_albedo(d->albedo, cos_o, eta, &r, &t);
     if (!(t > 0.0) || !(r < 1.0))
         return 1.0;
     double k = (1.0 - r) / t;
@@ -338,7 +338,7 @@ static int rough_setup(Dielectric *d, const GDielectricRoughness *p, GError *err
     }
     if (!(d->albedo = gmem_alloc(sizeof *d->albedo)))
         return gerror_set(err, G_ERR_NOMEM, "dielectric: out of memory");
-    gmicrofacet_albedo_init(d->albedo, &d->mf, 1.05 * hi);
+    gmicrofacet_dielectric_albedo_init(d->albedo, &d->mf, 1.05 * hi);
     return G_OK;
 }
 

@@ -148,12 +148,12 @@ static void uncompensated_is_single_scattering(void **state)
     Glass g;
     glass_open(&g, "rgb", "material g dielectric { index 1.5 roughness 0.8 compensate off }", 0);
     GMicrofacet mf = gmicrofacet_make(GMICROFACET_GGX, 0.8, 0.8);
-    GMicrofacetAlbedo *tab = malloc(sizeof *tab);
-    gmicrofacet_albedo_init(tab, &mf, 1.6);
+    GMicrofacetDielectricAlbedo *tab = malloc(sizeof *tab);
+    gmicrofacet_dielectric_albedo_init(tab, &mf, 1.6);
     double eta = gcolor_brightness(&g.ri), lowest = 1.0;
     for (int a = 0; a < 10; a++) {
         double theta = (a * 9 + 1) * DEG, r, t;
-        gmicrofacet_albedo(tab, cos(theta), eta, &r, &t);
+        gmicrofacet_dielectric_albedo(tab, cos(theta), eta, &r, &t);
         double e = mean_weight(&g, dir_at(theta, 0.3), 40000, 3 + a);
         assert_near(e, r + t, 0.01);
         lowest = fmin(lowest, e);

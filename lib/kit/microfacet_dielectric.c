@@ -109,16 +109,16 @@ static void albedo_at(const GMicrofacet *m, double cos_o, double eta, double *rs
     *ts = t / (N * N);
 }
 
-void gmicrofacet_albedo_init(GMicrofacetAlbedo *a, const GMicrofacet *m, double eta_max)
+void gmicrofacet_dielectric_albedo_init(GMicrofacetDielectricAlbedo *a, const GMicrofacet *m, double eta_max)
 {
     double w = sqrt(m->alpha_x * m->alpha_y);
     GMicrofacet iso = gmicrofacet_make(m->distribution, w, w);
     a->ln_eta_max = log(eta_max > 1.01 ? eta_max : 1.01);
-    for (int j = 0; j < GMICROFACET_ALBEDO_ETA; j++) {
-        double eta = exp(a->ln_eta_max * (2.0 * j / (GMICROFACET_ALBEDO_ETA - 1) - 1.0));
-        for (int i = 0; i < GMICROFACET_ALBEDO_MU; i++) {
+    for (int j = 0; j < GMICROFACET_DIELECTRIC_ALBEDO_ETA; j++) {
+        double eta = exp(a->ln_eta_max * (2.0 * j / (GMICROFACET_DIELECTRIC_ALBEDO_ETA - 1) - 1.0));
+        for (int i = 0; i < GMICROFACET_DIELECTRIC_ALBEDO_MU; i++) {
             double r, t;
-            albedo_at(&iso, (i + 0.5) / GMICROFACET_ALBEDO_MU, eta, &r, &t);
+            albedo_at(&iso, (i + 0.5) / GMICROFACET_DIELECTRIC_ALBEDO_MU, eta, &r, &t);
             a->r[j][i] = (float)r;
             a->t[j][i] = (float)t;
         }
@@ -126,26 +126,26 @@ void gmicrofacet_albedo_init(GMicrofacetAlbedo *a, const GMicrofacet *m, double 
 }
 
 /* Bilinear in the table's cells. */
-static double bilinear(const float v[GMICROFACET_ALBEDO_ETA][GMICROFACET_ALBEDO_MU], int i, int j, double fx,
-                       double fy)
+static double bilinear(const float v[GMICROFACET_DIELECTRIC_ALBEDO_ETA][GMICROFACET_DIELECTRIC_ALBEDO_MU], int i,
+                       int j, double fx, double fy)
 {
     double lo = v[j][i] * (1.0 - fx) + v[j][i + 1] * fx;
     double hi = v[j + 1][i] * (1.0 - fx) + v[j + 1][i + 1] * fx;
     return lo * (1.0 - fy) + hi * fy;
 }
 
-void gmicrofacet_albedo(const GMicrofacetAlbedo *a, double cos_o, double eta, double *r, double *t)
+void gmicrofacet_dielectric_albedo(const GMicrofacetDielectricAlbedo *a, double cos_o, double eta, double *r, double *t)
 {
     *r = 0.0;
     *t = 1.0;
-    double x = cos_o * GMICROFACET_ALBEDO_MU - 0.5;
-    double y = (log(eta) / a->ln_eta_max + 1.0) * 0.5 * (GMICROFACET_ALBEDO_ETA - 1);
+    double x = cos_o * GMICROFACET_DIELECTRIC_ALBEDO_MU - 0.5;
+    double y = (log(eta) / a->ln_eta_max + 1.0) * 0.5 * (GMICROFACET_DIELECTRIC_ALBEDO_ETA - 1);
     if (fabs(eta - 1.0) <= 1e-5 || x != x || y != y) /* index-matched; NaN */
         return;
-    x = x < 0.0 ? 0.0 : x > GMICROFACET_ALBEDO_MU - 1 ? GMICROFACET_ALBEDO_MU - 1 : x;
-    y = y < 0.0 ? 0.0 : y > GMICROFACET_ALBEDO_ETA - 1 ? GMICROFACET_ALBEDO_ETA - 1 : y;
-    int i = x >= GMICROFACET_ALBEDO_MU - 1 ? GMICROFACET_ALBEDO_MU - 2 : (int)x;
-    int j = y >= GMICROFACET_ALBEDO_ETA - 1 ? GMICROFACET_ALBEDO_ETA - 2 : (int)y;
+    x = x < 0.0 ? 0.0 : x > GMICROFACET_DIELECTRIC_ALBEDO_MU - 1 ? GMICROFACET_DIELECTRIC_ALBEDO_MU - 1 : x;
+    y = y < 0.0 ? 0.0 : y > GMICROFACET_DIELECTRIC_ALBEDO_ETA - 1 ? GMICROFACET_DIELECTRIC_ALBEDO_ETA - 1 : y;
+    int i = x >= GMICROFACET_DIELECTRIC_ALBEDO_MU - 1 ? GMICROFACET_DIELECTRIC_ALBEDO_MU - 2 : (int)x;
+    int j = y >= GMICROFACET_DIELECTRIC_ALBEDO_ETA - 1 ? GMICROFACET_DIELECTRIC_ALBEDO_ETA - 2 : (int)y;
     *r = bilinear(a->r, i, j, x - i, y - j);
     *t = bilinear(a->t, i, j, x - i, y - j);
 }

@@ -47,28 +47,30 @@ GENERIC_API double gmicrofacet_dielectric_pdf(const GMicrofacet *m, GVec3 wi, GV
 GENERIC_API int gmicrofacet_dielectric_sample(const GMicrofacet *m, GVec3 wo, double eta, double u1, double u2,
                                               GVec3 *wi);
 
-/** Sizes of GMicrofacetAlbedo: cos(theta_o) and ln eta. */
-#define GMICROFACET_ALBEDO_MU 32
-#define GMICROFACET_ALBEDO_ETA 41
+/** Sizes of GMicrofacetDielectricAlbedo: cos(theta_o) and ln eta. */
+#define GMICROFACET_DIELECTRIC_ALBEDO_MU 32
+#define GMICROFACET_DIELECTRIC_ALBEDO_ETA 41
 
 /** The single-scattering albedos of a lossless rough dielectric, R(cos theta_o, eta) of its reflection and
  * T(cos theta_o, eta) of its refraction (values over the sphere of wi), over cos theta_o in (0, 1] (cell midpoints)
  * and ln eta evenly over [-ln_eta_max, ln_eta_max]. R + T < 1 is the light the microfacet model loses to the
  * multiple scattering it leaves out; a compensation gives it back. */
-typedef struct GMicrofacetAlbedo {
+typedef struct GMicrofacetDielectricAlbedo {
     double ln_eta_max;
-    float r[GMICROFACET_ALBEDO_ETA][GMICROFACET_ALBEDO_MU];
-    float t[GMICROFACET_ALBEDO_ETA][GMICROFACET_ALBEDO_MU];
-} GMicrofacetAlbedo;
+    float r[GMICROFACET_DIELECTRIC_ALBEDO_ETA][GMICROFACET_DIELECTRIC_ALBEDO_MU];
+    float t[GMICROFACET_DIELECTRIC_ALBEDO_ETA][GMICROFACET_DIELECTRIC_ALBEDO_MU];
+} GMicrofacetDielectricAlbedo;
 
 /** Fills a for the distribution m (anisotropic widths by their isotropic mean sqrt(alpha_x alpha_y)) up to
  * |ln eta| = ln(eta_max) (eta_max >= 1.01), each entry by a 24 x 24 stratified quadrature of the visible normals with
  * the Fresnel choice summed exactly. Deterministic; about 1.5 million evaluations. */
-GENERIC_API void gmicrofacet_albedo_init(GMicrofacetAlbedo *a, const GMicrofacet *m, double eta_max);
+GENERIC_API void gmicrofacet_dielectric_albedo_init(GMicrofacetDielectricAlbedo *a, const GMicrofacet *m,
+                                                    double eta_max);
 
 /** R and T at (cos_o, eta) from a, interpolated bilinearly in cos_o and ln eta and clamped at the table's edges;
  * R = 0 and T = 1 for eta = 1 within 1e-5 (an index-matched interface is no interface). */
-GENERIC_API void gmicrofacet_albedo(const GMicrofacetAlbedo *a, double cos_o, double eta, double *r, double *t);
+GENERIC_API void gmicrofacet_dielectric_albedo(const GMicrofacetDielectricAlbedo *a, double cos_o, double eta,
+                                               double *r, double *t);
 
 #ifdef __cplusplus
 }
