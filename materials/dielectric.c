@@ -1,6 +1,9 @@
-/* dielectric.c - a smooth dielectric interface: dispersion formulas, unpolarised Fresnel reflection and
- * refraction, total internal reflection, Beer-Lambert absorption inside. */
+/* dielectric.c - a dielectric interface: unpolarised Fresnel reflection and refraction, total internal reflection,
+ * Beer-Lambert absorption inside; smooth (ideal rays), or rough (Walter et al. 2007 on the microfacet kit, with an
+ * energy compensation of the multiple scattering it leaves out). */
+#include "generic/kit/dispersion.h"
 #include "generic/kit/material_kit.h"
+#include "generic/kit/microfacet_dielectric.h"
 #include "generic/materials.h"
 #include "generic/plugin.h"
 
@@ -14,83 +17,10 @@ typedef struct Dielectric {
     GColor transmittance; /* exp(-a): what one unit of length lets through */
     GColor tint;
     int absorbs, tinted;
+    int rough, anisotropic; /* microfacet widths (rough); different along dpdu and dpdv (anisotropic) */
+    GMicrofacet mf;
+    GMicrofacetDielectricAlbedo *albedo; /* single-scattering albedos of the compensation (NULL: uncompensated) */
 } Dielectric;
-
-/* ---- dispersion formulas ---- */
-
-GDispersion gdispersion_constant(double n)
-{
-    GDispersion d = {GDISPERSION_CONSTANT, {n, 0, 0, 0, 0, 0}};
-    return d;
-}
-
-GDispersion gdispersion_cauchy(double a, double b, double c)
-{
-    GDispersion d = {GDISPERSION_CAUCHY, {a, b, c, 0, 0, 0}};
-    return d;
-}
-
-GDispersion gdispersion_sellmeier(const double b[3], const double c[3])
-{
-    GDispersion d = {GDISPERSION_SELLMEIER, {b[0], b[1], b[2], c[0], c[1], c[2]}};
-    return d;
-}
-
-double gdispersion_index(const GDispersion *d, double nm)
-{
-    double l = nm * 1e-3, l2 = l * l;
-    switch (d->kind) {
-    case GDISPERSION_CONSTANT:
-        return d->c[0];
-    case GDISPERSION_CAUCHY:
-        return d->c[0] + d->c[1] / l2 + d->c[2] / (l2 * l2);
-    case GDISPERSION_SELLMEIER: {
-        double n2 = 1.0;
-        for (int i = 0; i < 3; i++)
-            n2 += d->c[i] * l2 / (l2 - d->c[3 + i]);
-        return n2 > 0.0 ? sqrt(n2) : NAN;
-    }
-    }
-    return NAN;
-}
-
-int gdispersion_check(const GDispersion *d, GError *err)
-{
-    static const char *const names[3][6] = {
-        {"n", "", "", "", "", ""},
-        {"A", "B", "C", "", "", ""},
-        {"B1", "B2", "B3", "C1", "C2", "C3"},
-    };
-    static const int counts[3] = {1, 3, 6};
-    static const char *const kinds[3] = {"constant", "Cauchy", "Sellmeier"};
-    if (!d || (unsigned)d->kind > GDISPERSION_SELLMEIER)
-        return gerror_set(err, G_ERR_INVALID, "dielectric: unknown dispersion formula %d", d ? (int)d->kind : -1);
-    for (int i = 0; i < counts[d->kind]; i++)
-        if (!isfinite(d->c[i]))
-            return gerror_set(err, G_ERR_INVALID, "dielectric: %s coefficient %s is %g (must be finite)",
-                              kinds[d->kind], names[d->kind][i], d->c[i]);
-    for (int nm = GNM_MIN; nm <= GNM_MAX; nm++) {
-        double n = gdispersion_index(d, nm);
-        if (!isfinite(n) || n <= 0.0)
-            return gerror_set(err, G_ERR_INVALID,
-                              "dielectric: the %s formula gives the index %g at %d nm (must be finite and > 0)",
-                              kinds[d->kind], n, nm);
-    }
-    return G_OK;
-}
-
-/* The index as a colour: the nm spectrum for spectral models, n at 610/550/465 nm for the others. */
-static int index_color(const GDispersion *d, GColor *out)
-{
-    if (out->model->nsamples > 0) {
-        GSpectrumNM s;
-        for (int i = 0; i < GNM_COUNT; i++)
-            s.v[i] = (float)gdispersion_index(d, GNM_MIN + i);
-        return gcolor_from_nm(out, &s, GCOLOR_REFLECTANCE);
-    }
-    double rgb[3] = {gdispersion_index(d, 610.0), gdispersion_index(d, 550.0), gdispersion_index(d, 465.0)};
-    return gcolor_from_rgb(out, rgb, GCOLOR_REFLECTANCE);
-}
 
 /* ---- the material ---- */
 
@@ -100,6 +30,7 @@ static void dielectric_destroy(GMaterial *self)
     gcolor_free(&d->index);
     gcolor_free(&d->transmittance);
     gcolor_free(&d->tint);
+    gmem_free(d->albedo);
     gmem_free(d);
 }
 
@@ -107,6 +38,106 @@ static double eta_of(GSurfPoint *sp, const GColor *rel_index)
 {
     return rel_index ? gsurfpoint_index_of(sp, rel_index) : gsurfpoint_relative_index(sp);
 }
+
+/* ---- the rough interface: Walter et al. 2007 in the shading frame (kit/microfacet_dielectric.h) ---- */
+
+/* The shading frame at sp: the shading normal and, for anisotropic widths, dpdu as the first tangent. */
+static GFrame rough_frame(const Dielectric *d, GSurfPoint *sp)
+{
+    GVec3 n = gsurfpoint_normal(sp);
+    return d->anisotropic ? gframe_from_normal_tangent(n, sp->dpdu) : gframe_from_normal(n);
+}
+
+/* The energy compensation of the refraction: (1 - R) / T of the single-scattering albedos, so that the reflection
+ * (single scattering, reciprocal) and the refraction together keep all the light; at most COMPENSATION_MAX (where the
+ * refraction has almost no lobe to carry the light back in: near and past the critical angle from inside); 1 when
+ * off. */
+#define COMPENSATION_MAX 2.0
+static double compensation(const Dielectric *d, double cos_o, double eta)
+{
+    if (!d->albedo)
+        return 1.0;
+    double r, t;
+    gmicrofacet_dielectric_albedo(d->albedo, cos_o, eta, &r, &t);
+    if (!(t > 0.0) || !(r < 1.0))
+        return 1.0;
+    double k = (1.0 - r) / t;
+    return k < 1.0 ? 1.0 : k > COMPENSATION_MAX ? COMPENSATION_MAX : k;
+}
+
+/* An index-matched interface is none: the light goes straight on, whatever the roughness. */
+static int index_matched(double eta) { return fabs(eta - 1.0) <= 1e-5; }
+
+static int rough_reflection(const Dielectric *d, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
+                            GColor *result)
+{
+    GFrame f = rough_frame(d, sp);
+    GVec3 wo = gframe_to_local(&f, out), wi = gframe_to_local(&f, in);
+    double eta = gsurfpoint_relative_index(sp);
+    if (wo.z <= 0.0 || wi.z <= 0.0 || !gmaterial_sides_agree(sp, in, out, 0)) {
+        gcolor_black(result);
+        return G_OK;
+    }
+    double v = gmicrofacet_dielectric_reflect(&d->mf, wi, wo, eta);
+    int rc = gcolor_scale(result, illum, v);
+    if (rc == G_OK && d->tinted)
+        rc = gcolor_mul(result, &d->tint, result);
+    return rc;
+}
+
+static int rough_refraction(const Dielectric *d, GSurfPoint *sp, GVec3 in, const GColor *illum, double eta,
+                            GVec3 out, GColor *result)
+{
+    GFrame f = rough_frame(d, sp);
+    GVec3 wo = gframe_to_local(&f, out), wi = gframe_to_local(&f, in);
+    if (wo.z <= 0.0 || wi.z >= 0.0 || !gmaterial_sides_agree(sp, in, out, 1)) {
+        gcolor_black(result);
+        return G_OK;
+    }
+    if (index_matched(eta)) /* straight on, all of it */
+        return goptics_is_refraction_pair(gvec3_neg(out), f.n, 1.0, in) ? gcolor_copy(result, illum)
+                                                                       : (gcolor_black(result), G_OK);
+    double v = gmicrofacet_dielectric_refract(&d->mf, wi, wo, eta) * compensation(d, wo.z, eta);
+    return gcolor_scale(result, illum, v);
+}
+
+static int rough_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double eta,
+                        double u1, double u2, GMaterialSample *s, GColor *weight)
+{
+    const Dielectric *d = (const Dielectric *)self;
+    GFrame f = rough_frame(d, sp);
+    GVec3 wo = gframe_to_local(&f, out), wi;
+    if (wo.z <= 0.0)
+        return 0;
+    int rc;
+    if (index_matched(eta)) {
+        s->in = gvec3_neg(out);
+        s->pdf = 1.0;
+        s->flags = GSAMPLE_TRANSMIT | GSAMPLE_DELTA;
+        rc = gmaterial_sample_weight(self, sp, s->in, out, rel_index, 1, 1.0, weight);
+        return rc ? rc : 1;
+    }
+    int k = gmicrofacet_dielectric_sample(&d->mf, wo, eta, u1, u2, &wi);
+    if (!k)
+        return 0;
+    s->in = gframe_to_world(&f, wi);
+    s->pdf = gmicrofacet_dielectric_pdf(&d->mf, wi, wo, eta);
+    if (!(s->pdf > 0.0))
+        return 0;
+    s->flags = k == 1 ? GSAMPLE_REFLECT : GSAMPLE_TRANSMIT;
+    rc = gmaterial_sample_weight(self, sp, s->in, out, rel_index, k == 2, s->pdf, weight);
+    return rc ? rc : 1;
+}
+
+static double rough_pdf(const Dielectric *d, GSurfPoint *sp, GVec3 in, GVec3 out, double eta)
+{
+    if (index_matched(eta))
+        return 0.0;
+    GFrame f = rough_frame(d, sp);
+    return gmicrofacet_dielectric_pdf(&d->mf, gframe_to_local(&f, in), gframe_to_local(&f, out), eta);
+}
+
+/* ---- the methods: the rough interface where it is rough, else the smooth one's ideal rays ---- */
 
 /* Both methods pass on nothing for a pair on the wrong sides of the geometric surface (gmaterial_sides_agree): about a
  * normal a bump tilts, the mirror or refracted ray may point back across the surface (into the body, or out of it),
@@ -116,6 +147,8 @@ static int dielectric_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in
                                  GColor *result)
 {
     const Dielectric *d = (const Dielectric *)self;
+    if (d->rough)
+        return rough_reflection(d, sp, in, illum, out, result);
     GVec3 n = gsurfpoint_normal(sp);
     double cos_o = gvec3_dot(out, n);
     if (cos_o <= 0.0 || !gmaterial_sides_agree(sp, in, out, 0) || !gmaterial_is_mirror_pair(in, n, out)) {
@@ -132,7 +165,9 @@ static int dielectric_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in
 static int dielectric_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
                                  const GColor *rel_index, GVec3 out, GColor *result)
 {
-    (void)self;
+    const Dielectric *d = (const Dielectric *)self;
+    if (d->rough)
+        return rough_refraction(d, sp, in, illum, eta_of(sp, rel_index), out, result);
     GVec3 n = gsurfpoint_normal(sp);
     double cos_o = gvec3_dot(out, n);
     double eta = eta_of(sp, rel_index);
@@ -152,7 +187,8 @@ static int dielectric_refraction_index(const GMaterial *self, GSurfPoint *sp, GC
 
 static int dielectric_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
 {
-    (void)self;
+    if (((const Dielectric *)self)->rough) /* no ideal ray */
+        return 0;
     *dir = gvec3_reflect(view, gsurfpoint_normal(sp));
     return 1;
 }
@@ -160,7 +196,12 @@ static int dielectric_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec
 static int dielectric_refraction_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index,
                                      GVec3 *dir)
 {
-    (void)self;
+    if (((const Dielectric *)self)->rough) { /* no ideal ray, but where the index matches: straight on */
+        if (!index_matched(eta_of(sp, rel_index)))
+            return 0;
+        *dir = view;
+        return 1;
+    }
     return goptics_refract(view, gsurfpoint_normal(sp), eta_of(sp, rel_index), dir);
 }
 
@@ -213,6 +254,8 @@ static int dielectric_opaque(const GMaterial *self, GSurfPoint *sp)
 static int dielectric_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index,
                              double u1, double u2, GMaterialSample *s, GColor *weight)
 {
+    if (((const Dielectric *)self)->rough)
+        return rough_sample(self, sp, out, rel_index, eta_of(sp, rel_index), u1, u2, s, weight);
     (void)u2;
     GVec3 n = gsurfpoint_normal(sp), view = gvec3_neg(out), t;
     double cos_o = gvec3_dot(out, n);
@@ -238,20 +281,20 @@ static int dielectric_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, c
 
 static double dielectric_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
 {
-    (void)self, (void)sp, (void)in, (void)out, (void)rel_index;
-    return 0.0;
+    const Dielectric *d = (const Dielectric *)self;
+    return d->rough ? rough_pdf(d, sp, in, out, eta_of(sp, rel_index)) : 0.0;
 }
 
 static int dielectric_is_delta(const GMaterial *self, GSurfPoint *sp)
 {
-    (void)self, (void)sp;
-    return 1;
+    return ((const Dielectric *)self)->rough ? index_matched(gsurfpoint_relative_index(sp)) : 1;
 }
 
 static const GMaterialClass dielectric_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "dielectric",
-    .description = "smooth dielectric: Fresnel reflection and refraction, dispersion, Beer-Lambert absorption",
+    .description = "dielectric: Fresnel reflection and refraction, smooth or rough, dispersion, Beer-Lambert "
+                   "absorption",
     .destroy = dielectric_destroy,
     .reflection = dielectric_reflection,
     .refraction = dielectric_refraction,
@@ -265,7 +308,47 @@ static const GMaterialClass dielectric_class = {
     .is_delta = dielectric_is_delta,
 };
 
+/* The roughness: checked ([0, 1]), the distribution, and the albedo table of the compensation over the relative
+ * indices the material meets in vacuum (n and 1 / n over the wavelengths, with a margin). */
+static int rough_setup(Dielectric *d, const GDielectricRoughness *p, GError *err)
+{
+    if (!p)
+        return G_OK;
+    const double r[2] = {p->roughness_u, p->roughness_v};
+    static const char *const names[2] = {"roughness_u", "roughness_v"};
+    for (int i = 0; i < 2; i++)
+        if (!(r[i] >= 0.0 && r[i] <= 1.0))
+            return gerror_set_param(err, G_ERR_INVALID, names[i], "dielectric: %s is %g (must be in [0, 1])",
+                                    names[i], r[i]);
+    if (p->distribution != GMICROFACET_GGX && p->distribution != GMICROFACET_BECKMANN)
+        return gerror_set_param(err, G_ERR_INVALID, "distribution", "dielectric: unknown distribution %d",
+                                p->distribution);
+    double ax = gmicrofacet_alpha_from_roughness(r[0]), ay = gmicrofacet_alpha_from_roughness(r[1]);
+    if (!(ax >= GMICROFACET_ALPHA_MIN || ay >= GMICROFACET_ALPHA_MIN))
+        return G_OK; /* smooth */
+    d->rough = 1;
+    d->anisotropic = ax != ay;
+    d->mf = gmicrofacet_make(p->distribution, ax, ay);
+    if (p->uncompensated)
+        return G_OK;
+    double hi = 1.0;
+    for (int nm = GNM_MIN; nm <= GNM_MAX; nm++) {
+        double n = gdispersion_index(&d->disp, nm);
+        hi = fmax(hi, fmax(n, 1.0 / n));
+    }
+    if (!(d->albedo = gmem_alloc(sizeof *d->albedo)))
+        return gerror_set(err, G_ERR_NOMEM, "dielectric: out of memory");
+    gmicrofacet_dielectric_albedo_init(d->albedo, &d->mf, 1.05 * hi);
+    return G_OK;
+}
+
 int gdielectric_create(const GColorModel *model, const GDielectricParams *params, GMaterial **out, GError *err)
+{
+    return gdielectric_create_rough(model, params, NULL, out, err);
+}
+
+int gdielectric_create_rough(const GColorModel *model, const GDielectricParams *params,
+                             const GDielectricRoughness *rough, GMaterial **out, GError *err)
 {
     *out = NULL;
     if (!model || !params)
@@ -278,9 +361,13 @@ int gdielectric_create(const GColorModel *model, const GDielectricParams *params
         return rc;
     Dielectric *d = (Dielectric *)m;
     d->disp = params->index;
+    if ((rc = rough_setup(d, rough, err)) != G_OK) {
+        dielectric_destroy(&d->base);
+        return rc;
+    }
     if (gcolor_alloc(&d->index, model) != G_OK)
         rc = gerror_set(err, G_ERR_NOMEM, "dielectric: out of memory");
-    if (rc == G_OK && (rc = index_color(&d->disp, &d->index)) != G_OK)
+    if (rc == G_OK && (rc = gdispersion_color(&d->disp, &d->index)) != G_OK)
         rc = gerror_set_param(err, rc, "index", "dielectric: cannot express the index in model '%s'",
                               gcolormodel_name(model));
     if (rc == G_OK && params->absorption) {
@@ -307,7 +394,8 @@ int gdielectric_create(const GColorModel *model, const GDielectricParams *params
         dielectric_destroy(&d->base);
         return rc;
     }
-    d->base.flags |= GMAT_NO_UV; /* its methods read none of the (u, v) parametrisation (material.h) */
+    if (!d->anisotropic) /* its methods read none of the (u, v) parametrisation (material.h) */
+        d->base.flags |= GMAT_NO_UV;
     if (!d->tinted || d->tint.kind == GCOLOR_VECTOR) /* F * illum (* tint), (1 - F) * illum: sample by sample */
         d->base.flags |= GMAT_DIAGONAL;
     *out = &d->base;
@@ -316,63 +404,50 @@ int gdielectric_create(const GColorModel *model, const GDielectricParams *params
 
 /* ---- the text format ---- */
 
-/* index N | index cauchy A B [C] | index sellmeier B1 B2 B3 C1 C2 C3 */
-static int read_index(GReader *r, GDispersion *d, GError *err)
-{
-    int rc = greader_at_number(r, err); /* a number or a constant */
-    if (rc < 0)
-        return rc;
-    if (rc == 1) {
-        double n;
-        rc = greader_number_in(r, 0.01, 100.0, &n, err);
-        if (rc == G_OK)
-            *d = gdispersion_constant(n);
-        return rc;
-    }
-    static const char *const forms[] = {"cauchy", "sellmeier", NULL};
-    int which = 0;
-    if ((rc = greader_choice(r, forms, &which, err)) != G_OK)
-        return rc;
-    double c[6] = {0, 0, 0, 0, 0, 0};
-    int n = which == 0 ? 2 : 6;
-    for (int i = 0; i < n && rc == G_OK; i++)
-        rc = greader_number(r, &c[i], err);
-    if (rc == G_OK && which == 0 && (rc = greader_at_number(r, err)) == 1)
-        rc = greader_number(r, &c[2], err);
-    if (rc != G_OK)
-        return rc;
-    *d = which == 0 ? gdispersion_cauchy(c[0], c[1], c[2]) : gdispersion_sellmeier(c, c + 3);
-    GError check; /* a bad formula is reported at its last coefficient */
-    if (gdispersion_check(d, &check) != G_OK)
-        return greader_error(r, err, "%s", check.message);
-    return G_OK;
-}
-
-/* dielectric { index N | cauchy A B [C] | sellmeier B1 B2 B3 C1 C2 C3  absorption COLOR  tint COLOR }:
- * index 1.5, clear, untinted when not given */
+/* dielectric { index N | cauchy A B [C] | sellmeier B1 B2 B3 C1 C2 C3 | glass NAME  glass NAME  absorption COLOR
+ *              tint COLOR  roughness R | roughness_u R roughness_v R  distribution ggx|beckmann  compensate on|off }:
+ * index 1.5, clear, untinted, smooth when not given; GGX, compensated */
 static int parse_dielectric(GReader *r, const void *vtable, void **object, GError *err)
 {
     (void)vtable;
     GColor absorption = {0}, tint = {0};
-    GDispersion index = gdispersion_constant(1.5);
+    GDielectricParams p = {gdispersion_constant(1.5), NULL, NULL};
+    GDielectricRoughness rough = {0.0, 0.0, GMICROFACET_GGX, 0};
     const char *key;
-    int rc;
+    int rc, compensate = 1;
+    static const char *const distributions[] = {"ggx", "beckmann", NULL};
     while ((rc = greader_param(r, &key, err)) > 0) {
-        if (strcmp(key, "index") == 0)
-            rc = read_index(r, &index, err);
+        if (strcmp(key, "roughness") == 0) {
+            if ((rc = greader_number_in(r, 0.0, 1.0, &rough.roughness_u, err)) == G_OK)
+                rough.roughness_v = rough.roughness_u;
+        } else if (strcmp(key, "roughness_u") == 0)
+            rc = greader_number_in(r, 0.0, 1.0, &rough.roughness_u, err);
+        else if (strcmp(key, "roughness_v") == 0)
+            rc = greader_number_in(r, 0.0, 1.0, &rough.roughness_v, err);
+        else if (strcmp(key, "distribution") == 0)
+            rc = greader_choice(r, distributions, &rough.distribution, err);
+        else if (strcmp(key, "compensate") == 0)
+            rc = greader_bool(r, &compensate, err);
+        else if (strcmp(key, "index") == 0)
+            rc = gdispersion_read(r, &p.index, err);
+        else if (strcmp(key, "glass") == 0)
+            rc = gdispersion_read_glass(r, &p.index, err);
         else if (strcmp(key, "absorption") == 0)
             rc = greader_color(r, GCOLOR_REFLECTANCE, &absorption, err);
         else if (strcmp(key, "tint") == 0)
             rc = greader_color(r, GCOLOR_REFLECTANCE, &tint, err);
         else
-            rc = greader_unknown_param(r, "index, absorption, tint", err);
+            rc = greader_unknown_param(r, "index, glass, absorption, tint, roughness, roughness_u, roughness_v, "
+                                                 "distribution, compensate", err);
         if (rc < 0)
             break;
     }
     GMaterial *m = NULL;
     if (rc == G_OK) {
-        GDielectricParams p = {index, absorption.v ? &absorption : NULL, tint.v ? &tint : NULL};
-        if ((rc = gdielectric_create(greader_colormodel(r), &p, &m, err)) == G_OK)
+        p.absorption = absorption.v ? &absorption : NULL;
+        p.tint = tint.v ? &tint : NULL;
+        rough.uncompensated = !compensate;
+        if ((rc = gdielectric_create_rough(greader_colormodel(r), &p, &rough, &m, err)) == G_OK)
             *object = m;
     }
     gcolor_free(&absorption);
@@ -382,12 +457,23 @@ static int parse_dielectric(GReader *r, const void *vtable, void **object, GErro
 
 static const GParamInfo dielectric_params[] = {
     {"index", GPARAM_NAMED, "formula", "1.5",
-     "N in [0.01, 100]; cauchy A B [C]; sellmeier B1 B2 B3 C1 C2 C3",
-     "the refraction index: a constant, or Cauchy's or Sellmeier's formula of the wavelength in micrometres "
-     "(dispersion)"},
+     "N in [0.01, 100]; cauchy A B [C]; sellmeier B1 B2 B3 C1 C2 C3; glass NAME",
+     "the refraction index: a constant, Cauchy's or Sellmeier's formula of the wavelength in micrometres "
+     "(dispersion), or a named glass (`gmat glasses` lists them)"},
+    {"glass", GPARAM_NAMED, "choice", "none", "a name `gmat glasses` lists",
+     "the same as `index glass NAME`: BK7, BAF10, F5, F10, F11, FK51A, LASF9, SF5, SF10, SF11, fused_silica, "
+     "water, diamond"},
     {"absorption", GPARAM_NAMED, "color", "none (clear)", ">= 0, not a matrix",
      "the absorption coefficient per unit length inside (Beer-Lambert: exp(-a d) of the light passes)"},
     {"tint", GPARAM_NAMED, "color", "none (untinted)", "[0, 1]", "multiplies the light the surface reflects"},
+    {"roughness", GPARAM_NAMED, "number", "0 (smooth)", "[0, 1]",
+     "the microfacet width alpha (the same along both tangents): rough reflection and refraction (Walter et al. "
+     "2007); below 0.001 smooth"},
+    {"roughness_u", GPARAM_NAMED, "number", "0", "[0, 1]", "the width along dpdu (anisotropic)"},
+    {"roughness_v", GPARAM_NAMED, "number", "0", "[0, 1]", "the width along dpdv (anisotropic)"},
+    {"distribution", GPARAM_NAMED, "choice", "ggx", "ggx, beckmann", "the distribution of the microfacet normals"},
+    {"compensate", GPARAM_NAMED, "bool", "on", "on, off",
+     "divide the rough lobes by the single-scattering albedo: no light lost to multiple scattering"},
     {NULL},
 };
 

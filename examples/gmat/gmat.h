@@ -126,6 +126,8 @@ int gmat_metals(int argc, char **argv);
 /** `gmat swatch FILE MATERIAL ...` (swatch.c): renders a material or texture tree read with the reader options
  * base; returns the exit status. */
 int gmat_swatch(int argc, char **argv, const GReaderOptions *base);
+/** `gmat glasses [--markdown]` (glasses.c): the named glasses of the dispersion kit; returns the exit status. */
+int gmat_glasses(int argc, char **argv);
 
 /** Reports a usage error of subcommand cmd (NULL: of gmat itself) on stderr: "gmat CMD: ", fmt with arg, and
  * where to find help (main.c). Returns 2, the exit status of usage errors. */

@@ -8,6 +8,7 @@
  *   gmat types  [colormodel|color|material|node|generator] [--markdown]
  *   gmat swatch FILE MATERIAL -o SWATCH.png ...   (swatch.c)
  *   gmat laser  FILE MATERIAL ...                 (laser.c)
+ *   gmat glasses [--markdown]                     (glasses.c)
  * common options: --colormodel NAME [--step NM], --plugin MODULE.so (repeatable), --allow-plugins, --confine DIR,
  * --help, --version */
 #include "gmat.h"
@@ -55,7 +56,8 @@ static void usage_main(FILE *f)
                "  types   the registered types, or with --markdown the reference of their parameters\n"
                "  swatch  a picture of a material or texture tree (gmat swatch --help)\n"
                "  laser   the laser experiment of Wilkie et al. (gmat laser --help)\n"
-               "  metals  the measured metals of `conductor { metal NAME }` (gmat metals --help)\n\n"
+               "  metals  the measured metals of `conductor { metal NAME }` (gmat metals --help)\n"
+               "  glasses the named glasses a dielectric's index may be (gmat glasses --help)\n\n"
                "`gmat COMMAND --help` describes each command.\n\n%s\n%s",
             convention, common);
 }
@@ -544,13 +546,15 @@ int main(int argc, char **argv)
         return types(argc, argv);
     if (strcmp(argv[1], "metals") == 0)
         return gmat_metals(argc, argv);
+    if (strcmp(argv[1], "glasses") == 0)
+        return gmat_glasses(argc, argv);
     Args a = {.cmd = argv[1]};
     for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
         if (strcmp(a.cmd, commands[i].name) == 0)
             a.usage = commands[i].usage;
     if (!a.usage)
         return gmat_usage_error(NULL, "unknown command '%s' (expected eval, albedo, plot, list, check, types, swatch, "
-                                      "laser or metals)", a.cmd);
+                                      "laser, metals or glasses)", a.cmd);
     if ((rc = parse_args(argc, argv, &a)) >= 0)
         return rc;
     int listing = strcmp(a.cmd, "list") == 0;

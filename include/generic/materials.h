@@ -104,6 +104,15 @@ typedef struct GDielectricParams {
     const GColor *tint;       /**< factor on the reflected light in [0, 1] (NULL = none) */
 } GDielectricParams;
 
+/** The roughness of a rough dielectric (gdielectric_create_rough). */
+typedef struct GDielectricRoughness {
+    double roughness_u; /**< microfacet roughness in [0, 1] along dpdu (alpha = roughness, kit/microfacet.h); both
+                             widths below GMICROFACET_ALPHA_MIN: smooth */
+    double roughness_v; /**< the same along dpdv (equal to roughness_u: isotropic) */
+    int distribution;   /**< GMicrofacetDistribution (kit/microfacet.h): 0 GGX, 1 Beckmann */
+    int uncompensated;  /**< 1: single scattering only; 0: the multiple scattering compensated */
+} GDielectricRoughness;
+
 /** Smooth dielectric interface with unpolarised Fresnel reflection and Beer-Lambert absorption.
  *  - refraction_index: n(lambda) in the material's model. Spectral models (nsamples > 0) get the nm
  *    spectrum of n(lambda) through gcolor_from_nm; non-spectral models get the three values
@@ -117,8 +126,40 @@ typedef struct GDielectricParams {
  *  - refraction, aligned: (1 - F) * illum with eta from rel_index (NULL rel_index: the surface
  *    point's relative index); black when not aligned. Radiance is not rescaled by eta^2.
  *  - absorption: illum * exp(-a * length) per sample (the transmittance exp(-a) is computed once).
- *  - opaque: no; diffuse and ambient: black. */
+ *  - opaque: no; diffuse and ambient: black.
+ * Rough (gdielectric_create_rough with a roughness at or above GMICROFACET_ALPHA_MIN): no ideal rays
+ * (reflection_dir and refraction_dir say none, but refraction_dir goes straight on where the relative index is 1);
+ * reflection and refraction are Walter et al.'s
+ * microfacet BSDF with the scalar relative index (kit/microfacet_dielectric.h: radiance not rescaled by eta^2, as
+ * above), sampled by visible normals with a Fresnel choice; pdf is that density; is_delta only where the relative
+ * index is 1 (the light goes straight on, all of it). Unless uncompensated, the refraction is multiplied by
+ * (1 - R) / T, R and T the single-scattering albedos of the lossless interface's reflection and refraction at
+ * (cos theta_out, eta) (a table made at creation, kit/microfacet_dielectric.h): the light the microfacet model loses
+ * to multiple scattering is given back in the refraction's lobe, so that a lossless interface keeps all of it while
+ * its reflection stays single scattering and reciprocal. The error of this simple form: all of the multiply
+ * scattered light leaves as refracted light (part of it would leave as reflected light), and the factor is held
+ * within [1, 2], so that near and past the critical angle from inside, where the refraction has almost no lobe to
+ * carry it, part of the light stays lost. Anisotropic widths use
+ * the table of their geometric mean, and need dpdu (not GMAT_NO_UV). A roughness outside [0, 1] or an unknown
+ * distribution is refused naming the parameter (roughness_u, roughness_v, distribution); rough NULL is smooth
+ * (gdielectric_create). */
+GENERIC_API GENERIC_NODISCARD int gdielectric_create_rough(const GColorModel *model, const GDielectricParams *params,
+                                                           const GDielectricRoughness *rough, GMaterial **out,
+                                                           GError *err);
+/** The smooth dielectric: gdielectric_create_rough without roughness. */
 GENERIC_API GENERIC_NODISCARD int gdielectric_create(const GColorModel *model, const GDielectricParams *params, GMaterial **out, GError *err);
+
+/* ---- thindielectric ---- */
+
+/** A thin dielectric pane of index n (the brightness of `index` in the model, checked by gdispersion_check) with
+ * the same medium on both sides: one face reflects F = goptics_fresnel(cos, 1 / n), and the light reflected between
+ * the two faces sums to the pane's reflectance R = F + (1 - F)^2 F / (1 - F^2) = 2 F / (1 + F) and transmittance
+ * 1 - R (no absorption). reflection_dir: the mirror direction; refraction_dir: the view direction itself (no
+ * offset, no refraction). reflection, aligned: R * illum; refraction, aligned (in = -out): (1 - R) * illum, whatever
+ * rel_index; black when not aligned. Delta lobes only (is_delta); not opaque; refraction_index: the default 1 (the
+ * pane changes no medium). */
+GENERIC_API GENERIC_NODISCARD int gthindielectric_create(const GColorModel *model, const GDispersion *index,
+                                                         GMaterial **out, GError *err);
 
 /* ---- emitter ---- */
 

@@ -336,7 +336,13 @@ static void extreme_entry(GenBuf *b, GenRng *r, unsigned long i)
         }
         gb_printf(b, " absorption rgb");
         extreme(b, r);
-        gb_printf(b, " 0 0 }\n");
+        gb_printf(b, " 0 0"); /* rough, anisotropic, a named glass (known or not), a pane */
+        gb_printf(b, gen_below(r, 2) ? " roughness" : " roughness_u 0.2 roughness_v");
+        extreme(b, r);
+        gb_printf(b, " distribution %s compensate %s }\n", gen_below(r, 2) ? "ggx" : "beckmann",
+                  gen_below(r, 2) ? "on" : "off");
+        gb_printf(b, "material y%lu thindielectric { glass %s }\n", i,
+                  GEN_PICK(r, ((const char *const[]){"BK7", "fused_silica", "\"fused silica\"", "diamond", "flint"})));
         break;
     case 12:
         gb_printf(b, "node x%lu transform { child lambert uv { translate", i);
