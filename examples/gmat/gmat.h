@@ -120,6 +120,9 @@ double gmat_relative_eta(GSurfPoint *sp);
 /** `gmat laser FILE MATERIAL ...` (laser.c): the laser experiment of Wilkie et al., reading FILE with the reader
  * options base (--allow-plugins, --confine); returns the exit status. */
 int gmat_laser(int argc, char **argv, const GReaderOptions *base);
+/** `gmat metals [--markdown]` (metals.c): the measured metals `conductor { metal NAME }` knows. */
+int gmat_metals(int argc, char **argv);
+
 /** `gmat swatch FILE MATERIAL ...` (swatch.c): renders a material or texture tree read with the reader options
  * base; returns the exit status. */
 int gmat_swatch(int argc, char **argv, const GReaderOptions *base);

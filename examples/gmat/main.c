@@ -54,7 +54,8 @@ static void usage_main(FILE *f)
                "          the instance flags, sampling (chi-square, pdf, weights)\n"
                "  types   the registered types, or with --markdown the reference of their parameters\n"
                "  swatch  a picture of a material or texture tree (gmat swatch --help)\n"
-               "  laser   the laser experiment of Wilkie et al. (gmat laser --help)\n\n"
+               "  laser   the laser experiment of Wilkie et al. (gmat laser --help)\n"
+               "  metals  the measured metals of `conductor { metal NAME }` (gmat metals --help)\n\n"
                "`gmat COMMAND --help` describes each command.\n\n%s\n%s",
             convention, common);
 }
@@ -541,13 +542,15 @@ int main(int argc, char **argv)
         return gmat_swatch(argc, argv, &trust);
     if (strcmp(argv[1], "types") == 0)
         return types(argc, argv);
+    if (strcmp(argv[1], "metals") == 0)
+        return gmat_metals(argc, argv);
     Args a = {.cmd = argv[1]};
     for (size_t i = 0; i < sizeof commands / sizeof *commands; i++)
         if (strcmp(a.cmd, commands[i].name) == 0)
             a.usage = commands[i].usage;
     if (!a.usage)
-        return gmat_usage_error(NULL, "unknown command '%s' (expected eval, albedo, plot, list, check, types, swatch "
-                                      "or laser)", a.cmd);
+        return gmat_usage_error(NULL, "unknown command '%s' (expected eval, albedo, plot, list, check, types, swatch, "
+                                      "laser or metals)", a.cmd);
     if ((rc = parse_args(argc, argv, &a)) >= 0)
         return rc;
     int listing = strcmp(a.cmd, "list") == 0;

@@ -63,7 +63,14 @@ typedef enum GColorKind {
 /** How to read a value when converting from or to RGB/XYZ. */
 typedef enum GColorRole {
     GCOLOR_REFLECTANCE = 0, /**< a reflectance: seen under D65 normalised to Y = 1 */
-    GCOLOR_LIGHT = 1        /**< a light: its spectrum as it is; equal energy E has Y = 1 */
+    GCOLOR_LIGHT = 1,       /**< a light: its spectrum as it is; equal energy E has Y = 1 */
+    /** a unitless spectral quantity (a refractive index n, an extinction coefficient k): a curve over wavelength that
+     * no light multiplies. From the nm spectrum (gcolor_from_nm) a model whose vectors are samples at wavelengths
+     * (plain samples, nsamples == nvalues: spectrum, spectrum9, bispectral) takes the curve's values at its
+     * wavelengths (linear between whole nm, the edge value beyond GNM_MIN..GNM_MAX); any other model (rgb) reduces it
+     * as a reflectance. Every other conversion reads it as a reflectance. docs/reference/colour.md ("Unitless
+     * quantities") gives the measurements behind the rule. */
+    GCOLOR_UNITLESS = 2
 } GColorRole;
 
 typedef struct GColorModel GColorModel;

@@ -309,9 +309,29 @@ int gcolor_is_nonnegative(const GColor *c) { return gcolor_is_nonnegative_v4(c);
 
 /* ---- conversions ---- */
 
+/* The role a model's class is handed: a unitless quantity is read as a reflectance (color.h). */
+static GColorRole class_role(GColorRole role) { return role == GCOLOR_UNITLESS ? GCOLOR_REFLECTANCE : role; }
+
 int gcolor_to_nm(const GColor *c, GColorRole role, GSpectrumNM *out)
 {
-    return c->model->cls->to_nm(c->model, c, role, out);
+    return c->model->cls->to_nm(c->model, c, class_role(role), out);
+}
+
+/* A unitless curve in a model whose vectors are samples at wavelengths: its value at each sample's wavelength,
+ * linear between whole nm and the edge value beyond the exchange grid. */
+static void unitless_at_wavelengths(GColor *c, const GSpectrumNM *in)
+{
+    const GColorModel *m = c->model;
+    for (int k = 0; k < m->nsamples; k++) {
+        double x = m->lambda_min + k * m->lambda_step - GNM_MIN;
+        x = x < 0.0 ? 0.0 : x > GNM_COUNT - 1 ? GNM_COUNT - 1 : x;
+        int i = (int)x;
+        if (i > GNM_COUNT - 2)
+            i = GNM_COUNT - 2;
+        double t = x - i;
+        c->v[k] = (float)((1.0 - t) * in->v[i] + t * in->v[i + 1]);
+    }
+    c->kind = GCOLOR_VECTOR;
 }
 
 int gcolor_from_nm(GColor *c, const GSpectrumNM *in, GColorRole role)
@@ -319,13 +339,20 @@ int gcolor_from_nm(GColor *c, const GSpectrumNM *in, GColorRole role)
     for (int i = 0; i < GNM_COUNT; i++)
         if (!isfinite(in->v[i]))
             return G_ERR_INVALID;
-    return c->model->cls->from_nm(c->model, in, role, c);
+    const GColorModel *m = c->model;
+    if (role == GCOLOR_UNITLESS && !m->cls->fill && m->nsamples > 0 && m->nsamples == m->nvalues &&
+        m->lambda_step > 0.0 && isfinite(m->lambda_min)) {
+        unitless_at_wavelengths(c, in);
+        return G_OK;
+    }
+    return m->cls->from_nm(m, in, class_role(role), c);
 }
 
 int gcolormodel_xyz_shows_nonfinite(const GColorModel *m) { return m && m->cls->to_xyz == gspectral_to_xyz; }
 
 int gcolor_to_xyz(const GColor *c, GColorRole role, double xyz[3])
 {
+    role = class_role(role);
     if (c->model->cls->to_xyz)
         return c->model->cls->to_xyz(c->model, c, role, xyz);
     GSpectrumNM s;
@@ -348,6 +375,7 @@ int gcolor_from_rgb(GColor *c, const double rgb[3], GColorRole role)
 {
     if (!isfinite(rgb[0]) || !isfinite(rgb[1]) || !isfinite(rgb[2]))
         return G_ERR_INVALID;
+    role = class_role(role);
     if (c->model->cls->from_rgb)
         return c->model->cls->from_rgb(c->model, rgb, role, c);
     GSpectrumNM s;

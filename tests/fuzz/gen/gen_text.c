@@ -7,7 +7,8 @@
 #include <string.h>
 
 static const char *const g_mats[] = {"lambert", "mirror", "lambert { reflectance rgb 0.2 0.5 0.7 }",
-                                     "phong { exponent 40 }", "dielectric { index 1.5 }", "emitter"};
+                                     "phong { exponent 40 }", "dielectric { index 1.5 }", "emitter",
+                                     "conductor { metal Au roughness 0.3 }"};
 /* generators whose values lie strictly between 0 and 1 somewhere, so both children of a blend are evaluated */
 static const char *const g_blend_gens[] = {"perlin", "fbm", "gradient { space uv slope 0.5 0.3 0 offset 0.1 }",
                                            "marble", "wood", "turbulence"};
@@ -229,7 +230,7 @@ static void extreme(GenBuf *b, GenRng *r)
 /* A line with numbers that are extreme in every slot (the parse routine must check every range). */
 static void extreme_entry(GenBuf *b, GenRng *r, unsigned long i)
 {
-    switch (gen_below(r, 16)) {
+    switch (gen_below(r, 17)) {
     case 0:
         gb_printf(b, "generator x%lu perlin { frequency", i);
         extreme(b, r);
@@ -366,6 +367,20 @@ static void extreme_entry(GenBuf *b, GenRng *r, unsigned long i)
         gb_printf(b, " frequency");
         extreme(b, r);
         gb_printf(b, " }\n");
+        break;
+    case 15: /* a conductor: n, k in every slot, a long spectrum of n, roughness and its anisotropy */
+        gb_printf(b, "material x%lu conductor { eta spectrum {", i);
+        for (int k = 0, n = 2 + (int)gen_below(r, 200); k < n; k++) {
+            gb_printf(b, " %d", 300 + 3 * k);
+            extreme(b, r);
+        }
+        gb_printf(b, " } k rgb");
+        extreme(b, r);
+        extreme(b, r);
+        extreme(b, r);
+        gb_printf(b, gen_below(r, 2) ? " roughness" : " roughness_u 0.2 roughness_v");
+        extreme(b, r);
+        gb_printf(b, " distribution %s }\n", gen_below(r, 2) ? "ggx" : "beckmann");
         break;
     default:
         gb_printf(b, "generator x%lu gradient { slope", i);

@@ -1,0 +1,43 @@
+/* fresnel.h - Fresnel reflectance on colours, one pass over the samples (color_map.h says what a sample is in each
+ * model): dielectric interfaces (a real relative index) and conductors (a complex index eta + i k), unpolarised.
+ * The scalar forms are goptics_fresnel (material.h) and goptics_fresnel_conductor. */
+#ifndef GENERIC_KIT_FRESNEL_H
+#define GENERIC_KIT_FRESNEL_H
+
+#include "../export.h"
+#include "../color.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Unpolarised Fresnel reflectance of a conductor of complex index eta + i k (relative to the medium the light
+ * arrives in) for light arriving at cos_i (its absolute value is used, clamped to 1): the exact form for an
+ * absorbing medium, the mean of the s and p reflectances. At normal incidence ((eta - 1)^2 + k^2) / ((eta + 1)^2 +
+ * k^2); with k = 0 it is goptics_fresnel(cos_i, 1 / eta). In [0, 1] for eta > 0 and k >= 0. */
+GENERIC_API double goptics_fresnel_conductor(double cos_i, double eta, double k);
+
+/** out = the conductor's Fresnel reflectance at cos_i sample by sample, eta and k being colours of out's model that
+ * hold the real and imaginary parts of the relative index in each sample (unitless values, not reflectances). Status
+ * as gcolor_map (color_map.h). */
+GENERIC_API GENERIC_NODISCARD int gmaterial_fresnel_conductor(GColor *out, double cos_i, const GColor *eta,
+                                                              const GColor *k);
+
+/** out = the dielectric Fresnel reflectance goptics_fresnel(cos_i, eta) sample by sample, eta the relative index
+ * n(from) / n(to) in each sample (1 past total internal reflection). Status as gcolor_map. */
+GENERIC_API GENERIC_NODISCARD int gmaterial_fresnel_dielectric(GColor *out, double cos_i, const GColor *eta);
+
+/** A complex index n + i k measured over wavelength (eta_nm, k_nm on the nm exchange grid) as colours of eta's model
+ * (k of the same model), by the rule for unitless quantities (GCOLOR_UNITLESS, color.h) with one addition for the
+ * pair: in a model without wavelength samples (nsamples 0: rgb) n is reduced as the role says (as a reflectance) and
+ * k is then chosen sample by sample so that the normal-incidence reflectance ((n - 1)^2 + k^2) / ((n + 1)^2 + k^2) is
+ * the model's reduction of the measured normal-incidence reflectance (k = 0 where n alone reflects more). Measured
+ * against the spectral result (docs/reference/colour.md, "Unitless quantities"), this halves rgb's error for gold
+ * and divides copper's by six. G_ERR_MISMATCH for colours of two models; a conversion's status otherwise. */
+GENERIC_API GENERIC_NODISCARD int gmaterial_complex_index_from_nm(GColor *eta, GColor *k, const GSpectrumNM *eta_nm,
+                                                                  const GSpectrumNM *k_nm);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,81 @@
+/* fresnel.c - Fresnel reflectance of conductors and dielectrics on colours (generic/kit/fresnel.h). */
+#include "generic/kit/fresnel.h"
+#include "generic/kit/color_map.h"
+#include "generic/material.h"
+
+#include <math.h>
+
+/* The reflectance of an absorbing medium (Born and Wolf; the form of Heavens 1965): with
+ * a^2 + b^2 = sqrt((eta^2 - k^2 - sin^2)^2 + 4 eta^2 k^2) and a^2 = (that + eta^2 - k^2 - sin^2) / 2,
+ * Rs = (a^2 + b^2 - 2 a cos + cos^2) / (a^2 + b^2 + 2 a cos + cos^2) and
+ * Rp = Rs (cos^2 (a^2 + b^2) - 2 a cos sin^2 + sin^4) / (cos^2 (a^2 + b^2) + 2 a cos sin^2 + sin^4). */
+double goptics_fresnel_conductor(double cos_i, double eta, double k)
+{
+    double c = fabs(cos_i);
+    if (c > 1.0)
+        c = 1.0;
+    double c2 = c * c, s2 = 1.0 - c2, e2 = eta * eta, k2 = k * k;
+    double t = e2 - k2 - s2;
+    double ab = sqrt(t * t + 4.0 * e2 * k2); /* a^2 + b^2 */
+    double a = sqrt(gfmax(0.0, 0.5 * (ab + t)));
+    double rs_num = ab - 2.0 * a * c + c2, rs_den = ab + 2.0 * a * c + c2;
+    double rs = rs_den > 0.0 ? rs_num / rs_den : 1.0;
+    double p1 = c2 * ab + s2 * s2, p2 = 2.0 * a * c * s2;
+    double rp = p1 + p2 > 0.0 ? rs * (p1 - p2) / (p1 + p2) : rs;
+    return 0.5 * (rs + rp);
+}
+
+static void conductor_samples(float *out, const float *eta, const float *k, const float *unused, int n,
+                              const void *params)
+{
+    (void)unused;
+    double c = *(const double *)params;
+    for (int i = 0; i < n; i++)
+        out[i] = (float)goptics_fresnel_conductor(c, eta[i], k[i]);
+}
+
+int gmaterial_fresnel_conductor(GColor *out, double cos_i, const GColor *eta, const GColor *k)
+{
+    if (!k)
+        return G_ERR_INVALID;
+    return gcolor_map_samples(out, conductor_samples, &cos_i, eta, k, NULL);
+}
+
+static void dielectric_samples(float *out, const float *eta, const float *b, const float *c, int n,
+                               const void *params)
+{
+    (void)b, (void)c;
+    double cos_i = *(const double *)params;
+    for (int i = 0; i < n; i++)
+        out[i] = (float)goptics_fresnel(cos_i, eta[i]);
+}
+
+int gmaterial_fresnel_dielectric(GColor *out, double cos_i, const GColor *eta)
+{
+    return gcolor_map_samples(out, dielectric_samples, &cos_i, eta, NULL, NULL);
+}
+
+/* k for a normal-incidence reflectance r and index n: ((n - 1)^2 + k^2) / ((n + 1)^2 + k^2) = r solved for k. */
+static double k_for_reflectance(double n, double r, double unused, const void *params)
+{
+    (void)unused, (void)params;
+    r = gfmin(gfmax(r, 0.0), 0.9999);
+    double k2 = (r * (n + 1.0) * (n + 1.0) - (n - 1.0) * (n - 1.0)) / (1.0 - r);
+    return k2 > 0.0 ? sqrt(k2) : 0.0;
+}
+
+int gmaterial_complex_index_from_nm(GColor *eta, GColor *k, const GSpectrumNM *eta_nm, const GSpectrumNM *k_nm)
+{
+    if (!eta || !k || !eta_nm || !k_nm)
+        return G_ERR_INVALID;
+    if (eta->model != k->model)
+        return G_ERR_MISMATCH;
+    int rc = gcolor_from_nm(eta, eta_nm, GCOLOR_UNITLESS);
+    if (rc != G_OK || eta->model->nsamples > 0)
+        return rc ? rc : gcolor_from_nm(k, k_nm, GCOLOR_UNITLESS);
+    GSpectrumNM r0;
+    for (int i = 0; i < GNM_COUNT; i++)
+        r0.v[i] = (float)goptics_fresnel_conductor(1.0, eta_nm->v[i], k_nm->v[i]);
+    rc = gcolor_from_nm(k, &r0, GCOLOR_REFLECTANCE);
+    return rc ? rc : gcolor_map(k, k_for_reflectance, NULL, eta, k, NULL);
+}

@@ -1,0 +1,186 @@
+/* microfacet.c - GGX and Beckmann microfacet distributions (generic/kit/microfacet.h): D, Lambda, G1, G2 and the
+ * sampling of visible normals. */
+#include "generic/kit/microfacet.h"
+
+#include <math.h>
+
+#define INV_SQRT_PI 0.56418958354775628695
+#define ALPHA_MAX 1e3
+
+double gmicrofacet_alpha_from_roughness(double roughness)
+{
+    return roughness >= 0.0 && roughness <= 1.0 ? roughness : NAN;
+}
+
+static double clamp_alpha(double a)
+{
+    if (!(a >= GMICROFACET_ALPHA_MIN)) /* also NaN */
+        return GMICROFACET_ALPHA_MIN;
+    return a > ALPHA_MAX ? ALPHA_MAX : a;
+}
+
+GMicrofacet gmicrofacet_make(int distribution, double alpha_x, double alpha_y)
+{
+    GMicrofacet m;
+    m.distribution = distribution == GMICROFACET_BECKMANN ? GMICROFACET_BECKMANN : GMICROFACET_GGX;
+    m.alpha_x = clamp_alpha(alpha_x);
+    m.alpha_y = clamp_alpha(alpha_y);
+    return m;
+}
+
+double gmicrofacet_d(const GMicrofacet *m, GVec3 h)
+{
+    if (!(h.z > 0.0))
+        return 0.0;
+    double ax = m->alpha_x, ay = m->alpha_y;
+    double sx = h.x / ax, sy = h.y / ay, z2 = h.z * h.z;
+    if (m->distribution == GMICROFACET_BECKMANN) {
+        double e = (sx * sx + sy * sy) / z2; /* tan^2 theta scaled by the widths */
+        return exp(-e) / (M_PI * ax * ay * z2 * z2);
+    }
+    double q = sx * sx + sy * sy + z2;
+    return 1.0 / (M_PI * ax * ay * q * q);
+}
+
+double gmicrofacet_lambda(const GMicrofacet *m, GVec3 w)
+{
+    double z2 = w.z * w.z;
+    if (!(z2 > 0.0))
+        return INFINITY;
+    double t2 = (m->alpha_x * m->alpha_x * w.x * w.x + m->alpha_y * m->alpha_y * w.y * w.y) / z2; /* alpha^2 tan^2 */
+    if (m->distribution == GMICROFACET_BECKMANN) {
+        if (t2 == 0.0)
+            return 0.0;
+        double a = 1.0 / sqrt(t2);
+        return 0.5 * (-erfc(a) + exp(-a * a) * INV_SQRT_PI / a);
+    }
+    return t2 / (2.0 * (sqrt(1.0 + t2) + 1.0)); /* (sqrt(1 + t2) - 1) / 2 without cancellation */
+}
+
+/* 1 when w sees the facet h from its own side of the surface: w.h and w.z of one sign */
+static int sees(GVec3 w, GVec3 h) { return gvec3_dot(w, h) * w.z > 0.0; }
+
+double gmicrofacet_g1(const GMicrofacet *m, GVec3 w, GVec3 h)
+{
+    if (!sees(w, h))
+        return 0.0;
+    return 1.0 / (1.0 + gmicrofacet_lambda(m, w));
+}
+
+double gmicrofacet_g2(const GMicrofacet *m, GVec3 wi, GVec3 wo, GVec3 h)
+{
+    if (!sees(wi, h) || !sees(wo, h))
+        return 0.0;
+    return 1.0 / (1.0 + gmicrofacet_lambda(m, wi) + gmicrofacet_lambda(m, wo));
+}
+
+/* GGX's visible normals by spherical caps (Dupuy and Benyoub 2023): in the configuration stretched to alpha 1, a
+ * visible normal is wo plus a point drawn uniformly on the spherical cap of the unit sphere beyond the plane
+ * z = -wo.z; unstretched and normalised. */
+static GVec3 ggx_sample_visible(const GMicrofacet *m, GVec3 wo, double u1, double u2)
+{
+    GVec3 ws = gvec3_normalize(gvec3(m->alpha_x * wo.x, m->alpha_y * wo.y, wo.z));
+    double phi = 2.0 * M_PI * u1;
+    double z = (1.0 - u2) * (1.0 + ws.z) - ws.z;
+    double s = sqrt(gfmax(0.0, 1.0 - z * z));
+    GVec3 hs = gvec3_add(gvec3(s * cos(phi), s * sin(phi), z), ws);
+    GVec3 h = gvec3_normalize(gvec3(m->alpha_x * hs.x, m->alpha_y * hs.y, gfmax(hs.z, 0.0)));
+    if (!(h.z > 0.0)) /* only when the cap's point is -ws itself: a measure-zero draw */
+        h = gvec3(0.0, 0.0, 1.0);
+    return h;
+}
+
+/* The inverse error function: a closed-form first guess (Winitzki 2008), refined by Newton steps on erf. */
+static double erfinv_d(double y)
+{
+    if (!(y > -1.0))
+        return -INFINITY;
+    if (!(y < 1.0))
+        return INFINITY;
+    double l = log((1.0 - y) * (1.0 + y)), a = 0.147, t = 2.0 / (M_PI * a) + 0.5 * l;
+    double x = copysign(sqrt(sqrt(t * t - l / a) - t), y);
+    for (int i = 0; i < 4; i++) {
+        double d = 2.0 * INV_SQRT_PI * exp(-x * x);
+        if (!(d > 0.0))
+            break;
+        x -= (erf(x) - y) / d;
+    }
+    return x;
+}
+
+/* Beckmann's visible slopes at alpha 1 seen from a direction at cot theta, in the frame where the direction lies in
+ * the xz plane: x has the density proportional to (cot - x) exp(-x^2) for x < cot, whose cumulative integral is
+ * F(x) = cot erfc(-x) / 2 + exp(-x^2) / (2 sqrt(pi)); x solves F(x) = u F(cot) by Newton steps kept inside a
+ * shrinking bracket. y is independent of x, Gaussian. */
+static double beckmann_visible_slope_x(double cot, double u)
+{
+    double target = u * (cot * erfc(-cot) * 0.5 + exp(-cot * cot) * 0.5 * INV_SQRT_PI);
+    double lo = -12.0, hi = cot, x = gfmin(gfmax(erfinv_d(2.0 * u - 1.0), lo), hi);
+    for (int i = 0; i < 100; i++) {
+        double f = cot * erfc(-x) * 0.5 + exp(-x * x) * 0.5 * INV_SQRT_PI - target;
+        if (f > 0.0)
+            hi = x;
+        else
+            lo = x;
+        double d = (cot - x) * exp(-x * x) * INV_SQRT_PI, next = x - f / d;
+        if (!(d > 0.0) || !(next > lo && next < hi))
+            next = 0.5 * (lo + hi);
+        if (fabs(next - x) < 1e-13 * (1.0 + fabs(x)) || hi - lo < 1e-13)
+            return next;
+        x = next;
+    }
+    return x;
+}
+
+static GVec3 beckmann_sample_visible(const GMicrofacet *m, GVec3 wo, double u1, double u2)
+{
+    GVec3 ws = gvec3_normalize(gvec3(m->alpha_x * wo.x, m->alpha_y * wo.y, wo.z));
+    double sin_t = sqrt(ws.x * ws.x + ws.y * ws.y), sx, sy = erfinv_d(2.0 * u2 - 1.0);
+    if (sin_t < 1e-9) { /* seen from the normal: the slopes' own Gaussian */
+        sx = erfinv_d(2.0 * u1 - 1.0);
+    } else {
+        double x = beckmann_visible_slope_x(ws.z / sin_t, u1);
+        double c = ws.x / sin_t, s = ws.y / sin_t; /* rotate from the xz plane to wo's azimuth */
+        sx = c * x - s * sy;
+        sy = s * x + c * sy;
+    }
+    if (!isfinite(sx) || !isfinite(sy)) /* u at the end of [0, 1): a slope beyond any double */
+        return gvec3(0.0, 0.0, 1.0);
+    return gvec3_normalize(gvec3(-m->alpha_x * sx, -m->alpha_y * sy, 1.0));
+}
+
+GVec3 gmicrofacet_sample_visible(const GMicrofacet *m, GVec3 wo, double u1, double u2)
+{
+    if (m->distribution == GMICROFACET_BECKMANN)
+        return beckmann_sample_visible(m, wo, u1, u2);
+    return ggx_sample_visible(m, wo, u1, u2);
+}
+
+double gmicrofacet_pdf_visible(const GMicrofacet *m, GVec3 wo, GVec3 h)
+{
+    if (!(wo.z > 0.0))
+        return 0.0;
+    double c = gvec3_dot(wo, h);
+    if (!(c > 0.0))
+        return 0.0;
+    return gmicrofacet_g1(m, wo, h) * c * gmicrofacet_d(m, h) / wo.z;
+}
+
+double gmicrofacet_pdf_reflect(const GMicrofacet *m, GVec3 wo, GVec3 wi)
+{
+    if (!(wo.z > 0.0) || !(wi.z > 0.0))
+        return 0.0;
+    GVec3 h = gvec3_normalize(gvec3_add(wo, wi));
+    double c = gvec3_dot(wo, h);
+    if (!(c > 0.0))
+        return 0.0;
+    return gmicrofacet_pdf_visible(m, wo, h) / (4.0 * c);
+}
+
+double gmicrofacet_reflect_cos(const GMicrofacet *m, GVec3 wi, GVec3 wo)
+{
+    if (!(wo.z > 0.0) || !(wi.z > 0.0))
+        return 0.0;
+    GVec3 h = gvec3_normalize(gvec3_add(wo, wi));
+    return gmicrofacet_d(m, h) * gmicrofacet_g2(m, wi, wo, h) / (4.0 * wo.z);
+}

@@ -1,0 +1,461 @@
+/* conductor.c - a metal: the Fresnel reflectance of a complex index n + i k (kit/fresnel.h), smooth (an ideal mirror
+ * ray) or rough (a GGX or Beckmann microfacet distribution, kit/microfacet.h), with the energy that single scattering
+ * loses on a rough surface given back (Kulla and Conty 2017).
+ *
+ * Rough reflection, for light from in towards out about the shading normal, h their half vector:
+ *   f cos_in = F(in.h) D(h) G2(in, out, h) / (4 cos_out) + F_ms (1 - E(cos_out)) (1 - E(cos_in)) cos_in
+ *              / (pi (1 - E_avg)),
+ * E the directional albedo of the rough mirror with Fresnel 1 and E_avg its cosine-weighted mean (tabulated at
+ * construction, gmicrofacet_albedo_table), F_ms = F_avg^2 E_avg / (1 - F_avg (1 - E_avg)) per sample, F_avg the
+ * cosine-weighted mean of the Fresnel term: the light that leaves after more than one bounce. With Fresnel 1 the
+ * albedo is then 1 at every angle. Sampling: visible normals (gmicrofacet_sample_visible) and, with probability
+ * 1 - E(cos_out), a cosine lobe for the compensation. */
+#include "generic/kit/color_map.h"
+#include "generic/kit/fresnel.h"
+#include "generic/kit/material_kit.h"
+#include "generic/kit/metals.h"
+#include "generic/kit/microfacet.h"
+#include "generic/colorspec.h"
+#include "generic/plugin.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+/* The largest n and k a file may give. */
+#define CONDUCTOR_INDEX_MAX 1000.0
+
+typedef struct Conductor {
+    GMaterial base;
+    GColor eta, k; /* the complex index, unitless (GCOLOR_UNITLESS) */
+    GColor f_avg;  /* 2 * integral of F(mu) mu dmu, per sample: the smooth albedo, for ambient() */
+    GColor ms;     /* F_ms / (pi (1 - E_avg)): the compensation lobe's colour */
+    GMicrofacet mf;
+    float e[GMICROFACET_ALBEDO_N];
+    double e_avg;
+    int smooth, anisotropic, compensate;
+} Conductor;
+
+static void conductor_destroy(GMaterial *self)
+{
+    Conductor *c = (Conductor *)self;
+    gcolor_free(&c->eta);
+    gcolor_free(&c->k);
+    gcolor_free(&c->f_avg);
+    gcolor_free(&c->ms);
+    gmem_free(c);
+}
+
+/* The local frame at sp: about the shading normal n, its first tangent along dpdu for an anisotropic surface. */
+static GFrame frame_at(const Conductor *c, const GSurfPoint *sp, GVec3 n)
+{
+    return c->anisotropic ? gframe_from_normal_tangent(n, sp->dpdu) : gframe_from_normal(n);
+}
+
+/* What the rough kernel needs beside eta, k and ms: the Fresnel cosine and the weights of the two terms. */
+typedef struct RoughTerms {
+    float cos_h, single, multiple;
+} RoughTerms;
+
+/* out = F(cos_h; eta, k) * single + ms * multiple, sample by sample, in float so that the loop vectorises; the same
+ * formula as goptics_fresnel_conductor. */
+static void rough_kernel(float *out, const float *eta, const float *k, const float *ms, int n, const void *params)
+{
+    const RoughTerms *t = params;
+    float c = t->cos_h, c2 = c * c, s2 = 1.0f - c2, single = t->single, multiple = t->multiple;
+    for (int i = 0; i < n; i++) {
+        float e2 = eta[i] * eta[i], k2 = k[i] * k[i], u = e2 - k2 - s2;
+        float ab = sqrtf(u * u + 4.0f * e2 * k2), a2 = 0.5f * (ab + u);
+        float a = sqrtf(a2 > 0.0f ? a2 : 0.0f);
+        float rs_den = ab + 2.0f * a * c + c2, rs = rs_den > 0.0f ? (ab - 2.0f * a * c + c2) / rs_den : 1.0f;
+        float p1 = c2 * ab + s2 * s2, p2 = 2.0f * a * c * s2;
+        float rp = p1 + p2 > 0.0f ? rs * (p1 - p2) / (p1 + p2) : rs;
+        out[i] = 0.5f * (rs + rp) * single + ms[i] * multiple;
+    }
+}
+
+/* f cos_in of the rough surface for white light into f (a colour of the model); 0 when nothing is reflected. */
+static int rough_value(const Conductor *c, const GSurfPoint *sp, GVec3 n, GVec3 in, GVec3 out, GColor *f)
+{
+    GFrame fr = frame_at(c, sp, n);
+    GVec3 wi = gframe_to_local(&fr, in), wo = gframe_to_local(&fr, out);
+    if (!(wi.z > 0.0) || !(wo.z > 0.0)) {
+        gcolor_black(f);
+        return G_OK;
+    }
+    GVec3 h = gvec3_normalize(gvec3_add(wi, wo));
+    RoughTerms t = {(float)gfmin(gfmax(gvec3_dot(wi, h), 0.0), 1.0), (float)gmicrofacet_reflect_cos(&c->mf, wi, wo),
+                    0.0f};
+    if (c->compensate)
+        t.multiple = (float)((1.0 - gmicrofacet_albedo_at(c->e, wo.z)) * (1.0 - gmicrofacet_albedo_at(c->e, wi.z)) *
+                             wi.z);
+    return gcolor_map_samples(f, rough_kernel, &t, &c->eta, &c->k, &c->ms);
+}
+
+static int conductor_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
+                                GColor *result)
+{
+    const Conductor *c = (const Conductor *)self;
+    GVec3 n;
+    double cos_in = gmaterial_cos_in(sp, in, out, &n);
+    if (cos_in <= 0.0 || (c->smooth && !gmaterial_is_mirror_pair(in, n, out))) {
+        gcolor_black(result);
+        return G_OK;
+    }
+    if (!sp->scratch)
+        return G_ERR_INVALID;
+    GScratchMark mark = gscratch_mark(sp->scratch);
+    GColor f;
+    int rc = gcolor_scratch_uncleared(&f, self->model, sp->scratch);
+    if (rc == G_OK)
+        rc = c->smooth ? gmaterial_fresnel_conductor(&f, cos_in, &c->eta, &c->k) : rough_value(c, sp, n, in, out, &f);
+    if (rc == G_OK)
+        rc = gcolor_mul(result, &f, illum);
+    gscratch_release(sp->scratch, mark);
+    return rc;
+}
+
+static int conductor_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
+{
+    if (!((const Conductor *)self)->smooth)
+        return 0;
+    *dir = gvec3_reflect(view, gsurfpoint_normal(sp));
+    return 1;
+}
+
+static int conductor_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
+{
+    (void)sp;
+    return gcolor_mul(result, &((const Conductor *)self)->f_avg, illum);
+}
+
+/* The probability of the compensation's cosine lobe for wo in the local frame. */
+static double cosine_share(const Conductor *c, GVec3 wo)
+{
+    return c->compensate ? 1.0 - gmicrofacet_albedo_at(c->e, wo.z) : 0.0;
+}
+
+static double rough_pdf(const Conductor *c, GVec3 wi, GVec3 wo)
+{
+    double q = cosine_share(c, wo);
+    return (1.0 - q) * gmicrofacet_pdf_reflect(&c->mf, wo, wi) + q * gfmax(wi.z, 0.0) / M_PI;
+}
+
+static int conductor_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
+                            double u2, GMaterialSample *s, GColor *weight)
+{
+    (void)rel_index;
+    const Conductor *c = (const Conductor *)self;
+    if (gvec3_dot(out, sp->geometric_normal) <= 0.0)
+        return 0;
+    GVec3 n = gsurfpoint_normal(sp);
+    if (c->smooth) { /* one delta lobe, chosen with probability 1: weight = F */
+        s->in = gvec3_reflect(gvec3_neg(out), n);
+        s->pdf = 1.0;
+        s->flags = GSAMPLE_REFLECT | GSAMPLE_DELTA;
+        double cos_in = gmaterial_cos_in(sp, s->in, out, &n);
+        if (cos_in <= 0.0) {
+            gcolor_black(weight);
+            return 1;
+        }
+        int rc = gmaterial_fresnel_conductor(weight, cos_in, &c->eta, &c->k);
+        return rc ? rc : 1;
+    }
+    GFrame fr = frame_at(c, sp, n);
+    GVec3 wo = gframe_to_local(&fr, out), wi;
+    if (!(wo.z > 0.0))
+        return 0;
+    double q = cosine_share(c, wo);
+    if (u1 < q) {
+        u1 /= q;
+        double r = sqrt(u1), phi = 2.0 * M_PI * u2;
+        wi = gvec3(r * cos(phi), r * sin(phi), sqrt(gfmax(0.0, 1.0 - u1)));
+    } else {
+        u1 = (u1 - q) / (1.0 - q);
+        GVec3 h = gmicrofacet_sample_visible(&c->mf, wo, u1 < 1.0 ? u1 : 0.0, u2);
+        wi = gvec3_sub(gvec3_scale(h, 2.0 * gvec3_dot(wo, h)), wo);
+    }
+    if (!(wi.z > 0.0)) /* reflected below the surface: nothing drawn */
+        return 0;
+    s->in = gframe_to_world(&fr, wi);
+    s->pdf = rough_pdf(c, wi, wo);
+    s->flags = GSAMPLE_REFLECT;
+    if (!(s->pdf > 0.0))
+        return 0;
+    int rc = gmaterial_sample_weight(self, sp, s->in, out, NULL, 0, s->pdf, weight);
+    return rc ? rc : 1;
+}
+
+static double conductor_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
+{
+    (void)rel_index;
+    const Conductor *c = (const Conductor *)self;
+    if (c->smooth || gvec3_dot(out, sp->geometric_normal) <= 0.0)
+        return 0.0;
+    GFrame fr = frame_at(c, sp, gsurfpoint_normal(sp));
+    GVec3 wo = gframe_to_local(&fr, out);
+    if (!(wo.z > 0.0))
+        return 0.0;
+    return rough_pdf(c, gframe_to_local(&fr, in), wo);
+}
+
+static int conductor_is_delta(const GMaterial *self, GSurfPoint *sp)
+{
+    (void)sp;
+    return ((const Conductor *)self)->smooth;
+}
+
+static const GMaterialClass conductor_class = {
+    .abi_version = GMATERIAL_ABI_VERSION,
+    .name = "conductor",
+    .description = "a metal: Fresnel of a complex index (measured or given), smooth or GGX / Beckmann rough",
+    .destroy = conductor_destroy,
+    .reflection = conductor_reflection,
+    .reflection_dir = conductor_reflection_dir,
+    .ambient = conductor_ambient,
+    .sample = conductor_sample,
+    .pdf = conductor_pdf,
+    .is_delta = conductor_is_delta,
+};
+
+/* ---- construction ---- */
+
+/* F_ms / (pi (1 - E_avg)) from F_avg, per sample (params: E_avg). */
+static double ms_colour(double f_avg, double unused1, double unused2, const void *params)
+{
+    (void)unused1, (void)unused2;
+    double e = *(const double *)params;
+    double fms = f_avg * f_avg * e / (1.0 - f_avg * (1.0 - e));
+    return e < 1.0 ? fms / (M_PI * (1.0 - e)) : 0.0;
+}
+
+/* f_avg and ms from eta, k and the albedo table. */
+static int energy_terms(Conductor *c, GError *err)
+{
+    const GColorModel *m = c->base.model;
+    GColor f = {0};
+    int rc = gcolor_alloc(&c->f_avg, m);
+    if (rc == G_OK)
+        rc = gcolor_alloc(&c->ms, m);
+    if (rc == G_OK)
+        rc = gcolor_alloc(&f, m);
+    enum { K = 64 }; /* midpoints in mu^2: 2 mu dmu = d(mu^2) */
+    for (int j = 0; j < K && rc == G_OK; j++) {
+        rc = gmaterial_fresnel_conductor(&f, sqrt((j + 0.5) / K), &c->eta, &c->k);
+        if (rc == G_OK)
+            rc = gcolor_add_scaled(&c->f_avg, &f, 1.0 / K);
+    }
+    gcolor_free(&f);
+    if (rc == G_OK && !c->smooth) {
+        gmicrofacet_albedo_table(&c->mf, c->e, &c->e_avg);
+        rc = gcolor_map(&c->ms, ms_colour, &c->e_avg, &c->f_avg, NULL, NULL);
+    }
+    return rc == G_OK ? G_OK : gerror_set(err, rc, "conductor: cannot compute its albedo (%s)", gstatus_string(rc));
+}
+
+/* What a file gave. */
+typedef struct ConductorSpec {
+    GColorSpec *eta, *k;
+    int metal;                     /* index into the metal table, or -1 */
+    double roughness_u, roughness_v;
+    int distribution, compensate;
+} ConductorSpec;
+
+/* A colour literal as the nm spectrum of n or k (an rgb triple: its smooth reflectance spectrum). */
+static void spec_nm(const GColorSpec *s, GSpectrumNM *out)
+{
+    if (s->form == GCOLORSPEC_NM) {
+        for (int i = 0; i < GNM_COUNT; i++)
+            out->v[i] = (float)(s->nm.v[i] * s->scale);
+        return;
+    }
+    double rgb[3] = {s->rgb[0] * s->scale, s->rgb[1] * s->scale, s->rgb[2] * s->scale};
+    gcie_rgb_to_nm(rgb, GCOLOR_REFLECTANCE, out);
+}
+
+/* n and k into c's colours: the metal's table; two spectra as a complex index (gmaterial_complex_index_from_nm);
+ * otherwise each literal as a unitless colour. */
+static int index_colours(Conductor *c, const ConductorSpec *p, GError *err)
+{
+    const GColorModel *m = c->base.model;
+    int rc = gcolor_alloc(&c->eta, m);
+    if (rc == G_OK)
+        rc = gcolor_alloc(&c->k, m);
+    if (rc != G_OK)
+        return gerror_set(err, rc, "conductor: out of memory");
+    if (p->metal >= 0)
+        rc = gmetal_colors(p->metal, &c->eta, &c->k);
+    else if (p->eta->form == GCOLORSPEC_NM && p->k->form == GCOLORSPEC_NM) {
+        GSpectrumNM n_nm, k_nm;
+        spec_nm(p->eta, &n_nm);
+        spec_nm(p->k, &k_nm);
+        rc = gmaterial_complex_index_from_nm(&c->eta, &c->k, &n_nm, &k_nm);
+    } else {
+        GError why;
+        rc = gcolorspec_to_color(p->eta, GCOLOR_UNITLESS, &c->eta, &why);
+        if (rc != G_OK)
+            return gerror_set_param(err, rc, "eta", "conductor: eta: %s", why.message);
+        rc = gcolorspec_to_color(p->k, GCOLOR_UNITLESS, &c->k, &why);
+        if (rc != G_OK)
+            return gerror_set_param(err, rc, "k", "conductor: k: %s", why.message);
+    }
+    return rc == G_OK ? G_OK : gerror_set(err, rc, "conductor: cannot express n and k in model '%s' (%s)",
+                                          gcolormodel_name(m), gstatus_string(rc));
+}
+
+static int conductor_create(const GColorModel *model, const ConductorSpec *p, GMaterial **out, GError *err)
+{
+    *out = NULL;
+    GMaterial *m;
+    int rc = gmaterial_new(&conductor_class, model, sizeof(Conductor), &m, err);
+    if (rc != G_OK)
+        return rc;
+    Conductor *c = (Conductor *)m;
+    double ax = gmicrofacet_alpha_from_roughness(p->roughness_u);
+    double ay = gmicrofacet_alpha_from_roughness(p->roughness_v);
+    c->smooth = !(ax >= GMICROFACET_ALPHA_MIN && ay >= GMICROFACET_ALPHA_MIN); /* below it: the ideal mirror */
+    c->mf = gmicrofacet_make(p->distribution, ax, ay);
+    c->anisotropic = !c->smooth && ax != ay;
+    c->compensate = p->compensate && !c->smooth;
+    rc = index_colours(c, p, err);
+    if (rc == G_OK)
+        rc = energy_terms(c, err);
+    if (rc != G_OK) {
+        conductor_destroy(m);
+        return rc;
+    }
+    if (!c->anisotropic)
+        m->flags |= GMAT_NO_UV; /* only an anisotropic surface reads its tangent dpdu (material.h) */
+    m->flags |= GMAT_DIAGONAL;  /* f * illum: n and k are vectors, nothing re-radiates */
+    *out = m;
+    return G_OK;
+}
+
+/* ---- the text format ---- */
+
+/* Checks a literal of n (positive: lo_open) or k (non-negative) at the parameter; refuses matrices and lines. */
+static int check_index_spec(GReader *r, const GColorSpec *s, const char *param, int positive, int line, int col,
+                            GError *err)
+{
+    const char *bound = positive ? "> 0" : ">= 0";
+    if (s->form != GCOLORSPEC_RGB && s->form != GCOLORSPEC_NM)
+        return greader_error_at(r, err, G_ERR_PARSE, line, col,
+                                "conductor: %s must be an rgb triple or a spectrum (a unitless curve of the "
+                                "wavelength)", param);
+    int count = s->form == GCOLORSPEC_RGB ? 3 : GNM_COUNT;
+    for (int i = 0; i < count; i++) {
+        double v = (s->form == GCOLORSPEC_RGB ? s->rgb[i] : s->nm.v[i]) * s->scale;
+        if (!isfinite(v) || (positive ? !(v > 0.0) : !(v >= 0.0)) || v > CONDUCTOR_INDEX_MAX)
+            return greader_error_at(r, err, G_ERR_PARSE, line, col,
+                                    "conductor: %s has the value %g %s %d (must be %s and <= %g)", param, v,
+                                    s->form == GCOLORSPEC_RGB ? "in component" : "at", s->form == GCOLORSPEC_RGB ? i
+                                    : GNM_MIN + i, bound, CONDUCTOR_INDEX_MAX);
+    }
+    return G_OK;
+}
+
+static int read_index_spec(GReader *r, const char *param, int positive, GColorSpec **out, GError *err)
+{
+    GToken first;
+    int rc = greader_peek(r, &first, err);
+    if (rc == G_OK) {
+        gcolorspec_destroy(*out);
+        *out = NULL;
+        rc = greader_color_spec(r, out, err);
+    }
+    return rc == G_OK ? check_index_spec(r, *out, param, positive, first.line, first.col, err) : rc;
+}
+
+static int read_metal(GReader *r, int *metal, GError *err)
+{
+    GToken tok;
+    char name[64];
+    int rc = greader_peek(r, &tok, err);
+    if (rc == G_OK)
+        rc = greader_ident(r, name, sizeof name, err);
+    if (rc != G_OK)
+        return rc;
+    *metal = gmetal_find(name);
+    if (*metal >= 0)
+        return G_OK;
+    char names[1024];
+    gmetal_names(names, sizeof names);
+    return greader_error_at(r, err, G_ERR_PARSE, tok.line, tok.col, "conductor: unknown metal '%s' (known: %s)", name,
+                            names);
+}
+
+/* conductor { eta COLOR k COLOR | metal NAME  roughness R | roughness_u R roughness_v R  distribution ggx|beckmann
+ * compensate on|off }: metal Cu, smooth, GGX, compensated when not given */
+static int parse_conductor(GReader *r, const void *vtable, void **object, GError *err)
+{
+    (void)vtable;
+    ConductorSpec p = {NULL, NULL, -1, 0.0, 0.0, GMICROFACET_GGX, 1};
+    static const char *const distributions[] = {"ggx", "beckmann", NULL};
+    int have_metal = 0, have_r = 0, have_uv = 0, metal_line = 0, metal_col = 0;
+    const char *key;
+    int rc;
+    while ((rc = greader_param(r, &key, err)) > 0) {
+        if (strcmp(key, "eta") == 0)
+            rc = read_index_spec(r, "eta", 1, &p.eta, err);
+        else if (strcmp(key, "k") == 0)
+            rc = read_index_spec(r, "k", 0, &p.k, err);
+        else if (strcmp(key, "metal") == 0) {
+            greader_position(r, &metal_line, &metal_col);
+            rc = read_metal(r, &p.metal, err);
+            have_metal = 1;
+        } else if (strcmp(key, "roughness") == 0) {
+            rc = greader_number_in(r, 0.0, 1.0, &p.roughness_u, err);
+            p.roughness_v = p.roughness_u;
+            have_r = 1;
+        } else if (strcmp(key, "roughness_u") == 0) {
+            rc = greader_number_in(r, 0.0, 1.0, &p.roughness_u, err);
+            have_uv = 1;
+        } else if (strcmp(key, "roughness_v") == 0) {
+            rc = greader_number_in(r, 0.0, 1.0, &p.roughness_v, err);
+            have_uv = 1;
+        } else if (strcmp(key, "distribution") == 0)
+            rc = greader_choice(r, distributions, &p.distribution, err);
+        else if (strcmp(key, "compensate") == 0)
+            rc = greader_bool(r, &p.compensate, err);
+        else
+            rc = greader_unknown_param(r, "eta, k, metal, roughness, roughness_u, roughness_v, distribution, "
+                                          "compensate", err);
+        if (rc < 0)
+            break;
+    }
+    if (rc == G_OK && have_metal && (p.eta || p.k))
+        rc = greader_error_at(r, err, G_ERR_PARSE, metal_line, metal_col,
+                              "conductor: metal and eta/k exclude each other (give one)");
+    else if (rc == G_OK && !have_metal && (!p.eta) != (!p.k))
+        rc = greader_error(r, err, "conductor: %s given without %s (give both, or a metal)", p.eta ? "eta" : "k",
+                           p.eta ? "k" : "eta");
+    else if (rc == G_OK && have_r && have_uv)
+        rc = greader_error(r, err, "conductor: roughness and roughness_u/roughness_v exclude each other");
+    if (rc == G_OK && !have_metal && !p.eta)
+        p.metal = gmetal_find("Cu");
+    GMaterial *m = NULL;
+    if (rc == G_OK && (rc = conductor_create(greader_colormodel(r), &p, &m, err)) == G_OK)
+        *object = m;
+    gcolorspec_destroy(p.eta);
+    gcolorspec_destroy(p.k);
+    return rc;
+}
+
+static const GParamInfo conductor_params[] = {
+    {"eta", GPARAM_NAMED, "color", "none", "(0, 1000], an rgb triple or a spectrum",
+     "n, the real part of the complex refractive index, per wavelength (a unitless colour); with k"},
+    {"k", GPARAM_NAMED, "color", "none", "[0, 1000], an rgb triple or a spectrum",
+     "k, the extinction coefficient (imaginary part of the index), per wavelength; with eta"},
+    {"metal", GPARAM_NAMED, "name", "Cu (without eta and k)", "a name of `gmat metals`",
+     "measured n and k of a metal or compound (docs/reference/metals.md); excludes eta and k"},
+    {"roughness", GPARAM_NAMED, "number", "0 (smooth)", "[0, 1]",
+     "the microfacet width alpha (alpha = roughness); below 0.001 an ideal mirror"},
+    {"roughness_u", GPARAM_NAMED, "number", "0", "[0, 1]", "alpha along the surface's dP/du (anisotropic)"},
+    {"roughness_v", GPARAM_NAMED, "number", "0", "[0, 1]", "alpha across it"},
+    {"distribution", GPARAM_NAMED, "name", "ggx", "ggx, beckmann", "the microfacet distribution"},
+    {"compensate", GPARAM_NAMED, "bool", "on", "on, off",
+     "give back the energy single scattering loses on a rough surface (Kulla and Conty 2017)"},
+    {NULL},
+};
+
+GENERIC_TYPE_PARAMS(conductor, GKIND_MATERIAL, &conductor_class, parse_conductor, NULL, conductor_params);
