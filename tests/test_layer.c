@@ -168,7 +168,8 @@ static void test_bounds(void **state)
         {"material m layer { top dielectric { } bottom lambert { } bounces 0 }", "[1, 64]"},
         {"material m layer { top dielectric { } bottom lambert { } samples 65 }", "[1, 64]"},
         {"material m layer { top dielectric { } bottom lambert { } thickness -1 }", "[0, 100]"},
-        {"material m layer { top dielectric { } bottom lambert { } albedo rgb 2 2 2 }", "layer: albedo has the value 2"},
+        {"material m layer { top dielectric { } bottom lambert { } albedo rgb 2 2 2 }",
+         "layer: albedo has the value 2"},
         {"material m layer { top thinfilm { base dielectric { } } bottom lambert { } bounces 64 samples 64 }",
          "GNODE_MAX_COST"},
         {"material L1 layer { top dielectric { } bottom lambert { } bounces 1 }\n"
