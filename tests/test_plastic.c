@@ -2,7 +2,8 @@
  * over a lambert of albedo 0.5: the same physics two ways) in albedo at 10 angles within 0.5%; white furnace: a
  * white base under a smooth or rough coat (alpha 0.05, 0.3, 0.8, GGX and Beckmann) reflects all the light, 1 within
  * 1e-3 at 10 angles, measured by its own sampling as a path tracer sees it (the mean weight over a stratified grid
- * of draws; Beckmann's by quadrature); a darker base reflects less; reciprocity; refusals of bad parameters at their place. */
+ * of draws; Beckmann's by quadrature); a darker base reflects less; reciprocity; refusals of bad parameters at
+ * their place. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
