@@ -11,6 +11,9 @@ $(call objs_of,lib/image/oiio_loader.o): CPPFLAGS += -DGENERIC_LIBDIR='"$(PREFIX
 # $(BUILD)/share/generic/ocio/, found beside the programs the same way (lib/image/image_display.c).
 $(call objs_of,lib/image/image_display.o): CPPFLAGS += -DGENERIC_DATADIR='"$(PREFIX)/share"'
 $(call objs_of,lib/module/plugin.o): CPPFLAGS += -DGENERIC_PLUGIN_DIR='"$(PLUGIN_DIR)"'
+# The Fresnel kernels: square roots as instructions (no errno) and divisions that may be computed on lanes a branch
+# would skip (no trapping math), so that their loops vectorise.
+$(call objs_of,lib/kit/fresnel.o): CFLAGS += -fno-math-errno -fno-trapping-math
 
 # ---- generated sources, for any build tree (BUILD, the fuzzing build) ----
 # The list of built-in types (include/generic/builtins.h), from the GENERIC_TYPE records of LIB_SRC.

@@ -52,28 +52,6 @@ static GFrame frame_at(const Conductor *c, const GSurfPoint *sp, GVec3 n)
     return c->anisotropic ? gframe_from_normal_tangent(n, sp->dpdu) : gframe_from_normal(n);
 }
 
-/* What the rough kernel needs beside eta, k and ms: the Fresnel cosine and the weights of the two terms. */
-typedef struct RoughTerms {
-    float cos_h, single, multiple;
-} RoughTerms;
-
-/* out = F(cos_h; eta, k) * single + ms * multiple, sample by sample, in float so that the loop vectorises; the same
- * formula as goptics_fresnel_conductor. */
-static void rough_kernel(float *out, const float *eta, const float *k, const float *ms, int n, const void *params)
-{
-    const RoughTerms *t = params;
-    float c = t->cos_h, c2 = c * c, s2 = 1.0f - c2, single = t->single, multiple = t->multiple;
-    for (int i = 0; i < n; i++) {
-        float e2 = eta[i] * eta[i], k2 = k[i] * k[i], u = e2 - k2 - s2;
-        float ab = sqrtf(u * u + 4.0f * e2 * k2), a2 = 0.5f * (ab + u);
-        float a = sqrtf(a2 > 0.0f ? a2 : 0.0f);
-        float rs_den = ab + 2.0f * a * c + c2, rs = rs_den > 0.0f ? (ab - 2.0f * a * c + c2) / rs_den : 1.0f;
-        float p1 = c2 * ab + s2 * s2, p2 = 2.0f * a * c * s2;
-        float rp = p1 + p2 > 0.0f ? rs * (p1 - p2) / (p1 + p2) : rs;
-        out[i] = 0.5f * (rs + rp) * single + ms[i] * multiple;
-    }
-}
-
 /* f cos_in of the rough surface for white light into f (a colour of the model); 0 when nothing is reflected. */
 static int rough_value(const Conductor *c, const GSurfPoint *sp, GVec3 n, GVec3 in, GVec3 out, GColor *f)
 {
@@ -84,12 +62,13 @@ static int rough_value(const Conductor *c, const GSurfPoint *sp, GVec3 n, GVec3 
         return G_OK;
     }
     GVec3 h = gvec3_normalize(gvec3_add(wi, wo));
-    RoughTerms t = {(float)gfmin(gfmax(gvec3_dot(wi, h), 0.0), 1.0), (float)gmicrofacet_reflect_cos(&c->mf, wi, wo),
-                    0.0f};
+    double single = gmicrofacet_reflect_cos(&c->mf, wi, wo), multiple = 0.0;
+    if (single < 1e-30) /* far outside a narrow lobe: below what a float keeps to its precision */
+        single = 0.0;
     if (c->compensate)
-        t.multiple = (float)((1.0 - gmicrofacet_albedo_at(c->e, wo.z)) * (1.0 - gmicrofacet_albedo_at(c->e, wi.z)) *
-                             wi.z);
-    return gcolor_map_samples(f, rough_kernel, &t, &c->eta, &c->k, &c->ms);
+        multiple = (1.0 - gmicrofacet_albedo_at(c->e, wo.z)) * (1.0 - gmicrofacet_albedo_at(c->e, wi.z)) * wi.z;
+    return gmaterial_fresnel_conductor_mix(f, gvec3_dot(wi, h), &c->eta, &c->k, single, c->compensate ? &c->ms : NULL,
+                                           multiple);
 }
 
 static int conductor_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
@@ -313,7 +292,7 @@ static int conductor_create(const GColorModel *model, const ConductorSpec *p, GM
     Conductor *c = (Conductor *)m;
     double ax = gmicrofacet_alpha_from_roughness(p->roughness_u);
     double ay = gmicrofacet_alpha_from_roughness(p->roughness_v);
-    c->smooth = !(ax >= GMICROFACET_ALPHA_MIN && ay >= GMICROFACET_ALPHA_MIN); /* below it: the ideal mirror */
+    c->smooth = !(ax >= GMICROFACET_ALPHA_MIN || ay >= GMICROFACET_ALPHA_MIN); /* both below it: the ideal mirror */
     c->mf = gmicrofacet_make(p->distribution, ax, ay);
     c->anisotropic = !c->smooth && ax != ay;
     c->compensate = p->compensate && !c->smooth;
@@ -446,13 +425,13 @@ static const GParamInfo conductor_params[] = {
      "n, the real part of the complex refractive index, per wavelength (a unitless colour); with k"},
     {"k", GPARAM_NAMED, "color", "none", "[0, 1000], an rgb triple or a spectrum",
      "k, the extinction coefficient (imaginary part of the index), per wavelength; with eta"},
-    {"metal", GPARAM_NAMED, "name", "Cu (without eta and k)", "a name of `gmat metals`",
+    {"metal", GPARAM_NAMED, "choice", "Cu (without eta and k)", "a name of `gmat metals`",
      "measured n and k of a metal or compound (docs/reference/metals.md); excludes eta and k"},
     {"roughness", GPARAM_NAMED, "number", "0 (smooth)", "[0, 1]",
-     "the microfacet width alpha (alpha = roughness); below 0.001 an ideal mirror"},
+     "the microfacet width alpha (alpha = roughness); below 0.001 (both ways) an ideal mirror"},
     {"roughness_u", GPARAM_NAMED, "number", "0", "[0, 1]", "alpha along the surface's dP/du (anisotropic)"},
     {"roughness_v", GPARAM_NAMED, "number", "0", "[0, 1]", "alpha across it"},
-    {"distribution", GPARAM_NAMED, "name", "ggx", "ggx, beckmann", "the microfacet distribution"},
+    {"distribution", GPARAM_NAMED, "choice", "ggx", "ggx, beckmann", "the microfacet distribution"},
     {"compensate", GPARAM_NAMED, "bool", "on", "on, off",
      "give back the energy single scattering loses on a rough surface (Kulla and Conty 2017)"},
     {NULL},

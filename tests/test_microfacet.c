@@ -252,6 +252,12 @@ static void test_colour_forms(void **state)
             assert_int_equal(gmaterial_fresnel_conductor(&out, c, &eta, &k), G_OK);
             for (int i = 0; i < n; i++)
                 assert_near(out.v[i], goptics_fresnel_conductor(c, eta.v[i], k.v[i]), 1e-7);
+            assert_int_equal(gmaterial_fresnel_conductor_mix(&out, c, &eta, &k, 0.7, &third, 0.25), G_OK);
+            for (int i = 0; i < n; i++)
+                assert_near(out.v[i], 0.7 * goptics_fresnel_conductor(c, eta.v[i], k.v[i]) + 0.25 * third.v[i], 2e-6);
+            assert_int_equal(gmaterial_fresnel_conductor_mix(&out, c, &eta, &k, 0.5, NULL, 3.0), G_OK);
+            for (int i = 0; i < n; i++)
+                assert_near(out.v[i], 0.5 * goptics_fresnel_conductor(c, eta.v[i], k.v[i]), 1e-6);
             assert_int_equal(gmaterial_fresnel_dielectric(&out, c, &eta), G_OK);
             for (int i = 0; i < n; i++)
                 assert_near(out.v[i], goptics_fresnel(c, eta.v[i]), 1e-7);

@@ -1,6 +1,7 @@
 /* fresnel.c - Fresnel reflectance of conductors and dielectrics on colours (generic/kit/fresnel.h). */
 #include "generic/kit/fresnel.h"
 #include "generic/kit/color_map.h"
+#include "generic/kit/spectral_kernels.h"
 #include "generic/material.h"
 
 #include <math.h>
@@ -32,6 +33,67 @@ static void conductor_samples(float *out, const float *eta, const float *k, cons
     double c = *(const double *)params;
     for (int i = 0; i < n; i++)
         out[i] = (float)goptics_fresnel_conductor(c, eta[i], k[i]);
+}
+
+/* The mix's factors. */
+typedef struct MixTerms {
+    float cos_i, s, t;
+} MixTerms;
+
+/* goptics_fresnel_conductor in float, without branches so that the loop vectorises (this file is compiled with
+ * -fno-math-errno -fno-trapping-math: sqrtf is the instruction, a division needs no branch); the denominators are kept above 1e-30 (they are 0 only for n = k = 0 at
+ * grazing incidence, where the reflectance is 1). */
+static inline float conductor_f(float c, float c2, float s2, float eta, float k)
+{
+    float e2 = eta * eta, k2 = k * k, u = e2 - k2 - s2;
+    float ab = sqrtf(u * u + 4.0f * e2 * k2), a2 = 0.5f * (ab + u);
+    float a = sqrtf(a2 > 0.0f ? a2 : 0.0f), ac = 2.0f * a * c;
+    float rs_den = ab + ac + c2, rs = (ab - ac + c2) / (rs_den > 1e-30f ? rs_den : 1e-30f);
+    float p1 = c2 * ab + s2 * s2, p2 = ac * s2, pd = p1 + p2;
+    float rp = rs * (p1 - p2) / (pd > 1e-30f ? pd : 1e-30f);
+    return 0.5f * (rs + rp);
+}
+
+/* s * F + t * add (add NULL: s * F), sample by sample: the body of the kernel, compiled twice below. */
+#define MIX_BODY                                                                                               \
+    do {                                                                                                       \
+        const MixTerms *m = params;                                                                            \
+        const float c = m->cos_i, c2 = c * c, s2 = 1.0f - c2, s = m->s, t = m->t;                              \
+        if (add) {                                                                                             \
+            _Pragma("omp simd") for (int i = 0; i < n; i++)                                                   \
+                out[i] = conductor_f(c, c2, s2, eta[i], k[i]) * s + add[i] * t;                                \
+        } else {                                                                                               \
+            _Pragma("omp simd") for (int i = 0; i < n; i++) out[i] = conductor_f(c, c2, s2, eta[i], k[i]) * s; \
+        }                                                                                                      \
+    } while (0)
+
+static void conductor_mix_v4(float *out, const float *eta, const float *k, const float *add, int n, const void *params)
+{
+    MIX_BODY;
+}
+
+#ifdef GSPECTRAL_AVX2
+/* The same on 8-float vectors (no FMA: the lanes round as the 4-float body's do, so both give the same floats). */
+static GSPECTRAL_TARGET_AVX2 void conductor_mix_v8(float *out, const float *eta, const float *k, const float *add,
+                                                  int n, const void *params)
+{
+    MIX_BODY;
+}
+#endif
+
+int gmaterial_fresnel_conductor_mix(GColor *out, double cos_i, const GColor *eta, const GColor *k, double s,
+                                    const GColor *add, double t)
+{
+    if (!k)
+        return G_ERR_INVALID;
+    double c = fabs(cos_i);
+    MixTerms m = {(float)(c > 1.0 ? 1.0 : c), (float)s, (float)t};
+#ifdef GSPECTRAL_AVX2
+    GColorSamplesFn kernel = __builtin_cpu_supports("avx2") ? conductor_mix_v8 : conductor_mix_v4;
+#else
+    GColorSamplesFn kernel = conductor_mix_v4;
+#endif
+    return gcolor_map_samples(out, kernel, &m, eta, k, add);
 }
 
 int gmaterial_fresnel_conductor(GColor *out, double cos_i, const GColor *eta, const GColor *k)

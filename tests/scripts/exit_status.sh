@@ -66,7 +66,7 @@ for cmd in "gtrace" "gtrace merge" "gtrace types" "gcolor" "gcolor list" "gcolor
     expect 2 "$cmd --help=yes" "option '--help' takes no value" -- "$BIN/$tool" $sub --help=yes
 done
 expect 2 "gmat with no command" "usage: gmat COMMAND" -- "$BIN/gmat"
-expect 2 "gmat frobnicate" "swatch or laser" -- "$BIN/gmat" frobnicate x y
+expect 2 "gmat frobnicate" "laser or metals" -- "$BIN/gmat" frobnicate x y
 expect 2 "gprobe with no command" "usage: gprobe COMMAND" -- "$BIN/gprobe"
 expect 2 "gprobe frobnicate" "unknown command 'frobnicate'" -- "$BIN/gprobe" frobnicate
 expect 2 "gcolor frobnicate" "unknown command or argument 'frobnicate'" -- "$BIN/gcolor" frobnicate
