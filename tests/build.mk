@@ -23,14 +23,16 @@ $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $$(TEST_OBJ_$$*) $(LIBA) | $(OIIO_SO) $
 # wrong GMAT_LAMBERTIAN renders in place of the reflection, a reflection that reads u under a wrong GMAT_NO_UV, a
 # grey response to coloured light under a wrong GMAT_DIAGONAL, a wrong colour add, overlapping wavelength bands;
 # and for tests/scripts/bump_ideal_conformance.sh: a mirror reflecting 1.2 times the light, a glass refracting
-# about the geometric normal, a mirror reflecting light from inside the body.
+# about the geometric normal, a mirror reflecting light from inside the body. halfvector.c, for
+# tests/scripts/check_gaps.sh: a correct GGX sampler whose pdf has an integrable singularity.
 TEST_PLUGINS := bad_abi:bad_module:BAD_ABI failing_init:bad_module:FAIL_INIT no_init:bad_module:NO_INIT \
                 constructor_only:bad_module:NOT_A_MODULE \
                 gain:nonconforming:GAIN skewed:nonconforming:SKEWED misdrawn:nonconforming:MISDRAWN \
                 misflagged:nonconforming:MISFLAGGED misopaque:nonconforming:MISOPAQUE \
                 misnormal:nonconforming:MISNORMAL misdiffuse:nonconforming:MISDIFFUSE misuv:nonconforming:MISUV \
                 misdiag:nonconforming:MISDIAG bad_add:nonconforming:BAD_ADD bad_bands:nonconforming:BAD_BANDS \
-                gain_mirror:nonconforming:GAIN_MIRROR misbent:nonconforming:MISBENT leaky:nonconforming:LEAKY
+                gain_mirror:nonconforming:GAIN_MIRROR misbent:nonconforming:MISBENT leaky:nonconforming:LEAKY \
+                halfvector:halfvector:GGX
 # test_plugin NAME: "NAME SOURCE DEFINE"
 test_plugin = $(subst :, ,$(filter $(1):%,$(TEST_PLUGINS)))
 TEST_PLUGIN_SO := $(foreach p,$(TEST_PLUGINS),$(BUILD)/plugins/$(firstword $(subst :, ,$(p))).so)

@@ -256,7 +256,7 @@ static void test_materials_round_trip(void **state)
     (void)state;
     GLibrary *lib = load("color grey rgb 0.5 0.5 0.5\n"
                          "material wall lambert { reflectance grey }\n"
-                         "material plastic phong { diffuse rgb 0.4 0.2 0.1  specular rgb 0.3 0.3 0.3\n"
+                         "material glossy phong { diffuse rgb 0.4 0.2 0.1  specular rgb 0.3 0.3 0.3\n"
                          "                         exponent 50 mirror rgb 0.1 0.1 0.1 }\n"
                          "material chrome mirror { reflectance rgb 0.9 0.8 0.7 }\n"
                          "material glass dielectric { index 1.5 tint rgb 1 1 1 }\n"
@@ -285,7 +285,7 @@ static void test_materials_round_trip(void **state)
     assert_int_equal(gmaterial_diffuse(glibrary_material(lib, "defaults"), &sp, &out), G_OK);
     assert_near(ov[1], 0.8, 1e-6);
 
-    GMaterial *plastic = glibrary_material(lib, "plastic");
+    GMaterial *plastic = glibrary_material(lib, "glossy");
     gsurfpoint_invalidate(&sp);
     sp.material = plastic;
     assert_int_equal(gmaterial_diffuse(plastic, &sp, &out), G_OK);

@@ -4,15 +4,16 @@
  * gmaterial_sample and measures:
  *   chi2          goodness of fit of the non-delta directions against gmaterial_pdf (the method of pbrt-v4's
  *                 and Mitsuba 3's chi2 tests): the sphere binned in (cos theta, phi), the expected count of a
- *                 bin N * the integral of pdf over it (midpoint rule, refined where the pdf varies strongly),
- *                 bins expecting fewer than 5 pooled, Pearson's statistic and its p-value (the regularised
+ *                 bin N * the integral of pdf over it (adaptive cubature, bin_integral below, so that an
+ *                 integrable singularity of a correct pdf is integrated, not sampled at midpoints), bins
+ *                 expecting fewer than 5 pooled, Pearson's statistic and its p-value (the regularised
  *                 incomplete gamma function); the figure is -log10 of the smallest p-value, the tolerance
  *                 -log10 of ALPHA corrected for the number of tests (Sidak). A direction drawn where pdf() is
- *                 0 fails at once. A bin whose midpoints all miss the pdf's support while it holds some of it
- *                 (the edge of a lobe about a tilted shading normal crosses the bins slantwise and may clip a
- *                 corner of one; a lobe narrower than the midpoints' spacing) has expected count 0 by the
- *                 rule: a draw there is asked pdf() and, when it is positive, the bin is integrated again on
- *                 a SUB_EDGE grid; whatever it still misses counts with the pooled bins.
+ *                 0 fails at once. A bin whose quadrature nodes all miss the pdf's support while it holds some
+ *                 of it (the edge of a lobe about a tilted shading normal crosses the bins slantwise and may
+ *                 clip a corner of one; a lobe narrower than the nodes' spacing) has expected count 0 by the
+ *                 rule: a draw there is asked pdf() and, when it is positive, the bin is integrated again from
+ *                 SPLIT_EDGE x SPLIT_EDGE cells; whatever it still misses counts with the pooled bins.
  *   pdf integral  the integral of pdf over the sphere against the share of draws that gave a non-delta
  *                 direction (1 - P(delta) - P(nothing drawn)); a material whose is_delta says every lobe is
  *                 ideal must draw no other direction.
@@ -33,10 +34,7 @@
 #define NWEIGHT 2000  /* samples per test whose weight is checked */
 #define BINS_COS 16
 #define BINS_PHI 32
-#define SUB 6        /* midpoint rule per bin and direction */
-#define SUB_FINE 24  /* where the pdf varies by more than REFINE_RATIO within a bin */
-#define SUB_EDGE 96  /* where a draw found the pdf positive in a bin the midpoints saw 0 in */
-#define REFINE_RATIO 2.0
+#define SPLIT_EDGE 8 /* first cells per side where a draw found the pdf positive in a bin whose nodes saw 0 */
 #define MIN_EXPECTED 5.0
 #define ALPHA 1e-3
 #define TOL_INTEGRAL 0.02
@@ -128,29 +126,102 @@ static double pdf_at(SampleTest *t, GVec3 in)
     return pdf;
 }
 
-/* The pdf integrated over bin (i, j) of the sphere (cos theta in [-1, 1] about +z, phi in [0, 2 pi)). */
-static double bin_integral(SampleTest *t, int i, int j, int sub)
+/* ---- the pdf's integral over a bin: globally adaptive cubature ----
+ *
+ * A bin is a rectangle in (theta, phi); the integrand pdf(theta, phi) sin(theta). Each cell is integrated by the
+ * 3 x 3 Gauss-Legendre product rule, once whole and once as its four quarters; the quarters' sum is the cell's
+ * value and the difference of the two its error. The cell of largest error is split into its quarters until the
+ * errors sum below the bin's tolerance or the bin has CELLS_MAX cells (Genz and Malik's strategy, as the adaptive
+ * integration of Mitsuba's chi2 test and SciPy's quad): an integrable singularity of the pdf (the 1/(o.h) peak of
+ * half-vector sampling at grazing incidence) and a lobe's edge are resolved where they are, the smooth bins cost
+ * 45 evaluations. The tolerance is an error in the expected count far below the count's own spread:
+ * TOL_COUNT sqrt(max(1, expected)) draws. */
+
+#define CELLS_MAX 256  /* cells of one bin: at most 45 + 144 (CELLS_MAX - 1) / 3 pdf evaluations */
+#define TOL_COUNT 0.02 /* the error allowed in a bin's expected count, in units of its standard deviation */
+
+typedef struct Cell {
+    double t0, t1, p0, p1; /* the rectangle in theta and phi */
+    double quarter[4];     /* the rule over each quarter */
+    double value, err;     /* their sum, and its difference from the rule over the whole cell */
+} Cell;
+
+/* The 3 x 3 Gauss-Legendre rule of pdf(theta, phi) sin(theta) over [t0, t1] x [p0, p1]; NAN when pdf() is not
+ * finite and >= 0 at a node. */
+static double gauss3(SampleTest *t, double t0, double t1, double p0, double p1)
 {
+    static const double x[3] = {-0.7745966692414834, 0.0, 0.7745966692414834};
+    static const double w[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
+    double tm = 0.5 * (t0 + t1), th = 0.5 * (t1 - t0), pm = 0.5 * (p0 + p1), ph = 0.5 * (p1 - p0), sum = 0.0;
+    for (int a = 0; a < 3; a++) {
+        double theta = tm + th * x[a], st = sin(theta), ct = cos(theta);
+        for (int b = 0; b < 3; b++) {
+            double phi = pm + ph * x[b];
+            double p = pdf_at(t, gvec3(st * cos(phi), st * sin(phi), ct));
+            if (!isfinite(p) || p < 0.0)
+                return NAN;
+            sum += w[a] * w[b] * p * st;
+        }
+    }
+    return sum * th * ph;
+}
+
+/* Fills cell c over its rectangle, given the rule over the whole of it: 0, or -1 when pdf() failed. */
+static int cell_fill(SampleTest *t, Cell *c, double whole)
+{
+    double tm = 0.5 * (c->t0 + c->t1), pm = 0.5 * (c->p0 + c->p1);
+    c->quarter[0] = gauss3(t, c->t0, tm, c->p0, pm);
+    c->quarter[1] = gauss3(t, tm, c->t1, c->p0, pm);
+    c->quarter[2] = gauss3(t, c->t0, tm, pm, c->p1);
+    c->quarter[3] = gauss3(t, tm, c->t1, pm, c->p1);
+    c->value = c->quarter[0] + c->quarter[1] + c->quarter[2] + c->quarter[3];
+    c->err = fabs(c->value - whole);
+    return isfinite(c->value) && isfinite(whole) ? 0 : -1;
+}
+
+/* The pdf integrated over bin (i, j) of the sphere (cos theta in [-1, 1] about +z, phi in [0, 2 pi)), starting
+ * from split x split cells (1, or more for a bin whose first nodes all missed a lobe a draw found), for nsamples
+ * draws; NAN when pdf() is not finite and >= 0. */
+static double bin_integral(SampleTest *t, int i, int j, int split, int nsamples)
+{
+    static Cell cells[CELLS_MAX];
     double c0 = -1.0 + 2.0 * i / BINS_COS, c1 = -1.0 + 2.0 * (i + 1) / BINS_COS;
     double t0 = acos(c1), t1 = acos(c0); /* theta, to resolve lobes near the poles */
     double p0 = 2.0 * M_PI * j / BINS_PHI, p1 = 2.0 * M_PI * (j + 1) / BINS_PHI;
-    double dt = (t1 - t0) / sub, dp = (p1 - p0) / sub, sum = 0.0, lo = INFINITY, hi = 0.0;
-    for (int a = 0; a < sub; a++) {
-        double th = t0 + (a + 0.5) * dt, st = sin(th), ct = cos(th);
-        for (int b = 0; b < sub; b++) {
-            double ph = p0 + (b + 0.5) * dp;
-            double p = pdf_at(t, gvec3(st * cos(ph), st * sin(ph), ct));
-            if (!isfinite(p) || p < 0.0)
+    int n = 0;
+    if (split * split > CELLS_MAX)
+        split = 1;
+    for (int a = 0; a < split; a++)
+        for (int b = 0; b < split; b++) {
+            Cell *c = &cells[n++];
+            c->t0 = t0 + (t1 - t0) * a / split, c->t1 = t0 + (t1 - t0) * (a + 1) / split;
+            c->p0 = p0 + (p1 - p0) * b / split, c->p1 = p0 + (p1 - p0) * (b + 1) / split;
+            if (cell_fill(t, c, gauss3(t, c->t0, c->t1, c->p0, c->p1)) != 0)
                 return NAN;
-            sum += p * st;
-            lo = fmin(lo, p);
-            hi = fmax(hi, p);
+        }
+    for (;;) {
+        double value = 0.0, err = 0.0;
+        int worst = 0;
+        for (int k = 0; k < n; k++) {
+            value += cells[k].value, err += cells[k].err;
+            if (cells[k].err > cells[worst].err)
+                worst = k;
+        }
+        double tol = TOL_COUNT * sqrt(fmax(1.0, value * nsamples)) / nsamples;
+        if (err <= tol || n + 3 > CELLS_MAX)
+            return value;
+        /* the worst cell's quarters become cells: the first in its place, the others appended */
+        Cell parent = cells[worst];
+        double tm = 0.5 * (parent.t0 + parent.t1), pm = 0.5 * (parent.p0 + parent.p1);
+        double qt[4][2] = {{parent.t0, tm}, {tm, parent.t1}, {parent.t0, tm}, {tm, parent.t1}};
+        double qp[4][2] = {{parent.p0, pm}, {parent.p0, pm}, {pm, parent.p1}, {pm, parent.p1}};
+        for (int q = 0; q < 4; q++) {
+            Cell *c = q == 0 ? &cells[worst] : &cells[n++];
+            c->t0 = qt[q][0], c->t1 = qt[q][1], c->p0 = qp[q][0], c->p1 = qp[q][1];
+            if (cell_fill(t, c, parent.quarter[q]) != 0)
+                return NAN;
         }
     }
-    double integral = sum * dt * dp;
-    if (sub < SUB_FINE && hi > REFINE_RATIO * lo && hi > 0.0)
-        return bin_integral(t, i, j, SUB_FINE);
-    return integral;
 }
 
 /* Relative difference of two colours (absolute below 1e-6). */
@@ -197,14 +268,15 @@ typedef struct SampleResult {
     const char *weight_why; /* of a weight error not measured by a difference */
 } SampleResult;
 
-/* Expected counts: N * the pdf's integral over each bin on a sub x sub grid (refined as bin_integral does), only
- * over the bins marked in `only` unless it is NULL, added to *integral; 0 when the pdf is not finite and >= 0. */
-static int expect(SampleTest *t, int nsamples, int sub, const unsigned char *only, double *expected, double *integral)
+/* Expected counts: N * the pdf's integral over each bin (bin_integral from split x split cells), only over the bins
+ * marked in `only` unless it is NULL, added to *integral; 0 when the pdf is not finite and >= 0. */
+static int expect(SampleTest *t, int nsamples, int split, const unsigned char *only, double *expected,
+                  double *integral)
 {
     for (int b = 0; b < BINS_COS * BINS_PHI; b++) {
         if (only && !only[b])
             continue;
-        double v = bin_integral(t, b / BINS_PHI, b % BINS_PHI, sub);
+        double v = bin_integral(t, b / BINS_PHI, b % BINS_PHI, split, nsamples);
         if (!isfinite(v))
             return 0;
         expected[b] = v * nsamples;
@@ -218,7 +290,7 @@ enum { NBINS = BINS_COS * BINS_PHI };
 typedef struct Bins {
     double expected[NBINS];
     int observed[NBINS];
-    unsigned char missed[NBINS]; /* the midpoints saw 0, a draw found the pdf positive */
+    unsigned char missed[NBINS]; /* the nodes saw 0, a draw found the pdf positive */
     int drawn_at_zero;           /* a direction drawn where pdf() is 0 */
 } Bins;
 
@@ -362,14 +434,14 @@ static void run_test(SampleTest *t, int nsamples, unsigned long long seed, Sampl
     }
     /* expected counts first, so that a draw into a bin expecting none is checked as it is drawn */
     double integral = 0.0;
-    if (!expect(t, nsamples, SUB, NULL, bins.expected, &integral)) {
+    if (!expect(t, nsamples, 1, NULL, bins.expected, &integral)) {
         r->failed = 1, r->why = "pdf is not finite and >= 0";
         return;
     }
     for (int n = 0; n < nsamples; n++)
         if (draw(t, n, &seed, is_delta, &bins, r) != 0)
             return;
-    if (!expect(t, nsamples, SUB_EDGE, bins.missed, bins.expected, &integral)) { /* the bins the midpoints missed */
+    if (!expect(t, nsamples, SPLIT_EDGE, bins.missed, bins.expected, &integral)) { /* the bins the nodes missed */
         r->failed = 1, r->why = "pdf is not finite and >= 0";
         return;
     }

@@ -8,7 +8,9 @@
 
 static const char *const g_mats[] = {"lambert", "mirror", "lambert { reflectance rgb 0.2 0.5 0.7 }",
                                      "phong { exponent 40 }", "dielectric { index 1.5 }", "emitter",
-                                     "conductor { metal Au roughness 0.3 }"};
+                                     "conductor { metal Au roughness 0.3 }",
+                                     "thinfilm { thickness 400 base lambert }", "plastic { roughness 0.2 }",
+                                     "layer { top dielectric { } bottom lambert bounces 4 }"};
 /* generators whose values lie strictly between 0 and 1 somewhere, so both children of a blend are evaluated */
 static const char *const g_blend_gens[] = {"perlin", "fbm", "gradient { space uv slope 0.5 0.3 0 offset 0.1 }",
                                            "marble", "wood", "turbulence"};
@@ -230,7 +232,7 @@ static void extreme(GenBuf *b, GenRng *r)
 /* A line with numbers that are extreme in every slot (the parse routine must check every range). */
 static void extreme_entry(GenBuf *b, GenRng *r, unsigned long i)
 {
-    switch (gen_below(r, 17)) {
+    switch (gen_below(r, 20)) {
     case 0:
         gb_printf(b, "generator x%lu perlin { frequency", i);
         extreme(b, r);
@@ -387,6 +389,36 @@ static void extreme_entry(GenBuf *b, GenRng *r, unsigned long i)
         gb_printf(b, gen_below(r, 2) ? " roughness" : " roughness_u 0.2 roughness_v");
         extreme(b, r);
         gb_printf(b, " distribution %s }\n", gen_below(r, 2) ? "ggx" : "beckmann");
+        break;
+    case 17: /* a thin film: thickness, index and extinction in every slot */
+        gb_printf(b, "material x%lu thinfilm { thickness", i);
+        extreme(b, r);
+        gb_printf(b, " index");
+        extreme(b, r);
+        gb_printf(b, " extinction");
+        extreme(b, r);
+        gb_printf(b, " base plastic { roughness");
+        extreme(b, r);
+        gb_printf(b, " index");
+        extreme(b, r);
+        gb_printf(b, " } }\n");
+        break;
+    case 18: /* a layer: its medium, bounces and samples in every slot, over a layer of the entry before */
+        gb_printf(b, "material x%lu layer { top dielectric { index", i);
+        extreme(b, r);
+        gb_printf(b, " } bottom %s thickness", i > 0 && gen_below(r, 2) ? "x0" : "lambert");
+        extreme(b, r);
+        gb_printf(b, " bounces");
+        extreme(b, r);
+        gb_printf(b, " samples");
+        extreme(b, r);
+        gb_printf(b, " }\n");
+        break;
+    case 19: /* layers in layers, one deeper than the bound allows, and a costly one */
+        gb_printf(b, "material y%lu_0 layer { top dielectric { } bottom lambert bounces 1 }\n", i);
+        for (int k = 1; k < 5; k++)
+            gb_printf(b, "material y%lu_%d layer { top dielectric { } bottom y%lu_%d bounces 1 }\n", i, k, i, k - 1);
+        gb_printf(b, "material z%lu layer { top thinfilm { } bottom plastic { } bounces 64 samples 64 }\n", i);
         break;
     default:
         gb_printf(b, "generator x%lu gradient { slope", i);

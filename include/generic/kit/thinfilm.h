@@ -1,0 +1,50 @@
+/* thinfilm.h - the optics of a thin film for type writers: the Airy sum of the light a film of thickness d and
+ * complex index n + ik reflects and transmits between an ambient medium and a substrate, both non-absorbing
+ * (Born and Wolf, section 1.6), unpolarised (the mean of s and p), per wavelength; and as colours of any model.
+ *
+ * With delta = 2 pi d (n + ik) cos(theta_1) / lambda the phase across the film and r_ij, t_ij the Fresnel
+ * amplitude coefficients of its two interfaces (s and p polarisation),
+ *   r = (r_01 + r_12 e^{2 i delta}) / (1 + r_01 r_12 e^{2 i delta}),   R = |r|^2,
+ *   t = t_01 t_12 e^{i delta} / (1 + r_01 r_12 e^{2 i delta}),         T = Re(n_2 cos theta_2) / (n_0 cos theta_0)
+ *                                                                           |t|^2 (s; p with the conjugate cosines),
+ * the sum of every multiple reflection inside the film in closed form. Without extinction R + T = 1. */
+#ifndef GENERIC_KIT_THINFILM_H
+#define GENERIC_KIT_THINFILM_H
+
+#include "../color.h"
+#include "../export.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Largest film thickness in nm a type should accept: beyond it the reflectance oscillates faster over the
+ * wavelength than the 1 nm exchange grid (GSpectrumNM) resolves, at film indices up to GTHINFILM_MAX_INDEX. */
+#define GTHINFILM_MAX_THICKNESS 5000.0
+/** Largest film index (real part) and extinction a type should accept. */
+#define GTHINFILM_MAX_INDEX 10.0
+
+/** A film: thickness in nm (>= 0), its index n (> 0) and extinction k (>= 0), the ambient medium's index (light
+ * arrives from it) and the substrate's (real, > 0). */
+typedef struct GThinFilm {
+    double thickness;
+    double n, k;
+    double ambient, substrate;
+} GThinFilm;
+
+/** Unpolarised reflectance *r and transmittance *t (into the substrate; either may be NULL) of the film f at
+ * wavelength nm, for light arriving in the ambient medium at cos_ambient in (0, 1] from the normal. Total internal
+ * reflection at the substrate gives t = 0. */
+GENERIC_API void gthinfilm_airy(const GThinFilm *f, double nm, double cos_ambient, double *r, double *t);
+
+/** The film's reflectance and transmittance (either may be NULL) at cos_ambient as colours of their model
+ * (GCOLOR_REFLECTANCE): the Airy sum at every nm of GSpectrumNM, handed to the model's conversion from nm, so a
+ * sampled-spectrum model gets the sum at its samples (averaged over each sample's hat, as every spectrum it reads)
+ * and rgb and spectrum9 its integral over the spectrum against their bands (rgb: the CIE observer under D65). */
+GENERIC_API GENERIC_NODISCARD int gthinfilm_color(const GThinFilm *f, double cos_ambient, GColor *reflectance,
+                                                  GColor *transmittance);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
