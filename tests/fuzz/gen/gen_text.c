@@ -232,7 +232,7 @@ static void extreme(GenBuf *b, GenRng *r)
 /* A line with numbers that are extreme in every slot (the parse routine must check every range). */
 static void extreme_entry(GenBuf *b, GenRng *r, unsigned long i)
 {
-    switch (gen_below(r, 20)) {
+    switch (gen_below(r, 19)) {
     case 0:
         gb_printf(b, "generator x%lu perlin { frequency", i);
         extreme(b, r);
@@ -390,7 +390,7 @@ static void extreme_entry(GenBuf *b, GenRng *r, unsigned long i)
         extreme(b, r);
         gb_printf(b, " distribution %s }\n", gen_below(r, 2) ? "ggx" : "beckmann");
         break;
-    case 17: /* a thin film: thickness, index and extinction in every slot */
+    case 16: /* a thin film: thickness, index and extinction in every slot */
         gb_printf(b, "material x%lu thinfilm { thickness", i);
         extreme(b, r);
         gb_printf(b, " index");
@@ -403,7 +403,7 @@ static void extreme_entry(GenBuf *b, GenRng *r, unsigned long i)
         extreme(b, r);
         gb_printf(b, " } }\n");
         break;
-    case 18: /* a layer: its medium, bounces and samples in every slot, over a layer of the entry before */
+    case 17: /* a layer: its medium, bounces and samples in every slot, over a layer of the entry before */
         gb_printf(b, "material x%lu layer { top dielectric { index", i);
         extreme(b, r);
         gb_printf(b, " } bottom %s thickness", i > 0 && gen_below(r, 2) ? "x0" : "lambert");
@@ -414,7 +414,7 @@ static void extreme_entry(GenBuf *b, GenRng *r, unsigned long i)
         extreme(b, r);
         gb_printf(b, " }\n");
         break;
-    case 19: /* layers in layers, one deeper than the bound allows, and a costly one */
+    case 18: /* layers in layers, one deeper than the bound allows, and a costly one */
         gb_printf(b, "material y%lu_0 layer { top dielectric { } bottom lambert bounces 1 }\n", i);
         for (int k = 1; k < 5; k++)
             gb_printf(b, "material y%lu_%d layer { top dielectric { } bottom y%lu_%d bounces 1 }\n", i, k, i, k - 1);
