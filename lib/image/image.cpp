@@ -127,8 +127,9 @@ int check_claim(const char *path, const ImageSpec &spec, const char *format, lon
     const size_t budget = gimage_memory_budget();
     if (bytes > (double)budget)
         return gerror_set(err, G_ERR_NOMEM,
-                          "%s: a %lldx%lld image with %lld channels needs %.0f MiB, more than the image memory budget "
-                          "of %zu MiB (GENERIC_IMAGE_BUDGET_MB)", path, w, h, nch, bytes / 1048576.0, budget >> 20);
+                          "%s: a %lldx%lld image with %lld channels needs %.0f MiB, more than the memory limit "
+                          "of %zu MiB (--memory-limit, GENERIC_MEMORY_LIMIT_MB)", path, w, h, nch, bytes / 1048576.0,
+                          budget >> 20);
     return G_OK;
 }
 

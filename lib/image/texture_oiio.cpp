@@ -32,10 +32,16 @@ namespace {
 std::mutex refs_lock; // guards every refcount and the default system (not on the lookup path)
 GTextureSystem *default_system = nullptr;
 
+// The most memory a texture system's cache holds, charged to the memory budget while the system exists.
+constexpr float cache_mb = 512.0f;
+
 GTextureSystem *make(GError *err)
 {
+    if (gmem_budget_reserve((size_t)cache_mb << 20, "a texture system's cache", err) != G_OK)
+        return nullptr;
     void *mem = gmem_alloc(sizeof(GTextureSystem));
     if (!mem) {
+        gmem_budget_release((size_t)cache_mb << 20);
         gerror_set(err, G_ERR_NOMEM, "texture system: out of memory");
         return nullptr;
     }
@@ -51,17 +57,19 @@ GTextureSystem *make(GError *err)
         if (cache)
             ImageCache::destroy(cache, true);
         gmem_free(mem);
+        gmem_budget_release((size_t)cache_mb << 20);
         gerror_set(err, G_ERR_NOMEM, "texture system: OpenImageIO could not create one");
         return nullptr;
     }
     try {
         ts->attribute("automip", 1);     // MIP levels for files that have none (PNG, JPEG, ...)
         ts->attribute("gray_to_rgb", 1); // grey files answer 3-channel lookups
-        ts->attribute("max_memory_MB", 512.0f);
+        ts->attribute("max_memory_MB", cache_mb);
     } catch (...) {
         TextureSystem::destroy(ts, true);
         ImageCache::destroy(cache, true);
         gmem_free(mem);
+        gmem_budget_release((size_t)cache_mb << 20);
         gerror_set(err, G_ERR_NOMEM, "texture system: OpenImageIO could not set it up");
         return nullptr;
     }
@@ -74,6 +82,7 @@ void release(GTextureSystem *s)
     ImageCache::destroy(s->cache, true); // the system's own cache, which would otherwise stay allocated
     s->~GTextureSystem();
     gmem_free(s);
+    gmem_budget_release((size_t)cache_mb << 20);
 }
 
 TextureOpt::Wrap wrap_of(GTexWrap w)
