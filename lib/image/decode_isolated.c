@@ -2,11 +2,15 @@
  *
  * The decoder, generic-decode, is found like the OpenImageIO module beside which it is installed: $GENERIC_DECODER
  * (a path; then nowhere else), DIR/generic/ and DIR/../lib/generic/ for the object holding this code and for the
- * executable, then GENERIC_LIBDIR/generic/. It is started with posix_spawn (no fork of this process, whose threads
- * and locks stay its own), on one end of a socket pair that is its standard input and output, with /dev/null as its
- * standard error. Its limits: an address space of GDECODE_BASE_MB MiB plus 1.5 times what the memory budget has left
- * while it reads the header, then plus 1.5 times the decode's charge; GDECODE_CPU_SECONDS seconds of CPU time for
- * the header, then as many plus one a megapixel. */
+ * executable, then GENERIC_LIBDIR/generic/. It is started on first use with posix_spawn (no fork of this process,
+ * whose threads and locks stay its own), on one end of a socket pair that is its standard input and output, with
+ * /dev/null as its standard error, and serves this process's decodes one at a time (a lock) until this process ends;
+ * one that ended (a crash, a limit) is started again for the next file. Its limits: an address space of
+ * GDECODE_BASE_MB MiB, and during a decode that plus 1.5 times the decode's charge (at most 1.5 times the memory
+ * budget's limit when it started: a higher limit set later starts a new one); GDECODE_CPU_SECONDS seconds of CPU time
+ * for a header, and for a decode as many plus one a megapixel. The files of one process share a decoder: a file that
+ * subverts the decoder can change the pixels of the files decoded after it in the same process, never this process.
+ * A process forked from this one starts its own. */
 #include "decode_isolated.h"
 #include "decode_protocol.h"
 
@@ -23,6 +27,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -98,7 +103,15 @@ static void find(void)
     try_dir(GENERIC_LIBDIR, "/generic");
 }
 
-/* ---- talking to it ---- */
+/* ---- the decoder process: one for this process, started on first use ---- */
+
+static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
+static pid_t server_pid;   /* 0: none */
+static pid_t server_owner; /* the process that started it */
+static int server_sock = -1;
+static uint64_t server_max; /* its hard address space limit */
+
+static uint64_t base_bytes(void) { return (uint64_t)GDECODE_BASE_MB << 20; }
 
 static int recv_all(int fd, void *buf, size_t n)
 {
@@ -115,7 +128,22 @@ static int recv_all(int fd, void *buf, size_t n)
     return 0;
 }
 
-/* Reads one record of the given phase, and its message when it carries one: 0, or -1 when the decoder stopped. */
+static int send_all(int fd, const void *buf, size_t n)
+{
+    const char *p = buf;
+    while (n > 0) {
+        ssize_t w = send(fd, p, n, MSG_NOSIGNAL);
+        if (w < 0 && errno == EINTR)
+            continue;
+        if (w <= 0)
+            return -1;
+        p += w;
+        n -= (size_t)w;
+    }
+    return 0;
+}
+
+/* Reads one record of the given phase, and its message: 0, or -1 when the decoder stopped or broke the protocol. */
 static int recv_record(int fd, int phase, GDecodeRecord *r, char message[GDECODE_MESSAGE_MAX + 1])
 {
     message[0] = 0;
@@ -126,27 +154,46 @@ static int recv_record(int fd, int phase, GDecodeRecord *r, char message[GDECODE
     return 0;
 }
 
-/* Why the decoder ended without an answer, from its wait status. */
-static int ended(const char *path, pid_t pid, int killed, double as_mb, unsigned long cpu, GError *err)
+/* Ends the decoder (kill: it is still running) and says why it ended when err is given. G_ERR_IO. */
+static int stop(const char *path, int kill_it, unsigned long cpu, GError *err)
 {
+    if (server_sock >= 0)
+        close(server_sock);
+    server_sock = -1;
+    if (!server_pid)
+        return G_ERR_IO;
+    if (kill_it)
+        kill(server_pid, SIGKILL);
     int status = 0;
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+    while (waitpid(server_pid, &status, 0) < 0 && errno == EINTR)
         ;
-    if (killed)
-        return G_OK;
+    server_pid = 0;
+    if (!err || kill_it)
+        return G_ERR_IO;
     if (WIFSIGNALED(status) && WTERMSIG(status) == SIGXCPU)
         return gerror_set(err, G_ERR_IO, "%s: cannot read image: its decoder took more than its %lu s of CPU time",
                           path, cpu);
     if (WIFSIGNALED(status))
-        return gerror_set(err, G_ERR_IO, "%s: cannot read image: its decoder crashed (%s) within its limits of %.0f MiB "
-                          "and %lu s of CPU time", path, strsignal(WTERMSIG(status)), as_mb, cpu);
+        return gerror_set(err, G_ERR_IO, "%s: cannot read image: its decoder crashed (%s) within its limits of %.0f MiB"
+                          " of address space and %lu s of CPU time", path, strsignal(WTERMSIG(status)),
+                          (double)server_max / 1048576.0, cpu);
     return gerror_set(err, G_ERR_IO, "%s: cannot read image: its decoder ended (exit status %d) without an answer",
                       path, WIFEXITED(status) ? WEXITSTATUS(status) : -1);
 }
 
-static int start(const char *path, GDecodeMode mode, unsigned flags, double charge, double pixels, int *sock,
-                 pid_t *pid, double *as_mb, unsigned long *cpu, GError *err)
+/* A running decoder whose hard limit allows max_bytes: the one there is, else a new one. */
+static int ensure(const char *path, uint64_t max_bytes, GError *err)
 {
+    if (server_pid && server_owner != getpid()) { /* inherited through a fork: the parent's, not ours */
+        if (server_sock >= 0)
+            close(server_sock);
+        server_sock = -1;
+        server_pid = 0;
+    }
+    if (server_pid && server_max >= max_bytes)
+        return G_OK;
+    if (server_pid)
+        stop(path, 1, 0, NULL);
     pthread_once(&find_once, find);
     if (!decoder[0])
         return gerror_set(err, G_ERR_IO, "%s: cannot read image: the image decoder %s is not found (looked in "
@@ -156,73 +203,68 @@ static int start(const char *path, GDecodeMode mode, unsigned flags, double char
     int sv[2];
     if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0)
         return gerror_set(err, G_ERR_IO, "%s: cannot start the image decoder: %s", path, strerror(errno));
-    *as_mb = GDECODE_BASE_MB + 1.5 * charge / 1048576.0;
-    *cpu = GDECODE_CPU_SECONDS;
-    char flag_text[24], as_text[32], cpu_text[48];
-    snprintf(flag_text, sizeof flag_text, "%u", flags);
-    snprintf(as_text, sizeof as_text, "%.0f", *as_mb * 1048576.0);
-    snprintf(cpu_text, sizeof cpu_text, "%lu:%lu", *cpu, GDECODE_CPU_SECONDS + (unsigned long)(pixels / 1e6));
-    const char *mode_text = mode == GDECODE_READ ? "read" : mode == GDECODE_CHECK ? "check" : "info";
-    char *const argv[] = {(char *)GDECODE_PROGRAM, (char *)mode_text, flag_text, as_text, cpu_text, (char *)path,
-                          NULL};
+    char base_text[32], max_text[32];
+    snprintf(base_text, sizeof base_text, "%llu", (unsigned long long)base_bytes());
+    snprintf(max_text, sizeof max_text, "%llu", (unsigned long long)max_bytes);
+    char *const argv[] = {(char *)GDECODE_PROGRAM, base_text, max_text, NULL};
     posix_spawn_file_actions_t fa;
     posix_spawn_file_actions_init(&fa);
     posix_spawn_file_actions_adddup2(&fa, sv[1], 0);
     posix_spawn_file_actions_adddup2(&fa, sv[1], 1);
     posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
-    int rc = posix_spawn(pid, decoder, &fa, NULL, argv, environ);
+    pid_t pid;
+    int rc = posix_spawn(&pid, decoder, &fa, NULL, argv, environ);
     posix_spawn_file_actions_destroy(&fa);
     close(sv[1]);
     if (rc != 0) {
         close(sv[0]);
         return gerror_set(err, G_ERR_IO, "%s: cannot start the image decoder %s: %s", path, decoder, strerror(rc));
     }
-    *sock = sv[0];
+    server_pid = pid;
+    server_owner = getpid();
+    server_sock = sv[0];
+    server_max = max_bytes;
     return G_OK;
 }
 
-int gdecode_run(const char *path, GDecodeMode mode, unsigned flags, GImage *img, int *width, int *height, int *channels,
-                GError *err)
+/* The status a decoder reported, kept when it is one of the library's. */
+static int reported(int status) { return status < 0 && status >= G_ERR_UNSUPPORTED ? status : G_ERR_IO; }
+
+static int run_locked(const char *path, GDecodeMode mode, unsigned flags, GImage *img, int *width, int *height,
+                      int *channels, GError *err)
 {
-    if (img)
-        *img = (GImage){0};
-    /* The decoder starts limited to what the budget has left, and lowers its limit to the decode's own once the
-     * header is known and charged. */
-    const size_t limit = gmem_budget_limit(), used = gmem_budget_used();
-    const double room = limit > used ? (double)(limit - used) : 0.0;
-    int sock = -1;
-    pid_t pid = 0;
-    double as_mb = 0.0;
-    unsigned long cpu = 0;
-    int rc = start(path, mode, flags, room, (double)(1 << 29), &sock, &pid, &as_mb, &cpu, err);
+    const size_t limit = gmem_budget_limit();
+    const uint64_t max_bytes = base_bytes() + (uint64_t)(1.5 * (double)limit);
+    int rc = ensure(path, max_bytes, err);
     if (rc != G_OK)
         return rc;
+    size_t len = strlen(path);
+    if (len < 1 || len > GDECODE_PATH_MAX)
+        return gerror_set(err, G_ERR_IO, "%s: cannot read image: a path of %zu bytes is too long", path, len);
+    GDecodeRequest q = {GDECODE_MAGIC, mode == GDECODE_READ ? GDECODE_MODE_READ
+                                       : mode == GDECODE_CHECK ? GDECODE_MODE_CHECK : GDECODE_MODE_INFO,
+                        flags, (uint32_t)len};
     GDecodeRecord head, r;
     char message[GDECODE_MESSAGE_MAX + 1];
-    if (recv_record(sock, GDECODE_HEADER, &head, message) != 0) {
-        close(sock);
-        return ended(path, pid, 0, as_mb, cpu, err);
-    }
-    rc = G_OK;
+    unsigned long cpu = GDECODE_CPU_SECONDS;
+    if (send_all(server_sock, &q, sizeof q) != 0 || send_all(server_sock, path, len) != 0 ||
+        recv_record(server_sock, GDECODE_HEADER, &head, message) != 0)
+        return stop(path, 0, cpu, err);
     if (head.status != G_OK)
-        rc = gerror_set(err, head.status < 0 && head.status >= G_ERR_UNSUPPORTED ? head.status : G_ERR_IO, "%s",
-                        message);
-    else if (head.width < 1 || head.height < 1 || head.channels < 1 ||
-             (long long)head.width * head.height > (1LL << 29))
-        rc = gerror_set(err, G_ERR_IO, "%s: cannot read image: its decoder answered an impossible size", path);
-    if (rc != G_OK || mode == GDECODE_INFO) {
-        close(sock); /* the decoder ends at the end of the socket */
-        ended(path, pid, 1, as_mb, cpu, NULL);
-        if (rc == G_OK) {
-            if (width)
-                *width = head.width;
-            if (height)
-                *height = head.height;
-            if (channels)
-                *channels = head.channels;
-        }
-        return rc;
+        return gerror_set(err, reported(head.status), "%s", message);
+    if (head.width < 1 || head.height < 1 || head.channels < 1 || (long long)head.width * head.height > (1LL << 29)) {
+        if (mode != GDECODE_INFO)
+            stop(path, 1, cpu, NULL);
+        return gerror_set(err, G_ERR_IO, "%s: cannot read image: its decoder answered an impossible size", path);
     }
+    if (width)
+        *width = head.width;
+    if (height)
+        *height = head.height;
+    if (channels)
+        *channels = head.channels;
+    if (mode == GDECODE_INFO)
+        return G_OK;
 
     const double pixels = (double)head.width * head.height;
     const double charge = gdecode_charge(head.width, head.height, head.channels) +
@@ -230,50 +272,47 @@ int gdecode_run(const char *path, GDecodeMode mode, unsigned flags, GImage *img,
     char what[PATH_MAX + 96];
     snprintf(what, sizeof what, "%s: decoding a %dx%d image with %d channels", path, head.width, head.height,
              head.channels);
-    if ((rc = gmem_budget_reserve((size_t)charge, what, err)) != G_OK) {
-        close(sock);
-        ended(path, pid, 1, as_mb, cpu, NULL);
-        return rc;
-    }
-    unsigned char go[1 + 2 * sizeof(uint64_t)] = {'g'};
-    as_mb = GDECODE_BASE_MB + 1.5 * charge / 1048576.0;
+    rc = gmem_budget_reserve((size_t)charge, what, err);
     cpu = GDECODE_CPU_SECONDS + (unsigned long)(pixels / 1e6);
-    const uint64_t limits[2] = {(uint64_t)(as_mb * 1048576.0), cpu};
-    memcpy(go + 1, limits, sizeof limits);
-    int stopped = 0; /* a decoder whose answer is refused is killed */
-    if (send(sock, go, sizeof go, MSG_NOSIGNAL) != (ssize_t)sizeof go || recv_record(sock, GDECODE_PIXELS, &r, message) != 0) {
-        rc = ended(path, pid, 0, as_mb, cpu, err);
-        pid = 0;
+    GDecodeGo go = {GDECODE_MAGIC, rc == G_OK ? 'g' : 'n', base_bytes() + (uint64_t)(1.5 * charge), cpu};
+    if (send_all(server_sock, &go, sizeof go) != 0) {
+        if (rc == G_OK)
+            gmem_budget_release((size_t)charge);
+        return rc != G_OK ? (stop(path, 1, cpu, NULL), rc) : stop(path, 0, cpu, err);
+    }
+    if (rc != G_OK)
+        return rc;
+    if (recv_record(server_sock, GDECODE_PIXELS, &r, message) != 0) {
+        rc = stop(path, 0, cpu, err);
     } else if (r.status != G_OK) {
-        rc = gerror_set(err, r.status < 0 && r.status >= G_ERR_UNSUPPORTED ? r.status : G_ERR_IO, "%s", message);
+        rc = gerror_set(err, reported(r.status), "%s", message);
     } else if (r.width != head.width || r.height != head.height || r.channels < 3 || r.channels > 4) {
         rc = gerror_set(err, G_ERR_IO, "%s: cannot read image: its decoder answered an impossible image", path);
-        stopped = 1;
+        stop(path, 1, cpu, NULL);
     } else if (mode == GDECODE_READ) {
         size_t n = (size_t)r.width * r.height * r.channels;
         float *pix = gmem_alloc(n * sizeof(float));
         if (!pix) {
             rc = gerror_set(err, G_ERR_NOMEM, "%s: out of memory for a %dx%d image", path, r.width, r.height);
-            stopped = 1;
-        } else if (recv_all(sock, pix, n * sizeof(float)) != 0) {
+            stop(path, 1, cpu, NULL);
+        } else if (recv_all(server_sock, pix, n * sizeof(float)) != 0) {
             gmem_free(pix);
-            rc = ended(path, pid, 0, as_mb, cpu, err);
-            pid = 0;
+            rc = stop(path, 0, cpu, err);
         } else {
             *img = (GImage){r.width, r.height, r.channels, pix};
         }
     }
-    if (stopped)
-        kill(pid, SIGKILL);
-    close(sock);
-    if (pid)
-        ended(path, pid, 1, as_mb, cpu, NULL);
     gmem_budget_release((size_t)charge);
-    if (width)
-        *width = head.width;
-    if (height)
-        *height = head.height;
-    if (channels)
-        *channels = head.channels;
+    return rc;
+}
+
+int gdecode_run(const char *path, GDecodeMode mode, unsigned flags, GImage *img, int *width, int *height, int *channels,
+                GError *err)
+{
+    if (img)
+        *img = (GImage){0};
+    pthread_mutex_lock(&lock);
+    int rc = run_locked(path, mode, flags, img, width, height, channels, err);
+    pthread_mutex_unlock(&lock);
     return rc;
 }
