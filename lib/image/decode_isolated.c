@@ -109,7 +109,8 @@ static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
 static pid_t server_pid;   /* 0: none */
 static pid_t server_owner; /* the process that started it */
 static int server_sock = -1;
-static uint64_t server_max; /* its hard address space limit */
+static uint64_t server_max;   /* its hard address space limit */
+static uint64_t server_limit; /* its address space limit now: the base, or the decode's */
 
 static uint64_t base_bytes(void) { return (uint64_t)GDECODE_BASE_MB << 20; }
 
@@ -176,7 +177,7 @@ static int stop(const char *path, int kill_it, unsigned long cpu, GError *err)
     if (WIFSIGNALED(status))
         return gerror_set(err, G_ERR_IO, "%s: cannot read image: its decoder crashed (%s) within its limits of %.0f MiB"
                           " of address space and %lu s of CPU time", path, strsignal(WTERMSIG(status)),
-                          (double)server_max / 1048576.0, cpu);
+                          (double)server_limit / 1048576.0, cpu);
     return gerror_set(err, G_ERR_IO, "%s: cannot read image: its decoder ended (exit status %d) without an answer",
                       path, WIFEXITED(status) ? WEXITSTATUS(status) : -1);
 }
@@ -224,6 +225,7 @@ static int ensure(const char *path, uint64_t max_bytes, GError *err)
     server_owner = getpid();
     server_sock = sv[0];
     server_max = max_bytes;
+    server_limit = base_bytes();
     return G_OK;
 }
 
@@ -275,6 +277,7 @@ static int run_locked(const char *path, GDecodeMode mode, unsigned flags, GImage
     rc = gmem_budget_reserve((size_t)charge, what, err);
     cpu = GDECODE_CPU_SECONDS + (unsigned long)(pixels / 1e6);
     GDecodeGo go = {GDECODE_MAGIC, rc == G_OK ? 'g' : 'n', base_bytes() + (uint64_t)(1.5 * charge), cpu};
+    server_limit = go.address_space < server_max ? go.address_space : server_max;
     if (send_all(server_sock, &go, sizeof go) != 0) {
         if (rc == G_OK)
             gmem_budget_release((size_t)charge);
@@ -303,6 +306,7 @@ static int run_locked(const char *path, GDecodeMode mode, unsigned flags, GImage
         }
     }
     gmem_budget_release((size_t)charge);
+    server_limit = base_bytes();
     return rc;
 }
 

@@ -98,6 +98,32 @@ static void module_beside_self(void)
         setenv("GENERIC_OIIO_MODULE", module, 1);
 }
 
+/* GENERIC_DECODE_FAULT=by-name, for the tests of the isolation (tests/test_image_isolation.c): the decode of a file
+ * named fault-crash.*, fault-spin.* or fault-grow.* crashes, spins until its CPU time ends (a limit of 1 s) or
+ * allocates and touches memory until its address space ends, as a defective decoder would. */
+static void fault(const char *path)
+{
+    const char *f = getenv("GENERIC_DECODE_FAULT"), *base = strrchr(path, '/');
+    base = base ? base + 1 : path;
+    if (!f || strcmp(f, "by-name") != 0 || strncmp(base, "fault-", 6) != 0)
+        return;
+    if (strncmp(base + 6, "crash.", 6) == 0) {
+        volatile int *nowhere = NULL;
+        *nowhere = 1;
+    } else if (strncmp(base + 6, "spin.", 5) == 0) {
+        cpu_time(1);
+        for (volatile unsigned long i = 0;; i++)
+            ;
+    } else if (strncmp(base + 6, "grow.", 5) == 0) {
+        for (;;) {
+            char *p = malloc(64u << 20);
+            if (!p)
+                abort(); /* what a decoder does when an allocation fails: std::bad_alloc, an assertion */
+            memset(p, 1, 64u << 20);
+        }
+    }
+}
+
 /* One request; 0 to go on, -1 when the library went away. */
 static int serve(const GDecodeRequest *q, const char *path, uint64_t base, uint64_t max_bytes)
 {
@@ -116,6 +142,7 @@ static int serve(const GDecodeRequest *q, const char *path, uint64_t base, uint6
         return 0;
     address_space(go.address_space, max_bytes);
     cpu_time(go.cpu_seconds);
+    fault(path);
     GImage img;
     rc = gimage_read(path, q->flags, &img, &err);
     int failed;
