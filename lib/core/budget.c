@@ -113,6 +113,15 @@ void gmem_budget_set_limit(size_t bytes) { atomic_store(&limit_set, bytes); }
 
 static double mib(size_t bytes) { return (double)bytes / 1048576.0; }
 
+/* A request's size as people read it: KiB below 1 MiB, else MiB. */
+static void size_text(size_t bytes, char *buf, size_t n)
+{
+    if (bytes < (1u << 20))
+        snprintf(buf, n, "%.1f KiB", (double)bytes / 1024.0);
+    else
+        snprintf(buf, n, "%.1f MiB", mib(bytes));
+}
+
 int gmem_budget_reserve(size_t bytes, const char *what, GError *err)
 {
     if (!atomic_load(&limit_set) && gmem_budget_check_env(err) != G_OK)
@@ -120,11 +129,14 @@ int gmem_budget_reserve(size_t bytes, const char *what, GError *err)
     const size_t limit = gmem_budget_limit();
     size_t cur = atomic_load(&used_bytes);
     do {
-        if (bytes > limit || cur > limit - bytes)
+        if (bytes > limit || cur > limit - bytes) {
+            char need[48];
+            size_text(bytes, need, sizeof need);
             return gerror_set(err, G_ERR_NOMEM,
-                              "%s needs %.1f MiB, over the memory budget: %.1f MiB of %.0f MiB are in use "
+                              "%s needs %s, over the memory budget: %.1f MiB of %.0f MiB are in use "
                               "(raise it with --memory-limit or GENERIC_MEMORY_LIMIT_MB)",
-                              what ? what : "this", mib(bytes), mib(cur), mib(limit));
+                              what ? what : "this", need, mib(cur), mib(limit));
+        }
     } while (!atomic_compare_exchange_weak(&used_bytes, &cur, cur + bytes));
     return G_OK;
 }
