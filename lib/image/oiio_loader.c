@@ -337,6 +337,23 @@ GTextureSystem *gtexsys_default(GError *err)
     return o ? o->texsys_default(err) : NULL;
 }
 
+/* An image refusal ("PATH: cannot read image: REASON") worded as the texture system's own: "image 'PATH' cannot be
+ * read: REASON". Returns rc. */
+static int texture_refusal(const char *path, int rc, GError *err)
+{
+    if (!err)
+        return rc;
+    char reason[sizeof err->message];
+    const char *why = err->message;
+    size_t len = strlen(path);
+    if (strncmp(why, path, len) == 0 && strncmp(why + len, ": ", 2) == 0)
+        why += len + 2;
+    if (strncmp(why, "cannot read image: ", 19) == 0)
+        why += 19;
+    snprintf(reason, sizeof reason, "%s", why);
+    return gerror_set(err, rc, "image '%s' cannot be read: %s", path, reason);
+}
+
 int gtexsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *channels, int *srgb, GError *err)
 {
     *file = NULL;
@@ -344,23 +361,20 @@ int gtexsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *cha
         return gerror_set(err, G_ERR_INVALID, "image: no file name given");
     if (access(path, F_OK) != 0 && errno == ENOENT)
         return gerror_set(err, G_ERR_IO, "image '%s': no such file", path);
+    /* the header first: a texture of too many pixels is refused before any decode */
+    int w, h;
+    int rc = gimage_info(path, &w, &h, NULL, err);
+    if (rc != G_OK)
+        return texture_refusal(path, rc, err);
+    if ((long long)w * h > GTEXSYS_MAX_PIXELS)
+        return gerror_set(err, G_ERR_IO, "image '%s' is %dx%d pixels, more than a texture may have (%lld, 8192x8192): "
+                          "reduce it first (e.g. oiiotool IN --resize 25%% -o OUT)", path, w, h, GTEXSYS_MAX_PIXELS);
     /* OpenImageIO's texture system reads the file in this process: a decoder process decodes it whole first */
     int isolated = gdecode_isolated(err);
     if (isolated < 0)
         return isolated;
-    if (isolated) {
-        GError why;
-        int rc = gdecode_run(path, GDECODE_CHECK, 0, NULL, NULL, NULL, NULL, &why);
-        if (rc != G_OK) { /* "PATH: cannot read image: REASON" as the texture system's own refusals read */
-            const char *reason = why.message;
-            size_t len = strlen(path);
-            if (strncmp(reason, path, len) == 0 && strncmp(reason + len, ": ", 2) == 0)
-                reason += len + 2;
-            if (strncmp(reason, "cannot read image: ", 19) == 0)
-                reason += 19;
-            return gerror_set(err, rc, "image '%s' cannot be read: %s", path, reason);
-        }
-    }
+    if (isolated && (rc = gdecode_run(path, GDECODE_CHECK, 0, NULL, NULL, NULL, NULL, err)) != G_OK)
+        return texture_refusal(path, rc, err);
     const GOiioOps *o = goiio_ops(err);
     return o ? o->texsys_open(ts, path, file, channels, srgb, err) : G_ERR_IO;
 }
