@@ -6,6 +6,7 @@
  * - Decodes are charged to the memory budget: light probes are held against it until they are destroyed, so that
  *   loading the same probe again and again stops at exactly floor(limit / probe bytes) probes, refused before the
  *   decode; a probe whose tables alone exceed what is left is refused from its header.
+ * - Textures of more than 8192 x 8192 pixels (small PNG files of 12000 x 12000) are refused from their header.
  * - GENERIC_DECODE accepts "isolated" and "inprocess" only. */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -19,6 +20,7 @@
 #include "generic/services/texsys.h"
 #include "test_util.h"
 
+#include <png.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -203,6 +205,62 @@ static void test_probes_held_against_budget(void **state)
     gmem_budget_set_limit(0);
 }
 
+/* A true PNG of w x h black pixels, 1 bit each: a few kilobytes for a huge image. */
+static void write_black_png(const char *path, int w, int h)
+{
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
+    png_infop info = png_create_info_struct(png);
+    assert_true(png && info);
+    if (setjmp(png_jmpbuf(png)))
+        fail_msg("libpng failed writing %s", path);
+    png_init_io(png, f);
+    png_set_IHDR(png, info, (png_uint_32)w, (png_uint_32)h, 1, PNG_COLOR_TYPE_GRAY, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_write_info(png, info);
+    png_bytep row = calloc((size_t)(w + 7) / 8, 1);
+    for (int y = 0; y < h; y++)
+        png_write_row(png, row);
+    png_write_end(png, NULL);
+    png_destroy_write_struct(&png, &info);
+    free(row);
+    assert_int_equal(fclose(f), 0);
+}
+
+/* Four small files of 12000 x 12000 pixels as textures: each refused from its header, naming the limit, and so
+ * is one of a row more than 8192 x 8192. */
+static void test_huge_textures_refused(void **state)
+{
+    (void)state;
+    setenv("GENERIC_DECODE", "isolated", 1);
+    GTextureSystem *ts = NULL;
+    GError err;
+    assert_int_equal(gtexsys_create(&ts, &err), G_OK);
+    GTexFile *file;
+    int channels, srgb;
+    for (int i = 0; i < 4; i++) {
+        char name[32], path[512];
+        snprintf(name, sizeof name, "huge%d.png", i);
+        tu_in_dir(dir, name, path, sizeof path);
+        write_black_png(path, 12000, 12000);
+        assert_int_equal(gtexsys_open(ts, path, &file, &channels, &srgb, &err), G_ERR_IO);
+        if (!strstr(err.message, "is 12000x12000 pixels, more than a texture may have"))
+            fail_msg("%s", err.message);
+    }
+    print_message("%s\n", err.message);
+    assert_int_equal(gmem_budget_used(), 512u << 20); /* the texture system's cache only: nothing decoded */
+    const char *edge = in_dir("edge.png"); /* one row over the limit */
+    write_black_png(edge, 8192, 8193);
+    assert_int_equal(gtexsys_open(ts, edge, &file, &channels, &srgb, &err), G_ERR_IO);
+    assert_non_null(strstr(err.message, "is 8192x8193 pixels"));
+    write_black_png(edge, 64, 32);
+    if (gtexsys_open(ts, edge, &file, &channels, &srgb, &err) != G_OK)
+        fail_msg("%s", err.message);
+    gtexsys_unref(ts);
+    assert_int_equal(gmem_budget_used(), 0);
+}
+
 static void test_decode_switch(void **state)
 {
     (void)state;
@@ -229,6 +287,7 @@ int main(void)
         cmocka_unit_test(test_foreign_formats_refused),
         cmocka_unit_test(test_decoder_faults_contained),
         cmocka_unit_test(test_probes_held_against_budget),
+        cmocka_unit_test(test_huge_textures_refused),
         cmocka_unit_test(test_decode_switch),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
