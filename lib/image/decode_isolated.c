@@ -1,8 +1,8 @@
 /* decode_isolated.c - untrusted images decoded in a separate process (decode_isolated.h, decode_protocol.h).
  *
  * The decoder, generic-decode, is found like the OpenImageIO module beside which it is installed: $GENERIC_DECODER
- * (a path; then nowhere else), DIR/generic/ and DIR/../lib/generic/ for the object holding this code and for the
- * executable, then GENERIC_LIBDIR/generic/. It is started on first use with posix_spawn (no fork of this process,
+ * (a path; then nowhere else), the directory of $GENERIC_OIIO_MODULE, DIR/generic/ and DIR/../lib/generic/ for the
+ * object holding this code and for the executable, then GENERIC_LIBDIR/generic/. It is started on first use with posix_spawn (no fork of this process,
  * whose threads and locks stay its own), on one end of a socket pair that is its standard input and output, with
  * /dev/null as its standard error, and serves this process's decodes one at a time (a lock) until this process ends;
  * one that ended (a crash, a limit) is started again for the next file. Its limits: an address space of
@@ -93,6 +93,14 @@ static void find(void)
     if (named && *named) {
         snprintf(decoder, sizeof decoder, "%s", named);
         return;
+    }
+    const char *module = secure_getenv("GENERIC_OIIO_MODULE"); /* a module named: the decoder beside it */
+    if (module && *module && strchr(module, '/')) {
+        char dir[PATH_MAX];
+        snprintf(dir, sizeof dir, "%s", module);
+        *strrchr(dir, '/') = 0;
+        if (try_dir(dir, ""))
+            return;
     }
     Dl_info self;
     if (dladdr((void *)&gdecode_run, &self) && self.dli_fname && strchr(self.dli_fname, '/') &&
@@ -213,6 +221,7 @@ static int ensure(const char *path, uint64_t max_bytes, GError *err)
     posix_spawn_file_actions_adddup2(&fa, sv[1], 0);
     posix_spawn_file_actions_adddup2(&fa, sv[1], 1);
     posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addclosefrom_np(&fa, 3); /* none of this process's other files */
     pid_t pid;
     int rc = posix_spawn(&pid, decoder, &fa, NULL, argv, environ);
     posix_spawn_file_actions_destroy(&fa);
@@ -287,6 +296,16 @@ static int run_locked(const char *path, GDecodeMode mode, unsigned flags, GImage
         return rc;
     if (recv_record(server_sock, GDECODE_PIXELS, &r, message) != 0) {
         rc = stop(path, 0, cpu, err);
+    } else if (r.status != G_OK && mode == GDECODE_CHECK && reported(r.status) == G_ERR_IO) {
+        /* a texture whose header reads and whose pixels do not: said as the texture node says it */
+        const char *why = message;
+        size_t plen = strlen(path);
+        if (strncmp(why, path, plen) == 0 && strncmp(why + plen, ": ", 2) == 0)
+            why += plen + 2;
+        if (strncmp(why, "cannot decode image: ", 21) == 0)
+            why += 21;
+        rc = gerror_set(err, G_ERR_IO, "%s: cannot read image: its pixels cannot be decoded (a truncated or damaged "
+                        "file): %s", path, why);
     } else if (r.status != G_OK) {
         rc = gerror_set(err, reported(r.status), "%s", message);
     } else if (r.width != head.width || r.height != head.height || r.channels < 3 || r.channels > 4) {

@@ -3,7 +3,11 @@
  * Pixels in memory are always linear float values, stored row by row from the top row down and left to
  * right, channels interleaved: pixel (x, y) channel c is pixels[(y * width + x) * channels + c].
  *
- * Reading accepts every format OpenImageIO reads (EXR, HDR, PFM, TIFF, PNG, JPEG, ...). The result has
+ * Reading accepts OpenEXR, Radiance HDR, PFM, PNM, PNG, JPEG and TIFF, decided by the file's first bytes whatever
+ * its name; any other content (IFF, DPX, BMP, ...) is G_ERR_IO naming the format found. Unless the environment says
+ * GENERIC_DECODE=inprocess, gimage_read and gimage_info run in a decoder process (generic-decode, installed beside
+ * the OpenImageIO module) under limits on its address space and CPU time, so that a crash, a hang or a memory
+ * blow-up of a reader is a G_ERR_IO for that file (docs/reference/format.md, "Untrusted files"). The result has
  * 3 channels (RGB) or 4 (RGBA): grey images are expanded to RGB, files with an alpha channel keep it as
  * channel 3 unless GIMAGE_READ_RGB is given, extra channels are dropped. Integer files whose colour
  * space is sRGB (what OpenImageIO reports for 8-bit PNG and JPEG, and what gimage_write stores) are
@@ -31,10 +35,10 @@
  * pixel memory is allocated, a header is refused when it claims more pixels than the file can hold (a PFM's
  * floats are uncompressed, a PNG's deflate stream expands at most 1032 times, a Radiance HDR row takes at
  * least 2 bytes for every 127 bytes of a component), or when the decoded image,
- * width x height x max(channels, 3) 32-bit floats, would exceed the image memory budget (reading takes about
- * twice that), or when that decode does not fit in what is left of the process-wide memory budget
- * (generic/memory.h: --memory-limit, GENERIC_MEMORY_LIMIT_MB). Light probes (generic/services/probe.h) and textures
- * hold their tables against the same budget. No C++ exception leaves this library: OpenImageIO's are turned into statuses.
+ * width x height x max(channels, 3) 32-bit floats, would exceed the memory limit, or when its decode (the file's
+ * channels and a 4-channel result as floats, and the copy a decoder process sends back) does not fit in what is
+ * left of the process-wide memory budget (generic/memory.h: --memory-limit, GENERIC_MEMORY_LIMIT_MB), which it holds
+ * while it runs. Light probes (generic/services/probe.h) and texture systems hold theirs while they live. No C++ exception leaves this library: OpenImageIO's are turned into statuses.
  *
  * Errors return a negative status (error.h) and put OpenImageIO's own message into the GError. All
  * functions are thread safe for distinct images. */

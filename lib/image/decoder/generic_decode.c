@@ -167,12 +167,18 @@ int main(int argc, char **argv)
     const uint64_t base = strtoull(argv[1], NULL, 10), max_bytes = strtoull(argv[2], NULL, 10);
     struct rlimit none = {0, 0};
     setrlimit(RLIMIT_CORE, &none);
-    setrlimit(RLIMIT_FSIZE, &none);
     address_space(base, max_bytes);
     setenv("GENERIC_DECODE", "inprocess", 1); /* this process is the isolation */
     setenv("OPENIMAGEIO_THREADS", "1", 1);    /* one thread: a small, predictable address space */
     gmem_budget_set_limit((size_t)GMEM_BUDGET_MAX_MB << 20); /* the library charged the decode to its budget */
     module_beside_self();
+    /* OpenImageIO loaded now, before any file is read (the header of no file loads it), so that what the dynamic
+     * loader writes when asked (LD_DEBUG_OUTPUT) is written; from here on this process writes no file */
+    GError ignored;
+    int w, h, c;
+    if (gimage_info("/", &w, &h, &c, &ignored) == G_OK) /* a directory: refused after the module is loaded */
+        return 1;
+    setrlimit(RLIMIT_FSIZE, &none);
     for (;;) {
         GDecodeRequest q;
         char path[GDECODE_PATH_MAX + 1];
