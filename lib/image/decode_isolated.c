@@ -13,8 +13,10 @@
  * A process forked from this one starts its own. */
 #include "decode_isolated.h"
 #include "decode_protocol.h"
+#include "image_format.h"
 
 #include "generic/memory.h"
+#include "generic/services/file.h"
 
 #include <dlfcn.h>
 #include <errno.h>
@@ -241,6 +243,26 @@ static int ensure(const char *path, uint64_t max_bytes, GError *err)
 /* The status a decoder reported, kept when it is one of the library's. */
 static int reported(int status) { return status < 0 && status >= G_ERR_UNSUPPORTED ? status : G_ERR_IO; }
 
+/* The file's content is of a format the library reads (image_format.h): checked here, so that other content never
+ * reaches a decoder. G_OK, or G_ERR_IO naming the file and the format found. */
+static int check_format(const char *path, GError *err)
+{
+    int fd = gfile_open_input(path, err);
+    if (fd < 0)
+        return fd;
+    unsigned char head[GIMAGE_SNIFF_BYTES];
+    ssize_t got = pread(fd, head, sizeof head, 0);
+    close(fd);
+    const GImageFormat f = gimage_sniff(head, got > 0 ? (size_t)got : 0);
+    if (f.oiio)
+        return G_OK;
+    if (strcmp(f.name, "unknown") == 0)
+        return gerror_set(err, G_ERR_IO, "%s: cannot read image: its content is not one of the formats read (%s)", path,
+                          GIMAGE_READ_FORMATS);
+    return gerror_set(err, G_ERR_IO, "%s: cannot read image: its content is %s, not one of the formats read (%s)", path,
+                      f.name, GIMAGE_READ_FORMATS);
+}
+
 static int run_locked(const char *path, GDecodeMode mode, unsigned flags, GImage *img, int *width, int *height,
                       int *channels, GError *err)
 {
@@ -334,8 +356,11 @@ int gdecode_run(const char *path, GDecodeMode mode, unsigned flags, GImage *img,
 {
     if (img)
         *img = (GImage){0};
+    int rc = check_format(path, err);
+    if (rc != G_OK)
+        return rc;
     pthread_mutex_lock(&lock);
-    int rc = run_locked(path, mode, flags, img, width, height, channels, err);
+    rc = run_locked(path, mode, flags, img, width, height, channels, err);
     pthread_mutex_unlock(&lock);
     return rc;
 }
