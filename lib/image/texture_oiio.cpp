@@ -203,8 +203,9 @@ int texsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *chan
             return err ? err->code : G_ERR_IO;
         ImageInput::Creator make = creator_of(format.oiio);
         if (!make)
-            return gerror_set(err, G_ERR_IO, "image '%s' cannot be read: its content is not one of the formats read (%s)",
-                              path, GIMAGE_READ_FORMATS);
+            return gerror_set(err, G_ERR_IO,
+                              "image '%s' cannot be read: its content is not one of the formats read (%s)", path,
+                              GIMAGE_READ_FORMATS);
         ustring name(path);
         ts->cache->add_file(name, make); // no effect when the file is in the cache already, opened the same way
         TextureSystem::Perthread *pt = ts->ts->get_perthread_info();

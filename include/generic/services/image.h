@@ -38,7 +38,8 @@
  * width x height x max(channels, 3) 32-bit floats, would exceed the memory limit, or when its decode (the file's
  * channels and a 4-channel result as floats, and the copy a decoder process sends back) does not fit in what is
  * left of the process-wide memory budget (generic/memory.h: --memory-limit, GENERIC_MEMORY_LIMIT_MB), which it holds
- * while it runs. Light probes (generic/services/probe.h) and texture systems hold theirs while they live. No C++ exception leaves this library: OpenImageIO's are turned into statuses.
+ * while it runs. Light probes (generic/services/probe.h) and texture systems hold theirs while they live. No C++
+ * exception leaves this library: OpenImageIO's are turned into statuses.
  *
  * Errors return a negative status (error.h) and put OpenImageIO's own message into the GError. All
  * functions are thread safe for distinct images. */
