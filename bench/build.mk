@@ -16,3 +16,6 @@ $(BUILD)/bench/%: $(BUILD)/obj/bench/%.o $(LIBA) | $(OIIO_SO)
 bench: deps
 	@$(BUILD_STEP) all $(BENCH_BIN)
 	@for b in $(BENCH_BIN); do echo "== $$b"; $$b || exit 1; done
+
+# Benchmarks that read images start the image decoder process (lib/build.mk).
+$(BENCH_BIN): | $(DECODER)

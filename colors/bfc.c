@@ -6,6 +6,8 @@
 #include "generic/reader.h"
 #include "generic/services/bfc.h"
 
+#include <stdio.h>
+
 /* Emission shorter than excitation cannot happen: those entries are measurement noise and are zeroed, and
  * negative noise elsewhere is clipped. */
 static void clean_matrix(GReradiation *m, float *data)
@@ -30,9 +32,12 @@ static int parse_bfc(GReader *r, const void *vt, void **object, GError *err)
     int rc = greader_path(r, &path, err);
     GBfcData d;
     if (rc == G_OK && (rc = gbfc_read(path, &d, err)) == G_OK) {
-        s->owned_data = d.values;
-        s->rerad = d.rerad;
-        clean_matrix(&s->rerad, s->owned_data);
+        char what[96];
+        snprintf(what, sizeof what, "a %dx%d re-radiation matrix", d.rerad.n_out, d.rerad.n_in);
+        if ((rc = gcolorspec_own_matrix(s, &d.rerad, d.values, what, err)) == G_OK)
+            clean_matrix(&s->rerad, s->owned_data);
+        else
+            rc = greader_locate(r, err);
     }
     gmem_free(path);
     if (rc != G_OK) {

@@ -7,6 +7,7 @@ lib: $(LIBA) $(LIBSO) $(OIIO_SO) $(OCIO_CONFIG) $(BUILD)/pkgconfig/generic.pc
 
 # Where `make install` puts the module: the loader's last resort when it is not beside the library.
 $(call objs_of,lib/image/oiio_loader.o): CPPFLAGS += -DGENERIC_LIBDIR='"$(PREFIX)/lib"'
+$(call objs_of,lib/image/decode_isolated.o): CPPFLAGS += -DGENERIC_LIBDIR='"$(PREFIX)/lib"'
 # Where `make install` puts the shipped OpenColorIO config (share/ocio/config.ocio); the build tree has it in
 # $(BUILD)/share/generic/ocio/, found beside the programs the same way (lib/image/image_display.c).
 $(call objs_of,lib/image/image_display.o): CPPFLAGS += -DGENERIC_DATADIR='"$(PREFIX)/share"'
@@ -97,6 +98,7 @@ install-lib: lib
 	install -m 755 $(LIBSO) $(INST)/lib/
 	ln -sf libgeneric.so.$(SOVER) $(INST)/lib/libgeneric.so
 	install -m 755 $(OIIO_SO) $(INST)/lib/generic/
+	install -m 755 $(DECODER) $(INST)/lib/generic/
 	install -m 644 share/ocio/config.ocio $(INST)/share/generic/ocio/
 	$(call pc_text,$(PREFIX),$${prefix}/include,$${exec_prefix}/lib,) > $(INST)/lib/pkgconfig/generic.pc
 
@@ -104,5 +106,13 @@ uninstall: uninstall-lib
 uninstall-lib:
 	rm -f $(patsubst include/%,$(INST)/include/%,$(PUBLIC_HDR))
 	rm -f $(INST)/lib/libgeneric.a $(INST)/lib/libgeneric.so $(INST)/lib/libgeneric.so.$(SOVER)
-	rm -f $(INST)/lib/generic/$(notdir $(OIIO_SO)) $(INST)/lib/pkgconfig/generic.pc
+	rm -f $(INST)/lib/generic/$(notdir $(OIIO_SO)) $(INST)/lib/generic/$(notdir $(DECODER)) \
+	    $(INST)/lib/pkgconfig/generic.pc
 	rm -f $(INST)/share/generic/ocio/config.ocio
+
+# ---- the image decoder process (lib/image/decode_isolated.c), beside the OpenImageIO module it loads ----
+DECODER := $(BUILD)/lib/generic/generic-decode
+lib: $(DECODER)
+$(DECODER): $(BUILD)/obj/lib/image/decoder/generic_decode.o $(LIBA) | $(OIIO_SO)
+	@mkdir -p $(dir $@)
+	$(CC) -o $@ $(filter %.o,$^) $(LIBA) $(LDFLAGS) $(DEPLIBS)

@@ -57,3 +57,6 @@ PERCENT := %
 
 $(BUILD)/modules/%.so: $(BUILD)/modules/%_module.c $(PLUGIN_HDR)
 	$(CC) $(PLUGIN_CFLAGS) -o $@ $< -lm
+
+# Tests that read images start the image decoder process (lib/build.mk).
+$(TEST_BIN): | $(DECODER)

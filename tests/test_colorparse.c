@@ -230,19 +230,36 @@ static void test_spec_copy(void **state)
     (void)state;
     GColorSpec *s = gcolorspec_create(), *copy = NULL;
     assert_non_null(s);
-    s->form = GCOLORSPEC_RERADIATION;
-    s->owned_data = gmem_calloc(4, sizeof(float));
-    s->owned_data[3] = 0.25f;
-    s->rerad = (GReradiation){400, 10, 2, 400, 10, 2, s->owned_data};
+    float *data = gmem_calloc(4, sizeof(float));
+    data[3] = 0.25f;
+    const GReradiation m = {400, 10, 2, 400, 10, 2, NULL};
     GError err;
+    const size_t used = gmem_budget_used();
+    assert_int_equal(gcolorspec_own_matrix(s, &m, data, "a test matrix", &err), G_OK);
+    assert_int_equal(s->form, GCOLORSPEC_RERADIATION);
+    assert_ptr_equal(s->rerad.data, data);
+    assert_int_equal(gmem_budget_used(), used + 4 * sizeof(float)); /* held while the spec lives */
     assert_int_equal(gcolorspec_copy(s, &copy, &err), G_OK);
+    assert_int_equal(gmem_budget_used(), used + 8 * sizeof(float));
     assert_ptr_not_equal(copy->owned_data, s->owned_data);
     assert_ptr_equal(copy->rerad.data, copy->owned_data);
     assert_true(copy->owned_data[3] == 0.25f);
     gcolorspec_destroy(s);
     assert_true(copy->rerad.data[3] == 0.25f);
     gcolorspec_destroy(copy);
+    assert_int_equal(gmem_budget_used(), used);
     gcolorspec_destroy(NULL);
+    /* a matrix over the budget is refused, freed, and the spec left as it was */
+    GColorSpec *t = gcolorspec_create();
+    gmem_budget_set_limit(used + (1u << 20) - 1); /* one byte short */
+    float *big = gmem_calloc(1u << 18, sizeof(float)); /* 1 MiB */
+    const GReradiation mb = {400, 1, 512, 400, 1, 512, NULL};
+    assert_int_equal(gcolorspec_own_matrix(t, &mb, big, "a 512x512 matrix", &err), G_ERR_NOMEM);
+    assert_non_null(strstr(err.message, "a 512x512 matrix"));
+    assert_null(t->owned_data);
+    assert_int_equal(gmem_budget_used(), used);
+    gmem_budget_set_limit(0);
+    gcolorspec_destroy(t);
 }
 
 int main(void)

@@ -267,7 +267,7 @@ static void test_refusals(void **state)
     snprintf(args, sizeof args,
              "examples/scenes/cornell.scene --colormodel spectrum --width 65536 --height 65536 --spectral -o '%s'", out);
     assert_int_equal(run_gtrace(args, log, sizeof log), 1);
-    assert_non_null(strstr(log, "more than the image memory budget"));
+    assert_non_null(strstr(log, "more than the memory limit"));
     assert_int_equal(access(out, F_OK), -1);
 }
 

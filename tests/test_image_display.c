@@ -82,7 +82,7 @@ static void test_views(void **state)
     assert_true(d <= 1.0 / 255.0 + 1e-6);
     GImageDisplay defaults = {0}; /* the config's default display and view: sRGB, Standard */
     GImage dflt;
-    write_read(&img, "defaults.tga", &defaults, &dflt); /* through OpenImageIO's writer, not libpng */
+    write_read(&img, "defaults.tif", &defaults, &dflt); /* through OpenImageIO's writer, not libpng */
     assert_true(max_diff(&dflt, &def) <= 1.0 / 255.0 + 1e-6);
     GImageDisplay rawv = {.view = "Raw"};
     write_read(&img, "raw.png", &rawv, &raw);

@@ -9,12 +9,14 @@
 #include <cmocka.h>
 
 #include "generic/builtins.h"
+#include "generic/memory.h"
 #include "generic/services/image.h"
 #include "generic/services/probe.h"
 #include "generic/reader.h"
 #include "test_util.h"
 
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
 #include <time.h>
@@ -223,15 +225,20 @@ static void test_memory_budget(void **state)
     for (size_t i = 0; i < 512u * 512u * 3u; i++)
         img.pixels[i] = (float)(i % 7) * 0.25f;
     assert_int_equal(gimage_write(path, &img, NULL, &err), G_OK);
-    gimage_set_memory_budget(3u << 20); /* exactly enough */
+    /* decoding it in this process takes the file's 3 channels and a 4-channel result as floats: 7 MiB */
+    gimage_set_memory_budget(7u << 20); /* exactly enough */
     assert_int_equal(gimage_read(path, GIMAGE_READ_RGB, &back, &err), G_OK);
     assert_int_equal(back.width, 512);
     assert_true(memcmp(back.pixels, img.pixels, 512u * 512u * 3u * sizeof(float)) == 0);
+    assert_int_equal(gmem_budget_used(), 0); /* the decode's charge is returned */
     gimage_free(&back);
-    gimage_set_memory_budget((3u << 20) - 1); /* one byte short */
+    gimage_set_memory_budget((7u << 20) - 1); /* one byte short */
     assert_int_equal(gimage_read(path, GIMAGE_READ_RGB, &back, &err), G_ERR_NOMEM);
-    assert_non_null(strstr(err.message, "more than the image memory budget of 2 MiB"));
+    assert_non_null(strstr(err.message, "needs 7.0 MiB, over the memory budget"));
+    assert_null(back.pixels);
+    gimage_set_memory_budget((3u << 20) - 1); /* the image alone does not fit: refused from its header */
     assert_int_equal(gimage_info(path, NULL, NULL, NULL, &err), G_ERR_NOMEM);
+    assert_non_null(strstr(err.message, "more than the memory limit of 2 MiB"));
     /* a probe's tables count against the same budget: 512x256 needs about 8 MiB */
     gimage_set_memory_budget(4u << 20);
     GProbe *p = NULL;
@@ -239,7 +246,12 @@ static void test_memory_budget(void **state)
     assert_non_null(strstr(err.message, "a 512x256 probe needs"));
     gimage_set_memory_budget(16u << 20);
     assert_int_equal(gprobe_create(512, 256, NULL, &p, &err), G_OK);
+    assert_true(gmem_budget_used() > (6u << 20)); /* held while the probe lives */
+    GProbe *second = NULL; /* a second one does not fit beside it */
+    assert_int_equal(gprobe_create(512, 256, NULL, &second, &err), G_ERR_NOMEM);
+    assert_null(second);
     gprobe_destroy(p);
+    assert_int_equal(gmem_budget_used(), 0);
     gimage_set_memory_budget(0);
     assert_int_equal(gimage_memory_budget(), (size_t)GIMAGE_DEFAULT_BUDGET_MB << 20);
     gimage_free(&img);
@@ -271,6 +283,8 @@ static void test_true_files_read(void **state)
 
 int main(void)
 {
+    /* the header checks and the budget in this process; tests/test_image_isolation.c decodes in a decoder process */
+    setenv("GENERIC_DECODE", "inprocess", 1);
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_lying_png_headers),
         cmocka_unit_test(test_lying_pfm_headers),

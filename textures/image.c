@@ -290,7 +290,8 @@ static int parse_image(GReader *r, const void *vtable, void **object, GError *er
 
 static const GParamInfo image_params[] = {
     {"child", GPARAM_NAMED, "material", NULL, NULL, "the material whose reflected and emitted light is multiplied"},
-    {"file", GPARAM_NAMED, "path", NULL, "an image OpenImageIO reads",
+    {"file", GPARAM_NAMED, "path", NULL,
+     "an image file: OpenEXR, HDR, PFM, PNM, PNG, JPEG or TIFF, at most 8192 x 8192 pixels",
      "the image, looked up at (u, v) with trilinear MIP-mapping over the footprint"},
     {"wrap", GPARAM_NAMED, "choice", "periodic", IMAGE_WRAPS, "outside [0, 1] in u and v: repeat, hold the edge, "
      "black, repeat mirrored"},

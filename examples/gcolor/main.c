@@ -26,6 +26,8 @@ static void usage(FILE *f)
             "  --models LIST only these models, e.g. rgb,spectrum\n"
             "  --plugin FILE.so  load a module first (repeatable; a bare name is searched in the current\n"
             "                directory, then in GENERIC_PLUGIN_PATH, then PREFIX/lib/generic/plugins)\n"
+            "  --memory-limit SIZE  memory for what input sizes: MiB, or with M, G, T (default 4096, or\n"
+            "                GENERIC_MEMORY_LIMIT_MB)\n"
             "  -h, --help    this text\n"
             "  --version     the version\n"
             "Every option value may also be written --option=value.\n"

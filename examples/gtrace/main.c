@@ -12,6 +12,7 @@
 #include "lights/probe_env.h"
 #include "scenefile/type_list.h"
 #include "../common/cli.h"
+#include "../common/startup.h"
 
 #include <generic/builtins.h>
 #include <generic/services/image.h>
@@ -79,6 +80,9 @@ static void usage(FILE *f)
             "                    code: refused without this or GENERIC_ALLOW_PLUGINS=1)\n"
             "  --confine DIR     every file the scene reads (itself, includes, modules, meshes, images,\n"
             "                    BFC files, probes) must lie under DIR once symbolic links are resolved\n"
+            "  --memory-limit SIZE  memory for what the scene's files size (images, probes, meshes,\n"
+            "                    colours, framebuffer, ...): MiB, or with M, G, T (default 4096, or\n"
+            "                    GENERIC_MEMORY_LIMIT_MB); a scene over it is refused before the allocation\n"
             "  --cutoff W        do not trace rays whose weight in the pixel is below W (default: the\n"
             "                    camera's, 1e-3; 0 traces every ray to the depth limit)\n"
             "  --bands K         most wavelength groups a dispersive refraction splits into, 1..1024\n"
@@ -512,6 +516,9 @@ int main(int argc, char **argv)
 {
     if (argc > 1 && strcmp(argv[1], "merge") == 0)
         return merge_main(argc - 1, argv + 1);
+    int limit = startup_memory_limit("gtrace", &argc, argv);
+    if (limit >= 0)
+        return limit;
     GError reg_err;
     if (generic_register_builtins(&reg_err) != G_OK || gtrace_register_kinds(&reg_err) != G_OK) {
         fprintf(stderr, "%s\n", reg_err.message);

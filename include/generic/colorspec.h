@@ -39,8 +39,13 @@ typedef struct GColorSpec {
 
 /** A new spec (form RGB, black, scale 1); NULL when out of memory. */
 GENERIC_API GColorSpec *gcolorspec_create(void);
-/** Frees a spec and its matrix; NULL is a no-op. */
+/** Frees a spec and its matrix (returning the matrix's bytes to the memory budget); NULL is a no-op. */
 GENERIC_API void gcolorspec_destroy(GColorSpec *s);
+/** Makes s a re-radiation matrix m whose storage data (m->n_in x m->n_out floats from gmem_alloc) s then owns,
+ * reserving its bytes against the memory budget (generic/memory.h) until gcolorspec_destroy. G_OK, or G_ERR_NOMEM
+ * naming `what` and the budget's figures, with data freed and s unchanged. Every owned_data is attached this way. */
+GENERIC_API GENERIC_NODISCARD int gcolorspec_own_matrix(GColorSpec *s, const GReradiation *m, float *data,
+                                                        const char *what, GError *err);
 /** Deep copy of src into a new spec. */
 GENERIC_API GENERIC_NODISCARD int gcolorspec_copy(const GColorSpec *src, GColorSpec **out, GError *err);
 /** Converts a spec in a role into out (which has storage of the target model). A line is spread over a

@@ -14,12 +14,42 @@ GColorSpec *gcolorspec_create(void)
     return s;
 }
 
+/* The bytes of a spec's owned matrix, as gcolorspec_own_matrix charged them. */
+static size_t matrix_bytes(const GReradiation *m)
+{
+    return (size_t)m->n_in * (size_t)m->n_out * sizeof(float);
+}
+
 void gcolorspec_destroy(GColorSpec *s)
 {
     if (!s)
         return;
+    if (s->owned_data)
+        gmem_budget_release(matrix_bytes(&s->rerad));
     gmem_free(s->owned_data);
     gmem_free(s);
+}
+
+int gcolorspec_own_matrix(GColorSpec *s, const GReradiation *m, float *data, const char *what, GError *err)
+{
+    if (m->n_in < 1 || m->n_out < 1) {
+        gmem_free(data);
+        return gerror_set(err, G_ERR_INVALID, "%s: an empty re-radiation matrix", what);
+    }
+    int rc = gmem_budget_reserve(matrix_bytes(m), what, err);
+    if (rc != G_OK) {
+        gmem_free(data);
+        return rc;
+    }
+    if (s->owned_data) {
+        gmem_budget_release(matrix_bytes(&s->rerad));
+        gmem_free(s->owned_data);
+    }
+    s->form = GCOLORSPEC_RERADIATION;
+    s->rerad = *m;
+    s->rerad.data = data;
+    s->owned_data = data;
+    return G_OK;
 }
 
 int gcolorspec_copy(const GColorSpec *src, GColorSpec **out, GError *err)
@@ -32,13 +62,18 @@ int gcolorspec_copy(const GColorSpec *src, GColorSpec **out, GError *err)
     s->owned_data = NULL;
     if (src->form == GCOLORSPEC_RERADIATION && src->rerad.data) {
         size_t n = (size_t)src->rerad.n_in * (size_t)src->rerad.n_out;
-        s->owned_data = gmem_calloc(n, sizeof(float));
-        if (!s->owned_data) {
+        float *data = gmem_calloc(n, sizeof(float));
+        if (!data) {
             gmem_free(s);
             return gerror_set(err, G_ERR_NOMEM, "out of memory");
         }
-        memcpy(s->owned_data, src->rerad.data, n * sizeof(float));
-        s->rerad.data = s->owned_data;
+        memcpy(data, src->rerad.data, n * sizeof(float));
+        s->rerad.data = NULL;
+        int rc = gcolorspec_own_matrix(s, &src->rerad, data, "a copy of a re-radiation matrix", err);
+        if (rc != G_OK) {
+            gmem_free(s);
+            return rc;
+        }
     }
     *out = s;
     return G_OK;

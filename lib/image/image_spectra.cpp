@@ -93,7 +93,7 @@ int read_spectra_impl(const char *path, GImageSpectraBuf *out, GError *err)
     const size_t npix = (size_t)w * h, budget = gimage_memory_budget();
     if ((double)npix * n * sizeof(float) > (double)budget)
         return gerror_set(err, G_ERR_NOMEM, "%s: %d values per pixel of a %dx%d image need %.0f MiB, more than the "
-                          "image memory budget of %zu MiB (GENERIC_IMAGE_BUDGET_MB)", path, n, w, h,
+                          "memory limit of %zu MiB (--memory-limit, GENERIC_MEMORY_LIMIT_MB)", path, n, w, h,
                           (double)npix * n * sizeof(float) / 1048576.0, budget >> 20);
     // The channels from the first spectral one to the last are decoded a band of rows at a time (a tiled file
     // at once), then put in the order of their wavelengths.

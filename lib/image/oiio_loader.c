@@ -8,10 +8,12 @@
 #include "oiio_module.h"
 
 #include "image_png.h"
+#include "decode_isolated.h"
 
 #include "generic/memory.h"
 
 #include <dlfcn.h>
+#include <errno.h>
 #include <limits.h>
 #include <math.h>
 #include <pthread.h>
@@ -33,6 +35,7 @@
 static const GOiioHost host = {
     gerror_set, gmem_alloc, gmem_calloc, gmem_free, gfile_open_input, gfile_check_output, gfile_output_begin,
     gfile_output_commit, gfile_output_abort, gimage_memory_budget, gimage_srgb_encode, gimage_srgb_decode,
+    gmem_budget_reserve, gmem_budget_release,
 };
 
 static pthread_once_t once = PTHREAD_ONCE_INIT;
@@ -176,14 +179,40 @@ int gimage_read(const char *path, unsigned flags, GImage *img, GError *err)
     img->pixels = NULL;
     if (!path || !*path)
         return gerror_set(err, G_ERR_INVALID, "no image file name given");
+    if ((flags & GIMAGE_READ_RGB) && (flags & GIMAGE_READ_RGBA))
+        return gerror_set(err, G_ERR_INVALID, "%s: GIMAGE_READ_RGB and GIMAGE_READ_RGBA exclude each other", path);
+    int isolated = gdecode_isolated(err);
+    if (isolated < 0)
+        return isolated;
+    if (isolated)
+        return gdecode_run(path, GDECODE_READ, flags, img, NULL, NULL, NULL, err);
+    /* in this process: the header, the decode charged to the budget, the decode */
     const GOiioOps *o = goiio_ops(err);
-    return o ? o->image_read(path, flags, img, err) : G_ERR_IO;
+    if (!o)
+        return G_ERR_IO;
+    int w, h, ch;
+    int rc = o->image_info(path, &w, &h, &ch, err);
+    if (rc != G_OK)
+        return rc;
+    const double charge = gdecode_charge(w, h, ch);
+    char what[PATH_MAX + 96];
+    snprintf(what, sizeof what, "%s: decoding a %dx%d image with %d channels", path, w, h, ch);
+    if ((rc = gmem_budget_reserve((size_t)charge, what, err)) != G_OK)
+        return rc;
+    rc = o->image_read(path, flags, img, err);
+    gmem_budget_release((size_t)charge);
+    return rc;
 }
 
 int gimage_info(const char *path, int *width, int *height, int *channels, GError *err)
 {
     if (!path || !*path)
         return gerror_set(err, G_ERR_INVALID, "no image file name given");
+    int isolated = gdecode_isolated(err);
+    if (isolated < 0)
+        return isolated;
+    if (isolated)
+        return gdecode_run(path, GDECODE_INFO, 0, NULL, width, height, channels, err);
     const GOiioOps *o = goiio_ops(err);
     return o ? o->image_info(path, width, height, channels, err) : G_ERR_IO;
 }
@@ -331,11 +360,44 @@ GTextureSystem *gtexsys_default(GError *err)
     return o ? o->texsys_default(err) : NULL;
 }
 
+/* An image refusal ("PATH: cannot read image: REASON") worded as the texture system's own: "image 'PATH' cannot be
+ * read: REASON". Returns rc. */
+static int texture_refusal(const char *path, int rc, GError *err)
+{
+    if (!err)
+        return rc;
+    char reason[sizeof err->message];
+    const char *why = err->message;
+    size_t len = strlen(path);
+    if (strncmp(why, path, len) == 0 && strncmp(why + len, ": ", 2) == 0)
+        why += len + 2;
+    if (strncmp(why, "cannot read image: ", 19) == 0)
+        why += 19;
+    snprintf(reason, sizeof reason, "%s", why);
+    return gerror_set(err, rc, "image '%s' cannot be read: %s", path, reason);
+}
+
 int gtexsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *channels, int *srgb, GError *err)
 {
     *file = NULL;
     if (!ts || !path || !path[0])
         return gerror_set(err, G_ERR_INVALID, "image: no file name given");
+    if (access(path, F_OK) != 0 && errno == ENOENT)
+        return gerror_set(err, G_ERR_IO, "image '%s': no such file", path);
+    /* the header first: a texture of too many pixels is refused before any decode */
+    int w, h;
+    int rc = gimage_info(path, &w, &h, NULL, err);
+    if (rc != G_OK)
+        return texture_refusal(path, rc, err);
+    if ((long long)w * h > GTEXSYS_MAX_PIXELS)
+        return gerror_set(err, G_ERR_IO, "image '%s' is %dx%d pixels, more than a texture may have (%lld, 8192x8192): "
+                          "reduce it first (e.g. oiiotool IN --resize 25%% -o OUT)", path, w, h, GTEXSYS_MAX_PIXELS);
+    /* OpenImageIO's texture system reads the file in this process: a decoder process decodes it whole first */
+    int isolated = gdecode_isolated(err);
+    if (isolated < 0)
+        return isolated;
+    if (isolated && (rc = gdecode_run(path, GDECODE_CHECK, 0, NULL, NULL, NULL, NULL, err)) != G_OK)
+        return texture_refusal(path, rc, err);
     const GOiioOps *o = goiio_ops(err);
     return o ? o->texsys_open(ts, path, file, channels, srgb, err) : G_ERR_IO;
 }

@@ -19,7 +19,7 @@ extern "C" {
 #endif
 
 /** Raised whenever either table changes; a module of another version is refused. */
-#define GOIIO_MODULE_ABI 4
+#define GOIIO_MODULE_ABI 5
 /** The module's file name and the one symbol it exports (a GOiioEntry). */
 #define GOIIO_MODULE_FILE "libgeneric_oiio.so"
 #define GOIIO_MODULE_ENTRY "generic_oiio_module"
@@ -38,6 +38,8 @@ typedef struct GOiioHost {
     size_t (*image_memory_budget)(void);
     double (*srgb_encode)(double linear);
     double (*srgb_decode)(double encoded);
+    int (*budget_reserve)(size_t bytes, const char *what, GError *err);
+    void (*budget_release)(size_t bytes);
 } GOiioHost;
 
 /** What the module gives back: the OpenImageIO implementations of the public functions of the same names
@@ -90,10 +92,15 @@ extern const GOiioHost *goiio_host;
 #define gimage_memory_budget() (goiio_host->image_memory_budget())
 #define gimage_srgb_encode(v) (goiio_host->srgb_encode(v))
 #define gimage_srgb_decode(v) (goiio_host->srgb_decode(v))
+#define gmem_budget_reserve(n, w, e) (goiio_host->budget_reserve((n), (w), (e)))
+#define gmem_budget_release(n) (goiio_host->budget_release(n))
 /* texture_oiio.cpp's and ocio_display.cpp's parts of the table, and image.cpp's header check which the first uses */
 void goiio_texsys_ops(GOiioOps *ops);
 void goiio_display_ops(GOiioOps *ops);
 int goiio_image_info(const char *path, int *width, int *height, int *channels, GError *err);
+struct GImageFormat;
+/* The format of a file's content (image_format.h): G_OK when the library reads it, else G_ERR_IO naming it. */
+int goiio_image_format(const char *path, struct GImageFormat *format, GError *err);
 #endif
 
 #endif

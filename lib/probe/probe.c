@@ -3,6 +3,7 @@
 #include "generic/memory.h"
 
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -22,6 +23,7 @@ void gprobe_destroy(GProbe *p)
     if (!p)
         return;
     probe_free_tables(p);
+    gmem_budget_release(p->charged);
     gmem_free(p);
 }
 
@@ -72,16 +74,22 @@ static void probe_prepare(GProbe *p)
     }
 }
 
-int probe_check_budget(int width, int height, GError *err)
+double probe_bytes(int width, int height)
 {
     /* the pixels and their weights (3 floats each) and the summed-area table (PROBE_SAT doubles a corner) */
-    const double bytes = (double)width * height * 6 * sizeof(float) +
-                         ((double)width + 1) * ((double)height + 1) * PROBE_SAT * sizeof(double);
-    const size_t budget = gimage_memory_budget();
-    if (bytes > (double)budget)
-        return gerror_set(err, G_ERR_NOMEM,
-                          "a %dx%d probe needs %.0f MiB, more than the image memory budget of %zu MiB "
-                          "(GENERIC_IMAGE_BUDGET_MB)", width, height, bytes / 1048576.0, budget >> 20);
+    return (double)width * height * 6 * sizeof(float) +
+           ((double)width + 1) * ((double)height + 1) * PROBE_SAT * sizeof(double);
+}
+
+int probe_check_budget(int width, int height, GError *err)
+{
+    const double bytes = probe_bytes(width, height);
+    const size_t limit = gmem_budget_limit(), used = gmem_budget_used();
+    if (bytes > (double)(limit > used ? limit - used : 0)) {
+        char what[64];
+        snprintf(what, sizeof what, "a %dx%d probe", width, height);
+        return gmem_budget_reserve((size_t)(bytes < (double)SIZE_MAX ? bytes : (double)SIZE_MAX), what, err);
+    }
     return G_OK;
 }
 
@@ -93,12 +101,18 @@ int gprobe_create(int width, int height, const float *rgb, GProbe **out, GError 
     if (height < 2 || width != 2 * height || height > (1 << 14))
         return gerror_set(err, G_ERR_INVALID,
                           "a latitude-longitude probe must be twice as wide as high (got %dx%d)", width, height);
-    int rc = probe_check_budget(width, height, err);
+    char what[64];
+    snprintf(what, sizeof what, "a %dx%d probe", width, height);
+    const size_t charge = (size_t)probe_bytes(width, height);
+    int rc = gmem_budget_reserve(charge, what, err);
     if (rc != G_OK)
         return rc;
     GProbe *p = gmem_calloc(1, sizeof *p);
-    if (!p)
+    if (!p) {
+        gmem_budget_release(charge);
         return gerror_set(err, G_ERR_NOMEM, "out of memory for a %dx%d probe", width, height);
+    }
+    p->charged = charge;
     const size_t n = (size_t)width * height;
     p->w = width;
     p->h = height;
@@ -146,8 +160,23 @@ int gprobe_load(const char *path, GProbeFormat format, int height, GProbe **out,
         return gerror_set(err, G_ERR_INVALID, "gprobe_load: unknown probe format %d", (int)format);
     if (height < 0)
         return gerror_set(err, G_ERR_INVALID, "gprobe_load: negative height %d", height);
+    /* The header first: a probe whose tables do not fit in the memory budget is refused before its decode. */
+    int hw, hh;
+    int rc = gimage_info(path, &hw, &hh, NULL, err);
+    if (rc == G_OK) {
+        const int ph = format == GPROBE_ANGULAR || (format == GPROBE_AUTO && hw == hh) ? (height > 0 ? height : hw / 2)
+                                                                                        : hh;
+        rc = probe_check_budget(2 * (ph > 2 ? ph : 2), ph > 2 ? ph : 2, err);
+        if (rc != G_OK && err && !strstr(err->message, path)) {
+            char msg[sizeof err->message];
+            snprintf(msg, sizeof msg, "%s", err->message);
+            gerror_set(err, rc, "%s: %s", path, msg);
+        }
+    }
+    if (rc != G_OK)
+        return rc;
     GImage img;
-    int rc = gimage_read(path, GIMAGE_READ_RGB, &img, err);
+    rc = gimage_read(path, GIMAGE_READ_RGB, &img, err);
     if (rc != G_OK)
         return rc;
     const int w = img.width, h = img.height;

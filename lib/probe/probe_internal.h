@@ -22,6 +22,7 @@ struct GProbe {
     double *cos_phi, *sin_phi;     /* per column, at pixel centres */
     double *cos_theta, *sin_theta; /* per row, at pixel centres */
     long clamped;
+    size_t charged; /* bytes reserved against the memory budget (generic/memory.h) until gprobe_destroy */
 };
 
 /** Direction of the point (x, y), in pixel units, of a w x h lat-long image (the convention of probe.h). */
@@ -52,8 +53,11 @@ static inline GVec3 probe_pixel_dir(const GProbe *p, int u, int v)
  * out[4..6] the weights Q per channel. */
 void probe_sat_sum(const GProbe *p, int u0, int v0, int u1, int v1, double out[PROBE_SAT]);
 
-/* G_ERR_NOMEM when a width x height probe's tables would exceed the image memory budget (generic/services/image.h). */
+/* G_ERR_NOMEM when a width x height probe's tables would not fit in what the memory budget has left (generic/memory.h);
+ * reserves nothing. */
 GENERIC_NODISCARD int probe_check_budget(int width, int height, GError *err);
+/** The bytes a width x height probe's tables take: its pixels and weights and its summed-area table. */
+double probe_bytes(int width, int height);
 
 /** A rectangle of the lat-long image and its energy statistics (median cut and its adaptive form). */
 typedef struct ProbeRegion {

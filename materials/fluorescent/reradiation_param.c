@@ -5,6 +5,7 @@
 #include "generic/plugin.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 /* ---- the parametric matrix as a colour literal ----
@@ -60,9 +61,12 @@ static int parse_reradiation(GReader *r, const void *vt, void **object, GError *
         gfluor_matrix_free(&mat);
         return greader_error(r, err, "out of memory");
     }
-    s->form = GCOLORSPEC_RERADIATION;
-    s->rerad = mat;
-    s->owned_data = (float *)mat.data;
+    char what[96];
+    snprintf(what, sizeof what, "a %dx%d re-radiation matrix", n, n);
+    if (gcolorspec_own_matrix(s, &mat, (float *)mat.data, what, err) != G_OK) {
+        gcolorspec_destroy(s);
+        return greader_locate(r, err);
+    }
     *object = s;
     return G_OK;
 }

@@ -164,6 +164,8 @@ GFUZZ_FN int gfuzz_setup(void)
 {
     if (gfuzz_dir[0])
         return 0;
+    /* the readers run in this process, where the sanitizers and libFuzzer see them (not in a decoder process) */
+    setenv("GENERIC_DECODE", "inprocess", 1);
     const char *large = getenv("GFUZZ_LARGE");
     if (large && strcmp(large, "1") == 0) {
         gfuzz_large = 1;

@@ -5,7 +5,8 @@
 #   2. the same render to EXR does map it (the check above can fail), and reads back;
 #   3. without the module (GENERIC_OIIO_MODULE naming a missing file, or a file that is not a module) the EXR
 #      render fails with a message naming libgeneric_oiio.so and leaves no output, while PNG still works;
-#   4. an installed library (make install into a staging directory) finds its module in PREFIX/lib/generic/.
+#   4. an installed library (make install into a staging directory) finds its module and its image decoder in
+#      PREFIX/lib/generic/ (the read back below goes through the decoder process).
 set -u
 BUILD=${1:-build}
 GT="$BUILD/bin/gtrace"
@@ -82,6 +83,7 @@ stage="$TMP/stage"
 make --no-print-directory -s install BUILD="$BUILD" PREFIX=/usr DESTDIR="$stage" > /dev/null ||
     fail "make install failed"
 [ -f "$stage/usr/lib/generic/libgeneric_oiio.so" ] || fail "make install does not install the module"
+[ -x "$stage/usr/lib/generic/generic-decode" ] || fail "make install does not install the image decoder"
 cat > "$TMP/x.c" << 'EOF2'
 #include <generic/builtins.h>
 #include <generic/services/image.h>
@@ -110,6 +112,8 @@ nm -A "$BUILD/lib/libgeneric.a" 2>/dev/null | grep -q __asan_ && san="-fsanitize
 if cc $san -I"$stage/usr/include" "$TMP/x.c" -o "$TMP/x" -L"$stage/usr/lib" -lgeneric -lm; then
     LD_LIBRARY_PATH="$stage/usr/lib" "$TMP/x" "$TMP/x.exr" > "$TMP/x.err" 2>&1 ||
         fail "a program on the installed library cannot write and read EXR: $(cat "$TMP/x.err")"
+    GENERIC_DECODE=inprocess LD_LIBRARY_PATH="$stage/usr/lib" "$TMP/x" "$TMP/y.exr" > "$TMP/x.err" 2>&1 ||
+        fail "a program on the installed library cannot read EXR in its own process: $(cat "$TMP/x.err")"
 else
     fail "cannot build against the installed library"
 fi

@@ -4,6 +4,8 @@
 
 #include <generic/memory.h>
 
+#include <stdint.h>
+#include <stdio.h>
 #include <string.h>
 
 /* Floats per pixel over all arrays. */
@@ -20,6 +22,15 @@ static size_t floats_per_pixel(const Framebuffer *fb)
 int framebuffer_alloc(Framebuffer *fb, GError *err)
 {
     size_t npix = (size_t)fb->width * (size_t)fb->height;
+    const double bytes = (double)npix * (double)floats_per_pixel(fb) * sizeof(float);
+    char what[64];
+    snprintf(what, sizeof what, "a %dx%d framebuffer", fb->width, fb->height);
+    int rc = gmem_budget_reserve(bytes < (double)SIZE_MAX ? (size_t)bytes : SIZE_MAX, what, err);
+    if (rc != G_OK) {
+        framebuffer_free(fb);
+        return rc;
+    }
+    fb->charged = (size_t)bytes;
     int ok = 1;
 #define ALLOC(name, count)                                                                                          \
     fb->name = (count) > 0 && ok ? gmem_calloc(npix * (size_t)(count), sizeof(float)) : NULL;                       \
@@ -44,6 +55,8 @@ void framebuffer_free(Framebuffer *fb)
     gmem_free(fb->wavelengths);
     fb->wavelengths = NULL;
     fb->nwaves = 0;
+    gmem_budget_release(fb->charged);
+    fb->charged = 0;
 }
 
 size_t framebuffer_region_bytes(const Framebuffer *fb, const int region[4])

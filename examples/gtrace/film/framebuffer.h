@@ -26,11 +26,13 @@ typedef struct Framebuffer {
     int full_width, full_height; /**< the full image's size */
     double *wavelengths;         /**< the nwaves wavelengths (nm) of waves; NULL and 0 without --spectral */
     int nwaves;
+    size_t charged;              /**< bytes of the arrays reserved against the memory budget (framebuffer_alloc) */
 } Framebuffer;
 
 /** Allocates every per-pixel array for fb's width x height, zeroed (pages never written cost no memory, so a
- * process that renders a few tiles of a large image touches only those). G_OK, or G_ERR_NOMEM with nothing
- * allocated (the arrays and the wavelengths freed). */
+ * process that renders a few tiles of a large image touches only those), reserving their bytes against the memory
+ * budget (generic/memory.h) until framebuffer_free. G_OK, or G_ERR_NOMEM (over the budget, or out of memory) with
+ * nothing allocated (the arrays and the wavelengths freed). */
 int framebuffer_alloc(Framebuffer *fb, GError *err);
 
 /** Frees the per-pixel arrays and the wavelengths (NULL or a zeroed framebuffer: no-op). */

@@ -11,6 +11,7 @@
 #include "integrators/whitted.h"
 #include "film/progress.h"
 
+#include <generic/memory.h>
 #include <generic/services/image.h>
 
 #include <math.h>
@@ -218,7 +219,7 @@ void renderer_destroy(Renderer *r)
 }
 
 /* fb->wavelengths and fb->nwaves for the model's wavelengths (framebuffer_alloc then allocates fb->waves), within
- * the image memory budget. */
+ * the memory limit. */
 static int set_wavelengths(Framebuffer *fb, const GColorModel *m, GError *err)
 {
     int n = gcolormodel_wavelengths(m, NULL, 0);
@@ -226,10 +227,10 @@ static int set_wavelengths(Framebuffer *fb, const GColorModel *m, GError *err)
         return gerror_set(err, G_ERR_UNSUPPORTED, "--spectral: the colour model '%s' has no wavelength samples to "
                           "write (choose one that has, with --colormodel)", gcolormodel_name(m));
     size_t bytes = (size_t)fb->width * (size_t)fb->height * (size_t)n * sizeof(float);
-    if (bytes > gimage_memory_budget())
+    if (bytes > gmem_budget_limit())
         return gerror_set(err, G_ERR_NOMEM, "--spectral: %d values per pixel of a %dx%d image take %zu MiB, more than "
-                          "the image memory budget of %zu MiB (GENERIC_IMAGE_BUDGET_MB)", n, fb->width, fb->height,
-                          bytes >> 20, gimage_memory_budget() >> 20);
+                          "the memory limit of %zu MiB (--memory-limit, GENERIC_MEMORY_LIMIT_MB)", n, fb->width,
+                          fb->height, bytes >> 20, gmem_budget_limit() >> 20);
     if (!(fb->wavelengths = gmem_alloc((size_t)n * sizeof(double))))
         return gerror_set(err, G_ERR_NOMEM, "--spectral: out of memory for %d wavelengths", n);
     fb->nwaves = gcolormodel_wavelengths(m, fb->wavelengths, n);

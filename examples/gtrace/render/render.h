@@ -41,7 +41,7 @@ typedef struct RenderStats {
 
 /** Renders the scene (accel_build must have run). fb->pixels (and fb->waves when asked) are allocated here (free
  * with framebuffer_free). Asking for the values at wavelengths in a model without wavelength samples is
- * G_ERR_UNSUPPORTED; more of them than the image memory budget allows is G_ERR_NOMEM, before rendering. */
+ * G_ERR_UNSUPPORTED; more of them than the memory limit allows is G_ERR_NOMEM, before rendering. */
 int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, RenderStats *st, GError *err);
 /** The order in which the tiles are rendered: a fixed shuffle of 0..n-1 (the same for every run), so that the
  * finished fraction of tiles follows the work done wherever the expensive parts of the image lie. */

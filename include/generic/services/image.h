@@ -3,7 +3,11 @@
  * Pixels in memory are always linear float values, stored row by row from the top row down and left to
  * right, channels interleaved: pixel (x, y) channel c is pixels[(y * width + x) * channels + c].
  *
- * Reading accepts every format OpenImageIO reads (EXR, HDR, PFM, TIFF, PNG, JPEG, ...). The result has
+ * Reading accepts OpenEXR, Radiance HDR, PFM, PNM, PNG, JPEG and TIFF, decided by the file's first bytes whatever
+ * its name; any other content (IFF, DPX, BMP, ...) is G_ERR_IO naming the format found. Unless the environment says
+ * GENERIC_DECODE=inprocess, gimage_read and gimage_info run in a decoder process (generic-decode, installed beside
+ * the OpenImageIO module) under limits on its address space and CPU time, so that a crash, a hang or a memory
+ * blow-up of a reader is a G_ERR_IO for that file (docs/reference/format.md, "Untrusted files"). The result has
  * 3 channels (RGB) or 4 (RGBA): grey images are expanded to RGB, files with an alpha channel keep it as
  * channel 3 unless GIMAGE_READ_RGB is given, extra channels are dropped. Integer files whose colour
  * space is sRGB (what OpenImageIO reports for 8-bit PNG and JPEG, and what gimage_write stores) are
@@ -31,10 +35,11 @@
  * pixel memory is allocated, a header is refused when it claims more pixels than the file can hold (a PFM's
  * floats are uncompressed, a PNG's deflate stream expands at most 1032 times, a Radiance HDR row takes at
  * least 2 bytes for every 127 bytes of a component), or when the decoded image,
- * width x height x max(channels, 3) 32-bit floats, would exceed the image memory budget (reading takes about
- * twice that): GIMAGE_DEFAULT_BUDGET_MB MiB, or the environment's GENERIC_IMAGE_BUDGET_MB (a whole number of
- * MiB) when set, or what gimage_set_memory_budget sets. Light probes (generic/services/probe.h) count their tables
- * against the same budget. No C++ exception leaves this library: OpenImageIO's are turned into statuses.
+ * width x height x max(channels, 3) 32-bit floats, would exceed the memory limit, or when its decode (the file's
+ * channels and a 4-channel result as floats, and the copy a decoder process sends back) does not fit in what is
+ * left of the process-wide memory budget (generic/memory.h: --memory-limit, GENERIC_MEMORY_LIMIT_MB), which it holds
+ * while it runs. Light probes (generic/services/probe.h) and texture systems hold theirs while they live. No C++
+ * exception leaves this library: OpenImageIO's are turned into statuses.
  *
  * Errors return a negative status (error.h) and put OpenImageIO's own message into the GError. All
  * functions are thread safe for distinct images. */
@@ -43,6 +48,7 @@
 
 #include "../export.h"
 #include "../error.h"
+#include "../memory.h"
 
 #include <stddef.h>
 
@@ -114,14 +120,13 @@ GENERIC_API GENERIC_NODISCARD int gimage_create(GImage *img, int width, int heig
 /** Frees the pixels and zeroes the struct; NULL, or an image already freed, is a no-op. */
 GENERIC_API void gimage_free(GImage *img);
 
-/** The image memory budget's default, in MiB (see the top of this file). */
-#define GIMAGE_DEFAULT_BUDGET_MB 2048
+/** The memory budget's default, in MiB: GMEM_BUDGET_DEFAULT_MB (generic/memory.h). */
+#define GIMAGE_DEFAULT_BUDGET_MB GMEM_BUDGET_DEFAULT_MB
 
-/** The image memory budget in bytes: what gimage_set_memory_budget set, else GENERIC_IMAGE_BUDGET_MB MiB
- * from the environment (read once), else GIMAGE_DEFAULT_BUDGET_MB MiB. */
+/** The process-wide memory budget's limit in bytes: gmem_budget_limit() (generic/memory.h). */
 GENERIC_API size_t gimage_memory_budget(void);
 
-/** Sets the image memory budget in bytes for the whole process; 0 restores the default. Thread safe. */
+/** gmem_budget_set_limit(bytes): the process-wide limit; 0 returns to the environment's or the default. */
 GENERIC_API void gimage_set_memory_budget(size_t bytes);
 
 /** Reads the first subimage of a file into img (which is overwritten, not freed first). flags: GIMAGE_READ_*.

@@ -43,8 +43,17 @@ typedef enum GTexColorSpace {
 /** An opened texture file (OpenImageIO's TextureHandle), valid while its texture system lives. */
 typedef struct GTexFile GTexFile;
 
+/** The most pixels a texture file may have: 8192 x 8192. A texture lookup never needs more than the pixels a
+ * render shows it with, and OpenImageIO builds the MIP levels of a file that has none (PNG, JPEG) from the whole
+ * image, so that a small file of a huge image (a 32 KB PNG of 12000 x 12000) would cost minutes: such a file is
+ * refused from its header, before any decode, with the advice to reduce it. */
+#define GTEXSYS_MAX_PIXELS (8192LL * 8192LL)
+
 /** Opens (and checks) a texture file: G_ERR_IO with OpenImageIO's reason when it is missing or cannot be
- * decoded. *srgb is 1 for integer data not marked linear (8-bit PNG/JPEG), 0 for float data. */
+ * decoded, or when it has more than GTEXSYS_MAX_PIXELS pixels. Its content decides its format (generic/services/
+ * image.h: the formats read) and, unless GENERIC_DECODE=inprocess, a decoder process decodes it whole before the
+ * texture system opens it in this process. *srgb is 1 for integer data not marked linear (8-bit PNG/JPEG), 0 for
+ * float data. */
 GENERIC_API GENERIC_NODISCARD int gtexsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *channels, int *srgb, GError *err);
 
 /** A filtered lookup of 3 channels (grey files are replicated) at (s, t) (t = 0 at the top row) over the

@@ -5,7 +5,8 @@
  *   gen_text.c   the text format: long CSG/CPG operand lists, deep nesting, reference chains, self-blending
  *                towers, wide DAGs, many entries, extreme numbers, long tokens, control bytes and BOMs
  *   gen_bfc.c    BFC-450 matrices: long tokens, far and huge grids, rows that lie about their length
- *   gen_image.c  PNG, HDR, PFM, EXR and PPM files whose headers claim huge sizes over truncated bodies
+ *   gen_image.c  PNG, HDR, PFM, EXR and PPM files whose headers claim huge sizes over truncated bodies, and
+ *                mutated IFF and DPX headers named .png, .hdr or .pfm
  *                (and, for the probe kind, HDR and PFM only, with probe-like aspect ratios) */
 #ifndef GENERIC_TESTS_FUZZ_GEN_H
 #define GENERIC_TESTS_FUZZ_GEN_H

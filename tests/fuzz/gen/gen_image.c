@@ -1,6 +1,7 @@
 /* gen_image.c - image and light probe files whose headers lie: a valid header (magic, chunk CRCs, attribute
  * sizes) claiming a huge, overflowing or degenerate size, followed by a body of a few bytes or none. A reader
- * must refuse them from the header and the file size, before it allocates the pixels. */
+ * must refuse them from the header and the file size, before it allocates the pixels. And files of formats the
+ * library does not read (IFF, DPX) named as ones it does, which it must refuse by their content. */
 #include "gen.h"
 
 #include <stdio.h>
@@ -199,7 +200,51 @@ static void ppm_lying(GenBuf *b, GenRng *r, size_t budget)
     short_body(b, r);
 }
 
+/* ---- formats the library does not read, named as ones it does ----
+ * OpenImageIO picks a reader by content: a mutated Maya IFF header (its IFF reader corrupted memory on 8 of 100) or
+ * a DPX header with a user-data size up to 2^31 - 1 (its DPX reader touched gigabytes), named .png or .hdr. The
+ * library must refuse them by their content, naming the format, before any reader sees them. */
+
+static void iff_header(GenBuf *b, GenRng *r, size_t budget)
+{
+    static const uint32_t sizes[] = {0, 1, 2, 64, 65535, 0x7fffffffu, 0xffffffffu};
+    gb_put(b, gen_below(r, 4) ? "FOR4" : "FORM", 4);
+    gb_u32be(b, sizes[gen_below(r, 7)]);
+    gb_put(b, "CIMG", 4);
+    gb_put(b, "TBHD", 4);
+    gb_u32be(b, gen_below(r, 2) ? 32 : sizes[gen_below(r, 7)]);
+    for (int i = 0; i < 4; i++) /* width, height, prnum, prden: some lie */
+        gb_u32be(b, gen_below(r, 2) ? sizes[gen_below(r, 7)] : (uint32_t)gen_below(r, 512));
+    size_t n = 176 + gen_below(r, budget > 8192 ? 8192 : budget + 1);
+    for (size_t i = b->n; i < n; i++) /* the rest of a 176-byte file or more: mutated bytes */
+        gb_byte(b, (int)gen_below(r, 256));
+}
+
+static void dpx_header(GenBuf *b, GenRng *r, size_t budget)
+{
+    static const uint32_t user[] = {0, 1, 8000, 0x7fffffffu, 0xffffffffu, 0x80000000u};
+    int big_endian = (int)gen_below(r, 2);
+    void (*u32)(GenBuf *, uint32_t) = big_endian ? gb_u32be : gb_u32le;
+    gb_put(b, big_endian ? "SDPX" : "XPDS", 4);
+    u32(b, 2048);               /* image data offset */
+    gb_put(b, "V2.0\0\0\0\0", 8); /* version */
+    u32(b, 2048 + (uint32_t)gen_below(r, 8192)); /* file size */
+    u32(b, 1);                  /* ditto key */
+    u32(b, 1664);               /* generic header size */
+    u32(b, 384);                /* industry header size */
+    u32(b, user[gen_below(r, 6)]); /* user data size */
+    gb_fill(b, 0, 768 - b->n);
+    u32(b, (uint32_t)gen_below(r, 8) << 16); /* orientation, number of elements */
+    u32(b, gen_below(r, 2) ? 0x7fffffffu : (uint32_t)gen_below(r, 4096)); /* pixels per line */
+    u32(b, gen_below(r, 2) ? 0x7fffffffu : (uint32_t)gen_below(r, 4096)); /* lines per element */
+    size_t n = 2048 + gen_below(r, budget > 8192 ? 8192 : budget + 1);
+    for (size_t i = b->n; i < n; i++)
+        gb_byte(b, gen_below(r, 4) ? 0 : (int)gen_below(r, 256));
+}
+
 const GenFamily gen_image_families[] = {
+    {"iff-as-png", ".png", iff_header}, {"iff-as-hdr", ".hdr", iff_header}, {"dpx-as-hdr", ".hdr", dpx_header},
+    {"dpx-as-png", ".png", dpx_header},
     {"png-lying", ".png", png_lying}, {"hdr-lying", ".hdr", hdr_lying}, {"pfm-lying", ".pfm", pfm_lying},
     {"exr-lying", ".exr", exr_lying}, {"ppm-lying", ".ppm", ppm_lying},
 };
@@ -208,5 +253,7 @@ const int gen_image_count = (int)(sizeof gen_image_families / sizeof gen_image_f
 const GenFamily gen_probe_families[] = {
     {"hdr-probe", ".hdr", hdr_probe},
     {"pfm-probe", ".pfm", pfm_probe},
+    {"iff-as-hdr", ".hdr", iff_header},
+    {"dpx-as-pfm", ".pfm", dpx_header},
 };
 const int gen_probe_count = (int)(sizeof gen_probe_families / sizeof gen_probe_families[0]);

@@ -1,0 +1,28 @@
+/* decode_isolated.h - decoding untrusted images in a separate process (lib/image/decode_isolated.c): the library
+ * side of lib/image/decode_protocol.h, and the switch between it and decoding in this process. */
+#ifndef GENERIC_DECODE_ISOLATED_H
+#define GENERIC_DECODE_ISOLATED_H
+
+#include "generic/error.h"
+#include "generic/services/image.h"
+
+/** What the decoder does: the pixels, a full decode whose pixels are dropped (a check before OpenImageIO's texture
+ * system opens the file in this process), or the header only. */
+typedef enum { GDECODE_READ, GDECODE_CHECK, GDECODE_INFO } GDecodeMode;
+
+/** 1 when images are decoded in a separate process (GENERIC_DECODE unset, empty or "isolated"), 0 when in this one
+ * (GENERIC_DECODE=inprocess), or G_ERR_INVALID for another value (the message names the variable and its values). */
+int gdecode_isolated(GError *err);
+
+/** Decodes path in a decoder process. READ fills img (zeroed on failure); READ and CHECK reserve the decode against
+ * the memory budget from the header before the decode starts, and release it on return; INFO and CHECK give the
+ * file's width, height and channels (any may be NULL). G_OK, or the reader's status and message, or G_ERR_IO when
+ * the decoder cannot be started or ends without an answer (a crash, a time or memory limit: the message says which). */
+int gdecode_run(const char *path, GDecodeMode mode, unsigned flags, GImage *img, int *width, int *height, int *channels,
+                GError *err);
+
+/** The bytes a decode of a width x height image of channels channels charges in one process: the file's channels and
+ * the 4-channel result, as floats. */
+double gdecode_charge(int width, int height, int channels);
+
+#endif
