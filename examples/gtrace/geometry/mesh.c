@@ -215,12 +215,12 @@ static int parse_line(Loader *L, char *line)
     return G_OK; /* comments, o, s, mtllib and other statements are ignored */
 }
 
-static int mesh_load(Object *o, const char *path, GError *err)
+static int mesh_load(Object *o, const char *path, const MeshFiles *files, GError *err)
 {
     int fd = gfile_open_input(path, err); /* a regular file: never a FIFO or a device */
     if (fd < 0)
         return fd;
-    char what[64];
+    char what[128];
     MeshFormat format = mesh_format_of(fd, path, what, sizeof what);
     if (format == MESH_FORMAT_UNSUPPORTED) {
         close(fd);
@@ -228,7 +228,7 @@ static int mesh_load(Object *o, const char *path, GError *err)
                           MESH_FORMATS_READ ")", path, what);
     }
     if (format != MESH_FORMAT_OBJ)
-        return mesh_load_assimp(o, path, fd, format, err);
+        return mesh_load_assimp(o, path, fd, format, files, err);
     FILE *f = fdopen(fd, "r");
     if (!f) {
         close(fd);
@@ -304,9 +304,11 @@ static int mesh_load(Object *o, const char *path, GError *err)
     return rc;
 }
 
-int object_mesh_load(Object *o, const char *path, GError *err)
+int object_mesh_load(Object *o, const char *path, GError *err) { return object_mesh_load_from(o, path, NULL, err); }
+
+int object_mesh_load_from(Object *o, const char *path, const MeshFiles *files, GError *err)
 {
-    int rc = mesh_load(o, path, err);
+    int rc = mesh_load(o, path, files, err);
     if (rc < 0 && err && !err->param[0]) /* a scene file's reader places the message at the entry's file */
         snprintf(err->param, sizeof err->param, "%s", "file");
     return rc;

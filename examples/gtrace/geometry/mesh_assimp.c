@@ -1,8 +1,11 @@
 /* mesh_assimp.c - triangle meshes from PLY, STL and glTF 2.0 through assimp: positions, normals and the first
  * (u,v) set where the file has them, the node transforms baked in, and the material index of each assimp mesh as
- * the surface index of its triangles. A PLY or STL file is checked whole first (mesh_ply.c, mesh_stl.c) and assimp
- * reads the checked bytes. OBJ stays with mesh.c's own reader; mesh_format.c picks the reader. */
+ * the surface index of its triangles. A file is checked whole first (mesh_ply.c, mesh_stl.c, mesh_gltf.c) and assimp
+ * reads the checked bytes; the files a glTF file names go through mesh_assimp_io.c. OBJ stays with mesh.c's own
+ * reader; mesh_format.c picks the reader. */
+#include "mesh_assimp_io.h"
 #include "mesh_format.h"
+#include "mesh_json.h"
 
 #include <generic/memory.h>
 
@@ -15,10 +18,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <unistd.h>
 
-/* Largest node depth walked (a hostile file may nest nodes deeply). */
-#define MESH_MAX_NODE_DEPTH 256
 /* Bytes kept free in front of a PLY file read whole: the header mesh_ply_check writes is at most one byte longer
  * than the file's own, and goes there in front of the body. */
 #define MESH_HEADROOM 16
@@ -192,15 +194,52 @@ static int indices_ok(const struct aiScene *sc)
     return 1;
 }
 
-int mesh_load_assimp(Object *o, const char *path, int fd, MeshFormat format, GError *err)
+/* The scene assimp makes of a glTF file: read whole (a file of JSON at most JSON_MAX_BYTES), checked, and handed to
+ * assimp under a name with the extension of its content (assimp picks its reader by the name first), from memory;
+ * the buffer files it names are opened by files' rules. */
+static int import_gltf(const char *path, int fd, unsigned flags, const MeshFiles *files, const struct aiScene **sc,
+                       GError *err)
+{
+    unsigned char magic[4] = {0};
+    off_t n = lseek(fd, 0, SEEK_END);
+    int glb = pread(fd, magic, 4, 0) == 4 && memcmp(magic, "glTF", 4) == 0;
+    if (n >= 0 && !glb && (unsigned long long)n > JSON_MAX_BYTES)
+        return gerror_set(err, G_ERR_PARSE, "%s: a glTF file of JSON of %lld bytes, more than the limit of %u", path,
+                          (long long)n, JSON_MAX_BYTES);
+    char *buf = NULL, *name = NULL;
+    size_t size = 0;
+    int rc = read_whole(path, fd, &buf, &size, err);
+    if (rc != G_OK)
+        return rc;
+    MeshGltfCounts counts;
+    rc = mesh_gltf_check(path, (const unsigned char *)buf + MESH_HEADROOM, size, files, &counts, err);
+    const char *ext = glb ? ".glb" : ".gltf";
+    size_t len = strlen(path), elen = strlen(ext);
+    if (rc == G_OK && !(len > elen && strcasecmp(path + len - elen, ext) == 0)) {
+        name = gmem_alloc(len + elen + 1);
+        if (!name)
+            rc = gerror_set(err, G_ERR_NOMEM, "%s: out of memory", path);
+        else
+            memcpy(name, path, len), memcpy(name + len, ext, elen + 1);
+    }
+    if (rc == G_OK) {
+        MeshIO io;
+        mesh_io_init(&io, name ? name : path, buf + MESH_HEADROOM, size, files);
+        *sc = aiImportFileEx(name ? name : path, flags, &io.hooks);
+        if (!*sc && io.refusal.code)
+            rc = gerror_set(err, io.refusal.code, "%s: %s", path, io.refusal.message);
+    }
+    gmem_free(name);
+    gmem_free(buf);
+    return rc;
+}
+
+int mesh_load_assimp(Object *o, const char *path, int fd, MeshFormat format, const MeshFiles *files, GError *err)
 {
     unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_ValidateDataStructure;
     const struct aiScene *sc = NULL;
-    int rc = G_OK;
-    if (format == MESH_FORMAT_GLTF)
-        sc = aiImportFile(path, flags); /* a .gltf may name buffer files beside it */
-    else
-        rc = import_checked(path, fd, format, flags, &sc, err);
+    int rc = format == MESH_FORMAT_GLTF ? import_gltf(path, fd, flags, files, &sc, err)
+                                        : import_checked(path, fd, format, flags, &sc, err);
     close(fd);
     if (rc != G_OK)
         return rc;

@@ -84,10 +84,20 @@ int object_instance(Object *o, Object *proto, GError *err);
 /** 1 for the kinds that are geometry themselves (not groups or instances). */
 int object_is_shape(const Object *o);
 /** Reads a mesh file into o: Wavefront OBJ (v, vt, vn, f with polygons as fans; usemtl/g start new surface
- * indices) here, PLY, STL and glTF 2.0 through assimp (mesh_format.h picks the reader by content, else by name).
+ * indices) here, PLY, STL and glTF 2.0 through assimp (mesh_format.h picks the reader by content; a
+ * name decides only for OBJ, which has no signature).
  * A format gtrace does not read (3DS, FBX, ...) fails with G_ERR_UNSUPPORTED. Errors name the file and the
  * parameter "file" (GError.param), where a scene file's reader places them. */
 int object_mesh_load(Object *o, const char *path, GError *err);
+/** Where a mesh's reader may open files other than the mesh itself (a glTF's buffer files): allowed(ctx, path, err)
+ * is asked before each is opened (a scene's reader answers with greader_path_allowed, for --confine) and returns
+ * G_OK or a negative status with err filled; NULL allows every path. Every such file is also a regular file. */
+typedef struct MeshFiles {
+    int (*allowed)(void *ctx, const char *path, GError *err);
+    void *ctx;
+} MeshFiles;
+/** object_mesh_load with the files the mesh names opened only where files allows (NULL: everywhere). */
+int object_mesh_load_from(Object *o, const char *path, const MeshFiles *files, GError *err);
 /** Frees a mesh (NULL: no-op). */
 void mesh_free(Mesh *m);
 
