@@ -228,7 +228,7 @@ static int report_models(const char *models, const Sample *samples, int n)
     return failed;
 }
 
-int main(int argc, char **argv)
+static int gcolor_main(int argc, char **argv)
 {
     int rc = startup("gcolor", &argc, argv);
     if (rc >= 0)
@@ -245,3 +245,6 @@ int main(int argc, char **argv)
     printf("Colour report: reflectances are seen under D65 (Y = 1); lights are their own spectrum.\n");
     return report_models(a.models, a.samples, a.n);
 }
+
+/* Every status leaves through cli_finish_stdout: a failed write to standard output makes the run fail. */
+int main(int argc, char **argv) { return cli_finish_stdout("gcolor", gcolor_main(argc, argv)); }

@@ -507,7 +507,7 @@ static void report(const Options *o, const Scene *scene, const RenderSettings *r
            (unsigned long long)st->nonfinite);
 }
 
-int main(int argc, char **argv)
+static int gtrace_main(int argc, char **argv)
 {
     if (argc > 1 && strcmp(argv[1], "merge") == 0)
         return merge_main(argc - 1, argv + 1);
@@ -566,3 +566,6 @@ int main(int argc, char **argv)
     dist_finish(dist);
     return rc == G_OK || rc == DIST_SENT ? 0 : usage ? 2 : 1;
 }
+
+/* Every status leaves through cli_finish_stdout: a failed write to standard output makes the run fail. */
+int main(int argc, char **argv) { return cli_finish_stdout("gtrace", gtrace_main(argc, argv)); }
