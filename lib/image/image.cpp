@@ -7,6 +7,7 @@
 #define GOIIO_MODULE_SOURCE
 #include "oiio_module.h"
 #include "image_oiio.hpp"
+#include "image_format.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -133,6 +134,31 @@ int check_claim(const char *path, const ImageSpec &spec, const char *format, lon
 
 } // namespace
 
+// The format of an open file from its first bytes: G_OK when it is one the library reads, else G_ERR_IO naming it.
+static int sniff_fd(const char *path, int fd, GImageFormat *format, GError *err)
+{
+    unsigned char head[GIMAGE_SNIFF_BYTES];
+    ssize_t got = pread(fd, head, sizeof head, 0);
+    *format = gimage_sniff(head, got > 0 ? (size_t)got : 0);
+    if (format->oiio)
+        return G_OK;
+    if (!strcmp(format->name, "unknown"))
+        return gerror_set(err, G_ERR_IO, "%s: cannot read image: its content is not one of the formats read (%s)",
+                          path, GIMAGE_READ_FORMATS);
+    return gerror_set(err, G_ERR_IO, "%s: cannot read image: its content is %s, not one of the formats read (%s)",
+                      path, format->name, GIMAGE_READ_FORMATS);
+}
+
+int goiio_image_format(const char *path, GImageFormat *format, GError *err)
+{
+    int fd = gfile_open_input(path, err);
+    if (fd < 0)
+        return fd;
+    int rc = sniff_fd(path, fd, format, err);
+    close(fd);
+    return rc;
+}
+
 // The file must be a regular file (never a FIFO or a device); its size bounds what its header may claim.
 int goiio_open_checked(const char *path, ImageSpec *config, std::unique_ptr<ImageInput> *in, GError *err)
 {
@@ -141,10 +167,19 @@ int goiio_open_checked(const char *path, ImageSpec *config, std::unique_ptr<Imag
         return fd;
     struct stat st;
     long long size = fstat(fd, &st) == 0 ? (long long)st.st_size : 0;
+    GImageFormat format;
+    int rc = sniff_fd(path, fd, &format, err);
     close(fd);
-    *in = ImageInput::open(path, config);
-    if (!*in)
-        return gerror_set(err, G_ERR_IO, "%s: cannot read image: %s", path, goiio_first_line(OIIO::geterror()).c_str());
+    if (rc != G_OK)
+        return rc;
+    // The reader of the format found, and no other: OpenImageIO's guessing never reaches its other readers.
+    *in = ImageInput::create(format.oiio);
+    ImageSpec opened;
+    if (!*in || !(*in)->open(path, opened, config ? *config : ImageSpec())) {
+        std::string why = *in ? (*in)->geterror() : OIIO::geterror();
+        in->reset();
+        return gerror_set(err, G_ERR_IO, "%s: cannot read image: %s", path, goiio_first_line(why).c_str());
+    }
     return check_claim(path, (*in)->spec(), (*in)->format_name(), size, err);
 }
 

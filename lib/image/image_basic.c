@@ -1,13 +1,10 @@
 /* image_basic.c - the parts of image.h that need no codec: sRGB transfer functions, allocation, the memory
- * budget; and the sanitizer defaults for OpenImageIO's own defects (they must be in the program, not in the
+ * budget's old names; and the sanitizer defaults for OpenImageIO's own defects (they must be in the program, not in the
  * module that is loaded later). */
 #include "generic/services/image.h"
 #include "generic/memory.h"
 
-#include <errno.h>
 #include <math.h>
-#include <stdatomic.h>
-#include <stdlib.h>
 
 double gimage_srgb_encode(double v)
 {
@@ -54,38 +51,11 @@ void gimage_spectra_free(GImageSpectraBuf *s)
     *s = (GImageSpectraBuf){0};
 }
 
-/* ---- the memory budget ---- */
+/* ---- the memory budget: the process-wide one of generic/memory.h ---- */
 
-static atomic_size_t budget_bytes; /* 0: not yet set */
+size_t gimage_memory_budget(void) { return gmem_budget_limit(); }
 
-static size_t default_budget(void)
-{
-    const char *env = getenv("GENERIC_IMAGE_BUDGET_MB");
-    if (env && *env) {
-        char *end;
-        errno = 0;
-        unsigned long long mb = strtoull(env, &end, 10);
-        if (!*end && errno == 0 && mb >= 1 && mb <= (1ULL << 40))
-            return (size_t)(mb << 20);
-    }
-    return (size_t)GIMAGE_DEFAULT_BUDGET_MB << 20;
-}
-
-size_t gimage_memory_budget(void)
-{
-    size_t b = atomic_load(&budget_bytes);
-    if (!b) {
-        size_t d = default_budget();
-        atomic_compare_exchange_strong(&budget_bytes, &b, d);
-        b = atomic_load(&budget_bytes);
-    }
-    return b;
-}
-
-void gimage_set_memory_budget(size_t bytes)
-{
-    atomic_store(&budget_bytes, bytes ? bytes : default_budget());
-}
+void gimage_set_memory_budget(size_t bytes) { gmem_budget_set_limit(bytes); }
 
 #if defined(__SANITIZE_ADDRESS__)
 /* OpenImageIO 2.4's TextureSystem::destroy deletes its implementation through the base class with a sized

@@ -94,6 +94,9 @@ extern const GOiioHost *goiio_host;
 void goiio_texsys_ops(GOiioOps *ops);
 void goiio_display_ops(GOiioOps *ops);
 int goiio_image_info(const char *path, int *width, int *height, int *channels, GError *err);
+struct GImageFormat;
+/* The format of a file's content (image_format.h): G_OK when the library reads it, else G_ERR_IO naming it. */
+int goiio_image_format(const char *path, struct GImageFormat *format, GError *err);
 #endif
 
 #endif

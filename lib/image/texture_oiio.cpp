@@ -6,8 +6,10 @@
 #include "generic/memory.h"
 #define GOIIO_MODULE_SOURCE
 #include "oiio_module.h"
+#include "image_format.h"
 
 #include <OpenImageIO/filesystem.h>
+#include <OpenImageIO/imagecache.h>
 #include <OpenImageIO/texture.h>
 
 #include <cctype>
@@ -22,6 +24,7 @@ using namespace OIIO;
 
 struct GTextureSystem {
     TextureSystem *ts;
+    ImageCache *cache; // the system's own, into which every file is added with the reader of its content
     int refs;
 };
 
@@ -37,12 +40,16 @@ GTextureSystem *make(GError *err)
         return nullptr;
     }
     TextureSystem *ts = nullptr;
+    ImageCache *cache = nullptr;
     try {
-        ts = TextureSystem::create(false);
+        cache = ImageCache::create(false);
+        ts = cache ? TextureSystem::create(false, cache) : nullptr;
     } catch (...) {
         ts = nullptr;
     }
     if (!ts) {
+        if (cache)
+            ImageCache::destroy(cache, true);
         gmem_free(mem);
         gerror_set(err, G_ERR_NOMEM, "texture system: OpenImageIO could not create one");
         return nullptr;
@@ -53,16 +60,18 @@ GTextureSystem *make(GError *err)
         ts->attribute("max_memory_MB", 512.0f);
     } catch (...) {
         TextureSystem::destroy(ts, true);
+        ImageCache::destroy(cache, true);
         gmem_free(mem);
         gerror_set(err, G_ERR_NOMEM, "texture system: OpenImageIO could not set it up");
         return nullptr;
     }
-    return new (mem) GTextureSystem{ts, 1};
+    return new (mem) GTextureSystem{ts, cache, 1};
 }
 
 void release(GTextureSystem *s)
 {
-    TextureSystem::destroy(s->ts, true); // with its own image cache, which would otherwise stay allocated
+    TextureSystem::destroy(s->ts, true);
+    ImageCache::destroy(s->cache, true); // the system's own cache, which would otherwise stay allocated
     s->~GTextureSystem();
     gmem_free(s);
 }
@@ -75,6 +84,27 @@ TextureOpt::Wrap wrap_of(GTexWrap w)
     case GTEX_WRAP_MIRROR: return TextureOpt::WrapMirror;
     default: return TextureOpt::WrapPeriodic;
     }
+}
+
+// The readers a texture file is opened with: the one of its content's format (image_format.h), never another.
+ImageInput *make_exr() { return ImageInput::create("openexr").release(); }
+ImageInput *make_hdr() { return ImageInput::create("hdr").release(); }
+ImageInput *make_pnm() { return ImageInput::create("pnm").release(); }
+ImageInput *make_png() { return ImageInput::create("png").release(); }
+ImageInput *make_jpeg() { return ImageInput::create("jpeg").release(); }
+ImageInput *make_tiff() { return ImageInput::create("tiff").release(); }
+
+ImageInput::Creator creator_of(const char *oiio)
+{
+    static const struct {
+        const char *name;
+        ImageInput::Creator make;
+    } table[] = {{"openexr", make_exr}, {"hdr", make_hdr}, {"pnm", make_pnm},
+                 {"png", make_png},     {"jpeg", make_jpeg}, {"tiff", make_tiff}};
+    for (const auto &t : table)
+        if (oiio && !strcmp(oiio, t.name))
+            return t.make;
+    return nullptr;
 }
 
 bool says_linear(std::string cs)
@@ -159,7 +189,15 @@ int texsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *chan
                 why += 19;
             return gerror_set(err, head.code, "image '%s' cannot be read: %s", path, why);
         }
+        GImageFormat format;
+        if (goiio_image_format(path, &format, err) != G_OK)
+            return err ? err->code : G_ERR_IO;
+        ImageInput::Creator make = creator_of(format.oiio);
+        if (!make)
+            return gerror_set(err, G_ERR_IO, "image '%s' cannot be read: its content is not one of the formats read (%s)",
+                              path, GIMAGE_READ_FORMATS);
         ustring name(path);
+        ts->cache->add_file(name, make); // no effect when the file is in the cache already, opened the same way
         TextureSystem::Perthread *pt = ts->ts->get_perthread_info();
         TextureSystem::TextureHandle *h = ts->ts->get_texture_handle(name, pt);
         ImageSpec spec;

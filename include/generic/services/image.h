@@ -32,9 +32,9 @@
  * floats are uncompressed, a PNG's deflate stream expands at most 1032 times, a Radiance HDR row takes at
  * least 2 bytes for every 127 bytes of a component), or when the decoded image,
  * width x height x max(channels, 3) 32-bit floats, would exceed the image memory budget (reading takes about
- * twice that): GIMAGE_DEFAULT_BUDGET_MB MiB, or the environment's GENERIC_IMAGE_BUDGET_MB (a whole number of
- * MiB) when set, or what gimage_set_memory_budget sets. Light probes (generic/services/probe.h) count their tables
- * against the same budget. No C++ exception leaves this library: OpenImageIO's are turned into statuses.
+ * twice that), or when that decode does not fit in what is left of the process-wide memory budget
+ * (generic/memory.h: --memory-limit, GENERIC_MEMORY_LIMIT_MB). Light probes (generic/services/probe.h) and textures
+ * hold their tables against the same budget. No C++ exception leaves this library: OpenImageIO's are turned into statuses.
  *
  * Errors return a negative status (error.h) and put OpenImageIO's own message into the GError. All
  * functions are thread safe for distinct images. */
@@ -43,6 +43,7 @@
 
 #include "../export.h"
 #include "../error.h"
+#include "../memory.h"
 
 #include <stddef.h>
 
@@ -114,14 +115,13 @@ GENERIC_API GENERIC_NODISCARD int gimage_create(GImage *img, int width, int heig
 /** Frees the pixels and zeroes the struct; NULL, or an image already freed, is a no-op. */
 GENERIC_API void gimage_free(GImage *img);
 
-/** The image memory budget's default, in MiB (see the top of this file). */
-#define GIMAGE_DEFAULT_BUDGET_MB 2048
+/** The memory budget's default, in MiB: GMEM_BUDGET_DEFAULT_MB (generic/memory.h). */
+#define GIMAGE_DEFAULT_BUDGET_MB GMEM_BUDGET_DEFAULT_MB
 
-/** The image memory budget in bytes: what gimage_set_memory_budget set, else GENERIC_IMAGE_BUDGET_MB MiB
- * from the environment (read once), else GIMAGE_DEFAULT_BUDGET_MB MiB. */
+/** The process-wide memory budget's limit in bytes: gmem_budget_limit() (generic/memory.h). */
 GENERIC_API size_t gimage_memory_budget(void);
 
-/** Sets the image memory budget in bytes for the whole process; 0 restores the default. Thread safe. */
+/** gmem_budget_set_limit(bytes): the process-wide limit; 0 returns to the environment's or the default. */
 GENERIC_API void gimage_set_memory_budget(size_t bytes);
 
 /** Reads the first subimage of a file into img (which is overwritten, not freed first). flags: GIMAGE_READ_*.
