@@ -28,17 +28,23 @@
 int mesh_assimp_reads_extension(const char *ext) { return aiIsExtensionSupported(ext) == AI_TRUE; }
 
 /* Reads the regular file open as fd whole into *buf (gmem_alloc), its bytes from MESH_HEADROOM on, NUL-terminated:
- * *size of them (fewer than the file's size when it shrinks meanwhile), at most MESH_MAX_FILE_BYTES. */
-static int read_whole(const char *path, int fd, char **buf, size_t *size, GError *err)
+ * *size of them (fewer than the file's size when it shrinks meanwhile), at most MESH_MAX_FILE_BYTES. The buffer is
+ * reserved against the memory budget (*reserved bytes; release them with the buffer). */
+static int read_whole(const char *path, int fd, char **buf, size_t *size, size_t *reserved, GError *err)
 {
     off_t n = lseek(fd, 0, SEEK_END);
     if (n < 0 || lseek(fd, 0, SEEK_SET) != 0)
         return gerror_set(err, G_ERR_IO, "%s: cannot read: %s", path, strerror(errno));
     if ((unsigned long long)n > MESH_MAX_FILE_BYTES)
         return gerror_set(err, G_ERR_PARSE, "%s: larger than %llu bytes", path, MESH_MAX_FILE_BYTES);
+    GError refusal;
+    if (gmem_budget_reserve((size_t)n + MESH_HEADROOM + 1, "a mesh file read whole", &refusal) != G_OK)
+        return gerror_set(err, G_ERR_NOMEM, "%s: %s", path, refusal.message);
     char *b = gmem_alloc((size_t)n + MESH_HEADROOM + 1);
-    if (!b)
+    if (!b) {
+        gmem_budget_release((size_t)n + MESH_HEADROOM + 1);
         return gerror_set(err, G_ERR_NOMEM, "%s: out of memory", path);
+    }
     size_t got = 0;
     while (got < (size_t)n) {
         ssize_t r = read(fd, b + MESH_HEADROOM + got, (size_t)n - got);
@@ -51,6 +57,7 @@ static int read_whole(const char *path, int fd, char **buf, size_t *size, GError
     b[MESH_HEADROOM + got] = '\0';
     *buf = b;
     *size = got;
+    *reserved = (size_t)n + MESH_HEADROOM + 1;
     return G_OK;
 }
 
@@ -60,8 +67,8 @@ static int import_checked(const char *path, int fd, MeshFormat format, unsigned 
                           GError *err)
 {
     char *buf = NULL, *header = NULL;
-    size_t size = 0, hlen = 0, body = 0, body_len = 0;
-    int rc = read_whole(path, fd, &buf, &size, err);
+    size_t size = 0, hlen = 0, body = 0, body_len = 0, reserved = 0;
+    int rc = read_whole(path, fd, &buf, &size, &reserved, err);
     if (rc != G_OK)
         return rc;
     char *data = buf + MESH_HEADROOM, *start = data;
@@ -82,6 +89,7 @@ static int import_checked(const char *path, int fd, MeshFormat format, unsigned 
         *sc = aiImportFileFromMemory(start, (unsigned)len, flags, format == MESH_FORMAT_PLY ? "ply" : "stl");
     gmem_free(header);
     gmem_free(buf);
+    gmem_budget_release(reserved);
     return rc;
 }
 
@@ -207,12 +215,20 @@ static int import_gltf(const char *path, int fd, unsigned flags, const MeshFiles
         return gerror_set(err, G_ERR_PARSE, "%s: a glTF file of JSON of %lld bytes, more than the limit of %u", path,
                           (long long)n, JSON_MAX_BYTES);
     char *buf = NULL, *name = NULL;
-    size_t size = 0;
-    int rc = read_whole(path, fd, &buf, &size, err);
+    size_t size = 0, reserved = 0, assimp = 0;
+    int rc = read_whole(path, fd, &buf, &size, &reserved, err);
     if (rc != G_OK)
         return rc;
     MeshGltfCounts counts;
     rc = mesh_gltf_check(path, (const unsigned char *)buf + MESH_HEADROOM, size, files, &counts, err);
+    GError refusal;
+    if (rc == G_OK) { /* assimp's scene: its copy of the buffers' data, twice over, and about 1 KB a node */
+        assimp = 2 * (size_t)counts.buffer_bytes + (size_t)counts.placements * 1200;
+        if (gmem_budget_reserve(assimp, "assimp's copy of a glTF file", &refusal) != G_OK) {
+            assimp = 0;
+            rc = gerror_set(err, G_ERR_NOMEM, "%s: %s", path, refusal.message);
+        }
+    }
     const char *ext = glb ? ".glb" : ".gltf";
     size_t len = strlen(path), elen = strlen(ext);
     if (rc == G_OK && !(len > elen && strcasecmp(path + len - elen, ext) == 0)) {
@@ -231,6 +247,8 @@ static int import_gltf(const char *path, int fd, unsigned flags, const MeshFiles
     }
     gmem_free(name);
     gmem_free(buf);
+    gmem_budget_release(reserved);
+    gmem_budget_release(assimp);
     return rc;
 }
 
@@ -256,8 +274,16 @@ int mesh_load_assimp(Object *o, const char *path, int fd, MeshFormat format, con
         rc = gerror_set(err, G_ERR_PARSE, "%s: no faces", path);
     Mesh *m = NULL;
     if (rc == G_OK) {
-        size_t nv = (size_t)cnt.verts, nt = (size_t)cnt.tris;
-        m = gmem_calloc(1, sizeof *m);
+        size_t nv = (size_t)cnt.verts, nt = (size_t)cnt.tris, bytes = mesh_budget_bytes(nv, nt);
+        char what[96];
+        GError refusal;
+        snprintf(what, sizeof what, "a mesh of %zu vertices and %zu triangles", nv, nt);
+        if (gmem_budget_reserve(bytes, what, &refusal) != G_OK)
+            rc = gerror_set(err, G_ERR_NOMEM, "%s: %s", path, refusal.message);
+        else if (!(m = gmem_calloc(1, sizeof *m)))
+            gmem_budget_release(bytes);
+        else
+            m->budget = bytes;
         if (m) {
             m->pos = gmem_alloc(nv * 3 * sizeof *m->pos);
             m->normal = gmem_alloc(nv * 3 * sizeof *m->normal);
@@ -267,7 +293,7 @@ int mesh_load_assimp(Object *o, const char *path, int fd, MeshFormat format, con
             m->tri_normal = gmem_alloc(nt * 3 * sizeof *m->tri_normal);
             m->tri_surface = gmem_alloc(nt * sizeof *m->tri_surface);
         }
-        if (!m || !m->pos || !m->normal || !m->uv || !m->tri || !m->tri_uv || !m->tri_normal || !m->tri_surface) {
+        if (rc == G_OK && (!m || !m->pos || !m->normal || !m->uv || !m->tri || !m->tri_uv || !m->tri_normal || !m->tri_surface)) {
             mesh_free(m);
             m = NULL;
             rc = gerror_set(err, G_ERR_NOMEM, "%s: out of memory", path);

@@ -63,6 +63,7 @@ int mesh_load_assimp(Object *o, const char *path, int fd, MeshFormat format, con
  * summed over those placements (what the mesh baked from it holds, at most). */
 typedef struct MeshGltfCounts {
     unsigned long long placements, verts, tris;
+    unsigned long long buffer_bytes; /**< the byteLength of all its buffers */
 } MeshGltfCounts;
 /** Checks a whole glTF 2.0 file (data, size bytes: JSON, or a .glb by its "glTF" magic) before assimp reads it
  * (mesh_gltf.c): the .glb's header and chunk lengths against size; the JSON strict and nested at most JSON_MAX_DEPTH

@@ -45,7 +45,7 @@ typedef struct Gltf {
     unsigned long long bin_len; /* the .glb's BIN chunk, when has_bin */
     int has_bin;
     uint32_t nbuffers, nviews, naccessors, nmeshes, nnodes, nchild;
-    unsigned long long *buffer_len, *acc_count, *mesh_verts, *mesh_tris;
+    unsigned long long *buffer_len, *acc_count, *mesh_verts, *mesh_tris, buffer_bytes;
     View *view;
     Node *node;
     uint32_t *child;
@@ -160,6 +160,7 @@ static int gltf_buffers(Gltf *G, int root)
         if ((rc = gltf_uint(G, (int)b, "buffers", i, "byteLength", -1, 1, MESH_MAX_FILE_BYTES, &n)) < 0)
             return rc;
         G->buffer_len[i] = n;
+        G->buffer_bytes += n;
         int u = json_get(&G->j, (int)b, "uri");
         if (u < 0) {
             if (!(G->glb && i == 0 && G->has_bin))
@@ -460,6 +461,7 @@ static int gltf_graph(Gltf *G, MeshGltfCounts *counts)
     counts->placements = (unsigned long long)placements;
     counts->verts = (unsigned long long)verts;
     counts->tris = (unsigned long long)tris;
+    counts->buffer_bytes = G->buffer_bytes;
     return rc;
 }
 

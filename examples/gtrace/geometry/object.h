@@ -38,7 +38,14 @@ typedef struct Mesh {
     int *tri_uv;        /**< 3 uv indices per triangle or -1 */
     int *tri_normal;    /**< 3 normal indices per triangle or -1 */
     int *tri_surface;   /**< group (usemtl/g) index per triangle: the surface index */
+    size_t budget;      /**< bytes reserved for it against the memory budget (its arrays and the accelerator's copy
+                             and hierarchy, mesh_budget_bytes), released by mesh_free */
 } Mesh;
+
+/** The bytes a mesh of nverts vertices and ntris triangles is charged against the memory budget when it is read,
+ * before its arrays are allocated: its vertex and triangle arrays (with a normal and a (u,v) per vertex) and what
+ * the accelerator builds from it (Embree's vertex and index copies and its hierarchy, about 64 bytes a triangle). */
+size_t mesh_budget_bytes(size_t nverts, size_t ntris);
 
 /** One object: a shape in its own space, a transform to world space and a material. */
 typedef struct Object {
@@ -98,7 +105,7 @@ typedef struct MeshFiles {
 } MeshFiles;
 /** object_mesh_load with the files the mesh names opened only where files allows (NULL: everywhere). */
 int object_mesh_load_from(Object *o, const char *path, const MeshFiles *files, GError *err);
-/** Frees a mesh (NULL: no-op). */
+/** Frees a mesh and releases its budget (NULL: no-op). */
 void mesh_free(Mesh *m);
 
 #endif
