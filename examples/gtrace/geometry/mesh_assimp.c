@@ -293,7 +293,8 @@ int mesh_load_assimp(Object *o, const char *path, int fd, MeshFormat format, con
             m->tri_normal = gmem_alloc(nt * 3 * sizeof *m->tri_normal);
             m->tri_surface = gmem_alloc(nt * sizeof *m->tri_surface);
         }
-        if (rc == G_OK && (!m || !m->pos || !m->normal || !m->uv || !m->tri || !m->tri_uv || !m->tri_normal || !m->tri_surface)) {
+        if (rc == G_OK &&
+            (!m || !m->pos || !m->normal || !m->uv || !m->tri || !m->tri_uv || !m->tri_normal || !m->tri_surface)) {
             mesh_free(m);
             m = NULL;
             rc = gerror_set(err, G_ERR_NOMEM, "%s: out of memory", path);

@@ -268,7 +268,7 @@ int json_uint(const Json *j, int t, unsigned long long max, unsigned long long *
     for (uint32_t i = j->tok[t].start; i < j->tok[t].end; i++) {
         char c = j->text[i];
         unsigned d = (unsigned)(c - '0');
-        if (!is_digit(c) || v > max / 10 || v * 10 > max - d)
+        if (!is_digit(c) || d > max || v > (max - d) / 10)
             return 0;
         v = v * 10 + d;
     }
