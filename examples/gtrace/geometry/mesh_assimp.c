@@ -222,8 +222,10 @@ static int import_gltf(const char *path, int fd, unsigned flags, const MeshFiles
     MeshGltfCounts counts;
     rc = mesh_gltf_check(path, (const unsigned char *)buf + MESH_HEADROOM, size, files, &counts, err);
     GError refusal;
-    if (rc == G_OK) { /* assimp's scene: its copy of the buffers' data, twice over, and about 1 KB a node */
-        assimp = 2 * (size_t)counts.buffer_bytes + (size_t)counts.placements * 1200;
+    if (rc == G_OK) { /* assimp's scene: its copy of the buffers' data, twice over, and about 1 KB a node; and the
+                       * triangles the placements bake, so that a mesh too large for the budget is refused first */
+        assimp = 2 * (size_t)counts.buffer_bytes + (size_t)counts.placements * 1200 +
+                 mesh_budget_bytes(0, (size_t)counts.tris);
         if (gmem_budget_reserve(assimp, "assimp's copy of a glTF file", &refusal) != G_OK) {
             assimp = 0;
             rc = gerror_set(err, G_ERR_NOMEM, "%s: %s", path, refusal.message);
