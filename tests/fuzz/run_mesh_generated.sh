@@ -12,7 +12,10 @@
 set -u
 gen=$1 gtrace=$2 seed=$3 count=$4 budget=$5 timeout=$6 mem=$7
 dir=$(mktemp -d)
-"$gen" mesh "$seed" "$count" "$dir" "$budget" > "$dir/list" || { echo "run_mesh_generated: the generator failed"; exit 1; }
+if ! "$gen" mesh "$seed" "$count" "$dir" "$budget" > "$dir/list"; then
+    echo "run_mesh_generated: the generator failed"
+    exit 1
+fi
 TIME=/usr/bin/time
 [ -x "$TIME" ] || TIME=
 failed=0
@@ -38,7 +41,8 @@ E
     peak=$(sed -n 's/^peak //p' "$dir/time" 2> /dev/null)
     case $st in
     0) outcome=loaded ;;
-    1) if grep -q "s.scene:4:[0-9]*: " "$dir/out"; then outcome=refused; else outcome="refused without a position"; fi ;;
+    1) outcome=refused
+       grep -q "s.scene:4:[0-9]*: " "$dir/out" || outcome="refused without a position" ;;
     124) outcome="TIME-OUT" ;;
     *) outcome="status $st" ;;
     esac
@@ -48,7 +52,8 @@ E
 done < "$dir/list" | tee "$dir/report"
 failed=$(grep -c -v -P '\t(loaded|refused)\t' "$dir/report")
 echo "largest input of each family:"
-sort -t "$(printf '\t')" -k1,1 -k2,2n "$dir/report" | awk -F '\t' '{ last[$1] = $0 } END { for (f in last) print "  " last[f] }'
+sort -t "$(printf '\t')" -k1,1 -k2,2n "$dir/report" |
+    awk -F '\t' '{ last[$1] = $0 } END { for (f in last) print "  " last[f] }'
 if [ "$failed" -gt 0 ]; then
     echo "run_mesh_generated: $failed input(s) failed; kept in $dir"
     exit 1
