@@ -228,6 +228,19 @@ static void test_output_commit_abort_and_links(void **state)
     assert_int_equal(stat(target, &st), 0);
     assert_int_equal(st.st_mode & 0777, 0640);
     assert_int_equal(count_entries(".out"), 0);
+    /* the longest name a directory takes (255 bytes) has a temporary that fits: its base is cut, not the write */
+    char name[256], longest[600];
+    memset(name, 'n', 251);
+    memcpy(name + 251, ".png", 5);
+    snprintf(longest, sizeof longest, "%s/%s", dir, name);
+    assert_int_equal(gfile_check_output(longest, &err), G_OK);
+    assert_int_equal(gfile_output_begin(&o, longest, &err), G_OK);
+    assert_non_null(strstr(o.temp, ".png"));
+    assert_true(strlen(strrchr(o.temp, '/') + 1) <= 255);
+    assert_int_equal(write(o.fd, "new", 3), 3);
+    assert_int_equal(gfile_output_commit(&o, 3, longest, &err), G_OK);
+    expect_text(longest, "new");
+    unlink(longest);
 }
 
 static void test_output_destinations_checked(void **state)

@@ -290,11 +290,11 @@ static void test_hostile_files(void **state)
     snprintf(big, sizeof big, "%.*selement face 1000000000%s", (int)(cut - ply), ply, cut + 14);
     assert_refused(write_text("bigf.ply", big), "claims 1000000000 entries");
     gltf_text(big, sizeof big, 1000000000);
-    assert_refused(write_text("big.gltf", big), "out of range");
+    assert_refused(write_text("big.gltf", big), "accessors[0].count must be an integer in [1, 357913941]");
     cut = strstr(gltf, "\"byteLength\":140");
     assert_non_null(cut);
     snprintf(big, sizeof big, "%.*s\"byteLength\":1000000000000%s", (int)(cut - gltf), gltf, cut + 16);
-    assert_refused(write_text("bigb.gltf", big), "expected 1000000000000 bytes");
+    assert_refused(write_text("bigb.gltf", big), "buffers[0].byteLength must be an integer in [1, ");
     /* not a regular file */
     assert_refused("/dev/zero.ply", NULL);
     print_message("%d hostile files refused\n", cuts + 5);

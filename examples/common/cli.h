@@ -9,6 +9,7 @@
 #include <getopt.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdio_ext.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -172,6 +173,25 @@ static inline int cli_double(const char *prog, const char *opt, const char *s, d
     }
     *out = v;
     return 0;
+}
+
+/** Ends a tool's use of standard output: flushes and closes it and checks every write it took. When a write failed
+ * (a full disk, /dev/full, a closed descriptor that was written to, a broken pipe) it prints "PROG: cannot write
+ * the standard output: REASON" on standard error and returns CLI_FAILED for a status that was CLI_OK; else it
+ * returns status. A closed standard output that nothing was written to is not an error. Every tool's main returns
+ * through it. */
+static inline int cli_finish_stdout(const char *prog, int status)
+{
+    int failed = ferror(stdout) != 0, pending = __fpending(stdout) != 0;
+    errno = 0;
+    int closed = fclose(stdout) == 0, reason = errno;
+    if (!closed && (pending || reason != EBADF))
+        failed = 1;
+    if (!failed)
+        return status;
+    fprintf(stderr, "%s: cannot write the standard output: %s\n", prog,
+            reason ? strerror(reason) : "a write failed");
+    return status == CLI_OK ? CLI_FAILED : status;
 }
 
 #endif

@@ -24,8 +24,8 @@ static void usage(FILE *f)
             "stores, its brightness, and its conversion back to linear sRGB and CIE 1931 XYZ.\n"
             "  --rgb R,G,B   add a reflectance in linear sRGB to the report (repeatable)\n"
             "  --models LIST only these models, e.g. rgb,spectrum\n"
-            "  --plugin FILE.so  load a module first (repeatable; a bare name is searched in the current\n"
-            "                directory, then in GENERIC_PLUGIN_PATH, then PREFIX/lib/generic/plugins)\n"
+            "  --plugin FILE.so  load a module first (repeatable; a bare name is searched in\n"
+            "                GENERIC_PLUGIN_PATH, then PREFIX/lib/generic/plugins, then the current directory)\n"
             "  --memory-limit SIZE  memory for what input sizes: MiB, or with M, G, T (default 4096, or\n"
             "                GENERIC_MEMORY_LIMIT_MB)\n"
             "  -h, --help    this text\n"
@@ -230,7 +230,7 @@ static int report_models(const char *models, const Sample *samples, int n)
     return failed;
 }
 
-int main(int argc, char **argv)
+static int gcolor_main(int argc, char **argv)
 {
     int rc = startup("gcolor", &argc, argv);
     if (rc >= 0)
@@ -247,3 +247,6 @@ int main(int argc, char **argv)
     printf("Colour report: reflectances are seen under D65 (Y = 1); lights are their own spectrum.\n");
     return report_models(a.models, a.samples, a.n);
 }
+
+/* Every status leaves through cli_finish_stdout: a failed write to standard output makes the run fail. */
+int main(int argc, char **argv) { return cli_finish_stdout("gcolor", gcolor_main(argc, argv)); }

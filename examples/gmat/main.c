@@ -519,7 +519,7 @@ static int inspect(const Args *a, GLibrary *lib)
     return rc;
 }
 
-int main(int argc, char **argv)
+static int gmat_main(int argc, char **argv)
 {
     GError err;
     if (register_scene_kinds(&err) != G_OK) {
@@ -571,3 +571,6 @@ int main(int argc, char **argv)
     glibrary_destroy(lib);
     return rc;
 }
+
+/* Every status leaves through cli_finish_stdout: a failed write to standard output makes the run fail. */
+int main(int argc, char **argv) { return cli_finish_stdout("gmat", gmat_main(argc, argv)); }

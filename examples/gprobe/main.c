@@ -43,7 +43,7 @@ static void usage(FILE *f)
             CLI_EXIT_STATUS_HELP);
 }
 
-int main(int argc, char **argv)
+static int gprobe_main(int argc, char **argv)
 {
     int rc = startup("gprobe", &argc, argv);
     if (rc >= 0)
@@ -261,3 +261,6 @@ void progress_print(void *user, const char *stage, double fraction)
     if (tty)
         fprintf(stderr, "\r  %s %3.0f%%", stage, 100.0 * fraction);
 }
+
+/* Every status leaves through cli_finish_stdout: a failed write to standard output makes the run fail. */
+int main(int argc, char **argv) { return cli_finish_stdout("gprobe", gprobe_main(argc, argv)); }

@@ -15,7 +15,9 @@
 #include "../common/startup.h"
 
 #include <generic/builtins.h>
+#include <generic/services/file.h>
 #include <generic/services/image.h>
+#include <generic/memory.h>
 #include <generic/plugin.h>
 #include <generic/registry.h>
 
@@ -74,8 +76,8 @@ static void usage(FILE *f)
             "  --colormodel M    compute in colour model M instead of the scene's (%s, or one a\n"
             "                    module registers: --plugin or a `plugin` statement of the scene)\n"
             "  --plugin FILE.so  load a module before reading the scene (repeatable; a bare name is\n"
-            "                    searched in the current directory, then GENERIC_PLUGIN_PATH, then the installed\n"
-            "                    plug-in directory)\n"
+            "                    searched in GENERIC_PLUGIN_PATH, then the installed plug-in directory, then\n"
+            "                    the current directory)\n"
             "  --allow-plugins   let `plugin` statements of the scene load modules (a module runs native\n"
             "                    code: refused without this or GENERIC_ALLOW_PLUGINS=1)\n"
             "  --confine DIR     every file the scene reads (itself, includes, modules, meshes, images,\n"
@@ -367,6 +369,28 @@ static int parse_args(int argc, char **argv, Options *o)
 /* Loads the scene (checking first, when asked, that the output can be written) and works out the render settings
  * and exposure from the options and the camera. G_OK, or an error in err; *usage is set when the command line is
  * at fault (exit status 2). */
+/* What decides a crop's pixels, recorded in the piece for `gtrace merge` to compare (film/merge.c): the scene
+ * file's content (FNV-1a 64 of its bytes; the files it includes are not hashed), the colour model, the full size and
+ * the render settings, and the light-probe options; fields "NAME VALUE" separated by "; ". Returns buf. */
+static const char *piece_note(const Options *o, const Scene *scene, const RenderSettings *rs, char *buf, size_t size)
+{
+    uint64_t h = 0xcbf29ce484222325ULL;
+    char *text = NULL;
+    size_t len = 0;
+    GError err;
+    if (gfile_read_all(o->scene, (size_t)1 << 30, &text, &len, &err) == G_OK)
+        for (size_t i = 0; i < len; i++)
+            h = (h ^ (unsigned char)text[i]) * 0x100000001b3ULL;
+    gmem_free(text);
+    const ProbeOverride *p = &o->probe;
+    snprintf(buf, size, "scene %016llx; colormodel %s; size %dx%d; spp %d; depth %d; max-rays %d; bands %d; "
+             "integrator %d; cutoff %.17g; waves %d; probe %.100s %.40s %d %d %.17g %d", (unsigned long long)h,
+             gcolormodel_name(scene->model), rs->width, rs->height, rs->spp, rs->depth, rs->max_rays, rs->bands,
+             rs->integrator, rs->cutoff, rs->waves, p->file ? p->file : "-", p->technique ? p->technique : "-",
+             p->count, p->samples, p->scale, p->shadows);
+    return buf;
+}
+
 static int prepare(const Options *o, const GReaderOptions *trust, int check_output, Scene **scene, RenderSettings *rs,
                    double *exposure, int *usage, GError *err)
 {
@@ -429,7 +453,9 @@ static void merge_usage(FILE *f)
             "Joins crops of one render (gtrace --crop X0,Y0,X1,Y1 -o PIECE.exr, rendered as separate processes,\n"
             "e.g. the tasks of a Slurm or HTCondor array job) into the full image. Each piece is an OpenEXR file\n"
             "whose data window is its place in the full image (its display window), as gtrace writes a crop; the\n"
-            "pieces must share the full image size and channels and cover it exactly once (no overlap, no gap).\n"
+            "pieces must share the full image size and channels and cover it exactly once (no overlap, no gap),\n"
+            "and be of one render: each piece records the scene file's digest, the colour model, the full size,\n"
+            "the samples and the other settings, and pieces that differ are refused naming both.\n"
             "Pieces rendered with --spectral keep their values at the colour model's wavelengths (channels\n"
             "S0.<nm>nm): all of them must have the same wavelengths, and OUT must be an .exr.\n"
             "Pixels are copied unchanged: the merged image equals a single render bit for bit. See\n"
@@ -512,7 +538,7 @@ static void report(const Options *o, const Scene *scene, const RenderSettings *r
            (unsigned long long)st->nonfinite);
 }
 
-int main(int argc, char **argv)
+static int gtrace_main(int argc, char **argv)
 {
     if (argc > 1 && strcmp(argv[1], "merge") == 0)
         return merge_main(argc - 1, argv + 1);
@@ -541,6 +567,7 @@ int main(int argc, char **argv)
         return a > 0 ? 0 : 2;
     GError err;
     gerror_clear(&err);
+    char note[GIMAGE_NOTE_MAX];
     Dist *dist = NULL; /* under mpirun: this process is one rank of the job */
     if (mpi_launched() && dist_start(&dist, &err) != G_OK) {
         fprintf(stderr, "gtrace: %s\n", err.message);
@@ -564,7 +591,8 @@ int main(int argc, char **argv)
         rc = render_image(scene, &rs, &fb, &st, &err);
     }
     if (rc == G_OK)
-        rc = output_write(o.out, &fb, exposure, o.have_display ? &o.display : NULL, &err);
+        rc = output_write_piece(o.out, &fb, exposure, o.have_display ? &o.display : NULL,
+                                piece_note(&o, scene, &rs, note, sizeof note), &err);
     if (rc == G_OK)
         report(&o, scene, &rs, &fb, &st, dist ? dist_size(dist) : 0);
     else if (rc < 0)
@@ -574,3 +602,6 @@ int main(int argc, char **argv)
     dist_finish(dist);
     return rc == G_OK || rc == DIST_SENT ? 0 : usage ? 2 : 1;
 }
+
+/* Every status leaves through cli_finish_stdout: a failed write to standard output makes the run fail. */
+int main(int argc, char **argv) { return cli_finish_stdout("gtrace", gtrace_main(argc, argv)); }

@@ -36,11 +36,11 @@
  *
  * Finding a module. A name that contains a slash is a path: as it is for gplugin_load (relative to the current
  * directory), relative to the including file for a `plugin` statement. A bare name ("grey.so") is looked up
- * in a base directory first (the current directory for gplugin_load, the including file's directory for a
- * `plugin` statement), then in each directory of the environment variable GENERIC_PLUGIN_PATH
- * (colon-separated, searched in order; empty entries are skipped), then in the installed plug-in directory
- * (PREFIX/lib/generic/plugins, fixed at build time). The first existing file is loaded; when none exists the
- * error lists every directory searched.
+ * in each directory of the environment variable GENERIC_PLUGIN_PATH (colon-separated, searched in order; empty
+ * entries are skipped), then in the installed plug-in directory (PREFIX/lib/generic/plugins, fixed at build
+ * time), and only then in a base directory (the current directory for gplugin_load, the including file's
+ * directory for a `plugin` statement): a module beside a downloaded scene never replaces an installed one. The
+ * first existing file is loaded; when none exists the error lists every directory searched.
  *
  * Consent. Loading a module runs its native code. Modules named on a tool's command line (--plugin) or by a
  * program (gplugin_load) are the user's choice; a `plugin` statement in a file is refused unless the caller
@@ -151,8 +151,9 @@ typedef int (*GModuleInitFn)(GModuleApi *api, GError *err);
  * registers a name taken already. Loading the same file twice is a no-op. Thread safe. */
 GENERIC_API GENERIC_NODISCARD int gplugin_load(const char *path, GError *err);
 /** Loads a module found by the rule above with `dir` as the base directory (NULL = the current directory):
- * a name with a slash is dir/name (or name itself when absolute); a bare name is dir/name if that exists, else
- * the first GENERIC_PLUGIN_PATH directory that holds it, else the installed plug-in directory. G_ERR_IO naming the directories searched when no
+ * a name with a slash is dir/name (or name itself when absolute); a bare name is looked up in the directories of
+ * GENERIC_PLUGIN_PATH in order, then the installed plug-in directory, and only then dir/name, so that a module
+ * beside a (downloaded) scene never replaces an installed one. G_ERR_IO naming the directories searched when no
  * file is found; otherwise as gplugin_load. */
 GENERIC_API GENERIC_NODISCARD int gplugin_load_from(const char *name, const char *dir, GError *err);
 /** Finds a module by the rule above without loading it: *path receives a gmem_alloc copy of the file to load

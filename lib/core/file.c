@@ -252,6 +252,9 @@ static int check_target(const char *path, const char *target, GError *err)
     return rc;
 }
 
+/* Longest extension a temporary keeps (".exr", ".tiff"; a longer last part of a name is not an extension). */
+#define TEMP_MAX_EXT 32
+
 int gfile_check_output(const char *path, GError *err)
 {
     if (!path || !path[0])
@@ -303,18 +306,23 @@ int gfile_output_begin(GFileOutput *o, const char *path, GError *err)
         clear_output(o);
         return rc;
     }
-    /* .BASE.XXXXXX.EXT next to the target: hidden, and the extension kept for writers that look at it */
+    /* .BASE.XXXXXX.EXT next to the target: hidden, and the extension (of at most TEMP_MAX_EXT bytes) kept for
+     * writers that look at it; BASE is cut so that the name fits in NAME_MAX bytes, so any name that the
+     * destination's directory takes has a temporary that fits too (found before a long render, not after) */
     const char *slash = strrchr(o->target, '/');
     const char *base = slash ? slash + 1 : o->target;
     const char *dot = strrchr(base, '.');
-    const char *ext = dot && dot != base ? dot : "";
+    const char *ext = dot && dot != base && strlen(dot) <= TEMP_MAX_EXT ? dot : "";
+    size_t stem = strlen(base) - strlen(ext), room = NAME_MAX - 8 - strlen(ext);
+    if (stem > room)
+        stem = room;
     size_t dirlen = (size_t)(base - o->target), len = strlen(o->target) + 16 + strlen(ext);
     o->temp = gmem_alloc(len);
     if (!o->temp) {
         clear_output(o);
         return gerror_set(err, G_ERR_NOMEM, "out of memory");
     }
-    snprintf(o->temp, len, "%.*s.%.*s.XXXXXX%s", (int)dirlen, o->target, (int)(strlen(base) - strlen(ext)), base, ext);
+    snprintf(o->temp, len, "%.*s.%.*s.XXXXXX%s", (int)dirlen, o->target, (int)stem, base, ext);
     /* block the cleanup signals while the temporary exists but is not registered */
     sigset_t all, old;
     sigemptyset(&all);

@@ -370,6 +370,8 @@ int write_spectral(ImageOutput *out, const char *path, const char *tmp, const GI
         spec.full_width = opt->full_width;
         spec.full_height = opt->full_height;
     }
+    if (opt->full_width > 0 && opt->note)
+        spec.attribute("generic:note", opt->note);
     spec.attribute("oiio:ColorSpace", "Linear");
     spec.attribute("spectralLayoutVersion", "1.0");
     spec.attribute("emissiveUnits", "W.m^-2.sr^-1");
@@ -426,6 +428,8 @@ int write_pixels(ImageOutput *out, const char *path, const char *tmp, const GIma
         spec.full_x = spec.full_y = 0;
         spec.full_width = opt->full_width;
         spec.full_height = opt->full_height;
+        if (opt->note)
+            spec.attribute("generic:note", opt->note);
     }
     spec.attribute("oiio:ColorSpace", float_out ? "Linear" : "sRGB");
     if (alpha >= 0 && !float_out)
@@ -604,7 +608,9 @@ int read_header(const char *path, GImageWindow *win, int *channels, GError *err)
             return rc;
         const ImageSpec &spec = in->spec();
         *win = GImageWindow{spec.x - spec.full_x, spec.y - spec.full_y, spec.width, spec.height, spec.full_width,
-                            spec.full_height};
+                            spec.full_height, {0}};
+        std::string note = spec.get_string_attribute("generic:note");
+        snprintf(win->note, sizeof win->note, "%s", note.c_str());
         *channels = spec.nchannels;
         return (int)G_OK;
     });

@@ -1,15 +1,20 @@
 // ocio_display.cpp - display transforms through OpenColorIO 2 (generic/services/image.h, GImageDisplay): part of the
 // OpenImageIO module (OpenImageIO links OpenColorIO itself, so the module maps nothing more), loaded only when a
 // display transform is asked for. The config path comes resolved from the library (lib/image/image_display.c).
+// Every LUT file the config names is checked before OpenColorIO reads any (check_config_files): a regular file
+// found on the config's search path, at most 256 MiB, so that a FIFO blocks nothing and /dev/zero is not read.
 #include "generic/services/image.h"
 #define GOIIO_MODULE_SOURCE
 #include "oiio_module.h"
 
 #include <OpenColorIO/OpenColorIO.h>
 
+#include <sys/stat.h>
+
 #include <exception>
 #include <new>
 #include <string>
+#include <vector>
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -36,6 +41,94 @@ bool has_name(const OCIO::ConstConfigRcPtr &cfg, const char *display, const char
     return false;
 }
 
+// Largest LUT file a config may name (a 65^3 cube in text is about 10 MB).
+constexpr long long max_lut_bytes = 256ll << 20;
+
+// Every file a transform names (FileTransform), through its groups (an explicit stack: no recursion on nesting),
+// resolved on the config's search path and checked as the library checks inputs: a regular file (never a FIFO, a
+// device, a directory), at most max_lut_bytes. G_OK, or the refusal naming the config, the file and what holds it.
+int check_files(const OCIO::ConstConfigRcPtr &cfg, const char *config, OCIO::ConstTransformRcPtr top,
+                const std::string &holder, GError *err)
+{
+    std::vector<OCIO::ConstTransformRcPtr> stack;
+    if (top)
+        stack.push_back(top);
+    OCIO::ConstContextRcPtr ctx = cfg->getCurrentContext();
+    while (!stack.empty()) {
+        OCIO::ConstTransformRcPtr t = stack.back();
+        stack.pop_back();
+        if (auto g = OCIO_DYNAMIC_POINTER_CAST<const OCIO::GroupTransform>(t)) {
+            for (int i = 0; i < g->getNumTransforms(); i++)
+                stack.push_back(g->getTransform(i));
+            continue;
+        }
+        auto f = OCIO_DYNAMIC_POINTER_CAST<const OCIO::FileTransform>(t);
+        if (!f || !f->getSrc() || !*f->getSrc())
+            continue;
+        std::string file;
+        try {
+            file = ctx->resolveFileLocation(f->getSrc());
+        } catch (const OCIO::Exception &e) {
+            return gerror_set(err, G_ERR_IO, "OpenColorIO config %s: %s names \"%s\": %s", config, holder.c_str(),
+                              f->getSrc(), e.what());
+        }
+        struct stat st;
+        if (stat(file.c_str(), &st) != 0)
+            return gerror_set(err, G_ERR_IO, "OpenColorIO config %s: %s names \"%s\", which cannot be read", config,
+                              holder.c_str(), file.c_str());
+        if (!S_ISREG(st.st_mode))
+            return gerror_set(err, G_ERR_IO, "OpenColorIO config %s: %s names \"%s\", which is %s, not a regular file",
+                              config, holder.c_str(), file.c_str(),
+                              S_ISFIFO(st.st_mode) ? "a FIFO" : S_ISDIR(st.st_mode) ? "a directory"
+                              : S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode) ? "a device" : "special");
+        if (st.st_size > max_lut_bytes)
+            return gerror_set(err, G_ERR_IO, "OpenColorIO config %s: %s names \"%s\" of %lld bytes, more than the "
+                              "limit of %lld", config, holder.c_str(), file.c_str(), (long long)st.st_size,
+                              max_lut_bytes);
+    }
+    return G_OK;
+}
+
+// check_files over every transform of the config: its colour spaces (both directions), looks, view transforms and
+// named transforms, whether the display asked for uses them or not.
+int check_config_files(const OCIO::ConstConfigRcPtr &cfg, const char *config, GError *err)
+{
+    int rc = G_OK;
+    int n = cfg->getNumColorSpaces(OCIO::SEARCH_REFERENCE_SPACE_ALL, OCIO::COLORSPACE_ALL);
+    for (int i = 0; i < n && rc == G_OK; i++) {
+        const char *name = cfg->getColorSpaceNameByIndex(OCIO::SEARCH_REFERENCE_SPACE_ALL, OCIO::COLORSPACE_ALL, i);
+        OCIO::ConstColorSpaceRcPtr cs = cfg->getColorSpace(name);
+        std::string holder = std::string("colour space '") + name + "'";
+        if (cs && (rc = check_files(cfg, config, cs->getTransform(OCIO::COLORSPACE_DIR_TO_REFERENCE), holder, err)) ==
+                      G_OK)
+            rc = check_files(cfg, config, cs->getTransform(OCIO::COLORSPACE_DIR_FROM_REFERENCE), holder, err);
+    }
+    for (int i = 0; i < cfg->getNumLooks() && rc == G_OK; i++) {
+        const char *name = cfg->getLookNameByIndex(i);
+        OCIO::ConstLookRcPtr look = cfg->getLook(name);
+        std::string holder = std::string("look '") + name + "'";
+        if (look && (rc = check_files(cfg, config, look->getTransform(), holder, err)) == G_OK)
+            rc = check_files(cfg, config, look->getInverseTransform(), holder, err);
+    }
+    for (int i = 0; i < cfg->getNumViewTransforms() && rc == G_OK; i++) {
+        const char *name = cfg->getViewTransformNameByIndex(i);
+        OCIO::ConstViewTransformRcPtr vt = cfg->getViewTransform(name);
+        std::string holder = std::string("view transform '") + name + "'";
+        if (vt && (rc = check_files(cfg, config, vt->getTransform(OCIO::VIEWTRANSFORM_DIR_TO_REFERENCE), holder,
+                                    err)) == G_OK)
+            rc = check_files(cfg, config, vt->getTransform(OCIO::VIEWTRANSFORM_DIR_FROM_REFERENCE), holder, err);
+    }
+    int nt = cfg->getNumNamedTransforms(OCIO::NAMEDTRANSFORM_ALL);
+    for (int i = 0; i < nt && rc == G_OK; i++) {
+        const char *name = cfg->getNamedTransformNameByIndex(OCIO::NAMEDTRANSFORM_ALL, i);
+        OCIO::ConstNamedTransformRcPtr t = cfg->getNamedTransform(name);
+        std::string holder = std::string("named transform '") + name + "'";
+        if (t && (rc = check_files(cfg, config, t->getTransform(OCIO::TRANSFORM_DIR_FORWARD), holder, err)) == G_OK)
+            rc = check_files(cfg, config, t->getTransform(OCIO::TRANSFORM_DIR_INVERSE), holder, err);
+    }
+    return rc;
+}
+
 int transform(const char *config, const char *display, const char *view, float *pixels, int width, int height,
               int channels, GError *err)
 {
@@ -47,6 +140,9 @@ int transform(const char *config, const char *display, const char *view, float *
     } catch (const OCIO::Exception &e) {
         return gerror_set(err, G_ERR_PARSE, "OpenColorIO config %s: %s", config, e.what());
     }
+    int checked = check_config_files(cfg, config, err); // before OpenColorIO opens any of them
+    if (checked != G_OK)
+        return checked;
     const char *d = display && *display ? display : cfg->getDefaultDisplay();
     if (!d || !*d || !has_name(cfg, nullptr, d))
         return gerror_set(err, G_ERR_NOTFOUND, "OpenColorIO config %s has no display '%s' (its displays: %s)", config,

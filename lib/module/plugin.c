@@ -224,6 +224,28 @@ static void note_dir(char *list, size_t size, const char *dir)
         snprintf(list + used, size - used, "%s%s", used ? ", " : "", dir);
 }
 
+/* Looks for name in directory d (len bytes of it): 1 with *path set when the file is there, 0 when not (d noted in
+ * searched), G_ERR_NOMEM. */
+static int find_in(const char *d, size_t len, const char *name, char *searched, size_t size, char **path)
+{
+    char *copy = gmem_alloc(len + 1), *p;
+    if (!copy)
+        return G_ERR_NOMEM;
+    memcpy(copy, d, len);
+    copy[len] = '\0';
+    p = join(copy, name);
+    note_dir(searched, size, copy);
+    gmem_free(copy);
+    if (!p)
+        return G_ERR_NOMEM;
+    if (exists(p)) {
+        *path = p;
+        return 1;
+    }
+    gmem_free(p);
+    return 0;
+}
+
 int gplugin_find(const char *name, const char *dir, char **path, GError *err)
 {
     *path = NULL;
@@ -233,51 +255,29 @@ int gplugin_find(const char *name, const char *dir, char **path, GError *err)
         *path = join(dir, name);
         return *path ? G_OK : gerror_set(err, G_ERR_NOMEM, "out of memory loading module '%s'", name);
     }
+    /* a bare name: the directories the user installed modules in come before the base directory (a scene's own
+     * folder, which may have been downloaded with it, cannot replace an installed module) */
     char searched[1024] = "";
-    const char *base = dir && dir[0] ? dir : ".";
-    char *p = join(base, name);
-    if (!p)
-        return gerror_set(err, G_ERR_NOMEM, "out of memory loading module '%s'", name);
-    if (exists(p)) {
-        *path = p;
-        return G_OK;
-    }
-    gmem_free(p);
-    note_dir(searched, sizeof searched, base);
     const char *env = getenv(GPLUGIN_PATH_ENV);
-    for (const char *s = env; s && *s;) {
+    int found = 0;
+    for (const char *s = env; s && *s && !found;) {
         const char *colon = strchr(s, ':');
         size_t len = colon ? (size_t)(colon - s) : strlen(s);
-        if (len > 0) {
-            char *d = gmem_alloc(len + 1);
-            if (!d)
-                return gerror_set(err, G_ERR_NOMEM, "out of memory loading module '%s'", name);
-            memcpy(d, s, len);
-            d[len] = '\0';
-            p = join(d, name);
-            note_dir(searched, sizeof searched, d);
-            gmem_free(d);
-            if (!p)
-                return gerror_set(err, G_ERR_NOMEM, "out of memory loading module '%s'", name);
-            if (exists(p)) {
-                *path = p;
-                return G_OK;
-            }
-            gmem_free(p);
-        }
+        if (len > 0)
+            found = find_in(s, len, name, searched, sizeof searched, path);
         s += len + (colon ? 1 : 0);
     }
-#ifdef GENERIC_PLUGIN_DIR /* last: where `make install` puts the example plug-ins (PREFIX/lib/generic/plugins) */
-    p = join(GENERIC_PLUGIN_DIR, name);
-    if (!p)
-        return gerror_set(err, G_ERR_NOMEM, "out of memory loading module '%s'", name);
-    if (exists(p)) {
-        *path = p;
-        return G_OK;
-    }
-    gmem_free(p);
-    note_dir(searched, sizeof searched, GENERIC_PLUGIN_DIR);
+#ifdef GENERIC_PLUGIN_DIR /* where `make install` puts the example plug-ins (PREFIX/lib/generic/plugins) */
+    if (!found)
+        found = find_in(GENERIC_PLUGIN_DIR, strlen(GENERIC_PLUGIN_DIR), name, searched, sizeof searched, path);
 #endif
+    const char *base = dir && dir[0] ? dir : ".";
+    if (!found)
+        found = find_in(base, strlen(base), name, searched, sizeof searched, path);
+    if (found < 0)
+        return gerror_set(err, G_ERR_NOMEM, "out of memory loading module '%s'", name);
+    if (found)
+        return G_OK;
     return gerror_set(err, G_ERR_IO, "cannot load module '%s': file not found in %s (%s%s)", name, searched,
                       env && env[0] ? GPLUGIN_PATH_ENV "=" : GPLUGIN_PATH_ENV " is not set",
                       env && env[0] ? env : "");

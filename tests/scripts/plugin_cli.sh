@@ -85,8 +85,16 @@ GENERIC_PLUGIN_PATH="$TMP/empty:$PLUGINS" "$BIN/gcolor" list --plugin grey.so > 
 grep -qx grey out || fail "the module found on the path did not register grey: $(cat out)"
 GENERIC_PLUGIN_PATH="$TMP/empty:/nonexistent/dir" "$BIN/gcolor" list --plugin grey.so > out 2>&1 &&
     fail "a module that is on no searched directory was found"
-grep -q "cannot load module 'grey.so': file not found in \., $TMP/empty, /nonexistent/dir" out ||
+grep -q "cannot load module 'grey.so': file not found in $TMP/empty, /nonexistent/dir, .*, \. " out ||
     fail "the error does not list the directories searched: $(cat out)"
+# a bare name: GENERIC_PLUGIN_PATH and the installed directory come before the base directory, so a module
+# dropped beside a scene (or in the current directory) under an installed module's name is not taken
+mkdir -p "$TMP/installed" "$TMP/here"
+cp "$PLUGINS/bands.so" "$TMP/installed/grey.so"
+cp "$PLUGINS/grey.so" "$TMP/here/grey.so"
+(cd "$TMP/here" && GENERIC_PLUGIN_PATH="$TMP/installed" "$BIN/gcolor" list --plugin grey.so) > out 2>&1 ||
+    fail "the module on GENERIC_PLUGIN_PATH did not load: $(cat out)"
+grep -qx grey out && fail "the module in the current directory was taken before GENERIC_PLUGIN_PATH's: $(cat out)"
 "$BIN/gcolor" list --plugin grey.so > out 2>&1 && fail "a bare name without GENERIC_PLUGIN_PATH was found"
 grep -q "GENERIC_PLUGIN_PATH is not set" out || fail "the error does not say the path is unset: $(cat out)"
 # a name with a slash is a path, never searched
@@ -98,7 +106,7 @@ cp scene.scene scenes/
 (cd / && "$BIN/gtrace" "$TMP/scenes/scene.scene" -o "$TMP/next.exr" --colormodel grey -q --allow-plugins) > out 2>&1 ||
     fail "plugin \"grey.so\" next to the scene is not found: $(cat out)"
 "$BIN/gtrace" scene.scene -o x.exr --allow-plugins > out 2>&1 && fail "plugin \"grey.so\" found without a path"
-grep -q "scene.scene:1:8: cannot load module 'grey.so': file not found in \." out ||
+grep -q "scene.scene:1:8: cannot load module 'grey.so': file not found in .*\. (" out ||
     fail "a file's missing module: no positioned message listing the directory: $(cat out)"
 
 if [ $fails -gt 0 ]; then

@@ -3,14 +3,50 @@
  * piece must name the same full image and channel count, and together they must cover it exactly once; the pixels
  * are copied unchanged, so the result equals the full render bit for bit. Pieces rendered with --spectral are
  * joined with their spectra (gimage_read_spectra), which must be at the same wavelengths in every piece, and the
- * result is written in the same layout. Nothing is written when the pieces do not fit: the message names the
- * pieces at fault. */
+ * result is written in the same layout. Each piece records what render it belongs to (its note: the scene's digest,
+ * the colour model, the full size, the samples and the other settings, written by gtrace), and pieces whose notes
+ * differ are refused with the first field that differs in both. Nothing is written when the pieces do not fit: the
+ * message names the pieces at fault. */
 #include "merge.h"
 
 #include <generic/services/image.h>
 #include <generic/memory.h>
 
 #include <string.h>
+
+/* The field of a note ("NAME VALUE; NAME VALUE; ...") at which a and b first differ: its start in a and in b, and
+ * their lengths. */
+static void first_difference(const char *a, const char *b, const char **fa, int *la, const char **fb, int *lb)
+{
+    size_t i = 0, start = 0;
+    while (a[i] && a[i] == b[i]) {
+        if (a[i] == ';')
+            start = i + 2;
+        i++;
+    }
+    if (start > i)
+        start = i;
+    *fa = a + start;
+    *fb = b + start;
+    *la = (int)strcspn(*fa, ";");
+    *lb = (int)strcspn(*fb, ";");
+}
+
+/* Piece i's note against the first piece's: G_OK when they are the same render, else the mismatch in err. */
+static int same_render(char *const *paths, int i, const GImageWindow *win, GError *err)
+{
+    const char *a = win[0].note, *b = win[i].note;
+    if (strcmp(a, b) == 0)
+        return G_OK;
+    if (!a[0] || !b[0])
+        return gerror_set(err, G_ERR_MISMATCH, "%s records the render it belongs to, %s does not: pieces of another "
+                          "render (or of another program)", a[0] ? paths[0] : paths[i], a[0] ? paths[i] : paths[0]);
+    const char *fa, *fb;
+    int la, lb;
+    first_difference(a, b, &fa, &la, &fb, &lb);
+    return gerror_set(err, G_ERR_MISMATCH, "%s and %s are pieces of different renders: %.*s in %s, %.*s in %s",
+                      paths[0], paths[i], la, fa, paths[0], lb, fb, paths[i]);
+}
 
 /* Reads every piece's window and checks that they tile one full image exactly: G_OK, or the first misfit found
  * (a piece of another image or outside it, then two pieces that overlap, then a pixel that none covers) in err. */
@@ -21,6 +57,7 @@ static int check_pieces(char *const *paths, int n, GImageWindow *win, GError *er
         if (rc != G_OK)
             return rc;
     }
+
     for (int i = 0; i < n; i++) {
         const GImageWindow *w = &win[i], *f = &win[0];
         if (w->full_width != f->full_width || w->full_height != f->full_height)
@@ -180,6 +217,9 @@ int merge_pieces(char *const *paths, int n, const char *out, int *width, int *he
     GImage full = {0};
     GImageSpectraBuf spectra = {0};
     if ((rc = check_pieces(paths, n, win, err)) == G_OK && (rc = assemble(paths, n, win, &full, &spectra, err)) == G_OK)
+        for (int i = 1; i < n && rc == G_OK; i++) /* the pieces fit and match: are they of one render? */
+            rc = same_render(paths, i, win, err);
+    if (rc == G_OK)
         rc = write_merged(out, &full, &spectra, err);
     *width = full.width;
     *height = full.height;

@@ -38,6 +38,12 @@ int output_check(const char *path, GError *err)
 
 int output_write(const char *path, const Framebuffer *fb, double exposure, const GImageDisplay *display, GError *err)
 {
+    return output_write_piece(path, fb, exposure, display, NULL, err);
+}
+
+int output_write_piece(const char *path, const Framebuffer *fb, double exposure, const GImageDisplay *display,
+                       const char *note, GError *err)
+{
     GImage img = {.width = fb->width, .height = fb->height, .channels = 3, .pixels = fb->pixels};
     GImageWriteOptions opt = {.exposure = is_float_format(path) ? 0.0 : exposure, .display = display};
     if (fb->full_width > 0 && (fb->width != fb->full_width || fb->height != fb->full_height)) { /* a crop */
@@ -45,6 +51,7 @@ int output_write(const char *path, const Framebuffer *fb, double exposure, const
         opt.y = fb->y;
         opt.full_width = fb->full_width;
         opt.full_height = fb->full_height;
+        opt.note = note;
     }
     GImageSpectra waves = {.count = fb->nwaves, .wavelengths = fb->wavelengths, .values = fb->waves};
     if (fb->waves)

@@ -13,6 +13,10 @@
  * only, generic/services/image.h). Writes a temporary file and renames it, so a failed write
  * leaves no partial file. */
 int output_write(const char *path, const Framebuffer *fb, double exposure, const GImageDisplay *display, GError *err);
+/** output_write recording note (NULL: none) with a crop (GImageWriteOptions.note: OpenEXR keeps it), which
+ * `gtrace merge` compares between pieces. */
+int output_write_piece(const char *path, const Framebuffer *fb, double exposure, const GImageDisplay *display,
+                       const char *note, GError *err);
 
 /** 1 when path names a linear float format (.exr, .hdr, .pfm): no exposure and no display transform. */
 int output_is_float(const char *path);

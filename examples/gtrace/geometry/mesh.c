@@ -13,19 +13,34 @@
 #include <string.h>
 #include <unistd.h>
 
+/* What a mesh's arrays reserved against the memory budget while they grow, and the refusal when one was refused. */
+typedef struct ArrBudget {
+    size_t reserved;
+    int refused;
+    GError refusal;
+} ArrBudget;
+
 /* A growing array of elements of one size (doubles or ints here). */
 typedef struct Arr {
     void *data;
     int n, cap; /* in elements */
+    ArrBudget *budget;
 } Arr;
 
-/* Appends the `size`-byte element at x, doubling the storage (from 256 elements) when it is full. */
+/* Appends the `size`-byte element at x, doubling the storage (from 256 elements) when it is full; the growth is
+ * reserved against the memory budget first. */
 static int arr_push(Arr *a, const void *x, size_t size)
 {
     if (a->n == a->cap) {
         if (a->cap >= 0x40000000) /* doubling would overflow an int */
             return G_ERR_NOMEM;
         int cap = a->cap ? a->cap * 2 : 256;
+        size_t grow = (size_t)(cap - a->cap) * size;
+        if (gmem_budget_reserve(grow, "a mesh's vertices and faces", &a->budget->refusal) != G_OK) {
+            a->budget->refused = 1;
+            return G_ERR_NOMEM;
+        }
+        a->budget->reserved += grow;
         void *nv = gmem_realloc(a->data, (size_t)cap * size);
         if (!nv)
             return G_ERR_NOMEM;
@@ -50,7 +65,13 @@ void mesh_free(Mesh *m)
     gmem_free(m->tri_uv);
     gmem_free(m->tri_normal);
     gmem_free(m->tri_surface);
+    gmem_budget_release(m->budget);
     gmem_free(m);
+}
+
+size_t mesh_budget_bytes(size_t nverts, size_t ntris)
+{
+    return nverts * (8 * sizeof(double) + 16) + ntris * (9 * sizeof(int) + sizeof(int) + 12 + 64);
 }
 
 /* Resolves a 1-based or negative OBJ index against count; -1 for absent, -2 for out of range. */
@@ -70,7 +91,16 @@ typedef struct Loader {
     Arr tri, tuv, tn, tsurf;   /* ints */
     int surface, used_surface;
     GError *err;
+    ArrBudget *budget;
 } Loader;
+
+/* An array could not grow: the memory budget's refusal at the line, or out of memory. */
+static int obj_nomem(Loader *L)
+{
+    if (L->budget->refused)
+        return gerror_set(L->err, G_ERR_NOMEM, "%s:%d: %s", L->path, L->line, L->budget->refusal.message);
+    return gerror_set(L->err, G_ERR_NOMEM, "%s: out of memory", L->path);
+}
 
 static int obj_error(Loader *L, int col, const char *msg)
 {
@@ -147,10 +177,10 @@ static int read_face(Loader *L, char *s, const char *line)
             ni[2] = n;
             for (int j = 0; j < 3; j++) {
                 if (ipush(&L->tri, vi[j]) || ipush(&L->tuv, ti[j]) || ipush(&L->tn, ni[j]))
-                    return gerror_set(L->err, G_ERR_NOMEM, "%s: out of memory", L->path);
+                    return obj_nomem(L);
             }
             if (ipush(&L->tsurf, L->surface))
-                return gerror_set(L->err, G_ERR_NOMEM, "%s: out of memory", L->path);
+                return obj_nomem(L);
             L->used_surface = 1;
             vi[1] = vi[2];
             ti[1] = ti[2];
@@ -215,12 +245,12 @@ static int parse_line(Loader *L, char *line)
     return G_OK; /* comments, o, s, mtllib and other statements are ignored */
 }
 
-static int mesh_load(Object *o, const char *path, GError *err)
+static int mesh_load(Object *o, const char *path, const MeshFiles *files, GError *err)
 {
     int fd = gfile_open_input(path, err); /* a regular file: never a FIFO or a device */
     if (fd < 0)
         return fd;
-    char what[64];
+    char what[128];
     MeshFormat format = mesh_format_of(fd, path, what, sizeof what);
     if (format == MESH_FORMAT_UNSUPPORTED) {
         close(fd);
@@ -228,13 +258,17 @@ static int mesh_load(Object *o, const char *path, GError *err)
                           MESH_FORMATS_READ ")", path, what);
     }
     if (format != MESH_FORMAT_OBJ)
-        return mesh_load_assimp(o, path, fd, format, err);
+        return mesh_load_assimp(o, path, fd, format, files, err);
     FILE *f = fdopen(fd, "r");
     if (!f) {
         close(fd);
         return gerror_set(err, G_ERR_NOMEM, "%s: cannot read: %s", path, strerror(errno));
     }
-    Loader L = {.path = path, .err = err};
+    ArrBudget budget = {0};
+    Loader L = {.path = path, .err = err, .budget = &budget};
+    Arr *arrays[] = {&L.pos, &L.uv, &L.nrm, &L.tri, &L.tuv, &L.tn, &L.tsurf};
+    for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++)
+        arrays[i]->budget = &budget;
     char buf[4096];
     int rc = G_OK, got;
     size_t len;
@@ -254,13 +288,20 @@ static int mesh_load(Object *o, const char *path, GError *err)
         }
         rc = parse_line(&L, text);
         if (rc == G_ERR_NOMEM)
-            gerror_set(err, rc, "%s: out of memory", path);
+            obj_nomem(&L);
     }
     if (rc == G_OK && ferror(f))
         rc = gerror_set(err, G_ERR_IO, "%s: read error", path);
     fclose(f);
     if (rc == G_OK && L.tsurf.n == 0)
         rc = gerror_set(err, G_ERR_PARSE, "%s: no faces", path);
+    /* the accelerator's copy and hierarchy (mesh_budget_bytes less the arrays reserved as they grew) */
+    size_t accel = (size_t)L.tsurf.n * (12 + 64) + (size_t)(L.pos.n / 3) * 16;
+    GError refusal;
+    if (rc == G_OK && gmem_budget_reserve(accel, "a mesh's acceleration structure", &refusal) != G_OK)
+        rc = gerror_set(err, G_ERR_NOMEM, "%s: %s", path, refusal.message);
+    else if (rc == G_OK)
+        budget.reserved += accel;
     Mesh *m = NULL;
     if (rc == G_OK) {
         m = gmem_calloc(1, sizeof *m);
@@ -278,6 +319,7 @@ static int mesh_load(Object *o, const char *path, GError *err)
         m->tri_uv = L.tuv.data;
         m->tri_normal = L.tn.data;
         m->tri_surface = L.tsurf.data;
+        m->budget = budget.reserved;
         m->tri = gmem_alloc((size_t)L.tri.n * sizeof *m->tri);
         if (!m->tri) {
             L.tri.n = 0;
@@ -301,12 +343,15 @@ static int mesh_load(Object *o, const char *path, GError *err)
     gmem_free(L.tuv.data);
     gmem_free(L.tn.data);
     gmem_free(L.tsurf.data);
+    gmem_budget_release(budget.reserved);
     return rc;
 }
 
-int object_mesh_load(Object *o, const char *path, GError *err)
+int object_mesh_load(Object *o, const char *path, GError *err) { return object_mesh_load_from(o, path, NULL, err); }
+
+int object_mesh_load_from(Object *o, const char *path, const MeshFiles *files, GError *err)
 {
-    int rc = mesh_load(o, path, err);
+    int rc = mesh_load(o, path, files, err);
     if (rc < 0 && err && !err->param[0]) /* a scene file's reader places the message at the entry's file */
         snprintf(err->param, sizeof err->param, "%s", "file");
     return rc;

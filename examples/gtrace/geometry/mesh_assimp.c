@@ -1,8 +1,11 @@
 /* mesh_assimp.c - triangle meshes from PLY, STL and glTF 2.0 through assimp: positions, normals and the first
  * (u,v) set where the file has them, the node transforms baked in, and the material index of each assimp mesh as
- * the surface index of its triangles. A PLY or STL file is checked whole first (mesh_ply.c, mesh_stl.c) and assimp
- * reads the checked bytes. OBJ stays with mesh.c's own reader; mesh_format.c picks the reader. */
+ * the surface index of its triangles. A file is checked whole first (mesh_ply.c, mesh_stl.c, mesh_gltf.c) and assimp
+ * reads the checked bytes; the files a glTF file names go through mesh_assimp_io.c. OBJ stays with mesh.c's own
+ * reader; mesh_format.c picks the reader. */
+#include "mesh_assimp_io.h"
 #include "mesh_format.h"
+#include "mesh_json.h"
 
 #include <generic/memory.h>
 
@@ -15,10 +18,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <unistd.h>
 
-/* Largest node depth walked (a hostile file may nest nodes deeply). */
-#define MESH_MAX_NODE_DEPTH 256
 /* Bytes kept free in front of a PLY file read whole: the header mesh_ply_check writes is at most one byte longer
  * than the file's own, and goes there in front of the body. */
 #define MESH_HEADROOM 16
@@ -26,17 +28,23 @@
 int mesh_assimp_reads_extension(const char *ext) { return aiIsExtensionSupported(ext) == AI_TRUE; }
 
 /* Reads the regular file open as fd whole into *buf (gmem_alloc), its bytes from MESH_HEADROOM on, NUL-terminated:
- * *size of them (fewer than the file's size when it shrinks meanwhile), at most MESH_MAX_FILE_BYTES. */
-static int read_whole(const char *path, int fd, char **buf, size_t *size, GError *err)
+ * *size of them (fewer than the file's size when it shrinks meanwhile), at most MESH_MAX_FILE_BYTES. The buffer is
+ * reserved against the memory budget (*reserved bytes; release them with the buffer). */
+static int read_whole(const char *path, int fd, char **buf, size_t *size, size_t *reserved, GError *err)
 {
     off_t n = lseek(fd, 0, SEEK_END);
     if (n < 0 || lseek(fd, 0, SEEK_SET) != 0)
         return gerror_set(err, G_ERR_IO, "%s: cannot read: %s", path, strerror(errno));
     if ((unsigned long long)n > MESH_MAX_FILE_BYTES)
         return gerror_set(err, G_ERR_PARSE, "%s: larger than %llu bytes", path, MESH_MAX_FILE_BYTES);
+    GError refusal;
+    if (gmem_budget_reserve((size_t)n + MESH_HEADROOM + 1, "a mesh file read whole", &refusal) != G_OK)
+        return gerror_set(err, G_ERR_NOMEM, "%s: %s", path, refusal.message);
     char *b = gmem_alloc((size_t)n + MESH_HEADROOM + 1);
-    if (!b)
+    if (!b) {
+        gmem_budget_release((size_t)n + MESH_HEADROOM + 1);
         return gerror_set(err, G_ERR_NOMEM, "%s: out of memory", path);
+    }
     size_t got = 0;
     while (got < (size_t)n) {
         ssize_t r = read(fd, b + MESH_HEADROOM + got, (size_t)n - got);
@@ -49,6 +57,7 @@ static int read_whole(const char *path, int fd, char **buf, size_t *size, GError
     b[MESH_HEADROOM + got] = '\0';
     *buf = b;
     *size = got;
+    *reserved = (size_t)n + MESH_HEADROOM + 1;
     return G_OK;
 }
 
@@ -58,8 +67,8 @@ static int import_checked(const char *path, int fd, MeshFormat format, unsigned 
                           GError *err)
 {
     char *buf = NULL, *header = NULL;
-    size_t size = 0, hlen = 0, body = 0, body_len = 0;
-    int rc = read_whole(path, fd, &buf, &size, err);
+    size_t size = 0, hlen = 0, body = 0, body_len = 0, reserved = 0;
+    int rc = read_whole(path, fd, &buf, &size, &reserved, err);
     if (rc != G_OK)
         return rc;
     char *data = buf + MESH_HEADROOM, *start = data;
@@ -80,6 +89,7 @@ static int import_checked(const char *path, int fd, MeshFormat format, unsigned 
         *sc = aiImportFileFromMemory(start, (unsigned)len, flags, format == MESH_FORMAT_PLY ? "ply" : "stl");
     gmem_free(header);
     gmem_free(buf);
+    gmem_budget_release(reserved);
     return rc;
 }
 
@@ -192,15 +202,64 @@ static int indices_ok(const struct aiScene *sc)
     return 1;
 }
 
-int mesh_load_assimp(Object *o, const char *path, int fd, MeshFormat format, GError *err)
+/* The scene assimp makes of a glTF file: read whole (a file of JSON at most JSON_MAX_BYTES), checked, and handed to
+ * assimp under a name with the extension of its content (assimp picks its reader by the name first), from memory;
+ * the buffer files it names are opened by files' rules. */
+static int import_gltf(const char *path, int fd, unsigned flags, const MeshFiles *files, const struct aiScene **sc,
+                       GError *err)
+{
+    unsigned char magic[4] = {0};
+    off_t n = lseek(fd, 0, SEEK_END);
+    int glb = pread(fd, magic, 4, 0) == 4 && memcmp(magic, "glTF", 4) == 0;
+    if (n >= 0 && !glb && (unsigned long long)n > JSON_MAX_BYTES)
+        return gerror_set(err, G_ERR_PARSE, "%s: a glTF file of JSON of %lld bytes, more than the limit of %u", path,
+                          (long long)n, JSON_MAX_BYTES);
+    char *buf = NULL, *name = NULL;
+    size_t size = 0, reserved = 0, assimp = 0;
+    int rc = read_whole(path, fd, &buf, &size, &reserved, err);
+    if (rc != G_OK)
+        return rc;
+    MeshGltfCounts counts;
+    rc = mesh_gltf_check(path, (const unsigned char *)buf + MESH_HEADROOM, size, files, &counts, err);
+    GError refusal;
+    if (rc == G_OK) { /* assimp's scene: its copy of the buffers' data, twice over, and about 1 KB a node; and the
+                       * triangles the placements bake, so that a mesh too large for the budget is refused first */
+        assimp = 2 * (size_t)counts.buffer_bytes + (size_t)counts.placements * 1200 +
+                 mesh_budget_bytes(0, (size_t)counts.tris);
+        if (gmem_budget_reserve(assimp, "assimp's copy of a glTF file", &refusal) != G_OK) {
+            assimp = 0;
+            rc = gerror_set(err, G_ERR_NOMEM, "%s: %s", path, refusal.message);
+        }
+    }
+    const char *ext = glb ? ".glb" : ".gltf";
+    size_t len = strlen(path), elen = strlen(ext);
+    if (rc == G_OK && !(len > elen && strcasecmp(path + len - elen, ext) == 0)) {
+        name = gmem_alloc(len + elen + 1);
+        if (!name)
+            rc = gerror_set(err, G_ERR_NOMEM, "%s: out of memory", path);
+        else
+            memcpy(name, path, len), memcpy(name + len, ext, elen + 1);
+    }
+    if (rc == G_OK) {
+        MeshIO io;
+        mesh_io_init(&io, name ? name : path, buf + MESH_HEADROOM, size, files);
+        *sc = aiImportFileEx(name ? name : path, flags, &io.hooks);
+        if (!*sc && io.refusal.code)
+            rc = gerror_set(err, io.refusal.code, "%s: %s", path, io.refusal.message);
+    }
+    gmem_free(name);
+    gmem_free(buf);
+    gmem_budget_release(reserved);
+    gmem_budget_release(assimp);
+    return rc;
+}
+
+int mesh_load_assimp(Object *o, const char *path, int fd, MeshFormat format, const MeshFiles *files, GError *err)
 {
     unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_ValidateDataStructure;
     const struct aiScene *sc = NULL;
-    int rc = G_OK;
-    if (format == MESH_FORMAT_GLTF)
-        sc = aiImportFile(path, flags); /* a .gltf may name buffer files beside it */
-    else
-        rc = import_checked(path, fd, format, flags, &sc, err);
+    int rc = format == MESH_FORMAT_GLTF ? import_gltf(path, fd, flags, files, &sc, err)
+                                        : import_checked(path, fd, format, flags, &sc, err);
     close(fd);
     if (rc != G_OK)
         return rc;
@@ -217,8 +276,16 @@ int mesh_load_assimp(Object *o, const char *path, int fd, MeshFormat format, GEr
         rc = gerror_set(err, G_ERR_PARSE, "%s: no faces", path);
     Mesh *m = NULL;
     if (rc == G_OK) {
-        size_t nv = (size_t)cnt.verts, nt = (size_t)cnt.tris;
-        m = gmem_calloc(1, sizeof *m);
+        size_t nv = (size_t)cnt.verts, nt = (size_t)cnt.tris, bytes = mesh_budget_bytes(nv, nt);
+        char what[96];
+        GError refusal;
+        snprintf(what, sizeof what, "a mesh of %zu vertices and %zu triangles", nv, nt);
+        if (gmem_budget_reserve(bytes, what, &refusal) != G_OK)
+            rc = gerror_set(err, G_ERR_NOMEM, "%s: %s", path, refusal.message);
+        else if (!(m = gmem_calloc(1, sizeof *m)))
+            gmem_budget_release(bytes);
+        else
+            m->budget = bytes;
         if (m) {
             m->pos = gmem_alloc(nv * 3 * sizeof *m->pos);
             m->normal = gmem_alloc(nv * 3 * sizeof *m->normal);
@@ -228,7 +295,8 @@ int mesh_load_assimp(Object *o, const char *path, int fd, MeshFormat format, GEr
             m->tri_normal = gmem_alloc(nt * 3 * sizeof *m->tri_normal);
             m->tri_surface = gmem_alloc(nt * sizeof *m->tri_surface);
         }
-        if (!m || !m->pos || !m->normal || !m->uv || !m->tri || !m->tri_uv || !m->tri_normal || !m->tri_surface) {
+        if (rc == G_OK &&
+            (!m || !m->pos || !m->normal || !m->uv || !m->tri || !m->tri_uv || !m->tri_normal || !m->tri_surface)) {
             mesh_free(m);
             m = NULL;
             rc = gerror_set(err, G_ERR_NOMEM, "%s: out of memory", path);

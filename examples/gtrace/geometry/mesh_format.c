@@ -1,5 +1,6 @@
-/* mesh_format.c - which reader a mesh file goes to: its content decides where it is recognisable (a binary STL
- * named .obj is still an STL file), else its name. */
+/* mesh_format.c - which reader a mesh file goes to: its content decides (a binary STL named .obj is still an STL
+ * file, a PLY named .gltf still a PLY file), and each format's own check runs before assimp reads a byte; only OBJ,
+ * which has no signature and gtrace reads itself, is known by its name or as text. */
 #include "mesh_format.h"
 
 #include <stdio.h>
@@ -45,13 +46,17 @@ MeshFormat mesh_format_detect(const unsigned char *head, size_t n, unsigned long
         return MESH_FORMAT_STL;
     if (starts_with(head, n, "glTF"))
         return MESH_FORMAT_GLTF;
+    for (i = 0; i < n && (head[i] == ' ' || head[i] == '\t' || head[i] == '\r' || head[i] == '\n'); i++)
+        ;
+    if (i < n && head[i] == '{') /* JSON: glTF is the only mesh format of JSON */
+        return MESH_FORMAT_GLTF;
     const char *ext = extension(path);
     if ((n >= 6 && head[0] == 0x4d && head[1] == 0x4d && le32(head + 2) >= 6 && le32(head + 2) <= size) ||
         strcasecmp(ext, ".3ds") == 0) { /* the 3DS main chunk: id 0x4d4d and its length */
         snprintf(what, what_size, "%s", "a 3DS (3D Studio) file");
         return MESH_FORMAT_UNSUPPORTED;
     }
-    if (strcasecmp(ext, ".ply") == 0)
+    if (strcasecmp(ext, ".ply") == 0) /* not PLY by content: mesh_ply_check says why */
         return MESH_FORMAT_PLY;
     if (strcasecmp(ext, ".stl") == 0)
         return MESH_FORMAT_STL;

@@ -12,6 +12,13 @@
 /** Largest PLY or STL file in bytes (4 GiB less 16): assimp reads the checked bytes from memory, with a 32-bit
  * length. */
 #define MESH_MAX_FILE_BYTES 0xfffffff0ull
+/** Deepest nesting of a mesh file's nodes (assimp's node import and post-processing recurse over them). */
+#define MESH_MAX_NODE_DEPTH 256
+/** Most files (besides the mesh) a mesh file may name and assimp may open for it. */
+#define MESH_MAX_FILES 64
+/** Most nodes a glTF file's node tree expands to (a node named by n parents counts n times, with its subtree):
+ * assimp copies each, about 1 KB apiece. */
+#define GLTF_MAX_PLACEMENTS 100000
 /** The mesh formats gtrace reads, for messages. */
 #define MESH_FORMATS_READ "Wavefront OBJ (.obj), PLY (.ply), STL (.stl) and glTF 2.0 (.gltf, .glb)"
 
@@ -20,15 +27,18 @@ typedef enum MeshFormat {
     MESH_FORMAT_OBJ,        /**< mesh.c */
     MESH_FORMAT_PLY,        /**< mesh_ply.c's check, then assimp */
     MESH_FORMAT_STL,        /**< mesh_stl.c's check, then assimp */
-    MESH_FORMAT_GLTF,       /**< assimp, from the file (a .gltf may name buffer files beside it) */
+    MESH_FORMAT_GLTF,       /**< mesh_gltf.c's check, then assimp (a .gltf may name buffer files beside it) */
     MESH_FORMAT_UNSUPPORTED /**< a format gtrace does not read */
 } MeshFormat;
 
-/** The reader for a file whose first n bytes are head, of size bytes in all, named path. The content decides where
- * it is recognisable: a "ply" first line, a binary STL (84 + 50 bytes per triangle its header counts), "solid" at
- * the start (an ASCII STL), the "glTF" magic, a 3DS main chunk; else the extension (any case): .ply, .stl, .gltf,
- * .glb and .obj as named, .3ds and the other extensions assimp knows (mesh_assimp_reads_extension) unsupported; else
- * a file with a NUL byte in its first line (binary data) is unsupported and any other is OBJ. For an unsupported
+/** The reader for a file whose first n bytes are head, of size bytes in all, named path. The content decides: a
+ * "ply" first line is PLY, a binary STL (84 + 50 bytes per triangle its header counts) or "solid" at the start (an
+ * ASCII STL) is STL, the "glTF" magic (.glb) or a '{' as the first character besides white space (glTF's JSON) is
+ * glTF, a 3DS main chunk is unsupported. Else the name decides: .ply, .stl, .gltf and .glb go to that format's check
+ * (mesh_ply_check, mesh_stl_check, mesh_gltf_check), which refuses what its content is not, before assimp reads a
+ * byte; .3ds and the other extensions assimp knows (mesh_assimp_reads_extension) are unsupported, and so is a file
+ * with a NUL byte in its first line (binary data); any other is OBJ, which
+ * gtrace reads itself. For an unsupported
  * file, what (of what_size bytes) names what it is ("a 3DS (3D Studio) file", "a .fbx file"). */
 MeshFormat mesh_format_detect(const unsigned char *head, size_t n, unsigned long long size, const char *path,
                               char *what, size_t what_size);
@@ -43,10 +53,28 @@ int mesh_decimal_number(const char *w, size_t len);
 int mesh_assimp_reads_extension(const char *ext);
 /** Reads a PLY, STL or glTF 2.0 file through assimp (mesh_assimp.c): positions, normals and the first (u,v) set per
  * vertex, node transforms baked in, each assimp mesh's material index as the surface index. fd is the file, open,
- * and is closed. A PLY or STL file is read whole (at most MESH_MAX_FILE_BYTES) and checked (mesh_ply_check,
- * mesh_stl_check), and assimp reads those bytes; more than MESH_MAX_COUNT vertices or triangles are refused before
- * they are copied. Errors name the file. */
-int mesh_load_assimp(Object *o, const char *path, int fd, MeshFormat format, GError *err);
+ * and is closed. The file is read whole (at most MESH_MAX_FILE_BYTES; a glTF file of JSON at most JSON_MAX_BYTES)
+ * and checked (mesh_ply_check, mesh_stl_check, mesh_gltf_check), and assimp reads those bytes; the other files a
+ * glTF file names are opened only where files allows (NULL: everywhere), as regular files (mesh_assimp_io.h); more
+ * than MESH_MAX_COUNT vertices or triangles are refused before they are copied. Errors name the file. */
+int mesh_load_assimp(Object *o, const char *path, int fd, MeshFormat format, const MeshFiles *files, GError *err);
+
+/** What a checked glTF file places: the nodes its node tree expands to, and the vertices and triangles of the meshes
+ * summed over those placements (what the mesh baked from it holds, at most). */
+typedef struct MeshGltfCounts {
+    unsigned long long placements, verts, tris;
+    unsigned long long buffer_bytes; /**< the byteLength of all its buffers */
+} MeshGltfCounts;
+/** Checks a whole glTF 2.0 file (data, size bytes: JSON, or a .glb by its "glTF" magic) before assimp reads it
+ * (mesh_gltf.c): the .glb's header and chunk lengths against size; the JSON strict and nested at most JSON_MAX_DEPTH
+ * deep (scanned without recursion); asset.version "2.x"; each buffer's byteLength held by its data: URI, the .glb's
+ * BIN chunk or its file beside path (a relative name, allowed by files, a regular file of at least that many bytes);
+ * buffer views within their buffers, accessors (with a buffer view, not sparse) within their views; every index in
+ * range; nodes without cycles, at most MESH_MAX_NODE_DEPTH deep, expanding to at most GLTF_MAX_PLACEMENTS
+ * placements and MESH_MAX_COUNT placed vertices and triangles, which *counts receives. Errors are
+ * "PATH:LINE:COL: message" (a .glb's: in its JSON chunk) where there is a position. */
+int mesh_gltf_check(const char *path, const unsigned char *data, size_t size, const MeshFiles *files,
+                    MeshGltfCounts *counts, GError *err);
 
 /** Checks a whole PLY file (data, size bytes, and one more byte that may be written) before assimp reads it: a
  * "ply" line, one format line, element and property lines it understands, other header lines (comment, obj_info, a

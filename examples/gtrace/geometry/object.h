@@ -38,7 +38,14 @@ typedef struct Mesh {
     int *tri_uv;        /**< 3 uv indices per triangle or -1 */
     int *tri_normal;    /**< 3 normal indices per triangle or -1 */
     int *tri_surface;   /**< group (usemtl/g) index per triangle: the surface index */
+    size_t budget;      /**< bytes reserved for it against the memory budget (its arrays and the accelerator's copy
+                             and hierarchy, mesh_budget_bytes), released by mesh_free */
 } Mesh;
+
+/** The bytes a mesh of nverts vertices and ntris triangles is charged against the memory budget when it is read,
+ * before its arrays are allocated: its vertex and triangle arrays (with a normal and a (u,v) per vertex) and what
+ * the accelerator builds from it (Embree's vertex and index copies and its hierarchy, about 64 bytes a triangle). */
+size_t mesh_budget_bytes(size_t nverts, size_t ntris);
 
 /** One object: a shape in its own space, a transform to world space and a material. */
 typedef struct Object {
@@ -84,11 +91,21 @@ int object_instance(Object *o, Object *proto, GError *err);
 /** 1 for the kinds that are geometry themselves (not groups or instances). */
 int object_is_shape(const Object *o);
 /** Reads a mesh file into o: Wavefront OBJ (v, vt, vn, f with polygons as fans; usemtl/g start new surface
- * indices) here, PLY, STL and glTF 2.0 through assimp (mesh_format.h picks the reader by content, else by name).
+ * indices) here, PLY, STL and glTF 2.0 through assimp (mesh_format.h picks the reader by content; a
+ * name decides only for OBJ, which has no signature).
  * A format gtrace does not read (3DS, FBX, ...) fails with G_ERR_UNSUPPORTED. Errors name the file and the
  * parameter "file" (GError.param), where a scene file's reader places them. */
 int object_mesh_load(Object *o, const char *path, GError *err);
-/** Frees a mesh (NULL: no-op). */
+/** Where a mesh's reader may open files other than the mesh itself (a glTF's buffer files): allowed(ctx, path, err)
+ * is asked before each is opened (a scene's reader answers with greader_path_allowed, for --confine) and returns
+ * G_OK or a negative status with err filled; NULL allows every path. Every such file is also a regular file. */
+typedef struct MeshFiles {
+    int (*allowed)(void *ctx, const char *path, GError *err);
+    void *ctx;
+} MeshFiles;
+/** object_mesh_load with the files the mesh names opened only where files allows (NULL: everywhere). */
+int object_mesh_load_from(Object *o, const char *path, const MeshFiles *files, GError *err);
+/** Frees a mesh and releases its budget (NULL: no-op). */
 void mesh_free(Mesh *m);
 
 #endif

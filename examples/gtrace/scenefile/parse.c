@@ -115,6 +115,12 @@ static const char *const shape_params[] = {
 
 
 /* An object given as a value (a nested entry or a name), which must be one of gtrace's. */
+/* A mesh's own files (a glTF's buffers) are read by the scene's rules: under --confine when the load is confined. */
+static int mesh_file_allowed(void *reader, const char *path, GError *err)
+{
+    return greader_path_allowed(reader, path, err);
+}
+
 static int read_object(GReader *r, Object **out, GError *err)
 {
     void *obj = NULL;
@@ -261,7 +267,7 @@ int scene_parse_object(GReader *r, const void *vtable, void **object, GError *er
         case SHAPE_BOX: rc = object_box(o, lo, hi, err); break;
         case SHAPE_DISC: rc = object_disc(o, center, normal, radius, err); break;
         case SHAPE_CYLINDER: rc = object_cylinder(o, center, top, radius, open, err); break;
-        case SHAPE_MESH: rc = object_mesh_load(o, file, err); break;
+        case SHAPE_MESH: rc = object_mesh_load_from(o, file, &(MeshFiles){mesh_file_allowed, r}, err); break;
         case SHAPE_QUAD: rc = object_quad(o, center, edge1, edge2, err); break;
         case SHAPE_TRIANGLE: rc = object_triangle(o, center, edge1, pc, err); break;
         case SHAPE_GROUP: break;

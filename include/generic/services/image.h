@@ -111,6 +111,10 @@ typedef struct GImageWriteOptions {
     /** A display transform instead of the sRGB encoding (NULL: none). Only for 8-bit formats of RGB or RGBA
      * images: with a float format (.exr, .hdr) or fewer channels it is G_ERR_INVALID. */
     const GImageDisplay *display;
+    /** A line of text stored with a crop (full_width > 0) in formats with a display window (OpenEXR: the string
+     * attribute "generic:note"), read back by gimage_window; at most GIMAGE_NOTE_MAX - 1 bytes are kept. NULL or a
+     * whole image: none. gtrace records there what render a piece belongs to. */
+    const char *note;
 } GImageWriteOptions;
 
 /** Allocates a black image of the given size (channels 1..4); G_ERR_INVALID for bad sizes,
@@ -143,10 +147,14 @@ GENERIC_API GENERIC_NODISCARD int gimage_info(const char *path, int *width, int 
 /** Where an image file's pixels lie in its full picture: OpenEXR's data window inside its display window (a crop
  * written with GImageWriteOptions' x, y, full_width, full_height). Formats without windows report the image as
  * the whole picture (x = y = 0, full size = size). */
+/** Size of GImageWindow.note with its NUL. */
+#define GIMAGE_NOTE_MAX 512
+
 typedef struct GImageWindow {
     int x, y;                    /**< the top-left pixel of the data, relative to the display window's corner */
     int width, height;           /**< the data's size: what gimage_read returns */
     int full_width, full_height; /**< the display window's size */
+    char note[GIMAGE_NOTE_MAX];  /**< the note a crop was written with (GImageWriteOptions.note), "" for none */
 } GImageWindow;
 
 /** Reads the data and display windows of a file's header, with the checks of gimage_info. G_ERR_IO when the

@@ -7,7 +7,9 @@
  *   gen_bfc.c    BFC-450 matrices: long tokens, far and huge grids, rows that lie about their length
  *   gen_image.c  PNG, HDR, PFM, EXR and PPM files whose headers claim huge sizes over truncated bodies, and
  *                mutated IFF and DPX headers named .png, .hdr or .pfm
- *                (and, for the probe kind, HDR and PFM only, with probe-like aspect ratios) */
+ *                (and, for the probe kind, HDR and PFM only, with probe-like aspect ratios)
+ *   gen_mesh.c   glTF nested deeply (JSON, nodes), node DAGs, lying accessors and .glb chunks, renamed PLY
+ *                (gtrace's meshes: tests/fuzz/run_mesh_generated.sh) */
 #ifndef GENERIC_TESTS_FUZZ_GEN_H
 #define GENERIC_TESTS_FUZZ_GEN_H
 
@@ -71,5 +73,7 @@ extern const GenFamily gen_image_families[];
 extern const int gen_image_count;
 extern const GenFamily gen_probe_families[];
 extern const int gen_probe_count;
+extern const GenFamily gen_mesh_families[];
+extern const int gen_mesh_count;
 
 #endif
