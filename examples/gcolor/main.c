@@ -19,6 +19,8 @@ static void usage(FILE *f)
             "usage: gcolor [--models LIST] [--rgb R,G,B]... [--plugin FILE.so]...\n"
             "       gcolor list [--plugin FILE.so]...          the registered colour models, one per line\n"
             "       gcolor check MODEL [--step NM] [--plugin FILE.so]...   conformance checks of MODEL\n"
+            "       gcolor convert [--colormodel M] [--role reflectance|light] [--samples] LITERAL...\n"
+            "                                           one line per colour literal (gcolor convert --help)\n"
             "       gcolor --help | --version\n"
             "Prints sample colours in every colour model (or the comma-separated LIST): the value the model\n"
             "stores, its brightness, and its conversion back to linear sRGB and CIE 1931 XYZ.\n"
@@ -171,7 +173,8 @@ static int report_args(int argc, char **argv, ReportArgs *a)
     }
     char **rest = cli_operands(&p, &nrest);
     if (nrest > 0) {
-        fprintf(stderr, "gcolor: unknown command or argument '%s' (expected list or check; see gcolor --help)\n",
+        fprintf(stderr,
+                "gcolor: unknown command or argument '%s' (expected list, check or convert; see gcolor --help)\n",
                 rest[0]);
         return CLI_USAGE;
     }
@@ -237,6 +240,8 @@ int main(int argc, char **argv)
         return gcolor_check(argc - 1, argv + 1);
     if (argc > 1 && strcmp(argv[1], "list") == 0)
         return list_models(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "convert") == 0)
+        return gcolor_convert_command(argc - 1, argv + 1);
     static ReportArgs a;
     if ((rc = report_args(argc, argv, &a)) >= 0)
         return rc;
