@@ -22,14 +22,15 @@
 static void convert_usage(FILE *f)
 {
     fprintf(f,
-            "usage: gcolor convert [--colormodel M] [--role reflectance|light] [--samples] [--plugin FILE.so]...\n"
-            "                      LITERAL...\n"
+            "usage: gcolor convert [--colormodel M] [--step NM] [--role reflectance|light] [--samples]\n"
+            "                      [--plugin FILE.so]... LITERAL...\n"
             "Prints, for each colour literal (anything a file accepts as a colour: 'rgb 1 0 0', 'illuminant F11',\n"
             "'blackbody 2856', 'line 550', 'spectrum { ... }'), one line:\n"
             "  LITERAL: XYZ X Y Z xy x y sRGB r g b brightness B\n"
             "the literal (its white space made single spaces), its CIE 1931 XYZ, chromaticity, linear sRGB and the\n"
             "model's brightness, in the role (a reflectance is seen under D65 of Y = 1; a light is its own spectrum).\n"
             "  --colormodel M  the colour model (default spectrum)\n"
+            "  --step NM       the model's sample spacing in nm (a spectral model; default its own)\n"
             "  --role R        reflectance (default) or light\n"
             "  --samples       then ' samples NM:VALUE ...': the model's own values at its wavelengths (a\n"
             "                  re-radiation matrix: its diagonal); refused for a model without wavelengths\n"
@@ -38,6 +39,7 @@ static void convert_usage(FILE *f)
 
 typedef struct ConvertArgs {
     const char *model;
+    double step;
     GColorRole role;
     int samples;
 } ConvertArgs;
@@ -158,8 +160,9 @@ int gcolor_convert_command(int argc, char **argv)
                                              {"colormodel", required_argument, NULL, 'm'},
                                              {"role", required_argument, NULL, 'r'},
                                              {"samples", no_argument, NULL, 's'},
+                                             {"step", required_argument, NULL, 't'},
                                              {0}};
-    ConvertArgs a = {"spectrum", GCOLOR_REFLECTANCE, 0};
+    ConvertArgs a = {"spectrum", 0.0, GCOLOR_REFLECTANCE, 0};
     CliParser p;
     cli_begin(&p, "gcolor convert", argc, argv, "h", longopts);
     int c, n, status = CLI_OK;
@@ -170,6 +173,10 @@ int gcolor_convert_command(int argc, char **argv)
             a.model = optarg;
         else if (c == 's')
             a.samples = 1;
+        else if (c == 't' && cli_double("gcolor convert", "--step", optarg, 0.1, 400.0, &a.step) != 0)
+            return CLI_USAGE;
+        else if (c == 't')
+            continue;
         else if (c == 'r' && (strcmp(optarg, "reflectance") == 0 || strcmp(optarg, "light") == 0))
             a.role = strcmp(optarg, "light") == 0 ? GCOLOR_LIGHT : GCOLOR_REFLECTANCE;
         else if (c == 'r')
@@ -188,9 +195,10 @@ int gcolor_convert_command(int argc, char **argv)
     }
     GError err;
     GColorModel *m = NULL;
-    if (gcolormodel_create(a.model, NULL, &m, &err) != G_OK) {
+    GColorModelOptions mopt = {.step_nm = a.step};
+    if (gcolormodel_create(a.model, &mopt, &m, &err) != G_OK) {
         fprintf(stderr, "gcolor convert: %s\n", err.message);
-        return 1;
+        return a.step > 0.0 ? CLI_USAGE : 1;
     }
     if (a.samples && gcolormodel_wavelengths(m, NULL, 0) == 0) {
         gcolormodel_destroy(m);

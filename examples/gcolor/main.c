@@ -17,9 +17,10 @@ static void usage(FILE *f)
 {
     fprintf(f,
             "usage: gcolor [--models LIST] [--rgb R,G,B]... [--plugin FILE.so]...\n"
-            "       gcolor list [--plugin FILE.so]...          the registered colour models, one per line\n"
+            "       gcolor list [--illuminants] [--plugin FILE.so]...   the registered colour models (or the\n"
+            "                                           named illuminants), one per line\n"
             "       gcolor check MODEL [--step NM] [--plugin FILE.so]...   conformance checks of MODEL\n"
-            "       gcolor convert [--colormodel M] [--role reflectance|light] [--samples] LITERAL...\n"
+            "       gcolor convert [--colormodel M] [--step NM] [--role reflectance|light] [--samples] LITERAL...\n"
             "                                           one line per colour literal (gcolor convert --help)\n"
             "       gcolor --help | --version\n"
             "Prints sample colours in every colour model (or the comma-separated LIST): the value the model\n"
@@ -92,22 +93,29 @@ static int report_model(const char *model_name, const Sample *samples, int n)
 
 static void list_usage(FILE *f)
 {
-    fprintf(f, "usage: gcolor list [--plugin FILE.so]...\nThe registered colour models, one per line.\n"
-               CLI_EXIT_STATUS_HELP);
+    fprintf(f, "usage: gcolor list [--illuminants] [--plugin FILE.so]...\nThe registered colour models, one per line;\n"
+               "with --illuminants the named CIE illuminants of `illuminant NAME` instead.\n" CLI_EXIT_STATUS_HELP);
 }
 
-/* `gcolor list`: the registered models, one per line. */
+/* `gcolor list`: the registered models, or with --illuminants the named illuminants, one per line. */
 static int list_models(int argc, char **argv)
 {
-    static const struct option longopts[] = {CLI_COMMON_OPTIONS, {0}};
+    static const struct option longopts[] = {CLI_COMMON_OPTIONS, {"illuminants", no_argument, NULL, 'i'}, {0}};
     CliParser p;
     cli_begin(&p, "gcolor list", argc, argv, "h", longopts);
-    int c, n, status = CLI_OK;
-    if ((c = cli_next_own(&p, "gcolor", list_usage, &status)) != -1) /* list has no options of its own */
-        return c == CLI_EXIT ? status : CLI_USAGE;
+    int c, n, status = CLI_OK, illuminants = 0;
+    while ((c = cli_next_own(&p, "gcolor", list_usage, &status)) != -1) {
+        if (c != 'i')
+            return c == CLI_EXIT ? status : CLI_USAGE;
+        illuminants = 1;
+    }
     char **rest = cli_operands(&p, &n);
     if (n > 0)
         return cli_usage_error("gcolor list", "unexpected argument '%s'", rest[0]);
+    for (int i = 0; illuminants && gcie_illuminant_name(i); i++)
+        printf("%s\n", gcie_illuminant_name(i));
+    if (illuminants)
+        return 0;
     const GTypeInfo *types[64];
     int k = gregistry_list(GKIND_COLORMODEL, types, 64);
     for (int i = 0; i < k && i < 64; i++)
