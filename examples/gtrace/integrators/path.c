@@ -180,7 +180,7 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
     for (int i = 0; i < s->nlights; i++) {
         const Light *l = s->lights[i];
         lt.blocked = 0;
-        if (l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT || l->kind == LIGHT_DIRECTIONAL) {
+        if (l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT || l->kind == LIGHT_DIRECTIONAL || l->kind == LIGHT_IES) {
             CHECK(light_shade(c, l, sp, facing, media, to_viewer, opaque, &lt, out));
             continue;
         }
