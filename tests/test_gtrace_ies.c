@@ -18,8 +18,8 @@ static char *ies_text(int type, double lumens, int nv, double v0, double v1, int
     size_t cap = 4096 + (size_t)(nv + nh + nv * nh) * 24;
     char *t = malloc(cap), *p = t;
     assert_non_null(t);
-    p += sprintf(p, "IESNA:LM-63-2002\n[TEST] synthetic\n[MANUFAC] none\nTILT=NONE\n1 %.6f 1 %d %d %d 2 0 0 0\n1 1 100\n",
-                 lumens, nv, nh, type);
+    p += sprintf(p, "IESNA:LM-63-2002\n[TEST] synthetic\n[MANUFAC] none\nTILT=NONE\n");
+    p += sprintf(p, "1 %.6f 1 %d %d %d 2 0 0 0\n1 1 100\n", lumens, nv, nh, type);
     for (int i = 0; i < nv; i++)
         p += sprintf(p, "%.6g ", nv > 1 ? v0 + (v1 - v0) * i / (nv - 1) : v0);
     p += sprintf(p, "\n");
@@ -261,14 +261,15 @@ static void test_hostile(void **state)
     char *bad = write_text("bad.ies", t = replaced(good, "100 90 70", "100 9x 70"));
     free(t);
     char scene[512];
-    snprintf(scene, sizeof scene, "light ies { file \"%s\" }\n", bad);
+    snprintf(scene, sizeof scene, "light ies { file \"%s\" color illuminant A }\n", bad);
     GError err;
     assert_int_equal(gtrace_register_types(&err), G_OK);
     Scene *s = NULL;
     assert_true(scene_load(write_text("bad.scene", scene), "rgb", &s, &err) < 0);
     print_message("scene: %s\n", err.message);
     assert_non_null(strstr(err.message, "bad.ies:8:5:"));
-    assert_true(scene_load(write_text("nofile.scene", "light ies { position <0, 1, 0> }\n"), "rgb", &s, &err) < 0);
+    const char *nofile = "light ies { position <0, 1, 0> color blackbody 3000 }\n";
+    assert_true(scene_load(write_text("nofile.scene", nofile), "rgb", &s, &err) < 0);
     assert_non_null(strstr(err.message, "needs its file"));
 }
 

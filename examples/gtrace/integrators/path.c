@@ -9,7 +9,7 @@
  * re-radiates the light that really arrives, at every bounce. The weight's brightness only steers Russian
  * roulette (after PATH_RR_START bounces a path survives with probability min(1, throughput brightness)).
  *
- * Lights. Point, spot and directional lights, including the directional lights a probe technique (mediancut,
+ * Lights. Point, spot, directional and IES lights, including the directional lights a probe technique (mediancut,
  * adaptive, kmeans, irradiance, variance) makes, are delta lights: NEE only, through lights.c's light_shade
  * (the same shadow rule as the Whitted tracer: transmission through non-opaque surfaces along the straight
  * line). Sphere and rectangle lights and a `light probe` of technique reference (the environment, importance
@@ -33,6 +33,10 @@
  * non-delta bounce see it, camera rays and the mirror images they see do not. A convex Lambert surface of
  * albedo a so shows a * ambient, as in the Whitted tracer (material.ambient of Lambert), but occluded and
  * interreflected.
+ *
+ * Glowing geometry (lights/emissive.h): the emissive primitives are one more light, one NEE sample per vertex from
+ * the alias table, MIS-weighted; a material-sampled ray that meets one weighs its emission against the set's
+ * density for that direction (path_radiance hands shade_path the weight), other emission counts fully.
  *
  * Dispersion (hero band): when the relative index at a non-opaque surface differs between the wavelength
  * groups (bands.h) and the path does not carry a group yet, one group is chosen uniformly; the material is

@@ -121,9 +121,9 @@ static const GParamInfo ies_params[] = {
     P_VEC("direction", "<0, -1, 0>", "the photometric axis: type C's nadir (vertical angle 0), type B's aim"),
     P_VEC("along", "perpendicular to direction", "type C: the direction of horizontal angle 0 (the luminaire's "
           "length); type B: the polar axis; its part perpendicular to direction is taken"),
-    {"color", GPARAM_NAMED, "color", "rgb 1 1 1", "luminance > 0",
-     "the light's spectrum: the candela are converted with its luminous efficacy (683 lm/W times its luminous "
-     "sum), so the light is in W/(sr nm)"},
+    {"color", GPARAM_NAMED, "color", NULL, "luminance > 0",
+     "the light's colour, e.g. illuminant A: the candela are converted with its luminous efficacy (683 lm/W times "
+     "its luminous sum), so the light is in W/(sr nm)"},
     {"scale", GPARAM_NAMED, "number", "1", "[0, 1e30]", "multiplies the intensity"},
     {NULL},
 };

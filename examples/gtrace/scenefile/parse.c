@@ -314,8 +314,8 @@ static const LightKind light_kinds[] = {LIGHT_POINT, LIGHT_DIRECTIONAL, LIGHT_SP
 static const char *const light_color_key[] = {"intensity", "irradiance", "intensity", "radiance",
                                               "radiance",  "color",      "color",     "color"};
 
-/* An IES light's table and frame, and its colour made the light of one candela: the colour's spectrum scaled so
- * that 683 lm/W times its luminous sum (the sum of the spectrum times ybar, 1 nm steps over 380..780 nm) is 1 cd
+/* An IES light's table and frame, and its colour made the light of one candela: the colour scaled so that 683 lm/W
+ * times its luminous sum (the sum of its power times ybar, 1 nm steps over 380..780 nm) is 1 cd
  * (times scale); the light's colour is then per W/(sr nm) and the candela of the table multiply it. */
 static int ies_light_setup(GReader *r, Light *l, const char *file, GVec3 dir, const GVec3 *along, double scale,
                            GColor *color, GError *err)
@@ -340,7 +340,8 @@ static int ies_light_setup(GReader *r, Light *l, const char *file, GVec3 dir, co
     }
     int rc = gcolor_to_xyz(color, GCOLOR_LIGHT, xyz);
     if (rc != G_OK || !(xyz[1] > 0.0))
-        return greader_error(r, err, "an IES light's color gives its spectrum: its luminance must be > 0");
+        return greader_error(r, err, "an IES light's color gives its power over wavelength: its luminance must be "
+                             "> 0");
     if ((rc = gcolor_scale(color, color, scale / (683.0 * xyz[1] * ysum))) != G_OK)
         return greader_error(r, err, "the colour cannot be scaled: %s", gstatus_string(rc));
     l->ies = gmem_calloc(1, sizeof *l->ies);
@@ -429,12 +430,6 @@ int scene_parse_light(GReader *r, const void *vtable, void **object, GError *err
         }
         if (rc < 0)
             break;
-    }
-    if (rc == G_OK && !color.v && type == L_IES) { /* the spectrum of white light: D65 */
-        static const double white[3] = {1, 1, 1};
-        rc = gcolor_alloc(&color, model) == G_OK && gcolor_from_rgb(&color, white, GCOLOR_LIGHT) == G_OK
-                 ? G_OK
-                 : greader_error(r, err, "out of memory");
     }
     if (rc == G_OK && !color.v)
         rc = greader_error(r, err, "the light needs its %s (a colour)", light_color_key[type]);

@@ -6,7 +6,8 @@
  *                towers, wide DAGs, many entries, extreme numbers, long tokens, control bytes and BOMs
  *   gen_bfc.c    BFC-450 matrices: long tokens, far and huge grids, rows that lie about their length
  *   gen_image.c  PNG, HDR, PFM, EXR and PPM files whose headers claim huge sizes over truncated bodies
- *                (and, for the probe kind, HDR and PFM only, with probe-like aspect ratios) */
+ *                (and, for the probe kind, HDR and PFM only, with probe-like aspect ratios)
+ *   gen_ies.c    IES LM-63 files: lying counts, truncation, NaN and words, bad angle tables, long headers */
 #ifndef GENERIC_TESTS_FUZZ_GEN_H
 #define GENERIC_TESTS_FUZZ_GEN_H
 
@@ -70,5 +71,7 @@ extern const GenFamily gen_image_families[];
 extern const int gen_image_count;
 extern const GenFamily gen_probe_families[];
 extern const int gen_probe_count;
+extern const GenFamily gen_ies_families[];
+extern const int gen_ies_count;
 
 #endif

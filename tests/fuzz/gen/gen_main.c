@@ -2,7 +2,7 @@
  *
  *   fuzz_gen KIND SEED COUNT DIR [BUDGET]
  *
- * KIND is reader, bfc, image or probe (the targets of tests/fuzz/); input i is DIR/NNN-FAMILY.EXT. The first
+ * KIND is reader, bfc, image, probe or ies (the targets of tests/fuzz/); input i is DIR/NNN-FAMILY.EXT. The first
  * inputs take each family once at the full BUDGET (bytes, default 4 MiB), the rest a random family at a
  * log-uniform size up to it. Input i depends only on (KIND, SEED, i, BUDGET), so one failing input is
  * reproduced from its name alone. Prints one line per input: path, family, size. */
@@ -22,11 +22,12 @@ static const struct {
     {"bfc", gen_bfc_families, &gen_bfc_count},
     {"image", gen_image_families, &gen_image_count},
     {"probe", gen_probe_families, &gen_probe_count},
+    {"ies", gen_ies_families, &gen_ies_count},
 };
 
 static int usage(void)
 {
-    fprintf(stderr, "usage: fuzz_gen reader|bfc|image|probe SEED COUNT DIR [BUDGET_BYTES]\n");
+    fprintf(stderr, "usage: fuzz_gen reader|bfc|image|probe|ies SEED COUNT DIR [BUDGET_BYTES]\n");
     return 2;
 }
 
