@@ -22,8 +22,8 @@
 static void convert_usage(FILE *f)
 {
     fprintf(f,
-            "usage: gcolor convert [--colormodel M] [--step NM] [--role reflectance|light] [--samples]\n"
-            "                      [--plugin FILE.so]... LITERAL...\n"
+            "usage: gcolor convert [--colormodel M] [--step NM] [--role reflectance|light] [--illuminant N]\n"
+            "                      [--samples] [--plugin FILE.so]... LITERAL...\n"
             "Prints, for each colour literal (anything a file accepts as a colour: 'rgb 1 0 0', 'illuminant F11',\n"
             "'blackbody 2856', 'line 550', 'spectrum { ... }'), one line:\n"
             "  LITERAL: XYZ X Y Z xy x y sRGB r g b brightness B\n"
@@ -32,6 +32,8 @@ static void convert_usage(FILE *f)
             "  --colormodel M  the colour model (default spectrum)\n"
             "  --step NM       the model's sample spacing in nm (a spectral model; default its own)\n"
             "  --role R        reflectance (default) or light\n"
+            "  --illuminant N  a reflectance seen under the named illuminant N (gcolor list --illuminants) of Y = 1\n"
+            "                  instead of D65: its XYZ and xy under N, and sRGB of that XYZ (not adapted)\n"
             "  --samples       then ' samples NM:VALUE ...': the model's own values at its wavelengths (a\n"
             "                  re-radiation matrix: its diagonal); refused for a model without wavelengths\n"
             "  -h, --help      this text\n" CLI_EXIT_STATUS_HELP);
@@ -39,9 +41,11 @@ static void convert_usage(FILE *f)
 
 typedef struct ConvertArgs {
     const char *model;
+    const char *illuminant; /**< a reflectance's viewing illuminant (NULL: D65, the library's) */
     double step;
     GColorRole role;
     int samples;
+    const GSpectrumNM *viewing; /**< the viewing illuminant's spectrum (Y = 1), or NULL */
 } ConvertArgs;
 
 /* The literal with every run of white space made one space and the ends trimmed, into out (size n). */
@@ -117,6 +121,21 @@ static int print_samples(const GColor *c, GColorRole role)
     return rc;
 }
 
+/* The XYZ of reflectance c seen under the illuminant `light` (Y = 1): the reflectance's spectrum times the light's,
+ * as a light (so white gives the illuminant's own XYZ, Y = 1), and the sRGB of that XYZ (no chromatic adaptation). */
+static int seen_under(const GColor *c, const GSpectrumNM *light, double xyz[3], double rgb[3], GError *err)
+{
+    static GSpectrumNM s;
+    int rc = gcolor_to_nm(c, GCOLOR_REFLECTANCE, &s);
+    if (rc != G_OK)
+        return gerror_set(err, rc, "the reflectance's spectrum cannot be had: %s", gstatus_string(rc));
+    for (int i = 0; i < GNM_COUNT; i++)
+        s.v[i] *= light->v[i];
+    gcie_nm_to_xyz(&s, GCOLOR_LIGHT, xyz);
+    gcie_xyz_to_rgb(xyz, rgb);
+    return G_OK;
+}
+
 /* One literal's line; 0, or 1 after a message on stderr. */
 static int convert_one(const char *literal, const GColorModel *m, const ConvertArgs *a)
 {
@@ -131,7 +150,9 @@ static int convert_one(const char *literal, const GColorModel *m, const ConvertA
     int rc = read_literal(literal, m, &lib, &err);
     if (rc == G_OK)
         rc = glibrary_color(lib, "c", a->role, &c, &err);
-    if (rc == G_OK && ((rc = gcolor_to_xyz(&c, a->role, xyz)) != G_OK || (rc = gcolor_to_rgb(&c, a->role, rgb))))
+    if (rc == G_OK && a->viewing)
+        rc = seen_under(&c, a->viewing, xyz, rgb, &err);
+    else if (rc == G_OK && ((rc = gcolor_to_xyz(&c, a->role, xyz)) != G_OK || (rc = gcolor_to_rgb(&c, a->role, rgb))))
         gerror_set(&err, rc, "the conversion to XYZ or sRGB failed: %s", gstatus_string(rc));
     double bright = rc == G_OK ? gcolor_brightness(&c) : 0.0;
     if (rc == G_OK && !isfinite(xyz[0] + xyz[1] + xyz[2] + rgb[0] + rgb[1] + rgb[2] + bright))
@@ -161,8 +182,9 @@ int gcolor_convert_command(int argc, char **argv)
                                              {"role", required_argument, NULL, 'r'},
                                              {"samples", no_argument, NULL, 's'},
                                              {"step", required_argument, NULL, 't'},
+                                             {"illuminant", required_argument, NULL, 'i'},
                                              {0}};
-    ConvertArgs a = {"spectrum", 0.0, GCOLOR_REFLECTANCE, 0};
+    ConvertArgs a = {.model = "spectrum", .role = GCOLOR_REFLECTANCE};
     CliParser p;
     cli_begin(&p, "gcolor convert", argc, argv, "h", longopts);
     int c, n, status = CLI_OK;
@@ -173,6 +195,8 @@ int gcolor_convert_command(int argc, char **argv)
             a.model = optarg;
         else if (c == 's')
             a.samples = 1;
+        else if (c == 'i')
+            a.illuminant = optarg;
         else if (c == 't' && cli_double("gcolor convert", "--step", optarg, 0.1, 400.0, &a.step) != 0)
             return CLI_USAGE;
         else if (c == 't')
@@ -184,6 +208,14 @@ int gcolor_convert_command(int argc, char **argv)
         else
             return CLI_USAGE;
     }
+    static GSpectrumNM viewing;
+    if (a.illuminant && gcie_illuminant_nm(a.illuminant, &viewing) != G_OK)
+        return cli_usage_error("gcolor convert", "--illuminant: unknown illuminant '%s' (gcolor list --illuminants)",
+                               a.illuminant);
+    if (a.illuminant && a.role != GCOLOR_REFLECTANCE)
+        return cli_usage_error("gcolor convert", "--illuminant %s: only a reflectance is seen under an illuminant",
+                               a.illuminant);
+    a.viewing = a.illuminant ? &viewing : NULL;
     char **literals = cli_operands(&p, &n);
     if (n == 0)
         return cli_usage_error("gcolor convert", "no colour literal given%s", "");

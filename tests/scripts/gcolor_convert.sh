@@ -9,7 +9,9 @@ GC="$BUILD/bin/gcolor"
 need_program "$GC"
 
 # field LINE NAME K: the K-th number after the word NAME in LINE
-field() { echo "$1" | awk -v name="$2" -v k="$3" '{ for (i = 1; i <= NF; i++) if ($i == name) { print $(i + k); exit } }'; }
+field() {
+    echo "$1" | awk -v name="$2" -v k="$3" '{ for (i = 1; i <= NF; i++) if ($i == name) { print $(i + k); exit } }'
+}
 # near WHAT GOT WANT TOL
 near() {
     awk -v g="$2" -v w="$3" -v t="$4" 'BEGIN { d = g - w; if (d < 0) d = -d; exit !(g != "" && d <= t) }' ||
@@ -76,6 +78,14 @@ A 0.44757 0.40745 2e-4
 D75 0.29902 0.31485 2e-4
 LED-B1 0.4560 0.4078 3e-4
 LIST
+# a reflectance seen under a named illuminant: under D65 as by default, white under F11 is F11's white point
+d=$("$GC" convert --illuminant D65 'rgb 0.5 0.2 0.1') plain=$("$GC" convert 'rgb 0.5 0.2 0.1')
+near "under D65: X" "$(field "$d" XYZ 1)" "$(field "$plain" XYZ 1)" 1e-6
+near "under D65: Z" "$(field "$d" XYZ 3)" "$(field "$plain" XYZ 3)" 1e-6
+w=$("$GC" convert --illuminant F11 --step 1 'rgb 1 1 1')
+near "white under F11: x" "$(field "$w" xy 1)" 0.38050 2e-4
+near "white under F11: y" "$(field "$w" xy 2)" 0.37690 2e-4
+near "white under F11: Y" "$(field "$w" XYZ 2)" 1 1e-4
 # every listed name reads as a literal, and a name not listed does not
 count=0
 for name in $("$GC" list --illuminants); do
@@ -93,7 +103,8 @@ grep -q "expected a number" "$TMP/err" || fail "a short rgb literal: no reader m
 [ $? = 1 ] || fail "two entries in one literal are not status 1"
 "$GC" convert 'illuminant Q9' > /dev/null 2> "$TMP/err"
 [ $? = 1 ] || fail "an unknown illuminant is not status 1"
-for args in "--colormodel nosuch rgb_1" "--role nosuch x" "" "--colormodel rgb --samples x" "--step 7 x" "--step -1 x"; do
+for args in "--colormodel nosuch rgb_1" "--role nosuch x" "" "--colormodel rgb --samples x" "--step 7 x" "--step -1 x" \
+    "--illuminant D93 x" "--illuminant A --role light x"; do
     # shellcheck disable=SC2086
     "$GC" convert $args > /dev/null 2>&1
     [ $? = 2 ] || fail "gcolor convert $args: not status 2"
