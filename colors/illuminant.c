@@ -1,12 +1,19 @@
-/* illuminant.c - the colour literal `illuminant D65|A|E`: a CIE standard illuminant, scaled to luminance Y = 1. */
+/* illuminant.c - the colour literal `illuminant NAME`: a CIE illuminant (A, B, C, D50, D55, D65, D75, E, F1..F12,
+ * LED-B1..B5, LED-BH1, LED-RGB1, LED-V1, LED-V2; gcie_illuminant_name lists them), scaled to luminance Y = 1. */
 #include "generic/colorspec.h"
 #include "generic/plugin.h"
 #include "generic/reader.h"
 
+#define ILLUMINANT_MAX_NAMES 64
+
 static int parse_illuminant(GReader *r, const void *vt, void **object, GError *err)
 {
     (void)vt;
-    static const char *const names[] = {"D65", "A", "E", NULL};
+    const char *names[ILLUMINANT_MAX_NAMES + 1];
+    int n = 0;
+    while (n < ILLUMINANT_MAX_NAMES && gcie_illuminant_name(n))
+        names[n] = gcie_illuminant_name(n), n++;
+    names[n] = NULL;
     int which = 0;
     int rc = greader_choice(r, names, &which, err);
     if (rc != G_OK)
@@ -24,9 +31,11 @@ static int parse_illuminant(GReader *r, const void *vt, void **object, GError *e
 }
 
 static const GParamInfo illuminant_params[] = {
-    {"NAME", GPARAM_POSITIONAL, "choice", NULL, "D65, A, E", "the CIE illuminant, of Y = 1"},
+    {"NAME", GPARAM_POSITIONAL, "choice", NULL,
+     "A, B, C, D50, D55, D65, D75, E, F1..F12, LED-B1..B5, LED-BH1, LED-RGB1, LED-V1, LED-V2",
+     "the CIE illuminant (CIE 15:2004 and CIE 015:2018 tables), of Y = 1"},
     {NULL},
 };
 
 GENERIC_TYPE_NAMED_PARAMS(color_illuminant, GKIND_COLOR, "illuminant", parse_illuminant,
-                          "CIE illuminant, Y = 1: illuminant D65|A|E", NULL, illuminant_params);
+                          "CIE illuminant, Y = 1: illuminant D65|A|F11|LED-B3|...", NULL, illuminant_params);

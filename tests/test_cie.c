@@ -67,6 +67,40 @@ static void test_equal_energy_and_a(void **state)
     assert_true(gcie_illuminant("nope", 500.0) < 0.0);
 }
 
+/* Every named illuminant is a light of Y = 1 on the 1 nm grid, the listed names and only they are known, and the
+ * chromaticities of a few are the CIE's published ones (CIE 15:2004, 5 nm sums over 380..780 nm). */
+static void test_named_illuminants(void **state)
+{
+    (void)state;
+    static GSpectrumNM s;
+    double xyz[3], x, y;
+    int n = 0;
+    for (; gcie_illuminant_name(n); n++) {
+        assert_int_equal(gcie_illuminant_nm(gcie_illuminant_name(n), &s), G_OK);
+        gcie_nm_to_xyz(&s, GCOLOR_LIGHT, xyz);
+        assert_true(fabs(xyz[1] - 1.0) < 1e-6);
+    }
+    assert_int_equal(n, 29);
+    assert_null(gcie_illuminant_name(-1));
+    static const struct {
+        const char *name;
+        double x, y;
+    } cie[] = {{"F2", 0.37210, 0.37510}, {"F11", 0.38050, 0.37690}, {"D50", 0.34570, 0.35850},
+               {"C", 0.31006, 0.31616},  {"F7", 0.31290, 0.32920},  {"LED-B3", 0.37560, 0.37230}};
+    for (size_t i = 0; i < sizeof cie / sizeof *cie; i++) {
+        assert_int_equal(gcie_illuminant_nm(cie[i].name, &s), G_OK);
+        gcie_nm_to_xyz(&s, GCOLOR_LIGHT, xyz);
+        xy_of(xyz, &x, &y);
+        printf("%s: xy = %.5f %.5f\n", cie[i].name, x, y);
+        assert_true(fabs(x - cie[i].x) < 1e-4 && fabs(y - cie[i].y) < 1e-4);
+    }
+    assert_int_equal(gcie_illuminant_nm("F13", &s), G_ERR_NOTFOUND);
+    assert_int_equal(gcie_illuminant_nm("led-b1", &s), G_ERR_NOTFOUND);
+    assert_int_equal(gcie_illuminant_nm(NULL, &s), G_ERR_NOTFOUND);
+    assert_true(gcie_illuminant("F13", 500.0) < 0.0);
+    assert_true(gcie_illuminant("F2", 300.0) == 0.0 && gcie_illuminant("F2", 546.0) > 0.0);
+}
+
 static void test_cmf_values(void **state)
 {
     (void)state;
@@ -271,7 +305,7 @@ int main(void)
         cmocka_unit_test(test_d65_white_point), cmocka_unit_test(test_equal_energy_and_a),
         cmocka_unit_test(test_cmf_values),      cmocka_unit_test(test_tables_match_colord),
         cmocka_unit_test(test_blackbody),       cmocka_unit_test(test_srgb_matrices),
-        cmocka_unit_test(test_rgb_basis),
+        cmocka_unit_test(test_rgb_basis),       cmocka_unit_test(test_named_illuminants),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

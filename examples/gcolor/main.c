@@ -17,8 +17,11 @@ static void usage(FILE *f)
 {
     fprintf(f,
             "usage: gcolor [--models LIST] [--rgb R,G,B]... [--plugin FILE.so]...\n"
-            "       gcolor list [--plugin FILE.so]...          the registered colour models, one per line\n"
+            "       gcolor list [--illuminants] [--plugin FILE.so]...   the registered colour models (or the\n"
+            "                                           named illuminants), one per line\n"
             "       gcolor check MODEL [--step NM] [--plugin FILE.so]...   conformance checks of MODEL\n"
+            "       gcolor convert [--colormodel M] [--step NM] [--role reflectance|light] [--samples] LITERAL...\n"
+            "                                           one line per colour literal (gcolor convert --help)\n"
             "       gcolor --help | --version\n"
             "Prints sample colours in every colour model (or the comma-separated LIST): the value the model\n"
             "stores, its brightness, and its conversion back to linear sRGB and CIE 1931 XYZ.\n"
@@ -92,22 +95,29 @@ static int report_model(const char *model_name, const Sample *samples, int n)
 
 static void list_usage(FILE *f)
 {
-    fprintf(f, "usage: gcolor list [--plugin FILE.so]...\nThe registered colour models, one per line.\n"
-               CLI_EXIT_STATUS_HELP);
+    fprintf(f, "usage: gcolor list [--illuminants] [--plugin FILE.so]...\nThe registered colour models, one per line;\n"
+               "with --illuminants the named CIE illuminants of `illuminant NAME` instead.\n" CLI_EXIT_STATUS_HELP);
 }
 
-/* `gcolor list`: the registered models, one per line. */
+/* `gcolor list`: the registered models, or with --illuminants the named illuminants, one per line. */
 static int list_models(int argc, char **argv)
 {
-    static const struct option longopts[] = {CLI_COMMON_OPTIONS, {0}};
+    static const struct option longopts[] = {CLI_COMMON_OPTIONS, {"illuminants", no_argument, NULL, 'i'}, {0}};
     CliParser p;
     cli_begin(&p, "gcolor list", argc, argv, "h", longopts);
-    int c, n, status = CLI_OK;
-    if ((c = cli_next_own(&p, "gcolor", list_usage, &status)) != -1) /* list has no options of its own */
-        return c == CLI_EXIT ? status : CLI_USAGE;
+    int c, n, status = CLI_OK, illuminants = 0;
+    while ((c = cli_next_own(&p, "gcolor", list_usage, &status)) != -1) {
+        if (c != 'i')
+            return c == CLI_EXIT ? status : CLI_USAGE;
+        illuminants = 1;
+    }
     char **rest = cli_operands(&p, &n);
     if (n > 0)
         return cli_usage_error("gcolor list", "unexpected argument '%s'", rest[0]);
+    for (int i = 0; illuminants && gcie_illuminant_name(i); i++)
+        printf("%s\n", gcie_illuminant_name(i));
+    if (illuminants)
+        return 0;
     const GTypeInfo *types[64];
     int k = gregistry_list(GKIND_COLORMODEL, types, 64);
     for (int i = 0; i < k && i < 64; i++)
@@ -173,7 +183,8 @@ static int report_args(int argc, char **argv, ReportArgs *a)
     }
     char **rest = cli_operands(&p, &nrest);
     if (nrest > 0) {
-        fprintf(stderr, "gcolor: unknown command or argument '%s' (expected list or check; see gcolor --help)\n",
+        fprintf(stderr,
+                "gcolor: unknown command or argument '%s' (expected list, check or convert; see gcolor --help)\n",
                 rest[0]);
         return CLI_USAGE;
     }
@@ -239,6 +250,8 @@ static int gcolor_main(int argc, char **argv)
         return gcolor_check(argc - 1, argv + 1);
     if (argc > 1 && strcmp(argv[1], "list") == 0)
         return list_models(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "convert") == 0)
+        return gcolor_convert_command(argc - 1, argv + 1);
     static ReportArgs a;
     if ((rc = report_args(argc, argv, &a)) >= 0)
         return rc;

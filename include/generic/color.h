@@ -333,9 +333,15 @@ GENERIC_API void gcie_nm_to_xyz(const GSpectrumNM *s, GColorRole role, double xy
 GENERIC_API void gcie_rgb_to_nm(const double rgb[3], GColorRole role, GSpectrumNM *out);
 /** CIE 1931 2-degree colour matching functions at a wavelength in nm (linear between table values, 0 outside). */
 GENERIC_API void gcie_cmf(double nm, double xyz[3]);
-/** Relative spectral power of a CIE illuminant ("D65", "A", "E") at nm, normalised so the illuminant has
- * Y = 1 as a light; negative when the name is unknown. */
+/** Relative spectral power of a named CIE illuminant (gcie_illuminant_name lists them: A, B, C, D50, D55, D65,
+ * D75, E, F1..F12, LED-B1..B5, LED-BH1, LED-RGB1, LED-V1, LED-V2) at nm, from the CIE's 5 nm tables interpolated
+ * to 1 nm (Sprague) and linearly between, normalised so the illuminant has Y = 1 as a light; 0 outside
+ * GNM_MIN..GNM_MAX. The interpolation dips slightly below 0 beside the mercury lines of F4, F10, F11 and F12.
+ * -1 when the name is unknown (gcie_illuminant_nm tells names apart). */
 GENERIC_API double gcie_illuminant(const char *name, double nm);
+/** The i-th name gcie_illuminant knows (0, 1, ...; CIE order: A, B, C, the D series, E, F, LED), NULL past the
+ * last: for listing them. */
+GENERIC_API const char *gcie_illuminant_name(int i);
 /** Fills an nm spectrum with a named illuminant (Y = 1); G_ERR_NOTFOUND for unknown names. */
 GENERIC_API GENERIC_NODISCARD int gcie_illuminant_nm(const char *name, GSpectrumNM *out);
 /** Planck blackbody at temperature K, normalised to Y = 1. */

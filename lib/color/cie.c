@@ -19,6 +19,7 @@ static struct {
     double sum_ybar;       /* sum of ybar over the 1 nm grid */
     double sum_d65_ybar;   /* sum of D65 * ybar */
     double sum_a_ybar;     /* sum of A * ybar */
+    double sum_named_ybar[GCIE_NAMED]; /* sum of each named illuminant * ybar */
     double xyz2rgb[3][3];  /* inverse of RGB2XYZ */
     float basis[3][GNM_COUNT]; /* basis at 1 nm */
     double pinv[3][3];     /* inverse of the basis' own RGB matrix (makes the round trip exact) */
@@ -64,6 +65,8 @@ static void init_tables(void)
         T.sum_ybar += gcie_ybar[i];
         T.sum_d65_ybar += (double)gcie_d65[i] * gcie_ybar[i];
         T.sum_a_ybar += (double)gcie_a[i] * gcie_ybar[i];
+        for (int k = 0; k < GCIE_NAMED; k++)
+            T.sum_named_ybar[k] += (double)gcie_named_spd[k][i] * gcie_ybar[i];
     }
     invert3(RGB2XYZ, T.xyz2rgb);
     const float *b5[3] = {gcie_basis_r, gcie_basis_g, gcie_basis_b};
@@ -179,12 +182,30 @@ double gcie_illuminant(const char *name, double nm)
         return table_at(gcie_a, nm) * T.sum_ybar / T.sum_a_ybar;
     if (strcmp(name, "E") == 0)
         return (nm >= GNM_MIN && nm <= GNM_MAX) ? 1.0 : 0.0;
+    for (int k = 0; k < GCIE_NAMED; k++)
+        if (strcmp(name, gcie_named_names[k]) == 0)
+            return table_at(gcie_named_spd[k], nm) * T.sum_ybar / T.sum_named_ybar[k];
     return -1.0;
+}
+
+/* The illuminants in the order gcie_illuminant_name lists them: CIE order, A, B, C, the D series, E, F, LED. */
+static const char *const ILLUMINANT_ORDER[] = {
+    "A", "B", "C", "D50", "D55", "D65", "D75", "E", "F1", "F2", "F3", "F4", "F5", "F6", "F7", "F8", "F9", "F10",
+    "F11", "F12", "LED-B1", "LED-B2", "LED-B3", "LED-B4", "LED-B5", "LED-BH1", "LED-RGB1", "LED-V1", "LED-V2",
+};
+
+const char *gcie_illuminant_name(int i)
+{
+    int n = (int)(sizeof ILLUMINANT_ORDER / sizeof *ILLUMINANT_ORDER);
+    return i >= 0 && i < n ? ILLUMINANT_ORDER[i] : NULL;
 }
 
 int gcie_illuminant_nm(const char *name, GSpectrumNM *out)
 {
-    if (!name || gcie_illuminant(name, 550.0) < 0)
+    int known = 0;
+    for (int i = 0; name && gcie_illuminant_name(i); i++)
+        known |= strcmp(name, gcie_illuminant_name(i)) == 0;
+    if (!known)
         return G_ERR_NOTFOUND;
     for (int i = 0; i < GNM_COUNT; i++)
         out->v[i] = (float)gcie_illuminant(name, GNM_MIN + i);

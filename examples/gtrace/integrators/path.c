@@ -9,7 +9,7 @@
  * re-radiates the light that really arrives, at every bounce. The weight's brightness only steers Russian
  * roulette (after PATH_RR_START bounces a path survives with probability min(1, throughput brightness)).
  *
- * Lights. Point, spot and directional lights, including the directional lights a probe technique (mediancut,
+ * Lights. Point, spot, directional and IES lights, including the directional lights a probe technique (mediancut,
  * adaptive, kmeans, irradiance, variance) makes, are delta lights: NEE only, through lights.c's light_shade
  * (the same shadow rule as the Whitted tracer: transmission through non-opaque surfaces along the straight
  * line). Sphere and rectangle lights and a `light probe` of technique reference (the environment, importance
@@ -34,6 +34,10 @@
  * albedo a so shows a * ambient, as in the Whitted tracer (material.ambient of Lambert), but occluded and
  * interreflected.
  *
+ * Glowing geometry (lights/emissive.h): the emissive primitives are one more light, one NEE sample per vertex from
+ * the alias table, MIS-weighted; a material-sampled ray that meets one weighs its emission against the set's
+ * density for that direction (path_radiance hands shade_path the weight), other emission counts fully.
+ *
  * Dispersion (hero band): when the relative index at a non-opaque surface differs between the wavelength
  * groups (bands.h) and the path does not carry a group yet, one group is chosen uniformly; the material is
  * sampled with that group's index, and a transmitted sample keeps only the group's light (its mask) times
@@ -47,6 +51,7 @@
 #include "path.h"
 #include "bands.h"
 #include "scene/accel.h"
+#include "lights/emissive.h"
 #include "lights/lighting.h"
 #include "lights/probe_env.h"
 
@@ -179,7 +184,7 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
     for (int i = 0; i < s->nlights; i++) {
         const Light *l = s->lights[i];
         lt.blocked = 0;
-        if (l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT || l->kind == LIGHT_DIRECTIONAL) {
+        if (l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT || l->kind == LIGHT_DIRECTIONAL || l->kind == LIGHT_IES) {
             CHECK(light_shade(c, l, sp, facing, media, to_viewer, opaque, &lt, out));
             continue;
         }
@@ -201,6 +206,19 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
         if (w > 0.0)
             CHECK(sample_light(c, sp, facing, media, in, dist, &L, w / pdf_l, to_viewer, &lt, out));
     }
+    if (c->emissive) { /* glowing geometry: one point of one primitive, chosen by power */
+        GVec3 in;
+        double dist, pdf_l, u0 = uniform(p), u1 = uniform(p), u2 = uniform(p);
+        int got;
+        lt.blocked = 1;
+        CHECK(got = emissive_sample(c, c->emissive, sp->point, u0, u1, u2, &in, &dist, &pdf_l, &L));
+        if (got && !(opaque && gvec3_dot(in, facing) <= 0.0)) {
+            double w = mis_power(pdf_l, gmaterial_pdf(m, sp, in, to_viewer, ri));
+            if (w > 0.0)
+                CHECK(sample_light(c, sp, facing, media, in, dist * EMISSIVE_SHADOW_SHORTEN, &L, w / pdf_l, to_viewer,
+                                   &lt, out));
+        }
+    }
     CHECK(light_gather_finish(sp, &lt, out));
 done:
     gscratch_release(c->scratch, mark);
@@ -210,9 +228,10 @@ done:
 static int path_radiance(PathCtx *p, const Ray *r, const Media *media, int depth, double beta, int prev_delta,
                     double prev_pdf, GColor *out);
 
-/* The light leaving sp towards the viewer of r: emission, NEE, and one sampled bounce. */
+/* The light leaving sp towards the viewer of r: emission (times emit_weight, its MIS weight against the emissive
+ * set's NEE), NEE, and one sampled bounce. */
 static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, const Media *media, int depth,
-                      double beta, GColor *out)
+                      double beta, double emit_weight, GColor *out)
 {
     TraceCtx *c = p->c;
     const Scene *s = c->scene;
@@ -229,6 +248,8 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
     CHECK(gcolor_scratch_uncleared(&illum, s->model, c->scratch));
     CHECK(trace_relative_index(c, sp, &ri));
     CHECK(gmaterial_emission(m, sp, to_viewer, out));
+    if (emit_weight != 1.0)
+        CHECK(gcolor_scale(out, out, emit_weight));
     opaque = gmaterial_opaque(m, sp);
     CHECK(delta = gmaterial_is_delta(m, sp));
 
@@ -248,7 +269,7 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
         }
     }
 
-    if (!delta && s->nlights > 0)
+    if (!delta && (s->nlights > 0 || c->emissive))
         CHECK(direct_light(p, sp, facing, media, to_viewer, opaque, ri_use, out));
 
     if (depth < c->max_depth) {
@@ -377,10 +398,17 @@ static int path_radiance(PathCtx *p, const Ray *r, const Media *media, int depth
     }
     if (!hit)
         return escaped(p, r, first, prev_pdf, out);
+    /* glowing geometry that NEE also reaches: its emission weighed against that strategy */
+    double emit_weight = 1.0;
+    if (c->emissive && !first && h.material && !(h.material->flags & GMAT_NO_EMISSION)) {
+        double pdf_e = emissive_pdf(c->emissive, &h, r->o, r->d, h.t);
+        if (pdf_e > 0.0)
+            emit_weight = mis_power(prev_pdf, pdf_e);
+    }
     GSurfPoint sp;
     GVec3 facing;
     surfpoint_fill(c, r, &h, media, &sp, &facing);
-    return shade_path(p, r, &sp, facing, media, depth, beta, out);
+    return shade_path(p, r, &sp, facing, media, depth, beta, emit_weight, out);
 done:
     return rc;
 }

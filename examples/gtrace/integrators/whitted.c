@@ -22,6 +22,7 @@
 #include "whitted.h"
 #include "bands.h"
 #include "scene/accel.h"
+#include "lights/emissive.h"
 #include "lights/lighting.h"
 #include "lights/probe_env.h"
 
@@ -149,12 +150,14 @@ static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const 
     }
     int opaque = gmaterial_opaque(m, sp);
     /* a material whose every lobe is ideal reflects no light sample (is_delta, material.h): no light is asked */
-    if (s->nlights > 0 && !gmaterial_is_delta(m, sp)) {
+    if ((s->nlights > 0 || c->emissive) && !gmaterial_is_delta(m, sp)) {
         LightTmp lt;
         CHECK(light_temps(c, &lt));
         light_gather(sp, &lt); /* a Lambertian material: asked once for all lights (lights.c) */
         for (int i = 0; i < s->nlights; i++)
             CHECK(light_shade(c, s->lights[i], sp, facing, media, to_viewer, opaque, &lt, out));
+        if (c->emissive) /* glowing geometry, as an area light */
+            CHECK(emissive_shade(c, c->emissive, sp, facing, media, to_viewer, opaque, &lt, out));
         CHECK(light_gather_finish(sp, &lt, out));
     }
     if (depth < c->max_depth) {

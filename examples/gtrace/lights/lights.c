@@ -31,6 +31,7 @@
  * on the reflected light, so a sample at a finite distance in a medium is still reflected on its own. */
 #include "lighting.h"
 #include "scene/accel.h"
+#include "scene/ies.h"
 
 #include <generic/kit/material_kit.h>
 
@@ -340,6 +341,19 @@ int light_shade(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const
                 return rc;
         }
         return G_OK;
+    }
+    case LIGHT_IES: { /* a point light of the table's intensity towards the point */
+        GVec3 L = gvec3_sub(l->position, p);
+        double d = gvec3_length(L);
+        if (d <= 0.0)
+            return G_OK;
+        GVec3 in = gvec3_scale(L, 1.0 / d);
+        if (opaque && gvec3_dot(in, facing) <= 0.0)
+            return G_OK;
+        double cd = ies_candela_dir(l->ies, gvec3_neg(in), l->direction, l->along, l->third);
+        if (!(cd > 0.0))
+            return G_OK;
+        return sample_light(c, sp, facing, media, in, d, &l->color, cd / (d * d), out_dir, t, result);
     }
     case LIGHT_PROBE:
         return probe_light_shade(c, l, sp, facing, media, out_dir, opaque, t, result);

@@ -10,6 +10,7 @@
 #include "integrators/path.h"
 #include "integrators/whitted.h"
 #include "film/progress.h"
+#include "lights/emissive.h"
 
 #include <generic/memory.h>
 #include <generic/services/image.h>
@@ -166,6 +167,7 @@ struct Renderer {
     Job job;
     Camera cam;
     Bands bands;
+    EmissiveSet *emissive; /**< the glowing geometry as light, shared by the workers (NULL: none) */
     Worker *workers;
     int nthreads, status;
     const char *culprit;
@@ -214,6 +216,7 @@ void renderer_destroy(Renderer *r)
         gscratch_destroy(r->workers[i].ctx.scratch);
     }
     gmem_free(r->workers);
+    emissive_free(r->emissive);
     bands_free(&r->bands);
     gmem_free(r);
 }
@@ -300,6 +303,10 @@ int renderer_create(Renderer **out, const Scene *s, const RenderSettings *rs, Fr
     }
     if (!ok)
         rc = gerror_set(err, G_ERR_NOMEM, "out of memory for a %dx%d image", fb->width, fb->height);
+    if (rc == G_OK && !rs->no_emissive_lights)
+        rc = emissive_build(s, &r->workers[0].ctx, &r->emissive, err);
+    for (int i = 0; rc == G_OK && i < r->nthreads; i++)
+        r->workers[i].ctx.emissive = r->emissive;
     if (rc == G_OK && rs->waves)
         rc = set_wavelengths(fb, s->model, err);
     if (rc == G_OK)

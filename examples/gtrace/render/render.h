@@ -29,6 +29,8 @@ typedef struct RenderSettings {
     int crop[4];   /**< x0, y0, x1, y1: render only x0 <= x < x1, y0 <= y < y1 of the width x height image, each
                         pixel as the full render has it; all 0: the whole image */
     int waves;     /**< 1: also keep each pixel's values at the colour model's wavelengths (--spectral) */
+    int no_emissive_lights; /**< 1: glowing geometry is not sampled as light (lights/emissive.h), only met by rays:
+                                 the integrators' estimate without next-event estimation towards it */
 } RenderSettings;
 
 typedef struct RenderStats {

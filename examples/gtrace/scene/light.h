@@ -6,6 +6,7 @@
 #include <generic/vec.h>
 
 struct ProbeEnv;
+struct IesData;
 
 typedef enum LightKind {
     LIGHT_POINT,       /**< intensity I: illum = I / d^2 */
@@ -15,7 +16,8 @@ typedef enum LightKind {
     LIGHT_RECT,        /**< one-sided rectangle of uniform radiance, stratified samples */
     LIGHT_AMBIENT,     /**< (text only) ambient light: summed into Scene.ambient */
     LIGHT_BACKGROUND,  /**< (text only) radiance of rays that leave the scene: Scene.background */
-    LIGHT_PROBE        /**< a whole light probe, Monte Carlo with importance sampling (probe_sample.c) */
+    LIGHT_PROBE,       /**< a whole light probe, Monte Carlo with importance sampling (probe_sample.c) */
+    LIGHT_IES          /**< a point light whose intensity follows an IES LM-63 candela table (scene/ies.h) */
 } LightKind;
 
 typedef struct Light {
@@ -29,6 +31,10 @@ typedef struct Light {
     int samples;             /**< area lights, probe: shadow samples per shading point */
     int visible;             /**< sphere, rectangle: seen by camera rays as their radiance (default 0) */
     const struct ProbeEnv *env; /**< LIGHT_PROBE: the probe it samples (owned by the probe entry) */
+    struct IesData *ies;     /**< LIGHT_IES: its candela table (owned); color is then the light per candela */
+    GVec3 along, third;      /**< LIGHT_IES: with direction (the photometric axis), the luminaire's frame: along is
+                              * the direction of horizontal angle 0 (type C) or the polar axis (type B), third =
+                              * direction x along */
 } Light;
 
 /** A light with defaults whose colour has heap storage in the model (black). */

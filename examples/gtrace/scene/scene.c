@@ -2,6 +2,7 @@
  * background and ambient light. */
 #include "scene.h"
 #include "accel.h"
+#include "ies.h"
 
 #include <math.h>
 #include <string.h>
@@ -127,6 +128,9 @@ void light_free(Light *l)
     if (!l)
         return;
     gcolor_free(&l->color);
+    if (l->ies)
+        ies_free(l->ies);
+    gmem_free(l->ies);
     gmem_free(l);
 }
 

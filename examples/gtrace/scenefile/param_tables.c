@@ -114,9 +114,22 @@ static const GParamInfo background_params[] = {
     {"color", GPARAM_NAMED, "color", NULL, "luminance >= 0", "the radiance of rays that leave the scene"},
     {NULL},
 };
+static const GParamInfo ies_params[] = {
+    {"file", GPARAM_NAMED, "path", NULL, "LM-63-1986, -1995 or -2002; types C and B; TILT=NONE or INCLUDE",
+     "the luminaire's photometry: its candela table"},
+    P_VEC("position", "<0, 0, 0>", "the photometric centre"),
+    P_VEC("direction", "<0, -1, 0>", "the photometric axis: type C's nadir (vertical angle 0), type B's aim"),
+    P_VEC("along", "perpendicular to direction", "type C: the direction of horizontal angle 0 (the luminaire's "
+          "length); type B: the polar axis; its part perpendicular to direction is taken"),
+    {"color", GPARAM_NAMED, "color", NULL, "luminance > 0",
+     "the light's colour, e.g. illuminant A: the candela are converted with its luminous efficacy (683 lm/W times "
+     "its luminous sum), so the light is in W/(sr nm)"},
+    {"scale", GPARAM_NAMED, "number", "1", "[0, 1e30]", "multiplies the intensity"},
+    {NULL},
+};
 const GParamInfo *const scene_light_tables[SCENE_LIGHT_TYPES] = {point_params,     directional_params, spot_params,
                                                  sphere_light_params, rectangle_params, ambient_params,
-                                                 background_params};
+                                                 background_params, ies_params};
 
 #define P_CAMERA_VIEW                                                                                                \
     P_VEC("from", "<0, 0, 5>", "the eye"), P_VEC("at", "<0, 0, 0>", "the point looked at (not from)"),                \

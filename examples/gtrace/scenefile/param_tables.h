@@ -5,7 +5,7 @@
 
 #include <generic/registry.h>
 
-enum { SCENE_SHAPE_TYPES = 10, SCENE_LIGHT_TYPES = 7, SCENE_CAMERA_TYPES = 3 };
+enum { SCENE_SHAPE_TYPES = 10, SCENE_LIGHT_TYPES = 8, SCENE_CAMERA_TYPES = 3 };
 
 /** sphere, plane, box, disc, cylinder, mesh, quad, triangle, group, instance */
 extern const GParamInfo *const scene_shape_tables[SCENE_SHAPE_TYPES];

@@ -21,6 +21,8 @@
  *   light rectangle   { corner P edge1 E edge2 F radiance COLOR samples N visible BOOL }   lit side: edge1 x edge2
  *   light ambient     { color COLOR }        handed to every material's ambient()
  *   light background  { color COLOR }        radiance of rays that leave the scene
+ *   light ies         { file "f.ies" position P direction D along A color COLOR scale K }
+ *                     a photometric (IES LM-63) point light: candela / (683 lm/W x the colour's luminous sum)
  *   light probe       { file "x.hdr" technique T count N samples S rotate <x,y,z> scale K ... }
  *                     image-based lighting from an HDR probe (probe_light.c)
  *   camera pinhole    { from P at Q up U fov DEG width W height H spp N depth D cutoff W exposure STOPS bands K
@@ -34,6 +36,7 @@
 #include "parse.h"
 #include "param_tables.h"
 #include "geometry/geometry.h"
+#include "scene/ies.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -300,8 +303,8 @@ static void destroy_object(void *p) { object_free(p); }
 
 /* ---- lights ---- */
 
-enum { L_POINT, L_DIRECTIONAL, L_SPOT, L_SPHERE, L_RECT, L_AMBIENT, L_BACKGROUND };
-static const int light_types[] = {L_POINT, L_DIRECTIONAL, L_SPOT, L_SPHERE, L_RECT, L_AMBIENT, L_BACKGROUND};
+enum { L_POINT, L_DIRECTIONAL, L_SPOT, L_SPHERE, L_RECT, L_AMBIENT, L_BACKGROUND, L_IES };
+static const int light_types[] = {L_POINT, L_DIRECTIONAL, L_SPOT, L_SPHERE, L_RECT, L_AMBIENT, L_BACKGROUND, L_IES};
 static const char *const light_params[] = {
     "position, intensity",
     "direction, irradiance",
@@ -310,11 +313,48 @@ static const char *const light_params[] = {
     "corner, edge1, edge2, radiance, samples, visible",
     "color",
     "color",
+    "file, position, direction, along, color, scale",
 };
-static const LightKind light_kinds[] = {LIGHT_POINT, LIGHT_DIRECTIONAL, LIGHT_SPOT, LIGHT_SPHERE,
-                                        LIGHT_RECT,  LIGHT_AMBIENT,     LIGHT_BACKGROUND};
+static const LightKind light_kinds[] = {LIGHT_POINT, LIGHT_DIRECTIONAL, LIGHT_SPOT,       LIGHT_SPHERE,
+                                        LIGHT_RECT,  LIGHT_AMBIENT,     LIGHT_BACKGROUND, LIGHT_IES};
 static const char *const light_color_key[] = {"intensity", "irradiance", "intensity", "radiance",
-                                              "radiance",  "color",      "color"};
+                                              "radiance",  "color",      "color",     "color"};
+
+/* An IES light's table and frame, and its colour made the light of one candela: the colour scaled so that 683 lm/W
+ * times its luminous sum (the sum of its power times ybar, 1 nm steps over 380..780 nm) is 1 cd
+ * (times scale); the light's colour is then per W/(sr nm) and the candela of the table multiply it. */
+static int ies_light_setup(GReader *r, Light *l, const char *file, GVec3 dir, const GVec3 *along, double scale,
+                           GColor *color, GError *err)
+{
+    if (!file)
+        return greader_error(r, err, "an IES light needs its file (file \"luminaire.ies\")");
+    double len = gvec3_length(dir);
+    if (!(len > 0.0 && isfinite(len)))
+        return greader_error(r, err, "the direction must be finite and not zero");
+    l->direction = gvec3_scale(dir, 1.0 / len);
+    GVec3 a = along ? *along : fabs(l->direction.x) < 0.9 ? gvec3(1, 0, 0) : gvec3(0, 0, 1);
+    a = gvec3_sub(a, gvec3_scale(l->direction, gvec3_dot(a, l->direction)));
+    double la = gvec3_length(a);
+    if (!(la > 1e-9 * gvec3_length(along ? *along : a) && isfinite(la)))
+        return greader_error(r, err, "`along` must be finite and not parallel to the direction");
+    l->along = gvec3_scale(a, 1.0 / la);
+    l->third = gvec3_cross(l->direction, l->along);
+    double xyz[3], ysum = 0.0, cmf[3];
+    for (int nm = GNM_MIN; nm <= GNM_MAX; nm++) {
+        gcie_cmf(nm, cmf);
+        ysum += cmf[1];
+    }
+    int rc = gcolor_to_xyz(color, GCOLOR_LIGHT, xyz);
+    if (rc != G_OK || !(xyz[1] > 0.0))
+        return greader_error(r, err, "an IES light's color gives its power over wavelength: its luminance must be "
+                             "> 0");
+    if ((rc = gcolor_scale(color, color, scale / (683.0 * xyz[1] * ysum))) != G_OK)
+        return greader_error(r, err, "the colour cannot be scaled: %s", gstatus_string(rc));
+    l->ies = gmem_calloc(1, sizeof *l->ies);
+    if (!l->ies)
+        return greader_error(r, err, "out of memory");
+    return ies_read(file, l->ies, err); /* its messages name the IES file and line */
+}
 
 /* 1 when the light's points (a sphere's extent, a rectangle's four corners, a spot's target) lie within the
  * scene's limit. */
@@ -339,8 +379,10 @@ int scene_parse_light(GReader *r, const void *vtable, void **object, GError *err
     if (!l)
         return greader_error(r, err, "out of memory");
     GColor color = {0};
-    GVec3 at = gvec3(0, 0, 0), dir = gvec3(0, -1, 0);
-    double inner = 20.0, outer = 30.0;
+    GVec3 at = gvec3(0, 0, 0), dir = gvec3(0, -1, 0), along = gvec3(0, 0, 0);
+    double inner = 20.0, outer = 30.0, scale = 1.0;
+    char *ies_file = NULL;
+    int have_along = 0;
     long samples = 16;
     int have_at = 0, color_line = 0, color_col = 0;
     l->radius = 1.0;
@@ -358,10 +400,19 @@ int scene_parse_light(GReader *r, const void *vtable, void **object, GError *err
                 color_line = lit.line, color_col = lit.col;
                 rc = greader_color(r, GCOLOR_LIGHT, &color, err);
             }
-        } else if ((strcmp(key, "position") == 0 && (type == L_POINT || type == L_SPOT)) ||
+        } else if (strcmp(key, "file") == 0 && type == L_IES) {
+            gmem_free(ies_file);
+            ies_file = NULL;
+            rc = greader_path(r, &ies_file, err);
+        } else if (strcmp(key, "along") == 0 && type == L_IES) {
+            rc = greader_vec3(r, &along, err);
+            have_along = 1;
+        } else if (strcmp(key, "scale") == 0 && type == L_IES) {
+            rc = greader_number_in(r, 0.0, 1e30, &scale, err);
+        } else if ((strcmp(key, "position") == 0 && (type == L_POINT || type == L_SPOT || type == L_IES)) ||
                    (strcmp(key, "center") == 0 && type == L_SPHERE) || (strcmp(key, "corner") == 0 && type == L_RECT)) {
             rc = greader_vec3(r, &l->position, err);
-        } else if (strcmp(key, "direction") == 0 && type == L_DIRECTIONAL) {
+        } else if (strcmp(key, "direction") == 0 && (type == L_DIRECTIONAL || type == L_IES)) {
             rc = greader_vec3(r, &dir, err);
         } else if (strcmp(key, "at") == 0 && type == L_SPOT) {
             rc = greader_vec3(r, &at, err);
@@ -415,6 +466,9 @@ int scene_parse_light(GReader *r, const void *vtable, void **object, GError *err
         l->cos_inner = cos(0.5 * inner * M_PI / 180.0);
         l->cos_outer = cos(0.5 * outer * M_PI / 180.0);
     }
+    if (rc == G_OK && type == L_IES)
+        rc = ies_light_setup(r, l, ies_file, dir, have_along ? &along : NULL, scale, &color, err);
+    gmem_free(ies_file);
     if (rc == G_OK && type == L_RECT && gvec3_length(gvec3_cross(l->edge1, l->edge2)) == 0.0)
         rc = greader_error(r, err, "the rectangle's edges must not be parallel");
     l->samples = (int)samples;
@@ -512,11 +566,13 @@ static const char *const shape_summaries[] = {
     "group of objects (one Embree scene, placed by instances)",
     "instance of an object or group: own transform, optional material override",
 };
-static const char *const light_names[] = {"point", "directional", "spot", "sphere", "rectangle", "ambient", "background"};
+static const char *const light_names[] = {"point",   "directional", "spot",      "sphere",
+                                          "rectangle", "ambient",   "background", "ies"};
 static const char *const light_summaries[] = {
     "point light (intensity)", "directional light (irradiance)", "spot light with a smooth cone",
     "spherical area light (radiance), soft shadows", "rectangular area light (radiance), soft shadows",
     "ambient light for material.ambient", "radiance of rays that leave the scene",
+    "photometric point light from an IES LM-63 file (candela)",
 };
 static const CameraProjection camera_kinds[] = {CAMERA_PINHOLE, CAMERA_THINLENS, CAMERA_ORTHOGRAPHIC};
 static const char *const camera_names[] = {"pinhole", "thinlens", "orthographic"};

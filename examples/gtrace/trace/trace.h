@@ -46,6 +46,7 @@ typedef struct TraceCtx {
     const struct Bands *bands; /**< the wavelength groups a dispersive refraction splits into (integrators/bands.h;
                                 * NULL: none) */
     int band;            /**< the group the current path carries (-1: all light; set by a dispersive split) */
+    const struct EmissiveSet *emissive; /**< the glowing geometry sampled as light (lights/emissive.h; NULL: none) */
     GColor tmp[TRACE_TMP_COUNT]; /**< temporaries made once with the context (trace_ctx_temps); cleared in a
                                   * context built without them, whose users then take arena storage (trace_tmp) */
 } TraceCtx;

@@ -9,7 +9,8 @@
  *                mutated IFF and DPX headers named .png, .hdr or .pfm
  *                (and, for the probe kind, HDR and PFM only, with probe-like aspect ratios)
  *   gen_mesh.c   glTF nested deeply (JSON, nodes), node DAGs, lying accessors and .glb chunks, renamed PLY
- *                (gtrace's meshes: tests/fuzz/run_mesh_generated.sh) */
+ *                (gtrace's meshes: tests/fuzz/run_mesh_generated.sh)
+ *   gen_ies.c    IES LM-63 files: lying counts, truncation, NaN and words, bad angle tables, long headers */
 #ifndef GENERIC_TESTS_FUZZ_GEN_H
 #define GENERIC_TESTS_FUZZ_GEN_H
 
@@ -75,5 +76,7 @@ extern const GenFamily gen_probe_families[];
 extern const int gen_probe_count;
 extern const GenFamily gen_mesh_families[];
 extern const int gen_mesh_count;
+extern const GenFamily gen_ies_families[];
+extern const int gen_ies_count;
 
 #endif
