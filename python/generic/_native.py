@@ -1,0 +1,34 @@
+"""The C libraries through cffi's ABI mode: libgeneric.so, and libgtrace.so for scenes and rendering (opened on
+first use: it maps Embree and assimp). The directory of both is _config.LIBDIR, written when the package is built
+or installed (python/build.mk); GENERIC_LIBDIR in the environment replaces it."""
+import os
+import threading
+
+from cffi import FFI
+
+from . import _config
+from ._cdef import CDEF
+
+ffi = FFI()
+ffi.cdef(CDEF)
+
+LIBDIR = os.environ.get("GENERIC_LIBDIR") or _config.LIBDIR
+
+lib = ffi.dlopen(os.path.join(LIBDIR, "libgeneric.so.0"))
+
+_gtrace = None
+_gtrace_lock = threading.Lock()
+
+
+def gtrace():
+    """libgtrace.so, opened once, with gtrace's kinds (object, light, camera) registered."""
+    global _gtrace
+    with _gtrace_lock:
+        if _gtrace is None:
+            g = ffi.dlopen(os.path.join(LIBDIR, "libgtrace.so"))
+            err = ffi.new("GError *")
+            if g.gtrace_embed_register(err) != lib.G_OK:
+                from .errors import GenericError
+                raise GenericError.from_error(err)
+            _gtrace = g
+        return _gtrace
