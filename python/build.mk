@@ -2,7 +2,8 @@
 # libgtrace.so): `make python` copies it into BUILD/python/generic/ with a _config.py naming BUILD/lib, so that
 # PYTHONPATH=BUILD/python imports it from the tree; `make install` puts it where Debian's python3 looks for
 # packages under PREFIX (PREFIX/lib/python3/dist-packages), its _config.py naming PREFIX/lib. Its tests
-# (tests/python/, pytest) run from tests/scripts/python.sh. PYTHON: the interpreter with python3-cffi and numpy.
+# (tests/python/, pytest) run from tests/scripts/python.sh and compare with bench_batch --reference (bench/).
+# PYTHON: the interpreter with python3-cffi and numpy.
 PYTHON ?= /usr/bin/python3
 PY_SRC := $(wildcard python/generic/*.py)
 PY_PKG := $(BUILD)/python/generic
@@ -10,7 +11,7 @@ PY_OUT := $(PY_SRC:python/generic/%=$(PY_PKG)/%) $(PY_PKG)/_config.py
 PY_INSTALL_DIR := $(PREFIX)/lib/python3/dist-packages
 .PHONY: python install-python uninstall-python
 all: python
-python: $(PY_OUT) $(LIBSO) $(GTRACE_SO)
+python: $(PY_OUT) $(LIBSO) $(GTRACE_SO) $(BUILD)/bench/bench_batch
 
 $(PY_PKG)/%.py: python/generic/%.py
 	@mkdir -p $(dir $@)
