@@ -31,15 +31,15 @@ def as_rows(name, value, width, dtype=np.float64):
 
 def common_rows(arrays):
     """The N of several (N, k) arrays, those of one row repeated to it. ValueError naming the first argument
-    whose N differs from another's."""
-    n = max(a.shape[0] for _, a in arrays)
+    whose N differs from an earlier one's."""
+    first = next(((name, a.shape[0]) for name, a in arrays if a.shape[0] != 1), (arrays[0][0], 1))
+    n = first[1]
     out = []
     for name, a in arrays:
         if a.shape[0] == 1 and n != 1:
             a = np.ascontiguousarray(np.broadcast_to(a, (n, a.shape[1])))
         elif a.shape[0] != n:
-            others = ", ".join(f"{nm} {b.shape[0]}" for nm, b in arrays)
-            raise ValueError(f"{name} has {a.shape[0]} rows where the others have {n} ({others})")
+            raise ValueError(f"{name} has {a.shape[0]} rows where {first[0]} has {n}")
         out.append(a)
     return n, out
 
