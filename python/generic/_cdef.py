@@ -133,6 +133,98 @@ int gimage_read(const char *path, unsigned flags, GImage *img, GError *err);
 int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *opt, GError *err);
 void gimage_free(GImage *img);
 
+typedef struct GColor {
+    const GColorModel *model;
+    float *v;
+    int kind;
+    int storage;
+    int capacity;
+} GColor;
+
+struct GMaterial {
+    const struct GMaterialClass *cls;
+    const GColorModel *model;
+    int refcount;
+    int depth;
+    int cost;
+    unsigned flags;
+};
+
+typedef struct GMaterialSample { GVec3 in; double pdf; int flags; } GMaterialSample;
+
+typedef struct GMaterialClass {
+    int abi_version;
+    const char *name;
+    const char *description;
+    void (*destroy)(GMaterial *self);
+    int (*reflection)(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out, GColor *result);
+    int (*refraction)(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, const GColor *rel_index,
+                      GVec3 out, GColor *result);
+    int (*refraction_index)(const GMaterial *self, GSurfPoint *sp, GColor *result);
+    int (*reflection_dir)(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir);
+    int (*refraction_dir)(const GMaterial *self, GSurfPoint *sp, GVec3 view, const GColor *rel_index, GVec3 *dir);
+    int (*emission)(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result);
+    int (*ambient)(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result);
+    int (*absorption)(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length, GColor *result);
+    int (*normal)(const GMaterial *self, GSurfPoint *sp, GVec3 *n);
+    int (*diffuse)(const GMaterial *self, GSurfPoint *sp, GColor *result);
+    int (*opaque)(const GMaterial *self, GSurfPoint *sp);
+    int (*sample)(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1, double u2,
+                  GMaterialSample *s, GColor *weight);
+    double (*pdf)(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index);
+    int (*is_delta)(const GMaterial *self, GSurfPoint *sp);
+} GMaterialClass;
+
+enum { GMATERIAL_ABI_VERSION = 4 };
+
+typedef struct GReader GReader;
+typedef int (*GParseFn)(GReader *reader, const void *vtable, void **object, GError *err);
+typedef enum GParamForm { GPARAM_NAMED = 0, GPARAM_POSITIONAL = 1 } GParamForm;
+typedef struct GParamInfo {
+    const char *name;
+    GParamForm form;
+    const char *type;
+    const char *def;
+    const char *range;
+    const char *doc;
+} GParamInfo;
+
+struct GTypeInfo {
+    GKind kind;
+    const char *name;
+    const void *vtable;
+    GParseFn parse;
+    const char *summary;
+    void (*destroy)(void *object);
+    const struct GParamInfo *params;
+};
+
+int gerror_set(GError *err, int code, const char *fmt, ...);
+int gregistry_add(const GTypeInfo *info, GError *err);
+const GTypeInfo *gregistry_find(GKind kind, const char *name);
+int greader_param(GReader *r, const char **key, GError *err);
+int greader_unknown_param(GReader *r, const char *expected, GError *err);
+int greader_color(GReader *r, GColorRole role, GColor *out, GError *err);
+int greader_number_in(GReader *r, double lo, double hi, double *out, GError *err);
+const GColorModel *greader_colormodel(GReader *r);
+int gmaterial_param_default(GReader *r, double grey, GColorRole role, GColor *c, GError *err);
+int gmaterial_init(GMaterial *m, const GMaterialClass *cls, const GColorModel *model, GError *err);
+double gmaterial_cos_in(GSurfPoint *sp, GVec3 in, GVec3 out, GVec3 *n);
+GVec3 gsurfpoint_normal(GSurfPoint *sp);
+int gcolor_alloc(GColor *c, const GColorModel *m);
+void gcolor_free(GColor *c);
+int gcolor_copy(GColor *dst, const GColor *src);
+void gcolor_black(GColor *c);
+int gcolor_add(GColor *out, const GColor *a, const GColor *b);
+int gcolor_mul(GColor *out, const GColor *a, const GColor *b);
+int gcolor_mul_scaled(GColor *out, const GColor *a, const GColor *b, double s);
+int gcolor_scale(GColor *out, const GColor *a, double s);
+int gcolor_fill(GColor *out, double value);
+double gcolor_brightness(const GColor *c);
+
+int gmat_check_file(const char *file, const char *material, const char *colormodel, int samples, int allow_plugins,
+                    GError *err);
+
 int gtrace_embed_register(GError *err);
 int gtrace_render_file(const GtraceRenderRequest *rq, GtraceImage *img, GError *err);
 void gtrace_image_free(GtraceImage *img);
@@ -140,4 +232,5 @@ void gtrace_image_free(GtraceImage *img);
 
 # The headers the declarations come from (for the drift check).
 HEADERS = ["generic/builtins.h", "generic/batch.h", "generic/reader.h", "generic/registry.h", "generic/memory.h",
-           "generic/services/image.h", "embed/render_file.h"]
+           "generic/plugin.h", "generic/kit/material_kit.h", "generic/kit/material_params.h",
+           "generic/services/image.h", "embed/render_file.h", "gmat/check_file.h"]

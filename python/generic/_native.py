@@ -32,3 +32,15 @@ def gtrace():
                 raise GenericError.from_error(err)
             _gtrace = g
         return _gtrace
+
+
+_gmat = None
+
+
+def gmat():
+    """libgmat.so (gmat check as a function), opened once."""
+    global _gmat
+    with _gtrace_lock:
+        if _gmat is None:
+            _gmat = ffi.dlopen(os.path.join(LIBDIR, "libgmat.so"))
+        return _gmat

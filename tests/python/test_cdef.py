@@ -36,9 +36,12 @@ def c_source():
     return "\n".join(lines) + "\n"
 
 
-STRUCTS = ["GVec3", "GError", "GColorModelOptions", "GReaderOptions", "GBatchPoints", "GImage",
-           "GtraceRenderRequest", "GtraceImage"]
-CONSTANTS = sorted(n for n in dir(lib) if re.match(r"^(G_OK|G_ERR_|GCOLOR_|GKIND_|GBATCH_)", n))
+STRUCTS = ["GVec3", "GError", "GColorModelOptions", "GReaderOptions", "GBatchPoints", "GImage", "GColor",
+           "GMaterial", "GMaterialSample", "GMaterialClass", "GTypeInfo", "GParamInfo", "GtraceRenderRequest",
+           "GtraceImage"]
+CONSTANTS = sorted(n for n in dir(lib)
+                   if re.match(r"^(G_OK|G_ERR_|GCOLOR_REFL|GCOLOR_LIGHT|GKIND_|GBATCH_|GPARAM_|GMATERIAL_ABI)", n))
+INCLUDES = ["include", "examples/gtrace", "examples"]
 
 
 def test_every_prototype_is_checked():
@@ -52,8 +55,8 @@ def test_cdef_matches_the_headers(source, tmp_path):
     src.write_text(c_source())
     exe = tmp_path / "cdef_check"
     cc = os.environ.get("CC", "cc")
-    build = subprocess.run([cc, "-std=c11", "-D_GNU_SOURCE", "-Wall", "-Werror", "-I", os.path.join(source, "include"), "-I",
-                            os.path.join(source, "examples", "gtrace"), "-o", str(exe), str(src)],
+    build = subprocess.run([cc, "-std=c11", "-D_GNU_SOURCE", "-Wall", "-Werror",
+                            *[f"-I{os.path.join(source, d)}" for d in INCLUDES], "-o", str(exe), str(src)],
                            capture_output=True, text=True)
     assert build.returncode == 0, build.stderr
     run = subprocess.run([str(exe)], capture_output=True, text=True, check=True)
@@ -71,7 +74,7 @@ def test_a_drifted_declaration_is_caught(source, tmp_path, monkeypatch):
     monkeypatch.setattr(_cdef, "CDEF", _cdef.CDEF.replace("int gbatch_pdf(const GMaterial *m", "int gbatch_pdf(GMaterial *m"))
     src = tmp_path / "drift.c"
     src.write_text(c_source())
-    build = subprocess.run([os.environ.get("CC", "cc"), "-std=c11", "-D_GNU_SOURCE", "-Wall", "-Werror", "-c", "-I",
-                            os.path.join(source, "include"), "-I", os.path.join(source, "examples", "gtrace"),
-                            "-o", str(tmp_path / "drift.o"), str(src)], capture_output=True, text=True)
+    build = subprocess.run([os.environ.get("CC", "cc"), "-std=c11", "-D_GNU_SOURCE", "-Wall", "-Werror", "-c",
+                            *[f"-I{os.path.join(source, d)}" for d in INCLUDES], "-o", str(tmp_path / "drift.o"),
+                            str(src)], capture_output=True, text=True)
     assert build.returncode != 0 and "gbatch_pdf" in build.stderr
