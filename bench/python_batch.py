@@ -51,11 +51,41 @@ def bench(model, text, name):
           f"{N / every * 1e-6:8.3f} M/s, one package call a row {k / per_call * 1e-3:8.1f} k/s")
 
 
+class PyLambert(generic.PythonMaterial):
+    keyword = "bench_py_lambert"
+    params = {"reflectance": generic.Param("color", 0.8)}
+
+    def reflection(self, sp, wi, illum, wo, result):
+        c = sp.cos_in(wi, wo)
+        if c <= 0.0:
+            result.black()
+        else:
+            result.mul_scaled(self.reflectance, illum, c / 3.141592653589793)
+
+
+def bench_python_material(n=100_000):
+    """A lambert written in Python through the same batch call: the cost of a callback per evaluation, and of the
+    interpreter's lock that the threads take in turn."""
+    generic.register_material(PyLambert)
+    with tempfile.NamedTemporaryFile("w", suffix=".mat", delete=False) as f:
+        f.write("material m bench_py_lambert { reflectance rgb 0.7 0.5 0.2 }")
+    try:
+        mat = generic.load(f.name, colormodel="rgb").material("m")
+    finally:
+        os.unlink(f.name)
+    normal, wi, wo = rows(n)
+    one = best_of(2, lambda: mat.reflection(normal, wi, wo, threads=1))
+    every = best_of(2, lambda: mat.reflection(normal, wi, wo))
+    print(f"{'py_lambert':8s} {'rgb':9s} rgb out: batch 1 thread {n / one * 1e-6:8.3f} M/s, batch all threads "
+          f"{n / every * 1e-6:8.3f} M/s ({one / n * 1e6:.2f} us a call)")
+
+
 def main():
     print(f"python {sys.version.split()[0]}, numpy {np.__version__}, {os.cpu_count()} processors")
     bench("rgb", "material matte lambert { reflectance rgb 0.7 0.5 0.2 }", "matte")
     bench("spectrum", "material plastic phong { diffuse rgb 0.6 0.08 0.05 specular rgb 0.25 0.25 0.25 "
           "exponent 60 }", "plastic")
+    bench_python_material()
 
 
 if __name__ == "__main__":
