@@ -11,12 +11,12 @@ numpy through gtrace's library. docs/python.md is the guide.
 from ._native import ffi, lib
 from .colors import ColorModel, colormodels, kinds, types
 from .errors import GenericError
-from .library import Generator, Library, Material, load
+from .library import Generator, Library, Material, SurfacePoint, load
 from .pymaterial import Color, Param, PythonMaterial, check, register_material
 from .render import read_image, render, write_image
 
 __all__ = ["Color", "ColorModel", "GenericError", "Generator", "Library", "Material", "Param", "PythonMaterial",
-           "check", "colormodels", "kinds", "load", "read_image", "register_material", "render", "types",
+           "SurfacePoint", "check", "colormodels", "kinds", "load", "read_image", "register_material", "render", "types",
            "write_image"]
 
 

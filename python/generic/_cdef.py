@@ -221,6 +221,10 @@ int gcolor_mul_scaled(GColor *out, const GColor *a, const GColor *b, double s);
 int gcolor_scale(GColor *out, const GColor *a, double s);
 int gcolor_fill(GColor *out, double value);
 double gcolor_brightness(const GColor *c);
+int gcolor_from_rgb(GColor *c, const double rgb[3], GColorRole role);
+int gcolor_to_xyz(const GColor *c, GColorRole role, double xyz[3]);
+int gcolor_to_rgb(const GColor *c, GColorRole role, double rgb[3]);
+int gmaterial_reflection(const GMaterial *m, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out, GColor *result);
 
 int gmat_check_file(const char *file, const char *material, const char *colormodel, int samples, int allow_plugins,
                     GError *err);

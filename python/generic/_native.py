@@ -14,7 +14,11 @@ ffi.cdef(CDEF)
 
 LIBDIR = os.environ.get("GENERIC_LIBDIR") or _config.LIBDIR
 
-lib = ffi.dlopen(os.path.join(LIBDIR, "libgeneric.so.0"))
+# Never unloaded (RTLD_NODELETE): the libraries' OpenMP worker threads and thread-local arenas outlive the
+# interpreter's teardown of its objects, and must not find their code gone.
+FLAGS = ffi.RTLD_NOW | ffi.RTLD_NODELETE
+
+lib = ffi.dlopen(os.path.join(LIBDIR, "libgeneric.so.0"), FLAGS)
 
 _gtrace = None
 _gtrace_lock = threading.Lock()
@@ -25,7 +29,7 @@ def gtrace():
     global _gtrace
     with _gtrace_lock:
         if _gtrace is None:
-            g = ffi.dlopen(os.path.join(LIBDIR, "libgtrace.so"))
+            g = ffi.dlopen(os.path.join(LIBDIR, "libgtrace.so"), FLAGS)
             err = ffi.new("GError *")
             if g.gtrace_embed_register(err) != lib.G_OK:
                 from .errors import GenericError
@@ -42,5 +46,5 @@ def gmat():
     global _gmat
     with _gtrace_lock:
         if _gmat is None:
-            _gmat = ffi.dlopen(os.path.join(LIBDIR, "libgmat.so"))
+            _gmat = ffi.dlopen(os.path.join(LIBDIR, "libgmat.so"), FLAGS)
         return _gmat

@@ -100,8 +100,70 @@ class Material:
                                 arrays.ptr(pdf), arrays.ptr(flags, "int *"), arrays.ptr(weight), err), err)
         return wi, pdf, flags, weight
 
+    def reflection_at(self, sp, wi, wo, output="rgb"):
+        """reflection() at one SurfacePoint (made by the library's constructor, gsurfpoint_new) for one pair of
+        directions (3 numbers each): a (3,) array (rgb, xyz) or (nvalues,) (samples). The point has no material
+        and vacuum on both sides, as gsurfpoint_new leaves it."""
+        code = arrays.choice("output", output, arrays.OUTPUTS)
+        if not isinstance(sp, SurfacePoint) or sp.colormodel._ptr != self.colormodel._ptr:
+            raise TypeError("sp must be a SurfacePoint of the material's colour model")
+        wi = arrays.as_rows("wi", wi, 3)
+        wo = arrays.as_rows("wo", wo, 3)
+        if wi.shape[0] != 1 or wo.shape[0] != 1:
+            raise ValueError("wi and wo must be single directions (3,)")
+        model = self.colormodel._ptr
+        white, result = ffi.new("GColor *"), ffi.new("GColor *")
+        try:
+            _status_of(lib.gcolor_alloc(white, model))
+            _status_of(lib.gcolor_alloc(result, model))
+            _status_of(lib.gcolor_from_rgb(white, [1.0, 1.0, 1.0], lib.GCOLOR_LIGHT))
+            _status_of(lib.gmaterial_reflection(self._ptr, sp._ptr, tuple(wi[0]), white, tuple(wo[0]), result))
+            if code == lib.GBATCH_SAMPLES:
+                n = lib.gbatch_output_width(model, code)
+                return np.frombuffer(ffi.buffer(result.v, 4 * n), dtype=np.float32).astype(np.float64)
+            out = ffi.new("double[3]")
+            fn = lib.gcolor_to_xyz if code == lib.GBATCH_XYZ else lib.gcolor_to_rgb
+            _status_of(fn(result, lib.GCOLOR_LIGHT, out))
+            return np.array(list(out))
+        finally:
+            lib.gcolor_free(white)
+            lib.gcolor_free(result)
+
     def __repr__(self):
         return f"<generic.Material {self.name} ({self.type}, {self.colormodel.name})>"
+
+
+def _status_of(rc):
+    if rc < 0:
+        raise GenericError(f"the material failed ({ffi.string(lib.gstatus_string(rc)).decode()})", rc)
+
+
+class SurfacePoint:
+    """A surface point made by the library's constructor (gsurfpoint_new), for single evaluations
+    (Material.reflection_at) without laying the C struct out: in colormodel, at `point` with geometric normal
+    `normal` (normalised by the library), tangents dpdu and dpdv, (u, v) and the surface index. Bad numbers raise
+    GenericError. It owns its scratch arena; use it from one thread at a time."""
+
+    def __init__(self, colormodel, point, normal, dpdu=(0.0, 0.0, 0.0), dpdv=(0.0, 0.0, 0.0), uv=(0.0, 0.0),
+                 surface=0):
+        if not isinstance(colormodel, ColorModel):
+            raise TypeError("colormodel must be a generic.ColorModel")
+        vec = {name: tuple(arrays.as_rows(name, v, 3)[0]) for name, v in
+               (("point", point), ("normal", normal), ("dpdu", dpdu), ("dpdv", dpdv))}
+        u, v = (float(x) for x in arrays.as_rows("uv", uv, 2)[0])
+        self.colormodel = colormodel
+        self._scratch = ffi.gc(lib.gscratch_create(0), lib.gscratch_destroy)
+        err = ffi.new("GError *")
+        p = lib.gsurfpoint_new(colormodel._ptr, self._scratch, vec["point"], vec["normal"], vec["dpdu"], vec["dpdv"],
+                               u, v, int(surface), err)
+        if p == ffi.NULL:
+            raise GenericError.from_error(err)
+        self._ptr = ffi.gc(p, lib.gsurfpoint_free)
+
+    @property
+    def size(self):
+        """sizeof(GSurfPoint) in the library (gsurfpoint_size), which the package never lays out."""
+        return lib.gsurfpoint_size()
 
 
 class Generator:

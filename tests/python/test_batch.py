@@ -103,3 +103,19 @@ def test_generator_values(tmp_path):
     v = g.value(pts)
     assert v.shape == (19,)
     assert np.all(np.diff(v) > 0)  # a ramp along x
+
+
+def test_surface_point_constructor_and_single_evaluation(source):
+    lib = generic.load(os.path.join(source, PLASTIC), colormodel="spectrum")
+    mat = lib.material("red_plastic")
+    normal, wi, wo = rows(21, 40)
+    for i in range(40):
+        sp = generic.SurfacePoint(lib.colormodel, [0, 0, 0], normal[i] * 2.0)  # normalised by the library
+        for output in ("rgb", "samples"):
+            one = mat.reflection_at(sp, wi[i], wo[i], output=output)
+            assert one.tobytes() == mat.reflection(normal[i], wi[i], wo[i], output=output)[0].tobytes()
+    assert sp.size > 200
+    with pytest.raises(generic.GenericError, match="normal"):
+        generic.SurfacePoint(lib.colormodel, [0, 0, 0], [0, 0, 0])
+    with pytest.raises(ValueError, match="^point must have shape"):
+        generic.SurfacePoint(lib.colormodel, [0, 0], [0, 0, 1])

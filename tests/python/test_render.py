@@ -67,3 +67,29 @@ def test_write_and_read_image(tmp_path):
         generic.write_image(tmp_path / "bad.exr", np.zeros((4, 6, 7)))
     with pytest.raises(TypeError, match="pixels"):
         generic.write_image(tmp_path / "bad.exr", np.array([["a"]]))
+
+
+EXIT_SCRIPT = """
+import sys
+import numpy as np
+import generic
+sys.path.insert(0, {tests!r})
+import test_pymaterial  # registers py_lambert
+kept = generic.load({mat!r}).material("clay")   # alive at exit: released during the interpreter's teardown
+kept.reflection(np.tile([0.0, 0.0, 1.0], (5000, 1)), [0, 0.6, 0.8], [0, -0.6, 0.8], threads=2)
+generic.render({scene!r}, width=32, threads=2)
+"""
+
+
+def test_the_interpreter_exits_cleanly(source, tmp_path):
+    """OpenMP's threads and the libraries' thread-local arenas outlive the interpreter's objects: exiting after
+    threaded work, with a Python material alive, ends with status 0 (the libraries are never unloaded)."""
+    import subprocess
+    import sys
+    mat = tmp_path / "clay.mat"
+    mat.write_text("material clay py_lambert { reflectance rgb 0.7 0.5 0.2 }\n")
+    script = EXIT_SCRIPT.format(tests=os.path.dirname(__file__), mat=str(mat),
+                                scene=os.path.join(source, "examples/scenes/demo.scene"))
+    for _ in range(4):
+        r = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, timeout=300)
+        assert r.returncode == 0 and "Traceback" not in r.stderr, r.stderr
