@@ -20,7 +20,7 @@ $(PY_PKG)/%.py: python/generic/%.py
 	cp $< $@
 
 # the directory of the libraries, written when it would change
-py_config = printf '"""Where the package finds libgeneric.so.0 and libgtrace.so (written by python/build.mk)."""\nLIBDIR = "%s"\n' '$(1)'
+py_config = printf '"""Where the package finds its libraries (written by python/build.mk)."""\nLIBDIR = "%s"\n' '$(1)'
 $(PY_PKG)/_config.py: FORCE
 	@mkdir -p $(dir $@)
 	@$(call py_config,$(abspath $(BUILD)/lib)) > $@.tmp

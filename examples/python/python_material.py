@@ -59,7 +59,8 @@ def main():
             images[m] = generic.render(scene)
             seconds[m] = time.perf_counter() - t
     diff = np.abs(images["py_lambert"] - images["lambert"]).max()
-    print(f"python_material: largest difference from the built-in lambert {diff:.3g}; render {seconds['lambert']:.3f} s "
+    print(f"python_material: largest difference from the built-in lambert {diff:.3g}; "
+          f"render {seconds['lambert']:.3f} s "
           f"(lambert), {seconds['py_lambert']:.3f} s (py_lambert)")
     generic.write_image(os.path.join(outdir, "python_material.png"), images["py_lambert"])
     if diff > 1e-6:

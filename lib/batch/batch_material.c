@@ -192,7 +192,10 @@ static int run_material(const char *fn, MaterialJob *j, GError *err)
     j->width = gbatch_output_width(j->m->model, j->output);
     GColor white = {0};
     if (j->method == REFLECTION || j->method == REFRACTION) {
-        if ((rc = gcolor_alloc(&white, j->m->model)) != G_OK || (rc = gbatch_white_light(j->m->model, &white)) != G_OK) {
+        rc = gcolor_alloc(&white, j->m->model);
+        if (rc == G_OK)
+            rc = gbatch_white_light(j->m->model, &white);
+        if (rc != G_OK) {
             gcolor_free(&white);
             return gerror_set(err, rc, "%s: the white light: %s", fn, gstatus_string(rc));
         }

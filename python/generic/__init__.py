@@ -16,7 +16,8 @@ from .pymaterial import Color, Param, PythonMaterial, check, register_material
 from .render import read_image, render, write_image
 
 __all__ = ["Color", "ColorModel", "GenericError", "Generator", "Library", "Material", "Param", "PythonMaterial",
-           "SurfacePoint", "check", "colormodels", "kinds", "load", "read_image", "register_material", "render", "types",
+           "SurfacePoint", "check", "colormodels", "kinds", "load", "read_image", "register_material", "render",
+           "types",
            "write_image"]
 
 

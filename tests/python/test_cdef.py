@@ -71,7 +71,8 @@ def test_cdef_matches_the_headers(source, tmp_path):
 
 def test_a_drifted_declaration_is_caught(source, tmp_path, monkeypatch):
     """The check fails when a prototype differs: the cdef with one argument's type changed."""
-    monkeypatch.setattr(_cdef, "CDEF", _cdef.CDEF.replace("int gbatch_pdf(const GMaterial *m", "int gbatch_pdf(GMaterial *m"))
+    drifted = _cdef.CDEF.replace("int gbatch_pdf(const GMaterial *m", "int gbatch_pdf(GMaterial *m")
+    monkeypatch.setattr(_cdef, "CDEF", drifted)
     src = tmp_path / "drift.c"
     src.write_text(c_source())
     build = subprocess.run([os.environ.get("CC", "cc"), "-std=c11", "-D_GNU_SOURCE", "-Wall", "-Werror", "-c",

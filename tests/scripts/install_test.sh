@@ -112,7 +112,8 @@ fi
 # ---- the Python package, where Debian's python3 looks under PREFIX (lib/python3.X/dist-packages) ----
 py=/usr/bin/python3
 pydir="$root/lib/python$("$py" -c 'import sys; print("%d.%d" % sys.version_info[:2])')/dist-packages"
-pycheck='import generic; m = generic.load("'"$src"'/examples/materials/lambert.mat").material("grey"); print(m.reflection([0, 0, 1], [0, 0, 1], [0, 0, 1])[0, 1])'
+pycheck='import generic; m = generic.load("'"$src"'/examples/materials/lambert.mat").material("grey"); '
+pycheck="$pycheck"'print(m.reflection([0, 0, 1], [0, 0, 1], [0, 0, 1])[0, 1])'
 if [ -n "$san" ]; then
     echo "installed Python package: SKIPPED in a sanitizer build (python.sh says why)"
 elif ! [ -f "$pydir/generic/__init__.py" ]; then

@@ -13,7 +13,8 @@ if nm -A "$BUILD/lib/libgeneric.a" 2> /dev/null | grep -q __asan_; then
 fi
 need_program "$PYTHON"
 [ -f "$BUILD/python/generic/__init__.py" ] || { echo "FAIL: $BUILD/python is not built (make python)"; exit 1; }
-"$PYTHON" -c "import cffi, numpy, pytest" || { echo "FAIL: $PYTHON lacks cffi, numpy or pytest (scripts/deps.sh)"; exit 1; }
+"$PYTHON" -c "import cffi, numpy, pytest" ||
+    { echo "FAIL: $PYTHON lacks cffi, numpy or pytest (scripts/deps.sh)"; exit 1; }
 GENERIC_BUILD_DIR=$(cd "$BUILD" && pwd)
 GENERIC_SOURCE_DIR=$(pwd)
 export GENERIC_BUILD_DIR GENERIC_SOURCE_DIR
