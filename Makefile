@@ -9,6 +9,7 @@
 # make demo            install missing packages, build on every processor, run the default demo
 # make bench           benchmarks (print figures; never fail on time)
 # make fuzz            libFuzzer targets and generated inputs (tests/fuzz/build.mk)
+# make python         the Python package in build/python (python/build.mk; part of make)
 # make install PREFIX=/usr/local DESTDIR=    (make uninstall removes the same files)
 
 PREFIX  ?= /usr/local
@@ -154,4 +155,6 @@ clean:
 # gtrace's rules (a copy of the tree without examples/, as tests/scripts/readme_examples.sh builds the library in,
 # has none)
 -include examples/gtrace/build.mk
+# the Python package (python/build.mk; after gtrace's rules, whose libgtrace.so it opens)
+-include python/build.mk
 

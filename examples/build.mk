@@ -46,3 +46,22 @@ uninstall: uninstall-tools
 uninstall-tools:
 	rm -f $(addprefix $(INST)/bin/,$(TOOLS)) $(addprefix $(DESTDIR)$(MAN_DIR)/,$(TOOLS:=.1))
 	rm -f $(addprefix $(DESTDIR)$(PLUGIN_DIR)/,$(notdir $(EXAMPLE_PLUGIN_SO)))
+
+# libgmat.so: `gmat check` for bindings (python/build.mk): gmat's checking objects and check_file.c, linked against
+# libgeneric.so (one registry with the program); exports only check_file.h's entry point. -z defs: gmat's command
+# line (main.c and the commands it alone runs) is not part of it.
+GMAT_SO := $(BUILD)/lib/libgmat.so
+GMAT_SO_OBJ := $(patsubst %,$(BUILD)/obj/examples/gmat/%.o,check check_file flags measure sampling uvflag)
+all: $(GMAT_SO)
+$(GMAT_SO): $(GMAT_SO_OBJ) $(LIBSO)
+	@mkdir -p $(dir $@)
+	$(CC) -shared -Wl,-z,defs -Wl,-soname,libgmat.so -o $@ $(GMAT_SO_OBJ) -L$(BUILD)/lib -l:libgeneric.so.$(SOVER) \
+	    -Wl,-rpath,'$$ORIGIN' $(LDFLAGS) $(DEPLIBS)
+.PHONY: install-gmat-so uninstall-gmat-so
+install: install-gmat-so
+install-gmat-so: $(GMAT_SO)
+	install -d $(INST)/lib
+	install -m 755 $(GMAT_SO) $(INST)/lib/
+uninstall: uninstall-gmat-so
+uninstall-gmat-so:
+	rm -f $(INST)/lib/libgmat.so

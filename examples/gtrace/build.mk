@@ -89,3 +89,21 @@ endif
 .PHONY: bench-mpi
 bench-mpi: $(BUILD)/bin/gtrace
 	@bench/mpi.sh $(BUILD)
+# libgtrace.so: the tracer as a shared object for bindings (python/build.mk): the objects of libgtrace.a (compiled
+# -fPIC like every object), linked against libgeneric.so so that a program holds one registry and one allocator.
+# It exports only the entry points of embed/render_file.h (GTRACE_EMBED_API); -z defs: everything else resolves in
+# libgeneric, Embree, assimp and libc. Found beside libgeneric.so.0 (run path $ORIGIN), in the tree and installed.
+GTRACE_SO := $(BUILD)/lib/libgtrace.so
+all: $(GTRACE_SO)
+$(GTRACE_SO): $(GTRACE_LIB) $(LIBSO)
+	@mkdir -p $(dir $@)
+	$(CC) -shared -Wl,-z,defs -Wl,-soname,libgtrace.so -o $@ -Wl,--whole-archive $(GTRACE_LIB) -Wl,--no-whole-archive \
+	    -L$(BUILD)/lib -l:libgeneric.so.$(SOVER) -Wl,-rpath,'$$ORIGIN' $(LDFLAGS) $(GTRACE_DEPLIBS) $(DEPLIBS)
+.PHONY: install-gtrace-so uninstall-gtrace-so
+install: install-gtrace-so
+install-gtrace-so: $(GTRACE_SO)
+	install -d $(INST)/lib
+	install -m 755 $(GTRACE_SO) $(INST)/lib/
+uninstall: uninstall-gtrace-so
+uninstall-gtrace-so:
+	rm -f $(INST)/lib/libgtrace.so

@@ -109,6 +109,31 @@ else
     echo "man pages: SKIPPED (help2man is not installed)"
 fi
 
+# ---- the Python package, where Debian's python3 looks under PREFIX (lib/python3.X/dist-packages) ----
+py=/usr/bin/python3
+pydir="$root/lib/python$("$py" -c 'import sys; print("%d.%d" % sys.version_info[:2])')/dist-packages"
+pycheck='import generic; m = generic.load("'"$src"'/examples/materials/lambert.mat").material("grey"); '
+pycheck="$pycheck"'print(m.reflection([0, 0, 1], [0, 0, 1], [0, 0, 1])[0, 1])'
+if [ -n "$san" ]; then
+    echo "installed Python package: SKIPPED in a sanitizer build (python.sh says why)"
+elif ! [ -f "$pydir/generic/__init__.py" ]; then
+    fail "the Python package is not installed in $pydir/generic"
+elif "$py" -c "import cffi, numpy" 2> /dev/null; then
+    out=$(PYTHONPATH="$pydir" GENERIC_LIBDIR="$root/lib" "$py" -c "$pycheck" 2>&1) ||
+        fail "the installed Python package: $out"
+    case "$out" in 0.159*) ;; *) fail "the installed package's lambert reflects $out, not 0.5 / pi" ;; esac
+    if unshare -rm true 2> /dev/null; then
+        if out=$(unshare -rm sh -c "mount --bind '$root' '$PREFIX' && cd / && env -u PYTHONPATH $py -c '$pycheck'" 2>&1)
+        then
+            echo "installed Python package: imported by $py from ${pydir#"$stage"}: lambert reflects $out"
+        else
+            fail "python3 does not import the package installed in $PREFIX: $out"
+        fi
+    fi
+else
+    fail "$py lacks cffi or numpy (scripts/deps.sh)"
+fi
+
 # ---- uninstall leaves nothing ----
 cd "$src"
 make --no-print-directory -s uninstall BUILD="$BUILD" DESTDIR="$stage" > /dev/null 2>&1 || fail "make uninstall"
