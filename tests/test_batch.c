@@ -18,7 +18,7 @@
 enum { N = 3000 };
 
 static const char *const text =
-    "material plastic phong { diffuse rgb 0.6 0.08 0.05 specular rgb 0.25 0.25 0.25 exponent 60 }\n"
+    "material glossy phong { diffuse rgb 0.6 0.08 0.05 specular rgb 0.25 0.25 0.25 exponent 60 }\n"
     "material matte lambert { reflectance rgb 0.7 0.5 0.2 }\n"
     "material glass dielectric { index cauchy 1.3199 0.006878 -0.000132 }\n"
     "material lamp emitter { radiance rgb 2 1.5 1 }\n"
@@ -213,7 +213,7 @@ static void check_models(const char *model)
 {
     Rows *r = make_rows();
     GLibrary *lib = load(model);
-    static const char *const names[] = {"plastic", "matte", "glass", "lamp", "tiles"};
+    static const char *const names[] = {"glossy", "matte", "glass", "lamp", "tiles"};
     for (size_t k = 0; k < sizeof names / sizeof *names; k++)
         check_material(lib, names[k], r);
     glibrary_destroy(lib);
@@ -334,7 +334,7 @@ static void test_bad_rows(void **state)
     (void)state;
     Rows *r = make_rows();
     GLibrary *lib = load("rgb");
-    const GMaterial *m = glibrary_material(lib, "plastic");
+    const GMaterial *m = glibrary_material(lib, "glossy");
     double *res = calloc(3 * N, sizeof(double)), *pdf = calloc(N, sizeof(double)), *dir = calloc(3 * N, sizeof(double));
     int *flags = calloc(N, sizeof(int));
     GError err;
