@@ -1,6 +1,7 @@
-/* test_gtrace_sppm.c - stochastic progressive photon mapping (integrators/sppm.c): agreement with the path tracer
- * on the diffuse Cornell box patch by patch, the same image for any thread count and for a crop, the options'
- * bounds, and a scene without a light that sends photons refused. */
+/* test_gtrace_sppm.c - the particle integrators: stochastic progressive photon mapping (integrators/sppm.c) and
+ * particle tracing to the camera (integrators/light.c). Agreement with the path tracer on the diffuse Cornell box
+ * patch by patch, the same image for any thread count and for a crop, the options' bounds, and a scene without a
+ * light that sends photons refused. */
 #include "test_gtrace_common.h"
 #include "integrators/sppm.h"
 #include "generic/builtins.h"
@@ -72,11 +73,11 @@ static double patch_luma(const Framebuffer *fb, const Framebuffer *ref, int x0, 
 
 static void test_cornell_agrees_with_path(void **state)
 {
-    (void)state;
+    int integrator = (int)(intptr_t)*state;
     Scene *s = load_scene_file("examples/scenes/cornell.scene", "rgb");
     Framebuffer ref, fb;
     RenderSettings rp = settings(32, 32, 1024, 2, RENDER_PATH, 0, 0);
-    RenderSettings rq = settings(32, 32, 1, 2, RENDER_SPPM, 64, 40000);
+    RenderSettings rq = settings(32, 32, 1, 2, integrator, integrator == RENDER_SPPM ? 64 : 32, 40000);
     render_ok(s, &rp, &ref);
     render_ok(s, &rq, &fb);
     int n = 8, worse = 0;
@@ -84,7 +85,7 @@ static void test_cornell_agrees_with_path(void **state)
     for (int py = 0; py < 32; py += n)
         for (int px = 0; px < 32; px += n) {
             double a = patch_luma(&ref, &ref, px, py, n), b = patch_luma(&fb, &ref, px, py, n), d = fabs(b - a) / a;
-            print_message("patch %2d,%2d: path %.5f sppm %.5f (%+.2f%%)\n", px, py, a, b, 100.0 * (b - a) / a);
+            print_message("patch %2d,%2d: path %.5f other %.5f (%+.2f%%)\n", px, py, a, b, 100.0 * (b - a) / a);
             worst = fmax(worst, d);
             worse += d > 0.03;
         }
@@ -99,10 +100,10 @@ static void test_cornell_agrees_with_path(void **state)
 
 static void test_threads_and_crop(void **state)
 {
-    (void)state;
+    int integrator = (int)(intptr_t)*state;
     Scene *s = load_scene_file("examples/scenes/cornell.scene", "rgb");
     Framebuffer a, b, c, d;
-    RenderSettings r1 = settings(20, 18, 1, 1, RENDER_SPPM, 3, 5000), r2 = r1;
+    RenderSettings r1 = settings(20, 18, 1, 1, integrator, 3, 5000), r2 = r1;
     r2.threads = 2;
     render_ok(s, &r1, &a);
     render_ok(s, &r2, &b);
@@ -178,8 +179,10 @@ int main(void)
         return 1;
     }
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_cornell_agrees_with_path),
-        cmocka_unit_test(test_threads_and_crop),
+        {"test_cornell_agrees_with_path (sppm)", test_cornell_agrees_with_path, NULL, NULL, (void *)RENDER_SPPM},
+        {"test_cornell_agrees_with_path (light)", test_cornell_agrees_with_path, NULL, NULL, (void *)RENDER_LIGHT},
+        {"test_threads_and_crop (sppm)", test_threads_and_crop, NULL, NULL, (void *)RENDER_SPPM},
+        {"test_threads_and_crop (light)", test_threads_and_crop, NULL, NULL, (void *)RENDER_LIGHT},
         cmocka_unit_test(test_bad_options),
         cmocka_unit_test(test_no_photon_light),
     };

@@ -50,8 +50,8 @@ static void usage(FILE *f)
             "              [--colormodel M] [--threads N] [--cutoff W] [--bands K] [--exposure STOPS] [--plugin FILE.so]... [-q]\n"
             "              [--allow-plugins] [--confine DIR]\n"
             "              [--probe FILE] [--probe-technique T] [--probe-count N] [--probe-samples N]\n"
-            "              [--probe-scale S] [--probe-shadows on|off] [--crop X0,Y0,X1,Y1] [--integrator whitted|path|sppm]\n"
-            "              [--passes N] [--photons N] [--radius R] [--alpha A]\n"
+            "              [--probe-scale S] [--probe-shadows on|off] [--crop X0,Y0,X1,Y1]\n"
+            "              [--integrator whitted|path|sppm|light] [--passes N] [--photons N] [--radius R] [--alpha A]\n"
             "              [--spectral] [--display D] [--view V] [--ocio-config FILE]\n"
             "              [--mpi-block N] [--mpi-timeout S] [--mpi-dedicated]\n"
             "       gtrace merge PIECE... -o OUT\n"
@@ -91,8 +91,10 @@ static void usage(FILE *f)
             "                    estimation and material sampling by MIS, Russian roulette; --spp paths\n"
             "                    per pixel, --depth bounces) or sppm (stochastic progressive photon\n"
             "                    mapping: caustics through glass and from mirrors; --spp is not used)\n"
-            "  --passes N        sppm: passes, 1..1000000 (default 64)\n"
-            "  --photons N       sppm: photon paths per pass, 1..100000000 (default 100000)\n"
+            "                    or light (particles from the lights connected to a pinhole camera;\n"
+            "                    --passes x --photons paths; lights seen directly are not drawn)\n"
+            "  --passes N        sppm, light: passes, 1..1000000 (default 64)\n"
+            "  --photons N       sppm, light: photon paths per pass, 1..100000000 (default 100000)\n"
             "  --radius R        sppm: initial gather radius in scene units (default: twice a pixel's\n"
             "                    footprint at the scene's centre)\n"
             "  --alpha A         sppm: fraction of a pass's photons kept, in (0, 1] (default 2/3)\n"
@@ -301,12 +303,14 @@ static int parse_args(int argc, char **argv, Options *o)
             rc = cli_int("gtrace", "--bands", optarg, 1, BANDS_LIMIT, &o->bands);
             break;
         case OPT_INTEGRATOR:
-            if (strcmp(optarg, "whitted") == 0 || strcmp(optarg, "path") == 0 || strcmp(optarg, "sppm") == 0) {
-                o->integrator = strcmp(optarg, "path") == 0   ? RENDER_PATH
-                                : strcmp(optarg, "sppm") == 0 ? RENDER_SPPM
-                                                              : RENDER_WHITTED;
+            if (strcmp(optarg, "whitted") == 0 || strcmp(optarg, "path") == 0 || strcmp(optarg, "sppm") == 0 ||
+                strcmp(optarg, "light") == 0) {
+                o->integrator = strcmp(optarg, "path") == 0    ? RENDER_PATH
+                                : strcmp(optarg, "sppm") == 0  ? RENDER_SPPM
+                                : strcmp(optarg, "light") == 0 ? RENDER_LIGHT
+                                                               : RENDER_WHITTED;
             } else {
-                fprintf(stderr, "gtrace: --integrator expects whitted, path or sppm, got '%s'\n", optarg);
+                fprintf(stderr, "gtrace: --integrator expects whitted, path, sppm or light, got '%s'\n", optarg);
                 rc = -1;
             }
             break;

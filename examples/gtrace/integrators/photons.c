@@ -102,7 +102,8 @@ static uint64_t mix64(uint64_t z)
         }                                                                                                              \
     } while (0)
 
-int photon_trace(TraceCtx *c, const PhotonSource *src, const Media *media0, uint64_t index, PhotonBatch *b, int slot)
+int photon_trace(TraceCtx *c, const PhotonSource *src, const Media *media0, uint64_t index, PhotonBatch *b, int slot,
+                 int direct, PhotonVisit visit, void *user)
 {
     const Scene *s = c->scene;
     Rng *rng = &c->rng;
@@ -161,11 +162,12 @@ int photon_trace(TraceCtx *c, const PhotonSource *src, const Media *media0, uint
             gscratch_release(c->scratch, bounce);
             goto done;
         }
-        if (!delta && depth > 0 && b->count[slot] < b->per_path) {
+        if (!delta && (depth > 0 || direct) && b->count[slot] < b->per_path) {
             Photon *ph = &b->photons[(size_t)slot * (size_t)b->per_path + (size_t)b->count[slot]];
             ph->p = sp.point;
             ph->wi = wi;
-            rc = gcolor_copy(&ph->power, &power);
+            ph->pixel = -1;
+            rc = visit ? visit(user, c, &sp, facing, &media, wi, &power, ph) : gcolor_copy(&ph->power, &power);
             b->count[slot]++;
         }
         if (rc < 0 || depth == c->max_depth) {

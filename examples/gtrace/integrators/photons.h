@@ -34,7 +34,14 @@ void photon_source_free(PhotonSource *src);
 typedef struct Photon {
     GVec3 p, wi;
     GColor power;
+    long pixel; /**< a visitor's use (light.c: the pixel it lights, -1: none) */
 } Photon;
+
+/** What a particle path does at a stored surface point instead of storing its power (photon_trace): fills slot
+ * (its power and pixel) from the surface point sp (facing, media as trace.h gives them), the direction wi the
+ * particle came from and its power; G_OK or a status. */
+typedef int (*PhotonVisit)(void *user, TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 wi,
+                           const GColor *power, Photon *slot);
 
 /** A batch of particle paths: path i keeps up to per_path stored particles at photons[i * per_path ..], count[i]
  * of them; then a hashed grid (photon_batch_index) over all of them. */
@@ -58,10 +65,12 @@ void photon_batch_free(PhotonBatch *b);
 /** Traces particle path `index` (its random numbers seeded by index alone) into slot `slot` of the batch: the
  * light chosen by power, each bounce drawn by gmaterial_sample from the direction it came from (its power through
  * the material's weight, or through reflection/refraction for a material that re-radiates), dispersion by one
- * wavelength group as the path tracer does it, Russian roulette after PHOTON_RR_START bounces, at most
- * per_path non-ideal surfaces after the first surface met (the first one's light is direct light, which the
- * integrators estimate by light samples) and at most c->max_depth bounces. media0: the camera's medium. */
-int photon_trace(TraceCtx *c, const PhotonSource *src, const Media *media0, uint64_t index, PhotonBatch *b, int slot);
+ * wavelength group as the path tracer does it, Russian roulette after PHOTON_RR_START bounces, at most c->max_depth
+ * bounces. It keeps at most per_path of the non-ideal surfaces it meets, from the first (direct: 1) or the second
+ * (direct: 0: the first one's light is direct light, which SPPM estimates by light samples): their power and
+ * position, or what visit (not NULL) makes of them. media0: the camera's medium. */
+int photon_trace(TraceCtx *c, const PhotonSource *src, const Media *media0, uint64_t index, PhotonBatch *b, int slot,
+                 int direct, PhotonVisit visit, void *user);
 /** Builds the batch's grid with cells of side `cell` (> 0): the order of the particles in a bucket does not depend
  * on anything but the slots. */
 int photon_batch_index(PhotonBatch *b, double cell, GError *err);

@@ -389,7 +389,7 @@ static int sppm_run(Sppm *p, Progress *prog, GError *err)
             for (long i = 0; i < n; i++) {
                 TraceCtx *c = renderer_thread_ctx(p->r, omp_get_thread_num());
                 uint64_t index = (uint64_t)pass * (uint64_t)p->photons + (uint64_t)(start + i);
-                first_error(&status, photon_trace(c, &p->src, p->media0, index, &p->batch, (int)i));
+                first_error(&status, photon_trace(c, &p->src, p->media0, index, &p->batch, (int)i, 0, NULL, NULL));
             }
             if (status != G_OK)
                 break;

@@ -10,6 +10,7 @@
 #include "integrators/path.h"
 #include "integrators/whitted.h"
 #include "integrators/sppm.h"
+#include "integrators/light.h"
 #include "film/progress.h"
 #include "lights/emissive.h"
 
@@ -323,9 +324,9 @@ int renderer_create(Renderer **out, const Scene *s, const RenderSettings *rs, Fr
 int renderer_region(Renderer *r, const int region[4], Progress *prog, GError *err)
 {
     const Framebuffer *fb = r->job.fb;
-    if (r->job.integrator == RENDER_SPPM)
-        return gerror_set(err, G_ERR_UNSUPPORTED, "--integrator sppm renders the whole image (or its crop) at once, "
-                          "not in regions: it does not run under mpirun");
+    if (r->job.integrator == RENDER_SPPM || r->job.integrator == RENDER_LIGHT)
+        return gerror_set(err, G_ERR_UNSUPPORTED, "--integrator sppm and light render the whole image (or its crop) at "
+                          "once, not in regions: they do not run under mpirun");
     int rx0 = region[0], ry0 = region[1], rx1 = region[2], ry1 = region[3];
     if (rx0 < fb->x || ry0 < fb->y || rx0 >= rx1 || ry0 >= ry1 || rx1 > fb->x + fb->width ||
         ry1 > fb->y + fb->height)
@@ -412,6 +413,8 @@ int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, Rend
 {
     if (rs->integrator == RENDER_SPPM)
         return sppm_render(s, rs, fb, st, err);
+    if (rs->integrator == RENDER_LIGHT)
+        return light_render(s, rs, fb, st, err);
     memset(st, 0, sizeof *st);
     Renderer *r;
     int rc = renderer_create(&r, s, rs, fb, err);

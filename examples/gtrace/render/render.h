@@ -18,7 +18,7 @@
 #define RENDER_LIMIT_MAX_RAYS 1000000
 
 /** The light transport algorithm (--integrator). */
-enum { RENDER_WHITTED = 0, RENDER_PATH = 1, RENDER_SPPM = 2 };
+enum { RENDER_WHITTED = 0, RENDER_PATH = 1, RENDER_SPPM = 2, RENDER_LIGHT = 3 };
 
 typedef struct RenderSettings {
     int width, height, spp, depth, threads, quiet;
@@ -26,14 +26,15 @@ typedef struct RenderSettings {
     int max_rays;  /**< secondary rays per camera sample (0: RENDER_DEFAULT_MAX_RAYS); the rest are not traced */
     int bands;     /**< most wavelength groups a dispersive refraction splits into (0: BANDS_DEFAULT_CAP; 1: no
                         dispersion) */
-    int integrator; /**< RENDER_WHITTED (the paper's Fig. 4, default), RENDER_PATH (path.c) or RENDER_SPPM (sppm.c) */
+    int integrator; /**< RENDER_WHITTED (the paper's Fig. 4, default), RENDER_PATH (path.c), RENDER_SPPM (sppm.c) or
+                        RENDER_LIGHT (light.c) */
     int crop[4];   /**< x0, y0, x1, y1: render only x0 <= x < x1, y0 <= y < y1 of the width x height image, each
                         pixel as the full render has it; all 0: the whole image */
     int waves;     /**< 1: also keep each pixel's values at the colour model's wavelengths (--spectral) */
     int no_emissive_lights; /**< 1: glowing geometry is not sampled as light (lights/emissive.h), only met by rays:
                                  the integrators' estimate without next-event estimation towards it */
-    int sppm_passes;     /**< RENDER_SPPM: passes (0: the default; integrators/sppm.h) */
-    long sppm_photons;   /**< RENDER_SPPM: photon paths per pass (0: the default) */
+    int sppm_passes;     /**< RENDER_SPPM, RENDER_LIGHT: passes (0: the default; integrators/sppm.h) */
+    long sppm_photons;   /**< RENDER_SPPM, RENDER_LIGHT: photon paths per pass (0: the default) */
     double sppm_radius;  /**< RENDER_SPPM: initial gather radius in scene units (0: from the pixel's footprint) */
     double sppm_alpha;   /**< RENDER_SPPM: the fraction of new photons kept per pass, in (0, 1] (0: 2/3) */
 } RenderSettings;
