@@ -125,6 +125,61 @@ static void test_threads_and_crop(void **state)
     scene_destroy(s);
 }
 
+/* ---- a glass ball's focus: a collimated beam through a ball of index n = 1.5 and radius R onto a screen at the
+ * paraxial focus f = n R / (2 (n - 1)) from its centre ---- */
+
+static const char ball_scene[] =
+    "colormodel rgb\n"
+    "camera pinhole { from <0, 0.3, 3> at <0, 0, 0> fov 12 width 64 height 48 spp 1 depth 8 }\n"
+    "material glass dielectric { index 1.5 }\n"
+    "object sphere { center <0, 0.75, 0> radius 0.5 material glass }\n" /* f = 1.5 * 0.5 / 1 = 0.75 */
+    "object box { min <-1.5, -0.05, -1.5> max <1.5, 0, 1.5> material lambert { reflectance rgb 0.8 0.8 0.8 } }\n"
+    "light directional { direction <0, -1, 0> irradiance rgb 1 1 1 }\n";
+
+static void test_glass_ball_focus(void **state)
+{
+    int integrator = (int)(intptr_t)*state;
+    GError err;
+    assert_int_equal(gtrace_register_types(&err), G_OK);
+    Scene *s = NULL;
+    if (scene_load(write_text("ball.scene", ball_scene), NULL, &s, &err) != G_OK)
+        fail_msg("%s", err.message);
+    assert_int_equal(accel_build(s, &err), G_OK);
+    int w = 64, h = 48;
+    Framebuffer fb;
+    RenderSettings rs = settings(w, h, 1, 2, integrator, 16, 100000);
+    rs.depth = 8;
+    rs.sppm_radius = 0.004;
+    render_ok(s, &rs, &fb);
+    /* where the focus, the screen's point on the axis, lies in the image */
+    Camera cam = s->camera;
+    camera_setup(&cam, w, h);
+    GVec3 v = gvec3_sub(gvec3(0, 0, 0), cam.eye);
+    double z = gvec3_dot(v, cam.forward);
+    double fx = (gvec3_dot(v, cam.right) / (z * cam.half_w) + 1.0) * 0.5 * w;
+    double fy = (1.0 - gvec3_dot(v, cam.upv) / (z * cam.half_h)) * 0.5 * h;
+    int bx = 0, by = 0;
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++)
+            if (luma(pixel(&fb, x, y)) > luma(pixel(&fb, bx, by)))
+                bx = x, by = y;
+    /* the lit screen in front of the ball's shadow (rows 33..38 meet it about 0.9 to 1.2 from the axis): rho E / pi
+     * = 0.8 / pi, and a little of the light the ball reflects */
+    double lit = 0.0;
+    for (int y = 33; y < 39; y++)
+        for (int x = 0; x < w; x++)
+            lit += luma(pixel(&fb, x, y)) / (6 * w);
+    double peak = luma(pixel(&fb, bx, by));
+    print_message("focus expected at (%.2f, %.2f), brightest pixel (%d, %d) centre (%.1f, %.1f); peak %.3f, lit screen "
+                  "%.4f (rho E / pi = %.4f), ratio %.1f\n", fx, fy, bx, by, bx + 0.5, by + 0.5, peak, lit, 0.8 / M_PI,
+                  peak / lit);
+    assert_true(fabs(bx + 0.5 - fx) <= 1.0 && fabs(by + 0.5 - fy) <= 1.0);
+    assert_true(peak > 10.0 * lit);
+    assert_near(lit, 0.8 / M_PI, 0.05 * 0.8 / M_PI);
+    framebuffer_free(&fb);
+    scene_destroy(s);
+}
+
 /* ---- bad input ---- */
 
 /* Renders s with rs, which must fail with status `want` and a message containing `words`. */
@@ -181,6 +236,8 @@ int main(void)
     const struct CMUnitTest tests[] = {
         {"test_cornell_agrees_with_path (sppm)", test_cornell_agrees_with_path, NULL, NULL, (void *)RENDER_SPPM},
         {"test_cornell_agrees_with_path (light)", test_cornell_agrees_with_path, NULL, NULL, (void *)RENDER_LIGHT},
+        {"test_glass_ball_focus (sppm)", test_glass_ball_focus, NULL, NULL, (void *)RENDER_SPPM},
+        {"test_glass_ball_focus (light)", test_glass_ball_focus, NULL, NULL, (void *)RENDER_LIGHT},
         {"test_threads_and_crop (sppm)", test_threads_and_crop, NULL, NULL, (void *)RENDER_SPPM},
         {"test_threads_and_crop (light)", test_threads_and_crop, NULL, NULL, (void *)RENDER_LIGHT},
         cmocka_unit_test(test_bad_options),
