@@ -4,6 +4,7 @@
 #include "scenefile/parse.h"
 #include "scene/accel.h"
 #include "integrators/bands.h"
+#include "integrators/sppm.h"
 #include "distributed/dist.h"
 #include "film/merge.h"
 #include "distributed/mpi_load.h"
@@ -52,7 +53,8 @@ static void usage(FILE *f)
             "              [--colormodel M] [--threads N] [--cutoff W] [--bands K] [--exposure STOPS] [--plugin FILE.so]... [-q]\n"
             "              [--allow-plugins] [--confine DIR]\n"
             "              [--probe FILE] [--probe-technique T] [--probe-count N] [--probe-samples N]\n"
-            "              [--probe-scale S] [--probe-shadows on|off] [--crop X0,Y0,X1,Y1] [--integrator whitted|path]\n"
+            "              [--probe-scale S] [--probe-shadows on|off] [--crop X0,Y0,X1,Y1]\n"
+            "              [--integrator whitted|path|sppm|light] [--passes N] [--photons N] [--radius R] [--alpha A]\n"
             "              [--spectral] [--display D] [--view V] [--ocio-config FILE]\n"
             "              [--mpi-block N] [--mpi-timeout S] [--mpi-dedicated]\n"
             "       gtrace merge PIECE... -o OUT\n"
@@ -93,7 +95,15 @@ static void usage(FILE *f)
             "  --threads N       threads for rendering and the BVH build (default: all processors)\n"
             "  --integrator I    whitted (default: the paper's Fig. 4) or path (path tracing: next-event\n"
             "                    estimation and material sampling by MIS, Russian roulette; --spp paths\n"
-            "                    per pixel, --depth bounces)\n"
+            "                    per pixel, --depth bounces) or sppm (stochastic progressive photon\n"
+            "                    mapping: caustics through glass and from mirrors; --spp is not used)\n"
+            "                    or light (particles from the lights connected to a pinhole camera;\n"
+            "                    --passes x --photons paths; lights seen directly are not drawn)\n"
+            "  --passes N        sppm, light: passes, 1..1000000 (default 64)\n"
+            "  --photons N       sppm, light: photon paths per pass, 1..100000000 (default 100000)\n"
+            "  --radius R        sppm: initial gather radius in scene units (default: twice a pixel's\n"
+            "                    footprint at the scene's centre)\n"
+            "  --alpha A         sppm: fraction of a pass's photons kept, in (0, 1] (default 2/3)\n"
             "  --exposure STOPS  exposure for .png/.jpg output (default: the camera's)\n"
             "  --probe FILE      replace the image of the scene's `light probe` (relative to the current\n"
             "                    directory); the other --probe options replace its other settings\n"
@@ -146,7 +156,7 @@ enum {
     OPT_WIDTH = CLI_FIRST_OWN, OPT_HEIGHT, OPT_SPP, OPT_DEPTH, OPT_MAX_RAYS, OPT_THREADS, OPT_COLORMODEL,
     OPT_EXPOSURE, OPT_CUTOFF, OPT_CROP, OPT_BANDS, OPT_INTEGRATOR, OPT_PROBE, OPT_PROBE_TECHNIQUE, OPT_PROBE_COUNT, OPT_PROBE_SAMPLES,
     OPT_PROBE_SHADOWS, OPT_PROBE_SCALE, OPT_WAVES, OPT_DISPLAY, OPT_VIEW, OPT_OCIO_CONFIG, OPT_MPI_BLOCK,
-    OPT_MPI_TIMEOUT, OPT_MPI_DEDICATED
+    OPT_MPI_TIMEOUT, OPT_MPI_DEDICATED, OPT_PASSES, OPT_PHOTONS, OPT_RADIUS, OPT_ALPHA
 };
 
 /* The --probe options (code c, its value v); -1 with a message for a bad one. */
@@ -187,6 +197,8 @@ typedef struct Options {
     int have_display;
     const char *scene, *out, *colormodel;
     int width, height, spp, depth, threads, quiet, max_rays, bands, integrator, waves;
+    int passes, photons;   /* --integrator sppm (0: its defaults) */
+    double radius, alpha;
     int have_exposure, have_cutoff, have_crop;
     int crop[4]; /* x0, y0, x1, y1 */
     double exposure, cutoff;
@@ -234,6 +246,10 @@ static int parse_args(int argc, char **argv, Options *o)
         {"crop", required_argument, NULL, OPT_CROP},
         {"bands", required_argument, NULL, OPT_BANDS},
         {"integrator", required_argument, NULL, OPT_INTEGRATOR},
+        {"passes", required_argument, NULL, OPT_PASSES},
+        {"photons", required_argument, NULL, OPT_PHOTONS},
+        {"radius", required_argument, NULL, OPT_RADIUS},
+        {"alpha", required_argument, NULL, OPT_ALPHA},
         {"probe", required_argument, NULL, OPT_PROBE},
         {"probe-technique", required_argument, NULL, OPT_PROBE_TECHNIQUE},
         {"probe-count", required_argument, NULL, OPT_PROBE_COUNT},
@@ -293,12 +309,28 @@ static int parse_args(int argc, char **argv, Options *o)
             rc = cli_int("gtrace", "--bands", optarg, 1, BANDS_LIMIT, &o->bands);
             break;
         case OPT_INTEGRATOR:
-            if (strcmp(optarg, "whitted") == 0 || strcmp(optarg, "path") == 0) {
-                o->integrator = strcmp(optarg, "path") == 0 ? RENDER_PATH : RENDER_WHITTED;
+            if (strcmp(optarg, "whitted") == 0 || strcmp(optarg, "path") == 0 || strcmp(optarg, "sppm") == 0 ||
+                strcmp(optarg, "light") == 0) {
+                o->integrator = strcmp(optarg, "path") == 0    ? RENDER_PATH
+                                : strcmp(optarg, "sppm") == 0  ? RENDER_SPPM
+                                : strcmp(optarg, "light") == 0 ? RENDER_LIGHT
+                                                               : RENDER_WHITTED;
             } else {
-                fprintf(stderr, "gtrace: --integrator expects whitted or path, got '%s'\n", optarg);
+                fprintf(stderr, "gtrace: --integrator expects whitted, path, sppm or light, got '%s'\n", optarg);
                 rc = -1;
             }
+            break;
+        case OPT_PASSES:
+            rc = cli_int("gtrace", "--passes", optarg, 1, SPPM_MAX_PASSES, &o->passes);
+            break;
+        case OPT_PHOTONS:
+            rc = cli_int("gtrace", "--photons", optarg, 1, SPPM_MAX_PHOTONS, &o->photons);
+            break;
+        case OPT_RADIUS:
+            rc = cli_double("gtrace", "--radius", optarg, 1e-12, 1e15, &o->radius);
+            break;
+        case OPT_ALPHA:
+            rc = cli_double("gtrace", "--alpha", optarg, 1e-6, 1.0, &o->alpha);
             break;
         case OPT_COLORMODEL:
             o->colormodel = optarg;
@@ -410,7 +442,8 @@ static int prepare(const Options *o, const GReaderOptions *trust, int check_outp
     *rs = (RenderSettings){.width = cam->width, .height = cam->height, .spp = cam->spp, .depth = cam->depth,
                            .threads = o->threads, .quiet = o->quiet, .cutoff = o->have_cutoff ? o->cutoff : cam->cutoff,
                            .max_rays = o->max_rays, .bands = o->bands > 0 ? o->bands : cam->bands,
-                           .integrator = o->integrator, .waves = o->waves};
+                           .integrator = o->integrator, .waves = o->waves, .sppm_passes = o->passes,
+                           .sppm_photons = o->photons, .sppm_radius = o->radius, .sppm_alpha = o->alpha};
     if (o->width > 0 && o->height > 0) {
         rs->width = o->width;
         rs->height = o->height;

@@ -19,7 +19,7 @@ grep -q "usage: gtrace SCENE -o OUT" "$TMP/help" || fail "--help does not print 
 grep -q -- "--spp expects a whole number" "$TMP/err" || fail "--spp zero: no clear message: $(cat "$TMP/err")"
 "$GT" x.scene -o "$TMP/x.png" --integrator bogus > "$TMP/err" 2>&1
 [ $? -eq 2 ] || fail "--integrator bogus: expected exit status 2"
-grep -q -- "--integrator expects whitted or path" "$TMP/err" || fail "--integrator bogus: no clear message: $(cat "$TMP/err")"
+grep -q -- "--integrator expects whitted, path, sppm or light" "$TMP/err" || fail "--integrator bogus: no clear message: $(cat "$TMP/err")"
 
 cat > "$TMP/good.scene" << 'EOF'
 material grey lambert { reflectance rgb 0.5 0.5 0.5 }
@@ -55,6 +55,20 @@ for m in rgb bispectral; do
     "$GT" "$TMP/good.scene" -o "$TMP/path_$m.exr" --colormodel $m --integrator path --spp 4 > "$TMP/out" 2>&1 ||
         fail "--integrator path --colormodel $m: $(cat "$TMP/out")"
     grep -q "40x30, 4 spp, depth 2, $m," "$TMP/out" || fail "--integrator path: no summary line: $(cat "$TMP/out")"
+done
+# the particle integrators: a small render each, and their options' bounds named
+for i in sppm light; do
+    "$GT" "$TMP/good.scene" -o "$TMP/$i.exr" --integrator $i --passes 2 --photons 2000 > "$TMP/out" 2>&1 ||
+        fail "--integrator $i: $(cat "$TMP/out")"
+    [ -s "$TMP/$i.exr" ] || fail "--integrator $i wrote no image"
+done
+for bad in "--passes 0:[1, 1000000]" "--photons 100000001:[1, 100000000]" "--radius -1:--radius expects a number" \
+    "--alpha 1.5:--alpha expects a number"; do
+    opt=${bad%%:*}
+    # shellcheck disable=SC2086
+    "$GT" "$TMP/good.scene" -o "$TMP/x.png" --integrator sppm $opt > "$TMP/err" 2>&1
+    [ $? -eq 2 ] || fail "$opt: expected exit status 2"
+    grep -qF -- "${bad#*:}" "$TMP/err" || fail "$opt: the bound is not named: $(cat "$TMP/err")"
 done
 "$GT" "$TMP/good.scene" -o "$TMP/x.png" --colormodel nosuchmodel > "$TMP/err" 2>&1 && fail "an unknown colour model succeeded"
 grep -q "nosuchmodel" "$TMP/err" || fail "an unknown colour model is not named: $(cat "$TMP/err")"

@@ -76,9 +76,7 @@ typedef struct PathCtx {
 /* The path's random numbers: the thread's generator, seeded for this camera sample by path_trace. */
 static double uniform(PathCtx *p) { return rng_next(&p->c->rng); }
 
-/* The distance along r to area light l within (0, tmax), INFINITY when missed; *pdf is the density (solid
- * angle) with which NEE from r->o draws that direction. */
-static double area_light_hit(const Light *l, const Ray *r, double tmax, double *pdf)
+double area_light_hit(const Light *l, const Ray *r, double tmax, double *pdf)
 {
     if (l->kind == LIGHT_SPHERE) {
         GVec3 oc = gvec3_sub(l->position, r->o);

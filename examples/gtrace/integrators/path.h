@@ -17,4 +17,10 @@
  * index, so the image does not depend on the thread count or the order of the tiles. out must have storage. */
 int path_trace(TraceCtx *c, const Ray *r, const Media *media, uint64_t pixel, int sample, GColor *out);
 
+/** The distance along r to area light l (a sphere, or a rectangle seen from its lit side) within (0, tmax),
+ * INFINITY when missed or for another kind of light; *pdf is the density (solid angle) with which the path
+ * tracer's light sample from r->o draws that direction. Camera rays and rays after ideal bounces see these lights
+ * whether or not they are marked visible. */
+double area_light_hit(const Light *l, const Ray *r, double tmax, double *pdf);
+
 #endif

@@ -9,6 +9,8 @@
 #include "trace/trace.h"
 #include "integrators/path.h"
 #include "integrators/whitted.h"
+#include "integrators/sppm.h"
+#include "integrators/light.h"
 #include "film/progress.h"
 #include "lights/emissive.h"
 
@@ -323,6 +325,9 @@ int renderer_create(Renderer **out, const Scene *s, const RenderSettings *rs, Fr
 int renderer_region(Renderer *r, const int region[4], Progress *prog, GError *err)
 {
     const Framebuffer *fb = r->job.fb;
+    if (r->job.integrator == RENDER_SPPM || r->job.integrator == RENDER_LIGHT)
+        return gerror_set(err, G_ERR_UNSUPPORTED, "--integrator sppm and light render the whole image (or its crop) at "
+                          "once, not in regions: they do not run under mpirun");
     int rx0 = region[0], ry0 = region[1], rx1 = region[2], ry1 = region[3];
     if (rx0 < fb->x || ry0 < fb->y || rx0 >= rx1 || ry0 >= ry1 || rx1 > fb->x + fb->width ||
         ry1 > fb->y + fb->height)
@@ -380,6 +385,19 @@ int renderer_region(Renderer *r, const int region[4], Progress *prog, GError *er
     return gerror_set(err, status, "rendering failed: %s", gstatus_string(status));
 }
 
+int renderer_threads(const Renderer *r) { return r->nthreads; }
+
+TraceCtx *renderer_thread_ctx(Renderer *r, int i) { return &r->workers[i].ctx; }
+
+const Camera *renderer_camera(const Renderer *r) { return &r->cam; }
+
+const Media *renderer_media(const Renderer *r) { return &r->job.media0; }
+
+int renderer_store(Renderer *r, int i, int x, int y, const GColor *pixel)
+{
+    return store_pixel(&r->workers[i], &r->job, x, y, pixel);
+}
+
 void renderer_stats(const Renderer *r, RenderStats *st)
 {
     memset(st, 0, sizeof *st);
@@ -394,6 +412,10 @@ void renderer_stats(const Renderer *r, RenderStats *st)
 
 int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, RenderStats *st, GError *err)
 {
+    if (rs->integrator == RENDER_SPPM)
+        return sppm_render(s, rs, fb, st, err);
+    if (rs->integrator == RENDER_LIGHT)
+        return light_render(s, rs, fb, st, err);
     memset(st, 0, sizeof *st);
     Renderer *r;
     int rc = renderer_create(&r, s, rs, fb, err);

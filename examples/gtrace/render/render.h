@@ -5,6 +5,7 @@
 #include "integrators/bands.h"
 #include "film/framebuffer.h"
 #include "film/progress.h"
+#include "trace/trace.h"
 #include "scene/scene.h"
 
 #include <generic/error.h>
@@ -17,7 +18,7 @@
 #define RENDER_LIMIT_MAX_RAYS 1000000
 
 /** The light transport algorithm (--integrator). */
-enum { RENDER_WHITTED = 0, RENDER_PATH = 1 };
+enum { RENDER_WHITTED = 0, RENDER_PATH = 1, RENDER_SPPM = 2, RENDER_LIGHT = 3 };
 
 typedef struct RenderSettings {
     int width, height, spp, depth, threads, quiet;
@@ -25,12 +26,17 @@ typedef struct RenderSettings {
     int max_rays;  /**< secondary rays per camera sample (0: RENDER_DEFAULT_MAX_RAYS); the rest are not traced */
     int bands;     /**< most wavelength groups a dispersive refraction splits into (0: BANDS_DEFAULT_CAP; 1: no
                         dispersion) */
-    int integrator; /**< RENDER_WHITTED (the paper's Fig. 4, default) or RENDER_PATH (path.c) */
+    int integrator; /**< RENDER_WHITTED (the paper's Fig. 4, default), RENDER_PATH (path.c), RENDER_SPPM (sppm.c) or
+                        RENDER_LIGHT (light.c) */
     int crop[4];   /**< x0, y0, x1, y1: render only x0 <= x < x1, y0 <= y < y1 of the width x height image, each
                         pixel as the full render has it; all 0: the whole image */
     int waves;     /**< 1: also keep each pixel's values at the colour model's wavelengths (--spectral) */
     int no_emissive_lights; /**< 1: glowing geometry is not sampled as light (lights/emissive.h), only met by rays:
                                  the integrators' estimate without next-event estimation towards it */
+    int sppm_passes;     /**< RENDER_SPPM, RENDER_LIGHT: passes (0: the default; integrators/sppm.h) */
+    long sppm_photons;   /**< RENDER_SPPM, RENDER_LIGHT: photon paths per pass (0: the default) */
+    double sppm_radius;  /**< RENDER_SPPM: initial gather radius in scene units (0: from the pixel's footprint) */
+    double sppm_alpha;   /**< RENDER_SPPM: the fraction of new photons kept per pass, in (0, 1] (0: 2/3) */
 } RenderSettings;
 
 typedef struct RenderStats {
@@ -64,6 +70,17 @@ int renderer_region(Renderer *r, const int region[4], Progress *prog, GError *er
 
 /** The rays, non-finite and capped samples of every region so far, the seconds spent in them, the threads. */
 void renderer_stats(const Renderer *r, RenderStats *st);
+
+/** The number of threads and the tracing state of thread i (0 <= i < renderer_threads), for an integrator that
+ * schedules its own work (sppm.c). */
+int renderer_threads(const Renderer *r);
+TraceCtx *renderer_thread_ctx(Renderer *r, int i);
+/** The camera set up for the image size, and the medium the camera is in. */
+const Camera *renderer_camera(const Renderer *r);
+const Media *renderer_media(const Renderer *r);
+/** Writes pixel (x, y) (full-image coordinates, inside the framebuffer) from its colour as the tile loop does
+ * (linear sRGB, the values at the wavelengths when kept; a non-finite colour black and counted on thread i). */
+int renderer_store(Renderer *r, int i, int x, int y, const GColor *pixel);
 
 /** Frees the renderer (not the framebuffer); NULL is a no-op. */
 void renderer_destroy(Renderer *r);

@@ -1,0 +1,82 @@
+/* photons.h - particles of light traced from the light sources (photons.c), shared by the particle integrators:
+ * the lights chosen by power, one particle path per index (its random numbers seeded by the index alone), the
+ * points where it met non-ideal surfaces stored in a batch of fixed size, and a hashed grid over a batch. */
+#ifndef GTRACE_PHOTONS_H
+#define GTRACE_PHOTONS_H
+
+#include "lights/emit.h"
+#include "trace/trace.h"
+
+#include <generic/color.h>
+#include <generic/error.h>
+#include <generic/memory.h>
+
+#include <stdint.h>
+
+/** Bounces after which Russian roulette may end a particle path. */
+#define PHOTON_RR_START 3
+
+/** The lights that send particles, with the probabilities of choosing each (proportional to its power). */
+typedef struct PhotonSource {
+    const Light **lights;
+    double *cdf; /**< n + 1 entries, cdf[0] = 0, cdf[n] = 1 */
+    int n;
+    EmitBounds bounds;
+} PhotonSource;
+
+/** The emitting lights of s; G_ERR_INVALID naming the kinds that do emit when s has no light that sends particles
+ * (or all of them are black), G_ERR_NOMEM. */
+int photon_source_init(PhotonSource *src, const Scene *s, GError *err);
+/** Frees the tables; a zeroed source is a no-op. */
+void photon_source_free(PhotonSource *src);
+
+/** One stored particle: where it met a non-ideal surface, the direction it came from and its power. */
+typedef struct Photon {
+    GVec3 p, wi;
+    GColor power;
+    long pixel; /**< a visitor's use (light.c: the pixel it lights, -1: none) */
+} Photon;
+
+/** What a particle path does at a stored surface point instead of storing its power (photon_trace): fills slot
+ * (its power and pixel) from the surface point sp (facing, media as trace.h gives them), the direction wi the
+ * particle came from and its power; G_OK or a status. */
+typedef int (*PhotonVisit)(void *user, TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 wi,
+                           const GColor *power, Photon *slot);
+
+/** A batch of particle paths: path i keeps up to per_path stored particles at photons[i * per_path ..], count[i]
+ * of them; then a hashed grid (photon_batch_index) over all of them. */
+typedef struct PhotonBatch {
+    int paths, per_path;
+    Photon *photons;
+    int *count;
+    GScratch *arena; /**< the particles' colours */
+    /* the grid: cells of side `cell`, hashed into `buckets` lists */
+    double cell;
+    int buckets;
+    int *bucket_start; /**< buckets + 1 entries */
+    int *order;        /**< photon slots, bucket by bucket, each bucket's in slot order */
+    int stored;        /**< particles in the grid */
+} PhotonBatch;
+
+/** A batch of `paths` paths of at most per_path stored particles each, in model m. */
+int photon_batch_init(PhotonBatch *b, const GColorModel *m, int paths, int per_path, GError *err);
+/** Frees the batch; a zeroed batch is a no-op. */
+void photon_batch_free(PhotonBatch *b);
+/** Traces particle path `index` (its random numbers seeded by index alone) into slot `slot` of the batch: the
+ * light chosen by power, each bounce drawn by gmaterial_sample from the direction it came from (its power through
+ * the material's weight, or through reflection/refraction for a material that re-radiates), dispersion by one
+ * wavelength group as the path tracer does it, Russian roulette after PHOTON_RR_START bounces, at most c->max_depth
+ * bounces. It keeps at most per_path of the non-ideal surfaces it meets, from the first (direct: 1) or the second
+ * (direct: 0: the first one's light is direct light, which SPPM estimates by light samples): their power and
+ * position, or what visit (not NULL) makes of them. media0: the camera's medium. */
+int photon_trace(TraceCtx *c, const PhotonSource *src, const Media *media0, uint64_t index, PhotonBatch *b, int slot,
+                 int direct, PhotonVisit visit, void *user);
+/** Builds the batch's grid with cells of side `cell` (> 0): the order of the particles in a bucket does not depend
+ * on anything but the slots. */
+int photon_batch_index(PhotonBatch *b, double cell, GError *err);
+/** The grid cell of a point. */
+void photon_cell(const PhotonBatch *b, GVec3 p, int64_t cell[3]);
+/** The bucket of a cell. */
+int photon_bucket(const PhotonBatch *b, const int64_t cell[3]);
+
+#endif
