@@ -66,7 +66,8 @@ static int spectrum9_init(GColorModel *self, const GColorModelOptions *opt, GErr
         return rc;
     Spectrum9 *p = self->priv;
     build_spline(p, grid);
-    return gspectral_init(self, &p->s, grid, 0, err);
+    rc = gspectral_init(self, &p->s, grid, 0, err);
+    return rc == G_OK ? gspectral_set_uplift(self, &p->s, opt, err) : rc;
 }
 
 static int spectrum9_to_nm(const GColorModel *m, const GColor *a, GColorRole role, GSpectrumNM *out)
@@ -111,6 +112,8 @@ static const GParamInfo spectrum9_params[] = {
     {"step", GPARAM_NAMED, "number", "50", "50", "the spacing of the samples, in nm (fixed; another is refused)"},
     {"min", GPARAM_NAMED, "number", "380", "380", "the first sample, in nm (fixed)"},
     {"max", GPARAM_NAMED, "number", "780", "780", "the last sample, in nm (fixed)"},
+    {"uplift", GPARAM_NAMED, "keyword", "sigmoid", "sigmoid, basis",
+     "how RGB colours become spectra: sigmoid (smooth, a reflectance within [0, 1]) or basis (the exact linear basis)"},
     {NULL},
 };
 

@@ -86,11 +86,21 @@ typedef struct GColor {
     int capacity; /**< floats at v (>= model->capacity for a usable handle; 0 when cleared) */
 } GColor;
 
+/** How a spectral model turns an RGB colour into a spectrum (GColorModelOptions.uplift). */
+typedef enum GColorUplift {
+    GCOLOR_UPLIFT_DEFAULT = 0, /**< the model's default: sigmoid in the built-in spectral models */
+    GCOLOR_UPLIFT_SIGMOID = 1, /**< Jakob and Hanika's sigmoid spectra (colorspace.h): smooth, a reflectance of the
+                                    sRGB cube within [0, 1] */
+    GCOLOR_UPLIFT_BASIS = 2    /**< the spectral primary basis, corrected so that the round trip is exact (linear
+                                    in RGB; saturated reflectances leave [0, 1] on coarse grids) */
+} GColorUplift;
+
 /** Options for creating a model; zero fields take the model's defaults. */
 typedef struct GColorModelOptions {
     double step_nm; /**< sample spacing (spectrum: 5 by default; bispectral: 10) */
     double min_nm;  /**< first sample (default 380) */
     double max_nm;  /**< last sample (default 780) */
+    int uplift;     /**< a GColorUplift (models without wavelength samples ignore it) */
 } GColorModelOptions;
 
 /** A re-radiation matrix on its own grid, used to bring measured data into any model.
@@ -297,12 +307,13 @@ GENERIC_API GENERIC_NODISCARD int gcolor_convert(GColor *dst, const GColor *src,
 
 /* ---- range after conversion ---- */
 
-/** The model's own conversion error: *lo and *hi get the smallest and the largest sample that any colour of
- * the sRGB cube [0, 1]^3 takes after gcolor_from_rgb in role (exact: from_rgb is linear, so the extremes per
- * sample are sums of the positive or the negative parts of the three primaries' samples). An in-gamut colour
- * whose largest RGB component is s has every sample within [*lo * s, *hi * s]. rgb: exactly 0 and 1 for a
- * reflectance. Measured (reflectance): spectrum at 5 nm -0.00005..1.00013, bispectral at 10 nm -0.0030..1.0030,
- * spectrum9 -0.129..1.129 at its samples (its spline reaches -0.21..1.21 between them). A vector is read as
+/** The model's own conversion error: *lo and *hi get the smallest and the largest sample that the corners of
+ * the sRGB cube [0, 1]^3 take after gcolor_from_rgb in role (*lo at most 0). For a linear from_rgb (rgb, and the
+ * spectral models with uplift basis) that is every colour of the cube's extremes, and an in-gamut colour whose
+ * largest RGB component is s has every sample within [*lo * s, *hi * s]. rgb: exactly 0 and 1 for a reflectance.
+ * Measured (reflectance, uplift basis): spectrum at 5 nm -0.00005..1.00013, bispectral at 10 nm -0.0030..1.0030,
+ * spectrum9 -0.129..1.129 at its samples (its spline reaches -0.21..1.21 between them); with the sigmoid uplift
+ * (the default) a reflectance of the cube lies within [0, 1] in spectrum and bispectral. A vector is read as
  * nvalues samples. G_ERR_NOMEM when no temporary can be had. */
 GENERIC_API GENERIC_NODISCARD int gcolormodel_rgb_range(const GColorModel *m, GColorRole role, double *lo, double *hi);
 /** Maps a vector into the model's range: negative samples become 0, and the value is then scaled so that its
