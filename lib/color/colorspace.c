@@ -99,21 +99,28 @@ void gcolorspace_matrix(int space, double m[3][3])
         for (int r = 0; r < 3; r++)
             p[r][c] = v[r];
     }
-    xy_to_xyz(s->white, w);
+    /* D65 as sRGB's matrix has it (xy rounded to four places), so that white is one XYZ in every space */
+    double d65w[3] = {SRGB_TO_XYZ[0][0] + SRGB_TO_XYZ[0][1] + SRGB_TO_XYZ[0][2], 1.0,
+                      SRGB_TO_XYZ[2][0] + SRGB_TO_XYZ[2][1] + SRGB_TO_XYZ[2][2]};
+    const double d65[2] = D65_XY;
+    int adapt = s->white[0] != d65[0] || s->white[1] != d65[1];
+    if (adapt)
+        xy_to_xyz(s->white, w);
+    else
+        w[0] = d65w[0], w[1] = d65w[1], w[2] = d65w[2];
     gcolorspace_invert3(p, pinv);
     for (int c = 0; c < 3; c++)
         k[c] = pinv[c][0] * w[0] + pinv[c][1] * w[1] + pinv[c][2] * w[2];
     for (int r = 0; r < 3; r++)
         for (int c = 0; c < 3; c++)
             m[r][c] = p[r][c] * k[c];
-    const double d65[2] = D65_XY;
-    if (s->white[0] == d65[0] && s->white[1] == d65[1])
+    if (!adapt)
         return;
     /* Bradford: XYZ of the space's white to XYZ of D65 */
     static const double B[3][3] = {{0.8951, 0.2664, -0.1614}, {-0.7502, 1.7135, 0.0367}, {0.0389, -0.0685, 1.0296}};
     double binv[3][3], wd[3], cs[3], cd[3], a[3][3] = {{0}};
     gcolorspace_invert3(B, binv);
-    xy_to_xyz(d65, wd);
+    wd[0] = d65w[0], wd[1] = d65w[1], wd[2] = d65w[2];
     for (int r = 0; r < 3; r++) {
         cs[r] = B[r][0] * w[0] + B[r][1] * w[1] + B[r][2] * w[2];
         cd[r] = B[r][0] * wd[0] + B[r][1] * wd[1] + B[r][2] * wd[2];
