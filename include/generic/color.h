@@ -125,8 +125,9 @@ struct GColorModel {
     void *priv;         /**< the model's own tables */
 };
 
-/** The vtable of a colour model. Required: init, black, add, mul, scale, div, pow, brightness, to_nm,
- * from_nm. Optional (NULL = go through the nm spectrum): fini, to_xyz, from_rgb, from_reradiation.
+/** The vtable of a colour model. Required: init, black, add, mul, scale, div, pow, to_nm, from_nm. Optional (NULL
+ * = go through the nm spectrum): fini, to_xyz, from_rgb, from_reradiation. Optional (NULL = Y of to_xyz as a
+ * reflectance, the definition below): brightness.
  * Optional (NULL = the default of lib/color/color.c, which reads a vector as nvalues independent samples, as add and
  * scale treat it): fill, exp_scaled, axpy. A model whose vectors are not plain samples, or that has matrices, gives
  * its own. Optional (NULL = one band, no dispersion): band_count, band_mask, band_value. Operations get valid operands of this model (the dispatch checks models); `out` may alias them. */
@@ -147,7 +148,7 @@ struct GColorModelClass {
     int (*div)(const GColorModel *m, GColor *out, const GColor *a, const GColor *b);
     /** a to the power e, sample by sample (absorption: transmittance^distance). */
     int (*pow)(const GColorModel *m, GColor *out, const GColor *a, double e);
-    /** Luminance-weighted magnitude: 0 exactly for black, constant c gives c. */
+    /** Brightness (gcolor_brightness's definition): 0 exactly for black, constant c gives c. */
     double (*brightness)(const GColorModel *m, const GColor *a);
     int (*to_nm)(const GColorModel *m, const GColor *a, GColorRole role, GSpectrumNM *out);
     int (*from_nm)(const GColorModel *m, const GSpectrumNM *in, GColorRole role, GColor *out);
@@ -231,7 +232,14 @@ GENERIC_API GENERIC_NODISCARD int gcolor_scale(GColor *out, const GColor *a, dou
 GENERIC_API GENERIC_NODISCARD int gcolor_div(GColor *out, const GColor *a, const GColor *b);
 /** out = a ^ e, sample by sample (absorption). */
 GENERIC_API GENERIC_NODISCARD int gcolor_pow(GColor *out, const GColor *a, double e);
-/** Brightness: 0 if and only if c is black; a constant value c gives c. */
+/** Brightness, one definition in every model: Y (CIE 1931) of the value read as a reflectance under D65, the perfect
+ * white reflector 1 (the value 1 everywhere). So the same reflectance has the same brightness in every model (the
+ * Y its to_xyz gives in the reflectance role), and Russian roulette, light selection and energy checks see one
+ * number for one colour. Samples count by magnitude (a value with negative samples is not darker for them), and
+ * each sample's weight has a floor of 1e-6 of the largest, so brightness is 0 if and only if c is black; a constant
+ * value c gives c. A light's brightness is its Y weighted by D65 once more: in the spectral models the D65 white
+ * light's is 1.007, and a saturated light's of the sRGB cube within 11% of its Y as a light (rgb: equal). A model
+ * without a brightness slot gets Y of its own to_xyz in the reflectance role. */
 GENERIC_API double gcolor_brightness(const GColor *c);
 /** 1 when c is black, 0 otherwise: what gcolor_brightness(c) == 0.0 asks (brightness is 0 only for black), for
  * callers that need no more than that answer. A value that any NaN makes NaN is not black; -0.0 is zero. A vector

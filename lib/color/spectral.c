@@ -647,20 +647,39 @@ int gspectral_from_nm(const GColorModel *m, const GSpectrumNM *in, GColorRole ro
     return G_OK;
 }
 
-/* The sigmoid uplift at the grid's wavelengths, refined against the model's own weights (no allocation). */
+/* The sigmoid uplift at the grid's wavelengths, refined against the model's own weights (no allocation). A grid
+ * too coarse for a sigmoid to reach a colour that sigmoid spectra do reach at 1 nm (spectrum9's nine samples and
+ * the saturated corners of the cube) gets the rest through the corrected basis: the round trip stays exact, and
+ * only those colours' samples may leave [0, 1]. A colour no sigmoid spectrum reaches (a wide-gamut colour beyond
+ * the reflectances) keeps the nearest one: mapped, within [0, 1]. */
 static int from_rgb_sigmoid(const GSpectral *s, const double rgb[3], GColorRole role, float *out)
 {
     GUplift u;
     int rc = guplift_from_rgb(rgb, role, &u);
     if (rc != G_OK)
         return rc;
-    int n = s->grid.n;
-    const double *f = s->fit[role == GCOLOR_LIGHT];
+    int n = s->grid.n, light = role == GCOLOR_LIGHT;
+    const double *f = s->fit[light];
     const double *w[3] = {f + n, f + 2 * n, f + 3 * n};
-    rc = guplift_refine(&u, n, f, w, NULL);
+    double left = 0.0;
+    rc = guplift_refine(&u, n, f, w, &left);
     for (int k = 0; k < n; k++)
         out[k] = (float)(guplift_sigmoid_at(&u, f[k]) * f[4 * n + k]);
-    return rc;
+    GSpectrumNM nm;
+    double reach = 0.0;
+    if (rc != G_OK || !(left > 1e-3) || guplift_rgb_to_nm(rgb, role, &nm, &reach) != G_OK || reach > 1e-3)
+        return rc;
+    double xyz[3], want[3], d[3], drgb[3];
+    xyz_exact(s, role, out, xyz);
+    for (int c = 0; c < 3; c++) {
+        want[c] = u.scale * u.xyz[c];
+        d[c] = want[c] - xyz[c];
+    }
+    gcie_xyz_to_rgb(d, drgb);
+    const float *b = s->rgb[light];
+    for (int k = 0; k < n; k++)
+        out[k] = (float)(out[k] + drgb[0] * b[k] + drgb[1] * b[n + k] + drgb[2] * b[2 * n + k]);
+    return G_OK;
 }
 
 int gspectral_from_rgb(const GColorModel *m, const double rgb[3], GColorRole role, GColor *out)
