@@ -4,10 +4,9 @@
 
 #include <math.h>
 
-/** CIELAB of XYZ against the D65 white of Y = 1 (the library's reflectance white). */
-static inline void cd_xyz_to_lab(const double xyz[3], double lab[3])
+/** CIELAB of XYZ against a white. */
+static inline void cd_xyz_to_lab_white(const double xyz[3], const double white[3], double lab[3])
 {
-    const double white[3] = {0.95047, 1.0, 1.08883};
     double f[3];
     for (int i = 0; i < 3; i++) {
         double t = xyz[i] / white[i];
@@ -16,6 +15,13 @@ static inline void cd_xyz_to_lab(const double xyz[3], double lab[3])
     lab[0] = 116.0 * f[1] - 16.0;
     lab[1] = 500.0 * (f[0] - f[1]);
     lab[2] = 200.0 * (f[1] - f[2]);
+}
+
+/** CIELAB of XYZ against the D65 white of Y = 1 (the library's reflectance white). */
+static inline void cd_xyz_to_lab(const double xyz[3], double lab[3])
+{
+    const double white[3] = {0.95047, 1.0, 1.08883};
+    cd_xyz_to_lab_white(xyz, white, lab);
 }
 
 /** CIEDE2000 between two CIELAB colours (Sharma, Wu and Dalal 2005). */
