@@ -25,12 +25,12 @@ typedef struct Case {
 
 static const Case cases[] = {
     {"rgb", {0, 0, 0, 0}, "rgb"},
-    {"spectrum9", {0, 0, 0, 0}, "spectrum9"},
-    {"spectrum", {0, 0, 0, 0}, "spectrum 5 nm"},
-    {"spectrum", {1, 0, 0, 0}, "spectrum 1 nm"},
-    {"spectrum", {10, 400, 700, 0}, "spectrum 10 nm 400..700"},
-    {"bispectral", {0, 0, 0, 0}, "bispectral 10 nm"},
-    {"bispectral", {10, 300, 780, 0}, "bispectral 300..780"},
+    {"spectrum9", {0, 0, 0, GCOLOR_UPLIFT_BASIS}, "spectrum9"},
+    {"spectrum", {0, 0, 0, GCOLOR_UPLIFT_BASIS}, "spectrum 5 nm"},
+    {"spectrum", {1, 0, 0, GCOLOR_UPLIFT_BASIS}, "spectrum 1 nm"},
+    {"spectrum", {10, 400, 700, GCOLOR_UPLIFT_BASIS}, "spectrum 10 nm 400..700"},
+    {"bispectral", {0, 0, 0, GCOLOR_UPLIFT_BASIS}, "bispectral 10 nm"},
+    {"bispectral", {10, 300, 780, GCOLOR_UPLIFT_BASIS}, "bispectral 300..780"},
 };
 enum { NCASES = sizeof cases / sizeof cases[0], MAXF = 128 * 128 };
 
@@ -237,7 +237,8 @@ static void test_sampling(void **state)
         /* a 1 nm line keeps its energy: sum of step * samples is its height (trapezoid weights; the lines
          * are inside the grid, so the halved end weights do not matter) */
         const int lines[] = {452, 503, 557, 611, 689};
-        for (int l = 0; l < 5; l++) {
+        /* spectrum9 keeps a line's colour, not its energy (tests/test_spectrum9.c) */
+        for (int l = 0; l < 5 && strcmp(cases[ci].name, "spectrum9") != 0; l++) {
             memset(&s, 0, sizeof s);
             s.v[lines[l] - GNM_MIN] = 1.0f;
             assert_int_equal(gcolor_from_nm(&a, &s, GCOLOR_LIGHT), G_OK);

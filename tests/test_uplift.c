@@ -242,7 +242,8 @@ static void test_bad_input(void **state)
  * finds the reference's reflectance within 1e-3 at every one of its wavelengths for all but one in a thousand of
  * every second node of each axis with z >= 0.05, and within 5e-3 for all (near black the spectrum's ends carry
  * almost no weight and both answers are arbitrary there; near white the reference stops at its float precision).
- * Measured: 1 of 73728 nodes beyond 1e-3, by 2.8e-3 (0.889 0.984 1.0, at 717 nm). The library's own tables are fitted to its 1 nm tables over 380..780 nm instead: that difference is
+ * Measured: 1 of 73728 nodes beyond 1e-3, by 2.8e-3 (0.889 0.984 1.0, at 717 nm). The library's own tables are
+ * fitted to its 1 nm tables over 380..780 nm instead: that difference is
  * printed (the ends of the spectrum, where the matching functions are near 0, differ most), not asserted. */
 static void test_against_rgb2spec(void **state)
 {

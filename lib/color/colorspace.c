@@ -42,7 +42,10 @@ int gcolorspace_find(const char *name)
 
 const char *gcolorspace_name(int space) { return space >= 0 && space < GCOLORSPACE_COUNT ? spaces[space].name : NULL; }
 
-const char *gcolorspace_names(void) { return "srgb (rec709), display-p3 (p3), rec2020, aces2065-1 (aces), acescg (ap1)"; }
+const char *gcolorspace_names(void)
+{
+    return "srgb (rec709), display-p3 (p3), rec2020, aces2065-1 (aces), acescg (ap1)";
+}
 
 int gcolorspace_invert3(const double m[3][3], double out[3][3])
 {
