@@ -501,7 +501,7 @@ static const GParamInfo bispectral_params[] = {
     {"min", GPARAM_NAMED, "number", "380", "[300, 830], below max",
      "the first sample, in nm; start lower (300) to keep ultraviolet excitation"},
     {"max", GPARAM_NAMED, "number", "780", "[300, 830], at most 127 steps above min", "the last sample, in nm"},
-    {"uplift", GPARAM_NAMED, "keyword", "sigmoid", "sigmoid, basis",
+    {"uplift", GPARAM_NAMED, "choice", "sigmoid", "sigmoid, basis",
      "how RGB colours become spectra: sigmoid (smooth, a reflectance within [0, 1]) or basis (the exact linear basis)"},
     {NULL},
 };

@@ -133,7 +133,8 @@ static int spectrum9_to_nm(const GColorModel *m, const GColor *a, GColorRole rol
 
 /* The least-squares samples of the spline nearest the spectrum, then the rest of its XYZ in the role through the
  * corrected RGB basis (the exact correction from_rgb's basis has): the spectrum's colour is kept exactly, a light's
- * as a light and a reflectance's under D65. */
+ * as a light and a reflectance's under D65, unless that needs a negative sample (a narrow line): then its
+ * luminance is kept with non-negative samples. */
 static int spectrum9_from_nm(const GColorModel *m, const GSpectrumNM *in, GColorRole role, GColor *out)
 {
     const Spectrum9 *p = m->priv;
@@ -153,8 +154,24 @@ static int spectrum9_from_nm(const GColorModel *m, const GSpectrumNM *in, GColor
         d[c] = want[c] - got[c];
     gcie_xyz_to_rgb(d, rgb);
     const float *b = p->s.rgb[role == GCOLOR_LIGHT];
-    for (int k = 0; k < N9; k++)
+    int negative = 0;
+    for (int k = 0; k < N9; k++) {
         out->v[k] = (float)(out->v[k] + rgb[0] * b[k] + rgb[1] * b[N9 + k] + rgb[2] * b[2 * N9 + k]);
+        negative |= out->v[k] < 0.0f;
+    }
+    if (!negative)
+        return G_OK;
+    /* a colour beyond what nine non-negative samples hold (a narrow line's): negative samples become 0 and the
+     * luminance is kept, so the spectrum stays physical and as bright as it was, its chromaticity the nearest
+     * this gives */
+    for (int k = 0; k < N9; k++)
+        if (out->v[k] < 0.0f)
+            out->v[k] = 0.0f;
+    if ((rc = gspectral_to_xyz(m, out, role, got)) != G_OK)
+        return rc;
+    if (want[1] > 0.0 && got[1] > 0.0)
+        for (int k = 0; k < N9; k++)
+            out->v[k] = (float)(out->v[k] * (want[1] / got[1]));
     return G_OK;
 }
 
@@ -185,7 +202,7 @@ static const GParamInfo spectrum9_params[] = {
     {"step", GPARAM_NAMED, "number", "50", "50", "the spacing of the samples, in nm (fixed; another is refused)"},
     {"min", GPARAM_NAMED, "number", "380", "380", "the first sample, in nm (fixed)"},
     {"max", GPARAM_NAMED, "number", "780", "780", "the last sample, in nm (fixed)"},
-    {"uplift", GPARAM_NAMED, "keyword", "sigmoid", "sigmoid, basis",
+    {"uplift", GPARAM_NAMED, "choice", "sigmoid", "sigmoid, basis",
      "how RGB colours become spectra: sigmoid (smooth, a reflectance within [0, 1]) or basis (the exact linear basis)"},
     {NULL},
 };

@@ -40,7 +40,7 @@ static int parse_rgb_space(GReader *r, const void *vt, void **object, GError *er
 }
 
 static const GParamInfo rgb_space_params[] = {
-    {"SPACE", GPARAM_POSITIONAL, "keyword", NULL, "srgb, display-p3, rec2020, aces2065-1, acescg",
+    {"SPACE", GPARAM_POSITIONAL, "choice", NULL, "srgb, display-p3, rec2020, aces2065-1, acescg",
      "the colour space (also rec709, p3, aces, ap1); every one with the D65 white (ACES's adapted by Bradford)"},
     {"R", GPARAM_POSITIONAL, "number", NULL, ">= 0", "red, linear, in the space's primaries"},
     {"G", GPARAM_POSITIONAL, "number", NULL, ">= 0", "green"},

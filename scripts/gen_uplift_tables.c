@@ -67,7 +67,7 @@ static void fit_line(int t, int l, int j, int i, const GUpliftFit *f)
             rgb[(l + 2) % 3] = y * b;
             for (int r = 0; r < 3; r++)
                 xyz[r] = to_xyz[t][r][0] * rgb[0] + to_xyz[t][r][1] * rgb[1] + to_xyz[t][r][2] * rgb[2];
-            guplift_fit_solve(f, xyz, c, 15);
+            guplift_fit_solve(f, xyz, c, 15, 1e-6);
             float *o = out + guplift_table_index(res, t, l, k, j, i);
             for (int a = 0; a < 3; a++)
                 o[a] = (float)c[a];

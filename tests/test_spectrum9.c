@@ -166,9 +166,11 @@ static void test_d65_light(void **state)
     gcolormodel_destroy(m);
 }
 
-/* A line (the colour literal `line NM POWER`) keeps its colour: Y within 2% and xy within 3e-3 of the 1 nm line's
- * (measured: Y +1.4% at 450 nm, against +101% with the hat average), at 450, 550 and 610 nm; its radiant power is
- * not kept (the samples carry its XYZ, and some are negative). */
+/* A line (the colour literal `line NM POWER`) keeps its luminance with non-negative samples: Y within 2% of the 1 nm
+ * line's (measured +1.4% at 450 nm, against +101% with the hat average), at 450, 550 and 610 nm; its chromaticity
+ * is what nine non-negative samples give after clipping (within 0.12 in xy: a line lies on the spectral locus, far
+ * beyond them; 450 nm: 0.161 0.069 against 0.157 0.018, 550 nm: 0.317 0.587 against 0.302 0.692); its radiant
+ * power is not kept. */
 static void test_lines_keep_colour(void **state)
 {
     (void)state;
@@ -191,11 +193,14 @@ static void test_lines_keep_colour(void **state)
         double ref[3], got[3];
         gcie_nm_to_xyz(&line, GCOLOR_LIGHT, ref);
         assert_int_equal(gcolor_to_xyz(&c, GCOLOR_LIGHT, got), G_OK);
-        print_message("line at %.0f nm: Y %.6f against %.6f\n", at[i], got[1], ref[1]);
+        double sr0 = ref[0] + ref[1] + ref[2], sg0 = got[0] + got[1] + got[2];
+        print_message("line at %.0f nm: Y %.6f against %.6f, xy %.4f %.4f against %.4f %.4f\n", at[i], got[1], ref[1],
+                      got[0] / sg0, got[1] / sg0, ref[0] / sr0, ref[1] / sr0);
+        for (int k = 0; k < m->nvalues; k++)
+            assert_true(c.v[k] >= 0.0f);
         double sr = ref[0] + ref[1] + ref[2], sg = got[0] + got[1] + got[2];
         assert_near(got[1], ref[1], 0.02 * ref[1]);
-        assert_near(got[0] / sg, ref[0] / sr, 3e-3);
-        assert_near(got[1] / sg, ref[1] / sr, 3e-3);
+        assert_true(hypot(got[0] / sg - ref[0] / sr, got[1] / sg - ref[1] / sr) < 0.12);
         gcolorspec_destroy(spec);
     }
     gcolormodel_destroy(m);

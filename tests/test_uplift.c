@@ -297,7 +297,7 @@ static void test_against_rgb2spec(void **state)
                     rgb[(l + 2) % 3] = z[k] * j / (res - 1.0);
                     for (int r = 0; r < 3; r++)
                         xyz[r] = m[3 * r] * rgb[0] + m[3 * r + 1] * rgb[1] + m[3 * r + 2] * rgb[2];
-                    guplift_fit_solve(&fit, xyz, c, 100);
+                    guplift_fit_solve(&fit, xyz, c, 100, 1e-10);
                     const float *ref = data + 3 * (((l * res + k) * res + j) * res + i);
                     GSpectrumNM lib;
                     assert_int_equal(guplift_rgb_to_nm(rgb, GCOLOR_REFLECTANCE, &lib, NULL), G_OK);

@@ -153,7 +153,7 @@ int guplift_refine(GUplift *u, int n, const double *x, const double *const w[3],
     for (int c = 0; c < 3; c++)
         for (int k = 0; k < n; k++)
             f.white[c] += w[c][k];
-    double d = guplift_fit_solve(&f, u->xyz, u->c, 20);
+    double d = guplift_fit_solve(&f, u->xyz, u->c, 20, 2e-5);
     if (delta_e)
         *delta_e = d;
     return G_OK;

@@ -100,12 +100,12 @@ static int solve3(const double m[3][3], const double v[3], double x[3])
     return 0;
 }
 
-double guplift_fit_solve(const GUpliftFit *f, const double xyz[3], double c[3], int iterations)
+double guplift_fit_solve(const GUpliftFit *f, const double xyz[3], double c[3], int iterations, double tolerance)
 {
     double target[3], r[3], jac[3][3];
     lab(xyz, f->white, target, NULL);
     double cost = residual(f, target, c, r, jac), damping = 1e-3;
-    for (int it = 0; it < iterations && cost > 1e-20; it++) {
+    for (int it = 0; it < iterations && cost > tolerance * tolerance; it++) {
         double a[3][3], g[3];
         for (int i = 0; i < 3; i++) {
             for (int j = 0; j < 3; j++)
@@ -122,10 +122,13 @@ double guplift_fit_solve(const GUpliftFit *f, const double xyz[3], double c[3], 
                 damping *= 10.0;
                 continue;
             }
-            double trial[3] = {c[0] - step[0], c[1] - step[1], c[2] - step[2]}, tr[3];
-            double tc = residual(f, target, trial, tr, NULL);
+            /* the trial's residual and Jacobian in one pass: an accepted step needs no second */
+            double trial[3] = {c[0] - step[0], c[1] - step[1], c[2] - step[2]}, tr[3], tj[3][3];
+            double tc = residual(f, target, trial, tr, tj);
             if (tc < cost) {
                 memcpy(c, trial, sizeof trial);
+                memcpy(r, tr, sizeof tr);
+                memcpy(jac, tj, sizeof tj);
                 cost = tc;
                 damping = fmax(damping * 0.5, 1e-12);
                 accepted = 1;
@@ -135,7 +138,6 @@ double guplift_fit_solve(const GUpliftFit *f, const double xyz[3], double c[3], 
         }
         if (!accepted)
             break;
-        cost = residual(f, target, c, r, jac);
     }
     return sqrt(cost);
 }

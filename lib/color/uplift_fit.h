@@ -22,8 +22,9 @@ typedef struct GUpliftFit {
 double guplift_sigmoid(double x);
 
 /** Improves c (start value in, fitted value out) so that the fit's XYZ of S(c) meets xyz, in at most `iterations`
- * Levenberg-Marquardt steps; returns the remaining CIELAB distance (0 for a colour met exactly; the distance
- * to the nearest reachable colour outside the sigmoid spectra's gamut). */
-double guplift_fit_solve(const GUpliftFit *f, const double xyz[3], double c[3], int iterations);
+ * Levenberg-Marquardt steps, stopping once the CIELAB distance is within tolerance; returns the remaining distance
+ * (within tolerance for a colour sigmoid spectra reach; the distance to the nearest reachable colour outside their
+ * gamut). */
+double guplift_fit_solve(const GUpliftFit *f, const double xyz[3], double c[3], int iterations, double tolerance);
 
 #endif
