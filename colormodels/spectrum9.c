@@ -133,8 +133,8 @@ static int spectrum9_to_nm(const GColorModel *m, const GColor *a, GColorRole rol
 
 /* The least-squares samples of the spline nearest the spectrum, then the rest of its XYZ in the role through the
  * corrected RGB basis (the exact correction from_rgb's basis has): the spectrum's colour is kept exactly, a light's
- * as a light and a reflectance's under D65, unless that needs a negative sample (a narrow line): then its
- * luminance is kept with non-negative samples. */
+ * as a light and a reflectance's under D65; a light that would need a negative sample (a narrow line) keeps its
+ * luminance and as much of its colour as non-negative samples hold instead. */
 static int spectrum9_from_nm(const GColorModel *m, const GSpectrumNM *in, GColorRole role, GColor *out)
 {
     const Spectrum9 *p = m->priv;
@@ -145,28 +145,45 @@ static int spectrum9_from_nm(const GColorModel *m, const GSpectrumNM *in, GColor
             sum += (double)p->project[k][i] * in->v[i];
         out->v[k] = (float)sum;
     }
-    double want[3], got[3], d[3], rgb[3];
+    double want[3], got[3], dx[3], rgb[3];
     gcie_nm_to_xyz(in, role, want);
     int rc = gspectral_to_xyz(m, out, role, got);
     if (rc != G_OK)
         return rc;
     for (int c = 0; c < 3; c++)
-        d[c] = want[c] - got[c];
-    gcie_xyz_to_rgb(d, rgb);
+        dx[c] = want[c] - got[c];
+    gcie_xyz_to_rgb(dx, rgb);
     const float *b = p->s.rgb[role == GCOLOR_LIGHT];
+    float d[N9];
     int negative = 0;
     for (int k = 0; k < N9; k++) {
-        out->v[k] = (float)(out->v[k] + rgb[0] * b[k] + rgb[1] * b[N9 + k] + rgb[2] * b[2 * N9 + k]);
+        d[k] = (float)(rgb[0] * b[k] + rgb[1] * b[N9 + k] + rgb[2] * b[2 * N9 + k]);
+        out->v[k] += d[k];
         negative |= out->v[k] < 0.0f;
     }
-    if (!negative)
-        return G_OK;
-    /* a colour beyond what nine non-negative samples hold (a narrow line's): negative samples become 0 and the
-     * luminance is kept, so the spectrum stays physical and as bright as it was, its chromaticity the nearest
-     * this gives */
+    if (!negative || role != GCOLOR_LIGHT)
+        return G_OK; /* a reflectance keeps its colour; the parameter range rule judges its samples */
+    /* a light beyond what nine non-negative samples hold (a narrow line): from its least-squares samples with the
+     * negative ones set to 0, as much of the correction to its XYZ as keeps every sample >= 0, then its luminance */
+    for (int k = 0; k < N9; k++) {
+        double sum = 0.0;
+        for (int i = 0; i < GNM_COUNT; i++)
+            sum += (double)p->project[k][i] * in->v[i];
+        out->v[k] = sum > 0.0 ? (float)sum : 0.0f;
+    }
+    if ((rc = gspectral_to_xyz(m, out, role, got)) != G_OK)
+        return rc;
+    for (int c = 0; c < 3; c++)
+        dx[c] = want[c] - got[c];
+    gcie_xyz_to_rgb(dx, rgb);
+    double t = 1.0;
+    for (int k = 0; k < N9; k++) {
+        d[k] = (float)(rgb[0] * b[k] + rgb[1] * b[N9 + k] + rgb[2] * b[2 * N9 + k]);
+        if (d[k] < 0.0f && out->v[k] + d[k] < 0.0f)
+            t = fmin(t, out->v[k] > 0.0f ? out->v[k] / -d[k] : 0.0);
+    }
     for (int k = 0; k < N9; k++)
-        if (out->v[k] < 0.0f)
-            out->v[k] = 0.0f;
+        out->v[k] = fmaxf(0.0f, (float)(out->v[k] + t * d[k]));
     if ((rc = gspectral_to_xyz(m, out, role, got)) != G_OK)
         return rc;
     if (want[1] > 0.0 && got[1] > 0.0)

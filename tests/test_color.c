@@ -172,7 +172,9 @@ static void test_rgb_round_trip(void **state)
         assert_true(worst <= 1e-3);
         assert_true(worst <= 1e-5); /* what the exact correction actually gives */
         /* the nm path is lossy where the grid is coarse: bounds measured and stated per grid */
-        double bound = m->nvalues == 9 ? 0.15 : m->lambda_step >= 10 ? 0.012 : m->lambda_step >= 5 ? 3e-3 : 1e-5;
+        /* spectrum9 keeps XYZ, except for lights its nine non-negative samples cannot hold (the saturated corners
+         * as lights: 0.233) */
+        double bound = m->nvalues == 9 ? 0.25 : m->lambda_step >= 10 ? 0.012 : m->lambda_step >= 5 ? 3e-3 : 1e-5;
         assert_true(worst_nm <= bound);
         if (m->nvalues == 9)
             assert_true(sum_nm / count <= 0.05);
