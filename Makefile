@@ -79,7 +79,8 @@ LIB_DIRS  := $(sort $(dir $(wildcard lib/*/)))
 TYPE_DIRS := colormodels/ colors/ materials/ materials/*/ textures/
 LIB_SRC   := $(foreach d,$(LIB_DIRS) $(TYPE_DIRS),$(sort $(wildcard $(d)*.c)))
 LIB_CXX   := $(wildcard lib/*/*.cpp)
-LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/gen/builtin_types.o $(BUILD)/obj/gen/image_writers.o
+LIB_OBJ := $(LIB_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/gen/builtin_types.o $(BUILD)/obj/gen/image_writers.o \
+           $(BUILD)/obj/gen/uplift_tables.o
 LIBA    := $(BUILD)/lib/libgeneric.a
 LIBSO   := $(BUILD)/lib/libgeneric.so.$(SOVER)
 # The OpenImageIO module, found beside libgeneric.so (lib/generic/) or the program (../lib/generic/).

@@ -239,7 +239,7 @@ int main(void)
     if (generic_register_builtins(NULL) != G_OK)
         return 1;
     Row rgb[3], s9[3], s81[3], b41[3], mv;
-    GColorModelOptions five = {5, 0, 0}, ten = {10, 0, 0};
+    GColorModelOptions five = {5, 0, 0, 0}, ten = {10, 0, 0, 0};
     printf("%-22s %-14s %12s %12s %12s %8s\n", "model", "operation", "interface", "plain loop", "vectorised", "ratio");
     BENCH_VECTOR(3, "rgb", NULL, "rgb", rgb);
     {

@@ -31,7 +31,7 @@
  *   axpy   s a + b: per sample or entry for two values of one kind; a matrix and a vector give the matrix
  *          (s A + diag(b) or diag(s a) + B), as add does.
  *   fill   the constant c is the vector c (the operator c I); the library's default.
- *   brightness  V: sum_k w_k |v_k| with the spectrum model's luminance weights (all > 0, sum 1).
+ *   brightness  V: sum_k w_k |v_k| with the kit's brightness weights (Y under D65, all > 0, sum 1).
  *          M: the brightness of its response to equal-energy light with entries taken by magnitude,
  *          sum_o w_o sum_i |A[o][i]| (for the non-negative matrices from_reradiation makes, exactly the
  *          brightness of A 1). 0 only for black; the constant c and c*I give c.
@@ -501,6 +501,8 @@ static const GParamInfo bispectral_params[] = {
     {"min", GPARAM_NAMED, "number", "380", "[300, 830], below max",
      "the first sample, in nm; start lower (300) to keep ultraviolet excitation"},
     {"max", GPARAM_NAMED, "number", "780", "[300, 830], at most 127 steps above min", "the last sample, in nm"},
+    {"uplift", GPARAM_NAMED, "choice", "sigmoid", "sigmoid, basis",
+     "how RGB colours become spectra: sigmoid (smooth, a reflectance within [0, 1]) or basis (the exact linear basis)"},
     {NULL},
 };
 

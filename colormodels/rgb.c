@@ -144,6 +144,7 @@ static const GParamInfo rgb_params[] = {
     {"step", GPARAM_NAMED, "number", "(ignored)", "[0.01, 400]", "read and ignored: rgb has no wavelength samples"},
     {"min", GPARAM_NAMED, "number", "(ignored)", "[100, 2000]", "read and ignored"},
     {"max", GPARAM_NAMED, "number", "(ignored)", "[100, 2000]", "read and ignored"},
+    {"uplift", GPARAM_NAMED, "choice", "(ignored)", "sigmoid, basis", "read and ignored: rgb needs no uplifting"},
     {NULL},
 };
 

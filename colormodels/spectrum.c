@@ -44,6 +44,8 @@ static const GParamInfo spectrum_params[] = {
     {"min", GPARAM_NAMED, "number", "380", "[300, 830], below max", "the wavelength of the first sample, in nm"},
     {"max", GPARAM_NAMED, "number", "780", "[300, 830], at most 1023 steps above min",
      "the wavelength of the last sample, in nm"},
+    {"uplift", GPARAM_NAMED, "choice", "sigmoid", "sigmoid, basis",
+     "how RGB colours become spectra: sigmoid (smooth, a reflectance within [0, 1]) or basis (the exact linear basis)"},
     {NULL},
 };
 

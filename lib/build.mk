@@ -28,12 +28,26 @@ $(call objs_of,lib/kit/fresnel.o): CFLAGS += -fno-math-errno -fno-trapping-math
 	@mkdir -p $(dir $@)
 	$< $@
 
-.PRECIOUS: %/gen/builtin_types.c %/gen/image_writers.c
+.PRECIOUS: %/gen/builtin_types.c %/gen/image_writers.c %/gen/uplift_tables.c
+
+# The sigmoid uplifting tables (include/generic/colorspace.h), fitted at build time by a small program on the
+# library's CIE tables: UPLIFT_RES nodes per axis, three spaces of three slices each.
+UPLIFT_RES ?= 32
+UPLIFT_GEN_SRC := scripts/gen_uplift_tables.c lib/color/uplift_fit.c lib/color/colorspace.c lib/color/cie_tables.c
+%/gen/uplift_tables.c: $(BUILD)/gen/gen_uplift_tables
+	@mkdir -p $(dir $@)
+	$< $(UPLIFT_RES) $@
 
 # built without the sanitizers: it runs at build time, and OpenImageIO's own leaks are no concern there
 $(BUILD)/gen/gen_image_writers: scripts/gen_image_writers.cpp
 	@mkdir -p $(dir $@)
 	$(CXX) -std=c++17 -O1 $(shell pkg-config --cflags OpenImageIO 2>/dev/null) $< -o $@ $(OIIO_LIBS)
+
+# built without the sanitizers and optimised: it runs at build time, for a few seconds
+$(BUILD)/gen/gen_uplift_tables: $(UPLIFT_GEN_SRC) lib/color/uplift_fit.h lib/color/uplift_tables.h \
+                                lib/color/colorspace_matrix.h lib/color/cie_tables.h include/generic/colorspace.h
+	@mkdir -p $(dir $@)
+	$(CC) -std=c11 -O2 -D_GNU_SOURCE -Iinclude -Ilib $(WARN) $(UPLIFT_GEN_SRC) -o $@ -lm -pthread
 
 # ---- the library, its module, its data ----
 $(LIBA): $(LIB_OBJ)

@@ -22,7 +22,7 @@ static float buf[8][CAP];
 
 static GColorModel *model(double step, double lo, double hi)
 {
-    GColorModelOptions o = {step, lo, hi};
+    GColorModelOptions o = {step, lo, hi, 0};
     GColorModel *m = NULL;
     GError err;
     int rc = gcolormodel_create("bispectral", &o, &m, &err);
@@ -488,10 +488,10 @@ static void test_grid_limit(void **state)
     (void)state;
     GColorModel *m;
     GError err;
-    GColorModelOptions big = {2, 300, 830}; /* 266 samples: more than the 128 the stack buffers allow */
+    GColorModelOptions big = {2, 300, 830, 0}; /* 266 samples: more than the 128 the stack buffers allow */
     assert_int_equal(gcolormodel_create("bispectral", &big, &m, &err), G_ERR_INVALID);
     assert_non_null(strstr(err.message, "128"));
-    GColorModelOptions most = {5, 300, 830}; /* 107 samples */
+    GColorModelOptions most = {5, 300, 830, 0}; /* 107 samples */
     assert_int_equal(gcolormodel_create("bispectral", &most, &m, &err), G_OK);
     assert_int_equal(m->capacity, 107 * 107);
     gcolormodel_destroy(m);

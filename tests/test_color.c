@@ -24,13 +24,13 @@ typedef struct Case {
 } Case;
 
 static const Case cases[] = {
-    {"rgb", {0, 0, 0}, "rgb"},
-    {"spectrum9", {0, 0, 0}, "spectrum9"},
-    {"spectrum", {0, 0, 0}, "spectrum 5 nm"},
-    {"spectrum", {1, 0, 0}, "spectrum 1 nm"},
-    {"spectrum", {10, 400, 700}, "spectrum 10 nm 400..700"},
-    {"bispectral", {0, 0, 0}, "bispectral 10 nm"},
-    {"bispectral", {10, 300, 780}, "bispectral 300..780"},
+    {"rgb", {0, 0, 0, 0}, "rgb"},
+    {"spectrum9", {0, 0, 0, GCOLOR_UPLIFT_BASIS}, "spectrum9"},
+    {"spectrum", {0, 0, 0, GCOLOR_UPLIFT_BASIS}, "spectrum 5 nm"},
+    {"spectrum", {1, 0, 0, GCOLOR_UPLIFT_BASIS}, "spectrum 1 nm"},
+    {"spectrum", {10, 400, 700, GCOLOR_UPLIFT_BASIS}, "spectrum 10 nm 400..700"},
+    {"bispectral", {0, 0, 0, GCOLOR_UPLIFT_BASIS}, "bispectral 10 nm"},
+    {"bispectral", {10, 300, 780, GCOLOR_UPLIFT_BASIS}, "bispectral 300..780"},
 };
 enum { NCASES = sizeof cases / sizeof cases[0], MAXF = 128 * 128 };
 
@@ -56,14 +56,14 @@ static void test_create_by_name(void **state)
         int nvalues, capacity;
         double min, step;
     } want[] = {
-        {"rgb", {0, 0, 0}, 3, 3, 0, 0},
-        {"spectrum9", {0, 0, 0}, 9, 9, 380, 50},
-        {"spectrum", {0, 0, 0}, 81, 81, 380, 5},
-        {"spectrum", {1, 0, 0}, 401, 401, 380, 1},
-        {"spectrum", {2.5, 0, 0}, 161, 161, 380, 2.5},
-        {"spectrum", {10, 300, 830}, 54, 54, 300, 10},
-        {"bispectral", {0, 0, 0}, 41, 41 * 41, 380, 10},
-        {"bispectral", {5, 400, 700}, 61, 61 * 61, 400, 5},
+        {"rgb", {0, 0, 0, 0}, 3, 3, 0, 0},
+        {"spectrum9", {0, 0, 0, 0}, 9, 9, 380, 50},
+        {"spectrum", {0, 0, 0, 0}, 81, 81, 380, 5},
+        {"spectrum", {1, 0, 0, 0}, 401, 401, 380, 1},
+        {"spectrum", {2.5, 0, 0, 0}, 161, 161, 380, 2.5},
+        {"spectrum", {10, 300, 830, 0}, 54, 54, 300, 10},
+        {"bispectral", {0, 0, 0, 0}, 41, 41 * 41, 380, 10},
+        {"bispectral", {5, 400, 700, 0}, 61, 61 * 61, 400, 5},
     };
     for (size_t i = 0; i < sizeof want / sizeof want[0]; i++) {
         GColorModel *m;
@@ -107,12 +107,12 @@ static void test_bad_options(void **state)
         const char *name;
         GColorModelOptions opt;
     } bad[] = {
-        {"spectrum", {-5, 0, 0}},     {"spectrum", {NAN, 0, 0}},     {"spectrum", {INFINITY, 0, 0}},
-        {"spectrum", {0.5, 0, 0}},    {"spectrum", {150, 0, 0}},     {"spectrum", {7, 0, 0}},
-        {"spectrum", {5, 250, 0}},    {"spectrum", {5, 0, 900}},     {"spectrum", {5, 700, 400}},
-        {"spectrum", {5, NAN, 0}},    {"spectrum", {5, 0, -780}},    {"bispectral", {1, 0, 0}},
-        {"bispectral", {-10, 0, 0}},  {"bispectral", {3, 0, 0}},     {"spectrum9", {10, 0, 0}},
-        {"spectrum9", {0, 400, 0}},
+        {"spectrum", {-5, 0, 0, 0}},     {"spectrum", {NAN, 0, 0, 0}},     {"spectrum", {INFINITY, 0, 0, 0}},
+        {"spectrum", {0.5, 0, 0, 0}},    {"spectrum", {150, 0, 0, 0}},     {"spectrum", {7, 0, 0, 0}},
+        {"spectrum", {5, 250, 0, 0}},    {"spectrum", {5, 0, 900, 0}},     {"spectrum", {5, 700, 400, 0}},
+        {"spectrum", {5, NAN, 0, 0}},    {"spectrum", {5, 0, -780, 0}},    {"bispectral", {1, 0, 0, 0}},
+        {"bispectral", {-10, 0, 0, 0}},  {"bispectral", {3, 0, 0, 0}},     {"spectrum9", {10, 0, 0, 0}},
+        {"spectrum9", {0, 400, 0, 0}},
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         GColorModel *m = NULL;
@@ -128,7 +128,7 @@ static void test_bad_options(void **state)
     /* step 0 means "the default" (color.h: zero fields take the model's defaults) */
     GColorModel *m;
     GError err;
-    GColorModelOptions zero = {0, 0, 0};
+    GColorModelOptions zero = {0, 0, 0, 0};
     assert_int_equal(gcolormodel_create("spectrum", &zero, &m, &err), G_OK);
     assert_true(m->lambda_step == 5.0);
     gcolormodel_destroy(m);
@@ -172,7 +172,9 @@ static void test_rgb_round_trip(void **state)
         assert_true(worst <= 1e-3);
         assert_true(worst <= 1e-5); /* what the exact correction actually gives */
         /* the nm path is lossy where the grid is coarse: bounds measured and stated per grid */
-        double bound = m->nvalues == 9 ? 0.15 : m->lambda_step >= 10 ? 0.012 : m->lambda_step >= 5 ? 3e-3 : 1e-5;
+        /* spectrum9 keeps XYZ, except for lights its nine non-negative samples cannot hold (the saturated corners
+         * as lights: 0.233) */
+        double bound = m->nvalues == 9 ? 0.25 : m->lambda_step >= 10 ? 0.012 : m->lambda_step >= 5 ? 3e-3 : 1e-5;
         assert_true(worst_nm <= bound);
         if (m->nvalues == 9)
             assert_true(sum_nm / count <= 0.05);
@@ -237,7 +239,8 @@ static void test_sampling(void **state)
         /* a 1 nm line keeps its energy: sum of step * samples is its height (trapezoid weights; the lines
          * are inside the grid, so the halved end weights do not matter) */
         const int lines[] = {452, 503, 557, 611, 689};
-        for (int l = 0; l < 5; l++) {
+        /* spectrum9 keeps a line's colour, not its energy (tests/test_spectrum9.c) */
+        for (int l = 0; l < 5 && strcmp(cases[ci].name, "spectrum9") != 0; l++) {
             memset(&s, 0, sizeof s);
             s.v[lines[l] - GNM_MIN] = 1.0f;
             assert_int_equal(gcolor_from_nm(&a, &s, GCOLOR_LIGHT), G_OK);
@@ -372,7 +375,7 @@ static void test_brightness(void **state)
 static void test_mismatch(void **state)
 {
     (void)state;
-    GColorModelOptions ten = {10, 0, 0};
+    GColorModelOptions ten = {10, 0, 0, 0};
     GColorModel *a, *b, *c;
     GError err;
     assert_int_equal(gcolormodel_create("spectrum", NULL, &a, &err), G_OK);

@@ -350,7 +350,7 @@ static void test_models_agree(void **state)
     (void)state;
     GReradiation r = default_matrix();
     const char *names[] = {"bispectral", "spectrum", "spectrum9", "rgb"};
-    GColorModelOptions ten = {10, 380, 780};
+    GColorModelOptions ten = {10, 380, 780, 0};
     float results[4][2][64];
     for (int k = 0; k < 4; k++) {
         GColorModel *md;

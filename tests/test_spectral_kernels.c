@@ -261,7 +261,7 @@ static void test_models_to_xyz_against_nm(void **state)
     const char *names[] = {"spectrum", "spectrum", "spectrum", "spectrum9", "bispectral"};
     const double steps[] = {5, 1, 10, 0, 0};
     for (int i = 0; i < 5; i++) {
-        GColorModelOptions opt = {steps[i], 0, 0};
+        GColorModelOptions opt = {steps[i], 0, 0, 0};
         GColorModel *m;
         assert_int_equal(gcolormodel_create(names[i], &opt, &m, NULL), G_OK);
         GColor c;
@@ -344,8 +344,8 @@ static void test_xyz_shows_nonfinite(void **state)
                 cases++;
             }
     const char *names[] = {"spectrum", "spectrum", "spectrum", "spectrum", "spectrum9", "bispectral", "rgb"};
-    const GColorModelOptions opts[] = {{5, 0, 0},   {1, 0, 0}, {10, 0, 0}, {6, 400, 700},
-                                       {0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    const GColorModelOptions opts[] = {{5, 0, 0, 0},   {1, 0, 0, 0}, {10, 0, 0, 0}, {6, 400, 700, 0},
+                                       {0, 0, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}};
     const int shows[] = {1, 1, 1, 1, 1, 0, 0}; /* bispectral and rgb have conversions of their own */
     assert_int_equal(gcolormodel_xyz_shows_nonfinite(NULL), 0);
     for (int i = 0; i < 7; i++) {

@@ -509,7 +509,7 @@ static void test_model_default_grid(void **state)
 static void test_model_other_grids(void **state)
 {
     (void)state;
-    const GColorModelOptions opts[] = {{10.0, 0, 0}, {50.0, 0, 0}, {1.0, 0, 0}, {1.0, 300.0, 830.0}};
+    const GColorModelOptions opts[] = {{10.0, 0, 0, 0}, {50.0, 0, 0, 0}, {1.0, 0, 0, 0}, {1.0, 300.0, 830.0, 0}};
     const int n[] = {41, 9, 401, 531};
     for (size_t k = 0; k < tu_floats(opts); k++)
         check_model(&opts[k], n[k]);

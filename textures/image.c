@@ -22,6 +22,7 @@ typedef struct Image {
     GTexWrap swrap, twrap;
     double blur;
     GColor basis[3]; /* the colours of the linear primaries in the child's model */
+    int linear;      /* the model's from_rgb is linear: a texel is the basis mixed (else from_rgb per texel) */
     char *path;
 } Image;
 
@@ -81,7 +82,7 @@ static int apply(const GMaterial *self, GSurfPoint *sp, GColor *result)
     GColor c;
     rc = gnode_temps_color(&t, sp, result->model, 0, &c);
     if (rc == G_OK) {
-        if (result->model == im->node.base.model) {
+        if (result->model == im->node.base.model && im->linear) {
             rc = gcolor_scale(&c, &im->basis[0], rgb[0]);
             if (rc == G_OK)
                 rc = gcolor_add_scaled(&c, &im->basis[1], rgb[1]);
@@ -138,6 +139,30 @@ static int image_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const 
         return rc;
     rc = apply(self, sp, weight);
     return rc ? rc : 1;
+}
+
+/* *linear = 1 when the model's from_rgb mixes the primaries' colours (the basis uplift, rgb), so that a texel may
+ * be the basis mixed by its components; 0 for a smooth uplift (the sigmoid), whose mixture of primaries would
+ * leave [0, 1]: each texel is then uplifted itself. Tested on one colour, 0.25 0.5 0.75. */
+static int is_linear(const GColorModel *model, const GColor basis[3], int *linear)
+{
+    GColor direct = {0}, mixed = {0};
+    double rgb[3] = {0.25, 0.5, 0.75};
+    int rc = gcolor_alloc(&direct, model);
+    if (rc == G_OK)
+        rc = gcolor_alloc(&mixed, model);
+    if (rc == G_OK)
+        rc = gcolor_from_rgb(&direct, rgb, GCOLOR_REFLECTANCE);
+    for (int i = 0; i < 3 && rc == G_OK; i++)
+        rc = gcolor_add_scaled(&mixed, &basis[i], rgb[i]);
+    if (rc == G_OK) {
+        double size = gcolor_brightness(&direct);
+        rc = gcolor_axpy(&mixed, -1.0, &direct, &mixed);
+        *linear = rc == G_OK && gcolor_brightness(&mixed) <= 1e-5 * size;
+    }
+    gcolor_free(&direct);
+    gcolor_free(&mixed);
+    return rc;
 }
 
 static const GMaterialClass image_class = {
@@ -214,6 +239,8 @@ int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptio
             rc = gerror_set(err, rc, "image '%s': the colour model '%s' cannot take RGB colours", path,
                             gcolormodel_name(model));
     }
+    if (rc == G_OK)
+        rc = is_linear(model, im->basis, &im->linear);
     if (rc != G_OK) {
         image_destroy(&im->node.base);
         return rc;

@@ -133,6 +133,7 @@ static const GParamInfo grey_params[] = {
     {"step", GPARAM_NAMED, "number", "(ignored)", "[0.01, 400]", "read and ignored: grey has no wavelength samples"},
     {"min", GPARAM_NAMED, "number", "(ignored)", "[100, 2000]", "read and ignored"},
     {"max", GPARAM_NAMED, "number", "(ignored)", "[100, 2000]", "read and ignored"},
+    {"uplift", GPARAM_NAMED, "choice", "(ignored)", "sigmoid, basis", "read and ignored: grey needs no uplifting"},
     {NULL},
 };
 

@@ -93,11 +93,21 @@ typedef struct GColor {
     int capacity; /**< floats at v (>= model->capacity for a usable handle; 0 when cleared) */
 } GColor;
 
+/** How a spectral model turns an RGB colour into a spectrum (GColorModelOptions.uplift). */
+typedef enum GColorUplift {
+    GCOLOR_UPLIFT_DEFAULT = 0, /**< the model's default: sigmoid in the built-in spectral models */
+    GCOLOR_UPLIFT_SIGMOID = 1, /**< Jakob and Hanika's sigmoid spectra (colorspace.h): smooth, a reflectance of the
+                                    sRGB cube within [0, 1] */
+    GCOLOR_UPLIFT_BASIS = 2    /**< the spectral primary basis, corrected so that the round trip is exact (linear
+                                    in RGB; saturated reflectances leave [0, 1] on coarse grids) */
+} GColorUplift;
+
 /** Options for creating a model; zero fields take the model's defaults. */
 typedef struct GColorModelOptions {
     double step_nm; /**< sample spacing (spectrum: 5 by default; bispectral: 10) */
     double min_nm;  /**< first sample (default 380) */
     double max_nm;  /**< last sample (default 780) */
+    int uplift;     /**< a GColorUplift (models without wavelength samples ignore it) */
 } GColorModelOptions;
 
 /** A re-radiation matrix on its own grid, used to bring measured data into any model.
@@ -122,8 +132,9 @@ struct GColorModel {
     void *priv;         /**< the model's own tables */
 };
 
-/** The vtable of a colour model. Required: init, black, add, mul, scale, div, pow, brightness, to_nm,
- * from_nm. Optional (NULL = go through the nm spectrum): fini, to_xyz, from_rgb, from_reradiation.
+/** The vtable of a colour model. Required: init, black, add, mul, scale, div, pow, to_nm, from_nm. Optional (NULL
+ * = go through the nm spectrum): fini, to_xyz, from_rgb, from_reradiation. Optional (NULL = Y of to_xyz as a
+ * reflectance, the definition below): brightness.
  * Optional (NULL = the default of lib/color/color.c, which reads a vector as nvalues independent samples, as add and
  * scale treat it): fill, exp_scaled, axpy. A model whose vectors are not plain samples, or that has matrices, gives
  * its own. Optional (NULL = one band, no dispersion): band_count, band_mask, band_value. Operations get valid operands of this model (the dispatch checks models); `out` may alias them. */
@@ -144,7 +155,7 @@ struct GColorModelClass {
     int (*div)(const GColorModel *m, GColor *out, const GColor *a, const GColor *b);
     /** a to the power e, sample by sample (absorption: transmittance^distance). */
     int (*pow)(const GColorModel *m, GColor *out, const GColor *a, double e);
-    /** Luminance-weighted magnitude: 0 exactly for black, constant c gives c. */
+    /** Brightness (gcolor_brightness's definition): 0 exactly for black, constant c gives c. */
     double (*brightness)(const GColorModel *m, const GColor *a);
     int (*to_nm)(const GColorModel *m, const GColor *a, GColorRole role, GSpectrumNM *out);
     int (*from_nm)(const GColorModel *m, const GSpectrumNM *in, GColorRole role, GColor *out);
@@ -228,7 +239,14 @@ GENERIC_API GENERIC_NODISCARD int gcolor_scale(GColor *out, const GColor *a, dou
 GENERIC_API GENERIC_NODISCARD int gcolor_div(GColor *out, const GColor *a, const GColor *b);
 /** out = a ^ e, sample by sample (absorption). */
 GENERIC_API GENERIC_NODISCARD int gcolor_pow(GColor *out, const GColor *a, double e);
-/** Brightness: 0 if and only if c is black; a constant value c gives c. */
+/** Brightness, one definition in every model: Y (CIE 1931) of the value read as a reflectance under D65, the perfect
+ * white reflector 1 (the value 1 everywhere). So the same reflectance has the same brightness in every model (the
+ * Y its to_xyz gives in the reflectance role), and Russian roulette, light selection and energy checks see one
+ * number for one colour. Samples count by magnitude (a value with negative samples is not darker for them), and
+ * each sample's weight has a floor of 1e-6 of the largest, so brightness is 0 if and only if c is black; a constant
+ * value c gives c. A light's brightness is its Y weighted by D65 once more: in the spectral models the D65 white
+ * light's is 1.007, and a saturated light's of the sRGB cube within 11% of its Y as a light (rgb: equal). A model
+ * without a brightness slot gets Y of its own to_xyz in the reflectance role. */
 GENERIC_API double gcolor_brightness(const GColor *c);
 /** 1 when c is black, 0 otherwise: what gcolor_brightness(c) == 0.0 asks (brightness is 0 only for black), for
  * callers that need no more than that answer. A value that any NaN makes NaN is not black; -0.0 is zero. A vector
@@ -304,12 +322,13 @@ GENERIC_API GENERIC_NODISCARD int gcolor_convert(GColor *dst, const GColor *src,
 
 /* ---- range after conversion ---- */
 
-/** The model's own conversion error: *lo and *hi get the smallest and the largest sample that any colour of
- * the sRGB cube [0, 1]^3 takes after gcolor_from_rgb in role (exact: from_rgb is linear, so the extremes per
- * sample are sums of the positive or the negative parts of the three primaries' samples). An in-gamut colour
- * whose largest RGB component is s has every sample within [*lo * s, *hi * s]. rgb: exactly 0 and 1 for a
- * reflectance. Measured (reflectance): spectrum at 5 nm -0.00005..1.00013, bispectral at 10 nm -0.0030..1.0030,
- * spectrum9 -0.129..1.129 at its samples (its spline reaches -0.21..1.21 between them). A vector is read as
+/** The model's own conversion error: *lo and *hi get the smallest and the largest sample that the corners of
+ * the sRGB cube [0, 1]^3 take after gcolor_from_rgb in role (*lo at most 0). For a linear from_rgb (rgb, and the
+ * spectral models with uplift basis) that is every colour of the cube's extremes, and an in-gamut colour whose
+ * largest RGB component is s has every sample within [*lo * s, *hi * s]. rgb: exactly 0 and 1 for a reflectance.
+ * Measured (reflectance, uplift basis): spectrum at 5 nm -0.00005..1.00013, bispectral at 10 nm -0.0030..1.0030,
+ * spectrum9 -0.129..1.129 at its samples (its spline reaches -0.21..1.21 between them); with the sigmoid uplift
+ * (the default) a reflectance of the cube lies within [0, 1] in spectrum and bispectral. A vector is read as
  * nvalues samples. G_ERR_NOMEM when no temporary can be had. */
 GENERIC_API GENERIC_NODISCARD int gcolormodel_rgb_range(const GColorModel *m, GColorRole role, double *lo, double *hi);
 /** Maps a vector into the model's range: negative samples become 0, and the value is then scaled so that its

@@ -49,8 +49,9 @@ GENERIC_API GENERIC_NODISCARD int gcolorspec_own_matrix(GColorSpec *s, const GRe
 /** Deep copy of src into a new spec. */
 GENERIC_API GENERIC_NODISCARD int gcolorspec_copy(const GColorSpec *src, GColorSpec **out, GError *err);
 /** Converts a spec in a role into out (which has storage of the target model). A line is spread over a
- * triangle one sample step wide on each side in spectral models (1 nm on the exchange grid), so its energy and
- * centre survive any sampling; a re-radiation matrix used as a light is G_ERR_INVALID. */
+ * triangle one sample step wide on each side in spectral models (1 nm on the exchange grid, at most 10 nm), so its
+ * energy and centre survive any sampling (spectrum9 keeps its XYZ instead); a re-radiation matrix used as a light
+ * is G_ERR_INVALID. */
 GENERIC_API GENERIC_NODISCARD int gcolorspec_to_color(const GColorSpec *s, GColorRole role, GColor *out, GError *err);
 #ifdef __cplusplus
 }

@@ -4,6 +4,7 @@
 #include "generic/kit/spectral.h"
 
 #include <limits.h>
+#include <float.h>
 #include <math.h>
 #include <pthread.h>
 #include <string.h>
@@ -18,9 +19,9 @@ int gcolormodel_create_class(const GColorModelClass *cls, const GColorModelOptio
         return gerror_set(err, G_ERR_VERSION, "colour model '%s' has interface version %d, the library has %d",
                           cls->name ? cls->name : "?", cls->abi_version, GCOLOR_ABI_VERSION);
     if (!cls->init || !cls->black || !cls->add || !cls->mul || !cls->scale || !cls->div || !cls->pow ||
-        !cls->brightness || !cls->to_nm || !cls->from_nm)
+        !cls->to_nm || !cls->from_nm)
         return gerror_set(err, G_ERR_INVALID, "colour model '%s' lacks a required operation", cls->name);
-    GColorModelOptions none = {0, 0, 0};
+    GColorModelOptions none = {0, 0, 0, 0};
     if (!opt)
         opt = &none;
     if (!isfinite(opt->step_nm) || !isfinite(opt->min_nm) || !isfinite(opt->max_nm) || opt->step_nm < 0)
@@ -172,7 +173,26 @@ int gcolor_pow(GColor *out, const GColor *a, double e)
     return a->model->cls->pow(a->model, out, a, e);
 }
 
-double gcolor_brightness(const GColor *c) { return c->model->cls->brightness(c->model, c); }
+/* The default brightness, for a model without the slot: Y of the value as a reflectance under D65, through the
+ * model's own conversion; a value whose Y is not > 0 (a spectrum outside the eye's range, or one whose negative
+ * samples cancel its positive ones) and is not black gets the smallest normal double, so that 0 still means black
+ * alone. */
+static double default_brightness(const GColor *c)
+{
+    double xyz[3];
+    if (gcolor_to_xyz(c, GCOLOR_REFLECTANCE, xyz) == G_OK && xyz[1] > 0.0)
+        return xyz[1];
+    for (int k = 0; k < c->model->nvalues; k++)
+        if (c->v[k] != 0.0f)
+            return isfinite(xyz[1]) ? DBL_MIN : NAN;
+    return 0.0;
+}
+
+double gcolor_brightness(const GColor *c)
+{
+    const GColorModelClass *cls = c->model->cls;
+    return cls->brightness ? cls->brightness(c->model, c) : default_brightness(c);
+}
 
 /* out = s * a + b through the class's scale and add; a temporary holds s * a because out may alias b. */
 static int axpy_composed(const GColorModel *m, GColor *out, double s, const GColor *a, const GColor *b)
@@ -530,26 +550,18 @@ int gcolormodel_rgb_range(const GColorModel *m, GColorRole role, double *lo, dou
     if (!arena)
         return G_ERR_NOMEM;
     GScratchMark mark = gscratch_mark(arena);
-    GColor p[3];
-    int rc = G_OK;
-    for (int b = 0; b < 3 && rc == G_OK; b++) {
-        double e[3] = {b == 0, b == 1, b == 2};
-        rc = gcolor_scratch(&p[b], m, arena);
-        if (rc == G_OK)
-            rc = gcolor_from_rgb(&p[b], e, role);
-    }
-    /* per sample, the cube's extremes are the sums of the primaries' negative (positive) parts */
-    for (int k = 0; rc == G_OK && k < m->nvalues; k++) {
-        double neg = 0.0, pos = 0.0;
-        for (int b = 0; b < 3; b++) {
-            double x = p[b].v[k];
-            if (x < 0.0)
-                neg += x;
-            else
-                pos += x;
+    GColor p;
+    int rc = gcolor_scratch(&p, m, arena);
+    /* per sample, the extremes over the cube's seven corners other than black: exact for a linear from_rgb (the
+     * extremes of a linear function on a cube lie at its corners: the sums of the primaries' negative or positive
+     * parts), and the corners' own values for a smooth one (the sigmoid uplift) */
+    for (int corner = 1; corner < 8 && rc == G_OK; corner++) {
+        double e[3] = {corner & 1, (corner >> 1) & 1, (corner >> 2) & 1};
+        rc = gcolor_from_rgb(&p, e, role);
+        for (int k = 0; rc == G_OK && k < m->nvalues; k++) {
+            *lo = fmin(*lo, p.v[k]);
+            *hi = fmax(*hi, p.v[k]);
         }
-        *lo = fmin(*lo, neg);
-        *hi = fmax(*hi, pos);
     }
     gscratch_release(arena, mark);
     return rc;

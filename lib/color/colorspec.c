@@ -79,7 +79,7 @@ int gcolorspec_copy(const GColorSpec *src, GColorSpec **out, GError *err)
     return G_OK;
 }
 
-/* A line of `power` at nm: a triangle of half-width h (the model's sample step, at least 1 nm) on the 1 nm grid,
+/* A line of `power` at nm: a triangle of half-width h (the model's sample step, 1 to 10 nm) on the 1 nm grid,
  * normalised so the samples sum to power: energy and centre survive any resampling to the model's grid. */
 static void line_nm(double nm, double power, double h, GSpectrumNM *out)
 {
@@ -112,7 +112,9 @@ int gcolorspec_to_color(const GColorSpec *s, GColorRole role, GColor *out, GErro
         break;
     case GCOLORSPEC_LINE: {
         const GColorModel *m = out->model;
-        double h = m->nsamples > 0 && m->lambda_step > 1.0 ? m->lambda_step : 1.0;
+        /* at most 10 nm wide: a model on a coarser grid (spectrum9's 50 nm) keeps the colour of what it is handed
+         * (its from_nm keeps XYZ), and a triangle 50 nm wide is no longer the line's colour */
+        double h = m->nsamples > 0 && m->lambda_step > 1.0 ? fmin(m->lambda_step, 10.0) : 1.0;
         line_nm(s->line_nm, s->line_power * s->scale, h, &nm);
         rc = gcolor_from_nm(out, &nm, role);
         break;

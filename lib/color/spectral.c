@@ -10,6 +10,8 @@
  * is plain linear interpolation, the adjoint operation, which keeps the trapezoid integral. */
 #include "generic/kit/spectral.h"
 #include "generic/kit/spectral_kernels.h"
+#include "uplift.h"
+#include "uplift_fit.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -227,16 +229,18 @@ static int invert3(const double m[3][3], double out[3][3])
     return 0;
 }
 
-/* Brightness weights: ybar averaged onto the grid like any spectrum, with a floor of 1e-6 of the peak so
- * that a sample outside the eye's range (or where ybar is negligible) still counts: brightness is 0 only
- * for black. Normalised to sum 1, so a constant c has brightness c. */
+/* Brightness weights (color.h: Y of the value as a reflectance under D65): the model's own Y weights of the
+ * reflectance role, which come from its to_nm, so that the brightness of a reflectance is its Y in this model, as
+ * in every other. Negative weights (a spline's lobes) become 0, and a floor of 1e-6 of the peak makes a sample
+ * outside the eye's range (or where ybar is negligible) still count: brightness is 0 only for black. Normalised to
+ * sum 1 (the Y of the perfect white reflector: the sum moves by the floor only), so a constant c has brightness
+ * c. */
 static void init_lum(const GSpectral *s, float *lum)
 {
-    GSpectrumNM y;
-    for (int i = 0; i < GNM_COUNT; i++)
-        y.v[i] = (float)gcie_luminance_weight(i);
     int n = s->grid.n;
-    gspectral_resample_apply(&s->from_nm, y.v, 1, lum, 1);
+    const double *yw = s->xyz[GCOLOR_REFLECTANCE] + n;
+    for (int k = 0; k < n; k++)
+        lum[k] = (float)yw[k];
     double peak = 0.0, sum = 0.0;
     for (int k = 0; k < n; k++)
         peak = fmax(peak, lum[k]);
@@ -321,6 +325,35 @@ static int init_colorimetry(GColorModel *m, GSpectral *s, GError *err)
     return rc;
 }
 
+/* The sigmoid uplift's discretisation per role: normalised wavelengths, the XYZ weights of the role (a light's
+ * times D65 of Y = 1, which multiplies the sigmoid), the D65 factor (1 for a reflectance). */
+static void init_fit(GSpectral *s)
+{
+    int n = s->grid.n;
+    for (int role = 0; role < 2; role++) {
+        double *f = s->fit[role];
+        const double *w = s->xyz[role];
+        for (int k = 0; k < n; k++) {
+            double nm = gspectral_grid_nm(s->grid, k);
+            double light = role == GCOLOR_LIGHT ? gcie_illuminant("D65", nm) : 1.0;
+            f[k] = (nm - GUPLIFT_NM0) / GUPLIFT_NM_SPAN;
+            for (int c = 0; c < 3; c++)
+                f[(1 + c) * n + k] = w[c * n + k] * light;
+            f[4 * n + k] = light;
+        }
+    }
+}
+
+int gspectral_set_uplift(const GColorModel *m, GSpectral *s, const GColorModelOptions *opt, GError *err)
+{
+    int u = opt ? opt->uplift : GCOLOR_UPLIFT_DEFAULT;
+    if (u != GCOLOR_UPLIFT_DEFAULT && u != GCOLOR_UPLIFT_SIGMOID && u != GCOLOR_UPLIFT_BASIS)
+        return gerror_set(err, G_ERR_INVALID, "colour model '%s': uplift %d is not one of sigmoid (1), basis (2)",
+                          m->cls->name, u);
+    s->uplift = u == GCOLOR_UPLIFT_BASIS ? GCOLOR_UPLIFT_BASIS : GCOLOR_UPLIFT_SIGMOID;
+    return G_OK;
+}
+
 int gspectral_init(GColorModel *m, GSpectral *s, GSpectralGrid grid, int linear_to_nm, GError *err)
 {
     memset(s, 0, sizeof *s);
@@ -341,7 +374,8 @@ int gspectral_init(GColorModel *m, GSpectral *s, GSpectralGrid grid, int linear_
         for (int role = 0; role < 2; role++) {
             s->xyz[role] = gmem_calloc(xyz_doubles(n), sizeof(double));
             s->rgb[role] = gmem_calloc((size_t)n * 3, sizeof(float));
-            if (!s->xyz[role] || !s->rgb[role])
+            s->fit[role] = gmem_calloc((size_t)n * 5, sizeof(double));
+            if (!s->xyz[role] || !s->rgb[role] || !s->fit[role])
                 rc = G_ERR_NOMEM;
         }
         if (!s->lum)
@@ -349,8 +383,13 @@ int gspectral_init(GColorModel *m, GSpectral *s, GSpectralGrid grid, int linear_
     }
     if (rc != G_OK)
         return gerror_set(err, G_ERR_NOMEM, "out of memory creating colour model '%s'", m->cls->name);
-    init_lum(s, s->lum);
-    return init_colorimetry(m, s, err);
+    s->uplift = GCOLOR_UPLIFT_SIGMOID;
+    rc = init_colorimetry(m, s, err);
+    if (rc == G_OK) {
+        init_lum(s, s->lum);
+        init_fit(s);
+    }
+    return rc;
 }
 
 void gspectral_fini(GSpectral *s)
@@ -363,6 +402,7 @@ void gspectral_fini(GSpectral *s)
     for (int role = 0; role < 2; role++) {
         gmem_free(s->xyz[role]);
         gmem_free(s->rgb[role]);
+        gmem_free(s->fit[role]);
     }
     memset(s, 0, sizeof *s);
 }
@@ -383,7 +423,9 @@ int gspectral_model_init(GColorModel *m, const GColorModelOptions *opt, double d
     int rc = gspectral_grid_from_options(m->cls->name, opt, def_step, max_n, &grid, err);
     if (rc == G_OK)
         rc = gspectral_model_alloc(m, sizeof(GSpectral), matrices ? grid.n * grid.n : grid.n, err);
-    return rc == G_OK ? gspectral_init(m, m->priv, grid, 1, err) : rc;
+    if (rc == G_OK)
+        rc = gspectral_init(m, m->priv, grid, 1, err);
+    return rc == G_OK ? gspectral_set_uplift(m, m->priv, opt, err) : rc;
 }
 
 int gspectral_model_init_fixed(GColorModel *m, const GColorModelOptions *opt, GSpectralGrid grid, GError *err)
@@ -391,7 +433,9 @@ int gspectral_model_init_fixed(GColorModel *m, const GColorModelOptions *opt, GS
     int rc = gspectral_grid_check_fixed(m->cls->name, opt, grid, err);
     if (rc == G_OK)
         rc = gspectral_model_alloc(m, sizeof(GSpectral), grid.n, err);
-    return rc == G_OK ? gspectral_init(m, m->priv, grid, 1, err) : rc;
+    if (rc == G_OK)
+        rc = gspectral_init(m, m->priv, grid, 1, err);
+    return rc == G_OK ? gspectral_set_uplift(m, m->priv, opt, err) : rc;
 }
 
 void gspectral_model_fini(GColorModel *m)
@@ -603,9 +647,48 @@ int gspectral_from_nm(const GColorModel *m, const GSpectrumNM *in, GColorRole ro
     return G_OK;
 }
 
+/* The sigmoid uplift at the grid's wavelengths, refined against the model's own weights (no allocation). A grid
+ * too coarse for a sigmoid to reach a colour that sigmoid spectra do reach at 1 nm (spectrum9's nine samples and
+ * the saturated corners of the cube) gets the rest through the corrected basis: the round trip stays exact, and
+ * only those colours' samples may leave [0, 1]. A colour no sigmoid spectrum reaches (a wide-gamut colour beyond
+ * the reflectances) keeps the nearest one: mapped, within [0, 1]. */
+static int from_rgb_sigmoid(const GSpectral *s, const double rgb[3], GColorRole role, float *out)
+{
+    GUplift u;
+    int rc = guplift_from_rgb(rgb, role, &u);
+    if (rc != G_OK)
+        return rc;
+    int n = s->grid.n, light = role == GCOLOR_LIGHT;
+    const double *f = s->fit[light];
+    const double *w[3] = {f + n, f + 2 * n, f + 3 * n};
+    double left = 0.0;
+    rc = guplift_refine(&u, n, f, w, &left);
+    for (int k = 0; k < n; k++)
+        out[k] = (float)(guplift_sigmoid_at(&u, f[k]) * f[4 * n + k]);
+    GSpectrumNM nm;
+    double reach = 0.0;
+    if (rc != G_OK || !(left > 1e-3) || guplift_rgb_to_nm(rgb, role, &nm, &reach) != G_OK || reach > 1e-3)
+        return rc;
+    double xyz[3], want[3], d[3], drgb[3];
+    xyz_exact(s, role, out, xyz);
+    for (int c = 0; c < 3; c++) {
+        want[c] = u.scale * u.xyz[c];
+        d[c] = want[c] - xyz[c];
+    }
+    gcie_xyz_to_rgb(d, drgb);
+    const float *b = s->rgb[light];
+    for (int k = 0; k < n; k++)
+        out[k] = (float)(out[k] + drgb[0] * b[k] + drgb[1] * b[n + k] + drgb[2] * b[2 * n + k]);
+    return G_OK;
+}
+
 int gspectral_from_rgb(const GColorModel *m, const double rgb[3], GColorRole role, GColor *out)
 {
     const GSpectral *s = m->priv;
+    if (s->uplift != GCOLOR_UPLIFT_BASIS) {
+        out->kind = GCOLOR_VECTOR;
+        return from_rgb_sigmoid(s, rgb, role, out->v);
+    }
     int n = m->nvalues;
     const float *b = s->rgb[role == GCOLOR_LIGHT];
     float r = (float)rgb[0], g = (float)rgb[1], bl = (float)rgb[2];

@@ -217,7 +217,12 @@ int gmaterial_param_check_sum(const GColor *sum, const char *material, const cha
     int at;
     double mx = gmaterial_param_max(sum, &at);
     /* within the model's conversion error, as each parameter: rgb 0 0.5 0 + 0 0.5 0 is 1.03 in spectrum9 */
-    if (mx > hi && !gmaterial_param_fold_ok(sum, hi)) /* above 1 in a band only as a fold */
+    double rgb[3] = {0, 0, 0};
+    /* colours uplifted one by one (the sigmoid uplift is not linear) may sum above 1 at a sample where their RGB
+     * sum is within 1: the sum is measured by its colour then (rgb 0.5 0 0 + 0 0.5 0.5 reaches 1.17 at 550 nm) */
+    int rgb_ok =
+        gcolor_to_rgb(sum, GCOLOR_REFLECTANCE, rgb) == G_OK && fmax(rgb[0], fmax(rgb[1], rgb[2])) <= 1.0 + 1e-4;
+    if (mx > hi && !rgb_ok && !gmaterial_param_fold_ok(sum, hi)) /* above 1 in a band only as a fold */
         return gerror_set(err, G_ERR_INVALID,
                           "%s: %s is %g at sample %d; it must not exceed 1 (energy conservation)%s", material, what,
                           mx, at, hi > 1.0 + 2e-5 ? ", or the conversion error of the colour model" : "");

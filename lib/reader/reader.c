@@ -152,8 +152,13 @@ static int colormodel_options(GReader *r, GColorModelOptions *o, GError *err)
             rc = greader_number_in(r, 100.0, 2000.0, &o->min_nm, err);
         else if (strcmp(key, "max") == 0)
             rc = greader_number_in(r, 100.0, 2000.0, &o->max_nm, err);
-        else
-            rc = greader_unknown_param(r, "step, min, max", err);
+        else if (strcmp(key, "uplift") == 0) {
+            static const char *const uplifts[] = {"sigmoid", "basis", NULL};
+            int which = 0;
+            rc = greader_choice(r, uplifts, &which, err);
+            o->uplift = which == 0 ? GCOLOR_UPLIFT_SIGMOID : GCOLOR_UPLIFT_BASIS;
+        } else
+            rc = greader_unknown_param(r, "step, min, max, uplift", err);
         if (rc < 0)
             return rc;
     }
@@ -173,7 +178,7 @@ static int colormodel_entry(GReader *r, const GTypeInfo *type, GColorModel **out
     int line = r->ts.cur.tok.line, col = r->ts.cur.tok.col;
     int base = r->nframes;
     int rc = greader_push_frame(r, 0, type, line, col, err);
-    GColorModelOptions o = {0, 0, 0};
+    GColorModelOptions o = {0, 0, 0, 0};
     if (rc == G_OK)
         rc = colormodel_options(r, &o, err);
     if (rc == G_OK) {

@@ -32,7 +32,8 @@ FUZZ_TARGETS  ?= $(FUZZ_NAMES)
 FUZZ_BIN      := $(FUZZ_NAMES:%=$(FUZZ_BUILD)/fuzz_%)
 FUZZ_C_OBJ    := $(LIB_SRC:%.c=$(FUZZ_BUILD)/obj/%.o)
 FUZZ_CXX_OBJ  := $(LIB_CXX:%.cpp=$(FUZZ_BUILD)/obj/%.o)
-FUZZ_GEN_OBJ  := $(FUZZ_BUILD)/obj/gen/builtin_types.o $(FUZZ_BUILD)/obj/gen/image_writers.o
+FUZZ_GEN_OBJ  := $(FUZZ_BUILD)/obj/gen/builtin_types.o $(FUZZ_BUILD)/obj/gen/image_writers.o \
+                 $(FUZZ_BUILD)/obj/gen/uplift_tables.o
 FUZZ_LIBA     := $(FUZZ_BUILD)/libgeneric.a
 # What fuzz-seed copies (the examples of each input kind; tests/bad/*.mat are broken on purpose, good seeds too).
 FUZZ_SEED_reader := examples/materials/*.mat examples/textures/*.txt tests/good/*.mat tests/bad/*.mat

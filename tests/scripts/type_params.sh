@@ -31,6 +31,7 @@ color:illuminant:reads the illuminant's name after the keyword
 color:line:reads a wavelength and an optional power after the keyword
 color:bfc:reads a file name after the keyword
 color:scale:reads a factor and a colour after the keyword
+color:rgbspace:reads a colour space's name and R G B after the keyword
 object:group:reads its member objects (and a transform) in a positional block"
 
 # rows TOOL-ARGS...: the page's types and rows as lines "type KIND NAME STATE" (STATE: table, empty or none) and

@@ -45,8 +45,10 @@ GENERIC_API double gmaterial_param_energy(const GColor *c, int *at);
 GENERIC_API int gmaterial_param_fold_ok(const GColor *c, double hi);
 /** Checks a sum of a material's reflectances in its own model (phong's kd + ks + mirror: all that one light
  * leaves as) against energy conservation, the rule gmaterial_param_color applies to one parameter with max 1: a vector
- * at most 1 in every sample within the model's conversion error (gmaterial_param_range), or above it only as a fold
- * (gmaterial_param_fold_ok); a re-radiation matrix (a vector added to a matrix is one, on its diagonal) at most 1 in
+ * at most 1 in every sample within the model's conversion error (gmaterial_param_range), or whose linear sRGB as a
+ * reflectance is at most 1 (colours uplifted one by one by the sigmoid uplift, which is not linear, may add up above
+ * 1 at some samples where their RGB sum is within 1), or above it only as a fold (gmaterial_param_fold_ok); a
+ * re-radiation matrix (a vector added to a matrix is one, on its diagonal) at most 1 in
  * its energy per excitation sample, its largest column sum (gmaterial_param_energy), light re-radiated into other
  * samples included. G_ERR_INVALID otherwise: "<material>: <what> is V at sample K; it must not exceed 1 (energy
  * conservation)" for a vector, with no parameter named (the sum is none); "<material>: <what> is a re-radiation

@@ -62,6 +62,10 @@ typedef struct GSpectral {
                                     allocation goes on with the float table gspectral_to_xyz reads) */
     float *rgb[2];             /**< per GColorRole: 3 * n RGB basis on the grid, corrected so the round trip
                                     rgb -> model -> rgb is exact */
+    int uplift;                /**< a GColorUplift: how from_rgb makes spectra (0: sigmoid) */
+    double *fit[2];            /**< per GColorRole: the sigmoid uplift's discretisation, 5 * n: the normalised
+                                    wavelengths, the three XYZ weights (a light's times D65), the D65 factor (1
+                                    for a reflectance) */
 } GSpectral;
 
 /** A sanity limit on a grid's samples (300..830 nm at 1 nm has 531). */
@@ -100,6 +104,10 @@ GENERIC_API void gspectral_resample_free(GSpectralResample *r);
  * the colour matching weights and the RGB basis correction are computed through it. G_ERR_NOMEM, or
  * G_ERR_INVALID when the grid cannot represent RGB colours. */
 GENERIC_API GENERIC_NODISCARD int gspectral_init(GColorModel *m, GSpectral *s, GSpectralGrid grid, int linear_to_nm, GError *err);
+/** Sets how s's model makes spectra from RGB (GColorModelOptions.uplift; opt may be NULL: the default, sigmoid).
+ * G_ERR_INVALID, naming the model, for a value that is not a GColorUplift. */
+GENERIC_API GENERIC_NODISCARD int gspectral_set_uplift(const GColorModel *m, GSpectral *s, const GColorModelOptions *opt,
+                                                       GError *err);
 /** Frees what gspectral_init allocated; NULL is a no-op. */
 GENERIC_API void gspectral_fini(GSpectral *s);
 
@@ -133,7 +141,9 @@ GENERIC_API GENERIC_NODISCARD int gspectral_scale(const GColorModel *m, GColor *
 GENERIC_API GENERIC_NODISCARD int gspectral_div(const GColorModel *m, GColor *out, const GColor *a, const GColor *b);
 /** Sample by sample a ^ e; samples <= 0 give 0 (1 for e = 0). */
 GENERIC_API GENERIC_NODISCARD int gspectral_pow(const GColorModel *m, GColor *out, const GColor *a, double e);
-/** The brightness weights applied to |a|: 0 only for black, a constant c gives c. */
+/** The brightness weights applied to |a| (color.h's brightness: Y of the value as a reflectance under D65, from
+ * the model's own colour matching weights, with a floor so that every sample counts): 0 only for black, a
+ * constant c gives c. */
 GENERIC_API double gspectral_brightness(const GColorModel *m, const GColor *a);
 /** Band slots of a sampled model: every sample is one wavelength band (band_count = nvalues, the mask of band k
  * is 1 at sample k, the value of a in band k is its sample k). */
@@ -152,7 +162,10 @@ GENERIC_API GENERIC_NODISCARD int gspectral_to_xyz(const GColorModel *m, const G
 /** The float colour matching table gspectral_to_xyz reads for role (gspectral_xyz_table's layout, n = the grid's
  * samples), for a model's own to_xyz kernel over the same sums. */
 GENERIC_API const float *gspectral_xyz_floats(const GSpectral *s, GColorRole role);
-/** A vector from linear sRGB through the corrected RGB basis (exact round trip with to_xyz). */
+/** A vector from linear sRGB: by default the sigmoid uplift (generic/colorspace.h) evaluated at the grid's
+ * wavelengths, its coefficients refined against the model's own colour matching weights (so the round trip with
+ * to_xyz is exact wherever sigmoid spectra reach the colour, and a reflectance of the sRGB cube stays within
+ * [0, 1]); with the uplift GCOLOR_UPLIFT_BASIS, through the corrected RGB basis (exact round trip, linear). */
 GENERIC_API GENERIC_NODISCARD int gspectral_from_rgb(const GColorModel *m, const double rgb[3], GColorRole role, GColor *out);
 
 #ifdef __cplusplus
