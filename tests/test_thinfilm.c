@@ -89,7 +89,7 @@ static void film_open(Film *f, const char *model, double step)
     int len = 0;
     for (int d = 0; d <= 1000; d += 50)
         len += snprintf(text + len, sizeof text - len, "material t%d thinfilm { thickness %d index 1.33 }\n", d, d);
-    GColorModelOptions mo = {step, 380, 780};
+    GColorModelOptions mo = {.step_nm = step, .min_nm = 380, .max_nm = 780};
     GReaderOptions opt = {.colormodel = model, .colormodel_options = step > 0.0 ? &mo : NULL};
     GError err;
     if (greader_load_string(text, "films", &opt, &f->lib, &err) != G_OK)
