@@ -15,6 +15,8 @@ import generic
 
 def curves(n=1801):
     """theta_out in degrees and, per material type, the luminance reflected towards each direction."""
+    # Types with a required parameter are shown with one; the rest with their defaults.
+    required = {"layer": "layer { top dielectric { index 1.5 } bottom lambert { } }"}
     theta = np.linspace(-89.0, 89.0, n)
     t = np.radians(theta)
     wo = np.stack([np.sin(t), np.zeros(n), np.cos(t)], axis=1)
@@ -25,7 +27,7 @@ def curves(n=1801):
         for kind in generic.types("material"):
             path = os.path.join(tmp, f"{kind}.mat")
             with open(path, "w") as f:
-                f.write(f"material sample {kind}\n")
+                f.write(f"material sample {required.get(kind, kind)}\n")
             mat = generic.load(path, colormodel="spectrum").material("sample")
             out[kind] = mat.reflection(normal, wi, wo, output="xyz")[:, 1]
     return theta, out

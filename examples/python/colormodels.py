@@ -12,7 +12,7 @@ import numpy as np
 
 import generic
 
-PLASTIC = "material plastic phong { diffuse rgb 0.6 0.08 0.05 specular rgb 0.25 0.25 0.25 exponent 60 }\n"
+PLASTIC = "material glossy phong { diffuse rgb 0.6 0.08 0.05 specular rgb 0.25 0.25 0.25 exponent 60 }\n"
 
 
 def main():
@@ -27,10 +27,10 @@ def main():
     wo[:, 2] = np.abs(wo[:, 2])
     wo /= np.linalg.norm(wo, axis=1)[:, None]
     with tempfile.TemporaryDirectory() as tmp:
-        path = os.path.join(tmp, "plastic.mat")
+        path = os.path.join(tmp, "glossy.mat")
         with open(path, "w") as f:
             f.write(PLASTIC)
-        results = {m: generic.load(path, colormodel=m).material("plastic").reflection([0, 0, 1], wi, wo)
+        results = {m: generic.load(path, colormodel=m).material("glossy").reflection([0, 0, 1], wi, wo)
                    for m in generic.colormodels()}
     reference = results["spectrum"]
     print(f"{'model':12s} {'values':>6s} {'round trip max |drgb|':>22s} {'phong vs spectrum max |drgb|':>30s}")

@@ -30,7 +30,7 @@ typedef enum GColorRole { GCOLOR_REFLECTANCE = 0, GCOLOR_LIGHT = 1 } GColorRole;
 typedef enum GKind { GKIND_COLORMODEL = 0, GKIND_COLOR = 1, GKIND_MATERIAL = 2, GKIND_NODE = 3,
                      GKIND_GENERATOR = 4 } GKind;
 
-typedef struct GColorModelOptions { double step_nm; double min_nm; double max_nm; } GColorModelOptions;
+typedef struct GColorModelOptions { double step_nm; double min_nm; double max_nm; int uplift; } GColorModelOptions;
 
 typedef struct GReaderOptions {
     const GColorModel *model;
