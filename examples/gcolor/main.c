@@ -261,5 +261,6 @@ static int gcolor_main(int argc, char **argv)
     return report_models(a.models, a.samples, a.n);
 }
 
-/* Every status leaves through cli_finish_stdout: a failed write to standard output makes the run fail. */
-int main(int argc, char **argv) { return cli_finish_stdout("gcolor", gcolor_main(argc, argv)); }
+/* The run holds the standard descriptors, and every status leaves through cli_finish_stdout: a failed write to
+ * standard output makes the run fail (cli_run). */
+int main(int argc, char **argv) { return cli_run("gcolor", gcolor_main, argc, argv); }

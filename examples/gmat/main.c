@@ -572,5 +572,6 @@ static int gmat_main(int argc, char **argv)
     return rc;
 }
 
-/* Every status leaves through cli_finish_stdout: a failed write to standard output makes the run fail. */
-int main(int argc, char **argv) { return cli_finish_stdout("gmat", gmat_main(argc, argv)); }
+/* The run holds the standard descriptors, and every status leaves through cli_finish_stdout: a failed write to
+ * standard output makes the run fail (cli_run). */
+int main(int argc, char **argv) { return cli_run("gmat", gmat_main, argc, argv); }

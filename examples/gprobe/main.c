@@ -262,5 +262,6 @@ void progress_print(void *user, const char *stage, double fraction)
         fprintf(stderr, "\r  %s %3.0f%%", stage, 100.0 * fraction);
 }
 
-/* Every status leaves through cli_finish_stdout: a failed write to standard output makes the run fail. */
-int main(int argc, char **argv) { return cli_finish_stdout("gprobe", gprobe_main(argc, argv)); }
+/* The run holds the standard descriptors, and every status leaves through cli_finish_stdout: a failed write to
+ * standard output makes the run fail (cli_run). */
+int main(int argc, char **argv) { return cli_run("gprobe", gprobe_main, argc, argv); }

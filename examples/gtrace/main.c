@@ -636,5 +636,6 @@ static int gtrace_main(int argc, char **argv)
     return rc == G_OK || rc == DIST_SENT ? 0 : usage ? 2 : 1;
 }
 
-/* Every status leaves through cli_finish_stdout: a failed write to standard output makes the run fail. */
-int main(int argc, char **argv) { return cli_finish_stdout("gtrace", gtrace_main(argc, argv)); }
+/* The run holds the standard descriptors, and every status leaves through cli_finish_stdout: a failed write to
+ * standard output makes the run fail (cli_run). */
+int main(int argc, char **argv) { return cli_run("gtrace", gtrace_main, argc, argv); }

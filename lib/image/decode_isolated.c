@@ -192,6 +192,29 @@ static int stop(const char *path, int kill_it, unsigned long cpu, GError *err)
                       path, WIFEXITED(status) ? WEXITSTATUS(status) : -1);
 }
 
+/* Moves both sockets of sv above the standard descriptors 0, 1 and 2 (a program started with one of them closed
+ * gets it from socketpair, and would then write its standard output into the decoder's stream). 0, or -1 with
+ * errno and both closed. */
+static int above_standard(int sv[2])
+{
+    for (int i = 0; i < 2; i++) {
+        if (sv[i] > 2)
+            continue;
+        int moved = fcntl(sv[i], F_DUPFD_CLOEXEC, 3), e = errno;
+        close(sv[i]);
+        sv[i] = moved;
+        errno = e;
+    }
+    if (sv[0] >= 0 && sv[1] >= 0)
+        return 0;
+    int e = errno;
+    for (int i = 0; i < 2; i++)
+        if (sv[i] >= 0)
+            close(sv[i]);
+    errno = e;
+    return -1;
+}
+
 /* A running decoder whose hard limit allows max_bytes: the one there is, else a new one. */
 static int ensure(const char *path, uint64_t max_bytes, GError *err)
 {
@@ -212,7 +235,7 @@ static int ensure(const char *path, uint64_t max_bytes, GError *err)
                           "/generic/; GENERIC_DECODER may name it, GENERIC_DECODE=inprocess decodes trusted files "
                           "without it)", path, GDECODE_PROGRAM);
     int sv[2];
-    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0)
+    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0 || above_standard(sv) != 0)
         return gerror_set(err, G_ERR_IO, "%s: cannot start the image decoder: %s", path, strerror(errno));
     char base_text[32], max_text[32];
     snprintf(base_text, sizeof base_text, "%llu", (unsigned long long)base_bytes());
