@@ -423,13 +423,14 @@ static int types(int argc, char **argv)
 
 /* The kinds of a gtrace scene's entries, registered without types: gmat reads a scene's materials, and `gmat list`
  * reads past its objects, lights and camera. */
-static GKind scene_kinds[3];
+static GKind scene_kinds[5];
 
 static int register_scene_kinds(GError *err)
 {
-    static const GKindInfo kinds[3] = {{"object", NULL, 0}, {"light", NULL, 0}, {"camera", NULL, 0}};
+    static const GKindInfo kinds[5] = {{"object", NULL, 0}, {"light", NULL, 0}, {"camera", NULL, 0},
+                                       {"phase", NULL, 0}, {"medium", NULL, 0}};
     int rc = G_OK;
-    for (int i = 0; i < 3 && rc == G_OK; i++)
+    for (int i = 0; i < 5 && rc == G_OK; i++)
         rc = gregistry_add_kind(&kinds[i], &scene_kinds[i], err);
     return rc;
 }

@@ -30,6 +30,7 @@ typedef struct Camera {
     int bands;             /**< most wavelength groups a dispersive refraction splits into (0: the renderer's
                                 default, integrators/bands.h) */
     GMaterial *medium;     /**< the medium the camera is in (borrowed from the library; NULL: vacuum) */
+    const struct Medium *atmosphere; /**< the participating medium outside every object (borrowed; NULL: none) */
     double frame;          /**< >= 0: the view fitted to the scene's bounds with this margin (camera_frame); < 0: off */
     GVec3 frame_lo, frame_hi; /**< the box camera_frame last fitted the view to */
     /* derived by camera_setup */

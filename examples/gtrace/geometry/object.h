@@ -70,6 +70,7 @@ typedef struct Object {
     double expansion; /**< Embree instances this object expands to when placed (a shape placed alone: 1) */
     int proto_index;  /**< accel: the prototype scene of a group or instanced shape (-1: none) */
     unsigned geom_id; /**< Embree geometry id */
+    const struct Medium *interior; /**< the participating medium inside (media/medium.h; NULL: none; borrowed) */
 } Object;
 
 /** A zeroed object of a kind with an identity transform holding a new reference to material. */

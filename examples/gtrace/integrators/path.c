@@ -54,6 +54,7 @@
 #include "lights/emissive.h"
 #include "lights/lighting.h"
 #include "lights/probe_env.h"
+#include "media/medium.h"
 
 #include <math.h>
 
@@ -62,6 +63,8 @@ typedef struct PathCtx {
     const Light *env_light; /**< the reference probe light that samples the background probe (NULL: none) */
     int env_in_lights;      /**< the background probe's light is carried by its technique's directional lights */
     int scattered;          /**< the current path has had a non-delta bounce (it sees the ambient light) */
+    int from_medium;        /**< set for the ray a medium vertex traces next (read and cleared by path_radiance):
+                             * the probe was not sampled there, so the background it meets counts fully */
 } PathCtx;
 
 #define CHECK(expr)                                                                                                    \
@@ -119,9 +122,9 @@ double area_light_hit(const Light *l, const Ray *r, double tmax, double *pdf)
 
 /* Draws a direction towards area light l from x: 1 with the direction, the distance, the density in solid
  * angle and the radiance L; 0 when the light offers none; or a status. */
-static int light_sample(PathCtx *p, const Light *l, GVec3 x, GVec3 *in, double *dist, double *pdf, GColor *L)
+int path_light_sample(TraceCtx *c, const Light *l, GVec3 x, GVec3 *in, double *dist, double *pdf, GColor *L)
 {
-    double u1 = uniform(p), u2 = uniform(p);
+    double u1 = rng_next(&c->rng), u2 = rng_next(&c->rng);
     if (l->kind == LIGHT_SPHERE) {
         GVec3 axis = gvec3_sub(l->position, x);
         double dc = gvec3_length(axis);
@@ -197,7 +200,7 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
         GVec3 in;
         double dist, pdf_l;
         int got;
-        CHECK(got = light_sample(p, l, sp->point, &in, &dist, &pdf_l, &L));
+        CHECK(got = path_light_sample(c, l, sp->point, &in, &dist, &pdf_l, &L));
         if (!got || (opaque && gvec3_dot(in, facing) <= 0.0))
             continue;
         double w = mis_power(pdf_l, gmaterial_pdf(m, sp, in, to_viewer, ri));
@@ -225,6 +228,8 @@ done:
 
 static int path_radiance(PathCtx *p, const Ray *r, const Media *media, int depth, double beta, int prev_delta,
                     double prev_pdf, GColor *out);
+static int arrive(PathCtx *p, const Ray *r, const Media *media, int depth, double beta, int first, double prev_pdf,
+                  int from_medium, const Hit *hp, const Light *lh, double t_l, double pdf_l, GColor *out);
 
 /* The light leaving sp towards the viewer of r: emission (times emit_weight, its MIS weight against the emissive
  * set's NEE), NEE, and one sampled bounce. */
@@ -336,7 +341,7 @@ done:
 
 /* Radiance arriving along r, which leaves the scene; first: a camera ray or one after a delta bounce, else
  * drawn by material sampling with density prev_pdf. See the top of the file: the environment. */
-static int escaped(PathCtx *p, const Ray *r, int first, double prev_pdf, GColor *out)
+static int escaped(PathCtx *p, const Ray *r, int first, double prev_pdf, int from_medium, GColor *out)
 {
     const Scene *s = p->c->scene;
     const ProbeEnv *env = s->env;
@@ -349,13 +354,78 @@ static int escaped(PathCtx *p, const Ray *r, int first, double prev_pdf, GColor 
         CHECK(gcolor_fill(out, 0.0));
     else {
         CHECK(probe_pixel_radiance(env, r->d, out));
-        if (p->env_light)
+        if (p->env_light && !from_medium)
             CHECK(gcolor_scale(out, out, mis_power(prev_pdf, probe_dist_pdf(&env->dist, env->probe,
                                                                                probe_from_world(env, r->d)))));
     }
     if (p->scattered && s->have_ambient)
         CHECK(gcolor_add(out, out, &s->ambient));
 done:
+    return rc;
+}
+
+/* The light scattered towards -r->d at x in medium vol: NEE (media/medium_light.c) and one direction drawn from
+ * the phase function, traced on (its density is prev_pdf there, for the MIS weight of a light it reaches). */
+static int medium_vertex(PathCtx *p, const Ray *r, const Media *media, const Medium *vol, GVec3 x, int depth,
+                         double beta, GColor *out)
+{
+    TraceCtx *c = p->c;
+    GScratchMark mark = gscratch_mark(c->scratch);
+    GColor illum;
+    int rc = G_OK;
+    CHECK(gcolor_fill(out, 0.0));
+    if (c->scene->nlights > 0 || c->emissive)
+        CHECK(medium_direct_light(c, vol, media, x, r->d, out));
+    if (depth >= c->max_depth)
+        goto done;
+    double q = 1.0;
+    if (depth >= PATH_RR_START) {
+        q = fmin(1.0, beta);
+        if (!(q > 0.0) || uniform(p) >= q)
+            goto done;
+    }
+    GVec3 in;
+    double u1 = uniform(p), u2 = uniform(p), pdf = phase_sample(vol->phase, r->d, u1, u2, &in);
+    if (!(pdf > 0.0))
+        goto done;
+    CHECK(gcolor_scratch_uncleared(&illum, c->scene->model, c->scratch)); /* path_radiance writes it */
+    Ray ray = {x, in, 0.0, INFINITY, r->cone_width, r->cone_spread};
+    int scattered = p->scattered;
+    p->scattered = 1;
+    p->from_medium = 1;
+    rc = path_radiance(p, &ray, media, depth + 1, beta / q, 0, pdf, &illum);
+    p->scattered = scattered;
+    p->from_medium = 0;
+    CHECK(rc);
+    CHECK(gcolor_add_scaled(out, &illum, phase_eval(vol->phase, r->d, in) / (pdf * q)));
+done:
+    gscratch_release(c->scratch, mark);
+    return rc;
+}
+
+/* Radiance along r through the medium vol up to t_l (what it then meets: see arrive): free-flight sampling
+ * (medium_sample_distance) either scatters in the medium or passes on to arrive, times the sample's weight. */
+static int medium_segment(PathCtx *p, const Ray *r, const Media *media, const Medium *vol, int depth, double beta,
+                          int first, double prev_pdf, int from_medium, const Hit *hp, const Light *lh, double t_l,
+                          double pdf_l, GColor *out)
+{
+    TraceCtx *c = p->c;
+    GScratchMark mark = gscratch_mark(c->scratch);
+    GColor w;
+    double t = t_l;
+    int rc = G_OK, ev = 0;
+    CHECK(gcolor_scratch_uncleared(&w, c->scene->model, c->scratch)); /* written in full by the sampling */
+    CHECK(ev = medium_sample_distance(vol, t_l, uniform(p), uniform(p), &t, &w));
+    double nb = beta * gcolor_brightness(&w);
+    if (ev)
+        CHECK(medium_vertex(p, r, media, vol, gvec3_madd(r->o, r->d, t), depth, nb, out));
+    else if (!gcolor_is_black(&w))
+        CHECK(arrive(p, r, media, depth, nb, first, prev_pdf, from_medium, hp, lh, t_l, pdf_l, out));
+    else
+        CHECK(gcolor_fill(out, 0.0));
+    CHECK(gcolor_mul(out, out, &w));
+done:
+    gscratch_release(c->scratch, mark);
     return rc;
 }
 
@@ -368,7 +438,7 @@ static int path_radiance(PathCtx *p, const Ray *r, const Media *media, int depth
     const Scene *s = c->scene;
     Hit h;
     c->rays++;
-    int hit = accel_intersect(s, r, &h), rc = G_OK;
+    int hit = accel_intersect(s, r, &h);
     /* the nearest area light in front of the surface */
     const Light *lh = NULL;
     double t_l = hit ? h.t : INFINITY, pdf_l = 0.0;
@@ -380,7 +450,26 @@ static int path_radiance(PathCtx *p, const Ray *r, const Media *media, int depth
             lh = s->lights[i];
         }
     }
-    int first = depth == 0 || prev_delta;
+    int first = depth == 0 || prev_delta, from_medium = p->from_medium;
+    p->from_medium = 0;
+    const Medium *vol = medium_current(s, media);
+    if (vol) /* a participating medium along the ray: a scattering event before t_l, or the rest attenuated */
+        return medium_segment(p, r, media, vol, depth, beta, first, prev_pdf, from_medium, hit ? &h : NULL, lh, t_l,
+                              pdf_l, out);
+    return arrive(p, r, media, depth, beta, first, prev_pdf, from_medium, hit ? &h : NULL, lh, t_l, pdf_l, out);
+}
+
+/* The light arriving along r from what it meets at t_l: the area light lh (density pdf_l for NEE), else the surface
+ * of h, else the environment. */
+static int arrive(PathCtx *p, const Ray *r, const Media *media, int depth, double beta, int first, double prev_pdf,
+                  int from_medium, const Hit *hp, const Light *lh, double t_l, double pdf_l, GColor *out)
+{
+    TraceCtx *c = p->c;
+    const Scene *s = c->scene;
+    int hit = hp != NULL, rc = G_OK;
+    Hit h;
+    if (hit)
+        h = *hp;
     if (lh) {
         CHECK(gcolor_scale(out, &lh->color, first ? 1.0 : mis_power(prev_pdf, pdf_l)));
         const GMaterial *medium = media_top(media);
@@ -395,7 +484,7 @@ static int path_radiance(PathCtx *p, const Ray *r, const Media *media, int depth
         return rc;
     }
     if (!hit)
-        return escaped(p, r, first, prev_pdf, out);
+        return escaped(p, r, first, prev_pdf, from_medium, out);
     /* glowing geometry that NEE also reaches: its emission weighed against that strategy */
     double emit_weight = 1.0;
     if (c->emissive && !first && h.material && !(h.material->flags & GMAT_NO_EMISSION)) {

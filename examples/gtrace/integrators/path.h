@@ -23,4 +23,9 @@ int path_trace(TraceCtx *c, const Ray *r, const Media *media, uint64_t pixel, in
  * whether or not they are marked visible. */
 double area_light_hit(const Light *l, const Ray *r, double tmax, double *pdf);
 
+/** Draws a direction towards the sphere or rectangle light l from x with c's generator: 1 with the direction, the
+ * distance, the density in solid angle and the radiance L (storage given); 0 when the light offers none (another
+ * kind, x inside it); or a status. */
+int path_light_sample(TraceCtx *c, const Light *l, GVec3 x, GVec3 *in, double *dist, double *pdf, GColor *L);
+
 #endif

@@ -50,6 +50,9 @@ int light_transmit(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media
  * is reflected on its own. */
 int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 in, double dist,
                  const GColor *color, double scale, GVec3 out_dir, LightTmp *t, GColor *result);
+/** The spot light l's share of its intensity in the direction -in (in: from a point towards the light): 1 within
+ * the inner cone, 0 beyond the outer, smooth between. */
+double light_spot_factor(const Light *l, GVec3 in);
 /** The power heuristic (beta 2, lights.c): the multiple-importance weight of a strategy that drew a direction
  * with density a against one that would have drawn it with density b. */
 double mis_power(double a, double b);

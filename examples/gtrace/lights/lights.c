@@ -32,6 +32,7 @@
 #include "lighting.h"
 #include "scene/accel.h"
 #include "scene/ies.h"
+#include "media/medium.h"
 
 #include <generic/kit/material_kit.h>
 
@@ -116,6 +117,9 @@ int light_transmit(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media
             goto done;
         if (hp.from && (rc = gcolor_copy(light, &tmp)) < 0)
             goto done;
+        const Medium *vol = medium_current(s, &walk); /* a participating medium on the segment (media/medium.h) */
+        if (vol && (rc = medium_attenuate(vol, h.t, light, c->scratch)) < 0)
+            goto done;
         if ((rc = interface_transmit(&hp, dir, light, &nf, &nt, &ri, &tmp)) <= 0 || (rc = gcolor_copy(light, &tmp)) < 0)
             goto done;
         if (gcolor_is_black(light))
@@ -136,6 +140,9 @@ int light_transmit(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media
         if ((rc = gmaterial_absorption(last, sp, light, left, &tmp)) < 0 || (rc = gcolor_copy(light, &tmp)) < 0)
             goto done;
     }
+    const Medium *vol = medium_current(s, &walk);
+    if (vol && left > 0.0 && (rc = medium_attenuate(vol, left, light, c->scratch)) < 0)
+        goto done;
     *visible = 1;
 done:
     gscratch_release(c->scratch, mark);
@@ -170,7 +177,7 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
     c->rays++;
     int occluded = accel_occluded(s, &sr);
     const GMaterial *medium = NULL;
-    if (occluded == OCCLUDED_CLEAR) {
+    if (occluded == OCCLUDED_CLEAR && !s->has_media) { /* participating media: the walk below attenuates */
         medium = gvec3_dot(in, facing) >= 0.0 ? sp->from : sp->to;
         if (!medium || !isfinite(dist)) { /* the light arrives as it left */
             if (!t->gather)
@@ -180,12 +187,12 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
             t->gathered_any = 1;
             return gcolor_add_scaled(&t->gathered, color, (float)(scale * cos_in));
         }
-    } else if (t->blocked || occluded == OCCLUDED_OPAQUE) {
+    } else if (occluded != OCCLUDED_CLEAR && (t->blocked || occluded == OCCLUDED_OPAQUE)) {
         return G_OK; /* the walk below would end at that surface */
     }
     if (t->gather && (rc = gcolor_scale(illum, color, scale)) < 0) /* the light itself, which gathering skipped */
         return rc;
-    if (occluded == OCCLUDED_CLEAR) { /* the medium absorbs the reflected light: this sample on its own */
+    if (occluded == OCCLUDED_CLEAR && !s->has_media) { /* the medium absorbs the reflected light: this sample alone */
         if ((t->gather && (rc = gmaterial_reflection(sp->material, sp, in, illum, out_dir, refl)) < 0) ||
             (rc = gmaterial_absorption(medium, sp, refl, dist, tmp)) < 0 || (rc = gcolor_copy(refl, tmp)) < 0)
             return rc;
@@ -230,6 +237,11 @@ static double smoothstep(double a, double b, double x)
         return x >= b ? 1.0 : 0.0;
     double t = gfmin(1.0, gfmax(0.0, (x - a) / (b - a)));
     return t * t * (3.0 - 2.0 * t);
+}
+
+double light_spot_factor(const Light *l, GVec3 in)
+{
+    return smoothstep(l->cos_outer, l->cos_inner, -gvec3_dot(in, l->direction));
 }
 
 double mis_power(double a, double b)

@@ -36,6 +36,7 @@ void scene_destroy(Scene *s)
     }
     gmem_free(s->objects);
     gmem_free(s->lights);
+    gmem_free(s->interiors);
     gcolor_free(&s->background);
     gcolor_free(&s->ambient);
     gmaterial_unref(s->medium);

@@ -14,6 +14,13 @@
 #include <generic/reader.h>
 
 struct ProbeEnv;
+struct Medium;
+
+/** A material whose objects bound a participating medium (an object's `interior`, media/medium.h). */
+typedef struct MediumBinding {
+    const GMaterial *material;
+    const struct Medium *medium;
+} MediumBinding;
 /* Embree's handle types: RTCDevice and RTCScene are pointers to these, so the scene holds them without
  * including Embree (only accel.c does). */
 struct RTCDeviceTy;
@@ -49,6 +56,10 @@ typedef struct Scene {
     int accel_embree_only;  /**< set before accel_build: trace through Embree even when the direct list would do */
     int accel_threads;      /**< set before accel_build: threads Embree may build with (0: all processors) */
     const struct ProbeEnv *env; /**< light probe seen by rays that leave the scene (NULL: background) */
+    const struct Medium *atmosphere; /**< the participating medium outside every object (NULL: none; borrowed) */
+    MediumBinding *interiors;        /**< the materials that bound a medium (heap), ninteriors of them */
+    int ninteriors;
+    int has_media;                   /**< an atmosphere or an interior: the integrators look for media */
 } Scene;
 
 /** An empty scene in the given colour model (not owned; set owned_model to hand one over). */

@@ -13,6 +13,7 @@
  *   object NAME? triangle { a P b Q c R ... }                 (u,v) the barycentrics of Q and R
  *   object NAME? group    { OBJECT OBJECT ... transform { ... } }   members become prototypes
  *   object NAME? instance { of OBJECT transform { ... } material M }  M (optional) overrides
+ *   (any shape: interior MEDIUM, the participating medium inside it, media/medium.c)
  *   transform { scale S | scale <x,y,z> | rotate <ax,ay,az> | rotate_axis <axis> DEG | translate <x,y,z> ... }
  *   light point       { position P intensity COLOR }
  *   light directional { direction D irradiance COLOR }
@@ -26,7 +27,7 @@
  *   light probe       { file "x.hdr" technique T count N samples S rotate <x,y,z> scale K ... }
  *                     image-based lighting from an HDR probe (probe_light.c)
  *   camera pinhole    { from P at Q up U fov DEG width W height H spp N depth D cutoff W exposure STOPS bands K
- *                       medium M }
+ *                       medium M atmosphere MEDIUM }   atmosphere: the participating medium outside every object
  *   camera thinlens   { ...pinhole's... aperture A focus_distance F }
  *   camera orthographic { from P at Q up U size S width W height H ... }  (no fov)
  *   (any camera: frame MARGIN fits the view to the scene's bounds, camera_frame)
@@ -37,6 +38,7 @@
 #include "param_tables.h"
 #include "geometry/geometry.h"
 #include "scene/ies.h"
+#include "media/medium.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -104,14 +106,14 @@ static const ShapeKind shape_kinds[] = {SHAPE_SPHERE, SHAPE_PLANE,    SHAPE_BOX,
                                         SHAPE_MESH,   SHAPE_QUAD,     SHAPE_TRIANGLE, SHAPE_GROUP, SHAPE_INSTANCE};
 #define NSHAPE_TYPES ((int)(sizeof shape_kinds / sizeof shape_kinds[0]))
 static const char *const shape_params[] = {
-    "center, radius, material, transform",
-    "point, normal, material, transform",
-    "min, max, material, transform",
-    "center, normal, radius, material, transform",
-    "base, top, radius, open, material, transform",
-    "file, material, transform",
-    "corner, edge1, edge2, material, transform",
-    "a, b, c, material, transform",
+    "center, radius, material, interior, transform",
+    "point, normal, material, interior, transform",
+    "min, max, material, interior, transform",
+    "center, normal, radius, material, interior, transform",
+    "base, top, radius, open, material, interior, transform",
+    "file, material, interior, transform",
+    "corner, edge1, edge2, material, interior, transform",
+    "a, b, c, material, interior, transform",
     "",
     "of, material, transform",
 };
@@ -251,6 +253,10 @@ int scene_parse_object(GReader *r, const void *vtable, void **object, GError *er
             rc = greader_vec3(r, &pc, err);
         } else if (strcmp(key, "of") == 0 && kind == SHAPE_INSTANCE) {
             rc = read_object(r, &proto, err);
+        } else if (strcmp(key, "interior") == 0 && kind != SHAPE_INSTANCE) {
+            void *med = NULL;
+            if ((rc = greader_object(r, gtrace_kind_medium, &med, NULL, err)) == G_OK)
+                o->interior = med;
         } else {
             rc = greader_unknown_param(r, shape_params[kind], err);
         }
@@ -488,9 +494,9 @@ static void destroy_light(void *p) { light_free(p); }
 /* ---- camera ---- */
 
 static const char *const camera_params[] = {
-    "from, at, up, fov, frame, width, height, spp, depth, cutoff, exposure, medium, bands",
-    "from, at, up, fov, frame, aperture, focus_distance, width, height, spp, depth, cutoff, exposure, medium, bands",
-    "from, at, up, size, frame, width, height, spp, depth, cutoff, exposure, medium, bands",
+    "from, at, up, fov, frame, width, height, spp, depth, cutoff, exposure, medium, atmosphere, bands",
+    "from, at, up, fov, frame, aperture, focus_distance, width, height, spp, depth, cutoff, exposure, medium, atmosphere, bands",
+    "from, at, up, size, frame, width, height, spp, depth, cutoff, exposure, medium, atmosphere, bands",
 };
 
 int scene_parse_camera(GReader *r, const void *vtable, void **object, GError *err)
@@ -535,6 +541,11 @@ int scene_parse_camera(GReader *r, const void *vtable, void **object, GError *er
             rc = greader_number_in(r, 0.0, 1.0, &c->cutoff, err);
         else if (strcmp(key, "medium") == 0)
             rc = greader_material(r, &c->medium, err);
+        else if (strcmp(key, "atmosphere") == 0) {
+            void *med = NULL;
+            if ((rc = greader_object(r, gtrace_kind_medium, &med, NULL, err)) == G_OK)
+                c->atmosphere = med;
+        }
         else if (strcmp(key, "bands") == 0)
             rc = (rc = greader_int(r, 1, BANDS_LIMIT, &v, err)) < 0 ? rc : (c->bands = (int)v, 0);
         else
@@ -607,6 +618,8 @@ _Static_assert(sizeof camera_names / sizeof *camera_names == SCENE_CAMERA_TYPES,
 int gtrace_register_types(GError *err)
 {
     int rc = gtrace_register_kinds(err);
+    if (rc == G_OK)
+        rc = media_register_types(err);
     for (int i = 0; i < NSHAPE_TYPES && rc == G_OK; i++) {
         GTypeInfo t = {.kind = gtrace_kind_object, .name = shape_names[i], .vtable = &shape_kinds[i],
                        .parse = scene_parse_object, .summary = shape_summaries[i], .destroy = destroy_object,

@@ -2,6 +2,7 @@
  * scene file. */
 #include "integrators/bands.h"
 #include "parse.h"
+#include "media/medium.h"
 #include "param_tables.h"
 #include "geometry/geometry.h"
 #include <math.h>
@@ -94,6 +95,7 @@ int scene_from_library(GLibrary *lib, const char *name, Scene **out, GError *err
             s->camera = *c;
             s->have_camera = 1;
             s->medium = gmaterial_ref(c->medium);
+            s->atmosphere = c->atmosphere;
             if (c->frame >= 0.0)
                 rc = frame_camera(s, name, err);
         } else {
@@ -101,6 +103,8 @@ int scene_from_library(GLibrary *lib, const char *name, Scene **out, GError *err
                             t ? t->name : "?");
         }
     }
+    if (rc == G_OK)
+        rc = media_bind_scene(s, name, err);
     if (rc < 0) {
         scene_destroy(s);
         return rc;

@@ -1,0 +1,63 @@
+/* medium.h - participating media (medium.c): the kind `medium`, its type homogeneous, where a ray is inside one
+ * (an object's `interior`, the camera's `atmosphere`), and what the integrators ask of one: transmittance and
+ * free-flight sampling with one-sample spectral MIS, so that a medium whose coefficients differ between the
+ * colour model's bands converges in every model. */
+#ifndef GTRACE_MEDIUM_H
+#define GTRACE_MEDIUM_H
+
+#include "phase.h"
+#include "trace/trace.h"
+
+#include <generic/color.h>
+#include <generic/error.h>
+#include <generic/memory.h>
+#include <generic/registry.h>
+
+/** Largest extinction coefficient accepted (per scene unit, after `scale`): beyond it a medium is a surface. */
+#define MEDIUM_MAX_SIGMA 1e9
+
+/** A homogeneous medium: coefficients in the scene's colour model (vectors, >= 0 in every band), a phase
+ * function (borrowed from the library that loaded it). */
+typedef struct Medium {
+    GColor sigma_a, sigma_s, sigma_t; /**< absorption, scattering, extinction = their sum (scaled) */
+    const Phase *phase;
+    int bands;                        /**< the model's bands */
+    int scatters;                     /**< sigma_s is not black */
+} Medium;
+
+/** The kind `medium`, numbered by media_register (GKIND_MAX before). */
+extern GKind gtrace_kind_medium;
+/** Registers the kinds `phase` and `medium` (idempotent). */
+int media_register_kinds(GError *err);
+/** Registers the kinds and their types: phase isotropic and hg, medium homogeneous (idempotent). */
+int media_register_types(GError *err);
+
+/** The medium a ray with this stack of materials travels in: the interior of the top material when an object of
+ * that material declared one, the scene's atmosphere when the stack is empty or holds only the camera's medium
+ * material, else none (NULL). */
+const Medium *medium_current(const Scene *s, const Media *media);
+
+/** Fills the scene's media from its objects' interiors and its atmosphere (set from the camera): the bindings of
+ * materials to media, has_media. G_ERR_INVALID (naming the scene) when one material bounds two different media. */
+int media_bind_scene(Scene *s, const char *name, GError *err);
+
+/** light *= the medium's transmittance exp(-sigma_t d) over d (INFINITY: zero where sigma_t > 0), in place; a
+ * temporary from scratch, released before it returns. */
+int medium_attenuate(const Medium *m, double d, GColor *light, GScratch *scratch);
+
+/** Free-flight sampling along a ray within (0, tmax) (tmax may be INFINITY): a band is chosen uniformly with
+ * u_band and a distance drawn from its exponential with u_dist; the density is the mean of every band's
+ * (one-sample MIS with the balance heuristic). Returns 1 for a scattering event at *t, with weight = the
+ * transmittance to it times sigma_s over that density; 0 when the ray reaches tmax, with weight = the
+ * transmittance over the probability of passing; weight must have storage of the model. A medium that does not
+ * scatter draws nothing: 0 with weight = the transmittance to tmax. */
+int medium_sample_distance(const Medium *m, double tmax, double u_band, double u_dist, double *t, GColor *weight);
+
+/** Adds to out the light of every light source scattered at x (in the medium vol, which media describes) from the
+ * ray direction d towards -d (medium_light.c): one sample per light, through light_transmit (absorption and media
+ * along the way; a sphere or rectangle light, which phase sampling also reaches, blocked by any surface and weighted
+ * by the power heuristic against the phase function's density); glowing geometry likewise, one sample. A light probe
+ * is not sampled here (phase sampling reaches it). */
+int medium_direct_light(TraceCtx *c, const Medium *vol, const Media *media, GVec3 x, GVec3 d, GColor *out);
+
+#endif
