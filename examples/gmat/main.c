@@ -422,7 +422,7 @@ static int types(int argc, char **argv)
 }
 
 /* The kinds of a gtrace scene's entries, registered without types: gmat reads a scene's materials, and `gmat list`
- * reads past its objects, lights and camera. */
+ * reads past its objects, lights, camera, media and phase functions. */
 static GKind scene_kinds[5];
 
 static int register_scene_kinds(GError *err)
@@ -562,7 +562,9 @@ static int gmat_main(int argc, char **argv)
         return rc;
     int listing = strcmp(a.cmd, "list") == 0;
     /* a listed scene's entries that only gtrace knows are skipped */
-    unsigned skip = listing ? 1u << scene_kinds[0] | 1u << scene_kinds[1] | 1u << scene_kinds[2] : 0;
+    unsigned skip = 0;
+    for (int k = 0; listing && k < 5; k++)
+        skip |= 1u << scene_kinds[k];
     GLibrary *lib;
     if (gmat_read(a.file, &trust, a.colormodel, a.step, skip, &lib, &err) != G_OK) {
         fprintf(stderr, "gmat: %s\n", err.message);

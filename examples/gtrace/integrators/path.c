@@ -43,6 +43,13 @@
  * sampled with that group's index, and a transmitted sample keeps only the group's light (its mask) times
  * the number of groups, and carries the group on (later interfaces refract with its index, as whitted.c).
  *
+ * Participating media (media/medium.h): where the stack of media puts the ray in a medium, medium_segment draws a
+ * free-flight distance (one band chosen, all bands' densities averaged: spectral MIS) before what the ray meets;
+ * a scattering event there is a medium vertex (medium_vertex: NEE through medium_light.c's medium_direct_light, one
+ * direction drawn from the phase function, whose density is the MIS weight's for the lights that ray meets), else
+ * the ray goes on to arrive() and the sample's weight (transmittance over probability) multiplies what comes back.
+ * The shadow rays of every vertex are attenuated by the media they cross (TraceCtx.volumes).
+ *
  * Random numbers: the thread's PCG32 generator (TraceCtx.rng, which lights.c and probe_sample.c draw from
  * too), re-seeded for each path from the pixel's index and the sample's index and restored afterwards, so the
  * image does not depend on the thread count or tile order. Colours only through gcolor_*, materials only through
@@ -54,6 +61,7 @@
 #include "lights/emissive.h"
 #include "lights/lighting.h"
 #include "lights/probe_env.h"
+#include "medium_light.h"
 #include "media/medium.h"
 
 #include <math.h>
@@ -364,7 +372,7 @@ done:
     return rc;
 }
 
-/* The light scattered towards -r->d at x in medium vol: NEE (media/medium_light.c) and one direction drawn from
+/* The light scattered towards -r->d at x in medium vol: NEE (medium_light.c) and one direction drawn from
  * the phase function, traced on (its density is prev_pdf there, for the MIS weight of a light it reaches). */
 static int medium_vertex(PathCtx *p, const Ray *r, const Media *media, const Medium *vol, GVec3 x, int depth,
                          double beta, GColor *out)
@@ -522,10 +530,12 @@ int path_trace(TraceCtx *c, const Ray *r, const Media *media, uint64_t pixel, in
             p.env_light = l;
     }
     p.env_in_lights = env && env->nlights > 0 && env->lights[0]->kind == LIGHT_DIRECTIONAL;
-    int saved = c->band;
+    int saved = c->band, volumes = c->volumes;
     c->band = -1;
+    c->volumes = s->has_media;
     int rc = path_radiance(&p, r, media, 0, 1.0, 0, 0.0, out);
     c->band = saved;
+    c->volumes = volumes;
     c->rng = camera_rng;
     return rc;
 }

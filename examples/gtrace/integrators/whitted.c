@@ -17,6 +17,8 @@
  * weight of the path so far, is the most the ray can contribute to its pixel per unit of radiance, and
  * rays below the cutoff are not traced (the glass sphere's internal reflections die out after a few
  * bounces instead of branching to the depth limit).
+ * Participating media (`medium`, an object's `interior`, the camera's `atmosphere`: media/medium.h) are the path
+ * tracer's: this tracer keeps only the materials' Beer absorption and renders a scene's media as vacuum.
  * Colours only through gcolor_*, materials only through gmaterial_*; temporaries live on the thread's
  * scratch arena and are released before returning. */
 #include "whitted.h"

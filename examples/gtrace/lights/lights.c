@@ -117,7 +117,7 @@ int light_transmit(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media
             goto done;
         if (hp.from && (rc = gcolor_copy(light, &tmp)) < 0)
             goto done;
-        const Medium *vol = medium_current(s, &walk); /* a participating medium on the segment (media/medium.h) */
+        const Medium *vol = c->volumes ? medium_current(s, &walk) : NULL; /* a participating medium (medium.h) */
         if (vol && (rc = medium_attenuate(vol, h.t, light, c->scratch)) < 0)
             goto done;
         if ((rc = interface_transmit(&hp, dir, light, &nf, &nt, &ri, &tmp)) <= 0 || (rc = gcolor_copy(light, &tmp)) < 0)
@@ -140,7 +140,7 @@ int light_transmit(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media
         if ((rc = gmaterial_absorption(last, sp, light, left, &tmp)) < 0 || (rc = gcolor_copy(light, &tmp)) < 0)
             goto done;
     }
-    const Medium *vol = medium_current(s, &walk);
+    const Medium *vol = c->volumes ? medium_current(s, &walk) : NULL;
     if (vol && left > 0.0 && (rc = medium_attenuate(vol, left, light, c->scratch)) < 0)
         goto done;
     *visible = 1;
@@ -177,7 +177,7 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
     c->rays++;
     int occluded = accel_occluded(s, &sr);
     const GMaterial *medium = NULL;
-    if (occluded == OCCLUDED_CLEAR && !s->has_media) { /* participating media: the walk below attenuates */
+    if (occluded == OCCLUDED_CLEAR && !c->volumes) { /* participating media: the walk below attenuates */
         medium = gvec3_dot(in, facing) >= 0.0 ? sp->from : sp->to;
         if (!medium || !isfinite(dist)) { /* the light arrives as it left */
             if (!t->gather)
@@ -192,7 +192,7 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
     }
     if (t->gather && (rc = gcolor_scale(illum, color, scale)) < 0) /* the light itself, which gathering skipped */
         return rc;
-    if (occluded == OCCLUDED_CLEAR && !s->has_media) { /* the medium absorbs the reflected light: this sample alone */
+    if (occluded == OCCLUDED_CLEAR && !c->volumes) { /* the medium absorbs the reflected light: this sample alone */
         if ((t->gather && (rc = gmaterial_reflection(sp->material, sp, in, illum, out_dir, refl)) < 0) ||
             (rc = gmaterial_absorption(medium, sp, refl, dist, tmp)) < 0 || (rc = gcolor_copy(refl, tmp)) < 0)
             return rc;

@@ -53,11 +53,4 @@ int medium_attenuate(const Medium *m, double d, GColor *light, GScratch *scratch
  * scatter draws nothing: 0 with weight = the transmittance to tmax. */
 int medium_sample_distance(const Medium *m, double tmax, double u_band, double u_dist, double *t, GColor *weight);
 
-/** Adds to out the light of every light source scattered at x (in the medium vol, which media describes) from the
- * ray direction d towards -d (medium_light.c): one sample per light, through light_transmit (absorption and media
- * along the way; a sphere or rectangle light, which phase sampling also reaches, blocked by any surface and weighted
- * by the power heuristic against the phase function's density); glowing geometry likewise, one sample. A light probe
- * is not sampled here (phase sampling reaches it). */
-int medium_direct_light(TraceCtx *c, const Medium *vol, const Media *media, GVec3 x, GVec3 d, GColor *out);
-
 #endif

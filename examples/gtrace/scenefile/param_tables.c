@@ -4,6 +4,9 @@
 #include "param_tables.h"
 
 #define P_MATERIAL {"material", GPARAM_NAMED, "material", NULL, NULL, "the surface's material"}
+#define P_INTERIOR                                                                                                     \
+    {"interior", GPARAM_NAMED, "medium", "none", NULL,                                                                 \
+     "the participating medium inside (path integrator; it belongs to the object's material)"}
 #define P_TRANSFORM                                                                                                  \
     {"transform", GPARAM_NAMED, "block", "none",                                                                     \
      "{ translate <x, y, z>  rotate <ax, ay, az>  rotate_axis <axis> DEG  scale S | <x, y, z> ... }",               \
@@ -12,47 +15,47 @@
 static const GParamInfo sphere_params[] = {
     P_VEC("center", "<0, 0, 0>", "the centre"),
     {"radius", GPARAM_NAMED, "number", "1", "[1e-12, 1e30]", "the radius"},
-    P_MATERIAL, P_TRANSFORM, {NULL},
+    P_MATERIAL, P_INTERIOR, P_TRANSFORM, {NULL},
 };
 static const GParamInfo plane_params[] = {
     P_VEC("point", "<0, 0, 0>", "a point of the plane"),
     P_VEC("normal", "<0, 1, 0>", "the normal (not zero); the plane is bounded at 1e5 units"),
-    P_MATERIAL, P_TRANSFORM, {NULL},
+    P_MATERIAL, P_INTERIOR, P_TRANSFORM, {NULL},
 };
 static const GParamInfo box_params[] = {
     P_VEC("min", "<-1, -1, -1>", "the corner with the smallest coordinates"),
     P_VEC("max", "<1, 1, 1>", "the opposite corner"),
-    P_MATERIAL, P_TRANSFORM, {NULL},
+    P_MATERIAL, P_INTERIOR, P_TRANSFORM, {NULL},
 };
 static const GParamInfo disc_params[] = {
     P_VEC("center", "<0, 0, 0>", "the centre"),
     P_VEC("normal", "<0, 1, 0>", "the normal (not zero)"),
     {"radius", GPARAM_NAMED, "number", "1", "[1e-12, 1e30]", "the radius"},
-    P_MATERIAL, P_TRANSFORM, {NULL},
+    P_MATERIAL, P_INTERIOR, P_TRANSFORM, {NULL},
 };
 static const GParamInfo cylinder_params[] = {
     P_VEC("base", "<0, 0, 0>", "the centre of the base (surface 1)"),
     P_VEC("top", "<0, 1, 0>", "the centre of the top (surface 2)"),
     {"radius", GPARAM_NAMED, "number", "1", "[1e-12, 1e30]", "the radius"},
     {"open", GPARAM_NAMED, "bool", "no", NULL, "yes: the side (surface 0) without the caps"},
-    P_MATERIAL, P_TRANSFORM, {NULL},
+    P_MATERIAL, P_INTERIOR, P_TRANSFORM, {NULL},
 };
 static const GParamInfo mesh_params[] = {
     {"file", GPARAM_NAMED, "path", NULL, ".obj, .ply, .gltf, .glb",
      "the mesh; an OBJ's usemtl and g number the surfaces"},
-    P_MATERIAL, P_TRANSFORM, {NULL},
+    P_MATERIAL, P_INTERIOR, P_TRANSFORM, {NULL},
 };
 static const GParamInfo quad_params[] = {
     P_VEC("corner", "<0, 0, 0>", "the corner P: the quad is P + u edge1 + v edge2, (u, v) in [0, 1]^2"),
     P_VEC("edge1", "<1, 0, 0>", "the edge along u"),
     P_VEC("edge2", "<0, 1, 0>", "the edge along v (the normal is edge1 x edge2)"),
-    P_MATERIAL, P_TRANSFORM, {NULL},
+    P_MATERIAL, P_INTERIOR, P_TRANSFORM, {NULL},
 };
 static const GParamInfo triangle_params[] = {
     P_VEC("a", "<0, 0, 0>", "the first corner: the point is a + u (b - a) + v (c - a)"),
     P_VEC("b", "<1, 0, 0>", "the second corner"),
     P_VEC("c", "<0, 1, 0>", "the third corner (the normal is (b - a) x (c - a))"),
-    P_MATERIAL, P_TRANSFORM, {NULL},
+    P_MATERIAL, P_INTERIOR, P_TRANSFORM, {NULL},
 };
 static const GParamInfo group_params[] = {
     {"OBJECT", GPARAM_POSITIONAL, "object", NULL, "a nested object entry or the name of one, at least one",
@@ -148,6 +151,8 @@ const GParamInfo *const scene_light_tables[SCENE_LIGHT_TYPES] = {point_params,  
     {"exposure", GPARAM_NAMED, "number", "0", "[-30, 30]", "stops applied to display-encoded output (.png, .jpg)"},   \
     {"medium", GPARAM_NAMED, "material", "none (vacuum)", NULL,                                                       \
      "the material the camera sits in (its absorption applies along every ray in it)"},                              \
+    {"atmosphere", GPARAM_NAMED, "medium", "none", NULL,                                                               \
+     "the participating medium outside every object (path integrator)"},                                               \
     {"bands", GPARAM_NAMED, "integer", "16", "[1, 1024]",                                                             \
      "the most wavelength groups a dispersive refraction splits into (1: no dispersion)"}
 #define P_FOV {"fov", GPARAM_NAMED, "number", "40", "[0.01, 179]", "the vertical field of view, in degrees"}

@@ -608,7 +608,9 @@ int gtrace_register_kinds(GError *err)
     int rc = gregistry_add_kind(&objects, &gtrace_kind_object, err);
     if (rc == G_OK)
         rc = gregistry_add_kind(&lights, &gtrace_kind_light, err);
-    return rc == G_OK ? gregistry_add_kind(&cameras, &gtrace_kind_camera, err) : rc;
+    if (rc == G_OK)
+        rc = gregistry_add_kind(&cameras, &gtrace_kind_camera, err);
+    return rc == G_OK ? media_register_kinds(err) : rc;
 }
 
 _Static_assert(sizeof shape_names / sizeof *shape_names == SCENE_SHAPE_TYPES, "a table for every shape");

@@ -16,7 +16,8 @@ extern GKind gtrace_kind_object, gtrace_kind_light, gtrace_kind_camera;
 int scene_parse_object(GReader *r, const void *vtable, void **object, GError *err);
 int scene_parse_light(GReader *r, const void *vtable, void **object, GError *err);
 int scene_parse_camera(GReader *r, const void *vtable, void **object, GError *err);
-/** Registers the kinds object, light and camera with the registry (idempotent). */
+/** Registers the kinds object, light and camera, and media/medium.h's medium and phase, with the registry
+ * (idempotent). */
 int gtrace_register_kinds(GError *err);
 /** Registers the kinds and the object, light and camera types with the registry (idempotent). */
 int gtrace_register_types(GError *err);

@@ -4,8 +4,8 @@
  * rectangle lights and glowing geometry, which the phase-sampled ray also reaches, follow the path tracer's rule:
  * any surface blocks their shadow ray, and the sample is weighted by the power heuristic against the phase
  * function's density (path.c weighs the light that phase sampling meets against theirs). */
-#include "medium.h"
-#include "integrators/path.h"
+#include "medium_light.h"
+#include "path.h"
 #include "lights/emissive.h"
 #include "lights/lighting.h"
 #include "scene/accel.h"

@@ -1,0 +1,16 @@
+/* medium_light.h - next-event estimation at a scattering event in a participating medium (medium_light.c), for the
+ * path tracer's medium vertices. */
+#ifndef GTRACE_MEDIUM_LIGHT_H
+#define GTRACE_MEDIUM_LIGHT_H
+
+#include "media/medium.h"
+#include "trace/trace.h"
+
+/** Adds to out the light of every light source scattered at x (in the medium vol, which media describes) from the
+ * ray direction d towards -d: one sample per light, through light_transmit (absorption and media
+ * along the way; a sphere or rectangle light, which phase sampling also reaches, blocked by any surface and weighted
+ * by the power heuristic against the phase function's density); glowing geometry likewise, one sample. A light probe
+ * is not sampled here (phase sampling reaches it). */
+int medium_direct_light(TraceCtx *c, const Medium *vol, const Media *media, GVec3 x, GVec3 d, GColor *out);
+
+#endif
