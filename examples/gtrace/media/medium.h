@@ -1,4 +1,4 @@
-/* medium.h - participating media (medium.c): the kind `medium`, its type homogeneous, where a ray is inside one
+/* medium.h - participating media (medium.c at render time, medium_parse.c for the entries): the kind `medium`, its type homogeneous, where a ray is inside one
  * (an object's `interior`, the camera's `atmosphere`), and what the integrators ask of one: transmittance and
  * free-flight sampling with one-sample spectral MIS, so that a medium whose coefficients differ between the
  * colour model's bands converges in every model. */
@@ -6,12 +6,14 @@
 #define GTRACE_MEDIUM_H
 
 #include "phase.h"
-#include "trace/trace.h"
 
 #include <generic/color.h>
 #include <generic/error.h>
 #include <generic/memory.h>
 #include <generic/registry.h>
+
+struct Scene;
+struct Media;
 
 /** Largest extinction coefficient accepted (per scene unit, after `scale`): beyond it a medium is a surface. */
 #define MEDIUM_MAX_SIGMA 1e9
@@ -35,11 +37,11 @@ int media_register_types(GError *err);
 /** The medium a ray with this stack of materials travels in: the interior of the top material when an object of
  * that material declared one, the scene's atmosphere when the stack is empty or holds only the camera's medium
  * material, else none (NULL). */
-const Medium *medium_current(const Scene *s, const Media *media);
+const Medium *medium_current(const struct Scene *s, const struct Media *media);
 
 /** Fills the scene's media from its objects' interiors and its atmosphere (set from the camera): the bindings of
  * materials to media, has_media. G_ERR_INVALID (naming the scene) when one material bounds two different media. */
-int media_bind_scene(Scene *s, const char *name, GError *err);
+int media_bind_scene(struct Scene *s, const char *name, GError *err);
 
 /** light *= the medium's transmittance exp(-sigma_t d) over d (INFINITY: zero where sigma_t > 0), in place; a
  * temporary from scratch, released before it returns. */

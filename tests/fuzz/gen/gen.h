@@ -10,7 +10,8 @@
  *                (and, for the probe kind, HDR and PFM only, with probe-like aspect ratios)
  *   gen_mesh.c   glTF nested deeply (JSON, nodes), node DAGs, lying accessors and .glb chunks, renamed PLY
  *                (gtrace's meshes: tests/fuzz/run_mesh_generated.sh)
- *   gen_ies.c    IES LM-63 files: lying counts, truncation, NaN and words, bad angle tables, long headers */
+ *   gen_ies.c    IES LM-63 files: lying counts, truncation, NaN and words, bad angle tables, long headers
+ *   gen_medium.c gtrace's medium and phase entries: bounds crossed, references, long chains */
 #ifndef GENERIC_TESTS_FUZZ_GEN_H
 #define GENERIC_TESTS_FUZZ_GEN_H
 
@@ -78,5 +79,7 @@ extern const GenFamily gen_mesh_families[];
 extern const int gen_mesh_count;
 extern const GenFamily gen_ies_families[];
 extern const int gen_ies_count;
+extern const GenFamily gen_medium_families[];
+extern const int gen_medium_count;
 
 #endif

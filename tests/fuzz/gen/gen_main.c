@@ -2,7 +2,7 @@
  *
  *   fuzz_gen KIND SEED COUNT DIR [BUDGET]
  *
- * KIND is reader, bfc, image, probe or ies (the targets of tests/fuzz/), or mesh (gtrace's meshes, run by
+ * KIND is reader, bfc, image, probe, ies or medium (the targets of tests/fuzz/), or mesh (gtrace's meshes, run by
  * tests/fuzz/run_mesh_generated.sh); input i is DIR/NNN-FAMILY.EXT. The first
  * inputs take each family once at the full BUDGET (bytes, default 4 MiB), the rest a random family at a
  * log-uniform size up to it. Input i depends only on (KIND, SEED, i, BUDGET), so one failing input is
@@ -25,11 +25,12 @@ static const struct {
     {"probe", gen_probe_families, &gen_probe_count},
     {"mesh", gen_mesh_families, &gen_mesh_count},
     {"ies", gen_ies_families, &gen_ies_count},
+    {"medium", gen_medium_families, &gen_medium_count},
 };
 
 static int usage(void)
 {
-    fprintf(stderr, "usage: fuzz_gen reader|bfc|image|probe|mesh|ies SEED COUNT DIR [BUDGET_BYTES]\n");
+    fprintf(stderr, "usage: fuzz_gen reader|bfc|image|probe|mesh|ies|medium SEED COUNT DIR [BUDGET_BYTES]\n");
     return 2;
 }
 
