@@ -112,9 +112,9 @@ static int parse_homogeneous(GReader *r, const void *vtable, void **object, GErr
 }
 
 static const GParamInfo homogeneous_params[] = {
-    {"sigma_a", GPARAM_NAMED, "colour", "0", ">= 0 per band",
+    {"sigma_a", GPARAM_NAMED, "color", "0", ">= 0 per band",
      "the absorption coefficient per scene unit (a transmittance exp(-sigma_a d) without scattering)"},
-    {"sigma_s", GPARAM_NAMED, "colour", "0", ">= 0 per band",
+    {"sigma_s", GPARAM_NAMED, "color", "0", ">= 0 per band",
      "the scattering coefficient per scene unit (albedo sigma_s / (sigma_a + sigma_s))"},
     {"phase", GPARAM_NAMED, "phase", "isotropic", "a phase entry: isotropic, hg { g G }",
      "the distribution of scattered directions"},
