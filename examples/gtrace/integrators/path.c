@@ -44,7 +44,7 @@
  * the number of groups, and carries the group on (later interfaces refract with its index, as whitted.c).
  *
  * Participating media (media/medium.h): where the stack of media puts the ray in a medium, medium_segment draws a
- * free-flight distance (one band chosen, all bands' densities averaged: spectral MIS) before what the ray meets;
+ * free-flight distance (one band chosen, all bands' densities averaged: MIS over the bands) before what the ray meets;
  * a scattering event there is a medium vertex (medium_vertex: NEE through medium_light.c's medium_direct_light, one
  * direction drawn from the phase function, whose density is the MIS weight's for the lights that ray meets), else
  * the ray goes on to arrive() and the sample's weight (transmittance over probability) multiplies what comes back.

@@ -6,9 +6,9 @@
  *
  * Free flight (medium_sample_distance): the bands of the model differ in extinction, so no one exponential is
  * right for all of them. A band j is chosen uniformly and a distance drawn from sigma_t[j] exp(-sigma_t[j] t); the
- * sample is weighted with the mean density of all bands (the balance heuristic over the bands' strategies, "spectral
- * MIS", Wilkie et al. 2014 "Hero wavelength spectral sampling"): the estimate of every band stays unbiased and none
- * has unbounded weight, in an RGB model (3 bands) as in a spectral one (tens). */
+ * sample is weighted with the mean density of all bands (the balance heuristic over the bands' strategies: multiple
+ * importance sampling over the wavelengths, Wilkie et al. 2014 "Hero wavelength sampling"): the estimate of every band
+ * stays unbiased and none has unbounded weight, in a model of 3 bands as in one of tens. */
 #include "medium.h"
 #include "trace/trace.h"
 

@@ -61,11 +61,11 @@ static double hg_sample(const Phase *self, GVec3 in, double u1, double u2, GVec3
 static const PhaseClass isotropic_class = {iso_eval, iso_sample};
 static const PhaseClass hg_class = {hg_eval, hg_sample};
 
-double phase_eval(const Phase *phase, GVec3 in, GVec3 out) { return phase->cls->eval(phase, in, out); }
+double phase_eval(const Phase *phase, GVec3 in, GVec3 out) { return phase->kind->eval(phase, in, out); }
 
 double phase_sample(const Phase *phase, GVec3 in, double u1, double u2, GVec3 *out)
 {
-    return phase->cls->sample(phase, in, u1, u2, out);
+    return phase->kind->sample(phase, in, u1, u2, out);
 }
 
 const Phase *phase_isotropic(void)
@@ -80,7 +80,7 @@ static int parse_phase(GReader *r, const void *vtable, void **object, GError *er
     Phase *ph = gmem_calloc(1, sizeof *ph);
     if (!ph)
         return greader_error(r, err, "out of memory");
-    ph->cls = cls;
+    ph->kind = cls;
     const char *key;
     int rc;
     while ((rc = greader_param(r, &key, err)) > 0) {

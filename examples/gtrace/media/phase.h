@@ -19,15 +19,15 @@ typedef struct PhaseClass {
     double (*sample)(const struct Phase *self, GVec3 in, double u1, double u2, GVec3 *out);
 } PhaseClass;
 
-/** A phase function: its class first (a type's own fields follow in its object). */
+/** A phase function: its class (kind) first (a type's own fields follow in its object). */
 typedef struct Phase {
-    const PhaseClass *cls;
+    const PhaseClass *kind;
     double g; /**< Henyey-Greenstein's mean cosine (0 for isotropic) */
 } Phase;
 
-/** The density of out given in (phase->cls->eval). */
+/** The density of out given in (phase->kind->eval). */
 double phase_eval(const Phase *phase, GVec3 in, GVec3 out);
-/** Draws out given in; returns its density (phase->cls->sample). */
+/** Draws out given in; returns its density (phase->kind->sample). */
 double phase_sample(const Phase *phase, GVec3 in, double u1, double u2, GVec3 *out);
 /** The isotropic phase function, for a medium that names none (static, never released). */
 const Phase *phase_isotropic(void);
