@@ -22,8 +22,8 @@ for p in grey oren_nayar bands; do
     [ -f "$BUILD/plugins/$p.so" ] || { echo "FAIL: $BUILD/plugins/$p.so is not built"; exit 1; }
     PLUGINS="$PLUGINS --plugin $BUILD/plugins/$p.so"
 done
-VOCABULARY=" number numbers integer bool string path vector color material generator choice formula block shape object "
-EMPTY="generator:surface"
+VOCABULARY=" number numbers integer bool string path vector color material generator choice formula block shape object medium phase "
+EMPTY="phase:isotropic generator:surface"
 SKIP="color:rgb:reads R G B (or <R, G, B>) after the keyword, no block of named parameters
 color:spectrum:reads a positional block of wavelength/value pairs
 color:blackbody:reads its temperature after the keyword
@@ -89,7 +89,7 @@ check_page() { # LABEL KINDS TOOL-ARGS...
 : > "$TMP/all_rows"
 # shellcheck disable=SC2086
 check_page gmat "colormodel color material node generator" "$GMAT" $PLUGINS
-check_page gtrace "object light camera" "$GTRACE"
+check_page gtrace "object light camera medium phase" "$GTRACE"
 
 # ---- c) the tables against the parse routines' lists ----
 asked=0
@@ -113,7 +113,7 @@ while read -r kind name; do
     esac
     echo "$entry" > "$TMP/entry.txt"
     case $kind in
-    object | light | camera) "$GTRACE" "$TMP/entry.txt" -o "$TMP/out.png" --width 1 --height 1 > "$TMP/log" 2>&1 ;;
+    object | light | camera | medium | phase) "$GTRACE" "$TMP/entry.txt" -o "$TMP/out.png" --width 1 --height 1 > "$TMP/log" 2>&1 ;;
     # shellcheck disable=SC2086
     *) "$GMAT" list "$TMP/entry.txt" $PLUGINS > "$TMP/log" 2>&1 ;;
     esac
