@@ -18,9 +18,9 @@
  *                same direction (reciprocity, its own property, makes it the same albedo), the mean of
  *                ALBEDO_DRAWS weights, unbiased when sample() agrees with pdf() (the chi2, pdf integral and
  *                weight properties), and judged by its mean less ALBEDO_SE standard errors; it replaces the
- *                grid's figures there when that passes, else the grid's figures stand. A material that moves light between
- *                samples (fluorescence) is measured with a one-sample light per sample instead: the power
- *                leaving, summed over all samples, per unit of power arriving in that sample. Whether it does is
+ *                grid's figures there when that passes, else the grid's figures stand (with white light only:
+ *                where light moves between samples, the grid alone). A material that moves light between
+ *                samples (fluorescence) is measured with a one-sample light per sample instead: the power leaving, summed over all samples, per unit of power arriving in that sample. Whether it does is
  *                asked at each place (a texture tree may re-radiate at some places only); the first place where
  *                it does is measured so (on half the grid: it costs a light per sample), the places where light
  *                keeps its sample with white light, and further re-radiating places are left out.
@@ -299,8 +299,8 @@ static void check_albedo(Checker *k)
         snprintf(moves, sizeof moves, ", light moves between samples%s: one light per sample at place %d",
                  nshift < NPLACES ? " at some places" : "", shift_at);
     if (sampled)
-        snprintf(by_sample, sizeof by_sample, ", %d of %d measurements above the grid's tolerance by sample(): %d draws,"
-                 " mean - %g standard errors", sampled, measured, ALBEDO_DRAWS, ALBEDO_SE);
+        snprintf(by_sample, sizeof by_sample, ", %d of %d measurements above the grid's tolerance by sample(): "
+                 "%d draws, mean - %g standard errors", sampled, measured, ALBEDO_DRAWS, ALBEDO_SE);
     if (failed)
         snprintf(detail, sizeof detail, "(the material failed to evaluate)");
     else
