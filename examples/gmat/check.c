@@ -20,7 +20,8 @@
  *                weight properties), and judged by its mean less ALBEDO_SE standard errors; it replaces the
  *                grid's figures there when that passes, else the grid's figures stand (with white light only:
  *                where light moves between samples, the grid alone). A material that moves light between
- *                samples (fluorescence) is measured with a one-sample light per sample instead: the power leaving, summed over all samples, per unit of power arriving in that sample. Whether it does is
+ *                samples (fluorescence) is measured with a one-sample light per sample instead: the power
+ *                leaving, summed over all samples, per unit of power arriving in that sample. Whether it does is
  *                asked at each place (a texture tree may re-radiate at some places only); the first place where
  *                it does is measured so (on half the grid: it costs a light per sample), the places where light
  *                keeps its sample with white light, and further re-radiating places are left out.
