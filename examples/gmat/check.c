@@ -12,7 +12,14 @@
  *                normal (the same as the geometric one unless a bump node tilts it: against the geometric
  *                normal a bumped Lambertian surface reflects up to 1.48 times the light at 85 degrees, the
  *                known energy gain of shading normals at grazing incidence); an ideal ray's colour, a reflectance
- *                about the shading normal already, is added as it is. A material that moves light between
+ *                about the shading normal already, is added as it is. Where the grid exceeds 1 + TOL_ALBEDO, a
+ *                narrow lobe (roughness 0.01) between its nodes may be the cause (a midpoint rule on a peak
+ *                overestimates it): the albedo is then estimated again by the material's own sample() from the
+ *                same direction (reciprocity, its own property, makes it the same albedo), the mean of
+ *                ALBEDO_DRAWS weights, unbiased when sample() agrees with pdf() (the chi2, pdf integral and
+ *                weight properties), and judged by its mean less ALBEDO_SE standard errors; it replaces the
+ *                grid's figures there when that passes, else the grid's figures stand (with white light only:
+ *                where light moves between samples, the grid alone). A material that moves light between
  *                samples (fluorescence) is measured with a one-sample light per sample instead: the power
  *                leaving, summed over all samples, per unit of power arriving in that sample. Whether it does is
  *                asked at each place (a texture tree may re-radiate at some places only); the first place where
@@ -48,6 +55,8 @@
 #include <string.h>
 
 #define TOL_ALBEDO 0.01
+#define ALBEDO_DRAWS 16384 /* draws of sample() for the albedo where the grid exceeds the tolerance */
+#define ALBEDO_SE 4.0      /* standard errors of the sampled albedo allowed above the tolerance */
 #define TOL_RECIPROCITY 1e-3
 #define TOL_SNELL 1e-4
 #define SNELL_MIN_COS 0.01 /* a view closer to a tilted facet's plane, or behind it, is not refracted there */
@@ -186,11 +195,27 @@ static double energy_ratio(Checker *k, const GColor *c)
     return sw > 0.0 ? sa / sw : INFINITY;
 }
 
+/* The albedo from in by sample() (gmat_albedo_sampled), each sample's mean less ALBEDO_SE standard errors, into
+ * ratio[0 .. nr) when every one is within 1 + TOL_ALBEDO: 1 then, else 0 (ratio unchanged). */
+static int sampled_ratios(Checker *k, GVec3 in, int nr, double ratio[1024])
+{
+    double mean[1024], se[1024], bound[1024];
+    if (nr > 1024 || k->ctx->model->nvalues != nr || gmat_albedo_sampled(k->ctx, in, ALBEDO_DRAWS, mean, se) != G_OK)
+        return 0;
+    for (int j = 0; j < nr; j++) {
+        bound[j] = mean[j] - ALBEDO_SE * se[j];
+        if (!(bound[j] <= 1.0 + TOL_ALBEDO))
+            return 0;
+    }
+    memcpy(ratio, bound, (size_t)nr * sizeof *ratio);
+    return 1;
+}
+
 /* The ratios of light leaving to light arriving from in: with shift, the power leaving in every sample per unit
  * arriving in sample s (one ratio); else white light's, sample by sample, or, above 1 in a band of a model without
  * matrices, a fold of re-radiation held to energy conservation over all bands (material_params.h; *folded set).
  * Their number, or -1 when the material failed. */
-static int albedo_ratios(Checker *k, GVec3 in, int shift, int s, double ratio[1024], int *folded)
+static int albedo_ratios(Checker *k, GVec3 in, int shift, int s, double ratio[1024], int *folded, int *sampled)
 {
     GmatContext *ctx = k->ctx;
     const GColorModel *m = ctx->model;
@@ -214,6 +239,10 @@ static int albedo_ratios(Checker *k, GVec3 in, int shift, int s, double ratio[10
     for (int j = 0; j < m->nvalues && j < 1024; j++) {
         ratio[nr++] = ctx->white.v[j] > 0.0f ? k->b.v[j] / ctx->white.v[j] : 0.0;
         most = fmax(most, ratio[nr - 1]);
+    }
+    if (most > 1.0 + TOL_ALBEDO && sampled_ratios(k, in, nr, ratio)) {
+        (*sampled)++;
+        return nr;
     }
     if (most > 1.0 + TOL_ALBEDO && !m->cls->from_reradiation) {
         ratio[0] = energy_ratio(k, &k->b);
@@ -239,7 +268,7 @@ static void check_albedo(Checker *k)
             shift_at = p;
     }
     double worst = 0.0, at_theta = 0.0;
-    int at_sample = 0, at_place = 0, failed = 0, folded = 0;
+    int at_sample = 0, at_place = 0, failed = 0, folded = 0, sampled = 0, measured = 0;
     int samples = k->samples, half = samples / 2 > 8 ? samples / 2 : 8;
     for (int p = 0; p < NPLACES && !failed; p++) {
         if (shifts[p] && p != shift_at)
@@ -251,8 +280,9 @@ static void check_albedo(Checker *k)
             GVec3 in = gmat_direction(incidences[t], 30.0);
             for (int s = 0; s < (shift ? m->nvalues : 1) && !failed; s++) {
                 double ratio[1024];
-                int nr = albedo_ratios(k, in, shift, s, ratio, &folded);
+                int nr = albedo_ratios(k, in, shift, s, ratio, &folded, &sampled);
                 failed = nr < 0;
+                measured++;
                 for (int j = 0; j < nr; j++)
                     if (!(ratio[j] <= worst)) {
                         worst = isfinite(ratio[j]) ? ratio[j] : INFINITY;
@@ -265,15 +295,18 @@ static void check_albedo(Checker *k)
     ctx->place = NULL;
     k->samples = samples;
     int used = shifts[at_place] ? half : samples;
-    char detail[400], moves[120] = ""; /* room for every part at its longest */
+    char detail[640], moves[120] = "", by_sample[200] = ""; /* room for every part at its longest */
     if (shift_at >= 0)
         snprintf(moves, sizeof moves, ", light moves between samples%s: one light per sample at place %d",
                  nshift < NPLACES ? " at some places" : "", shift_at);
+    if (sampled)
+        snprintf(by_sample, sizeof by_sample, ", %d of %d measurements above the grid's tolerance by sample(): "
+                 "%d draws, mean - %g standard errors", sampled, measured, ALBEDO_DRAWS, ALBEDO_SE);
     if (failed)
         snprintf(detail, sizeof detail, "(the material failed to evaluate)");
     else
         snprintf(detail, sizeof detail, "(largest reflected+transmitted/incident, at theta_in %g, sample %d, place %d;"
-                 " %d x %d grid%s%s)", at_theta, at_sample, at_place, used, 2 * used, moves,
+                 " %d x %d grid%s%s%s)", at_theta, at_sample, at_place, used, 2 * used, by_sample, moves,
                  folded ? ", above 1 in a band: a fold of re-radiation, energy over all samples" : "");
     report(k, "albedo", failed ? INFINITY : worst, 1.0 + TOL_ALBEDO, detail);
 }

@@ -84,6 +84,12 @@ typedef void (*GmatReportFn)(void *checker, const char *property, double worst, 
  * weights; at places[0] and places[2 % nplaces], nsamples draws per incidence (0 = 20000). */
 void gmat_check_sampling(GmatContext *ctx, const GmatPlace *places, int nplaces, int nsamples, GmatReportFn report,
                          void *checker);
+/** The albedo seen from out (upper side) at ctx->place, estimated by the material's own sample() (sampling.c):
+ * the mean over n draws (stratified in u1) of the weights of white light, reflected and transmitted, ideal lobes
+ * included, into mean[j] and its standard error into se[j], one entry per sample of ctx->model. By reciprocity it
+ * is the albedo for light from out; unbiased when sample() agrees with pdf() (the sampling checks). G_OK, or a
+ * negative status (the material failed, or a weight that is not finite). */
+int gmat_albedo_sampled(GmatContext *ctx, GVec3 out, int n, double *mean, double *se);
 /** The no-emission check of `gmat check` (flags.c): a material with GMAT_NO_EMISSION must get black from its
  * class's own emission slot at the places given, over the directions of the finite check. */
 void gmat_check_no_emission(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,

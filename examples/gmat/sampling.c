@@ -28,6 +28,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define NSAMPLES 20000
@@ -556,4 +557,56 @@ void gmat_check_sampling(GmatContext *ctx, const GmatPlace *places, int nplaces,
     gcolor_free(&t.value);
     gcolor_free(&t.white);
     report_summary(&sum, nsamples, report, k);
+}
+
+int gmat_albedo_sampled(GmatContext *ctx, GVec3 out, int n, double *mean, double *se)
+{
+    const GColorModel *m = ctx->model;
+    int nv = m->nvalues;
+    GSurfPoint sp;
+    GColor ri = {0}, weight = {0};
+    double *sum2 = calloc((size_t)nv, sizeof *sum2);
+    int rc = sum2 ? G_OK : G_ERR_NOMEM;
+    if (rc == G_OK)
+        rc = gcolor_alloc(&ri, m);
+    if (rc == G_OK)
+        rc = gcolor_alloc(&weight, m);
+    gmat_surface_point(ctx, &sp, 0);
+    if (rc == G_OK) {
+        GScratchMark mark = gscratch_mark(ctx->scratch);
+        rc = gmat_relative_index(&sp, &ri);
+        gscratch_release(ctx->scratch, mark);
+    }
+    for (int j = 0; j < nv; j++)
+        mean[j] = se[j] = 0.0;
+    unsigned long long seed = 0xa1bed0ULL;
+    for (int i = 0; i < n && rc == G_OK; i++) {
+        /* stratified in u1 (n strata), u2 uniform: the same unbiased mean with less spread */
+        double u1 = (i + next_uniform(&seed)) / n, u2 = next_uniform(&seed);
+        GMaterialSample s;
+        GScratchMark mark = gscratch_mark(ctx->scratch);
+        int drawn = gmaterial_sample(ctx->material, &sp, out, &ri, u1, u2, &s, &weight);
+        gscratch_release(ctx->scratch, mark);
+        if (drawn < 0) {
+            rc = drawn;
+            break;
+        }
+        if (drawn == 0)
+            continue; /* nothing passed on: a weight of 0 */
+        if (!gcolor_is_finite(&weight) || !(s.pdf > 0.0)) {
+            rc = G_ERR_INVALID;
+            break;
+        }
+        for (int j = 0; j < nv; j++)
+            mean[j] += weight.v[j], sum2[j] += (double)weight.v[j] * weight.v[j];
+    }
+    for (int j = 0; j < nv && rc == G_OK; j++) {
+        mean[j] /= n;
+        double var = fmax(0.0, sum2[j] / n - mean[j] * mean[j]);
+        se[j] = sqrt(var / (n > 1 ? n - 1 : 1));
+    }
+    free(sum2);
+    gcolor_free(&ri);
+    gcolor_free(&weight);
+    return rc;
 }
