@@ -126,6 +126,11 @@ static double k_for_reflectance(double n, double r, double unused, const void *p
     return k2 > 0.0 ? sqrt(k2) : 0.0;
 }
 
+/* A model whose samples are values of the curve at wavelengths at most GCOMPLEX_INDEX_FINE_NM apart: its n and k are
+ * the measured ones there. A coarser model (spectrum9's knots 50 nm apart) or one without samples matches R(0). */
+#define GCOMPLEX_INDEX_FINE_NM 10.0
+static int finely_sampled(const GColorModel *m) { return m->nsamples > 0 && m->lambda_step <= GCOMPLEX_INDEX_FINE_NM; }
+
 int gmaterial_complex_index_from_nm(GColor *eta, GColor *k, const GSpectrumNM *eta_nm, const GSpectrumNM *k_nm)
 {
     if (!eta || !k || !eta_nm || !k_nm)
@@ -133,7 +138,7 @@ int gmaterial_complex_index_from_nm(GColor *eta, GColor *k, const GSpectrumNM *e
     if (eta->model != k->model)
         return G_ERR_MISMATCH;
     int rc = gcolor_from_nm(eta, eta_nm, GCOLOR_UNITLESS);
-    if (rc != G_OK || eta->model->nsamples > 0)
+    if (rc != G_OK || finely_sampled(eta->model))
         return rc ? rc : gcolor_from_nm(k, k_nm, GCOLOR_UNITLESS);
     GSpectrumNM r0;
     for (int i = 0; i < GNM_COUNT; i++)
