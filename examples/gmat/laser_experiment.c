@@ -119,33 +119,90 @@ double gfluor_dominant_wavelength(double x, double y)
     return best_nm;
 }
 
-int gfluor_laser_split(const GMaterial *material, GScratch *scratch, double nm, double elevation_deg,
-                       const GFluorLaserOptions *opt, GFluorLaserSplit *out, GError *err)
+/* Values integrate sums per ring: the model's samples, or the brightness in a non-spectral model. */
+static int sum_count(const Beam *b)
 {
-    memset(out, 0, sizeof *out);
-    int nt = opt && opt->n_theta > 0 ? opt->n_theta : 192;
-    int np = opt && opt->n_phi > 0 ? opt->n_phi : 192;
-    GScratchMark mark = gscratch_mark(scratch);
-    Beam b;
-    int rc = beam_setup(&b, material, scratch, nm, elevation_deg, err);
-    GColor acc;
-    if (rc == G_OK && gcolor_scratch(&acc, b.model, scratch) != G_OK)
-        rc = gerror_set(err, G_ERR_NOMEM, "laser: out of scratch memory");
-    /* a = pi u^2 crowds the rings near the mirror direction, where glossy lobes are */
+    return b->sample >= 0 ? b->model->nsamples : 1;
+}
+
+/* The reflected power over the hemisphere per sample into sum[sum_count] (over E cos theta_i), with nt rings
+ * about the mirror direction and np steps around it. The rings a = pi u^2 crowd near the mirror direction,
+ * where glossy lobes are. Each ring is summed in the model's colour and added to sum in double precision, so
+ * that many rings do not lose the small terms of a float sum. */
+static int integrate(Beam *b, int nt, int np, GColor *ring, double *sum)
+{
+    const int count = sum_count(b);
+    const double cos_i = b->in.z;
+    for (int k = 0; k < count; k++)
+        sum[k] = 0.0;
+    int rc = G_OK;
     for (int iu = 0; iu < nt && rc == G_OK; iu++) {
         double u = (iu + 0.5) / nt;
         double a = M_PI * u * u;
         double w = sin(a) * 2.0 * M_PI * u * (1.0 / nt) * (2.0 * M_PI / np);
+        gcolor_black(ring);
         for (int ib = 0; ib < np && rc == G_OK; ib++) {
             double beta = 2.0 * M_PI * (ib + 0.5) / np;
-            GVec3 o = gvec3_add(gvec3_scale(b.r, cos(a)), gvec3_add(gvec3_scale(b.t1, sin(a) * cos(beta)),
-                                                               gvec3_scale(b.t2, sin(a) * sin(beta))));
+            GVec3 o = gvec3_add(gvec3_scale(b->r, cos(a)), gvec3_add(gvec3_scale(b->t1, sin(a) * cos(beta)),
+                                                                gvec3_scale(b->t2, sin(a) * sin(beta))));
             if (o.z <= 0.0)
                 continue;
-            rc = beam_reflect(&b, o);
+            rc = beam_reflect(b, o);
             if (rc == G_OK)
-                rc = gcolor_add_scaled(&acc, &b.tmp, w * o.z);
+                rc = gcolor_add_scaled(ring, &b->tmp, o.z);
         }
+        if (b->sample < 0)
+            sum[0] += w * gcolor_brightness(ring) / (gcolor_brightness(&b->light) * cos_i);
+        else
+            for (int k = 0; k < count; k++)
+                sum[k] += w * ring->v[k] / cos_i;
+    }
+    return rc;
+}
+
+/* Kept and shifted shares of the power in sum (see GFluorLaserSplit). */
+static void shares(const Beam *b, const double *sum, double *kept, double *shifted)
+{
+    *kept = b->sample < 0 ? sum[0] : sum[b->sample];
+    *shifted = 0.0;
+    for (int k = 0; k < sum_count(b); k++)
+        if (k != b->sample && b->sample >= 0)
+            *shifted += sum[k];
+}
+
+int gfluor_laser_split(const GMaterial *material, GScratch *scratch, double nm, double elevation_deg,
+                       const GFluorLaserOptions *opt, GFluorLaserSplit *out, GError *err)
+{
+    memset(out, 0, sizeof *out);
+    int fixed = opt && opt->n_theta > 0;
+    int nt = fixed ? opt->n_theta : GFLUOR_LASER_RINGS;
+    int np = opt && opt->n_phi > 0 ? opt->n_phi : GFLUOR_LASER_RINGS;
+    GScratchMark mark = gscratch_mark(scratch);
+    Beam b;
+    int rc = beam_setup(&b, material, scratch, nm, elevation_deg, err);
+    GColor ring;
+    double *sum = NULL, *finer = NULL;
+    if (rc == G_OK) {
+        sum = gscratch_alloc(scratch, 2 * (size_t)sum_count(&b) * sizeof *sum);
+        finer = sum ? sum + sum_count(&b) : NULL;
+        if (!sum || gcolor_scratch(&ring, b.model, scratch) != G_OK)
+            rc = gerror_set(err, G_ERR_NOMEM, "laser: out of scratch memory");
+    }
+    if (rc == G_OK)
+        rc = integrate(&b, nt, np, &ring, sum);
+    /* without a ring count given: twice the rings until kept and shifted change by at most GFLUOR_LASER_TOLERANCE
+     * (the specular lobe of a smooth material is narrow, and takes more rings to resolve) */
+    while (rc == G_OK && !fixed && nt < GFLUOR_LASER_MAX_RINGS) {
+        double k0, s0, k1, s1;
+        rc = integrate(&b, 2 * nt, np, &ring, finer);
+        if (rc != G_OK)
+            break;
+        shares(&b, sum, &k0, &s0);
+        shares(&b, finer, &k1, &s1);
+        nt *= 2;
+        memcpy(sum, finer, (size_t)sum_count(&b) * sizeof *sum);
+        if (fabs(k1 - k0) <= GFLUOR_LASER_TOLERANCE && fabs(s1 - s0) <= GFLUOR_LASER_TOLERANCE)
+            break;
     }
     if (rc != G_OK) {
         if (err && err->code == G_OK)
@@ -153,22 +210,20 @@ int gfluor_laser_split(const GMaterial *material, GScratch *scratch, double nm, 
         gscratch_release(scratch, mark);
         return rc;
     }
-    double cos_i = b.in.z;
     out->elevation = elevation_deg;
+    out->rings = nt;
+    shares(&b, sum, &out->kept, &out->shifted);
     if (b.sample < 0) {
-        out->kept = gcolor_brightness(&acc) / (gcolor_brightness(&b.light) * cos_i);
         gscratch_release(scratch, mark);
         return G_OK;
     }
     const GColorModel *m = b.model;
     out->wavelength = m->lambda_min + b.sample * m->lambda_step;
-    out->kept = acc.v[b.sample] / cos_i;
     double xyz[3] = {0, 0, 0}, peak = 0.0;
     for (int k = 0; k < m->nsamples; k++) {
         if (k == b.sample)
             continue;
-        double p = acc.v[k] / cos_i, lam = m->lambda_min + k * m->lambda_step, c[3];
-        out->shifted += p;
+        double p = sum[k], lam = m->lambda_min + k * m->lambda_step, c[3];
         if (p > peak) {
             peak = p;
             out->peak_nm = lam;

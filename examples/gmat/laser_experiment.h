@@ -6,10 +6,18 @@
 #include <generic/material.h>
 
 
+/** Rings gfluor_laser_split starts from, and steps around the mirror direction by default. */
+#define GFLUOR_LASER_RINGS 192
+/** Most rings gfluor_laser_split doubles to. */
+#define GFLUOR_LASER_MAX_RINGS 6144
+/** Largest change of kept and shifted between the last two ring counts when gfluor_laser_split stops. */
+#define GFLUOR_LASER_TOLERANCE 1e-4
+
 /** How finely gfluor_laser_split integrates over the hemisphere; zeros take the defaults. */
 typedef struct GFluorLaserOptions {
-    int n_theta; /**< rings around the mirror direction (default 192) */
-    int n_phi;   /**< steps around the mirror direction (default 192) */
+    int n_theta; /**< rings around the mirror direction; 0: adaptive, from GFLUOR_LASER_RINGS doubled until
+                      kept and shifted change by at most GFLUOR_LASER_TOLERANCE (at most GFLUOR_LASER_MAX_RINGS) */
+    int n_phi;   /**< steps around the mirror direction (default GFLUOR_LASER_RINGS) */
 } GFluorLaserOptions;
 
 /** What a material does with a collimated monochromatic beam. Fractions are of the incident power. */
@@ -21,6 +29,7 @@ typedef struct GFluorLaserSplit {
     double dominant_nm; /**< dominant wavelength of the shifted light against equal-energy white (negative:
                              complementary wavelength of a purple); 0 when nothing is shifted */
     double peak_nm;     /**< the sample holding the most shifted power; 0 when nothing is shifted */
+    int rings;          /**< rings the integration used */
 } GFluorLaserSplit;
 
 /** Shines a collimated beam of wavelength nm onto `material` at elevation_deg above the surface (normal +z,

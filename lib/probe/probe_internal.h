@@ -113,3 +113,10 @@ double probe_sg_integral(double lambda);
 /** The sharpness in [lo, hi] whose lobe has mean direction of the given length (the von Mises-Fisher
  * moment estimate, inverting coth lambda - 1 / lambda). */
 double probe_sg_sharpness(double mean_length, double lo, double hi);
+
+/* ---- choosing between lobe sets (sg_select.c) ---- */
+
+/** Mean relative irradiance error (mean of |E' - E| / E over validation normals and channels) of n lobes and
+ * a constant ambient radiance (NULL: none) against the probe p, into *error. */
+GENERIC_NODISCARD int probe_sg_validation_error(const GProbe *p, int n, const GProbeSGLobe *lobes,
+                                                const double ambient[3], double *error, GError *err);

@@ -299,12 +299,13 @@ typedef struct GProbeSGLobe {
     double amp[3];
 } GProbeSGLobe;
 
-/** How the lobes' amplitudes are found (axes and sharpnesses are the same for all: see lib/probe/sg_fit.c). */
+/** How the lobes' amplitudes are found (the lobes themselves: see lib/probe/sg_fit.c). */
 typedef enum GProbeSGFit {
-    GPROBE_SG_NAIVE = 0, /**< each lobe takes its cluster's power */
-    GPROBE_SG_LS,        /**< least squares on the radiance */
-    GPROBE_SG_NNLS,      /**< non-negative least squares */
-    GPROBE_SG_LS_AMBIENT /**< least squares with a constant ambient term beside the lobes */
+    GPROBE_SG_NAIVE = 0, /**< clustered lobes, each taking its cluster's power */
+    GPROBE_SG_LS,        /**< least squares on the radiance holding the irradiance's bands (order <= 4) */
+    GPROBE_SG_NNLS,      /**< the same, non-negative */
+    GPROBE_SG_LS_AMBIENT /**< the same as GPROBE_SG_NNLS with a constant ambient term >= 0 beside the lobes:
+                              its irradiance is never negative */
 } GProbeSGFit;
 
 /** Fits n lobes (1..GPROBE_SG_MAX_LOBES); ambient (3 values, may be NULL unless GPROBE_SG_LS_AMBIENT) gets
