@@ -17,31 +17,6 @@
 
 #ifndef GENERIC_VERSION
 #define GENERIC_VERSION "unknown"
-/** Keeps the standard descriptors 0, 1 and 2 taken for the whole run. One the program was started without is opened
- * on /dev/null the way it cannot be used (standard input for writing, the outputs for reading), so that no file or
- * socket the program opens gets its number (text meant for standard output would go into it) and a write to it
- * fails, which cli_finish_stdout reports. */
-static inline void cli_hold_standard_fds(void)
-{
-    for (int fd = 0; fd <= 2; fd++) {
-        if (fcntl(fd, F_GETFD) >= 0 || errno != EBADF)
-            continue;
-        int got = open("/dev/null", fd == 0 ? O_WRONLY : O_RDONLY); /* the lowest free number: fd itself */
-        if (got > fd) {
-            dup2(got, fd);
-            close(got);
-        }
-    }
-}
-
-/** A tool's whole run: holds the standard descriptors (cli_hold_standard_fds), runs tool_main and ends standard
- * output through cli_finish_stdout. Every tool's main is this call. */
-static inline int cli_run(const char *prog, int (*tool_main)(int, char **), int argc, char **argv)
-{
-    cli_hold_standard_fds();
-    return cli_finish_stdout(prog, tool_main(argc, argv));
-}
-
 #endif
 
 /** Exit statuses of every tool. */
