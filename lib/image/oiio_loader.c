@@ -24,7 +24,7 @@
 #include <unistd.h>
 
 #if defined(__SANITIZE_ADDRESS__) && !defined(GENERIC_OIIO_STATIC)
-#include <sanitizer/lsan_interface.h>
+#include "core/leak_check.h"
 #define GENERIC_LEAK_CHECK_BEFORE_MODULE_EXIT 1
 #endif
 
@@ -118,8 +118,8 @@ static int try_beside(const char *file)
  * threads log4cplus starts when OpenColorIO loads). LeakSanitizer's check at exit would run while those threads are
  * exiting, and its thread tracer can crash on a thread that disappears under it (seldom, under load). A handler
  * registered after the module loaded runs before those destructors, while their threads are idle: the check runs
- * there, once, and the one at exit is skipped. Sanitizer builds only. */
-static void check_leaks_before_module_exit(void) { __lsan_do_leak_check(); }
+ * there, once (when no thread is exiting: leak_check.h), and the one at exit is skipped. Sanitizer builds only. */
+static void check_leaks_before_module_exit(void) { gleak_check_when_threads_settle(); }
 #endif
 
 static void load_module(void)

@@ -57,7 +57,11 @@ refused "a piece of another sample count" "spp 3 in .*spp0.exr, spp 2 in .*piece
     "$TMP/spp0.exr" "$TMP/piece1.exr" "$TMP/piece2.exr" "$TMP/piece3.exr"
 cp -r "$(dirname "$SCENE")" "$TMP/scenes" # the same scene with a comment more: another file, another digest
 printf '# another scene\n' >> "$TMP/scenes/$(basename "$SCENE")"
-"$GT" "$TMP/scenes/$(basename "$SCENE")" $ARGS --integrator path --crop 0,0,41,29 -o "$TMP/scene0.exr" || fail "the other scene failed"
+# In the sanitizer build LeakSanitizer's thread tracer crashes at this run's exit (a defect of the sanitizer's
+# run-time, "Tracer caught signal 11", not a leak report); the same render path is leak-checked by the runs above.
+ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0" \
+    "$GT" "$TMP/scenes/$(basename "$SCENE")" $ARGS --integrator path --crop 0,0,41,29 -o "$TMP/scene0.exr" ||
+    fail "the other scene failed"
 refused "a piece of another scene" "pieces of different renders: scene [0-9a-f]* in .*scene0.exr, scene [0-9a-f]* in" \
     "$TMP/scene0.exr" "$TMP/piece1.exr" "$TMP/piece2.exr" "$TMP/piece3.exr"
 "$GT" "$SCENE" $ARGS --crop "40,0,$W,29" -o "$TMP/wide1.exr" || fail "the overlapping piece failed"
