@@ -26,7 +26,7 @@ FUZZ_CPPFLAGS := -Iinclude -Ilib -I. -D_GNU_SOURCE -DGENERIC_OIIO_STATIC -MMD -M
 FUZZ_CFLAGS   := -std=c11 -O1 -g -Wall -Wextra -Wno-unknown-pragmas $(FUZZ_SAN) -fsanitize=fuzzer-no-link
 FUZZ_CXXFLAGS := -std=c++17 -O1 -g -Wall -Wextra -Wno-unknown-pragmas $(FUZZ_SAN) -fsanitize=fuzzer-no-link \
                  $(shell pkg-config --cflags OpenImageIO 2>/dev/null)
-FUZZ_LIBS     := $(shell pkg-config --libs OpenImageIO OpenColorIO 2>/dev/null) -lpng -ldl -lpthread -lm
+FUZZ_LIBS     := $(shell pkg-config --libs OpenImageIO OpenColorIO 2>/dev/null) -lpng -lgomp -ldl -lpthread -lm
 FUZZ_NAMES    := $(patsubst tests/fuzz/fuzz_%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
 FUZZ_TARGETS  ?= $(FUZZ_NAMES)
 FUZZ_BIN      := $(FUZZ_NAMES:%=$(FUZZ_BUILD)/fuzz_%)
