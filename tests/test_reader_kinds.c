@@ -206,6 +206,53 @@ static void test_kind_sharing_material_names(void **state)
     assert_non_null(strstr(err.message, ", transform, toon) nor a defined material (defined: red)"));
 }
 
+/* Every type keyword of the material namespace may name a material: `material plastic lambert { }` is a lambert
+ * named "plastic". A reference to it is the defined material; with a block after it, the keyword is the type. */
+static void test_type_keywords_as_names(void **state)
+{
+    (void)state;
+    char types[4096];
+    gregistry_names(GKIND_MATERIAL, types, sizeof types / 2);
+    size_t used = strlen(types);
+    types[used++] = ',';
+    gregistry_names(GKIND_NODE, types + used, sizeof types - used);
+    int checked = 0;
+    for (char *save = NULL, *name = strtok_r(types, ", ", &save); name; name = strtok_r(NULL, ", ", &save)) {
+        char text[1024];
+        snprintf(text, sizeof text,
+                 "material %s lambert { reflectance rgb 0.25 0.25 0.25 }\n"
+                 "material derived like %s { reflectance rgb 0.5 0.5 0.5 }\n"
+                 "material mix interpolate { a %s b lambert { } t checker { dims 2 } }\n"
+                 "material lambert { }\n",
+                 name, name, name);
+        GLibrary *lib = NULL;
+        GError err;
+        int rc = greader_load_string(text, "t.mat", NULL, &lib, &err);
+        if (rc != G_OK)
+            print_error("%s: %s\n", name, err.message);
+        assert_int_equal(rc, G_OK);
+        assert_string_equal(gmaterial_name(glibrary_material(lib, name)), "lambert");
+        assert_string_equal(gmaterial_name(glibrary_material(lib, "derived")), "lambert");
+        assert_string_equal(gmaterial_name(glibrary_material(lib, "mix")), "interpolate");
+        assert_int_equal(glibrary_count(lib, GKIND_MATERIAL), 3); /* the anonymous lambert too */
+        assert_int_equal(glibrary_count(lib, GKIND_NODE), 1);
+        const char *anonymous = "";
+        glibrary_entry(lib, GKIND_MATERIAL, 2, &anonymous, NULL);
+        assert_null(anonymous);
+        glibrary_destroy(lib);
+        checked++;
+    }
+    assert_true(checked >= 20); /* every built-in material and node type */
+    /* a type keyword followed by its block is still the type, a defined name of the same spelling or not */
+    GLibrary *lib = NULL;
+    GError err;
+    assert_int_equal(greader_load_string("material mirror lambert { }\n"
+                                         "material m2 interpolate { a mirror { } b mirror t checker { dims 2 } }\n",
+                                         "t.mat", NULL, &lib, &err),
+                     G_OK);
+    glibrary_destroy(lib);
+}
+
 /* Past GKIND_MAX kinds a kind is refused, and every kind registered before keeps working. */
 static void test_kind_limit(void **state)
 {
@@ -236,6 +283,7 @@ int main(void)
         cmocka_unit_test(test_registering_kinds),
         cmocka_unit_test(test_entries_of_an_application_kind),
         cmocka_unit_test(test_kind_sharing_material_names),
+        cmocka_unit_test(test_type_keywords_as_names),
         cmocka_unit_test(test_kind_limit),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -226,6 +226,14 @@ static int do_colormodel(GReader *r, int override, GError *err)
     return G_OK;
 }
 
+/* 1 when the token after a statement's first word v makes that word the entry's name: a type of the kind or
+ * `like` follows (`material plastic lambert { ... }` names a lambert "plastic"); else a word that is a type
+ * keyword begins an anonymous entry (`material lambert { ... }`). */
+static int entry_name_follows(GKind kind, const GToken *v)
+{
+    return v->type == GTOK_IDENT && (strcmp(v->text, "like") == 0 || greader_find_type(kind, v->text));
+}
+
 static int do_entry(GReader *r, GKind kind, GError *err)
 {
     GToken t;
@@ -242,20 +250,21 @@ static int do_entry(GReader *r, GKind kind, GError *err)
     const GTypeInfo *type = NULL;
     void *obj = NULL;
     int owned = 0;
-    if (greader_find_type(kind, t.text)) { /* anonymous: KIND TYPE parameters */
-        rc = greader_value(r, kind, 0, &obj, &type, &owned, err);
-        return rc ? rc : glibrary_put(r->lib, type, NULL, obj, owned, 1, err);
-    }
     if (strcmp(t.text, "like") == 0)
         return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col,
                                 "'like' needs the new entry's name before it: %s NAME like BASE { ... }", kn);
     char *name = gmem_strdup(t.text);
     if (!name)
         return greader_error_at(r, err, G_ERR_NOMEM, t.line, t.col, "out of memory");
-    rc = greader_next(r, NULL, err);
+    greader_take(r, NULL); /* the name or type, peeked above */
     GToken v;
-    if (rc == G_OK)
-        rc = greader_peek(r, &v, err);
+    rc = greader_peek(r, &v, err);
+    const GTypeInfo *anonymous = greader_find_type(kind, name);
+    if (rc == G_OK && anonymous && !entry_name_follows(kind, &v)) { /* anonymous: KIND TYPE parameters */
+        gmem_free(name);
+        rc = greader_invoke(r, anonymous, t.line, t.col, &obj, err);
+        return rc ? rc : glibrary_put(r->lib, anonymous, NULL, obj, 1, 1, err);
+    }
     if (rc == G_OK && glibrary_find(r->lib, kind, name)) {
         rc = greader_error_at(r, err, G_ERR_EXISTS, t.line, t.col, "%s '%s' is already defined", kn, name);
     } else if (rc == G_OK && v.type == GTOK_IDENT && strcmp(v.text, "like") == 0) {

@@ -74,6 +74,13 @@ int greader_invoke(GReader *r, const GTypeInfo *type, int line, int col, void **
     return G_OK;
 }
 
+/* 1 when a type's first parameter is written without its name (`blackbody 5000`): such a type keyword is never
+ * read as a defined name. */
+static int takes_positional(const GTypeInfo *ty)
+{
+    return ty->params && ty->params[0].name && ty->params[0].form == GPARAM_POSITIONAL;
+}
+
 int greader_value(GReader *r, GKind kind, int add, void **object, const GTypeInfo **type, int *owned, GError *err)
 {
     *object = NULL;
@@ -91,8 +98,22 @@ int greader_value(GReader *r, GKind kind, int add, void **object, const GTypeInf
                                 "expected a %s (a type or a defined name), found %s", kn, found);
     }
     const GTypeInfo *ty = greader_find_type(kind, t.text);
-    if (ty) {
+    void *named = ty && !takes_positional(ty) ? glibrary_find(r->lib, kind, t.text) : NULL;
+    if (named) { /* a name that is also a type keyword: the type only where its block follows */
         greader_take(r, NULL); /* the token peeked above */
+        GToken n;
+        if ((rc = greader_peek(r, &n, err)) != G_OK)
+            return rc;
+        if (n.type != GTOK_LBRACE) {
+            *object = named;
+            if (type)
+                *type = glibrary_find_type(r->lib, kind, t.text);
+            return G_OK;
+        }
+    } else if (ty) {
+        greader_take(r, NULL); /* the token peeked above */
+    }
+    if (ty) {
         void *obj = NULL;
         rc = greader_invoke(r, ty, t.line, t.col, &obj, err);
         if (rc == G_OK && add) {
