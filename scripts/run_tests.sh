@@ -16,17 +16,19 @@ if [ "${1:-}" = "--one" ]; then
     prog=$3
     name=$(basename "$prog")
     log="$BUILD/tests/$name.log"
+    t0=$(date +%s.%N)
     case "$prog" in
     *.sh) "$prog" "$BUILD" > "$log" 2>&1 ;;
     *) "$prog" > "$log" 2>&1 ;;
     esac
     status=$?
+    secs=$(echo "$(date +%s.%N) $t0" | awk '{printf "%.1f", $1 - $2}')
     echo "$status" > "$log.status"
     if [ "$status" -eq 0 ]; then
         cases=$(grep -c '^\[       OK \]' "$log")
-        if [ "$cases" -gt 0 ]; then echo "PASS $name ($cases cases)"; else echo "PASS $name"; fi
+        if [ "$cases" -gt 0 ]; then echo "PASS $name ($cases cases, $secs s)"; else echo "PASS $name ($secs s)"; fi
     else
-        echo "FAIL $name"
+        echo "FAIL $name ($secs s)"
     fi
     exit 0
 fi
