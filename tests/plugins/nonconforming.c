@@ -36,9 +36,9 @@
  *                dielectric's error before it asked the geometric side): under a bump node only the weight check
  *                sees it (the default sampling draws that ray with the light it passes on);
  *   (these three for tests/scripts/bump_ideal_conformance.sh)
- *   -DBAD_BANDS  colour model "bad_bands": the same grey model with a correct add and two wavelength bands whose
- *                masks are both white, so the bands do not partition a value;
- *   -DBAD_ADD    colour model "bad_add": the grey model (luminance only) whose add returns 1.01 a + b, so
+ *   -DBAD_BANDS  colour model "bad_bands": the built-in rgb model with two wavelength bands whose masks are
+ *                both white, so the bands do not partition a value;
+ *   -DBAD_ADD    colour model "bad_add": the built-in rgb model whose add returns 1.01 a + b, so
  *                a + black != a. */
 #include <generic/plugin.h>
 #include <generic/reader.h>
@@ -404,129 +404,67 @@ GENERIC_MODULE_EXPORT int generic_module_init(GModuleApi *api, GError *err)
 #endif
 
 #if defined(BAD_ADD) || defined(BAD_BANDS)
-static int one_init(GColorModel *self, const GColorModelOptions *opt, GError *err)
-{
-    (void)opt;
-    (void)err;
-    self->nvalues = self->capacity = 1;
-    return G_OK;
-}
+#include <generic/registry.h>
 
-static void one_black(const GColorModel *m, GColor *out)
-{
-    (void)m;
-    out->kind = GCOLOR_VECTOR;
-    out->v[0] = 0.0f;
-}
+/* The built-in rgb model's class, copied at init with one deliberate error; its other slots are rgb's. */
+static GColorModelClass derived;
+static const GColorModelClass *rgb;
 
-#define OP2(fn, expr)                                                                                          \
-    static int fn(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)                         \
-    {                                                                                                          \
-        (void)m;                                                                                               \
-        float x = a->v[0], y = b->v[0];                                                                        \
-        out->kind = GCOLOR_VECTOR;                                                                             \
-        out->v[0] = (expr);                                                                                    \
-        return G_OK;                                                                                           \
-    }
 #ifdef BAD_ADD
-OP2(one_add, 1.01f * x + y) /* the deliberate error */
-#define ONE_NAME "bad_add"
-#define ONE_SUMMARY "luminance only, with a wrong add (tests)"
+#define DERIVED_NAME "bad_add"
+#define DERIVED_SUMMARY "rgb with a wrong add: a + b = 1.01 a + b (tests)"
+static int wrong_add(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+{
+    float v[16]; /* out may alias a or b: 1.01 a goes to storage of its own */
+    if (m->capacity > 16)
+        return G_ERR_INVALID;
+    GColor scaled = *out;
+    scaled.v = v;
+    scaled.capacity = 16;
+    int rc = rgb->scale(m, &scaled, a, 1.01);
+    return rc ? rc : rgb->add(m, out, &scaled, b);
+}
 #else
-OP2(one_add, x + y)
-#define ONE_NAME "bad_bands"
-#define ONE_SUMMARY "luminance only, with two overlapping wavelength bands (tests)"
-/* two bands whose masks are both white: they do not partition a value (the deliberate error) */
+#define DERIVED_NAME "bad_bands"
+#define DERIVED_SUMMARY "rgb with two overlapping wavelength bands (tests)"
 static int two_bands(const GColorModel *m)
 {
     (void)m;
     return 2;
 }
 
+/* both masks white: the bands do not partition a value */
 static int white_mask(const GColorModel *m, int band, GColor *out)
 {
-    (void)m;
     (void)band;
-    out->kind = GCOLOR_VECTOR;
-    out->v[0] = 1.0f;
+    rgb->black(m, out);
+    for (int i = 0; i < m->nvalues; i++)
+        out->v[i] = 1.0f;
     return G_OK;
 }
 #endif
-OP2(one_mul, x * y)
-OP2(one_div, y != 0.0f ? x / y : 0.0f)
-
-static int one_scale(const GColorModel *m, GColor *out, const GColor *a, double s)
-{
-    (void)m;
-    out->kind = GCOLOR_VECTOR;
-    out->v[0] = (float)(a->v[0] * s);
-    return G_OK;
-}
-
-static int one_pow(const GColorModel *m, GColor *out, const GColor *a, double e)
-{
-    (void)m;
-    out->kind = GCOLOR_VECTOR;
-    out->v[0] = a->v[0] > 0.0f ? (float)pow(a->v[0], e) : (e == 0.0 ? 1.0f : 0.0f);
-    return G_OK;
-}
-
-static double one_brightness(const GColorModel *m, const GColor *a)
-{
-    (void)m;
-    return fabs(a->v[0]);
-}
-
-static int one_to_nm(const GColorModel *m, const GColor *a, GColorRole role, GSpectrumNM *out)
-{
-    (void)m;
-    if (role == GCOLOR_LIGHT) {
-        if (gcie_illuminant_nm("D65", out) != G_OK)
-            return G_ERR_INVALID;
-        for (int i = 0; i < GNM_COUNT; i++)
-            out->v[i] *= a->v[0];
-    } else {
-        for (int i = 0; i < GNM_COUNT; i++)
-            out->v[i] = a->v[0];
-    }
-    return G_OK;
-}
-
-static int one_from_nm(const GColorModel *m, const GSpectrumNM *in, GColorRole role, GColor *out)
-{
-    (void)m;
-    double xyz[3];
-    gcie_nm_to_xyz(in, role, xyz);
-    out->kind = GCOLOR_VECTOR;
-    out->v[0] = (float)xyz[1];
-    return G_OK;
-}
-
-static const GColorModelClass bad_add_class = {
-    .abi_version = GCOLOR_ABI_VERSION,
-    .name = ONE_NAME,
-    .description = ONE_SUMMARY,
-    .init = one_init,
-    .black = one_black,
-    .add = one_add,
-    .mul = one_mul,
-    .scale = one_scale,
-    .div = one_div,
-    .pow = one_pow,
-    .brightness = one_brightness,
-    .to_nm = one_to_nm,
-    .from_nm = one_from_nm,
-#ifdef BAD_BANDS
-    .band_count = two_bands,
-    .band_mask = white_mask,
-#endif
-};
 
 static void release(void *p) { gcolormodel_destroy(p); }
 
 GENERIC_MODULE_EXPORT int generic_module_init(GModuleApi *api, GError *err)
 {
-    static const GTypeInfo type = {GKIND_COLORMODEL, ONE_NAME, &bad_add_class, NULL, ONE_SUMMARY, release, NULL};
+    const GTypeInfo *builtin = gregistry_find(GKIND_COLORMODEL, "rgb");
+    if (!builtin)
+        return G_ERR_NOTFOUND;
+    rgb = builtin->vtable;
+    derived = *rgb;
+    derived.name = DERIVED_NAME;
+    derived.description = DERIVED_SUMMARY;
+#ifdef BAD_ADD
+    derived.add = wrong_add;
+    derived.band_count = NULL; /* one band: the band check adds too, and must not see the error */
+    derived.band_mask = NULL;
+    derived.band_value = NULL;
+#else
+    derived.band_count = two_bands;
+    derived.band_mask = white_mask;
+#endif
+    static const GTypeInfo type = {GKIND_COLORMODEL, DERIVED_NAME, &derived, NULL, DERIVED_SUMMARY, release, NULL};
     return api->add_type(api, &type, err);
 }
 #endif
