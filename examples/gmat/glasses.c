@@ -18,19 +18,11 @@ static void usage_glasses(FILE *f)
 
 int gmat_glasses(int argc, char **argv)
 {
-    enum { OPT_MARKDOWN = CLI_FIRST_OWN };
-    static const struct option longopts[] = {CLI_COMMON_OPTIONS, {"markdown", no_argument, NULL, OPT_MARKDOWN},
-                                             {NULL, 0, NULL, 0}};
+    int n, markdown;
     CliParser p;
-    cli_begin(&p, "gmat glasses", argc - 1, argv + 1, "h", longopts);
-    int c, n, status = CLI_OK, markdown = 0;
-    while ((c = cli_next_own(&p, "gmat", usage_glasses, &status)) != -1) {
-        if (c == CLI_EXIT)
-            return status;
-        if (c != OPT_MARKDOWN)
-            return CLI_USAGE;
-        markdown = 1;
-    }
+    int status = gmat_markdown_option("gmat glasses", argc, argv, usage_glasses, &p, &markdown);
+    if (status >= 0)
+        return status;
     char **rest = cli_operands(&p, &n);
     if (n > 0)
         return gmat_usage_error("glasses", "unexpected argument '%s'", rest[0]);

@@ -144,6 +144,10 @@ int gmat_number(const char *s, double lo, double hi, double *out);
 /** The operands FILE and MATERIAL of subcommand cmd after its options (missing ones NULL): 0, or the usage
  * error's status 2 (message printed) when there are more than `want`. */
 int gmat_operands(const char *cmd, const CliParser *p, int want, const char **file, const char **material);
+/** The options of a listing subcommand prog ("gmat CMD", kept: a literal) `[--markdown] OPERAND...` (the common
+ * ones and --markdown) parsed into *p (cli_operands gives the operands) and *markdown. Returns -1 to go on, else
+ * the exit status (help, version or a usage error: printed). */
+int gmat_markdown_option(const char *prog, int argc, char **argv, void (*usage)(FILE *), CliParser *p, int *markdown);
 /** Reads file with the reader options base, computing in the colour model `colormodel` (NULL: the file's) with
  * its samples `step` nm apart (0: the model's default), and skipping the entries of the kinds in skip_kinds
  * (a bit per GKind, as GReaderOptions.skip_kinds). */

@@ -156,6 +156,24 @@ int gmat_usage_error(const char *cmd, const char *fmt, const char *arg)
     return 2;
 }
 
+int gmat_markdown_option(const char *prog, int argc, char **argv, void (*usage)(FILE *), CliParser *p, int *markdown)
+{
+    enum { OPT_MARKDOWN = CLI_FIRST_OWN };
+    static const struct option longopts[] = {CLI_COMMON_OPTIONS, {"markdown", no_argument, NULL, OPT_MARKDOWN},
+                                             {NULL, 0, NULL, 0}};
+    cli_begin(p, prog, argc - 1, argv + 1, "h", longopts);
+    int c, status = CLI_OK;
+    *markdown = 0;
+    while ((c = cli_next_own(p, "gmat", usage, &status)) != -1) {
+        if (c == CLI_EXIT)
+            return status;
+        if (c != OPT_MARKDOWN)
+            return CLI_USAGE;
+        *markdown = 1;
+    }
+    return -1;
+}
+
 int gmat_number(const char *s, double lo, double hi, double *out)
 {
     char *end;
@@ -382,21 +400,12 @@ static int types_markdown(const char *only)
  * --markdown the reference page of every type's parameters. */
 static int types(int argc, char **argv)
 {
-    enum { OPT_MARKDOWN = CLI_FIRST_OWN };
     const char *only = NULL;
-    int markdown = 0;
-    static const struct option longopts[] = {CLI_COMMON_OPTIONS, {"markdown", no_argument, NULL, OPT_MARKDOWN},
-                                             {NULL, 0, NULL, 0}};
+    int markdown, n;
     CliParser p;
-    cli_begin(&p, "gmat types", argc - 1, argv + 1, "h", longopts);
-    int c, n, status = CLI_OK;
-    while ((c = cli_next_own(&p, "gmat", usage_types, &status)) != -1) {
-        if (c == CLI_EXIT)
-            return status;
-        if (c != OPT_MARKDOWN)
-            return CLI_USAGE;
-        markdown = 1;
-    }
+    int status = gmat_markdown_option("gmat types", argc, argv, usage_types, &p, &markdown);
+    if (status >= 0)
+        return status;
     char **rest = cli_operands(&p, &n);
     for (int i = 0; i < n; i++) {
         int known = 0;
