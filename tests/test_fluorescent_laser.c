@@ -323,12 +323,12 @@ static void test_smooth_varnish_converges(void **state)
     GError err;
     assert_int_equal(gfluor_varnish_create(f->model, &black, &p, &m, &err), G_OK);
     const double el[2] = {5.0, 30.0};
-    for (int k = 0; k < 2; k++) {
+    for (int k = 0; k < (TU_SANITIZED ? 1 : 2); k++) { /* the sanitizers look at the code paths: 5 degrees */
         double F = fresnel(1.5, sin(el[k] * M_PI / 180.0));
         GFluorLaserSplit fixed = split_n(f, m, 532, el[k], 192), adaptive = split(f, m, 532, el[k]);
-        GFluorLaserSplit fine = split_n(f, m, 532, el[k], 6144);
+        GFluorLaserSplit fine = split_n(f, m, 532, el[k], 4096);
         print_message("slope 0.01, %2.0f degrees: kept %.6f with 192 rings, %.6f with %d (adaptive), %.6f with "
-                      "6144; Fresnel %.6f\n", el[k], fixed.kept, adaptive.kept, adaptive.rings, fine.kept, F);
+                      "4096; Fresnel %.6f\n", el[k], fixed.kept, adaptive.kept, adaptive.rings, fine.kept, F);
         assert_true(adaptive.rings > 192);
         assert_near(adaptive.kept, fine.kept, 1e-4);
         assert_near(adaptive.kept, F, 2e-4);

@@ -11,6 +11,7 @@
 
 #include "material_fixture.h"
 #include "generic/builtins.h"
+#include "test_util.h"
 
 /* A small deterministic generator (splitmix64). */
 static double next_u(unsigned long long *s)
@@ -212,8 +213,8 @@ static void check_material(const char *model, const char *text, const char *name
 {
     Case c;
     case_open(&c, model, text, name);
-    static const double thetas[] = {15, 50, 75};
-    for (int k = 0; k < 3; k++) {
+    static const double thetas[] = {50, 15, 75};
+    for (int k = 0; k < (TU_SANITIZED ? 1 : 3); k++) { /* the sanitizers look at the code paths: one angle there */
         assert_unbiased(&c, thetas[k], 60000, nt, tol_quad);
         GVec3 out = dir_at(thetas[k] * DEG, 0.7);
         int nv = c.model->nvalues;
@@ -434,7 +435,8 @@ static void defaults_unbiased_one(const char *model, const char *text, int nt, d
     c.m->cls = &copy;
     assert_int_equal(gmaterial_is_delta(c.m, &c.sp), 0);
     assert_unbiased(&c, 20, 60000, nt, tol_quad);
-    assert_unbiased(&c, 70, 60000, nt, tol_quad);
+    if (!TU_SANITIZED)
+        assert_unbiased(&c, 70, 60000, nt, tol_quad);
     c.m->cls = own;
     case_close(&c);
 }

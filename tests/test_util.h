@@ -14,6 +14,15 @@
 #include "generic/color.h"
 #include "test_alloc.h"
 
+/** 1 in a build with AddressSanitizer (make SANITIZE=1), whose code runs several times slower, else 0. Statistical
+ * tests there check fewer angles, configurations or samples: what the sanitizers look for (memory errors, undefined
+ * behaviour, leaks) lies in the code paths, which the reduced set runs as well; the plain build checks the full set. */
+#ifdef __SANITIZE_ADDRESS__
+#define TU_SANITIZED 1
+#else
+#define TU_SANITIZED 0
+#endif
+
 /** |a - b| <= tol in double precision (cmocka's assert_float_equal works in float); a failure prints the
  * expression, both values and the tolerance. */
 #define assert_near(a, b, tol) tu_near((a), (b), (tol), #a, __FILE__, __LINE__)
