@@ -33,12 +33,17 @@ if [ "${1:-}" = "--one" ]; then
         note=", repeated once after LeakSanitizer's tracer crashed"
     done
     secs=$(echo "$(date +%s.%N) $t0" | awk '{printf "%.1f", $1 - $2}')
+    # the processor time of the test and its children (the second line of `times`: user and system, "XmY.Zs")
+    times > "$log.times"
+    secs="$secs s, $(awk 'NR == 2 { split($1 "m" $2, t, "[ms]"); printf "%.1f", t[1] * 60 + t[2] + t[4] * 60 + t[5] }' \
+        "$log.times") s CPU"
+    rm -f "$log.times"
     echo "$status" > "$log.status"
     if [ "$status" -eq 0 ]; then
         cases=$(grep -c '^\[       OK \]' "$log")
-        if [ "$cases" -gt 0 ]; then echo "PASS $name ($cases cases, $secs s$note)"; else echo "PASS $name ($secs s$note)"; fi
+        if [ "$cases" -gt 0 ]; then echo "PASS $name ($cases cases, $secs$note)"; else echo "PASS $name ($secs$note)"; fi
     else
-        echo "FAIL $name ($secs s$note)"
+        echo "FAIL $name ($secs$note)"
     fi
     exit 0
 fi

@@ -135,7 +135,7 @@ each() {
 # Under the sanitizers the library itself reads every file of the corpus in-process (test_reader), so the
 # tools' own path - a failed load reported and the program ended - is checked on half the files there.
 mats=$(ls *.mat)
-if ldd "$GMAT" 2> /dev/null | grep -q -E "libasan|libubsan"; then
+if sanitized "$GMAT"; then
     mats=$(ls *.mat | awk 'NR % 2 == 1')
 fi
 each mat $mats

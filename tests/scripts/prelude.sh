@@ -21,6 +21,10 @@ serial_only() {
     }
 }
 now() { date +%s.%N; }
+# sanitized PROGRAM: true when PROGRAM is built with the sanitizers (make SANITIZE=1), whose code runs several times
+# slower. A script with many repetitions of one code path (the same check on more parameters) runs a subset there:
+# the sanitizers look for memory errors and undefined behaviour in the paths, which the subset runs too.
+sanitized() { ldd "$1" 2> /dev/null | grep -q -E "libasan|libubsan"; }
 # bounded_run WHAT WANT MAX_SECONDS COMMAND...: runs COMMAND (stdout in TMP/out, stderr in TMP/err), which must exit
 # 0 (WANT 0) or 1..127 (WANT 1), without a sanitizer report or a failed assertion, within MAX_SECONDS (a time
 # bound: call serial_only first).
