@@ -56,8 +56,11 @@ done
 fp_rgb=$(awk '$1 == "albedo" { print $3 }' "$TMP/fp.log")
 [ -n "$fp_rgb" ] || fail "gmat check of fluorescent-phong in rgb printed no albedo: $(cat "$TMP/fp.log")"
 checked=0
+every=1
+sanitized "$GMAT" && every=4 # under the sanitizers every fourth node: the same code paths, a quarter of the cost
 while read -r name model; do
     checked=$((checked + 1))
+    [ $(((checked - 1) % every)) -eq 0 ] || continue
     "$GMAT" check "$TMP/blends.mat" "$name" --colormodel "$model" > "$TMP/log" 2>&1 && continue
     failing=$(awk '$2 == "worst" && $6 == "FAIL" { print $1 }' "$TMP/log")
     albedo=$(awk '$1 == "albedo" { print $3 }' "$TMP/log")

@@ -29,8 +29,12 @@ must_pass() {
     "$GMAT" check "$1" "$2" --colormodel "$3" > "$TMP/log" 2>&1 || fail "$2 in $3 does not pass gmat check:
 $(grep -v ' PASS ' "$TMP/log")"
 }
+turn=0
 for model in rgb spectrum9 spectrum bispectral; do
     for m in p001 p005 p03 p03b p08 p1 glossy foggy; do
+        turn=$((turn + 1))
+        # under the sanitizers every third pair: each material and each model still, at a third of the cost
+        sanitized "$GMAT" && [ $((turn % 3)) -ne 0 ] && continue
         must_pass "$TMP/coated.mat" $m $model
     done
 done

@@ -38,8 +38,11 @@ for a in ll pm mr glass; do
     done
 done
 checked=0
+every=1
+sanitized "$GMAT" && every=4 # under the sanitizers every fourth node: the same code paths, a quarter of the cost
 while read -r name model; do
     checked=$((checked + 1))
+    [ $(((checked - 1) % every)) -eq 0 ] || continue
     "$GMAT" check "$TMP/one.mat" "$name" --colormodel "$model" > "$TMP/log" 2>&1
     failing=$(awk '$2 == "worst" && / FAIL / && $1 != "albedo" { print $1 }' "$TMP/log")
     grep -q ' worst ' "$TMP/log" || failing="no report"

@@ -57,12 +57,17 @@ listed() {
     turn=$((turn + 1))
 }
 # check_nodes GMAT FILE LIST: `gmat check` of each "name model" line of LIST in FILE, every property must pass (a
-# failure fails with gmat's report); checked is then the number of lines checked.
+# failure fails with gmat's report); checked is then the number of lines listed. Under the sanitizers (GMAT built
+# with them) every fourth line runs, which still takes each colour model in turn.
 check_nodes() {
     checked=0
+    every=1
+    sanitized "$1" && every=4
     while read -r name model; do
         checked=$((checked + 1))
+        [ $(((checked - 1) % every)) -eq 0 ] || continue
         "$1" check "$2" "$name" --colormodel "$model" > "$TMP/log" 2>&1 || fail "$name in $model:
 $(cat "$TMP/log")"
     done < "$3"
+    [ "$every" -eq 1 ] || echo "under the sanitizers: every $every of $checked checked"
 }
