@@ -297,8 +297,9 @@ static void interrupted_output(int sig, int with_own_handler)
     assert_true(pid >= 0);
     if (pid == 0) {
         close(fds[0]);
-        if (with_own_handler)
-            signal(sig, own_handler);
+        /* the signal as a program started from a terminal gets it (a job started in the background inherits
+         * SIGINT ignored, and the library leaves an ignored signal alone) */
+        signal(sig, with_own_handler ? own_handler : SIG_DFL);
         GFileOutput o;
         GError err;
         if (gfile_output_begin(&o, target, &err) != G_OK)
