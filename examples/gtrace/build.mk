@@ -107,3 +107,16 @@ install-gtrace-so: $(GTRACE_SO)
 uninstall: uninstall-gtrace-so
 uninstall-gtrace-so:
 	rm -f $(INST)/lib/libgtrace.so
+
+# The OpenVDB reader of grid media (examples/gtrace/media/vdb/, media/grid_load.c): a program of its own that gtrace
+# starts for each grid file, so that OpenVDB (C++, not hardened against hostile files) never runs in gtrace. Built
+# without the sanitizers (it runs as a separate process under its own limits) when OpenVDB is installed; without it
+# grid media are refused with a message naming the reader.
+GTRACE_VDB_READER := $(BUILD)/lib/generic/gtrace-vdb
+ifneq ($(wildcard /usr/include/openvdb/openvdb.h),)
+all: $(GTRACE_VDB_READER)
+$(GTRACE_TEST_BIN) $(BUILD)/bin/gtrace: | $(GTRACE_VDB_READER)
+endif
+$(GTRACE_VDB_READER): examples/gtrace/media/vdb/vdb_read.cpp examples/gtrace/media/vdb/vdb_protocol.h
+	@mkdir -p $(dir $@)
+	$(CXX) -std=c++17 -O2 -Wall -Wextra -Werror -o $@ $< -lopenvdb -ltbb -lImath-3_1
