@@ -120,3 +120,14 @@ endif
 $(GTRACE_VDB_READER): examples/gtrace/media/vdb/vdb_read.cpp examples/gtrace/media/vdb/vdb_protocol.h
 	@mkdir -p $(dir $@)
 	$(CXX) -std=c++17 -O2 -Wall -Wextra -Werror -o $@ $< -lopenvdb -ltbb -lImath-3_1
+
+# The cloud example: the OpenVDB file written by make_grid.py (python3-openvdb), the scene beside it, its image.
+VDB_PYTHON ?= $(shell python3 -c 'import pyopenvdb' 2>/dev/null && echo python3 || echo /usr/bin/python3)
+.PHONY: media-cloud bench-media
+media-cloud: $(BUILD)/bin/gtrace $(GTRACE_VDB_READER)
+	@mkdir -p $(BUILD)/media
+	$(VDB_PYTHON) examples/gtrace/media/vdb/make_grid.py cloud $(BUILD)/media/cloud.vdb 64
+	cp examples/gtrace/media/vdb/media_cloud.scene $(BUILD)/media/
+	$(BUILD)/bin/gtrace $(BUILD)/media/media_cloud.scene --integrator path -o $(BUILD)/media/media_cloud.png
+bench-media: $(BUILD)/bin/gtrace $(GTRACE_VDB_READER)
+	@bench/media.sh $(BUILD)
