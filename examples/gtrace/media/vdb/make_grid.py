@@ -40,13 +40,14 @@ def cloud(n):
     c = (np.arange(n) + 0.5) / n * 2.0 - 1.0
     x, y, z = np.meshgrid(c, c, c, indexing="ij")
     d = np.zeros_like(x)
-    for _ in range(24):  # blobs inside the unit sphere
+    for _ in range(40):  # blobs in a flattened ellipsoid: a cumulus with a flat base
         p = rng.normal(size=3)
-        p *= 0.55 * rng.random() ** 0.5 / np.linalg.norm(p)
-        r = 0.18 + 0.2 * rng.random()
+        p *= np.array([0.7, 0.28, 0.55]) * rng.random() ** 0.5 / np.linalg.norm(p)
+        p[1] = abs(p[1]) - 0.2
+        r = 0.14 + 0.22 * rng.random()
         d += np.exp(-((x - p[0]) ** 2 + (y - p[1]) ** 2 + (z - p[2]) ** 2) / (r * r))
-    wobble = 1.0 + 0.35 * np.sin(9 * x + 2) * np.sin(11 * y + 1) * np.sin(7 * z + 3)
-    d = np.clip(d * wobble - 0.35, 0.0, None)
+    wobble = 1.0 + 0.5 * np.sin(13 * x + 2) * np.sin(17 * y + 1) * np.sin(11 * z + 3)
+    d = np.clip(d * wobble - 0.5, 0.0, None) * (y > -0.45)
     d[d < 1e-3] = 0.0
     return float_grid(d, (-n // 2, -n // 2, -n // 2), 2.0 / n)
 
