@@ -117,7 +117,7 @@ ifneq ($(wildcard /usr/include/openvdb/openvdb.h),)
 all: $(GTRACE_VDB_READER)
 $(GTRACE_TEST_BIN) $(BUILD)/bin/gtrace: | $(GTRACE_VDB_READER)
 endif
-$(GTRACE_VDB_READER): examples/gtrace/media/vdb/vdb_read.cpp examples/gtrace/media/vdb/vdb_protocol.h
+$(GTRACE_VDB_READER): examples/gtrace/media/vdb/vdb_read.cpp examples/gtrace/media/vdb_protocol.h
 	@mkdir -p $(dir $@)
 	$(CXX) -std=c++17 -O2 -Wall -Wextra -Werror -o $@ $< -lopenvdb -ltbb -lImath-3_1
 

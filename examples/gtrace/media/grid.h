@@ -38,8 +38,8 @@ typedef struct Grid {
     size_t charged;         /**< bytes reserved against the memory budget for density and brick */
 } Grid;
 
-/** Builds the majorant and minorant bricks of g (density, n filled) and max_density. G_OK, or G_ERR_NOMEM (path names the file
- * in the message); reserves their bytes against the memory budget first. */
+/** Builds the majorant and minorant bricks of g (density, n filled) and max_density. G_OK, or G_ERR_NOMEM (path
+ * names the file in the message); reserves their bytes against the memory budget first (g->charged counts them). */
 int grid_build_bricks(Grid *g, const char *path, GError *err);
 /** Frees the grid's arrays and releases its budget; g itself is the caller's. */
 void grid_release(Grid *g);

@@ -8,7 +8,7 @@
  * The reader is found as $GTRACE_VDB_READER (a path; then nowhere else), else beside the program: DIR/,
  * DIR/generic/ and DIR/../lib/generic/ (the build tree's build/lib/generic/ for build/bin/ and build/tests/). */
 #include "grid_load.h"
-#include "vdb/vdb_protocol.h"
+#include "vdb_protocol.h"
 
 #include <generic/memory.h>
 

@@ -15,14 +15,10 @@
 
 #include <string.h>
 
-/* The largest sample of sigma_t (over the storage of the model's vectors). */
-static double largest_sample(const GColor *c)
+/* The largest band value of sigma_t. */
+static double largest_band(const GColor *c)
 {
-    size_t n = gcolormodel_value_bytes(c->model) / sizeof(float);
-    n = n < (size_t)c->capacity ? n : (size_t)c->capacity;
     double top = 0.0;
-    for (size_t i = 0; i < n; i++)
-        top = c->v[i] > top ? c->v[i] : top;
     for (int b = 0; b < gcolormodel_band_count(c->model); b++) {
         double v = gcolor_band_value(c, b);
         top = v > top ? v : top;
@@ -91,7 +87,7 @@ static int parse_grid(GReader *r, const void *vtable, void **object, GError *err
     if (rc == G_OK) {
         Xform inner = g->place;
         xform_compose(&place, &inner, &g->place);
-        m->sigma_t_max = largest_sample(&m->sigma_t);
+        m->sigma_t_max = largest_band(&m->sigma_t);
         double top = m->sigma_t_max * g->max_density;
         if (!(top <= MEDIUM_MAX_SIGMA))
             rc = greader_error_at(r, err, G_ERR_INVALID, file_line, file_col, "grid: its largest density %g times "

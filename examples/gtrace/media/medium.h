@@ -29,7 +29,7 @@ typedef struct Medium {
     int bands;                        /**< the model's bands */
     int scatters;                     /**< sigma_s is not black */
     const Grid *grid;                 /**< the density of a grid medium (owned by it), else NULL */
-    double sigma_t_max;               /**< grid media: the largest sample of sigma_t (the rate of ratio tracking) */
+    double sigma_t_max;               /**< grid media: the largest band value of sigma_t (ratio tracking's rate) */
 } Medium;
 
 /** The kind `medium`, numbered by media_register (GKIND_MAX before). */

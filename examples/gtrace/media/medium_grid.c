@@ -16,8 +16,9 @@
  * Transmittance (medium_transmit) is residual ratio tracking (Novak, Selle and Jarosz 2014, "Residual ratio tracking
  * for estimating attenuation in participating media") with the bricks' minorants C as the control: the exact
  * exp(-sigma_t integral of C) times ratio tracking of the rest, tentative collisions at the rate (M - C) sigma_t_max,
- * each multiplying the light by 1 - (density - C) sigma_t / ((M - C) sigma_t_max), sample by sample (>= 0:
- * sigma_t_max is the largest sample). A brick of constant density costs no collision and adds no noise. */
+ * each multiplying the light by 1 - (density - C) sigma_t / ((M - C) sigma_t_max), sample by sample (sigma_t_max
+ * is the largest band value: a factor is >= 0 where no sample exceeds its band's value, and the estimate stays
+ * unbiased where one does). A brick of constant density costs no collision and adds no noise. */
 #include "medium.h"
 
 #include <generic/memory.h>

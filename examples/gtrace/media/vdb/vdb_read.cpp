@@ -5,7 +5,7 @@
 // (before the grid's tree is read) and on the bounding box of the active voxels the tree has (after it is read, so
 // a file whose metadata understates its grid is refused, naming both). OpenVDB is not hardened against hostile
 // files: a crash, a hang or an allocation beyond the limit ends this process only, and gtrace reports it.
-#include "vdb_protocol.h"
+#include "../vdb_protocol.h"
 
 #include <openvdb/openvdb.h>
 #include <openvdb/io/File.h>

@@ -1,4 +1,4 @@
-/* vdb_protocol.h - what the grid reader gtrace-vdb (vdb_read.cpp) writes on its standard output for gtrace's grid
+/* vdb_protocol.h - what the grid reader gtrace-vdb (vdb/vdb_read.cpp) writes on its standard output for gtrace's grid
  * media (media/grid_load.c), which start it per file with posix_spawn, so that OpenVDB never runs in gtrace's own
  * process and a hostile file can at worst end the reader.
  *
