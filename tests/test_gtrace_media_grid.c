@@ -2,7 +2,8 @@
  * density renders as the homogeneous medium within noise (rgb and spectrum); through a grid whose density is a
  * gradient, rendered pixels and the delta and ratio tracking estimates along rays match a quadrature of the
  * transmittance within 1%; bad VDB files (missing, truncated, not VDB, lying about their extent, huge, beyond the
- * memory budget, of vectors, with negative densities, a reader that crashes) are refused at file:line:col.
+ * memory budget, of vectors, with negative densities, a reader that crashes) are refused at file:line:col, and
+ * randomly corrupted files load or are refused, never crashing the process.
  * The grids are written by examples/gtrace/media/vdb/make_grid.py (python3-openvdb); without it or without the
  * reader gtrace-vdb the tests skip with a message. */
 #include "test_gtrace_common.h"
@@ -322,6 +323,45 @@ static void test_bad_files(void **state)
     assert_non_null(strstr(err.message, "needs its OpenVDB file"));
 }
 
+/* Files with bytes flipped at random places: each loads or is refused at the file's name; the process never crashes
+ * (the reader does, at worst). */
+static void test_corrupted_files(void **state)
+{
+    (void)state;
+    const char *good = grid_file("gradient");
+    FILE *f = fopen(good, "rb");
+    assert_non_null(f);
+    static unsigned char data[1 << 18];
+    size_t n = fread(data, 1, sizeof data, f);
+    fclose(f);
+    assert_true(n > 1000 && n < sizeof data);
+    static unsigned char bad[1 << 18];
+    uint64_t x = 0x9e3779b97f4a7c15ull;
+    int refused = 0, loaded = 0;
+    for (int k = 0; k < 16; k++) {
+        memcpy(bad, data, n);
+        for (int j = 0; j < 1 + k; j++) { /* 1 to 16 bytes anywhere in the file */
+            x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+            bad[x % n] ^= (unsigned char)(1 + (x >> 32) % 255);
+        }
+        char text[512];
+        snprintf(text, sizeof text, "medium m grid { file \"%s\" sigma_a rgb 1 1 1 }\n",
+                 write_file("corrupt.vdb", bad, n));
+        GError err;
+        gerror_clear(&err);
+        Scene *s = NULL;
+        if (scene_load(write_text("bad.scene", text), NULL, &s, &err) == G_OK) {
+            loaded++;
+            scene_destroy(s);
+        } else {
+            refused++;
+            print_message("%.160s\n", strstr(err.message, "grid: ") ? strstr(err.message, "grid: ") : err.message);
+            assert_non_null(strstr(err.message, "bad.scene:1:22: grid: "));
+        }
+    }
+    print_message("16 corrupted files: %d refused at the file's name, %d loaded\n", refused, loaded);
+}
+
 int main(void)
 {
     GError err;
@@ -334,6 +374,7 @@ int main(void)
         cmocka_unit_test(test_gradient_pixels),
         cmocka_unit_test(test_gradient_tracking),
         cmocka_unit_test(test_bad_files),
+        cmocka_unit_test(test_corrupted_files),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
