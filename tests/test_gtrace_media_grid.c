@@ -263,6 +263,37 @@ static void test_gradient_tracking(void **state)
     scene_destroy(s);
 }
 
+/* The placement: the file's transform (voxels of 0.1 from index -10) and the entry's after it; the density is the
+ * gradient's linear function (trilinear interpolation reproduces it) inside and 0 beyond the voxels' reach. */
+static void test_placement(void **state)
+{
+    (void)state;
+    const char *file = grid_file("gradient");
+    char text[1024];
+    snprintf(text, sizeof text,
+             "medium a grid { file \"%s\" sigma_a rgb 1 1 1 }\n"
+             "medium b grid { file \"%s\" sigma_a rgb 1 1 1 transform { scale 2 translate <1, 0, 0> } }\n"
+             "object sphere { radius 0.5 material dielectric { index 1 } interior a }\n"
+             "object sphere { center <3, 0, 0> radius 0.5 material dielectric { index 1.5 } interior b }\n",
+             file, file);
+    Scene *s = scene_text("placement.scene", text, "rgb");
+    assert_int_equal(s->ninteriors, 2);
+    const Grid *a = s->interiors[0].medium->grid, *b = s->interiors[1].medium->grid;
+    const GVec3 pts[3] = {{0.23, -0.41, 0.07}, {-0.95, 0.9, 0.5}, {0.0, 0.0, 0.0}};
+    for (int i = 0; i < 3; i++) {
+        GVec3 p = pts[i];
+        double want = 0.5 + 0.04 * (10.0 * p.x + 10.0) + 0.03 * (10.0 * p.y + 10.0) + 0.05 * (10.0 * p.z + 10.0);
+        double da = grid_density(a, p), db = grid_density(b, gvec3_add(gvec3_scale(p, 2.0), gvec3(1, 0, 0)));
+        print_message("at <%g, %g, %g>: %.6f, placed by the entry %.6f, the gradient %.6f\n", p.x, p.y, p.z, da, db,
+                      want);
+        assert_near(da, want, 1e-5);
+        assert_near(db, want, 1e-5);
+    }
+    assert_near(grid_density(a, gvec3(1.11, 0, 0)), 0.0, 0.0); /* beyond voxel 10 and its reach */
+    assert_near(grid_density(b, gvec3(0.0, 0, 0)), grid_density(a, gvec3(-0.5, 0, 0)), 1e-6);
+    scene_destroy(s);
+}
+
 /* ---- bad input ---- */
 
 /* A scene with `medium m grid { file "PATH" EXTRA }` is refused at the file name (line 1, column 22), with what in
@@ -373,6 +404,7 @@ int main(void)
         cmocka_unit_test(test_constant_equals_homogeneous),
         cmocka_unit_test(test_gradient_pixels),
         cmocka_unit_test(test_gradient_tracking),
+        cmocka_unit_test(test_placement),
         cmocka_unit_test(test_bad_files),
         cmocka_unit_test(test_corrupted_files),
     };
