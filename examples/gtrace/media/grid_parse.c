@@ -109,7 +109,8 @@ static void destroy_grid(void *p) { medium_free(p); }
 static const GParamInfo grid_params[] = {
     {"file", GPARAM_NAMED, "path", NULL, "an OpenVDB file",
      "the file holding the density grid (read in a separate process, bounded by the memory budget)"},
-    {"grid", GPARAM_NAMED, "name", "density", "a float grid of the file", "the grid of the file to read"},
+    {"grid", GPARAM_NAMED, "string", "density", "a float grid of the file (a name or a quoted string)",
+     "the grid of the file to read"},
     {"sigma_a", GPARAM_NAMED, "color", "0", ">= 0 per band",
      "the absorption coefficient per unit density per scene unit"},
     {"sigma_s", GPARAM_NAMED, "color", "0", ">= 0 per band",
@@ -117,8 +118,9 @@ static const GParamInfo grid_params[] = {
     {"phase", GPARAM_NAMED, "phase", "isotropic", "a phase entry: isotropic, hg { g G }",
      "the distribution of scattered directions"},
     {"scale", GPARAM_NAMED, "number", "1", "[0, 1e9]", "multiplies both coefficients"},
-    {"transform", GPARAM_NAMED, "transform", "none", "{ translate, rotate, rotate_axis, scale ... }",
-     "placed after the file's own transform of the grid's index space"},
+    {"transform", GPARAM_NAMED, "block", "none",
+     "{ translate <x, y, z>  rotate <ax, ay, az>  rotate_axis <axis> DEG  scale S | <x, y, z> ... }",
+     "places the grid after the file's own transform of its index space: the steps in the order written"},
     {NULL},
 };
 
