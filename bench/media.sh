@@ -5,9 +5,10 @@
 #    examples/gtrace/media/vdb/media_cloud.scene (a grid medium of a 64^3 OpenVDB cloud written by make_grid.py) at
 #    96x72, 4 samples per pixel, 1 thread, in every colour model: render time and camera samples per second (from
 #    gtrace's summary line), the fastest of RUNS rounds (default 3).
-# 2. Memory: the peak resident size (GNU time) of gtrace rendering the cloud scene at 8x6, 1 spp, against the same
-#    scene with the grid medium replaced by a homogeneous one (what the grid adds), and the grid's own size: its
-#    dense copy in floats (voxels x 4 bytes) and the .vdb file.
+# 2. Memory: the peak resident size (GNU time) of gtrace rendering the cloud scene with a grid of MEM_N^3 voxels
+#    (default 256: large enough to stand out of the libraries' own memory) at 8x6, 1 spp, against the same scene with
+#    the grid medium replaced by a homogeneous one (what the grid adds), and the grid's own size: its dense copy in
+#    floats (the active voxels' bounding box x 4 bytes) and the .vdb file.
 # A benchmark: it prints figures and never fails on time. Needs python3-openvdb and the reader gtrace-vdb.
 BUILD=${1:-build}
 GT="$BUILD/bin/gtrace"
@@ -53,15 +54,22 @@ for scene in fog cloud; do
 done
 
 # ---- memory ----
+M=${MEM_N:-256}
+$PY "$SRC/examples/gtrace/media/vdb/make_grid.py" cloud "$TMP/cloud.vdb" "$M" || exit 1
 sed 's|grid { file "cloud.vdb" grid density|homogeneous {|; s|transform { scale 1.4 translate <0, 1.6, 0> }||' \
     "$TMP/cloud.scene" > "$TMP/flat.scene"
 peak() { # SCENE: peak resident KiB
     /usr/bin/time -f '%M' "$GT" "$TMP/$1.scene" -o "$TMP/small.exr" --width 8 --height 6 --spp 1 --integrator path \
         --threads 1 -q 2>&1 >/dev/null | tail -1
 }
-grid_kib=$(( N * N * N * 4 / 1024 ))
-file_kib=$(( $(wc -c < "$TMP/cloud.vdb") / 1024 ))
+# the dense copy spans the active voxels' bounding box
+box=$($PY -c "import pyopenvdb as v; lo, hi = v.read('$TMP/cloud.vdb', 'density').evalActiveVoxelBoundingBox()
+print(*(b - a + 1 for a, b in zip(lo, hi)))") || exit 1
+set -- $box
+grid_kib=$(($1 * $2 * $3 * 4 / 1024))
+file_kib=$(($(wc -c < "$TMP/cloud.vdb") / 1024))
 cloud=$(peak cloud) flat=$(peak flat)
 echo
-echo "memory: cloud scene ${cloud} KiB peak resident, the same with a homogeneous medium ${flat} KiB:" \
-     "the grid adds $((cloud - flat)) KiB for a dense copy of ${N}^3 floats = ${grid_kib} KiB (file ${file_kib} KiB)"
+echo "memory: the cloud scene with a ${M}^3 grid ${cloud} KiB peak resident, the same with a homogeneous medium" \
+     "${flat} KiB: the grid adds $((cloud - flat)) KiB for a dense copy of $1x$2x$3 floats, ${grid_kib} KiB" \
+     "(the .vdb file ${file_kib} KiB)"
