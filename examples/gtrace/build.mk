@@ -116,6 +116,14 @@ GTRACE_VDB_READER := $(BUILD)/lib/generic/gtrace-vdb
 ifneq ($(wildcard /usr/include/openvdb/openvdb.h),)
 all: $(GTRACE_VDB_READER)
 $(GTRACE_TEST_BIN) $(BUILD)/bin/gtrace: | $(GTRACE_VDB_READER)
+.PHONY: install-vdb-reader uninstall-vdb-reader
+install: install-vdb-reader
+install-vdb-reader: $(GTRACE_VDB_READER)
+	install -d $(INST)/lib/generic
+	install -m 755 $(GTRACE_VDB_READER) $(INST)/lib/generic/
+uninstall: uninstall-vdb-reader
+uninstall-vdb-reader:
+	rm -f $(INST)/lib/generic/gtrace-vdb
 endif
 $(GTRACE_VDB_READER): examples/gtrace/media/vdb/vdb_read.cpp examples/gtrace/media/vdb_protocol.h
 	@mkdir -p $(dir $@)
