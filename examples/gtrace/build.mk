@@ -107,3 +107,35 @@ install-gtrace-so: $(GTRACE_SO)
 uninstall: uninstall-gtrace-so
 uninstall-gtrace-so:
 	rm -f $(INST)/lib/libgtrace.so
+
+# The OpenVDB reader of grid media (examples/gtrace/media/vdb/, media/grid_load.c): a program of its own that gtrace
+# starts for each grid file, so that OpenVDB (C++, not hardened against hostile files) never runs in gtrace. Built
+# without the sanitizers (it runs as a separate process under its own limits) when OpenVDB is installed; without it
+# grid media are refused with a message naming the reader.
+GTRACE_VDB_READER := $(BUILD)/lib/generic/gtrace-vdb
+ifneq ($(wildcard /usr/include/openvdb/openvdb.h),)
+all: $(GTRACE_VDB_READER)
+$(GTRACE_TEST_BIN) $(BUILD)/bin/gtrace: | $(GTRACE_VDB_READER)
+.PHONY: install-vdb-reader uninstall-vdb-reader
+install: install-vdb-reader
+install-vdb-reader: $(GTRACE_VDB_READER)
+	install -d $(INST)/lib/generic
+	install -m 755 $(GTRACE_VDB_READER) $(INST)/lib/generic/
+uninstall: uninstall-vdb-reader
+uninstall-vdb-reader:
+	rm -f $(INST)/lib/generic/gtrace-vdb
+endif
+$(GTRACE_VDB_READER): examples/gtrace/media/vdb/vdb_read.cpp examples/gtrace/media/vdb_protocol.h
+	@mkdir -p $(dir $@)
+	$(CXX) -std=c++17 -O2 -Wall -Wextra -Werror -o $@ $< -lopenvdb -ltbb -lImath-3_1
+
+# The cloud example: the OpenVDB file written by make_grid.py (python3-openvdb), the scene beside it, its image.
+VDB_PYTHON ?= $(shell python3 -c 'import pyopenvdb' 2>/dev/null && echo python3 || echo /usr/bin/python3)
+.PHONY: media-cloud bench-media
+media-cloud: $(BUILD)/bin/gtrace $(GTRACE_VDB_READER)
+	@mkdir -p $(BUILD)/media
+	$(VDB_PYTHON) examples/gtrace/media/vdb/make_grid.py cloud $(BUILD)/media/cloud.vdb 64
+	cp examples/gtrace/media/vdb/media_cloud.scene $(BUILD)/media/
+	$(BUILD)/bin/gtrace $(BUILD)/media/media_cloud.scene --integrator path -o $(BUILD)/media/media_cloud.png
+bench-media: $(BUILD)/bin/gtrace $(GTRACE_VDB_READER)
+	@bench/media.sh $(BUILD)

@@ -423,7 +423,10 @@ static int medium_segment(PathCtx *p, const Ray *r, const Media *media, const Me
     double t = t_l;
     int rc = G_OK, ev = 0;
     CHECK(gcolor_scratch_uncleared(&w, c->scene->model, c->scratch)); /* written in full by the sampling */
-    CHECK(ev = medium_sample_distance(vol, t_l, uniform(p), uniform(p), &t, &w));
+    if (vol->grid) /* delta tracking through the grid (media/medium_grid.c) */
+        CHECK(ev = medium_grid_flight(vol, r->o, r->d, t_l, &c->rng, &t, &w, c->scratch));
+    else
+        CHECK(ev = medium_sample_distance(vol, t_l, uniform(p), uniform(p), &t, &w));
     double nb = beta * gcolor_brightness(&w);
     if (ev)
         CHECK(medium_vertex(p, r, media, vol, gvec3_madd(r->o, r->d, t), depth, nb, out));

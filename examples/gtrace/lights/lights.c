@@ -118,7 +118,7 @@ int light_transmit(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media
         if (hp.from && (rc = gcolor_copy(light, &tmp)) < 0)
             goto done;
         const Medium *vol = c->volumes ? medium_current(s, &walk) : NULL; /* a participating medium (medium.h) */
-        if (vol && (rc = medium_attenuate(vol, h.t, light, c->scratch)) < 0)
+        if (vol && (rc = medium_transmit(vol, seg.o, dir, h.t, &c->rng, light, c->scratch)) < 0)
             goto done;
         if ((rc = interface_transmit(&hp, dir, light, &nf, &nt, &ri, &tmp)) <= 0 || (rc = gcolor_copy(light, &tmp)) < 0)
             goto done;
@@ -141,7 +141,7 @@ int light_transmit(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media
             goto done;
     }
     const Medium *vol = c->volumes ? medium_current(s, &walk) : NULL;
-    if (vol && left > 0.0 && (rc = medium_attenuate(vol, left, light, c->scratch)) < 0)
+    if (vol && left > 0.0 && (rc = medium_transmit(vol, seg.o, dir, left, &c->rng, light, c->scratch)) < 0)
         goto done;
     *visible = 1;
 done:

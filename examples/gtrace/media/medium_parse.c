@@ -23,10 +23,15 @@ int media_register_kinds(GError *err)
 
 /* ---- the type homogeneous ---- */
 
-static void medium_free(Medium *m)
+void medium_free(Medium *m)
 {
     if (!m)
         return;
+    if (m->grid) {
+        Grid *g = (Grid *)m->grid;
+        grid_release(g);
+        gmem_free(g);
+    }
     gcolor_free(&m->sigma_a);
     gcolor_free(&m->sigma_s);
     gcolor_free(&m->sigma_t);
@@ -37,7 +42,7 @@ static void destroy_medium(void *p) { medium_free(p); }
 
 /* Reads a coefficient: a colour of the file's model, a vector >= 0 and finite in every band; refused at its
  * position otherwise. */
-static int read_sigma(GReader *r, const char *key, GColor *out, GError *err)
+static int read_sigma(GReader *r, const char *type, const char *key, GColor *out, GError *err)
 {
     GToken t;
     int rc = greader_peek(r, &t, err);
@@ -45,12 +50,57 @@ static int read_sigma(GReader *r, const char *key, GColor *out, GError *err)
     if (rc == G_OK)
         rc = greader_color(r, GCOLOR_REFLECTANCE, out, err);
     if (rc == G_OK && out->kind != GCOLOR_VECTOR)
-        rc = greader_error_at(r, err, G_ERR_INVALID, t.line, t.col, "homogeneous: %s must be a plain colour, "
-                              "not a matrix", key);
+        rc = greader_error_at(r, err, G_ERR_INVALID, t.line, t.col, "%s: %s must be a plain colour, "
+                              "not a matrix", type, key);
     if (rc == G_OK && !gcolor_is_nonnegative(out))
-        rc = greader_error_at(r, err, G_ERR_INVALID, t.line, t.col, "homogeneous: %s must be finite and >= 0 in "
-                              "every band (a coefficient per scene unit)", key);
+        rc = greader_error_at(r, err, G_ERR_INVALID, t.line, t.col, "%s: %s must be finite and >= 0 in "
+                              "every band (a coefficient per scene unit)", type, key);
     return rc;
+}
+
+int medium_read_param(GReader *r, const char *type, const char *key, Medium *m, double *scale, GError *err)
+{
+    int rc = 0;
+    if (strcmp(key, "sigma_a") == 0)
+        rc = read_sigma(r, type, key, &m->sigma_a, err);
+    else if (strcmp(key, "sigma_s") == 0)
+        rc = read_sigma(r, type, key, &m->sigma_s, err);
+    else if (strcmp(key, "scale") == 0)
+        rc = greader_number_in(r, 0.0, MEDIUM_MAX_SIGMA, scale, err);
+    else if (strcmp(key, "phase") == 0) {
+        void *ph = NULL;
+        const GTypeInfo *type_info = NULL;
+        if ((rc = greader_object(r, gtrace_kind_phase, &ph, &type_info, err)) == G_OK)
+            m->phase = ph;
+    } else
+        return 0;
+    return rc < 0 ? rc : 1;
+}
+
+int medium_complete(GReader *r, const char *type, Medium *m, double scale, GError *err)
+{
+    const GColorModel *model = greader_colormodel(r);
+    int rc = G_OK;
+    if (!m->sigma_a.v && (rc = gcolor_alloc(&m->sigma_a, model)) < 0)
+        return greader_error(r, err, "out of memory");
+    if (!m->sigma_s.v && (rc = gcolor_alloc(&m->sigma_s, model)) < 0)
+        return greader_error(r, err, "out of memory");
+    if ((rc = gcolor_scale(&m->sigma_a, &m->sigma_a, scale)) < 0 ||
+        (rc = gcolor_scale(&m->sigma_s, &m->sigma_s, scale)) < 0 || (rc = gcolor_alloc(&m->sigma_t, model)) < 0 ||
+        (rc = gcolor_add(&m->sigma_t, &m->sigma_a, &m->sigma_s)) < 0)
+        return greader_error(r, err, "%s: cannot combine the coefficients in colour model '%s'", type,
+                             gcolormodel_name(model));
+    m->bands = gcolormodel_band_count(model);
+    for (int i = 0; i < m->bands; i++) {
+        double st = gcolor_band_value(&m->sigma_t, i);
+        if (!(st >= 0.0 && st <= MEDIUM_MAX_SIGMA))
+            return greader_error(r, err, "%s: sigma_a + sigma_s times scale must lie in [0, %g] in every band (band "
+                                 "%d: %g)", type, MEDIUM_MAX_SIGMA, i, st);
+    }
+    m->scatters = !gcolor_is_black(&m->sigma_s);
+    if (m->bands < 1)
+        return greader_error(r, err, "%s: colour model '%s' has no bands", type, gcolormodel_name(model));
+    return G_OK;
 }
 
 static int parse_homogeneous(GReader *r, const void *vtable, void **object, GError *err)
@@ -60,49 +110,18 @@ static int parse_homogeneous(GReader *r, const void *vtable, void **object, GErr
     if (!m)
         return greader_error(r, err, "out of memory");
     m->phase = phase_isotropic();
-    const GColorModel *model = greader_colormodel(r);
     double scale = 1.0;
     int rc = G_OK;
     const char *key;
     while ((rc = greader_param(r, &key, err)) > 0) {
-        if (strcmp(key, "sigma_a") == 0)
-            rc = read_sigma(r, key, &m->sigma_a, err);
-        else if (strcmp(key, "sigma_s") == 0)
-            rc = read_sigma(r, key, &m->sigma_s, err);
-        else if (strcmp(key, "scale") == 0)
-            rc = greader_number_in(r, 0.0, MEDIUM_MAX_SIGMA, &scale, err);
-        else if (strcmp(key, "phase") == 0) {
-            void *ph = NULL;
-            const GTypeInfo *type = NULL;
-            if ((rc = greader_object(r, gtrace_kind_phase, &ph, &type, err)) == G_OK)
-                m->phase = ph;
-        } else
+        rc = medium_read_param(r, "homogeneous", key, m, &scale, err);
+        if (rc == 0)
             rc = greader_unknown_param(r, "sigma_a, sigma_s, phase, scale", err);
         if (rc < 0)
             break;
     }
-    if (rc == G_OK && !m->sigma_a.v && (rc = gcolor_alloc(&m->sigma_a, model)) < 0)
-        rc = greader_error(r, err, "out of memory");
-    if (rc == G_OK && !m->sigma_s.v && (rc = gcolor_alloc(&m->sigma_s, model)) < 0)
-        rc = greader_error(r, err, "out of memory");
-    if (rc == G_OK && ((rc = gcolor_scale(&m->sigma_a, &m->sigma_a, scale)) < 0 ||
-                       (rc = gcolor_scale(&m->sigma_s, &m->sigma_s, scale)) < 0 ||
-                       (rc = gcolor_alloc(&m->sigma_t, model)) < 0 ||
-                       (rc = gcolor_add(&m->sigma_t, &m->sigma_a, &m->sigma_s)) < 0))
-        rc = greader_error(r, err, "homogeneous: cannot combine the coefficients in colour model '%s'",
-                           gcolormodel_name(model));
-    if (rc == G_OK) {
-        m->bands = gcolormodel_band_count(model);
-        for (int i = 0; i < m->bands && rc == G_OK; i++) {
-            double st = gcolor_band_value(&m->sigma_t, i);
-            if (!(st >= 0.0 && st <= MEDIUM_MAX_SIGMA))
-                rc = greader_error(r, err, "homogeneous: sigma_a + sigma_s times scale must lie in [0, %g] in every "
-                                   "band (band %d: %g)", MEDIUM_MAX_SIGMA, i, st);
-        }
-        m->scatters = !gcolor_is_black(&m->sigma_s);
-    }
-    if (rc == G_OK && m->bands < 1)
-        rc = greader_error(r, err, "homogeneous: colour model '%s' has no bands", gcolormodel_name(model));
+    if (rc == G_OK)
+        rc = medium_complete(r, "homogeneous", m, scale, err);
     if (rc < 0) {
         medium_free(m);
         return rc;
@@ -135,5 +154,7 @@ int media_register_types(GError *err)
                        .destroy = destroy_medium, .params = homogeneous_params};
         rc = gregistry_add(&t, err);
     }
+    if (rc == G_OK)
+        rc = media_register_grid(gtrace_kind_medium, err);
     return rc < 0 ? rc : G_OK;
 }

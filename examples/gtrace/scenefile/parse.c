@@ -100,6 +100,8 @@ static int parse_transform(GReader *r, Xform *xf, GError *err)
     return rc < 0 ? rc : G_OK;
 }
 
+int scene_parse_transform(GReader *r, Xform *xf, GError *err) { return parse_transform(r, xf, err); }
+
 /* ---- objects ---- */
 
 static const ShapeKind shape_kinds[] = {SHAPE_SPHERE, SHAPE_PLANE,    SHAPE_BOX,   SHAPE_DISC,    SHAPE_CYLINDER,

@@ -21,6 +21,9 @@ int scene_parse_camera(GReader *r, const void *vtable, void **object, GError *er
 int gtrace_register_kinds(GError *err);
 /** Registers the kinds and the object, light and camera types with the registry (idempotent). */
 int gtrace_register_types(GError *err);
+/** Reads a `{ translate <v> | rotate <v> | rotate_axis <axis> DEG | scale S | scale <v> ... }` block, applying each
+ * operation after xf (the syntax of an object's transform). */
+int scene_parse_transform(GReader *r, Xform *xf, GError *err);
 /** Builds a scene from a loaded library (name: for messages), which the scene then owns (also on failure:
  * it is destroyed). */
 int scene_from_library(GLibrary *lib, const char *name, Scene **out, GError *err);
