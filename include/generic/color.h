@@ -244,10 +244,19 @@ GENERIC_API GENERIC_NODISCARD int gcolor_pow(GColor *out, const GColor *a, doubl
  * Y its to_xyz gives in the reflectance role), and Russian roulette, light selection and energy checks see one
  * number for one colour. Samples count by magnitude (a value with negative samples is not darker for them), and
  * each sample's weight has a floor of 1e-6 of the largest, so brightness is 0 if and only if c is black; a constant
- * value c gives c. A light's brightness is its Y weighted by D65 once more: in the spectral models the D65 white
- * light's is 1.007, and a saturated light's of the sRGB cube within 11% of its Y as a light (rgb: equal). A model
+ * value c gives c. The brightness has no role, and a light read so is its Y weighted by D65 once more: in the
+ * spectral models the D65 white light's is 1.007, and a saturated light's of the sRGB cube within 11% of its Y as a
+ * light (rgb: equal, as rgb's lights are relative to D65). The brightness of a light: gcolor_brightness_as. A model
  * without a brightness slot gets Y of its own to_xyz in the reflectance role. */
 GENERIC_API double gcolor_brightness(const GColor *c);
+/** Brightness of c read in role. GCOLOR_REFLECTANCE: gcolor_brightness(c). GCOLOR_LIGHT (a vector): Y (CIE 1931) of
+ * the value as a light, equal-energy white 1 (so rgb's white light (1, 1, 1), D65, is 1), through the model's own
+ * to_xyz with every sample taken by magnitude; so the same light has the same brightness in every model (within
+ * 1e-3 over the sRGB cube, tests/test_brightness.c), where gcolor_brightness, which has no role, weighs a spectral
+ * light's samples by D65 once more than its Y does (up to 11% off). 0 only for black (a light outside the eye's
+ * range gets the smallest normal double). A matrix is read as gcolor_brightness reads it. For light selection,
+ * photon powers and emitted light; a path's throughput is a reflectance. */
+GENERIC_API double gcolor_brightness_as(const GColor *c, GColorRole role);
 /** 1 when c is black, 0 otherwise: what gcolor_brightness(c) == 0.0 asks (brightness is 0 only for black), for
  * callers that need no more than that answer. A value that any NaN makes NaN is not black; -0.0 is zero. A vector
  * of a model whose vectors the library reads as plain samples (no fill of its own) is black when every sample is
