@@ -1,15 +1,41 @@
 /* rgb_space.c - the colour literal `rgbspace SPACE R G B`: linear RGB in a named input colour space (srgb,
  * display-p3, rec2020, aces2065-1, acescg: generic/colorspace.h), kept as the linear sRGB of the same colour, which
  * lies outside [0, 1] where the space is wider; the spectral models uplift it from the narrowest of their tables
- * that holds it. A component below 0 in the colour's own space is refused: no colour of a space has one. */
+ * that holds it. A component below 0 in the colour's own space is refused: no colour of a space has one.
+ *
+ * A colour whose components lie within [0, 1] may be a reflectance; when no smooth reflectance within [0, 1] has
+ * it (the sigmoid uplift leaves a CIELAB distance above OUTSIDE_DE: rec2020 0 0.8 0 leaves 33), a warning at the
+ * literal's position says how it is mapped: as a reflectance the spectral models take the nearest smooth
+ * reflectance, and rgb, where it has negative components, refuses it as a material's reflectance (the range
+ * rule); as a light it is exact everywhere. The literal does not know its role, so the warning says both. */
 #include "generic/colorspace.h"
 #include "generic/colorspec.h"
 #include "generic/plugin.h"
 #include "generic/reader.h"
 
+#include <stdio.h>
+
+enum { OUTSIDE_DE = 1 }; /* CIELAB distance the uplift may leave before a colour counts as outside the gamut */
+
+/* Warns at line:col when rgb (linear sRGB, components in [0, 1] in its own space) is outside the reflectances. */
+static void warn_outside_reflectances(GReader *r, int line, int col, int space, const double v[3],
+                                      const double rgb[3])
+{
+    GSpectrumNM s;
+    double de = 0.0;
+    if (guplift_rgb_to_nm(rgb, GCOLOR_REFLECTANCE, &s, &de) != G_OK || !(de > OUTSIDE_DE))
+        return;
+    fprintf(stderr, "%s:%d:%d: warning: rgbspace %s %g %g %g lies outside the reflectances (no smooth reflectance "
+            "within [0, 1] has it: CIELAB distance %.1f left): as a reflectance the spectral models take the nearest "
+            "and rgb refuses its negative components; as a light it is exact\n", greader_file(r), line, col,
+            gcolorspace_name(space), v[0], v[1], v[2], de);
+}
+
 static int parse_rgb_space(GReader *r, const void *vt, void **object, GError *err)
 {
     (void)vt;
+    int line = 0, col = 0;
+    greader_position(r, &line, &col);
     char name[32];
     int rc = greader_ident(r, name, sizeof name, err);
     if (rc != G_OK)
@@ -35,6 +61,8 @@ static int parse_rgb_space(GReader *r, const void *vt, void **object, GError *er
         gcolorspec_destroy(s);
         return greader_error(r, err, "colour space '%s' cannot be converted", name);
     }
+    if (v[0] <= 1.0 && v[1] <= 1.0 && v[2] <= 1.0)
+        warn_outside_reflectances(r, line, col, space, v, s->rgb);
     *object = s;
     return G_OK;
 }

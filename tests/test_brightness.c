@@ -1,7 +1,9 @@
 /* test_brightness.c - one brightness in every model (color.h: Y of the value as a reflectance under D65): the same
  * reflectance has the same brightness in rgb, spectrum9, spectrum and bispectral within 1e-3, a model without a
  * brightness slot gets the same from its conversion, constants and black keep their meaning, and lights stay
- * within the bounds color.h states of their Y as a light. */
+ * within the bounds color.h states of their Y as a light. The brightness of a light (gcolor_brightness_as with
+ * GCOLOR_LIGHT) is its Y as a light in every model within 1e-3 (relative), and so is a reflectance's over random
+ * colours of the cube. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -95,6 +97,66 @@ static void test_lights_bounded(void **state)
     }
 }
 
+/* A generated colour: components uniform in [0, scale) (a 64-bit LCG, the same sequence on every run). */
+static void random_rgb(unsigned long long *seed, double scale, double rgb[3])
+{
+    for (int k = 0; k < 3; k++) {
+        *seed = *seed * 6364136223846793005ULL + 1442695040888963407ULL;
+        rgb[k] = scale * (double)(*seed >> 11) / 9007199254740992.0;
+    }
+}
+
+static double brightness_as(const GColorModel *m, const double rgb[3], GColorRole role)
+{
+    float buf[4096];
+    GColor c;
+    assert_int_equal(gcolor_wrap(&c, m, buf, 4096), G_OK);
+    assert_int_equal(gcolor_from_rgb(&c, rgb, role), G_OK);
+    return gcolor_brightness_as(&c, role);
+}
+
+/* 1000 generated lights (components up to 4, saturated ones included) and reflectances of the cube: every model's
+ * brightness of the same colour read in its role within 1e-3 of the colour's Y (relative for lights). */
+static void test_generated_colours(void **state)
+{
+    (void)state;
+    GColorModel *m[NMODELS];
+    for (int i = 0; i < NMODELS; i++)
+        m[i] = make(models[i]);
+    unsigned long long seed = 20240605ULL;
+    double worst_light[NMODELS] = {0}, worst_refl[NMODELS] = {0};
+    for (int n = 0; n < 1000; n++) {
+        double light[3], refl[3], xyz[3];
+        random_rgb(&seed, 4.0, light);
+        if (n % 4 == 0) /* a saturated light: one or two components 0 */
+            light[n / 4 % 3] = 0.0;
+        random_rgb(&seed, 1.0, refl);
+        gcie_rgb_to_xyz(light, xyz);
+        double y_light = xyz[1];
+        gcie_rgb_to_xyz(refl, xyz);
+        double y_refl = xyz[1];
+        for (int i = 0; i < NMODELS; i++) {
+            worst_light[i] = fmax(worst_light[i], fabs(brightness_as(m[i], light, GCOLOR_LIGHT) / y_light - 1.0));
+            worst_refl[i] = fmax(worst_refl[i], fabs(brightness_as(m[i], refl, GCOLOR_REFLECTANCE) - y_refl));
+        }
+    }
+    for (int i = 0; i < NMODELS; i++) {
+        print_message("%-10s 1000 generated colours: light |brightness / Y - 1| <= %.2e, reflectance "
+                      "|brightness - Y| <= %.2e\n", models[i], worst_light[i], worst_refl[i]);
+        assert_true(worst_light[i] <= 1e-3);
+        assert_true(worst_refl[i] <= 1e-3);
+    }
+    /* black is 0, and a light the eye does not see is not */
+    float buf[4096];
+    GColor c;
+    assert_int_equal(gcolor_wrap(&c, m[2], buf, 4096), G_OK);
+    assert_true(gcolor_brightness_as(&c, GCOLOR_LIGHT) == 0.0);
+    c.v[m[2]->nvalues - 1] = -2.0f; /* 780 nm, negative: by magnitude */
+    assert_true(gcolor_brightness_as(&c, GCOLOR_LIGHT) > 0.0);
+    for (int i = 0; i < NMODELS; i++)
+        gcolormodel_destroy(m[i]);
+}
+
 /* A model without a brightness slot: Y of its conversion, the same as the built-in's within 1e-3. */
 static void test_default_brightness(void **state)
 {
@@ -125,6 +187,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_same_reflectance_same_brightness),
         cmocka_unit_test(test_lights_bounded),
+        cmocka_unit_test(test_generated_colours),
         cmocka_unit_test(test_default_brightness),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

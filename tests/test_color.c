@@ -56,7 +56,7 @@ static void test_create_by_name(void **state)
         int nvalues, capacity;
         double min, step;
     } want[] = {
-        {"rgb", {0, 0, 0, 0}, 3, 3, 0, 0},
+        {"rgb", {0, 0, 0, 0}, 3, 9, 0, 0}, /* room for a 3 x 3 re-radiation matrix */
         {"spectrum9", {0, 0, 0, 0}, 9, 9, 380, 50},
         {"spectrum", {0, 0, 0, 0}, 81, 81, 380, 5},
         {"spectrum", {1, 0, 0, 0}, 401, 401, 380, 1},
@@ -381,7 +381,7 @@ static void test_mismatch(void **state)
     assert_int_equal(gcolormodel_create("spectrum", NULL, &a, &err), G_OK);
     assert_int_equal(gcolormodel_create("spectrum", &ten, &b, &err), G_OK); /* same class, other grid */
     assert_int_equal(gcolormodel_create("rgb", NULL, &c, &err), G_OK);
-    float av[81], bv[81], cv[3];
+    float av[81], bv[81], cv[9];
     GColor x, y, z;
     assert_int_equal(gcolor_wrap(&x, a, av, tu_floats(av)), G_OK);
     assert_int_equal(gcolor_wrap(&y, b, bv, tu_floats(bv)), G_OK);
@@ -508,15 +508,16 @@ static void test_operations_do_not_allocate(void **state)
         assert_int_equal(gcolor_from_rgb(&a, c1, GCOLOR_LIGHT), G_OK);
         assert_int_equal(gcolor_from_rgb(&b, c2, GCOLOR_REFLECTANCE), G_OK);
         int has_matrix = m->capacity > m->nvalues;
-        if (has_matrix) { /* a small fluorescent matrix on the model's grid */
-            int n = m->nsamples;
+        if (has_matrix) { /* a small fluorescent matrix on the model's grid (rgb: 380..780 nm every 10 nm) */
+            int n = m->nsamples > 0 ? m->nsamples : 41;
+            double lo = m->nsamples > 0 ? m->lambda_min : 380.0, step = m->nsamples > 0 ? m->lambda_step : 10.0;
             float *data = calloc((size_t)n * n, sizeof *data);
             for (int k = 0; k < n; k++) {
                 data[k * n + k] = 0.7f;
                 if (k + 3 < n)
                     data[(k + 3) * n + k] = 0.1f;
             }
-            GReradiation r = {m->lambda_min, m->lambda_step, n, m->lambda_min, m->lambda_step, n, data};
+            GReradiation r = {lo, step, n, lo, step, n, data};
             GError err;
             assert_int_equal(gcolor_from_reradiation(&mat, &r, &err), G_OK);
             free(data);

@@ -98,7 +98,7 @@ static void test_line_in_rgb_is_the_cmf(void **state)
     (void)state;
     GLibrary *lib = load_in("rgb", 0, "color laser line 532 2\ncolor e illuminant E\n");
     const GColorModel *m = glibrary_colormodel(lib);
-    float v[3], ve[3];
+    float v[9], ve[9]; /* rgb's capacity: a value may be a 3 x 3 re-radiation matrix */
     GColor c, ce;
     assert_int_equal(gcolor_wrap(&c, m, v, sizeof v / sizeof v[0]), G_OK);
     assert_int_equal(gcolor_wrap(&ce, m, ve, sizeof ve / sizeof ve[0]), G_OK);

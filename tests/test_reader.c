@@ -172,7 +172,7 @@ static void test_colors_rgb_model(void **state)
                          "color d c          # an alias\n"
                          "color white illuminant D65\n");
     const GColorModel *m = glibrary_colormodel(lib);
-    float v[3];
+    float v[9]; /* rgb's capacity: room for a 3 x 3 matrix */
     GColor c;
     assert_int_equal(gcolor_wrap(&c, m, v, tu_floats(v)), G_OK);
     GError err;
@@ -267,7 +267,7 @@ static void test_materials_round_trip(void **state)
     GScratch *s = gscratch_create(0);
     GSurfPoint sp;
     setup_point(&sp, m, s);
-    float iv[3], ov[3];
+    float iv[9], ov[9]; /* rgb's capacity: room for a 3 x 3 matrix */
     GColor illum, out;
     assert_int_equal(gcolor_wrap(&illum, m, iv, tu_floats(iv)), G_OK);
     assert_int_equal(gcolor_wrap(&out, m, ov, tu_floats(ov)), G_OK);
@@ -330,7 +330,7 @@ static void test_dispersion_forms(void **state)
                          "                                        0.00600069867 0.0200179144 103.560653 }\n"
                          "material c dielectric { index cauchy 1.5046 0.0042 }\n");
     const GColorModel *m = glibrary_colormodel(lib);
-    float v[3];
+    float v[9]; /* rgb's capacity: room for a 3 x 3 matrix */
     GColor c;
     assert_int_equal(gcolor_wrap(&c, m, v, tu_floats(v)), G_OK);
     assert_int_equal(gmaterial_refraction_index(glibrary_material(lib, "bk7"), NULL, &c), G_OK);

@@ -27,10 +27,10 @@ static GLibrary *load(const char *text)
     return lib;
 }
 
-static void color_of(GLibrary *lib, const char *name, float v[3])
+static void color_of(GLibrary *lib, const char *name, float v[9]) /* rgb values: room for the model's capacity (a 3 x 3 matrix) */
 {
     GColor c;
-    assert_int_equal(gcolor_wrap(&c, glibrary_colormodel(lib), v, 3), G_OK);
+    assert_int_equal(gcolor_wrap(&c, glibrary_colormodel(lib), v, 9), G_OK);
     assert_int_equal(glibrary_color(lib, name, GCOLOR_REFLECTANCE, &c, NULL), G_OK);
 }
 
@@ -46,7 +46,7 @@ static void test_constants_used(void **state)
                          "color c line 550 power     # an optional trailing number\n"
                          "color d scale half rgb 1 1 1\n"
                          "material m dielectric { index half }\n");
-    float v[3];
+    float v[9];
     color_of(lib, "a", v);
     assert_near(v[0], 0.35, 1e-6);
     assert_near(v[1], 0.35, 1e-6);
@@ -77,8 +77,7 @@ static void test_constants_errors(void **state)
     load_fails("define 3 4\n", "t.mat:1:8: expected a constant's name after 'define', found number 3");
     load_fails("define k\n", "t.mat:2:1: expected a number, found end of file");
     load_fails("define k 2\nmaterial m lambert { reflectance rgb k k k }\n",
-               "t.mat:2:22: lambert: reflectance has the value 2 at sample 0 (must be <= 1; above that only as the fold of re-radiation, whose energy "
-               "under equal-energy light, here 2.00015, is <= 1.00001)");
+               "t.mat:2:22: lambert: reflectance has the value 2 at sample 0 (must be <= 1)");
 }
 
 static void test_many_constants(void **state)
@@ -92,7 +91,7 @@ static void test_many_constants(void **state)
     double t0 = tu_seconds();
     GLibrary *lib = load(text);
     assert_true(tu_seconds() - t0 < 10.0);
-    float v[3];
+    float v[9];
     color_of(lib, "c", v);
     assert_near(v[0], 1, 1e-6);
     assert_near(v[1], 1, 1e-6);

@@ -82,7 +82,7 @@ static const Pair *pair(GLibrary *lib, const char *name) { return glibrary_find(
 
 /* The diffuse colour and the reflection at 30 degrees off the mirror direction of a material. */
 typedef struct Probe {
-    float diffuse[3], refl[3];
+    float diffuse[9], refl[9]; /* rgb's capacity: room for a 3 x 3 matrix */
 } Probe;
 
 static Probe probe(GLibrary *lib, const char *name)
@@ -97,7 +97,7 @@ static Probe probe(GLibrary *lib, const char *name)
     sp.entering = 1;
     sp.material = mat;
     Probe p;
-    float iv[3];
+    float iv[9]; /* rgb's capacity: room for a 3 x 3 matrix */
     GColor illum, out;
     assert_int_equal(gcolor_wrap(&illum, m, iv, tu_floats(iv)), G_OK);
     double one[3] = {1, 1, 1};
@@ -175,7 +175,7 @@ static void test_like_other_kinds(void **state)
     assert_near(pair(lib, "p2")->b, 7, 0);
     assert_near(pair(lib, "p3")->a, 2, 0);
     assert_near(pair(lib, "p3")->b, 7, 0);
-    float v[3];
+    float v[9]; /* rgb's capacity: room for a 3 x 3 matrix */
     GColor c;
     assert_int_equal(gcolor_wrap(&c, glibrary_colormodel(lib), v, tu_floats(v)), G_OK);
     assert_int_equal(glibrary_color(lib, "warm2", GCOLOR_REFLECTANCE, &c, NULL), G_OK);

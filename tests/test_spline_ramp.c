@@ -43,9 +43,9 @@ static double ramp_with(const char *prelude, const char *param, const char *basi
     sp.geometric_normal = gvec3(0, 0, 1);
     sp.entering = 1;
     sp.material = mat;
-    float v[3];
+    float v[9]; /* rgb's capacity: room for a 3 x 3 matrix */
     GColor out;
-    assert_int_equal(gcolor_wrap(&out, m, v, 3), G_OK);
+    assert_int_equal(gcolor_wrap(&out, m, v, 9), G_OK);
     assert_int_equal(gmaterial_diffuse(mat, &sp, &out), G_OK);
     gscratch_destroy(s);
     glibrary_destroy(lib);
@@ -160,8 +160,7 @@ static void test_ramp_refused(void **state)
                "node n spline { t constant colors of tile diffuse { 0 rgb 0.2 0.2 0.2  1 rgb 0.95 0.95 0.95 } }\n",
                "t.mat:5:74: phong: kd + ks + mirror is 1.05 at sample 0; it must not exceed 1 (energy conservation)");
     load_fails("node n spline { t constant colors { 0 rgb 0.2 0.2 0.2  1 rgb 2 2 2 } }\n",
-               "t.mat:1:58: lambert: reflectance has the value 2 at sample 0 (must be <= 1; above that only as the fold of re-radiation, whose energy "
-               "under equal-energy light, here 2.00015, is <= 1.00001)");
+               "t.mat:1:58: lambert: reflectance has the value 2 at sample 0 (must be <= 1)");
     load_fails("node n spline { t constant colors of nothing diffuse { 0 rgb 1 1 1  1 rgb 0 0 0 } }\n",
                "t.mat:1:38: spline: colors of 'nothing': neither a material defined before nor a material type");
     load_fails("node n spline { t constant colors of phong colour { 0 rgb 1 1 1  1 rgb 0 0 0 } }\n",

@@ -4,12 +4,12 @@
  *
  * Re-radiation matrices come in as GReradiation (color.h): measured (a Labsphere BFC file) or made by
  * gfluor_matrix_create from a few band parameters. A material turns the matrix into a colour of its model
- * with gcolor_from_reradiation: a GCOLOR_MATRIX in the bispectral model (light changes wavelength), a plain
- * reflectance in every other model: the matrix's response to an equal-energy light, i.e. for each emission
- * wavelength the sum of its row over the excitations within 380..780 nm, converted as a reflectance (in rgb
- * that is the colour of this spectrum under D65: a day-glo orange folds to about (2.76, 0.24, -0.05), brighter
- * than white in red and slightly out of gamut in blue). fluorescent-varnish folds its whole base term
- * (I - F_int M)^-1 M, so the re-fluorescence of internally reflected light is kept in the folded models too.
+ * with gcolor_from_reradiation: a GCOLOR_MATRIX in the bispectral model (light changes wavelength), a 3 x 3
+ * GCOLOR_MATRIX in rgb (the non-orthogonal reduction, gcolormodel_reduce_reradiation: blue light falling on a
+ * day-glo orange comes back red, and the colour under D65 is the bispectral one), a plain reflectance in spectrum9
+ * and spectrum: the matrix's response to an equal-energy light, i.e. for each emission wavelength the sum of its
+ * row over the excitations within 380..780 nm, converted as a reflectance. fluorescent-varnish hands over its whole
+ * base term (I - F_int M)^-1 M, so the re-fluorescence of internally reflected light is kept in every model.
  * The materials' code only uses the generic colour operations (mul, scale, add, add_scaled on values of the
  * material's model), so the same code serves a matrix and a vector value.
  *
@@ -115,8 +115,8 @@ GENERIC_API void gfluor_phong_default(GFluorPhongParams *p);
  * until the lobe reaches the horizon, and at most w_k ks: the split between specular and diffuse stays the
  * same at every angle, which is what the paper criticises in this model. Energy: albedo <= ks d + (1 - ks)
  * colsum(M) <= 1 for a conserving M. diffuse() is (1 - ks) M; ambient() is ((1 - ks) M + ks d) illum.
- * In non-bispectral models M arrives folded into a reflectance and d as a reflectance: nothing changes in
- * the code. `matrix` may be freed after the call. */
+ * In rgb M arrives reduced to a 3 x 3 matrix, in spectrum9 and spectrum folded into a reflectance, and d as a
+ * reflectance: nothing changes in the code. `matrix` may be freed after the call. */
 GENERIC_API GENERIC_NODISCARD int gfluor_phong_create(const GColorModel *model, const GReradiation *matrix, const GFluorPhongParams *params,
                         GMaterial **out, GError *err);
 

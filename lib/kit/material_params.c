@@ -53,7 +53,7 @@ double gmaterial_param_energy(const GColor *c, int *at)
     if (at)
         *at = 0;
     if (c->kind == GCOLOR_MATRIX) { /* the largest column sum: all that leaves per unit arriving in one sample */
-        int n = m->nsamples;
+        int n = m->nvalues; /* a matrix is nvalues x nvalues (bispectral's samples, rgb's components) */
         double worst = 0.0;
         for (int i = 0; i < n; i++) {
             double sum = 0.0;
@@ -116,7 +116,7 @@ static int check_range(const GColor *src, GColorRole role, double max, const cha
     const GColorModel *m = src->model;
     const char *name = gcolormodel_name(m);
     if (src->kind == GCOLOR_MATRIX) {
-        int n = m->nsamples > 0 ? m->nsamples : 1;
+        int n = m->nvalues;
         for (int i = 0; i < value_count(src); i++)
             if (!isfinite(src->v[i]) || src->v[i] < 0.0f)
                 return gerror_set_param(err, G_ERR_INVALID, param,

@@ -8,8 +8,8 @@
  * directional albedo w_k ks (at most, and nearly exactly until the lobe meets the horizon) at every angle, as
  * (n + 1) / (2 pi) cos^n integrates to 1 over the whole sphere. So the split between the unshifted specular
  * light and the shifted diffuse light does not follow the angle of incidence, the shortcoming the paper
- * points out. The code uses only generic colour operations: M is a matrix in the bispectral model and a
- * folded reflectance in the others. */
+ * points out. The code uses only generic colour operations: M is a matrix in the bispectral model, its 3 x 3
+ * reduction in rgb and a folded reflectance in the others. */
 #include "generic/kit/fluorescent_kit.h"
 #include "generic/plugin.h"
 

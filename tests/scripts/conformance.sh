@@ -3,17 +3,15 @@
 # (gcolor list, gmat types): a new built-in is checked the moment it is registered.
 #   - gcolor check over every colour model;
 #   - gmat check over every material, node and generator type, in every registered colour model (under the
-#     sanitizers each type in one model, the models in turn: the same code paths at a quarter of the cost). The known
-#     violation is listed in KNOWN below with its reason and must still fail (so the list cannot go stale). A
-#     fluorescent material folded into a model without re-radiation matrices reflects more than 1 in a band
-#     under white light (blue light re-radiated as red); gmat check then holds it to energy over all bands, the
-#     rule of material_params.h, which spectrum9 and spectrum meet. In rgb the energy of a colour is that of its
-#     spectral metamer (three numbers do not carry a spectrum): the day-glo fold's metamer sends out 1.19 (phong)
-#     and 1.03 (varnish) of the white light's energy, which is rgb's own conversion error, not a defect of the
-#     materials; those two stay listed. The instance checked is a default one
-#     (`material m TYPE`, no parameters) when the type can be made so, else the first named entry of that type
-#     in examples/materials/*.mat or examples/textures/*.txt; a generator drives an interpolate node between two
-#     lamberts. A type with neither FAILS, asking for an example;
+#     sanitizers each type in one model, the models in turn: the same code paths at a quarter of the cost). A violation
+#     known and tracked would be listed in KNOWN below with its reason and must then still fail (so the list
+#     cannot go stale); the list is empty. A fluorescent material folded into a model without re-radiation
+#     matrices reflects more than 1 in a band under white light (blue light re-radiated as red); gmat check then
+#     holds it to energy over all bands, the rule of material_params.h, which spectrum9 and spectrum meet. rgb
+#     holds the matrix's reduction to 3 x 3 (gcolormodel_reduce_reradiation), whose columns sum to at most 1.
+#     The instance checked is a default one (`material m TYPE`, no parameters) when the type can be made so, else
+#     the first named entry of that type in examples/materials/*.mat or examples/textures/*.txt; a generator
+#     drives an interpolate node between two lamberts. A type with neither FAILS, asking for an example;
 #     gmat check includes the sampling checks (chi2 of sample() against pdf(), the pdf's integral, the weights);
 #   - the modules of tests/plugins/nonconforming.c must be reported as failing, naming the broken property
 #     (misdrawn_lambert: chi2 alone; misflagged_lambert, whose glow a wrong GMAT_NO_EMISSION hides: no-emission
@@ -55,8 +53,7 @@ done < "$TMP/models"
 
 # ---- materials, nodes, generators ----
 # KNOWN: "TYPE MODEL PROPERTY" for each violation known and tracked; a line must keep failing exactly so.
-KNOWN="fluorescent-phong rgb albedo
-fluorescent-varnish rgb albedo"
+KNOWN=""
 known_failure() { # TYPE MODEL: the known failing property, or nothing
     echo "$KNOWN" | awk -v t="$1" -v m="$2" '$1 == t && $2 == m { print $3; exit }'
 }

@@ -13,9 +13,9 @@ int main(void)
         fprintf(stderr, "%s\n", err.message);
         return 1;
     }
-    float s[3];
+    float s[9]; /* rgb's capacity: a value may be a 3 x 3 re-radiation matrix */
     GColor c;
-    if (gcolor_wrap(&c, m, s, 3) != G_OK)
+    if (gcolor_wrap(&c, m, s, 9) != G_OK)
         return 1;
     double w[3] = {1, 1, 1}, xyz[3];
     if (gcolor_from_rgb(&c, w, GCOLOR_LIGHT) != G_OK || gcolor_to_xyz(&c, GCOLOR_LIGHT, xyz) != G_OK)

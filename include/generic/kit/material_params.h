@@ -20,11 +20,11 @@ extern "C" {
  * is left cleared on failure). Every sample must be finite and within the range gmaterial_param_range gives: >= 0 and,
  * with max > 0, <= max, each widened by the conversion error of src's model (gcolormodel_rgb_range), so that every
  * in-gamut colour a file can write is accepted in every model; values within that error are clamped into [0, max].
- * A re-radiation matrix (bispectral) needs entries >= 0 and its energy per excitation sample, its largest column
+ * A re-radiation matrix (bispectral, rgb) needs entries >= 0 and its energy per excitation sample, its largest column
  * sum (gmaterial_param_energy), <= max (widened the same way). A colour of another model is converted through the nm
  * spectrum with the given role and clamped the same way. Above max in a band: in a model without matrices (no
- * from_reradiation slot: rgb, spectrum9, spectrum) a reflectance that exceeds max in some band is what the fold of
- * a re-radiation matrix looks like (blue light re-radiated as red: HERPIORA folds to 2.19 in rgb), and it is
+ * from_reradiation slot: spectrum9, spectrum) a reflectance that exceeds max in some band is what the fold of
+ * a re-radiation matrix looks like (blue light re-radiated as red), and it is
  * accepted, unclamped, when its energy (gmaterial_param_energy) is <= max; in a model with matrices a vector is a plain
  * reflectance and stays <= max in every band, and a matrix needs its energy per excitation sample <= max. The same
  * physical rule in every model: energy is conserved. A complaint reads "<material>: <param> has the value V at
