@@ -69,7 +69,7 @@ typedef struct Object {
     int nesting;      /**< groups and instances nested in this object (0 for a shape) */
     double expansion; /**< Embree instances this object expands to when placed (a shape placed alone: 1) */
     int proto_index;  /**< accel: the prototype scene of a group or instanced shape (-1: none) */
-    unsigned geom_id; /**< Embree geometry id */
+    unsigned geom_id; /**< Embree geometry id of a top-level shape (an analytic one: its batch's user geometry) */
     const struct Medium *interior; /**< the participating medium inside (media/medium.h; NULL: none; borrowed) */
 } Object;
 
