@@ -16,8 +16,10 @@ typedef struct Entry {
 } Entry;
 
 typedef struct KeptText {
-    char *text, *name;
+    char *text, *name; /* text NULL: dropped (no template reads it) */
     size_t len;
+    size_t budget; /* bytes of the text reserved against the memory budget */
+    int used;      /* glibrary_drop_unused_texts: a template reads it */
 } KeptText;
 
 typedef struct Constant {
@@ -121,6 +123,8 @@ void glibrary_destroy(GLibrary *lib)
         gtemplate_free(e->tmpl);
     }
     for (int i = 0; i < lib->ntexts; i++) {
+        if (lib->texts[i].text)
+            gmem_budget_release(lib->texts[i].budget);
         gmem_free(lib->texts[i].text);
         gmem_free(lib->texts[i].name);
     }
@@ -277,13 +281,14 @@ void glibrary_names(const GLibrary *lib, GKind kind, char *buf, size_t size)
 
 /* ---- kept texts, templates, constants ---- */
 
-int glibrary_keep_text(GLibrary *lib, char *text, size_t len, const char *name, int *id)
+int glibrary_keep_text(GLibrary *lib, char *text, size_t len, size_t budget, const char *name, int *id)
 {
     char *n = NULL;
     if (lib->ntexts == lib->captexts) {
         int cap = lib->captexts ? lib->captexts * 2 : 8;
         KeptText *k = gmem_realloc(lib->texts, (size_t)cap * sizeof *k);
         if (!k) {
+            gmem_budget_release(budget);
             gmem_free(text);
             return G_ERR_NOMEM;
         }
@@ -291,12 +296,45 @@ int glibrary_keep_text(GLibrary *lib, char *text, size_t len, const char *name, 
         lib->captexts = cap;
     }
     if (!(n = gmem_strdup(name ? name : "?"))) {
+        gmem_budget_release(budget);
         gmem_free(text);
         return G_ERR_NOMEM;
     }
-    lib->texts[lib->ntexts] = (KeptText){text, n, len};
+    lib->texts[lib->ntexts] = (KeptText){text, n, len, budget, 0};
     *id = lib->ntexts++;
     return G_OK;
+}
+
+/* Marks the text a span of a template reads. */
+static void mark_span(GLibrary *lib, const GSpan *sp)
+{
+    if (sp->text >= 0 && sp->text < lib->ntexts)
+        lib->texts[sp->text].used = 1;
+}
+
+void glibrary_drop_unused_texts(GLibrary *lib)
+{
+    for (int i = 0; i < lib->ntexts; i++)
+        lib->texts[i].used = 0;
+    for (int i = 0; i < lib->count; i++) {
+        const GTemplate *t = lib->entries[i].tmpl;
+        if (!t)
+            continue;
+        mark_span(lib, &t->open);
+        mark_span(lib, &t->close);
+        mark_span(lib, &t->whole);
+        for (int k = 0; k < t->nparams; k++)
+            mark_span(lib, &t->params[k].span);
+    }
+    for (int i = 0; i < lib->ntexts; i++) {
+        KeptText *k = &lib->texts[i];
+        if (k->used || !k->text)
+            continue;
+        gmem_budget_release(k->budget);
+        gmem_free(k->text);
+        k->text = NULL;
+        k->len = 0;
+    }
 }
 
 const char *glibrary_text(const GLibrary *lib, int id, size_t *len, const char **name)
@@ -307,7 +345,7 @@ const char *glibrary_text(const GLibrary *lib, int id, size_t *len, const char *
         *len = lib->texts[id].len;
     if (name)
         *name = lib->texts[id].name;
-    return lib->texts[id].text;
+    return lib->texts[id].text ? lib->texts[id].text : "";
 }
 
 int glibrary_set_template(GLibrary *lib, GKind kind, const char *name, GTemplate *t)
