@@ -571,6 +571,17 @@ static void test_text_budget(void **state)
         glibrary_destroy(lib);
         assert_int_equal(gmem_budget_used(), base);
     }
+    /* a named entry followed by 100,000 bytes of plain entries: only the text up to the end of the named one stays */
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs(named, f);
+    for (int i = 0; i < 2000; i++)
+        fputs("material lambert { reflectance rgb 0.5 0.5 0.5 }\n", f); /* 50 bytes */
+    fclose(f);
+    assert_int_equal(greader_load_file(path, NULL, &lib, &err), G_OK);
+    assert_int_equal(gmem_budget_used() - base, strlen(named)); /* its text to the closing brace, and a NUL */
+    glibrary_destroy(lib);
+    assert_int_equal(gmem_budget_used(), base);
     unlink(path);
 }
 

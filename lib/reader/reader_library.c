@@ -19,7 +19,7 @@ typedef struct KeptText {
     char *text, *name; /* text NULL: dropped (no template reads it) */
     size_t len;
     size_t budget; /* bytes of the text reserved against the memory budget */
-    int used;      /* glibrary_drop_unused_texts: a template reads it */
+    size_t keep;   /* glibrary_drop_unused_texts: the end of the last span a template reads in it (0: none) */
 } KeptText;
 
 typedef struct Constant {
@@ -305,35 +305,55 @@ int glibrary_keep_text(GLibrary *lib, char *text, size_t len, size_t budget, con
     return G_OK;
 }
 
-/* Marks the text a span of a template reads. */
+/* The shortest tail of a text worth cutting off when no template reads it (a smaller one is not worth the copy). */
+#define GLIBRARY_TEXT_TAIL_MIN (64u * 1024u)
+
+/* Notes the end of a span a template reads in its text. */
 static void mark_span(GLibrary *lib, const GSpan *sp)
 {
-    if (sp->text >= 0 && sp->text < lib->ntexts)
-        lib->texts[sp->text].used = 1;
+    if (sp->text >= 0 && sp->text < lib->ntexts && sp->end > lib->texts[sp->text].keep)
+        lib->texts[sp->text].keep = sp->end;
 }
 
 void glibrary_drop_unused_texts(GLibrary *lib)
 {
     for (int i = 0; i < lib->ntexts; i++)
-        lib->texts[i].used = 0;
+        lib->texts[i].keep = 0;
     for (int i = 0; i < lib->count; i++) {
         const GTemplate *t = lib->entries[i].tmpl;
         if (!t)
             continue;
-        mark_span(lib, &t->open);
-        mark_span(lib, &t->close);
-        mark_span(lib, &t->whole);
+        if (t->has_block) {
+            mark_span(lib, &t->open);
+            mark_span(lib, &t->close);
+        }
+        if (t->whole_state == 1)
+            mark_span(lib, &t->whole);
         for (int k = 0; k < t->nparams; k++)
             mark_span(lib, &t->params[k].span);
     }
     for (int i = 0; i < lib->ntexts; i++) {
         KeptText *k = &lib->texts[i];
-        if (k->used || !k->text)
+        if (!k->text || (k->keep && k->len - k->keep < GLIBRARY_TEXT_TAIL_MIN))
             continue;
-        gmem_budget_release(k->budget);
-        gmem_free(k->text);
-        k->text = NULL;
-        k->len = 0;
+        if (!k->keep) {
+            gmem_budget_release(k->budget);
+            gmem_free(k->text);
+            k->text = NULL;
+            k->len = 0;
+            continue;
+        }
+        /* the spans lie in the text's first keep bytes: the rest goes (when the smaller block cannot be had, the
+         * text stays whole, still charged in full) */
+        char *shorter = gmem_realloc(k->text, k->keep + 1);
+        if (shorter)
+            k->text = shorter;
+        k->text[k->keep] = '\0';
+        k->len = k->keep;
+        if (shorter && k->budget > k->keep + 1) {
+            gmem_budget_release(k->budget - (k->keep + 1));
+            k->budget = k->keep + 1;
+        }
     }
 }
 

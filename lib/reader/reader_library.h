@@ -29,8 +29,9 @@ const GColorModel *glibrary_model_or_null(const GLibrary *lib);
  * failure text is freed and its budget released. */
 GENERIC_NODISCARD int glibrary_keep_text(GLibrary *lib, char *text, size_t len, size_t budget, const char *name,
                                          int *id);
-/** Frees the kept texts that no entry's template reads (and releases their budget): a load's texts are needed
- * after it only by `like`, which re-reads named entries. Their names stay (messages name the files). */
+/** Frees the kept texts that no entry's template reads, and cuts off a text's tail of 64 KiB or more after the last
+ * byte a template reads, releasing their budget: a load's texts are needed after it only by `like`, which re-reads
+ * named entries. Their names stay (messages name the files). */
 void glibrary_drop_unused_texts(GLibrary *lib);
 /** A kept text, its length and its file name (NULL when id is not one; "" of length 0 once dropped). */
 const char *glibrary_text(const GLibrary *lib, int id, size_t *len, const char **name);

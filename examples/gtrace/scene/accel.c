@@ -445,20 +445,15 @@ static int build_objects(Scene *s, GError *err)
             rc = add_native(s, s->rtc, o, &gid, err);
             if (rc == G_OK && table_fit(&s->by_geom, &s->inst_by_geom, &s->nby_geom, gid) != G_OK)
                 rc = gerror_set(err, G_ERR_NOMEM, "out of memory");
-            if (rc == G_OK) {
-                o->geom_id = gid;
+            if (rc == G_OK)
                 s->by_geom[gid] = o;
-            }
         } else {
             rc = flatten(s, o, &id, NULL, 1, err);
         }
         if (rc < 0)
             return rc;
     }
-    int rc = batch_attach(s, s->rtc, &s->user, err);
-    for (unsigned i = 0; rc == G_OK && i < s->user.n; i++)
-        s->user.shapes[i]->geom_id = s->user.geom_id;
-    return rc;
+    return batch_attach(s, s->rtc, &s->user, err);
 }
 
 /* The top-level BVH's quality. Embree's high-quality build (spatial splits) costs about 1.4 us of CPU per

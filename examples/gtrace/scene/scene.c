@@ -102,10 +102,30 @@ void object_free(Object *o)
     if (!o)
         return;
     gmaterial_unref(o->material);
-    mesh_free(o->mesh);
-    gmem_free(o->members);
+    if (o->kind == SHAPE_MESH)
+        mesh_free(o->mesh);
+    if (o->kind == SHAPE_GROUP)
+        gmem_free(o->members);
     gmem_free(o);
 }
+
+Object *object_compact(Object *o)
+{
+    if (!o || o->kind != SHAPE_SPHERE || o->has_xf)
+        return o;
+    Object *c = gmem_alloc(OBJECT_HEAD_BYTES);
+    if (!c) {
+        object_free(o);
+        return NULL;
+    }
+    memcpy(c, o, OBJECT_HEAD_BYTES);
+    gmem_free(o); /* its material reference is c's now */
+    return c;
+}
+
+double object_expansion(const Object *o) { return object_is_shape(o) ? 1.0 : o->expansion; }
+
+int object_nesting(const Object *o) { return object_is_shape(o) ? 0 : o->nesting; }
 
 Light *light_new(const GColorModel *model, LightKind kind)
 {
@@ -272,7 +292,7 @@ int object_instance(Object *o, Object *proto, GError *err)
     o->lo = gvec3(INFINITY, INFINITY, INFINITY);
     o->hi = gvec3(-INFINITY, -INFINITY, -INFINITY);
     grow_by(&o->lo, &o->hi, proto);
-    o->nesting = proto->nesting + 1;
-    o->expansion = proto->expansion;
+    o->nesting = object_nesting(proto) + 1;
+    o->expansion = object_expansion(proto);
     return G_OK;
 }

@@ -301,6 +301,8 @@ int scene_parse_object(GReader *r, const void *vtable, void **object, GError *er
         return rc;
     }
     o->material = gmaterial_ref(mat);
+    if (!(o = object_compact(o))) /* a plain sphere keeps its head alone */
+        return greader_error(r, err, "out of memory");
     *object = o;
     return G_OK;
 }
