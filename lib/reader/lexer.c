@@ -146,7 +146,10 @@ static int scan_number(GLexer *lx, GLexToken *out, GError *err)
     int line = lx->line, col = lx->col;
     size_t n = 0;
     int c;
-    while ((c = peekc(lx, 0)) >= 0) {
+    /* a number holds no line break: the column moves by its length */
+    const unsigned char *src = (const unsigned char *)lx->src;
+    for (; lx->pos < lx->len; lx->pos++, lx->col++) {
+        c = src[lx->pos];
         int prev = n ? out->text[n - 1] : 0;
         int sign = (c == '+' || c == '-') && (n == 0 || prev == 'e' || prev == 'E');
         if (!(is_ident_char(c) && c != '-') && !sign)
@@ -154,7 +157,6 @@ static int scan_number(GLexer *lx, GLexToken *out, GError *err)
         if (n + 1 >= GLEX_TEXT_MAX)
             return fail(lx, err, line, col, "%s", "number too long");
         out->text[n++] = (char)c;
-        advance(lx);
     }
     out->text[n] = '\0';
     const char *body = out->text + (out->text[0] == '+' || out->text[0] == '-');
@@ -260,12 +262,12 @@ static int scan(GLexer *lx, GLexToken *out, GError *err)
     if (c == '"')
         return scan_string(lx, out, err);
     if (is_ident_start(c)) {
-        size_t n = 0;
-        while ((c = peekc(lx, 0)) >= 0 && is_ident_char(c)) {
+        size_t n = 0; /* a name holds no line break: the column moves by its length */
+        const unsigned char *src = (const unsigned char *)lx->src;
+        for (; lx->pos < lx->len && is_ident_char(src[lx->pos]); lx->pos++, lx->col++) {
             if (n + 1 >= GLEX_TEXT_MAX)
                 return fail(lx, err, out->tok.line, out->tok.col, "%s", "name longer than 4095 bytes");
-            out->text[n++] = (char)c;
-            advance(lx);
+            out->text[n++] = (char)src[lx->pos];
         }
         out->text[n] = '\0';
         out->tok.type = GTOK_IDENT;
