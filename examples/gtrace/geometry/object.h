@@ -56,6 +56,7 @@ typedef struct Object {
     ShapeKind kind : 8;
     unsigned has_xf : 1;  /**< xf applies (0: object space is world space, xf is not read) */
     unsigned is_part : 1; /**< a member of a group or an instance's prototype: rendered only through them */
+    unsigned charged : 1; /**< object_charge reserved its share against the memory budget (object_free returns it) */
     int proto_index;  /**< accel: the prototype scene of a group or instanced shape (-1: none) */
     GMaterial *material; /**< owned reference */
     GVec3 center;     /**< sphere, disc: centre; plane: a point; cylinder: base centre; quad, triangle: corner */
@@ -74,6 +75,8 @@ typedef struct Object {
     struct Object *proto;        /**< SHAPE_INSTANCE: what it places (borrowed); material is the override or NULL */
     int nesting;      /**< groups and instances nested in this object (0 for a shape) */
     double expansion; /**< Embree instances this object expands to when placed (a shape placed alone: 1) */
+    size_t placement_bytes; /**< group, instance: its placements' bytes reserved by object_charge (0 once a group
+                                 or an instance that places it has taken them over) */
 } Object;
 
 /** The bytes of an object's head (object_compact). */
@@ -87,6 +90,19 @@ void object_free(Object *o);
  * head alone (OBJECT_HEAD_BYTES), o freed; any other object is returned as it is. NULL (o freed with its material
  * reference) when out of memory. */
 Object *object_compact(Object *o);
+/** Bytes an analytic shape is charged against the memory budget for its share of the acceleration structure: its
+ * primitive in the user geometry's hierarchy (Embree's medium or high build, with the build's primitive
+ * reference) and its slot in the batch. A mesh's share is in mesh_budget_bytes. */
+#define OBJECT_SHAPE_ACCEL_BYTES 128
+/** Bytes each placement of a group or an instance is charged: its Embree instance (the geometry, its primitive in
+ * the top-level hierarchy) and its Instance record in the geometry-id table. */
+#define OBJECT_PLACEMENT_BYTES 1024
+/** Reserves against the memory budget what o adds to the scene once its entry is read: an analytic shape its share
+ * of the acceleration structure (OBJECT_SHAPE_ACCEL_BYTES), a group or an instance its placements (expansion x
+ * OBJECT_PLACEMENT_BYTES), taking over the placements its members or prototype had reserved (it places them). A
+ * mesh reserves its own as it is read. G_OK, or G_ERR_NOMEM with the budget's message naming what was asked (the
+ * caller puts the entry's position in front; nothing is reserved then). object_free returns the reservation. */
+int object_charge(Object *o, GError *err);
 /** The expansion (placements when placed) and nesting of an object: a shape's are 1 and 0. */
 double object_expansion(const Object *o);
 int object_nesting(const Object *o);

@@ -188,6 +188,8 @@ static int parse_group(GReader *r, Object *o, GError *err)
     gmem_free(members);
     if (rc >= 0)
         rc = check_nesting(r, o, err);
+    if (rc >= 0 && object_charge(o, err) != G_OK) /* its placements, against the memory budget */
+        rc = greader_locate(r, err);
     return rc < 0 ? rc : G_OK;
 }
 
@@ -293,6 +295,8 @@ int scene_parse_object(GReader *r, const void *vtable, void **object, GError *er
                                "%g: coordinates must be finite and within [-%g, %g]", reach, SCENE_MAX_COORD,
                                SCENE_MAX_COORD, SCENE_MAX_COORD);
         else if (rc < 0)
+            rc = greader_locate(r, err);
+        else if (object_charge(o, err) != G_OK) /* its share of the acceleration structure, or its placements */
             rc = greader_locate(r, err);
     }
     gmem_free(file);
