@@ -26,11 +26,11 @@ TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 stale() { [ ! -s "$DIR/$1" ] || [ "$0" -nt "$DIR/$1" ]; }
 
-# gen N STEM: STEM.scene (gtrace) and STEM.pov (POV-Ray) with N spheres, and STEM_empty.* with none
+# gen N STEM [POV]: STEM.scene (gtrace), with POV also STEM.pov (POV-Ray), with N spheres, and STEM_empty.* with none
 gen() {
     n=$1
     stem=$2
-    stale "$stem.scene" || stale "$stem.pov" || stale "${stem}_empty.scene" || return 0
+    stale "$stem.scene" || { [ -n "${3:-}" ] && stale "$stem.pov"; } || stale "${stem}_empty.scene" || return 0
     printf '%s\n' 'colormodel rgb' \
         'camera pinhole { from <0, 50, -150> at <0, 0, 0> fov 40 width 1 height 1 spp 1 depth 1 }' \
         'light point { position <0, 100, -100> intensity rgb 1000 1000 1000 }' \
@@ -41,19 +41,21 @@ gen() {
         '#declare Red = texture { pigment { rgb <0.7, 0.2, 0.1> } }' \
         '#declare Blue = texture { pigment { rgb <0.1, 0.3, 0.7> } }' > "$DIR/${stem}_empty.pov"
     cp "$DIR/${stem}_empty.scene" "$DIR/$stem.scene"
-    cp "$DIR/${stem}_empty.pov" "$DIR/$stem.pov"
-    awk -v n="$n" -v gt="$DIR/$stem.scene" -v pov="$DIR/$stem.pov" 'BEGIN {
+    [ -z "${3:-}" ] || cp "$DIR/${stem}_empty.pov" "$DIR/$stem.pov"
+    awk -v n="$n" -v gt="$DIR/$stem.scene" -v pov="${3:+$DIR/$stem.pov}" 'BEGIN {
         side = int(sqrt(n) + 0.5)
         for (k = 0; k < n; k++) {
             i = int(k / side); j = k % side
             x = (i - side / 2) * 0.1; z = (j - side / 2) * 0.1; y = (k % 7) * 0.01
-            printf "object sphere { center <%.2f, %.2f, %.2f> radius 0.04 material %s }\n", x, y, z, k % 2 ? "red" : "blue" >> gt
-            printf "sphere { <%.2f, %.2f, %.2f>, 0.04 texture { %s } }\n", x, y, -z, k % 2 ? "Red" : "Blue" >> pov
+            printf "object sphere { center <%.2f, %.2f, %.2f> radius 0.04 material %s }\n", x, y, z,
+                k % 2 ? "red" : "blue" >> gt
+            if (pov != "")
+                printf "sphere { <%.2f, %.2f, %.2f>, 0.04 texture { %s } }\n", x, y, -z, k % 2 ? "Red" : "Blue" >> pov
         }
     }'
 }
 N=1000000
-gen $N spheres
+gen $N spheres pov
 gen 1500000 big
 
 # idle check
@@ -112,11 +114,13 @@ done
 
 echo "== loading 1,000,000 spheres at 1x1, 1 thread: $(nproc) processors, $idle; $RUNS interleaved rounds"
 echo "medians (min-max) over the rounds:"
-echo "  gtrace: $(stats gt_cpu) s CPU, $(stats gt_bytes) bytes per sphere (peak RSS less the scene without spheres; target <= 200)"
+echo "  gtrace: $(stats gt_cpu) s CPU, $(stats gt_bytes) bytes per sphere (peak RSS less the scene without spheres;" \
+    "target <= 200)"
 if [ $HAVE_POV -eq 1 ]; then
     echo "  POV-Ray 3.7: $(stats pov_cpu) s CPU, $(stats pov_bytes) bytes per sphere"
     echo "  whole-process CPU gtrace / POV-Ray: $(stats ratio) (target <= 0.3)"
 else
     echo "  POV-Ray: not installed (Debian package povray); no comparison"
 fi
-echo "a 100 MB file of plain entries ($(($(wc -c < "$DIR/big.scene") / 1000000)) MB, 1,500,000 spheres), gtrace: $(stats big_cpu) s CPU, $(stats big_wall) s wall, $(stats big_mb) MB peak RSS"
+echo "a 100 MB file of plain entries ($(($(wc -c < "$DIR/big.scene") / 1000000)) MB, 1,500,000 spheres), gtrace:" \
+    "$(stats big_cpu) s CPU, $(stats big_wall) s wall, $(stats big_mb) MB peak RSS"
