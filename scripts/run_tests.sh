@@ -9,7 +9,7 @@
 # Each test's output goes to its log: BUILD/tests/NAME.log, and its time to its PASS or FAIL line. A run that fails
 # only because LeakSanitizer's thread tracer crashed ("Tracer caught signal") is repeated once (see --one below).
 # (run_tests.sh --one BUILD PROGRAM runs one test: the form the parallel phase calls.)
-SERIAL="test_image_limits test_reader_constants test_structures test_gtrace_instances
+SERIAL="test_image_limits test_reader_constants test_structures test_gtrace_instances large_scene.sh
 limits.sh reuse_limits.sh structure_limits.sh gtrace_mpi.sh load_linear.sh install_test.sh lazy_oiio.sh"
 
 if [ "${1:-}" = "--one" ]; then

@@ -277,6 +277,43 @@ static void test_limits(void **state)
                  "object instance { of b transform { scale 1e-20 } }\n", "singular");
 }
 
+/* Shapes and placements are charged against the memory budget as their entries are read, the placements a group or
+ * an instance takes over counted once, all returned when the scene is freed; a budget that an entry would cross
+ * refuses the scene at that entry. */
+static void test_memory_budget(void **state)
+{
+    (void)state;
+    char text[2048];
+    snprintf(text, sizeof text, "%s"
+             "object b sphere { material red }\n"
+             "object g group { b instance { of b transform { translate <1, 0, 0> } } }\n"
+             "object instance { of g }\n"
+             "object instance { of g transform { translate <0, 2, 0> } }\n"
+             "object instance { of g transform { translate <0, 4, 0> } }\n", common);
+    GError err;
+    size_t base = gmem_budget_used();
+    Scene *s = load_text(text, &err);
+    assert_non_null(s);
+    /* the plane and b: a share of the acceleration structure each; g's 2 placements (b's group and the nested
+     * instance, which it took over) taken over by each of the 3 instances; the file's text, kept for `like` (it
+     * defines named entries) */
+    size_t want = 2 * OBJECT_SHAPE_ACCEL_BYTES + 3 * 2 * OBJECT_PLACEMENT_BYTES + strlen(text) + 1;
+    assert_int_equal(gmem_budget_used() - base, want);
+    assert_int_equal(accel_build(s, &err), G_OK);
+    assert_int_equal(s->ninstances, 6);
+    scene_destroy(s);
+    assert_int_equal(gmem_budget_used(), base);
+    /* room for all but the last instance: refused at its entry (line 12 of the file), the budget named */
+    gmem_budget_set_limit(base + want - 1);
+    s = load_text(text, &err);
+    assert_null(s);
+    print_message("%s\n", err.message);
+    assert_non_null(strstr(err.message, "scene.scene:12:"));
+    assert_non_null(strstr(err.message, "an instance of 2 placements needs 2.0 KiB, over the memory budget"));
+    assert_int_equal(gmem_budget_used(), base);
+    gmem_budget_set_limit(0);
+}
+
 int main(void)
 {
     if (generic_register_builtins(NULL) != G_OK)
@@ -284,6 +321,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_instance_like_by_hand), cmocka_unit_test(test_mesh_instance),
         cmocka_unit_test(test_prototypes),            cmocka_unit_test(test_limits),
+        cmocka_unit_test(test_memory_budget),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -5,6 +5,8 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <cmocka.h>
+#include <stdio.h>
+#include <stdlib.h>
 
 #include <string.h>
 
@@ -42,6 +44,44 @@ static void expect_error(const char *text, const char *message)
     while (rc == G_OK && l.t.tok.type != GTOK_EOF);
     assert_int_equal(rc, G_ERR_PARSE);
     assert_string_equal(l.err.message, message);
+}
+
+/* Every number is read as strtod reads it, bit for bit, whether or not the lexer's exact shortcut takes it: decimals
+ * of 1 to 19 significant digits, with and without exponents (the shortcut's bounds, 15 digits and |e| <= 22, and
+ * either side of them), signs, leading and trailing zeros. */
+static void test_numbers_match_strtod(void **state)
+{
+    (void)state;
+    uint64_t x = 88172645463325252ull;
+    char text[64];
+    for (int i = 0; i < 200000; i++) {
+        x ^= x << 13, x ^= x >> 7, x ^= x << 17;
+        int digits = 1 + (int)(x % 19), point = (int)((x >> 8) % (unsigned)(digits + 2)) - 1;
+        int zeros = (int)((x >> 16) % 4), exp = (int)((x >> 24) % 61) - 30, form = (int)((x >> 32) % 4);
+        size_t n = 0;
+        if (form == 1)
+            text[n++] = '-';
+        for (int k = 0; k < zeros; k++)
+            text[n++] = '0';
+        uint64_t y = x * 2862933555777941757ull + 3037000493ull;
+        for (int k = 0; k < digits; k++) {
+            if (k == point)
+                text[n++] = '.';
+            text[n++] = (char)('0' + (y >> 60) % 10);
+            y = y * 2862933555777941757ull + 3037000493ull;
+        }
+        if (form >= 2)
+            n += (size_t)snprintf(text + n, sizeof text - n, "e%d", exp);
+        text[n] = '\0';
+        Lexed l;
+        start(&l, text);
+        assert_int_equal(glexer_next(&l.lx, &l.t, &l.err), G_OK);
+        assert_int_equal(l.t.tok.type, GTOK_NUMBER);
+        double want = strtod(text, NULL);
+        if (memcmp(&l.t.tok.number, &want, sizeof want) != 0)
+            print_error("%s: lexer %.17g, strtod %.17g\n", text, l.t.tok.number, want);
+        assert_memory_equal(&l.t.tok.number, &want, sizeof want);
+    }
 }
 
 static void test_tokens_and_positions(void **state)
@@ -135,6 +175,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_tokens_and_positions),
         cmocka_unit_test(test_numbers),
+        cmocka_unit_test(test_numbers_match_strtod),
         cmocka_unit_test(test_crlf_and_comments),
         cmocka_unit_test(test_errors),
         cmocka_unit_test(test_long_token),

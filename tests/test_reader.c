@@ -504,7 +504,7 @@ static void test_limits(void **state)
                      G_ERR_PARSE);
     assert_string_equal(err.message, "t.mat:1:33: nesting deeper than 3 levels (entries, blocks and includes)");
 
-    /* size: a sparse file one byte over 16 MiB is refused before it is read */
+    /* size: a sparse file one byte over a 16 MiB memory budget is refused before it is read, the budget named */
     const char *build = getenv("GENERIC_BUILD_DIR");
     char dir[4096], big[4200], main_file[4200];
     snprintf(dir, sizeof dir, "%s/tmp_reader_limits", build ? build : "/tmp");
@@ -513,22 +513,76 @@ static void test_limits(void **state)
     snprintf(main_file, sizeof main_file, "%s/main.mat", dir);
     int fd = open(big, O_CREAT | O_TRUNC | O_WRONLY, 0644);
     assert_true(fd >= 0);
-    assert_int_equal(ftruncate(fd, GREADER_DEFAULT_MAX_FILE_SIZE + 1), 0);
+    assert_int_equal(ftruncate(fd, (16 << 20) + 1), 0);
     close(fd);
     FILE *f = fopen(main_file, "w");
     fputs("# includes a file that is too big\ninclude \"big.mat\"\n", f);
     fclose(f);
-    assert_int_equal(greader_load_file(main_file, NULL, &lib, &err), G_ERR_IO);
+    size_t in_use = gmem_budget_used();
+    gmem_budget_set_limit((16u << 20) + in_use);
+    assert_int_equal(greader_load_file(main_file, NULL, &lib, &err), G_ERR_NOMEM);
     char want[16384];
-    snprintf(want, sizeof want, "%s:2:9: cannot include: \"%s\" is 16777217 bytes, more than the limit of 16777216 bytes",
-             main_file, big);
-    assert_string_equal(err.message, want);
-    /* a smaller limit set by the caller */
+    snprintf(want, sizeof want, "%s:2:9: cannot include: the file \"%s\" (16777217 bytes) needs 16.0 MiB, over the "
+             "memory budget", main_file, big);
+    assert_non_null(strstr(err.message, want));
+    assert_int_equal(gmem_budget_used(), in_use);
+    gmem_budget_set_limit(0);
+    /* a limit of the caller's own */
     GReaderOptions small = {.max_file_size = 16};
     assert_int_equal(greader_load_file(main_file, &small, &lib, &err), G_ERR_IO);
+    snprintf(want, sizeof want, "\"%s\" is 52 bytes, more than the limit of 16 bytes", main_file);
+    assert_string_equal(err.message, want);
     unlink(big);
     unlink(main_file);
     rmdir(dir);
+}
+
+/* The texts of a load are charged to the memory budget while they are read, and after it only those that `like`
+ * may re-read (the texts of named entries) stay charged, until the library is destroyed. */
+static void test_text_budget(void **state)
+{
+    (void)state;
+    const char *build = getenv("GENERIC_BUILD_DIR");
+    char path[4200];
+    snprintf(path, sizeof path, "%s/tmp_reader_text_budget.mat", build ? build : "/tmp");
+    size_t base = gmem_budget_used();
+    GLibrary *lib = NULL;
+    GError err;
+    const char *plain = "material lambert { reflectance rgb 0.5 0.5 0.5 }\n", *named = "material m lambert { }\n";
+    for (int k = 0; k < 2; k++) {
+        FILE *f = fopen(path, "w");
+        assert_non_null(f);
+        fputs(k ? named : plain, f);
+        fclose(f);
+        assert_int_equal(greader_load_file(path, NULL, &lib, &err), G_OK);
+        /* the plain entry's text is freed at the end of the load, the named one's kept (its size and NUL) */
+        assert_int_equal(gmem_budget_used() - base, k ? strlen(named) + 1 : 0);
+        if (k) { /* a later load derives from m: its kept text is re-read */
+            char second[4300];
+            snprintf(second, sizeof second, "%s.like", path);
+            f = fopen(second, "w");
+            assert_non_null(f);
+            fputs("material n like m { }\n", f);
+            fclose(f);
+            assert_int_equal(glibrary_load_file(lib, second, NULL, &err), G_OK);
+            assert_non_null(glibrary_material(lib, "n"));
+            unlink(second);
+        }
+        glibrary_destroy(lib);
+        assert_int_equal(gmem_budget_used(), base);
+    }
+    /* a named entry followed by 100,000 bytes of plain entries: only the text up to the end of the named one stays */
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs(named, f);
+    for (int i = 0; i < 2000; i++)
+        fputs("material lambert { reflectance rgb 0.5 0.5 0.5 }\n", f); /* 50 bytes */
+    fclose(f);
+    assert_int_equal(greader_load_file(path, NULL, &lib, &err), G_OK);
+    assert_int_equal(gmem_budget_used() - base, strlen(named)); /* its text to the closing brace, and a NUL */
+    glibrary_destroy(lib);
+    assert_int_equal(gmem_budget_used(), base);
+    unlink(path);
 }
 
 /* ---- no leak on any error path: fail the n-th allocation for every n ---- */
@@ -584,6 +638,7 @@ int main(void)
         cmocka_unit_test(test_bad_corpus),
         cmocka_unit_test(test_unknown_material_lists_types),
         cmocka_unit_test(test_limits),
+        cmocka_unit_test(test_text_budget),
         cmocka_unit_test(test_allocation_failures),
     };
     return cmocka_run_group_tests(tests, register_test_types, NULL);

@@ -623,9 +623,11 @@ static int gtrace_main(int argc, char **argv)
     } else if (rc == G_OK) {
         rc = render_image(scene, &rs, &fb, &st, &err);
     }
+    /* the note goes only into a crop (output_write_piece): a whole image does not re-read the scene file for it */
+    int crop = fb.full_width > 0 && (fb.width != fb.full_width || fb.height != fb.full_height);
     if (rc == G_OK)
         rc = output_write_piece(o.out, &fb, exposure, o.have_display ? &o.display : NULL,
-                                piece_note(&o, scene, &rs, note, sizeof note), &err);
+                                crop ? piece_note(&o, scene, &rs, note, sizeof note) : NULL, &err);
     if (rc == G_OK)
         report(&o, scene, &rs, &fb, &st, dist ? dist_size(dist) : 0);
     else if (rc < 0)

@@ -73,8 +73,6 @@ extern "C" {
 
 /** Default limit on nesting (blocks, nested entries and includes together). */
 #define GREADER_DEFAULT_MAX_DEPTH 64
-/** Default limit on the size of one file in bytes (16 MiB). */
-#define GREADER_DEFAULT_MAX_FILE_SIZE (16u * 1024u * 1024u)
 
 /* ======================================================================================================
  * Loading files
@@ -98,7 +96,8 @@ typedef struct GReaderOptions {
     const GColorModelOptions *colormodel_options;
     /** Nesting limit; 0 = GREADER_DEFAULT_MAX_DEPTH. */
     int max_depth;
-    /** Per-file size limit in bytes; 0 = GREADER_DEFAULT_MAX_FILE_SIZE. */
+    /** Per-file size limit in bytes; 0: none of its own. Every file's text is reserved against the memory budget
+     * (memory.h, gmem_budget_reserve) before it is read, so the budget limits the files of a load together. */
     size_t max_file_size;
     /** Non-zero refuses `plugin` statements (for files from untrusted sources), whatever allow_plugins says. */
     int no_plugins;

@@ -397,12 +397,14 @@ int gfile_read_all(const char *path, size_t limit, char **text, size_t *len, GEr
     if (fd < 0)
         return fd;
     struct stat st;
-    if (fstat(fd, &st) == 0 && (unsigned long long)st.st_size > limit) {
+    int sized = fstat(fd, &st) == 0;
+    if (sized && (unsigned long long)st.st_size > limit) {
         close(fd);
         return gerror_set(err, G_ERR_IO, "\"%s\" is %lld bytes, more than the limit of %zu bytes", path,
                           (long long)st.st_size, limit);
     }
-    size_t cap = 4096, n = 0;
+    /* room for the whole file, its NUL and the read that finds its end: no copy while it is read */
+    size_t cap = sized && (size_t)st.st_size > 4094 ? (size_t)st.st_size + 2 : 4096, n = 0;
     char *buf = gmem_alloc(cap);
     int rc = buf ? G_OK : gerror_set(err, G_ERR_NOMEM, "out of memory reading \"%s\"", path);
     while (rc == G_OK) {

@@ -54,8 +54,8 @@ int gtypeinfo_complete(GTypeInfo *info, GError *err)
 static const GTypeInfo *find_locked(GKind kind, const char *name)
 {
     Table *t = &tables[kind];
-    for (int i = 0; i < t->count; i++)
-        if (strcmp(t->items[i]->name, name) == 0)
+    for (int i = 0; i < t->count; i++) /* the first bytes first: most names looked up are not types */
+        if (t->items[i]->name[0] == name[0] && strcmp(t->items[i]->name, name) == 0)
             return t->items[i];
     return NULL;
 }

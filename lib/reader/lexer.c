@@ -68,6 +68,52 @@ static int is_ident_start(int c) { return isalpha(c) || c == '_'; }
 static int is_ident_char(int c) { return isalnum(c) || c == '_' || c == '.' || c == '-'; }
 
 /* Checks the strict decimal form [+-]?(D+(.D*)?|.D+)([eE][+-]?D+)? */
+/* A number of valid_number's form read exactly without strtod, when that is cheap: at most 15 significant digits
+ * M and a decimal exponent e (the value M x 10^e) with |e| <= 22. M and 10^|e| are then exact doubles, so the one
+ * multiplication or division rounds the exact value once, to nearest: the correctly rounded result strtod gives
+ * (Clinger's fast path). 1 with *v, or 0 when the number needs strtod. */
+static int fast_number(const char *s, double *v)
+{
+    static const double pow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                   1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    int neg = *s == '-';
+    if (*s == '+' || *s == '-')
+        s++;
+    unsigned long long m = 0;
+    int sig = 0, e = 0;
+    for (; isdigit((unsigned char)*s); s++)
+        if (m || *s != '0') {
+            if (++sig > 15)
+                return 0;
+            m = 10 * m + (unsigned)(*s - '0');
+        }
+    if (*s == '.')
+        for (s++; isdigit((unsigned char)*s); s++) {
+            if (m || *s != '0') {
+                if (++sig > 15)
+                    return 0;
+                m = 10 * m + (unsigned)(*s - '0');
+            }
+            e--;
+        }
+    if (*s == 'e' || *s == 'E') {
+        s++;
+        int eneg = *s == '-', x = 0;
+        if (*s == '+' || *s == '-')
+            s++;
+        for (; isdigit((unsigned char)*s); s++)
+            if ((x = 10 * x + (*s - '0')) > 1000)
+                return 0;
+        e += eneg ? -x : x;
+    }
+    if (*s || e > 22 || e < -22)
+        return 0;
+    double d = (double)m;
+    d = e >= 0 ? d * pow10[e] : d / pow10[-e];
+    *v = neg ? -d : d;
+    return 1;
+}
+
 static int valid_number(const char *s)
 {
     const char *p = s;
@@ -100,7 +146,10 @@ static int scan_number(GLexer *lx, GLexToken *out, GError *err)
     int line = lx->line, col = lx->col;
     size_t n = 0;
     int c;
-    while ((c = peekc(lx, 0)) >= 0) {
+    /* a number holds no line break: the column moves by its length */
+    const unsigned char *src = (const unsigned char *)lx->src;
+    for (; lx->pos < lx->len; lx->pos++, lx->col++) {
+        c = src[lx->pos];
         int prev = n ? out->text[n - 1] : 0;
         int sign = (c == '+' || c == '-') && (n == 0 || prev == 'e' || prev == 'E');
         if (!(is_ident_char(c) && c != '-') && !sign)
@@ -108,16 +157,19 @@ static int scan_number(GLexer *lx, GLexToken *out, GError *err)
         if (n + 1 >= GLEX_TEXT_MAX)
             return fail(lx, err, line, col, "%s", "number too long");
         out->text[n++] = (char)c;
-        advance(lx);
     }
     out->text[n] = '\0';
     const char *body = out->text + (out->text[0] == '+' || out->text[0] == '-');
-    if (strcasecmp(body, "nan") == 0 || strcasecmp(body, "inf") == 0 || strcasecmp(body, "infinity") == 0)
+    int c0 = tolower((unsigned char)*body);
+    if ((c0 == 'n' || c0 == 'i') &&
+        (strcasecmp(body, "nan") == 0 || strcasecmp(body, "inf") == 0 || strcasecmp(body, "infinity") == 0))
         return fail(lx, err, line, col, "'%s' is not allowed: numbers must be finite", out->text);
     if (!valid_number(out->text))
         return fail(lx, err, line, col, "bad number '%s'", out->text);
     errno = 0;
-    double v = gnum_strtod(out->text, NULL);
+    double v;
+    if (!fast_number(out->text, &v))
+        v = gnum_strtod(out->text, NULL);
     if (!isfinite(v))
         return fail(lx, err, line, col, "number '%s' is out of range", out->text);
     out->tok.type = GTOK_NUMBER;
@@ -210,12 +262,12 @@ static int scan(GLexer *lx, GLexToken *out, GError *err)
     if (c == '"')
         return scan_string(lx, out, err);
     if (is_ident_start(c)) {
-        size_t n = 0;
-        while ((c = peekc(lx, 0)) >= 0 && is_ident_char(c)) {
+        size_t n = 0; /* a name holds no line break: the column moves by its length */
+        const unsigned char *src = (const unsigned char *)lx->src;
+        for (; lx->pos < lx->len && is_ident_char(src[lx->pos]); lx->pos++, lx->col++) {
             if (n + 1 >= GLEX_TEXT_MAX)
                 return fail(lx, err, out->tok.line, out->tok.col, "%s", "name longer than 4095 bytes");
-            out->text[n++] = (char)c;
-            advance(lx);
+            out->text[n++] = (char)src[lx->pos];
         }
         out->text[n] = '\0';
         out->tok.type = GTOK_IDENT;

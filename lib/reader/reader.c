@@ -417,8 +417,6 @@ static void reader_init(GReader *r, GLibrary *lib, const GReaderOptions *opt)
         r->opt = *opt;
     if (r->opt.max_depth <= 0)
         r->opt.max_depth = GREADER_DEFAULT_MAX_DEPTH;
-    if (r->opt.max_file_size == 0)
-        r->opt.max_file_size = GREADER_DEFAULT_MAX_FILE_SIZE;
     gtokens_init(&r->ts, lib);
 }
 
@@ -465,6 +463,7 @@ static int run(GLibrary *lib, const GReaderOptions *opt, int create_model, const
     if (rc == G_OK)
         rc = resolve_model(&r, err); /* a file without entries */
     reader_fini(&r);
+    glibrary_drop_unused_texts(lib);
     return rc;
 }
 

@@ -16,8 +16,10 @@ typedef struct Entry {
 } Entry;
 
 typedef struct KeptText {
-    char *text, *name;
+    char *text, *name; /* text NULL: dropped (no template reads it) */
     size_t len;
+    size_t budget; /* bytes of the text reserved against the memory budget */
+    size_t keep;   /* glibrary_drop_unused_texts: the end of the last span a template reads in it (0: none) */
 } KeptText;
 
 typedef struct Constant {
@@ -121,6 +123,8 @@ void glibrary_destroy(GLibrary *lib)
         gtemplate_free(e->tmpl);
     }
     for (int i = 0; i < lib->ntexts; i++) {
+        if (lib->texts[i].text)
+            gmem_budget_release(lib->texts[i].budget);
         gmem_free(lib->texts[i].text);
         gmem_free(lib->texts[i].name);
     }
@@ -277,13 +281,14 @@ void glibrary_names(const GLibrary *lib, GKind kind, char *buf, size_t size)
 
 /* ---- kept texts, templates, constants ---- */
 
-int glibrary_keep_text(GLibrary *lib, char *text, size_t len, const char *name, int *id)
+int glibrary_keep_text(GLibrary *lib, char *text, size_t len, size_t budget, const char *name, int *id)
 {
     char *n = NULL;
     if (lib->ntexts == lib->captexts) {
         int cap = lib->captexts ? lib->captexts * 2 : 8;
         KeptText *k = gmem_realloc(lib->texts, (size_t)cap * sizeof *k);
         if (!k) {
+            gmem_budget_release(budget);
             gmem_free(text);
             return G_ERR_NOMEM;
         }
@@ -291,12 +296,65 @@ int glibrary_keep_text(GLibrary *lib, char *text, size_t len, const char *name, 
         lib->captexts = cap;
     }
     if (!(n = gmem_strdup(name ? name : "?"))) {
+        gmem_budget_release(budget);
         gmem_free(text);
         return G_ERR_NOMEM;
     }
-    lib->texts[lib->ntexts] = (KeptText){text, n, len};
+    lib->texts[lib->ntexts] = (KeptText){text, n, len, budget, 0};
     *id = lib->ntexts++;
     return G_OK;
+}
+
+/* The shortest tail of a text worth cutting off when no template reads it (a smaller one is not worth the copy). */
+#define GLIBRARY_TEXT_TAIL_MIN (64u * 1024u)
+
+/* Notes the end of a span a template reads in its text. */
+static void mark_span(GLibrary *lib, const GSpan *sp)
+{
+    if (sp->text >= 0 && sp->text < lib->ntexts && sp->end > lib->texts[sp->text].keep)
+        lib->texts[sp->text].keep = sp->end;
+}
+
+void glibrary_drop_unused_texts(GLibrary *lib)
+{
+    for (int i = 0; i < lib->ntexts; i++)
+        lib->texts[i].keep = 0;
+    for (int i = 0; i < lib->count; i++) {
+        const GTemplate *t = lib->entries[i].tmpl;
+        if (!t)
+            continue;
+        if (t->has_block) {
+            mark_span(lib, &t->open);
+            mark_span(lib, &t->close);
+        }
+        if (t->whole_state == 1)
+            mark_span(lib, &t->whole);
+        for (int k = 0; k < t->nparams; k++)
+            mark_span(lib, &t->params[k].span);
+    }
+    for (int i = 0; i < lib->ntexts; i++) {
+        KeptText *k = &lib->texts[i];
+        if (!k->text || (k->keep && k->len - k->keep < GLIBRARY_TEXT_TAIL_MIN))
+            continue;
+        if (!k->keep) {
+            gmem_budget_release(k->budget);
+            gmem_free(k->text);
+            k->text = NULL;
+            k->len = 0;
+            continue;
+        }
+        /* the spans lie in the text's first keep bytes: the rest goes (when the smaller block cannot be had, the
+         * text stays whole, still charged in full) */
+        char *shorter = gmem_realloc(k->text, k->keep + 1);
+        if (shorter)
+            k->text = shorter;
+        k->text[k->keep] = '\0';
+        k->len = k->keep;
+        if (shorter && k->budget > k->keep + 1) {
+            gmem_budget_release(k->budget - (k->keep + 1));
+            k->budget = k->keep + 1;
+        }
+    }
 }
 
 const char *glibrary_text(const GLibrary *lib, int id, size_t *len, const char **name)
@@ -307,7 +365,7 @@ const char *glibrary_text(const GLibrary *lib, int id, size_t *len, const char *
         *len = lib->texts[id].len;
     if (name)
         *name = lib->texts[id].name;
-    return lib->texts[id].text;
+    return lib->texts[id].text ? lib->texts[id].text : "";
 }
 
 int glibrary_set_template(GLibrary *lib, GKind kind, const char *name, GTemplate *t)

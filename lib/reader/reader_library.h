@@ -25,9 +25,15 @@ const GColorModel *glibrary_model_or_null(const GLibrary *lib);
 /* ---- kept texts, templates and constants ---- */
 
 /** Keeps a source text for the life of the library (`like` re-reads it); takes ownership of text (gmem_alloc'd,
- * NUL-terminated) and copies name. *id names it. On failure text is freed. */
-GENERIC_NODISCARD int glibrary_keep_text(GLibrary *lib, char *text, size_t len, const char *name, int *id);
-/** A kept text, its length and its file name (NULL when id is not one). */
+ * NUL-terminated) and of its `budget` bytes reserved against the memory budget, and copies name. *id names it. On
+ * failure text is freed and its budget released. */
+GENERIC_NODISCARD int glibrary_keep_text(GLibrary *lib, char *text, size_t len, size_t budget, const char *name,
+                                         int *id);
+/** Frees the kept texts that no entry's template reads, and cuts off a text's tail of 64 KiB or more after the last
+ * byte a template reads, releasing their budget: a load's texts are needed after it only by `like`, which re-reads
+ * named entries. Their names stay (messages name the files). */
+void glibrary_drop_unused_texts(GLibrary *lib);
+/** A kept text, its length and its file name (NULL when id is not one; "" of length 0 once dropped). */
 const char *glibrary_text(const GLibrary *lib, int id, size_t *len, const char **name);
 /** Gives the template to the named entry of a kind (the library frees it); on failure it is freed. */
 GENERIC_NODISCARD int glibrary_set_template(GLibrary *lib, GKind kind, const char *name, GTemplate *t);

@@ -4,13 +4,18 @@
 #include "generic/memory.h"
 
 #include <errno.h>
+#include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 void greader_source_free(GReaderSource *s)
 {
     if (!s)
         return;
+    if (s->text)
+        gmem_budget_release(s->budget);
     gmem_free(s->text);
     gmem_free(s->name);
     gmem_free(s->dir);
@@ -27,7 +32,23 @@ int greader_source_file(char *name, size_t max_size, GReaderSource **out, GError
         return gerror_set(err, G_ERR_NOMEM, "out of memory");
     }
     s->name = name;
-    int rc = gfile_read_all(name, max_size, &s->text, &s->len, err);
+    /* the text is charged to the memory budget before it is read: its size now, and no more may be read */
+    size_t limit = max_size ? max_size : SIZE_MAX - 1;
+    struct stat st;
+    int rc = G_OK;
+    if (stat(name, &st) == 0 && S_ISREG(st.st_mode) && (unsigned long long)st.st_size <= limit) {
+        char what[160];
+        snprintf(what, sizeof what, "the file \"%.100s\" (%lld bytes)", name, (long long)st.st_size);
+        limit = (size_t)st.st_size;
+        if ((rc = gmem_budget_reserve(limit + 1, what, err)) == G_OK)
+            s->budget = limit + 1;
+    }
+    if (rc == G_OK)
+        rc = gfile_read_all(name, limit, &s->text, &s->len, err);
+    if (rc != G_OK && s->budget) {
+        gmem_budget_release(s->budget);
+        s->budget = 0;
+    }
     if (rc == G_OK && (!(s->dir = gfile_dir_of(name)) || !(s->real = realpath(name, NULL))))
         rc = gerror_set(err, s->dir ? G_ERR_IO : G_ERR_NOMEM, "cannot resolve \"%s\": %s", name, strerror(errno));
     if (rc == G_OK && s->real) { /* realpath() uses malloc: keep our allocator's copy */

@@ -19,10 +19,12 @@ struct GReaderSource {
     char *dir;   /* for relative paths */
     char *real;  /* canonical path for cycle detection (NULL for text in memory) */
     int text_id; /* the library's copy of the text (glibrary_keep_text) */
+    size_t budget; /* bytes of the text reserved against the memory budget (the library's once it keeps it) */
 };
 
-/** Reads the file name (taken over: owned by the source from here on, freed on failure) of at most max_size
- * bytes into a new source. */
+/** Reads the file name (taken over: owned by the source from here on, freed on failure) into a new source, its
+ * size reserved against the memory budget (gmem_budget_reserve) before it is read; max_size > 0 is a limit of its
+ * own on the file's size. */
 GENERIC_NODISCARD int greader_source_file(char *name, size_t max_size, GReaderSource **out, GError *err);
 /** A new source over a copy of text held in memory, named name in messages; relative paths resolve against the
  * current directory. */

@@ -60,7 +60,9 @@ int gtokens_push_source(GTokens *ts, GReaderSource *s, GError *err)
     /* the library keeps every text read, so that `like` can re-read an entry of a file already closed */
     char *kept = s->text;
     s->text = NULL;
-    if (glibrary_keep_text(ts->lib, kept, s->len, s->name, &s->text_id) != G_OK) {
+    size_t budget = s->budget;
+    s->budget = 0;
+    if (glibrary_keep_text(ts->lib, kept, s->len, budget, s->name, &s->text_id) != G_OK) {
         greader_source_free(s);
         return gerror_set(err, G_ERR_NOMEM, "out of memory");
     }

@@ -26,7 +26,7 @@ bounded_run "gtrace, 200,000 spheres" 0 30 "$GTRACE" "$TMP/spheres.scene" -o "$T
 [ -s "$TMP/spheres.png" ] || fail "gtrace, 200,000 spheres: no image"
 
 # ---- long operand lists as textures ----
-{ # each file within the reader's 16 MB limit
+{
     echo "generator pips csg { space object shape union {"
     awk 'BEGIN { for (i = 0; i < 300000; i++) printf "transform { translate %g %g 0 } sphere 0.004\n",
         (i % 600) / 300.0 - 1, int(i / 600) / 250.0 - 1 }'

@@ -9,6 +9,8 @@
 #include <generic/material.h>
 #include <generic/vec.h>
 
+#include <stddef.h>
+
 typedef enum ShapeKind {
     SHAPE_SPHERE,
     SHAPE_PLANE,
@@ -47,17 +49,23 @@ typedef struct Mesh {
  * the accelerator builds from it (Embree's vertex and index copies and its hierarchy, about 64 bytes a triangle). */
 size_t mesh_budget_bytes(size_t nverts, size_t ntris);
 
-/** One object: a shape in its own space, a transform to world space and a material. */
+/** One object: a shape in its own space, a transform to world space and a material. The head (kind to interior) is
+ * all that a sphere without a transform uses: object_compact stores such a sphere without the rest (the tail), so no
+ * code reads a field of the tail of a sphere whose has_xf is 0. */
 typedef struct Object {
-    ShapeKind kind;
+    ShapeKind kind : 8;
+    unsigned has_xf : 1;  /**< xf applies (0: object space is world space, xf is not read) */
+    unsigned is_part : 1; /**< a member of a group or an instance's prototype: rendered only through them */
+    unsigned charged : 1; /**< object_charge reserved its share against the memory budget (object_free returns it) */
+    int proto_index;  /**< accel: the prototype scene of a group or instanced shape (-1: none) */
     GMaterial *material; /**< owned reference */
-    Xform xf;
-    int has_xf;
-    /* shape parameters, object space */
     GVec3 center;     /**< sphere, disc: centre; plane: a point; cylinder: base centre; quad, triangle: corner */
+    double radius;    /**< sphere, disc, cylinder */
+    const struct Medium *interior; /**< the participating medium inside (media/medium.h; NULL: none; borrowed) */
+    /* the tail */
+    Xform xf;
     GVec3 normal;     /**< plane, disc, quad, triangle: unit normal; cylinder: unit axis */
     GVec3 t1, t2;     /**< plane, disc, cylinder: frame with t1 x t2 = normal; quad, triangle: the edges */
-    double radius;    /**< sphere, disc, cylinder */
     double height;    /**< cylinder */
     int open;         /**< cylinder without caps */
     GVec3 lo, hi;     /**< box corners; group, instance: the bounds of what they hold, in their own space */
@@ -65,18 +73,39 @@ typedef struct Object {
     struct Object **members;     /**< SHAPE_GROUP: the members (borrowed from the library), nmembers of them */
     int nmembers;
     struct Object *proto;        /**< SHAPE_INSTANCE: what it places (borrowed); material is the override or NULL */
-    int is_part;      /**< a member of a group or an instance's prototype: rendered only through them */
     int nesting;      /**< groups and instances nested in this object (0 for a shape) */
     double expansion; /**< Embree instances this object expands to when placed (a shape placed alone: 1) */
-    int proto_index;  /**< accel: the prototype scene of a group or instanced shape (-1: none) */
-    unsigned geom_id; /**< Embree geometry id */
-    const struct Medium *interior; /**< the participating medium inside (media/medium.h; NULL: none; borrowed) */
+    size_t placement_bytes; /**< group, instance: its placements' bytes reserved by object_charge (0 once a group
+                                 or an instance that places it has taken them over) */
 } Object;
+
+/** The bytes of an object's head (object_compact). */
+#define OBJECT_HEAD_BYTES offsetof(Object, xf)
 
 /** A zeroed object of a kind with an identity transform holding a new reference to material. */
 Object *object_new(ShapeKind kind, GMaterial *material);
 /** Frees the object, its mesh and its material reference (NULL: no-op). */
 void object_free(Object *o);
+/** An object's storage made as small as its shape allows: a sphere without a transform is moved into a block of its
+ * head alone (OBJECT_HEAD_BYTES), o freed; any other object is returned as it is. NULL (o freed with its material
+ * reference) when out of memory. */
+Object *object_compact(Object *o);
+/** Bytes an analytic shape is charged against the memory budget for its share of the acceleration structure: its
+ * primitive in the user geometry's hierarchy (Embree's medium or high build, with the build's primitive
+ * reference) and its slot in the batch. A mesh's share is in mesh_budget_bytes. */
+#define OBJECT_SHAPE_ACCEL_BYTES 128
+/** Bytes each placement of a group or an instance is charged: its Embree instance (the geometry, its primitive in
+ * the top-level hierarchy) and its Instance record in the geometry-id table. */
+#define OBJECT_PLACEMENT_BYTES 1024
+/** Reserves against the memory budget what o adds to the scene once its entry is read: an analytic shape its share
+ * of the acceleration structure (OBJECT_SHAPE_ACCEL_BYTES), a group or an instance its placements (expansion x
+ * OBJECT_PLACEMENT_BYTES), taking over the placements its members or prototype had reserved (it places them). A
+ * mesh reserves its own as it is read. G_OK, or G_ERR_NOMEM with the budget's message naming what was asked (the
+ * caller puts the entry's position in front; nothing is reserved then). object_free returns the reservation. */
+int object_charge(Object *o, GError *err);
+/** The expansion (placements when placed) and nesting of an object: a shape's are 1 and 0. */
+double object_expansion(const Object *o);
+int object_nesting(const Object *o);
 /** Shape constructors in object space (they fill the frames); return G_ERR_INVALID for bad parameters. */
 int object_sphere(Object *o, GVec3 center, double radius, GError *err);
 int object_plane(Object *o, GVec3 point, GVec3 normal, GError *err);

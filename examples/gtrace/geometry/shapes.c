@@ -199,6 +199,11 @@ void object_world_bounds(const Object *o, GVec3 *lo, GVec3 *hi)
 {
     GVec3 slo, shi;
     shape_bounds(o, &slo, &shi);
+    if (!o->has_xf) { /* the eight corners' minimum and maximum, per axis */
+        *lo = gvec3(fmin(slo.x, shi.x), fmin(slo.y, shi.y), fmin(slo.z, shi.z));
+        *hi = gvec3(fmax(slo.x, shi.x), fmax(slo.y, shi.y), fmax(slo.z, shi.z));
+        return;
+    }
     *lo = gvec3(INFINITY, INFINITY, INFINITY);
     *hi = gvec3(-INFINITY, -INFINITY, -INFINITY);
     for (int i = 0; i < 8; i++) {

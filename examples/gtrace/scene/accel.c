@@ -33,7 +33,7 @@ typedef struct Context {
     const Scene *scene;
     const Ray *ray;
     double best_t;
-    unsigned best_geom, best_inst;
+    unsigned best_geom, best_prim, best_inst;
     int stopped;  /* occlusion: a surface that blocks all light ended the query */
     int passable; /* occlusion: a surface that may let light through ended it (the walk of lights.c decides) */
 } Context;
@@ -47,6 +47,7 @@ typedef struct AccelProto {
     RTCScene rtc;
     Object **by_geom;
     unsigned nby_geom;
+    ShapeBatch user; /* its analytic shapes: one user geometry */
 } AccelProto;
 
 /* The placement of the instance Embree is inside (NULL: the top-level scene). */
@@ -73,9 +74,12 @@ static void to_object(const Object *o, const Instance *in, const Ray *r, GVec3 *
     }
 }
 
+/* The analytic shape of primitive `prim` of a user geometry (its user data is the batch's array of shapes). */
+static const Object *user_shape(void *user, unsigned prim) { return ((Object *const *)user)[prim]; }
+
 static void user_bounds(const struct RTCBoundsFunctionArguments *args)
 {
-    const Object *o = args->geometryUserPtr;
+    const Object *o = user_shape(args->geometryUserPtr, args->primID);
     GVec3 wlo, whi;
     object_world_bounds(o, &wlo, &whi);
     /* pad by a relative epsilon so flat shapes and float rounding do not lose hits */
@@ -94,7 +98,7 @@ static void user_intersect(const struct RTCIntersectFunctionNArguments *args)
 {
     if (args->N != 1 || !args->valid[0])
         return;
-    const Object *o = args->geometryUserPtr;
+    const Object *o = user_shape(args->geometryUserPtr, args->primID);
     Context *cx = (Context *)args->context;
     struct RTCRayHit *rh = (struct RTCRayHit *)args->rayhit;
     GVec3 ro, rd;
@@ -113,6 +117,7 @@ static void user_intersect(const struct RTCIntersectFunctionNArguments *args)
     rh->hit.instID[0] = args->context->instID[0];
     cx->best_t = t;
     cx->best_geom = args->geomID;
+    cx->best_prim = args->primID;
     cx->best_inst = args->context->instID[0];
 }
 
@@ -120,7 +125,7 @@ static void user_occluded(const struct RTCOccludedFunctionNArguments *args)
 {
     if (args->N != 1 || !args->valid[0])
         return;
-    const Object *o = args->geometryUserPtr;
+    const Object *o = user_shape(args->geometryUserPtr, args->primID);
     Context *cx = (Context *)args->context;
     struct RTCRay *ray = (struct RTCRay *)args->ray;
     GVec3 ro, rd;
@@ -207,30 +212,64 @@ static int add_flat(Scene *s, RTCScene into, Object *o, unsigned *id, GError *er
     return attach(g, into, id);
 }
 
-static int add_user(Scene *s, RTCScene into, Object *o, unsigned *id, GError *err)
+/* Adds an analytic shape to the batch of the Embree scene being filled (its primitive number is its index). */
+static int batch_add(ShapeBatch *b, Object *o, GError *err)
 {
+    if (b->n == b->cap) {
+        unsigned nc = b->cap ? 2 * b->cap : 16;
+        Object **ns = gmem_realloc(b->shapes, (size_t)nc * sizeof *ns);
+        if (!ns)
+            return gerror_set(err, G_ERR_NOMEM, "out of memory for %u analytic shapes", b->n + 1);
+        b->shapes = ns;
+        b->cap = nc;
+    }
+    b->shapes[b->n++] = o;
+    return G_OK;
+}
+
+/* Attaches the batch's shapes to `into` as one user geometry (none when the batch is empty); the batch's array is
+ * Embree's user data from here on and must not move. */
+static int batch_attach(Scene *s, RTCScene into, ShapeBatch *b, GError *err)
+{
+    b->geom_id = RTC_INVALID_GEOMETRY_ID;
+    if (!b->n)
+        return G_OK;
     RTCGeometry g = rtcNewGeometry(s->device, RTC_GEOMETRY_TYPE_USER);
     if (!g)
         return gerror_set(err, G_ERR_NOMEM, "embree: cannot create a user geometry");
-    rtcSetGeometryUserPrimitiveCount(g, 1);
-    rtcSetGeometryUserData(g, o);
+    rtcSetGeometryUserPrimitiveCount(g, b->n);
+    rtcSetGeometryUserData(g, b->shapes);
     rtcSetGeometryBoundsFunction(g, user_bounds, NULL);
     rtcSetGeometryIntersectFunction(g, user_intersect);
     rtcSetGeometryOccludedFunction(g, user_occluded);
-    return attach(g, into, id);
+    return attach(g, into, &b->geom_id);
 }
 
-static int add_shape(Scene *s, RTCScene into, Object *o, unsigned *id, GError *err)
+/* A shape of the batch b by its Embree ids, or NULL when they name none. */
+static const Object *batch_shape(const ShapeBatch *b, unsigned geom, unsigned prim)
 {
-    switch (o->kind) {
-    case SHAPE_MESH:
-    case SHAPE_QUAD:
-    case SHAPE_TRIANGLE:
-        /* Embree ends an occlusion query on these itself, whatever their material */
-        s->native_may_pass |= may_pass_light(o->material);
-        return o->kind == SHAPE_MESH ? add_mesh(s, into, o, id, err) : add_flat(s, into, o, id, err);
-    default: return add_user(s, into, o, id, err);
-    }
+    return geom == b->geom_id && prim < b->n ? b->shapes[prim] : NULL;
+}
+
+static void batch_free(ShapeBatch *b)
+{
+    gmem_free(b->shapes);
+    memset(b, 0, sizeof *b);
+    b->geom_id = RTC_INVALID_GEOMETRY_ID;
+}
+
+/* 1 for the shapes Embree intersects itself (meshes, quads, triangles); the others are the user geometry's. */
+static int native_shape(const Object *o)
+{
+    return o->kind == SHAPE_MESH || o->kind == SHAPE_QUAD || o->kind == SHAPE_TRIANGLE;
+}
+
+/* Adds one of Embree's own shapes (native_shape) to `into` as a geometry of its own. */
+static int add_native(Scene *s, RTCScene into, Object *o, unsigned *id, GError *err)
+{
+    /* Embree ends an occlusion query on these itself, whatever their material */
+    s->native_may_pass |= may_pass_light(o->material);
+    return o->kind == SHAPE_MESH ? add_mesh(s, into, o, id, err) : add_flat(s, into, o, id, err);
 }
 
 /* Makes room for geometry id `id` in a table of objects (and placements when inst is not NULL). */
@@ -260,11 +299,13 @@ static int table_fit(Object ***objs, Instance **inst, unsigned *n, unsigned id)
     return G_OK;
 }
 
-/* Adds a shape to a prototype's Embree scene and its table. */
+/* Adds a shape to a prototype's Embree scene (one of Embree's own) or its batch (an analytic one). */
 static int proto_add(Scene *s, AccelProto *p, Object *o, GError *err)
 {
+    if (!native_shape(o))
+        return batch_add(&p->user, o, err);
     unsigned id;
-    int rc = add_shape(s, p->rtc, o, &id, err);
+    int rc = add_native(s, p->rtc, o, &id, err);
     if (rc == G_OK && table_fit(&p->by_geom, NULL, &p->nby_geom, id) != G_OK)
         rc = gerror_set(err, G_ERR_NOMEM, "out of memory");
     if (rc == G_OK)
@@ -287,6 +328,7 @@ static int proto_of(Scene *s, Object *o, GError *err)
     }
     AccelProto *p = &s->protos[s->nprotos];
     memset(p, 0, sizeof *p);
+    batch_free(&p->user);
     p->rtc = rtcNewScene(s->device);
     if (!p->rtc)
         return gerror_set(err, G_ERR_NOMEM, "embree: cannot create a scene");
@@ -300,6 +342,8 @@ static int proto_of(Scene *s, Object *o, GError *err)
     } else {
         rc = proto_add(s, p, o, err);
     }
+    if (rc == G_OK)
+        rc = batch_attach(s, p->rtc, &p->user, err);
     if (rc < 0)
         return rc;
     rtcCommitScene(p->rtc);
@@ -394,22 +438,22 @@ static int build_objects(Scene *s, GError *err)
         if (o->is_part)
             continue;
         int rc;
-        if (object_is_shape(o)) {
+        if (object_is_shape(o) && !native_shape(o)) {
+            rc = batch_add(&s->user, o, err);
+        } else if (object_is_shape(o)) {
             unsigned gid;
-            rc = add_shape(s, s->rtc, o, &gid, err);
+            rc = add_native(s, s->rtc, o, &gid, err);
             if (rc == G_OK && table_fit(&s->by_geom, &s->inst_by_geom, &s->nby_geom, gid) != G_OK)
                 rc = gerror_set(err, G_ERR_NOMEM, "out of memory");
-            if (rc == G_OK) {
-                o->geom_id = gid;
+            if (rc == G_OK)
                 s->by_geom[gid] = o;
-            }
         } else {
             rc = flatten(s, o, &id, NULL, 1, err);
         }
         if (rc < 0)
             return rc;
     }
-    return G_OK;
+    return batch_attach(s, s->rtc, &s->user, err);
 }
 
 /* The top-level BVH's quality. Embree's high-quality build (spatial splits) costs about 1.4 us of CPU per
@@ -417,7 +461,10 @@ static int build_objects(Scene *s, GError *err)
  * 800x600 and 1 sample per pixel the medium build halves the process's CPU (2.9 to 1.4 s) and leaves the render
  * time within noise. So the high build is chosen when the image's camera samples (width x height x spp of the
  * whole image, a crop's or an MPI rank's share aside, so that every piece builds alike) are at least 10 per
- * primitive of the top-level scene, the medium one otherwise. */
+ * primitive of the top-level scene, the low one (Embree's Morton-code build) when they are fewer than 1 per 10
+ * primitives, the medium one between. For 1M spheres rendered at 1x1 (bench/scale.sh) the low build takes the
+ * process's CPU from 2.2 to 1.9 s and its peak RSS from 286 to 223 MB; the hits are the same (the user geometry's
+ * callbacks decide them exactly), only the order in which Embree visits candidates differs. */
 static enum RTCBuildQuality top_quality(const Scene *s, double samples)
 {
     double prims = 0.0;
@@ -426,7 +473,9 @@ static enum RTCBuildQuality top_quality(const Scene *s, double samples)
         if (!o->is_part && object_is_shape(o))
             prims += o->kind == SHAPE_MESH ? o->mesh->ntris : 1;
     }
-    return samples >= 10.0 * prims ? RTC_BUILD_QUALITY_HIGH : RTC_BUILD_QUALITY_MEDIUM;
+    if (samples >= 10.0 * prims)
+        return RTC_BUILD_QUALITY_HIGH;
+    return 10.0 * samples >= prims ? RTC_BUILD_QUALITY_MEDIUM : RTC_BUILD_QUALITY_LOW;
 }
 
 int accel_build(Scene *s, GError *err)
@@ -473,6 +522,7 @@ void accel_release(Scene *s)
     for (int i = 0; i < s->nprotos; i++) {
         rtcReleaseScene(s->protos[i].rtc);
         gmem_free(s->protos[i].by_geom);
+        batch_free(&s->protos[i].user);
     }
     gmem_free(s->protos);
     s->protos = NULL;
@@ -485,6 +535,7 @@ void accel_release(Scene *s)
         rtcReleaseDevice(s->device);
     s->rtc = NULL;
     s->device = NULL;
+    batch_free(&s->user);
     gmem_free(s->by_geom);
     gmem_free(s->inst_by_geom);
     s->by_geom = NULL;
@@ -531,7 +582,7 @@ int accel_intersect(const Scene *s, const Ray *r, Hit *h)
     cx.scene = s;
     cx.ray = r;
     cx.best_t = INFINITY;
-    cx.best_geom = cx.best_inst = RTC_INVALID_GEOMETRY_ID;
+    cx.best_geom = cx.best_prim = cx.best_inst = RTC_INVALID_GEOMETRY_ID;
     struct RTCRayHit rh;
     make_ray(r, &rh.ray);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
@@ -541,29 +592,32 @@ int accel_intersect(const Scene *s, const Ray *r, Hit *h)
     if (id == RTC_INVALID_GEOMETRY_ID)
         return 0;
     h->inst = NULL;
+    unsigned prim = rh.hit.primID;
     if (inst != RTC_INVALID_GEOMETRY_ID) {
         if (inst >= s->nby_geom || s->inst_by_geom[inst].proto < 0)
             return 0;
         h->inst = &s->inst_by_geom[inst];
         const AccelProto *p = &s->protos[h->inst->proto];
-        if (id >= p->nby_geom || !p->by_geom[id])
-            return 0;
-        h->obj = p->by_geom[id];
+        h->obj = batch_shape(&p->user, id, prim);
+        if (!h->obj && id < p->nby_geom)
+            h->obj = p->by_geom[id];
     } else {
-        if (id >= s->nby_geom || !s->by_geom[id])
-            return 0;
-        h->obj = s->by_geom[id];
+        h->obj = batch_shape(&s->user, id, prim);
+        if (!h->obj && id < s->nby_geom)
+            h->obj = s->by_geom[id];
     }
+    if (!h->obj)
+        return 0;
     h->material = h->inst && h->inst->material ? h->inst->material : h->obj->material;
-    h->prim = rh.hit.primID;
-    ShapeKind k = h->obj->kind;
-    if (k == SHAPE_MESH || k == SHAPE_QUAD || k == SHAPE_TRIANGLE) {
+    if (native_shape(h->obj)) {
+        h->prim = prim;
         h->t = rh.ray.tfar;
         h->bu = rh.hit.u;
         h->bv = rh.hit.v;
         h->surface = 0;
     } else {
-        h->t = id == cx.best_geom && inst == cx.best_inst ? cx.best_t : rh.ray.tfar;
+        h->prim = 0; /* an analytic shape is one primitive of its own */
+        h->t = id == cx.best_geom && prim == cx.best_prim && inst == cx.best_inst ? cx.best_t : rh.ray.tfar;
         h->bu = h->bv = 0.0;
         h->surface = (int)rh.hit.u;
     }
@@ -581,7 +635,7 @@ int accel_occluded(const Scene *s, const Ray *r)
     cx.scene = s;
     cx.ray = r;
     cx.best_t = INFINITY;
-    cx.best_geom = cx.best_inst = RTC_INVALID_GEOMETRY_ID;
+    cx.best_geom = cx.best_prim = cx.best_inst = RTC_INVALID_GEOMETRY_ID;
     cx.stopped = cx.passable = 0;
     struct RTCRay ray;
     make_ray(r, &ray);

@@ -5,6 +5,8 @@
 #include "ies.h"
 
 #include <math.h>
+#include <stdint.h>
+#include <stdio.h>
 #include <string.h>
 
 int scene_create(const GColorModel *model, Scene **out, GError *err)
@@ -101,11 +103,71 @@ void object_free(Object *o)
 {
     if (!o)
         return;
+    if (o->charged)
+        gmem_budget_release(object_is_shape(o) ? OBJECT_SHAPE_ACCEL_BYTES : o->placement_bytes);
     gmaterial_unref(o->material);
-    mesh_free(o->mesh);
-    gmem_free(o->members);
+    if (o->kind == SHAPE_MESH)
+        mesh_free(o->mesh);
+    if (o->kind == SHAPE_GROUP)
+        gmem_free(o->members);
     gmem_free(o);
 }
+
+Object *object_compact(Object *o)
+{
+    if (!o || o->kind != SHAPE_SPHERE || o->has_xf)
+        return o;
+    Object *c = gmem_alloc(OBJECT_HEAD_BYTES);
+    if (!c) {
+        object_free(o);
+        return NULL;
+    }
+    memcpy(c, o, OBJECT_HEAD_BYTES);
+    gmem_free(o); /* its material reference is c's now */
+    return c;
+}
+
+/* Hands the placements a member or prototype reserved over to the object that places it. */
+static void take_placements(Object *m)
+{
+    if (object_is_shape(m) || !m->charged)
+        return;
+    gmem_budget_release(m->placement_bytes);
+    m->placement_bytes = 0;
+}
+
+int object_charge(Object *o, GError *err)
+{
+    if (o->charged || o->kind == SHAPE_MESH || o->kind == SHAPE_QUAD || o->kind == SHAPE_TRIANGLE)
+        return G_OK; /* a mesh reserves its own; a quad or a triangle is a few floats in Embree */
+    char what[96];
+    size_t bytes = OBJECT_SHAPE_ACCEL_BYTES;
+    if (!object_is_shape(o)) {
+        double b = o->expansion * OBJECT_PLACEMENT_BYTES;
+        bytes = b < (double)SIZE_MAX ? (size_t)b : SIZE_MAX;
+        snprintf(what, sizeof what, "%s of %.6g placements", o->kind == SHAPE_GROUP ? "a group" : "an instance",
+                 o->expansion);
+    } else {
+        snprintf(what, sizeof what, "an analytic shape's share of the acceleration structure");
+    }
+    int rc = gmem_budget_reserve(bytes, what, err);
+    if (rc != G_OK)
+        return rc;
+    o->charged = 1;
+    if (object_is_shape(o))
+        return G_OK;
+    o->placement_bytes = bytes;
+    if (o->kind == SHAPE_GROUP)
+        for (int i = 0; i < o->nmembers; i++)
+            take_placements(o->members[i]);
+    else
+        take_placements(o->proto);
+    return G_OK;
+}
+
+double object_expansion(const Object *o) { return object_is_shape(o) ? 1.0 : o->expansion; }
+
+int object_nesting(const Object *o) { return object_is_shape(o) ? 0 : o->nesting; }
 
 Light *light_new(const GColorModel *model, LightKind kind)
 {
@@ -272,7 +334,7 @@ int object_instance(Object *o, Object *proto, GError *err)
     o->lo = gvec3(INFINITY, INFINITY, INFINITY);
     o->hi = gvec3(-INFINITY, -INFINITY, -INFINITY);
     grow_by(&o->lo, &o->hi, proto);
-    o->nesting = proto->nesting + 1;
-    o->expansion = proto->expansion;
+    o->nesting = object_nesting(proto) + 1;
+    o->expansion = object_expansion(proto);
     return G_OK;
 }

@@ -26,6 +26,14 @@ typedef struct MediumBinding {
 struct RTCDeviceTy;
 struct RTCSceneTy;
 
+/** The analytic shapes of one Embree scene (the top-level one or a prototype's), traced as the primitives of one
+ * user geometry: primitive i is shapes[i] (accel.c). */
+typedef struct ShapeBatch {
+    Object **shapes; /**< borrowed objects, n of them (the array is the geometry's user data once attached) */
+    unsigned n, cap;
+    unsigned geom_id; /**< the user geometry's id (RTC_INVALID_GEOMETRY_ID: none) */
+} ShapeBatch;
+
 typedef struct Scene {
     const GColorModel *model; /**< colour model of every colour in the scene */
     GColorModel *owned_model; /**< destroyed with the scene (NULL: the model belongs to someone else) */
@@ -46,6 +54,7 @@ typedef struct Scene {
     Object **by_geom;      /**< geometry id -> object of the top-level scene (NULL for an instance) */
     Instance *inst_by_geom; /**< geometry id -> placement (proto -1 for a shape of the top-level scene) */
     unsigned nby_geom;
+    ShapeBatch user;        /**< the analytic shapes of the top-level scene */
     struct AccelProto *protos; /**< prototype scenes of groups and instanced shapes */
     int nprotos, cap_protos;
     unsigned ninstances;    /**< Embree instances in the top-level scene */

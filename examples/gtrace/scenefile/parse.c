@@ -190,6 +190,8 @@ static int parse_group(GReader *r, Object *o, GError *err)
     gmem_free(members);
     if (rc >= 0)
         rc = check_nesting(r, o, err);
+    if (rc >= 0 && object_charge(o, err) != G_OK) /* its placements, against the memory budget */
+        rc = greader_locate(r, err);
     return rc < 0 ? rc : G_OK;
 }
 
@@ -296,6 +298,8 @@ int scene_parse_object(GReader *r, const void *vtable, void **object, GError *er
                                SCENE_MAX_COORD, SCENE_MAX_COORD);
         else if (rc < 0)
             rc = greader_locate(r, err);
+        else if (object_charge(o, err) != G_OK) /* its share of the acceleration structure, or its placements */
+            rc = greader_locate(r, err);
     }
     gmem_free(file);
     if (rc < 0) {
@@ -303,6 +307,8 @@ int scene_parse_object(GReader *r, const void *vtable, void **object, GError *er
         return rc;
     }
     o->material = gmaterial_ref(mat);
+    if (!(o = object_compact(o))) /* a plain sphere keeps its head alone */
+        return greader_error(r, err, "out of memory");
     *object = o;
     return G_OK;
 }
