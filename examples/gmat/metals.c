@@ -39,6 +39,8 @@ int gmat_metals(int argc, char **argv)
                " 1.0),\ninterpolated every 5 nm from 360 to 830 nm and held constant beyond the measured range;"
                " `scripts/gen_metals.py`\nwrites the table (lib/kit/metal_table.c) from the database's files. R(0) is"
                " the normal-incidence\nreflectance ((n - 1)^2 + k^2) / ((n + 1)^2 + k^2).\n\n"
+               "![Every metal below at roughness 0.15, in spectrum, by gmat swatch (scripts/docs_images.sh)]"
+               "(../images/metals.png)\n\n"
                "| name | material | R(0) at 450, 550, 650 nm | measured (nm) | source |\n"
                "| --- | --- | --- | --- | --- |\n");
     for (int i = 0; i < gmetal_count(); i++) {
