@@ -2,11 +2,13 @@
  * others cannot, against numbers computed here independently: a prism's deviation per wavelength against Snell's
  * law with the kit's Sellmeier index of BK7, the light inside a glass ball's shadow against the power the ball
  * transmits there (a ray tree through the sphere with Fresnel weights), the glass ball's focus and the diffuse
- * Cornell box in every colour model, and the re-radiated light of a fluorescent screen in bispectral. */
+ * Cornell box in every colour model, the re-radiated light of a fluorescent screen in bispectral, and the light of
+ * glowing geometry and of a probe (particles from both) against the path tracer. */
 #include "test_gtrace_common.h"
 #include "integrators/sppm.h"
 #include "generic/builtins.h"
 #include "generic/kit/dispersion.h"
+#include "generic/services/probe.h"
 
 /* ---- helpers ---- */
 
@@ -499,6 +501,90 @@ static void test_fluorescent_screen(void **state)
     assert_true(sp < 0.1 * bi);  /* without re-radiation only the faint background is red */
 }
 
+/* ---- particles from glowing geometry and from a probe: sppm and light agree with the path tracer ---- */
+
+/* Renders s by path (reference), sppm and light at w x w over the rows y0..w-1, and compares the n x n patches. */
+static void agree_with_path(const Scene *s, int w, int y0, int n, int spp, int sppm_passes, int light_passes,
+                            long photons)
+{
+    Framebuffer ref, fb[2];
+    RenderSettings rp = settings(w, w, RENDER_PATH, 0, 0);
+    rp.spp = spp;
+    rp.depth = 6;
+    rp.crop[1] = y0, rp.crop[2] = w, rp.crop[3] = w;
+    render_ok(s, &rp, &ref);
+    const int integrators[2] = {RENDER_SPPM, RENDER_LIGHT};
+    for (int k = 0; k < 2; k++) {
+        RenderSettings rq = settings(w, w, integrators[k], k == 0 ? sppm_passes : light_passes, photons);
+        rq.depth = 6;
+        memcpy(rq.crop, rp.crop, sizeof rq.crop);
+        render_ok(s, &rq, &fb[k]);
+    }
+    for (int py = 0; py + n <= w - y0; py += n)
+        for (int px = 0; px + n <= w; px += n) {
+            double a = patch_luma(&ref, px, py, n);
+            for (int k = 0; k < 2; k++) {
+                double b = patch_luma(&fb[k], px, py, n);
+                print_message("patch %2d,%2d: path %.5f %s %.5f (%+.2f%%)\n", px, py + y0, a, k == 0 ? "sppm" : "light",
+                              b, 100.0 * (b - a) / a);
+                assert_near(b, a, 0.03 * a);
+            }
+        }
+    framebuffer_free(&ref);
+    framebuffer_free(&fb[0]);
+    framebuffer_free(&fb[1]);
+}
+
+/* The Cornell box with its lamp a glowing quad (an emitter material), not a light. */
+static const char glowing_cornell[] =
+    "colormodel rgb\n"
+    "material white lambert { reflectance rgb 0.73 0.73 0.73 }\n"
+    "object box { min <-1.05, -0.05, -1.05> max <1.05, 0, 1.05> material white }\n"
+    "object box { min <-1.05, 2, -1.05> max <1.05, 2.05, 1.05> material white }\n"
+    "object box { min <-1.05, 0, -1.05> max <1.05, 2, -1> material white }\n"
+    "object box { min <-1.05, 0, -1> max <-1, 2, 1.05> material lambert { reflectance rgb 0.63 0.065 0.05 } }\n"
+    "object box { min <1, 0, -1> max <1.05, 2, 1.05> material lambert { reflectance rgb 0.14 0.45 0.09 } }\n"
+    "object box { min <-0.3, 0, -0.3> max <0.3, 0.6, 0.3> material white "
+    "transform { rotate <0, -18, 0> translate <0.33, 0, 0.35> } }\n"
+    "object quad { corner <-0.25, 1.99, -0.25> edge1 <0.5, 0, 0> edge2 <0, 0, 0.5> "
+    "material emitter { radiance rgb 17 12 4 } }\n"
+    "camera pinhole { from <0, 1, 3.9> at <0, 1, 0> fov 38 }\n";
+
+static void test_glowing_geometry(void **state)
+{
+    (void)state;
+    Scene *s = load_text("glowing.scene", glowing_cornell, NULL);
+    agree_with_path(s, 16, 8, 8, 512, 8, 16, 20000);
+    scene_destroy(s);
+}
+
+/* A constant grey sky (a probe sampled as a whole) over a grey floor with a white block. */
+static void test_probe_photons(void **state)
+{
+    (void)state;
+    enum { PW = 32, PH = 16 };
+    static float px[PW * PH * 3];
+    for (int i = 0; i < PW * PH * 3; i++)
+        px[i] = 1.0f;
+    GProbe *p = NULL;
+    GError err;
+    assert_int_equal(gprobe_create(PW, PH, px, &p, &err), G_OK);
+    char *probe = temp_path("sky.exr");
+    if (gprobe_save(p, probe, GPROBE_LATLONG, &err) != G_OK)
+        fail_msg("gprobe_save: %s", err.message);
+    gprobe_destroy(p);
+    char text[1024];
+    snprintf(text, sizeof text,
+             "colormodel rgb\n"
+             "light probe { file \"gtrace_test_%d_sky.exr\" technique reference samples 4 }\n"
+             "object box { min <-1, -0.05, -1> max <1, 0, 1> material lambert { reflectance rgb 0.5 0.5 0.5 } }\n"
+             "object box { min <-0.3, 0, -0.3> max <0.3, 0.8, 0.3> material lambert { reflectance rgb 0.8 0.8 0.8 } }\n"
+             "camera pinhole { from <0, 3, 0.5> at <0, 0, 0> fov 30 }\n", (int)getpid());
+    Scene *s = load_text("sky.scene", text, NULL);
+    agree_with_path(s, 16, 0, 8, 1024, 32, 32, 40000);
+    scene_destroy(s);
+}
+
 int main(void)
 {
     GError err;
@@ -514,6 +600,8 @@ int main(void)
         cmocka_unit_test(test_glass_ball_models),
         cmocka_unit_test(test_cornell_models),
         cmocka_unit_test(test_fluorescent_screen),
+        cmocka_unit_test(test_glowing_geometry),
+        cmocka_unit_test(test_probe_photons),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
