@@ -58,7 +58,10 @@ bench-path: $(BUILD)/bin/gtrace $(BUILD)/bin/gprobe
 .PHONY: bench-emissive
 bench-emissive: $(BUILD)/bin/gtrace
 	@bench/emissive.sh $(BUILD)
-bench: bench-pov bench-dispersion bench-path bench-mpi bench-emissive
+.PHONY: bench-caustics
+bench-caustics: $(BUILD)/bin/gtrace $(BUILD)/bin/gprobe
+	@bench/caustics.sh $(BUILD)
+bench: bench-pov bench-dispersion bench-path bench-mpi bench-emissive bench-caustics
 # gtrace's MPI module (examples/gtrace/distributed/mpi/, distributed/mpi_module.h), built when Open MPI's
 # development files are found (pkg-config ompi-c; Debian's libopenmpi-dev). gtrace opens it with dlopen only when
 # it runs under mpirun (mpi_load.c), so --help and a render on one machine never map libmpi; without it gtrace still
