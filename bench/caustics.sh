@@ -4,21 +4,23 @@
 # `gtrace --integrator sppm` and by POV-Ray 3.7's photon mapping on a twin scene (the same camera, floor, ball and
 # light: gtrace's irradiance 1 on a floor of reflectance 0.8 is POV-Ray's parallel light of colour 1/pi on a
 # pigment of 0.8 with diffuse 1; the glass is POV-Ray's filtering pigment with Fresnel reflection and
-# conserve_energy, the photons shot at it by refraction and reflection), W x H (default 96x72), 1 thread each.
+# conserve_energy, the photons shot at it by refraction and reflection), W x H (default 97x73: the axis through a
+# pixel's centre, where POV-Ray's single ray per pixel samples the focus), 1 thread each.
 #
-# 1. Convergence: gtrace with PASSES (default 2 4 8 16 32) passes of PHOTONS (default 100000) photons, and
+# 1. Convergence: gtrace with PASSES (default 2 4 8 16 32 64) passes of PHOTONS (default 100000) photons, and
 #    POV-Ray with POV_COUNTS photons (default 25000 .. 800000), interleaved (gtrace, POV-Ray, at each effort in
 #    turn) for RUNS rounds (default 3). Time is the process's CPU time (user + sys, GNU time; POV-Ray's photon
 #    threads included), the median over the rounds, and net of start-up: minus the median CPU time of a run that
 #    sends (almost) no photons. POV-Ray gathers every photon within a radius 0.03 (COUNT / 100000)^(-1/6) (its
-#    default, a gather of at most 100 photons, leaves speckles whose error does not fall with the count). Each image's error is its RMSE (gprobe compare: linear
+#    default, a gather of at most 100 photons, leaves speckles whose error does not fall with the count; a cap
+#    below the photons the focus holds would flatten the caustic's peak). Each image's error is its RMSE (gprobe compare: linear
 #    radiance over pixels and channels) against a long render by the same program (gtrace REF_PASSES passes,
 #    default 512, on 2 threads; POV-Ray POV_REF photons, default 3200000), so each is measured against what it
 #    converges to; the RMSE between the two long renders (what the twins still differ by) is printed. gtrace's
 #    long render shares the short runs' first passes (a correlation of weight passes / REF_PASSES, at most
-#    1/16). The exponent of each program is the least-squares slope of log RMSE over log CPU time (SPPM with
+#    1/8). The exponent of each program is the least-squares slope of log RMSE over log CPU time (SPPM with
 #    alpha 2/3 promises -1/3 at best in the limit: its bias and its noise both fall as n^(-1/3)).
-# 2. Time to a given RMSE: TARGET (default 0.03) on each program's curve (log-log interpolation between the
+# 2. Time to a given RMSE: TARGET (default 0.05) on each program's curve (log-log interpolation between the
 #    two efforts that bracket it), and their ratio.
 # 3. Photons per second per core in every colour model: gtrace at 32x24 (the camera's part negligible) with 2
 #    and 20 passes of 100000 photons on 1 thread; the rate is 1800000 photons over the difference of the CPU
@@ -28,12 +30,12 @@
 BUILD=${1:-build}
 GT="$BUILD/bin/gtrace"
 GP="$BUILD/bin/gprobe"
-W=${W:-96} H=${H:-72} RUNS=${RUNS:-3}
+W=${W:-97} H=${H:-73} RUNS=${RUNS:-3}
 PHOTONS=${PHOTONS:-100000}
-PASSES=${PASSES:-"2 4 8 16 32"}
+PASSES=${PASSES:-"2 4 8 16 32 64"}
 POV_COUNTS=${POV_COUNTS:-"25000 50000 100000 200000 400000 800000"}
 REF_PASSES=${REF_PASSES:-512} POV_REF=${POV_REF:-3200000}
-TARGET=${TARGET:-0.03}
+TARGET=${TARGET:-0.05}
 [ -x "$GT" ] || { echo "bench-caustics: $GT is not built"; exit 1; }
 [ -x "$GP" ] || { echo "bench-caustics: $GP is not built"; exit 1; }
 [ -x /usr/bin/time ] || { echo "bench-caustics: needs GNU time (/usr/bin/time, Debian package time)"; exit 1; }
@@ -54,7 +56,7 @@ cat > "$TMP/ball.pov" <<'SCENE'
 #ifndef (COUNT) #declare COUNT = 100000; #end
 #ifndef (RADIUS) #declare RADIUS = 0.03; #end
 global_settings { assumed_gamma 1.0 max_trace_level 8
-                  photons { count COUNT autostop 0 gather 1, 100000 radius RADIUS } }
+                  photons { count COUNT autostop 0 gather 1, 5000000 radius RADIUS } }
 camera { perspective location <0, 2.6, 2.6> look_at <0, 0.2, 0> right x * image_width / image_height
          angle 2 * degrees(atan(tan(radians(17.5)) * image_width / image_height)) }
 light_source { <0, 10, 0> color rgb 1 / pi parallel point_at <0, 0, 0> photons { refraction on reflection on } }
