@@ -11,7 +11,7 @@
 #    POV-Ray with POV_COUNTS photons (default 25000 .. 800000), interleaved (gtrace, POV-Ray, at each effort in
 #    turn) for RUNS rounds (default 3). Time is the process's CPU time (user + sys, GNU time; POV-Ray's photon
 #    threads included), the median over the rounds, and net of start-up: minus the median CPU time of a run that
-#    sends (almost) no photons. POV-Ray gathers every photon within a radius 0.03 (COUNT / 100000)^(-1/6) (its
+#    sends (almost) no photons (gtrace: 1 pass of 1 photon; POV-Ray: 1000 photons). POV-Ray gathers every photon within a radius 0.03 (COUNT / 100000)^(-1/6) (its
 #    default, a gather of at most 100 photons, leaves speckles whose error does not fall with the count; a cap
 #    below the photons the focus holds would flatten the caustic's peak). Each image's error is its RMSE (gprobe compare: linear
 #    radiance over pixels and channels) against a long render by the same program (gtrace REF_PASSES passes,
@@ -95,7 +95,7 @@ r=0
 while [ $r -lt "$RUNS" ]; do
     set -- $POV_COUNTS
     t=$(gt 1 1 1 "$TMP/gt.exr") && echo "gtrace-base 0 $t 0" >> "$TMP/runs"
-    [ -n "$POV" ] && t=$(pov 1 1 pov.exr) && echo "povray-base 0 $t 0" >> "$TMP/runs"
+    [ -n "$POV" ] && t=$(pov 1000 1 pov.exr) && echo "povray-base 0 $t 0" >> "$TMP/runs"
     for p in $PASSES; do
         t=$(gt "$p" "$PHOTONS" 1 "$TMP/gt.exr") && echo "gtrace $p $t $(rmse "$TMP/gt.exr" "$TMP/gt_ref.exr")" >> "$TMP/runs"
         if [ -n "$POV" ] && [ $# -gt 0 ]; then
