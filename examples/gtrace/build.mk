@@ -58,7 +58,10 @@ bench-path: $(BUILD)/bin/gtrace $(BUILD)/bin/gprobe
 .PHONY: bench-emissive
 bench-emissive: $(BUILD)/bin/gtrace
 	@bench/emissive.sh $(BUILD)
-bench: bench-pov bench-dispersion bench-path bench-mpi bench-emissive
+.PHONY: bench-caustics
+bench-caustics: $(BUILD)/bin/gtrace $(BUILD)/bin/gprobe
+	@bench/caustics.sh $(BUILD)
+bench: bench-pov bench-dispersion bench-path bench-mpi bench-emissive bench-caustics
 .PHONY: bench-scale
 bench-scale: $(BUILD)/bin/gtrace $(BUILD)/bench/runstat
 	@bench/scale.sh $(BUILD)

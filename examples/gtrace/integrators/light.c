@@ -140,11 +140,12 @@ int light_render(const Scene *s, const RenderSettings *rs, Framebuffer *fb, Rend
                           "scene's camera is %s", s->camera.projection == CAMERA_ORTHOGRAPHIC ? "orthographic"
                                                                                               : "a thin lens");
     PhotonSource src;
-    if ((rc = photon_source_init(&src, s, err)) != G_OK)
-        return rc;
     Renderer *r;
-    if ((rc = renderer_create(&r, s, rs, fb, err)) != G_OK) {
-        photon_source_free(&src);
+    if ((rc = renderer_create(&r, s, rs, fb, err)) != G_OK)
+        return rc;
+    if ((rc = photon_source_init(&src, s, renderer_thread_ctx(r, 0)->emissive, err)) != G_OK) {
+        renderer_destroy(r);
+        framebuffer_free(fb);
         return rc;
     }
     long npix = (long)fb->width * fb->height;

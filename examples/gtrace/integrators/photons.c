@@ -14,7 +14,7 @@
 #include <math.h>
 #include <string.h>
 
-int photon_source_init(PhotonSource *src, const Scene *s, GError *err)
+int photon_source_init(PhotonSource *src, const Scene *s, const EmissiveSet *emissive, GError *err)
 {
     *src = (PhotonSource){0};
     emit_bounds(s, &src->bounds);
@@ -29,18 +29,25 @@ int photon_source_init(PhotonSource *src, const Scene *s, GError *err)
         const Light *l = s->lights[i];
         if (!emit_supported(l))
             continue;
-        double w = gcolor_brightness(&l->color) * emit_power_factor(l, &src->bounds);
+        double w = emit_power(l, &src->bounds);
         if (!(w > 0.0) || !isfinite(w))
             continue;
         src->lights[src->n] = l;
         total += w;
         src->cdf[++src->n] = total;
     }
+    double we = emissive_power(emissive);
+    if (we > 0.0 && isfinite(we)) { /* the glowing geometry, after the lights */
+        src->emissive = emissive;
+        src->lights[src->n] = NULL;
+        total += we;
+        src->cdf[++src->n] = total;
+    }
     if (src->n == 0) {
         photon_source_free(src);
         return gerror_set(err, G_ERR_INVALID, "the scene has no light that sends photons (point, spot, directional, "
-                          "ies, sphere or rectangle light of some power): the particle integrators would render "
-                          "black");
+                          "ies, sphere or rectangle light, probe of technique reference or glowing object of some "
+                          "power): the particle integrators would render black");
     }
     for (int i = 1; i <= src->n; i++)
         src->cdf[i] /= total;
@@ -121,20 +128,26 @@ int photon_trace(TraceCtx *c, const PhotonSource *src, const Media *media0, uint
     }
     const Light *l = src->lights[lo];
     double p_light = src->cdf[lo + 1] - src->cdf[lo];
-    double ue[4] = {rng_next(rng), rng_next(rng), rng_next(rng), rng_next(rng)};
+    double ue[5] = {rng_next(rng), rng_next(rng), rng_next(rng), rng_next(rng), 0.0};
+    if (!l)
+        ue[4] = rng_next(rng);
     GVec3 o, d;
-    double f = emit_sample(l, &src->bounds, ue, &o, &d);
-    if (!(f > 0.0) || !(p_light > 0.0))
-        return G_OK;
     GScratchMark mark = gscratch_mark(c->scratch);
     GColor power, weight, tmp, ri, rg;
     int rc = G_OK;
+    double f = 1.0;
     CHECK(gcolor_scratch(&power, s->model, c->scratch));
     CHECK(gcolor_scratch_uncleared(&weight, s->model, c->scratch));
     CHECK(gcolor_scratch_uncleared(&tmp, s->model, c->scratch));
     CHECK(gcolor_scratch_uncleared(&ri, s->model, c->scratch));
     CHECK(gcolor_scratch_uncleared(&rg, s->model, c->scratch));
-    CHECK(gcolor_scale(&power, &l->color, f / p_light));
+    if (l)
+        CHECK(emit_particle(l, &src->bounds, ue, &o, &d, &f, &tmp));
+    else
+        CHECK(emissive_emit(c, src->emissive, ue, &o, &d, &tmp));
+    if (!(f > 0.0) || !(p_light > 0.0) || !(gcolor_brightness(&tmp) > 0.0))
+        goto done;
+    CHECK(gcolor_scale(&power, &tmp, f / p_light));
     Media media;
     media_copy(&media, media0);
     Ray ray = {o, d, 0.0, INFINITY, 0.0, 0.0};

@@ -4,6 +4,7 @@
 #ifndef GTRACE_PHOTONS_H
 #define GTRACE_PHOTONS_H
 
+#include "lights/emissive.h"
 #include "lights/emit.h"
 #include "trace/trace.h"
 
@@ -18,15 +19,16 @@
 
 /** The lights that send particles, with the probabilities of choosing each (proportional to its power). */
 typedef struct PhotonSource {
-    const Light **lights;
+    const Light **lights; /**< NULL: the glowing geometry (emissive) */
     double *cdf; /**< n + 1 entries, cdf[0] = 0, cdf[n] = 1 */
     int n;
     EmitBounds bounds;
+    const EmissiveSet *emissive; /**< the glowing geometry as one more source (NULL: none) */
 } PhotonSource;
 
-/** The emitting lights of s; G_ERR_INVALID naming the kinds that do emit when s has no light that sends particles
- * (or all of them are black), G_ERR_NOMEM. */
-int photon_source_init(PhotonSource *src, const Scene *s, GError *err);
+/** The emitting lights of s, and the glowing geometry of emissive (NULL: none) as one more; G_ERR_INVALID naming
+ * the kinds that do emit when s has nothing that sends particles (or all of it is black), G_ERR_NOMEM. */
+int photon_source_init(PhotonSource *src, const Scene *s, const EmissiveSet *emissive, GError *err);
 /** Frees the tables; a zeroed source is a no-op. */
 void photon_source_free(PhotonSource *src);
 

@@ -110,6 +110,10 @@ static int direct_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *
         rc = l->kind == LIGHT_PROBE ? probe_light_shade(c, l, sp, facing, media, to_viewer, opaque, &lt, out)
                                     : light_shade(c, l, sp, facing, media, to_viewer, opaque, &lt, out);
     }
+    if (c->emissive && rc >= 0) { /* glowing geometry, as an area light */
+        lt.blocked = 1;
+        rc = emissive_shade(c, c->emissive, sp, facing, media, to_viewer, opaque, &lt, out);
+    }
     return rc < 0 ? rc : light_gather_finish(sp, &lt, out);
 }
 
@@ -433,10 +437,11 @@ int sppm_render(const Scene *s, const RenderSettings *rs, Framebuffer *fb, Rende
     if (rc != G_OK)
         return rc;
     Sppm p = {.scene = s, .rs = rs};
-    if ((rc = photon_source_init(&p.src, s, err)) != G_OK)
+    if ((rc = renderer_create(&p.r, s, rs, fb, err)) != G_OK)
         return rc;
-    if ((rc = renderer_create(&p.r, s, rs, fb, err)) != G_OK) {
-        sppm_free(&p);
+    if ((rc = photon_source_init(&p.src, s, renderer_thread_ctx(p.r, 0)->emissive, err)) != G_OK) {
+        renderer_destroy(p.r);
+        framebuffer_free(fb);
         return rc;
     }
     p.cam = renderer_camera(p.r);

@@ -44,6 +44,7 @@ struct EmissiveSet {
     double *q;     /**< alias table: keep slot i with probability q[i], else take alias[i] */
     int *alias;
     int n;
+    double total; /**< the sum of the primitives' guides to their power (prim_power) */
     EmissiveObject *objs; /**< sorted by the object's address */
     int nobjs;
 };
@@ -292,6 +293,7 @@ int emissive_build(const Scene *s, TraceCtx *c, EmissiveSet **out, GError *err)
     gcolor_free(&L);
     if (rc == G_OK && n > 0 && isfinite(sum)) {
         e->n = n;
+        e->total = sum;
         e->prob = gmem_alloc(sizeof *e->prob * (size_t)n);
         e->q = gmem_alloc(sizeof *e->q * (size_t)n);
         e->alias = gmem_alloc(sizeof *e->alias * (size_t)n);
@@ -450,4 +452,55 @@ int emissive_shade(TraceCtx *c, const EmissiveSet *e, GSurfPoint *sp, GVec3 faci
     }
     gscratch_release(c->scratch, mark);
     return rc < 0 ? rc : G_OK;
+}
+
+double emissive_power(const EmissiveSet *e) { return e ? M_PI * e->total : 0.0; }
+
+int emissive_emit(TraceCtx *c, const EmissiveSet *e, const double u[5], GVec3 *origin, GVec3 *dir, GColor *power)
+{
+    double f = u[0] * e->n;
+    int i = (int)f;
+    if (i >= e->n)
+        i = e->n - 1;
+    if (f - i >= e->q[i])
+        i = e->alias[i];
+    const EmissivePrim *p = &e->prims[i];
+    double bu = 0.0, bv = 0.0, area, sides = 1.0, v = u[3];
+    GVec3 y, n;
+    if (p->kind == EMIT_SPHERE) {
+        double z = 1.0 - 2.0 * u[1], r = sqrt(fmax(0.0, 1.0 - z * z)), ph = 2.0 * M_PI * u[2];
+        n = gvec3(r * cos(ph), r * sin(ph), z);
+        y = gvec3_madd(p->p0, n, p->area);
+        area = 4.0 * M_PI * p->area * p->area;
+    } else {
+        if (p->kind == EMIT_TRIANGLE) {
+            double su = sqrt(u[1]);
+            bu = u[2] * su;
+            bv = 1.0 - su;
+        } else if (p->kind == EMIT_PARALLELOGRAM) {
+            bu = u[1];
+            bv = u[2];
+        } else {
+            double rr = sqrt(u[1]), ph = 2.0 * M_PI * u[2];
+            bu = rr * cos(ph);
+            bv = rr * sin(ph);
+        }
+        y = gvec3_add(p->p0, gvec3_add(gvec3_scale(p->e1, bu), gvec3_scale(p->e2, bv)));
+        if (p->kind == EMIT_DISC)
+            bu = bv = 0.0;
+        area = p->area;
+        sides = 2.0; /* u[3] picks the side, then is reused for the direction */
+        n = v < 0.5 ? p->n : gvec3_neg(p->n);
+        v = v < 0.5 ? 2.0 * v : 2.0 * v - 1.0;
+    }
+    *dir = goptics_sample_cosine(n, v, u[4]);
+    *origin = y;
+    double cos_l = gvec3_dot(*dir, n);
+    if (!(cos_l > 0.0) || !(e->prob[i] > 0.0))
+        return gcolor_fill(power, 0.0);
+    /* seen from a point one unit out along the direction */
+    int rc = emission_at(c, p->obj, p->prim, bu, bv, gvec3_add(y, *dir), gvec3_neg(*dir), 1.0, power);
+    if (rc < 0)
+        return rc;
+    return gcolor_scale(power, power, M_PI * area * sides / e->prob[i]);
 }

@@ -41,6 +41,16 @@ int emissive_sample(TraceCtx *c, const EmissiveSet *e, GVec3 x, double u0, doubl
  * distance t: 0 when h's primitive is not in the set. */
 double emissive_pdf(const EmissiveSet *e, const Hit *h, GVec3 x, GVec3 dir, double t);
 
+/** The guide to the power the set sends into the scene: pi times the sum over its primitives of their area
+ * times the brightness of their emission at the centre (both sides of a flat one); 0 for NULL. */
+double emissive_power(const EmissiveSet *e);
+/** One particle leaving the set, for the particle integrators, from u[0..4] in [0, 1): a primitive chosen by
+ * power, a point uniform on its area, a side (flat kinds: either, each with probability 1/2), a direction
+ * distributed by the cosine about that side's normal; its origin and unit direction, and into power (a colour of
+ * the scene's model) the radiance the material emits along it over the density of that point and direction
+ * (black when it emits nothing that way). G_OK or a status of the emission. */
+int emissive_emit(TraceCtx *c, const EmissiveSet *e, const double u[5], GVec3 *origin, GVec3 *dir, GColor *power);
+
 /** The Whitted tracer's light from the set at sp towards out_dir (as light_shade for an area light):
  * EMISSIVE_WHITTED_SAMPLES points drawn with c->rng (the choice of primitive stratified), each through
  * sample_light (t's shadow rule); opaque culls points behind the surface. */

@@ -1,8 +1,10 @@
 /* emit.c - particles leaving the light sources (emit.h). Each kind is drawn so that its weight is simple: point and
  * IES lights uniformly over the sphere, spots uniformly over their outer cone, directional lights uniformly over a
  * disc as wide as the scene's bounding sphere, sphere and rectangle lights uniformly over their area with a cosine
- * distribution about the outward normal (the rectangle from its lit side). */
+ * distribution about the outward normal (the rectangle from its lit side), probes (`technique reference`) by
+ * their sampling distribution (probe_dist.h) through the same disc as a directional light. */
 #include "emit.h"
+#include "probe_env.h"
 #include "scene/ies.h"
 
 #include <generic/material.h>
@@ -39,6 +41,8 @@ int emit_supported(const Light *l)
         return 1;
     case LIGHT_IES:
         return l->ies != NULL;
+    case LIGHT_PROBE:
+        return l->env && l->env->probe && l->env->dist.row_cdf && l->env->dist.h > 0;
     default:
         return 0;
     }
@@ -131,4 +135,44 @@ double emit_sample(const Light *l, const EmitBounds *b, const double u[4], GVec3
     default:
         return 0.0;
     }
+}
+
+double emit_power(const Light *l, const EmitBounds *b)
+{
+    if (l->kind == LIGHT_PROBE) {
+        if (!emit_supported(l))
+            return 0.0;
+        const ProbeDist *d = &l->env->dist;
+        return M_PI * b->radius * b->radius * d->row_cdf[d->h] * l->env->scale;
+    }
+    return gcolor_brightness(&l->color) * emit_power_factor(l, b);
+}
+
+int emit_particle(const Light *l, const EmitBounds *b, const double u[4], GVec3 *origin, GVec3 *dir, double *factor,
+                  GColor *color)
+{
+    *factor = 0.0;
+    if (l->kind != LIGHT_PROBE) {
+        *factor = emit_sample(l, b, u, origin, dir);
+        return gcolor_copy(color, &l->color);
+    }
+    if (!emit_supported(l))
+        return G_OK;
+    const ProbeEnv *env = l->env;
+    int pu, pv;
+    GVec3 local, t1, t2;
+    double pdf = probe_dist_sample(&env->dist, env->probe, u[0], u[1], &pu, &pv, &local);
+    if (!(pdf > 0.0) || !isfinite(pdf))
+        return G_OK;
+    GVec3 in = gvec3_normalize(probe_to_world(env, local)); /* towards the probe */
+    goptics_frame(in, &t1, &t2);
+    double r = b->radius * sqrt(u[2]), ph = 2.0 * M_PI * u[3];
+    GVec3 on = gvec3_add(gvec3_scale(t1, r * cos(ph)), gvec3_scale(t2, r * sin(ph)));
+    *origin = gvec3_add(gvec3_madd(b->centre, in, 2.0 * b->radius), on);
+    *dir = gvec3_neg(in);
+    int rc = gprobe_pixel_color(env->probe, pu, pv, color);
+    if (rc < 0)
+        return rc;
+    *factor = M_PI * b->radius * b->radius * env->scale / pdf;
+    return G_OK;
 }
