@@ -30,6 +30,8 @@ typedef struct GReaderFrame {
     int single_state;      /* 1: its name is still to be returned, 2: its value was read, the block closes next */
     GReaderKey *keys;      /* entries: parameter names seen, in order */
     int nkeys, capkeys;
+    int has_range;         /* generator entries: `range LO HI` was read (greader_param), applied by greader_invoke */
+    double range_lo, range_hi;
 } GReaderFrame;
 
 struct GReader {
