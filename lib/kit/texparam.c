@@ -210,3 +210,10 @@ int gtexparam_color_extremes(const GTexColor *p, GColor out[2], int *n, GError *
     }
     return G_OK;
 }
+
+int gtexparam_number_reads_uv(const GTexNumber *p) { return p->gen && p->gen->space == GGENERATOR_SPACE_UV; }
+
+int gtexparam_color_reads_uv(const GTexColor *p)
+{
+    return p->kind == GTEXCOLOR_IMAGE || (p->kind == GTEXCOLOR_MIX && p->by->space == GGENERATOR_SPACE_UV);
+}

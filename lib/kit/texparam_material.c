@@ -119,8 +119,8 @@ int gtexparam_scaled_material(GMaterial *child, GTexColor *p, GMaterial **out, G
     gnode_inherit_no_emission(mat, &c, 1); /* the child's emission times a finite colour */
     gnode_inherit_diagonal(mat, &c, 1);    /* the child's pass-on times a vector */
     gnode_inherit_lambertian_child(mat, c);
-    if (s->color.kind == GTEXCOLOR_MIX) /* (u, v) is read only when the mix's generator reads it */
-        gnode_inherit_no_uv(mat, &c, 1, s->color.by);
+    if (!gtexparam_color_reads_uv(&s->color))
+        gnode_inherit_no_uv(mat, &c, 1, NULL);
     *out = mat;
     return G_OK;
 }

@@ -119,6 +119,11 @@ GENERIC_API GENERIC_NODISCARD int gtexparam_image_uplift(const GTexImage *im, co
  * process, within the memory budget) on the first call; a status (the read's). Not thread safe: for creation. */
 GENERIC_API GENERIC_NODISCARD int gtexparam_image_channel_max(GTexImage *im, double rgb[3], GError *err);
 
+/** 1 when p's value reads the surface point's (u, v): a generator of (u, v); else 0 (for GMAT_NO_UV). */
+GENERIC_API int gtexparam_number_reads_uv(const GTexNumber *p);
+/** 1 when p's value reads the surface point's (u, v): an image, a mix by a generator of (u, v); else 0. */
+GENERIC_API int gtexparam_color_reads_uv(const GTexColor *p);
+
 /** The colour each of whose samples is 1 in model m, into new storage c: the unit of the sample-wise product. */
 GENERIC_API GENERIC_NODISCARD int gtexparam_unit_color(const GColorModel *m, GColor *c);
 
