@@ -1,6 +1,7 @@
 /* texparam_material.c - a material times a textured colour (gtexparam_scaled_material, generic/kit/texparam.h):
  * how a material whose results are linear in its one colour gets that colour from a texture. */
 #include "generic/kit/texparam.h"
+#include "generic/kit/material_kit.h"
 #include "generic/kit/node_kit.h"
 
 #include <string.h>
@@ -148,6 +149,35 @@ int gtexparam_one_color_material(const GColorModel *model, GTexColor *p, GTexPar
     gcolor_free(&unit);
     if (rc == G_OK)
         return gtexparam_scaled_material(child, p, out, err);
+    gtexparam_color_release(p);
+    return rc;
+}
+
+int gtexparam_texture_material(GMaterial *m, GTexColor *p, const char *material, const char *param,
+                               GMaterial **out, GError *err)
+{
+    *out = NULL;
+    int rc = G_OK;
+    if (!m || m->cls->destroy != gmaterial_one_color_destroy)
+        rc = gerror_set_param(err, G_ERR_UNSUPPORTED, param,
+                              "%s: %s cannot be textured (only the colour of a material built on GMaterialOneColor, "
+                              "whose results are linear in it, or a parameter its type reads as a texture)",
+                              material, param);
+    GColor ext[2];
+    int n = 0;
+    if (rc == G_OK)
+        rc = gtexparam_color_extremes(p, ext, &n, err);
+    double max = p->role == GCOLOR_REFLECTANCE ? 1.0 : 0.0;
+    for (int i = 0; i < n; i++) { /* within the unit colour the material was checked with */
+        GColor checked = {0};
+        if (rc == G_OK)
+            rc = gmaterial_param_color(m->model, &ext[i], p->role, max, material, param, &checked, err);
+        gcolor_free(&checked);
+        gcolor_free(&ext[i]);
+    }
+    if (rc == G_OK)
+        return gtexparam_scaled_material(m, p, out, err);
+    gmaterial_unref(m);
     gtexparam_color_release(p);
     return rc;
 }

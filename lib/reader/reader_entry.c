@@ -2,6 +2,7 @@
 #include "reader_entry.h"
 #include "generic/memory.h"
 #include "generic/texture.h"
+#include "generic/kit/texparam.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -61,6 +62,20 @@ static int apply_range(GReader *r, const GTypeInfo *type, const GReaderFrame *f,
     return G_OK;
 }
 
+/* A material whose parse routine read a textured colour (reader_color.c): *obj, made with the unit colour, scaled
+ * by the texture (gtexparam_texture_material); a refusal is placed at the parameter. */
+static int apply_texcolor(GReader *r, const GTypeInfo *type, GReaderFrame *f, void **obj, GError *err)
+{
+    GMaterial *m = NULL;
+    int rc = gtexparam_texture_material(*obj, f->texcolor, type->name, f->tex_param, &m, err);
+    *obj = m;
+    if (rc == G_OK)
+        return G_OK;
+    char msg[sizeof err->message];
+    snprintf(msg, sizeof msg, "%s", err ? err->message : "texture");
+    return greader_error_at(r, err, rc, f->tex_line, f->tex_col, "%s", msg);
+}
+
 int greader_invoke(GReader *r, const GTypeInfo *type, int line, int col, void **object, GError *err)
 {
     *object = NULL;
@@ -94,6 +109,10 @@ int greader_invoke(GReader *r, const GTypeInfo *type, int line, int col, void **
     if (rc != G_OK) { /* a failing routine has freed what it made */
         int placed = greader_locate(r, err); /* rc stays the routine's status */
         (void)placed;
+        greader_pop_frames(r, base);
+        return rc;
+    }
+    if (r->frames[base].texcolor && (rc = apply_texcolor(r, type, &r->frames[base], &obj, err)) != G_OK) {
         greader_pop_frames(r, base);
         return rc;
     }

@@ -32,6 +32,10 @@ typedef struct GReaderFrame {
     int nkeys, capkeys;
     int has_range;         /* generator entries: `range LO HI` was read (greader_param), applied by greader_invoke */
     double range_lo, range_hi;
+    struct GTexColor *texcolor; /* material entries: a textured colour greader_color read (owned), applied by
+                                   greader_invoke (gtexparam_texture_material) */
+    char *tex_param;            /* ... the parameter it was read for, and where */
+    int tex_line, tex_col;
 } GReaderFrame;
 
 struct GReader {

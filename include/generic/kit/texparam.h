@@ -135,6 +135,16 @@ GENERIC_API GENERIC_NODISCARD int gtexparam_unit_color(const GColorModel *m, GCo
 GENERIC_API GENERIC_NODISCARD int gtexparam_scaled_material(GMaterial *child, GTexColor *p, GMaterial **out,
                                                             GError *err);
 
+/** What the reader does when the parse routine of a material reads a colour with greader_color and the file gives a
+ * texture there (`image { ... }`, `mix { ... }`; one parameter per entry): the routine got the unit colour and made
+ * m; m must be built on GMaterialOneColor (material_kit.h: its class's destroy is gmaterial_one_color_destroy),
+ * whose results are linear in its colour, and each of p's extremes must lie in [0, 1] for a reflectance (>= 0
+ * for a light), so that a material that holds the energy rule with the unit colour holds it with every value p
+ * takes. Then *out is m scaled by p (gtexparam_scaled_material); else G_ERR_UNSUPPORTED or G_ERR_INVALID naming
+ * param ("<material>: <param> cannot be textured ..."). Takes m's reference and p's contents in every case. */
+GENERIC_API GENERIC_NODISCARD int gtexparam_texture_material(GMaterial *m, GTexColor *p, const char *material,
+                                                             const char *param, GMaterial **out, GError *err);
+
 /** A constructor of a material from one colour c in model m (ctx: the caller's other arguments). */
 typedef int (*GTexParamCreate)(const GColorModel *m, const GColor *c, void *ctx, GMaterial **out, GError *err);
 /** The material create makes with a textured colour p (a mix or an image) whose results are linear in it: create
