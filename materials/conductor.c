@@ -13,6 +13,7 @@
 #include "generic/kit/color_map.h"
 #include "generic/kit/fresnel.h"
 #include "generic/kit/material_kit.h"
+#include "generic/kit/texparam.h"
 #include "generic/kit/metals.h"
 #include "generic/kit/microfacet.h"
 #include "generic/colorspec.h"
@@ -21,6 +22,9 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+
+/* Why a roughness stays constant (gtexparam_read_constant). */
+#define ROUGH_WHY "the microfacet distribution and its albedo tables, made at creation"
 
 /* The largest n and k a file may give. */
 #define CONDUCTOR_INDEX_MAX 1000.0
@@ -383,14 +387,14 @@ static int parse_conductor(GReader *r, const void *vtable, void **object, GError
             rc = read_metal(r, &p.metal, err);
             have_metal = 1;
         } else if (strcmp(key, "roughness") == 0) {
-            rc = greader_number_in(r, 0.0, 1.0, &p.roughness_u, err);
+            rc = gtexparam_read_constant(r, 0.0, 1.0, "conductor", "roughness", ROUGH_WHY, &p.roughness_u, err);
             p.roughness_v = p.roughness_u;
             have_r = 1;
         } else if (strcmp(key, "roughness_u") == 0) {
-            rc = greader_number_in(r, 0.0, 1.0, &p.roughness_u, err);
+            rc = gtexparam_read_constant(r, 0.0, 1.0, "conductor", "roughness_u", ROUGH_WHY, &p.roughness_u, err);
             have_uv = 1;
         } else if (strcmp(key, "roughness_v") == 0) {
-            rc = greader_number_in(r, 0.0, 1.0, &p.roughness_v, err);
+            rc = gtexparam_read_constant(r, 0.0, 1.0, "conductor", "roughness_v", ROUGH_WHY, &p.roughness_v, err);
             have_uv = 1;
         } else if (strcmp(key, "distribution") == 0)
             rc = greader_choice(r, distributions, &p.distribution, err);

@@ -54,8 +54,8 @@ int gtexparam_read_number(GReader *r, double lo, double hi, int constant_only, c
         return rc;
     if (constant_only)
         return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col,
-                                "%s: %s must be a constant number%s%s, not a generator", material, param,
-                                why ? " (it decides " : "", why ? why : "");
+                                "%s: %s must be a constant number%s%s%s, not a generator", material, param,
+                                why ? " (it decides " : "", why ? why : "", why ? ")" : "");
     GGenerator *g;
     if ((rc = gtexparse_generator(r, &g, err)) != G_OK)
         return rc;
@@ -67,6 +67,16 @@ int gtexparam_read_number(GReader *r, double lo, double hi, int constant_only, c
                                 "`range LO HI`)", material, param, lo, hi, a, b);
     *out = (GTexNumber){a, ggenerator_ref(g), lo, hi};
     return G_OK;
+}
+
+int gtexparam_read_constant(GReader *r, double lo, double hi, const char *material, const char *param,
+                            const char *why, double *out, GError *err)
+{
+    GTexNumber n = gtexparam_number_const(0.0);
+    int rc = gtexparam_read_number(r, lo, hi, 1, material, param, why, &n, err);
+    if (rc == G_OK)
+        *out = n.value;
+    return rc;
 }
 
 /* ---- colours ---- */

@@ -54,6 +54,12 @@ static inline double gtexparam_number_at(const GTexNumber *p, GSurfPoint *sp)
 GENERIC_API GENERIC_NODISCARD int gtexparam_read_number(GReader *r, double lo, double hi, int constant_only,
                                                         const char *material, const char *param, const char *why,
                                                         GTexNumber *out, GError *err);
+/** Reads a parameter that must stay constant (it decides the material's structure at creation, or is used where no
+ * surface point is known): a number in [lo, hi] into *out; a generator is refused at its position naming the
+ * parameter and why (gtexparam_read_number with constant_only). */
+GENERIC_API GENERIC_NODISCARD int gtexparam_read_constant(GReader *r, double lo, double hi, const char *material,
+                                                          const char *param, const char *why, double *out,
+                                                          GError *err);
 /** Copies p into *out with a reference of its own to the generator. */
 GENERIC_API void gtexparam_number_copy(GTexNumber *out, const GTexNumber *p);
 /** Drops the generator's reference; *p becomes the constant 0. */
