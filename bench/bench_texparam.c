@@ -2,9 +2,9 @@
  * (kit/texparam.h), in thread CPU time: one reflection() per surface point at 4096 points of the unit square
  * (each point's caches cleared first, as at a new hit), and four reflections per point (the texture evaluated
  * once, then taken from the point's cache), and the image reflectance against the image node over a white lambert
- * (what it replaces). ARG: rounds of POINTS points (default 10; the film 1/20 of them). Pairs: lambert with an image or a checker mix for its reflectance,
- * phong with a perlin exponent, thinfilm with a perlin thickness; in rgb and spectrum. One thread. Prints
- * nanoseconds and the ratio textured / constant; never fails on time. */
+ * (what it replaces). ARG: rounds of POINTS points (default 10; the film 1/20 of them). Pairs: lambert with an
+ * image or a checker mix for its reflectance, phong with a perlin exponent, thinfilm with a perlin thickness; in
+ * rgb and spectrum. One thread. Prints nanoseconds and the ratio textured / constant; never fails on time. */
 #include "generic/builtins.h"
 #include "generic/material.h"
 #include "generic/reader.h"

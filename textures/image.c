@@ -115,8 +115,8 @@ static int texels_are_vectors(const GTexImage *image, const GColorModel *model)
 {
     GColor c = {0};
     static const double rgb[3] = {0.25, 0.5, 0.75};
-    int vector = gcolor_alloc(&c, model) == G_OK && gtexparam_image_uplift(image, rgb, GCOLOR_REFLECTANCE, &c) == G_OK &&
-                 c.kind == GCOLOR_VECTOR;
+    int vector = gcolor_alloc(&c, model) == G_OK &&
+                 gtexparam_image_uplift(image, rgb, GCOLOR_REFLECTANCE, &c) == G_OK && c.kind == GCOLOR_VECTOR;
     gcolor_free(&c);
     return vector;
 }

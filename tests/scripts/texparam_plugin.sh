@@ -56,6 +56,7 @@ else
 fi
 
 if [ $fails -eq 0 ]; then
-    echo "texparam_plugin: oren_nayar takes image and mix reflectances without code changes, passes gmat check, renders as the image node over it (both integrators); above 1 refused at the parameter"
+    echo "texparam_plugin: oren_nayar takes image and mix reflectances without code changes, passes gmat check," \
+        "renders as the image node over it (both integrators); above 1 refused at the parameter"
 fi
 [ $fails -eq 0 ]

@@ -102,8 +102,8 @@ static inline const GColor *gtexparam_color_constant(const GTexColor *p)
 GENERIC_API GENERIC_NODISCARD int gtexparam_color_at(const GTexColor *p, GSurfPoint *sp, GColor *out);
 /** The colours p can take at its extremes, for energy checks made once at creation: the constant; a mix's a and
  * b (every value between is their convex combination); an image's largest value in each channel
- * (gtexparam_image_channel_max), uplifted in the role. *n receives their number (1 or 2); each of out[0..*n-1] is new storage of p's model
- * (free with gcolor_free). */
+ * (gtexparam_image_channel_max), uplifted in the role. *n receives their number (1 or 2); each of out[0..*n-1]
+ * is new storage of p's model (free with gcolor_free). */
 GENERIC_API GENERIC_NODISCARD int gtexparam_color_extremes(const GTexColor *p, GColor out[2], int *n, GError *err);
 
 /** Opens an image for lookups at (u, v) with the image node's loading and checks (gnode_image_create, nodes.h:
