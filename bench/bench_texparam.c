@@ -3,7 +3,8 @@
  * (each point's caches cleared first, as at a new hit), and four reflections per point (the texture evaluated
  * once, then taken from the point's cache), and the image reflectance against the image node over a white lambert
  * (what it replaces). ARG: rounds of POINTS points (default 10; the film 1/20 of them). Pairs: lambert with an
- * image or a checker mix for its reflectance, phong with a perlin exponent, thinfilm with a perlin thickness; in
+ * image or a checker mix for its reflectance, phong with a perlin exponent, conductor with a perlin roughness,
+ * thinfilm with a perlin thickness; in
  * rgb and spectrum. One thread. Prints nanoseconds and the ratio textured / constant; never fails on time. */
 #include "generic/builtins.h"
 #include "generic/material.h"
@@ -69,6 +70,8 @@ static const char *const library =
     "material phong_c phong { diffuse rgb 0.4 0.4 0.4 specular rgb 0.3 0.3 0.3 exponent 40 }\n"
     "material phong_perlin phong { diffuse rgb 0.4 0.4 0.4 specular rgb 0.3 0.3 0.3 "
     "exponent perlin { frequency 4 range 10 200 } }\n"
+    "material conductor_c conductor { metal Au roughness 0.3 }\n"
+    "material conductor_perlin conductor { metal Au roughness perlin { frequency 4 range 0.1 0.5 } }\n"
     "material film_c thinfilm { thickness 400 base lambert { reflectance rgb 0.2 0.2 0.2 } }\n"
     "material film_perlin thinfilm { thickness perlin { frequency 4 range 200 800 } "
     "base lambert { reflectance rgb 0.2 0.2 0.2 } }\n";
@@ -77,6 +80,7 @@ static const char *const pairs[][2] = {{"lambert_c", "lambert_image"},
                                         {"image_node", "lambert_image"},
                                         {"lambert_c", "lambert_mix"},
                                         {"phong_c", "phong_perlin"},
+                                        {"conductor_c", "conductor_perlin"},
                                         {"film_c", "film_perlin"}};
 
 static int run(const char *model_name, const char *image, long rounds)
@@ -106,7 +110,7 @@ static int run(const char *model_name, const char *image, long rounds)
     for (size_t i = 0; i < sizeof pairs / sizeof pairs[0]; i++)
         for (int calls = 1; calls <= 4; calls += 3) {
             const GMaterial *c = glibrary_material(lib, pairs[i][0]), *t = glibrary_material(lib, pairs[i][1]);
-            long n = i == 4 ? (rounds + 19) / 20 : rounds; /* a film evaluation costs 1000 lambert ones */
+            long n = i == 5 ? (rounds + 19) / 20 : rounds; /* a film evaluation costs 1000 lambert ones */
             double tc = time_material(c, &light, sc, n, calls), tt = time_material(t, &light, sc, n, calls);
             printf("%-10s %-14s %d call%s a point: %-10s %7.1f ns  textured %7.1f ns  ratio %5.2f\n", model_name,
                    pairs[i][1], calls, calls > 1 ? "s" : " ", i == 1 ? "image node" : "constant", tc, tt, tt / tc);

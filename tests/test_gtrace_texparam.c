@@ -1,7 +1,7 @@
 /* test_gtrace_texparam.c - textured parameters rendered by gtrace (kit/texparam.h): a reflectance read from an image
- * renders exactly what the image node over a white lambert renders, and a checker-driven phong exponent renders,
- * in each cell of the checker, exactly the render with that cell's constant exponent; both integrators, pixel for
- * pixel (every float equal). */
+ * renders exactly what the image node over a white lambert renders, and a checker-driven phong exponent (or
+ * conductor roughness) renders, in each cell of the checker, exactly the render with that cell's constant value;
+ * both integrators, pixel for pixel (every float equal). */
 #include "test_gtrace_common.h"
 
 #include "embed/render_file.h"
@@ -67,25 +67,25 @@ static const char checker_scene[] =
     "light background { color rgb 0.2 0.2 0.25 }\n"
     "object plane { point <0, 0, 0> normal <0, 1, 0> material %s }\n";
 
-/* exponent checker { dims 2 frequency 1 range 10 200 }: where the checker is 0 (a mask rendered with an emitter
- * of radiance mix { by the same checker a black b white }) the pixel equals the exponent-10 render, where it is 1
- * the exponent-200 render; and the two constant renders differ there, so the comparison can fail. */
-static void test_checker_exponent_cells(void **state)
+/* A material whose parameter is driven by checker { dims 2 frequency 1 range LO HI } (the format's %s in `form`):
+ * where the checker is 0 (a mask rendered with an emitter of radiance mix { by the same checker a black b white })
+ * the pixel equals the render with the constant LO, where it is 1 the render with HI; and the two constant renders
+ * differ there, so the comparison can fail. Both integrators. */
+static void check_cells(const char *form, const char *lo, const char *hi)
 {
-    (void)state;
-    const char *phong = "phong { diffuse rgb 0.3 0.3 0.3 specular rgb 0.5 0.5 0.5 exponent %s }";
-    char textured[512], lo[512], hi[512];
-    snprintf(textured, sizeof textured, phong, "checker { dims 2 frequency 1 range 10 200 }");
-    snprintf(lo, sizeof lo, phong, "10");
-    snprintf(hi, sizeof hi, phong, "200");
+    char textured[512], a_text[512], b_text[512], range[128];
+    snprintf(range, sizeof range, "checker { dims 2 frequency 1 range %s %s }", lo, hi);
+    snprintf(textured, sizeof textured, form, range);
+    snprintf(a_text, sizeof a_text, form, lo);
+    snprintf(b_text, sizeof b_text, form, hi);
     for (int integrator = 0; integrator < 2; integrator++) {
         GtraceImage t, a, b, mask;
         render_scene("c.scene", checker_scene, textured, integrator, NULL, &t);
-        render_scene("c10.scene", checker_scene, lo, integrator, NULL, &a);
-        render_scene("c200.scene", checker_scene, hi, integrator, NULL, &b);
+        render_scene("c10.scene", checker_scene, a_text, integrator, NULL, &a);
+        render_scene("c200.scene", checker_scene, b_text, integrator, NULL, &b);
         render_scene("cm.scene", checker_scene,
-               "emitter { radiance mix { by checker { dims 2 frequency 1 } a rgb 0 0 0 b rgb 1 1 1 } }", 0, NULL,
-               &mask);
+                     "emitter { radiance mix { by checker { dims 2 frequency 1 } a rgb 0 0 0 b rgb 1 1 1 } }", 0, NULL,
+                     &mask);
         int n = t.width * t.height, cells[2] = {0, 0}, differ[2] = {0, 0};
         float white = 0.0f;
         for (int i = 0; i < 3 * n; i++)
@@ -110,6 +110,20 @@ static void test_checker_exponent_cells(void **state)
     }
 }
 
+/* phong's exponent: 10 and 200 in the cells. */
+static void test_checker_exponent_cells(void **state)
+{
+    (void)state;
+    check_cells("phong { diffuse rgb 0.3 0.3 0.3 specular rgb 0.5 0.5 0.5 exponent %s }", "10", "200");
+}
+
+/* conductor's roughness: 0.05 and 0.6 in the cells (exactly the tabulated ends of the range). */
+static void test_checker_roughness_cells(void **state)
+{
+    (void)state;
+    check_cells("conductor { metal Au roughness %s }", "0.05", "0.6");
+}
+
 int main(void)
 {
     GError err;
@@ -120,6 +134,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_image_reflectance_equals_image_node),
         cmocka_unit_test(test_checker_exponent_cells),
+        cmocka_unit_test(test_checker_roughness_cells),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
