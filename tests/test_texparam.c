@@ -174,9 +174,12 @@ static void test_bad_input(void **state)
     (void)state;
     load_fails("generator g checker { dims 2 range 5 2 }\n",
                "t.mat:1:30: generator checker: range 5 2 has LO > HI (must be LO <= HI)");
-    load_fails("material m conductor { metal Au roughness checker { dims 2 } }\n",
-               "t.mat:1:43: conductor: roughness must be a constant number (it decides the microfacet distribution "
+    load_fails("material m dielectric { roughness checker { dims 2 } }\n",
+               "t.mat:1:35: dielectric: roughness must be a constant number (it decides the microfacet distribution "
                "and its albedo tables, made at creation), not a generator");
+    load_fails("material m conductor { metal Au roughness checker { dims 2 } }\n",
+               "t.mat:1:43: conductor: a textured roughness must stay >= 0.001, rough everywhere (the generator's "
+               "range starts at 0; whether the surface is an ideal mirror is decided at creation)");
     load_fails("material m phong { exponent checker { dims 2 range -5 100 } }\n",
                "t.mat:1:29: phong: exponent takes values in [0, 1e+06]; the generator's range is [-5, 100] (set it "
                "with `range LO HI`)");
