@@ -168,6 +168,18 @@ static void test_memoised_without_allocation(void **state)
     glibrary_destroy(lib);
 }
 
+/* Where a number may be a generator, a defined constant is still a number, and a word that names no generator gets
+ * the reader's own complaint about the number. */
+static void test_numbers_stay_numbers(void **state)
+{
+    (void)state;
+    GLibrary *lib = load("define E 40\nmaterial p phong { exponent E }\n"
+                         "material t thinfilm { thickness E }\n");
+    glibrary_destroy(lib);
+    load_fails("material m phong { exponent nan }\n", "t.mat:1:29: 'nan' is not allowed: numbers must be finite");
+    load_fails_with("material m thinfilm { index nosuchgenerator }\n", "t.mat:1:29:");
+}
+
 /* Bad input is refused at file:line:col, naming the parameter. */
 static void test_bad_input(void **state)
 {
@@ -210,6 +222,7 @@ int main(void)
         cmocka_unit_test(test_range_maps_linearly),
         cmocka_unit_test(test_mix_is_exact_in_cells),
         cmocka_unit_test(test_memoised_without_allocation),
+        cmocka_unit_test(test_numbers_stay_numbers),
         cmocka_unit_test(test_bad_input),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

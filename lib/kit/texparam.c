@@ -34,24 +34,28 @@ void gtexparam_number_bounds(const GTexNumber *p, double *min, double *max)
     *max = fmin(fmax(b, p->lo), p->hi);
 }
 
+/* 1 when t begins a generator: the name of a generator type (a nested entry) or of a generator the file defined. */
+static int starts_generator(GReader *r, const GToken *t)
+{
+    return t->type == GTOK_IDENT &&
+           (gregistry_find(GKIND_GENERATOR, t->text) || greader_lookup(r, GKIND_GENERATOR, t->text));
+}
+
 int gtexparam_read_number(GReader *r, double lo, double hi, int constant_only, const char *material,
                           const char *param, const char *why, GTexNumber *out, GError *err)
 {
     gtexparam_number_release(out);
-    int at = greader_at_number(r, err);
-    if (at < 0)
-        return at;
-    if (at) {
-        double v;
-        int rc = greader_number_in(r, lo, hi, &v, err);
-        if (rc == G_OK)
-            *out = gtexparam_number_const(v);
-        return rc;
-    }
     GToken t;
     int rc = greader_peek(r, &t, err);
     if (rc != G_OK)
         return rc;
+    if (!starts_generator(r, &t)) { /* a number, a defined constant, or the reader's complaint about the token */
+        double v;
+        rc = greader_number_in(r, lo, hi, &v, err);
+        if (rc == G_OK)
+            *out = gtexparam_number_const(v);
+        return rc;
+    }
     if (constant_only)
         return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col,
                                 "%s: %s must be a constant number%s%s%s, not a generator", material, param,
