@@ -13,6 +13,7 @@
 #include "generic/kit/color_map.h"
 #include "generic/kit/fresnel.h"
 #include "generic/kit/material_kit.h"
+#include "generic/kit/texparam.h"
 #include "generic/kit/metals.h"
 #include "generic/kit/microfacet.h"
 #include "generic/colorspec.h"
@@ -21,6 +22,9 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+
+/* Why a roughness stays constant (gtexparam_read_constant). */
+#define ROUGH_WHY "the microfacet distribution and its albedo tables, made at creation"
 
 /* The largest n and k a file may give. */
 #define CONDUCTOR_INDEX_MAX 1000.0
@@ -34,7 +38,27 @@ typedef struct Conductor {
     float e[GMICROFACET_ALBEDO_N];
     double e_avg;
     int smooth, anisotropic, compensate;
+    int distribution;
+    /* a textured (isotropic) roughness: its values at the point, and the albedo tables and compensation colours of
+     * CONDUCTOR_LEVELS roughnesses evenly over its range [level_lo, level_hi], interpolated between */
+    GTexNumber rough;
+    int nlevels;
+    double level_lo, level_hi;
+    float (*level_e)[GMICROFACET_ALBEDO_N];
+    GColor *level_ms;
 } Conductor;
+
+/* The roughnesses tabulated over a textured roughness's range. */
+#define CONDUCTOR_LEVELS 17
+
+/* The rough surface at one point: the distribution, its albedo table and the compensation's colour. */
+typedef struct RoughAt {
+    GMicrofacet mf;
+    const float *e;
+    const GColor *ms;
+    float e_buf[GMICROFACET_ALBEDO_N];
+    GColor ms_buf;
+} RoughAt;
 
 static void conductor_destroy(GMaterial *self)
 {
@@ -43,7 +67,46 @@ static void conductor_destroy(GMaterial *self)
     gcolor_free(&c->k);
     gcolor_free(&c->f_avg);
     gcolor_free(&c->ms);
+    for (int i = 0; c->level_ms && i < c->nlevels; i++)
+        gcolor_free(&c->level_ms[i]);
+    gmem_free(c->level_ms);
+    gmem_free(c->level_e);
+    gtexparam_number_release(&c->rough);
     gmem_free(c);
+}
+
+/* The rough surface at sp into *a: the material's own, or for a textured roughness the distribution of its value
+ * there with the tables interpolated between the two nearest levels (exactly a level's at a level); the colour on
+ * sp's arena (the caller marks and releases it). */
+static int rough_at(const Conductor *c, GSurfPoint *sp, RoughAt *a)
+{
+    a->mf = c->mf;
+    a->e = c->e;
+    a->ms = &c->ms;
+    if (!c->rough.gen)
+        return G_OK;
+    double r = gtexparam_number_at(&c->rough, sp), alpha = gmicrofacet_alpha_from_roughness(r);
+    a->mf = gmicrofacet_make(c->distribution, alpha, alpha);
+    double x = c->nlevels > 1 ? (r - c->level_lo) / (c->level_hi - c->level_lo) * (c->nlevels - 1) : 0.0;
+    x = x > 0.0 ? (x < c->nlevels - 1 ? x : c->nlevels - 1) : 0.0;
+    int j = (int)x;
+    double w = x - j;
+    a->e = c->level_e[j];
+    a->ms = &c->level_ms[j];
+    if (w == 0.0 || j + 1 >= c->nlevels)
+        return G_OK;
+    for (int i = 0; i < GMICROFACET_ALBEDO_N; i++)
+        a->e_buf[i] = (float)((1.0 - w) * c->level_e[j][i] + w * c->level_e[j + 1][i]);
+    a->e = a->e_buf;
+    if (!sp->scratch)
+        return G_ERR_INVALID;
+    int rc = gcolor_scratch(&a->ms_buf, c->base.model, sp->scratch);
+    if (rc == G_OK)
+        rc = gcolor_scale(&a->ms_buf, &c->level_ms[j], 1.0 - w);
+    if (rc == G_OK)
+        rc = gcolor_add_scaled(&a->ms_buf, &c->level_ms[j + 1], w);
+    a->ms = &a->ms_buf;
+    return rc;
 }
 
 /* The local frame at sp: about the shading normal n, its first tangent along dpdu for an anisotropic surface. */
@@ -52,8 +115,9 @@ static GFrame frame_at(const Conductor *c, const GSurfPoint *sp, GVec3 n)
     return c->anisotropic ? gframe_from_normal_tangent(n, sp->dpdu) : gframe_from_normal(n);
 }
 
-/* f cos_in of the rough surface for white light into f (a colour of the model); 0 when nothing is reflected. */
-static int rough_value(const Conductor *c, const GSurfPoint *sp, GVec3 n, GVec3 in, GVec3 out, GColor *f)
+/* f cos_in of the rough surface a for white light into f (a colour of the model); 0 when nothing is reflected. */
+static int rough_value(const Conductor *c, const RoughAt *a, const GSurfPoint *sp, GVec3 n, GVec3 in, GVec3 out,
+                       GColor *f)
 {
     GFrame fr = frame_at(c, sp, n);
     GVec3 wi = gframe_to_local(&fr, in), wo = gframe_to_local(&fr, out);
@@ -62,12 +126,12 @@ static int rough_value(const Conductor *c, const GSurfPoint *sp, GVec3 n, GVec3 
         return G_OK;
     }
     GVec3 h = gvec3_normalize(gvec3_add(wi, wo));
-    double single = gmicrofacet_reflect_cos(&c->mf, wi, wo), multiple = 0.0;
+    double single = gmicrofacet_reflect_cos(&a->mf, wi, wo), multiple = 0.0;
     if (single < 1e-30) /* far outside a narrow lobe: below what a float keeps to its precision */
         single = 0.0;
     if (c->compensate)
-        multiple = (1.0 - gmicrofacet_albedo_at(c->e, wo.z)) * (1.0 - gmicrofacet_albedo_at(c->e, wi.z)) * wi.z;
-    return gmaterial_fresnel_conductor_mix(f, gvec3_dot(wi, h), &c->eta, &c->k, single, c->compensate ? &c->ms : NULL,
+        multiple = (1.0 - gmicrofacet_albedo_at(a->e, wo.z)) * (1.0 - gmicrofacet_albedo_at(a->e, wi.z)) * wi.z;
+    return gmaterial_fresnel_conductor_mix(f, gvec3_dot(wi, h), &c->eta, &c->k, single, c->compensate ? a->ms : NULL,
                                            multiple);
 }
 
@@ -85,9 +149,13 @@ static int conductor_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in,
         return G_ERR_INVALID;
     GScratchMark mark = gscratch_mark(sp->scratch);
     GColor f;
+    RoughAt a;
     int rc = gcolor_scratch_uncleared(&f, self->model, sp->scratch);
+    if (rc == G_OK && !c->smooth)
+        rc = rough_at(c, sp, &a);
     if (rc == G_OK)
-        rc = c->smooth ? gmaterial_fresnel_conductor(&f, cos_in, &c->eta, &c->k) : rough_value(c, sp, n, in, out, &f);
+        rc = c->smooth ? gmaterial_fresnel_conductor(&f, cos_in, &c->eta, &c->k)
+                       : rough_value(c, &a, sp, n, in, out, &f);
     if (rc == G_OK)
         rc = gcolor_mul(result, &f, illum);
     gscratch_release(sp->scratch, mark);
@@ -109,15 +177,15 @@ static int conductor_ambient(const GMaterial *self, GSurfPoint *sp, const GColor
 }
 
 /* The probability of the compensation's cosine lobe for wo in the local frame. */
-static double cosine_share(const Conductor *c, GVec3 wo)
+static double cosine_share(const Conductor *c, const RoughAt *a, GVec3 wo)
 {
-    return c->compensate ? 1.0 - gmicrofacet_albedo_at(c->e, wo.z) : 0.0;
+    return c->compensate ? 1.0 - gmicrofacet_albedo_at(a->e, wo.z) : 0.0;
 }
 
-static double rough_pdf(const Conductor *c, GVec3 wi, GVec3 wo)
+static double rough_pdf(const Conductor *c, const RoughAt *a, GVec3 wi, GVec3 wo)
 {
-    double q = cosine_share(c, wo);
-    return (1.0 - q) * gmicrofacet_pdf_reflect(&c->mf, wo, wi) + q * gfmax(wi.z, 0.0) / M_PI;
+    double q = cosine_share(c, a, wo);
+    return (1.0 - q) * gmicrofacet_pdf_reflect(&a->mf, wo, wi) + q * gfmax(wi.z, 0.0) / M_PI;
 }
 
 static int conductor_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
@@ -144,24 +212,37 @@ static int conductor_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, co
     GVec3 wo = gframe_to_local(&fr, out), wi;
     if (!(wo.z > 0.0))
         return 0;
-    double q = cosine_share(c, wo);
+    RoughAt a;
+    GScratchMark mark = {0};
+    if (c->rough.gen && sp->scratch)
+        mark = gscratch_mark(sp->scratch);
+    int rc = rough_at(c, sp, &a);
+    if (rc != G_OK) {
+        if (c->rough.gen && sp->scratch)
+            gscratch_release(sp->scratch, mark);
+        return rc;
+    }
+    double q = cosine_share(c, &a, wo);
     if (u1 < q) {
         u1 /= q;
         double r = sqrt(u1), phi = 2.0 * M_PI * u2;
         wi = gvec3(r * cos(phi), r * sin(phi), sqrt(gfmax(0.0, 1.0 - u1)));
     } else {
         u1 = (u1 - q) / (1.0 - q);
-        GVec3 h = gmicrofacet_sample_visible(&c->mf, wo, u1 < 1.0 ? u1 : 0.0, u2);
+        GVec3 h = gmicrofacet_sample_visible(&a.mf, wo, u1 < 1.0 ? u1 : 0.0, u2);
         wi = gvec3_sub(gvec3_scale(h, 2.0 * gvec3_dot(wo, h)), wo);
     }
+    double pdf = wi.z > 0.0 ? rough_pdf(c, &a, wi, wo) : 0.0;
+    if (c->rough.gen && sp->scratch)
+        gscratch_release(sp->scratch, mark);
     if (!(wi.z > 0.0)) /* reflected below the surface: nothing drawn */
         return 0;
     s->in = gframe_to_world(&fr, wi);
-    s->pdf = rough_pdf(c, wi, wo);
+    s->pdf = pdf;
     s->flags = GSAMPLE_REFLECT;
     if (!(s->pdf > 0.0))
         return 0;
-    int rc = gmaterial_sample_weight(self, sp, s->in, out, NULL, 0, s->pdf, weight);
+    rc = gmaterial_sample_weight(self, sp, s->in, out, NULL, 0, s->pdf, weight);
     return rc ? rc : 1;
 }
 
@@ -175,7 +256,14 @@ static double conductor_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVe
     GVec3 wo = gframe_to_local(&fr, out);
     if (!(wo.z > 0.0))
         return 0.0;
-    return rough_pdf(c, gframe_to_local(&fr, in), wo);
+    RoughAt a;
+    GScratchMark mark = {0};
+    if (c->rough.gen && sp->scratch)
+        mark = gscratch_mark(sp->scratch);
+    double pdf = rough_at(c, sp, &a) == G_OK ? rough_pdf(c, &a, gframe_to_local(&fr, in), wo) : 0.0;
+    if (c->rough.gen && sp->scratch)
+        gscratch_release(sp->scratch, mark);
+    return pdf;
 }
 
 static int conductor_is_delta(const GMaterial *self, GSurfPoint *sp)
@@ -238,6 +326,7 @@ typedef struct ConductorSpec {
     int metal;                     /* index into the metal table, or -1 */
     double roughness_u, roughness_v;
     int distribution, compensate;
+    GTexNumber rough; /* a textured isotropic roughness (gen set; roughness_u and _v: its range's lower end) */
 } ConductorSpec;
 
 /* A colour literal as the nm spectrum of n or k (an rgb triple: its smooth reflectance spectrum). */
@@ -282,6 +371,36 @@ static int index_colours(Conductor *c, const ConductorSpec *p, GError *err)
                                           gcolormodel_name(m), gstatus_string(rc));
 }
 
+/* The albedo tables and compensation colours of CONDUCTOR_LEVELS roughnesses evenly over the textured roughness's
+ * range (one when the range is a point), after energy_terms (f_avg). */
+static int rough_levels(Conductor *c, const GTexNumber *rough, GError *err)
+{
+    gtexparam_number_bounds(rough, &c->level_lo, &c->level_hi);
+    c->nlevels = c->level_hi > c->level_lo ? CONDUCTOR_LEVELS : 1;
+    c->level_e = gmem_calloc((size_t)c->nlevels, sizeof *c->level_e);
+    c->level_ms = gmem_calloc((size_t)c->nlevels, sizeof *c->level_ms);
+    if (!c->level_e || !c->level_ms)
+        return gerror_set(err, G_ERR_NOMEM, "conductor: out of memory");
+    int rc = G_OK;
+    for (int j = 0; j < c->nlevels && rc == G_OK; j++) {
+        double r = c->nlevels > 1 ? c->level_lo + (c->level_hi - c->level_lo) * j / (c->nlevels - 1) : c->level_lo;
+        if (j == c->nlevels - 1)
+            r = c->level_hi; /* exactly the range's ends */
+        double alpha = gmicrofacet_alpha_from_roughness(r), e_avg;
+        GMicrofacet mf = gmicrofacet_make(c->distribution, alpha, alpha);
+        gmicrofacet_albedo_table(&mf, c->level_e[j], &e_avg);
+        rc = gcolor_alloc(&c->level_ms[j], c->base.model);
+        if (rc == G_OK)
+            rc = gcolor_map(&c->level_ms[j], ms_colour, &e_avg, &c->f_avg, NULL, NULL);
+    }
+    if (rc != G_OK)
+        return gerror_set(err, rc, "conductor: cannot tabulate its textured roughness (%s)", gstatus_string(rc));
+    gtexparam_number_copy(&c->rough, rough);
+    if (gtexparam_number_reads_uv(rough))
+        c->base.flags &= ~(unsigned)GMAT_NO_UV;
+    return G_OK;
+}
+
 static int conductor_create(const GColorModel *model, const ConductorSpec *p, GMaterial **out, GError *err)
 {
     *out = NULL;
@@ -296,16 +415,19 @@ static int conductor_create(const GColorModel *model, const ConductorSpec *p, GM
     c->mf = gmicrofacet_make(p->distribution, ax, ay);
     c->anisotropic = !c->smooth && ax != ay;
     c->compensate = p->compensate && !c->smooth;
+    c->distribution = p->distribution;
     rc = index_colours(c, p, err);
     if (rc == G_OK)
         rc = energy_terms(c, err);
+    if (!c->anisotropic)
+        m->flags |= GMAT_NO_UV; /* only an anisotropic surface reads its tangent dpdu (material.h) */
+    m->flags |= GMAT_DIAGONAL;  /* f * illum: n and k are vectors, nothing re-radiates */
+    if (rc == G_OK && p->rough.gen)
+        rc = rough_levels(c, &p->rough, err);
     if (rc != G_OK) {
         conductor_destroy(m);
         return rc;
     }
-    if (!c->anisotropic)
-        m->flags |= GMAT_NO_UV; /* only an anisotropic surface reads its tangent dpdu (material.h) */
-    m->flags |= GMAT_DIAGONAL;  /* f * illum: n and k are vectors, nothing re-radiates */
     *out = m;
     return G_OK;
 }
@@ -363,12 +485,30 @@ static int read_metal(GReader *r, int *metal, GError *err)
                             names);
 }
 
+/* `roughness R`: a number in [0, 1] or a generator whose range lies in [GMICROFACET_ALPHA_MIN, 1] (a rough surface
+ * everywhere: whether the surface is an ideal mirror is decided at creation). */
+static int read_roughness(GReader *r, GTexNumber *out, GError *err)
+{
+    GToken t;
+    int rc = greader_peek(r, &t, err);
+    if (rc == G_OK)
+        rc = gtexparam_read_number(r, 0.0, 1.0, 0, "conductor", "roughness", NULL, out, err);
+    double lo, hi;
+    gtexparam_number_bounds(out, &lo, &hi);
+    if (rc == G_OK && out->gen && lo < GMICROFACET_ALPHA_MIN)
+        return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col,
+                                "conductor: a textured roughness must stay >= %g, rough everywhere (the generator's "
+                                "range starts at %g; whether the surface is an ideal mirror is decided at creation)",
+                                GMICROFACET_ALPHA_MIN, lo);
+    return rc;
+}
+
 /* conductor { eta COLOR k COLOR | metal NAME  roughness R | roughness_u R roughness_v R  distribution ggx|beckmann
  * compensate on|off }: metal Cu, smooth, GGX, compensated when not given */
 static int parse_conductor(GReader *r, const void *vtable, void **object, GError *err)
 {
     (void)vtable;
-    ConductorSpec p = {NULL, NULL, -1, 0.0, 0.0, GMICROFACET_GGX, 1};
+    ConductorSpec p = {NULL, NULL, -1, 0.0, 0.0, GMICROFACET_GGX, 1, {0.0, NULL, 0.0, 0.0}};
     static const char *const distributions[] = {"ggx", "beckmann", NULL};
     int have_metal = 0, have_r = 0, have_uv = 0, metal_line = 0, metal_col = 0;
     const char *key;
@@ -383,14 +523,14 @@ static int parse_conductor(GReader *r, const void *vtable, void **object, GError
             rc = read_metal(r, &p.metal, err);
             have_metal = 1;
         } else if (strcmp(key, "roughness") == 0) {
-            rc = greader_number_in(r, 0.0, 1.0, &p.roughness_u, err);
-            p.roughness_v = p.roughness_u;
+            rc = read_roughness(r, &p.rough, err);
+            p.roughness_u = p.roughness_v = p.rough.value;
             have_r = 1;
         } else if (strcmp(key, "roughness_u") == 0) {
-            rc = greader_number_in(r, 0.0, 1.0, &p.roughness_u, err);
+            rc = gtexparam_read_constant(r, 0.0, 1.0, "conductor", "roughness_u", ROUGH_WHY, &p.roughness_u, err);
             have_uv = 1;
         } else if (strcmp(key, "roughness_v") == 0) {
-            rc = greader_number_in(r, 0.0, 1.0, &p.roughness_v, err);
+            rc = gtexparam_read_constant(r, 0.0, 1.0, "conductor", "roughness_v", ROUGH_WHY, &p.roughness_v, err);
             have_uv = 1;
         } else if (strcmp(key, "distribution") == 0)
             rc = greader_choice(r, distributions, &p.distribution, err);
@@ -417,6 +557,7 @@ static int parse_conductor(GReader *r, const void *vtable, void **object, GError
         *object = m;
     gcolorspec_destroy(p.eta);
     gcolorspec_destroy(p.k);
+    gtexparam_number_release(&p.rough);
     return rc;
 }
 
@@ -427,7 +568,7 @@ static const GParamInfo conductor_params[] = {
      "k, the extinction coefficient (imaginary part of the index), per wavelength; with eta"},
     {"metal", GPARAM_NAMED, "choice", "Cu (without eta and k)", "a name of `gmat metals`",
      "measured n and k of a metal or compound (docs/reference/metals.md); excludes eta and k"},
-    {"roughness", GPARAM_NAMED, "number", "0 (smooth)", "[0, 1]",
+    {"roughness", GPARAM_NAMED, "texnumber", "0 (smooth)", "[0, 1]; textured: a range within [0.001, 1]",
      "the microfacet width alpha (alpha = roughness); below 0.001 (both ways) an ideal mirror"},
     {"roughness_u", GPARAM_NAMED, "number", "0", "[0, 1]", "alpha along the surface's dP/du (anisotropic)"},
     {"roughness_v", GPARAM_NAMED, "number", "0", "[0, 1]", "alpha across it"},

@@ -3,12 +3,16 @@
  * energy compensation of the multiple scattering it leaves out). */
 #include "generic/kit/dispersion.h"
 #include "generic/kit/material_kit.h"
+#include "generic/kit/texparam.h"
 #include "generic/kit/microfacet_dielectric.h"
 #include "generic/materials.h"
 #include "generic/plugin.h"
 
 #include <math.h>
 #include <string.h>
+
+/* Why a roughness stays constant (gtexparam_read_constant). */
+#define ROUGH_WHY "the microfacet distribution and its albedo tables, made at creation"
 
 typedef struct Dielectric {
     GMaterial base;
@@ -418,12 +422,13 @@ static int parse_dielectric(GReader *r, const void *vtable, void **object, GErro
     static const char *const distributions[] = {"ggx", "beckmann", NULL};
     while ((rc = greader_param(r, &key, err)) > 0) {
         if (strcmp(key, "roughness") == 0) {
-            if ((rc = greader_number_in(r, 0.0, 1.0, &rough.roughness_u, err)) == G_OK)
+            if ((rc = gtexparam_read_constant(r, 0.0, 1.0, "dielectric", "roughness", ROUGH_WHY, &rough.roughness_u,
+                                              err)) == G_OK)
                 rough.roughness_v = rough.roughness_u;
         } else if (strcmp(key, "roughness_u") == 0)
-            rc = greader_number_in(r, 0.0, 1.0, &rough.roughness_u, err);
+            rc = gtexparam_read_constant(r, 0.0, 1.0, "dielectric", "roughness_u", ROUGH_WHY, &rough.roughness_u, err);
         else if (strcmp(key, "roughness_v") == 0)
-            rc = greader_number_in(r, 0.0, 1.0, &rough.roughness_v, err);
+            rc = gtexparam_read_constant(r, 0.0, 1.0, "dielectric", "roughness_v", ROUGH_WHY, &rough.roughness_v, err);
         else if (strcmp(key, "distribution") == 0)
             rc = greader_choice(r, distributions, &rough.distribution, err);
         else if (strcmp(key, "compensate") == 0)

@@ -1,5 +1,6 @@
 /* emitter.c - a surface that emits radiance L from its front (or both sides). */
 #include "generic/kit/material_kit.h"
+#include "generic/kit/texparam.h"
 #include "generic/materials.h"
 #include "generic/plugin.h"
 
@@ -71,17 +72,24 @@ int gemitter_create(const GColorModel *model, const GColor *radiance, int two_si
     return rc;
 }
 
-/* emitter { radiance COLOR two_sided BOOL }: radiance white 1 (a light), one-sided when not given */
+/* gemitter_create as a GTexParamCreate (ctx: two_sided). */
+static int create_textured(const GColorModel *m, const GColor *c, void *ctx, GMaterial **out, GError *err)
+{
+    return gemitter_create(m, c, *(const int *)ctx, out, err);
+}
+
+/* emitter { radiance COLOR two_sided BOOL }: radiance white 1 (a light), one-sided when not given; a textured
+ * radiance scales the emitter of unit radiance (gtexparam_one_color_material) */
 static int parse_emitter(GReader *r, const void *vtable, void **object, GError *err)
 {
     (void)vtable;
-    GColor radiance = {0};
+    GTexColor radiance = {0};
     int two_sided = 0;
     const char *key;
     int rc;
     while ((rc = greader_param(r, &key, err)) > 0) {
         if (strcmp(key, "radiance") == 0)
-            rc = greader_color(r, GCOLOR_LIGHT, &radiance, err);
+            rc = gtexparam_read_color(r, GCOLOR_LIGHT, &radiance, err);
         else if (strcmp(key, "two_sided") == 0)
             rc = greader_bool(r, &two_sided, err);
         else
@@ -89,17 +97,21 @@ static int parse_emitter(GReader *r, const void *vtable, void **object, GError *
         if (rc < 0)
             break;
     }
-    if (rc == G_OK)
-        rc = gmaterial_param_default(r, 1.0, GCOLOR_LIGHT, &radiance, err);
+    if (rc == G_OK && radiance.kind == GTEXCOLOR_CONSTANT)
+        rc = gmaterial_param_default(r, 1.0, GCOLOR_LIGHT, &radiance.a, err);
     GMaterial *m = NULL;
-    if (rc == G_OK && (rc = gemitter_create(greader_colormodel(r), &radiance, two_sided, &m, err)) == G_OK)
+    if (rc == G_OK && radiance.kind != GTEXCOLOR_CONSTANT)
+        rc = gtexparam_one_color_material(greader_colormodel(r), &radiance, create_textured, &two_sided, &m, err);
+    else if (rc == G_OK)
+        rc = gemitter_create(greader_colormodel(r), &radiance.a, two_sided, &m, err);
+    if (rc == G_OK)
         *object = m;
-    gcolor_free(&radiance);
+    gtexparam_color_release(&radiance);
     return rc;
 }
 
 static const GParamInfo emitter_params[] = {
-    {"radiance", GPARAM_NAMED, "color", "rgb 1 1 1", ">= 0",
+    {"radiance", GPARAM_NAMED, "texcolor", "rgb 1 1 1", ">= 0",
      "the radiance emitted, read as a light (rgb 1 1 1: D65 of luminance 1)"},
     {"two_sided", GPARAM_NAMED, "bool", "no", NULL, "emit from both sides; no: from the front (the outside) only"},
     {NULL},

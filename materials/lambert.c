@@ -99,7 +99,7 @@ static int parse_lambert(GReader *r, const void *vtable, void **object, GError *
 }
 
 static const GParamInfo lambert_params[] = {
-    {"reflectance", GPARAM_NAMED, "color", "rgb 0.8 0.8 0.8", "[0, 1]", "the albedo rho (f = rho / pi)"},
+    {"reflectance", GPARAM_NAMED, "texcolor", "rgb 0.8 0.8 0.8", "[0, 1]", "the albedo rho (f = rho / pi)"},
     {NULL},
 };
 

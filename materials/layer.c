@@ -29,6 +29,7 @@
  * its reflected draws; else a cosine-weighted direction; pdf is p pdf_top + (1 - p) cos / pi; weights are value
  * / pdf with the value above, so they are consistent with reflection() by construction. */
 #include "generic/kit/material_kit.h"
+#include "generic/kit/texparam.h"
 #include "generic/kit/material_params.h"
 #include "generic/kit/node_kit.h"
 #include "generic/materials.h"
@@ -499,7 +500,8 @@ static int parse_layer(GReader *r, const void *vtable, void **object, GError *er
         else if (strcmp(key, "bottom") == 0)
             rc = greader_material(r, &bottom, err);
         else if (strcmp(key, "thickness") == 0)
-            rc = greader_number_in(r, 0.0, LAYER_MAX_THICKNESS, &thickness, err);
+            rc = gtexparam_read_constant(r, 0.0, LAYER_MAX_THICKNESS, "layer", "thickness",
+                                         "the medium of the random walks, made at creation", &thickness, err);
         else if (strcmp(key, "albedo") == 0) {
             gcolor_free(&albedo);
             rc = greader_color(r, GCOLOR_REFLECTANCE, &albedo, err);

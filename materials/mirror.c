@@ -94,7 +94,7 @@ static int parse_mirror(GReader *r, const void *vtable, void **object, GError *e
 }
 
 static const GParamInfo mirror_params[] = {
-    {"reflectance", GPARAM_NAMED, "color", "rgb 1 1 1", "[0, 1]", "the share of the light the mirror ray reflects"},
+    {"reflectance", GPARAM_NAMED, "texcolor", "rgb 1 1 1", "[0, 1]", "the share of the light the mirror ray reflects"},
     {NULL},
 };
 

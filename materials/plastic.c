@@ -19,6 +19,7 @@
  * Sampling: the coat (its ideal ray, or visible normals when rough) with probability p = R(cos_o) kept in
  * [0.05, 0.95], else a cosine-weighted direction; pdf p pdf_coat + (1 - p) cos / pi. */
 #include "generic/kit/material_kit.h"
+#include "generic/kit/texparam.h"
 #include "generic/kit/material_params.h"
 #include "generic/kit/microfacet.h"
 #include "generic/plugin.h"
@@ -257,9 +258,12 @@ static int parse_plastic(GReader *r, const void *vtable, void **object, GError *
             gcolor_free(&rho);
             rc = greader_color(r, GCOLOR_REFLECTANCE, &rho, err);
         } else if (strcmp(key, "index") == 0)
-            rc = greader_number_in(r, 1.0, 4.0, &eta, err);
+            rc = gtexparam_read_constant(r, 1.0, 4.0, "plastic", "index", "the coat's Fresnel tables, made at creation",
+                                         &eta, err);
         else if (strcmp(key, "roughness") == 0)
-            rc = greader_number_in(r, 0.0, 1.0, &roughness, err);
+            rc = gtexparam_read_constant(r, 0.0, 1.0, "plastic", "roughness",
+                                         "the coat's microfacet distribution and albedo tables, made at creation",
+                                         &roughness, err);
         else if (strcmp(key, "distribution") == 0)
             rc = greader_choice(r, shapes, &distribution, err);
         else

@@ -16,6 +16,7 @@
  * [0.05, 0.95]), else the base's sample with the film's factors; the base's own delta reflection draws nothing
  * (the film's mirror ray is its place). */
 #include "generic/kit/material_kit.h"
+#include "generic/kit/texparam.h"
 #include "generic/kit/node_kit.h"
 #include "generic/kit/thinfilm.h"
 #include "generic/materials.h"
@@ -24,16 +25,20 @@
 #include <math.h>
 #include <string.h>
 
+
 typedef struct ThinFilm {
     GMaterial base;
     GMaterial *under; /* the base material (one reference) */
-    double thickness, n, k;
+    GTexNumber thickness, n, k; /* each a constant or textured (kit/texparam.h) */
 } ThinFilm;
 
 static void thinfilm_destroy(GMaterial *self)
 {
     ThinFilm *f = (ThinFilm *)self;
     gmaterial_unref(f->under);
+    gtexparam_number_release(&f->thickness);
+    gtexparam_number_release(&f->n);
+    gtexparam_number_release(&f->k);
     gmem_free(f);
 }
 
@@ -50,7 +55,8 @@ static GThinFilm film_at(const ThinFilm *f, GSurfPoint *sp)
     gscratch_release(sp->scratch, mark);
     ns = isfinite(ns) ? fmin(100.0, fmax(0.01, ns)) : 1.0;
     int inside = ns != 1.0 && gsurfpoint_relative_index(sp) > 1.0;
-    GThinFilm film = {f->thickness, f->n, f->k, inside ? ns : 1.0, inside ? 1.0 : ns};
+    GThinFilm film = {gtexparam_number_at(&f->thickness, sp), gtexparam_number_at(&f->n, sp),
+                      gtexparam_number_at(&f->k, sp), inside ? ns : 1.0, inside ? 1.0 : ns};
     return film;
 }
 
@@ -261,8 +267,9 @@ static const GMaterialClass thinfilm_class = {
 #define THINFILM_CALLS 4
 
 /* The film over base (NULL: a dielectric of index 1) into *out. */
-static int thinfilm_create(const GColorModel *model, double thickness, double n, double k, GMaterial *base,
-                           GMaterial **out, GError *err)
+/* Takes references of its own to the numbers' generators. */
+static int thinfilm_create(const GColorModel *model, const GTexNumber *thickness, const GTexNumber *n,
+                           const GTexNumber *k, GMaterial *base, GMaterial **out, GError *err)
 {
     GMaterial *under = base ? gmaterial_ref(base) : NULL;
     int rc = G_OK;
@@ -289,51 +296,58 @@ static int thinfilm_create(const GColorModel *model, double thickness, double n,
     if ((rc = gmaterial_new(&thinfilm_class, model, sizeof(ThinFilm), &m, err)) == G_OK) {
         ThinFilm *f = (ThinFilm *)m;
         f->under = under, under = NULL;
-        f->thickness = thickness, f->n = n, f->k = k;
+        gtexparam_number_copy(&f->thickness, thickness);
+        gtexparam_number_copy(&f->n, n);
+        gtexparam_number_copy(&f->k, k);
         m->depth = depth, m->cost = (int)cost;
         /* what the base promises holds through the film: its factors are plain colours of the ambient angle */
         m->flags |= f->under->flags &
                     (GMAT_NO_EMISSION | GMAT_OPAQUE | GMAT_GEOMETRIC_NORMAL | GMAT_NO_UV | GMAT_DIAGONAL);
+        if (gtexparam_number_reads_uv(thickness) || gtexparam_number_reads_uv(n) || gtexparam_number_reads_uv(k))
+            m->flags &= ~(unsigned)GMAT_NO_UV;
         *out = m;
     }
     gmaterial_unref(under);
     return rc;
 }
 
-/* thinfilm { thickness NM index N extinction K base MATERIAL } */
+/* thinfilm { thickness NM index N extinction K base MATERIAL }: each number may be textured */
 static int parse_thinfilm(GReader *r, const void *vtable, void **object, GError *err)
 {
     (void)vtable;
-    double thickness = 500.0, n = 1.33, k = 0.0;
+    GTexNumber thickness = gtexparam_number_const(500.0), n = gtexparam_number_const(1.33),
+               k = gtexparam_number_const(0.0);
     GMaterial *base = NULL;
     const char *key;
     int rc;
     while ((rc = greader_param(r, &key, err)) > 0) {
         if (strcmp(key, "thickness") == 0)
-            rc = greader_number_in(r, 0.0, GTHINFILM_MAX_THICKNESS, &thickness, err);
+            rc = gtexparam_read_number(r, 0.0, GTHINFILM_MAX_THICKNESS, 0, "thinfilm", "thickness", NULL, &thickness,
+                                       err);
         else if (strcmp(key, "index") == 0)
-            rc = greader_number_in(r, 0.01, GTHINFILM_MAX_INDEX, &n, err);
+            rc = gtexparam_read_number(r, 0.01, GTHINFILM_MAX_INDEX, 0, "thinfilm", "index", NULL, &n, err);
         else if (strcmp(key, "extinction") == 0)
-            rc = greader_number_in(r, 0.0, GTHINFILM_MAX_INDEX, &k, err);
+            rc = gtexparam_read_number(r, 0.0, GTHINFILM_MAX_INDEX, 0, "thinfilm", "extinction", NULL, &k, err);
         else if (strcmp(key, "base") == 0)
             rc = greader_material(r, &base, err);
         else
             rc = greader_unknown_param(r, "thickness, index, extinction, base", err);
         if (rc < 0)
-            return rc;
+            break;
     }
-    if (rc < 0)
-        return rc;
     GMaterial *m = NULL;
-    if ((rc = thinfilm_create(greader_colormodel(r), thickness, n, k, base, &m, err)) == G_OK)
+    if (rc == G_OK && (rc = thinfilm_create(greader_colormodel(r), &thickness, &n, &k, base, &m, err)) == G_OK)
         *object = m;
+    gtexparam_number_release(&thickness);
+    gtexparam_number_release(&n);
+    gtexparam_number_release(&k);
     return rc;
 }
 
 static const GParamInfo thinfilm_params[] = {
-    {"thickness", GPARAM_NAMED, "number", "500", "[0, 5000]", "the film's thickness in nm"},
-    {"index", GPARAM_NAMED, "number", "1.33", "[0.01, 10]", "the film's refraction index n"},
-    {"extinction", GPARAM_NAMED, "number", "0", "[0, 10]", "the film's extinction coefficient k (absorption)"},
+    {"thickness", GPARAM_NAMED, "texnumber", "500", "[0, 5000]", "the film's thickness in nm"},
+    {"index", GPARAM_NAMED, "texnumber", "1.33", "[0.01, 10]", "the film's refraction index n"},
+    {"extinction", GPARAM_NAMED, "texnumber", "0", "[0, 10]", "the film's extinction coefficient k (absorption)"},
     {"base", GPARAM_NAMED, "material", "dielectric { index 1 } (a free film)", "any material",
      "what lies under the film; the scalar of its refraction index is the substrate's"},
     {NULL},

@@ -1,97 +1,45 @@
 /* image.c - the image node: the child's light-carrying colour results times the colour of an image at
  * (u, v), looked up through OpenImageIO's TextureSystem (lib/image/texture_oiio.cpp) with trilinear MIP-mapping
- * over the surface point's footprint:
+ * over the surface point's footprint; the file, its checks and its texels are the kit's (gtexparam_image_open,
+ * kit/texparam.h), shared with textured colour parameters:
  *
  *   node NAME image { child MATERIAL  file "name.png"  wrap periodic|clamp|black|mirror
  *                     swrap ...  twrap ...  colorspace auto|srgb|linear  blur 0 }
  */
-#include <generic/services/image.h>
 #include <generic/kit/node_kit.h>
 #include <generic/plugin.h>
-#include <generic/services/texsys.h>
+#include <generic/kit/texparam.h>
 #include <generic/kit/texture_parse.h>
 
-#include <math.h>
 #include <string.h>
 
 typedef struct Image {
     GNodeChild node; /* base and child; first */
-    GTextureSystem *ts;
-    GTexFile *file;
-    int srgb;
-    GTexWrap swrap, twrap;
-    double blur;
-    GColor basis[3]; /* the colours of the linear primaries in the child's model */
-    int linear;      /* the model's from_rgb is linear: a texel is the basis mixed (else from_rgb per texel) */
-    char *path;
+    GTexImage *image; /* the file, its lookups and the colours of its texels (kit/texparam.h) */
 } Image;
 
 static void image_destroy(GMaterial *self)
 {
     Image *im = (Image *)self;
     gmaterial_unref(im->node.child);
-    for (int i = 0; i < 3; i++)
-        gcolor_free(&im->basis[i]);
-    gtexsys_unref(im->ts);
-    gmem_free(im->path);
+    gtexparam_image_free(im->image);
     gmem_free(im);
 }
 
-/* The linear texel colour at the point, looked up once per point (cached under the node). NaN, infinite and
- * negative texels (possible in float files) become 0: they would otherwise reach the pixels. A failed lookup (a
- * file that is damaged past its header) is the lookup's status, never a black texel. */
-static int texel(const Image *im, GSurfPoint *sp, double rgb[3])
-{
-    GVec3 c;
-    if (gsurfpoint_cache_get(sp, im, NULL, &c)) {
-        rgb[0] = c.x;
-        rgb[1] = c.y;
-        rgb[2] = c.z;
-        return G_OK;
-    }
-    float v[3];
-    const double *a = sp->uv_axis1, *b = sp->uv_axis2;
-    double deriv[4] = {sp->uv_footprint, 0.0, 0.0, sp->uv_footprint};
-    if (a[0] != 0.0 || a[1] != 0.0 || b[0] != 0.0 || b[1] != 0.0) { /* the footprint's ellipse; t = 1 - v */
-        deriv[0] = a[0];
-        deriv[1] = -a[1];
-        deriv[2] = b[0];
-        deriv[3] = -b[1];
-    }
-    int rc = gtexsys_lookup(im->ts, im->file, im->swrap, im->twrap, sp->u, 1.0 - sp->v, deriv, im->blur, v);
-    if (rc != G_OK)
-        return rc;
-    for (int i = 0; i < 3; i++) {
-        double x = im->srgb ? gimage_srgb_decode(v[i]) : v[i];
-        rgb[i] = isfinite(x) && x > 0.0 ? x : 0.0;
-    }
-    gsurfpoint_cache_put(sp, im, 1.0, gvec3(rgb[0], rgb[1], rgb[2]));
-    return G_OK;
-}
-
-/* result = texel * result. */
+/* result = texel * result: the texel at the point (looked up once per point, then cached) as a reflectance. */
 static int apply(const GMaterial *self, GSurfPoint *sp, GColor *result)
 {
     const Image *im = (const Image *)self;
     double rgb[3];
-    int rc = texel(im, sp, rgb);
+    int rc = gtexparam_image_rgb(im->image, sp, rgb);
     if (rc != G_OK)
         return rc;
     GNodeTemps t;
     gnode_temps_init(&t);
     GColor c;
     rc = gnode_temps_color(&t, sp, result->model, 0, &c);
-    if (rc == G_OK) {
-        if (result->model == im->node.base.model && im->linear) {
-            rc = gcolor_scale(&c, &im->basis[0], rgb[0]);
-            if (rc == G_OK)
-                rc = gcolor_add_scaled(&c, &im->basis[1], rgb[1]);
-            if (rc == G_OK)
-                rc = gcolor_add_scaled(&c, &im->basis[2], rgb[2]);
-        } else {
-            rc = gcolor_from_rgb(&c, rgb, GCOLOR_REFLECTANCE);
-        }
-    }
+    if (rc == G_OK)
+        rc = gtexparam_image_uplift(im->image, rgb, GCOLOR_REFLECTANCE, &c);
     if (rc == G_OK)
         rc = gcolor_mul(result, &c, result);
     gnode_temps_release(&t);
@@ -141,30 +89,6 @@ static int image_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const 
     return rc ? rc : 1;
 }
 
-/* *linear = 1 when the model's from_rgb mixes the primaries' colours (the basis uplift, rgb), so that a texel may
- * be the basis mixed by its components; 0 for a smooth uplift (the sigmoid), whose mixture of primaries would
- * leave [0, 1]: each texel is then uplifted itself. Tested on one colour, 0.25 0.5 0.75. */
-static int is_linear(const GColorModel *model, const GColor basis[3], int *linear)
-{
-    GColor direct = {0}, mixed = {0};
-    double rgb[3] = {0.25, 0.5, 0.75};
-    int rc = gcolor_alloc(&direct, model);
-    if (rc == G_OK)
-        rc = gcolor_alloc(&mixed, model);
-    if (rc == G_OK)
-        rc = gcolor_from_rgb(&direct, rgb, GCOLOR_REFLECTANCE);
-    for (int i = 0; i < 3 && rc == G_OK; i++)
-        rc = gcolor_add_scaled(&mixed, &basis[i], rgb[i]);
-    if (rc == G_OK) {
-        double size = gcolor_brightness(&direct);
-        rc = gcolor_axpy(&mixed, -1.0, &direct, &mixed);
-        *linear = rc == G_OK && gcolor_brightness(&mixed) <= 1e-5 * size;
-    }
-    gcolor_free(&direct);
-    gcolor_free(&mixed);
-    return rc;
-}
-
 static const GMaterialClass image_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "image",
@@ -186,69 +110,38 @@ static const GMaterialClass image_class = {
     .is_delta = gnode_child_is_delta,
 };
 
+/* 1 when the image's texels are vectors in the model (then the node's results are its child's times a vector). */
+static int texels_are_vectors(const GTexImage *image, const GColorModel *model)
+{
+    GColor c = {0};
+    static const double rgb[3] = {0.25, 0.5, 0.75};
+    int vector = gcolor_alloc(&c, model) == G_OK &&
+                 gtexparam_image_uplift(image, rgb, GCOLOR_REFLECTANCE, &c) == G_OK && c.kind == GCOLOR_VECTOR;
+    gcolor_free(&c);
+    return vector;
+}
+
 int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptions *opt, GMaterial **out,
                        GError *err)
 {
     *out = NULL;
-    GImageNodeOptions o;
-    memset(&o, 0, sizeof o);
-    if (opt)
-        o = *opt;
     const GColorModel *model;
     int rc = gnode_check("image", &child, 1, NULL, 0, &model, err);
     if (rc != G_OK)
         return rc;
-    if (!path || !path[0])
-        return gerror_set(err, G_ERR_INVALID, "image: no file name given");
-    if ((unsigned)o.swrap > GTEX_WRAP_MIRROR || (unsigned)o.twrap > GTEX_WRAP_MIRROR ||
-        (unsigned)o.colorspace > GTEX_COLORSPACE_LINEAR)
-        return gerror_set(err, G_ERR_INVALID, "image '%s': unknown wrap mode or colour space", path);
-    if (!(o.blur >= 0.0) || !isfinite(o.blur))
-        return gerror_set(err, G_ERR_INVALID, "image '%s': blur must be >= 0, got %g", path, o.blur);
+    GTexImage *image;
+    if ((rc = gtexparam_image_open(path, opt, model, &image, err)) != G_OK)
+        return rc;
     GMaterial *mat;
     rc = gnode_child_new(&image_class, child, NULL, 0, sizeof(Image), &mat, err);
-    if (rc != G_OK)
-        return rc;
-    Image *im = (Image *)mat;
-    im->swrap = o.swrap;
-    im->twrap = o.twrap;
-    im->blur = o.blur;
-    im->path = gmem_strdup(path);
-    im->ts = o.texsys ? gtexsys_ref(o.texsys) : gtexsys_default(err);
-    if (!im->path)
-        rc = gerror_set(err, G_ERR_NOMEM, "image: out of memory");
-    else if (!im->ts)
-        rc = err && err->code ? err->code : G_ERR_NOMEM;
-    int channels = 0, srgb = 0;
-    if (rc == G_OK)
-        rc = gtexsys_open(im->ts, path, &im->file, &channels, &srgb, err);
-    im->srgb = o.colorspace == GTEX_COLORSPACE_SRGB || (o.colorspace == GTEX_COLORSPACE_AUTO && srgb);
-    if (rc == G_OK) { /* one lookup of the finest level decodes the pixels: a truncated file fails here */
-        static const double finest[4] = {0.0, 0.0, 0.0, 0.0};
-        float v[3];
-        if (gtexsys_lookup(im->ts, im->file, GTEX_WRAP_CLAMP, GTEX_WRAP_CLAMP, 0.5, 0.5, finest, 0.0, v) != G_OK)
-            rc = gerror_set(err, G_ERR_IO, "image '%s' cannot be read: its pixels cannot be decoded (a truncated "
-                                           "or damaged file)", path);
-    }
-    for (int i = 0; i < 3 && rc == G_OK; i++) {
-        double e[3] = {i == 0, i == 1, i == 2};
-        rc = gcolor_alloc(&im->basis[i], model);
-        if (rc != G_OK)
-            rc = gerror_set(err, G_ERR_NOMEM, "image: out of memory");
-        else if ((rc = gcolor_from_rgb(&im->basis[i], e, GCOLOR_REFLECTANCE)) != G_OK)
-            rc = gerror_set(err, rc, "image '%s': the colour model '%s' cannot take RGB colours", path,
-                            gcolormodel_name(model));
-    }
-    if (rc == G_OK)
-        rc = is_linear(model, im->basis, &im->linear);
     if (rc != G_OK) {
-        image_destroy(&im->node.base);
+        gtexparam_image_free(image);
         return rc;
     }
+    Image *im = (Image *)mat;
+    im->image = image;
     gnode_inherit_no_emission(&im->node.base, &child, 1); /* the child's emission times a finite texel */
-    int vectors = im->basis[0].kind == GCOLOR_VECTOR && im->basis[1].kind == GCOLOR_VECTOR &&
-                  im->basis[2].kind == GCOLOR_VECTOR;
-    if (vectors) {
+    if (texels_are_vectors(image, model)) {
         gnode_inherit_diagonal(&im->node.base, &child, 1); /* the child's pass-on times a texel colour */
         /* reflection and diffuse colour: the child's at the same point times the same texel colour, a vector, so
          * texel * (diffuse * light) = (texel * diffuse) * light */

@@ -369,11 +369,14 @@ static const char *const doc_intros[] = {
     "`material [NAME] TYPE [{ ... }]`. A colour parameter's range holds for each sample in the file's colour\n"
     "model, widened by the model's conversion error; a reflectance exceeds 1 in a band only as the fold of a\n"
     "re-radiation matrix whose energy stays at most 1 ([colour.md](colour.md#range-after-conversion),\n"
-    "[format.md](format.md#reflectances-above-1)).\n",
+    "[format.md](format.md#reflectances-above-1)). A parameter of type texnumber is a number or a generator, one\n"
+    "of type texcolor a colour, `image { ... }` or `mix { ... }`\n"
+    "([textured parameters](format.md#textured-parameters)).\n",
     "`node [NAME] TYPE { ... }`: the nodes of texture trees. Nodes are materials: each stands wherever a\n"
     "material is expected, and the other way round.\n",
     "`generator [NAME] TYPE [{ ... }]`: a scalar (with its gradient) per surface point, for the parameters of\n"
-    "type generator of the nodes.\n",
+    "type generator of the nodes and of type texnumber or texcolor of the materials. Every generator also takes\n"
+    "`range LO HI` (default 0 1), which maps its value v to LO (1 - v) + HI v.\n",
 };
 #define NDOC_KINDS ((int)(sizeof doc_kinds / sizeof doc_kinds[0]))
 

@@ -128,8 +128,9 @@ typedef enum GParamForm {
  * many), "integer", "bool", "string" (quoted), "path" (a quoted file name, relative to the file), "vector"
  * (`<x, y, z>` or `x y z`), "color", "material" (a material or texture node), "generator", "choice" (one of the
  * words `range` lists), "formula" (a number or a keyword with numbers; `range` lists the forms), "block" (a
- * `{ ... }` of its own syntax, which `range` gives), "shape" (a CSG or CPG shape tree, its grammar in `range`), or
- * the keyword of a kind an application registers. */
+ * `{ ... }` of its own syntax, which `range` gives), "shape" (a CSG or CPG shape tree, its grammar in `range`),
+ * "texnumber" (a number or a generator: a textured parameter, kit/texparam.h), "texcolor" (a colour, `image { ... }`
+ * or `mix { ... }`: a textured colour, kit/texparam.h), or the keyword of a kind an application registers. */
 typedef struct GParamInfo {
     const char *name;  /**< the keyword of a named parameter; a placeholder (e.g. "KELVIN") for a positional one */
     GParamForm form;   /**< how it is written */

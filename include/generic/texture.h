@@ -120,6 +120,16 @@ GENERIC_API GENERIC_NODISCARD int ggenerator_cached_gradient(const GGenerator *g
  * dpdu/dpdv for world space). Cached through ggenerator_cached_gradient. */
 GENERIC_API GENERIC_NODISCARD int ggenerator_surface_derivatives(const GGenerator *g, GSurfPoint *sp, double *dh_du, double *dh_dv);
 
+/** A generator whose value is inner's mapped linearly from [0, 1] onto [lo, hi]: lo (1 - v) + hi v, exactly lo
+ * where inner is 0 and exactly hi where it is 1; gradient (hi - lo) times inner's; the space is inner's. What the
+ * reader makes of `range LO HI` in any generator's block (the default, 0 1, makes none). Takes its own reference of
+ * inner. G_ERR_INVALID naming the parameter `range` when lo or hi is not finite or lo > hi. */
+GENERIC_API GENERIC_NODISCARD int ggenerator_range_create(GGenerator *inner, double lo, double hi, GGenerator **out,
+                                                          GError *err);
+/** The interval a generator's value is declared to take: [lo, hi] of a generator made by ggenerator_range_create,
+ * [0, 1] for every other (the convention of the built-in generators; a value outside it is the generator's own). */
+GENERIC_API void ggenerator_declared_range(const GGenerator *g, double *lo, double *hi);
+
 #ifdef __cplusplus
 }
 #endif

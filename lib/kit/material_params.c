@@ -1,6 +1,7 @@
 /* material_params.c - material parameters (generic/kit/material_params.h): checking and converting parameter colours,
  * defaults for parameters a file leaves out. */
 #include "generic/kit/material_params.h"
+#include "generic/kit/texparam.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -240,25 +241,34 @@ int gmaterial_param_default(GReader *r, double grey, GColorRole role, GColor *c,
     return gcolor_from_rgb(c, rgb, role) == G_OK ? G_OK : greader_error(r, err, "invalid default colour");
 }
 
+/* gmaterial_param_parse_one_color's constructor as a GTexParamCreate. */
+static int create_one(const GColorModel *m, const GColor *c, void *ctx, GMaterial **out, GError *err)
+{
+    return (*(GMaterialOneColorCreate *)ctx)(m, c, out, err);
+}
+
 int gmaterial_param_parse_one_color(GReader *r, const char *key, double grey, GColorRole role,
                                     GMaterialOneColorCreate create, void **object, GError *err)
 {
-    GColor c = {0};
+    GTexColor c = {0};
     const char *k;
     int rc;
     while ((rc = greader_param(r, &k, err)) > 0) {
         if (strcmp(k, key) == 0)
-            rc = greader_color(r, role, &c, err);
+            rc = gtexparam_read_color(r, role, &c, err);
         else
             rc = greader_unknown_param(r, key, err);
         if (rc < 0)
             break;
     }
-    if (rc == G_OK)
-        rc = gmaterial_param_default(r, grey, role, &c, err);
+    if (rc == G_OK && c.kind == GTEXCOLOR_CONSTANT)
+        rc = gmaterial_param_default(r, grey, role, &c.a, err);
     GMaterial *m = NULL;
-    if (rc == G_OK && (rc = create(greader_colormodel(r), &c, &m, err)) == G_OK)
+    if (rc == G_OK && c.kind != GTEXCOLOR_CONSTANT) {
+        if ((rc = gtexparam_one_color_material(greader_colormodel(r), &c, create_one, &create, &m, err)) == G_OK)
+            *object = m;
+    } else if (rc == G_OK && (rc = create(greader_colormodel(r), &c.a, &m, err)) == G_OK)
         *object = m;
-    gcolor_free(&c);
+    gtexparam_color_release(&c);
     return rc;
 }

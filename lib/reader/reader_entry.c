@@ -1,6 +1,8 @@
 /* reader_entry.c - entries: calling parse routines, nested values and references to named entries. */
 #include "reader_entry.h"
 #include "generic/memory.h"
+#include "generic/texture.h"
+#include "generic/kit/texparam.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -31,6 +33,47 @@ void greader_type_names(GKind kind, char *buf, size_t size)
         else if (buf[used + 2])
             memmove(buf, buf + used + 2, strlen(buf + used + 2) + 1);
     }
+}
+
+/* A generator read with `range LO HI` (greader_param): *obj, made by type, becomes a range generator over it
+ * (ggenerator_range_create), released as the kind releases generators. A type with a release of its own cannot
+ * be wrapped: its release would be handed the wrapper. */
+static int apply_range(GReader *r, const GTypeInfo *type, const GReaderFrame *f, int line, int col, void **obj,
+                       GError *err)
+{
+    if (f->range_lo == 0.0 && f->range_hi == 1.0) /* the default: the generator as it is */
+        return G_OK;
+    if (type->destroy && type->destroy != ggenerator_release) {
+        gtypeinfo_release(type, *obj);
+        *obj = NULL;
+        return greader_error_at(r, err, G_ERR_UNSUPPORTED, line, col,
+                                "generator %s: range cannot be applied (the type releases its generators itself)",
+                                type->name);
+    }
+    GGenerator *g = NULL;
+    int rc = ggenerator_range_create(*obj, f->range_lo, f->range_hi, &g, err);
+    ggenerator_unref(*obj); /* the wrapper holds its own reference */
+    *obj = g;
+    if (rc != G_OK) {
+        char msg[sizeof err->message];
+        snprintf(msg, sizeof msg, "%s", err ? err->message : "range");
+        return greader_error_at(r, err, rc, line, col, "%s", msg);
+    }
+    return G_OK;
+}
+
+/* A material whose parse routine read a textured colour (reader_color.c): *obj, made with the unit colour, scaled
+ * by the texture (gtexparam_texture_material); a refusal is placed at the parameter. */
+static int apply_texcolor(GReader *r, const GTypeInfo *type, GReaderFrame *f, void **obj, GError *err)
+{
+    GMaterial *m = NULL;
+    int rc = gtexparam_texture_material(*obj, f->texcolor, type->name, f->tex_param, &m, err);
+    *obj = m;
+    if (rc == G_OK)
+        return G_OK;
+    char msg[sizeof err->message];
+    snprintf(msg, sizeof msg, "%s", err ? err->message : "texture");
+    return greader_error_at(r, err, rc, f->tex_line, f->tex_col, "%s", msg);
 }
 
 int greader_invoke(GReader *r, const GTypeInfo *type, int line, int col, void **object, GError *err)
@@ -66,6 +109,14 @@ int greader_invoke(GReader *r, const GTypeInfo *type, int line, int col, void **
     if (rc != G_OK) { /* a failing routine has freed what it made */
         int placed = greader_locate(r, err); /* rc stays the routine's status */
         (void)placed;
+        greader_pop_frames(r, base);
+        return rc;
+    }
+    if (r->frames[base].texcolor && (rc = apply_texcolor(r, type, &r->frames[base], &obj, err)) != G_OK) {
+        greader_pop_frames(r, base);
+        return rc;
+    }
+    if (r->frames[base].has_range && (rc = apply_range(r, type, &r->frames[base], line, col, &obj, err)) != G_OK) {
         greader_pop_frames(r, base);
         return rc;
     }

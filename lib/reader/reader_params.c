@@ -117,6 +117,25 @@ static int add_key(GReader *r, GReaderFrame *f, const char *name, const GToken *
     return G_OK;
 }
 
+/* `range LO HI`, which every generator accepts: read here, for every generator type alike, and applied by
+ * greader_invoke (ggenerator_range_create) when the type's parse routine has made its generator. */
+static int generator_range(GReader *r, GReaderFrame *f, const GToken *key, GError *err)
+{
+    double lo, hi;
+    int rc = greader_number(r, &lo, err);
+    if (rc == G_OK)
+        rc = greader_number(r, &hi, err);
+    if (rc != G_OK)
+        return rc;
+    if (!(lo <= hi))
+        return greader_error_at(r, err, G_ERR_PARSE, key->line, key->col,
+                                "generator %s: range %g %g has LO > HI (must be LO <= HI)", f->type->name, lo, hi);
+    f->has_range = 1;
+    f->range_lo = lo;
+    f->range_hi = hi;
+    return G_OK;
+}
+
 int greader_param(GReader *r, const char **key, GError *err)
 {
     *key = NULL;
@@ -205,6 +224,10 @@ int greader_param(GReader *r, const char **key, GError *err)
     if ((rc = add_key(r, f, t.text, &t, err)) != G_OK)
         return rc;
     greader_take(r, NULL); /* the token peeked above */
+    if (f->type && f->type->kind == GKIND_GENERATOR && strcmp(t.text, "range") == 0) {
+        rc = generator_range(r, f, &t, err);
+        return rc != G_OK ? rc : greader_param(r, key, err);
+    }
     memcpy(r->keybuf, t.text, strlen(t.text) + 1);
     *key = r->keybuf;
     return 1;

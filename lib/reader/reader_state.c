@@ -1,6 +1,7 @@
 /* reader_state.c - where the reader is: tokens from the stream, the nesting stack of entries and blocks, and
  * errors placed at positions with the file (and `like`) each position comes from. */
 #include "reader_state.h"
+#include "generic/kit/texparam.h"
 #include "generic/memory.h"
 
 #include <stdarg.h>
@@ -261,5 +262,9 @@ void greader_pop_frames(GReader *r, int n)
         for (int i = 0; i < f->nkeys; i++)
             gmem_free(f->keys[i].name);
         gmem_free(f->keys);
+        if (f->texcolor)
+            gtexparam_color_release(f->texcolor);
+        gmem_free(f->texcolor);
+        gmem_free(f->tex_param);
     }
 }

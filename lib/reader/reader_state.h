@@ -30,6 +30,12 @@ typedef struct GReaderFrame {
     int single_state;      /* 1: its name is still to be returned, 2: its value was read, the block closes next */
     GReaderKey *keys;      /* entries: parameter names seen, in order */
     int nkeys, capkeys;
+    int has_range;         /* generator entries: `range LO HI` was read (greader_param), applied by greader_invoke */
+    double range_lo, range_hi;
+    struct GTexColor *texcolor; /* material entries: a textured colour greader_color read (owned), applied by
+                                   greader_invoke (gtexparam_texture_material) */
+    char *tex_param;            /* ... the parameter it was read for, and where */
+    int tex_line, tex_col;
 } GReaderFrame;
 
 struct GReader {

@@ -23,6 +23,7 @@ for p in grey oren_nayar bands; do
     PLUGINS="$PLUGINS --plugin $BUILD/plugins/$p.so"
 done
 VOCABULARY=" number numbers integer bool string path vector color material generator choice formula block shape object medium phase "
+VOCABULARY="$VOCABULARY texnumber texcolor " # textured parameters (kit/texparam.h)
 EMPTY="phase:isotropic generator:surface"
 SKIP="color:rgb:reads R G B (or <R, G, B>) after the keyword, no block of named parameters
 color:spectrum:reads a positional block of wavelength/value pairs

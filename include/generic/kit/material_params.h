@@ -66,7 +66,10 @@ GENERIC_API GENERIC_NODISCARD int gmaterial_param_default(GReader *r, double gre
 typedef int (*GMaterialOneColorCreate)(const GColorModel *model, const GColor *color, GMaterial **out, GError *err);
 /** The whole parse routine of a material written `NAME { KEY COLOR }`: reads the optional block (KEY is its only
  * parameter), gives the colour the grey `grey` in role when the file leaves it out (gmaterial_param_default), and
- * makes the material with create in the file's model into *object. */
+ * makes the material with create in the file's model into *object. KEY may be textured (kit/texparam.h:
+ * `image { ... }` or `mix { ... }`): create then checks each extreme the texture can take, and the material made
+ * with the unit colour is scaled by the texture's colour at each point (gtexparam_one_color_material), which is
+ * the textured parameter for a material whose results are linear in its colour, as a one-colour material's are. */
 GENERIC_API GENERIC_NODISCARD int gmaterial_param_parse_one_color(GReader *r, const char *key, double grey, GColorRole role,
                                           GMaterialOneColorCreate create, void **object, GError *err);
 

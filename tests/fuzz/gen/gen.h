@@ -3,7 +3,9 @@
  * budget's size (never much more); the same seed, kind and index give the same bytes on every machine.
  *
  *   gen_text.c   the text format: long CSG/CPG operand lists, deep nesting, reference chains, self-blending
- *                towers, wide DAGs, many entries, extreme numbers, long tokens, control bytes and BOMs
+ *                towers, wide DAGs, many entries, extreme numbers, long tokens, control bytes and BOMs, textured
+ *                parameters (generators with extreme or reversed ranges, mixes and images where numbers and
+ *                colours go, generators where a number must stay constant)
  *   gen_bfc.c    BFC-450 matrices: long tokens, far and huge grids, rows that lie about their length
  *   gen_image.c  PNG, HDR, PFM, EXR and PPM files whose headers claim huge sizes over truncated bodies, and
  *                mutated IFF and DPX headers named .png, .hdr or .pfm

@@ -624,6 +624,128 @@ static void random_tree(GenBuf *b, GenRng *r, size_t budget)
     }
 }
 
+/* ---- textured parameters (kit/texparam.h) ---- */
+
+/* A generator with a `range` of extreme or reversed bounds, or none. */
+static void ranged_generator(GenBuf *b, GenRng *r)
+{
+    static const char *const gens[] = {"checker { dims 2", "perlin { frequency 3", "fbm { octaves 3", "marble {",
+                                       "gradient { space uv slope 1 0 0", "surface {", "turbulence {"};
+    gb_printf(b, " %s", GEN_PICK(r, gens));
+    switch (gen_below(r, 4)) {
+    case 0:
+        break;
+    case 1:
+        gb_printf(b, " range");
+        extreme(b, r);
+        extreme(b, r);
+        break;
+    case 2:
+        gb_printf(b, " range %.3g %.3g", gen_unit(r) * 4.0, gen_unit(r) * 4.0); /* LO > HI half the time */
+        break;
+    default:
+        gb_printf(b, " range 0 1 range 0 1"); /* given twice */
+    }
+    gb_printf(b, " }");
+}
+
+/* A textured colour: a mix of extreme or plain colours by a ranged generator, an image that may not exist, or a
+ * block with a missing, repeated or unknown key. */
+static void textured_colour(GenBuf *b, GenRng *r)
+{
+    switch (gen_below(r, 5)) {
+    case 0:
+        gb_printf(b, " mix { by");
+        ranged_generator(b, r);
+        gb_printf(b, " a rgb %.2g %.2g %.2g b rgb", gen_unit(r), gen_unit(r), gen_unit(r));
+        extreme(b, r);
+        extreme(b, r);
+        extreme(b, r);
+        gb_printf(b, " }");
+        break;
+    case 1:
+        gb_printf(b, " mix { by");
+        ranged_generator(b, r);
+        gb_printf(b, " a rgb 0.1 0.2 0.3 b rgb 0.4 0.4 0.4 }");
+        break;
+    case 2:
+        gb_printf(b, " image { file \"%s\" wrap %s blur", gen_below(r, 2) ? "label.png" : "missing.png",
+                  gen_below(r, 2) ? "clamp" : "mirror");
+        extreme(b, r);
+        gb_printf(b, " }");
+        break;
+    case 3:
+        gb_printf(b, " mix { by checker a rgb 1 1 1 a rgb 0 0 0 b rgb 0 0 0 }");
+        break;
+    default:
+        gb_printf(b, " %s { %s }", gen_below(r, 2) ? "mix" : "image", gen_below(r, 2) ? "" : "nosuchkey 1");
+    }
+}
+
+/* Every textured parameter of the built-in materials, and parameters that must stay constant, given generators and
+ * textures with extreme ranges and colours: each is read, checked at its extremes or refused at its position. */
+static void textured_params(GenBuf *b, GenRng *r, size_t budget)
+{
+    unsigned long entries = 1 + gen_below(r, 6); /* few: a load stops at its first refusal */
+    for (unsigned long i = 0; b->n < budget / 2 && i < entries; i++) {
+        switch (gen_below(r, 8)) {
+        case 0:
+            gb_printf(b, "material t%lu lambert { reflectance", i);
+            textured_colour(b, r);
+            gb_printf(b, " }\n");
+            break;
+        case 1:
+            gb_printf(b, "material t%lu phong { diffuse", i);
+            textured_colour(b, r);
+            gb_printf(b, " specular");
+            textured_colour(b, r);
+            gb_printf(b, " exponent");
+            ranged_generator(b, r);
+            gb_printf(b, " mirror rgb 0 0 0 }\n");
+            break;
+        case 2:
+            gb_printf(b, "material t%lu emitter { radiance", i);
+            textured_colour(b, r);
+            gb_printf(b, " two_sided %s }\n", gen_below(r, 2) ? "on" : "off");
+            break;
+        case 3:
+            gb_printf(b, "material t%lu mirror { reflectance", i);
+            textured_colour(b, r);
+            gb_printf(b, " }\n");
+            break;
+        case 4:
+            gb_printf(b, "material t%lu thinfilm { thickness", i);
+            ranged_generator(b, r);
+            gb_printf(b, " index");
+            ranged_generator(b, r);
+            gb_printf(b, " extinction");
+            ranged_generator(b, r);
+            gb_printf(b, " }\n");
+            break;
+        case 5: /* must stay constant */
+            gb_printf(b, "material t%lu %s", i,
+                      GEN_PICK(r, ((const char *const[]){"conductor { metal Au roughness",
+                                                         "dielectric { roughness", "plastic { index",
+                                                         "layer { top dielectric { } bottom lambert thickness"})));
+            ranged_generator(b, r);
+            gb_printf(b, " }\n");
+            break;
+        case 6: /* a colour no type reads as a texture */
+            gb_printf(b, "material t%lu plastic { reflectance", i);
+            textured_colour(b, r);
+            gb_printf(b, " }\nmaterial u%lu dielectric { tint", i);
+            textured_colour(b, r);
+            gb_printf(b, " }\n");
+            break;
+        default: /* a named ranged generator used by name, and in a texture node */
+            gb_printf(b, "generator g%lu", i);
+            ranged_generator(b, r);
+            gb_printf(b, "\nmaterial t%lu phong { exponent g%lu }\nnode n%lu interpolate { a lambert b mirror t "
+                         "g%lu }\n", i, i, i, i);
+        }
+    }
+}
+
 const GenFamily gen_text_families[] = {
     {"csg-list", ".mat", csg_list},         {"cpg-list", ".mat", cpg_list},
     {"cpg-points", ".mat", cpg_points},     {"nest-deep", ".mat", nest_deep},
@@ -631,5 +753,6 @@ const GenFamily gen_text_families[] = {
     {"wide-dag", ".mat", wide_dag},         {"many-entries", ".mat", many_entries},
     {"extreme-numbers", ".mat", extreme_numbers}, {"long-tokens", ".mat", long_tokens},
     {"control-bytes", ".mat", control_bytes}, {"random-tree", ".mat", random_tree},
+    {"textured-params", ".mat", textured_params},
 };
 const int gen_text_count = (int)(sizeof gen_text_families / sizeof gen_text_families[0]);

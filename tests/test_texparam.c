@@ -1,0 +1,229 @@
+/* test_texparam.c - textured parameters (kit/texparam.h): `range LO HI` on generators, numbers and colours driven
+ * per surface point (exact values in each checker cell, memoised on the point, no allocation per evaluation), the
+ * energy rule at a texture's extremes, and bad input refused at file:line:col naming the parameter. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <string.h>
+#include <cmocka.h>
+
+#include "generic/builtins.h"
+#include "generic/kit/texparam.h"
+#include "generic/material.h"
+#include "generic/reader.h"
+#include "generic/texture.h"
+#include "reader_fixture.h"
+#include "test_alloc.h"
+
+static GLibrary *load(const char *text)
+{
+    GLibrary *lib = NULL;
+    GError err;
+    int rc = greader_load_string(text, "t.mat", NULL, &lib, &err);
+    if (rc != G_OK)
+        print_error("%s\n", err.message);
+    assert_int_equal(rc, G_OK);
+    return lib;
+}
+
+/* A point of the xy plane (normal +z) at (u, v) = (x, y), without a footprint (no filtering). */
+static GSurfPoint *point_at(const GColorModel *m, GScratch *s, double u, double v)
+{
+    GError err;
+    GSurfPoint *sp = gsurfpoint_new(m, s, gvec3(u, v, 0), gvec3(0, 0, 1), gvec3(1, 0, 0), gvec3(0, 1, 0), u, v, 0,
+                                    &err);
+    assert_non_null(sp);
+    return sp;
+}
+
+/* The message a load of text gives, which must contain want. */
+static void load_fails_with(const char *text, const char *want)
+{
+    GLibrary *lib = NULL;
+    GError err;
+    assert_true(greader_load_string(text, "t.mat", NULL, &lib, &err) < 0);
+    assert_null(lib);
+    if (!strstr(err.message, want))
+        print_error("got:  %s\nwant: ...%s...\n", err.message, want);
+    assert_non_null(strstr(err.message, want));
+}
+
+/* range LO HI maps 0 to exactly LO and 1 to exactly HI, and every value linearly (its gradient too). */
+static void test_range_maps_linearly(void **state)
+{
+    (void)state;
+    GLibrary *lib = load("generator c checker { dims 2 frequency 1 range 10 200 }\n"
+                         "generator p perlin { frequency 2 }\n"
+                         "generator q perlin { frequency 2 range -1 3 }\n"
+                         "generator d checker { dims 2 range 0 1 }\n");
+    GScratch *s = gscratch_create(1 << 14);
+    const GGenerator *c = glibrary_find(lib, GKIND_GENERATOR, "c"), *p = glibrary_find(lib, GKIND_GENERATOR, "p"),
+                     *q = glibrary_find(lib, GKIND_GENERATOR, "q"), *d = glibrary_find(lib, GKIND_GENERATOR, "d");
+    GSurfPoint *even = point_at(glibrary_colormodel(lib), s, 0.5, 0.5), *odd = point_at(glibrary_colormodel(lib), s,
+                                                                                          1.5, 0.5);
+    assert_true(ggenerator_value(c, even) == 10.0);
+    assert_true(ggenerator_value(c, odd) == 200.0);
+    double lo, hi;
+    ggenerator_declared_range(c, &lo, &hi);
+    assert_true(lo == 10.0 && hi == 200.0);
+    ggenerator_declared_range(p, &lo, &hi);
+    assert_true(lo == 0.0 && hi == 1.0);
+    assert_string_equal(ggenerator_name(d), "checker"); /* the default range makes no range generator */
+    for (int i = 0; i < 20; i++) {
+        GSurfPoint *sp = point_at(glibrary_colormodel(lib), s, 0.137 * i, 0.291 * i);
+        double v = ggenerator_value(p, sp), w = ggenerator_value(q, sp);
+        assert_true(w == -1.0 * (1.0 - v) + 3.0 * v);
+        GVec3 gp, gq;
+        assert_int_equal(ggenerator_gradient(p, sp, &gp), G_OK);
+        assert_int_equal(ggenerator_gradient(q, sp, &gq), G_OK);
+        assert_true(fabs(gq.x - 4.0 * gp.x) <= 1e-9 * (1.0 + fabs(gq.x)));
+        assert_true(fabs(gq.y - 4.0 * gp.y) <= 1e-9 * (1.0 + fabs(gq.y)));
+        gsurfpoint_free(sp);
+    }
+    gsurfpoint_free(even);
+    gsurfpoint_free(odd);
+    gscratch_destroy(s);
+    glibrary_destroy(lib);
+}
+
+/* A mix by a checker is exactly a in the cells where the checker is 0 and b where it is 1; a lambert of that
+ * reflectance reflects there exactly what the lambert of that constant reflects. */
+static void test_mix_is_exact_in_cells(void **state)
+{
+    (void)state;
+    GLibrary *lib = load("colormodel spectrum\n"
+                         "material t lambert { reflectance mix { by checker { dims 2 frequency 1 } a rgb 0.2 0.3 0.4 "
+                         "b rgb 0.6 0.5 0.1 } }\n"
+                         "material a lambert { reflectance rgb 0.2 0.3 0.4 }\n"
+                         "material b lambert { reflectance rgb 0.6 0.5 0.1 }\n");
+    const GColorModel *m = glibrary_colormodel(lib);
+    GScratch *s = gscratch_create(1 << 16);
+    GColor white, got, want;
+    assert_int_equal(gtexparam_unit_color(m, &white), G_OK);
+    assert_int_equal(gcolor_alloc(&got, m), G_OK);
+    assert_int_equal(gcolor_alloc(&want, m), G_OK);
+    GVec3 in = gvec3_normalize(gvec3(0.3, 0.2, 1.0)), out = gvec3_normalize(gvec3(-0.2, 0.1, 1.0));
+    for (int cell = 0; cell < 2; cell++) {
+        GSurfPoint *sp = point_at(m, s, cell ? 1.25 : 0.25, 0.75);
+        GSurfPoint *sq = point_at(m, s, cell ? 1.25 : 0.25, 0.75);
+        assert_int_equal(gmaterial_reflection(glibrary_material(lib, "t"), sp, in, &white, out, &got), G_OK);
+        assert_int_equal(gmaterial_reflection(glibrary_material(lib, cell ? "b" : "a"), sq, in, &white, out, &want),
+                         G_OK);
+        assert_memory_equal(got.v, want.v, sizeof(float) * (size_t)m->nvalues);
+        assert_int_equal(gmaterial_diffuse(glibrary_material(lib, "t"), sp, &got), G_OK);
+        assert_int_equal(gmaterial_diffuse(glibrary_material(lib, cell ? "b" : "a"), sq, &want), G_OK);
+        assert_memory_equal(got.v, want.v, sizeof(float) * (size_t)m->nvalues);
+        gsurfpoint_free(sp);
+        gsurfpoint_free(sq);
+    }
+    gcolor_free(&white);
+    gcolor_free(&got);
+    gcolor_free(&want);
+    gscratch_destroy(s);
+    glibrary_destroy(lib);
+}
+
+/* A textured exponent is evaluated once per point (its generator's value is in the point's cache after the
+ * first call), and evaluating textured parameters at a point allocates nothing. */
+static void test_memoised_without_allocation(void **state)
+{
+    (void)state;
+    GLibrary *lib = load("generator g perlin { frequency 3 range 5 300 }\n"
+                         "material p phong { diffuse mix { by checker { dims 2 } a rgb 0.1 0.2 0.3 b rgb 0.5 0.4 "
+                         "0.3 } specular rgb 0.2 0.2 0.2 exponent g }\n");
+    const GColorModel *m = glibrary_colormodel(lib);
+    const GMaterial *p = glibrary_material(lib, "p");
+    const GGenerator *g = glibrary_find(lib, GKIND_GENERATOR, "g");
+    GScratch *s = gscratch_create(1 << 16);
+    GSurfPoint *sp = point_at(m, s, 0.3, 0.6);
+    GColor white, got;
+    assert_int_equal(gtexparam_unit_color(m, &white), G_OK);
+    assert_int_equal(gcolor_alloc(&got, m), G_OK);
+    GVec3 in = gvec3_normalize(gvec3(0.3, 0.2, 1.0)), out = gvec3_normalize(gvec3(-0.3, -0.1, 1.0));
+    double v;
+    assert_false(gsurfpoint_cache_get(sp, g, &v, NULL));
+    assert_int_equal(gmaterial_reflection(p, sp, in, &white, out, &got), G_OK);
+    assert_true(gsurfpoint_cache_get(sp, g, &v, NULL));
+    assert_true(v >= 5.0 && v <= 300.0);
+    static TuAlloc counter;
+    tu_alloc_install(&counter);
+    for (int i = 0; i < 100; i++) {
+        sp->u = 0.01 * i;
+        gsurfpoint_invalidate(sp);
+        int rc = gmaterial_reflection(p, sp, in, &white, out, &got);
+        GMaterialSample smp;
+        int drawn = gmaterial_sample(p, sp, out, NULL, 0.37, 0.61, &smp, &got);
+        double pdf = gmaterial_pdf(p, sp, in, out, NULL);
+        if (rc != G_OK || drawn < 0 || !(pdf >= 0.0))
+            break;
+    }
+    long calls = counter.calls;
+    gmem_set_allocator(NULL);
+    assert_int_equal(calls, 0);
+    gsurfpoint_free(sp);
+    gcolor_free(&white);
+    gcolor_free(&got);
+    gscratch_destroy(s);
+    glibrary_destroy(lib);
+}
+
+/* Where a number may be a generator, a defined constant is still a number, and a word that names no generator gets
+ * the reader's own complaint about the number. */
+static void test_numbers_stay_numbers(void **state)
+{
+    (void)state;
+    GLibrary *lib = load("define E 40\nmaterial p phong { exponent E }\n"
+                         "material t thinfilm { thickness E }\n");
+    glibrary_destroy(lib);
+    load_fails("material m phong { exponent nan }\n", "t.mat:1:29: 'nan' is not allowed: numbers must be finite");
+    load_fails_with("material m thinfilm { index nosuchgenerator }\n", "t.mat:1:29:");
+}
+
+/* Bad input is refused at file:line:col, naming the parameter. */
+static void test_bad_input(void **state)
+{
+    (void)state;
+    load_fails("generator g checker { dims 2 range 5 2 }\n",
+               "t.mat:1:30: generator checker: range 5 2 has LO > HI (must be LO <= HI)");
+    load_fails("material m dielectric { roughness checker { dims 2 } }\n",
+               "t.mat:1:35: dielectric: roughness must be a constant number (it decides the microfacet distribution "
+               "and its albedo tables, made at creation), not a generator");
+    load_fails("material m conductor { metal Au roughness checker { dims 2 } }\n",
+               "t.mat:1:43: conductor: a textured roughness must stay >= 0.001, rough everywhere (the generator's "
+               "range starts at 0; whether the surface is an ideal mirror is decided at creation)");
+    load_fails("material m phong { exponent checker { dims 2 range -5 100 } }\n",
+               "t.mat:1:29: phong: exponent takes values in [0, 1e+06]; the generator's range is [-5, 100] (set it "
+               "with `range LO HI`)");
+    load_fails_with("material m lambert { reflectance image { file \"/nonexistent/label.png\" } }\n",
+                    "t.mat:1:47: image '/nonexistent/label.png'");
+    load_fails_with("material m lambert { reflectance mix { by checker { dims 2 } a rgb 0.1 0.1 0.1 b rgb 1.5 1.5 "
+                    "1.5 } }\n",
+                    "t.mat:1:22: lambert: reflectance has the value 1.5");
+    load_fails_with("material m phong { diffuse mix { by checker { dims 2 } a rgb 0.1 0.1 0.1 b rgb 0.8 0.8 0.8 } "
+                    "specular rgb 0.3 0.3 0.3 }\n",
+                    "phong: kd + ks + mirror is");
+    load_fails_with("material m lambert { reflectance mix { by checker { dims 2 } a rgb 0.1 0.1 0.1 } }\n",
+                    "mix: needs by, a and b");
+    load_fails_with("material m lambert { reflectance mix { by checker { dims 2 } a rgb 0.1 0.1 0.1 c 1 } }\n",
+                    "t.mat:1:80: mix: unknown parameter 'c' (expected one of: by, a, b)");
+    load_fails_with("material m plastic { reflectance mix { by checker { dims 2 } a rgb 0 0 0 b rgb 1 1 1 } }\n",
+                    "t.mat:1:22: plastic: reflectance cannot be textured");
+}
+
+int main(void)
+{
+    GError err;
+    if (generic_register_builtins(&err) != G_OK) {
+        fprintf(stderr, "%s\n", err.message);
+        return 1;
+    }
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_range_maps_linearly),
+        cmocka_unit_test(test_mix_is_exact_in_cells),
+        cmocka_unit_test(test_memoised_without_allocation),
+        cmocka_unit_test(test_numbers_stay_numbers),
+        cmocka_unit_test(test_bad_input),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
