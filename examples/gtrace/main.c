@@ -430,7 +430,8 @@ static const char *piece_note(const Options *o, const Scene *scene, const Render
     gmem_free(text);
     const ProbeOverride *p = &o->probe;
     snprintf(buf, size, "scene %016llx; colormodel %s; size %dx%d; spp %d; depth %d; max-rays %d; bands %d; "
-             "integrator %d; cutoff %.17g; waves %d; probe %.100s %.40s %d %d %.17g %d; sampler %d", (unsigned long long)h,
+             "integrator %d; cutoff %.17g; waves %d; probe %.100s %.40s %d %d %.17g %d; sampler %d",
+             (unsigned long long)h,
              gcolormodel_name(scene->model), rs->width, rs->height, rs->spp, rs->depth, rs->max_rays, rs->bands,
              rs->integrator, rs->cutoff, rs->waves, p->file ? p->file : "-", p->technique ? p->technique : "-",
              p->count, p->samples, p->scale, p->shadows, rs->sampler);

@@ -17,9 +17,9 @@
  * can also be reached by material sampling, so both estimates are combined by multiple importance sampling
  * with the power heuristic (a sphere light is sampled uniformly in the solid angle it subtends, a rectangle light
  * too, as a spherical rectangle, where its edges are perpendicular and that angle is not tiny, else uniformly by
- * area; area_light_hit gives the same density); their shadow rays are blocked by any surface (light through glass reaches them by
- * material sampling, a caustic, so counting the straight transmission too would count it twice). Material
- * sampling sees sphere and rectangle lights (one-sided) when they are nearer than the surface hit; a path
+ * area; area_light_hit gives the same density); their shadow rays are blocked by any surface (light through glass
+ * reaches them by material sampling, a caustic, so counting the straight transmission too would count it twice).
+ * Material sampling sees sphere and rectangle lights (one-sided) when they are nearer than the surface hit; a path
  * after a delta bounce counts them fully. One light sample per light and vertex: the lights' `samples` apply
  * to the Whitted tracer; a reference probe's `shadows off` does not apply. At a Lambertian material
  * (GMAT_LAMBERTIAN) the samples' light, each with its MIS weight in it, is gathered and reflected once (lights.c's
@@ -59,9 +59,9 @@
  * SLOT_ below). The others (further lights, the probe's NEE, media) and, with SAMPLER_INDEPENDENT, all of them come
  * from the thread's PCG32 generator (TraceCtx.rng, which lights.c and probe_sample.c draw from too), re-seeded for
  * each path from the pixel's index and the sample's index and restored afterwards. Either way a number depends on
- * the pixel, the sample and its use only, so the image does not depend on the thread count, crops or tile order. Colours only through gcolor_*, materials only through
- * gmaterial_*; temporaries live on the thread's scratch arena and are released at every level: no allocation
- * per ray. */
+ * the pixel, the sample and its use only, so the image does not depend on the thread count, crops or tile order.
+ * Colours only through gcolor_*, materials only through gmaterial_*; temporaries live on the thread's scratch arena
+ * and are released at every level: no allocation per ray. */
 #include "path.h"
 #include "bands.h"
 #include "scene/accel.h"
@@ -184,7 +184,8 @@ static GVec3 spherical_rect_point(const SphericalRect *q, double u, double v)
     double hv = h0 + v * (h1 - h0), hv2 = hv * hv;
     double yv = hv2 < 1.0 - 1e-12 ? hv * dd / sqrt(1.0 - hv2) : q->y1;
     yv = fmax(q->y0, fmin(q->y1, yv));
-    return gvec3_add(q->o, gvec3_add(gvec3_add(gvec3_scale(q->x, xu), gvec3_scale(q->y, yv)), gvec3_scale(q->z, q->z0)));
+    GVec3 on = gvec3_add(gvec3_scale(q->x, xu), gvec3_scale(q->y, yv));
+    return gvec3_add(q->o, gvec3_add(on, gvec3_scale(q->z, q->z0)));
 }
 
 double area_light_hit(const Light *l, const Ray *r, double tmax, double *pdf)
