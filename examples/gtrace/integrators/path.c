@@ -83,6 +83,7 @@ typedef struct PathCtx {
                              * the probe was not sampled there, so the background it meets counts fully */
     int sobol;              /**< the path's own numbers come from the sample point (SAMPLER_SOBOL) */
     SamplePoint point;      /**< the camera sample's point in the pixel's sequence */
+    SampleGroup group;      /**< its group used last (group 0, the camera's, is never used here: none yet) */
 } PathCtx;
 
 /* What each of a vertex's sample dimensions is for: two groups of four a vertex, after the camera's group (the pixel
@@ -92,11 +93,11 @@ enum {
     SLOT_LIGHT_U,    /**< the light sample's point on the light (the first area light or glowing primitive) */
     SLOT_LIGHT_V,
     SLOT_LIGHT_PICK, /**< the glowing primitive chosen by power */
-    SLOT_ROULETTE,
+    SLOT_SPARE,
     SLOT_BSDF_U, /**< the material's sampled direction */
     SLOT_BSDF_V,
-    SLOT_BAND,  /**< the wavelength group of a dispersive refraction */
-    SLOT_SPARE,
+    SLOT_ROULETTE, /**< drawn after the material's sample: the same group (PathCtx.group keeps one) */
+    SLOT_BAND,     /**< the wavelength group of a dispersive refraction */
     SLOTS_PER_VERTEX
 };
 
@@ -118,7 +119,10 @@ static double vertex_uniform(PathCtx *p, int depth, int slot)
 {
     if (!p->sobol)
         return uniform(p);
-    return sample_value(&p->point, (uint32_t)(SAMPLER_GROUP_DIMS + depth * SLOTS_PER_VERTEX + slot));
+    uint32_t dim = (uint32_t)(SAMPLER_GROUP_DIMS + depth * SLOTS_PER_VERTEX + slot);
+    if (p->group.group != dim / SAMPLER_GROUP_DIMS)
+        p->group = sample_group(&p->point, dim / SAMPLER_GROUP_DIMS);
+    return sample_group_value(&p->group, (int)(dim % SAMPLER_GROUP_DIMS));
 }
 
 /* A rectangle light as seen from a point, for sampling it uniformly by solid angle (Urena, Fajardo and King, "An
@@ -156,7 +160,8 @@ static int spherical_rect(const Light *l, GVec3 o, SphericalRect *q)
     q->x1 = q->x0 + ex;
     q->y1 = q->y0 + ey;
     /* the normals of the planes through o and each edge, pointing inwards */
-    double z0 = q->z0, l0 = hypot(z0, q->y0), l1 = hypot(z0, q->x1), l2 = hypot(z0, q->y1), l3 = hypot(z0, q->x0);
+    double z0 = q->z0, z2 = z0 * z0, l0 = sqrt(z2 + q->y0 * q->y0), l1 = sqrt(z2 + q->x1 * q->x1);
+    double l2 = sqrt(z2 + q->y1 * q->y1), l3 = sqrt(z2 + q->x0 * q->x0);
     GVec3 n0 = gvec3(0.0, z0 / l0, -q->y0 / l0), n1 = gvec3(-z0 / l1, 0.0, q->x1 / l1);
     GVec3 n2 = gvec3(0.0, -z0 / l2, q->y1 / l2), n3 = gvec3(z0 / l3, 0.0, -q->x0 / l3);
     double g0 = acos(fmax(-1.0, fmin(1.0, -gvec3_dot(n0, n1))));
@@ -179,8 +184,8 @@ static GVec3 spherical_rect_point(const SphericalRect *q, double u, double v)
     cu = fmax(-1.0, fmin(1.0, cu));
     double xu = -(cu * q->z0) / sqrt(fmax(1e-300, 1.0 - cu * cu));
     xu = fmax(q->x0, fmin(q->x1, xu));
-    double dd = hypot(xu, q->z0);
-    double h0 = q->y0 / hypot(dd, q->y0), h1 = q->y1 / hypot(dd, q->y1);
+    double dd2 = xu * xu + q->z0 * q->z0, dd = sqrt(dd2);
+    double h0 = q->y0 / sqrt(dd2 + q->y0 * q->y0), h1 = q->y1 / sqrt(dd2 + q->y1 * q->y1);
     double hv = h0 + v * (h1 - h0), hv2 = hv * hv;
     double yv = hv2 < 1.0 - 1e-12 ? hv * dd / sqrt(1.0 - hv2) : q->y1;
     yv = fmax(q->y0, fmin(q->y1, yv));

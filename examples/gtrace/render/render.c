@@ -77,8 +77,9 @@ static int render_pixel(Worker *w, const Job *job, int x, int y, const Ray *ahea
             double sx, sy;
             if (sobol && n > 1) {
                 SamplePoint pt = sample_point(index, (uint32_t)i);
-                sx = sample_value(&pt, 0);
-                sy = sample_value(&pt, 1);
+                SampleGroup camera = sample_group(&pt, 0);
+                sx = sample_group_value(&camera, 0);
+                sy = sample_group_value(&camera, 1);
             } else {
                 pixel_sample(&c->rng, i, n, grid, w->perm, &sx, &sy);
             }

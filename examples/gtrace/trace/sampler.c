@@ -12,6 +12,8 @@
  * Vegdahl's refinement ("Building a better LK hash", 2021) of Laine and Karras's. */
 #include "sampler.h"
 
+#include <threads.h>
+
 /* The direction numbers v_1 .. v_32 of dimensions 0 .. 3 as 32-bit fractions: v_k = m_k / 2^k, the m_k from
  * m_1 .. m_s and the recurrence of the dimension's primitive polynomial of degree s (Bratley and Fox). */
 static const uint32_t SOBOL_V[4][32] = {
@@ -33,16 +35,6 @@ static const uint32_t SOBOL_V[4][32] = {
      0x58800080u, 0xe54000c0u, 0x79e00020u, 0xb6d00050u, 0x800800f8u, 0xc00c0074u, 0x200200a2u, 0x50050093u},
 };
 
-uint32_t sobol_bits(uint32_t index, int d)
-{
-    const uint32_t *v = SOBOL_V[d & 3];
-    uint32_t x = 0;
-    for (int k = 0; index; index >>= 1, k++)
-        if (index & 1u)
-            x ^= v[k];
-    return x;
-}
-
 static uint32_t reverse_bits(uint32_t x)
 {
     x = ((x >> 1) & 0x55555555u) | ((x & 0x55555555u) << 1);
@@ -52,15 +44,53 @@ static uint32_t reverse_bits(uint32_t x)
     return (x >> 16) | (x << 16);
 }
 
-uint32_t owen_scramble(uint32_t v, uint32_t seed)
+/* The points bit-reversed, a byte of the index at a time: SOBOL_BYTES[d][b][v] is the xor of the reversed direction
+ * numbers of dimension d selected by the bits of v at byte b of the index (a shuffled index has all 32 bits set at
+ * random, so the sum over its bits is four table reads). Made once, on first use. */
+static uint32_t SOBOL_BYTES[4][4][256];
+static once_flag sobol_bytes_once = ONCE_FLAG_INIT;
+
+static void sobol_bytes_make(void)
 {
-    uint32_t x = reverse_bits(v); /* the fraction's leading bit at the bottom: carries go from it downwards */
+    for (int d = 0; d < 4; d++)
+        for (int b = 0; b < 4; b++)
+            for (int v = 0; v < 256; v++) {
+                uint32_t x = 0;
+                for (int k = 0; k < 8; k++)
+                    if (v & (1 << k))
+                        x ^= reverse_bits(SOBOL_V[d][8 * b + k]);
+                SOBOL_BYTES[d][b][v] = x;
+            }
+}
+
+/* The point `index` of dimension d, bit-reversed. */
+static uint32_t sobol_reversed(uint32_t index, int d)
+{
+    const uint32_t(*t)[256] = SOBOL_BYTES[d & 3];
+    return t[0][index & 255u] ^ t[1][(index >> 8) & 255u] ^ t[2][(index >> 16) & 255u] ^ t[3][index >> 24];
+}
+
+uint32_t sobol_bits(uint32_t index, int d)
+{
+    call_once(&sobol_bytes_once, sobol_bytes_make);
+    return reverse_bits(sobol_reversed(index, d));
+}
+
+/* The hash of owen_scramble on a bit-reversed value: each output bit depends on the input bits below it. */
+static uint32_t lk_hash(uint32_t x, uint32_t seed)
+{
     x ^= x * 0x3d20adeau;
     x += seed;
     x *= (seed >> 16) | 1u;
     x ^= x * 0x05526c56u;
     x ^= x * 0x53a22864u;
-    return reverse_bits(x);
+    return x;
+}
+
+uint32_t owen_scramble(uint32_t v, uint32_t seed)
+{
+    /* the fraction's leading bit at the bottom: carries go from it downwards */
+    return reverse_bits(lk_hash(reverse_bits(v), seed));
 }
 
 /* SplitMix64's finaliser. */
@@ -77,13 +107,24 @@ SamplePoint sample_point(uint64_t pixel, uint32_t index)
     return (SamplePoint){.pixel_seed = mix64(pixel ^ 0x6a09e667f3bcc909ULL), .index = index};
 }
 
-double sample_value(const SamplePoint *p, uint32_t dim)
+SampleGroup sample_group(const SamplePoint *p, uint32_t group)
 {
-    uint64_t group = mix64(p->pixel_seed ^ mix64((uint64_t)(dim / SAMPLER_GROUP_DIMS)));
-    int d = (int)(dim % SAMPLER_GROUP_DIMS);
+    call_once(&sobol_bytes_once, sobol_bytes_make);
+    uint64_t a = mix64(p->pixel_seed ^ mix64((uint64_t)group));
     /* the index shuffled by the same scramble: each bit flipped by the bits above it, so the pixel's first 2^m
      * samples (the bits above m all 0) stay one aligned block of 2^m points, permuted */
-    uint32_t index = owen_scramble(p->index, (uint32_t)group);
-    uint32_t seed = (uint32_t)mix64(group + (uint64_t)d + 1);
-    return owen_scramble(sobol_bits(index, d), seed) * (1.0 / 4294967296.0);
+    return (SampleGroup){.group = group, .index = owen_scramble(p->index, (uint32_t)a),
+                         .seed = {(uint32_t)mix64(a + 1), (uint32_t)mix64(a + 2), (uint32_t)mix64(a + 3),
+                                  (uint32_t)mix64(a + 4)}};
+}
+
+double sample_group_value(const SampleGroup *g, int d)
+{
+    return reverse_bits(lk_hash(sobol_reversed(g->index, d), g->seed[d & 3])) * (1.0 / 4294967296.0);
+}
+
+double sample_value(const SamplePoint *p, uint32_t dim)
+{
+    SampleGroup g = sample_group(p, dim / SAMPLER_GROUP_DIMS);
+    return sample_group_value(&g, (int)(dim % SAMPLER_GROUP_DIMS));
 }

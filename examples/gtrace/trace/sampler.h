@@ -34,6 +34,18 @@ SamplePoint sample_point(uint64_t pixel, uint32_t index);
  * of the block hold after scrambling. */
 double sample_value(const SamplePoint *p, uint32_t dim);
 
+/** One group of a sample point: the shuffled index and the group's seed, so that its four values cost one shuffle. */
+typedef struct SampleGroup {
+    uint32_t group; /**< the group's number (dimensions 4 group .. 4 group + 3) */
+    uint32_t index; /**< the sample's index shuffled for the pixel and the group */
+    uint32_t seed[SAMPLER_GROUP_DIMS]; /**< each dimension's scrambling seed */
+} SampleGroup;
+
+/** Group `group` of point p. */
+SampleGroup sample_group(const SamplePoint *p, uint32_t group);
+/** Dimension d (0 .. 3) of group g: sample_value of dimension 4 g->group + d. */
+double sample_group_value(const SampleGroup *g, int d);
+
 /** Dimension d (0 .. 3) of the unscrambled Sobol point `index`, as a 32-bit fraction (value * 2^32). Dimension 0
  * is the van der Corput sequence, 1 .. 3 use Joe and Kuo's primitive polynomials and initial direction numbers
  * (x + 1; x^2 + x + 1, m = 1, 3; x^3 + x + 1, m = 1, 3, 1). */
