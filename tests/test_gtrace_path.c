@@ -305,11 +305,11 @@ static double rmse_over(const Framebuffer *a, const Framebuffer *ref, int skip_l
 
 /* The independent sampler (SAMPLER_INDEPENDENT). Every pixel counts, silhouettes included (the camera's stratified
  * pixel samples do not make their error fall measurably faster than 1 / sqrt(n) here). Measured over all 576 pixels:
- * 0.178 at 4 spp, 0.094 at 16, ratio 1.905; the 12 pixels that see the lamp carry most of that squared error, and
- * without them (564 pixels, every silhouette and wall edge kept): 0.0463 and 0.0228, ratio 2.025. Both are asserted.
- * The Sobol sampler (the default) against the same reference (which shares no samples with it): 0.199 and 0.031
- * over all pixels (at 16 spp 0.33 of the independent error: its pixel positions, a (0,m,2)-net, find the lamp's
- * edges), 0.0444 and 0.0202 without the lamp (0.96 and 0.89 of the independent error). Asserted at 16 spp: below
+ * 0.177 at 4 spp, 0.093 at 16, ratio 1.89; the 12 pixels that see the lamp carry most of that squared error, and
+ * without them (564 pixels, every silhouette and wall edge kept): 0.0404 and 0.0221, ratio 1.83. Both are asserted.
+ * The Sobol sampler (the default) against the same reference (which shares no samples with it): 0.198 and 0.030
+ * over all pixels (at 16 spp 0.32 of the independent error: its pixel positions, a (0,m,2)-net, find the lamp's
+ * edges), 0.0374 and 0.0190 without the lamp (0.93 and 0.86 of the independent error). Asserted at 16 spp: below
  * half the independent error over all pixels and below 0.95 of it without the lamp. */
 static void test_convergence(void **state)
 {
@@ -530,8 +530,8 @@ static void test_rect_light_sampling(void **state)
  * independent render at 2048 spp is the mean of a and of an independent render b of the next 1024 samples, so
  * b = 2 m - a, and (a - b)^2 / 2 estimates a patch's noise variance. The statistic F = sum ((s - a) / a)^2 over
  * sum ((a - b) / a)^2 / 2 is about 1 to 2 when the samplers agree in expectation (2 if Sobol were as noisy as
- * independent numbers), a ratio of two sums of 14 squares; measured 1.1 (the patches' relative noise 0.65% on
- * average, the differences up to 1.3%). A sampler that is not uniform fails it: the Sobol values squared (a density
+ * independent numbers), a ratio of two sums of 14 squares; measured 1.1 (the patches' relative noise 0.54% on
+ * average, the differences up to 1.1%). A sampler that is not uniform fails it: the Sobol values squared (a density
  * 1 / (2 sqrt(u)) in every dimension) give F = 940, patches off by up to 40%. */
 static void test_samplers_agree(void **state)
 {

@@ -7,7 +7,10 @@
  * gmaterial_refraction for a GSAMPLE_TRANSMIT sample). The sample's weight colour is never multiplied in: the
  * material itself transforms the actual incoming light, so with re-radiation matrices a fluorescent surface
  * re-radiates the light that really arrives, at every bounce. The weight's brightness only steers Russian
- * roulette (after PATH_RR_START bounces a path survives with probability min(1, throughput brightness)).
+ * roulette (after PATH_RR_START bounces a path survives with probability min(1, sqrt(throughput brightness)): the
+ * square root keeps more paths alive than the brightness itself, whose survivors off a saturated colour (the red wall
+ * of a Cornell box has brightness 0.18 and red 0.63) carry large weights; measured on the Cornell box at equal spp:
+ * 3% more time, 0.56 of the variance over the image and 0.42 on the walls and floor).
  *
  * Lights. Point, spot, directional and IES lights, including the directional lights a probe technique (mediancut,
  * adaptive, kmeans, irradiance, variance) makes, are delta lights: NEE only, through lights.c's light_shade
@@ -109,6 +112,9 @@ enum {
             goto done;                                                                                                 \
         }                                                                                                              \
     } while (0)
+
+/* The probability that Russian roulette lets a path of throughput brightness b go on (see the top of the file). */
+static double roulette_survival(double b) { return fmin(1.0, sqrt(b)); }
 
 /* The path's random numbers: the thread's generator, seeded for this camera sample by path_trace. */
 static double uniform(PathCtx *p) { return rng_next(&p->c->rng); }
@@ -357,7 +363,7 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
         if (!(nb > 0.0) || !isfinite(nb))
             goto absorb;
         if (depth >= PATH_RR_START) { /* Russian roulette on the path's throughput */
-            q = fmin(1.0, nb);
+            q = roulette_survival(nb);
             if (vertex_uniform(p, depth, SLOT_ROULETTE) >= q)
                 goto absorb;
             nb /= q;
@@ -452,7 +458,7 @@ static int medium_vertex(PathCtx *p, const Ray *r, const Media *media, const Med
         goto done;
     double q = 1.0;
     if (depth >= PATH_RR_START) {
-        q = fmin(1.0, beta);
+        q = roulette_survival(beta);
         if (!(q > 0.0) || uniform(p) >= q)
             goto done;
     }
