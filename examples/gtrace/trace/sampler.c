@@ -12,8 +12,6 @@
  * Vegdahl's refinement ("Building a better LK hash", 2021) of Laine and Karras's. */
 #include "sampler.h"
 
-#include <threads.h>
-
 /* The direction numbers v_1 .. v_32 of dimensions 0 .. 3 as 32-bit fractions: v_k = m_k / 2^k, the m_k from
  * m_1 .. m_s and the recurrence of the dimension's primitive polynomial of degree s (Bratley and Fox). */
 static const uint32_t SOBOL_V[4][32] = {
@@ -46,11 +44,11 @@ static uint32_t reverse_bits(uint32_t x)
 
 /* The points bit-reversed, a byte of the index at a time: SOBOL_BYTES[d][b][v] is the xor of the reversed direction
  * numbers of dimension d selected by the bits of v at byte b of the index (a shuffled index has all 32 bits set at
- * random, so the sum over its bits is four table reads). Made once, on first use. */
+ * random, so the sum over its bits is four table reads). Made once, before main (a constructor: no thread can race
+ * it). */
 static uint32_t SOBOL_BYTES[4][4][256];
-static once_flag sobol_bytes_once = ONCE_FLAG_INIT;
 
-static void sobol_bytes_make(void)
+__attribute__((constructor)) static void sobol_bytes_make(void)
 {
     for (int d = 0; d < 4; d++)
         for (int b = 0; b < 4; b++)
@@ -72,7 +70,6 @@ static uint32_t sobol_reversed(uint32_t index, int d)
 
 uint32_t sobol_bits(uint32_t index, int d)
 {
-    call_once(&sobol_bytes_once, sobol_bytes_make);
     return reverse_bits(sobol_reversed(index, d));
 }
 
@@ -109,7 +106,6 @@ SamplePoint sample_point(uint64_t pixel, uint32_t index)
 
 SampleGroup sample_group(const SamplePoint *p, uint32_t group)
 {
-    call_once(&sobol_bytes_once, sobol_bytes_make);
     uint64_t a = mix64(p->pixel_seed ^ mix64((uint64_t)group));
     /* the index shuffled by the same scramble: each bit flipped by the bits above it, so the pixel's first 2^m
      * samples (the bits above m all 0) stay one aligned block of 2^m points, permuted */
