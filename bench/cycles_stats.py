@@ -12,8 +12,8 @@ N * RMSE^2 / e^2; the ratios of these are the times to equal RMSE.
 
 RMSE is over pixels and the three channels (R, G, B: the first three). "whole" leaves out the pixels that see the
 lamp (where either image's luminance is above 2: gtrace's camera rays see the lamp, Cycles' area lights are not
-seen), "patches" is over the four patches together: the floor in front of the blocks, the back wall between the tall
-block and the ceiling, the red and the green wall, each a box of fractions of the image (x0, y0, x1, y1; y down)."""
+seen), "patches" is over the four patches together: the floor in front of the blocks, the back wall right of the tall
+block above the short one, the red and the green wall, each a box of fractions of the image (x0, y0, x1, y1; y down)."""
 import math
 import re
 import subprocess
