@@ -35,7 +35,8 @@ STATS="python3 $DIR/cycles_stats.py"
 gt() {
     /usr/bin/time -f '%U %S' -o "$TMP/cpu" "$GT" "$SCENE" --colormodel rgb -o "$4" --width "$SIZE" --height "$SIZE" \
         --spp "$2" --depth 8 --integrator path --sampler "$1" --threads "$3" > "$TMP/gt.log" 2>&1 || return 1
-    t=$(awk '/^gtrace: .* rays/ { for (i = 1; i <= NF; i++) if ($i == "s,") t = $(i - 1) } END { print t }' "$TMP/gt.log")
+    t=$(awk '/^gtrace: .* rays/ { for (i = 1; i <= NF; i++) if ($i == "s,") t = $(i - 1) } END { print t }' \
+        "$TMP/gt.log")
     awk -v t="$t" '{ printf "%s %.4f\n", t, $1 + $2 }' "$TMP/cpu"
 }
 # cy SPP THREADS SEED OUT: "WALL CPU" of Cycles' render call
