@@ -50,8 +50,11 @@ load=$(cut -d' ' -f1 /proc/loadavg)
 state=$(awk -v l="$load" 'BEGIN { print (l < 1.0 ? "idle" : "NOT IDLE") }')
 echo "Cornell box ${SIZE}x${SIZE}, depth 8, rgb; $N and $Q spp, references $REF spp; $RUNS rounds; $state (load $load)"
 echo "$(blender --version 2>/dev/null | head -1), gtrace $GT"
-gt sobol "$REF" 2 "$TMP/ref_sobol.exr" > /dev/null && gt independent "$REF" 2 "$TMP/ref_independent.exr" > /dev/null &&
-    cy "$REF" 2 1000 "$TMP/ref_cycles.exr" > /dev/null || { echo "bench-cycles: a reference render failed"; exit 1; }
+if ! { gt sobol "$REF" 2 "$TMP/ref_sobol.exr" > /dev/null && gt independent "$REF" 2 "$TMP/ref_independent.exr" \
+    > /dev/null && cy "$REF" 2 1000 "$TMP/ref_cycles.exr" > /dev/null; }; then
+    echo "bench-cycles: a reference render failed"
+    exit 1
+fi
 echo "patch means (luminance) of the references:"
 echo "  gtrace sobol        $($STATS means "$TMP/ref_sobol.exr")"
 echo "  gtrace independent  $($STATS means "$TMP/ref_independent.exr")"
