@@ -18,6 +18,7 @@
 #include "scene/accel_direct.h"
 #include "scene/scene.h"
 #include "scenefile/parse.h"
+#include "trace/sampler.h"
 #include "trace/trace.h"
 
 #include "generic/materials.h"

@@ -66,6 +66,11 @@ bench: bench-pov bench-dispersion bench-path bench-mpi bench-emissive bench-caus
 bench-scale: $(BUILD)/bin/gtrace $(BUILD)/bench/runstat
 	@bench/scale.sh $(BUILD)
 bench: bench-scale
+# against Blender Cycles (optional: the script says so and stops when blender is not installed)
+.PHONY: bench-cycles
+bench-cycles: $(BUILD)/bin/gtrace
+	@bench/cycles.sh $(BUILD)
+bench: bench-cycles
 # gtrace's MPI module (examples/gtrace/distributed/mpi/, distributed/mpi_module.h), built when Open MPI's
 # development files are found (pkg-config ompi-c; Debian's libopenmpi-dev). gtrace opens it with dlopen only when
 # it runs under mpirun (mpi_load.c), so --help and a render on one machine never map libmpi; without it gtrace still

@@ -9,6 +9,7 @@
 #include "film/merge.h"
 #include "distributed/mpi_load.h"
 #include "render/render.h"
+#include "trace/sampler.h"
 #include "film/output.h"
 #include "lights/probe_env.h"
 #include "scenefile/type_list.h"
@@ -55,6 +56,7 @@ static void usage(FILE *f)
             "              [--probe FILE] [--probe-technique T] [--probe-count N] [--probe-samples N]\n"
             "              [--probe-scale S] [--probe-shadows on|off] [--crop X0,Y0,X1,Y1]\n"
             "              [--integrator whitted|path|sppm|light] [--passes N] [--photons N] [--radius R] [--alpha A]\n"
+            "              [--sampler sobol|independent]\n"
             "              [--spectral] [--display D] [--view V] [--ocio-config FILE]\n"
             "              [--mpi-block N] [--mpi-timeout S] [--mpi-dedicated]\n"
             "       gtrace merge PIECE... -o OUT\n"
@@ -104,6 +106,8 @@ static void usage(FILE *f)
             "  --radius R        sppm: initial gather radius in scene units (default: twice a pixel's\n"
             "                    footprint at the scene's centre)\n"
             "  --alpha A         sppm: fraction of a pass's photons kept, in (0, 1] (default 2/3)\n"
+            "  --sampler S       path: sobol (default: pixel positions, light and material samples from\n"
+            "                    each pixel's scrambled Sobol sequence) or independent (random numbers)\n"
             "  --exposure STOPS  exposure for .png/.jpg output (default: the camera's)\n"
             "  --probe FILE      replace the image of the scene's `light probe` (relative to the current\n"
             "                    directory); the other --probe options replace its other settings\n"
@@ -156,7 +160,7 @@ enum {
     OPT_WIDTH = CLI_FIRST_OWN, OPT_HEIGHT, OPT_SPP, OPT_DEPTH, OPT_MAX_RAYS, OPT_THREADS, OPT_COLORMODEL,
     OPT_EXPOSURE, OPT_CUTOFF, OPT_CROP, OPT_BANDS, OPT_INTEGRATOR, OPT_PROBE, OPT_PROBE_TECHNIQUE, OPT_PROBE_COUNT, OPT_PROBE_SAMPLES,
     OPT_PROBE_SHADOWS, OPT_PROBE_SCALE, OPT_WAVES, OPT_DISPLAY, OPT_VIEW, OPT_OCIO_CONFIG, OPT_MPI_BLOCK,
-    OPT_MPI_TIMEOUT, OPT_MPI_DEDICATED, OPT_PASSES, OPT_PHOTONS, OPT_RADIUS, OPT_ALPHA
+    OPT_MPI_TIMEOUT, OPT_MPI_DEDICATED, OPT_PASSES, OPT_PHOTONS, OPT_RADIUS, OPT_ALPHA, OPT_SAMPLER
 };
 
 /* The --probe options (code c, its value v); -1 with a message for a bad one. */
@@ -198,6 +202,7 @@ typedef struct Options {
     const char *scene, *out, *colormodel;
     int width, height, spp, depth, threads, quiet, max_rays, bands, integrator, waves;
     int passes, photons;   /* --integrator sppm (0: its defaults) */
+    int sampler;           /* --sampler: SAMPLER_SOBOL (0, default) or SAMPLER_INDEPENDENT */
     double radius, alpha;
     int have_exposure, have_cutoff, have_crop;
     int crop[4]; /* x0, y0, x1, y1 */
@@ -246,6 +251,7 @@ static int parse_args(int argc, char **argv, Options *o)
         {"crop", required_argument, NULL, OPT_CROP},
         {"bands", required_argument, NULL, OPT_BANDS},
         {"integrator", required_argument, NULL, OPT_INTEGRATOR},
+        {"sampler", required_argument, NULL, OPT_SAMPLER},
         {"passes", required_argument, NULL, OPT_PASSES},
         {"photons", required_argument, NULL, OPT_PHOTONS},
         {"radius", required_argument, NULL, OPT_RADIUS},
@@ -317,6 +323,14 @@ static int parse_args(int argc, char **argv, Options *o)
                                                                : RENDER_WHITTED;
             } else {
                 fprintf(stderr, "gtrace: --integrator expects whitted, path, sppm or light, got '%s'\n", optarg);
+                rc = -1;
+            }
+            break;
+        case OPT_SAMPLER:
+            if (strcmp(optarg, "sobol") == 0 || strcmp(optarg, "independent") == 0) {
+                o->sampler = strcmp(optarg, "sobol") == 0 ? SAMPLER_SOBOL : SAMPLER_INDEPENDENT;
+            } else {
+                fprintf(stderr, "gtrace: --sampler expects sobol or independent, got '%s'\n", optarg);
                 rc = -1;
             }
             break;
@@ -416,10 +430,11 @@ static const char *piece_note(const Options *o, const Scene *scene, const Render
     gmem_free(text);
     const ProbeOverride *p = &o->probe;
     snprintf(buf, size, "scene %016llx; colormodel %s; size %dx%d; spp %d; depth %d; max-rays %d; bands %d; "
-             "integrator %d; cutoff %.17g; waves %d; probe %.100s %.40s %d %d %.17g %d", (unsigned long long)h,
+             "integrator %d; cutoff %.17g; waves %d; probe %.100s %.40s %d %d %.17g %d; sampler %d",
+             (unsigned long long)h,
              gcolormodel_name(scene->model), rs->width, rs->height, rs->spp, rs->depth, rs->max_rays, rs->bands,
              rs->integrator, rs->cutoff, rs->waves, p->file ? p->file : "-", p->technique ? p->technique : "-",
-             p->count, p->samples, p->scale, p->shadows);
+             p->count, p->samples, p->scale, p->shadows, rs->sampler);
     return buf;
 }
 
@@ -443,7 +458,8 @@ static int prepare(const Options *o, const GReaderOptions *trust, int check_outp
                            .threads = o->threads, .quiet = o->quiet, .cutoff = o->have_cutoff ? o->cutoff : cam->cutoff,
                            .max_rays = o->max_rays, .bands = o->bands > 0 ? o->bands : cam->bands,
                            .integrator = o->integrator, .waves = o->waves, .sppm_passes = o->passes,
-                           .sppm_photons = o->photons, .sppm_radius = o->radius, .sppm_alpha = o->alpha};
+                           .sppm_photons = o->photons, .sppm_radius = o->radius, .sppm_alpha = o->alpha,
+                           .sampler = o->sampler};
     if (o->width > 0 && o->height > 0) {
         rs->width = o->width;
         rs->height = o->height;

@@ -86,6 +86,8 @@ expect 2 "gtrace --quiet=1" "option '--quiet' takes no value" -- "$GT" "$TMP/goo
 expect 2 "gtrace without -o" "no output file given" -- "$GT" "$TMP/good.scene"
 expect 2 "gtrace with two scenes" "more than one scene file" -- "$GT" "$TMP/good.scene" "$TMP/good.scene" -o "$TMP/x.png"
 expect 2 "gtrace --crop outside" "--crop" -- "$GT" "$TMP/good.scene" -o "$TMP/x.png" --crop 0,0,64,64
+expect 2 "gtrace --sampler unknown" "--sampler expects sobol or independent" -- "$GT" "$TMP/good.scene" -o "$TMP/x.png" \
+    --sampler halton
 expect 2 "gtrace --plugin without a value" "--plugin needs a value" -- "$GT" "$TMP/good.scene" -o "$TMP/x.png" --plugin
 expect 2 "gtrace --confine not a directory" "--confine" -- "$GT" "$TMP/good.scene" -o "$TMP/x.png" --confine=/nonexistent
 expect 1 "gtrace of a missing scene" "No such file" -- "$GT" "$TMP/none.scene" -o "$TMP/x.png"

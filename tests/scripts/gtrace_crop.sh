@@ -39,12 +39,17 @@ check_crop 0 0 120 "$H" 2
 check_crop 37 5 119 63 2
 check_crop 100 30 101 31 2
 
-# the path integrator seeds each pixel from its index in the full image, so its crops agree with the full render too
-"$GT" "$SCENE" -q -o "$TMP/path_full.exr" --width 120 --spp 2 --integrator path || fail "the full path render failed"
-"$GT" "$SCENE" -q -o "$TMP/path_crop.exr" --width 120 --spp 2 --integrator path --crop 37,5,119,63 ||
-    fail "the path crop failed"
-d=$(oiiotool "$TMP/path_full.exr" --cut 82x58+37+5 "$TMP/path_crop.exr" --cut 82x58+37+5 --fail 0 --diff 2>&1)
-echo "$d" | grep -q '^PASS' || fail "--integrator path --crop 37,5,119,63: pixels differ from the full render: $d"
+# the path integrator seeds each pixel from its index in the full image (its Sobol points and its generator), so its
+# crops agree with the full render too, with either sampler and thread count
+for sampler in sobol independent; do
+    "$GT" "$SCENE" -q -o "$TMP/path_full.exr" --width 120 --spp 2 --integrator path --sampler $sampler --threads 2 ||
+        fail "the full path render ($sampler) failed"
+    "$GT" "$SCENE" -q -o "$TMP/path_crop.exr" --width 120 --spp 2 --integrator path --sampler $sampler --threads 1 \
+        --crop 37,5,119,63 || fail "the path crop ($sampler) failed"
+    d=$(oiiotool "$TMP/path_full.exr" --cut 82x58+37+5 "$TMP/path_crop.exr" --cut 82x58+37+5 --fail 0 --diff 2>&1)
+    echo "$d" | grep -q '^PASS' ||
+        fail "--integrator path --sampler $sampler --crop 37,5,119,63: pixels differ from the full render: $d"
+done
 
 # two crops rendered apart merge into the full image (disjoint data windows: added, black outside each)
 "$GT" "$SCENE" -q -o "$TMP/left.exr" --width 120 --spp 2 --crop "0,0,61,$H" &&
@@ -64,5 +69,5 @@ for bad in 5,5,5,9 10,10,2,20 0,0,121,10 1,2,3 a,b,c,d 0,0,10,10,3 -1,0,4,4; do
     grep -q -- "--crop" "$TMP/err" || fail "--crop $bad: the message does not name --crop: $(cat "$TMP/err")"
     [ -e "$TMP/bad.png" ] && fail "--crop $bad: an image was written"
 done
-[ $fails -eq 0 ] && echo "gtrace_crop: 4 Whitted crops and a path crop bit-identical to the full render, data windows recorded, two halves merge, 7 bad regions refused"
+[ $fails -eq 0 ] && echo "gtrace_crop: 4 Whitted crops and a path crop per sampler bit-identical to the full render, data windows recorded, two halves merge, 7 bad regions refused"
 exit $fails

@@ -13,6 +13,7 @@
 #include "integrators/light.h"
 #include "film/progress.h"
 #include "lights/emissive.h"
+#include "trace/sampler.h"
 
 #include <generic/memory.h>
 #include <generic/services/image.h>
@@ -33,6 +34,7 @@ typedef struct Job {
     int finite_by_xyz; /* one sample a pixel, and a model whose conversion to XYZ shows every non-finite value
                         * (gcolormodel_xyz_shows_nonfinite): a non-finite sample is found by store_pixel in the
                         * coordinates it converts, three numbers, not tested sample by sample in render_pixel */
+    int sampler; /* the path tracer's (RenderSettings.sampler) */
     int x0, y0; /* the crop's origin in the full image */
     Media media0;
 } Job;
@@ -55,9 +57,12 @@ static int render_pixel(Worker *w, const Job *job, int x, int y, const Ray *ahea
 {
     TraceCtx *c = &w->ctx;
     int rc = G_OK;
-    rng_seed(&c->rng, (uint64_t)y * (uint64_t)job->fb->full_width + (uint64_t)x, 0x9e3779b97f4a7c15ULL);
+    uint64_t index = (uint64_t)y * (uint64_t)job->fb->full_width + (uint64_t)x;
+    rng_seed(&c->rng, index, 0x9e3779b97f4a7c15ULL);
     int n = job->spp, grid = job->grid;
-    if (n > 1 && !grid)
+    /* the path tracer's Sobol sampler: the pixel positions are the first two dimensions of its sample points */
+    int sobol = job->integrator == RENDER_PATH && job->sampler == SAMPLER_SOBOL;
+    if (n > 1 && !grid && !sobol)
         strata_shuffle(&c->rng, n, w->perm);
     /* with one sample, the pixel is the sample itself, traced into out (black + s, divided by 1: s but for a
      * zero's sign) */
@@ -70,7 +75,14 @@ static int render_pixel(Worker *w, const Job *job, int x, int y, const Ray *ahea
             r = *ahead;
         } else {
             double sx, sy;
-            pixel_sample(&c->rng, i, n, grid, w->perm, &sx, &sy);
+            if (sobol && n > 1) {
+                SamplePoint pt = sample_point(index, (uint32_t)i);
+                SampleGroup camera = sample_group(&pt, 0);
+                sx = sample_group_value(&camera, 0);
+                sy = sample_group_value(&camera, 1);
+            } else {
+                pixel_sample(&c->rng, i, n, grid, w->perm, &sx, &sy);
+            }
             camera_ray_lens(job->cam, x + sx, y + sy, &c->rng, &r);
         }
         GScratchMark m2 = gscratch_mark(c->scratch);
@@ -78,7 +90,7 @@ static int render_pixel(Worker *w, const Job *job, int x, int y, const Ray *ahea
         c->rays_left = job->max_rays;
         c->capped = 0;
         rc = job->integrator == RENDER_PATH
-                 ? path_trace(c, &r, &job->media0, (uint64_t)y * (uint64_t)job->fb->full_width + (uint64_t)x, i, sample)
+                 ? path_trace(c, &r, &job->media0, index, i, job->sampler, sample)
                  : whitted_trace(c, &r, &job->media0, 0, sample);
         w->capped += (uint64_t)c->capped;
         gscratch_release(c->scratch, m2);
@@ -196,6 +208,9 @@ static int check_render_settings(const RenderSettings *rs, GError *err)
             return gerror_set(err, G_ERR_INVALID, "crop %d,%d,%d,%d is not a non-empty region of the %dx%d image", c[0],
                               c[1], c[2], c[3], rs->width, rs->height);
     }
+    if (rs->sampler != SAMPLER_SOBOL && rs->sampler != SAMPLER_INDEPENDENT)
+        return gerror_set(err, G_ERR_INVALID, "sampler %d is neither sobol (%d) nor independent (%d)", rs->sampler,
+                          SAMPLER_SOBOL, SAMPLER_INDEPENDENT);
     if (rs->bands < 0 || rs->bands > BANDS_LIMIT)
         return gerror_set(err, G_ERR_INVALID, "wavelength bands %d out of range (1..%d)", rs->bands, BANDS_LIMIT);
     return G_OK;
@@ -282,7 +297,7 @@ int renderer_create(Renderer **out, const Scene *s, const RenderSettings *rs, Fr
     fb->full_height = rs->height;
     r->job = (Job){.scene = s, .cam = &r->cam, .fb = fb, .spp = rs->spp, .grid = strata_grid(rs->spp),
                    .depth = rs->depth, .max_rays = rs->max_rays > 0 ? rs->max_rays : RENDER_DEFAULT_MAX_RAYS,
-                   .x0 = fb->x, .y0 = fb->y, .integrator = rs->integrator,
+                   .x0 = fb->x, .y0 = fb->y, .integrator = rs->integrator, .sampler = rs->sampler,
                    .ahead = rs->spp == 1 && camera_is_pinhole(&r->cam),
                    .finite_by_xyz = rs->spp == 1 && gcolormodel_xyz_shows_nonfinite(s->model)};
     if (s->medium) {

@@ -1,0 +1,124 @@
+# cycles_cornell.py - Blender's Python: the twin of examples/scenes/cornell.scene for Blender Cycles, rendered on the
+# CPU and written as an EXR (linear, no view transform); prints "cycles-render-seconds WALL CPU" (the render call's
+# wall time and the process's CPU time in it: scene sync, BVH build, path tracing, writing) for bench/cycles.sh.
+#   blender -b --factory-startup -P bench/cycles_cornell.py -- OUT.exr SIZE SAMPLES THREADS SEED
+# The twin: gtrace's y-up coordinates (x, y, z) are Blender's (x, -z, y); the boxes, the two rotated blocks and the
+# camera (pinhole at <0, 1, 3.9> towards <0, 1, 0>, vertical field of view 38 degrees) are placed as in the scene
+# file; lambert reflectances are Diffuse BSDFs (roughness 0, Lambert) of the same linear RGB; the one-sided square
+# light (0.5 x 0.5 at height 1.99, radiance rgb 17 12 4) is an area light of power 4 * A * L (Cycles 3.4's area
+# light has radiance power / (4 area): measured with the direct light alone, whose patch means then agree with
+# gtrace's `--depth 0` within their noise). Path tracing as gtrace's: at most 8 bounces, no clamping, no denoising, no
+# adaptive sampling, and a box pixel filter one pixel wide (gtrace averages a pixel's samples with equal weight;
+# Cycles' default, a 1.5-pixel Blackman-Harris filter, would blur the noise over neighbouring pixels).
+import math
+import sys
+import time
+
+import bpy
+
+args = sys.argv[sys.argv.index("--") + 1:]
+out, size, samples, threads, seed = args[0], int(args[1]), int(args[2]), int(args[3]), int(args[4])
+
+bpy.ops.wm.read_factory_settings(use_empty=True)
+scene = bpy.context.scene
+
+
+def blender(p):
+    """gtrace's (x, y, z), y up, as Blender's z-up coordinates."""
+    return (p[0], -p[2], p[1])
+
+
+def diffuse(name, rgb):
+    m = bpy.data.materials.new(name)
+    m.use_nodes = True
+    nodes = m.node_tree.nodes
+    nodes.clear()
+    bsdf = nodes.new("ShaderNodeBsdfDiffuse")
+    bsdf.inputs["Color"].default_value = (rgb[0], rgb[1], rgb[2], 1.0)
+    bsdf.inputs["Roughness"].default_value = 0.0
+    output = nodes.new("ShaderNodeOutputMaterial")
+    m.node_tree.links.new(bsdf.outputs["BSDF"], output.inputs["Surface"])
+    return m
+
+
+white = diffuse("white", (0.73, 0.73, 0.73))
+red = diffuse("red", (0.63, 0.065, 0.05))
+green = diffuse("green", (0.14, 0.45, 0.09))
+
+
+def box(lo, hi, material, rotate_y=0.0, translate=(0.0, 0.0, 0.0)):
+    """An axis-aligned box lo..hi (gtrace coordinates), rotated about gtrace's y (degrees) and moved."""
+    centre = [(a + b) / 2 for a, b in zip(lo, hi)]
+    dims = [b - a for a, b in zip(lo, hi)]
+    bpy.ops.mesh.primitive_cube_add(size=1.0)
+    o = bpy.context.active_object
+    o.scale = (dims[0], dims[2], dims[1])
+    # a rotation about gtrace's y by t is one about Blender's z by t (both right-handed)
+    c, s = math.cos(math.radians(rotate_y)), math.sin(math.radians(rotate_y))
+    rx, rz = c * centre[0] + s * centre[2], -s * centre[0] + c * centre[2]
+    o.location = blender((rx + translate[0], centre[1] + translate[1], rz + translate[2]))
+    o.rotation_euler = (0.0, 0.0, math.radians(rotate_y))
+    o.data.materials.append(material)
+
+
+box((-1.05, -0.05, -1.05), (1.05, 0, 1.05), white)  # floor
+box((-1.05, 2, -1.05), (1.05, 2.05, 1.05), white)  # ceiling
+box((-1.05, 0, -1.05), (1.05, 2, -1), white)  # back wall
+box((-1.05, 0, -1), (-1, 2, 1.05), red)  # left wall
+box((1, 0, -1), (1.05, 2, 1.05), green)  # right wall
+box((-0.3, 0, -0.3), (0.3, 0.6, 0.3), white, -18, (0.33, 0, 0.35))
+box((-0.3, 0, -0.3), (0.3, 1.2, 0.3), white, 17, (-0.35, 0, -0.33))
+
+radiance, side = (17.0, 12.0, 4.0), 0.5
+light = bpy.data.lights.new("lamp", type="AREA")
+light.shape = "SQUARE"
+light.size = side
+light.color = tuple(c / radiance[0] for c in radiance)
+light.energy = 4.0 * side * side * radiance[0]
+lamp = bpy.data.objects.new("lamp", light)
+lamp.location = blender((0.0, 1.99, 0.0))  # an area light emits along its -z: down
+scene.collection.objects.link(lamp)
+
+cam_data = bpy.data.cameras.new("camera")
+cam_data.sensor_fit = "VERTICAL"
+cam_data.angle = math.radians(38.0)
+cam = bpy.data.objects.new("camera", cam_data)
+cam.location = blender((0.0, 1.0, 3.9))
+cam.rotation_euler = (math.pi / 2, 0.0, 0.0)  # looking along Blender's +y, gtrace's -z
+scene.collection.objects.link(cam)
+scene.camera = cam
+
+world = bpy.data.worlds.new("black")
+world.use_nodes = True
+world.node_tree.nodes["Background"].inputs["Strength"].default_value = 0.0
+scene.world = world
+
+scene.render.engine = "CYCLES"
+cy = scene.cycles
+cy.device = "CPU"
+cy.samples = samples
+cy.seed = seed
+cy.use_adaptive_sampling = False
+cy.use_denoising = False
+cy.max_bounces = 8
+cy.diffuse_bounces = 8
+cy.sample_clamp_direct = 0.0
+cy.sample_clamp_indirect = 0.0
+cy.pixel_filter_type = "BOX"
+cy.filter_width = 1.0
+cy.use_auto_tile = False
+scene.render.threads_mode = "FIXED"
+scene.render.threads = threads
+scene.render.resolution_x = size
+scene.render.resolution_y = size
+scene.render.resolution_percentage = 100
+scene.render.image_settings.file_format = "OPEN_EXR"
+scene.render.image_settings.color_depth = "32"
+scene.render.image_settings.exr_codec = "ZIP"
+scene.view_settings.view_transform = "Standard"
+scene.render.filepath = out
+scene.render.use_file_extension = False
+
+wall, cpu = time.perf_counter(), time.process_time()
+bpy.ops.render.render(write_still=True)
+print("cycles-render-seconds %.4f %.4f" % (time.perf_counter() - wall, time.process_time() - cpu), flush=True)
