@@ -105,7 +105,7 @@ static int prim_power(TraceCtx *c, const EmissivePrim *p, GColor *L, double *pow
         int rc = emission_at(c, p->obj, p->prim, bu, bv, gvec3_add(centre, off), gvec3_neg(off), 1.0, L);
         if (rc < 0)
             return rc;
-        b += gcolor_brightness(L);
+        b += gcolor_brightness_as(L, GCOLOR_LIGHT);
         if (p->kind == EMIT_SPHERE) /* a sphere is seen from outside only */
             break;
     }

@@ -145,7 +145,7 @@ double emit_power(const Light *l, const EmitBounds *b)
         const ProbeDist *d = &l->env->dist;
         return M_PI * b->radius * b->radius * d->row_cdf[d->h] * l->env->scale;
     }
-    return gcolor_brightness(&l->color) * emit_power_factor(l, b);
+    return gcolor_brightness_as(&l->color, GCOLOR_LIGHT) * emit_power_factor(l, b);
 }
 
 int emit_particle(const Light *l, const EmitBounds *b, const double u[4], GVec3 *origin, GVec3 *dir, double *factor,

@@ -3,7 +3,7 @@
  *
  * The distribution is piecewise constant over the lat-long pixels: pixel (u, v) is chosen with probability
  * proportional to w(u, v) = brightness(P(u, v)) * Omega(v), where the brightness is the colour model's own
- * (gcolor_brightness of the pixel converted into the scene's model as a light) and Omega(v) is the pixel's
+ * (gcolor_brightness_as of the pixel converted into the scene's model, as a light) and Omega(v) is the pixel's
  * exact solid angle, 2 pi / W * (cos theta_top - cos theta_bottom) (proportional to sin theta at the
  * centre). Inside the pixel the direction is uniform in solid angle (phi uniform, cos theta uniform), so the
  * density is w(u, v) / (sum w * Omega(v)) and an estimate L / (n pdf) = P(u, v) * sum w / (n brightness)
@@ -68,7 +68,7 @@ int probe_dist_build(ProbeDist *d, const GProbe *p, const GColorModel *model, GE
         for (int u = 0; u < w; u++) {
             if ((rc = gprobe_pixel_color(p, u, v, &c)) < 0)
                 break;
-            double b = gcolor_brightness(&c);
+            double b = gcolor_brightness_as(&c, GCOLOR_LIGHT);
             cdf[u + 1] = cdf[u] + (b > 0.0 && isfinite(b) ? b * omega : 0.0);
         }
         d->row_cdf[v + 1] = d->row_cdf[v] + cdf[w];
