@@ -14,14 +14,14 @@
 #include <string.h>
 
 typedef struct Image {
-    GNodeChild node; /* base and child; first */
+    GNodeTimes node; /* base, child and the factor's function; first */
     GTexImage *image; /* the file, its lookups and the colours of its texels (kit/texparam.h) */
 } Image;
 
 static void image_destroy(GMaterial *self)
 {
     Image *im = (Image *)self;
-    gmaterial_unref(im->node.child);
+    gmaterial_unref(im->node.node.child);
     gtexparam_image_free(im->image);
     gmem_free(im);
 }
@@ -46,66 +46,23 @@ static int apply(const GMaterial *self, GSurfPoint *sp, GColor *result)
     return rc;
 }
 
-static int image_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
-                            GColor *result)
-{
-    int rc = gmaterial_reflection(gnode_child_of(self), sp, in, illum, out, result);
-    return rc != G_OK ? rc : apply(self, sp, result);
-}
-
-static int image_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
-                            const GColor *rel_index, GVec3 out, GColor *result)
-{
-    int rc = gmaterial_refraction(gnode_child_of(self), sp, in, illum, rel_index, out, result);
-    return rc != G_OK ? rc : apply(self, sp, result);
-}
-
-static int image_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result)
-{
-    int rc = gmaterial_emission(gnode_child_of(self), sp, out, result);
-    return rc != G_OK ? rc : apply(self, sp, result);
-}
-
-static int image_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
-{
-    int rc = gmaterial_ambient(gnode_child_of(self), sp, illum, result);
-    return rc != G_OK ? rc : apply(self, sp, result);
-}
-
-static int image_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
-{
-    int rc = gmaterial_diffuse(gnode_child_of(self), sp, result);
-    return rc != G_OK ? rc : apply(self, sp, result);
-}
-
-/* The child's direction and density; the weight times the texel, as reflection and refraction are. */
-static int image_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
-                        double u2, GMaterialSample *s, GColor *weight)
-{
-    int rc = gmaterial_sample(gnode_child_of(self), sp, out, rel_index, u1, u2, s, weight);
-    if (rc <= 0)
-        return rc;
-    rc = apply(self, sp, weight);
-    return rc ? rc : 1;
-}
-
 static const GMaterialClass image_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "image",
     .description = "the child's reflected and emitted light times an image's colour at (u, v)",
     .destroy = image_destroy,
-    .reflection = image_reflection,
-    .refraction = image_refraction,
+    .reflection = gnode_times_reflection,
+    .refraction = gnode_times_refraction,
     .refraction_index = gnode_child_refraction_index,
     .reflection_dir = gnode_child_reflection_dir,
     .refraction_dir = gnode_child_refraction_dir,
-    .emission = image_emission,
-    .ambient = image_ambient,
+    .emission = gnode_times_emission,
+    .ambient = gnode_times_ambient,
     .absorption = gnode_child_absorption,
     .normal = gnode_child_normal,
-    .diffuse = image_diffuse,
+    .diffuse = gnode_times_diffuse,
     .opaque = gnode_child_opaque,
-    .sample = image_sample,
+    .sample = gnode_times_sample,
     .pdf = gnode_child_pdf,
     .is_delta = gnode_child_is_delta,
 };
@@ -140,14 +97,15 @@ int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptio
     }
     Image *im = (Image *)mat;
     im->image = image;
-    gnode_inherit_no_emission(&im->node.base, &child, 1); /* the child's emission times a finite texel */
+    im->node.times = apply;
+    gnode_inherit_no_emission(&im->node.node.base, &child, 1); /* the child's emission times a finite texel */
     if (texels_are_vectors(image, model)) {
-        gnode_inherit_diagonal(&im->node.base, &child, 1); /* the child's pass-on times a texel colour */
+        gnode_inherit_diagonal(&im->node.node.base, &child, 1); /* the child's pass-on times a texel colour */
         /* reflection and diffuse colour: the child's at the same point times the same texel colour, a vector, so
          * texel * (diffuse * light) = (texel * diffuse) * light */
-        gnode_inherit_lambertian_child(&im->node.base, child);
+        gnode_inherit_lambertian_child(&im->node.node.base, child);
     }
-    *out = &im->node.base;
+    *out = &im->node.node.base;
     return G_OK;
 }
 

@@ -7,14 +7,14 @@
 #include <string.h>
 
 typedef struct Scaled {
-    GNodeChild node; /* base and child; first */
+    GNodeTimes node; /* base, child and the factor's function; first */
     GTexColor color;
 } Scaled;
 
 static void scaled_destroy(GMaterial *self)
 {
     Scaled *s = (Scaled *)self;
-    gmaterial_unref(s->node.child);
+    gmaterial_unref(s->node.node.child);
     gtexparam_color_release(&s->color);
     gmem_free(s);
 }
@@ -34,66 +34,23 @@ static int apply(const GMaterial *self, GSurfPoint *sp, GColor *result)
     return rc;
 }
 
-static int scaled_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
-                             GColor *result)
-{
-    int rc = gmaterial_reflection(gnode_child_of(self), sp, in, illum, out, result);
-    return rc != G_OK ? rc : apply(self, sp, result);
-}
-
-static int scaled_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
-                             const GColor *rel_index, GVec3 out, GColor *result)
-{
-    int rc = gmaterial_refraction(gnode_child_of(self), sp, in, illum, rel_index, out, result);
-    return rc != G_OK ? rc : apply(self, sp, result);
-}
-
-static int scaled_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result)
-{
-    int rc = gmaterial_emission(gnode_child_of(self), sp, out, result);
-    return rc != G_OK ? rc : apply(self, sp, result);
-}
-
-static int scaled_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result)
-{
-    int rc = gmaterial_ambient(gnode_child_of(self), sp, illum, result);
-    return rc != G_OK ? rc : apply(self, sp, result);
-}
-
-static int scaled_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
-{
-    int rc = gmaterial_diffuse(gnode_child_of(self), sp, result);
-    return rc != G_OK ? rc : apply(self, sp, result);
-}
-
-/* The child's direction and density; the weight times the colour, as reflection and refraction are. */
-static int scaled_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index, double u1,
-                         double u2, GMaterialSample *s, GColor *weight)
-{
-    int rc = gmaterial_sample(gnode_child_of(self), sp, out, rel_index, u1, u2, s, weight);
-    if (rc <= 0)
-        return rc;
-    rc = apply(self, sp, weight);
-    return rc ? rc : 1;
-}
-
 static const GMaterialClass scaled_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = "textured",
     .description = "a material whose one colour parameter is textured: its results times the colour at the point",
     .destroy = scaled_destroy,
-    .reflection = scaled_reflection,
-    .refraction = scaled_refraction,
+    .reflection = gnode_times_reflection,
+    .refraction = gnode_times_refraction,
     .refraction_index = gnode_child_refraction_index,
     .reflection_dir = gnode_child_reflection_dir,
     .refraction_dir = gnode_child_refraction_dir,
-    .emission = scaled_emission,
-    .ambient = scaled_ambient,
+    .emission = gnode_times_emission,
+    .ambient = gnode_times_ambient,
     .absorption = gnode_child_absorption,
     .normal = gnode_child_normal,
-    .diffuse = scaled_diffuse,
+    .diffuse = gnode_times_diffuse,
     .opaque = gnode_child_opaque,
-    .sample = scaled_sample,
+    .sample = gnode_times_sample,
     .pdf = gnode_child_pdf,
     .is_delta = gnode_child_is_delta,
 };
@@ -115,8 +72,9 @@ int gtexparam_scaled_material(GMaterial *child, GTexColor *p, GMaterial **out, G
     Scaled *s = (Scaled *)mat;
     gmaterial_unref(child); /* the node's own reference was taken by gnode_child_new */
     s->color = *p;
+    s->node.times = apply;
     memset(p, 0, sizeof *p);
-    GMaterial *c = s->node.child;
+    GMaterial *c = s->node.node.child;
     gnode_inherit_no_emission(mat, &c, 1); /* the child's emission times a finite colour */
     gnode_inherit_diagonal(mat, &c, 1);    /* the child's pass-on times a vector */
     gnode_inherit_lambertian_child(mat, c);

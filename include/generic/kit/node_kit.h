@@ -293,6 +293,31 @@ GENERIC_API void gnode_child_destroy(GMaterial *self);
     GENERIC_API attr type gnode_child_##name GMATERIAL_WITH(const GMaterial *self, params);
 GMATERIAL_METHODS(GNODE_DECLARE_CHILD_)
 
+/** What a GNodeTimes node multiplies its child's results by at sp: result = factor(sp) * result, in place. */
+typedef int (*GNodeTimesFn)(const GMaterial *self, GSurfPoint *sp, GColor *result);
+/** The start of a one-child node whose light-carrying results are its child's times a colour at the point (image
+ * node, textured colour parameters): reflection, refraction, emission, ambient, diffuse and sample's weight go
+ * through `times`; the rest is the child's (gnode_child_*). Create it with gnode_child_new, then set times. */
+typedef struct GNodeTimes {
+    GNodeChild node;
+    GNodeTimesFn times;
+} GNodeTimes;
+/** The reflection method of a GNodeTimes node: the child's, then times. */
+GENERIC_API int gnode_times_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
+                                       GVec3 out, GColor *result);
+/** The refraction method of a GNodeTimes node: the child's, then times. */
+GENERIC_API int gnode_times_refraction(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum,
+                                       const GColor *rel_index, GVec3 out, GColor *result);
+/** The emission method of a GNodeTimes node: the child's, then times. */
+GENERIC_API int gnode_times_emission(const GMaterial *self, GSurfPoint *sp, GVec3 out, GColor *result);
+/** The ambient method of a GNodeTimes node: the child's, then times. */
+GENERIC_API int gnode_times_ambient(const GMaterial *self, GSurfPoint *sp, const GColor *illum, GColor *result);
+/** The diffuse method of a GNodeTimes node: the child's, then times. */
+GENERIC_API int gnode_times_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result);
+/** The sample method of a GNodeTimes node: the child's direction and density, its weight times the factor. */
+GENERIC_API int gnode_times_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index,
+                                   double u1, double u2, GMaterialSample *s, GColor *weight);
+
 /* ---- nodes over a list of children ---- */
 
 /** The state of a node that picks among n children by a generator's value (select, spline); the node's
