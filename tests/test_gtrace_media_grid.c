@@ -171,7 +171,7 @@ static void test_gradient_pixels(void **state)
              "medium ink grid { file \"%s\" sigma_a rgb 1 1 1 scale 0.6 }\n"
              "object box { min <-0.8, -0.8, -0.5> max <0.8, 0.8, 0.5> material dielectric { index 1 } interior ink }\n"
              "light background { color rgb 1 1 1 }\n"
-             "camera orthographic { from <0, 0, 3> at <0, 0, 0> size 1.6 width 4 height 4 spp 16384 depth 8 }\n",
+             "camera orthographic { from <0, 0, 3> at <0, 0, 0> size 1.6 width 4 height 4 spp 65536 depth 8 }\n",
              file);
     static const char *const models[] = {"rgb", "spectrum"};
     for (int k = 0; k < 2; k++) {
