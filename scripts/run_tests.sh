@@ -41,7 +41,8 @@ if [ "${1:-}" = "--one" ]; then
     echo "$status" > "$log.status"
     if [ "$status" -eq 0 ]; then
         cases=$(grep -c '^\[       OK \]' "$log")
-        if [ "$cases" -gt 0 ]; then echo "PASS $name ($cases cases, $secs$note)"; else echo "PASS $name ($secs$note)"; fi
+        [ "$cases" -gt 0 ] && secs="$cases cases, $secs"
+        echo "PASS $name ($secs$note)"
     else
         echo "FAIL $name ($secs$note)"
     fi

@@ -84,8 +84,8 @@ static void check_cells(const char *form, const char *lo, const char *hi)
         render_scene("c10.scene", checker_scene, a_text, integrator, NULL, &a);
         render_scene("c200.scene", checker_scene, b_text, integrator, NULL, &b);
         render_scene("cm.scene", checker_scene,
-                     "emitter { radiance mix { by checker { dims 2 frequency 1 } a rgb 0 0 0 b rgb 1 1 1 } }", integrator,
-                     NULL, &mask); /* the same integrator: the same positions in each pixel */
+                     "emitter { radiance mix { by checker { dims 2 frequency 1 } a rgb 0 0 0 b rgb 1 1 1 } }",
+                     integrator, NULL, &mask); /* the same integrator: the same positions in each pixel */
         int n = t.width * t.height, cells[2] = {0, 0}, differ[2] = {0, 0};
         float white = 0.0f;
         for (int i = 0; i < 3 * n; i++)

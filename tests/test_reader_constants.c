@@ -27,7 +27,8 @@ static GLibrary *load(const char *text)
     return lib;
 }
 
-static void color_of(GLibrary *lib, const char *name, float v[9]) /* rgb values: room for the model's capacity (a 3 x 3 matrix) */
+/* rgb values: room for the model's capacity (a 3 x 3 matrix) */
+static void color_of(GLibrary *lib, const char *name, float v[9])
 {
     GColor c;
     assert_int_equal(gcolor_wrap(&c, glibrary_colormodel(lib), v, 9), G_OK);

@@ -31,8 +31,8 @@
  * B is computed once, here, on the matrix's own grid in double precision (negative noise clamped to 0;
  * excitation samples are matched to emission wavelengths; B keeps M's excitation grid, so light below the
  * emission range still fluoresces) and handed to gcolor_from_reradiation, which makes it a matrix in the
- * bispectral model, reduces it to a 3 x 3 matrix in rgb and folds it into a reflectance elsewhere. The per-call code uses only generic colour
- * operations and works the same for a matrix or a vector value. R(c) is tabulated at creation by a
+ * bispectral model, reduces it to a 3 x 3 matrix in rgb and folds it into a reflectance elsewhere. The per-call
+ * code uses only generic colour operations and works the same for a matrix or a vector value. R(c) is tabulated at creation by a
  * quadrature over h with the distribution D(h) (h.n). */
 #include "generic/kit/fluorescent_kit.h"
 #include "generic/plugin.h"

@@ -20,8 +20,9 @@
  * can also be reached by material sampling, so both estimates are combined by multiple importance sampling
  * with the power heuristic (a sphere light is sampled uniformly in the solid angle it subtends, a rectangle light
  * uniformly by area; area_light_hit gives the same density. Sampling rectangles by solid angle, as spherical
- * rectangles, was measured on the Cornell box: 35% more time for 2% less RMSE); their shadow rays are blocked by any surface (light through glass
- * reaches them by material sampling, a caustic, so counting the straight transmission too would count it twice).
+ * rectangles, was measured on the Cornell box: 35% more time for 2% less RMSE); their shadow rays are blocked by
+ * any surface (light through glass reaches them by material sampling, a caustic, so counting the straight
+ * transmission too would count it twice).
  * Material sampling sees sphere and rectangle lights (one-sided) when they are nearer than the surface hit; a path
  * after a delta bounce counts them fully. One light sample per light and vertex: the lights' `samples` apply
  * to the Whitted tracer; a reference probe's `shadows off` does not apply. At a Lambertian material
