@@ -12,6 +12,7 @@ BUILD=$(cd "${1:-build}" 2> /dev/null && pwd) || { echo "FAIL: no build director
 GMAT="$BUILD/bin/gmat"
 [ -x "$GMAT" ] || { echo "FAIL: $GMAT is not built"; exit 1; }
 . "$(dirname "$0")/prelude.sh"
+OPTS=$(check_opts "$GMAT") # gmat check's options (prelude.sh)
 cat > "$TMP/blends.mat" << 'EOM'
 color dayglo reradiation { absorb_peak 470 absorb_width 115 absorb_shape 8 absorb_max 0.97
     emit_width 20 stokes_shift 135 quantum_yield 0.65 reflectance 0.92 }
@@ -52,7 +53,7 @@ for a in $KIDS; do
     done
 done
 # fluorescent-phong's own albedo in rgb (the known violation): the bound for blends with it there
-"$GMAT" check "$TMP/blends.mat" fp --colormodel rgb > "$TMP/fp.log" 2>&1
+"$GMAT" check "$TMP/blends.mat" fp --colormodel rgb $OPTS > "$TMP/fp.log" 2>&1
 fp_rgb=$(awk '$1 == "albedo" { print $3 }' "$TMP/fp.log")
 [ -n "$fp_rgb" ] || fail "gmat check of fluorescent-phong in rgb printed no albedo: $(cat "$TMP/fp.log")"
 checked=0
@@ -61,7 +62,7 @@ sanitized "$GMAT" && every=4 # under the sanitizers every fourth node: the same 
 while read -r name model; do
     checked=$((checked + 1))
     [ $(((checked - 1) % every)) -eq 0 ] || continue
-    "$GMAT" check "$TMP/blends.mat" "$name" --colormodel "$model" > "$TMP/log" 2>&1 && continue
+    "$GMAT" check "$TMP/blends.mat" "$name" --colormodel "$model" $OPTS > "$TMP/log" 2>&1 && continue
     failing=$(awk '$2 == "worst" && $6 == "FAIL" { print $1 }' "$TMP/log")
     albedo=$(awk '$1 == "albedo" { print $3 }' "$TMP/log")
     case "$model $name" in

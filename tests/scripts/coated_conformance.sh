@@ -8,6 +8,7 @@ BUILD=$(cd "${1:-build}" 2> /dev/null && pwd) || { echo "FAIL: no build director
 GMAT="$BUILD/bin/gmat"
 . "$(dirname "$0")/prelude.sh"
 need_program "$GMAT"
+OPTS=$(check_opts "$GMAT") # gmat check's options (prelude.sh)
 cat > "$TMP/coated.mat" << 'EOM'
 material p001 plastic { reflectance rgb 0.7 0.4 0.2 roughness 0.01 }
 material p005 plastic { reflectance rgb 0.7 0.4 0.2 roughness 0.05 }
@@ -26,7 +27,7 @@ checked=0
 # must_pass FILE MATERIAL MODEL
 must_pass() {
     checked=$((checked + 1))
-    "$GMAT" check "$1" "$2" --colormodel "$3" > "$TMP/log" 2>&1 || fail "$2 in $3 does not pass gmat check:
+    "$GMAT" check "$1" "$2" --colormodel "$3" $OPTS > "$TMP/log" 2>&1 || fail "$2 in $3 does not pass gmat check:
 $(grep -v ' PASS ' "$TMP/log")"
 }
 turn=0

@@ -32,14 +32,9 @@ PLUGINS="$BUILD/plugins"
 for t in "$GMAT" "$GCOLOR"; do
     [ -x "$t" ] || { echo "FAIL: $t is not built"; exit 1; }
 done
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-fails=0
+. "$(dirname "$0")/prelude.sh"
 checked=0
-fail() {
-    echo "FAIL: $*"
-    fails=$((fails + 1))
-}
+OPTS=$(check_opts "$GMAT") # gmat check's options (prelude.sh)
 
 # ---- colour models ----
 "$GCOLOR" list > "$TMP/models" || fail "gcolor list failed"
@@ -111,7 +106,7 @@ while read -r kind type; do
         models=$(awk -v n="$checked" 'NR == 1 { c = 0 } { m[c++] = $0 } END { print m[n % c] }' "$TMP/models")
     fi
     for model in $models; do
-        "$GMAT" check "$file" "$name" --colormodel "$model" > "$TMP/log" 2>&1
+        "$GMAT" check "$file" "$name" --colormodel "$model" $OPTS > "$TMP/log" 2>&1
         st=$?
         known=$(known_failure "$type" "$model")
         if [ -n "$known" ]; then

@@ -13,6 +13,7 @@ BUILD=$(cd "${1:-build}" 2> /dev/null && pwd) || { echo "FAIL: no build director
 GMAT="$BUILD/bin/gmat"
 . "$(dirname "$0")/prelude.sh"
 need_program "$GMAT"
+OPTS=$(check_opts "$GMAT") # gmat check's options (prelude.sh)
 cat > "$TMP/one.mat" << 'EOM'
 material ll lambert { reflectance rgb 0.6 0.3 0.2 }
 material pm phong { diffuse rgb 0.1 0.1 0.1 specular rgb 0.3 0.3 0.3 exponent 200 mirror rgb 0.3 0.3 0.3 }
@@ -43,7 +44,7 @@ sanitized "$GMAT" && every=4 # under the sanitizers every fourth node: the same 
 while read -r name model; do
     checked=$((checked + 1))
     [ $(((checked - 1) % every)) -eq 0 ] || continue
-    "$GMAT" check "$TMP/one.mat" "$name" --colormodel "$model" > "$TMP/log" 2>&1
+    "$GMAT" check "$TMP/one.mat" "$name" --colormodel "$model" $OPTS > "$TMP/log" 2>&1
     failing=$(awk '$2 == "worst" && / FAIL / && $1 != "albedo" { print $1 }' "$TMP/log")
     grep -q ' worst ' "$TMP/log" || failing="no report"
     [ -z "$failing" ] || fail "$name in $model: $failing
