@@ -80,6 +80,8 @@ $(FUZZ_LIBA): $(FUZZ_C_OBJ) $(FUZZ_CXX_OBJ) $(FUZZ_GEN_OBJ)
 	ar rcs $@ $^
 
 .SECONDARY: $(FUZZ_NAMES:%=$(FUZZ_BUILD)/obj/tests/fuzz/fuzz_%.o)
+# gtrace's media sources name their headers from examples/gtrace/, as gtrace's build does
+$(FUZZ_BUILD)/obj/tests/fuzz/fuzz_medium.o: FUZZ_CPPFLAGS += -Iexamples/gtrace
 $(FUZZ_BUILD)/fuzz_%: $(FUZZ_BUILD)/obj/tests/fuzz/fuzz_%.o $(FUZZ_LIBA)
 	$(FUZZ_CXX) $(FUZZ_SAN) -fsanitize=fuzzer -o $@ $< -Wl,--whole-archive $(FUZZ_LIBA) -Wl,--no-whole-archive \
 	    $(FUZZ_LIBS)
