@@ -109,8 +109,6 @@ int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptio
     return G_OK;
 }
 
-static const char *const wrap_names[] = {"periodic", "clamp", "black", "mirror", NULL};
-static const char *const space_names[] = {"auto", "srgb", "linear", NULL};
 
 static int parse_image(GReader *r, const void *vtable, void **object, GError *err)
 {
@@ -119,7 +117,7 @@ static int parse_image(GReader *r, const void *vtable, void **object, GError *er
     char *path = NULL;
     GImageNodeOptions o;
     memset(&o, 0, sizeof o);
-    int w, file_line = 0, file_col = 0;
+    int file_line = 0, file_col = 0;
     const char *key;
     int rc;
     while ((rc = greader_param(r, &key, err)) > 0) {
@@ -128,22 +126,9 @@ static int parse_image(GReader *r, const void *vtable, void **object, GError *er
         else if (strcmp(key, "file") == 0) {
             rc = greader_path(r, &path, err);
             greader_position(r, &file_line, &file_col);
-        } else if (strcmp(key, "wrap") == 0) {
-            rc = greader_choice(r, wrap_names, &w, err);
-            o.swrap = o.twrap = (GTexWrap)w;
-        } else if (strcmp(key, "swrap") == 0) {
-            rc = greader_choice(r, wrap_names, &w, err);
-            o.swrap = (GTexWrap)w;
-        } else if (strcmp(key, "twrap") == 0) {
-            rc = greader_choice(r, wrap_names, &w, err);
-            o.twrap = (GTexWrap)w;
-        } else if (strcmp(key, "colorspace") == 0) {
-            rc = greader_choice(r, space_names, &w, err);
-            o.colorspace = (GTexColorSpace)w;
-        } else if (strcmp(key, "blur") == 0)
-            rc = greader_number_in(r, 0.0, 1.0, &o.blur, err);
-        else
+        } else if ((rc = gtexparam_image_option(r, key, &o, err)) > 0) {
             rc = greader_unknown_param(r, "child, file, wrap, swrap, twrap, colorspace, blur", err);
+        }
         if (rc < 0)
             break;
     }

@@ -215,6 +215,29 @@ int gtexparam_image_max(GTexImage *im, GColorRole role, GColor *out, GError *err
 static const char *const wrap_names[] = {"periodic", "clamp", "black", "mirror", NULL};
 static const char *const space_names[] = {"auto", "srgb", "linear", NULL};
 
+int gtexparam_image_option(GReader *r, const char *key, GImageNodeOptions *o, GError *err)
+{
+    int w, rc;
+    if (strcmp(key, "wrap") == 0) {
+        if ((rc = greader_choice(r, wrap_names, &w, err)) == G_OK)
+            o->swrap = o->twrap = (GTexWrap)w;
+    } else if (strcmp(key, "swrap") == 0) {
+        if ((rc = greader_choice(r, wrap_names, &w, err)) == G_OK)
+            o->swrap = (GTexWrap)w;
+    } else if (strcmp(key, "twrap") == 0) {
+        if ((rc = greader_choice(r, wrap_names, &w, err)) == G_OK)
+            o->twrap = (GTexWrap)w;
+    } else if (strcmp(key, "colorspace") == 0) {
+        if ((rc = greader_choice(r, space_names, &w, err)) == G_OK)
+            o->colorspace = (GTexColorSpace)w;
+    } else if (strcmp(key, "blur") == 0) {
+        rc = greader_number_in(r, 0.0, 1.0, &o->blur, err);
+    } else {
+        return 1;
+    }
+    return rc;
+}
+
 int gtexparam_image_read(GReader *r, const GColorModel *m, GColorRole role, GTexImage **out, GError *err)
 {
     (void)role;
@@ -222,7 +245,7 @@ int gtexparam_image_read(GReader *r, const GColorModel *m, GColorRole role, GTex
     GImageNodeOptions o;
     memset(&o, 0, sizeof o);
     char *path = NULL;
-    int file_line = 0, file_col = 0, w;
+    int file_line = 0, file_col = 0;
     char key[16];
     int rc = greader_block_begin(r, err);
     while (rc == G_OK && (rc = greader_block_end(r, err)) == 0) {
@@ -235,24 +258,11 @@ int gtexparam_image_read(GReader *r, const GColorModel *m, GColorRole role, GTex
                 rc = greader_error_at(r, err, G_ERR_PARSE, line, col, "image: 'file' is given twice");
             else if ((rc = greader_path(r, &path, err)) == G_OK)
                 greader_position(r, &file_line, &file_col);
-        } else if (strcmp(key, "wrap") == 0) {
-            rc = greader_choice(r, wrap_names, &w, err);
-            o.swrap = o.twrap = (GTexWrap)w;
-        } else if (strcmp(key, "swrap") == 0) {
-            rc = greader_choice(r, wrap_names, &w, err);
-            o.swrap = (GTexWrap)w;
-        } else if (strcmp(key, "twrap") == 0) {
-            rc = greader_choice(r, wrap_names, &w, err);
-            o.twrap = (GTexWrap)w;
-        } else if (strcmp(key, "colorspace") == 0) {
-            rc = greader_choice(r, space_names, &w, err);
-            o.colorspace = (GTexColorSpace)w;
-        } else if (strcmp(key, "blur") == 0)
-            rc = greader_number_in(r, 0.0, 1.0, &o.blur, err);
-        else
+        } else if ((rc = gtexparam_image_option(r, key, &o, err)) > 0) {
             rc = greader_error_at(r, err, G_ERR_PARSE, line, col,
                                   "image: unknown parameter '%s' (expected one of: file, wrap, swrap, twrap, "
                                   "colorspace, blur)", key);
+        }
     }
     if (rc > 0)
         rc = G_OK;

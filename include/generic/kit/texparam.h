@@ -114,6 +114,11 @@ GENERIC_API GENERIC_NODISCARD int gtexparam_image_open(const char *path, const G
                                                        const GColorModel *m, GTexImage **out, GError *err);
 /** Frees an image; NULL is a no-op. */
 GENERIC_API void gtexparam_image_free(GTexImage *im);
+/** Reads the value of an image option into *o when key is one (wrap, swrap, twrap, colorspace, blur: the image
+ * node's and `image { }` colours' options): G_OK, or a G_ERR_ status placed at the value; 1 when key is none of
+ * them (nothing read). */
+GENERIC_API GENERIC_NODISCARD int gtexparam_image_option(GReader *r, const char *key, GImageNodeOptions *o,
+                                                         GError *err);
 /** The linear texel at sp's (u, v) over its footprint, looked up once per point and then taken from sp's cache
  * (key: im); NaN, infinite and negative values become 0. A failed lookup is its status, never a black texel. */
 GENERIC_API GENERIC_NODISCARD int gtexparam_image_rgb(const GTexImage *im, GSurfPoint *sp, double rgb[3]);
