@@ -124,21 +124,6 @@ static uint64_t server_limit; /* its address space limit now: the base, or the d
 
 static uint64_t base_bytes(void) { return (uint64_t)GDECODE_BASE_MB << 20; }
 
-static int recv_all(int fd, void *buf, size_t n)
-{
-    char *p = buf;
-    while (n > 0) {
-        ssize_t r = read(fd, p, n);
-        if (r < 0 && errno == EINTR)
-            continue;
-        if (r <= 0)
-            return -1;
-        p += r;
-        n -= (size_t)r;
-    }
-    return 0;
-}
-
 static int send_all(int fd, const void *buf, size_t n)
 {
     const char *p = buf;
@@ -158,8 +143,8 @@ static int send_all(int fd, const void *buf, size_t n)
 static int recv_record(int fd, int phase, GDecodeRecord *r, char message[GDECODE_MESSAGE_MAX + 1])
 {
     message[0] = 0;
-    if (recv_all(fd, r, sizeof *r) != 0 || r->magic != GDECODE_MAGIC || r->phase != phase ||
-        r->message_length > GDECODE_MESSAGE_MAX || recv_all(fd, message, r->message_length) != 0)
+    if (gfile_read_exact(fd, r, sizeof *r) != 0 || r->magic != GDECODE_MAGIC || r->phase != phase ||
+        r->message_length > GDECODE_MESSAGE_MAX || gfile_read_exact(fd, message, r->message_length) != 0)
         return -1;
     message[r->message_length] = 0;
     return 0;
@@ -362,7 +347,7 @@ static int run_locked(const char *path, GDecodeMode mode, unsigned flags, GImage
         if (!pix) {
             rc = gerror_set(err, G_ERR_NOMEM, "%s: out of memory for a %dx%d image", path, r.width, r.height);
             stop(path, 1, cpu, NULL);
-        } else if (recv_all(server_sock, pix, n * sizeof(float)) != 0) {
+        } else if (gfile_read_exact(server_sock, pix, n * sizeof(float)) != 0) {
             gmem_free(pix);
             rc = stop(path, 0, cpu, err);
         } else {

@@ -11,6 +11,7 @@
 #include "vdb_protocol.h"
 
 #include <generic/memory.h>
+#include <generic/services/file.h>
 
 #include <errno.h>
 #include <fcntl.h>
@@ -51,21 +52,6 @@ static int find_reader(char *out)
         snprintf(cand, sizeof cand, "%s%s/%s", exe, subs[i], VDB_READER_PROGRAM);
         if (access(cand, X_OK) == 0 && realpath(cand, out))
             return 1;
-    }
-    return 0;
-}
-
-static int read_all(int fd, void *buf, size_t n)
-{
-    char *p = buf;
-    while (n > 0) {
-        ssize_t r = read(fd, p, n);
-        if (r < 0 && errno == EINTR)
-            continue;
-        if (r <= 0)
-            return -1;
-        p += r;
-        n -= (size_t)r;
     }
     return 0;
 }
@@ -113,7 +99,7 @@ static int receive(int fd, long long max_voxels, const char *path, const char *n
                    GError *err)
 {
     VdbReply h;
-    if (read_all(fd, &h, sizeof h) != 0)
+    if (gfile_read_exact(fd, &h, sizeof h) != 0)
         return G_OK; /* no answer: finish() says how the reader ended */
     *answered = 1;
     if (h.magic != VDB_REPLY_MAGIC)
@@ -147,7 +133,7 @@ static int receive(int fd, long long max_voxels, const char *path, const char *n
         g->min[a] = h.min[a];
     }
     g->active_voxels = h.active_voxels;
-    if (read_all(fd, g->density, count * sizeof(float)) != 0)
+    if (gfile_read_exact(fd, g->density, count * sizeof(float)) != 0)
         return gerror_set(err, G_ERR_IO, "%s: the OpenVDB reader ended before the whole of grid '%s'", path, name);
     for (size_t i = 0; i < count; i++)
         if (!(g->density[i] >= 0.0f && isfinite(g->density[i])))

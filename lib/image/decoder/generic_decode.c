@@ -4,6 +4,7 @@
  * it loads from its own directory. Not a program for users: it talks the protocol on its standard input and
  * output. */
 #include "generic/memory.h"
+#include "generic/services/file.h"
 #include "generic/services/image.h"
 
 #include "../decode_protocol.h"
@@ -17,35 +18,9 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
-static int recv_all(void *buf, size_t n)
-{
-    char *p = buf;
-    while (n > 0) {
-        ssize_t r = read(0, p, n);
-        if (r < 0 && errno == EINTR)
-            continue;
-        if (r <= 0)
-            return -1;
-        p += r;
-        n -= (size_t)r;
-    }
-    return 0;
-}
-
-static int send_all(const void *buf, size_t n)
-{
-    const char *p = buf;
-    while (n > 0) {
-        ssize_t w = write(1, p, n);
-        if (w < 0 && errno == EINTR)
-            continue;
-        if (w <= 0)
-            return -1;
-        p += w;
-        n -= (size_t)w;
-    }
-    return 0;
-}
+/* The decoder's pipe: requests on standard input, answers on standard output. */
+static int recv_all(void *buf, size_t n) { return gfile_read_exact(0, buf, n); }
+static int send_all(const void *buf, size_t n) { return gfile_write_exact(1, buf, n); }
 
 static int send_record(int phase, int status, int width, int height, int channels, const char *message)
 {
