@@ -80,6 +80,13 @@ int gmat_plot(GmatContext *ctx, double theta_in, const GmatPlotOptions *o, const
 int gmat_check(GmatContext *ctx, int samples);
 /** Prints one property's line (check.c): its name, the worst figure, the tolerance, PASS or FAIL. */
 typedef void (*GmatReportFn)(void *checker, const char *property, double worst, double tol, const char *detail);
+/** The most places a check of `gmat check` measures at. */
+#define GMAT_MAX_PLACES 16
+/** The albedo property of `gmat check` (albedo.c): at each of places[0 .. nplaces) and a sweep of incidences, light
+ * leaving per light arriving, by a samples x 2 samples quadrature (or by sample() where that exceeds the
+ * tolerance), one line through report. */
+void gmat_check_albedo(GmatContext *ctx, const GmatPlace *places, int nplaces, int samples, GmatReportFn report,
+                       void *checker);
 /** The sampling checks of `gmat check` (sampling.c): chi2 of sample() against pdf(), the pdf's integral, the
  * weights; at places[0] and places[2 % nplaces], nsamples draws per incidence (0 = 20000). */
 void gmat_check_sampling(GmatContext *ctx, const GmatPlace *places, int nplaces, int nsamples, GmatReportFn report,
