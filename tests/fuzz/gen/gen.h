@@ -68,6 +68,10 @@ typedef struct GenFamily {
     void (*make)(GenBuf *out, GenRng *r, size_t budget);
 } GenFamily;
 
+/** Writes one extreme number (gen_numbers.c): an edge of double, float or an integer type, or a plain one. */
+void gen_text_extreme(GenBuf *b, GenRng *r);
+/** The reader's extreme-numbers family (gen_numbers.c): entries whose numbers are the extremes of every type. */
+void gen_text_extreme_numbers(GenBuf *b, GenRng *r, size_t budget);
 /** The families of each kind, and how many there are. */
 extern const GenFamily gen_text_families[];
 extern const int gen_text_count;
