@@ -221,6 +221,7 @@ int gcolor_mul_scaled(GColor *out, const GColor *a, const GColor *b, double s);
 int gcolor_scale(GColor *out, const GColor *a, double s);
 int gcolor_fill(GColor *out, double value);
 double gcolor_brightness(const GColor *c);
+double gcolor_brightness_as(const GColor *c, GColorRole role);
 int gcolor_from_rgb(GColor *c, const double rgb[3], GColorRole role);
 int gcolor_to_xyz(const GColor *c, GColorRole role, double xyz[3]);
 int gcolor_to_rgb(const GColor *c, GColorRole role, double rgb[3]);

@@ -64,6 +64,25 @@ class ColorModel:
         """Colours of the model (N, nvalues) to CIE XYZ (N, 3)."""
         return self.convert(samples, "xyz", role, threads)
 
+    def brightness(self, samples, role="reflectance"):
+        """The brightness of each row of samples (n x nvalues) read in role (gcolor_brightness_as): a light's is its
+        Y (CIE 1931, equal-energy white = 1) in every model; a reflectance's the model's own weighting."""
+        role = arrays.choice("role", role, arrays.ROLES)
+        s = np.ascontiguousarray(np.atleast_2d(np.asarray(samples, dtype=np.float32)))
+        if s.ndim != 2 or s.shape[1] != self.nvalues:
+            raise GenericError(f"samples must be n x {self.nvalues} for {self.name}, not {s.shape}")
+        c = ffi.new("GColor *")
+        if lib.gcolor_alloc(c, self._ptr) != lib.G_OK:
+            raise MemoryError("no memory for a colour")
+        try:
+            out = np.empty(s.shape[0], dtype=np.float64)
+            for i in range(s.shape[0]):
+                ffi.memmove(c.v, ffi.from_buffer(s[i]), 4 * self.nvalues)
+                out[i] = lib.gcolor_brightness_as(c, role)
+            return out
+        finally:
+            lib.gcolor_free(c)
+
     def __repr__(self):
         return f"<generic.ColorModel {self.name} ({self.nvalues} values)>"
 

@@ -36,6 +36,21 @@ def test_white_light_is_y_one():
     assert m.to_xyz(white, role="light")[0, 1] == pytest.approx(1.0, abs=1e-3)
 
 
+def test_a_lights_brightness_is_its_y_in_every_model():
+    rgb = np.random.default_rng(5).uniform(0.0, 1.0, (40, 3))
+    per_model = []
+    for name in ("rgb", "spectrum9", "spectrum", "bispectral"):
+        m = generic.ColorModel(name)
+        light = m.from_rgb(rgb, role="light")
+        b = m.brightness(light, role="light")
+        assert np.allclose(b, m.to_xyz(light, role="light")[:, 1], atol=1e-5)
+        per_model.append(b)
+    for b in per_model[1:]:
+        assert np.allclose(b, per_model[0], atol=1e-3)
+    with pytest.raises(generic.GenericError):
+        generic.ColorModel("rgb").brightness(np.zeros((2, 4)))
+
+
 def test_bad_arguments():
     with pytest.raises(generic.GenericError):
         generic.ColorModel("cmyk")
