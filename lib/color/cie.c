@@ -3,6 +3,7 @@
  * spectrum"). */
 #include "generic/color.h"
 #include "cie_tables.h"
+#include "colorspace_matrix.h"
 
 #include <math.h>
 #include <pthread.h>
@@ -27,25 +28,6 @@ static struct {
 
 static pthread_once_t once = PTHREAD_ONCE_INIT;
 
-static int invert3(const double m[3][3], double out[3][3])
-{
-    double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-                 m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-    if (fabs(det) < 1e-300)
-        return -1;
-    double id = 1.0 / det;
-    out[0][0] = (m[1][1] * m[2][2] - m[1][2] * m[2][1]) * id;
-    out[0][1] = (m[0][2] * m[2][1] - m[0][1] * m[2][2]) * id;
-    out[0][2] = (m[0][1] * m[1][2] - m[0][2] * m[1][1]) * id;
-    out[1][0] = (m[1][2] * m[2][0] - m[1][0] * m[2][2]) * id;
-    out[1][1] = (m[0][0] * m[2][2] - m[0][2] * m[2][0]) * id;
-    out[1][2] = (m[0][2] * m[1][0] - m[0][0] * m[1][2]) * id;
-    out[2][0] = (m[1][0] * m[2][1] - m[1][1] * m[2][0]) * id;
-    out[2][1] = (m[0][1] * m[2][0] - m[0][0] * m[2][1]) * id;
-    out[2][2] = (m[0][0] * m[1][1] - m[0][1] * m[1][0]) * id;
-    return 0;
-}
-
 /* out = m v (out may be v), as three scalars: copying out an array read it 16 bytes at a time right after its
  * 8-byte stores (a store-forwarding stall, twice per pixel; 0.985x a render's CPU in 7 timed pairs, near the
  * noise). */
@@ -68,7 +50,7 @@ static void init_tables(void)
         for (int k = 0; k < GCIE_NAMED; k++)
             T.sum_named_ybar[k] += (double)gcie_named_spd[k][i] * gcie_ybar[i];
     }
-    invert3(RGB2XYZ, T.xyz2rgb);
+    gcolorspace_invert3(RGB2XYZ, T.xyz2rgb);
     const float *b5[3] = {gcie_basis_r, gcie_basis_g, gcie_basis_b};
     for (int i = 0; i < GNM_COUNT; i++) {
         int k = i / 5 < GCIE_N5 - 1 ? i / 5 : GCIE_N5 - 2;
@@ -93,7 +75,7 @@ static void init_tables(void)
         for (int r = 0; r < 3; r++)
             p[r][c] = rgb[r];
     }
-    invert3(p, T.pinv);
+    gcolorspace_invert3(p, T.pinv);
 }
 
 static void ensure(void) { pthread_once(&once, init_tables); }

@@ -12,6 +12,7 @@
 #include "generic/kit/spectral_kernels.h"
 #include "uplift.h"
 #include "uplift_fit.h"
+#include "colorspace_matrix.h"
 
 #include <math.h>
 #include <stdint.h>
@@ -209,26 +210,6 @@ static void xyz_exact(const GSpectral *s, GColorRole role, const float *v, doubl
     xyz[2] = z;
 }
 
-static int invert3(const double m[3][3], double out[3][3])
-{
-    double c00 = m[1][1] * m[2][2] - m[1][2] * m[2][1], c01 = m[1][2] * m[2][0] - m[1][0] * m[2][2],
-           c02 = m[1][0] * m[2][1] - m[1][1] * m[2][0];
-    double det = m[0][0] * c00 + m[0][1] * c01 + m[0][2] * c02;
-    if (!(fabs(det) > 1e-12))
-        return -1;
-    double id = 1.0 / det;
-    out[0][0] = c00 * id;
-    out[1][0] = c01 * id;
-    out[2][0] = c02 * id;
-    out[0][1] = (m[0][2] * m[2][1] - m[0][1] * m[2][2]) * id;
-    out[1][1] = (m[0][0] * m[2][2] - m[0][2] * m[2][0]) * id;
-    out[2][1] = (m[0][1] * m[2][0] - m[0][0] * m[2][1]) * id;
-    out[0][2] = (m[0][1] * m[1][2] - m[0][2] * m[1][1]) * id;
-    out[1][2] = (m[0][2] * m[1][0] - m[0][0] * m[1][2]) * id;
-    out[2][2] = (m[0][0] * m[1][1] - m[0][1] * m[1][0]) * id;
-    return 0;
-}
-
 /* Brightness weights (color.h: Y of the value as a reflectance under D65): the model's own Y weights of the
  * reflectance role, which come from its to_nm, so that the brightness of a reflectance is its Y in this model, as
  * in every other. Negative weights (a spline's lobes) become 0, and a floor of 1e-6 of the peak makes a sample
@@ -309,7 +290,7 @@ static int init_colorimetry(GColorModel *m, GSpectral *s, GError *err)
             for (int j = 0; j < 3; j++)
                 p[j][b] = rgb[j];
         }
-        if (invert3(p, pinv) != 0) {
+        if (gcolorspace_invert3(p, pinv) != 0) {
             rc = gerror_set(err, G_ERR_INVALID, "colour model '%s': its grid cannot represent RGB colours",
                             m->cls->name);
             break;
