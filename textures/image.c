@@ -51,20 +51,7 @@ static const GMaterialClass image_class = {
     .name = "image",
     .description = "the child's reflected and emitted light times an image's colour at (u, v)",
     .destroy = image_destroy,
-    .reflection = gnode_times_reflection,
-    .refraction = gnode_times_refraction,
-    .refraction_index = gnode_child_refraction_index,
-    .reflection_dir = gnode_child_reflection_dir,
-    .refraction_dir = gnode_child_refraction_dir,
-    .emission = gnode_times_emission,
-    .ambient = gnode_times_ambient,
-    .absorption = gnode_child_absorption,
-    .normal = gnode_child_normal,
-    .diffuse = gnode_times_diffuse,
-    .opaque = gnode_child_opaque,
-    .sample = gnode_times_sample,
-    .pdf = gnode_child_pdf,
-    .is_delta = gnode_child_is_delta,
+    GNODE_TIMES_METHODS,
 };
 
 /* 1 when the image's texels are vectors in the model (then the node's results are its child's times a vector). */

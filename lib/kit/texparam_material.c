@@ -39,20 +39,7 @@ static const GMaterialClass scaled_class = {
     .name = "textured",
     .description = "a material whose one colour parameter is textured: its results times the colour at the point",
     .destroy = scaled_destroy,
-    .reflection = gnode_times_reflection,
-    .refraction = gnode_times_refraction,
-    .refraction_index = gnode_child_refraction_index,
-    .reflection_dir = gnode_child_reflection_dir,
-    .refraction_dir = gnode_child_refraction_dir,
-    .emission = gnode_times_emission,
-    .ambient = gnode_times_ambient,
-    .absorption = gnode_child_absorption,
-    .normal = gnode_child_normal,
-    .diffuse = gnode_times_diffuse,
-    .opaque = gnode_child_opaque,
-    .sample = gnode_times_sample,
-    .pdf = gnode_child_pdf,
-    .is_delta = gnode_child_is_delta,
+    GNODE_TIMES_METHODS,
 };
 
 int gtexparam_scaled_material(GMaterial *child, GTexColor *p, GMaterial **out, GError *err)

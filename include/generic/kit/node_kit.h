@@ -317,6 +317,15 @@ GENERIC_API int gnode_times_diffuse(const GMaterial *self, GSurfPoint *sp, GColo
 /** The sample method of a GNodeTimes node: the child's direction and density, its weight times the factor. */
 GENERIC_API int gnode_times_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const GColor *rel_index,
                                    double u1, double u2, GMaterialSample *s, GColor *weight);
+/** The method slots of a GNodeTimes node's class, for its GMaterialClass initialiser (after abi_version, name,
+ * description and destroy): the colour methods multiply, the geometric ones are the child's. */
+#define GNODE_TIMES_METHODS                                                                                            \
+    .reflection = gnode_times_reflection, .refraction = gnode_times_refraction,                                       \
+    .refraction_index = gnode_child_refraction_index, .reflection_dir = gnode_child_reflection_dir,                    \
+    .refraction_dir = gnode_child_refraction_dir, .emission = gnode_times_emission, .ambient = gnode_times_ambient,    \
+    .absorption = gnode_child_absorption, .normal = gnode_child_normal, .diffuse = gnode_times_diffuse,                \
+    .opaque = gnode_child_opaque, .sample = gnode_times_sample, .pdf = gnode_child_pdf,                                \
+    .is_delta = gnode_child_is_delta
 
 /* ---- nodes over a list of children ---- */
 
