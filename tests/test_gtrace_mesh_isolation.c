@@ -98,7 +98,7 @@ static Object *load_mode(const char *path, const char *mode)
     return o;
 }
 
-/* No child process is left: every reader was reaped. */
+/* No child process is left: every reader is reaped. */
 static void assert_no_child(void)
 {
     int status;

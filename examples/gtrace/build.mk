@@ -171,3 +171,7 @@ install-mesh-reader: $(GTRACE_MESH_READER)
 uninstall: uninstall-mesh-reader
 uninstall-mesh-reader:
 	rm -f $(INST)/lib/generic/gtrace-mesh
+# bench/bench_mesh_decode.c reads meshes with the tracer's library (bench/build.mk links libgeneric alone)
+$(BUILD)/obj/bench/bench_mesh_decode.o: CPPFLAGS += -Iexamples/gtrace
+$(BUILD)/bench/bench_mesh_decode: $(GTRACE_LIB) | $(GTRACE_MESH_READER)
+$(BUILD)/bench/bench_mesh_decode: DEPLIBS := $(GTRACE_LIB) $(LIBA) $(GTRACE_DEPLIBS) $(DEPLIBS)

@@ -233,10 +233,10 @@ static int reported(const MeshMessage *m, const char *text, GError *err)
     return code;
 }
 
-static int finite_doubles(const double *a, size_t n, double bound)
+static int finite_positions(const double *a, size_t n)
 {
     for (size_t i = 0; i < n; i++)
-        if (!(a[i] >= -bound && a[i] <= bound))
+        if (!(a[i] >= -1e30 && a[i] <= 1e30))
             return 0;
     return 1;
 }
@@ -290,9 +290,10 @@ static int receive_mesh(Reader *R, const MeshMessage *h, Mesh **out, GError *err
         mesh_free(m);
         return finish(R, 0, G_OK, err);
     }
-    int ok = finite_doubles(m->pos, nv * 3, 1e30) && finite_doubles(m->normal, nn * 3, 1e300) &&
-             finite_doubles(m->uv, nu * 2, 1e300) && indices_in(m->tri_uv, nt * 3, -1, (int)nu) && indices_in(m->tri_normal, nt * 3, -1, (int)nn) &&
-             indices_in(m->tri_surface, nt, 0, INT_MAX);
+    /* what mesh_load_assimp guarantees in this process: finite positions, indices within their arrays (normals
+     * and (u,v) are taken as assimp gives them, as there) */
+    int ok = finite_positions(m->pos, nv * 3) && indices_in(m->tri_uv, nt * 3, -1, (int)nu) &&
+             indices_in(m->tri_normal, nt * 3, -1, (int)nn) && indices_in(m->tri_surface, nt, 0, INT_MAX);
     for (size_t i = 0; ok && i < nt * 3; i++)
         ok = m->tri[i] < (unsigned)nv;
     if (!ok) {

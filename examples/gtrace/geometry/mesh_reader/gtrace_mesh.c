@@ -90,8 +90,8 @@ static int send_mesh(const Mesh *m)
 
 static int send_error(const GError *err)
 {
-    MeshMessage r = {.magic = MESH_PROTOCOL_MAGIC, .kind = MESH_MSG_RESULT, .status = err->code < 0 ? err->code : G_ERR_IO,
-                     .line = err->line, .col = err->col};
+    MeshMessage r = {.magic = MESH_PROTOCOL_MAGIC, .kind = MESH_MSG_RESULT, .line = err->line, .col = err->col};
+    r.status = err->code < 0 ? err->code : G_ERR_IO;
     size_t len = strnlen(err->message, sizeof err->message);
     r.text_length = (uint32_t)(len < MESH_TEXT_MAX ? len : MESH_TEXT_MAX);
     memcpy(r.param, err->param, sizeof r.param);
