@@ -170,18 +170,43 @@ static int send_exact(int fd, const void *buf, size_t n)
     return 0;
 }
 
-/* Ends the reader (kill: it may still run) and reaps it. When why_err is given and the reader gave no answer,
- * says how it ended in it. Returns rc, or G_ERR_IO when it sets why_err. */
+/* Waits for the reader to end, until its deadline; then kills it (R->late). */
+static void reap(Reader *R, int *status)
+{
+    long pause_ns = 20000;
+    for (;;) {
+        pid_t w = waitpid(R->pid, status, WNOHANG);
+        if (w == R->pid || (w < 0 && errno != EINTR))
+            return;
+        if (w == 0 && ms_left(&R->deadline) <= 0) {
+            R->late = 1;
+            break;
+        }
+        struct timespec pause = {0, pause_ns};
+        nanosleep(&pause, NULL);
+        pause_ns = pause_ns < 10000000 ? 2 * pause_ns : pause_ns;
+    }
+    kill(R->pid, SIGKILL);
+    while (waitpid(R->pid, status, 0) < 0 && errno == EINTR)
+        ;
+}
+
+/* Ends the reader and reaps it: killed when kill_it (it answered, or must stop), else waited for until its
+ * deadline. When why_err is given (the reader gave no answer), says how it ended in it. Returns rc, or G_ERR_IO
+ * when it sets why_err. */
 static int finish(Reader *R, int kill_it, int rc, GError *why_err)
 {
     if (R->sock >= 0)
         close(R->sock);
     R->sock = -1;
-    if (kill_it || R->late)
-        kill(R->pid, SIGKILL);
     int status = 0;
-    while (waitpid(R->pid, &status, 0) < 0 && errno == EINTR)
-        ;
+    if (kill_it || R->late) {
+        kill(R->pid, SIGKILL);
+        while (waitpid(R->pid, &status, 0) < 0 && errno == EINTR)
+            ;
+    } else {
+        reap(R, &status);
+    }
     if (!why_err)
         return rc;
     const char *path = R->path;
@@ -301,7 +326,7 @@ static int receive_mesh(Reader *R, const MeshMessage *h, Mesh **out, GError *err
         return broken(R, err);
     }
     *out = m;
-    return finish(R, 0, G_OK, NULL);
+    return finish(R, 1, G_OK, NULL); /* it answered: whatever it does after is of no use */
 }
 
 /* Serves the reader's questions until its RESULT, and takes the result. */
@@ -335,7 +360,7 @@ static int converse(Reader *R, const MeshFiles *files, Mesh **out, GError *err)
             }
             continue;
         }
-        rc = m.status == G_OK ? receive_mesh(R, &m, out, err) : finish(R, 0, reported(&m, text, err), NULL);
+        rc = m.status == G_OK ? receive_mesh(R, &m, out, err) : finish(R, 1, reported(&m, text, err), NULL);
         break;
     }
     gmem_free(text);
