@@ -59,6 +59,10 @@ int mesh_assimp_reads_extension(const char *ext);
  * than MESH_MAX_COUNT vertices or triangles are refused before they are copied. Errors name the file. */
 int mesh_load_assimp(Object *o, const char *path, int fd, MeshFormat format, const MeshFiles *files, GError *err);
 
+/** The checks mesh_load_assimp makes before assimp reads a byte (mesh_ply_check, mesh_stl_check, mesh_gltf_check
+ * on the file read whole, charged to the memory budget while it is held), alone: G_OK, or their refusal. fd stays
+ * open. */
+int mesh_assimp_check(const char *path, int fd, MeshFormat format, const MeshFiles *files, GError *err);
 /** 1 when PLY, STL and glTF files are read in the mesh reader process (GENERIC_DECODE unset, empty or "isolated"),
  * 0 when in this one (GENERIC_DECODE=inprocess), or G_ERR_INVALID for another value (the message names the variable
  * and its values). */

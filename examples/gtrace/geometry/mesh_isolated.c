@@ -11,6 +11,9 @@
  * is allocated, and every index and position is checked again. A reader that does not answer within
  * MESH_READER_WALL_FACTOR times its CPU time (asleep, blocked) is killed; every reader is reaped.
  *
+ * The file's content checks (mesh_assimp_check) run here first, so that a file they refuse starts no reader; the
+ * reader runs them again on its own reading of the file, before assimp.
+ *
  * The reader is found as $GTRACE_MESH_READER (a path; then nowhere else), else in DIR/, DIR/generic/ and
  * DIR/../lib/generic/ for the object holding this code (gtrace, libgtrace.so) and for the program, else in the
  * installed GTRACE_MESH_LIBDIR/generic/. GENERIC_DECODE=inprocess reads in this process (trusted files). */
@@ -392,6 +395,11 @@ int mesh_load_isolated(Object *o, const char *path, int fd, MeshFormat format, c
         close(fd);
         return gerror_set(err, G_ERR_IO, "%s: cannot read: %s", path, strerror(errno));
     }
+    int rc = mesh_assimp_check(path, fd, format, files, err); /* a file the checks refuse starts no reader */
+    if (rc != G_OK) {
+        close(fd);
+        return rc;
+    }
     pthread_once(&find_once, find);
     if (!reader[0]) {
         close(fd);
@@ -435,7 +443,7 @@ int mesh_load_isolated(Object *o, const char *path, int fd, MeshFormat format, c
     posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
     posix_spawn_file_actions_adddup2(&fa, fd, MESH_READER_FD);
     posix_spawn_file_actions_addclosefrom_np(&fa, MESH_READER_FD + 1); /* none of this process's other files */
-    int rc = posix_spawn(&R.pid, reader, &fa, NULL, argv, environ);
+    rc = posix_spawn(&R.pid, reader, &fa, NULL, argv, environ);
     posix_spawn_file_actions_destroy(&fa);
     close(sv[1]);
     close(fd);
