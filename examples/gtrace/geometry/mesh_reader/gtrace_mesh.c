@@ -141,5 +141,7 @@ int main(int argc, char **argv)
     int rc = mesh_load_assimp(&o, path, MESH_READER_FD, (MeshFormat)format, asks ? &files : NULL, &err);
     if (rc != G_OK)
         return send_error(&err) != 0;
-    return send_mesh(o.mesh) != 0;
+    rc = send_mesh(o.mesh);
+    mesh_free(o.mesh);
+    return rc != 0;
 }
