@@ -151,3 +151,27 @@ media-cloud: $(BUILD)/bin/gtrace $(GTRACE_VDB_READER)
 	$(BUILD)/bin/gtrace $(BUILD)/media/media_cloud.scene --integrator path -o $(BUILD)/media/media_cloud.png
 bench-media: $(BUILD)/bin/gtrace $(GTRACE_VDB_READER)
 	@bench/media.sh $(BUILD)
+
+# The mesh reader (examples/gtrace/geometry/mesh_reader/, geometry/mesh_isolated.c): a program of its own that gtrace
+# starts for each PLY, STL or glTF file, so that assimp runs under limits outside gtrace. Built beside the image
+# decoder (BUILD/lib/generic/) and installed beside it; found from gtrace, libgtrace.so and the test programs.
+GTRACE_MESH_READER := $(BUILD)/lib/generic/gtrace-mesh
+GTRACE_MESH_ISOLATED_OBJ := $(call objs_of,examples/gtrace/geometry/mesh_isolated.o)
+$(GTRACE_MESH_ISOLATED_OBJ): CPPFLAGS += -DGTRACE_MESH_LIBDIR='"$(PREFIX)/lib"'
+all: $(GTRACE_MESH_READER)
+$(GTRACE_TEST_BIN) $(BUILD)/bin/gtrace $(GTRACE_SO): | $(GTRACE_MESH_READER)
+$(GTRACE_MESH_READER): $(BUILD)/obj/examples/gtrace/geometry/mesh_reader/gtrace_mesh.o $(GTRACE_LIB) $(LIBA)
+	@mkdir -p $(dir $@)
+	$(CC) -o $@ $(filter %.o,$^) $(GTRACE_LIB) $(LIBA) $(LDFLAGS) -Wl,--as-needed $(GTRACE_DEPLIBS) $(DEPLIBS)
+.PHONY: install-mesh-reader uninstall-mesh-reader
+install: install-mesh-reader
+install-mesh-reader: $(GTRACE_MESH_READER)
+	install -d $(INST)/lib/generic
+	install -m 755 $(GTRACE_MESH_READER) $(INST)/lib/generic/
+uninstall: uninstall-mesh-reader
+uninstall-mesh-reader:
+	rm -f $(INST)/lib/generic/gtrace-mesh
+# bench/bench_mesh_decode.c reads meshes with the tracer's library (bench/build.mk links libgeneric alone)
+$(BUILD)/obj/bench/bench_mesh_decode.o: CPPFLAGS += -Iexamples/gtrace
+$(BUILD)/bench/bench_mesh_decode: $(GTRACE_LIB) | $(GTRACE_MESH_READER)
+$(BUILD)/bench/bench_mesh_decode: DEPLIBS := $(GTRACE_LIB) $(LIBA) $(GTRACE_DEPLIBS) $(DEPLIBS)

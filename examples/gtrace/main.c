@@ -85,7 +85,8 @@ static void usage(FILE *f)
             "  --allow-plugins   let `plugin` statements of the scene load modules (a module runs native\n"
             "                    code: refused without this or GENERIC_ALLOW_PLUGINS=1)\n"
             "  --confine DIR     every file the scene reads (itself, includes, modules, meshes, images,\n"
-            "                    BFC files, probes) must lie under DIR once symbolic links are resolved\n"
+            "                    BFC files, probes) and the LUTs of the OpenColorIO config must lie under\n"
+            "                    DIR once symbolic links are resolved\n"
             "  --memory-limit SIZE  memory for what the scene's files size (images, probes, meshes,\n"
             "                    colours, framebuffer, ...): MiB, or with M, G, T (default 4096, or\n"
             "                    GENERIC_MEMORY_LIMIT_MB); a scene over it is refused before the allocation\n"
@@ -614,6 +615,7 @@ static int gtrace_main(int argc, char **argv)
     int a = parse_args(argc, argv, &o);
     if (a != 0)
         return a > 0 ? 0 : 2;
+    o.display.confine_dir = trust.confine_dir; /* the LUTs an OpenColorIO config names stay under --confine too */
     GError err;
     gerror_clear(&err);
     char note[GIMAGE_NOTE_MAX];

@@ -523,7 +523,8 @@ int display_pixels(const char *path, const GImage *img, double scale, const GIma
         p[i] = img->channels == 4 && i % 4 == 3 ? img->pixels[i] : (float)(img->pixels[i] * scale);
     GOiioOps ops;
     goiio_display_ops(&ops);
-    int rc = ops.display_transform(d->config, d->display, d->view, p, img->width, img->height, img->channels, err);
+    int rc = ops.display_transform(d->config, d->confine_dir, d->display, d->view, p, img->width, img->height,
+                                   img->channels, err);
     if (rc != G_OK) {
         gmem_free(p);
         return rc;

@@ -314,7 +314,7 @@ int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *
         char config[PATH_MAX + 64];
         if ((rc0 = gimage_display_check(shown, config, sizeof config, err)) != G_OK)
             return rc0;
-        GImageDisplay resolved = {config, shown->display, shown->view};
+        GImageDisplay resolved = {config, shown->display, shown->view, shown->confine_dir};
         GImageWriteOptions o2 = *opt;
         o2.display = &resolved;
         const GOiioOps *o = goiio_ops(err);

@@ -19,7 +19,7 @@ extern "C" {
 #endif
 
 /** Raised whenever either table changes; a module of another version is refused. */
-#define GOIIO_MODULE_ABI 5
+#define GOIIO_MODULE_ABI 6
 /** The module's file name and the one symbol it exports (a GOiioEntry). */
 #define GOIIO_MODULE_FILE "libgeneric_oiio.so"
 #define GOIIO_MODULE_ENTRY "generic_oiio_module"
@@ -58,10 +58,12 @@ typedef struct GOiioOps {
                          const double deriv[4], double blur, float rgb[3]);
     /** OpenColorIO (lib/image/ocio_display.cpp): applies the view of a display of the config file (NULL or "": the
      * config's defaults) to width x height pixels of 3 or 4 floats in place, from the config's scene_linear;
-     * pixels NULL only checks that the config reads and has the display and view. G_ERR_PARSE for a config that
-     * does not read, G_ERR_NOTFOUND for an unknown display or view (the message lists the config's names). */
-    int (*display_transform)(const char *config, const char *display, const char *view, float *pixels, int width,
-                             int height, int channels, GError *err);
+     * pixels NULL only checks that the config reads and has the display and view. The files the config names must
+     * be regular files, and lie under confine_dir when it is not NULL (GImageDisplay.confine_dir), as its search
+     * paths must: G_ERR_IO naming the file otherwise. G_ERR_PARSE for a config that does not read, G_ERR_NOTFOUND
+     * for an unknown display or view (the message lists the config's names). */
+    int (*display_transform)(const char *config, const char *confine_dir, const char *display, const char *view,
+                             float *pixels, int width, int height, int channels, GError *err);
     int (*image_window)(const char *path, GImageWindow *win, GError *err);
     int (*image_read_spectra)(const char *path, GImageSpectraBuf *out, GError *err);
 } GOiioOps;

@@ -1,6 +1,7 @@
 #!/bin/sh
 # Installs everything into a staging directory (DESTDIR, the default PREFIX /usr/local) and checks what a user gets:
-# - every installed tool answers --version and runs one real command;
+# - every installed tool answers --version and runs one real command; the installed gtrace reads a PLY through its
+#   installed mesh reader process (PREFIX/lib/generic/gtrace-mesh);
 # - an installed example plug-in loads by its bare name from the default directory PREFIX/lib/generic/plugins
 #   (the staged tree is bind-mounted over PREFIX in a private mount namespace; skipped, and said so, without
 #   unshare);
@@ -55,6 +56,11 @@ light background { color rgb 1 1 1 }
 object sphere { center <0, 0, 0> radius 1 material lambert { reflectance rgb 0.5 0.5 0.5 } }
 S
 "$bin/gtrace" one.scene -o one.png -q > out 2>&1 && [ -s one.png ] || fail "gtrace one.scene: $(cat out)"
+[ -x "$root/lib/generic/gtrace-mesh" ] || fail "the mesh reader is not installed in lib/generic/"
+printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n' > tri.ply
+printf 'element face 1\nproperty list uchar int vertex_indices\nend_header\n-1 -1 0\n1 -1 0\n0 1 0\n3 0 1 2\n' >> tri.ply
+sed 's|object sphere { center <0, 0, 0> radius 1|object mesh { file "tri.ply"|' one.scene > mesh.scene
+"$bin/gtrace" mesh.scene -o mesh.png -q > out 2>&1 && [ -s mesh.png ] || fail "gtrace mesh.scene (a PLY): $(cat out)"
 # the shipped OpenColorIO config, installed in share/generic/ocio/ and found from the installed tool
 [ -f "$root/share/generic/ocio/config.ocio" ] || fail "the OpenColorIO config is not installed in share/generic/ocio/"
 env -u OCIO "$bin/gtrace" one.scene -o view.png -q --view Nope > out 2>&1 && fail "gtrace --view Nope succeeded"

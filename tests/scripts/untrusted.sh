@@ -7,6 +7,8 @@
 #     names them); a file that is not a module is refused before its ELF constructor runs;
 #   - --confine DIR: every path form that leaves DIR (../, absolute, a symbolic link, a module found elsewhere)
 #     is refused at its name for includes, BFC files, images, meshes and plug-ins; paths inside DIR still work;
+#   - gtrace's mesh reader process: one that crashes on a file (GENERIC_DECODE_FAULT=by-name) is a refusal of that
+#     file at its entry, naming how the reader ended;
 #   - messages: control characters of a file name are escaped, and nothing of a file that does not begin with
 #     a statement (or of a BFC file before its grid line) is quoted.
 SRC=$(cd "$(dirname "$0")/../.." && pwd)
@@ -159,6 +161,17 @@ EOM
 expect 1 "gtrace --confine: a mesh outside" "$GTRACE" box/mesh.scene -o "$TMP/mesh.png" -q --confine box
 has "gtrace --confine: a mesh outside" "$TMP/err" "is outside the directory the load is confined to"
 expect 0 "gtrace without --confine: the same mesh" "$GTRACE" box/mesh.scene -o "$TMP/mesh.png" -q
+# gtrace: a PLY whose reader process crashes
+{
+    printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n'
+    printf 'element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n'
+} > box/fault-crash.ply
+sed 's|"../outside/tri.obj"|"fault-crash.ply"|' box/mesh.scene > box/crash.scene
+GENERIC_DECODE_FAULT=by-name expect 1 "gtrace: a mesh reader that crashes" "$GTRACE" box/crash.scene -o "$TMP/c.png" \
+    -q
+has "a mesh reader that crashes" "$TMP/err" \
+    "box/crash.scene:2:15: box/fault-crash.ply: cannot read mesh: its reader gtrace-mesh crashed (Segmentation fault)"
+expect 0 "gtrace: the same mesh, its reader sound" "$GTRACE" box/crash.scene -o "$TMP/c.png" -q
 
 # ---- messages quote nothing raw ----
 esc=$(printf 'x\033[31mred')

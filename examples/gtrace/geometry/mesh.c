@@ -257,8 +257,15 @@ static int mesh_load(Object *o, const char *path, const MeshFiles *files, GError
         return gerror_set(err, G_ERR_UNSUPPORTED, "%s: %s, not a mesh format gtrace reads (it reads "
                           MESH_FORMATS_READ ")", path, what);
     }
-    if (format != MESH_FORMAT_OBJ)
-        return mesh_load_assimp(o, path, fd, format, files, err);
+    if (format != MESH_FORMAT_OBJ) {
+        int isolated = mesh_decode_isolated(err);
+        if (isolated < 0) {
+            close(fd);
+            return isolated;
+        }
+        return isolated ? mesh_load_isolated(o, path, fd, format, files, err)
+                        : mesh_load_assimp(o, path, fd, format, files, err);
+    }
     FILE *f = fdopen(fd, "r");
     if (!f) {
         close(fd);

@@ -254,6 +254,35 @@ static int import_gltf(const char *path, int fd, unsigned flags, const MeshFiles
     return rc;
 }
 
+int mesh_assimp_check(const char *path, int fd, MeshFormat format, const MeshFiles *files, GError *err)
+{
+    if (format == MESH_FORMAT_GLTF) {
+        unsigned char magic[4] = {0};
+        off_t n = lseek(fd, 0, SEEK_END);
+        int glb = pread(fd, magic, 4, 0) == 4 && memcmp(magic, "glTF", 4) == 0;
+        if (n >= 0 && !glb && (unsigned long long)n > JSON_MAX_BYTES)
+            return gerror_set(err, G_ERR_PARSE, "%s: a glTF file of JSON of %lld bytes, more than the limit of %u",
+                              path, (long long)n, JSON_MAX_BYTES);
+    }
+    char *buf = NULL, *header = NULL;
+    size_t size = 0, reserved = 0, hlen = 0, body = 0, body_len = 0;
+    int rc = read_whole(path, fd, &buf, &size, &reserved, err);
+    if (rc != G_OK)
+        return rc;
+    char *data = buf + MESH_HEADROOM;
+    MeshGltfCounts counts;
+    if (format == MESH_FORMAT_PLY)
+        rc = mesh_ply_check(path, data, size, &header, &hlen, &body, &body_len, err);
+    else if (format == MESH_FORMAT_STL)
+        rc = mesh_stl_check(path, data, size, err);
+    else
+        rc = mesh_gltf_check(path, (const unsigned char *)data, size, files, &counts, err);
+    gmem_free(header);
+    gmem_free(buf);
+    gmem_budget_release(reserved);
+    return rc;
+}
+
 int mesh_load_assimp(Object *o, const char *path, int fd, MeshFormat format, const MeshFiles *files, GError *err)
 {
     unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_ValidateDataStructure;

@@ -59,6 +59,22 @@ int mesh_assimp_reads_extension(const char *ext);
  * than MESH_MAX_COUNT vertices or triangles are refused before they are copied. Errors name the file. */
 int mesh_load_assimp(Object *o, const char *path, int fd, MeshFormat format, const MeshFiles *files, GError *err);
 
+/** The checks mesh_load_assimp makes before assimp reads a byte (mesh_ply_check, mesh_stl_check, mesh_gltf_check
+ * on the file read whole, charged to the memory budget while it is held), alone: G_OK, or their refusal. fd stays
+ * open. */
+int mesh_assimp_check(const char *path, int fd, MeshFormat format, const MeshFiles *files, GError *err);
+/** 1 when PLY, STL and glTF files are read in the mesh reader process (GENERIC_DECODE unset, empty or "isolated"),
+ * 0 when in this one (GENERIC_DECODE=inprocess), or G_ERR_INVALID for another value (the message names the variable
+ * and its values). */
+int mesh_decode_isolated(GError *err);
+/** mesh_load_assimp in the reader process gtrace-mesh (mesh_isolated.c, mesh_protocol.h), under limits of address
+ * space and CPU time, after mesh_assimp_check in this process: the same mesh, the same errors, and fd closed; the other files a glTF file names are allowed
+ * by files here, in this process, before the reader opens them. The mesh's counts are bounded and its arrays
+ * reserved against the memory budget before they are allocated, and its indices and positions checked. A reader
+ * that crashes, runs out of its limits, gives no answer in time or breaks the protocol is G_ERR_IO naming the file
+ * and how it ended; the reader is always reaped. */
+int mesh_load_isolated(Object *o, const char *path, int fd, MeshFormat format, const MeshFiles *files, GError *err);
+
 /** What a checked glTF file places: the nodes its node tree expands to, and the vertices and triangles of the meshes
  * summed over those placements (what the mesh baked from it holds, at most). */
 typedef struct MeshGltfCounts {

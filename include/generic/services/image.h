@@ -96,6 +96,10 @@ typedef struct GImageDisplay {
     const char *config;  /**< path of an OCIO config; NULL: $OCIO, else the shipped one */
     const char *display; /**< NULL: the config's default display */
     const char *view;    /**< NULL: the display's default view */
+    /** NULL: the files the config names may lie anywhere. Else (gtrace's --confine DIR) every file it names (the LUTs
+     * of its transforms) and every search path of it must lie under this folder once symbolic links are resolved;
+     * the config file itself is the caller's choice (--ocio-config, $OCIO, the shipped one) and is not confined. */
+    const char *confine_dir;
 } GImageDisplay;
 
 /** Options for gimage_write; NULL or a zeroed struct means exposure 0. */

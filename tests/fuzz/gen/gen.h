@@ -10,7 +10,8 @@
  *   gen_image.c  PNG, HDR, PFM, EXR and PPM files whose headers claim huge sizes over truncated bodies, and
  *                mutated IFF and DPX headers named .png, .hdr or .pfm
  *                (and, for the probe kind, HDR and PFM only, with probe-like aspect ratios)
- *   gen_mesh.c   glTF nested deeply (JSON, nodes), node DAGs, lying accessors and .glb chunks, renamed PLY
+ *   gen_mesh.c   glTF nested deeply (JSON, nodes), node DAGs, lying accessors and .glb chunks, renamed PLY,
+ *                mesh reader processes that crash or spin
  *                (gtrace's meshes: tests/fuzz/run_mesh_generated.sh)
  *   gen_ies.c    IES LM-63 files: lying counts, truncation, NaN and words, bad angle tables, long headers
  *   gen_medium.c gtrace's medium and phase entries: bounds crossed, references, long chains */

@@ -3,7 +3,10 @@
  * placements, whose accessors claim more elements than their views hold; .glb files whose header and chunk lengths
  * lie; PLY content under a glTF name, truncated or claiming huge counts. Every input is wrong by construction
  * (refused), except that a DAG or chain within the bounds may load: they carry no GEN_MUST_FAIL mark (JSON has no
- * comments; the harness refuses or loads, never crashes, hangs or exceeds its memory). */
+ * comments; the harness refuses or loads, never crashes, hangs or exceeds its memory). The fault-* families are a
+ * legal PLY whose name makes gtrace's mesh reader process crash or spin (GENERIC_DECODE_FAULT=by-name, set by
+ * run_mesh_generated.sh): gtrace must refuse the file, naming how its reader ended (a reader that grows to its
+ * address space limit is tests/test_gtrace_mesh_isolation.c's: it touches a GiB and more). */
 #include "gen.h"
 
 #include <stdint.h>
@@ -128,9 +131,18 @@ static void ply_renamed(GenBuf *b, GenRng *r, size_t budget)
     free(h.p);
 }
 
+/* A legal PLY triangle: the family's name (fault-crash, ...) is what fails, in the reader process. */
+static void reader_fault(GenBuf *b, GenRng *r, size_t budget)
+{
+    (void)r, (void)budget;
+    gb_printf(b, "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                 "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+}
+
 const GenFamily gen_mesh_families[] = {
     {"gltf-nested-json", ".gltf", gltf_nested_json}, {"gltf-node-chain", ".gltf", gltf_node_chain},
     {"gltf-dag", ".gltf", gltf_dag},                 {"gltf-accessor-lie", ".gltf", gltf_accessor_lie},
     {"glb-chunk-lie", ".glb", glb_chunk_lie},        {"ply-renamed", ".gltf", ply_renamed},
+    {"fault-crash", ".ply", reader_fault},           {"fault-spin", ".ply", reader_fault},
 };
 const int gen_mesh_count = (int)(sizeof gen_mesh_families / sizeof gen_mesh_families[0]);
