@@ -428,9 +428,9 @@ void renderer_stats(const Renderer *r, RenderStats *st)
 int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, RenderStats *st, GError *err)
 {
     if (rs->integrator == RENDER_SPPM)
-        return sppm_render(s, rs, fb, st, err);
+        return sppm_render(s, rs, fb, st, NULL, err);
     if (rs->integrator == RENDER_LIGHT)
-        return light_render(s, rs, fb, st, err);
+        return light_render(s, rs, fb, st, NULL, err);
     memset(st, 0, sizeof *st);
     Renderer *r;
     int rc = renderer_create(&r, s, rs, fb, err);
