@@ -7,19 +7,21 @@
 # conserve_energy, the photons shot at it by refraction and reflection), W x H (default 97x73: the axis through a
 # pixel's centre, where POV-Ray's single ray per pixel samples the focus), 1 thread each.
 #
-# 1. Convergence: gtrace with PASSES (default 2 4 8 16 32 64) passes of PHOTONS (default 100000) photons, and
-#    POV-Ray with POV_COUNTS photons (default 25000 .. 800000), interleaved (gtrace, POV-Ray, at each effort in
+# 1. Convergence: gtrace with PASSES (default 2 4 .. 256) passes of PHOTONS (default 100000) photons, and
+#    POV-Ray with POV_COUNTS photons (default 25000 .. 3200000), interleaved (gtrace, POV-Ray, at each effort in
 #    turn) for RUNS rounds (default 3). Time is the process's CPU time (user + sys, GNU time; POV-Ray's photon
 #    threads included), the median over the rounds, and net of start-up: minus the median CPU time of a run that
 #    sends (almost) no photons (gtrace: 1 pass of 1 photon; POV-Ray: 1000 photons). POV-Ray gathers every photon within a radius 0.03 (COUNT / 100000)^(-1/6) (its
 #    default, a gather of at most 100 photons, leaves speckles whose error does not fall with the count; a cap
 #    below the photons the focus holds would flatten the caustic's peak). Each image's error is its RMSE (gprobe compare: linear
 #    radiance over pixels and channels) against a long render by the same program (gtrace REF_PASSES passes,
-#    default 512, on 2 threads; POV-Ray POV_REF photons, default 3200000), so each is measured against what it
-#    converges to; the RMSE between the two long renders (what the twins still differ by) is printed. gtrace's
-#    long render shares the short runs' first passes (a correlation of weight passes / REF_PASSES, at most
-#    1/8). The exponent of each program is the least-squares slope of log RMSE over log CPU time (SPPM with
-#    alpha 2/3 promises -1/3 at best in the limit: its bias and its noise both fall as n^(-1/3)), over the whole
+#    default 2048, on 2 threads; POV-Ray POV_REF photons, default 12800000), so each is measured against what it
+#    converges to; the RMSE between the two long renders (what the twins still differ by) is printed, and that of
+#    gtrace's long render against LIGHT_PASSES (default 200) passes of `--integrator light` (unbiased on the floor:
+#    what SPPM's radius still blurs at the focus). gtrace's long render shares the short runs' first passes (a
+#    correlation of weight passes / REF_PASSES, at most 1/8). The exponent of each program is the least-squares
+#    slope of log RMSE over log CPU time (SPPM with alpha 2/3 promises -1/3 at best in the limit: its bias and its
+#    noise both fall as n^(-1/3)), over the whole
 #    image and over two regions of the caustic (gprobe compare --mask; boxes placed from the long gtrace render's
 #    brightest pixel, scaled by W / 97): the focus peak (the 3x3 pixels around it) and the smooth halo below it
 #    (17x5 pixels from 3 to 7 pixels below the peak, radiance 0.04 to 0.35 against the peak's 15 and the lit
@@ -39,7 +41,7 @@ W=${W:-97} H=${H:-73} RUNS=${RUNS:-3}
 PHOTONS=${PHOTONS:-100000}
 PASSES=${PASSES:-"2 4 8 16 32 64 128 256"}
 POV_COUNTS=${POV_COUNTS:-"25000 50000 100000 200000 400000 800000 1600000 3200000"}
-REF_PASSES=${REF_PASSES:-2048} POV_REF=${POV_REF:-12800000}
+REF_PASSES=${REF_PASSES:-2048} POV_REF=${POV_REF:-12800000} LIGHT_PASSES=${LIGHT_PASSES:-200}
 TARGET=${TARGET:-0.05}
 [ -x "$GT" ] || { echo "bench-caustics: $GT is not built"; exit 1; }
 [ -x "$GP" ] || { echo "bench-caustics: $GP is not built"; exit 1; }
@@ -111,6 +113,12 @@ set -- $boxes
 oiiotool --create "${W}x${H}" 3 --box:color=1,1,1:fill=1 "$1" -o "$TMP/peak_mask.exr"
 oiiotool --create "${W}x${H}" 3 --box:color=1,1,1:fill=1 "$2" -o "$TMP/halo_mask.exr"
 echo "focus peak at pixel $peak: peak box $1, halo box $2 (x0,y0,x1,y1 inclusive)"
+# SPPM's long render is biased (its radius still blurs the focus): against particle tracing to the camera, which is
+# unbiased for the floor's caustic (the ball's own pixels differ: `light` does not draw what is seen through glass)
+"$GT" "$TMP/ball.scene" -o "$TMP/light_ref.exr" --integrator light --passes "$LIGHT_PASSES" --photons "$PHOTONS" \
+    --threads 2 --width "$W" --height "$H" -q > /dev/null 2>&1 &&
+    echo "gtrace's long render against $LIGHT_PASSES x $PHOTONS photons of --integrator light (unbiased): RMSE" \
+        "(whole, peak, halo) $(rmse "$TMP/gt_ref.exr" "$TMP/light_ref.exr")"
 [ -n "$POV" ] && echo "the two long renders differ by RMSE (whole, peak, halo)" \
     "$(rmse "$TMP/gt_ref.exr" "$TMP/pov_ref.exr") (the twins' mismatch)"
 
