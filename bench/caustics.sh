@@ -7,19 +7,26 @@
 # conserve_energy, the photons shot at it by refraction and reflection), W x H (default 97x73: the axis through a
 # pixel's centre, where POV-Ray's single ray per pixel samples the focus), 1 thread each.
 #
-# 1. Convergence: gtrace with PASSES (default 2 4 8 16 32 64) passes of PHOTONS (default 100000) photons, and
-#    POV-Ray with POV_COUNTS photons (default 25000 .. 800000), interleaved (gtrace, POV-Ray, at each effort in
+# 1. Convergence: gtrace with PASSES (default 2 4 .. 256) passes of PHOTONS (default 100000) photons, and
+#    POV-Ray with POV_COUNTS photons (default 25000 .. 3200000), interleaved (gtrace, POV-Ray, at each effort in
 #    turn) for RUNS rounds (default 3). Time is the process's CPU time (user + sys, GNU time; POV-Ray's photon
 #    threads included), the median over the rounds, and net of start-up: minus the median CPU time of a run that
 #    sends (almost) no photons (gtrace: 1 pass of 1 photon; POV-Ray: 1000 photons). POV-Ray gathers every photon within a radius 0.03 (COUNT / 100000)^(-1/6) (its
 #    default, a gather of at most 100 photons, leaves speckles whose error does not fall with the count; a cap
 #    below the photons the focus holds would flatten the caustic's peak). Each image's error is its RMSE (gprobe compare: linear
 #    radiance over pixels and channels) against a long render by the same program (gtrace REF_PASSES passes,
-#    default 512, on 2 threads; POV-Ray POV_REF photons, default 3200000), so each is measured against what it
-#    converges to; the RMSE between the two long renders (what the twins still differ by) is printed. gtrace's
-#    long render shares the short runs' first passes (a correlation of weight passes / REF_PASSES, at most
-#    1/8). The exponent of each program is the least-squares slope of log RMSE over log CPU time (SPPM with
-#    alpha 2/3 promises -1/3 at best in the limit: its bias and its noise both fall as n^(-1/3)).
+#    default 2048, on 2 threads; POV-Ray POV_REF photons, default 12800000), so each is measured against what it
+#    converges to; the RMSE between the two long renders (what the twins still differ by) is printed, and that of
+#    gtrace's long render against LIGHT_PASSES (default 200) passes of `--integrator light` (unbiased on the floor:
+#    what SPPM's radius still blurs at the focus). gtrace's long render shares the short runs' first passes (a
+#    correlation of weight passes / REF_PASSES, at most 1/8). The exponent of each program is the least-squares
+#    slope of log RMSE over log CPU time (SPPM with alpha 2/3 promises -1/3 at best in the limit: its bias and its
+#    noise both fall as n^(-1/3)), over the whole
+#    image and over two regions of the caustic (gprobe compare --mask; boxes placed from the long gtrace render's
+#    brightest pixel, scaled by W / 97): the focus peak (the 3x3 pixels around it) and the smooth halo below it
+#    (17x5 pixels from 3 to 7 pixels below the peak, radiance 0.04 to 0.35 against the peak's 15 and the lit
+#    floor's 0.27). Each fit is printed with its first and last halves apart (the slope of the smaller and of
+#    the larger efforts), to show whether the rate is still changing.
 # 2. Time to a given RMSE: TARGET (default 0.05) on each program's curve (log-log interpolation between the
 #    two efforts that bracket it), and their ratio.
 # 3. Photons per second per core in every colour model: gtrace at 32x24 (the camera's part negligible) with 2
@@ -32,13 +39,14 @@ GT="$BUILD/bin/gtrace"
 GP="$BUILD/bin/gprobe"
 W=${W:-97} H=${H:-73} RUNS=${RUNS:-3}
 PHOTONS=${PHOTONS:-100000}
-PASSES=${PASSES:-"2 4 8 16 32 64"}
-POV_COUNTS=${POV_COUNTS:-"25000 50000 100000 200000 400000 800000"}
-REF_PASSES=${REF_PASSES:-512} POV_REF=${POV_REF:-3200000}
+PASSES=${PASSES:-"2 4 8 16 32 64 128 256"}
+POV_COUNTS=${POV_COUNTS:-"25000 50000 100000 200000 400000 800000 1600000 3200000"}
+REF_PASSES=${REF_PASSES:-2048} POV_REF=${POV_REF:-12800000} LIGHT_PASSES=${LIGHT_PASSES:-200}
 TARGET=${TARGET:-0.05}
 [ -x "$GT" ] || { echo "bench-caustics: $GT is not built"; exit 1; }
 [ -x "$GP" ] || { echo "bench-caustics: $GP is not built"; exit 1; }
 [ -x /usr/bin/time ] || { echo "bench-caustics: needs GNU time (/usr/bin/time, Debian package time)"; exit 1; }
+command -v oiiotool > /dev/null || { echo "bench-caustics: needs oiiotool (openimageio-tools)"; exit 1; }
 POV=$(command -v povray)
 [ -n "$POV" ] || echo "bench-caustics: povray is not installed (scripts/deps.sh): gtrace's side only"
 TMP=$(mktemp -d)
@@ -80,7 +88,13 @@ pov() {
     ( cd "$TMP" && /usr/bin/time -f '%U %S' -o "$TMP/cpu" "$POV" +Iball.pov +O"$3" +FE +W"$W" +H"$H" -A -D -V -GA \
         +WT"$2" Declare=COUNT="$1" Declare=RADIUS="$g" > /dev/null 2>&1 ) && cpu
 }
-rmse() { "$GP" compare "$1" "$2" | awk '$1 == "whole" { print $5 }'; }
+# rmse IMAGE REFERENCE: the RMSE over the whole image, the focus peak and the smooth halo (three numbers)
+rmse() {
+    rw=$("$GP" compare "$1" "$2" | awk '$1 == "whole" { print $5 }')
+    rp=$("$GP" compare "$1" "$2" --mask "$TMP/peak_mask.exr" | awk '$1 == "shadow" { print $5 }')
+    rh=$("$GP" compare "$1" "$2" --mask "$TMP/halo_mask.exr" | awk '$1 == "shadow" { print $5 }')
+    echo "$rw $rp $rh"
+}
 median() { sort -n | awk '{ a[NR] = $1 } END { print (NR % 2) ? a[(NR + 1) / 2] : (a[NR / 2] + a[NR / 2 + 1]) / 2 }'; }
 
 echo "glass ball caustic ${W}x${H}, 1 thread; long renders: gtrace $REF_PASSES x $PHOTONS photons, POV-Ray $POV_REF photons"
@@ -88,14 +102,32 @@ gt "$REF_PASSES" "$PHOTONS" 2 "$TMP/gt_ref.exr" > /dev/null || { echo "bench-cau
 if [ -n "$POV" ]; then
     pov "$POV_REF" 2 pov_ref.exr > /dev/null || { echo "bench-caustics: povray failed"; POV=; }
 fi
-[ -n "$POV" ] && echo "the two long renders differ by RMSE $(rmse "$TMP/gt_ref.exr" "$TMP/pov_ref.exr") (the twins' mismatch)"
+# the regions, from the brightest pixel of gtrace's long render
+peak=$(oiiotool --dumpdata "$TMP/gt_ref.exr" |
+    awk '/Pixel/ { gsub(/[(),:]/, " "); if ($4 > m) { m = $4; x = $2; y = $3 } } END { print x, y }')
+set -- $peak
+boxes=$(awk -v x="$1" -v y="$2" -v s="$W" 'BEGIN { s /= 97; r = int(s + 0.5); r = r < 1 ? 1 : r
+    printf "%d,%d,%d,%d %d,%d,%d,%d", x - r, y - r, x + r, y + r,
+           x - int(8 * s + 0.5), y + int(3 * s + 0.5), x + int(8 * s + 0.5), y + int(7 * s + 0.5) }')
+set -- $boxes
+oiiotool --create "${W}x${H}" 3 --box:color=1,1,1:fill=1 "$1" -o "$TMP/peak_mask.exr"
+oiiotool --create "${W}x${H}" 3 --box:color=1,1,1:fill=1 "$2" -o "$TMP/halo_mask.exr"
+echo "focus peak at pixel $peak: peak box $1, halo box $2 (x0,y0,x1,y1 inclusive)"
+# SPPM's long render is biased (its radius still blurs the focus): against particle tracing to the camera, which is
+# unbiased for the floor's caustic (the ball's own pixels differ: `light` does not draw what is seen through glass)
+"$GT" "$TMP/ball.scene" -o "$TMP/light_ref.exr" --integrator light --passes "$LIGHT_PASSES" --photons "$PHOTONS" \
+    --threads 2 --width "$W" --height "$H" -q > /dev/null 2>&1 &&
+    echo "gtrace's long render against $LIGHT_PASSES x $PHOTONS photons of --integrator light (unbiased): RMSE" \
+        "(whole, peak, halo) $(rmse "$TMP/gt_ref.exr" "$TMP/light_ref.exr")"
+[ -n "$POV" ] && echo "the two long renders differ by RMSE (whole, peak, halo)" \
+    "$(rmse "$TMP/gt_ref.exr" "$TMP/pov_ref.exr") (the twins' mismatch)"
 
 : > "$TMP/runs"
 r=0
 while [ $r -lt "$RUNS" ]; do
     set -- $POV_COUNTS
-    t=$(gt 1 1 1 "$TMP/gt.exr") && echo "gtrace-base 0 $t 0" >> "$TMP/runs"
-    [ -n "$POV" ] && t=$(pov 1000 1 pov.exr) && echo "povray-base 0 $t 0" >> "$TMP/runs"
+    t=$(gt 1 1 1 "$TMP/gt.exr") && echo "gtrace-base 0 $t 0 0 0" >> "$TMP/runs"
+    [ -n "$POV" ] && t=$(pov 1000 1 pov.exr) && echo "povray-base 0 $t 0 0 0" >> "$TMP/runs"
     for p in $PASSES; do
         t=$(gt "$p" "$PHOTONS" 1 "$TMP/gt.exr") && echo "gtrace $p $t $(rmse "$TMP/gt.exr" "$TMP/gt_ref.exr")" >> "$TMP/runs"
         if [ -n "$POV" ] && [ $# -gt 0 ]; then
@@ -105,21 +137,50 @@ while [ $r -lt "$RUNS" ]; do
     done
     r=$((r + 1))
 done
-# the median CPU time and RMSE of each effort: PROGRAM EFFORT CPU RMSE, in increasing effort
+# the median CPU time and RMSEs of each effort: PROGRAM EFFORT CPU RMSE-WHOLE RMSE-PEAK RMSE-HALO, in increasing
+# effort
 summary() {
     for e in $(awk -v p="$1" '$1 == p { print $2 }' "$TMP/runs" | sort -n -u); do
-        t=$(awk -v p="$1" -v e="$e" '$1 == p && $2 == e { print $3 }' "$TMP/runs" | median)
-        x=$(awk -v p="$1" -v e="$e" '$1 == p && $2 == e { print $4 }' "$TMP/runs" | median)
-        echo "$1 $e $t $x"
+        line="$1 $e"
+        for col in 3 4 5 6; do
+            line="$line $(awk -v p="$1" -v e="$e" -v c=$col '$1 == p && $2 == e { print $c }' "$TMP/runs" | median)"
+        done
+        echo "$line"
     done
 }
 # net of start-up: minus the median CPU time of a run with (almost) no photons
 { summary gtrace-base; summary gtrace; [ -n "$POV" ] && summary povray-base && summary povray; } |
-    awk '$1 ~ /-base$/ { base[substr($1, 1, length($1) - 5)] = $3; next } { print $1, $2, $3, $3 - base[$1], $4 }' \
-    > "$TMP/sum"
-printf '%-8s %14s %8s %8s %10s\n' program effort "CPU s" "net s" RMSE
-awk '{ printf "%-8s %14s %8.3f %8.3f %10.5f\n", $1, ($1 == "gtrace" ? $2 " passes" : $2 " photons"), $3, $4, $5 }' \
-    "$TMP/sum"
+    awk '$1 ~ /-base$/ { base[substr($1, 1, length($1) - 5)] = $3; next }
+         { print $1, $2, $3, $3 - base[$1], $4, $5, $6 }' > "$TMP/sum"
+printf '%-8s %16s %8s %8s %10s %10s %10s\n' program effort "CPU s" "net s" "RMSE" "peak" "halo"
+awk '{ printf "%-8s %16s %8.3f %8.3f %10.5f %10.5f %10.5f\n", $1, ($1 == "gtrace" ? $2 " passes" : $2 " photons"),
+       $3, $4, $5, $6, $7 }' "$TMP/sum"
+# slope PROGRAM COLUMN FIRST LAST: the least-squares slope of log RMSE (column) over log net time, efforts FIRST..LAST
+slope() {
+    awk -v p="$1" -v c="$2" -v a="$3" -v b="$4" '
+        $1 == p && $4 > 0 && $c > 0 { k++; if (k >= a && k <= b) { n++; x[n] = log($4); y[n] = log($c) } }
+        END {
+            for (i = 1; i <= n; i++) { sx += x[i]; sy += y[i] }
+            for (i = 1; i <= n; i++) { sxx += (x[i] - sx / n) ^ 2; sxy += (x[i] - sx / n) * (y[i] - sy / n) }
+            if (n < 2) printf "-"; else printf "%.3f", (sxx > 0 ? sxy / sxx : 0)
+        }' "$TMP/sum"
+}
+echo "exponents: RMSE ~ (net CPU time)^e, over all efforts [smaller half / larger half]"
+printf '%-8s %22s %22s %22s\n' program whole "focus peak" "smooth halo"
+for prog in gtrace povray; do
+    n=$(awk -v p="$prog" '$1 == p && $4 > 0' "$TMP/sum" | wc -l)
+    [ "$n" -ge 2 ] || continue
+    h=$(((n + 1) / 2))
+    line=$(printf '%-8s' "$prog")
+    for col in 5 6 7; do
+        fit="$(slope $prog $col 1 "$n") [$(slope $prog $col 1 "$h") / $(slope $prog $col $((n - h + 1)) "$n")]"
+        line="$line $(printf '%22s' "$fit")"
+    done
+    echo "$line" | tee -a "$TMP/slopes"
+done
+[ -n "$POV" ] && awk '{ g[$1] = $2; p[$1] = $6; s[$1] = $10 } END { if ("gtrace" in g && "povray" in g)
+    printf "exponent ratio gtrace / POV-Ray: whole %.2f, focus peak %.2f, smooth halo %.2f\n",
+           g["gtrace"] / g["povray"], p["gtrace"] / p["povray"], s["gtrace"] / s["povray"] }' "$TMP/slopes"
 for prog in gtrace povray; do
     grep -q "^$prog " "$TMP/sum" || continue
     awk -v p="$prog" -v target="$TARGET" '
@@ -132,7 +193,7 @@ for prog in gtrace povray; do
             for (i = 1; i < n; i++)
                 if (t == "" && y[i] >= log(target) && y[i + 1] <= log(target) && y[i] > y[i + 1])
                     t = exp(x[i] + (log(target) - y[i]) * (x[i + 1] - x[i]) / (y[i + 1] - y[i]))
-            printf "%s: RMSE ~ (net CPU time)^%.3f; net time to RMSE %s: %s\n", p, slope, target,
+            printf "%s: whole image RMSE ~ (net CPU time)^%.3f; net time to RMSE %s: %s\n", p, slope, target,
                    (t == "" ? "not bracketed" : sprintf("%.3f s", t))
             print p, (t == "" ? "-" : t) > "'"$TMP/ttr"'"
         }' "$TMP/sum"

@@ -138,7 +138,7 @@ static void usage(FILE *f)
             "                    10(3)); refused in a model without wavelength samples and for other formats\n"
             "Under mpirun (Open MPI) every rank loads the scene, rank 0 hands out blocks of the image on demand,\n"
             "renders some itself, gathers the rest and writes the image, equal to a single-process render\n"
-            "(docs/distributed.md):\n"
+            "(docs/distributed.md); sppm and light share each batch of photons instead of blocks:\n"
             "  --mpi-block N     blocks of N x N pixels, the unit a rank asks for (default %d)\n"
             "  --mpi-timeout S   seconds rank 0 waits for a silent rank before it ends the job (default %g;\n"
             "                    longer than a block takes to render)\n"

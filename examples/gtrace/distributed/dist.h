@@ -1,6 +1,8 @@
 /* dist.h - rendering one image on the ranks of an MPI job (dist.c): rank 0 hands out blocks of the image on
  * demand, renders some itself, gathers the others and returns the whole image; every rank renders with its
- * OpenMP threads. The pixels equal a single-process render's (each is seeded from its own index). */
+ * OpenMP threads. The pixels equal a single-process render's (each is seeded from its own index). The particle
+ * integrators (sppm, light) share each batch of photon paths over the ranks instead of blocks (PhotonShare,
+ * integrators/photons.h), summed in a single process's order: their pixels equal a single process's too. */
 #ifndef GTRACE_DIST_H
 #define GTRACE_DIST_H
 
@@ -16,7 +18,8 @@
 
 /** How the ranks share the work. */
 typedef struct DistSettings {
-    int block;        /**< blocks are block x block pixels (the unit a rank asks for and sends back) */
+    int block;        /**< blocks are block x block pixels (the unit a rank asks for and sends back; not used by
+                           the particle integrators, nor is dedicated) */
     double timeout;   /**< seconds rank 0 waits for another rank (the others wait twice as long for rank 0) before
                            it declares it dead and ends the job */
     int dedicated;    /**< 1: rank 0 only hands out and gathers blocks; 0: it renders blocks too */
@@ -45,7 +48,8 @@ uint64_t dist_digest(const char *scene_path, const char *model, const RenderSett
 /** The render, called by every rank once it has loaded the scene (load_status G_OK, s and rs set) or failed to
  * (load_status < 0, load_msg its message). First every rank reports its status to rank 0: if any failed, rank 0
  * returns an error with every failing rank's message and the others DIST_QUIT; so does a rank
- * with another digest. Then the blocks are rendered. Rank 0 returns G_OK with the whole image (or crop) in fb
+ * with another digest (the particle integrators' own checks, sppm_check and light_check, count as the load).
+ * Then the blocks (or the photon batches) are rendered. Rank 0 returns G_OK with the whole image (or crop) in fb
  * and the job's totals in st; the others return DIST_SENT once their part is sent. A rank that falls silent for
  * ds->timeout seconds, a failed render or a lost message fails the whole job: G_ERR_IO with the message in err
  * (rank 0: "...; the job is ended and no image written", another: "rank R: ...; the job is ended"), and

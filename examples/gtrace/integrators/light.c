@@ -6,7 +6,9 @@
  * on the image plane at distance 1: the radiance towards the camera averaged over the pixel. The material is asked
  * through reflection() (which multiplies by the cosine at the arriving side, divided out here), so a fluorescent
  * material re-radiates what arrives. Contributions are computed in parallel into the particles' slots and summed
- * into the pixels in slot order. Unbiased for what it draws; a reference for SPPM's caustics on diffuse surfaces. */
+ * into the pixels in slot order. Unbiased for what it draws; a reference for SPPM's caustics on diffuse surfaces.
+ * In a distributed job (PhotonShare) each process traces its range of every batch's paths and rank 0 sums the
+ * completed batch in slot order, as a single process does. */
 #include "light.h"
 #include "photons.h"
 #include "sppm.h"
@@ -75,7 +77,7 @@ static void first_error(int *status, int rc)
 }
 
 static int light_run(Renderer *r, const Scene *s, const RenderSettings *rs, const PhotonSource *src,
-                     const Framebuffer *fb, GColor *acc, Progress *prog, GError *err)
+                     const Framebuffer *fb, GColor *acc, const PhotonShare *share, Progress *prog, GError *err)
 {
     const Camera *cam = renderer_camera(r);
     LightJob job = {.cam = cam, .x0 = fb->x, .y0 = fb->y, .w = fb->width, .h = fb->height,
@@ -97,13 +99,22 @@ static int light_run(Renderer *r, const Scene *s, const RenderSettings *rs, cons
     for (int pass = 0; pass < passes && status == G_OK; pass++) {
         for (long start = 0; start < photons && status == G_OK; start += paths) {
             long n = photons - start < paths ? photons - start : paths;
+            int lo = 0, hi = (int)n; /* the paths this process traces */
+            if (share)
+                photon_share_range((int)n, share->rank, share->size, &lo, &hi);
             batch.paths = (int)n;
 #pragma omp parallel for num_threads(nthreads) schedule(dynamic, 256)
-            for (long i = 0; i < n; i++) {
+            for (long i = lo; i < hi; i++) {
                 TraceCtx *c = renderer_thread_ctx(r, omp_get_thread_num());
                 uint64_t index = (uint64_t)pass * (uint64_t)photons + (uint64_t)(start + i);
                 first_error(&status, photon_trace(c, src, media0, index, &batch, (int)i, 1, connect_camera, &job));
             }
+            if (status == G_OK && share && (rc = share->batch(share->user, &batch, 0, err)) != G_OK) {
+                photon_batch_free(&batch);
+                return rc;
+            }
+            if (share && share->rank != 0)
+                continue; /* rank 0 sums the job's contributions */
             for (long i = 0; i < n && status == G_OK; i++) /* in slot order: the same sums on any thread count */
                 for (int k = 0; k < batch.count[i]; k++) {
                     const Photon *ph = &batch.photons[(size_t)i * (size_t)per_path + (size_t)k];
@@ -118,7 +129,7 @@ static int light_run(Renderer *r, const Scene *s, const RenderSettings *rs, cons
     if (status != G_OK)
         return gerror_set(err, status, "light tracing failed: %s", gstatus_string(status));
     double total = (double)passes * (double)photons;
-    for (long i = 0; i < (long)fb->width * fb->height && status == G_OK; i++) {
+    for (long i = 0; i < (long)fb->width * fb->height && status == G_OK && !(share && share->rank != 0); i++) {
         int x = fb->x + (int)(i % fb->width), y = fb->y + (int)(i / fb->width);
         if ((rc = gcolor_scale(&acc[i], &acc[i], 1.0 / total)) >= 0)
             rc = renderer_store(r, 0, x, y, &acc[i]);
@@ -129,9 +140,8 @@ static int light_run(Renderer *r, const Scene *s, const RenderSettings *rs, cons
     return G_OK;
 }
 
-int light_render(const Scene *s, const RenderSettings *rs, Framebuffer *fb, RenderStats *st, GError *err)
+int light_check(const Scene *s, const RenderSettings *rs, GError *err)
 {
-    memset(st, 0, sizeof *st);
     int rc = sppm_check(rs, err);
     if (rc != G_OK)
         return rc;
@@ -139,6 +149,16 @@ int light_render(const Scene *s, const RenderSettings *rs, Framebuffer *fb, Rend
         return gerror_set(err, G_ERR_UNSUPPORTED, "--integrator light connects particles to a pinhole camera: this "
                           "scene's camera is %s", s->camera.projection == CAMERA_ORTHOGRAPHIC ? "orthographic"
                                                                                               : "a thin lens");
+    return G_OK;
+}
+
+int light_render(const Scene *s, const RenderSettings *rs, Framebuffer *fb, RenderStats *st, const PhotonShare *share,
+                 GError *err)
+{
+    memset(st, 0, sizeof *st);
+    int rc = light_check(s, rs, err);
+    if (rc != G_OK)
+        return rc;
     PhotonSource src;
     Renderer *r;
     if ((rc = renderer_create(&r, s, rs, fb, err)) != G_OK)
@@ -162,7 +182,7 @@ int light_render(const Scene *s, const RenderSettings *rs, Framebuffer *fb, Rend
     double t0 = now_seconds();
     if (rc == G_OK) {
         progress_start(&prog, rs->sppm_passes > 0 ? rs->sppm_passes : SPPM_DEFAULT_PASSES, rs->quiet);
-        rc = light_run(r, s, rs, &src, fb, acc, &prog, err);
+        rc = light_run(r, s, rs, &src, fb, acc, share, &prog, err);
         progress_finish(&prog);
     }
     renderer_stats(r, st);

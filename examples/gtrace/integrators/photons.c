@@ -310,3 +310,85 @@ int photon_batch_index(PhotonBatch *b, double cell, GError *err)
     gmem_free(fill);
     return G_OK;
 }
+
+void photon_share_range(int n, int part, int parts, int *lo, int *hi)
+{
+    *lo = (int)((int64_t)n * part / parts);
+    *hi = (int)((int64_t)n * (part + 1) / parts);
+}
+
+/* The packed bytes of one particle: position, direction, pixel, colour kind, values. */
+static size_t packed_photon_bytes(const GColorModel *m)
+{
+    return 6 * sizeof(double) + sizeof(int64_t) + sizeof(int32_t) + gcolormodel_value_bytes(m);
+}
+
+size_t photon_batch_pack_bytes(const PhotonBatch *b, const GColorModel *m, int lo, int hi)
+{
+    return (size_t)(hi - lo) * (sizeof(int32_t) + (size_t)b->per_path * packed_photon_bytes(m));
+}
+
+size_t photon_batch_pack(const PhotonBatch *b, int lo, int hi, unsigned char *buf)
+{
+    unsigned char *at = buf;
+    for (int i = lo; i < hi; i++) {
+        int32_t count = b->count[i];
+        memcpy(at, &count, sizeof count);
+        at += sizeof count;
+        for (int k = 0; k < count; k++) {
+            const Photon *ph = &b->photons[(size_t)i * (size_t)b->per_path + (size_t)k];
+            double v[6] = {ph->p.x, ph->p.y, ph->p.z, ph->wi.x, ph->wi.y, ph->wi.z};
+            int64_t pixel = ph->pixel;
+            int32_t kind = ph->power.kind;
+            size_t vb = gcolormodel_value_bytes(ph->power.model);
+            memcpy(at, v, sizeof v);
+            at += sizeof v;
+            memcpy(at, &pixel, sizeof pixel);
+            at += sizeof pixel;
+            memcpy(at, &kind, sizeof kind);
+            at += sizeof kind;
+            memcpy(at, ph->power.v, vb);
+            at += vb;
+        }
+    }
+    return (size_t)(at - buf);
+}
+
+int photon_batch_unpack(PhotonBatch *b, int lo, int hi, const unsigned char *buf, size_t len)
+{
+    const unsigned char *at = buf, *end = buf + len;
+    for (int i = lo; i < hi; i++) {
+        int32_t count;
+        if ((size_t)(end - at) < sizeof count)
+            return G_ERR_INVALID;
+        memcpy(&count, at, sizeof count);
+        at += sizeof count;
+        if (count < 0 || count > b->per_path)
+            return G_ERR_INVALID;
+        b->count[i] = count;
+        for (int k = 0; k < count; k++) {
+            Photon *ph = &b->photons[(size_t)i * (size_t)b->per_path + (size_t)k];
+            size_t vb = gcolormodel_value_bytes(ph->power.model);
+            double v[6];
+            int64_t pixel;
+            int32_t kind;
+            if ((size_t)(end - at) < sizeof v + sizeof pixel + sizeof kind + vb)
+                return G_ERR_INVALID;
+            memcpy(v, at, sizeof v);
+            at += sizeof v;
+            memcpy(&pixel, at, sizeof pixel);
+            at += sizeof pixel;
+            memcpy(&kind, at, sizeof kind);
+            at += sizeof kind;
+            if (kind != GCOLOR_VECTOR && kind != GCOLOR_MATRIX)
+                return G_ERR_INVALID;
+            ph->p = (GVec3){v[0], v[1], v[2]};
+            ph->wi = (GVec3){v[3], v[4], v[5]};
+            ph->pixel = (long)pixel;
+            ph->power.kind = kind;
+            memcpy(ph->power.v, at, vb);
+            at += vb;
+        }
+    }
+    return at == end ? G_OK : G_ERR_INVALID;
+}

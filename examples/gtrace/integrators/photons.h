@@ -81,4 +81,27 @@ void photon_cell(const PhotonBatch *b, GVec3 p, int64_t cell[3]);
 /** The bucket of a cell. */
 int photon_bucket(const PhotonBatch *b, const int64_t cell[3]);
 
+/** How the processes of a distributed job share a particle render (distributed/dist.c fills it; NULL: one
+ * process renders alone). Every batch's paths are split into `size` consecutive ranges (photon_share_range), of
+ * which this process traces range `rank`; batch() then brings every range's particles into b, in their slots:
+ * onto rank 0 only, or (to_all) onto every rank. It returns G_OK, or a status with the job's failure in err (the
+ * job is then ended: return it at once). */
+typedef struct PhotonShare {
+    int rank, size;
+    int (*batch)(void *user, PhotonBatch *b, int to_all, GError *err);
+    void *user;
+} PhotonShare;
+
+/** Part `part` of `parts` of n items: [lo, hi), consecutive parts, sizes differing by at most one. */
+void photon_share_range(int n, int part, int parts, int *lo, int *hi);
+
+/** The bytes photon_batch_pack writes for paths [lo, hi) of b in model m (every slot counted at its largest). */
+size_t photon_batch_pack_bytes(const PhotonBatch *b, const GColorModel *m, int lo, int hi);
+/** Writes paths [lo, hi) of b (each path's count, then its particles: position, direction, pixel, colour kind and
+ * values, native layout) into buf; returns the bytes written. */
+size_t photon_batch_pack(const PhotonBatch *b, int lo, int hi, unsigned char *buf);
+/** The inverse of photon_batch_pack for paths [lo, hi) from len bytes: G_OK, or G_ERR_INVALID when the bytes are
+ * not such a pack (a count beyond per_path, a wrong length or colour kind) with b's paths then undefined. */
+int photon_batch_unpack(PhotonBatch *b, int lo, int hi, const unsigned char *buf, size_t len);
+
 #endif

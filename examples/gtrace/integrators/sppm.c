@@ -14,7 +14,11 @@
  * and light tau are updated: N' = N + alpha M, r' = r sqrt(N' / (N + M)), tau' = (tau + Phi) r'^2 / r^2.
  * The pixel is its direct light averaged over the passes plus tau / (passes * photons * pi r^2).
  *
- * Memory: four colours per pixel and one batch of particles, whatever the number of passes. */
+ * Memory: four colours per pixel and one batch of particles, whatever the number of passes.
+ *
+ * In a distributed job (PhotonShare) each process keeps the visible points of its band of rows and traces its
+ * range of every batch's paths; the batch is then completed on every process, which gathers it at its own points
+ * exactly as a single process would: the pixels are the same bits for any number of processes. */
 #include "sppm.h"
 #include "photons.h"
 #include "path.h"
@@ -49,8 +53,9 @@ typedef struct Sppm {
     const Media *media0;
     PhotonSource src;
     PhotonBatch batch;
+    const PhotonShare *share; /**< NULL: this process renders alone */
     VisiblePoint *vp;
-    int x0, y0, w, h, passes;
+    int x0, y0, w, h, passes; /**< the pixels this process gathers for: w x h from (x0, y0) */
     long photons;
     double radius0, alpha;
 } Sppm;
@@ -358,8 +363,8 @@ static int sppm_run(Sppm *p, Progress *prog, GError *err)
     if ((double)npix * 4.0 * (double)per_value > (double)gimage_memory_budget())
         return gerror_set(err, G_ERR_NOMEM, "sppm: four colours for each of %ld pixels take more than the image memory "
                           "budget of %zu MiB (GENERIC_IMAGE_BUDGET_MB)", npix, gimage_memory_budget() >> 20);
-    p->vp = gmem_calloc((size_t)npix, sizeof *p->vp);
-    if (!p->vp)
+    p->vp = npix > 0 ? gmem_calloc((size_t)npix, sizeof *p->vp) : NULL;
+    if (npix > 0 && !p->vp)
         return gerror_set(err, G_ERR_NOMEM, "sppm: out of memory for %ld visible points", npix);
     for (long i = 0; i < npix; i++) {
         VisiblePoint *vp = &p->vp[i];
@@ -388,15 +393,20 @@ static int sppm_run(Sppm *p, Progress *prog, GError *err)
         }
         for (long start = 0; start < p->photons && status == G_OK; start += paths) {
             long n = p->photons - start < paths ? p->photons - start : paths;
+            int lo = 0, hi = (int)n; /* the paths this process traces */
+            if (p->share)
+                photon_share_range((int)n, p->share->rank, p->share->size, &lo, &hi);
             p->batch.paths = (int)n;
 #pragma omp parallel for num_threads(nthreads) schedule(dynamic, 256)
-            for (long i = 0; i < n; i++) {
+            for (long i = lo; i < hi; i++) {
                 TraceCtx *c = renderer_thread_ctx(p->r, omp_get_thread_num());
                 uint64_t index = (uint64_t)pass * (uint64_t)p->photons + (uint64_t)(start + i);
                 first_error(&status, photon_trace(c, &p->src, p->media0, index, &p->batch, (int)i, 0, NULL, NULL));
             }
             if (status != G_OK)
                 break;
+            if (p->share && (rc = p->share->batch(p->share->user, &p->batch, 1, err)) != G_OK)
+                return rc;
             if ((rc = photon_batch_index(&p->batch, p->radius0, err)) != G_OK)
                 return rc;
 #pragma omp parallel for num_threads(nthreads) schedule(dynamic, 64)
@@ -430,13 +440,14 @@ static int sppm_run(Sppm *p, Progress *prog, GError *err)
     return G_OK;
 }
 
-int sppm_render(const Scene *s, const RenderSettings *rs, Framebuffer *fb, RenderStats *st, GError *err)
+int sppm_render(const Scene *s, const RenderSettings *rs, Framebuffer *fb, RenderStats *st, const PhotonShare *share,
+                GError *err)
 {
     memset(st, 0, sizeof *st);
     int rc = sppm_check(rs, err);
     if (rc != G_OK)
         return rc;
-    Sppm p = {.scene = s, .rs = rs};
+    Sppm p = {.scene = s, .rs = rs, .share = share};
     if ((rc = renderer_create(&p.r, s, rs, fb, err)) != G_OK)
         return rc;
     if ((rc = photon_source_init(&p.src, s, renderer_thread_ctx(p.r, 0)->emissive, err)) != G_OK) {
@@ -450,6 +461,12 @@ int sppm_render(const Scene *s, const RenderSettings *rs, Framebuffer *fb, Rende
     p.y0 = fb->y;
     p.w = fb->width;
     p.h = fb->height;
+    if (share) { /* this process's band of rows */
+        int lo, hi;
+        photon_share_range(fb->height, share->rank, share->size, &lo, &hi);
+        p.y0 = fb->y + lo;
+        p.h = hi - lo;
+    }
     p.passes = rs->sppm_passes > 0 ? rs->sppm_passes : SPPM_DEFAULT_PASSES;
     p.photons = rs->sppm_photons > 0 ? rs->sppm_photons : SPPM_DEFAULT_PHOTONS;
     p.alpha = rs->sppm_alpha > 0.0 ? rs->sppm_alpha : SPPM_DEFAULT_ALPHA;

@@ -2,6 +2,7 @@
 #ifndef GTRACE_SPPM_H
 #define GTRACE_SPPM_H
 
+#include "photons.h"
 #include "render/render.h"
 
 /** Bounds of the options (checked by sppm_check). */
@@ -23,7 +24,11 @@ int sppm_check(const RenderSettings *rs, GError *err);
  * first surface are gathered at the visible points within their radius, and each point's radius and light updated
  * with rs->alpha. Every random number is seeded by the pixel and the pass or by the particle's index, and each
  * point sums its photons in an order fixed by the particles' indices: the image does not depend on the thread
- * count or the crop. fb as render_image; progress by passes. */
-int sppm_render(const Scene *s, const RenderSettings *rs, Framebuffer *fb, RenderStats *st, GError *err);
+ * count or the crop. fb as render_image; progress by passes. With share (not NULL: a distributed job), this
+ * process renders only its band of rows (photon_share_range of fb's height; the other rows of fb stay black) and
+ * traces only its range of each batch's paths, share->batch completing every batch before it is gathered: the
+ * band's pixels equal a single process's, bit for bit, whatever the number of processes. */
+int sppm_render(const Scene *s, const RenderSettings *rs, Framebuffer *fb, RenderStats *st, const PhotonShare *share,
+                GError *err);
 
 #endif

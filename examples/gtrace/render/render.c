@@ -342,7 +342,7 @@ int renderer_region(Renderer *r, const int region[4], Progress *prog, GError *er
     const Framebuffer *fb = r->job.fb;
     if (r->job.integrator == RENDER_SPPM || r->job.integrator == RENDER_LIGHT)
         return gerror_set(err, G_ERR_UNSUPPORTED, "--integrator sppm and light render the whole image (or its crop) at "
-                          "once, not in regions: they do not run under mpirun");
+                          "once, not in regions (under mpirun they share batches of photons: distributed/dist.c)");
     int rx0 = region[0], ry0 = region[1], rx1 = region[2], ry1 = region[3];
     if (rx0 < fb->x || ry0 < fb->y || rx0 >= rx1 || ry0 >= ry1 || rx1 > fb->x + fb->width ||
         ry1 > fb->y + fb->height)
@@ -428,9 +428,9 @@ void renderer_stats(const Renderer *r, RenderStats *st)
 int render_image(const Scene *s, const RenderSettings *rs, Framebuffer *fb, RenderStats *st, GError *err)
 {
     if (rs->integrator == RENDER_SPPM)
-        return sppm_render(s, rs, fb, st, err);
+        return sppm_render(s, rs, fb, st, NULL, err);
     if (rs->integrator == RENDER_LIGHT)
-        return light_render(s, rs, fb, st, err);
+        return light_render(s, rs, fb, st, NULL, err);
     memset(st, 0, sizeof *st);
     Renderer *r;
     int rc = renderer_create(&r, s, rs, fb, err);
