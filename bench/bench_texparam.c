@@ -4,7 +4,7 @@
  * once, then taken from the point's cache), and the image reflectance against the image node over a white lambert
  * (what it replaces). ARG: rounds of POINTS points (default 10; the film 1/20 of them). Pairs: lambert with an
  * image or a checker mix for its reflectance, phong with a perlin exponent, conductor with a perlin roughness,
- * thinfilm with a perlin thickness; in
+ * thinfilm with a perlin thickness, plastic with a perlin roughness or a checker mix for its reflectance; in
  * rgb and spectrum. One thread. Prints nanoseconds and the ratio textured / constant; never fails on time. */
 #include "generic/builtins.h"
 #include "generic/material.h"
@@ -74,14 +74,20 @@ static const char *const library =
     "material conductor_perlin conductor { metal Au roughness perlin { frequency 4 range 0.1 0.5 } }\n"
     "material film_c thinfilm { thickness 400 base lambert { reflectance rgb 0.2 0.2 0.2 } }\n"
     "material film_perlin thinfilm { thickness perlin { frequency 4 range 200 800 } "
-    "base lambert { reflectance rgb 0.2 0.2 0.2 } }\n";
+    "base lambert { reflectance rgb 0.2 0.2 0.2 } }\n"
+    "material plastic_c plastic { reflectance rgb 0.6 0.3 0.2 roughness 0.2 }\n"
+    "material plastic_perlin plastic { reflectance rgb 0.6 0.3 0.2 roughness perlin { frequency 4 range 0.1 0.5 } }\n"
+    "material plastic_mix plastic { reflectance mix { by checker { dims 2 frequency 8 } a rgb 0.6 0.3 0.2 "
+    "b rgb 0.2 0.3 0.4 } roughness 0.2 }\n";
 
 static const char *const pairs[][2] = {{"lambert_c", "lambert_image"},
                                         {"image_node", "lambert_image"},
                                         {"lambert_c", "lambert_mix"},
                                         {"phong_c", "phong_perlin"},
                                         {"conductor_c", "conductor_perlin"},
-                                        {"film_c", "film_perlin"}};
+                                        {"film_c", "film_perlin"},
+                                        {"plastic_c", "plastic_perlin"},
+                                        {"plastic_c", "plastic_mix"}};
 
 static int run(const char *model_name, const char *image, long rounds)
 {
@@ -91,7 +97,7 @@ static int run(const char *model_name, const char *image, long rounds)
         fprintf(stderr, "%s\n", err.message);
         return 1;
     }
-    char text[2048];
+    char text[4096];
     snprintf(text, sizeof text, library, image, image);
     GReaderOptions ro = {.model = md};
     GLibrary *lib;
