@@ -4,8 +4,9 @@
  * once, then taken from the point's cache), and the image reflectance against the image node over a white lambert
  * (what it replaces). ARG: rounds of POINTS points (default 10; the film 1/20 of them). Pairs: lambert with an
  * image or a checker mix for its reflectance, phong with a perlin exponent, conductor with a perlin roughness,
- * thinfilm with a perlin thickness, plastic with a perlin roughness or a checker mix for its reflectance; in
- * rgb and spectrum. One thread. Prints nanoseconds and the ratio textured / constant; never fails on time. */
+ * thinfilm with a perlin thickness, plastic with a perlin roughness or a checker mix for its reflectance,
+ * dielectric with a perlin roughness (light entering it from vacuum); in rgb and spectrum. One thread. Prints
+ * nanoseconds and the ratio textured / constant; never fails on time. */
 #include "generic/builtins.h"
 #include "generic/material.h"
 #include "generic/reader.h"
@@ -35,6 +36,7 @@ static double time_material(const GMaterial *m, const GColor *light, GScratch *s
     sp.dpdu = gvec3(1, 0, 0);
     sp.dpdv = gvec3(0, 1, 0);
     sp.material = m;
+    sp.to = m; /* light enters m from vacuum: a dielectric's relative index 1 / n */
     GScratchMark mark = gscratch_mark(sc);
     GColor out;
     if (gcolor_scratch(&out, m->model, sc) != G_OK)
@@ -78,7 +80,9 @@ static const char *const library =
     "material plastic_c plastic { reflectance rgb 0.6 0.3 0.2 roughness 0.2 }\n"
     "material plastic_perlin plastic { reflectance rgb 0.6 0.3 0.2 roughness perlin { frequency 4 range 0.1 0.5 } }\n"
     "material plastic_mix plastic { reflectance mix { by checker { dims 2 frequency 8 } a rgb 0.6 0.3 0.2 "
-    "b rgb 0.2 0.3 0.4 } roughness 0.2 }\n";
+    "b rgb 0.2 0.3 0.4 } roughness 0.2 }\n"
+    "material glass_c dielectric { glass BK7 roughness 0.2 }\n"
+    "material glass_perlin dielectric { glass BK7 roughness perlin { frequency 4 range 0.1 0.5 } }\n";
 
 static const char *const pairs[][2] = {{"lambert_c", "lambert_image"},
                                         {"image_node", "lambert_image"},
@@ -87,7 +91,8 @@ static const char *const pairs[][2] = {{"lambert_c", "lambert_image"},
                                         {"conductor_c", "conductor_perlin"},
                                         {"film_c", "film_perlin"},
                                         {"plastic_c", "plastic_perlin"},
-                                        {"plastic_c", "plastic_mix"}};
+                                        {"plastic_c", "plastic_mix"},
+                                        {"glass_c", "glass_perlin"}};
 
 static int run(const char *model_name, const char *image, long rounds)
 {

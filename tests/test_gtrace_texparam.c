@@ -1,7 +1,7 @@
 /* test_gtrace_texparam.c - textured parameters rendered by gtrace (kit/texparam.h): a reflectance read from an image
  * renders exactly what the image node over a white lambert renders, and a checker-driven phong exponent (or
- * conductor or plastic roughness, plastic reflectance) renders, in each cell of the checker, exactly the render with
- * that cell's constant value; both integrators, pixel for pixel (every float equal). */
+ * conductor, plastic or dielectric roughness, plastic reflectance) renders, in each cell of the checker, exactly the
+ * render with that cell's constant value; both integrators, pixel for pixel (every float equal). */
 #include "test_gtrace_common.h"
 
 #include "embed/render_file.h"
@@ -147,6 +147,13 @@ static void test_checker_plastic_cells(void **state)
     check_color_cells("plastic { reflectance %s roughness 0.2 }", "rgb 0.2 0.4 0.6", "rgb 0.7 0.1 0.1");
 }
 
+/* dielectric's roughness: 0.05 and 0.5 (the ends of its tabulated levels). */
+static void test_checker_dielectric_cells(void **state)
+{
+    (void)state;
+    check_cells("dielectric { glass BK7 roughness %s }", "0.05", "0.5");
+}
+
 int main(void)
 {
     GError err;
@@ -159,6 +166,7 @@ int main(void)
         cmocka_unit_test(test_checker_exponent_cells),
         cmocka_unit_test(test_checker_roughness_cells),
         cmocka_unit_test(test_checker_plastic_cells),
+        cmocka_unit_test(test_checker_dielectric_cells),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
