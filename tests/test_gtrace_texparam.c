@@ -1,7 +1,8 @@
 /* test_gtrace_texparam.c - textured parameters rendered by gtrace (kit/texparam.h): a reflectance read from an image
  * renders exactly what the image node over a white lambert renders, and a checker-driven phong exponent (or
- * conductor, plastic or dielectric roughness, plastic reflectance) renders, in each cell of the checker, exactly the
- * render with that cell's constant value; both integrators, pixel for pixel (every float equal). */
+ * conductor, plastic or dielectric roughness, plastic reflectance, layer thickness and albedo) renders, in each
+ * cell of the checker, exactly the render with that cell's constant value; both integrators, pixel for pixel (every
+ * float equal). */
 #include "test_gtrace_common.h"
 
 #include "embed/render_file.h"
@@ -154,6 +155,16 @@ static void test_checker_dielectric_cells(void **state)
     check_cells("dielectric { glass BK7 roughness %s }", "0.05", "0.5");
 }
 
+/* layer's medium: its thickness 0.2 and 2 in the cells; its albedo a mix of two colours. */
+static void test_checker_layer_cells(void **state)
+{
+    (void)state;
+    check_cells("layer { top dielectric { } bottom lambert { reflectance rgb 0.5 0.4 0.3 } thickness %s "
+                "albedo rgb 0.8 0.5 0.3 }", "0.2", "2");
+    check_color_cells("layer { top dielectric { } bottom lambert { reflectance rgb 0.5 0.4 0.3 } thickness 1 "
+                      "albedo %s }", "rgb 0.8 0.5 0.3", "rgb 0.2 0.6 0.9");
+}
+
 int main(void)
 {
     GError err;
@@ -167,6 +178,7 @@ int main(void)
         cmocka_unit_test(test_checker_roughness_cells),
         cmocka_unit_test(test_checker_plastic_cells),
         cmocka_unit_test(test_checker_dielectric_cells),
+        cmocka_unit_test(test_checker_layer_cells),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -353,6 +353,33 @@ static void test_dielectric_textured(void **state)
     glibrary_destroy(lib);
 }
 
+/* layer: a checker-driven thickness, a mix for the medium's albedo and a top whose roughness is textured give, in
+ * each cell, exactly the constant layer's values (the walks draw the same numbers); nothing is allocated per
+ * evaluation. */
+static void test_layer_textured(void **state)
+{
+    (void)state;
+    GLibrary *lib = load("material t layer { top dielectric { } bottom lambert { reflectance rgb 0.5 0.4 0.3 }"
+                         " thickness checker { dims 2 range 0.2 2 } albedo mix { by checker { dims 2 } "
+                         "a rgb 0.8 0.5 0.3 b rgb 0.2 0.6 0.9 } }\n"
+                         "material t0 layer { top dielectric { } bottom lambert { reflectance rgb 0.5 0.4 0.3 }"
+                         " thickness 0.2 albedo rgb 0.8 0.5 0.3 }\n"
+                         "material t1 layer { top dielectric { } bottom lambert { reflectance rgb 0.5 0.4 0.3 }"
+                         " thickness 2 albedo rgb 0.2 0.6 0.9 }\n"
+                         "material r layer { top dielectric { index 1.5 roughness checker { dims 2 range 0.1 0.4 } }"
+                         " bottom lambert { reflectance rgb 0.5 0.4 0.3 } thickness 0.5 }\n"
+                         "material r1 layer { top dielectric { index 1.5 roughness 0.4 }"
+                         " bottom lambert { reflectance rgb 0.5 0.4 0.3 } thickness 0.5 }\n");
+    GScratch *s = gscratch_create(1 << 18);
+    assert_same_at(glibrary_material(lib, "t"), glibrary_material(lib, "t0"), s, 0.25, 0.75);
+    assert_same_at(glibrary_material(lib, "t"), glibrary_material(lib, "t1"), s, 1.25, 0.75);
+    assert_same_at(glibrary_material(lib, "r"), glibrary_material(lib, "r1"), s, 1.25, 0.75);
+    assert_no_allocation(glibrary_material(lib, "t"), s);
+    assert_no_allocation(glibrary_material(lib, "r"), s);
+    gscratch_destroy(s);
+    glibrary_destroy(lib);
+}
+
 /* Where a number may be a generator, a defined constant is still a number, and a word that names no generator gets
  * the reader's own complaint about the number. */
 static void test_numbers_stay_numbers(void **state)
@@ -400,6 +427,12 @@ static void test_bad_input(void **state)
                     "mix: needs by, a and b");
     load_fails_with("material m lambert { reflectance mix { by checker { dims 2 } a rgb 0.1 0.1 0.1 c 1 } }\n",
                     "t.mat:1:80: mix: unknown parameter 'c' (expected one of: by, a, b)");
+    load_fails_with("material m layer { top dielectric { } bottom lambert { } albedo mix { by checker { dims 2 } "
+                    "a rgb 0.1 0.1 0.1 b rgb 1.5 1.5 1.5 } }\n",
+                    "layer: albedo has the value 1.5");
+    load_fails("material m layer { top dielectric { } bottom lambert { } thickness checker { dims 2 range 1 200 } }\n",
+               "t.mat:1:68: layer: thickness takes values in [0, 100]; the generator's range is [1, 200] (set it with "
+               "`range LO HI`)");
     load_fails_with("material m dielectric { tint mix { by checker { dims 2 } a rgb 0 0 0 b rgb 1 1 1 } }\n",
                     "t.mat:1:25: dielectric: tint cannot be textured");
     load_fails("material m plastic { roughness checker { dims 2 } }\n",
@@ -423,6 +456,7 @@ int main(void)
         cmocka_unit_test(test_memoised_without_allocation),
         cmocka_unit_test(test_plastic_textured),
         cmocka_unit_test(test_dielectric_textured),
+        cmocka_unit_test(test_layer_textured),
         cmocka_unit_test(test_numbers_stay_numbers),
         cmocka_unit_test(test_bad_input),
     };
