@@ -1,6 +1,12 @@
 /* dielectric.c - a dielectric interface: unpolarised Fresnel reflection and refraction, total internal reflection,
  * Beer-Lambert absorption inside; smooth (ideal rays), or rough (Walter et al. 2007 on the microfacet kit, with an
- * energy compensation of the multiple scattering it leaves out). */
+ * energy compensation of the multiple scattering it leaves out).
+ *
+ * A textured roughness (isotropic, a generator whose range lies in [GMICROFACET_ALPHA_MIN, 1], kit/texparam.h): the
+ * distribution of its value at each point, and the compensation's albedo tables at DIELECTRIC_LEVELS roughnesses
+ * evenly over the range, the compensation interpolated between the two nearest (exactly a level's at a level, as
+ * conductor.c does). The index stays constant: it is the medium's (refraction_index), which the renderer reads
+ * where a ray enters and keeps on its stack of media until it leaves. */
 #include "generic/kit/dispersion.h"
 #include "generic/kit/material_kit.h"
 #include "generic/kit/texparam.h"
@@ -11,8 +17,15 @@
 #include <math.h>
 #include <string.h>
 
-/* Why a roughness stays constant (gtexparam_read_constant). */
-#define ROUGH_WHY "the microfacet distribution and its albedo tables, made at creation"
+/* Why an anisotropic roughness stays constant (gtexparam_read_constant). */
+#define ROUGH_WHY "the anisotropic microfacet distribution and its albedo tables, made at creation"
+
+/* Why the index stays constant (gtexparam_refuse_generator). */
+#define INDEX_WHY "it is the medium's index, which a renderer reads where a ray enters and keeps until the ray leaves"
+
+/* The roughnesses whose compensation tables a textured roughness tabulates over its range (each table costs about
+ * 1.5 million evaluations: gmicrofacet_dielectric_albedo_init). */
+#define DIELECTRIC_LEVELS 5
 
 typedef struct Dielectric {
     GMaterial base;
@@ -24,7 +37,20 @@ typedef struct Dielectric {
     int rough, anisotropic; /* microfacet widths (rough); different along dpdu and dpdv (anisotropic) */
     GMicrofacet mf;
     GMicrofacetDielectricAlbedo *albedo; /* single-scattering albedos of the compensation (NULL: uncompensated) */
+    /* a textured roughness: its value at the point; the compensation's tables (NULL: uncompensated) at nlevels
+     * roughnesses evenly over [level_lo, level_hi] */
+    GTexNumber tex_rough;
+    int distribution, nlevels;
+    double level_lo, level_hi;
+    GMicrofacetDielectricAlbedo *level_albedo;
 } Dielectric;
+
+/* The rough interface at one point: the distribution and the compensation's tables a0, a1 with the weight w of a1. */
+typedef struct RoughAt {
+    GMicrofacet mf;
+    const GMicrofacetDielectricAlbedo *a0, *a1;
+    double w;
+} RoughAt;
 
 /* ---- the material ---- */
 
@@ -35,6 +61,8 @@ static void dielectric_destroy(GMaterial *self)
     gcolor_free(&d->transmittance);
     gcolor_free(&d->tint);
     gmem_free(d->albedo);
+    gmem_free(d->level_albedo);
+    gtexparam_number_release(&d->tex_rough);
     gmem_free(d);
 }
 
@@ -52,21 +80,48 @@ static GFrame rough_frame(const Dielectric *d, GSurfPoint *sp)
     return d->anisotropic ? gframe_from_normal_tangent(n, sp->dpdu) : gframe_from_normal(n);
 }
 
+/* The rough interface at sp: the material's own, or for a textured roughness the distribution of its value there and
+ * the two nearest levels' tables (exactly one level's at a level). */
+static RoughAt rough_at(const Dielectric *d, GSurfPoint *sp)
+{
+    RoughAt a = {d->mf, d->albedo, d->albedo, 0.0};
+    if (!d->tex_rough.gen)
+        return a;
+    double r = gtexparam_number_at(&d->tex_rough, sp), alpha = gmicrofacet_alpha_from_roughness(r);
+    a.mf = gmicrofacet_make(d->distribution, alpha, alpha);
+    double x = d->nlevels > 1 ? (r - d->level_lo) / (d->level_hi - d->level_lo) * (d->nlevels - 1) : 0.0;
+    x = x > 0.0 ? (x < d->nlevels - 1 ? x : d->nlevels - 1) : 0.0;
+    int j = (int)x;
+    a.a0 = a.a1 = d->level_albedo ? &d->level_albedo[j] : NULL;
+    if (a.a0 && j + 1 < d->nlevels && x > j) {
+        a.a1 = &d->level_albedo[j + 1];
+        a.w = x - j;
+    }
+    return a;
+}
+
 /* The energy compensation of the refraction: (1 - R) / T of the single-scattering albedos, so that the reflection
  * (single scattering, reciprocal) and the refraction together keep all the light; at most COMPENSATION_MAX (where the
  * refraction has almost no lobe to carry the light back in: near and past the critical angle from inside); 1 when
  * off. */
 #define COMPENSATION_MAX 2.0
-static double compensation(const Dielectric *d, double cos_o, double eta)
+static double table_compensation(const GMicrofacetDielectricAlbedo *albedo, double cos_o, double eta)
 {
-    if (!d->albedo)
+    if (!albedo)
         return 1.0;
     double r, t;
-    gmicrofacet_dielectric_albedo(d->albedo, cos_o, eta, &r, &t);
+    gmicrofacet_dielectric_albedo(albedo, cos_o, eta, &r, &t);
     if (!(t > 0.0) || !(r < 1.0))
         return 1.0;
     double k = (1.0 - r) / t;
     return k < 1.0 ? 1.0 : k > COMPENSATION_MAX ? COMPENSATION_MAX : k;
+}
+
+/* The compensation at a point: its table's, or interpolated between two levels' (linear in the roughness). */
+static double compensation(const RoughAt *a, double cos_o, double eta)
+{
+    double k = table_compensation(a->a0, cos_o, eta);
+    return a->w == 0.0 ? k : (1.0 - a->w) * k + a->w * table_compensation(a->a1, cos_o, eta);
 }
 
 /* An index-matched interface is none: the light goes straight on, whatever the roughness. */
@@ -82,7 +137,8 @@ static int rough_reflection(const Dielectric *d, GSurfPoint *sp, GVec3 in, const
         gcolor_black(result);
         return G_OK;
     }
-    double v = gmicrofacet_dielectric_reflect(&d->mf, wi, wo, eta);
+    RoughAt a = rough_at(d, sp);
+    double v = gmicrofacet_dielectric_reflect(&a.mf, wi, wo, eta);
     int rc = gcolor_scale(result, illum, v);
     if (rc == G_OK && d->tinted)
         rc = gcolor_mul(result, &d->tint, result);
@@ -101,7 +157,8 @@ static int rough_refraction(const Dielectric *d, GSurfPoint *sp, GVec3 in, const
     if (index_matched(eta)) /* straight on, all of it */
         return goptics_is_refraction_pair(gvec3_neg(out), f.n, 1.0, in) ? gcolor_copy(result, illum)
                                                                        : (gcolor_black(result), G_OK);
-    double v = gmicrofacet_dielectric_refract(&d->mf, wi, wo, eta) * compensation(d, wo.z, eta);
+    RoughAt a = rough_at(d, sp);
+    double v = gmicrofacet_dielectric_refract(&a.mf, wi, wo, eta) * compensation(&a, wo.z, eta);
     return gcolor_scale(result, illum, v);
 }
 
@@ -121,11 +178,12 @@ static int rough_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const 
         rc = gmaterial_sample_weight(self, sp, s->in, out, rel_index, 1, 1.0, weight);
         return rc ? rc : 1;
     }
-    int k = gmicrofacet_dielectric_sample(&d->mf, wo, eta, u1, u2, &wi);
+    RoughAt a = rough_at(d, sp);
+    int k = gmicrofacet_dielectric_sample(&a.mf, wo, eta, u1, u2, &wi);
     if (!k)
         return 0;
     s->in = gframe_to_world(&f, wi);
-    s->pdf = gmicrofacet_dielectric_pdf(&d->mf, wi, wo, eta);
+    s->pdf = gmicrofacet_dielectric_pdf(&a.mf, wi, wo, eta);
     if (!(s->pdf > 0.0))
         return 0;
     s->flags = k == 1 ? GSAMPLE_REFLECT : GSAMPLE_TRANSMIT;
@@ -138,7 +196,8 @@ static double rough_pdf(const Dielectric *d, GSurfPoint *sp, GVec3 in, GVec3 out
     if (index_matched(eta))
         return 0.0;
     GFrame f = rough_frame(d, sp);
-    return gmicrofacet_dielectric_pdf(&d->mf, gframe_to_local(&f, in), gframe_to_local(&f, out), eta);
+    RoughAt a = rough_at(d, sp);
+    return gmicrofacet_dielectric_pdf(&a.mf, gframe_to_local(&f, in), gframe_to_local(&f, out), eta);
 }
 
 /* ---- the methods: the rough interface where it is rough, else the smooth one's ideal rays ---- */
@@ -312,6 +371,18 @@ static const GMaterialClass dielectric_class = {
     .is_delta = dielectric_is_delta,
 };
 
+/* The largest relative index the compensation's tables cover: the material's in vacuum (n and 1 / n over the
+ * wavelengths), with a margin. */
+static double table_eta_max(const Dielectric *d)
+{
+    double hi = 1.0;
+    for (int nm = GNM_MIN; nm <= GNM_MAX; nm++) {
+        double n = gdispersion_index(&d->disp, nm);
+        hi = fmax(hi, fmax(n, 1.0 / n));
+    }
+    return 1.05 * hi;
+}
+
 /* The roughness: checked ([0, 1]), the distribution, and the albedo table of the compensation over the relative
  * indices the material meets in vacuum (n and 1 / n over the wavelengths, with a margin). */
 static int rough_setup(Dielectric *d, const GDielectricRoughness *p, GError *err)
@@ -333,26 +404,58 @@ static int rough_setup(Dielectric *d, const GDielectricRoughness *p, GError *err
     d->rough = 1;
     d->anisotropic = ax != ay;
     d->mf = gmicrofacet_make(p->distribution, ax, ay);
+    d->distribution = p->distribution;
     if (p->uncompensated)
         return G_OK;
-    double hi = 1.0;
-    for (int nm = GNM_MIN; nm <= GNM_MAX; nm++) {
-        double n = gdispersion_index(&d->disp, nm);
-        hi = fmax(hi, fmax(n, 1.0 / n));
-    }
     if (!(d->albedo = gmem_alloc(sizeof *d->albedo)))
         return gerror_set(err, G_ERR_NOMEM, "dielectric: out of memory");
-    gmicrofacet_dielectric_albedo_init(d->albedo, &d->mf, 1.05 * hi);
+    gmicrofacet_dielectric_albedo_init(d->albedo, &d->mf, table_eta_max(d));
     return G_OK;
 }
 
+/* The compensation's tables at DIELECTRIC_LEVELS roughnesses evenly over a textured roughness's range (one when it
+ * is a point), exactly its ends at the first and last; the first is the material's own (rough_setup made it at the
+ * range's lower end). */
+static int rough_levels(Dielectric *d, const GTexNumber *rough, GError *err)
+{
+    gtexparam_number_bounds(rough, &d->level_lo, &d->level_hi);
+    d->nlevels = d->level_hi > d->level_lo ? DIELECTRIC_LEVELS : 1;
+    if (d->albedo) {
+        if (!(d->level_albedo = gmem_calloc((size_t)d->nlevels, sizeof *d->level_albedo)))
+            return gerror_set(err, G_ERR_NOMEM, "dielectric: out of memory");
+        d->level_albedo[0] = *d->albedo;
+        for (int j = 1; j < d->nlevels; j++) {
+            double r = j == d->nlevels - 1 ? d->level_hi : d->level_lo + (d->level_hi - d->level_lo) * j /
+                                                                          (d->nlevels - 1);
+            double alpha = gmicrofacet_alpha_from_roughness(r);
+            GMicrofacet mf = gmicrofacet_make(d->distribution, alpha, alpha);
+            gmicrofacet_dielectric_albedo_init(&d->level_albedo[j], &mf, table_eta_max(d));
+        }
+    }
+    gtexparam_number_copy(&d->tex_rough, rough);
+    return G_OK;
+}
+
+static int dielectric_create(const GColorModel *model, const GDielectricParams *params,
+                             const GDielectricRoughness *rough, const GTexNumber *tex_rough, GMaterial **out,
+                             GError *err);
+
 int gdielectric_create(const GColorModel *model, const GDielectricParams *params, GMaterial **out, GError *err)
 {
-    return gdielectric_create_rough(model, params, NULL, out, err);
+    return dielectric_create(model, params, NULL, NULL, out, err);
 }
 
 int gdielectric_create_rough(const GColorModel *model, const GDielectricParams *params,
                              const GDielectricRoughness *rough, GMaterial **out, GError *err)
+{
+    return dielectric_create(model, params, rough, NULL, out, err);
+}
+
+/* The dielectric of params and rough; tex_rough (NULL, or a generator whose range rough's widths start: rough
+ * everywhere, isotropic) makes its roughness vary over the surface. */
+static int dielectric_create(const GColorModel *model, const GDielectricParams *params,
+                             const GDielectricRoughness *rough, const GTexNumber *tex_rough, GMaterial **out,
+                             GError *err)
 {
     *out = NULL;
     if (!model || !params)
@@ -365,7 +468,12 @@ int gdielectric_create_rough(const GColorModel *model, const GDielectricParams *
         return rc;
     Dielectric *d = (Dielectric *)m;
     d->disp = params->index;
-    if ((rc = rough_setup(d, rough, err)) != G_OK) {
+    rc = rough_setup(d, rough, err);
+    if (rc == G_OK && tex_rough && tex_rough->gen)
+        rc = d->rough && !d->anisotropic ? rough_levels(d, tex_rough, err)
+                                         : gerror_set_param(err, G_ERR_INVALID, "roughness", "dielectric: a textured "
+                                                            "roughness must be isotropic and rough everywhere");
+    if (rc != G_OK) {
         dielectric_destroy(&d->base);
         return rc;
     }
@@ -398,7 +506,7 @@ int gdielectric_create_rough(const GColorModel *model, const GDielectricParams *
         dielectric_destroy(&d->base);
         return rc;
     }
-    if (!d->anisotropic) /* its methods read none of the (u, v) parametrisation (material.h) */
+    if (!d->anisotropic && !gtexparam_number_reads_uv(&d->tex_rough)) /* no (u, v) read (material.h) */
         d->base.flags |= GMAT_NO_UV;
     if (!d->tinted || d->tint.kind == GCOLOR_VECTOR) /* F * illum (* tint), (1 - F) * illum: sample by sample */
         d->base.flags |= GMAT_DIAGONAL;
@@ -407,6 +515,24 @@ int gdielectric_create_rough(const GColorModel *model, const GDielectricParams *
 }
 
 /* ---- the text format ---- */
+
+/* `roughness R`: a number in [0, 1] or a generator whose range lies in [GMICROFACET_ALPHA_MIN, 1] (rough
+ * everywhere: whether the interface is smooth is decided at creation). */
+static int read_roughness(GReader *r, GTexNumber *out, GError *err)
+{
+    GToken t;
+    int rc = greader_peek(r, &t, err);
+    if (rc == G_OK)
+        rc = gtexparam_read_number(r, 0.0, 1.0, 0, "dielectric", "roughness", NULL, out, err);
+    double lo, hi;
+    gtexparam_number_bounds(out, &lo, &hi);
+    if (rc == G_OK && out->gen && lo < GMICROFACET_ALPHA_MIN)
+        return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col,
+                                "dielectric: a textured roughness must stay >= %g, rough everywhere (the generator's "
+                                "range starts at %g; whether the interface is smooth is decided at creation)",
+                                GMICROFACET_ALPHA_MIN, lo);
+    return rc;
+}
 
 /* dielectric { index N | cauchy A B [C] | sellmeier B1 B2 B3 C1 C2 C3 | glass NAME  glass NAME  absorption COLOR
  *              tint COLOR  roughness R | roughness_u R roughness_v R  distribution ggx|beckmann  compensate on|off }:
@@ -417,24 +543,30 @@ static int parse_dielectric(GReader *r, const void *vtable, void **object, GErro
     GColor absorption = {0}, tint = {0};
     GDielectricParams p = {gdispersion_constant(1.5), NULL, NULL};
     GDielectricRoughness rough = {0.0, 0.0, GMICROFACET_GGX, 0};
+    GTexNumber tex_rough = gtexparam_number_const(0.0);
     const char *key;
-    int rc, compensate = 1;
+    int rc, compensate = 1, have_r = 0, have_uv = 0;
     static const char *const distributions[] = {"ggx", "beckmann", NULL};
     while ((rc = greader_param(r, &key, err)) > 0) {
         if (strcmp(key, "roughness") == 0) {
-            if ((rc = gtexparam_read_constant(r, 0.0, 1.0, "dielectric", "roughness", ROUGH_WHY, &rough.roughness_u,
-                                              err)) == G_OK)
-                rough.roughness_v = rough.roughness_u;
-        } else if (strcmp(key, "roughness_u") == 0)
+            if ((rc = read_roughness(r, &tex_rough, err)) == G_OK)
+                rough.roughness_u = rough.roughness_v = tex_rough.value;
+            have_r = 1;
+        } else if (strcmp(key, "roughness_u") == 0) {
             rc = gtexparam_read_constant(r, 0.0, 1.0, "dielectric", "roughness_u", ROUGH_WHY, &rough.roughness_u, err);
-        else if (strcmp(key, "roughness_v") == 0)
+            have_uv = 1;
+        } else if (strcmp(key, "roughness_v") == 0) {
             rc = gtexparam_read_constant(r, 0.0, 1.0, "dielectric", "roughness_v", ROUGH_WHY, &rough.roughness_v, err);
+            have_uv = 1;
+        }
         else if (strcmp(key, "distribution") == 0)
             rc = greader_choice(r, distributions, &rough.distribution, err);
         else if (strcmp(key, "compensate") == 0)
             rc = greader_bool(r, &compensate, err);
-        else if (strcmp(key, "index") == 0)
-            rc = gdispersion_read(r, &p.index, err);
+        else if (strcmp(key, "index") == 0) {
+            if ((rc = gtexparam_refuse_generator(r, "dielectric", "index", INDEX_WHY, err)) == G_OK)
+                rc = gdispersion_read(r, &p.index, err);
+        }
         else if (strcmp(key, "glass") == 0)
             rc = gdispersion_read_glass(r, &p.index, err);
         else if (strcmp(key, "absorption") == 0)
@@ -447,16 +579,19 @@ static int parse_dielectric(GReader *r, const void *vtable, void **object, GErro
         if (rc < 0)
             break;
     }
+    if (rc == G_OK && have_r && have_uv && tex_rough.gen)
+        rc = greader_error(r, err, "dielectric: a textured roughness and roughness_u/roughness_v exclude each other");
     GMaterial *m = NULL;
     if (rc == G_OK) {
         p.absorption = absorption.v ? &absorption : NULL;
         p.tint = tint.v ? &tint : NULL;
         rough.uncompensated = !compensate;
-        if ((rc = gdielectric_create_rough(greader_colormodel(r), &p, &rough, &m, err)) == G_OK)
+        if ((rc = dielectric_create(greader_colormodel(r), &p, &rough, &tex_rough, &m, err)) == G_OK)
             *object = m;
     }
     gcolor_free(&absorption);
     gcolor_free(&tint);
+    gtexparam_number_release(&tex_rough);
     return rc;
 }
 
@@ -471,7 +606,7 @@ static const GParamInfo dielectric_params[] = {
     {"absorption", GPARAM_NAMED, "color", "none (clear)", ">= 0, not a matrix",
      "the absorption coefficient per unit length inside (Beer-Lambert: exp(-a d) of the light passes)"},
     {"tint", GPARAM_NAMED, "color", "none (untinted)", "[0, 1]", "multiplies the light the surface reflects"},
-    {"roughness", GPARAM_NAMED, "number", "0 (smooth)", "[0, 1]",
+    {"roughness", GPARAM_NAMED, "texnumber", "0 (smooth)", "[0, 1]; textured: a range within [0.001, 1]",
      "the microfacet width alpha (the same along both tangents): rough reflection and refraction (Walter et al. "
      "2007); below 0.001 smooth"},
     {"roughness_u", GPARAM_NAMED, "number", "0", "[0, 1]", "the width along dpdu (anisotropic)"},

@@ -27,7 +27,11 @@
  *
  * Sampling: the top's sample() with probability p (its Fresnel reflectance at cos_out, in [0.05, 0.95]), keeping
  * its reflected draws; else a cosine-weighted direction; pdf is p pdf_top + (1 - p) cos / pi; weights are value
- * / pdf with the value above, so they are consistent with reflection() by construction. */
+ * / pdf with the value above, so they are consistent with reflection() by construction.
+ *
+ * Textured (kit/texparam.h): the thickness may be a generator and the albedo a colour texture, read at the point
+ * when a walk starts (the albedo on the point's scratch arena); the top's own parameters (a dielectric's roughness)
+ * are the top's. */
 #include "generic/kit/material_kit.h"
 #include "generic/kit/texparam.h"
 #include "generic/kit/material_params.h"
@@ -48,6 +52,8 @@ typedef struct Layer {
     GMaterial *top, *bottom; /* one reference each */
     double thickness;        /* optical depth of the medium at normal incidence; 0: none */
     GColor albedo;           /* the medium's single-scattering albedo */
+    GTexNumber tex_thickness; /* a textured thickness (gen set), else the constant above */
+    GTexColor tex_albedo;     /* a textured albedo (a mix or an image), else empty */
     int bounces, samples, stack;
     unsigned long long seed;
 } Layer;
@@ -58,6 +64,8 @@ static void layer_destroy(GMaterial *self)
     gmaterial_unref(l->top);
     gmaterial_unref(l->bottom);
     gcolor_free(&l->albedo);
+    gtexparam_number_release(&l->tex_thickness);
+    gtexparam_color_release(&l->tex_albedo);
     gmem_free(l);
 }
 
@@ -97,6 +105,9 @@ typedef struct Walk {
     GColor rel_to, rel_ti, rel_bt;
     GColor white, a, b, c; /* work colours */
     double eta2;           /* (n_top / n_outside)^2 */
+    double thickness;      /* the medium's at the point */
+    const GColor *albedo;  /* the medium's at the point: the layer's, or albedo_at */
+    GColor albedo_at;
     int smooth;            /* the top's lobes are ideal */
     unsigned long long rng;
 } Walk;
@@ -120,6 +131,16 @@ static int walk_open(const Layer *l, GSurfPoint *sp, Walk *w)
         return rc;
     w->l = l;
     w->to = sp;
+    w->thickness = gtexparam_number_at(&l->tex_thickness, sp);
+    w->albedo = &l->albedo;
+    if (l->tex_albedo.kind != GTEXCOLOR_CONSTANT) { /* the texture's colour at sp, within [0, 1] as at creation */
+        if ((rc = gcolor_scratch_uncleared(&w->albedo_at, l->base.model, sp->scratch)) != G_OK ||
+            (rc = gtexparam_color_at(&l->tex_albedo, sp, &w->albedo_at)) != G_OK)
+            return rc;
+        for (int i = 0; i < l->base.model->nvalues; i++)
+            w->albedo_at.v[i] = w->albedo_at.v[i] > 0.0f ? (w->albedo_at.v[i] < 1.0f ? w->albedo_at.v[i] : 1.0f) : 0.0f;
+        w->albedo = &w->albedo_at;
+    }
     w->n = gsurfpoint_normal(sp);
     w->smooth = gmaterial_is_delta(l->top, sp) == 1;
     w->ti = *sp;
@@ -203,7 +224,7 @@ static int walk_entry(Walk *w, GVec3 a, const GColor *illum, GVec3 *d, GColor *l
 static int walk_connect(Walk *w, GColor *radiance, double depth, GVec3 d_exit, const GColor *e, GColor *acc)
 {
     double up = fabs(gvec3_dot(d_exit, w->n));
-    double tr = w->l->thickness > 0.0 ? (up > 1e-9 ? exp(-depth / up) : 0.0) : 1.0;
+    double tr = w->thickness > 0.0 ? (up > 1e-9 ? exp(-depth / up) : 0.0) : 1.0;
     int rc = gcolor_mul(radiance, e, radiance);
     return rc == G_OK ? gcolor_axpy(acc, tr, radiance, acc) : rc;
 }
@@ -213,16 +234,15 @@ static int walk_connect(Walk *w, GColor *radiance, double depth, GVec3 d_exit, c
 static int walk_medium(Walk *w, GVec3 *d, double *depth, GColor *light, int exit_ok, GVec3 d_exit, const GColor *e,
                        GColor *acc)
 {
-    const Layer *l = w->l;
     double dz = gvec3_dot(*d, w->n), mu = fabs(dz);
-    double dist = mu > 1e-12 ? (dz < 0.0 ? l->thickness - *depth : *depth) / mu : INFINITY;
+    double dist = mu > 1e-12 ? (dz < 0.0 ? w->thickness - *depth : *depth) / mu : INFINITY;
     double s = -log(1.0 - next_uniform(&w->rng));
     if (!(s < dist)) {
-        *depth = dz < 0.0 ? l->thickness : 0.0;
+        *depth = dz < 0.0 ? w->thickness : 0.0;
         return 0;
     }
     *depth -= s * dz;
-    int rc = gcolor_mul(light, &l->albedo, light);
+    int rc = gcolor_mul(light, w->albedo, light);
     double mu_e = fabs(gvec3_dot(d_exit, w->n));
     if (rc == G_OK && exit_ok && mu_e > 1e-9) { /* isotropic: intensity albedo * light * mu / (4 pi) per area */
         rc = gcolor_scale(&w->c, light, mu / (4.0 * M_PI * mu_e));
@@ -273,7 +293,7 @@ static int walk_estimate(Walk *w, GVec3 a, GVec3 b, const GColor *illum, GColor 
         return rc;
     double depth = 0.0;
     for (int k = 0; k < l->bounces && rc >= 0; k++) {
-        if (l->thickness > 0.0) {
+        if (w->thickness > 0.0) {
             rc = walk_medium(w, &d, &depth, &light, exit_ok, d_exit, &w->b, acc);
             if (rc != 0)
                 continue;
@@ -282,7 +302,7 @@ static int walk_estimate(Walk *w, GVec3 a, GVec3 b, const GColor *illum, GColor 
         if (gvec3_dot(d, w->n) < 0.0) { /* the bottom, from above */
             rc = gmaterial_reflection(l->bottom, &w->bt, from, &light, gvec3_neg(d_exit), &w->c);
             if (rc == G_OK)
-                rc = walk_connect(w, &w->c, l->thickness, d_exit, &w->b, acc);
+                rc = walk_connect(w, &w->c, w->thickness, d_exit, &w->b, acc);
             if (rc == G_OK)
                 rc = walk_bounce(w, l->bottom, &w->bt, &w->rel_bt, from, &d, &light);
         } else if (w->smooth) { /* the top from inside: its ideal reflection */
@@ -434,9 +454,28 @@ static int stack_of(const GMaterial *m)
 static int cost_of(const GMaterial *m) { return m && m->cost > 0 ? m->cost : 1; }
 static int depth_of(const GMaterial *m) { return m && m->depth > 0 ? m->depth : 1; }
 
-/* The layer of top over bottom (albedo: the medium's, NULL for white) into *out; messages name the parameter. */
+/* The extremes of a textured albedo within [0, 1] (the walk's energy holds for every albedo in [0, 1]). */
+static int check_textured_albedo(const GColorModel *model, const GTexColor *albedo, GError *err)
+{
+    GColor ext[2];
+    int n = 0;
+    int rc = gtexparam_color_extremes(albedo, ext, &n, err);
+    for (int i = 0; i < n; i++) {
+        GColor checked = {0};
+        if (rc == G_OK)
+            rc = gmaterial_param_color(model, &ext[i], GCOLOR_REFLECTANCE, 1.0, "layer", "albedo", &checked, err);
+        gcolor_free(&checked);
+        gcolor_free(&ext[i]);
+    }
+    return rc;
+}
+
+/* The layer of top over bottom (albedo: the medium's, NULL for white) into *out; messages name the parameter.
+ * tex_thickness (a generator, else NULL) and tex_albedo (a mix or an image, else NULL) make those vary over the
+ * surface; their contents are taken when the layer is made. */
 static int layer_create(const GColorModel *model, GMaterial *top, GMaterial *bottom, double thickness,
-                        const GColor *albedo, int bounces, int samples, GMaterial **out, GError *err)
+                        const GColor *albedo, int bounces, int samples, GTexNumber *tex_thickness,
+                        GTexColor *tex_albedo, GMaterial **out, GError *err)
 {
     *out = NULL;
     if (!top || !bottom)
@@ -468,18 +507,30 @@ static int layer_create(const GColorModel *model, GMaterial *top, GMaterial *bot
     l->thickness = thickness, l->bounces = bounces, l->samples = samples, l->stack = stack;
     l->seed = 0x6c61796572ULL; /* "layer" */
     m->cost = (int)cost, m->depth = depth;
+    l->tex_thickness = gtexparam_number_const(thickness);
     if (albedo)
         rc = gmaterial_param_color(model, albedo, GCOLOR_REFLECTANCE, 1.0, "layer", "albedo", &l->albedo, err);
     else if ((rc = gcolor_alloc(&l->albedo, model)) == G_OK)
         rc = gcolor_fill(&l->albedo, 1.0);
     if (rc == G_OK && l->albedo.kind != GCOLOR_VECTOR)
         rc = gerror_set_param(err, G_ERR_INVALID, "albedo", "layer: albedo must be a plain colour, not a matrix");
+    if (rc == G_OK && tex_albedo && tex_albedo->kind != GTEXCOLOR_CONSTANT &&
+        (rc = check_textured_albedo(model, tex_albedo, err)) == G_OK) {
+        l->tex_albedo = *tex_albedo;
+        memset(tex_albedo, 0, sizeof *tex_albedo);
+    }
+    if (rc == G_OK && tex_thickness && tex_thickness->gen) {
+        l->tex_thickness = *tex_thickness;
+        *tex_thickness = gtexparam_number_const(0.0);
+    }
     if (rc != G_OK) {
         layer_destroy(m);
         return rc;
     }
     /* no method reads (u, v) itself; light is filtered sample by sample when both parts do so */
     m->flags |= top->flags & bottom->flags & (GMAT_NO_UV | GMAT_DIAGONAL);
+    if (gtexparam_number_reads_uv(&l->tex_thickness) || gtexparam_color_reads_uv(&l->tex_albedo))
+        m->flags &= ~(unsigned)GMAT_NO_UV;
     *out = m;
     return G_OK;
 }
@@ -489,8 +540,8 @@ static int parse_layer(GReader *r, const void *vtable, void **object, GError *er
 {
     (void)vtable;
     GMaterial *top = NULL, *bottom = NULL;
-    GColor albedo = {0};
-    double thickness = 0.0;
+    GTexColor albedo = {0};
+    GTexNumber thickness = gtexparam_number_const(0.0);
     long bounces = 16, samples = 1;
     const char *key;
     int rc;
@@ -500,12 +551,10 @@ static int parse_layer(GReader *r, const void *vtable, void **object, GError *er
         else if (strcmp(key, "bottom") == 0)
             rc = greader_material(r, &bottom, err);
         else if (strcmp(key, "thickness") == 0)
-            rc = gtexparam_read_constant(r, 0.0, LAYER_MAX_THICKNESS, "layer", "thickness",
-                                         "the medium of the random walks, made at creation", &thickness, err);
-        else if (strcmp(key, "albedo") == 0) {
-            gcolor_free(&albedo);
-            rc = greader_color(r, GCOLOR_REFLECTANCE, &albedo, err);
-        } else if (strcmp(key, "bounces") == 0)
+            rc = gtexparam_read_number(r, 0.0, LAYER_MAX_THICKNESS, 0, "layer", "thickness", NULL, &thickness, err);
+        else if (strcmp(key, "albedo") == 0)
+            rc = gtexparam_read_color(r, GCOLOR_REFLECTANCE, &albedo, err);
+        else if (strcmp(key, "bounces") == 0)
             rc = greader_int(r, 1, LAYER_MAX_BOUNCES, &bounces, err);
         else if (strcmp(key, "samples") == 0)
             rc = greader_int(r, 1, LAYER_MAX_SAMPLES, &samples, err);
@@ -515,10 +564,13 @@ static int parse_layer(GReader *r, const void *vtable, void **object, GError *er
             break;
     }
     GMaterial *m = NULL;
-    if (rc == G_OK && (rc = layer_create(greader_colormodel(r), top, bottom, thickness, albedo.v ? &albedo : NULL,
-                                         (int)bounces, (int)samples, &m, err)) == G_OK)
+    const GColor *constant = gtexparam_color_constant(&albedo);
+    if (rc == G_OK && (rc = layer_create(greader_colormodel(r), top, bottom, thickness.value,
+                                         constant && constant->v ? constant : NULL, (int)bounces, (int)samples,
+                                         &thickness, &albedo, &m, err)) == G_OK)
         *object = m;
-    gcolor_free(&albedo);
+    gtexparam_color_release(&albedo);
+    gtexparam_number_release(&thickness);
     return rc;
 }
 
@@ -526,9 +578,9 @@ static const GParamInfo layer_params[] = {
     {"top", GPARAM_NAMED, "material", "(required)", "a dielectric-like interface",
      "the interface on top: its reflection, refraction and sampling (smooth when is_delta says so, else rough)"},
     {"bottom", GPARAM_NAMED, "material", "(required)", "any material", "what lies under the top"},
-    {"thickness", GPARAM_NAMED, "number", "0 (no medium)", "[0, 100]",
+    {"thickness", GPARAM_NAMED, "texnumber", "0 (no medium)", "[0, 100]",
      "the optical depth of a medium between them at normal incidence (extinction 1 per unit)"},
-    {"albedo", GPARAM_NAMED, "color", "rgb 1 1 1", "[0, 1], not a matrix",
+    {"albedo", GPARAM_NAMED, "texcolor", "rgb 1 1 1", "[0, 1], not a matrix",
      "the medium's single-scattering albedo (isotropic scattering)"},
     {"bounces", GPARAM_NAMED, "integer", "16", "[1, 64]", "the most events of one random walk"},
     {"samples", GPARAM_NAMED, "integer", "1", "[1, 64]", "random walks per direction and evaluation"},

@@ -1,7 +1,8 @@
 /* test_gtrace_texparam.c - textured parameters rendered by gtrace (kit/texparam.h): a reflectance read from an image
  * renders exactly what the image node over a white lambert renders, and a checker-driven phong exponent (or
- * conductor roughness) renders, in each cell of the checker, exactly the render with that cell's constant value;
- * both integrators, pixel for pixel (every float equal). */
+ * conductor, plastic or dielectric roughness, plastic reflectance, layer thickness and albedo) renders, in each
+ * cell of the checker, exactly the render with that cell's constant value; both integrators, pixel for pixel (every
+ * float equal). */
 #include "test_gtrace_common.h"
 
 #include "embed/render_file.h"
@@ -67,15 +68,14 @@ static const char checker_scene[] =
     "light background { color rgb 0.2 0.2 0.25 }\n"
     "object plane { point <0, 0, 0> normal <0, 1, 0> material %s }\n";
 
-/* A material whose parameter is driven by checker { dims 2 frequency 1 range LO HI } (the format's %s in `form`):
+/* A material whose parameter (the format's %s in `form`) is texture, driven by checker { dims 2 frequency 1 }:
  * where the checker is 0 (a mask rendered with an emitter of radiance mix { by the same checker a black b white })
  * the pixel equals the render with the constant LO, where it is 1 the render with HI; and the two constant renders
  * differ there, so the comparison can fail. Both integrators. */
-static void check_cells(const char *form, const char *lo, const char *hi)
+static void check_cells_by(const char *form, const char *lo, const char *hi, const char *texture)
 {
-    char textured[512], a_text[512], b_text[512], range[128];
-    snprintf(range, sizeof range, "checker { dims 2 frequency 1 range %s %s }", lo, hi);
-    snprintf(textured, sizeof textured, form, range);
+    char textured[512], a_text[512], b_text[512];
+    snprintf(textured, sizeof textured, form, texture);
     snprintf(a_text, sizeof a_text, form, lo);
     snprintf(b_text, sizeof b_text, form, hi);
     for (int integrator = 0; integrator < 2; integrator++) {
@@ -110,6 +110,22 @@ static void check_cells(const char *form, const char *lo, const char *hi)
     }
 }
 
+/* check_cells_by with the number parameter driven by checker { dims 2 frequency 1 range LO HI }. */
+static void check_cells(const char *form, const char *lo, const char *hi)
+{
+    char range[128];
+    snprintf(range, sizeof range, "checker { dims 2 frequency 1 range %s %s }", lo, hi);
+    check_cells_by(form, lo, hi, range);
+}
+
+/* check_cells_by with the colour parameter a mix of LO and HI by the checker. */
+static void check_color_cells(const char *form, const char *lo, const char *hi)
+{
+    char mix[256];
+    snprintf(mix, sizeof mix, "mix { by checker { dims 2 frequency 1 } a %s b %s }", lo, hi);
+    check_cells_by(form, lo, hi, mix);
+}
+
 /* phong's exponent: 10 and 200 in the cells. */
 static void test_checker_exponent_cells(void **state)
 {
@@ -124,6 +140,31 @@ static void test_checker_roughness_cells(void **state)
     check_cells("conductor { metal Au roughness %s }", "0.05", "0.6");
 }
 
+/* plastic's roughness: 0.05 and 0.5 (the ends of its tabulated levels); its reflectance: a mix of two colours. */
+static void test_checker_plastic_cells(void **state)
+{
+    (void)state;
+    check_cells("plastic { reflectance rgb 0.2 0.4 0.6 roughness %s }", "0.05", "0.5");
+    check_color_cells("plastic { reflectance %s roughness 0.2 }", "rgb 0.2 0.4 0.6", "rgb 0.7 0.1 0.1");
+}
+
+/* dielectric's roughness: 0.05 and 0.5 (the ends of its tabulated levels). */
+static void test_checker_dielectric_cells(void **state)
+{
+    (void)state;
+    check_cells("dielectric { glass BK7 roughness %s }", "0.05", "0.5");
+}
+
+/* layer's medium: its thickness 0.2 and 2 in the cells; its albedo a mix of two colours. */
+static void test_checker_layer_cells(void **state)
+{
+    (void)state;
+    check_cells("layer { top dielectric { } bottom lambert { reflectance rgb 0.5 0.4 0.3 } thickness %s "
+                "albedo rgb 0.8 0.5 0.3 }", "0.2", "2");
+    check_color_cells("layer { top dielectric { } bottom lambert { reflectance rgb 0.5 0.4 0.3 } thickness 1 "
+                      "albedo %s }", "rgb 0.8 0.5 0.3", "rgb 0.2 0.6 0.9");
+}
+
 int main(void)
 {
     GError err;
@@ -135,6 +176,9 @@ int main(void)
         cmocka_unit_test(test_image_reflectance_equals_image_node),
         cmocka_unit_test(test_checker_exponent_cells),
         cmocka_unit_test(test_checker_roughness_cells),
+        cmocka_unit_test(test_checker_plastic_cells),
+        cmocka_unit_test(test_checker_dielectric_cells),
+        cmocka_unit_test(test_checker_layer_cells),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

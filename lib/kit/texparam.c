@@ -83,6 +83,16 @@ int gtexparam_read_constant(GReader *r, double lo, double hi, const char *materi
     return rc;
 }
 
+int gtexparam_refuse_generator(GReader *r, const char *material, const char *param, const char *why, GError *err)
+{
+    GToken t;
+    int rc = greader_peek(r, &t, err);
+    if (rc != G_OK || !starts_generator(r, &t))
+        return rc;
+    return greader_error_at(r, err, G_ERR_PARSE, t.line, t.col, "%s: %s must be constant (%s), not a generator",
+                            material, param, why);
+}
+
 /* ---- colours ---- */
 
 void gtexparam_color_release(GTexColor *p)

@@ -60,6 +60,11 @@ GENERIC_API GENERIC_NODISCARD int gtexparam_read_number(GReader *r, double lo, d
 GENERIC_API GENERIC_NODISCARD int gtexparam_read_constant(GReader *r, double lo, double hi, const char *material,
                                                           const char *param, const char *why, double *out,
                                                           GError *err);
+/** Refuses a generator where a parameter read by other means (a formula, a choice) must stay constant: G_OK (nothing
+ * read) when the next token does not begin a generator, else G_ERR_PARSE at it, "<material>: <param> must be
+ * constant (<why>), not a generator". */
+GENERIC_API GENERIC_NODISCARD int gtexparam_refuse_generator(GReader *r, const char *material, const char *param,
+                                                             const char *why, GError *err);
 /** Copies p into *out with a reference of its own to the generator. */
 GENERIC_API void gtexparam_number_copy(GTexNumber *out, const GTexNumber *p);
 /** Drops the generator's reference; *p becomes the constant 0. */
