@@ -15,6 +15,7 @@
  * its centre, the chromatic and the three single renders from disjoint sample indices (independent streams), and
  * sigma of the difference from the per-pixel sample variances: sum over the renders of W^2 var / n. */
 #include "test_gtrace_common.h"
+#include "test_gtrace_pixel_stats.h"
 #include "media/medium.h"
 
 #include "generic/builtins.h"
@@ -99,62 +100,10 @@ static void free_medium(Medium *m)
     gcolor_free(&m->sigma_s);
 }
 
-/* Linear sRGB of a light colour, as the framebuffer stores a pixel. */
-static void light_rgb(const GColor *c, double rgb[3])
-{
-    double xyz[3];
-    assert_int_equal(gcolor_to_xyz(c, GCOLOR_LIGHT, xyz), G_OK);
-    gcie_xyz_to_rgb(xyz, rgb);
-}
-
-/* Renders s with the path tracer, n samples (indices first .. first + n - 1) through each pixel's centre: the mean
- * and the variance of the mean per pixel and channel. */
+/* Renders s, samples first .. first + n - 1 per pixel, into st. */
 static void render_stats(Scene *s, int first, int n, Stats *st)
 {
-    GError err;
-    gerror_clear(&err);
-    RenderSettings rs = {.width = SIDE, .height = SIDE, .spp = 1, .depth = s->camera.depth, .threads = 1,
-                         .quiet = 1, .integrator = RENDER_PATH, .sampler = SAMPLER_INDEPENDENT};
-    Framebuffer fb;
-    Renderer *r = NULL;
-    if (renderer_create(&r, s, &rs, &fb, &err) != G_OK)
-        fail_msg("renderer_create: %s", err.message);
-    TraceCtx *c = renderer_thread_ctx(r, 0);
-    const Camera *cam = renderer_camera(r);
-    const Media *media = renderer_media(r);
-    GColor sample = {0};
-    assert_int_equal(gcolor_alloc(&sample, s->model), G_OK);
-    for (int p = 0; p < NPIX; p++) {
-        Ray ray;
-        camera_ray(cam, p % SIDE + 0.5, p / SIDE + 0.5, &ray);
-        double first_rgb[3] = {0}, sum[3] = {0}, sum2[3] = {0}; /* sums of the differences to the first sample */
-        for (int i = 0; i < n; i++) {
-            GScratchMark mark = gscratch_mark(c->scratch);
-            c->weight = 1.0;
-            c->rays_left = RENDER_DEFAULT_MAX_RAYS;
-            c->capped = 0;
-            assert_int_equal(path_trace(c, &ray, media, (uint64_t)p, first + i, SAMPLER_INDEPENDENT, &sample), G_OK);
-            gscratch_release(c->scratch, mark);
-            assert_true(gcolor_is_finite(&sample));
-            double rgb[3];
-            light_rgb(&sample, rgb);
-            for (int ch = 0; ch < 3; ch++) {
-                if (i == 0)
-                    first_rgb[ch] = rgb[ch];
-                double dev = rgb[ch] - first_rgb[ch];
-                sum[ch] += dev;
-                sum2[ch] += dev * dev;
-            }
-        }
-        for (int ch = 0; ch < 3; ch++) {
-            double mean = sum[ch] / n; /* exactly 0 where every sample is the same (the sky) */
-            st->mean[p][ch] = first_rgb[ch] + mean;
-            st->var[p][ch] = fmax(0.0, sum2[ch] / n - mean * mean) / (n - 1);
-        }
-    }
-    gcolor_free(&sample);
-    renderer_destroy(r);
-    framebuffer_free(&fb);
+    pixel_stats(s, SIDE, SIDE, first, n, &st->mean[0][0], &st->var[0][0]);
 }
 
 static void test_chromatic_sphere(void **state)
