@@ -259,7 +259,9 @@ static void test_liquid_in_glass(void **state)
                       got[1] / w[1] - 1.0, got[2] / w[2] - 1.0, sd[0] / w[0], w1[0], w1[1], w1[2]);
         for (int c = 0; c < 3; c++) {
             assert_true(w[c] > 0.05 * sky[c]);
-            assert_near(got[c], w[c], fmax(3.0 * sd[c], 0.0) + (SANITIZED ? 1e-2 : 1e-3) * w[c]);
+            /* within 1e-3 (the single pass, without the inter-reflections, is 1.5e-3 below in rgb's red) */
+            assert_near(got[c], w[c], (SANITIZED ? 1e-2 : 1e-3) * w[c]);
+            assert_true(sd[c] < (SANITIZED ? 3e-3 : 5e-4) * w[c]);
         }
         gcolor_free(&want);
         gcolor_free(&once);
