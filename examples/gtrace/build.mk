@@ -151,3 +151,6 @@ media-cloud: $(BUILD)/bin/gtrace $(GTRACE_VDB_READER)
 	$(BUILD)/bin/gtrace $(BUILD)/media/media_cloud.scene --integrator path -o $(BUILD)/media/media_cloud.png
 bench-media: $(BUILD)/bin/gtrace $(GTRACE_VDB_READER)
 	@bench/media.sh $(BUILD)
+.PHONY: bench-media-noise
+bench-media-noise: $(BUILD)/bin/gtrace $(BUILD)/bin/gprobe
+	@bench/media_noise.sh $(BUILD)
