@@ -39,8 +39,8 @@ scene grey6 6 6 6
 scene grey9 9 9 9
 # cpu SCENE MODEL SPP OUT: the process's CPU seconds on 1 thread
 cpu() {
-    /usr/bin/time -f '%U %S' -o "$TMP/cpu" "$GT" "$TMP/$1.scene" -o "$4" --colormodel "$2" --spp "$3" --integrator path \
-        --threads 1 -q > /dev/null 2>&1 && awk '{ printf "%.3f\n", $1 + $2 }' "$TMP/cpu"
+    /usr/bin/time -f '%U %S' -o "$TMP/cpu" "$GT" "$TMP/$1.scene" -o "$4" --colormodel "$2" --spp "$3" \
+        --integrator path --threads 1 -q > /dev/null 2>&1 && awk '{ printf "%.3f\n", $1 + $2 }' "$TMP/cpu"
 }
 best() { # SCENE MODEL SPP OUT: the shorter of two runs
     a=$(cpu "$@") && b=$(cpu "$@") && awk -v a="$a" -v b="$b" 'BEGIN { print (a < b ? a : b) }'

@@ -254,7 +254,8 @@ static void test_liquid_in_glass(void **state)
             sd[c] = sqrt(v / 16.0);
         }
         print_message("%s: band transmittance %.4f .. %.4f; rendered %.5f %.5f %.5f, stack %.5f %.5f %.5f "
-                      "(relative %+.2e %+.2e %+.2e, noise %.1e; single pass without the inter-reflections %.5f %.5f %.5f)\n",
+                      "(relative %+.2e %+.2e %+.2e, noise %.1e; single pass without the inter-reflections "
+                      "%.5f %.5f %.5f)\n",
                       models[k], lo, hi, got[0], got[1], got[2], w[0], w[1], w[2], got[0] / w[0] - 1.0,
                       got[1] / w[1] - 1.0, got[2] / w[2] - 1.0, sd[0] / w[0], w1[0], w1[1], w1[2]);
         for (int c = 0; c < 3; c++) {
