@@ -15,13 +15,16 @@ static inline void light_rgb(const GColor *c, double rgb[3])
 /* Renders s (accel_build done) at width x height with the path tracer and its independent sampler, n samples (indices
  * first .. first + n - 1, so that disjoint ranges are independent renders) through each pixel's centre, on one
  * thread: mean[3 p + c] and var[3 p + c], the mean of pixel p's samples in channel c and the variance of that mean
- * (the sample variance over n), for p = y * width + x. Every sample must be finite. */
-static inline void pixel_stats(Scene *s, int width, int height, int first, int n, double *mean, double *var)
+ * (the sample variance over n), for p = y * width + x. Every sample must be finite. no_equiangular: the path tracer
+ * without equiangular sampling in media (RenderSettings.no_equiangular). */
+static inline void pixel_stats_opt(Scene *s, int width, int height, int first, int n, int no_equiangular, double *mean,
+                                   double *var)
 {
     GError err;
     gerror_clear(&err);
     RenderSettings rs = {.width = width, .height = height, .spp = 1, .depth = s->camera.depth, .threads = 1,
-                         .quiet = 1, .integrator = RENDER_PATH, .sampler = SAMPLER_INDEPENDENT};
+                         .quiet = 1, .integrator = RENDER_PATH, .sampler = SAMPLER_INDEPENDENT,
+                         .no_equiangular = no_equiangular};
     Framebuffer fb;
     Renderer *r = NULL;
     if (renderer_create(&r, s, &rs, &fb, &err) != G_OK)
@@ -62,6 +65,12 @@ static inline void pixel_stats(Scene *s, int width, int height, int first, int n
     gcolor_free(&sample);
     renderer_destroy(r);
     framebuffer_free(&fb);
+}
+
+/* pixel_stats_opt with the path tracer's defaults. */
+static inline void pixel_stats(Scene *s, int width, int height, int first, int n, double *mean, double *var)
+{
+    pixel_stats_opt(s, width, height, first, n, 0, mean, var);
 }
 
 #endif
