@@ -154,3 +154,6 @@ bench-media: $(BUILD)/bin/gtrace $(GTRACE_VDB_READER)
 .PHONY: bench-media-noise
 bench-media-noise: $(BUILD)/bin/gtrace $(BUILD)/bin/gprobe
 	@bench/media_noise.sh $(BUILD)
+.PHONY: bench-media-equiangular
+bench-media-equiangular: $(BUILD)/bin/gtrace $(BUILD)/bin/gprobe
+	@bench/media_equiangular.sh $(BUILD)
