@@ -175,3 +175,9 @@ uninstall-mesh-reader:
 $(BUILD)/obj/bench/bench_mesh_decode.o: CPPFLAGS += -Iexamples/gtrace
 $(BUILD)/bench/bench_mesh_decode: $(GTRACE_LIB) | $(GTRACE_MESH_READER)
 $(BUILD)/bench/bench_mesh_decode: DEPLIBS := $(GTRACE_LIB) $(LIBA) $(GTRACE_DEPLIBS) $(DEPLIBS)
+.PHONY: bench-media-noise
+bench-media-noise: $(BUILD)/bin/gtrace $(BUILD)/bin/gprobe
+	@bench/media_noise.sh $(BUILD)
+.PHONY: bench-media-equiangular
+bench-media-equiangular: $(BUILD)/bin/gtrace $(BUILD)/bin/gprobe
+	@bench/media_equiangular.sh $(BUILD)

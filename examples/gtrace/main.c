@@ -56,7 +56,7 @@ static void usage(FILE *f)
             "              [--probe FILE] [--probe-technique T] [--probe-count N] [--probe-samples N]\n"
             "              [--probe-scale S] [--probe-shadows on|off] [--crop X0,Y0,X1,Y1]\n"
             "              [--integrator whitted|path|sppm|light] [--passes N] [--photons N] [--radius R] [--alpha A]\n"
-            "              [--sampler sobol|independent]\n"
+            "              [--sampler sobol|independent] [--equiangular on|off]\n"
             "              [--spectral] [--display D] [--view V] [--ocio-config FILE]\n"
             "              [--mpi-block N] [--mpi-timeout S] [--mpi-dedicated]\n"
             "       gtrace merge PIECE... -o OUT\n"
@@ -109,6 +109,8 @@ static void usage(FILE *f)
             "  --alpha A         sppm: fraction of a pass's photons kept, in (0, 1] (default 2/3)\n"
             "  --sampler S       path: sobol (default: pixel positions, light and material samples from\n"
             "                    each pixel's scrambled Sobol sequence) or independent (random numbers)\n"
+            "  --equiangular on|off  path: also sample scattering in homogeneous media towards point, spot\n"
+            "                    and IES lights by equiangular sampling, MIS-weighted (default on)\n"
             "  --exposure STOPS  exposure for .png/.jpg output (default: the camera's)\n"
             "  --probe FILE      replace the image of the scene's `light probe` (relative to the current\n"
             "                    directory); the other --probe options replace its other settings\n"
@@ -161,7 +163,8 @@ enum {
     OPT_WIDTH = CLI_FIRST_OWN, OPT_HEIGHT, OPT_SPP, OPT_DEPTH, OPT_MAX_RAYS, OPT_THREADS, OPT_COLORMODEL,
     OPT_EXPOSURE, OPT_CUTOFF, OPT_CROP, OPT_BANDS, OPT_INTEGRATOR, OPT_PROBE, OPT_PROBE_TECHNIQUE, OPT_PROBE_COUNT, OPT_PROBE_SAMPLES,
     OPT_PROBE_SHADOWS, OPT_PROBE_SCALE, OPT_WAVES, OPT_DISPLAY, OPT_VIEW, OPT_OCIO_CONFIG, OPT_MPI_BLOCK,
-    OPT_MPI_TIMEOUT, OPT_MPI_DEDICATED, OPT_PASSES, OPT_PHOTONS, OPT_RADIUS, OPT_ALPHA, OPT_SAMPLER
+    OPT_MPI_TIMEOUT, OPT_MPI_DEDICATED, OPT_PASSES, OPT_PHOTONS, OPT_RADIUS, OPT_ALPHA, OPT_SAMPLER,
+    OPT_EQUIANGULAR
 };
 
 /* The --probe options (code c, its value v); -1 with a message for a bad one. */
@@ -204,6 +207,7 @@ typedef struct Options {
     int width, height, spp, depth, threads, quiet, max_rays, bands, integrator, waves;
     int passes, photons;   /* --integrator sppm (0: its defaults) */
     int sampler;           /* --sampler: SAMPLER_SOBOL (0, default) or SAMPLER_INDEPENDENT */
+    int no_equiangular;    /* --equiangular off */
     double radius, alpha;
     int have_exposure, have_cutoff, have_crop;
     int crop[4]; /* x0, y0, x1, y1 */
@@ -253,6 +257,7 @@ static int parse_args(int argc, char **argv, Options *o)
         {"bands", required_argument, NULL, OPT_BANDS},
         {"integrator", required_argument, NULL, OPT_INTEGRATOR},
         {"sampler", required_argument, NULL, OPT_SAMPLER},
+        {"equiangular", required_argument, NULL, OPT_EQUIANGULAR},
         {"passes", required_argument, NULL, OPT_PASSES},
         {"photons", required_argument, NULL, OPT_PHOTONS},
         {"radius", required_argument, NULL, OPT_RADIUS},
@@ -332,6 +337,14 @@ static int parse_args(int argc, char **argv, Options *o)
                 o->sampler = strcmp(optarg, "sobol") == 0 ? SAMPLER_SOBOL : SAMPLER_INDEPENDENT;
             } else {
                 fprintf(stderr, "gtrace: --sampler expects sobol or independent, got '%s'\n", optarg);
+                rc = -1;
+            }
+            break;
+        case OPT_EQUIANGULAR:
+            if (strcmp(optarg, "on") == 0 || strcmp(optarg, "off") == 0) {
+                o->no_equiangular = strcmp(optarg, "off") == 0;
+            } else {
+                fprintf(stderr, "gtrace: --equiangular expects on or off, got '%s'\n", optarg);
                 rc = -1;
             }
             break;
@@ -431,11 +444,11 @@ static const char *piece_note(const Options *o, const Scene *scene, const Render
     gmem_free(text);
     const ProbeOverride *p = &o->probe;
     snprintf(buf, size, "scene %016llx; colormodel %s; size %dx%d; spp %d; depth %d; max-rays %d; bands %d; "
-             "integrator %d; cutoff %.17g; waves %d; probe %.100s %.40s %d %d %.17g %d; sampler %d",
+             "integrator %d; cutoff %.17g; waves %d; probe %.100s %.40s %d %d %.17g %d; sampler %d; equiangular %d",
              (unsigned long long)h,
              gcolormodel_name(scene->model), rs->width, rs->height, rs->spp, rs->depth, rs->max_rays, rs->bands,
              rs->integrator, rs->cutoff, rs->waves, p->file ? p->file : "-", p->technique ? p->technique : "-",
-             p->count, p->samples, p->scale, p->shadows, rs->sampler);
+             p->count, p->samples, p->scale, p->shadows, rs->sampler, !rs->no_equiangular);
     return buf;
 }
 
@@ -460,7 +473,7 @@ static int prepare(const Options *o, const GReaderOptions *trust, int check_outp
                            .max_rays = o->max_rays, .bands = o->bands > 0 ? o->bands : cam->bands,
                            .integrator = o->integrator, .waves = o->waves, .sppm_passes = o->passes,
                            .sppm_photons = o->photons, .sppm_radius = o->radius, .sppm_alpha = o->alpha,
-                           .sampler = o->sampler};
+                           .sampler = o->sampler, .no_equiangular = o->no_equiangular};
     if (o->width > 0 && o->height > 0) {
         rs->width = o->width;
         rs->height = o->height;

@@ -88,6 +88,8 @@ expect 2 "gtrace with two scenes" "more than one scene file" -- "$GT" "$TMP/good
 expect 2 "gtrace --crop outside" "--crop" -- "$GT" "$TMP/good.scene" -o "$TMP/x.png" --crop 0,0,64,64
 expect 2 "gtrace --sampler unknown" "--sampler expects sobol or independent" -- "$GT" "$TMP/good.scene" -o "$TMP/x.png" \
     --sampler halton
+expect 2 "gtrace --equiangular unknown" "--equiangular expects on or off" -- "$GT" "$TMP/good.scene" -o "$TMP/x.png" \
+    --equiangular yes
 expect 2 "gtrace --plugin without a value" "--plugin needs a value" -- "$GT" "$TMP/good.scene" -o "$TMP/x.png" --plugin
 expect 2 "gtrace --confine not a directory" "--confine" -- "$GT" "$TMP/good.scene" -o "$TMP/x.png" --confine=/nonexistent
 expect 1 "gtrace of a missing scene" "No such file" -- "$GT" "$TMP/none.scene" -o "$TMP/x.png"

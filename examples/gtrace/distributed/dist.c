@@ -148,7 +148,8 @@ uint64_t dist_digest(const char *scene_path, const char *model, const RenderSett
     h = fnv(h, scene_path, strlen(scene_path) + 1);
     h = fnv(h, model ? model : "", strlen(model ? model : "") + 1);
     int v[] = {rs->width, rs->height, rs->spp, rs->depth, rs->max_rays, rs->bands, rs->integrator,
-               rs->crop[0], rs->crop[1], rs->crop[2], rs->crop[3], rs->waves, rs->sampler, rs->sppm_passes};
+               rs->crop[0], rs->crop[1], rs->crop[2], rs->crop[3], rs->waves, rs->sampler, rs->sppm_passes,
+               rs->no_equiangular};
     h = fnv(h, v, sizeof v);
     double f[] = {rs->cutoff, (double)rs->sppm_photons, rs->sppm_radius, rs->sppm_alpha};
     return fnv(h, f, sizeof f);

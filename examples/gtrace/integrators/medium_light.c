@@ -10,6 +10,7 @@
 #include "lights/lighting.h"
 #include "scene/accel.h"
 #include "scene/ies.h"
+#include "media/equiangular.h"
 
 #include <math.h>
 
@@ -44,7 +45,24 @@ static int add_sample(TraceCtx *c, const Medium *vol, const Media *media, GVec3 
     return rc;
 }
 
-int medium_direct_light(TraceCtx *c, const Medium *vol, const Media *media, GVec3 x, GVec3 d, GColor *out)
+/* 1 for the lights equiangular sampling serves: a point of light in the medium. */
+static int point_like(const Light *l)
+{
+    return l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT || l->kind == LIGHT_IES;
+}
+
+/* The balance heuristic's weight of free flight's event at way->t against equiangular sampling towards position. */
+static double free_flight_weight(const Medium *vol, const MediumWay *way, GVec3 position)
+{
+    Equiangular e;
+    if (!way || !equiangular_setup(&e, way->o, way->d, way->tmax, position))
+        return 1.0;
+    double pd = medium_distance_pdf(vol, way->t), pe = equiangular_pdf(&e, way->t);
+    return pd + pe > 0.0 ? pd / (pd + pe) : 1.0;
+}
+
+int medium_direct_light(TraceCtx *c, const Medium *vol, const Media *media, GVec3 x, GVec3 d, const MediumWay *way,
+                        GColor *out)
 {
     const Scene *s = c->scene;
     GScratchMark mark = gscratch_mark(c->scratch);
@@ -67,6 +85,8 @@ int medium_direct_light(TraceCtx *c, const Medium *vol, const Media *media, GVec
                 f = light_spot_factor(l, in);
             else if (l->kind == LIGHT_IES)
                 f = ies_candela_dir(l->ies, gvec3_neg(in), l->direction, l->along, l->third);
+            if (f > 0.0)
+                f *= free_flight_weight(vol, way, l->position);
             if (f > 0.0)
                 rc = add_sample(c, vol, media, x, d, in, dist, &l->color, f / (dist * dist), 0, out);
             break;
@@ -97,6 +117,49 @@ int medium_direct_light(TraceCtx *c, const Medium *vol, const Media *media, GVec
         else if (got && pdf > 0.0)
             rc = add_sample(c, vol, media, x, d, in, dist * EMISSIVE_SHADOW_SHORTEN, &L,
                             mis_power(pdf, phase_eval(vol->phase, d, in)) / pdf, 1, out);
+    }
+    gscratch_release(c->scratch, mark);
+    return rc;
+}
+
+int medium_equiangular_light(TraceCtx *c, const Medium *vol, const Media *media, const MediumWay *way, GColor *out)
+{
+    const Scene *s = c->scene;
+    GScratchMark mark = gscratch_mark(c->scratch);
+    GColor light = {0}, weight = {0};
+    int rc = G_OK;
+    for (int i = 0; i < s->nlights && rc == G_OK; i++) {
+        const Light *l = s->lights[i];
+        Equiangular e;
+        if (!point_like(l) || !equiangular_setup(&e, way->o, way->d, way->tmax, l->position))
+            continue;
+        double pe, t = equiangular_sample(&e, rng_next(&c->rng), &pe);
+        if (!(t > 0.0 && t < way->tmax && pe > 0.0))
+            continue;
+        GVec3 x = gvec3_madd(way->o, way->d, t), to = gvec3_sub(l->position, x);
+        double dist = gvec3_length(to), f = 1.0;
+        if (!(dist > 0.0))
+            continue;
+        GVec3 in = gvec3_scale(to, 1.0 / dist);
+        if (l->kind == LIGHT_SPOT)
+            f = light_spot_factor(l, in);
+        else if (l->kind == LIGHT_IES)
+            f = ies_candela_dir(l->ies, gvec3_neg(in), l->direction, l->along, l->third);
+        if (!(f > 0.0))
+            continue;
+        if (!light.v) { /* the first sample: its temporaries */
+            if ((rc = gcolor_scratch(&light, s->model, c->scratch)) < 0 ||
+                (rc = gcolor_scratch_uncleared(&weight, s->model, c->scratch)) < 0)
+                break;
+        } else
+            gcolor_black(&light);
+        /* the light's sample at x, then times exp(-sigma_t t) sigma_s / (pe + pd) */
+        if ((rc = add_sample(c, vol, media, x, way->d, in, dist, &l->color, f / (dist * dist), 0, &light)) < 0 ||
+            (rc = gcolor_exp(&weight, &vol->sigma_t, -t)) < 0 ||
+            (rc = gcolor_mul(&weight, &weight, &vol->sigma_s)) < 0 ||
+            (rc = gcolor_mul(&light, &light, &weight)) < 0)
+            break;
+        rc = gcolor_add_scaled(out, &light, 1.0 / (pe + medium_distance_pdf(vol, t)));
     }
     gscratch_release(c->scratch, mark);
     return rc;

@@ -54,6 +54,9 @@
  * a scattering event there is a medium vertex (medium_vertex: NEE through medium_light.c's medium_direct_light, one
  * direction drawn from the phase function, whose density is the MIS weight's for the lights that ray meets), else
  * the ray goes on to arrive() and the sample's weight (transmittance over probability) multiplies what comes back.
+ * In a homogeneous medium that scatters, point, spot and IES lights are also sampled along the ray by equiangular
+ * sampling (medium_light.c's medium_equiangular_light, one distance per light; TraceCtx.equiangular), and the light
+ * the free-flight vertex gathers from them is weighted against it (the balance heuristic over the two strategies).
  * The shadow rays of every vertex are attenuated by the media they cross (TraceCtx.volumes).
  *
  * Random numbers: with the default sampler (trace/sampler.h, SAMPLER_SOBOL) the numbers that decide most of the
@@ -86,6 +89,7 @@ typedef struct PathCtx {
     int from_medium;        /**< set for the ray a medium vertex traces next (read and cleared by path_radiance):
                              * the probe was not sampled there, so the background it meets counts fully */
     int sobol;              /**< the path's own numbers come from the sample point (SAMPLER_SOBOL) */
+    int point_lights;       /**< the scene has point, spot or IES lights (equiangular sampling in media serves them) */
     SamplePoint point;      /**< the camera sample's point in the pixel's sequence */
     SampleGroup group;      /**< its group used last (group 0, the camera's, is never used here: none yet) */
 } PathCtx;
@@ -446,7 +450,7 @@ done:
 /* The light scattered towards -r->d at x in medium vol: NEE (medium_light.c) and one direction drawn from
  * the phase function, traced on (its density is prev_pdf there, for the MIS weight of a light it reaches). */
 static int medium_vertex(PathCtx *p, const Ray *r, const Media *media, const Medium *vol, GVec3 x, int depth,
-                         double beta, GColor *out)
+                         double beta, const MediumWay *way, GColor *out)
 {
     TraceCtx *c = p->c;
     GScratchMark mark = gscratch_mark(c->scratch);
@@ -454,7 +458,7 @@ static int medium_vertex(PathCtx *p, const Ray *r, const Media *media, const Med
     int rc = G_OK;
     CHECK(gcolor_fill(out, 0.0));
     if (c->scene->nlights > 0 || c->emissive)
-        CHECK(medium_direct_light(c, vol, media, x, r->d, out));
+        CHECK(medium_direct_light(c, vol, media, x, r->d, way, out));
     if (depth >= c->max_depth)
         goto done;
     double q = 1.0;
@@ -499,13 +503,18 @@ static int medium_segment(PathCtx *p, const Ray *r, const Media *media, const Me
     else
         CHECK(ev = medium_sample_distance(vol, t_l, uniform(p), uniform(p), &t, &w));
     double nb = beta * gcolor_brightness(&w);
+    /* point, spot and IES lights: equiangular samples too, MIS-weighted against free flight's (homogeneous media) */
+    MediumWay way = {r->o, r->d, t_l, t};
+    int equiangular = c->equiangular && !vol->grid && vol->scatters && p->point_lights;
     if (ev)
-        CHECK(medium_vertex(p, r, media, vol, gvec3_madd(r->o, r->d, t), depth, nb, out));
+        CHECK(medium_vertex(p, r, media, vol, gvec3_madd(r->o, r->d, t), depth, nb, equiangular ? &way : NULL, out));
     else if (!gcolor_is_black(&w))
         CHECK(arrive(p, r, media, depth, nb, first, prev_pdf, from_medium, hp, lh, t_l, pdf_l, out));
     else
         CHECK(gcolor_fill(out, 0.0));
     CHECK(gcolor_mul(out, out, &w));
+    if (equiangular)
+        CHECK(medium_equiangular_light(c, vol, media, &way, out));
 done:
     gscratch_release(c->scratch, mark);
     return rc;
@@ -604,6 +613,10 @@ int path_trace(TraceCtx *c, const Ray *r, const Media *media, uint64_t pixel, in
             p.env_light = l;
     }
     p.env_in_lights = env && env->nlights > 0 && env->lights[0]->kind == LIGHT_DIRECTIONAL;
+    for (int i = 0; s->has_media && i < s->nlights; i++) {
+        LightKind k = s->lights[i]->kind;
+        p.point_lights |= k == LIGHT_POINT || k == LIGHT_SPOT || k == LIGHT_IES;
+    }
     int saved = c->band, volumes = c->volumes;
     c->band = -1;
     c->volumes = s->has_media;

@@ -102,3 +102,13 @@ int medium_sample_distance(const Medium *m, double tmax, double u_band, double u
     return scatter;
 }
 
+
+double medium_distance_pdf(const Medium *m, double t)
+{
+    double p = 0.0;
+    for (int i = 0; i < m->bands; i++) {
+        double si = gcolor_band_value(&m->sigma_t, i);
+        p += si * exp(-si * t);
+    }
+    return p / m->bands;
+}

@@ -72,6 +72,11 @@ int medium_attenuate(const Medium *m, double d, GColor *light, GScratch *scratch
  * scatter draws nothing: 0 with weight = the transmittance to tmax. */
 int medium_sample_distance(const Medium *m, double tmax, double u_band, double u_dist, double *t, GColor *weight);
 
+/** The density with which medium_sample_distance draws a scattering event at t > 0 in a homogeneous medium that
+ * scatters: the mean over the bands of sigma_t exp(-sigma_t t) (for multiple importance sampling against another
+ * strategy for the same distance). */
+double medium_distance_pdf(const Medium *m, double t);
+
 /** Free flight through a grid medium along o + t d within (0, tmax) (d a unit vector; tmax may be INFINITY), with
  * the same contract as medium_sample_distance: delta tracking against the grid's majorant bricks in a band chosen
  * uniformly, weighted by one-sample MIS (balance heuristic) over the bands' tracking densities, so that a grid of

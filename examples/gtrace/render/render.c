@@ -309,7 +309,8 @@ int renderer_create(Renderer **out, const Scene *s, const RenderSettings *rs, Fr
     int ok = r->workers != NULL;
     for (int i = 0; ok && i < r->nthreads; i++) {
         Worker *w = &r->workers[i];
-        w->ctx = (TraceCtx){.scene = s, .max_depth = rs->depth, .cutoff = rs->cutoff, .bands = &r->bands, .band = -1};
+        w->ctx = (TraceCtx){.scene = s, .max_depth = rs->depth, .cutoff = rs->cutoff, .bands = &r->bands, .band = -1,
+                            .equiangular = !rs->no_equiangular};
         w->ctx.scratch = gscratch_create(arena_bytes(s->model, rs->depth));
         w->perm = gmem_alloc((size_t)rs->spp * sizeof(int));
         ok = w->ctx.scratch && w->perm && gcolor_scratch(&w->ctx.unit, s->model, w->ctx.scratch) == G_OK &&

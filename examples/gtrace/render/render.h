@@ -37,6 +37,8 @@ typedef struct RenderSettings {
     long sppm_photons;   /**< RENDER_SPPM, RENDER_LIGHT: photon paths per pass (0: the default) */
     double sppm_radius;  /**< RENDER_SPPM: initial gather radius in scene units (0: from the pixel's footprint) */
     double sppm_alpha;   /**< RENDER_SPPM: the fraction of new photons kept per pass, in (0, 1] (0: 2/3) */
+    int no_equiangular;  /**< RENDER_PATH: 1: no equiangular sampling towards point, spot and IES lights in
+                              homogeneous media (TraceCtx.equiangular), free flight alone */
     int sampler;         /**< RENDER_PATH: SAMPLER_SOBOL (trace/sampler.h; 0, the default: the pixel positions and
                               the paths' main numbers from the pixel's scrambled Sobol sequence) or
                               SAMPLER_INDEPENDENT (stratified pixel positions, the generator's numbers) */

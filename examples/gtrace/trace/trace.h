@@ -49,6 +49,8 @@ typedef struct TraceCtx {
     const struct EmissiveSet *emissive; /**< the glowing geometry sampled as light (lights/emissive.h; NULL: none) */
     int volumes;         /**< the integrator renders participating media (the path tracer, in a scene with media):
                           * shadow rays are attenuated by them (lights.c); 0: only materials' absorption */
+    int equiangular;     /**< the path tracer also samples the single scattering of point, spot and IES lights in
+                          * homogeneous media equiangularly (integrators/medium_light.h); 0: free flight alone */
     GColor tmp[TRACE_TMP_COUNT]; /**< temporaries made once with the context (trace_ctx_temps); cleared in a
                                   * context built without them, whose users then take arena storage (trace_tmp) */
 } TraceCtx;
