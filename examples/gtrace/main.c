@@ -11,6 +11,7 @@
 #include "render/render.h"
 #include "trace/sampler.h"
 #include "film/output.h"
+#include "film/viewing.h"
 #include "lights/probe_env.h"
 #include "scenefile/type_list.h"
 #include "../common/cli.h"
@@ -56,7 +57,7 @@ static void usage(FILE *f)
             "              [--probe FILE] [--probe-technique T] [--probe-count N] [--probe-samples N]\n"
             "              [--probe-scale S] [--probe-shadows on|off] [--crop X0,Y0,X1,Y1]\n"
             "              [--integrator whitted|path|sppm|light] [--passes N] [--photons N] [--radius R] [--alpha A]\n"
-            "              [--sampler sobol|independent]\n"
+            "              [--sampler sobol|independent] [--illuminant NAME]\n"
             "              [--spectral] [--display D] [--view V] [--ocio-config FILE]\n"
             "              [--mpi-block N] [--mpi-timeout S] [--mpi-dedicated]\n"
             "       gtrace merge PIECE... -o OUT\n"
@@ -108,6 +109,11 @@ static void usage(FILE *f)
             "  --alpha A         sppm: fraction of a pass's photons kept, in (0, 1] (default 2/3)\n"
             "  --sampler S       path: sobol (default: pixel positions, light and material samples from\n"
             "                    each pixel's scrambled Sobol sequence) or independent (random numbers)\n"
+            "  --illuminant NAME the viewing illuminant, the film's white: a CIE illuminant (A, D50, F11,\n"
+            "                    LED-B1, ...; gcolor list --illuminants) or 'blackbody K'; the rendered XYZ is\n"
+            "                    adapted from its white to sRGB's (D65) by the Bradford transform, so that a\n"
+            "                    white surface lit by it comes out neutral (default: none, no adaptation;\n"
+            "                    --spectral's values at wavelengths are not adapted)\n"
             "  --exposure STOPS  exposure for .png/.jpg output (default: the camera's)\n"
             "  --probe FILE      replace the image of the scene's `light probe` (relative to the current\n"
             "                    directory); the other --probe options replace its other settings\n"
@@ -160,7 +166,8 @@ enum {
     OPT_WIDTH = CLI_FIRST_OWN, OPT_HEIGHT, OPT_SPP, OPT_DEPTH, OPT_MAX_RAYS, OPT_THREADS, OPT_COLORMODEL,
     OPT_EXPOSURE, OPT_CUTOFF, OPT_CROP, OPT_BANDS, OPT_INTEGRATOR, OPT_PROBE, OPT_PROBE_TECHNIQUE, OPT_PROBE_COUNT, OPT_PROBE_SAMPLES,
     OPT_PROBE_SHADOWS, OPT_PROBE_SCALE, OPT_WAVES, OPT_DISPLAY, OPT_VIEW, OPT_OCIO_CONFIG, OPT_MPI_BLOCK,
-    OPT_MPI_TIMEOUT, OPT_MPI_DEDICATED, OPT_PASSES, OPT_PHOTONS, OPT_RADIUS, OPT_ALPHA, OPT_SAMPLER
+    OPT_MPI_TIMEOUT, OPT_MPI_DEDICATED, OPT_PASSES, OPT_PHOTONS, OPT_RADIUS, OPT_ALPHA, OPT_SAMPLER,
+    OPT_ILLUMINANT
 };
 
 /* The --probe options (code c, its value v); -1 with a message for a bad one. */
@@ -200,6 +207,7 @@ typedef struct Options {
     GImageDisplay display; /* --display, --view, --ocio-config */
     int have_display;
     const char *scene, *out, *colormodel;
+    const char *illuminant; /* --illuminant (NULL: none) */
     int width, height, spp, depth, threads, quiet, max_rays, bands, integrator, waves;
     int passes, photons;   /* --integrator sppm (0: its defaults) */
     int sampler;           /* --sampler: SAMPLER_SOBOL (0, default) or SAMPLER_INDEPENDENT */
@@ -252,6 +260,7 @@ static int parse_args(int argc, char **argv, Options *o)
         {"bands", required_argument, NULL, OPT_BANDS},
         {"integrator", required_argument, NULL, OPT_INTEGRATOR},
         {"sampler", required_argument, NULL, OPT_SAMPLER},
+        {"illuminant", required_argument, NULL, OPT_ILLUMINANT},
         {"passes", required_argument, NULL, OPT_PASSES},
         {"photons", required_argument, NULL, OPT_PHOTONS},
         {"radius", required_argument, NULL, OPT_RADIUS},
@@ -349,6 +358,16 @@ static int parse_args(int argc, char **argv, Options *o)
         case OPT_COLORMODEL:
             o->colormodel = optarg;
             break;
+        case OPT_ILLUMINANT: {
+            GSpectrumNM white;
+            GError e;
+            o->illuminant = optarg;
+            if (viewing_illuminant_nm(optarg, &white, &e) != G_OK) {
+                fprintf(stderr, "gtrace: --illuminant: %s\n", e.message);
+                rc = -1;
+            }
+            break;
+        }
         case OPT_EXPOSURE:
             o->have_exposure = 1;
             rc = cli_double("gtrace", "--exposure", optarg, -30.0, 30.0, &o->exposure);
@@ -430,11 +449,12 @@ static const char *piece_note(const Options *o, const Scene *scene, const Render
     gmem_free(text);
     const ProbeOverride *p = &o->probe;
     snprintf(buf, size, "scene %016llx; colormodel %s; size %dx%d; spp %d; depth %d; max-rays %d; bands %d; "
-             "integrator %d; cutoff %.17g; waves %d; probe %.100s %.40s %d %d %.17g %d; sampler %d",
+             "integrator %d; cutoff %.17g; waves %d; probe %.100s %.40s %d %d %.17g %d; sampler %d%s%.40s",
              (unsigned long long)h,
              gcolormodel_name(scene->model), rs->width, rs->height, rs->spp, rs->depth, rs->max_rays, rs->bands,
              rs->integrator, rs->cutoff, rs->waves, p->file ? p->file : "-", p->technique ? p->technique : "-",
-             p->count, p->samples, p->scale, p->shadows, rs->sampler);
+             p->count, p->samples, p->scale, p->shadows, rs->sampler, o->illuminant ? "; illuminant " : "",
+             o->illuminant ? o->illuminant : "");
     return buf;
 }
 
@@ -491,6 +511,13 @@ static int prepare(const Options *o, const GReaderOptions *trust, int check_outp
         memcpy(rs->crop, o->crop, sizeof rs->crop);
     }
     *exposure = o->have_exposure ? o->exposure : cam->exposure;
+    if (o->illuminant) {
+        GSpectrumNM white;
+        if ((rc = viewing_illuminant_nm(o->illuminant, &white, err)) < 0 ||
+            (rc = viewing_adaptation((*scene)->model, &white, rs->adaptation, err)) < 0)
+            return rc;
+        rs->adapt = 1;
+    }
     (*scene)->accel_threads = o->threads;
     return accel_build_for(*scene, (double)rs->width * rs->height * rs->spp, err);
 }
