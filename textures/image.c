@@ -26,20 +26,17 @@ static void image_destroy(GMaterial *self)
     gmem_free(im);
 }
 
-/* result = texel * result: the texel at the point (looked up once per point, then cached) as a reflectance. */
+/* result = texel * result: the texel at the point (an RGB texel looked up once per point, then cached; a spectral
+ * one converted from its spectrum) as a reflectance. */
 static int apply(const GMaterial *self, GSurfPoint *sp, GColor *result)
 {
     const Image *im = (const Image *)self;
-    double rgb[3];
-    int rc = gtexparam_image_rgb(im->image, sp, rgb);
-    if (rc != G_OK)
-        return rc;
     GNodeTemps t;
     gnode_temps_init(&t);
     GColor c;
-    rc = gnode_temps_color(&t, sp, result->model, 0, &c);
+    int rc = gnode_temps_color(&t, sp, result->model, 0, &c);
     if (rc == G_OK)
-        rc = gtexparam_image_uplift(im->image, rgb, GCOLOR_REFLECTANCE, &c);
+        rc = gtexparam_image_color(im->image, sp, GCOLOR_REFLECTANCE, &c);
     if (rc == G_OK)
         rc = gcolor_mul(result, &c, result);
     gnode_temps_release(&t);

@@ -19,7 +19,7 @@ extern "C" {
 #endif
 
 /** Raised whenever either table changes; a module of another version is refused. */
-#define GOIIO_MODULE_ABI 5
+#define GOIIO_MODULE_ABI 6
 /** The module's file name and the one symbol it exports (a GOiioEntry). */
 #define GOIIO_MODULE_FILE "libgeneric_oiio.so"
 #define GOIIO_MODULE_ENTRY "generic_oiio_module"
@@ -63,7 +63,7 @@ typedef struct GOiioOps {
     int (*display_transform)(const char *config, const char *display, const char *view, float *pixels, int width,
                              int height, int channels, GError *err);
     int (*image_window)(const char *path, GImageWindow *win, GError *err);
-    int (*image_read_spectra)(const char *path, GImageSpectraBuf *out, GError *err);
+    int (*image_read_spectra)(const char *path, GImageSpectraLayer layer, GImageSpectraBuf *out, GError *err);
 } GOiioOps;
 
 /** The module's entry: checks abi, keeps host (it outlives the module), fills ops. 0, or -1 for another ABI. */
