@@ -1,7 +1,8 @@
 /* image.c - the image node: the child's light-carrying colour results times the colour of an image at
  * (u, v), looked up through OpenImageIO's TextureSystem (lib/image/texture_oiio.cpp) with trilinear MIP-mapping
- * over the surface point's footprint; the file, its checks and its texels are the kit's (gtexparam_image_open,
- * kit/texparam.h), shared with textured colour parameters:
+ * over the surface point's footprint, or for a spectral OpenEXR its reflective channels' spectra; the file, its
+ * checks and its texels are the kit's (gtexparam_image_open, kit/texparam.h), shared with textured colour
+ * parameters:
  *
  *   node NAME image { child MATERIAL  file "name.png"  wrap periodic|clamp|black|mirror
  *                     swrap ...  twrap ...  colorspace auto|srgb|linear  blur 0 }
@@ -152,7 +153,8 @@ static const GParamInfo image_params[] = {
     {"child", GPARAM_NAMED, "material", NULL, NULL, "the material whose reflected and emitted light is multiplied"},
     {"file", GPARAM_NAMED, "path", NULL,
      "an image file: OpenEXR, HDR, PFM, PNM, PNG, JPEG or TIFF, at most 8192 x 8192 pixels",
-     "the image, looked up at (u, v) with trilinear MIP-mapping over the footprint"},
+     "the image, looked up at (u, v) with trilinear MIP-mapping over the footprint; a spectral OpenEXR "
+     "(reflective channels T.<nm>nm) bilinearly, its spectra converted into the model"},
     {"wrap", GPARAM_NAMED, "choice", "periodic", IMAGE_WRAPS, "outside [0, 1] in u and v: repeat, hold the edge, "
      "black, repeat mirrored"},
     {"swrap", GPARAM_NAMED, "choice", "periodic", IMAGE_WRAPS, "the same in u only"},
