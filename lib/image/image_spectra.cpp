@@ -169,7 +169,8 @@ int image_read_spectra(const char *path, GImageSpectraLayer layer, GImageSpectra
     *out = GImageSpectraBuf{0, 0, 0, nullptr, nullptr, 0};
     if (!path || !*path)
         return gerror_set(err, G_ERR_INVALID, "no image file name given");
-    return goiio_guarded(path, "reading the spectra", "read image", err, [&] { return read_spectra_impl(path, layer, out, err); });
+    return goiio_guarded(path, "reading the spectra", "read image", err,
+                         [&] { return read_spectra_impl(path, layer, out, err); });
 }
 
 } // namespace
