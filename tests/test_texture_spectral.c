@@ -1,7 +1,7 @@
 /* test_texture_spectral.c - spectral OpenEXR textures (kit/texparam.h; the layout of Fichet, Pacanowski and Wilkie
  * 2021, services/image.h): a file whose texels are known spectra (ramps and a line) gives, at every texel centre,
  * gcolor_from_nm of that spectrum in each of the four models; the reflective channels (T.) serve a reflectance and
- * the emissive ones (S0.) a light; halfway between two texel centres the colour is their mean; the image node reads
+ * the emissive ones (S0.) a light (either layer serving when the file has only one); halfway between two texel centres the colour is their mean; the image node reads
  * the same file; and broken files are refused naming the file: malformed and duplicated wavelengths, too many
  * channels, NaN and negative values, a header claiming a huge image, a value budget too small. The files are written
  * by the test (tests/exr_writer.h) into a temporary directory. */
@@ -190,6 +190,66 @@ static void test_bilinear_and_image_node(void **state)
     glibrary_destroy(lib);
 }
 
+/* A file with both layers, S0. twice T.: a reflectance reads T., a light S0.; a file with only T. gives its spectra
+ * to a light too (values are role free), and one with only S0. to a reflectance. */
+static void test_layer_by_role(void **state)
+{
+    (void)state;
+    static char names[2 * NW][32];
+    const char *ptr[2 * NW];
+    float values[W * H * 2 * NW];
+    for (int k = 0; k < NW; k++) { /* sorted by name: S0. before T. */
+        ptr[k] = exr_spectral_name(names[k], sizeof names[k], "S0.", 380.0 + 10.0 * k);
+        ptr[NW + k] = exr_spectral_name(names[NW + k], sizeof names[NW + k], "T.", 380.0 + 10.0 * k);
+    }
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++)
+            for (int k = 0; k < NW; k++) {
+                double v = texel_spectrum(x, y, 380.0 + 10.0 * k);
+                values[(y * W + x) * 2 * NW + k] = (float)(2.0 * v);
+                values[(y * W + x) * 2 * NW + NW + k] = (float)v;
+            }
+    char both[128], refl[128], emis[128];
+    snprintf(both, sizeof both, "%s/both.exr", dir);
+    assert_int_equal(exr_write(both, W, H, 2 * NW, ptr, values, 0, 0), 0);
+    write_spectral("only_t.exr", "T.", refl, sizeof refl);
+    write_spectral("only_s0.exr", "S0.", emis, sizeof emis);
+    char text[1400];
+    snprintf(text, sizeof text,
+             "colormodel spectrum\n"
+             "material r lambert { reflectance image { file \"%s\" } }\n"
+             "material e emitter { radiance image { file \"%s\" } }\n"
+             "material et emitter { radiance image { file \"%s\" } }\n"
+             "material rs lambert { reflectance image { file \"%s\" } }\n", both, both, refl, emis);
+    GLibrary *lib = load(text);
+    const GColorModel *m = glibrary_colormodel(lib);
+    GScratch *s = gscratch_create(1 << 16);
+    GColor got, want;
+    assert_int_equal(gcolor_alloc(&got, m), G_OK);
+    assert_int_equal(gcolor_alloc(&want, m), G_OK);
+    GSpectrumNM nm, twice;
+    texel_nm(2, 1, &nm);
+    for (int i = 0; i < GNM_COUNT; i++)
+        twice.v[i] = 2.0f * nm.v[i];
+    GSurfPoint *sp = point_at(m, s, 2.5 / W, 1.0 - 1.5 / H);
+    assert_int_equal(gmaterial_diffuse(glibrary_material(lib, "r"), sp, &got), G_OK);
+    assert_int_equal(gcolor_from_nm(&want, &nm, GCOLOR_REFLECTANCE), G_OK);
+    assert_true(largest_difference(&got, &want) <= 1e-6);
+    assert_int_equal(gmaterial_diffuse(glibrary_material(lib, "rs"), sp, &got), G_OK);
+    assert_true(largest_difference(&got, &want) <= 1e-6);
+    assert_int_equal(gmaterial_emission(glibrary_material(lib, "e"), sp, gvec3(0, 0, 1), &got), G_OK);
+    assert_int_equal(gcolor_from_nm(&want, &twice, GCOLOR_LIGHT), G_OK);
+    assert_true(largest_difference(&got, &want) <= 1e-6);
+    assert_int_equal(gmaterial_emission(glibrary_material(lib, "et"), sp, gvec3(0, 0, 1), &got), G_OK);
+    assert_int_equal(gcolor_from_nm(&want, &nm, GCOLOR_LIGHT), G_OK);
+    assert_true(largest_difference(&got, &want) <= 1e-6);
+    gsurfpoint_free(sp);
+    gcolor_free(&got);
+    gcolor_free(&want);
+    gscratch_destroy(s);
+    glibrary_destroy(lib);
+}
+
 /* Writes a 1 x 1 file of the given channels and values, reads it as a reflectance texture, and checks the refusal:
  * G_ERR_IO (or `code`) with a message naming the file and containing want. */
 static void refused(const char *name, int n, const char *const *names, const float *values, int hw, int hh,
@@ -320,6 +380,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_texel_centres_equal_from_nm),
         cmocka_unit_test(test_bilinear_and_image_node),
+        cmocka_unit_test(test_layer_by_role),
         cmocka_unit_test(test_hostile_files_refused),
         cmocka_unit_test(test_values_charged_to_budget),
     };

@@ -75,6 +75,9 @@ int gtexparam_spectral_open(const char *path, GColorRole role, GTexSpectral **ou
     GImageSpectraBuf buf;
     GImageSpectraLayer layer = role == GCOLOR_LIGHT ? GIMAGE_SPECTRA_EMISSIVE : GIMAGE_SPECTRA_REFLECTIVE;
     int rc = gimage_read_spectra_layer(path, layer, &buf, err);
+    if (rc == G_OK && buf.count == 0) /* values are role free, as an RGB image's: the other layer serves too */
+        rc = gimage_read_spectra_layer(path, layer == GIMAGE_SPECTRA_EMISSIVE ? GIMAGE_SPECTRA_REFLECTIVE
+                                                                               : GIMAGE_SPECTRA_EMISSIVE, &buf, err);
     if (rc != G_OK)
         return rc;
     if (buf.count == 0) {

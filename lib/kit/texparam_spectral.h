@@ -12,8 +12,9 @@
 typedef struct GTexSpectral GTexSpectral;
 
 /** Opens the spectral channels of path for role: the reflective layer (T.<nm>nm) for GCOLOR_REFLECTANCE, the
- * emissive one (S0.<nm>nm) for GCOLOR_LIGHT. G_OK with *out NULL when path is not an OpenEXR file (its first four
- * bytes) or has no channel of that layer: the caller reads it as an RGB image. G_OK with *out set when it has;
+ * emissive one (S0.<nm>nm) for GCOLOR_LIGHT, and the other layer when the file has none of that one (values are
+ * role free, as an RGB image's serve either role). G_OK with *out NULL when path is not an OpenEXR file (its first
+ * four bytes) or has no spectral channel: the caller reads it as an RGB image. G_OK with *out set when it has;
  * G_ERR_IO naming the file when its spectral channels are refused (gimage_read_spectra_layer: names, duplicated
  * wavelengths, too many, a damaged file), when it has more than GTEXSYS_MAX_PIXELS texels, or when a value is NaN,
  * infinite or negative (the texel, the wavelength and the value named); G_ERR_NOMEM when the values do not fit the

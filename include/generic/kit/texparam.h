@@ -112,7 +112,8 @@ GENERIC_API GENERIC_NODISCARD int gtexparam_color_extremes(const GTexColor *p, G
  * A spectral OpenEXR (services/image.h: reflective channels T.<nm>nm) is read whole instead, its texels' spectra
  * kept as floats at the file's wavelengths against the memory budget, looked up bilinearly (no MIP-mapping, no
  * blur) and converted per lookup with gcolor_from_nm; a `image { }` colour in the light role reads the emissive
- * channels (S0.<nm>nm). An OpenEXR without channels of that layer is read as RGB. G_ERR_IO naming the file when it
+ * channels (S0.<nm>nm); a file with only the other layer gives that one. An OpenEXR without spectral channels is
+ * read as RGB. G_ERR_IO naming the file when it
  * cannot be read or decoded, or when a spectral value is NaN, infinite or negative; G_ERR_INVALID for unknown
  * options. */
 GENERIC_API GENERIC_NODISCARD int gtexparam_image_open(const char *path, const GImageNodeOptions *opt,
