@@ -1,10 +1,11 @@
 /* test_texture_spectral.c - spectral OpenEXR textures (kit/texparam.h; the layout of Fichet, Pacanowski and Wilkie
  * 2021, services/image.h): a file whose texels are known spectra (ramps and a line) gives, at every texel centre,
  * gcolor_from_nm of that spectrum in each of the four models; the reflective channels (T.) serve a reflectance and
- * the emissive ones (S0.) a light (either layer serving when the file has only one); halfway between two texel centres the colour is their mean; the image node reads
- * the same file; and broken files are refused naming the file: malformed and duplicated wavelengths, too many
- * channels, NaN and negative values, a header claiming a huge image, a value budget too small. The files are written
- * by the test (tests/exr_writer.h) into a temporary directory. */
+ * the emissive ones (S0.) a light (either layer serving when the file has only one); halfway between two texel
+ * centres the colour is their mean; the image node reads the same file; and broken files are refused naming the
+ * file: malformed and duplicated wavelengths, too many channels, NaN and negative values, a header claiming a huge
+ * image, a value budget too small. The files are written by the test (tests/exr_writer.h) into a temporary
+ * directory. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
