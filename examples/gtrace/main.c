@@ -436,7 +436,7 @@ static int parse_args(int argc, char **argv, Options *o)
  * at fault (exit status 2). */
 /* What decides a crop's pixels, recorded in the piece for `gtrace merge` to compare (film/merge.c): the scene
  * file's content (FNV-1a 64 of its bytes; the files it includes are not hashed), the colour model, the full size and
- * the render settings, and the light-probe options; fields "NAME VALUE" separated by "; ". Returns buf. */
+ * the render settings, the light-probe options and the viewing illuminant; fields "NAME VALUE" separated by "; ". Returns buf. */
 static const char *piece_note(const Options *o, const Scene *scene, const RenderSettings *rs, char *buf, size_t size)
 {
     uint64_t h = 0xcbf29ce484222325ULL;
@@ -449,12 +449,11 @@ static const char *piece_note(const Options *o, const Scene *scene, const Render
     gmem_free(text);
     const ProbeOverride *p = &o->probe;
     snprintf(buf, size, "scene %016llx; colormodel %s; size %dx%d; spp %d; depth %d; max-rays %d; bands %d; "
-             "integrator %d; cutoff %.17g; waves %d; probe %.100s %.40s %d %d %.17g %d; sampler %d%s%.40s",
+             "integrator %d; cutoff %.17g; waves %d; probe %.100s %.40s %d %d %.17g %d; sampler %d; illuminant %.40s",
              (unsigned long long)h,
              gcolormodel_name(scene->model), rs->width, rs->height, rs->spp, rs->depth, rs->max_rays, rs->bands,
              rs->integrator, rs->cutoff, rs->waves, p->file ? p->file : "-", p->technique ? p->technique : "-",
-             p->count, p->samples, p->scale, p->shadows, rs->sampler, o->illuminant ? "; illuminant " : "",
-             o->illuminant ? o->illuminant : "");
+             p->count, p->samples, p->scale, p->shadows, rs->sampler, o->illuminant ? o->illuminant : "none");
     return buf;
 }
 
