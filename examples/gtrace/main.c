@@ -436,7 +436,8 @@ static int parse_args(int argc, char **argv, Options *o)
  * at fault (exit status 2). */
 /* What decides a crop's pixels, recorded in the piece for `gtrace merge` to compare (film/merge.c): the scene
  * file's content (FNV-1a 64 of its bytes; the files it includes are not hashed), the colour model, the full size and
- * the render settings, the light-probe options and the viewing illuminant; fields "NAME VALUE" separated by "; ". Returns buf. */
+ * the render settings, the light-probe options and the viewing illuminant; fields "NAME VALUE" separated by "; ".
+ * Returns buf. */
 static const char *piece_note(const Options *o, const Scene *scene, const RenderSettings *rs, char *buf, size_t size)
 {
     uint64_t h = 0xcbf29ce484222325ULL;
