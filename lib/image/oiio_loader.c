@@ -257,6 +257,26 @@ int gimage_read_spectra_layer(const char *path, GImageSpectraLayer layer, GImage
     const GOiioOps *o = goiio_ops(err);
     if (layer != GIMAGE_SPECTRA_EMISSIVE && layer != GIMAGE_SPECTRA_REFLECTIVE)
         return gerror_set(err, G_ERR_INVALID, "%s: unknown spectral layer %d", path, (int)layer);
+    int rc = gdecode_check_whole(path, err);
+    if (rc != G_OK)
+        return rc;
+    return o ? o->image_read_spectra(path, layer, out, err) : G_ERR_IO;
+}
+
+int gdecode_check_whole(const char *path, GError *err)
+{
+    int isolated = gdecode_isolated(err);
+    if (isolated < 0)
+        return isolated;
+    return isolated ? gdecode_run(path, GDECODE_CHECK, 0, NULL, NULL, NULL, NULL, err) : G_OK;
+}
+
+int gdecode_read_spectra_checked(const char *path, GImageSpectraLayer layer, GImageSpectraBuf *out, GError *err)
+{
+    *out = (GImageSpectraBuf){0};
+    if (layer != GIMAGE_SPECTRA_EMISSIVE && layer != GIMAGE_SPECTRA_REFLECTIVE)
+        return gerror_set(err, G_ERR_INVALID, "%s: unknown spectral layer %d", path, (int)layer);
+    const GOiioOps *o = goiio_ops(err);
     return o ? o->image_read_spectra(path, layer, out, err) : G_ERR_IO;
 }
 

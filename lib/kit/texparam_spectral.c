@@ -1,6 +1,7 @@
 /* texparam_spectral.c - the texels of a spectral OpenEXR (texparam_spectral.h): read once into floats at the file's
  * wavelengths, held against the memory budget, looked up bilinearly and resampled to the nm grid per lookup. */
 #include "texparam_spectral.h"
+#include "image/decode_isolated.h"
 #include "generic/services/file.h"
 #include "generic/services/image.h"
 
@@ -72,12 +73,14 @@ int gtexparam_spectral_open(const char *path, GColorRole role, GTexSpectral **ou
     *out = NULL;
     if (!is_openexr(path))
         return G_OK;
-    GImageSpectraBuf buf;
+    GImageSpectraBuf buf = {0};
     GImageSpectraLayer layer = role == GCOLOR_LIGHT ? GIMAGE_SPECTRA_EMISSIVE : GIMAGE_SPECTRA_REFLECTIVE;
-    int rc = gimage_read_spectra_layer(path, layer, &buf, err);
+    int rc = gdecode_check_whole(path, err); /* once, before both reads in this process */
+    if (rc == G_OK)
+        rc = gdecode_read_spectra_checked(path, layer, &buf, err);
     if (rc == G_OK && buf.count == 0) /* values are role free, as an RGB image's: the other layer serves too */
-        rc = gimage_read_spectra_layer(path, layer == GIMAGE_SPECTRA_EMISSIVE ? GIMAGE_SPECTRA_REFLECTIVE
-                                                                               : GIMAGE_SPECTRA_EMISSIVE, &buf, err);
+        rc = gdecode_read_spectra_checked(path, layer == GIMAGE_SPECTRA_EMISSIVE ? GIMAGE_SPECTRA_REFLECTIVE
+                                                                                 : GIMAGE_SPECTRA_EMISSIVE, &buf, err);
     if (rc != G_OK)
         return rc;
     if (buf.count == 0) {

@@ -194,8 +194,9 @@ GENERIC_API GENERIC_NODISCARD int gimage_read_spectra(const char *path, GImageSp
  * does; GIMAGE_SPECTRA_REFLECTIVE the channels named T.<digits>[,<digits>]nm with the same rules (re-radiation
  * channels T.<nm>nm.<nm>nm, the off-diagonal of a bispectral file, are ignored). The values are reserved against
  * the memory budget before they are allocated and held until gimage_spectra_free (out->charged): G_ERR_NOMEM
- * names the image and the limit when they do not fit. The file is read in this process (not in the decoder
- * process of gimage_read). G_ERR_INVALID for another layer. */
+ * names the image and the limit when they do not fit. The channels are read in this process, after a decoder
+ * process (as gimage_read's, unless GENERIC_DECODE=inprocess) decoded the file whole under its limits: a file that
+ * crashes, hangs or blows up the reader is G_ERR_IO there. G_ERR_INVALID for another layer. */
 GENERIC_API GENERIC_NODISCARD int gimage_read_spectra_layer(const char *path, GImageSpectraLayer layer,
                                                             GImageSpectraBuf *out, GError *err);
 
