@@ -1,7 +1,8 @@
 /* image.c - the image node: the child's light-carrying colour results times the colour of an image at
  * (u, v), looked up through OpenImageIO's TextureSystem (lib/image/texture_oiio.cpp) with trilinear MIP-mapping
- * over the surface point's footprint; the file, its checks and its texels are the kit's (gtexparam_image_open,
- * kit/texparam.h), shared with textured colour parameters:
+ * over the surface point's footprint, or for a spectral OpenEXR its reflective channels' spectra; the file, its
+ * checks and its texels are the kit's (gtexparam_image_open, kit/texparam.h), shared with textured colour
+ * parameters:
  *
  *   node NAME image { child MATERIAL  file "name.png"  wrap periodic|clamp|black|mirror
  *                     swrap ...  twrap ...  colorspace auto|srgb|linear  blur 0 }
@@ -26,20 +27,17 @@ static void image_destroy(GMaterial *self)
     gmem_free(im);
 }
 
-/* result = texel * result: the texel at the point (looked up once per point, then cached) as a reflectance. */
+/* result = texel * result: the texel at the point (an RGB texel looked up once per point, then cached; a spectral
+ * one converted from its spectrum) as a reflectance. */
 static int apply(const GMaterial *self, GSurfPoint *sp, GColor *result)
 {
     const Image *im = (const Image *)self;
-    double rgb[3];
-    int rc = gtexparam_image_rgb(im->image, sp, rgb);
-    if (rc != G_OK)
-        return rc;
     GNodeTemps t;
     gnode_temps_init(&t);
     GColor c;
-    rc = gnode_temps_color(&t, sp, result->model, 0, &c);
+    int rc = gnode_temps_color(&t, sp, result->model, 0, &c);
     if (rc == G_OK)
-        rc = gtexparam_image_uplift(im->image, rgb, GCOLOR_REFLECTANCE, &c);
+        rc = gtexparam_image_color(im->image, sp, GCOLOR_REFLECTANCE, &c);
     if (rc == G_OK)
         rc = gcolor_mul(result, &c, result);
     gnode_temps_release(&t);
@@ -142,7 +140,8 @@ static const GParamInfo image_params[] = {
     {"child", GPARAM_NAMED, "material", NULL, NULL, "the material whose reflected and emitted light is multiplied"},
     {"file", GPARAM_NAMED, "path", NULL,
      "an image file: OpenEXR, HDR, PFM, PNM, PNG, JPEG or TIFF, at most 8192 x 8192 pixels",
-     "the image, looked up at (u, v) with trilinear MIP-mapping over the footprint"},
+     "the image, looked up at (u, v) with trilinear MIP-mapping over the footprint; a spectral OpenEXR "
+     "(reflective channels T.<nm>nm) bilinearly, its spectra converted into the model"},
     {"wrap", GPARAM_NAMED, "choice", "periodic", IMAGE_WRAPS, "outside [0, 1] in u and v: repeat, hold the edge, "
      "black, repeat mirrored"},
     {"swrap", GPARAM_NAMED, "choice", "periodic", IMAGE_WRAPS, "the same in u only"},

@@ -11,6 +11,7 @@
 #include "render/render.h"
 #include "trace/sampler.h"
 #include "film/output.h"
+#include "film/viewing.h"
 #include "lights/probe_env.h"
 #include "scenefile/type_list.h"
 #include "../common/cli.h"
@@ -56,7 +57,7 @@ static void usage(FILE *f)
             "              [--probe FILE] [--probe-technique T] [--probe-count N] [--probe-samples N]\n"
             "              [--probe-scale S] [--probe-shadows on|off] [--crop X0,Y0,X1,Y1]\n"
             "              [--integrator whitted|path|sppm|light] [--passes N] [--photons N] [--radius R] [--alpha A]\n"
-            "              [--sampler sobol|independent] [--equiangular on|off]\n"
+            "              [--sampler sobol|independent] [--equiangular on|off] [--illuminant NAME]\n"
             "              [--spectral] [--display D] [--view V] [--ocio-config FILE]\n"
             "              [--mpi-block N] [--mpi-timeout S] [--mpi-dedicated]\n"
             "       gtrace merge PIECE... -o OUT\n"
@@ -111,6 +112,11 @@ static void usage(FILE *f)
             "                    each pixel's scrambled Sobol sequence) or independent (random numbers)\n"
             "  --equiangular on|off  path: also sample scattering in homogeneous media towards point, spot\n"
             "                    and IES lights by equiangular sampling, MIS-weighted (default on)\n"
+            "  --illuminant NAME the viewing illuminant, the film's white: a CIE illuminant (A, D50, F11,\n"
+            "                    LED-B1, ...; gcolor list --illuminants) or 'blackbody K'; the rendered XYZ is\n"
+            "                    adapted from its white to sRGB's (D65) by the Bradford transform, so that a\n"
+            "                    white surface lit by it comes out neutral (default: none, no adaptation;\n"
+            "                    --spectral's values at wavelengths are not adapted)\n"
             "  --exposure STOPS  exposure for .png/.jpg output (default: the camera's)\n"
             "  --probe FILE      replace the image of the scene's `light probe` (relative to the current\n"
             "                    directory); the other --probe options replace its other settings\n"
@@ -164,7 +170,7 @@ enum {
     OPT_EXPOSURE, OPT_CUTOFF, OPT_CROP, OPT_BANDS, OPT_INTEGRATOR, OPT_PROBE, OPT_PROBE_TECHNIQUE, OPT_PROBE_COUNT, OPT_PROBE_SAMPLES,
     OPT_PROBE_SHADOWS, OPT_PROBE_SCALE, OPT_WAVES, OPT_DISPLAY, OPT_VIEW, OPT_OCIO_CONFIG, OPT_MPI_BLOCK,
     OPT_MPI_TIMEOUT, OPT_MPI_DEDICATED, OPT_PASSES, OPT_PHOTONS, OPT_RADIUS, OPT_ALPHA, OPT_SAMPLER,
-    OPT_EQUIANGULAR
+    OPT_EQUIANGULAR, OPT_ILLUMINANT
 };
 
 /* The --probe options (code c, its value v); -1 with a message for a bad one. */
@@ -204,6 +210,7 @@ typedef struct Options {
     GImageDisplay display; /* --display, --view, --ocio-config */
     int have_display;
     const char *scene, *out, *colormodel;
+    const char *illuminant; /* --illuminant (NULL: none) */
     int width, height, spp, depth, threads, quiet, max_rays, bands, integrator, waves;
     int passes, photons;   /* --integrator sppm (0: its defaults) */
     int sampler;           /* --sampler: SAMPLER_SOBOL (0, default) or SAMPLER_INDEPENDENT */
@@ -258,6 +265,7 @@ static int parse_args(int argc, char **argv, Options *o)
         {"integrator", required_argument, NULL, OPT_INTEGRATOR},
         {"sampler", required_argument, NULL, OPT_SAMPLER},
         {"equiangular", required_argument, NULL, OPT_EQUIANGULAR},
+        {"illuminant", required_argument, NULL, OPT_ILLUMINANT},
         {"passes", required_argument, NULL, OPT_PASSES},
         {"photons", required_argument, NULL, OPT_PHOTONS},
         {"radius", required_argument, NULL, OPT_RADIUS},
@@ -363,6 +371,16 @@ static int parse_args(int argc, char **argv, Options *o)
         case OPT_COLORMODEL:
             o->colormodel = optarg;
             break;
+        case OPT_ILLUMINANT: {
+            GSpectrumNM white;
+            GError e;
+            o->illuminant = optarg;
+            if (viewing_illuminant_nm(optarg, &white, &e) != G_OK) {
+                fprintf(stderr, "gtrace: --illuminant: %s\n", e.message);
+                rc = -1;
+            }
+            break;
+        }
         case OPT_EXPOSURE:
             o->have_exposure = 1;
             rc = cli_double("gtrace", "--exposure", optarg, -30.0, 30.0, &o->exposure);
@@ -431,7 +449,8 @@ static int parse_args(int argc, char **argv, Options *o)
  * at fault (exit status 2). */
 /* What decides a crop's pixels, recorded in the piece for `gtrace merge` to compare (film/merge.c): the scene
  * file's content (FNV-1a 64 of its bytes; the files it includes are not hashed), the colour model, the full size and
- * the render settings, and the light-probe options; fields "NAME VALUE" separated by "; ". Returns buf. */
+ * the render settings, the light-probe options and the viewing illuminant; fields "NAME VALUE" separated by "; ".
+ * Returns buf. */
 static const char *piece_note(const Options *o, const Scene *scene, const RenderSettings *rs, char *buf, size_t size)
 {
     uint64_t h = 0xcbf29ce484222325ULL;
@@ -444,11 +463,13 @@ static const char *piece_note(const Options *o, const Scene *scene, const Render
     gmem_free(text);
     const ProbeOverride *p = &o->probe;
     snprintf(buf, size, "scene %016llx; colormodel %s; size %dx%d; spp %d; depth %d; max-rays %d; bands %d; "
-             "integrator %d; cutoff %.17g; waves %d; probe %.100s %.40s %d %d %.17g %d; sampler %d; equiangular %d",
+             "integrator %d; cutoff %.17g; waves %d; probe %.100s %.40s %d %d %.17g %d; sampler %d; equiangular %d; "
+             "illuminant %.40s",
              (unsigned long long)h,
              gcolormodel_name(scene->model), rs->width, rs->height, rs->spp, rs->depth, rs->max_rays, rs->bands,
              rs->integrator, rs->cutoff, rs->waves, p->file ? p->file : "-", p->technique ? p->technique : "-",
-             p->count, p->samples, p->scale, p->shadows, rs->sampler, !rs->no_equiangular);
+             p->count, p->samples, p->scale, p->shadows, rs->sampler, !rs->no_equiangular,
+             o->illuminant ? o->illuminant : "none");
     return buf;
 }
 
@@ -505,6 +526,13 @@ static int prepare(const Options *o, const GReaderOptions *trust, int check_outp
         memcpy(rs->crop, o->crop, sizeof rs->crop);
     }
     *exposure = o->have_exposure ? o->exposure : cam->exposure;
+    if (o->illuminant) {
+        GSpectrumNM white;
+        if ((rc = viewing_illuminant_nm(o->illuminant, &white, err)) < 0 ||
+            (rc = viewing_adaptation((*scene)->model, &white, rs->adaptation, err)) < 0)
+            return rc;
+        rs->adapt = 1;
+    }
     (*scene)->accel_threads = o->threads;
     return accel_build_for(*scene, (double)rs->width * rs->height * rs->spp, err);
 }

@@ -134,7 +134,7 @@ typedef struct GImageNodeOptions {
 
 /** image: the child's colour results that carry light (as for scale) multiplied by the image's colour at
  * (u, v) (u to the right, v up: v = 0 is the image's bottom row), read as a reflectance into the child's
- * model. Lookups are MIP-mapped over the pixel footprint: anisotropically over the ellipse sp->uv_axis1/2
+ * model (a spectral OpenEXR's reflective channels: gtexparam_image_open, kit/texparam.h). Lookups are MIP-mapped over the pixel footprint: anisotropically over the ellipse sp->uv_axis1/2
  * when the renderer gives it, else with the isotropic width sp->uv_footprint (0: the finest level, bilinear). The file is opened (and checked) here: a missing or unreadable file is G_ERR_IO naming it.
  * sRGB-encoded files are decoded after filtering. Grey images give grey colours; alpha is ignored. */
 GENERIC_API GENERIC_NODISCARD int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptions *opt, GMaterial **out,

@@ -21,6 +21,15 @@ int gdecode_isolated(GError *err);
 int gdecode_run(const char *path, GDecodeMode mode, unsigned flags, GImage *img, int *width, int *height, int *channels,
                 GError *err);
 
+/** Before a file is read in this process (OpenImageIO's texture system, the spectral channels): decodes it whole in
+ * a decoder process (gdecode_run, GDECODE_CHECK) when images are decoded apart (gdecode_isolated), so that a file
+ * that crashes, hangs or blows up a reader is refused before. G_OK, or gdecode_run's status. */
+int gdecode_check_whole(const char *path, GError *err);
+
+/** gimage_read_spectra_layer without its gdecode_check_whole, for a caller that ran it on path already (one check
+ * for several reads). */
+int gdecode_read_spectra_checked(const char *path, GImageSpectraLayer layer, GImageSpectraBuf *out, GError *err);
+
 /** The bytes a decode of a width x height image of channels channels charges in one process: the file's channels and
  * the 4-channel result, as floats. */
 double gdecode_charge(int width, int height, int channels);

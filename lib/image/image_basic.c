@@ -48,6 +48,7 @@ void gimage_spectra_free(GImageSpectraBuf *s)
         return;
     gmem_free(s->wavelengths);
     gmem_free(s->values);
+    gmem_budget_release(s->charged);
     *s = (GImageSpectraBuf){0};
 }
 

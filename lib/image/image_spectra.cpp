@@ -7,6 +7,7 @@
 #include "image_oiio.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <utility>
@@ -19,19 +20,28 @@ using OIIO::TypeDesc;
 namespace {
 
 
-// The wavelength of a channel named S0.<digits>[,<digits>]nm: 1 and *nm; 0 for a channel that is not spectral
-// (no S0. prefix); -1 for an S0. name that is malformed, has more than 15 digits or gives 0 nm. The digits make
-// an integer below 2^53, divided by an exact power of ten: the double nearest to the written decimal.
-int spectral_wavelength(const std::string &name, double *nm)
+// The channel-name prefix of a layer: S0. (emissive: the first Stokes component, the radiance) or T. (reflective).
+const char *layer_prefix(GImageSpectraLayer layer)
 {
-    if (name.compare(0, 3, "S0.") != 0)
+    return layer == GIMAGE_SPECTRA_REFLECTIVE ? "T." : "S0.";
+}
+
+// The wavelength of a channel named PREFIX<digits>[,<digits>]nm (PREFIX: layer_prefix): 1 and *nm; 0 for a channel
+// of no layer's diagonal (another prefix; in the reflective layer, a re-radiation channel T.<nm>nm.<nm>nm, which
+// is not read); -1 for a name of the layer that is malformed, has more than 15 digits or gives 0 nm. The digits
+// make an integer below 2^53, divided by an exact power of ten: the double nearest to the written decimal.
+int spectral_wavelength(const std::string &name, GImageSpectraLayer layer, double *nm)
+{
+    const char *prefix = layer_prefix(layer);
+    const size_t plen = strlen(prefix);
+    if (name.compare(0, plen, prefix) != 0)
         return 0;
     static const double pow10[16] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
                                      1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
     long long digits = 0;
     int ndigits = 0, decimals = 0;
     bool comma = false;
-    const char *p = name.c_str() + 3;
+    const char *p = name.c_str() + plen;
     for (;; p++) {
         if (*p >= '0' && *p <= '9') {
             if (++ndigits > 15)
@@ -44,6 +54,8 @@ int spectral_wavelength(const std::string &name, double *nm)
             break;
         }
     }
+    if (layer == GIMAGE_SPECTRA_REFLECTIVE && ndigits > 0 && strncmp(p, "nm.", 3) == 0)
+        return 0; // re-radiation (bispectral) from this wavelength to another
     if (ndigits == 0 || (comma && decimals == 0) || strcmp(p, "nm") != 0 || digits == 0)
         return -1;
     *nm = (double)digits / pow10[decimals];
@@ -56,7 +68,13 @@ struct GmemHold {
     ~GmemHold() { gmem_free(p); }
 };
 
-int read_spectra_impl(const char *path, GImageSpectraBuf *out, GError *err)
+// The budget's reservation for the values handed out, released when the holder goes (an error on the way).
+struct BudgetHold {
+    size_t bytes = 0;
+    ~BudgetHold() { if (bytes) gmem_budget_release(bytes); }
+};
+
+int read_spectra_impl(const char *path, GImageSpectraLayer layer, GImageSpectraBuf *out, GError *err)
 {
     std::unique_ptr<ImageInput> in;
     int rc = goiio_open_checked(path, nullptr, &in, err);
@@ -67,11 +85,12 @@ int read_spectra_impl(const char *path, GImageSpectraBuf *out, GError *err)
     std::vector<std::pair<double, int>> waves; // wavelength, channel
     for (int c = 0; c < nch && c < (int)spec.channelnames.size(); c++) {
         double nm = 0.0;
-        int k = spectral_wavelength(spec.channelnames[c], &nm);
+        int k = spectral_wavelength(spec.channelnames[c], layer, &nm);
         if (k < 0)
             return gerror_set(err, G_ERR_IO, "%s: channel '%s' is not a wavelength of the spectral layout "
-                              "(S0.<nm above 0, at most 15 digits, a comma before the decimals>nm, e.g. "
-                              "S0.550,000000nm)", path, spec.channelnames[c].c_str());
+                              "(%s<nm above 0, at most 15 digits, a comma before the decimals>nm, e.g. "
+                              "%s550,000000nm)", path, spec.channelnames[c].c_str(), layer_prefix(layer),
+                              layer_prefix(layer));
         if (k > 0)
             waves.emplace_back(nm, c);
     }
@@ -86,7 +105,7 @@ int read_spectra_impl(const char *path, GImageSpectraBuf *out, GError *err)
                               spec.channelnames[waves[k - 1].second].c_str(),
                               spec.channelnames[waves[k].second].c_str(), waves[k].first);
     if (n == 0) {
-        *out = GImageSpectraBuf{w, h, 0, nullptr, nullptr};
+        *out = GImageSpectraBuf{w, h, 0, nullptr, nullptr, 0};
         return G_OK;
     }
     // open_checked has held w x h x nch floats to the budget already; the values alone must fit it too
@@ -103,6 +122,13 @@ int read_spectra_impl(const char *path, GImageSpectraBuf *out, GError *err)
         c1 = std::max(c1, wv.second + 1);
     }
     const int span = c1 - c0, band = spec.tile_width > 0 ? h : std::min(h, 64);
+    // the values outlive this call: held to the budget from before their allocation until gimage_spectra_free
+    BudgetHold held;
+    char what[96];
+    snprintf(what, sizeof what, "the spectra of a %dx%d image at %d wavelengths", w, h, n);
+    if ((rc = gmem_budget_reserve(npix * n * sizeof(float), what, err)) != G_OK)
+        return rc;
+    held.bytes = npix * n * sizeof(float);
     GmemHold wl, vals, scratch;
     wl.p = gmem_alloc((size_t)n * sizeof(double));
     vals.p = gmem_alloc(npix * n * sizeof(float));
@@ -129,20 +155,22 @@ int read_spectra_impl(const char *path, GImageSpectraBuf *out, GError *err)
     double *l = (double *)wl.p;
     for (int k = 0; k < n; k++)
         l[k] = waves[k].first;
-    *out = GImageSpectraBuf{w, h, n, l, v};
+    *out = GImageSpectraBuf{w, h, n, l, v, held.bytes};
     wl.p = vals.p = nullptr; // now out's
+    held.bytes = 0;
     return G_OK;
 }
 
 
-int image_read_spectra(const char *path, GImageSpectraBuf *out, GError *err)
+int image_read_spectra(const char *path, GImageSpectraLayer layer, GImageSpectraBuf *out, GError *err)
 {
     if (!out)
         return gerror_set(err, G_ERR_INVALID, "no spectra given");
-    *out = GImageSpectraBuf{0, 0, 0, nullptr, nullptr};
+    *out = GImageSpectraBuf{0, 0, 0, nullptr, nullptr, 0};
     if (!path || !*path)
         return gerror_set(err, G_ERR_INVALID, "no image file name given");
-    return goiio_guarded(path, "reading the spectra", "read image", err, [&] { return read_spectra_impl(path, out, err); });
+    return goiio_guarded(path, "reading the spectra", "read image", err,
+                         [&] { return read_spectra_impl(path, layer, out, err); });
 }
 
 } // namespace

@@ -244,13 +244,40 @@ int gimage_window(const char *path, GImageWindow *win, GError *err)
 
 int gimage_read_spectra(const char *path, GImageSpectraBuf *out, GError *err)
 {
+    return gimage_read_spectra_layer(path, GIMAGE_SPECTRA_EMISSIVE, out, err);
+}
+
+int gimage_read_spectra_layer(const char *path, GImageSpectraLayer layer, GImageSpectraBuf *out, GError *err)
+{
     if (!out)
         return gerror_set(err, G_ERR_INVALID, "no spectra given");
     *out = (GImageSpectraBuf){0};
     if (!path || !*path)
         return gerror_set(err, G_ERR_INVALID, "no image file name given");
     const GOiioOps *o = goiio_ops(err);
-    return o ? o->image_read_spectra(path, out, err) : G_ERR_IO;
+    if (layer != GIMAGE_SPECTRA_EMISSIVE && layer != GIMAGE_SPECTRA_REFLECTIVE)
+        return gerror_set(err, G_ERR_INVALID, "%s: unknown spectral layer %d", path, (int)layer);
+    int rc = gdecode_check_whole(path, err);
+    if (rc != G_OK)
+        return rc;
+    return o ? o->image_read_spectra(path, layer, out, err) : G_ERR_IO;
+}
+
+int gdecode_check_whole(const char *path, GError *err)
+{
+    int isolated = gdecode_isolated(err);
+    if (isolated < 0)
+        return isolated;
+    return isolated ? gdecode_run(path, GDECODE_CHECK, 0, NULL, NULL, NULL, NULL, err) : G_OK;
+}
+
+int gdecode_read_spectra_checked(const char *path, GImageSpectraLayer layer, GImageSpectraBuf *out, GError *err)
+{
+    *out = (GImageSpectraBuf){0};
+    if (layer != GIMAGE_SPECTRA_EMISSIVE && layer != GIMAGE_SPECTRA_REFLECTIVE)
+        return gerror_set(err, G_ERR_INVALID, "%s: unknown spectral layer %d", path, (int)layer);
+    const GOiioOps *o = goiio_ops(err);
+    return o ? o->image_read_spectra(path, layer, out, err) : G_ERR_IO;
 }
 
 int gimage_check_output(const char *path, GError *err)

@@ -65,7 +65,7 @@ typedef struct GOiioOps {
     int (*display_transform)(const char *config, const char *confine_dir, const char *display, const char *view,
                              float *pixels, int width, int height, int channels, GError *err);
     int (*image_window)(const char *path, GImageWindow *win, GError *err);
-    int (*image_read_spectra)(const char *path, GImageSpectraBuf *out, GError *err);
+    int (*image_read_spectra)(const char *path, GImageSpectraLayer layer, GImageSpectraBuf *out, GError *err);
 } GOiioOps;
 
 /** The module's entry: checks abi, keeps host (it outlives the module), fills ops. 0, or -1 for another ABI. */

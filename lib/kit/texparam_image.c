@@ -2,6 +2,7 @@
  * texture system, its texels memoised per surface point, and their colours in a model. The image node
  * (textures/image.c) and textured colours (`reflectance image { file "label.png" }`) both read images here. */
 #include "texparam_image.h"
+#include "texparam_spectral.h"
 #include "generic/services/image.h"
 #include "generic/services/texsys.h"
 
@@ -21,6 +22,7 @@ struct GTexImage {
     double max[3];   /* the largest linear value of each channel (once have_max) */
     int have_max;
     char *path;
+    GTexSpectral *spectral; /* a spectral OpenEXR's texels (then no texture system file), or NULL */
 };
 
 void gtexparam_image_free(GTexImage *im)
@@ -30,6 +32,7 @@ void gtexparam_image_free(GTexImage *im)
     for (int i = 0; i < 3; i++)
         gcolor_free(&im->basis[i]);
     gtexsys_unref(im->ts);
+    gtexparam_spectral_free(im->spectral);
     gmem_free(im->path);
     gmem_free(im);
 }
@@ -69,6 +72,11 @@ static int channel_max(GTexImage *im, GError *err)
 {
     if (im->have_max)
         return G_OK;
+    if (im->spectral) {
+        gtexparam_spectral_rgb_max(im->spectral, im->max);
+        im->have_max = 1;
+        return G_OK;
+    }
     GImage img;
     int rc = gimage_read(im->path, GIMAGE_READ_RAW | GIMAGE_READ_RGB, &img, err);
     if (rc != G_OK)
@@ -86,8 +94,10 @@ static int channel_max(GTexImage *im, GError *err)
     return G_OK;
 }
 
-int gtexparam_image_open(const char *path, const GImageNodeOptions *opt, const GColorModel *m, GTexImage **out,
-                         GError *err)
+/* gtexparam_image_open for a colour in role: a spectral OpenEXR gives its reflective channels to a reflectance, its
+ * emissive ones to a light (texparam_spectral.h); any other file is read as RGB through the texture system. */
+static int image_open(const char *path, const GImageNodeOptions *opt, const GColorModel *m, GColorRole role,
+                      GTexImage **out, GError *err)
 {
     *out = NULL;
     GImageNodeOptions o;
@@ -114,14 +124,17 @@ int gtexparam_image_open(const char *path, const GImageNodeOptions *opt, const G
     if (!(im->path = gmem_strdup(path)))
         rc = gerror_set(err, G_ERR_NOMEM, "image: out of memory");
     if (rc == G_OK)
+        rc = gtexparam_spectral_open(path, role, &im->spectral, err);
+    const int rgb_file = rc == G_OK && !im->spectral;
+    if (rgb_file)
         im->ts = o.texsys ? gtexsys_ref(o.texsys) : gtexsys_default(err);
-    if (rc == G_OK && !im->ts)
+    if (rgb_file && !im->ts)
         rc = err && err->code ? err->code : G_ERR_NOMEM;
     int channels = 0, srgb = 0;
-    if (rc == G_OK)
+    if (rgb_file && rc == G_OK)
         rc = gtexsys_open(im->ts, path, &im->file, &channels, &srgb, err);
     im->srgb = o.colorspace == GTEX_COLORSPACE_SRGB || (o.colorspace == GTEX_COLORSPACE_AUTO && srgb);
-    if (rc == G_OK) { /* one lookup of the finest level decodes the pixels: a truncated file fails here */
+    if (rgb_file && rc == G_OK) { /* one lookup of the finest level decodes the pixels: a truncated file fails here */
         static const double finest[4] = {0.0, 0.0, 0.0, 0.0};
         float v[3];
         if (gtexsys_lookup(im->ts, im->file, GTEX_WRAP_CLAMP, GTEX_WRAP_CLAMP, 0.5, 0.5, finest, 0.0, v) != G_OK)
@@ -147,6 +160,12 @@ int gtexparam_image_open(const char *path, const GImageNodeOptions *opt, const G
     return G_OK;
 }
 
+int gtexparam_image_open(const char *path, const GImageNodeOptions *opt, const GColorModel *m, GTexImage **out,
+                         GError *err)
+{
+    return image_open(path, opt, m, GCOLOR_REFLECTANCE, out, err);
+}
+
 int gtexparam_image_channel_max(GTexImage *im, double rgb[3], GError *err)
 {
     int rc = channel_max(im, err);
@@ -162,6 +181,15 @@ int gtexparam_image_rgb(const GTexImage *im, GSurfPoint *sp, double rgb[3])
         rgb[0] = c.x;
         rgb[1] = c.y;
         rgb[2] = c.z;
+        return G_OK;
+    }
+    if (im->spectral) { /* the texel's spectrum in linear sRGB, as the layer's role sees it */
+        GSpectrumNM s;
+        double xyz[3];
+        gtexparam_spectral_lookup(im->spectral, im->swrap, im->twrap, sp->u, 1.0 - sp->v, &s);
+        gcie_nm_to_xyz(&s, gtexparam_spectral_role(im->spectral), xyz);
+        gcie_xyz_to_rgb(xyz, rgb);
+        gsurfpoint_cache_put(sp, im, 1.0, gvec3(rgb[0], rgb[1], rgb[2]));
         return G_OK;
     }
     float v[3];
@@ -195,6 +223,11 @@ int gtexparam_image_uplift(const GTexImage *im, const double rgb[3], GColorRole 
 
 int gtexparam_image_color(const GTexImage *im, GSurfPoint *sp, GColorRole role, GColor *out)
 {
+    if (im->spectral) { /* the texels' spectrum at the point, into out's model */
+        GSpectrumNM s;
+        gtexparam_spectral_lookup(im->spectral, im->swrap, im->twrap, sp->u, 1.0 - sp->v, &s);
+        return gcolor_from_nm(out, &s, role);
+    }
     double rgb[3];
     int rc = gtexparam_image_rgb(im, sp, rgb);
     return rc != G_OK ? rc : gtexparam_image_uplift(im, rgb, role, out);
@@ -202,6 +235,15 @@ int gtexparam_image_color(const GTexImage *im, GSurfPoint *sp, GColorRole role, 
 
 int gtexparam_image_max(GTexImage *im, GColorRole role, GColor *out, GError *err)
 {
+    if (im->spectral) { /* the largest value of every wavelength */
+        GSpectrumNM top;
+        int rc = gtexparam_spectral_max(im->spectral, &top);
+        if (rc != G_OK)
+            return gerror_set(err, rc, "image '%s': out of memory", im->path);
+        if ((rc = gcolor_alloc(out, im->model)) == G_OK && (rc = gcolor_from_nm(out, &top, role)) != G_OK)
+            gcolor_free(out);
+        return rc;
+    }
     double mx[3];
     int rc = gtexparam_image_channel_max(im, mx, err);
     if (rc != G_OK)
@@ -240,7 +282,6 @@ int gtexparam_image_option(GReader *r, const char *key, GImageNodeOptions *o, GE
 
 int gtexparam_image_read(GReader *r, const GColorModel *m, GColorRole role, GTexImage **out, GError *err)
 {
-    (void)role;
     *out = NULL;
     GImageNodeOptions o;
     memset(&o, 0, sizeof o);
@@ -268,7 +309,7 @@ int gtexparam_image_read(GReader *r, const GColorModel *m, GColorRole role, GTex
         rc = G_OK;
     if (rc == G_OK && !path)
         rc = greader_error(r, err, "image: needs file");
-    if (rc == G_OK && (rc = gtexparam_image_open(path, &o, m, out, err)) != G_OK) {
+    if (rc == G_OK && (rc = image_open(path, &o, m, role, out, err)) != G_OK) {
         char msg[sizeof err->message]; /* a file that cannot be read is reported at its name */
         snprintf(msg, sizeof msg, "%s", err ? err->message : "image cannot be read");
         rc = greader_error_at(r, err, rc, file_line, file_col, "%s", msg);

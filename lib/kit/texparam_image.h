@@ -8,8 +8,6 @@
  * (gtexparam_image_open) in model m; an image that cannot be read is reported at its file name. */
 GENERIC_NODISCARD int gtexparam_image_read(GReader *r, const GColorModel *m, GColorRole role, GTexImage **out,
                                            GError *err);
-/** The texel at sp uplifted in role into out. */
-GENERIC_NODISCARD int gtexparam_image_color(const GTexImage *im, GSurfPoint *sp, GColorRole role, GColor *out);
 /** The largest value of each channel uplifted in role, into new storage of the image's model. */
 GENERIC_NODISCARD int gtexparam_image_max(GTexImage *im, GColorRole role, GColor *out, GError *err);
 

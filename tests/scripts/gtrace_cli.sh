@@ -80,5 +80,15 @@ if command -v iinfo > /dev/null; then
     iinfo "$TMP/q.png" | grep -q "20 x  *15," || fail "--width 20 did not keep the aspect: $(iinfo "$TMP/q.png")"
 fi
 
+# the viewing illuminant: an unknown name is a usage error listing the known ones; a named one and a blackbody render
+"$GT" "$TMP/good.scene" -o "$TMP/x.png" --illuminant F13 > "$TMP/err" 2>&1
+[ $? -eq 2 ] || fail "--illuminant F13: expected exit status 2"
+grep -q "unknown illuminant 'F13' (known: A, B, C, D50.*F11.*LED-B1.*blackbody K)" "$TMP/err" ||
+    fail "--illuminant F13: the known names are not listed: $(cat "$TMP/err")"
+for ill in F11 "blackbody 3200"; do
+    "$GT" "$TMP/good.scene" -o "$TMP/ill.png" -q --width 16 --threads 1 --illuminant "$ill" > "$TMP/err" 2>&1 ||
+        fail "--illuminant $ill failed: $(cat "$TMP/err")"
+done
+
 [ $fails -eq 0 ] && echo "gtrace command line: all checks passed"
 [ $fails -eq 0 ]

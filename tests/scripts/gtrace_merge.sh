@@ -55,6 +55,10 @@ refused "a piece of the Whitted render among path pieces" \
 "$GT" "$SCENE" $ARGS --integrator path --spp 3 --crop 0,0,41,29 -o "$TMP/spp0.exr" || fail "a 3-sample piece failed"
 refused "a piece of another sample count" "spp 3 in .*spp0.exr, spp 2 in .*piece1.exr" \
     "$TMP/spp0.exr" "$TMP/piece1.exr" "$TMP/piece2.exr" "$TMP/piece3.exr"
+"$GT" "$SCENE" $ARGS --integrator path --illuminant A --crop 0,0,41,29 -o "$TMP/ill0.exr" ||
+    fail "a piece with a viewing illuminant failed"
+refused "a piece of another viewing illuminant" "illuminant A in .*ill0.exr, illuminant none in .*piece1.exr" \
+    "$TMP/ill0.exr" "$TMP/piece1.exr" "$TMP/piece2.exr" "$TMP/piece3.exr"
 cp -r "$(dirname "$SCENE")" "$TMP/scenes" # the same scene with a comment more: another file, another digest
 printf '# another scene\n' >> "$TMP/scenes/$(basename "$SCENE")"
 # In the sanitizer build LeakSanitizer's thread tracer crashes at this run's exit (a defect of the sanitizer's
@@ -120,5 +124,5 @@ grep -q "no pieces given" "$TMP/log" || fail "gtrace merge without pieces: $(cat
 
 [ $fails -eq 0 ] && echo "gtrace_merge: four pieces rendered apart merge bit-identically (Whitted, path);" \
     "--spectral pieces merge bit-identically with their wavelengths; overlap, gap, another size, pieces of" \
-    "another integrator, sample count or scene, an unreadable piece, other wavelengths and a piece without spectra refused; usage errors exit 2"
+    "another integrator, sample count, viewing illuminant or scene, an unreadable piece, other wavelengths and a piece without spectra refused; usage errors exit 2"
 exit $fails

@@ -12,6 +12,7 @@
 #include "integrators/sppm.h"
 #include "integrators/light.h"
 #include "film/progress.h"
+#include "film/viewing.h"
 #include "lights/emissive.h"
 #include "trace/sampler.h"
 
@@ -37,6 +38,7 @@ typedef struct Job {
     int sampler; /* the path tracer's (RenderSettings.sampler) */
     int x0, y0; /* the crop's origin in the full image */
     Media media0;
+    const double *adaptation; /* the viewing illuminant's matrix on XYZ (RenderSettings.adaptation), or NULL */
 } Job;
 
 /* One thread's state, kept from one region to the next: its context, the pixel's sample pairing, its counts, the
@@ -119,6 +121,8 @@ static int store_pixel(Worker *w, const Job *job, int x, int y, const GColor *pi
     int rc = gcolor_to_xyz(pixel, GCOLOR_LIGHT, xyz);
     if (rc < 0)
         return rc;
+    if (job->adaptation)
+        viewing_apply(job->adaptation, xyz, xyz);
     gcie_xyz_to_rgb(xyz, lin);
     float *px = job->fb->pixels + 3 * ((size_t)(y - job->y0) * (size_t)job->fb->width + (size_t)(x - job->x0));
     int dropped = 0;
@@ -186,6 +190,7 @@ struct Renderer {
     int nthreads, status;
     const char *culprit;
     double seconds;
+    double adaptation[9]; /**< RenderSettings.adaptation, when adapt */
 };
 
 /* The settings' checks; G_OK or G_ERR_INVALID. */
@@ -300,6 +305,10 @@ int renderer_create(Renderer **out, const Scene *s, const RenderSettings *rs, Fr
                    .x0 = fb->x, .y0 = fb->y, .integrator = rs->integrator, .sampler = rs->sampler,
                    .ahead = rs->spp == 1 && camera_is_pinhole(&r->cam),
                    .finite_by_xyz = rs->spp == 1 && gcolormodel_xyz_shows_nonfinite(s->model)};
+    if (rs->adapt) { /* the renderer keeps its own copy: rs need not outlive it */
+        memcpy(r->adaptation, rs->adaptation, sizeof r->adaptation);
+        r->job.adaptation = r->adaptation;
+    }
     if (s->medium) {
         r->job.media0.m[0] = s->medium;
         r->job.media0.n = 1;

@@ -42,6 +42,10 @@ typedef struct RenderSettings {
     int sampler;         /**< RENDER_PATH: SAMPLER_SOBOL (trace/sampler.h; 0, the default: the pixel positions and
                               the paths' main numbers from the pixel's scrambled Sobol sequence) or
                               SAMPLER_INDEPENDENT (stratified pixel positions, the generator's numbers) */
+    int adapt;           /**< 1: every pixel's XYZ is multiplied by adaptation before its conversion to linear sRGB
+                              (the viewing illuminant, film/viewing.h); the values at wavelengths are kept as they
+                              are. 0: none */
+    double adaptation[9]; /**< with adapt: the 3x3 matrix, row by row (viewing_adaptation) */
 } RenderSettings;
 
 typedef struct RenderStats {

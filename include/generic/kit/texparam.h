@@ -114,7 +114,13 @@ GENERIC_API GENERIC_NODISCARD int gtexparam_color_extremes(const GTexColor *p, G
 /** Opens an image for lookups at (u, v) with the image node's loading and checks (gnode_image_create, nodes.h:
  * the texture system's size limit and decode, then one lookup of the finest level, so a truncated file fails here);
  * the colours of the three linear primaries in model m (role reflectance, as the image node reads a texel).
- * G_ERR_IO naming the file when it cannot be read or decoded; G_ERR_INVALID for unknown options. */
+ * A spectral OpenEXR (services/image.h: reflective channels T.<nm>nm) is read whole instead, its texels' spectra
+ * kept as floats at the file's wavelengths against the memory budget, looked up bilinearly (no MIP-mapping, no
+ * blur) and converted per lookup with gcolor_from_nm; a `image { }` colour in the light role reads the emissive
+ * channels (S0.<nm>nm); a file with only the other layer gives that one. An OpenEXR without spectral channels is
+ * read as RGB. G_ERR_IO naming the file when it
+ * cannot be read or decoded, or when a spectral value is NaN, infinite or negative; G_ERR_INVALID for unknown
+ * options. */
 GENERIC_API GENERIC_NODISCARD int gtexparam_image_open(const char *path, const GImageNodeOptions *opt,
                                                        const GColorModel *m, GTexImage **out, GError *err);
 /** Frees an image; NULL is a no-op. */
@@ -131,6 +137,10 @@ GENERIC_API GENERIC_NODISCARD int gtexparam_image_rgb(const GTexImage *im, GSurf
  * linear and role is reflectance (the image node's colour), else uplifted (gcolor_from_rgb). */
 GENERIC_API GENERIC_NODISCARD int gtexparam_image_uplift(const GTexImage *im, const double rgb[3], GColorRole role,
                                                          GColor *out);
+/** The texel at sp's (u, v) as a colour of out's model in role: a spectral image's spectrum through gcolor_from_nm,
+ * else gtexparam_image_rgb then gtexparam_image_uplift. */
+GENERIC_API GENERIC_NODISCARD int gtexparam_image_color(const GTexImage *im, GSurfPoint *sp, GColorRole role,
+                                                        GColor *out);
 /** The largest linear value of each channel, from the whole image read once (services/image.h: in the decoder
  * process, within the memory budget) on the first call; a status (the read's). Not thread safe: for creation. */
 GENERIC_API GENERIC_NODISCARD int gtexparam_image_channel_max(GTexImage *im, double rgb[3], GError *err);

@@ -173,7 +173,15 @@ typedef struct GImageSpectraBuf {
     double *wavelengths; /**< count of them, in nm, increasing (NULL when count is 0) */
     /** width * height * count values, laid out as GImageSpectra's (NULL when count is 0) */
     float *values;
+    size_t charged; /**< bytes of values held against the memory budget (generic/memory.h) until
+                         gimage_spectra_free; 0 for a buffer the caller filled */
 } GImageSpectraBuf;
+
+/** The two layers of spectral channels in the layout of Fichet, Pacanowski and Wilkie 2021 (GImageSpectra). */
+typedef enum GImageSpectraLayer {
+    GIMAGE_SPECTRA_EMISSIVE = 0,  /**< S0.<wavelength>nm: radiance (the first Stokes component) */
+    GIMAGE_SPECTRA_REFLECTIVE = 1 /**< T.<wavelength>nm: reflectance (the diagonal of a re-radiation matrix) */
+} GImageSpectraLayer;
 
 /** Reads the spectral channels of a file (the first subimage): every channel whose name starts with "S0." is one,
  * and its wavelength is parsed from its name, which must be S0.<digits>[,<digits>]nm (at most 15 digits, a
@@ -186,7 +194,18 @@ typedef struct GImageSpectraBuf {
  * memory budget or memory runs out. On failure out is zeroed. */
 GENERIC_API GENERIC_NODISCARD int gimage_read_spectra(const char *path, GImageSpectraBuf *out, GError *err);
 
-/** Frees what gimage_read_spectra allocated and zeroes the struct; NULL, or spectra already freed, is a no-op. */
+/** gimage_read_spectra for either layer: GIMAGE_SPECTRA_EMISSIVE reads the S0. channels as gimage_read_spectra
+ * does; GIMAGE_SPECTRA_REFLECTIVE the channels named T.<digits>[,<digits>]nm with the same rules (re-radiation
+ * channels T.<nm>nm.<nm>nm, the off-diagonal of a bispectral file, are ignored). The values are reserved against
+ * the memory budget before they are allocated and held until gimage_spectra_free (out->charged): G_ERR_NOMEM
+ * names the image and the limit when they do not fit. The channels are read in this process, after a decoder
+ * process (as gimage_read's, unless GENERIC_DECODE=inprocess) decoded the file whole under its limits: a file that
+ * crashes, hangs or blows up the reader is G_ERR_IO there. G_ERR_INVALID for another layer. */
+GENERIC_API GENERIC_NODISCARD int gimage_read_spectra_layer(const char *path, GImageSpectraLayer layer,
+                                                            GImageSpectraBuf *out, GError *err);
+
+/** Frees what gimage_read_spectra allocated, releases out->charged from the memory budget, and zeroes the struct;
+ * NULL, or spectra already freed, is a no-op. */
 GENERIC_API void gimage_spectra_free(GImageSpectraBuf *s);
 
 /** Writes img to path, encoding chosen by the extension (see the top of this file); the file appears
