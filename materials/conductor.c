@@ -142,20 +142,38 @@ static int rough_geometry(const Conductor *c, const RoughAt *a, const GSurfPoint
     return 1;
 }
 
-/* f cos_in of the rough surface a for white light into f (a colour of the model); 0 when nothing is reflected. */
-static int rough_value(const Conductor *c, const RoughAt *a, const GSurfPoint *sp, GVec3 n, GVec3 in, GVec3 out,
-                       GColor *f)
+/* scale * f cos_in of the rough surface a into f from a pair's geometry: the cosines with the normal and the
+ * facet's cosine, the single-scattering term; the Fresnel colour and the compensation's in one pass. */
+static int rough_mix(const Conductor *c, const RoughAt *a, double cos_i, double cos_o, double cos_h, double single,
+                     double scale, GColor *f)
 {
-    double single, cos_h, cos_i, cos_o, multiple = 0.0;
-    if (!rough_geometry(c, a, sp, n, in, out, &single, &cos_h, &cos_i, &cos_o)) {
-        gcolor_black(f);
-        return G_OK;
-    }
+    double multiple = 0.0;
     if (single < 1e-30) /* far outside a narrow lobe: below what a float keeps to its precision */
         single = 0.0;
     if (c->compensate)
         multiple = (1.0 - gmicrofacet_albedo_at(a->e, cos_o)) * (1.0 - gmicrofacet_albedo_at(a->e, cos_i)) * cos_i;
-    return gmaterial_fresnel_conductor_mix(f, cos_h, &c->eta, &c->k, single, c->compensate ? a->ms : NULL, multiple);
+    return gmaterial_fresnel_conductor_mix(f, cos_h, &c->eta, &c->k, single * scale, c->compensate ? a->ms : NULL,
+                                           multiple * scale);
+}
+
+/* rough_mix for local directions wi, wo above the surface given wi.wo. */
+static int mix_value(const Conductor *c, const RoughAt *a, double cos_i, double cos_o, double cos_io, double single,
+                     double scale, GColor *f)
+{
+    GMicrofacetPair p = {cos_i, cos_o, cos_io};
+    return rough_mix(c, a, cos_i, cos_o, gmicrofacet_pair_cos_h(p), single, scale, f);
+}
+
+/* f cos_in of the rough surface a for white light into f (a colour of the model); 0 when nothing is reflected. */
+static int rough_value(const Conductor *c, const RoughAt *a, const GSurfPoint *sp, GVec3 n, GVec3 in, GVec3 out,
+                       GColor *f)
+{
+    double single, cos_h, cos_i, cos_o;
+    if (!rough_geometry(c, a, sp, n, in, out, &single, &cos_h, &cos_i, &cos_o)) {
+        gcolor_black(f);
+        return G_OK;
+    }
+    return rough_mix(c, a, cos_i, cos_o, cos_h, single, 1.0, f);
 }
 
 /* f cos_in for white light into f at a pair that reflects (cos_in > 0 about the shading normal n; a mirror pair for
@@ -164,11 +182,16 @@ static int value_at(const Conductor *c, GSurfPoint *sp, GVec3 n, double cos_in, 
 {
     if (c->smooth)
         return gmaterial_fresnel_conductor(f, cos_in, &c->eta, &c->k);
+    RoughAt a;
+    int rc;
+    if (!c->rough.gen) { /* the material's own surface: nothing on the arena */
+        rc = rough_at(c, sp, &a);
+        return rc == G_OK ? rough_value(c, &a, sp, n, in, out, f) : rc;
+    }
     if (!sp->scratch)
         return G_ERR_INVALID;
     GScratchMark mark = gscratch_mark(sp->scratch);
-    RoughAt a;
-    int rc = rough_at(c, sp, &a);
+    rc = rough_at(c, sp, &a);
     if (rc == G_OK)
         rc = rough_value(c, &a, sp, n, in, out, f);
     gscratch_release(sp->scratch, mark);
@@ -279,30 +302,23 @@ static int conductor_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, co
         GVec3 h = gmicrofacet_sample_visible(&a.mf, wo, u1 < 1.0 ? u1 : 0.0, u2);
         wi = gvec3_sub(gvec3_scale(h, 2.0 * gvec3_dot(wo, h)), wo);
     }
-    double pdf = wi.z > 0.0 ? rough_pdf(c, &a, wi, wo) : 0.0;
+    int drawn = 0;
+    if (wi.z > 0.0) { /* else reflected below the surface: nothing drawn */
+        double pdf_mf, single = gmicrofacet_reflect_cos_pdf(&a.mf, wi, wo, &pdf_mf);
+        s->in = gframe_to_world(&fr, wi);
+        s->pdf = (1.0 - q) * pdf_mf + q * wi.z / M_PI;
+        s->flags = GSAMPLE_REFLECT;
+        drawn = s->pdf > 0.0;
+        /* f cos_in / pdf as gmaterial_sample_weight gives it, from the geometry just computed: black where the
+         * reflection is (an infinite density, or a direction the geometric normal or the shading normal refuses) */
+        if (drawn && (!isfinite(s->pdf) || !gmaterial_sides_agree(sp, s->in, out, 0) || !(gvec3_dot(s->in, n) > 0.0)))
+            gcolor_black(weight);
+        else if (drawn)
+            rc = mix_value(c, &a, wi.z, wo.z, gvec3_dot(wi, wo), single, 1.0 / s->pdf, weight);
+    }
     if (c->rough.gen && sp->scratch)
         gscratch_release(sp->scratch, mark);
-    if (!(wi.z > 0.0)) /* reflected below the surface: nothing drawn */
-        return 0;
-    s->in = gframe_to_world(&fr, wi);
-    s->pdf = pdf;
-    s->flags = GSAMPLE_REFLECT;
-    if (!(s->pdf > 0.0))
-        return 0;
-    if (!isfinite(s->pdf)) { /* as gmaterial_sample_weight: no weight for an infinite density */
-        gcolor_black(weight);
-        return 1;
-    }
-    /* f cos_in / pdf, as gmaterial_sample_weight gives it, without the white light and the second dispatch */
-    double cos_in = reflecting_cos(c, sp, s->in, out, &n);
-    if (cos_in <= 0.0) {
-        gcolor_black(weight);
-        return 1;
-    }
-    rc = value_at(c, sp, n, cos_in, s->in, out, weight);
-    if (rc == G_OK)
-        rc = gcolor_scale(weight, weight, 1.0 / s->pdf);
-    return rc ? rc : 1;
+    return rc != G_OK ? rc : drawn;
 }
 
 static double conductor_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)

@@ -85,6 +85,10 @@ GENERIC_API double gmicrofacet_pdf_reflect(const GMicrofacet *m, GVec3 wo, GVec3
  * reflection is this times its Fresnel reflectance F(wi.h). */
 GENERIC_API double gmicrofacet_reflect_cos(const GMicrofacet *m, GVec3 wi, GVec3 wo);
 
+/** gmicrofacet_reflect_cos(m, wi, wo), with *pdf = gmicrofacet_pdf_reflect(m, wo, wi): the two share D(h), so a
+ * sampler weighing the direction it drew computes it once. Both 0 unless wi and wo are above the surface. */
+GENERIC_API double gmicrofacet_reflect_cos_pdf(const GMicrofacet *m, GVec3 wi, GVec3 wo, double *pdf);
+
 /** A pair of unit directions above the surface as an isotropic distribution sees them, without a frame: their
  * cosines with the shading normal (wi.z and wo.z of the local frame) and with each other (wi.wo). */
 typedef struct GMicrofacetPair {
