@@ -19,3 +19,9 @@ bench: deps
 
 # Benchmarks that read images start the image decoder process (lib/build.mk).
 $(BENCH_BIN): | $(DECODER)
+
+# the material preview path-traced per material against lambert (bench/materials.sh)
+.PHONY: bench-materials
+bench-materials: $(BUILD)/bin/gtrace
+	@bench/materials.sh $(BUILD)
+bench: bench-materials

@@ -115,24 +115,94 @@ static GFrame frame_at(const Conductor *c, const GSurfPoint *sp, GVec3 n)
     return c->anisotropic ? gframe_from_normal_tangent(n, sp->dpdu) : gframe_from_normal(n);
 }
 
+/* The geometry of the rough surface a for light from in towards out about the shading normal n: the single-scattering
+ * term (gmicrofacet_reflect_cos), the cosine of the facet (in.h) and the two cosines with n. An isotropic surface
+ * needs no frame: three dot products (gmicrofacet_reflect_cos_pair). 0 when either direction is below n. */
+static int rough_geometry(const Conductor *c, const RoughAt *a, const GSurfPoint *sp, GVec3 n, GVec3 in, GVec3 out,
+                          double *single, double *cos_h, double *cos_i, double *cos_o)
+{
+    if (!c->anisotropic) {
+        GMicrofacetPair p = {gvec3_dot(in, n), gvec3_dot(out, n), gvec3_dot(in, out)};
+        if (!(p.cos_i > 0.0) || !(p.cos_o > 0.0))
+            return 0;
+        *single = gmicrofacet_reflect_cos_pair(&a->mf, p);
+        *cos_h = gmicrofacet_pair_cos_h(p);
+        *cos_i = p.cos_i;
+        *cos_o = p.cos_o;
+        return 1;
+    }
+    GFrame fr = frame_at(c, sp, n);
+    GVec3 wi = gframe_to_local(&fr, in), wo = gframe_to_local(&fr, out);
+    if (!(wi.z > 0.0) || !(wo.z > 0.0))
+        return 0;
+    *single = gmicrofacet_reflect_cos(&a->mf, wi, wo);
+    *cos_h = gvec3_dot(wi, gvec3_normalize(gvec3_add(wi, wo)));
+    *cos_i = wi.z;
+    *cos_o = wo.z;
+    return 1;
+}
+
+/* scale * f cos_in of the rough surface a into f from a pair's geometry: the cosines with the normal and the
+ * facet's cosine, the single-scattering term; the Fresnel colour and the compensation's in one pass. */
+static int rough_mix(const Conductor *c, const RoughAt *a, double cos_i, double cos_o, double cos_h, double single,
+                     double scale, GColor *f)
+{
+    double multiple = 0.0;
+    if (single < 1e-30) /* far outside a narrow lobe: below what a float keeps to its precision */
+        single = 0.0;
+    if (c->compensate)
+        multiple = (1.0 - gmicrofacet_albedo_at(a->e, cos_o)) * (1.0 - gmicrofacet_albedo_at(a->e, cos_i)) * cos_i;
+    return gmaterial_fresnel_conductor_mix(f, cos_h, &c->eta, &c->k, single * scale, c->compensate ? a->ms : NULL,
+                                           multiple * scale);
+}
+
+/* rough_mix for local directions wi, wo above the surface given wi.wo. */
+static int mix_value(const Conductor *c, const RoughAt *a, double cos_i, double cos_o, double cos_io, double single,
+                     double scale, GColor *f)
+{
+    GMicrofacetPair p = {cos_i, cos_o, cos_io};
+    return rough_mix(c, a, cos_i, cos_o, gmicrofacet_pair_cos_h(p), single, scale, f);
+}
+
 /* f cos_in of the rough surface a for white light into f (a colour of the model); 0 when nothing is reflected. */
 static int rough_value(const Conductor *c, const RoughAt *a, const GSurfPoint *sp, GVec3 n, GVec3 in, GVec3 out,
                        GColor *f)
 {
-    GFrame fr = frame_at(c, sp, n);
-    GVec3 wi = gframe_to_local(&fr, in), wo = gframe_to_local(&fr, out);
-    if (!(wi.z > 0.0) || !(wo.z > 0.0)) {
+    double single, cos_h, cos_i, cos_o;
+    if (!rough_geometry(c, a, sp, n, in, out, &single, &cos_h, &cos_i, &cos_o)) {
         gcolor_black(f);
         return G_OK;
     }
-    GVec3 h = gvec3_normalize(gvec3_add(wi, wo));
-    double single = gmicrofacet_reflect_cos(&a->mf, wi, wo), multiple = 0.0;
-    if (single < 1e-30) /* far outside a narrow lobe: below what a float keeps to its precision */
-        single = 0.0;
-    if (c->compensate)
-        multiple = (1.0 - gmicrofacet_albedo_at(a->e, wo.z)) * (1.0 - gmicrofacet_albedo_at(a->e, wi.z)) * wi.z;
-    return gmaterial_fresnel_conductor_mix(f, gvec3_dot(wi, h), &c->eta, &c->k, single, c->compensate ? a->ms : NULL,
-                                           multiple);
+    return rough_mix(c, a, cos_i, cos_o, cos_h, single, 1.0, f);
+}
+
+/* f cos_in for white light into f at a pair that reflects (cos_in > 0 about the shading normal n; a mirror pair for
+ * the smooth surface). */
+static int value_at(const Conductor *c, GSurfPoint *sp, GVec3 n, double cos_in, GVec3 in, GVec3 out, GColor *f)
+{
+    if (c->smooth)
+        return gmaterial_fresnel_conductor(f, cos_in, &c->eta, &c->k);
+    RoughAt a;
+    int rc;
+    if (!c->rough.gen) { /* the material's own surface: nothing on the arena */
+        rc = rough_at(c, sp, &a);
+        return rc == G_OK ? rough_value(c, &a, sp, n, in, out, f) : rc;
+    }
+    if (!sp->scratch)
+        return G_ERR_INVALID;
+    GScratchMark mark = gscratch_mark(sp->scratch);
+    rc = rough_at(c, sp, &a);
+    if (rc == G_OK)
+        rc = rough_value(c, &a, sp, n, in, out, f);
+    gscratch_release(sp->scratch, mark);
+    return rc;
+}
+
+/* The pair's cosine about the shading normal n, 0 where the conductor reflects nothing from in towards out. */
+static double reflecting_cos(const Conductor *c, GSurfPoint *sp, GVec3 in, GVec3 out, GVec3 *n)
+{
+    double cos_in = gmaterial_cos_in(sp, in, out, n);
+    return cos_in > 0.0 && (!c->smooth || gmaterial_is_mirror_pair(in, *n, out)) ? cos_in : 0.0;
 }
 
 static int conductor_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
@@ -140,22 +210,22 @@ static int conductor_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in,
 {
     const Conductor *c = (const Conductor *)self;
     GVec3 n;
-    double cos_in = gmaterial_cos_in(sp, in, out, &n);
-    if (cos_in <= 0.0 || (c->smooth && !gmaterial_is_mirror_pair(in, n, out))) {
+    double cos_in = reflecting_cos(c, sp, in, out, &n);
+    if (cos_in <= 0.0) {
         gcolor_black(result);
         return G_OK;
+    }
+    if (result->v != illum->v) { /* the value straight into result, then times the light */
+        int rc = value_at(c, sp, n, cos_in, in, out, result);
+        return rc == G_OK ? gcolor_mul(result, result, illum) : rc;
     }
     if (!sp->scratch)
         return G_ERR_INVALID;
     GScratchMark mark = gscratch_mark(sp->scratch);
     GColor f;
-    RoughAt a;
     int rc = gcolor_scratch_uncleared(&f, self->model, sp->scratch);
-    if (rc == G_OK && !c->smooth)
-        rc = rough_at(c, sp, &a);
     if (rc == G_OK)
-        rc = c->smooth ? gmaterial_fresnel_conductor(&f, cos_in, &c->eta, &c->k)
-                       : rough_value(c, &a, sp, n, in, out, &f);
+        rc = value_at(c, sp, n, cos_in, in, out, &f);
     if (rc == G_OK)
         rc = gcolor_mul(result, &f, illum);
     gscratch_release(sp->scratch, mark);
@@ -232,18 +302,23 @@ static int conductor_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, co
         GVec3 h = gmicrofacet_sample_visible(&a.mf, wo, u1 < 1.0 ? u1 : 0.0, u2);
         wi = gvec3_sub(gvec3_scale(h, 2.0 * gvec3_dot(wo, h)), wo);
     }
-    double pdf = wi.z > 0.0 ? rough_pdf(c, &a, wi, wo) : 0.0;
+    int drawn = 0;
+    if (wi.z > 0.0) { /* else reflected below the surface: nothing drawn */
+        double pdf_mf, single = gmicrofacet_reflect_cos_pdf(&a.mf, wi, wo, &pdf_mf);
+        s->in = gframe_to_world(&fr, wi);
+        s->pdf = (1.0 - q) * pdf_mf + q * wi.z / M_PI;
+        s->flags = GSAMPLE_REFLECT;
+        drawn = s->pdf > 0.0;
+        /* f cos_in / pdf as gmaterial_sample_weight gives it, from the geometry just computed: black where the
+         * reflection is (an infinite density, or a direction the geometric normal or the shading normal refuses) */
+        if (drawn && (!isfinite(s->pdf) || !gmaterial_sides_agree(sp, s->in, out, 0) || !(gvec3_dot(s->in, n) > 0.0)))
+            gcolor_black(weight);
+        else if (drawn)
+            rc = mix_value(c, &a, wi.z, wo.z, gvec3_dot(wi, wo), single, 1.0 / s->pdf, weight);
+    }
     if (c->rough.gen && sp->scratch)
         gscratch_release(sp->scratch, mark);
-    if (!(wi.z > 0.0)) /* reflected below the surface: nothing drawn */
-        return 0;
-    s->in = gframe_to_world(&fr, wi);
-    s->pdf = pdf;
-    s->flags = GSAMPLE_REFLECT;
-    if (!(s->pdf > 0.0))
-        return 0;
-    rc = gmaterial_sample_weight(self, sp, s->in, out, NULL, 0, s->pdf, weight);
-    return rc ? rc : 1;
+    return rc != G_OK ? rc : drawn;
 }
 
 static double conductor_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index)
@@ -252,15 +327,27 @@ static double conductor_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVe
     const Conductor *c = (const Conductor *)self;
     if (c->smooth || gvec3_dot(out, sp->geometric_normal) <= 0.0)
         return 0.0;
-    GFrame fr = frame_at(c, sp, gsurfpoint_normal(sp));
-    GVec3 wo = gframe_to_local(&fr, out);
+    GVec3 n = gsurfpoint_normal(sp);
+    GFrame fr = {0};
+    if (c->anisotropic)
+        fr = frame_at(c, sp, n);
+    GVec3 wo = c->anisotropic ? gframe_to_local(&fr, out) : gvec3(0.0, 0.0, gvec3_dot(out, n));
     if (!(wo.z > 0.0))
         return 0.0;
     RoughAt a;
     GScratchMark mark = {0};
     if (c->rough.gen && sp->scratch)
         mark = gscratch_mark(sp->scratch);
-    double pdf = rough_at(c, sp, &a) == G_OK ? rough_pdf(c, &a, gframe_to_local(&fr, in), wo) : 0.0;
+    double pdf = 0.0;
+    if (rough_at(c, sp, &a) != G_OK)
+        pdf = 0.0;
+    else if (c->anisotropic)
+        pdf = rough_pdf(c, &a, gframe_to_local(&fr, in), wo);
+    else { /* isotropic: the pair's cosines, no frame */
+        GMicrofacetPair p = {gvec3_dot(in, n), wo.z, gvec3_dot(in, out)};
+        double q = cosine_share(c, &a, wo);
+        pdf = (1.0 - q) * gmicrofacet_pdf_reflect_pair(&a.mf, p) + q * gfmax(p.cos_i, 0.0) / M_PI;
+    }
     if (c->rough.gen && sp->scratch)
         gscratch_release(sp->scratch, mark);
     return pdf;

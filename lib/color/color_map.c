@@ -29,15 +29,12 @@ static int vector_of(const GColor *x, GColor *tmp, GScratch *arena, const float 
     return rc;
 }
 
-static int map_plain(GColor *out, GColorSamplesFn f, const void *params, const GColor *a, const GColor *b,
-                     const GColor *c)
+/* map_plain with an operand that is not a vector (its plain part through the thread's arena): apart, so that the
+ * common case, every operand a vector, pays for none of its frame. */
+__attribute__((noinline)) static int map_plain(GColor *out, GColorSamplesFn f, const void *params, const GColor *a,
+                                               const GColor *b, const GColor *c)
 {
     const GColorModel *m = out->model;
-    if ((!a || a->kind == GCOLOR_VECTOR) && (!b || b->kind == GCOLOR_VECTOR) && (!c || c->kind == GCOLOR_VECTOR)) {
-        f(out->v, a->v, b ? b->v : NULL, c ? c->v : NULL, m->nvalues, params);
-        out->kind = GCOLOR_VECTOR;
-        return G_OK;
-    }
     GScratch *arena = gscratch_thread();
     if (!arena)
         return G_ERR_NOMEM;
@@ -81,7 +78,14 @@ int gcolor_map_samples(GColor *out, GColorSamplesFn f, const void *params, const
     const GColorModel *m = out->model;
     if (a->model != m || (b && b->model != m) || (c && c->model != m))
         return G_ERR_MISMATCH;
-    return plain_samples(m) ? map_plain(out, f, params, a, b, c) : map_nm(out, f, params, a, b, c);
+    if (!plain_samples(m))
+        return map_nm(out, f, params, a, b, c);
+    if (a->kind == GCOLOR_VECTOR && (!b || b->kind == GCOLOR_VECTOR) && (!c || c->kind == GCOLOR_VECTOR)) {
+        f(out->v, a->v, b ? b->v : NULL, c ? c->v : NULL, m->nvalues, params);
+        out->kind = GCOLOR_VECTOR;
+        return G_OK;
+    }
+    return map_plain(out, f, params, a, b, c);
 }
 
 /* gcolor_map's function and parameters, handed to the array kernel below. */

@@ -41,43 +41,95 @@ typedef struct MixTerms {
 } MixTerms;
 
 /* goptics_fresnel_conductor in float, without branches so that the loop vectorises (this file is compiled with
- * -fno-math-errno -fno-trapping-math: sqrtf is the instruction, a division needs no branch); the denominators are kept above 1e-30 (they are 0 only for n = k = 0 at
- * grazing incidence, where the reflectance is 1). */
+ * -fno-math-errno -fno-trapping-math: sqrtf is the instruction, a division needs no branch). With
+ * a^2 + b^2 = |eta^2 - k^2 - sin^2 + 2 i eta k| (ab) and a = sqrt((ab + eta^2 - k^2 - sin^2) / 2), the mean of
+ * Rs = (ab - 2 a cos + cos^2) / (ab + 2 a cos + cos^2) and Rp = Rs (p1 - p2) / (p1 + p2) is Rs p1 / (p1 + p2), so
+ * one division serves both: two square roots and a division are what a sample costs. The denominator is kept above
+ * 1e-30 (0 only for n = k = 0 at grazing incidence, where the reflectance is 1; its two factors are never small
+ * together). */
 static inline float conductor_f(float c, float c2, float s2, float eta, float k)
 {
     float e2 = eta * eta, k2 = k * k, u = e2 - k2 - s2;
     float ab = sqrtf(u * u + 4.0f * e2 * k2), a2 = 0.5f * (ab + u);
     float a = sqrtf(a2 > 0.0f ? a2 : 0.0f), ac = 2.0f * a * c;
-    float rs_den = ab + ac + c2, rs = (ab - ac + c2) / (rs_den > 1e-30f ? rs_den : 1e-30f);
-    float p1 = c2 * ab + s2 * s2, p2 = ac * s2, pd = p1 + p2;
-    float rp = rs * (p1 - p2) / (pd > 1e-30f ? pd : 1e-30f);
-    return 0.5f * (rs + rp);
+    float p1 = c2 * ab + s2 * s2, den = (ab + ac + c2) * (p1 + ac * s2);
+    return (ab - ac + c2) * p1 / (den > 1e-30f ? den : 1e-30f);
 }
 
-/* s * F + t * add (add NULL: s * F), sample by sample: the body of the kernel, compiled twice below. */
-#define MIX_BODY                                                                                               \
+/* s * F + t * add (add NULL: s * F) over the samples i0 to n - 1. */
+#define MIX_LOOP(i0, n)                                                                                        \
     do {                                                                                                       \
-        const MixTerms *m = params;                                                                            \
-        const float c = m->cos_i, c2 = c * c, s2 = 1.0f - c2, s = m->s, t = m->t;                              \
         if (add) {                                                                                             \
-            _Pragma("omp simd") for (int i = 0; i < n; i++)                                                   \
+            _Pragma("omp simd") for (int i = (i0); i < (n); i++)                                              \
                 out[i] = conductor_f(c, c2, s2, eta[i], k[i]) * s + add[i] * t;                                \
         } else {                                                                                               \
-            _Pragma("omp simd") for (int i = 0; i < n; i++) out[i] = conductor_f(c, c2, s2, eta[i], k[i]) * s; \
+            _Pragma("omp simd") for (int i = (i0); i < (n); i++) out[i] = conductor_f(c, c2, s2, eta[i], k[i]) * s; \
         }                                                                                                      \
     } while (0)
 
 static void conductor_mix_v4(float *out, const float *eta, const float *k, const float *add, int n, const void *params)
 {
-    MIX_BODY;
+    const MixTerms *m = params;
+    const float c = m->cos_i, c2 = c * c, s2 = 1.0f - c2, s = m->s, t = m->t;
+    MIX_LOOP(0, n);
 }
 
 #ifdef GSPECTRAL_AVX2
-/* The same on 8-float vectors (no FMA: the lanes round as the 4-float body's do, so both give the same floats). */
+/* conductor_f on 8 lanes, operation for operation (no FMA: each lane rounds as conductor_f does). */
+static inline GSPECTRAL_TARGET_AVX2 __m256 conductor_f8(__m256 c, __m256 c2, __m256 s2, __m256 eta, __m256 k)
+{
+    const __m256 zero = _mm256_setzero_ps(), half = _mm256_set1_ps(0.5f), two = _mm256_set1_ps(2.0f);
+    const __m256 four = _mm256_set1_ps(4.0f), tiny = _mm256_set1_ps(1e-30f);
+    __m256 e2 = _mm256_mul_ps(eta, eta), k2 = _mm256_mul_ps(k, k), u = _mm256_sub_ps(_mm256_sub_ps(e2, k2), s2);
+    __m256 ab = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(u, u), _mm256_mul_ps(_mm256_mul_ps(four, e2), k2)));
+    __m256 a2 = _mm256_mul_ps(half, _mm256_add_ps(ab, u));
+    __m256 a = _mm256_sqrt_ps(_mm256_max_ps(a2, zero)), ac = _mm256_mul_ps(_mm256_mul_ps(two, a), c);
+    __m256 p1 = _mm256_add_ps(_mm256_mul_ps(c2, ab), _mm256_mul_ps(s2, s2));
+    __m256 den = _mm256_mul_ps(_mm256_add_ps(_mm256_add_ps(ab, ac), c2), _mm256_add_ps(p1, _mm256_mul_ps(ac, s2)));
+    __m256 num = _mm256_mul_ps(_mm256_add_ps(_mm256_sub_ps(ab, ac), c2), p1);
+    return _mm256_div_ps(num, _mm256_max_ps(den, tiny));
+}
+
+/* The same on 8-float vectors: the whole blocks, then the last n % 8 samples as one block whose other lanes hold a
+ * harmless index (1 + 0i), so that no sample runs alone through the chain of two square roots and a division
+ * (rgb's three samples are one block). Each lane gives the 4-float body's float. */
 static GSPECTRAL_TARGET_AVX2 void conductor_mix_v8(float *out, const float *eta, const float *k, const float *add,
                                                   int n, const void *params)
 {
-    MIX_BODY;
+    const MixTerms *m = params;
+    const __m256 c = _mm256_set1_ps(m->cos_i), c2 = _mm256_set1_ps(m->cos_i * m->cos_i);
+    const __m256 s2 = _mm256_set1_ps(1.0f - m->cos_i * m->cos_i), s = _mm256_set1_ps(m->s), t = _mm256_set1_ps(m->t);
+    int whole = n & ~7, rest = n - whole;
+    for (int i = 0; i < whole; i += 8) {
+        __m256 f = _mm256_mul_ps(conductor_f8(c, c2, s2, _mm256_loadu_ps(eta + i), _mm256_loadu_ps(k + i)), s);
+        if (add)
+            f = _mm256_add_ps(f, _mm256_mul_ps(_mm256_loadu_ps(add + i), t));
+        _mm256_storeu_ps(out + i, f);
+    }
+    if (!rest)
+        return;
+    static const int lanes[16] = {-1, -1, -1, -1, -1, -1, -1, -1, 0, 0, 0, 0, 0, 0, 0, 0};
+    __m256i mask = _mm256_loadu_si256((const __m256i *)(lanes + 8 - rest));
+    __m256 e = _mm256_blendv_ps(_mm256_set1_ps(1.0f), _mm256_maskload_ps(eta + whole, mask),
+                                _mm256_castsi256_ps(mask));
+    __m256 f = _mm256_mul_ps(conductor_f8(c, c2, s2, e, _mm256_maskload_ps(k + whole, mask)), s);
+    if (add)
+        f = _mm256_add_ps(f, _mm256_mul_ps(_mm256_maskload_ps(add + whole, mask), t));
+    float lane[8];
+    _mm256_storeu_ps(lane, f);
+    for (int j = 0; j < rest; j++)
+        out[whole + j] = lane[j];
+}
+#endif
+
+/* The kernel: the 8-float body where the processor has AVX2, chosen once when the library is loaded. */
+static void conductor_mix(float *out, const float *eta, const float *k, const float *add, int n, const void *params);
+#ifdef GSPECTRAL_AVX2
+GSPECTRAL_PICK(conductor_mix);
+#else
+static void conductor_mix(float *out, const float *eta, const float *k, const float *add, int n, const void *params)
+{
+    conductor_mix_v4(out, eta, k, add, n, params);
 }
 #endif
 
@@ -88,12 +140,7 @@ int gmaterial_fresnel_conductor_mix(GColor *out, double cos_i, const GColor *eta
         return G_ERR_INVALID;
     double c = fabs(cos_i);
     MixTerms m = {(float)(c > 1.0 ? 1.0 : c), (float)s, (float)t};
-#ifdef GSPECTRAL_AVX2
-    GColorSamplesFn kernel = __builtin_cpu_supports("avx2") ? conductor_mix_v8 : conductor_mix_v4;
-#else
-    GColorSamplesFn kernel = conductor_mix_v4;
-#endif
-    return gcolor_map_samples(out, kernel, &m, eta, k, add);
+    return gcolor_map_samples(out, conductor_mix, &m, eta, k, add);
 }
 
 int gmaterial_fresnel_conductor(GColor *out, double cos_i, const GColor *eta, const GColor *k)

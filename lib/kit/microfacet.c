@@ -42,19 +42,25 @@ double gmicrofacet_d(const GMicrofacet *m, GVec3 h)
     return 1.0 / (M_PI * ax * ay * q * q);
 }
 
-double gmicrofacet_lambda(const GMicrofacet *m, GVec3 w)
+/* Lambda of a distribution for t2 = alpha^2 tan^2 theta of the direction (scaled by the widths along its azimuth). */
+static double lambda_t2(int distribution, double t2)
 {
-    double z2 = w.z * w.z;
-    if (!(z2 > 0.0))
-        return INFINITY;
-    double t2 = (m->alpha_x * m->alpha_x * w.x * w.x + m->alpha_y * m->alpha_y * w.y * w.y) / z2; /* alpha^2 tan^2 */
-    if (m->distribution == GMICROFACET_BECKMANN) {
+    if (distribution == GMICROFACET_BECKMANN) {
         if (t2 == 0.0)
             return 0.0;
         double a = 1.0 / sqrt(t2);
         return 0.5 * (-erfc(a) + exp(-a * a) * INV_SQRT_PI / a);
     }
     return t2 / (2.0 * (sqrt(1.0 + t2) + 1.0)); /* (sqrt(1 + t2) - 1) / 2 without cancellation */
+}
+
+double gmicrofacet_lambda(const GMicrofacet *m, GVec3 w)
+{
+    double z2 = w.z * w.z;
+    if (!(z2 > 0.0))
+        return INFINITY;
+    double t2 = (m->alpha_x * m->alpha_x * w.x * w.x + m->alpha_y * m->alpha_y * w.y * w.y) / z2; /* alpha^2 tan^2 */
+    return lambda_t2(m->distribution, t2);
 }
 
 /* 1 when w sees the facet h from its own side of the surface: w.h and w.z of one sign */
@@ -166,21 +172,113 @@ double gmicrofacet_pdf_visible(const GMicrofacet *m, GVec3 wo, GVec3 h)
     return gmicrofacet_g1(m, wo, h) * c * gmicrofacet_d(m, h) / wo.z;
 }
 
+/* D(h) as a fraction num / den, so that a caller dividing by more divides once. */
+typedef struct Fraction {
+    double num, den;
+} Fraction;
+
+/* D(h) of the half vector H = wi + wo left unnormalised (h = H / |H|: D depends on the direction only), from |H|^2
+ * (l2), its slopes scaled by the widths, slope2 = (Hx / ax)^2 + (Hy / ay)^2, and Hz^2 (hz2 > 0): with q = slope2 + hz2,
+ * GGX's 1 / (pi ax ay (|H|^-2 q)^2) is |H|^4 / (pi ax ay q^2), no square root to normalise H. */
+static inline Fraction d_of_half(const GMicrofacet *m, double l2, double slope2, double hz2)
+{
+    double axy = M_PI * m->alpha_x * m->alpha_y;
+    if (m->distribution == GMICROFACET_BECKMANN)
+        return (Fraction){exp(-slope2 / hz2) * l2 * l2, axy * hz2 * hz2};
+    double q = slope2 + hz2;
+    return (Fraction){l2 * l2, axy * q * q};
+}
+
+/* The single-scattering rough mirror for a pair of directions above the surface, from their cosines ci, co, the
+ * widths-scaled squares of their tangential parts (ti = ax^2 wi.x^2 + ay^2 wi.y^2, to likewise) and D(h): GGX in
+ * Heitz's form with Lambda = (S / z - 1) / 2, S = sqrt(z^2 + t): G2 / (4 co) = ci / (2 (Si co + So ci)), one
+ * division in all; Beckmann through its Lambda. The pdf of the reflected direction likewise: G1(wo) D / (4 co),
+ * with GGX's G1(wo) = 2 co / (co + So). */
+static inline double reflect_cos_of(const GMicrofacet *m, double ci, double co, double ti, double to, Fraction d)
+{
+    if (m->distribution == GMICROFACET_BECKMANN)
+        return d.num / (d.den * (1.0 + lambda_t2(m->distribution, ti / (ci * ci)) +
+                                 lambda_t2(m->distribution, to / (co * co))) * 4.0 * co);
+    return d.num * ci / (d.den * 2.0 * (sqrt(ci * ci + ti) * co + sqrt(co * co + to) * ci));
+}
+
+static inline double pdf_reflect_of(const GMicrofacet *m, double co, double to, Fraction d)
+{
+    if (m->distribution == GMICROFACET_BECKMANN)
+        return d.num / (d.den * (1.0 + lambda_t2(m->distribution, to / (co * co))) * 4.0 * co);
+    return d.num / (d.den * 2.0 * (co + sqrt(co * co + to)));
+}
+
+/* D and the tangential terms of a pair in the local frame. */
+static inline Fraction local_d(const GMicrofacet *m, GVec3 wi, GVec3 wo, double *ti, double *to)
+{
+    GVec3 h = gvec3_add(wo, wi);
+    double sx = h.x / m->alpha_x, sy = h.y / m->alpha_y;
+    double ix = m->alpha_x * wi.x, iy = m->alpha_y * wi.y, ox = m->alpha_x * wo.x, oy = m->alpha_y * wo.y;
+    *ti = ix * ix + iy * iy;
+    *to = ox * ox + oy * oy;
+    return d_of_half(m, gvec3_dot(h, h), sx * sx + sy * sy, h.z * h.z);
+}
+
 double gmicrofacet_pdf_reflect(const GMicrofacet *m, GVec3 wo, GVec3 wi)
 {
     if (!(wo.z > 0.0) || !(wi.z > 0.0))
         return 0.0;
-    GVec3 h = gvec3_normalize(gvec3_add(wo, wi));
-    double c = gvec3_dot(wo, h);
-    if (!(c > 0.0))
-        return 0.0;
-    return gmicrofacet_pdf_visible(m, wo, h) / (4.0 * c);
+    double ti, to;
+    Fraction d = local_d(m, wi, wo, &ti, &to);
+    return pdf_reflect_of(m, wo.z, to, d);
 }
 
 double gmicrofacet_reflect_cos(const GMicrofacet *m, GVec3 wi, GVec3 wo)
 {
     if (!(wo.z > 0.0) || !(wi.z > 0.0))
         return 0.0;
-    GVec3 h = gvec3_normalize(gvec3_add(wo, wi));
-    return gmicrofacet_d(m, h) * gmicrofacet_g2(m, wi, wo, h) / (4.0 * wo.z);
+    double ti, to;
+    Fraction d = local_d(m, wi, wo, &ti, &to);
+    return reflect_cos_of(m, wi.z, wo.z, ti, to, d);
+}
+
+double gmicrofacet_reflect_cos_pdf(const GMicrofacet *m, GVec3 wi, GVec3 wo, double *pdf)
+{
+    if (!(wo.z > 0.0) || !(wi.z > 0.0)) {
+        *pdf = 0.0;
+        return 0.0;
+    }
+    double ti, to;
+    Fraction d = local_d(m, wi, wo, &ti, &to);
+    *pdf = pdf_reflect_of(m, wo.z, to, d);
+    return reflect_cos_of(m, wi.z, wo.z, ti, to, d);
+}
+
+/* D(h) and the tangential terms of an isotropic pair: |H|^2 = 2 + 2 cos_io, Hz = cos_i + cos_o, the slopes
+ * (|H|^2 - Hz^2, not below 0) over alpha^2, and alpha^2 (1 - cos^2) for each direction. GGX's D with both sides
+ * times alpha^4: |H|^4 alpha^2 / (pi Q^2), Q = |H|^2 - Hz^2 + alpha^2 Hz^2, no division. */
+static inline Fraction pair_d(const GMicrofacet *m, GMicrofacetPair p, double *ti, double *to)
+{
+    double a2 = m->alpha_x * m->alpha_x, l2 = 2.0 + 2.0 * p.cos_io, hz = p.cos_i + p.cos_o, hz2 = hz * hz;
+    double tangential = gfmax(0.0, l2 - hz2);
+    *ti = a2 * gfmax(0.0, 1.0 - p.cos_i * p.cos_i);
+    *to = a2 * gfmax(0.0, 1.0 - p.cos_o * p.cos_o);
+    if (m->distribution == GMICROFACET_BECKMANN)
+        return d_of_half(m, l2, tangential / a2, hz2);
+    double q = tangential + a2 * hz2;
+    return (Fraction){l2 * l2 * a2, M_PI * q * q};
+}
+
+double gmicrofacet_reflect_cos_pair(const GMicrofacet *m, GMicrofacetPair p)
+{
+    if (!(p.cos_o > 0.0) || !(p.cos_i > 0.0))
+        return 0.0;
+    double ti, to;
+    Fraction d = pair_d(m, p, &ti, &to);
+    return reflect_cos_of(m, p.cos_i, p.cos_o, ti, to, d);
+}
+
+double gmicrofacet_pdf_reflect_pair(const GMicrofacet *m, GMicrofacetPair p)
+{
+    if (!(p.cos_o > 0.0) || !(p.cos_i > 0.0))
+        return 0.0;
+    double ti, to;
+    Fraction d = pair_d(m, p, &ti, &to);
+    return pdf_reflect_of(m, p.cos_o, to, d);
 }

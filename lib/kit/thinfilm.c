@@ -77,9 +77,12 @@ static void next_phase(double phase, int i, double *c, double *s)
         *s = sin(phase / lambda);
         return;
     }
+    /* the series' coefficients as products, not divisions: a division per term was most of a film's cost (the
+     * divider's throughput, nine divisions a nanometre) */
     double d2 = d * d;
-    double cd = 1.0 - d2 / 2.0 * (1.0 - d2 / 12.0 * (1.0 - d2 / 30.0 * (1.0 - d2 / 56.0)));
-    double sd = d * (1.0 - d2 / 6.0 * (1.0 - d2 / 20.0 * (1.0 - d2 / 42.0 * (1.0 - d2 / 72.0))));
+    double cd = 1.0 - d2 * 0.5 * (1.0 - d2 * (1.0 / 12.0) * (1.0 - d2 * (1.0 / 30.0) * (1.0 - d2 * (1.0 / 56.0))));
+    double sd = d * (1.0 - d2 * (1.0 / 6.0) * (1.0 - d2 * (1.0 / 20.0) * (1.0 - d2 * (1.0 / 42.0) *
+                                                                            (1.0 - d2 * (1.0 / 72.0)))));
     /* phase / lambda = phase / (lambda - 1) - d: rotate back by d */
     double c1 = *c * cd + *s * sd, s1 = *s * cd - *c * sd;
     *c = c1, *s = s1;
@@ -109,13 +112,21 @@ static void film_spectra(const GThinFilm *f, double cos_ambient, GSpectrumNM *rs
     double r01[2] = {(nc0 - nc1) / (nc0 + nc1), (n1 * c0 - n0 * c1) / (n1 * c0 + n0 * c1)};
     double r12[2] = {(nc1 - nc2) / (nc1 + nc2), (n2 * c1 - n1 * c2) / (n2 * c1 + n1 * c2)};
     double phase = 4.0 * M_PI * f->thickness * nc1, cp = 0.0, sp = 0.0;
+    double cosines[GNM_COUNT]; /* cos phi at every nm first (a recurrence), then R of each (independent) */
     for (int i = 0; i < GNM_COUNT; i++) {
         next_phase(phase, i, &cp, &sp);
-        double r = 0.0;
+        cosines[i] = cp;
+    }
+    for (int i = 0; i < GNM_COUNT; i++) {
+        cp = cosines[i];
+        /* the mean of the two polarisations' (a + 2 b cos phi) / (1 + b^2 + 2 b cos phi), over one division */
+        double num[2], den[2];
         for (int p = 0; p < 2; p++) {
             double a = r01[p] * r01[p] + r12[p] * r12[p], b = r01[p] * r12[p];
-            r += 0.5 * (a + 2.0 * b * cp) / (1.0 + b * b + 2.0 * b * cp);
+            num[p] = a + 2.0 * b * cp;
+            den[p] = 1.0 + b * b + 2.0 * b * cp;
         }
+        double r = 0.5 * (num[0] * den[1] + num[1] * den[0]) / (den[0] * den[1]);
         rs->v[i] = (float)r;
         ts->v[i] = (float)(1.0 - r);
     }

@@ -18,6 +18,8 @@
 #include "../material.h"
 #include "../vec.h"
 
+#include <math.h>
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -82,6 +84,33 @@ GENERIC_API double gmicrofacet_pdf_reflect(const GMicrofacet *m, GVec3 wo, GVec3
  * D(h) G2(wi, wo, h) / (4 wo.z) for wi and wo above the surface, h their half vector; 0 otherwise. A conductor's
  * reflection is this times its Fresnel reflectance F(wi.h). */
 GENERIC_API double gmicrofacet_reflect_cos(const GMicrofacet *m, GVec3 wi, GVec3 wo);
+
+/** gmicrofacet_reflect_cos(m, wi, wo), with *pdf = gmicrofacet_pdf_reflect(m, wo, wi): the two share D(h), so a
+ * sampler weighing the direction it drew computes it once. Both 0 unless wi and wo are above the surface. */
+GENERIC_API double gmicrofacet_reflect_cos_pdf(const GMicrofacet *m, GVec3 wi, GVec3 wo, double *pdf);
+
+/** A pair of unit directions above the surface as an isotropic distribution sees them, without a frame: their
+ * cosines with the shading normal (wi.z and wo.z of the local frame) and with each other (wi.wo). */
+typedef struct GMicrofacetPair {
+    double cos_i;  /**< wi.n */
+    double cos_o;  /**< wo.n */
+    double cos_io; /**< wi.wo */
+} GMicrofacetPair;
+
+/** gmicrofacet_reflect_cos for an isotropic m (alpha_x is read) from the pair's cosines alone: the same value up to
+ * rounding, without a frame or a normalised half vector; 0 unless both cosines are > 0. */
+GENERIC_API double gmicrofacet_reflect_cos_pair(const GMicrofacet *m, GMicrofacetPair p);
+
+/** gmicrofacet_pdf_reflect (wi = the pair's wi, drawn for its wo) for an isotropic m from the pair's cosines alone;
+ * 0 unless both cosines are > 0. */
+GENERIC_API double gmicrofacet_pdf_reflect_pair(const GMicrofacet *m, GMicrofacetPair p);
+
+/** wi.h = wo.h for the pair's half vector h: sqrt((1 + wi.wo) / 2), the cosine a Fresnel term of the facet reads. */
+static inline double gmicrofacet_pair_cos_h(GMicrofacetPair p)
+{
+    double x = 0.5 * (1.0 + p.cos_io);
+    return x > 0.0 ? sqrt(x) : 0.0;
+}
 
 /* ---- energy of single scattering (multiple-scattering compensation, Kulla and Conty 2017) ---- */
 
