@@ -29,9 +29,7 @@ static void render_white(const char *model, const char *light, const char *viewi
     assert_int_equal(accel_build(s, &err), G_OK);
     RenderSettings rs = {.width = 16, .height = 12, .spp = 1, .depth = 2, .threads = 2, .quiet = 1};
     if (viewing) {
-        GSpectrumNM white;
-        assert_int_equal(viewing_illuminant_nm(viewing, &white, &err), G_OK);
-        assert_int_equal(viewing_adaptation(s->model, &white, rs.adaptation, &err), G_OK);
+        assert_int_equal(viewing_adaptation(s->model, viewing, rs.adaptation, &err), G_OK);
         rs.adapt = 1;
     }
     RenderStats st;
@@ -103,20 +101,19 @@ static void test_blackbody_and_d65(void **state)
 static void test_unknown_names_refused(void **state)
 {
     (void)state;
-    GSpectrumNM s;
     GError err;
     gerror_clear(&err);
-    assert_int_equal(viewing_illuminant_nm("F13", &s, &err), G_ERR_NOTFOUND);
+    assert_int_equal(gcolor_named_light(NULL, "F13", &err), G_ERR_NOTFOUND);
     assert_non_null(strstr(err.message, "'F13'"));
     assert_non_null(strstr(err.message, "F11"));
     assert_non_null(strstr(err.message, "D50"));
     assert_non_null(strstr(err.message, "LED-B1"));
     assert_non_null(strstr(err.message, "blackbody K"));
-    assert_int_equal(viewing_illuminant_nm("blackbody", &s, &err), G_ERR_INVALID);
-    assert_int_equal(viewing_illuminant_nm("blackbody 50", &s, &err), G_ERR_INVALID);
-    assert_int_equal(viewing_illuminant_nm("blackbody 3000x", &s, &err), G_ERR_INVALID);
-    assert_int_equal(viewing_illuminant_nm("blackbody 3000", &s, &err), G_OK);
-    assert_int_equal(viewing_illuminant_nm("F11", &s, &err), G_OK);
+    assert_int_equal(gcolor_named_light(NULL, "blackbody", &err), G_ERR_INVALID);
+    assert_int_equal(gcolor_named_light(NULL, "blackbody 50", &err), G_ERR_INVALID);
+    assert_int_equal(gcolor_named_light(NULL, "blackbody 3000x", &err), G_ERR_INVALID);
+    assert_int_equal(gcolor_named_light(NULL, "blackbody 3000", &err), G_OK);
+    assert_int_equal(gcolor_named_light(NULL, "F11", &err), G_OK);
 }
 
 /* The matrix takes the light's white, as the model has it, to XYZ that gcie_xyz_to_rgb maps to r = g = b, with the
@@ -126,23 +123,19 @@ static void test_adaptation_maps_white(void **state)
 {
     (void)state;
     GColorModel *m = model_or_skip("spectrum");
-    GSpectrumNM f11;
     GError err;
-    assert_int_equal(viewing_illuminant_nm("F11", &f11, &err), G_OK);
     double M[9], src[3], dst[3], rgb[3];
-    assert_int_equal(viewing_adaptation(m, &f11, M, &err), G_OK);
+    assert_int_equal(viewing_adaptation(m, "F11", M, &err), G_OK);
     GColor c = {0};
     assert_int_equal(gcolor_alloc(&c, m), G_OK);
-    assert_int_equal(gcolor_from_nm(&c, &f11, GCOLOR_LIGHT), G_OK);
+    assert_int_equal(gcolor_named_light(&c, "F11", &err), G_OK);
     assert_int_equal(gcolor_to_xyz(&c, GCOLOR_LIGHT, src), G_OK);
     viewing_apply(M, src, dst);
     assert_near(dst[1], src[1], 1e-12 * src[1]);
     gcie_xyz_to_rgb(dst, rgb);
     assert_near(rgb[0], rgb[1], 1e-9 * rgb[1]);
     assert_near(rgb[2], rgb[1], 1e-9 * rgb[1]);
-    GSpectrumNM d65;
-    assert_int_equal(viewing_illuminant_nm("D65", &d65, &err), G_OK);
-    assert_int_equal(viewing_adaptation(m, &d65, M, &err), G_OK);
+    assert_int_equal(viewing_adaptation(m, "D65", M, &err), G_OK);
     for (int i = 0; i < 9; i++)
         assert_near(M[i], i % 4 == 0 ? 1.0 : 0.0, 2e-2);
     gcolor_free(&c);

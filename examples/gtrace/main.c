@@ -372,10 +372,9 @@ static int parse_args(int argc, char **argv, Options *o)
             o->colormodel = optarg;
             break;
         case OPT_ILLUMINANT: {
-            GSpectrumNM white;
             GError e;
             o->illuminant = optarg;
-            if (viewing_illuminant_nm(optarg, &white, &e) != G_OK) {
+            if (gcolor_named_light(NULL, optarg, &e) != G_OK) {
                 fprintf(stderr, "gtrace: --illuminant: %s\n", e.message);
                 rc = -1;
             }
@@ -527,9 +526,7 @@ static int prepare(const Options *o, const GReaderOptions *trust, int check_outp
     }
     *exposure = o->have_exposure ? o->exposure : cam->exposure;
     if (o->illuminant) {
-        GSpectrumNM white;
-        if ((rc = viewing_illuminant_nm(o->illuminant, &white, err)) < 0 ||
-            (rc = viewing_adaptation((*scene)->model, &white, rs->adaptation, err)) < 0)
+        if ((rc = viewing_adaptation((*scene)->model, o->illuminant, rs->adaptation, err)) < 0)
             return rc;
         rs->adapt = 1;
     }

@@ -396,6 +396,11 @@ GENERIC_API const char *gcie_illuminant_name(int i);
 GENERIC_API GENERIC_NODISCARD int gcie_illuminant_nm(const char *name, GSpectrumNM *out);
 /** Planck blackbody at temperature K, normalised to Y = 1. */
 GENERIC_API void gcie_blackbody_nm(double kelvin, GSpectrumNM *out);
+/** Fills c (allocated in its model) with a named light as a light (GCOLOR_LIGHT, Y = 1): a CIE illuminant
+ * gcie_illuminant_name lists, or `blackbody K` (a temperature in kelvin, 100..100000). c NULL: only checks the name.
+ * G_OK, G_ERR_NOTFOUND with a message naming the name and listing the known ones, G_ERR_INVALID for a bad
+ * temperature, or the model's error. */
+GENERIC_API GENERIC_NODISCARD int gcolor_named_light(GColor *c, const char *name, GError *err);
 /** Luminance weight of an nm sample: ybar / sum(ybar), so the weights sum to 1. */
 GENERIC_API double gcie_luminance_weight(int nm_index);
 

@@ -1,38 +1,9 @@
-/* viewing.c - the viewing illuminant: a named light's spectrum, and the Bradford chromatic adaptation from its white
- * to D65 (viewing.h). */
+/* viewing.c - the viewing illuminant: a named light's white as the colour model has it, and the Bradford chromatic
+ * adaptation from that white to D65 (viewing.h). */
 #include "viewing.h"
 
-#include <errno.h>
 #include <math.h>
-#include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
-
-int viewing_illuminant_nm(const char *name, GSpectrumNM *out, GError *err)
-{
-    if (!name)
-        return gerror_set(err, G_ERR_INVALID, "no viewing illuminant given");
-    if (strncmp(name, "blackbody", 9) == 0 && (name[9] == ' ' || name[9] == '\0')) {
-        char *end;
-        errno = 0;
-        double k = strtod(name + 9, &end);
-        while (*end == ' ')
-            end++;
-        if (errno || end == name + 9 || *end || !(k >= 100.0 && k <= 100000.0))
-            return gerror_set(err, G_ERR_INVALID, "illuminant '%s': blackbody expects a temperature in kelvin, "
-                              "100..100000 (e.g. 'blackbody 2856')", name);
-        gcie_blackbody_nm(k, out);
-        return G_OK;
-    }
-    if (gcie_illuminant_nm(name, out) == G_OK)
-        return G_OK;
-    char known[1024];
-    size_t used = 0;
-    known[0] = '\0';
-    for (int i = 0; gcie_illuminant_name(i) && used < sizeof known; i++)
-        used += (size_t)snprintf(known + used, sizeof known - used, "%s, ", gcie_illuminant_name(i));
-    return gerror_set(err, G_ERR_NOTFOUND, "unknown illuminant '%s' (known: %sblackbody K)", name, known);
-}
 
 /* The Bradford cone response matrix (Lam 1985, as published by Lindbloom). */
 static const double bradford[9] = {0.8951, 0.2664, -0.1614, -0.7502, 1.7135, 0.0367, 0.0389, -0.0685, 1.0296};
@@ -56,33 +27,33 @@ void viewing_apply(const double M[9], const double xyz[3], double out[3])
     memcpy(out, r, sizeof r);
 }
 
-int viewing_adaptation(const GColorModel *m, const GSpectrumNM *white, double out[9], GError *err)
+int viewing_adaptation(const GColorModel *m, const char *name, double out[9], GError *err)
 {
     GColor c = {0};
     double src[3], dst[3];
     static const double one[3] = {1.0, 1.0, 1.0};
     int rc = gcolor_alloc(&c, m);
-    if (rc == G_OK)
-        rc = gcolor_from_nm(&c, white, GCOLOR_LIGHT);
-    if (rc == G_OK)
-        rc = gcolor_to_xyz(&c, GCOLOR_LIGHT, src);
+    if (rc != G_OK)
+        return gerror_set(err, rc, "no memory for the viewing illuminant");
+    if ((rc = gcolor_named_light(&c, name, err)) == G_OK && (rc = gcolor_to_xyz(&c, GCOLOR_LIGHT, src)) != G_OK)
+        gerror_set(err, rc, "the viewing illuminant cannot be converted in the colour model '%s'",
+                   gcolormodel_name(m));
     gcolor_free(&c);
     if (rc != G_OK)
-        return gerror_set(err, rc, "the viewing illuminant cannot be converted in the colour model '%s'",
-                          gcolormodel_name(m));
+        return rc;
     if (!(src[0] > 0.0 && src[1] > 0.0 && src[2] > 0.0) || !isfinite(src[0] + src[1] + src[2]))
         return gerror_set(err, G_ERR_INVALID, "the viewing illuminant's white is XYZ %g %g %g in the colour model "
                           "'%s': not positive", src[0], src[1], src[2], gcolormodel_name(m));
-    /* the white gcie_xyz_to_rgb maps to r = g = b (its matrix, read column by column, inverted), at the source's
-     * luminance */
-    double to_rgb[9], to_xyz[9];
+    /* the white gcie_xyz_to_rgb maps to equal components (its matrix, read column by column, inverted), at the
+     * source's luminance */
+    double to_out[9], to_xyz[9];
     for (int j = 0; j < 3; j++) {
         double e[3] = {j == 0, j == 1, j == 2}, col[3];
         gcie_xyz_to_rgb(e, col);
         for (int i = 0; i < 3; i++)
-            to_rgb[3 * i + j] = col[i];
+            to_out[3 * i + j] = col[i];
     }
-    invert3(to_rgb, to_xyz);
+    invert3(to_out, to_xyz);
     viewing_apply(to_xyz, one, dst);
     const double luminance = src[1] / dst[1];
     for (int i = 0; i < 3; i++)

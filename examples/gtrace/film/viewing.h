@@ -7,17 +7,13 @@
 #include <generic/color.h>
 #include <generic/error.h>
 
-/** Reads a viewing illuminant's name into its spectrum: a CIE illuminant gcie_illuminant_nm knows (A, D50, F11,
- * LED-B1, ...) or `blackbody K` (a temperature in kelvin, 100..100000). G_OK, or G_ERR_NOTFOUND with a message
- * naming the unknown name and listing the known ones, G_ERR_INVALID for a blackbody temperature out of range. */
-int viewing_illuminant_nm(const char *name, GSpectrumNM *out, GError *err);
-
-/** The 3x3 matrix (row by row) that takes XYZ seen under the light `white` (an nm spectrum, any scale) to XYZ seen
- * under D65, the white of linear sRGB (gcie_xyz_to_rgb maps it to r = g = b), by the Bradford cone response: the
- * light's white as model m has it (gcolor_from_nm as a light, then gcolor_to_xyz), so that the model's own white
- * becomes exactly neutral; the luminance of the white is kept. G_OK, or the model's error (G_ERR_INVALID for a
- * white whose XYZ is not positive). */
-int viewing_adaptation(const GColorModel *m, const GSpectrumNM *white, double out[9], GError *err);
+/** The 3x3 matrix (row by row) that takes XYZ seen under the light `name` (a CIE illuminant or `blackbody K`:
+ * gcolor_named_light) to XYZ seen under D65, the white of linear sRGB (gcie_xyz_to_rgb maps it to equal
+ * components), by the Bradford cone response: the light's white as model m has it (gcolor_named_light, then
+ * gcolor_to_xyz), so that the model's own white becomes exactly neutral; the luminance of the white is kept. G_OK,
+ * gcolor_named_light's error for an unknown name, or the model's (G_ERR_INVALID for a white whose XYZ is not
+ * positive). */
+int viewing_adaptation(const GColorModel *m, const char *name, double out[9], GError *err);
 
 /** out = M xyz (M row by row); out may alias xyz. */
 void viewing_apply(const double M[9], const double xyz[3], double out[3]);
