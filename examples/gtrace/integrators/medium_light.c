@@ -1,5 +1,5 @@
-/* medium_light.c - next-event estimation at a scattering event in a medium (the path tracer's medium vertices): each
- * light's sample is weighted by the phase function instead of a material's reflection and carried to the point
+/* medium_light.c - next-event estimation at a scattering event in a medium (the path tracer's medium vertices): one
+ * light chosen by power (light_pick.h), its sample divided by the choice's probability, is weighted by the phase function instead of a material's reflection and carried to the point
  * by light_transmit (lights.c), which applies the media and the absorbing materials along the shadow ray. Sphere and
  * rectangle lights and glowing geometry, which the phase-sampled ray also reaches, follow the path tracer's rule:
  * any surface blocks their shadow ray, and the sample is weighted by the power heuristic against the phase
@@ -7,6 +7,7 @@
 #include "medium_light.h"
 #include "path.h"
 #include "lights/emissive.h"
+#include "lights/light_pick.h"
 #include "lights/lighting.h"
 #include "scene/accel.h"
 #include "scene/ies.h"
@@ -47,13 +48,27 @@ static int add_sample(TraceCtx *c, const Medium *vol, const Media *media, GVec3 
 int medium_direct_light(TraceCtx *c, const Medium *vol, const Media *media, GVec3 x, GVec3 d, GColor *out)
 {
     const Scene *s = c->scene;
+    const LightPick *lp = c->pick;
+    double pick, u_rest = 0.5;
+    int k = lp->n == 1 && lp->lights[0] ? light_pick_sample(lp, 0.5, &pick, NULL) /* no number for one light */
+                                        : light_pick_sample(lp, rng_next(&c->rng), &pick, &u_rest);
+    if (k < 0 || !(pick > 0.0))
+        return G_OK;
+    const Light *l = lp->lights[k];
     GScratchMark mark = gscratch_mark(c->scratch);
     GColor L;
     int rc = gcolor_scratch_uncleared(&L, s->model, c->scratch); /* written by each sample drawn */
-    for (int i = 0; i < s->nlights && rc == G_OK; i++) {
-        const Light *l = s->lights[i];
-        GVec3 in;
-        double dist, pdf, f = 1.0;
+    GVec3 in;
+    double dist, pdf, f = 1.0;
+    if (rc == G_OK && !l) { /* the glowing geometry: one point of one primitive */
+        double u1 = rng_next(&c->rng), u2 = rng_next(&c->rng);
+        int got = emissive_sample(c, lp->emissive, x, u_rest, u1, u2, &in, &dist, &pdf, &L);
+        if (got < 0)
+            rc = got;
+        else if (got && pdf > 0.0)
+            rc = add_sample(c, vol, media, x, d, in, dist * EMISSIVE_SHADOW_SHORTEN, &L,
+                            mis_power(pdf * pick, phase_eval(vol->phase, d, in)) / (pdf * pick), 1, out);
+    } else if (rc == G_OK) {
         switch (l->kind) {
         case LIGHT_POINT:
         case LIGHT_SPOT:
@@ -68,11 +83,11 @@ int medium_direct_light(TraceCtx *c, const Medium *vol, const Media *media, GVec
             else if (l->kind == LIGHT_IES)
                 f = ies_candela_dir(l->ies, gvec3_neg(in), l->direction, l->along, l->third);
             if (f > 0.0)
-                rc = add_sample(c, vol, media, x, d, in, dist, &l->color, f / (dist * dist), 0, out);
+                rc = add_sample(c, vol, media, x, d, in, dist, &l->color, f / (dist * dist * pick), 0, out);
             break;
         }
         case LIGHT_DIRECTIONAL:
-            rc = add_sample(c, vol, media, x, d, gvec3_neg(l->direction), INFINITY, &l->color, 1.0, 0, out);
+            rc = add_sample(c, vol, media, x, d, gvec3_neg(l->direction), INFINITY, &l->color, 1.0 / pick, 0, out);
             break;
         case LIGHT_SPHERE:
         case LIGHT_RECT: {
@@ -81,22 +96,12 @@ int medium_direct_light(TraceCtx *c, const Medium *vol, const Media *media, GVec
                 rc = got;
             else if (got && pdf > 0.0)
                 rc = add_sample(c, vol, media, x, d, in, dist, &L,
-                                mis_power(pdf, phase_eval(vol->phase, d, in)) / pdf, 1, out);
+                                mis_power(pdf * pick, phase_eval(vol->phase, d, in)) / (pdf * pick), 1, out);
             break;
         }
         default: /* a probe: phase sampling reaches it (path.c counts it fully after a medium vertex) */
             break;
         }
-    }
-    if (rc == G_OK && c->emissive) {
-        GVec3 in;
-        double dist, pdf, u0 = rng_next(&c->rng), u1 = rng_next(&c->rng), u2 = rng_next(&c->rng);
-        int got = emissive_sample(c, c->emissive, x, u0, u1, u2, &in, &dist, &pdf, &L);
-        if (got < 0)
-            rc = got;
-        else if (got && pdf > 0.0)
-            rc = add_sample(c, vol, media, x, d, in, dist * EMISSIVE_SHADOW_SHORTEN, &L,
-                            mis_power(pdf, phase_eval(vol->phase, d, in)) / pdf, 1, out);
     }
     gscratch_release(c->scratch, mark);
     return rc;

@@ -70,6 +70,7 @@
 #include "bands.h"
 #include "scene/accel.h"
 #include "lights/emissive.h"
+#include "lights/light_pick.h"
 #include "lights/lighting.h"
 #include "lights/probe_env.h"
 #include "medium_light.h"
@@ -81,6 +82,7 @@
 typedef struct PathCtx {
     TraceCtx *c;
     const Light *env_light; /**< the reference probe light that samples the background probe (NULL: none) */
+    double env_pick;        /**< the probability that next-event estimation chooses env_light */
     int env_in_lights;      /**< the background probe's light is carried by its technique's directional lights */
     int scattered;          /**< the current path has had a non-delta bounce (it sees the ambient light) */
     int from_medium;        /**< set for the ray a medium vertex traces next (read and cleared by path_radiance):
@@ -227,79 +229,62 @@ int path_light_sample_at(const Light *l, GVec3 x, double u1, double u2, GVec3 *i
     return 0;
 }
 
-/* Adds to out the direct light at sp, the vertex at `depth`, from every light source, reflected towards to_viewer
- * (NEE). The first sphere or rectangle light (else the glowing geometry) takes the vertex's light dimensions, the
- * others the generator's numbers. */
+/* Adds to out the direct light at sp, the vertex at `depth`, reflected towards to_viewer (NEE): one light source
+ * chosen by power from the scene's table (lights/light_pick.h), its estimate divided by the probability of the
+ * choice. The choice takes the vertex's pick dimension (none when the table has one entry), a sphere or rectangle
+ * light or the glowing geometry its point dimensions, the glowing geometry's primitive what is left of the pick's
+ * number; a delta light draws nothing, a probe the generator's numbers. */
 static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 to_viewer, int opaque,
                         const GColor *ri, int depth, GColor *out)
 {
-    int slots_free = 1;
     TraceCtx *c = p->c;
+    const LightPick *lp = c->pick;
     const Scene *s = c->scene;
     const GMaterial *m = sp->material;
+    double pick, u_rest = 0.5;
+    int k = lp->n == 1 && lp->lights[0] ? light_pick_sample(lp, 0.5, &pick, NULL)
+                                        : light_pick_sample(lp, vertex_uniform(p, depth, SLOT_LIGHT_PICK), &pick, &u_rest);
+    if (k < 0 || !(pick > 0.0))
+        return G_OK;
+    const Light *l = lp->lights[k];
     GScratchMark mark = gscratch_mark(c->scratch);
     LightTmp lt;
-    GColor L;
+    GColor L, acc, *sum = out; /* the chosen light's estimate, before the division by pick (out itself when 1) */
     int rc = G_OK;
     CHECK(light_temps(c, &lt));
     CHECK(gcolor_scratch(&L, s->model, c->scratch));
-    light_gather(sp, &lt); /* a Lambertian material: asked once for all samples, MIS weights in their light */
-    for (int i = 0; i < s->nlights; i++) {
-        const Light *l = s->lights[i];
-        lt.blocked = 0;
-        if (l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT || l->kind == LIGHT_DIRECTIONAL || l->kind == LIGHT_IES) {
-            CHECK(light_shade(c, l, sp, facing, media, to_viewer, opaque, &lt, out));
-            continue;
-        }
-        lt.blocked = 1; /* material sampling reaches these lights: light through glass is a caustic */
-        if (l->kind == LIGHT_PROBE) { /* the reference's estimator with one direction (a basis: not used) */
-            CHECK(probe_light_nee(c, l, sp, facing, media, to_viewer, opaque, 1, l == p->env_light ? ri : NULL,
-                                  &lt, out));
-            continue;
-        }
-        if (l->kind != LIGHT_SPHERE && l->kind != LIGHT_RECT)
-            continue;
-        GVec3 in;
-        double dist, pdf_l, u1, u2;
-        int got;
-        if (slots_free) {
-            u1 = vertex_uniform(p, depth, SLOT_LIGHT_U);
-            u2 = vertex_uniform(p, depth, SLOT_LIGHT_V);
-            slots_free = 0;
-        } else {
-            u1 = uniform(p);
-            u2 = uniform(p);
-        }
-        CHECK(got = path_light_sample_at(l, sp->point, u1, u2, &in, &dist, &pdf_l, &L));
-        if (!got || (opaque && gvec3_dot(in, facing) <= 0.0))
-            continue;
-        double w = mis_power(pdf_l, gmaterial_pdf(m, sp, in, to_viewer, ri));
-        if (w > 0.0)
-            CHECK(sample_light(c, sp, facing, media, in, dist, &L, w / pdf_l, to_viewer, &lt, out));
+    if (pick != 1.0) {
+        CHECK(gcolor_scratch(&acc, s->model, c->scratch));
+        sum = &acc;
     }
-    if (c->emissive) { /* glowing geometry: one point of one primitive, chosen by power */
+    light_gather(sp, &lt); /* a Lambertian material: asked once, the MIS weight in the light */
+    if (l && (l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT || l->kind == LIGHT_DIRECTIONAL ||
+              l->kind == LIGHT_IES)) {
+        CHECK(light_shade(c, l, sp, facing, media, to_viewer, opaque, &lt, sum));
+    } else if (l && l->kind == LIGHT_PROBE) { /* the reference's estimator with one direction */
+        lt.blocked = 1; /* material sampling reaches it: light through glass is a caustic */
+        CHECK(probe_light_nee(c, l, sp, facing, media, to_viewer, opaque, 1, l == p->env_light ? ri : NULL, pick, &lt,
+                              sum));
+    } else { /* a sphere or rectangle light, or one point of one glowing primitive */
         GVec3 in;
-        double dist, pdf_l, u0, u1, u2;
+        double dist, pdf_l, u1 = vertex_uniform(p, depth, SLOT_LIGHT_U), u2 = vertex_uniform(p, depth, SLOT_LIGHT_V);
         int got;
-        if (slots_free) {
-            u0 = vertex_uniform(p, depth, SLOT_LIGHT_PICK);
-            u1 = vertex_uniform(p, depth, SLOT_LIGHT_U);
-            u2 = vertex_uniform(p, depth, SLOT_LIGHT_V);
-        } else {
-            u0 = uniform(p);
-            u1 = uniform(p);
-            u2 = uniform(p);
-        }
         lt.blocked = 1;
-        CHECK(got = emissive_sample(c, c->emissive, sp->point, u0, u1, u2, &in, &dist, &pdf_l, &L));
+        if (l)
+            CHECK(got = path_light_sample_at(l, sp->point, u1, u2, &in, &dist, &pdf_l, &L));
+        else
+            CHECK(got = emissive_sample(c, lp->emissive, sp->point, u_rest, u1, u2, &in, &dist, &pdf_l, &L));
         if (got && !(opaque && gvec3_dot(in, facing) <= 0.0)) {
-            double w = mis_power(pdf_l, gmaterial_pdf(m, sp, in, to_viewer, ri));
+            double w = mis_power(pdf_l * pick, gmaterial_pdf(m, sp, in, to_viewer, ri));
+            if (!l)
+                dist *= EMISSIVE_SHADOW_SHORTEN;
             if (w > 0.0)
-                CHECK(sample_light(c, sp, facing, media, in, dist * EMISSIVE_SHADOW_SHORTEN, &L, w / pdf_l, to_viewer,
-                                   &lt, out));
+                CHECK(sample_light(c, sp, facing, media, in, dist, &L, w / pdf_l, to_viewer, &lt, sum));
         }
     }
-    CHECK(light_gather_finish(sp, &lt, out));
+    CHECK(light_gather_finish(sp, &lt, sum));
+    if (sum != out)
+        CHECK(gcolor_add_scaled(out, sum, 1.0 / pick));
 done:
     gscratch_release(c->scratch, mark);
     return rc;
@@ -351,7 +336,7 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
         }
     }
 
-    if (!delta && (s->nlights > 0 || c->emissive))
+    if (!delta && c->pick && c->pick->n > 0)
         CHECK(direct_light(p, sp, facing, media, to_viewer, opaque, ri_use, depth, out));
 
     if (depth < c->max_depth) {
@@ -434,8 +419,8 @@ static int escaped(PathCtx *p, const Ray *r, int first, double prev_pdf, int fro
     else {
         CHECK(probe_pixel_radiance(env, r->d, out));
         if (p->env_light && !from_medium)
-            CHECK(gcolor_scale(out, out, mis_power(prev_pdf, probe_dist_pdf(&env->dist, env->probe,
-                                                                               probe_from_world(env, r->d)))));
+            CHECK(gcolor_scale(out, out, mis_power(prev_pdf, p->env_pick * probe_dist_pdf(&env->dist, env->probe,
+                                                                                           probe_from_world(env, r->d)))));
     }
     if (p->scattered && s->have_ambient)
         CHECK(gcolor_add(out, out, &s->ambient));
@@ -453,7 +438,7 @@ static int medium_vertex(PathCtx *p, const Ray *r, const Media *media, const Med
     GColor illum;
     int rc = G_OK;
     CHECK(gcolor_fill(out, 0.0));
-    if (c->scene->nlights > 0 || c->emissive)
+    if (c->pick && c->pick->n > 0)
         CHECK(medium_direct_light(c, vol, media, x, r->d, out));
     if (depth >= c->max_depth)
         goto done;
@@ -521,14 +506,17 @@ static int path_radiance(PathCtx *p, const Ray *r, const Media *media, int depth
     Hit h;
     c->rays++;
     int hit = accel_intersect(s, r, &h);
-    /* the nearest area light in front of the surface */
+    /* the nearest area light in front of the surface, and the density with which NEE draws the direction to it */
+    const LightPick *lp = c->pick;
     const Light *lh = NULL;
     double t_l = hit ? h.t : INFINITY, pdf_l = 0.0;
-    for (int i = 0; i < s->nlights; i++) {
+    int nl = lp ? lp->narea : s->nlights;
+    for (int k = 0; k < nl; k++) {
+        int i = lp ? lp->area[k] : k;
         double pl = 0.0, t = area_light_hit(s->lights[i], r, t_l, &pl);
         if (t < t_l) {
             t_l = t;
-            pdf_l = pl;
+            pdf_l = pl * light_pick_pmf(lp, i);
             lh = s->lights[i];
         }
     }
@@ -569,8 +557,8 @@ static int arrive(PathCtx *p, const Ray *r, const Media *media, int depth, doubl
         return escaped(p, r, first, prev_pdf, from_medium, out);
     /* glowing geometry that NEE also reaches: its emission weighed against that strategy */
     double emit_weight = 1.0;
-    if (c->emissive && !first && h.material && !(h.material->flags & GMAT_NO_EMISSION)) {
-        double pdf_e = emissive_pdf(c->emissive, &h, r->o, r->d, h.t);
+    if (c->pick && c->pick->emissive && !first && h.material && !(h.material->flags & GMAT_NO_EMISSION)) {
+        double pdf_e = c->pick->emissive_prob * emissive_pdf(c->pick->emissive, &h, r->o, r->d, h.t);
         if (pdf_e > 0.0)
             emit_weight = mis_power(prev_pdf, pdf_e);
     }
@@ -600,8 +588,10 @@ int path_trace(TraceCtx *c, const Ray *r, const Media *media, uint64_t pixel, in
     const ProbeEnv *env = s->env;
     for (int i = 0; env && i < s->nlights; i++) {
         const Light *l = s->lights[i];
-        if (l->kind == LIGHT_PROBE && l->env == env && env->dist.row_cdf)
+        if (l->kind == LIGHT_PROBE && l->env == env && env->dist.row_cdf) {
             p.env_light = l;
+            p.env_pick = light_pick_pmf(c->pick, i);
+        }
     }
     p.env_in_lights = env && env->nlights > 0 && env->lights[0]->kind == LIGHT_DIRECTIONAL;
     int saved = c->band, volumes = c->volumes;

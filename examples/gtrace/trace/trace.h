@@ -47,6 +47,8 @@ typedef struct TraceCtx {
                                 * NULL: none) */
     int band;            /**< the group the current path carries (-1: all light; set by a dispersive split) */
     const struct EmissiveSet *emissive; /**< the glowing geometry sampled as light (lights/emissive.h; NULL: none) */
+    const struct LightPick *pick; /**< every light source chosen by power (lights/light_pick.h; NULL: no light is
+                                   * drawn at random) */
     int volumes;         /**< the integrator renders participating media (the path tracer, in a scene with media):
                           * shadow rays are attenuated by them (lights.c); 0: only materials' absorption */
     GColor tmp[TRACE_TMP_COUNT]; /**< temporaries made once with the context (trace_ctx_temps); cleared in a

@@ -1,0 +1,41 @@
+/* light_pick.h - one table that chooses among all the light sources of a scene by power (light_pick.c), for every
+ * integrator that draws lights at random: the path tracer's next-event estimation (one light a vertex), the particle
+ * integrators' emission and SPPM's direct light. */
+#ifndef GTRACE_LIGHT_PICK_H
+#define GTRACE_LIGHT_PICK_H
+
+#include "emissive.h"
+#include "emit.h"
+
+#include <generic/error.h>
+
+/** The scene's light sources that send light (emit_supported lights of some power, and the glowing geometry as one
+ * entry with its own table), each chosen with a probability proportional to its power through an alias table. */
+typedef struct LightPick {
+    int n;                       /**< entries (0: the scene has nothing that sends light) */
+    const Light **lights;        /**< entry i's light; NULL: the glowing geometry (emissive) */
+    double *prob;                /**< entry i's probability (they sum to 1) */
+    double *q;                   /**< alias table: keep entry i with probability q[i], else take alias[i] */
+    int *alias;
+    double *scene_prob;          /**< the probability of the scene's light i (s->lights[i]); 0 when not an entry */
+    double emissive_prob;        /**< the probability of the glowing geometry's entry (0: none) */
+    const EmissiveSet *emissive; /**< the glowing geometry (NULL: none or no power) */
+    int *area;                   /**< the indices in s->lights of the sphere and rectangle lights, in order */
+    int narea;
+    EmitBounds bounds;           /**< the scene's bounds, which a directional light's or a probe's power uses */
+} LightPick;
+
+/** Builds the table of s and its glowing geometry e (NULL: none): every light emit_supported accepts whose emit_power
+ * is positive and finite, and e when emissive_power(e) is; a table of no entries when there is none (not an error).
+ * G_ERR_NOMEM (with err) when the tables cannot be had. */
+int light_pick_build(LightPick *lp, const Scene *s, const EmissiveSet *e, GError *err);
+/** Frees the tables; a zeroed table is a no-op. */
+void light_pick_free(LightPick *lp);
+/** Chooses an entry with one uniform number u in [0, 1): its index (-1 when the table has no entry), its probability
+ * into *prob, and into *u_rest (may be NULL) a number uniform in [0, 1) and independent of the choice, from what is
+ * left of u (u itself when the table has one entry). Constant time. */
+int light_pick_sample(const LightPick *lp, double u, double *prob, double *u_rest);
+/** The probability that light_pick_sample chooses the scene's light i (s->lights[i]): 0 when it is not an entry. */
+double light_pick_pmf(const LightPick *lp, int i);
+
+#endif
