@@ -1,9 +1,10 @@
 /* medium_light.c - next-event estimation at a scattering event in a medium (the path tracer's medium vertices): one
- * light chosen by power (light_pick.h), its sample divided by the choice's probability, is weighted by the phase function instead of a material's reflection and carried to the point
- * by light_transmit (lights.c), which applies the media and the absorbing materials along the shadow ray. Sphere and
- * rectangle lights and glowing geometry, which the phase-sampled ray also reaches, follow the path tracer's rule:
- * any surface blocks their shadow ray, and the sample is weighted by the power heuristic against the phase
- * function's density (path.c weighs the light that phase sampling meets against theirs). */
+ * light chosen by power (light_pick.h), its sample divided by the choice's probability, is weighted by the phase
+ * function instead of a material's reflection and carried to the point by light_transmit (lights.c), which applies the
+ * media and the absorbing materials along the shadow ray. Sphere and rectangle lights and glowing geometry, which the
+ * phase-sampled ray also reaches, follow the path tracer's rule: any surface blocks their shadow ray, and the sample is
+ * weighted by the power heuristic against the phase function's density (path.c weighs the light that phase sampling
+ * meets against theirs). */
 #include "medium_light.h"
 #include "path.h"
 #include "lights/emissive.h"

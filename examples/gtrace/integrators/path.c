@@ -1,7 +1,7 @@
 /* path.c - unidirectional path tracing on the generic interfaces (`gtrace --integrator path`).
  *
  * Radiance is computed recursively, one path per camera sample. At every surface: the material's emission;
- * next-event estimation (NEE) to every light unless every lobe of the material is a delta one; then one
+ * next-event estimation (NEE) to one light unless every lobe of the material is a delta one; then one
  * direction drawn by gmaterial_sample, the radiance arriving along it traced recursively, divided by the
  * sample's pdf (and the Russian-roulette probability), and passed on through gmaterial_reflection (or
  * gmaterial_refraction for a GSAMPLE_TRANSMIT sample). The sample's weight colour is never multiplied in: the
@@ -12,22 +12,24 @@
  * of a Cornell box has brightness 0.18 and red 0.63) carry large weights; measured on the Cornell box at equal spp:
  * 3% more time, 0.56 of the variance over the image and 0.42 on the walls and floor).
  *
- * Lights. Point, spot, directional and IES lights, including the directional lights a probe technique (mediancut,
- * adaptive, kmeans, irradiance, variance) makes, are delta lights: NEE only, through lights.c's light_shade
- * (the same shadow rule as the Whitted tracer: transmission through non-opaque surfaces along the straight
- * line). Sphere and rectangle lights and a `light probe` of technique reference (the environment, importance
- * sampled by probe_sample.c's probe_light_nee, the Whitted tracer's reference estimator with one direction)
- * can also be reached by material sampling, so both estimates are combined by multiple importance sampling
- * with the power heuristic (a sphere light is sampled uniformly in the solid angle it subtends, a rectangle light
- * uniformly by area; area_light_hit gives the same density. Sampling rectangles by solid angle, as spherical
- * rectangles, was measured on the Cornell box: 35% more time for 2% less RMSE); their shadow rays are blocked by
- * any surface (light through glass reaches them by material sampling, a caustic, so counting the straight
- * transmission too would count it twice).
- * Material sampling sees sphere and rectangle lights (one-sided) when they are nearer than the surface hit; a path
- * after a delta bounce counts them fully. One light sample per light and vertex: the lights' `samples` apply
- * to the Whitted tracer; a reference probe's `shadows off` does not apply. At a Lambertian material
- * (GMAT_LAMBERTIAN) the samples' light, each with its MIS weight in it, is gathered and reflected once (lights.c's
- * light_gather), as in the Whitted tracer.
+ * Lights. NEE takes one light source a vertex, chosen by power from the scene's table (lights/light_pick.h: the
+ * lights that send light and the glowing geometry as one entry, an alias table: constant time whatever their number),
+ * and divides its estimate by the probability of the choice; the density a light's MIS weight uses, on either side, is
+ * its sampling density times that probability. Point, spot, directional and IES lights, including the directional
+ * lights a probe technique (mediancut, adaptive, kmeans, irradiance, variance) makes, are delta lights: NEE only,
+ * through lights.c's light_shade (the same shadow rule as the Whitted tracer: transmission through non-opaque surfaces
+ * along the straight line). Sphere and rectangle lights and a `light probe` of technique reference (the environment,
+ * importance sampled by probe_sample.c's probe_light_nee, the Whitted tracer's reference estimator with one direction)
+ * can also be reached by material sampling, so both estimates are combined by multiple importance sampling with the
+ * power heuristic (a sphere light is sampled uniformly in the solid angle it subtends, a rectangle light uniformly by
+ * area; area_light_hit gives the same density. Sampling rectangles by solid angle, as spherical rectangles, was
+ * measured on the Cornell box: 35% more time for 2% less RMSE); their shadow rays are blocked by any surface (light
+ * through glass reaches them by material sampling, a caustic, so counting the straight transmission too would count it
+ * twice). Material sampling sees sphere and rectangle lights (one-sided) when they are nearer than the surface hit; a
+ * path after a delta bounce counts them fully. One light sample a vertex: the lights' `samples` apply to the Whitted
+ * tracer; a reference probe's `shadows off` does not apply. At a Lambertian material (GMAT_LAMBERTIAN) the samples'
+ * light, each with its MIS weight in it, is gathered and reflected once (lights.c's light_gather), as in the Whitted
+ * tracer.
  *
  * The environment. Camera rays and rays after a delta bounce see the background (the background colour, or
  * the background probe interpolated bilinearly). After a non-delta bounce the background probe is a light:
@@ -40,8 +42,8 @@
  * albedo a so shows a * ambient, as in the Whitted tracer (material.ambient of Lambert), but occluded and
  * interreflected.
  *
- * Glowing geometry (lights/emissive.h): the emissive primitives are one more light, one NEE sample per vertex from
- * the alias table, MIS-weighted; a material-sampled ray that meets one weighs its emission against the set's
+ * Glowing geometry (lights/emissive.h): the emissive primitives are one more entry of the table, with their own alias
+ * table by power, MIS-weighted; a material-sampled ray that meets one weighs its emission against the set's
  * density for that direction (path_radiance hands shade_path the weight), other emission counts fully.
  *
  * Dispersion (hero band): when the relative index at a non-opaque surface differs between the wavelength
@@ -57,15 +59,15 @@
  * The shadow rays of every vertex are attenuated by the media they cross (TraceCtx.volumes).
  *
  * Random numbers: with the default sampler (trace/sampler.h, SAMPLER_SOBOL) the numbers that decide most of the
- * variance, each vertex's light sample (the first sphere or rectangle light, else the glowing geometry's pick and
- * point), its material sample, its wavelength group and its roulette, are dimensions of the camera sample's point in
- * the pixel's shuffled, Owen-scrambled Sobol sequence (two groups of four a vertex, after the camera's group: see
- * SLOT_ below). The others (further lights, the probe's NEE, media) and, with SAMPLER_INDEPENDENT, all of them come
- * from the thread's PCG32 generator (TraceCtx.rng, which lights.c and probe_sample.c draw from too), re-seeded for
- * each path from the pixel's index and the sample's index and restored afterwards. Either way a number depends on
- * the pixel, the sample and its use only, so the image does not depend on the thread count, crops or tile order.
- * Colours only through gcolor_*, materials only through gmaterial_*; temporaries live on the thread's scratch arena
- * and are released at every level: no allocation per ray. */
+ * variance, each vertex's light sample (the choice of the light, the point on a sphere or rectangle light or on the
+ * glowing geometry, whose primitive takes what is left of the choice's number), its material sample, its wavelength
+ * group and its roulette, are dimensions of the camera sample's point in the pixel's shuffled, Owen-scrambled Sobol
+ * sequence (two groups of four a vertex, after the camera's group: see SLOT_ below). The others (the probe's NEE,
+ * media) and, with SAMPLER_INDEPENDENT, all of them come from the thread's PCG32 generator (TraceCtx.rng, which
+ * lights.c and probe_sample.c draw from too), re-seeded for each path from the pixel's index and the sample's index and
+ * restored afterwards. Either way a number depends on the pixel, the sample and its use only, so the image does not
+ * depend on the thread count, crops or tile order. Colours only through gcolor_*, materials only through gmaterial_*;
+ * temporaries live on the thread's scratch arena and are released at every level: no allocation per ray. */
 #include "path.h"
 #include "bands.h"
 #include "scene/accel.h"
@@ -96,9 +98,9 @@ typedef struct PathCtx {
  * position and the lens). The pairs that matter most lie in a group's first two dimensions, whose points are
  * stratified in 2D (a (0,m,2)-net); picks and Russian roulette take the others. */
 enum {
-    SLOT_LIGHT_U,    /**< the light sample's point on the light (the first area light or glowing primitive) */
+    SLOT_LIGHT_U,    /**< the light sample's point on the light (an area light or glowing primitive) */
     SLOT_LIGHT_V,
-    SLOT_LIGHT_PICK, /**< the glowing primitive chosen by power */
+    SLOT_LIGHT_PICK, /**< the light chosen by power (light_pick.h), then the glowing primitive */
     SLOT_SPARE,
     SLOT_BSDF_U, /**< the material's sampled direction */
     SLOT_BSDF_V,
@@ -241,9 +243,8 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
     const LightPick *lp = c->pick;
     const Scene *s = c->scene;
     const GMaterial *m = sp->material;
-    double pick, u_rest = 0.5;
-    int k = lp->n == 1 && lp->lights[0] ? light_pick_sample(lp, 0.5, &pick, NULL)
-                                        : light_pick_sample(lp, vertex_uniform(p, depth, SLOT_LIGHT_PICK), &pick, &u_rest);
+    double pick, u_rest = 0.5, u = lp->n == 1 && lp->lights[0] ? 0.5 : vertex_uniform(p, depth, SLOT_LIGHT_PICK);
+    int k = light_pick_sample(lp, u, &pick, &u_rest);
     if (k < 0 || !(pick > 0.0))
         return G_OK;
     const Light *l = lp->lights[k];
@@ -418,9 +419,10 @@ static int escaped(PathCtx *p, const Ray *r, int first, double prev_pdf, int fro
         CHECK(gcolor_fill(out, 0.0));
     else {
         CHECK(probe_pixel_radiance(env, r->d, out));
-        if (p->env_light && !from_medium)
-            CHECK(gcolor_scale(out, out, mis_power(prev_pdf, p->env_pick * probe_dist_pdf(&env->dist, env->probe,
-                                                                                           probe_from_world(env, r->d)))));
+        if (p->env_light && !from_medium) {
+            double pdf_nee = p->env_pick * probe_dist_pdf(&env->dist, env->probe, probe_from_world(env, r->d));
+            CHECK(gcolor_scale(out, out, mis_power(prev_pdf, pdf_nee)));
+        }
     }
     if (p->scattered && s->have_ambient)
         CHECK(gcolor_add(out, out, &s->ambient));

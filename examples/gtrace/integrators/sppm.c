@@ -6,13 +6,13 @@
  * glass, dispersing by one wavelength group as the path tracer does) with its weight beta, adding the emission and
  * the background it meets, to the first non-ideal surface: the pass's visible point, where the direct light is
  * estimated by light samples of one light source chosen by power (light_pick.h; lights.c's light_shade; shadow rays
- * stop at any surface, light through glass is left to the photons). The photon half: the pass's particle paths (photons.h, index pass *
- * photons + i) in batches of bounded size; each batch is put in a hashed grid whose cells are as wide as the
- * initial radius, and every visible point sums the particles within its radius, cell by cell and in slot order
- * (an order that neither the thread count nor the crop changes), through its material's reflection (for a
- * Lambertian material the particles' powers are summed and reflected once). Then each point's count N, radius r
- * and light tau are updated: N' = N + alpha M, r' = r sqrt(N' / (N + M)), tau' = (tau + Phi) r'^2 / r^2.
- * The pixel is its direct light averaged over the passes plus tau / (passes * photons * pi r^2).
+ * stop at any surface, light through glass is left to the photons). The photon half: the pass's particle paths
+ * (photons.h, index pass * photons + i) in batches of bounded size; each batch is put in a hashed grid whose cells are
+ * as wide as the initial radius, and every visible point sums the particles within its radius, cell by cell and in slot
+ * order (an order that neither the thread count nor the crop changes), through its material's reflection (for a
+ * Lambertian material the particles' powers are summed and reflected once). Then each point's count N, radius r and
+ * light tau are updated: N' = N + alpha M, r' = r sqrt(N' / (N + M)), tau' = (tau + Phi) r'^2 / r^2. The pixel is its
+ * direct light averaged over the passes plus tau / (passes * photons * pi r^2).
  *
  * Memory: four colours per pixel and one batch of particles, whatever the number of passes. */
 #include "sppm.h"
