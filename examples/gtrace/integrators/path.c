@@ -15,21 +15,23 @@
  * Lights. NEE takes one light source a vertex, chosen by power from the scene's table (lights/light_pick.h: the
  * lights that send light and the glowing geometry as one entry, an alias table: constant time whatever their number),
  * and divides its estimate by the probability of the choice; the density a light's MIS weight uses, on either side, is
- * its sampling density times that probability. Point, spot, directional and IES lights, including the directional
- * lights a probe technique (mediancut, adaptive, kmeans, irradiance, variance) makes, are delta lights: NEE only,
- * through lights.c's light_shade (the same shadow rule as the Whitted tracer: transmission through non-opaque surfaces
- * along the straight line). Sphere and rectangle lights and a `light probe` of technique reference (the environment,
- * importance sampled by probe_sample.c's probe_light_nee, the Whitted tracer's reference estimator with one direction)
- * can also be reached by material sampling, so both estimates are combined by multiple importance sampling with the
- * power heuristic (a sphere light is sampled uniformly in the solid angle it subtends, a rectangle light uniformly by
- * area; area_light_hit gives the same density. Sampling rectangles by solid angle, as spherical rectangles, was
- * measured on the Cornell box: 35% more time for 2% less RMSE); their shadow rays are blocked by any surface (light
- * through glass reaches them by material sampling, a caustic, so counting the straight transmission too would count it
- * twice). Material sampling sees sphere and rectangle lights (one-sided) when they are nearer than the surface hit; a
- * path after a delta bounce counts them fully. One light sample a vertex: the lights' `samples` apply to the Whitted
- * tracer; a reference probe's `shadows off` does not apply. At a Lambertian material (GMAT_LAMBERTIAN) the samples'
- * light, each with its MIS weight in it, is gathered and reflected once (lights.c's light_gather), as in the Whitted
- * tracer.
+ * its sampling density times that probability. A delta light, which material sampling never meets, is then chosen again
+ * among the delta lights by its unshadowed light at the vertex (delta_choice: among all of them when they are few, else
+ * by resampled importance sampling of a few candidates drawn by power): one shadow ray still, the choice weighted by
+ * what each light gives there. Point, spot, directional and IES lights, including the directional lights a probe
+ * technique (mediancut, adaptive, kmeans, irradiance, variance) makes, are delta lights: NEE only, through lights.c's
+ * light_shade (the same shadow rule as the Whitted tracer: transmission through non-opaque surfaces along the straight
+ * line). Sphere and rectangle lights and a `light probe` of technique reference (the environment, importance sampled by
+ * probe_sample.c's probe_light_nee, the Whitted tracer's reference estimator with one direction) can also be reached by
+ * material sampling, so both estimates are combined by multiple importance sampling with the power heuristic (a sphere
+ * light is sampled uniformly in the solid angle it subtends, a rectangle light uniformly by area; area_light_hit gives
+ * the same density. Sampling rectangles by solid angle, as spherical rectangles, was measured on the Cornell box: 35%
+ * more time for 2% less RMSE); their shadow rays are blocked by any surface (light through glass reaches them by
+ * material sampling, a caustic, so counting the straight transmission too would count it twice). Material sampling sees
+ * sphere and rectangle lights (one-sided) when they are nearer than the surface hit; a path after a delta bounce counts
+ * them fully. One light sample a vertex: the lights' `samples` apply to the Whitted tracer; a reference probe's
+ * `shadows off` does not apply. At a Lambertian material (GMAT_LAMBERTIAN) the samples' light, each with its MIS weight
+ * in it, is gathered and reflected once (lights.c's light_gather), as in the Whitted tracer.
  *
  * The environment. Camera rays and rays after a delta bounce see the background (the background colour, or
  * the background probe interpolated bilinearly). After a non-delta bounce the background probe is a light:
@@ -77,6 +79,7 @@
 #include "lights/probe_env.h"
 #include "medium_light.h"
 #include "media/medium.h"
+#include "scene/ies.h"
 #include "trace/sampler.h"
 
 #include <math.h>
@@ -101,7 +104,7 @@ enum {
     SLOT_LIGHT_U,    /**< the light sample's point on the light (an area light or glowing primitive) */
     SLOT_LIGHT_V,
     SLOT_LIGHT_PICK, /**< the light chosen by power (light_pick.h), then the glowing primitive */
-    SLOT_SPARE,
+    SLOT_DELTA_PICK, /**< the delta light kept among the candidates (delta_choice) */
     SLOT_BSDF_U, /**< the material's sampled direction */
     SLOT_BSDF_V,
     SLOT_ROULETTE, /**< drawn after the material's sample: the same group (PathCtx.group keeps one) */
@@ -231,6 +234,71 @@ int path_light_sample_at(const Light *l, GVec3 x, double u1, double u2, GVec3 *i
     return 0;
 }
 
+/* Candidates a vertex weighs when NEE has chosen a delta light among more (see delta_choice). */
+#define NEE_DELTA_CANDIDATES 8
+
+/* The guide to delta light entry k's light at x (facing: the surface's side; opaque: its back gets none) that
+ * delta_choice draws by: the brightness of its colour times its intensity towards x over the squared distance (a
+ * directional light's irradiance) times the cosine on an opaque surface; no shadows. 0 exactly where light_shade
+ * adds nothing for want of light or by the cosine. */
+static double delta_guide(const LightPick *lp, int k, GVec3 x, GVec3 facing, int opaque)
+{
+    const Light *l = lp->lights[k];
+    GVec3 in;
+    double g = lp->bright[k];
+    if (l->kind == LIGHT_DIRECTIONAL) {
+        in = gvec3_neg(l->direction);
+    } else {
+        GVec3 to = gvec3_sub(l->position, x);
+        double d2 = gvec3_dot(to, to);
+        if (!(d2 > 0.0))
+            return 0.0;
+        in = gvec3_scale(to, 1.0 / sqrt(d2));
+        g /= d2;
+        if (l->kind == LIGHT_SPOT)
+            g *= light_spot_factor(l, in);
+        else if (l->kind == LIGHT_IES)
+            g *= ies_candela_dir(l->ies, gvec3_neg(in), l->direction, l->along, l->third);
+    }
+    if (opaque)
+        g *= fmax(0.0, gvec3_dot(in, facing));
+    return g > 0.0 && isfinite(g) ? g : 0.0;
+}
+
+/* Once the table has chosen a delta light (entry k0, with the delta lights' share lp->delta_prob), the one to shade:
+ * with at most NEE_DELTA_CANDIDATES delta lights, one of them all drawn by its delta_guide at x; with more, resampled
+ * importance sampling (Talbot, Cline and Egbert 2005): k0 and NEE_DELTA_CANDIDATES - 1 more drawn by power from the
+ * delta lights' table (the generator's numbers), one of them kept by guide over power. u makes the last choice. The
+ * entry kept, and into *pick the factor its light is divided by (the delta lights' share times the kept one's
+ * density, or for the resampled choice its guide times the count over the sum of the candidates' guide over power);
+ * -1 when every guide is 0 (no delta light reaches x). */
+static int delta_choice(PathCtx *p, const LightPick *lp, int k0, GVec3 x, GVec3 facing, int opaque, double u,
+                        double *pick)
+{
+    int cand[NEE_DELTA_CANDIDATES], m = lp->ndelta <= NEE_DELTA_CANDIDATES ? lp->ndelta : NEE_DELTA_CANDIDATES;
+    int every = lp->ndelta <= NEE_DELTA_CANDIDATES;
+    double w[NEE_DELTA_CANDIDATES], g[NEE_DELTA_CANDIDATES], sum = 0.0;
+    for (int i = 0; i < m; i++) {
+        cand[i] = every ? lp->delta[i] : i == 0 ? k0 : light_pick_delta(lp, uniform(p));
+        g[i] = delta_guide(lp, cand[i], x, facing, opaque);
+        w[i] = every ? g[i] : g[i] * lp->delta_prob / lp->prob[cand[i]];
+        sum += w[i];
+    }
+    if (!(sum > 0.0) || !isfinite(sum))
+        return -1;
+    double t = u * sum;
+    int i = 0;
+    while (i < m - 1 && (t >= w[i] || !(w[i] > 0.0))) {
+        t -= w[i];
+        i++;
+    }
+    if (!(w[i] > 0.0)) /* rounding ran past the last candidate that counts */
+        while (i > 0 && !(w[i] > 0.0))
+            i--;
+    *pick = every ? lp->delta_prob * g[i] / sum : lp->delta_prob * g[i] * m / sum;
+    return cand[i];
+}
+
 /* Adds to out the direct light at sp, the vertex at `depth`, reflected towards to_viewer (NEE): one light source
  * chosen by power from the scene's table (lights/light_pick.h), its estimate divided by the probability of the
  * choice. The choice takes the vertex's pick dimension (none when the table has one entry), a sphere or rectangle
@@ -245,6 +313,8 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
     const GMaterial *m = sp->material;
     double pick, u_rest = 0.5, u = lp->n == 1 && lp->lights[0] ? 0.5 : vertex_uniform(p, depth, SLOT_LIGHT_PICK);
     int k = light_pick_sample(lp, u, &pick, &u_rest);
+    if (k >= 0 && lp->ndelta > 1 && light_pick_is_delta(lp, k)) /* which delta light, by its light here */
+        k = delta_choice(p, lp, k, sp->point, facing, opaque, vertex_uniform(p, depth, SLOT_DELTA_PICK), &pick);
     if (k < 0 || !(pick > 0.0))
         return G_OK;
     const Light *l = lp->lights[k];

@@ -12,6 +12,12 @@
 
 #include <math.h>
 
+/* 1 for the kinds of light material sampling never meets. */
+static int light_pick_kind_delta(const Light *l)
+{
+    return l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT || l->kind == LIGHT_DIRECTIONAL || l->kind == LIGHT_IES;
+}
+
 void light_pick_free(LightPick *lp)
 {
     gmem_free(lp->lights);
@@ -20,6 +26,10 @@ void light_pick_free(LightPick *lp)
     gmem_free(lp->alias);
     gmem_free(lp->scene_prob);
     gmem_free(lp->area);
+    gmem_free(lp->bright);
+    gmem_free(lp->delta);
+    gmem_free(lp->delta_q);
+    gmem_free(lp->delta_alias);
     *lp = (LightPick){0};
 }
 
@@ -34,8 +44,13 @@ int light_pick_build(LightPick *lp, const Scene *s, const EmissiveSet *e, GError
     lp->alias = gmem_calloc(cap, sizeof *lp->alias);
     lp->scene_prob = gmem_calloc(cap, sizeof *lp->scene_prob);
     lp->area = gmem_calloc(cap, sizeof *lp->area);
+    lp->bright = gmem_calloc(cap, sizeof *lp->bright);
+    lp->delta = gmem_calloc(cap, sizeof *lp->delta);
+    lp->delta_q = gmem_calloc(cap, sizeof *lp->delta_q);
+    lp->delta_alias = gmem_calloc(cap, sizeof *lp->delta_alias);
     int *entry = gmem_calloc(cap, sizeof *entry); /* the entry of each scene light (-1: none) */
-    if (!lp->lights || !lp->prob || !lp->q || !lp->alias || !lp->scene_prob || !lp->area || !entry) {
+    if (!lp->lights || !lp->prob || !lp->q || !lp->alias || !lp->scene_prob || !lp->area || !lp->bright ||
+        !lp->delta || !lp->delta_q || !lp->delta_alias || !entry) {
         gmem_free(entry);
         light_pick_free(lp);
         return gerror_set(err, G_ERR_NOMEM, "out of memory for the table of %d lights", s->nlights);
@@ -50,6 +65,9 @@ int light_pick_build(LightPick *lp, const Scene *s, const EmissiveSet *e, GError
         if (!(w > 0.0) || !isfinite(w) || !isfinite(total + w))
             continue;
         entry[i] = lp->n;
+        if (light_pick_kind_delta(l))
+            lp->delta[lp->ndelta++] = lp->n;
+        lp->bright[lp->n] = gcolor_brightness_as(&l->color, GCOLOR_LIGHT);
         lp->lights[lp->n] = l;
         lp->prob[lp->n++] = w;
         total += w;
@@ -68,6 +86,16 @@ int light_pick_build(LightPick *lp, const Scene *s, const EmissiveSet *e, GError
         for (int k = 0; k < lp->n; k++)
             lp->prob[k] /= total;
         rc = alias_table_build(lp->prob, lp->n, lp->q, lp->alias);
+        for (int d = 0; d < lp->ndelta; d++)
+            lp->delta_prob += lp->prob[lp->delta[d]];
+        double *dp = lp->ndelta > 0 && rc == G_OK ? gmem_alloc(sizeof *dp * (size_t)lp->ndelta) : NULL;
+        if (lp->ndelta > 0 && rc == G_OK && !dp)
+            rc = G_ERR_NOMEM;
+        for (int d = 0; dp && d < lp->ndelta; d++)
+            dp[d] = lp->prob[lp->delta[d]] / lp->delta_prob;
+        if (dp)
+            rc = alias_table_build(dp, lp->ndelta, lp->delta_q, lp->delta_alias);
+        gmem_free(dp);
         for (int i = 0; i < s->nlights; i++)
             lp->scene_prob[i] = entry[i] >= 0 ? lp->prob[entry[i]] : 0.0;
         lp->emissive_prob = emissive_entry >= 0 ? lp->prob[emissive_entry] : 0.0;
@@ -92,3 +120,10 @@ int light_pick_sample(const LightPick *lp, double u, double *prob, double *u_res
 }
 
 double light_pick_pmf(const LightPick *lp, int i) { return lp && lp->scene_prob ? lp->scene_prob[i] : 0.0; }
+
+int light_pick_delta(const LightPick *lp, double u)
+{
+    return lp->delta[alias_table_pick(lp->delta_q, lp->delta_alias, lp->ndelta, u, NULL)];
+}
+
+int light_pick_is_delta(const LightPick *lp, int k) { return lp->lights[k] && light_pick_kind_delta(lp->lights[k]); }

@@ -22,6 +22,12 @@ typedef struct LightPick {
     const EmissiveSet *emissive; /**< the glowing geometry (NULL: none or no power) */
     int *area;                   /**< the indices in s->lights of the sphere and rectangle lights, in order */
     int narea;
+    double *bright;              /**< entry i's colour's brightness as a light (0 for the glowing geometry) */
+    int *delta;                  /**< the entries that are delta lights (point, spot, directional, IES), in order */
+    int ndelta;
+    double delta_prob;           /**< the probability of choosing one of them (the sum of theirs) */
+    double *delta_q;             /**< alias table over them by power: choice i of ndelta is entry delta[i] */
+    int *delta_alias;
     EmitBounds bounds;           /**< the scene's bounds, which a directional light's or a probe's power uses */
 } LightPick;
 
@@ -37,5 +43,10 @@ void light_pick_free(LightPick *lp);
 int light_pick_sample(const LightPick *lp, double u, double *prob, double *u_rest);
 /** The probability that light_pick_sample chooses the scene's light i (s->lights[i]): 0 when it is not an entry. */
 double light_pick_pmf(const LightPick *lp, int i);
+/** A delta light's entry drawn by power among the delta lights only (lp->ndelta >= 1) with one uniform number u: the
+ * choice among them that light_pick_sample makes once it has chosen a delta light. */
+int light_pick_delta(const LightPick *lp, double u);
+/** 1 when entry k is a delta light (point, spot, directional, IES: material sampling never meets it). */
+int light_pick_is_delta(const LightPick *lp, int k);
 
 #endif
