@@ -59,15 +59,15 @@ int medium_direct_light(TraceCtx *c, const Medium *vol, const Media *media, GVec
     GScratchMark mark = gscratch_mark(c->scratch);
     GColor L;
     int rc = gcolor_scratch_uncleared(&L, s->model, c->scratch); /* written by each sample drawn */
-    GVec3 in;
+    GVec3 in, normal;
     double dist, pdf, f = 1.0;
     if (rc == G_OK && !l) { /* the glowing geometry: one point of one primitive */
         double u1 = rng_next(&c->rng), u2 = rng_next(&c->rng);
-        int got = emissive_sample(c, lp->emissive, x, u_rest, u1, u2, &in, &dist, &pdf, &L);
+        int got = emissive_sample(c, lp->emissive, x, u_rest, u1, u2, &in, &dist, &normal, &pdf, &L);
         if (got < 0)
             rc = got;
         else if (got && pdf > 0.0)
-            rc = add_sample(c, vol, media, x, d, in, dist * EMISSIVE_SHADOW_SHORTEN, &L,
+            rc = add_sample(c, vol, media, x, d, in, emissive_shadow_reach(x, in, in, dist, normal), &L,
                             mis_power(pdf * pick, phase_eval(vol->phase, d, in)) / (pdf * pick), 1, out);
     } else if (rc == G_OK) {
         switch (l->kind) {

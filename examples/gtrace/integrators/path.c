@@ -337,18 +337,18 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
         CHECK(probe_light_nee(c, l, sp, facing, media, to_viewer, opaque, 1, l == p->env_light ? ri : NULL, pick, &lt,
                               sum));
     } else { /* a sphere or rectangle light, or one point of one glowing primitive */
-        GVec3 in;
+        GVec3 in, normal;
         double dist, pdf_l, u1 = vertex_uniform(p, depth, SLOT_LIGHT_U), u2 = vertex_uniform(p, depth, SLOT_LIGHT_V);
         int got;
         lt.blocked = 1;
         if (l)
             CHECK(got = path_light_sample_at(l, sp->point, u1, u2, &in, &dist, &pdf_l, &L));
         else
-            CHECK(got = emissive_sample(c, lp->emissive, sp->point, u_rest, u1, u2, &in, &dist, &pdf_l, &L));
+            CHECK(got = emissive_sample(c, lp->emissive, sp->point, u_rest, u1, u2, &in, &dist, &normal, &pdf_l, &L));
         if (got && !(opaque && gvec3_dot(in, facing) <= 0.0)) {
             double w = mis_power(pdf_l * pick, gmaterial_pdf(m, sp, in, to_viewer, ri));
-            if (!l)
-                dist *= EMISSIVE_SHADOW_SHORTEN;
+            if (!l) /* the shadow ray ends before the glowing surface (a sphere or rectangle light is no surface) */
+                dist = emissive_shadow_reach(sp->point, facing, in, dist, normal);
             if (w > 0.0)
                 CHECK(sample_light(c, sp, facing, media, in, dist, &L, w / pdf_l, to_viewer, &lt, sum));
         }

@@ -340,7 +340,7 @@ double emissive_pdf(const EmissiveSet *e, const Hit *h, GVec3 x, GVec3 dir, doub
 }
 
 int emissive_sample(TraceCtx *c, const EmissiveSet *e, GVec3 x, double u0, double u1, double u2, GVec3 *in,
-                    double *dist, double *pdf, GColor *L)
+                    double *dist, GVec3 *normal, double *pdf, GColor *L)
 {
     int i = alias_table_pick(e->q, e->alias, e->n, u0, NULL);
     const EmissivePrim *p = &e->prims[i];
@@ -359,6 +359,7 @@ int emissive_sample(TraceCtx *c, const EmissiveSet *e, GVec3 x, double u0, doubl
         *in = gvec3_add(gvec3_scale(axis, ct), gvec3_add(gvec3_scale(t1, st * cos(ph)), gvec3_scale(t2, st * sin(ph))));
         double b = dc * ct, disc = b * b - (dc * dc - r * r);
         *dist = b - sqrt(fmax(0.0, disc));
+        *normal = gvec3_scale(gvec3_sub(gvec3_madd(x, *in, *dist), p->p0), 1.0 / r);
     } else {
         if (p->kind == EMIT_TRIANGLE) {
             double su = sqrt(u1);
@@ -379,6 +380,7 @@ int emissive_sample(TraceCtx *c, const EmissiveSet *e, GVec3 x, double u0, doubl
             return 0;
         *in = gvec3_scale(w, 1.0 / d);
         *dist = d;
+        *normal = p->n;
         if (p->kind == EMIT_DISC)
             bu = bv = 0.0;
     }
@@ -397,21 +399,26 @@ int emissive_shade(TraceCtx *c, const EmissiveSet *e, GSurfPoint *sp, GVec3 faci
     int rc = gcolor_scratch_uncleared(&L, c->scene->model, c->scratch);
     int n = EMISSIVE_WHITTED_SAMPLES;
     for (int k = 0; rc >= 0 && k < n; k++) {
-        GVec3 in;
+        GVec3 in, normal;
         double dist, pdf;
         double u0 = (k + rng_next(&c->rng)) / n, u1 = rng_next(&c->rng), u2 = rng_next(&c->rng);
-        int got = emissive_sample(c, e, sp->point, u0, u1, u2, &in, &dist, &pdf, &L);
+        int got = emissive_sample(c, e, sp->point, u0, u1, u2, &in, &dist, &normal, &pdf, &L);
         if (got <= 0) {
             rc = got;
             continue;
         }
         if (opaque && gvec3_dot(in, facing) <= 0.0)
             continue;
-        rc = sample_light(c, sp, facing, media, in, dist * EMISSIVE_SHADOW_SHORTEN, &L, 1.0 / (pdf * n), out_dir, t,
-                          result);
+        rc = sample_light(c, sp, facing, media, in, emissive_shadow_reach(sp->point, facing, in, dist, normal), &L,
+                          1.0 / (pdf * n), out_dir, t, result);
     }
     gscratch_release(c->scratch, mark);
     return rc < 0 ? rc : G_OK;
+}
+
+double emissive_shadow_reach(GVec3 x, GVec3 facing, GVec3 in, double dist, GVec3 normal)
+{
+    return shadow_reach(offset_origin(x, facing, in), in, gvec3_madd(x, in, dist), normal);
 }
 
 double emissive_power(const EmissiveSet *e) { return e ? M_PI * e->total : 0.0; }
