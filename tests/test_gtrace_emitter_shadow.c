@@ -77,7 +77,7 @@ static Scene *emitter_over_floor(int kind, double size, double gap, GVec3 shift,
     int rc = kind == SHAPE_KIND_QUAD       ? object_quad(o, quad[0], gvec3_sub(quad[1], quad[0]),
                                                          gvec3_sub(quad[3], quad[0]), &err)
              : kind == SHAPE_KIND_TRIANGLE ? object_triangle(o, tri[0], tri[1], tri[2], &err)
-             : kind == SHAPE_KIND_DISC     ? object_disc(o, gvec3_add(shift, gvec3(0, gap, 0)), gvec3(0, -1, 0), h, &err)
+             : kind == SHAPE_KIND_DISC     ? object_disc(o, gvec3_add(shift, gvec3(0, gap, 0)), gvec3_neg(up), h, &err)
                                            : object_sphere(o, gvec3_add(shift, gvec3(0, gap + h, 0)), h, &err);
     assert_int_equal(rc, G_OK);
     assert_int_equal(scene_add_object(s, o, &err), G_OK);

@@ -4,7 +4,8 @@
  * sample a vertex in the path tracer keeps the expected value: 100 point lights of powers spread over 50:1 light a
  * floor as the Whitted tracer's sum over every light does (whole image within 1%, four patches within 2%), and an
  * emitter quad, a rectangle, a sphere and point lights together equal the Whitted tracer's estimate (every light
- * sampled, 1.5%: multiple importance sampling with the choice's probability in both densities); the particle
+ * sampled, 1.5%), both with 3 point lights (the path tracer samples every light) and with LIGHT_PICK_EVERY_MAX of them
+ * (one chosen: multiple importance sampling with the choice's probability in both densities); the particle
  * integrators (SPPM, light tracing) that choose their emitting light from the same table agree with it too; the
  * image with many lights does not depend on the thread count. Images are tiny. */
 #include "test_gtrace_common.h"
@@ -161,9 +162,10 @@ static void test_hundred_lights(void **state)
     scene_destroy(s);
 }
 
-static void test_emissive_and_lights(void **state)
+/* An emitter quad, a rectangle light, a sphere light and npoints point lights (of the same total intensity whatever
+ * their number): the path tracer against the Whitted tracer. */
+static void emissive_and_lights(int npoints, const char *what)
 {
-    (void)state;
     Scene *s = floor_scene();
     GError err;
     /* every light below the emitter quad's plane, none behind it as seen from the floor: no shadows (the two
@@ -183,16 +185,34 @@ static void test_emissive_and_lights(void **state)
     ball->radius = 0.2;
     ball->samples = 16;
     ball->visible = 1; /* seen by the camera in both integrators */
-    for (int k = 0; k < 3; k++)
-        add_light(s, LIGHT_POINT, 0.1 * (k + 1))->position = gvec3(-1.5 + 1.5 * k, 0.5, -1.8);
+    double sum = 0.0;
+    for (int k = 0; k < npoints; k++)
+        sum += k % 3 + 1;
+    for (int k = 0; k < npoints; k++)
+        add_light(s, LIGHT_POINT, 0.6 * (k % 3 + 1) / sum)->position = gvec3(-1.5 + 3.0 * k / (npoints - 1), 0.5, -1.8);
     Framebuffer whitted, path;
     render_by(s, RENDER_WHITTED, 16, 2, 0, 0, &whitted);
     render_by(s, RENDER_PATH, SANITIZED ? 64 : 256, 2, 0, 0, &path);
-    agree("emitter, rectangle, sphere and points, path", &path, &whitted, SANITIZED ? 0.03 : 0.015,
+    agree(what, &path, &whitted, SANITIZED ? 0.03 : 0.015,
           SANITIZED ? 0.05 : 0.03);
     framebuffer_free(&whitted);
     framebuffer_free(&path);
     scene_destroy(s);
+}
+
+/* Six entries: next-event estimation samples every light. */
+static void test_emissive_and_lights(void **state)
+{
+    (void)state;
+    assert_true(3 + 3 <= LIGHT_PICK_EVERY_MAX);
+    emissive_and_lights(3, "emitter, rectangle, sphere and 3 points (every light), path");
+}
+
+/* More entries than LIGHT_PICK_EVERY_MAX: one light a vertex, the choice's probability in both MIS densities. */
+static void test_emissive_and_many_lights(void **state)
+{
+    (void)state;
+    emissive_and_lights(LIGHT_PICK_EVERY_MAX, "emitter, rectangle, sphere and many points (one chosen), path");
 }
 
 int main(void)
@@ -204,6 +224,7 @@ int main(void)
         cmocka_unit_test(test_table),
         cmocka_unit_test(test_hundred_lights),
         cmocka_unit_test(test_emissive_and_lights),
+        cmocka_unit_test(test_emissive_and_many_lights),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

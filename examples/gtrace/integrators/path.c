@@ -299,9 +299,87 @@ static int delta_choice(PathCtx *p, const LightPick *lp, int k0, GVec3 x, GVec3 
     return cand[i];
 }
 
-/* Adds to out the direct light at sp, the vertex at `depth`, reflected towards to_viewer (NEE): one light source
- * chosen by power from the scene's table (lights/light_pick.h), its estimate divided by the probability of the
- * choice. The choice takes the vertex's pick dimension (none when the table has one entry), a sphere or rectangle
+/* Adds to out the direct light at sp, the vertex at `depth`, from every light source, reflected towards to_viewer
+ * (NEE, when the table holds few entries: light_pick_nee_every). The first sphere or rectangle light (else the glowing
+ * geometry) takes the vertex's light dimensions, the others the generator's numbers. */
+static int direct_light_every(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 to_viewer,
+                              int opaque, const GColor *ri, int depth, GColor *out)
+{
+    int slots_free = 1;
+    TraceCtx *c = p->c;
+    const Scene *s = c->scene;
+    const GMaterial *m = sp->material;
+    GScratchMark mark = gscratch_mark(c->scratch);
+    LightTmp lt;
+    GColor L;
+    int rc = G_OK;
+    CHECK(light_temps(c, &lt));
+    CHECK(gcolor_scratch(&L, s->model, c->scratch));
+    light_gather(sp, &lt); /* a Lambertian material: asked once for all samples, MIS weights in their light */
+    for (int i = 0; i < s->nlights; i++) {
+        const Light *l = s->lights[i];
+        lt.blocked = 0;
+        if (l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT || l->kind == LIGHT_DIRECTIONAL || l->kind == LIGHT_IES) {
+            CHECK(light_shade(c, l, sp, facing, media, to_viewer, opaque, &lt, out));
+            continue;
+        }
+        lt.blocked = 1; /* material sampling reaches these lights: light through glass is a caustic */
+        if (l->kind == LIGHT_PROBE) { /* the reference's estimator with one direction (a basis: not used) */
+            CHECK(probe_light_nee(c, l, sp, facing, media, to_viewer, opaque, 1, l == p->env_light ? ri : NULL, 1.0,
+                                  &lt, out));
+            continue;
+        }
+        if (l->kind != LIGHT_SPHERE && l->kind != LIGHT_RECT)
+            continue;
+        GVec3 in;
+        double dist, pdf_l, u1, u2;
+        int got;
+        if (slots_free) {
+            u1 = vertex_uniform(p, depth, SLOT_LIGHT_U);
+            u2 = vertex_uniform(p, depth, SLOT_LIGHT_V);
+            slots_free = 0;
+        } else {
+            u1 = uniform(p);
+            u2 = uniform(p);
+        }
+        CHECK(got = path_light_sample_at(l, sp->point, u1, u2, &in, &dist, &pdf_l, &L));
+        if (!got || (opaque && gvec3_dot(in, facing) <= 0.0))
+            continue;
+        double w = mis_power(pdf_l, gmaterial_pdf(m, sp, in, to_viewer, ri));
+        if (w > 0.0)
+            CHECK(sample_light(c, sp, facing, media, in, dist, &L, w / pdf_l, to_viewer, &lt, out));
+    }
+    if (c->emissive) { /* glowing geometry: one point of one primitive, chosen by power */
+        GVec3 in, normal;
+        double dist, pdf_l, u0, u1, u2;
+        int got;
+        if (slots_free) {
+            u0 = vertex_uniform(p, depth, SLOT_LIGHT_PICK);
+            u1 = vertex_uniform(p, depth, SLOT_LIGHT_U);
+            u2 = vertex_uniform(p, depth, SLOT_LIGHT_V);
+        } else {
+            u0 = uniform(p);
+            u1 = uniform(p);
+            u2 = uniform(p);
+        }
+        lt.blocked = 1;
+        CHECK(got = emissive_sample(c, c->emissive, sp->point, u0, u1, u2, &in, &dist, &normal, &pdf_l, &L));
+        if (got && !(opaque && gvec3_dot(in, facing) <= 0.0)) {
+            double w = mis_power(pdf_l, gmaterial_pdf(m, sp, in, to_viewer, ri));
+            if (w > 0.0)
+                CHECK(sample_light(c, sp, facing, media, in, emissive_shadow_reach(sp->point, facing, in, dist, normal),
+                                   &L, w / pdf_l, to_viewer, &lt, out));
+        }
+    }
+    CHECK(light_gather_finish(sp, &lt, out));
+done:
+    gscratch_release(c->scratch, mark);
+    return rc;
+}
+
+/* Adds to out the direct light at sp, the vertex at `depth`, reflected towards to_viewer (NEE, when the table holds
+ * many entries): one light source chosen by power from the scene's table (lights/light_pick.h), its estimate divided
+ * by the probability of the choice. The choice takes the vertex's pick dimension (none when the table has one entry), a sphere or rectangle
  * light or the glowing geometry its point dimensions, the glowing geometry's primitive what is left of the pick's
  * number; a delta light draws nothing, a probe the generator's numbers. */
 static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 to_viewer, int opaque,
@@ -407,7 +485,9 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
         }
     }
 
-    if (!delta && c->pick && c->pick->n > 0)
+    if (!delta && light_pick_nee_every(c->pick) && (s->nlights > 0 || c->emissive))
+        CHECK(direct_light_every(p, sp, facing, media, to_viewer, opaque, ri_use, depth, out));
+    else if (!delta && c->pick && c->pick->n > 0)
         CHECK(direct_light(p, sp, facing, media, to_viewer, opaque, ri_use, depth, out));
 
     if (depth < c->max_depth) {
@@ -510,7 +590,7 @@ static int medium_vertex(PathCtx *p, const Ray *r, const Media *media, const Med
     GColor illum;
     int rc = G_OK;
     CHECK(gcolor_fill(out, 0.0));
-    if (c->pick && c->pick->n > 0)
+    if (light_pick_nee_every(c->pick) ? c->scene->nlights > 0 || c->emissive : c->pick && c->pick->n > 0)
         CHECK(medium_direct_light(c, vol, media, x, r->d, out));
     if (depth >= c->max_depth)
         goto done;
@@ -588,7 +668,7 @@ static int path_radiance(PathCtx *p, const Ray *r, const Media *media, int depth
         double pl = 0.0, t = area_light_hit(s->lights[i], r, t_l, &pl);
         if (t < t_l) {
             t_l = t;
-            pdf_l = pl * light_pick_pmf(lp, i);
+            pdf_l = pl * light_pick_nee_pmf(lp, i);
             lh = s->lights[i];
         }
     }
@@ -629,8 +709,9 @@ static int arrive(PathCtx *p, const Ray *r, const Media *media, int depth, doubl
         return escaped(p, r, first, prev_pdf, from_medium, out);
     /* glowing geometry that NEE also reaches: its emission weighed against that strategy */
     double emit_weight = 1.0;
-    if (c->pick && c->pick->emissive && !first && h.material && !(h.material->flags & GMAT_NO_EMISSION)) {
-        double pdf_e = c->pick->emissive_prob * emissive_pdf(c->pick->emissive, &h, r->o, r->d, h.t);
+    const EmissiveSet *nee_set = light_pick_nee_every(c->pick) ? c->emissive : c->pick ? c->pick->emissive : NULL;
+    if (nee_set && !first && h.material && !(h.material->flags & GMAT_NO_EMISSION)) {
+        double pdf_e = light_pick_nee_emissive_pmf(c->pick) * emissive_pdf(nee_set, &h, r->o, r->d, h.t);
         if (pdf_e > 0.0)
             emit_weight = mis_power(prev_pdf, pdf_e);
     }
@@ -662,7 +743,7 @@ int path_trace(TraceCtx *c, const Ray *r, const Media *media, uint64_t pixel, in
         const Light *l = s->lights[i];
         if (l->kind == LIGHT_PROBE && l->env == env && env->dist.row_cdf) {
             p.env_light = l;
-            p.env_pick = light_pick_pmf(c->pick, i);
+            p.env_pick = light_pick_nee_pmf(c->pick, i);
         }
     }
     p.env_in_lights = env && env->nlights > 0 && env->lights[0]->kind == LIGHT_DIRECTIONAL;

@@ -29,8 +29,8 @@ void emissive_free(EmissiveSet *e);
 /** The number of primitives of the set (0 for NULL). */
 int emissive_count(const EmissiveSet *e);
 /** Draws a point of the set as seen from x with three uniform numbers: 1 with the unit direction `in` towards it,
- * its distance, the unit normal of its primitive there (of either side), the density of that direction in solid angle (the choice of the primitive included) and the
- * radiance the material emits towards x there in L; 0 when the draw offers no light (the point lies behind its
+ * its distance, the unit normal of its primitive there (of either side), the density of that direction in solid
+ * angle (the choice of the primitive included) and the radiance the material emits towards x there in L; 0 when the draw offers no light (the point lies behind its
  * primitive's plane as seen from x is still drawn: its emission decides); or a status. */
 int emissive_sample(TraceCtx *c, const EmissiveSet *e, GVec3 x, double u0, double u1, double u2, GVec3 *in,
                     double *dist, GVec3 *normal, double *pdf, GColor *L);

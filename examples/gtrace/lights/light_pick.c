@@ -100,6 +100,7 @@ int light_pick_build(LightPick *lp, const Scene *s, const EmissiveSet *e, GError
             lp->scene_prob[i] = entry[i] >= 0 ? lp->prob[entry[i]] : 0.0;
         lp->emissive_prob = emissive_entry >= 0 ? lp->prob[emissive_entry] : 0.0;
     }
+    lp->every = lp->n <= LIGHT_PICK_EVERY_MAX;
     gmem_free(entry);
     if (rc != G_OK) {
         light_pick_free(lp);
@@ -127,3 +128,9 @@ int light_pick_delta(const LightPick *lp, double u)
 }
 
 int light_pick_is_delta(const LightPick *lp, int k) { return lp->lights[k] && light_pick_kind_delta(lp->lights[k]); }
+
+int light_pick_nee_every(const LightPick *lp) { return lp && lp->every; }
+
+double light_pick_nee_pmf(const LightPick *lp, int i) { return light_pick_nee_every(lp) ? 1.0 : light_pick_pmf(lp, i); }
+
+double light_pick_nee_emissive_pmf(const LightPick *lp) { return light_pick_nee_every(lp) ? 1.0 : lp->emissive_prob; }

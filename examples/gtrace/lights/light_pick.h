@@ -9,6 +9,11 @@
 
 #include <generic/error.h>
 
+/** The most entries a table may hold for next-event estimation to take a sample of every light source at each vertex
+ * rather than one chosen by power (light_pick_nee_every): below it, one sample of each costs little more than the one
+ * chosen and has far less noise; above it, the time of a sample of each grows with their number. */
+#define LIGHT_PICK_EVERY_MAX 16
+
 /** The scene's light sources that send light (emit_supported lights of some power, and the glowing geometry as one
  * entry with its own table), each chosen with a probability proportional to its power through an alias table. */
 typedef struct LightPick {
@@ -29,6 +34,7 @@ typedef struct LightPick {
     double *delta_q;             /**< alias table over them by power: choice i of ndelta is entry delta[i] */
     int *delta_alias;
     EmitBounds bounds;           /**< the scene's bounds, which a directional light's or a probe's power uses */
+    int every;                   /**< next-event estimation samples every light (n <= LIGHT_PICK_EVERY_MAX) */
 } LightPick;
 
 /** Builds the table of s and its glowing geometry e (NULL: none): every light emit_supported accepts whose emit_power
@@ -46,6 +52,14 @@ double light_pick_pmf(const LightPick *lp, int i);
 /** A delta light's entry drawn by power among the delta lights only (lp->ndelta >= 1) with one uniform number u: the
  * choice among them that light_pick_sample makes once it has chosen a delta light. */
 int light_pick_delta(const LightPick *lp, double u);
+/** 1 when next-event estimation takes one sample of every light source of the scene (and of the glowing geometry) at
+ * each vertex, the table holding at most LIGHT_PICK_EVERY_MAX entries; 0 when it takes one chosen by the table. */
+int light_pick_nee_every(const LightPick *lp);
+/** The probability with which next-event estimation samples the scene's light i at a vertex: 1 when it samples every
+ * light (light_pick_nee_every), else light_pick_pmf. */
+double light_pick_nee_pmf(const LightPick *lp, int i);
+/** The same for the glowing geometry: 1 when every light is sampled, else the probability of its entry. */
+double light_pick_nee_emissive_pmf(const LightPick *lp);
 /** 1 when entry k is a delta light (point, spot, directional, IES: material sampling never meets it). */
 int light_pick_is_delta(const LightPick *lp, int k);
 
