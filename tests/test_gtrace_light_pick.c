@@ -1,8 +1,8 @@
 /* test_gtrace_light_pick.c - the scene's light table by power (examples/gtrace/lights/light_pick.c) and its users:
  * the probabilities are the lights' powers over their sum (a black light left out), the alias table chooses each as
  * often (stratified numbers: within one choice in 20,000) and what is left of the number is uniform; one light
- * sample a vertex in the path tracer keeps the expected value: 100 point lights of powers spread over 50:1 light a
- * floor as the Whitted tracer's sum over every light does (whole image within 1%, four patches within 2%), and an
+ * sample a vertex in the path tracer keeps the expected value: LIGHT_PICK_EVERY_MAX + 44 point lights of powers spread
+ * over 50:1 light a floor as the Whitted tracer's sum over every light does (whole image within 1%, four patches within 2%), and an
  * emitter quad, a rectangle, a sphere and point lights together equal the Whitted tracer's estimate (every light
  * sampled, 1.5%), both with 3 point lights (the path tracer samples every light) and with LIGHT_PICK_EVERY_MAX of them
  * (one chosen: multiple importance sampling with the choice's probability in both densities); the particle
@@ -72,17 +72,23 @@ static Scene *floor_scene(void)
     return s;
 }
 
-/* The floor under 100 point lights on a 10 x 10 grid, of intensities 0.01 (1 + k mod 7)^2: 0.01 to 0.49. */
-static Scene *hundred_lights(void)
+/* The floor under n point lights on a square grid over [-2.25, 2.25]^2, of intensities 1 / n (1 + k mod 7)^2: a
+ * spread of 49:1, the total that of 100 lights of 0.01 to 0.49 whatever n. */
+static Scene *many_lights(int n)
 {
     Scene *s = floor_scene();
-    for (int k = 0; k < 100; k++) {
-        double i = 0.01 * (1 + k % 7) * (1 + k % 7);
+    int side = (int)ceil(sqrt((double)n));
+    for (int k = 0; k < n; k++) {
+        double i = (1 + k % 7) * (1 + k % 7) / (double)n;
         Light *l = add_light(s, LIGHT_POINT, i);
-        l->position = gvec3(-2.25 + 0.5 * (k % 10), 0.6 + 0.1 * (k % 3), -2.25 + 0.5 * (k / 10));
+        l->position = gvec3(-2.25 + 4.5 * (k % side) / (side - 1), 0.6 + 0.1 * (k % 3),
+                            -2.25 + 4.5 * (k / side) / (side - 1));
     }
     return s;
 }
+
+/* The point lights of test_many_lights, which next-event estimation chooses among. */
+#define MANY (LIGHT_PICK_EVERY_MAX + 44)
 
 static void test_table(void **state)
 {
@@ -136,14 +142,15 @@ static void test_table(void **state)
     scene_destroy(s);
 }
 
-static void test_hundred_lights(void **state)
+static void test_many_lights(void **state)
 {
     (void)state;
-    Scene *s = hundred_lights();
+    Scene *s = many_lights(MANY); /* more than LIGHT_PICK_EVERY_MAX: one light a vertex */
+    assert_true(MANY > LIGHT_PICK_EVERY_MAX);
     Framebuffer whitted, path, path1;
     render_by(s, RENDER_WHITTED, 1, 2, 0, 0, &whitted);
     render_by(s, RENDER_PATH, SANITIZED ? 64 : 256, 2, 0, 0, &path);
-    agree("100 point lights, path", &path, &whitted, SANITIZED ? 0.02 : 0.01, SANITIZED ? 0.04 : 0.02);
+    agree("many point lights, path", &path, &whitted, SANITIZED ? 0.02 : 0.01, SANITIZED ? 0.04 : 0.02);
     render_by(s, RENDER_PATH, SANITIZED ? 64 : 256, 1, 0, 0, &path1); /* the choice does not depend on threads */
     int off = 0;
     assert_true(largest_difference(&path, &path1, &off) == 0.0);
@@ -152,9 +159,9 @@ static void test_hundred_lights(void **state)
     if (!SANITIZED) { /* the particle integrators' emission by the same table */
         Framebuffer sppm, light;
         render_by(s, RENDER_SPPM, 1, 2, 256, 1000, &sppm);
-        agree("100 point lights, sppm", &sppm, &whitted, 0.025, 0.05); /* one light a pass: noisier */
+        agree("many point lights, sppm", &sppm, &whitted, 0.025, 0.05); /* one light a pass: noisier */
         render_by(s, RENDER_LIGHT, 1, 2, 16, 20000, &light);
-        agree("100 point lights, light tracing", &light, &whitted, 0.02, 0.04);
+        agree("many point lights, light tracing", &light, &whitted, 0.02, 0.04);
         framebuffer_free(&sppm);
         framebuffer_free(&light);
     }
@@ -222,7 +229,7 @@ int main(void)
         return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_table),
-        cmocka_unit_test(test_hundred_lights),
+        cmocka_unit_test(test_many_lights),
         cmocka_unit_test(test_emissive_and_lights),
         cmocka_unit_test(test_emissive_and_many_lights),
     };

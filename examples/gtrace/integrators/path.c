@@ -12,12 +12,14 @@
  * of a Cornell box has brightness 0.18 and red 0.63) carry large weights; measured on the Cornell box at equal spp:
  * 3% more time, 0.56 of the variance over the image and 0.42 on the walls and floor).
  *
- * Lights. NEE takes one light source a vertex, chosen by power from the scene's table (lights/light_pick.h: the
- * lights that send light and the glowing geometry as one entry, an alias table: constant time whatever their number),
- * and divides its estimate by the probability of the choice; the density a light's MIS weight uses, on either side, is
- * its sampling density times that probability. A delta light, which material sampling never meets, is then chosen again
- * among the delta lights by its unshadowed light at the vertex (delta_choice: among all of them when they are few, else
- * by resampled importance sampling of a few candidates drawn by power): one shadow ray still, the choice weighted by
+ * Lights. When the scene's light table (lights/light_pick.h: the lights that send light and the glowing geometry as
+ * one entry) holds at most LIGHT_PICK_EVERY_MAX entries, NEE takes one sample of every light source at each vertex
+ * (direct_light_every; `make bench-lights` measured it ahead of one chosen light in time to equal RMSE up to that
+ * count). With more, NEE takes one light source a vertex, chosen by power from the table (an alias table: constant
+ * time whatever their number), and divides its estimate by the probability of the choice; the density a light's MIS
+ * weight uses, on either side, is its sampling density times that probability (1 when every light is sampled). A
+ * delta light, which material sampling never meets, is then chosen again among the delta lights by its unshadowed
+ * light at the vertex (delta_choice: among all of them when they are few, else by resampled importance sampling of a few candidates drawn by power): one shadow ray still, the choice weighted by
  * what each light gives there. Point, spot, directional and IES lights, including the directional lights a probe
  * technique (mediancut, adaptive, kmeans, irradiance, variance) makes, are delta lights: NEE only, through lights.c's
  * light_shade (the same shadow rule as the Whitted tracer: transmission through non-opaque surfaces along the straight
@@ -379,9 +381,9 @@ done:
 
 /* Adds to out the direct light at sp, the vertex at `depth`, reflected towards to_viewer (NEE, when the table holds
  * many entries): one light source chosen by power from the scene's table (lights/light_pick.h), its estimate divided
- * by the probability of the choice. The choice takes the vertex's pick dimension (none when the table has one entry), a sphere or rectangle
- * light or the glowing geometry its point dimensions, the glowing geometry's primitive what is left of the pick's
- * number; a delta light draws nothing, a probe the generator's numbers. */
+ * by the probability of the choice. The choice takes the vertex's pick dimension (none when the table has one entry),
+ * a sphere or rectangle light or the glowing geometry its point dimensions, the glowing geometry's primitive what is
+ * left of the pick's number; a delta light draws nothing, a probe the generator's numbers. */
 static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 to_viewer, int opaque,
                         const GColor *ri, int depth, GColor *out)
 {
