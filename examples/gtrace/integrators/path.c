@@ -1,7 +1,7 @@
 /* path.c - unidirectional path tracing on the generic interfaces (`gtrace --integrator path`).
  *
  * Radiance is computed recursively, one path per camera sample. At every surface: the material's emission;
- * next-event estimation (NEE) to one light unless every lobe of the material is a delta one; then one
+ * next-event estimation (NEE) to every light (one when many) unless every lobe of the material is a delta one; then one
  * direction drawn by gmaterial_sample, the radiance arriving along it traced recursively, divided by the
  * sample's pdf (and the Russian-roulette probability), and passed on through gmaterial_reflection (or
  * gmaterial_refraction for a GSAMPLE_TRANSMIT sample). The sample's weight colour is never multiplied in: the

@@ -11,8 +11,8 @@
 
 /** The most entries a table may hold for next-event estimation to take a sample of every light source at each vertex
  * rather than one chosen by power (light_pick_nee_every). Measured by `make bench-lights` (point lights over a floor,
- * time to equal RMSE, one thread): sampling every light reaches it in 0.4 to 0.6 of the time of one chosen light up to
- * 100 lights, 0.9 at 200, the same at 300, and 4 times the time at 1000. */
+ * time to equal RMSE, one thread): sampling every light reaches it in 0.1 to 0.7 of the time of one chosen light from 2
+ * to 150 lights, 0.9 at 200, the same at 300, and 4.2 times the time at 1000. */
 #ifndef LIGHT_PICK_EVERY_MAX /* a build may set another, e.g. to measure either estimator on any scene */
 #define LIGHT_PICK_EVERY_MAX 256
 #endif
