@@ -230,10 +230,10 @@ static void test_choice_by_power(void **state)
     assert_int_equal(gcolor_scratch(&L, s->model, c.scratch), G_OK);
     int n = 4000, right = 0;
     for (int i = 0; i < n; i++) {
-        GVec3 in;
+        GVec3 in, normal;
         double dist, pdf;
         double u0 = (i + 0.5) / n, u1 = 0.5, u2 = 0.5;
-        assert_int_equal(emissive_sample(&c, e, gvec3(0, 0, 0), u0, u1, u2, &in, &dist, &pdf, &L), 1);
+        assert_int_equal(emissive_sample(&c, e, gvec3(0, 0, 0), u0, u1, u2, &in, &dist, &normal, &pdf, &L), 1);
         right += in.x > 0.0;
         /* the density of the same direction asked as a hit equals the one drawn */
         Hit h = {0};

@@ -58,10 +58,13 @@ bench-path: $(BUILD)/bin/gtrace $(BUILD)/bin/gprobe
 .PHONY: bench-emissive
 bench-emissive: $(BUILD)/bin/gtrace
 	@bench/emissive.sh $(BUILD)
+.PHONY: bench-lights
+bench-lights: $(BUILD)/bin/gtrace
+	@bench/lights.sh $(BUILD)
 .PHONY: bench-caustics
 bench-caustics: $(BUILD)/bin/gtrace $(BUILD)/bin/gprobe
 	@bench/caustics.sh $(BUILD)
-bench: bench-pov bench-dispersion bench-path bench-mpi bench-emissive bench-caustics
+bench: bench-pov bench-dispersion bench-path bench-mpi bench-emissive bench-caustics bench-lights
 .PHONY: bench-scale
 bench-scale: $(BUILD)/bin/gtrace $(BUILD)/bench/runstat
 	@bench/scale.sh $(BUILD)

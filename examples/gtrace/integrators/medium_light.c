@@ -1,12 +1,16 @@
-/* medium_light.c - next-event estimation at a scattering event in a medium (the path tracer's medium vertices): each
- * light's sample is weighted by the phase function instead of a material's reflection and carried to the point
- * by light_transmit (lights.c), which applies the media and the absorbing materials along the shadow ray. Sphere and
- * rectangle lights and glowing geometry, which the phase-sampled ray also reaches, follow the path tracer's rule:
- * any surface blocks their shadow ray, and the sample is weighted by the power heuristic against the phase
- * function's density (path.c weighs the light that phase sampling meets against theirs). */
+/* medium_light.c - next-event estimation at a scattering event in a medium (the path tracer's medium vertices): a
+ * sample of every light when the scene has few, else of one chosen by power (light_pick.h) divided by the choice's
+ * probability, is weighted by the phase function instead of a material's reflection and carried to the point by
+ * light_transmit (lights.c), which applies the media and the absorbing materials along the shadow ray. Sphere and
+ * rectangle lights and glowing geometry, which the phase-sampled ray also reaches, follow the path tracer's rule: any
+ * surface blocks their shadow ray, and the sample is weighted by the power heuristic against the phase function's
+ * density (path.c weighs the light that phase sampling meets against theirs). Point, spot and IES lights in a
+ * homogeneous medium are also sampled by equiangular sampling along the ray (medium_equiangular_light), the two
+ * weighted by the balance heuristic. */
 #include "medium_light.h"
 #include "path.h"
 #include "lights/emissive.h"
+#include "lights/light_pick.h"
 #include "lights/lighting.h"
 #include "scene/accel.h"
 #include "scene/ies.h"
@@ -61,62 +65,94 @@ static double free_flight_weight(const Medium *vol, const MediumWay *way, GVec3 
     return pd + pe > 0.0 ? pd / (pd + pe) : 1.0;
 }
 
+/* Adds to out the sample of light l (not the glowing geometry) at x, divided by pick, the probability of its choice;
+ * a point-like light's weighted against its equiangular sample on way (NULL: counted fully). */
+static int light_sample(TraceCtx *c, const Medium *vol, const Media *media, GVec3 x, GVec3 d, const MediumWay *way,
+                        const Light *l, double pick, GColor *L, GColor *out)
+{
+    GVec3 in;
+    double dist, pdf, f = 1.0;
+    int rc = G_OK;
+    switch (l->kind) {
+    case LIGHT_POINT:
+    case LIGHT_SPOT:
+    case LIGHT_IES: {
+        GVec3 to = gvec3_sub(l->position, x);
+        dist = gvec3_length(to);
+        if (!(dist > 0.0))
+            break;
+        in = gvec3_scale(to, 1.0 / dist);
+        if (l->kind == LIGHT_SPOT)
+            f = light_spot_factor(l, in);
+        else if (l->kind == LIGHT_IES)
+            f = ies_candela_dir(l->ies, gvec3_neg(in), l->direction, l->along, l->third);
+        if (f > 0.0)
+            f *= free_flight_weight(vol, way, l->position);
+        if (f > 0.0)
+            rc = add_sample(c, vol, media, x, d, in, dist, &l->color, f / (dist * dist * pick), 0, out);
+        break;
+    }
+    case LIGHT_DIRECTIONAL:
+        rc = add_sample(c, vol, media, x, d, gvec3_neg(l->direction), INFINITY, &l->color, 1.0 / pick, 0, out);
+        break;
+    case LIGHT_SPHERE:
+    case LIGHT_RECT: {
+        int got = path_light_sample(c, l, x, &in, &dist, &pdf, L);
+        if (got < 0)
+            rc = got;
+        else if (got && pdf > 0.0)
+            rc = add_sample(c, vol, media, x, d, in, dist, L,
+                            mis_power(pdf * pick, phase_eval(vol->phase, d, in)) / (pdf * pick), 1, out);
+        break;
+    }
+    default: /* a probe: phase sampling reaches it (path.c counts it fully after a medium vertex) */
+        break;
+    }
+    return rc;
+}
+
+/* Adds to out the sample of the glowing geometry e at x from the numbers u0 (the primitive), u1, u2 (the point),
+ * divided by pick, the probability of its choice. */
+static int emissive_light_sample(TraceCtx *c, const Medium *vol, const Media *media, GVec3 x, GVec3 d,
+                                 const EmissiveSet *e, double u0, double u1, double u2, double pick, GColor *L,
+                                 GColor *out)
+{
+    GVec3 in, normal;
+    double dist, pdf;
+    int got = emissive_sample(c, e, x, u0, u1, u2, &in, &dist, &normal, &pdf, L);
+    if (got < 0)
+        return got;
+    if (!got || !(pdf > 0.0))
+        return G_OK;
+    return add_sample(c, vol, media, x, d, in, emissive_shadow_reach(x, in, in, dist, normal), L,
+                      mis_power(pdf * pick, phase_eval(vol->phase, d, in)) / (pdf * pick), 1, out);
+}
+
 int medium_direct_light(TraceCtx *c, const Medium *vol, const Media *media, GVec3 x, GVec3 d, const MediumWay *way,
                         GColor *out)
 {
     const Scene *s = c->scene;
+    const LightPick *lp = c->pick;
     GScratchMark mark = gscratch_mark(c->scratch);
     GColor L;
     int rc = gcolor_scratch_uncleared(&L, s->model, c->scratch); /* written by each sample drawn */
-    for (int i = 0; i < s->nlights && rc == G_OK; i++) {
-        const Light *l = s->lights[i];
-        GVec3 in;
-        double dist, pdf, f = 1.0;
-        switch (l->kind) {
-        case LIGHT_POINT:
-        case LIGHT_SPOT:
-        case LIGHT_IES: {
-            GVec3 to = gvec3_sub(l->position, x);
-            dist = gvec3_length(to);
-            if (!(dist > 0.0))
-                break;
-            in = gvec3_scale(to, 1.0 / dist);
-            if (l->kind == LIGHT_SPOT)
-                f = light_spot_factor(l, in);
-            else if (l->kind == LIGHT_IES)
-                f = ies_candela_dir(l->ies, gvec3_neg(in), l->direction, l->along, l->third);
-            if (f > 0.0)
-                f *= free_flight_weight(vol, way, l->position);
-            if (f > 0.0)
-                rc = add_sample(c, vol, media, x, d, in, dist, &l->color, f / (dist * dist), 0, out);
-            break;
+    if (light_pick_nee_every(lp)) { /* few lights: one sample of each, then of the glowing geometry */
+        for (int i = 0; i < s->nlights && rc == G_OK; i++)
+            rc = light_sample(c, vol, media, x, d, way, s->lights[i], 1.0, &L, out);
+        if (rc == G_OK && c->emissive) {
+            double u0 = rng_next(&c->rng), u1 = rng_next(&c->rng), u2 = rng_next(&c->rng);
+            rc = emissive_light_sample(c, vol, media, x, d, c->emissive, u0, u1, u2, 1.0, &L, out);
         }
-        case LIGHT_DIRECTIONAL:
-            rc = add_sample(c, vol, media, x, d, gvec3_neg(l->direction), INFINITY, &l->color, 1.0, 0, out);
-            break;
-        case LIGHT_SPHERE:
-        case LIGHT_RECT: {
-            int got = path_light_sample(c, l, x, &in, &dist, &pdf, &L);
-            if (got < 0)
-                rc = got;
-            else if (got && pdf > 0.0)
-                rc = add_sample(c, vol, media, x, d, in, dist, &L,
-                                mis_power(pdf, phase_eval(vol->phase, d, in)) / pdf, 1, out);
-            break;
+    } else if (rc == G_OK) { /* one light chosen by power */
+        double pick, u_rest = 0.5;
+        int k = lp->n == 1 && lp->lights[0] ? light_pick_sample(lp, 0.5, &pick, NULL) /* no number for one light */
+                                            : light_pick_sample(lp, rng_next(&c->rng), &pick, &u_rest);
+        if (k >= 0 && pick > 0.0 && !lp->lights[k]) {
+            double u1 = rng_next(&c->rng), u2 = rng_next(&c->rng);
+            rc = emissive_light_sample(c, vol, media, x, d, lp->emissive, u_rest, u1, u2, pick, &L, out);
+        } else if (k >= 0 && pick > 0.0) {
+            rc = light_sample(c, vol, media, x, d, way, lp->lights[k], pick, &L, out);
         }
-        default: /* a probe: phase sampling reaches it (path.c counts it fully after a medium vertex) */
-            break;
-        }
-    }
-    if (rc == G_OK && c->emissive) {
-        GVec3 in;
-        double dist, pdf, u0 = rng_next(&c->rng), u1 = rng_next(&c->rng), u2 = rng_next(&c->rng);
-        int got = emissive_sample(c, c->emissive, x, u0, u1, u2, &in, &dist, &pdf, &L);
-        if (got < 0)
-            rc = got;
-        else if (got && pdf > 0.0)
-            rc = add_sample(c, vol, media, x, d, in, dist * EMISSIVE_SHADOW_SHORTEN, &L,
-                            mis_power(pdf, phase_eval(vol->phase, d, in)) / pdf, 1, out);
     }
     gscratch_release(c->scratch, mark);
     return rc;

@@ -15,12 +15,14 @@ typedef struct MediumWay {
     double tmax, t;
 } MediumWay;
 
-/** Adds to out the light of every light source scattered at x (in the medium vol, which media describes) from the
- * ray direction d towards -d: one sample per light, through light_transmit (absorption and media
- * along the way; a sphere or rectangle light, which phase sampling also reaches, blocked by any surface and weighted
- * by the power heuristic against the phase function's density); glowing geometry likewise, one sample. A light probe
- * is not sampled here (phase sampling reaches it). way: x is the free-flight event on it, and point-like lights are
- * weighted against their equiangular samples (NULL: they count fully). */
+/** Adds to out the light scattered at x (in the medium vol, which media describes) from the ray direction d towards
+ * -d: when c->pick (not NULL; light_pick.h) holds few entries (light_pick_nee_every) one sample of every light source
+ * of the scene and one of the glowing geometry; else one light source chosen by power from it with c->rng (no number
+ * when it has one entry), one sample of it divided by the probability of the choice; each through light_transmit
+ * (absorption and media along the way; a sphere or rectangle light or the glowing geometry, which phase sampling also
+ * reaches, blocked by any surface and weighted by the power heuristic against the phase function's density, theirs
+ * including the choice). A light probe chosen adds nothing (phase sampling reaches it). way: x is the free-flight
+ * event on it, and point-like lights are weighted against their equiangular samples (NULL: they count fully). */
 int medium_direct_light(TraceCtx *c, const Medium *vol, const Media *media, GVec3 x, GVec3 d, const MediumWay *way,
                         GColor *out);
 

@@ -1,7 +1,7 @@
 /* path.c - unidirectional path tracing on the generic interfaces (`gtrace --integrator path`).
  *
  * Radiance is computed recursively, one path per camera sample. At every surface: the material's emission;
- * next-event estimation (NEE) to every light unless every lobe of the material is a delta one; then one
+ * next-event estimation (NEE) to every light (one when many) unless every lobe of the material is a delta one; then one
  * direction drawn by gmaterial_sample, the radiance arriving along it traced recursively, divided by the
  * sample's pdf (and the Russian-roulette probability), and passed on through gmaterial_reflection (or
  * gmaterial_refraction for a GSAMPLE_TRANSMIT sample). The sample's weight colour is never multiplied in: the
@@ -12,22 +12,28 @@
  * of a Cornell box has brightness 0.18 and red 0.63) carry large weights; measured on the Cornell box at equal spp:
  * 3% more time, 0.56 of the variance over the image and 0.42 on the walls and floor).
  *
- * Lights. Point, spot, directional and IES lights, including the directional lights a probe technique (mediancut,
- * adaptive, kmeans, irradiance, variance) makes, are delta lights: NEE only, through lights.c's light_shade
- * (the same shadow rule as the Whitted tracer: transmission through non-opaque surfaces along the straight
- * line). Sphere and rectangle lights and a `light probe` of technique reference (the environment, importance
- * sampled by probe_sample.c's probe_light_nee, the Whitted tracer's reference estimator with one direction)
- * can also be reached by material sampling, so both estimates are combined by multiple importance sampling
- * with the power heuristic (a sphere light is sampled uniformly in the solid angle it subtends, a rectangle light
- * uniformly by area; area_light_hit gives the same density. Sampling rectangles by solid angle, as spherical
- * rectangles, was measured on the Cornell box: 35% more time for 2% less RMSE); their shadow rays are blocked by
- * any surface (light through glass reaches them by material sampling, a caustic, so counting the straight
- * transmission too would count it twice).
- * Material sampling sees sphere and rectangle lights (one-sided) when they are nearer than the surface hit; a path
- * after a delta bounce counts them fully. One light sample per light and vertex: the lights' `samples` apply
- * to the Whitted tracer; a reference probe's `shadows off` does not apply. At a Lambertian material
- * (GMAT_LAMBERTIAN) the samples' light, each with its MIS weight in it, is gathered and reflected once (lights.c's
- * light_gather), as in the Whitted tracer.
+ * Lights. When the scene's light table (lights/light_pick.h: the lights that send light and the glowing geometry as
+ * one entry) holds at most LIGHT_PICK_EVERY_MAX entries, NEE takes one sample of every light source at each vertex
+ * (direct_light_every; `make bench-lights` measured it ahead of one chosen light in time to equal RMSE up to that
+ * count). With more, NEE takes one light source a vertex, chosen by power from the table (an alias table: constant
+ * time whatever their number), and divides its estimate by the probability of the choice; the density a light's MIS
+ * weight uses, on either side, is its sampling density times that probability (1 when every light is sampled). A
+ * delta light, which material sampling never meets, is then chosen again among the delta lights by its unshadowed
+ * light at the vertex (delta_choice: among all of them when they are few, else by resampled importance sampling of a few candidates drawn by power): one shadow ray still, the choice weighted by
+ * what each light gives there. Point, spot, directional and IES lights, including the directional lights a probe
+ * technique (mediancut, adaptive, kmeans, irradiance, variance) makes, are delta lights: NEE only, through lights.c's
+ * light_shade (the same shadow rule as the Whitted tracer: transmission through non-opaque surfaces along the straight
+ * line). Sphere and rectangle lights and a `light probe` of technique reference (the environment, importance sampled by
+ * probe_sample.c's probe_light_nee, the Whitted tracer's reference estimator with one direction) can also be reached by
+ * material sampling, so both estimates are combined by multiple importance sampling with the power heuristic (a sphere
+ * light is sampled uniformly in the solid angle it subtends, a rectangle light uniformly by area; area_light_hit gives
+ * the same density. Sampling rectangles by solid angle, as spherical rectangles, was measured on the Cornell box: 35%
+ * more time for 2% less RMSE); their shadow rays are blocked by any surface (light through glass reaches them by
+ * material sampling, a caustic, so counting the straight transmission too would count it twice). Material sampling sees
+ * sphere and rectangle lights (one-sided) when they are nearer than the surface hit; a path after a delta bounce counts
+ * them fully. One light sample a vertex: the lights' `samples` apply to the Whitted tracer; a reference probe's
+ * `shadows off` does not apply. At a Lambertian material (GMAT_LAMBERTIAN) the samples' light, each with its MIS weight
+ * in it, is gathered and reflected once (lights.c's light_gather), as in the Whitted tracer.
  *
  * The environment. Camera rays and rays after a delta bounce see the background (the background colour, or
  * the background probe interpolated bilinearly). After a non-delta bounce the background probe is a light:
@@ -40,8 +46,8 @@
  * albedo a so shows a * ambient, as in the Whitted tracer (material.ambient of Lambert), but occluded and
  * interreflected.
  *
- * Glowing geometry (lights/emissive.h): the emissive primitives are one more light, one NEE sample per vertex from
- * the alias table, MIS-weighted; a material-sampled ray that meets one weighs its emission against the set's
+ * Glowing geometry (lights/emissive.h): the emissive primitives are one more entry of the table, with their own alias
+ * table by power, MIS-weighted; a material-sampled ray that meets one weighs its emission against the set's
  * density for that direction (path_radiance hands shade_path the weight), other emission counts fully.
  *
  * Dispersion (hero band): when the relative index at a non-opaque surface differs between the wavelength
@@ -60,23 +66,25 @@
  * The shadow rays of every vertex are attenuated by the media they cross (TraceCtx.volumes).
  *
  * Random numbers: with the default sampler (trace/sampler.h, SAMPLER_SOBOL) the numbers that decide most of the
- * variance, each vertex's light sample (the first sphere or rectangle light, else the glowing geometry's pick and
- * point), its material sample, its wavelength group and its roulette, are dimensions of the camera sample's point in
- * the pixel's shuffled, Owen-scrambled Sobol sequence (two groups of four a vertex, after the camera's group: see
- * SLOT_ below). The others (further lights, the probe's NEE, media) and, with SAMPLER_INDEPENDENT, all of them come
- * from the thread's PCG32 generator (TraceCtx.rng, which lights.c and probe_sample.c draw from too), re-seeded for
- * each path from the pixel's index and the sample's index and restored afterwards. Either way a number depends on
- * the pixel, the sample and its use only, so the image does not depend on the thread count, crops or tile order.
- * Colours only through gcolor_*, materials only through gmaterial_*; temporaries live on the thread's scratch arena
- * and are released at every level: no allocation per ray. */
+ * variance, each vertex's light sample (the choice of the light, the point on a sphere or rectangle light or on the
+ * glowing geometry, whose primitive takes what is left of the choice's number), its material sample, its wavelength
+ * group and its roulette, are dimensions of the camera sample's point in the pixel's shuffled, Owen-scrambled Sobol
+ * sequence (two groups of four a vertex, after the camera's group: see SLOT_ below). The others (the probe's NEE,
+ * media) and, with SAMPLER_INDEPENDENT, all of them come from the thread's PCG32 generator (TraceCtx.rng, which
+ * lights.c and probe_sample.c draw from too), re-seeded for each path from the pixel's index and the sample's index and
+ * restored afterwards. Either way a number depends on the pixel, the sample and its use only, so the image does not
+ * depend on the thread count, crops or tile order. Colours only through gcolor_*, materials only through gmaterial_*;
+ * temporaries live on the thread's scratch arena and are released at every level: no allocation per ray. */
 #include "path.h"
 #include "bands.h"
 #include "scene/accel.h"
 #include "lights/emissive.h"
+#include "lights/light_pick.h"
 #include "lights/lighting.h"
 #include "lights/probe_env.h"
 #include "medium_light.h"
 #include "media/medium.h"
+#include "scene/ies.h"
 #include "trace/sampler.h"
 
 #include <math.h>
@@ -84,6 +92,7 @@
 typedef struct PathCtx {
     TraceCtx *c;
     const Light *env_light; /**< the reference probe light that samples the background probe (NULL: none) */
+    double env_pick;        /**< the probability that next-event estimation chooses env_light */
     int env_in_lights;      /**< the background probe's light is carried by its technique's directional lights */
     int scattered;          /**< the current path has had a non-delta bounce (it sees the ambient light) */
     int from_medium;        /**< set for the ray a medium vertex traces next (read and cleared by path_radiance):
@@ -98,10 +107,10 @@ typedef struct PathCtx {
  * position and the lens). The pairs that matter most lie in a group's first two dimensions, whose points are
  * stratified in 2D (a (0,m,2)-net); picks and Russian roulette take the others. */
 enum {
-    SLOT_LIGHT_U,    /**< the light sample's point on the light (the first area light or glowing primitive) */
+    SLOT_LIGHT_U,    /**< the light sample's point on the light (an area light or glowing primitive) */
     SLOT_LIGHT_V,
-    SLOT_LIGHT_PICK, /**< the glowing primitive chosen by power */
-    SLOT_SPARE,
+    SLOT_LIGHT_PICK, /**< the light chosen by power (light_pick.h), then the glowing primitive */
+    SLOT_DELTA_PICK, /**< the delta light kept among the candidates (delta_choice) */
     SLOT_BSDF_U, /**< the material's sampled direction */
     SLOT_BSDF_V,
     SLOT_ROULETTE, /**< drawn after the material's sample: the same group (PathCtx.group keeps one) */
@@ -231,11 +240,76 @@ int path_light_sample_at(const Light *l, GVec3 x, double u1, double u2, GVec3 *i
     return 0;
 }
 
+/* Candidates a vertex weighs when NEE has chosen a delta light among more (see delta_choice). */
+#define NEE_DELTA_CANDIDATES 8
+
+/* The guide to delta light entry k's light at x (facing: the surface's side; opaque: its back gets none) that
+ * delta_choice draws by: the brightness of its colour times its intensity towards x over the squared distance (a
+ * directional light's irradiance) times the cosine on an opaque surface; no shadows. 0 exactly where light_shade
+ * adds nothing for want of light or by the cosine. */
+static double delta_guide(const LightPick *lp, int k, GVec3 x, GVec3 facing, int opaque)
+{
+    const Light *l = lp->lights[k];
+    GVec3 in;
+    double g = lp->bright[k];
+    if (l->kind == LIGHT_DIRECTIONAL) {
+        in = gvec3_neg(l->direction);
+    } else {
+        GVec3 to = gvec3_sub(l->position, x);
+        double d2 = gvec3_dot(to, to);
+        if (!(d2 > 0.0))
+            return 0.0;
+        in = gvec3_scale(to, 1.0 / sqrt(d2));
+        g /= d2;
+        if (l->kind == LIGHT_SPOT)
+            g *= light_spot_factor(l, in);
+        else if (l->kind == LIGHT_IES)
+            g *= ies_candela_dir(l->ies, gvec3_neg(in), l->direction, l->along, l->third);
+    }
+    if (opaque)
+        g *= fmax(0.0, gvec3_dot(in, facing));
+    return g > 0.0 && isfinite(g) ? g : 0.0;
+}
+
+/* Once the table has chosen a delta light (entry k0, with the delta lights' share lp->delta_prob), the one to shade:
+ * with at most NEE_DELTA_CANDIDATES delta lights, one of them all drawn by its delta_guide at x; with more, resampled
+ * importance sampling (Talbot, Cline and Egbert 2005): k0 and NEE_DELTA_CANDIDATES - 1 more drawn by power from the
+ * delta lights' table (the generator's numbers), one of them kept by guide over power. u makes the last choice. The
+ * entry kept, and into *pick the factor its light is divided by (the delta lights' share times the kept one's
+ * density, or for the resampled choice its guide times the count over the sum of the candidates' guide over power);
+ * -1 when every guide is 0 (no delta light reaches x). */
+static int delta_choice(PathCtx *p, const LightPick *lp, int k0, GVec3 x, GVec3 facing, int opaque, double u,
+                        double *pick)
+{
+    int cand[NEE_DELTA_CANDIDATES], m = lp->ndelta <= NEE_DELTA_CANDIDATES ? lp->ndelta : NEE_DELTA_CANDIDATES;
+    int every = lp->ndelta <= NEE_DELTA_CANDIDATES;
+    double w[NEE_DELTA_CANDIDATES], g[NEE_DELTA_CANDIDATES], sum = 0.0;
+    for (int i = 0; i < m; i++) {
+        cand[i] = every ? lp->delta[i] : i == 0 ? k0 : light_pick_delta(lp, uniform(p));
+        g[i] = delta_guide(lp, cand[i], x, facing, opaque);
+        w[i] = every ? g[i] : g[i] * lp->delta_prob / lp->prob[cand[i]];
+        sum += w[i];
+    }
+    if (!(sum > 0.0) || !isfinite(sum))
+        return -1;
+    double t = u * sum;
+    int i = 0;
+    while (i < m - 1 && (t >= w[i] || !(w[i] > 0.0))) {
+        t -= w[i];
+        i++;
+    }
+    if (!(w[i] > 0.0)) /* rounding ran past the last candidate that counts */
+        while (i > 0 && !(w[i] > 0.0))
+            i--;
+    *pick = every ? lp->delta_prob * g[i] / sum : lp->delta_prob * g[i] * m / sum;
+    return cand[i];
+}
+
 /* Adds to out the direct light at sp, the vertex at `depth`, from every light source, reflected towards to_viewer
- * (NEE). The first sphere or rectangle light (else the glowing geometry) takes the vertex's light dimensions, the
- * others the generator's numbers. */
-static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 to_viewer, int opaque,
-                        const GColor *ri, int depth, GColor *out)
+ * (NEE, when the table holds few entries: light_pick_nee_every). The first sphere or rectangle light (else the glowing
+ * geometry) takes the vertex's light dimensions, the others the generator's numbers. */
+static int direct_light_every(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 to_viewer,
+                              int opaque, const GColor *ri, int depth, GColor *out)
 {
     int slots_free = 1;
     TraceCtx *c = p->c;
@@ -257,7 +331,7 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
         }
         lt.blocked = 1; /* material sampling reaches these lights: light through glass is a caustic */
         if (l->kind == LIGHT_PROBE) { /* the reference's estimator with one direction (a basis: not used) */
-            CHECK(probe_light_nee(c, l, sp, facing, media, to_viewer, opaque, 1, l == p->env_light ? ri : NULL,
+            CHECK(probe_light_nee(c, l, sp, facing, media, to_viewer, opaque, 1, l == p->env_light ? ri : NULL, 1.0,
                                   &lt, out));
             continue;
         }
@@ -282,7 +356,7 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
             CHECK(sample_light(c, sp, facing, media, in, dist, &L, w / pdf_l, to_viewer, &lt, out));
     }
     if (c->emissive) { /* glowing geometry: one point of one primitive, chosen by power */
-        GVec3 in;
+        GVec3 in, normal;
         double dist, pdf_l, u0, u1, u2;
         int got;
         if (slots_free) {
@@ -295,15 +369,77 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
             u2 = uniform(p);
         }
         lt.blocked = 1;
-        CHECK(got = emissive_sample(c, c->emissive, sp->point, u0, u1, u2, &in, &dist, &pdf_l, &L));
+        CHECK(got = emissive_sample(c, c->emissive, sp->point, u0, u1, u2, &in, &dist, &normal, &pdf_l, &L));
         if (got && !(opaque && gvec3_dot(in, facing) <= 0.0)) {
             double w = mis_power(pdf_l, gmaterial_pdf(m, sp, in, to_viewer, ri));
             if (w > 0.0)
-                CHECK(sample_light(c, sp, facing, media, in, dist * EMISSIVE_SHADOW_SHORTEN, &L, w / pdf_l, to_viewer,
-                                   &lt, out));
+                CHECK(sample_light(c, sp, facing, media, in, emissive_shadow_reach(sp->point, facing, in, dist, normal),
+                                   &L, w / pdf_l, to_viewer, &lt, out));
         }
     }
     CHECK(light_gather_finish(sp, &lt, out));
+done:
+    gscratch_release(c->scratch, mark);
+    return rc;
+}
+
+/* Adds to out the direct light at sp, the vertex at `depth`, reflected towards to_viewer (NEE, when the table holds
+ * many entries): one light source chosen by power from the scene's table (lights/light_pick.h), its estimate divided
+ * by the probability of the choice. The choice takes the vertex's pick dimension (none when the table has one entry),
+ * a sphere or rectangle light or the glowing geometry its point dimensions, the glowing geometry's primitive what is
+ * left of the pick's number; a delta light draws nothing, a probe the generator's numbers. */
+static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 to_viewer, int opaque,
+                        const GColor *ri, int depth, GColor *out)
+{
+    TraceCtx *c = p->c;
+    const LightPick *lp = c->pick;
+    const Scene *s = c->scene;
+    const GMaterial *m = sp->material;
+    double pick, u_rest = 0.5, u = lp->n == 1 && lp->lights[0] ? 0.5 : vertex_uniform(p, depth, SLOT_LIGHT_PICK);
+    int k = light_pick_sample(lp, u, &pick, &u_rest);
+    if (k >= 0 && lp->ndelta > 1 && light_pick_is_delta(lp, k)) /* which delta light, by its light here */
+        k = delta_choice(p, lp, k, sp->point, facing, opaque, vertex_uniform(p, depth, SLOT_DELTA_PICK), &pick);
+    if (k < 0 || !(pick > 0.0))
+        return G_OK;
+    const Light *l = lp->lights[k];
+    GScratchMark mark = gscratch_mark(c->scratch);
+    LightTmp lt;
+    GColor L, acc, *sum = out; /* the chosen light's estimate, before the division by pick (out itself when 1) */
+    int rc = G_OK;
+    CHECK(light_temps(c, &lt));
+    CHECK(gcolor_scratch(&L, s->model, c->scratch));
+    if (pick != 1.0) {
+        CHECK(gcolor_scratch(&acc, s->model, c->scratch));
+        sum = &acc;
+    }
+    light_gather(sp, &lt); /* a Lambertian material: asked once, the MIS weight in the light */
+    if (l && (l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT || l->kind == LIGHT_DIRECTIONAL ||
+              l->kind == LIGHT_IES)) {
+        CHECK(light_shade(c, l, sp, facing, media, to_viewer, opaque, &lt, sum));
+    } else if (l && l->kind == LIGHT_PROBE) { /* the reference's estimator with one direction */
+        lt.blocked = 1; /* material sampling reaches it: light through glass is a caustic */
+        CHECK(probe_light_nee(c, l, sp, facing, media, to_viewer, opaque, 1, l == p->env_light ? ri : NULL, pick, &lt,
+                              sum));
+    } else { /* a sphere or rectangle light, or one point of one glowing primitive */
+        GVec3 in, normal;
+        double dist, pdf_l, u1 = vertex_uniform(p, depth, SLOT_LIGHT_U), u2 = vertex_uniform(p, depth, SLOT_LIGHT_V);
+        int got;
+        lt.blocked = 1;
+        if (l)
+            CHECK(got = path_light_sample_at(l, sp->point, u1, u2, &in, &dist, &pdf_l, &L));
+        else
+            CHECK(got = emissive_sample(c, lp->emissive, sp->point, u_rest, u1, u2, &in, &dist, &normal, &pdf_l, &L));
+        if (got && !(opaque && gvec3_dot(in, facing) <= 0.0)) {
+            double w = mis_power(pdf_l * pick, gmaterial_pdf(m, sp, in, to_viewer, ri));
+            if (!l) /* the shadow ray ends before the glowing surface (a sphere or rectangle light is no surface) */
+                dist = emissive_shadow_reach(sp->point, facing, in, dist, normal);
+            if (w > 0.0)
+                CHECK(sample_light(c, sp, facing, media, in, dist, &L, w / pdf_l, to_viewer, &lt, sum));
+        }
+    }
+    CHECK(light_gather_finish(sp, &lt, sum));
+    if (sum != out)
+        CHECK(gcolor_add_scaled(out, sum, 1.0 / pick));
 done:
     gscratch_release(c->scratch, mark);
     return rc;
@@ -355,7 +491,9 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
         }
     }
 
-    if (!delta && (s->nlights > 0 || c->emissive))
+    if (!delta && light_pick_nee_every(c->pick) && (s->nlights > 0 || c->emissive))
+        CHECK(direct_light_every(p, sp, facing, media, to_viewer, opaque, ri_use, depth, out));
+    else if (!delta && c->pick && c->pick->n > 0)
         CHECK(direct_light(p, sp, facing, media, to_viewer, opaque, ri_use, depth, out));
 
     if (depth < c->max_depth) {
@@ -437,9 +575,10 @@ static int escaped(PathCtx *p, const Ray *r, int first, double prev_pdf, int fro
         CHECK(gcolor_fill(out, 0.0));
     else {
         CHECK(probe_pixel_radiance(env, r->d, out));
-        if (p->env_light && !from_medium)
-            CHECK(gcolor_scale(out, out, mis_power(prev_pdf, probe_dist_pdf(&env->dist, env->probe,
-                                                                               probe_from_world(env, r->d)))));
+        if (p->env_light && !from_medium) {
+            double pdf_nee = p->env_pick * probe_dist_pdf(&env->dist, env->probe, probe_from_world(env, r->d));
+            CHECK(gcolor_scale(out, out, mis_power(prev_pdf, pdf_nee)));
+        }
     }
     if (p->scattered && s->have_ambient)
         CHECK(gcolor_add(out, out, &s->ambient));
@@ -457,7 +596,7 @@ static int medium_vertex(PathCtx *p, const Ray *r, const Media *media, const Med
     GColor illum;
     int rc = G_OK;
     CHECK(gcolor_fill(out, 0.0));
-    if (c->scene->nlights > 0 || c->emissive)
+    if (light_pick_nee_every(c->pick) ? c->scene->nlights > 0 || c->emissive : c->pick && c->pick->n > 0)
         CHECK(medium_direct_light(c, vol, media, x, r->d, way, out));
     if (depth >= c->max_depth)
         goto done;
@@ -530,14 +669,17 @@ static int path_radiance(PathCtx *p, const Ray *r, const Media *media, int depth
     Hit h;
     c->rays++;
     int hit = accel_intersect(s, r, &h);
-    /* the nearest area light in front of the surface */
+    /* the nearest area light in front of the surface, and the density with which NEE draws the direction to it */
+    const LightPick *lp = c->pick;
     const Light *lh = NULL;
     double t_l = hit ? h.t : INFINITY, pdf_l = 0.0;
-    for (int i = 0; i < s->nlights; i++) {
+    int nl = lp ? lp->narea : s->nlights;
+    for (int k = 0; k < nl; k++) {
+        int i = lp ? lp->area[k] : k;
         double pl = 0.0, t = area_light_hit(s->lights[i], r, t_l, &pl);
         if (t < t_l) {
             t_l = t;
-            pdf_l = pl;
+            pdf_l = pl * light_pick_nee_pmf(lp, i);
             lh = s->lights[i];
         }
     }
@@ -578,8 +720,9 @@ static int arrive(PathCtx *p, const Ray *r, const Media *media, int depth, doubl
         return escaped(p, r, first, prev_pdf, from_medium, out);
     /* glowing geometry that NEE also reaches: its emission weighed against that strategy */
     double emit_weight = 1.0;
-    if (c->emissive && !first && h.material && !(h.material->flags & GMAT_NO_EMISSION)) {
-        double pdf_e = emissive_pdf(c->emissive, &h, r->o, r->d, h.t);
+    const EmissiveSet *nee_set = light_pick_nee_every(c->pick) ? c->emissive : c->pick ? c->pick->emissive : NULL;
+    if (nee_set && !first && h.material && !(h.material->flags & GMAT_NO_EMISSION)) {
+        double pdf_e = light_pick_nee_emissive_pmf(c->pick) * emissive_pdf(nee_set, &h, r->o, r->d, h.t);
         if (pdf_e > 0.0)
             emit_weight = mis_power(prev_pdf, pdf_e);
     }
@@ -609,8 +752,10 @@ int path_trace(TraceCtx *c, const Ray *r, const Media *media, uint64_t pixel, in
     const ProbeEnv *env = s->env;
     for (int i = 0; env && i < s->nlights; i++) {
         const Light *l = s->lights[i];
-        if (l->kind == LIGHT_PROBE && l->env == env && env->dist.row_cdf)
+        if (l->kind == LIGHT_PROBE && l->env == env && env->dist.row_cdf) {
             p.env_light = l;
+            p.env_pick = light_pick_nee_pmf(c->pick, i);
+        }
     }
     p.env_in_lights = env && env->nlights > 0 && env->lights[0]->kind == LIGHT_DIRECTIONAL;
     for (int i = 0; s->has_media && i < s->nlights; i++) {

@@ -17,48 +17,22 @@
 int photon_source_init(PhotonSource *src, const Scene *s, const EmissiveSet *emissive, GError *err)
 {
     *src = (PhotonSource){0};
-    emit_bounds(s, &src->bounds);
-    src->lights = gmem_calloc((size_t)s->nlights + 1, sizeof *src->lights);
-    src->cdf = gmem_calloc((size_t)s->nlights + 2, sizeof *src->cdf);
-    if (!src->lights || !src->cdf) {
-        photon_source_free(src);
-        return gerror_set(err, G_ERR_NOMEM, "out of memory for the lights' table");
-    }
-    double total = 0.0;
-    for (int i = 0; i < s->nlights; i++) {
-        const Light *l = s->lights[i];
-        if (!emit_supported(l))
-            continue;
-        double w = emit_power(l, &src->bounds);
-        if (!(w > 0.0) || !isfinite(w))
-            continue;
-        src->lights[src->n] = l;
-        total += w;
-        src->cdf[++src->n] = total;
-    }
-    double we = emissive_power(emissive);
-    if (we > 0.0 && isfinite(we)) { /* the glowing geometry, after the lights */
-        src->emissive = emissive;
-        src->lights[src->n] = NULL;
-        total += we;
-        src->cdf[++src->n] = total;
-    }
-    if (src->n == 0) {
+    int rc = light_pick_build(&src->pick, s, emissive, err);
+    if (rc != G_OK)
+        return rc;
+    src->bounds = src->pick.bounds;
+    if (src->pick.n == 0) {
         photon_source_free(src);
         return gerror_set(err, G_ERR_INVALID, "the scene has no light that sends photons (point, spot, directional, "
                           "ies, sphere or rectangle light, probe of technique reference or glowing object of some "
                           "power): the particle integrators would render black");
     }
-    for (int i = 1; i <= src->n; i++)
-        src->cdf[i] /= total;
-    src->cdf[src->n] = 1.0;
     return G_OK;
 }
 
 void photon_source_free(PhotonSource *src)
 {
-    gmem_free(src->lights);
-    gmem_free(src->cdf);
+    light_pick_free(&src->pick);
     *src = (PhotonSource){0};
 }
 
@@ -117,17 +91,9 @@ int photon_trace(TraceCtx *c, const PhotonSource *src, const Media *media0, uint
     rng_seed(rng, mix64(index ^ 0x243f6a8885a308d3ULL), 0xda3e39cb94b95bdbULL);
     b->count[slot] = 0;
     /* the light, by power */
-    double u = rng_next(rng);
-    int lo = 0, hi = src->n - 1;
-    while (lo < hi) {
-        int mid = (lo + hi) / 2;
-        if (u < src->cdf[mid + 1])
-            hi = mid;
-        else
-            lo = mid + 1;
-    }
-    const Light *l = src->lights[lo];
-    double p_light = src->cdf[lo + 1] - src->cdf[lo];
+    double p_light;
+    int k = light_pick_sample(&src->pick, rng_next(rng), &p_light, NULL);
+    const Light *l = src->pick.lights[k];
     double ue[5] = {rng_next(rng), rng_next(rng), rng_next(rng), rng_next(rng), 0.0};
     if (!l)
         ue[4] = rng_next(rng);
@@ -144,7 +110,7 @@ int photon_trace(TraceCtx *c, const PhotonSource *src, const Media *media0, uint
     if (l)
         CHECK(emit_particle(l, &src->bounds, ue, &o, &d, &f, &tmp));
     else
-        CHECK(emissive_emit(c, src->emissive, ue, &o, &d, &tmp));
+        CHECK(emissive_emit(c, src->pick.emissive, ue, &o, &d, &tmp));
     if (!(f > 0.0) || !(p_light > 0.0) || !(gcolor_brightness(&tmp) > 0.0))
         goto done;
     CHECK(gcolor_scale(&power, &tmp, f / p_light));

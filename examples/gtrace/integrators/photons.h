@@ -6,6 +6,7 @@
 
 #include "lights/emissive.h"
 #include "lights/emit.h"
+#include "lights/light_pick.h"
 #include "trace/trace.h"
 
 #include <generic/color.h>
@@ -17,17 +18,16 @@
 /** Bounces after which Russian roulette may end a particle path. */
 #define PHOTON_RR_START 3
 
-/** The lights that send particles, with the probabilities of choosing each (proportional to its power). */
+/** The lights that send particles, with the probabilities of choosing each (proportional to its power): the scene's
+ * light table (light_pick.h), of at least one entry. */
 typedef struct PhotonSource {
-    const Light **lights; /**< NULL: the glowing geometry (emissive) */
-    double *cdf; /**< n + 1 entries, cdf[0] = 0, cdf[n] = 1 */
-    int n;
-    EmitBounds bounds;
-    const EmissiveSet *emissive; /**< the glowing geometry as one more source (NULL: none) */
+    LightPick pick;
+    EmitBounds bounds; /**< the scene's bounds (pick.bounds), which directional lights' and probes' particles cross */
 } PhotonSource;
 
-/** The emitting lights of s, and the glowing geometry of emissive (NULL: none) as one more; G_ERR_INVALID naming
- * the kinds that do emit when s has nothing that sends particles (or all of it is black), G_ERR_NOMEM. */
+/** The emitting lights of s, and the glowing geometry of emissive (NULL: none) as one more (light_pick_build);
+ * G_ERR_INVALID naming the kinds that do emit when s has nothing that sends particles (or all of it is black),
+ * G_ERR_NOMEM. */
 int photon_source_init(PhotonSource *src, const Scene *s, const EmissiveSet *emissive, GError *err);
 /** Frees the tables; a zeroed source is a no-op. */
 void photon_source_free(PhotonSource *src);

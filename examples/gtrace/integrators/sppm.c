@@ -4,15 +4,15 @@
  * A pass has two halves. The camera half: one ray through each pixel (its position in the pixel drawn from a
  * generator seeded by the pixel and the pass) followed through ideal surfaces (every lobe delta: mirrors, clear
  * glass, dispersing by one wavelength group as the path tracer does) with its weight beta, adding the emission and
- * the background it meets, to the first non-ideal surface: the pass's visible point, where the direct light of
- * every light source is estimated by light samples (lights.c's light_shade; shadow rays stop at any surface,
- * light through glass is left to the photons). The photon half: the pass's particle paths (photons.h, index pass *
- * photons + i) in batches of bounded size; each batch is put in a hashed grid whose cells are as wide as the
- * initial radius, and every visible point sums the particles within its radius, cell by cell and in slot order
- * (an order that neither the thread count nor the crop changes), through its material's reflection (for a
- * Lambertian material the particles' powers are summed and reflected once). Then each point's count N, radius r
- * and light tau are updated: N' = N + alpha M, r' = r sqrt(N' / (N + M)), tau' = (tau + Phi) r'^2 / r^2.
- * The pixel is its direct light averaged over the passes plus tau / (passes * photons * pi r^2).
+ * the background it meets, to the first non-ideal surface: the pass's visible point, where the direct light is
+ * estimated by light samples of one light source chosen by power (light_pick.h; lights.c's light_shade; shadow rays
+ * stop at any surface, light through glass is left to the photons). The photon half: the pass's particle paths
+ * (photons.h, index pass * photons + i) in batches of bounded size; each batch is put in a hashed grid whose cells are
+ * as wide as the initial radius, and every visible point sums the particles within its radius, cell by cell and in slot
+ * order (an order that neither the thread count nor the crop changes), through its material's reflection (for a
+ * Lambertian material the particles' powers are summed and reflected once). Then each point's count N, radius r and
+ * light tau are updated: N' = N + alpha M, r' = r sqrt(N' / (N + M)), tau' = (tau + Phi) r'^2 / r^2. The pixel is its
+ * direct light averaged over the passes plus tau / (passes * photons * pi r^2).
  *
  * Memory: four colours per pixel and one batch of particles, whatever the number of passes.
  *
@@ -24,6 +24,7 @@
 #include "path.h"
 #include "bands.h"
 #include "scene/accel.h"
+#include "lights/light_pick.h"
 #include "lights/lighting.h"
 #include "lights/probe_env.h"
 
@@ -100,26 +101,52 @@ static int add_weighted(GColor *direct, const GColor *beta, GColor *x)
     return rc < 0 ? rc : gcolor_add(direct, direct, x);
 }
 
-/* The direct light at sp towards to_viewer from every light (shadow rays stop at any surface) into out. */
+/* Adds to out the direct light at sp towards to_viewer (shadow rays stop at any surface): the lights that are no entry
+ * of the scene's table (a probe's basis term), each in full, and one entry chosen by power (light_pick.h) with the
+ * pass's generator (no number when the table has one entry), its estimate (lights.c's light_shade with the light's
+ * samples, the glowing geometry's emissive_shade) divided by the probability of the choice: over the passes, the
+ * sum of all. */
 static int direct_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 to_viewer, GColor *out)
 {
     const Scene *s = c->scene;
+    const LightPick *lp = c->pick;
     LightTmp lt;
     int rc = light_temps(c, &lt), opaque = gmaterial_opaque(sp->material, sp);
     if (rc < 0)
         return rc;
+    lt.blocked = 1;
     light_gather(sp, &lt);
     for (int i = 0; i < s->nlights && rc >= 0; i++) {
         const Light *l = s->lights[i];
-        lt.blocked = 1;
+        if (light_pick_pmf(lp, i) > 0.0)
+            continue;
         rc = l->kind == LIGHT_PROBE ? probe_light_shade(c, l, sp, facing, media, to_viewer, opaque, &lt, out)
                                     : light_shade(c, l, sp, facing, media, to_viewer, opaque, &lt, out);
     }
-    if (c->emissive && rc >= 0) { /* glowing geometry, as an area light */
-        lt.blocked = 1;
-        rc = emissive_shade(c, c->emissive, sp, facing, media, to_viewer, opaque, &lt, out);
-    }
-    return rc < 0 ? rc : light_gather_finish(sp, &lt, out);
+    if (rc >= 0)
+        rc = light_gather_finish(sp, &lt, out);
+    double pick;
+    int k = !lp || rc < 0                    ? -1
+            : lp->n == 1                    ? light_pick_sample(lp, 0.5, &pick, NULL)
+                                            : light_pick_sample(lp, rng_next(&c->rng), &pick, NULL);
+    if (k < 0 || !(pick > 0.0))
+        return rc;
+    const Light *l = lp->lights[k];
+    GScratchMark mark = gscratch_mark(c->scratch);
+    GColor acc, *sum = out; /* the chosen light's estimate, before the division by pick (out itself when 1) */
+    if (pick != 1.0 && (rc = gcolor_scratch(&acc, s->model, c->scratch)) == G_OK)
+        sum = &acc;
+    light_gather(sp, &lt);
+    if (rc >= 0)
+        rc = !l                       ? emissive_shade(c, lp->emissive, sp, facing, media, to_viewer, opaque, &lt, sum)
+             : l->kind == LIGHT_PROBE ? probe_light_shade(c, l, sp, facing, media, to_viewer, opaque, &lt, sum)
+                                      : light_shade(c, l, sp, facing, media, to_viewer, opaque, &lt, sum);
+    if (rc >= 0)
+        rc = light_gather_finish(sp, &lt, sum);
+    if (rc >= 0 && sum != out)
+        rc = gcolor_add_scaled(out, sum, 1.0 / pick);
+    gscratch_release(c->scratch, mark);
+    return rc;
 }
 
 /* The camera half of pass `pass` for pixel (x, y): vp's visible point, beta, and the light met on the way added to

@@ -10,6 +10,7 @@
  * material sampling path then counts its emission in full, as for the shapes left out (planes, boxes, cylinders,
  * spheres under a shear or an unequal scale, the parts of groups and instances). */
 #include "emissive.h"
+#include "alias_table.h"
 #include "lighting.h"
 
 #include <generic/material.h>
@@ -194,42 +195,6 @@ static int cmp_objs(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
-/* Vose's alias table over the probabilities e->prob. */
-static int build_alias(EmissiveSet *e)
-{
-    int n = e->n, *small = gmem_alloc(sizeof *small * (size_t)n), *large = gmem_alloc(sizeof *large * (size_t)n);
-    if (!small || !large) {
-        gmem_free(small);
-        gmem_free(large);
-        return G_ERR_NOMEM;
-    }
-    int ns = 0, nl = 0;
-    for (int i = 0; i < n; i++) {
-        e->q[i] = e->prob[i] * n;
-        e->alias[i] = i;
-        if (e->q[i] < 1.0)
-            small[ns++] = i;
-        else
-            large[nl++] = i;
-    }
-    while (ns > 0 && nl > 0) {
-        int s = small[--ns], l = large[--nl];
-        e->alias[s] = l;
-        e->q[l] -= 1.0 - e->q[s];
-        if (e->q[l] < 1.0)
-            small[ns++] = l;
-        else
-            large[nl++] = l;
-    }
-    while (nl > 0) /* rounding: what is left keeps its slot */
-        e->q[large[--nl]] = 1.0;
-    while (ns > 0)
-        e->q[small[--ns]] = 1.0;
-    gmem_free(small);
-    gmem_free(large);
-    return G_OK;
-}
-
 void emissive_free(EmissiveSet *e)
 {
     if (!e)
@@ -302,7 +267,7 @@ int emissive_build(const Scene *s, TraceCtx *c, EmissiveSet **out, GError *err)
         for (int i = 0; rc == G_OK && i < n; i++)
             e->prob[i] = power[i] / sum;
         if (rc == G_OK)
-            rc = build_alias(e);
+            rc = alias_table_build(e->prob, n, e->q, e->alias);
         qsort(e->objs, (size_t)e->nobjs, sizeof *e->objs, cmp_objs);
     }
     gmem_free(power);
@@ -375,14 +340,9 @@ double emissive_pdf(const EmissiveSet *e, const Hit *h, GVec3 x, GVec3 dir, doub
 }
 
 int emissive_sample(TraceCtx *c, const EmissiveSet *e, GVec3 x, double u0, double u1, double u2, GVec3 *in,
-                    double *dist, double *pdf, GColor *L)
+                    double *dist, GVec3 *normal, double *pdf, GColor *L)
 {
-    double f = u0 * e->n;
-    int i = (int)f;
-    if (i >= e->n)
-        i = e->n - 1;
-    if (f - i >= e->q[i])
-        i = e->alias[i];
+    int i = alias_table_pick(e->q, e->alias, e->n, u0, NULL);
     const EmissivePrim *p = &e->prims[i];
     double bu = 0.0, bv = 0.0;
     GVec3 y;
@@ -399,6 +359,7 @@ int emissive_sample(TraceCtx *c, const EmissiveSet *e, GVec3 x, double u0, doubl
         *in = gvec3_add(gvec3_scale(axis, ct), gvec3_add(gvec3_scale(t1, st * cos(ph)), gvec3_scale(t2, st * sin(ph))));
         double b = dc * ct, disc = b * b - (dc * dc - r * r);
         *dist = b - sqrt(fmax(0.0, disc));
+        *normal = gvec3_scale(gvec3_sub(gvec3_madd(x, *in, *dist), p->p0), 1.0 / r);
     } else {
         if (p->kind == EMIT_TRIANGLE) {
             double su = sqrt(u1);
@@ -419,6 +380,7 @@ int emissive_sample(TraceCtx *c, const EmissiveSet *e, GVec3 x, double u0, doubl
             return 0;
         *in = gvec3_scale(w, 1.0 / d);
         *dist = d;
+        *normal = p->n;
         if (p->kind == EMIT_DISC)
             bu = bv = 0.0;
     }
@@ -437,33 +399,33 @@ int emissive_shade(TraceCtx *c, const EmissiveSet *e, GSurfPoint *sp, GVec3 faci
     int rc = gcolor_scratch_uncleared(&L, c->scene->model, c->scratch);
     int n = EMISSIVE_WHITTED_SAMPLES;
     for (int k = 0; rc >= 0 && k < n; k++) {
-        GVec3 in;
+        GVec3 in, normal;
         double dist, pdf;
         double u0 = (k + rng_next(&c->rng)) / n, u1 = rng_next(&c->rng), u2 = rng_next(&c->rng);
-        int got = emissive_sample(c, e, sp->point, u0, u1, u2, &in, &dist, &pdf, &L);
+        int got = emissive_sample(c, e, sp->point, u0, u1, u2, &in, &dist, &normal, &pdf, &L);
         if (got <= 0) {
             rc = got;
             continue;
         }
         if (opaque && gvec3_dot(in, facing) <= 0.0)
             continue;
-        rc = sample_light(c, sp, facing, media, in, dist * EMISSIVE_SHADOW_SHORTEN, &L, 1.0 / (pdf * n), out_dir, t,
-                          result);
+        rc = sample_light(c, sp, facing, media, in, emissive_shadow_reach(sp->point, facing, in, dist, normal), &L,
+                          1.0 / (pdf * n), out_dir, t, result);
     }
     gscratch_release(c->scratch, mark);
     return rc < 0 ? rc : G_OK;
+}
+
+double emissive_shadow_reach(GVec3 x, GVec3 facing, GVec3 in, double dist, GVec3 normal)
+{
+    return shadow_reach(offset_origin(x, facing, in), in, gvec3_madd(x, in, dist), normal);
 }
 
 double emissive_power(const EmissiveSet *e) { return e ? M_PI * e->total : 0.0; }
 
 int emissive_emit(TraceCtx *c, const EmissiveSet *e, const double u[5], GVec3 *origin, GVec3 *dir, GColor *power)
 {
-    double f = u[0] * e->n;
-    int i = (int)f;
-    if (i >= e->n)
-        i = e->n - 1;
-    if (f - i >= e->q[i])
-        i = e->alias[i];
+    int i = alias_table_pick(e->q, e->alias, e->n, u[0], NULL);
     const EmissivePrim *p = &e->prims[i];
     double bu = 0.0, bv = 0.0, area, sides = 1.0, v = u[3];
     GVec3 y, n;

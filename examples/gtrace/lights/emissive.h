@@ -16,9 +16,6 @@ typedef struct EmissiveSet EmissiveSet;
 
 /** Light samples the Whitted tracer takes from the emissive set at each shading point. */
 #define EMISSIVE_WHITTED_SAMPLES 16
-/** A shadow ray towards a drawn point ends this factor of its distance short of it, so that it does not meet the
- * glowing surface itself. */
-#define EMISSIVE_SHADOW_SHORTEN (1.0 - 1e-4)
 
 /** Collects the emissive primitives of s: the spheres (untransformed or moved by a rotation, a uniform scale and a
  * translation), discs, quads, triangles and mesh triangles of the top-level scene (not the parts of groups and
@@ -32,11 +29,15 @@ void emissive_free(EmissiveSet *e);
 /** The number of primitives of the set (0 for NULL). */
 int emissive_count(const EmissiveSet *e);
 /** Draws a point of the set as seen from x with three uniform numbers: 1 with the unit direction `in` towards it,
- * its distance, the density of that direction in solid angle (the choice of the primitive included) and the
- * radiance the material emits towards x there in L; 0 when the draw offers no light (the point lies behind its
+ * its distance, the unit normal of its primitive there (of either side), the density of that direction in solid
+ * angle (the choice of the primitive included) and the radiance the material emits towards x there in L; 0 when the draw offers no light (the point lies behind its
  * primitive's plane as seen from x is still drawn: its emission decides); or a status. */
 int emissive_sample(TraceCtx *c, const EmissiveSet *e, GVec3 x, double u0, double u1, double u2, GVec3 *in,
-                    double *dist, double *pdf, GColor *L);
+                    double *dist, GVec3 *normal, double *pdf, GColor *L);
+/** The length of the shadow ray towards a point emissive_sample drew from x (in, dist, normal as it gave them) that
+ * ends before the glowing surface (trace.h's shadow_reach): the ray leaves from x offset along facing as sample_light's
+ * and light_transmit's do (offset_origin; a point in a medium: facing = in, as light_transmit's walk leaves it). */
+double emissive_shadow_reach(GVec3 x, GVec3 facing, GVec3 in, double dist, GVec3 normal);
 /** The density in solid angle with which emissive_sample from x draws direction dir that meets the hit h at
  * distance t: 0 when h's primitive is not in the set. */
 double emissive_pdf(const EmissiveSet *e, const Hit *h, GVec3 x, GVec3 dir, double t);

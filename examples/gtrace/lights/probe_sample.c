@@ -179,11 +179,11 @@ int probe_light_shade(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing,
     const ProbeEnv *env = l->env;
     if (env && PROBE_IS_BASIS(env->technique))
         return probe_basis_shade(c, env, sp, facing, out_dir, t, result);
-    return probe_light_nee(c, l, sp, facing, media, out_dir, opaque, l->samples, NULL, t, result);
+    return probe_light_nee(c, l, sp, facing, media, out_dir, opaque, l->samples, NULL, 1.0, t, result);
 }
 
 int probe_light_nee(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 out_dir,
-                    int opaque, int n, const GColor *mis_ri, LightTmp *t, GColor *result)
+                    int opaque, int n, const GColor *mis_ri, double pick, LightTmp *t, GColor *result)
 {
     const ProbeEnv *env = l->env;
     if (!env || !env->probe || !env->dist.row_cdf)
@@ -216,7 +216,7 @@ int probe_light_nee(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, c
         GVec3 in = probe_to_world(env, local);
         if (opaque && gvec3_dot(in, facing) <= 0.0)
             continue;
-        double w = mis_ri ? mis_power(pdf, gmaterial_pdf(sp->material, sp, in, out_dir, mis_ri)) : 1.0;
+        double w = mis_ri ? mis_power(pdf * pick, gmaterial_pdf(sp->material, sp, in, out_dir, mis_ri)) : 1.0;
         if (!(w > 0.0))
             continue;
         if ((rc = gprobe_pixel_color(p, pu, pv, &radiance)) < 0)

@@ -14,6 +14,7 @@
 #include "film/progress.h"
 #include "film/viewing.h"
 #include "lights/emissive.h"
+#include "lights/light_pick.h"
 #include "trace/sampler.h"
 
 #include <generic/memory.h>
@@ -186,6 +187,7 @@ struct Renderer {
     Camera cam;
     Bands bands;
     EmissiveSet *emissive; /**< the glowing geometry as light, shared by the workers (NULL: none) */
+    LightPick pick;        /**< every light source by power (the glowing geometry one entry), shared by the workers */
     Worker *workers;
     int nthreads, status;
     const char *culprit;
@@ -238,6 +240,7 @@ void renderer_destroy(Renderer *r)
         gscratch_destroy(r->workers[i].ctx.scratch);
     }
     gmem_free(r->workers);
+    light_pick_free(&r->pick);
     emissive_free(r->emissive);
     bands_free(&r->bands);
     gmem_free(r);
@@ -332,8 +335,12 @@ int renderer_create(Renderer **out, const Scene *s, const RenderSettings *rs, Fr
         rc = gerror_set(err, G_ERR_NOMEM, "out of memory for a %dx%d image", fb->width, fb->height);
     if (rc == G_OK && !rs->no_emissive_lights)
         rc = emissive_build(s, &r->workers[0].ctx, &r->emissive, err);
-    for (int i = 0; rc == G_OK && i < r->nthreads; i++)
+    if (rc == G_OK)
+        rc = light_pick_build(&r->pick, s, r->emissive, err);
+    for (int i = 0; rc == G_OK && i < r->nthreads; i++) {
         r->workers[i].ctx.emissive = r->emissive;
+        r->workers[i].ctx.pick = &r->pick;
+    }
     if (rc == G_OK && rs->waves)
         rc = set_wavelengths(fb, s->model, err);
     if (rc == G_OK)

@@ -6,11 +6,30 @@
 
 #include <math.h>
 
+/* The distance a point is moved off a surface (offset_origin) and the margin a shadow ray keeps from the surface of
+ * its target (shadow_reach): a relative 2e-5 of the point's largest coordinate, far above the single precision of the
+ * intersection tests. */
+static double offset_eps(GVec3 p) { return 2e-5 * (1.0 + gfmax(fabs(p.x), gfmax(fabs(p.y), fabs(p.z)))); }
+
 GVec3 offset_origin(GVec3 p, GVec3 n, GVec3 dir)
 {
-    double scale = 1.0 + gfmax(fabs(p.x), gfmax(fabs(p.y), fabs(p.z)));
-    double eps = 2e-5 * scale;
+    double eps = offset_eps(p);
     return gvec3_madd(p, n, gvec3_dot(dir, n) >= 0.0 ? eps : -eps);
+}
+
+double shadow_reach(GVec3 origin, GVec3 dir, GVec3 target, GVec3 normal)
+{
+    GVec3 to = gvec3_sub(target, origin);
+    double height = gvec3_dot(to, normal), cos_t = gvec3_dot(dir, normal);
+    if (height < 0.0) { /* the origin lies on the side normal points to: measure from that side */
+        height = -height;
+        cos_t = -cos_t;
+    }
+    /* height: how far the target's tangent plane lies ahead of the origin; cos_t: how fast the ray closes on it */
+    double reach = (height - offset_eps(target)) / cos_t;
+    if (!(cos_t > 0.0) || !isfinite(reach)) /* running along the plane (or away): it cannot meet the target's surface */
+        return fmax(0.0, gvec3_dot(to, dir));
+    return fmax(0.0, reach);
 }
 
 const GMaterial *media_top(const Media *m) { return m->n > 0 ? m->m[m->n - 1] : NULL; }

@@ -47,6 +47,8 @@ typedef struct TraceCtx {
                                 * NULL: none) */
     int band;            /**< the group the current path carries (-1: all light; set by a dispersive split) */
     const struct EmissiveSet *emissive; /**< the glowing geometry sampled as light (lights/emissive.h; NULL: none) */
+    const struct LightPick *pick; /**< every light source chosen by power (lights/light_pick.h; NULL: no light is
+                                   * drawn at random) */
     int volumes;         /**< the integrator renders participating media (the path tracer, in a scene with media):
                           * shadow rays are attenuated by them (lights.c); 0: only materials' absorption */
     int equiangular;     /**< the path tracer also samples the single scattering of point, spot and IES lights in
@@ -88,5 +90,11 @@ void media_cross(const Media *in, const GMaterial *mat, int entering, Media *out
 int trace_relative_index(TraceCtx *c, GSurfPoint *sp, GColor *ri);
 /** Offsets a point off a surface to the side `dir` leaves on, against self-intersection. */
 GVec3 offset_origin(GVec3 p, GVec3 n, GVec3 dir);
+/** The length of a shadow ray from origin along unit dir towards target, a point on a surface of unit normal `normal`
+ * (either orientation) that the ray must not meet: the ray ends where it still lies the offset of a secondary ray's
+ * origin at target (offset_origin's) in front of the surface's tangent plane at target, so that neither end of the
+ * ray sees the surface it lies on whatever the scale and the distance; 0 when the origin lies closer to that plane
+ * than the offset. A ray that runs along the plane ends where it passes target. */
+double shadow_reach(GVec3 origin, GVec3 dir, GVec3 target, GVec3 normal);
 
 #endif
