@@ -11,6 +11,7 @@
 
 #include "material_fixture.h"
 #include "generic/builtins.h"
+#include "generic/kit/fresnel.h"
 #include "generic/kit/metals.h"
 #include "generic/kit/microfacet.h"
 
@@ -92,6 +93,60 @@ static void normal_incidence(void **state)
             }
             case_close(&c);
         }
+}
+
+/* The tabulated Fresnel term of a rough conductor (fresnel table, the default) against the exact one (fresnel exact)
+ * for every metal of the table in spectrum, at facet cosines halfway between the table's nodes (where a lerp is
+ * furthest from the curve: the nodes are at cos_h = (j / 1024)^2) and at normal incidence. The pair is symmetric about
+ * the normal (h = n, cos_h = the pair's cosine), uncompensated, so that the two values differ by F alone:
+ * |F_table - F_exact| = |r_table / r_exact - 1| F_exact within 1e-5 at every sample; at cos_h = 1 every float equal. */
+static void fresnel_table(void **state)
+{
+    (void)state;
+    const int probes = TU_SANITIZED ? 24 : 160;
+    for (int metal = 0; metal < gmetal_count(); metal += TU_SANITIZED ? 6 : 1) {
+        GMetalInfo info;
+        assert_int_equal(gmetal_info(metal, &info), G_OK);
+        char text[256];
+        snprintf(text, sizeof text,
+                 "material m conductor { metal %s roughness 0.3 compensate off }\n"
+                 "material e conductor { metal %s roughness 0.3 compensate off fresnel exact }", info.name, info.name);
+        Case c;
+        case_open(&c, "spectrum", 0.0, text);
+        GMaterial *exact = glibrary_material(c.lib, "e");
+        assert_non_null(exact);
+        GColor re, f, eta, k;
+        assert_int_equal(gcolor_alloc(&re, c.model), G_OK);
+        assert_int_equal(gcolor_alloc(&f, c.model), G_OK);
+        assert_int_equal(gcolor_alloc(&eta, c.model), G_OK);
+        assert_int_equal(gcolor_alloc(&k, c.model), G_OK);
+        assert_int_equal(gmetal_colors(metal, &eta, &k), G_OK);
+        int n = c.model->nvalues;
+        for (int p = 0; p <= probes; p++) {
+            /* p < probes: the midpoints of intervals spread over the table, dense towards grazing; then cos_h = 1 */
+            int j = (int)((double)p * p / ((double)probes * probes) * 1023.0);
+            double u = (j + 0.5) / 1024.0, cos_h = p < probes ? u * u : 1.0, sin_h = sqrt(1.0 - cos_h * cos_h);
+            GVec3 in = gvec3(sin_h, 0, cos_h), out = gvec3(-sin_h, 0, cos_h);
+            assert_int_equal(gmaterial_reflection(c.m, &c.sp, in, &c.white, out, &c.r), G_OK);
+            c.sp.material = exact;
+            assert_int_equal(gmaterial_reflection(exact, &c.sp, in, &c.white, out, &re), G_OK);
+            c.sp.material = c.m;
+            assert_int_equal(gmaterial_fresnel_conductor(&f, cos_h, &eta, &k), G_OK);
+            for (int i = 0; i < n; i++) {
+                if (p == probes) {
+                    assert_true(c.r.v[i] == re.v[i]);
+                    continue;
+                }
+                assert_true(re.v[i] > 0.0f);
+                double err = fabs(c.r.v[i] / (double)re.v[i] - 1.0) * f.v[i];
+                if (!(err <= 1e-5))
+                    fail_msg("%s at %g nm, cos_h %g: |F_table - F_exact| = %g > 1e-5", info.name,
+                             c.model->lambda_min + i * c.model->lambda_step, cos_h, err);
+            }
+        }
+        gcolor_free(&re), gcolor_free(&f), gcolor_free(&eta), gcolor_free(&k);
+        case_close(&c);
+    }
 }
 
 /* ---- chi-square of the sampling ---- */
@@ -404,6 +459,7 @@ int main(void)
         return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(normal_incidence),
+        cmocka_unit_test(fresnel_table),
         MODELS(chi2_ggx),
         {"chi2_beckmann (spectrum)", chi2_beckmann, NULL, NULL, (void *)"spectrum"},
         BOTH(white_furnace),
