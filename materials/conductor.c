@@ -152,21 +152,34 @@ static int rough_geometry(const Conductor *c, const RoughAt *a, const GSurfPoint
     return 1;
 }
 
-/* f = s * F(cos_h) + t * add sample by sample (add NULL: s * F), F between the table's two nodes about cos_h: exact at
- * the nodes (cos_h = 1 among them). */
-static void fresnel_table_mix(const Conductor *c, double cos_h, double s, const GColor *add, double t, GColor *f)
+/* f = (s * F(cos_h) + t * add) * light sample by sample (add NULL: s * F; light NULL: white), F between the table's two
+ * nodes about cos_h: exact at the nodes (cos_h = 1 among them). Each step rounds to float as gcolor_mul after the mix
+ * would; f->v may be light. */
+static void fresnel_table_mix(const Conductor *c, double cos_h, double s, const GColor *add, double t,
+                              const float *light, GColor *f)
 {
     double x = sqrt(cos_h > 0.0 ? (cos_h < 1.0 ? cos_h : 1.0) : 0.0) * CONDUCTOR_FRESNEL_K;
     int j = (int)x, n = c->base.model->nvalues;
     j = j < CONDUCTOR_FRESNEL_K ? j : CONDUCTOR_FRESNEL_K - 1;
-    const float *lo = c->ftab + (size_t)j * n, *hi = lo + n;
+    const float *lo = c->ftab + (size_t)j * n, *hi = lo + n, *a = add ? add->v : NULL;
     const float w1 = (float)(x - j), w0 = 1.0f - w1, fs = (float)s, ft = (float)t;
     float *out = f->v;
-    if (add) {
-        const float *a = add->v;
+    if (a && light) {
+#pragma omp simd
+        for (int i = 0; i < n; i++) {
+            float v = (w0 * lo[i] + w1 * hi[i]) * fs + a[i] * ft;
+            out[i] = v * light[i];
+        }
+    } else if (a) {
 #pragma omp simd
         for (int i = 0; i < n; i++)
             out[i] = (w0 * lo[i] + w1 * hi[i]) * fs + a[i] * ft;
+    } else if (light) {
+#pragma omp simd
+        for (int i = 0; i < n; i++) {
+            float v = (w0 * lo[i] + w1 * hi[i]) * fs;
+            out[i] = v * light[i];
+        }
     } else {
 #pragma omp simd
         for (int i = 0; i < n; i++)
@@ -176,9 +189,10 @@ static void fresnel_table_mix(const Conductor *c, double cos_h, double s, const 
 }
 
 /* scale * f cos_in of the rough surface a into f from a pair's geometry: the cosines with the normal and the
- * facet's cosine, the single-scattering term; the Fresnel colour and the compensation's in one pass. */
+ * facet's cosine, the single-scattering term; the Fresnel colour and the compensation's in one pass, times light's
+ * samples when light is given (only with the Fresnel table, for f of the material's model: fused_light). */
 static int rough_mix(const Conductor *c, const RoughAt *a, double cos_i, double cos_o, double cos_h, double single,
-                     double scale, GColor *f)
+                     double scale, const float *light, GColor *f)
 {
     double multiple = 0.0;
     if (single < 1e-30) /* far outside a narrow lobe: below what a float keeps to its precision */
@@ -186,9 +200,11 @@ static int rough_mix(const Conductor *c, const RoughAt *a, double cos_i, double 
     if (c->compensate)
         multiple = (1.0 - gmicrofacet_albedo_at(a->e, cos_o)) * (1.0 - gmicrofacet_albedo_at(a->e, cos_i)) * cos_i;
     if (c->ftab && f->model == c->base.model) {
-        fresnel_table_mix(c, cos_h, single * scale, c->compensate ? a->ms : NULL, multiple * scale, f);
+        fresnel_table_mix(c, cos_h, single * scale, c->compensate ? a->ms : NULL, multiple * scale, light, f);
         return G_OK;
     }
+    if (light)
+        return G_ERR_INVALID;
     return gmaterial_fresnel_conductor_mix(f, cos_h, &c->eta, &c->k, single * scale, c->compensate ? a->ms : NULL,
                                            multiple * scale);
 }
@@ -198,24 +214,26 @@ static int mix_value(const Conductor *c, const RoughAt *a, double cos_i, double 
                      double scale, GColor *f)
 {
     GMicrofacetPair p = {cos_i, cos_o, cos_io};
-    return rough_mix(c, a, cos_i, cos_o, gmicrofacet_pair_cos_h(p), single, scale, f);
+    return rough_mix(c, a, cos_i, cos_o, gmicrofacet_pair_cos_h(p), single, scale, NULL, f);
 }
 
-/* f cos_in of the rough surface a for white light into f (a colour of the model); 0 when nothing is reflected. */
+/* f cos_in of the rough surface a for white light (light NULL) or times light's samples into f (a colour of the
+ * model); 0 when nothing is reflected. */
 static int rough_value(const Conductor *c, const RoughAt *a, const GSurfPoint *sp, GVec3 n, GVec3 in, GVec3 out,
-                       GColor *f)
+                       const float *light, GColor *f)
 {
     double single, cos_h, cos_i, cos_o;
     if (!rough_geometry(c, a, sp, n, in, out, &single, &cos_h, &cos_i, &cos_o)) {
         gcolor_black(f);
         return G_OK;
     }
-    return rough_mix(c, a, cos_i, cos_o, cos_h, single, 1.0, f);
+    return rough_mix(c, a, cos_i, cos_o, cos_h, single, 1.0, light, f);
 }
 
-/* f cos_in for white light into f at a pair that reflects (cos_in > 0 about the shading normal n; a mirror pair for
- * the smooth surface). */
-static int value_at(const Conductor *c, GSurfPoint *sp, GVec3 n, double cos_in, GVec3 in, GVec3 out, GColor *f)
+/* f cos_in for white light (light NULL; or times light's samples, rough surfaces only: fused_light) into f at a pair
+ * that reflects (cos_in > 0 about the shading normal n; a mirror pair for the smooth surface). */
+static int value_at(const Conductor *c, GSurfPoint *sp, GVec3 n, double cos_in, GVec3 in, GVec3 out,
+                    const float *light, GColor *f)
 {
     if (c->smooth)
         return gmaterial_fresnel_conductor(f, cos_in, &c->eta, &c->k);
@@ -223,14 +241,14 @@ static int value_at(const Conductor *c, GSurfPoint *sp, GVec3 n, double cos_in, 
     int rc;
     if (!c->rough.gen) { /* the material's own surface: nothing on the arena */
         rc = rough_at(c, sp, &a);
-        return rc == G_OK ? rough_value(c, &a, sp, n, in, out, f) : rc;
+        return rc == G_OK ? rough_value(c, &a, sp, n, in, out, light, f) : rc;
     }
     if (!sp->scratch)
         return G_ERR_INVALID;
     GScratchMark mark = gscratch_mark(sp->scratch);
     rc = rough_at(c, sp, &a);
     if (rc == G_OK)
-        rc = rough_value(c, &a, sp, n, in, out, f);
+        rc = rough_value(c, &a, sp, n, in, out, light, f);
     gscratch_release(sp->scratch, mark);
     return rc;
 }
@@ -240,6 +258,14 @@ static double reflecting_cos(const Conductor *c, GSurfPoint *sp, GVec3 in, GVec3
 {
     double cos_in = gmaterial_cos_in(sp, in, out, n);
     return cos_in > 0.0 && (!c->smooth || gmaterial_is_mirror_pair(in, *n, out)) ? cos_in : 0.0;
+}
+
+/* The light's samples where the rough surface's table can multiply them in as it mixes (a vector of the model into
+ * a colour of the model: what gcolor_mul would compute, in one pass), else NULL. */
+static const float *fused_light(const Conductor *c, const GColor *illum, const GColor *result)
+{
+    const GColorModel *m = c->base.model;
+    return c->ftab && illum->kind == GCOLOR_VECTOR && illum->model == m && result->model == m ? illum->v : NULL;
 }
 
 static int conductor_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
@@ -252,8 +278,11 @@ static int conductor_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in,
         gcolor_black(result);
         return G_OK;
     }
+    const float *light = fused_light(c, illum, result);
+    if (light) /* sample i of result read from light's sample i alone: result may be illum */
+        return value_at(c, sp, n, cos_in, in, out, light, result);
     if (result->v != illum->v) { /* the value straight into result, then times the light */
-        int rc = value_at(c, sp, n, cos_in, in, out, result);
+        int rc = value_at(c, sp, n, cos_in, in, out, NULL, result);
         return rc == G_OK ? gcolor_mul(result, result, illum) : rc;
     }
     if (!sp->scratch)
@@ -262,7 +291,7 @@ static int conductor_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in,
     GColor f;
     int rc = gcolor_scratch_uncleared(&f, self->model, sp->scratch);
     if (rc == G_OK)
-        rc = value_at(c, sp, n, cos_in, in, out, &f);
+        rc = value_at(c, sp, n, cos_in, in, out, NULL, &f);
     if (rc == G_OK)
         rc = gcolor_mul(result, &f, illum);
     gscratch_release(sp->scratch, mark);

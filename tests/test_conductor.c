@@ -2,7 +2,8 @@
  * metals against ((n - 1)^2 + k^2) / ((n + 1)^2 + k^2) of their own table; the chi-square goodness of fit of its
  * sampling against its pdf, integrated over each bin; the white furnace (a compensated rough conductor of reflectance 1
  * keeps all the light at every angle; uncompensated it keeps the single-scattering albedo, integrated here with an
- * independent D and G2); reciprocity; energy conservation of real metals; and the file format's refusals. */
+ * independent D and G2); reciprocity; energy conservation of real metals; the tabulated Fresnel term against the
+ * exact one; and the file format's refusals. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -144,6 +145,18 @@ static void fresnel_table(void **state)
                              c.model->lambda_min + i * c.model->lambda_step, cos_h, err);
             }
         }
+        /* a coloured light: the white value times the light, float by float, also into the light's own colour */
+        GVec3 in = gvec3(0.6, 0, 0.8), out = gvec3(-0.48, 0.36, 0.8);
+        for (int i = 0; i < n; i++)
+            f.v[i] = 0.25f + 0.5f * (float)i / (float)n;
+        f.kind = GCOLOR_VECTOR;
+        assert_int_equal(gmaterial_reflection(c.m, &c.sp, in, &c.white, out, &re), G_OK);
+        assert_int_equal(gmaterial_reflection(c.m, &c.sp, in, &f, out, &c.r), G_OK);
+        for (int i = 0; i < n; i++)
+            assert_true(c.r.v[i] == re.v[i] * f.v[i] && c.r.v[i] > 0.0f);
+        assert_int_equal(gmaterial_reflection(c.m, &c.sp, in, &f, out, &f), G_OK);
+        for (int i = 0; i < n; i++)
+            assert_true(f.v[i] == c.r.v[i]);
         gcolor_free(&re), gcolor_free(&f), gcolor_free(&eta), gcolor_free(&k);
         case_close(&c);
     }
@@ -426,6 +439,8 @@ static void refusals(void **state)
         {"material m conductor { eta rgb 1 0 1 k rgb 1 1 1 }", "case.mat:1:28: conductor: eta has the value 0"},
         {"material m conductor { eta rgb 1 1 1 k rgb 1 -1 1 }", "case.mat:1:40: conductor: k has the value -1"},
         {"material m conductor { eta rgb 1 1 1 k rgb 1 1 2000 }", "(must be >= 0 and <= 1000)"},
+        {"material m conductor { roughness 0.3 fresnel fast }",
+         "case.mat:1:46: material conductor: expected one of table, exact"},
         {"material m conductor { eta rgb 1 1 1 }", "conductor: eta given without k"},
         {"material m conductor { metal Au eta rgb 1 1 1 }", "conductor: metal and eta/k exclude each other"},
         {"material m conductor { roughness 0.1 roughness_v 0.2 }", "roughness and roughness_u/roughness_v exclude"},
