@@ -16,6 +16,7 @@
 #include "generic/kit/texparam.h"
 #include "generic/kit/metals.h"
 #include "generic/kit/microfacet.h"
+#include "generic/kit/spectral_kernels.h"
 #include "generic/colorspec.h"
 #include "generic/plugin.h"
 
@@ -152,39 +153,58 @@ static int rough_geometry(const Conductor *c, const RoughAt *a, const GSurfPoint
     return 1;
 }
 
+/* The lerp of a table's two nodes: out = ((w0 lo + w1 hi) s + t add) light over n samples (add NULL: nothing added,
+ * light NULL: white); out may be light. */
+typedef struct TableMix {
+    const float *lo, *hi, *add, *light;
+    float w0, w1, s, t;
+} TableMix;
+
+/* The loop of table_mix, for each operand given or not, so that each compiles without a test per sample. Each step
+ * rounds to float as gcolor_mul after the mix would. */
+#define TABLE_MIX_LOOP(out, m, n)                                                                              \
+    do {                                                                                                       \
+        const float *lo = (m)->lo, *hi = (m)->hi, *a = (m)->add, *l = (m)->light;                              \
+        const float w0 = (m)->w0, w1 = (m)->w1, fs = (m)->s, ft = (m)->t;                                      \
+        if (a && l) {                                                                                          \
+            _Pragma("omp simd") for (int i = 0; i < (n); i++) {                                               \
+                float v = (w0 * lo[i] + w1 * hi[i]) * fs + a[i] * ft;                                          \
+                (out)[i] = v * l[i];                                                                           \
+            }                                                                                                  \
+        } else if (a) {                                                                                        \
+            _Pragma("omp simd") for (int i = 0; i < (n); i++)(out)[i] = (w0 * lo[i] + w1 * hi[i]) * fs + a[i] * ft; \
+        } else if (l) {                                                                                        \
+            _Pragma("omp simd") for (int i = 0; i < (n); i++) {                                               \
+                float v = (w0 * lo[i] + w1 * hi[i]) * fs;                                                      \
+                (out)[i] = v * l[i];                                                                           \
+            }                                                                                                  \
+        } else {                                                                                               \
+            _Pragma("omp simd") for (int i = 0; i < (n); i++)(out)[i] = (w0 * lo[i] + w1 * hi[i]) * fs;        \
+        }                                                                                                      \
+    } while (0)
+
+static void table_mix(float *out, const TableMix *m, int n);
+static void table_mix_v4(float *out, const TableMix *m, int n) { TABLE_MIX_LOOP(out, m, n); }
+#ifdef GSPECTRAL_AVX2
+/* The same loop on 8-float vectors (no FMA: each sample rounds as the 4-float body's), chosen once when loaded. */
+static GSPECTRAL_TARGET_AVX2 void table_mix_v8(float *out, const TableMix *m, int n) { TABLE_MIX_LOOP(out, m, n); }
+GSPECTRAL_PICK(table_mix);
+#else
+static void table_mix(float *out, const TableMix *m, int n) { table_mix_v4(out, m, n); }
+#endif
+
 /* f = (s * F(cos_h) + t * add) * light sample by sample (add NULL: s * F; light NULL: white), F between the table's two
- * nodes about cos_h: exact at the nodes (cos_h = 1 among them). Each step rounds to float as gcolor_mul after the mix
- * would; f->v may be light. */
+ * nodes about cos_h: exact at the nodes (cos_h = 1 among them); f->v may be light. */
 static void fresnel_table_mix(const Conductor *c, double cos_h, double s, const GColor *add, double t,
                               const float *light, GColor *f)
 {
     double x = sqrt(cos_h > 0.0 ? (cos_h < 1.0 ? cos_h : 1.0) : 0.0) * CONDUCTOR_FRESNEL_K;
     int j = (int)x, n = c->base.model->nvalues;
     j = j < CONDUCTOR_FRESNEL_K ? j : CONDUCTOR_FRESNEL_K - 1;
-    const float *lo = c->ftab + (size_t)j * n, *hi = lo + n, *a = add ? add->v : NULL;
-    const float w1 = (float)(x - j), w0 = 1.0f - w1, fs = (float)s, ft = (float)t;
-    float *out = f->v;
-    if (a && light) {
-#pragma omp simd
-        for (int i = 0; i < n; i++) {
-            float v = (w0 * lo[i] + w1 * hi[i]) * fs + a[i] * ft;
-            out[i] = v * light[i];
-        }
-    } else if (a) {
-#pragma omp simd
-        for (int i = 0; i < n; i++)
-            out[i] = (w0 * lo[i] + w1 * hi[i]) * fs + a[i] * ft;
-    } else if (light) {
-#pragma omp simd
-        for (int i = 0; i < n; i++) {
-            float v = (w0 * lo[i] + w1 * hi[i]) * fs;
-            out[i] = v * light[i];
-        }
-    } else {
-#pragma omp simd
-        for (int i = 0; i < n; i++)
-            out[i] = (w0 * lo[i] + w1 * hi[i]) * fs;
-    }
+    const float *lo = c->ftab + (size_t)j * n;
+    const float w1 = (float)(x - j);
+    TableMix m = {lo, lo + n, add ? add->v : NULL, light, 1.0f - w1, w1, (float)s, (float)t};
+    table_mix(f->v, &m, n);
     f->kind = GCOLOR_VECTOR;
 }
 
