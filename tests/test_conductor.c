@@ -2,7 +2,8 @@
  * metals against ((n - 1)^2 + k^2) / ((n + 1)^2 + k^2) of their own table; the chi-square goodness of fit of its
  * sampling against its pdf, integrated over each bin; the white furnace (a compensated rough conductor of reflectance 1
  * keeps all the light at every angle; uncompensated it keeps the single-scattering albedo, integrated here with an
- * independent D and G2); reciprocity; energy conservation of real metals; and the file format's refusals. */
+ * independent D and G2); reciprocity; energy conservation of real metals; the tabulated Fresnel term against the
+ * exact one; and the file format's refusals. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -11,6 +12,7 @@
 
 #include "material_fixture.h"
 #include "generic/builtins.h"
+#include "generic/kit/fresnel.h"
 #include "generic/kit/metals.h"
 #include "generic/kit/microfacet.h"
 
@@ -92,6 +94,72 @@ static void normal_incidence(void **state)
             }
             case_close(&c);
         }
+}
+
+/* The tabulated Fresnel term of a rough conductor (fresnel table, the default) against the exact one (fresnel exact)
+ * for every metal of the table in spectrum, at facet cosines halfway between the table's nodes (where a lerp is
+ * furthest from the curve: the nodes are at cos_h = (j / 1024)^2) and at normal incidence. The pair is symmetric about
+ * the normal (h = n, cos_h = the pair's cosine), uncompensated, so that the two values differ by F alone:
+ * |F_table - F_exact| = |r_table / r_exact - 1| F_exact within 1e-5 at every sample; at cos_h = 1 every float equal. */
+static void fresnel_table(void **state)
+{
+    (void)state;
+    const int probes = TU_SANITIZED ? 24 : 160;
+    for (int metal = 0; metal < gmetal_count(); metal += TU_SANITIZED ? 6 : 1) {
+        GMetalInfo info;
+        assert_int_equal(gmetal_info(metal, &info), G_OK);
+        char text[256];
+        snprintf(text, sizeof text,
+                 "material m conductor { metal %s roughness 0.3 compensate off }\n"
+                 "material e conductor { metal %s roughness 0.3 compensate off fresnel exact }", info.name, info.name);
+        Case c;
+        case_open(&c, "spectrum", 0.0, text);
+        GMaterial *exact = glibrary_material(c.lib, "e");
+        assert_non_null(exact);
+        GColor re, f, eta, k;
+        assert_int_equal(gcolor_alloc(&re, c.model), G_OK);
+        assert_int_equal(gcolor_alloc(&f, c.model), G_OK);
+        assert_int_equal(gcolor_alloc(&eta, c.model), G_OK);
+        assert_int_equal(gcolor_alloc(&k, c.model), G_OK);
+        assert_int_equal(gmetal_colors(metal, &eta, &k), G_OK);
+        int n = c.model->nvalues;
+        for (int p = 0; p <= probes; p++) {
+            /* p < probes: the midpoints of intervals spread over the table, dense towards grazing; then cos_h = 1 */
+            int j = (int)((double)p * p / ((double)probes * probes) * 1023.0);
+            double u = (j + 0.5) / 1024.0, cos_h = p < probes ? u * u : 1.0, sin_h = sqrt(1.0 - cos_h * cos_h);
+            GVec3 in = gvec3(sin_h, 0, cos_h), out = gvec3(-sin_h, 0, cos_h);
+            assert_int_equal(gmaterial_reflection(c.m, &c.sp, in, &c.white, out, &c.r), G_OK);
+            c.sp.material = exact;
+            assert_int_equal(gmaterial_reflection(exact, &c.sp, in, &c.white, out, &re), G_OK);
+            c.sp.material = c.m;
+            assert_int_equal(gmaterial_fresnel_conductor(&f, cos_h, &eta, &k), G_OK);
+            for (int i = 0; i < n; i++) {
+                if (p == probes) {
+                    assert_true(c.r.v[i] == re.v[i]);
+                    continue;
+                }
+                assert_true(re.v[i] > 0.0f);
+                double err = fabs(c.r.v[i] / (double)re.v[i] - 1.0) * f.v[i];
+                if (!(err <= 1e-5))
+                    fail_msg("%s at %g nm, cos_h %g: |F_table - F_exact| = %g > 1e-5", info.name,
+                             c.model->lambda_min + i * c.model->lambda_step, cos_h, err);
+            }
+        }
+        /* a coloured light: the white value times the light, float by float, also into the light's own colour */
+        GVec3 in = gvec3(0.6, 0, 0.8), out = gvec3(-0.48, 0.36, 0.8);
+        for (int i = 0; i < n; i++)
+            f.v[i] = 0.25f + 0.5f * (float)i / (float)n;
+        f.kind = GCOLOR_VECTOR;
+        assert_int_equal(gmaterial_reflection(c.m, &c.sp, in, &c.white, out, &re), G_OK);
+        assert_int_equal(gmaterial_reflection(c.m, &c.sp, in, &f, out, &c.r), G_OK);
+        for (int i = 0; i < n; i++)
+            assert_true(c.r.v[i] == re.v[i] * f.v[i] && c.r.v[i] > 0.0f);
+        assert_int_equal(gmaterial_reflection(c.m, &c.sp, in, &f, out, &f), G_OK);
+        for (int i = 0; i < n; i++)
+            assert_true(f.v[i] == c.r.v[i]);
+        gcolor_free(&re), gcolor_free(&f), gcolor_free(&eta), gcolor_free(&k);
+        case_close(&c);
+    }
 }
 
 /* ---- chi-square of the sampling ---- */
@@ -371,6 +439,8 @@ static void refusals(void **state)
         {"material m conductor { eta rgb 1 0 1 k rgb 1 1 1 }", "case.mat:1:28: conductor: eta has the value 0"},
         {"material m conductor { eta rgb 1 1 1 k rgb 1 -1 1 }", "case.mat:1:40: conductor: k has the value -1"},
         {"material m conductor { eta rgb 1 1 1 k rgb 1 1 2000 }", "(must be >= 0 and <= 1000)"},
+        {"material m conductor { roughness 0.3 fresnel fast }",
+         "case.mat:1:46: material conductor: expected one of table, exact"},
         {"material m conductor { eta rgb 1 1 1 }", "conductor: eta given without k"},
         {"material m conductor { metal Au eta rgb 1 1 1 }", "conductor: metal and eta/k exclude each other"},
         {"material m conductor { roughness 0.1 roughness_v 0.2 }", "roughness and roughness_u/roughness_v exclude"},
@@ -404,6 +474,7 @@ int main(void)
         return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(normal_incidence),
+        cmocka_unit_test(fresnel_table),
         MODELS(chi2_ggx),
         {"chi2_beckmann (spectrum)", chi2_beckmann, NULL, NULL, (void *)"spectrum"},
         BOTH(white_furnace),

@@ -178,7 +178,8 @@ static void extreme_entry(GenBuf *b, GenRng *r, unsigned long i)
         gen_text_extreme(b, r);
         gb_printf(b, gen_below(r, 2) ? " roughness" : " roughness_u 0.2 roughness_v");
         gen_text_extreme(b, r);
-        gb_printf(b, " distribution %s }\n", gen_below(r, 2) ? "ggx" : "beckmann");
+        gb_printf(b, " distribution %s", gen_below(r, 2) ? "ggx" : "beckmann");
+        gb_printf(b, " fresnel %s }\n", i & 1 ? "exact" : "table"); /* by the index: no draw, the stream unchanged */
         break;
     case 16: /* a thin film: thickness, index and extinction in every slot */
         gb_printf(b, "material x%lu thinfilm { thickness", i);
