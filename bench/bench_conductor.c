@@ -1,7 +1,7 @@
 /* bench_conductor.c - evaluations per second of the conductor material (smooth, rough GGX, rough Beckmann,
- * uncompensated) against lambert's, in each built-in colour model, in thread CPU time: reflection() over the same 4096 random direction
- * pairs, and sample() for the rough GGX conductor. One thread. Prints figures and the ratios to lambert, never fails
- * on time. */
+ * uncompensated) against lambert's, in each built-in colour model, in thread CPU time: reflection() over the same 4096
+ * random direction pairs, and sample() for the rough GGX conductor. One thread. Prints figures and the ratios to
+ * lambert, never fails on time. */
 #include "generic/builtins.h"
 #include "generic/material.h"
 #include "generic/reader.h"

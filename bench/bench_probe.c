@@ -178,8 +178,8 @@ int main(void)
             int ok = eio.mean_rel <= emc.mean_rel;
             met += ok;
             total++;
-            printf("   %-10s %4d   %10.3f%%      %10.3f%%       %s   (fit %.2f s, %s)\n", "", N, emc.mean_rel, eio.mean_rel,
-                   ok ? "met" : "MISSED", tf, rep.converged ? "converged" : "iteration limit");
+            printf("   %-10s %4d   %10.3f%%      %10.3f%%       %s   (fit %.2f s, %s)\n", "", N, emc.mean_rel,
+                   eio.mean_rel, ok ? "met" : "MISSED", tf, rep.converged ? "converged" : "iteration limit");
         }
         gprobe_destroy(p);
     }

@@ -80,8 +80,8 @@ static const GMaterialClass lambert_class = {
 
 int glambert_create(const GColorModel *model, const GColor *reflectance, GMaterial **out, GError *err)
 {
-    int rc = gmaterial_one_color_create(&lambert_class, model, sizeof(GMaterialOneColor), reflectance, GCOLOR_REFLECTANCE,
-                                   1.0, "reflectance", out, err);
+    int rc = gmaterial_one_color_create(&lambert_class, model, sizeof(GMaterialOneColor), reflectance,
+                                        GCOLOR_REFLECTANCE, 1.0, "reflectance", out, err);
     if (rc == G_OK) { /* reflection is diffuse (rho) * illum * gmaterial_cos_in / pi, as the bit says, and no method
                        * reads the (u, v) parametrisation (material.h) */
         (*out)->flags |= GMAT_LAMBERTIAN | GMAT_NO_UV;

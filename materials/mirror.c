@@ -76,8 +76,8 @@ static const GMaterialClass mirror_class = {
 
 int gmirror_create(const GColorModel *model, const GColor *reflectance, GMaterial **out, GError *err)
 {
-    int rc = gmaterial_one_color_create(&mirror_class, model, sizeof(GMaterialOneColor), reflectance, GCOLOR_REFLECTANCE,
-                                   1.0, "reflectance", out, err);
+    int rc = gmaterial_one_color_create(&mirror_class, model, sizeof(GMaterialOneColor), reflectance,
+                                        GCOLOR_REFLECTANCE, 1.0, "reflectance", out, err);
     if (rc == G_OK) {
         (*out)->flags |= GMAT_NO_UV; /* its methods read none of the (u, v) parametrisation (material.h) */
         if (((GMaterialOneColor *)*out)->c.kind == GCOLOR_VECTOR) /* rho * illum: sample by sample (material.h) */

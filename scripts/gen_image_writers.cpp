@@ -1,9 +1,10 @@
-// gen_image_writers.cpp - run at build time: writes the C file of gimage_write_extensions() (generic/services/image.h), the
-// file extensions this OpenImageIO actually writes. For every format of OpenImageIO's "extension_list" that has
-// a writer, a 2x2 RGB image is written to a scratch directory under each of the format's extensions and read
-// back; only the extensions whose file is written and reads back are listed. Formats that are no files
-// ("null", "term": the terminal) are left out, and so is a writer known to read past the pixels it is given. Built against OpenImageIO so that the tools' --help can print the
-// list without loading it (docs/ARCHITECTURE.md, the OpenImageIO module). Usage: gen_image_writers OUT.c
+// gen_image_writers.cpp - run at build time: writes the C file of gimage_write_extensions() (generic/services/image.h),
+// the file extensions this OpenImageIO actually writes. For every format of OpenImageIO's "extension_list" that has a
+// writer, a 2x2 RGB image is written to a scratch directory under each of the format's extensions and read back; only
+// the extensions whose file is written and reads back are listed. Formats that are no files
+// ("null", "term": the terminal) are left out, and so is a writer known to read past the pixels it is given. Built
+// against OpenImageIO so that the tools' --help can print the list without loading it (docs/ARCHITECTURE.md, the
+// OpenImageIO module). Usage: gen_image_writers OUT.c
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>

@@ -56,10 +56,12 @@ int main(void)
             }
             avg[d][a] = 2.0 * s;
         }
-    printf("/* microfacet_albedo_data.c - the directional albedo of the single-scattering rough mirror with Fresnel 1,\n"
-           " * E(mu, alpha), and its cosine-weighted mean, for GGX [0] and Beckmann [1] (lib/kit/microfacet_albedo.h),\n"
-           " * written by scripts/gen_microfacet_albedo.c; regenerate, do not edit. Rows: alpha = a / %d; columns:\n"
-           " * mu = i / %d. */\n#include \"microfacet_albedo.h\"\n\n", N - 1, N - 1);
+    printf(
+        "/* microfacet_albedo_data.c - the directional albedo of the single-scattering rough mirror with Fresnel 1,\n"
+        " * E(mu, alpha), and its cosine-weighted mean, for GGX [0] and Beckmann [1] (lib/kit/microfacet_albedo.h),\n"
+        " * written by scripts/gen_microfacet_albedo.c; regenerate, do not edit. Rows: alpha = a / %d; columns:\n"
+        " * mu = i / %d. */\n#include \"microfacet_albedo.h\"\n\n",
+        N - 1, N - 1);
     printf("const float gmicrofacet_albedo_e[2][GMICROFACET_ALBEDO_N][GMICROFACET_ALBEDO_N] = {\n");
     for (int d = 0; d < 2; d++) {
         printf("    {\n");

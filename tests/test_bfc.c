@@ -105,11 +105,14 @@ static void test_small_and_malformed(void **state)
     parse_fails("400 420 10 2 400\n", "t.BFC:11:17: expected the excitation step, found the end of the line");
     parse_fails("400 420 7 2 400 10\n",
                 "t.BFC:11:1: invalid grid line (expected: out_min out_max out_step n_in in_min in_step)");
-    parse_fails("400 410 10 2 400 10\nlabels 400 410\n", "t.BFC:12:1: expected the column label row starting with 'r:c:'");
-    parse_fails("400 410 10 2 400 10\nr:c: 400 420\n", "t.BFC:12:10: column label 420 does not match the grid (expected 410)");
+    parse_fails("400 410 10 2 400 10\nlabels 400 410\n",
+                "t.BFC:12:1: expected the column label row starting with 'r:c:'");
+    parse_fails("400 410 10 2 400 10\nr:c: 400 420\n",
+                "t.BFC:12:10: column label 420 does not match the grid (expected 410)");
     parse_fails("400 410 10 2 400 10\nr:c: 400 410\n400 0.1 0.2\n420 0.1 0.2\n",
                 "t.BFC:14:1: row wavelength 420 does not match the grid (expected 410)");
-    parse_fails("400 410 10 2 400 10\nr:c: 400 410\n400 0.1\n", "t.BFC:13:8: expected a matrix value, found the end of the line");
+    parse_fails("400 410 10 2 400 10\nr:c: 400 410\n400 0.1\n",
+                "t.BFC:13:8: expected a matrix value, found the end of the line");
     parse_fails("400 410 10 2 400 10\nr:c: 400 410\n400 0.1 x\n", "t.BFC:13:9: expected a matrix value, found 'x'");
     parse_fails("400 410 10 2 400 10\nr:c: 400 410\n400 0.1 nan\n", "t.BFC:13:9: expected a matrix value, found 'nan'");
     parse_fails("400 410 10 2 400 10\nr:c: 400 410\n400 0.1 0.2 0.3\n",

@@ -83,7 +83,8 @@ static void test_modules_replace_the_builtins(void **state)
 
     load_module("rgb.so");
     load_module("lambert.so");
-    const GTypeInfo *lambert = gregistry_find(GKIND_MATERIAL, "lambert"), *rgb = gregistry_find(GKIND_COLORMODEL, "rgb");
+    const GTypeInfo *lambert = gregistry_find(GKIND_MATERIAL, "lambert"),
+                    *rgb = gregistry_find(GKIND_COLORMODEL, "rgb");
     assert_non_null(lambert);
     assert_non_null(rgb);
     /* the modules' own records: vtables and parse routine of the .so, not of the program */

@@ -435,7 +435,8 @@ static void refusals(void **state)
     } bad[] = {
         {"material m conductor { roughness 1.5 }", "case.mat:1:34: value 1.5 is out of range [0, 1]"},
         {"material m conductor { roughness_u -0.1 }", "case.mat:1:36: value -0.1 is out of range [0, 1]"},
-        {"material m conductor { metal Kryptonite }", "case.mat:1:30: conductor: unknown metal 'Kryptonite' (known: Ag, "},
+        {"material m conductor { metal Kryptonite }",
+         "case.mat:1:30: conductor: unknown metal 'Kryptonite' (known: Ag, "},
         {"material m conductor { eta rgb 1 0 1 k rgb 1 1 1 }", "case.mat:1:28: conductor: eta has the value 0"},
         {"material m conductor { eta rgb 1 1 1 k rgb 1 -1 1 }", "case.mat:1:40: conductor: k has the value -1"},
         {"material m conductor { eta rgb 1 1 1 k rgb 1 1 2000 }", "(must be >= 0 and <= 1000)"},

@@ -492,12 +492,13 @@ static void test_bad_params(void **state)
 static void test_text_format(void **state)
 {
     (void)state;
-    const char *text = "colormodel bispectral\n"
-                       "color orange reradiation { quantum_yield 0.65 }\n"
-                       "material a fluorescent-varnish { matrix orange ior 1.5 slope 17 }\n"
-                       "material b fluorescent-phong { matrix orange ks 0.04 exponents 30 120 480 weights 0.2 0.3 0.5 }\n"
-                       "material c fluorescent-varnish\n"
-                       "material d fluorescent-varnish { matrix rgb 0.5 0.5 0.5 exponent 40 }\n";
+    const char *text =
+        "colormodel bispectral\n"
+        "color orange reradiation { quantum_yield 0.65 }\n"
+        "material a fluorescent-varnish { matrix orange ior 1.5 slope 17 }\n"
+        "material b fluorescent-phong { matrix orange ks 0.04 exponents 30 120 480 weights 0.2 0.3 0.5 }\n"
+        "material c fluorescent-varnish\n"
+        "material d fluorescent-varnish { matrix rgb 0.5 0.5 0.5 exponent 40 }\n";
     GLibrary *lib;
     GError err;
     if (greader_load_string(text, "fluor.mat", NULL, &lib, &err) != G_OK)

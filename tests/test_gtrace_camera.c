@@ -317,7 +317,8 @@ static void test_camera_entries(void **state)
     assert_int_not_equal(greader_load_string("camera thinlens { aperture -1 }\n", "cam", NULL, &lib, &err), G_OK);
     assert_int_not_equal(greader_load_string("light point { position <0,0,0> intensity rgb 1 1 1 visible on }\n",
                                              "l", NULL, &lib, &err), G_OK);
-    assert_int_equal(greader_load_string("light sphere { radiance rgb 1 1 1 visible on }\n", "l", NULL, &lib, &err), G_OK);
+    assert_int_equal(greader_load_string("light sphere { radiance rgb 1 1 1 visible on }\n", "l", NULL, &lib, &err),
+                     G_OK);
     const Light *l = glibrary_entry(lib, gtrace_kind_light, 0, NULL, NULL);
     assert_int_equal(l->visible, 1);
     glibrary_destroy(lib);

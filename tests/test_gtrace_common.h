@@ -224,7 +224,10 @@ static inline RenderStats render(Scene *s, int w, int h, int spp, int depth, Fra
     return st;
 }
 
-static inline const float *pixel(const Framebuffer *fb, int x, int y) { return fb->pixels + 3 * ((size_t)y * fb->width + x); }
+static inline const float *pixel(const Framebuffer *fb, int x, int y)
+{
+    return fb->pixels + 3 * ((size_t)y * fb->width + x);
+}
 
 /* Luminance of a linear sRGB pixel. */
 static inline double luma(const float *p) { return 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2]; }

@@ -70,7 +70,12 @@ static Ray random_ray(const Scene *s, Rng *g)
         GVec3 p = gvec3(uni(g, lo.x, hi.x), uni(g, lo.y, hi.y), uni(g, lo.z, hi.z));
         int axis = (int)(rng_next(g) * 3);
         double *pc = axis == 0 ? &p.x : axis == 1 ? &p.y : &p.z;
-        *pc = rng_next(g) < 0.5 ? (axis == 0 ? lo.x : axis == 1 ? lo.y : lo.z) : (axis == 0 ? hi.x : axis == 1 ? hi.y : hi.z);
+        *pc = rng_next(g) < 0.5 ? (axis == 0   ? lo.x
+                                   : axis == 1 ? lo.y
+                                               : lo.z)
+                                : (axis == 0   ? hi.x
+                                   : axis == 1 ? hi.y
+                                               : hi.z);
         if (rng_next(g) < 0.5)
             p = gvec3(rng_next(g) < 0.5 ? lo.x : hi.x, rng_next(g) < 0.5 ? lo.y : hi.y, p.z);
         GVec3 d = gvec3_sub(p, r.o);
@@ -176,7 +181,8 @@ static void test_direct_matches_embree(void **state)
                     ties++;
                     continue;
                 }
-                fail_msg("scene %d ray %d: direct hit %d t %.17g, Embree hit %d t %.17g", sc, i, a->hit, ta, b->hit, tb);
+                fail_msg("scene %d ray %d: direct hit %d t %.17g, Embree hit %d t %.17g", sc, i, a->hit, ta, b->hit,
+                         tb);
             }
             if (a->hit) {
                 hits++;
@@ -396,8 +402,8 @@ static void test_direct_surface_rays(void **state)
             Hit h;
             int hit = accel_intersect(s, &r, &h);
             if (hit != (want != INFINITY) || (hit && !same_bits(h.t, want)))
-                fail_msg("%s ray %d: hit %d t %.17g, want %.17g", kind == 0 ? "sphere" : "plane", i, hit, hit ? h.t : 0.0,
-                         want);
+                fail_msg("%s ray %d: hit %d t %.17g, want %.17g", kind == 0 ? "sphere" : "plane", i, hit,
+                         hit ? h.t : 0.0, want);
             double wocc = kind == 0 ? ref_sphere(o, ro, rd, r.tmin, r.tmax) : ref_plane(o, ro, rd, r.tmin, r.tmax);
             assert_int_equal(accel_occluded(s, &r), wocc != INFINITY ? OCCLUDED_OPAQUE : OCCLUDED_CLEAR);
             hits += hit;

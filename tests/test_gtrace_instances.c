@@ -95,11 +95,12 @@ static void test_instance_like_by_hand(void **state)
 {
     (void)state;
     /* an analytic sphere: intersected in double precision through the placement's own transform */
-    expect_same("object sphere { center <0.2, 0.5, 0> radius 0.5 material red transform { scale <1, 1.5, 1> "
-                "rotate <0, 0, 20> translate <0.3, 0.1, 0> } }\n",
-                "object ball sphere { center <0.2, 0.5, 0> radius 0.5 material red }\n"
-                "object instance { of ball transform { scale <1, 1.5, 1> rotate <0, 0, 20> translate <0.3, 0.1, 0> } }\n",
-                1e-4, 0.0);
+    expect_same(
+        "object sphere { center <0.2, 0.5, 0> radius 0.5 material red transform { scale <1, 1.5, 1> "
+        "rotate <0, 0, 20> translate <0.3, 0.1, 0> } }\n",
+        "object ball sphere { center <0.2, 0.5, 0> radius 0.5 material red }\n"
+        "object instance { of ball transform { scale <1, 1.5, 1> rotate <0, 0, 20> translate <0.3, 0.1, 0> } }\n",
+        1e-4, 0.0);
     /* a box and a quad in a group, placed by an instance with a material override */
     expect_same("object box { min <-0.5, 0, -0.5> max <0.5, 1, 0.5> material red transform { rotate <0, 35, 0> "
                 "translate <-0.6, 0, 0> } }\n"
@@ -125,7 +126,8 @@ static void test_mesh_instance(void **state)
     (void)state;
     char *obj = write_temp("tri.obj", "v -0.5 0 0\nv 0.5 0 0\nv 0 1 0\nv 0 0.5 -0.5\nf 1 2 3\nf 1 3 4\nf 2 4 3\n");
     char a[1024], b[1024];
-    snprintf(a, sizeof a, "object mesh { file \"%s\" material red transform { scale 1.5 translate <0.2, 0, 0.5> } }\n", obj);
+    snprintf(a, sizeof a, "object mesh { file \"%s\" material red transform { scale 1.5 translate <0.2, 0, 0.5> } }\n",
+             obj);
     snprintf(b, sizeof b, "object m mesh { file \"%s\" material red }\n"
              "object instance { of m transform { scale 1.5 translate <0.2, 0, 0.5> } }\n", obj);
     expect_same(a, b, 1e-3, 0.003);

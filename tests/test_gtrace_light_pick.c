@@ -2,10 +2,10 @@
  * the probabilities are the lights' powers over their sum (a black light left out), the alias table chooses each as
  * often (stratified numbers: within one choice in 20,000) and what is left of the number is uniform; one light
  * sample a vertex in the path tracer keeps the expected value: LIGHT_PICK_EVERY_MAX + 44 point lights of powers spread
- * over 50:1 light a floor as the Whitted tracer's sum over every light does (whole image within 1%, four patches within 2%), and an
- * emitter quad, a rectangle, a sphere and point lights together equal the Whitted tracer's estimate (every light
- * sampled, 1.5%), both with 3 point lights (the path tracer samples every light) and with LIGHT_PICK_EVERY_MAX of them
- * (one chosen: multiple importance sampling with the choice's probability in both densities); the particle
+ * over 50:1 light a floor as the Whitted tracer's sum over every light does (whole image within 1%, four patches within
+ * 2%), and an emitter quad, a rectangle, a sphere and point lights together equal the Whitted tracer's estimate (every
+ * light sampled, 1.5%), both with 3 point lights (the path tracer samples every light) and with LIGHT_PICK_EVERY_MAX of
+ * them (one chosen: multiple importance sampling with the choice's probability in both densities); the particle
  * integrators (SPPM, light tracing) that choose their emitting light from the same table agree with it too; the
  * image with many lights does not depend on the thread count. Images are tiny. */
 #include "test_gtrace_common.h"

@@ -28,10 +28,11 @@ static void obj_text(char *out, size_t size)
 
 static void ply_text(char *out, size_t size)
 {
-    int n = snprintf(out, size,
-                     "ply\nformat ascii 1.0\ncomment a bent quad\nelement vertex 4\nproperty float x\nproperty float y\n"
-                     "property float z\nproperty float nx\nproperty float ny\nproperty float nz\nproperty float s\n"
-                     "property float t\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n");
+    int n =
+        snprintf(out, size,
+                 "ply\nformat ascii 1.0\ncomment a bent quad\nelement vertex 4\nproperty float x\nproperty float y\n"
+                 "property float z\nproperty float nx\nproperty float ny\nproperty float nz\nproperty float s\n"
+                 "property float t\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n");
     for (int i = 0; i < 4; i++)
         n += snprintf(out + n, size - (size_t)n, "%g %g %g %g %g %g %g %g\n", P[i][0], P[i][1], P[i][2], N[i][0],
                       N[i][1], N[i][2], UV[i][0], UV[i][1]);

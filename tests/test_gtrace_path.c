@@ -68,7 +68,8 @@ static double furnace_ratio(const char *model, GMaterial *(*make)(const Scene *,
     add_sphere(s, make(s, param), gvec3(0, 0, 0), 1.0);
     Framebuffer fb;
     render_with(s, 12, 12, 256, 16, 2, RENDER_PATH, &fb);
-    double bg = (luma(pixel(&fb, 0, 0)) + luma(pixel(&fb, 11, 0)) + luma(pixel(&fb, 0, 11)) + luma(pixel(&fb, 11, 11))) / 4;
+    double bg =
+        (luma(pixel(&fb, 0, 0)) + luma(pixel(&fb, 11, 0)) + luma(pixel(&fb, 0, 11)) + luma(pixel(&fb, 11, 11))) / 4;
     double in = mean_luma(&fb, 4, 4, 8, 8);
     print_message("%s: background %.5f, sphere %.5f, ratio %.5f\n", model, bg, in, in / bg);
     assert_true(bg > 0.5);

@@ -148,10 +148,11 @@ static void test_constant_probe(void **state)
         for (size_t t = 0; t < sizeof constant_settings / sizeof *constant_settings; t++) {
             if (m == 1 && t != 2 && t != 4)
                 continue; /* the spectral model: one technique and the reference are enough */
-            snprintf(text, sizeof text,
-                     "light probe { file \"%s\" %s }\n"
-                     "object plane { point <0, 0, 0> normal <0, 0, 1> material lambert { reflectance rgb %g %g %g } }\n",
-                     probe, constant_settings[t], rho, rho, rho);
+            snprintf(
+                text, sizeof text,
+                "light probe { file \"%s\" %s }\n"
+                "object plane { point <0, 0, 0> normal <0, 0, 1> material lambert { reflectance rgb %g %g %g } }\n",
+                probe, constant_settings[t], rho, rho, rho);
             Scene *s = load_ok(text, models[m], NULL);
             double rgb[3], sky[3];
             trace_rgb(s, gvec3(0.3, 0.2, 3.0), gvec3(0, 0, -1), t == 4 ? 16 : 1, rgb);
@@ -251,7 +252,8 @@ static double render_mean(Scene *s, int integrator, int spp)
 /* One bright pixel over a Lambert plane, seen from above: the plane's radiance is rho / pi * Q * cos, Q the
  * pixel's weight (its irradiance perpendicular to it). Path tracing gets it from the directional light that
  * mediancut count 1 makes (NEE; when rays leaving the plane also saw the probe, its light was counted twice:
- * measured 1.84x at 256 spp) and from the reference's estimator (NEE by the probe's distribution, MIS), as Whitted does. */
+ * measured 1.84x at 256 spp) and from the reference's estimator (NEE by the probe's distribution, MIS), as Whitted
+ * does. */
 static void test_path_probe_lights(void **state)
 {
     (void)state;

@@ -265,7 +265,8 @@ static void test_refusals(void **state)
     assert_int_equal(access(out, F_OK), -1);
     tu_in_dir(dir, "huge.exr", out, sizeof out);
     snprintf(args, sizeof args,
-             "examples/scenes/cornell.scene --colormodel spectrum --width 65536 --height 65536 --spectral -o '%s'", out);
+             "examples/scenes/cornell.scene --colormodel spectrum --width 65536 --height 65536 --spectral -o '%s'",
+             out);
     assert_int_equal(run_gtrace(args, log, sizeof log), 1);
     assert_non_null(strstr(log, "more than the memory limit"));
     assert_int_equal(access(out, F_OK), -1);

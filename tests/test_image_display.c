@@ -1,5 +1,5 @@
-/* test_image_display.c - display transforms through OpenColorIO (GImageDisplay, generic/services/image.h) with the config
- * libgeneric ships (share/ocio/config.ocio): its Standard view writes what the default sRGB path writes within
+/* test_image_display.c - display transforms through OpenColorIO (GImageDisplay, generic/services/image.h) with the
+ * config libgeneric ships (share/ocio/config.ocio): its Standard view writes what the default sRGB path writes within
  * 1/255, Raw the linear values clamped, Log its 12 stops; unknown displays and views are refused naming the valid
  * ones, broken, missing and non-regular config files cleanly; and gtrace --display sRGB --view Standard renders
  * the default PNG within 1/255 (the Cornell box). */
@@ -129,10 +129,11 @@ static void test_bad_names_and_configs(void **state)
     assert_int_equal(gimage_display_check(&d, NULL, 0, &err), G_ERR_NOTFOUND);
     assert_non_null(strstr(err.message, "its displays: sRGB"));
     char bad[256];
-    assert_int_equal(tu_write_file(tu_in_dir(dir, "bad.ocio", bad, sizeof bad), "ocio_profile_version: 2\nroles: [\n"), 0);
-    const char *broken[] = {"ocio_profile_version: 2\nroles: [\n", "ocio_profile_version: 7\n",
-                            "ocio_profile_version: 2\ndisplays:\n  sRGB:\n    - !<View> {name: X, colorspace: nowhere}\n",
-                            ""};
+    assert_int_equal(tu_write_file(tu_in_dir(dir, "bad.ocio", bad, sizeof bad), "ocio_profile_version: 2\nroles: [\n"),
+                     0);
+    const char *broken[] = {
+        "ocio_profile_version: 2\nroles: [\n", "ocio_profile_version: 7\n",
+        "ocio_profile_version: 2\ndisplays:\n  sRGB:\n    - !<View> {name: X, colorspace: nowhere}\n", ""};
     for (size_t i = 0; i < sizeof broken / sizeof *broken; i++) {
         assert_int_equal(tu_write_file(bad, broken[i]), 0);
         d = (GImageDisplay){.config = bad};

@@ -61,7 +61,8 @@ static uint32_t crc32_of(const unsigned char *p, size_t n, uint32_t c)
 
 static void put32(FILE *f, uint32_t v)
 {
-    unsigned char b[4] = {(unsigned char)(v >> 24), (unsigned char)(v >> 16), (unsigned char)(v >> 8), (unsigned char)v};
+    unsigned char b[4] = {(unsigned char)(v >> 24), (unsigned char)(v >> 16), (unsigned char)(v >> 8),
+                          (unsigned char)v};
     fwrite(b, 1, 4, f);
 }
 

@@ -314,7 +314,8 @@ static void scale_unbiased(void **state)
 
 static void transform_unbiased(void **state)
 {
-    run_node(state, "node n transform { child interpolate { a a  b b  t checker { frequency 4 } }  uv { translate 0.2 0 } }");
+    run_node(state,
+             "node n transform { child interpolate { a a  b b  t checker { frequency 4 } }  uv { translate 0.2 0 } }");
 }
 
 /* lambert: every weight is rho exactly, every direction above the surface with pdf cos / pi. */
@@ -369,7 +370,8 @@ static void delta_lobes(void **state)
     case_open(&c, *state, "material m dielectric { index 1.5 }", "m");
     assert_int_equal(gcolor_alloc(&w, c.model), G_OK);
     double ci = cos(45 * DEG), eta = 1.0 / 1.5, st = eta * sin(45 * DEG), ct = sqrt(1.0 - st * st);
-    double rs = (eta * ci - ct) / (eta * ci + ct), rp = (ci - eta * ct) / (ci + eta * ct), F = 0.5 * (rs * rs + rp * rp);
+    double rs = (eta * ci - ct) / (eta * ci + ct), rp = (ci - eta * ct) / (ci + eta * ct),
+           F = 0.5 * (rs * rs + rp * rp);
     assert_int_equal(gmaterial_sample(c.m, &c.sp, out, &c.ri, 0.5 * F, 0.5, &s, &w), 1);
     assert_int_equal(s.flags, GSAMPLE_REFLECT | GSAMPLE_DELTA);
     assert_true(fabs(s.pdf - F) < 1e-4);

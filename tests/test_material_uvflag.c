@@ -32,26 +32,36 @@ static const struct {
     {"glass", 1, "material glass dielectric { index 1.5 }"},
     {"ph", 1, "material ph phong { diffuse rgb 0.6 0.3 0.1 specular rgb 0.3 0.3 0.3 exponent 80 }"},
     {"glow", 1, "material glow emitter { radiance rgb 1 1 1 }"},
-    {"checker3", 1, "material checker3 interpolate { a " GREY(0.8) " b " GREY(0.1) " t checker { dims 3 frequency 3 } }"},
-    {"wood", 1, "material wood spline { t wood { space object frequency 6 rings 6 turbulence 0.1 } basis linear "
-                "colors { 0 rgb 0.75 0.5 0.25  1 rgb 0.4 0.22 0.08 } }"},
+    {"checker3", 1,
+     "material checker3 interpolate { a " GREY(0.8) " b " GREY(0.1) " t checker { dims 3 frequency 3 } }"},
+    {"wood", 1,
+     "material wood spline { t wood { space object frequency 6 rings 6 turbulence 0.1 } basis linear "
+     "colors { 0 rgb 0.75 0.5 0.25  1 rgb 0.4 0.22 0.08 } }"},
     {"faces", 1, "material faces select { index surface children { " GREY(0.2) " " GREY(0.8) " } }"},
     {"fbm", 1, "material fbm scale { child " GREY(0.85) " factor fbm { space object frequency 4 } }"},
-    {"moved", 1, "material moved transform { child spline { t marble { space object frequency 2 stripes 2 turbulence 1 } "
-                 "basis linear colors { 0 rgb 0.9 0.9 0.9  1 rgb 0.2 0.2 0.2 } } uv { rotate 30 scale 0.5 } }"},
-    {"glassy", 1, "material glassy interpolate { a dielectric { index 1.3 } b mirror { } t checker { dims 3 frequency 2 } }"},
-    {"checker2", 0, "material checker2 interpolate { a " GREY(0.8) " b " GREY(0.1) " t checker { dims 2 frequency 3 } }"},
-    {"moved2", 0, "material moved2 transform { child interpolate { a " GREY(0.8) " b " GREY(0.1)
-                  " t checker { dims 2 frequency 4 } } uv { rotate 30 scale 0.5 } }"},
+    {"moved", 1,
+     "material moved transform { child spline { t marble { space object frequency 2 stripes 2 turbulence 1 } "
+     "basis linear colors { 0 rgb 0.9 0.9 0.9  1 rgb 0.2 0.2 0.2 } } uv { rotate 30 scale 0.5 } }"},
+    {"glassy", 1,
+     "material glassy interpolate { a dielectric { index 1.3 } b mirror { } t checker { dims 3 frequency 2 } }"},
+    {"checker2", 0,
+     "material checker2 interpolate { a " GREY(0.8) " b " GREY(0.1) " t checker { dims 2 frequency 3 } }"},
+    {"moved2", 0,
+     "material moved2 transform { child interpolate { a " GREY(0.8) " b " GREY(0.1)
+     " t checker { dims 2 frequency 4 } } uv { rotate 30 scale 0.5 } }"},
     {"bumped", 0, "material bumped bump { child " GREY(0.6) " height fbm { space object frequency 6 } strength 0.06 }"},
-    {"over_uv", 0, "material over_uv spline { t wood { space object frequency 6 rings 6 } basis linear children { "
-                   GREY(0.3) " interpolate { a " GREY(0.8) " b " GREY(0.1) " t checker { dims 2 frequency 3 } } } }"},
+    {"over_uv", 0,
+     "material over_uv spline { t wood { space object frequency 6 rings 6 } basis linear children { " GREY(0.3)
+     " interpolate { a " GREY(0.8) " b " GREY(0.1) " t checker { dims 2 frequency 3 } } } }"},
 };
 enum { NCASES = sizeof cases / sizeof *cases };
 
 static unsigned long long seed = 99;
 static double uniform(void) { return tu_uniform(&seed); }
-static GVec3 random_vec(double s) { return gvec3(s * (2 * uniform() - 1), s * (2 * uniform() - 1), s * (2 * uniform() - 1)); }
+static GVec3 random_vec(double s)
+{
+    return gvec3(s * (2 * uniform() - 1), s * (2 * uniform() - 1), s * (2 * uniform() - 1));
+}
 
 /* A point on a plane at p with the parametrisation set at random (with_uv) or zero, as a renderer leaves it. */
 static void point_at(GSurfPoint *sp, const GColorModel *m, GScratch *s, const GMaterial *mat, GVec3 p, int below,
@@ -112,7 +122,8 @@ static double largest_gap(const GColorModel *m, const GMaterial *mat)
             int ra, rz;
             GVec3 o = method == 1 ? gvec3(-out.x, -out.y, -out.z) : out;
             if (method == 0)
-                ra = gmaterial_reflection(mat, &a, in, &white, o, &ca), rz = gmaterial_reflection(mat, &z, in, &white, o, &cz);
+                ra = gmaterial_reflection(mat, &a, in, &white, o, &ca),
+                rz = gmaterial_reflection(mat, &z, in, &white, o, &cz);
             else if (method == 1)
                 ra = gmaterial_refraction(mat, &a, in, &white, &ri, o, &ca),
                 rz = gmaterial_refraction(mat, &z, in, &white, &ri, o, &cz);

@@ -131,7 +131,8 @@ static void test_hemisphere_moments(void **state)
     for (int kind = 0; kind < 2; kind++) {
         double m1 = 0.0, m2 = 0.0;
         for (int i = 0; i < N; i++) {
-            GVec3 d = kind ? goptics_sample_hemisphere(n, rnd(&s), rnd(&s)) : goptics_sample_cosine(n, rnd(&s), rnd(&s));
+            GVec3 d =
+                kind ? goptics_sample_hemisphere(n, rnd(&s), rnd(&s)) : goptics_sample_cosine(n, rnd(&s), rnd(&s));
             assert_true(fabs(gvec3_length(d) - 1.0) < 1e-12);
             double c = gvec3_dot(d, n);
             assert_true(c >= 0.0);

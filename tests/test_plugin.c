@@ -106,7 +106,8 @@ static void test_load_from_text_and_use(void **state)
     assert_string_equal(gmaterial_name(smooth), "oren_nayar");
     /* sigma 0 is Lambert: rho / pi * cos(theta_in) */
     double ti = 40 * M_PI / 180, to = 60 * M_PI / 180;
-    GVec3 in = gvec3(sin(ti), 0, cos(ti)), out_back = gvec3(-sin(to), 0, cos(to)), out_retro = gvec3(sin(to), 0, cos(to));
+    GVec3 in = gvec3(sin(ti), 0, cos(ti)), out_back = gvec3(-sin(to), 0, cos(to)),
+          out_retro = gvec3(sin(to), 0, cos(to));
     sp.material = smooth;
     assert_int_equal(gmaterial_reflection(smooth, &sp, in, &illum, out_back, &out), G_OK);
     assert_near(ov[0], 0.5 / M_PI * cos(ti), 1e-6);

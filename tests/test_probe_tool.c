@@ -148,8 +148,8 @@ static void test_approx_writes_lights(void **state)
         while (fgets(line, sizeof line, f)) {
             if (line[0] == '#')
                 continue;
-            assert_int_equal(sscanf(line, "light directional { direction %lf %lf %lf irradiance rgb %lf %lf %lf }", &d[0],
-                                    &d[1], &d[2], &c[0], &c[1], &c[2]),
+            assert_int_equal(sscanf(line, "light directional { direction %lf %lf %lf irradiance rgb %lf %lf %lf }",
+                                    &d[0], &d[1], &d[2], &c[0], &c[1], &c[2]),
                              6);
             n++;
         }
@@ -244,9 +244,10 @@ static void test_report(void **state)
     char path[600], rdir[600], args[2600], file[1400];
     write_probe("r.exr", 0.5f, path);
     in_dir("report", rdir);
-    snprintf(args, sizeof args,
-             "report --probe '%s' -o '%s' --size 8 --normals 400 --counts 4 --techniques adaptive,sh,sg-ls,ambientcube -q",
-             path, rdir);
+    snprintf(
+        args, sizeof args,
+        "report --probe '%s' -o '%s' --size 8 --normals 400 --counts 4 --techniques adaptive,sh,sg-ls,ambientcube -q",
+        path, rdir);
     assert_int_equal(run(NULL, args, out, sizeof out), 0);
     const char *names[] = {"index.html", "report.md", "errors.csv", "images/error-scale.png",
                            "images/reference-radiance.png", "images/reference-irradiance.png",

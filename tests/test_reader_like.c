@@ -207,7 +207,8 @@ static void test_like_errors(void **state)
     load_fails("material a phong { diffuse rgb 0.6 0.6 0.6 specular rgb 0.3 0.3 0.3 }\n"
                "material b like a { mirror rgb 0.3 0.3 0.3 }\n",
                "t.mat:2:17: phong: kd + ks + mirror is 1.2 at sample 0; it must not exceed 1 (energy conservation)");
-    load_fails("material a like b\n", "t.mat:1:17: 'like b': no material 'b' is defined before this line (defined: none)");
+    load_fails("material a like b\n",
+               "t.mat:1:17: 'like b': no material 'b' is defined before this line (defined: none)");
     load_fails("material a lambert\nmaterial like a\n",
                "t.mat:2:10: 'like' needs the new entry's name before it: material NAME like BASE { ... }");
     load_fails("material a lambert\nmaterial b a\nmaterial c like b\n",
@@ -236,8 +237,9 @@ static void test_like_across_files(void **state)
     GError err;
     assert_true(greader_load_file(main_path, NULL, &lib, &err) < 0);
     char want[1600];
-    snprintf(want, sizeof want, "%s:2:18: pair: a = 2 must be below b = 1 (inherited by object 'p2' via 'like' at %s:2:8)",
-             path, main_path);
+    snprintf(want, sizeof want,
+             "%s:2:18: pair: a = 2 must be below b = 1 (inherited by object 'p2' via 'like' at %s:2:8)", path,
+             main_path);
     assert_string_equal(err.message, want);
     /* a second file loaded into the library derives from the first's entries */
     assert_int_equal(tu_write_file(main_path, "object p2 like p1 { b 4 }\n"), 0);

@@ -357,7 +357,8 @@ static void test_many_entries(void **state)
         char want[16];
         snprintf(want, sizeof want, "n%d", i);
         assert_non_null(glibrary_entry(lib, GKIND_NODE, i, &name, NULL));
-        found += strcmp(name, want) == 0 && glibrary_material(lib, want) == glibrary_entry(lib, GKIND_NODE, i, NULL, NULL);
+        found +=
+            strcmp(name, want) == 0 && glibrary_material(lib, want) == glibrary_entry(lib, GKIND_NODE, i, NULL, NULL);
     }
     assert_int_equal(found, N);
     assert_null(glibrary_entry(lib, GKIND_NODE, N, NULL, NULL));

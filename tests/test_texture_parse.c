@@ -91,14 +91,16 @@ static void test_interpolate_checker(void **state)
 static void test_select_spline_bump_scale(void **state)
 {
     Fix *f = *state;
-    load(f, "node faces select { index surface children {\n"
-            "    lambert { reflectance rgb 0.2 0 0 } lambert { reflectance rgb 0.4 0 0 } lambert { reflectance rgb 0.6 0 0 } } }\n"
-            "node bands spline { t gradient { space uv slope 1 0 0 } basis linear children {\n"
-            "    lambert { reflectance rgb 0 0 0 } lambert { reflectance rgb 0.8 0.8 0.8 } } }\n"
-            "node bumpy bump { child bands height gradient { slope 0.5 0 0 } strength 2 }\n"
-            "node dim scale { child bands factor constant { value 0.5 } }\n"
-            "node glass interpolate-one { method refraction_index a dielectric { index 1.5 } b dielectric { index 1.3 }\n"
-            "    t constant { value 0.5 } }\n");
+    load(f,
+         "node faces select { index surface children {\n"
+         "    lambert { reflectance rgb 0.2 0 0 } lambert { reflectance rgb 0.4 0 0 } lambert { reflectance rgb 0.6 0 "
+         "0 } } }\n"
+         "node bands spline { t gradient { space uv slope 1 0 0 } basis linear children {\n"
+         "    lambert { reflectance rgb 0 0 0 } lambert { reflectance rgb 0.8 0.8 0.8 } } }\n"
+         "node bumpy bump { child bands height gradient { slope 0.5 0 0 } strength 2 }\n"
+         "node dim scale { child bands factor constant { value 0.5 } }\n"
+         "node glass interpolate-one { method refraction_index a dielectric { index 1.5 } b dielectric { index 1.3 }\n"
+         "    t constant { value 0.5 } }\n");
     GMaterial *faces = glibrary_material(f->lib, "faces");
     GSurfPoint sp;
     plane_point(&sp, glibrary_colormodel(f->lib), f->scratch, 0, 0);
@@ -131,7 +133,8 @@ static void test_shapes_from_text(void **state)
             "    weights { 1 0.7071067811865476 1 0.7071067811865476 1 0.7071067811865476 1 0.7071067811865476 1 }\n"
             "    knots { 0 0 0 0.25 0.25 0.5 0.5 0.75 0.75 1 1 1 } } } }\n"
             "generator blob cpg { shape transform { scale 2 translate 1 0 } path {\n"
-            "    lines { 0 -1 } bezier { 0 -1  1 -1  1 1  0 1 } bspline { degree 2 points { 0 1  -1 1  -1 -1  0 -1 } } } }\n"
+            "    lines { 0 -1 } bezier { 0 -1  1 -1  1 1  0 1 } bspline { degree 2 points { 0 1  -1 1  -1 -1  0 -1 } } "
+            "} }\n"
             "generator star cpg { shape polygon { 0 1  0.588 -0.809  -0.951 0.309  0.951 0.309  -0.588 -0.809 } }\n"
             "generator solid csg { shape difference { box -1 -1 -1 1 1 1  transform { translate 1 1 1 } sphere 1 } }\n"
             "node r interpolate { a out b in t ring }\n"

@@ -55,7 +55,10 @@ static double shaded(double rho, double nx, double ny, double nz)
     return rho * (0.85 * fmax(c, 0.0) + 0.15);
 }
 
-static double pixel(const GImage *img, int x, int y) { return img->pixels[((size_t)y * img->width + x) * img->channels]; }
+static double pixel(const GImage *img, int x, int y)
+{
+    return img->pixels[((size_t)y * img->width + x) * img->channels];
+}
 
 /* Renders a swatch of material with the given options into png and reads it back. */
 static void render(const char *material, const char *options, GImage *img)

@@ -122,8 +122,8 @@ static int solid(GReader *r, int depth, GCsgShape **out, GError *err)
             rc = greader_number(r, &a[i], err);
         if (rc != G_OK)
             return rc;
-        return located(r, k == 2 ? gcsg_cylinder(a[0], a[1], a[2], out, err) : gcsg_cone(a[0], a[1], a[2], a[3], out, err),
-                       err);
+        return located(
+            r, k == 2 ? gcsg_cylinder(a[0], a[1], a[2], out, err) : gcsg_cone(a[0], a[1], a[2], a[3], out, err), err);
     case 4:
         rc = greader_vec3(r, &p, err);
         if (rc == G_OK)

@@ -52,7 +52,8 @@ static void usage(FILE *f)
     gregistry_names(GKIND_COLORMODEL, models, sizeof models);
     fprintf(f,
             "usage: gtrace SCENE -o OUT [--width W] [--height H] [--spp N] [--depth D] [--max-rays N]\n"
-            "              [--colormodel M] [--threads N] [--cutoff W] [--bands K] [--exposure STOPS] [--plugin FILE.so]... [-q]\n"
+            "              [--colormodel M] [--threads N] [--cutoff W] [--bands K] [--exposure STOPS]\n"
+            "              [--plugin FILE.so]... [-q]\n"
             "              [--allow-plugins] [--confine DIR]\n"
             "              [--probe FILE] [--probe-technique T] [--probe-count N] [--probe-samples N]\n"
             "              [--probe-scale S] [--probe-shadows on|off] [--crop X0,Y0,X1,Y1]\n"
@@ -167,9 +168,9 @@ static void usage(FILE *f)
 
 enum {
     OPT_WIDTH = CLI_FIRST_OWN, OPT_HEIGHT, OPT_SPP, OPT_DEPTH, OPT_MAX_RAYS, OPT_THREADS, OPT_COLORMODEL,
-    OPT_EXPOSURE, OPT_CUTOFF, OPT_CROP, OPT_BANDS, OPT_INTEGRATOR, OPT_PROBE, OPT_PROBE_TECHNIQUE, OPT_PROBE_COUNT, OPT_PROBE_SAMPLES,
-    OPT_PROBE_SHADOWS, OPT_PROBE_SCALE, OPT_WAVES, OPT_DISPLAY, OPT_VIEW, OPT_OCIO_CONFIG, OPT_MPI_BLOCK,
-    OPT_MPI_TIMEOUT, OPT_MPI_DEDICATED, OPT_PASSES, OPT_PHOTONS, OPT_RADIUS, OPT_ALPHA, OPT_SAMPLER,
+    OPT_EXPOSURE, OPT_CUTOFF, OPT_CROP, OPT_BANDS, OPT_INTEGRATOR, OPT_PROBE, OPT_PROBE_TECHNIQUE, OPT_PROBE_COUNT,
+    OPT_PROBE_SAMPLES, OPT_PROBE_SHADOWS, OPT_PROBE_SCALE, OPT_WAVES, OPT_DISPLAY, OPT_VIEW, OPT_OCIO_CONFIG,
+    OPT_MPI_BLOCK, OPT_MPI_TIMEOUT, OPT_MPI_DEDICATED, OPT_PASSES, OPT_PHOTONS, OPT_RADIUS, OPT_ALPHA, OPT_SAMPLER,
     OPT_EQUIANGULAR, OPT_ILLUMINANT
 };
 
@@ -608,9 +609,11 @@ static void report(const Options *o, const Scene *scene, const RenderSettings *r
                    const RenderStats *st, int ranks)
 {
     if (st->capped)
-        fprintf(stderr, "gtrace: warning: %llu camera samples reached the limit of %d reflected and refracted "
+        fprintf(stderr,
+                "gtrace: warning: %llu camera samples reached the limit of %d reflected and refracted "
                 "rays per sample; their deeper branches were not traced (raise --cutoff, lower --depth, or "
-                "raise --max-rays)\n", (unsigned long long)st->capped, rs->max_rays > 0 ? rs->max_rays : RENDER_DEFAULT_MAX_RAYS);
+                "raise --max-rays)\n",
+                (unsigned long long)st->capped, rs->max_rays > 0 ? rs->max_rays : RENDER_DEFAULT_MAX_RAYS);
     if (st->nonfinite)
         fprintf(stderr, "gtrace: warning: %llu samples were NaN or infinite and were replaced by black\n",
                 (unsigned long long)st->nonfinite);

@@ -137,7 +137,8 @@ struct GColorModel {
  * reflectance, the definition below): brightness.
  * Optional (NULL = the default of lib/color/color.c, which reads a vector as nvalues independent samples, as add and
  * scale treat it): fill, exp_scaled, axpy. A model whose vectors are not plain samples, or that has matrices, gives
- * its own. Optional (NULL = one band, no dispersion): band_count, band_mask, band_value. Operations get valid operands of this model (the dispatch checks models); `out` may alias them. */
+ * its own. Optional (NULL = one band, no dispersion): band_count, band_mask, band_value. Operations get valid operands
+ * of this model (the dispatch checks models); `out` may alias them. */
 struct GColorModelClass {
     int abi_version;         /**< GCOLOR_ABI_VERSION */
     const char *name;        /**< type keyword, e.g. "spectrum" */
@@ -189,10 +190,11 @@ struct GColorModelClass {
 /* ---- models ---- */
 
 /** Creates a model by registered name with options (NULL = defaults). */
-GENERIC_API GENERIC_NODISCARD int gcolormodel_create(const char *name, const GColorModelOptions *opt, GColorModel **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gcolormodel_create(const char *name, const GColorModelOptions *opt, GColorModel **out,
+                                                     GError *err);
 /** Creates a model from a class directly (used by plug-ins and tests). */
-GENERIC_API GENERIC_NODISCARD int gcolormodel_create_class(const GColorModelClass *cls, const GColorModelOptions *opt, GColorModel **out,
-                             GError *err);
+GENERIC_API GENERIC_NODISCARD int gcolormodel_create_class(const GColorModelClass *cls, const GColorModelOptions *opt,
+                                                           GColorModel **out, GError *err);
 /** Frees a model; NULL is a no-op. Colours of the model must not be used afterwards. */
 GENERIC_API void gcolormodel_destroy(GColorModel *m);
 /** The model's type keyword. */
@@ -346,8 +348,8 @@ GENERIC_API GENERIC_NODISCARD int gcolor_from_reradiation(GColor *c, const GRera
  * two whose colour is inside the gamut. A plain reflectance (a diagonal matrix) reduces to a matrix whose response
  * to white is its reflectance. G_ERR_UNSUPPORTED when the model holds no n x n matrix (capacity < n^2, or n > 16)
  * or cannot convert a unit light; G_ERR_INVALID for more than 1024 emission samples. */
-GENERIC_API GENERIC_NODISCARD int gcolormodel_reduce_reradiation(const GColorModel *m, const GReradiation *r, GColor *out,
-                                                                 GError *err);
+GENERIC_API GENERIC_NODISCARD int gcolormodel_reduce_reradiation(const GColorModel *m, const GReradiation *r,
+                                                                 GColor *out, GError *err);
 /** Converts a value of one model into another (through a direct formula or the nm spectrum). */
 GENERIC_API GENERIC_NODISCARD int gcolor_convert(GColor *dst, const GColor *src, GColorRole role);
 

@@ -33,9 +33,10 @@ typedef struct GError {
     char message[512];
 } GError;
 
-/** Sets code and a printf-style message, with no position and no parameter; err may be NULL. Returns code so callers can `return gerror_set(...)`.
- * The message is safe to print: control characters (ESC, newlines, ...), UTF-8 C1 controls and bytes that are not
- * well-formed UTF-8 are written as escapes (\n, \t, \r, \xNN); other text is kept as it is. */
+/** Sets code and a printf-style message, with no position and no parameter; err may be NULL. Returns code so callers
+ * can `return gerror_set(...)`. The message is safe to print: control characters (ESC, newlines, ...), UTF-8 C1
+ * controls and bytes that are not well-formed UTF-8 are written as escapes (\n, \t, \r, \xNN); other text is kept as it
+ * is. */
 GENERIC_API int gerror_set(GError *err, int code, const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 3, 4)))

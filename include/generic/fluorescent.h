@@ -65,8 +65,8 @@ GENERIC_API void gfluor_bands_default(GFluorBands *b);
 GENERIC_API GENERIC_NODISCARD int gfluor_bands_check(const GFluorBands *b, GError *err);
 /** Makes the matrix of b on the square grid min_nm + k * step_nm, k = 0..n-1 (in and out alike) into new
  * storage (free it with gfluor_matrix_free). */
-GENERIC_API GENERIC_NODISCARD int gfluor_matrix_create(const GFluorBands *b, double min_nm, double step_nm, int n, GReradiation *out,
-                         GError *err);
+GENERIC_API GENERIC_NODISCARD int gfluor_matrix_create(const GFluorBands *b, double min_nm, double step_nm, int n,
+                                                       GReradiation *out, GError *err);
 /** Copies only the main diagonal of src (the entries whose excitation and emission wavelengths coincide;
  * negatives clamped to 0) into a new matrix on src's grid: a non-fluorescent version of the same pigment. */
 GENERIC_API GENERIC_NODISCARD int gfluor_matrix_diagonal(const GReradiation *src, GReradiation *out, GError *err);
@@ -117,8 +117,8 @@ GENERIC_API void gfluor_phong_default(GFluorPhongParams *p);
  * colsum(M) <= 1 for a conserving M. diffuse() is (1 - ks) M; ambient() is ((1 - ks) M + ks d) illum.
  * In rgb M arrives reduced to a 3 x 3 matrix, in spectrum9 and spectrum folded into a reflectance, and d as a
  * reflectance: nothing changes in the code. `matrix` may be freed after the call. */
-GENERIC_API GENERIC_NODISCARD int gfluor_phong_create(const GColorModel *model, const GReradiation *matrix, const GFluorPhongParams *params,
-                        GMaterial **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gfluor_phong_create(const GColorModel *model, const GReradiation *matrix,
+                                                      const GFluorPhongParams *params, GMaterial **out, GError *err);
 
 /** Parameters of fluorescent-varnish. */
 typedef struct GFluorVarnishParams {
@@ -140,8 +140,9 @@ GENERIC_API void gfluor_varnish_default(GFluorVarnishParams *p);
  * diffuse light inside the varnish that the top boundary sends back to the base. Reciprocal, and energy
  * conserving for a conserving M. diffuse() is the base part's albedo for diffuse light; ambient() is
  * diffuse() times illum. `matrix` may be freed after the call. */
-GENERIC_API GENERIC_NODISCARD int gfluor_varnish_create(const GColorModel *model, const GReradiation *matrix, const GFluorVarnishParams *params,
-                          GMaterial **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gfluor_varnish_create(const GColorModel *model, const GReradiation *matrix,
+                                                        const GFluorVarnishParams *params, GMaterial **out,
+                                                        GError *err);
 
 #ifdef __cplusplus
 }

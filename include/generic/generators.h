@@ -32,21 +32,24 @@ GENERIC_API GENERIC_NODISCARD int ggenerator_turbulence_create(const GNoiseParam
 /** wood: rings around the space's z axis, `rings` per unit of radius, displaced by `turbulence` rings of
  * fbm; within a ring the value rises smoothly from 0 (early wood) to 1 and falls back over the last
  * `latewood` fraction of the ring (0 < latewood < 1; 0 = default 0.2). Continuous everywhere. */
-GENERIC_API GENERIC_NODISCARD int ggenerator_wood_create(const GNoiseParams *p, double rings, double turbulence, double latewood, GGenerator **out,
-                     GError *err);
+GENERIC_API GENERIC_NODISCARD int ggenerator_wood_create(const GNoiseParams *p, double rings, double turbulence,
+                                                         double latewood, GGenerator **out, GError *err);
 /** marble: 0.5 + 0.5 sin(2 pi (stripes * x + turbulence * T(p))), T Perlin's turbulence: veins across x. */
-GENERIC_API GENERIC_NODISCARD int ggenerator_marble_create(const GNoiseParams *p, double stripes, double turbulence, GGenerator **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int ggenerator_marble_create(const GNoiseParams *p, double stripes, double turbulence,
+                                                           GGenerator **out, GError *err);
 
 /** surface: the surface index of the point (sp->surface), for select nodes. */
 GENERIC_API GENERIC_NODISCARD int ggenerator_surface_create(GGenerator **out, GError *err);
 
 /** gradient: a linear field offset + slope . c, c = (u, v, 0) or the point in object or world space; its
  * gradient is slope (a height field for bump nodes, or a ramp for interpolate). */
-GENERIC_API GENERIC_NODISCARD int ggenerator_gradient_create(GGeneratorSpace space, GVec3 slope, double offset, GGenerator **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int ggenerator_gradient_create(GGeneratorSpace space, GVec3 slope, double offset,
+                                                             GGenerator **out, GError *err);
 
 /** csg: 1 inside the solid, 0 outside, at the point in object (or world) space. Takes ownership of the
  * tree, also when it fails. */
-GENERIC_API GENERIC_NODISCARD int ggenerator_csg_create(GCsgShape *root, GGeneratorSpace space, GGenerator **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int ggenerator_csg_create(GCsgShape *root, GGeneratorSpace space, GGenerator **out,
+                                                        GError *err);
 
 /** cpg: 1 inside the shape, 0 outside, at (u, v). Takes ownership of the tree, also when it fails. */
 GENERIC_API GENERIC_NODISCARD int ggenerator_cpg_create(GCpgShape *root, GGenerator **out, GError *err);

@@ -15,7 +15,8 @@
  * The geometric normal tells the sides: a reflection has in and out on its incident side, a refraction has in on
  * the other. About a shading normal that a bump node tilts, an ideal ray may point back across the surface (a
  * mirror ray into the body); one interface sends no light there, so what such a pair passes on is black
- * (gmaterial_cos_in, material_kit.h; the built-ins all do so), and a sample along it keeps its flag with a black weight.
+ * (gmaterial_cos_in, material_kit.h; the built-ins all do so), and a sample along it keeps its flag with a black
+ * weight.
  *
  * The methods are listed once, in GMATERIAL_METHODS below, each with the default a missing method (a NULL slot)
  * takes.
@@ -217,7 +218,8 @@ struct GMaterialClass {
 /** Fills the header of a new instance (refcount 1; flags: GMAT_NO_EMISSION when the class has no emission slot,
  * GMAT_OPAQUE when it has no opaque slot, GMAT_GEOMETRIC_NORMAL when it has no normal slot); G_ERR_VERSION when
  * the class is of another version. */
-GENERIC_API GENERIC_NODISCARD int gmaterial_init(GMaterial *m, const GMaterialClass *cls, const GColorModel *model, GError *err);
+GENERIC_API GENERIC_NODISCARD int gmaterial_init(GMaterial *m, const GMaterialClass *cls, const GColorModel *model,
+                                                 GError *err);
 /** Adds an owner; returns m. */
 GENERIC_API GMaterial *gmaterial_ref(GMaterial *m);
 /** Drops an owner and destroys the material with the last; NULL is a no-op. */

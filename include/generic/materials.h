@@ -41,7 +41,8 @@ extern "C" {
 
 /** Ideal diffuse reflector with reflectance rho in [0, 1]: f_r = rho / pi, so reflection is
  * rho / pi * cos(theta_in) * illum; diffuse() is rho and ambient() is rho * illum. */
-GENERIC_API GENERIC_NODISCARD int glambert_create(const GColorModel *model, const GColor *reflectance, GMaterial **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int glambert_create(const GColorModel *model, const GColor *reflectance, GMaterial **out,
+                                                  GError *err);
 
 /* ---- phong ---- */
 
@@ -60,14 +61,16 @@ typedef struct GPhongParams {
  * must not exceed 1 in any sample (energy conservation); when one of them is a re-radiation matrix, in what
  * the sum sends out per excitation sample, its column sums (gmaterial_param_check_sum). diffuse() is kd;
  * ambient() reflects (kd + ks + mirror) * illum, the material's albedo at normal incidence. */
-GENERIC_API GENERIC_NODISCARD int gphong_create(const GColorModel *model, const GPhongParams *params, GMaterial **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gphong_create(const GColorModel *model, const GPhongParams *params, GMaterial **out,
+                                                GError *err);
 
 /* ---- mirror ---- */
 
 /** Perfect specular reflector with reflectance R in [0, 1]: reflection_dir is the ideal direction,
  * reflection returns R * illum for an aligned pair and black otherwise. As in the paper's example of a
  * perfect mirror, ambient() reflects R * illum; diffuse() is black. */
-GENERIC_API GENERIC_NODISCARD int gmirror_create(const GColorModel *model, const GColor *reflectance, GMaterial **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gmirror_create(const GColorModel *model, const GColor *reflectance, GMaterial **out,
+                                                 GError *err);
 
 /* ---- dielectric ---- */
 
@@ -147,7 +150,8 @@ GENERIC_API GENERIC_NODISCARD int gdielectric_create_rough(const GColorModel *mo
                                                            const GDielectricRoughness *rough, GMaterial **out,
                                                            GError *err);
 /** The smooth dielectric: gdielectric_create_rough without roughness. */
-GENERIC_API GENERIC_NODISCARD int gdielectric_create(const GColorModel *model, const GDielectricParams *params, GMaterial **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gdielectric_create(const GColorModel *model, const GDielectricParams *params,
+                                                     GMaterial **out, GError *err);
 
 /* ---- thindielectric ---- */
 
@@ -167,8 +171,8 @@ GENERIC_API GENERIC_NODISCARD int gthindielectric_create(const GColorModel *mode
  * on the front of the surface, the object's outside (the side of the geometric normal when
  * sp->entering, the other side when not), or on both sides with two_sided != 0; reflection and
  * diffuse are black. */
-GENERIC_API GENERIC_NODISCARD int gemitter_create(const GColorModel *model, const GColor *radiance, int two_sided, GMaterial **out,
-                    GError *err);
+GENERIC_API GENERIC_NODISCARD int gemitter_create(const GColorModel *model, const GColor *radiance, int two_sided,
+                                                  GMaterial **out, GError *err);
 
 #ifdef __cplusplus
 }

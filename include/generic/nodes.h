@@ -57,16 +57,18 @@ GENERIC_API GENERIC_NODISCARD int gnode_method_from_name(const char *name);
  *     child transmits light).
  * At t = 0 and t = 1 exactly one child is called (the paper's integer fast path). t is clamped to [0, 1]
  * and taken from the generator once per surface point. */
-GENERIC_API GENERIC_NODISCARD int gnode_interpolate_create(GMaterial *a, GMaterial *b, GGenerator *t, GMaterial **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gnode_interpolate_create(GMaterial *a, GMaterial *b, GGenerator *t, GMaterial **out,
+                                                           GError *err);
 
 /** interpolate-one: blends the single method `method` like interpolate and takes every other method from
  * child a (e.g. a spatially varying refraction index in hand-made glass). */
-GENERIC_API GENERIC_NODISCARD int gnode_interpolate_one_create(GMaterial *a, GMaterial *b, GGenerator *t, GNodeMethod method, GMaterial **out,
-                                 GError *err);
+GENERIC_API GENERIC_NODISCARD int gnode_interpolate_one_create(GMaterial *a, GMaterial *b, GGenerator *t,
+                                                               GNodeMethod method, GMaterial **out, GError *err);
 
 /** select: n >= 1 children; the generator's value, rounded down and clamped to [0, n - 1], picks the child
  * that answers every method (e.g. the surface index picks a material per face of a cube). */
-GENERIC_API GENERIC_NODISCARD int gnode_select_create(GMaterial *const *children, int n, GGenerator *index, GMaterial **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gnode_select_create(GMaterial *const *children, int n, GGenerator *index,
+                                                      GMaterial **out, GError *err);
 
 /** Spline bases for the spline node. */
 typedef enum GSplineBasis {
@@ -79,8 +81,8 @@ typedef enum GSplineBasis {
 /** spline: n >= 2 children at t = i / (n - 1) blended by a cubic spline over the generator value t
  * (clamped to [0, 1]; the end children repeat past the ends). At most four children are evaluated per
  * call, and only one where t hits a child's knot (Catmull-Rom, linear). Blending as in interpolate. */
-GENERIC_API GENERIC_NODISCARD int gnode_spline_create(GMaterial *const *children, int n, GGenerator *t, GSplineBasis basis, GMaterial **out,
-                        GError *err);
+GENERIC_API GENERIC_NODISCARD int gnode_spline_create(GMaterial *const *children, int n, GGenerator *t,
+                                                      GSplineBasis basis, GMaterial **out, GError *err);
 
 /** Most keys a spline's ramp may have. */
 #define GSPLINE_MAX_KEYS 1024
@@ -90,8 +92,9 @@ GENERIC_API GENERIC_NODISCARD int gnode_spline_create(GMaterial *const *children
  * children k, k + 1 of the uniform spline, so the linear basis interpolates linearly between the keys and
  * Catmull-Rom passes through every key; below the first key and above the last the end children hold. keys
  * is copied. */
-GENERIC_API GENERIC_NODISCARD int gnode_spline_create_keyed(GMaterial *const *children, const double *keys, int n, GGenerator *t,
-                                                  GSplineBasis basis, GMaterial **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gnode_spline_create_keyed(GMaterial *const *children, const double *keys, int n,
+                                                            GGenerator *t, GSplineBasis basis, GMaterial **out,
+                                                            GError *err);
 
 /** bump: Blinn's bump mapping. The generator is a height field h; the surface is displaced by
  * strength * h along its normal, and the normal method returns the normal of the displaced surface:
@@ -100,13 +103,15 @@ GENERIC_API GENERIC_NODISCARD int gnode_spline_create_keyed(GMaterial *const *ch
  * Pu, Pv = sp->dpdu, sp->dpdv and h_u, h_v from ggenerator_surface_derivatives. On a plane with unit
  * tangents and h = k u, the normal tilts by atan(strength * k). When the tangents are zero or parallel an
  * arbitrary orthonormal frame around n is used. Every other method is the child's. */
-GENERIC_API GENERIC_NODISCARD int gnode_bump_create(GMaterial *child, GGenerator *height, double strength, GMaterial **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gnode_bump_create(GMaterial *child, GGenerator *height, double strength,
+                                                    GMaterial **out, GError *err);
 
 /** scale: the child's colour results that carry light (reflection, refraction, emission, ambient, diffuse)
  * multiplied by the generator's value (e.g. noise as dirt), 0 where that value is negative (noise and gradients
  * go below 0: no light, never negative light); refraction_index, absorption, directions, normal and opaque are
  * the child's. */
-GENERIC_API GENERIC_NODISCARD int gnode_scale_create(GMaterial *child, GGenerator *factor, GMaterial **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gnode_scale_create(GMaterial *child, GGenerator *factor, GMaterial **out,
+                                                     GError *err);
 
 /** transform: the subtree sees its texture coordinates moved: the pattern it generates is moved by
  * `uv` in the (u, v) plane and by `xyz` in object space (either may be NULL for none). A subtree that
@@ -119,8 +124,8 @@ GENERIC_API GENERIC_NODISCARD int gnode_scale_create(GMaterial *child, GGenerato
  * generators below a transform are evaluated once per method call on it. The copy keeps the shading
  * normal computed for the original point (the normal is a world-space quantity). World-space
  * generators and the world point are not moved. */
-GENERIC_API GENERIC_NODISCARD int gnode_transform_create(GMaterial *child, const GAffine2 *uv, const GAffine3 *xyz, GMaterial **out,
-                           GError *err);
+GENERIC_API GENERIC_NODISCARD int gnode_transform_create(GMaterial *child, const GAffine2 *uv, const GAffine3 *xyz,
+                                                         GMaterial **out, GError *err);
 
 /* ---- images (the texture system: texsys.h) ---- */
 
@@ -134,11 +139,13 @@ typedef struct GImageNodeOptions {
 
 /** image: the child's colour results that carry light (as for scale) multiplied by the image's colour at
  * (u, v) (u to the right, v up: v = 0 is the image's bottom row), read as a reflectance into the child's
- * model (a spectral OpenEXR's reflective channels: gtexparam_image_open, kit/texparam.h). Lookups are MIP-mapped over the pixel footprint: anisotropically over the ellipse sp->uv_axis1/2
- * when the renderer gives it, else with the isotropic width sp->uv_footprint (0: the finest level, bilinear). The file is opened (and checked) here: a missing or unreadable file is G_ERR_IO naming it.
- * sRGB-encoded files are decoded after filtering. Grey images give grey colours; alpha is ignored. */
-GENERIC_API GENERIC_NODISCARD int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptions *opt, GMaterial **out,
-                       GError *err);
+ * model (a spectral OpenEXR's reflective channels: gtexparam_image_open, kit/texparam.h). Lookups are MIP-mapped over
+ * the pixel footprint: anisotropically over the ellipse sp->uv_axis1/2 when the renderer gives it, else with the
+ * isotropic width sp->uv_footprint (0: the finest level, bilinear). The file is opened (and checked) here: a missing or
+ * unreadable file is G_ERR_IO naming it. sRGB-encoded files are decoded after filtering. Grey images give grey colours;
+ * alpha is ignored. */
+GENERIC_API GENERIC_NODISCARD int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptions *opt,
+                                                     GMaterial **out, GError *err);
 
 #ifdef __cplusplus
 }

@@ -124,18 +124,20 @@ GENERIC_API GENERIC_NODISCARD int greader_options_args(int *argc, char **argv, G
 
 /** Reads a file into a new library. On failure *out is NULL, nothing is leaked and err holds
  * "file:line:col: message". */
-GENERIC_API GENERIC_NODISCARD int greader_load_file(const char *path, const GReaderOptions *opt, GLibrary **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_load_file(const char *path, const GReaderOptions *opt, GLibrary **out,
+                                                    GError *err);
 /** Reads text held in memory; `name` is used in messages, and relative paths (include, plugin, data files)
  * are resolved against the current directory. */
-GENERIC_API GENERIC_NODISCARD int greader_load_string(const char *text, const char *name, const GReaderOptions *opt, GLibrary **out,
-                        GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_load_string(const char *text, const char *name, const GReaderOptions *opt,
+                                                      GLibrary **out, GError *err);
 
 /** Creates an empty library using `model` (not owned; NULL: "rgb", created and owned by the library). */
 GENERIC_API GENERIC_NODISCARD int glibrary_create(const GColorModel *model, GLibrary **out, GError *err);
 /** Reads a file into an existing library (e.g. a scene after a material file). opt->model and
  * opt->colormodel are ignored: the library's model is used. On failure the entries read before the error stay
  * in the library (they are owned by it and freed with it). */
-GENERIC_API GENERIC_NODISCARD int glibrary_load_file(GLibrary *lib, const char *path, const GReaderOptions *opt, GError *err);
+GENERIC_API GENERIC_NODISCARD int glibrary_load_file(GLibrary *lib, const char *path, const GReaderOptions *opt,
+                                                     GError *err);
 /** Releases every object of the library (reverse order of creation) and its model if it owns it; NULL is a
  * no-op. Materials still referenced elsewhere (gmaterial_ref) live on, but can only be used while their colour
  * model exists: to keep materials beyond their library, load with your own model (GReaderOptions.model). */
@@ -149,7 +151,8 @@ GENERIC_API void *glibrary_find(const GLibrary *lib, GKind kind, const char *nam
 GENERIC_API GMaterial *glibrary_material(const GLibrary *lib, const char *name);
 /** Converts the colour defined under name into `out` (storage of the library's model provided by the
  * caller, see gcolor_wrap/gcolor_alloc), read in the given role. G_ERR_NOTFOUND when not defined. */
-GENERIC_API GENERIC_NODISCARD int glibrary_color(const GLibrary *lib, const char *name, GColorRole role, GColor *out, GError *err);
+GENERIC_API GENERIC_NODISCARD int glibrary_color(const GLibrary *lib, const char *name, GColorRole role, GColor *out,
+                                                 GError *err);
 /** Number of top-level entries of a kind (named and anonymous, in file order; nested anonymous entries are
  * owned but not listed). Materials and nodes are listed under their own kind. Constant time. */
 GENERIC_API GENERIC_NODISCARD int glibrary_count(const GLibrary *lib, GKind kind);
@@ -162,7 +165,8 @@ GENERIC_API const char *glibrary_entry_base(const GLibrary *lib, GKind kind, int
 /** Adds an object made by code under name (NULL = anonymous); the library takes ownership and releases it
  * with type->destroy (or the kind's default). G_ERR_EXISTS when the name is taken in that kind, and then the
  * object is released at once (the caller never keeps a half-owned object). */
-GENERIC_API GENERIC_NODISCARD int glibrary_add(GLibrary *lib, const GTypeInfo *type, const char *name, void *object, GError *err);
+GENERIC_API GENERIC_NODISCARD int glibrary_add(GLibrary *lib, const GTypeInfo *type, const char *name, void *object,
+                                               GError *err);
 
 /* ======================================================================================================
  * The API of parse routines
@@ -249,7 +253,8 @@ GENERIC_API GENERIC_NODISCARD int greader_block_end(GReader *r, GError *err);
 /** Reads a VALUE of a kind: a nested anonymous entry `TYPE parameters` (calling its parse routine) or the
  * name of an entry defined before. *object is borrowed from the library (see Ownership above); *type, when
  * type is not NULL, receives the type the object was made by. */
-GENERIC_API GENERIC_NODISCARD int greader_object(GReader *r, GKind kind, void **object, const GTypeInfo **type, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_object(GReader *r, GKind kind, void **object, const GTypeInfo **type,
+                                                 GError *err);
 /** greader_object for a material or texture node; borrowed (gmaterial_ref to keep it). */
 GENERIC_API GENERIC_NODISCARD int greader_material(GReader *r, GMaterial **out, GError *err);
 /** A new anonymous material with one parameter given, its value read at the reader's position: `base` is a
@@ -257,8 +262,8 @@ GENERIC_API GENERIC_NODISCARD int greader_material(GReader *r, GMaterial **out, 
  * material `like BASE { PARAM VALUE }`: its other parameters inherited). E.g. the spline's `colors` ramp makes
  * each key's child with greader_material_with(r, "lambert", "reflectance", ...). *out is borrowed from the
  * library. */
-GENERIC_API GENERIC_NODISCARD int greader_material_with(GReader *r, const char *base, const char *param, GMaterial **out,
-                                              GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_material_with(GReader *r, const char *base, const char *param,
+                                                        GMaterial **out, GError *err);
 /** Reads a colour literal (rgb, spectrum, blackbody, illuminant, line, bfc, scale, or a registered colour
  * type) or a colour name, and converts it in the given role into the reader's colour model. `out` must be a
  * cleared handle ({0}); it receives heap storage (free with gcolor_free), also when it is left black by a
@@ -273,7 +278,8 @@ GENERIC_API GLibrary *greader_library(GReader *r);
 GENERIC_API void *greader_lookup(GReader *r, GKind kind, const char *name);
 /** Defines an object under a name (NULL = anonymous) in the library being loaded, which takes ownership
  * (see glibrary_add; errors are reported at the last token read). */
-GENERIC_API GENERIC_NODISCARD int greader_define(GReader *r, const GTypeInfo *type, const char *name, void *object, GError *err);
+GENERIC_API GENERIC_NODISCARD int greader_define(GReader *r, const GTypeInfo *type, const char *name, void *object,
+                                                 GError *err);
 /** Directory of the file being read ("." for text in memory), for resolving relative paths. */
 GENERIC_API const char *greader_dir(GReader *r);
 /** Name of the file being read, as given to the loader or the include statement. */
@@ -291,7 +297,8 @@ GENERIC_API GENERIC_NODISCARD int greader_error(GReader *r, GError *err, const c
 #endif
     ;
 /** The same at an explicit position (e.g. a token kept from earlier), with a status code. */
-GENERIC_API GENERIC_NODISCARD int greader_error_at(GReader *r, GError *err, int code, int line, int col, const char *fmt, ...)
+GENERIC_API GENERIC_NODISCARD int greader_error_at(GReader *r, GError *err, int code, int line, int col,
+                                                   const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 6, 7)))
 #endif

@@ -114,7 +114,8 @@ GENERIC_API void gsurfpoint_set_relative_index(GSurfPoint *sp, const GColor *ri)
  * that colour's values while it shades the point (hand another colour to refraction() instead). */
 GENERIC_API double gsurfpoint_index_of(const GSurfPoint *sp, const GColor *ri);
 /** Looks up a value cached under key; 1 when found (value and gradient copied out, either may be NULL). */
-GENERIC_API GENERIC_NODISCARD int gsurfpoint_cache_get(const GSurfPoint *sp, const void *key, double *value, GVec3 *gradient);
+GENERIC_API GENERIC_NODISCARD int gsurfpoint_cache_get(const GSurfPoint *sp, const void *key, double *value,
+                                                       GVec3 *gradient);
 /** Caches a value under key (the oldest slot is reused when all are taken). */
 GENERIC_API void gsurfpoint_cache_put(GSurfPoint *sp, const void *key, double value, GVec3 gradient);
 /** Widths of the pixel footprint along u and along v (the extent of the uv_axis ellipse, or uv_footprint for

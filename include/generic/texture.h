@@ -69,11 +69,13 @@ struct GGeneratorClass {
 
 /** Fills the header of a new instance (refcount 1) with its space; G_ERR_VERSION when the class is of
  * another version, G_ERR_INVALID when destroy or value is missing or the space is unknown. */
-GENERIC_API GENERIC_NODISCARD int ggenerator_init(GGenerator *g, const GGeneratorClass *cls, GGeneratorSpace space, GError *err);
+GENERIC_API GENERIC_NODISCARD int ggenerator_init(GGenerator *g, const GGeneratorClass *cls, GGeneratorSpace space,
+                                                  GError *err);
 /** Allocates a zeroed generator of `size` bytes (a struct that begins with its GGenerator) of class cls
  * computing in space, into *out: G_ERR_NOMEM "<class>: out of memory", or ggenerator_init's error. Until it
  * is complete, free it with gmem_free. */
-GENERIC_API GENERIC_NODISCARD int ggenerator_new(const GGeneratorClass *cls, GGeneratorSpace space, size_t size, GGenerator **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int ggenerator_new(const GGeneratorClass *cls, GGeneratorSpace space, size_t size,
+                                                 GGenerator **out, GError *err);
 /** The destroy method of the generators that own nothing but their own struct (frees it with gmem_free). */
 GENERIC_API void ggenerator_free(GGenerator *self);
 /** Adds an owner; returns g. */
@@ -113,12 +115,14 @@ GENERIC_API GENERIC_NODISCARD int ggenerator_gradient(const GGenerator *g, GSurf
 /** The value at the point, computed once per point and then taken from sp's cache (key: g). */
 GENERIC_API double ggenerator_cached_value(const GGenerator *g, GSurfPoint *sp);
 /** Value and gradient (either pointer may be NULL), computed once per point and then cached. */
-GENERIC_API GENERIC_NODISCARD int ggenerator_cached_gradient(const GGenerator *g, GSurfPoint *sp, double *value, GVec3 *grad);
+GENERIC_API GENERIC_NODISCARD int ggenerator_cached_gradient(const GGenerator *g, GSurfPoint *sp, double *value,
+                                                             GVec3 *grad);
 /** The derivatives of the generator's value along the surface parameters, dh/du and dh/dv, for bump
  * mapping: the gradient itself for (u, v) generators, its projection on the surface tangents for the
  * others (sp->object_dpdu/object_dpdv for object space, falling back to dpdu/dpdv when those are zero;
  * dpdu/dpdv for world space). Cached through ggenerator_cached_gradient. */
-GENERIC_API GENERIC_NODISCARD int ggenerator_surface_derivatives(const GGenerator *g, GSurfPoint *sp, double *dh_du, double *dh_dv);
+GENERIC_API GENERIC_NODISCARD int ggenerator_surface_derivatives(const GGenerator *g, GSurfPoint *sp, double *dh_du,
+                                                                 double *dh_dv);
 
 /** A generator whose value is inner's mapped linearly from [0, 1] onto [lo, hi]: lo (1 - v) + hi v, exactly lo
  * where inner is 0 and exactly hi where it is 1; gradient (hi - lo) times inner's; the space is inner's. What the

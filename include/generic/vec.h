@@ -27,7 +27,10 @@ static inline GVec3 gvec3_scale(GVec3 a, double s) { return gvec3(a.x * s, a.y *
 /** -a */
 static inline GVec3 gvec3_neg(GVec3 a) { return gvec3(-a.x, -a.y, -a.z); }
 /** a + b * s */
-static inline GVec3 gvec3_madd(GVec3 a, GVec3 b, double s) { return gvec3(a.x + b.x * s, a.y + b.y * s, a.z + b.z * s); }
+static inline GVec3 gvec3_madd(GVec3 a, GVec3 b, double s)
+{
+    return gvec3(a.x + b.x * s, a.y + b.y * s, a.z + b.z * s);
+}
 /** Dot product. */
 static inline double gvec3_dot(GVec3 a, GVec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
 /** Cross product. */

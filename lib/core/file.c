@@ -1,5 +1,6 @@
 /* file.c - opening inputs (regular files only) and writing outputs through a temporary that is renamed into
- * place, with a registry of pending temporaries removed on exit and on SIGINT, SIGTERM, SIGHUP (generic/services/file.h). */
+ * place, with a registry of pending temporaries removed on exit and on SIGINT, SIGTERM, SIGHUP
+ * (generic/services/file.h). */
 #include "generic/services/file.h"
 #include "generic/memory.h"
 
@@ -163,7 +164,8 @@ static void install_handlers(void)
         atexit(remove_pending);
         for (int k = 0; k < NSIG_CLEANUP; k++) {
             struct sigaction now;
-            if (sigaction(cleanup_signals[k], NULL, &now) != 0 || (!(now.sa_flags & SA_SIGINFO) && now.sa_handler == SIG_IGN))
+            if (sigaction(cleanup_signals[k], NULL, &now) != 0 ||
+                (!(now.sa_flags & SA_SIGINFO) && now.sa_handler == SIG_IGN))
                 continue; /* ignored: nothing will end the process by it */
             struct sigaction sa;
             memset(&sa, 0, sizeof sa);

@@ -5,12 +5,12 @@
  * object holding this code and for the executable, then GENERIC_LIBDIR/generic/. It is started on first use with
  * posix_spawn (no fork of this process, whose threads and locks stay its own), on one end of a socket pair that is
  * its standard input and output, with /dev/null as its standard error, and serves this process's decodes one at a
- * time (a lock) until this process ends; one that ended (a crash, a limit) is started again for the next file. Its limits: an address space of
- * GDECODE_BASE_MB MiB, and during a decode that plus 1.5 times the decode's charge (at most 1.5 times the memory
- * budget's limit when it started: a higher limit set later starts a new one); GDECODE_CPU_SECONDS seconds of CPU time
- * for a header, and for a decode as many plus one a megapixel. The files of one process share a decoder: a file that
- * subverts the decoder can change the pixels of the files decoded after it in the same process, never this process.
- * A process forked from this one starts its own. */
+ * time (a lock) until this process ends; one that ended (a crash, a limit) is started again for the next file. Its
+ * limits: an address space of GDECODE_BASE_MB MiB, and during a decode that plus 1.5 times the decode's charge (at
+ * most 1.5 times the memory budget's limit when it started: a higher limit set later starts a new one);
+ * GDECODE_CPU_SECONDS seconds of CPU time for a header, and for a decode as many plus one a megapixel. The files of one
+ * process share a decoder: a file that subverts the decoder can change the pixels of the files decoded after it in the
+ * same process, never this process. A process forked from this one starts its own. */
 #include "decode_isolated.h"
 #include "decode_protocol.h"
 #include "image_format.h"

@@ -391,7 +391,8 @@ int write_spectral(ImageOutput *out, const char *path, const char *tmp, const GI
                 d[ch + k] = (float)(sp->values[i * n + k] * scale);
         }
         if (!out->write_scanline(spec.y + y, 0, TypeDesc::FLOAT, row))
-            rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, goiio_first_line(out->geterror()).c_str());
+            rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path,
+                            goiio_first_line(out->geterror()).c_str());
     }
     if (rc == G_OK && !out->close())
         rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, goiio_first_line(out->geterror()).c_str());
@@ -554,7 +555,8 @@ int write_impl(const char *path, const GImage *img, const GImageWriteOptions *op
     struct Release { GImage *g; ~Release() { gmem_free(g->pixels); } } release{&shown};
     auto out = ImageOutput::create(path);
     if (!out)
-        return gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, goiio_first_line(OIIO::geterror()).c_str());
+        return gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path,
+                          goiio_first_line(OIIO::geterror()).c_str());
     GFileOutput file;
     if ((rc = gfile_output_begin(&file, path, err)) != G_OK)
         return rc;
@@ -596,7 +598,8 @@ int image_read(const char *path, unsigned flags, GImage *img, GError *err)
         return gerror_set(err, G_ERR_INVALID, "no image file name given");
     if ((flags & GIMAGE_READ_RGB) && (flags & GIMAGE_READ_RGBA))
         return gerror_set(err, G_ERR_INVALID, "%s: GIMAGE_READ_RGB and GIMAGE_READ_RGBA exclude each other", path);
-    return goiio_guarded(path, "reading the image", "read image", err, [&] { return read_impl(path, flags, img, err); });
+    return goiio_guarded(path, "reading the image", "read image", err,
+                         [&] { return read_impl(path, flags, img, err); });
 }
 
 // A file's windows and channel count, with open_checked's checks.
@@ -646,7 +649,8 @@ int image_write(const char *path, const GImage *img, const GImageWriteOptions *o
         return gerror_set(err, G_ERR_INVALID, "no image file name given");
     if (!img || !img->pixels || img->width <= 0 || img->height <= 0 || img->channels < 1 || img->channels > 4)
         return gerror_set(err, G_ERR_INVALID, "%s: invalid image to write", path);
-    return goiio_guarded(path, "writing the image", "write image", err, [&] { return write_impl(path, img, opt, err); });
+    return goiio_guarded(path, "writing the image", "write image", err,
+                         [&] { return write_impl(path, img, opt, err); });
 }
 
 } // namespace

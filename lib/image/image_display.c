@@ -70,5 +70,7 @@ int gimage_display_check(const GImageDisplay *d, char *config_used, size_t size,
         return fd;
     close(fd);
     const GOiioOps *o = goiio_ops(err);
-    return o ? o->display_transform(path, d ? d->confine_dir : NULL, d ? d->display : NULL, d ? d->view : NULL, NULL, 0, 0, 0, err) : G_ERR_IO;
+    return o ? o->display_transform(path, d ? d->confine_dir : NULL, d ? d->display : NULL, d ? d->view : NULL, NULL, 0,
+                                    0, 0, err)
+             : G_ERR_IO;
 }

@@ -335,8 +335,8 @@ int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *
         return rc0;
     const GImageDisplay *shown = opt ? opt->display : NULL;
     if (shown && (img->channels < 3 || gimage_float_path(path)))
-        return gerror_set(err, G_ERR_INVALID, "%s: a display transform is for 8-bit formats of RGB images; %s",
-                          path, img->channels < 3 ? "this image has fewer channels" : "this format stores linear floats");
+        return gerror_set(err, G_ERR_INVALID, "%s: a display transform is for 8-bit formats of RGB images; %s", path,
+                          img->channels < 3 ? "this image has fewer channels" : "this format stores linear floats");
     if (shown) { /* through OpenImageIO and OpenColorIO, PNG too, with the config found here */
         char config[PATH_MAX + 64];
         if ((rc0 = gimage_display_check(shown, config, sizeof config, err)) != G_OK)

@@ -167,8 +167,9 @@ static int check_range(const GColor *src, GColorRole role, double max, const cha
             if (fold_energy >= 0.0)
                 snprintf(fold, sizeof fold, "; above that only as the fold of re-radiation, whose energy under "
                          "equal-energy light, here %g, is <= %.6g", fold_energy, hi);
-            return gerror_set_param(err, G_ERR_INVALID, param, "%s: %s has the value %g at sample %d%s (must be <= %g%s%s)",
-                                    material, param, x, i, where, max, bound, fold);
+            return gerror_set_param(err, G_ERR_INVALID, param,
+                                    "%s: %s has the value %g at sample %d%s (must be <= %g%s%s)", material, param, x, i,
+                                    where, max, bound, fold);
         }
     }
     return G_OK;

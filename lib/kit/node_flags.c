@@ -1,6 +1,6 @@
 /* node_flags.c - the node kit's GMAT_NO_EMISSION, GMAT_OPAQUE, GMAT_GEOMETRIC_NORMAL, GMAT_LAMBERTIAN, GMAT_NO_UV
- * and GMAT_DIAGONAL (generic/kit/node_kit.h): a node whose emission only combines its children's emits nothing when none
- * of them does, one whose opacity is its children's is opaque everywhere when each of them is, one whose normal
+ * and GMAT_DIAGONAL (generic/kit/node_kit.h): a node whose emission only combines its children's emits nothing when
+ * none of them does, one whose opacity is its children's is opaque everywhere when each of them is, one whose normal
  * blends its children's keeps the geometric normal when each of them does, so the dispatch answers it without a
  * call; a blend whose reflection and diffuse colour are the same blend of its children's is Lambertian when each of
  * them is, so a renderer reflects the light of all its samples at once, and so is a one-child node whose reflection

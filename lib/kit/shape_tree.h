@@ -27,8 +27,8 @@ typedef void (*GShapeFreeFn)(GShapeNode *node);
  * grows in place when a is an operation of the same kind without a transform of its own (b's operands are
  * taken over when b is a like union or intersection), else a new node of two operands; G_ERR_INVALID when
  * the result would be deeper than GSHAPE_MAX_DEPTH. Takes ownership of a and b, also when it fails. */
-GENERIC_NODISCARD int gshape_combine(const char *what, GShapeOp op, GShapeNode *a, GShapeNode *b, size_t size, GShapeFreeFn free_fn,
-                   GShapeNode **out, GError *err);
+GENERIC_NODISCARD int gshape_combine(const char *what, GShapeOp op, GShapeNode *a, GShapeNode *b, size_t size,
+                                     GShapeFreeFn free_fn, GShapeNode **out, GError *err);
 /** Frees a tree without recursion; NULL is a no-op. */
 void gshape_destroy(GShapeNode *s, GShapeFreeFn free_fn);
 

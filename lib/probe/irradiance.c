@@ -4,11 +4,10 @@
  * n = (rho cos phi_n, rho sin phi_n, n_z) the pixel at phi is visible (n . omega > 0) when
  *     n_z cos(theta) + rho sin(theta) cos(phi - phi_n) > 0,
  * an arc |phi - phi_n| < acos(-n_z cos(theta) / (rho sin(theta))), and over that arc
- *     sum Q (n . omega) = n_z cos(theta) sum Q + rho-part: n_x sin(theta) sum Q cos(phi) + n_y sin(theta) sum Q sin(phi).
- * With per-row prefix sums of Q, Q cos(phi) and Q sin(phi) the arc costs O(1), so a normal costs O(H).
- * Column u has phi = pi - 2 pi (u + 0.5) / W (probe.h), so in columns the arc is centred on pi - phi_n.
- * The arc's end pixels are checked with the same dot product the pixel-by-pixel sum uses, so both sums
- * take exactly the same pixels. */
+ *     sum Q (n . omega) = n_z cos(theta) sum Q + rho-part: n_x sin(theta) sum Q cos(phi) + n_y sin(theta) sum Q
+ * sin(phi). With per-row prefix sums of Q, Q cos(phi) and Q sin(phi) the arc costs O(1), so a normal costs O(H). Column
+ * u has phi = pi - 2 pi (u + 0.5) / W (probe.h), so in columns the arc is centred on pi - phi_n. The arc's end pixels
+ * are checked with the same dot product the pixel-by-pixel sum uses, so both sums take exactly the same pixels. */
 #include "probe_internal.h"
 #include "generic/memory.h"
 

@@ -386,8 +386,8 @@ int gprobe_irradiance_fit(const GProbe *p, int n, const GProbeOptions *opt, GPro
                           "grows with the cube of the count); mediancut, adaptive and kmeans make more", n,
                           GPROBE_FIT_MAX_LIGHTS);
     if (m < 2 * n)
-        return gerror_set(err, G_ERR_INVALID, "irradiance optimisation of %d lights needs at least %d fit normals, not %d",
-                          n, 2 * n, m);
+        return gerror_set(err, G_ERR_INVALID,
+                          "irradiance optimisation of %d lights needs at least %d fit normals, not %d", n, 2 * n, m);
     if ((long)n * m > GPROBE_FIT_MAX_PAIRS)
         return gerror_set(err, G_ERR_INVALID, "irradiance optimisation of %d lights on %d fit normals: %ld pairs, more "
                           "than the limit of %d", n, m, (long)n * m, GPROBE_FIT_MAX_PAIRS);

@@ -18,7 +18,8 @@ int gprobe_technique_parse(const char *name, GProbeTechnique *t, GError *err)
             *t = (GProbeTechnique)i;
             return G_OK;
         }
-    return gerror_set(err, G_ERR_NOTFOUND, "unknown technique '%s' (expected mediancut, adaptive, kmeans, irradiance or variance)",
+    return gerror_set(err, G_ERR_NOTFOUND,
+                      "unknown technique '%s' (expected mediancut, adaptive, kmeans, irradiance or variance)",
                       name ? name : "");
 }
 

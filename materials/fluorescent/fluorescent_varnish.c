@@ -32,8 +32,8 @@
  * excitation samples are matched to emission wavelengths; B keeps M's excitation grid, so light below the
  * emission range still fluoresces) and handed to gcolor_from_reradiation, which makes it a matrix in the
  * bispectral model, reduces it to a 3 x 3 matrix in rgb and folds it into a reflectance elsewhere. The per-call
- * code uses only generic colour operations and works the same for a matrix or a vector value. R(c) is tabulated at creation by a
- * quadrature over h with the distribution D(h) (h.n). */
+ * code uses only generic colour operations and works the same for a matrix or a vector value. R(c) is tabulated at
+ * creation by a quadrature over h with the distribution D(h) (h.n). */
 #include "generic/kit/fluorescent_kit.h"
 #include "generic/plugin.h"
 
@@ -325,7 +325,8 @@ static int varnish_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, cons
         double ch = pow(1.0 - u1, 1.0 / (v->m + 2.0)), sh = sqrt(fmax(0.0, 1.0 - ch * ch)), phi = 2.0 * M_PI * u2;
         GVec3 t, b;
         goptics_frame(n, &t, &b);
-        GVec3 h = gvec3_add(gvec3_add(gvec3_scale(t, sh * cos(phi)), gvec3_scale(b, sh * sin(phi))), gvec3_scale(n, ch));
+        GVec3 h =
+            gvec3_add(gvec3_add(gvec3_scale(t, sh * cos(phi)), gvec3_scale(b, sh * sin(phi))), gvec3_scale(n, ch));
         double od = gvec3_dot(out, h);
         if (!(od > 0.0))
             return 0; /* a facet turned away from out reflects nothing towards it */

@@ -104,8 +104,10 @@ static int same_wavelengths(char *const *paths, int i, const GImageSpectraBuf *s
 {
     if (sp->count != first->count) {
         if (!sp->count || !first->count)
-            return gerror_set(err, G_ERR_MISMATCH, "%s has values at %d wavelengths, %s at %d: pieces of another "
-                              "render (all or none rendered with --spectral)", paths[i], sp->count, paths[0], first->count);
+            return gerror_set(err, G_ERR_MISMATCH,
+                              "%s has values at %d wavelengths, %s at %d: pieces of another "
+                              "render (all or none rendered with --spectral)",
+                              paths[i], sp->count, paths[0], first->count);
         return gerror_set(err, G_ERR_MISMATCH, "%s has %d wavelengths (%g to %g nm), %s %d (%g to %g nm): pieces of "
                           "another render (another colour model?)", paths[i], sp->count, sp->wavelengths[0],
                           sp->wavelengths[sp->count - 1], paths[0], first->count, first->wavelengths[0],

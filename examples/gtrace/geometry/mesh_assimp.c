@@ -127,7 +127,8 @@ static struct aiMatrix4x4 mat_mul(const struct aiMatrix4x4 *a, const struct aiMa
     float *z = &r.a1;
     for (int i = 0; i < 4; i++)
         for (int j = 0; j < 4; j++)
-            z[4 * i + j] = x[4 * i] * y[j] + x[4 * i + 1] * y[4 + j] + x[4 * i + 2] * y[8 + j] + x[4 * i + 3] * y[12 + j];
+            z[4 * i + j] =
+                x[4 * i] * y[j] + x[4 * i + 1] * y[4 + j] + x[4 * i + 2] * y[8 + j] + x[4 * i + 3] * y[12 + j];
     return r;
 }
 
@@ -155,7 +156,8 @@ static void fill_node(const struct aiScene *sc, const struct aiNode *nd, const s
             const struct aiVector3D *p = &am->mVertices[k];
             double *o = m->pos + 3 * (size_t)(base + (int)k);
             for (int r = 0; r < 3; r++)
-                o[r] = (double)a[4 * r] * p->x + (double)a[4 * r + 1] * p->y + (double)a[4 * r + 2] * p->z + a[4 * r + 3];
+                o[r] =
+                    (double)a[4 * r] * p->x + (double)a[4 * r + 1] * p->y + (double)a[4 * r + 2] * p->z + a[4 * r + 3];
             double *n = m->normal + 3 * (size_t)(base + (int)k);
             if (am->mNormals) {
                 const struct aiVector3D *q = &am->mNormals[k];

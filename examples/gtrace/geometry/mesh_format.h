@@ -68,11 +68,11 @@ int mesh_assimp_check(const char *path, int fd, MeshFormat format, const MeshFil
  * and its values). */
 int mesh_decode_isolated(GError *err);
 /** mesh_load_assimp in the reader process gtrace-mesh (mesh_isolated.c, mesh_protocol.h), under limits of address
- * space and CPU time, after mesh_assimp_check in this process: the same mesh, the same errors, and fd closed; the other files a glTF file names are allowed
- * by files here, in this process, before the reader opens them. The mesh's counts are bounded and its arrays
- * reserved against the memory budget before they are allocated, and its indices and positions checked. A reader
- * that crashes, runs out of its limits, gives no answer in time or breaks the protocol is G_ERR_IO naming the file
- * and how it ended; the reader is always reaped. */
+ * space and CPU time, after mesh_assimp_check in this process: the same mesh, the same errors, and fd closed; the other
+ * files a glTF file names are allowed by files here, in this process, before the reader opens them. The mesh's counts
+ * are bounded and its arrays reserved against the memory budget before they are allocated, and its indices and
+ * positions checked. A reader that crashes, runs out of its limits, gives no answer in time or breaks the protocol is
+ * G_ERR_IO naming the file and how it ended; the reader is always reaped. */
 int mesh_load_isolated(Object *o, const char *path, int fd, MeshFormat format, const MeshFiles *files, GError *err);
 
 /** What a checked glTF file places: the nodes its node tree expands to, and the vertices and triangles of the meshes

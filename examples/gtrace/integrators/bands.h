@@ -12,8 +12,8 @@
 #define BANDS_DEFAULT_CAP 16
 /** Largest cap accepted (--bands). */
 #define BANDS_LIMIT 1024
-/** Most bytes the groups' masks may take together: a model with large values (a model of fine re-radiation matrices) gets
- * fewer groups than asked for rather than an allocation the size of the cap times its matrices. */
+/** Most bytes the groups' masks may take together: a model with large values (a model of fine re-radiation matrices)
+ * gets fewer groups than asked for rather than an allocation the size of the cap times its matrices. */
 #define BANDS_MASK_BUDGET (64u << 20)
 /** Relative indices whose groups differ by no more than this are not split (constant-index glass). */
 #define BANDS_INDEX_TOLERANCE 1e-4

@@ -19,21 +19,22 @@
  * time whatever their number), and divides its estimate by the probability of the choice; the density a light's MIS
  * weight uses, on either side, is its sampling density times that probability (1 when every light is sampled). A
  * delta light, which material sampling never meets, is then chosen again among the delta lights by its unshadowed
- * light at the vertex (delta_choice: among all of them when they are few, else by resampled importance sampling of a few candidates drawn by power): one shadow ray still, the choice weighted by
- * what each light gives there. Point, spot, directional and IES lights, including the directional lights a probe
- * technique (mediancut, adaptive, kmeans, irradiance, variance) makes, are delta lights: NEE only, through lights.c's
- * light_shade (the same shadow rule as the Whitted tracer: transmission through non-opaque surfaces along the straight
- * line). Sphere and rectangle lights and a `light probe` of technique reference (the environment, importance sampled by
- * probe_sample.c's probe_light_nee, the Whitted tracer's reference estimator with one direction) can also be reached by
- * material sampling, so both estimates are combined by multiple importance sampling with the power heuristic (a sphere
- * light is sampled uniformly in the solid angle it subtends, a rectangle light uniformly by area; area_light_hit gives
- * the same density. Sampling rectangles by solid angle, as spherical rectangles, was measured on the Cornell box: 35%
- * more time for 2% less RMSE); their shadow rays are blocked by any surface (light through glass reaches them by
- * material sampling, a caustic, so counting the straight transmission too would count it twice). Material sampling sees
- * sphere and rectangle lights (one-sided) when they are nearer than the surface hit; a path after a delta bounce counts
- * them fully. One light sample a vertex: the lights' `samples` apply to the Whitted tracer; a reference probe's
- * `shadows off` does not apply. At a Lambertian material (GMAT_LAMBERTIAN) the samples' light, each with its MIS weight
- * in it, is gathered and reflected once (lights.c's light_gather), as in the Whitted tracer.
+ * light at the vertex (delta_choice: among all of them when they are few, else by resampled importance sampling of a
+ * few candidates drawn by power): one shadow ray still, the choice weighted by what each light gives there. Point,
+ * spot, directional and IES lights, including the directional lights a probe technique (mediancut, adaptive, kmeans,
+ * irradiance, variance) makes, are delta lights: NEE only, through lights.c's light_shade (the same shadow rule as the
+ * Whitted tracer: transmission through non-opaque surfaces along the straight line). Sphere and rectangle lights and a
+ * `light probe` of technique reference (the environment, importance sampled by probe_sample.c's probe_light_nee, the
+ * Whitted tracer's reference estimator with one direction) can also be reached by material sampling, so both estimates
+ * are combined by multiple importance sampling with the power heuristic (a sphere light is sampled uniformly in the
+ * solid angle it subtends, a rectangle light uniformly by area; area_light_hit gives the same density. Sampling
+ * rectangles by solid angle, as spherical rectangles, was measured on the Cornell box: 35% more time for 2% less RMSE);
+ * their shadow rays are blocked by any surface (light through glass reaches them by material sampling, a caustic, so
+ * counting the straight transmission too would count it twice). Material sampling sees sphere and rectangle lights
+ * (one-sided) when they are nearer than the surface hit; a path after a delta bounce counts them fully. One light
+ * sample a vertex: the lights' `samples` apply to the Whitted tracer; a reference probe's `shadows off` does not apply.
+ * At a Lambertian material (GMAT_LAMBERTIAN) the samples' light, each with its MIS weight in it, is gathered and
+ * reflected once (lights.c's light_gather), as in the Whitted tracer.
  *
  * The environment. Camera rays and rays after a delta bounce see the background (the background colour, or
  * the background probe interpolated bilinearly). After a non-delta bounce the background probe is a light:

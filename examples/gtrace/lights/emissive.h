@@ -30,8 +30,9 @@ void emissive_free(EmissiveSet *e);
 int emissive_count(const EmissiveSet *e);
 /** Draws a point of the set as seen from x with three uniform numbers: 1 with the unit direction `in` towards it,
  * its distance, the unit normal of its primitive there (of either side), the density of that direction in solid
- * angle (the choice of the primitive included) and the radiance the material emits towards x there in L; 0 when the draw offers no light (the point lies behind its
- * primitive's plane as seen from x is still drawn: its emission decides); or a status. */
+ * angle (the choice of the primitive included) and the radiance the material emits towards x there in L; 0 when the
+ * draw offers no light (the point lies behind its primitive's plane as seen from x is still drawn: its emission
+ * decides); or a status. */
 int emissive_sample(TraceCtx *c, const EmissiveSet *e, GVec3 x, double u0, double u1, double u2, GVec3 *in,
                     double *dist, GVec3 *normal, double *pdf, GColor *L);
 /** The length of the shadow ray towards a point emissive_sample drew from x (in, dist, normal as it gave them) that

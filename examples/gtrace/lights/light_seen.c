@@ -25,7 +25,8 @@ static double light_distance(const Light *l, const Ray *r, double tmax)
     if (!(t > r->tmin && t < tmax))
         return INFINITY;
     GVec3 q = gvec3_sub(gvec3_madd(r->o, r->d, t), l->position);
-    double e11 = gvec3_dot(l->edge1, l->edge1), e12 = gvec3_dot(l->edge1, l->edge2), e22 = gvec3_dot(l->edge2, l->edge2);
+    double e11 = gvec3_dot(l->edge1, l->edge1), e12 = gvec3_dot(l->edge1, l->edge2),
+           e22 = gvec3_dot(l->edge2, l->edge2);
     double q1 = gvec3_dot(q, l->edge1), q2 = gvec3_dot(q, l->edge2), det = e11 * e22 - e12 * e12;
     double a = (e22 * q1 - e12 * q2) / det, b = (e11 * q2 - e12 * q1) / det;
     return a >= 0.0 && a <= 1.0 && b >= 0.0 && b <= 1.0 ? t : INFINITY;

@@ -50,8 +50,8 @@ static int interface_transmit(GSurfPoint *hp, GVec3 dir, const GColor *light, GC
                               GColor *out)
 {
     int rc;
-    if ((rc = gmaterial_refraction_index(hp->from, hp, nf)) < 0 || (rc = gmaterial_refraction_index(hp->to, hp, nt)) < 0 ||
-        (rc = gcolor_div(ri, nf, nt)) < 0)
+    if ((rc = gmaterial_refraction_index(hp->from, hp, nf)) < 0 ||
+        (rc = gmaterial_refraction_index(hp->to, hp, nt)) < 0 || (rc = gcolor_div(ri, nf, nt)) < 0)
         return rc;
     GSurfPoint other;
     GSurfPoint *at = hp;
@@ -312,7 +312,8 @@ int light_shade(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const
             if (n == 1)
                 u1 = rng_next(&c->rng), u2 = rng_next(&c->rng);
             double ct = 1.0 - u1 * (1.0 - cos_max), st = sqrt(gfmax(0.0, 1.0 - ct * ct)), ph = 2.0 * M_PI * u2;
-            GVec3 in = gvec3_add(gvec3_scale(axis, ct), gvec3_add(gvec3_scale(t1, st * cos(ph)), gvec3_scale(t2, st * sin(ph))));
+            GVec3 in = gvec3_add(gvec3_scale(axis, ct),
+                                 gvec3_add(gvec3_scale(t1, st * cos(ph)), gvec3_scale(t2, st * sin(ph))));
             if (opaque && gvec3_dot(in, facing) <= 0.0)
                 continue;
             /* distance to the near side of the sphere along in */
@@ -348,7 +349,8 @@ int light_shade(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const
             double cos_l = -gvec3_dot(in, nl);
             if (cos_l <= 0.0 || (opaque && gvec3_dot(in, facing) <= 0.0))
                 continue;
-            int rc = sample_light(c, sp, facing, media, in, d, &l->color, area * cos_l / (d * d * n), out_dir, t, result);
+            int rc =
+                sample_light(c, sp, facing, media, in, d, &l->color, area * cos_l / (d * d * n), out_dir, t, result);
             if (rc < 0)
                 return rc;
         }

@@ -76,14 +76,16 @@ static const char *check_settings(const ProbeEnv *e)
 {
     if (e->technique == GPROBE_MEDIANCUT && (e->count & (e->count - 1)) != 0)
         return "median cut makes a power of two lights: give count 1, 2, 4, 8, ...";
-    if (PROBE_IS_BASIS(e->technique) && !gprobe_basis_size_ok((GProbeBasisKind)(e->technique - PROBE_BASIS(0)), e->count))
+    if (PROBE_IS_BASIS(e->technique) &&
+        !gprobe_basis_size_ok((GProbeBasisKind)(e->technique - PROBE_BASIS(0)), e->count))
         return "a basis takes count 4, 9, 16 or 25 (sh), 6 (ambientcube) or 1.." G_STR(GPROBE_SG_MAX_LOBES) " (sg)";
     if (!e->shadows && e->technique != PROBE_REFERENCE)
         return "shadows off is only for technique reference (directional lights always cast shadows)";
     if (e->technique == GPROBE_IRRADIANCE && e->count > GPROBE_FIT_MAX_LIGHTS)
         return "technique irradiance fits at most " G_STR(GPROBE_FIT_MAX_LIGHTS) " lights (its time grows with the "
                "cube of the count): give a smaller count, or mediancut, adaptive or kmeans";
-    if (e->technique == GPROBE_IRRADIANCE && (long)e->count * (e->fit_normals ? e->fit_normals : 2000) > GPROBE_FIT_MAX_PAIRS)
+    if (e->technique == GPROBE_IRRADIANCE &&
+        (long)e->count * (e->fit_normals ? e->fit_normals : 2000) > GPROBE_FIT_MAX_PAIRS)
         return "technique irradiance: count x fit_normals exceeds the limit of " G_STR(GPROBE_FIT_MAX_PAIRS);
     return NULL;
 }
@@ -139,7 +141,8 @@ int probe_light_parse(GReader *r, const void *vtable, void **object, GError *err
             rc = greader_path(r, &e->file, err);
         } else if (strcmp(key, "technique") == 0) {
             GError te;
-            if ((rc = greader_ident(r, name, sizeof name, err)) == G_OK && technique_from_name(name, &e->technique, &te) < 0)
+            if ((rc = greader_ident(r, name, sizeof name, err)) == G_OK &&
+                technique_from_name(name, &e->technique, &te) < 0)
                 rc = greader_error(r, err, "%s", te.message);
         } else if (strcmp(key, "count") == 0) {
             rc = (rc = greader_int(r, 1, PROBE_MAX_COUNT, &v, err)) < 0 ? rc : (e->count = (int)v, 0);

@@ -1,7 +1,7 @@
-/* medium.h - participating media (medium.c at render time, medium_parse.c for the entries): the kind `medium`, its type homogeneous, where a ray is inside one
- * (an object's `interior`, the camera's `atmosphere`), and what the integrators ask of one: transmittance and
- * free-flight sampling with one-sample MIS over the bands, so that a medium whose coefficients differ between the
- * colour model's bands converges in every model. */
+/* medium.h - participating media (medium.c at render time, medium_parse.c for the entries): the kind `medium`, its type
+ * homogeneous, where a ray is inside one (an object's `interior`, the camera's `atmosphere`), and what the integrators
+ * ask of one: transmittance and free-flight sampling with one-sample MIS over the bands, so that a medium whose
+ * coefficients differ between the colour model's bands converges in every model. */
 #ifndef GTRACE_MEDIUM_H
 #define GTRACE_MEDIUM_H
 

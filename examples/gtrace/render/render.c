@@ -1,10 +1,10 @@
 /* render.c - the render loop: 16x16 tiles (of the image or of its crop), in a fixed shuffled order so that the
- * progress estimate follows the work wherever the costly pixels are, shared among OpenMP threads with a dynamic schedule, one
- * scratch arena per thread (marked and released per sample), a generator seeded per pixel so the image
+ * progress estimate follows the work wherever the costly pixels are, shared among OpenMP threads with a dynamic
+ * schedule, one scratch arena per thread (marked and released per sample), a generator seeded per pixel so the image
  * does not depend on the thread count. Samples that come back NaN or infinite are counted and dropped
  * (they never reach a pixel); a camera sample spawns at most max_rays reflected and refracted rays (the
- * branches beyond are not traced, and the samples so cut are counted); pixels leave the colour model through its XYZ conversion (as a light)
- * and become linear sRGB. */
+ * branches beyond are not traced, and the samples so cut are counted); pixels leave the colour model through its XYZ
+ * conversion (as a light) and become linear sRGB. */
 #include "render.h"
 #include "trace/trace.h"
 #include "integrators/path.h"
@@ -269,9 +269,9 @@ static int set_wavelengths(Framebuffer *fb, const GColorModel *m, GError *err)
  * sample (there, not on the heap, so that two workers' colours never share a cache line). */
 #define WORKER_COLOURS (TRACE_TMP_COUNT + TILE + 2)
 
-/* A worker's arena: its own colours and room for 32 colours a bounce down to the deepest one (a bounce holds a handful: the shading
- * point's, its lights', its textures'), so that it need not grow while rendering, where a new depth reached would
- * allocate (the default 256 KiB holds 38 values of a model with 41 x 41 re-radiation matrices); at least that
+/* A worker's arena: its own colours and room for 32 colours a bounce down to the deepest one (a bounce holds a handful:
+ * the shading point's, its lights', its textures'), so that it need not grow while rendering, where a new depth reached
+ * would allocate (the default 256 KiB holds 38 values of a model with 41 x 41 re-radiation matrices); at least that
  * default, at most 16 MiB. Pages never reached are never touched. */
 static size_t arena_bytes(const GColorModel *m, int depth)
 {

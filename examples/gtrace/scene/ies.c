@@ -4,8 +4,8 @@
  * up to the line TILT=NONE | INCLUDE | FILENAME, then numbers separated by blanks, commas or line ends: for
  * TILT=INCLUDE the lamp-to-luminaire geometry, a count and that many angles and factors (read and checked; the lamp
  * is taken to burn as measured, so they are not applied); then the lamps, lumens per lamp (-1: absolute
- * photometry), the candela multiplier, the numbers of vertical and horizontal angles, the photometric type, the units, the
- * luminaire's width, length and height; the ballast factor, the ballast-lamp factor (1995; "future use" in 2002)
+ * photometry), the candela multiplier, the numbers of vertical and horizontal angles, the photometric type, the units,
+ * the luminaire's width, length and height; the ballast factor, the ballast-lamp factor (1995; "future use" in 2002)
  * and the input watts; the vertical angles, the horizontal angles and the candela values, a horizontal angle's
  * vertical values together. Nothing may follow them.
  *

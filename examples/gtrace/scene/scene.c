@@ -261,7 +261,8 @@ int object_cylinder(Object *o, GVec3 base, GVec3 top, double radius, int open, G
 int object_quad(Object *o, GVec3 corner, GVec3 edge1, GVec3 edge2, GError *err)
 {
     GVec3 n = gvec3_cross(edge1, edge2);
-    if (!finite3(corner) || !finite3(edge1) || !finite3(edge2) || !(gvec3_length(n) > 0.0) || !isfinite(gvec3_length(n)))
+    if (!finite3(corner) || !finite3(edge1) || !finite3(edge2) || !(gvec3_length(n) > 0.0) ||
+        !isfinite(gvec3_length(n)))
         return gerror_set(err, G_ERR_INVALID, "quad: the edges must be finite and not parallel");
     o->kind = SHAPE_QUAD;
     o->center = corner;

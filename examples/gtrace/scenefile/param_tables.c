@@ -69,9 +69,9 @@ static const GParamInfo instance_params[] = {
      "replaces the material of everything placed (the outermost instance that gives one wins)"},
     P_TRANSFORM, {NULL},
 };
-const GParamInfo *const scene_shape_tables[SCENE_SHAPE_TYPES] = {sphere_params, plane_params,    box_params,   disc_params,
-                                                 cylinder_params, mesh_params, quad_params, triangle_params,
-                                                 group_params,  instance_params};
+const GParamInfo *const scene_shape_tables[SCENE_SHAPE_TYPES] = {
+    sphere_params, plane_params, box_params,      disc_params,  cylinder_params,
+    mesh_params,   quad_params,  triangle_params, group_params, instance_params};
 
 #define P_SAMPLES {"samples", GPARAM_NAMED, "integer", "16", "[1, 256]", "shadow rays per shading point"}
 #define P_VISIBLE {"visible", GPARAM_NAMED, "bool", "no", NULL, "camera rays see the light's surface"}
@@ -173,4 +173,5 @@ static const GParamInfo orthographic_params[] = {
     P_CAMERA_IMAGE,
     {NULL},
 };
-const GParamInfo *const scene_camera_tables[SCENE_CAMERA_TYPES] = {pinhole_params, thinlens_params, orthographic_params};
+const GParamInfo *const scene_camera_tables[SCENE_CAMERA_TYPES] = {pinhole_params, thinlens_params,
+                                                                   orthographic_params};

@@ -227,7 +227,8 @@ int scene_parse_object(GReader *r, const void *vtable, void **object, GError *er
         } else if (strcmp(key, "transform") == 0) {
             rc = parse_transform(r, &o->xf, err);
             o->has_xf = 1;
-        } else if (strcmp(key, "radius") == 0 && (kind == SHAPE_SPHERE || kind == SHAPE_DISC || kind == SHAPE_CYLINDER)) {
+        } else if (strcmp(key, "radius") == 0 &&
+                   (kind == SHAPE_SPHERE || kind == SHAPE_DISC || kind == SHAPE_CYLINDER)) {
             rc = greader_number_in(r, 1e-12, 1e30, &radius, err);
         } else if (strcmp(key, "center") == 0 && (kind == SHAPE_SPHERE || kind == SHAPE_DISC)) {
             rc = greader_vec3(r, &center, err);
@@ -247,9 +248,11 @@ int scene_parse_object(GReader *r, const void *vtable, void **object, GError *er
             rc = greader_bool(r, &open, err);
         } else if (strcmp(key, "file") == 0 && kind == SHAPE_MESH) {
             rc = greader_path(r, &file, err);
-        } else if ((strcmp(key, "corner") == 0 && kind == SHAPE_QUAD) || (strcmp(key, "a") == 0 && kind == SHAPE_TRIANGLE)) {
+        } else if ((strcmp(key, "corner") == 0 && kind == SHAPE_QUAD) ||
+                   (strcmp(key, "a") == 0 && kind == SHAPE_TRIANGLE)) {
             rc = greader_vec3(r, &center, err);
-        } else if ((strcmp(key, "edge1") == 0 && kind == SHAPE_QUAD) || (strcmp(key, "b") == 0 && kind == SHAPE_TRIANGLE)) {
+        } else if ((strcmp(key, "edge1") == 0 && kind == SHAPE_QUAD) ||
+                   (strcmp(key, "b") == 0 && kind == SHAPE_TRIANGLE)) {
             rc = greader_vec3(r, &edge1, err);
         } else if (strcmp(key, "edge2") == 0 && kind == SHAPE_QUAD) {
             rc = greader_vec3(r, &edge2, err);
@@ -503,7 +506,8 @@ static void destroy_light(void *p) { light_free(p); }
 
 static const char *const camera_params[] = {
     "from, at, up, fov, frame, width, height, spp, depth, cutoff, exposure, medium, atmosphere, bands",
-    "from, at, up, fov, frame, aperture, focus_distance, width, height, spp, depth, cutoff, exposure, medium, atmosphere, bands",
+    "from, at, up, fov, frame, aperture, focus_distance, width, height, spp, depth, cutoff, exposure, medium, "
+    "atmosphere, bands",
     "from, at, up, size, frame, width, height, spp, depth, cutoff, exposure, medium, atmosphere, bands",
 };
 

@@ -74,8 +74,8 @@ typedef struct GFluorParam {
 /** Reads a fluorescent material's parameter block (lib/kit/fluorescent_params.c): `matrix` into *mat
  * (the default matrix when it is not given) and the numbers of `table` into params; `keys` lists every name for
  * the unknown-key message. *mat is freed by the caller (gfluor_finish), also on failure. */
-GENERIC_API GENERIC_NODISCARD int gfluor_read_params(GReader *r, const GFluorParam *table, const char *keys, void *params, GReradiation *mat,
-                      GError *err);
+GENERIC_API GENERIC_NODISCARD int gfluor_read_params(GReader *r, const GFluorParam *table, const char *keys,
+                                                     void *params, GReradiation *mat, GError *err);
 /** The end of a fluorescent material's parse: frees *mat and hands over m when rc is G_OK; returns rc. */
 GENERIC_API GENERIC_NODISCARD int gfluor_finish(int rc, GReradiation *mat, GMaterial *m, void **object);
 

@@ -23,9 +23,10 @@ GENERIC_API double goptics_fresnel_conductor(double cos_i, double eta, double k)
 GENERIC_API GENERIC_NODISCARD int gmaterial_fresnel_conductor(GColor *out, double cos_i, const GColor *eta,
                                                               const GColor *k);
 
-/** out = s * F + t * add sample by sample, F the conductor's Fresnel reflectance at cos_i of gmaterial_fresnel_conductor
- * (add may be NULL: out = s * F): a rough conductor's single-scattering term and its multiple-scattering colour in one
- * pass, in float arithmetic that the compiler vectorises (within 1e-6 of the double form). Status as gcolor_map. */
+/** out = s * F + t * add sample by sample, F the conductor's Fresnel reflectance at cos_i of
+ * gmaterial_fresnel_conductor (add may be NULL: out = s * F): a rough conductor's single-scattering term and its
+ * multiple-scattering colour in one pass, in float arithmetic that the compiler vectorises (within 1e-6 of the double
+ * form). Status as gcolor_map. */
 GENERIC_API GENERIC_NODISCARD int gmaterial_fresnel_conductor_mix(GColor *out, double cos_i, const GColor *eta,
                                                                   const GColor *k, double s, const GColor *add,
                                                                   double t);

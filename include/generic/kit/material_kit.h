@@ -20,7 +20,8 @@ extern "C" {
 /** Allocates a zeroed material of `size` bytes (a struct that begins with its GMaterial) of class cls in
  * model into *out: G_ERR_NOMEM "<class>: out of memory", G_ERR_VERSION for a class of another version. Until
  * it is complete, the material is freed with its class's destroy (or gmem_free). */
-GENERIC_API GENERIC_NODISCARD int gmaterial_new(const GMaterialClass *cls, const GColorModel *model, size_t size, GMaterial **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gmaterial_new(const GMaterialClass *cls, const GColorModel *model, size_t size,
+                                                GMaterial **out, GError *err);
 
 /** The state of a material whose one parameter is a colour (lambert, mirror; emitter adds a flag after it). */
 typedef struct GMaterialOneColor {
@@ -32,8 +33,10 @@ GENERIC_API void gmaterial_one_color_destroy(GMaterial *self);
 /** Creates a material of class cls whose struct (`size` bytes) begins with a GMaterialOneColor, its colour being
  * src checked and converted by gmaterial_param_color (role, max; complaints "<class>: <param> ..." name param).
  * G_ERR_INVALID "<class>: no colour model given" without a model. */
-GENERIC_API GENERIC_NODISCARD int gmaterial_one_color_create(const GMaterialClass *cls, const GColorModel *model, size_t size, const GColor *src,
-                          GColorRole role, double max, const char *param, GMaterial **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gmaterial_one_color_create(const GMaterialClass *cls, const GColorModel *model,
+                                                             size_t size, const GColor *src, GColorRole role,
+                                                             double max, const char *param, GMaterial **out,
+                                                             GError *err);
 
 /** 1 when in and out lie where one interface can join them, by the geometric normal (material.h): out on its
  * incident side, and in on that side too for a reflection (transmit = 0) or on the other for a refraction

@@ -29,12 +29,14 @@ extern "C" {
  * reflectance and stays <= max in every band, and a matrix needs its energy per excitation sample <= max. The same
  * physical rule in every model: energy is conserved. A complaint reads "<material>: <param> has the value V at
  * sample K (NM nm) (must be ...)" (or names the matrix's entry or energy) and names param (gerror_set_param). */
-GENERIC_API GENERIC_NODISCARD int gmaterial_param_color(const GColorModel *m, const GColor *src, GColorRole role, double max, const char *material,
-                    const char *param, GColor *dst, GError *err);
+GENERIC_API GENERIC_NODISCARD int gmaterial_param_color(const GColorModel *m, const GColor *src, GColorRole role,
+                                                        double max, const char *material, const char *param,
+                                                        GColor *dst, GError *err);
 /** The range a parameter colour c of role may take in its own model: [0, max] (max <= 0: no upper bound)
  * widened on both sides by the model's conversion error (gcolormodel_rgb_range) for a colour of size max (for
  * max <= 0, of c's largest RGB component), plus float rounding. *hi is INFINITY without an upper bound. */
-GENERIC_API GENERIC_NODISCARD int gmaterial_param_range(const GColor *c, GColorRole role, double max, double *lo, double *hi);
+GENERIC_API GENERIC_NODISCARD int gmaterial_param_range(const GColor *c, GColorRole role, double max, double *lo,
+                                                        double *hi);
 /** The energy a reflectance sends out per unit arriving, under equal-energy light: a vector, the mean of its
  * reflectance spectrum (gcolor_to_nm) over GNM_MIN..GNM_MAX; a re-radiation matrix, its largest column sum (all
  * it sends out, over every emission sample, per unit arriving at one excitation sample; that sample in *at,
@@ -60,7 +62,8 @@ GENERIC_API GENERIC_NODISCARD int gmaterial_param_check_sum(const GColor *sum, c
 GENERIC_API double gmaterial_param_max(const GColor *c, int *at);
 /** For a parse routine: unless c already holds a colour (one the file gave), makes c the grey `grey` (an sRGB
  * triple of that value, read in role) in the file's colour model, in new storage (free with gcolor_free). */
-GENERIC_API GENERIC_NODISCARD int gmaterial_param_default(GReader *r, double grey, GColorRole role, GColor *c, GError *err);
+GENERIC_API GENERIC_NODISCARD int gmaterial_param_default(GReader *r, double grey, GColorRole role, GColor *c,
+                                                          GError *err);
 
 /** A constructor of a material whose one parameter is a colour (e.g. glambert_create, gmirror_create). */
 typedef int (*GMaterialOneColorCreate)(const GColorModel *model, const GColor *color, GMaterial **out, GError *err);
@@ -70,8 +73,9 @@ typedef int (*GMaterialOneColorCreate)(const GColorModel *model, const GColor *c
  * `image { ... }` or `mix { ... }`): create then checks each extreme the texture can take, and the material made
  * with the unit colour is scaled by the texture's colour at each point (gtexparam_one_color_material), which is
  * the textured parameter for a material whose results are linear in its colour, as a one-colour material's are. */
-GENERIC_API GENERIC_NODISCARD int gmaterial_param_parse_one_color(GReader *r, const char *key, double grey, GColorRole role,
-                                          GMaterialOneColorCreate create, void **object, GError *err);
+GENERIC_API GENERIC_NODISCARD int gmaterial_param_parse_one_color(GReader *r, const char *key, double grey,
+                                                                  GColorRole role, GMaterialOneColorCreate create,
+                                                                  void **object, GError *err);
 
 #ifdef __cplusplus
 }

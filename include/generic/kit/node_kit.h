@@ -36,13 +36,14 @@ extern "C" {
 /** The depth and cost (see GNODE_MAX_DEPTH, GNODE_MAX_COST) of a node over n children, checked against
  * the limits (G_ERR_INVALID, the message begins with `node`). Nodes built with the constructors below have
  * them set; a node made otherwise sets its GMaterial's depth and cost from these. */
-GENERIC_API GENERIC_NODISCARD int gnode_measure(const char *node, GMaterial *const *children, int n, int *depth, int *cost,
-                                 GError *err);
+GENERIC_API GENERIC_NODISCARD int gnode_measure(const char *node, GMaterial *const *children, int n, int *depth,
+                                                int *cost, GError *err);
 
 /** Checks a node's children (n >= 1, none NULL, all in one colour model: G_ERR_MISMATCH otherwise) and its
  * generator (non-NULL when gen_needed); *model gets the common model. Messages begin with `node`. */
-GENERIC_API GENERIC_NODISCARD int gnode_check(const char *node, GMaterial *const *children, int n, const GGenerator *gen, int gen_needed,
-                   const GColorModel **model, GError *err);
+GENERIC_API GENERIC_NODISCARD int gnode_check(const char *node, GMaterial *const *children, int n,
+                                              const GGenerator *gen, int gen_needed, const GColorModel **model,
+                                              GError *err);
 
 /** gnode_check and gnode_measure (messages naming the class), then a zeroed node of `size` bytes (a struct
  * that begins with its GMaterial) of class cls in the children's model into *out, with one reference, its depth
@@ -50,11 +51,12 @@ GENERIC_API GENERIC_NODISCARD int gnode_check(const char *node, GMaterial *const
  * GMAT_GEOMETRIC_NORMAL as gnode_inherit_geometric_normal says for a class with the kit's normal slot, and
  * GMAT_NO_EMISSION (material.h) when its emission is black: cls has no emission slot, or the
  * slot is the kit's gnode_blended_emission or gnode_child_emission and every child has the bit (a blend class's
- * pick must blend only these children, a GNodeChild's child must be the one given). A class with an emission method of its own gets the bit only from
- * gnode_inherit_no_emission. It holds no reference to the children yet: the caller takes those. Until it is
- * complete, free it with gmem_free. */
-GENERIC_API GENERIC_NODISCARD int gnode_new_checked(const GMaterialClass *cls, GMaterial *const *children, int n, const GGenerator *gen,
-                         int gen_needed, size_t size, GMaterial **out, GError *err);
+ * pick must blend only these children, a GNodeChild's child must be the one given). A class with an emission method of
+ * its own gets the bit only from gnode_inherit_no_emission. It holds no reference to the children yet: the caller takes
+ * those. Until it is complete, free it with gmem_free. */
+GENERIC_API GENERIC_NODISCARD int gnode_new_checked(const GMaterialClass *cls, GMaterial *const *children, int n,
+                                                    const GGenerator *gen, int gen_needed, size_t size, GMaterial **out,
+                                                    GError *err);
 
 /** 1 when each of the n children has GMAT_NO_EMISSION (material.h): a node whose emission only combines theirs
  * (weighted sums, products with finite factors, the child's at a moved point) then emits nothing. */
@@ -112,14 +114,14 @@ GENERIC_API void gnode_inherit_lambertian(GMaterial *node, GMaterial *const *chi
  * class whose reflection at sp is the child's reflection at a point q times a factor k, whose diffuse colour at sp
  * is the child's diffuse colour at the same q times the same k, and whose is_delta is the child's (0 for a
  * Lambertian child). q is sp itself or a copy of it that carries sp's shading normal (gsurfpoint_normal(sp),
- * cached on sp before the copy) and its geometric normal, so that gmaterial_cos_in(q, ...) is gmaterial_cos_in(sp, ...); k
- * is a number or a colour that is a vector (GCOLOR_VECTOR), never a re-radiation matrix: k * (d * light) is then
- * (k * d) * light for the child's diffuse colour d, which a matrix k times a vector d is not. The node is then
- * Lambertian: k * d * light * gmaterial_cos_in(sp) / pi. Only the class knows this, so it calls this after construction:
- * bump (q = sp, k = 1: the child reads the shading normal cached on sp, the bumped one when the bump is the point's
- * material, which is what gsurfpoint_normal(sp) gives), scale (k the factor; 0 makes both black), image (k the texel
- * colour, when the image's primaries are vectors in the model) and transform (q the moved copy, k = 1). Never for a
- * node whose reflection and diffuse colour differ otherwise (a tint of one alone, a point with another shading
+ * cached on sp before the copy) and its geometric normal, so that gmaterial_cos_in(q, ...) is gmaterial_cos_in(sp,
+ * ...); k is a number or a colour that is a vector (GCOLOR_VECTOR), never a re-radiation matrix: k * (d * light) is
+ * then (k * d) * light for the child's diffuse colour d, which a matrix k times a vector d is not. The node is then
+ * Lambertian: k * d * light * gmaterial_cos_in(sp) / pi. Only the class knows this, so it calls this after
+ * construction: bump (q = sp, k = 1: the child reads the shading normal cached on sp, the bumped one when the bump is
+ * the point's material, which is what gsurfpoint_normal(sp) gives), scale (k the factor; 0 makes both black), image (k
+ * the texel colour, when the image's primaries are vectors in the model) and transform (q the moved copy, k = 1). Never
+ * for a node whose reflection and diffuse colour differ otherwise (a tint of one alone, a point with another shading
  * normal for the child): a wrong bit renders the diffuse colour where the reflection belongs. */
 GENERIC_API void gnode_inherit_lambertian_child(GMaterial *node, GMaterial *child);
 
@@ -181,27 +183,32 @@ GENERIC_API void gnode_blend_one(GNodeBlend *b, const GMaterial *m);
  * its own) the blended ray is an approximation and the test stays the point's mirror pair. Without a child with
  * the slot, or away from the pair, the cost is that of the plain sum (a few products, no square root, no call),
  * and the one-child blend calls its child directly. */
-GENERIC_API GENERIC_NODISCARD int gnode_blend_reflection(const GNodeBlend *b, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
-                         GColor *result);
+GENERIC_API GENERIC_NODISCARD int gnode_blend_reflection(const GNodeBlend *b, GSurfPoint *sp, GVec3 in,
+                                                         const GColor *illum, GVec3 out, GColor *result);
 /** Refraction of the blend: the weighted sum (result may alias illum or rel_index), with the rule of
  * gnode_blend_reflection at the ideal refraction: `in` the ideal refraction of -out about the point's shading
  * normal with the scalar index of rel_index (gsurfpoint_scalar_index; the point's relative index when rel_index
  * is NULL, as the dielectric reads it: goptics_is_refraction_pair), refraction_dir for the children's rays. */
-GENERIC_API GENERIC_NODISCARD int gnode_blend_refraction(const GNodeBlend *b, GSurfPoint *sp, GVec3 in, const GColor *illum, const GColor *rel_index,
-                         GVec3 out, GColor *result);
+GENERIC_API GENERIC_NODISCARD int gnode_blend_refraction(const GNodeBlend *b, GSurfPoint *sp, GVec3 in,
+                                                         const GColor *illum, const GColor *rel_index, GVec3 out,
+                                                         GColor *result);
 /** Refraction index of the blend: the weighted sum. */
 GENERIC_API GENERIC_NODISCARD int gnode_blend_refraction_index(const GNodeBlend *b, GSurfPoint *sp, GColor *result);
 /** Reflection direction of the blend: valid when a child's is; two or more valid directions are summed with
  * their weights and normalised (the one of largest weight when the sum vanishes), a single one is returned. */
-GENERIC_API GENERIC_NODISCARD int gnode_blend_reflection_dir(const GNodeBlend *b, GSurfPoint *sp, GVec3 view, GVec3 *dir);
+GENERIC_API GENERIC_NODISCARD int gnode_blend_reflection_dir(const GNodeBlend *b, GSurfPoint *sp, GVec3 view,
+                                                             GVec3 *dir);
 /** Refraction direction of the blend, as gnode_blend_reflection_dir. */
-GENERIC_API GENERIC_NODISCARD int gnode_blend_refraction_dir(const GNodeBlend *b, GSurfPoint *sp, GVec3 view, const GColor *rel_index, GVec3 *dir);
+GENERIC_API GENERIC_NODISCARD int gnode_blend_refraction_dir(const GNodeBlend *b, GSurfPoint *sp, GVec3 view,
+                                                             const GColor *rel_index, GVec3 *dir);
 /** Emission of the blend: the weighted sum. */
 GENERIC_API GENERIC_NODISCARD int gnode_blend_emission(const GNodeBlend *b, GSurfPoint *sp, GVec3 out, GColor *result);
 /** Ambient reflection of the blend: the weighted sum (result may alias illum). */
-GENERIC_API GENERIC_NODISCARD int gnode_blend_ambient(const GNodeBlend *b, GSurfPoint *sp, const GColor *illum, GColor *result);
+GENERIC_API GENERIC_NODISCARD int gnode_blend_ambient(const GNodeBlend *b, GSurfPoint *sp, const GColor *illum,
+                                                      GColor *result);
 /** Absorption of the blend: the weighted sum (result may alias illum). */
-GENERIC_API GENERIC_NODISCARD int gnode_blend_absorption(const GNodeBlend *b, GSurfPoint *sp, const GColor *illum, double length, GColor *result);
+GENERIC_API GENERIC_NODISCARD int gnode_blend_absorption(const GNodeBlend *b, GSurfPoint *sp, const GColor *illum,
+                                                         double length, GColor *result);
 /** Normal of the blend: the children's normals summed with their weights and normalised. */
 GENERIC_API GENERIC_NODISCARD int gnode_blend_normal(const GNodeBlend *b, GSurfPoint *sp, GVec3 *n);
 /** Diffuse colour of the blend: the weighted sum. */
@@ -215,8 +222,9 @@ GENERIC_API GENERIC_NODISCARD int gnode_blend_opaque(const GNodeBlend *b, GSurfP
  * non-delta direction on the blend's ideal ray (see gnode_blend_reflection) is weighed with the value of the lobes
  * that are not ideal: the children without a ray of their own there (those with one would give their ideal part,
  * which only the delta samples carry). */
-GENERIC_API GENERIC_NODISCARD int gnode_blend_sample(const GNodeBlend *b, GSurfPoint *sp, GVec3 out, const GColor *rel_index,
-                                                   double u1, double u2, GMaterialSample *s, GColor *weight);
+GENERIC_API GENERIC_NODISCARD int gnode_blend_sample(const GNodeBlend *b, GSurfPoint *sp, GVec3 out,
+                                                     const GColor *rel_index, double u1, double u2, GMaterialSample *s,
+                                                     GColor *weight);
 /** The mixture's density: sum q_j pdf_j(in, out) (see gnode_blend_sample). */
 GENERIC_API double gnode_blend_pdf(const GNodeBlend *b, GSurfPoint *sp, GVec3 in, GVec3 out, const GColor *rel_index);
 /** 1 when every child of non-zero weight is delta. */
@@ -263,7 +271,8 @@ typedef struct GNodeTemps {
 static inline void gnode_temps_init(GNodeTemps *t) { t->scratch = NULL; }
 /** Gives c temporary storage of model m (index: which of the method's temporaries, 0 or 1; kept for source
  * compatibility); G_ERR_NOMEM when the arena cannot grow. */
-GENERIC_API GENERIC_NODISCARD int gnode_temps_color(GNodeTemps *t, GSurfPoint *sp, const GColorModel *m, int index, GColor *c);
+GENERIC_API GENERIC_NODISCARD int gnode_temps_color(GNodeTemps *t, GSurfPoint *sp, const GColorModel *m, int index,
+                                                    GColor *c);
 /** Returns the arena to where it was before the first gnode_temps_color. */
 GENERIC_API void gnode_temps_release(GNodeTemps *t);
 
@@ -281,8 +290,8 @@ static inline GMaterial *gnode_child_of(const GMaterial *self) { return ((const 
 /** Creates a node of class cls whose struct (`size` bytes) begins with a GNodeChild holding a reference to child
  * (checked with gnode_check; gen, when gen_needed, must be non-NULL: the caller takes its own reference to
  * it). Until it is complete, free it with the class's destroy. */
-GENERIC_API GENERIC_NODISCARD int gnode_child_new(const GMaterialClass *cls, GMaterial *child, const GGenerator *gen, int gen_needed, size_t size,
-                  GMaterial **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gnode_child_new(const GMaterialClass *cls, GMaterial *child, const GGenerator *gen,
+                                                  int gen_needed, size_t size, GMaterial **out, GError *err);
 /** The destroy method of one-child nodes that own nothing else: drops the child and frees the struct. */
 GENERIC_API void gnode_child_destroy(GMaterial *self);
 
@@ -340,8 +349,8 @@ typedef struct GNodeList {
 
 /** Creates a node of class cls whose struct (`size` bytes) begins with a GNodeList holding a reference to each
  * of the n children and to gen (all checked with gnode_check). */
-GENERIC_API GENERIC_NODISCARD int gnode_list_new(const GMaterialClass *cls, GMaterial *const *children, int n, GGenerator *gen, size_t size,
-                 GMaterial **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gnode_list_new(const GMaterialClass *cls, GMaterial *const *children, int n,
+                                                 GGenerator *gen, size_t size, GMaterial **out, GError *err);
 /** The destroy method of the nodes whose struct begins with a GNodeList. */
 GENERIC_API void gnode_list_destroy(GMaterial *self);
 

@@ -42,7 +42,8 @@ GENERIC_API double gnoise_turbulence(const GNoiseParams *p, GVec3 x, GVec3 *grad
 /** Fills the defaults into a copy of the parameters (frequency 1, octaves 4, lacunarity 2, gain 0.5, object
  * space; in may be NULL for all defaults) and checks them: G_ERR_INVALID, the message naming the generator
  * `name`, for an unknown space, a negative or non-finite frequency, lacunarity or gain, or octaves beyond 16. */
-GENERIC_API GENERIC_NODISCARD int gnoise_params(const char *name, const GNoiseParams *in, GNoiseParams *out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gnoise_params(const char *name, const GNoiseParams *in, GNoiseParams *out,
+                                                GError *err);
 
 #ifdef __cplusplus
 }

@@ -78,12 +78,13 @@ GENERIC_API GENERIC_NODISCARD int gcpg_path_bezier(GCpgPath *p, int degree, cons
 /** A uniform B-spline edge of degree 1..GCPG_MAX_DEGREE over n > degree control points with knots
  * 0, 1, 2, ...; periodic != 0 closes it smoothly (the control polygon wraps around), otherwise it runs
  * from knot degree to knot n (it does not pass through its end control points). */
-GENERIC_API GENERIC_NODISCARD int gcpg_path_bspline(GCpgPath *p, int degree, const double *xy, int n, int periodic, GError *err);
+GENERIC_API GENERIC_NODISCARD int gcpg_path_bspline(GCpgPath *p, int degree, const double *xy, int n, int periodic,
+                                                    GError *err);
 /** A NURBS edge of degree 1..GCPG_MAX_DEGREE over n > degree control points with weights > 0 and a
  * non-decreasing knot vector of n + degree + 1 values (NULL: clamped uniform, so the edge runs from the
  * first to the last control point). Zero or negative weights and bad knot vectors are G_ERR_INVALID. */
-GENERIC_API GENERIC_NODISCARD int gcpg_path_nurbs(GCpgPath *p, int degree, const double *xy, const double *weights, int n, const double *knots,
-                    GError *err);
+GENERIC_API GENERIC_NODISCARD int gcpg_path_nurbs(GCpgPath *p, int degree, const double *xy, const double *weights,
+                                                  int n, const double *knots, GError *err);
 /** Closes the contour into a shape (non-zero winding rule); consumes the path, also when it fails
  * (G_ERR_INVALID for a contour of fewer than 3 distinct points without curved edges, or of no edges). */
 GENERIC_API GENERIC_NODISCARD int gcpg_path_close(GCpgPath *p, GCpgShape **out, GError *err);

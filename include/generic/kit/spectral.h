@@ -76,20 +76,22 @@ typedef struct GSpectral {
 /** Reads a configurable grid from the options (zero fields take the defaults: def_step, 380..780 nm) and
  * checks it: step in [1, 100] nm, the range inside 300..830 nm and a whole number of steps, at most max_n
  * samples. G_ERR_INVALID with a message naming the model otherwise. */
-GENERIC_API GENERIC_NODISCARD int gspectral_grid_from_options(const char *model, const GColorModelOptions *opt, double def_step, int max_n,
-                                GSpectralGrid *grid, GError *err);
+GENERIC_API GENERIC_NODISCARD int gspectral_grid_from_options(const char *model, const GColorModelOptions *opt,
+                                                              double def_step, int max_n, GSpectralGrid *grid,
+                                                              GError *err);
 /** For a model with a fixed grid: G_OK when every non-zero option equals the grid's own value, G_ERR_INVALID
  * ("colour model '<model>' has a fixed grid ...") otherwise, or when the grid itself is not one (n outside
  * 1..GSPECTRAL_MAX_SAMPLES, a start that is not finite, a step that is not finite and > 0). */
-GENERIC_API GENERIC_NODISCARD int gspectral_grid_check_fixed(const char *model, const GColorModelOptions *opt, GSpectralGrid grid,
-                               GError *err);
+GENERIC_API GENERIC_NODISCARD int gspectral_grid_check_fixed(const char *model, const GColorModelOptions *opt,
+                                                             GSpectralGrid grid, GError *err);
 /** The wavelength of sample k of a grid, in nm. */
 static inline double gspectral_grid_nm(GSpectralGrid grid, int k) { return grid.min + k * grid.step; }
 
 /** Builds a map from src to dst: G_ERR_NOMEM when out of memory, G_ERR_INVALID when dst's step is more than
  * 1000 source steps. With interpolate the map is linear interpolation whatever the steps (for reflectances,
  * which carry no energy to preserve). */
-GENERIC_API GENERIC_NODISCARD int gspectral_resample_build(GSpectralResample *r, GSpectralGrid src, GSpectralGrid dst, int interpolate);
+GENERIC_API GENERIC_NODISCARD int gspectral_resample_build(GSpectralResample *r, GSpectralGrid src, GSpectralGrid dst,
+                                                           int interpolate);
 /** Applies a map: dst[k * dst_stride] from src[j * src_stride] (strides in floats). */
 GENERIC_API void gspectral_resample_apply(const GSpectralResample *r, const float *src, int src_stride, float *dst,
                               int dst_stride);
@@ -103,11 +105,12 @@ GENERIC_API void gspectral_resample_free(GSpectralResample *r);
  * tables. m->priv must already point at the struct holding s and whatever m->cls->to_nm needs must be ready:
  * the colour matching weights and the RGB basis correction are computed through it. G_ERR_NOMEM, or
  * G_ERR_INVALID when the grid cannot represent RGB colours. */
-GENERIC_API GENERIC_NODISCARD int gspectral_init(GColorModel *m, GSpectral *s, GSpectralGrid grid, int linear_to_nm, GError *err);
+GENERIC_API GENERIC_NODISCARD int gspectral_init(GColorModel *m, GSpectral *s, GSpectralGrid grid, int linear_to_nm,
+                                                 GError *err);
 /** Sets how s's model makes spectra from RGB (GColorModelOptions.uplift; opt may be NULL: the default, sigmoid).
  * G_ERR_INVALID, naming the model, for a value that is not a GColorUplift. */
-GENERIC_API GENERIC_NODISCARD int gspectral_set_uplift(const GColorModel *m, GSpectral *s, const GColorModelOptions *opt,
-                                                       GError *err);
+GENERIC_API GENERIC_NODISCARD int gspectral_set_uplift(const GColorModel *m, GSpectral *s,
+                                                       const GColorModelOptions *opt, GError *err);
 /** Frees what gspectral_init allocated; NULL is a no-op. */
 GENERIC_API void gspectral_fini(GSpectral *s);
 
@@ -119,11 +122,12 @@ GENERIC_API GENERIC_NODISCARD int gspectral_model_alloc(GColorModel *m, size_t s
 /** The whole init of a plain sampled model on a configurable grid (priv is a GSpectral): the grid from the
  * options (gspectral_grid_from_options with def_step and max_n), capacity for n values per colour (n * n with
  * matrices), linear to_nm. */
-GENERIC_API GENERIC_NODISCARD int gspectral_model_init(GColorModel *m, const GColorModelOptions *opt, double def_step, int max_n, int matrices,
-                         GError *err);
+GENERIC_API GENERIC_NODISCARD int gspectral_model_init(GColorModel *m, const GColorModelOptions *opt, double def_step,
+                                                       int max_n, int matrices, GError *err);
 /** The whole init of a plain sampled model on a fixed grid (priv is a GSpectral, linear to_nm): refuses other
  * grid options (gspectral_grid_check_fixed). */
-GENERIC_API GENERIC_NODISCARD int gspectral_model_init_fixed(GColorModel *m, const GColorModelOptions *opt, GSpectralGrid grid, GError *err);
+GENERIC_API GENERIC_NODISCARD int gspectral_model_init_fixed(GColorModel *m, const GColorModelOptions *opt,
+                                                             GSpectralGrid grid, GError *err);
 /** The fini of every sampled model: gspectral_fini on the priv struct, which is then freed. */
 GENERIC_API void gspectral_model_fini(GColorModel *m);
 
@@ -153,12 +157,15 @@ GENERIC_API GENERIC_NODISCARD int gspectral_band_mask(const GColorModel *m, int 
 /** Sample k of a. */
 GENERIC_API double gspectral_band_value(const GColorModel *m, const GColor *a, int band);
 /** to_nm by linear interpolation between samples (0 outside the grid); needs the linear to_nm map. */
-GENERIC_API GENERIC_NODISCARD int gspectral_to_nm(const GColorModel *m, const GColor *a, GColorRole role, GSpectrumNM *out);
+GENERIC_API GENERIC_NODISCARD int gspectral_to_nm(const GColorModel *m, const GColor *a, GColorRole role,
+                                                  GSpectrumNM *out);
 /** from_nm by the hat-weighted average. */
-GENERIC_API GENERIC_NODISCARD int gspectral_from_nm(const GColorModel *m, const GSpectrumNM *in, GColorRole role, GColor *out);
+GENERIC_API GENERIC_NODISCARD int gspectral_from_nm(const GColorModel *m, const GSpectrumNM *in, GColorRole role,
+                                                    GColor *out);
 /** XYZ from the precomputed colour matching weights (equal to the class's to_nm path up to float rounding: the
  * weights are rounded to float and the sums made in float on 8 lanes, gspectral_kxyz of spectral_kernels.h). */
-GENERIC_API GENERIC_NODISCARD int gspectral_to_xyz(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3]);
+GENERIC_API GENERIC_NODISCARD int gspectral_to_xyz(const GColorModel *m, const GColor *a, GColorRole role,
+                                                   double xyz[3]);
 /** The float colour matching table gspectral_to_xyz reads for role (gspectral_xyz_table's layout, n = the grid's
  * samples), for a model's own to_xyz kernel over the same sums. */
 GENERIC_API const float *gspectral_xyz_floats(const GSpectral *s, GColorRole role);
@@ -166,7 +173,8 @@ GENERIC_API const float *gspectral_xyz_floats(const GSpectral *s, GColorRole rol
  * wavelengths, its coefficients refined against the model's own colour matching weights (so the round trip with
  * to_xyz is exact wherever sigmoid spectra reach the colour, and a reflectance of the sRGB cube stays within
  * [0, 1]); with the uplift GCOLOR_UPLIFT_BASIS, through the corrected RGB basis (exact round trip, linear). */
-GENERIC_API GENERIC_NODISCARD int gspectral_from_rgb(const GColorModel *m, const double rgb[3], GColorRole role, GColor *out);
+GENERIC_API GENERIC_NODISCARD int gspectral_from_rgb(const GColorModel *m, const double rgb[3], GColorRole role,
+                                                     GColor *out);
 
 #ifdef __cplusplus
 }

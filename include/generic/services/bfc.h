@@ -27,7 +27,8 @@ typedef struct GBfcData {
 /** Reads a BFC file; on failure out is cleared and err says "file:line:col: message". */
 GENERIC_API GENERIC_NODISCARD int gbfc_read(const char *path, GBfcData *out, GError *err);
 /** Parses BFC text of len bytes; name is used in messages. */
-GENERIC_API GENERIC_NODISCARD int gbfc_parse(const char *text, size_t len, const char *name, GBfcData *out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gbfc_parse(const char *text, size_t len, const char *name, GBfcData *out,
+                                             GError *err);
 /** Frees the values and clears out; a cleared or zeroed struct is a no-op. */
 GENERIC_API void gbfc_free(GBfcData *d);
 

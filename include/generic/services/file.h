@@ -70,7 +70,8 @@ GENERIC_API GENERIC_NODISCARD int gfile_output_begin(GFileOutput *o, const char 
 /** Finishes an output: flushes it to the disk (fsync), checks that the file has expected_size bytes
  * (when >= 0), closes it and renames it over the target. On any failure the temporary is removed and the
  * target is untouched. o is cleared in both cases. G_ERR_IO with the reason naming path. */
-GENERIC_API GENERIC_NODISCARD int gfile_output_commit(GFileOutput *o, long long expected_size, const char *path, GError *err);
+GENERIC_API GENERIC_NODISCARD int gfile_output_commit(GFileOutput *o, long long expected_size, const char *path,
+                                                      GError *err);
 
 /** Abandons an output: closes and removes the temporary, clears o. A cleared o is a no-op. */
 GENERIC_API void gfile_output_abort(GFileOutput *o);

@@ -211,7 +211,8 @@ GENERIC_API void gimage_spectra_free(GImageSpectraBuf *s);
 /** Writes img to path, encoding chosen by the extension (see the top of this file); the file appears
  * complete or not at all. G_ERR_INVALID for a bad image, G_ERR_IO when the format is unknown, the
  * destination cannot be written or the write fails. */
-GENERIC_API GENERIC_NODISCARD int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *opt, GError *err);
+GENERIC_API GENERIC_NODISCARD int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *opt,
+                                               GError *err);
 
 /** Checks before any work that gimage_write can write path: its directory exists and is writable, path is
  * not something other than a regular file (gfile_check_output), and its extension is one of

@@ -68,7 +68,8 @@ GENERIC_API GENERIC_NODISCARD int gprobe_create(int width, int height, const flo
 /** Loads a probe from any image OpenImageIO reads (EXR, HDR, PFM, TIFF, ...). `format` says how to read it
  * (GPROBE_AUTO decides by the aspect ratio); an angular map is resampled to a lat-long probe of `height`
  * rows (0: half the map's size). Clear errors for unreadable files and for images of the wrong shape. */
-GENERIC_API GENERIC_NODISCARD int gprobe_load(const char *path, GProbeFormat format, int height, GProbe **out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gprobe_load(const char *path, GProbeFormat format, int height, GProbe **out,
+                                              GError *err);
 
 /** Makes a lat-long probe of `height` rows (0: half the map's size) from an angular map (RGB or RGBA). */
 GENERIC_API GENERIC_NODISCARD int gprobe_from_angular(const GImage *map, int height, GProbe **out, GError *err);
@@ -122,10 +123,12 @@ GENERIC_API void gprobe_fibonacci(int m, GVec3 *normals);
 /** Ground-truth irradiance E (3 doubles per normal) at m unit normals: the full sum over pixels (Eq. 4), exact
  * up to rounding. Each row of the probe is a circle of directions; the visible arc for a normal is found in
  * closed form and summed with per-row prefix sums, so the cost is O(W H + m H) instead of O(m W H). */
-GENERIC_API GENERIC_NODISCARD int gprobe_irradiance(const GProbe *p, const GVec3 *normals, int m, double *E, GError *err);
+GENERIC_API GENERIC_NODISCARD int gprobe_irradiance(const GProbe *p, const GVec3 *normals, int m, double *E,
+                                                    GError *err);
 
 /** The same sum pixel by pixel (O(m W H)); a reference for tests and benchmarks. */
-GENERIC_API GENERIC_NODISCARD int gprobe_irradiance_direct(const GProbe *p, const GVec3 *normals, int m, double *E, GError *err);
+GENERIC_API GENERIC_NODISCARD int gprobe_irradiance_direct(const GProbe *p, const GVec3 *normals, int m, double *E,
+                                                           GError *err);
 
 /** A directional light: direction towards it (unit) and the irradiance it gives a surface facing it. */
 typedef struct GProbeLight {
@@ -179,7 +182,7 @@ typedef void (*GProbeProgress)(void *user, const char *stage, double fraction);
 
 /** Options for the techniques; a zeroed struct (or NULL) takes every default. */
 typedef struct GProbeOptions {
-    int fit_normals;     /**< irradiance: normals the fit uses (0: 2000); lights x normals at most GPROBE_FIT_MAX_PAIRS */
+    int fit_normals; /**< irradiance: normals the fit uses (0: 2000); lights x normals at most GPROBE_FIT_MAX_PAIRS */
     int max_iterations;  /**< irradiance: Levenberg-Marquardt iterations (0: 400); kmeans: Lloyd rounds (0: 60) */
     GProbeProgress progress;
     void *user;
@@ -201,8 +204,8 @@ typedef struct GProbeFitReport {
 
 /** Approximates the probe by n directional lights with a technique (median cut needs n a power of 2).
  * lights must hold n entries; lights without energy get rgb = 0 and still fill a slot. */
-GENERIC_API GENERIC_NODISCARD int gprobe_approximate(const GProbe *p, GProbeTechnique t, int n, const GProbeOptions *opt, GProbeLight *lights,
-                       GError *err);
+GENERIC_API GENERIC_NODISCARD int gprobe_approximate(const GProbe *p, GProbeTechnique t, int n,
+                                                     const GProbeOptions *opt, GProbeLight *lights, GError *err);
 
 /** Median cut (Debevec 2005): n = 2^k regions split along their longest side (width weighted by
  * sin theta) where the energy (luminance of Q) halves; a light at each region's energy centroid with the
@@ -213,11 +216,12 @@ GENERIC_API GENERIC_NODISCARD int gprobe_median_cut(const GProbe *p, int n, GPro
 GENERIC_API GENERIC_NODISCARD int gprobe_adaptive_median_cut(const GProbe *p, int n, GProbeLight *lights, GError *err);
 /** LightGen-style clustering: spherical k-means of the pixel directions weighted by energy, seeded
  * deterministically (k-means++ from a fixed seed); each light carries its cluster's summed Q. */
-GENERIC_API GENERIC_NODISCARD int gprobe_kmeans(const GProbe *p, int n, const GProbeOptions *opt, GProbeLight *lights, GError *err);
+GENERIC_API GENERIC_NODISCARD int gprobe_kmeans(const GProbe *p, int n, const GProbeOptions *opt, GProbeLight *lights,
+                                                GError *err);
 /** Irradiance optimisation: n lights fitted to the ground-truth irradiance at fit normals (see
  * lib/probe/optimize.c for the method); report may be NULL. */
-GENERIC_API GENERIC_NODISCARD int gprobe_irradiance_fit(const GProbe *p, int n, const GProbeOptions *opt, GProbeLight *lights,
-                          GProbeFitReport *report, GError *err);
+GENERIC_API GENERIC_NODISCARD int gprobe_irradiance_fit(const GProbe *p, int n, const GProbeOptions *opt,
+                                                        GProbeLight *lights, GProbeFitReport *report, GError *err);
 
 /** Variance-minimising median cut (Viriyothai & Debevec 2009): regions of the lat-long image are split one
  * at a time, always the split (either axis, any position) that lowers the summed within-region variance
@@ -231,7 +235,8 @@ typedef struct GProbeRect {
 
 /** The n regions a cutting technique (GPROBE_MEDIANCUT, GPROBE_ADAPTIVE or GPROBE_VARIANCE) makes, in the
  * order of its lights. G_ERR_INVALID for other techniques or counts they cannot make. */
-GENERIC_API GENERIC_NODISCARD int gprobe_cut_regions(const GProbe *p, GProbeTechnique t, int n, GProbeRect *rects, GError *err);
+GENERIC_API GENERIC_NODISCARD int gprobe_cut_regions(const GProbe *p, GProbeTechnique t, int n, GProbeRect *rects,
+                                                     GError *err);
 
 /** Energy-weighted variance of the pixel positions of a region: sum of e |x - mean x|^2 over its pixels,
  * e the luminance of Q, x = ((u + 0.5 - W / 2) sin theta_v, v + 0.5) in pixels (the sinusoidal projection,
@@ -288,7 +293,8 @@ typedef struct GProbeAmbientCube {
     double c[6][3];
 } GProbeAmbientCube;
 /** Fits the six colours to the ground-truth irradiance at fit_normals normals (0: 2000) by least squares. */
-GENERIC_API GENERIC_NODISCARD int gprobe_ambient_cube_fit(const GProbe *p, int fit_normals, GProbeAmbientCube *cube, GError *err);
+GENERIC_API GENERIC_NODISCARD int gprobe_ambient_cube_fit(const GProbe *p, int fit_normals, GProbeAmbientCube *cube,
+                                                          GError *err);
 /** The cube's value along a unit direction: the irradiance on a surface with that normal. */
 GENERIC_API void gprobe_ambient_cube_eval(const GProbeAmbientCube *cube, GVec3 d, double rgb[3]);
 
@@ -310,8 +316,8 @@ typedef enum GProbeSGFit {
 
 /** Fits n lobes (1..GPROBE_SG_MAX_LOBES); ambient (3 values, may be NULL unless GPROBE_SG_LS_AMBIENT) gets
  * the constant term (0 for the other fits). */
-GENERIC_API GENERIC_NODISCARD int gprobe_sg_fit(const GProbe *p, int n, GProbeSGFit fit, GProbeSGLobe *lobes, double ambient[3],
-                  GError *err);
+GENERIC_API GENERIC_NODISCARD int gprobe_sg_fit(const GProbe *p, int n, GProbeSGFit fit, GProbeSGLobe *lobes,
+                                                double ambient[3], GError *err);
 /** Irradiance of a lobe of amplitude 1 on a surface whose normal makes cosine mu with the axis (numerical
  * quadrature of the exact integral, accurate to about 1e-6 relative). */
 GENERIC_API double gprobe_sg_lobe_irradiance(double sharpness, double mu);
@@ -351,7 +357,8 @@ GENERIC_API GENERIC_NODISCARD int gprobe_basis_parse(const char *name, GProbeBas
 /** 1 when a kind can have n coefficients or lobes (sh: 4, 9, 16, 25; ambient cube: 6; SG: 1..128). */
 GENERIC_API int gprobe_basis_size_ok(GProbeBasisKind k, int n);
 /** Fits a basis of size n to the probe; out is zeroed first and owns its lobes. */
-GENERIC_API GENERIC_NODISCARD int gprobe_basis_fit(const GProbe *p, GProbeBasisKind k, int n, GProbeBasis *out, GError *err);
+GENERIC_API GENERIC_NODISCARD int gprobe_basis_fit(const GProbe *p, GProbeBasisKind k, int n, GProbeBasis *out,
+                                                   GError *err);
 /** Frees what a basis holds; a zeroed basis is a no-op. */
 GENERIC_API void gprobe_basis_free(GProbeBasis *b);
 /** Irradiance at m unit normals (3 doubles each). */

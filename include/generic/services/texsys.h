@@ -54,14 +54,15 @@ typedef struct GTexFile GTexFile;
  * image.h: the formats read) and, unless GENERIC_DECODE=inprocess, a decoder process decodes it whole before the
  * texture system opens it in this process. *srgb is 1 for integer data not marked linear (8-bit PNG/JPEG), 0 for
  * float data. */
-GENERIC_API GENERIC_NODISCARD int gtexsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *channels, int *srgb, GError *err);
+GENERIC_API GENERIC_NODISCARD int gtexsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *channels,
+                                               int *srgb, GError *err);
 
 /** A filtered lookup of 3 channels (grey files are replicated) at (s, t) (t = 0 at the top row) over the
  * footprint spanned by the two axes (dsdx, dtdx) and (dsdy, dtdy) (full widths in s, t units; all 0 = the
  * finest level), anisotropic with trilinear MIP-mapping, and the wrap modes; G_ERR_IO when OpenImageIO fails
  * (rgb is then black). An isotropic width w is (w, 0, 0, w). Thread safe. */
-GENERIC_API GENERIC_NODISCARD int gtexsys_lookup(GTextureSystem *ts, GTexFile *file, GTexWrap swrap, GTexWrap twrap, double s, double t,
-                   const double deriv[4], double blur, float rgb[3]);
+GENERIC_API GENERIC_NODISCARD int gtexsys_lookup(GTextureSystem *ts, GTexFile *file, GTexWrap swrap, GTexWrap twrap,
+                                                 double s, double t, const double deriv[4], double blur, float rgb[3]);
 
 #ifdef __cplusplus
 }
