@@ -6,61 +6,12 @@
 #include "generic/builtins.h"
 #include "generic/material.h"
 #include "generic/reader.h"
+#include "material_timing.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
-
-enum { PAIRS = 4096 };
-
-static double now(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t); /* CPU time: other processes do not count */
-    return t.tv_sec + 1e-9 * t.tv_nsec;
-}
-
-static GVec3 in_dir[PAIRS], out_dir[PAIRS];
-static volatile float sink;
-
-static GVec3 random_dir(void)
-{
-    double c = 0.02 + 0.98 * rand() / (double)RAND_MAX, phi = 2 * M_PI * rand() / (double)RAND_MAX;
-    double s = sqrt(1 - c * c);
-    return gvec3(s * cos(phi), s * sin(phi), c);
-}
-
-/* Nanoseconds per reflection() (sampling 0) or sample() (sampling 1) call over n calls, the best of 3 batches. */
-static double time_material(const GMaterial *m, const GColor *light, GScratch *sc, long n, int sampling)
-{
-    GSurfPoint sp;
-    gsurfpoint_init(&sp, m->model, sc);
-    sp.geometric_normal = gvec3(0, 0, 1);
-    sp.material = m;
-    GScratchMark mark = gscratch_mark(sc);
-    GColor out;
-    if (gcolor_scratch(&out, m->model, sc) != G_OK)
-        return NAN;
-    double best = INFINITY;
-    for (int round = 0; round < 3; round++) {
-        double t0 = now();
-        for (long k = 0; k < n; k++) {
-            int j = (int)(k & (PAIRS - 1));
-            if (sampling) {
-                GMaterialSample s;
-                gmaterial_sample(m, &sp, out_dir[j], NULL, in_dir[j].x * 0.5 + 0.5, in_dir[j].y * 0.5 + 0.5, &s, &out);
-            } else {
-                gmaterial_reflection(m, &sp, in_dir[j], light, out_dir[j], &out);
-            }
-        }
-        double dt = (now() - t0) / n * 1e9;
-        best = dt < best ? dt : best;
-    }
-    sink += out.v[0];
-    gscratch_release(sc, mark);
-    return best;
-}
 
 /* The materials, lambert first (the baseline): the docs' material preview's, at the roughness its tiles use. */
 static const char *const library =
@@ -119,11 +70,7 @@ int main(int argc, char **argv)
     long n = argc > 1 ? atol(argv[1]) : 100000;
     if (n <= 0 || generic_register_builtins(NULL) != G_OK)
         return 1;
-    srand(7);
-    for (int i = 0; i < PAIRS; i++) {
-        in_dir[i] = random_dir();
-        out_dir[i] = random_dir();
-    }
+    fill_pairs();
     printf("per call, thread CPU time, the best of 3 batches of %ld; ratios to lambert's\n", n);
     const char *models[] = {"rgb", "spectrum9", "spectrum", "bispectral"};
     for (int i = 0; i < 4; i++)
