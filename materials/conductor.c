@@ -162,25 +162,25 @@ typedef struct TableMix {
 
 /* The loop of table_mix, for each operand given or not, so that each compiles without a test per sample. Each step
  * rounds to float as gcolor_mul after the mix would. */
-#define TABLE_MIX_LOOP(out, m, n)                                                                              \
-    do {                                                                                                       \
-        const float *lo = (m)->lo, *hi = (m)->hi, *a = (m)->add, *l = (m)->light;                              \
-        const float w0 = (m)->w0, w1 = (m)->w1, fs = (m)->s, ft = (m)->t;                                      \
-        if (a && l) {                                                                                          \
-            _Pragma("omp simd") for (int i = 0; i < (n); i++) {                                               \
-                float v = (w0 * lo[i] + w1 * hi[i]) * fs + a[i] * ft;                                          \
-                (out)[i] = v * l[i];                                                                           \
-            }                                                                                                  \
-        } else if (a) {                                                                                        \
-            _Pragma("omp simd") for (int i = 0; i < (n); i++)(out)[i] = (w0 * lo[i] + w1 * hi[i]) * fs + a[i] * ft; \
-        } else if (l) {                                                                                        \
-            _Pragma("omp simd") for (int i = 0; i < (n); i++) {                                               \
-                float v = (w0 * lo[i] + w1 * hi[i]) * fs;                                                      \
-                (out)[i] = v * l[i];                                                                           \
-            }                                                                                                  \
-        } else {                                                                                               \
-            _Pragma("omp simd") for (int i = 0; i < (n); i++)(out)[i] = (w0 * lo[i] + w1 * hi[i]) * fs;        \
-        }                                                                                                      \
+#define TABLE_MIX_LOOP(out, m, n)                                                                                      \
+    do {                                                                                                               \
+        const float *lo = (m)->lo, *hi = (m)->hi, *a = (m)->add, *l = (m)->light;                                      \
+        const float w0 = (m)->w0, w1 = (m)->w1, fs = (m)->s, ft = (m)->t;                                              \
+        if (a && l) {                                                                                                  \
+            GSPECTRAL_SIMD for (int i = 0; i < (n); i++) {                                                             \
+                float v = (w0 * lo[i] + w1 * hi[i]) * fs + a[i] * ft;                                                  \
+                (out)[i] = v * l[i];                                                                                   \
+            }                                                                                                          \
+        } else if (a) {                                                                                                \
+            GSPECTRAL_SIMD for (int i = 0; i < (n); i++)(out)[i] = (w0 * lo[i] + w1 * hi[i]) * fs + a[i] * ft;         \
+        } else if (l) {                                                                                                \
+            GSPECTRAL_SIMD for (int i = 0; i < (n); i++) {                                                             \
+                float v = (w0 * lo[i] + w1 * hi[i]) * fs;                                                              \
+                (out)[i] = v * l[i];                                                                                   \
+            }                                                                                                          \
+        } else {                                                                                                       \
+            GSPECTRAL_SIMD for (int i = 0; i < (n); i++)(out)[i] = (w0 * lo[i] + w1 * hi[i]) * fs;                     \
+        }                                                                                                              \
     } while (0)
 
 static void table_mix(float *out, const TableMix *m, int n);

@@ -350,6 +350,14 @@ static inline void gspectral_kxyz(const float *t, const float *a, int n, double 
 #endif
 }
 
+/** Asks the compiler to vectorise the loop that follows: OpenMP's simd where the file is compiled with OpenMP (the
+ * library), else GCC's ivdep (a type file compiled as a module without it). */
+#ifdef _OPENMP
+#define GSPECTRAL_SIMD _Pragma("omp simd")
+#else
+#define GSPECTRAL_SIMD _Pragma("GCC ivdep")
+#endif
+
 /* ---- 8-float versions (AVX2), for functions compiled for AVX2 and chosen when the library is loaded ----
  *
  * On x86-64 the kernels above have versions on 8-float vectors (spectral_kernels8.h, included at the end) that
