@@ -184,7 +184,7 @@ done
            g["gtrace"] / g["povray"], p["gtrace"] / p["povray"], s["gtrace"] / s["povray"] }' "$TMP/slopes"
 if [ "$TARGET" = auto ]; then
     TARGET=$(awk '$4 > 0 && $5 > 0 { if (!($1 in m) || $5 < m[$1]) m[$1] = $5 }
-        END { t = 0; for (p in m) if (m[p] > t) t = m[p]; printf "%.6g", t > 0 ? 1.02 * t : 0.05 }' "$TMP/sum")
+        END { t = 0; for (p in m) if (m[p] > t) t = m[p]; printf "%.6g", (t > 0 ? 1.02 * t : 0.05) }' "$TMP/sum")
 fi
 for prog in gtrace povray; do
     grep -q "^$prog " "$TMP/sum" || continue
