@@ -124,6 +124,8 @@ static void compensated_keeps_energy(void **state)
     for (int k = 0; k < 4; k++)
         for (int t = 0; t < 3; t++)
             for (int inside = 0; inside < 2; inside++) {
+                if (TU_SANITIZED && (2 * t + inside) % 4 != k) /* under the sanitizers each case in one model */
+                    continue;
                 Glass g;
                 glass_open(&g, models[k], texts[t], inside);
                 double worst = 0.0, lowest = 1.0, highest = 0.0;
@@ -296,6 +298,8 @@ static void sampling_chi2(void **state)
     for (int k = 0; k < 4; k++)
         for (int a = 0; a < 3; a++) {
             char text[128];
+            if (TU_SANITIZED && (k + a) % 3 != 0) /* under the sanitizers every model and every alpha, not all pairs */
+                continue;
             snprintf(text, sizeof text, "material g dielectric { index 1.5 roughness %g }", alphas[a]);
             Glass g;
             glass_open(&g, models[k], text, k % 2); /* rgb and spectrum from outside, the others from inside */
