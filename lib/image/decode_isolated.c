@@ -124,21 +124,6 @@ static uint64_t server_limit; /* its address space limit now: the base, or the d
 
 static uint64_t base_bytes(void) { return (uint64_t)GDECODE_BASE_MB << 20; }
 
-static int send_all(int fd, const void *buf, size_t n)
-{
-    const char *p = buf;
-    while (n > 0) {
-        ssize_t w = send(fd, p, n, MSG_NOSIGNAL);
-        if (w < 0 && errno == EINTR)
-            continue;
-        if (w <= 0)
-            return -1;
-        p += w;
-        n -= (size_t)w;
-    }
-    return 0;
-}
-
 /* Reads one record of the given phase, and its message: 0, or -1 when the decoder stopped or broke the protocol. */
 static int recv_record(int fd, int phase, GDecodeRecord *r, char message[GDECODE_MESSAGE_MAX + 1])
 {
@@ -288,7 +273,7 @@ static int run_locked(const char *path, GDecodeMode mode, unsigned flags, GImage
     GDecodeRecord head, r;
     char message[GDECODE_MESSAGE_MAX + 1];
     unsigned long cpu = GDECODE_CPU_SECONDS;
-    if (send_all(server_sock, &q, sizeof q) != 0 || send_all(server_sock, path, len) != 0 ||
+    if (gfile_send_exact(server_sock, &q, sizeof q) != 0 || gfile_send_exact(server_sock, path, len) != 0 ||
         recv_record(server_sock, GDECODE_HEADER, &head, message) != 0)
         return stop(path, 0, cpu, err);
     if (head.status != G_OK)
@@ -317,7 +302,7 @@ static int run_locked(const char *path, GDecodeMode mode, unsigned flags, GImage
     cpu = GDECODE_CPU_SECONDS + (unsigned long)(pixels / 1e6);
     GDecodeGo go = {GDECODE_MAGIC, rc == G_OK ? 'g' : 'n', base_bytes() + (uint64_t)(1.5 * charge), cpu};
     server_limit = go.address_space < server_max ? go.address_space : server_max;
-    if (send_all(server_sock, &go, sizeof go) != 0) {
+    if (gfile_send_exact(server_sock, &go, sizeof go) != 0) {
         if (rc == G_OK)
             gmem_budget_release((size_t)charge);
         return rc != G_OK ? (stop(path, 1, cpu, NULL), rc) : stop(path, 0, cpu, err);

@@ -21,6 +21,7 @@
 #include "mesh_protocol.h"
 
 #include <generic/memory.h>
+#include <generic/services/file.h>
 
 #include <dlfcn.h>
 #include <errno.h>
@@ -158,21 +159,6 @@ static int recv_exact(Reader *R, void *buf, size_t n)
     return 0;
 }
 
-static int send_exact(int fd, const void *buf, size_t n)
-{
-    const char *p = buf;
-    while (n > 0) {
-        ssize_t w = send(fd, p, n, MSG_NOSIGNAL);
-        if (w < 0 && errno == EINTR)
-            continue;
-        if (w <= 0)
-            return -1;
-        p += w;
-        n -= (size_t)w;
-    }
-    return 0;
-}
-
 /* Waits for the reader to end, until its deadline; then kills it (R->late). */
 static void reap(Reader *R, int *status)
 {
@@ -244,7 +230,9 @@ static int answer(Reader *R, const char *text, const MeshFiles *files)
     int rc = files && files->allowed ? files->allowed(files->ctx, text, &refusal) : G_OK;
     size_t mlen = rc == G_OK ? 0 : strnlen(refusal.message, sizeof refusal.message);
     MeshAnswer a = {MESH_PROTOCOL_MAGIC, rc == G_OK ? G_OK : (rc < 0 ? rc : G_ERR_IO), (uint32_t)mlen};
-    return send_exact(R->sock, &a, sizeof a) != 0 || send_exact(R->sock, refusal.message, mlen) != 0 ? -1 : 0;
+    if (gfile_send_exact(R->sock, &a, sizeof a) != 0 || gfile_send_exact(R->sock, refusal.message, mlen) != 0)
+        return -1;
+    return 0;
 }
 
 /* The reader's error, as it set it: the code (one of the library's), the position, the parameter, the text. */

@@ -42,12 +42,14 @@ GENERIC_API GENERIC_NODISCARD int gfile_open_input(const char *path, GError *err
 GENERIC_API GENERIC_NODISCARD int gfile_check_input(const char *path, GError *err);
 /** Reads the regular file at path whole, at most limit bytes, into a NUL-terminated buffer *text of *len bytes (free
  * with gmem_free). Errors name the file but no position. */
+GENERIC_API GENERIC_NODISCARD int gfile_read_all(const char *path, size_t limit, char **text, size_t *len, GError *err);
 /** Reads exactly n bytes from the descriptor fd into buf, going on after interruptions (EINTR): 0, or -1 at an
  * error or at the end of the input before n bytes (the protocol of a helper process's pipe or socket). */
 GENERIC_API GENERIC_NODISCARD int gfile_read_exact(int fd, void *buf, size_t n);
 /** Writes exactly n bytes of buf to the descriptor fd, going on after interruptions: 0, or -1 at an error. */
 GENERIC_API GENERIC_NODISCARD int gfile_write_exact(int fd, const void *buf, size_t n);
-GENERIC_API GENERIC_NODISCARD int gfile_read_all(const char *path, size_t limit, char **text, size_t *len, GError *err);
+/** gfile_write_exact for a socket, without SIGPIPE when its peer has gone (send with MSG_NOSIGNAL): 0, or -1. */
+GENERIC_API GENERIC_NODISCARD int gfile_send_exact(int fd, const void *buf, size_t n);
 
 /** An output being written; see the top of this file. */
 typedef struct GFileOutput {
