@@ -1,9 +1,33 @@
 /* reader_fixture.h - shared by the text-reader tests (include after <cmocka.h> and generic/reader.h): loading
- * a text that must fail, with the exact message it must give; the kinds of a renderer's scene entries. */
+ * a text that must load or must fail, with the exact message it must give; a point of the xy plane to evaluate what
+ * was loaded at; the kinds of a renderer's scene entries. */
 #ifndef GENERIC_TEST_READER_FIXTURE_H
 #define GENERIC_TEST_READER_FIXTURE_H
 
 #include <string.h>
+
+/* Loads text as "t.mat"; the load must succeed (the message is printed when it does not). */
+static inline GLibrary *load_ok(const char *text)
+{
+    GLibrary *lib = NULL;
+    GError err;
+    int rc = greader_load_string(text, "t.mat", NULL, &lib, &err);
+    if (rc != G_OK)
+        print_error("%s\n", err.message);
+    assert_int_equal(rc, G_OK);
+    return lib;
+}
+
+/* A point of the xy plane (normal +z, tangents x and y) at (u, v) = (x, y), without a footprint (no filtering),
+ * on the scratch arena s. */
+static inline GSurfPoint *plane_point(const GColorModel *m, GScratch *s, double u, double v)
+{
+    GError err;
+    GSurfPoint *sp = gsurfpoint_new(m, s, gvec3(u, v, 0), gvec3(0, 0, 1), gvec3(1, 0, 0), gvec3(0, 1, 0), u, v, 0,
+                                    &err);
+    assert_non_null(sp);
+    return sp;
+}
 
 /* Loads text as "t.mat"; the load must fail, leave no library and give exactly `message` (printed beside
  * what came when it differs). */

@@ -18,27 +18,6 @@
 #include "test_alloc.h"
 #include "test_util.h"
 
-static GLibrary *load(const char *text)
-{
-    GLibrary *lib = NULL;
-    GError err;
-    int rc = greader_load_string(text, "t.mat", NULL, &lib, &err);
-    if (rc != G_OK)
-        print_error("%s\n", err.message);
-    assert_int_equal(rc, G_OK);
-    return lib;
-}
-
-/* A point of the xy plane (normal +z) at (u, v) = (x, y), without a footprint (no filtering). */
-static GSurfPoint *point_at(const GColorModel *m, GScratch *s, double u, double v)
-{
-    GError err;
-    GSurfPoint *sp = gsurfpoint_new(m, s, gvec3(u, v, 0), gvec3(0, 0, 1), gvec3(1, 0, 0), gvec3(0, 1, 0), u, v, 0,
-                                    &err);
-    assert_non_null(sp);
-    return sp;
-}
-
 /* The message a load of text gives, which must contain want. */
 static void load_fails_with(const char *text, const char *want)
 {
@@ -54,7 +33,7 @@ static void load_fails_with(const char *text, const char *want)
 /* A point of m at (u, v) where the light enters m from vacuum (the relative index n(vacuum) / n(m)). */
 static GSurfPoint *entering(const GMaterial *m, GScratch *s, double u, double v)
 {
-    GSurfPoint *sp = point_at(m->model, s, u, v);
+    GSurfPoint *sp = plane_point(m->model, s, u, v);
     sp->material = m;
     sp->from = NULL;
     sp->to = m;
@@ -176,14 +155,14 @@ static double worst_relative(const GMaterial *t, const GMaterial *c, GScratch *s
 static void test_range_maps_linearly(void **state)
 {
     (void)state;
-    GLibrary *lib = load("generator c checker { dims 2 frequency 1 range 10 200 }\n"
+    GLibrary *lib = load_ok("generator c checker { dims 2 frequency 1 range 10 200 }\n"
                          "generator p perlin { frequency 2 }\n"
                          "generator q perlin { frequency 2 range -1 3 }\n"
                          "generator d checker { dims 2 range 0 1 }\n");
     GScratch *s = gscratch_create(1 << 14);
     const GGenerator *c = glibrary_find(lib, GKIND_GENERATOR, "c"), *p = glibrary_find(lib, GKIND_GENERATOR, "p"),
                      *q = glibrary_find(lib, GKIND_GENERATOR, "q"), *d = glibrary_find(lib, GKIND_GENERATOR, "d");
-    GSurfPoint *even = point_at(glibrary_colormodel(lib), s, 0.5, 0.5), *odd = point_at(glibrary_colormodel(lib), s,
+    GSurfPoint *even = plane_point(glibrary_colormodel(lib), s, 0.5, 0.5), *odd = plane_point(glibrary_colormodel(lib), s,
                                                                                           1.5, 0.5);
     assert_true(ggenerator_value(c, even) == 10.0);
     assert_true(ggenerator_value(c, odd) == 200.0);
@@ -194,7 +173,7 @@ static void test_range_maps_linearly(void **state)
     assert_true(lo == 0.0 && hi == 1.0);
     assert_string_equal(ggenerator_name(d), "checker"); /* the default range makes no range generator */
     for (int i = 0; i < 20; i++) {
-        GSurfPoint *sp = point_at(glibrary_colormodel(lib), s, 0.137 * i, 0.291 * i);
+        GSurfPoint *sp = plane_point(glibrary_colormodel(lib), s, 0.137 * i, 0.291 * i);
         double v = ggenerator_value(p, sp), w = ggenerator_value(q, sp);
         assert_true(w == -1.0 * (1.0 - v) + 3.0 * v);
         GVec3 gp, gq;
@@ -215,7 +194,7 @@ static void test_range_maps_linearly(void **state)
 static void test_mix_is_exact_in_cells(void **state)
 {
     (void)state;
-    GLibrary *lib = load("colormodel spectrum\n"
+    GLibrary *lib = load_ok("colormodel spectrum\n"
                          "material t lambert { reflectance mix { by checker { dims 2 frequency 1 } a rgb 0.2 0.3 0.4 "
                          "b rgb 0.6 0.5 0.1 } }\n"
                          "material a lambert { reflectance rgb 0.2 0.3 0.4 }\n"
@@ -228,8 +207,8 @@ static void test_mix_is_exact_in_cells(void **state)
     assert_int_equal(gcolor_alloc(&want, m), G_OK);
     GVec3 in = gvec3_normalize(gvec3(0.3, 0.2, 1.0)), out = gvec3_normalize(gvec3(-0.2, 0.1, 1.0));
     for (int cell = 0; cell < 2; cell++) {
-        GSurfPoint *sp = point_at(m, s, cell ? 1.25 : 0.25, 0.75);
-        GSurfPoint *sq = point_at(m, s, cell ? 1.25 : 0.25, 0.75);
+        GSurfPoint *sp = plane_point(m, s, cell ? 1.25 : 0.25, 0.75);
+        GSurfPoint *sq = plane_point(m, s, cell ? 1.25 : 0.25, 0.75);
         assert_int_equal(gmaterial_reflection(glibrary_material(lib, "t"), sp, in, &white, out, &got), G_OK);
         assert_int_equal(gmaterial_reflection(glibrary_material(lib, cell ? "b" : "a"), sq, in, &white, out, &want),
                          G_OK);
@@ -252,14 +231,14 @@ static void test_mix_is_exact_in_cells(void **state)
 static void test_memoised_without_allocation(void **state)
 {
     (void)state;
-    GLibrary *lib = load("generator g perlin { frequency 3 range 5 300 }\n"
+    GLibrary *lib = load_ok("generator g perlin { frequency 3 range 5 300 }\n"
                          "material p phong { diffuse mix { by checker { dims 2 } a rgb 0.1 0.2 0.3 b rgb 0.5 0.4 "
                          "0.3 } specular rgb 0.2 0.2 0.2 exponent g }\n");
     const GColorModel *m = glibrary_colormodel(lib);
     const GMaterial *p = glibrary_material(lib, "p");
     const GGenerator *g = glibrary_find(lib, GKIND_GENERATOR, "g");
     GScratch *s = gscratch_create(1 << 16);
-    GSurfPoint *sp = point_at(m, s, 0.3, 0.6);
+    GSurfPoint *sp = plane_point(m, s, 0.3, 0.6);
     GColor white, got;
     assert_int_equal(gtexparam_unit_color(m, &white), G_OK);
     assert_int_equal(gcolor_alloc(&got, m), G_OK);
@@ -316,7 +295,7 @@ static void test_plastic_textured(void **state)
                  " }\n"
                  "material mid_c plastic { reflectance rgb 0.2 0.4 0.6 roughness 0.2525 }\n",
                  models[mi]);
-        GLibrary *lib = load(text);
+        GLibrary *lib = load_ok(text);
         GScratch *s = gscratch_create(1 << 16);
         assert_same_at(glibrary_material(lib, "r"), glibrary_material(lib, "r0"), s, 0.25, 0.75);
         assert_same_at(glibrary_material(lib, "r"), glibrary_material(lib, "r1"), s, 1.25, 0.75);
@@ -338,7 +317,7 @@ static void test_plastic_textured(void **state)
 static void test_dielectric_textured(void **state)
 {
     (void)state;
-    GLibrary *lib = load("colormodel spectrum\n"
+    GLibrary *lib = load_ok("colormodel spectrum\n"
                          "material r dielectric { glass BK7 roughness checker { dims 2 range 0.05 0.5 } }\n"
                          "material r0 dielectric { glass BK7 roughness 0.05 }\n"
                          "material r1 dielectric { glass BK7 roughness 0.5 }\n"
@@ -360,7 +339,7 @@ static void test_dielectric_textured(void **state)
 static void test_layer_textured(void **state)
 {
     (void)state;
-    GLibrary *lib = load("material t layer { top dielectric { } bottom lambert { reflectance rgb 0.5 0.4 0.3 }"
+    GLibrary *lib = load_ok("material t layer { top dielectric { } bottom lambert { reflectance rgb 0.5 0.4 0.3 }"
                          " thickness checker { dims 2 range 0.2 2 } albedo mix { by checker { dims 2 } "
                          "a rgb 0.8 0.5 0.3 b rgb 0.2 0.6 0.9 } }\n"
                          "material t0 layer { top dielectric { } bottom lambert { reflectance rgb 0.5 0.4 0.3 }"
@@ -386,7 +365,7 @@ static void test_layer_textured(void **state)
 static void test_numbers_stay_numbers(void **state)
 {
     (void)state;
-    GLibrary *lib = load("define E 40\nmaterial p phong { exponent E }\n"
+    GLibrary *lib = load_ok("define E 40\nmaterial p phong { exponent E }\n"
                          "material t thinfilm { thickness E }\n");
     glibrary_destroy(lib);
     load_fails("material m phong { exponent nan }\n", "t.mat:1:29: 'nan' is not allowed: numbers must be finite");

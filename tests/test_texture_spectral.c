@@ -20,6 +20,7 @@
 #include "generic/reader.h"
 #include "generic/services/image.h"
 #include "exr_writer.h"
+#include "reader_fixture.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -64,27 +65,6 @@ static void write_spectral(const char *name, const char *prefix, char *out, size
     assert_int_equal(exr_write(out, W, H, NW, ptr, values, 0, 0), 0);
 }
 
-static GLibrary *load(const char *text)
-{
-    GLibrary *lib = NULL;
-    GError err;
-    int rc = greader_load_string(text, "t.mat", NULL, &lib, &err);
-    if (rc != G_OK)
-        print_error("%s\n", err.message);
-    assert_int_equal(rc, G_OK);
-    return lib;
-}
-
-/* A point of the xy plane at (u, v), without a footprint. */
-static GSurfPoint *point_at(const GColorModel *m, GScratch *s, double u, double v)
-{
-    GError err;
-    GSurfPoint *sp = gsurfpoint_new(m, s, gvec3(u, v, 0), gvec3(0, 0, 1), gvec3(1, 0, 0), gvec3(0, 1, 0), u, v, 0,
-                                    &err);
-    assert_non_null(sp);
-    return sp;
-}
-
 /* The largest |got - want| over the values of two colours of one model (vectors or matrices). */
 static double largest_difference(const GColor *got, const GColor *want)
 {
@@ -114,7 +94,7 @@ static void test_texel_centres_equal_from_nm(void **state)
                  "colormodel %s\n"
                  "material r lambert { reflectance image { file \"%s\" wrap clamp } }\n"
                  "material e emitter { radiance image { file \"%s\" wrap clamp } }\n", models[mi], refl, emis);
-        GLibrary *lib = load(text);
+        GLibrary *lib = load_ok(text);
         const GColorModel *m = glibrary_colormodel(lib);
         GError err;
         GTexImage *direct = NULL;
@@ -128,7 +108,7 @@ static void test_texel_centres_equal_from_nm(void **state)
             for (int x = 0; x < W; x++) {
                 GSpectrumNM nm;
                 texel_nm(x, y, &nm);
-                GSurfPoint *sp = point_at(m, s, (x + 0.5) / W, 1.0 - (y + 0.5) / H);
+                GSurfPoint *sp = plane_point(m, s, (x + 0.5) / W, 1.0 - (y + 0.5) / H);
                 assert_int_equal(gcolor_from_nm(&want, &nm, GCOLOR_REFLECTANCE), G_OK);
                 assert_int_equal(gmaterial_diffuse(glibrary_material(lib, "r"), sp, &got), G_OK);
                 worst = fmax(worst, largest_difference(&got, &want));
@@ -161,7 +141,7 @@ static void test_bilinear_and_image_node(void **state)
              "colormodel spectrum\n"
              "material r lambert { reflectance image { file \"%s\" } }\n"
              "node n image { child lambert { reflectance rgb 1 1 1 } file \"%s\" }\n", refl, refl);
-    GLibrary *lib = load(text);
+    GLibrary *lib = load_ok(text);
     const GColorModel *m = glibrary_colormodel(lib);
     GScratch *s = gscratch_create(1 << 16);
     GColor got, node, want;
@@ -174,10 +154,10 @@ static void test_bilinear_and_image_node(void **state)
     for (int i = 0; i < GNM_COUNT; i++)
         mean.v[i] = 0.5f * (a.v[i] + b.v[i]);
     assert_int_equal(gcolor_from_nm(&want, &mean, GCOLOR_REFLECTANCE), G_OK);
-    GSurfPoint *sp = point_at(m, s, 1.0 / W, 1.0 - 0.5 / H);
+    GSurfPoint *sp = plane_point(m, s, 1.0 / W, 1.0 - 0.5 / H);
     assert_int_equal(gmaterial_diffuse(glibrary_material(lib, "r"), sp, &got), G_OK);
     assert_true(largest_difference(&got, &want) <= 1e-6);
-    GSurfPoint *sq = point_at(m, s, 1.0 / W, 1.0 - 0.5 / H);
+    GSurfPoint *sq = plane_point(m, s, 1.0 / W, 1.0 - 0.5 / H);
     const GMaterial *n = glibrary_material(lib, "n");
     assert_non_null(n);
     assert_int_equal(gmaterial_diffuse(n, sq, &node), G_OK);
@@ -222,7 +202,7 @@ static void test_layer_by_role(void **state)
              "material e emitter { radiance image { file \"%s\" } }\n"
              "material et emitter { radiance image { file \"%s\" } }\n"
              "material rs lambert { reflectance image { file \"%s\" } }\n", both, both, refl, emis);
-    GLibrary *lib = load(text);
+    GLibrary *lib = load_ok(text);
     const GColorModel *m = glibrary_colormodel(lib);
     GScratch *s = gscratch_create(1 << 16);
     GColor got, want;
@@ -232,7 +212,7 @@ static void test_layer_by_role(void **state)
     texel_nm(2, 1, &nm);
     for (int i = 0; i < GNM_COUNT; i++)
         twice.v[i] = 2.0f * nm.v[i];
-    GSurfPoint *sp = point_at(m, s, 2.5 / W, 1.0 - 1.5 / H);
+    GSurfPoint *sp = plane_point(m, s, 2.5 / W, 1.0 - 1.5 / H);
     assert_int_equal(gmaterial_diffuse(glibrary_material(lib, "r"), sp, &got), G_OK);
     assert_int_equal(gcolor_from_nm(&want, &nm, GCOLOR_REFLECTANCE), G_OK);
     assert_true(largest_difference(&got, &want) <= 1e-6);
