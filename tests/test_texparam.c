@@ -162,8 +162,8 @@ static void test_range_maps_linearly(void **state)
     GScratch *s = gscratch_create(1 << 14);
     const GGenerator *c = glibrary_find(lib, GKIND_GENERATOR, "c"), *p = glibrary_find(lib, GKIND_GENERATOR, "p"),
                      *q = glibrary_find(lib, GKIND_GENERATOR, "q"), *d = glibrary_find(lib, GKIND_GENERATOR, "d");
-    GSurfPoint *even = plane_point(glibrary_colormodel(lib), s, 0.5, 0.5), *odd = plane_point(glibrary_colormodel(lib), s,
-                                                                                          1.5, 0.5);
+    GSurfPoint *even = plane_point(glibrary_colormodel(lib), s, 0.5, 0.5);
+    GSurfPoint *odd = plane_point(glibrary_colormodel(lib), s, 1.5, 0.5);
     assert_true(ggenerator_value(c, even) == 10.0);
     assert_true(ggenerator_value(c, odd) == 200.0);
     double lo, hi;
