@@ -43,6 +43,7 @@ typedef struct Dielectric {
     int distribution, nlevels;
     double level_lo, level_hi;
     GMicrofacetDielectricAlbedo *level_albedo;
+    GMaterialOnce made; /* the compensation's tables are filled on first use (tables_make) */
 } Dielectric;
 
 /* The rough interface at one point: the distribution and the compensation's tables a0, a1 with the weight w of a1. */
@@ -82,8 +83,12 @@ static GFrame rough_frame(const Dielectric *d, GSurfPoint *sp)
 
 /* The rough interface at sp: the material's own, or for a textured roughness the distribution of its value there and
  * the two nearest levels' tables (exactly one level's at a level). */
+static int tables_make(void *dielectric);
+
 static RoughAt rough_at(const Dielectric *d, GSurfPoint *sp)
 {
+    if (d->albedo) /* (filling tables cannot fail) */
+        gmaterial_once(&((Dielectric *)d)->made, tables_make, (void *)d);
     RoughAt a = {d->mf, d->albedo, d->albedo, 0.0};
     if (!d->tex_rough.gen)
         return a;
@@ -409,13 +414,11 @@ static int rough_setup(Dielectric *d, const GDielectricRoughness *p, GError *err
         return G_OK;
     if (!(d->albedo = gmem_alloc(sizeof *d->albedo)))
         return gerror_set(err, G_ERR_NOMEM, "dielectric: out of memory");
-    gmicrofacet_dielectric_albedo_init(d->albedo, &d->mf, table_eta_max(d));
     return G_OK;
 }
 
-/* The compensation's tables at DIELECTRIC_LEVELS roughnesses evenly over a textured roughness's range (one when it
- * is a point), exactly its ends at the first and last; the first is the material's own (rough_setup made it at the
- * range's lower end). */
+/* Room for the compensation's tables at DIELECTRIC_LEVELS roughnesses evenly over a textured roughness's range (one
+ * when it is a point; tables_make fills them). */
 static int rough_levels(Dielectric *d, const GTexNumber *rough, GError *err)
 {
     gtexparam_number_bounds(rough, &d->level_lo, &d->level_hi);
@@ -423,16 +426,26 @@ static int rough_levels(Dielectric *d, const GTexNumber *rough, GError *err)
     if (d->albedo) {
         if (!(d->level_albedo = gmem_calloc((size_t)d->nlevels, sizeof *d->level_albedo)))
             return gerror_set(err, G_ERR_NOMEM, "dielectric: out of memory");
-        d->level_albedo[0] = *d->albedo;
-        for (int j = 1; j < d->nlevels; j++) {
-            double r = j == d->nlevels - 1 ? d->level_hi : d->level_lo + (d->level_hi - d->level_lo) * j /
-                                                                          (d->nlevels - 1);
-            double alpha = gmicrofacet_alpha_from_roughness(r);
-            GMicrofacet mf = gmicrofacet_make(d->distribution, alpha, alpha);
-            gmicrofacet_dielectric_albedo_init(&d->level_albedo[j], &mf, table_eta_max(d));
-        }
     }
     gtexparam_number_copy(&d->tex_rough, rough);
+    return G_OK;
+}
+
+/* The compensation's tables: the material's own (at the textured range's lower end when textured), then the other
+ * levels, exactly the range's upper end at the last: the dielectric's work on first use (gmaterial_once). */
+static int tables_make(void *dielectric)
+{
+    Dielectric *d = dielectric;
+    gmicrofacet_dielectric_albedo_init(d->albedo, &d->mf, table_eta_max(d));
+    if (d->level_albedo)
+        d->level_albedo[0] = *d->albedo;
+    for (int j = 1; d->level_albedo && j < d->nlevels; j++) {
+        double r = j == d->nlevels - 1 ? d->level_hi : d->level_lo + (d->level_hi - d->level_lo) * j /
+                                                                      (d->nlevels - 1);
+        double alpha = gmicrofacet_alpha_from_roughness(r);
+        GMicrofacet mf = gmicrofacet_make(d->distribution, alpha, alpha);
+        gmicrofacet_dielectric_albedo_init(&d->level_albedo[j], &mf, table_eta_max(d));
+    }
     return G_OK;
 }
 

@@ -6,7 +6,7 @@
  *   f_s      the coat's reflection: smooth, the ideal ray with F(cos_o) (Fresnel, air -> coat of index eta); rough,
  *            Walter et al.'s microfacet reflection F(o.h) D(h) G2(i, o, h) / (4 cos_i cos_o) (kit/microfacet.h);
  *   T(c)     1 - R(c), R(c) the coat's directional albedo: F(c) when smooth; when rough, the integral of f_s cos,
- *            tabulated at creation over the visible normals (TABLE_N angles, TABLE_U^2 strata each);
+ *            tabulated on first use over the visible normals (TABLE_N angles, TABLE_U^2 strata each);
  *   F_int    1 - (1 - R_avg) / eta^2, R_avg = 2 int R(c) c dc: the share of the diffuse light inside that the coat
  *            sends back down (reciprocity gives the share leaving, (1 - R_avg) / eta^2); the series of bounces
  *            base -> coat -> base ... sums to rho / (1 - F_int rho).
@@ -56,6 +56,9 @@ typedef struct Plastic {
     double level_lo, level_hi;
     CoatTable *level_r;
     double *level_f_int;
+    /* the tables, F_int, body and albedo are made on first use (coat_make): a plastic defined but never rendered
+     * costs no quadrature */
+    GMaterialOnce made;
 } Plastic;
 
 /* The coat and body at one point: the distribution, R(c) as (1 - w) r0 + w r1, F_int, and (when asked) the body's
@@ -153,8 +156,13 @@ static int body_colours(const GColor *rho, double f_int, double eta, GColor *den
 
 /* The coat and (colours: 1) the body at sp into *a; colours on sp's arena when textured (the caller marks and
  * releases it). */
+static int coat_make(void *plastic);
+
 static int plastic_at(const Plastic *p, GSurfPoint *sp, int colours, PlasticAt *a)
 {
+    int made = gmaterial_once(&((Plastic *)p)->made, coat_make, (void *)p);
+    if (made != G_OK)
+        return made;
     a->mf = p->mf;
     a->r0 = a->r1 = p->r_table;
     a->w = 0.0;
@@ -351,8 +359,8 @@ typedef struct PlasticSpec {
     int distribution;
 } PlasticSpec;
 
-/* The coat's tables at PLASTIC_LEVELS roughnesses evenly over the textured roughness's range (one when the range is
- * a point), exactly its ends at the first and last. */
+/* Room for the coat's tables at PLASTIC_LEVELS roughnesses evenly over the textured roughness's range (one when the
+ * range is a point; coat_make fills them). */
 static int rough_levels(Plastic *p, const GTexNumber *rough, GError *err)
 {
     gtexparam_number_bounds(rough, &p->level_lo, &p->level_hi);
@@ -361,6 +369,15 @@ static int rough_levels(Plastic *p, const GTexNumber *rough, GError *err)
     p->level_f_int = gmem_calloc((size_t)p->nlevels, sizeof *p->level_f_int);
     if (!p->level_r || !p->level_f_int)
         return gerror_set(err, G_ERR_NOMEM, "plastic: out of memory");
+    gtexparam_number_copy(&p->tex_rough, rough);
+    return G_OK;
+}
+
+/* The coat's tables (at each level, exactly the range's ends at the first and last, the first being the material's
+ * own; or the material's one) and F_int, then the body's colours: the plastic's work on first use (gmaterial_once). */
+static int coat_make(void *plastic)
+{
+    Plastic *p = plastic;
     for (int j = 0; j < p->nlevels; j++) {
         double r = p->nlevels > 1 ? p->level_lo + (p->level_hi - p->level_lo) * j / (p->nlevels - 1) : p->level_lo;
         if (j == p->nlevels - 1)
@@ -369,8 +386,12 @@ static int rough_levels(Plastic *p, const GTexNumber *rough, GError *err)
         GMicrofacet mf = gmicrofacet_make(p->distribution, alpha, alpha);
         p->level_f_int[j] = coat_table(&mf, 1, p->eta, p->level_r[j]);
     }
-    gtexparam_number_copy(&p->tex_rough, rough);
-    return G_OK;
+    if (p->nlevels) {
+        memcpy(p->r_table, p->level_r[0], sizeof p->r_table);
+        p->f_int = p->level_f_int[0];
+    } else
+        p->f_int = coat_table(&p->mf, p->rough, p->eta, p->r_table);
+    return body_colours(&p->rho, p->f_int, p->eta, &p->albedo, &p->body, &p->albedo);
 }
 
 /* The extremes of a textured reflectance within [0, 1] and plain colours (the closed form's energy rule holds for
@@ -407,12 +428,6 @@ static int plastic_create(const GColorModel *model, PlasticSpec *s, GMaterial **
     p->mf = gmicrofacet_make(s->distribution, alpha, alpha);
     if (s->rough.gen) /* the range's lower end: level 0 */
         rc = rough_levels(p, &s->rough, err);
-    if (rc == G_OK && s->rough.gen) {
-        memcpy(p->r_table, p->level_r[0], sizeof p->r_table);
-        p->f_int = p->level_f_int[0];
-    } else
-        p->f_int = coat_table(&p->mf, p->rough, s->eta, p->r_table);
-    GColor denom = {0};
     const GColor *rho = gtexparam_color_constant(&s->rho);
     if (rc == G_OK && !rho) { /* textured: checked at its extremes; the unit colour stands in for the constant parts */
         rc = check_textured_rho(model, &s->rho, err);
@@ -428,12 +443,8 @@ static int plastic_create(const GColorModel *model, PlasticSpec *s, GMaterial **
         rc = gerror_set_param(err, G_ERR_INVALID, "reflectance",
                               "plastic: reflectance must be a plain colour, not a re-radiation matrix (a "
                               "re-radiating base under a coat is a layer)");
-    if (rc == G_OK && ((rc = gcolor_alloc(&denom, model)) != G_OK || (rc = gcolor_alloc(&p->body, model)) != G_OK ||
-                       (rc = gcolor_alloc(&p->albedo, model)) != G_OK))
+    if (rc == G_OK && ((rc = gcolor_alloc(&p->body, model)) != G_OK || (rc = gcolor_alloc(&p->albedo, model)) != G_OK))
         rc = gerror_set(err, rc, "plastic: out of memory");
-    if (rc == G_OK)
-        rc = body_colours(&p->rho, p->f_int, p->eta, &denom, &p->body, &p->albedo);
-    gcolor_free(&denom);
     m->flags |= GMAT_NO_UV | GMAT_DIAGONAL; /* plain colours sample by sample; no (u, v) read */
     if (rc == G_OK && !rho) {
         p->tex_rho = s->rho;

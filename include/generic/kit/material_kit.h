@@ -23,6 +23,17 @@ extern "C" {
 GENERIC_API GENERIC_NODISCARD int gmaterial_new(const GMaterialClass *cls, const GColorModel *model, size_t size,
                                                 GMaterial **out, GError *err);
 
+/** Work a material does on its first use rather than at creation (tables only its methods read, so that a
+ * material that is defined but never rendered costs nothing); a member of the material's struct, zeroed with it. */
+typedef struct GMaterialOnce {
+    int state;  /**< 1 once the work has run (read and written atomically by gmaterial_once) */
+    int status; /**< what the work returned */
+} GMaterialOnce;
+/** Runs work(arg) for once the first time it is called and returns work's G_ status, then and on every later call;
+ * a thread that calls while another runs the work waits for it. Safe from any number of threads (the material's
+ * methods); work may call gmaterial_once for other materials, not for the same once. */
+GENERIC_API int gmaterial_once(GMaterialOnce *once, int (*work)(void *arg), void *arg);
+
 /** The state of a material whose one parameter is a colour (lambert, mirror; emitter adds a flag after it). */
 typedef struct GMaterialOneColor {
     GMaterial base;
