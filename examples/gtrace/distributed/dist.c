@@ -10,17 +10,18 @@
  * caller has printed it.
  *
  * The particle integrators (sppm, light) render the whole image at once and share each batch of particle paths
- * instead (PhotonShare, photons.h): every rank traces its range of the batch's paths and sends them to rank 0
- * (PHOTONS), which completes the batch and sends it back whole (sppm: every rank gathers it at the visible points
- * of its band of rows) or only says GO (light: rank 0 alone sums the contributions); at the end every other rank
- * sends its totals and its band of rows (BAND). The batches are cut as in a single process and every sum is made
- * in a single process's order, so the image is the same bits for any number of ranks.
+ * instead (PhotonShare, photons.h; dist_particles.c): every rank traces its range of the batch's paths and sends
+ * them to rank 0 (PHOTONS), which completes the batch and sends it back whole (sppm: every rank gathers it at the
+ * visible points of its band of rows) or only says GO (light: rank 0 alone sums the contributions); at the end
+ * every other rank sends its totals and its band of rows (BAND). The batches are cut as in a single process and
+ * every sum is made in a single process's order, so the image is the same bits for any number of ranks.
  *
  * Messages (native layout: every rank runs the same gtrace build): HELLO (status, digest, message) from each
  * rank once its scene is loaded; WORK (a block index, or STOP, or QUIT) from rank 0; RESULT (the block index,
  * then its packed pixels), FAIL (a message) and STATS (rays, non-finite, capped) to rank 0; PHOTONS (a range of a
  * batch's paths, photon_batch_pack) both ways, GO from rank 0 and BAND (totals, then packed pixels) to rank 0. */
 #include "dist.h"
+#include "dist_job.h"
 #include "integrators/light.h"
 #include "integrators/sppm.h"
 #include "mpi_load.h"
@@ -34,7 +35,6 @@
 #include <string.h>
 #include <unistd.h>
 
-enum { TAG_HELLO = 1, TAG_WORK, TAG_RESULT, TAG_FAIL, TAG_STATS, TAG_PHOTONS, TAG_GO, TAG_BAND };
 enum { WORK_STOP = -1, WORK_QUIT = -2 };
 /* Blocks a rank holds: the one it renders and the one it will render next. */
 enum { CREDIT = 2 };
@@ -46,34 +46,6 @@ typedef struct Hello {
     uint64_t digest;
     char message[400];
 } Hello;
-
-typedef struct Totals {
-    uint64_t rays, nonfinite, capped;
-} Totals;
-
-struct Dist {
-    const GtMpiOps *ops;
-    int rank, size;
-    int failed;                /* the job failed (job_fail): dist_finish ends every rank */
-    struct sigaction old_term; /* rank 0: SIGTERM's action before dist_start */
-};
-
-/* The state of one distributed render on one rank. */
-typedef struct Job {
-    Dist *d;
-    const DistSettings *ds;
-    GError *err;          /* where job_fail puts the message */
-    Renderer *r;
-    Framebuffer *fb;
-    int nbx, nblocks;
-    int *order;           /* the blocks in the order they are handed out */
-    unsigned char *buf;   /* one block's message: its index, then the packed pixels */
-    size_t buf_cap;
-    const GColorModel *model; /* the particle integrators: the scene's colour model */
-    unsigned char *pbuf;  /* the particle integrators: a batch's paths, packed */
-    size_t pbuf_cap;
-    char msg[512];        /* the transport's last message */
-} Job;
 
 /* Rank 0's SIGTERM from MPI's start to the end of dist_render (to dist_finish when the job failed): the launcher
  * ends the job because another rank died. Says so (the launcher's own message names the rank) and exits; no image
@@ -155,9 +127,7 @@ uint64_t dist_digest(const char *scene_path, const char *model, const RenderSett
     return fnv(h, f, sizeof f);
 }
 
-/* The job has failed: the message into j->err (on rank 0 "TEXT; the job is ended and no image written", on
- * another "rank R: TEXT; the job is ended"), and the job marked for dist_finish to end. Returns G_ERR_IO. */
-__attribute__((format(printf, 2, 3))) static int job_fail(Job *j, const char *fmt, ...)
+int job_fail(Job *j, const char *fmt, ...)
 {
     char text[1024];
     va_list ap;
@@ -170,8 +140,7 @@ __attribute__((format(printf, 2, 3))) static int job_fail(Job *j, const char *fm
     return gerror_set(j->err, G_ERR_IO, "rank %d: %s; the job is ended", j->d->rank, text);
 }
 
-/* Sends len bytes to dest and waits (bounded) until they are gone. G_OK or job_fail's status. */
-static int send_now(Job *j, int dest, int tag, const void *buf, size_t len)
+int job_send(Job *j, int dest, int tag, const void *buf, size_t len)
 {
     const GtMpiOps *ops = j->d->ops;
     int h, rc = ops->isend(dest, tag, buf, len, &h, j->msg, sizeof j->msg);
@@ -182,9 +151,7 @@ static int send_now(Job *j, int dest, int tag, const void *buf, size_t len)
     return G_OK;
 }
 
-/* Waits up to timeout seconds for a message: 1 with its sender, tag and length, 0 when none came, or job_fail's
- * status. */
-static int next_message(Job *j, double timeout, int *from, int *tag, size_t *len)
+int job_next_message(Job *j, double timeout, int *from, int *tag, size_t *len)
 {
     int rc = j->d->ops->probe(timeout, from, tag, len, j->msg, sizeof j->msg);
     if (rc < 0)
@@ -192,9 +159,7 @@ static int next_message(Job *j, double timeout, int *from, int *tag, size_t *len
     return rc == 0;
 }
 
-/* Receives the message next_message announced into buf (cap bytes; a longer message is an error). G_OK or
- * job_fail's status. */
-static int receive(Job *j, int from, int tag, size_t len, void *buf, size_t cap)
+int job_receive(Job *j, int from, int tag, size_t len, void *buf, size_t cap)
 {
     if (len > cap)
         return job_fail(j, "rank %d sent a message of %zu bytes where at most %zu were expected", from, len, cap);
@@ -230,8 +195,8 @@ static int render_slice(Job *j, int b, int slice, Progress *prog)
         if (j->d->rank != 0) { /* tells rank 0 (j->buf may still be on its way), which ends the job meanwhile */
             int from, tag, rc;
             size_t len;
-            if ((rc = send_now(j, 0, TAG_FAIL, err.message, strlen(err.message) + 1)) < 0 ||
-                (rc = next_message(j, j->ds->timeout, &from, &tag, &len)) < 0)
+            if ((rc = job_send(j, 0, TAG_FAIL, err.message, strlen(err.message) + 1)) < 0 ||
+                (rc = job_next_message(j, j->ds->timeout, &from, &tag, &len)) < 0)
                 return rc;
         }
         return job_fail(j, "%s", err.message);
@@ -256,7 +221,7 @@ static int gather_hellos(Job *j, int load_status, const char *load_msg, uint64_t
         int from, tag;
         size_t len;
         Hello h;
-        int heard = next_message(j, j->ds->timeout, &from, &tag, &len);
+        int heard = job_next_message(j, j->ds->timeout, &from, &tag, &len);
         if (heard == 0) {
             int n = 0;
             for (int k = 1; k < d->size; k++)
@@ -271,7 +236,7 @@ static int gather_hellos(Job *j, int load_status, const char *load_msg, uint64_t
             rc = heard;
         } else if (tag != TAG_HELLO || len != sizeof h) {
             rc = job_fail(j, "rank %d sent an unexpected message (tag %d) before reporting its scene", from, tag);
-        } else if ((rc = receive(j, from, tag, len, &h, sizeof h)) == G_OK) {
+        } else if ((rc = job_receive(j, from, tag, len, &h, sizeof h)) == G_OK) {
             seen[from] = 1;
             h.message[sizeof h.message - 1] = 0;
             const char *why = h.status != G_OK ? h.message
@@ -292,7 +257,7 @@ static int gather_hellos(Job *j, int load_status, const char *load_msg, uint64_t
         return rc;
     int32_t quit = WORK_QUIT;
     for (int k = 1; k < d->size; k++)
-        if ((rc = send_now(j, k, TAG_WORK, &quit, sizeof quit)) < 0)
+        if ((rc = job_send(j, k, TAG_WORK, &quit, sizeof quit)) < 0)
             return rc;
     return gerror_set(j->err, load_status != G_OK ? load_status : G_ERR_IO, "%s", report);
 }
@@ -303,18 +268,18 @@ static int take_results(Job *j, double timeout, int *held, double *heard, int *n
 {
     int from, tag, rc;
     size_t len;
-    while ((rc = next_message(j, timeout, &from, &tag, &len)) == 1) {
+    while ((rc = job_next_message(j, timeout, &from, &tag, &len)) == 1) {
         timeout = 0.0;
         heard[from] = now_seconds();
         if (tag == TAG_FAIL) {
-            if ((rc = receive(j, from, tag, len, j->buf, j->buf_cap)) < 0)
+            if ((rc = job_receive(j, from, tag, len, j->buf, j->buf_cap)) < 0)
                 return rc;
             j->buf[j->buf_cap - 1] = 0;
             return job_fail(j, "rank %d: %s", from, (char *)j->buf);
         }
         if (tag != TAG_RESULT || held[from] <= 0 || len < sizeof(int32_t))
             return job_fail(j, "rank %d sent an unexpected message (tag %d, %zu bytes)", from, tag, len);
-        if ((rc = receive(j, from, tag, len, j->buf, j->buf_cap)) < 0)
+        if ((rc = job_receive(j, from, tag, len, j->buf, j->buf_cap)) < 0)
             return rc;
         int32_t b;
         memcpy(&b, j->buf, sizeof b);
@@ -330,7 +295,7 @@ static int take_results(Job *j, double timeout, int *held, double *heard, int *n
         held[from]--;
         if (*next < j->nblocks) {
             int32_t nb = j->order[(*next)++];
-            if ((rc = send_now(j, from, TAG_WORK, &nb, sizeof nb)) < 0)
+            if ((rc = job_send(j, from, TAG_WORK, &nb, sizeof nb)) < 0)
                 return rc;
             held[from]++;
         }
@@ -345,11 +310,11 @@ static int gather_totals(Job *j, RenderStats *st)
         int from, tag, rc;
         size_t len;
         Totals t;
-        if ((rc = next_message(j, j->ds->timeout, &from, &tag, &len)) <= 0)
+        if ((rc = job_next_message(j, j->ds->timeout, &from, &tag, &len)) <= 0)
             return rc < 0 ? rc : job_fail(j, "a rank did not send its totals within %g s", j->ds->timeout);
         if (tag != TAG_STATS || len != sizeof t)
             return job_fail(j, "rank %d sent an unexpected message (tag %d) instead of its totals", from, tag);
-        if ((rc = receive(j, from, tag, len, &t, sizeof t)) < 0)
+        if ((rc = job_receive(j, from, tag, len, &t, sizeof t)) < 0)
             return rc;
         st->rays += t.rays;
         st->nonfinite += t.nonfinite;
@@ -377,7 +342,7 @@ static int lead(Job *j, RenderStats *st, int quiet)
         heard[k] = t0;
         for (int c = 0; c < CREDIT && next < n && rc == G_OK; c++, held[k]++) {
             int32_t b = j->order[next++];
-            rc = send_now(j, k, TAG_WORK, &b, sizeof b);
+            rc = job_send(j, k, TAG_WORK, &b, sizeof b);
         }
     }
     int mine = -1, slice = 0;
@@ -404,7 +369,7 @@ static int lead(Job *j, RenderStats *st, int quiet)
     }
     int32_t stop = WORK_STOP;
     for (int k = 1; k < d->size && rc == G_OK; k++)
-        rc = send_now(j, k, TAG_WORK, &stop, sizeof stop);
+        rc = job_send(j, k, TAG_WORK, &stop, sizeof stop);
     if (rc == G_OK) {
         renderer_stats(j->r, st);
         rc = gather_totals(j, st);
@@ -439,11 +404,11 @@ static int follow(Job *j)
         int idle = cur < 0 && count == 0;
         if (idle && stopping)
             break;
-        while ((rc = next_message(j, idle ? 2 * j->ds->timeout : 0.0, &from, &tag, &len)) == 1) {
+        while ((rc = job_next_message(j, idle ? 2 * j->ds->timeout : 0.0, &from, &tag, &len)) == 1) {
             int32_t b;
             if (tag != TAG_WORK || len != sizeof b)
                 return job_fail(j, "rank %d sent an unexpected message (tag %d)", from, tag);
-            if ((rc = receive(j, from, tag, len, &b, sizeof b)) < 0)
+            if ((rc = job_receive(j, from, tag, len, &b, sizeof b)) < 0)
                 return rc;
             if (b == WORK_QUIT)
                 return 0;
@@ -492,7 +457,7 @@ static int follow(Job *j)
     RenderStats rs;
     renderer_stats(j->r, &rs);
     Totals t = {rs.rays, rs.nonfinite, rs.capped};
-    return (rc = send_now(j, 0, TAG_STATS, &t, sizeof t)) < 0 ? rc : 1;
+    return (rc = job_send(j, 0, TAG_STATS, &t, sizeof t)) < 0 ? rc : 1;
 }
 
 /* Another rank than 0 that could not load the scene or start its renderer: reports it in its HELLO and waits for
@@ -502,170 +467,12 @@ static int quit_after_hello(Job *j, Hello *h)
     int from, tag, rc;
     size_t len;
     int32_t b;
-    if ((rc = send_now(j, 0, TAG_HELLO, h, sizeof *h)) < 0 ||
-        (rc = next_message(j, 2 * j->ds->timeout, &from, &tag, &len)) < 0)
+    if ((rc = job_send(j, 0, TAG_HELLO, h, sizeof *h)) < 0 ||
+        (rc = job_next_message(j, 2 * j->ds->timeout, &from, &tag, &len)) < 0)
         return rc;
-    if (rc == 1 && tag == TAG_WORK && len == sizeof b && (rc = receive(j, from, tag, len, &b, sizeof b)) < 0)
+    if (rc == 1 && tag == TAG_WORK && len == sizeof b && (rc = job_receive(j, from, tag, len, &b, sizeof b)) < 0)
         return rc;
     return DIST_QUIT;
-}
-
-/* ---- the particle integrators ---- */
-
-/* j->pbuf holds at least cap bytes. G_OK or job_fail's status. */
-static int pbuf_reserve(Job *j, size_t cap)
-{
-    if (cap <= j->pbuf_cap)
-        return G_OK;
-    gmem_free(j->pbuf);
-    j->pbuf_cap = 0;
-    if (!(j->pbuf = gmem_alloc(cap)))
-        return job_fail(j, "out of memory for %zu bytes of photons", cap);
-    j->pbuf_cap = cap;
-    return G_OK;
-}
-
-/* Rank 0: the FAIL of a rank, or an unexpected message, as the job's failure. */
-static int unexpected(Job *j, int from, int tag, size_t len, const char *what)
-{
-    int rc;
-    if (tag == TAG_FAIL && (rc = pbuf_reserve(j, len + 1)) == G_OK &&
-        (rc = receive(j, from, tag, len, j->pbuf, j->pbuf_cap)) == G_OK) {
-        j->pbuf[len] = 0;
-        return job_fail(j, "rank %d: %s", from, (char *)j->pbuf);
-    }
-    return j->d->failed ? G_ERR_IO : job_fail(j, "rank %d sent an unexpected message (tag %d, %zu bytes) %s", from,
-                                              tag, len, what);
-}
-
-/* PhotonShare.batch: every rank's range of b's paths to rank 0, and the whole batch (to_all) or a GO back. */
-static int share_batch(void *user, PhotonBatch *b, int to_all, GError *err)
-{
-    (void)err; /* job_fail writes j->err, the render's own */
-    Job *j = user;
-    Dist *d = j->d;
-    int n = b->paths, lo, hi, from, tag, rc;
-    size_t len;
-    if ((rc = pbuf_reserve(j, photon_batch_pack_bytes(b, j->model, 0, n))) < 0)
-        return rc;
-    if (d->rank != 0) {
-        photon_share_range(n, d->rank, d->size, &lo, &hi);
-        if ((rc = send_now(j, 0, TAG_PHOTONS, j->pbuf, photon_batch_pack(b, lo, hi, j->pbuf))) < 0)
-            return rc;
-        if ((rc = next_message(j, 2 * j->ds->timeout, &from, &tag, &len)) <= 0)
-            return rc < 0 ? rc : job_fail(j, "no word from rank 0 for %g s (stopped or dead?)", 2 * j->ds->timeout);
-        if (tag == TAG_GO && !to_all && len == sizeof(int32_t))
-            return receive(j, from, tag, len, j->pbuf, j->pbuf_cap);
-        if (tag != TAG_PHOTONS || !to_all)
-            return job_fail(j, "rank %d sent an unexpected message (tag %d) during a photon batch", from, tag);
-        if ((rc = receive(j, from, tag, len, j->pbuf, j->pbuf_cap)) < 0)
-            return rc;
-        if (photon_batch_unpack(b, 0, n, j->pbuf, len) != G_OK)
-            return job_fail(j, "rank 0 sent a malformed photon batch (%zu bytes)", len);
-        return G_OK;
-    }
-    for (int got = 1; got < d->size; got++) {
-        if ((rc = next_message(j, j->ds->timeout, &from, &tag, &len)) <= 0)
-            return rc < 0 ? rc : job_fail(j, "a rank sent no photons for %g s (stopped or dead?)", j->ds->timeout);
-        if (tag != TAG_PHOTONS)
-            return unexpected(j, from, tag, len, "during a photon batch");
-        photon_share_range(n, from, d->size, &lo, &hi);
-        if ((rc = receive(j, from, tag, len, j->pbuf, j->pbuf_cap)) < 0)
-            return rc;
-        if (photon_batch_unpack(b, lo, hi, j->pbuf, len) != G_OK)
-            return job_fail(j, "rank %d sent a malformed photon batch (%zu bytes for paths %d..%d)", from, len, lo, hi);
-    }
-    int32_t go = 1;
-    size_t whole = to_all ? photon_batch_pack(b, 0, n, j->pbuf) : 0;
-    for (int k = 1; k < d->size; k++)
-        if ((rc = to_all ? send_now(j, k, TAG_PHOTONS, j->pbuf, whole) : send_now(j, k, TAG_GO, &go, sizeof go)) < 0)
-            return rc;
-    return G_OK;
-}
-
-/* Rank `rank`'s band of rows of the image (the rows its sppm visible points cover; light: none but rank 0's, which
- * holds the whole image) as a region. 0 when it is empty. */
-static int band_region(const Job *j, const RenderSettings *rs, int rank, int region[4])
-{
-    int lo = 0, hi = rank == 0 ? j->fb->height : 0;
-    if (rs->integrator == RENDER_SPPM)
-        photon_share_range(j->fb->height, rank, j->d->size, &lo, &hi);
-    region[0] = j->fb->x;
-    region[1] = j->fb->y + lo;
-    region[2] = j->fb->x + j->fb->width;
-    region[3] = j->fb->y + hi;
-    return hi > lo;
-}
-
-/* Rank 0 after its own render: every other rank's BAND (totals and rows) into fb and st. G_OK or job_fail's
- * status. */
-static int gather_bands(Job *j, const RenderSettings *rs, RenderStats *st)
-{
-    for (int got = 1; got < j->d->size; got++) {
-        int from, tag, rc, region[4];
-        size_t len;
-        if ((rc = next_message(j, j->ds->timeout, &from, &tag, &len)) <= 0)
-            return rc < 0 ? rc : job_fail(j, "a rank did not send its rows within %g s", j->ds->timeout);
-        if (tag != TAG_BAND)
-            return unexpected(j, from, tag, len, "instead of its rows");
-        size_t pixels = band_region(j, rs, from, region) ? framebuffer_region_bytes(j->fb, region) : 0;
-        if (len != sizeof(Totals) + pixels)
-            return job_fail(j, "rank %d sent %zu bytes for its rows where %zu were expected", from, len,
-                            sizeof(Totals) + pixels);
-        if ((rc = pbuf_reserve(j, len)) < 0 || (rc = receive(j, from, tag, len, j->pbuf, j->pbuf_cap)) < 0)
-            return rc;
-        Totals t;
-        memcpy(&t, j->pbuf, sizeof t);
-        st->rays += t.rays;
-        st->nonfinite += t.nonfinite;
-        st->capped += t.capped;
-        if (pixels)
-            framebuffer_unpack(j->fb, region, j->pbuf + sizeof t);
-    }
-    return G_OK;
-}
-
-/* Another rank than 0 after its own render: its totals and band of rows to rank 0. G_OK or job_fail's status. */
-static int send_band(Job *j, const RenderSettings *rs, const RenderStats *st)
-{
-    int region[4], rc;
-    size_t pixels = band_region(j, rs, j->d->rank, region) ? framebuffer_region_bytes(j->fb, region) : 0;
-    if ((rc = pbuf_reserve(j, sizeof(Totals) + pixels)) < 0)
-        return rc;
-    Totals t = {st->rays, st->nonfinite, st->capped};
-    memcpy(j->pbuf, &t, sizeof t);
-    if (pixels)
-        framebuffer_pack(j->fb, region, j->pbuf + sizeof t);
-    return send_now(j, 0, TAG_BAND, j->pbuf, sizeof t + pixels);
-}
-
-/* The particle integrators' part after the HELLOs: every rank renders with a PhotonShare, then rank 0 gathers the
- * bands. Rank 0: G_OK or the failure; another: 1 once its band is sent, or the failure. */
-static int particles(Job *j, const Scene *s, const RenderSettings *rs, RenderStats *st)
-{
-    Dist *d = j->d;
-    PhotonShare share = {.rank = d->rank, .size = d->size, .batch = share_batch, .user = j};
-    j->model = s->model;
-    int rc = rs->integrator == RENDER_SPPM ? sppm_render(s, rs, j->fb, st, &share, j->err)
-                                           : light_render(s, rs, j->fb, st, &share, j->err);
-    if (rc != G_OK) {
-        if (d->failed)
-            return rc; /* the job's failure, already in j->err */
-        if (d->rank != 0) { /* tells rank 0, which ends the job meanwhile */
-            char text[sizeof j->err->message];
-            snprintf(text, sizeof text, "%s", j->err->message);
-            int from, tag;
-            size_t len;
-            if ((rc = send_now(j, 0, TAG_FAIL, text, strlen(text) + 1)) < 0 ||
-                (rc = next_message(j, j->ds->timeout, &from, &tag, &len)) < 0)
-                return rc;
-            return job_fail(j, "%s", text);
-        }
-        return job_fail(j, "%s", j->err->message);
-    }
-    if (d->rank != 0)
-        return (rc = send_band(j, rs, st)) < 0 ? rc : 1;
-    return gather_bands(j, rs, st);
 }
 
 int dist_render(Dist *d, const DistSettings *ds, int load_status, const char *load_msg, uint64_t digest,
@@ -691,10 +498,10 @@ int dist_render(Dist *d, const DistSettings *ds, int load_status, const char *lo
             snprintf(h.message, sizeof h.message, "%.*s", (int)sizeof h.message - 1, why);
             return quit_after_hello(&j, &h);
         }
-        rc = send_now(&j, 0, TAG_HELLO, &h, sizeof h);
+        rc = job_send(&j, 0, TAG_HELLO, &h, sizeof h);
     }
     if (rc == G_OK && particle) {
-        rc = particles(&j, s, rs, st);
+        rc = job_particles(&j, s, rs, st);
         if (d->rank != 0 && rc >= 0)
             rc = DIST_SENT;
         gmem_free(j.pbuf);
