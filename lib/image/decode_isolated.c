@@ -17,8 +17,8 @@
 
 #include "generic/memory.h"
 #include "generic/services/file.h"
+#include "generic/services/spawn.h"
 
-#include <dlfcn.h>
 #include <errno.h>
 #include <limits.h>
 #include <pthread.h>
@@ -30,7 +30,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
-#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -45,17 +44,6 @@
 
 extern char **environ;
 
-int gdecode_isolated(GError *err)
-{
-    const char *v = getenv("GENERIC_DECODE");
-    if (!v || !*v || strcmp(v, "isolated") == 0)
-        return 1;
-    if (strcmp(v, "inprocess") == 0)
-        return 0;
-    return gerror_set(err, G_ERR_INVALID, "GENERIC_DECODE is '%s': it must be 'isolated' (the default: images are "
-                      "decoded in a separate process) or 'inprocess' (for trusted files)", v);
-}
-
 double gdecode_charge(int width, int height, int channels)
 {
     return (double)width * height * ((channels > 0 ? channels : 1) + 4) * sizeof(float);
@@ -66,51 +54,17 @@ double gdecode_charge(int width, int height, int channels)
 static pthread_once_t find_once = PTHREAD_ONCE_INIT;
 static char decoder[PATH_MAX];
 
-static int try_dir(const char *dir, const char *sub)
-{
-    char cand[PATH_MAX + 64];
-    snprintf(cand, sizeof cand, "%s%s/%s", dir, sub, GDECODE_PROGRAM);
-    if (access(cand, X_OK) != 0 || !realpath(cand, decoder)) {
-        decoder[0] = 0;
-        return 0;
-    }
-    return 1;
-}
-
-static int try_beside(const char *file)
-{
-    char real[PATH_MAX];
-    if (!file || !realpath(file, real))
-        return 0;
-    char *slash = strrchr(real, '/');
-    if (!slash)
-        return 0;
-    *slash = 0;
-    return try_dir(real, "/generic") || try_dir(real, "/../lib/generic");
-}
-
+/* The decoder: $GENERIC_DECODER, else beside $GENERIC_OIIO_MODULE (a path), else where gspawn_find looks. */
 static void find(void)
 {
-    const char *named = secure_getenv("GENERIC_DECODER");
-    if (named && *named) {
-        snprintf(decoder, sizeof decoder, "%s", named);
-        return;
-    }
-    const char *module = secure_getenv("GENERIC_OIIO_MODULE"); /* a module named: the decoder beside it */
-    if (module && *module && strchr(module, '/')) {
-        char dir[PATH_MAX];
-        snprintf(dir, sizeof dir, "%s", module);
-        *strrchr(dir, '/') = 0;
-        if (try_dir(dir, ""))
+    const char *named = secure_getenv("GENERIC_DECODER"), *module = secure_getenv("GENERIC_OIIO_MODULE");
+    if (!(named && *named) && module && *module && strchr(module, '/')) {
+        char cand[PATH_MAX + 64];
+        snprintf(cand, sizeof cand, "%.*s/%s", (int)(strrchr(module, '/') - module), module, GDECODE_PROGRAM);
+        if (access(cand, X_OK) == 0 && realpath(cand, decoder))
             return;
     }
-    Dl_info self;
-    if (dladdr((void *)&gdecode_run, &self) && self.dli_fname && strchr(self.dli_fname, '/') &&
-        try_beside(self.dli_fname))
-        return;
-    if (try_beside("/proc/self/exe"))
-        return;
-    try_dir(GENERIC_LIBDIR, "/generic");
+    gspawn_find(GDECODE_PROGRAM, "GENERIC_DECODER", (const void *)&gdecode_run, GENERIC_LIBDIR, decoder);
 }
 
 /* ---- the decoder process: one for this process, started on first use ---- */
@@ -162,29 +116,6 @@ static int stop(const char *path, int kill_it, unsigned long cpu, GError *err)
                       path, WIFEXITED(status) ? WEXITSTATUS(status) : -1);
 }
 
-/* Moves both sockets of sv above the standard descriptors 0, 1 and 2 (a program started with one of them closed
- * gets it from socketpair, and would then write its standard output into the decoder's stream). 0, or -1 with
- * errno and both closed. */
-static int above_standard(int sv[2])
-{
-    for (int i = 0; i < 2; i++) {
-        if (sv[i] > 2)
-            continue;
-        int moved = fcntl(sv[i], F_DUPFD_CLOEXEC, 3), e = errno;
-        close(sv[i]);
-        sv[i] = moved;
-        errno = e;
-    }
-    if (sv[0] >= 0 && sv[1] >= 0)
-        return 0;
-    int e = errno;
-    for (int i = 0; i < 2; i++)
-        if (sv[i] >= 0)
-            close(sv[i]);
-    errno = e;
-    return -1;
-}
-
 /* A running decoder whose hard limit allows max_bytes: the one there is, else a new one. */
 static int ensure(const char *path, uint64_t max_bytes, GError *err)
 {
@@ -205,7 +136,7 @@ static int ensure(const char *path, uint64_t max_bytes, GError *err)
                           "/generic/; GENERIC_DECODER may name it, GENERIC_DECODE=inprocess decodes trusted files "
                           "without it)", path, GDECODE_PROGRAM);
     int sv[2];
-    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0 || above_standard(sv) != 0)
+    if (gspawn_socketpair(sv, 2) != 0)
         return gerror_set(err, G_ERR_IO, "%s: cannot start the image decoder: %s", path, strerror(errno));
     char base_text[32], max_text[32];
     snprintf(base_text, sizeof base_text, "%llu", (unsigned long long)base_bytes());

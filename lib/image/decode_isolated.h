@@ -10,10 +10,6 @@
  * system opens the file in this process), or the header only. */
 typedef enum { GDECODE_READ, GDECODE_CHECK, GDECODE_INFO } GDecodeMode;
 
-/** 1 when images are decoded in a separate process (GENERIC_DECODE unset, empty or "isolated"), 0 when in this one
- * (GENERIC_DECODE=inprocess), or G_ERR_INVALID for another value (the message names the variable and its values). */
-int gdecode_isolated(GError *err);
-
 /** Decodes path in a decoder process. READ fills img (zeroed on failure); READ and CHECK reserve the decode against
  * the memory budget from the header before the decode starts, and release it on return; INFO and CHECK give the
  * file's width, height and channels (any may be NULL). G_OK, or the reader's status and message, or G_ERR_IO when
@@ -22,7 +18,7 @@ int gdecode_run(const char *path, GDecodeMode mode, unsigned flags, GImage *img,
                 GError *err);
 
 /** Before a file is read in this process (OpenImageIO's texture system, the spectral channels): decodes it whole in
- * a decoder process (gdecode_run, GDECODE_CHECK) when images are decoded apart (gdecode_isolated), so that a file
+ * a decoder process (gdecode_run, GDECODE_CHECK) when images are decoded apart (gspawn_isolated, services/spawn.h), so that a file
  * that crashes, hangs or blows up a reader is refused before. G_OK, or gdecode_run's status. */
 int gdecode_check_whole(const char *path, GError *err);
 

@@ -9,6 +9,7 @@
 
 #include "image_png.h"
 #include "decode_isolated.h"
+#include "generic/services/spawn.h"
 
 #include "generic/memory.h"
 
@@ -181,7 +182,7 @@ int gimage_read(const char *path, unsigned flags, GImage *img, GError *err)
         return gerror_set(err, G_ERR_INVALID, "no image file name given");
     if ((flags & GIMAGE_READ_RGB) && (flags & GIMAGE_READ_RGBA))
         return gerror_set(err, G_ERR_INVALID, "%s: GIMAGE_READ_RGB and GIMAGE_READ_RGBA exclude each other", path);
-    int isolated = gdecode_isolated(err);
+    int isolated = gspawn_isolated(err);
     if (isolated < 0)
         return isolated;
     if (isolated)
@@ -208,7 +209,7 @@ int gimage_info(const char *path, int *width, int *height, int *channels, GError
 {
     if (!path || !*path)
         return gerror_set(err, G_ERR_INVALID, "no image file name given");
-    int isolated = gdecode_isolated(err);
+    int isolated = gspawn_isolated(err);
     if (isolated < 0)
         return isolated;
     if (isolated)
@@ -265,7 +266,7 @@ int gimage_read_spectra_layer(const char *path, GImageSpectraLayer layer, GImage
 
 int gdecode_check_whole(const char *path, GError *err)
 {
-    int isolated = gdecode_isolated(err);
+    int isolated = gspawn_isolated(err);
     if (isolated < 0)
         return isolated;
     return isolated ? gdecode_run(path, GDECODE_CHECK, 0, NULL, NULL, NULL, NULL, err) : G_OK;
@@ -420,7 +421,7 @@ int gtexsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *cha
         return gerror_set(err, G_ERR_IO, "image '%s' is %dx%d pixels, more than a texture may have (%lld, 8192x8192): "
                           "reduce it first (e.g. oiiotool IN --resize 25%% -o OUT)", path, w, h, GTEXSYS_MAX_PIXELS);
     /* OpenImageIO's texture system reads the file in this process: a decoder process decodes it whole first */
-    int isolated = gdecode_isolated(err);
+    int isolated = gspawn_isolated(err);
     if (isolated < 0)
         return isolated;
     if (isolated && (rc = gdecode_run(path, GDECODE_CHECK, 0, NULL, NULL, NULL, NULL, err)) != G_OK)

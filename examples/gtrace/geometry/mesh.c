@@ -5,6 +5,7 @@
 #include "mesh_format.h"
 
 #include <generic/services/file.h>
+#include <generic/services/spawn.h>
 
 #include <errno.h>
 #include <math.h>
@@ -258,7 +259,7 @@ static int mesh_load(Object *o, const char *path, const MeshFiles *files, GError
                           MESH_FORMATS_READ ")", path, what);
     }
     if (format != MESH_FORMAT_OBJ) {
-        int isolated = mesh_decode_isolated(err);
+        int isolated = gspawn_isolated(err); /* PLY, STL and glTF in gtrace-mesh */
         if (isolated < 0) {
             close(fd);
             return isolated;

@@ -63,10 +63,6 @@ int mesh_load_assimp(Object *o, const char *path, int fd, MeshFormat format, con
  * on the file read whole, charged to the memory budget while it is held), alone: G_OK, or their refusal. fd stays
  * open. */
 int mesh_assimp_check(const char *path, int fd, MeshFormat format, const MeshFiles *files, GError *err);
-/** 1 when PLY, STL and glTF files are read in the mesh reader process (GENERIC_DECODE unset, empty or "isolated"),
- * 0 when in this one (GENERIC_DECODE=inprocess), or G_ERR_INVALID for another value (the message names the variable
- * and its values). */
-int mesh_decode_isolated(GError *err);
 /** mesh_load_assimp in the reader process gtrace-mesh (mesh_isolated.c, mesh_protocol.h), under limits of address
  * space and CPU time, after mesh_assimp_check in this process: the same mesh, the same errors, and fd closed; the other
  * files a glTF file names are allowed by files here, in this process, before the reader opens them. The mesh's counts

@@ -22,8 +22,8 @@
 
 #include <generic/memory.h>
 #include <generic/services/file.h>
+#include <generic/services/spawn.h>
 
-#include <dlfcn.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
@@ -57,58 +57,15 @@ extern char **environ;
 
 _Static_assert(sizeof(unsigned) == sizeof(uint32_t) && sizeof(int) == sizeof(int32_t), "the protocol's arrays");
 
-int mesh_decode_isolated(GError *err)
-{
-    const char *v = getenv("GENERIC_DECODE");
-    if (!v || !*v || strcmp(v, "isolated") == 0)
-        return 1;
-    if (strcmp(v, "inprocess") == 0)
-        return 0;
-    return gerror_set(err, G_ERR_INVALID, "GENERIC_DECODE is '%s': it must be 'isolated' (the default: meshes and "
-                      "images are decoded in a separate process) or 'inprocess' (for trusted files)", v);
-}
-
 /* ---- finding the reader ---- */
 
 static pthread_once_t find_once = PTHREAD_ONCE_INIT;
 static char reader[PATH_MAX];
 
-static int try_dir(const char *dir, const char *sub)
-{
-    char cand[PATH_MAX + 64];
-    snprintf(cand, sizeof cand, "%s%s/%s", dir, sub, MESH_READER_PROGRAM);
-    if (access(cand, X_OK) == 0 && realpath(cand, reader))
-        return 1;
-    reader[0] = 0;
-    return 0;
-}
-
-static int try_beside(const char *file)
-{
-    char real[PATH_MAX];
-    if (!file || !realpath(file, real))
-        return 0;
-    char *slash = strrchr(real, '/');
-    if (!slash)
-        return 0;
-    *slash = 0;
-    return try_dir(real, "") || try_dir(real, "/generic") || try_dir(real, "/../lib/generic");
-}
-
 static void find(void)
 {
-    const char *named = secure_getenv("GTRACE_MESH_READER");
-    if (named && *named) {
-        snprintf(reader, sizeof reader, "%s", named);
-        return;
-    }
-    Dl_info self;
-    if (dladdr((void *)&mesh_load_isolated, &self) && self.dli_fname && strchr(self.dli_fname, '/') &&
-        try_beside(self.dli_fname))
-        return;
-    if (try_beside("/proc/self/exe"))
-        return;
-    try_dir(GTRACE_MESH_LIBDIR, "/generic");
+    gspawn_find(MESH_READER_PROGRAM, "GTRACE_MESH_READER", (const void *)&mesh_load_isolated, GTRACE_MESH_LIBDIR,
+                reader);
 }
 
 /* ---- talking to the reader ---- */
@@ -358,24 +315,6 @@ static int converse(Reader *R, const MeshFiles *files, Mesh **out, GError *err)
     return rc;
 }
 
-/* Moves both sockets of sv above the standard descriptors and MESH_READER_FD. 0, or -1 with both closed. */
-static int above_standard(int sv[2])
-{
-    for (int i = 0; i < 2; i++) {
-        if (sv[i] > MESH_READER_FD)
-            continue;
-        int moved = fcntl(sv[i], F_DUPFD_CLOEXEC, MESH_READER_FD + 1);
-        close(sv[i]);
-        sv[i] = moved;
-    }
-    if (sv[0] >= 0 && sv[1] >= 0)
-        return 0;
-    for (int i = 0; i < 2; i++)
-        if (sv[i] >= 0)
-            close(sv[i]);
-    return -1;
-}
-
 int mesh_load_isolated(Object *o, const char *path, int fd, MeshFormat format, const MeshFiles *files, GError *err)
 {
     struct stat st;
@@ -419,7 +358,7 @@ int mesh_load_isolated(Object *o, const char *path, int fd, MeshFormat format, c
         fd = moved;
     }
     int sv[2];
-    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) != 0 || above_standard(sv) != 0) {
+    if (gspawn_socketpair(sv, MESH_READER_FD) != 0) {
         int e = errno;
         close(fd);
         return gerror_set(err, G_ERR_IO, "%s: cannot start the mesh reader: %s", path, strerror(e));

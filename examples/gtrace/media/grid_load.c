@@ -12,6 +12,7 @@
 
 #include <generic/memory.h>
 #include <generic/services/file.h>
+#include <generic/services/spawn.h>
 
 #include <errno.h>
 #include <fcntl.h>
@@ -30,31 +31,6 @@
 #define GRID_READER_BASE_MB 512
 
 extern char **environ;
-
-/* The reader's path into out (size PATH_MAX): 1 when found. */
-static int find_reader(char *out)
-{
-    const char *named = secure_getenv("GTRACE_VDB_READER");
-    if (named && *named) {
-        snprintf(out, PATH_MAX, "%s", named);
-        return 1;
-    }
-    char exe[PATH_MAX];
-    if (!realpath("/proc/self/exe", exe))
-        return 0;
-    char *slash = strrchr(exe, '/');
-    if (!slash)
-        return 0;
-    *slash = 0;
-    static const char *const subs[] = {"", "/generic", "/../lib/generic"};
-    for (int i = 0; i < 3; i++) {
-        char cand[PATH_MAX + 64];
-        snprintf(cand, sizeof cand, "%s%s/%s", exe, subs[i], VDB_READER_PROGRAM);
-        if (access(cand, X_OK) == 0 && realpath(cand, out))
-            return 1;
-    }
-    return 0;
-}
 
 /* Waits for the reader; when it ended abnormally and rc is an error already set, says how it ended instead. */
 static int finish(pid_t pid, int fd, int rc, int answered, const char *path, GError *err)
@@ -151,7 +127,7 @@ int grid_load(const char *path, const char *name, Grid *g, GError *err)
     if (!S_ISREG(st.st_mode))
         return gerror_set(err, G_ERR_IO, "%s: not a regular file", path);
     char reader[PATH_MAX];
-    if (!find_reader(reader))
+    if (!gspawn_find(VDB_READER_PROGRAM, "GTRACE_VDB_READER", (const void *)&grid_load, NULL, reader))
         return gerror_set(err, G_ERR_IO, "%s: grid media need the OpenVDB reader %s, which is not found (looked beside "
                           "the program, in generic/ and ../lib/generic/ there; GTRACE_VDB_READER may name it)", path,
                           VDB_READER_PROGRAM);
