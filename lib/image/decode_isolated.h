@@ -18,8 +18,9 @@ int gdecode_run(const char *path, GDecodeMode mode, unsigned flags, GImage *img,
                 GError *err);
 
 /** Before a file is read in this process (OpenImageIO's texture system, the spectral channels): decodes it whole in
- * a decoder process (gdecode_run, GDECODE_CHECK) when images are decoded apart (gspawn_isolated, services/spawn.h), so that a file
- * that crashes, hangs or blows up a reader is refused before. G_OK, or gdecode_run's status. */
+ * a decoder process (gdecode_run, GDECODE_CHECK) when images are decoded apart (gspawn_isolated,
+ * services/spawn.h), so that a file that crashes, hangs or blows up a reader is refused before. G_OK, or
+ * gdecode_run's status. */
 int gdecode_check_whole(const char *path, GError *err);
 
 /** gimage_read_spectra_layer without its gdecode_check_whole, for a caller that ran it on path already (one check
