@@ -15,11 +15,12 @@
  * Matrices. A fluorescent reflectance is a 9 x 9 GCOLOR_MATRIX A[o * 9 + i] (row o the sample going out, column i
  * the sample coming in): its re-radiation matrix reduced onto the nine samples (gcolormodel_reduce_reradiation_by,
  * through the linear projection of from_nm), as rgb holds a 3 x 3 one. A vector v stands for diag(v); add, mul
- * (M*V the light A v), scale, div, pow and exp follow rgb's rules (colormodels/rgb.c); brightness, to_nm and to_xyz
- * read a matrix by its response to white (its row sums). Every value has room for 81 floats; a vector's operations
- * are the kit's, behind one test of the kinds. */
+ * (M*V the light A v), scale, axpy, div, pow and exp follow rgb's rules (colormodels/rgb.c); brightness, to_nm and
+ * to_xyz read a matrix by its response to white (its row sums). Every value has room for 81 floats; a vector's
+ * operations are the kit's, behind one test of the kinds. */
 #include "generic/plugin.h"
 #include "generic/kit/spectral.h"
+#include "generic/kit/spectral_kernels.h"
 
 #include <math.h>
 #include <string.h>
@@ -347,6 +348,24 @@ static int spectrum9_exp_scaled(const GColorModel *m, GColor *out, const GColor 
     return G_OK;
 }
 
+/* out = s a + b: two vectors as the library's default (the kit's kernel); otherwise per entry */
+static int spectrum9_axpy(const GColorModel *m, GColor *out, double s, const GColor *a, const GColor *b)
+{
+    (void)m;
+    if (a->kind == GCOLOR_VECTOR && b->kind == GCOLOR_VECTOR) {
+        gspectral_kaxpyd(out->v, s, a->v, b->v, N9);
+        out->kind = GCOLOR_VECTOR;
+        return G_OK;
+    }
+    float x[N9 * N9], y[N9 * N9];
+    as_matrix(a, x);
+    as_matrix(b, y);
+    for (int k = 0; k < N9 * N9; k++)
+        out->v[k] = y[k] + (float)(x[k] * s);
+    out->kind = GCOLOR_MATRIX;
+    return G_OK;
+}
+
 /* A matrix: the brightness of its response to white with entries taken by magnitude, sum_o w_o sum_i |A[o][i]|. */
 static double spectrum9_brightness(const GColorModel *m, const GColor *a)
 {
@@ -398,6 +417,7 @@ static const GColorModelClass gcolormodel_spectrum9 = {
     .from_rgb = gspectral_from_rgb,
     .from_reradiation = spectrum9_from_reradiation,
     .exp_scaled = spectrum9_exp_scaled,
+    .axpy = spectrum9_axpy,
     .band_count = gspectral_band_count,
     .band_mask = gspectral_band_mask,
     .band_value = gspectral_band_value,

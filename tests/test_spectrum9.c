@@ -145,10 +145,10 @@ static void test_d65_light(void **state)
     GColorModel *m = make("spectrum9");
     GSpectrumNM d65;
     assert_int_equal(gcie_illuminant_nm("D65", &d65), G_OK);
-    float b[64], w[64];
+    float b[128], w[128];
     GColor c, white;
-    assert_int_equal(gcolor_wrap(&c, m, b, 64), G_OK);
-    assert_int_equal(gcolor_wrap(&white, m, w, 64), G_OK);
+    assert_int_equal(gcolor_wrap(&c, m, b, 128), G_OK);
+    assert_int_equal(gcolor_wrap(&white, m, w, 128), G_OK);
     assert_int_equal(gcolor_from_nm(&c, &d65, GCOLOR_LIGHT), G_OK);
     double ref[3], got[3];
     gcie_nm_to_xyz(&d65, GCOLOR_LIGHT, ref);
@@ -182,10 +182,10 @@ static void test_lines_keep_colour(void **state)
         spec->form = GCOLORSPEC_LINE;
         spec->line_nm = at[i];
         spec->line_power = 1.0;
-        float b[64];
+        float b[128];
         GColor c;
         GError err;
-        assert_int_equal(gcolor_wrap(&c, m, b, 64), G_OK);
+        assert_int_equal(gcolor_wrap(&c, m, b, 128), G_OK);
         assert_int_equal(gcolorspec_to_color(spec, GCOLOR_LIGHT, &c, &err), G_OK);
         GSpectrumNM line;
         memset(&line, 0, sizeof line);
