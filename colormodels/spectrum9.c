@@ -1,16 +1,14 @@
 /* spectrum9.c - nine spectral samples at 380, 430, ..., 780 nm (the four-sample spline model of
- * Stürzlinger's example, with more samples). A value is 9 floats; operations work sample by sample.
+ * Stürzlinger's example, with more samples). A vector is 9 floats; its operations work sample by sample.
  *
  * to_nm reconstructs the natural cubic spline through the nine samples (second derivative 0 at both
- * ends), evaluated from a table of the nine cardinal splines at every nm built once. from_nm samples
- * with the hat-weighted average of half-width 50 nm (include/generic/kit/spectral.h): each nm hands its energy to
- * the two samples around it in proportion to its distance, so a narrow emission line is kept with its
- * full energy instead of being missed between samples, and a constant stays constant. Sampling then
- * reconstructing smooths a spectrum (features narrower than ~100 nm are lost): this model trades
- * accuracy for size: the hat-sampled spectral primaries come back up to 0.12 off in RGB. from_rgb is
- * therefore corrected to be exact (include/generic/kit/spectral.h), at a price: saturated reflectances get samples
- * outside [0, 1] (down to -0.13 and up to 1.13 for the sRGB primaries), which nine spline samples need
- * to reach their chroma. The grid is fixed; options other than its own values are refused.
+ * ends), evaluated from a table of the nine cardinal splines at every nm built once. from_nm takes the samples whose
+ * spline is nearest the spectrum (least squares), then corrects their XYZ in the role through the corrected RGB basis
+ * (the exact correction from_rgb's basis has), so a spectrum's colour is kept; a light that would need a negative
+ * sample (a narrow line) gets 0 there. Sampling then reconstructing smooths a spectrum (features narrower than
+ * ~100 nm are lost): this model trades accuracy for size. With the basis uplift, saturated reflectances get samples
+ * outside [0, 1] (down to -0.13 and up to 1.13 for the sRGB primaries), which nine spline samples need to reach their
+ * chroma. The grid is fixed; options other than its own values are refused.
  *
  * Matrices. A fluorescent reflectance is a 9 x 9 GCOLOR_MATRIX A[o * 9 + i] (row o the sample going out, column i
  * the sample coming in): its re-radiation matrix reduced onto the nine samples (gcolormodel_reduce_reradiation_by,
@@ -164,15 +162,15 @@ static int correct_xyz(const GColorModel *m, const double want[3], GColorRole ro
     return G_OK;
 }
 
-/* The least-squares samples of the spline nearest the spectrum (negative ones set to 0 when clip). */
-static void least_squares(const Spectrum9 *p, const GSpectrumNM *in, int clip, GColor *out)
+/* The least-squares samples of the spline nearest the spectrum. */
+static void least_squares(const Spectrum9 *p, const GSpectrumNM *in, GColor *out)
 {
     out->kind = GCOLOR_VECTOR;
     for (int k = 0; k < N9; k++) {
         double sum = 0.0;
         for (int i = 0; i < GNM_COUNT; i++)
             sum += (double)p->project[k][i] * in->v[i];
-        out->v[k] = clip && !(sum > 0.0) ? 0.0f : (float)sum;
+        out->v[k] = (float)sum;
     }
 }
 
@@ -183,7 +181,7 @@ static int spectrum9_project(const GColorModel *m, const GSpectrumNM *in, GColor
 {
     double want[3];
     float d[N9];
-    least_squares(m->priv, in, 0, out);
+    least_squares(m->priv, in, out);
     gcie_nm_to_xyz(in, role, want);
     int rc = correct_xyz(m, want, role, out, d);
     for (int k = 0; rc == G_OK && k < N9; k++)
@@ -191,36 +189,16 @@ static int spectrum9_project(const GColorModel *m, const GSpectrumNM *in, GColor
     return rc;
 }
 
-/* The linear projection (spectrum9_project); a light that would need a negative sample (a narrow line) keeps its
- * luminance and as much of its colour as non-negative samples hold instead. */
+/* The linear projection (spectrum9_project); a light that would need a negative sample (a narrow line) has those
+ * samples set to 0, the rest as they are: the colour nearest the line's that non-negative samples hold, brighter
+ * than the line (restoring the luminance instead would darken the samples that remain and move the colour far
+ * more: measured in tests/test_gtrace_fluorescent_rgb.c). */
 static int spectrum9_from_nm(const GColorModel *m, const GSpectrumNM *in, GColorRole role, GColor *out)
 {
     int rc = spectrum9_project(m, in, role, out);
-    int negative = 0;
-    for (int k = 0; k < N9; k++)
-        negative |= out->v[k] < 0.0f;
-    if (rc != G_OK || !negative || role != GCOLOR_LIGHT)
-        return rc; /* a reflectance keeps its colour; the parameter range rule judges its samples */
-    /* from its least-squares samples with the negative ones set to 0, as much of the correction to its XYZ as keeps
-     * every sample >= 0, then its luminance */
-    double want[3], got[3];
-    float d[N9];
-    gcie_nm_to_xyz(in, role, want);
-    least_squares(m->priv, in, 1, out);
-    if ((rc = correct_xyz(m, want, role, out, d)) != G_OK)
-        return rc;
-    double t = 1.0;
-    for (int k = 0; k < N9; k++)
-        if (d[k] < 0.0f && out->v[k] + d[k] < 0.0f)
-            t = fmin(t, out->v[k] > 0.0f ? out->v[k] / -d[k] : 0.0);
-    for (int k = 0; k < N9; k++)
-        out->v[k] = fmaxf(0.0f, (float)(out->v[k] + t * d[k]));
-    if ((rc = gspectral_to_xyz(m, out, role, got)) != G_OK)
-        return rc;
-    if (want[1] > 0.0 && got[1] > 0.0)
-        for (int k = 0; k < N9; k++)
-            out->v[k] = (float)(out->v[k] * (want[1] / got[1]));
-    return G_OK;
+    for (int k = 0; rc == G_OK && role == GCOLOR_LIGHT && k < N9; k++)
+        out->v[k] = fmaxf(out->v[k], 0.0f); /* a reflectance keeps its colour; the parameter range rule judges it */
+    return rc;
 }
 
 /* ---- re-radiation matrices (9 x 9, A[o * 9 + i]); a vector v stands for diag(v) ---- */
