@@ -354,8 +354,10 @@ GENERIC_API GENERIC_NODISCARD int gcolormodel_reduce_reradiation(const GColorMod
 /** A linear projection of an nm spectrum onto a model's values in a role (the signature of a class's from_nm). */
 typedef int (*GColorProjectNM)(const GColorModel *m, const GSpectrumNM *in, GColorRole role, GColor *out);
 /** gcolormodel_reduce_reradiation with the sent light of each column converted back by project (NULL: the model's
- * from_nm), for a model whose from_nm is not linear for every light (spectrum9 keeps a narrow line's samples
- * non-negative, which no column of an operator must do before the reduction's own non-negative step). */
+ * from_nm), for a model whose from_nm is not linear for every light: spectrum9 sets a narrow line's negative samples
+ * to 0, where a column of the operator keeps them until the reduction's own non-negative step. Measured in spectrum9
+ * (the patch colours of gcolormodel_reduce_reradiation): mean CIEDE2000 under D65 / A / F2 1.95 / 1.89 / 2.32
+ * against 3.26 / 7.78 / 8.75 for the equal-energy fold. */
 GENERIC_API GENERIC_NODISCARD int gcolormodel_reduce_reradiation_by(const GColorModel *m, const GReradiation *r,
                                                                     GColorProjectNM project, GColor *out,
                                                                     GError *err);
