@@ -1,20 +1,27 @@
 /* spectrum9.c - nine spectral samples at 380, 430, ..., 780 nm (the four-sample spline model of
- * Stürzlinger's example, with more samples). A value is 9 floats; operations work sample by sample.
+ * Stürzlinger's example, with more samples). A vector is 9 floats; its operations work sample by sample.
  *
  * to_nm reconstructs the natural cubic spline through the nine samples (second derivative 0 at both
- * ends), evaluated from a table of the nine cardinal splines at every nm built once. from_nm samples
- * with the hat-weighted average of half-width 50 nm (include/generic/kit/spectral.h): each nm hands its energy to
- * the two samples around it in proportion to its distance, so a narrow emission line is kept with its
- * full energy instead of being missed between samples, and a constant stays constant. Sampling then
- * reconstructing smooths a spectrum (features narrower than ~100 nm are lost): this model trades
- * accuracy for size: the hat-sampled spectral primaries come back up to 0.12 off in RGB. from_rgb is
- * therefore corrected to be exact (include/generic/kit/spectral.h), at a price: saturated reflectances get samples
- * outside [0, 1] (down to -0.13 and up to 1.13 for the sRGB primaries), which nine spline samples need
- * to reach their chroma. The grid is fixed; options other than its own values are refused. */
+ * ends), evaluated from a table of the nine cardinal splines at every nm built once. from_nm takes the samples whose
+ * spline is nearest the spectrum (least squares), then corrects their XYZ in the role through the corrected RGB basis
+ * (the exact correction from_rgb's basis has), so a spectrum's colour is kept; a light that would need a negative
+ * sample (a narrow line) gets 0 there. Sampling then reconstructing smooths a spectrum (features narrower than
+ * ~100 nm are lost): this model trades accuracy for size. With the basis uplift, saturated reflectances get samples
+ * outside [0, 1] (down to -0.13 and up to 1.13 for the sRGB primaries), which nine spline samples need to reach their
+ * chroma. The grid is fixed; options other than its own values are refused.
+ *
+ * Matrices. A fluorescent reflectance is a 9 x 9 GCOLOR_MATRIX A[o * 9 + i] (row o the sample going out, column i
+ * the sample coming in): its re-radiation matrix reduced onto the nine samples (gcolormodel_reduce_reradiation_by,
+ * through the linear projection of from_nm), as rgb holds a 3 x 3 one. A vector v stands for diag(v); add, mul
+ * (M*V the light A v), scale, axpy, div, pow and exp follow rgb's rules (colormodels/rgb.c); brightness, to_nm and
+ * to_xyz read a matrix by its response to white (its row sums). Every value has room for 81 floats; a vector's
+ * operations are the kit's, behind one test of the kinds. */
 #include "generic/plugin.h"
 #include "generic/kit/spectral.h"
+#include "generic/kit/spectral_kernels.h"
 
 #include <math.h>
+#include <string.h>
 
 enum { N9 = 9 };
 
@@ -106,7 +113,7 @@ static int spectrum9_init(GColorModel *self, const GColorModelOptions *opt, GErr
     GSpectralGrid grid = {380.0, 50.0, N9};
     int rc = gspectral_grid_check_fixed("spectrum9", opt, grid, err);
     if (rc == G_OK)
-        rc = gspectral_model_alloc(self, sizeof(Spectrum9), N9, err);
+        rc = gspectral_model_alloc(self, sizeof(Spectrum9), N9 * N9, err); /* room for a 9 x 9 matrix */
     if (rc != G_OK)
         return rc;
     Spectrum9 *p = self->priv;
@@ -116,11 +123,18 @@ static int spectrum9_init(GColorModel *self, const GColorModelOptions *opt, GErr
     return rc == G_OK ? gspectral_set_uplift(self, &p->s, opt, err) : rc;
 }
 
+static void fold(const GColor *a, float d[N9]);
+
 static int spectrum9_to_nm(const GColorModel *m, const GColor *a, GColorRole role, GSpectrumNM *out)
 {
     (void)role;
     const Spectrum9 *p = m->priv;
+    float folded[N9];
     const float *v = a->v;
+    if (a->kind == GCOLOR_MATRIX) { /* its response to white */
+        fold(a, folded);
+        v = folded;
+    }
     for (int i = 0; i < GNM_COUNT; i++) {
         const float *w = p->spline[i];
         float s = 0.0f;
@@ -131,22 +145,11 @@ static int spectrum9_to_nm(const GColorModel *m, const GColor *a, GColorRole rol
     return G_OK;
 }
 
-/* The least-squares samples of the spline nearest the spectrum, then the rest of its XYZ in the role through the
- * corrected RGB basis (the exact correction from_rgb's basis has): the spectrum's colour is kept exactly, a light's
- * as a light and a reflectance's under D65; a light that would need a negative sample (a narrow line) keeps its
- * luminance and as much of its colour as non-negative samples hold instead. */
-static int spectrum9_from_nm(const GColorModel *m, const GSpectrumNM *in, GColorRole role, GColor *out)
+/* The samples plus the correction of their XYZ in the role to want, through the corrected RGB basis. */
+static int correct_xyz(const GColorModel *m, const double want[3], GColorRole role, GColor *out, float d[N9])
 {
     const Spectrum9 *p = m->priv;
-    out->kind = GCOLOR_VECTOR;
-    for (int k = 0; k < N9; k++) {
-        double sum = 0.0;
-        for (int i = 0; i < GNM_COUNT; i++)
-            sum += (double)p->project[k][i] * in->v[i];
-        out->v[k] = (float)sum;
-    }
-    double want[3], got[3], dx[3], rgb[3];
-    gcie_nm_to_xyz(in, role, want);
+    double got[3], dx[3], rgb[3];
     int rc = gspectral_to_xyz(m, out, role, got);
     if (rc != G_OK)
         return rc;
@@ -154,42 +157,223 @@ static int spectrum9_from_nm(const GColorModel *m, const GSpectrumNM *in, GColor
         dx[c] = want[c] - got[c];
     gcie_xyz_to_rgb(dx, rgb);
     const float *b = p->s.rgb[role == GCOLOR_LIGHT];
-    float d[N9];
-    int negative = 0;
-    for (int k = 0; k < N9; k++) {
+    for (int k = 0; k < N9; k++)
         d[k] = (float)(rgb[0] * b[k] + rgb[1] * b[N9 + k] + rgb[2] * b[2 * N9 + k]);
-        out->v[k] += d[k];
-        negative |= out->v[k] < 0.0f;
-    }
-    if (!negative || role != GCOLOR_LIGHT)
-        return G_OK; /* a reflectance keeps its colour; the parameter range rule judges its samples */
-    /* a light beyond what nine non-negative samples hold (a narrow line): from its least-squares samples with the
-     * negative ones set to 0, as much of the correction to its XYZ as keeps every sample >= 0, then its luminance */
+    return G_OK;
+}
+
+/* The least-squares samples of the spline nearest the spectrum. */
+static void least_squares(const Spectrum9 *p, const GSpectrumNM *in, GColor *out)
+{
+    out->kind = GCOLOR_VECTOR;
     for (int k = 0; k < N9; k++) {
         double sum = 0.0;
         for (int i = 0; i < GNM_COUNT; i++)
             sum += (double)p->project[k][i] * in->v[i];
-        out->v[k] = sum > 0.0 ? (float)sum : 0.0f;
+        out->v[k] = (float)sum;
     }
-    if ((rc = gspectral_to_xyz(m, out, role, got)) != G_OK)
-        return rc;
-    for (int c = 0; c < 3; c++)
-        dx[c] = want[c] - got[c];
-    gcie_xyz_to_rgb(dx, rgb);
-    double t = 1.0;
-    for (int k = 0; k < N9; k++) {
-        d[k] = (float)(rgb[0] * b[k] + rgb[1] * b[N9 + k] + rgb[2] * b[2 * N9 + k]);
-        if (d[k] < 0.0f && out->v[k] + d[k] < 0.0f)
-            t = fmin(t, out->v[k] > 0.0f ? out->v[k] / -d[k] : 0.0);
-    }
+}
+
+/* The linear projection: the least-squares samples, then the rest of the spectrum's XYZ in the role through the
+ * corrected RGB basis (the exact correction from_rgb's basis has), so the spectrum's colour is kept exactly, a
+ * light's as a light and a reflectance's under D65. Samples may be negative (a narrow line). */
+static int spectrum9_project(const GColorModel *m, const GSpectrumNM *in, GColorRole role, GColor *out)
+{
+    double want[3];
+    float d[N9];
+    least_squares(m->priv, in, out);
+    gcie_nm_to_xyz(in, role, want);
+    int rc = correct_xyz(m, want, role, out, d);
+    for (int k = 0; rc == G_OK && k < N9; k++)
+        out->v[k] += d[k];
+    return rc;
+}
+
+/* The linear projection (spectrum9_project); a light that would need a negative sample (a narrow line) has those
+ * samples set to 0, the rest as they are: the colour nearest the line's that non-negative samples hold, brighter
+ * than the line (restoring the luminance instead would darken the samples that remain and move the colour far
+ * more: measured in tests/test_gtrace_fluorescent_rgb.c). */
+static int spectrum9_from_nm(const GColorModel *m, const GSpectrumNM *in, GColorRole role, GColor *out)
+{
+    int rc = spectrum9_project(m, in, role, out);
+    for (int k = 0; rc == G_OK && role == GCOLOR_LIGHT && k < N9; k++)
+        out->v[k] = fmaxf(out->v[k], 0.0f); /* a reflectance keeps its colour; the parameter range rule judges it */
+    return rc;
+}
+
+/* ---- re-radiation matrices (9 x 9, A[o * 9 + i]); a vector v stands for diag(v) ---- */
+
+/* The plain part: a vector itself, a matrix its diagonal. */
+static void diagonal(const GColor *a, float d[N9])
+{
     for (int k = 0; k < N9; k++)
-        out->v[k] = fmaxf(0.0f, (float)(out->v[k] + t * d[k]));
-    if ((rc = gspectral_to_xyz(m, out, role, got)) != G_OK)
-        return rc;
-    if (want[1] > 0.0 && got[1] > 0.0)
-        for (int k = 0; k < N9; k++)
-            out->v[k] = (float)(out->v[k] * (want[1] / got[1]));
+        d[k] = a->kind == GCOLOR_MATRIX ? a->v[k * N9 + k] : a->v[k];
+}
+
+/* The response to the unit light of every sample (the samples' white): a vector itself, a matrix its row sums. */
+static void fold(const GColor *a, float d[N9])
+{
+    for (int o = 0; o < N9; o++) {
+        double s = 0.0;
+        for (int i = 0; a->kind == GCOLOR_MATRIX && i < N9; i++)
+            s += a->v[o * N9 + i];
+        d[o] = a->kind == GCOLOR_MATRIX ? (float)s : a->v[o];
+    }
+}
+
+static void as_matrix(const GColor *a, float x[N9 * N9])
+{
+    if (a->kind == GCOLOR_MATRIX) {
+        memcpy(x, a->v, N9 * N9 * sizeof *x);
+        return;
+    }
+    memset(x, 0, N9 * N9 * sizeof *x);
+    for (int k = 0; k < N9; k++)
+        x[k * N9 + k] = a->v[k];
+}
+
+/* A stack vector of the model around d. */
+static GColor vector_of(const GColorModel *m, float *d)
+{
+    return (GColor){.model = m, .v = d, .kind = GCOLOR_VECTOR, .storage = GCOLOR_STORAGE_CALLER, .capacity = N9 * N9};
+}
+
+static int spectrum9_add(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+{
+    if (a->kind == GCOLOR_VECTOR && b->kind == GCOLOR_VECTOR)
+        return gspectral_add(m, out, a, b);
+    float x[N9 * N9], y[N9 * N9];
+    as_matrix(a, x);
+    as_matrix(b, y);
+    for (int k = 0; k < N9 * N9; k++)
+        out->v[k] = x[k] + y[k];
+    out->kind = GCOLOR_MATRIX;
     return G_OK;
+}
+
+/* V*V per sample; M*M the product A B; V*M diag(a) B; M*V the light A v (a vector on the right is a light). */
+static int spectrum9_mul(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+{
+    if (a->kind == GCOLOR_VECTOR && b->kind == GCOLOR_VECTOR)
+        return gspectral_mul(m, out, a, b);
+    float x[N9 * N9], y[N9 * N9];
+    as_matrix(a, x);
+    if (b->kind == GCOLOR_VECTOR) {
+        float l[N9];
+        memcpy(l, b->v, sizeof l);
+        for (int o = 0; o < N9; o++) {
+            float s = 0.0f;
+            for (int i = 0; i < N9; i++)
+                s += x[o * N9 + i] * l[i];
+            out->v[o] = s;
+        }
+        out->kind = GCOLOR_VECTOR;
+        return G_OK;
+    }
+    as_matrix(b, y);
+    for (int o = 0; o < N9; o++)
+        for (int i = 0; i < N9; i++) {
+            float s = 0.0f;
+            for (int k = 0; k < N9; k++)
+                s += x[o * N9 + k] * y[k * N9 + i];
+            out->v[o * N9 + i] = s;
+        }
+    out->kind = GCOLOR_MATRIX;
+    return G_OK;
+}
+
+static int spectrum9_scale(const GColorModel *m, GColor *out, const GColor *a, double s)
+{
+    if (a->kind == GCOLOR_VECTOR)
+        return gspectral_scale(m, out, a, s);
+    for (int k = 0; k < N9 * N9; k++)
+        out->v[k] = a->v[k] * (float)s;
+    out->kind = GCOLOR_MATRIX;
+    return G_OK;
+}
+
+/* div, pow, exp: the diagonals, a vector (a medium absorbs, it does not fluoresce). */
+static int spectrum9_div(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+{
+    if (a->kind == GCOLOR_VECTOR && b->kind == GCOLOR_VECTOR)
+        return gspectral_div(m, out, a, b);
+    float x[N9], y[N9];
+    diagonal(a, x);
+    diagonal(b, y);
+    GColor va = vector_of(m, x), vb = vector_of(m, y);
+    return gspectral_div(m, out, &va, &vb);
+}
+
+static int spectrum9_pow(const GColorModel *m, GColor *out, const GColor *a, double e)
+{
+    if (a->kind == GCOLOR_VECTOR)
+        return gspectral_pow(m, out, a, e);
+    float x[N9];
+    diagonal(a, x);
+    GColor va = vector_of(m, x);
+    return gspectral_pow(m, out, &va, e);
+}
+
+/* exp(s a) per sample of the plain part: for a vector the library's default, computed the same way */
+static int spectrum9_exp_scaled(const GColorModel *m, GColor *out, const GColor *a, double s)
+{
+    (void)m;
+    float x[N9];
+    diagonal(a, x);
+    for (int k = 0; k < N9; k++)
+        out->v[k] = (float)exp(s * x[k]);
+    out->kind = GCOLOR_VECTOR;
+    return G_OK;
+}
+
+/* out = s a + b: two vectors as the library's default (the kit's kernel); otherwise per entry */
+static int spectrum9_axpy(const GColorModel *m, GColor *out, double s, const GColor *a, const GColor *b)
+{
+    (void)m;
+    if (a->kind == GCOLOR_VECTOR && b->kind == GCOLOR_VECTOR) {
+        gspectral_kaxpyd(out->v, s, a->v, b->v, N9);
+        out->kind = GCOLOR_VECTOR;
+        return G_OK;
+    }
+    float x[N9 * N9], y[N9 * N9];
+    as_matrix(a, x);
+    as_matrix(b, y);
+    for (int k = 0; k < N9 * N9; k++)
+        out->v[k] = y[k] + (float)(x[k] * s);
+    out->kind = GCOLOR_MATRIX;
+    return G_OK;
+}
+
+/* A matrix: the brightness of its response to white with entries taken by magnitude, sum_o w_o sum_i |A[o][i]|. */
+static double spectrum9_brightness(const GColorModel *m, const GColor *a)
+{
+    if (a->kind == GCOLOR_VECTOR)
+        return gspectral_brightness(m, a);
+    float r[N9];
+    for (int o = 0; o < N9; o++) {
+        float s = 0.0f;
+        for (int i = 0; i < N9; i++)
+            s += fabsf(a->v[o * N9 + i]);
+        r[o] = s;
+    }
+    GColor vr = vector_of(m, r);
+    return gspectral_brightness(m, &vr);
+}
+
+/* A matrix reads as its response to white (the row sums), in the role asked for. */
+static int spectrum9_to_xyz(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3])
+{
+    if (a->kind == GCOLOR_VECTOR)
+        return gspectral_to_xyz(m, a, role, xyz);
+    float r[N9];
+    fold(a, r);
+    GColor vr = vector_of(m, r);
+    return gspectral_to_xyz(m, &vr, role, xyz);
+}
+
+static int spectrum9_from_reradiation(const GColorModel *m, const GReradiation *r, GColor *out, GError *err)
+{
+    return gcolormodel_reduce_reradiation_by(m, r, spectrum9_project, out, err);
 }
 
 static const GColorModelClass gcolormodel_spectrum9 = {
@@ -199,16 +383,19 @@ static const GColorModelClass gcolormodel_spectrum9 = {
     .init = spectrum9_init,
     .fini = gspectral_model_fini,
     .black = gspectral_black,
-    .add = gspectral_add,
-    .mul = gspectral_mul,
-    .scale = gspectral_scale,
-    .div = gspectral_div,
-    .pow = gspectral_pow,
-    .brightness = gspectral_brightness,
+    .add = spectrum9_add,
+    .mul = spectrum9_mul,
+    .scale = spectrum9_scale,
+    .div = spectrum9_div,
+    .pow = spectrum9_pow,
+    .brightness = spectrum9_brightness,
     .to_nm = spectrum9_to_nm,
     .from_nm = spectrum9_from_nm,
-    .to_xyz = gspectral_to_xyz,
+    .to_xyz = spectrum9_to_xyz,
     .from_rgb = gspectral_from_rgb,
+    .from_reradiation = spectrum9_from_reradiation,
+    .exp_scaled = spectrum9_exp_scaled,
+    .axpy = spectrum9_axpy,
     .band_count = gspectral_band_count,
     .band_mask = gspectral_band_mask,
     .band_value = gspectral_band_value,

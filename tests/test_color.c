@@ -57,7 +57,7 @@ static void test_create_by_name(void **state)
         double min, step;
     } want[] = {
         {"rgb", {0, 0, 0, 0}, 3, 9, 0, 0}, /* room for a 3 x 3 re-radiation matrix */
-        {"spectrum9", {0, 0, 0, 0}, 9, 9, 380, 50},
+        {"spectrum9", {0, 0, 0, 0}, 9, 81, 380, 50}, /* room for a 9 x 9 re-radiation matrix */
         {"spectrum", {0, 0, 0, 0}, 81, 81, 380, 5},
         {"spectrum", {1, 0, 0, 0}, 401, 401, 380, 1},
         {"spectrum", {2.5, 0, 0, 0}, 161, 161, 380, 2.5},

@@ -345,6 +345,44 @@ static void test_measured_fold(void **state)
     }
 }
 
+/* A line light out of the rgb gamut mapped as a light: its negative components 0, the others unchanged (its
+ * luminance not restored), reported; within a model's conversion error the luminance is kept, as
+ * gcolor_clip_to_gamut keeps it. */
+static void test_clip_light_to_gamut(void **state)
+{
+    (void)state;
+    GColorModel *rgb = make("rgb");
+    GColor c;
+    assert_int_equal(gcolor_alloc(&c, rgb), G_OK);
+    GSpectrumNM line;
+    memset(&line, 0, sizeof line);
+    line.v[450 - GNM_MIN] = 1.0f;
+    assert_int_equal(gcolor_from_nm(&c, &line, GCOLOR_LIGHT), G_OK);
+    float before[3] = {c.v[0], c.v[1], c.v[2]};
+    assert_true(before[1] < 0.0f && before[0] > 0.0f && before[2] > 0.0f); /* 450 nm: a negative green */
+    int mapped = -1;
+    assert_int_equal(gcolor_clip_light_to_gamut(&c, &mapped), G_OK);
+    assert_int_equal(mapped, 1);
+    assert_true(c.v[0] == before[0] && c.v[1] == 0.0f && c.v[2] == before[2]);
+    c.v[0] = NAN;
+    assert_int_equal(gcolor_clip_light_to_gamut(&c, &mapped), G_ERR_INVALID);
+    gcolor_free(&c);
+    gcolormodel_destroy(rgb);
+    GColorModel *sp = make("spectrum");
+    assert_int_equal(gcolor_alloc(&c, sp), G_OK);
+    double green[3] = {0, 1, 0}, xyz0[3], xyz1[3];
+    assert_int_equal(gcolor_from_rgb(&c, green, GCOLOR_LIGHT), G_OK);
+    c.v[0] = -1e-7f; /* within the conversion error */
+    assert_int_equal(gcolor_to_xyz(&c, GCOLOR_LIGHT, xyz0), G_OK);
+    assert_int_equal(gcolor_clip_light_to_gamut(&c, &mapped), G_OK);
+    assert_int_equal(mapped, 0);
+    assert_true(gcolor_is_nonnegative(&c));
+    assert_int_equal(gcolor_to_xyz(&c, GCOLOR_LIGHT, xyz1), G_OK);
+    assert_true(fabs(xyz1[1] - xyz0[1]) < 1e-6 * xyz0[1]);
+    gcolor_free(&c);
+    gcolormodel_destroy(sp);
+}
+
 int main(void)
 {
     if (generic_register_builtins(NULL) != G_OK)
@@ -356,6 +394,7 @@ int main(void)
         cmocka_unit_test(test_primaries_through_the_reader),
         cmocka_unit_test(test_matrix_message),
         cmocka_unit_test(test_clip_to_gamut),
+        cmocka_unit_test(test_clip_light_to_gamut),
         cmocka_unit_test(test_above_one_is_a_fold),
         cmocka_unit_test(test_measured_fold),
     };

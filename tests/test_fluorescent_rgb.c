@@ -1,5 +1,5 @@
-/* test_fluorescent_rgb.c - re-radiation matrices in rgb: the non-orthogonal reduction
- * (gcolormodel_reduce_reradiation) and rgb's 3 x 3 matrices.
+/* test_fluorescent_rgb.c - re-radiation matrices in rgb and spectrum9: the non-orthogonal reduction
+ * (gcolormodel_reduce_reradiation) and the models' 3 x 3 and 9 x 9 matrices.
  *   - a plain reflectance (a diagonal matrix) reduces to the identity for white 1 and, in general, to a matrix whose
  *     response to white is the rgb reflectance of the diagonal;
  *   - every reduced matrix has entries >= 0 and column sums <= 1 (energy, material_params.h);
@@ -7,8 +7,8 @@
  *     measured matrices of ../shared/data/bispectral (skipped when absent) and the parametric day-glo orange, the
  *     mean CIEDE2000 of the reduction is below the equal-energy fold's (the reflectance rgb had before matrices)
  *     under each illuminant, and the reduction is within 0.1 of the bispectral colour under D65 wherever no
- *     column needed scaling;
- *   - the matrix operations against hand-computed products. */
+ *     column needed scaling; the same in spectrum9 against its own fold (the reflectance it had before matrices);
+ *   - the matrix operations against hand-computed products, in both models. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -62,10 +62,13 @@ static float *diagonal_matrix(double (*refl)(double), GReradiation *r)
 static double white(double nm) { return (void)nm, 1.0; }
 static double reddish(double nm) { return 0.1 + 0.8 / (1.0 + exp(-(nm - 600.0) / 15.0)); }
 
-static void test_plain_reflectance(void **state)
+/* A diagonal matrix of 1 reduces to the identity in the model named; a coloured one to a matrix whose response to
+ * white is the reflectance: in rgb its rgb reflectance (rgb's white is D65), in spectrum9 the reflectance's colour
+ * under equal energy (the sum of its unit lights is the constant 1), both exactly. */
+static void plain_reflectance(const char *name)
 {
-    (void)state;
-    GColorModel *m = model("rgb");
+    GColorModel *m = model(name);
+    int n = m->nvalues;
     GError err;
     GReradiation r;
     float *v = diagonal_matrix(white, &r);
@@ -74,11 +77,10 @@ static void test_plain_reflectance(void **state)
     assert_int_equal(gcolor_alloc(&d, m), G_OK);
     assert_int_equal(gcolor_from_reradiation(&c, &r, &err), G_OK);
     assert_int_equal(c.kind, GCOLOR_MATRIX);
-    for (int o = 0; o < 3; o++)
-        for (int i = 0; i < 3; i++)
-            assert_true(fabs(c.v[o * 3 + i] - (o == i ? 1.0 : 0.0)) < 1e-4);
+    for (int o = 0; o < n; o++)
+        for (int i = 0; i < n; i++)
+            assert_true(fabs(c.v[o * n + i] - (o == i ? 1.0 : 0.0)) < 1e-4);
     free(v);
-    /* a coloured reflectance: its response to white is its rgb reflectance */
     v = diagonal_matrix(reddish, &r);
     assert_int_equal(gcolor_from_reradiation(&c, &r, &err), G_OK);
     GSpectrumNM s; /* the diagonal is linear between its samples */
@@ -87,16 +89,28 @@ static void test_plain_reflectance(void **state)
         double t = (k - 10.0 * q) / 10.0;
         s.v[k] = (float)((1.0 - t) * reddish(380.0 + 10.0 * q) + t * reddish(390.0 + 10.0 * q));
     }
-    assert_int_equal(gcolor_from_nm(&d, &s, GCOLOR_REFLECTANCE), G_OK);
     double fold[3], want[3];
-    assert_int_equal(gcolor_to_rgb(&c, GCOLOR_REFLECTANCE, fold), G_OK);
-    assert_int_equal(gcolor_to_rgb(&d, GCOLOR_REFLECTANCE, want), G_OK);
+    if (n == 3) {
+        assert_int_equal(gcolor_from_nm(&d, &s, GCOLOR_REFLECTANCE), G_OK);
+        assert_int_equal(gcolor_to_rgb(&c, GCOLOR_REFLECTANCE, fold), G_OK);
+        assert_int_equal(gcolor_to_rgb(&d, GCOLOR_REFLECTANCE, want), G_OK);
+    } else {
+        assert_int_equal(gcolor_to_xyz(&c, GCOLOR_LIGHT, fold), G_OK);
+        gcie_nm_to_xyz(&s, GCOLOR_LIGHT, want);
+    }
     for (int k = 0; k < 3; k++)
         assert_true(fabs(fold[k] - want[k]) < 1e-4);
     free(v);
     gcolor_free(&c);
     gcolor_free(&d);
     gcolormodel_destroy(m);
+}
+
+static void test_plain_reflectance(void **state)
+{
+    (void)state;
+    plain_reflectance("rgb");
+    plain_reflectance("spectrum9");
 }
 
 /* The equal-energy fold of r as an rgb reflectance, clipped into the gamut keeping its luminance: what rgb made of
@@ -158,11 +172,14 @@ static void compare(const char *name, const GReradiation *r, GColorModel *rgb, G
     assert_int_equal(gcolor_from_reradiation(&mat, r, &err), G_OK);
     naive_fold(r, &naive);
     /* non-negative, and energy: every column sums to at most 1 */
-    for (int i = 0; i < 3; i++) {
+    int n = rgb->nvalues;
+    const char *model_name = gcolormodel_name(rgb);
+    assert_int_equal(reduced.kind, GCOLOR_MATRIX);
+    for (int i = 0; i < n; i++) {
         double sum = 0.0;
-        for (int o = 0; o < 3; o++) {
-            assert_true(reduced.v[o * 3 + i] >= 0.0f);
-            sum += reduced.v[o * 3 + i];
+        for (int o = 0; o < n; o++) {
+            assert_true(reduced.v[o * n + i] >= 0.0f);
+            sum += reduced.v[o * n + i];
         }
         assert_true(sum <= 1.0 + 1e-6);
     }
@@ -183,9 +200,9 @@ static void compare(const char *name, const GReradiation *r, GColorModel *rgb, G
          * component is 0) or its components sum above white's 3 (scaled to 3: energy) */
         double rgb[3];
         gcie_xyz_to_rgb(ref, rgb);
-        int exact = l == 0 && fmin(rgb[0], fmin(rgb[1], rgb[2])) >= 0.0 && rgb[0] + rgb[1] + rgb[2] <= 3.0;
-        print_message("%-12s %-3s  CIEDE2000 to bispectral: fold %6.3f  reduced %6.3f%s\n", name, illuminants[l],
-                      dn, dr, l == 0 && !exact ? "  (outside the gamut or above white: mapped)" : "");
+        int exact = n == 3 && l == 0 && fmin(rgb[0], fmin(rgb[1], rgb[2])) >= 0.0 && rgb[0] + rgb[1] + rgb[2] <= 3.0;
+        print_message("%-9s %-12s %-3s  CIEDE2000 to bispectral: fold %6.3f  reduced %6.3f%s\n", model_name, name,
+                      illuminants[l], dn, dr, n == 3 && l == 0 && !exact ? "  (outside the gamut or above white)" : "");
         if (exact)
             assert_true(dr < 0.1);
         t->naive[l] += dn;
@@ -197,10 +214,10 @@ static void compare(const char *name, const GReradiation *r, GColorModel *rgb, G
     gcolor_free(&mat);
 }
 
-static void test_reduction_against_bispectral(void **state)
+/* The reduction in the model named against its fold, under each illuminant. */
+static void reduction_against_bispectral(const char *name)
 {
-    (void)state;
-    GColorModel *rgb = model("rgb"), *bi = model("bispectral");
+    GColorModel *rgb = model(name), *bi = model("bispectral");
     Totals t = {0};
     GError err;
     GFluorBands bands;
@@ -225,11 +242,23 @@ static void test_reduction_against_bispectral(void **state)
         print_message("no measured matrices (../shared/data/bispectral): the parametric one alone\n");
     for (int l = 0; l < NILLUM; l++) {
         double n = t.naive[l] / t.count, r = t.reduced[l] / t.count;
-        print_message("mean of %d under %-3s: fold %.3f  reduced %.3f\n", t.count, illuminants[l], n, r);
+        print_message("%s: mean of %d under %-3s: fold %.3f  reduced %.3f\n", name, t.count, illuminants[l], n, r);
         assert_true(r < n);
     }
     gcolormodel_destroy(rgb);
     gcolormodel_destroy(bi);
+}
+
+static void test_reduction_against_bispectral(void **state)
+{
+    (void)state;
+    reduction_against_bispectral("rgb");
+}
+
+static void test_reduction_spectrum9(void **state)
+{
+    (void)state;
+    reduction_against_bispectral("spectrum9");
 }
 
 static void set9(GColor *c, const float v[9])
@@ -299,12 +328,101 @@ static void test_matrix_operations(void **state)
     gcolormodel_destroy(m);
 }
 
+/* spectrum9's 9 x 9 matrices: products, sums and the reading of a matrix by its response to white, against the
+ * same computed by hand; a vector's operations unchanged. */
+static void test_matrix_operations_spectrum9(void **state)
+{
+    (void)state;
+    GColorModel *m = model("spectrum9");
+    assert_int_equal(m->nvalues, 9);
+    assert_int_equal(m->capacity, 81);
+    GColor a, b, v, out, rows;
+    assert_int_equal(gcolor_alloc(&a, m), G_OK);
+    assert_int_equal(gcolor_alloc(&b, m), G_OK);
+    assert_int_equal(gcolor_alloc(&v, m), G_OK);
+    assert_int_equal(gcolor_alloc(&out, m), G_OK);
+    assert_int_equal(gcolor_alloc(&rows, m), G_OK);
+    float am[81], bm[81];
+    for (int k = 0; k < 81; k++) {
+        am[k] = k / 9 <= k % 9 ? 0.01f * (float)(1 + (k * 7) % 11) : 0.0f; /* upper triangle: re-radiation to red */
+        bm[k] = 0.02f * (float)((k * 5) % 7);
+    }
+    memcpy(a.v, am, sizeof am), a.kind = GCOLOR_MATRIX;
+    memcpy(b.v, bm, sizeof bm), b.kind = GCOLOR_MATRIX;
+    for (int k = 0; k < 9; k++)
+        v.v[k] = 0.5f + 0.25f * (float)k;
+    assert_int_equal(gcolor_mul(&out, &a, &v), G_OK); /* the light A v */
+    assert_int_equal(out.kind, GCOLOR_VECTOR);
+    for (int o = 0; o < 9; o++) {
+        double p = 0.0, r = 0.0;
+        for (int i = 0; i < 9; i++)
+            p += am[o * 9 + i] * v.v[i], r += am[o * 9 + i];
+        assert_true(fabs(out.v[o] - p) < 1e-6);
+        rows.v[o] = (float)r;
+    }
+    assert_int_equal(gcolor_copy(&out, &a), G_OK); /* A B, out aliasing A */
+    assert_int_equal(gcolor_mul(&out, &out, &b), G_OK);
+    assert_int_equal(out.kind, GCOLOR_MATRIX);
+    for (int o = 0; o < 9; o++)
+        for (int i = 0; i < 9; i++) {
+            double p = 0.0;
+            for (int k = 0; k < 9; k++)
+                p += am[o * 9 + k] * bm[k * 9 + i];
+            assert_true(fabs(out.v[o * 9 + i] - p) < 1e-6);
+        }
+    assert_int_equal(gcolor_mul(&out, &v, &b), G_OK); /* diag(v) B */
+    for (int k = 0; k < 81; k++)
+        assert_true(fabs(out.v[k] - v.v[k / 9] * bm[k]) < 1e-6);
+    assert_int_equal(gcolor_add(&out, &a, &v), G_OK); /* A + diag(v) */
+    for (int k = 0; k < 81; k++)
+        assert_true(fabs(out.v[k] - (am[k] + (k % 10 == 0 ? v.v[k / 10] : 0.0f))) < 1e-6);
+    assert_int_equal(gcolor_axpy(&out, 2.0, &a, &b), G_OK);
+    for (int k = 0; k < 81; k++)
+        assert_true(fabs(out.v[k] - (2.0f * am[k] + bm[k])) < 1e-6);
+    assert_int_equal(gcolor_scale(&out, &a, 0.5), G_OK);
+    assert_int_equal(out.kind, GCOLOR_MATRIX);
+    assert_true(fabs(out.v[80] - 0.5f * am[80]) < 1e-7);
+    /* XYZ, the nm spectrum and brightness read the response to white, the row sums (entries >= 0 here) */
+    double xyz[3], want[3];
+    assert_int_equal(gcolor_to_xyz(&a, GCOLOR_LIGHT, xyz), G_OK);
+    assert_int_equal(gcolor_to_xyz(&rows, GCOLOR_LIGHT, want), G_OK);
+    for (int k = 0; k < 3; k++)
+        assert_true(fabs(xyz[k] - want[k]) < 1e-6 * fmax(1.0, fabs(want[k])));
+    GSpectrumNM sa, sr;
+    assert_int_equal(gcolor_to_nm(&a, GCOLOR_REFLECTANCE, &sa), G_OK);
+    assert_int_equal(gcolor_to_nm(&rows, GCOLOR_REFLECTANCE, &sr), G_OK);
+    for (int k = 0; k < GNM_COUNT; k++)
+        assert_true(fabs(sa.v[k] - sr.v[k]) < 1e-6);
+    assert_true(fabs(gcolor_brightness(&a) - gcolor_brightness(&rows)) < 1e-6);
+    /* pow, div and exp read the diagonal */
+    assert_int_equal(gcolor_pow(&out, &a, 2.0), G_OK);
+    assert_int_equal(out.kind, GCOLOR_VECTOR);
+    for (int k = 0; k < 9; k++)
+        assert_true(fabs(out.v[k] - am[k * 10] * am[k * 10]) < 1e-6);
+    assert_int_equal(gcolor_exp(&out, &a, -1.0), G_OK);
+    assert_true(out.kind == GCOLOR_VECTOR && fabs(out.v[4] - exp(-am[40])) < 1e-6);
+    assert_int_equal(gcolor_div(&out, &a, &v), G_OK);
+    assert_true(out.kind == GCOLOR_VECTOR && fabs(out.v[8] - am[80] / v.v[8]) < 1e-6);
+    /* two vectors: sample by sample */
+    assert_int_equal(gcolor_mul(&out, &v, &rows), G_OK);
+    for (int k = 0; k < 9; k++)
+        assert_true(fabs(out.v[k] - v.v[k] * rows.v[k]) < 1e-6);
+    gcolor_free(&a);
+    gcolor_free(&b);
+    gcolor_free(&v);
+    gcolor_free(&out);
+    gcolor_free(&rows);
+    gcolormodel_destroy(m);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_plain_reflectance),
         cmocka_unit_test(test_reduction_against_bispectral),
+        cmocka_unit_test(test_reduction_spectrum9),
         cmocka_unit_test(test_matrix_operations),
+        cmocka_unit_test(test_matrix_operations_spectrum9),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -346,7 +346,7 @@ static void test_xyz_shows_nonfinite(void **state)
     const char *names[] = {"spectrum", "spectrum", "spectrum", "spectrum", "spectrum9", "bispectral", "rgb"};
     const GColorModelOptions opts[] = {{5, 0, 0, 0},   {1, 0, 0, 0}, {10, 0, 0, 0}, {6, 400, 700, 0},
                                        {0, 0, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}};
-    const int shows[] = {1, 1, 1, 1, 1, 0, 0}; /* bispectral and rgb have conversions of their own */
+    const int shows[] = {1, 1, 1, 1, 0, 0, 0}; /* spectrum9, bispectral and rgb have conversions of their own */
     assert_int_equal(gcolormodel_xyz_shows_nonfinite(NULL), 0);
     for (int i = 0; i < 7; i++) {
         GColorModel *m;

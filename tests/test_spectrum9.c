@@ -145,10 +145,10 @@ static void test_d65_light(void **state)
     GColorModel *m = make("spectrum9");
     GSpectrumNM d65;
     assert_int_equal(gcie_illuminant_nm("D65", &d65), G_OK);
-    float b[64], w[64];
+    float b[128], w[128];
     GColor c, white;
-    assert_int_equal(gcolor_wrap(&c, m, b, 64), G_OK);
-    assert_int_equal(gcolor_wrap(&white, m, w, 64), G_OK);
+    assert_int_equal(gcolor_wrap(&c, m, b, 128), G_OK);
+    assert_int_equal(gcolor_wrap(&white, m, w, 128), G_OK);
     assert_int_equal(gcolor_from_nm(&c, &d65, GCOLOR_LIGHT), G_OK);
     double ref[3], got[3];
     gcie_nm_to_xyz(&d65, GCOLOR_LIGHT, ref);
@@ -166,11 +166,13 @@ static void test_d65_light(void **state)
     gcolormodel_destroy(m);
 }
 
-/* A line (the colour literal `line NM POWER`) keeps its luminance with non-negative samples: Y within 2% of the 1 nm
- * line's (measured +1.4% at 450 nm, against +101% with the hat average), at 450, 550 and 610 nm; its chromaticity
- * is what nine non-negative samples give after clipping (within 0.12 in xy: a line lies on the spectral locus, far
- * beyond them; 450 nm: 0.166 0.070 against 0.157 0.018, 550 nm: 0.324 0.607 against 0.302 0.692); its radiant
- * power is not kept. */
+/* A line (the colour literal `line NM POWER`) becomes non-negative samples: the linear projection (which keeps the
+ * line's XYZ) with its negative samples set to 0, nothing restored. Its chromaticity is what nine non-negative
+ * samples give (within 0.12 in xy: a line lies on the spectral locus, far beyond them; 450 nm: 0.161 0.069 against
+ * 0.157 0.018); the largest of its X, Y, Z (the one the line's colour is made of) is kept within 15% (measured below),
+ * where Y grows (x4.1 at 450 nm): keeping Y instead would take that component down by the same factor, and a Cornell
+ * box lit by a 450 nm line then renders 8.7 CIEDE2000 from bispectral instead of 2.0
+ * (tests/test_gtrace_fluorescent_rgb.c). */
 static void test_lines_keep_colour(void **state)
 {
     (void)state;
@@ -182,10 +184,10 @@ static void test_lines_keep_colour(void **state)
         spec->form = GCOLORSPEC_LINE;
         spec->line_nm = at[i];
         spec->line_power = 1.0;
-        float b[64];
+        float b[128];
         GColor c;
         GError err;
-        assert_int_equal(gcolor_wrap(&c, m, b, 64), G_OK);
+        assert_int_equal(gcolor_wrap(&c, m, b, 128), G_OK);
         assert_int_equal(gcolorspec_to_color(spec, GCOLOR_LIGHT, &c, &err), G_OK);
         GSpectrumNM line;
         memset(&line, 0, sizeof line);
@@ -199,7 +201,9 @@ static void test_lines_keep_colour(void **state)
         for (int k = 0; k < m->nvalues; k++)
             assert_true(c.v[k] >= 0.0f);
         double sr = ref[0] + ref[1] + ref[2], sg = got[0] + got[1] + got[2];
-        assert_near(got[1], ref[1], 0.02 * ref[1]);
+        int big = ref[0] > ref[1] ? (ref[0] > ref[2] ? 0 : 2) : (ref[1] > ref[2] ? 1 : 2);
+        print_message("  its largest component %c: %.4f of the line's\n", "XYZ"[big], got[big] / ref[big]);
+        assert_near(got[big], ref[big], 0.15 * ref[big]);
         assert_true(hypot(got[0] / sg - ref[0] / sr, got[1] / sg - ref[1] / sr) < 0.12);
         gcolorspec_destroy(spec);
     }

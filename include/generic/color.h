@@ -22,7 +22,8 @@
  * Kinds. In every model a value is a vector of samples (a light spectrum, or a plain reflectance that
  * multiplies sample by sample). The bispectral model also has re-radiation matrices (GCOLOR_MATRIX,
  * out x in) for fluorescent reflectances; colormodels/bispectral.c and docs/reference/colour.md ("Bispectral
- * values") define every operation on them.
+ * values") define every operation on them. rgb and spectrum9 hold the reduction of such a matrix onto their own
+ * values (3 x 3, 9 x 9) with the same operations (colormodels/rgb.c, colormodels/spectrum9.c).
  *
  * Roles. Converting from or to RGB needs to know whether a value is a reflectance (seen under D65) or a
  * light (its own spectrum); the role argument says which. Sample values themselves are role free.
@@ -57,7 +58,7 @@ typedef struct GSpectrumNM {
 /** What a colour value holds. */
 typedef enum GColorKind {
     GCOLOR_VECTOR = 0, /**< samples: a light, or a reflectance applied sample by sample */
-    GCOLOR_MATRIX = 1  /**< a re-radiation matrix (bispectral model only) */
+    GCOLOR_MATRIX = 1  /**< a re-radiation matrix (bispectral; its reduction to the values of rgb and spectrum9) */
 } GColorKind;
 
 /** How to read a value when converting from or to RGB/XYZ. */
@@ -323,8 +324,8 @@ GENERIC_API GENERIC_NODISCARD int gcolor_to_xyz(const GColor *c, GColorRole role
 GENERIC_API GENERIC_NODISCARD int gcolor_to_rgb(const GColor *c, GColorRole role, double rgb[3]);
 /** From linear sRGB; G_ERR_INVALID for NaN or infinite input. */
 GENERIC_API GENERIC_NODISCARD int gcolor_from_rgb(GColor *c, const double rgb[3], GColorRole role);
-/** From a re-radiation matrix: a matrix in the bispectral model (the matrix resampled) and in rgb (its reduction,
- * gcolormodel_reduce_reradiation); in a model without the slot the response to an equal-energy light (the
+/** From a re-radiation matrix: a matrix in the bispectral model (the matrix resampled), in rgb and in spectrum9 (its
+ * reduction, gcolormodel_reduce_reradiation); in a model without the slot the response to an equal-energy light (the
  * matrix's effect folded into a plain reflectance), with components a narrow gamut makes negative set to 0.
  * G_ERR_INVALID for an empty grid, a step that is not finite and > 0, a non-finite start or value, or grids that
  * share no wavelength (no diagonal). */
@@ -350,6 +351,16 @@ GENERIC_API GENERIC_NODISCARD int gcolor_from_reradiation(GColor *c, const GRera
  * or cannot convert a unit light; G_ERR_INVALID for more than 1024 emission samples. */
 GENERIC_API GENERIC_NODISCARD int gcolormodel_reduce_reradiation(const GColorModel *m, const GReradiation *r,
                                                                  GColor *out, GError *err);
+/** A linear projection of an nm spectrum onto a model's values in a role (the signature of a class's from_nm). */
+typedef int (*GColorProjectNM)(const GColorModel *m, const GSpectrumNM *in, GColorRole role, GColor *out);
+/** gcolormodel_reduce_reradiation with the sent light of each column converted back by project (NULL: the model's
+ * from_nm), for a model whose from_nm is not linear for every light: spectrum9 sets a narrow line's negative samples
+ * to 0, where a column of the operator keeps them until the reduction's own non-negative step. Measured in spectrum9
+ * (the patch colours of gcolormodel_reduce_reradiation): mean CIEDE2000 under D65 / A / F2 1.95 / 1.89 / 2.32
+ * against 3.26 / 7.78 / 8.75 for the equal-energy fold. */
+GENERIC_API GENERIC_NODISCARD int gcolormodel_reduce_reradiation_by(const GColorModel *m, const GReradiation *r,
+                                                                    GColorProjectNM project, GColor *out,
+                                                                    GError *err);
 /** Converts a value of one model into another (through a direct formula or the nm spectrum). */
 GENERIC_API GENERIC_NODISCARD int gcolor_convert(GColor *dst, const GColor *src, GColorRole role);
 
@@ -371,6 +382,13 @@ GENERIC_API GENERIC_NODISCARD int gcolormodel_rgb_range(const GColorModel *m, GC
  * the model's gamut, which a caller may want to report; 0 when nothing or only conversion error was clipped.
  * Matrices are left alone. G_ERR_INVALID for a non-finite sample. */
 GENERIC_API GENERIC_NODISCARD int gcolor_clip_to_gamut(GColor *c, GColorRole role, int *mapped);
+/** Maps a light into the model's range: within the model's conversion error as gcolor_clip_to_gamut (negative samples
+ * to 0, luminance kept); out of the gamut (*mapped 1) its negative samples become 0 and the rest stay as they are,
+ * which keeps the chromaticity nearest the light's that the gamut holds where restoring the luminance would darken
+ * the components that remain. Measured (tests/test_gtrace_fluorescent_rgb.c): the Cornell box with white walls lit
+ * by a 450 nm line renders in rgb within image-mean CIEDE2000 0.19 of bispectral this way, 8.86 with the luminance
+ * kept. Matrices are left alone; G_ERR_INVALID for a non-finite sample. */
+GENERIC_API GENERIC_NODISCARD int gcolor_clip_light_to_gamut(GColor *c, int *mapped);
 
 /* ---- colorimetry helpers (lib/color/cie.c) ---- */
 

@@ -567,7 +567,9 @@ int gcolormodel_rgb_range(const GColorModel *m, GColorRole role, double *lo, dou
     return rc;
 }
 
-int gcolor_clip_to_gamut(GColor *c, GColorRole role, int *mapped)
+/* Negative samples to 0 (gcolor_clip_to_gamut, gcolor_clip_light_to_gamut); the luminance kept when keep_luminance
+ * or when the value was within the model's conversion error. */
+static int clip_negative(GColor *c, GColorRole role, int keep_luminance, int *mapped)
 {
     if (mapped)
         *mapped = 0;
@@ -599,14 +601,18 @@ int gcolor_clip_to_gamut(GColor *c, GColorRole role, int *mapped)
     for (int k = 0; k < m->nvalues; k++)
         if (c->v[k] < 0.0f)
             c->v[k] = 0.0f;
+    keep_luminance |= !out;
     double y1 = 0.0;
-    rc = gcolor_to_xyz(c, role, xyz);
-    if (rc != G_OK)
+    if (keep_luminance && (rc = gcolor_to_xyz(c, role, xyz)) != G_OK)
         return rc;
     y1 = xyz[1];
-    if (y0 > 0.0 && y1 > 0.0 && isfinite(y0 / y1))
+    if (keep_luminance && y0 > 0.0 && y1 > 0.0 && isfinite(y0 / y1))
         rc = gcolor_scale(c, c, y0 / y1);
     if (mapped)
         *mapped = out;
     return rc;
 }
+
+int gcolor_clip_to_gamut(GColor *c, GColorRole role, int *mapped) { return clip_negative(c, role, 1, mapped); }
+
+int gcolor_clip_light_to_gamut(GColor *c, int *mapped) { return clip_negative(c, GCOLOR_LIGHT, 0, mapped); }

@@ -4,7 +4,9 @@
  * the light role) falls on the matrix, converted back with the model's from_nm in the light role. Reconstruction
  * (the model's light basis) and projection (the colour matching functions behind from_nm) are different bases,
  * hence non-orthogonal; the reconstruction of rgb's white is D65, so the reduced matrix gives the bispectral
- * colour of a fluorescent surface under D65 exactly. */
+ * colour of a fluorescent surface under D65 exactly. A model whose from_nm is not linear for every light (spectrum9
+ * keeps a narrow line's samples non-negative) hands its linear projection instead: a column of the operator may
+ * need negative values, which the reduction itself then resolves. */
 #include "generic/color.h"
 
 #include <math.h>
@@ -167,7 +169,8 @@ static void conserve(double *a, int n, double cap)
             }
 }
 
-int gcolormodel_reduce_reradiation(const GColorModel *m, const GReradiation *r, GColor *out, GError *err)
+int gcolormodel_reduce_reradiation_by(const GColorModel *m, const GReradiation *r, GColorProjectNM project, GColor *out,
+                                      GError *err)
 {
     int n = m->nvalues;
     if (n > REDUCE_MAX || m->capacity < n * n || !out->v || out->model != m)
@@ -190,7 +193,7 @@ int gcolormodel_reduce_reradiation(const GColorModel *m, const GReradiation *r, 
         int rc = gcolor_to_nm(&unit, GCOLOR_LIGHT, &basis);
         if (rc == G_OK) {
             apply(r, &diag, &basis, &sent);
-            rc = gcolor_from_nm(&back, &sent, GCOLOR_LIGHT);
+            rc = project ? project(m, &sent, GCOLOR_LIGHT, &back) : gcolor_from_nm(&back, &sent, GCOLOR_LIGHT);
         }
         if (rc != G_OK || back.kind != GCOLOR_VECTOR)
             return gerror_set(err, rc != G_OK ? rc : G_ERR_UNSUPPORTED,
@@ -209,4 +212,9 @@ int gcolormodel_reduce_reradiation(const GColorModel *m, const GReradiation *r, 
     }
     out->kind = GCOLOR_MATRIX;
     return G_OK;
+}
+
+int gcolormodel_reduce_reradiation(const GColorModel *m, const GReradiation *r, GColor *out, GError *err)
+{
+    return gcolormodel_reduce_reradiation_by(m, r, NULL, out, err);
 }

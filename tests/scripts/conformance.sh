@@ -7,8 +7,8 @@
 #     known and tracked would be listed in KNOWN below with its reason and must then still fail (so the list
 #     cannot go stale); the list is empty. A fluorescent material folded into a model without re-radiation
 #     matrices reflects more than 1 in a band under white light (blue light re-radiated as red); gmat check then
-#     holds it to energy over all bands, the rule of material_params.h, which spectrum9 and spectrum meet. rgb
-#     holds the matrix's reduction to 3 x 3 (gcolormodel_reduce_reradiation), whose columns sum to at most 1.
+#     holds it to energy over all bands, the rule of material_params.h, which spectrum meets. rgb and spectrum9
+#     hold the matrix's reduction to 3 x 3 and 9 x 9 (gcolormodel_reduce_reradiation), whose columns sum to at most 1.
 #     The instance checked is a default one (`material m TYPE`, no parameters) when the type can be made so, else
 #     the first named entry of that type in examples/materials/*.mat or examples/textures/*.txt; a generator
 #     drives an interpolate node between two lamberts. A type with neither FAILS, asking for an example;

@@ -456,15 +456,15 @@ int scene_parse_light(GReader *r, const void *vtable, void **object, GError *err
     }
     if (rc == G_OK && !color.v)
         rc = greader_error(r, err, "the light needs its %s (a colour)", light_color_key[type]);
-    /* out of the model's gamut (a line light in a tristimulus model): mapped like a folded matrix, one warning */
+    /* out of the model's gamut (a line light in a tristimulus model): its negative samples to 0, one warning */
     int mapped = 0;
     double xyz[3] = {0, 0, 0};
     if (rc == G_OK && (gcolor_to_xyz(&color, GCOLOR_LIGHT, xyz) != G_OK || !(xyz[1] >= 0.0) ||
-                       gcolor_clip_to_gamut(&color, GCOLOR_LIGHT, &mapped) != G_OK))
+                       gcolor_clip_light_to_gamut(&color, &mapped) != G_OK))
         rc = greader_error(r, err, "the light's %s must be finite and of luminance >= 0", light_color_key[type]);
     if (rc == G_OK && mapped)
         fprintf(stderr, "%s:%d:%d: warning: the light's %s lies outside the gamut of colour model '%s': its "
-                "negative samples are set to 0, its luminance kept\n",
+                "negative samples are set to 0\n",
                 greader_file(r), color_line, color_col, light_color_key[type], gcolormodel_name(model));
     if (rc == G_OK && !light_within_limits(l, type, at))
         rc = greader_error(r, err, "the light lies beyond the scene's limit of %g: coordinates must be finite "
