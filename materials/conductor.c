@@ -35,12 +35,21 @@
  * 560 nm, 6.7e-6 near grazing; tests/test_conductor.c measures it). */
 #define CONDUCTOR_FRESNEL_K 1024
 
+/* The rough surface at one point: the distribution, its albedo table and the compensation's colour. */
+typedef struct RoughAt {
+    GMicrofacet mf;
+    double alpha2; /* mf.alpha_x squared: what an isotropic GGX surface reads */
+    const float *e;
+    const GColor *ms;
+} RoughAt;
+
 typedef struct Conductor {
     GMaterial base;
     GColor eta, k; /* the complex index, unitless (GCOLOR_UNITLESS) */
     GColor f_avg;  /* 2 * integral of F(mu) mu dmu, per sample: the smooth albedo, for ambient() */
     GColor ms;     /* F_ms / (pi (1 - E_avg)): the compensation lobe's colour */
     GMicrofacet mf;
+    RoughAt surface; /* the rough surface of a constant roughness: mf, its albedo table e and ms */
     float e[GMICROFACET_ALBEDO_N];
     double e_avg;
     int smooth, anisotropic, compensate;
@@ -61,14 +70,12 @@ typedef struct Conductor {
 /* The roughnesses tabulated over a textured roughness's range. */
 #define CONDUCTOR_LEVELS 17
 
-/* The rough surface at one point: the distribution, its albedo table and the compensation's colour. */
-typedef struct RoughAt {
-    GMicrofacet mf;
-    const float *e;
-    const GColor *ms;
-    float e_buf[GMICROFACET_ALBEDO_N];
-    GColor ms_buf;
-} RoughAt;
+/* Room for the rough surface at a point of a textured roughness: its albedo table and compensation colour. */
+typedef struct RoughBuf {
+    RoughAt at;
+    float e[GMICROFACET_ALBEDO_N];
+    GColor ms;
+} RoughBuf;
 
 static void conductor_destroy(GMaterial *self)
 {
@@ -86,37 +93,38 @@ static void conductor_destroy(GMaterial *self)
     gmem_free(c);
 }
 
-/* The rough surface at sp into *a: the material's own, or for a textured roughness the distribution of its value
- * there with the tables interpolated between the two nearest levels (exactly a level's at a level); the colour on
- * sp's arena (the caller marks and releases it). */
-static int rough_at(const Conductor *c, GSurfPoint *sp, RoughAt *a)
+/* The rough surface at sp into *a: the material's own (nothing copied), or for a textured roughness the distribution
+ * of its value there with the tables interpolated between the two nearest levels (exactly a level's at a level), in
+ * buf; the colour on sp's arena (the caller marks and releases it). */
+static int rough_at(const Conductor *c, GSurfPoint *sp, RoughBuf *buf, const RoughAt **a)
 {
-    a->mf = c->mf;
-    a->e = c->e;
-    a->ms = &c->ms;
+    *a = &c->surface;
     if (!c->rough.gen)
         return G_OK;
+    RoughAt *b = &buf->at;
+    *a = b;
     double r = gtexparam_number_at(&c->rough, sp), alpha = gmicrofacet_alpha_from_roughness(r);
-    a->mf = gmicrofacet_make(c->distribution, alpha, alpha);
+    b->mf = gmicrofacet_make(c->distribution, alpha, alpha);
+    b->alpha2 = b->mf.alpha_x * b->mf.alpha_x;
     double x = c->nlevels > 1 ? (r - c->level_lo) / (c->level_hi - c->level_lo) * (c->nlevels - 1) : 0.0;
     x = x > 0.0 ? (x < c->nlevels - 1 ? x : c->nlevels - 1) : 0.0;
     int j = (int)x;
     double w = x - j;
-    a->e = c->level_e[j];
-    a->ms = &c->level_ms[j];
+    b->e = c->level_e[j];
+    b->ms = &c->level_ms[j];
     if (w == 0.0 || j + 1 >= c->nlevels)
         return G_OK;
     for (int i = 0; i < GMICROFACET_ALBEDO_N; i++)
-        a->e_buf[i] = (float)((1.0 - w) * c->level_e[j][i] + w * c->level_e[j + 1][i]);
-    a->e = a->e_buf;
+        buf->e[i] = (float)((1.0 - w) * c->level_e[j][i] + w * c->level_e[j + 1][i]);
+    b->e = buf->e;
     if (!sp->scratch)
         return G_ERR_INVALID;
-    int rc = gcolor_scratch(&a->ms_buf, c->base.model, sp->scratch);
+    int rc = gcolor_scratch(&buf->ms, c->base.model, sp->scratch);
     if (rc == G_OK)
-        rc = gcolor_scale(&a->ms_buf, &c->level_ms[j], 1.0 - w);
+        rc = gcolor_scale(&buf->ms, &c->level_ms[j], 1.0 - w);
     if (rc == G_OK)
-        rc = gcolor_add_scaled(&a->ms_buf, &c->level_ms[j + 1], w);
-    a->ms = &a->ms_buf;
+        rc = gcolor_add_scaled(&buf->ms, &c->level_ms[j + 1], w);
+    b->ms = &buf->ms;
     return rc;
 }
 
@@ -126,30 +134,37 @@ static GFrame frame_at(const Conductor *c, const GSurfPoint *sp, GVec3 n)
     return c->anisotropic ? gframe_from_normal_tangent(n, sp->dpdu) : gframe_from_normal(n);
 }
 
-/* The geometry of the rough surface a for light from in towards out about the shading normal n: the single-scattering
- * term (gmicrofacet_reflect_cos), the cosine of the facet (in.h) and the two cosines with n. An isotropic surface
- * needs no frame: three dot products (gmicrofacet_reflect_cos_pair). 0 when either direction is below n. */
-static int rough_geometry(const Conductor *c, const RoughAt *a, const GSurfPoint *sp, GVec3 n, GVec3 in, GVec3 out,
-                          double *single, double *cos_h, double *cos_i, double *cos_o)
+/* A pair's geometry on a rough surface: the single-scattering term (gmicrofacet_reflect_cos), the cosine of the facet
+ * (in.h) and the two cosines with the shading normal. */
+typedef struct PairGeometry {
+    double single, cos_h, cos_i, cos_o;
+} PairGeometry;
+
+/* The geometry of the rough surface a for light from in towards out about the shading normal n, cos_in = in.n > 0.
+ * An isotropic surface needs no frame: two more dot products (gmicrofacet_reflect_cos_pair, GGX's inline). 0 when out
+ * is below n. */
+static inline int rough_geometry(const Conductor *c, const RoughAt *a, const GSurfPoint *sp, GVec3 n, double cos_in,
+                                 GVec3 in, GVec3 out, PairGeometry *g)
 {
     if (!c->anisotropic) {
-        GMicrofacetPair p = {gvec3_dot(in, n), gvec3_dot(out, n), gvec3_dot(in, out)};
-        if (!(p.cos_i > 0.0) || !(p.cos_o > 0.0))
+        GMicrofacetPair p = {cos_in, gvec3_dot(out, n), gvec3_dot(in, out)};
+        if (!(p.cos_o > 0.0))
             return 0;
-        *single = gmicrofacet_reflect_cos_pair(&a->mf, p);
-        *cos_h = gmicrofacet_pair_cos_h(p);
-        *cos_i = p.cos_i;
-        *cos_o = p.cos_o;
+        g->single = a->mf.distribution == GMICROFACET_GGX ? gmicrofacet_ggx_reflect_cos_pair(a->alpha2, p)
+                                                          : gmicrofacet_reflect_cos_pair(&a->mf, p);
+        g->cos_h = gmicrofacet_pair_cos_h(p);
+        g->cos_i = p.cos_i;
+        g->cos_o = p.cos_o;
         return 1;
     }
     GFrame fr = frame_at(c, sp, n);
     GVec3 wi = gframe_to_local(&fr, in), wo = gframe_to_local(&fr, out);
     if (!(wi.z > 0.0) || !(wo.z > 0.0))
         return 0;
-    *single = gmicrofacet_reflect_cos(&a->mf, wi, wo);
-    *cos_h = gvec3_dot(wi, gvec3_normalize(gvec3_add(wi, wo)));
-    *cos_i = wi.z;
-    *cos_o = wo.z;
+    g->single = gmicrofacet_reflect_cos(&a->mf, wi, wo);
+    g->cos_h = gvec3_dot(wi, gvec3_normalize(gvec3_add(wi, wo)));
+    g->cos_i = wi.z;
+    g->cos_o = wo.z;
     return 1;
 }
 
@@ -211,14 +226,14 @@ static void fresnel_table_mix(const Conductor *c, double cos_h, double s, const 
 /* scale * f cos_in of the rough surface a into f from a pair's geometry: the cosines with the normal and the
  * facet's cosine, the single-scattering term; the Fresnel colour and the compensation's in one pass, times light's
  * samples when light is given (only with the Fresnel table, for f of the material's model: fused_light). */
-static int rough_mix(const Conductor *c, const RoughAt *a, double cos_i, double cos_o, double cos_h, double single,
-                     double scale, const float *light, GColor *f)
+static inline int rough_mix(const Conductor *c, const RoughAt *a, double cos_i, double cos_o, double cos_h,
+                            double single, double scale, const float *light, GColor *f)
 {
     double multiple = 0.0;
     if (single < 1e-30) /* far outside a narrow lobe: below what a float keeps to its precision */
         single = 0.0;
     if (c->compensate)
-        multiple = (1.0 - gmicrofacet_albedo_at(a->e, cos_o)) * (1.0 - gmicrofacet_albedo_at(a->e, cos_i)) * cos_i;
+        multiple = (1.0 - gmicrofacet_albedo_lerp(a->e, cos_o)) * (1.0 - gmicrofacet_albedo_lerp(a->e, cos_i)) * cos_i;
     if (c->ftab && f->model == c->base.model) {
         fresnel_table_mix(c, cos_h, single * scale, c->compensate ? a->ms : NULL, multiple * scale, light, f);
         return G_OK;
@@ -237,39 +252,29 @@ static int mix_value(const Conductor *c, const RoughAt *a, double cos_i, double 
     return rough_mix(c, a, cos_i, cos_o, gmicrofacet_pair_cos_h(p), single, scale, NULL, f);
 }
 
-/* f cos_in of the rough surface a for white light (light NULL) or times light's samples into f (a colour of the
- * model); 0 when nothing is reflected. */
-static int rough_value(const Conductor *c, const RoughAt *a, const GSurfPoint *sp, GVec3 n, GVec3 in, GVec3 out,
-                       const float *light, GColor *f)
-{
-    double single, cos_h, cos_i, cos_o;
-    if (!rough_geometry(c, a, sp, n, in, out, &single, &cos_h, &cos_i, &cos_o)) {
-        gcolor_black(f);
-        return G_OK;
-    }
-    return rough_mix(c, a, cos_i, cos_o, cos_h, single, 1.0, light, f);
-}
-
 /* f cos_in for white light (light NULL; or times light's samples, rough surfaces only: fused_light) into f at a pair
- * that reflects (cos_in > 0 about the shading normal n; a mirror pair for the smooth surface). */
+ * that reflects (cos_in = in.n > 0 about the shading normal n; a mirror pair for the smooth surface). */
 static int value_at(const Conductor *c, GSurfPoint *sp, GVec3 n, double cos_in, GVec3 in, GVec3 out,
                     const float *light, GColor *f)
 {
     if (c->smooth)
         return gmaterial_fresnel_conductor(f, cos_in, &c->eta, &c->k);
-    RoughAt a;
-    int rc;
-    if (!c->rough.gen) { /* the material's own surface: nothing on the arena */
-        rc = rough_at(c, sp, &a);
-        return rc == G_OK ? rough_value(c, &a, sp, n, in, out, light, f) : rc;
+    RoughBuf buf;
+    const RoughAt *a;
+    PairGeometry g;
+    GScratchMark mark = {0};
+    if (c->rough.gen) {
+        if (!sp->scratch)
+            return G_ERR_INVALID;
+        mark = gscratch_mark(sp->scratch);
     }
-    if (!sp->scratch)
-        return G_ERR_INVALID;
-    GScratchMark mark = gscratch_mark(sp->scratch);
-    rc = rough_at(c, sp, &a);
-    if (rc == G_OK)
-        rc = rough_value(c, &a, sp, n, in, out, light, f);
-    gscratch_release(sp->scratch, mark);
+    int rc = rough_at(c, sp, &buf, &a);
+    if (rc == G_OK && rough_geometry(c, a, sp, n, cos_in, in, out, &g))
+        rc = rough_mix(c, a, g.cos_i, g.cos_o, g.cos_h, g.single, 1.0, light, f);
+    else if (rc == G_OK)
+        gcolor_black(f);
+    if (c->rough.gen)
+        gscratch_release(sp->scratch, mark);
     return rc;
 }
 
@@ -368,29 +373,30 @@ static int conductor_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, co
     GVec3 wo = gframe_to_local(&fr, out), wi;
     if (!(wo.z > 0.0))
         return 0;
-    RoughAt a;
+    RoughBuf buf;
+    const RoughAt *a;
     GScratchMark mark = {0};
     if (c->rough.gen && sp->scratch)
         mark = gscratch_mark(sp->scratch);
-    int rc = rough_at(c, sp, &a);
+    int rc = rough_at(c, sp, &buf, &a);
     if (rc != G_OK) {
         if (c->rough.gen && sp->scratch)
             gscratch_release(sp->scratch, mark);
         return rc;
     }
-    double q = cosine_share(c, &a, wo);
+    double q = cosine_share(c, a, wo);
     if (u1 < q) {
         u1 /= q;
         double r = sqrt(u1), phi = 2.0 * M_PI * u2;
         wi = gvec3(r * cos(phi), r * sin(phi), sqrt(gfmax(0.0, 1.0 - u1)));
     } else {
         u1 = (u1 - q) / (1.0 - q);
-        GVec3 h = gmicrofacet_sample_visible(&a.mf, wo, u1 < 1.0 ? u1 : 0.0, u2);
+        GVec3 h = gmicrofacet_sample_visible(&a->mf, wo, u1 < 1.0 ? u1 : 0.0, u2);
         wi = gvec3_sub(gvec3_scale(h, 2.0 * gvec3_dot(wo, h)), wo);
     }
     int drawn = 0;
     if (wi.z > 0.0) { /* else reflected below the surface: nothing drawn */
-        double pdf_mf, single = gmicrofacet_reflect_cos_pdf(&a.mf, wi, wo, &pdf_mf);
+        double pdf_mf, single = gmicrofacet_reflect_cos_pdf(&a->mf, wi, wo, &pdf_mf);
         s->in = gframe_to_world(&fr, wi);
         s->pdf = (1.0 - q) * pdf_mf + q * wi.z / M_PI;
         s->flags = GSAMPLE_REFLECT;
@@ -400,7 +406,7 @@ static int conductor_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, co
         if (drawn && (!isfinite(s->pdf) || !gmaterial_sides_agree(sp, s->in, out, 0) || !(gvec3_dot(s->in, n) > 0.0)))
             gcolor_black(weight);
         else if (drawn)
-            rc = mix_value(c, &a, wi.z, wo.z, gvec3_dot(wi, wo), single, 1.0 / s->pdf, weight);
+            rc = mix_value(c, a, wi.z, wo.z, gvec3_dot(wi, wo), single, 1.0 / s->pdf, weight);
     }
     if (c->rough.gen && sp->scratch)
         gscratch_release(sp->scratch, mark);
@@ -420,19 +426,20 @@ static double conductor_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVe
     GVec3 wo = c->anisotropic ? gframe_to_local(&fr, out) : gvec3(0.0, 0.0, gvec3_dot(out, n));
     if (!(wo.z > 0.0))
         return 0.0;
-    RoughAt a;
+    RoughBuf buf;
+    const RoughAt *a;
     GScratchMark mark = {0};
     if (c->rough.gen && sp->scratch)
         mark = gscratch_mark(sp->scratch);
     double pdf = 0.0;
-    if (rough_at(c, sp, &a) != G_OK)
+    if (rough_at(c, sp, &buf, &a) != G_OK)
         pdf = 0.0;
     else if (c->anisotropic)
-        pdf = rough_pdf(c, &a, gframe_to_local(&fr, in), wo);
+        pdf = rough_pdf(c, a, gframe_to_local(&fr, in), wo);
     else { /* isotropic: the pair's cosines, no frame */
         GMicrofacetPair p = {gvec3_dot(in, n), wo.z, gvec3_dot(in, out)};
-        double q = cosine_share(c, &a, wo);
-        pdf = (1.0 - q) * gmicrofacet_pdf_reflect_pair(&a.mf, p) + q * gfmax(p.cos_i, 0.0) / M_PI;
+        double q = cosine_share(c, a, wo);
+        pdf = (1.0 - q) * gmicrofacet_pdf_reflect_pair(&a->mf, p) + q * gfmax(p.cos_i, 0.0) / M_PI;
     }
     if (c->rough.gen && sp->scratch)
         gscratch_release(sp->scratch, mark);
@@ -615,6 +622,7 @@ static int conductor_create(const GColorModel *model, const ConductorSpec *p, GM
     double ay = gmicrofacet_alpha_from_roughness(p->roughness_v);
     c->smooth = !(ax >= GMICROFACET_ALPHA_MIN || ay >= GMICROFACET_ALPHA_MIN); /* both below it: the ideal mirror */
     c->mf = gmicrofacet_make(p->distribution, ax, ay);
+    c->surface = (RoughAt){c->mf, c->mf.alpha_x * c->mf.alpha_x, c->e, &c->ms};
     c->anisotropic = !c->smooth && ax != ay;
     c->compensate = p->compensate && !c->smooth;
     c->distribution = p->distribution;
