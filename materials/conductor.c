@@ -96,7 +96,7 @@ static void conductor_destroy(GMaterial *self)
 /* The rough surface at sp into *a: the material's own (nothing copied), or for a textured roughness the distribution
  * of its value there with the tables interpolated between the two nearest levels (exactly a level's at a level), in
  * buf; the colour on sp's arena (the caller marks and releases it). */
-static int rough_at(const Conductor *c, GSurfPoint *sp, RoughBuf *buf, const RoughAt **a)
+static inline int rough_at(const Conductor *c, GSurfPoint *sp, RoughBuf *buf, const RoughAt **a)
 {
     *a = &c->surface;
     if (!c->rough.gen)
@@ -210,8 +210,8 @@ static void table_mix(float *out, const TableMix *m, int n) { table_mix_v4(out, 
 
 /* f = (s * F(cos_h) + t * add) * light sample by sample (add NULL: s * F; light NULL: white), F between the table's two
  * nodes about cos_h: exact at the nodes (cos_h = 1 among them); f->v may be light. */
-static void fresnel_table_mix(const Conductor *c, double cos_h, double s, const GColor *add, double t,
-                              const float *light, GColor *f)
+static inline void fresnel_table_mix(const Conductor *c, double cos_h, double s, const GColor *add, double t,
+                                     const float *light, GColor *f)
 {
     double x = sqrt(cos_h > 0.0 ? (cos_h < 1.0 ? cos_h : 1.0) : 0.0) * CONDUCTOR_FRESNEL_K;
     int j = (int)x, n = c->base.model->nvalues;
@@ -226,8 +226,9 @@ static void fresnel_table_mix(const Conductor *c, double cos_h, double s, const 
 /* scale * f cos_in of the rough surface a into f from a pair's geometry: the cosines with the normal and the
  * facet's cosine, the single-scattering term; the Fresnel colour and the compensation's in one pass, times light's
  * samples when light is given (only with the Fresnel table, for f of the material's model: fused_light). */
-static inline int rough_mix(const Conductor *c, const RoughAt *a, double cos_i, double cos_o, double cos_h,
-                            double single, double scale, const float *light, GColor *f)
+__attribute__((always_inline)) static inline int rough_mix(const Conductor *c, const RoughAt *a, double cos_i,
+                                                            double cos_o, double cos_h, double single, double scale,
+                                                            const float *light, GColor *f)
 {
     double multiple = 0.0;
     if (single < 1e-30) /* far outside a narrow lobe: below what a float keeps to its precision */
@@ -278,10 +279,15 @@ static int value_at(const Conductor *c, GSurfPoint *sp, GVec3 n, double cos_in, 
     return rc;
 }
 
-/* The pair's cosine about the shading normal n, 0 where the conductor reflects nothing from in towards out. */
-static double reflecting_cos(const Conductor *c, GSurfPoint *sp, GVec3 in, GVec3 out, GVec3 *n)
+/* The pair's cosine about the shading normal n, 0 where the conductor reflects nothing from in towards out:
+ * gmaterial_cos_in's rule (both directions on the geometric normal's outer side, in above n) written inline, as the
+ * rough surface's evaluation is. */
+static inline double reflecting_cos(const Conductor *c, GSurfPoint *sp, GVec3 in, GVec3 out, GVec3 *n)
 {
-    double cos_in = gmaterial_cos_in(sp, in, out, n);
+    *n = gsurfpoint_normal(sp);
+    if (!(gvec3_dot(out, sp->geometric_normal) > 0.0) || !(gvec3_dot(in, sp->geometric_normal) > 0.0))
+        return 0.0;
+    double cos_in = gvec3_dot(in, *n);
     return cos_in > 0.0 && (!c->smooth || gmaterial_is_mirror_pair(in, *n, out)) ? cos_in : 0.0;
 }
 
