@@ -2,7 +2,8 @@
  * colour model, in thread CPU time, one thread: reflection() over the same 4096 random direction pairs above the
  * surface and sample() from the same outgoing directions, for the rough conductor, the rough dielectric, the thin
  * dielectric, the plastic, the layer and the thin film (over lambert and over a metal; its Airy sum exact and
- * tabulated, `airy table`). Prints the figures and the ratios to lambert; never fails on time. `bench_materials N` takes N calls a figure (default 100000). */
+ * tabulated, `airy table`). Prints the figures and the ratios to lambert; never fails on time. `bench_materials N`
+ * takes N calls a figure (default 100000). */
 #include "generic/builtins.h"
 #include "generic/material.h"
 #include "generic/reader.h"

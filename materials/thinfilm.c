@@ -281,9 +281,9 @@ static const GMaterialClass thinfilm_class = {
  * the weight the film's reflection or refraction, which asks the index again). */
 #define THINFILM_CALLS 4
 
-/* The tables of the film seen from outside and from inside over the base's index at a point of its surface (the index at every point
- * unless the base's is textured), when thickness, index and extinction are constants and the film allows one
- * (gthinfilm_table_create); otherwise none. */
+/* The tables of the film seen from outside and from inside over the base's index at a point of its surface (the
+ * index at every point unless the base's is textured), when thickness, index and extinction are constants and the
+ * film allows one (gthinfilm_table_create); otherwise none. */
 static int film_table(ThinFilm *f, GError *err)
 {
     if (f->thickness.gen || f->n.gen || f->k.gen)
