@@ -12,6 +12,7 @@ struct GThinFilmTable {
     int nodes;  /* at cos_ambient = j / (nodes - 1) */
     int stride; /* floats a colour: the model's nvalues */
     float *r, *t; /* nodes x stride each, node-major */
+    size_t charged; /* bytes reserved against the memory budget */
 };
 
 /* Nodes for the film: GTHINFILM_TABLE_NODES_PER_CYCLE per period of its phase over the cosine. The phase is
@@ -39,6 +40,11 @@ int gthinfilm_table_create(const GThinFilm *f, const GColorModel *model, GThinFi
         rc = gcolor_alloc(&tr, model);
     if (rc == G_OK) {
         t->film = *f, t->model = model, t->nodes = (int)nodes, t->stride = model->nvalues;
+        size_t bytes = 2 * (size_t)t->nodes * (size_t)t->stride * sizeof *t->r; /* the thickness sizes it */
+        rc = gmem_budget_reserve(bytes, "a thin film's table", NULL);
+        t->charged = rc == G_OK ? bytes : 0;
+    }
+    if (rc == G_OK) {
         t->r = gmem_calloc((size_t)t->nodes * (size_t)t->stride, sizeof *t->r);
         t->t = gmem_calloc((size_t)t->nodes * (size_t)t->stride, sizeof *t->t);
         if (!t->r || !t->t)
@@ -69,6 +75,8 @@ void gthinfilm_table_destroy(GThinFilmTable *t)
         return;
     gmem_free(t->r);
     gmem_free(t->t);
+    if (t->charged)
+        gmem_budget_release(t->charged);
     gmem_free(t);
 }
 
@@ -79,22 +87,31 @@ int gthinfilm_table_matches(const GThinFilmTable *t, const GThinFilm *f)
            g->substrate == f->substrate;
 }
 
-/* out = the Catmull-Rom curve through the rows j - 1 .. j + 2 of table (clamped at its ends) at x - j. */
+/* out = the Catmull-Rom curve through the rows j - 1 .. j + 2 of table at x - j; beyond an end of the table the
+ * missing row is extrapolated from the three nearest (3 p_0 - 3 p_1 + p_2), folded into the weights. */
 static void interpolate(const GThinFilmTable *t, const float *table, double x, GColor *out)
 {
     int last = t->nodes - 1, j = (int)x;
     j = j < last ? j : last - 1;
     double u = x - j, u2 = u * u, u3 = u2 * u;
-    float w[4] = {(float)(0.5 * (-u3 + 2.0 * u2 - u)), (float)(0.5 * (3.0 * u3 - 5.0 * u2 + 2.0)),
-                  (float)(0.5 * (-3.0 * u3 + 4.0 * u2 + u)), (float)(0.5 * (u3 - u2))};
-    int n = t->stride;
-    const float *p0 = table + (size_t)(j > 0 ? j - 1 : 0) * n, *p1 = table + (size_t)j * n;
-    const float *p2 = p1 + n, *p3 = table + (size_t)(j + 2 <= last ? j + 2 : last) * n;
-    if (u == 0.0) /* on a node: its colour exactly */
+    double w[4] = {0.5 * (-u3 + 2.0 * u2 - u), 0.5 * (3.0 * u3 - 5.0 * u2 + 2.0), 0.5 * (-3.0 * u3 + 4.0 * u2 + u),
+                   0.5 * (u3 - u2)};
+    int n = t->stride, first = j - 1;
+    if (j == 0) /* p_-1 = 3 p_0 - 3 p_1 + p_2 */
+        w[1] += 3.0 * w[0], w[2] -= 3.0 * w[0], w[3] += w[0], w[0] = 0.0, first = 0;
+    if (j + 2 > last) /* p_last+1 = 3 p_last - 3 p_last-1 + p_last-2 */
+        w[2] += 3.0 * w[3], w[1] -= 3.0 * w[3], w[0] += w[3], w[3] = 0.0, first = j - 1;
+    const float *p1 = table + (size_t)j * n;
+    if (u == 0.0) { /* on a node: its colour exactly */
         memcpy(out->v, p1, (size_t)n * sizeof *p1);
-    else
-        for (int i = 0; i < n; i++)
-            out->v[i] = w[0] * p0[i] + w[1] * p1[i] + w[2] * p2[i] + w[3] * p3[i];
+        out->kind = GCOLOR_VECTOR;
+        return;
+    }
+    const float *p0 = table + (size_t)(first >= 0 ? first : 0) * n, *p2 = p1 + n;
+    const float *p3 = j + 2 <= last ? p2 + n : p2;
+    float fw[4] = {(float)w[0], (float)w[1], (float)w[2], (float)w[3]};
+    for (int i = 0; i < n; i++)
+        out->v[i] = fw[0] * p0[i] + fw[1] * p1[i] + fw[2] * p2[i] + fw[3] * p3[i];
     out->kind = GCOLOR_VECTOR;
 }
 
@@ -103,6 +120,8 @@ int gthinfilm_table_color(const GThinFilmTable *t, double cos_ambient, GColor *r
     if ((reflectance && reflectance->model != t->model) || (transmittance && transmittance->model != t->model))
         return G_ERR_MISMATCH;
     double c = cos_ambient > 0.0 ? (cos_ambient < 1.0 ? cos_ambient : 1.0) : 0.0;
+    if (c < GTHINFILM_TABLE_COS_MIN) /* near grazing the film's colours change faster than any table resolves */
+        return gthinfilm_color(&t->film, c, reflectance, transmittance);
     double x = c * (t->nodes - 1);
     if (reflectance)
         interpolate(t, t->r, x, reflectance);
