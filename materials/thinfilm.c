@@ -398,8 +398,8 @@ static const GParamInfo thinfilm_params[] = {
      "what lies under the film; the scalar of its refraction index is the substrate's"},
     {"airy", GPARAM_NAMED, "choice", "table", "table, exact",
      "the film's colours: table, tabulated over the angle at creation for constant thickness, index and extinction "
-     "(kit/thinfilm.h: 256 nodes per period of the phase, within 2e-6 of exact, exact within 6 degrees of grazing; "
-     "25 to 55 times faster), exact where the film differs; or exact, the Airy sum at every nm and the model's "
+     "(kit/thinfilm.h: 256 nodes per period of the phase, dense towards grazing, within 2e-6 of exact; exact within "
+     "0.6 degrees of grazing and where the film differs); or exact, the Airy sum at every nm and the model's "
      "conversion at each evaluation"},
     {NULL},
 };

@@ -47,21 +47,22 @@ GENERIC_API GENERIC_NODISCARD int gthinfilm_color(const GThinFilm *f, double cos
 /* ---- a film tabulated over the angle ---- */
 
 /** Nodes a table gets per period of the film's phase over the ambient cosine (GThinFilmTable). */
-#define GTHINFILM_TABLE_NODES_PER_CYCLE 256
-/** Below this ambient cosine (84 degrees from the normal) a table's colours are the exact sum: towards grazing a film's
- * reflectance climbs to 1 within a cosine of 1e-3, faster than its nodes resolve. */
-#define GTHINFILM_TABLE_COS_MIN 0.1
+#define GTHINFILM_TABLE_NODES_PER_CYCLE 128
+/** Below this ambient cosine (0.6 degrees from grazing) a table's colours are the exact sum: there a film's
+ * reflectance climbs to 1 within a cosine of 1e-3, and even the nodes dense towards grazing keep only within 5e-5. */
+#define GTHINFILM_TABLE_COS_MIN 0.01
 /** The most nodes a table has; a film that would need more is not tabulated. */
 #define GTHINFILM_TABLE_MAX_NODES 4097
 
 /** A film's reflectance and transmittance colours (gthinfilm_color) tabulated over the ambient cosine at creation,
  * for a material whose film is the same at every point: a lookup is a cubic (Catmull-Rom) interpolation of four
- * nodes per sample instead of the Airy sum at every nm and the model's conversion. The nodes are uniform in the
- * cosine, GTHINFILM_TABLE_NODES_PER_CYCLE per period of the phase 4 pi d n_1 cos(theta_1) / lambda at 380 nm (and
- * 33 more), a row beyond an end extrapolated from the three nearest: within 2e-6 of the exact colours at cosines from
- * GTHINFILM_TABLE_COS_MIN to 1 (tests/test_thinfilm.c: 3.2e-6 against the closed form in spectrum at 1 nm, films of
- * 0 to 1000 nm, 0 to 80 degrees, of which the float colours' own rounding is 1.2e-6), the exact sum below; exact at
- * the nodes, normal incidence among them. */
+ * nodes per sample instead of the Airy sum at every nm and the model's conversion. The nodes are uniform in
+ * sqrt(cos), dense towards grazing where the colours change fastest, 2 GTHINFILM_TABLE_NODES_PER_CYCLE per period of
+ * the phase 4 pi d n_1 cos(theta_1) / lambda at 380 nm (and 33 more), a row beyond an end extrapolated from the three
+ * nearest: within 2e-6 of the exact colours from GTHINFILM_TABLE_COS_MIN to normal incidence (measured on a fine
+ * grid of cosines in spectrum; tests/test_thinfilm.c: 1.2e-6 against the closed form in spectrum at 1 nm, films of 0
+ * to 1000 nm, 0 to 80 degrees, as the exact sum's float colours), the exact sum below it; exact at the nodes, normal
+ * incidence among them. */
 typedef struct GThinFilmTable GThinFilmTable;
 
 /** Tabulates the film f for colours of model into *out. G_ERR_UNSUPPORTED (nothing made) where a table would not be
