@@ -1,7 +1,8 @@
 /* bench_conductor.c - evaluations per second of the conductor material (smooth, rough GGX, rough Beckmann,
  * uncompensated) against lambert's, in each built-in colour model, in thread CPU time: reflection() over the same 4096
  * random direction pairs, and sample() for the rough GGX conductor. One thread. Prints figures and the ratios to
- * lambert, never fails on time. */
+ * lambert, never fails on time. `bench_conductor N MODEL` takes N calls a figure (default 200000) and runs only the
+ * named colour model (default: all four), e.g. under a profiler. */
 #include "generic/builtins.h"
 #include "generic/material.h"
 #include "generic/reader.h"
@@ -62,6 +63,8 @@ int main(int argc, char **argv)
         return 1;
     fill_pairs();
     const char *models[] = {"rgb", "spectrum9", "spectrum", "bispectral"};
+    if (argc > 2)
+        return run(argv[2], n);
     for (int i = 0; i < 4; i++)
         if (run(models[i], n))
             return 1;

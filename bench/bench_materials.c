@@ -1,8 +1,9 @@
 /* bench_materials.c - evaluations per second of each physically based material against lambert's, in each built-in
  * colour model, in thread CPU time, one thread: reflection() over the same 4096 random direction pairs above the
  * surface and sample() from the same outgoing directions, for the rough conductor, the rough dielectric, the thin
- * dielectric, the plastic, the layer and the thin film (over lambert and over a metal). Prints the figures and the
- * ratios to lambert; never fails on time. `bench_materials N` takes N calls a figure (default 100000). */
+ * dielectric, the plastic, the layer and the thin film (over lambert and over a metal; its Airy sum tabulated,
+ * the default, and exact, `airy exact`). Prints the figures and the ratios to lambert; never fails on time.
+ * `bench_materials N` takes N calls a figure (default 100000). */
 #include "generic/builtins.h"
 #include "generic/material.h"
 #include "generic/reader.h"
@@ -22,9 +23,13 @@ static const char *const library =
     "material plastic plastic { reflectance rgb 0.6 0.05 0.04 roughness 0.2 }\n"
     "material layer layer { top dielectric { index 1.5 } bottom lambert { reflectance rgb 0.1 0.3 0.6 } }\n"
     "material thinfilm_lambert thinfilm { thickness 320 index 1.4 base lambert { reflectance rgb 0.5 0.5 0.5 } }\n"
-    "material thinfilm_metal thinfilm { thickness 320 index 1.4 base conductor { metal Al } }\n";
+    "material thinfilm_metal thinfilm { thickness 320 index 1.4 base conductor { metal Al } }\n"
+    "material tf_exact_lambert thinfilm { thickness 320 index 1.4 airy exact base lambert { reflectance rgb 0.5 0.5 "
+    "0.5 } }\n"
+    "material tf_exact_metal thinfilm { thickness 320 index 1.4 airy exact base conductor { metal Al } }\n";
 static const char *const names[] = {"lambert", "conductor_ggx", "dielectric_rough", "thindielectric", "plastic",
-                                    "layer", "thinfilm_lambert", "thinfilm_metal"};
+                                    "layer", "thinfilm_lambert", "thinfilm_metal", "tf_exact_lambert",
+                                    "tf_exact_metal"};
 enum { NAMES = sizeof names / sizeof names[0] };
 
 static int run(const char *model_name, long n)

@@ -35,7 +35,7 @@ static double time_material(const GMaterial *m, const GColor *light, GScratch *s
     GSurfPoint sp;
     gsurfpoint_init(&sp, m->model, sc);
     sp.geometric_normal = gvec3(0, 0, 1);
-    sp.material = m;
+    sp.material = m, sp.from = NULL, sp.to = m; /* seen from outside, as a renderer's primary hit */
     GScratchMark mark = gscratch_mark(sc);
     GColor out;
     if (gcolor_scratch(&out, m->model, sc) != G_OK)

@@ -16,7 +16,6 @@
 #include "generic/kit/texparam.h"
 #include "generic/kit/metals.h"
 #include "generic/kit/microfacet.h"
-#include "generic/kit/spectral_kernels.h"
 #include "generic/colorspec.h"
 #include "generic/plugin.h"
 
@@ -30,10 +29,13 @@
 /* The largest n and k a file may give. */
 #define CONDUCTOR_INDEX_MAX 1000.0
 
-/* Intervals of the Fresnel table over u = sqrt(cos_h) (nodes at cos_h = (j / K)^2, dense towards grazing): with 1024
- * the lerp keeps within 1e-5 of the exact reflectance for every metal of the table at every 5 nm (the worst, zinc at
- * 560 nm, 6.7e-6 near grazing; tests/test_conductor.c measures it). */
-#define CONDUCTOR_FRESNEL_K 1024
+/* The rough surface at one point: the distribution, its albedo table and the compensation's colour. */
+typedef struct RoughAt {
+    GMicrofacet mf;
+    double alpha2; /* mf.alpha_x squared: what an isotropic GGX surface reads */
+    const float *e;
+    const GColor *ms;
+} RoughAt;
 
 typedef struct Conductor {
     GMaterial base;
@@ -41,14 +43,14 @@ typedef struct Conductor {
     GColor f_avg;  /* 2 * integral of F(mu) mu dmu, per sample: the smooth albedo, for ambient() */
     GColor ms;     /* F_ms / (pi (1 - E_avg)): the compensation lobe's colour */
     GMicrofacet mf;
+    RoughAt surface; /* the rough surface of a constant roughness: mf, its albedo table e and ms */
     float e[GMICROFACET_ALBEDO_N];
     double e_avg;
     int smooth, anisotropic, compensate;
     int distribution;
-    /* the rough surface's Fresnel reflectance per sample at CONDUCTOR_FRESNEL_K + 1 nodes, node-major (nvalues
-     * floats per node), or NULL where it is evaluated exactly (fresnel exact, a smooth surface, a model whose
-     * vectors are not plain samples) */
-    float *ftab;
+    /* the rough surface's Fresnel reflectance tabulated (kit/fresnel.h), or NULL where it is evaluated exactly
+     * (fresnel exact, a smooth surface, a model whose vectors are not plain samples) */
+    GFresnelTable *ftab;
     /* a textured (isotropic) roughness: its values at the point, and the albedo tables and compensation colours of
      * CONDUCTOR_LEVELS roughnesses evenly over its range [level_lo, level_hi], interpolated between */
     GTexNumber rough;
@@ -61,14 +63,12 @@ typedef struct Conductor {
 /* The roughnesses tabulated over a textured roughness's range. */
 #define CONDUCTOR_LEVELS 17
 
-/* The rough surface at one point: the distribution, its albedo table and the compensation's colour. */
-typedef struct RoughAt {
-    GMicrofacet mf;
-    const float *e;
-    const GColor *ms;
-    float e_buf[GMICROFACET_ALBEDO_N];
-    GColor ms_buf;
-} RoughAt;
+/* Room for the rough surface at a point of a textured roughness: its albedo table and compensation colour. */
+typedef struct RoughBuf {
+    RoughAt at;
+    float e[GMICROFACET_ALBEDO_N];
+    GColor ms;
+} RoughBuf;
 
 static void conductor_destroy(GMaterial *self)
 {
@@ -81,42 +81,43 @@ static void conductor_destroy(GMaterial *self)
         gcolor_free(&c->level_ms[i]);
     gmem_free(c->level_ms);
     gmem_free(c->level_e);
-    gmem_free(c->ftab);
+    gmaterial_fresnel_table_destroy(c->ftab);
     gtexparam_number_release(&c->rough);
     gmem_free(c);
 }
 
-/* The rough surface at sp into *a: the material's own, or for a textured roughness the distribution of its value
- * there with the tables interpolated between the two nearest levels (exactly a level's at a level); the colour on
- * sp's arena (the caller marks and releases it). */
-static int rough_at(const Conductor *c, GSurfPoint *sp, RoughAt *a)
+/* The rough surface at sp into *a: the material's own (nothing copied), or for a textured roughness the distribution
+ * of its value there with the tables interpolated between the two nearest levels (exactly a level's at a level), in
+ * buf; the colour on sp's arena (the caller marks and releases it). */
+static inline int rough_at(const Conductor *c, GSurfPoint *sp, RoughBuf *buf, const RoughAt **a)
 {
-    a->mf = c->mf;
-    a->e = c->e;
-    a->ms = &c->ms;
+    *a = &c->surface;
     if (!c->rough.gen)
         return G_OK;
+    RoughAt *b = &buf->at;
+    *a = b;
     double r = gtexparam_number_at(&c->rough, sp), alpha = gmicrofacet_alpha_from_roughness(r);
-    a->mf = gmicrofacet_make(c->distribution, alpha, alpha);
+    b->mf = gmicrofacet_make(c->distribution, alpha, alpha);
+    b->alpha2 = b->mf.alpha_x * b->mf.alpha_x;
     double x = c->nlevels > 1 ? (r - c->level_lo) / (c->level_hi - c->level_lo) * (c->nlevels - 1) : 0.0;
     x = x > 0.0 ? (x < c->nlevels - 1 ? x : c->nlevels - 1) : 0.0;
     int j = (int)x;
     double w = x - j;
-    a->e = c->level_e[j];
-    a->ms = &c->level_ms[j];
+    b->e = c->level_e[j];
+    b->ms = &c->level_ms[j];
     if (w == 0.0 || j + 1 >= c->nlevels)
         return G_OK;
     for (int i = 0; i < GMICROFACET_ALBEDO_N; i++)
-        a->e_buf[i] = (float)((1.0 - w) * c->level_e[j][i] + w * c->level_e[j + 1][i]);
-    a->e = a->e_buf;
+        buf->e[i] = (float)((1.0 - w) * c->level_e[j][i] + w * c->level_e[j + 1][i]);
+    b->e = buf->e;
     if (!sp->scratch)
         return G_ERR_INVALID;
-    int rc = gcolor_scratch(&a->ms_buf, c->base.model, sp->scratch);
+    int rc = gcolor_scratch(&buf->ms, c->base.model, sp->scratch);
     if (rc == G_OK)
-        rc = gcolor_scale(&a->ms_buf, &c->level_ms[j], 1.0 - w);
+        rc = gcolor_scale(&buf->ms, &c->level_ms[j], 1.0 - w);
     if (rc == G_OK)
-        rc = gcolor_add_scaled(&a->ms_buf, &c->level_ms[j + 1], w);
-    a->ms = &a->ms_buf;
+        rc = gcolor_add_scaled(&buf->ms, &c->level_ms[j + 1], w);
+    b->ms = &buf->ms;
     return rc;
 }
 
@@ -126,166 +127,105 @@ static GFrame frame_at(const Conductor *c, const GSurfPoint *sp, GVec3 n)
     return c->anisotropic ? gframe_from_normal_tangent(n, sp->dpdu) : gframe_from_normal(n);
 }
 
-/* The geometry of the rough surface a for light from in towards out about the shading normal n: the single-scattering
- * term (gmicrofacet_reflect_cos), the cosine of the facet (in.h) and the two cosines with n. An isotropic surface
- * needs no frame: three dot products (gmicrofacet_reflect_cos_pair). 0 when either direction is below n. */
-static int rough_geometry(const Conductor *c, const RoughAt *a, const GSurfPoint *sp, GVec3 n, GVec3 in, GVec3 out,
-                          double *single, double *cos_h, double *cos_i, double *cos_o)
+/* A pair's geometry on a rough surface: the single-scattering term (gmicrofacet_reflect_cos), the cosine of the facet
+ * (in.h) and the two cosines with the shading normal. */
+typedef struct PairGeometry {
+    double single, cos_h, cos_i, cos_o;
+} PairGeometry;
+
+/* The geometry of the rough surface a for light from in towards out about the shading normal n, cos_in = in.n > 0.
+ * An isotropic surface needs no frame: two more dot products (gmicrofacet_reflect_cos_pair, GGX's inline). 0 when out
+ * is below n. */
+static inline int rough_geometry(const Conductor *c, const RoughAt *a, const GSurfPoint *sp, GVec3 n, double cos_in,
+                                 GVec3 in, GVec3 out, PairGeometry *g)
 {
     if (!c->anisotropic) {
-        GMicrofacetPair p = {gvec3_dot(in, n), gvec3_dot(out, n), gvec3_dot(in, out)};
-        if (!(p.cos_i > 0.0) || !(p.cos_o > 0.0))
+        GMicrofacetPair p = {cos_in, gvec3_dot(out, n), gvec3_dot(in, out)};
+        if (!(p.cos_o > 0.0))
             return 0;
-        *single = gmicrofacet_reflect_cos_pair(&a->mf, p);
-        *cos_h = gmicrofacet_pair_cos_h(p);
-        *cos_i = p.cos_i;
-        *cos_o = p.cos_o;
+        g->single = a->mf.distribution == GMICROFACET_GGX ? gmicrofacet_ggx_reflect_cos_pair(a->alpha2, p)
+                                                          : gmicrofacet_reflect_cos_pair(&a->mf, p);
+        g->cos_h = gmicrofacet_pair_cos_h(p);
+        g->cos_i = p.cos_i;
+        g->cos_o = p.cos_o;
         return 1;
     }
     GFrame fr = frame_at(c, sp, n);
     GVec3 wi = gframe_to_local(&fr, in), wo = gframe_to_local(&fr, out);
     if (!(wi.z > 0.0) || !(wo.z > 0.0))
         return 0;
-    *single = gmicrofacet_reflect_cos(&a->mf, wi, wo);
-    *cos_h = gvec3_dot(wi, gvec3_normalize(gvec3_add(wi, wo)));
-    *cos_i = wi.z;
-    *cos_o = wo.z;
+    g->single = gmicrofacet_reflect_cos(&a->mf, wi, wo);
+    g->cos_h = gvec3_dot(wi, gvec3_normalize(gvec3_add(wi, wo)));
+    g->cos_i = wi.z;
+    g->cos_o = wo.z;
     return 1;
-}
-
-/* The lerp of a table's two nodes: out = ((w0 lo + w1 hi) s + t add) light over n samples (add NULL: nothing added,
- * light NULL: white); out may be light. */
-typedef struct TableMix {
-    const float *lo, *hi, *add, *light;
-    float w0, w1, s, t;
-} TableMix;
-
-/* The loop of table_mix, for each operand given or not, so that each compiles without a test per sample. Each step
- * rounds to float as gcolor_mul after the mix would. */
-#define TABLE_MIX_LOOP(out, m, n)                                                                                      \
-    do {                                                                                                               \
-        const float *lo = (m)->lo, *hi = (m)->hi, *a = (m)->add, *l = (m)->light;                                      \
-        const float w0 = (m)->w0, w1 = (m)->w1, fs = (m)->s, ft = (m)->t;                                              \
-        if (a && l) {                                                                                                  \
-            GSPECTRAL_SIMD for (int i = 0; i < (n); i++) {                                                             \
-                float v = (w0 * lo[i] + w1 * hi[i]) * fs + a[i] * ft;                                                  \
-                (out)[i] = v * l[i];                                                                                   \
-            }                                                                                                          \
-        } else if (a) {                                                                                                \
-            GSPECTRAL_SIMD for (int i = 0; i < (n); i++)(out)[i] = (w0 * lo[i] + w1 * hi[i]) * fs + a[i] * ft;         \
-        } else if (l) {                                                                                                \
-            GSPECTRAL_SIMD for (int i = 0; i < (n); i++) {                                                             \
-                float v = (w0 * lo[i] + w1 * hi[i]) * fs;                                                              \
-                (out)[i] = v * l[i];                                                                                   \
-            }                                                                                                          \
-        } else {                                                                                                       \
-            GSPECTRAL_SIMD for (int i = 0; i < (n); i++)(out)[i] = (w0 * lo[i] + w1 * hi[i]) * fs;                     \
-        }                                                                                                              \
-    } while (0)
-
-static void table_mix(float *out, const TableMix *m, int n);
-static void table_mix_v4(float *out, const TableMix *m, int n) { TABLE_MIX_LOOP(out, m, n); }
-#ifdef GSPECTRAL_AVX2
-/* The same loop on 8-float vectors (no FMA: each sample rounds as the 4-float body's), chosen once when loaded. */
-static GSPECTRAL_TARGET_AVX2 void table_mix_v8(float *out, const TableMix *m, int n) { TABLE_MIX_LOOP(out, m, n); }
-GSPECTRAL_PICK(table_mix);
-#else
-static void table_mix(float *out, const TableMix *m, int n) { table_mix_v4(out, m, n); }
-#endif
-
-/* f = (s * F(cos_h) + t * add) * light sample by sample (add NULL: s * F; light NULL: white), F between the table's two
- * nodes about cos_h: exact at the nodes (cos_h = 1 among them); f->v may be light. */
-static void fresnel_table_mix(const Conductor *c, double cos_h, double s, const GColor *add, double t,
-                              const float *light, GColor *f)
-{
-    double x = sqrt(cos_h > 0.0 ? (cos_h < 1.0 ? cos_h : 1.0) : 0.0) * CONDUCTOR_FRESNEL_K;
-    int j = (int)x, n = c->base.model->nvalues;
-    j = j < CONDUCTOR_FRESNEL_K ? j : CONDUCTOR_FRESNEL_K - 1;
-    const float *lo = c->ftab + (size_t)j * n;
-    const float w1 = (float)(x - j);
-    TableMix m = {lo, lo + n, add ? add->v : NULL, light, 1.0f - w1, w1, (float)s, (float)t};
-    table_mix(f->v, &m, n);
-    f->kind = GCOLOR_VECTOR;
 }
 
 /* scale * f cos_in of the rough surface a into f from a pair's geometry: the cosines with the normal and the
  * facet's cosine, the single-scattering term; the Fresnel colour and the compensation's in one pass, times light's
  * samples when light is given (only with the Fresnel table, for f of the material's model: fused_light). */
-static int rough_mix(const Conductor *c, const RoughAt *a, double cos_i, double cos_o, double cos_h, double single,
-                     double scale, const float *light, GColor *f)
+__attribute__((always_inline)) static inline int rough_mix(const Conductor *c, const RoughAt *a, double cos_i,
+                                                            double cos_o, double cos_h, double single, double scale,
+                                                            const GColor *light, GColor *f)
 {
     double multiple = 0.0;
     if (single < 1e-30) /* far outside a narrow lobe: below what a float keeps to its precision */
         single = 0.0;
     if (c->compensate)
-        multiple = (1.0 - gmicrofacet_albedo_at(a->e, cos_o)) * (1.0 - gmicrofacet_albedo_at(a->e, cos_i)) * cos_i;
-    if (c->ftab && f->model == c->base.model) {
-        fresnel_table_mix(c, cos_h, single * scale, c->compensate ? a->ms : NULL, multiple * scale, light, f);
-        return G_OK;
-    }
+        multiple = (1.0 - gmicrofacet_albedo_lerp(a->e, cos_o)) * (1.0 - gmicrofacet_albedo_lerp(a->e, cos_i)) * cos_i;
+    if (c->ftab && f->model == c->base.model)
+        return gmaterial_fresnel_table_mix(c->ftab, cos_h, single * scale, c->compensate ? a->ms : NULL,
+                                           multiple * scale, light, f);
     if (light)
         return G_ERR_INVALID;
     return gmaterial_fresnel_conductor_mix(f, cos_h, &c->eta, &c->k, single * scale, c->compensate ? a->ms : NULL,
                                            multiple * scale);
 }
 
-/* rough_mix for local directions wi, wo above the surface given wi.wo. */
-static int mix_value(const Conductor *c, const RoughAt *a, double cos_i, double cos_o, double cos_io, double single,
-                     double scale, GColor *f)
-{
-    GMicrofacetPair p = {cos_i, cos_o, cos_io};
-    return rough_mix(c, a, cos_i, cos_o, gmicrofacet_pair_cos_h(p), single, scale, NULL, f);
-}
-
-/* f cos_in of the rough surface a for white light (light NULL) or times light's samples into f (a colour of the
- * model); 0 when nothing is reflected. */
-static int rough_value(const Conductor *c, const RoughAt *a, const GSurfPoint *sp, GVec3 n, GVec3 in, GVec3 out,
-                       const float *light, GColor *f)
-{
-    double single, cos_h, cos_i, cos_o;
-    if (!rough_geometry(c, a, sp, n, in, out, &single, &cos_h, &cos_i, &cos_o)) {
-        gcolor_black(f);
-        return G_OK;
-    }
-    return rough_mix(c, a, cos_i, cos_o, cos_h, single, 1.0, light, f);
-}
-
 /* f cos_in for white light (light NULL; or times light's samples, rough surfaces only: fused_light) into f at a pair
- * that reflects (cos_in > 0 about the shading normal n; a mirror pair for the smooth surface). */
+ * that reflects (cos_in = in.n > 0 about the shading normal n; a mirror pair for the smooth surface). */
 static int value_at(const Conductor *c, GSurfPoint *sp, GVec3 n, double cos_in, GVec3 in, GVec3 out,
-                    const float *light, GColor *f)
+                    const GColor *light, GColor *f)
 {
     if (c->smooth)
         return gmaterial_fresnel_conductor(f, cos_in, &c->eta, &c->k);
-    RoughAt a;
-    int rc;
-    if (!c->rough.gen) { /* the material's own surface: nothing on the arena */
-        rc = rough_at(c, sp, &a);
-        return rc == G_OK ? rough_value(c, &a, sp, n, in, out, light, f) : rc;
+    RoughBuf buf;
+    const RoughAt *a;
+    PairGeometry g;
+    GScratchMark mark = {0};
+    if (c->rough.gen) {
+        if (!sp->scratch)
+            return G_ERR_INVALID;
+        mark = gscratch_mark(sp->scratch);
     }
-    if (!sp->scratch)
-        return G_ERR_INVALID;
-    GScratchMark mark = gscratch_mark(sp->scratch);
-    rc = rough_at(c, sp, &a);
-    if (rc == G_OK)
-        rc = rough_value(c, &a, sp, n, in, out, light, f);
-    gscratch_release(sp->scratch, mark);
+    int rc = rough_at(c, sp, &buf, &a);
+    if (rc == G_OK && rough_geometry(c, a, sp, n, cos_in, in, out, &g))
+        rc = rough_mix(c, a, g.cos_i, g.cos_o, g.cos_h, g.single, 1.0, light, f);
+    else if (rc == G_OK)
+        gcolor_black(f);
+    if (c->rough.gen)
+        gscratch_release(sp->scratch, mark);
     return rc;
 }
 
-/* The pair's cosine about the shading normal n, 0 where the conductor reflects nothing from in towards out. */
-static double reflecting_cos(const Conductor *c, GSurfPoint *sp, GVec3 in, GVec3 out, GVec3 *n)
+/* The pair's cosine about the shading normal n, 0 where the conductor reflects nothing from in towards out:
+ * gmaterial_cos_in's rule (both directions on the geometric normal's outer side, in above n) written inline, as the
+ * rough surface's evaluation is. */
+static inline double reflecting_cos(const Conductor *c, GSurfPoint *sp, GVec3 in, GVec3 out, GVec3 *n)
 {
-    double cos_in = gmaterial_cos_in(sp, in, out, n);
+    *n = gsurfpoint_normal(sp);
+    if (!(gvec3_dot(out, sp->geometric_normal) > 0.0) || !(gvec3_dot(in, sp->geometric_normal) > 0.0))
+        return 0.0;
+    double cos_in = gvec3_dot(in, *n);
     return cos_in > 0.0 && (!c->smooth || gmaterial_is_mirror_pair(in, *n, out)) ? cos_in : 0.0;
 }
 
 /* The light's samples where the rough surface's table can multiply them in as it mixes (a vector of the model into
  * a colour of the model: what gcolor_mul would compute, in one pass), else NULL. */
-static const float *fused_light(const Conductor *c, const GColor *illum, const GColor *result)
+static const GColor *fused_light(const Conductor *c, const GColor *illum, const GColor *result)
 {
     const GColorModel *m = c->base.model;
-    return c->ftab && illum->kind == GCOLOR_VECTOR && illum->model == m && result->model == m ? illum->v : NULL;
+    return c->ftab && illum->kind == GCOLOR_VECTOR && illum->model == m && result->model == m ? illum : NULL;
 }
 
 static int conductor_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, const GColor *illum, GVec3 out,
@@ -298,7 +238,7 @@ static int conductor_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in,
         gcolor_black(result);
         return G_OK;
     }
-    const float *light = fused_light(c, illum, result);
+    const GColor *light = fused_light(c, illum, result);
     if (light) /* sample i of result read from light's sample i alone: result may be illum */
         return value_at(c, sp, n, cos_in, in, out, light, result);
     if (result->v != illum->v) { /* the value straight into result, then times the light */
@@ -368,29 +308,30 @@ static int conductor_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, co
     GVec3 wo = gframe_to_local(&fr, out), wi;
     if (!(wo.z > 0.0))
         return 0;
-    RoughAt a;
+    RoughBuf buf;
+    const RoughAt *a;
     GScratchMark mark = {0};
     if (c->rough.gen && sp->scratch)
         mark = gscratch_mark(sp->scratch);
-    int rc = rough_at(c, sp, &a);
+    int rc = rough_at(c, sp, &buf, &a);
     if (rc != G_OK) {
         if (c->rough.gen && sp->scratch)
             gscratch_release(sp->scratch, mark);
         return rc;
     }
-    double q = cosine_share(c, &a, wo);
+    double q = cosine_share(c, a, wo);
     if (u1 < q) {
         u1 /= q;
         double r = sqrt(u1), phi = 2.0 * M_PI * u2;
         wi = gvec3(r * cos(phi), r * sin(phi), sqrt(gfmax(0.0, 1.0 - u1)));
     } else {
         u1 = (u1 - q) / (1.0 - q);
-        GVec3 h = gmicrofacet_sample_visible(&a.mf, wo, u1 < 1.0 ? u1 : 0.0, u2);
+        GVec3 h = gmicrofacet_sample_visible(&a->mf, wo, u1 < 1.0 ? u1 : 0.0, u2);
         wi = gvec3_sub(gvec3_scale(h, 2.0 * gvec3_dot(wo, h)), wo);
     }
     int drawn = 0;
     if (wi.z > 0.0) { /* else reflected below the surface: nothing drawn */
-        double pdf_mf, single = gmicrofacet_reflect_cos_pdf(&a.mf, wi, wo, &pdf_mf);
+        double pdf_mf, single = gmicrofacet_reflect_cos_pdf(&a->mf, wi, wo, &pdf_mf);
         s->in = gframe_to_world(&fr, wi);
         s->pdf = (1.0 - q) * pdf_mf + q * wi.z / M_PI;
         s->flags = GSAMPLE_REFLECT;
@@ -399,8 +340,9 @@ static int conductor_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, co
          * reflection is (an infinite density, or a direction the geometric normal or the shading normal refuses) */
         if (drawn && (!isfinite(s->pdf) || !gmaterial_sides_agree(sp, s->in, out, 0) || !(gvec3_dot(s->in, n) > 0.0)))
             gcolor_black(weight);
-        else if (drawn)
-            rc = mix_value(c, &a, wi.z, wo.z, gvec3_dot(wi, wo), single, 1.0 / s->pdf, weight);
+        else if (drawn) /* the facet's cosine from the pair's (gmicrofacet_pair_cos_h) */
+            rc = rough_mix(c, a, wi.z, wo.z, gmicrofacet_pair_cos_h((GMicrofacetPair){wi.z, wo.z, gvec3_dot(wi, wo)}),
+                           single, 1.0 / s->pdf, NULL, weight);
     }
     if (c->rough.gen && sp->scratch)
         gscratch_release(sp->scratch, mark);
@@ -420,19 +362,20 @@ static double conductor_pdf(const GMaterial *self, GSurfPoint *sp, GVec3 in, GVe
     GVec3 wo = c->anisotropic ? gframe_to_local(&fr, out) : gvec3(0.0, 0.0, gvec3_dot(out, n));
     if (!(wo.z > 0.0))
         return 0.0;
-    RoughAt a;
+    RoughBuf buf;
+    const RoughAt *a;
     GScratchMark mark = {0};
     if (c->rough.gen && sp->scratch)
         mark = gscratch_mark(sp->scratch);
     double pdf = 0.0;
-    if (rough_at(c, sp, &a) != G_OK)
+    if (rough_at(c, sp, &buf, &a) != G_OK)
         pdf = 0.0;
     else if (c->anisotropic)
-        pdf = rough_pdf(c, &a, gframe_to_local(&fr, in), wo);
+        pdf = rough_pdf(c, a, gframe_to_local(&fr, in), wo);
     else { /* isotropic: the pair's cosines, no frame */
         GMicrofacetPair p = {gvec3_dot(in, n), wo.z, gvec3_dot(in, out)};
-        double q = cosine_share(c, &a, wo);
-        pdf = (1.0 - q) * gmicrofacet_pdf_reflect_pair(&a.mf, p) + q * gfmax(p.cos_i, 0.0) / M_PI;
+        double q = cosine_share(c, a, wo);
+        pdf = (1.0 - q) * gmicrofacet_pdf_reflect_pair(&a->mf, p) + q * gfmax(p.cos_i, 0.0) / M_PI;
     }
     if (c->rough.gen && sp->scratch)
         gscratch_release(sp->scratch, mark);
@@ -503,20 +446,7 @@ typedef struct ConductorSpec {
     GTexNumber rough; /* a textured isotropic roughness (gen set; roughness_u and _v: its range's lower end) */
 } ConductorSpec;
 
-/* A colour literal as the nm spectrum of n or k (an rgb triple: its smooth reflectance spectrum). */
-static void spec_nm(const GColorSpec *s, GSpectrumNM *out)
-{
-    if (s->form == GCOLORSPEC_NM) {
-        for (int i = 0; i < GNM_COUNT; i++)
-            out->v[i] = (float)(s->nm.v[i] * s->scale);
-        return;
-    }
-    double rgb[3] = {s->rgb[0] * s->scale, s->rgb[1] * s->scale, s->rgb[2] * s->scale};
-    gcie_rgb_to_nm(rgb, GCOLOR_REFLECTANCE, out);
-}
-
-/* n and k into c's colours: the metal's table; two spectra as a complex index (gmaterial_complex_index_from_nm);
- * otherwise each literal as a unitless colour. */
+/* n and k into c's colours: the metal's table, or the two literals (gmaterial_complex_index_from_specs). */
 static int index_colours(Conductor *c, const ConductorSpec *p, GError *err)
 {
     const GColorModel *m = c->base.model;
@@ -525,22 +455,12 @@ static int index_colours(Conductor *c, const ConductorSpec *p, GError *err)
         rc = gcolor_alloc(&c->k, m);
     if (rc != G_OK)
         return gerror_set(err, rc, "conductor: out of memory");
-    if (p->metal >= 0)
-        rc = gmetal_colors(p->metal, &c->eta, &c->k);
-    else if (p->eta->form == GCOLORSPEC_NM && p->k->form == GCOLORSPEC_NM) {
-        GSpectrumNM n_nm, k_nm;
-        spec_nm(p->eta, &n_nm);
-        spec_nm(p->k, &k_nm);
-        rc = gmaterial_complex_index_from_nm(&c->eta, &c->k, &n_nm, &k_nm);
-    } else {
+    if (p->metal < 0) {
         GError why;
-        rc = gcolorspec_to_color(p->eta, GCOLOR_UNITLESS, &c->eta, &why);
-        if (rc != G_OK)
-            return gerror_set_param(err, rc, "eta", "conductor: eta: %s", why.message);
-        rc = gcolorspec_to_color(p->k, GCOLOR_UNITLESS, &c->k, &why);
-        if (rc != G_OK)
-            return gerror_set_param(err, rc, "k", "conductor: k: %s", why.message);
+        rc = gmaterial_complex_index_from_specs(p->eta, p->k, &c->eta, &c->k, &why);
+        return rc == G_OK ? G_OK : gerror_set_param(err, rc, why.param, "conductor: %s", why.message);
     }
+    rc = gmetal_colors(p->metal, &c->eta, &c->k);
     return rc == G_OK ? G_OK : gerror_set(err, rc, "conductor: cannot express n and k in model '%s' (%s)",
                                           gcolormodel_name(m), gstatus_string(rc));
 }
@@ -575,32 +495,16 @@ static int rough_levels(Conductor *c, const GTexNumber *rough, GError *err)
     return G_OK;
 }
 
-/* The rough surface's Fresnel table (Conductor.ftab) in a model whose vectors are plain samples and whose n and k
- * are vectors (the lerp of two colours is then the colour of the lerp); otherwise none: exact evaluation. Each node
- * is the exact kernel's value (gmaterial_fresnel_conductor_mix), the last at cos_h = 1. */
+/* The rough surface's Fresnel table (Conductor.ftab) where the kit makes one (gmaterial_fresnel_table_create) and the
+ * compensation's colour is a vector too; otherwise none: exact evaluation. */
 static int fresnel_table(Conductor *c, GError *err)
 {
-    const GColorModel *m = c->base.model;
-    if (m->cls->fill || c->eta.kind != GCOLOR_VECTOR || c->k.kind != GCOLOR_VECTOR ||
-        (c->compensate && c->ms.kind != GCOLOR_VECTOR))
+    if (c->compensate && c->ms.kind != GCOLOR_VECTOR)
         return G_OK;
-    GColor f = {0};
-    int rc = gcolor_alloc(&f, m);
-    c->ftab = gmem_calloc((size_t)(CONDUCTOR_FRESNEL_K + 1) * (size_t)m->nvalues, sizeof *c->ftab);
-    if (!c->ftab && rc == G_OK)
-        rc = G_ERR_NOMEM;
-    for (int j = 0; j <= CONDUCTOR_FRESNEL_K && rc == G_OK; j++) {
-        double u = (double)j / CONDUCTOR_FRESNEL_K;
-        rc = gmaterial_fresnel_conductor_mix(&f, j == CONDUCTOR_FRESNEL_K ? 1.0 : u * u, &c->eta, &c->k, 1.0, NULL,
-                                             0.0);
-        if (rc == G_OK && f.kind != GCOLOR_VECTOR)
-            rc = G_ERR_UNSUPPORTED;
-        if (rc == G_OK)
-            memcpy(c->ftab + (size_t)j * m->nvalues, f.v, (size_t)m->nvalues * sizeof *f.v);
-    }
-    gcolor_free(&f);
-    return rc == G_OK ? G_OK : gerror_set(err, rc, "conductor: cannot tabulate its Fresnel term (%s)",
-                                          gstatus_string(rc));
+    int rc = gmaterial_fresnel_table_create(&c->eta, &c->k, &c->ftab);
+    if (rc == G_OK || rc == G_ERR_UNSUPPORTED)
+        return G_OK;
+    return gerror_set(err, rc, "conductor: cannot tabulate its Fresnel term (%s)", gstatus_string(rc));
 }
 
 static int conductor_create(const GColorModel *model, const ConductorSpec *p, GMaterial **out, GError *err)
@@ -615,6 +519,7 @@ static int conductor_create(const GColorModel *model, const ConductorSpec *p, GM
     double ay = gmicrofacet_alpha_from_roughness(p->roughness_v);
     c->smooth = !(ax >= GMICROFACET_ALPHA_MIN || ay >= GMICROFACET_ALPHA_MIN); /* both below it: the ideal mirror */
     c->mf = gmicrofacet_make(p->distribution, ax, ay);
+    c->surface = (RoughAt){c->mf, c->mf.alpha_x * c->mf.alpha_x, c->e, &c->ms};
     c->anisotropic = !c->smooth && ax != ay;
     c->compensate = p->compensate && !c->smooth;
     c->distribution = p->distribution;

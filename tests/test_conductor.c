@@ -3,7 +3,7 @@
  * sampling against its pdf, integrated over each bin; the white furnace (a compensated rough conductor of reflectance 1
  * keeps all the light at every angle; uncompensated it keeps the single-scattering albedo, integrated here with an
  * independent D and G2); reciprocity; energy conservation of real metals; the tabulated Fresnel term against the
- * exact one; and the file format's refusals. */
+ * exact one, and the kit's table (kit/fresnel.h) itself; and the file format's refusals. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -462,6 +462,63 @@ static void refusals(void **state)
     gcolormodel_destroy(model);
 }
 
+/* The kit's table itself (gmaterial_fresnel_table_mix) in every model: at each node the exact kernel's colour float
+ * for float, s F + t add times a light sample by sample as the kernel and gcolor operations compute it, operands of
+ * another model refused; and n and k from two literals (gmaterial_complex_index_from_specs) naming the one refused. */
+static void kit_fresnel_table(void **state)
+{
+    (void)state;
+    const char *models[] = {"rgb", "spectrum9", "spectrum", "bispectral"};
+    for (int mi = 0; mi < 4; mi++) {
+        GColorModel *m, *other;
+        GError err;
+        assert_int_equal(gcolormodel_create(models[mi], NULL, &m, &err), G_OK);
+        assert_int_equal(gcolormodel_create(mi ? "rgb" : "spectrum", NULL, &other, &err), G_OK);
+        GColor eta, k, f, want, add, light, alien;
+        assert_int_equal(gcolor_alloc(&eta, m), G_OK);
+        assert_int_equal(gcolor_alloc(&k, m), G_OK);
+        assert_int_equal(gcolor_alloc(&f, m), G_OK);
+        assert_int_equal(gcolor_alloc(&want, m), G_OK);
+        assert_int_equal(gcolor_alloc(&add, m), G_OK);
+        assert_int_equal(gcolor_alloc(&light, m), G_OK);
+        assert_int_equal(gcolor_alloc(&alien, other), G_OK);
+        assert_int_equal(gmetal_colors(gmetal_find("Au"), &eta, &k), G_OK);
+        assert_int_equal(gcolor_fill(&add, 0.25), G_OK);
+        assert_int_equal(gcolor_fill(&light, 0.5), G_OK);
+        GFresnelTable *t;
+        assert_int_equal(gmaterial_fresnel_table_create(&eta, &k, &t), G_OK);
+        for (int j = 0; j <= GFRESNEL_TABLE_K; j += j < GFRESNEL_TABLE_K - 31 ? 31 : 1) {
+            double u = (double)j / GFRESNEL_TABLE_K, cos_h = j == GFRESNEL_TABLE_K ? 1.0 : u * u;
+            assert_int_equal(gmaterial_fresnel_table_mix(t, cos_h, 1.0, NULL, 0.0, NULL, &f), G_OK);
+            assert_int_equal(gmaterial_fresnel_conductor_mix(&want, cos_h, &eta, &k, 1.0, NULL, 0.0), G_OK);
+            for (int i = 0; i < m->nvalues; i++)
+                assert_true(f.v[i] == want.v[i]);
+            assert_int_equal(gmaterial_fresnel_table_mix(t, cos_h, 0.5, &add, 2.0, &light, &f), G_OK);
+            for (int i = 0; i < m->nvalues; i++)
+                assert_true(fabs(f.v[i] - (0.5 * want.v[i] + 2.0 * 0.25) * 0.5) <= 1e-6);
+        }
+        assert_int_equal(gmaterial_fresnel_table_mix(t, 0.5, 1.0, NULL, 0.0, &alien, &f), G_ERR_MISMATCH);
+        assert_int_equal(gmaterial_fresnel_table_mix(t, 0.5, 1.0, &alien, 1.0, NULL, &f), G_ERR_MISMATCH);
+        assert_int_equal(gmaterial_fresnel_table_mix(t, 0.5, 1.0, NULL, 0.0, NULL, &alien), G_ERR_MISMATCH);
+        gmaterial_fresnel_table_destroy(t);
+        GColorSpec *good = gcolorspec_create(), *bad = gcolorspec_create();
+        assert_non_null(good);
+        assert_non_null(bad);
+        good->form = GCOLORSPEC_RGB, good->rgb[0] = good->rgb[1] = good->rgb[2] = 0.5, good->scale = 1.0;
+        bad->form = GCOLORSPEC_RGB, bad->rgb[0] = 1.0, bad->scale = 1e300; /* overflows a float: refused */
+        assert_int_equal(gmaterial_complex_index_from_specs(good, good, &eta, &k, &err), G_OK);
+        assert_int_not_equal(gmaterial_complex_index_from_specs(good, bad, &eta, &k, &err), G_OK);
+        assert_string_equal(err.param, "k");
+        gcolorspec_destroy(good);
+        gcolorspec_destroy(bad);
+        GColor *all[] = {&eta, &k, &f, &want, &add, &light, &alien};
+        for (int i = 0; i < 7; i++)
+            gcolor_free(all[i]);
+        gcolormodel_destroy(m);
+        gcolormodel_destroy(other);
+    }
+}
+
 #define MODELS(f)                                                                                              \
     {#f " (rgb)", f, NULL, NULL, (void *)"rgb"}, {#f " (spectrum9)", f, NULL, NULL, (void *)"spectrum9"},      \
         {#f " (spectrum)", f, NULL, NULL, (void *)"spectrum"},                                                 \
@@ -476,6 +533,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(normal_incidence),
         cmocka_unit_test(fresnel_table),
+        cmocka_unit_test(kit_fresnel_table),
         MODELS(chi2_ggx),
         {"chi2_beckmann (spectrum)", chi2_beckmann, NULL, NULL, (void *)"spectrum"},
         BOTH(white_furnace),

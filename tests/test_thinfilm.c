@@ -21,6 +21,7 @@
 #include "generic/reader.h"
 #include "generic/surfpoint.h"
 #include "test_util.h"
+#include "test_util.h"
 
 #define DEG (M_PI / 180.0)
 
@@ -83,13 +84,15 @@ typedef struct Film {
     GSurfPoint sp;
 } Film;
 
-/* A library of films of thickness 0, 50, ..., 1000 nm named t0, t50, ... in the model given (spectrum at 1 nm). */
-static void film_open(Film *f, const char *model, double step)
+/* A library of films of thickness 0, 50, ..., 1000 nm named t0, t50, ... in the model given (spectrum at 1 nm), with
+ * the Airy sum's mode airy (exact or table). */
+static void film_open_airy(Film *f, const char *model, double step, const char *airy)
 {
     char text[4096];
     int len = 0;
     for (int d = 0; d <= 1000; d += 50)
-        len += snprintf(text + len, sizeof text - len, "material t%d thinfilm { thickness %d index 1.33 }\n", d, d);
+        len += snprintf(text + len, sizeof text - len, "material t%d thinfilm { thickness %d index 1.33 airy %s }\n", d,
+                        d, airy);
     GColorModelOptions mo = {.step_nm = step, .min_nm = 380, .max_nm = 780};
     GReaderOptions opt = {.colormodel = model, .colormodel_options = step > 0.0 ? &mo : NULL};
     GError err;
@@ -100,6 +103,8 @@ static void film_open(Film *f, const char *model, double step)
     gsurfpoint_init(&f->sp, f->model, f->scratch);
     f->sp.geometric_normal = gvec3(0, 0, 1);
 }
+
+static void film_open(Film *f, const char *model, double step) { film_open_airy(f, model, step, "exact"); }
 
 static void film_close(Film *f)
 {
@@ -129,11 +134,11 @@ static void film_rt(Film *f, int d, double theta, GColor *r, GColor *t)
     assert_int_equal(gmaterial_refraction(m, &f->sp, dir, &one, &ri, out, t), G_OK);
 }
 
-static void test_material_spectrum(void **state)
+/* The films in spectrum at 1 nm against the closed form, their colours exact or tabulated (within bound). */
+static void material_spectrum(const char *airy, double bound)
 {
-    (void)state;
     Film f;
-    film_open(&f, "spectrum", 1.0);
+    film_open_airy(&f, "spectrum", 1.0, airy);
     double nm[401];
     assert_int_equal(gcolormodel_wavelengths(f.model, nm, 401), 401);
     double worst_r = 0.0, worst_sum = 0.0;
@@ -150,11 +155,62 @@ static void test_material_spectrum(void **state)
             }
             gscratch_release(f.scratch, mark);
         }
-    print_message("thinfilm in spectrum at 1 nm: |R - closed form| <= %.3g, |R + T - 1| <= %.3g (float colours)\n",
-                  worst_r, worst_sum);
-    assert_true(worst_r <= 2e-6);
-    assert_true(worst_sum <= 2e-6);
+    print_message("thinfilm (airy %s) in spectrum at 1 nm: |R - closed form| <= %.3g, |R + T - 1| <= %.3g (float "
+                  "colours)\n", airy, worst_r, worst_sum);
+    assert_true(worst_r <= bound);
+    assert_true(worst_sum <= bound);
     film_close(&f);
+}
+
+static void test_material_spectrum(void **state)
+{
+    (void)state;
+    material_spectrum("exact", 2e-6);
+    material_spectrum("table", 2e-6); /* kit/thinfilm.h's bound for its tables */
+}
+
+/* The kit's table (gthinfilm_table_color) against the exact colours (gthinfilm_color) in spectrum over a fine grid
+ * of cosines, denser towards grazing, for films in air and on glass, with and without extinction: within 2e-6 of R
+ * and of T everywhere (exact below GTHINFILM_TABLE_COS_MIN); a film of index below the ambient's gets no table. */
+static void test_table_grid(void **state)
+{
+    (void)state;
+    GColorModel *m;
+    GError err;
+    assert_int_equal(gcolormodel_create("spectrum", NULL, &m, &err), G_OK);
+    const GThinFilm films[] = {{480, 1.33, 0, 1, 1}, {300, 1.9, 0, 1, 1.5}, {1000, 1.33, 0, 1, 1},
+                               {180, 2.6, 0.2, 1, 1}};
+    GColor r, t, re, te;
+    assert_int_equal(gcolor_alloc(&r, m), G_OK);
+    assert_int_equal(gcolor_alloc(&t, m), G_OK);
+    assert_int_equal(gcolor_alloc(&re, m), G_OK);
+    assert_int_equal(gcolor_alloc(&te, m), G_OK);
+    const int steps = TU_SANITIZED ? 200 : 2000;
+    for (int f = 0; f < 4; f++) {
+        GThinFilmTable *tab;
+        assert_int_equal(gthinfilm_table_create(&films[f], m, &tab), G_OK);
+        assert_true(gthinfilm_table_matches(tab, &films[f]));
+        double worst = 0.0;
+        for (int i = 0; i <= steps; i++) {
+            double u = (double)i / steps, c = u * u;
+            assert_int_equal(gthinfilm_table_color(tab, c, &r, &t), G_OK);
+            assert_int_equal(gthinfilm_color(&films[f], c, &re, &te), G_OK);
+            for (int k = 0; k < m->nvalues; k++)
+                worst = fmax(worst, fmax(fabs(r.v[k] - re.v[k]), fabs(t.v[k] - te.v[k])));
+        }
+        print_message("thinfilm table, %g nm index %g + %gi on %g: |table - exact| <= %.3g\n", films[f].thickness,
+                      films[f].n, films[f].k, films[f].substrate, worst);
+        assert_true(worst <= 2e-6);
+        gthinfilm_table_destroy(tab);
+    }
+    GThinFilm low = {300, 0.8, 0, 1, 1.5};
+    GThinFilmTable *none = NULL;
+    assert_int_equal(gthinfilm_table_create(&low, m, &none), G_ERR_UNSUPPORTED);
+    assert_null(none);
+    GColor *all[] = {&r, &t, &re, &te};
+    for (int i = 0; i < 4; i++)
+        gcolor_free(all[i]);
+    gcolormodel_destroy(m);
 }
 
 /* ---- CIEDE2000 (Sharma, Wu and Dalal 2005): tests/colour_difference.h ---- */
@@ -247,6 +303,7 @@ int main(void)
         return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_airy_closed_form),
+        cmocka_unit_test(test_table_grid),
         cmocka_unit_test(test_material_spectrum),
         cmocka_unit_test(test_ciede2000_reference),
         cmocka_unit_test(test_rgb_against_spectrum),

@@ -193,3 +193,30 @@ int gmaterial_complex_index_from_nm(GColor *eta, GColor *k, const GSpectrumNM *e
     rc = gcolor_from_nm(k, &r0, GCOLOR_REFLECTANCE);
     return rc ? rc : gcolor_map(k, k_for_reflectance, NULL, eta, k, NULL);
 }
+
+/* A spectrum literal's nm values, scaled. */
+static void spec_nm(const GColorSpec *s, GSpectrumNM *out)
+{
+    for (int i = 0; i < GNM_COUNT; i++)
+        out->v[i] = (float)(s->nm.v[i] * s->scale);
+}
+
+int gmaterial_complex_index_from_specs(const GColorSpec *eta_spec, const GColorSpec *k_spec, GColor *eta, GColor *k,
+                                       GError *err)
+{
+    int rc;
+    if (eta_spec->form == GCOLORSPEC_NM && k_spec->form == GCOLORSPEC_NM) {
+        GSpectrumNM n_nm, k_nm;
+        spec_nm(eta_spec, &n_nm);
+        spec_nm(k_spec, &k_nm);
+        rc = gmaterial_complex_index_from_nm(eta, k, &n_nm, &k_nm);
+        return rc == G_OK ? G_OK : gerror_set(err, rc, "cannot express n and k in model '%s' (%s)",
+                                              gcolormodel_name(eta->model), gstatus_string(rc));
+    }
+    GError why;
+    rc = gcolorspec_to_color(eta_spec, GCOLOR_UNITLESS, eta, &why);
+    if (rc != G_OK)
+        return gerror_set_param(err, rc, "eta", "eta: %s", why.message);
+    rc = gcolorspec_to_color(k_spec, GCOLOR_UNITLESS, k, &why);
+    return rc == G_OK ? G_OK : gerror_set_param(err, rc, "k", "k: %s", why.message);
+}

@@ -267,6 +267,8 @@ static inline Fraction pair_d(const GMicrofacet *m, GMicrofacetPair p, double *t
 
 double gmicrofacet_reflect_cos_pair(const GMicrofacet *m, GMicrofacetPair p)
 {
+    if (m->distribution != GMICROFACET_BECKMANN)
+        return gmicrofacet_ggx_reflect_cos_pair(m->alpha_x * m->alpha_x, p);
     if (!(p.cos_o > 0.0) || !(p.cos_i > 0.0))
         return 0.0;
     double ti, to;

@@ -18,12 +18,4 @@ void gmicrofacet_albedo_table(const GMicrofacet *m, float e[GMICROFACET_ALBEDO_N
         *e_avg = (1.0 - t) * gmicrofacet_albedo_avg[d][a] + t * gmicrofacet_albedo_avg[d][a + 1];
 }
 
-double gmicrofacet_albedo_at(const float e[GMICROFACET_ALBEDO_N], double mu)
-{
-    double x = gfmin(gfmax(mu, 0.0), 1.0) * (GMICROFACET_ALBEDO_N - 1);
-    int i = (int)x;
-    if (i > GMICROFACET_ALBEDO_N - 2)
-        i = GMICROFACET_ALBEDO_N - 2;
-    double t = x - i;
-    return (1.0 - t) * e[i] + t * e[i + 1];
-}
+double gmicrofacet_albedo_at(const float e[GMICROFACET_ALBEDO_N], double mu) { return gmicrofacet_albedo_lerp(e, mu); }

@@ -6,6 +6,8 @@
 
 #include "../export.h"
 #include "../color.h"
+#include "../colorspec.h"
+#include "../error.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -45,6 +47,43 @@ GENERIC_API GENERIC_NODISCARD int gmaterial_fresnel_dielectric(GColor *out, doub
  * 0.98 to 0.07. G_ERR_MISMATCH for colours of two models; a conversion's status otherwise. */
 GENERIC_API GENERIC_NODISCARD int gmaterial_complex_index_from_nm(GColor *eta, GColor *k, const GSpectrumNM *eta_nm,
                                                                   const GSpectrumNM *k_nm);
+
+/** The complex index eta + i k (colours of one model, with storage) from two colour literals of n and k
+ * (colorspec.h): two spectra by gmaterial_complex_index_from_nm (the pair's rule); otherwise each as a unitless colour
+ * (gcolorspec_to_color, GCOLOR_UNITLESS). A literal its conversion refuses is named as the parameter "eta" or "k"
+ * (gerror_set_param, the message "eta: why"); a failure of the pair's rule says the model it failed in. */
+GENERIC_API GENERIC_NODISCARD int gmaterial_complex_index_from_specs(const GColorSpec *eta_spec,
+                                                                     const GColorSpec *k_spec, GColor *eta, GColor *k,
+                                                                     GError *err);
+
+/* ---- a conductor's Fresnel reflectance tabulated per sample ---- */
+
+/** Intervals of a GFresnelTable over u = sqrt(cos_h) (nodes at cos_h = (j / K)^2, dense towards grazing): with 1024
+ * the lerp keeps within 1e-5 of the exact reflectance for every measured metal (kit/metals.h) at every 5 nm (the
+ * worst, zinc at 560 nm, 6.7e-6 near grazing; tests/test_conductor.c measures it). */
+#define GFRESNEL_TABLE_K 1024
+
+/** A conductor's Fresnel reflectance (gmaterial_fresnel_conductor_mix's F) tabulated per sample at creation at
+ * GFRESNEL_TABLE_K + 1 facet angles, for a rough surface that reads it at every evaluation: a lookup is the lerp of
+ * two nodes per sample, exact at the nodes and at normal incidence; 4 bytes per sample and node. */
+typedef struct GFresnelTable GFresnelTable;
+
+/** Tabulates the conductor of complex index eta + i k (vectors of one model, as gmaterial_fresnel_conductor reads
+ * them) into *out. G_ERR_UNSUPPORTED (nothing made) for a model whose values are not plain samples or an index that
+ * is not a vector; G_ERR_MISMATCH for colours of two models; G_ERR_NOMEM. */
+GENERIC_API GENERIC_NODISCARD int gmaterial_fresnel_table_create(const GColor *eta, const GColor *k,
+                                                                 GFresnelTable **out);
+
+/** Frees a table; NULL is a no-op. */
+GENERIC_API void gmaterial_fresnel_table_destroy(GFresnelTable *t);
+
+/** out = (s F(cos_h) + t_add add) light sample by sample in one pass, F the tabulated reflectance between the two
+ * nodes about cos_h (clamped to [0, 1]); add NULL adds nothing, light NULL is white. add and light are vectors of
+ * the table's model and out a colour of it, which may be light (sample i read before it is written); each step
+ * rounds to float as gcolor_mul after the mix would. G_ERR_MISMATCH otherwise. */
+GENERIC_API GENERIC_NODISCARD int gmaterial_fresnel_table_mix(const GFresnelTable *t, double cos_h, double s,
+                                                              const GColor *add, double t_add, const GColor *light,
+                                                              GColor *out);
 
 #ifdef __cplusplus
 }

@@ -105,6 +105,22 @@ GENERIC_API double gmicrofacet_reflect_cos_pair(const GMicrofacet *m, GMicroface
  * 0 unless both cosines are > 0. */
 GENERIC_API double gmicrofacet_pdf_reflect_pair(const GMicrofacet *m, GMicrofacetPair p);
 
+/** gmicrofacet_reflect_cos_pair of an isotropic GGX distribution whose width squared is alpha2, inline, for a caller
+ * that evaluates many pairs of one surface (the exported function computes GGX with it: the same value bit for bit).
+ * Heitz's form: D of the unnormalised half vector and G2 / (4 cos_o) from the two directions' sqrt(cos^2 + alpha^2
+ * sin^2), one division in all. 0 unless both cosines are > 0. */
+static inline double gmicrofacet_ggx_reflect_cos_pair(double alpha2, GMicrofacetPair p)
+{
+    if (!(p.cos_o > 0.0) || !(p.cos_i > 0.0))
+        return 0.0;
+    double ci = p.cos_i, co = p.cos_o, l2 = 2.0 + 2.0 * p.cos_io, hz = ci + co, hz2 = hz * hz;
+    double tangential = gfmax(0.0, l2 - hz2); /* |H|^2 - Hz^2 of the half vector H = wi + wo */
+    double ti = alpha2 * gfmax(0.0, 1.0 - ci * ci), to = alpha2 * gfmax(0.0, 1.0 - co * co);
+    double q = tangential + alpha2 * hz2; /* D = |H|^4 alpha^2 / (pi q^2) */
+    double num = l2 * l2 * alpha2, den = M_PI * q * q;
+    return num * ci / (den * 2.0 * (sqrt(ci * ci + ti) * co + sqrt(co * co + to) * ci));
+}
+
 /** wi.h = wo.h for the pair's half vector h: sqrt((1 + wi.wo) / 2), the cosine a Fresnel term of the facet reads. */
 static inline double gmicrofacet_pair_cos_h(GMicrofacetPair p)
 {
@@ -127,6 +143,18 @@ GENERIC_API void gmicrofacet_albedo_table(const GMicrofacet *m, float e[GMICROFA
 
 /** E(mu) from a table of gmicrofacet_albedo_table, linear between the nodes (mu clamped to [0, 1]). */
 GENERIC_API double gmicrofacet_albedo_at(const float e[GMICROFACET_ALBEDO_N], double mu);
+
+/** gmicrofacet_albedo_at inline, for a caller that reads a table per evaluation (the exported function is this: the
+ * same value bit for bit). */
+static inline double gmicrofacet_albedo_lerp(const float e[GMICROFACET_ALBEDO_N], double mu)
+{
+    double x = gfmin(gfmax(mu, 0.0), 1.0) * (GMICROFACET_ALBEDO_N - 1);
+    int i = (int)x;
+    if (i > GMICROFACET_ALBEDO_N - 2)
+        i = GMICROFACET_ALBEDO_N - 2;
+    double t = x - i;
+    return (1.0 - t) * e[i] + t * e[i + 1];
+}
 
 /* ---- the local shading frame ---- */
 
