@@ -3,6 +3,8 @@
  * - the sigmoid fit (lib/color/uplift_fit.c): the AVX2 body against the scalar one on generated discretisations
  *   (1 to 401 samples: whole blocks of 4 and every tail) and generated targets, reachable and not; the fitted
  *   coefficients and the distance left must be equal bit for bit;
+ * - the samples of an uplifted colour (guplift_sigmoid_samples): the AVX2 body against the scalar one, for every
+ *   length from 0 to 90, with coefficients that make the polynomial infinite (black and white) or overflow;
  * - gcolor_from_rgb in the sigmoid models, asked again for the same colour among others, gives what it gave
  *   the first time, in two models and two grids at once (what is kept is kept per model);
  * - gcolormodel_rgb_range, kept per model and role, equals the extremes of the cube's corners measured here. */
@@ -16,6 +18,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "color/uplift.h"
 #include "color/uplift_fit.h"
 #include "generic/builtins.h"
 #include "generic/color.h"
@@ -89,6 +92,38 @@ static void test_fit_bodies_agree(void **state)
         }
     }
     printf("%d fits: vector and scalar bodies equal bit for bit\n", fits);
+}
+
+static void test_sigmoid_samples_agree(void **state)
+{
+    (void)state;
+    enum { N = 90 };
+    double x[N], f[N];
+    float vec[N + 1], sca[N + 1];
+    int compared = 0;
+    for (int trial = 0; trial < 40; trial++) {
+        GUplift u = {{40.0 * (rnd() - 0.5), 40.0 * (rnd() - 0.5), 8.0 * (rnd() - 0.5)}, 1.0 + 3.0 * rnd(), 0, {0}};
+        if (trial == 1 || trial == 2) /* white and black: S's limits */
+            u.c[0] = u.c[1] = 0.0, u.c[2] = trial == 1 ? INFINITY : -INFINITY;
+        if (trial == 3) /* a polynomial whose square overflows */
+            u.c[2] = 1e200;
+        for (int k = 0; k < N; k++) {
+            x[k] = rnd() * 1.2 - 0.1;
+            f[k] = trial % 2 ? 0.5 + rnd() : 1.0;
+        }
+        for (int n = 0; n <= N; n++) {
+            vec[n] = sca[n] = -7.0f; /* the sample past the end stays as it was */
+            guplift_sigmoid_samples(&u, n, x, f, vec);
+            guplift_sigmoid_samples_scalar(&u, n, x, f, sca);
+            if (memcmp(vec, sca, sizeof(float) * (size_t)(n + 1)) != 0)
+                fail_msg("trial %d, %d samples: the vector and scalar samples differ", trial, n);
+            assert_true(vec[n] == -7.0f);
+            compared++;
+        }
+        if (trial == 1 || trial == 2)
+            assert_true(vec[N - 1] == (trial == 1 ? (float)(u.scale * f[N - 1]) : 0.0f));
+    }
+    printf("%d sample vectors: vector and scalar bodies equal bit for bit\n", compared);
 }
 
 /* from_rgb of colours in a fixed order, twice over, in several models: the second pass must give the first pass's
@@ -166,6 +201,7 @@ int main(void)
         return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_fit_bodies_agree),
+        cmocka_unit_test(test_sigmoid_samples_agree),
         cmocka_unit_test(test_from_rgb_repeats_exactly),
         cmocka_unit_test(test_rgb_range_kept_equals_measured),
     };

@@ -63,9 +63,9 @@ typedef struct GSpectral {
     float *rgb[2];             /**< per GColorRole: 3 * n RGB basis on the grid, corrected so the round trip
                                     rgb -> model -> rgb is exact */
     int uplift;                /**< a GColorUplift: how from_rgb makes spectra (0: sigmoid) */
-    double *fit[2];            /**< per GColorRole: the sigmoid uplift's discretisation, 5 * n: the normalised
-                                    wavelengths, the three XYZ weights (a light's times D65), the D65 factor (1
-                                    for a reflectance) */
+    double *fit[2];            /**< per GColorRole: the sigmoid uplift's discretisation, 5 * n + 3: the
+                                    normalised wavelengths, the three XYZ weights (a light's times D65), the D65
+                                    factor (1 for a reflectance), the sums of the three weights (the white) */
 } GSpectral;
 
 /** A sanity limit on a grid's samples (300..830 nm at 1 nm has 531). */
