@@ -18,8 +18,9 @@ static struct {
     double u[GNM_COUNT], w[3][GNM_COUNT], white[3]; /* the 1 nm discretisation, reflectance under D65 */
 } U;
 
-static pthread_once_t once = PTHREAD_ONCE_INIT;
+static pthread_once_t once = PTHREAD_ONCE_INIT, once_nm = PTHREAD_ONCE_INIT;
 
+/* The table spaces' matrices (every uplift needs them). */
 static void init_uplift(void)
 {
     static const int space[GUPLIFT_TABLES] = {GCOLORSPACE_SRGB, GCOLORSPACE_REC2020, GCOLORSPACE_ACES2065_1};
@@ -32,6 +33,11 @@ static void init_uplift(void)
             for (int c = 0; c < 3; c++)
                 U.srgb_to[t][r][c] = inv[r][0] * srgb[0][c] + inv[r][1] * srgb[1][c] + inv[r][2] * srgb[2][c];
     }
+}
+
+/* The 1 nm discretisation (guplift_rgb_to_nm alone needs it). */
+static void init_uplift_nm(void)
+{
     GSpectrumNM e;
     for (int i = 0; i < GNM_COUNT; i++)
         e.v[i] = 0.0f;
@@ -219,6 +225,7 @@ int guplift_rgb_to_nm(const double srgb[3], GColorRole role, GSpectrumNM *out, d
     int rc = guplift_from_rgb(srgb, role, &u);
     if (rc != G_OK)
         return rc;
+    pthread_once(&once_nm, init_uplift_nm);
     const double *w[3] = {U.w[0], U.w[1], U.w[2]};
     rc = guplift_refine(&u, GNM_COUNT, U.u, w, U.white, delta_e);
     for (int i = 0; i < GNM_COUNT; i++)
