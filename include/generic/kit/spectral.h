@@ -172,7 +172,9 @@ GENERIC_API const float *gspectral_xyz_floats(const GSpectral *s, GColorRole rol
 /** A vector from linear sRGB: by default the sigmoid uplift (generic/colorspace.h) evaluated at the grid's
  * wavelengths, its coefficients refined against the model's own colour matching weights (so the round trip with
  * to_xyz is exact wherever sigmoid spectra reach the colour, and a reflectance of the sRGB cube stays within
- * [0, 1]); with the uplift GCOLOR_UPLIFT_BASIS, through the corrected RGB basis (exact round trip, linear). */
+ * [0, 1]); with the uplift GCOLOR_UPLIFT_BASIS, through the corrected RGB basis (exact round trip, linear). Each
+ * thread keeps the sigmoid spectra it last made, keyed by the exact model, role and colour (a texture's repeated
+ * texels cost a copy); gspectral_fini forgets them, so a kit model is freed through it. */
 GENERIC_API GENERIC_NODISCARD int gspectral_from_rgb(const GColorModel *m, const double rgb[3], GColorRole role,
                                                      GColor *out);
 
