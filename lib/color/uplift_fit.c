@@ -65,13 +65,13 @@ static inline __attribute__((always_inline)) GSPECTRAL_TARGET_AVX2 fit_v4d fit_l
 /* Lane l of v in every lane. */
 #define FIT_LANE(v, l) __builtin_shufflevector(v, v, l, l, l, l)
 
-/* One sample's contributions: w its weights (w0, w1, w2, 0), u, s and ds its position, sigmoid and derivative in
- * every lane. */
+/* One sample's contributions to the sums of fit_block (the derivatives' when deriv is set): w its weights (w0, w1,
+ * w2, 0), u, s and ds its position, sigmoid and derivative in every lane. */
 #define FIT_ADD_SAMPLE(w, u, s, ds)                                                                            \
     do {                                                                                                       \
         fit_v4d wd_ = (w) * (ds), wu_ = wd_ * (u);                                                             \
         out += (w) * (s);                                                                                      \
-        if (d) {                                                                                               \
+        if (deriv) {                                                                                           \
             d0 += wu_ * (u);                                                                                   \
             d1 += wu_;                                                                                         \
             d2 += wd_;                                                                                         \
@@ -90,7 +90,6 @@ static inline __attribute__((always_inline)) GSPECTRAL_TARGET_AVX2 void fit_bloc
 {
     const fit_v4d one = fit_splat(1.0), half = fit_splat(0.5), zero = fit_splat(0.0);
     fit_v4d out = sum->out, d0 = sum->d0, d1 = sum->d1, d2 = sum->d2;
-    int d = deriv;
     fit_v4d u = fit_load(f->u + k, m);
     fit_v4d x = (fit_splat(c[0]) * u + fit_splat(c[1])) * u + fit_splat(c[2]);
     fit_v4d q = one / (fit_v4d)_mm256_sqrt_pd((__m256d)(one + x * x));
