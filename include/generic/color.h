@@ -122,7 +122,8 @@ typedef struct GReradiation {
     const float *data;
 } GReradiation;
 
-/** A colour model instance: its class, its configuration and its sizes. */
+/** A colour model instance: its class, its configuration and its sizes. Made only by gcolormodel_create and
+ * gcolormodel_create_class (the library keeps more with it, past this struct) and freed by gcolormodel_destroy. */
 struct GColorModel {
     const GColorModelClass *cls;
     int nvalues;        /**< floats in a vector value */

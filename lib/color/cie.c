@@ -91,9 +91,16 @@ void gcie_xyz_to_rgb(const double xyz[3], double rgb[3])
 void gcie_nm_to_xyz(const GSpectrumNM *s, GColorRole role, double xyz[3])
 {
     ensure();
+    /* the samples outside the first and last that are not 0 add +0 or -0 to sums that start at +0, which leaves
+     * them as they are: skipped (a model's tables are made from spectra of one sample, or a few) */
+    int lo = 0, hi = GNM_COUNT;
+    while (lo < hi && s->v[lo] == 0.0f)
+        lo++;
+    while (hi > lo && s->v[hi - 1] == 0.0f)
+        hi--;
     double x = 0, y = 0, z = 0;
     if (role == GCOLOR_LIGHT) {
-        for (int i = 0; i < GNM_COUNT; i++) {
+        for (int i = lo; i < hi; i++) {
             x += (double)s->v[i] * gcie_xbar[i];
             y += (double)s->v[i] * gcie_ybar[i];
             z += (double)s->v[i] * gcie_zbar[i];
@@ -102,7 +109,7 @@ void gcie_nm_to_xyz(const GSpectrumNM *s, GColorRole role, double xyz[3])
         xyz[1] = y / T.sum_ybar;
         xyz[2] = z / T.sum_ybar;
     } else {
-        for (int i = 0; i < GNM_COUNT; i++) {
+        for (int i = lo; i < hi; i++) {
             double w = (double)s->v[i] * gcie_d65[i];
             x += w * gcie_xbar[i];
             y += w * gcie_ybar[i];

@@ -9,6 +9,19 @@
 #include <pthread.h>
 #include <string.h>
 
+/* What the library keeps with a model past its public struct (a model is only made here, so every GColorModel is
+ * the first member of one): gcolormodel_rgb_range's results per class role, measured once. A mutex guards them:
+ * models are shared by threads, and the measurement (seven uplifts, a fit each) runs once per role. */
+typedef struct ModelRecord {
+    GColorModel model;
+    pthread_mutex_t lock;
+    int ready;            /* set once init has succeeded: a range measured before that is not kept */
+    int have_range[2];    /* per class role (reflectance, light) */
+    double range[2][2];   /* lo, hi */
+} ModelRecord;
+
+static ModelRecord *record_of(const GColorModel *m) { return (ModelRecord *)(void *)m; }
+
 int gcolormodel_create_class(const GColorModelClass *cls, const GColorModelOptions *opt, GColorModel **out,
                              GError *err)
 {
@@ -26,9 +39,14 @@ int gcolormodel_create_class(const GColorModelClass *cls, const GColorModelOptio
         opt = &none;
     if (!isfinite(opt->step_nm) || !isfinite(opt->min_nm) || !isfinite(opt->max_nm) || opt->step_nm < 0)
         return gerror_set(err, G_ERR_INVALID, "colour model '%s': options must be finite and non-negative", cls->name);
-    GColorModel *m = gmem_calloc(1, sizeof *m);
-    if (!m)
+    ModelRecord *rec = gmem_calloc(1, sizeof *rec);
+    if (!rec)
         return gerror_set(err, G_ERR_NOMEM, "out of memory creating colour model '%s'", cls->name);
+    if (pthread_mutex_init(&rec->lock, NULL) != 0) {
+        gmem_free(rec);
+        return gerror_set(err, G_ERR_NOMEM, "out of resources creating colour model '%s'", cls->name);
+    }
+    GColorModel *m = &rec->model;
     m->cls = cls;
     int rc = cls->init(m, opt, err);
     if (rc == G_OK && (m->nvalues <= 0 || m->capacity < m->nvalues))
@@ -36,9 +54,11 @@ int gcolormodel_create_class(const GColorModelClass *cls, const GColorModelOptio
     if (rc != G_OK) {
         if (cls->fini)
             cls->fini(m);
-        gmem_free(m);
+        pthread_mutex_destroy(&rec->lock);
+        gmem_free(rec);
         return rc;
     }
+    rec->ready = 1;
     *out = m;
     return G_OK;
 }
@@ -49,7 +69,9 @@ void gcolormodel_destroy(GColorModel *m)
         return;
     if (m->cls->fini)
         m->cls->fini(m);
-    gmem_free(m);
+    ModelRecord *rec = record_of(m);
+    pthread_mutex_destroy(&rec->lock);
+    gmem_free(rec);
 }
 
 const char *gcolormodel_name(const GColorModel *m) { return m ? m->cls->name : "(none)"; }
@@ -542,7 +564,8 @@ double gcolor_band_value(const GColor *c, int band)
 
 /* ---- range after conversion ---- */
 
-int gcolormodel_rgb_range(const GColorModel *m, GColorRole role, double *lo, double *hi)
+/* gcolormodel_rgb_range's measurement. */
+static int measure_rgb_range(const GColorModel *m, GColorRole role, double *lo, double *hi)
 {
     *lo = 0.0;
     *hi = 0.0;
@@ -564,6 +587,22 @@ int gcolormodel_rgb_range(const GColorModel *m, GColorRole role, double *lo, dou
         }
     }
     gscratch_release(arena, mark);
+    return rc;
+}
+
+int gcolormodel_rgb_range(const GColorModel *m, GColorRole role, double *lo, double *hi)
+{
+    ModelRecord *rec = record_of(m);
+    int r = class_role(role) == GCOLOR_LIGHT;
+    pthread_mutex_lock(&rec->lock);
+    int rc = G_OK;
+    if (!rec->have_range[r]) {
+        rc = measure_rgb_range(m, class_role(role), &rec->range[r][0], &rec->range[r][1]);
+        rec->have_range[r] = rc == G_OK && rec->ready;
+    }
+    *lo = rc == G_OK ? rec->range[r][0] : 0.0;
+    *hi = rc == G_OK ? rec->range[r][1] : 0.0;
+    pthread_mutex_unlock(&rec->lock);
     return rc;
 }
 

@@ -12,6 +12,7 @@
 #include "generic/kit/spectral_kernels.h"
 #include "uplift.h"
 #include "uplift_fit.h"
+#include "uplift_memo.h"
 #include "colorspace_matrix.h"
 
 #include <math.h>
@@ -322,6 +323,11 @@ static void init_fit(GSpectral *s)
                 f[(1 + c) * n + k] = w[c * n + k] * light;
             f[4 * n + k] = light;
         }
+        for (int c = 0; c < 3; c++) { /* the white of guplift_refine, summed as it would */
+            f[5 * n + c] = 0.0;
+            for (int k = 0; k < n; k++)
+                f[5 * n + c] += f[(1 + c) * n + k];
+        }
     }
 }
 
@@ -355,7 +361,7 @@ int gspectral_init(GColorModel *m, GSpectral *s, GSpectralGrid grid, int linear_
         for (int role = 0; role < 2; role++) {
             s->xyz[role] = gmem_calloc(xyz_doubles(n), sizeof(double));
             s->rgb[role] = gmem_calloc((size_t)n * 3, sizeof(float));
-            s->fit[role] = gmem_calloc((size_t)n * 5, sizeof(double));
+            s->fit[role] = gmem_calloc((size_t)n * 5 + 3, sizeof(double));
             if (!s->xyz[role] || !s->rgb[role] || !s->fit[role])
                 rc = G_ERR_NOMEM;
         }
@@ -377,6 +383,7 @@ void gspectral_fini(GSpectral *s)
 {
     if (!s)
         return;
+    guplift_memo_forget_all(); /* another model may be made at this address */
     gspectral_resample_free(&s->from_nm);
     gspectral_resample_free(&s->to_nm);
     gmem_free(s->lum);
@@ -643,9 +650,8 @@ static int from_rgb_sigmoid(const GSpectral *s, const double rgb[3], GColorRole 
     const double *f = s->fit[light];
     const double *w[3] = {f + n, f + 2 * n, f + 3 * n};
     double left = 0.0;
-    rc = guplift_refine(&u, n, f, w, &left);
-    for (int k = 0; k < n; k++)
-        out[k] = (float)(guplift_sigmoid_at(&u, f[k]) * f[4 * n + k]);
+    rc = guplift_refine(&u, n, f, w, f + 5 * n, &left);
+    guplift_sigmoid_samples(&u, n, f, f + 4 * n, out);
     GSpectrumNM nm;
     double reach = 0.0;
     if (rc != G_OK || !(left > 1e-3) || guplift_rgb_to_nm(rgb, role, &nm, &reach) != G_OK || reach > 1e-3)
@@ -663,12 +669,29 @@ static int from_rgb_sigmoid(const GSpectral *s, const double rgb[3], GColorRole 
     return G_OK;
 }
 
+/* from_rgb_sigmoid through the thread's memo (lib/color/uplift_memo.h): an image texture's texels come back
+ * again and again, and each costs a fit; the memo holds exactly what the fit gave. */
+static int from_rgb_sigmoid_memo(const GSpectral *s, const double rgb[3], GColorRole role, float *out)
+{
+    int n = s->grid.n;
+    unsigned long epoch;
+    const float *kept = guplift_memo_find(s, (int)role, rgb, n, &epoch);
+    if (kept) {
+        memcpy(out, kept, (size_t)n * sizeof *out);
+        return G_OK;
+    }
+    int rc = from_rgb_sigmoid(s, rgb, role, out);
+    if (rc == G_OK)
+        guplift_memo_store(s, (int)role, rgb, n, out, epoch);
+    return rc;
+}
+
 int gspectral_from_rgb(const GColorModel *m, const double rgb[3], GColorRole role, GColor *out)
 {
     const GSpectral *s = m->priv;
     if (s->uplift != GCOLOR_UPLIFT_BASIS) {
         out->kind = GCOLOR_VECTOR;
-        return from_rgb_sigmoid(s, rgb, role, out->v);
+        return from_rgb_sigmoid_memo(s, rgb, role, out->v);
     }
     int n = m->nvalues;
     const float *b = s->rgb[role == GCOLOR_LIGHT];

@@ -6,9 +6,11 @@
 #include "uplift.h"
 #include "uplift_fit.h"
 #include "uplift_tables.h"
+#include "generic/kit/spectral_kernels.h"
 
 #include <math.h>
 #include <pthread.h>
+#include <string.h>
 
 static struct {
     double srgb_to[GUPLIFT_TABLES][3][3]; /* linear sRGB -> table space */
@@ -16,8 +18,9 @@ static struct {
     double u[GNM_COUNT], w[3][GNM_COUNT], white[3]; /* the 1 nm discretisation, reflectance under D65 */
 } U;
 
-static pthread_once_t once = PTHREAD_ONCE_INIT;
+static pthread_once_t once = PTHREAD_ONCE_INIT, once_nm = PTHREAD_ONCE_INIT;
 
+/* The table spaces' matrices (every uplift needs them). */
 static void init_uplift(void)
 {
     static const int space[GUPLIFT_TABLES] = {GCOLORSPACE_SRGB, GCOLORSPACE_REC2020, GCOLORSPACE_ACES2065_1};
@@ -30,6 +33,11 @@ static void init_uplift(void)
             for (int c = 0; c < 3; c++)
                 U.srgb_to[t][r][c] = inv[r][0] * srgb[0][c] + inv[r][1] * srgb[1][c] + inv[r][2] * srgb[2][c];
     }
+}
+
+/* The 1 nm discretisation (guplift_rgb_to_nm alone needs it). */
+static void init_uplift_nm(void)
+{
     GSpectrumNM e;
     for (int i = 0; i < GNM_COUNT; i++)
         e.v[i] = 0.0f;
@@ -136,13 +144,61 @@ double guplift_sigmoid_at(const GUplift *u, double x)
     return u->scale * guplift_sigmoid((u->c[0] * x + u->c[1]) * x + u->c[2]);
 }
 
+void guplift_sigmoid_samples_scalar(const GUplift *u, int n, const double *x, const double *f, float *out)
+{
+    for (int k = 0; k < n; k++)
+        out[k] = (float)(guplift_sigmoid_at(u, x[k]) * f[k]);
+}
+
+#ifdef GSPECTRAL_AVX2
+typedef double upl_v4d __attribute__((vector_size(32)));
+typedef long long upl_v4l __attribute__((vector_size(32)));
+
+/* guplift_sigmoid_samples_scalar on 4 samples a vector: the same operations (guplift_sigmoid's, then the scale and
+ * f, then the rounding to float), so the same bits; an infinite polynomial gives S's limits as guplift_sigmoid does. */
+static GSPECTRAL_TARGET_AVX2 void sigmoid_samples_avx2(const GUplift *u, int n, const double *x, const double *f,
+                                                       float *out)
+{
+    const upl_v4d c0 = {u->c[0], u->c[0], u->c[0], u->c[0]}, c1 = {u->c[1], u->c[1], u->c[1], u->c[1]};
+    const upl_v4d c2 = {u->c[2], u->c[2], u->c[2], u->c[2]}, scale = {u->scale, u->scale, u->scale, u->scale};
+    const upl_v4d one = {1, 1, 1, 1}, half = {0.5, 0.5, 0.5, 0.5}, zero = {0, 0, 0, 0};
+    const upl_v4d inf = {INFINITY, INFINITY, INFINITY, INFINITY};
+    int k = 0;
+    for (; k + 4 <= n; k += 4) {
+        upl_v4d xv, fv;
+        memcpy(&xv, x + k, sizeof xv);
+        memcpy(&fv, f + k, sizeof fv);
+        upl_v4d p = (c0 * xv + c1) * xv + c2;
+        upl_v4d sig = half + half * p / (upl_v4d)_mm256_sqrt_pd((__m256d)(one + p * p));
+        upl_v4l infinite = (p == inf) | (p == -inf);
+        upl_v4d limit = (upl_v4d)((upl_v4l)one & (p > zero));
+        sig = (upl_v4d)(((upl_v4l)limit & infinite) | ((upl_v4l)sig & ~infinite));
+        __m128 r = _mm256_cvtpd_ps((__m256d)(scale * sig * fv));
+        memcpy(out + k, &r, sizeof r);
+    }
+    guplift_sigmoid_samples_scalar(u, n - k, x + k, f + k, out + k);
+}
+#endif
+
+void guplift_sigmoid_samples(const GUplift *u, int n, const double *x, const double *f, float *out)
+{
+#ifdef GSPECTRAL_AVX2
+    if (__builtin_cpu_supports("avx2")) {
+        sigmoid_samples_avx2(u, n, x, f, out);
+        return;
+    }
+#endif
+    guplift_sigmoid_samples_scalar(u, n, x, f, out);
+}
+
 double guplift_value(const GUplift *u, double nm)
 {
     double s = guplift_sigmoid_at(u, (nm - GUPLIFT_NM0) / GUPLIFT_NM_SPAN);
     return u->light ? s * gcie_illuminant("D65", nm) : s;
 }
 
-int guplift_refine(GUplift *u, int n, const double *x, const double *const w[3], double *delta_e)
+int guplift_refine(GUplift *u, int n, const double *x, const double *const w[3], const double white[3],
+                   double *delta_e)
 {
     if (u->c[0] == 0.0 && u->c[1] == 0.0 && isinf(u->c[2])) { /* black or white: exact already */
         if (delta_e)
@@ -150,9 +206,13 @@ int guplift_refine(GUplift *u, int n, const double *x, const double *const w[3],
         return G_OK;
     }
     GUpliftFit f = {n, x, {w[0], w[1], w[2]}, {0, 0, 0}};
-    for (int c = 0; c < 3; c++)
-        for (int k = 0; k < n; k++)
-            f.white[c] += w[c][k];
+    for (int c = 0; c < 3; c++) {
+        if (white)
+            f.white[c] = white[c];
+        else
+            for (int k = 0; k < n; k++)
+                f.white[c] += w[c][k];
+    }
     double d = guplift_fit_solve(&f, u->xyz, u->c, 20, 2e-5);
     if (delta_e)
         *delta_e = d;
@@ -165,8 +225,9 @@ int guplift_rgb_to_nm(const double srgb[3], GColorRole role, GSpectrumNM *out, d
     int rc = guplift_from_rgb(srgb, role, &u);
     if (rc != G_OK)
         return rc;
+    pthread_once(&once_nm, init_uplift_nm);
     const double *w[3] = {U.w[0], U.w[1], U.w[2]};
-    rc = guplift_refine(&u, GNM_COUNT, U.u, w, delta_e);
+    rc = guplift_refine(&u, GNM_COUNT, U.u, w, U.white, delta_e);
     for (int i = 0; i < GNM_COUNT; i++)
         out->v[i] = (float)guplift_value(&u, GNM_MIN + i);
     return rc;

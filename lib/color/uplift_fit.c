@@ -1,7 +1,10 @@
 /* uplift_fit.c - Levenberg-Marquardt fit of a sigmoid-polynomial reflectance to a colour (uplift_fit.h). The
  * residual is the CIELAB difference (as in Jakob and Hanika's optimiser: dark and light colours weigh alike),
- * its Jacobian analytic: one pass over the samples gives XYZ and its derivatives by the three coefficients. */
+ * its Jacobian analytic: one pass over the samples gives XYZ and its derivatives by the three coefficients. That
+ * pass has two bodies, scalar and (on x86-64) AVX2, with the same results bit for bit, bound when the library is
+ * loaded as the spectral kernels are (generic/kit/spectral_kernels.h). */
 #include "uplift_fit.h"
+#include "generic/kit/spectral_kernels.h"
 
 #include <math.h>
 #include <string.h>
@@ -13,8 +16,9 @@ double guplift_sigmoid(double x)
     return 0.5 + 0.5 * x / sqrt(1.0 + x * x);
 }
 
-/* XYZ of S(c) and, when d is not NULL, d[j][a] = dXYZ_j / dc_a. */
-static void eval_xyz(const GUpliftFit *f, const double c[3], double xyz[3], double d[3][3])
+/* XYZ of S(c) and, when d is not NULL, d[j][a] = dXYZ_j / dc_a. Every sum runs over the samples in order, one
+ * double addition a sample: the vector body below keeps that order, so the two give the same bits. */
+static void eval_xyz_scalar(const GUpliftFit *f, const double c[3], double xyz[3], double d[3][3])
 {
     double out[3] = {0, 0, 0}, dd[3][3] = {{0}};
     for (int k = 0; k < f->n; k++) {
@@ -36,6 +40,105 @@ static void eval_xyz(const GUpliftFit *f, const double c[3], double xyz[3], doub
     if (d)
         memcpy(d, dd, sizeof dd);
 }
+
+#ifdef GSPECTRAL_AVX2
+/* 4 doubles in one AVX register. */
+typedef double fit_v4d __attribute__((vector_size(32)));
+
+static inline GSPECTRAL_TARGET_AVX2 fit_v4d fit_splat(double x) { return (fit_v4d){x, x, x, x}; }
+
+/* The 4 doubles from p, the lanes from `count` on 0 (count 1..4). */
+static inline __attribute__((always_inline)) GSPECTRAL_TARGET_AVX2 fit_v4d fit_load(const double *p, int count)
+{
+    fit_v4d v;
+    if (count == 4) {
+        memcpy(&v, p, sizeof v);
+        return v;
+    }
+    double t[4] = {0, 0, 0, 0};
+    for (int i = 0; i < count; i++)
+        t[i] = p[i];
+    memcpy(&v, t, sizeof v);
+    return v;
+}
+
+/* Lane l of v in every lane. */
+#define FIT_LANE(v, l) __builtin_shufflevector(v, v, l, l, l, l)
+
+/* One sample's contributions to the sums of fit_block (the derivatives' when deriv is set): w its weights (w0, w1,
+ * w2, 0), u, s and ds its position, sigmoid and derivative in every lane. */
+#define FIT_ADD_SAMPLE(w, u, s, ds)                                                                            \
+    do {                                                                                                       \
+        fit_v4d wd_ = (w) * (ds), wu_ = wd_ * (u);                                                             \
+        out += (w) * (s);                                                                                      \
+        if (deriv) {                                                                                           \
+            d0 += wu_ * (u);                                                                                   \
+            d1 += wu_;                                                                                         \
+            d2 += wd_;                                                                                         \
+        }                                                                                                      \
+    } while (0)
+
+/* The accumulators of eval_xyz_avx2: lanes 0-2 the three tristimulus values. */
+typedef struct FitSums {
+    fit_v4d out, d0, d1, d2;
+} FitSums;
+
+/* Adds the samples k..k+m-1 (m 1..4; inlined with m constant for the whole blocks). */
+static inline __attribute__((always_inline)) GSPECTRAL_TARGET_AVX2 void fit_block(const GUpliftFit *f, int k, int m,
+                                                                                const double c[3], int deriv,
+                                                                                FitSums *sum)
+{
+    const fit_v4d one = fit_splat(1.0), half = fit_splat(0.5), zero = fit_splat(0.0);
+    fit_v4d out = sum->out, d0 = sum->d0, d1 = sum->d1, d2 = sum->d2;
+    fit_v4d u = fit_load(f->u + k, m);
+    fit_v4d x = (fit_splat(c[0]) * u + fit_splat(c[1])) * u + fit_splat(c[2]);
+    fit_v4d q = one / (fit_v4d)_mm256_sqrt_pd((__m256d)(one + x * x));
+    fit_v4d s = half * x * q + half, ds = half * q * q * q;
+    /* the weights of the 4 samples, one vector per sample: (w0, w1, w2, 0) */
+    fit_v4d a = fit_load(f->w[0] + k, m), b = fit_load(f->w[1] + k, m), e = fit_load(f->w[2] + k, m);
+    fit_v4d ab02 = __builtin_shufflevector(a, b, 0, 4, 2, 6), ab13 = __builtin_shufflevector(a, b, 1, 5, 3, 7);
+    fit_v4d e02 = __builtin_shufflevector(e, zero, 0, 4, 2, 6), e13 = __builtin_shufflevector(e, zero, 1, 5, 3, 7);
+    FIT_ADD_SAMPLE(__builtin_shufflevector(ab02, e02, 0, 1, 4, 5), FIT_LANE(u, 0), FIT_LANE(s, 0), FIT_LANE(ds, 0));
+    if (m > 1)
+        FIT_ADD_SAMPLE(__builtin_shufflevector(ab13, e13, 0, 1, 4, 5), FIT_LANE(u, 1), FIT_LANE(s, 1),
+                       FIT_LANE(ds, 1));
+    if (m > 2)
+        FIT_ADD_SAMPLE(__builtin_shufflevector(ab02, e02, 2, 3, 6, 7), FIT_LANE(u, 2), FIT_LANE(s, 2),
+                       FIT_LANE(ds, 2));
+    if (m > 3)
+        FIT_ADD_SAMPLE(__builtin_shufflevector(ab13, e13, 2, 3, 6, 7), FIT_LANE(u, 3), FIT_LANE(s, 3),
+                       FIT_LANE(ds, 3));
+    *sum = (FitSums){out, d0, d1, d2};
+}
+
+/* eval_xyz_scalar on AVX2: the per-sample terms (sigmoid, derivative) of 4 samples in 4 lanes, then each sample's
+ * contributions added to accumulators whose lanes are the three tristimulus values (lane 3 unused), sample after
+ * sample: the same operations in the same order as the scalar body, on every lane, so the same bits. */
+static GSPECTRAL_TARGET_AVX2 void eval_xyz_avx2(const GUpliftFit *f, const double c[3], double xyz[3],
+                                                double d[3][3])
+{
+    FitSums sum = {fit_splat(0.0), fit_splat(0.0), fit_splat(0.0), fit_splat(0.0)};
+    int k = 0;
+    if (d)
+        for (; k + 4 <= f->n; k += 4)
+            fit_block(f, k, 4, c, 1, &sum);
+    else
+        for (; k + 4 <= f->n; k += 4)
+            fit_block(f, k, 4, c, 0, &sum);
+    if (k < f->n)
+        fit_block(f, k, f->n - k, c, d != NULL, &sum);
+    for (int j = 0; j < 3; j++) {
+        xyz[j] = sum.out[j];
+        if (d) {
+            d[j][0] = sum.d0[j];
+            d[j][1] = sum.d1[j];
+            d[j][2] = sum.d2[j];
+        }
+    }
+}
+#undef FIT_ADD_SAMPLE
+#undef FIT_LANE
+#endif
 
 static double lab_f(double t, double *dt)
 {
@@ -66,12 +169,16 @@ static void lab(const double xyz[3], const double white[3], double out[3], doubl
     }
 }
 
+/* One of the bodies of eval_xyz. */
+typedef void FitEval(const GUpliftFit *f, const double c[3], double xyz[3], double d[3][3]);
+
 /* Residual r = Lab(target) - Lab(fit of c) and, when jac is not NULL, dr / dc. Returns |r|^2. */
-static double residual(const GUpliftFit *f, const double target_lab[3], const double c[3], double r[3],
-                       double jac[3][3])
+static inline __attribute__((always_inline)) double residual(FitEval *eval, const GUpliftFit *f,
+                                                             const double target_lab[3], const double c[3],
+                                                             double r[3], double jac[3][3])
 {
     double xyz[3], d[3][3], l[3], dl[3][3];
-    eval_xyz(f, c, xyz, jac ? d : NULL);
+    eval(f, c, xyz, jac ? d : NULL);
     lab(xyz, f->white, l, jac ? dl : NULL);
     for (int j = 0; j < 3; j++)
         r[j] = target_lab[j] - l[j];
@@ -100,11 +207,14 @@ static int solve3(const double m[3][3], const double v[3], double x[3])
     return 0;
 }
 
-double guplift_fit_solve(const GUpliftFit *f, const double xyz[3], double c[3], int iterations, double tolerance)
+/* guplift_fit_solve with the XYZ evaluation eval (inlined into each body). */
+static inline __attribute__((always_inline)) double fit_solve(FitEval *eval, const GUpliftFit *f,
+                                                              const double xyz[3], double c[3], int iterations,
+                                                              double tolerance)
 {
     double target[3], r[3], jac[3][3];
     lab(xyz, f->white, target, NULL);
-    double cost = residual(f, target, c, r, jac), damping = 1e-3;
+    double cost = residual(eval, f, target, c, r, jac), damping = 1e-3;
     for (int it = 0; it < iterations && cost > tolerance * tolerance; it++) {
         double a[3][3], g[3];
         for (int i = 0; i < 3; i++) {
@@ -124,7 +234,7 @@ double guplift_fit_solve(const GUpliftFit *f, const double xyz[3], double c[3], 
             }
             /* the trial's residual and Jacobian in one pass: an accepted step needs no second */
             double trial[3] = {c[0] - step[0], c[1] - step[1], c[2] - step[2]}, tr[3], tj[3][3];
-            double tc = residual(f, target, trial, tr, tj);
+            double tc = residual(eval, f, target, trial, tr, tj);
             if (tc < cost) {
                 memcpy(c, trial, sizeof trial);
                 memcpy(r, tr, sizeof tr);
@@ -141,3 +251,34 @@ double guplift_fit_solve(const GUpliftFit *f, const double xyz[3], double c[3], 
     }
     return sqrt(cost);
 }
+
+static double guplift_fit_solve_v4(const GUpliftFit *f, const double xyz[3], double c[3], int iterations,
+                                   double tolerance)
+{
+    return fit_solve(eval_xyz_scalar, f, xyz, c, iterations, tolerance);
+}
+
+double guplift_fit_solve_scalar(const GUpliftFit *f, const double xyz[3], double c[3], int iterations,
+                                double tolerance)
+{
+    return guplift_fit_solve_v4(f, xyz, c, iterations, tolerance);
+}
+
+#ifdef GSPECTRAL_AVX2
+static GSPECTRAL_TARGET_AVX2 double guplift_fit_solve_v8(const GUpliftFit *f, const double xyz[3], double c[3],
+                                                         int iterations, double tolerance)
+{
+    return fit_solve(eval_xyz_avx2, f, xyz, c, iterations, tolerance);
+}
+
+GSPECTRAL_PICK(guplift_fit_solve);
+
+int guplift_fit_vectorised(void) { return gspectral_have_avx2(); }
+#else
+double guplift_fit_solve(const GUpliftFit *f, const double xyz[3], double c[3], int iterations, double tolerance)
+{
+    return guplift_fit_solve_v4(f, xyz, c, iterations, tolerance);
+}
+
+int guplift_fit_vectorised(void) { return 0; }
+#endif

@@ -26,5 +26,11 @@ double guplift_sigmoid(double x);
  * (within tolerance for a colour sigmoid spectra reach; the distance to the nearest reachable colour outside their
  * gamut). */
 double guplift_fit_solve(const GUpliftFit *f, const double xyz[3], double c[3], int iterations, double tolerance);
+/** guplift_fit_solve on the scalar body, whatever the processor: the same results bit for bit (for the test that
+ * compares the bodies). */
+double guplift_fit_solve_scalar(const GUpliftFit *f, const double xyz[3], double c[3], int iterations,
+                                double tolerance);
+/** 1 when guplift_fit_solve runs the vector (AVX2) body on this processor, 0 when it runs the scalar one. */
+int guplift_fit_vectorised(void);
 
 #endif

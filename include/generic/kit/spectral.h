@@ -63,9 +63,9 @@ typedef struct GSpectral {
     float *rgb[2];             /**< per GColorRole: 3 * n RGB basis on the grid, corrected so the round trip
                                     rgb -> model -> rgb is exact */
     int uplift;                /**< a GColorUplift: how from_rgb makes spectra (0: sigmoid) */
-    double *fit[2];            /**< per GColorRole: the sigmoid uplift's discretisation, 5 * n: the normalised
-                                    wavelengths, the three XYZ weights (a light's times D65), the D65 factor (1
-                                    for a reflectance) */
+    double *fit[2];            /**< per GColorRole: the sigmoid uplift's discretisation, 5 * n + 3: the
+                                    normalised wavelengths, the three XYZ weights (a light's times D65), the D65
+                                    factor (1 for a reflectance), the sums of the three weights (the white) */
 } GSpectral;
 
 /** A sanity limit on a grid's samples (300..830 nm at 1 nm has 531). */
@@ -172,7 +172,9 @@ GENERIC_API const float *gspectral_xyz_floats(const GSpectral *s, GColorRole rol
 /** A vector from linear sRGB: by default the sigmoid uplift (generic/colorspace.h) evaluated at the grid's
  * wavelengths, its coefficients refined against the model's own colour matching weights (so the round trip with
  * to_xyz is exact wherever sigmoid spectra reach the colour, and a reflectance of the sRGB cube stays within
- * [0, 1]); with the uplift GCOLOR_UPLIFT_BASIS, through the corrected RGB basis (exact round trip, linear). */
+ * [0, 1]); with the uplift GCOLOR_UPLIFT_BASIS, through the corrected RGB basis (exact round trip, linear). Each
+ * thread keeps the sigmoid spectra it last made, keyed by the exact model, role and colour (a texture's repeated
+ * texels cost a copy); gspectral_fini forgets them, so a kit model is freed through it. */
 GENERIC_API GENERIC_NODISCARD int gspectral_from_rgb(const GColorModel *m, const double rgb[3], GColorRole role,
                                                      GColor *out);
 
