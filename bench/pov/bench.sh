@@ -149,6 +149,15 @@ while [ $r -lt "$RUNS" ]; do
     r=$((r + 1))
 done
 
+# ---- the intersection-only limit (isect_limit.c): the render's own rays cast again with no shading, 1 thread,
+# RUNS interleaved rounds of its own, through the direct list gtrace takes for this scene and through Embree ----
+LIMIT="$BUILD/bench/isect_limit"
+if [ -x "$LIMIT" ]; then
+    "$LIMIT" "$DIR/scene.scene" --rounds "$RUNS" > "$TMP/limit.out" 2>&1 &&
+        "$LIMIT" "$DIR/scene.scene" --rounds "$RUNS" --embree > "$TMP/limit_embree.out" 2>&1 ||
+        echo "bench-pov: isect_limit failed: $(cat "$TMP/limit.out" "$TMP/limit_embree.out" 2> /dev/null)"
+fi
+
 # ---- 3. report ----
 echo "== gtrace vs POV-Ray: $(nproc) processors, $idle; $RUNS interleaved rounds (bench/README.md)"
 printf "%-20s %8s %8s %9s %8s\n" "least-CPU run" "wall s" "cpu s" "render s" "peak MB"
@@ -182,6 +191,17 @@ fi
 echo "colour models / rgb, medians: render time spectrum9 $(median render_spectrum9), spectrum $(median render_spectrum), \
 bispectral $(median render_bispectral); process CPU spectrum9 $(median cpu_spectrum9), spectrum $(median cpu_spectrum), \
 bispectral $(median cpu_bispectral) (targets 1.1, 1.15, 1.3)"
+# limit_line OUT: "ns per ray render, limit; ratio median (min-max)" from isect_limit's report
+limit_line() {
+    sed -n 's/.*Whitted render \([0-9.]*\), intersection only \([0-9.]*\); .*median of the rounds \([0-9.]*\) (min-max \([0-9.-]*\)).*/\1 ns against \2 ns a ray: \3x (\4)/p' "$TMP/$1.out"
+}
+if [ -s "$TMP/limit.out" ] && [ -s "$TMP/limit_embree.out" ]; then
+    gt_ns=$(awk -v t="$(gt_render gt_rgb_1 out)" -v r="$(sed -n 's/.* \([0-9.]*\) M rays,.*/\1/p' "$TMP/gt_rgb_1.out")" \
+        'BEGIN { if (r > 0) printf "%.0f", 1e3 * t / r; else print "n/a" }')
+    echo "time per ray against the intersection-only limit (bench/pov/isect_limit, the render's own $(sed -n 's/.*thread: \([0-9]*\) rays.*/\1/p' "$TMP/limit.out") rays cast again without shading, 1 thread, CPU, median of $RUNS rounds; target <= 1.5):"
+    echo "  direct list (gtrace's way for this scene): $(limit_line limit); through Embree: $(limit_line limit_embree)"
+    echo "  gtrace rgb 1 thread above: $gt_ns ns a ray (render wall time over its rays)"
+fi
 echo "speed-up from 1 to 2 threads (render time, median): $(median threads) at 800x600, $(median threads_big) at 1600x1200 (target >= 1.9 on an idle machine)"
 echo "load check (200,000 named spheres, 1,000 materials; parse and build, 1x1 render; least-CPU run): $(field gt_load 2) s CPU, $(field gt_load 1) s wall, $(awk -v k="$(field gt_load 3)" 'BEGIN { printf "%.0f", k / 1024 }') MB (target <= 2 s)"
 echo "start-up (gtrace --help, least CPU): $(field gt_start 2) s CPU, $(awk -v k="$(field gt_start 3)" 'BEGIN { printf "%.1f", k / 1024 }') MB (make bench runs bench_startup for the details)"

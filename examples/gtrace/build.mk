@@ -49,6 +49,14 @@ bench-pov: $(BUILD)/bin/gtrace $(BUILD)/bench/runstat
 $(BUILD)/bench/runstat: bench/pov/runstat.c
 	@mkdir -p $(dir $@)
 	$(CC) -std=c11 -O2 -Wall -Wextra -Werror -o $@ $<
+# the intersection-only limit (bench/pov/isect_limit.c): the tracer's accel_intersect and accel_occluded reached
+# through the linker's --wrap, which records the rays a render casts
+bench-pov: $(BUILD)/bench/isect_limit
+$(BUILD)/obj/bench/pov/isect_limit.o: CPPFLAGS += -Iexamples/gtrace
+$(BUILD)/bench/isect_limit: $(BUILD)/obj/bench/pov/isect_limit.o $(GTRACE_LIB) $(LIBA) | $(OIIO_SO)
+	@mkdir -p $(dir $@)
+	$(CC) -o $@ $< -Wl,--wrap=accel_intersect -Wl,--wrap=accel_occluded $(GTRACE_LIB) $(LIBA) $(LDFLAGS) \
+	    $(GTRACE_DEPLIBS) $(DEPLIBS)
 .PHONY: bench-dispersion
 bench-dispersion: $(BUILD)/bin/gtrace
 	@bench/dispersion.sh $(BUILD)
