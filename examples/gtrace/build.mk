@@ -3,7 +3,11 @@
 # link; Embree and assimp for them; the MPI module; and the benchmarks that run gtrace.
 GTRACE_SRC := $(sort $(wildcard examples/gtrace/*/*.c))
 GTRACE_LIB := $(BUILD)/lib/libgtrace.a
-GTRACE_DEPLIBS := -lembree3 -lassimp
+# assimp is not linked: geometry/mesh_assimp_lib.c loads it by its soname on the first PLY, STL or glTF file read
+# in the process (a scene without one never maps it)
+GTRACE_DEPLIBS := -lembree3
+ASSIMP_SONAME := $(shell objdump -p "$$($(CC) -print-file-name=libassimp.so)" 2>/dev/null | sed -n 's/^ *SONAME *//p')
+$(call objs_of,examples/gtrace/geometry/mesh_assimp_lib.o): CPPFLAGS += -DGTRACE_ASSIMP_SONAME='"$(ASSIMP_SONAME)"'
 all: $(GTRACE_LIB)
 
 $(GTRACE_LIB): $(GTRACE_SRC:%.c=$(BUILD)/obj/%.o)
