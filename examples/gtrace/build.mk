@@ -7,7 +7,8 @@ GTRACE_LIB := $(BUILD)/lib/libgtrace.a
 # in the process (a scene without one never maps it)
 GTRACE_DEPLIBS := -lembree3
 ASSIMP_SONAME := $(shell objdump -p "$$($(CC) -print-file-name=libassimp.so)" 2>/dev/null | sed -n 's/^ *SONAME *//p')
-$(call objs_of,examples/gtrace/geometry/mesh_assimp_lib.o): CPPFLAGS += -DGTRACE_ASSIMP_SONAME='"$(ASSIMP_SONAME)"'
+$(call objs_of,examples/gtrace/geometry/mesh_assimp_lib.o): \
+    CPPFLAGS += $(if $(ASSIMP_SONAME),-DGTRACE_ASSIMP_SONAME='"$(ASSIMP_SONAME)"')
 all: $(GTRACE_LIB)
 
 $(GTRACE_LIB): $(GTRACE_SRC:%.c=$(BUILD)/obj/%.o)
