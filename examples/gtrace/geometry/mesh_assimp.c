@@ -27,7 +27,7 @@
 
 int mesh_assimp_reads_extension(const char *ext)
 {
-    const AssimpLib *ai = assimp_lib(NULL);
+    const MeshAssimpLib *ai = mesh_assimp_lib(NULL);
     return ai && ai->is_extension_supported(ext) == AI_TRUE;
 }
 
@@ -67,7 +67,7 @@ static int read_whole(const char *path, int fd, char **buf, size_t *size, size_t
 
 /* The scene assimp makes of a PLY or STL file: read whole, checked, and handed to assimp from memory (a PLY file
  * as mesh_ply_check rewrote it: its header in front of the body), so that assimp reads the bytes that were checked. */
-static int import_checked(const AssimpLib *ai, const char *path, int fd, MeshFormat format, unsigned flags,
+static int import_checked(const MeshAssimpLib *ai, const char *path, int fd, MeshFormat format, unsigned flags,
                           const struct aiScene **sc, GError *err)
 {
     char *buf = NULL, *header = NULL;
@@ -211,7 +211,7 @@ static int indices_ok(const struct aiScene *sc)
 /* The scene assimp makes of a glTF file: read whole (a file of JSON at most JSON_MAX_BYTES), checked, and handed to
  * assimp under a name with the extension of its content (assimp picks its reader by the name first), from memory;
  * the buffer files it names are opened by files' rules. */
-static int import_gltf(const AssimpLib *ai, const char *path, int fd, unsigned flags, const MeshFiles *files,
+static int import_gltf(const MeshAssimpLib *ai, const char *path, int fd, unsigned flags, const MeshFiles *files,
                        const struct aiScene **sc, GError *err)
 {
     unsigned char magic[4] = {0};
@@ -294,7 +294,7 @@ int mesh_load_assimp(Object *o, const char *path, int fd, MeshFormat format, con
     unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_ValidateDataStructure;
     const struct aiScene *sc = NULL;
     GError why;
-    const AssimpLib *ai = assimp_lib(&why);
+    const MeshAssimpLib *ai = mesh_assimp_lib(&why);
     if (!ai) {
         close(fd);
         return gerror_set(err, why.code, "%s: %s", path, why.message);

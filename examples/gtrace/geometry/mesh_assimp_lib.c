@@ -11,12 +11,12 @@
 #define GTRACE_ASSIMP_SONAME "libassimp.so.5"
 #endif
 
-static AssimpLib lib;
+static MeshAssimpLib lib;
 static int loaded;
 static char why[256];
 static pthread_once_t once = PTHREAD_ONCE_INIT;
 
-/* *slot = the symbol name of the library h; 0 when it lacks it (why says so). */
+/* Sets *slot (size bytes: a function pointer) to the library h's symbol name: 1; 0 when h lacks it (why says so). */
 static int find(void *h, const char *name, void *slot, size_t size)
 {
     void *f = dlsym(h, name);
@@ -36,7 +36,7 @@ static void load(void)
         snprintf(why, sizeof why, "%s", e ? e : "not found");
         return;
     }
-    AssimpLib l;
+    MeshAssimpLib l;
     loaded = find(h, "aiImportFileEx", &l.import_file_ex, sizeof l.import_file_ex) &&
              find(h, "aiImportFileFromMemory", &l.import_file_from_memory, sizeof l.import_file_from_memory) &&
              find(h, "aiReleaseImport", &l.release_import, sizeof l.release_import) &&
@@ -48,7 +48,7 @@ static void load(void)
         dlclose(h);
 }
 
-const AssimpLib *assimp_lib(GError *err)
+const MeshAssimpLib *mesh_assimp_lib(GError *err)
 {
     pthread_once(&once, load);
     if (loaded)

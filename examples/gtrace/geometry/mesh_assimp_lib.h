@@ -9,16 +9,16 @@
 #include <assimp/cimport.h>
 
 /** assimp's functions of the same names and types (assimp/cimport.h). */
-typedef struct AssimpLib {
+typedef struct MeshAssimpLib {
     __typeof__(&aiImportFileEx) import_file_ex;
     __typeof__(&aiImportFileFromMemory) import_file_from_memory;
     __typeof__(&aiReleaseImport) release_import;
     __typeof__(&aiGetErrorString) get_error_string;
     __typeof__(&aiIsExtensionSupported) is_extension_supported;
-} AssimpLib;
+} MeshAssimpLib;
 
 /** The functions, from the library loaded once per process (thread-safe; never unloaded). NULL when it cannot be
  * loaded or lacks one of them, with err (may be NULL) set to G_ERR_UNSUPPORTED naming the library and why. */
-const AssimpLib *assimp_lib(GError *err);
+const MeshAssimpLib *mesh_assimp_lib(GError *err);
 
 #endif

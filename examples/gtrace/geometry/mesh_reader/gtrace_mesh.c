@@ -124,7 +124,7 @@ int main(int argc, char **argv)
         return 2;
     /* assimp loaded before the limits: the dynamic loader opens and maps its files (and writes LD_DEBUG_OUTPUT's) */
     GError err = {0};
-    if (!assimp_lib(&err))
+    if (!mesh_assimp_lib(&err))
         return send_error(&err) != 0;
     limit(RLIMIT_CORE, 0, 0);
     limit(RLIMIT_FSIZE, 0, 0); /* no file written */
