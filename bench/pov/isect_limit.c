@@ -15,7 +15,8 @@
  * The recording sees the rays through the linker: the program is linked with --wrap for accel_intersect and
  * accel_occluded (examples/gtrace/build.mk), so the tracer's calls reach __wrap_*, which append the ray when
  * recording and pass it on to __real_*; the tracer itself is the unchanged libgtrace.a. The timed renders run
- * with recording off: one predictable branch per ray more than gtrace. */
+ * with recording off: one predictable branch per ray more than gtrace. The recording holds 72 bytes a ray (110 MB
+ * for the bench scene at 800x600; its array grows by doubling). */
 #include "embed/render_file.h"
 #include "render/render.h"
 #include "scene/accel.h"
