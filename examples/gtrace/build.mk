@@ -3,7 +3,12 @@
 # link; Embree and assimp for them; the MPI module; and the benchmarks that run gtrace.
 GTRACE_SRC := $(sort $(wildcard examples/gtrace/*/*.c))
 GTRACE_LIB := $(BUILD)/lib/libgtrace.a
-GTRACE_DEPLIBS := -lembree3 -lassimp
+# assimp is not linked: geometry/mesh_assimp_lib.c loads it by its soname on the first PLY, STL or glTF file read
+# in the process (a scene without one never maps it)
+GTRACE_DEPLIBS := -lembree3
+ASSIMP_SONAME := $(shell objdump -p "$$($(CC) -print-file-name=libassimp.so)" 2>/dev/null | sed -n 's/^ *SONAME *//p')
+$(call objs_of,examples/gtrace/geometry/mesh_assimp_lib.o): \
+    CPPFLAGS += $(if $(ASSIMP_SONAME),-DGTRACE_ASSIMP_SONAME='"$(ASSIMP_SONAME)"')
 all: $(GTRACE_LIB)
 
 $(GTRACE_LIB): $(GTRACE_SRC:%.c=$(BUILD)/obj/%.o)
@@ -49,6 +54,14 @@ bench-pov: $(BUILD)/bin/gtrace $(BUILD)/bench/runstat
 $(BUILD)/bench/runstat: bench/pov/runstat.c
 	@mkdir -p $(dir $@)
 	$(CC) -std=c11 -O2 -Wall -Wextra -Werror -o $@ $<
+# the intersection-only limit (bench/pov/isect_limit.c): the tracer's accel_intersect and accel_occluded reached
+# through the linker's --wrap, which records the rays a render casts
+bench-pov: $(BUILD)/bench/isect_limit
+$(BUILD)/obj/bench/pov/isect_limit.o: CPPFLAGS += -Iexamples/gtrace
+$(BUILD)/bench/isect_limit: $(BUILD)/obj/bench/pov/isect_limit.o $(GTRACE_LIB) $(LIBA) | $(OIIO_SO)
+	@mkdir -p $(dir $@)
+	$(CC) -o $@ $< -Wl,--wrap=accel_intersect -Wl,--wrap=accel_occluded $(GTRACE_LIB) $(LIBA) $(LDFLAGS) \
+	    $(GTRACE_DEPLIBS) $(DEPLIBS)
 .PHONY: bench-dispersion
 bench-dispersion: $(BUILD)/bin/gtrace
 	@bench/dispersion.sh $(BUILD)

@@ -3,13 +3,13 @@
  * the surface index of its triangles. A file is checked whole first (mesh_ply.c, mesh_stl.c, mesh_gltf.c) and assimp
  * reads the checked bytes; the files a glTF file names go through mesh_assimp_io.c. OBJ stays with mesh.c's own
  * reader; mesh_format.c picks the reader. */
+#include "mesh_assimp_lib.h"
 #include "mesh_assimp_io.h"
 #include "mesh_format.h"
 #include "mesh_json.h"
 
 #include <generic/memory.h>
 
-#include <assimp/cimport.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -25,7 +25,11 @@
  * than the file's own, and goes there in front of the body. */
 #define MESH_HEADROOM 16
 
-int mesh_assimp_reads_extension(const char *ext) { return aiIsExtensionSupported(ext) == AI_TRUE; }
+int mesh_assimp_reads_extension(const char *ext)
+{
+    const MeshAssimpLib *ai = mesh_assimp_lib(NULL);
+    return ai && ai->is_extension_supported(ext) == AI_TRUE;
+}
 
 /* Reads the regular file open as fd whole into *buf (gmem_alloc), its bytes from MESH_HEADROOM on, NUL-terminated:
  * *size of them (fewer than the file's size when it shrinks meanwhile), at most MESH_MAX_FILE_BYTES. The buffer is
@@ -63,8 +67,8 @@ static int read_whole(const char *path, int fd, char **buf, size_t *size, size_t
 
 /* The scene assimp makes of a PLY or STL file: read whole, checked, and handed to assimp from memory (a PLY file
  * as mesh_ply_check rewrote it: its header in front of the body), so that assimp reads the bytes that were checked. */
-static int import_checked(const char *path, int fd, MeshFormat format, unsigned flags, const struct aiScene **sc,
-                          GError *err)
+static int import_checked(const MeshAssimpLib *ai, const char *path, int fd, MeshFormat format, unsigned flags,
+                          const struct aiScene **sc, GError *err)
 {
     char *buf = NULL, *header = NULL;
     size_t size = 0, hlen = 0, body = 0, body_len = 0, reserved = 0;
@@ -86,7 +90,7 @@ static int import_checked(const char *path, int fd, MeshFormat format, unsigned 
         rc = mesh_stl_check(path, data, size, err);
     }
     if (rc == G_OK)
-        *sc = aiImportFileFromMemory(start, (unsigned)len, flags, format == MESH_FORMAT_PLY ? "ply" : "stl");
+        *sc = ai->import_file_from_memory(start, (unsigned)len, flags, format == MESH_FORMAT_PLY ? "ply" : "stl");
     gmem_free(header);
     gmem_free(buf);
     gmem_budget_release(reserved);
@@ -207,8 +211,8 @@ static int indices_ok(const struct aiScene *sc)
 /* The scene assimp makes of a glTF file: read whole (a file of JSON at most JSON_MAX_BYTES), checked, and handed to
  * assimp under a name with the extension of its content (assimp picks its reader by the name first), from memory;
  * the buffer files it names are opened by files' rules. */
-static int import_gltf(const char *path, int fd, unsigned flags, const MeshFiles *files, const struct aiScene **sc,
-                       GError *err)
+static int import_gltf(const MeshAssimpLib *ai, const char *path, int fd, unsigned flags, const MeshFiles *files,
+                       const struct aiScene **sc, GError *err)
 {
     unsigned char magic[4] = {0};
     off_t n = lseek(fd, 0, SEEK_END);
@@ -245,7 +249,7 @@ static int import_gltf(const char *path, int fd, unsigned flags, const MeshFiles
     if (rc == G_OK) {
         MeshIO io;
         mesh_io_init(&io, name ? name : path, buf + MESH_HEADROOM, size, files);
-        *sc = aiImportFileEx(name ? name : path, flags, &io.hooks);
+        *sc = ai->import_file_ex(name ? name : path, flags, &io.hooks);
         if (!*sc && io.refusal.code)
             rc = gerror_set(err, io.refusal.code, "%s: %s", path, io.refusal.message);
     }
@@ -289,13 +293,19 @@ int mesh_load_assimp(Object *o, const char *path, int fd, MeshFormat format, con
 {
     unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_ValidateDataStructure;
     const struct aiScene *sc = NULL;
-    int rc = format == MESH_FORMAT_GLTF ? import_gltf(path, fd, flags, files, &sc, err)
-                                        : import_checked(path, fd, format, flags, &sc, err);
+    GError why;
+    const MeshAssimpLib *ai = mesh_assimp_lib(&why);
+    if (!ai) {
+        close(fd);
+        return gerror_set(err, why.code, "%s: %s", path, why.message);
+    }
+    int rc = format == MESH_FORMAT_GLTF ? import_gltf(ai, path, fd, flags, files, &sc, err)
+                                        : import_checked(ai, path, fd, format, flags, &sc, err);
     close(fd);
     if (rc != G_OK)
         return rc;
     if (!sc)
-        return gerror_set(err, G_ERR_PARSE, "%s: %s", path, aiGetErrorString());
+        return gerror_set(err, G_ERR_PARSE, "%s: %s", path, ai->get_error_string());
     Counts cnt = {0, 0};
     int walk = sc->mRootNode && indices_ok(sc) ? count_node(sc, sc->mRootNode, 0, &cnt) : -1;
     if (walk == -1)
@@ -349,6 +359,6 @@ int mesh_load_assimp(Object *o, const char *path, int fd, MeshFormat format, con
             mesh_free(m);
         }
     }
-    aiReleaseImport(sc);
+    ai->release_import(sc);
     return rc;
 }

@@ -13,8 +13,9 @@
  * one instance (the prototypes' BVHs are still shared). The shapes' callbacks take the double-precision ray
  * through the placement's own transform, not Embree's float one.
  *
- * A scene of a few analytic shapes is traced without Embree, through the direct list of accel_direct.c (Embree's
- * scene is built all the same: cheap for so few shapes, and it keeps s->rtc as the sign of a built scene). */
+ * A scene of a few analytic shapes is traced without Embree, through the direct list of accel_direct.c; Embree's
+ * device is then not made at all (its thread pool and arenas: 1.9 MB of the bench scene's 15.7 MB peak RSS), and
+ * s->rtc stays NULL. */
 #include "accel.h"
 #include "accel_direct.h"
 
@@ -486,6 +487,9 @@ int accel_build(Scene *s, GError *err)
 int accel_build_for(Scene *s, double samples, GError *err)
 {
     accel_release(s);
+    int rc = accel_direct_build(s, err);
+    if (rc < 0 || s->direct) /* traced through the direct list: no Embree */
+        return rc;
     char config[32] = ""; /* Embree's own thread pool obeys --threads too (its BVH build is parallel) */
     if (s->accel_threads > 0)
         snprintf(config, sizeof config, "threads=%d", s->accel_threads);
@@ -494,7 +498,7 @@ int accel_build_for(Scene *s, double samples, GError *err)
         return gerror_set(err, G_ERR_NOMEM, "embree: cannot create a device (error %d)", (int)rtcGetDeviceError(NULL));
     s->rtc = rtcNewScene(s->device);
     rtcSetSceneBuildQuality(s->rtc, top_quality(s, samples));
-    int rc = build_objects(s, err);
+    rc = build_objects(s, err);
     if (rc < 0) {
         accel_release(s);
         return rc;
@@ -508,10 +512,6 @@ int accel_build_for(Scene *s, double samples, GError *err)
     if (!s->by_geom && table_fit(&s->by_geom, &s->inst_by_geom, &s->nby_geom, 0) != G_OK) {
         accel_release(s);
         return gerror_set(err, G_ERR_NOMEM, "out of memory");
-    }
-    if ((rc = accel_direct_build(s, err)) < 0) {
-        accel_release(s);
-        return rc;
     }
     return G_OK;
 }

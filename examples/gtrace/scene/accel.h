@@ -9,7 +9,8 @@
 #include <generic/error.h>
 
 /** Builds the Embree scene from the objects (after all are added), for the camera's own width x height x spp;
- * a scene of a few analytic shapes also gets the direct list that then traces it (unless accel_embree_only). */
+ * a scene of a few analytic shapes gets the direct list instead, which traces it with no Embree device made
+ * (s->rtc stays NULL; unless accel_embree_only). */
 int accel_build(Scene *s, GError *err);
 /** The same for an image of `samples` camera samples in all (the command line's size and spp): the top-level
  * BVH's build quality depends on the samples per primitive. */

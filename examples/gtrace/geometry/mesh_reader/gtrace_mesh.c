@@ -3,6 +3,7 @@
  * memory blow-up of assimp ends this process only. It reads the file gtrace opened (descriptor 3), asks gtrace
  * before it opens any other file, charges its reservations to a copy of gtrace's memory budget, and writes the mesh
  * on its standard output. Not a program for users. */
+#include "geometry/mesh_assimp_lib.h"
 #include "geometry/mesh_format.h"
 #include "geometry/mesh_protocol.h"
 
@@ -121,6 +122,10 @@ int main(int argc, char **argv)
     const int asks = strcmp(argv[8], "1") == 0;
     if (format != MESH_FORMAT_PLY && format != MESH_FORMAT_STL && format != MESH_FORMAT_GLTF)
         return 2;
+    /* assimp loaded before the limits: the dynamic loader opens and maps its files (and writes LD_DEBUG_OUTPUT's) */
+    GError err = {0};
+    if (!mesh_assimp_lib(&err))
+        return send_error(&err) != 0;
     limit(RLIMIT_CORE, 0, 0);
     limit(RLIMIT_FSIZE, 0, 0); /* no file written */
     limit(RLIMIT_CPU, (rlim_t)cpu, RLIM_INFINITY);
@@ -131,7 +136,6 @@ int main(int argc, char **argv)
 #endif
     /* gtrace's budget as it stands: what it has reserved, reserved here too, so refusals give its figures */
     gmem_budget_set_limit((size_t)budget);
-    GError err = {0};
     if (used && gmem_budget_reserve((size_t)used, "what gtrace holds", &err) != G_OK)
         return send_error(&err) != 0;
     fault(path);
