@@ -111,7 +111,7 @@ typedef struct PathCtx {
  * position and the lens). The pairs that matter most lie in a group's first two dimensions, whose points are
  * stratified in 2D (a (0,m,2)-net); picks and Russian roulette take the others. */
 enum {
-    SLOT_LIGHT_U,    /**< the light sample's point on the light (an area light or glowing primitive) */
+    SLOT_LIGHT_U,    /**< the light sample's point on an area light or glowing primitive, or a probe's direction */
     SLOT_LIGHT_V,
     SLOT_LIGHT_PICK, /**< the light chosen by power (light_pick.h), then the glowing primitive */
     SLOT_DELTA_PICK, /**< the delta light kept among the candidates (delta_choice) */
@@ -134,7 +134,7 @@ enum {
 /* The probability that Russian roulette lets a path of throughput brightness b go on (see the top of the file). */
 static double roulette_survival(double b) { return fmin(1.0, sqrt(b)); }
 
-/* Bands throughput_factor reads at most: a spectrum's neighbouring samples are close, so every k-th one will do. */
+/* Bands throughput_factor reads at most: neighbouring bands of a model with many are close, every k-th one will do. */
 #define PEAK_BANDS 16
 
 /* The factor by which a sample's weight w scales the path's throughput for Russian roulette: its largest band (of at
@@ -258,25 +258,26 @@ static int direct_light_every(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Me
             continue;
         }
         lt.blocked = 1; /* material sampling reaches these lights: light through glass is a caustic */
-        if (l->kind == LIGHT_PROBE) { /* the reference's estimator with one direction (a basis: not used) */
-            CHECK(probe_light_nee(c, l, sp, facing, media, to_viewer, opaque, 1, l == p->env_light ? ri : NULL, 1.0,
-                                  &lt, out));
+        if (l->kind != LIGHT_SPHERE && l->kind != LIGHT_RECT && l->kind != LIGHT_PROBE)
             continue;
-        }
-        if (l->kind != LIGHT_SPHERE && l->kind != LIGHT_RECT)
-            continue;
-        GVec3 in;
-        double dist, pdf_l, u1, u2;
-        int got;
+        double u[2];
         if (slots_free) {
-            u1 = vertex_uniform(p, depth, SLOT_LIGHT_U);
-            u2 = vertex_uniform(p, depth, SLOT_LIGHT_V);
+            u[0] = vertex_uniform(p, depth, SLOT_LIGHT_U);
+            u[1] = vertex_uniform(p, depth, SLOT_LIGHT_V);
             slots_free = 0;
         } else {
-            u1 = uniform(p);
-            u2 = uniform(p);
+            u[0] = uniform(p);
+            u[1] = uniform(p);
         }
-        CHECK(got = path_light_sample_at(l, sp->point, u1, u2, &in, &dist, &pdf_l, &L));
+        if (l->kind == LIGHT_PROBE) { /* the reference's estimator with one direction (a basis: not used) */
+            CHECK(probe_light_nee(c, l, sp, facing, media, to_viewer, opaque, 1, u, l == p->env_light ? ri : NULL,
+                                  1.0, &lt, out));
+            continue;
+        }
+        GVec3 in;
+        double dist, pdf_l;
+        int got;
+        CHECK(got = path_light_sample_at(l, sp->point, u[0], u[1], &in, &dist, &pdf_l, &L));
         if (!got || (opaque && gvec3_dot(in, facing) <= 0.0))
             continue;
         double w = mis_power(pdf_l, gmaterial_pdf(m, sp, in, to_viewer, ri));
@@ -346,8 +347,9 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
         CHECK(light_shade(c, l, sp, facing, media, to_viewer, opaque, &lt, sum));
     } else if (l && l->kind == LIGHT_PROBE) { /* the reference's estimator with one direction */
         lt.blocked = 1; /* material sampling reaches it: light through glass is a caustic */
-        CHECK(probe_light_nee(c, l, sp, facing, media, to_viewer, opaque, 1, l == p->env_light ? ri : NULL, pick, &lt,
-                              sum));
+        double u[2] = {vertex_uniform(p, depth, SLOT_LIGHT_U), vertex_uniform(p, depth, SLOT_LIGHT_V)};
+        CHECK(probe_light_nee(c, l, sp, facing, media, to_viewer, opaque, 1, u, l == p->env_light ? ri : NULL, pick,
+                              &lt, sum));
     } else { /* a sphere or rectangle light, or one point of one glowing primitive */
         GVec3 in, normal;
         double dist, pdf_l, u1 = vertex_uniform(p, depth, SLOT_LIGHT_U), u2 = vertex_uniform(p, depth, SLOT_LIGHT_V);

@@ -179,11 +179,12 @@ int probe_light_shade(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing,
     const ProbeEnv *env = l->env;
     if (env && PROBE_IS_BASIS(env->technique))
         return probe_basis_shade(c, env, sp, facing, out_dir, t, result);
-    return probe_light_nee(c, l, sp, facing, media, out_dir, opaque, l->samples, NULL, 1.0, t, result);
+    return probe_light_nee(c, l, sp, facing, media, out_dir, opaque, l->samples, NULL, NULL, 1.0, t, result);
 }
 
 int probe_light_nee(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 out_dir,
-                    int opaque, int n, const GColor *mis_ri, double pick, LightTmp *t, GColor *result)
+                    int opaque, int n, const double *u, const GColor *mis_ri, double pick, LightTmp *t,
+                    GColor *result)
 {
     const ProbeEnv *env = l->env;
     if (!env || !env->probe || !env->dist.row_cdf)
@@ -206,7 +207,9 @@ int probe_light_nee(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, c
     for (int i = 0; i < n && rc == G_OK; i++) {
         double u1, u2;
         pixel_sample(&c->rng, i, n, grid, perm, &u1, &u2);
-        if (n == 1)
+        if (n == 1 && u)
+            u1 = u[0], u2 = u[1];
+        else if (n == 1)
             u1 = rng_next(&c->rng), u2 = rng_next(&c->rng);
         int pu, pv;
         GVec3 local;
