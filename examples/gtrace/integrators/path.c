@@ -28,7 +28,10 @@
  * irradiance, variance) makes, are delta lights: NEE only, through lights.c's light_shade (the same shadow rule as the
  * Whitted tracer: transmission through non-opaque surfaces along the straight line). Sphere and rectangle lights and a
  * `light probe` of technique reference (the environment, importance sampled by probe_sample.c's probe_light_nee, the
- * Whitted tracer's reference estimator with one direction) can also be reached by material sampling, so both estimates
+ * Whitted tracer's reference estimator with one direction, drawn from the vertex's light dimensions and from the
+ * probe's compensated distribution, ProbeEnv.nee_dist: only the brightness above the probe's mean, the smooth rest
+ * left to material sampling; on bench/scenes/cycles_probe.scene, a sky with a sun, RMSE 0.0086 at 64 spp where the
+ * plain distribution gave 0.0126) can also be reached by material sampling, so both estimates
  * are combined by multiple importance sampling with the power heuristic (a sphere light is sampled uniformly in the
  * solid angle it subtends, a rectangle light uniformly by area; area_light_hit gives the same density. Sampling
  * rectangles by solid angle, as spherical rectangles, was measured on the Cornell box: 35% more time for 2% less RMSE);
@@ -506,7 +509,7 @@ static int escaped(PathCtx *p, const Ray *r, int first, double prev_pdf, int fro
     else {
         CHECK(probe_pixel_radiance(env, r->d, out));
         if (p->env_light && !from_medium) {
-            double pdf_nee = p->env_pick * probe_dist_pdf(&env->dist, env->probe, probe_from_world(env, r->d));
+            double pdf_nee = p->env_pick * probe_dist_pdf(&env->nee_dist, env->probe, probe_from_world(env, r->d));
             CHECK(gcolor_scale(out, out, mis_power(prev_pdf, pdf_nee)));
         }
     }
