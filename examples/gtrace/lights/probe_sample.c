@@ -20,9 +20,9 @@
  * stratified directions with weight 1 (probe_light_shade); the path tracer's next-event estimation takes one
  * per vertex, weighted against its material sampling by the power heuristic, with shadow rays blocked by any
  * surface (LightTmp.blocked), drawn from the compensated distribution (ProbeEnv.nee_dist, probe_dist.h) whose
- * directions below the probe's mean brightness material sampling alone reaches. As a light the probe is its pixels, piecewise constant (probe_pixel_radiance),
- * which is what the distribution samples and what gprobe's ground truth integrates; seen directly it is the
- * bilinear background (probe_background). */
+ * directions below the probe's mean brightness material sampling alone reaches. As a light the probe is its
+ * pixels, piecewise constant (probe_pixel_radiance), which is what the distribution samples and what gprobe's ground
+ * truth integrates; seen directly it is the bilinear background (probe_background). */
 #include "probe_dist.h"
 #include "lighting.h"
 #include "probe_env.h"
