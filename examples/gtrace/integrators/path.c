@@ -15,32 +15,32 @@
  * 64 spp, 0.69 of the variance over the image for 1.09 of the CPU time (bench/cycles_regions.py). The square root
  * keeps more paths alive than t itself.
  *
- * Lights. When the scene's light table (lights/light_pick.h: the lights that send light and the glowing geometry as
- * one entry) holds at most LIGHT_PICK_EVERY_MAX entries, NEE takes one sample of every light source at each vertex
+ * Lights. When the scene's light table (lights/light_pick.h: the lights that send light and the glowing geometry as one
+ * entry) holds at most LIGHT_PICK_EVERY_MAX entries, NEE takes one sample of every light source at each vertex
  * (direct_light_every; `make bench-lights` measured it ahead of one chosen light in time to equal RMSE up to that
- * count). With more, NEE takes one light source a vertex, chosen by power from the table (an alias table: constant
- * time whatever their number), and divides its estimate by the probability of the choice; the density a light's MIS
- * weight uses, on either side, is its sampling density times that probability (1 when every light is sampled). A
- * delta light, which material sampling never meets, is then chosen again among the delta lights by its unshadowed
- * light at the vertex (delta_choice: among all of them when they are few, else by resampled importance sampling of a
- * few candidates drawn by power): one shadow ray still, the choice weighted by what each light gives there. Point,
- * spot, directional and IES lights, including the directional lights a probe technique (mediancut, adaptive, kmeans,
- * irradiance, variance) makes, are delta lights: NEE only, through lights.c's light_shade (the same shadow rule as the
- * Whitted tracer: transmission through non-opaque surfaces along the straight line). Sphere and rectangle lights and a
- * `light probe` of technique reference (the environment, importance sampled by probe_sample.c's probe_light_nee, the
- * Whitted tracer's reference estimator with one direction, drawn from the vertex's light dimensions and from the
- * probe's compensated distribution, ProbeEnv.nee_dist: only the brightness above the probe's mean, the smooth rest
- * left to material sampling; on bench/scenes/cycles_probe.scene, a sky with a sun, RMSE 0.0086 at 64 spp where the
- * plain distribution gave 0.0126) can also be reached by material sampling, so both estimates
- * are combined by multiple importance sampling with the power heuristic (a sphere light is sampled uniformly in the
- * solid angle it subtends, a rectangle light uniformly by area; area_light_hit gives the same density. Sampling
- * rectangles by solid angle, as spherical rectangles, was measured on the Cornell box: 35% more time for 2% less RMSE);
- * their shadow rays are blocked by any surface (light through glass reaches them by material sampling, a caustic, so
- * counting the straight transmission too would count it twice). Material sampling sees sphere and rectangle lights
- * (one-sided) when they are nearer than the surface hit; a path after a delta bounce counts them fully. One light
- * sample a vertex: the lights' `samples` apply to the Whitted tracer; a reference probe's `shadows off` does not apply.
- * At a Lambertian material (GMAT_LAMBERTIAN) the samples' light, each with its MIS weight in it, is gathered and
- * reflected once (lights.c's light_gather), as in the Whitted tracer.
+ * count). With more, NEE takes one light source a vertex, chosen by power from the table (an alias table: constant time
+ * whatever their number), and divides its estimate by the probability of the choice; the density a light's MIS weight
+ * uses, on either side, is its sampling density times that probability (1 when every light is sampled). A delta light,
+ * which material sampling never meets, is then chosen again among the delta lights by its unshadowed light at the
+ * vertex (delta_choice: among all of them when they are few, else by resampled importance sampling of a few candidates
+ * drawn by power): one shadow ray still, the choice weighted by what each light gives there. Point, spot, directional
+ * and IES lights, including the directional lights a probe technique (mediancut, adaptive, kmeans, irradiance,
+ * variance) makes, are delta lights: NEE only, through lights.c's light_shade (the same shadow rule as the Whitted
+ * tracer: transmission through non-opaque surfaces along the straight line). Sphere and rectangle lights and a `light
+ * probe` of technique reference (the environment, importance sampled by probe_sample.c's probe_light_nee, the Whitted
+ * tracer's reference estimator with one direction, drawn from the vertex's light dimensions and from the probe's
+ * compensated distribution, ProbeEnv.nee_dist: only the brightness above the probe's mean, the smooth rest left to
+ * material sampling; on bench/scenes/cycles_probe.scene, a sky with a sun, RMSE 0.0031 at 64 spp against a 4096-spp
+ * reference where the plain distribution gave 0.0097) can also be reached by material sampling, so both estimates are
+ * combined by multiple importance sampling with the power heuristic (a sphere light is sampled uniformly in the solid
+ * angle it subtends, a rectangle light uniformly by area; area_light_hit gives the same density. Sampling rectangles by
+ * solid angle, as spherical rectangles, was measured on the Cornell box: 35% more time for 2% less RMSE); their shadow
+ * rays are blocked by any surface (light through glass reaches them by material sampling, a caustic, so counting the
+ * straight transmission too would count it twice). Material sampling sees sphere and rectangle lights (one-sided) when
+ * they are nearer than the surface hit; a path after a delta bounce counts them fully. One light sample a vertex: the
+ * lights' `samples` apply to the Whitted tracer; a reference probe's `shadows off` does not apply. At a Lambertian
+ * material (GMAT_LAMBERTIAN) the samples' light, each with its MIS weight in it, is gathered and reflected once
+ * (lights.c's light_gather), as in the Whitted tracer.
  *
  * The environment. Camera rays and rays after a delta bounce see the background (the background colour, or
  * the background probe interpolated bilinearly). After a non-delta bounce the background probe is a light:
@@ -74,14 +74,17 @@
  *
  * Random numbers: with the default sampler (trace/sampler.h, SAMPLER_SOBOL) the numbers that decide most of the
  * variance, each vertex's light sample (the choice of the light, the point on a sphere or rectangle light or on the
- * glowing geometry, whose primitive takes what is left of the choice's number), its material sample, its wavelength
- * group and its roulette, are dimensions of the camera sample's point in the pixel's shuffled, Owen-scrambled Sobol
- * sequence (two groups of four a vertex, after the camera's group: see SLOT_ below). The others (the probe's NEE,
- * media) and, with SAMPLER_INDEPENDENT, all of them come from the thread's PCG32 generator (TraceCtx.rng, which
- * lights.c and probe_sample.c draw from too), re-seeded for each path from the pixel's index and the sample's index and
- * restored afterwards. Either way a number depends on the pixel, the sample and its use only, so the image does not
- * depend on the thread count, crops or tile order. Colours only through gcolor_*, materials only through gmaterial_*;
- * temporaries live on the thread's scratch arena and are released at every level: no allocation per ray. */
+ * glowing geometry, whose primitive takes what is left of the choice's number, or the direction drawn from a reference
+ * probe), its material sample, its wavelength group and its roulette, are dimensions of the camera sample's point in
+ * the pixel's shuffled, Owen-scrambled Sobol sequence (two groups of four a vertex, after the camera's group: see SLOT_
+ * below). The probe's direction from the sequence: on bench/scenes/cycles_probe.scene at 64 spp, RMSE 0.0097 against a
+ * 4096-spp reference where the generator's numbers gave 0.0324. The others (media, the lights after the first when
+ * every light is sampled) and, with SAMPLER_INDEPENDENT, all of them come from the thread's PCG32 generator
+ * (TraceCtx.rng, which lights.c and probe_sample.c draw from too), re-seeded for each path from the pixel's index and
+ * the sample's index and restored afterwards. Either way a number depends on the pixel, the sample and its use only, so
+ * the image does not depend on the thread count, crops or tile order. Colours only through gcolor_*, materials only
+ * through gmaterial_*; temporaries live on the thread's scratch arena and are released at every level: no allocation
+ * per ray. */
 #include "path.h"
 #include "bands.h"
 #include "scene/accel.h"
