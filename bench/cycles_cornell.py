@@ -1,7 +1,17 @@
 # cycles_cornell.py - Blender's Python: the twin of examples/scenes/cornell.scene for Blender Cycles, rendered on the
 # CPU and written as an EXR (linear, no view transform); prints "cycles-render-seconds WALL CPU" (the render call's
 # wall time and the process's CPU time in it: scene sync, BVH build, path tracing, writing) for bench/cycles.sh.
-#   blender -b --factory-startup -P bench/cycles_cornell.py -- OUT.exr SIZE SAMPLES THREADS SEED
+#   blender -b --factory-startup -P bench/cycles_cornell.py -- OUT.exr SIZE SAMPLES THREADS SEED [VARIANT]
+# VARIANT cornell (the default) or glossy: the twin of bench/scenes/cycles_glossy.scene, the box with a rough gold
+# sphere and a glass sphere instead of the blocks. The gold is a Principled BSDF, metallic, of base colour gold's
+# reflectance at normal incidence in linear sRGB (1.0, 0.766, 0.336: Cycles 3.4 fades it to white at grazing angles by
+# Schlick's rule, where gtrace's `conductor { metal Au }` has gold's measured complex index); Cycles squares the
+# Roughness input (alpha = roughness^2, Principled and Glossy alike) and gtrace's `roughness` is alpha itself, so
+# gtrace's 0.25 is Cycles' 0.5 (Cycles 3.4's svm/closure.h: alpha = roughness * roughness). Cycles' GGX is the single
+# scattering one: its Multiscatter GGX evaluates a random walk between the facets, noisier and slower than gtrace's
+# deterministic compensation of that light (`compensate on`, a few per cent at alpha 0.25), so the twin favours
+# Cycles. The glass is a sharp Glass BSDF of IOR 1.5, white (gtrace's `dielectric { index 1.5 }`); Cycles' caustics
+# are on and its glossy filter off (no blur: both renderers estimate the same light).
 # The twin: gtrace's y-up coordinates (x, y, z) are Blender's (x, -z, y); the boxes, the two rotated blocks and the
 # camera (pinhole at <0, 1, 3.9> towards <0, 1, 0>, vertical field of view 38 degrees) are placed as in the scene
 # file; lambert reflectances are Diffuse BSDFs (roughness 0, Lambert) of the same linear RGB; the one-sided square
@@ -18,6 +28,9 @@ import bpy
 
 args = sys.argv[sys.argv.index("--") + 1:]
 out, size, samples, threads, seed = args[0], int(args[1]), int(args[2]), int(args[3]), int(args[4])
+variant = args[5] if len(args) > 5 else "cornell"
+if variant not in ("cornell", "glossy"):
+    raise SystemExit("cycles_cornell.py: unknown variant " + variant)
 
 bpy.ops.wm.read_factory_settings(use_empty=True)
 scene = bpy.context.scene
@@ -66,8 +79,38 @@ box((-1.05, 2, -1.05), (1.05, 2.05, 1.05), white)  # ceiling
 box((-1.05, 0, -1.05), (1.05, 2, -1), white)  # back wall
 box((-1.05, 0, -1), (-1, 2, 1.05), red)  # left wall
 box((1, 0, -1), (1.05, 2, 1.05), green)  # right wall
-box((-0.3, 0, -0.3), (0.3, 0.6, 0.3), white, -18, (0.33, 0, 0.35))
-box((-0.3, 0, -0.3), (0.3, 1.2, 0.3), white, 17, (-0.35, 0, -0.33))
+
+
+def sphere(centre, radius, material):
+    bpy.ops.mesh.primitive_uv_sphere_add(segments=128, ring_count=64, radius=radius, location=blender(centre))
+    o = bpy.context.active_object
+    bpy.ops.object.shade_smooth()
+    o.data.materials.append(material)
+
+
+def shader(name, kind, inputs, distribution):
+    m = bpy.data.materials.new(name)
+    m.use_nodes = True
+    nodes = m.node_tree.nodes
+    nodes.clear()
+    bsdf = nodes.new(kind)
+    bsdf.distribution = distribution
+    for key, value in inputs.items():
+        bsdf.inputs[key].default_value = value
+    output = nodes.new("ShaderNodeOutputMaterial")
+    m.node_tree.links.new(bsdf.outputs[0], output.inputs["Surface"])
+    return m
+
+
+if variant == "cornell":
+    box((-0.3, 0, -0.3), (0.3, 0.6, 0.3), white, -18, (0.33, 0, 0.35))
+    box((-0.3, 0, -0.3), (0.3, 1.2, 0.3), white, 17, (-0.35, 0, -0.33))
+else:
+    gold = shader("gold", "ShaderNodeBsdfPrincipled", {"Base Color": (1.0, 0.766, 0.336, 1.0), "Metallic": 1.0,
+                                                        "Roughness": math.sqrt(0.25)}, "GGX")
+    glass = shader("glass", "ShaderNodeBsdfGlass", {"Color": (1.0, 1.0, 1.0, 1.0), "IOR": 1.5}, "SHARP")
+    sphere((-0.45, 0.4, -0.35), 0.4, gold)
+    sphere((0.45, 0.35, 0.2), 0.35, glass)
 
 radiance, side = (17.0, 12.0, 4.0), 0.5
 light = bpy.data.lights.new("lamp", type="AREA")
@@ -102,6 +145,12 @@ cy.use_adaptive_sampling = False
 cy.use_denoising = False
 cy.max_bounces = 8
 cy.diffuse_bounces = 8
+cy.glossy_bounces = 8
+cy.transmission_bounces = 8
+cy.transparent_max_bounces = 8
+cy.caustics_reflective = True
+cy.caustics_refractive = True
+cy.blur_glossy = 0.0
 cy.sample_clamp_direct = 0.0
 cy.sample_clamp_indirect = 0.0
 cy.pixel_filter_type = "BOX"

@@ -6,35 +6,41 @@
  * sample's pdf (and the Russian-roulette probability), and passed on through gmaterial_reflection (or
  * gmaterial_refraction for a GSAMPLE_TRANSMIT sample). The sample's weight colour is never multiplied in: the
  * material itself transforms the actual incoming light, so with re-radiation matrices a fluorescent surface
- * re-radiates the light that really arrives, at every bounce. The weight's brightness only steers Russian
- * roulette (after PATH_RR_START bounces a path survives with probability min(1, sqrt(throughput brightness)): the
- * square root keeps more paths alive than the brightness itself, whose survivors off a saturated colour (the red wall
- * of a Cornell box has brightness 0.18 and red 0.63) carry large weights; measured on the Cornell box at equal spp:
- * 3% more time, 0.56 of the variance over the image and 0.42 on the walls and floor).
+ * re-radiates the light that really arrives, at every bounce. The weight only steers Russian roulette: after
+ * PATH_RR_START bounces a path survives with probability min(1, sqrt(t)), t the product of the weights' largest bands
+ * (throughput_factor), which bounds every band of the path's throughput. Each band's throughput over the survival
+ * probability then stays at most sqrt(t) <= 1: no survivor carries more light in a band than it would without the
+ * roulette. By the brightness instead (the red wall of a Cornell box has brightness 0.18 and red 0.63), the survivors
+ * off a saturated colour carried red weights above 1, the red speckles of the box's shadows: measured on the box at
+ * 64 spp, 0.69 of the variance over the image for 1.09 of the CPU time (bench/cycles_regions.py). The square root
+ * keeps more paths alive than t itself.
  *
- * Lights. When the scene's light table (lights/light_pick.h: the lights that send light and the glowing geometry as
- * one entry) holds at most LIGHT_PICK_EVERY_MAX entries, NEE takes one sample of every light source at each vertex
+ * Lights. When the scene's light table (lights/light_pick.h: the lights that send light and the glowing geometry as one
+ * entry) holds at most LIGHT_PICK_EVERY_MAX entries, NEE takes one sample of every light source at each vertex
  * (direct_light_every; `make bench-lights` measured it ahead of one chosen light in time to equal RMSE up to that
- * count). With more, NEE takes one light source a vertex, chosen by power from the table (an alias table: constant
- * time whatever their number), and divides its estimate by the probability of the choice; the density a light's MIS
- * weight uses, on either side, is its sampling density times that probability (1 when every light is sampled). A
- * delta light, which material sampling never meets, is then chosen again among the delta lights by its unshadowed
- * light at the vertex (delta_choice: among all of them when they are few, else by resampled importance sampling of a
- * few candidates drawn by power): one shadow ray still, the choice weighted by what each light gives there. Point,
- * spot, directional and IES lights, including the directional lights a probe technique (mediancut, adaptive, kmeans,
- * irradiance, variance) makes, are delta lights: NEE only, through lights.c's light_shade (the same shadow rule as the
- * Whitted tracer: transmission through non-opaque surfaces along the straight line). Sphere and rectangle lights and a
- * `light probe` of technique reference (the environment, importance sampled by probe_sample.c's probe_light_nee, the
- * Whitted tracer's reference estimator with one direction) can also be reached by material sampling, so both estimates
- * are combined by multiple importance sampling with the power heuristic (a sphere light is sampled uniformly in the
- * solid angle it subtends, a rectangle light uniformly by area; area_light_hit gives the same density. Sampling
- * rectangles by solid angle, as spherical rectangles, was measured on the Cornell box: 35% more time for 2% less RMSE);
- * their shadow rays are blocked by any surface (light through glass reaches them by material sampling, a caustic, so
- * counting the straight transmission too would count it twice). Material sampling sees sphere and rectangle lights
- * (one-sided) when they are nearer than the surface hit; a path after a delta bounce counts them fully. One light
- * sample a vertex: the lights' `samples` apply to the Whitted tracer; a reference probe's `shadows off` does not apply.
- * At a Lambertian material (GMAT_LAMBERTIAN) the samples' light, each with its MIS weight in it, is gathered and
- * reflected once (lights.c's light_gather), as in the Whitted tracer.
+ * count). With more, NEE takes one light source a vertex, chosen by power from the table (an alias table: constant time
+ * whatever their number), and divides its estimate by the probability of the choice; the density a light's MIS weight
+ * uses, on either side, is its sampling density times that probability (1 when every light is sampled). A delta light,
+ * which material sampling never meets, is then chosen again among the delta lights by its unshadowed light at the
+ * vertex (delta_choice: among all of them when they are few, else by resampled importance sampling of a few candidates
+ * drawn by power): one shadow ray still, the choice weighted by what each light gives there. Point, spot, directional
+ * and IES lights, including the directional lights a probe technique (mediancut, adaptive, kmeans, irradiance,
+ * variance) makes, are delta lights: NEE only, through lights.c's light_shade (the same shadow rule as the Whitted
+ * tracer: transmission through non-opaque surfaces along the straight line). Sphere and rectangle lights and a `light
+ * probe` of technique reference (the environment, importance sampled by probe_sample.c's probe_light_nee, the Whitted
+ * tracer's reference estimator with one direction, drawn from the vertex's light dimensions and from the probe's
+ * compensated distribution, ProbeEnv.nee_dist: only the brightness above the probe's mean, the smooth rest left to
+ * material sampling; on bench/scenes/cycles_probe.scene, a sky with a sun, RMSE 0.0031 at 64 spp against a 4096-spp
+ * reference where the plain distribution gave 0.0097) can also be reached by material sampling, so both estimates are
+ * combined by multiple importance sampling with the power heuristic (a sphere light is sampled uniformly in the solid
+ * angle it subtends, a rectangle light uniformly by area; area_light_hit gives the same density. Sampling rectangles by
+ * solid angle, as spherical rectangles, was measured on the Cornell box: 35% more time for 2% less RMSE); their shadow
+ * rays are blocked by any surface (light through glass reaches them by material sampling, a caustic, so counting the
+ * straight transmission too would count it twice). Material sampling sees sphere and rectangle lights (one-sided) when
+ * they are nearer than the surface hit; a path after a delta bounce counts them fully. One light sample a vertex: the
+ * lights' `samples` apply to the Whitted tracer; a reference probe's `shadows off` does not apply. At a Lambertian
+ * material (GMAT_LAMBERTIAN) the samples' light, each with its MIS weight in it, is gathered and reflected once
+ * (lights.c's light_gather), as in the Whitted tracer.
  *
  * The environment. Camera rays and rays after a delta bounce see the background (the background colour, or
  * the background probe interpolated bilinearly). After a non-delta bounce the background probe is a light:
@@ -68,14 +74,17 @@
  *
  * Random numbers: with the default sampler (trace/sampler.h, SAMPLER_SOBOL) the numbers that decide most of the
  * variance, each vertex's light sample (the choice of the light, the point on a sphere or rectangle light or on the
- * glowing geometry, whose primitive takes what is left of the choice's number), its material sample, its wavelength
- * group and its roulette, are dimensions of the camera sample's point in the pixel's shuffled, Owen-scrambled Sobol
- * sequence (two groups of four a vertex, after the camera's group: see SLOT_ below). The others (the probe's NEE,
- * media) and, with SAMPLER_INDEPENDENT, all of them come from the thread's PCG32 generator (TraceCtx.rng, which
- * lights.c and probe_sample.c draw from too), re-seeded for each path from the pixel's index and the sample's index and
- * restored afterwards. Either way a number depends on the pixel, the sample and its use only, so the image does not
- * depend on the thread count, crops or tile order. Colours only through gcolor_*, materials only through gmaterial_*;
- * temporaries live on the thread's scratch arena and are released at every level: no allocation per ray. */
+ * glowing geometry, whose primitive takes what is left of the choice's number, or the direction drawn from a reference
+ * probe), its material sample, its wavelength group and its roulette, are dimensions of the camera sample's point in
+ * the pixel's shuffled, Owen-scrambled Sobol sequence (two groups of four a vertex, after the camera's group: see SLOT_
+ * below). The probe's direction from the sequence: on bench/scenes/cycles_probe.scene at 64 spp, RMSE 0.0097 against a
+ * 4096-spp reference where the generator's numbers gave 0.0324. The others (media, the lights after the first when
+ * every light is sampled) and, with SAMPLER_INDEPENDENT, all of them come from the thread's PCG32 generator
+ * (TraceCtx.rng, which lights.c and probe_sample.c draw from too), re-seeded for each path from the pixel's index and
+ * the sample's index and restored afterwards. Either way a number depends on the pixel, the sample and its use only, so
+ * the image does not depend on the thread count, crops or tile order. Colours only through gcolor_*, materials only
+ * through gmaterial_*; temporaries live on the thread's scratch arena and are released at every level: no allocation
+ * per ray. */
 #include "path.h"
 #include "bands.h"
 #include "scene/accel.h"
@@ -108,7 +117,7 @@ typedef struct PathCtx {
  * position and the lens). The pairs that matter most lie in a group's first two dimensions, whose points are
  * stratified in 2D (a (0,m,2)-net); picks and Russian roulette take the others. */
 enum {
-    SLOT_LIGHT_U,    /**< the light sample's point on the light (an area light or glowing primitive) */
+    SLOT_LIGHT_U,    /**< the light sample's point on an area light or glowing primitive, or a probe's direction */
     SLOT_LIGHT_V,
     SLOT_LIGHT_PICK, /**< the light chosen by power (light_pick.h), then the glowing primitive */
     SLOT_DELTA_PICK, /**< the delta light kept among the candidates (delta_choice) */
@@ -130,6 +139,25 @@ enum {
 
 /* The probability that Russian roulette lets a path of throughput brightness b go on (see the top of the file). */
 static double roulette_survival(double b) { return fmin(1.0, sqrt(b)); }
+
+/* Bands throughput_factor reads at most: neighbouring bands of a model with many are close, every k-th one will do. */
+#define PEAK_BANDS 16
+
+/* The factor by which a sample's weight w scales the path's throughput for Russian roulette: its largest band (of at
+ * most PEAK_BANDS spread over the model's bands), or its brightness for a weight without bands (a matrix). The
+ * product of these factors bounds every band of the throughput from above (see the top of the file). */
+static double throughput_factor(const GColor *w)
+{
+    int n = gcolormodel_band_count(w->model), step = (n + PEAK_BANDS - 1) / PEAK_BANDS;
+    double peak = 0.0;
+    for (int i = step / 2; i < n; i += step) {
+        double v = gcolor_band_value(w, i);
+        if (isnan(v))
+            return gcolor_brightness(w);
+        peak = fmax(peak, v);
+    }
+    return peak > 0.0 ? peak : gcolor_brightness(w); /* light only in bands not read: not lost */
+}
 
 /* The path's random numbers: the thread's generator, seeded for this camera sample by path_trace. */
 static double uniform(PathCtx *p) { return rng_next(&p->c->rng); }
@@ -236,25 +264,26 @@ static int direct_light_every(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Me
             continue;
         }
         lt.blocked = 1; /* material sampling reaches these lights: light through glass is a caustic */
-        if (l->kind == LIGHT_PROBE) { /* the reference's estimator with one direction (a basis: not used) */
-            CHECK(probe_light_nee(c, l, sp, facing, media, to_viewer, opaque, 1, l == p->env_light ? ri : NULL, 1.0,
-                                  &lt, out));
+        if (l->kind != LIGHT_SPHERE && l->kind != LIGHT_RECT && l->kind != LIGHT_PROBE)
             continue;
-        }
-        if (l->kind != LIGHT_SPHERE && l->kind != LIGHT_RECT)
-            continue;
-        GVec3 in;
-        double dist, pdf_l, u1, u2;
-        int got;
+        double u[2];
         if (slots_free) {
-            u1 = vertex_uniform(p, depth, SLOT_LIGHT_U);
-            u2 = vertex_uniform(p, depth, SLOT_LIGHT_V);
+            u[0] = vertex_uniform(p, depth, SLOT_LIGHT_U);
+            u[1] = vertex_uniform(p, depth, SLOT_LIGHT_V);
             slots_free = 0;
         } else {
-            u1 = uniform(p);
-            u2 = uniform(p);
+            u[0] = uniform(p);
+            u[1] = uniform(p);
         }
-        CHECK(got = path_light_sample_at(l, sp->point, u1, u2, &in, &dist, &pdf_l, &L));
+        if (l->kind == LIGHT_PROBE) { /* the reference's estimator with one direction (a basis: not used) */
+            CHECK(probe_light_nee(c, l, sp, facing, media, to_viewer, opaque, 1, u, l == p->env_light ? ri : NULL,
+                                  1.0, &lt, out));
+            continue;
+        }
+        GVec3 in;
+        double dist, pdf_l;
+        int got;
+        CHECK(got = path_light_sample_at(l, sp->point, u[0], u[1], &in, &dist, &pdf_l, &L));
         if (!got || (opaque && gvec3_dot(in, facing) <= 0.0))
             continue;
         double w = mis_power(pdf_l, gmaterial_pdf(m, sp, in, to_viewer, ri));
@@ -324,8 +353,9 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
         CHECK(light_shade(c, l, sp, facing, media, to_viewer, opaque, &lt, sum));
     } else if (l && l->kind == LIGHT_PROBE) { /* the reference's estimator with one direction */
         lt.blocked = 1; /* material sampling reaches it: light through glass is a caustic */
-        CHECK(probe_light_nee(c, l, sp, facing, media, to_viewer, opaque, 1, l == p->env_light ? ri : NULL, pick, &lt,
-                              sum));
+        double u[2] = {vertex_uniform(p, depth, SLOT_LIGHT_U), vertex_uniform(p, depth, SLOT_LIGHT_V)};
+        CHECK(probe_light_nee(c, l, sp, facing, media, to_viewer, opaque, 1, u, l == p->env_light ? ri : NULL, pick,
+                              &lt, sum));
     } else { /* a sphere or rectangle light, or one point of one glowing primitive */
         GVec3 in, normal;
         double dist, pdf_l, u1 = vertex_uniform(p, depth, SLOT_LIGHT_U), u2 = vertex_uniform(p, depth, SLOT_LIGHT_V);
@@ -408,7 +438,7 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
         CHECK(valid = gmaterial_sample(m, sp, to_viewer, ri_use, u1, u2, &smp, &weight));
         if (!valid || !(smp.pdf > 0.0)) /* no sample: the weight is not read */
             goto absorb;
-        double nb = beta * gcolor_brightness(&weight), q = 1.0;
+        double nb = beta * throughput_factor(&weight), q = 1.0;
         if (!(nb > 0.0) || !isfinite(nb))
             goto absorb;
         if (depth >= PATH_RR_START) { /* Russian roulette on the path's throughput */
@@ -482,7 +512,7 @@ static int escaped(PathCtx *p, const Ray *r, int first, double prev_pdf, int fro
     else {
         CHECK(probe_pixel_radiance(env, r->d, out));
         if (p->env_light && !from_medium) {
-            double pdf_nee = p->env_pick * probe_dist_pdf(&env->dist, env->probe, probe_from_world(env, r->d));
+            double pdf_nee = p->env_pick * probe_dist_pdf(&env->nee_dist, env->probe, probe_from_world(env, r->d));
             CHECK(gcolor_scale(out, out, mis_power(prev_pdf, pdf_nee)));
         }
     }
@@ -547,7 +577,7 @@ static int medium_segment(PathCtx *p, const Ray *r, const Media *media, const Me
         CHECK(ev = medium_grid_flight(vol, r->o, r->d, t_l, &c->rng, &t, &w, c->scratch));
     else
         CHECK(ev = medium_sample_distance(vol, t_l, uniform(p), uniform(p), &t, &w));
-    double nb = beta * gcolor_brightness(&w);
+    double nb = beta * throughput_factor(&w);
     /* point, spot and IES lights: equiangular samples too, MIS-weighted against free flight's (homogeneous media) */
     MediumWay way = {r->o, r->d, t_l, t};
     int equiangular = c->equiangular && !vol->grid && vol->scatters && p->point_lights;

@@ -61,14 +61,16 @@ double mis_power(double a, double b);
 int probe_light_shade(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const Media *media,
                       GVec3 out_dir, int opaque, LightTmp *t, GColor *result);
 /** The direct light of a reference probe l at sp towards out_dir, for both integrators (probe_sample.c): n
- * directions drawn from the probe's distribution with c->rng (stratified when n > 1), each carrying the
+ * directions drawn from the probe's distribution with c->rng (stratified when n > 1; with n = 1 and u given, the one
+ * direction u[0], u[1] map to, the caller's numbers in [0, 1)), each carrying the
  * probe's pixel as a light through sample_light (shadows by t->blocked; `shadows off` skips them unless
  * mis_ri is given). mis_ri (the path tracer, whose material sampling also reaches the probe): each direction
  * is weighted against the material's pdf for the relative index mis_ri by mis_power, the direction's density taken
  * as its density in the probe's distribution times pick (the probability with which the caller chose this light among
  * others; 1: always); NULL: weight 1. The estimate itself is not divided by pick. */
 int probe_light_nee(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 out_dir,
-                    int opaque, int n, const GColor *mis_ri, double pick, LightTmp *t, GColor *result);
+                    int opaque, int n, const double *u, const GColor *mis_ri, double pick, LightTmp *t,
+                    GColor *result);
 
 /** Visible area lights (light_seen.c): 1 with out = the radiance of the nearest sphere or rectangle light
  * marked visible that r meets before tmax (a rectangle from its lit side only), 0 when it meets none. */

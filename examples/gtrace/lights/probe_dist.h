@@ -17,6 +17,11 @@ typedef struct ProbeDist {
 
 /** Builds the distribution of probe p with brightness measured in model. */
 int probe_dist_build(ProbeDist *d, const GProbe *p, const GColorModel *model, GError *err);
+/** probe_dist_build with each pixel's brightness less the probe's mean brightness (over the sphere), 0 where that is
+ * negative: the distribution for next-event estimation combined by MIS with a strategy that reaches every direction
+ * (MIS compensation: Karlik, Sik, Vevoda, Skrivan and Krivanek 2019), which leaves the smooth part of the probe to
+ * the material's sampling; a probe of one brightness keeps the plain distribution. */
+int probe_dist_build_compensated(ProbeDist *d, const GProbe *p, const GColorModel *model, GError *err);
 /** Frees the tables (a zeroed ProbeDist is fine). */
 void probe_dist_free(ProbeDist *d);
 /** Maps (u1, u2) in [0,1)^2 to a direction in probe space inside pixel (*u, *v), uniform in solid angle within

@@ -41,6 +41,7 @@ typedef struct ProbeEnv {
     Light **lights;      /**< the lights it gave the scene (owned) */
     int nlights;
     ProbeDist dist;      /**< reference: the sampling distribution */
+    ProbeDist nee_dist;  /**< reference: the path tracer's, compensated (probe_dist_build), MIS-weighted */
     GProbeBasis basis;   /**< basis: the fitted approximation, its irradiance the ambient term */
     double seconds;      /**< loading and approximating */
     double error_mean;   /**< technique: mean irradiance error of the lights in percent (the paper's measure) */

@@ -98,6 +98,7 @@ static void release_products(ProbeEnv *e)
     e->lights = NULL;
     e->nlights = 0;
     probe_dist_free(&e->dist);
+    probe_dist_free(&e->nee_dist);
     gprobe_basis_free(&e->basis);
     gprobe_destroy(e->probe);
     e->probe = NULL;
@@ -375,7 +376,8 @@ int probe_attach(Scene *s, ProbeEnv *e, GError *err)
         return gerror_set(err, rc, "%s: light probe: %s", e->where, le.message);
     gprobe_rotation_xyz(e->rotate.x, e->rotate.y, e->rotate.z, e->R);
     if (e->technique == PROBE_REFERENCE) {
-        if ((rc = probe_dist_build(&e->dist, e->probe, s->model, &le)) < 0)
+        if ((rc = probe_dist_build(&e->dist, e->probe, s->model, &le)) < 0 ||
+            (rc = probe_dist_build_compensated(&e->nee_dist, e->probe, s->model, &le)) < 0)
             return gerror_set(err, rc, "%s: light probe: %s", e->where, le.message);
         e->lights = gmem_calloc(1, sizeof *e->lights);
         if (!e->lights)

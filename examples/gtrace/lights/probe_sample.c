@@ -19,9 +19,10 @@
  * One estimator for both integrators (probe_light_nee): the Whitted tracer's reference takes `samples`
  * stratified directions with weight 1 (probe_light_shade); the path tracer's next-event estimation takes one
  * per vertex, weighted against its material sampling by the power heuristic, with shadow rays blocked by any
- * surface (LightTmp.blocked). As a light the probe is its pixels, piecewise constant (probe_pixel_radiance),
- * which is what the distribution samples and what gprobe's ground truth integrates; seen directly it is the
- * bilinear background (probe_background). */
+ * surface (LightTmp.blocked), drawn from the compensated distribution (ProbeEnv.nee_dist, probe_dist.h) whose
+ * directions below the probe's mean brightness material sampling alone reaches. As a light the probe is its
+ * pixels, piecewise constant (probe_pixel_radiance), which is what the distribution samples and what gprobe's ground
+ * truth integrates; seen directly it is the bilinear background (probe_background). */
 #include "probe_dist.h"
 #include "lighting.h"
 #include "probe_env.h"
@@ -47,7 +48,8 @@ static double row_omega(int w, int h, int v)
     return 2.0 * M_PI / w * (cos(M_PI * v / h) - cos(M_PI * (v + 1) / h));
 }
 
-int probe_dist_build(ProbeDist *d, const GProbe *p, const GColorModel *model, GError *err)
+/* The distribution of p, plain or compensated (the header's two functions). */
+static int dist_build(ProbeDist *d, const GProbe *p, const GColorModel *model, int compensated, GError *err)
 {
     memset(d, 0, sizeof *d);
     int w = gprobe_width(p), h = gprobe_height(p);
@@ -60,18 +62,27 @@ int probe_dist_build(ProbeDist *d, const GProbe *p, const GColorModel *model, GE
     }
     d->w = w;
     d->h = h;
-    d->row_cdf[0] = 0.0;
     int rc = G_OK;
-    for (int v = 0; v < h && rc == G_OK; v++) {
-        double omega = row_omega(w, h, v), *cdf = d->col_cdf + (size_t)v * (w + 1);
-        cdf[0] = 0.0;
-        for (int u = 0; u < w; u++) {
-            if ((rc = gprobe_pixel_color(p, u, v, &c)) < 0)
-                break;
-            double b = gcolor_brightness_as(&c, GCOLOR_LIGHT);
-            cdf[u + 1] = cdf[u] + (b > 0.0 && isfinite(b) ? b * omega : 0.0);
+    double mean = 0.0; /* the mean brightness over the sphere, subtracted when compensated */
+    for (int pass = compensated ? 0 : 1; pass < 2 && rc == G_OK; pass++) {
+        d->row_cdf[0] = 0.0;
+        for (int v = 0; v < h && rc == G_OK; v++) {
+            double omega = row_omega(w, h, v), *cdf = d->col_cdf + (size_t)v * (w + 1);
+            cdf[0] = 0.0;
+            for (int u = 0; u < w; u++) {
+                if ((rc = gprobe_pixel_color(p, u, v, &c)) < 0)
+                    break;
+                double b = gcolor_brightness_as(&c, GCOLOR_LIGHT) - mean;
+                cdf[u + 1] = cdf[u] + (b > 0.0 && isfinite(b) ? b * omega : 0.0);
+            }
+            d->row_cdf[v + 1] = d->row_cdf[v] + cdf[w];
         }
-        d->row_cdf[v + 1] = d->row_cdf[v] + cdf[w];
+        if (pass == 0 && rc == G_OK)
+            mean = d->row_cdf[h] / (4.0 * M_PI);
+        if (pass == 1 && mean > 0.0 && !(d->row_cdf[h] > 0.0)) { /* one brightness everywhere: the plain one */
+            mean = 0.0;
+            pass = 0;
+        }
     }
     gcolor_free(&c);
     if (rc < 0) {
@@ -79,6 +90,16 @@ int probe_dist_build(ProbeDist *d, const GProbe *p, const GColorModel *model, GE
         return gerror_set(err, rc, "cannot convert the probe's pixels into the colour model: %s", gstatus_string(rc));
     }
     return G_OK;
+}
+
+int probe_dist_build(ProbeDist *d, const GProbe *p, const GColorModel *model, GError *err)
+{
+    return dist_build(d, p, model, 0, err);
+}
+
+int probe_dist_build_compensated(ProbeDist *d, const GProbe *p, const GColorModel *model, GError *err)
+{
+    return dist_build(d, p, model, 1, err);
 }
 
 /* Index i in [0, n) with cdf[i] <= x < cdf[i + 1] for a non-decreasing cdf of n + 1 entries, skipping empty
@@ -179,17 +200,18 @@ int probe_light_shade(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing,
     const ProbeEnv *env = l->env;
     if (env && PROBE_IS_BASIS(env->technique))
         return probe_basis_shade(c, env, sp, facing, out_dir, t, result);
-    return probe_light_nee(c, l, sp, facing, media, out_dir, opaque, l->samples, NULL, 1.0, t, result);
+    return probe_light_nee(c, l, sp, facing, media, out_dir, opaque, l->samples, NULL, NULL, 1.0, t, result);
 }
 
 int probe_light_nee(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 out_dir,
-                    int opaque, int n, const GColor *mis_ri, double pick, LightTmp *t, GColor *result)
+                    int opaque, int n, const double *u, const GColor *mis_ri, double pick, LightTmp *t,
+                    GColor *result)
 {
     const ProbeEnv *env = l->env;
     if (!env || !env->probe || !env->dist.row_cdf)
         return G_OK;
     const GProbe *p = env->probe;
-    const ProbeDist *d = &env->dist;
+    const ProbeDist *d = mis_ri && env->nee_dist.row_cdf ? &env->nee_dist : &env->dist;
     n = n < 1 ? 1 : n > PROBE_MAX_SAMPLES ? PROBE_MAX_SAMPLES : n;
     int grid = strata_grid(n), *perm = NULL;
     double scale = env->scale;
@@ -206,7 +228,9 @@ int probe_light_nee(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, c
     for (int i = 0; i < n && rc == G_OK; i++) {
         double u1, u2;
         pixel_sample(&c->rng, i, n, grid, perm, &u1, &u2);
-        if (n == 1)
+        if (n == 1 && u)
+            u1 = u[0], u2 = u[1];
+        else if (n == 1)
             u1 = rng_next(&c->rng), u2 = rng_next(&c->rng);
         int pu, pv;
         GVec3 local;
