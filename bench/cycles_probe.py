@@ -11,34 +11,19 @@
 import math
 import os
 import sys
-import time
 
 import bpy
 
-args = sys.argv[sys.argv.index("--") + 1:]
-out, size, samples, threads, seed = args[0], int(args[1]), int(args[2]), int(args[3]), int(args[4])
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cycles_common import arguments, blender, diffuse, render  # noqa: E402
+
+out, size, samples, threads, seed, rest = arguments()
 here = os.path.dirname(os.path.abspath(__file__))
 
 bpy.ops.wm.read_factory_settings(use_empty=True)
 scene = bpy.context.scene
 
 
-def blender(p):
-    """gtrace's (x, y, z), y up, as Blender's z-up coordinates."""
-    return (p[0], -p[2], p[1])
-
-
-def diffuse(name, rgb):
-    m = bpy.data.materials.new(name)
-    m.use_nodes = True
-    nodes = m.node_tree.nodes
-    nodes.clear()
-    bsdf = nodes.new("ShaderNodeBsdfDiffuse")
-    bsdf.inputs["Color"].default_value = (rgb[0], rgb[1], rgb[2], 1.0)
-    bsdf.inputs["Roughness"].default_value = 0.0
-    output = nodes.new("ShaderNodeOutputMaterial")
-    m.node_tree.links.new(bsdf.outputs["BSDF"], output.inputs["Surface"])
-    return m
 
 
 bpy.ops.mesh.primitive_plane_add(size=2000.0, location=(0.0, 0.0, 0.0))
@@ -76,32 +61,4 @@ world.node_tree.nodes["Background"].inputs["Strength"].default_value = 1.0
 world.cycles.sampling_method = "AUTOMATIC"
 scene.world = world
 
-scene.render.engine = "CYCLES"
-cy = scene.cycles
-cy.device = "CPU"
-cy.samples = samples
-cy.seed = seed
-cy.use_adaptive_sampling = False
-cy.use_denoising = False
-cy.max_bounces = 8
-cy.diffuse_bounces = 8
-cy.sample_clamp_direct = 0.0
-cy.sample_clamp_indirect = 0.0
-cy.pixel_filter_type = "BOX"
-cy.filter_width = 1.0
-cy.use_auto_tile = False
-scene.render.threads_mode = "FIXED"
-scene.render.threads = threads
-scene.render.resolution_x = size
-scene.render.resolution_y = size
-scene.render.resolution_percentage = 100
-scene.render.image_settings.file_format = "OPEN_EXR"
-scene.render.image_settings.color_depth = "32"
-scene.render.image_settings.exr_codec = "ZIP"
-scene.view_settings.view_transform = "Standard"
-scene.render.filepath = out
-scene.render.use_file_extension = False
-
-wall, cpu = time.perf_counter(), time.process_time()
-bpy.ops.render.render(write_still=True)
-print("cycles-render-seconds %.4f %.4f" % (time.perf_counter() - wall, time.process_time() - cpu), flush=True)
+render(scene, out, size, samples, threads, seed)
