@@ -107,6 +107,7 @@ static int reflections(const GLibrary *lib, const GColorModel *md, const char *n
     }
     gcolor_free(&light);
     gcolor_free(&out);
+    gsurfpoint_free(sp);
     gscratch_destroy(s);
     return rc;
 }
