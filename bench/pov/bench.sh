@@ -193,7 +193,7 @@ else
 fi
 echo "colour models / rgb, medians: render time spectrum9 $(median render_spectrum9), spectrum $(median render_spectrum), \
 bispectral $(median render_bispectral); process CPU spectrum9 $(median cpu_spectrum9), spectrum $(median cpu_spectrum), \
-bispectral $(median cpu_bispectral) (targets 1.1, 1.15, 1.3)"
+bispectral $(median cpu_bispectral) (targets 1.02, 1.05, 1.05)"
 # limit_line OUT: "ns per ray render, limit; ratio median (min-max)" from isect_limit's report
 limit_line() {
     sed -n 's/.*Whitted render \([0-9.]*\), intersection only \([0-9.]*\); .*median of the rounds \([0-9.]*\) (min-max \([0-9.-]*\)).*/\1 ns against \2 ns a ray: \3x (\4)/p' "$TMP/$1.out"
