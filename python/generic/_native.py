@@ -1,6 +1,7 @@
 """The C libraries through cffi's ABI mode: libgeneric.so, and libgtrace.so for scenes and rendering (opened on
-first use: it maps Embree, and assimp once a PLY, STL or glTF mesh is read). The directory of both is _config.LIBDIR, written when the package is built
-or installed (python/build.mk); GENERIC_LIBDIR in the environment replaces it."""
+first use: it maps Embree, and assimp once a PLY, STL or glTF mesh is read). The directory of both is
+_config.LIBDIR, written when the package is built or installed (python/build.mk); GENERIC_LIBDIR in the environment
+replaces it."""
 import os
 import threading
 
