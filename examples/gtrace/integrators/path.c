@@ -8,12 +8,12 @@
  * material itself transforms the actual incoming light, so with re-radiation matrices a fluorescent surface
  * re-radiates the light that really arrives, at every bounce. The weight only steers Russian roulette: after
  * PATH_RR_START bounces a path survives with probability min(1, sqrt(t)), t the product of the weights' largest bands
- * (throughput_factor), which bounds every band of the path's throughput. Each band's throughput over the survival
- * probability then stays at most sqrt(t) <= 1: no survivor carries more light in a band than it would without the
- * roulette. By the brightness instead (the red wall of a Cornell box has brightness 0.18 and red 0.63), the survivors
- * off a saturated colour carried red weights above 1, the red speckles of the box's shadows: measured on the box at
- * 64 spp, 0.69 of the variance over the image for 1.09 of the CPU time (bench/cycles_regions.py). The square root
- * keeps more paths alive than t itself.
+ * (roulette_factor, roulette.h), which bounds every band of the path's throughput. Each band's throughput over the
+ * survival probability then stays at most sqrt(t) <= 1: no survivor carries more light in a band than it would
+ * without the roulette. By the brightness instead (the red wall of a Cornell box has brightness 0.18 and red
+ * 0.63), the survivors off a saturated colour carried red weights above 1, the red speckles of the box's shadows:
+ * measured on the box at 64 spp, 0.69 of the variance over the image for 1.09 of the CPU time
+ * (bench/cycles_regions.py). The square root keeps more paths alive than t itself.
  *
  * Lights. When the scene's light table (lights/light_pick.h: the lights that send light and the glowing geometry as one
  * entry) holds at most LIGHT_PICK_EVERY_MAX entries, NEE takes one sample of every light source at each vertex
@@ -93,6 +93,7 @@
 #include "lights/lighting.h"
 #include "lights/probe_env.h"
 #include "medium_light.h"
+#include "roulette.h"
 #include "media/medium.h"
 #include "scene/ies.h"
 #include "trace/sampler.h"
@@ -136,28 +137,6 @@ enum {
             goto done;                                                                                                 \
         }                                                                                                              \
     } while (0)
-
-/* The probability that Russian roulette lets a path of throughput brightness b go on (see the top of the file). */
-static double roulette_survival(double b) { return fmin(1.0, sqrt(b)); }
-
-/* Bands throughput_factor reads at most: neighbouring bands of a model with many are close, every k-th one will do. */
-#define PEAK_BANDS 16
-
-/* The factor by which a sample's weight w scales the path's throughput for Russian roulette: its largest band (of at
- * most PEAK_BANDS spread over the model's bands), or its brightness for a weight without bands (a matrix). The
- * product of these factors bounds every band of the throughput from above (see the top of the file). */
-static double throughput_factor(const GColor *w)
-{
-    int n = gcolormodel_band_count(w->model), step = (n + PEAK_BANDS - 1) / PEAK_BANDS;
-    double peak = 0.0;
-    for (int i = step / 2; i < n; i += step) {
-        double v = gcolor_band_value(w, i);
-        if (isnan(v))
-            return gcolor_brightness(w);
-        peak = fmax(peak, v);
-    }
-    return peak > 0.0 ? peak : gcolor_brightness(w); /* light only in bands not read: not lost */
-}
 
 /* The path's random numbers: the thread's generator, seeded for this camera sample by path_trace. */
 static double uniform(PathCtx *p) { return rng_next(&p->c->rng); }
@@ -438,7 +417,7 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
         CHECK(valid = gmaterial_sample(m, sp, to_viewer, ri_use, u1, u2, &smp, &weight));
         if (!valid || !(smp.pdf > 0.0)) /* no sample: the weight is not read */
             goto absorb;
-        double nb = beta * throughput_factor(&weight), q = 1.0;
+        double nb = beta * roulette_factor(&weight), q = 1.0;
         if (!(nb > 0.0) || !isfinite(nb))
             goto absorb;
         if (depth >= PATH_RR_START) { /* Russian roulette on the path's throughput */
@@ -577,7 +556,7 @@ static int medium_segment(PathCtx *p, const Ray *r, const Media *media, const Me
         CHECK(ev = medium_grid_flight(vol, r->o, r->d, t_l, &c->rng, &t, &w, c->scratch));
     else
         CHECK(ev = medium_sample_distance(vol, t_l, uniform(p), uniform(p), &t, &w));
-    double nb = beta * throughput_factor(&w);
+    double nb = beta * roulette_factor(&w);
     /* point, spot and IES lights: equiangular samples too, MIS-weighted against free flight's (homogeneous media) */
     MediumWay way = {r->o, r->d, t_l, t};
     int equiangular = c->equiangular && !vol->grid && vol->scatters && p->point_lights;
