@@ -224,6 +224,16 @@ static void test_matrix_message(void **state)
     gcolormodel_destroy(m);
 }
 
+/* A light of unit power at nm alone, converted into model m (c allocated). */
+static void line_light(GColorModel *m, int nm, GColor *c)
+{
+    assert_int_equal(gcolor_alloc(c, m), G_OK);
+    GSpectrumNM line;
+    memset(&line, 0, sizeof line);
+    line.v[nm - GNM_MIN] = 1.0f;
+    assert_int_equal(gcolor_from_nm(c, &line, GCOLOR_LIGHT), G_OK);
+}
+
 /* A line light is out of the rgb gamut: mapped (no negative, luminance kept) and reported; an in-gamut light
  * converted into a spectral model is only clamped, not reported. */
 static void test_clip_to_gamut(void **state)
@@ -231,11 +241,7 @@ static void test_clip_to_gamut(void **state)
     (void)state;
     GColorModel *rgb = make("rgb");
     GColor c;
-    assert_int_equal(gcolor_alloc(&c, rgb), G_OK);
-    GSpectrumNM line;
-    memset(&line, 0, sizeof line);
-    line.v[546 - GNM_MIN] = 1.0f;
-    assert_int_equal(gcolor_from_nm(&c, &line, GCOLOR_LIGHT), G_OK);
+    line_light(rgb, 546, &c);
     assert_true(c.v[0] < 0.0f); /* green 546 nm has a negative red in sRGB */
     double xyz0[3], xyz1[3];
     assert_int_equal(gcolor_to_xyz(&c, GCOLOR_LIGHT, xyz0), G_OK);
@@ -353,11 +359,7 @@ static void test_clip_light_to_gamut(void **state)
     (void)state;
     GColorModel *rgb = make("rgb");
     GColor c;
-    assert_int_equal(gcolor_alloc(&c, rgb), G_OK);
-    GSpectrumNM line;
-    memset(&line, 0, sizeof line);
-    line.v[450 - GNM_MIN] = 1.0f;
-    assert_int_equal(gcolor_from_nm(&c, &line, GCOLOR_LIGHT), G_OK);
+    line_light(rgb, 450, &c);
     float before[3] = {c.v[0], c.v[1], c.v[2]};
     assert_true(before[1] < 0.0f && before[0] > 0.0f && before[2] > 0.0f); /* 450 nm: a negative green */
     int mapped = -1;
