@@ -206,6 +206,14 @@ if [ -s "$TMP/limit.out" ] && [ -s "$TMP/limit_embree.out" ]; then
     echo "time per ray against the intersection-only limit (bench/pov/isect_limit, the render's own $(sed -n 's/.*thread: \([0-9]*\) rays.*/\1/p' "$TMP/limit.out") rays cast again without shading, 1 thread, CPU, median of $RUNS rounds; target <= 1.5):"
     echo "  direct list (gtrace's way for this scene): $(limit_line limit); through Embree: $(limit_line limit_embree)"
     echo "  gtrace rgb 1 thread above, a ray: $gt_ns"
+    if [ $HAVE_POV -eq 1 ]; then
+        # POV-Ray's own rays (camera, reflected, refracted: "Rays") and shadow rays ("Shadow Ray Tests") of its
+        # least-CPU 1-thread run, against its trace CPU: where the peer stands against the same limit
+        pov_rays=$(awk '/^Rays:/ { r = $2 } /^Shadow Ray Tests:/ { s = $4 } END { print r + s }' "$TMP/pov_1.out")
+        echo "  POV-Ray 1 thread, a ray: $(awk -v c="$(pov_trace_cpu pov_1 out)" -v r="$pov_rays" \
+            -v l="$(sed -n 's/.*intersection only \([0-9.]*\);.*/\1/p' "$TMP/limit.out")" \
+            'BEGIN { if (r > 0 && l > 0) printf "%.0f ns of trace CPU (%d rays and shadow rays), %.1fx the direct-list limit", 1e9 * c / r, r, 1e9 * c / r / l; else print "n/a" }')"
+    fi
 fi
 echo "speed-up from 1 to 2 threads (render time, median): $(median threads) at 800x600, $(median threads_big) at 1600x1200 (target >= 1.9 on an idle machine)"
 echo "load check (200,000 named spheres, 1,000 materials; parse and build, 1x1 render; least-CPU run): $(field gt_load 2) s CPU, $(field gt_load 1) s wall, $(awk -v k="$(field gt_load 3)" 'BEGIN { printf "%.0f", k / 1024 }') MB (target <= 2 s)"
