@@ -352,15 +352,6 @@ static int bi_to_nm(const GColorModel *m, const GColor *a, GColorRole role, GSpe
     return gspectral_to_nm(m, &v, role, out);
 }
 
-static int bi_to_xyz(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3])
-{
-    if (a->kind == GCOLOR_VECTOR)
-        return gspectral_to_xyz(m, a, role, xyz);
-    float d[BI_MAX];
-    fold(a, m->nsamples, d);
-    GColor v = {.model = m, .v = d, .kind = GCOLOR_VECTOR, .storage = GCOLOR_STORAGE_CALLER, .capacity = BI_MAX};
-    return gspectral_to_xyz(m, &v, role, xyz);
-}
 
 /* ---- measured matrices ---- */
 
@@ -485,7 +476,7 @@ static const GColorModelClass gcolormodel_bispectral = {
     .brightness = bi_brightness,
     .to_nm = bi_to_nm,
     .from_nm = gspectral_from_nm,
-    .to_xyz = bi_to_xyz,
+    .to_xyz = gspectral_to_xyz_folded, /* a matrix: its folded reflectance, the row sums */
     .from_rgb = gspectral_from_rgb,
     .from_reradiation = bi_from_reradiation,
     .exp_scaled = bi_exp,

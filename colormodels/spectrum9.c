@@ -360,17 +360,6 @@ static double spectrum9_brightness(const GColorModel *m, const GColor *a)
     return gspectral_brightness(m, &vr);
 }
 
-/* A matrix reads as its response to white (the row sums), in the role asked for. */
-static int spectrum9_to_xyz(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3])
-{
-    if (a->kind == GCOLOR_VECTOR)
-        return gspectral_to_xyz(m, a, role, xyz);
-    float r[N9];
-    fold(a, r);
-    GColor vr = vector_of(m, r);
-    return gspectral_to_xyz(m, &vr, role, xyz);
-}
-
 static int spectrum9_from_reradiation(const GColorModel *m, const GReradiation *r, GColor *out, GError *err)
 {
     return gcolormodel_reduce_reradiation_by(m, r, spectrum9_project, out, err);
@@ -391,7 +380,7 @@ static const GColorModelClass gcolormodel_spectrum9 = {
     .brightness = spectrum9_brightness,
     .to_nm = spectrum9_to_nm,
     .from_nm = spectrum9_from_nm,
-    .to_xyz = spectrum9_to_xyz,
+    .to_xyz = gspectral_to_xyz_folded, /* a matrix reads as its response to white (the row sums) */
     .from_rgb = gspectral_from_rgb,
     .from_reradiation = spectrum9_from_reradiation,
     .exp_scaled = spectrum9_exp_scaled,

@@ -298,7 +298,8 @@ GENERIC_API GENERIC_NODISCARD int gcolor_is_nonnegative(const GColor *c);
  * infinite value anywhere gives non-finite coordinates, so that finite coordinates prove the colour finite and a
  * renderer may test the three numbers it converts instead of every sample (gcolor_is_finite). It holds for the
  * models whose to_xyz is the spectral kit's (gspectral_to_xyz: each coordinate is a sum over every sample of the
- * sample times a weight, and NaN or infinity times any weight, zero included, stays non-finite through the sum); 0
+ * sample times a weight, and NaN or infinity times any weight, zero included, stays non-finite through the sum; and
+ * gspectral_to_xyz_folded, which reads a matrix by its row sums, each non-finite where one of its entries is); 0
  * for any other, whose conversion the library cannot read (it may clamp, or skip samples). */
 GENERIC_API int gcolormodel_xyz_shows_nonfinite(const GColorModel *m);
 

@@ -390,7 +390,10 @@ int gcolor_from_nm(GColor *c, const GSpectrumNM *in, GColorRole role)
     return m->cls->from_nm(m, in, class_role(role), c);
 }
 
-int gcolormodel_xyz_shows_nonfinite(const GColorModel *m) { return m && m->cls->to_xyz == gspectral_to_xyz; }
+int gcolormodel_xyz_shows_nonfinite(const GColorModel *m)
+{
+    return m && (m->cls->to_xyz == gspectral_to_xyz || m->cls->to_xyz == gspectral_to_xyz_folded);
+}
 
 int gcolor_to_xyz(const GColor *c, GColorRole role, double xyz[3])
 {
