@@ -309,27 +309,64 @@ static int gcolor_is_finite_v4(const GColor *c) { return gspectral_kfinite(c->v,
 static int gcolor_is_nonnegative_v4(const GColor *c) { return gspectral_kfinite(c->v, (int)value_floats(c), 1); }
 
 #ifdef GSPECTRAL_AVX2
-static GSPECTRAL_TARGET_AVX2 int gcolor_axpy_v8(GColor *out, double s, const GColor *a, const GColor *b)
+/* The 8-float kernels on the common grids' lengths as constants (GSPECTRAL_ON_COMMON_LENGTH), as the kit's operations
+ * take them (lib/color/spectral.c): straight-line code on those grids, the kernels' jump on any other length; the
+ * same kernels either way, so the same results bit for bit. */
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void axpy8(float *o, double s, const float *a,
+                                                                             const float *b, int n)
 {
-    AXPY_BODY(gspectral_kaxpyd8);
+#define AXPY(len) gspectral_kaxpyd8(o, s, a, b, len)
+    GSPECTRAL_ON_COMMON_LENGTH(n, AXPY);
+#undef AXPY
 }
 
-static GSPECTRAL_TARGET_AVX2 int gcolor_fill_v8(GColor *out, double value) { FILL_BODY(gspectral_kfill8); }
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void fill8(float *o, float value, int n)
+{
+    if (n < 8) { /* rgb's 3: no tests of the common lengths first */
+        gspectral_kfill(o, value, n);
+        return;
+    }
+#define FILL(len) gspectral_kfill8(o, value, len)
+    GSPECTRAL_ON_COMMON_LENGTH(n, FILL);
+#undef FILL
+}
 
 /* from 8 floats on, the 8-float blocks the kernels load (spectral_kernels8.h), not libc's pieces; fewer (rgb's 3)
  * as memcpy stores them, which is how the models of so few values read them back */
-#define COPY_KERNEL(o, a, n) ((n) < 8 ? (void)memcpy(o, a, (n) * sizeof(float)) : gspectral_kcopy8(o, a, (int)(n)))
-static GSPECTRAL_TARGET_AVX2 int gcolor_copy_v8(GColor *dst, const GColor *src) { COPY_BODY(COPY_KERNEL); }
-#undef COPY_KERNEL
-
-static GSPECTRAL_TARGET_AVX2 int gcolor_is_finite_v8(const GColor *c)
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void copy8(float *o, const float *a, size_t n)
 {
-    return gspectral_kfinite8(c->v, (int)value_floats(c), 0);
+    if (n < 8) {
+        memcpy(o, a, n * sizeof(float));
+        return;
+    }
+#define COPY(len) gspectral_kcopy8(o, a, (int)(len))
+    GSPECTRAL_ON_COMMON_LENGTH(n, COPY);
+#undef COPY
 }
+
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 int finite8(const float *a, int n, int nonnegative)
+{
+    if (n < 8)
+        return gspectral_kfinite(a, n, nonnegative);
+#define FINITE(len) gspectral_kfinite8(a, len, nonnegative)
+    return GSPECTRAL_ON_COMMON_LENGTH(n, FINITE);
+#undef FINITE
+}
+
+static GSPECTRAL_TARGET_AVX2 int gcolor_axpy_v8(GColor *out, double s, const GColor *a, const GColor *b)
+{
+    AXPY_BODY(axpy8);
+}
+
+static GSPECTRAL_TARGET_AVX2 int gcolor_fill_v8(GColor *out, double value) { FILL_BODY(fill8); }
+
+static GSPECTRAL_TARGET_AVX2 int gcolor_copy_v8(GColor *dst, const GColor *src) { COPY_BODY(copy8); }
+
+static GSPECTRAL_TARGET_AVX2 int gcolor_is_finite_v8(const GColor *c) { return finite8(c->v, (int)value_floats(c), 0); }
 
 static GSPECTRAL_TARGET_AVX2 int gcolor_is_nonnegative_v8(const GColor *c)
 {
-    return gspectral_kfinite8(c->v, (int)value_floats(c), 1);
+    return finite8(c->v, (int)value_floats(c), 1);
 }
 
 GSPECTRAL_PICK(gcolor_axpy);
