@@ -179,7 +179,8 @@ struct GColorModelClass {
      * model's samples splits the ray into bands, each refracted with the band's own index and carrying only
      * the band's light. The bands partition the model's samples: their masks sum to white. */
     /** Number of bands (>= 1). Default 1: the model says nothing about wavelengths, and light is refracted
-     * whole with the brightness of the index (no dispersion). */
+     * whole with the brightness of the index (no dispersion). The library asks once, when the model is created
+     * (a model's bands are part of its configuration), and answers gcolormodel_band_count from that. */
     int (*band_count)(const GColorModel *m);
     /** out = the mask of band `band` (0 <= band < band_count): a vector that multiplied with a light keeps the
      * light of the band and nothing else. Default: white (the one band is everything). */

@@ -16,6 +16,7 @@ typedef struct ModelRecord {
     GColorModel model;
     pthread_mutex_t lock;
     int ready;            /* set once init has succeeded: a range measured before that is not kept */
+    int bands;            /* gcolormodel_band_count, asked of the class once init has succeeded */
     int have_range[2];    /* per class role (reflectance, light) */
     double range[2][2];   /* lo, hi */
 } ModelRecord;
@@ -58,6 +59,9 @@ int gcolormodel_create_class(const GColorModelClass *cls, const GColorModelOptio
         gmem_free(rec);
         return rc;
     }
+    rec->bands = cls->band_count ? cls->band_count(m) : 1;
+    if (rec->bands < 1)
+        rec->bands = 1;
     rec->ready = 1;
     *out = m;
     return G_OK;
@@ -556,11 +560,7 @@ int gcolor_convert(GColor *dst, const GColor *src, GColorRole role)
 
 size_t gcolormodel_value_bytes(const GColorModel *m) { return (size_t)m->capacity * sizeof(float); }
 
-int gcolormodel_band_count(const GColorModel *m)
-{
-    int n = m->cls->band_count ? m->cls->band_count(m) : 1;
-    return n >= 1 ? n : 1;
-}
+int gcolormodel_band_count(const GColorModel *m) { return record_of(m)->bands; }
 
 int gcolor_band_mask(GColor *out, int band)
 {
@@ -572,8 +572,9 @@ int gcolor_band_mask(GColor *out, int band)
     return gcolor_fill(out, 1.0);
 }
 
-/* The default band value: brightness(mask * c) / brightness(mask), through temporaries of the thread's arena. */
-static double band_value_by_mask(const GColorModel *m, const GColor *c, int band)
+/* The default band value: brightness(mask * c) / brightness(mask), through temporaries of the thread's arena. Out of
+ * line: gcolor_band_value's other paths need no stack frame. */
+__attribute__((noinline)) static double band_value_by_mask(const GColorModel *m, const GColor *c, int band)
 {
     GScratch *arena = gscratch_thread();
     if (!arena)
@@ -593,8 +594,11 @@ static double band_value_by_mask(const GColorModel *m, const GColor *c, int band
 double gcolor_band_value(const GColor *c, int band)
 {
     const GColorModel *m = c->model;
-    if (c->kind != GCOLOR_VECTOR || band < 0 || band >= gcolormodel_band_count(m))
+    if (c->kind != GCOLOR_VECTOR || band < 0 || band >= record_of(m)->bands)
         return NAN;
+    if (m->cls->band_value == gspectral_band_value) /* the kit's: the sample itself, without the call (a path
+                                                      * tracer's roulette reads a dozen bands a bounce) */
+        return c->v[band];
     if (m->cls->band_value)
         return m->cls->band_value(m, c, band);
     if (!m->cls->band_count)
