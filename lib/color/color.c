@@ -202,8 +202,8 @@ int gcolor_pow(GColor *out, const GColor *a, double e)
 /* The default brightness, for a model without the slot: Y of the value as a reflectance under D65, through the
  * model's own conversion; a value whose Y is not > 0 (a spectrum outside the eye's range, or one whose negative
  * samples cancel its positive ones) and is not black gets the smallest normal double, so that 0 still means black
- * alone. */
-static double default_brightness(const GColor *c)
+ * alone. Out of line, as to_xyz_through_nm: the dispatch needs no stack frame. */
+__attribute__((noinline)) static double default_brightness(const GColor *c)
 {
     double xyz[3];
     if (gcolor_to_xyz(c, GCOLOR_REFLECTANCE, xyz) == G_OK && xyz[1] > 0.0)
@@ -436,16 +436,23 @@ int gcolormodel_xyz_shows_nonfinite(const GColorModel *m)
     return m && (m->cls->to_xyz == gspectral_to_xyz || m->cls->to_xyz == gspectral_to_xyz_folded);
 }
 
-int gcolor_to_xyz(const GColor *c, GColorRole role, double xyz[3])
+/* gcolor_to_xyz for a model without to_xyz: through the nm spectrum. Out of line, so that the dispatch to the class
+ * keeps no room for the spectrum on its stack. */
+__attribute__((noinline)) static int to_xyz_through_nm(const GColor *c, GColorRole role, double xyz[3])
 {
-    role = class_role(role);
-    if (c->model->cls->to_xyz)
-        return c->model->cls->to_xyz(c->model, c, role, xyz);
     GSpectrumNM s;
     int rc = gcolor_to_nm(c, role, &s);
     if (rc == G_OK)
         gcie_nm_to_xyz(&s, role, xyz);
     return rc;
+}
+
+int gcolor_to_xyz(const GColor *c, GColorRole role, double xyz[3])
+{
+    role = class_role(role);
+    if (c->model->cls->to_xyz)
+        return c->model->cls->to_xyz(c->model, c, role, xyz);
+    return to_xyz_through_nm(c, role, xyz);
 }
 
 int gcolor_to_rgb(const GColor *c, GColorRole role, double rgb[3])
