@@ -254,12 +254,22 @@ static int bi_axpy(const GColorModel *m, GColor *out, double s, const GColor *a,
 static double bi_brightness(const GColorModel *m, const GColor *a);
 
 #ifdef GSPECTRAL_AVX2
+/* A vector's kernel with the common grids' lengths as constants (GSPECTRAL_ON_COMMON_LENGTH: 41 samples by default),
+ * as the kit's operations take them; a matrix's n * n entries take the kernels' jump. */
+#define BI_ON_LENGTH(n, CALL) GSPECTRAL_ON_COMMON_LENGTH(n, CALL)
+
 static GSPECTRAL_TARGET_AVX2 int bi_add_v8(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
 {
     int n = m->nsamples;
     if (a->kind != b->kind)
         return bi_add_v4(m, out, a, b);
-    gspectral_kmap8(GSPECTRAL_ADD, out->v, a->v, b->v, a->kind == GCOLOR_MATRIX ? n * n : n);
+    if (a->kind == GCOLOR_MATRIX) {
+        gspectral_kmap8(GSPECTRAL_ADD, out->v, a->v, b->v, n * n);
+    } else {
+#define ADD(len) gspectral_kmap8(GSPECTRAL_ADD, out->v, a->v, b->v, len)
+        BI_ON_LENGTH(n, ADD);
+#undef ADD
+    }
     out->kind = a->kind;
     return G_OK;
 }
@@ -269,24 +279,33 @@ static GSPECTRAL_TARGET_AVX2 int bi_mul_v8(const GColorModel *m, GColor *out, co
     if (a->kind != GCOLOR_VECTOR || b->kind != GCOLOR_VECTOR)
         return bi_mul_v4(m, out, a, b);
     out->kind = GCOLOR_VECTOR;
-    gspectral_kmap8(GSPECTRAL_MUL, out->v, a->v, b->v, m->nsamples);
+#define MUL(len) gspectral_kmap8(GSPECTRAL_MUL, out->v, a->v, b->v, len)
+    BI_ON_LENGTH(m->nsamples, MUL);
+#undef MUL
     return G_OK;
 }
 
 static GSPECTRAL_TARGET_AVX2 int bi_scale_v8(const GColorModel *m, GColor *out, const GColor *a, double s)
 {
     int n = m->nsamples;
-    gspectral_kscale8(out->v, a->v, (float)s, a->kind == GCOLOR_MATRIX ? n * n : n);
+    if (a->kind == GCOLOR_MATRIX) {
+        gspectral_kscale8(out->v, a->v, (float)s, n * n);
+    } else {
+#define SCALE(len) gspectral_kscale8(out->v, a->v, (float)s, len)
+        BI_ON_LENGTH(n, SCALE);
+#undef SCALE
+    }
     out->kind = a->kind;
     return G_OK;
 }
 
 static GSPECTRAL_TARGET_AVX2 int bi_div_v8(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
 {
-    int n = m->nsamples;
     if (a->kind != GCOLOR_VECTOR || b->kind != GCOLOR_VECTOR)
         return bi_div_v4(m, out, a, b);
-    gspectral_kdiv8(out->v, a->v, b->v, n);
+#define DIV(len) gspectral_kdiv8(out->v, a->v, b->v, len)
+    BI_ON_LENGTH(m->nsamples, DIV);
+#undef DIV
     out->kind = GCOLOR_VECTOR;
     return G_OK;
 }
@@ -297,7 +316,13 @@ static GSPECTRAL_TARGET_AVX2 int bi_axpy_v8(const GColorModel *m, GColor *out, d
     int n = m->nsamples;
     if (a->kind != b->kind)
         return bi_axpy_v4(m, out, s, a, b);
-    gspectral_kaxpyd8(out->v, s, a->v, b->v, a->kind == GCOLOR_MATRIX ? n * n : n);
+    if (a->kind == GCOLOR_MATRIX) {
+        gspectral_kaxpyd8(out->v, s, a->v, b->v, n * n);
+    } else {
+#define AXPY(len) gspectral_kaxpyd8(out->v, s, a->v, b->v, len)
+        BI_ON_LENGTH(n, AXPY);
+#undef AXPY
+    }
     out->kind = a->kind;
     return G_OK;
 }
@@ -307,7 +332,9 @@ static GSPECTRAL_TARGET_AVX2 double bi_brightness_v8(const GColorModel *m, const
     const GSpectral *p = m->priv;
     if (a->kind != GCOLOR_VECTOR)
         return bi_brightness_v4(m, a);
-    return gspectral_kbright8(p->lum, a->v, m->nsamples);
+#define BRIGHT(len) gspectral_kbright8(p->lum, a->v, len)
+    return BI_ON_LENGTH(m->nsamples, BRIGHT);
+#undef BRIGHT
 }
 
 GSPECTRAL_PICK(bi_add);
@@ -352,15 +379,6 @@ static int bi_to_nm(const GColorModel *m, const GColor *a, GColorRole role, GSpe
     return gspectral_to_nm(m, &v, role, out);
 }
 
-static int bi_to_xyz(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3])
-{
-    if (a->kind == GCOLOR_VECTOR)
-        return gspectral_to_xyz(m, a, role, xyz);
-    float d[BI_MAX];
-    fold(a, m->nsamples, d);
-    GColor v = {.model = m, .v = d, .kind = GCOLOR_VECTOR, .storage = GCOLOR_STORAGE_CALLER, .capacity = BI_MAX};
-    return gspectral_to_xyz(m, &v, role, xyz);
-}
 
 /* ---- measured matrices ---- */
 
@@ -485,7 +503,7 @@ static const GColorModelClass gcolormodel_bispectral = {
     .brightness = bi_brightness,
     .to_nm = bi_to_nm,
     .from_nm = gspectral_from_nm,
-    .to_xyz = bi_to_xyz,
+    .to_xyz = gspectral_to_xyz_folded, /* a matrix: its folded reflectance, the row sums */
     .from_rgb = gspectral_from_rgb,
     .from_reradiation = bi_from_reradiation,
     .exp_scaled = bi_exp,

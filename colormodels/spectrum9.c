@@ -15,7 +15,7 @@
  * through the linear projection of from_nm), as rgb holds a 3 x 3 one. A vector v stands for diag(v); add, mul
  * (M*V the light A v), scale, axpy, div, pow and exp follow rgb's rules (colormodels/rgb.c); brightness, to_nm and
  * to_xyz read a matrix by its response to white (its row sums). Every value has room for 81 floats; a vector's
- * operations are the kit's, behind one test of the kinds. */
+ * operations are the kit's kernels on the nine samples, in the body behind one test of the kinds. */
 #include "generic/plugin.h"
 #include "generic/kit/spectral.h"
 #include "generic/kit/spectral_kernels.h"
@@ -238,10 +238,10 @@ static GColor vector_of(const GColorModel *m, float *d)
     return (GColor){.model = m, .v = d, .kind = GCOLOR_VECTOR, .storage = GCOLOR_STORAGE_CALLER, .capacity = N9 * N9};
 }
 
-static int spectrum9_add(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+/* add, mul, scale, div, axpy and brightness with a matrix operand (the per-ray bodies below take two vectors
+ * themselves): out of line, so that the vector path keeps no stack for them. */
+__attribute__((noinline)) static int add_matrix(GColor *out, const GColor *a, const GColor *b)
 {
-    if (a->kind == GCOLOR_VECTOR && b->kind == GCOLOR_VECTOR)
-        return gspectral_add(m, out, a, b);
     float x[N9 * N9], y[N9 * N9];
     as_matrix(a, x);
     as_matrix(b, y);
@@ -251,11 +251,9 @@ static int spectrum9_add(const GColorModel *m, GColor *out, const GColor *a, con
     return G_OK;
 }
 
-/* V*V per sample; M*M the product A B; V*M diag(a) B; M*V the light A v (a vector on the right is a light). */
-static int spectrum9_mul(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+/* M*M the product A B; V*M diag(a) B; M*V the light A v (a vector on the right is a light). */
+__attribute__((noinline)) static int mul_matrix(GColor *out, const GColor *a, const GColor *b)
 {
-    if (a->kind == GCOLOR_VECTOR && b->kind == GCOLOR_VECTOR)
-        return gspectral_mul(m, out, a, b);
     float x[N9 * N9], y[N9 * N9];
     as_matrix(a, x);
     if (b->kind == GCOLOR_VECTOR) {
@@ -282,10 +280,8 @@ static int spectrum9_mul(const GColorModel *m, GColor *out, const GColor *a, con
     return G_OK;
 }
 
-static int spectrum9_scale(const GColorModel *m, GColor *out, const GColor *a, double s)
+__attribute__((noinline)) static int scale_matrix(GColor *out, const GColor *a, double s)
 {
-    if (a->kind == GCOLOR_VECTOR)
-        return gspectral_scale(m, out, a, s);
     for (int k = 0; k < N9 * N9; k++)
         out->v[k] = a->v[k] * (float)s;
     out->kind = GCOLOR_MATRIX;
@@ -293,10 +289,8 @@ static int spectrum9_scale(const GColorModel *m, GColor *out, const GColor *a, d
 }
 
 /* div, pow, exp: the diagonals, a vector (a medium absorbs, it does not fluoresce). */
-static int spectrum9_div(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+__attribute__((noinline)) static int div_matrix(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
 {
-    if (a->kind == GCOLOR_VECTOR && b->kind == GCOLOR_VECTOR)
-        return gspectral_div(m, out, a, b);
     float x[N9], y[N9];
     diagonal(a, x);
     diagonal(b, y);
@@ -326,15 +320,9 @@ static int spectrum9_exp_scaled(const GColorModel *m, GColor *out, const GColor 
     return G_OK;
 }
 
-/* out = s a + b: two vectors as the library's default (the kit's kernel); otherwise per entry */
-static int spectrum9_axpy(const GColorModel *m, GColor *out, double s, const GColor *a, const GColor *b)
+/* out = s a + b with a matrix operand: per entry (two vectors: the library's default, the kit's kernel) */
+__attribute__((noinline)) static int axpy_matrix(GColor *out, double s, const GColor *a, const GColor *b)
 {
-    (void)m;
-    if (a->kind == GCOLOR_VECTOR && b->kind == GCOLOR_VECTOR) {
-        gspectral_kaxpyd(out->v, s, a->v, b->v, N9);
-        out->kind = GCOLOR_VECTOR;
-        return G_OK;
-    }
     float x[N9 * N9], y[N9 * N9];
     as_matrix(a, x);
     as_matrix(b, y);
@@ -345,10 +333,8 @@ static int spectrum9_axpy(const GColorModel *m, GColor *out, double s, const GCo
 }
 
 /* A matrix: the brightness of its response to white with entries taken by magnitude, sum_o w_o sum_i |A[o][i]|. */
-static double spectrum9_brightness(const GColorModel *m, const GColor *a)
+__attribute__((noinline)) static double brightness_matrix(const GColorModel *m, const GColor *a)
 {
-    if (a->kind == GCOLOR_VECTOR)
-        return gspectral_brightness(m, a);
     float r[N9];
     for (int o = 0; o < N9; o++) {
         float s = 0.0f;
@@ -360,16 +346,146 @@ static double spectrum9_brightness(const GColorModel *m, const GColor *a)
     return gspectral_brightness(m, &vr);
 }
 
-/* A matrix reads as its response to white (the row sums), in the role asked for. */
-static int spectrum9_to_xyz(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3])
+/* The per-ray operations, two vectors in the body itself: on 4-float vectors and, compiled for AVX2, on 8-float ones
+ * with the nine samples as a constant (straight-line code: one block and one sample), the kit's kernels either
+ * way, so the same results bit for bit as the kit's operations; GSPECTRAL_PICK (spectral_kernels.h) binds each
+ * name to one of the two when the library is loaded, so a call from the class table goes straight to it. */
+#define S9_VECTORS(a, b) ((a)->kind == GCOLOR_VECTOR && (b)->kind == GCOLOR_VECTOR)
+#define S9_ADD(map)                                                                                            \
+    do {                                                                                                       \
+        (void)m;                                                                                               \
+        if (!S9_VECTORS(a, b))                                                                                 \
+            return add_matrix(out, a, b);                                                                      \
+        out->kind = GCOLOR_VECTOR;                                                                             \
+        map(GSPECTRAL_ADD, out->v, a->v, b->v, N9);                                                            \
+        return G_OK;                                                                                           \
+    } while (0)
+#define S9_MUL(map)                                                                                            \
+    do {                                                                                                       \
+        (void)m;                                                                                               \
+        if (!S9_VECTORS(a, b))                                                                                 \
+            return mul_matrix(out, a, b);                                                                      \
+        out->kind = GCOLOR_VECTOR;                                                                             \
+        map(GSPECTRAL_MUL, out->v, a->v, b->v, N9);                                                            \
+        return G_OK;                                                                                           \
+    } while (0)
+#define S9_SCALE(scale)                                                                                        \
+    do {                                                                                                       \
+        (void)m;                                                                                               \
+        if (a->kind != GCOLOR_VECTOR)                                                                          \
+            return scale_matrix(out, a, s);                                                                    \
+        out->kind = GCOLOR_VECTOR;                                                                             \
+        scale(out->v, a->v, (float)s, N9);                                                                     \
+        return G_OK;                                                                                           \
+    } while (0)
+#define S9_DIV(div)                                                                                            \
+    do {                                                                                                       \
+        if (!S9_VECTORS(a, b))                                                                                 \
+            return div_matrix(m, out, a, b);                                                                   \
+        out->kind = GCOLOR_VECTOR;                                                                             \
+        div(out->v, a->v, b->v, N9);                                                                           \
+        return G_OK;                                                                                           \
+    } while (0)
+#define S9_AXPY(axpyd)                                                                                         \
+    do {                                                                                                       \
+        (void)m;                                                                                               \
+        if (!S9_VECTORS(a, b))                                                                                 \
+            return axpy_matrix(out, s, a, b);                                                                  \
+        axpyd(out->v, s, a->v, b->v, N9);                                                                      \
+        out->kind = GCOLOR_VECTOR;                                                                             \
+        return G_OK;                                                                                           \
+    } while (0)
+#define S9_BRIGHTNESS(bright)                                                                                  \
+    do {                                                                                                       \
+        if (a->kind != GCOLOR_VECTOR)                                                                          \
+            return brightness_matrix(m, a);                                                                    \
+        const Spectrum9 *p = m->priv;                                                                          \
+        return bright(p->s.lum, a->v, N9);                                                                     \
+    } while (0)
+
+static int spectrum9_add_v4(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
 {
-    if (a->kind == GCOLOR_VECTOR)
-        return gspectral_to_xyz(m, a, role, xyz);
-    float r[N9];
-    fold(a, r);
-    GColor vr = vector_of(m, r);
-    return gspectral_to_xyz(m, &vr, role, xyz);
+    S9_ADD(gspectral_kmap);
 }
+
+static int spectrum9_mul_v4(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+{
+    S9_MUL(gspectral_kmap);
+}
+
+static int spectrum9_scale_v4(const GColorModel *m, GColor *out, const GColor *a, double s)
+{
+    S9_SCALE(gspectral_kscale);
+}
+
+static int spectrum9_div_v4(const GColorModel *m, GColor *out, const GColor *a, const GColor *b)
+{
+    S9_DIV(gspectral_kdiv);
+}
+
+static int spectrum9_axpy_v4(const GColorModel *m, GColor *out, double s, const GColor *a, const GColor *b)
+{
+    S9_AXPY(gspectral_kaxpyd);
+}
+
+static double spectrum9_brightness_v4(const GColorModel *m, const GColor *a) { S9_BRIGHTNESS(gspectral_kbright); }
+
+#ifdef GSPECTRAL_AVX2
+static int spectrum9_add(const GColorModel *m, GColor *out, const GColor *a, const GColor *b);
+static int spectrum9_mul(const GColorModel *m, GColor *out, const GColor *a, const GColor *b);
+static int spectrum9_scale(const GColorModel *m, GColor *out, const GColor *a, double s);
+static int spectrum9_div(const GColorModel *m, GColor *out, const GColor *a, const GColor *b);
+static int spectrum9_axpy(const GColorModel *m, GColor *out, double s, const GColor *a, const GColor *b);
+static double spectrum9_brightness(const GColorModel *m, const GColor *a);
+
+static GSPECTRAL_TARGET_AVX2 int spectrum9_add_v8(const GColorModel *m, GColor *out, const GColor *a,
+                                                  const GColor *b)
+{
+    S9_ADD(gspectral_kmap8);
+}
+
+static GSPECTRAL_TARGET_AVX2 int spectrum9_mul_v8(const GColorModel *m, GColor *out, const GColor *a,
+                                                  const GColor *b)
+{
+    S9_MUL(gspectral_kmap8);
+}
+
+static GSPECTRAL_TARGET_AVX2 int spectrum9_scale_v8(const GColorModel *m, GColor *out, const GColor *a, double s)
+{
+    S9_SCALE(gspectral_kscale8);
+}
+
+static GSPECTRAL_TARGET_AVX2 int spectrum9_div_v8(const GColorModel *m, GColor *out, const GColor *a,
+                                                  const GColor *b)
+{
+    S9_DIV(gspectral_kdiv8);
+}
+
+static GSPECTRAL_TARGET_AVX2 int spectrum9_axpy_v8(const GColorModel *m, GColor *out, double s, const GColor *a,
+                                                   const GColor *b)
+{
+    S9_AXPY(gspectral_kaxpyd8);
+}
+
+static GSPECTRAL_TARGET_AVX2 double spectrum9_brightness_v8(const GColorModel *m, const GColor *a)
+{
+    S9_BRIGHTNESS(gspectral_kbright8);
+}
+
+GSPECTRAL_PICK(spectrum9_add);
+GSPECTRAL_PICK(spectrum9_mul);
+GSPECTRAL_PICK(spectrum9_scale);
+GSPECTRAL_PICK(spectrum9_div);
+GSPECTRAL_PICK(spectrum9_axpy);
+GSPECTRAL_PICK(spectrum9_brightness);
+#else
+#define spectrum9_add spectrum9_add_v4
+#define spectrum9_mul spectrum9_mul_v4
+#define spectrum9_scale spectrum9_scale_v4
+#define spectrum9_div spectrum9_div_v4
+#define spectrum9_axpy spectrum9_axpy_v4
+#define spectrum9_brightness spectrum9_brightness_v4
+#endif
 
 static int spectrum9_from_reradiation(const GColorModel *m, const GReradiation *r, GColor *out, GError *err)
 {
@@ -391,7 +507,7 @@ static const GColorModelClass gcolormodel_spectrum9 = {
     .brightness = spectrum9_brightness,
     .to_nm = spectrum9_to_nm,
     .from_nm = spectrum9_from_nm,
-    .to_xyz = spectrum9_to_xyz,
+    .to_xyz = gspectral_to_xyz_folded, /* a matrix reads as its response to white (the row sums) */
     .from_rgb = gspectral_from_rgb,
     .from_reradiation = spectrum9_from_reradiation,
     .exp_scaled = spectrum9_exp_scaled,

@@ -1,9 +1,11 @@
 /* test_color_bands.c - the colour interface's wavelength bands (color.h: band_count, band_mask, band_value):
  * every built-in model's bands partition its samples (the masks are disjoint unit masks summing to white),
  * the value of a dielectric's index in a band is the dispersion formula at the band's wavelength, and a model
- * that gives no band slots has one band that is everything. */
+ * that gives no band slots has one band that is everything. A class is asked its band count once, when its model is
+ * created, and the kit's band value is the sample itself. */
 #include "generic/builtins.h"
 #include "generic/color.h"
+#include "generic/kit/spectral.h"
 #include "generic/materials.h"
 
 #include <math.h>
@@ -135,6 +137,51 @@ static void test_defaults(void **state)
     gcolormodel_destroy(rgb);
 }
 
+static int band_count_calls;
+
+static int counting_band_count(const GColorModel *m)
+{
+    band_count_calls++;
+    return gspectral_band_count(m);
+}
+
+/* The library asks a class for its band count once, when the model is created; the kit's band_value (every sample a
+ * band) reads the sample itself: exactly the sample, and NaN outside the bands or for a matrix. */
+static void test_band_count_asked_once(void **state)
+{
+    (void)state;
+    GColorModel *spectrum = model("spectrum");
+    GColorModelClass counted = *spectrum->cls;
+    counted.band_count = counting_band_count;
+    GColorModel *m = NULL;
+    GError err;
+    band_count_calls = 0;
+    assert_int_equal(gcolormodel_create_class(&counted, NULL, &m, &err), G_OK);
+    assert_int_equal(band_count_calls, 1);
+    GColor c;
+    assert_int_equal(gcolor_alloc(&c, m), G_OK);
+    const int n = gcolormodel_band_count(m);
+    assert_int_equal(n, m->nvalues);
+    for (int k = 0; k < n; k++)
+        c.v[k] = 0.3f + 0.001f * (float)k;
+    for (int k = 0; k < n; k++)
+        assert_true(gcolor_band_value(&c, k) == (double)c.v[k]);
+    assert_true(isnan(gcolor_band_value(&c, -1)) && isnan(gcolor_band_value(&c, n)));
+    assert_int_equal(band_count_calls, 1);
+    gcolor_free(&c);
+    gcolormodel_destroy(m);
+    gcolormodel_destroy(spectrum);
+    GColorModel *bi = model("bispectral");
+    GColor a;
+    assert_int_equal(gcolor_alloc(&a, bi), G_OK);
+    assert_int_equal(gcolor_fill(&a, 0.5), G_OK);
+    assert_true(gcolor_band_value(&a, 3) == 0.5);
+    a.kind = GCOLOR_MATRIX;
+    assert_true(isnan(gcolor_band_value(&a, 3)));
+    gcolor_free(&a);
+    gcolormodel_destroy(bi);
+}
+
 int main(void)
 {
     if (generic_register_builtins(NULL) != G_OK)
@@ -143,6 +190,7 @@ int main(void)
         cmocka_unit_test(test_builtin_partitions),
         cmocka_unit_test(test_index_per_band),
         cmocka_unit_test(test_defaults),
+        cmocka_unit_test(test_band_count_asked_once),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

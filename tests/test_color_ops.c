@@ -2,7 +2,8 @@
  * registered colour model (taken from the registry, not listed here): gcolor_free is harmless for arena and
  * caller colours, gcolor_wrap refuses a short buffer, fill / exp / axpy / add_scaled give the analytic values
  * for vectors and (bispectral) matrices, and the library's matrix default works for a model whose capacity is
- * larger than any built-in one, without allocating after its first use. */
+ * larger than any built-in one, without allocating after its first use. copy, fill, axpy and the finiteness tests
+ * answer alike at every position of a value, on the grid lengths the library takes as constants and on others. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -608,6 +609,83 @@ static void test_add_scaled_in_other_threads(void **state)
     gcolormodel_destroy(m);
 }
 
+/* copy, fill and the finiteness tests on every position of a value, on grids of the lengths the library takes as
+ * constants (9, 41, 81) and of others (3, 51, 401), vectors and matrices: the same answers as a test of each sample,
+ * every float copied bit for bit, a fill that writes the vector's samples and nothing past them, and axpy against
+ * its definition (the product in double, rounded to float, then the float sum). */
+static void test_copy_fill_finite_every_position(void **state)
+{
+    (void)state;
+    const char *names[] = {"rgb", "spectrum9", "spectrum", "spectrum", "spectrum", "spectrum", "bispectral"};
+    const GColorModelOptions opts[] = {{0, 0, 0, 0}, {0, 0, 0, 0},   {5, 0, 0, 0}, {10, 0, 0, 0},
+                                       {1, 0, 0, 0}, {6, 400, 700, 0}, {0, 0, 0, 0}};
+    const float odd[] = {NAN, INFINITY, -INFINITY, -0.5f};
+    int cases = 0;
+    for (int i = 0; i < 7; i++) {
+        GColorModel *m;
+        assert_int_equal(gcolormodel_create(names[i], &opts[i], &m, NULL), G_OK);
+        const int cap = m->capacity, n = m->nvalues, matrices = cap == n * n && n > 1;
+        float *av = malloc((size_t)(cap + 1) * sizeof *av), *bv = malloc((size_t)(cap + 1) * sizeof *bv);
+        float *ov = malloc((size_t)(cap + 1) * sizeof *ov);
+        assert_true(av && bv && ov);
+        GColor a, b, o;
+        assert_int_equal(gcolor_wrap(&a, m, av, (size_t)cap), G_OK);
+        assert_int_equal(gcolor_wrap(&b, m, bv, (size_t)cap), G_OK);
+        assert_int_equal(gcolor_wrap(&o, m, ov, (size_t)cap), G_OK);
+        for (int kind = GCOLOR_VECTOR; kind <= (matrices ? GCOLOR_MATRIX : GCOLOR_VECTOR); kind++) {
+            const int len = kind == GCOLOR_MATRIX ? cap : n;
+            for (int k = 0; k < len; k++)
+                for (int j = 0; j < 4; j++) {
+                    for (int x = 0; x < len; x++)
+                        av[x] = 0.25f + 0.125f * (float)(x % 5);
+                    av[k] = odd[j];
+                    a.kind = kind;
+                    assert_int_equal(gcolor_is_finite(&a), j == 3);
+                    assert_false(gcolor_is_nonnegative(&a));
+                    av[k] = 1.0f;
+                    assert_true(gcolor_is_finite(&a) && gcolor_is_nonnegative(&a));
+                    av[k] = odd[j];
+                    ov[len] = bv[len] = 7.0f; /* past the value: left alone */
+                    for (int x = 0; x < len; x++)
+                        ov[x] = -1.0f;
+                    o.kind = 1 - kind;
+                    assert_int_equal(gcolor_copy(&o, &a), G_OK);
+                    assert_int_equal(o.kind, kind);
+                    assert_memory_equal(ov, av, (size_t)len * sizeof *av);
+                    assert_true(ov[len] == 7.0f);
+                    if (kind == GCOLOR_VECTOR && j == 3) { /* axpy of two vectors: the library's or the model's */
+                        for (int x = 0; x < n; x++)
+                            bv[x] = 0.1f * (float)x - 1.0f;
+                        b.kind = GCOLOR_VECTOR;
+                        const double s = k % 2 ? 0.75 : 0.1;
+                        assert_int_equal(gcolor_axpy(&o, s, &a, &b), G_OK);
+                        for (int x = 0; x < n; x++)
+                            assert_true(ov[x] == bv[x] + (float)(av[x] * s));
+                    }
+                    cases++;
+                }
+        }
+        for (int j = 0; j < 3; j++) {
+            const double c[] = {0.0, 0.3, -2.0};
+            for (int x = 0; x <= cap; x++)
+                ov[x] = 7.0f;
+            o.kind = matrices ? GCOLOR_MATRIX : GCOLOR_VECTOR;
+            assert_int_equal(gcolor_fill(&o, c[j]), G_OK);
+            assert_int_equal(o.kind, GCOLOR_VECTOR);
+            for (int x = 0; x < n; x++)
+                assert_true(ov[x] == (float)c[j]);
+            assert_true(ov[cap] == 7.0f);
+        }
+        print_message("%-10s %3d values (%s): copy, fill, finiteness and axpy at every position\n", names[i], n,
+                      matrices ? "and matrices" : "vectors");
+        free(av);
+        free(bv);
+        free(ov);
+        gcolormodel_destroy(m);
+    }
+    print_message("%d positions\n", cases);
+}
+
 int main(void)
 {
     if (generic_register_builtins(NULL) != G_OK)
@@ -617,6 +695,7 @@ int main(void)
         cmocka_unit_test(test_wrap_refuses_short_buffer),
         cmocka_unit_test(test_fill_exp_axpy_vectors),
         cmocka_unit_test(test_fill_exp_axpy_matrices),
+        cmocka_unit_test(test_copy_fill_finite_every_position),
         cmocka_unit_test(test_add_scaled_beyond_builtin_capacity),
         cmocka_unit_test(test_add_scaled_in_other_threads),
     };

@@ -317,6 +317,51 @@ static GSPECTRAL_TARGET_AVX2 void kxyz8(const float *t, const float *a, int n, d
 }
 #endif
 
+/* A matrix of c's model (n x n entries, n = nvalues) reads as the vector of its row sums (each in double, rounded
+ * to float): its coordinates equal that vector's bit for bit, and a non-finite entry anywhere, or +inf and -inf in
+ * one row, makes all three non-finite. Returns the cases checked. */
+static int matrix_nonfinite_cases(GColor *c)
+{
+    const GColorModel *m = c->model;
+    const int n = m->nvalues;
+    const float odd[] = {NAN, INFINITY, -INFINITY};
+    float sums[128];
+    assert_true(n <= 128);
+    GColor v = {.model = m, .v = sums, .kind = GCOLOR_VECTOR, .storage = GCOLOR_STORAGE_CALLER, .capacity = 128};
+    int cases = 0;
+    for (int e = -1; e < n * n; e++)
+        for (int o = 0; o < 3; o++) {
+            c->kind = GCOLOR_MATRIX;
+            for (int j = 0; j < n * n; j++)
+                c->v[j] = (j % (n + 1) == 0 ? 0.5f : 0.02f) + 0.001f * (float)(j % 7);
+            double xyz[3], ref[3];
+            if (e < 0) { /* all finite, in both roles; then +inf and -inf in row o */
+                for (int r = 0; r < n; r++) {
+                    double s = 0.0;
+                    for (int j = 0; j < n; j++)
+                        s += c->v[r * n + j];
+                    sums[r] = (float)s;
+                }
+                for (GColorRole role = GCOLOR_REFLECTANCE; role <= GCOLOR_LIGHT; role++) {
+                    assert_int_equal(gcolor_to_xyz(c, role, xyz), G_OK);
+                    assert_int_equal(gcolor_to_xyz(&v, role, ref), G_OK);
+                    assert_memory_equal(xyz, ref, sizeof xyz);
+                    assert_true(isfinite(xyz[0]) && isfinite(xyz[1]) && isfinite(xyz[2]));
+                }
+                c->v[o * n] = INFINITY;
+                c->v[o * n + n - 1] = -INFINITY;
+            } else {
+                c->v[e] = odd[o];
+            }
+            assert_int_equal(gcolor_to_xyz(c, GCOLOR_LIGHT, xyz), G_OK);
+            assert_true(xyz_nonfinite(xyz));
+            assert_false(gcolor_is_finite(c));
+            cases++;
+        }
+    print_message("%-10s %3d x %d matrices: every non-finite entry shows\n", gcolormodel_name(m), n, n);
+    return cases;
+}
+
 static void test_xyz_shows_nonfinite(void **state)
 {
     (void)state;
@@ -346,7 +391,7 @@ static void test_xyz_shows_nonfinite(void **state)
     const char *names[] = {"spectrum", "spectrum", "spectrum", "spectrum", "spectrum9", "bispectral", "rgb"};
     const GColorModelOptions opts[] = {{5, 0, 0, 0},   {1, 0, 0, 0}, {10, 0, 0, 0}, {6, 400, 700, 0},
                                        {0, 0, 0, 0}, {0, 0, 0, 0}, {0, 0, 0, 0}};
-    const int shows[] = {1, 1, 1, 1, 0, 0, 0}; /* spectrum9, bispectral and rgb have conversions of their own */
+    const int shows[] = {1, 1, 1, 1, 1, 1, 0}; /* rgb has a conversion of its own */
     assert_int_equal(gcolormodel_xyz_shows_nonfinite(NULL), 0);
     for (int i = 0; i < 7; i++) {
         GColorModel *m;
@@ -367,6 +412,8 @@ static void test_xyz_shows_nonfinite(void **state)
             }
         print_message("%-10s %3d samples: the conversion %s every non-finite sample\n", names[i], m->nvalues,
                       shows[i] ? "shows" : "is not known to show");
+        if (shows[i] && m->capacity == m->nvalues * m->nvalues && m->nvalues > 1)
+            cases += matrix_nonfinite_cases(&c);
         gcolor_free(&c);
         gcolormodel_destroy(m);
     }

@@ -179,7 +179,8 @@ struct GColorModelClass {
      * model's samples splits the ray into bands, each refracted with the band's own index and carrying only
      * the band's light. The bands partition the model's samples: their masks sum to white. */
     /** Number of bands (>= 1). Default 1: the model says nothing about wavelengths, and light is refracted
-     * whole with the brightness of the index (no dispersion). */
+     * whole with the brightness of the index (no dispersion). The library asks once, when the model is created
+     * (a model's bands are part of its configuration), and answers gcolormodel_band_count from that. */
     int (*band_count)(const GColorModel *m);
     /** out = the mask of band `band` (0 <= band < band_count): a vector that multiplied with a light keeps the
      * light of the band and nothing else. Default: white (the one band is everything). */
@@ -298,7 +299,8 @@ GENERIC_API GENERIC_NODISCARD int gcolor_is_nonnegative(const GColor *c);
  * infinite value anywhere gives non-finite coordinates, so that finite coordinates prove the colour finite and a
  * renderer may test the three numbers it converts instead of every sample (gcolor_is_finite). It holds for the
  * models whose to_xyz is the spectral kit's (gspectral_to_xyz: each coordinate is a sum over every sample of the
- * sample times a weight, and NaN or infinity times any weight, zero included, stays non-finite through the sum); 0
+ * sample times a weight, and NaN or infinity times any weight, zero included, stays non-finite through the sum; and
+ * gspectral_to_xyz_folded, which reads a matrix by its row sums, each non-finite where one of its entries is); 0
  * for any other, whose conversion the library cannot read (it may clamp, or skip samples). */
 GENERIC_API int gcolormodel_xyz_shows_nonfinite(const GColorModel *m);
 

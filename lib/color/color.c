@@ -16,6 +16,7 @@ typedef struct ModelRecord {
     GColorModel model;
     pthread_mutex_t lock;
     int ready;            /* set once init has succeeded: a range measured before that is not kept */
+    int bands;            /* gcolormodel_band_count, asked of the class once init has succeeded */
     int have_range[2];    /* per class role (reflectance, light) */
     double range[2][2];   /* lo, hi */
 } ModelRecord;
@@ -58,6 +59,9 @@ int gcolormodel_create_class(const GColorModelClass *cls, const GColorModelOptio
         gmem_free(rec);
         return rc;
     }
+    rec->bands = cls->band_count ? cls->band_count(m) : 1;
+    if (rec->bands < 1)
+        rec->bands = 1;
     rec->ready = 1;
     *out = m;
     return G_OK;
@@ -198,8 +202,8 @@ int gcolor_pow(GColor *out, const GColor *a, double e)
 /* The default brightness, for a model without the slot: Y of the value as a reflectance under D65, through the
  * model's own conversion; a value whose Y is not > 0 (a spectrum outside the eye's range, or one whose negative
  * samples cancel its positive ones) and is not black gets the smallest normal double, so that 0 still means black
- * alone. */
-static double default_brightness(const GColor *c)
+ * alone. Out of line, as to_xyz_through_nm: the dispatch needs no stack frame. */
+__attribute__((noinline)) static double default_brightness(const GColor *c)
 {
     double xyz[3];
     if (gcolor_to_xyz(c, GCOLOR_REFLECTANCE, xyz) == G_OK && xyz[1] > 0.0)
@@ -309,27 +313,64 @@ static int gcolor_is_finite_v4(const GColor *c) { return gspectral_kfinite(c->v,
 static int gcolor_is_nonnegative_v4(const GColor *c) { return gspectral_kfinite(c->v, (int)value_floats(c), 1); }
 
 #ifdef GSPECTRAL_AVX2
-static GSPECTRAL_TARGET_AVX2 int gcolor_axpy_v8(GColor *out, double s, const GColor *a, const GColor *b)
+/* The 8-float kernels on the common grids' lengths as constants (GSPECTRAL_ON_COMMON_LENGTH), as the kit's operations
+ * take them (lib/color/spectral.c): straight-line code on those grids, the kernels' jump on any other length; the
+ * same kernels either way, so the same results bit for bit. */
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void axpy8(float *o, double s, const float *a,
+                                                                             const float *b, int n)
 {
-    AXPY_BODY(gspectral_kaxpyd8);
+#define AXPY(len) gspectral_kaxpyd8(o, s, a, b, len)
+    GSPECTRAL_ON_COMMON_LENGTH(n, AXPY);
+#undef AXPY
 }
 
-static GSPECTRAL_TARGET_AVX2 int gcolor_fill_v8(GColor *out, double value) { FILL_BODY(gspectral_kfill8); }
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void fill8(float *o, float value, int n)
+{
+    if (n < 8) { /* rgb's 3: no tests of the common lengths first */
+        gspectral_kfill(o, value, n);
+        return;
+    }
+#define FILL(len) gspectral_kfill8(o, value, len)
+    GSPECTRAL_ON_COMMON_LENGTH(n, FILL);
+#undef FILL
+}
 
 /* from 8 floats on, the 8-float blocks the kernels load (spectral_kernels8.h), not libc's pieces; fewer (rgb's 3)
  * as memcpy stores them, which is how the models of so few values read them back */
-#define COPY_KERNEL(o, a, n) ((n) < 8 ? (void)memcpy(o, a, (n) * sizeof(float)) : gspectral_kcopy8(o, a, (int)(n)))
-static GSPECTRAL_TARGET_AVX2 int gcolor_copy_v8(GColor *dst, const GColor *src) { COPY_BODY(COPY_KERNEL); }
-#undef COPY_KERNEL
-
-static GSPECTRAL_TARGET_AVX2 int gcolor_is_finite_v8(const GColor *c)
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void copy8(float *o, const float *a, size_t n)
 {
-    return gspectral_kfinite8(c->v, (int)value_floats(c), 0);
+    if (n < 8) {
+        memcpy(o, a, n * sizeof(float));
+        return;
+    }
+#define COPY(len) gspectral_kcopy8(o, a, (int)(len))
+    GSPECTRAL_ON_COMMON_LENGTH(n, COPY);
+#undef COPY
 }
+
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 int finite8(const float *a, int n, int nonnegative)
+{
+    if (n < 8)
+        return gspectral_kfinite(a, n, nonnegative);
+#define FINITE(len) gspectral_kfinite8(a, len, nonnegative)
+    return GSPECTRAL_ON_COMMON_LENGTH(n, FINITE);
+#undef FINITE
+}
+
+static GSPECTRAL_TARGET_AVX2 int gcolor_axpy_v8(GColor *out, double s, const GColor *a, const GColor *b)
+{
+    AXPY_BODY(axpy8);
+}
+
+static GSPECTRAL_TARGET_AVX2 int gcolor_fill_v8(GColor *out, double value) { FILL_BODY(fill8); }
+
+static GSPECTRAL_TARGET_AVX2 int gcolor_copy_v8(GColor *dst, const GColor *src) { COPY_BODY(copy8); }
+
+static GSPECTRAL_TARGET_AVX2 int gcolor_is_finite_v8(const GColor *c) { return finite8(c->v, (int)value_floats(c), 0); }
 
 static GSPECTRAL_TARGET_AVX2 int gcolor_is_nonnegative_v8(const GColor *c)
 {
-    return gspectral_kfinite8(c->v, (int)value_floats(c), 1);
+    return finite8(c->v, (int)value_floats(c), 1);
 }
 
 GSPECTRAL_PICK(gcolor_axpy);
@@ -390,18 +431,28 @@ int gcolor_from_nm(GColor *c, const GSpectrumNM *in, GColorRole role)
     return m->cls->from_nm(m, in, class_role(role), c);
 }
 
-int gcolormodel_xyz_shows_nonfinite(const GColorModel *m) { return m && m->cls->to_xyz == gspectral_to_xyz; }
+int gcolormodel_xyz_shows_nonfinite(const GColorModel *m)
+{
+    return m && (m->cls->to_xyz == gspectral_to_xyz || m->cls->to_xyz == gspectral_to_xyz_folded);
+}
+
+/* gcolor_to_xyz for a model without to_xyz: through the nm spectrum. Out of line, so that the dispatch to the class
+ * keeps no room for the spectrum on its stack. */
+__attribute__((noinline)) static int to_xyz_through_nm(const GColor *c, GColorRole role, double xyz[3])
+{
+    GSpectrumNM s;
+    int rc = gcolor_to_nm(c, role, &s);
+    if (rc == G_OK)
+        gcie_nm_to_xyz(&s, role, xyz);
+    return rc;
+}
 
 int gcolor_to_xyz(const GColor *c, GColorRole role, double xyz[3])
 {
     role = class_role(role);
     if (c->model->cls->to_xyz)
         return c->model->cls->to_xyz(c->model, c, role, xyz);
-    GSpectrumNM s;
-    int rc = gcolor_to_nm(c, role, &s);
-    if (rc == G_OK)
-        gcie_nm_to_xyz(&s, role, xyz);
-    return rc;
+    return to_xyz_through_nm(c, role, xyz);
 }
 
 int gcolor_to_rgb(const GColor *c, GColorRole role, double rgb[3])
@@ -516,11 +567,7 @@ int gcolor_convert(GColor *dst, const GColor *src, GColorRole role)
 
 size_t gcolormodel_value_bytes(const GColorModel *m) { return (size_t)m->capacity * sizeof(float); }
 
-int gcolormodel_band_count(const GColorModel *m)
-{
-    int n = m->cls->band_count ? m->cls->band_count(m) : 1;
-    return n >= 1 ? n : 1;
-}
+int gcolormodel_band_count(const GColorModel *m) { return record_of(m)->bands; }
 
 int gcolor_band_mask(GColor *out, int band)
 {
@@ -532,8 +579,9 @@ int gcolor_band_mask(GColor *out, int band)
     return gcolor_fill(out, 1.0);
 }
 
-/* The default band value: brightness(mask * c) / brightness(mask), through temporaries of the thread's arena. */
-static double band_value_by_mask(const GColorModel *m, const GColor *c, int band)
+/* The default band value: brightness(mask * c) / brightness(mask), through temporaries of the thread's arena. Out of
+ * line: gcolor_band_value's other paths need no stack frame. */
+__attribute__((noinline)) static double band_value_by_mask(const GColorModel *m, const GColor *c, int band)
 {
     GScratch *arena = gscratch_thread();
     if (!arena)
@@ -553,8 +601,11 @@ static double band_value_by_mask(const GColorModel *m, const GColor *c, int band
 double gcolor_band_value(const GColor *c, int band)
 {
     const GColorModel *m = c->model;
-    if (c->kind != GCOLOR_VECTOR || band < 0 || band >= gcolormodel_band_count(m))
+    if (c->kind != GCOLOR_VECTOR || band < 0 || band >= record_of(m)->bands)
         return NAN;
+    if (m->cls->band_value == gspectral_band_value) /* the kit's: the sample itself, without the call (a path
+                                                      * tracer's roulette reads a dozen bands a bounce) */
+        return c->v[band];
     if (m->cls->band_value)
         return m->cls->band_value(m, c, band);
     if (!m->cls->band_count)

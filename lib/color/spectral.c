@@ -471,6 +471,31 @@ static int gspectral_to_xyz_v4(const GColorModel *m, const GColor *a, GColorRole
     return G_OK;
 }
 
+/* gspectral_to_xyz_folded of a matrix: its row sums (each in double, in order, rounded to float), converted as a
+ * vector. Out of line, so that the vector path keeps no stack for them. */
+__attribute__((noinline)) static int to_xyz_matrix(const GColorModel *m, const GColor *a, GColorRole role,
+                                                   double xyz[3])
+{
+    int n = m->nvalues;
+    float d[GSPECTRAL_MAX_SAMPLES];
+    for (int o = 0; o < n; o++) {
+        const float *row = a->v + (size_t)o * n;
+        double s = 0.0;
+        for (int i = 0; i < n; i++)
+            s += row[i];
+        d[o] = (float)s;
+    }
+    GColor v = {.model = m, .v = d, .kind = GCOLOR_VECTOR, .storage = GCOLOR_STORAGE_CALLER, .capacity = n};
+    return gspectral_to_xyz(m, &v, role, xyz);
+}
+
+static int gspectral_to_xyz_folded_v4(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3])
+{
+    if (a->kind == GCOLOR_MATRIX)
+        return to_xyz_matrix(m, a, role, xyz);
+    return gspectral_to_xyz_v4(m, a, role, xyz);
+}
+
 #ifdef GSPECTRAL_AVX2
 /* The 8-float bodies take the common grids' lengths as constants (GSPECTRAL_ON_COMMON_LENGTH): any kit-based
  * model on them gets straight-line code, plug-ins included; every other length takes the kernels' jump. */
@@ -543,6 +568,14 @@ static GSPECTRAL_TARGET_AVX2 int gspectral_to_xyz_v8(const GColorModel *m, const
     return G_OK;
 }
 
+static GSPECTRAL_TARGET_AVX2 int gspectral_to_xyz_folded_v8(const GColorModel *m, const GColor *a, GColorRole role,
+                                                            double xyz[3])
+{
+    if (a->kind == GCOLOR_MATRIX)
+        return to_xyz_matrix(m, a, role, xyz);
+    return gspectral_to_xyz_v8(m, a, role, xyz);
+}
+
 GSPECTRAL_PICK(gspectral_black);
 GSPECTRAL_PICK(gspectral_add);
 GSPECTRAL_PICK(gspectral_mul);
@@ -550,6 +583,7 @@ GSPECTRAL_PICK(gspectral_scale);
 GSPECTRAL_PICK(gspectral_div);
 GSPECTRAL_PICK(gspectral_brightness);
 GSPECTRAL_PICK(gspectral_to_xyz);
+GSPECTRAL_PICK(gspectral_to_xyz_folded);
 #else
 void gspectral_black(const GColorModel *m, GColor *out) { gspectral_black_v4(m, out); }
 
@@ -578,6 +612,11 @@ double gspectral_brightness(const GColorModel *m, const GColor *a) { return gspe
 int gspectral_to_xyz(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3])
 {
     return gspectral_to_xyz_v4(m, a, role, xyz);
+}
+
+int gspectral_to_xyz_folded(const GColorModel *m, const GColor *a, GColorRole role, double xyz[3])
+{
+    return gspectral_to_xyz_folded_v4(m, a, role, xyz);
 }
 #endif
 

@@ -166,6 +166,13 @@ GENERIC_API GENERIC_NODISCARD int gspectral_from_nm(const GColorModel *m, const 
  * weights are rounded to float and the sums made in float on 8 lanes, gspectral_kxyz of spectral_kernels.h). */
 GENERIC_API GENERIC_NODISCARD int gspectral_to_xyz(const GColorModel *m, const GColor *a, GColorRole role,
                                                    double xyz[3]);
+/** to_xyz for a model with re-radiation matrices of nvalues x nvalues floats (GCOLOR_MATRIX, A[o * nvalues + i], as
+ * the built-in bispectral and spectrum9 hold): a vector as gspectral_to_xyz, a matrix as its response to
+ * equal-energy light, the vector of its row sums (each summed in double in order, then rounded to float). A NaN or
+ * infinite entry makes its row sum non-finite, so gcolormodel_xyz_shows_nonfinite holds for a model on this
+ * conversion as for one on gspectral_to_xyz. nvalues <= GSPECTRAL_MAX_SAMPLES. */
+GENERIC_API GENERIC_NODISCARD int gspectral_to_xyz_folded(const GColorModel *m, const GColor *a, GColorRole role,
+                                                          double xyz[3]);
 /** The float colour matching table gspectral_to_xyz reads for role (gspectral_xyz_table's layout, n = the grid's
  * samples), for a model's own to_xyz kernel over the same sums. */
 GENERIC_API const float *gspectral_xyz_floats(const GSpectral *s, GColorRole role);
