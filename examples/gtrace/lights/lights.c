@@ -181,7 +181,7 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
         medium = gvec3_dot(in, facing) >= 0.0 ? sp->from : sp->to;
         if (!medium || !isfinite(dist)) { /* the light arrives as it left */
             if (!t->gather)
-                return gcolor_add(result, result, refl);
+                return light_add(t, result, refl);
             /* gathered with the factor rounded to float, as gcolor_scale rounds its own: the axpy then multiplies in
              * float */
             t->gathered_any = 1;
@@ -196,7 +196,7 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
         if ((t->gather && (rc = gmaterial_reflection(sp->material, sp, in, illum, out_dir, refl)) < 0) ||
             (rc = gmaterial_absorption(medium, sp, refl, dist, tmp)) < 0 || (rc = gcolor_copy(refl, tmp)) < 0)
             return rc;
-        return gcolor_add(result, result, refl);
+        return light_add(t, result, refl);
     }
     int visible;
     if ((rc = light_transmit(c, sp, facing, media, in, dist, illum, &visible)) < 0 || !visible)
@@ -207,7 +207,15 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
     }
     if ((rc = gmaterial_reflection(sp->material, sp, in, illum, out_dir, refl)) < 0)
         return rc;
-    return gcolor_add(result, result, refl);
+    return light_add(t, result, refl);
+}
+
+int light_add(LightTmp *t, GColor *result, const GColor *x)
+{
+    if (!t->unset)
+        return gcolor_add(result, result, x);
+    t->unset = 0;
+    return gcolor_copy(result, x);
 }
 
 void light_gather(GSurfPoint *sp, LightTmp *t)
@@ -226,6 +234,10 @@ int light_gather_finish(GSurfPoint *sp, LightTmp *t, GColor *result)
     if (!t->gathered_any)
         return G_OK; /* no light sample arrived (all shadowed or turned away): the material is not asked */
     int rc = gmaterial_diffuse(sp->material, sp, &t->tmp);
+    if (rc == G_OK && t->unset) { /* black plus the reflected light is that light: written to result directly */
+        t->unset = 0;
+        return gcolor_mul_scaled(result, &t->tmp, &t->gathered, 1.0 / M_PI);
+    }
     if (rc == G_OK)
         rc = gcolor_mul_scaled(&t->tmp, &t->tmp, &t->gathered, 1.0 / M_PI);
     return rc == G_OK ? gcolor_add(result, result, &t->tmp) : rc;
@@ -257,6 +269,7 @@ int light_temps(TraceCtx *c, LightTmp *t)
     t->blocked = 0;
     t->gather = 0;
     t->gathered_any = 0;
+    t->unset = 0;
     if ((rc = trace_tmp(c, TRACE_TMP_ILLUM, &t->illum)) < 0 || (rc = trace_tmp(c, TRACE_TMP_REFL, &t->refl)) < 0 ||
         (rc = trace_tmp(c, TRACE_TMP_LIGHT, &t->tmp)) < 0 || (rc = trace_tmp(c, TRACE_TMP_GATHER, &t->gathered)) < 0)
         return rc;
