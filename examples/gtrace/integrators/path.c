@@ -220,9 +220,10 @@ static int delta_choice(PathCtx *p, const LightPick *lp, int k0, GVec3 x, GVec3 
 
 /* Adds to out the direct light at sp, the vertex at `depth`, from every light source, reflected towards to_viewer
  * (NEE, when the table holds few entries: light_pick_nee_every). The first sphere or rectangle light (else the glowing
- * geometry) takes the vertex's light dimensions, the others the generator's numbers. */
+ * geometry) takes the vertex's light dimensions, the others the generator's numbers. *unset: out holds nothing yet
+ * and stands for black (LightTmp.unset): the first light is written to it, and *unset cleared. */
 static int direct_light_every(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 to_viewer,
-                              int opaque, const GColor *ri, int depth, GColor *out)
+                              int opaque, const GColor *ri, int depth, GColor *out, int *unset)
 {
     int slots_free = 1;
     TraceCtx *c = p->c;
@@ -234,6 +235,7 @@ static int direct_light_every(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Me
     int rc = G_OK;
     CHECK(light_temps(c, &lt));
     CHECK(gcolor_scratch(&L, s->model, c->scratch));
+    lt.unset = *unset;
     light_gather(sp, &lt); /* a Lambertian material: asked once for all samples, MIS weights in their light */
     for (int i = 0; i < s->nlights; i++) {
         const Light *l = s->lights[i];
@@ -261,13 +263,13 @@ static int direct_light_every(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Me
         }
         GVec3 in;
         double dist, pdf_l;
-        int got;
-        CHECK(got = path_light_sample_at(l, sp->point, u[0], u[1], &in, &dist, &pdf_l, &L));
+        int got; /* the radiance is the light's colour, read where it is */
+        CHECK(got = path_light_direction_at(l, sp->point, u[0], u[1], &in, &dist, &pdf_l));
         if (!got || (opaque && gvec3_dot(in, facing) <= 0.0))
             continue;
         double w = mis_power(pdf_l, gmaterial_pdf(m, sp, in, to_viewer, ri));
         if (w > 0.0)
-            CHECK(sample_light(c, sp, facing, media, in, dist, &L, w / pdf_l, to_viewer, &lt, out));
+            CHECK(sample_light(c, sp, facing, media, in, dist, &l->color, w / pdf_l, to_viewer, &lt, out));
     }
     if (c->emissive) { /* glowing geometry: one point of one primitive, chosen by power */
         GVec3 in, normal;
@@ -292,6 +294,7 @@ static int direct_light_every(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Me
         }
     }
     CHECK(light_gather_finish(sp, &lt, out));
+    *unset = lt.unset;
 done:
     gscratch_release(c->scratch, mark);
     return rc;
@@ -303,7 +306,7 @@ done:
  * a sphere or rectangle light or the glowing geometry its point dimensions, the glowing geometry's primitive what is
  * left of the pick's number; a delta light draws nothing, a probe the generator's numbers. */
 static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 to_viewer, int opaque,
-                        const GColor *ri, int depth, GColor *out)
+                        const GColor *ri, int depth, GColor *out, int *unset)
 {
     TraceCtx *c = p->c;
     const LightPick *lp = c->pick;
@@ -325,7 +328,12 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
     if (pick != 1.0) {
         CHECK(gcolor_scratch(&acc, s->model, c->scratch));
         sum = &acc;
+        if (*unset) { /* out is added to below */
+            gcolor_black(out);
+            *unset = 0;
+        }
     }
+    lt.unset = *unset;
     light_gather(sp, &lt); /* a Lambertian material: asked once, the MIS weight in the light */
     if (l && (l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT || l->kind == LIGHT_DIRECTIONAL ||
               l->kind == LIGHT_IES)) {
@@ -340,8 +348,8 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
         double dist, pdf_l, u1 = vertex_uniform(p, depth, SLOT_LIGHT_U), u2 = vertex_uniform(p, depth, SLOT_LIGHT_V);
         int got;
         lt.blocked = 1;
-        if (l)
-            CHECK(got = path_light_sample_at(l, sp->point, u1, u2, &in, &dist, &pdf_l, &L));
+        if (l) /* the radiance is the light's colour, read where it is */
+            CHECK(got = path_light_direction_at(l, sp->point, u1, u2, &in, &dist, &pdf_l));
         else
             CHECK(got = emissive_sample(c, lp->emissive, sp->point, u_rest, u1, u2, &in, &dist, &normal, &pdf_l, &L));
         if (got && !(opaque && gvec3_dot(in, facing) <= 0.0)) {
@@ -349,10 +357,13 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
             if (!l) /* the shadow ray ends before the glowing surface (a sphere or rectangle light is no surface) */
                 dist = emissive_shadow_reach(sp->point, facing, in, dist, normal);
             if (w > 0.0)
-                CHECK(sample_light(c, sp, facing, media, in, dist, &L, w / pdf_l, to_viewer, &lt, sum));
+                CHECK(sample_light(c, sp, facing, media, in, dist, l ? &l->color : &L, w / pdf_l, to_viewer, &lt,
+                                   sum));
         }
     }
     CHECK(light_gather_finish(sp, &lt, sum));
+    if (sum == out)
+        *unset = lt.unset;
     if (sum != out)
         CHECK(gcolor_add_scaled(out, sum, 1.0 / pick));
 done:
@@ -377,16 +388,15 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
     GScratchMark mark = gscratch_mark(c->scratch);
     GColor ri, rg, tmp, weight, illum;
     int rc = G_OK, opaque, delta, valid;
-    /* written in full before they are read (the group's index by its fill, the others as an operation's out: the
-     * weight by a sample drawn, the bounce's light by path_radiance): not cleared */
-    CHECK(gcolor_scratch_uncleared(&rg, s->model, c->scratch));
-    CHECK(gcolor_scratch_uncleared(&tmp, s->model, c->scratch));
-    CHECK(gcolor_scratch_uncleared(&weight, s->model, c->scratch));
-    CHECK(gcolor_scratch_uncleared(&illum, s->model, c->scratch));
     CHECK(trace_relative_index(c, sp, &ri));
-    CHECK(gmaterial_emission(m, sp, to_viewer, out));
-    if (emit_weight != 1.0)
-        CHECK(gcolor_scale(out, out, emit_weight));
+    /* out stands for black while `unset` (a material that emits nothing): the first light is written to it, not added
+     * to a black written first, and black is written at the end only when no light came */
+    int unset = !gmaterial_emits(m);
+    if (!unset) {
+        CHECK(gmaterial_emission(m, sp, to_viewer, out));
+        if (emit_weight != 1.0)
+            CHECK(gcolor_scale(out, out, emit_weight));
+    }
     opaque = gmaterial_opaque(m, sp);
     CHECK(delta = gmaterial_is_delta(m, sp));
 
@@ -400,18 +410,23 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
             band = pick < b->n ? pick : b->n - 1;
             pick = band;
         }
-        if (band >= 0) {
+        if (band >= 0) { /* written in full by the fill: not cleared */
+            CHECK(gcolor_scratch_uncleared(&rg, s->model, c->scratch));
             CHECK(gcolor_fill(&rg, bands_value(b, &ri, band)));
             ri_use = &rg;
         }
     }
 
     if (!delta && light_pick_nee_every(c->pick) && (s->nlights > 0 || c->emissive))
-        CHECK(direct_light_every(p, sp, facing, media, to_viewer, opaque, ri_use, depth, out));
+        CHECK(direct_light_every(p, sp, facing, media, to_viewer, opaque, ri_use, depth, out, &unset));
     else if (!delta && c->pick && c->pick->n > 0)
-        CHECK(direct_light(p, sp, facing, media, to_viewer, opaque, ri_use, depth, out));
+        CHECK(direct_light(p, sp, facing, media, to_viewer, opaque, ri_use, depth, out, &unset));
 
     if (depth < c->max_depth) {
+        /* written in full before they are read (the weight by a sample drawn, the bounce's light by path_radiance, the
+         * light passed on as an operation's out): not cleared */
+        CHECK(gcolor_scratch_uncleared(&weight, s->model, c->scratch));
+        CHECK(gcolor_scratch_uncleared(&illum, s->model, c->scratch));
         GMaterialSample smp;
         double u1 = vertex_uniform(p, depth, SLOT_BSDF_U), u2 = vertex_uniform(p, depth, SLOT_BSDF_V);
         CHECK(valid = gmaterial_sample(m, sp, to_viewer, ri_use, u1, u2, &smp, &weight));
@@ -442,29 +457,46 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
         c->band = saved;
         p->scattered = scattered;
         CHECK(rc);
+        /* the light passed on, into out directly when it holds nothing yet (black plus it is it) */
+        GColor *dst = &tmp;
+        if (unset && !(transmit && pick >= 0))
+            dst = out;
+        else
+            CHECK(gcolor_scratch_uncleared(&tmp, s->model, c->scratch));
         if (gmaterial_diagonal(m)) {
             /* what it passes on of white light over the density (the sample's weight), times the light: no second
              * evaluation, and each ideal lobe counts with its own probability where a blend's children share an
              * ideal ray (there, reflection() gives their sum, which one child's probability would overweigh) */
-            CHECK(gcolor_mul_scaled(&tmp, &weight, &illum, 1.0 / q));
+            CHECK(gcolor_mul_scaled(dst, &weight, &illum, 1.0 / q));
         } else { /* re-radiation: the light itself through the material */
             CHECK(gcolor_scale(&illum, &illum, 1.0 / (smp.pdf * q)));
             if (transmit)
-                CHECK(gmaterial_refraction(m, sp, smp.in, &illum, ri_use, to_viewer, &tmp));
+                CHECK(gmaterial_refraction(m, sp, smp.in, &illum, ri_use, to_viewer, dst));
             else
-                CHECK(gmaterial_reflection(m, sp, smp.in, &illum, to_viewer, &tmp));
+                CHECK(gmaterial_reflection(m, sp, smp.in, &illum, to_viewer, dst));
         }
         if (transmit && pick >= 0) { /* one group of n chosen: its light, n times */
             CHECK(gcolor_mul(&tmp, &b->mask[pick], &tmp));
             CHECK(gcolor_scale(&tmp, &tmp, (double)b->n));
         }
-        CHECK(gcolor_add(out, out, &tmp));
+        if (dst == out)
+            unset = 0;
+        else if (unset) {
+            unset = 0;
+            gcolor_black(out);
+            CHECK(gcolor_add(out, out, &tmp));
+        } else
+            CHECK(gcolor_add(out, out, &tmp));
     }
 absorb:
+    if (unset)
+        gcolor_black(out);
     /* absorption until the light reaches the viewer */
     if (sp->from) {
-        CHECK(gmaterial_absorption(sp->from, sp, out, sp->t, &tmp));
-        CHECK(gcolor_copy(out, &tmp));
+        GColor absorbed; /* written in full by the material: not cleared */
+        CHECK(gcolor_scratch_uncleared(&absorbed, s->model, c->scratch));
+        CHECK(gmaterial_absorption(sp->from, sp, out, sp->t, &absorbed));
+        CHECK(gcolor_copy(out, &absorbed));
     }
 done:
     gscratch_release(c->scratch, mark);
