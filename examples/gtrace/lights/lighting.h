@@ -16,7 +16,8 @@
 typedef struct LightTmp {
     GColor illum, refl, tmp;
     GColor gathered; /**< with `gather`: the sum of each sample's light (shadowed) times its gmaterial_cos_in */
-    int gathered_any; /**< with `gather`: 1 once a sample's light was added to `gathered` (0: it is still black) */
+    int gathered_any; /**< with `gather`: 1 once a sample's light was added to `gathered` (0: it stands for black and
+                       * is not written: the first sample writes it) */
     int blocked; /**< 1: a shadow ray stops at any surface (the path tracer's rule for lights that material
                   * sampling also reaches: light through glass arrives there as a caustic); 0 (light_temps'
                   * default): it passes non-opaque surfaces along the straight line */

@@ -183,8 +183,11 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
             if (!t->gather)
                 return light_add(t, result, refl);
             /* gathered with the factor rounded to float, as gcolor_scale rounds its own: the axpy then multiplies in
-             * float */
-            t->gathered_any = 1;
+             * float, and the first sample's product is the axpy's onto black, so it is written by gcolor_scale */
+            if (!t->gathered_any) {
+                t->gathered_any = 1;
+                return gcolor_scale(&t->gathered, color, (float)(scale * cos_in));
+            }
             return gcolor_add_scaled(&t->gathered, color, (float)(scale * cos_in));
         }
     } else if (occluded != OCCLUDED_CLEAR && (t->blocked || occluded == OCCLUDED_OPAQUE)) {
@@ -202,6 +205,8 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
     if ((rc = light_transmit(c, sp, facing, media, in, dist, illum, &visible)) < 0 || !visible)
         return rc;
     if (t->gather) { /* the light that got through, as the material would reflect it */
+        if (!t->gathered_any)
+            gcolor_black(&t->gathered);
         t->gathered_any = 1;
         return gcolor_add_scaled(&t->gathered, illum, cos_in);
     }
@@ -221,9 +226,7 @@ int light_add(LightTmp *t, GColor *result, const GColor *x)
 void light_gather(GSurfPoint *sp, LightTmp *t)
 {
     t->gather = gmaterial_lambertian(sp->material);
-    t->gathered_any = 0;
-    if (t->gather)
-        gcolor_black(&t->gathered);
+    t->gathered_any = 0; /* t->gathered is written by the first sample */
 }
 
 int light_gather_finish(GSurfPoint *sp, LightTmp *t, GColor *result)
