@@ -107,20 +107,25 @@ static int reflection_at(const Phong *p, const PhongAt *a, GSurfPoint *sp, GVec3
         lobe = a->lobe_norm * pow(cos_alpha > 1.0 ? 1.0 : cos_alpha, a->n);
     if (lobe <= 0.0) /* kd / pi applied to illum, times the cosine: gcolor_mul then gcolor_scale in one pass */
         return gcolor_mul_scaled(result, a->kd, illum, cos_in / M_PI);
-    /* f_r as a reflectance on the arena (kd / pi + lobe ks: the constant kd's quotient made at creation), then
-     * applied to illum times the cosine */
-    if (!sp->scratch)
-        return G_ERR_INVALID;
-    GScratchMark mark = gscratch_mark(sp->scratch);
-    GColor f;
-    int rc = gcolor_scratch_uncleared(&f, p->base.model, sp->scratch); /* written in full below */
+    /* f_r as a reflectance (kd / pi + lobe ks: the constant kd's quotient made at creation), then applied to illum
+     * times the cosine; f in result itself unless result is illum, else on the arena */
+    GColor f = *result;
+    GScratchMark mark = {0};
+    int rc = G_OK, own = result->v == illum->v;
+    if (own) {
+        if (!sp->scratch)
+            return G_ERR_INVALID;
+        mark = gscratch_mark(sp->scratch);
+        rc = gcolor_scratch_uncleared(&f, p->base.model, sp->scratch); /* written in full below */
+    }
     if (rc == G_OK && a->kd == &p->kd)
         rc = gcolor_axpy(&f, lobe, a->ks, &p->kd_pi);
     else if (rc == G_OK && (rc = gcolor_scale(&f, a->kd, 1.0 / M_PI)) == G_OK)
         rc = gcolor_add_scaled(&f, a->ks, lobe);
     if (rc == G_OK)
         rc = gcolor_mul_scaled(result, &f, illum, cos_in);
-    gscratch_release(sp->scratch, mark);
+    if (own)
+        gscratch_release(sp->scratch, mark);
     return rc;
 }
 

@@ -24,8 +24,9 @@ typedef struct LightTmp {
     int gather;  /**< 1 (light_gather): sample_light adds to `gathered` instead of asking the material per sample;
                   * 0 (light_temps' default): it adds the material's reflection of each sample to the result */
     int unset;   /**< 1: the result holds nothing yet and stands for black (a caller that has not written it): the first
-                  * light is written to it instead of added (light_add), and unset is then 0; 0 (light_temps' default):
-                  * the result is written and light is added to it */
+                  * light is written to it instead of added (light_add), and unset is then 0; until then the result may
+                  * be written as a temporary (its values mean nothing while unset is 1); 0 (light_temps' default): the
+                  * result is written and light is added to it */
 } LightTmp;
 /** The temporaries: the context's own (trace_tmp; from the thread's arena when it has none), not black; blocked,
  * gather and unset are 0. */
@@ -38,7 +39,8 @@ void light_gather(GSurfPoint *sp, LightTmp *t);
 /** Ends light_gather: adds diffuse(sp) times t->gathered / pi to result (nothing when none was gathered; written to
  * it with t->unset) and turns gathering off. A no-op without light_gather. */
 int light_gather_finish(GSurfPoint *sp, LightTmp *t, GColor *result);
-/** Adds light x to result (light_add): result = result + x, or with t->unset result = x and t->unset = 0. */
+/** Adds light x to result: result = result + x, or with t->unset result = x (x may be result itself) and t->unset
+ * = 0. */
 int light_add(LightTmp *t, GColor *result, const GColor *x);
 /** Adds to result the light reflected towards out_dir by sp from one light source, shadowed and absorbed
  * (Fig. 4, light.shade); opaque: the material's opaque() at sp (culls lights behind the surface). */

@@ -158,7 +158,9 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
                  const GColor *color, double scale, GVec3 out_dir, LightTmp *t, GColor *result)
 {
     const Scene *s = c->scene;
-    GColor *illum = &t->illum, *refl = &t->refl, *tmp = &t->tmp;
+    /* a result that holds nothing yet (t->unset) takes the reflected light itself: light_add then has nothing to copy,
+     * and a sample that adds nothing leaves it unset, whatever it holds */
+    GColor *illum = &t->illum, *refl = t->unset ? result : &t->refl, *tmp = &t->tmp;
     double cos_in = 0.0;
     int rc;
     if (t->gather) { /* illum is made below where it is needed: the clear path adds color * (scale * cos) */
@@ -220,7 +222,7 @@ int light_add(LightTmp *t, GColor *result, const GColor *x)
     if (!t->unset)
         return gcolor_add(result, result, x);
     t->unset = 0;
-    return gcolor_copy(result, x);
+    return x == result ? G_OK : gcolor_copy(result, x);
 }
 
 void light_gather(GSurfPoint *sp, LightTmp *t)
