@@ -372,9 +372,10 @@ done:
 }
 
 static int path_radiance(PathCtx *p, const Ray *r, const Media *media, int depth, double beta, int prev_delta,
-                    double prev_pdf, GColor *out);
+                    double prev_pdf, GColor *out, const GColor **res);
 static int arrive(PathCtx *p, const Ray *r, const Media *media, int depth, double beta, int first, double prev_pdf,
-                  int from_medium, const Hit *hp, const Light *lh, double t_l, double pdf_l, GColor *out);
+                  int from_medium, const Hit *hp, const Light *lh, double t_l, double pdf_l, GColor *out,
+                  const GColor **res);
 
 /* The light leaving sp towards the viewer of r: emission (times emit_weight, its MIS weight against the emissive
  * set's NEE), NEE, and one sampled bounce. */
@@ -453,7 +454,8 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
         if (transmit && pick >= 0)
             c->band = pick;
         p->scattered |= !is_delta;
-        rc = path_radiance(p, &ray, &next, depth + 1, nb, is_delta, smp.pdf, &illum);
+        const GColor *lit; /* the bounce's light: illum, or the background where it is */
+        rc = path_radiance(p, &ray, &next, depth + 1, nb, is_delta, smp.pdf, &illum, &lit);
         c->band = saved;
         p->scattered = scattered;
         CHECK(rc);
@@ -467,9 +469,9 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
             /* what it passes on of white light over the density (the sample's weight), times the light: no second
              * evaluation, and each ideal lobe counts with its own probability where a blend's children share an
              * ideal ray (there, reflection() gives their sum, which one child's probability would overweigh) */
-            CHECK(gcolor_mul_scaled(dst, &weight, &illum, 1.0 / q));
+            CHECK(gcolor_mul_scaled(dst, &weight, lit, 1.0 / q));
         } else { /* re-radiation: the light itself through the material */
-            CHECK(gcolor_scale(&illum, &illum, 1.0 / (smp.pdf * q)));
+            CHECK(gcolor_scale(&illum, lit, 1.0 / (smp.pdf * q)));
             if (transmit)
                 CHECK(gmaterial_refraction(m, sp, smp.in, &illum, ri_use, to_viewer, dst));
             else
@@ -507,13 +509,20 @@ done:
     return rc;
 }
 
-/* Radiance arriving along r, which leaves the scene; first: a camera ray or one after a delta bounce, else
- * drawn by material sampling with density prev_pdf. See the top of the file: the environment. */
-static int escaped(PathCtx *p, const Ray *r, int first, double prev_pdf, int from_medium, GColor *out)
+/* Radiance arriving along r, which leaves the scene, into *res: out, or the background colour itself where it is all
+ * (no probe, no ambient light seen); first: a camera ray or one after a delta bounce, else drawn by material sampling
+ * with density prev_pdf. See the top of the file: the environment. */
+static int escaped(PathCtx *p, const Ray *r, int first, double prev_pdf, int from_medium, GColor *out,
+                   const GColor **res)
 {
     const Scene *s = p->c->scene;
     const ProbeEnv *env = s->env;
     int rc = G_OK;
+    *res = out;
+    if (!env && !(p->scattered && s->have_ambient)) {
+        *res = &s->background;
+        return G_OK;
+    }
     if (!env)
         CHECK(gcolor_copy(out, &s->background));
     else if (first)
@@ -562,11 +571,12 @@ static int medium_vertex(PathCtx *p, const Ray *r, const Media *media, const Med
     int scattered = p->scattered;
     p->scattered = 1;
     p->from_medium = 1;
-    rc = path_radiance(p, &ray, media, depth + 1, beta / q, 0, pdf, &illum);
+    const GColor *lit;
+    rc = path_radiance(p, &ray, media, depth + 1, beta / q, 0, pdf, &illum, &lit);
     p->scattered = scattered;
     p->from_medium = 0;
     CHECK(rc);
-    CHECK(gcolor_add_scaled(out, &illum, phase_eval(vol->phase, r->d, in) / (pdf * q)));
+    CHECK(gcolor_add_scaled(out, lit, phase_eval(vol->phase, r->d, in) / (pdf * q)));
 done:
     gscratch_release(c->scratch, mark);
     return rc;
@@ -592,13 +602,14 @@ static int medium_segment(PathCtx *p, const Ray *r, const Media *media, const Me
     /* point, spot and IES lights: equiangular samples too, MIS-weighted against free flight's (homogeneous media) */
     MediumWay way = {r->o, r->d, t_l, t};
     int equiangular = c->equiangular && !vol->grid && vol->scatters && p->point_lights;
+    const GColor *lit = out;
     if (ev)
         CHECK(medium_vertex(p, r, media, vol, gvec3_madd(r->o, r->d, t), depth, nb, equiangular ? &way : NULL, out));
     else if (!gcolor_is_black(&w))
-        CHECK(arrive(p, r, media, depth, nb, first, prev_pdf, from_medium, hp, lh, t_l, pdf_l, out));
+        CHECK(arrive(p, r, media, depth, nb, first, prev_pdf, from_medium, hp, lh, t_l, pdf_l, out, &lit));
     else
         CHECK(gcolor_fill(out, 0.0));
-    CHECK(gcolor_mul(out, out, &w));
+    CHECK(gcolor_mul(out, lit, &w));
     if (equiangular)
         CHECK(medium_equiangular_light(c, vol, media, &way, out));
 done:
@@ -606,11 +617,12 @@ done:
     return rc;
 }
 
-/* Radiance arriving at r's origin along r; prev_delta and prev_pdf describe how r was drawn (for the MIS
- * weight of a light it reaches). */
+/* Radiance arriving at r's origin along r into *res: out, or the background colour where it is (escaped);
+ * prev_delta and prev_pdf describe how r was drawn (for the MIS weight of a light it reaches). */
 static int path_radiance(PathCtx *p, const Ray *r, const Media *media, int depth, double beta, int prev_delta,
-                    double prev_pdf, GColor *out)
+                    double prev_pdf, GColor *out, const GColor **res)
 {
+    *res = out;
     TraceCtx *c = p->c;
     const Scene *s = c->scene;
     Hit h;
@@ -636,14 +648,16 @@ static int path_radiance(PathCtx *p, const Ray *r, const Media *media, int depth
     if (vol) /* a participating medium along the ray: a scattering event before t_l, or the rest attenuated */
         return medium_segment(p, r, media, vol, depth, beta, first, prev_pdf, from_medium, hit ? &h : NULL, lh, t_l,
                               pdf_l, out);
-    return arrive(p, r, media, depth, beta, first, prev_pdf, from_medium, hit ? &h : NULL, lh, t_l, pdf_l, out);
+    return arrive(p, r, media, depth, beta, first, prev_pdf, from_medium, hit ? &h : NULL, lh, t_l, pdf_l, out, res);
 }
 
-/* The light arriving along r from what it meets at t_l: the area light lh (density pdf_l for NEE), else the surface
- * of h, else the environment. */
+/* The light arriving along r from what it meets at t_l, into *res (out, or what escaped gives): the area light lh
+ * (density pdf_l for NEE), else the surface of h, else the environment. */
 static int arrive(PathCtx *p, const Ray *r, const Media *media, int depth, double beta, int first, double prev_pdf,
-                  int from_medium, const Hit *hp, const Light *lh, double t_l, double pdf_l, GColor *out)
+                  int from_medium, const Hit *hp, const Light *lh, double t_l, double pdf_l, GColor *out,
+                  const GColor **res)
 {
+    *res = out;
     TraceCtx *c = p->c;
     const Scene *s = c->scene;
     int hit = hp != NULL, rc = G_OK;
@@ -664,7 +678,7 @@ static int arrive(PathCtx *p, const Ray *r, const Media *media, int depth, doubl
         return rc;
     }
     if (!hit)
-        return escaped(p, r, first, prev_pdf, from_medium, out);
+        return escaped(p, r, first, prev_pdf, from_medium, out, res);
     /* glowing geometry that NEE also reaches: its emission weighed against that strategy */
     double emit_weight = 1.0;
     const EmissiveSet *nee_set = light_pick_nee_every(c->pick) ? c->emissive : c->pick ? c->pick->emissive : NULL;
@@ -712,7 +726,10 @@ int path_trace(TraceCtx *c, const Ray *r, const Media *media, uint64_t pixel, in
     int saved = c->band, volumes = c->volumes;
     c->band = -1;
     c->volumes = s->has_media;
-    int rc = path_radiance(&p, r, media, 0, 1.0, 0, 0.0, out);
+    const GColor *lit;
+    int rc = path_radiance(&p, r, media, 0, 1.0, 0, 0.0, out, &lit);
+    if (rc >= 0 && lit != out)
+        rc = gcolor_copy(out, lit);
     c->band = saved;
     c->volumes = volumes;
     c->rng = camera_rng;
