@@ -387,16 +387,21 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
     const GMaterial *m = sp->material;
     GVec3 to_viewer = gvec3_neg(r->d);
     GScratchMark mark = gscratch_mark(c->scratch);
-    GColor ri, rg, tmp, weight, illum;
+    GColor ri, rg, tmp, weight, illum, inside, *res = out;
     int rc = G_OK, opaque, delta, valid;
     CHECK(trace_relative_index(c, sp, &ri));
-    /* out stands for black while `unset` (a material that emits nothing): the first light is written to it, not added
+    /* in a medium the light is gathered apart (written in full: not cleared), and its absorption written to out */
+    if (sp->from) {
+        CHECK(gcolor_scratch_uncleared(&inside, s->model, c->scratch));
+        res = &inside;
+    }
+    /* res stands for black while `unset` (a material that emits nothing): the first light is written to it, not added
      * to a black written first, and black is written at the end only when no light came */
     int unset = !gmaterial_emits(m);
     if (!unset) {
-        CHECK(gmaterial_emission(m, sp, to_viewer, out));
+        CHECK(gmaterial_emission(m, sp, to_viewer, res));
         if (emit_weight != 1.0)
-            CHECK(gcolor_scale(out, out, emit_weight));
+            CHECK(gcolor_scale(res, res, emit_weight));
     }
     opaque = gmaterial_opaque(m, sp);
     CHECK(delta = gmaterial_is_delta(m, sp));
@@ -419,9 +424,9 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
     }
 
     if (!delta && light_pick_nee_every(c->pick) && (s->nlights > 0 || c->emissive))
-        CHECK(direct_light_every(p, sp, facing, media, to_viewer, opaque, ri_use, depth, out, &unset));
+        CHECK(direct_light_every(p, sp, facing, media, to_viewer, opaque, ri_use, depth, res, &unset));
     else if (!delta && c->pick && c->pick->n > 0)
-        CHECK(direct_light(p, sp, facing, media, to_viewer, opaque, ri_use, depth, out, &unset));
+        CHECK(direct_light(p, sp, facing, media, to_viewer, opaque, ri_use, depth, res, &unset));
 
     if (depth < c->max_depth) {
         /* written in full before they are read (the weight by a sample drawn, the bounce's light by path_radiance, the
@@ -459,10 +464,10 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
         c->band = saved;
         p->scattered = scattered;
         CHECK(rc);
-        /* the light passed on, into out directly when it holds nothing yet (black plus it is it) */
+        /* the light passed on, into res directly when it holds nothing yet (black plus it is it) */
         GColor *dst = &tmp;
         if (unset && !(transmit && pick >= 0))
-            dst = out;
+            dst = res;
         else
             CHECK(gcolor_scratch_uncleared(&tmp, s->model, c->scratch));
         if (gmaterial_diagonal(m)) {
@@ -481,25 +486,21 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
             CHECK(gcolor_mul(&tmp, &b->mask[pick], &tmp));
             CHECK(gcolor_scale(&tmp, &tmp, (double)b->n));
         }
-        if (dst == out)
+        if (dst == res)
             unset = 0;
         else if (unset) {
             unset = 0;
-            gcolor_black(out);
-            CHECK(gcolor_add(out, out, &tmp));
+            gcolor_black(res);
+            CHECK(gcolor_add(res, res, &tmp));
         } else
-            CHECK(gcolor_add(out, out, &tmp));
+            CHECK(gcolor_add(res, res, &tmp));
     }
 absorb:
     if (unset)
-        gcolor_black(out);
+        gcolor_black(res);
     /* absorption until the light reaches the viewer */
-    if (sp->from) {
-        GColor absorbed; /* written in full by the material: not cleared */
-        CHECK(gcolor_scratch_uncleared(&absorbed, s->model, c->scratch));
-        CHECK(gmaterial_absorption(sp->from, sp, out, sp->t, &absorbed));
-        CHECK(gcolor_copy(out, &absorbed));
-    }
+    if (sp->from)
+        CHECK(gmaterial_absorption(sp->from, sp, res, sp->t, out));
 done:
     gscratch_release(c->scratch, mark);
     if (rc < 0 && c->status == G_OK) {

@@ -150,20 +150,25 @@ static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const 
     const GMaterial *m = sp->material;
     GScratchMark mark = gscratch_mark(c->scratch);
     GVec3 view = r->d, to_viewer = gvec3_neg(r->d), dir;
-    GColor tmp;
+    GColor tmp, inside, *res = out;
     int rc = G_OK, valid;
     CHECK(trace_tmp(c, TRACE_TMP_SHADE, &tmp)); /* not held across the secondary rays, which use it too */
+    /* in a medium the light is gathered apart (written in full: not cleared), and its absorption written to out */
+    if (sp->from) {
+        CHECK(gcolor_scratch_uncleared(&inside, s->model, c->scratch));
+        res = &inside;
+    }
 
-    /* out stands for black while `unset` (a material that emits nothing): the first light is written to it, not added
+    /* res stands for black while `unset` (a material that emits nothing): the first light is written to it, not added
      * to a black written first, and black is written at the end only when no light came */
     int unset = !gmaterial_emits(m);
     /* emission, ambient light and the direct light of every light source */
     if (!unset)
-        CHECK(gmaterial_emission(m, sp, to_viewer, out));
+        CHECK(gmaterial_emission(m, sp, to_viewer, res));
     if (s->have_ambient) {
-        CHECK(gmaterial_ambient(m, sp, &s->ambient, unset ? out : &tmp));
+        CHECK(gmaterial_ambient(m, sp, &s->ambient, unset ? res : &tmp));
         if (!unset)
-            CHECK(gcolor_add(out, out, &tmp));
+            CHECK(gcolor_add(res, res, &tmp));
         unset = 0;
     }
     int opaque = gmaterial_opaque(m, sp);
@@ -174,10 +179,10 @@ static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const 
         lt.unset = unset;
         light_gather(sp, &lt); /* a Lambertian material: asked once for all lights (lights.c) */
         for (int i = 0; i < s->nlights; i++)
-            CHECK(light_shade(c, s->lights[i], sp, facing, media, to_viewer, opaque, &lt, out));
+            CHECK(light_shade(c, s->lights[i], sp, facing, media, to_viewer, opaque, &lt, res));
         if (c->emissive) /* glowing geometry, as an area light */
-            CHECK(emissive_shade(c, c->emissive, sp, facing, media, to_viewer, opaque, &lt, out));
-        CHECK(light_gather_finish(sp, &lt, out));
+            CHECK(emissive_shade(c, c->emissive, sp, facing, media, to_viewer, opaque, &lt, res));
+        CHECK(light_gather_finish(sp, &lt, res));
         unset = lt.unset;
     }
     if (depth < c->max_depth) {
@@ -188,18 +193,16 @@ static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const 
         /* ideal reflection, in the medium the ray came through */
         CHECK(valid = gmaterial_reflection_dir(m, sp, view, &dir));
         if (valid)
-            CHECK(trace_secondary(c, r, sp, facing, dir, NULL, NULL, media, depth, out, &unset));
+            CHECK(trace_secondary(c, r, sp, facing, dir, NULL, NULL, media, depth, res, &unset));
         /* ideal refraction into the medium on the other side; not valid: total internal reflection */
         if (!opaque)
-            CHECK(refract(c, r, sp, facing, &ri, media, depth, out, &unset));
+            CHECK(refract(c, r, sp, facing, &ri, media, depth, res, &unset));
     }
     if (unset)
-        gcolor_black(out);
+        gcolor_black(res);
     /* absorption until the light reaches the viewer */
-    if (sp->from) {
-        CHECK(gmaterial_absorption(sp->from, sp, out, sp->t, &tmp));
-        CHECK(gcolor_copy(out, &tmp));
-    }
+    if (sp->from)
+        CHECK(gmaterial_absorption(sp->from, sp, res, sp->t, out));
 done:
     gscratch_release(c->scratch, mark);
     if (rc < 0 && c->status == G_OK) {
