@@ -234,7 +234,8 @@ static int direct_light_every(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Me
     GColor L;
     int rc = G_OK;
     CHECK(light_temps(c, &lt));
-    CHECK(gcolor_scratch(&L, s->model, c->scratch));
+    if (c->emissive) /* the glowing geometry's radiance (an area light's is its colour, read where it is) */
+        CHECK(gcolor_scratch(&L, s->model, c->scratch));
     lt.unset = *unset;
     light_gather(sp, &lt); /* a Lambertian material: asked once for all samples, MIS weights in their light */
     for (int i = 0; i < s->nlights; i++) {
@@ -324,7 +325,8 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
     GColor L, acc, *sum = out; /* the chosen light's estimate, before the division by pick (out itself when 1) */
     int rc = G_OK;
     CHECK(light_temps(c, &lt));
-    CHECK(gcolor_scratch(&L, s->model, c->scratch));
+    if (!l) /* the glowing geometry's radiance (an area light's is its colour, read where it is) */
+        CHECK(gcolor_scratch(&L, s->model, c->scratch));
     if (pick != 1.0) {
         CHECK(gcolor_scratch(&acc, s->model, c->scratch));
         sum = &acc;
