@@ -112,8 +112,8 @@ GENERIC_API double gsurfpoint_scalar_index(const GColor *ri);
 GENERIC_API void gsurfpoint_set_relative_index(GSurfPoint *sp, const GColor *ri);
 /** The scalar relative index of ri for a material's refraction at sp: when ri is the colour last given to
  * gsurfpoint_set_relative_index (the same storage), the point's cached value (taken and cached on the first ask);
- * otherwise gsurfpoint_scalar_index(ri). A renderer that sets the relative index from a colour must therefore not change
- * that colour's values while it shades the point (hand another colour to refraction() instead). */
+ * otherwise gsurfpoint_scalar_index(ri). A renderer that sets the relative index from a colour must therefore not
+ * change that colour's values while it shades the point (hand another colour to refraction() instead). */
 GENERIC_API double gsurfpoint_index_of(const GSurfPoint *sp, const GColor *ri);
 /** Looks up a value cached under key; 1 when found (value and gradient copied out, either may be NULL). */
 GENERIC_API GENERIC_NODISCARD int gsurfpoint_cache_get(const GSurfPoint *sp, const void *key, double *value,
