@@ -521,14 +521,15 @@ static int escaped(PathCtx *p, const Ray *r, int first, double prev_pdf, int fro
     const Scene *s = p->c->scene;
     const ProbeEnv *env = s->env;
     int rc = G_OK;
+    int ambient = p->scattered && s->have_ambient;
     *res = out;
-    if (!env && !(p->scattered && s->have_ambient)) {
+    if (!env && !ambient) {
         *res = &s->background;
         return G_OK;
     }
-    if (!env)
-        CHECK(gcolor_copy(out, &s->background));
-    else if (first)
+    if (!env) /* the background and the ambient light behind it, added where they are */
+        return gcolor_add(out, &s->background, &s->ambient);
+    if (first)
         CHECK(probe_background(env, r->d, out));
     else if (p->env_in_lights)
         CHECK(gcolor_fill(out, 0.0));
@@ -539,7 +540,7 @@ static int escaped(PathCtx *p, const Ray *r, int first, double prev_pdf, int fro
             CHECK(gcolor_scale(out, out, mis_power(prev_pdf, pdf_nee)));
         }
     }
-    if (p->scattered && s->have_ambient)
+    if (ambient)
         CHECK(gcolor_add(out, out, &s->ambient));
 done:
     return rc;
