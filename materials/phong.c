@@ -12,6 +12,8 @@ typedef struct Phong {
     GMaterial base;
     GColor kd, ks, mirror;
     GColor albedo; /* kd + ks + mirror, for ambient() */
+    GColor kd_pi;  /* kd / pi, the diffuse part of f_r (the constant kd's) */
+    double bright[3]; /* the brightness of the constant kd, ks and mirror: the lobes' selection weights */
     double n;
     double lobe_norm; /* (n + 2) / (2 pi) */
     int has_ks, has_mirror;
@@ -83,6 +85,7 @@ static void phong_destroy(GMaterial *self)
     gcolor_free(&p->ks);
     gcolor_free(&p->mirror);
     gcolor_free(&p->albedo);
+    gcolor_free(&p->kd_pi);
     gmem_free(p);
 }
 
@@ -102,25 +105,27 @@ static int reflection_at(const Phong *p, const PhongAt *a, GSurfPoint *sp, GVec3
     double lobe = 0.0;
     if (p->has_ks && cos_alpha > 0.0)
         lobe = a->lobe_norm * pow(cos_alpha > 1.0 ? 1.0 : cos_alpha, a->n);
-    if (lobe <= 0.0) {
-        int rc = gcolor_mul(result, a->kd, illum);
-        return rc ? rc : gcolor_scale(result, result, cos_in / M_PI);
+    if (lobe <= 0.0) /* kd / pi applied to illum, times the cosine: gcolor_mul then gcolor_scale in one pass */
+        return gcolor_mul_scaled(result, a->kd, illum, cos_in / M_PI);
+    /* f_r as a reflectance (kd / pi + lobe ks: the constant kd's quotient made at creation), then applied to illum
+     * times the cosine; f in result itself unless result is illum, else on the arena */
+    GColor f = *result;
+    GScratchMark mark = {0};
+    int rc = G_OK, own = result->v == illum->v;
+    if (own) {
+        if (!sp->scratch)
+            return G_ERR_INVALID;
+        mark = gscratch_mark(sp->scratch);
+        rc = gcolor_scratch_uncleared(&f, p->base.model, sp->scratch); /* written in full below */
     }
-    /* f_r as a reflectance on the arena, then applied to illum */
-    if (!sp->scratch)
-        return G_ERR_INVALID;
-    GScratchMark mark = gscratch_mark(sp->scratch);
-    GColor f;
-    int rc = gcolor_scratch(&f, p->base.model, sp->scratch);
-    if (rc == G_OK)
-        rc = gcolor_scale(&f, a->kd, 1.0 / M_PI);
-    if (rc == G_OK)
+    if (rc == G_OK && a->kd == &p->kd)
+        rc = gcolor_axpy(&f, lobe, a->ks, &p->kd_pi);
+    else if (rc == G_OK && (rc = gcolor_scale(&f, a->kd, 1.0 / M_PI)) == G_OK)
         rc = gcolor_add_scaled(&f, a->ks, lobe);
     if (rc == G_OK)
-        rc = gcolor_mul(result, &f, illum);
-    if (rc == G_OK)
-        rc = gcolor_scale(result, result, cos_in);
-    gscratch_release(sp->scratch, mark);
+        rc = gcolor_mul_scaled(result, &f, illum, cos_in);
+    if (own)
+        gscratch_release(sp->scratch, mark);
     return rc;
 }
 
@@ -181,9 +186,10 @@ static void phong_lobes(const Phong *p, const PhongAt *a, GSurfPoint *sp, GVec3 
 {
     GVec3 n = gsurfpoint_normal(sp);
     *r = gvec3_reflect(gvec3_neg(out), n);
-    w[0] = gcolor_brightness(a->kd);
-    w[1] = p->has_ks ? gcolor_brightness(a->ks) : 0.0;
-    w[2] = p->has_mirror ? gcolor_brightness(a->mirror) : 0.0;
+    /* a constant colour's brightness was taken at creation */
+    w[0] = a->kd == &p->kd ? p->bright[0] : gcolor_brightness(a->kd);
+    w[1] = !p->has_ks ? 0.0 : a->ks == &p->ks ? p->bright[1] : gcolor_brightness(a->ks);
+    w[2] = !p->has_mirror ? 0.0 : a->mirror == &p->mirror ? p->bright[2] : gcolor_brightness(a->mirror);
     if (!(w[0] + w[1] + w[2] > 0.0))
         w[0] = 1.0; /* black: a cosine lobe that reflects nothing */
 }
@@ -319,8 +325,10 @@ int gphong_create(const GColorModel *model, const GPhongParams *params, GMateria
         rc = param_or_black(model, params->ks, "specular", &p->ks, err);
     if (rc == G_OK)
         rc = param_or_black(model, params->mirror, "mirror", &p->mirror, err);
-    if (rc == G_OK && gcolor_alloc(&p->albedo, model) != G_OK)
+    if (rc == G_OK && (gcolor_alloc(&p->albedo, model) != G_OK || gcolor_alloc(&p->kd_pi, model) != G_OK))
         rc = gerror_set(err, G_ERR_NOMEM, "phong: out of memory");
+    if (rc == G_OK && (rc = gcolor_scale(&p->kd_pi, &p->kd, 1.0 / M_PI)) != G_OK)
+        rc = gerror_set(err, rc, "phong: cannot scale kd (%s)", gstatus_string(rc));
     if (rc == G_OK) {
         rc = gcolor_add(&p->albedo, &p->kd, &p->ks);
         if (rc == G_OK)
@@ -340,8 +348,11 @@ int gphong_create(const GColorModel *model, const GPhongParams *params, GMateria
     }
     p->n = params->exponent;
     p->lobe_norm = (p->n + 2.0) / (2.0 * M_PI);
-    p->has_ks = gcolor_brightness(&p->ks) > 0.0;
-    p->has_mirror = gcolor_brightness(&p->mirror) > 0.0;
+    p->bright[0] = gcolor_brightness(&p->kd);
+    p->bright[1] = gcolor_brightness(&p->ks);
+    p->bright[2] = gcolor_brightness(&p->mirror);
+    p->has_ks = p->bright[1] > 0.0;
+    p->has_mirror = p->bright[2] > 0.0;
     p->base.flags |= GMAT_NO_UV; /* its methods read none of the (u, v) parametrisation (material.h) */
     /* reflection is (a sum of its colours) * illum: sample by sample unless one of them re-radiates */
     if (p->kd.kind == GCOLOR_VECTOR && p->ks.kind == GCOLOR_VECTOR && p->mirror.kind == GCOLOR_VECTOR)

@@ -217,6 +217,38 @@ static void relative_index_case(const char *model_name)
     assert_true(gsurfpoint_scalar_index(&nf) == 1.0);
     gsurfpoint_set_relative_index(&bare, &nf);
     assert_true(gsurfpoint_relative_index(&bare) == 1.0);
+
+    /* the set colour's scalar is taken when first asked for, by either function, and then cached: a material's
+     * gsurfpoint_index_of first gives the same value bit for bit, and so does gsurfpoint_relative_index after it; a
+     * point set again forgets the old colour's scalar */
+    assert_int_equal(gmaterial_refraction_index(glass, &sp, &nf), G_OK);
+    assert_int_equal(gcolor_div(&nf, &nf, &nt), G_OK);
+    gsurfpoint_set_relative_index(&bare, &nf);
+    assert_true(gsurfpoint_index_of(&bare, &nf) == computed);
+    assert_true(gsurfpoint_relative_index(&bare) == computed);
+    assert_int_equal(gcolor_scale(&nf, &nf, 2.0), G_OK); /* cached now: the set value stays */
+    assert_true(gsurfpoint_index_of(&bare, &nf) == computed);
+    gsurfpoint_set_relative_index(&bare, &nf);
+    assert_true(fabs(gsurfpoint_relative_index(&bare) - 2.0 * computed) < 1e-6);
+    assert_true(gsurfpoint_index_of(&bare, &nf) == gsurfpoint_relative_index(&bare));
+    /* a copy of a point made before the first ask reads the same colour */
+    assert_int_equal(gcolor_scale(&nf, &nf, 0.5), G_OK);
+    gsurfpoint_set_relative_index(&bare, &nf);
+    GSurfPoint copy = bare;
+    assert_true(gsurfpoint_relative_index(&copy) == computed);
+    assert_true(gsurfpoint_relative_index(&bare) == computed);
+    /* a colour of another model than the point's: its own scalar */
+    GColorModel *other;
+    assert_int_equal(gcolormodel_create(strcmp(model_name, "rgb") == 0 ? "spectrum9" : "rgb", NULL, &other, &err),
+                     G_OK);
+    GColor oc;
+    assert_int_equal(gcolor_alloc(&oc, other), G_OK);
+    assert_int_equal(gcolor_fill(&oc, 1.25), G_OK);
+    gsurfpoint_set_relative_index(&bare, &oc);
+    assert_true(gsurfpoint_relative_index(&bare) == gsurfpoint_scalar_index(&oc));
+    assert_true(fabs(gsurfpoint_relative_index(&bare) - 1.25) < 1e-6);
+    gcolor_free(&oc);
+    gcolormodel_destroy(other);
     gcolor_free(&nf);
     gcolor_free(&nt);
     gmaterial_unref(glass);

@@ -104,14 +104,16 @@ GENERIC_API double gsurfpoint_relative_index(GSurfPoint *sp);
  * gsurfpoint_relative_index caches, and what a material reads from the rel_index refraction() is handed, so that
  * reflection and refraction see the same eta. */
 GENERIC_API double gsurfpoint_scalar_index(const GColor *ri);
-/** Caches the scalar relative index from ri, the colour n(from) / n(to) that a renderer computed for sp (as it
- * hands it to refraction()), so that gsurfpoint_relative_index gives the same value without the two
- * refraction_index calls and the division again. */
+/** Makes ri, the colour n(from) / n(to) that a renderer computed for sp (as it hands it to refraction()), sp's
+ * relative index, so that gsurfpoint_relative_index gives its scalar without the two refraction_index calls and the
+ * division again. The scalar is taken when it is first asked for (by gsurfpoint_relative_index or
+ * gsurfpoint_index_of) and cached then: a point at which no method reads it (an opaque material's) costs none. So ri's
+ * storage must stay valid, and its values unchanged, while the point is shaded. */
 GENERIC_API void gsurfpoint_set_relative_index(GSurfPoint *sp, const GColor *ri);
-/** The scalar relative index of ri for a material's refraction at sp: the cached value when ri is the colour last
- * given to gsurfpoint_set_relative_index (the same storage), without computing it again; otherwise
- * gsurfpoint_scalar_index(ri). A renderer that sets the relative index from a colour must therefore not change
- * that colour's values while it shades the point (hand another colour to refraction() instead). */
+/** The scalar relative index of ri for a material's refraction at sp: when ri is the colour last given to
+ * gsurfpoint_set_relative_index (the same storage), the point's cached value (taken and cached on the first ask);
+ * otherwise gsurfpoint_scalar_index(ri). A renderer that sets the relative index from a colour must therefore not
+ * change that colour's values while it shades the point (hand another colour to refraction() instead). */
 GENERIC_API double gsurfpoint_index_of(const GSurfPoint *sp, const GColor *ri);
 /** Looks up a value cached under key; 1 when found (value and gradient copied out, either may be NULL). */
 GENERIC_API GENERIC_NODISCARD int gsurfpoint_cache_get(const GSurfPoint *sp, const void *key, double *value,

@@ -7,9 +7,10 @@
 #include <stddef.h>
 #include <string.h>
 
-/* HAVE_REL_INDEX_COLOUR: the cached relative index was read from the colour at rel_index_values (set by
- * gsurfpoint_set_relative_index, not computed by gsurfpoint_relative_index) */
-enum { HAVE_NORMAL = 1u, HAVE_REL_INDEX = 2u, HAVE_REL_INDEX_COLOUR = 4u };
+/* HAVE_REL_INDEX_COLOUR: the relative index is the colour at rel_index_values (set by gsurfpoint_set_relative_index,
+ * not computed by gsurfpoint_relative_index): a vector of sp->model, whose scalar is taken when first asked for
+ * (HAVE_REL_INDEX then says it is cached); REL_INDEX_MATRIX: that colour is a matrix */
+enum { HAVE_NORMAL = 1u, HAVE_REL_INDEX = 2u, HAVE_REL_INDEX_COLOUR = 4u, REL_INDEX_MATRIX = 8u };
 
 /* always inlined where the optimiser sees it (link-time optimisation of a renderer): the stores then merge with the
  * caller's, which overwrites most of them; an external definition all the same (surfpoint.h declares it) */
@@ -108,9 +109,24 @@ double gsurfpoint_scalar_index(const GColor *ri)
     return ratio > 0.0 ? ratio : 1.0;
 }
 
+/* The scalar of the colour gsurfpoint_set_relative_index gave sp, taken now and cached. */
+static double set_index_scalar(GSurfPointPrivate *p, const GColorModel *model)
+{
+    GColor ri = {.model = model,
+                 .v = (float *)p->rel_index_values,
+                 .kind = p->cached_flags & REL_INDEX_MATRIX ? GCOLOR_MATRIX : GCOLOR_VECTOR,
+                 .storage = GCOLOR_STORAGE_CALLER,
+                 .capacity = model->capacity};
+    p->cached_rel_index = gsurfpoint_scalar_index(&ri);
+    p->cached_flags |= HAVE_REL_INDEX;
+    return p->cached_rel_index;
+}
+
 double gsurfpoint_relative_index(GSurfPoint *sp)
 {
     if (!(sp->priv.cached_flags & HAVE_REL_INDEX)) {
+        if (sp->priv.cached_flags & HAVE_REL_INDEX_COLOUR)
+            return set_index_scalar(&sp->priv, sp->model);
         double r = 1.0;
         if (sp->model && sp->scratch) {
             GScratchMark mark = gscratch_mark(sp->scratch);
@@ -130,16 +146,26 @@ double gsurfpoint_relative_index(GSurfPoint *sp)
 
 void gsurfpoint_set_relative_index(GSurfPoint *sp, const GColor *ri)
 {
-    sp->priv.cached_rel_index = gsurfpoint_scalar_index(ri);
-    sp->priv.rel_index_values = ri->v;
-    sp->priv.cached_flags |= HAVE_REL_INDEX | HAVE_REL_INDEX_COLOUR;
+    GSurfPointPrivate *p = &sp->priv;
+    p->rel_index_values = ri->v;
+    p->cached_flags &= ~(unsigned)(HAVE_REL_INDEX | REL_INDEX_MATRIX);
+    p->cached_flags |= HAVE_REL_INDEX_COLOUR | (ri->kind == GCOLOR_MATRIX ? REL_INDEX_MATRIX : 0u);
+    if (ri->model != sp->model || !sp->model) { /* a colour of another model: its scalar now, from its own handle */
+        p->cached_rel_index = gsurfpoint_scalar_index(ri);
+        p->cached_flags |= HAVE_REL_INDEX;
+    }
 }
 
 double gsurfpoint_index_of(const GSurfPoint *sp, const GColor *ri)
 {
-    if ((sp->priv.cached_flags & HAVE_REL_INDEX_COLOUR) && ri->v == sp->priv.rel_index_values)
+    unsigned f = sp->priv.cached_flags;
+    if (!(f & HAVE_REL_INDEX_COLOUR) || ri->v != sp->priv.rel_index_values)
+        return gsurfpoint_scalar_index(ri);
+    if (f & HAVE_REL_INDEX)
         return sp->priv.cached_rel_index;
-    return gsurfpoint_scalar_index(ri);
+    /* the point's own cache, written through a const view: a surface point is never a const object (every material
+     * method receives it writable, and gsurfpoint_relative_index writes the same cache) */
+    return set_index_scalar(&((GSurfPoint *)sp)->priv, sp->model);
 }
 
 int gsurfpoint_cache_get(const GSurfPoint *sp, const void *key, double *value, GVec3 *gradient)

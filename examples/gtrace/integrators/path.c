@@ -220,9 +220,10 @@ static int delta_choice(PathCtx *p, const LightPick *lp, int k0, GVec3 x, GVec3 
 
 /* Adds to out the direct light at sp, the vertex at `depth`, from every light source, reflected towards to_viewer
  * (NEE, when the table holds few entries: light_pick_nee_every). The first sphere or rectangle light (else the glowing
- * geometry) takes the vertex's light dimensions, the others the generator's numbers. */
+ * geometry) takes the vertex's light dimensions, the others the generator's numbers. *unset: out holds nothing yet
+ * and stands for black (LightTmp.unset): the first light is written to it, and *unset cleared. */
 static int direct_light_every(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 to_viewer,
-                              int opaque, const GColor *ri, int depth, GColor *out)
+                              int opaque, const GColor *ri, int depth, GColor *out, int *unset)
 {
     int slots_free = 1;
     TraceCtx *c = p->c;
@@ -233,7 +234,9 @@ static int direct_light_every(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Me
     GColor L;
     int rc = G_OK;
     CHECK(light_temps(c, &lt));
-    CHECK(gcolor_scratch(&L, s->model, c->scratch));
+    if (c->emissive) /* the glowing geometry's radiance (an area light's is its colour, read where it is) */
+        CHECK(gcolor_scratch(&L, s->model, c->scratch));
+    lt.unset = *unset;
     light_gather(sp, &lt); /* a Lambertian material: asked once for all samples, MIS weights in their light */
     for (int i = 0; i < s->nlights; i++) {
         const Light *l = s->lights[i];
@@ -261,13 +264,13 @@ static int direct_light_every(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Me
         }
         GVec3 in;
         double dist, pdf_l;
-        int got;
-        CHECK(got = path_light_sample_at(l, sp->point, u[0], u[1], &in, &dist, &pdf_l, &L));
+        int got; /* the radiance is the light's colour, read where it is */
+        CHECK(got = path_light_direction_at(l, sp->point, u[0], u[1], &in, &dist, &pdf_l));
         if (!got || (opaque && gvec3_dot(in, facing) <= 0.0))
             continue;
         double w = mis_power(pdf_l, gmaterial_pdf(m, sp, in, to_viewer, ri));
         if (w > 0.0)
-            CHECK(sample_light(c, sp, facing, media, in, dist, &L, w / pdf_l, to_viewer, &lt, out));
+            CHECK(sample_light(c, sp, facing, media, in, dist, &l->color, w / pdf_l, to_viewer, &lt, out));
     }
     if (c->emissive) { /* glowing geometry: one point of one primitive, chosen by power */
         GVec3 in, normal;
@@ -292,6 +295,7 @@ static int direct_light_every(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Me
         }
     }
     CHECK(light_gather_finish(sp, &lt, out));
+    *unset = lt.unset;
 done:
     gscratch_release(c->scratch, mark);
     return rc;
@@ -303,7 +307,7 @@ done:
  * a sphere or rectangle light or the glowing geometry its point dimensions, the glowing geometry's primitive what is
  * left of the pick's number; a delta light draws nothing, a probe the generator's numbers. */
 static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 to_viewer, int opaque,
-                        const GColor *ri, int depth, GColor *out)
+                        const GColor *ri, int depth, GColor *out, int *unset)
 {
     TraceCtx *c = p->c;
     const LightPick *lp = c->pick;
@@ -321,11 +325,17 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
     GColor L, acc, *sum = out; /* the chosen light's estimate, before the division by pick (out itself when 1) */
     int rc = G_OK;
     CHECK(light_temps(c, &lt));
-    CHECK(gcolor_scratch(&L, s->model, c->scratch));
+    if (!l) /* the glowing geometry's radiance (an area light's is its colour, read where it is) */
+        CHECK(gcolor_scratch(&L, s->model, c->scratch));
     if (pick != 1.0) {
         CHECK(gcolor_scratch(&acc, s->model, c->scratch));
         sum = &acc;
+        if (*unset) { /* out is added to below */
+            gcolor_black(out);
+            *unset = 0;
+        }
     }
+    lt.unset = *unset;
     light_gather(sp, &lt); /* a Lambertian material: asked once, the MIS weight in the light */
     if (l && (l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT || l->kind == LIGHT_DIRECTIONAL ||
               l->kind == LIGHT_IES)) {
@@ -340,8 +350,8 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
         double dist, pdf_l, u1 = vertex_uniform(p, depth, SLOT_LIGHT_U), u2 = vertex_uniform(p, depth, SLOT_LIGHT_V);
         int got;
         lt.blocked = 1;
-        if (l)
-            CHECK(got = path_light_sample_at(l, sp->point, u1, u2, &in, &dist, &pdf_l, &L));
+        if (l) /* the radiance is the light's colour, read where it is */
+            CHECK(got = path_light_direction_at(l, sp->point, u1, u2, &in, &dist, &pdf_l));
         else
             CHECK(got = emissive_sample(c, lp->emissive, sp->point, u_rest, u1, u2, &in, &dist, &normal, &pdf_l, &L));
         if (got && !(opaque && gvec3_dot(in, facing) <= 0.0)) {
@@ -349,10 +359,13 @@ static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *m
             if (!l) /* the shadow ray ends before the glowing surface (a sphere or rectangle light is no surface) */
                 dist = emissive_shadow_reach(sp->point, facing, in, dist, normal);
             if (w > 0.0)
-                CHECK(sample_light(c, sp, facing, media, in, dist, &L, w / pdf_l, to_viewer, &lt, sum));
+                CHECK(sample_light(c, sp, facing, media, in, dist, l ? &l->color : &L, w / pdf_l, to_viewer, &lt,
+                                   sum));
         }
     }
     CHECK(light_gather_finish(sp, &lt, sum));
+    if (sum == out)
+        *unset = lt.unset;
     if (sum != out)
         CHECK(gcolor_add_scaled(out, sum, 1.0 / pick));
 done:
@@ -361,9 +374,10 @@ done:
 }
 
 static int path_radiance(PathCtx *p, const Ray *r, const Media *media, int depth, double beta, int prev_delta,
-                    double prev_pdf, GColor *out);
+                    double prev_pdf, GColor *out, const GColor **res);
 static int arrive(PathCtx *p, const Ray *r, const Media *media, int depth, double beta, int first, double prev_pdf,
-                  int from_medium, const Hit *hp, const Light *lh, double t_l, double pdf_l, GColor *out);
+                  int from_medium, const Hit *hp, const Light *lh, double t_l, double pdf_l, GColor *out,
+                  const GColor **res);
 
 /* The light leaving sp towards the viewer of r: emission (times emit_weight, its MIS weight against the emissive
  * set's NEE), NEE, and one sampled bounce. */
@@ -375,18 +389,22 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
     const GMaterial *m = sp->material;
     GVec3 to_viewer = gvec3_neg(r->d);
     GScratchMark mark = gscratch_mark(c->scratch);
-    GColor ri, rg, tmp, weight, illum;
+    GColor ri, rg, tmp, weight, illum, inside, *res = out;
     int rc = G_OK, opaque, delta, valid;
-    /* written in full before they are read (the group's index by its fill, the others as an operation's out: the
-     * weight by a sample drawn, the bounce's light by path_radiance): not cleared */
-    CHECK(gcolor_scratch_uncleared(&rg, s->model, c->scratch));
-    CHECK(gcolor_scratch_uncleared(&tmp, s->model, c->scratch));
-    CHECK(gcolor_scratch_uncleared(&weight, s->model, c->scratch));
-    CHECK(gcolor_scratch_uncleared(&illum, s->model, c->scratch));
     CHECK(trace_relative_index(c, sp, &ri));
-    CHECK(gmaterial_emission(m, sp, to_viewer, out));
-    if (emit_weight != 1.0)
-        CHECK(gcolor_scale(out, out, emit_weight));
+    /* in a medium the light is gathered apart (written in full: not cleared), and its absorption written to out */
+    if (sp->from) {
+        CHECK(gcolor_scratch_uncleared(&inside, s->model, c->scratch));
+        res = &inside;
+    }
+    /* res stands for black while `unset` (a material that emits nothing): the first light is written to it, not added
+     * to a black written first, and black is written at the end only when no light came */
+    int unset = !gmaterial_emits(m);
+    if (!unset) {
+        CHECK(gmaterial_emission(m, sp, to_viewer, res));
+        if (emit_weight != 1.0)
+            CHECK(gcolor_scale(res, res, emit_weight));
+    }
     opaque = gmaterial_opaque(m, sp);
     CHECK(delta = gmaterial_is_delta(m, sp));
 
@@ -400,18 +418,23 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
             band = pick < b->n ? pick : b->n - 1;
             pick = band;
         }
-        if (band >= 0) {
+        if (band >= 0) { /* written in full by the fill: not cleared */
+            CHECK(gcolor_scratch_uncleared(&rg, s->model, c->scratch));
             CHECK(gcolor_fill(&rg, bands_value(b, &ri, band)));
             ri_use = &rg;
         }
     }
 
     if (!delta && light_pick_nee_every(c->pick) && (s->nlights > 0 || c->emissive))
-        CHECK(direct_light_every(p, sp, facing, media, to_viewer, opaque, ri_use, depth, out));
+        CHECK(direct_light_every(p, sp, facing, media, to_viewer, opaque, ri_use, depth, res, &unset));
     else if (!delta && c->pick && c->pick->n > 0)
-        CHECK(direct_light(p, sp, facing, media, to_viewer, opaque, ri_use, depth, out));
+        CHECK(direct_light(p, sp, facing, media, to_viewer, opaque, ri_use, depth, res, &unset));
 
     if (depth < c->max_depth) {
+        /* written in full before they are read (the weight by a sample drawn, the bounce's light by path_radiance, the
+         * light passed on as an operation's out): not cleared */
+        CHECK(gcolor_scratch_uncleared(&weight, s->model, c->scratch));
+        CHECK(gcolor_scratch_uncleared(&illum, s->model, c->scratch));
         GMaterialSample smp;
         double u1 = vertex_uniform(p, depth, SLOT_BSDF_U), u2 = vertex_uniform(p, depth, SLOT_BSDF_V);
         CHECK(valid = gmaterial_sample(m, sp, to_viewer, ri_use, u1, u2, &smp, &weight));
@@ -438,34 +461,48 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
         if (transmit && pick >= 0)
             c->band = pick;
         p->scattered |= !is_delta;
-        rc = path_radiance(p, &ray, &next, depth + 1, nb, is_delta, smp.pdf, &illum);
+        const GColor *lit; /* the bounce's light: illum, or the background where it is */
+        rc = path_radiance(p, &ray, &next, depth + 1, nb, is_delta, smp.pdf, &illum, &lit);
         c->band = saved;
         p->scattered = scattered;
         CHECK(rc);
+        /* the light passed on, into res directly when it holds nothing yet (black plus it is it) */
+        GColor *dst = &tmp;
+        if (unset && !(transmit && pick >= 0))
+            dst = res;
+        else
+            CHECK(gcolor_scratch_uncleared(&tmp, s->model, c->scratch));
         if (gmaterial_diagonal(m)) {
             /* what it passes on of white light over the density (the sample's weight), times the light: no second
              * evaluation, and each ideal lobe counts with its own probability where a blend's children share an
              * ideal ray (there, reflection() gives their sum, which one child's probability would overweigh) */
-            CHECK(gcolor_mul_scaled(&tmp, &weight, &illum, 1.0 / q));
+            CHECK(gcolor_mul_scaled(dst, &weight, lit, 1.0 / q));
         } else { /* re-radiation: the light itself through the material */
-            CHECK(gcolor_scale(&illum, &illum, 1.0 / (smp.pdf * q)));
+            CHECK(gcolor_scale(&illum, lit, 1.0 / (smp.pdf * q)));
             if (transmit)
-                CHECK(gmaterial_refraction(m, sp, smp.in, &illum, ri_use, to_viewer, &tmp));
+                CHECK(gmaterial_refraction(m, sp, smp.in, &illum, ri_use, to_viewer, dst));
             else
-                CHECK(gmaterial_reflection(m, sp, smp.in, &illum, to_viewer, &tmp));
+                CHECK(gmaterial_reflection(m, sp, smp.in, &illum, to_viewer, dst));
         }
         if (transmit && pick >= 0) { /* one group of n chosen: its light, n times */
             CHECK(gcolor_mul(&tmp, &b->mask[pick], &tmp));
             CHECK(gcolor_scale(&tmp, &tmp, (double)b->n));
         }
-        CHECK(gcolor_add(out, out, &tmp));
+        if (dst == res)
+            unset = 0;
+        else if (unset) {
+            unset = 0;
+            gcolor_black(res);
+            CHECK(gcolor_add(res, res, &tmp));
+        } else
+            CHECK(gcolor_add(res, res, &tmp));
     }
 absorb:
+    if (unset)
+        gcolor_black(res);
     /* absorption until the light reaches the viewer */
-    if (sp->from) {
-        CHECK(gmaterial_absorption(sp->from, sp, out, sp->t, &tmp));
-        CHECK(gcolor_copy(out, &tmp));
-    }
+    if (sp->from)
+        CHECK(gmaterial_absorption(sp->from, sp, res, sp->t, out));
 done:
     gscratch_release(c->scratch, mark);
     if (rc < 0 && c->status == G_OK) {
@@ -475,16 +512,24 @@ done:
     return rc;
 }
 
-/* Radiance arriving along r, which leaves the scene; first: a camera ray or one after a delta bounce, else
- * drawn by material sampling with density prev_pdf. See the top of the file: the environment. */
-static int escaped(PathCtx *p, const Ray *r, int first, double prev_pdf, int from_medium, GColor *out)
+/* Radiance arriving along r, which leaves the scene, into *res: out, or the background colour itself where it is all
+ * (no probe, no ambient light seen); first: a camera ray or one after a delta bounce, else drawn by material sampling
+ * with density prev_pdf. See the top of the file: the environment. */
+static int escaped(PathCtx *p, const Ray *r, int first, double prev_pdf, int from_medium, GColor *out,
+                   const GColor **res)
 {
     const Scene *s = p->c->scene;
     const ProbeEnv *env = s->env;
     int rc = G_OK;
-    if (!env)
-        CHECK(gcolor_copy(out, &s->background));
-    else if (first)
+    int ambient = p->scattered && s->have_ambient;
+    *res = out;
+    if (!env && !ambient) {
+        *res = &s->background;
+        return G_OK;
+    }
+    if (!env) /* the background and the ambient light behind it, added where they are */
+        return gcolor_add(out, &s->background, &s->ambient);
+    if (first)
         CHECK(probe_background(env, r->d, out));
     else if (p->env_in_lights)
         CHECK(gcolor_fill(out, 0.0));
@@ -495,7 +540,7 @@ static int escaped(PathCtx *p, const Ray *r, int first, double prev_pdf, int fro
             CHECK(gcolor_scale(out, out, mis_power(prev_pdf, pdf_nee)));
         }
     }
-    if (p->scattered && s->have_ambient)
+    if (ambient)
         CHECK(gcolor_add(out, out, &s->ambient));
 done:
     return rc;
@@ -530,11 +575,12 @@ static int medium_vertex(PathCtx *p, const Ray *r, const Media *media, const Med
     int scattered = p->scattered;
     p->scattered = 1;
     p->from_medium = 1;
-    rc = path_radiance(p, &ray, media, depth + 1, beta / q, 0, pdf, &illum);
+    const GColor *lit;
+    rc = path_radiance(p, &ray, media, depth + 1, beta / q, 0, pdf, &illum, &lit);
     p->scattered = scattered;
     p->from_medium = 0;
     CHECK(rc);
-    CHECK(gcolor_add_scaled(out, &illum, phase_eval(vol->phase, r->d, in) / (pdf * q)));
+    CHECK(gcolor_add_scaled(out, lit, phase_eval(vol->phase, r->d, in) / (pdf * q)));
 done:
     gscratch_release(c->scratch, mark);
     return rc;
@@ -560,13 +606,14 @@ static int medium_segment(PathCtx *p, const Ray *r, const Media *media, const Me
     /* point, spot and IES lights: equiangular samples too, MIS-weighted against free flight's (homogeneous media) */
     MediumWay way = {r->o, r->d, t_l, t};
     int equiangular = c->equiangular && !vol->grid && vol->scatters && p->point_lights;
+    const GColor *lit = out;
     if (ev)
         CHECK(medium_vertex(p, r, media, vol, gvec3_madd(r->o, r->d, t), depth, nb, equiangular ? &way : NULL, out));
     else if (!gcolor_is_black(&w))
-        CHECK(arrive(p, r, media, depth, nb, first, prev_pdf, from_medium, hp, lh, t_l, pdf_l, out));
+        CHECK(arrive(p, r, media, depth, nb, first, prev_pdf, from_medium, hp, lh, t_l, pdf_l, out, &lit));
     else
         CHECK(gcolor_fill(out, 0.0));
-    CHECK(gcolor_mul(out, out, &w));
+    CHECK(gcolor_mul(out, lit, &w));
     if (equiangular)
         CHECK(medium_equiangular_light(c, vol, media, &way, out));
 done:
@@ -574,11 +621,12 @@ done:
     return rc;
 }
 
-/* Radiance arriving at r's origin along r; prev_delta and prev_pdf describe how r was drawn (for the MIS
- * weight of a light it reaches). */
+/* Radiance arriving at r's origin along r into *res: out, or the background colour where it is (escaped);
+ * prev_delta and prev_pdf describe how r was drawn (for the MIS weight of a light it reaches). */
 static int path_radiance(PathCtx *p, const Ray *r, const Media *media, int depth, double beta, int prev_delta,
-                    double prev_pdf, GColor *out)
+                    double prev_pdf, GColor *out, const GColor **res)
 {
+    *res = out;
     TraceCtx *c = p->c;
     const Scene *s = c->scene;
     Hit h;
@@ -604,14 +652,16 @@ static int path_radiance(PathCtx *p, const Ray *r, const Media *media, int depth
     if (vol) /* a participating medium along the ray: a scattering event before t_l, or the rest attenuated */
         return medium_segment(p, r, media, vol, depth, beta, first, prev_pdf, from_medium, hit ? &h : NULL, lh, t_l,
                               pdf_l, out);
-    return arrive(p, r, media, depth, beta, first, prev_pdf, from_medium, hit ? &h : NULL, lh, t_l, pdf_l, out);
+    return arrive(p, r, media, depth, beta, first, prev_pdf, from_medium, hit ? &h : NULL, lh, t_l, pdf_l, out, res);
 }
 
-/* The light arriving along r from what it meets at t_l: the area light lh (density pdf_l for NEE), else the surface
- * of h, else the environment. */
+/* The light arriving along r from what it meets at t_l, into *res (out, or what escaped gives): the area light lh
+ * (density pdf_l for NEE), else the surface of h, else the environment. */
 static int arrive(PathCtx *p, const Ray *r, const Media *media, int depth, double beta, int first, double prev_pdf,
-                  int from_medium, const Hit *hp, const Light *lh, double t_l, double pdf_l, GColor *out)
+                  int from_medium, const Hit *hp, const Light *lh, double t_l, double pdf_l, GColor *out,
+                  const GColor **res)
 {
+    *res = out;
     TraceCtx *c = p->c;
     const Scene *s = c->scene;
     int hit = hp != NULL, rc = G_OK;
@@ -632,7 +682,7 @@ static int arrive(PathCtx *p, const Ray *r, const Media *media, int depth, doubl
         return rc;
     }
     if (!hit)
-        return escaped(p, r, first, prev_pdf, from_medium, out);
+        return escaped(p, r, first, prev_pdf, from_medium, out, res);
     /* glowing geometry that NEE also reaches: its emission weighed against that strategy */
     double emit_weight = 1.0;
     const EmissiveSet *nee_set = light_pick_nee_every(c->pick) ? c->emissive : c->pick ? c->pick->emissive : NULL;
@@ -680,7 +730,10 @@ int path_trace(TraceCtx *c, const Ray *r, const Media *media, uint64_t pixel, in
     int saved = c->band, volumes = c->volumes;
     c->band = -1;
     c->volumes = s->has_media;
-    int rc = path_radiance(&p, r, media, 0, 1.0, 0, 0.0, out);
+    const GColor *lit;
+    int rc = path_radiance(&p, r, media, 0, 1.0, 0, 0.0, out, &lit);
+    if (rc >= 0 && lit != out)
+        rc = gcolor_copy(out, lit);
     c->band = saved;
     c->volumes = volumes;
     c->rng = camera_rng;

@@ -48,19 +48,24 @@ static int pass_on(const GMaterial *m, GSurfPoint *sp, GVec3 dir, const GColor *
               : gmaterial_reflection(m, sp, dir, in, to_viewer, out);
 }
 
+static int trace_ray(TraceCtx *c, const Ray *r, const Media *media, int depth, GColor *buf, const GColor **out);
+
 /* Adds to out the light that arrives along the secondary direction dir (a reflection_dir, or a refraction_dir
  * with ri its relative index; NULL: reflection) through the media `next`, as the material passes it on
  * towards the viewer; with a mask, only the mask's part of it (one wavelength group of a dispersive
  * refraction). Adaptive depth: the branch is not traced when what it can bring to the pixel (the material's
  * pass-on of 1, times the path's weight) is below the cutoff. A material that filters light sample by sample
- * (GMAT_DIAGONAL) is not asked again with the ray's light: its pass-on of 1 times that light is the same. */
+ * (GMAT_DIAGONAL) is not asked again with the ray's light: its pass-on of 1 times that light is the same.
+ * *unset: out holds nothing yet (it stands for black): the light is written to it instead of added, and *unset
+ * cleared; out stays unwritten when the branch brings nothing. */
 static int trace_secondary(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, GVec3 dir, const GColor *ri,
-                           const GColor *mask, const Media *next, int depth, GColor *out)
+                           const GColor *mask, const Media *next, int depth, GColor *out, int *unset)
 {
     const GMaterial *m = sp->material;
     GVec3 to_viewer = gvec3_neg(r->d);
     GScratchMark mark = gscratch_mark(c->scratch);
     GColor tmp, illum;
+    const GColor *lit;
     int rc = G_OK, diagonal = gmaterial_diagonal(m);
     if (diagonal) /* the pass-on of 1 is kept across the ray (written in full by the material: not cleared) */
         CHECK(gcolor_scratch_uncleared(&tmp, c->scene->model, c->scratch));
@@ -77,22 +82,27 @@ static int trace_secondary(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 faci
         goto done;
     }
     c->rays_left--;
-    CHECK(gcolor_scratch_uncleared(&illum, c->scene->model, c->scratch)); /* whitted_trace writes it in full */
+    CHECK(gcolor_scratch_uncleared(&illum, c->scene->model, c->scratch)); /* trace_ray writes it in full */
     double width = r->cone_width + r->cone_spread * sp->t;
     Ray ray = {offset_origin(sp->point, facing, dir), dir, 0.0, INFINITY, width, r->cone_spread};
     double saved = c->weight;
     c->weight = w;
-    rc = whitted_trace(c, &ray, next, depth + 1, &illum);
+    rc = trace_ray(c, &ray, next, depth + 1, &illum, &lit);
     c->weight = saved;
     CHECK(rc);
+    /* the light passed on, into out directly when it holds nothing yet (black plus it is it) */
+    GColor *dst = *unset ? out : &tmp;
     if (diagonal) { /* its pass-on of 1 (the mask in it) times the ray's light */
-        CHECK(gcolor_mul(&tmp, &tmp, &illum));
+        CHECK(gcolor_mul(dst, &tmp, lit));
     } else {
-        CHECK(pass_on(m, sp, dir, &illum, ri, to_viewer, &tmp));
+        CHECK(pass_on(m, sp, dir, lit, ri, to_viewer, dst));
         if (mask)
-            CHECK(gcolor_mul(&tmp, mask, &tmp));
+            CHECK(gcolor_mul(dst, mask, dst));
     }
-    CHECK(gcolor_add(out, out, &tmp));
+    if (*unset)
+        *unset = 0;
+    else
+        CHECK(gcolor_add(out, out, &tmp));
 done:
     gscratch_release(c->scratch, mark);
     return rc;
@@ -101,7 +111,7 @@ done:
 /* The refracted light at sp: one ray with the relative index ri; a ray per wavelength group when ri is
  * dispersive; the carried group's index on a path that already split. */
 static int refract(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const GColor *ri, const Media *media,
-                   int depth, GColor *out)
+                   int depth, GColor *out, int *unset)
 {
     const GMaterial *m = sp->material;
     const Bands *b = c->bands;
@@ -113,7 +123,7 @@ static int refract(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, cons
     if (!split && (c->band < 0 || !b)) {
         CHECK(valid = gmaterial_refraction_dir(m, sp, r->d, ri, &dir));
         if (valid)
-            CHECK(trace_secondary(c, r, sp, facing, dir, ri, NULL, &next, depth, out));
+            CHECK(trace_secondary(c, r, sp, facing, dir, ri, NULL, &next, depth, out, unset));
         goto done;
     }
     GColor rg;
@@ -125,7 +135,7 @@ static int refract(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, cons
         if (!valid)
             continue; /* this group is totally reflected */
         c->band = g;
-        rc = trace_secondary(c, r, sp, facing, dir, &rg, split ? &b->mask[g] : NULL, &next, depth, out);
+        rc = trace_secondary(c, r, sp, facing, dir, &rg, split ? &b->mask[g] : NULL, &next, depth, out, unset);
         c->band = split ? -1 : g;
         CHECK(rc);
     }
@@ -140,27 +150,40 @@ static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const 
     const GMaterial *m = sp->material;
     GScratchMark mark = gscratch_mark(c->scratch);
     GVec3 view = r->d, to_viewer = gvec3_neg(r->d), dir;
-    GColor tmp;
+    GColor tmp, inside, *res = out;
     int rc = G_OK, valid;
     CHECK(trace_tmp(c, TRACE_TMP_SHADE, &tmp)); /* not held across the secondary rays, which use it too */
+    /* in a medium the light is gathered apart (written in full: not cleared), and its absorption written to out */
+    if (sp->from) {
+        CHECK(gcolor_scratch_uncleared(&inside, s->model, c->scratch));
+        res = &inside;
+    }
 
+    /* res stands for black while `unset` (a material that emits nothing): the first light is written to it, not added
+     * to a black written first, and black is written at the end only when no light came */
+    int unset = !gmaterial_emits(m);
     /* emission, ambient light and the direct light of every light source */
-    CHECK(gmaterial_emission(m, sp, to_viewer, out));
+    if (!unset)
+        CHECK(gmaterial_emission(m, sp, to_viewer, res));
     if (s->have_ambient) {
-        CHECK(gmaterial_ambient(m, sp, &s->ambient, &tmp));
-        CHECK(gcolor_add(out, out, &tmp));
+        CHECK(gmaterial_ambient(m, sp, &s->ambient, unset ? res : &tmp));
+        if (!unset)
+            CHECK(gcolor_add(res, res, &tmp));
+        unset = 0;
     }
     int opaque = gmaterial_opaque(m, sp);
     /* a material whose every lobe is ideal reflects no light sample (is_delta, material.h): no light is asked */
     if ((s->nlights > 0 || c->emissive) && !gmaterial_is_delta(m, sp)) {
         LightTmp lt;
         CHECK(light_temps(c, &lt));
+        lt.unset = unset;
         light_gather(sp, &lt); /* a Lambertian material: asked once for all lights (lights.c) */
         for (int i = 0; i < s->nlights; i++)
-            CHECK(light_shade(c, s->lights[i], sp, facing, media, to_viewer, opaque, &lt, out));
+            CHECK(light_shade(c, s->lights[i], sp, facing, media, to_viewer, opaque, &lt, res));
         if (c->emissive) /* glowing geometry, as an area light */
-            CHECK(emissive_shade(c, c->emissive, sp, facing, media, to_viewer, opaque, &lt, out));
-        CHECK(light_gather_finish(sp, &lt, out));
+            CHECK(emissive_shade(c, c->emissive, sp, facing, media, to_viewer, opaque, &lt, res));
+        CHECK(light_gather_finish(sp, &lt, res));
+        unset = lt.unset;
     }
     if (depth < c->max_depth) {
         /* the relative index first: the reflection's Fresnel term reads it too */
@@ -170,16 +193,16 @@ static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const 
         /* ideal reflection, in the medium the ray came through */
         CHECK(valid = gmaterial_reflection_dir(m, sp, view, &dir));
         if (valid)
-            CHECK(trace_secondary(c, r, sp, facing, dir, NULL, NULL, media, depth, out));
+            CHECK(trace_secondary(c, r, sp, facing, dir, NULL, NULL, media, depth, res, &unset));
         /* ideal refraction into the medium on the other side; not valid: total internal reflection */
         if (!opaque)
-            CHECK(refract(c, r, sp, facing, &ri, media, depth, out));
+            CHECK(refract(c, r, sp, facing, &ri, media, depth, res, &unset));
     }
+    if (unset)
+        gcolor_black(res);
     /* absorption until the light reaches the viewer */
-    if (sp->from) {
-        CHECK(gmaterial_absorption(sp->from, sp, out, sp->t, &tmp));
-        CHECK(gcolor_copy(out, &tmp));
-    }
+    if (sp->from)
+        CHECK(gmaterial_absorption(sp->from, sp, res, sp->t, out));
 done:
     gscratch_release(c->scratch, mark);
     if (rc < 0 && c->status == G_OK) {
@@ -189,17 +212,31 @@ done:
     return rc;
 }
 
-int whitted_trace(TraceCtx *c, const Ray *r, const Media *media, int depth, GColor *out)
+/* Radiance arriving along r into *out: buf, which the hit's shading writes, or the scene's background colour itself
+ * when r leaves the scene and no probe is the background (not copied: the caller reads it where it is). */
+static int trace_ray(TraceCtx *c, const Ray *r, const Media *media, int depth, GColor *buf, const GColor **out)
 {
     Hit h;
     c->rays++;
+    *out = buf;
     int hit = accel_intersect(c->scene, r, &h), seen_rc;
-    if (depth == 0 && light_seen(c->scene, r, hit ? h.t : INFINITY, out, &seen_rc))
+    if (depth == 0 && light_seen(c->scene, r, hit ? h.t : INFINITY, buf, &seen_rc))
         return seen_rc;
-    if (!hit)
-        return c->scene->env ? probe_background(c->scene->env, r->d, out) : gcolor_copy(out, &c->scene->background);
+    if (!hit) {
+        if (c->scene->env)
+            return probe_background(c->scene->env, r->d, buf);
+        *out = &c->scene->background;
+        return G_OK;
+    }
     GSurfPoint sp;
     GVec3 facing;
     surfpoint_fill(c, r, &h, media, &sp, &facing);
-    return shade(c, r, &sp, facing, media, depth, out);
+    return shade(c, r, &sp, facing, media, depth, buf);
+}
+
+int whitted_trace(TraceCtx *c, const Ray *r, const Media *media, int depth, GColor *out)
+{
+    const GColor *lit;
+    int rc = trace_ray(c, r, media, depth, out, &lit);
+    return rc < 0 || lit == out ? rc : gcolor_copy(out, lit);
 }

@@ -55,6 +55,14 @@ int path_light_sample(TraceCtx *c, const Light *l, GVec3 x, GVec3 *in, double *d
 int path_light_sample_at(const Light *l, GVec3 x, double u1, double u2, GVec3 *in, double *dist, double *pdf,
                          GColor *L)
 {
+    int got = path_light_direction_at(l, x, u1, u2, in, dist, pdf), rc;
+    if (got <= 0)
+        return got;
+    return (rc = gcolor_copy(L, &l->color)) < 0 ? rc : 1;
+}
+
+int path_light_direction_at(const Light *l, GVec3 x, double u1, double u2, GVec3 *in, double *dist, double *pdf)
+{
     if (l->kind == LIGHT_SPHERE) {
         GVec3 axis = gvec3_sub(l->position, x);
         double dc = gvec3_length(axis);
@@ -72,8 +80,7 @@ int path_light_sample_at(const Light *l, GVec3 x, double u1, double u2, GVec3 *i
         double b = dc * ct, disc = b * b - (dc * dc - l->radius * l->radius);
         *dist = b - sqrt(fmax(0.0, disc));
         *pdf = 1.0 / omega;
-        int rc = gcolor_copy(L, &l->color);
-        return rc < 0 ? rc : 1;
+        return 1;
     }
     if (l->kind == LIGHT_RECT) {
         GVec3 nl = gvec3_cross(l->edge1, l->edge2);
@@ -92,8 +99,7 @@ int path_light_sample_at(const Light *l, GVec3 x, double u1, double u2, GVec3 *i
             return 0;
         *dist = d;
         *pdf = d * d / (area * cos_l);
-        int rc = gcolor_copy(L, &l->color);
-        return rc < 0 ? rc : 1;
+        return 1;
     }
     return 0;
 }

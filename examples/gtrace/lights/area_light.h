@@ -21,5 +21,8 @@ int path_light_sample(TraceCtx *c, const Light *l, GVec3 x, GVec3 *in, double *d
 /** path_light_sample with the two numbers u1, u2 in [0, 1) given: the point on the light they map to. */
 int path_light_sample_at(const Light *l, GVec3 x, double u1, double u2, GVec3 *in, double *dist, double *pdf,
                          GColor *L);
+/** path_light_sample_at without the radiance, which is the light's own colour l->color (a caller that reads it there
+ * needs no copy): 1 with the direction, the distance and the density, 0 when the light offers none. */
+int path_light_direction_at(const Light *l, GVec3 x, double u1, double u2, GVec3 *in, double *dist, double *pdf);
 
 #endif

@@ -16,24 +16,32 @@
 typedef struct LightTmp {
     GColor illum, refl, tmp;
     GColor gathered; /**< with `gather`: the sum of each sample's light (shadowed) times its gmaterial_cos_in */
-    int gathered_any; /**< with `gather`: 1 once a sample's light was added to `gathered` (0: it is still black) */
+    int gathered_any; /**< with `gather`: 1 once a sample's light was added to `gathered` (0: it stands for black and
+                       * is not written: the first sample writes it) */
     int blocked; /**< 1: a shadow ray stops at any surface (the path tracer's rule for lights that material
                   * sampling also reaches: light through glass arrives there as a caustic); 0 (light_temps'
                   * default): it passes non-opaque surfaces along the straight line */
     int gather;  /**< 1 (light_gather): sample_light adds to `gathered` instead of asking the material per sample;
                   * 0 (light_temps' default): it adds the material's reflection of each sample to the result */
+    int unset;   /**< 1: the result holds nothing yet and stands for black (a caller that has not written it): the first
+                  * light is written to it instead of added (light_add), and unset is then 0; until then the result may
+                  * be written as a temporary (its values mean nothing while unset is 1); 0 (light_temps' default): the
+                  * result is written and light is added to it */
 } LightTmp;
-/** The temporaries: the context's own (trace_tmp; from the thread's arena when it has none), not black; blocked
- * and gather are 0. */
+/** The temporaries: the context's own (trace_tmp; from the thread's arena when it has none), not black; blocked,
+ * gather and unset are 0. */
 int light_temps(TraceCtx *c, LightTmp *t);
 /** Starts gathering the light of the samples at sp when its material has GMAT_LAMBERTIAN (material.h): its
  * reflection of a sample is diffuse(sp) times the light times gmaterial_cos_in / pi, so sample_light sums light times
  * cosine into t->gathered and light_gather_finish reflects the sum once. Nothing for another material (each
  * sample asks its reflection). Call it after light_temps, before the first light. */
 void light_gather(GSurfPoint *sp, LightTmp *t);
-/** Ends light_gather: adds diffuse(sp) times t->gathered / pi to result (nothing when none was gathered) and
- * turns gathering off. A no-op without light_gather. */
+/** Ends light_gather: adds diffuse(sp) times t->gathered / pi to result (nothing when none was gathered; written to
+ * it with t->unset) and turns gathering off. A no-op without light_gather. */
 int light_gather_finish(GSurfPoint *sp, LightTmp *t, GColor *result);
+/** Adds light x to result: result = result + x, or with t->unset result = x (x may be result itself) and t->unset
+ * = 0. */
+int light_add(LightTmp *t, GColor *result, const GColor *x);
 /** Adds to result the light reflected towards out_dir by sp from one light source, shadowed and absorbed
  * (Fig. 4, light.shade); opaque: the material's opaque() at sp (culls lights behind the surface). */
 int light_shade(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 out_dir,

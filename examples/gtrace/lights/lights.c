@@ -158,7 +158,9 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
                  const GColor *color, double scale, GVec3 out_dir, LightTmp *t, GColor *result)
 {
     const Scene *s = c->scene;
-    GColor *illum = &t->illum, *refl = &t->refl, *tmp = &t->tmp;
+    /* a result that holds nothing yet (t->unset) takes the reflected light itself: light_add then has nothing to copy,
+     * and a sample that adds nothing leaves it unset, whatever it holds */
+    GColor *illum = &t->illum, *refl = t->unset ? result : &t->refl, *tmp = &t->tmp;
     double cos_in = 0.0;
     int rc;
     if (t->gather) { /* illum is made below where it is needed: the clear path adds color * (scale * cos) */
@@ -181,10 +183,13 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
         medium = gvec3_dot(in, facing) >= 0.0 ? sp->from : sp->to;
         if (!medium || !isfinite(dist)) { /* the light arrives as it left */
             if (!t->gather)
-                return gcolor_add(result, result, refl);
+                return light_add(t, result, refl);
             /* gathered with the factor rounded to float, as gcolor_scale rounds its own: the axpy then multiplies in
-             * float */
-            t->gathered_any = 1;
+             * float, and the first sample's product is the axpy's onto black, so it is written by gcolor_scale */
+            if (!t->gathered_any) {
+                t->gathered_any = 1;
+                return gcolor_scale(&t->gathered, color, (float)(scale * cos_in));
+            }
             return gcolor_add_scaled(&t->gathered, color, (float)(scale * cos_in));
         }
     } else if (occluded != OCCLUDED_CLEAR && (t->blocked || occluded == OCCLUDED_OPAQUE)) {
@@ -196,26 +201,34 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
         if ((t->gather && (rc = gmaterial_reflection(sp->material, sp, in, illum, out_dir, refl)) < 0) ||
             (rc = gmaterial_absorption(medium, sp, refl, dist, tmp)) < 0 || (rc = gcolor_copy(refl, tmp)) < 0)
             return rc;
-        return gcolor_add(result, result, refl);
+        return light_add(t, result, refl);
     }
     int visible;
     if ((rc = light_transmit(c, sp, facing, media, in, dist, illum, &visible)) < 0 || !visible)
         return rc;
     if (t->gather) { /* the light that got through, as the material would reflect it */
+        if (!t->gathered_any)
+            gcolor_black(&t->gathered);
         t->gathered_any = 1;
         return gcolor_add_scaled(&t->gathered, illum, cos_in);
     }
     if ((rc = gmaterial_reflection(sp->material, sp, in, illum, out_dir, refl)) < 0)
         return rc;
-    return gcolor_add(result, result, refl);
+    return light_add(t, result, refl);
+}
+
+int light_add(LightTmp *t, GColor *result, const GColor *x)
+{
+    if (!t->unset)
+        return gcolor_add(result, result, x);
+    t->unset = 0;
+    return x == result ? G_OK : gcolor_copy(result, x);
 }
 
 void light_gather(GSurfPoint *sp, LightTmp *t)
 {
     t->gather = gmaterial_lambertian(sp->material);
-    t->gathered_any = 0;
-    if (t->gather)
-        gcolor_black(&t->gathered);
+    t->gathered_any = 0; /* t->gathered is written by the first sample */
 }
 
 int light_gather_finish(GSurfPoint *sp, LightTmp *t, GColor *result)
@@ -226,6 +239,10 @@ int light_gather_finish(GSurfPoint *sp, LightTmp *t, GColor *result)
     if (!t->gathered_any)
         return G_OK; /* no light sample arrived (all shadowed or turned away): the material is not asked */
     int rc = gmaterial_diffuse(sp->material, sp, &t->tmp);
+    if (rc == G_OK && t->unset) { /* black plus the reflected light is that light: written to result directly */
+        t->unset = 0;
+        return gcolor_mul_scaled(result, &t->tmp, &t->gathered, 1.0 / M_PI);
+    }
     if (rc == G_OK)
         rc = gcolor_mul_scaled(&t->tmp, &t->tmp, &t->gathered, 1.0 / M_PI);
     return rc == G_OK ? gcolor_add(result, result, &t->tmp) : rc;
@@ -257,6 +274,7 @@ int light_temps(TraceCtx *c, LightTmp *t)
     t->blocked = 0;
     t->gather = 0;
     t->gathered_any = 0;
+    t->unset = 0;
     if ((rc = trace_tmp(c, TRACE_TMP_ILLUM, &t->illum)) < 0 || (rc = trace_tmp(c, TRACE_TMP_REFL, &t->refl)) < 0 ||
         (rc = trace_tmp(c, TRACE_TMP_LIGHT, &t->tmp)) < 0 || (rc = trace_tmp(c, TRACE_TMP_GATHER, &t->gathered)) < 0)
         return rc;

@@ -179,7 +179,7 @@ static int probe_basis_shade(TraceCtx *c, const ProbeEnv *env, GSurfPoint *sp, G
     if (rc == G_OK)
         rc = gmaterial_reflection(sp->material, sp, facing, &t->illum, out_dir, &t->refl);
     if (rc == G_OK)
-        rc = gcolor_add(result, result, &t->refl);
+        rc = light_add(t, result, &t->refl);
     (void)c;
     return rc;
 }
@@ -250,7 +250,7 @@ int probe_light_nee(TraceCtx *c, const Light *l, GSurfPoint *sp, GVec3 facing, c
             rc = sample_light(c, sp, facing, media, in, INFINITY, &radiance, s, out_dir, t, result);
         } else if ((rc = gcolor_scale(&t->illum, &radiance, s)) == G_OK &&
                    (rc = gmaterial_reflection(sp->material, sp, in, &t->illum, out_dir, &t->refl)) == G_OK) {
-            rc = gcolor_add(result, result, &t->refl);
+            rc = light_add(t, result, &t->refl);
         }
     }
     gscratch_release(c->scratch, mark);
