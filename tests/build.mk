@@ -30,7 +30,8 @@ TEST_PLUGINS := bad_abi:bad_module:BAD_ABI failing_init:bad_module:FAIL_INIT no_
                 gain:nonconforming:GAIN skewed:nonconforming:SKEWED misdrawn:nonconforming:MISDRAWN \
                 misflagged:nonconforming:MISFLAGGED misopaque:nonconforming:MISOPAQUE \
                 misnormal:nonconforming:MISNORMAL misdiffuse:nonconforming:MISDIFFUSE misuv:nonconforming:MISUV \
-                misdiag:nonconforming:MISDIAG bad_add:nonconforming:BAD_ADD bad_bands:nonconforming:BAD_BANDS \
+                misdiag:nonconforming:MISDIAG misideal:nonconforming:MISIDEAL bad_add:nonconforming:BAD_ADD \
+                bad_bands:nonconforming:BAD_BANDS \
                 gain_mirror:nonconforming:GAIN_MIRROR misbent:nonconforming:MISBENT leaky:nonconforming:LEAKY \
                 halfvector:halfvector:GGX
 # test_plugin NAME: "NAME SOURCE DEFINE"

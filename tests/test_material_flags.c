@@ -8,6 +8,7 @@
  *    children but bump, no node over a child that tilts the normal; it makes gmaterial_normal and gsurfpoint_normal
  *    answer the geometric normal without calling the class, with the normals the class computes;
  *  - GMAT_LAMBERTIAN: lambert has it, no other built-in material (test_material_lambertian.c: nodes, the property);
+ *  - GMAT_NO_IDEAL: which leaves and nodes get it, and that the dispatch's answer without a call is the slots';
  *  - the material interface's version rose with the header (and stayed for the normal and Lambertian bits). */
 #include <stdarg.h>
 #include <stddef.h>
@@ -514,6 +515,74 @@ static void test_normal_bit_skips_the_class(void **state)
     gmaterial_unref(p);
 }
 
+static int no_ideal(const GMaterial *m) { return (m->flags & GMAT_NO_IDEAL) != 0; }
+
+/* GMAT_NO_IDEAL: the leaves without direction slots have it (lambert, emitter), mirror, dielectric and phong not;
+ * every kit node over lamberts has it (transform too), a node over a mirror or a glass has not. Where it is set,
+ * the dispatch (no call, no generator evaluated) gives what the node's own slots give by picking and blending:
+ * 0 (not valid), with the direction untouched, over generated points, views, indices and generator values. */
+static void test_no_ideal_bit(void **state)
+{
+    Fix *f = *state;
+    GError err;
+    GMaterial *a = lambert(f, 0.2), *b = lambert(f, 0.8), *c = lambert(f, 0.5), *e = emitter(f, 1, 1, 1), *n[8];
+    GMaterial *mirror = NULL, *glass = NULL, *m[3];
+    GDielectricParams gp = {.index = gdispersion_constant(1.5)};
+    assert_int_equal(gdielectric_create(f->rgb, &gp, &glass, &err), G_OK);
+    assert_int_equal(gmirror_create(f->rgb, &f->illum, &mirror, &err), G_OK);
+    assert_true(no_ideal(a) && no_ideal(e));
+    assert_false(no_ideal(mirror) || no_ideal(glass));
+    CountGen *g = countgen_new(0.4);
+    plain_nodes(a, b, c, g, n);
+    for (int i = 0; i < 8; i++)
+        if (!no_ideal(n[i]))
+            fail_msg("node %d (%s) over lamberts has no GMAT_NO_IDEAL", i, gmaterial_name(n[i]));
+    GAffine2 uv = gaffine2_rotate(30.0);
+    assert_int_equal(gnode_interpolate_create(a, mirror, &g->base, &m[0], &err), G_OK);
+    assert_int_equal(gnode_transform_create(glass, &uv, NULL, &m[1], &err), G_OK);
+    GMaterial *mixed[2] = {n[0], m[0]};
+    assert_int_equal(gnode_spline_create(mixed, 2, &g->base, GSPLINE_LINEAR, &m[2], &err), G_OK);
+    for (int i = 0; i < 3; i++)
+        if (no_ideal(m[i]))
+            fail_msg("node %d (%s) over a mirror or glass has GMAT_NO_IDEAL", i, gmaterial_name(m[i]));
+    GColor ri;
+    assert_int_equal(gcolor_alloc(&ri, f->rgb), G_OK);
+    uint64_t s = 5;
+    for (int k = 0; k < 200; k++) {
+        s = s * 6364136223846793005ull + 1442695040888963407ull;
+        double r1 = (double)(s >> 11) / 9007199254740992.0;
+        s = s * 6364136223846793005ull + 1442695040888963407ull;
+        double r2 = (double)(s >> 11) / 9007199254740992.0;
+        g->value = (k % 5) / 4.0; /* 0, 0.25, ..., 1: one child or a blend of two */
+        GVec3 view = gvec3_normalize(gvec3(r1 - 0.5, r2 - 0.5, k & 1 ? 0.7 : -0.7));
+        assert_int_equal(gcolor_fill(&ri, k & 2 ? 1.5 : 1.0 / 1.5), G_OK);
+        for (int i = 0; i < 8; i++) {
+            GSurfPoint sp;
+            plane_point(&sp, f->rgb, f->scratch, r1 * 4.0, r2 * 4.0); /* no cached generator value */
+            GVec3 d0 = gvec3(7, 7, 7), d1 = d0, d2 = d0, d3 = d0;
+            int before = g->calls;
+            assert_int_equal(gmaterial_reflection_dir(n[i], &sp, view, &d0), 0);
+            assert_int_equal(gmaterial_refraction_dir(n[i], &sp, view, &ri, &d1), 0);
+            assert_int_equal(g->calls, before); /* the dispatch asked nothing */
+            assert_int_equal(n[i]->cls->reflection_dir(n[i], &sp, view, &d2), 0);
+            assert_int_equal(n[i]->cls->refraction_dir(n[i], &sp, view, &ri, &d3), 0);
+            assert_true(d0.x == 7 && d1.x == 7 && d2.x == 7 && d3.x == 7); /* no direction written */
+        }
+    }
+    gcolor_free(&ri);
+    for (int i = 2; i >= 0; i--)
+        gmaterial_unref(m[i]);
+    for (int i = 7; i >= 0; i--)
+        gmaterial_unref(n[i]);
+    gmaterial_unref(a);
+    gmaterial_unref(b);
+    gmaterial_unref(c);
+    gmaterial_unref(e);
+    gmaterial_unref(mirror);
+    gmaterial_unref(glass);
+    ggenerator_unref(&g->base);
+}
+
 /* The header grew, so the interface version rose to 4: a class of version 3 is refused, naming both. */
 static void test_interface_version(void **state)
 {
@@ -540,6 +609,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_opaque_bit_skips_the_class, setup, teardown),
         cmocka_unit_test_setup_teardown(test_normal_bit_of_nodes, setup, teardown),
         cmocka_unit_test_setup_teardown(test_normal_bit_skips_the_class, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_no_ideal_bit, setup, teardown),
         cmocka_unit_test(test_interface_version),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

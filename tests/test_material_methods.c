@@ -211,7 +211,7 @@ static void test_unless_bits(void **state)
         assert_int_equal(calls[M_##NAME], 1);                                                                      \
     }
     GMATERIAL_METHODS(CALL_UNLESS)
-    assert_int_equal(with_bit, 4); /* emission, normal, opaque, is_delta */
+    assert_int_equal(with_bit, 6); /* reflection_dir, refraction_dir, emission, normal, opaque, is_delta */
     gmaterial_unref(m);
 }
 
@@ -261,7 +261,7 @@ static void test_defaults(void **state)
     Fix *f = *state;
     defaults_of(f, NULL);
     GMaterial *m = new_material(&bare_class, f->model);
-    assert_int_equal(m->flags, (unsigned)(GMAT_NO_EMISSION | GMAT_OPAQUE | GMAT_GEOMETRIC_NORMAL));
+    assert_int_equal(m->flags, (unsigned)(GMAT_NO_EMISSION | GMAT_OPAQUE | GMAT_GEOMETRIC_NORMAL | GMAT_NO_IDEAL));
     defaults_of(f, m);
     m->flags = 0; /* the NULL slots themselves */
     defaults_of(f, m);

@@ -8,6 +8,7 @@
 #include <cmocka.h>
 
 #include "generic/builtins.h"
+#include "test_util.h"
 #include "texture_fixtures.h"
 
 #include <stdio.h>
@@ -89,6 +90,59 @@ static void test_checker_parity(void **state)
             }
     ggenerator_unref(c2);
     ggenerator_unref(c4);
+    ggenerator_unref(c3);
+}
+
+/* The box-filtered square wave by its definition, with floors: the cell's parity (fmod(|floor(x)|, 2)) when the
+ * window [x - w/2, x + w/2] lies in one cell or w is negligible, else the integral over the window over w. */
+static double wave_integral_ref(double x) { return floor(0.5 * x) + fmax(0.0, x - 2.0 * floor(0.5 * x) - 1.0); }
+
+static double filtered_ref(double x, double w)
+{
+    if (w > 1e3)
+        return 0.5;
+    double lo = x - 0.5 * w, hi = x + 0.5 * w;
+    if (w > 1e-9 && floor(lo) != floor(hi))
+        return (wave_integral_ref(hi) - wave_integral_ref(lo)) / w;
+    return fmod(fabs(floor(x)), 2.0);
+}
+
+/* The checker equals the definition above, xor-ed over the axes, to the bit: windows inside cells, across edges
+ * (ends within rounding of an integer), on both sides of 0 and far out (2^52 and beyond, where u is an integer). */
+static void test_checker_definition(void **state)
+{
+    (void)state;
+    GGenerator *c2, *c3;
+    GError err;
+    assert_int_equal(ggenerator_checker_create(2, 1.0, &c2, &err), G_OK);
+    assert_int_equal(ggenerator_checker_create(3, 1.0, &c3, &err), G_OK);
+    uint64_t s = 11;
+    int n = TU_SANITIZED ? 2000 : 200000;
+    for (int i = 0; i < n; i++) {
+        double x[3], w;
+        for (int k = 0; k < 3; k++) {
+            switch ((i + k) % 4) {
+            case 0: x[k] = uniform(&s, -40, 40); break;
+            case 1: x[k] = floor(uniform(&s, -40, 40)) + uniform(&s, -1e-9, 1e-9); break; /* at an edge */
+            case 2: x[k] = -0.0; break;
+            default: x[k] = ldexp(uniform(&s, -1, 1), 50 + (int)uniform(&s, 0, 6)); break; /* near 2^52 */
+            }
+        }
+        switch (i % 3) {
+        case 0: w = uniform(&s, 0, 2); break;
+        case 1: w = uniform(&s, 0, 2e-9); break; /* about the negligible width */
+        default: w = 0.0; break;
+        }
+        double a = filtered_ref(x[0], w), b = filtered_ref(x[1], w), c = filtered_ref(x[2], w);
+        double want2 = a + b - 2.0 * a * b, want3 = want2 + c - 2.0 * want2 * c;
+        assert_true(at_uv(c2, x[0], x[1], w) == want2);
+        GSurfPoint sp;
+        gsurfpoint_init(&sp, NULL, NULL);
+        sp.point = sp.object_point = gvec3(x[0], x[1], x[2]);
+        sp.footprint = w;
+        assert_true(ggenerator_value(c3, &sp) == want3);
+    }
+    ggenerator_unref(c2);
     ggenerator_unref(c3);
 }
 
@@ -406,6 +460,7 @@ int main(void)
         return 1;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_checker_parity),
+        cmocka_unit_test(test_checker_definition),
         cmocka_unit_test(test_noise_values_pinned),
         cmocka_unit_test(test_perlin_noise),
         cmocka_unit_test(test_fractals),

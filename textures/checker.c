@@ -7,6 +7,7 @@
 #include <generic/kit/texture_parse.h>
 
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 typedef struct Checker {
@@ -30,6 +31,16 @@ static double filtered(double x, double w)
     if (w > 1e3)
         return 0.5;
     double lo = x - 0.5 * w, hi = x + 0.5 * w;
+    if (fabs(x) < 0x1p52) {
+        /* the same answer from one floor, as an integer: the cell i = floor(x) (exact below 2^52, as are i and
+         * i + 1 as doubles); lo <= x <= hi, so floor(lo) == floor(hi) exactly when lo >= i and hi < i + 1; the
+         * parity is the integer's low bit (two's complement: also for negative cells) */
+        int64_t i = (int64_t)x;
+        i -= (double)i > x;
+        if (w > 1e-9 && !(lo >= (double)i && hi < (double)(i + 1)))
+            return (wave_integral(hi) - wave_integral(lo)) / w;
+        return (double)(i & 1);
+    }
     if (w > 1e-9 && floor(lo) != floor(hi))
         return (wave_integral(hi) - wave_integral(lo)) / w;
     /* the parity of the cell, 0 or 1: fmod(|floor(x)|, 2) without the call, exact for every double (h and

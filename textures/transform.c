@@ -271,6 +271,7 @@ int gnode_transform_create(GMaterial *child, const GAffine2 *uv, const GAffine3 
     gnode_inherit_no_emission(&t->base, &child, 1); /* the child's emission at a moved point */
     gnode_inherit_opaque(&t->base, &child, 1);      /* the child's opacity at a moved point */
     gnode_inherit_diagonal(&t->base, &child, 1);    /* the child's pass-on at a moved point */
+    gnode_inherit_no_ideal(&t->base, &child, 1);    /* the child's ideal rays at a moved point */
     /* the child's normal at a moved point that keeps the geometric normal (move() leaves it) */
     gnode_inherit_geometric_normal(&t->base, &child, 1);
     /* reflection and diffuse colour: the child's at the moved copy, which carries sp's shading normal (move()

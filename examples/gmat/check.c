@@ -46,6 +46,8 @@
  *                are what they pass on of white times the light, over random and ideal pairs (flags.c).
  *   no-uv        for a material with GMAT_NO_UV: the same colours, normal and opacity with the surface's (u, v)
  *                and tangents as without them (uvflag.c).
+ *   no-ideal     for a material with GMAT_NO_IDEAL: its class's own reflection_dir and refraction_dir say 0
+ *                (flags.c).
  *   chi2, pdf integral, weight: the sampling slots (sampling.c). */
 #include "gmat.h"
 
@@ -487,6 +489,7 @@ int gmat_check(GmatContext *ctx, int samples)
     gmat_check_lambertian(ctx, k.places, NPLACES, report_fn, &k);
     gmat_check_diagonal(ctx, k.places, NPLACES, report_fn, &k);
     gmat_check_no_uv(ctx, k.places, NPLACES, report_fn, &k);
+    gmat_check_no_ideal(ctx, k.places, NPLACES, report_fn, &k);
     gmat_check_sampling(ctx, k.places, NPLACES, 0, report_fn, &k);
     printf("%s: %s\n", ctx->material_name, k.failures ? "FAIL" : "PASS");
     gcolor_free(&k.a);

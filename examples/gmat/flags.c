@@ -19,6 +19,8 @@
  *                ideal refraction and sometimes from out's side, each against what the slot passes on of white (1
  *                in every sample) times the light (gcolor_mul): the largest difference over the largest value of
  *                each of the three at a place (a failed call counts as infinite); at most 1e-5 (rounding).
+ *   no-ideal     with GMAT_NO_IDEAL: how many calls of the reflection_dir and refraction_dir slots (the relative
+ *                indices 1.5 and 1 / 1.5) over the finite check's directions did not say 0 (not valid); must be none.
  * Nothing to check without the bit, or without the slot (the default is then what the bit says). */
 #include "gmat.h"
 
@@ -365,4 +367,51 @@ void gmat_check_diagonal(GmatContext *ctx, const GmatPlace *places, int nplaces,
              " at indices 1 and 1.5, %d calls)",
              calls);
     report(checker, "diagonal", worst, TOL_DIAGONAL, detail);
+}
+
+/* How many calls of the class's own reflection_dir and refraction_dir slots at sp did not say 0, over the finite
+ * check's views (from above and from below the surface) and the relative indices 1.5 and 1 / 1.5. */
+static double ideal_rays_at(GmatContext *ctx, GSurfPoint *sp, int below, int *calls)
+{
+    const GMaterial *m = ctx->material;
+    double valid = 0.0, sign = below ? 1.0 : -1.0; /* the view travels towards the surface */
+    for (int t = 0; t < 90; t += 15)
+        for (int ph = 0; ph < 360; ph += 90) {
+            GVec3 view = gmat_direction(t, ph), dir;
+            view.z *= sign;
+            if (m->cls->reflection_dir) {
+                valid += m->cls->reflection_dir(m, sp, view, &dir) != 0;
+                (*calls)++;
+            }
+            for (int k = 0; k < 2 && m->cls->refraction_dir; k++) {
+                GScratchMark mark = gscratch_mark(ctx->scratch);
+                GColor ri;
+                int rc = gcolor_scratch(&ri, ctx->model, ctx->scratch);
+                if (rc == G_OK)
+                    rc = gcolor_fill(&ri, k ? 1.0 / 1.5 : 1.5);
+                valid += rc != G_OK || m->cls->refraction_dir(m, sp, view, &ri, &dir) != 0;
+                (*calls)++;
+                gscratch_release(ctx->scratch, mark);
+            }
+        }
+    return valid;
+}
+
+void gmat_check_no_ideal(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report, void *checker)
+{
+    const GMaterial *m = ctx->material;
+    int flagged = (m->flags & GMAT_NO_IDEAL) != 0;
+    if (!flagged || (!m->cls->reflection_dir && !m->cls->refraction_dir)) {
+        report(checker, "no-ideal", 0.0, 0.0,
+               !flagged ? "(GMAT_NO_IDEAL not set: the direction slots are called)"
+                        : "(GMAT_NO_IDEAL set, no direction slots: not valid, the default)");
+        return;
+    }
+    int calls;
+    double wrong = over_places(ctx, places, nplaces, ideal_rays_at, 1, &calls);
+    char detail[200];
+    snprintf(detail, sizeof detail,
+             "(GMAT_NO_IDEAL set: calls of the class's own reflection_dir and refraction_dir that did not say 0, of "
+             "%d)", calls);
+    report(checker, "no-ideal", wrong, 0.0, detail);
 }

@@ -119,6 +119,9 @@ void gmat_check_lambertian(GmatContext *ctx, const GmatPlace *places, int nplace
  * (1 in every sample) times that light (relative 1e-5) over random pairs of directions, the ideal ones included,
  * and random lights at the places given, on both sides. */
 void gmat_check_diagonal(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report, void *checker);
+/** The no-ideal check of `gmat check` (flags.c): a material with GMAT_NO_IDEAL must get 0 (not valid) from its
+ * class's own reflection_dir and refraction_dir slots at the places given, for views from both sides. */
+void gmat_check_no_ideal(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report, void *checker);
 /** The no-uv check of `gmat check` (uvflag.c): a material with GMAT_NO_UV must give the same colours, normal and
  * opacity at the places given, on both sides, with the surface's parametrisation set and with it zero. */
 void gmat_check_no_uv(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report, void *checker);

@@ -124,6 +124,8 @@ static void usage_check(FILE *f)
                "               (random and ideal pairs, random lights, relative 1e-5)\n"
                "  no-uv        a material flagged GMAT_NO_UV gives the same values with and without\n"
                "               the surface's (u, v) and tangents\n"
+               "  no-ideal     a material flagged GMAT_NO_IDEAL gets 0 (not valid) from its class's\n"
+               "               reflection_dir and refraction_dir slots\n"
                "Each is measured at several surface points (u, v, point and surface index vary).\n"
                "  --samples N         albedo grid N x 2N (8..4096, default 64)\n\n%s",
             common);

@@ -107,7 +107,13 @@ enum {
      * light, weigh a secondary ray with it and multiply the ray's light by it. gmaterial_init never sets it: a
      * class sets it on the instances it holds for (the built-ins whose colours are not re-radiation matrices);
      * the node kit on a blend when every child has it (gnode_inherit_diagonal). */
-    GMAT_DIAGONAL = 32u
+    GMAT_DIAGONAL = 32u,
+    /** No ideal ray: reflection_dir and refraction_dir say "not valid" (0) at every point for every view and index,
+     * so gmaterial_reflection_dir and gmaterial_refraction_dir answer 0 without calling the class (a blend over such
+     * children then picks no blend for them). Set by gmaterial_init for a class with neither slot, by the node kit
+     * for a node whose direction slots are the kit's blends or pass-throughs (or empty) when every child has it
+     * (gnode_inherit_kit_no_ideal). */
+    GMAT_NO_IDEAL = 64u
 };
 
 /** A material instance begins with this header; implementations embed it as their first member. */
@@ -155,12 +161,13 @@ struct GMaterial {
      * m == NULL (vacuum). */                                                                                          \
     X(refraction_index, REFRACTION_INDEX, int, GENERIC_NODISCARD, 0, call, pick, (GSurfPoint *sp, GColor *result),     \
       (sp, result))                                                                                                    \
-    /** Ideal reflection direction for the incident direction view: 1 when valid, 0 when not. Default: not valid. */   \
-    X(reflection_dir, REFLECTION_DIR, int, GENERIC_NODISCARD, 0, call, pick, (GSurfPoint *sp, GVec3 view, GVec3 *dir), \
-      (sp, view, dir))                                                                                                 \
+    /** Ideal reflection direction for the incident direction view: 1 when valid, 0 when not. Default: not valid,     \
+     * without a call to the class when m has GMAT_NO_IDEAL. */                                                        \
+    X(reflection_dir, REFLECTION_DIR, int, GENERIC_NODISCARD, GMAT_NO_IDEAL, call, pick,                               \
+      (GSurfPoint *sp, GVec3 view, GVec3 *dir), (sp, view, dir))                                                       \
     /** Ideal refraction direction: 0 on total internal reflection or through an opaque material. Default: not         \
-     * valid. */                                                                                                       \
-    X(refraction_dir, REFRACTION_DIR, int, GENERIC_NODISCARD, 0, call, pick,                                           \
+     * valid, without a call to the class when m has GMAT_NO_IDEAL. */                                                 \
+    X(refraction_dir, REFRACTION_DIR, int, GENERIC_NODISCARD, GMAT_NO_IDEAL, call, pick,                               \
       (GSurfPoint *sp, GVec3 view, const GColor *rel_index, GVec3 *dir), (sp, view, rel_index, dir))                   \
     /** Light emitted towards out. Default: black, without a call to the class when m has GMAT_NO_EMISSION. */         \
     X(emission, EMISSION, int, GENERIC_NODISCARD, GMAT_NO_EMISSION, call, pick,                                        \
@@ -216,7 +223,8 @@ struct GMaterialClass {
 };
 
 /** Fills the header of a new instance (refcount 1; flags: GMAT_NO_EMISSION when the class has no emission slot,
- * GMAT_OPAQUE when it has no opaque slot, GMAT_GEOMETRIC_NORMAL when it has no normal slot); G_ERR_VERSION when
+ * GMAT_OPAQUE when it has no opaque slot, GMAT_GEOMETRIC_NORMAL when it has no normal slot, GMAT_NO_IDEAL when it
+ * has neither a reflection_dir nor a refraction_dir slot); G_ERR_VERSION when
  * the class is of another version. */
 GENERIC_API GENERIC_NODISCARD int gmaterial_init(GMaterial *m, const GMaterialClass *cls, const GColorModel *model,
                                                  GError *err);

@@ -17,7 +17,8 @@ int gmaterial_init(GMaterial *m, const GMaterialClass *cls, const GColorModel *m
     m->cost = 1;
     m->flags = (cls->emission ? 0u : GMAT_NO_EMISSION) | /* no slot: black, the documented default */
                (cls->opaque ? 0u : GMAT_OPAQUE) |        /* no slot: opaque, the documented default */
-               (cls->normal ? 0u : GMAT_GEOMETRIC_NORMAL); /* no slot: the geometric normal, the default */
+               (cls->normal ? 0u : GMAT_GEOMETRIC_NORMAL) | /* no slot: the geometric normal, the default */
+               (cls->reflection_dir || cls->refraction_dir ? 0u : GMAT_NO_IDEAL); /* no slots: no ideal ray */
     return G_OK;
 }
 

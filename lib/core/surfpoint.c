@@ -83,17 +83,26 @@ void gsurfpoint_invalidate(GSurfPoint *sp)
     sp->priv.ncache = 0;
 }
 
-GVec3 gsurfpoint_normal(GSurfPoint *sp)
+/* The first call's work of gsurfpoint_normal: the normal asked and cached. */
+static __attribute__((noinline)) GVec3 normal_first(GSurfPoint *sp)
 {
-    if (!(sp->priv.cached_flags & HAVE_NORMAL)) {
-        GVec3 n = sp->geometric_normal;
-        /* GMAT_GEOMETRIC_NORMAL: the material's normal is the geometric one, no call (material.h) */
-        if (sp->material && !(sp->material->flags & GMAT_GEOMETRIC_NORMAL) &&
-            gmaterial_normal(sp->material, sp, &n) != G_OK)
-            n = sp->geometric_normal;
-        sp->priv.cached_normal = n;
-        sp->priv.cached_flags |= HAVE_NORMAL;
-    }
+    GVec3 n = sp->geometric_normal;
+    /* GMAT_GEOMETRIC_NORMAL: the material's normal is the geometric one, no call (material.h) */
+    if (sp->material && !(sp->material->flags & GMAT_GEOMETRIC_NORMAL) &&
+        gmaterial_normal(sp->material, sp, &n) != G_OK)
+        n = sp->geometric_normal;
+    sp->priv.cached_normal = n;
+    sp->priv.cached_flags |= HAVE_NORMAL;
+    return n;
+}
+
+/* always inlined where the optimiser sees it (link-time optimisation of a renderer, which asks for the normal of a
+ * point many times: every light's cosine, every ideal pair): the cached normal is one test and a load there; an
+ * external definition all the same (surfpoint.h declares it) */
+__attribute__((always_inline)) inline GVec3 gsurfpoint_normal(GSurfPoint *sp)
+{
+    if (!(sp->priv.cached_flags & HAVE_NORMAL))
+        return normal_first(sp);
     return sp->priv.cached_normal;
 }
 

@@ -87,12 +87,13 @@ static int call_color(const GMaterial *m, GSurfPoint *sp, const ColorCall *c, GC
  * approximation, which a renderer traces once; the test stays the point's own ideal pair. ---- */
 
 /* 1 when some child of non-zero weight has the direction slot of the method (reflection_dir for reflection,
- * refraction_dir for refraction): only then may the blend have an ideal ray. No call. */
+ * refraction_dir for refraction) and not GMAT_NO_IDEAL: only then may the blend have an ideal ray. No call. */
 static int may_have_ray(const GNodeBlend *b, int reflect)
 {
     for (int i = 0; i < b->n; i++) {
         const GMaterialClass *cls = b->m[i]->cls;
-        if (b->w[i] != 0.0 && (reflect ? cls->reflection_dir != NULL : cls->refraction_dir != NULL))
+        if (b->w[i] != 0.0 && !(b->m[i]->flags & GMAT_NO_IDEAL) &&
+            (reflect ? cls->reflection_dir != NULL : cls->refraction_dir != NULL))
             return 1;
     }
     return 0;

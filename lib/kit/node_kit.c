@@ -128,6 +128,7 @@ int gnode_new_checked(const GMaterialClass *cls, GMaterial *const *children, int
             gnode_inherit_opaque(*out, children, n);
         gnode_inherit_kit_normal(*out, children, n); /* the kit's normal slots: blends of their normals */
         gnode_inherit_kit_diagonal(*out, children, n); /* the kit's pass-on slots: sums of their pass-ons */
+        gnode_inherit_kit_no_ideal(*out, children, n); /* the kit's direction slots: their rays or blends of them */
     }
     return rc;
 }

@@ -26,6 +26,9 @@
  *                power leaves spread over all of them) while its instances set GMAT_DIAGONAL, so a renderer
  *                that weighs a ray by its pass-on of white gives it the light's colour: only the diagonal check
  *                sees it;
+ *   -DMISIDEAL   material "misideal_lambert": a Lambertian of albedo 0.5 whose reflection_dir slot gives the mirror
+ *                direction (an ideal ray a Whitted tracer would follow) while its instances set GMAT_NO_IDEAL, so
+ *                renderers never ask it: only the no-ideal check sees it;
  *   -DGAIN_MIRROR material "gain_mirror": a mirror whose ideal ray passes on 1.2 times the light (albedo 1.2 on
  *                any surface, bumped or not);
  *   -DMISBENT    material "misbent_glass": clear glass of index 1.5 whose refraction_dir refracts about the
@@ -80,7 +83,7 @@ __attribute__((unused)) static int add_material(GModuleApi *api, const char *nam
 }
 
 #if defined(GAIN) || defined(SKEWED) || defined(MISDRAWN) || defined(MISFLAGGED) || defined(MISOPAQUE) ||              \
-    defined(MISNORMAL) || defined(MISDIFFUSE) || defined(MISUV) || defined(MISDIAG)
+    defined(MISNORMAL) || defined(MISDIFFUSE) || defined(MISUV) || defined(MISDIAG) || defined(MISIDEAL)
 typedef struct Flat {
     GMaterial base;
 } Flat;
@@ -116,7 +119,8 @@ static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, cons
     double f = 1.5 / M_PI;
 #elif defined(MISDRAWN)
     double f = 0.8 / M_PI;
-#elif defined(MISFLAGGED) || defined(MISOPAQUE) || defined(MISNORMAL) || defined(MISDIFFUSE) || defined(MISDIAG)
+#elif defined(MISFLAGGED) || defined(MISOPAQUE) || defined(MISNORMAL) || defined(MISDIFFUSE) || defined(MISDIAG) ||    \
+    defined(MISIDEAL)
     double f = 0.5 / M_PI;
 #elif defined(MISUV)
     double f = (0.25 + 0.5 * fmin(1.0, fmax(0.0, sp->u))) / M_PI; /* reads u: GMAT_NO_UV is wrong */
@@ -146,6 +150,8 @@ static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, cons
 #define FLAT_NAME "misuv_lambert"
 #elif defined(MISDIAG)
 #define FLAT_NAME "misdiag_lambert"
+#elif defined(MISIDEAL)
+#define FLAT_NAME "misideal_lambert"
 #else
 #define FLAT_NAME "skewed_lambert"
 #endif
@@ -217,6 +223,18 @@ static int flat_diffuse(const GMaterial *self, GSurfPoint *sp, GColor *result)
 }
 #endif
 
+#ifdef MISIDEAL
+/* The mirror direction of the view about the shading normal; the instances are flagged GMAT_NO_IDEAL all the same
+ * (the error). */
+static int flat_reflection_dir(const GMaterial *self, GSurfPoint *sp, GVec3 view, GVec3 *dir)
+{
+    (void)self;
+    GVec3 n = gsurfpoint_normal(sp);
+    *dir = gvec3_sub(view, gvec3_scale(n, 2.0 * gvec3_dot(view, n)));
+    return 1;
+}
+#endif
+
 static const GMaterialClass flat_class = {
     .abi_version = GMATERIAL_ABI_VERSION,
     .name = FLAT_NAME,
@@ -238,6 +256,9 @@ static const GMaterialClass flat_class = {
 #endif
 #ifdef MISDIFFUSE
     .diffuse = flat_diffuse,
+#endif
+#ifdef MISIDEAL
+    .reflection_dir = flat_reflection_dir,
 #endif
 };
 
@@ -263,6 +284,9 @@ static int parse_flat(GReader *r, const void *vtable, void **object, GError *err
 #endif
 #ifdef MISUV
     m->base.flags |= GMAT_NO_UV; /* the deliberate error: the class's reflection reads u */
+#endif
+#ifdef MISIDEAL
+    m->base.flags |= GMAT_NO_IDEAL; /* the deliberate error: the class's reflection_dir gives a ray */
 #endif
 #ifdef MISDIAG
     m->base.flags |= GMAT_DIAGONAL; /* the deliberate error: the class's reflection mixes the light's samples */

@@ -19,7 +19,8 @@
 #     whose tilted normal a wrong GMAT_GEOMETRIC_NORMAL hides: geometric-normal alone; misdiffuse_lambert, whose
 #     diffuse colour a wrong GMAT_LAMBERTIAN puts in place of its reflection: lambertian alone;
 #     misuv_lambert, whose albedo follows u, which a wrong GMAT_NO_UV hides: no-uv alone; misdiag_lambert, whose
-#     grey response to coloured light a wrong GMAT_DIAGONAL hides: diagonal alone),
+#     grey response to coloured light a wrong GMAT_DIAGONAL hides: diagonal alone; misideal_lambert, whose ideal ray
+#     a wrong GMAT_NO_IDEAL hides: no-ideal alone),
 #     and the example modules (examples/plugins/) must pass;
 #   - lambert, phong and mirror with a re-radiation matrix for a colour (bispectral) pass, the sampling weights
 #     included; light that moves between samples along the ideal ray alone is seen as re-radiation.
@@ -148,6 +149,7 @@ echo "material m misnormal_lambert" > "$TMP/misnormal.mat"
 echo "material m misdiffuse_lambert" > "$TMP/misdiffuse.mat"
 echo "material m misuv_lambert" > "$TMP/misuv.mat"
 echo "material m misdiag_lambert" > "$TMP/misdiag.mat"
+echo "material m misideal_lambert" > "$TMP/misideal.mat"
 expect_fail "gain_lambert (albedo 1.5)" albedo "$GMAT" check "$TMP/gain.mat" m --plugin "$PLUGINS/gain.so"
 expect_fail "skewed_lambert (not reciprocal)" reciprocity "$GMAT" check "$TMP/skewed.mat" m --plugin "$PLUGINS/skewed.so"
 expect_fail "misdrawn_lambert (samples uniformly, pdf cos/pi)" chi2 "$GMAT" check "$TMP/misdrawn.mat" m --plugin "$PLUGINS/misdrawn.so"
@@ -163,6 +165,8 @@ expect_fail "misuv_lambert (GMAT_NO_UV on a reflection that reads u)" no-uv "$GM
     --plugin "$PLUGINS/misuv.so"
 expect_fail "misdiag_lambert (GMAT_DIAGONAL on a reflection that mixes the light's samples)" diagonal "$GMAT" check \
     "$TMP/misdiag.mat" m --plugin "$PLUGINS/misdiag.so"
+expect_fail "misideal_lambert (GMAT_NO_IDEAL on a reflection_dir that gives a ray)" no-ideal "$GMAT" check \
+    "$TMP/misideal.mat" m --plugin "$PLUGINS/misideal.so"
 expect_fail "bad_add (wrong add)" "a + black = a" "$GCOLOR" check bad_add --plugin "$PLUGINS/bad_add.so"
 expect_fail "bad_bands (overlapping bands)" "bands partition a" "$GCOLOR" check bad_bands --plugin "$PLUGINS/bad_bands.so"
 

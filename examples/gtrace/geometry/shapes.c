@@ -396,15 +396,18 @@ void hit_geom(const Ray *r, const Hit *h, int want_uv, HitGeom *g)
 {
     g->want_uv = want_uv;
     const Instance *in = h->inst;
-    Ray pr = *r;
+    const Ray *pr = r; /* a copy only for an instance */
+    Ray moved;
     if (in) { /* the ray in the prototype's space: affine, so t is unchanged */
-        pr.o = xform_inv_point(&in->xf, r->o);
-        pr.d = xform_inv_vector(&in->xf, r->d);
+        moved = *r;
+        moved.o = xform_inv_point(&in->xf, r->o);
+        moved.d = xform_inv_vector(&in->xf, r->d);
+        pr = &moved;
     }
     if (h->obj->kind == SHAPE_MESH)
-        mesh_hit_geom(h->obj, &pr, h, g);
+        mesh_hit_geom(h->obj, pr, h, g);
     else
-        shape_hit_geom(h->obj, &pr, h, g);
+        shape_hit_geom(h->obj, pr, h, g);
     if (in) {
         if (!g->object_tangents) { /* the prototype's space is the object's */
             g->odpdu = g->dpdu;

@@ -564,8 +564,9 @@ static void make_ray(const Ray *r, struct RTCRay *ray)
  * here so (a NaN from a material's direction) hits nothing. One sum of the six magnitudes, in scalars: it is
  * below 1e18 only when each is (a NaN or an infinity makes it fail). Loading the fields two at a time read
  * across the separate 8-byte stores that had just written them (a store-forwarding stall: 8% of the time samples
- * sat on it; about 1% of a render's time came back). */
-static int traceable(const Ray *r)
+ * sat on it; about 1% of a render's time came back). Inlined into both queries: a call of its own cost a third of
+ * its instructions. */
+static inline __attribute__((always_inline)) int traceable(const Ray *r)
 {
     double m = fabs(r->o.x) + fabs(r->o.y) + fabs(r->o.z) + fabs(r->d.x) + fabs(r->d.y) + fabs(r->d.z);
     return m < 1.0e18 && r->tmin >= 0.0 && r->tmin < 3.0e38 && !(r->tmax < r->tmin);

@@ -6,17 +6,6 @@
 
 #include <math.h>
 
-/* The distance a point is moved off a surface (offset_origin) and the margin a shadow ray keeps from the surface of
- * its target (shadow_reach): a relative 2e-5 of the point's largest coordinate, far above the single precision of the
- * intersection tests. */
-static double offset_eps(GVec3 p) { return 2e-5 * (1.0 + gfmax(fabs(p.x), gfmax(fabs(p.y), fabs(p.z)))); }
-
-GVec3 offset_origin(GVec3 p, GVec3 n, GVec3 dir)
-{
-    double eps = offset_eps(p);
-    return gvec3_madd(p, n, gvec3_dot(dir, n) >= 0.0 ? eps : -eps);
-}
-
 double shadow_reach(GVec3 origin, GVec3 dir, GVec3 target, GVec3 normal)
 {
     GVec3 to = gvec3_sub(target, origin);

@@ -14,6 +14,7 @@
 #include <generic/surfpoint.h>
 #include <generic/vec.h>
 
+#include <math.h>
 #include <stdint.h>
 
 /** The colours a TraceCtx owns (TraceCtx.tmp), each for one job that holds it without tracing another ray meanwhile,
@@ -88,8 +89,17 @@ void media_copy(Media *out, const Media *in);
 void media_cross(const Media *in, const GMaterial *mat, int entering, Media *out);
 /** The relative refraction index n(from) / n(to) at sp, into ri (given storage from the thread's arena). */
 int trace_relative_index(TraceCtx *c, GSurfPoint *sp, GColor *ri);
-/** Offsets a point off a surface to the side `dir` leaves on, against self-intersection. */
-GVec3 offset_origin(GVec3 p, GVec3 n, GVec3 dir);
+/** The distance a point is moved off a surface (offset_origin) and the margin a shadow ray keeps from the surface of
+ * its target (shadow_reach): a relative 2e-5 of the point's largest coordinate, far above the single precision of the
+ * intersection tests. */
+static inline double offset_eps(GVec3 p) { return 2e-5 * (1.0 + gfmax(fabs(p.x), gfmax(fabs(p.y), fabs(p.z)))); }
+/** Offsets a point off a surface to the side `dir` leaves on, against self-intersection. Inline: called for every
+ * secondary and shadow ray, it would pass its three vectors and its result through the stack. */
+static inline GVec3 offset_origin(GVec3 p, GVec3 n, GVec3 dir)
+{
+    double eps = offset_eps(p);
+    return gvec3_madd(p, n, gvec3_dot(dir, n) >= 0.0 ? eps : -eps);
+}
 /** The length of a shadow ray from origin along unit dir towards target, a point on a surface of unit normal `normal`
  * (either orientation) that the ray must not meet: the ray ends where it still lies the offset of a secondary ray's
  * origin at target (offset_origin's) in front of the surface's tangent plane at target, so that neither end of the

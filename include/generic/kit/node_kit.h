@@ -140,6 +140,19 @@ GENERIC_API void gnode_inherit_diagonal(GMaterial *node, GMaterial *const *child
  * calls it for every node it makes, plug-in classes included. */
 GENERIC_API void gnode_inherit_kit_diagonal(GMaterial *node, GMaterial *const *children, int n);
 
+/** 1 when each of the n children has GMAT_NO_IDEAL (material.h): a node whose reflection_dir and refraction_dir are
+ * its children's or blends of them (any point, view and index) then has no ideal ray anywhere. */
+GENERIC_API GENERIC_NODISCARD int gnode_children_no_ideal(GMaterial *const *children, int n);
+
+/** Sets GMAT_NO_IDEAL on node when gnode_children_no_ideal(children, n): for a node class whose own reflection_dir
+ * and refraction_dir only ask these children, at any point (transform calls it after construction). */
+GENERIC_API void gnode_inherit_no_ideal(GMaterial *node, GMaterial *const *children, int n);
+
+/** Sets GMAT_NO_IDEAL on node when gnode_children_no_ideal(children, n) and each of its class's reflection_dir and
+ * refraction_dir slots is empty or the kit's blend or pass-through (gnode_blended_<name>, gnode_child_<name>):
+ * gnode_new_checked calls it for every node it makes, plug-in classes included. */
+GENERIC_API void gnode_inherit_kit_no_ideal(GMaterial *node, GMaterial *const *children, int n);
+
 /** 1 when each of the n children has GMAT_NO_UV (material.h) and gen, when given, is not a function of (u, v)
  * (its space, texture.h, is not GGENERATOR_SPACE_UV: a generator's space says what its value reads). */
 GENERIC_API GENERIC_NODISCARD int gnode_children_no_uv(GMaterial *const *children, int n, const GGenerator *gen);
