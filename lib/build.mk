@@ -130,3 +130,10 @@ lib: $(DECODER)
 $(DECODER): $(BUILD)/obj/lib/image/decoder/generic_decode.o $(LIBA) | $(OIIO_SO)
 	@mkdir -p $(dir $@)
 	$(CC) -o $@ $(filter %.o,$^) $(LIBA) $(LDFLAGS) $(DEPLIBS)
+
+# OpenEXRCore is not linked: lib/image/exr_core_lib.c loads it by its soname on the first OpenEXR file written in the
+# process (a program that writes none never maps it)
+EXRCORE_SONAME := $(shell objdump -p "$$($(CC) -print-file-name=libOpenEXRCore.so)" 2>/dev/null | \
+                    sed -n 's/^ *SONAME *//p')
+$(call objs_of,lib/image/exr_core_lib.o): \
+    CPPFLAGS += $(if $(EXRCORE_SONAME),-DGENERIC_EXRCORE_SONAME='"$(EXRCORE_SONAME)"')

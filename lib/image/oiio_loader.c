@@ -1,5 +1,6 @@
 /* oiio_loader.c - loads the OpenImageIO module (oiio_module.h) on first use, and the public image and texture
- * functions that go through it. PNG output goes through libpng (image_png.h) and needs no module.
+ * functions that go through it. PNG output goes through libpng (image_png.h) and OpenEXR output without spectra
+ * through OpenEXRCore (image_exr.h): neither needs the module.
  *
  * Where the module is looked for, in order: $GENERIC_OIIO_MODULE (a path; then nowhere else); beside the object
  * that holds this code (libgeneric.so, or the program it is linked into): DIR/generic/ and DIR/../lib/generic/;
@@ -7,6 +8,7 @@
  * (LD_LIBRARY_PATH, ld.so.cache). */
 #include "oiio_module.h"
 
+#include "image_exr.h"
 #include "image_png.h"
 #include "decode_isolated.h"
 #include "generic/services/spawn.h"
@@ -286,7 +288,7 @@ int gimage_check_output(const char *path, GError *err)
     if (!path || !*path)
         return gerror_set(err, G_ERR_INVALID, "no image file name given");
     int rc = gfile_check_output(path, err);
-    if (rc != G_OK || gimage_png_path(path))
+    if (rc != G_OK || gimage_png_path(path) || gimage_exr_path(path))
         return rc;
     const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
     if (!dot || (slash && dot < slash))
@@ -348,14 +350,18 @@ int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *
         const GOiioOps *o = goiio_ops(err);
         return o ? o->image_write(path, img, &o2, err) : G_ERR_IO;
     }
-    if (gimage_png_path(path)) {
-        if (opt && opt->spectra)
+    const int png = gimage_png_path(path), exr = gimage_exr_path(path) && !(opt && opt->spectra);
+    if (png || exr) { /* spectra go to OpenEXR through OpenImageIO */
+        if (png && opt && opt->spectra)
             return gerror_set(err, G_ERR_INVALID, "%s: only OpenEXR files store spectra, not PNG files", path);
         double exposure = opt ? opt->exposure : 0.0;
         if (!isfinite(exposure))
             return gerror_set(err, G_ERR_INVALID, "%s: exposure must be finite", path);
         int rc = gfile_check_output(path, err);
-        return rc != G_OK ? rc : gimage_png_write(path, img, exp2(exposure), err);
+        if (rc != G_OK)
+            return rc;
+        return png ? gimage_png_write(path, img, exp2(exposure), err)
+                   : gimage_exr_write(path, img, opt, exp2(exposure), err);
     }
     const GOiioOps *o = goiio_ops(err);
     return o ? o->image_write(path, img, opt, err) : G_ERR_IO;
