@@ -105,7 +105,8 @@ static int channel_index(const char *name, int channels)
     return -1;
 }
 
-/* Encodes the pixels a chunk of scanlines at a time, copied scaled into buf (lines rows). */
+/* Encodes the pixels a chunk of scanlines at a time, copied scaled into buf (lines rows). Unscaled values are copied
+ * as they are: every bit, a signalling NaN's too (a product would quiet it). */
 static exr_result_t write_chunks(const ExrCoreLib *api, exr_context_t ctx, const GImage *img, int y0, double scale,
                                  int lines, float *buf)
 {
@@ -119,7 +120,7 @@ static exr_result_t write_chunks(const ExrCoreLib *api, exr_context_t ctx, const
         const float *src = img->pixels + (size_t)y * stride;
         for (size_t i = 0; i < (size_t)n * stride; i += (size_t)ch)
             for (int k = 0; k < ch; k++)
-                buf[i + k] = k == alpha ? src[i + k] : (float)(src[i + k] * scale);
+                buf[i + k] = k == alpha || scale == 1.0 ? src[i + k] : (float)(src[i + k] * scale);
         exr_chunk_info_t info;
         rv = api->write_scanline_chunk_info(ctx, 0, y0 + y, &info);
         if (rv == EXR_ERR_SUCCESS)
