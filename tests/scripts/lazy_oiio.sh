@@ -1,10 +1,11 @@
 #!/bin/sh
 # lazy_oiio.sh BUILD - OpenImageIO is mapped only when an image needs it (lib/image/oiio_module.h):
-#   1. gtrace --help, gmat --help, gcolor list and a small render to PNG (libpng) never map libOpenImageIO
-#      (the dynamic loader's own record, LD_DEBUG=files), and the PNG is a valid 8-bit sRGB picture;
-#   2. the same render to EXR does map it (the check above can fail), and reads back;
-#   3. without the module (GENERIC_OIIO_MODULE naming a missing file, or a file that is not a module) the EXR
-#      render fails with a message naming libgeneric_oiio.so and leaves no output, while PNG still works;
+#   1. gtrace --help, gmat --help, gcolor list, a small render to PNG (libpng) and to EXR (OpenEXRCore, loaded on
+#      first use) never map libOpenImageIO (the dynamic loader's own record, LD_DEBUG=files); the PNG is a valid
+#      8-bit sRGB picture, the EXR holds the background's linear values, and only the EXR render maps OpenEXRCore;
+#   2. the same render to TIFF does map it (the check above can fail), and reads back;
+#   3. without the module (GENERIC_OIIO_MODULE naming a missing file, or a file that is not a module) the TIFF
+#      render fails with a message naming libgeneric_oiio.so and leaves no output, while PNG and EXR still work;
 #   4. an installed library (make install into a staging directory) finds its module and its image decoder in
 #      PREFIX/lib/generic/ (the read back below goes through the decoder process).
 set -u
@@ -32,7 +33,8 @@ light background { color rgb 0.2 0.3 0.4 }
 EOF2
 
 # ---- 1. no OpenImageIO without an image that needs it ----
-for c in "gtrace --help" "gmat --help" "gcolor list" "gtrace $TMP/s.scene -o $TMP/o.png -q"; do
+for c in "gtrace --help" "gmat --help" "gcolor list" "gtrace $TMP/s.scene -o $TMP/o.exr -q" \
+         "gtrace $TMP/s.scene -o $TMP/o.png -q"; do
     # shellcheck disable=SC2086
     set -- $c
     tool=$1
@@ -42,6 +44,10 @@ for c in "gtrace --help" "gmat --help" "gcolor list" "gtrace $TMP/s.scene -o $TM
     if grep -q 'libOpenImageIO' "$TMP/probe.objects"; then
         fail "$c maps OpenImageIO: $(grep libOpenImageIO "$TMP/probe.objects" | head -1)"
     fi
+    case $c in
+    *o.exr*) grep -q 'libOpenEXRCore' "$TMP/probe.objects" || fail "$c does not map OpenEXRCore (the check is blind)" ;;
+    *) ! grep -q 'libOpenEXRCore' "$TMP/probe.objects" || fail "$c maps OpenEXRCore" ;;
+    esac
 done
 n=$(wc -l < "$TMP/probe.objects")
 [ "$n" -le 20 ] || fail "a PNG render maps $n shared objects (expected at most 20)"
@@ -55,27 +61,35 @@ if command -v oiiotool > /dev/null; then
         fail "PNG background pixel $corner, expected the sRGB encoding of 0.2 0.3 0.4 (124 149 170)/255"
 fi
 
-# ---- 2. an EXR output maps it, and reads back ----
-maps exr "$GT" "$TMP/s.scene" -o "$TMP/o.exr" -q || fail "EXR render: exit status $?: $(cat "$TMP/exr.err")"
-grep -q 'libOpenImageIO' "$TMP/exr.objects" || fail "an EXR render does not map OpenImageIO (the check above is blind)"
-grep -q 'libgeneric_oiio.so' "$TMP/exr.objects" || fail "an EXR render does not load the module"
+# the EXR: the background's linear values
 if command -v oiiotool > /dev/null; then
     corner=$(oiiotool "$TMP/o.exr" --cut 1x1+0+0 --printstats 2>&1 | sed -n 's/.*Stats Avg: *\([0-9. ]*\)(float).*/\1/p')
     echo "$corner" | awk '{ d = ($1 - 0.2)^2 + ($2 - 0.3)^2 + ($3 - 0.4)^2; exit !(d < 1e-6) }' ||
         fail "EXR background pixel $corner, expected 0.2 0.3 0.4"
 fi
 
+# ---- 2. a TIFF output maps it, and reads back ----
+maps tif "$GT" "$TMP/s.scene" -o "$TMP/o.tif" -q || fail "TIFF render: exit status $?: $(cat "$TMP/tif.err")"
+grep -q 'libOpenImageIO' "$TMP/tif.objects" || fail "a TIFF render does not map OpenImageIO (the check above is blind)"
+grep -q 'libgeneric_oiio.so' "$TMP/tif.objects" || fail "a TIFF render does not load the module"
+if command -v oiiotool > /dev/null; then
+    oiiotool --info "$TMP/o.tif" 2>&1 | grep -Eq '8 x +6, 3 channel, uint8 tiff' ||
+        fail "the TIFF's header: $(oiiotool --info "$TMP/o.tif" 2>&1)"
+fi
+
 # ---- 3. a missing or broken module is a clear error, and PNG output does not need it ----
 printf 'not a shared object\n' > "$TMP/broken.so"
 for m in "$TMP/missing.so" "$TMP/broken.so"; do
-    GENERIC_OIIO_MODULE=$m "$GT" "$TMP/s.scene" -o "$TMP/m.exr" -q > "$TMP/m.err" 2>&1
+    GENERIC_OIIO_MODULE=$m "$GT" "$TMP/s.scene" -o "$TMP/m.tif" -q > "$TMP/m.err" 2>&1
     st=$?
-    [ $st -ne 0 ] || fail "EXR render without a module ($m) succeeded"
+    [ $st -ne 0 ] || fail "TIFF render without a module ($m) succeeded"
     grep -q 'libgeneric_oiio.so' "$TMP/m.err" || fail "no module ($m): message does not name it: $(cat "$TMP/m.err")"
     grep -q "$m" "$TMP/m.err" || fail "no module ($m): message does not say what was tried: $(cat "$TMP/m.err")"
-    [ ! -e "$TMP/m.exr" ] || fail "no module ($m): an output was left"
-    GENERIC_OIIO_MODULE=$m "$GT" "$TMP/s.scene" -o "$TMP/m.png" -q > "$TMP/m.err" 2>&1 ||
-        fail "PNG render without a module ($m) failed: $(cat "$TMP/m.err")"
+    [ ! -e "$TMP/m.tif" ] || fail "no module ($m): an output was left"
+    for ext in png exr; do
+        GENERIC_OIIO_MODULE=$m "$GT" "$TMP/s.scene" -o "$TMP/m.$ext" -q > "$TMP/m.err" 2>&1 ||
+            fail "$ext render without a module ($m) failed: $(cat "$TMP/m.err")"
+    done
 done
 
 # ---- 4. an installed library finds its installed module ----
@@ -119,6 +133,6 @@ else
 fi
 
 if [ $fails -eq 0 ]; then
-    echo "lazy_oiio: no OpenImageIO for --help, list or PNG output ($n shared objects for a render); EXR loads it; a missing module is a clear error; the installed library finds its module"
+    echo "lazy_oiio: no OpenImageIO for --help, list, PNG or EXR output ($n shared objects for a render); TIFF loads it; a missing module is a clear error; the installed library finds its module"
 fi
 [ $fails -eq 0 ]
