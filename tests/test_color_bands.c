@@ -2,7 +2,8 @@
  * every built-in model's bands partition its samples (the masks are disjoint unit masks summing to white),
  * the value of a dielectric's index in a band is the dispersion formula at the band's wavelength, and a model
  * that gives no band slots has one band that is everything. A class is asked its band count once, when its model is
- * created, and the kit's band value is the sample itself. */
+ * created, and the kit's band value is the sample itself. gcolor_band_peak gives what a loop over gcolor_band_value
+ * gives. */
 #include "generic/builtins.h"
 #include "generic/color.h"
 #include "generic/kit/spectral.h"
@@ -182,6 +183,73 @@ static void test_band_count_asked_once(void **state)
     gcolormodel_destroy(bi);
 }
 
+/* gcolor_band_peak's definition: the largest of 0 and the bands read one gcolor_band_value at a time, NAN at the
+ * first NAN read. */
+static double peak_by_loop(const GColor *c, int first, int step)
+{
+    double peak = 0.0;
+    for (int i = first; i < gcolormodel_band_count(c->model); i += step) {
+        double v = gcolor_band_value(c, i);
+        if (isnan(v))
+            return NAN;
+        peak = fmax(peak, v);
+    }
+    return peak;
+}
+
+/* A step of a 64-bit linear congruential generator: a number in [0, 1). */
+static double next_uniform(unsigned long long *state)
+{
+    *state = *state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return (double)(*state >> 11) / 9007199254740992.0;
+}
+
+/* Generated vectors of every built-in model (values in [-1, 2), some all negative, some with a NaN sample) and of a
+ * model whose bands are read through its masks: gcolor_band_peak equals the loop over every first band and step. */
+static void test_band_peak(void **state)
+{
+    (void)state;
+    const char *names[] = {"rgb", "spectrum9", "spectrum", "bispectral"};
+    unsigned long long rng = 12345;
+    for (int mi = 0; mi < 5; mi++) {
+        GColorModel *base = model(mi < 4 ? names[mi] : "rgb"), *m = base;
+        GColorModelClass masks_only = *base->cls;
+        masks_only.band_value = NULL; /* bands read through the masks (gcolor_band_value's general path) */
+        GError err;
+        if (mi == 4)
+            assert_int_equal(gcolormodel_create_class(&masks_only, NULL, &m, &err), G_OK);
+        GColor c;
+        assert_int_equal(gcolor_alloc(&c, m), G_OK);
+        int n = gcolormodel_band_count(m), compared = 0;
+        for (int trial = 0; trial < 40; trial++) {
+            double lo = trial % 5 == 1 ? -1.0 : -0.2; /* every fifth one all negative: a peak of 0 */
+            for (int k = 0; k < m->nvalues; k++)
+                c.v[k] = (float)(lo + (trial % 5 == 1 ? 0.9 : 2.2) * next_uniform(&rng));
+            if (trial % 7 == 3) /* a NaN sample somewhere */
+                c.v[(int)(next_uniform(&rng) * m->nvalues)] = NAN;
+            for (int first = 0; first <= n; first++)
+                for (int step = 1; step <= n + 1; step++) {
+                    double want = peak_by_loop(&c, first, step), got = gcolor_band_peak(&c, first, step);
+                    if (isnan(want))
+                        assert_true(isnan(got));
+                    else
+                        assert_true(got == want);
+                    compared += !isnan(want) && want > 0.0;
+                }
+        }
+        assert_true(compared > 0);
+        assert_true(gcolor_band_peak(&c, n, 1) == 0.0); /* no band read */
+        assert_true(isnan(gcolor_band_peak(&c, -1, 1)) && isnan(gcolor_band_peak(&c, 0, 0)));
+        assert_true(gcolor_band_peak(&c, 0, 2147483647) == peak_by_loop(&c, 0, n + 1)); /* one band: no overflow */
+        c.kind = GCOLOR_MATRIX;
+        assert_true(isnan(gcolor_band_peak(&c, 0, 1)));
+        gcolor_free(&c);
+        if (m != base)
+            gcolormodel_destroy(m);
+        gcolormodel_destroy(base);
+    }
+}
+
 int main(void)
 {
     if (generic_register_builtins(NULL) != G_OK)
@@ -191,6 +259,7 @@ int main(void)
         cmocka_unit_test(test_index_per_band),
         cmocka_unit_test(test_defaults),
         cmocka_unit_test(test_band_count_asked_once),
+        cmocka_unit_test(test_band_peak),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -290,6 +290,11 @@ GENERIC_API GENERIC_NODISCARD int gcolor_band_mask(GColor *out, int band);
 /** The value of the vector c in band `band` (the band's refraction index when c is an index); NAN for a
  * band out of range or a matrix. */
 GENERIC_API double gcolor_band_value(const GColor *c, int band);
+/** The largest of 0 and gcolor_band_value(c, b) over the bands b = first, first + step, first + 2 step, ... below
+ * gcolormodel_band_count (a path tracer's Russian roulette reads a spread of bands this way, in one call): 0 when
+ * no band is read (first at or past the count), NAN when one of them is NAN (a matrix, or c a vector of a model
+ * whose band_value gives one) or when first < 0 or step < 1. */
+GENERIC_API double gcolor_band_peak(const GColor *c, int first, int step);
 
 /** 1 when every sample is finite, 0 otherwise. */
 GENERIC_API GENERIC_NODISCARD int gcolor_is_finite(const GColor *c);

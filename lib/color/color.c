@@ -613,6 +613,30 @@ double gcolor_band_value(const GColor *c, int band)
     return band_value_by_mask(m, c, band);
 }
 
+double gcolor_band_peak(const GColor *c, int first, int step)
+{
+    int n = record_of(c->model)->bands;
+    double peak = 0.0;
+    if (first < 0 || step < 1)
+        return NAN;
+    if (c->kind == GCOLOR_VECTOR && c->model->cls->band_value == gspectral_band_value) { /* the samples themselves */
+        for (long i = first; i < n; i += step) {
+            double v = c->v[i];
+            if (isnan(v))
+                return NAN;
+            peak = v > peak ? v : peak;
+        }
+        return peak;
+    }
+    for (long i = first; i < n; i += step) {
+        double v = gcolor_band_value(c, (int)i);
+        if (isnan(v))
+            return NAN;
+        peak = v > peak ? v : peak;
+    }
+    return peak;
+}
+
 /* ---- range after conversion ---- */
 
 /* gcolormodel_rgb_range's measurement. */

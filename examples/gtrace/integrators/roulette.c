@@ -7,12 +7,6 @@
 double roulette_factor(const GColor *w)
 {
     int n = gcolormodel_band_count(w->model), step = (n + ROULETTE_PEAK_BANDS - 1) / ROULETTE_PEAK_BANDS;
-    double peak = 0.0;
-    for (int i = step / 2; i < n; i += step) {
-        double v = gcolor_band_value(w, i);
-        if (isnan(v))
-            return gcolor_brightness(w);
-        peak = fmax(peak, v);
-    }
-    return peak > 0.0 ? peak : gcolor_brightness(w); /* light only in bands not read: not lost */
+    double peak = gcolor_band_peak(w, step / 2, step);
+    return peak > 0.0 ? peak : gcolor_brightness(w); /* a NaN band, or light only in bands not read: not lost */
 }
