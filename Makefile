@@ -51,8 +51,9 @@ CFLAGS  += -std=c11 $(OPT) -g -fPIC -fopenmp $(WARN) $(SANFLAGS) $(VISIBILITY)
 CXXFLAGS += -std=c++17 $(OPT) -g -fPIC $(WARN) $(SANFLAGS) $(VISIBILITY) -fvisibility-inlines-hidden \
             $(shell pkg-config --cflags OpenImageIO 2>/dev/null)
 # The library itself needs no C++ and no OpenImageIO: the OpenImageIO shims (LIB_CXX) are the module OIIO_SO,
-# which the library dlopens on the first image read or write other than PNG output (lib/image/oiio_module.h); PNG
-# output goes through libpng.
+# which the library dlopens on the first image read or write other than PNG and OpenEXR output
+# (lib/image/oiio_module.h); PNG output goes through libpng, OpenEXR output through OpenEXRCore, which it dlopens on
+# the first EXR written (lib/image/exr_core_lib.c).
 DEPLIBS := -lpng -fopenmp -ldl -lpthread -lm
 # OpenColorIO (display transforms, lib/image/ocio_display.cpp) is part of the module: OpenImageIO links it already.
 OIIO_LIBS := $(shell pkg-config --libs OpenImageIO OpenColorIO 2>/dev/null) -lstdc++
