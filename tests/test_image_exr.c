@@ -237,6 +237,25 @@ static void test_failed_write_leaves_no_file(void **state)
         fail_msg("not the write's own failure: %s", err.message);
     assert_int_equal(access(path, F_OK), -1);
     assert_int_equal(rmdir(sub), 0); /* empty: no temporary left either */
+    assert_int_equal(mkdir(sub, 0700), 0);
+
+    /* the limit reached in the header, its first bytes or its chunk table: the library reports the failure while it
+     * holds its context's lock (a handler that asked the context for anything would wait for ever) */
+    const rlim_t early[] = {1, 8, 64, 300, 1000};
+    for (size_t k = 0; k < sizeof early / sizeof early[0]; k++) {
+        small.rlim_cur = early[k];
+        prev = signal(SIGXFSZ, SIG_IGN);
+        assert_int_equal(setrlimit(RLIMIT_FSIZE, &small), 0);
+        rc = gimage_write(path, &img, NULL, &err);
+        assert_int_equal(setrlimit(RLIMIT_FSIZE, &old), 0);
+        signal(SIGXFSZ, prev);
+        assert_int_equal(rc, G_ERR_IO);
+        if (!strstr(err.message, "big.exr"))
+            fail_msg("a failure at %ld bytes not named: %s", (long)early[k], err.message);
+        assert_int_equal(access(path, F_OK), -1);
+    }
+    assert_int_equal(rmdir(sub), 0);
+    small.rlim_cur = 16384;
 
     /* an existing file is kept as it was */
     assert_int_equal(mkdir(sub, 0700), 0);

@@ -43,7 +43,7 @@ static void load(void)
              FIND(h, l, get_scanlines_per_chunk) && FIND(h, l, write_scanline_chunk_info) &&
              FIND(h, l, encoding_initialize) && FIND(h, l, encoding_update) &&
              FIND(h, l, encoding_choose_default_routines) && FIND(h, l, encoding_run) &&
-             FIND(h, l, encoding_destroy) && FIND(h, l, finish) && FIND(h, l, get_user_data) &&
+             FIND(h, l, encoding_destroy) && FIND(h, l, finish) &&
              FIND(h, l, get_default_error_message);
     if (loaded)
         lib = l;

@@ -24,7 +24,6 @@ typedef struct ExrCoreLib {
     __typeof__(&exr_encoding_run) encoding_run;
     __typeof__(&exr_encoding_destroy) encoding_destroy;
     __typeof__(&exr_finish) finish;
-    __typeof__(&exr_get_user_data) get_user_data;
     __typeof__(&exr_get_default_error_message) get_default_error_message;
 } ExrCoreLib;
 

@@ -53,15 +53,18 @@ static int64_t sink_write(exr_const_context_t ctxt, void *user, const void *buff
     return (int64_t)n;
 }
 
+/* The sink of the write this thread is encoding: OpenEXRCore calls the error handler with the context's lock held,
+ * so the handler may not ask the context for its user data (exr_get_user_data takes that lock: a deadlock). */
+static _Thread_local Sink *current_sink;
+
 static void on_error(exr_const_context_t ctxt, exr_result_t code, const char *msg)
 {
-    const ExrCoreLib *api = exr_core_lib("", NULL); /* loaded: the context exists */
-    void *user = NULL;
-    if (!api || api->get_user_data(ctxt, &user) != EXR_ERR_SUCCESS || !user)
+    (void)ctxt;
+    Sink *s = current_sink;
+    if (!s || s->message[0])
         return;
-    Sink *s = user;
-    if (!s->message[0])
-        snprintf(s->message, sizeof s->message, "%s", msg ? msg : api->get_default_error_message(code));
+    const ExrCoreLib *api = exr_core_lib("", NULL); /* loaded: the context exists */
+    snprintf(s->message, sizeof s->message, "%s", msg ? msg : api ? api->get_default_error_message(code) : "error");
 }
 
 /* The channel names, by channel count, as OpenImageIO names them (image.h's layouts). */
@@ -158,6 +161,7 @@ static int encode_exr(const ExrCoreLib *api, Sink *sink, const char *path, const
     init.user_data = sink;
     init.write_fn = sink_write;
     exr_context_t ctx = NULL;
+    current_sink = sink;
     exr_result_t rv = api->start_write(&ctx, path, EXR_WRITE_FILE_DIRECTLY, &init);
     if (rv == EXR_ERR_SUCCESS)
         rv = write_header(api, ctx, img, opt);
@@ -175,6 +179,7 @@ static int encode_exr(const ExrCoreLib *api, Sink *sink, const char *path, const
     }
     gmem_free(buf);
     exr_result_t rf = ctx ? api->finish(&ctx) : EXR_ERR_SUCCESS; /* writes the chunks' offsets */
+    current_sink = NULL;
     if (rv == EXR_ERR_SUCCESS)
         rv = rf;
     if (rv == EXR_ERR_OUT_OF_MEMORY)
