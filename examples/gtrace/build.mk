@@ -77,7 +77,11 @@ bench-lights: $(BUILD)/bin/gtrace
 .PHONY: bench-caustics
 bench-caustics: $(BUILD)/bin/gtrace $(BUILD)/bin/gprobe
 	@bench/caustics.sh $(BUILD)
-bench: bench-pov bench-dispersion bench-path bench-mpi bench-emissive bench-caustics bench-lights
+# the spectrum model's cost against rgb's over grids of 9 to 201 samples (bench/grid_ratios.sh)
+.PHONY: bench-grid
+bench-grid: $(BUILD)/bin/gtrace
+	@bench/grid_ratios.sh 5 $(BUILD)/bin/gtrace
+bench: bench-pov bench-dispersion bench-path bench-mpi bench-emissive bench-caustics bench-lights bench-grid
 .PHONY: bench-scale
 bench-scale: $(BUILD)/bin/gtrace $(BUILD)/bench/runstat
 	@bench/scale.sh $(BUILD)
