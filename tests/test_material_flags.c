@@ -133,6 +133,21 @@ static void plain_nodes(GMaterial *a, GMaterial *b, GMaterial *c, CountGen *g, G
     assert_int_equal(gnode_spline_create(inner, 2, &g->base, GSPLINE_LINEAR, &n[7], &err), G_OK);
 }
 
+/* Releases, parents before children, the nm nodes m[nm - 1] down to m[0] a test made over plain_nodes' (m may be
+ * NULL when nm is 0), then plain_nodes' n[7] down to n[0], the lamberts a, b and c, and the generator g. */
+static void release_plain_nodes(GMaterial **m, int nm, GMaterial *n[8], GMaterial *a, GMaterial *b, GMaterial *c,
+                                CountGen *g)
+{
+    for (int i = nm - 1; i >= 0; i--)
+        gmaterial_unref(m[i]);
+    for (int i = 7; i >= 0; i--)
+        gmaterial_unref(n[i]);
+    gmaterial_unref(a);
+    gmaterial_unref(b);
+    gmaterial_unref(c);
+    ggenerator_unref(&g->base);
+}
+
 /* Nodes over lamberts have both bits, and their class's own slots agree: black emission, opaque. */
 static void test_nodes_of_plain_leaves(void **state)
 {
@@ -154,12 +169,7 @@ static void test_nodes_of_plain_leaves(void **state)
         assert_int_equal(n[i]->cls->emission(n[i], &f->sp, gvec3(0, 0, 1), &f->c), G_OK);
         assert_true(is_black(&f->c));
     }
-    for (int i = 7; i >= 0; i--)
-        gmaterial_unref(n[i]);
-    gmaterial_unref(a);
-    gmaterial_unref(b);
-    gmaterial_unref(c);
-    ggenerator_unref(&g->base);
+    release_plain_nodes(NULL, 0, n, a, b, c, g);
 }
 
 /* A node with a glass child has no GMAT_OPAQUE anywhere up the tree, and is transparent where the generator
@@ -189,15 +199,8 @@ static void test_nodes_over_glass(void **state)
     GSurfPoint fresh;
     plane_point(&fresh, f->rgb, f->scratch, 0.3, 0.4); /* no cached generator value */
     assert_int_equal(gmaterial_opaque(m[0], &fresh), 1);
-    for (int i = 3; i >= 0; i--)
-        gmaterial_unref(m[i]);
-    for (int i = 7; i >= 0; i--)
-        gmaterial_unref(n[i]);
-    gmaterial_unref(a);
-    gmaterial_unref(b);
-    gmaterial_unref(c);
+    release_plain_nodes(m, 4, n, a, b, c, g);
     gmaterial_unref(glass);
-    ggenerator_unref(&g->base);
 }
 
 /* Reads the three channels of an rgb light. */
@@ -451,15 +454,8 @@ static void test_normal_bit_of_nodes(void **state)
     GVec3 tilted = gsurfpoint_normal(&sp);
     assert_int_equal(tilt_calls, 1);
     assert_false(same_dir(tilted, sp.geometric_normal));
-    for (int i = 4; i >= 0; i--)
-        gmaterial_unref(m[i]);
-    for (int i = 7; i >= 0; i--)
-        gmaterial_unref(n[i]);
-    gmaterial_unref(a);
-    gmaterial_unref(b);
-    gmaterial_unref(c);
+    release_plain_nodes(m, 5, n, a, b, c, g);
     gmaterial_unref(t);
-    ggenerator_unref(&g->base);
 }
 
 /* With the bit set by hand, gmaterial_normal and gsurfpoint_normal answer the geometric normal without calling the
@@ -570,17 +566,10 @@ static void test_no_ideal_bit(void **state)
         }
     }
     gcolor_free(&ri);
-    for (int i = 2; i >= 0; i--)
-        gmaterial_unref(m[i]);
-    for (int i = 7; i >= 0; i--)
-        gmaterial_unref(n[i]);
-    gmaterial_unref(a);
-    gmaterial_unref(b);
-    gmaterial_unref(c);
+    release_plain_nodes(m, 3, n, a, b, c, g);
     gmaterial_unref(e);
     gmaterial_unref(mirror);
     gmaterial_unref(glass);
-    ggenerator_unref(&g->base);
 }
 
 /* The header grew, so the interface version rose to 4: a class of version 3 is refused, naming both. */

@@ -65,6 +65,19 @@ static double over_places(GmatContext *ctx, const GmatPlace *places, int nplaces
     return acc;
 }
 
+/* Measures `measure` at every place (over_places, with `sum`) and reports the result as `property` against tol, with
+ * the detail `format` given the number of the class's calls (its one conversion, %d). */
+static void report_over_places(GmatContext *ctx, const GmatPlace *places, int nplaces, PointMeasure measure, int sum,
+                               GmatReportFn report, void *checker, const char *property, double tol,
+                               const char *format)
+{
+    int calls;
+    double value = over_places(ctx, places, nplaces, measure, sum, &calls);
+    char detail[240];
+    snprintf(detail, sizeof detail, format, calls);
+    report(checker, property, value, tol, detail);
+}
+
 /* The largest |value| of the class's own emission over the finite check's directions (a failed call: infinite). */
 static double emission_at(GmatContext *ctx, GSurfPoint *sp, int below, int *calls)
 {
@@ -96,12 +109,8 @@ void gmat_check_no_emission(GmatContext *ctx, const GmatPlace *places, int nplac
                                   : "(GMAT_NO_EMISSION set, no emission slot: black, the default)");
         return;
     }
-    int calls;
-    double worst = over_places(ctx, places, nplaces, emission_at, 0, &calls);
-    char detail[200];
-    snprintf(detail, sizeof detail, "(GMAT_NO_EMISSION set: largest |value| of the class's own emission, %d calls;"
-             " must be black)", calls);
-    report(checker, "no-emission", worst, 0.0, detail);
+    report_over_places(ctx, places, nplaces, emission_at, 0, report, checker, "no-emission", 0.0,
+                       "(GMAT_NO_EMISSION set: largest |value| of the class's own emission, %d calls; must be black)");
 }
 
 /* 1 when the class's own opaque slot does not say 1 at sp. */
@@ -122,12 +131,8 @@ void gmat_check_opaque_flag(GmatContext *ctx, const GmatPlace *places, int nplac
                                                : "(GMAT_OPAQUE set, no opaque slot: opaque, the default)");
         return;
     }
-    int calls;
-    double wrong = over_places(ctx, places, nplaces, not_opaque_at, 1, &calls);
-    char detail[200];
-    snprintf(detail, sizeof detail, "(GMAT_OPAQUE set: calls of the class's own opaque slot that did not say 1, of %d)",
-             calls);
-    report(checker, "opaque-flag", wrong, 0.0, detail);
+    report_over_places(ctx, places, nplaces, not_opaque_at, 1, report, checker, "opaque-flag", 0.0,
+                       "(GMAT_OPAQUE set: calls of the class's own opaque slot that did not say 1, of %d)");
 }
 
 /* The distance of the class's own normal at sp from the geometric normal (a failed call: infinite). */
@@ -154,13 +159,9 @@ void gmat_check_geometric_normal(GmatContext *ctx, const GmatPlace *places, int 
                    : "(GMAT_GEOMETRIC_NORMAL set, no normal slot: the geometric normal, the default)");
         return;
     }
-    int calls;
-    double worst = over_places(ctx, places, nplaces, normal_off_at, 0, &calls);
-    char detail[200];
-    snprintf(detail, sizeof detail,
-             "(GMAT_GEOMETRIC_NORMAL set: largest distance of the class's own normal from the geometric one, %d calls)",
-             calls);
-    report(checker, "geometric-normal", worst, tol, detail);
+    report_over_places(ctx, places, nplaces, normal_off_at, 0, report, checker, "geometric-normal", tol,
+                       "(GMAT_GEOMETRIC_NORMAL set: largest distance of the class's own normal from the geometric one, "
+                       "%d calls)");
 }
 
 /* ---- lambertian: reflection against diffuse * light * cos / pi ---- */
@@ -231,13 +232,9 @@ void gmat_check_lambertian(GmatContext *ctx, const GmatPlace *places, int nplace
         report(checker, "lambertian", 0.0, TOL_LAMBERTIAN, "(GMAT_LAMBERTIAN not set: reflection is asked per light)");
         return;
     }
-    int calls;
-    double worst = over_places(ctx, places, nplaces, lambertian_at, 0, &calls);
-    char detail[200];
-    snprintf(detail, sizeof detail,
-             "(GMAT_LAMBERTIAN set: |reflection - diffuse * light * cos / pi| / max, %d random pairs and lights)",
-             calls);
-    report(checker, "lambertian", worst, TOL_LAMBERTIAN, detail);
+    report_over_places(ctx, places, nplaces, lambertian_at, 0, report, checker, "lambertian", TOL_LAMBERTIAN,
+                       "(GMAT_LAMBERTIAN set: |reflection - diffuse * light * cos / pi| / max, %d random pairs and "
+                       "lights)");
 }
 
 /* ---- diagonal: the pass-on of a light against the pass-on of white times that light ---- */
@@ -359,14 +356,9 @@ void gmat_check_diagonal(GmatContext *ctx, const GmatPlace *places, int nplaces,
                "(GMAT_DIAGONAL not set: reflection and refraction are asked with each light)");
         return;
     }
-    int calls = 0;
-    double worst = over_places(ctx, places, nplaces, diagonal_at, 0, &calls);
-    char detail[240];
-    snprintf(detail, sizeof detail,
-             "(GMAT_DIAGONAL set: |pass-on of a light - pass-on of white * light| / max, reflection and refraction"
-             " at indices 1 and 1.5, %d calls)",
-             calls);
-    report(checker, "diagonal", worst, TOL_DIAGONAL, detail);
+    report_over_places(ctx, places, nplaces, diagonal_at, 0, report, checker, "diagonal", TOL_DIAGONAL,
+                       "(GMAT_DIAGONAL set: |pass-on of a light - pass-on of white * light| / max, reflection and "
+                       "refraction at indices 1 and 1.5, %d calls)");
 }
 
 /* How many calls of the class's own reflection_dir and refraction_dir slots at sp did not say 0, over the finite
@@ -407,11 +399,7 @@ void gmat_check_no_ideal(GmatContext *ctx, const GmatPlace *places, int nplaces,
                         : "(GMAT_NO_IDEAL set, no direction slots: not valid, the default)");
         return;
     }
-    int calls;
-    double wrong = over_places(ctx, places, nplaces, ideal_rays_at, 1, &calls);
-    char detail[200];
-    snprintf(detail, sizeof detail,
-             "(GMAT_NO_IDEAL set: calls of the class's own reflection_dir and refraction_dir that did not say 0, of "
-             "%d)", calls);
-    report(checker, "no-ideal", wrong, 0.0, detail);
+    report_over_places(ctx, places, nplaces, ideal_rays_at, 1, report, checker, "no-ideal", 0.0,
+                       "(GMAT_NO_IDEAL set: calls of the class's own reflection_dir and refraction_dir that did not "
+                       "say 0, of %d)");
 }

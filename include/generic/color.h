@@ -137,10 +137,10 @@ struct GColorModel {
 /** The vtable of a colour model. Required: init, black, add, mul, scale, div, pow, to_nm, from_nm. Optional (NULL
  * = go through the nm spectrum): fini, to_xyz, from_rgb, from_reradiation. Optional (NULL = Y of to_xyz as a
  * reflectance, the definition below): brightness.
- * Optional (NULL = the default of lib/color/color.c, which reads a vector as nvalues independent samples, as add and
- * scale treat it): fill, exp_scaled, axpy. A model whose vectors are not plain samples, or that has matrices, gives
- * its own. Optional (NULL = one band, no dispersion): band_count, band_mask, band_value. Operations get valid operands
- * of this model (the dispatch checks models); `out` may alias them. */
+ * Optional (NULL = the defaults of lib/color/color_vector_ops.c and color.c, which read a vector as nvalues independent
+ * samples, as add and scale treat it): fill, axpy, exp_scaled. A model whose vectors are not plain samples, or that
+ * has matrices, gives its own. Optional (NULL = one band, no dispersion): band_count, band_mask, band_value.
+ * Operations get valid operands of this model (the dispatch checks models); `out` may alias them. */
 struct GColorModelClass {
     int abi_version;         /**< GCOLOR_ABI_VERSION */
     const char *name;        /**< type keyword, e.g. "spectrum" */

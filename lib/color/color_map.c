@@ -5,7 +5,7 @@
 #include <stddef.h>
 
 /* 1 when the model's class leaves fill to the library, which then reads its vectors as nvalues plain samples (the
- * rule of lib/color/color.c's defaults). */
+ * rule of lib/color/color_vector_ops.c's defaults). */
 static int plain_samples(const GColorModel *m) { return m->cls->fill == NULL; }
 
 /* The floats of operand x as a vector: its own when it is one, else its plain part (the model's pow(x, 1)) in

@@ -1,9 +1,9 @@
 /* color_shortcuts.c - what compositions of the generic colour operations give, found with less work for the
  * vectors of models that the library reads as plain samples (their class has no fill of its own, as lib/color/color.c's
  * defaults decide): gcolor_is_black (brightness == 0) and gcolor_mul_scaled (mul, then scale). Other models and
- * matrices take the composition itself. Two bodies as in lib/color/color.c: on 4-float vectors and, compiled for
- * AVX2, on 8-float vectors (whole blocks as straight-line code, GSPECTRAL_EACH_BLOCK8 of spectral_kernels8.h),
- * with the same results. */
+ * matrices take the composition itself. Two bodies as in lib/color/color_vector_ops.c: on 4-float vectors and,
+ * compiled for AVX2, on 8-float vectors (whole blocks as straight-line code, GSPECTRAL_EACH_BLOCK8 of
+ * spectral_kernels8.h), with the same results. */
 #include "generic/color.h"
 #include "generic/kit/spectral_kernels.h"
 

@@ -17,7 +17,7 @@
  *
  * Lights. When the scene's light table (lights/light_pick.h: the lights that send light and the glowing geometry as one
  * entry) holds at most LIGHT_PICK_EVERY_MAX entries, NEE takes one sample of every light source at each vertex
- * (direct_light_every; `make bench-lights` measured it ahead of one chosen light in time to equal RMSE up to that
+ * (path_direct_light_every; `make bench-lights` measured it ahead of one chosen light in time to equal RMSE up to that
  * count). With more, NEE takes one light source a vertex, chosen by power from the table (an alias table: constant time
  * whatever their number), and divides its estimate by the probability of the choice; the density a light's MIS weight
  * uses, on either side, is its sampling density times that probability (1 when every light is sampled). A delta light,
@@ -77,15 +77,16 @@
  * glowing geometry, whose primitive takes what is left of the choice's number, or the direction drawn from a reference
  * probe), its material sample, its wavelength group and its roulette, are dimensions of the camera sample's point in
  * the pixel's shuffled, Owen-scrambled Sobol sequence (two groups of four a vertex, after the camera's group: see SLOT_
- * below). The probe's direction from the sequence: on bench/scenes/cycles_probe.scene at 64 spp, RMSE 0.0097 against a
- * 4096-spp reference where the generator's numbers gave 0.0324. The others (media, the lights after the first when
- * every light is sampled) and, with SAMPLER_INDEPENDENT, all of them come from the thread's PCG32 generator
+ * in path_lights.h). The probe's direction from the sequence: on bench/scenes/cycles_probe.scene at 64 spp, RMSE 0.0097
+ * against a 4096-spp reference where the generator's numbers gave 0.0324. The others (media, the lights after the first
+ * when every light is sampled) and, with SAMPLER_INDEPENDENT, all of them come from the thread's PCG32 generator
  * (TraceCtx.rng, which lights.c and probe_sample.c draw from too), re-seeded for each path from the pixel's index and
  * the sample's index and restored afterwards. Either way a number depends on the pixel, the sample and its use only, so
  * the image does not depend on the thread count, crops or tile order. Colours only through gcolor_*, materials only
  * through gmaterial_*; temporaries live on the thread's scratch arena and are released at every level: no allocation
  * per ray. */
 #include "path.h"
+#include "path_lights.h"
 #include "bands.h"
 #include "scene/accel.h"
 #include "lights/emissive.h"
@@ -95,283 +96,9 @@
 #include "medium_light.h"
 #include "roulette.h"
 #include "media/medium.h"
-#include "scene/ies.h"
 #include "trace/sampler.h"
 
 #include <math.h>
-
-typedef struct PathCtx {
-    TraceCtx *c;
-    const Light *env_light; /**< the reference probe light that samples the background probe (NULL: none) */
-    double env_pick;        /**< the probability that next-event estimation chooses env_light */
-    int env_in_lights;      /**< the background probe's light is carried by its technique's directional lights */
-    int scattered;          /**< the current path has had a non-delta bounce (it sees the ambient light) */
-    int from_medium;        /**< set for the ray a medium vertex traces next (read and cleared by path_radiance):
-                             * the probe was not sampled there, so the background it meets counts fully */
-    int sobol;              /**< the path's own numbers come from the sample point (SAMPLER_SOBOL) */
-    int point_lights;       /**< the scene has point, spot or IES lights (equiangular sampling in media serves them) */
-    SamplePoint point;      /**< the camera sample's point in the pixel's sequence */
-    SampleGroup group;      /**< its group used last (group 0, the camera's, is never used here: none yet) */
-} PathCtx;
-
-/* What each of a vertex's sample dimensions is for: two groups of four a vertex, after the camera's group (the pixel
- * position and the lens). The pairs that matter most lie in a group's first two dimensions, whose points are
- * stratified in 2D (a (0,m,2)-net); picks and Russian roulette take the others. */
-enum {
-    SLOT_LIGHT_U,    /**< the light sample's point on an area light or glowing primitive, or a probe's direction */
-    SLOT_LIGHT_V,
-    SLOT_LIGHT_PICK, /**< the light chosen by power (light_pick.h), then the glowing primitive */
-    SLOT_DELTA_PICK, /**< the delta light kept among the candidates (delta_choice) */
-    SLOT_BSDF_U, /**< the material's sampled direction */
-    SLOT_BSDF_V,
-    SLOT_ROULETTE, /**< drawn after the material's sample: the same group (PathCtx.group keeps one) */
-    SLOT_BAND,     /**< the wavelength group of a dispersive refraction */
-    SLOTS_PER_VERTEX
-};
-
-#define CHECK(expr)                                                                                                    \
-    do {                                                                                                               \
-        int rc_ = (expr);                                                                                              \
-        if (rc_ < 0) {                                                                                                 \
-            rc = rc_;                                                                                                  \
-            goto done;                                                                                                 \
-        }                                                                                                              \
-    } while (0)
-
-/* The path's random numbers: the thread's generator, seeded for this camera sample by path_trace. */
-static double uniform(PathCtx *p) { return rng_next(&p->c->rng); }
-
-/* The number for `slot` of the vertex at `depth` (0: the camera ray's hit): the sample point's dimension with the
- * Sobol sampler, else the generator's next number. */
-static double vertex_uniform(PathCtx *p, int depth, int slot)
-{
-    if (!p->sobol)
-        return uniform(p);
-    uint32_t dim = (uint32_t)(SAMPLER_GROUP_DIMS + depth * SLOTS_PER_VERTEX + slot);
-    if (p->group.group != dim / SAMPLER_GROUP_DIMS)
-        p->group = sample_group(&p->point, dim / SAMPLER_GROUP_DIMS);
-    return sample_group_value(&p->group, (int)(dim % SAMPLER_GROUP_DIMS));
-}
-
-/* Candidates a vertex weighs when NEE has chosen a delta light among more (see delta_choice). */
-#define NEE_DELTA_CANDIDATES 8
-
-/* The guide to delta light entry k's light at x (facing: the surface's side; opaque: its back gets none) that
- * delta_choice draws by: the brightness of its colour times its intensity towards x over the squared distance (a
- * directional light's irradiance) times the cosine on an opaque surface; no shadows. 0 exactly where light_shade
- * adds nothing for want of light or by the cosine. */
-static double delta_guide(const LightPick *lp, int k, GVec3 x, GVec3 facing, int opaque)
-{
-    const Light *l = lp->lights[k];
-    GVec3 in;
-    double g = lp->bright[k];
-    if (l->kind == LIGHT_DIRECTIONAL) {
-        in = gvec3_neg(l->direction);
-    } else {
-        GVec3 to = gvec3_sub(l->position, x);
-        double d2 = gvec3_dot(to, to);
-        if (!(d2 > 0.0))
-            return 0.0;
-        in = gvec3_scale(to, 1.0 / sqrt(d2));
-        g /= d2;
-        if (l->kind == LIGHT_SPOT)
-            g *= light_spot_factor(l, in);
-        else if (l->kind == LIGHT_IES)
-            g *= ies_candela_dir(l->ies, gvec3_neg(in), l->direction, l->along, l->third);
-    }
-    if (opaque)
-        g *= fmax(0.0, gvec3_dot(in, facing));
-    return g > 0.0 && isfinite(g) ? g : 0.0;
-}
-
-/* Once the table has chosen a delta light (entry k0, with the delta lights' share lp->delta_prob), the one to shade:
- * with at most NEE_DELTA_CANDIDATES delta lights, one of them all drawn by its delta_guide at x; with more, resampled
- * importance sampling (Talbot, Cline and Egbert 2005): k0 and NEE_DELTA_CANDIDATES - 1 more drawn by power from the
- * delta lights' table (the generator's numbers), one of them kept by guide over power. u makes the last choice. The
- * entry kept, and into *pick the factor its light is divided by (the delta lights' share times the kept one's
- * density, or for the resampled choice its guide times the count over the sum of the candidates' guide over power);
- * -1 when every guide is 0 (no delta light reaches x). */
-static int delta_choice(PathCtx *p, const LightPick *lp, int k0, GVec3 x, GVec3 facing, int opaque, double u,
-                        double *pick)
-{
-    int cand[NEE_DELTA_CANDIDATES], m = lp->ndelta <= NEE_DELTA_CANDIDATES ? lp->ndelta : NEE_DELTA_CANDIDATES;
-    int every = lp->ndelta <= NEE_DELTA_CANDIDATES;
-    double w[NEE_DELTA_CANDIDATES], g[NEE_DELTA_CANDIDATES], sum = 0.0;
-    for (int i = 0; i < m; i++) {
-        cand[i] = every ? lp->delta[i] : i == 0 ? k0 : light_pick_delta(lp, uniform(p));
-        g[i] = delta_guide(lp, cand[i], x, facing, opaque);
-        w[i] = every ? g[i] : g[i] * lp->delta_prob / lp->prob[cand[i]];
-        sum += w[i];
-    }
-    if (!(sum > 0.0) || !isfinite(sum))
-        return -1;
-    double t = u * sum;
-    int i = 0;
-    while (i < m - 1 && (t >= w[i] || !(w[i] > 0.0))) {
-        t -= w[i];
-        i++;
-    }
-    if (!(w[i] > 0.0)) /* rounding ran past the last candidate that counts */
-        while (i > 0 && !(w[i] > 0.0))
-            i--;
-    *pick = every ? lp->delta_prob * g[i] / sum : lp->delta_prob * g[i] * m / sum;
-    return cand[i];
-}
-
-/* Adds to out the direct light at sp, the vertex at `depth`, from every light source, reflected towards to_viewer
- * (NEE, when the table holds few entries: light_pick_nee_every). The first sphere or rectangle light (else the glowing
- * geometry) takes the vertex's light dimensions, the others the generator's numbers. *unset: out holds nothing yet
- * and stands for black (LightTmp.unset): the first light is written to it, and *unset cleared. */
-static int direct_light_every(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 to_viewer,
-                              int opaque, const GColor *ri, int depth, GColor *out, int *unset)
-{
-    int slots_free = 1;
-    TraceCtx *c = p->c;
-    const Scene *s = c->scene;
-    const GMaterial *m = sp->material;
-    GScratchMark mark = gscratch_mark(c->scratch);
-    LightTmp lt;
-    GColor L;
-    int rc = G_OK;
-    CHECK(light_temps(c, &lt));
-    if (c->emissive) /* the glowing geometry's radiance (an area light's is its colour, read where it is) */
-        CHECK(gcolor_scratch(&L, s->model, c->scratch));
-    lt.unset = *unset;
-    light_gather(sp, &lt); /* a Lambertian material: asked once for all samples, MIS weights in their light */
-    for (int i = 0; i < s->nlights; i++) {
-        const Light *l = s->lights[i];
-        lt.blocked = 0;
-        if (l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT || l->kind == LIGHT_DIRECTIONAL || l->kind == LIGHT_IES) {
-            CHECK(light_shade(c, l, sp, facing, media, to_viewer, opaque, &lt, out));
-            continue;
-        }
-        lt.blocked = 1; /* material sampling reaches these lights: light through glass is a caustic */
-        if (l->kind != LIGHT_SPHERE && l->kind != LIGHT_RECT && l->kind != LIGHT_PROBE)
-            continue;
-        double u[2];
-        if (slots_free) {
-            u[0] = vertex_uniform(p, depth, SLOT_LIGHT_U);
-            u[1] = vertex_uniform(p, depth, SLOT_LIGHT_V);
-            slots_free = 0;
-        } else {
-            u[0] = uniform(p);
-            u[1] = uniform(p);
-        }
-        if (l->kind == LIGHT_PROBE) { /* the reference's estimator with one direction (a basis: not used) */
-            CHECK(probe_light_nee(c, l, sp, facing, media, to_viewer, opaque, 1, u, l == p->env_light ? ri : NULL,
-                                  1.0, &lt, out));
-            continue;
-        }
-        GVec3 in;
-        double dist, pdf_l;
-        int got; /* the radiance is the light's colour, read where it is */
-        CHECK(got = path_light_direction_at(l, sp->point, u[0], u[1], &in, &dist, &pdf_l));
-        if (!got || (opaque && gvec3_dot(in, facing) <= 0.0))
-            continue;
-        double w = mis_power(pdf_l, gmaterial_pdf(m, sp, in, to_viewer, ri));
-        if (w > 0.0)
-            CHECK(sample_light(c, sp, facing, media, in, dist, &l->color, w / pdf_l, to_viewer, &lt, out));
-    }
-    if (c->emissive) { /* glowing geometry: one point of one primitive, chosen by power */
-        GVec3 in, normal;
-        double dist, pdf_l, u0, u1, u2;
-        int got;
-        if (slots_free) {
-            u0 = vertex_uniform(p, depth, SLOT_LIGHT_PICK);
-            u1 = vertex_uniform(p, depth, SLOT_LIGHT_U);
-            u2 = vertex_uniform(p, depth, SLOT_LIGHT_V);
-        } else {
-            u0 = uniform(p);
-            u1 = uniform(p);
-            u2 = uniform(p);
-        }
-        lt.blocked = 1;
-        CHECK(got = emissive_sample(c, c->emissive, sp->point, u0, u1, u2, &in, &dist, &normal, &pdf_l, &L));
-        if (got && !(opaque && gvec3_dot(in, facing) <= 0.0)) {
-            double w = mis_power(pdf_l, gmaterial_pdf(m, sp, in, to_viewer, ri));
-            if (w > 0.0)
-                CHECK(sample_light(c, sp, facing, media, in, emissive_shadow_reach(sp->point, facing, in, dist, normal),
-                                   &L, w / pdf_l, to_viewer, &lt, out));
-        }
-    }
-    CHECK(light_gather_finish(sp, &lt, out));
-    *unset = lt.unset;
-done:
-    gscratch_release(c->scratch, mark);
-    return rc;
-}
-
-/* Adds to out the direct light at sp, the vertex at `depth`, reflected towards to_viewer (NEE, when the table holds
- * many entries): one light source chosen by power from the scene's table (lights/light_pick.h), its estimate divided
- * by the probability of the choice. The choice takes the vertex's pick dimension (none when the table has one entry),
- * a sphere or rectangle light or the glowing geometry its point dimensions, the glowing geometry's primitive what is
- * left of the pick's number; a delta light draws nothing, a probe the generator's numbers. */
-static int direct_light(PathCtx *p, GSurfPoint *sp, GVec3 facing, const Media *media, GVec3 to_viewer, int opaque,
-                        const GColor *ri, int depth, GColor *out, int *unset)
-{
-    TraceCtx *c = p->c;
-    const LightPick *lp = c->pick;
-    const Scene *s = c->scene;
-    const GMaterial *m = sp->material;
-    double pick, u_rest = 0.5, u = lp->n == 1 && lp->lights[0] ? 0.5 : vertex_uniform(p, depth, SLOT_LIGHT_PICK);
-    int k = light_pick_sample(lp, u, &pick, &u_rest);
-    if (k >= 0 && lp->ndelta > 1 && light_pick_is_delta(lp, k)) /* which delta light, by its light here */
-        k = delta_choice(p, lp, k, sp->point, facing, opaque, vertex_uniform(p, depth, SLOT_DELTA_PICK), &pick);
-    if (k < 0 || !(pick > 0.0))
-        return G_OK;
-    const Light *l = lp->lights[k];
-    GScratchMark mark = gscratch_mark(c->scratch);
-    LightTmp lt;
-    GColor L, acc, *sum = out; /* the chosen light's estimate, before the division by pick (out itself when 1) */
-    int rc = G_OK;
-    CHECK(light_temps(c, &lt));
-    if (!l) /* the glowing geometry's radiance (an area light's is its colour, read where it is) */
-        CHECK(gcolor_scratch(&L, s->model, c->scratch));
-    if (pick != 1.0) {
-        CHECK(gcolor_scratch(&acc, s->model, c->scratch));
-        sum = &acc;
-        if (*unset) { /* out is added to below */
-            gcolor_black(out);
-            *unset = 0;
-        }
-    }
-    lt.unset = *unset;
-    light_gather(sp, &lt); /* a Lambertian material: asked once, the MIS weight in the light */
-    if (l && (l->kind == LIGHT_POINT || l->kind == LIGHT_SPOT || l->kind == LIGHT_DIRECTIONAL ||
-              l->kind == LIGHT_IES)) {
-        CHECK(light_shade(c, l, sp, facing, media, to_viewer, opaque, &lt, sum));
-    } else if (l && l->kind == LIGHT_PROBE) { /* the reference's estimator with one direction */
-        lt.blocked = 1; /* material sampling reaches it: light through glass is a caustic */
-        double u[2] = {vertex_uniform(p, depth, SLOT_LIGHT_U), vertex_uniform(p, depth, SLOT_LIGHT_V)};
-        CHECK(probe_light_nee(c, l, sp, facing, media, to_viewer, opaque, 1, u, l == p->env_light ? ri : NULL, pick,
-                              &lt, sum));
-    } else { /* a sphere or rectangle light, or one point of one glowing primitive */
-        GVec3 in, normal;
-        double dist, pdf_l, u1 = vertex_uniform(p, depth, SLOT_LIGHT_U), u2 = vertex_uniform(p, depth, SLOT_LIGHT_V);
-        int got;
-        lt.blocked = 1;
-        if (l) /* the radiance is the light's colour, read where it is */
-            CHECK(got = path_light_direction_at(l, sp->point, u1, u2, &in, &dist, &pdf_l));
-        else
-            CHECK(got = emissive_sample(c, lp->emissive, sp->point, u_rest, u1, u2, &in, &dist, &normal, &pdf_l, &L));
-        if (got && !(opaque && gvec3_dot(in, facing) <= 0.0)) {
-            double w = mis_power(pdf_l * pick, gmaterial_pdf(m, sp, in, to_viewer, ri));
-            if (!l) /* the shadow ray ends before the glowing surface (a sphere or rectangle light is no surface) */
-                dist = emissive_shadow_reach(sp->point, facing, in, dist, normal);
-            if (w > 0.0)
-                CHECK(sample_light(c, sp, facing, media, in, dist, l ? &l->color : &L, w / pdf_l, to_viewer, &lt,
-                                   sum));
-        }
-    }
-    CHECK(light_gather_finish(sp, &lt, sum));
-    if (sum == out)
-        *unset = lt.unset;
-    if (sum != out)
-        CHECK(gcolor_add_scaled(out, sum, 1.0 / pick));
-done:
-    gscratch_release(c->scratch, mark);
-    return rc;
-}
 
 static int path_radiance(PathCtx *p, const Ray *r, const Media *media, int depth, double beta, int prev_delta,
                     double prev_pdf, GColor *out, const GColor **res);
@@ -414,7 +141,7 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
     int band = c->band, pick = -1;
     if (!opaque && b && b->n > 1) {
         if (band < 0 && bands_disperse(b, &ri)) {
-            pick = (int)(vertex_uniform(p, depth, SLOT_BAND) * b->n);
+            pick = (int)(path_vertex_uniform(p, depth, SLOT_BAND) * b->n);
             band = pick < b->n ? pick : b->n - 1;
             pick = band;
         }
@@ -426,9 +153,9 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
     }
 
     if (!delta && light_pick_nee_every(c->pick) && (s->nlights > 0 || c->emissive))
-        CHECK(direct_light_every(p, sp, facing, media, to_viewer, opaque, ri_use, depth, res, &unset));
+        CHECK(path_direct_light_every(p, sp, facing, media, to_viewer, opaque, ri_use, depth, res, &unset));
     else if (!delta && c->pick && c->pick->n > 0)
-        CHECK(direct_light(p, sp, facing, media, to_viewer, opaque, ri_use, depth, res, &unset));
+        CHECK(path_direct_light(p, sp, facing, media, to_viewer, opaque, ri_use, depth, res, &unset));
 
     if (depth < c->max_depth) {
         /* written in full before they are read (the weight by a sample drawn, the bounce's light by path_radiance, the
@@ -436,7 +163,7 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
         CHECK(gcolor_scratch_uncleared(&weight, s->model, c->scratch));
         CHECK(gcolor_scratch_uncleared(&illum, s->model, c->scratch));
         GMaterialSample smp;
-        double u1 = vertex_uniform(p, depth, SLOT_BSDF_U), u2 = vertex_uniform(p, depth, SLOT_BSDF_V);
+        double u1 = path_vertex_uniform(p, depth, SLOT_BSDF_U), u2 = path_vertex_uniform(p, depth, SLOT_BSDF_V);
         CHECK(valid = gmaterial_sample(m, sp, to_viewer, ri_use, u1, u2, &smp, &weight));
         if (!valid || !(smp.pdf > 0.0)) /* no sample: the weight is not read */
             goto absorb;
@@ -445,7 +172,7 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
             goto absorb;
         if (depth >= PATH_RR_START) { /* Russian roulette on the path's throughput */
             q = roulette_survival(nb);
-            if (vertex_uniform(p, depth, SLOT_ROULETTE) >= q)
+            if (path_vertex_uniform(p, depth, SLOT_ROULETTE) >= q)
                 goto absorb;
             nb /= q;
         }
@@ -563,11 +290,11 @@ static int medium_vertex(PathCtx *p, const Ray *r, const Media *media, const Med
     double q = 1.0;
     if (depth >= PATH_RR_START) {
         q = roulette_survival(beta);
-        if (!(q > 0.0) || uniform(p) >= q)
+        if (!(q > 0.0) || path_uniform(p) >= q)
             goto done;
     }
     GVec3 in;
-    double u1 = uniform(p), u2 = uniform(p), pdf = phase_sample(vol->phase, r->d, u1, u2, &in);
+    double u1 = path_uniform(p), u2 = path_uniform(p), pdf = phase_sample(vol->phase, r->d, u1, u2, &in);
     if (!(pdf > 0.0))
         goto done;
     CHECK(gcolor_scratch_uncleared(&illum, c->scene->model, c->scratch)); /* path_radiance writes it */
@@ -601,7 +328,7 @@ static int medium_segment(PathCtx *p, const Ray *r, const Media *media, const Me
     if (vol->grid) /* delta tracking through the grid (media/medium_grid.c) */
         CHECK(ev = medium_grid_flight(vol, r->o, r->d, t_l, &c->rng, &t, &w, c->scratch));
     else
-        CHECK(ev = medium_sample_distance(vol, t_l, uniform(p), uniform(p), &t, &w));
+        CHECK(ev = medium_sample_distance(vol, t_l, path_uniform(p), path_uniform(p), &t, &w));
     double nb = beta * roulette_factor(&w);
     /* point, spot and IES lights: equiangular samples too, MIS-weighted against free flight's (homogeneous media) */
     MediumWay way = {r->o, r->d, t_l, t};
