@@ -10,15 +10,7 @@
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
-#include <strings.h>
 #include <unistd.h>
-
-int gimage_exr_path(const char *path)
-{
-    const char *dot = strrchr(path, '.');
-    const char *slash = strrchr(path, '/');
-    return dot && (!slash || dot > slash) && !strcasecmp(dot, ".exr");
-}
 
 /* The temporary's descriptor, the end of the furthest write and the first error (reported once the library is
  * done). OpenEXRCore writes at offsets: the chunks, then the table of their offsets after the header. */

@@ -11,15 +11,7 @@
 #include <pthread.h>
 #include <setjmp.h>
 #include <string.h>
-#include <strings.h>
 #include <unistd.h>
-
-int gimage_png_path(const char *path)
-{
-    const char *dot = strrchr(path, '.');
-    const char *slash = strrchr(path, '/');
-    return dot && (!slash || dot > slash) && !strcasecmp(dot, ".png");
-}
 
 /* The temporary's descriptor, the bytes written and the first write error (reported once libpng is done). */
 typedef struct {
