@@ -1,6 +1,6 @@
 /* exr_core_lib.h - OpenEXRCore (OpenEXR's C library) loaded on first use: a process that writes no OpenEXR file
- * never maps it. The functions image_exr.c calls, resolved by dlopen of the library's soname (GENERIC_EXRCORE_SONAME,
- * the build's libOpenEXRCore.so's; lib/build.mk), once per process. */
+ * never maps it. The functions image_exr.c calls, resolved by gdynlib_open (generic/services/dynlib.h) from the
+ * library's soname (GENERIC_EXRCORE_SONAME, the build's libOpenEXRCore.so's; lib/build.mk), once per process. */
 #ifndef GENERIC_EXR_CORE_LIB_H
 #define GENERIC_EXR_CORE_LIB_H
 

@@ -2,65 +2,34 @@
 #include "image_exr.h"
 
 #include "exr_core_lib.h"
+#include "image_sink.h"
 
-#include "generic/services/file.h"
 #include "generic/memory.h"
 
-
-#include <errno.h>
 #include <stdio.h>
 #include <string.h>
-#include <strings.h>
-#include <unistd.h>
 
-int gimage_exr_path(const char *path)
-{
-    const char *dot = strrchr(path, '.');
-    const char *slash = strrchr(path, '/');
-    return dot && (!slash || dot > slash) && !strcasecmp(dot, ".exr");
-}
-
-/* The temporary's descriptor, the end of the furthest write and the first error (reported once the library is
- * done). OpenEXRCore writes at offsets: the chunks, then the table of their offsets after the header. */
-typedef struct {
-    int fd;
-    long long size;
-    int error;          /* errno of the first failed write */
-    char message[200];  /* OpenEXRCore's first error */
-} Sink;
-
+/* OpenEXRCore writes at offsets: the chunks, then the table of their offsets after the header. The sink's message
+ * is OpenEXRCore's first error. */
 static int64_t sink_write(exr_const_context_t ctxt, void *user, const void *buffer, uint64_t n, uint64_t offset,
                           exr_stream_error_func_ptr_t error_cb)
 {
-    Sink *s = user;
-    const char *data = buffer;
-    uint64_t done = 0;
-    while (done < n && !s->error) {
-        ssize_t w = pwrite(s->fd, data + done, n - done, (off_t)(offset + done));
-        if (w < 0 && errno == EINTR)
-            continue;
-        if (w <= 0)
-            s->error = w < 0 ? errno : ENOSPC;
-        else
-            done += (uint64_t)w;
-    }
-    if (s->error) {
+    GImageSink *s = user;
+    if (gimage_sink_write(s, buffer, (size_t)n, (long long)offset) != 0) {
         error_cb(ctxt, EXR_ERR_WRITE_IO, "%s", strerror(s->error));
         return -1;
     }
-    if ((long long)(offset + n) > s->size)
-        s->size = (long long)(offset + n);
     return (int64_t)n;
 }
 
 /* The sink of the write this thread is encoding: OpenEXRCore calls the error handler with the context's lock held,
  * so the handler may not ask the context for its user data (exr_get_user_data takes that lock: a deadlock). */
-static _Thread_local Sink *current_sink;
+static _Thread_local GImageSink *current_sink;
 
 static void on_error(exr_const_context_t ctxt, exr_result_t code, const char *msg)
 {
     (void)ctxt;
-    Sink *s = current_sink;
+    GImageSink *s = current_sink;
     if (!s || s->message[0])
         return;
     const ExrCoreLib *api = exr_core_lib("", NULL); /* loaded: the context exists */
@@ -151,7 +120,7 @@ static exr_result_t write_chunks(const ExrCoreLib *api, exr_context_t ctx, const
 }
 
 /* Writes the file into the open temporary: G_OK or G_ERR_IO/G_ERR_NOMEM. */
-static int encode_exr(const ExrCoreLib *api, Sink *sink, const char *path, const GImage *img,
+static int encode_exr(const ExrCoreLib *api, GImageSink *sink, const char *path, const GImage *img,
                       const GImageWriteOptions *opt, double scale, GError *err)
 {
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
@@ -200,16 +169,10 @@ int gimage_exr_write(const char *path, const GImage *img, const GImageWriteOptio
     const ExrCoreLib *api = exr_core_lib(path, err);
     if (!api)
         return G_ERR_IO;
-    GFileOutput file;
-    int rc = gfile_output_begin(&file, path, err);
+    GImageSink sink;
+    int rc = gimage_sink_begin(&sink, path, err);
     if (rc != G_OK)
         return rc;
-    Sink sink = {file.fd, 0, 0, ""};
     rc = encode_exr(api, &sink, path, img, opt, scale, err);
-    if (rc == G_OK && sink.error)
-        rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, strerror(sink.error));
-    if (rc == G_OK)
-        return gfile_output_commit(&file, sink.size, path, err);
-    gfile_output_abort(&file);
-    return rc;
+    return gimage_sink_end(&sink, rc, path, err);
 }

@@ -8,9 +8,6 @@
 
 #include "generic/services/image.h"
 
-/** Whether path names an OpenEXR file by its extension (.exr, any case). */
-int gimage_exr_path(const char *path);
-
 /** Writes img (1..4 channels) to path as float channels, the colour channels multiplied by scale (the alpha of
  * 2 and 4 channels as it is). opt (NULL: none) gives the crop (x, y, full_width, full_height, already checked
  * against the image's size) and its note; its spectra and display transform are not for this writer and must be

@@ -1,33 +1,21 @@
 /* image_png.c - PNG output through libpng (see image_png.h). */
 #include "image_png.h"
+#include "image_sink.h"
 
-#include "generic/services/file.h"
 #include "generic/memory.h"
 
 #include <png.h>
 
-#include <errno.h>
 #include <math.h>
 #include <pthread.h>
 #include <setjmp.h>
 #include <string.h>
-#include <strings.h>
-#include <unistd.h>
 
-int gimage_png_path(const char *path)
-{
-    const char *dot = strrchr(path, '.');
-    const char *slash = strrchr(path, '/');
-    return dot && (!slash || dot > slash) && !strcasecmp(dot, ".png");
-}
-
-/* The temporary's descriptor, the bytes written and the first write error (reported once libpng is done). */
+/* The output, written in sequence (its message: libpng's own error, if it gave up), and whether an allocation of
+ * libpng's failed. */
 typedef struct {
-    int fd;
-    long long size;
-    int error;
-    int nomem;         /* an allocation of libpng's failed */
-    char message[200]; /* libpng's own error, if it gave up */
+    GImageSink out;
+    int nomem;
 } Sink;
 
 /* libpng's (and zlib's) memory comes from the library's allocator (gmem_set_allocator). */
@@ -48,17 +36,7 @@ static void sink_free(png_structp png, png_voidp p)
 static void sink_write(png_structp png, png_bytep data, size_t n)
 {
     Sink *s = png_get_io_ptr(png);
-    size_t done = 0;
-    while (done < n && !s->error) {
-        ssize_t w = write(s->fd, data + done, n - done);
-        if (w < 0 && errno == EINTR)
-            continue;
-        if (w <= 0)
-            s->error = w < 0 ? errno : ENOSPC;
-        else
-            done += (size_t)w;
-    }
-    s->size += (long long)n;
+    gimage_sink_write(&s->out, data, n, s->out.size); /* a failure stays in the sink until libpng is done */
 }
 
 static void sink_flush(png_structp png) { (void)png; }
@@ -66,7 +44,7 @@ static void sink_flush(png_structp png) { (void)png; }
 static void on_error(png_structp png, png_const_charp msg)
 {
     Sink *s = png_get_error_ptr(png);
-    snprintf(s->message, sizeof s->message, "%s", msg);
+    snprintf(s->out.message, sizeof s->out.message, "%s", msg);
     png_longjmp(png, 1);
 }
 
@@ -147,7 +125,7 @@ static int encode_png(Sink *sink, const char *path, const GImage *img, double sc
         if (sink->nomem)
             return gerror_set(err, G_ERR_NOMEM, "%s: out of memory encoding a %dx%d image", path, img->width,
                               img->height);
-        return gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, sink->message);
+        return gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, sink->out.message);
     }
     png_set_write_fn(png, sink, sink_write, sink_flush);
     png_set_IHDR(png, info, (png_uint_32)img->width, (png_uint_32)img->height, 8, types[ch - 1],
@@ -180,19 +158,13 @@ int gimage_png_write(const char *path, const GImage *img, double scale, GError *
     if (!row)
         return gerror_set(err, G_ERR_NOMEM, "%s: out of memory encoding a %dx%d image", path, img->width,
                           img->height);
-    GFileOutput file;
-    int rc = gfile_output_begin(&file, path, err);
+    Sink sink = {.nomem = 0};
+    int rc = gimage_sink_begin(&sink.out, path, err);
     if (rc != G_OK) {
         gmem_free(row);
         return rc;
     }
-    Sink sink = {file.fd, 0, 0, 0, ""};
     rc = encode_png(&sink, path, img, scale, row, err);
     gmem_free(row);
-    if (rc == G_OK && sink.error)
-        rc = gerror_set(err, G_ERR_IO, "%s: cannot write image: %s", path, strerror(sink.error));
-    if (rc == G_OK)
-        return gfile_output_commit(&file, sink.size, path, err);
-    gfile_output_abort(&file);
-    return rc;
+    return gimage_sink_end(&sink.out, rc, path, err);
 }

@@ -6,9 +6,6 @@
 
 #include "generic/services/image.h"
 
-/** Whether path names a PNG file by its extension (.png, any case). */
-int gimage_png_path(const char *path);
-
 /** Writes img (1..4 channels: grey, grey+alpha, RGB, RGBA) to path, colour channels multiplied by scale, then
  * sRGB-encoded and clamped. G_OK, G_ERR_IO or G_ERR_NOMEM. */
 GENERIC_NODISCARD int gimage_png_write(const char *path, const GImage *img, double scale, GError *err);

@@ -10,6 +10,7 @@
 
 #include "image_exr.h"
 #include "image_png.h"
+#include "image_path.h"
 #include "decode_isolated.h"
 #include "generic/services/spawn.h"
 
@@ -288,10 +289,10 @@ int gimage_check_output(const char *path, GError *err)
     if (!path || !*path)
         return gerror_set(err, G_ERR_INVALID, "no image file name given");
     int rc = gfile_check_output(path, err);
-    if (rc != G_OK || gimage_png_path(path) || gimage_exr_path(path))
+    if (rc != G_OK || gimage_path_has_extension(path, ".png") || gimage_path_has_extension(path, ".exr"))
         return rc;
-    const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
-    if (!dot || (slash && dot < slash))
+    const char *dot = gimage_path_extension(path);
+    if (!dot)
         return gerror_set(err, G_ERR_IO, "%s: cannot write image: no extension to choose the format by", path);
     if (!listed_extension(dot))
         return gerror_set(err, G_ERR_IO, "%s: cannot write image: this OpenImageIO has no writer for '%s' files (it "
@@ -302,10 +303,8 @@ int gimage_check_output(const char *path, GError *err)
 /* Whether path's extension is one of the linear float formats (.exr, .hdr, .pfm: image.h). */
 static int gimage_float_path(const char *path)
 {
-    const char *dot = strrchr(path, '.'), *slash = strrchr(path, '/');
-    if (!dot || (slash && dot < slash))
-        return 0;
-    return !strcasecmp(dot, ".exr") || !strcasecmp(dot, ".hdr") || !strcasecmp(dot, ".pfm");
+    return gimage_path_has_extension(path, ".exr") || gimage_path_has_extension(path, ".hdr") ||
+           gimage_path_has_extension(path, ".pfm");
 }
 
 /* The spectra to write beside img: G_OK, or G_ERR_INVALID naming what is wrong. */
@@ -350,7 +349,8 @@ int gimage_write(const char *path, const GImage *img, const GImageWriteOptions *
         const GOiioOps *o = goiio_ops(err);
         return o ? o->image_write(path, img, &o2, err) : G_ERR_IO;
     }
-    const int png = gimage_png_path(path), exr = gimage_exr_path(path) && !(opt && opt->spectra);
+    const int png = gimage_path_has_extension(path, ".png");
+    const int exr = gimage_path_has_extension(path, ".exr") && !(opt && opt->spectra);
     if (png || exr) { /* spectra go to OpenEXR through OpenImageIO */
         if (png && opt && opt->spectra)
             return gerror_set(err, G_ERR_INVALID, "%s: only OpenEXR files store spectra, not PNG files", path);
