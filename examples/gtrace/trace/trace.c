@@ -158,7 +158,7 @@ int trace_relative_index(TraceCtx *c, GSurfPoint *sp, GColor *ri)
 {
     GColor n_from, n_to;
     int rc;
-    if (gmaterial_no_rel_index(sp->material)) { /* read by no method: not computed (trace.h) */
+    if (sp->material && (sp->material->flags & GMAT_NO_REL_INDEX)) { /* read by no method: not computed (trace.h) */
         *ri = c->unit;
         return G_OK;
     }
