@@ -1,15 +1,15 @@
 /* node_flags.c - the node kit's GMAT_NO_EMISSION, GMAT_OPAQUE, GMAT_GEOMETRIC_NORMAL, GMAT_LAMBERTIAN, GMAT_NO_UV,
- * GMAT_DIAGONAL, GMAT_NO_IDEAL and GMAT_NO_REL_INDEX (generic/kit/node_kit.h): a node whose emission only combines
- * its children's emits nothing when none of them does, one whose opacity is its children's is opaque everywhere when each of them
- * is, one whose normal blends its children's keeps the geometric normal when each of them does, so the dispatch
+ * GMAT_DIAGONAL, GMAT_NO_IDEAL and GMAT_NO_REL_INDEX (generic/kit/node_kit.h): a node whose emission only combines its
+ * children's emits nothing when none of them does, one whose opacity is its children's is opaque everywhere when each
+ * of them is, one whose normal blends its children's keeps the geometric normal when each of them does, so the dispatch
  * answers it without a call; a blend whose reflection and diffuse colour are the same blend of its children's is
- * Lambertian when each of them is, so a renderer reflects the light of all its samples at once, and so is a
- * one-child node whose reflection and diffuse colour are its child's times the same factor, at a point with the same
- * normals (bump, scale, image, transform); one whose reflection and refraction sum its children's filters light
- * sample by sample when each of them does (GMAT_DIAGONAL); one whose ideal rays are its children's has none when
- * none of them has (GMAT_NO_IDEAL); one that reads the point only through a generator not in (u, v) space, over
- * children that never read (u, v), lets the renderer skip the parametrisation; and one that reads no relative index
- * itself, over children that read none, lets the renderer skip computing it (GMAT_NO_REL_INDEX). */
+ * Lambertian when each of them is, so a renderer reflects the light of all its samples at once, and so is a one-child
+ * node whose reflection and diffuse colour are its child's times the same factor, at a point with the same normals
+ * (bump, scale, image, transform); one whose reflection and refraction sum its children's filters light sample by
+ * sample when each of them does (GMAT_DIAGONAL); one whose ideal rays are its children's has none when none of them has
+ * (GMAT_NO_IDEAL); one that reads the point only through a generator not in (u, v) space, over children that never read
+ * (u, v), lets the renderer skip the parametrisation; and one that reads no relative index itself, over children that
+ * read none, lets the renderer skip computing it (GMAT_NO_REL_INDEX). */
 #include "generic/kit/node_kit.h"
 #include "generic/texture.h"
 
