@@ -51,7 +51,8 @@ uninstall-tools:
 # libgeneric.so (one registry with the program); exports only check_file.h's entry point. -z defs: gmat's command
 # line (main.c and the commands it alone runs) is not part of it.
 GMAT_SO := $(BUILD)/lib/libgmat.so
-GMAT_SO_OBJ := $(patsubst %,$(BUILD)/obj/examples/gmat/%.o,albedo check check_file flags measure sampling uvflag)
+GMAT_SO_OBJ := $(patsubst %,$(BUILD)/obj/examples/gmat/%.o,albedo check check_file flags measure sampling uvflag \
+               relindex)
 all: $(GMAT_SO)
 $(GMAT_SO): $(GMAT_SO_OBJ) $(LIBSO)
 	@mkdir -p $(dir $@)

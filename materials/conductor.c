@@ -529,6 +529,7 @@ static int conductor_create(const GColorModel *model, const ConductorSpec *p, GM
     if (!c->anisotropic)
         m->flags |= GMAT_NO_UV; /* only an anisotropic surface reads its tangent dpdu (material.h) */
     m->flags |= GMAT_DIAGONAL;  /* f * illum: n and k are vectors, nothing re-radiates */
+    m->flags |= GMAT_NO_REL_INDEX; /* its Fresnel term is of its own n and k, not of the relative index */
     if (rc == G_OK && p->rough.gen)
         rc = rough_levels(c, &p->rough, err);
     if (rc == G_OK && !c->smooth && !p->exact_fresnel)

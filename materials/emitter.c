@@ -67,7 +67,7 @@ int gemitter_create(const GColorModel *model, const GColor *radiance, int two_si
     if (rc == G_OK) {
         ((Emitter *)*out)->two_sided = two_sided != 0;
         /* no method reads the (u, v) parametrisation; no reflection or refraction: black, sample by sample */
-        (*out)->flags |= GMAT_NO_UV | GMAT_DIAGONAL;
+        (*out)->flags |= GMAT_NO_UV | GMAT_DIAGONAL | GMAT_NO_REL_INDEX; /* nor the relative index */
     }
     return rc;
 }

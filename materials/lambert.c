@@ -84,7 +84,7 @@ int glambert_create(const GColorModel *model, const GColor *reflectance, GMateri
                                         GCOLOR_REFLECTANCE, 1.0, "reflectance", out, err);
     if (rc == G_OK) { /* reflection is diffuse (rho) * illum * gmaterial_cos_in / pi, as the bit says, and no method
                        * reads the (u, v) parametrisation (material.h) */
-        (*out)->flags |= GMAT_LAMBERTIAN | GMAT_NO_UV;
+        (*out)->flags |= GMAT_LAMBERTIAN | GMAT_NO_UV | GMAT_NO_REL_INDEX; /* no method reads an index */
         if (((GMaterialOneColor *)*out)->c.kind == GCOLOR_VECTOR) /* rho * illum: sample by sample (material.h) */
             (*out)->flags |= GMAT_DIAGONAL;
     }

@@ -80,6 +80,7 @@ int gmirror_create(const GColorModel *model, const GColor *reflectance, GMateria
                                         GCOLOR_REFLECTANCE, 1.0, "reflectance", out, err);
     if (rc == G_OK) {
         (*out)->flags |= GMAT_NO_UV; /* its methods read none of the (u, v) parametrisation (material.h) */
+        (*out)->flags |= GMAT_NO_REL_INDEX; /* nor the relative index: the mirror direction and rho */
         if (((GMaterialOneColor *)*out)->c.kind == GCOLOR_VECTOR) /* rho * illum: sample by sample (material.h) */
             (*out)->flags |= GMAT_DIAGONAL;
     }

@@ -354,6 +354,7 @@ int gphong_create(const GColorModel *model, const GPhongParams *params, GMateria
     p->has_ks = p->bright[1] > 0.0;
     p->has_mirror = p->bright[2] > 0.0;
     p->base.flags |= GMAT_NO_UV; /* its methods read none of the (u, v) parametrisation (material.h) */
+    p->base.flags |= GMAT_NO_REL_INDEX; /* nor the relative index: no refraction, no Fresnel term */
     /* reflection is (a sum of its colours) * illum: sample by sample unless one of them re-radiates */
     if (p->kd.kind == GCOLOR_VECTOR && p->ks.kind == GCOLOR_VECTOR && p->mirror.kind == GCOLOR_VECTOR)
         p->base.flags |= GMAT_DIAGONAL;

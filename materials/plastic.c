@@ -446,6 +446,7 @@ static int plastic_create(const GColorModel *model, PlasticSpec *s, GMaterial **
     if (rc == G_OK && ((rc = gcolor_alloc(&p->body, model)) != G_OK || (rc = gcolor_alloc(&p->albedo, model)) != G_OK))
         rc = gerror_set(err, rc, "plastic: out of memory");
     m->flags |= GMAT_NO_UV | GMAT_DIAGONAL; /* plain colours sample by sample; no (u, v) read */
+    m->flags |= GMAT_NO_REL_INDEX; /* the coat's Fresnel term is of its own index, not the relative one */
     if (rc == G_OK && !rho) {
         p->tex_rho = s->rho;
         memset(&s->rho, 0, sizeof s->rho);

@@ -140,6 +140,7 @@ int gthindielectric_create(const GColorModel *model, const GDispersion *index, G
         return rc;
     ((ThinDielectric *)m)->n = nb;
     m->flags |= GMAT_NO_UV | GMAT_DIAGONAL; /* no (u, v); R * illum and (1 - R) * illum, sample by sample */
+    m->flags |= GMAT_NO_REL_INDEX; /* the pane's own index: the same medium on both sides, rel_index unread */
     *out = m;
     return G_OK;
 }

@@ -9,6 +9,7 @@
  *    answer the geometric normal without calling the class, with the normals the class computes;
  *  - GMAT_LAMBERTIAN: lambert has it, no other built-in material (test_material_lambertian.c: nodes, the property);
  *  - GMAT_NO_IDEAL: which leaves and nodes get it, and that the dispatch's answer without a call is the slots';
+ *  - GMAT_NO_REL_INDEX: which leaves and nodes get it, and that their slots do not see the relative index;
  *  - the material interface's version rose with the header (and stayed for the normal and Lambertian bits). */
 #include <stdarg.h>
 #include <stddef.h>
@@ -585,6 +586,218 @@ static void test_interface_version(void **state)
     assert_non_null(strstr(err.message, "interface version 3, the library has 4"));
 }
 
+static int no_rel_index(const GMaterial *m) { return (m->flags & GMAT_NO_REL_INDEX) != 0; }
+
+/* The class's own slots of m at two copies of one point, one with the relative index ri[0] and one with ri[1] (set
+ * on the point and handed as the argument), for light from in leaving towards out: 1 when every status, colour,
+ * direction, density and flag agrees bit for bit (sample with the numbers u1, u2). */
+static int same_for_both_indices(Fix *f, const GMaterial *m, GSurfPoint sp[2], const GColor ri[2], GVec3 in,
+                                 GVec3 out, double u1, double u2)
+{
+    const GMaterialClass *c = m->cls;
+    GColor r[2], w[2];
+    GVec3 d[2][3];
+    double pdf[2];
+    int rc[2][8], flags[2];
+    GMaterialSample smp[2];
+    for (int k = 0; k < 2; k++) {
+        assert_int_equal(gcolor_alloc(&r[k], f->rgb), G_OK);
+        assert_int_equal(gcolor_alloc(&w[k], f->rgb), G_OK);
+    }
+    int same = 1;
+    for (int slot = 0; slot < 6; slot++) {
+        for (int k = 0; k < 2; k++) {
+            GSurfPoint *q = &sp[k];
+            d[k][0] = d[k][1] = d[k][2] = gvec3(7, 7, 7);
+            pdf[k] = -1.0;
+            flags[k] = -1;
+            memset(&smp[k], 0, sizeof smp[k]);
+            gcolor_black(&r[k]);
+            gcolor_black(&w[k]);
+            switch (slot) {
+            case 0: rc[k][0] = c->reflection ? c->reflection(m, q, in, &f->illum, out, &r[k]) : 0; break;
+            case 1: rc[k][1] = c->refraction ? c->refraction(m, q, in, &f->illum, &ri[k], out, &r[k]) : 0; break;
+            case 2:
+                rc[k][2] = c->reflection_dir ? c->reflection_dir(m, q, gvec3_neg(out), &d[k][0]) : 0;
+                rc[k][3] = c->refraction_dir ? c->refraction_dir(m, q, gvec3_neg(out), &ri[k], &d[k][1]) : 0;
+                break;
+            case 3:
+                rc[k][4] = c->sample ? c->sample(m, q, out, &ri[k], u1, u2, &smp[k], &w[k]) : 0;
+                d[k][2] = smp[k].in;
+                pdf[k] = smp[k].pdf;
+                flags[k] = smp[k].flags;
+                break;
+            case 4: pdf[k] = c->pdf ? c->pdf(m, q, in, out, &ri[k]) : 0.0; break;
+            default:
+                rc[k][5] = c->diffuse ? c->diffuse(m, q, &r[k]) : 0;
+                rc[k][6] = c->is_delta ? c->is_delta(m, q) : 0;
+                rc[k][7] = c->opaque ? c->opaque(m, q) : 1;
+                break;
+            }
+        }
+        same = same && memcmp(r[0].v, r[1].v, 3 * sizeof(float)) == 0 && memcmp(w[0].v, w[1].v, 3 * sizeof(float)) == 0;
+        same = same && memcmp(d[0], d[1], sizeof d[0]) == 0 && memcmp(&pdf[0], &pdf[1], sizeof pdf[0]) == 0;
+        same = same && flags[0] == flags[1];
+    }
+    for (int j = 0; j < 8; j++)
+        same = same && rc[0][j] == rc[1][j];
+    for (int k = 0; k < 2; k++) {
+        gcolor_free(&r[k]);
+        gcolor_free(&w[k]);
+    }
+    return same;
+}
+
+/* GMAT_NO_REL_INDEX: the built-ins whose methods read no relative index have it (lambert, phong, mirror, emitter,
+ * conductor, plastic, the thin pane, the fluorescent materials), those that read it not (dielectric, thinfilm,
+ * layer). The kit's nodes over lamberts have it (blends, bump, scale, transform, a node of nodes), so has a blend
+ * of a lambert and a mirror and a scale over the thin pane (a pass-through); a node over a dielectric has not, nor
+ * a blend over the thin pane (its ideal-refraction test reads the point's index). The flagged materials' slots give
+ * the same results, bit for bit, for the relative indices 1.5 and 1 / 1.5 over generated points, directions (the
+ * ideal ones among them), numbers and generator values; the dielectric does not. */
+static void test_no_rel_index_bit(void **state)
+{
+    Fix *f = *state;
+    static const char *const text =
+        "colormodel bispectral\n"
+        "color dayglo reradiation { absorb_peak 470 absorb_width 115 absorb_shape 8 absorb_max 0.97\n"
+        "    emit_width 20 stokes_shift 135 quantum_yield 0.65 reflectance 0.92 }\n"
+        "material l lambert { reflectance rgb 0.5 0.5 0.5 }\n"
+        "material p phong { diffuse rgb 0.3 0.3 0.3 specular rgb 0.5 0.5 0.5 exponent 50 }\n"
+        "material m mirror\n"
+        "material e emitter { radiance rgb 1 0.5 0.25 }\n"
+        "material c conductor { metal Au roughness 0.3 }\n"
+        "material pl plastic { reflectance rgb 0.3 0.5 0.2 roughness 0.2 }\n"
+        "material t thindielectric { index 1.5 }\n"
+        "material fv fluorescent-varnish { matrix dayglo ior 1.5 slope 17 }\n"
+        "material fp fluorescent-phong { matrix dayglo ks 0.04 exponents 30 120 480 weights 0.2 0.3 0.5 }\n"
+        "material d dielectric\n"
+        "material tf thinfilm { thickness 400 base lambert { reflectance rgb 0.5 0.5 0.5 } }\n"
+        "material ly layer { top dielectric { index 1.5 } bottom lambert { reflectance rgb 0.5 0.5 0.5 } }\n";
+    GLibrary *lib = NULL;
+    GError err;
+    if (greader_load_string(text, "relindex.mat", NULL, &lib, &err) != G_OK)
+        fail_msg("%s", err.message);
+    static const struct {
+        const char *name;
+        int flagged;
+    } want[] = {{"l", 1}, {"p", 1}, {"m", 1}, {"e", 1}, {"c", 1}, {"pl", 1}, {"t", 1},
+                {"fv", 1}, {"fp", 1}, {"d", 0}, {"tf", 0}, {"ly", 0}};
+    for (size_t i = 0; i < sizeof want / sizeof want[0]; i++) {
+        GMaterial *m = glibrary_material(lib, want[i].name);
+        assert_non_null(m);
+        if (no_rel_index(m) != want[i].flagged || gmaterial_no_rel_index(m) != want[i].flagged)
+            fail_msg("%s: GMAT_NO_REL_INDEX %d, expected %d", want[i].name, no_rel_index(m), want[i].flagged);
+    }
+    glibrary_destroy(lib);
+    assert_int_equal(gmaterial_no_rel_index(NULL), 1); /* vacuum reads nothing */
+
+    GMaterial *a = lambert(f, 0.2), *b = lambert(f, 0.8), *c = lambert(f, 0.5), *n[8], *yes[3], *no[5];
+    GMaterial *mirror = NULL, *glass = NULL, *thin = NULL;
+    GDielectricParams gp = {.index = gdispersion_constant(1.5)};
+    GDispersion thin_index = gdispersion_constant(1.5);
+    assert_int_equal(gdielectric_create(f->rgb, &gp, &glass, &err), G_OK);
+    assert_int_equal(gmirror_create(f->rgb, &f->illum, &mirror, &err), G_OK);
+    assert_int_equal(gthindielectric_create(f->rgb, &thin_index, &thin, &err), G_OK);
+    CountGen *g = countgen_new(0.4);
+    plain_nodes(a, b, c, g, n);
+    for (int i = 0; i < 8; i++)
+        if (!no_rel_index(n[i]))
+            fail_msg("node %d (%s) over lamberts has no GMAT_NO_REL_INDEX", i, gmaterial_name(n[i]));
+    GAffine2 uv = gaffine2_rotate(30.0);
+    assert_int_equal(gnode_interpolate_create(a, mirror, &g->base, &yes[0], &err), G_OK);
+    assert_int_equal(gnode_scale_create(thin, &g->base, &yes[1], &err), G_OK);
+    assert_int_equal(gnode_transform_create(yes[0], &uv, NULL, &yes[2], &err), G_OK);
+    for (int i = 0; i < 3; i++)
+        if (!no_rel_index(yes[i]))
+            fail_msg("node %d (%s) has no GMAT_NO_REL_INDEX", i, gmaterial_name(yes[i]));
+    assert_int_equal(gnode_interpolate_create(a, glass, &g->base, &no[0], &err), G_OK);
+    assert_int_equal(gnode_transform_create(glass, &uv, NULL, &no[1], &err), G_OK);
+    assert_int_equal(gnode_scale_create(glass, &g->base, &no[2], &err), G_OK);
+    GMaterial *mixed[2] = {n[0], no[0]};
+    assert_int_equal(gnode_spline_create(mixed, 2, &g->base, GSPLINE_LINEAR, &no[3], &err), G_OK);
+    assert_int_equal(gnode_interpolate_create(a, thin, &g->base, &no[4], &err), G_OK);
+    for (int i = 0; i < 5; i++)
+        if (no_rel_index(no[i]))
+            fail_msg("node %d (%s) over a dielectric or a blended pane has GMAT_NO_REL_INDEX", i,
+                     gmaterial_name(no[i]));
+
+    /* the property: every flagged material above, and the dielectric as the control that reads the index */
+    const GMaterial *all[14];
+    int nall = 0;
+    for (int i = 0; i < 8; i++)
+        all[nall++] = n[i];
+    for (int i = 0; i < 3; i++)
+        all[nall++] = yes[i];
+    all[nall++] = mirror;
+    all[nall++] = thin;
+    all[nall++] = glass;
+    GColor ri[2];
+    for (int k = 0; k < 2; k++) {
+        assert_int_equal(gcolor_alloc(&ri[k], f->rgb), G_OK);
+        assert_int_equal(gcolor_fill(&ri[k], k ? 1.0 / 1.5 : 1.5), G_OK);
+    }
+    int rounds = TU_SANITIZED ? 40 : 200, glass_differs = 0;
+    uint64_t s = 11;
+    for (int r = 0; r < rounds; r++) {
+        double x[4];
+        for (int j = 0; j < 4; j++) {
+            s = s * 6364136223846793005ull + 1442695040888963407ull;
+            x[j] = (double)(s >> 11) / 9007199254740992.0;
+        }
+        g->value = (r % 5) / 4.0; /* 0, 0.25, ..., 1: one child or a blend of two */
+        int below = r & 1;
+        double up = below ? -1.0 : 1.0;
+        GVec3 out = gvec3_normalize(gvec3(x[0] - 0.5, x[1] - 0.5, up * (0.2 + x[2]))), in;
+        switch (r % 4) {
+        case 0: in = gvec3(-out.x, -out.y, out.z); break; /* the mirror direction */
+        case 1: /* the ideal refraction of the view -out for one of the indices */
+            if (!goptics_refract(gvec3_neg(out), gvec3(0, 0, up), r & 2 ? 1.5 : 1.0 / 1.5, &in))
+                in = gvec3_neg(out);
+            else
+                in = gvec3_neg(in);
+            break;
+        case 2: in = gvec3_neg(out); break; /* straight through */
+        default: in = gvec3_normalize(gvec3(x[1] - 0.5, x[3] - 0.5, x[2] - 0.5)); break;
+        }
+        for (int i = 0; i < nall; i++) {
+            GSurfPoint sp[2];
+            for (int k = 0; k < 2; k++) {
+                plane_point(&sp[k], f->rgb, f->scratch, x[0] * 4.0, x[1] * 4.0);
+                if (below)
+                    sp[k].geometric_normal = gvec3(0, 0, -1);
+                sp[k].material = all[i];
+                sp[k].entering = !below;
+                sp[k].from = below ? all[i] : NULL;
+                sp[k].to = below ? NULL : all[i];
+                gsurfpoint_set_relative_index(&sp[k], &ri[k]);
+            }
+            int same = same_for_both_indices(f, all[i], sp, ri, in, out, x[2], x[3]);
+            if (all[i] == glass)
+                glass_differs += !same;
+            else if (!same)
+                fail_msg("%s (%d) gives other results for another relative index (round %d)", gmaterial_name(all[i]),
+                         i, r);
+        }
+    }
+    assert_true(glass_differs > rounds / 4); /* the comparison sees an index that is read */
+    for (int k = 0; k < 2; k++)
+        gcolor_free(&ri[k]);
+    for (int i = 4; i >= 0; i--)
+        gmaterial_unref(no[i]);
+    for (int i = 2; i >= 0; i--)
+        gmaterial_unref(yes[i]);
+    for (int i = 7; i >= 0; i--)
+        gmaterial_unref(n[i]);
+    gmaterial_unref(a);
+    gmaterial_unref(b);
+    gmaterial_unref(c);
+    gmaterial_unref(mirror);
+    gmaterial_unref(glass);
+    gmaterial_unref(thin);
+    ggenerator_unref(&g->base);
+}
+
 int main(void)
 {
     if (generic_register_builtins(NULL) != G_OK)
@@ -600,6 +813,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_normal_bit_skips_the_class, setup, teardown),
         cmocka_unit_test_setup_teardown(test_no_ideal_bit, setup, teardown),
         cmocka_unit_test(test_interface_version),
+        cmocka_unit_test_setup_teardown(test_no_rel_index_bit, setup, teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

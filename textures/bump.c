@@ -103,6 +103,7 @@ int gnode_bump_create(GMaterial *child, GGenerator *height, double strength, GMa
     /* reflection and diffuse colour: the child's at sp itself, whose cached shading normal (the bumped one when the
      * bump is the point's material) the child's gmaterial_cos_in reads as the node's does */
     gnode_inherit_lambertian_child(&b->node.base, child);
+    gnode_inherit_no_rel_index(&b->node.base, &child, 1); /* its normal reads the height, not the index */
     *out = &b->node.base;
     return G_OK;
 }

@@ -84,6 +84,7 @@ int gnode_image_create(GMaterial *child, const char *path, const GImageNodeOptio
     im->image = image;
     im->node.times = apply;
     gnode_inherit_no_emission(&im->node.node.base, &child, 1); /* the child's emission times a finite texel */
+    gnode_inherit_no_rel_index(&im->node.node.base, &child, 1); /* the child's results times a texel at (u, v) */
     if (texels_are_vectors(image, model)) {
         gnode_inherit_diagonal(&im->node.node.base, &child, 1); /* the child's pass-on times a texel colour */
         /* reflection and diffuse colour: the child's at the same point times the same texel colour, a vector, so

@@ -131,6 +131,7 @@ int gnode_scale_create(GMaterial *child, GGenerator *factor, GMaterial **out, GE
     gnode_inherit_no_emission(&s->node.base, &child, 1); /* the child's emission times the factor */
     gnode_inherit_diagonal(&s->node.base, &child, 1);    /* the child's pass-on times the factor */
     gnode_inherit_no_uv(&s->node.base, &child, 1, factor); /* reads the point only through the factor */
+    gnode_inherit_no_rel_index(&s->node.base, &child, 1); /* hands rel_index to the child, reads no index */
     /* reflection and diffuse colour: the child's at the same point times the same factor (both black at 0) */
     gnode_inherit_lambertian_child(&s->node.base, child);
     *out = &s->node.base;

@@ -42,13 +42,14 @@ static void uv_tangents(const double *m, GVec3 du, GVec3 dv, GVec3 *new_du, GVec
 }
 
 /* Fills q with the moved copy of sp. Unless `for_normal`, the shading normal (and, where refraction needs
- * it, the relative index) is first computed on the original point, so the copy carries the values of the
- * untransformed tree instead of recomputing them from the root at moved coordinates. */
+ * it and the subtree may read it, GMAT_NO_REL_INDEX unset, the relative index) is first computed on the original
+ * point, so the copy carries the values of the untransformed tree instead of recomputing them from the root at moved
+ * coordinates. */
 static void move(const Transform *t, GSurfPoint *sp, GSurfPoint *q, int for_normal, int need_index)
 {
     if (!for_normal) {
         gsurfpoint_normal(sp);
-        if (need_index && (sp->from || sp->to))
+        if (need_index && (sp->from || sp->to) && !(t->base.flags & GMAT_NO_REL_INDEX))
             gsurfpoint_relative_index(sp);
     }
     *q = *sp;
@@ -272,6 +273,8 @@ int gnode_transform_create(GMaterial *child, const GAffine2 *uv, const GAffine3 
     gnode_inherit_opaque(&t->base, &child, 1);      /* the child's opacity at a moved point */
     gnode_inherit_diagonal(&t->base, &child, 1);    /* the child's pass-on at a moved point */
     gnode_inherit_no_ideal(&t->base, &child, 1);    /* the child's ideal rays at a moved point */
+    /* the child's results at a moved point; move() takes the point's index only for a child that may read it */
+    gnode_inherit_no_rel_index(&t->base, &child, 1);
     /* the child's normal at a moved point that keeps the geometric normal (move() leaves it) */
     gnode_inherit_geometric_normal(&t->base, &child, 1);
     /* reflection and diffuse colour: the child's at the moved copy, which carries sp's shading normal (move()

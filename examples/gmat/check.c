@@ -48,6 +48,8 @@
  *                and tangents as without them (uvflag.c).
  *   no-ideal     for a material with GMAT_NO_IDEAL: its class's own reflection_dir and refraction_dir say 0
  *                (flags.c).
+ *   no-rel-index for a material with GMAT_NO_REL_INDEX: its class's own slots give the same results, bit for bit,
+ *                with the relative indices 1.5 and 1 / 1.5 (relindex.c).
  *   chi2, pdf integral, weight: the sampling slots (sampling.c). */
 #include "gmat.h"
 
@@ -490,6 +492,7 @@ int gmat_check(GmatContext *ctx, int samples)
     gmat_check_diagonal(ctx, k.places, NPLACES, report_fn, &k);
     gmat_check_no_uv(ctx, k.places, NPLACES, report_fn, &k);
     gmat_check_no_ideal(ctx, k.places, NPLACES, report_fn, &k);
+    gmat_check_no_rel_index(ctx, k.places, NPLACES, report_fn, &k);
     gmat_check_sampling(ctx, k.places, NPLACES, 0, report_fn, &k);
     printf("%s: %s\n", ctx->material_name, k.failures ? "FAIL" : "PASS");
     gcolor_free(&k.a);

@@ -122,6 +122,11 @@ void gmat_check_diagonal(GmatContext *ctx, const GmatPlace *places, int nplaces,
 /** The no-ideal check of `gmat check` (flags.c): a material with GMAT_NO_IDEAL must get 0 (not valid) from its
  * class's own reflection_dir and refraction_dir slots at the places given, for views from both sides. */
 void gmat_check_no_ideal(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report, void *checker);
+/** The no-rel-index check of `gmat check` (relindex.c): a material with GMAT_NO_REL_INDEX must give the same results,
+ * bit for bit, from its class's own slots at the places given, on both sides, with the relative index 1.5 and with
+ * 1 / 1.5 (on the point and as the argument). */
+void gmat_check_no_rel_index(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
+                             void *checker);
 /** The no-uv check of `gmat check` (uvflag.c): a material with GMAT_NO_UV must give the same colours, normal and
  * opacity at the places given, on both sides, with the surface's parametrisation set and with it zero. */
 void gmat_check_no_uv(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report, void *checker);

@@ -126,6 +126,8 @@ static void usage_check(FILE *f)
                "               the surface's (u, v) and tangents\n"
                "  no-ideal     a material flagged GMAT_NO_IDEAL gets 0 (not valid) from its class's\n"
                "               reflection_dir and refraction_dir slots\n"
+               "  no-rel-index a material flagged GMAT_NO_REL_INDEX gives the same results, bit for bit,\n"
+               "               from its class's slots with the relative indices 1.5 and 1 / 1.5\n"
                "Each is measured at several surface points (u, v, point and surface index vary).\n"
                "  --samples N         albedo grid N x 2N (8..4096, default 64)\n\n%s",
             common);

@@ -113,7 +113,16 @@ enum {
      * children then picks no blend for them). Set by gmaterial_init for a class with neither slot, by the node kit
      * for a node whose direction slots are the kit's blends or pass-throughs (or empty) when every child has it
      * (gnode_inherit_kit_no_ideal). */
-    GMAT_NO_IDEAL = 64u
+    GMAT_NO_IDEAL = 64u,
+    /** No method reads the relative index: neither the rel_index argument of refraction, refraction_dir, sample
+     * and pdf (nor of any slot that takes one) nor the point's (gsurfpoint_relative_index, gsurfpoint_index_of), so
+     * every result is the same for any relative index n(from) / n(to), set on the point or handed as the argument.
+     * A renderer may then skip computing it (two refraction_index calls and a division per hit) and hand any colour
+     * of the model (1 in every sample) as rel_index. gmaterial_init never sets it (any method may read the point's
+     * index): a class sets it on the instances it holds for (lambert, phong, mirror, emitter, conductor, plastic,
+     * thindielectric, the fluorescent materials), the node kit on a node whose own methods read no relative index
+     * when every child has it (gnode_inherit_no_rel_index, gnode_inherit_kit_no_rel_index). */
+    GMAT_NO_REL_INDEX = 128u
 };
 
 /** A material instance begins with this header; implementations embed it as their first member. */
@@ -256,6 +265,10 @@ GENERIC_API int gmaterial_lambertian(const GMaterial *m);
 /** 1 when m has GMAT_DIAGONAL: its reflection and refraction of any light are what they pass on of white light
  * times that light. 0 when they may not be (or it cannot tell); NULL (vacuum) passes nothing on and is not. */
 GENERIC_API int gmaterial_diagonal(const GMaterial *m);
+/** 1 when m has GMAT_NO_REL_INDEX: no method of m reads the relative index, so a renderer may skip computing it
+ * and hand any colour (1 in every sample) as rel_index. 0 when some method may read it (or it cannot tell); NULL
+ * (vacuum) reads none and is 1. */
+GENERIC_API int gmaterial_no_rel_index(const GMaterial *m);
 
 /* ---- helpers for material implementations (lib/core/optics.c) ---- */
 

@@ -45,6 +45,8 @@ int gmaterial_lambertian(const GMaterial *m) { return m && (m->flags & GMAT_LAMB
 
 int gmaterial_diagonal(const GMaterial *m) { return m && (m->flags & GMAT_DIAGONAL); }
 
+int gmaterial_no_rel_index(const GMaterial *m) { return !m || (m->flags & GMAT_NO_REL_INDEX); }
+
 /* ---- the defaults of GMATERIAL_METHODS (material.h): what gmaterial_<name> answers for a NULL slot, a NULL
  * material, or a material with the method's `unless` bit ---- */
 

@@ -1,14 +1,15 @@
 /* node_flags.c - the node kit's GMAT_NO_EMISSION, GMAT_OPAQUE, GMAT_GEOMETRIC_NORMAL, GMAT_LAMBERTIAN, GMAT_NO_UV,
- * GMAT_DIAGONAL and GMAT_NO_IDEAL (generic/kit/node_kit.h): a node whose emission only combines its children's
- * emits nothing when none of them does, one whose opacity is its children's is opaque everywhere when each of them
- * is, one whose normal blends its children's keeps the geometric normal when each of them does, so the dispatch
+ * GMAT_DIAGONAL, GMAT_NO_IDEAL and GMAT_NO_REL_INDEX (generic/kit/node_kit.h): a node whose emission only combines its
+ * children's emits nothing when none of them does, one whose opacity is its children's is opaque everywhere when each
+ * of them is, one whose normal blends its children's keeps the geometric normal when each of them does, so the dispatch
  * answers it without a call; a blend whose reflection and diffuse colour are the same blend of its children's is
- * Lambertian when each of them is, so a renderer reflects the light of all its samples at once, and so is a
- * one-child node whose reflection and diffuse colour are its child's times the same factor, at a point with the same
- * normals (bump, scale, image, transform); one whose reflection and refraction sum its children's filters light
- * sample by sample when each of them does (GMAT_DIAGONAL); one whose ideal rays are its children's has none when
- * none of them has (GMAT_NO_IDEAL); and one that reads the point only through a generator not in (u, v) space, over
- * children that never read (u, v), lets the renderer skip the parametrisation. */
+ * Lambertian when each of them is, so a renderer reflects the light of all its samples at once, and so is a one-child
+ * node whose reflection and diffuse colour are its child's times the same factor, at a point with the same normals
+ * (bump, scale, image, transform); one whose reflection and refraction sum its children's filters light sample by
+ * sample when each of them does (GMAT_DIAGONAL); one whose ideal rays are its children's has none when none of them has
+ * (GMAT_NO_IDEAL); one that reads the point only through a generator not in (u, v) space, over children that never read
+ * (u, v), lets the renderer skip the parametrisation; and one that reads no relative index itself, over children that
+ * read none, lets the renderer skip computing it (GMAT_NO_REL_INDEX). */
 #include "generic/kit/node_kit.h"
 #include "generic/texture.h"
 
@@ -124,4 +125,38 @@ void gnode_inherit_kit_no_ideal(GMaterial *node, GMaterial *const *children, int
         (!c->refraction_dir || c->refraction_dir == gnode_blended_refraction_dir ||
          c->refraction_dir == gnode_child_refraction_dir))
         gnode_inherit_no_ideal(node, children, n);
+}
+
+int gnode_children_no_rel_index(GMaterial *const *children, int n)
+{
+    return children_all(children, n, GMAT_NO_REL_INDEX);
+}
+
+void gnode_inherit_no_rel_index(GMaterial *node, GMaterial *const *children, int n)
+{
+    if (node && gnode_children_no_rel_index(children, n))
+        node->flags |= GMAT_NO_REL_INDEX;
+}
+
+/* 1 when every slot of c is empty, the kit's pass-through or the kit's blend. */
+static int kit_slots_only(const GMaterialClass *c)
+{
+    int kit = 1;
+#define KIT_SLOT(name, NAME, type, attr, unless, dispatch, blend, params, args)                                    \
+    kit = kit && (!c->name || c->name == gnode_child_##name || c->name == gnode_blended_##name);
+    GMATERIAL_METHODS(KIT_SLOT)
+#undef KIT_SLOT
+    return kit;
+}
+
+void gnode_inherit_kit_no_rel_index(GMaterial *node, GMaterial *const *children, int n)
+{
+    if (!node || !kit_slots_only(node->cls))
+        return;
+    const GMaterialClass *c = node->cls;
+    if (c->refraction == gnode_blended_refraction || c->sample == gnode_blended_sample)
+        for (int i = 0; i < n; i++) /* the blend's ideal-refraction test reads the index where a child has a ray */
+            if (!children || !children[i] || !(children[i]->flags & (GMAT_OPAQUE | GMAT_NO_IDEAL)))
+                return;
+    gnode_inherit_no_rel_index(node, children, n);
 }

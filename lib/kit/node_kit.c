@@ -129,6 +129,7 @@ int gnode_new_checked(const GMaterialClass *cls, GMaterial *const *children, int
         gnode_inherit_kit_normal(*out, children, n); /* the kit's normal slots: blends of their normals */
         gnode_inherit_kit_diagonal(*out, children, n); /* the kit's pass-on slots: sums of their pass-ons */
         gnode_inherit_kit_no_ideal(*out, children, n); /* the kit's direction slots: their rays or blends of them */
+        gnode_inherit_kit_no_rel_index(*out, children, n); /* the kit's slots only: their index reads, if any */
     }
     return rc;
 }

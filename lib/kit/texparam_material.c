@@ -65,6 +65,7 @@ int gtexparam_scaled_material(GMaterial *child, GTexColor *p, GMaterial **out, G
     gnode_inherit_no_emission(mat, &c, 1); /* the child's emission times a finite colour */
     gnode_inherit_diagonal(mat, &c, 1);    /* the child's pass-on times a vector */
     gnode_inherit_lambertian_child(mat, c);
+    gnode_inherit_no_rel_index(mat, &c, 1); /* the child's results times a colour at the point, not the index */
     if (!gtexparam_color_reads_uv(&s->color))
         gnode_inherit_no_uv(mat, &c, 1, NULL);
     *out = mat;

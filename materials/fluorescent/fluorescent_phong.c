@@ -211,7 +211,7 @@ int gfluor_phong_create(const GColorModel *model, const GReradiation *matrix, co
         fphong_destroy(&f->base);
         return rc;
     }
-    f->base.flags |= GMAT_NO_UV; /* its methods read none of the (u, v) parametrisation (material.h) */
+    f->base.flags |= GMAT_NO_UV | GMAT_NO_REL_INDEX; /* they read no (u, v) parametrisation, no index (material.h) */
     *out = &f->base;
     return G_OK;
 }

@@ -422,7 +422,7 @@ int gfluor_varnish_create(const GColorModel *model, const GReradiation *matrix, 
         varnish_destroy(&v->base);
         return rc;
     }
-    v->base.flags |= GMAT_NO_UV; /* its methods read none of the (u, v) parametrisation (material.h) */
+    v->base.flags |= GMAT_NO_UV | GMAT_NO_REL_INDEX; /* they read no (u, v) parametrisation, no index (material.h) */
     *out = &v->base;
     return G_OK;
 }

@@ -29,6 +29,10 @@
  *   -DMISIDEAL   material "misideal_lambert": a Lambertian of albedo 0.5 whose reflection_dir slot gives the mirror
  *                direction (an ideal ray a Whitted tracer would follow) while its instances set GMAT_NO_IDEAL, so
  *                renderers never ask it: only the no-ideal check sees it;
+ *   -DMISRELINDEX material "misrelindex_lambert": a Lambertian of albedo 0.5 times the point's relative index
+ *                (gsurfpoint_relative_index: 1 from vacuum onto it, as it has no index of its own) while its
+ *                instances set GMAT_NO_REL_INDEX, so a renderer hands it no index: only the no-rel-index check sees
+ *                it;
  *   -DGAIN_MIRROR material "gain_mirror": a mirror whose ideal ray passes on 1.2 times the light (albedo 1.2 on
  *                any surface, bumped or not);
  *   -DMISBENT    material "misbent_glass": clear glass of index 1.5 whose refraction_dir refracts about the
@@ -83,7 +87,8 @@ __attribute__((unused)) static int add_material(GModuleApi *api, const char *nam
 }
 
 #if defined(GAIN) || defined(SKEWED) || defined(MISDRAWN) || defined(MISFLAGGED) || defined(MISOPAQUE) ||              \
-    defined(MISNORMAL) || defined(MISDIFFUSE) || defined(MISUV) || defined(MISDIAG) || defined(MISIDEAL)
+    defined(MISNORMAL) || defined(MISDIFFUSE) || defined(MISUV) || defined(MISDIAG) || defined(MISIDEAL) ||           \
+    defined(MISRELINDEX)
 typedef struct Flat {
     GMaterial base;
 } Flat;
@@ -124,6 +129,8 @@ static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, cons
     double f = 0.5 / M_PI;
 #elif defined(MISUV)
     double f = (0.25 + 0.5 * fmin(1.0, fmax(0.0, sp->u))) / M_PI; /* reads u: GMAT_NO_UV is wrong */
+#elif defined(MISRELINDEX)
+    double f = 0.5 * gsurfpoint_relative_index(sp) / M_PI; /* reads the index: GMAT_NO_REL_INDEX is wrong */
 #else
     double f = (0.25 + 0.5 * ci * ci) / M_PI;
 #endif
@@ -152,6 +159,8 @@ static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, cons
 #define FLAT_NAME "misdiag_lambert"
 #elif defined(MISIDEAL)
 #define FLAT_NAME "misideal_lambert"
+#elif defined(MISRELINDEX)
+#define FLAT_NAME "misrelindex_lambert"
 #else
 #define FLAT_NAME "skewed_lambert"
 #endif
@@ -287,6 +296,9 @@ static int parse_flat(GReader *r, const void *vtable, void **object, GError *err
 #endif
 #ifdef MISIDEAL
     m->base.flags |= GMAT_NO_IDEAL; /* the deliberate error: the class's reflection_dir gives a ray */
+#endif
+#ifdef MISRELINDEX
+    m->base.flags |= GMAT_NO_REL_INDEX; /* the deliberate error: the class's reflection reads the relative index */
 #endif
 #ifdef MISDIAG
     m->base.flags |= GMAT_DIAGONAL; /* the deliberate error: the class's reflection mixes the light's samples */

@@ -158,6 +158,10 @@ int trace_relative_index(TraceCtx *c, GSurfPoint *sp, GColor *ri)
 {
     GColor n_from, n_to;
     int rc;
+    if (sp->material && (sp->material->flags & GMAT_NO_REL_INDEX)) { /* read by no method: not computed (trace.h) */
+        *ri = c->unit;
+        return G_OK;
+    }
     if ((rc = trace_tmp(c, TRACE_TMP_N_FROM, &n_from)) < 0 || (rc = trace_tmp(c, TRACE_TMP_N_TO, &n_to)) < 0 ||
         (rc = gcolor_scratch_uncleared(ri, c->scene->model, c->scratch)) < 0 || /* the division writes it in full */
         (rc = gmaterial_refraction_index(sp->from, sp, &n_from)) < 0 ||

@@ -87,7 +87,10 @@ const GMaterial *media_top(const Media *m);
 void media_copy(Media *out, const Media *in);
 /** The media after crossing the surface of mat: entering pushes it, leaving removes it. */
 void media_cross(const Media *in, const GMaterial *mat, int entering, Media *out);
-/** The relative refraction index n(from) / n(to) at sp, into ri (given storage from the thread's arena). */
+/** The relative index the material of sp is handed: n(from) / n(to) at sp, into ri (given storage from the thread's
+ * arena), made sp's relative index (gsurfpoint_set_relative_index). For a material with GMAT_NO_REL_INDEX, whose
+ * methods read no index, c->unit (1 in every sample: no wavelength split) without the two indices and the
+ * division, and the point's index is left unset (a method that asked would still get the true one). */
 int trace_relative_index(TraceCtx *c, GSurfPoint *sp, GColor *ri);
 /** The distance a point is moved off a surface (offset_origin) and the margin a shadow ray keeps from the surface of
  * its target (shadow_reach): a relative 2e-5 of the point's largest coordinate, far above the single precision of the

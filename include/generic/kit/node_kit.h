@@ -153,6 +153,25 @@ GENERIC_API void gnode_inherit_no_ideal(GMaterial *node, GMaterial *const *child
  * gnode_new_checked calls it for every node it makes, plug-in classes included. */
 GENERIC_API void gnode_inherit_kit_no_ideal(GMaterial *node, GMaterial *const *children, int n);
 
+/** 1 when each of the n children has GMAT_NO_REL_INDEX (material.h): a node whose own methods read no relative index
+ * and hand rel_index only to these children then gives the same results for any relative index. */
+GENERIC_API GENERIC_NODISCARD int gnode_children_no_rel_index(GMaterial *const *children, int n);
+
+/** Sets GMAT_NO_REL_INDEX on node when gnode_children_no_rel_index(children, n): for a node class whose own methods
+ * read neither their rel_index argument nor the point's relative index (gsurfpoint_relative_index,
+ * gsurfpoint_index_of) but hand them on to these children, and whose generators do not read it either (scale, image,
+ * bump, transform and the textured materials call it after construction). */
+GENERIC_API void gnode_inherit_no_rel_index(GMaterial *node, GMaterial *const *children, int n);
+
+/** Sets GMAT_NO_REL_INDEX on node when gnode_children_no_rel_index(children, n), every slot of its class is empty,
+ * the kit's pass-through gnode_child_<name> or the kit's blend gnode_blended_<name>, and, when its refraction or
+ * sample slot is the kit's blend, each child has GMAT_OPAQUE or GMAT_NO_IDEAL: the blend's refraction asks whether
+ * a pair is the ideal refraction for the point's index only where some child has an ideal refraction ray, which
+ * none has through an opaque material (refraction_dir, material.h). A blend class's pick, and the generators it
+ * reads, must not read the relative index (the kit's and the built-ins' read the point's position, (u, v) or surface
+ * index). gnode_new_checked calls it for every node it makes, plug-in classes included. */
+GENERIC_API void gnode_inherit_kit_no_rel_index(GMaterial *node, GMaterial *const *children, int n);
+
 /** 1 when each of the n children has GMAT_NO_UV (material.h) and gen, when given, is not a function of (u, v)
  * (its space, texture.h, is not GGENERATOR_SPACE_UV: a generator's space says what its value reads). */
 GENERIC_API GENERIC_NODISCARD int gnode_children_no_uv(GMaterial *const *children, int n, const GGenerator *gen);
