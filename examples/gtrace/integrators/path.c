@@ -97,6 +97,7 @@
 #include "roulette.h"
 #include "media/medium.h"
 #include "trace/sampler.h"
+#include "camera/rng.h"
 
 #include <math.h>
 
@@ -426,20 +427,11 @@ done:
     return rc;
 }
 
-/* SplitMix64's finaliser: decorrelates neighbouring pixel and sample indices. */
-static uint64_t mix64(uint64_t z)
-{
-    z += 0x9e3779b97f4a7c15ULL;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
-
 int path_trace(TraceCtx *c, const Ray *r, const Media *media, uint64_t pixel, int sample, int sampler, GColor *out)
 {
     PathCtx p = {.c = c, .sobol = sampler == SAMPLER_SOBOL, .point = sample_point(pixel, (uint32_t)sample)};
     Rng camera_rng = c->rng; /* the pixel's own sequence (its sample positions) goes on after this path */
-    rng_seed(&c->rng, mix64(pixel ^ mix64((uint64_t)sample)), 0x5851f42d4c957f2dULL);
+    rng_seed(&c->rng, rng_mix64(pixel ^ rng_mix64((uint64_t)sample)), 0x5851f42d4c957f2dULL);
     const Scene *s = c->scene;
     const ProbeEnv *env = s->env;
     for (int i = 0; env && i < s->nlights; i++) {

@@ -7,6 +7,7 @@
 #include "lights/lighting.h"
 #include "trace/sampler.h"
 #include "trace/trace.h"
+#include "check.h"
 
 #include <generic/color.h>
 
@@ -39,16 +40,6 @@ enum {
     SLOT_BAND,     /**< the wavelength group of a dispersive refraction */
     SLOTS_PER_VERTEX
 };
-
-/* Stores expr's status in rc and jumps to the label done when it is an error (below 0). */
-#define CHECK(expr)                                                                                                    \
-    do {                                                                                                               \
-        int rc_ = (expr);                                                                                              \
-        if (rc_ < 0) {                                                                                                 \
-            rc = rc_;                                                                                                  \
-            goto done;                                                                                                 \
-        }                                                                                                              \
-    } while (0)
 
 /* The path's random numbers: the thread's generator, seeded for this camera sample by path_trace. */
 static inline double path_uniform(PathCtx *p) { return rng_next(&p->c->rng); }

@@ -7,6 +7,8 @@
 #include "photons.h"
 #include "bands.h"
 #include "scene/accel.h"
+#include "check.h"
+#include "camera/rng.h"
 
 #include <generic/kit/material_kit.h>
 #include <generic/memory.h>
@@ -65,30 +67,12 @@ int photon_batch_init(PhotonBatch *b, const GColorModel *m, int paths, int per_p
     return G_OK;
 }
 
-/* SplitMix64's finaliser. */
-static uint64_t mix64(uint64_t z)
-{
-    z += 0x9e3779b97f4a7c15ULL;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
-
-#define CHECK(expr)                                                                                                    \
-    do {                                                                                                               \
-        int rc_ = (expr);                                                                                              \
-        if (rc_ < 0) {                                                                                                 \
-            rc = rc_;                                                                                                  \
-            goto done;                                                                                                 \
-        }                                                                                                              \
-    } while (0)
-
 int photon_trace(TraceCtx *c, const PhotonSource *src, const Media *media0, uint64_t index, PhotonBatch *b, int slot,
                  int direct, PhotonVisit visit, void *user)
 {
     const Scene *s = c->scene;
     Rng *rng = &c->rng;
-    rng_seed(rng, mix64(index ^ 0x243f6a8885a308d3ULL), 0xda3e39cb94b95bdbULL);
+    rng_seed(rng, rng_mix64(index ^ 0x243f6a8885a308d3ULL), 0xda3e39cb94b95bdbULL);
     b->count[slot] = 0;
     /* the light, by power */
     double p_light;
@@ -232,7 +216,7 @@ void photon_cell(const PhotonBatch *b, GVec3 p, int64_t cell[3])
 int photon_bucket(const PhotonBatch *b, const int64_t cell[3])
 {
     uint64_t h = (uint64_t)cell[0] * 73856093ULL ^ (uint64_t)cell[1] * 19349663ULL ^ (uint64_t)cell[2] * 83492791ULL;
-    return (int)(mix64(h) % (uint64_t)b->buckets);
+    return (int)(rng_mix64(h) % (uint64_t)b->buckets);
 }
 
 int photon_batch_index(PhotonBatch *b, double cell, GError *err)

@@ -27,6 +27,8 @@
 #include "lights/light_pick.h"
 #include "lights/lighting.h"
 #include "lights/probe_env.h"
+#include "check.h"
+#include "camera/rng.h"
 
 #include <generic/kit/material_kit.h>
 #include <generic/services/image.h>
@@ -75,24 +77,6 @@ int sppm_check(const RenderSettings *rs, GError *err)
         return gerror_set(err, G_ERR_INVALID, "alpha %g out of range (0, 1]", rs->sppm_alpha);
     return G_OK;
 }
-
-/* SplitMix64's finaliser. */
-static uint64_t mix64(uint64_t z)
-{
-    z += 0x9e3779b97f4a7c15ULL;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
-
-#define CHECK(expr)                                                                                                    \
-    do {                                                                                                               \
-        int rc_ = (expr);                                                                                              \
-        if (rc_ < 0) {                                                                                                 \
-            rc = rc_;                                                                                                  \
-            goto done;                                                                                                 \
-        }                                                                                                              \
-    } while (0)
 
 /* direct += beta * x */
 static int add_weighted(GColor *direct, const GColor *beta, GColor *x)
@@ -155,7 +139,7 @@ static int camera_visit(Sppm *sp_, TraceCtx *c, int pass, int x, int y, VisibleP
 {
     const Scene *s = c->scene;
     uint64_t pixel = (uint64_t)y * (uint64_t)sp_->rs->width + (uint64_t)x;
-    rng_seed(&c->rng, mix64(pixel ^ mix64((uint64_t)pass + 1)), 0x5851f42d4c957f2dULL);
+    rng_seed(&c->rng, rng_mix64(pixel ^ rng_mix64((uint64_t)pass + 1)), 0x5851f42d4c957f2dULL);
     Ray r;
     double sx = rng_next(&c->rng), sy = rng_next(&c->rng);
     camera_ray_lens(sp_->cam, x + sx, y + sy, &c->rng, &r);

@@ -27,17 +27,9 @@
 #include "lights/emissive.h"
 #include "lights/lighting.h"
 #include "lights/probe_env.h"
+#include "check.h"
 
 #include <math.h>
-
-#define CHECK(expr)                                                                                                    \
-    do {                                                                                                               \
-        int rc_ = (expr);                                                                                              \
-        if (rc_ < 0) {                                                                                                 \
-            rc = rc_;                                                                                                  \
-            goto done;                                                                                                 \
-        }                                                                                                              \
-    } while (0)
 
 /* What the material passes on towards the viewer of light `in` arriving from dir: its reflection, or its
  * refraction with the relative index ri when ri is given. */

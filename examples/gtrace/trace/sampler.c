@@ -11,6 +11,7 @@
  * the input bits above it only, which is a nested uniform scramble when the hash is good. The hash's steps are
  * Vegdahl's refinement ("Building a better LK hash", 2021) of Laine and Karras's. */
 #include "sampler.h"
+#include "camera/rng.h"
 
 /* The direction numbers v_1 .. v_32 of dimensions 0 .. 3 as 32-bit fractions: v_k = m_k / 2^k, the m_k from
  * m_1 .. m_s and the recurrence of the dimension's primitive polynomial of degree s (Bratley and Fox). */
@@ -90,28 +91,19 @@ uint32_t owen_scramble(uint32_t v, uint32_t seed)
     return reverse_bits(lk_hash(reverse_bits(v), seed));
 }
 
-/* SplitMix64's finaliser. */
-static uint64_t mix64(uint64_t z)
-{
-    z += 0x9e3779b97f4a7c15ULL;
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
-
 SamplePoint sample_point(uint64_t pixel, uint32_t index)
 {
-    return (SamplePoint){.pixel_seed = mix64(pixel ^ 0x6a09e667f3bcc909ULL), .index = index};
+    return (SamplePoint){.pixel_seed = rng_mix64(pixel ^ 0x6a09e667f3bcc909ULL), .index = index};
 }
 
 SampleGroup sample_group(const SamplePoint *p, uint32_t group)
 {
-    uint64_t a = mix64(p->pixel_seed ^ mix64((uint64_t)group));
+    uint64_t a = rng_mix64(p->pixel_seed ^ rng_mix64((uint64_t)group));
     /* the index shuffled by the same scramble: each bit flipped by the bits above it, so the pixel's first 2^m
      * samples (the bits above m all 0) stay one aligned block of 2^m points, permuted */
     return (SampleGroup){.group = group, .index = owen_scramble(p->index, (uint32_t)a),
-                         .seed = {(uint32_t)mix64(a + 1), (uint32_t)mix64(a + 2), (uint32_t)mix64(a + 3),
-                                  (uint32_t)mix64(a + 4)}};
+                         .seed = {(uint32_t)rng_mix64(a + 1), (uint32_t)rng_mix64(a + 2), (uint32_t)rng_mix64(a + 3),
+                                  (uint32_t)rng_mix64(a + 4)}};
 }
 
 double sample_group_value(const SampleGroup *g, int d)
