@@ -12,9 +12,9 @@
  * grids have one: 81, 41, 9) are never an 8-float block that overlaps the whole blocks: a block load that spans
  * two earlier stores (the overlapping block's and the whole block's) cannot take its data from the store buffer
  * and waits for both to retire, and colour operations read what the one before just wrote. So every kernel
- * stores and loads the same pieces: the 8-float blocks at multiples of 8, then pieces of 4, 2 and 1 floats as
- * n % 8 has them, each one vector operation in the element-wise kernels (GSPECTRAL_TAIL_MODE) and single floats
- * in the sums, whose order they define. */
+ * stores and loads the same pieces: the 8-float blocks at multiples of 8, then in the element-wise kernels pieces
+ * of 4, 2 and 1 floats as n % 8 has them (the 4 and the 2 one vector operation each: GSPECTRAL_TAIL_MODE), and
+ * single floats in the sums, whose order they define. */
 #ifndef GENERIC_SPECTRAL_KERNELS8_H
 #define GENERIC_SPECTRAL_KERNELS8_H
 
@@ -99,9 +99,9 @@ extern "C" {
 #define GSPECTRAL_TAIL8(n, i) for (ptrdiff_t i = (ptrdiff_t)(n) & ~(ptrdiff_t)7; i < (ptrdiff_t)(n); i++)
 
 /** The ways an element-wise kernel can do its last n % 8 samples, after the whole blocks (GSPECTRAL_TAIL_MODE):
- * one sample at a time (GSPECTRAL_TAIL8); in pieces of 4, 2 and 1 floats, each one 4-lane operation on vectors
+ * one sample at a time (GSPECTRAL_TAIL8); in pieces of 4 and 2 floats, each one 4-lane operation on vectors
  * loaded and stored in that piece's size, so that the next kernel's loads of the same pieces take their data from
- * the store buffer (GSPECTRAL_EACH_PIECE8); or as one 8-lane operation on masked loads and a masked store
+ * the store buffer, and a last single float (GSPECTRAL_EACH_PIECE8); or as one 8-lane operation on masked loads and a masked store
  * (vmaskmovps: nothing read or written outside the samples). The same results bit for bit. */
 #define GSPECTRAL_TAIL_SCALAR 0
 #define GSPECTRAL_TAIL_PIECES 1
@@ -116,9 +116,10 @@ extern "C" {
 #define GSPECTRAL_TAIL_MODE GSPECTRAL_TAIL_PIECES
 #endif
 
-/** Runs PIECE(i, k) (a macro) on the samples after GSPECTRAL_EACH_BLOCK8's whole blocks, in pieces of k = 4, 2 and
- * 1 samples from sample i (a ptrdiff_t), in that order, as n % 8 has them (5: 4 then 1). k is a constant. */
-#define GSPECTRAL_EACH_PIECE8(n, PIECE)                                                                        \
+/** Runs PIECE(i, k) (a macro) on the samples after GSPECTRAL_EACH_BLOCK8's whole blocks in pieces of k = 4 and 2
+ * samples from sample i (a ptrdiff_t), then ONE(i) on a last single one, in that order, as n % 8 has them (7: 4, 2,
+ * then 1). k is a constant. */
+#define GSPECTRAL_EACH_PIECE8(n, PIECE, ONE)                                                                   \
     do {                                                                                                       \
         ptrdiff_t gspectral_at_ = (ptrdiff_t)(n) & ~(ptrdiff_t)7;                                              \
         const int gspectral_rest_ = (int)(n) & 7;                                                              \
@@ -129,7 +130,7 @@ extern "C" {
             PIECE(gspectral_at_, 2);                                                                           \
         gspectral_at_ += gspectral_rest_ & 2;                                                                  \
         if (gspectral_rest_ & 1)                                                                               \
-            PIECE(gspectral_at_, 1);                                                                           \
+            ONE(gspectral_at_);                                                                                \
     } while (0)
 
 /** The k = 1, 2 or 4 floats at p in the first k lanes (any alignment), 0 in the others: one load of k floats
@@ -177,13 +178,15 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectra
     _mm256_maskstore_ps(p, m, (__m256)v);
 }
 
-/** The last n % 8 samples of an element-wise kernel as GSPECTRAL_TAIL_MODE says: PIECE(i, k) on each piece (as
- * GSPECTRAL_EACH_PIECE8), MASKED(e, m) once with e = n & ~7 and m = gspectral_tail_mask8(n) when there are any,
- * or SCALAR(i) on each sample. Each loads its operands before it stores, so out may alias an operand. */
+/** The last n % 8 samples of an element-wise kernel as GSPECTRAL_TAIL_MODE says: PIECE(i, k) on each piece of 4
+ * or 2 and SCALAR(i) on a last single sample (GSPECTRAL_EACH_PIECE8: a float operation costs fewer instructions
+ * than a vector one on a float loaded alone), MASKED(e, m) once with e = n & ~7 and m = gspectral_tail_mask8(n)
+ * when there are any, or SCALAR(i) on each sample. Each loads its operands before it stores, so out may alias an
+ * operand. */
 #define GSPECTRAL_TAIL_OF8(n, PIECE, MASKED, SCALAR)                                                           \
     do {                                                                                                       \
         if (GSPECTRAL_TAIL_MODE == GSPECTRAL_TAIL_PIECES)                                                      \
-            GSPECTRAL_EACH_PIECE8(n, PIECE);                                                                   \
+            GSPECTRAL_EACH_PIECE8(n, PIECE, SCALAR);                                                           \
         else if (GSPECTRAL_TAIL_MODE == GSPECTRAL_TAIL_MASKED) {                                               \
             if ((n) & 7)                                                                                       \
                 MASKED((ptrdiff_t)(n) & ~(ptrdiff_t)7, gspectral_tail_mask8((int)(n)));                        \
