@@ -101,8 +101,10 @@ extern "C" {
 /** The ways an element-wise kernel can do its last n % 8 samples, after the whole blocks (GSPECTRAL_TAIL_MODE):
  * one sample at a time (GSPECTRAL_TAIL8); in pieces of 4 and 2 floats, each one 4-lane operation on vectors
  * loaded and stored in that piece's size, so that the next kernel's loads of the same pieces take their data from
- * the store buffer, and a last single float (GSPECTRAL_EACH_PIECE8); or as one 8-lane operation on masked loads and a masked store
- * (vmaskmovps: nothing read or written outside the samples). The same results bit for bit. */
+ * the store buffer, and a last single float (GSPECTRAL_EACH_PIECE8); or as one 8-lane operation on masked loads
+ * and a masked store (vmaskmovps: nothing read or written outside the samples). The same results bit for bit.
+ * With the pieces, the brightness and colour matching sums take their last samples' terms a piece at a time too,
+ * and add them one by one in their order (the same sums). */
 #define GSPECTRAL_TAIL_SCALAR 0
 #define GSPECTRAL_TAIL_PIECES 1
 #define GSPECTRAL_TAIL_MASKED 2
@@ -507,7 +509,37 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 float gspectr
     return s;
 }
 
-/** gspectral_kbright on 8-float vectors (equal bit for bit). */
+/** s plus the first k = 2 or 4 lanes of p, each converted to double, one after the other (k a constant). */
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 double gspectral_add_lanes_d(double s,
+                                                                                              gspectral_v4 p, int k)
+{
+    typedef double v2d __attribute__((vector_size(16)));
+    v2d lo = (v2d)_mm_cvtps_pd((__m128)p);
+    s += lo[0];
+    s += lo[1];
+    if (k == 4) {
+        v2d hi = (v2d)_mm_cvtps_pd(_mm_movehl_ps((__m128)p, (__m128)p));
+        s += hi[0];
+        s += hi[1];
+    }
+    return s;
+}
+
+/** s plus the first k = 2 or 4 lanes of p, one after the other in float (k a constant). */
+__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 float gspectral_add_lanes_f(float s, gspectral_v4 p,
+                                                                                             int k)
+{
+    s += p[0];
+    s += p[1];
+    if (k == 4) {
+        s += p[2];
+        s += p[3];
+    }
+    return s;
+}
+
+/** gspectral_kbright on 8-float vectors (equal bit for bit). With the tail in pieces (GSPECTRAL_TAIL_MODE), the
+ * last samples' terms are taken a piece at a time as vectors, then added to the sum one by one in their order. */
 __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 double gspectral_kbright8(const float *w,
                                                                                            const float *a, int n)
 {
@@ -516,6 +548,16 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 double gspect
     int i;
     gspectral_v4 acc = gspectral_vsum8(GSPECTRAL_WABS, w, a, n, &i);
     double s = (double)acc[0] + acc[1] + acc[2] + acc[3];
+    if (GSPECTRAL_TAIL_MODE == GSPECTRAL_TAIL_PIECES) {
+#define GSPECTRAL_BRIGHT8_PIECE(j, k)                                                                          \
+    s = gspectral_add_lanes_d(                                                                                 \
+        s, gspectral_vterm(GSPECTRAL_WABS, gspectral_vload_piece(w + (j), k), gspectral_vload_piece(a + (j), k)), k)
+#define GSPECTRAL_BRIGHT8_ONE(j) s += w[j] * fabsf(a[j])
+        GSPECTRAL_EACH_PIECE8(n, GSPECTRAL_BRIGHT8_PIECE, GSPECTRAL_BRIGHT8_ONE);
+#undef GSPECTRAL_BRIGHT8_PIECE
+#undef GSPECTRAL_BRIGHT8_ONE
+        return s;
+    }
     for (; i < n; i++)
         s += w[i] * fabsf(a[i]);
     return s;
@@ -580,10 +622,30 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectra
         GSPECTRAL_EACH_BLOCK8(end, GSPECTRAL_XYZ8_BLOCK);
 #undef GSPECTRAL_XYZ8_BLOCK
     float tail[3] = {0.0f, 0.0f, 0.0f};
-    for (ptrdiff_t k = 0; k < n - end; k++) { /* as gspectral_kxyz_tail: sample end + k, lane k of block te */
-        tail[0] += a[end + k] * te[k];
-        tail[1] += a[end + k] * te[k + 8];
-        tail[2] += a[end + k] * te[k + 16];
+    if (GSPECTRAL_TAIL_MODE == GSPECTRAL_TAIL_PIECES) { /* the products a piece at a time, added one by one */
+#define GSPECTRAL_XYZ8_PIECE(j, k)                                                                             \
+    do {                                                                                                       \
+        const float *w_ = te + ((j) - end); /* the piece's lanes of block te, whose 8 lanes all exist */       \
+        gspectral_v4 v_ = gspectral_vload_piece(a + (j), k);                                                   \
+        tail[0] = gspectral_add_lanes_f(tail[0], v_ * gspectral_vload(w_), k);                                 \
+        tail[1] = gspectral_add_lanes_f(tail[1], v_ * gspectral_vload(w_ + 8), k);                             \
+        tail[2] = gspectral_add_lanes_f(tail[2], v_ * gspectral_vload(w_ + 16), k);                            \
+    } while (0)
+#define GSPECTRAL_XYZ8_ONE(j)                                                                                  \
+    do {                                                                                                       \
+        tail[0] += a[j] * te[(j) - end];                                                                       \
+        tail[1] += a[j] * te[(j) - end + 8];                                                                   \
+        tail[2] += a[j] * te[(j) - end + 16];                                                                  \
+    } while (0)
+        GSPECTRAL_EACH_PIECE8(n, GSPECTRAL_XYZ8_PIECE, GSPECTRAL_XYZ8_ONE);
+#undef GSPECTRAL_XYZ8_PIECE
+#undef GSPECTRAL_XYZ8_ONE
+    } else {
+        for (ptrdiff_t k = 0; k < n - end; k++) { /* as gspectral_kxyz_tail: sample end + k, lane k of block te */
+            tail[0] += a[end + k] * te[k];
+            tail[1] += a[end + k] * te[k + 8];
+            tail[2] += a[end + k] * te[k + 16];
+        }
     }
     /* the lanes in double: hadd gives (l0 + l1) in the low half and (l2 + l3) in the high one, per coordinate */
     __m256d dx = _mm256_cvtps_pd((__m128)gspectral_vfold8(x)), dy = _mm256_cvtps_pd((__m128)gspectral_vfold8(y));
