@@ -2,9 +2,10 @@
  * a time, in pieces of 4, 2 and 1 floats, and as one masked 8-lane operation (vmaskmovps loads and store), on this
  * processor: nanoseconds per operation of each and the ratios to the first, medians of interleaved rounds with
  * min-max, for every tail length (17 to 23 samples: 2 whole blocks and 1 to 7 more) and the common grids' 41 and
- * 81 (one more sample), then the sum over a chain of all the operations. Each operation works in place on the result of the one
- * before (what a renderer's colour arithmetic does), so the time includes a load waiting for the store before it.
- * Prints figures; never fails on time. spectral_kernels8.h's GSPECTRAL_TAIL_MODE is chosen from them. */
+ * 81 (one more sample), then the sum over a chain of all the operations. Each operation works in place on the
+ * result of the one before (what a renderer's colour arithmetic does), so the time includes a load waiting for the
+ * store before it. Prints figures; never fails on time. spectral_kernels8.h's GSPECTRAL_TAIL_MODE is chosen from
+ * them. */
 #include "kernel_tails_ops.h"
 
 #include <stdio.h>
