@@ -95,7 +95,7 @@ extern "C" {
     } while (0)
 
 /** A loop over the samples after GSPECTRAL_EACH_BLOCK8's whole blocks (ptrdiff_t i from n & ~7 to n - 1), as
- * the head of the statement that follows: the tail every kernel does one sample at a time. */
+ * the head of the statement that follows: the last samples one at a time (the sums, and GSPECTRAL_TAIL_SCALAR). */
 #define GSPECTRAL_TAIL8(n, i) for (ptrdiff_t i = (ptrdiff_t)(n) & ~(ptrdiff_t)7; i < (ptrdiff_t)(n); i++)
 
 /** The ways an element-wise kernel can do its last n % 8 samples, after the whole blocks (GSPECTRAL_TAIL_MODE):
@@ -111,9 +111,10 @@ extern "C" {
 
 /** How the element-wise kernels do their last n % 8 samples (above); a file may define it before including the
  * kernels. Pieces by default: on an AMD EPYC (Zen 4) a kernel that reads the masked store of the one before
- * waits for it to retire (a masked store does not forward), so a chain of operations in place takes 1.6 to 2.7x
- * the time with the masked tail, and 0.68 (7 samples) to 1.04x (1 sample) with the pieces, against one sample at
- * a time (bench/bench_kernel_tails.c). */
+ * waits for it to retire (a masked store does not forward), so a chain of operations in place takes 1.6 to 2.8x
+ * the time with the masked tail against one sample at a time, and with the pieces 0.70x (a tail of 7) to 1.02x (2);
+ * a tail of 1 is the same float operation, behind three tests where the length is not a constant
+ * (GSPECTRAL_ON_COMMON_LENGTH): 1.13x at 17 samples (bench/bench_kernel_tails.c, bench/README.md). */
 #ifndef GSPECTRAL_TAIL_MODE
 #define GSPECTRAL_TAIL_MODE GSPECTRAL_TAIL_PIECES
 #endif
