@@ -1,13 +1,17 @@
 /* test_spectrum_fast.c - the kit's per-ray kernels (spectral_kernels.h, spectral_kernels8.h) give their scalar
  * definitions' results bit for bit (memcmp), on every length from 1 to 140 and on 255, 256, 257, 401, 531, 1024 and
- * 1681 samples: element-wise add, mul, scale, div, fill and axpy (out apart from the operands, out in place of
- * either operand, nothing written past the end), the finiteness and sign test, and the sums (magnitudes, dot
- * products, weighted magnitudes, brightness, colour matching) in their documented order: 8 float lanes over the
- * whole blocks of 8, the lanes folded in pairs, the last samples one by one. Both the 4-float versions and, where
- * the processor has AVX2, the 8-float ones (whole blocks as straight-line code entered by one jump), with zeros of
- * both signs, NaN, infinities, huge and denormal samples, zero divisors. Then the spectrum model's operations
+ * 1681 samples: element-wise add, mul, scale, div, fill, axpy, copy and mul then scale (out apart from the
+ * operands, out in place of either operand, at every alignment, nothing written before the start or past the end;
+ * in the 8-float versions the last n % 8 samples are pieces of 4, 2 and 1 floats), the finiteness and sign test,
+ * and the sums (magnitudes, dot products, weighted magnitudes, brightness, colour matching) in their documented
+ * order: 8 float lanes over the whole blocks of 8, the lanes folded in pairs, the last samples one by one. Both
+ * the 4-float versions and, where the processor has AVX2, the 8-float ones (whole blocks as straight-line code
+ * entered by one jump), also compiled with their other ways of doing the last samples (one by one, and one masked
+ * operation: tests/kernel_tails/), with zeros of both signs, NaN, infinities, huge and denormal samples, zero
+ * divisors. Then the spectrum model's operations
  * (through gcolor_*, whichever body the loader picked) against the 4-float kernels on grids of 9, 41, 81, 401 and
- * 531 samples: the same results, in place too.
+ * 531 samples and on grids whose last block has 1 to 7 samples (5, 17, 19 to 23, 26): the same results, in place
+ * too.
  *
  * Every NaN in the inputs is x86's default NaN (sign set, no payload), the one an invalid operation makes: which
  * of two NaN operands an operation passes on is the compiler's choice of operand order, not the kernel's order of
@@ -29,6 +33,7 @@
 #include "generic/color.h"
 #include "generic/kit/spectral.h"
 #include "generic/kit/spectral_kernels.h"
+#include "kernel_tails/kernel_tails.h"
 #include "test_util.h"
 
 enum { MAX_N = 1681, SMALL_N = 140, ROUNDS = 6, GUARD = 8 };
@@ -166,8 +171,9 @@ static int ref_finite(const float *a, int n, int nonneg)
 }
 
 /* The element-wise operations: 0 add, 1 mul, 2 scale (b unused), 3 div, 4 fill (a, b unused), 5 axpy, 6 copy
- * (b unused; the 4-float side is memmove, what gcolor_copy does without AVX2). */
-enum { ADD, MUL, SCALE, DIV, FILL, AXPY, COPY, NOPS };
+ * (b unused; the 4-float side is memmove, what gcolor_copy does without AVX2), 7 mul then scale (gcolor_mul_scaled:
+ * the product rounded to float, then scaled). */
+enum { ADD, MUL, SCALE, DIV, FILL, AXPY, COPY, MUL_SCALED, NOPS };
 
 static float ref_elem(int op, float a, float b, double s)
 {
@@ -178,6 +184,10 @@ static float ref_elem(int op, float a, float b, double s)
     case DIV: return b != 0.0f ? a / b : 0.0f;
     case FILL: return (float)s;
     case COPY: return a;
+    case MUL_SCALED: {
+        float x = a * b;
+        return x * (float)s;
+    }
     default: return b + (float)(a * s);
     }
 }
@@ -195,6 +205,7 @@ static void elem4(int op, float *o, const float *a, const float *b, double s, in
     case DIV: gspectral_kdiv(o, a, b, n); break;
     case FILL: gspectral_kfill(o, (float)s, n); break;
     case COPY: memmove(o, a, (size_t)n * sizeof(float)); break;
+    case MUL_SCALED: gspectral_kmul_scaled(o, a, b, (float)s, n); break;
     default: gspectral_kaxpyd(o, s, a, b, n); break;
     }
 }
@@ -226,6 +237,7 @@ static GSPECTRAL_TARGET_AVX2 void elem8(int op, float *o, const float *a, const 
     case DIV: gspectral_kdiv8(o, a, b, n); break;
     case FILL: gspectral_kfill8(o, (float)s, n); break;
     case COPY: gspectral_kcopy8(o, a, n); break;
+    case MUL_SCALED: gspectral_kmul_scaled8(o, a, b, (float)s, n); break;
     default: gspectral_kaxpyd8(o, s, a, b, n); break;
     }
 }
@@ -244,12 +256,24 @@ static GSPECTRAL_TARGET_AVX2 void sums8(const float *a, const float *b, const fl
 
 /* ---- the comparisons ---- */
 
+/* The operands a and b and the result o start off floats (0 to 7) into their allocations, so that the kernels meet
+ * every alignment; o has GUARD floats before and after its n. */
 typedef struct Bufs {
-    float *a, *b, *t, *want, *o; /* o has GUARD floats past n */
+    float *a, *b, *t, *want, *o;
+    float *a_block, *b_block, *o_block; /* the allocations */
 } Bufs;
 
+/* The GUARD floats before o and after its n hold sentinel. */
+static void check_guards(const float *o, int n, float sentinel)
+{
+    for (int i = -GUARD; i < 0; i++)
+        assert_same(&o[i], &sentinel, sizeof sentinel);
+    for (int i = n; i < n + GUARD; i++)
+        assert_same(&o[i], &sentinel, sizeof sentinel);
+}
+
 /* One element-wise operation of one width on a and b against the definition: apart, in place of a, in place of b
- * (axpy's usual form), nothing written past n. */
+ * (axpy's usual form), nothing written before o or past its n. */
 static void check_elem(ElemFn fn, int op, const Bufs *m, double s, int n)
 {
     size_t len = strlen(what);
@@ -258,18 +282,19 @@ static void check_elem(ElemFn fn, int op, const Bufs *m, double s, int n)
     size_t bytes = (size_t)n * sizeof(float);
     for (int i = 0; i < n; i++)
         m->want[i] = ref_elem(op, m->a[i], m->b[i], s);
-    for (int i = 0; i < n + GUARD; i++)
+    for (int i = -GUARD; i < n + GUARD; i++)
         m->o[i] = sentinel;
     fn(op, m->o, m->a, m->b, s, n);
     assert_same(m->o, m->want, bytes);
-    for (int i = n; i < n + GUARD; i++)
-        assert_same(&m->o[i], &sentinel, sizeof sentinel);
+    check_guards(m->o, n, sentinel);
     memcpy(m->o, m->a, bytes);
     fn(op, m->o, m->o, m->b, s, n);
     assert_same(m->o, m->want, bytes);
+    check_guards(m->o, n, sentinel);
     memcpy(m->o, m->b, bytes);
     fn(op, m->o, m->a, m->o, s, n);
     assert_same(m->o, m->want, bytes);
+    check_guards(m->o, n, sentinel);
     what[len] = '\0';
 }
 
@@ -300,23 +325,29 @@ static void check_sums(const Sums *got, const float *a, const float *b, const fl
         assert_false(isnan(bright) || isnan(xyz[0]) || isnan(ref_sum(GSPECTRAL_DOT, a, b, n)));
 }
 
-/* Operands of exactly n floats (the sanitizers see any read past them); the table of (n + 7) / 8 blocks. */
-static Bufs bufs_alloc(int n)
+/* Operands that end with their allocations (the sanitizers see any read past them), off floats in; the table of
+ * (n + 7) / 8 blocks. */
+static Bufs bufs_alloc(int n, int off)
 {
-    Bufs m = {malloc((size_t)n * sizeof(float)), malloc((size_t)n * sizeof(float)),
-              malloc((size_t)(n + 7) / 8 * 24 * sizeof(float)), malloc((size_t)n * sizeof(float)),
-              malloc((size_t)(n + GUARD) * sizeof(float))};
-    assert_true(m.a && m.b && m.t && m.want && m.o);
+    Bufs m = {.a_block = malloc((size_t)(off + n) * sizeof(float)),
+              .b_block = malloc((size_t)(off + n) * sizeof(float)),
+              .t = malloc((size_t)(n + 7) / 8 * 24 * sizeof(float)),
+              .want = malloc((size_t)n * sizeof(float)),
+              .o_block = malloc((size_t)(GUARD + off + n + GUARD) * sizeof(float))};
+    assert_true(m.a_block && m.b_block && m.t && m.want && m.o_block);
+    m.a = m.a_block + off;
+    m.b = m.b_block + off;
+    m.o = m.o_block + GUARD + off;
     return m;
 }
 
 static void bufs_free(Bufs *m)
 {
-    free(m->a);
-    free(m->b);
+    free(m->a_block);
+    free(m->b_block);
     free(m->t);
     free(m->want);
-    free(m->o);
+    free(m->o_block);
 }
 
 static int have_avx2(void)
@@ -331,10 +362,10 @@ static int have_avx2(void)
 /* Every kernel of both widths on n samples, ROUNDS random operands: two with every kind of edge case (where the
  * sums are mostly NaN), one with NaNs with a payload in a and finite b and table, then finite ones only (where the
  * sums are not NaN): a positive a, which the finiteness and sign test passes, zero divisors only, any. */
-static void check_length(int n)
+static void check_length(int n, int off)
 {
     const double scales[] = {0.5, -0.0, 0.0, 1e300, -3.25, 1e-45, INFINITY, 7.123456789012345};
-    Bufs m = bufs_alloc(n);
+    Bufs m = bufs_alloc(n, off);
     for (int r = 0; r < ROUNDS; r++) {
         fill_random(m.a, n, r < 2 ? ANY : r == 2 ? PAYLOAD : FINITE);
         fill_random(m.b, n, r < 2 ? ANY : FINITE);
@@ -346,20 +377,33 @@ static void check_length(int n)
             memset(m.b, 0, (size_t)n * sizeof(float));
         double s = r >= 2 ? 0.5 + r : scales[(n + r) % tu_floats(scales)];
         Sums got;
-        snprintf(what, sizeof what, "4-float kernels, %d samples, round %d", n, r);
+        snprintf(what, sizeof what, "4-float kernels, %d samples at float %d, round %d", n, off, r);
         for (int op = 0; op < NOPS; op++)
             check_elem(elem4, op, &m, s, n);
         sums4(m.a, m.b, m.t, n, &got);
         check_sums(&got, m.a, m.b, m.t, n, r >= 3);
 #ifdef GSPECTRAL_AVX2
         if (have_avx2()) {
-            snprintf(what, sizeof what, "8-float kernels, %d samples, round %d", n, r);
+            snprintf(what, sizeof what, "8-float kernels, %d samples at float %d, round %d", n, off, r);
             for (int op = 0; op < NOPS; op++)
                 check_elem(elem8, op, &m, s, n);
             sums8(m.a, m.b, m.t, n, &got);
             check_sums(&got, m.a, m.b, m.t, n, r >= 3);
         }
 #endif
+        /* the same kernels with the other ways of doing the last samples (GSPECTRAL_TAIL_MODE) */
+        const TailKernels ways[] = {tail_kernels_scalar(), tail_kernels_masked()};
+        for (size_t w = 0; w < tu_floats(ways); w++) {
+            if (!ways[w].elem)
+                continue;
+            snprintf(what, sizeof what, "8-float kernels, %s, %d samples at float %d, round %d", ways[w].name, n,
+                     off, r);
+            for (int op = 0; op < NOPS; op++)
+                check_elem(ways[w].elem, op, &m, s, n);
+            sums4(m.a, m.b, m.t, n, &got); /* the sums the way does not change */
+            ways[w].sums(m.a, m.b, m.t, n, &got.bright, got.xyz);
+            check_sums(&got, m.a, m.b, m.t, n, r >= 3);
+        }
     }
     bufs_free(&m);
 }
@@ -367,11 +411,16 @@ static void check_length(int n)
 static void test_kernels_every_length(void **state)
 {
     (void)state;
-    for (int n = 1; n <= SMALL_N; n++)
-        check_length(n);
+    /* every alignment of the operands and the result modulo 32 bytes (fewer under the sanitizers) */
+    const int offsets[] = {0, 1, 2, 3, 4, 5, 6, 7};
+    const int noffsets = TU_SANITIZED ? 3 : (int)tu_floats(offsets);
+    for (int k = 0; k < noffsets; k++)
+        for (int n = 1; n <= SMALL_N; n++)
+            check_length(n, offsets[k * (TU_SANITIZED ? 3 : 1)]);
     for (size_t k = 0; k < tu_floats(large_n); k++)
-        check_length(large_n[k]);
-    print_message("kernels equal their definitions bit for bit, 1 to %d samples and up to %d (%s)\n", SMALL_N, MAX_N,
+        check_length(large_n[k], (int)k % 8);
+    print_message("kernels equal their definitions bit for bit, 1 to %d samples at %d offsets and up to %d (%s)\n",
+                  SMALL_N, noffsets, MAX_N,
                   have_avx2() ? "4-float and 8-float versions" : "4-float versions: no AVX2 here");
 }
 
@@ -444,6 +493,12 @@ static void check_model_ops(const GColorModel *m, const GColor *a, const GColor 
     assert_int_equal(gcolor_copy(x, b), G_OK);
     assert_int_equal(gcolor_axpy(x, s, a, x), G_OK);
     assert_same_color(x, want);
+    gspectral_kmul_scaled(want->v, a->v, b->v, (float)s, n);
+    assert_int_equal(gcolor_mul_scaled(x, a, b, s), G_OK);
+    assert_same_color(x, want);
+    assert_int_equal(gcolor_copy(x, a), G_OK);
+    assert_int_equal(gcolor_mul_scaled(x, x, b, s), G_OK);
+    assert_same_color(x, want);
     double bright = gspectral_kbright(sp->lum, a->v, n), got_bright = gcolor_brightness(a);
     assert_same(&got_bright, &bright, sizeof bright);
     for (int role = 0; role < 2; role++) {
@@ -495,7 +550,8 @@ static void check_model(const GColorModelOptions *opt, int want_n)
     assert_near(gcolor_brightness(&a), 0.5, 1e-6);
     double xyz[3];
     assert_int_equal(gcolor_to_xyz(&a, GCOLOR_REFLECTANCE, xyz), G_OK);
-    assert_near(xyz[1], 0.5, 1e-3); /* a reflectance of 0.5 under the white point: Y = 0.5 */
+    if (!opt || opt->max_nm == 0.0 || opt->max_nm >= 780.0) /* a grid over the visible range */
+        assert_near(xyz[1], 0.5, 1e-3); /* a reflectance of 0.5 under the white point: Y = 0.5 */
     gscratch_destroy(arena);
     gcolormodel_destroy(m);
 }
@@ -509,8 +565,12 @@ static void test_model_default_grid(void **state)
 static void test_model_other_grids(void **state)
 {
     (void)state;
-    const GColorModelOptions opts[] = {{10.0, 0, 0, 0}, {50.0, 0, 0, 0}, {1.0, 0, 0, 0}, {1.0, 300.0, 830.0, 0}};
-    const int n[] = {41, 9, 401, 531};
+    /* and grids whose last block has 1 to 7 samples, or whose only one does */
+    const GColorModelOptions opts[] = {{10.0, 0, 0, 0},       {50.0, 0, 0, 0},       {1.0, 0, 0, 0},
+                                       {1.0, 300.0, 830.0, 0}, {20.0, 0, 0, 0},       {25.0, 0, 0, 0},
+                                       {16.0, 0, 0, 0},       {10.0, 380.0, 560.0, 0}, {10.0, 380.0, 570.0, 0},
+                                       {10.0, 380.0, 590.0, 0}, {10.0, 380.0, 600.0, 0}, {100.0, 0, 0, 0}};
+    const int n[] = {41, 9, 401, 531, 21, 17, 26, 19, 20, 22, 23, 5};
     for (size_t k = 0; k < tu_floats(opts); k++)
         check_model(&opts[k], n[k]);
 }

@@ -67,15 +67,7 @@ static inline void mul_scaled_from(float *out, const float *a, const float *b, f
 
 static void mul_scaled_v4(float *out, const float *a, const float *b, float s, int n)
 {
-    int i = 0;
-#ifdef GSPECTRAL_VECTOR
-    gspectral_v4 sv = {s, s, s, s};
-    for (; i + 4 <= n; i += 4) {
-        gspectral_v4 x = gspectral_vload(a + i) * gspectral_vload(b + i);
-        gspectral_vstore(out + i, x * sv);
-    }
-#endif
-    mul_scaled_from(out, a, b, s, i, n);
+    gspectral_kmul_scaled(out, a, b, s, n);
 }
 
 /* gcolor_mul_scaled as the composition it stands for (apart, so that the common case saves no registers). */
@@ -114,20 +106,6 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 int all_zero_
     return _mm256_testz_si256(acc, _mm256_set1_epi32(0x7fffffff)) && all_zero_from(v, n & ~7, n);
 }
 
-/* n >= 8 (gcolor_mul_scaled takes shorter vectors to mul_scaled_from) */
-__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void mul_scaled_n8(float *out, const float *a,
-                                                                                     const float *b, float s, int n)
-{
-    gspectral_v8 sv = {s, s, s, s, s, s, s, s};
-    GSPECTRAL_KEEP8(sv);
-    /* out may be a or b: each block is loaded before it is stored, the last samples one by one after the blocks */
-#define MUL_SCALED_BLOCK(i, k)                                                                                 \
-    gspectral_vstore8(out + (i) + (k), gspectral_vload8(a + (i) + (k)) * gspectral_vload8(b + (i) + (k)) * sv)
-    GSPECTRAL_EACH_BLOCK8(n, MUL_SCALED_BLOCK);
-#undef MUL_SCALED_BLOCK
-    mul_scaled_from(out, a, b, s, n & ~7, n);
-}
-
 /* the common grids' lengths as constants, as the kit's operations take them (spectral_kernels8.h) */
 static GSPECTRAL_TARGET_AVX2 int all_zero_v8(const float *v, int n)
 {
@@ -138,7 +116,7 @@ static GSPECTRAL_TARGET_AVX2 int all_zero_v8(const float *v, int n)
 
 static GSPECTRAL_TARGET_AVX2 void mul_scaled_v8(float *out, const float *a, const float *b, float s, int n)
 {
-#define MUL_SCALED(len) mul_scaled_n8(out, a, b, s, len)
+#define MUL_SCALED(len) gspectral_kmul_scaled8(out, a, b, s, len)
     GSPECTRAL_ON_COMMON_LENGTH(n, MUL_SCALED);
 #undef MUL_SCALED
 }

@@ -95,6 +95,23 @@ static inline void gspectral_kscale(float *o, const float *a, float s, int n)
         o[i] = a[i] * s;
 }
 
+/** o = (a * b) * s sample by sample, the product rounded to float before the scaling (mul, then scale) */
+static inline void gspectral_kmul_scaled(float *o, const float *a, const float *b, float s, int n)
+{
+    int i = 0;
+#ifdef GSPECTRAL_VECTOR
+    gspectral_v4 sv = {s, s, s, s};
+    for (; i + 4 <= n; i += 4) {
+        gspectral_v4 x = gspectral_vload(a + i) * gspectral_vload(b + i);
+        gspectral_vstore(o + i, x * sv);
+    }
+#endif
+    for (; i < n; i++) {
+        float x = a[i] * b[i];
+        o[i] = x * s;
+    }
+}
+
 /** o += a * s */
 static inline void gspectral_kaxpy(float *o, const float *a, float s, int n)
 {
