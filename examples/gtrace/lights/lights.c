@@ -62,18 +62,18 @@ static int interface_transmit(TraceCtx *c, GSurfPoint *hp, GVec3 dir, const GCol
     int rc, have_both = 0;
     if ((rc = trace_cached_index(c, hp->from, hp->to, hp, &ri_hp)) < 0)
         return rc;
+    /* the relative index set on the point the material is asked at (n(from) / n(to) there): its scalar is taken
+     * once (or was, for a kept one), and the colour is not changed while the point is used */
     if (!ri_hp) {
         if ((rc = both_indices(hp, nf, nt)) < 0 || (rc = gcolor_div(ri, nf, nt)) < 0)
             return rc;
         have_both = 1;
         ri_hp = ri;
+        gsurfpoint_set_relative_index(hp, ri);
     }
     GSurfPoint other;
     GSurfPoint *at = hp;
     GVec3 view = dir, to_light;
-    /* the relative index set on the point the material is asked at (n(from) / n(to) there): its scalar is taken
-     * once, and the colour is not changed while the point is used */
-    gsurfpoint_set_relative_index(hp, ri_hp);
     const GColor *ri_at = ri_hp;
     if (gsurfpoint_relative_index(hp) > 1.0) { /* leaving a denser medium: the point seen from the thinner side */
         other = *hp;
@@ -88,8 +88,8 @@ static int interface_transmit(TraceCtx *c, GSurfPoint *hp, GVec3 dir, const GCol
             if ((!have_both && (rc = both_indices(hp, nf, nt)) < 0) || (rc = gcolor_div(nf, nt, nf)) < 0)
                 return rc;
             ri_other = nf;
+            gsurfpoint_set_relative_index(&other, nf);
         }
-        gsurfpoint_set_relative_index(&other, ri_other);
         ri_at = ri_other;
         at = &other;
         view = gvec3_neg(dir);

@@ -182,21 +182,22 @@ int trace_cached_index(TraceCtx *c, const GMaterial *from, const GMaterial *to, 
     *ri = NULL;
     if (!constant_index(from) || !constant_index(to))
         return G_OK;
-    int n = c->ri_filled;
-    for (int i = 0; i < n; i++)
-        if (c->ri_cache[i].from == from && c->ri_cache[i].to == to) {
-            *ri = &c->ri_cache[i].ri;
+    int n = c->ri_filled, i = 0;
+    while (i < n && (c->ri_cache[i].from != from || c->ri_cache[i].to != to))
+        i++;
+    TraceRelIndex *e = &c->ri_cache[i < TRACE_RI_SLOTS ? i : 0];
+    if (i == n) { /* a pair not met yet: into the next entry, if any */
+        if (n >= TRACE_RI_SLOTS || e->ri.storage == GCOLOR_STORAGE_NONE) /* full, or no storage made */
             return G_OK;
-        }
-    if (n >= TRACE_RI_SLOTS || c->ri_cache[n].ri.storage == GCOLOR_STORAGE_NONE) /* full, or no storage made */
-        return G_OK;
-    TraceRelIndex *e = &c->ri_cache[n];
-    int rc = divide_indices(c, from, to, sp, &e->ri);
-    if (rc < 0)
-        return rc;
-    e->from = from;
-    e->to = to;
-    c->ri_filled = n + 1;
+        int rc = divide_indices(c, from, to, sp, &e->ri);
+        if (rc < 0)
+            return rc;
+        e->from = from;
+        e->to = to;
+        e->scalar = gsurfpoint_scalar_index(&e->ri);
+        c->ri_filled = n + 1;
+    }
+    gsurfpoint_set_relative_index_scalar(sp, &e->ri, e->scalar);
     *ri = &e->ri;
     return G_OK;
 }
@@ -208,14 +209,12 @@ int trace_relative_index(TraceCtx *c, GSurfPoint *sp, GColor *room, const GColor
         *ri = &c->unit;
         return G_OK;
     }
-    if ((rc = trace_cached_index(c, sp->from, sp->to, sp, ri)) < 0)
+    if ((rc = trace_cached_index(c, sp->from, sp->to, sp, ri)) < 0 || *ri) /* kept, and set on sp with its scalar */
         return rc;
-    if (!*ri) {
-        if ((rc = gcolor_scratch_uncleared(room, c->scene->model, c->scratch)) < 0 || /* the division writes it */
-            (rc = divide_indices(c, sp->from, sp->to, sp, room)) < 0)
-            return rc;
-        *ri = room;
-    }
-    gsurfpoint_set_relative_index(sp, *ri); /* what the material's reflection reads: not divided again */
+    if ((rc = gcolor_scratch_uncleared(room, c->scene->model, c->scratch)) < 0 || /* the division writes it */
+        (rc = divide_indices(c, sp->from, sp->to, sp, room)) < 0)
+        return rc;
+    *ri = room;
+    gsurfpoint_set_relative_index(sp, room); /* what the material's reflection reads: not divided again */
     return G_OK;
 }

@@ -40,6 +40,7 @@ enum {
 typedef struct TraceRelIndex {
     const GMaterial *from, *to;
     GColor ri;
+    double scalar; /**< gsurfpoint_scalar_index(&ri), taken once: what a point set with it reads */
 } TraceRelIndex;
 
 /** Per-thread tracing state. */
@@ -112,7 +113,8 @@ void media_cross(const Media *in, const GMaterial *mat, int entering, Media *out
 int trace_relative_index(TraceCtx *c, GSurfPoint *sp, GColor *room, const GColor **ri);
 /** The kept relative index n(from) / n(to) of two materials with GMAT_CONSTANT_INDEX (NULL: vacuum) into *ri: found
  * among c->ri_cache, or computed at sp (refraction_index of both and gcolor_div, as trace_relative_index computes it
- * at a point, so the same bits) into the next free entry. *ri is NULL, with G_OK, when a side may vary, c has no
+ * at a point, so the same bits) into the next free entry, and made sp's relative index with its kept scalar
+ * (gsurfpoint_set_relative_index_scalar). *ri is NULL, with G_OK and sp unchanged, when a side may vary, c has no
  * kept indices (a context without temporaries) or every entry holds another pair: the caller computes it itself. */
 int trace_cached_index(TraceCtx *c, const GMaterial *from, const GMaterial *to, GSurfPoint *sp, const GColor **ri);
 /** The distance a point is moved off a surface (offset_origin) and the margin a shadow ray keeps from the surface of
