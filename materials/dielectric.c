@@ -523,6 +523,7 @@ static int dielectric_create(const GColorModel *model, const GDielectricParams *
         d->base.flags |= GMAT_NO_UV;
     if (!d->tinted || d->tint.kind == GCOLOR_VECTOR) /* F * illum (* tint), (1 - F) * illum: sample by sample */
         d->base.flags |= GMAT_DIAGONAL;
+    d->base.flags |= GMAT_CONSTANT_INDEX; /* its index is a colour made once, read at no point */
     *out = &d->base;
     return G_OK;
 }

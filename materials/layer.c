@@ -531,6 +531,7 @@ static int layer_create(const GColorModel *model, GMaterial *top, GMaterial *bot
     m->flags |= top->flags & bottom->flags & (GMAT_NO_UV | GMAT_DIAGONAL);
     if (gtexparam_number_reads_uv(&l->tex_thickness) || gtexparam_color_reads_uv(&l->tex_albedo))
         m->flags &= ~(unsigned)GMAT_NO_UV;
+    m->flags |= top->flags & GMAT_CONSTANT_INDEX; /* its index is the top's */
     *out = m;
     return G_OK;
 }

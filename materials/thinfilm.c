@@ -345,6 +345,7 @@ static int thinfilm_create(const GColorModel *model, const GTexNumber *thickness
                     (GMAT_NO_EMISSION | GMAT_OPAQUE | GMAT_GEOMETRIC_NORMAL | GMAT_NO_UV | GMAT_DIAGONAL);
         if (gtexparam_number_reads_uv(thickness) || gtexparam_number_reads_uv(n) || gtexparam_number_reads_uv(k))
             m->flags &= ~(unsigned)GMAT_NO_UV;
+        m->flags |= f->under->flags & GMAT_CONSTANT_INDEX; /* its index is the base's */
         if (table)
             film_table(f);
         *out = m;

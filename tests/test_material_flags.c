@@ -10,6 +10,9 @@
  *  - GMAT_LAMBERTIAN: lambert has it, no other built-in material (test_material_lambertian.c: nodes, the property);
  *  - GMAT_NO_IDEAL: which leaves and nodes get it, and that the dispatch's answer without a call is the slots';
  *  - GMAT_NO_REL_INDEX: which leaves and nodes get it, and that their slots do not see the relative index;
+ *  - GMAT_CONSTANT_INDEX: which leaves and nodes get it (every built-in; the kit's pass-throughs and transform over a
+ *    child that has it, no blend), and that their refraction index is the same bits at generated points as for
+ *    no point;
  *  - the material interface's version rose with the header (and stayed for the normal and Lambertian bits). */
 #include <stdarg.h>
 #include <stddef.h>
@@ -798,6 +801,165 @@ static void test_no_rel_index_bit(void **state)
     ggenerator_unref(&g->base);
 }
 
+static int constant_index(const GMaterial *m) { return (m->flags & GMAT_CONSTANT_INDEX) != 0; }
+
+/* A class with a refraction_index slot of its own: the index 1.4 + 0.1 u (no bit: gmaterial_init cannot tell). */
+static int varying_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
+{
+    (void)self;
+    return gcolor_fill(result, 1.4 + (sp ? 0.1 * sp->u : 0.0));
+}
+
+static const GMaterialClass varying_index_class = {
+    .abi_version = GMATERIAL_ABI_VERSION, .name = "varying-index", .description = "index 1.4 + 0.1 u (tests)",
+    .destroy = glow_destroy, .refraction_index = varying_index,
+};
+
+/* 1 when the two colours hold the same kind and samples, bit for bit. */
+static int same_bits(const GColor *x, const GColor *y)
+{
+    return x->kind == y->kind && memcmp(x->v, y->v, (size_t)x->model->nvalues * sizeof(float)) == 0;
+}
+
+/* Which leaves and nodes have GMAT_CONSTANT_INDEX, and, over generated points (both sides, positions, normals,
+ * (u, v), generator values), the flagged ones' refraction index is the same bits as for sp NULL, which a blend of a
+ * lambert and glass, the control, is not. */
+static void test_constant_index_bit(void **state)
+{
+    Fix *f = *state;
+    static const char *const text =
+        "colormodel bispectral\n"
+        "color dayglo reradiation { absorb_peak 470 absorb_width 115 absorb_shape 8 absorb_max 0.97\n"
+        "    emit_width 20 stokes_shift 135 quantum_yield 0.65 reflectance 0.92 }\n"
+        "material l lambert { reflectance rgb 0.5 0.5 0.5 }\n"
+        "material p phong { diffuse rgb 0.3 0.3 0.3 specular rgb 0.5 0.5 0.5 exponent 50 }\n"
+        "material m mirror\n"
+        "material e emitter { radiance rgb 1 0.5 0.25 }\n"
+        "material c conductor { metal Au roughness 0.3 }\n"
+        "material pl plastic { reflectance rgb 0.3 0.5 0.2 roughness 0.2 }\n"
+        "material t thindielectric { index 1.5 }\n"
+        "material fv fluorescent-varnish { matrix dayglo ior 1.5 slope 17 }\n"
+        "material fp fluorescent-phong { matrix dayglo ks 0.04 exponents 30 120 480 weights 0.2 0.3 0.5 }\n"
+        "material d dielectric\n"
+        "material tf thinfilm { thickness 400 base lambert { reflectance rgb 0.5 0.5 0.5 } }\n"
+        "material ly layer { top dielectric { index 1.5 } bottom lambert { reflectance rgb 0.5 0.5 0.5 } }\n";
+    GLibrary *lib = NULL;
+    GError err;
+    if (greader_load_string(text, "constindex.mat", NULL, &lib, &err) != G_OK)
+        fail_msg("%s", err.message);
+    static const char *const leaves[] = {"l", "p", "m", "e", "c", "pl", "t", "fv", "fp", "d", "tf", "ly"};
+    for (size_t i = 0; i < sizeof leaves / sizeof leaves[0]; i++) {
+        GMaterial *m = glibrary_material(lib, leaves[i]);
+        assert_non_null(m);
+        if (!constant_index(m) || !gmaterial_constant_index(m))
+            fail_msg("%s has no GMAT_CONSTANT_INDEX", leaves[i]);
+    }
+    glibrary_destroy(lib);
+    assert_int_equal(gmaterial_constant_index(NULL), 1); /* vacuum: 1 */
+
+    GMaterial *plain = gmem_calloc(1, sizeof *plain), *varying = gmem_calloc(1, sizeof *varying);
+    assert_int_equal(gmaterial_init(plain, &plain_class, f->rgb, &err), G_OK);
+    assert_int_equal(gmaterial_init(varying, &varying_index_class, f->rgb, &err), G_OK);
+    assert_int_equal(constant_index(plain), 1);   /* no slot: the default 1, set by gmaterial_init */
+    assert_int_equal(constant_index(varying), 0); /* a slot of its own: not set */
+
+    GMaterial *a = lambert(f, 0.2), *b = lambert(f, 0.8), *c = lambert(f, 0.5), *n[8], *glass = NULL, *cauchy = NULL;
+    GMaterial *yes[5], *no[4];
+    GDielectricParams gp = {.index = gdispersion_constant(1.5)}, cp = {.index = gdispersion_cauchy(1.5, 4200.0, 0.0)};
+    assert_int_equal(gdielectric_create(f->rgb, &gp, &glass, &err), G_OK);
+    assert_int_equal(gdielectric_create(f->rgb, &cp, &cauchy, &err), G_OK);
+    assert_int_equal(constant_index(cauchy), 1); /* a fit of the wavelength, read at no point */
+    CountGen *g = countgen_new(0.4);
+    plain_nodes(a, b, c, g, n);
+    /* the one-child nodes (bump, scale, transform) pass their child's index; the blends do not get the bit */
+    static const int over_lamberts[8] = {0, 0, 0, 0, 1, 1, 1, 0};
+    for (int i = 0; i < 8; i++)
+        if (constant_index(n[i]) != over_lamberts[i])
+            fail_msg("node %d (%s) over lamberts: GMAT_CONSTANT_INDEX %d, expected %d", i, gmaterial_name(n[i]),
+                     constant_index(n[i]), over_lamberts[i]);
+    GAffine2 uv = gaffine2_rotate(30.0);
+    GAffine3 move = gaffine3_translate(gvec3(1.0, -2.0, 0.5));
+    assert_int_equal(gnode_bump_create(glass, &g->base, 1.0, &yes[0], &err), G_OK);
+    assert_int_equal(gnode_scale_create(cauchy, &g->base, &yes[1], &err), G_OK);
+    assert_int_equal(gnode_transform_create(glass, &uv, &move, &yes[2], &err), G_OK);
+    assert_int_equal(gnode_transform_create(yes[1], NULL, &move, &yes[3], &err), G_OK);
+    assert_int_equal(gnode_bump_create(plain, &g->base, 0.5, &yes[4], &err), G_OK);
+    for (int i = 0; i < 5; i++)
+        if (!constant_index(yes[i]))
+            fail_msg("node %d (%s) over one constant index has no GMAT_CONSTANT_INDEX", i, gmaterial_name(yes[i]));
+    assert_int_equal(gnode_interpolate_create(a, glass, &g->base, &no[0], &err), G_OK);
+    assert_int_equal(gnode_transform_create(varying, &uv, NULL, &no[1], &err), G_OK);
+    assert_int_equal(gnode_scale_create(varying, &g->base, &no[2], &err), G_OK);
+    assert_int_equal(gnode_transform_create(no[0], &uv, NULL, &no[3], &err), G_OK);
+    for (int i = 0; i < 4; i++)
+        if (constant_index(no[i]))
+            fail_msg("node %d (%s) over a blend or a varying index has GMAT_CONSTANT_INDEX", i, gmaterial_name(no[i]));
+
+    /* the property: every flagged material's index at generated points is its index for no point, bit for bit */
+    const GMaterial *all[20];
+    int nall = 0;
+    for (int i = 4; i < 7; i++)
+        all[nall++] = n[i];
+    for (int i = 0; i < 5; i++)
+        all[nall++] = yes[i];
+    all[nall++] = glass;
+    all[nall++] = cauchy;
+    all[nall++] = plain;
+    all[nall++] = a;
+    const GMaterial *control = no[0];
+    GColor ref, at, first;
+    assert_int_equal(gcolor_alloc(&ref, f->rgb), G_OK);
+    assert_int_equal(gcolor_alloc(&at, f->rgb), G_OK);
+    assert_int_equal(gcolor_alloc(&first, f->rgb), G_OK);
+    int rounds = TU_SANITIZED ? 40 : 300, control_differs = 0;
+    uint64_t s = 17;
+    for (int r = 0; r < rounds; r++) {
+        double x[6];
+        for (int j = 0; j < 6; j++) {
+            s = s * 6364136223846793005ull + 1442695040888963407ull;
+            x[j] = (double)(s >> 11) / 9007199254740992.0;
+        }
+        g->value = x[5]; /* the generators' value: a blend of the lambert and the glass follows it */
+        int below = r & 1;
+        GSurfPoint sp;
+        plane_point(&sp, f->rgb, f->scratch, 4.0 * x[0] - 1.0, 4.0 * x[1] - 1.0);
+        sp.point = sp.object_point = gvec3(10.0 * x[2] - 5.0, 10.0 * x[3] - 5.0, 10.0 * x[4] - 5.0);
+        sp.geometric_normal = gvec3_normalize(gvec3(x[2] - 0.5, x[3] - 0.5, (below ? -1.0 : 1.0) * (0.2 + x[4])));
+        sp.entering = !below;
+        sp.surface = r % 6;
+        for (int i = 0; i <= nall; i++) {
+            const GMaterial *m = i < nall ? all[i] : control;
+            sp.material = m;
+            sp.from = below ? m : NULL;
+            sp.to = below ? NULL : m;
+            gsurfpoint_invalidate(&sp);
+            assert_int_equal(gmaterial_refraction_index(m, &sp, &at), G_OK);
+            if (m == control) {
+                if (r == 0)
+                    assert_int_equal(gcolor_copy(&first, &at), G_OK);
+                control_differs += !same_bits(&at, &first);
+                continue;
+            }
+            assert_int_equal(gmaterial_refraction_index(m, NULL, &ref), G_OK);
+            if (!same_bits(&at, &ref))
+                fail_msg("%s (%d): another refraction index at a generated point (round %d)", gmaterial_name(m), i, r);
+        }
+    }
+    assert_true(control_differs > rounds / 2); /* the comparison sees an index that varies */
+    gcolor_free(&ref);
+    gcolor_free(&at);
+    gcolor_free(&first);
+    for (int i = 3; i >= 0; i--)
+        gmaterial_unref(no[i]);
+    for (int i = 4; i >= 0; i--)
+        gmaterial_unref(yes[i]);
+    release_plain_nodes(NULL, 0, n, a, b, c, g);
+    gmaterial_unref(glass);
+    gmaterial_unref(cauchy);
+    gmaterial_unref(plain);
+    gmaterial_unref(varying);
+}
+
 int main(void)
 {
     if (generic_register_builtins(NULL) != G_OK)
@@ -814,6 +976,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_no_ideal_bit, setup, teardown),
         cmocka_unit_test(test_interface_version),
         cmocka_unit_test_setup_teardown(test_no_rel_index_bit, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_constant_index_bit, setup, teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

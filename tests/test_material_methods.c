@@ -261,7 +261,8 @@ static void test_defaults(void **state)
     Fix *f = *state;
     defaults_of(f, NULL);
     GMaterial *m = new_material(&bare_class, f->model);
-    assert_int_equal(m->flags, (unsigned)(GMAT_NO_EMISSION | GMAT_OPAQUE | GMAT_GEOMETRIC_NORMAL | GMAT_NO_IDEAL));
+    assert_int_equal(m->flags, (unsigned)(GMAT_NO_EMISSION | GMAT_OPAQUE | GMAT_GEOMETRIC_NORMAL | GMAT_NO_IDEAL |
+                                          GMAT_CONSTANT_INDEX));
     defaults_of(f, m);
     m->flags = 0; /* the NULL slots themselves */
     defaults_of(f, m);

@@ -217,6 +217,14 @@ static void relative_index_case(const char *model_name)
     assert_true(gsurfpoint_scalar_index(&nf) == 1.0);
     gsurfpoint_set_relative_index(&bare, &nf);
     assert_true(gsurfpoint_relative_index(&bare) == 1.0);
+    /* set with its scalar known: that value, for the point and for a material handed the colour, none taken again
+     * (the colour's own scalar is 1 here, the known one is read); another colour is computed */
+    gsurfpoint_set_relative_index_scalar(&bare, &nf, computed);
+    assert_true(gsurfpoint_relative_index(&bare) == computed);
+    assert_true(gsurfpoint_index_of(&bare, &nf) == computed);
+    assert_true(gsurfpoint_index_of(&bare, &nt) == gsurfpoint_scalar_index(&nt));
+    gsurfpoint_set_relative_index(&bare, &nf); /* set again without it: taken from the colour */
+    assert_true(gsurfpoint_relative_index(&bare) == 1.0);
 
     /* the set colour's scalar is taken when first asked for, by either function, and then cached: a material's
      * gsurfpoint_index_of first gives the same value bit for bit, and so does gsurfpoint_relative_index after it; a

@@ -50,6 +50,9 @@
  *                (flags.c).
  *   no-rel-index for a material with GMAT_NO_REL_INDEX: its class's own slots give the same results, bit for bit,
  *                with the relative indices 1.5 and 1 / 1.5 (relindex.c).
+ *   constant-index  for a material with GMAT_CONSTANT_INDEX: its class's own refraction_index gives the same
+ *                colour, bit for bit, at the places and at points drawn around them, both sides, as for sp NULL
+ *                (constindex.c).
  *   chi2, pdf integral, weight: the sampling slots (sampling.c). */
 #include "gmat.h"
 
@@ -493,6 +496,7 @@ int gmat_check(GmatContext *ctx, int samples)
     gmat_check_no_uv(ctx, k.places, NPLACES, report_fn, &k);
     gmat_check_no_ideal(ctx, k.places, NPLACES, report_fn, &k);
     gmat_check_no_rel_index(ctx, k.places, NPLACES, report_fn, &k);
+    gmat_check_constant_index(ctx, k.places, NPLACES, report_fn, &k);
     gmat_check_sampling(ctx, k.places, NPLACES, 0, report_fn, &k);
     printf("%s: %s\n", ctx->material_name, k.failures ? "FAIL" : "PASS");
     gcolor_free(&k.a);

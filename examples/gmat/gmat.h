@@ -127,6 +127,11 @@ void gmat_check_no_ideal(GmatContext *ctx, const GmatPlace *places, int nplaces,
  * 1 / 1.5 (on the point and as the argument). */
 void gmat_check_no_rel_index(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
                              void *checker);
+/** The constant-index check of `gmat check` (constindex.c): a material with GMAT_CONSTANT_INDEX must give the same
+ * colour, bit for bit, from its class's own refraction_index at the places given and at points drawn around them, on
+ * both sides, as for sp NULL. */
+void gmat_check_constant_index(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
+                               void *checker);
 /** The no-uv check of `gmat check` (uvflag.c): a material with GMAT_NO_UV must give the same colours, normal and
  * opacity at the places given, on both sides, with the surface's parametrisation set and with it zero. */
 void gmat_check_no_uv(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report, void *checker);

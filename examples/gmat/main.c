@@ -128,6 +128,8 @@ static void usage_check(FILE *f)
                "               reflection_dir and refraction_dir slots\n"
                "  no-rel-index a material flagged GMAT_NO_REL_INDEX gives the same results, bit for bit,\n"
                "               from its class's slots with the relative indices 1.5 and 1 / 1.5\n"
+               "  constant-index a material flagged GMAT_CONSTANT_INDEX gives the same refraction\n"
+               "               index, bit for bit, at every point drawn and for no point\n"
                "Each is measured at several surface points (u, v, point and surface index vary).\n"
                "  --samples N         albedo grid N x 2N (8..4096, default 64)\n\n%s",
             common);

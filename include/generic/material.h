@@ -122,7 +122,15 @@ enum {
      * index): a class sets it on the instances it holds for (lambert, phong, mirror, emitter, conductor, plastic,
      * thindielectric, the fluorescent materials), the node kit on a node whose own methods read no relative index
      * when every child has it (gnode_inherit_no_rel_index, gnode_inherit_kit_no_rel_index). */
-    GMAT_NO_REL_INDEX = 128u
+    GMAT_NO_REL_INDEX = 128u,
+    /** refraction_index gives the same colour, bit for bit, at every point and for sp NULL: a renderer may compute
+     * the relative index n(from) / n(to) of a pair of such materials once and keep it for every point between them.
+     * Set by gmaterial_init for a class without a refraction_index slot (the default, 1); a class sets it on the
+     * instances it holds for (dielectric: its index is a constant or a fit of the wavelength; layer and thinfilm
+     * when the material whose index they give has it); the node kit on a node whose refraction_index is one child's
+     * at any point when that child has it (gnode_inherit_constant_index, gnode_inherit_kit_constant_index: bump,
+     * scale, image, transform, the textured materials), never on a blend of several children. */
+    GMAT_CONSTANT_INDEX = 256u
 };
 
 /** A material instance begins with this header; implementations embed it as their first member. */
@@ -233,7 +241,8 @@ struct GMaterialClass {
 
 /** Fills the header of a new instance (refcount 1; flags: GMAT_NO_EMISSION when the class has no emission slot,
  * GMAT_OPAQUE when it has no opaque slot, GMAT_GEOMETRIC_NORMAL when it has no normal slot, GMAT_NO_IDEAL when it
- * has neither a reflection_dir nor a refraction_dir slot); G_ERR_VERSION when
+ * has neither a reflection_dir nor a refraction_dir slot, GMAT_CONSTANT_INDEX when it has no refraction_index
+ * slot); G_ERR_VERSION when
  * the class is of another version. */
 GENERIC_API GENERIC_NODISCARD int gmaterial_init(GMaterial *m, const GMaterialClass *cls, const GColorModel *model,
                                                  GError *err);
@@ -269,6 +278,10 @@ GENERIC_API int gmaterial_diagonal(const GMaterial *m);
  * and hand any colour (1 in every sample) as rel_index. 0 when some method may read it (or it cannot tell); NULL
  * (vacuum) reads none and is 1. */
 GENERIC_API int gmaterial_no_rel_index(const GMaterial *m);
+/** 1 when m has GMAT_CONSTANT_INDEX: its refraction_index is the same colour, bit for bit, at every point, so the
+ * relative index between two such materials may be computed once. 0 when it may vary (or it cannot tell); NULL
+ * (vacuum, index 1) is 1. */
+GENERIC_API int gmaterial_constant_index(const GMaterial *m);
 
 /* ---- helpers for material implementations (lib/core/optics.c) ---- */
 

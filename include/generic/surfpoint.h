@@ -110,6 +110,10 @@ GENERIC_API double gsurfpoint_scalar_index(const GColor *ri);
  * gsurfpoint_index_of) and cached then: a point at which no method reads it (an opaque material's) costs none. So ri's
  * storage must stay valid, and its values unchanged, while the point is shaded. */
 GENERIC_API void gsurfpoint_set_relative_index(GSurfPoint *sp, const GColor *ri);
+/** gsurfpoint_set_relative_index with ri's scalar already known: scalar must be gsurfpoint_scalar_index(ri), which
+ * a renderer that keeps one colour for many points (the relative index of two media of constant index) takes once,
+ * so that no point takes it again. The same rules for ri's storage and values. */
+GENERIC_API void gsurfpoint_set_relative_index_scalar(GSurfPoint *sp, const GColor *ri, double scalar);
 /** The scalar relative index of ri for a material's refraction at sp: when ri is the colour last given to
  * gsurfpoint_set_relative_index (the same storage), the point's cached value (taken and cached on the first ask);
  * otherwise gsurfpoint_scalar_index(ri). A renderer that sets the relative index from a colour must therefore not

@@ -165,6 +165,15 @@ void gsurfpoint_set_relative_index(GSurfPoint *sp, const GColor *ri)
     }
 }
 
+void gsurfpoint_set_relative_index_scalar(GSurfPoint *sp, const GColor *ri, double scalar)
+{
+    GSurfPointPrivate *p = &sp->priv;
+    p->rel_index_values = ri->v;
+    p->cached_flags &= ~(unsigned)REL_INDEX_MATRIX;
+    p->cached_flags |= HAVE_REL_INDEX_COLOUR | HAVE_REL_INDEX | (ri->kind == GCOLOR_MATRIX ? REL_INDEX_MATRIX : 0u);
+    p->cached_rel_index = scalar;
+}
+
 double gsurfpoint_index_of(const GSurfPoint *sp, const GColor *ri)
 {
     unsigned f = sp->priv.cached_flags;

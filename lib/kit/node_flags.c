@@ -8,8 +8,9 @@
  * (bump, scale, image, transform); one whose reflection and refraction sum its children's filters light sample by
  * sample when each of them does (GMAT_DIAGONAL); one whose ideal rays are its children's has none when none of them has
  * (GMAT_NO_IDEAL); one that reads the point only through a generator not in (u, v) space, over children that never read
- * (u, v), lets the renderer skip the parametrisation; and one that reads no relative index itself, over children that
- * read none, lets the renderer skip computing it (GMAT_NO_REL_INDEX). */
+ * (u, v), lets the renderer skip the parametrisation; one that reads no relative index itself, over children that
+ * read none, lets the renderer skip computing it (GMAT_NO_REL_INDEX); and one whose refraction index is its one
+ * child's has a constant index when the child has (GMAT_CONSTANT_INDEX). */
 #include "generic/kit/node_kit.h"
 #include "generic/texture.h"
 
@@ -159,4 +160,16 @@ void gnode_inherit_kit_no_rel_index(GMaterial *node, GMaterial *const *children,
             if (!children || !children[i] || !(children[i]->flags & (GMAT_OPAQUE | GMAT_NO_IDEAL)))
                 return;
     gnode_inherit_no_rel_index(node, children, n);
+}
+
+void gnode_inherit_constant_index(GMaterial *node, const GMaterial *child)
+{
+    if (node && child && (child->flags & GMAT_CONSTANT_INDEX))
+        node->flags |= GMAT_CONSTANT_INDEX;
+}
+
+void gnode_inherit_kit_constant_index(GMaterial *node, GMaterial *const *children, int n)
+{
+    if (node && node->cls->refraction_index == gnode_child_refraction_index && n == 1 && children)
+        gnode_inherit_constant_index(node, children[0]);
 }

@@ -33,6 +33,9 @@
  *                (gsurfpoint_relative_index: 1 from vacuum onto it, as it has no index of its own) while its
  *                instances set GMAT_NO_REL_INDEX, so a renderer hands it no index: only the no-rel-index check sees
  *                it;
+ *   -DMISCONSTINDEX material "misconstindex_lambert": a Lambertian of albedo 0.5 whose refraction index is
+ *                1.4 + 0.1 u (1.4 for no point) while its instances set GMAT_CONSTANT_INDEX, so a renderer would keep
+ *                one relative index for every point: only the constant-index check sees it;
  *   -DGAIN_MIRROR material "gain_mirror": a mirror whose ideal ray passes on 1.2 times the light (albedo 1.2 on
  *                any surface, bumped or not);
  *   -DMISBENT    material "misbent_glass": clear glass of index 1.5 whose refraction_dir refracts about the
@@ -88,7 +91,7 @@ __attribute__((unused)) static int add_material(GModuleApi *api, const char *nam
 
 #if defined(GAIN) || defined(SKEWED) || defined(MISDRAWN) || defined(MISFLAGGED) || defined(MISOPAQUE) ||              \
     defined(MISNORMAL) || defined(MISDIFFUSE) || defined(MISUV) || defined(MISDIAG) || defined(MISIDEAL) ||           \
-    defined(MISRELINDEX)
+    defined(MISRELINDEX) || defined(MISCONSTINDEX)
 typedef struct Flat {
     GMaterial base;
 } Flat;
@@ -125,7 +128,7 @@ static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, cons
 #elif defined(MISDRAWN)
     double f = 0.8 / M_PI;
 #elif defined(MISFLAGGED) || defined(MISOPAQUE) || defined(MISNORMAL) || defined(MISDIFFUSE) || defined(MISDIAG) ||    \
-    defined(MISIDEAL)
+    defined(MISIDEAL) || defined(MISCONSTINDEX)
     double f = 0.5 / M_PI;
 #elif defined(MISUV)
     double f = (0.25 + 0.5 * fmin(1.0, fmax(0.0, sp->u))) / M_PI; /* reads u: GMAT_NO_UV is wrong */
@@ -161,6 +164,8 @@ static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, cons
 #define FLAT_NAME "misideal_lambert"
 #elif defined(MISRELINDEX)
 #define FLAT_NAME "misrelindex_lambert"
+#elif defined(MISCONSTINDEX)
+#define FLAT_NAME "misconstindex_lambert"
 #else
 #define FLAT_NAME "skewed_lambert"
 #endif
@@ -188,6 +193,15 @@ static int flat_sample(const GMaterial *self, GSurfPoint *sp, GVec3 out, const G
     if (rc == G_OK)
         rc = gcolor_scale(weight, weight, 1.0 / s->pdf);
     return rc ? rc : 1;
+}
+#endif
+
+#ifdef MISCONSTINDEX
+/* An index that follows u; the instances are flagged GMAT_CONSTANT_INDEX all the same (the error). */
+static int flat_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
+{
+    (void)self;
+    return gcolor_fill(result, 1.4 + (sp ? 0.1 * fmin(1.0, fmax(0.0, sp->u)) : 0.0));
 }
 #endif
 
@@ -269,6 +283,9 @@ static const GMaterialClass flat_class = {
 #ifdef MISIDEAL
     .reflection_dir = flat_reflection_dir,
 #endif
+#ifdef MISCONSTINDEX
+    .refraction_index = flat_refraction_index,
+#endif
 };
 
 static int parse_flat(GReader *r, const void *vtable, void **object, GError *err)
@@ -299,6 +316,9 @@ static int parse_flat(GReader *r, const void *vtable, void **object, GError *err
 #endif
 #ifdef MISRELINDEX
     m->base.flags |= GMAT_NO_REL_INDEX; /* the deliberate error: the class's reflection reads the relative index */
+#endif
+#ifdef MISCONSTINDEX
+    m->base.flags |= GMAT_CONSTANT_INDEX; /* the deliberate error: the class's refraction_index follows u */
 #endif
 #ifdef MISDIAG
     m->base.flags |= GMAT_DIAGONAL; /* the deliberate error: the class's reflection mixes the light's samples */

@@ -117,9 +117,10 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
     const GMaterial *m = sp->material;
     GVec3 to_viewer = gvec3_neg(r->d);
     GScratchMark mark = gscratch_mark(c->scratch);
-    GColor ri, rg, tmp, weight, illum, inside, *res = out;
+    GColor room, rg, tmp, weight, illum, inside, *res = out;
+    const GColor *ri = NULL; /* read only: it may be a colour the context keeps (trace.h) */
     int rc = G_OK, opaque, delta, valid;
-    CHECK(trace_relative_index(c, sp, &ri));
+    CHECK(trace_relative_index(c, sp, &room, &ri));
     /* in a medium the light is gathered apart (written in full: not cleared), and its absorption written to out */
     if (sp->from) {
         CHECK(gcolor_scratch_uncleared(&inside, s->model, c->scratch));
@@ -138,17 +139,17 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
 
     /* dispersion: the wavelength group this vertex refracts with (hero band) */
     const Bands *b = c->bands;
-    const GColor *ri_use = &ri;
+    const GColor *ri_use = ri;
     int band = c->band, pick = -1;
     if (!opaque && b && b->n > 1) {
-        if (band < 0 && bands_disperse(b, &ri)) {
+        if (band < 0 && bands_disperse(b, ri)) {
             pick = (int)(path_vertex_uniform(p, depth, SLOT_BAND) * b->n);
             band = pick < b->n ? pick : b->n - 1;
             pick = band;
         }
         if (band >= 0) { /* written in full by the fill: not cleared */
             CHECK(gcolor_scratch_uncleared(&rg, s->model, c->scratch));
-            CHECK(gcolor_fill(&rg, bands_value(b, &ri, band)));
+            CHECK(gcolor_fill(&rg, bands_value(b, ri, band)));
             ri_use = &rg;
         }
     }

@@ -83,13 +83,12 @@ int photon_trace(TraceCtx *c, const PhotonSource *src, const Media *media0, uint
         ue[4] = rng_next(rng);
     GVec3 o, d;
     GScratchMark mark = gscratch_mark(c->scratch);
-    GColor power, weight, tmp, ri, rg;
+    GColor power, weight, tmp, room, rg;
     int rc = G_OK;
     double f = 1.0;
     CHECK(gcolor_scratch(&power, s->model, c->scratch));
     CHECK(gcolor_scratch_uncleared(&weight, s->model, c->scratch));
     CHECK(gcolor_scratch_uncleared(&tmp, s->model, c->scratch));
-    CHECK(gcolor_scratch_uncleared(&ri, s->model, c->scratch));
     CHECK(gcolor_scratch_uncleared(&rg, s->model, c->scratch));
     if (l)
         CHECK(emit_particle(l, &src->bounds, ue, &o, &d, &f, &tmp));
@@ -137,19 +136,21 @@ int photon_trace(TraceCtx *c, const PhotonSource *src, const Media *media0, uint
             gscratch_release(c->scratch, bounce);
             break;
         }
-        const GColor *ri_use = &ri;
+        const GColor *ri = NULL; /* read only: it may be a colour the context keeps (trace.h) */
         int pick = -1, opaque = gmaterial_opaque(m, &sp), valid = 0, transmit = 0;
         GMaterialSample smp;
         double before = gcolor_brightness(&power);
-        if ((rc = trace_relative_index(c, &sp, &ri)) == G_OK && !opaque && bands && bands->n > 1) {
-            if (band < 0 && bands_disperse(bands, &ri)) {
+        rc = trace_relative_index(c, &sp, &room, &ri);
+        const GColor *ri_use = ri;
+        if (rc == G_OK && !opaque && bands && bands->n > 1) {
+            if (band < 0 && bands_disperse(bands, ri)) {
                 pick = (int)(rng_next(rng) * bands->n);
                 if (pick >= bands->n)
                     pick = bands->n - 1;
             }
             int g = band >= 0 ? band : pick;
             if (g >= 0) {
-                rc = gcolor_fill(&rg, bands_value(bands, &ri, g));
+                rc = gcolor_fill(&rg, bands_value(bands, ri, g));
                 ri_use = &rg;
             }
         }

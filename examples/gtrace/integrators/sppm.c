@@ -144,12 +144,11 @@ static int camera_visit(Sppm *sp_, TraceCtx *c, int pass, int x, int y, VisibleP
     double sx = rng_next(&c->rng), sy = rng_next(&c->rng);
     camera_ray_lens(sp_->cam, x + sx, y + sy, &c->rng, &r);
     GScratchMark mark = gscratch_mark(c->scratch);
-    GColor tmp, weight, ri, rg;
+    GColor tmp, weight, room, rg;
     int rc = G_OK, band = -1;
     vp->valid = 0;
     CHECK(gcolor_scratch(&tmp, s->model, c->scratch));
     CHECK(gcolor_scratch(&weight, s->model, c->scratch));
-    CHECK(gcolor_scratch(&ri, s->model, c->scratch));
     CHECK(gcolor_scratch(&rg, s->model, c->scratch));
     CHECK(gcolor_fill(&vp->beta, 1.0));
     Media media;
@@ -205,15 +204,17 @@ static int camera_visit(Sppm *sp_, TraceCtx *c, int pass, int x, int y, VisibleP
             media_copy(&vp->media, &media);
             vp->valid = rc >= 0;
         } else if (rc >= 0 && depth < c->max_depth) { /* through the ideal surface */
-            const GColor *ri_use = &ri;
-            if ((rc = trace_relative_index(c, &sp, &ri)) >= 0 && !gmaterial_opaque(m, &sp) && bands && bands->n > 1) {
-                if (band < 0 && bands_disperse(bands, &ri)) {
+            const GColor *ri = NULL; /* read only: it may be a colour the context keeps (trace.h) */
+            rc = trace_relative_index(c, &sp, &room, &ri);
+            const GColor *ri_use = ri;
+            if (rc >= 0 && !gmaterial_opaque(m, &sp) && bands && bands->n > 1) {
+                if (band < 0 && bands_disperse(bands, ri)) {
                     pick = (int)(rng_next(&c->rng) * bands->n);
                     if (pick >= bands->n)
                         pick = bands->n - 1;
                 }
                 int g = band >= 0 ? band : pick;
-                if (g >= 0 && (rc = gcolor_fill(&rg, bands_value(bands, &ri, g))) >= 0)
+                if (g >= 0 && (rc = gcolor_fill(&rg, bands_value(bands, ri, g))) >= 0)
                     ri_use = &rg;
             }
             double u1 = rng_next(&c->rng), u2 = rng_next(&c->rng);

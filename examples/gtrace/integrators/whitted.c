@@ -179,16 +179,17 @@ static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const 
     }
     if (depth < c->max_depth) {
         /* the relative index first: the reflection's Fresnel term reads it too */
-        GColor ri;
+        GColor room;
+        const GColor *ri = NULL; /* read only: it may be a colour the context keeps (trace.h) */
         if (!opaque)
-            CHECK(trace_relative_index(c, sp, &ri));
+            CHECK(trace_relative_index(c, sp, &room, &ri));
         /* ideal reflection, in the medium the ray came through */
         CHECK(valid = gmaterial_reflection_dir(m, sp, view, &dir));
         if (valid)
             CHECK(trace_secondary(c, r, sp, facing, dir, NULL, NULL, media, depth, res, &unset));
         /* ideal refraction into the medium on the other side; not valid: total internal reflection */
         if (!opaque)
-            CHECK(refract(c, r, sp, facing, &ri, media, depth, res, &unset));
+            CHECK(refract(c, r, sp, facing, ri, media, depth, res, &unset));
     }
     if (unset)
         gcolor_black(res);

@@ -41,25 +41,40 @@
 #define SHADOW_MAX_HITS 64
 #define AREA_MAX_SAMPLES 256
 
+/* The two indices of hp into nf (n(from)) and nt (n(to)). */
+static int both_indices(GSurfPoint *hp, GColor *nf, GColor *nt)
+{
+    int rc = gmaterial_refraction_index(hp->from, hp, nf);
+    return rc < 0 ? rc : gmaterial_refraction_index(hp->to, hp, nt);
+}
+
 /* What of `light`, arriving along the straight shadow direction dir (pointing towards the light), the surface
  * at hp lets through, into out: 1 when something went through, 0 when the surface blocks, or a status. The
  * interface is read with dir on its optically thinner side (see the top of this file): when the shadow ray
  * leaves a denser medium, the refraction pair is taken at the surface seen from the other side, where dir is
- * the direction of the light's arrival and the material refracts it inwards. */
-static int interface_transmit(GSurfPoint *hp, GVec3 dir, const GColor *light, GColor *nf, GColor *nt, GColor *ri,
-                              GColor *out)
+ * the direction of the light's arrival and the material refracts it inwards. Between two materials with a constant
+ * index the pair's relative indices, both ways, are the colours c keeps (trace_cached_index), else computed here
+ * into ri and nf (the same bits). */
+static int interface_transmit(TraceCtx *c, GSurfPoint *hp, GVec3 dir, const GColor *light, GColor *nf, GColor *nt,
+                              GColor *ri, GColor *out)
 {
-    int rc;
-    if ((rc = gmaterial_refraction_index(hp->from, hp, nf)) < 0 ||
-        (rc = gmaterial_refraction_index(hp->to, hp, nt)) < 0 || (rc = gcolor_div(ri, nf, nt)) < 0)
+    const GColor *ri_hp, *ri_other;
+    int rc, have_both = 0;
+    if ((rc = trace_cached_index(c, hp->from, hp->to, hp, &ri_hp)) < 0)
         return rc;
+    /* the relative index set on the point the material is asked at (n(from) / n(to) there): its scalar is taken
+     * once (or was, for a kept one), and the colour is not changed while the point is used */
+    if (!ri_hp) {
+        if ((rc = both_indices(hp, nf, nt)) < 0 || (rc = gcolor_div(ri, nf, nt)) < 0)
+            return rc;
+        have_both = 1;
+        ri_hp = ri;
+        gsurfpoint_set_relative_index(hp, ri);
+    }
     GSurfPoint other;
     GSurfPoint *at = hp;
     GVec3 view = dir, to_light;
-    /* the relative index set on the point the material is asked at (n(from) / n(to) there): its scalar is taken
-     * once, and the colour is not changed while the point is used */
-    gsurfpoint_set_relative_index(hp, ri);
-    const GColor *ri_at = ri;
+    const GColor *ri_at = ri_hp;
     if (gsurfpoint_relative_index(hp) > 1.0) { /* leaving a denser medium: the point seen from the thinner side */
         other = *hp;
         other.geometric_normal = gvec3_neg(hp->geometric_normal);
@@ -67,10 +82,15 @@ static int interface_transmit(GSurfPoint *hp, GVec3 dir, const GColor *light, GC
         other.from = hp->to;
         other.to = hp->from;
         gsurfpoint_invalidate(&other);
-        if ((rc = gcolor_div(nf, nt, nf)) < 0) /* n(to) / n(from) of hp, in nf's storage */
+        if ((rc = trace_cached_index(c, other.from, other.to, &other, &ri_other)) < 0)
             return rc;
-        gsurfpoint_set_relative_index(&other, nf);
-        ri_at = nf;
+        if (!ri_other) { /* n(to) / n(from) of hp, in nf's storage */
+            if ((!have_both && (rc = both_indices(hp, nf, nt)) < 0) || (rc = gcolor_div(nf, nt, nf)) < 0)
+                return rc;
+            ri_other = nf;
+            gsurfpoint_set_relative_index(&other, nf);
+        }
+        ri_at = ri_other;
         at = &other;
         view = gvec3_neg(dir);
     }
@@ -120,7 +140,8 @@ int light_transmit(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media
         const Medium *vol = c->volumes ? medium_current(s, &walk) : NULL; /* a participating medium (medium.h) */
         if (vol && (rc = medium_transmit(vol, seg.o, dir, h.t, &c->rng, light, c->scratch)) < 0)
             goto done;
-        if ((rc = interface_transmit(&hp, dir, light, &nf, &nt, &ri, &tmp)) <= 0 || (rc = gcolor_copy(light, &tmp)) < 0)
+        if ((rc = interface_transmit(c, &hp, dir, light, &nf, &nt, &ri, &tmp)) <= 0 ||
+            (rc = gcolor_copy(light, &tmp)) < 0)
             goto done;
         if (gcolor_is_black(light))
             goto done;

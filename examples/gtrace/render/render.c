@@ -265,9 +265,9 @@ static int set_wavelengths(Framebuffer *fb, const GColorModel *m, GError *err)
     return G_OK;
 }
 
-/* The colours a worker keeps in its arena from the start: the context's temporaries, 1, a tile row's pixels and the
- * sample (there, not on the heap, so that two workers' colours never share a cache line). */
-#define WORKER_COLOURS (TRACE_TMP_COUNT + TILE + 2)
+/* The colours a worker keeps in its arena from the start: the context's temporaries and kept relative indices, 1, a
+ * tile row's pixels and the sample (there, not on the heap, so that two workers' colours never share a cache line). */
+#define WORKER_COLOURS (TRACE_TMP_COUNT + TRACE_RI_SLOTS + TILE + 2)
 
 /* A worker's arena: its own colours and room for 32 colours a bounce down to the deepest one (a bounce holds a handful:
  * the shading point's, its lights', its textures'), so that it need not grow while rendering, where a new depth reached

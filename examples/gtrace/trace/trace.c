@@ -57,6 +57,10 @@ int trace_ctx_temps(TraceCtx *c)
         if (c->tmp[i].storage == GCOLOR_STORAGE_NONE &&
             gcolor_scratch(&c->tmp[i], c->scene->model, c->scratch) != G_OK)
             return G_ERR_NOMEM;
+    for (int i = 0; i < TRACE_RI_SLOTS; i++)
+        if (c->ri_cache[i].ri.storage == GCOLOR_STORAGE_NONE &&
+            gcolor_scratch(&c->ri_cache[i].ri, c->scene->model, c->scratch) != G_OK)
+            return G_ERR_NOMEM;
     return G_OK;
 }
 
@@ -64,6 +68,9 @@ void trace_ctx_free_temps(TraceCtx *c)
 {
     for (int i = 0; i < TRACE_TMP_COUNT; i++)
         gcolor_free(&c->tmp[i]);
+    for (int i = 0; i < TRACE_RI_SLOTS; i++)
+        gcolor_free(&c->ri_cache[i].ri);
+    c->ri_filled = 0;
 }
 
 int trace_tmp(TraceCtx *c, int which, GColor *out)
@@ -154,19 +161,60 @@ void surfpoint_fill(TraceCtx *c, const Ray *r, const Hit *h, const Media *media,
     }
 }
 
-int trace_relative_index(TraceCtx *c, GSurfPoint *sp, GColor *ri)
+/* n(from) / n(to) at sp into out, which has storage: the two indices in the context's temporaries, then the division
+ * (the one computation of a relative index, kept or not, so that both give the same bits). */
+static int divide_indices(TraceCtx *c, const GMaterial *from, const GMaterial *to, GSurfPoint *sp, GColor *out)
 {
     GColor n_from, n_to;
     int rc;
+    if ((rc = trace_tmp(c, TRACE_TMP_N_FROM, &n_from)) < 0 || (rc = trace_tmp(c, TRACE_TMP_N_TO, &n_to)) < 0 ||
+        (rc = gmaterial_refraction_index(from, sp, &n_from)) < 0 ||
+        (rc = gmaterial_refraction_index(to, sp, &n_to)) < 0)
+        return rc;
+    return gcolor_div(out, &n_from, &n_to);
+}
+
+/* GMAT_CONSTANT_INDEX read from the flags, as the other flags are (no call per vertex); NULL is vacuum, index 1. */
+static inline int constant_index(const GMaterial *m) { return !m || (m->flags & GMAT_CONSTANT_INDEX); }
+
+int trace_cached_index(TraceCtx *c, const GMaterial *from, const GMaterial *to, GSurfPoint *sp, const GColor **ri)
+{
+    *ri = NULL;
+    if (!constant_index(from) || !constant_index(to))
+        return G_OK;
+    int n = c->ri_filled, i = 0;
+    while (i < n && (c->ri_cache[i].from != from || c->ri_cache[i].to != to))
+        i++;
+    TraceRelIndex *e = &c->ri_cache[i < TRACE_RI_SLOTS ? i : 0];
+    if (i == n) { /* a pair not met yet: into the next entry, if any */
+        if (n >= TRACE_RI_SLOTS || e->ri.storage == GCOLOR_STORAGE_NONE) /* full, or no storage made */
+            return G_OK;
+        int rc = divide_indices(c, from, to, sp, &e->ri);
+        if (rc < 0)
+            return rc;
+        e->from = from;
+        e->to = to;
+        e->scalar = gsurfpoint_scalar_index(&e->ri);
+        c->ri_filled = n + 1;
+    }
+    gsurfpoint_set_relative_index_scalar(sp, &e->ri, e->scalar);
+    *ri = &e->ri;
+    return G_OK;
+}
+
+int trace_relative_index(TraceCtx *c, GSurfPoint *sp, GColor *room, const GColor **ri)
+{
+    int rc;
     if (sp->material && (sp->material->flags & GMAT_NO_REL_INDEX)) { /* read by no method: not computed (trace.h) */
-        *ri = c->unit;
+        *ri = &c->unit;
         return G_OK;
     }
-    if ((rc = trace_tmp(c, TRACE_TMP_N_FROM, &n_from)) < 0 || (rc = trace_tmp(c, TRACE_TMP_N_TO, &n_to)) < 0 ||
-        (rc = gcolor_scratch_uncleared(ri, c->scene->model, c->scratch)) < 0 || /* the division writes it in full */
-        (rc = gmaterial_refraction_index(sp->from, sp, &n_from)) < 0 ||
-        (rc = gmaterial_refraction_index(sp->to, sp, &n_to)) < 0 || (rc = gcolor_div(ri, &n_from, &n_to)) < 0)
+    if ((rc = trace_cached_index(c, sp->from, sp->to, sp, ri)) < 0 || *ri) /* kept, and set on sp with its scalar */
         return rc;
-    gsurfpoint_set_relative_index(sp, ri); /* what the material's reflection reads: not divided again */
+    if ((rc = gcolor_scratch_uncleared(room, c->scene->model, c->scratch)) < 0 || /* the division writes it */
+        (rc = divide_indices(c, sp->from, sp->to, sp, room)) < 0)
+        return rc;
+    *ri = room;
+    gsurfpoint_set_relative_index(sp, room); /* what the material's reflection reads: not divided again */
     return G_OK;
 }

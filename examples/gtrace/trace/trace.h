@@ -30,6 +30,19 @@ enum {
     TRACE_TMP_COUNT
 };
 
+/** The relative indices a TraceCtx keeps (TraceCtx.ri_cache): n(from) / n(to) for the first pairs of materials with
+ * GMAT_CONSTANT_INDEX (material.h) it meets, whose ratio is the same colour at every point between them. */
+#define TRACE_RI_SLOTS 8
+
+/** One kept relative index: the pair (NULL: vacuum) and its colour, of the context's arena. Filled once and never
+ * replaced, so a handle to it stays valid and its values unchanged for the context's life: a caller holds it across
+ * the deeper hits of a recursion, and a surface point refers to it (gsurfpoint_set_relative_index). */
+typedef struct TraceRelIndex {
+    const GMaterial *from, *to;
+    GColor ri;
+    double scalar; /**< gsurfpoint_scalar_index(&ri), taken once: what a point set with it reads */
+} TraceRelIndex;
+
 /** Per-thread tracing state. */
 typedef struct TraceCtx {
     const Scene *scene;
@@ -56,13 +69,17 @@ typedef struct TraceCtx {
                           * homogeneous media equiangularly (integrators/medium_light.h); 0: free flight alone */
     GColor tmp[TRACE_TMP_COUNT]; /**< temporaries made once with the context (trace_ctx_temps); cleared in a
                                   * context built without them, whose users then take arena storage (trace_tmp) */
+    TraceRelIndex ri_cache[TRACE_RI_SLOTS]; /**< relative indices kept (trace_cached_index); their storage is made
+                                             * with the temporaries, none in a context built without them */
+    int ri_filled;       /**< entries of ri_cache filled, the first ones */
 } TraceCtx;
 
-/** Gives c its own temporaries (c->tmp, of the scene's model) from c's arena, made before any mark its users take
- * and kept for its life (a worker's own arena: two threads' colours never share a cache line); G_ERR_NOMEM when
- * the arena cannot grow. */
+/** Gives c its own temporaries (c->tmp, of the scene's model) and the storage of its kept relative indices
+ * (c->ri_cache, empty) from c's arena, made before any mark its users take and kept for its life (a worker's own
+ * arena: two threads' colours never share a cache line); G_ERR_NOMEM when the arena cannot grow. */
 int trace_ctx_temps(TraceCtx *c);
-/** Clears the handles of trace_ctx_temps (their storage goes with the arena; a no-op for a context without them). */
+/** Clears the handles of trace_ctx_temps and empties the kept relative indices (their storage goes with the arena; a
+ * no-op for a context without them). */
 void trace_ctx_free_temps(TraceCtx *c);
 /** The temporary `which` (a TRACE_TMP_ value) of c into *out: a copy of c's handle when c has its temporaries,
  * else storage from c's arena (given back by the caller's mark and release). Not black: the users write before
@@ -87,11 +104,19 @@ const GMaterial *media_top(const Media *m);
 void media_copy(Media *out, const Media *in);
 /** The media after crossing the surface of mat: entering pushes it, leaving removes it. */
 void media_cross(const Media *in, const GMaterial *mat, int entering, Media *out);
-/** The relative index the material of sp is handed: n(from) / n(to) at sp, into ri (given storage from the thread's
- * arena), made sp's relative index (gsurfpoint_set_relative_index). For a material with GMAT_NO_REL_INDEX, whose
- * methods read no index, c->unit (1 in every sample: no wavelength split) without the two indices and the
- * division, and the point's index is left unset (a method that asked would still get the true one). */
-int trace_relative_index(TraceCtx *c, GSurfPoint *sp, GColor *ri);
+/** The relative index the material of sp is handed: *ri points to n(from) / n(to) at sp, made sp's relative index
+ * (gsurfpoint_set_relative_index), and is read only (it may be shared, kept for the context's life). For a material
+ * with GMAT_NO_REL_INDEX, whose methods read no index, c->unit (1 in every sample: no wavelength split) without the
+ * two indices and the division, and the point's index is left unset (a method that asked would still get the true
+ * one). When both sides have GMAT_CONSTANT_INDEX, the pair's kept colour (trace_cached_index: the same bits);
+ * otherwise computed at sp into room (given storage from the thread's arena, released by the caller's mark). */
+int trace_relative_index(TraceCtx *c, GSurfPoint *sp, GColor *room, const GColor **ri);
+/** The kept relative index n(from) / n(to) of two materials with GMAT_CONSTANT_INDEX (NULL: vacuum) into *ri: found
+ * among c->ri_cache, or computed at sp (refraction_index of both and gcolor_div, as trace_relative_index computes it
+ * at a point, so the same bits) into the next free entry, and made sp's relative index with its kept scalar
+ * (gsurfpoint_set_relative_index_scalar). *ri is NULL, with G_OK and sp unchanged, when a side may vary, c has no
+ * kept indices (a context without temporaries) or every entry holds another pair: the caller computes it itself. */
+int trace_cached_index(TraceCtx *c, const GMaterial *from, const GMaterial *to, GSurfPoint *sp, const GColor **ri);
 /** The distance a point is moved off a surface (offset_origin) and the margin a shadow ray keeps from the surface of
  * its target (shadow_reach): a relative 2e-5 of the point's largest coordinate, far above the single precision of the
  * intersection tests. */

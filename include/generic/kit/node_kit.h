@@ -172,6 +172,17 @@ GENERIC_API void gnode_inherit_no_rel_index(GMaterial *node, GMaterial *const *c
  * index). gnode_new_checked calls it for every node it makes, plug-in classes included. */
 GENERIC_API void gnode_inherit_kit_no_rel_index(GMaterial *node, GMaterial *const *children, int n);
 
+/** Sets GMAT_CONSTANT_INDEX (material.h) on node when child has it: for a node class whose refraction_index is the
+ * child's at every point (at the point itself or a moved copy of it) and for sp NULL (transform calls it after
+ * construction). */
+GENERIC_API void gnode_inherit_constant_index(GMaterial *node, const GMaterial *child);
+
+/** Sets GMAT_CONSTANT_INDEX on node when its class's refraction_index slot is the kit's pass-through
+ * gnode_child_refraction_index, n is 1 and the child has it (a class without the slot has it from gmaterial_init; a
+ * blend's index, the kit's gnode_blended_refraction_index, follows its generators and never gets it).
+ * gnode_new_checked calls it for every node it makes, plug-in classes included. */
+GENERIC_API void gnode_inherit_kit_constant_index(GMaterial *node, GMaterial *const *children, int n);
+
 /** 1 when each of the n children has GMAT_NO_UV (material.h) and gen, when given, is not a function of (u, v)
  * (its space, texture.h, is not GGENERATOR_SPACE_UV: a generator's space says what its value reads). */
 GENERIC_API GENERIC_NODISCARD int gnode_children_no_uv(GMaterial *const *children, int n, const GGenerator *gen);
