@@ -547,12 +547,9 @@ static void test_no_ideal_bit(void **state)
             fail_msg("node %d (%s) over a mirror or glass has GMAT_NO_IDEAL", i, gmaterial_name(m[i]));
     GColor ri;
     assert_int_equal(gcolor_alloc(&ri, f->rgb), G_OK);
-    uint64_t s = 5;
+    unsigned long long s = 5;
     for (int k = 0; k < 200; k++) {
-        s = s * 6364136223846793005ull + 1442695040888963407ull;
-        double r1 = (double)(s >> 11) / 9007199254740992.0;
-        s = s * 6364136223846793005ull + 1442695040888963407ull;
-        double r2 = (double)(s >> 11) / 9007199254740992.0;
+        double r1 = tu_uniform(&s), r2 = tu_uniform(&s);
         g->value = (k % 5) / 4.0; /* 0, 0.25, ..., 1: one child or a blend of two */
         GVec3 view = gvec3_normalize(gvec3(r1 - 0.5, r2 - 0.5, k & 1 ? 0.7 : -0.7));
         assert_int_equal(gcolor_fill(&ri, k & 2 ? 1.5 : 1.0 / 1.5), G_OK);
@@ -588,6 +585,25 @@ static void test_interface_version(void **state)
     assert_int_equal(gmaterial_init(&m, &old, NULL, &err), G_ERR_VERSION);
     assert_non_null(strstr(err.message, "interface version 3, the library has 4"));
 }
+
+/* Every built-in leaf material by name, in bispectral (the fluorescent ones need its matrices): the flag tests
+ * read which of them have a bit. */
+static const char *const leaves_text =
+    "colormodel bispectral\n"
+    "color dayglo reradiation { absorb_peak 470 absorb_width 115 absorb_shape 8 absorb_max 0.97\n"
+    "    emit_width 20 stokes_shift 135 quantum_yield 0.65 reflectance 0.92 }\n"
+    "material l lambert { reflectance rgb 0.5 0.5 0.5 }\n"
+    "material p phong { diffuse rgb 0.3 0.3 0.3 specular rgb 0.5 0.5 0.5 exponent 50 }\n"
+    "material m mirror\n"
+    "material e emitter { radiance rgb 1 0.5 0.25 }\n"
+    "material c conductor { metal Au roughness 0.3 }\n"
+    "material pl plastic { reflectance rgb 0.3 0.5 0.2 roughness 0.2 }\n"
+    "material t thindielectric { index 1.5 }\n"
+    "material fv fluorescent-varnish { matrix dayglo ior 1.5 slope 17 }\n"
+    "material fp fluorescent-phong { matrix dayglo ks 0.04 exponents 30 120 480 weights 0.2 0.3 0.5 }\n"
+    "material d dielectric\n"
+    "material tf thinfilm { thickness 400 base lambert { reflectance rgb 0.5 0.5 0.5 } }\n"
+    "material ly layer { top dielectric { index 1.5 } bottom lambert { reflectance rgb 0.5 0.5 0.5 } }\n";
 
 static int no_rel_index(const GMaterial *m) { return (m->flags & GMAT_NO_REL_INDEX) != 0; }
 
@@ -661,25 +677,9 @@ static int same_for_both_indices(Fix *f, const GMaterial *m, GSurfPoint sp[2], c
 static void test_no_rel_index_bit(void **state)
 {
     Fix *f = *state;
-    static const char *const text =
-        "colormodel bispectral\n"
-        "color dayglo reradiation { absorb_peak 470 absorb_width 115 absorb_shape 8 absorb_max 0.97\n"
-        "    emit_width 20 stokes_shift 135 quantum_yield 0.65 reflectance 0.92 }\n"
-        "material l lambert { reflectance rgb 0.5 0.5 0.5 }\n"
-        "material p phong { diffuse rgb 0.3 0.3 0.3 specular rgb 0.5 0.5 0.5 exponent 50 }\n"
-        "material m mirror\n"
-        "material e emitter { radiance rgb 1 0.5 0.25 }\n"
-        "material c conductor { metal Au roughness 0.3 }\n"
-        "material pl plastic { reflectance rgb 0.3 0.5 0.2 roughness 0.2 }\n"
-        "material t thindielectric { index 1.5 }\n"
-        "material fv fluorescent-varnish { matrix dayglo ior 1.5 slope 17 }\n"
-        "material fp fluorescent-phong { matrix dayglo ks 0.04 exponents 30 120 480 weights 0.2 0.3 0.5 }\n"
-        "material d dielectric\n"
-        "material tf thinfilm { thickness 400 base lambert { reflectance rgb 0.5 0.5 0.5 } }\n"
-        "material ly layer { top dielectric { index 1.5 } bottom lambert { reflectance rgb 0.5 0.5 0.5 } }\n";
     GLibrary *lib = NULL;
     GError err;
-    if (greader_load_string(text, "relindex.mat", NULL, &lib, &err) != G_OK)
+    if (greader_load_string(leaves_text, "relindex.mat", NULL, &lib, &err) != G_OK)
         fail_msg("%s", err.message);
     static const struct {
         const char *name;
@@ -741,13 +741,11 @@ static void test_no_rel_index_bit(void **state)
         assert_int_equal(gcolor_fill(&ri[k], k ? 1.0 / 1.5 : 1.5), G_OK);
     }
     int rounds = TU_SANITIZED ? 40 : 200, glass_differs = 0;
-    uint64_t s = 11;
+    unsigned long long s = 11;
     for (int r = 0; r < rounds; r++) {
         double x[4];
-        for (int j = 0; j < 4; j++) {
-            s = s * 6364136223846793005ull + 1442695040888963407ull;
-            x[j] = (double)(s >> 11) / 9007199254740992.0;
-        }
+        for (int j = 0; j < 4; j++)
+            x[j] = tu_uniform(&s);
         g->value = (r % 5) / 4.0; /* 0, 0.25, ..., 1: one child or a blend of two */
         int below = r & 1;
         double up = below ? -1.0 : 1.0;
@@ -790,15 +788,10 @@ static void test_no_rel_index_bit(void **state)
         gmaterial_unref(no[i]);
     for (int i = 2; i >= 0; i--)
         gmaterial_unref(yes[i]);
-    for (int i = 7; i >= 0; i--)
-        gmaterial_unref(n[i]);
-    gmaterial_unref(a);
-    gmaterial_unref(b);
-    gmaterial_unref(c);
+    release_plain_nodes(NULL, 0, n, a, b, c, g);
     gmaterial_unref(mirror);
     gmaterial_unref(glass);
     gmaterial_unref(thin);
-    ggenerator_unref(&g->base);
 }
 
 static int constant_index(const GMaterial *m) { return (m->flags & GMAT_CONSTANT_INDEX) != 0; }
@@ -827,25 +820,9 @@ static int same_bits(const GColor *x, const GColor *y)
 static void test_constant_index_bit(void **state)
 {
     Fix *f = *state;
-    static const char *const text =
-        "colormodel bispectral\n"
-        "color dayglo reradiation { absorb_peak 470 absorb_width 115 absorb_shape 8 absorb_max 0.97\n"
-        "    emit_width 20 stokes_shift 135 quantum_yield 0.65 reflectance 0.92 }\n"
-        "material l lambert { reflectance rgb 0.5 0.5 0.5 }\n"
-        "material p phong { diffuse rgb 0.3 0.3 0.3 specular rgb 0.5 0.5 0.5 exponent 50 }\n"
-        "material m mirror\n"
-        "material e emitter { radiance rgb 1 0.5 0.25 }\n"
-        "material c conductor { metal Au roughness 0.3 }\n"
-        "material pl plastic { reflectance rgb 0.3 0.5 0.2 roughness 0.2 }\n"
-        "material t thindielectric { index 1.5 }\n"
-        "material fv fluorescent-varnish { matrix dayglo ior 1.5 slope 17 }\n"
-        "material fp fluorescent-phong { matrix dayglo ks 0.04 exponents 30 120 480 weights 0.2 0.3 0.5 }\n"
-        "material d dielectric\n"
-        "material tf thinfilm { thickness 400 base lambert { reflectance rgb 0.5 0.5 0.5 } }\n"
-        "material ly layer { top dielectric { index 1.5 } bottom lambert { reflectance rgb 0.5 0.5 0.5 } }\n";
     GLibrary *lib = NULL;
     GError err;
-    if (greader_load_string(text, "constindex.mat", NULL, &lib, &err) != G_OK)
+    if (greader_load_string(leaves_text, "constindex.mat", NULL, &lib, &err) != G_OK)
         fail_msg("%s", err.message);
     static const char *const leaves[] = {"l", "p", "m", "e", "c", "pl", "t", "fv", "fp", "d", "tf", "ly"};
     for (size_t i = 0; i < sizeof leaves / sizeof leaves[0]; i++) {
@@ -912,13 +889,11 @@ static void test_constant_index_bit(void **state)
     assert_int_equal(gcolor_alloc(&at, f->rgb), G_OK);
     assert_int_equal(gcolor_alloc(&first, f->rgb), G_OK);
     int rounds = TU_SANITIZED ? 40 : 300, control_differs = 0;
-    uint64_t s = 17;
+    unsigned long long s = 17;
     for (int r = 0; r < rounds; r++) {
         double x[6];
-        for (int j = 0; j < 6; j++) {
-            s = s * 6364136223846793005ull + 1442695040888963407ull;
-            x[j] = (double)(s >> 11) / 9007199254740992.0;
-        }
+        for (int j = 0; j < 6; j++)
+            x[j] = tu_uniform(&s);
         g->value = x[5]; /* the generators' value: a blend of the lambert and the glass follows it */
         int below = r & 1;
         GSurfPoint sp;
