@@ -524,6 +524,8 @@ static int dielectric_create(const GColorModel *model, const GDielectricParams *
     if (!d->tinted || d->tint.kind == GCOLOR_VECTOR) /* F * illum (* tint), (1 - F) * illum: sample by sample */
         d->base.flags |= GMAT_DIAGONAL;
     d->base.flags |= GMAT_CONSTANT_INDEX; /* its index is a colour made once, read at no point */
+    if (!d->absorbs) /* dielectric_absorption copies the light */
+        d->base.flags |= GMAT_CLEAR;
     *out = &d->base;
     return G_OK;
 }

@@ -346,6 +346,7 @@ static int thinfilm_create(const GColorModel *model, const GTexNumber *thickness
         if (gtexparam_number_reads_uv(thickness) || gtexparam_number_reads_uv(n) || gtexparam_number_reads_uv(k))
             m->flags &= ~(unsigned)GMAT_NO_UV;
         m->flags |= f->under->flags & GMAT_CONSTANT_INDEX; /* its index is the base's */
+        m->flags |= f->under->flags & GMAT_CLEAR; /* its absorption is the base's */
         if (table)
             film_table(f);
         *out = m;

@@ -73,6 +73,8 @@ static int make(const GNodeBlendClass *cls, GMaterial *a, GMaterial *b, GGenerat
     if (only != GNODE_REFLECTION && only != GNODE_DIFFUSE) /* pick blends both alike, or gives a for both */
         gnode_inherit_lambertian(node, children, 2);
     gnode_inherit_no_uv(node, children, 2, t); /* reads the point only through t */
+    if (only >= 0 && only != GNODE_ABSORPTION) /* pick gives a alone for absorption: a's, unchanged */
+        gnode_inherit_clear(node, children, 1);
     *out = &n->base;
     return G_OK;
 }

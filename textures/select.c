@@ -38,6 +38,7 @@ int gnode_select_create(GMaterial *const *children, int n, GGenerator *index, GM
     if (rc == G_OK) {
         gnode_inherit_lambertian(*out, children, n); /* pick ignores the method: one child for all */
         gnode_inherit_no_uv(*out, children, n, index); /* reads the point only through the index */
+        gnode_inherit_clear(*out, children, n); /* its absorption is one child's, unchanged */
     }
     return rc;
 }

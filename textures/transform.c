@@ -276,6 +276,7 @@ int gnode_transform_create(GMaterial *child, const GAffine2 *uv, const GAffine3 
     /* the child's results at a moved point; move() takes the point's index only for a child that may read it */
     gnode_inherit_no_rel_index(&t->base, &child, 1);
     gnode_inherit_constant_index(&t->base, child); /* the child's index at a moved point, or for sp NULL */
+    gnode_inherit_clear(&t->base, &child, 1); /* the child's absorption at a moved point, or for sp NULL */
     /* the child's normal at a moved point that keeps the geometric normal (move() leaves it) */
     gnode_inherit_geometric_normal(&t->base, &child, 1);
     /* reflection and diffuse colour: the child's at the moved copy, which carries sp's shading normal (move()

@@ -130,7 +130,16 @@ enum {
      * when the material whose index they give has it); the node kit on a node whose refraction_index is one child's
      * at any point when that child has it (gnode_inherit_constant_index, gnode_inherit_kit_constant_index: bump,
      * scale, image, transform, the textured materials), never on a blend of several children. */
-    GMAT_CONSTANT_INDEX = 256u
+    GMAT_CONSTANT_INDEX = 256u,
+    /** The material as a medium absorbs nothing: absorption(sp, illum, length, result) writes illum itself (its
+     * kind and samples, bit for bit) for every length >= 0, at every point and for sp NULL, so a renderer may skip
+     * the call and the colour it writes to, and carry the light on unchanged. Set by gmaterial_init for a class
+     * without an absorption slot (the default, illum); a class sets it on the instances it holds for (dielectric
+     * without absorption; thinfilm when its base has it); the node kit on a node whose absorption is at every point
+     * one child's when each such child has it (gnode_inherit_clear, gnode_inherit_kit_clear: bump, scale, image,
+     * transform, select, the textured materials, interpolate-one of another method), never on a blend of several
+     * children (w x + (1 - w) x is not always x in floating point). */
+    GMAT_CLEAR = 512u
 };
 
 /** A material instance begins with this header; implementations embed it as their first member. */
@@ -242,7 +251,7 @@ struct GMaterialClass {
 /** Fills the header of a new instance (refcount 1; flags: GMAT_NO_EMISSION when the class has no emission slot,
  * GMAT_OPAQUE when it has no opaque slot, GMAT_GEOMETRIC_NORMAL when it has no normal slot, GMAT_NO_IDEAL when it
  * has neither a reflection_dir nor a refraction_dir slot, GMAT_CONSTANT_INDEX when it has no refraction_index
- * slot); G_ERR_VERSION when
+ * slot, GMAT_CLEAR when it has no absorption slot); G_ERR_VERSION when
  * the class is of another version. */
 GENERIC_API GENERIC_NODISCARD int gmaterial_init(GMaterial *m, const GMaterialClass *cls, const GColorModel *model,
                                                  GError *err);
@@ -282,6 +291,9 @@ GENERIC_API int gmaterial_no_rel_index(const GMaterial *m);
  * relative index between two such materials may be computed once. 0 when it may vary (or it cannot tell); NULL
  * (vacuum, index 1) is 1. */
 GENERIC_API int gmaterial_constant_index(const GMaterial *m);
+/** 1 when m has GMAT_CLEAR: as a medium it absorbs nothing, its absorption of any light is that light, bit for bit,
+ * so a renderer may skip the call. 0 when it may absorb (or it cannot tell); NULL (vacuum) is 1. */
+GENERIC_API int gmaterial_clear(const GMaterial *m);
 
 /* ---- helpers for material implementations (lib/core/optics.c) ---- */
 

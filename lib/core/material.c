@@ -19,7 +19,8 @@ int gmaterial_init(GMaterial *m, const GMaterialClass *cls, const GColorModel *m
                (cls->opaque ? 0u : GMAT_OPAQUE) |        /* no slot: opaque, the documented default */
                (cls->normal ? 0u : GMAT_GEOMETRIC_NORMAL) | /* no slot: the geometric normal, the default */
                (cls->reflection_dir || cls->refraction_dir ? 0u : GMAT_NO_IDEAL) | /* no slots: no ideal ray */
-               (cls->refraction_index ? 0u : GMAT_CONSTANT_INDEX); /* no slot: 1 everywhere, the default */
+               (cls->refraction_index ? 0u : GMAT_CONSTANT_INDEX) | /* no slot: 1 everywhere, the default */
+               (cls->absorption ? 0u : GMAT_CLEAR); /* no slot: the light itself, the default */
     return G_OK;
 }
 
@@ -49,6 +50,8 @@ int gmaterial_diagonal(const GMaterial *m) { return m && (m->flags & GMAT_DIAGON
 int gmaterial_no_rel_index(const GMaterial *m) { return !m || (m->flags & GMAT_NO_REL_INDEX); }
 
 int gmaterial_constant_index(const GMaterial *m) { return !m || (m->flags & GMAT_CONSTANT_INDEX); }
+
+int gmaterial_clear(const GMaterial *m) { return !m || (m->flags & GMAT_CLEAR); }
 
 /* ---- the defaults of GMATERIAL_METHODS (material.h): what gmaterial_<name> answers for a NULL slot, a NULL
  * material, or a material with the method's `unless` bit ---- */

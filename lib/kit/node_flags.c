@@ -9,8 +9,9 @@
  * sample when each of them does (GMAT_DIAGONAL); one whose ideal rays are its children's has none when none of them has
  * (GMAT_NO_IDEAL); one that reads the point only through a generator not in (u, v) space, over children that never read
  * (u, v), lets the renderer skip the parametrisation; one that reads no relative index itself, over children that
- * read none, lets the renderer skip computing it (GMAT_NO_REL_INDEX); and one whose refraction index is its one
- * child's has a constant index when the child has (GMAT_CONSTANT_INDEX). */
+ * read none, lets the renderer skip computing it (GMAT_NO_REL_INDEX); one whose refraction index is its one
+ * child's has a constant index when the child has (GMAT_CONSTANT_INDEX); and one whose absorption is always one
+ * child's absorbs nothing when those children absorb nothing (GMAT_CLEAR). */
 #include "generic/kit/node_kit.h"
 #include "generic/texture.h"
 
@@ -172,4 +173,16 @@ void gnode_inherit_kit_constant_index(GMaterial *node, GMaterial *const *childre
 {
     if (node && node->cls->refraction_index == gnode_child_refraction_index && n == 1 && children)
         gnode_inherit_constant_index(node, children[0]);
+}
+
+void gnode_inherit_clear(GMaterial *node, GMaterial *const *children, int n)
+{
+    if (node && children_all(children, n, GMAT_CLEAR))
+        node->flags |= GMAT_CLEAR;
+}
+
+void gnode_inherit_kit_clear(GMaterial *node, GMaterial *const *children, int n)
+{
+    if (node && node->cls->absorption == gnode_child_absorption && n == 1)
+        gnode_inherit_clear(node, children, 1);
 }

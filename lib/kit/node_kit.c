@@ -131,6 +131,7 @@ int gnode_new_checked(const GMaterialClass *cls, GMaterial *const *children, int
         gnode_inherit_kit_no_ideal(*out, children, n); /* the kit's direction slots: their rays or blends of them */
         gnode_inherit_kit_no_rel_index(*out, children, n); /* the kit's slots only: their index reads, if any */
         gnode_inherit_kit_constant_index(*out, children, n); /* the kit's pass-through index: its child's */
+        gnode_inherit_kit_clear(*out, children, n); /* the kit's pass-through absorption: its child's */
     }
     return rc;
 }

@@ -183,6 +183,19 @@ GENERIC_API void gnode_inherit_constant_index(GMaterial *node, const GMaterial *
  * gnode_new_checked calls it for every node it makes, plug-in classes included. */
 GENERIC_API void gnode_inherit_kit_constant_index(GMaterial *node, GMaterial *const *children, int n);
 
+/** Sets GMAT_CLEAR (material.h) on node when each of the n children has it: for a node class whose absorption is, at
+ * every point (the point itself or a moved copy of it) and for sp NULL, one of these children's absorption of the
+ * same light, with nothing computed on it (transform; select, whose blend is always one child; interpolate-one of
+ * another method, over its first child; they call it after construction). A blend of several children's absorptions
+ * must not call it: w x + (1 - w) x is not always x in floating point. */
+GENERIC_API void gnode_inherit_clear(GMaterial *node, GMaterial *const *children, int n);
+
+/** Sets GMAT_CLEAR on node when its class's absorption slot is the kit's pass-through gnode_child_absorption, n is 1
+ * and the child has it (a class without the slot has it from gmaterial_init; the kit's blend
+ * gnode_blended_absorption sums weighted children and never gets it). gnode_new_checked calls it for every node it
+ * makes, plug-in classes included. */
+GENERIC_API void gnode_inherit_kit_clear(GMaterial *node, GMaterial *const *children, int n);
+
 /** 1 when each of the n children has GMAT_NO_UV (material.h) and gen, when given, is not a function of (u, v)
  * (its space, texture.h, is not GGENERATOR_SPACE_UV: a generator's space says what its value reads). */
 GENERIC_API GENERIC_NODISCARD int gnode_children_no_uv(GMaterial *const *children, int n, const GGenerator *gen);
