@@ -13,6 +13,10 @@
  *  - GMAT_CONSTANT_INDEX: which leaves and nodes get it (every built-in; the kit's pass-throughs and transform over a
  *    child that has it, no blend), and that their refraction index is the same bits at generated points as for
  *    no point;
+ *  - GMAT_CLEAR: which leaves and nodes get it (every built-in but a dielectric that absorbs and a thinfilm over
+ *    one; the kit's pass-throughs, transform, select and interpolate-one of another method over children that have
+ *    it, no blend of several, whose arithmetic the test shows is not always the light's bits), and that their
+ *    absorption gives the light back bit for bit at generated points, lengths and lights;
  *  - the material interface's version rose with the header (and stayed for the normal and Lambertian bits). */
 #include <stdarg.h>
 #include <stddef.h>
@@ -935,6 +939,191 @@ static void test_constant_index_bit(void **state)
     gmaterial_unref(varying);
 }
 
+static int clear(const GMaterial *m) { return (m->flags & GMAT_CLEAR) != 0; }
+
+/* A class with an absorption slot of its own: half the light passes at any length (no bit: gmaterial_init cannot
+ * tell). */
+static int half_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length, GColor *result)
+{
+    (void)self, (void)sp, (void)length;
+    return gcolor_scale(result, illum, 0.5);
+}
+
+static const GMaterialClass absorbing_class = {
+    .abi_version = GMATERIAL_ABI_VERSION, .name = "absorbing", .description = "half the light passes (tests)",
+    .destroy = glow_destroy, .absorption = half_absorption,
+};
+
+/* A light of rgb values drawn in [0, 10) from *s, black one time in four. */
+static void draw_light(GColor *light, unsigned long long *s)
+{
+    double rgb[3];
+    for (int j = 0; j < 3; j++)
+        rgb[j] = 10.0 * tu_uniform(s);
+    if (tu_uniform(s) < 0.25)
+        gcolor_black(light);
+    else
+        assert_int_equal(gcolor_from_rgb(light, rgb, GCOLOR_LIGHT), G_OK);
+}
+
+/* m's absorption of light over length at sp (NULL: none) into at, filled with NaN bits first: 1 when it is the
+ * light, bit for bit. */
+static int gives_light_back(const GMaterial *m, GSurfPoint *sp, const GColor *light, double length, GColor *at)
+{
+    memset(at->v, 0xff, (size_t)at->model->nvalues * sizeof(float));
+    return gmaterial_absorption(m, sp, light, length, at) == G_OK && same_bits(at, light);
+}
+
+/* Which leaves and nodes have GMAT_CLEAR; over generated points (both sides, positions, normals, (u, v), surface
+ * indices, generator values), lengths and lights (black among them) the flagged ones give the light back bit for
+ * bit, and so for sp NULL. A blend of two clear children, which does not get the bit, is shown to give other bits
+ * for some lights and weights: w x + (1 - w) x rounds. */
+static void test_clear_bit(void **state)
+{
+    Fix *f = *state;
+    GLibrary *lib = NULL;
+    GError err;
+    static const char *const absorbing_text =
+        "material da dielectric { index 1.5 absorption rgb 0.5 0.2 0.1 }\n"
+        "material dz dielectric { index 1.5 absorption rgb 0 0 0 }\n"
+        "material tfa thinfilm { thickness 400 base dielectric { index 1.5 absorption rgb 0.5 0.2 0.1 } }\n";
+    char text[4096];
+    snprintf(text, sizeof text, "%s%s", leaves_text, absorbing_text);
+    if (greader_load_string(text, "clear.mat", NULL, &lib, &err) != G_OK)
+        fail_msg("%s", err.message);
+    static const struct {
+        const char *name;
+        int clear;
+    } leaves[] = {{"l", 1},  {"p", 1},  {"m", 1},  {"e", 1},  {"c", 1},  {"pl", 1}, {"t", 1},   {"fv", 1},
+                  {"fp", 1}, {"d", 1},  {"tf", 1}, {"ly", 1}, {"da", 0}, {"dz", 1}, {"tfa", 0}};
+    for (size_t i = 0; i < sizeof leaves / sizeof leaves[0]; i++) {
+        GMaterial *m = glibrary_material(lib, leaves[i].name);
+        assert_non_null(m);
+        if (clear(m) != leaves[i].clear || gmaterial_clear(m) != leaves[i].clear)
+            fail_msg("%s: GMAT_CLEAR %d, expected %d", leaves[i].name, clear(m), leaves[i].clear);
+    }
+    glibrary_destroy(lib);
+    assert_int_equal(gmaterial_clear(NULL), 1); /* vacuum absorbs nothing */
+
+    GMaterial *plain = gmem_calloc(1, sizeof *plain), *absorbing = gmem_calloc(1, sizeof *absorbing);
+    assert_int_equal(gmaterial_init(plain, &plain_class, f->rgb, &err), G_OK);
+    assert_int_equal(gmaterial_init(absorbing, &absorbing_class, f->rgb, &err), G_OK);
+    assert_int_equal(clear(plain), 1);     /* no slot: the light itself, set by gmaterial_init */
+    assert_int_equal(clear(absorbing), 0); /* a slot of its own: not set */
+
+    GMaterial *a = lambert(f, 0.2), *b = lambert(f, 0.8), *c = lambert(f, 0.5), *n[8], *glass = NULL, *tinted = NULL;
+    GMaterial *yes[7], *no[7];
+    GColor coeff;
+    double k[3] = {0.5, 0.2, 0.1};
+    assert_int_equal(gcolor_alloc(&coeff, f->rgb), G_OK);
+    assert_int_equal(gcolor_from_rgb(&coeff, k, GCOLOR_REFLECTANCE), G_OK);
+    GDielectricParams gp = {.index = gdispersion_constant(1.5)};
+    GDielectricParams tp = {.index = gdispersion_constant(1.5), .absorption = &coeff};
+    assert_int_equal(gdielectric_create(f->rgb, &gp, &glass, &err), G_OK);
+    assert_int_equal(gdielectric_create(f->rgb, &tp, &tinted, &err), G_OK);
+    gcolor_free(&coeff);
+    assert_int_equal(clear(glass), 1);
+    assert_int_equal(clear(tinted), 0);
+    CountGen *g = countgen_new(0.4);
+    plain_nodes(a, b, c, g, n);
+    /* interpolate-one of the diffuse colour, select, bump, scale and transform give one child's absorption */
+    static const int over_lamberts[8] = {0, 1, 0, 1, 1, 1, 1, 0};
+    for (int i = 0; i < 8; i++)
+        if (clear(n[i]) != over_lamberts[i])
+            fail_msg("node %d (%s) over lamberts: GMAT_CLEAR %d, expected %d", i, gmaterial_name(n[i]), clear(n[i]),
+                     over_lamberts[i]);
+    GAffine2 uv = gaffine2_rotate(30.0);
+    GAffine3 move = gaffine3_translate(gvec3(1.0, -2.0, 0.5));
+    GMaterial *clear_kids[3] = {glass, a, plain}, *mixed_kids[3] = {glass, tinted, a};
+    assert_int_equal(gnode_bump_create(glass, &g->base, 1.0, &yes[0], &err), G_OK);
+    assert_int_equal(gnode_scale_create(glass, &g->base, &yes[1], &err), G_OK);
+    assert_int_equal(gnode_transform_create(glass, &uv, &move, &yes[2], &err), G_OK);
+    assert_int_equal(gnode_transform_create(yes[1], NULL, &move, &yes[3], &err), G_OK);
+    assert_int_equal(gnode_select_create(clear_kids, 3, &g->base, &yes[4], &err), G_OK);
+    assert_int_equal(gnode_interpolate_one_create(glass, tinted, &g->base, GNODE_REFLECTION, &yes[5], &err), G_OK);
+    assert_int_equal(gnode_bump_create(plain, &g->base, 0.5, &yes[6], &err), G_OK);
+    for (int i = 0; i < 7; i++)
+        if (!clear(yes[i]))
+            fail_msg("node %d (%s) over clear children has no GMAT_CLEAR", i, gmaterial_name(yes[i]));
+    assert_int_equal(gnode_interpolate_create(a, glass, &g->base, &no[0], &err), G_OK);
+    assert_int_equal(gnode_bump_create(tinted, &g->base, 1.0, &no[1], &err), G_OK);
+    assert_int_equal(gnode_transform_create(absorbing, &uv, NULL, &no[2], &err), G_OK);
+    assert_int_equal(gnode_select_create(mixed_kids, 3, &g->base, &no[3], &err), G_OK);
+    assert_int_equal(gnode_interpolate_one_create(glass, a, &g->base, GNODE_ABSORPTION, &no[4], &err), G_OK);
+    assert_int_equal(gnode_interpolate_one_create(tinted, glass, &g->base, GNODE_DIFFUSE, &no[5], &err), G_OK);
+    assert_int_equal(gnode_scale_create(no[0], &g->base, &no[6], &err), G_OK);
+    for (int i = 0; i < 7; i++)
+        if (clear(no[i]))
+            fail_msg("node %d (%s) over a blend or an absorbing child has GMAT_CLEAR", i, gmaterial_name(no[i]));
+
+    /* the property: every flagged material gives the light back, bit for bit, at generated points and for none */
+    const GMaterial *all[24];
+    int nall = 0;
+    for (int i = 0; i < 8; i++)
+        if (over_lamberts[i])
+            all[nall++] = n[i];
+    for (int i = 0; i < 7; i++)
+        all[nall++] = yes[i];
+    all[nall++] = glass;
+    all[nall++] = plain;
+    all[nall++] = a;
+    const GMaterial *blends[2] = {no[0], no[4]}; /* two clear children blended: not flagged */
+    static const double lengths[] = {0.0, 1e-3, 1.0, 1e3};
+    GColor light, at;
+    assert_int_equal(gcolor_alloc(&light, f->rgb), G_OK);
+    assert_int_equal(gcolor_alloc(&at, f->rgb), G_OK);
+    int rounds = TU_SANITIZED ? 40 : 300, blend_calls = 0, blend_differs = 0;
+    unsigned long long s = 23;
+    for (int r = 0; r < rounds; r++) {
+        double x[6];
+        for (int j = 0; j < 6; j++)
+            x[j] = tu_uniform(&s);
+        /* the generators' value: the blends' weights (in (0, 1) every other round) and select's child follow it */
+        g->value = r % 2 ? x[5] : 3.0 * x[5];
+        int below = r & 1;
+        GSurfPoint sp;
+        plane_point(&sp, f->rgb, f->scratch, 4.0 * x[0] - 1.0, 4.0 * x[1] - 1.0);
+        sp.point = sp.object_point = gvec3(10.0 * x[2] - 5.0, 10.0 * x[3] - 5.0, 10.0 * x[4] - 5.0);
+        sp.geometric_normal = gvec3_normalize(gvec3(x[2] - 0.5, x[3] - 0.5, (below ? -1.0 : 1.0) * (0.2 + x[4])));
+        sp.entering = !below;
+        sp.surface = r % 6;
+        sp.t = 5.0 * x[4];
+        double length = r % 5 < 4 ? lengths[r % 5] : 100.0 * tu_uniform(&s);
+        draw_light(&light, &s);
+        for (int i = 0; i < nall + 2; i++) {
+            const GMaterial *m = i < nall ? all[i] : blends[i - nall];
+            sp.material = m;
+            sp.from = below ? m : NULL;
+            sp.to = below ? NULL : m;
+            gsurfpoint_invalidate(&sp);
+            if (i >= nall) {
+                blend_calls++;
+                blend_differs += !gives_light_back(m, &sp, &light, length, &at);
+                continue;
+            }
+            if (!gives_light_back(m, &sp, &light, length, &at))
+                fail_msg("%s (%d): absorption over %g is not the light (round %d)", gmaterial_name(m), i, length, r);
+            if (!gives_light_back(m, NULL, &light, length, &at))
+                fail_msg("%s (%d): absorption for no point over %g is not the light (round %d)", gmaterial_name(m), i,
+                         length, r);
+        }
+    }
+    /* the blend's arithmetic changes some lights' bits: the kit must not give a blend the bit */
+    assert_true(blend_differs > 0);
+    assert_true(blend_differs < blend_calls); /* black light, weights 0 and 1 give the light itself */
+    gcolor_free(&light);
+    gcolor_free(&at);
+    for (int i = 6; i >= 0; i--)
+        gmaterial_unref(no[i]);
+    for (int i = 6; i >= 0; i--)
+        gmaterial_unref(yes[i]);
+    release_plain_nodes(NULL, 0, n, a, b, c, g);
+    gmaterial_unref(glass);
+    gmaterial_unref(tinted);
+    gmaterial_unref(plain);
+    gmaterial_unref(absorbing);
+}
+
 int main(void)
 {
     if (generic_register_builtins(NULL) != G_OK)
@@ -952,6 +1141,7 @@ int main(void)
         cmocka_unit_test(test_interface_version),
         cmocka_unit_test_setup_teardown(test_no_rel_index_bit, setup, teardown),
         cmocka_unit_test_setup_teardown(test_constant_index_bit, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_clear_bit, setup, teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -262,7 +262,7 @@ static void test_defaults(void **state)
     defaults_of(f, NULL);
     GMaterial *m = new_material(&bare_class, f->model);
     assert_int_equal(m->flags, (unsigned)(GMAT_NO_EMISSION | GMAT_OPAQUE | GMAT_GEOMETRIC_NORMAL | GMAT_NO_IDEAL |
-                                          GMAT_CONSTANT_INDEX));
+                                          GMAT_CONSTANT_INDEX | GMAT_CLEAR));
     defaults_of(f, m);
     m->flags = 0; /* the NULL slots themselves */
     defaults_of(f, m);
