@@ -52,7 +52,7 @@ uninstall-tools:
 # line (main.c and the commands it alone runs) is not part of it.
 GMAT_SO := $(BUILD)/lib/libgmat.so
 GMAT_SO_OBJ := $(patsubst %,$(BUILD)/obj/examples/gmat/%.o,albedo check check_file flags measure sampling uvflag \
-               relindex constindex)
+               relindex constindex clear)
 all: $(GMAT_SO)
 $(GMAT_SO): $(GMAT_SO_OBJ) $(LIBSO)
 	@mkdir -p $(dir $@)

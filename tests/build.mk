@@ -34,6 +34,7 @@ TEST_PLUGINS := bad_abi:bad_module:BAD_ABI failing_init:bad_module:FAIL_INIT no_
                 misnormal:nonconforming:MISNORMAL misdiffuse:nonconforming:MISDIFFUSE misuv:nonconforming:MISUV \
                 misdiag:nonconforming:MISDIAG misideal:nonconforming:MISIDEAL bad_add:nonconforming:BAD_ADD \
                 misrelindex:nonconforming:MISRELINDEX misconstindex:nonconforming:MISCONSTINDEX \
+                misclear:nonconforming:MISCLEAR \
                 bad_bands:nonconforming:BAD_BANDS \
                 gain_mirror:nonconforming:GAIN_MIRROR misbent:nonconforming:MISBENT leaky:nonconforming:LEAKY \
                 halfvector:halfvector:GGX

@@ -53,6 +53,9 @@
  *   constant-index  for a material with GMAT_CONSTANT_INDEX: its class's own refraction_index gives the same
  *                colour, bit for bit, at the places and at points drawn around them, both sides, as for sp NULL
  *                (constindex.c).
+ *   clear        for a material with GMAT_CLEAR: its class's own absorption gives the light back, bit for bit, for
+ *                lengths 0 to 1e3 and lights black to bright, at the places and points drawn around them, both
+ *                sides, and for sp NULL (clear.c).
  *   chi2, pdf integral, weight: the sampling slots (sampling.c). */
 #include "gmat.h"
 
@@ -497,6 +500,7 @@ int gmat_check(GmatContext *ctx, int samples)
     gmat_check_no_ideal(ctx, k.places, NPLACES, report_fn, &k);
     gmat_check_no_rel_index(ctx, k.places, NPLACES, report_fn, &k);
     gmat_check_constant_index(ctx, k.places, NPLACES, report_fn, &k);
+    gmat_check_clear(ctx, k.places, NPLACES, report_fn, &k);
     gmat_check_sampling(ctx, k.places, NPLACES, 0, report_fn, &k);
     printf("%s: %s\n", ctx->material_name, k.failures ? "FAIL" : "PASS");
     gcolor_free(&k.a);

@@ -13,8 +13,7 @@
 
 #define DRAWN_POINTS 24 /* points drawn around each place and side */
 
-/* 1 when the two colours hold the same kind and the same samples, bit for bit. */
-static int same_colour(const GColor *a, const GColor *b)
+int gmat_same_colour(const GColor *a, const GColor *b)
 {
     if (a->kind != b->kind)
         return 0;
@@ -30,8 +29,7 @@ static GVec3 random_unit(unsigned long long *seed)
     return gvec3(r * cos(a), r * sin(a), z);
 }
 
-/* sp moved to a point drawn around it: position, normal on the same side, tangents, (u, v), surface and footprint. */
-static void draw_point(GSurfPoint *sp, unsigned long long *seed)
+void gmat_draw_point(GSurfPoint *sp, unsigned long long *seed)
 {
     GVec3 n = random_unit(seed);
     if (gvec3_dot(n, sp->geometric_normal) < 0.0)
@@ -79,12 +77,12 @@ void gmat_check_constant_index(GmatContext *ctx, const GmatPlace *places, int np
                 GSurfPoint sp;
                 gmat_surface_point(ctx, &sp, below);
                 if (k > 0)
-                    draw_point(&sp, &seed);
+                    gmat_draw_point(&sp, &seed);
                 GScratchMark inner = gscratch_mark(ctx->scratch);
                 int r = m->cls->refraction_index(m, &sp, &at);
                 gscratch_release(ctx->scratch, inner);
                 calls++;
-                differ += !(r == ref_rc && (r != G_OK || same_colour(&at, &ref)));
+                differ += !(r == ref_rc && (r != G_OK || gmat_same_colour(&at, &ref)));
             }
     }
     ctx->place = NULL;

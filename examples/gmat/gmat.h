@@ -132,6 +132,15 @@ void gmat_check_no_rel_index(GmatContext *ctx, const GmatPlace *places, int npla
  * both sides, as for sp NULL. */
 void gmat_check_constant_index(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
                                void *checker);
+/** 1 when the two colours hold the same kind and the same samples, bit for bit (constindex.c). */
+int gmat_same_colour(const GColor *a, const GColor *b);
+/** sp moved to a point drawn around it (constindex.c): position, normal on the same side, tangents, (u, v), surface,
+ * footprints and distance t, its caches invalidated. */
+void gmat_draw_point(GSurfPoint *sp, unsigned long long *seed);
+/** The clear check of `gmat check` (clear.c): a material with GMAT_CLEAR must give back the light itself, bit for
+ * bit, from its class's absorption at the places given and at points drawn around them, on both sides, and for
+ * sp NULL, over lengths from 0 to 1e3 and lights of generated values, black included. */
+void gmat_check_clear(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report, void *checker);
 /** The no-uv check of `gmat check` (uvflag.c): a material with GMAT_NO_UV must give the same colours, normal and
  * opacity at the places given, on both sides, with the surface's parametrisation set and with it zero. */
 void gmat_check_no_uv(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report, void *checker);

@@ -130,6 +130,8 @@ static void usage_check(FILE *f)
                "               from its class's slots with the relative indices 1.5 and 1 / 1.5\n"
                "  constant-index a material flagged GMAT_CONSTANT_INDEX gives the same refraction\n"
                "               index, bit for bit, at every point drawn and for no point\n"
+               "  clear        a material flagged GMAT_CLEAR gives back the light, bit for bit, from\n"
+               "               its class's absorption for any length, light and point\n"
                "Each is measured at several surface points (u, v, point and surface index vary).\n"
                "  --samples N         albedo grid N x 2N (8..4096, default 64)\n\n%s",
             common);

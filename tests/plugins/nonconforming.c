@@ -36,6 +36,9 @@
  *   -DMISCONSTINDEX material "misconstindex_lambert": a Lambertian of albedo 0.5 whose refraction index is
  *                1.4 + 0.1 u (1.4 for no point) while its instances set GMAT_CONSTANT_INDEX, so a renderer would keep
  *                one relative index for every point: only the constant-index check sees it;
+ *   -DMISCLEAR   material "misclear_lambert": a Lambertian of albedo 0.5 that as a medium absorbs, exp(-0.1 length)
+ *                of the light passing, while its instances set GMAT_CLEAR, so a renderer would skip the absorption:
+ *                only the clear check sees it;
  *   -DGAIN_MIRROR material "gain_mirror": a mirror whose ideal ray passes on 1.2 times the light (albedo 1.2 on
  *                any surface, bumped or not);
  *   -DMISBENT    material "misbent_glass": clear glass of index 1.5 whose refraction_dir refracts about the
@@ -91,7 +94,7 @@ __attribute__((unused)) static int add_material(GModuleApi *api, const char *nam
 
 #if defined(GAIN) || defined(SKEWED) || defined(MISDRAWN) || defined(MISFLAGGED) || defined(MISOPAQUE) ||              \
     defined(MISNORMAL) || defined(MISDIFFUSE) || defined(MISUV) || defined(MISDIAG) || defined(MISIDEAL) ||           \
-    defined(MISRELINDEX) || defined(MISCONSTINDEX)
+    defined(MISRELINDEX) || defined(MISCONSTINDEX) || defined(MISCLEAR)
 typedef struct Flat {
     GMaterial base;
 } Flat;
@@ -128,7 +131,7 @@ static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, cons
 #elif defined(MISDRAWN)
     double f = 0.8 / M_PI;
 #elif defined(MISFLAGGED) || defined(MISOPAQUE) || defined(MISNORMAL) || defined(MISDIFFUSE) || defined(MISDIAG) ||    \
-    defined(MISIDEAL) || defined(MISCONSTINDEX)
+    defined(MISIDEAL) || defined(MISCONSTINDEX) || defined(MISCLEAR)
     double f = 0.5 / M_PI;
 #elif defined(MISUV)
     double f = (0.25 + 0.5 * fmin(1.0, fmax(0.0, sp->u))) / M_PI; /* reads u: GMAT_NO_UV is wrong */
@@ -166,6 +169,8 @@ static int flat_reflection(const GMaterial *self, GSurfPoint *sp, GVec3 in, cons
 #define FLAT_NAME "misrelindex_lambert"
 #elif defined(MISCONSTINDEX)
 #define FLAT_NAME "misconstindex_lambert"
+#elif defined(MISCLEAR)
+#define FLAT_NAME "misclear_lambert"
 #else
 #define FLAT_NAME "skewed_lambert"
 #endif
@@ -202,6 +207,16 @@ static int flat_refraction_index(const GMaterial *self, GSurfPoint *sp, GColor *
 {
     (void)self;
     return gcolor_fill(result, 1.4 + (sp ? 0.1 * fmin(1.0, fmax(0.0, sp->u)) : 0.0));
+}
+#endif
+
+#ifdef MISCLEAR
+/* Beer-Lambert absorption of coefficient 0.1 in every sample; the instances are flagged GMAT_CLEAR all the same (the
+ * error). */
+static int flat_absorption(const GMaterial *self, GSurfPoint *sp, const GColor *illum, double length, GColor *result)
+{
+    (void)self, (void)sp;
+    return gcolor_scale(result, illum, exp(-0.1 * length));
 }
 #endif
 
@@ -286,6 +301,9 @@ static const GMaterialClass flat_class = {
 #ifdef MISCONSTINDEX
     .refraction_index = flat_refraction_index,
 #endif
+#ifdef MISCLEAR
+    .absorption = flat_absorption,
+#endif
 };
 
 static int parse_flat(GReader *r, const void *vtable, void **object, GError *err)
@@ -319,6 +337,9 @@ static int parse_flat(GReader *r, const void *vtable, void **object, GError *err
 #endif
 #ifdef MISCONSTINDEX
     m->base.flags |= GMAT_CONSTANT_INDEX; /* the deliberate error: the class's refraction_index follows u */
+#endif
+#ifdef MISCLEAR
+    m->base.flags |= GMAT_CLEAR; /* the deliberate error: the class's absorption takes exp(-0.1 length) */
 #endif
 #ifdef MISDIAG
     m->base.flags |= GMAT_DIAGONAL; /* the deliberate error: the class's reflection mixes the light's samples */

@@ -22,7 +22,8 @@
 #     grey response to coloured light a wrong GMAT_DIAGONAL hides: diagonal alone; misideal_lambert, whose ideal ray
 #     a wrong GMAT_NO_IDEAL hides: no-ideal alone; misrelindex_lambert, whose reflection follows the relative index
 #     a wrong GMAT_NO_REL_INDEX hides: no-rel-index alone; misconstindex_lambert, whose refraction index follows u,
-#     which a wrong GMAT_CONSTANT_INDEX hides: constant-index alone),
+#     which a wrong GMAT_CONSTANT_INDEX hides: constant-index alone; misclear_lambert, whose medium absorbs, which
+#     a wrong GMAT_CLEAR hides: clear alone),
 #     and the example modules (examples/plugins/) must pass;
 #   - lambert, phong and mirror with a re-radiation matrix for a colour (bispectral) pass, the sampling weights
 #     included; light that moves between samples along the ideal ray alone is seen as re-radiation.
@@ -154,6 +155,7 @@ echo "material m misdiag_lambert" > "$TMP/misdiag.mat"
 echo "material m misideal_lambert" > "$TMP/misideal.mat"
 echo "material m misrelindex_lambert" > "$TMP/misrelindex.mat"
 echo "material m misconstindex_lambert" > "$TMP/misconstindex.mat"
+echo "material m misclear_lambert" > "$TMP/misclear.mat"
 expect_fail "gain_lambert (albedo 1.5)" albedo "$GMAT" check "$TMP/gain.mat" m --plugin "$PLUGINS/gain.so"
 expect_fail "skewed_lambert (not reciprocal)" reciprocity "$GMAT" check "$TMP/skewed.mat" m --plugin "$PLUGINS/skewed.so"
 expect_fail "misdrawn_lambert (samples uniformly, pdf cos/pi)" chi2 "$GMAT" check "$TMP/misdrawn.mat" m --plugin "$PLUGINS/misdrawn.so"
@@ -175,6 +177,8 @@ expect_fail "misrelindex_lambert (GMAT_NO_REL_INDEX on a reflection that reads t
     check "$TMP/misrelindex.mat" m --plugin "$PLUGINS/misrelindex.so"
 expect_fail "misconstindex_lambert (GMAT_CONSTANT_INDEX on a refraction index that follows u)" constant-index \
     "$GMAT" check "$TMP/misconstindex.mat" m --plugin "$PLUGINS/misconstindex.so"
+expect_fail "misclear_lambert (GMAT_CLEAR on a medium that absorbs exp(-0.1 length))" clear "$GMAT" check \
+    "$TMP/misclear.mat" m --plugin "$PLUGINS/misclear.so"
 expect_fail "bad_add (wrong add)" "a + black = a" "$GCOLOR" check bad_add --plugin "$PLUGINS/bad_add.so"
 expect_fail "bad_bands (overlapping bands)" "bands partition a" "$GCOLOR" check bad_bands --plugin "$PLUGINS/bad_bands.so"
 
