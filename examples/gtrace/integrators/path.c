@@ -121,8 +121,9 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
     const GColor *ri = NULL; /* read only: it may be a colour the context keeps (trace.h) */
     int rc = G_OK, opaque, delta, valid;
     CHECK(trace_relative_index(c, sp, &room, &ri));
-    /* in a medium the light is gathered apart (written in full: not cleared), and its absorption written to out */
-    if (sp->from) {
+    /* in a medium that absorbs the light is gathered apart (written in full: not cleared), and its absorption written
+     * to out; a clear medium (GMAT_CLEAR, vacuum) would write the light itself: it is gathered into out */
+    if (!media_clear(sp->from)) {
         CHECK(gcolor_scratch_uncleared(&inside, s->model, c->scratch));
         res = &inside;
     }
@@ -230,7 +231,7 @@ absorb:
     if (unset)
         gcolor_black(res);
     /* absorption until the light reaches the viewer */
-    if (sp->from)
+    if (res != out)
         CHECK(gmaterial_absorption(sp->from, sp, res, sp->t, out));
 done:
     gscratch_release(c->scratch, mark);
@@ -400,7 +401,7 @@ static int arrive(PathCtx *p, const Ray *r, const Media *media, int depth, doubl
     if (lh) {
         CHECK(gcolor_scale(out, &lh->color, first ? 1.0 : mis_power(prev_pdf, pdf_l)));
         const GMaterial *medium = media_top(media);
-        if (medium) {
+        if (!media_clear(medium)) { /* a clear medium (GMAT_CLEAR, vacuum) would give the light back */
             GScratchMark mark = gscratch_mark(c->scratch);
             GColor tmp;
             if ((rc = gcolor_scratch_uncleared(&tmp, s->model, c->scratch)) == G_OK && /* absorption's out */

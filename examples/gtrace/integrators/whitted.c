@@ -145,8 +145,9 @@ static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const 
     GColor tmp, inside, *res = out;
     int rc = G_OK, valid;
     CHECK(trace_tmp(c, TRACE_TMP_SHADE, &tmp)); /* not held across the secondary rays, which use it too */
-    /* in a medium the light is gathered apart (written in full: not cleared), and its absorption written to out */
-    if (sp->from) {
+    /* in a medium that absorbs the light is gathered apart (written in full: not cleared), and its absorption written
+     * to out; a clear medium (GMAT_CLEAR, vacuum) would write the light itself: it is gathered into out */
+    if (!media_clear(sp->from)) {
         CHECK(gcolor_scratch_uncleared(&inside, s->model, c->scratch));
         res = &inside;
     }
@@ -194,7 +195,7 @@ static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const 
     if (unset)
         gcolor_black(res);
     /* absorption until the light reaches the viewer */
-    if (sp->from)
+    if (res != out)
         CHECK(gmaterial_absorption(sp->from, sp, res, sp->t, out));
 done:
     gscratch_release(c->scratch, mark);

@@ -133,9 +133,9 @@ int light_transmit(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media
         surfpoint_fill(c, &seg, &h, &walk, &hp, &hf);
         if (gmaterial_opaque(hp.material, &hp))
             goto done;
-        if (hp.from && (rc = gmaterial_absorption(hp.from, &hp, light, h.t, &tmp)) < 0)
-            goto done;
-        if (hp.from && (rc = gcolor_copy(light, &tmp)) < 0)
+        int absorbs = !media_clear(hp.from); /* a clear medium (GMAT_CLEAR, vacuum) would give the light back */
+        if (absorbs && ((rc = gmaterial_absorption(hp.from, &hp, light, h.t, &tmp)) < 0 ||
+                        (rc = gcolor_copy(light, &tmp)) < 0))
             goto done;
         const Medium *vol = c->volumes ? medium_current(s, &walk) : NULL; /* a participating medium (medium.h) */
         if (vol && (rc = medium_transmit(vol, seg.o, dir, h.t, &c->rng, light, c->scratch)) < 0)
@@ -157,7 +157,7 @@ int light_transmit(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media
         }
     }
     const GMaterial *last = media_top(&walk);
-    if (last && isfinite(left) && left > 0.0) {
+    if (!media_clear(last) && isfinite(left) && left > 0.0) {
         if ((rc = gmaterial_absorption(last, sp, light, left, &tmp)) < 0 || (rc = gcolor_copy(light, &tmp)) < 0)
             goto done;
     }
@@ -220,7 +220,8 @@ int sample_light(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media, 
         return rc;
     if (occluded == OCCLUDED_CLEAR && !c->volumes) { /* the medium absorbs the reflected light: this sample alone */
         if ((t->gather && (rc = gmaterial_reflection(sp->material, sp, in, illum, out_dir, refl)) < 0) ||
-            (rc = gmaterial_absorption(medium, sp, refl, dist, tmp)) < 0 || (rc = gcolor_copy(refl, tmp)) < 0)
+            (!media_clear(medium) &&
+             ((rc = gmaterial_absorption(medium, sp, refl, dist, tmp)) < 0 || (rc = gcolor_copy(refl, tmp)) < 0)))
             return rc;
         return light_add(t, result, refl);
     }
