@@ -1,6 +1,7 @@
-/* node_fixture.h - the fixture of the texture node tests (test_texture_nodes.c, test_texture_transform.c): an
- * rgb model, a scratch arena, a surface point on a plane, a colour and a white light; call_all calls every
- * material method once. Include after cmocka.h and texture_fixtures.h. */
+/* node_fixture.h - the fixture of the texture node tests (test_texture_nodes.c, test_texture_transform.c) and of
+ * the material flag tests (through material_flags_fixture.h): an rgb model, a scratch arena, a surface point on a
+ * plane, a colour and a white light; call_all calls every material method once. Include after cmocka.h and
+ * texture_fixtures.h. */
 #ifndef NODE_FIXTURE_H
 #define NODE_FIXTURE_H
 
@@ -39,7 +40,7 @@ static int teardown(void **state)
 }
 
 /* Calls every method of m once on the point. */
-static void call_all(Fix *f, const GMaterial *m)
+static inline void call_all(Fix *f, const GMaterial *m)
 {
     GVec3 d, z = gvec3(0, 0, 1);
     assert_int_equal(gmaterial_reflection(m, &f->sp, z, &f->illum, z, &f->c), G_OK);
