@@ -250,6 +250,27 @@ static const GMaterialClass varying_index_class = {
     .destroy = bare_destroy, .refraction_index = varying_index,
 };
 
+/* A point on the plane at (u, v) = 4 x[0..1] - 1 and the position 10 x[2..4] - 5, with a normal tilted by x[2..4]
+ * (pointing down when below, where the incident ray comes from inside: not entering) and the surface index. */
+static void generated_point(Fix *f, const double x[5], int below, int surface, GSurfPoint *sp)
+{
+    plane_point(sp, f->rgb, f->scratch, 4.0 * x[0] - 1.0, 4.0 * x[1] - 1.0);
+    sp->point = sp->object_point = gvec3(10.0 * x[2] - 5.0, 10.0 * x[3] - 5.0, 10.0 * x[4] - 5.0);
+    sp->geometric_normal = gvec3_normalize(gvec3(x[2] - 0.5, x[3] - 0.5, (below ? -1.0 : 1.0) * (0.2 + x[4])));
+    sp->entering = !below;
+    sp->surface = surface;
+}
+
+/* Makes m sp's material and the medium the incident ray travels in when below, else the one on the other side
+ * (vacuum on the remaining side), and forgets what sp had cached. */
+static void place_material(GSurfPoint *sp, const GMaterial *m, int below)
+{
+    sp->material = m;
+    sp->from = below ? m : NULL;
+    sp->to = below ? NULL : m;
+    gsurfpoint_invalidate(sp);
+}
+
 /* 1 when the two colours hold the same kind and samples, bit for bit. */
 static int same_bits(const GColor *x, const GColor *y)
 {
@@ -339,17 +360,10 @@ static void test_constant_index_bit(void **state)
         g->value = x[5]; /* the generators' value: a blend of the lambert and the glass follows it */
         int below = r & 1;
         GSurfPoint sp;
-        plane_point(&sp, f->rgb, f->scratch, 4.0 * x[0] - 1.0, 4.0 * x[1] - 1.0);
-        sp.point = sp.object_point = gvec3(10.0 * x[2] - 5.0, 10.0 * x[3] - 5.0, 10.0 * x[4] - 5.0);
-        sp.geometric_normal = gvec3_normalize(gvec3(x[2] - 0.5, x[3] - 0.5, (below ? -1.0 : 1.0) * (0.2 + x[4])));
-        sp.entering = !below;
-        sp.surface = r % 6;
+        generated_point(f, x, below, r % 6, &sp);
         for (int i = 0; i <= nall; i++) {
             const GMaterial *m = i < nall ? all[i] : control;
-            sp.material = m;
-            sp.from = below ? m : NULL;
-            sp.to = below ? NULL : m;
-            gsurfpoint_invalidate(&sp);
+            place_material(&sp, m, below);
             assert_int_equal(gmaterial_refraction_index(m, &sp, &at), G_OK);
             if (m == control) {
                 if (r == 0)
@@ -520,20 +534,13 @@ static void test_clear_bit(void **state)
         g->value = r % 2 ? x[5] : 3.0 * x[5];
         int below = r & 1;
         GSurfPoint sp;
-        plane_point(&sp, f->rgb, f->scratch, 4.0 * x[0] - 1.0, 4.0 * x[1] - 1.0);
-        sp.point = sp.object_point = gvec3(10.0 * x[2] - 5.0, 10.0 * x[3] - 5.0, 10.0 * x[4] - 5.0);
-        sp.geometric_normal = gvec3_normalize(gvec3(x[2] - 0.5, x[3] - 0.5, (below ? -1.0 : 1.0) * (0.2 + x[4])));
-        sp.entering = !below;
-        sp.surface = r % 6;
+        generated_point(f, x, below, r % 6, &sp);
         sp.t = 5.0 * x[4];
         double length = r % 5 < 4 ? lengths[r % 5] : 100.0 * tu_uniform(&s);
         draw_light(&light, &s);
         for (int i = 0; i < nall + 2; i++) {
             const GMaterial *m = i < nall ? all[i] : blends[i - nall];
-            sp.material = m;
-            sp.from = below ? m : NULL;
-            sp.to = below ? NULL : m;
-            gsurfpoint_invalidate(&sp);
+            place_material(&sp, m, below);
             if (i >= nall) {
                 blend_calls++;
                 blend_differs += !gives_light_back(m, &sp, &light, length, &at);
