@@ -55,6 +55,19 @@ static int absorb_all(GmatContext *ctx, GSurfPoint *sp, unsigned long long *seed
     return differ;
 }
 
+/* absorb_all's state for the points gmat_each_point_around visits. */
+typedef struct AbsorbVisit {
+    unsigned long long *seed;
+    GColor light, at;
+    int calls;
+} AbsorbVisit;
+
+static int absorb_at(GmatContext *ctx, GSurfPoint *sp, void *user)
+{
+    AbsorbVisit *v = user;
+    return absorb_all(ctx, sp, v->seed, &v->light, &v->at, &v->calls);
+}
+
 void gmat_check_clear(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report, void *checker)
 {
     const GMaterial *m = ctx->material;
@@ -67,30 +80,19 @@ void gmat_check_clear(GmatContext *ctx, const GmatPlace *places, int nplaces, Gm
         return;
     }
     unsigned long long seed = 37;
-    int calls = 0, differ = 0;
     GScratchMark mark = gscratch_mark(ctx->scratch);
-    GColor light, at;
-    int rc = gcolor_scratch(&light, ctx->model, ctx->scratch);
+    AbsorbVisit v = {.seed = &seed, .calls = 0};
+    int differ = 0, rc = gcolor_scratch(&v.light, ctx->model, ctx->scratch);
     if (rc == G_OK)
-        rc = gcolor_scratch(&at, ctx->model, ctx->scratch);
-    if (rc == G_OK)
-        differ += absorb_all(ctx, NULL, &seed, &light, &at, &calls); /* a homogeneous medium: no point */
-    for (int q = 0; q < nplaces && rc == G_OK; q++) {
-        ctx->place = &places[q];
-        for (int below = 0; below < 2; below++)
-            for (int k = 0; k <= DRAWN_POINTS; k++) { /* the place's own point, then points drawn around it */
-                GSurfPoint sp;
-                gmat_surface_point(ctx, &sp, below);
-                if (k > 0)
-                    gmat_draw_point(&sp, &seed);
-                differ += absorb_all(ctx, &sp, &seed, &light, &at, &calls);
-            }
+        rc = gcolor_scratch(&v.at, ctx->model, ctx->scratch);
+    if (rc == G_OK) {
+        differ += absorb_all(ctx, NULL, &seed, &v.light, &v.at, &v.calls); /* a homogeneous medium: no point */
+        differ += gmat_each_point_around(ctx, places, nplaces, DRAWN_POINTS, &seed, absorb_at, &v);
     }
-    ctx->place = NULL;
     gscratch_release(ctx->scratch, mark);
     char detail[200];
     snprintf(detail, sizeof detail,
              "(GMAT_CLEAR set: calls of the class's own absorption that failed or did not give the light back, of %d)",
-             calls);
+             v.calls);
     report(checker, "clear", rc == G_OK ? differ : INFINITY, 0.0, detail);
 }

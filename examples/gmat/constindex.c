@@ -48,6 +48,43 @@ void gmat_draw_point(GSurfPoint *sp, unsigned long long *seed)
     gsurfpoint_invalidate(sp);
 }
 
+int gmat_each_point_around(GmatContext *ctx, const GmatPlace *places, int nplaces, int drawn, unsigned long long *seed,
+                           GmatPointVisit visit, void *user)
+{
+    int sum = 0;
+    for (int q = 0; q < nplaces; q++) {
+        ctx->place = &places[q];
+        for (int below = 0; below < 2; below++)
+            for (int k = 0; k <= drawn; k++) { /* the place's own point, then points drawn around it */
+                GSurfPoint sp;
+                gmat_surface_point(ctx, &sp, below);
+                if (k > 0)
+                    gmat_draw_point(&sp, seed);
+                sum += visit(ctx, &sp, user);
+            }
+    }
+    ctx->place = NULL;
+    return sum;
+}
+
+/* What the constant-index visit compares against: the class's colour for sp NULL and its status. */
+typedef struct IndexVisit {
+    GColor ref, at;
+    int ref_rc, calls;
+} IndexVisit;
+
+/* 1 when the class's own refraction_index at sp differs from its index for sp NULL (status or bits). */
+static int index_differs(GmatContext *ctx, GSurfPoint *sp, void *user)
+{
+    IndexVisit *v = user;
+    const GMaterial *m = ctx->material;
+    GScratchMark inner = gscratch_mark(ctx->scratch);
+    int r = m->cls->refraction_index(m, sp, &v->at);
+    gscratch_release(ctx->scratch, inner);
+    v->calls++;
+    return !(r == v->ref_rc && (r != G_OK || gmat_same_colour(&v->at, &v->ref)));
+}
+
 void gmat_check_constant_index(GmatContext *ctx, const GmatPlace *places, int nplaces, GmatReportFn report,
                                void *checker)
 {
@@ -63,33 +100,19 @@ void gmat_check_constant_index(GmatContext *ctx, const GmatPlace *places, int np
         return;
     }
     unsigned long long seed = 31;
-    int calls = 0, differ = 0;
+    int differ = 0;
     GScratchMark mark = gscratch_mark(ctx->scratch);
-    GColor ref, at;
-    int rc = gcolor_scratch(&ref, ctx->model, ctx->scratch);
+    IndexVisit v = {.calls = 0};
+    int rc = gcolor_scratch(&v.ref, ctx->model, ctx->scratch);
     if (rc == G_OK)
-        rc = gcolor_scratch(&at, ctx->model, ctx->scratch);
-    int ref_rc = rc == G_OK ? m->cls->refraction_index(m, NULL, &ref) : rc;
-    for (int q = 0; q < nplaces && rc == G_OK; q++) {
-        ctx->place = &places[q];
-        for (int below = 0; below < 2; below++)
-            for (int k = 0; k <= DRAWN_POINTS; k++) { /* the place's own point, then points drawn around it */
-                GSurfPoint sp;
-                gmat_surface_point(ctx, &sp, below);
-                if (k > 0)
-                    gmat_draw_point(&sp, &seed);
-                GScratchMark inner = gscratch_mark(ctx->scratch);
-                int r = m->cls->refraction_index(m, &sp, &at);
-                gscratch_release(ctx->scratch, inner);
-                calls++;
-                differ += !(r == ref_rc && (r != G_OK || gmat_same_colour(&at, &ref)));
-            }
-    }
-    ctx->place = NULL;
+        rc = gcolor_scratch(&v.at, ctx->model, ctx->scratch);
+    v.ref_rc = rc == G_OK ? m->cls->refraction_index(m, NULL, &v.ref) : rc;
+    if (rc == G_OK)
+        differ = gmat_each_point_around(ctx, places, nplaces, DRAWN_POINTS, &seed, index_differs, &v);
     gscratch_release(ctx->scratch, mark);
     char detail[200];
     snprintf(detail, sizeof detail,
              "(GMAT_CONSTANT_INDEX set: calls of the class's own refraction_index whose status or colour differed from "
-             "its colour for sp NULL, of %d)", calls);
+             "its colour for sp NULL, of %d)", v.calls);
     report(checker, "constant-index", rc == G_OK ? differ : INFINITY, 0.0, detail);
 }

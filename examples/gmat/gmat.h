@@ -137,6 +137,13 @@ int gmat_same_colour(const GColor *a, const GColor *b);
 /** sp moved to a point drawn around it (constindex.c): position, normal on the same side, tangents, (u, v), surface,
  * footprints and distance t, its caches invalidated. */
 void gmat_draw_point(GSurfPoint *sp, unsigned long long *seed);
+/** A check's work at one surface point: what it adds to the check's count of failures. */
+typedef int (*GmatPointVisit)(GmatContext *ctx, GSurfPoint *sp, void *user);
+/** Calls visit at each of the places (ctx->place set to it) on both sides, at the place's own point and then at
+ * `drawn` points drawn around it with gmat_draw_point from *seed, in that order (constindex.c); ctx->place is NULL
+ * afterwards. Returns the sum of what visit returned. */
+int gmat_each_point_around(GmatContext *ctx, const GmatPlace *places, int nplaces, int drawn, unsigned long long *seed,
+                           GmatPointVisit visit, void *user);
 /** The clear check of `gmat check` (clear.c): a material with GMAT_CLEAR must give back the light itself, bit for
  * bit, from its class's absorption at the places given and at points drawn around them, on both sides, and for
  * sp NULL, over lengths from 0 to 1e3 and lights of generated values, black included. */
