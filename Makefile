@@ -134,12 +134,12 @@ BUILD_STEP = $(MAKE) --no-print-directory --output-sync=target \
              $(if $(filter -j%,$(MAKEFLAGS)),,-j$$(nproc 2>/dev/null || echo 1))
 
 test: deps
-	@$(BUILD_STEP) all
+	+@$(BUILD_STEP) all
 	@scripts/run_tests.sh $(BUILD)
 
 # The demo needs the library and the tools only (examples/scenes/demo.scene loads no plug-in).
 demo: deps
-	@$(BUILD_STEP) lib tools
+	+@$(BUILD_STEP) lib tools
 	@scripts/demo.sh $(BUILD)
 
 # install and uninstall: each folder adds its part (install-lib, install-tools, ...); uninstall then removes the

@@ -14,7 +14,7 @@ $(BUILD)/bench/%: $(BUILD)/obj/bench/%.o $(LIBA) | $(OIIO_SO)
 .SECONDARY: $(BENCH_SRC:%.c=$(BUILD)/obj/%.o)
 
 bench: deps
-	@$(BUILD_STEP) all $(BENCH_BIN)
+	+@$(BUILD_STEP) all $(BENCH_BIN)
 	@for b in $(BENCH_BIN); do echo "== $$b"; $$b || exit 1; done
 
 # Benchmarks that read images start the image decoder process (lib/build.mk).
