@@ -25,10 +25,3 @@ $(BENCH_BIN): | $(DECODER)
 bench-materials: $(BUILD)/bin/gtrace
 	@bench/materials.sh $(BUILD)
 bench: bench-materials
-
-# bench_kernel_tails times the kernels with each way of doing their last samples: bench/kernel_tails_ops.h compiled
-# once per way of doing them (kernel_tails_scalar.c, _pieces.c, _masked.c) and linked in.
-KERNEL_TAILS_OBJ := $(patsubst %,$(BUILD)/obj/bench/kernel_tails_%.o,scalar pieces masked)
-$(BUILD)/bench/bench_kernel_tails: $(BUILD)/obj/bench/bench_kernel_tails.o $(KERNEL_TAILS_OBJ) $(LIBA) | $(OIIO_SO)
-	@mkdir -p $(dir $@)
-	$(CC) -o $@ $(filter %.o,$^) $(LIBA) $(LDFLAGS) $(DEPLIBS)

@@ -7,11 +7,9 @@ TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 TESTLIBS := $(shell pkg-config --libs cmocka 2>/dev/null)
 tests: $(TEST_BIN)
 
-# Tests of a tool's own code link its objects too (TEST_OBJ_<test>); test_spectrum_fast links the spectral kernels
-# compiled with their other ways of doing the last samples (tests/kernel_tails/).
+# Tests of a tool's own code link its objects too (TEST_OBJ_<test>).
 TEST_OBJ_test_fluorescent := $(BUILD)/obj/examples/gmat/laser_experiment.o
 TEST_OBJ_test_fluorescent_laser := $(BUILD)/obj/examples/gmat/laser_experiment.o
-TEST_OBJ_test_spectrum_fast := $(BUILD)/obj/tests/kernel_tails/scalar.o $(BUILD)/obj/tests/kernel_tails/masked.o
 $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $$(TEST_OBJ_$$*) $(LIBA) | $(OIIO_SO) $(OCIO_CONFIG)
 	@mkdir -p $(dir $@)
 	$(LINK_PROGRAM) $(TESTLIBS) $(DEPLIBS)

@@ -6,12 +6,10 @@
  * and the sums (magnitudes, dot products, weighted magnitudes, brightness, colour matching) in their documented
  * order: 8 float lanes over the whole blocks of 8, the lanes folded in pairs, the last samples one by one. Both
  * the 4-float versions and, where the processor has AVX2, the 8-float ones (whole blocks as straight-line code
- * entered by one jump), also compiled with their other ways of doing the last samples (one by one, and one masked
- * operation: tests/kernel_tails/), with zeros of both signs, NaN, infinities, huge and denormal samples, zero
- * divisors. Then the spectrum model's operations
- * (through gcolor_*, whichever body the loader picked) against the 4-float kernels on grids of 9, 41, 81, 401 and
- * 531 samples and on grids whose last block has 1 to 7 samples (5, 17, 19 to 23, 26): the same results, in place
- * too.
+ * entered by one jump), with zeros of both signs, NaN, infinities, huge and denormal samples, zero divisors. Then
+ * the spectrum model's operations (through gcolor_*, whichever body the loader picked) against the 4-float kernels
+ * on grids of 9, 41, 81, 401 and 531 samples and on grids whose last block has 1 to 7 samples (5, 17, 19 to 23,
+ * 26): the same results, in place too.
  *
  * Every NaN in the inputs is x86's default NaN (sign set, no payload), the one an invalid operation makes: which
  * of two NaN operands an operation passes on is the compiler's choice of operand order, not the kernel's order of
@@ -33,7 +31,6 @@
 #include "generic/color.h"
 #include "generic/kit/spectral.h"
 #include "generic/kit/spectral_kernels.h"
-#include "kernel_tails/kernel_tails.h"
 #include "test_util.h"
 
 enum { MAX_N = 1681, SMALL_N = 140, ROUNDS = 6, GUARD = 8 };
@@ -391,19 +388,6 @@ static void check_length(int n, int off)
             check_sums(&got, m.a, m.b, m.t, n, r >= 3);
         }
 #endif
-        /* the same kernels with the other ways of doing the last samples (GSPECTRAL_TAIL_MODE) */
-        const TailKernels ways[] = {tail_kernels_scalar(), tail_kernels_masked()};
-        for (size_t w = 0; w < tu_floats(ways); w++) {
-            if (!ways[w].elem)
-                continue;
-            snprintf(what, sizeof what, "8-float kernels, %s, %d samples at float %d, round %d", ways[w].name, n,
-                     off, r);
-            for (int op = 0; op < NOPS; op++)
-                check_elem(ways[w].elem, op, &m, s, n);
-            sums4(m.a, m.b, m.t, n, &got); /* the sums the way does not change */
-            ways[w].sums(m.a, m.b, m.t, n, &got.bright, got.xyz);
-            check_sums(&got, m.a, m.b, m.t, n, r >= 3);
-        }
     }
     bufs_free(&m);
 }

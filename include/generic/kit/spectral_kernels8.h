@@ -13,7 +13,7 @@
  * two earlier stores (the overlapping block's and the whole block's) cannot take its data from the store buffer
  * and waits for both to retire, and colour operations read what the one before just wrote. So every kernel
  * stores and loads the same pieces: the 8-float blocks at multiples of 8, then in the element-wise kernels pieces
- * of 4, 2 and 1 floats as n % 8 has them (the 4 and the 2 one vector operation each: GSPECTRAL_TAIL_MODE), and
+ * of 4, 2 and 1 floats as n % 8 has them (the 4 and the 2 one vector operation each: GSPECTRAL_EACH_PIECE8), and
  * single floats in the sums, whose order they define. */
 #ifndef GENERIC_SPECTRAL_KERNELS8_H
 #define GENERIC_SPECTRAL_KERNELS8_H
@@ -95,33 +95,17 @@ extern "C" {
     } while (0)
 
 /** A loop over the samples after GSPECTRAL_EACH_BLOCK8's whole blocks (ptrdiff_t i from n & ~7 to n - 1), as
- * the head of the statement that follows: the last samples one at a time (the sums, and GSPECTRAL_TAIL_SCALAR). */
+ * the head of the statement that follows: the last samples one at a time (gspectral_kfinite8). */
 #define GSPECTRAL_TAIL8(n, i) for (ptrdiff_t i = (ptrdiff_t)(n) & ~(ptrdiff_t)7; i < (ptrdiff_t)(n); i++)
-
-/** The ways an element-wise kernel can do its last n % 8 samples, after the whole blocks (GSPECTRAL_TAIL_MODE):
- * one sample at a time (GSPECTRAL_TAIL8); in pieces of 4 and 2 floats, each one 4-lane operation on vectors
- * loaded and stored in that piece's size, so that the next kernel's loads of the same pieces take their data from
- * the store buffer, and a last single float (GSPECTRAL_EACH_PIECE8); or as one 8-lane operation on masked loads
- * and a masked store (vmaskmovps: nothing read or written outside the samples). The same results bit for bit.
- * With the pieces, the brightness and colour matching sums take their last samples' terms a piece at a time too,
- * and add them one by one in their order (the same sums). */
-#define GSPECTRAL_TAIL_SCALAR 0
-#define GSPECTRAL_TAIL_PIECES 1
-#define GSPECTRAL_TAIL_MASKED 2
-
-/** How the element-wise kernels do their last n % 8 samples (above); a file may define it before including the
- * kernels. Pieces by default: on an AMD EPYC (Zen 4) a kernel that reads the masked store of the one before
- * waits for it to retire (a masked store does not forward), so a chain of operations in place takes 1.6 to 2.8x
- * the time with the masked tail against one sample at a time, and with the pieces 0.70x (a tail of 7) to 1.02x (2);
- * a tail of 1 is the same float operation, behind three tests where the length is not a constant
- * (GSPECTRAL_ON_COMMON_LENGTH): 1.13x at 17 samples (bench/bench_kernel_tails.c, bench/README.md). */
-#ifndef GSPECTRAL_TAIL_MODE
-#define GSPECTRAL_TAIL_MODE GSPECTRAL_TAIL_PIECES
-#endif
 
 /** Runs PIECE(i, k) (a macro) on the samples after GSPECTRAL_EACH_BLOCK8's whole blocks in pieces of k = 4 and 2
  * samples from sample i (a ptrdiff_t), then ONE(i) on a last single one, in that order, as n % 8 has them (7: 4, 2,
- * then 1). k is a constant. */
+ * then 1). k is a constant. An element-wise kernel's PIECE is one 4-lane operation on vectors loaded and stored in
+ * the piece's size, so that the next kernel's loads of the same pieces take their data from the store buffer (a
+ * masked 8-lane store is not forwarded on an AMD EPYC, Zen 4: bench/README.md), and its ONE a float operation,
+ * fewer instructions than a vector one on a float loaded alone; each loads its operands before it stores, so the
+ * result may alias an operand. The brightness and colour matching sums take their last samples' terms a piece at a
+ * time too, and add them one by one in their order. */
 #define GSPECTRAL_EACH_PIECE8(n, PIECE, ONE)                                                                   \
     do {                                                                                                       \
         ptrdiff_t gspectral_at_ = (ptrdiff_t)(n) & ~(ptrdiff_t)7;                                              \
@@ -160,48 +144,6 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectra
         _mm_store_ss(p, (__m128)v);
 }
 
-/** The lane mask of the last n % 8 samples (n >= 0): all bits set in the lanes below n % 8, clear above. */
-__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 __m256i gspectral_tail_mask8(int n)
-{
-    static const int lanes[16] = {-1, -1, -1, -1, -1, -1, -1, -1, 0, 0, 0, 0, 0, 0, 0, 0};
-    return _mm256_loadu_si256((const __m256i *)(lanes + 8 - (n & 7)));
-}
-
-/** The floats of p in the lanes of mask m (any alignment), 0 in the others; nothing is read outside m. */
-__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 gspectral_v8 gspectral_vload8_mask(const float *p,
-                                                                                                    __m256i m)
-{
-    return (gspectral_v8)_mm256_maskload_ps(p, m);
-}
-
-/** Stores the lanes of v in mask m at p (any alignment); nothing is written outside m. */
-__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectral_vstore8_mask(float *p, __m256i m,
-                                                                                               gspectral_v8 v)
-{
-    _mm256_maskstore_ps(p, m, (__m256)v);
-}
-
-/** The last n % 8 samples of an element-wise kernel as GSPECTRAL_TAIL_MODE says: PIECE(i, k) on each piece of 4
- * or 2 and SCALAR(i) on a last single sample (GSPECTRAL_EACH_PIECE8: a float operation costs fewer instructions
- * than a vector one on a float loaded alone), MASKED(e, m) once with e = n & ~7 and m = gspectral_tail_mask8(n)
- * when there are any, or SCALAR(i) on each sample. Each loads its operands before it stores, so out may alias an
- * operand. */
-#define GSPECTRAL_TAIL_OF8(n, PIECE, MASKED, SCALAR)                                                           \
-    do {                                                                                                       \
-        if (GSPECTRAL_TAIL_MODE == GSPECTRAL_TAIL_PIECES)                                                      \
-            GSPECTRAL_EACH_PIECE8(n, PIECE, SCALAR);                                                           \
-        else if (GSPECTRAL_TAIL_MODE == GSPECTRAL_TAIL_MASKED) {                                               \
-            if ((n) & 7)                                                                                       \
-                MASKED((ptrdiff_t)(n) & ~(ptrdiff_t)7, gspectral_tail_mask8((int)(n)));                        \
-        } else                                                                                                 \
-            GSPECTRAL_TAIL8(n, gspectral_i_)                                                                   \
-                SCALAR(gspectral_i_);                                                                          \
-    } while (0)
-
-/** 1 when an element-wise kernel on n < 8 samples takes its 4-float version: with the scalar tail only (the pieces
- * and the mask do any n). */
-#define GSPECTRAL_SHORT_TO_V4(n) ((n) < 8 && GSPECTRAL_TAIL_MODE == GSPECTRAL_TAIL_SCALAR)
-
 /** CALL(n) with n a constant when it is one of the common grids' lengths (81: 380..780 nm every 5 nm, 41: every
  * 10 nm, 9: spectrum9), else CALL(n) as it is: with the kernels inlined, a constant length folds
  * GSPECTRAL_EACH_BLOCK8's jump away into straight-line code (spectrum's render: 0.97x the instructions), for any
@@ -226,49 +168,35 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectra
                                                                                         const float *a,
                                                                                         const float *b, int n)
 {
-    if (GSPECTRAL_SHORT_TO_V4(n)) {
-        gspectral_kmap(op, o, a, b, n);
-        return;
-    }
 #define GSPECTRAL_MAP8_BLOCK(i, k)                                                                             \
     gspectral_vstore8(o + (i) + (k),                                                                           \
                       gspectral_vop8(op, gspectral_vload8(a + (i) + (k)), gspectral_vload8(b + (i) + (k))))
 #define GSPECTRAL_MAP8_PIECE(i, k)                                                                             \
     gspectral_vstore_piece(o + (i),                                                                            \
                            gspectral_vop(op, gspectral_vload_piece(a + (i), k), gspectral_vload_piece(b + (i), k)), k)
-#define GSPECTRAL_MAP8_MASKED(e, m)                                                                            \
-    gspectral_vstore8_mask(o + (e), m,                                                                         \
-                           gspectral_vop8(op, gspectral_vload8_mask(a + (e), m), gspectral_vload8_mask(b + (e), m)))
-#define GSPECTRAL_MAP8_SCALAR(i) o[i] = op == GSPECTRAL_ADD ? a[i] + b[i] : a[i] * b[i]
+#define GSPECTRAL_MAP8_ONE(i) o[i] = op == GSPECTRAL_ADD ? a[i] + b[i] : a[i] * b[i]
     GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_MAP8_BLOCK);
-    GSPECTRAL_TAIL_OF8(n, GSPECTRAL_MAP8_PIECE, GSPECTRAL_MAP8_MASKED, GSPECTRAL_MAP8_SCALAR);
+    GSPECTRAL_EACH_PIECE8(n, GSPECTRAL_MAP8_PIECE, GSPECTRAL_MAP8_ONE);
 #undef GSPECTRAL_MAP8_BLOCK
 #undef GSPECTRAL_MAP8_PIECE
-#undef GSPECTRAL_MAP8_MASKED
-#undef GSPECTRAL_MAP8_SCALAR
+#undef GSPECTRAL_MAP8_ONE
 }
 
 /** gspectral_kscale on 8-float vectors. */
 __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectral_kscale8(float *o, const float *a,
                                                                                           float s, int n)
 {
-    if (GSPECTRAL_SHORT_TO_V4(n)) {
-        gspectral_kscale(o, a, s, n);
-        return;
-    }
     gspectral_v8 sv = {s, s, s, s, s, s, s, s};
     GSPECTRAL_KEEP8(sv);
     const gspectral_v4 sv4 = {s, s, s, s};
 #define GSPECTRAL_SCALE8_BLOCK(i, k) gspectral_vstore8(o + (i) + (k), gspectral_vload8(a + (i) + (k)) * sv)
 #define GSPECTRAL_SCALE8_PIECE(i, k) gspectral_vstore_piece(o + (i), gspectral_vload_piece(a + (i), k) * sv4, k)
-#define GSPECTRAL_SCALE8_MASKED(e, m) gspectral_vstore8_mask(o + (e), m, gspectral_vload8_mask(a + (e), m) * sv)
-#define GSPECTRAL_SCALE8_SCALAR(i) o[i] = a[i] * s
+#define GSPECTRAL_SCALE8_ONE(i) o[i] = a[i] * s
     GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_SCALE8_BLOCK);
-    GSPECTRAL_TAIL_OF8(n, GSPECTRAL_SCALE8_PIECE, GSPECTRAL_SCALE8_MASKED, GSPECTRAL_SCALE8_SCALAR);
+    GSPECTRAL_EACH_PIECE8(n, GSPECTRAL_SCALE8_PIECE, GSPECTRAL_SCALE8_ONE);
 #undef GSPECTRAL_SCALE8_BLOCK
 #undef GSPECTRAL_SCALE8_PIECE
-#undef GSPECTRAL_SCALE8_MASKED
-#undef GSPECTRAL_SCALE8_SCALAR
+#undef GSPECTRAL_SCALE8_ONE
 }
 
 /** gspectral_kmul_scaled on 8-float vectors. */
@@ -276,10 +204,6 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectra
                                                                                                const float *b, float s,
                                                                                                int n)
 {
-    if (GSPECTRAL_SHORT_TO_V4(n)) {
-        gspectral_kmul_scaled(o, a, b, s, n);
-        return;
-    }
     gspectral_v8 sv = {s, s, s, s, s, s, s, s};
     GSPECTRAL_KEEP8(sv);
     const gspectral_v4 sv4 = {s, s, s, s};
@@ -287,19 +211,16 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectra
     gspectral_vstore8(o + (i) + (k), gspectral_vload8(a + (i) + (k)) * gspectral_vload8(b + (i) + (k)) * sv)
 #define GSPECTRAL_MUL_SCALED8_PIECE(i, k)                                                                      \
     gspectral_vstore_piece(o + (i), gspectral_vload_piece(a + (i), k) * gspectral_vload_piece(b + (i), k) * sv4, k)
-#define GSPECTRAL_MUL_SCALED8_MASKED(e, m)                                                                     \
-    gspectral_vstore8_mask(o + (e), m, gspectral_vload8_mask(a + (e), m) * gspectral_vload8_mask(b + (e), m) * sv)
-#define GSPECTRAL_MUL_SCALED8_SCALAR(i)                                                                        \
+#define GSPECTRAL_MUL_SCALED8_ONE(i)                                                                           \
     do {                                                                                                       \
         float x_ = a[i] * b[i];                                                                                \
         o[i] = x_ * s;                                                                                         \
     } while (0)
     GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_MUL_SCALED8_BLOCK);
-    GSPECTRAL_TAIL_OF8(n, GSPECTRAL_MUL_SCALED8_PIECE, GSPECTRAL_MUL_SCALED8_MASKED, GSPECTRAL_MUL_SCALED8_SCALAR);
+    GSPECTRAL_EACH_PIECE8(n, GSPECTRAL_MUL_SCALED8_PIECE, GSPECTRAL_MUL_SCALED8_ONE);
 #undef GSPECTRAL_MUL_SCALED8_BLOCK
 #undef GSPECTRAL_MUL_SCALED8_PIECE
-#undef GSPECTRAL_MUL_SCALED8_MASKED
-#undef GSPECTRAL_MUL_SCALED8_SCALAR
+#undef GSPECTRAL_MUL_SCALED8_ONE
 }
 
 /** gspectral_vdiv on 8 lanes: a / b, 0 where b is 0 (those lanes divide by 1 and are cleared); zero and one hold
@@ -312,15 +233,10 @@ gspectral_vdiv8(gspectral_v8 a, gspectral_v8 b, gspectral_v8 zero, gspectral_v8 
     return (gspectral_v8)((gspectral_v8i)(a / safe) & nz);
 }
 
-/** gspectral_kdiv on 8-float vectors. The lanes a piece or the mask leaves out hold 0: they divide by 1 and are
- * cleared. */
+/** gspectral_kdiv on 8-float vectors. The lanes a piece leaves out hold 0: they divide by 1 and are cleared. */
 __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectral_kdiv8(float *o, const float *a,
                                                                                         const float *b, int n)
 {
-    if (GSPECTRAL_SHORT_TO_V4(n)) {
-        gspectral_kdiv(o, a, b, n);
-        return;
-    }
     gspectral_v8 zero = {0, 0, 0, 0, 0, 0, 0, 0}, one = {1, 1, 1, 1, 1, 1, 1, 1};
     GSPECTRAL_KEEP8(zero);
     GSPECTRAL_KEEP8(one);
@@ -330,40 +246,29 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectra
 #define GSPECTRAL_DIV8_PIECE(i, k)                                                                             \
     gspectral_vstore_piece(o + (i),                                                                            \
                            gspectral_vdiv(gspectral_vload_piece(a + (i), k), gspectral_vload_piece(b + (i), k)), k)
-#define GSPECTRAL_DIV8_MASKED(e, m)                                                                            \
-    gspectral_vstore8_mask(o + (e), m,                                                                         \
-                           gspectral_vdiv8(gspectral_vload8_mask(a + (e), m), gspectral_vload8_mask(b + (e), m),   \
-                                           zero, one))
-#define GSPECTRAL_DIV8_SCALAR(i) o[i] = b[i] != 0.0f ? a[i] / b[i] : 0.0f
+#define GSPECTRAL_DIV8_ONE(i) o[i] = b[i] != 0.0f ? a[i] / b[i] : 0.0f
     GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_DIV8_BLOCK);
-    GSPECTRAL_TAIL_OF8(n, GSPECTRAL_DIV8_PIECE, GSPECTRAL_DIV8_MASKED, GSPECTRAL_DIV8_SCALAR);
+    GSPECTRAL_EACH_PIECE8(n, GSPECTRAL_DIV8_PIECE, GSPECTRAL_DIV8_ONE);
 #undef GSPECTRAL_DIV8_BLOCK
 #undef GSPECTRAL_DIV8_PIECE
-#undef GSPECTRAL_DIV8_MASKED
-#undef GSPECTRAL_DIV8_SCALAR
+#undef GSPECTRAL_DIV8_ONE
 }
 
 /** gspectral_kfill on 8-float vectors. */
 __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectral_kfill8(float *o, float value,
                                                                                          int n)
 {
-    if (GSPECTRAL_SHORT_TO_V4(n)) {
-        gspectral_kfill(o, value, n);
-        return;
-    }
     gspectral_v8 v = {value, value, value, value, value, value, value, value};
     GSPECTRAL_KEEP8(v);
     const gspectral_v4 v4 = {value, value, value, value};
 #define GSPECTRAL_FILL8_BLOCK(i, k) gspectral_vstore8(o + (i) + (k), v)
 #define GSPECTRAL_FILL8_PIECE(i, k) gspectral_vstore_piece(o + (i), v4, k)
-#define GSPECTRAL_FILL8_MASKED(e, m) gspectral_vstore8_mask(o + (e), m, v)
-#define GSPECTRAL_FILL8_SCALAR(i) o[i] = value
+#define GSPECTRAL_FILL8_ONE(i) o[i] = value
     GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_FILL8_BLOCK);
-    GSPECTRAL_TAIL_OF8(n, GSPECTRAL_FILL8_PIECE, GSPECTRAL_FILL8_MASKED, GSPECTRAL_FILL8_SCALAR);
+    GSPECTRAL_EACH_PIECE8(n, GSPECTRAL_FILL8_PIECE, GSPECTRAL_FILL8_ONE);
 #undef GSPECTRAL_FILL8_BLOCK
 #undef GSPECTRAL_FILL8_PIECE
-#undef GSPECTRAL_FILL8_MASKED
-#undef GSPECTRAL_FILL8_SCALAR
+#undef GSPECTRAL_FILL8_ONE
 }
 
 /** o = a, n >= 0 floats, in the pieces every kernel here uses (libc's memcpy stores blocks that straddle them,
@@ -373,14 +278,12 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectra
 {
 #define GSPECTRAL_COPY8_BLOCK(i, k) gspectral_vstore8(o + (i) + (k), gspectral_vload8(a + (i) + (k)))
 #define GSPECTRAL_COPY8_PIECE(i, k) gspectral_vstore_piece(o + (i), gspectral_vload_piece(a + (i), k), k)
-#define GSPECTRAL_COPY8_MASKED(e, m) gspectral_vstore8_mask(o + (e), m, gspectral_vload8_mask(a + (e), m))
-#define GSPECTRAL_COPY8_SCALAR(i) o[i] = a[i]
+#define GSPECTRAL_COPY8_ONE(i) o[i] = a[i]
     GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_COPY8_BLOCK);
-    GSPECTRAL_TAIL_OF8(n, GSPECTRAL_COPY8_PIECE, GSPECTRAL_COPY8_MASKED, GSPECTRAL_COPY8_SCALAR);
+    GSPECTRAL_EACH_PIECE8(n, GSPECTRAL_COPY8_PIECE, GSPECTRAL_COPY8_ONE);
 #undef GSPECTRAL_COPY8_BLOCK
 #undef GSPECTRAL_COPY8_PIECE
-#undef GSPECTRAL_COPY8_MASKED
-#undef GSPECTRAL_COPY8_SCALAR
+#undef GSPECTRAL_COPY8_ONE
 }
 
 /** gspectral_kaxpyd's 8 results at a and b: each product in double (two 4-double halves), rounded to float, then
@@ -392,16 +295,6 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 __m256 gspect
     __m128 q0 = _mm256_cvtpd_ps(_mm256_mul_pd(_mm256_cvtps_pd(_mm_loadu_ps(a)), sv));
     __m128 q1 = _mm256_cvtpd_ps(_mm256_mul_pd(_mm256_cvtps_pd(_mm_loadu_ps(a + 4)), sv));
     return _mm256_add_ps(_mm256_loadu_ps(b), _mm256_insertf128_ps(_mm256_castps128_ps256(q0), q1, 1));
-}
-
-/** gspectral_vaxpyd8 on the samples a and b in registers. */
-__attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 gspectral_v8 gspectral_vaxpyd8_lanes(__m256d sv,
-                                                                                                      gspectral_v8 a,
-                                                                                                      gspectral_v8 b)
-{
-    __m128 q0 = _mm256_cvtpd_ps(_mm256_mul_pd(_mm256_cvtps_pd(_mm256_castps256_ps128((__m256)a)), sv));
-    __m128 q1 = _mm256_cvtpd_ps(_mm256_mul_pd(_mm256_cvtps_pd(_mm256_extractf128_ps((__m256)a, 1)), sv));
-    return (gspectral_v8)_mm256_add_ps((__m256)b, _mm256_insertf128_ps(_mm256_castps128_ps256(q0), q1, 1));
 }
 
 /** gspectral_kaxpyd's 4 results on the samples a and b in registers (4 products in double). */
@@ -419,10 +312,6 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectra
                                                                                           const float *a,
                                                                                           const float *b, int n)
 {
-    if (GSPECTRAL_SHORT_TO_V4(n)) {
-        gspectral_kaxpyd(o, s, a, b, n);
-        return;
-    }
     const float sf = (float)s;
     if ((double)sf == s) {
         gspectral_v8 sv = {sf, sf, sf, sf, sf, sf, sf, sf};
@@ -432,15 +321,12 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectra
     gspectral_vstore8(o + (i) + (k), gspectral_vload8(b + (i) + (k)) + gspectral_vload8(a + (i) + (k)) * sv)
 #define GSPECTRAL_AXPYF8_PIECE(i, k)                                                                           \
     gspectral_vstore_piece(o + (i), gspectral_vload_piece(b + (i), k) + gspectral_vload_piece(a + (i), k) * sv4, k)
-#define GSPECTRAL_AXPYF8_MASKED(e, m)                                                                          \
-    gspectral_vstore8_mask(o + (e), m, gspectral_vload8_mask(b + (e), m) + gspectral_vload8_mask(a + (e), m) * sv)
-#define GSPECTRAL_AXPYF8_SCALAR(i) o[i] = b[i] + a[i] * sf
+#define GSPECTRAL_AXPYF8_ONE(i) o[i] = b[i] + a[i] * sf
         GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_AXPYF8_BLOCK);
-        GSPECTRAL_TAIL_OF8(n, GSPECTRAL_AXPYF8_PIECE, GSPECTRAL_AXPYF8_MASKED, GSPECTRAL_AXPYF8_SCALAR);
+        GSPECTRAL_EACH_PIECE8(n, GSPECTRAL_AXPYF8_PIECE, GSPECTRAL_AXPYF8_ONE);
 #undef GSPECTRAL_AXPYF8_BLOCK
 #undef GSPECTRAL_AXPYF8_PIECE
-#undef GSPECTRAL_AXPYF8_MASKED
-#undef GSPECTRAL_AXPYF8_SCALAR
+#undef GSPECTRAL_AXPYF8_ONE
         return;
     }
     const __m256d sv = _mm256_set1_pd(s);
@@ -450,17 +336,12 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectra
     gspectral_vstore_piece(o + (i), gspectral_vaxpyd4_lanes(sv, gspectral_vload_piece(a + (i), k),            \
                                                             gspectral_vload_piece(b + (i), k)),                \
                            k)
-#define GSPECTRAL_AXPYD8_MASKED(e, m)                                                                          \
-    gspectral_vstore8_mask(o + (e), m,                                                                         \
-                           gspectral_vaxpyd8_lanes(sv, gspectral_vload8_mask(a + (e), m),                      \
-                                                   gspectral_vload8_mask(b + (e), m)))
-#define GSPECTRAL_AXPYD8_SCALAR(i) o[i] = b[i] + (float)(a[i] * s)
+#define GSPECTRAL_AXPYD8_ONE(i) o[i] = b[i] + (float)(a[i] * s)
     GSPECTRAL_EACH_BLOCK8(n, GSPECTRAL_AXPYD8_BLOCK);
-    GSPECTRAL_TAIL_OF8(n, GSPECTRAL_AXPYD8_PIECE, GSPECTRAL_AXPYD8_MASKED, GSPECTRAL_AXPYD8_SCALAR);
+    GSPECTRAL_EACH_PIECE8(n, GSPECTRAL_AXPYD8_PIECE, GSPECTRAL_AXPYD8_ONE);
 #undef GSPECTRAL_AXPYD8_BLOCK
 #undef GSPECTRAL_AXPYD8_PIECE
-#undef GSPECTRAL_AXPYD8_MASKED
-#undef GSPECTRAL_AXPYD8_SCALAR
+#undef GSPECTRAL_AXPYD8_ONE
 }
 
 /** 0x7fffffff in each of 8 lanes: the initializer of the mask of gspectral_vterm8_mask, which clears sign bits. */
@@ -539,8 +420,8 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 float gspectr
     return s;
 }
 
-/** gspectral_kbright on 8-float vectors (equal bit for bit). With the tail in pieces (GSPECTRAL_TAIL_MODE), the
- * last samples' terms are taken a piece at a time as vectors, then added to the sum one by one in their order. */
+/** gspectral_kbright on 8-float vectors (equal bit for bit). The last samples' terms are taken a piece at a time
+ * as vectors (GSPECTRAL_EACH_PIECE8), then added to the sum one by one in their order. */
 __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 double gspectral_kbright8(const float *w,
                                                                                            const float *a, int n)
 {
@@ -549,18 +430,13 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 double gspect
     int i;
     gspectral_v4 acc = gspectral_vsum8(GSPECTRAL_WABS, w, a, n, &i);
     double s = (double)acc[0] + acc[1] + acc[2] + acc[3];
-    if (GSPECTRAL_TAIL_MODE == GSPECTRAL_TAIL_PIECES) {
 #define GSPECTRAL_BRIGHT8_PIECE(j, k)                                                                          \
     s = gspectral_add_lanes_d(                                                                                 \
         s, gspectral_vterm(GSPECTRAL_WABS, gspectral_vload_piece(w + (j), k), gspectral_vload_piece(a + (j), k)), k)
 #define GSPECTRAL_BRIGHT8_ONE(j) s += w[j] * fabsf(a[j])
-        GSPECTRAL_EACH_PIECE8(n, GSPECTRAL_BRIGHT8_PIECE, GSPECTRAL_BRIGHT8_ONE);
+    GSPECTRAL_EACH_PIECE8(n, GSPECTRAL_BRIGHT8_PIECE, GSPECTRAL_BRIGHT8_ONE);
 #undef GSPECTRAL_BRIGHT8_PIECE
 #undef GSPECTRAL_BRIGHT8_ONE
-        return s;
-    }
-    for (; i < n; i++)
-        s += w[i] * fabsf(a[i]);
     return s;
 }
 
@@ -623,7 +499,7 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectra
         GSPECTRAL_EACH_BLOCK8(end, GSPECTRAL_XYZ8_BLOCK);
 #undef GSPECTRAL_XYZ8_BLOCK
     float tail[3] = {0.0f, 0.0f, 0.0f};
-    if (GSPECTRAL_TAIL_MODE == GSPECTRAL_TAIL_PIECES) { /* the products a piece at a time, added one by one */
+    /* the products a piece at a time, added one by one */
 #define GSPECTRAL_XYZ8_PIECE(j, k)                                                                             \
     do {                                                                                                       \
         const float *w_ = te + ((j) - end); /* the piece's lanes of block te, whose 8 lanes all exist */       \
@@ -638,16 +514,9 @@ __attribute__((always_inline)) static inline GSPECTRAL_TARGET_AVX2 void gspectra
         tail[1] += a[j] * te[(j) - end + 8];                                                                   \
         tail[2] += a[j] * te[(j) - end + 16];                                                                  \
     } while (0)
-        GSPECTRAL_EACH_PIECE8(n, GSPECTRAL_XYZ8_PIECE, GSPECTRAL_XYZ8_ONE);
+    GSPECTRAL_EACH_PIECE8(n, GSPECTRAL_XYZ8_PIECE, GSPECTRAL_XYZ8_ONE);
 #undef GSPECTRAL_XYZ8_PIECE
 #undef GSPECTRAL_XYZ8_ONE
-    } else {
-        for (ptrdiff_t k = 0; k < n - end; k++) { /* as gspectral_kxyz_tail: sample end + k, lane k of block te */
-            tail[0] += a[end + k] * te[k];
-            tail[1] += a[end + k] * te[k + 8];
-            tail[2] += a[end + k] * te[k + 16];
-        }
-    }
     /* the lanes in double: hadd gives (l0 + l1) in the low half and (l2 + l3) in the high one, per coordinate */
     __m256d dx = _mm256_cvtps_pd((__m128)gspectral_vfold8(x)), dy = _mm256_cvtps_pd((__m128)gspectral_vfold8(y));
     __m256d dz = _mm256_cvtps_pd((__m128)gspectral_vfold8(z));
