@@ -7,7 +7,8 @@
  *  - GMAT_CLEAR: which leaves and nodes get it (every built-in but a dielectric that absorbs and a thinfilm over
  *    one; the kit's pass-throughs, transform, select and interpolate-one of another method over children that have
  *    it, no blend of several, whose arithmetic the test shows is not always the light's bits), and that their
- *    absorption gives the light back bit for bit at generated points, lengths and lights. */
+ *    class's own absorption gives the light back bit for bit at generated points, lengths and lights
+ *    (test_material_clear_dispatch.c: the dispatch answers the light for the bit without calling the class). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -418,12 +419,15 @@ static void draw_light(GColor *light, unsigned long long *s)
         assert_int_equal(gcolor_from_rgb(light, rgb, GCOLOR_LIGHT), G_OK);
 }
 
-/* m's absorption of light over length at sp (NULL: none) into at, filled with NaN bits first: 1 when it is the
- * light, bit for bit. */
+/* The absorption of m's class (the default for a class without the slot: gmaterial_absorption, which answers the
+ * light for a clear material without asking the class) of light over length at sp (NULL: none) into at, filled
+ * with NaN bits first: 1 when it is the light, bit for bit. */
 static int gives_light_back(const GMaterial *m, GSurfPoint *sp, const GColor *light, double length, GColor *at)
 {
     memset(at->v, 0xff, (size_t)at->model->nvalues * sizeof(float));
-    return gmaterial_absorption(m, sp, light, length, at) == G_OK && same_bits(at, light);
+    int rc = m->cls->absorption ? m->cls->absorption(m, sp, light, length, at)
+                                : gmaterial_absorption(m, sp, light, length, at);
+    return rc == G_OK && same_bits(at, light);
 }
 
 /* Which leaves and nodes have GMAT_CLEAR; over generated points (both sides, positions, normals, (u, v), surface
