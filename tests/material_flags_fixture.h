@@ -13,32 +13,24 @@
 #include "texture_fixtures.h"
 #include "node_fixture.h"
 
-/* A lambert of grey reflectance r and an emitter of grey radiance e (two-sided) in f's model. */
-static inline GMaterial *lambert(Fix *f, double r)
-{
-    GColor c;
-    double rgb[3] = {r, r, r};
-    GMaterial *m = NULL;
-    GError err;
-    assert_int_equal(gcolor_alloc(&c, f->rgb), G_OK);
-    assert_int_equal(gcolor_from_rgb(&c, rgb, GCOLOR_REFLECTANCE), G_OK);
-    assert_int_equal(glambert_create(f->rgb, &c, &m, &err), G_OK);
-    gcolor_free(&c);
-    return m;
-}
-
-static inline GMaterial *emitter(Fix *f, double r, double g, double b)
+/* A lambert of reflectance (r, g, b), or an emitter (two-sided) of radiance (r, g, b) when emits, in f's model. */
+static inline GMaterial *coloured(Fix *f, double r, double g, double b, int emits)
 {
     GColor c;
     double rgb[3] = {r, g, b};
     GMaterial *m = NULL;
     GError err;
     assert_int_equal(gcolor_alloc(&c, f->rgb), G_OK);
-    assert_int_equal(gcolor_from_rgb(&c, rgb, GCOLOR_LIGHT), G_OK);
-    assert_int_equal(gemitter_create(f->rgb, &c, 1, &m, &err), G_OK);
+    assert_int_equal(gcolor_from_rgb(&c, rgb, emits ? GCOLOR_LIGHT : GCOLOR_REFLECTANCE), G_OK);
+    assert_int_equal(emits ? gemitter_create(f->rgb, &c, 1, &m, &err) : glambert_create(f->rgb, &c, &m, &err), G_OK);
     gcolor_free(&c);
     return m;
 }
+
+/* A lambert of grey reflectance r and an emitter of radiance (r, g, b) (two-sided) in f's model. */
+static inline GMaterial *lambert(Fix *f, double r) { return coloured(f, r, r, r, 0); }
+
+static inline GMaterial *emitter(Fix *f, double r, double g, double b) { return coloured(f, r, g, b, 1); }
 
 /* Nodes of every kit kind over the lamberts a, b and c (blends, one-child nodes, a node of nodes) into n[8]. */
 static inline void plain_nodes(GMaterial *a, GMaterial *b, GMaterial *c, CountGen *g, GMaterial *n[8])

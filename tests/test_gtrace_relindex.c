@@ -11,29 +11,13 @@
 #include <generic/kit/affine.h>
 #include <generic/kit/node_kit.h>
 
+#include "varying_index_material.h"
+
 #ifdef __SANITIZE_ADDRESS__
 #define RELINDEX_SANITIZED 1 /* fewer rounds in the sanitizers' build, several times slower */
 #else
 #define RELINDEX_SANITIZED 0
 #endif
-
-/* A material whose refraction index follows u: 1.3 + 0.2 u (no GMAT_CONSTANT_INDEX). */
-typedef struct Varying {
-    GMaterial base;
-} Varying;
-
-static void varying_destroy(GMaterial *self) { gmem_free(self); }
-
-static int varying_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
-{
-    (void)self;
-    return gcolor_fill(result, 1.3 + (sp ? 0.2 * sp->u : 0.0));
-}
-
-static const GMaterialClass varying_class = {
-    .abi_version = GMATERIAL_ABI_VERSION, .name = "varying", .description = "index 1.3 + 0.2 u (tests)",
-    .destroy = varying_destroy, .refraction_index = varying_index,
-};
 
 static GMaterial *dispersive(const Scene *s, GDispersion index)
 {
@@ -107,10 +91,10 @@ static void kept_indices(const char *model)
     GMaterial *g15 = glass(s, 1.5), *g133 = glass(s, 1.33);
     GMaterial *cauchy = dispersive(s, gdispersion_cauchy(1.5, 4200.0, 0.0));
     GMaterial *bk7 = dispersive(s, gdispersion_sellmeier(b, cc));
-    GMaterial *moved = NULL, *varying = gmem_calloc(1, sizeof(Varying)), *lam = lambert(s, 0.5);
+    GMaterial *moved = NULL, *varying = gmem_calloc(1, sizeof(GMaterial)), *lam = lambert(s, 0.5);
     GAffine2 uv = gaffine2_rotate(20.0);
     assert_int_equal(gnode_transform_create(cauchy, &uv, NULL, &moved, &err), G_OK);
-    assert_int_equal(gmaterial_init(varying, &varying_class, s->model, &err), G_OK);
+    assert_int_equal(gmaterial_init(varying, &varying_index_class, s->model, &err), G_OK);
     assert_true(gmaterial_constant_index(moved));
     assert_false(gmaterial_constant_index(varying));
     /* six media: 36 pairs, more than the slots */

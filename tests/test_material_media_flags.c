@@ -7,7 +7,8 @@
  *  - GMAT_CLEAR: which leaves and nodes get it (every built-in but a dielectric that absorbs and a thinfilm over
  *    one; the kit's pass-throughs, transform, select and interpolate-one of another method over children that have
  *    it, no blend of several, whose arithmetic the test shows is not always the light's bits), and that their
- *    absorption gives the light back bit for bit at generated points, lengths and lights. */
+ *    class's own absorption gives the light back bit for bit at generated points, lengths and lights
+ *    (test_material_clear_dispatch.c: the dispatch answers the light for the bit without calling the class). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -24,12 +25,12 @@
 #include "test_util.h"
 
 #include <math.h>
-#include <stdio.h>
 
 #include "material_flags_fixture.h"
+#include "varying_index_material.h"
 
-/* Every built-in leaf material by name, in bispectral (the fluorescent ones need its matrices): the flag tests
- * read which of them have a bit. */
+/* Every built-in leaf material by name, in bispectral (the fluorescent ones need its matrices), and dielectrics and
+ * a thinfilm whose media absorb or absorb nothing: the flag tests read which of them have a bit. */
 static const char *const leaves_text =
     "colormodel bispectral\n"
     "color dayglo reradiation { absorb_peak 470 absorb_width 115 absorb_shape 8 absorb_max 0.97\n"
@@ -45,9 +46,46 @@ static const char *const leaves_text =
     "material fp fluorescent-phong { matrix dayglo ks 0.04 exponents 30 120 480 weights 0.2 0.3 0.5 }\n"
     "material d dielectric\n"
     "material tf thinfilm { thickness 400 base lambert { reflectance rgb 0.5 0.5 0.5 } }\n"
-    "material ly layer { top dielectric { index 1.5 } bottom lambert { reflectance rgb 0.5 0.5 0.5 } }\n";
+    "material ly layer { top dielectric { index 1.5 } bottom lambert { reflectance rgb 0.5 0.5 0.5 } }\n"
+    "material da dielectric { index 1.5 absorption rgb 0.5 0.2 0.1 }\n"
+    "material dz dielectric { index 1.5 absorption rgb 0 0 0 }\n"
+    "material tfa thinfilm { thickness 400 base dielectric { index 1.5 absorption rgb 0.5 0.2 0.1 } }\n";
 
-static int no_rel_index(const GMaterial *m) { return (m->flags & GMAT_NO_REL_INDEX) != 0; }
+/* 1 when m has bit. */
+static int has_bit(const GMaterial *m, unsigned bit) { return (m->flags & bit) != 0; }
+
+/* The media bits of each leaf of leaves_text (MEDIA_ALL: all three): the dielectrics, thinfilms and the layer read
+ * the relative index, the others not; all have a constant index; all but the absorbing media (da, tfa) are clear. */
+#define MEDIA_ALL (GMAT_NO_REL_INDEX | GMAT_CONSTANT_INDEX | GMAT_CLEAR)
+static const struct {
+    const char *name;
+    unsigned bits;
+} leaf_bits[] = {{"l", MEDIA_ALL},  {"p", MEDIA_ALL}, {"m", MEDIA_ALL},  {"e", MEDIA_ALL},  {"c", MEDIA_ALL},
+                 {"pl", MEDIA_ALL}, {"t", MEDIA_ALL}, {"fv", MEDIA_ALL}, {"fp", MEDIA_ALL},
+                 {"d", GMAT_CONSTANT_INDEX | GMAT_CLEAR},  {"tf", GMAT_CONSTANT_INDEX | GMAT_CLEAR},
+                 {"ly", GMAT_CONSTANT_INDEX | GMAT_CLEAR}, {"dz", GMAT_CONSTANT_INDEX | GMAT_CLEAR},
+                 {"da", GMAT_CONSTANT_INDEX},              {"tfa", GMAT_CONSTANT_INDEX}};
+
+/* Loads leaves_text (file: its name in messages) and checks that each leaf has `bit` (bit_name in messages) as
+ * leaf_bits says, and that query, the bit's public question, answers the same; query answers 1 for vacuum. */
+static void leaves_have_bit(const char *file, unsigned bit, const char *bit_name, int (*query)(const GMaterial *))
+{
+    GLibrary *lib = NULL;
+    GError err;
+    if (greader_load_string(leaves_text, file, NULL, &lib, &err) != G_OK)
+        fail_msg("%s", err.message);
+    for (size_t i = 0; i < sizeof leaf_bits / sizeof leaf_bits[0]; i++) {
+        GMaterial *m = glibrary_material(lib, leaf_bits[i].name);
+        int want = (leaf_bits[i].bits & bit) != 0;
+        assert_non_null(m);
+        if (has_bit(m, bit) != want || query(m) != want)
+            fail_msg("%s: %s %d, expected %d", leaf_bits[i].name, bit_name, has_bit(m, bit), want);
+    }
+    glibrary_destroy(lib);
+    assert_int_equal(query(NULL), 1); /* vacuum: nothing read, index 1, nothing absorbed */
+}
+
+static int no_rel_index(const GMaterial *m) { return has_bit(m, GMAT_NO_REL_INDEX); }
 
 /* The class's own slots of m at two copies of one point, one with the relative index ri[0] and one with ri[1] (set
  * on the point and handed as the argument), for light from in leaving towards out: 1 when every status, colour,
@@ -119,23 +157,8 @@ static int same_for_both_indices(Fix *f, const GMaterial *m, GSurfPoint sp[2], c
 static void test_no_rel_index_bit(void **state)
 {
     Fix *f = *state;
-    GLibrary *lib = NULL;
     GError err;
-    if (greader_load_string(leaves_text, "relindex.mat", NULL, &lib, &err) != G_OK)
-        fail_msg("%s", err.message);
-    static const struct {
-        const char *name;
-        int flagged;
-    } want[] = {{"l", 1}, {"p", 1}, {"m", 1}, {"e", 1}, {"c", 1}, {"pl", 1}, {"t", 1},
-                {"fv", 1}, {"fp", 1}, {"d", 0}, {"tf", 0}, {"ly", 0}};
-    for (size_t i = 0; i < sizeof want / sizeof want[0]; i++) {
-        GMaterial *m = glibrary_material(lib, want[i].name);
-        assert_non_null(m);
-        if (no_rel_index(m) != want[i].flagged || gmaterial_no_rel_index(m) != want[i].flagged)
-            fail_msg("%s: GMAT_NO_REL_INDEX %d, expected %d", want[i].name, no_rel_index(m), want[i].flagged);
-    }
-    glibrary_destroy(lib);
-    assert_int_equal(gmaterial_no_rel_index(NULL), 1); /* vacuum reads nothing */
+    leaves_have_bit("relindex.mat", GMAT_NO_REL_INDEX, "GMAT_NO_REL_INDEX", gmaterial_no_rel_index);
 
     GMaterial *a = lambert(f, 0.2), *b = lambert(f, 0.8), *c = lambert(f, 0.5), *n[8], *yes[3], *no[5];
     GMaterial *mirror = NULL, *glass = NULL, *thin = NULL;
@@ -236,20 +259,6 @@ static void test_no_rel_index_bit(void **state)
     gmaterial_unref(thin);
 }
 
-static int constant_index(const GMaterial *m) { return (m->flags & GMAT_CONSTANT_INDEX) != 0; }
-
-/* A class with a refraction_index slot of its own: the index 1.4 + 0.1 u (no bit: gmaterial_init cannot tell). */
-static int varying_index(const GMaterial *self, GSurfPoint *sp, GColor *result)
-{
-    (void)self;
-    return gcolor_fill(result, 1.4 + (sp ? 0.1 * sp->u : 0.0));
-}
-
-static const GMaterialClass varying_index_class = {
-    .abi_version = GMATERIAL_ABI_VERSION, .name = "varying-index", .description = "index 1.4 + 0.1 u (tests)",
-    .destroy = bare_destroy, .refraction_index = varying_index,
-};
-
 /* A point on the plane at (u, v) = 4 x[0..1] - 1 and the position 10 x[2..4] - 5, with a normal tilted by x[2..4]
  * (pointing down when below, where the incident ray comes from inside: not entering) and the surface index. */
 static void generated_point(Fix *f, const double x[5], int below, int surface, GSurfPoint *sp)
@@ -277,75 +286,124 @@ static int same_bits(const GColor *x, const GColor *y)
     return x->kind == y->kind && memcmp(x->v, y->v, (size_t)x->model->nvalues * sizeof(float)) == 0;
 }
 
+/* What the tests of GMAT_CONSTANT_INDEX and GMAT_CLEAR build: a material without methods (plain, which gmaterial_init
+ * gives the bit) and one whose class has the bit's slot (own, which it does not), three lamberts and plain_nodes'
+ * nodes over them with their generator, a glass of index 1.5 and another dielectric (other), and the nodes each test
+ * makes over them: those that must have the bit (yes) and those that must not (no). */
+typedef struct MediaCase {
+    unsigned bit;
+    const char *bit_name;
+    GMaterial *plain, *own, *a, *b, *c, *n[8], *glass, *other, *yes[8], *no[8];
+    int nyes, nno;
+    CountGen *g;
+} MediaCase;
+
+/* Makes mc's materials for bit (bit_name in messages) in f's model, own of own_class and other of the parameters
+ * other, and checks which of plain_nodes' nodes have the bit against over_lamberts. */
+static void media_case_open(Fix *f, MediaCase *mc, unsigned bit, const char *bit_name, const GMaterialClass *own_class,
+                            const GDielectricParams *other, const int over_lamberts[8])
+{
+    GError err;
+    GDielectricParams gp = {.index = gdispersion_constant(1.5)};
+    *mc = (MediaCase){.bit = bit, .bit_name = bit_name};
+    mc->plain = gmem_calloc(1, sizeof *mc->plain);
+    mc->own = gmem_calloc(1, sizeof *mc->own);
+    assert_int_equal(gmaterial_init(mc->plain, &plain_class, f->rgb, &err), G_OK);
+    assert_int_equal(gmaterial_init(mc->own, own_class, f->rgb, &err), G_OK);
+    assert_int_equal(has_bit(mc->plain, bit), 1); /* no slot: the default, set by gmaterial_init */
+    assert_int_equal(has_bit(mc->own, bit), 0);   /* a slot of its own: not set */
+    mc->a = lambert(f, 0.2);
+    mc->b = lambert(f, 0.8);
+    mc->c = lambert(f, 0.5);
+    assert_int_equal(gdielectric_create(f->rgb, &gp, &mc->glass, &err), G_OK);
+    assert_int_equal(gdielectric_create(f->rgb, other, &mc->other, &err), G_OK);
+    mc->g = countgen_new(0.4);
+    plain_nodes(mc->a, mc->b, mc->c, mc->g, mc->n);
+    for (int i = 0; i < 8; i++)
+        if (has_bit(mc->n[i], bit) != over_lamberts[i])
+            fail_msg("node %d (%s) over lamberts: %s %d, expected %d", i, gmaterial_name(mc->n[i]), bit_name,
+                     has_bit(mc->n[i], bit), over_lamberts[i]);
+}
+
+/* Checks that mc's yes nodes have its bit and its no nodes not (yes_over, no_over: what they are over, in messages). */
+static void nodes_have_bit(const MediaCase *mc, const char *yes_over, const char *no_over)
+{
+    for (int i = 0; i < mc->nyes + mc->nno; i++) {
+        int want = i < mc->nyes;
+        const GMaterial *m = want ? mc->yes[i] : mc->no[i - mc->nyes];
+        if (has_bit(m, mc->bit) != want)
+            fail_msg("node %s%d (%s) over %s: %s %d", want ? "yes" : "no", want ? i : i - mc->nyes,
+                     gmaterial_name(m), want ? yes_over : no_over, mc->bit_name, has_bit(m, mc->bit));
+    }
+}
+
+/* The materials of mc whose property the test checks, into all (room for 20): plain_nodes' nodes with the bit, the
+ * yes nodes, the glass, other when it has the bit, plain and a lambert; their number. */
+static int media_case_flagged(const MediaCase *mc, const GMaterial **all)
+{
+    int nall = 0;
+    for (int i = 0; i < 8; i++)
+        if (has_bit(mc->n[i], mc->bit))
+            all[nall++] = mc->n[i];
+    for (int i = 0; i < mc->nyes; i++)
+        all[nall++] = mc->yes[i];
+    all[nall++] = mc->glass;
+    if (has_bit(mc->other, mc->bit))
+        all[nall++] = mc->other;
+    all[nall++] = mc->plain;
+    all[nall++] = mc->a;
+    return nall;
+}
+
+/* Releases mc's materials, each node before its children. */
+static void media_case_close(MediaCase *mc)
+{
+    for (int i = mc->nno - 1; i >= 0; i--)
+        gmaterial_unref(mc->no[i]);
+    for (int i = mc->nyes - 1; i >= 0; i--)
+        gmaterial_unref(mc->yes[i]);
+    release_plain_nodes(NULL, 0, mc->n, mc->a, mc->b, mc->c, mc->g);
+    gmaterial_unref(mc->glass);
+    gmaterial_unref(mc->other);
+    gmaterial_unref(mc->plain);
+    gmaterial_unref(mc->own);
+}
+
 /* Which leaves and nodes have GMAT_CONSTANT_INDEX, and, over generated points (both sides, positions, normals,
  * (u, v), generator values), the flagged ones' refraction index is the same bits as for sp NULL, which a blend of a
  * lambert and glass, the control, is not. */
 static void test_constant_index_bit(void **state)
 {
     Fix *f = *state;
-    GLibrary *lib = NULL;
     GError err;
-    if (greader_load_string(leaves_text, "constindex.mat", NULL, &lib, &err) != G_OK)
-        fail_msg("%s", err.message);
-    static const char *const leaves[] = {"l", "p", "m", "e", "c", "pl", "t", "fv", "fp", "d", "tf", "ly"};
-    for (size_t i = 0; i < sizeof leaves / sizeof leaves[0]; i++) {
-        GMaterial *m = glibrary_material(lib, leaves[i]);
-        assert_non_null(m);
-        if (!constant_index(m) || !gmaterial_constant_index(m))
-            fail_msg("%s has no GMAT_CONSTANT_INDEX", leaves[i]);
-    }
-    glibrary_destroy(lib);
-    assert_int_equal(gmaterial_constant_index(NULL), 1); /* vacuum: 1 */
+    leaves_have_bit("constindex.mat", GMAT_CONSTANT_INDEX, "GMAT_CONSTANT_INDEX", gmaterial_constant_index);
 
-    GMaterial *plain = gmem_calloc(1, sizeof *plain), *varying = gmem_calloc(1, sizeof *varying);
-    assert_int_equal(gmaterial_init(plain, &plain_class, f->rgb, &err), G_OK);
-    assert_int_equal(gmaterial_init(varying, &varying_index_class, f->rgb, &err), G_OK);
-    assert_int_equal(constant_index(plain), 1);   /* no slot: the default 1, set by gmaterial_init */
-    assert_int_equal(constant_index(varying), 0); /* a slot of its own: not set */
-
-    GMaterial *a = lambert(f, 0.2), *b = lambert(f, 0.8), *c = lambert(f, 0.5), *n[8], *glass = NULL, *cauchy = NULL;
-    GMaterial *yes[5], *no[4];
-    GDielectricParams gp = {.index = gdispersion_constant(1.5)}, cp = {.index = gdispersion_cauchy(1.5, 4200.0, 0.0)};
-    assert_int_equal(gdielectric_create(f->rgb, &gp, &glass, &err), G_OK);
-    assert_int_equal(gdielectric_create(f->rgb, &cp, &cauchy, &err), G_OK);
-    assert_int_equal(constant_index(cauchy), 1); /* a fit of the wavelength, read at no point */
-    CountGen *g = countgen_new(0.4);
-    plain_nodes(a, b, c, g, n);
     /* the one-child nodes (bump, scale, transform) pass their child's index; the blends do not get the bit */
     static const int over_lamberts[8] = {0, 0, 0, 0, 1, 1, 1, 0};
-    for (int i = 0; i < 8; i++)
-        if (constant_index(n[i]) != over_lamberts[i])
-            fail_msg("node %d (%s) over lamberts: GMAT_CONSTANT_INDEX %d, expected %d", i, gmaterial_name(n[i]),
-                     constant_index(n[i]), over_lamberts[i]);
+    GDielectricParams cp = {.index = gdispersion_cauchy(1.5, 4200.0, 0.0)};
+    MediaCase mc;
+    media_case_open(f, &mc, GMAT_CONSTANT_INDEX, "GMAT_CONSTANT_INDEX", &varying_index_class, &cp, over_lamberts);
+    GMaterial *glass = mc.glass, *cauchy = mc.other, *varying = mc.own, **yes = mc.yes, **no = mc.no;
+    CountGen *g = mc.g;
+    assert_int_equal(has_bit(cauchy, GMAT_CONSTANT_INDEX), 1); /* a fit of the wavelength, read at no point */
     GAffine2 uv = gaffine2_rotate(30.0);
     GAffine3 move = gaffine3_translate(gvec3(1.0, -2.0, 0.5));
     assert_int_equal(gnode_bump_create(glass, &g->base, 1.0, &yes[0], &err), G_OK);
     assert_int_equal(gnode_scale_create(cauchy, &g->base, &yes[1], &err), G_OK);
     assert_int_equal(gnode_transform_create(glass, &uv, &move, &yes[2], &err), G_OK);
     assert_int_equal(gnode_transform_create(yes[1], NULL, &move, &yes[3], &err), G_OK);
-    assert_int_equal(gnode_bump_create(plain, &g->base, 0.5, &yes[4], &err), G_OK);
-    for (int i = 0; i < 5; i++)
-        if (!constant_index(yes[i]))
-            fail_msg("node %d (%s) over one constant index has no GMAT_CONSTANT_INDEX", i, gmaterial_name(yes[i]));
-    assert_int_equal(gnode_interpolate_create(a, glass, &g->base, &no[0], &err), G_OK);
+    assert_int_equal(gnode_bump_create(mc.plain, &g->base, 0.5, &yes[4], &err), G_OK);
+    mc.nyes = 5;
+    assert_int_equal(gnode_interpolate_create(mc.a, glass, &g->base, &no[0], &err), G_OK);
     assert_int_equal(gnode_transform_create(varying, &uv, NULL, &no[1], &err), G_OK);
     assert_int_equal(gnode_scale_create(varying, &g->base, &no[2], &err), G_OK);
     assert_int_equal(gnode_transform_create(no[0], &uv, NULL, &no[3], &err), G_OK);
-    for (int i = 0; i < 4; i++)
-        if (constant_index(no[i]))
-            fail_msg("node %d (%s) over a blend or a varying index has GMAT_CONSTANT_INDEX", i, gmaterial_name(no[i]));
+    mc.nno = 4;
+    nodes_have_bit(&mc, "one constant index", "a blend or a varying index");
 
     /* the property: every flagged material's index at generated points is its index for no point, bit for bit */
     const GMaterial *all[20];
-    int nall = 0;
-    for (int i = 4; i < 7; i++)
-        all[nall++] = n[i];
-    for (int i = 0; i < 5; i++)
-        all[nall++] = yes[i];
-    all[nall++] = glass;
-    all[nall++] = cauchy;
-    all[nall++] = plain;
-    all[nall++] = a;
+    int nall = media_case_flagged(&mc, all);
     const GMaterial *control = no[0];
     GColor ref, at, first;
     assert_int_equal(gcolor_alloc(&ref, f->rgb), G_OK);
@@ -380,18 +438,8 @@ static void test_constant_index_bit(void **state)
     gcolor_free(&ref);
     gcolor_free(&at);
     gcolor_free(&first);
-    for (int i = 3; i >= 0; i--)
-        gmaterial_unref(no[i]);
-    for (int i = 4; i >= 0; i--)
-        gmaterial_unref(yes[i]);
-    release_plain_nodes(NULL, 0, n, a, b, c, g);
-    gmaterial_unref(glass);
-    gmaterial_unref(cauchy);
-    gmaterial_unref(plain);
-    gmaterial_unref(varying);
+    media_case_close(&mc);
 }
-
-static int clear(const GMaterial *m) { return (m->flags & GMAT_CLEAR) != 0; }
 
 /* A class with an absorption slot of its own: half the light passes at any length (no bit: gmaterial_init cannot
  * tell). */
@@ -418,12 +466,15 @@ static void draw_light(GColor *light, unsigned long long *s)
         assert_int_equal(gcolor_from_rgb(light, rgb, GCOLOR_LIGHT), G_OK);
 }
 
-/* m's absorption of light over length at sp (NULL: none) into at, filled with NaN bits first: 1 when it is the
- * light, bit for bit. */
+/* The absorption of m's class (the default for a class without the slot: gmaterial_absorption, which answers the
+ * light for a clear material without asking the class) of light over length at sp (NULL: none) into at, filled
+ * with NaN bits first: 1 when it is the light, bit for bit. */
 static int gives_light_back(const GMaterial *m, GSurfPoint *sp, const GColor *light, double length, GColor *at)
 {
     memset(at->v, 0xff, (size_t)at->model->nvalues * sizeof(float));
-    return gmaterial_absorption(m, sp, light, length, at) == G_OK && same_bits(at, light);
+    int rc = m->cls->absorption ? m->cls->absorption(m, sp, light, length, at)
+                                : gmaterial_absorption(m, sp, light, length, at);
+    return rc == G_OK && same_bits(at, light);
 }
 
 /* Which leaves and nodes have GMAT_CLEAR; over generated points (both sides, positions, normals, (u, v), surface
@@ -433,92 +484,47 @@ static int gives_light_back(const GMaterial *m, GSurfPoint *sp, const GColor *li
 static void test_clear_bit(void **state)
 {
     Fix *f = *state;
-    GLibrary *lib = NULL;
     GError err;
-    static const char *const absorbing_text =
-        "material da dielectric { index 1.5 absorption rgb 0.5 0.2 0.1 }\n"
-        "material dz dielectric { index 1.5 absorption rgb 0 0 0 }\n"
-        "material tfa thinfilm { thickness 400 base dielectric { index 1.5 absorption rgb 0.5 0.2 0.1 } }\n";
-    char text[4096];
-    snprintf(text, sizeof text, "%s%s", leaves_text, absorbing_text);
-    if (greader_load_string(text, "clear.mat", NULL, &lib, &err) != G_OK)
-        fail_msg("%s", err.message);
-    static const struct {
-        const char *name;
-        int clear;
-    } leaves[] = {{"l", 1},  {"p", 1},  {"m", 1},  {"e", 1},  {"c", 1},  {"pl", 1}, {"t", 1},   {"fv", 1},
-                  {"fp", 1}, {"d", 1},  {"tf", 1}, {"ly", 1}, {"da", 0}, {"dz", 1}, {"tfa", 0}};
-    for (size_t i = 0; i < sizeof leaves / sizeof leaves[0]; i++) {
-        GMaterial *m = glibrary_material(lib, leaves[i].name);
-        assert_non_null(m);
-        if (clear(m) != leaves[i].clear || gmaterial_clear(m) != leaves[i].clear)
-            fail_msg("%s: GMAT_CLEAR %d, expected %d", leaves[i].name, clear(m), leaves[i].clear);
-    }
-    glibrary_destroy(lib);
-    assert_int_equal(gmaterial_clear(NULL), 1); /* vacuum absorbs nothing */
+    leaves_have_bit("clear.mat", GMAT_CLEAR, "GMAT_CLEAR", gmaterial_clear);
 
-    GMaterial *plain = gmem_calloc(1, sizeof *plain), *absorbing = gmem_calloc(1, sizeof *absorbing);
-    assert_int_equal(gmaterial_init(plain, &plain_class, f->rgb, &err), G_OK);
-    assert_int_equal(gmaterial_init(absorbing, &absorbing_class, f->rgb, &err), G_OK);
-    assert_int_equal(clear(plain), 1);     /* no slot: the light itself, set by gmaterial_init */
-    assert_int_equal(clear(absorbing), 0); /* a slot of its own: not set */
-
-    GMaterial *a = lambert(f, 0.2), *b = lambert(f, 0.8), *c = lambert(f, 0.5), *n[8], *glass = NULL, *tinted = NULL;
-    GMaterial *yes[7], *no[7];
+    /* interpolate-one of the diffuse colour, select, bump, scale and transform give one child's absorption */
+    static const int over_lamberts[8] = {0, 1, 0, 1, 1, 1, 1, 0};
     GColor coeff;
     double k[3] = {0.5, 0.2, 0.1};
     assert_int_equal(gcolor_alloc(&coeff, f->rgb), G_OK);
     assert_int_equal(gcolor_from_rgb(&coeff, k, GCOLOR_REFLECTANCE), G_OK);
-    GDielectricParams gp = {.index = gdispersion_constant(1.5)};
     GDielectricParams tp = {.index = gdispersion_constant(1.5), .absorption = &coeff};
-    assert_int_equal(gdielectric_create(f->rgb, &gp, &glass, &err), G_OK);
-    assert_int_equal(gdielectric_create(f->rgb, &tp, &tinted, &err), G_OK);
+    MediaCase mc;
+    media_case_open(f, &mc, GMAT_CLEAR, "GMAT_CLEAR", &absorbing_class, &tp, over_lamberts);
     gcolor_free(&coeff);
-    assert_int_equal(clear(glass), 1);
-    assert_int_equal(clear(tinted), 0);
-    CountGen *g = countgen_new(0.4);
-    plain_nodes(a, b, c, g, n);
-    /* interpolate-one of the diffuse colour, select, bump, scale and transform give one child's absorption */
-    static const int over_lamberts[8] = {0, 1, 0, 1, 1, 1, 1, 0};
-    for (int i = 0; i < 8; i++)
-        if (clear(n[i]) != over_lamberts[i])
-            fail_msg("node %d (%s) over lamberts: GMAT_CLEAR %d, expected %d", i, gmaterial_name(n[i]), clear(n[i]),
-                     over_lamberts[i]);
+    GMaterial *glass = mc.glass, *tinted = mc.other, *a = mc.a, **yes = mc.yes, **no = mc.no;
+    CountGen *g = mc.g;
+    assert_int_equal(has_bit(glass, GMAT_CLEAR), 1);
+    assert_int_equal(has_bit(tinted, GMAT_CLEAR), 0);
     GAffine2 uv = gaffine2_rotate(30.0);
     GAffine3 move = gaffine3_translate(gvec3(1.0, -2.0, 0.5));
-    GMaterial *clear_kids[3] = {glass, a, plain}, *mixed_kids[3] = {glass, tinted, a};
+    GMaterial *clear_kids[3] = {glass, a, mc.plain}, *mixed_kids[3] = {glass, tinted, a};
     assert_int_equal(gnode_bump_create(glass, &g->base, 1.0, &yes[0], &err), G_OK);
     assert_int_equal(gnode_scale_create(glass, &g->base, &yes[1], &err), G_OK);
     assert_int_equal(gnode_transform_create(glass, &uv, &move, &yes[2], &err), G_OK);
     assert_int_equal(gnode_transform_create(yes[1], NULL, &move, &yes[3], &err), G_OK);
     assert_int_equal(gnode_select_create(clear_kids, 3, &g->base, &yes[4], &err), G_OK);
     assert_int_equal(gnode_interpolate_one_create(glass, tinted, &g->base, GNODE_REFLECTION, &yes[5], &err), G_OK);
-    assert_int_equal(gnode_bump_create(plain, &g->base, 0.5, &yes[6], &err), G_OK);
-    for (int i = 0; i < 7; i++)
-        if (!clear(yes[i]))
-            fail_msg("node %d (%s) over clear children has no GMAT_CLEAR", i, gmaterial_name(yes[i]));
+    assert_int_equal(gnode_bump_create(mc.plain, &g->base, 0.5, &yes[6], &err), G_OK);
+    mc.nyes = 7;
     assert_int_equal(gnode_interpolate_create(a, glass, &g->base, &no[0], &err), G_OK);
     assert_int_equal(gnode_bump_create(tinted, &g->base, 1.0, &no[1], &err), G_OK);
-    assert_int_equal(gnode_transform_create(absorbing, &uv, NULL, &no[2], &err), G_OK);
+    assert_int_equal(gnode_transform_create(mc.own, &uv, NULL, &no[2], &err), G_OK);
     assert_int_equal(gnode_select_create(mixed_kids, 3, &g->base, &no[3], &err), G_OK);
     assert_int_equal(gnode_interpolate_one_create(glass, a, &g->base, GNODE_ABSORPTION, &no[4], &err), G_OK);
     assert_int_equal(gnode_interpolate_one_create(tinted, glass, &g->base, GNODE_DIFFUSE, &no[5], &err), G_OK);
     assert_int_equal(gnode_scale_create(no[0], &g->base, &no[6], &err), G_OK);
-    for (int i = 0; i < 7; i++)
-        if (clear(no[i]))
-            fail_msg("node %d (%s) over a blend or an absorbing child has GMAT_CLEAR", i, gmaterial_name(no[i]));
+    mc.nno = 7;
+    nodes_have_bit(&mc, "clear children", "a blend or an absorbing child");
 
     /* the property: every flagged material gives the light back, bit for bit, at generated points and for none */
-    const GMaterial *all[24];
-    int nall = 0;
-    for (int i = 0; i < 8; i++)
-        if (over_lamberts[i])
-            all[nall++] = n[i];
-    for (int i = 0; i < 7; i++)
-        all[nall++] = yes[i];
-    all[nall++] = glass;
-    all[nall++] = plain;
-    all[nall++] = a;
+    const GMaterial *all[20];
+    int nall = media_case_flagged(&mc, all);
     const GMaterial *blends[2] = {no[0], no[4]}; /* two clear children blended: not flagged */
     static const double lengths[] = {0.0, 1e-3, 1.0, 1e3};
     GColor light, at;
@@ -558,15 +564,7 @@ static void test_clear_bit(void **state)
     assert_true(blend_differs < blend_calls); /* black light, weights 0 and 1 give the light itself */
     gcolor_free(&light);
     gcolor_free(&at);
-    for (int i = 6; i >= 0; i--)
-        gmaterial_unref(no[i]);
-    for (int i = 6; i >= 0; i--)
-        gmaterial_unref(yes[i]);
-    release_plain_nodes(NULL, 0, n, a, b, c, g);
-    gmaterial_unref(glass);
-    gmaterial_unref(tinted);
-    gmaterial_unref(plain);
-    gmaterial_unref(absorbing);
+    media_case_close(&mc);
 }
 
 int main(void)

@@ -211,7 +211,7 @@ static void test_unless_bits(void **state)
         assert_int_equal(calls[M_##NAME], 1);                                                                      \
     }
     GMATERIAL_METHODS(CALL_UNLESS)
-    assert_int_equal(with_bit, 6); /* reflection_dir, refraction_dir, emission, normal, opaque, is_delta */
+    assert_int_equal(with_bit, 7); /* reflection_dir, refraction_dir, emission, absorption, normal, opaque, is_delta */
     gmaterial_unref(m);
 }
 

@@ -1,6 +1,7 @@
 /* clear.c - the clear check of `gmat check` (material.h's GMAT_CLEAR): a material with the bit says that as a
  * medium it absorbs nothing, its absorption writing the light itself for every length >= 0, so a renderer may skip
- * the call. The check calls the class's own absorption slot (not the dispatch) for sp NULL, at each place of the
+ * the call. The check calls the class's own absorption slot, not the dispatch (gmaterial_absorption gives the light
+ * back for the bit without asking the class: it would pass any material), for sp NULL, at each place of the
  * finite check on both sides, and at points drawn around each place (other positions, normals, tangents, (u, v),
  * surface indices, footprints and distances), with the lengths 0, 1e-3, 1 and 1e3 and four lights: black, white, a
  * random light and a random light scaled by a drawn factor up to 1e3. Every call must succeed and write the light's

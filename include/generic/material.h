@@ -133,7 +133,8 @@ enum {
     GMAT_CONSTANT_INDEX = 256u,
     /** The material as a medium absorbs nothing: absorption(sp, illum, length, result) writes illum itself (its
      * kind and samples, bit for bit) for every length >= 0, at every point and for sp NULL, so a renderer may skip
-     * the call and the colour it writes to, and carry the light on unchanged. Set by gmaterial_init for a class
+     * the call and the colour it writes to, and carry the light on unchanged; gmaterial_absorption answers so itself,
+     * without calling the class. Set by gmaterial_init for a class
      * without an absorption slot (the default, illum); a class sets it on the instances it holds for (dielectric
      * without absorption; thinfilm when its base has it); the node kit on a node whose absorption is at every point
      * one child's when each such child has it (gnode_inherit_clear, gnode_inherit_kit_clear: bump, scale, image,
@@ -202,8 +203,9 @@ struct GMaterial {
     X(ambient, AMBIENT, int, GENERIC_NODISCARD, 0, call, pick, (GSurfPoint *sp, const GColor *illum, GColor *result),  \
       (sp, illum, result))                                                                                             \
     /** What is left of illum after `length` through the material as a medium (sp may be NULL). Default: illum         \
-     * (m == NULL: vacuum, nothing absorbed). */                                                                       \
-    X(absorption, ABSORPTION, int, GENERIC_NODISCARD, 0, call, pick,                                                   \
+     * (m == NULL: vacuum, nothing absorbed), without a call to the class when m has GMAT_CLEAR: result gets illum's   \
+     * kind and samples bit for bit (nothing is copied when result is illum), for any length. */                       \
+    X(absorption, ABSORPTION, int, GENERIC_NODISCARD, GMAT_CLEAR, call, pick,                                          \
       (GSurfPoint *sp, const GColor *illum, double length, GColor *result), (sp, illum, length, result))               \
     /** Shading normal, uncached (renderers call gsurfpoint_normal, which caches it). Default: sp->geometric_normal,   \
      * without a call to the class when m has GMAT_GEOMETRIC_NORMAL. */                                                \
@@ -291,8 +293,9 @@ GENERIC_API int gmaterial_no_rel_index(const GMaterial *m);
  * relative index between two such materials may be computed once. 0 when it may vary (or it cannot tell); NULL
  * (vacuum, index 1) is 1. */
 GENERIC_API int gmaterial_constant_index(const GMaterial *m);
-/** 1 when m has GMAT_CLEAR: as a medium it absorbs nothing, its absorption of any light is that light, bit for bit,
- * so a renderer may skip the call. 0 when it may absorb (or it cannot tell); NULL (vacuum) is 1. */
+/** 1 when m has GMAT_CLEAR: as a medium it absorbs nothing, its absorption of any light is that light, bit for bit
+ * (gmaterial_absorption writes it without calling the class), so a renderer may skip the call and the colour it
+ * writes. 0 when it may absorb (or it cannot tell); NULL (vacuum) is 1. */
 GENERIC_API int gmaterial_clear(const GMaterial *m);
 
 /* ---- helpers for material implementations (lib/core/optics.c) ---- */

@@ -108,7 +108,7 @@ static inline int default_ambient(const GMaterial *m, GSurfPoint *sp, const GCol
 static inline int default_absorption(const GMaterial *m, GSurfPoint *sp, const GColor *illum, double length,
                                      GColor *result)
 {
-    (void)m, (void)sp, (void)length;
+    (void)m, (void)sp, (void)length; /* also for GMAT_CLEAR; gcolor_copy copies nothing when result is illum */
     return gcolor_copy(result, illum);
 }
 

@@ -122,7 +122,8 @@ static int shade_path(PathCtx *p, const Ray *r, GSurfPoint *sp, GVec3 facing, co
     int rc = G_OK, opaque, delta, valid;
     CHECK(trace_relative_index(c, sp, &room, &ri));
     /* in a medium that absorbs the light is gathered apart (written in full: not cleared), and its absorption written
-     * to out; a clear medium (GMAT_CLEAR, vacuum) would write the light itself: it is gathered into out */
+     * to out; a clear medium (GMAT_CLEAR, vacuum), whose gmaterial_absorption writes the light itself without calling
+     * the class, is skipped: the light is gathered into out */
     if (!media_clear(sp->from)) {
         CHECK(gcolor_scratch_uncleared(&inside, s->model, c->scratch));
         res = &inside;
@@ -401,7 +402,7 @@ static int arrive(PathCtx *p, const Ray *r, const Media *media, int depth, doubl
     if (lh) {
         CHECK(gcolor_scale(out, &lh->color, first ? 1.0 : mis_power(prev_pdf, pdf_l)));
         const GMaterial *medium = media_top(media);
-        if (!media_clear(medium)) { /* a clear medium (GMAT_CLEAR, vacuum) would give the light back */
+        if (!media_clear(medium)) { /* clear (GMAT_CLEAR, vacuum): the dispatch gives the light back */
             GScratchMark mark = gscratch_mark(c->scratch);
             GColor tmp;
             if ((rc = gcolor_scratch_uncleared(&tmp, s->model, c->scratch)) == G_OK && /* absorption's out */

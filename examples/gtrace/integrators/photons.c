@@ -108,7 +108,7 @@ int photon_trace(TraceCtx *c, const PhotonSource *src, const Media *media0, uint
         if (!accel_intersect(s, &ray, &h))
             break;
         const GMaterial *medium = media_top(&media);
-        if (!media_clear(medium)) { /* a clear medium (GMAT_CLEAR, vacuum) would give the light back */
+        if (!media_clear(medium)) { /* clear (GMAT_CLEAR, vacuum): the dispatch gives the light back */
             CHECK(gmaterial_absorption(medium, NULL, &power, h.t, &tmp));
             CHECK(gcolor_copy(&power, &tmp));
         }

@@ -181,7 +181,7 @@ static int camera_visit(Sppm *sp_, TraceCtx *c, int pass, int x, int y, VisibleP
             break;
         }
         const GMaterial *medium = media_top(&media);
-        if (!media_clear(medium)) { /* a clear medium (GMAT_CLEAR, vacuum) would give the light back */
+        if (!media_clear(medium)) { /* clear (GMAT_CLEAR, vacuum): the dispatch gives the light back */
             CHECK(gmaterial_absorption(medium, NULL, &vp->beta, h.t, &tmp));
             CHECK(gcolor_copy(&vp->beta, &tmp));
         }

@@ -146,7 +146,8 @@ static int shade(TraceCtx *c, const Ray *r, GSurfPoint *sp, GVec3 facing, const 
     int rc = G_OK, valid;
     CHECK(trace_tmp(c, TRACE_TMP_SHADE, &tmp)); /* not held across the secondary rays, which use it too */
     /* in a medium that absorbs the light is gathered apart (written in full: not cleared), and its absorption written
-     * to out; a clear medium (GMAT_CLEAR, vacuum) would write the light itself: it is gathered into out */
+     * to out; a clear medium (GMAT_CLEAR, vacuum), whose gmaterial_absorption writes the light itself without calling
+     * the class, is skipped: the light is gathered into out */
     if (!media_clear(sp->from)) {
         CHECK(gcolor_scratch_uncleared(&inside, s->model, c->scratch));
         res = &inside;

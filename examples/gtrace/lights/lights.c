@@ -133,7 +133,7 @@ int light_transmit(TraceCtx *c, GSurfPoint *sp, GVec3 facing, const Media *media
         surfpoint_fill(c, &seg, &h, &walk, &hp, &hf);
         if (gmaterial_opaque(hp.material, &hp))
             goto done;
-        int absorbs = !media_clear(hp.from); /* a clear medium (GMAT_CLEAR, vacuum) would give the light back */
+        int absorbs = !media_clear(hp.from); /* clear (GMAT_CLEAR, vacuum): the dispatch gives the light back */
         if (absorbs && ((rc = gmaterial_absorption(hp.from, &hp, light, h.t, &tmp)) < 0 ||
                         (rc = gcolor_copy(light, &tmp)) < 0))
             goto done;

@@ -104,9 +104,9 @@ const GMaterial *media_top(const Media *m);
 void media_copy(Media *out, const Media *in);
 /** The media after crossing the surface of mat: entering pushes it, leaving removes it. */
 void media_cross(const Media *in, const GMaterial *mat, int entering, Media *out);
-/** 1 when the medium m absorbs nothing (GMAT_CLEAR, material.h; NULL: vacuum): its absorption would give the light
- * back bit for bit, so the integrators skip the call and the colour it writes. The bit read inline, as
- * trace_relative_index reads the others (no call per hit). */
+/** 1 when the medium m absorbs nothing (GMAT_CLEAR, material.h; NULL: vacuum): gmaterial_absorption gives the light
+ * back bit for bit without calling the class, and the integrators skip even that call and the colour it writes (the
+ * same answer). The bit read inline, as trace_relative_index reads the others (no call per hit). */
 static inline int media_clear(const GMaterial *m) { return !m || (m->flags & GMAT_CLEAR); }
 /** The relative index the material of sp is handed: *ri points to n(from) / n(to) at sp, made sp's relative index
  * (gsurfpoint_set_relative_index), and is read only (it may be shared, kept for the context's life). For a material
