@@ -1,8 +1,8 @@
 /* test_image_limits.c - image headers that lie: a generator of PNG, PFM and HDR files whose headers claim
- * far more pixels than they hold, each refused by every reader (gimage_read, gimage_info, gprobe_load, the
- * image node) before the claimed memory is allocated and within a second; the memory budget (refusal above
- * it, a budget-sized image accepted, the setting restored); true images at the extreme of compression still
- * read. */
+ * far more pixels than they hold, and of OpenEXR headers whose attributes claim more than their file, each refused
+ * by every reader (gimage_read, gimage_info, gprobe_load, the image node) before the claimed memory is allocated
+ * and within a second; the memory budget (refusal above it, a budget-sized image accepted, the setting restored);
+ * true images at the extreme of compression still read. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -212,6 +212,106 @@ static void test_lying_hdr_headers(void **state)
     assert_true(max_rss_kb() < 1024 * 1024);
 }
 
+/* ---- OpenEXR: headers whose attributes claim more than the file ---- */
+
+/* The whole of a file, into buf (at most cap bytes); its size. */
+static long read_all(const char *path, unsigned char *buf, long cap)
+{
+    FILE *f = fopen(path, "rb");
+    assert_non_null(f);
+    long n = (long)fread(buf, 1, (size_t)cap, f);
+    assert_int_equal(fclose(f), 0);
+    assert_true(n > 0 && n < cap);
+    return n;
+}
+
+static void write_all(const char *path, const unsigned char *buf, long n)
+{
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    assert_int_equal((long)fwrite(buf, 1, (size_t)n, f), n);
+    assert_int_equal(fclose(f), 0);
+}
+
+static void put_le32(unsigned char *p, uint32_t v)
+{
+    for (int i = 0; i < 4; i++)
+        p[i] = (unsigned char)(v >> (8 * i));
+}
+
+/* Where each attribute of the single-part header in buf keeps its size (offsets of the 32-bit fields), and where
+ * its value starts, for at most max attributes; how many were found. */
+static int exr_attributes(const unsigned char *buf, long n, long *size_at, char names[][32], int max)
+{
+    long off = 8;
+    int count = 0;
+    while (off < n && buf[off] && count < max) {
+        size_t len = strlen((const char *)buf + off);
+        memcpy(names[count], buf + off, len < 31 ? len + 1 : 31);
+        names[count][31] = '\0';
+        off += (long)len + 1;
+        off += (long)strlen((const char *)buf + off) + 1; /* the type name */
+        size_at[count++] = off;
+        uint32_t sz = (uint32_t)buf[off] | (uint32_t)buf[off + 1] << 8 | (uint32_t)buf[off + 2] << 16 |
+                      (uint32_t)buf[off + 3] << 24;
+        off += 4 + (long)sz;
+    }
+    return count;
+}
+
+/* A true EXR written by the library, then every attribute's size made a lie (the largest a header holds, the
+ * file's own size, negative), the data window made 2^30 rows tall (its table of chunk offsets alone far beyond the
+ * file), and the header cut short at every 5th byte: each refused by every reader, the lies by the header check
+ * ("claims"), before OpenEXR allocates what they claim. */
+static void test_lying_exr_headers(void **state)
+{
+    (void)state;
+    GError err;
+    GImage img, back;
+    char path[300];
+    snprintf(path, sizeof path, "%s/true_small.exr", dir);
+    assert_int_equal(gimage_create(&img, 5, 4, 3, &err), G_OK);
+    for (size_t i = 0; i < 60; i++)
+        img.pixels[i] = (float)i * 0.125f;
+    assert_int_equal(gimage_write(path, &img, NULL, &err), G_OK);
+    gimage_free(&img);
+    assert_int_equal(gimage_read(path, 0, &back, &err), G_OK); /* the true file reads */
+    gimage_free(&back);
+    static unsigned char buf[1 << 16], lie[1 << 16];
+    const long n = read_all(path, buf, sizeof buf);
+    long size_at[64];
+    char names[64][32];
+    const int count = exr_attributes(buf, n, size_at, names, 64);
+    assert_true(count >= 6); /* channels, compression, dataWindow, displayWindow, lineOrder, ... */
+    const uint32_t claims[] = {0x7fffffffu, (uint32_t)n, 0x80000000u};
+    int window = 0;
+    for (int a = 0; a < count; a++) {
+        for (size_t c = 0; c < sizeof claims / sizeof claims[0]; c++) {
+            memcpy(lie, buf, (size_t)n);
+            put_le32(lie + size_at[a], claims[c]);
+            snprintf(path, sizeof path, "%s/lie_attr_%d_%zu.exr", dir, a, c);
+            write_all(path, lie, n);
+            expect_refused(path, c == 2 ? NULL : "claims");
+        }
+        if (!strcmp(names[a], "dataWindow")) { /* ymax = 2^30 - 1 */
+            memcpy(lie, buf, (size_t)n);
+            put_le32(lie + size_at[a] + 4 + 12, (1u << 30) - 1);
+            snprintf(path, sizeof path, "%s/lie_window.exr", dir);
+            write_all(path, lie, n);
+            expect_refused(path, "chunks of pixels");
+            window = 1;
+        }
+    }
+    assert_true(window);
+    const long header_end = size_at[count - 1] + 4;
+    for (long cut = 8; cut < header_end; cut += 5) {
+        snprintf(path, sizeof path, "%s/cut_%ld.exr", dir, cut);
+        write_all(path, buf, cut);
+        expect_refused(path, NULL);
+    }
+    assert_true(max_rss_kb() < 1024 * 1024);
+}
+
 static void test_memory_budget(void **state)
 {
     (void)state;
@@ -290,6 +390,7 @@ int main(void)
         cmocka_unit_test(test_lying_png_headers),
         cmocka_unit_test(test_lying_pfm_headers),
         cmocka_unit_test(test_lying_hdr_headers),
+        cmocka_unit_test(test_lying_exr_headers),
         cmocka_unit_test(test_memory_budget),
         cmocka_unit_test(test_true_files_read),
     };

@@ -8,6 +8,7 @@
 #include "oiio_module.h"
 #include "image_oiio.hpp"
 #include "image_format.h"
+#include "exr_header.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -170,6 +171,10 @@ int goiio_open_checked(const char *path, ImageSpec *config, std::unique_ptr<Imag
     long long size = fstat(fd, &st) == 0 ? (long long)st.st_size : 0;
     GImageFormat format;
     int rc = sniff_fd(path, fd, &format, err);
+    // OpenEXR allocates what its header claims while it reads it: a claim beyond the file is refused first
+    char why[256];
+    if (rc == G_OK && !strcmp(format.oiio, "openexr") && gimage_exr_header_check(fd, size, why, sizeof why) != 0)
+        rc = gerror_set(err, G_ERR_IO, "%s: cannot read image: %s", path, why);
     close(fd);
     if (rc != G_OK)
         return rc;
