@@ -40,6 +40,7 @@ FUZZ_SEED_reader := examples/materials/*.mat examples/textures/*.txt tests/good/
 FUZZ_SEED_bfc    := tests/bad/*.BFC tests/bad/*.bfc
 FUZZ_SEED_probe  := tests/bad/*.hdr tests/bad/*.pfm
 FUZZ_SEED_image  := examples/textures/*.png examples/scenes/*.png tests/bad/*.hdr tests/bad/*.pfm
+FUZZ_SEED_scene  := examples/scenes/*.scene tests/bad/*.scene
 # Per-target libFuzzer options. The image readers keep OpenImageIO's file cache between inputs, which grows, so
 # the per-input leak check would run (and cost more than the input) every time: leaks show at exit instead.
 FUZZ_OPTS_image  := -detect_leaks=0
@@ -82,6 +83,16 @@ $(FUZZ_LIBA): $(FUZZ_C_OBJ) $(FUZZ_CXX_OBJ) $(FUZZ_GEN_OBJ)
 .SECONDARY: $(FUZZ_NAMES:%=$(FUZZ_BUILD)/obj/tests/fuzz/fuzz_%.o)
 # gtrace's media sources name their headers from examples/gtrace/, as gtrace's build does
 $(FUZZ_BUILD)/obj/tests/fuzz/fuzz_medium.o: FUZZ_CPPFLAGS += -Iexamples/gtrace
+# The scene target (fuzz_scene.c) links gtrace whole: its sources as libgtrace.a has them (examples/gtrace/*/*.c,
+# examples/gtrace/build.mk), compiled with FUZZ_CC into FUZZ_BUILD/libgtrace.a, and Embree.
+FUZZ_GTRACE_OBJ  := $(patsubst %.c,$(FUZZ_BUILD)/obj/%.o,$(wildcard examples/gtrace/*/*.c))
+FUZZ_GTRACE_LIBA := $(FUZZ_BUILD)/libgtrace.a
+$(FUZZ_GTRACE_OBJ) $(FUZZ_BUILD)/obj/tests/fuzz/fuzz_scene.o: FUZZ_CPPFLAGS += -Iexamples/gtrace
+$(FUZZ_GTRACE_LIBA): $(FUZZ_GTRACE_OBJ)
+	rm -f $@
+	ar rcs $@ $^
+$(FUZZ_BUILD)/fuzz_scene: $(FUZZ_GTRACE_LIBA)
+$(FUZZ_BUILD)/fuzz_scene: FUZZ_LIBS := $(FUZZ_GTRACE_LIBA) -lembree3 $(FUZZ_LIBS)
 $(FUZZ_BUILD)/fuzz_%: $(FUZZ_BUILD)/obj/tests/fuzz/fuzz_%.o $(FUZZ_LIBA)
 	$(FUZZ_CXX) $(FUZZ_SAN) -fsanitize=fuzzer -o $@ $< -Wl,--whole-archive $(FUZZ_LIBA) -Wl,--no-whole-archive \
 	    $(FUZZ_LIBS)
