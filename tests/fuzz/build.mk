@@ -47,6 +47,8 @@ FUZZ_OPTS_image  := -detect_leaks=0
 FUZZ_OPTS_probe  := -detect_leaks=0
 # The reader's inputs may grow to 64 KiB, so that structure (nesting, lists, chains) can appear.
 FUZZ_OPTS_reader := -max_len=65536
+# The scene target's dictionary: the keywords of gtrace's scene files and the fixtures' names.
+FUZZ_OPTS_scene  := -dict=tests/fuzz/scene.dict
 FUZZ_GEN_COUNT   ?= 24
 FUZZ_GEN_BUDGET  ?= 4194304
 FUZZ_GEN_TIMEOUT ?= 10

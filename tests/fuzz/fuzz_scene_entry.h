@@ -194,6 +194,9 @@ static int gfuzz_scene_render(Scene *s, int integrator, int pixels_w, int pixels
             if (!isfinite(fb.pixels[i]))
                 bad = gfuzz_violation("%s: pixel value %zu is %g", what, i, fb.pixels[i]);
     }
+    if (getenv("GFUZZ_VERBOSE"))
+        fprintf(stderr, "gfuzz_scene: %s: %s, %d objects, %d lights, %llu rays\n", what,
+                rc == G_OK ? "rendered" : err.message, s->nobjects, s->nlights, (unsigned long long)st.rays);
     framebuffer_free(&fb);
     return bad;
 }

@@ -100,7 +100,8 @@ static void many_lights(GenBuf *b, GenRng *r, size_t budget)
     budget = cap(budget);
     gb_printf(b, "include \"common.mat\"\n");
     camera(b, r);
-    gb_printf(b, "object floor plane { point <0, -1, 0> normal <0, 1, 0> material base }\n");
+    gb_printf(b, "object floor plane { point <0, -1, 0> normal <0, 1, 0> material base }\n"
+                 "object ball sphere { radius 0.5 material shiny }\n");
     for (unsigned long i = 0; b->n + 200 < budget; i++) {
         switch (gen_below(r, 7)) {
         case 0:
