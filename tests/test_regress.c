@@ -121,7 +121,7 @@ static void test_image(void **state)
 static void test_scene(void **state)
 {
     (void)state;
-    replay("scene", gfuzz_scene, 0);
+    replay("scene", gfuzz_scene, 1);
 }
 
 /* The promises the entry points check do fail on broken values (so the replay above cannot pass vacuously). */

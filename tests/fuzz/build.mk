@@ -126,7 +126,9 @@ fuzz-gen-%:
 	@tests/fuzz/run_generated.sh $* $(FUZZ_SEED) $(FUZZ_GEN_COUNT) $(FUZZ_GEN_BUDGET) $(FUZZ_GEN_TIMEOUT) \
 	    $(FUZZ_GEN_MB) $(FUZZ_BUILD)
 
-# One target's run: its corpus directories (those that exist), its options; the executions at the end.
+# One target's run: its corpus directories (those that exist), its options; the executions at the end. The
+# crashers' prefix is absolute: the reader and scene targets run each input inside their private directory, where a
+# relative one would name nothing when the input crashes.
 # Inputs are named by their magic bytes, so OpenImageIO tries only the reader of that extension
 # (try_all_readers=0): otherwise every corrupt input is probed by every reader, LibRaw's costly constructor
 # included (the image target ran about 1.6x slower so).
@@ -138,7 +140,7 @@ fuzz-run-%:
 	echo "fuzz $*: $(FUZZ_SECONDS) s over $$dirs"; \
 	if ! OPENIMAGEIO_OPTIONS=try_all_readers=0 $(FUZZ_BUILD)/fuzz_$* -seed=$(FUZZ_SEED) \
 	        -max_total_time=$(FUZZ_SECONDS) -timeout=20 -rss_limit_mb=2560 $(FUZZ_OPTS_$*) -print_final_stats=1 \
-	        -artifact_prefix=$(FUZZ_BUILD)/crashes/$*/ $$dirs > $$log 2>&1; then \
+	        -artifact_prefix=$(abspath $(FUZZ_BUILD))/crashes/$*/ $$dirs > $$log 2>&1; then \
 	    tail -n 80 $$log; echo "fuzz $*: FAILED (input in $(FUZZ_BUILD)/crashes/$*/, log $$log)"; exit 1; \
 	fi; \
 	echo "fuzz $*: $$(grep -E '^stat::(number_of_executed_units|new_units_added|peak_rss_mb)' $$log | tr -s ' \n' ' ')"

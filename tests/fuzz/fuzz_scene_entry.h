@@ -1,5 +1,5 @@
 /* fuzz_scene_entry.h - the entry point of gtrace's scene files, shared by the libFuzzer target tests/fuzz/fuzz_scene.c
- * and the regression replay tests/test_gtrace_fuzz_regress.c (both link gtrace whole and Embree):
+ * and the regression replay tests/test_regress.c (both link gtrace whole and Embree):
  *
  *   gfuzz_scene  the bytes loaded as a scene (greader_load_string with gtrace's kinds and types registered, then
  *                scene_from_library) in two colour models: the file's own (its `colormodel` line, rgb without one)
@@ -20,7 +20,8 @@
  * bytes before the first such line are the scene. NAME is 1 to 48 of [A-Za-z0-9._-], not starting with '.', and
  * not a fixture's name; at most GFUZZ_SCENE_MAX_FILES files. A file whose content (or name) sends it to assimp
  * (PLY, STL, glTF: mesh_format_detect) is not written: assimp reads those in gtrace-mesh, a process of its own,
- * which tests/fuzz/run_mesh_generated.sh fuzzes; here (GENERIC_DECODE=inprocess) it would run in the fuzzer.
+ * which tests/fuzz/run_mesh_generated.sh fuzzes; here (GENERIC_DECODE=inprocess) it would run in the fuzzer. Grid
+ * media find no OpenVDB reader (GTRACE_VDB_READER names none): their files are refused, their text is fuzzed.
  *
  * Confinement. The load runs in the private directory with GReaderOptions.confine_dir set to it, the reader's own
  * rule, so no include, mesh, IES, probe or image path resolves outside it (absolute paths and '..' included:
@@ -29,13 +30,12 @@
  *
  * Cost. The render is a GFUZZ_SCENE_CROP_W x GFUZZ_SCENE_CROP_H crop of the camera's image (its full size sets
  * the view; only the crop is allocated and traced), depth at most GFUZZ_SCENE_DEPTH, GFUZZ_SCENE_MAX_RAYS
- * secondary rays per camera sample; a scene whose lights take more than GFUZZ_SCENE_MAX_LIGHT_SAMPLES shadow
- * samples per shading point, or an input over GFUZZ_SCENE_RENDER_INPUT bytes (the generated ones of large mode),
- * renders one pixel with the Whitted integrator only; an input over GFUZZ_SCENE_RENDER_INPUT is loaded in the first
- * model only. The memory budget of the process is GFUZZ_SCENE_BUDGET over what
- * is reserved at set-up (the texture system's cache): the
- * camera's full framebuffer is reserved and allocated once (never touched), so that an image size over the budget
- * must be refused by it, cleanly, as gtrace refuses it. */
+ * secondary rays per camera sample. An input over GFUZZ_SCENE_RENDER_INPUT bytes (the generated ones of large
+ * mode) is loaded in the first model only and renders one pixel with the Whitted integrator only; a scene whose
+ * lights take more than GFUZZ_SCENE_MAX_LIGHT_SAMPLES shadow samples per shading point is loaded and built but not
+ * rendered. The memory budget of the process is GFUZZ_SCENE_BUDGET over what is reserved at set-up (the texture
+ * system's cache): the camera's full framebuffer is reserved and allocated once (never touched), so that an image
+ * size over the budget must be refused by it, cleanly, as gtrace refuses it. */
 #ifndef GENERIC_TESTS_FUZZ_SCENE_ENTRY_H
 #define GENERIC_TESTS_FUZZ_SCENE_ENTRY_H
 
@@ -88,6 +88,9 @@ static int gfuzz_scene_setup(void)
         gfuzz_write("common.scene", gfuzz_scene_common, sizeof gfuzz_scene_common - 1, path, sizeof path))
         return -1;
     gmem_budget_set_limit(gmem_budget_used() + GFUZZ_SCENE_BUDGET); /* over what is kept (the texture cache) */
+    /* grid media: no OpenVDB reader process, wherever the build put one (a refusal at the grid's file) */
+    snprintf(path, sizeof path, "%s/no-vdb-reader", gfuzz_dir);
+    setenv("GTRACE_VDB_READER", path, 1);
     snprintf(gfuzz_scene_dir, sizeof gfuzz_scene_dir, "%s", gfuzz_dir);
     return 0;
 }
@@ -254,15 +257,15 @@ static int gfuzz_scene_once(const char *text, const GColorModel *model, int larg
         bad = gfuzz_violation("a scene wrong by construction (" GFUZZ_MUST_FAIL ") loaded");
     } else {
         s->accel_threads = 1;
-        int small = large_input || gfuzz_scene_light_samples(s) > GFUZZ_SCENE_MAX_LIGHT_SAMPLES;
+        int lit = gfuzz_scene_light_samples(s) <= GFUZZ_SCENE_MAX_LIGHT_SAMPLES;
         bad = gfuzz_scene_full_image(s);
         gerror_clear(&err);
         rc = bad ? G_OK : accel_build_for(s, (double)GFUZZ_SCENE_CROP_W * GFUZZ_SCENE_CROP_H, &err);
         if (rc != G_OK)
             bad = gfuzz_error_ok(rc, &err, "accel_build_for");
-        else if (!bad && small)
+        else if (!bad && lit && large_input)
             bad = gfuzz_scene_render(s, RENDER_WHITTED, 1, 1, mname);
-        else if (!bad)
+        else if (!bad && lit)
             bad = gfuzz_scene_render(s, RENDER_WHITTED, GFUZZ_SCENE_CROP_W, GFUZZ_SCENE_CROP_H, mname) ||
                   gfuzz_scene_render(s, RENDER_PATH, GFUZZ_SCENE_CROP_W, GFUZZ_SCENE_CROP_H, mname);
     }
