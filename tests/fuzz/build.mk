@@ -1,8 +1,9 @@
 # tests/fuzz/build.mk - libFuzzer targets built with clang, -fsanitize=fuzzer,address,undefined.
 # make fuzz [FUZZ_SECONDS=30] [FUZZ_TARGETS="reader bfc"] [FUZZ_SEED=N] builds the library's sources with clang
-# into build/fuzz/ (without OpenMP: one thread keeps a run reproducible) and runs each target
-# tests/fuzz/fuzz_<target>.c for FUZZ_SECONDS seconds. Inputs: tests/fuzz/corpus/<target>/ (small, committed),
-# the example files fuzz-seed copies into build/fuzz/seed/<target>/ at run time, and tests/regress/<target>/
+# (and gtrace's, for the scene target) into build/fuzz/ (without OpenMP: one thread keeps a run reproducible) and
+# runs each target tests/fuzz/fuzz_<target>.c for FUZZ_SECONDS seconds. Inputs: tests/fuzz/corpus/<target>/
+# (small, committed), the example files fuzz-seed copies into build/fuzz/seed/<target>/ at run time, and
+# tests/regress/<target>/
 # (every crasher found so far, replayed by tests/test_regress.c in the normal suite). New inputs go to
 # build/fuzz/corpus/<target>/, a crasher to build/fuzz/crashes/<target>/ and the run fails; fix it and keep the
 # input in tests/regress/<target>/.

@@ -228,7 +228,7 @@ static void include_chain(GenBuf *b, GenRng *r, size_t budget)
 }
 
 /* A mesh named by the scene: missing, an OBJ of the input that lies (indices out of range, NaN, huge numbers, a
- * face of one vertex: refused), or a large honest one. */
+ * face of one vertex: refused), or a large honest one; some vertices carry the optional weight (v x y z w). */
 static void lying_mesh(GenBuf *b, GenRng *r, size_t budget)
 {
     budget = cap(budget);
@@ -246,7 +246,10 @@ static void lying_mesh(GenBuf *b, GenRng *r, size_t budget)
     unsigned long nv = 0;
     while (b->n + 200 < budget) {
         if (nv < 3 || gen_below(r, 3) == 0) {
-            gb_printf(b, "v %.4g %.4g %.4g\n", small(r), small(r), small(r));
+            gb_printf(b, "v %.4g %.4g %.4g", small(r), small(r), small(r));
+            if (gen_below(r, 4) == 0) /* the optional weight */
+                gb_printf(b, " %.3g", gen_unit(r));
+            gb_printf(b, "\n");
             nv++;
         } else {
             gb_printf(b, "f %lu %lu %lu\n", 1 + gen_below(r, nv), 1 + gen_below(r, nv), 1 + gen_below(r, nv));
