@@ -3,10 +3,9 @@
 # (and gtrace's, for the scene target) into build/fuzz/ (without OpenMP: one thread keeps a run reproducible) and
 # runs each target tests/fuzz/fuzz_<target>.c for FUZZ_SECONDS seconds. Inputs: tests/fuzz/corpus/<target>/
 # (small, committed), the example files fuzz-seed copies into build/fuzz/seed/<target>/ at run time, and
-# tests/regress/<target>/
-# (every crasher found so far, replayed by tests/test_regress.c in the normal suite). New inputs go to
-# build/fuzz/corpus/<target>/, a crasher to build/fuzz/crashes/<target>/ and the run fails; fix it and keep the
-# input in tests/regress/<target>/.
+# tests/regress/<target>/ (every crasher found so far, replayed by tests/test_regress.c in the normal suite). New
+# inputs go to build/fuzz/corpus/<target>/, a crasher to build/fuzz/crashes/<target>/ and the run fails; fix it and
+# keep the input in tests/regress/<target>/.
 # Then the structure-aware generator (tests/fuzz/gen/, fuzz_gen) writes FUZZ_GEN_COUNT inputs per target of up to
 # FUZZ_GEN_BUDGET bytes (long operand lists, reference chains, lying image headers, ...: sizes libFuzzer never
 # reaches), seeded by FUZZ_SEED, and tests/fuzz/run_generated.sh runs them through the same entry points with
