@@ -230,6 +230,34 @@ static void test_formats_agree(void **state)
     unlink(gltf);
 }
 
+/* An OBJ whose vertices carry the optional weight w (v x y z w) and whose texture coordinates carry the optional w
+ * (vt u v w): the same mesh as without them (found by the scene fuzzer: the weight was written past the reader's
+ * array of three numbers). */
+static void test_obj_optional_weights(void **state)
+{
+    (void)state;
+    char text[8192];
+    obj_text(text, sizeof text);
+    char *plain = write_text("plain.obj", text);
+    size_t n = 0;
+    for (int i = 0; i < 4; i++)
+        n += (size_t)snprintf(text + n, sizeof text - n, "v %.17g %.17g %.17g 1.5\nvn %.17g %.17g %.17g\n"
+                              "vt %.17g %.17g 0.25\n", P[i][0], P[i][1], P[i][2], N[i][0], N[i][1], N[i][2],
+                              UV[i][0], UV[i][1]);
+    for (int t = 0; t < 2; t++)
+        n += (size_t)snprintf(text + n, sizeof text - n, "f %d/%d/%d %d/%d/%d %d/%d/%d\n", TRI[t][0] + 1,
+                              TRI[t][0] + 1, TRI[t][0] + 1, TRI[t][1] + 1, TRI[t][1] + 1, TRI[t][1] + 1,
+                              TRI[t][2] + 1, TRI[t][2] + 1, TRI[t][2] + 1);
+    char *weighted = write_text("weighted.obj", text);
+    Object *a = load_ok(plain), *b = load_ok(weighted);
+    assert_int_equal(b->mesh->ntris, 2);
+    assert_same_corners(a->mesh, b->mesh);
+    object_free(a);
+    object_free(b);
+    unlink(plain);
+    unlink(weighted);
+}
+
 /* path must fail to load with a message naming it. */
 static void assert_refused(const char *path, const char *expect)
 {
@@ -457,6 +485,7 @@ int main(void)
     if (generic_register_builtins(NULL) != G_OK)
         return 1;
     const struct CMUnitTest tests[] = {cmocka_unit_test(test_formats_agree), cmocka_unit_test(test_hostile_files),
+                                       cmocka_unit_test(test_obj_optional_weights),
                                        cmocka_unit_test(test_ply_exporter_headers),
                                        cmocka_unit_test(test_ply_hostile_layouts)};
     return cmocka_run_group_tests(tests, NULL, NULL);

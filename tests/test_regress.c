@@ -2,7 +2,8 @@
  * fuzzers found, fixed since) and the small seed corpus tests/fuzz/corpus/<target>/ through the same entry points
  * as the libFuzzer targets (tests/fuzz/fuzz_entry.h): every input must end in a clean result or a clean error,
  * never a crash; under `make test SANITIZE=1` AddressSanitizer also checks for leaks and memory errors. Also
- * the regressions found while writing the robustness tests that are not single inputs. */
+ * the regressions found while writing the robustness tests that are not single inputs. The scene target's inputs
+ * too: this test links gtrace (examples/gtrace/build.mk). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -17,6 +18,7 @@
 #include <sys/stat.h>
 
 #include "fuzz/fuzz_entry.h"
+#include "fuzz/fuzz_scene_entry.h"
 #include "generic/builtins.h"
 #include "generic/materials.h"
 #include "generic/plugin.h"
@@ -116,6 +118,12 @@ static void test_image(void **state)
     replay("image", gfuzz_image, 1);
 }
 
+static void test_scene(void **state)
+{
+    (void)state;
+    replay("scene", gfuzz_scene, 1);
+}
+
 /* The promises the entry points check do fail on broken values (so the replay above cannot pass vacuously). */
 static void test_checks_catch(void **state)
 {
@@ -210,6 +218,7 @@ int main(void)
         cmocka_unit_test(test_bfc),
         cmocka_unit_test(test_probe),
         cmocka_unit_test(test_image),
+        cmocka_unit_test(test_scene),
         cmocka_unit_test(test_checks_catch),
         cmocka_unit_test(test_white_in_every_model),
     };

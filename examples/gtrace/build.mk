@@ -23,6 +23,10 @@ $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tests/test_gtrace*.c)): CPPFLAGS += -
 GTRACE_TEST_BIN := $(patsubst tests/%.c,$(BUILD)/tests/%,$(wildcard tests/test_gtrace*.c))
 $(GTRACE_TEST_BIN): $(GTRACE_LIB)
 $(GTRACE_TEST_BIN): TESTLIBS += $(GTRACE_LIB) $(GTRACE_DEPLIBS)
+# the replay of the fuzz targets' inputs (tests/test_regress.c) runs the scene target's through gtrace too
+$(BUILD)/obj/tests/test_regress.o: CPPFLAGS += -Iexamples/gtrace
+$(BUILD)/tests/test_regress: $(GTRACE_LIB)
+$(BUILD)/tests/test_regress: TESTLIBS += $(GTRACE_LIB) $(GTRACE_DEPLIBS)
 
 ifeq ($(LTO),)
 # the tool: main.c (the top Makefile's rule for examples/TOOL/*.c) and the library

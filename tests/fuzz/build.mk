@@ -1,11 +1,11 @@
 # tests/fuzz/build.mk - libFuzzer targets built with clang, -fsanitize=fuzzer,address,undefined.
 # make fuzz [FUZZ_SECONDS=30] [FUZZ_TARGETS="reader bfc"] [FUZZ_SEED=N] builds the library's sources with clang
-# into build/fuzz/ (without OpenMP: one thread keeps a run reproducible) and runs each target
-# tests/fuzz/fuzz_<target>.c for FUZZ_SECONDS seconds. Inputs: tests/fuzz/corpus/<target>/ (small, committed),
-# the example files fuzz-seed copies into build/fuzz/seed/<target>/ at run time, and tests/regress/<target>/
-# (every crasher found so far, replayed by tests/test_regress.c in the normal suite). New inputs go to
-# build/fuzz/corpus/<target>/, a crasher to build/fuzz/crashes/<target>/ and the run fails; fix it and keep the
-# input in tests/regress/<target>/.
+# (and gtrace's, for the scene target) into build/fuzz/ (without OpenMP: one thread keeps a run reproducible) and
+# runs each target tests/fuzz/fuzz_<target>.c for FUZZ_SECONDS seconds. Inputs: tests/fuzz/corpus/<target>/
+# (small, committed), the example files fuzz-seed copies into build/fuzz/seed/<target>/ at run time, and
+# tests/regress/<target>/ (every crasher found so far, replayed by tests/test_regress.c in the normal suite). New
+# inputs go to build/fuzz/corpus/<target>/, a crasher to build/fuzz/crashes/<target>/ and the run fails; fix it and
+# keep the input in tests/regress/<target>/.
 # Then the structure-aware generator (tests/fuzz/gen/, fuzz_gen) writes FUZZ_GEN_COUNT inputs per target of up to
 # FUZZ_GEN_BUDGET bytes (long operand lists, reference chains, lying image headers, ...: sizes libFuzzer never
 # reaches), seeded by FUZZ_SEED, and tests/fuzz/run_generated.sh runs them through the same entry points with
@@ -40,12 +40,15 @@ FUZZ_SEED_reader := examples/materials/*.mat examples/textures/*.txt tests/good/
 FUZZ_SEED_bfc    := tests/bad/*.BFC tests/bad/*.bfc
 FUZZ_SEED_probe  := tests/bad/*.hdr tests/bad/*.pfm
 FUZZ_SEED_image  := examples/textures/*.png examples/scenes/*.png tests/bad/*.hdr tests/bad/*.pfm
+FUZZ_SEED_scene  := examples/scenes/*.scene tests/bad/*.scene
 # Per-target libFuzzer options. The image readers keep OpenImageIO's file cache between inputs, which grows, so
 # the per-input leak check would run (and cost more than the input) every time: leaks show at exit instead.
 FUZZ_OPTS_image  := -detect_leaks=0
 FUZZ_OPTS_probe  := -detect_leaks=0
 # The reader's inputs may grow to 64 KiB, so that structure (nesting, lists, chains) can appear.
 FUZZ_OPTS_reader := -max_len=65536
+# The scene target's dictionary: the keywords of gtrace's scene files and the fixtures' names.
+FUZZ_OPTS_scene  := -dict=tests/fuzz/scene.dict
 FUZZ_GEN_COUNT   ?= 24
 FUZZ_GEN_BUDGET  ?= 4194304
 FUZZ_GEN_TIMEOUT ?= 10
@@ -82,6 +85,16 @@ $(FUZZ_LIBA): $(FUZZ_C_OBJ) $(FUZZ_CXX_OBJ) $(FUZZ_GEN_OBJ)
 .SECONDARY: $(FUZZ_NAMES:%=$(FUZZ_BUILD)/obj/tests/fuzz/fuzz_%.o)
 # gtrace's media sources name their headers from examples/gtrace/, as gtrace's build does
 $(FUZZ_BUILD)/obj/tests/fuzz/fuzz_medium.o: FUZZ_CPPFLAGS += -Iexamples/gtrace
+# The scene target (fuzz_scene.c) links gtrace whole: its sources as libgtrace.a has them (examples/gtrace/*/*.c,
+# examples/gtrace/build.mk), compiled with FUZZ_CC into FUZZ_BUILD/libgtrace.a, and Embree.
+FUZZ_GTRACE_OBJ  := $(patsubst %.c,$(FUZZ_BUILD)/obj/%.o,$(wildcard examples/gtrace/*/*.c))
+FUZZ_GTRACE_LIBA := $(FUZZ_BUILD)/libgtrace.a
+$(FUZZ_GTRACE_OBJ) $(FUZZ_BUILD)/obj/tests/fuzz/fuzz_scene.o: FUZZ_CPPFLAGS += -Iexamples/gtrace
+$(FUZZ_GTRACE_LIBA): $(FUZZ_GTRACE_OBJ)
+	rm -f $@
+	ar rcs $@ $^
+$(FUZZ_BUILD)/fuzz_scene: $(FUZZ_GTRACE_LIBA)
+$(FUZZ_BUILD)/fuzz_scene: FUZZ_LIBS := $(FUZZ_GTRACE_LIBA) -lembree3 $(FUZZ_LIBS)
 $(FUZZ_BUILD)/fuzz_%: $(FUZZ_BUILD)/obj/tests/fuzz/fuzz_%.o $(FUZZ_LIBA)
 	$(FUZZ_CXX) $(FUZZ_SAN) -fsanitize=fuzzer -o $@ $< -Wl,--whole-archive $(FUZZ_LIBA) -Wl,--no-whole-archive \
 	    $(FUZZ_LIBS)
@@ -113,7 +126,9 @@ fuzz-gen-%:
 	@tests/fuzz/run_generated.sh $* $(FUZZ_SEED) $(FUZZ_GEN_COUNT) $(FUZZ_GEN_BUDGET) $(FUZZ_GEN_TIMEOUT) \
 	    $(FUZZ_GEN_MB) $(FUZZ_BUILD)
 
-# One target's run: its corpus directories (those that exist), its options; the executions at the end.
+# One target's run: its corpus directories (those that exist), its options; the executions at the end. The
+# crashers' prefix is absolute: the reader and scene targets run each input inside their private directory, where a
+# relative one would name nothing when the input crashes.
 # Inputs are named by their magic bytes, so OpenImageIO tries only the reader of that extension
 # (try_all_readers=0): otherwise every corrupt input is probed by every reader, LibRaw's costly constructor
 # included (the image target ran about 1.6x slower so).
@@ -125,7 +140,7 @@ fuzz-run-%:
 	echo "fuzz $*: $(FUZZ_SECONDS) s over $$dirs"; \
 	if ! OPENIMAGEIO_OPTIONS=try_all_readers=0 $(FUZZ_BUILD)/fuzz_$* -seed=$(FUZZ_SEED) \
 	        -max_total_time=$(FUZZ_SECONDS) -timeout=20 -rss_limit_mb=2560 $(FUZZ_OPTS_$*) -print_final_stats=1 \
-	        -artifact_prefix=$(FUZZ_BUILD)/crashes/$*/ $$dirs > $$log 2>&1; then \
+	        -artifact_prefix=$(abspath $(FUZZ_BUILD))/crashes/$*/ $$dirs > $$log 2>&1; then \
 	    tail -n 80 $$log; echo "fuzz $*: FAILED (input in $(FUZZ_BUILD)/crashes/$*/, log $$log)"; exit 1; \
 	fi; \
 	echo "fuzz $*: $$(grep -E '^stat::(number_of_executed_units|new_units_added|peak_rss_mb)' $$log | tr -s ' \n' ' ')"

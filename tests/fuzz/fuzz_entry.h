@@ -143,7 +143,9 @@ static void gfuzz_cleanup(void)
 {
     glibrary_destroy(gfuzz_keep);
     gfuzz_keep = NULL;
-    static const char *const names[] = {"tiny.BFC", "common.mat", "tex.png", "tex.hdr", "grey.pfm", NULL};
+    /* and the scene target's fixtures (fuzz_scene_entry.h) */
+    static const char *const names[] = {"tiny.BFC", "common.mat", "tex.png",      "tex.hdr", "grey.pfm",
+                                        "tri.obj",  "lamp.ies",   "common.scene", NULL};
     char path[4200];
     for (int i = 0; gfuzz_dir[0] && names[i]; i++) {
         snprintf(path, sizeof path, "%s/%s", gfuzz_dir, names[i]);

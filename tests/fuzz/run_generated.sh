@@ -3,7 +3,7 @@
 #
 #   tests/fuzz/run_generated.sh TARGET SEED COUNT BUDGET TIMEOUT MEMORY_MB [FUZZ_BUILD]
 #
-# fuzz_gen writes COUNT structured inputs of up to BUDGET bytes for TARGET (reader, bfc, image, probe) into
+# fuzz_gen writes COUNT structured inputs of up to BUDGET bytes for TARGET (a target of tests/fuzz/) into
 # FUZZ_BUILD/gen/TARGET/, and the target's libFuzzer binary runs them as files (each once, through the same
 # entry point as fuzzing, in large mode: GFUZZ_LARGE=1, see tests/fuzz/fuzz_entry.h), with TIMEOUT seconds and
 # MEMORY_MB megabytes (resident, and per allocation) per input. An input that crashes, times out, runs out of

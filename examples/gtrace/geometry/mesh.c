@@ -108,9 +108,15 @@ static int obj_error(Loader *L, int col, const char *msg)
     return gerror_set(L->err, G_ERR_PARSE, "%s:%d:%d: %s", L->path, L->line, col, msg);
 }
 
-static int read_numbers(Loader *L, char *s, const char *line, double *out, int min, int max)
+/* Most numbers an OBJ statement keeps: a vertex's x y z and its optional w. */
+#define OBJ_MAX_NUMBERS 4
+
+/* Reads the numbers of a statement into out (room for OBJ_MAX_NUMBERS): at least min of them, the first max kept
+ * (max at most OBJ_MAX_NUMBERS), the others read and dropped. Their count, or an error at the offending column. */
+static int read_numbers(Loader *L, char *s, const char *line, double out[OBJ_MAX_NUMBERS], int min, int max)
 {
     int n = 0;
+    max = max < OBJ_MAX_NUMBERS ? max : OBJ_MAX_NUMBERS;
     for (;;) {
         while (*s == ' ' || *s == '\t')
             s++;
@@ -218,7 +224,7 @@ static int parse_line(Loader *L, char *line)
     char *s = line;
     while (*s == ' ' || *s == '\t')
         s++;
-    double x[3];
+    double x[OBJ_MAX_NUMBERS];
     if (s[0] == 'v' && (s[1] == ' ' || s[1] == '\t')) {
         int n = read_numbers(L, s + 2, line, x, 3, 4);
         if (n < 0)

@@ -14,7 +14,9 @@
  *                mesh reader processes that crash or spin
  *                (gtrace's meshes: tests/fuzz/run_mesh_generated.sh)
  *   gen_ies.c    IES LM-63 files: lying counts, truncation, NaN and words, bad angle tables, long headers
- *   gen_medium.c gtrace's medium and phase entries: bounds crossed, references, long chains */
+ *   gen_medium.c gtrace's medium and phase entries: bounds crossed, references, long chains
+ *   gen_scene.c  gtrace's scene files: many objects and lights, long transform chains, wide and deep groups,
+ *                include chains and cycles and lying meshes (files of the input), huge cameras, extreme numbers */
 #ifndef GENERIC_TESTS_FUZZ_GEN_H
 #define GENERIC_TESTS_FUZZ_GEN_H
 
@@ -88,5 +90,7 @@ extern const GenFamily gen_ies_families[];
 extern const int gen_ies_count;
 extern const GenFamily gen_medium_families[];
 extern const int gen_medium_count;
+extern const GenFamily gen_scene_families[];
+extern const int gen_scene_count;
 
 #endif

@@ -2,8 +2,8 @@
  *
  *   fuzz_gen KIND SEED COUNT DIR [BUDGET]
  *
- * KIND is reader, bfc, image, probe, ies or medium (the targets of tests/fuzz/), or mesh (gtrace's meshes, run by
- * tests/fuzz/run_mesh_generated.sh); input i is DIR/NNN-FAMILY.EXT. The first
+ * KIND is reader, bfc, image, probe, ies, medium or scene (the targets of tests/fuzz/), or mesh (gtrace's meshes, run
+ * by tests/fuzz/run_mesh_generated.sh); input i is DIR/NNN-FAMILY.EXT. The first
  * inputs take each family once at the full BUDGET (bytes, default 4 MiB), the rest a random family at a
  * log-uniform size up to it. Input i depends only on (KIND, SEED, i, BUDGET), so one failing input is
  * reproduced from its name alone. Prints one line per input: path, family, size. */
@@ -26,11 +26,12 @@ static const struct {
     {"mesh", gen_mesh_families, &gen_mesh_count},
     {"ies", gen_ies_families, &gen_ies_count},
     {"medium", gen_medium_families, &gen_medium_count},
+    {"scene", gen_scene_families, &gen_scene_count},
 };
 
 static int usage(void)
 {
-    fprintf(stderr, "usage: fuzz_gen reader|bfc|image|probe|mesh|ies|medium SEED COUNT DIR [BUDGET_BYTES]\n");
+    fprintf(stderr, "usage: fuzz_gen reader|bfc|image|probe|mesh|ies|medium|scene SEED COUNT DIR [BUDGET_BYTES]\n");
     return 2;
 }
 
