@@ -63,8 +63,8 @@ GENERIC_API GENERIC_NODISCARD int gtexsys_open(GTextureSystem *ts, const char *p
 
 /** A filtered lookup of 3 channels (grey files are replicated) at (s, t) (t = 0 at the top row) over the
  * footprint spanned by the two axes (dsdx, dtdx) and (dsdy, dtdy) (full widths in s, t units; all 0 = the
- * finest level), anisotropic with trilinear MIP-mapping, and the wrap modes; G_ERR_IO when OpenImageIO fails
- * (rgb is then black). An isotropic width w is (w, 0, 0, w). Thread safe. */
+ * finest level), anisotropic with trilinear MIP-mapping of linear values (gtexsys_open), and the wrap modes;
+ * G_ERR_IO when OpenImageIO fails (rgb is then black). An isotropic width w is (w, 0, 0, w). Thread safe. */
 GENERIC_API GENERIC_NODISCARD int gtexsys_lookup(GTextureSystem *ts, GTexFile *file, GTexWrap swrap, GTexWrap twrap,
                                                  double s, double t, const double deriv[4], double blur, float rgb[3]);
 
