@@ -196,6 +196,16 @@ static void test_constant_texels_and_colour_spaces(void **state)
         assert_float_equal(lookup(f, srgb, 0.3, 0.7, 0.5), gimage_srgb_decode(e8), 1e-6); /* the coarse levels */
         assert_float_equal(lookup(f, lin, 0.3, 0.7, 0.5), e8, 1e-6);
     }
+    /* the cache holds the decoded values under a spelling of the file's path with "/./": a path spelt so names
+     * the file's values as they are all the same */
+    char dotted[160];
+    snprintf(dotted, sizeof dotted, "%s/./grey8.png", f->dir);
+    GMaterial *dot_lin = image(f, dotted, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
+    GMaterial *dot_srgb = image(f, dotted, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_SRGB);
+    assert_float_equal(lookup(f, dot_lin, 0.5, 0.5, 0.01), e8, 1e-6);
+    assert_float_equal(lookup(f, dot_srgb, 0.5, 0.5, 0.01), gimage_srgb_decode(e8), 1e-6);
+    gmaterial_unref(dot_lin);
+    gmaterial_unref(dot_srgb);
     gmaterial_unref(srgb);
     gmaterial_unref(lin);
     gmaterial_unref(aut);
