@@ -1,8 +1,10 @@
 /* test_texture_srgb.c - sRGB-encoded image textures are filtered in linear light: a minified one-texel black and
  * white checker averages to 0.5 (not to the decoded 0.5 of the encoded values, 0.214), a lookup between a black and
- * a white texel under magnification gives 0.5, a constant texel gives its decoded value to float precision, the
- * image node's colorspace option picks decoded or raw values of the same file in one texture system, and 16-bit
- * PNG and float files follow the same rules. The PNG files are written here with libpng, byte for byte. */
+ * a white texel under magnification gives 0.5, a constant 8-bit texel gives its decoded value rounded to half (the
+ * type the texture cache holds decoded 8-bit files in: within a relative 2^-11 of the exact decode) and a 16-bit
+ * one its decoded value to float precision, for every code of either depth, the image node's colorspace option
+ * picks decoded or raw values of the same file in one texture system, and float files follow the same rules. The
+ * PNG files are written here with libpng, byte for byte. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -22,7 +24,7 @@
 
 typedef struct Fix {
     char dir[64];
-    char checker[128], edge[128], grey8[128], grey16[128], half_exr[128];
+    char checker[128], edge[128], grey8[128], grey16[128], half_exr[128], codes8[128], codes16[128];
     GColorModel *rgb;
     GScratch *scratch;
     GTextureSystem *ts;
@@ -75,6 +77,21 @@ static unsigned pixel_checker(int x, int y) { return ((x + y) & 1) ? 255u : 0u; 
 static unsigned right_white(int x, int y) { (void)y; return x > 0 ? 255u : 0u; }
 static unsigned grey8(int x, int y) { (void)x, (void)y; return GREY8; }
 static unsigned grey16(int x, int y) { (void)x, (void)y; return GREY16; }
+static unsigned code8(int x, int y) { return (unsigned)(y * 16 + x); }    /* every 8-bit code on 16 x 16 texels */
+static unsigned code16(int x, int y) { return (unsigned)(y * 256 + x); } /* every 16-bit code on 256 x 256 */
+
+/* x (>= 0) rounded to the nearest half-precision value, ties to even: 11 significant bits for a normal half
+ * (x >= 2^-14, within a relative 2^-11 of x), steps of 2^-24 below. */
+static double half_of(double x)
+{
+    int e;
+    frexp(x, &e); /* x = m 2^e with 0.5 <= m < 1: the halfs of [2^(e-1), 2^e) lie 2^(e-11) apart */
+    const double step = ldexp(1.0, (e < -13 ? -13 : e) - 11);
+    return nearbyint(x / step) * step;
+}
+
+/* The decoded value of an 8-bit code as the texture cache holds it. */
+static double decoded8(double encoded) { return half_of(gimage_srgb_decode(encoded)); }
 
 static int setup(void **state)
 {
@@ -88,8 +105,11 @@ static int setup(void **state)
     snprintf(f->grey8, sizeof f->grey8, "%s/grey8.png", f->dir);
     snprintf(f->grey16, sizeof f->grey16, "%s/grey16.png", f->dir);
     snprintf(f->half_exr, sizeof f->half_exr, "%s/half.exr", f->dir);
+    snprintf(f->codes8, sizeof f->codes8, "%s/codes8.png", f->dir);
+    snprintf(f->codes16, sizeof f->codes16, "%s/codes16.png", f->dir);
     if (write_png(f->checker, CHECKER, CHECKER, 8, pixel_checker) || write_png(f->edge, 2, 2, 8, right_white) ||
-        write_png(f->grey8, 4, 4, 8, grey8) || write_png(f->grey16, 4, 4, 16, grey16))
+        write_png(f->grey8, 4, 4, 8, grey8) || write_png(f->grey16, 4, 4, 16, grey16) ||
+        write_png(f->codes8, 16, 16, 8, code8) || write_png(f->codes16, 256, 256, 16, code16))
         return -1;
     GImage img;
     if (gimage_create(&img, 4, 4, 3, &err) != G_OK)
@@ -115,8 +135,8 @@ static int setup(void **state)
 static int teardown(void **state)
 {
     Fix *f = *state;
-    const char *files[] = {f->checker, f->edge, f->grey8, f->grey16, f->half_exr};
-    for (int i = 0; i < 5; i++)
+    const char *files[] = {f->checker, f->edge, f->grey8, f->grey16, f->half_exr, f->codes8, f->codes16};
+    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++)
         unlink(files[i]);
     rmdir(f->dir);
     gmaterial_unref(f->white);
@@ -190,10 +210,10 @@ static void test_constant_texels_and_colour_spaces(void **state)
     GMaterial *lin = image(f, f->grey8, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
     GMaterial *aut = image(f, f->grey8, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_AUTO);
     for (int round = 0; round < 2; round++) {
-        assert_float_equal(lookup(f, srgb, 0.5, 0.5, 0.01), gimage_srgb_decode(e8), 1e-6);
+        assert_float_equal(lookup(f, srgb, 0.5, 0.5, 0.01), decoded8(e8), 1e-6);
         assert_float_equal(lookup(f, lin, 0.5, 0.5, 0.01), e8, 1e-6);
-        assert_float_equal(lookup(f, aut, 0.5, 0.5, 0.01), gimage_srgb_decode(e8), 1e-6);
-        assert_float_equal(lookup(f, srgb, 0.3, 0.7, 0.5), gimage_srgb_decode(e8), 1e-6); /* the coarse levels */
+        assert_float_equal(lookup(f, aut, 0.5, 0.5, 0.01), decoded8(e8), 1e-6);
+        assert_float_equal(lookup(f, srgb, 0.3, 0.7, 0.5), decoded8(e8), 1e-6); /* the coarse levels */
         assert_float_equal(lookup(f, lin, 0.3, 0.7, 0.5), e8, 1e-6);
     }
     /* the cache holds the decoded values under a spelling of the file's path with "/./": a path spelt so names
@@ -203,7 +223,7 @@ static void test_constant_texels_and_colour_spaces(void **state)
     GMaterial *dot_lin = image(f, dotted, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
     GMaterial *dot_srgb = image(f, dotted, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_SRGB);
     assert_float_equal(lookup(f, dot_lin, 0.5, 0.5, 0.01), e8, 1e-6);
-    assert_float_equal(lookup(f, dot_srgb, 0.5, 0.5, 0.01), gimage_srgb_decode(e8), 1e-6);
+    assert_float_equal(lookup(f, dot_srgb, 0.5, 0.5, 0.01), decoded8(e8), 1e-6);
     gmaterial_unref(dot_lin);
     gmaterial_unref(dot_srgb);
     gmaterial_unref(srgb);
@@ -235,7 +255,7 @@ static void test_texsys_reports_decoding(void **state)
         int srgb;
         double want;
     } cases[] = {
-        {f->grey8, GTEX_COLORSPACE_AUTO, 1, gimage_srgb_decode(GREY8 / 255.0)},
+        {f->grey8, GTEX_COLORSPACE_AUTO, 1, decoded8(GREY8 / 255.0)},
         {f->grey8, GTEX_COLORSPACE_LINEAR, 0, GREY8 / 255.0},
         {f->grey16, GTEX_COLORSPACE_AUTO, 1, gimage_srgb_decode(GREY16 / 65535.0)},
         {f->half_exr, GTEX_COLORSPACE_AUTO, 0, 0.5},
@@ -260,6 +280,49 @@ static void test_texsys_reports_decoding(void **state)
     GError err;
     assert_int_equal(gtexsys_open(f->ts, f->grey8, (GTexColorSpace)7, &file, &channels, &srgb, &err), G_ERR_INVALID);
 }
+
+/* Every code of an 8-bit file gives the nearest half of its exact decode (within a relative 2^-11 of it), every
+ * code of a 16-bit file its decode to float precision (a relative 1e-6), each above the code below it: looked up
+ * at each texel's centre on the finest level. */
+static void test_every_code_decodes(void **state)
+{
+    Fix *f = *state;
+    const struct {
+        const char *path;
+        int side, depth;
+    } files[] = {{f->codes8, 16, 8}, {f->codes16, 256, 16}};
+    static const double finest[4] = {0, 0, 0, 0};
+    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
+        GTexFile *file;
+        int channels = 0, srgb = 0;
+        GError err;
+        assert_int_equal(gtexsys_open(f->ts, files[i].path, GTEX_COLORSPACE_AUTO, &file, &channels, &srgb, &err),
+                         G_OK);
+        assert_int_equal(srgb, 1);
+        const int side = files[i].side, codes = side * side;
+        const double top = files[i].depth == 8 ? 255.0 : 65535.0;
+        double below = -1.0, worst = 0.0;
+        for (int code = 0; code < codes; code++) {
+            float rgb[3];
+            const double s = (code % side + 0.5) / side, t = (code / side + 0.5) / side;
+            assert_int_equal(gtexsys_lookup(f->ts, file, GTEX_WRAP_CLAMP, GTEX_WRAP_CLAMP, s, t, finest, 0.0, rgb),
+                             G_OK);
+            const double exact = gimage_srgb_decode(code / top);
+            const double want = files[i].depth == 8 ? half_of(exact) : exact;
+            for (int c = 0; c < 3; c++)
+                if (!(fabs(rgb[c] - want) <= 1e-6 * want))
+                    fail_msg("%d-bit code %d: %.9g, not %.9g", files[i].depth, code, rgb[c], want);
+            if (code > 0)
+                worst = fmax(worst, fabs(rgb[0] - exact) / exact);
+            if (!(rgb[0] > below))
+                fail_msg("%d-bit code %d: %.9g, not above the code below, %.9g", files[i].depth, code, rgb[0], below);
+            below = rgb[0];
+        }
+        print_message("%d-bit codes: the largest relative error against the exact decode %.3g\n", files[i].depth,
+                      worst);
+        assert_true(worst <= (files[i].depth == 8 ? ldexp(1.0, -11) : 1e-6));
+    }
+}
 #endif
 
 int main(void)
@@ -272,6 +335,7 @@ int main(void)
         cmocka_unit_test(test_constant_texels_and_colour_spaces),
 #ifndef TEST_OLD_TEXSYS_API
         cmocka_unit_test(test_texsys_reports_decoding),
+        cmocka_unit_test(test_every_code_decodes),
 #endif
     };
     return cmocka_run_group_tests(tests, setup, teardown);

@@ -66,6 +66,8 @@ GTextureSystem *make(GError *err)
         ts->attribute("automip", 1);     // MIP levels for files that have none (PNG, JPEG, ...)
         ts->attribute("gray_to_rgb", 1); // grey files answer 3-channel lookups
         ts->attribute("max_memory_MB", cache_mb);
+        // "forcefloat" stays off: the cache keeps 8-bit, 16-bit and half data in their own type, the halfs of
+        // decoded 8-bit sRGB files (texture_srgb.h) among them
     } catch (...) {
         TextureSystem::destroy(ts, true);
         ImageCache::destroy(cache, true);

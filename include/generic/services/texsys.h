@@ -55,7 +55,8 @@ typedef struct GTexFile GTexFile;
  * a decoder process decodes it whole before the texture system opens it in this process. space says how its
  * values relate to linear ones: with GTEX_COLORSPACE_SRGB, or GTEX_COLORSPACE_AUTO and integer data not marked
  * linear (8- and 16-bit PNG, JPEG), the system holds the file's colour channels decoded from the sRGB curve
- * (gimage_srgb_decode) as floats, so that MIP levels and filtered lookups average linear light; *srgb is then 1.
+ * (gimage_srgb_decode), so that MIP levels and filtered lookups average linear light: 8-bit data as halfs (the
+ * nearest half of each code's decode, within a relative 4.6e-4 of it), other data as floats; *srgb is then 1.
  * Otherwise the values are taken as linear and *srgb is 0. The same file opened both ways is held twice. Every
  * lookup of the file gives linear values. */
 GENERIC_API GENERIC_NODISCARD int gtexsys_open(GTextureSystem *ts, const char *path, GTexColorSpace space,
