@@ -110,10 +110,12 @@ static void test_foreign_formats_refused(void **state)
     assert_int_equal(gtexsys_create(&ts, &err), G_OK);
     GTexFile *file;
     int channels, srgb;
-    assert_int_equal(gtexsys_open(ts, in_dir("iff_as.png"), &file, &channels, &srgb, &err), G_ERR_IO);
+    assert_int_equal(gtexsys_open(ts, in_dir("iff_as.png"), GTEX_COLORSPACE_AUTO, &file, &channels, &srgb, &err),
+                     G_ERR_IO);
     assert_non_null(strstr(err.message, "its content is IFF"));
     setenv("GENERIC_DECODE", "inprocess", 1); /* the texture system checks the content itself too */
-    assert_int_equal(gtexsys_open(ts, in_dir("dpx_as.hdr"), &file, &channels, &srgb, &err), G_ERR_IO);
+    assert_int_equal(gtexsys_open(ts, in_dir("dpx_as.hdr"), GTEX_COLORSPACE_AUTO, &file, &channels, &srgb, &err),
+                     G_ERR_IO);
     assert_non_null(strstr(err.message, "its content is DPX"));
     setenv("GENERIC_DECODE", "isolated", 1);
     gtexsys_unref(ts);
@@ -248,7 +250,7 @@ static void test_huge_textures_refused(void **state)
         snprintf(name, sizeof name, "huge%d.png", i);
         tu_in_dir(dir, name, path, sizeof path);
         write_black_png(path, 12000, 12000);
-        assert_int_equal(gtexsys_open(ts, path, &file, &channels, &srgb, &err), G_ERR_IO);
+        assert_int_equal(gtexsys_open(ts, path, GTEX_COLORSPACE_AUTO, &file, &channels, &srgb, &err), G_ERR_IO);
         if (!strstr(err.message, "is 12000x12000 pixels, more than a texture may have"))
             fail_msg("%s", err.message);
     }
@@ -256,10 +258,10 @@ static void test_huge_textures_refused(void **state)
     assert_int_equal(gmem_budget_used(), 512u << 20); /* the texture system's cache only: nothing decoded */
     const char *edge = in_dir("edge.png"); /* one row over the limit */
     write_black_png(edge, 8192, 8193);
-    assert_int_equal(gtexsys_open(ts, edge, &file, &channels, &srgb, &err), G_ERR_IO);
+    assert_int_equal(gtexsys_open(ts, edge, GTEX_COLORSPACE_AUTO, &file, &channels, &srgb, &err), G_ERR_IO);
     assert_non_null(strstr(err.message, "is 8192x8193 pixels"));
     write_black_png(edge, 64, 32);
-    if (gtexsys_open(ts, edge, &file, &channels, &srgb, &err) != G_OK)
+    if (gtexsys_open(ts, edge, GTEX_COLORSPACE_AUTO, &file, &channels, &srgb, &err) != G_OK)
         fail_msg("%s", err.message);
     gtexsys_unref(ts);
     assert_int_equal(gmem_budget_used(), 0);

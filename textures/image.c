@@ -1,6 +1,7 @@
 /* image.c - the image node: the child's light-carrying colour results times the colour of an image at
  * (u, v), looked up through OpenImageIO's TextureSystem (lib/image/texture_oiio.cpp) with trilinear MIP-mapping
- * over the surface point's footprint, or for a spectral OpenEXR its reflective channels' spectra; the file, its
+ * over the surface point's footprint, in linear light (sRGB files are decoded before filtering), or for a spectral
+ * OpenEXR its reflective channels' spectra; the file, its
  * checks and its texels are the kit's (gtexparam_image_open, kit/texparam.h), shared with textured colour
  * parameters:
  *
@@ -141,14 +142,16 @@ static const GParamInfo image_params[] = {
     {"child", GPARAM_NAMED, "material", NULL, NULL, "the material whose reflected and emitted light is multiplied"},
     {"file", GPARAM_NAMED, "path", NULL,
      "an image file: OpenEXR, HDR, PFM, PNM, PNG, JPEG or TIFF, at most 8192 x 8192 pixels",
-     "the image, looked up at (u, v) with trilinear MIP-mapping over the footprint; a spectral OpenEXR "
+     "the image, looked up at (u, v) with trilinear MIP-mapping over the footprint, filtered in linear light (sRGB "
+     "values decoded first); a spectral OpenEXR "
      "(reflective channels T.<nm>nm) bilinearly, its spectra converted into the model"},
     {"wrap", GPARAM_NAMED, "choice", "periodic", IMAGE_WRAPS, "outside [0, 1] in u and v: repeat, hold the edge, "
      "black, repeat mirrored"},
     {"swrap", GPARAM_NAMED, "choice", "periodic", IMAGE_WRAPS, "the same in u only"},
     {"twrap", GPARAM_NAMED, "choice", "periodic", IMAGE_WRAPS, "the same in v only"},
     {"colorspace", GPARAM_NAMED, "choice", "auto", "auto, srgb, linear",
-     "how stored values relate to linear ones; auto: sRGB for 8- and 16-bit files that say sRGB, else linear"},
+     "how stored values relate to linear ones; auto: sRGB for 8- and 16-bit files that say sRGB, else linear; "
+     "sRGB values are decoded before MIP-mapping and filtering"},
     {"blur", GPARAM_NAMED, "number", "0", "[0, 1]", "an extra filter width, in (u, v) units"},
     {NULL},
 };

@@ -411,11 +411,14 @@ static int texture_refusal(const char *path, int rc, GError *err)
     return gerror_set(err, rc, "image '%s' cannot be read: %s", path, reason);
 }
 
-int gtexsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *channels, int *srgb, GError *err)
+int gtexsys_open(GTextureSystem *ts, const char *path, GTexColorSpace space, GTexFile **file, int *channels, int *srgb,
+                 GError *err)
 {
     *file = NULL;
     if (!ts || !path || !path[0])
         return gerror_set(err, G_ERR_INVALID, "image: no file name given");
+    if ((unsigned)space > GTEX_COLORSPACE_LINEAR)
+        return gerror_set(err, G_ERR_INVALID, "image '%s': unknown colour space %d", path, (int)space);
     if (access(path, F_OK) != 0 && errno == ENOENT)
         return gerror_set(err, G_ERR_IO, "image '%s': no such file", path);
     /* the header first: a texture of too many pixels is refused before any decode */
@@ -433,7 +436,7 @@ int gtexsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *cha
     if (isolated && (rc = gdecode_run(path, GDECODE_CHECK, 0, NULL, NULL, NULL, NULL, err)) != G_OK)
         return texture_refusal(path, rc, err);
     const GOiioOps *o = goiio_ops(err);
-    return o ? o->texsys_open(ts, path, file, channels, srgb, err) : G_ERR_IO;
+    return o ? o->texsys_open(ts, path, space, file, channels, srgb, err) : G_ERR_IO;
 }
 
 int gtexsys_lookup(GTextureSystem *ts, GTexFile *file, GTexWrap swrap, GTexWrap twrap, double s, double t,

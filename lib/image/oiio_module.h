@@ -19,7 +19,7 @@ extern "C" {
 #endif
 
 /** Raised whenever either table changes; a module of another version is refused. */
-#define GOIIO_MODULE_ABI 6
+#define GOIIO_MODULE_ABI 7
 /** The module's file name and the one symbol it exports (a GOiioEntry). */
 #define GOIIO_MODULE_FILE "libgeneric_oiio.so"
 #define GOIIO_MODULE_ENTRY "generic_oiio_module"
@@ -53,7 +53,8 @@ typedef struct GOiioOps {
     GTextureSystem *(*texsys_ref)(GTextureSystem *ts);
     void (*texsys_unref)(GTextureSystem *ts);
     GTextureSystem *(*texsys_default)(GError *err);
-    int (*texsys_open)(GTextureSystem *ts, const char *path, GTexFile **file, int *channels, int *srgb, GError *err);
+    int (*texsys_open)(GTextureSystem *ts, const char *path, GTexColorSpace space, GTexFile **file, int *channels,
+                       int *srgb, GError *err);
     int (*texsys_lookup)(GTextureSystem *ts, GTexFile *file, GTexWrap swrap, GTexWrap twrap, double s, double t,
                          const double deriv[4], double blur, float rgb[3]);
     /** OpenColorIO (lib/image/ocio_display.cpp): applies the view of a display of the config file (NULL or "": the

@@ -7,6 +7,7 @@
 #define GOIIO_MODULE_SOURCE
 #include "oiio_module.h"
 #include "image_format.h"
+#include "texture_srgb.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imagecache.h>
@@ -65,6 +66,8 @@ GTextureSystem *make(GError *err)
         ts->attribute("automip", 1);     // MIP levels for files that have none (PNG, JPEG, ...)
         ts->attribute("gray_to_rgb", 1); // grey files answer 3-channel lookups
         ts->attribute("max_memory_MB", cache_mb);
+        // "forcefloat" stays off: the cache keeps 8-bit, 16-bit and half data in their own type, the halfs of
+        // decoded 8-bit sRGB files (texture_srgb.h) among them
     } catch (...) {
         TextureSystem::destroy(ts, true);
         ImageCache::destroy(cache, true);
@@ -95,7 +98,8 @@ TextureOpt::Wrap wrap_of(GTexWrap w)
     }
 }
 
-// The readers a texture file is opened with: the one of its content's format (image_format.h), never another.
+// The readers a texture file is opened with: the one of its content's format (image_format.h), never another; and
+// the same reader behind GSrgbDecodeInput, for a file whose values are sRGB-encoded.
 ImageInput *make_exr() { return ImageInput::create("openexr").release(); }
 ImageInput *make_hdr() { return ImageInput::create("hdr").release(); }
 ImageInput *make_pnm() { return ImageInput::create("pnm").release(); }
@@ -103,17 +107,31 @@ ImageInput *make_png() { return ImageInput::create("png").release(); }
 ImageInput *make_jpeg() { return ImageInput::create("jpeg").release(); }
 ImageInput *make_tiff() { return ImageInput::create("tiff").release(); }
 
-ImageInput::Creator creator_of(const char *oiio)
+template <ImageInput::Creator Real> ImageInput *make_decoded()
+{
+    try {
+        return new GSrgbDecodeInput(Real);
+    } catch (...) { // std::bad_alloc: the cache reports the file as not opened
+        return nullptr;
+    }
+}
+
+struct Readers {
+    ImageInput::Creator plain, decoded;
+};
+
+Readers readers_of(const char *oiio)
 {
     static const struct {
         const char *name;
-        ImageInput::Creator make;
-    } table[] = {{"openexr", make_exr}, {"hdr", make_hdr}, {"pnm", make_pnm},
-                 {"png", make_png},     {"jpeg", make_jpeg}, {"tiff", make_tiff}};
+        Readers make;
+    } table[] = {{"openexr", {make_exr, make_decoded<make_exr>}}, {"hdr", {make_hdr, make_decoded<make_hdr>}},
+                 {"pnm", {make_pnm, make_decoded<make_pnm>}},     {"png", {make_png, make_decoded<make_png>}},
+                 {"jpeg", {make_jpeg, make_decoded<make_jpeg>}},  {"tiff", {make_tiff, make_decoded<make_tiff>}}};
     for (const auto &t : table)
         if (oiio && !strcmp(oiio, t.name))
             return t.make;
-    return nullptr;
+    return {nullptr, nullptr};
 }
 
 bool says_linear(std::string cs)
@@ -121,6 +139,33 @@ bool says_linear(std::string cs)
     for (auto &c : cs)
         c = (char)std::tolower((unsigned char)c);
     return cs.find("linear") != std::string::npos || cs == "scene_linear" || cs == "raw";
+}
+
+// The cache's names of a file: each a spelling of the file's own path, so that the cache opens the file itself by
+// it, but those of its sRGB-decoded values (decoded_name) hold "/./" and those of its values as they are
+// (plain_name) never do, so that no path, as given, names one kind's entry for the other.
+std::string plain_name(const char *path)
+{
+    std::string name(path);
+    for (size_t at = name.find("/./"); at != std::string::npos; at = name.find("/./"))
+        name.erase(at, 2); // "a/./b" reads "a/b"
+    return name;
+}
+
+std::string decoded_name(const std::string &plain)
+{
+    size_t slash = plain.rfind('/');
+    return slash == std::string::npos ? "././" + plain : plain.substr(0, slash) + "/." + plain.substr(slash);
+}
+
+// OpenImageIO's message with every mention of the cache's name given as the path.
+std::string named_as_path(std::string why, const std::string &name, const char *path)
+{
+    const size_t len = strlen(path);
+    if (name != path)
+        for (size_t at = why.find(name); at != std::string::npos; at = why.find(name, at + len))
+            why.replace(at, name.size(), path);
+    return why;
 }
 
 // Every function below is an entry from C: no exception may leave it.
@@ -177,7 +222,8 @@ GTextureSystem *texsys_default(GError *err)
     }
 }
 
-int texsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *channels, int *srgb, GError *err)
+int texsys_open(GTextureSystem *ts, const char *path, GTexColorSpace space, GTexFile **file, int *channels,
+                int *srgb, GError *err)
 {
     *file = nullptr;
     if (!ts || !path || !path[0])
@@ -201,25 +247,41 @@ int texsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *chan
         GImageFormat format;
         if (goiio_image_format(path, &format, err) != G_OK)
             return err ? err->code : G_ERR_IO;
-        ImageInput::Creator make = creator_of(format.oiio);
-        if (!make)
+        Readers make = readers_of(format.oiio);
+        if (!make.plain)
             return gerror_set(err, G_ERR_IO,
                               "image '%s' cannot be read: its content is not one of the formats read (%s)", path,
                               GIMAGE_READ_FORMATS);
-        ustring name(path);
-        ts->cache->add_file(name, make); // no effect when the file is in the cache already, opened the same way
+        std::string plain = plain_name(path);
+        ustring name(plain);
+        ts->cache->add_file(name, make.plain); // no effect when the file is in the cache already, opened the same way
         TextureSystem::Perthread *pt = ts->ts->get_perthread_info();
         TextureSystem::TextureHandle *h = ts->ts->get_texture_handle(name, pt);
         ImageSpec spec;
         if (!h || !ts->ts->good(h) || !ts->ts->get_imagespec(h, pt, 0, spec)) {
-            std::string why = ts->ts->geterror();
+            std::string why = named_as_path(ts->ts->geterror(), plain, path);
             return gerror_set(err, G_ERR_IO, "image '%s' cannot be read: %s", path,
                               why.empty() ? "not an image OpenImageIO can decode" : why.c_str());
         }
         *channels = spec.nchannels;
         bool is_float = spec.format.basetype == TypeDesc::FLOAT || spec.format.basetype == TypeDesc::HALF ||
                         spec.format.basetype == TypeDesc::DOUBLE;
-        *srgb = !is_float && !says_linear(spec.get_string_attribute("oiio:ColorSpace"));
+        bool decode = space == GTEX_COLORSPACE_SRGB ||
+                      (space == GTEX_COLORSPACE_AUTO && !is_float &&
+                       !says_linear(spec.get_string_attribute("oiio:ColorSpace")));
+        if (decode) { /* the decoded file: its own cache entry, which filters linear values */
+            std::string key = decoded_name(plain);
+            ustring dname(key);
+            ts->cache->add_file(dname, make.decoded);
+            ts->cache->close(name); // the encoded entry gave its header only: its file need not stay open
+            h = ts->ts->get_texture_handle(dname, pt);
+            if (!h || !ts->ts->good(h) || !ts->ts->get_imagespec(h, pt, 0, spec)) {
+                std::string why = named_as_path(ts->ts->geterror(), key, path);
+                return gerror_set(err, G_ERR_IO, "image '%s' cannot be read: %s", path,
+                                  why.empty() ? "not an image OpenImageIO can decode" : why.c_str());
+            }
+        }
+        *srgb = decode;
         *file = reinterpret_cast<GTexFile *>(h);
         return G_OK;
     } catch (const std::exception &e) {

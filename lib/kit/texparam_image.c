@@ -13,7 +13,7 @@
 struct GTexImage {
     GTextureSystem *ts;
     GTexFile *file;
-    int srgb;
+    int srgb; /* the texture system decodes the file's sRGB values (gtexsys_open) */
     GTexWrap swrap, twrap;
     double blur;
     const GColorModel *model;
@@ -61,10 +61,17 @@ static int is_linear(const GColorModel *model, const GColor basis[3], int *linea
     return rc;
 }
 
+/* A value of the file as read whole (channel_max): decoded when the texture system decodes the file. */
 static double linear_value(const GTexImage *im, double stored)
 {
     double x = im->srgb ? gimage_srgb_decode(stored) : stored;
     return isfinite(x) && x > 0.0 ? x : 0.0;
+}
+
+/* A texture lookup's value, linear already: NaN and values below 0 as 0. */
+static double lookup_value(float v)
+{
+    return isfinite(v) && v > 0.0f ? (double)v : 0.0;
 }
 
 /* The largest value of each channel, from the whole image read once (within the memory budget). */
@@ -130,10 +137,9 @@ static int image_open(const char *path, const GImageNodeOptions *opt, const GCol
         im->ts = o.texsys ? gtexsys_ref(o.texsys) : gtexsys_default(err);
     if (rgb_file && !im->ts)
         rc = err && err->code ? err->code : G_ERR_NOMEM;
-    int channels = 0, srgb = 0;
-    if (rgb_file && rc == G_OK)
-        rc = gtexsys_open(im->ts, path, &im->file, &channels, &srgb, err);
-    im->srgb = o.colorspace == GTEX_COLORSPACE_SRGB || (o.colorspace == GTEX_COLORSPACE_AUTO && srgb);
+    int channels = 0;
+    if (rgb_file && rc == G_OK) /* the texture system decodes sRGB before it filters: its lookups are linear */
+        rc = gtexsys_open(im->ts, path, o.colorspace, &im->file, &channels, &im->srgb, err);
     if (rgb_file && rc == G_OK) { /* one lookup of the finest level decodes the pixels: a truncated file fails here */
         static const double finest[4] = {0.0, 0.0, 0.0, 0.0};
         float v[3];
@@ -205,7 +211,7 @@ int gtexparam_image_rgb(const GTexImage *im, GSurfPoint *sp, double rgb[3])
     if (rc != G_OK)
         return rc;
     for (int i = 0; i < 3; i++)
-        rgb[i] = linear_value(im, v[i]);
+        rgb[i] = lookup_value(v[i]);
     gsurfpoint_cache_put(sp, im, 1.0, gvec3(rgb[0], rgb[1], rgb[2]));
     return G_OK;
 }

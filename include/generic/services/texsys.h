@@ -50,17 +50,22 @@ typedef struct GTexFile GTexFile;
 #define GTEXSYS_MAX_PIXELS (8192LL * 8192LL)
 
 /** Opens (and checks) a texture file: G_ERR_IO with OpenImageIO's reason when it is missing or cannot be
- * decoded, or when it has more than GTEXSYS_MAX_PIXELS pixels. Its content decides its format (generic/services/
- * image.h: the formats read) and, unless GENERIC_DECODE=inprocess, a decoder process decodes it whole before the
- * texture system opens it in this process. *srgb is 1 for integer data not marked linear (8-bit PNG/JPEG), 0 for
- * float data. */
-GENERIC_API GENERIC_NODISCARD int gtexsys_open(GTextureSystem *ts, const char *path, GTexFile **file, int *channels,
-                                               int *srgb, GError *err);
+ * decoded, or when it has more than GTEXSYS_MAX_PIXELS pixels; G_ERR_INVALID for a space outside GTexColorSpace.
+ * Its content decides its format (generic/services/image.h: the formats read) and, unless GENERIC_DECODE=inprocess,
+ * a decoder process decodes it whole before the texture system opens it in this process. space says how its
+ * values relate to linear ones: with GTEX_COLORSPACE_SRGB, or GTEX_COLORSPACE_AUTO and integer data not marked
+ * linear (8- and 16-bit PNG, JPEG), the system holds the file's colour channels decoded from the sRGB curve
+ * (gimage_srgb_decode), so that MIP levels and filtered lookups average linear light: 8-bit data as halfs (the
+ * nearest half of each code's decode, within a relative 4.6e-4 of it), other data as floats; *srgb is then 1.
+ * Otherwise the values are taken as linear and *srgb is 0. The same file opened both ways is held twice. Every
+ * lookup of the file gives linear values. */
+GENERIC_API GENERIC_NODISCARD int gtexsys_open(GTextureSystem *ts, const char *path, GTexColorSpace space,
+                                               GTexFile **file, int *channels, int *srgb, GError *err);
 
 /** A filtered lookup of 3 channels (grey files are replicated) at (s, t) (t = 0 at the top row) over the
  * footprint spanned by the two axes (dsdx, dtdx) and (dsdy, dtdy) (full widths in s, t units; all 0 = the
- * finest level), anisotropic with trilinear MIP-mapping, and the wrap modes; G_ERR_IO when OpenImageIO fails
- * (rgb is then black). An isotropic width w is (w, 0, 0, w). Thread safe. */
+ * finest level), anisotropic with trilinear MIP-mapping of linear values (gtexsys_open), and the wrap modes;
+ * G_ERR_IO when OpenImageIO fails (rgb is then black). An isotropic width w is (w, 0, 0, w). Thread safe. */
 GENERIC_API GENERIC_NODISCARD int gtexsys_lookup(GTextureSystem *ts, GTexFile *file, GTexWrap swrap, GTexWrap twrap,
                                                  double s, double t, const double deriv[4], double blur, float rgb[3]);
 
