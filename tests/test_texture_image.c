@@ -13,19 +13,15 @@
 
 #include "generic/builtins.h"
 #include "texture_fixtures.h"
+#include "image_node_fixture.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <unistd.h>
 
 typedef struct Fix {
-    char dir[64];
+    ImageNodeFix n;
     char checker1[128], checker16[128], halves[128], grey[128], red[128], corrupt[128], missing[128];
-    GColorModel *rgb;
-    GScratch *scratch;
-    GTextureSystem *ts;
-    GMaterial *white;
-    GColor c;
 } Fix;
 
 enum { N = 256 };
@@ -51,17 +47,15 @@ static int mid_grey(int x, int y) { (void)x; (void)y; return 128; }
 static int setup(void **state)
 {
     Fix *f = calloc(1, sizeof *f);
-    GError err;
-    snprintf(f->dir, sizeof f->dir, "/tmp/gtexXXXXXX");
-    if (!mkdtemp(f->dir))
+    if (!f || image_node_fix_open(&f->n, "/tmp/gtexXXXXXX") != 0)
         return -1;
-    snprintf(f->checker1, sizeof f->checker1, "%s/checker1.pgm", f->dir);
-    snprintf(f->checker16, sizeof f->checker16, "%s/checker16.pgm", f->dir);
-    snprintf(f->halves, sizeof f->halves, "%s/halves.pgm", f->dir);
-    snprintf(f->grey, sizeof f->grey, "%s/grey.pgm", f->dir);
-    snprintf(f->red, sizeof f->red, "%s/red.ppm", f->dir);
-    snprintf(f->corrupt, sizeof f->corrupt, "%s/corrupt.png", f->dir);
-    snprintf(f->missing, sizeof f->missing, "%s/missing.png", f->dir);
+    snprintf(f->checker1, sizeof f->checker1, "%s/checker1.pgm", f->n.dir);
+    snprintf(f->checker16, sizeof f->checker16, "%s/checker16.pgm", f->n.dir);
+    snprintf(f->halves, sizeof f->halves, "%s/halves.pgm", f->n.dir);
+    snprintf(f->grey, sizeof f->grey, "%s/grey.pgm", f->n.dir);
+    snprintf(f->red, sizeof f->red, "%s/red.ppm", f->n.dir);
+    snprintf(f->corrupt, sizeof f->corrupt, "%s/corrupt.png", f->n.dir);
+    snprintf(f->missing, sizeof f->missing, "%s/missing.png", f->n.dir);
     if (write_pgm(f->checker1, pixel_checker) || write_pgm(f->checker16, cell_checker) ||
         write_pgm(f->halves, top_white) || write_pgm(f->grey, mid_grey))
         return -1;
@@ -73,16 +67,6 @@ static int setup(void **state)
     fp = fopen(f->corrupt, "wb");
     fprintf(fp, "\x89PNG\r\n\x1a\nthis is not really a png file at all");
     fclose(fp);
-    if (gcolormodel_create("rgb", NULL, &f->rgb, &err) || gtexsys_create(&f->ts, &err))
-        return -1;
-    f->scratch = gscratch_create(0);
-    GColor one;
-    assert_int_equal(gcolor_alloc(&one, f->rgb), G_OK);
-    assert_int_equal(gcolor_from_rgb(&one, (double[3]){1, 1, 1}, GCOLOR_REFLECTANCE), G_OK);
-    if (glambert_create(f->rgb, &one, &f->white, &err))
-        return -1;
-    gcolor_free(&one);
-    assert_int_equal(gcolor_alloc(&f->c, f->rgb), G_OK);
     *state = f;
     return 0;
 }
@@ -91,38 +75,19 @@ static int teardown(void **state)
 {
     Fix *f = *state;
     const char *files[] = {f->checker1, f->checker16, f->halves, f->grey, f->red, f->corrupt};
-    for (int i = 0; i < 6; i++)
-        unlink(files[i]);
-    rmdir(f->dir);
-    gmaterial_unref(f->white);
-    gtexsys_unref(f->ts);
-    gcolor_free(&f->c);
-    gscratch_destroy(f->scratch);
-    gcolormodel_destroy(f->rgb);
+    image_node_fix_close(&f->n, files, sizeof files / sizeof files[0]);
     free(f);
     return 0;
-}
-
-static GMaterial *image(Fix *f, const char *path, GTexWrap wrap, GTexColorSpace cs)
-{
-    GImageNodeOptions o = {.texsys = f->ts, .swrap = wrap, .twrap = wrap, .colorspace = cs};
-    GMaterial *m;
-    GError err;
-    int rc = gnode_image_create(f->white, path, &o, &m, &err);
-    if (rc != G_OK)
-        print_error("%s\n", err.message);
-    assert_int_equal(rc, G_OK);
-    return m;
 }
 
 /* The red channel the node gives at (u, v) with a footprint in texels. */
 static double lookup(Fix *f, const GMaterial *m, double u, double v, double texels)
 {
     GSurfPoint sp;
-    plane_point(&sp, f->rgb, f->scratch, u, v);
+    plane_point(&sp, f->n.rgb, f->n.scratch, u, v);
     sp.uv_footprint = texels / N;
-    assert_int_equal(gmaterial_diffuse(m, &sp, &f->c), G_OK);
-    return color_r(&f->c);
+    assert_int_equal(gmaterial_diffuse(m, &sp, &f->n.c), G_OK);
+    return color_r(&f->n.c);
 }
 
 /* The 16-texel checker's value averaged over a box of w texels centred at texel coordinates (x, y),
@@ -143,7 +108,7 @@ static double box_average(double x, double y, double w)
 static void test_exact_texels(void **state)
 {
     Fix *f = *state;
-    GMaterial *m = image(f, f->checker1, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
+    GMaterial *m = image_node(&f->n, f->checker1, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
     /* texel centres at a quarter-texel footprint: the texel itself */
     for (int x = 0; x < 8; x++)
         for (int y = 0; y < 8; y++) {
@@ -156,7 +121,7 @@ static void test_exact_texels(void **state)
 static void test_mip_level_follows_footprint(void **state)
 {
     Fix *f = *state;
-    GMaterial *m = image(f, f->checker1, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
+    GMaterial *m = image_node(&f->n, f->checker1, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
     /* one-texel checker: sharp at 1/4 texel, grey once the footprint covers 2 texels, and the distance from
      * grey shrinks as the footprint grows (the lookup blends towards coarser levels) */
     double u = 10.5 / N, v = 1.0 - 20.5 / N; /* texel (10, 20): black */
@@ -174,7 +139,7 @@ static void test_mip_level_follows_footprint(void **state)
     gmaterial_unref(m);
 
     /* 16-texel cells: compared with the box average over the footprint */
-    m = image(f, f->checker16, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
+    m = image_node(&f->n, f->checker16, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
     const double pts[][2] = {{24, 8}, {40, 40}, {16, 24}, {100, 3}};
     const double fw[] = {0.5, 2, 4, 8, 32, 64, 128};
     double worst = 0;
@@ -195,7 +160,7 @@ static void test_mip_level_follows_footprint(void **state)
 static void test_wrap_and_orientation(void **state)
 {
     Fix *f = *state;
-    GMaterial *m = image(f, f->halves, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
+    GMaterial *m = image_node(&f->n, f->halves, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
     /* the top half of the file is white: v up */
     assert_float_equal(lookup(f, m, 0.3, 0.75, 0.0), 1.0, 1e-3);
     assert_float_equal(lookup(f, m, 0.3, 0.25, 0.0), 0.0, 1e-3);
@@ -203,15 +168,15 @@ static void test_wrap_and_orientation(void **state)
     assert_float_equal(lookup(f, m, 1.3, 1.25, 0.0), 0.0, 1e-3);
     assert_float_equal(lookup(f, m, -0.7, -0.25, 0.0), 1.0, 1e-3);
     gmaterial_unref(m);
-    m = image(f, f->halves, GTEX_WRAP_CLAMP, GTEX_COLORSPACE_LINEAR);
+    m = image_node(&f->n, f->halves, GTEX_WRAP_CLAMP, GTEX_COLORSPACE_LINEAR);
     assert_float_equal(lookup(f, m, 0.3, 1.5, 0.0), 1.0, 1e-3); /* the top row continues */
     assert_float_equal(lookup(f, m, 0.3, -3.0, 0.0), 0.0, 1e-3);
     gmaterial_unref(m);
-    m = image(f, f->halves, GTEX_WRAP_BLACK, GTEX_COLORSPACE_LINEAR);
+    m = image_node(&f->n, f->halves, GTEX_WRAP_BLACK, GTEX_COLORSPACE_LINEAR);
     assert_float_equal(lookup(f, m, 0.3, 1.5, 0.0), 0.0, 1e-3);
     assert_float_equal(lookup(f, m, 0.3, 0.75, 0.0), 1.0, 1e-3);
     gmaterial_unref(m);
-    m = image(f, f->halves, GTEX_WRAP_MIRROR, GTEX_COLORSPACE_LINEAR);
+    m = image_node(&f->n, f->halves, GTEX_WRAP_MIRROR, GTEX_COLORSPACE_LINEAR);
     assert_float_equal(lookup(f, m, 0.3, 1.25, 0.0), 1.0, 1e-3); /* mirrored: 1.25 reads 0.75 */
     gmaterial_unref(m);
 }
@@ -219,8 +184,8 @@ static void test_wrap_and_orientation(void **state)
 static void test_color_spaces(void **state)
 {
     Fix *f = *state;
-    GMaterial *lin = image(f, f->grey, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
-    GMaterial *srgb = image(f, f->grey, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_SRGB);
+    GMaterial *lin = image_node(&f->n, f->grey, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
+    GMaterial *srgb = image_node(&f->n, f->grey, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_SRGB);
     double e = 128.0 / 255.0;
     assert_float_equal(lookup(f, lin, 0.5, 0.5, 0.0), e, 1e-4);
     assert_float_equal(lookup(f, srgb, 0.5, 0.5, 0.0), pow((e + 0.055) / 1.055, 2.4), 1e-4);
@@ -237,10 +202,10 @@ static void test_color_spaces(void **state)
     assert_int_equal(gcolor_from_rgb(&one, (double[3]){0.8, 0.8, 0.8}, GCOLOR_REFLECTANCE), G_OK);
     GMaterial *w, *m;
     assert_int_equal(glambert_create(spec, &one, &w, &err), G_OK);
-    GImageNodeOptions o = {.texsys = f->ts, .colorspace = GTEX_COLORSPACE_LINEAR};
+    GImageNodeOptions o = {.texsys = f->n.ts, .colorspace = GTEX_COLORSPACE_LINEAR};
     assert_int_equal(gnode_image_create(w, f->red, &o, &m, &err), G_OK);
     GSurfPoint sp;
-    plane_point(&sp, spec, f->scratch, 0.5, 0.5);
+    plane_point(&sp, spec, f->n.scratch, 0.5, 0.5);
     assert_int_equal(gmaterial_diffuse(m, &sp, &c), G_OK);
     double rgb[3];
     assert_int_equal(gcolor_to_rgb(&c, GCOLOR_REFLECTANCE, rgb), G_OK);
@@ -259,23 +224,23 @@ static void test_color_spaces(void **state)
 static void test_emission_flag(void **state)
 {
     Fix *f = *state;
-    GMaterial *lit = image(f, f->grey, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
+    GMaterial *lit = image_node(&f->n, f->grey, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
     assert_true(lit->flags & GMAT_NO_EMISSION);
     gmaterial_unref(lit);
     GColor one;
     GMaterial *e, *m;
     GError err;
-    assert_int_equal(gcolor_alloc(&one, f->rgb), G_OK);
+    assert_int_equal(gcolor_alloc(&one, f->n.rgb), G_OK);
     assert_int_equal(gcolor_from_rgb(&one, (double[3]){2, 2, 2}, GCOLOR_LIGHT), G_OK);
-    assert_int_equal(gemitter_create(f->rgb, &one, 1, &e, &err), G_OK);
-    GImageNodeOptions o = {.texsys = f->ts, .colorspace = GTEX_COLORSPACE_LINEAR};
+    assert_int_equal(gemitter_create(f->n.rgb, &one, 1, &e, &err), G_OK);
+    GImageNodeOptions o = {.texsys = f->n.ts, .colorspace = GTEX_COLORSPACE_LINEAR};
     assert_int_equal(gnode_image_create(e, f->grey, &o, &m, &err), G_OK);
     assert_false(m->flags & GMAT_NO_EMISSION);
     GSurfPoint sp;
-    plane_point(&sp, f->rgb, f->scratch, 0.5, 0.5);
-    assert_int_equal(gmaterial_emission(m, &sp, gvec3(0, 0, 1), &f->c), G_OK);
+    plane_point(&sp, f->n.rgb, f->n.scratch, 0.5, 0.5);
+    assert_int_equal(gmaterial_emission(m, &sp, gvec3(0, 0, 1), &f->n.c), G_OK);
     double rgb[3];
-    assert_int_equal(gcolor_to_rgb(&f->c, GCOLOR_LIGHT, rgb), G_OK);
+    assert_int_equal(gcolor_to_rgb(&f->n.c, GCOLOR_LIGHT, rgb), G_OK);
     assert_float_equal(rgb[1], 2.0 * 128.0 / 255.0, 1e-4);
     gmaterial_unref(m);
     gmaterial_unref(e);
@@ -287,22 +252,22 @@ static void test_bad_files(void **state)
     Fix *f = *state;
     GError err;
     GMaterial *m = (GMaterial *)1;
-    GImageNodeOptions o = {.texsys = f->ts};
-    assert_int_equal(gnode_image_create(f->white, f->missing, &o, &m, &err), G_ERR_IO);
+    GImageNodeOptions o = {.texsys = f->n.ts};
+    assert_int_equal(gnode_image_create(f->n.white, f->missing, &o, &m, &err), G_ERR_IO);
     assert_null(m);
     assert_non_null(strstr(err.message, f->missing));
     assert_non_null(strstr(err.message, "no such file"));
-    assert_int_equal(gnode_image_create(f->white, f->corrupt, &o, &m, &err), G_ERR_IO);
+    assert_int_equal(gnode_image_create(f->n.white, f->corrupt, &o, &m, &err), G_ERR_IO);
     assert_null(m);
     assert_non_null(strstr(err.message, f->corrupt));
     assert_non_null(strstr(err.message, "cannot be read"));
     print_message("corrupt file: %s\n", err.message);
-    assert_int_equal(gnode_image_create(f->white, "", &o, &m, &err), G_ERR_INVALID);
+    assert_int_equal(gnode_image_create(f->n.white, "", &o, &m, &err), G_ERR_INVALID);
     o.blur = -1;
-    assert_int_equal(gnode_image_create(f->white, f->grey, &o, &m, &err), G_ERR_INVALID);
+    assert_int_equal(gnode_image_create(f->n.white, f->grey, &o, &m, &err), G_ERR_INVALID);
     assert_non_null(strstr(err.message, "blur"));
     /* the default texture system is made on demand and goes with its last image node */
-    assert_int_equal(gnode_image_create(f->white, f->grey, NULL, &m, &err), G_OK);
+    assert_int_equal(gnode_image_create(f->n.white, f->grey, NULL, &m, &err), G_OK);
     GTextureSystem *d = gtexsys_default(&err);
     assert_non_null(d);
     gtexsys_unref(d);
@@ -315,22 +280,22 @@ static void test_bad_files(void **state)
 static void test_anisotropic_footprint(void **state)
 {
     Fix *f = *state;
-    GMaterial *m = image(f, f->halves, GTEX_WRAP_CLAMP, GTEX_COLORSPACE_LINEAR);
+    GMaterial *m = image_node(&f->n, f->halves, GTEX_WRAP_CLAMP, GTEX_COLORSPACE_LINEAR);
     const double u = 0.3, v = 0.5 + 4.0 / N; /* 4 texels into the white half */
     double iso = lookup(f, m, u, v, 32.0);
     GSurfPoint sp;
-    plane_point(&sp, f->rgb, f->scratch, u, v);
+    plane_point(&sp, f->n.rgb, f->n.scratch, u, v);
     sp.uv_footprint = 32.0 / N;
     sp.uv_axis1[0] = 32.0 / N; /* long along u */
     sp.uv_axis2[1] = 0.5 / N;  /* half a texel along v */
-    assert_int_equal(gmaterial_diffuse(m, &sp, &f->c), G_OK);
-    double along_u = color_r(&f->c);
-    plane_point(&sp, f->rgb, f->scratch, u, v);
+    assert_int_equal(gmaterial_diffuse(m, &sp, &f->n.c), G_OK);
+    double along_u = color_r(&f->n.c);
+    plane_point(&sp, f->n.rgb, f->n.scratch, u, v);
     sp.uv_footprint = 32.0 / N;
     sp.uv_axis1[1] = 32.0 / N; /* the same ellipse along v */
     sp.uv_axis2[0] = 0.5 / N;
-    assert_int_equal(gmaterial_diffuse(m, &sp, &f->c), G_OK);
-    double along_v = color_r(&f->c);
+    assert_int_equal(gmaterial_diffuse(m, &sp, &f->n.c), G_OK);
+    double along_v = color_r(&f->n.c);
     print_message("isotropic 32 texels %.4f, ellipse along u %.4f, along v %.4f\n", iso, along_u, along_v);
     assert_true(iso < 0.9);
     assert_true(along_u > 0.97);
@@ -344,7 +309,7 @@ static void test_nonfinite_texels(void **state)
 {
     Fix *f = *state;
     char path[128];
-    snprintf(path, sizeof path, "%s/nonfinite.exr", f->dir);
+    snprintf(path, sizeof path, "%s/nonfinite.exr", f->n.dir);
     GImage img;
     GError err;
     assert_int_equal(gimage_create(&img, 4, 1, 3, &err), G_OK);
@@ -354,14 +319,14 @@ static void test_nonfinite_texels(void **state)
             img.pixels[x * 3 + c] = v[x];
     assert_int_equal(gimage_write(path, &img, NULL, &err), G_OK);
     gimage_free(&img);
-    GMaterial *m = image(f, path, GTEX_WRAP_CLAMP, GTEX_COLORSPACE_LINEAR);
+    GMaterial *m = image_node(&f->n, path, GTEX_WRAP_CLAMP, GTEX_COLORSPACE_LINEAR);
     const double want[4] = {0.0, 0.0, 0.0, 2.5};
     for (int x = 0; x < 4; x++) {
         GSurfPoint sp;
-        plane_point(&sp, f->rgb, f->scratch, (x + 0.5) / 4, 0.5);
+        plane_point(&sp, f->n.rgb, f->n.scratch, (x + 0.5) / 4, 0.5);
         sp.uv_footprint = 0.01 / 4; /* a hundredth of a texel: the texel itself */
-        assert_int_equal(gmaterial_diffuse(m, &sp, &f->c), G_OK);
-        assert_float_equal(color_r(&f->c), want[x], 1e-6);
+        assert_int_equal(gmaterial_diffuse(m, &sp, &f->n.c), G_OK);
+        assert_float_equal(color_r(&f->n.c), want[x], 1e-6);
     }
     gmaterial_unref(m);
     unlink(path);
@@ -373,7 +338,7 @@ static void test_truncated_files(void **state)
 {
     Fix *f = *state;
     char whole[128], cut[160];
-    snprintf(whole, sizeof whole, "%s/whole.png", f->dir);
+    snprintf(whole, sizeof whole, "%s/whole.png", f->n.dir);
     GImage img;
     GError err;
     enum { W = 64 };
@@ -391,18 +356,18 @@ static void test_truncated_files(void **state)
     size_t n = fread(bytes, 1, sizeof bytes, fp);
     fclose(fp);
     assert_true(n > 1000 && n < sizeof bytes);
-    GMaterial *ref = image(f, whole, GTEX_WRAP_CLAMP, GTEX_COLORSPACE_LINEAR);
+    GMaterial *ref = image_node(&f->n, whole, GTEX_WRAP_CLAMP, GTEX_COLORSPACE_LINEAR);
     int refused = 0, loaded = 0;
     for (size_t len = 40; len < n; len += len < n - 40 ? 397 : 1) {
-        snprintf(cut, sizeof cut, "%s/cut%zu.png", f->dir, len);
+        snprintf(cut, sizeof cut, "%s/cut%zu.png", f->n.dir, len);
         fp = fopen(cut, "wb");
         assert_non_null(fp);
         assert_int_equal(fwrite(bytes, 1, len, fp), len);
         assert_int_equal(fclose(fp), 0);
-        GImageNodeOptions o = {.texsys = f->ts, .swrap = GTEX_WRAP_CLAMP, .twrap = GTEX_WRAP_CLAMP,
+        GImageNodeOptions o = {.texsys = f->n.ts, .swrap = GTEX_WRAP_CLAMP, .twrap = GTEX_WRAP_CLAMP,
                                .colorspace = GTEX_COLORSPACE_LINEAR};
         GMaterial *m = NULL;
-        int rc = gnode_image_create(f->white, cut, &o, &m, &err);
+        int rc = gnode_image_create(f->n.white, cut, &o, &m, &err);
         if (rc != G_OK) {
             assert_int_equal(rc, G_ERR_IO);
             assert_null(m);

@@ -16,6 +16,7 @@
 
 #include "generic/builtins.h"
 #include "texture_fixtures.h"
+#include "image_node_fixture.h"
 
 #include <math.h>
 #include <png.h>
@@ -23,13 +24,8 @@
 #include <unistd.h>
 
 typedef struct Fix {
-    char dir[64];
+    ImageNodeFix n;
     char checker[128], edge[128], grey8[128], grey16[128], half_exr[128], codes8[128], codes16[128];
-    GColorModel *rgb;
-    GScratch *scratch;
-    GTextureSystem *ts;
-    GMaterial *white;
-    GColor c;
 } Fix;
 
 enum { CHECKER = 256, GREY8 = 128, GREY16 = 40000 };
@@ -97,16 +93,15 @@ static int setup(void **state)
 {
     Fix *f = calloc(1, sizeof *f);
     GError err;
-    snprintf(f->dir, sizeof f->dir, "/tmp/gsrgbXXXXXX");
-    if (!f || !mkdtemp(f->dir))
+    if (!f || image_node_fix_open(&f->n, "/tmp/gsrgbXXXXXX") != 0)
         return -1;
-    snprintf(f->checker, sizeof f->checker, "%s/checker.png", f->dir);
-    snprintf(f->edge, sizeof f->edge, "%s/edge.png", f->dir);
-    snprintf(f->grey8, sizeof f->grey8, "%s/grey8.png", f->dir);
-    snprintf(f->grey16, sizeof f->grey16, "%s/grey16.png", f->dir);
-    snprintf(f->half_exr, sizeof f->half_exr, "%s/half.exr", f->dir);
-    snprintf(f->codes8, sizeof f->codes8, "%s/codes8.png", f->dir);
-    snprintf(f->codes16, sizeof f->codes16, "%s/codes16.png", f->dir);
+    snprintf(f->checker, sizeof f->checker, "%s/checker.png", f->n.dir);
+    snprintf(f->edge, sizeof f->edge, "%s/edge.png", f->n.dir);
+    snprintf(f->grey8, sizeof f->grey8, "%s/grey8.png", f->n.dir);
+    snprintf(f->grey16, sizeof f->grey16, "%s/grey16.png", f->n.dir);
+    snprintf(f->half_exr, sizeof f->half_exr, "%s/half.exr", f->n.dir);
+    snprintf(f->codes8, sizeof f->codes8, "%s/codes8.png", f->n.dir);
+    snprintf(f->codes16, sizeof f->codes16, "%s/codes16.png", f->n.dir);
     if (write_png(f->checker, CHECKER, CHECKER, 8, pixel_checker) || write_png(f->edge, 2, 2, 8, right_white) ||
         write_png(f->grey8, 4, 4, 8, grey8) || write_png(f->grey16, 4, 4, 16, grey16) ||
         write_png(f->codes8, 16, 16, 8, code8) || write_png(f->codes16, 256, 256, 16, code16))
@@ -118,16 +113,8 @@ static int setup(void **state)
         img.pixels[i] = 0.5f;
     int rc = gimage_write(f->half_exr, &img, NULL, &err);
     gimage_free(&img);
-    if (rc != G_OK || gcolormodel_create("rgb", NULL, &f->rgb, &err) || gtexsys_create(&f->ts, &err))
+    if (rc != G_OK)
         return -1;
-    f->scratch = gscratch_create(0);
-    GColor one;
-    assert_int_equal(gcolor_alloc(&one, f->rgb), G_OK);
-    assert_int_equal(gcolor_from_rgb(&one, (double[3]){1, 1, 1}, GCOLOR_REFLECTANCE), G_OK);
-    if (glambert_create(f->rgb, &one, &f->white, &err))
-        return -1;
-    gcolor_free(&one);
-    assert_int_equal(gcolor_alloc(&f->c, f->rgb), G_OK);
     *state = f;
     return 0;
 }
@@ -136,45 +123,25 @@ static int teardown(void **state)
 {
     Fix *f = *state;
     const char *files[] = {f->checker, f->edge, f->grey8, f->grey16, f->half_exr, f->codes8, f->codes16};
-    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++)
-        unlink(files[i]);
-    rmdir(f->dir);
-    gmaterial_unref(f->white);
-    gtexsys_unref(f->ts);
-    gcolor_free(&f->c);
-    gscratch_destroy(f->scratch);
-    gcolormodel_destroy(f->rgb);
+    image_node_fix_close(&f->n, files, sizeof files / sizeof files[0]);
     free(f);
     return 0;
-}
-
-/* An image node over the white lambert, in the fixture's texture system. */
-static GMaterial *image(Fix *f, const char *path, GTexWrap wrap, GTexColorSpace cs)
-{
-    GImageNodeOptions o = {.texsys = f->ts, .swrap = wrap, .twrap = wrap, .colorspace = cs};
-    GMaterial *m;
-    GError err;
-    int rc = gnode_image_create(f->white, path, &o, &m, &err);
-    if (rc != G_OK)
-        print_error("%s\n", err.message);
-    assert_int_equal(rc, G_OK);
-    return m;
 }
 
 /* The red channel the node gives at (u, v) with a footprint of width uv units. */
 static double lookup(Fix *f, const GMaterial *m, double u, double v, double width)
 {
     GSurfPoint sp;
-    plane_point(&sp, f->rgb, f->scratch, u, v);
+    plane_point(&sp, f->n.rgb, f->n.scratch, u, v);
     sp.uv_footprint = width;
-    assert_int_equal(gmaterial_diffuse(m, &sp, &f->c), G_OK);
-    return color_r(&f->c);
+    assert_int_equal(gmaterial_diffuse(m, &sp, &f->n.c), G_OK);
+    return color_r(&f->n.c);
 }
 
 static void test_minified_checker_averages_linear_light(void **state)
 {
     Fix *f = *state;
-    GMaterial *m = image(f, f->checker, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_AUTO);
+    GMaterial *m = image_node(&f->n, f->checker, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_AUTO);
     const double u = 10.5 / CHECKER, v = 1.0 - 20.5 / CHECKER; /* texel (10, 20): black */
     assert_float_equal(lookup(f, m, u, v, 0.25 / CHECKER), 0.0, 1e-3);
     const double widths[] = {2.0, 4.0, 16.0, 64.0};
@@ -190,7 +157,7 @@ static void test_minified_checker_averages_linear_light(void **state)
 static void test_magnified_edge_is_linear_mean(void **state)
 {
     Fix *f = *state;
-    GMaterial *m = image(f, f->edge, GTEX_WRAP_CLAMP, GTEX_COLORSPACE_AUTO);
+    GMaterial *m = image_node(&f->n, f->edge, GTEX_WRAP_CLAMP, GTEX_COLORSPACE_AUTO);
     /* 2 x 2 texels, black left, white right: u = 0.5 lies halfway between the texel centres 0.25 and 0.75 */
     double got = lookup(f, m, 0.5, 0.5, 1e-3);
     print_message("halfway between a black and a white texel: %.4f\n", got);
@@ -206,9 +173,9 @@ static void test_constant_texels_and_colour_spaces(void **state)
     Fix *f = *state;
     const double e8 = GREY8 / 255.0, e16 = GREY16 / 65535.0;
     /* the sRGB and the raw values of one file in one texture system, opened in both orders */
-    GMaterial *srgb = image(f, f->grey8, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_SRGB);
-    GMaterial *lin = image(f, f->grey8, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
-    GMaterial *aut = image(f, f->grey8, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_AUTO);
+    GMaterial *srgb = image_node(&f->n, f->grey8, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_SRGB);
+    GMaterial *lin = image_node(&f->n, f->grey8, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
+    GMaterial *aut = image_node(&f->n, f->grey8, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_AUTO);
     for (int round = 0; round < 2; round++) {
         assert_float_equal(lookup(f, srgb, 0.5, 0.5, 0.01), decoded8(e8), 1e-6);
         assert_float_equal(lookup(f, lin, 0.5, 0.5, 0.01), e8, 1e-6);
@@ -219,9 +186,9 @@ static void test_constant_texels_and_colour_spaces(void **state)
     /* the cache holds the decoded values under a spelling of the file's path with "/./": a path spelt so names
      * the file's values as they are all the same */
     char dotted[160];
-    snprintf(dotted, sizeof dotted, "%s/./grey8.png", f->dir);
-    GMaterial *dot_lin = image(f, dotted, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
-    GMaterial *dot_srgb = image(f, dotted, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_SRGB);
+    snprintf(dotted, sizeof dotted, "%s/./grey8.png", f->n.dir);
+    GMaterial *dot_lin = image_node(&f->n, dotted, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
+    GMaterial *dot_srgb = image_node(&f->n, dotted, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_SRGB);
     assert_float_equal(lookup(f, dot_lin, 0.5, 0.5, 0.01), e8, 1e-6);
     assert_float_equal(lookup(f, dot_srgb, 0.5, 0.5, 0.01), decoded8(e8), 1e-6);
     gmaterial_unref(dot_lin);
@@ -229,15 +196,15 @@ static void test_constant_texels_and_colour_spaces(void **state)
     gmaterial_unref(srgb);
     gmaterial_unref(lin);
     gmaterial_unref(aut);
-    lin = image(f, f->grey16, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
-    aut = image(f, f->grey16, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_AUTO);
+    lin = image_node(&f->n, f->grey16, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_LINEAR);
+    aut = image_node(&f->n, f->grey16, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_AUTO);
     assert_float_equal(lookup(f, aut, 0.5, 0.5, 0.01), gimage_srgb_decode(e16), 1e-6);
     assert_float_equal(lookup(f, lin, 0.5, 0.5, 0.01), e16, 1e-6);
     gmaterial_unref(lin);
     gmaterial_unref(aut);
     /* float data is linear unless the option says sRGB */
-    aut = image(f, f->half_exr, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_AUTO);
-    srgb = image(f, f->half_exr, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_SRGB);
+    aut = image_node(&f->n, f->half_exr, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_AUTO);
+    srgb = image_node(&f->n, f->half_exr, GTEX_WRAP_PERIODIC, GTEX_COLORSPACE_SRGB);
     assert_float_equal(lookup(f, aut, 0.5, 0.5, 0.01), 0.5, 1e-6);
     assert_float_equal(lookup(f, srgb, 0.5, 0.5, 0.01), gimage_srgb_decode(0.5), 1e-6);
     gmaterial_unref(aut);
@@ -265,12 +232,12 @@ static void test_texsys_reports_decoding(void **state)
         GTexFile *file;
         int channels = 0, srgb = -1;
         GError err;
-        assert_int_equal(gtexsys_open(f->ts, cases[i].path, cases[i].space, &file, &channels, &srgb, &err), G_OK);
+        assert_int_equal(gtexsys_open(f->n.ts, cases[i].path, cases[i].space, &file, &channels, &srgb, &err), G_OK);
         assert_int_equal(channels, 3);
         assert_int_equal(srgb, cases[i].srgb);
         float rgb[3];
         static const double finest[4] = {0, 0, 0, 0};
-        assert_int_equal(gtexsys_lookup(f->ts, file, GTEX_WRAP_CLAMP, GTEX_WRAP_CLAMP, 0.5, 0.5, finest, 0.0, rgb),
+        assert_int_equal(gtexsys_lookup(f->n.ts, file, GTEX_WRAP_CLAMP, GTEX_WRAP_CLAMP, 0.5, 0.5, finest, 0.0, rgb),
                          G_OK);
         for (int c = 0; c < 3; c++)
             assert_float_equal(rgb[c], cases[i].want, 1e-6);
@@ -278,7 +245,7 @@ static void test_texsys_reports_decoding(void **state)
     GTexFile *file;
     int channels, srgb;
     GError err;
-    assert_int_equal(gtexsys_open(f->ts, f->grey8, (GTexColorSpace)7, &file, &channels, &srgb, &err), G_ERR_INVALID);
+    assert_int_equal(gtexsys_open(f->n.ts, f->grey8, (GTexColorSpace)7, &file, &channels, &srgb, &err), G_ERR_INVALID);
 }
 
 /* Every code of an 8-bit file gives the nearest half of its exact decode (within a relative 2^-11 of it), every
@@ -296,7 +263,7 @@ static void test_every_code_decodes(void **state)
         GTexFile *file;
         int channels = 0, srgb = 0;
         GError err;
-        assert_int_equal(gtexsys_open(f->ts, files[i].path, GTEX_COLORSPACE_AUTO, &file, &channels, &srgb, &err),
+        assert_int_equal(gtexsys_open(f->n.ts, files[i].path, GTEX_COLORSPACE_AUTO, &file, &channels, &srgb, &err),
                          G_OK);
         assert_int_equal(srgb, 1);
         const int side = files[i].side, codes = side * side;
@@ -305,7 +272,7 @@ static void test_every_code_decodes(void **state)
         for (int code = 0; code < codes; code++) {
             float rgb[3];
             const double s = (code % side + 0.5) / side, t = (code / side + 0.5) / side;
-            assert_int_equal(gtexsys_lookup(f->ts, file, GTEX_WRAP_CLAMP, GTEX_WRAP_CLAMP, s, t, finest, 0.0, rgb),
+            assert_int_equal(gtexsys_lookup(f->n.ts, file, GTEX_WRAP_CLAMP, GTEX_WRAP_CLAMP, s, t, finest, 0.0, rgb),
                              G_OK);
             const double exact = gimage_srgb_decode(code / top);
             const double want = files[i].depth == 8 ? half_of(exact) : exact;

@@ -275,6 +275,18 @@ static int gfuzz_has_position(const char *message)
     return p[1] == ' ';
 }
 
+/* The promises of a refused greader_load_string: an error the targets expect, no library, and the position in the
+ * message (but for an out-of-memory refusal when nomem_unplaced). 0 when kept, else the violation. */
+GFUZZ_FN int gfuzz_load_refused(int rc, const GError *err, const GLibrary *lib, int nomem_unplaced)
+{
+    int bad = gfuzz_error_ok(rc, err, "greader_load_string");
+    if (!bad && lib)
+        bad = gfuzz_violation("a failed load returned a library");
+    if (!bad && !(nomem_unplaced && rc == G_ERR_NOMEM) && !gfuzz_has_position(err->message))
+        bad = gfuzz_violation("the message has no position: %s", err->message);
+    return bad;
+}
+
 /* Calls every method of a material (or texture node) at a few surface points under white light: every colour
  * and direction that comes back with a success status must be finite. */
 static int gfuzz_eval_material(const GMaterial *mat, const char *name)
@@ -395,11 +407,7 @@ GFUZZ_FN int gfuzz_reader(const uint8_t *data, size_t size)
     int rc = greader_load_string(text, "fuzz.mat", &opt, &lib, &err);
     int bad = 0;
     if (rc != G_OK) {
-        bad = gfuzz_error_ok(rc, &err, "greader_load_string");
-        if (!bad && lib)
-            bad = gfuzz_violation("a failed load returned a library");
-        if (!bad && !gfuzz_has_position(err.message))
-            bad = gfuzz_violation("the message has no position: %s", err.message);
+        bad = gfuzz_load_refused(rc, &err, lib, 0);
         lib = NULL;
     }
     if (rc == G_OK && gfuzz_must_fail(data, size))

@@ -69,11 +69,7 @@ static int gfuzz_medium(const uint8_t *data, size_t size)
     GLibrary *lib = NULL;
     int rc = greader_load_string(text, "fuzz.scene", &opt, &lib, &err), bad = 0;
     if (rc != G_OK) {
-        bad = gfuzz_error_ok(rc, &err, "greader_load_string");
-        if (!bad && lib)
-            bad = gfuzz_violation("a failed load returned a library");
-        if (!bad && rc != G_ERR_NOMEM && !gfuzz_has_position(err.message))
-            bad = gfuzz_violation("the message has no position: %s", err.message);
+        bad = gfuzz_load_refused(rc, &err, lib, 1);
     } else if (gfuzz_must_fail(data, size)) {
         bad = gfuzz_violation("a file wrong by construction (" GFUZZ_MUST_FAIL ") loaded");
     } else {

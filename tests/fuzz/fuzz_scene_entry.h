@@ -232,14 +232,8 @@ static int gfuzz_scene_once(const char *text, const GColorModel *model, int larg
     int rc = greader_load_string(text, "fuzz.scene", &opt, &lib, &err), bad = 0;
     if (rc != G_OK && getenv("GFUZZ_VERBOSE"))
         fprintf(stderr, "gfuzz_scene: %s\n", err.message);
-    if (rc != G_OK) {
-        bad = gfuzz_error_ok(rc, &err, "greader_load_string");
-        if (!bad && lib)
-            bad = gfuzz_violation("a failed load returned a library");
-        if (!bad && !gfuzz_has_position(err.message))
-            bad = gfuzz_violation("the message has no position: %s", err.message);
-        return bad;
-    }
+    if (rc != G_OK)
+        return gfuzz_load_refused(rc, &err, lib, 0);
     const char *mname = gcolormodel_name(glibrary_colormodel(lib));
     Scene *s = NULL;
     gerror_clear(&err);
