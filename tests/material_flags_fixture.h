@@ -49,6 +49,14 @@ static inline void plain_nodes(GMaterial *a, GMaterial *b, GMaterial *c, CountGe
     assert_int_equal(gnode_spline_create(inner, 2, &g->base, GSPLINE_LINEAR, &n[7], &err), G_OK);
 }
 
+/* Fails the test unless each of plain_nodes' eight nodes in n has the material flag bit (named name). */
+static inline void plain_nodes_have(GMaterial *const n[8], unsigned bit, const char *name)
+{
+    for (int i = 0; i < 8; i++)
+        if (!(n[i]->flags & bit))
+            fail_msg("node %d (%s) over lamberts has no %s", i, gmaterial_name(n[i]), name);
+}
+
 /* Releases, parents before children, the nm nodes m[nm - 1] down to m[0] a test made over plain_nodes' (m may be
  * NULL when nm is 0), then plain_nodes' n[7] down to n[0], the lamberts a, b and c, and the generator g. */
 static inline void release_plain_nodes(GMaterial **m, int nm, GMaterial *n[8], GMaterial *a, GMaterial *b, GMaterial *c,

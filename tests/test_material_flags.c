@@ -465,9 +465,7 @@ static void test_no_ideal_bit(void **state)
     assert_false(no_ideal(mirror) || no_ideal(glass));
     CountGen *g = countgen_new(0.4);
     plain_nodes(a, b, c, g, n);
-    for (int i = 0; i < 8; i++)
-        if (!no_ideal(n[i]))
-            fail_msg("node %d (%s) over lamberts has no GMAT_NO_IDEAL", i, gmaterial_name(n[i]));
+    plain_nodes_have(n, GMAT_NO_IDEAL, "GMAT_NO_IDEAL");
     GAffine2 uv = gaffine2_rotate(30.0);
     assert_int_equal(gnode_interpolate_create(a, mirror, &g->base, &m[0], &err), G_OK);
     assert_int_equal(gnode_transform_create(glass, &uv, NULL, &m[1], &err), G_OK);

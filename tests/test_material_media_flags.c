@@ -169,9 +169,7 @@ static void test_no_rel_index_bit(void **state)
     assert_int_equal(gthindielectric_create(f->rgb, &thin_index, &thin, &err), G_OK);
     CountGen *g = countgen_new(0.4);
     plain_nodes(a, b, c, g, n);
-    for (int i = 0; i < 8; i++)
-        if (!no_rel_index(n[i]))
-            fail_msg("node %d (%s) over lamberts has no GMAT_NO_REL_INDEX", i, gmaterial_name(n[i]));
+    plain_nodes_have(n, GMAT_NO_REL_INDEX, "GMAT_NO_REL_INDEX");
     GAffine2 uv = gaffine2_rotate(30.0);
     assert_int_equal(gnode_interpolate_create(a, mirror, &g->base, &yes[0], &err), G_OK);
     assert_int_equal(gnode_scale_create(thin, &g->base, &yes[1], &err), G_OK);
