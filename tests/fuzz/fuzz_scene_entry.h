@@ -282,10 +282,8 @@ GFUZZ_FN int gfuzz_scene(const uint8_t *data, size_t size)
         return 0;
     memcpy(text, data, size);
     text[size] = '\0';
-    int here = open(".", O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (here < 0 || chdir(gfuzz_dir) != 0) {
-        if (here >= 0)
-            close(here);
+    int here = gfuzz_enter();
+    if (here < 0) {
         free(text);
         return gfuzz_violation("cannot enter %s", gfuzz_dir);
     }
